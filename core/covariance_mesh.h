@@ -1,0 +1,50 @@
+#pragma once
+// A covariance mesh: a polygon mesh whose vertex i carries a Gaussian (μ_i, Σ_i) (DESIGN.md §1).
+#include <string>
+#include <vector>
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+
+#include "core/linalg.h"
+
+namespace gps {
+
+struct MeshTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+/// Topology and means: OpenMesh's polygon mesh with double-precision points.
+using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
+
+/// A polygon mesh whose points are the means μ_i, with one covariance Σ_i per vertex (by vertex index).
+struct CovarianceMesh {
+  PolyMesh mesh;
+  std::vector<Mat3> covariances;
+
+  size_t n_vertices() const { return mesh.n_vertices(); }
+  size_t n_faces() const { return mesh.n_faces(); }
+  Vec3 mean(size_t i) const;
+  void set_mean(size_t i, const Vec3& mean);
+  const Mat3& covariance(size_t i) const { return covariances[i]; }
+};
+
+/// Builds a covariance mesh from plain arrays; faces are vertex-index lists.
+/// Throws gps::Error naming `source` and the face if the topology is non-manifold or a face is degenerate.
+CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::vector<Mat3>& covariances,
+                                    const std::vector<std::vector<int>>& faces,
+                                    const std::string& source = "mesh");
+
+/// Throws gps::Error naming `source` and the vertex if a covariance is not finite, not symmetric
+/// or not positive definite, or a mean is not finite.
+void validate_gaussians(const CovarianceMesh& m, const std::string& source = "mesh");
+
+/// Whether a covariance is symmetric (to relative 1e-9) and positive definite.
+bool is_spd(const Mat3& covariance);
+
+/// Bounding-box diagonal length of the means.
+double bounding_box_diagonal(const CovarianceMesh& m);
+
+inline Vec3 to_vec3(const OpenMesh::Vec3d& p) { return Vec3(p[0], p[1], p[2]); }
+inline OpenMesh::Vec3d to_point(const Vec3& v) { return OpenMesh::Vec3d(v[0], v[1], v[2]); }
+
+}  // namespace gps

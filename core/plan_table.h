@@ -1,0 +1,46 @@
+#pragma once
+// Subdivision plans and the stencil table: the real-time representation of the GPS limit surface
+// (thesis 2.3, DESIGN.md §2 steps 2–3). Flat arrays of 32-bit ints and floats that a GPU reads as
+// they are; built once per topology by plan_builder.h.
+//
+// Points. The plans read an array of 9D points: points [0, n_base) are the base vertices' dual
+// vectors q_i; point n_base + r is row r of the stencil table, Σ_k weights[k] · q[indices[k]] over
+// k in [offsets[r], offsets[r+1]).
+//
+// Nodes. nodes[] holds one record per quadtree node, addressed by its offset:
+//   nodes[o] = kind (NodeKind)
+//   internal: nodes[o+1 .. o+4] = offsets of the four children, child c = ubit + 2·vbit, where
+//             ubit = (u ≥ ½), vbit = (v ≥ ½) in the node's own [0,1]² domain;
+//   regular:  nodes[o+1 .. o+16] = point indices of a bicubic B-spline patch, index i + 4·j with
+//             i along u and j along v; the patch spans the middle cell [1,2]² of the 4×4 net;
+//   terminal: nodes[o+1 .. o+16] = point indices of a bicubic Bézier patch (thesis Fig. 2.5
+//             rules baked into the stencils), same i + 4·j order.
+// A node at depth k covers a square of side 2^-k of its patch; its domain is rescaled to [0,1]²,
+// so derivatives in patch parameters are 2^k times the node's.
+#include <cstdint>
+#include <vector>
+
+namespace gps {
+
+enum class NodeKind : int32_t { internal = 0, regular = 1, terminal = 2 };
+
+struct StencilTable {
+  int32_t n_base = 0;            // number of base vertices (points that are q_i themselves)
+  std::vector<int32_t> offsets;  // n_rows + 1 entries
+  std::vector<int32_t> indices;  // base-vertex indices
+  std::vector<double> weights;   // double for the CPU reference; the GPU gets a float copy
+  int32_t n_rows() const { return offsets.empty() ? 0 : int32_t(offsets.size()) - 1; }
+  int32_t n_points() const { return n_base + n_rows(); }
+};
+
+struct PlanTable {
+  int32_t max_depth = 3;
+  std::vector<int32_t> nodes;                 // node records, see above
+  std::vector<int32_t> patch_roots;           // per patch: offset of its root node in nodes
+  std::vector<int32_t> patch_corner_points;   // 4 per patch: points whose means are the corners of
+                                              // the patch's control quad (for edge tessellation levels);
+                                              // a corner shared by two patches has the same index in both
+  int32_t n_patches() const { return int32_t(patch_roots.size()); }
+};
+
+}  // namespace gps
