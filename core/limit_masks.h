@@ -1,0 +1,22 @@
+#pragma once
+// Exact limit positions of subdivision vertices (DESIGN.md §2 "limit projection").
+#include <vector>
+
+#include "core/loop.h"
+#include "core/mesh_connectivity.h"
+
+namespace gps {
+
+/// Whether every face around every vertex is a quad (the Catmull-Clark mask below needs it).
+bool all_quads(const PolygonTopology& t);
+
+/// Catmull-Clark limit of each vertex of an all-quad mesh: interior (n²v + 4Σe_i + Σf_i)/(n(n+5)),
+/// boundary (a + 4v + b)/6, corners stay.
+template <class T>
+std::vector<T> catmull_clark_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values);
+
+/// Loop limit of each vertex: interior (1 − nχ)v + χΣn_i with χ = 1/(3/(8β) + n), boundary (a + 4v + b)/6, corners stay.
+template <class T>
+std::vector<T> loop_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values, LoopBeta kind);
+
+}  // namespace gps

@@ -1,0 +1,140 @@
+#include "core/reference_subdivision.h"
+
+#include "core/catmull_clark.h"
+#include "core/dual_map.h"
+#include "core/error.h"
+#include "core/limit_masks.h"
+
+namespace gps {
+
+namespace {
+
+// Where each face corner sits in the patch layout; patch −1 marks the corners of a base n-gon,
+// whose patches only begin after the first step.
+using CornerParams = std::vector<PatchParam>;
+
+CornerParams base_corner_params(const PolygonTopology& t) {
+  CornerParams params(t.verts.size());
+  int patch = 0;
+  for (int f = 0; f < t.n_faces(); ++f) {
+    const int o = t.offsets[size_t(f)], n = t.face_size(f);
+    if (n == 4) {
+      const double us[4] = {0, 1, 1, 0}, vs[4] = {0, 0, 1, 1};
+      for (int k = 0; k < 4; ++k) params[size_t(o + k)] = {patch, us[k], vs[k]};
+      patch += 1;
+    } else {
+      for (int k = 0; k < n; ++k) params[size_t(o + k)] = {-1 - (patch + k), 0, 0};
+      patch += n;
+    }
+  }
+  return params;
+}
+
+PatchParam midpoint(const PatchParam& a, const PatchParam& b) { return {a.patch, 0.5 * (a.u + b.u), 0.5 * (a.v + b.v)}; }
+
+// Corner params of the children, in catmull_clark_topology() order.
+CornerParams refine_corner_params(const PolygonTopology& t, const CornerParams& params) {
+  CornerParams out;
+  out.reserve(4 * t.verts.size());
+  for (int f = 0; f < t.n_faces(); ++f) {
+    const int o = t.offsets[size_t(f)], n = t.face_size(f);
+    const PatchParam* p = &params[size_t(o)];
+    if (p[0].patch < 0) {  // an n-gon's child k is patch k of the face
+      for (int k = 0; k < n; ++k) {
+        const int patch = -1 - p[k].patch;
+        out.insert(out.end(), {{patch, 0, 0}, {patch, 1, 0}, {patch, 1, 1}, {patch, 0, 1}});
+      }
+      continue;
+    }
+    const PatchParam centre = {p[0].patch, 0.25 * (p[0].u + p[1].u + p[2].u + p[3].u),
+                               0.25 * (p[0].v + p[1].v + p[2].v + p[3].v)};
+    for (int k = 0; k < 4; ++k)
+      out.insert(out.end(), {p[k], midpoint(p[k], p[(k + 1) % 4]), centre, midpoint(p[(k + 3) % 4], p[k])});
+  }
+  return out;
+}
+
+std::vector<PatchParam> vertex_params_of(const PolygonTopology& t, const CornerParams& params) {
+  std::vector<PatchParam> out(size_t(t.n_vertices));
+  for (size_t i = 0; i < t.verts.size(); ++i) {
+    PatchParam p = params[i];
+    if (p.patch < 0) p.patch = -1 - p.patch;
+    out[size_t(t.verts[i])] = p;
+  }
+  return out;
+}
+
+template <class T>
+std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, const SubdivisionOptions& o,
+                   PolygonTopology* final_topology, CornerParams* params) {
+  if (o.levels < 0 || o.levels > 8)
+    throw usage_error("subdivision levels must be 0..8, got " + std::to_string(o.levels));
+  PolygonTopology t = base;
+  std::vector<T> p = values;
+  if (params) *params = base_corner_params(base);
+  for (int level = 0; level < o.levels; ++level) {
+    const MeshConnectivity c = connectivity_of(t);
+    if (o.scheme == Scheme::catmull_clark) {
+      p = catmull_clark_values(t, c, p);
+      if (params) *params = refine_corner_params(t, *params);
+      t = catmull_clark_topology(t, c);
+    } else {
+      p = loop_values(t, c, p, o.loop_beta);
+      t = loop_topology(t, c);
+    }
+  }
+  if (o.limit) {
+    const MeshConnectivity c = connectivity_of(t);
+    if (o.scheme == Scheme::loop) {
+      if (o.levels == 0) loop_topology(t, c);  // refuses non-triangle meshes
+      p = loop_limit(t, c, p, o.loop_beta);
+    } else if (all_quads(t)) {
+      p = catmull_clark_limit(t, c, p);
+    } else {
+      // A vertex's limit is that of its vertex point one level down, where every face is a quad.
+      const PolygonTopology finer = catmull_clark_topology(t, c);
+      std::vector<T> limit = catmull_clark_limit(finer, connectivity_of(finer), catmull_clark_values(t, c, p));
+      limit.resize(p.size());
+      p = std::move(limit);
+    }
+  }
+  *final_topology = std::move(t);
+  return p;
+}
+
+}  // namespace
+
+SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
+  const PolygonTopology base = topology_of(mesh.mesh);
+  std::vector<Dual> q(mesh.n_vertices());
+  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariances[i]);
+  PolygonTopology t;
+  CornerParams params;
+  const bool cc = options.scheme == Scheme::catmull_clark;
+  const std::vector<Dual> refined = run(base, q, options, &t, cc ? &params : nullptr);
+
+  std::vector<Vec3> means(refined.size());
+  std::vector<Mat3> covariances(refined.size());
+  for (size_t i = 0; i < refined.size(); ++i) {
+    const auto g = from_dual(refined[i]);
+    if (!g) throw Error("subdivided vertex " + std::to_string(i) + " left the cone of positive definite matrices");
+    means[i] = g->mean;
+    covariances[i] = g->covariance;
+  }
+  std::vector<std::vector<int>> faces(size_t(t.n_faces()));
+  for (int f = 0; f < t.n_faces(); ++f)
+    faces[size_t(f)].assign(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
+  SubdivisionResult result;
+  result.mesh = make_covariance_mesh(means, covariances, faces, "subdivided mesh");
+  if (cc) result.vertex_params = vertex_params_of(t, params);
+  return result;
+}
+
+std::vector<Vec3> subdivide_points(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
+  std::vector<Vec3> points(mesh.n_vertices());
+  for (size_t i = 0; i < points.size(); ++i) points[i] = mesh.mean(i);
+  PolygonTopology t;
+  return run(topology_of(mesh.mesh), points, options, &t, nullptr);
+}
+
+}  // namespace gps

@@ -1,0 +1,34 @@
+#pragma once
+// The exact CPU reference: iterative GPS subdivision with limit projection (DESIGN.md §2).
+// Gaussians go to 9D once (thesis Eq. 2.10), a linear scheme refines them, and they come back once.
+#include <vector>
+
+#include "core/covariance_mesh.h"
+#include "core/loop.h"
+#include "core/patch_layout.h"
+
+namespace gps {
+
+enum class Scheme { catmull_clark, loop };
+
+struct SubdivisionOptions {
+  Scheme scheme = Scheme::catmull_clark;
+  int levels = 1;  // 0..8
+  bool limit = false;
+  LoopBeta loop_beta = LoopBeta::loop;
+};
+
+struct SubdivisionResult {
+  CovarianceMesh mesh;
+  /// Catmull-Clark only: for each output vertex, one (patch, u, v) of the input mesh's patch layout
+  /// (core/patch_layout.h) where it lies; empty for Loop.
+  std::vector<PatchParam> vertex_params;
+};
+
+/// N levels of GPS subdivision (map to 9D, linear scheme, optional exact limit projection, map back).
+SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions& options);
+
+/// The same scheme applied to the means alone (the ordinary linear surface, for comparison).
+std::vector<Vec3> subdivide_points(const CovarianceMesh& mesh, const SubdivisionOptions& options);
+
+}  // namespace gps

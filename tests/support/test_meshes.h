@@ -1,0 +1,54 @@
+#pragma once
+// Small covariance meshes built inside the tests (no files).
+#include <cmath>
+#include <vector>
+
+#include "core/covariance_mesh.h"
+
+namespace gps::test {
+
+/// An (n × m)-quad grid in the xy-plane with a gentle bump in z; covariance sigma²·I everywhere.
+inline CovarianceMesh grid_mesh(int n, int m, double sigma = 0.3) {
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= n; ++i) p.emplace_back(i, j, 0.3 * std::sin(0.7 * i) * std::cos(0.5 * j) + 0.05 * i * j);
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      faces.push_back({a, a + 1, a + n + 2, a + n + 1});
+    }
+  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "grid");
+}
+
+/// The unit cube, 8 vertices and 6 outward quads.
+inline CovarianceMesh cube_mesh(double sigma = 0.3) {
+  std::vector<Vec3> p = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                         {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  std::vector<std::vector<int>> faces = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                         {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+  return make_covariance_mesh(p, std::vector<Mat3>(8, sigma * sigma * Mat3::Identity()), faces, "cube");
+}
+
+/// Preiner's cone: apex (0, 1.5, 0), 8 vertices on a circle of radius 2 at y = −1.5, open bottom.
+inline CovarianceMesh cone_mesh(const Mat3& apex_covariance = 0.01 * Mat3::Identity()) {
+  std::vector<Vec3> p = {{0, 1.5, 0}};
+  for (int k = 0; k < 8; ++k) p.emplace_back(2 * std::cos(k * M_PI / 4), -1.5, -2 * std::sin(k * M_PI / 4));
+  std::vector<std::vector<int>> faces;
+  for (int k = 0; k < 8; ++k) faces.push_back({0, 1 + k, 1 + (k + 1) % 8});
+  std::vector<Mat3> cov(p.size(), 0.01 * Mat3::Identity());
+  cov[0] = apex_covariance;
+  return make_covariance_mesh(p, cov, faces, "cone");
+}
+
+/// A closed mesh of mixed faces: a pentagonal prism (two pentagons, five quads), irregular sizes.
+inline CovarianceMesh prism_mesh(double sigma = 0.4) {
+  std::vector<Vec3> p;
+  for (int k = 0; k < 5; ++k) p.emplace_back(std::cos(k * 2 * M_PI / 5), std::sin(k * 2 * M_PI / 5), -0.7);
+  for (int k = 0; k < 5; ++k) p.emplace_back(1.2 * std::cos(k * 2 * M_PI / 5), 1.2 * std::sin(k * 2 * M_PI / 5), 0.9);
+  std::vector<std::vector<int>> faces = {{4, 3, 2, 1, 0}, {5, 6, 7, 8, 9}};
+  for (int k = 0; k < 5; ++k) faces.push_back({k, (k + 1) % 5, 5 + (k + 1) % 5, 5 + k});
+  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "prism");
+}
+
+}  // namespace gps::test
