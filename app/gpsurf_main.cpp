@@ -4,15 +4,22 @@
 #include <cstdio>
 #include <iostream>
 
+#include "app/commands.h"
 #include "core/error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"gpsurf: Gaussian-product subdivision surfaces"};
   app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "help on every subcommand");
+  gps::add_info_command(app);
+  gps::add_sample_command(app);
+  gps::add_infer_command(app);
+  gps::add_subdivide_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    const int code = app.exit(e);  // prints help or the parse error
+    return code == 0 ? 0 : 2;
   } catch (const gps::Error& e) {
     std::cerr << "gpsurf: " << e.what() << "\n";
     return e.exit_code();

@@ -1,0 +1,35 @@
+// gpsurf infer IN -o OUT: covariances for a plain mesh (GPS paper Eq. 16–17, or isotropic).
+#include <iostream>
+
+#include "app/commands.h"
+#include "core/inference.h"
+#include "core/mesh_io.h"
+
+namespace gps {
+
+void add_infer_command(CLI::App& app) {
+  struct Args {
+    std::string input, output;
+    double bias = 0.05, isotropic = 0;
+    bool binary = false;
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = app.add_subcommand("infer", "Infer vertex covariances from the mesh (replaces any in the file)");
+  cmd->add_option("input", args->input, "input mesh")->required();
+  cmd->add_option("-o,--output", args->output, "output covariance PLY")->required();
+  auto* bias = cmd->add_option("--bias", args->bias, "bias added to the face covariances, times λmax (Eq. 16)")
+                   ->check(CLI::PositiveNumber);
+  cmd->add_option("--isotropic", args->isotropic, "isotropic covariances: σ = S × mean edge length")
+      ->check(CLI::PositiveNumber)
+      ->excludes(bias);
+  cmd->add_flag("--binary", args->binary, "binary PLY");
+  cmd->callback([args] {
+    CovarianceMesh m = read_mesh(args->input);
+    if (args->isotropic > 0) isotropic_covariances(m, args->isotropic);
+    else infer_covariances(m, args->bias);
+    write_mesh(args->output, m, args->binary);
+    std::cout << "wrote " << args->output << "\n";
+  });
+}
+
+}  // namespace gps

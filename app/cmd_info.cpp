@@ -1,0 +1,49 @@
+// gpsurf info FILE: counts, valences and covariance ranges of a mesh.
+#include <Eigen/Eigenvalues>
+#include <iostream>
+#include <map>
+
+#include "app/commands.h"
+#include "core/mesh_connectivity.h"
+#include "core/mesh_io.h"
+
+namespace gps {
+
+namespace {
+void print_info(const std::string& path) {
+  const CovarianceMesh m = read_mesh(path);
+  const PolygonTopology t = topology_of(m.mesh);
+  const MeshConnectivity c = connectivity_of(t);
+  std::map<int, int> face_sizes, valences;
+  for (int f = 0; f < t.n_faces(); ++f) ++face_sizes[t.face_size(f)];
+  int boundary_edges = 0, extraordinary = 0;
+  for (int e = 0; e < c.n_edges(); ++e) boundary_edges += c.is_boundary_edge(e);
+  for (int v = 0; v < t.n_vertices; ++v) {
+    ++valences[c.valence(v)];
+    const VertexRole role = vertex_role(c, v);
+    extraordinary += (role == VertexRole::interior && c.valence(v) != 4) || (role == VertexRole::boundary && c.valence(v) != 3);
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  for (const Mat3& s : m.covariances) {
+    const Vec3 ev = Eigen::SelfAdjointEigenSolver<Mat3>(s, Eigen::EigenvaluesOnly).eigenvalues();
+    lo = std::min(lo, ev(0));
+    hi = std::max(hi, ev(2));
+  }
+  std::cout << "file: " << path << "\nvertices: " << m.n_vertices() << "\nfaces: " << m.n_faces() << " (";
+  const char* sep = "";
+  for (const auto& [size, count] : face_sizes) std::cout << std::exchange(sep, ", ") << count << " with " << size << " sides";
+  std::cout << ")\nedges: " << c.n_edges() << "\nboundary edges: " << boundary_edges << "\nvalences:";
+  for (const auto& [valence, count] : valences) std::cout << ' ' << valence << ':' << count;
+  std::cout << "\nextraordinary vertices: " << extraordinary << "\n";
+  std::cout << "covariance eigenvalues: " << lo << " .. " << hi << "\n";
+}
+}  // namespace
+
+void add_info_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("info", "Print counts, valences and covariance ranges of a mesh");
+  auto path = std::make_shared<std::string>();
+  cmd->add_option("file", *path, "mesh file (.ply, .obj, .off, .stl)")->required();
+  cmd->callback([path] { print_info(*path); });
+}
+
+}  // namespace gps

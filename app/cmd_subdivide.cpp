@@ -1,0 +1,40 @@
+// gpsurf subdivide IN -o OUT --levels N: the exact CPU reference GPS subdivision.
+#include <iostream>
+
+#include "app/commands.h"
+#include "core/mesh_io.h"
+#include "core/reference_subdivision.h"
+
+namespace gps {
+
+void add_subdivide_command(CLI::App& app) {
+  struct Args {
+    std::string input, output, scheme = "catmull-clark", beta = "loop";
+    int levels = 1;
+    bool limit = false, binary = false;
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = app.add_subcommand("subdivide", "Gaussian-product subdivision on the CPU (the reference)");
+  cmd->add_option("input", args->input, "input mesh")->required();
+  cmd->add_option("-o,--output", args->output, "output (.ply keeps covariances, .obj positions)")->required();
+  cmd->add_option("--levels", args->levels, "subdivision levels")->check(CLI::Range(0, 8));
+  cmd->add_option("--scheme", args->scheme, "linear scheme")->check(CLI::IsMember({"catmull-clark", "loop"}));
+  cmd->add_option("--loop-beta", args->beta, "Loop vertex weight: Loop's original or Warren's 3/(8n)")
+      ->check(CLI::IsMember({"loop", "warren"}));
+  cmd->add_flag("--limit", args->limit, "move every vertex to its exact limit position");
+  cmd->add_flag("--binary", args->binary, "binary PLY");
+  cmd->callback([args] {
+    const CovarianceMesh m = read_mesh(args->input);
+    SubdivisionOptions o;
+    o.scheme = args->scheme == "loop" ? Scheme::loop : Scheme::catmull_clark;
+    o.levels = args->levels;
+    o.limit = args->limit;
+    o.loop_beta = args->beta == "warren" ? LoopBeta::warren : LoopBeta::loop;
+    const SubdivisionResult r = subdivide(m, o);
+    write_mesh(args->output, r.mesh, args->binary);
+    std::cout << "wrote " << args->output << " (" << r.mesh.n_vertices() << " vertices, " << r.mesh.n_faces()
+              << " faces)\n";
+  });
+}
+
+}  // namespace gps

@@ -1,0 +1,10 @@
+#pragma once
+// The subcommands of `gpsurf`, one file each (app/cmd_<name>.cpp).
+#include <CLI/CLI.hpp>
+
+namespace gps {
+void add_info_command(CLI::App& app);
+void add_sample_command(CLI::App& app);
+void add_infer_command(CLI::App& app);
+void add_subdivide_command(CLI::App& app);
+}  // namespace gps
