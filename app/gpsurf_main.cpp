@@ -10,6 +10,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"gpsurf: Gaussian-product subdivision surfaces"};
   app.require_subcommand(1);
+  app.failure_message([](const CLI::App*, const CLI::Error& e) { return "gpsurf: " + std::string(e.what()) + "\n"; });
   app.set_help_all_flag("--help-all", "help on every subcommand");
   gps::add_info_command(app);
   gps::add_sample_command(app);

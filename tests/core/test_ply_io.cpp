@@ -1,0 +1,170 @@
+#include "core/ply_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+
+#include "core/error.h"
+#include "core/mesh_io.h"
+#include "core/samples.h"
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+CovarianceMesh mesh_with_random_covariances() {
+  CovarianceMesh m = make_sample("cylinder");
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (auto& c : m.covariances) {
+    Mat3 a;
+    for (int i = 0; i < 9; ++i) a.data()[i] = u(rng) / 3.0;
+    c = a * a.transpose() + 1e-3 * Mat3::Identity();
+    c = (0.5 * (c + c.transpose())).eval();
+  }
+  for (size_t i = 0; i < m.n_vertices(); ++i) m.set_mean(i, m.mean(i) + Vec3(u(rng), u(rng), u(rng)) * 1e-3);
+  return m;
+}
+
+void expect_identical(const CovarianceMesh& a, const CovarianceMesh& b) {
+  ASSERT_EQ(a.n_vertices(), b.n_vertices());
+  ASSERT_EQ(a.n_faces(), b.n_faces());
+  for (size_t i = 0; i < a.n_vertices(); ++i) {
+    EXPECT_EQ(a.mean(i), b.mean(i));
+    EXPECT_EQ(a.covariance(i), b.covariance(i));
+  }
+  for (const auto f : a.mesh.faces()) {
+    std::vector<int> va, vb;
+    for (const auto v : a.mesh.fv_range(f)) va.push_back(v.idx());
+    for (const auto v : b.mesh.fv_range(PolyMesh::FaceHandle(f.idx()))) vb.push_back(v.idx());
+    EXPECT_EQ(va, vb);
+  }
+}
+
+TEST(PlyIo, RoundTripIsExactInAsciiAndBinary) {
+  test::TempDir dir;
+  const CovarianceMesh m = mesh_with_random_covariances();
+  for (const bool binary : {false, true}) {
+    const std::string path = dir.file(binary ? "b.ply" : "a.ply");
+    write_mesh(path, m, binary);
+    expect_identical(m, read_mesh(path));
+  }
+}
+
+TEST(PlyIo, ReadsFloatsAnyPropertyOrderAndExtraElements) {
+  const std::string ply =
+      "ply\nformat ascii 1.0\ncomment made by hand\nelement vertex 3\nproperty float cyy\nproperty float x\n"
+      "property float y\nproperty uchar red\nproperty float z\nproperty float cxx\nproperty float cxy\n"
+      "property float cxz\nproperty float cyz\nproperty float czz\nelement face 1\n"
+      "property list uchar int vertex_indices\nelement edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n"
+      "2 0 0 255 0 1 0 0 0 3\n2 1 0 0 0 1 0 0 0 3\n2 0 1 0 0 1 0 0 0 3\n3 0 1 2\n0 1\n";
+  const PlyContents c = parse_ply(ply, "hand.ply");
+  ASSERT_TRUE(c.has_covariances);
+  EXPECT_EQ(c.mesh.n_vertices(), 3u);
+  EXPECT_EQ(c.mesh.covariance(1), Vec3(1, 2, 3).asDiagonal().toDenseMatrix());
+  EXPECT_EQ(c.mesh.mean(1), Vec3(1, 0, 0));
+}
+
+TEST(PlyIo, PlainPlyGetsInferredCovariances) {
+  test::TempDir dir;
+  const std::string path = dir.write("plain.ply",
+                                     "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+                                     "property double z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                     "end_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+  const CovarianceMesh m = read_mesh(path);
+  EXPECT_TRUE(is_spd(m.covariance(0)));
+  EXPECT_NE(m.covariance(0), Mat3::Identity());
+}
+
+// Each malformed file: the message names the file and the problem.
+struct BadInput {
+  const char* name;
+  std::string contents;
+  const char* expected;
+};
+
+std::string header(const std::string& body_format, int nv, int nf) {
+  return "ply\nformat " + body_format + " 1.0\nelement vertex " + std::to_string(nv) +
+         "\nproperty double x\nproperty double y\nproperty double z\nproperty double cxx\nproperty double cxy\n"
+         "property double cxz\nproperty double cyy\nproperty double cyz\nproperty double czz\nelement face " +
+         std::to_string(nf) + "\nproperty list uchar int vertex_indices\nend_header\n";
+}
+
+std::string binary_vertices(int n) {
+  std::string out;
+  for (int i = 0; i < n; ++i) {
+    const double v[9] = {double(i % 2), double(i / 2), 0, 1, 0, 0, 1, 0, 1};
+    out.append(reinterpret_cast<const char*>(v), sizeof v);
+  }
+  return out;
+}
+
+TEST(PlyIo, MalformedFilesGiveOneLineErrors) {
+  const std::string v0 = "0 0 0 1 0 0 1 0 1\n", v1 = "1 0 0 1 0 0 1 0 1\n", tri = v0 + v1 + "0 1 0 1 0 0 1 0 1\n";
+  const std::vector<BadInput> cases = {
+      {"empty.ply", "", "empty"},
+      {"header.ply", "plx\n", "not a PLY file"},
+      {"format.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n", "unknown format"},
+      {"noend.ply", "ply\nformat ascii 1.0\nelement vertex 1\n", "end_header"},
+      {"proptype.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n", "unknown property type"},
+      {"index.ply", header("ascii", 3, 1) + tri + "3 0 1 7\n", "refers to vertex 7"},
+      {"small_face.ply", header("ascii", 3, 1) + tri + "2 0 1\n", "face 0 has 2 vertices"},
+      {"nan.ply", header("ascii", 3, 1) + "0 nan 0 1 0 0 1 0 1\n" + tri.substr(tri.find('\n') + 1) + "3 0 1 2\n",
+       "vertex 0 has a position that is not finite"},
+      {"inf.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 inf 0 0 1 0 1\n3 0 1 2\n",
+       "vertex 2 has a covariance that is not finite"},
+      {"spd.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 1 2 0 1 0 1\n3 0 1 2\n",
+       "vertex 2 has a covariance that is not positive definite"},
+      {"word.ply", header("ascii", 3, 1) + "0 zero 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n", "line 16: 'zero' is not a number"},
+      {"short_ascii.ply", header("ascii", 3, 1) + tri, "truncated"},
+      {"long_line.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 1 0 0 1 0 1 7\n3 0 1 2\n", "line 18: more values"},
+      {"truncated.ply", header("binary_little_endian", 4, 1) + binary_vertices(4).substr(0, 200), "truncated"},
+      {"truncated_faces.ply", header("binary_little_endian", 3, 1) + binary_vertices(3) + std::string("\x03\x00\x00", 3),
+       "truncated"},
+      {"huge.ply", header("binary_little_endian", 2000000000, 1) + binary_vertices(3), "more than the file holds"},
+      {"nonmanifold.ply",
+       header("ascii", 5, 3) + tri + "0 -1 0 1 0 0 1 0 1\n0 0 1 1 0 0 1 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n", "non-manifold"},
+  };
+  test::TempDir dir;
+  for (const auto& c : cases) {
+    const std::string path = dir.write(c.name, c.contents);
+    try {
+      read_mesh(path);
+      ADD_FAILURE() << c.name << " was accepted";
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(path), std::string::npos) << what;
+      EXPECT_NE(what.find(c.expected), std::string::npos) << c.name << ": " << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+      EXPECT_EQ(e.exit_code(), 1);
+    }
+  }
+  EXPECT_THROW(read_mesh(dir.file("missing.ply")), Error);
+  EXPECT_THROW(read_mesh(dir.path().string() + "/"), Error);
+  std::filesystem::create_directory(dir.file("folder.ply"));
+  try {
+    read_mesh(dir.file("folder.ply"));
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos);
+  }
+  EXPECT_THROW(read_mesh(dir.write("mesh.xyz", "1 2 3\n")), Error);
+}
+
+TEST(PlyIo, FailedWriteLeavesTheTargetAndNoTemporaryFile) {
+  test::TempDir dir;
+  const CovarianceMesh m = make_sample("cube");
+  const std::string target = dir.write("keep.ply", "old contents");
+  EXPECT_THROW(write_mesh(dir.file("no/such/folder/x.ply"), m), Error);
+  EXPECT_THROW(write_mesh(dir.file("x.stl"), m), Error);
+  EXPECT_THROW(write_mesh(dir.path().string(), m), Error);
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir.path())) ++files;
+  EXPECT_EQ(files, 1u);
+  write_mesh(target, m);
+  EXPECT_EQ(read_mesh(target).n_vertices(), 8u);
+}
+
+}  // namespace
+}  // namespace gps
