@@ -2,12 +2,27 @@
 
 #include <Eigen/Cholesky>
 #include <iostream>
-#include <set>
+#include <algorithm>
 #include <sstream>
 
 #include "core/error.h"
 
 namespace gps {
+
+namespace {
+// Sends std::cerr to nowhere while alive.
+class CerrSilencer {
+public:
+  CerrSilencer() : old_(std::cerr.rdbuf(sink_.rdbuf())) {}
+  ~CerrSilencer() { std::cerr.rdbuf(old_); }
+  CerrSilencer(const CerrSilencer&) = delete;
+  CerrSilencer& operator=(const CerrSilencer&) = delete;
+
+private:
+  std::ostringstream sink_;
+  std::streambuf* old_;
+};
+}  // namespace
 
 Vec3 CovarianceMesh::mean(size_t i) const { return to_vec3(mesh.point(PolyMesh::VertexHandle(int(i)))); }
 
@@ -33,28 +48,26 @@ CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::v
   m.covariances = covariances;
   std::vector<PolyMesh::VertexHandle> handles;
   handles.reserve(means.size());
+  m.mesh.reserve(means.size(), 2 * faces.size() + means.size(), faces.size());
   for (const Vec3& p : means) handles.push_back(m.mesh.add_vertex(to_point(p)));
   std::vector<PolyMesh::VertexHandle> fv;
+  // OpenMesh prints to std::cerr and returns an invalid handle on complex (non-manifold) input.
+  const CerrSilencer silence_openmesh;
   for (size_t f = 0; f < faces.size(); ++f) {
     const auto& face = faces[f];
-    const std::string where = source + ": face " + std::to_string(f);
-    if (face.size() < 3) throw Error(where + " has " + std::to_string(face.size()) + " vertices (at least 3 needed)");
+    const auto where = [&] { return source + ": face " + std::to_string(f); };
+    if (face.size() < 3) throw Error(where() + " has " + std::to_string(face.size()) + " vertices (at least 3 needed)");
     fv.clear();
-    std::set<int> seen;
     for (int i : face) {
       if (i < 0 || size_t(i) >= means.size())
-        throw Error(where + " refers to vertex " + std::to_string(i) + ", but there are only " +
+        throw Error(where() + " refers to vertex " + std::to_string(i) + ", but there are only " +
                     std::to_string(means.size()) + " vertices");
-      if (!seen.insert(i).second) throw Error(where + " uses vertex " + std::to_string(i) + " twice");
+      if (std::count(face.begin(), face.end(), i) > 1) throw Error(where() + " uses vertex " + std::to_string(i) + " twice");
       fv.push_back(handles[size_t(i)]);
     }
-    // OpenMesh prints to std::cerr and returns an invalid handle on complex (non-manifold) input.
-    std::ostringstream sink;
-    auto* old = std::cerr.rdbuf(sink.rdbuf());
     const auto fh = m.mesh.add_face(fv);
-    std::cerr.rdbuf(old);
     if (!fh.is_valid())
-      throw Error(where + " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
+      throw Error(where() + " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
   }
   for (const auto vh : m.mesh.vertices()) {
     if (!m.mesh.is_manifold(vh))

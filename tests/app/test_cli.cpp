@@ -1,0 +1,80 @@
+// The gpsurf command line, run as a user would: exit codes 0/1/2, one-line errors, files written.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/mesh_io.h"
+#include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+using test::gpsurf;
+using test::run_command;
+
+size_t lines(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
+
+TEST(Cli, SampleInfoSubdivideInfer) {
+  test::TempDir dir;
+  const auto list = run_command(gpsurf("sample --list"));
+  EXPECT_EQ(list.exit_code, 0);
+  EXPECT_NE(list.output.find("wirecube"), std::string::npos);
+  EXPECT_EQ(run_command(gpsurf("sample cube -o " + dir.file("cube.ply"))).exit_code, 0);
+  const auto info = run_command(gpsurf("info " + dir.file("cube.ply")));
+  EXPECT_EQ(info.exit_code, 0);
+  EXPECT_NE(info.output.find("vertices: 8"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("6 with 4 sides"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("extraordinary vertices: 8"), std::string::npos) << info.output;
+  const auto sub = run_command(gpsurf("subdivide " + dir.file("cube.ply") + " -o " + dir.file("s.ply") + " --levels 2 --limit"));
+  EXPECT_EQ(sub.exit_code, 0) << sub.output;
+  EXPECT_EQ(read_mesh(dir.file("s.ply")).n_faces(), 96u);
+  EXPECT_EQ(run_command(gpsurf("subdivide " + dir.file("cube.ply") + " -o " + dir.file("s.obj") + " --levels 1")).exit_code, 0);
+  EXPECT_EQ(read_mesh(dir.file("s.obj")).n_faces(), 24u);
+  EXPECT_EQ(run_command(gpsurf("sample cone -o " + dir.file("cone.ply"))).exit_code, 0);
+  EXPECT_EQ(run_command(gpsurf("subdivide " + dir.file("cone.ply") + " -o " + dir.file("l.ply") + " --levels 2 --scheme loop --loop-beta warren")).exit_code, 0);
+  EXPECT_EQ(run_command(gpsurf("infer " + dir.file("s.obj") + " -o " + dir.file("i.ply") + " --bias 0.1")).exit_code, 0);
+  EXPECT_EQ(run_command(gpsurf("infer " + dir.file("s.obj") + " -o " + dir.file("j.ply") + " --isotropic 0.3")).exit_code, 0);
+  for (const char* cmd : {"info", "sample", "infer", "subdivide"})
+    EXPECT_EQ(run_command(gpsurf(std::string(cmd) + " --help")).exit_code, 0) << cmd;
+}
+
+TEST(Cli, UsageErrorsExitWithTwo) {
+  test::TempDir dir;
+  run_command(gpsurf("sample cube -o " + dir.file("cube.ply")));
+  for (const std::string& args : std::vector<std::string>{"", "frobnicate", "sample teapot -o " + dir.file("t.ply"),
+                                 "subdivide " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --levels 9",
+                                 "subdivide " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --scheme butterfly",
+                                 "infer " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --bias -1",
+                                 "sample cube"}) {
+    const auto r = run_command(gpsurf(args));
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
+    EXPECT_EQ(lines(r.output), 1u) << args << ": " << r.output;
+  }
+}
+
+TEST(Cli, RuntimeErrorsExitWithOneAndKeepFiles) {
+  test::TempDir dir;
+  const std::string bad = dir.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nend_header\n1\n");
+  const std::string keep = dir.write("keep.ply", "precious");
+  for (const std::string& args : std::vector<std::string>{"info " + dir.file("missing.ply"), "info " + bad, "info " + dir.path().string(),
+                                 "subdivide " + bad + " -o " + keep,
+                                 "subdivide " + dir.file("cube.ply") + " -o " + keep,
+                                 "sample cube -o " + dir.file("no/folder/c.ply")}) {
+    const auto r = run_command(gpsurf(args));
+    EXPECT_EQ(r.exit_code, 1) << args << ": " << r.output;
+    EXPECT_EQ(lines(r.output), 1u) << args << ": " << r.output;
+    EXPECT_EQ(r.output.rfind("gpsurf: ", 0), 0u) << r.output;
+  }
+  std::ifstream in(keep);
+  std::string contents((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(contents, "precious");
+  // Loop on a quad mesh is refused with a message naming the face.
+  run_command(gpsurf("sample cube -o " + dir.file("cube.ply")));
+  const auto loop = run_command(gpsurf("subdivide " + dir.file("cube.ply") + " -o " + keep + " --scheme loop"));
+  EXPECT_EQ(loop.exit_code, 1);
+  EXPECT_NE(loop.output.find("face 0 has 4 vertices"), std::string::npos) << loop.output;
+}
+
+}  // namespace
+}  // namespace gps

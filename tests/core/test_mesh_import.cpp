@@ -1,0 +1,94 @@
+#include "core/mesh_import.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cstring>
+
+#include "core/error.h"
+#include "core/inference.h"
+#include "core/mesh_io.h"
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(MeshImport, ObjWithSlashesAndNegativeIndices) {
+  const auto m = parse_obj("# square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1 -1/1\n", "a.obj");
+  EXPECT_EQ(m.n_vertices(), 4u);
+  EXPECT_EQ(m.n_faces(), 1u);
+  EXPECT_EQ(m.mesh.valence(PolyMesh::FaceHandle(0)), 4u);
+  EXPECT_NE(error_of([] { parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "b.obj"); }).find("b.obj: line 4: vertex index 9 is out of range"), std::string::npos);
+  EXPECT_NE(error_of([] { parse_obj("v 0 0 0\nv 1 0 0\nf 1 2\n", "c.obj"); }).find("line 3: a face needs at least 3 vertices"), std::string::npos);
+  EXPECT_NE(error_of([] { parse_obj("v 0 nan 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "d.obj"); }).find("vertex 0 has a position that is not finite"), std::string::npos);
+  EXPECT_NE(error_of([] { parse_obj("", "e.obj"); }).find("e.obj: the file is empty"), std::string::npos);
+}
+
+TEST(MeshImport, OffWithCommentsAndColours) {
+  const auto m = parse_off("OFF\n# tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 255 0 0\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", "t.off");
+  EXPECT_EQ(m.n_vertices(), 4u);
+  EXPECT_EQ(m.n_faces(), 4u);
+  EXPECT_NE(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "x.off"); }).find("refers to vertex 5"), std::string::npos);
+  EXPECT_NE(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n", "y.off"); }).find("truncated"), std::string::npos);
+}
+
+TEST(MeshImport, StlAsciiAndBinaryWeldCorners) {
+  const std::string ascii =
+      "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+      "facet normal 0 0 1\nouter loop\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n";
+  const auto a = parse_stl(ascii, "a.stl");
+  EXPECT_EQ(a.n_vertices(), 4u);
+  EXPECT_EQ(a.n_faces(), 2u);
+  std::string binary(80, ' ');
+  const uint32_t n = 2;
+  binary.append(reinterpret_cast<const char*>(&n), 4);
+  const float tris[2][12] = {{0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 0}};
+  for (const auto& t : tris) {
+    binary.append(reinterpret_cast<const char*>(t), 48);
+    binary.append(2, '\0');
+  }
+  const auto b = parse_stl(binary, "b.stl");
+  EXPECT_EQ(b.n_vertices(), 4u);
+  EXPECT_EQ(b.n_faces(), 2u);
+  EXPECT_NE(error_of([&] { parse_stl(binary.substr(0, 120), "c.stl"); }).find("truncated"), std::string::npos);
+}
+
+TEST(MeshImport, ReadMeshInfersCovariancesForPlainFiles) {
+  test::TempDir dir;
+  const std::string path = dir.write("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  const CovarianceMesh inferred = read_mesh(path);
+  ImportOptions iso;
+  iso.covariance = ImportOptions::Covariance::isotropic;
+  const CovarianceMesh isotropic = read_mesh(path, iso);
+  EXPECT_TRUE(isotropic.covariance(0).isApprox(0.25 * Mat3::Identity()));
+  EXPECT_FALSE(inferred.covariance(0).isApprox(isotropic.covariance(0)));
+}
+
+// A planar mesh: the smallest axis of every inferred covariance is the plane's normal (Eq. 16–17).
+TEST(Inference, PlanarMeshGivesFlatCovariancesAlongTheNormal) {
+  test::TempDir dir;
+  CovarianceMesh m = read_mesh(dir.write("g.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1.2 0\n"
+                                                  "f 1 2 5 4\nf 2 3 6 5\n"));
+  for (double bias : {0.01, 0.05, 0.2}) {
+    infer_covariances(m, bias);
+    for (const Mat3& c : m.covariances) {
+      const Eigen::SelfAdjointEigenSolver<Mat3> eig(c);
+      EXPECT_NEAR(std::abs(eig.eigenvectors().col(0).z()), 1.0, 1e-9);
+      // A smaller bias flattens more: the ratio of smallest to largest σ² is about the bias.
+      EXPECT_LT(eig.eigenvalues()(0) / eig.eigenvalues()(2), 2.0 * bias);
+    }
+  }
+  EXPECT_THROW(infer_covariances(m, 0.0), Error);
+}
+
+}  // namespace
+}  // namespace gps
