@@ -1,0 +1,82 @@
+#include "core/stencil_table.h"
+
+#include <algorithm>
+#include <bit>
+#include <cassert>
+#include <cmath>
+
+namespace gps {
+
+StencilTableBuilder::StencilTableBuilder(int n_base) {
+  table_.n_base = n_base;
+  table_.offsets.push_back(0);
+}
+
+int StencilTableBuilder::add(const Stencil& s) {
+  if (const int v = s.as_vertex(); v >= 0) return v;
+  assert(!s.empty() && std::abs(s.weight_sum() - 1.0) < 1e-9);
+  std::vector<std::pair<int, double>> terms;
+  terms.reserve(s.terms().size());
+  for (const auto& t : s.terms())
+    if (t.second != 0.0) terms.push_back(t);
+  size_t hash = terms.size();
+  for (const auto& [index, weight] : terms)
+    hash = (hash * 0x9e3779b97f4a7c15ull) ^ (size_t(index) * 31 + std::bit_cast<size_t>(weight));
+  auto& candidates = rows_by_hash_[hash];
+  for (const int row : candidates) {
+    const int b = table_.offsets[size_t(row)], e = table_.offsets[size_t(row) + 1];
+    if (e - b != int(terms.size())) continue;
+    bool same = true;
+    for (int k = b; k < e && same; ++k)
+      same = table_.indices[size_t(k)] == terms[size_t(k - b)].first && table_.weights[size_t(k)] == terms[size_t(k - b)].second;
+    if (same) return table_.n_base + row;
+  }
+  const int row = table_.n_rows();
+  for (const auto& [index, weight] : terms) {
+    table_.indices.push_back(index);
+    table_.weights.push_back(weight);
+  }
+  table_.offsets.push_back(int(table_.indices.size()));
+  candidates.push_back(row);
+  return table_.n_base + row;
+}
+
+std::vector<Dual> apply_stencils(const StencilTable& t, const std::vector<Dual>& base) {
+  std::vector<Dual> points(size_t(t.n_points()));
+  std::copy(base.begin(), base.end(), points.begin());
+  for (int r = 0; r < t.n_rows(); ++r) {
+    Dual sum = Dual::Zero();
+    for (int k = t.offsets[size_t(r)]; k < t.offsets[size_t(r) + 1]; ++k)
+      sum += t.weights[size_t(k)] * base[size_t(t.indices[size_t(k)])];
+    points[size_t(t.n_base + r)] = sum;
+  }
+  return points;
+}
+
+StencilDependents stencil_dependents(const StencilTable& t) {
+  StencilDependents d;
+  d.offsets.assign(size_t(t.n_base) + 1, 0);
+  for (const int i : t.indices) ++d.offsets[size_t(i) + 1];
+  for (int v = 0; v < t.n_base; ++v) d.offsets[size_t(v) + 1] += d.offsets[size_t(v)];
+  d.rows.resize(t.indices.size());
+  std::vector<int> next(d.offsets.begin(), d.offsets.end() - 1);
+  for (int r = 0; r < t.n_rows(); ++r)
+    for (int k = t.offsets[size_t(r)]; k < t.offsets[size_t(r) + 1]; ++k) d.rows[size_t(next[size_t(t.indices[size_t(k)])]++)] = r;
+  return d;
+}
+
+void update_stencils(const StencilTable& t, const StencilDependents& d, const std::vector<int>& changed,
+                     std::vector<Dual>& points) {
+  std::vector<int> rows;
+  for (const int v : changed) rows.insert(rows.end(), d.rows.begin() + d.offsets[size_t(v)], d.rows.begin() + d.offsets[size_t(v) + 1]);
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  for (const int r : rows) {
+    Dual sum = Dual::Zero();
+    for (int k = t.offsets[size_t(r)]; k < t.offsets[size_t(r) + 1]; ++k)
+      sum += t.weights[size_t(k)] * points[size_t(t.indices[size_t(k)])];
+    points[size_t(t.n_base + r)] = sum;
+  }
+}
+
+}  // namespace gps

@@ -1,0 +1,40 @@
+#pragma once
+// Building and applying the stencil table of core/plan_table.h (DESIGN.md §2 steps 3–4).
+#include <unordered_map>
+#include <vector>
+
+#include "core/linalg.h"
+#include "core/plan_table.h"
+#include "core/stencil.h"
+
+namespace gps {
+
+/// Collects the points plans read: a stencil that is a single base vertex is that vertex's index;
+/// any other becomes a row, rows with identical stencils shared.
+class StencilTableBuilder {
+public:
+  explicit StencilTableBuilder(int n_base);
+  /// The point index of `s` (a base vertex index, or n_base + row).
+  int add(const Stencil& s);
+  StencilTable finish() { return std::move(table_); }
+
+private:
+  StencilTable table_;
+  std::unordered_map<size_t, std::vector<int>> rows_by_hash_;
+};
+
+/// All points: q of the base vertices, then every row (one sparse matrix-vector product over 9D).
+std::vector<Dual> apply_stencils(const StencilTable& table, const std::vector<Dual>& base);
+
+/// For incremental updates: which rows read each base vertex (the transposed table).
+struct StencilDependents {
+  std::vector<int> offsets, rows;
+};
+StencilDependents stencil_dependents(const StencilTable& table);
+
+/// Re-applies only the rows that read the changed base vertices; `points` holds every point and
+/// must already carry the changed vertices' new q in its first n_base entries.
+void update_stencils(const StencilTable& table, const StencilDependents& dependents,
+                     const std::vector<int>& changed_vertices, std::vector<Dual>& points);
+
+}  // namespace gps
