@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/limit_masks.h"
 #include "core/local_mesh.h"
 #include "core/stencil_table.h"
 
@@ -57,14 +58,15 @@ public:
 
   PlanTables build() {
     const PolygonTopology& t = base_.topology;
+    const bool split = !all_quads(t);  // core/patch_layout.h: then every face is split
     for (int f = 0; f < t.n_faces(); ++f) {
       std::vector<int> corners(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
-      if (corners.size() == 4) {
+      if (!split) {
         plans_.patch_roots.push_back(build_node(base_, {corners[0], corners[1], corners[2], corners[3]}, 0));
         plans_.patch_corner_points.insert(plans_.patch_corner_points.end(), corners.begin(), corners.end());
         continue;
       }
-      // An n-gon: its n Catmull-Clark children are the patch roots (core/patch_layout.h).
+      // A face of n sides: its n Catmull-Clark children are the patch roots.
       std::vector<int> index;
       const LocalMesh sub = extract_neighbourhood(base_, corners, index);
       const LocalMesh fine = refine_local_mesh(sub);

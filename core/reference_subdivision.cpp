@@ -9,16 +9,17 @@ namespace gps {
 
 namespace {
 
-// Where each face corner sits in the patch layout; patch −1 marks the corners of a base n-gon,
-// whose patches only begin after the first step.
+// Where each face corner sits in the patch layout; patch −1 − p marks a corner of a base face that
+// is split into patches p, p+1, … (core/patch_layout.h), which begin only after the first step.
 using CornerParams = std::vector<PatchParam>;
 
 CornerParams base_corner_params(const PolygonTopology& t) {
+  const bool split = !all_quads(t);
   CornerParams params(t.verts.size());
   int patch = 0;
   for (int f = 0; f < t.n_faces(); ++f) {
     const int o = t.offsets[size_t(f)], n = t.face_size(f);
-    if (n == 4) {
+    if (n == 4 && !split) {
       const double us[4] = {0, 1, 1, 0}, vs[4] = {0, 0, 1, 1};
       for (int k = 0; k < 4; ++k) params[size_t(o + k)] = {patch, us[k], vs[k]};
       patch += 1;

@@ -1,0 +1,207 @@
+// Plans against the exact reference (issue "Subdivision plans and stencil tables").
+#include "core/plan_builder.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+
+#include "core/error.h"
+#include "core/patch_eval.h"
+#include "core/patch_layout.h"
+#include "core/reference_subdivision.h"
+#include "tests/support/plan_fixture.h"
+
+namespace gps {
+namespace {
+
+using test::PlannedMesh;
+
+CovarianceMesh with_random_covariances(CovarianceMesh m, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (auto& c : m.covariances) {
+    Mat3 a;
+    for (int i = 0; i < 9; ++i) a.data()[i] = u(rng);
+    const double s = c.trace() / 3.0;
+    c = s * (0.3 * a * a.transpose() + 0.2 * Mat3::Identity());
+    c = (0.5 * (c + c.transpose())).eval();
+  }
+  return m;
+}
+
+// Max distance (relative to the bounding-box diagonal) between plan and reference limit vertices,
+// over the vertices whose leaf node is of the given kinds.
+struct Comparison {
+  double regular = 0, all = 0;
+  int n_regular = 0;
+};
+
+Comparison compare_with_reference(const PlannedMesh& p, int levels) {
+  const auto ref = subdivide(p.mesh, {Scheme::catmull_clark, levels, true});
+  const double diag = bounding_box_diagonal(p.mesh);
+  Comparison c;
+  for (size_t k = 0; k < ref.mesh.n_vertices(); ++k) {
+    const PatchParam& pp = ref.vertex_params[k];
+    const auto s = evaluate_patch(p.tables.plans, p.points, pp.patch, pp.u, pp.v);
+    EXPECT_TRUE(s.has_value());
+    if (!s) continue;
+    const double e = (s->position - ref.mesh.mean(k)).norm() / diag;
+    c.all = std::max(c.all, e);
+    if (s->kind == NodeKind::regular) c.regular = std::max(c.regular, e), ++c.n_regular;
+  }
+  return c;
+}
+
+TEST(PlanBuilder, RegularPatchesAreExact) {
+  for (const char* name : {"grid", "sphere", "torus", "valence5", "wirecube", "cylinder", "cone"}) {
+    const PlannedMesh p(with_random_covariances(make_sample(name, 150), 3), 3);
+    const Comparison c = compare_with_reference(p, 4);
+    EXPECT_LT(c.regular, 1e-9) << name;
+    EXPECT_GT(c.n_regular, 100) << name;
+  }
+}
+
+TEST(PlanBuilder, PatchCornersAreExactLimitPositions) {
+  for (const char* name : {"cube", "valence3", "valence7", "wirecube", "cone-pointy", "cylinder"}) {
+    const PlannedMesh p(with_random_covariances(make_sample(name), 5), 2);
+    const auto ref = subdivide(p.mesh, {Scheme::catmull_clark, 1, true});
+    const double diag = bounding_box_diagonal(p.mesh);
+    int corners = 0;
+    for (size_t k = 0; k < ref.mesh.n_vertices(); ++k) {
+      const PatchParam& pp = ref.vertex_params[k];
+      if ((pp.u != 0 && pp.u != 1) || (pp.v != 0 && pp.v != 1)) continue;
+      const auto s = evaluate_patch(p.tables.plans, p.points, pp.patch, pp.u, pp.v);
+      ASSERT_TRUE(s);
+      EXPECT_LT((s->position - ref.mesh.mean(k)).norm(), 1e-12 * diag) << name << " vertex " << k;
+      ++corners;
+    }
+    EXPECT_GT(corners, 7) << name;
+  }
+}
+
+// Near extraordinary vertices the terminal Bézier patches approximate; the error falls with depth.
+// Measured (max over limit vertices of reference level 5, relative to the bounding-box diagonal):
+// depth 3 ≤ 3.2e-3 on all of these, the worst being the cylinder's octagon caps.
+TEST(PlanBuilder, ErrorNearExtraordinaryVerticesFallsWithDepth) {
+  std::vector<std::string> names = {"cube", "wirecube"};
+  for (int n = 3; n <= 10; ++n) names.push_back("valence" + std::to_string(n));
+  for (const auto& name : names) {
+    double previous = 1;
+    for (int depth = 1; depth <= 3; ++depth) {
+      const double error = compare_with_reference(PlannedMesh(make_sample(name), depth), 5).all;
+      if (name == "valence4") EXPECT_LT(error, 1e-12);  // no extraordinary vertex: exact at every depth
+      else EXPECT_LT(error, previous) << name << " depth " << depth;
+      previous = error;
+    }
+    EXPECT_LT(previous, 3.5e-3) << name;
+  }
+}
+
+// Both sides of every shared patch edge give the same positions at the same edge parameters.
+TEST(PlanBuilder, NeighbouringPatchesAreWatertight) {
+  for (const char* name : {"wirecube", "valence9", "cylinder", "cone-pointy", "grid"}) {
+    const PlannedMesh p(with_random_covariances(make_sample(name, 64), 7), 3);
+    const auto& plans = p.tables.plans;
+    const double diag = bounding_box_diagonal(p.mesh);
+    const auto edge_param = [](int k, double t) {
+      switch (k) {
+        case 0: return std::pair{t, 0.0};
+        case 1: return std::pair{1.0, t};
+        case 2: return std::pair{1.0 - t, 1.0};
+        default: return std::pair{0.0, 1.0 - t};
+      }
+    };
+    std::map<std::pair<int, int>, std::pair<int, int>> first_side;
+    int shared = 0;
+    for (int patch = 0; patch < plans.n_patches(); ++patch)
+      for (int k = 0; k < 4; ++k) {
+        const int a = plans.patch_corner_points[size_t(4 * patch + k)];
+        const int b = plans.patch_corner_points[size_t(4 * patch + (k + 1) % 4)];
+        const auto [it, added] = first_side.try_emplace({std::min(a, b), std::max(a, b)}, patch, k);
+        if (added) continue;
+        ++shared;
+        const auto [other, ko] = it->second;
+        for (int i = 0; i <= 16; ++i) {
+          const double t = i / 16.0;
+          const auto [u0, v0] = edge_param(k, t);
+          const auto [u1, v1] = edge_param(ko, 1.0 - t);  // the neighbour runs the edge the other way
+          const auto s0 = evaluate_patch(plans, p.points, patch, u0, v0);
+          const auto s1 = evaluate_patch(plans, p.points, other, u1, v1);
+          ASSERT_TRUE(s0 && s1);
+          EXPECT_LT((s0->position - s1->position).norm(), 1e-12 * diag) << name << " patches " << patch << "/" << other;
+        }
+      }
+    EXPECT_GT(shared, 10) << name;
+  }
+}
+
+// Every evaluated q̂ is positive definite, extreme covariances included; net weights of the
+// boundary phantoms stay non-negative.
+TEST(PlanBuilder, EvaluatedGaussiansStayValid) {
+  for (const char* name : {"cone-pointy", "cone-cylinder", "cone-concave", "grid", "valence3"}) {
+    const PlannedMesh p(make_sample(name, 36), 3);
+    for (int patch = 0; patch < p.tables.plans.n_patches(); ++patch)
+      for (int i = 0; i <= 8; ++i)
+        for (int j = 0; j <= 8; ++j) EXPECT_TRUE(evaluate_patch(p.tables.plans, p.points, patch, i / 8.0, j / 8.0)) << name;
+  }
+  // Net weights: evaluate with q = unit vectors per base vertex (one coordinate of a 9-vector).
+  const PlannedMesh grid(make_sample("grid", 16), 3);
+  const auto& t = grid.tables;
+  for (size_t v = 0; v < grid.base.size(); ++v) {
+    std::vector<Dual> unit(grid.base.size(), Dual::Zero());
+    unit[v][0] = 1.0;
+    const auto pts = apply_stencils(t.stencils, unit);
+    for (int patch = 0; patch < t.plans.n_patches(); ++patch)
+      for (int i = 0; i <= 6; ++i)
+        for (int j = 0; j <= 6; ++j) {
+          Dual q, qu, qv;
+          evaluate_dual(t.plans, pts, patch, i / 6.0, j / 6.0, q, qu, qv);
+          EXPECT_GE(q[0], -1e-12) << "vertex " << v << " patch " << patch;
+        }
+  }
+}
+
+TEST(PlanBuilder, IsotropicCovariancesGivePlainCatmullClarkAndScalingChangesNothing) {
+  const CovarianceMesh mesh = make_sample("wirecube");  // equal edges: equal isotropic covariances
+  const PlannedMesh p(mesh, 3);
+  CovarianceMesh scaled = with_random_covariances(mesh, 9);
+  const PlannedMesh a(scaled, 3);
+  for (auto& c : scaled.covariances) c *= 123.0;
+  const PlannedMesh b(scaled, 3);
+  // Plain Catmull-Clark: the same plans over 3D points.
+  std::vector<Dual> plain(mesh.n_vertices());
+  for (size_t i = 0; i < plain.size(); ++i) plain[i] << 1, 0, 0, 1, 0, 1, mesh.mean(i);
+  const auto plain_points = apply_stencils(p.tables.stencils, plain);
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int k = 0; k < 500; ++k) {
+    const int patch = int(u(rng) * p.tables.plans.n_patches());
+    const double s = u(rng), t = u(rng);
+    Dual q, qu, qv;
+    evaluate_dual(p.tables.plans, plain_points, patch, s, t, q, qu, qv);
+    EXPECT_LT((evaluate_patch(p.tables.plans, p.points, patch, s, t)->position - q.tail<3>()).norm(), 1e-12);
+    EXPECT_LT((evaluate_patch(a.tables.plans, a.points, patch, s, t)->position -
+               evaluate_patch(b.tables.plans, b.points, patch, s, t)->position).norm(), 1e-12);
+  }
+}
+
+TEST(PlanBuilder, AnalyticNormalsMatchFiniteDifferences) {
+  const PlannedMesh p(with_random_covariances(make_sample("valence5"), 4), 3);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.01, 0.99);
+  for (int k = 0; k < 200; ++k) {
+    const int patch = int(u(rng) * p.tables.plans.n_patches());
+    const double s = u(rng), t = u(rng), h = 1e-6;
+    const auto c = evaluate_patch(p.tables.plans, p.points, patch, s, t);
+    const auto su = [&](double ds, double dt) { return evaluate_patch(p.tables.plans, p.points, patch, s + ds, t + dt)->position; };
+    const Vec3 du = (su(h, 0) - su(-h, 0)) / (2 * h), dv = (su(0, h) - su(0, -h)) / (2 * h);
+    EXPECT_LT((c->du - du).norm(), 1e-5 * (1 + du.norm()));
+    EXPECT_LT((c->dv - dv).norm(), 1e-5 * (1 + dv.norm()));
+  }
+  EXPECT_THROW(build_plans(topology_of(p.mesh.mesh), 0), Error);
+  EXPECT_THROW(build_plans(topology_of(p.mesh.mesh), 9), Error);
+}
+
+}  // namespace
+}  // namespace gps
