@@ -7,4 +7,6 @@ void add_info_command(CLI::App& app);
 void add_sample_command(CLI::App& app);
 void add_infer_command(CLI::App& app);
 void add_subdivide_command(CLI::App& app);
+void add_tessellate_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
 }  // namespace gps

@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
   gps::add_sample_command(app);
   gps::add_infer_command(app);
   gps::add_subdivide_command(app);
+  gps::add_tessellate_command(app);
+  gps::add_bench_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

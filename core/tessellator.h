@@ -1,0 +1,14 @@
+#pragma once
+// Uniform tessellation of every patch into a watertight triangle mesh (the CPU twin of the GPU's
+// uniform tessellation levels).
+#include "core/plan_table.h"
+#include "core/triangle_mesh.h"
+
+namespace gps {
+
+/// Every patch at level L (1..64): an (L+1)² grid of limit points, two triangles per cell.
+/// Samples on a patch corner or a shared patch edge are evaluated once and shared, so the mesh is
+/// watertight. Throws gps::Error if a sample leaves the cone of positive definite matrices.
+TriangleMesh tessellate(const PlanTable& plans, const std::vector<Dual>& points, int level);
+
+}  // namespace gps

@@ -1,0 +1,72 @@
+#include "core/triangle_mesh.h"
+
+#include <charconv>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/mesh_io.h"
+
+namespace gps {
+
+namespace {
+
+void write_number(std::ostream& out, double x) {
+  char buffer[32];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, x);
+  out.write(buffer, r.ptr - buffer);
+}
+
+void write_ply(std::ostream& out, const TriangleMesh& m, bool binary) {
+  out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\ncomment gpsurf tessellated limit surface\n"
+      << "element vertex " << m.positions.size() << "\n";
+  for (const char* name : {"x", "y", "z", "nx", "ny", "nz"}) out << "property double " << name << "\n";
+  out << "element face " << m.triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (size_t i = 0; i < m.positions.size(); ++i) {
+    const double v[6] = {m.positions[i].x(), m.positions[i].y(), m.positions[i].z(),
+                         m.normals[i].x(),   m.normals[i].y(),   m.normals[i].z()};
+    if (binary) {
+      out.write(reinterpret_cast<const char*>(v), sizeof v);
+      continue;
+    }
+    for (int k = 0; k < 6; ++k) {
+      write_number(out, v[k]);
+      out.put(k == 5 ? '\n' : ' ');
+    }
+  }
+  for (const auto& t : m.triangles) {
+    if (binary) {
+      out.put(char(3));
+      out.write(reinterpret_cast<const char*>(t.data()), 12);
+    } else {
+      out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    }
+  }
+}
+
+void write_obj(std::ostream& out, const TriangleMesh& m) {
+  for (const char* tag : {"v ", "vn "}) {
+    const auto& values = tag[1] == 'n' ? m.normals : m.positions;
+    for (const Vec3& p : values) {
+      out << tag;
+      write_number(out, p.x());
+      out.put(' ');
+      write_number(out, p.y());
+      out.put(' ');
+      write_number(out, p.z());
+      out.put('\n');
+    }
+  }
+  for (const auto& t : m.triangles)
+    out << "f " << t[0] + 1 << "//" << t[0] + 1 << ' ' << t[1] + 1 << "//" << t[1] + 1 << ' ' << t[2] + 1 << "//" << t[2] + 1 << '\n';
+}
+
+}  // namespace
+
+void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, bool binary) {
+  const std::string ext = extension_of(path);
+  if (ext == ".ply") write_file_atomically(path, [&](std::ostream& out) { write_ply(out, mesh, binary); }, binary);
+  else if (ext == ".obj") write_file_atomically(path, [&](std::ostream& out) { write_obj(out, mesh); });
+  else throw usage_error(path + ": cannot write format '" + ext + "' (use .ply or .obj)");
+}
+
+}  // namespace gps
