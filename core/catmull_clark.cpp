@@ -1,7 +1,6 @@
 #include "core/catmull_clark.h"
 
 #include "core/linalg.h"
-#include "core/stencil.h"
 
 namespace gps {
 
@@ -70,7 +69,8 @@ std::vector<T> catmull_clark_values(const PolygonTopology& t, const MeshConnecti
 }
 
 template std::vector<Vec3> catmull_clark_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&);
-template std::vector<Stencil> catmull_clark_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Stencil>&);
+template std::vector<Eigen::VectorXd> catmull_clark_values(const PolygonTopology&, const MeshConnectivity&,
+                                                           const std::vector<Eigen::VectorXd>&);
 template std::vector<Dual> catmull_clark_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&);
 
 }  // namespace gps

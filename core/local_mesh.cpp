@@ -1,6 +1,7 @@
 #include "core/local_mesh.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "core/catmull_clark.h"
 
@@ -24,6 +25,25 @@ int LocalMesh::find_face(const std::vector<int>& corners) const {
     if (std::all_of(corners.begin(), corners.end(), [&](int x) { return std::find(begin, end, x) != end; })) return f;
   }
   return -1;
+}
+
+Stencil LocalMesh::point(int v) const { return combination({{v, 1.0}}); }
+
+Stencil LocalMesh::combination(const std::vector<std::pair<int, double>>& terms) const {
+  if (is_base) {
+    Stencil s;
+    for (const auto& [v, w] : terms) s += Stencil::vertex(v) * w;
+    return s;
+  }
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(Eigen::Index(base_ids.size()));
+  for (const auto& [v, w] : terms) {
+    if (points[size_t(v)].size() == 0) throw std::logic_error("plan builder read a point outside the known neighbourhood");
+    sum += w * points[size_t(v)];
+  }
+  std::vector<std::pair<int, double>> sparse;
+  for (Eigen::Index i = 0; i < sum.size(); ++i)
+    if (sum[i] != 0.0) sparse.emplace_back(base_ids[size_t(i)], sum[i]);
+  return Stencil::from_terms(std::move(sparse));
 }
 
 LocalMesh base_local_mesh(const PolygonTopology& topology) {
@@ -60,11 +80,20 @@ LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corn
   }
   out.topology.n_vertices = int(old_index.size());
   out.connectivity = connectivity_of(out.topology);
-  out.points.reserve(old_index.size());
   out.complete.resize(old_index.size());
+  if (m.is_base) {  // the neighbourhood's own vertices become the base of its dense stencils
+    out.base_ids = old_index;
+    std::sort(out.base_ids.begin(), out.base_ids.end());  // sorted, so combinations come out sorted
+    for (const int v : old_index) {
+      const auto at = std::lower_bound(out.base_ids.begin(), out.base_ids.end(), v) - out.base_ids.begin();
+      out.points.push_back(Eigen::VectorXd::Unit(Eigen::Index(old_index.size()), Eigen::Index(at)));
+    }
+  } else {
+    out.base_ids = m.base_ids;
+    for (const int v : old_index) out.points.push_back(m.points[size_t(v)]);
+  }
   for (size_t i = 0; i < old_index.size(); ++i) {
     const int v = old_index[i];
-    out.points.push_back(m.point(v));
     out.complete[i] = m.complete[size_t(v)] && out.connectivity.n_vertex_faces(int(i)) == c.n_vertex_faces(v);
   }
   return out;
@@ -72,11 +101,12 @@ LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corn
 
 LocalMesh refine_local_mesh(const LocalMesh& m) {
   LocalMesh out;
-  std::vector<Stencil> points = m.points;
-  if (m.is_base) {
-    points.resize(size_t(m.topology.n_vertices));
-    for (int v = 0; v < m.topology.n_vertices; ++v) points[size_t(v)] = Stencil::vertex(v);
-  }
+  out.base_ids = m.base_ids;
+  // Unknown points (size 0) stand in as zeros; what they spoil is marked incomplete below.
+  const Eigen::Index n_base = Eigen::Index(m.base_ids.size());
+  std::vector<Eigen::VectorXd> points = m.points;
+  for (auto& p : points)
+    if (p.size() == 0) p = Eigen::VectorXd::Zero(n_base);
   out.points = catmull_clark_values(m.topology, m.connectivity, points);
   out.topology = catmull_clark_topology(m.topology, m.connectivity);
   out.connectivity = connectivity_of(out.topology);
@@ -90,7 +120,7 @@ LocalMesh refine_local_mesh(const LocalMesh& m) {
     out.complete[size_t(nv + e)] = both_faces || known;
   }
   for (size_t i = 0; i < out.points.size(); ++i)
-    if (!out.complete[i]) out.points[i] = Stencil();  // never read: see refine_local_mesh()
+    if (!out.complete[i]) out.points[i].resize(0);  // never read: see refine_local_mesh()
   return out;
 }
 

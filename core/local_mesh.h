@@ -1,11 +1,13 @@
 #pragma once
 // A piece of a subdivided mesh around one face, its vertices as stencils over the base vertices
-// (DESIGN.md §2 step 2). A vertex is "complete" when every face it has in the whole mesh at that
+// of the neighbourhood, kept dense (DESIGN.md §2 step 2). A vertex is "complete" when every face it has in the whole mesh at that
 // level is present, so that its Catmull-Clark vertex point (and the edge points of its edges) can
 // be computed from the piece alone.
 #include <vector>
 
 #include "core/mesh_connectivity.h"
+#include <Eigen/Core>
+
 #include "core/stencil.h"
 
 namespace gps {
@@ -13,12 +15,15 @@ namespace gps {
 struct LocalMesh {
   PolygonTopology topology;
   MeshConnectivity connectivity;
-  std::vector<Stencil> points;  // per vertex; empty when `is_base` (vertex i is base vertex i)
+  std::vector<int> base_ids;             // the base vertices the stencils combine (empty when `is_base`)
+  std::vector<Eigen::VectorXd> points;   // per vertex: weights over base_ids; empty when `is_base`
   std::vector<char> complete;
-  bool is_base = false;
+  bool is_base = false;                  // the whole base mesh: vertex i is base vertex i
 
-  /// The stencil of vertex v.
-  Stencil point(int v) const { return is_base ? Stencil::vertex(v) : points[size_t(v)]; }
+  /// The stencil of vertex v over the global base vertices.
+  Stencil point(int v) const;
+  /// The stencil of Σ w·vertex over the global base vertices.
+  Stencil combination(const std::vector<std::pair<int, double>>& terms) const;
   /// The face with exactly these corners (in any rotation), or −1.
   int find_face(const std::vector<int>& corners) const;
   /// The edge joining a and b, or −1.

@@ -97,13 +97,7 @@ public:
 private:
   int point(const LocalMesh& m, const Combo& combo) {
     if (m.is_base && combo.size() == 1 && combo[0].second == 1.0) return combo[0].first;
-    Stencil s;
-    for (const auto& [v, w] : combo) {
-      const Stencil p = m.point(v);
-      if (p.empty()) throw std::logic_error("plan builder read a point outside the known neighbourhood");
-      s += p * w;
-    }
-    return stencils_.add(s);
+    return stencils_.add(m.combination(combo));
   }
 
   // Interior valence 4, boundary with two faces, or a corner with one face; all faces around quads.

@@ -1,7 +1,6 @@
 #pragma once
-// A stencil: a point as a sparse linear combination Σ w_k · q_{i_k} of base vertices. Stencils
-// support the arithmetic the subdivision rules need, so catmull_clark_values() refines them as
-// it refines 9D points (Far's stencils in OpenSubdiv's terms).
+// A stencil: a point as a sparse linear combination Σ w_k · q_{i_k} of base vertices (Far's
+// stencils in OpenSubdiv's terms), the form in which plan points enter the stencil table.
 #include <utility>
 #include <vector>
 
@@ -16,9 +15,12 @@ public:
     s.terms_.emplace_back(index, 1.0);
     return s;
   }
-  /// The empty combination (the zero point; `rows` is ignored, for Eigen-like generic code).
-  static Stencil Zero(long = 0) { return {}; }
-  long rows() const { return 0; }
+  /// A stencil from terms sorted by index without repeats.
+  static Stencil from_terms(std::vector<std::pair<int, double>> terms) {
+    Stencil s;
+    s.terms_ = std::move(terms);
+    return s;
+  }
 
   const std::vector<std::pair<int, double>>& terms() const { return terms_; }
   bool empty() const { return terms_.empty(); }
