@@ -1,0 +1,11 @@
+# Turns GLSL files into C++ string constants: cmake -DOUT=<header> -DSOURCES=<a|b|...> -P embed_shaders.cmake
+string(REPLACE "|" ";" SOURCES "${SOURCES}")
+set(text "// Generated from shaders/*.glsl by cmake/embed_shaders.cmake; do not edit.\n#pragma once\n\nnamespace gps::shaders {\n")
+foreach(source ${SOURCES})
+  get_filename_component(name ${source} NAME_WE)
+  file(READ ${source} body)
+  string(APPEND text "inline constexpr const char* ${name} = R\"glsl(${body})glsl\";\n")
+endforeach()
+string(APPEND text "}  // namespace gps::shaders\n")
+file(WRITE ${OUT}.tmp "${text}")
+file(COPY_FILE ${OUT}.tmp ${OUT} ONLY_IF_DIFFERENT)

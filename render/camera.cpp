@@ -1,0 +1,33 @@
+#include "render/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace gps {
+
+glm::vec3 Camera::eye() const {
+  const float yaw = glm::radians(yaw_degrees), pitch = glm::radians(pitch_degrees);
+  return target + distance * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+}
+
+glm::mat4 Camera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 1, 0)); }
+
+glm::mat4 Camera::projection(float aspect) const {
+  const float near_plane = std::max(1e-4f, distance * 0.01f), far_plane = distance * 100.0f;
+  return glm::perspective(glm::radians(fov_degrees), aspect, near_plane, far_plane);
+}
+
+Camera frame_box(const Vec3& lo, const Vec3& hi, float yaw_degrees, float pitch_degrees) {
+  Camera c;
+  const Vec3 centre = 0.5 * (lo + hi);
+  c.target = glm::vec3(float(centre.x()), float(centre.y()), float(centre.z()));
+  const float radius = std::max(1e-6f, float(0.5 * (hi - lo).norm()));
+  c.yaw_degrees = yaw_degrees;
+  c.pitch_degrees = pitch_degrees;
+  c.distance = radius / std::sin(glm::radians(c.fov_degrees) * 0.5f) * 1.05f;
+  return c;
+}
+
+}  // namespace gps

@@ -1,0 +1,288 @@
+#include "render/surface_renderer.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "core/stencil_table.h"
+#include "render/gl_context.h"
+#include "render/matcap.h"
+#include "shaders/embedded_shaders.h"
+
+namespace gps {
+
+namespace {
+
+enum Binding { kGaussians = 0, kPoints = 1, kOffsets = 2, kIndices = 3, kWeights = 4, kNodes = 5, kRoots = 6, kCorners = 7, kChanged = 8, kRows = 9 };
+
+ShaderProgram patch_program(bool feedback) {
+  std::vector<ShaderStage> stages = {{GL_VERTEX_SHADER, {shaders::patch_vert}},
+                                     {GL_TESS_CONTROL_SHADER, {shaders::patch_basis, shaders::plan_eval, shaders::patch_tesc}},
+                                     {GL_TESS_EVALUATION_SHADER, {shaders::patch_basis, shaders::plan_eval, shaders::patch_tese}}};
+  if (feedback) return ShaderProgram("patch_feedback", stages, {"v_patch_uv", "v_position", "v_normal"});
+  stages.push_back({GL_FRAGMENT_SHADER, {shaders::shade_frag}});
+  return ShaderProgram("patch", stages);
+}
+
+}  // namespace
+
+SurfaceRenderer::SurfaceRenderer()
+    : dual_map_("dual_map", {{GL_COMPUTE_SHADER, {shaders::dual_map_comp}}}),
+      stencil_("stencil", {{GL_COMPUTE_SHADER, {shaders::stencil_comp}}}),
+      patches_(patch_program(false)),
+      feedback_(patch_program(true)),
+      triangles_("mesh", {{GL_VERTEX_SHADER, {shaders::mesh_vert}}, {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
+      lines_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
+  glCreateBuffers(10, buffers_);
+  glCreateVertexArrays(1, &empty_vao_);
+  glCreateVertexArrays(1, &triangle_vao_);
+  glCreateVertexArrays(1, &lines_vao_);
+  glCreateBuffers(1, &triangle_vbo_);
+  glCreateBuffers(1, &triangle_ibo_);
+  glCreateBuffers(1, &lines_vbo_);
+  set_matcap(make_builtin_matcap("clay"));
+  check_gl_errors("creating the renderer");
+}
+
+SurfaceRenderer::~SurfaceRenderer() {
+  glDeleteBuffers(10, buffers_);
+  glDeleteVertexArrays(1, &empty_vao_);
+  glDeleteVertexArrays(1, &triangle_vao_);
+  glDeleteVertexArrays(1, &lines_vao_);
+  glDeleteBuffers(1, &triangle_vbo_);
+  glDeleteBuffers(1, &triangle_ibo_);
+  glDeleteBuffers(1, &lines_vbo_);
+  if (matcap_) glDeleteTextures(1, &matcap_);
+}
+
+template <class T>
+static void upload(unsigned buffer, size_t& size, const std::vector<T>& data) {
+  // Empty buffers still need storage to be bound.
+  size = std::max<size_t>(sizeof(T), data.size() * sizeof(T));
+  glNamedBufferData(buffer, GLsizeiptr(size), data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
+}
+
+void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, int depth) {
+  tables_ = build_plans(topology_of(mesh.mesh), depth);
+  n_base_ = int(mesh.n_vertices());
+  const StencilTable& s = tables_.stencils;
+  const StencilDependents deps = stencil_dependents(s);
+  dependents_offsets_ = deps.offsets;
+  dependents_rows_ = deps.rows;
+  upload(buffers_[kOffsets], buffer_sizes_[kOffsets], s.offsets);
+  upload(buffers_[kIndices], buffer_sizes_[kIndices], s.indices);
+  upload(buffers_[kWeights], buffer_sizes_[kWeights], std::vector<float>(s.weights.begin(), s.weights.end()));
+  upload(buffers_[kNodes], buffer_sizes_[kNodes], tables_.plans.nodes);
+  upload(buffers_[kRoots], buffer_sizes_[kRoots], tables_.plans.patch_roots);
+  upload(buffers_[kCorners], buffer_sizes_[kCorners], tables_.plans.patch_corner_points);
+  upload(buffers_[kPoints], buffer_sizes_[kPoints], std::vector<float>(size_t(s.n_points()) * 12, 0.0f));
+  upload_gaussians(mesh);
+  // Base mesh lines.
+  std::vector<float> lines;
+  for (const auto e : mesh.mesh.edges())
+    for (const auto v : {e.v0(), e.v1()})
+      for (int k = 0; k < 3; ++k) lines.push_back(float(mesh.mesh.point(v)[k]));
+  line_vertex_count_ = int(lines.size() / 3);
+  glNamedBufferData(lines_vbo_, GLsizeiptr(std::max<size_t>(1, lines.size()) * sizeof(float)), lines.data(), GL_STATIC_DRAW);
+  glVertexArrayVertexBuffer(lines_vao_, 0, lines_vbo_, 0, 3 * sizeof(float));
+  glEnableVertexArrayAttrib(lines_vao_, 0);
+  glVertexArrayAttribFormat(lines_vao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(lines_vao_, 0, 0);
+  run_compute(nullptr);
+}
+
+void SurfaceRenderer::upload_gaussians(const CovarianceMesh& mesh) {
+  std::vector<float> g(mesh.n_vertices() * 9);
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+    const Vec3 m = mesh.mean(i);
+    const Mat3& c = mesh.covariance(i);
+    const double values[9] = {m.x(), m.y(), m.z(), c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
+    std::copy(values, values + 9, g.begin() + long(9 * i));
+  }
+  if (buffer_sizes_[kGaussians] == std::max<size_t>(sizeof(float), g.size() * sizeof(float)))
+    glNamedBufferSubData(buffers_[kGaussians], 0, GLsizeiptr(g.size() * sizeof(float)), g.data());
+  else
+    upload(buffers_[kGaussians], buffer_sizes_[kGaussians], g);
+}
+
+void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  for (const int v : changed) {
+    const Vec3 m = mesh.mean(size_t(v));
+    const Mat3& c = mesh.covariance(size_t(v));
+    const float values[9] = {float(m.x()), float(m.y()), float(m.z()), float(c(0, 0)), float(c(0, 1)),
+                             float(c(0, 2)), float(c(1, 1)), float(c(1, 2)), float(c(2, 2))};
+    glNamedBufferSubData(buffers_[kGaussians], GLintptr(9 * sizeof(float) * size_t(v)), sizeof values, values);
+  }
+  run_compute(&changed);
+}
+
+void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
+  const int n_rows = tables_.stencils.n_rows();
+  for (int b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+  int vertex_count = n_base_, row_count = n_rows;
+  if (changed) {
+    std::vector<int> rows;
+    for (const int v : *changed)
+      rows.insert(rows.end(), dependents_rows_.begin() + dependents_offsets_[size_t(v)],
+                  dependents_rows_.begin() + dependents_offsets_[size_t(v) + 1]);
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    upload(buffers_[kChanged], buffer_sizes_[kChanged], *changed);
+    upload(buffers_[kRows], buffer_sizes_[kRows], rows);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChanged, buffers_[kChanged]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRows, buffers_[kRows]);
+    vertex_count = int(changed->size());
+    row_count = int(rows.size());
+  }
+  dual_map_.use();
+  dual_map_.set("u_count", vertex_count);
+  dual_map_.set("u_use_list", changed ? 1 : 0);
+  if (vertex_count > 0) glDispatchCompute(GLuint((vertex_count + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  stencil_.use();
+  stencil_.set("u_count", row_count);
+  stencil_.set("u_n_base", n_base_);
+  stencil_.set("u_use_list", changed ? 1 : 0);
+  if (row_count > 0) glDispatchCompute(GLuint((row_count + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  check_gl_errors("the compute passes");
+}
+
+void SurfaceRenderer::set_triangles(const TriangleMesh& t) {
+  std::vector<float> vertices;
+  vertices.reserve(t.positions.size() * 6);
+  for (size_t i = 0; i < t.positions.size(); ++i)
+    for (const Vec3* v : {&t.positions[i], &t.normals[i]})
+      for (int k = 0; k < 3; ++k) vertices.push_back(float((*v)[k]));
+  std::vector<unsigned> indices;
+  for (const auto& tri : t.triangles) indices.insert(indices.end(), {unsigned(tri[0]), unsigned(tri[1]), unsigned(tri[2])});
+  triangle_count_ = int(t.triangles.size());
+  glNamedBufferData(triangle_vbo_, GLsizeiptr(std::max<size_t>(1, vertices.size()) * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+  glNamedBufferData(triangle_ibo_, GLsizeiptr(std::max<size_t>(1, indices.size()) * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
+  glVertexArrayVertexBuffer(triangle_vao_, 0, triangle_vbo_, 0, 6 * sizeof(float));
+  glVertexArrayElementBuffer(triangle_vao_, triangle_ibo_);
+  for (GLuint a = 0; a < 2; ++a) {
+    glEnableVertexArrayAttrib(triangle_vao_, a);
+    glVertexArrayAttribFormat(triangle_vao_, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
+    glVertexArrayAttribBinding(triangle_vao_, a, 0);
+  }
+  check_gl_errors("uploading triangles");
+}
+
+void SurfaceRenderer::set_matcap(const Image& m) {
+  if (matcap_) glDeleteTextures(1, &matcap_);
+  glCreateTextures(GL_TEXTURE_2D, 1, &matcap_);
+  glTextureStorage2D(matcap_, 1, GL_RGBA32F, m.width, m.height);
+  // Image rows run top-down; texture rows bottom-up, so that v = 0.5·n.y + 0.5 points up.
+  std::vector<float> rgba(size_t(m.width) * size_t(m.height) * 4, 1.0f);
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        rgba[(size_t(m.height - 1 - y) * size_t(m.width) + size_t(x)) * 4 + size_t(c)] = m.at(x, y, std::min(c, m.channels - 1));
+  glTextureSubImage2D(matcap_, 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, rgba.data());
+  glTextureParameteri(matcap_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(matcap_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(matcap_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(matcap_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  check_gl_errors("uploading the MatCap");
+}
+
+void SurfaceRenderer::set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& o, float aspect,
+                                         int width, int height) const {
+  p.set("u_view_projection", camera.view_projection(aspect));
+  p.set("u_view", camera.view());
+  p.set("u_viewport", glm::vec2(float(width), float(height)));
+  p.set("u_level", std::clamp(o.level, 1.0f, 64.0f));
+  p.set("u_pixels", o.pixels);
+  p.set("u_debug_mismatch", o.debug_mismatch ? 1 : 0);
+  p.set("u_mode", int(o.mode));
+  p.set("u_matcap", 0);
+  p.set("u_wire_color", glm::vec4(0.1f, 0.1f, 0.15f, o.wireframe ? 0.85f : 0.0f));
+}
+
+void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, const DrawOptions& o) {
+  target.bind();
+  const float clear_color[4] = {o.background.r, o.background.g, o.background.b, 1.0f};
+  const float clear_zero[4] = {0, 0, 0, 0};
+  glClearBufferfv(GL_COLOR, 0, clear_color);
+  glClearBufferfv(GL_COLOR, 1, clear_zero);
+  glClearBufferfv(GL_COLOR, 2, clear_zero);
+  const float far_depth = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &far_depth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glBindTextureUnit(0, matcap_);
+  for (int b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+  const float aspect = float(target.width()) / float(target.height());
+  const ShaderProgram& program = o.static_triangles ? triangles_ : patches_;
+  set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
+  program.use();
+  if (o.static_triangles) {
+    glBindVertexArray(triangle_vao_);
+    glDrawElements(GL_TRIANGLES, 3 * triangle_count_, GL_UNSIGNED_INT, nullptr);
+  } else {
+    glBindVertexArray(empty_vao_);
+    glPatchParameteri(GL_PATCH_VERTICES, 1);
+    glDrawArrays(GL_PATCHES, 0, tables_.plans.n_patches());
+  }
+  if (o.mesh_lines && line_vertex_count_ > 0) {
+    lines_.set("u_view_projection", camera.view_projection(aspect));
+    lines_.set("u_color", glm::vec4(0.45f, 0.45f, 0.45f, 1.0f));
+    lines_.use();
+    glDisable(GL_DEPTH_TEST);
+    const GLenum only_colour[3] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE};
+    glNamedFramebufferDrawBuffers(target.framebuffer(), 3, only_colour);
+    glBindVertexArray(lines_vao_);
+    glDrawArrays(GL_LINES, 0, line_vertex_count_);
+    const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glNamedFramebufferDrawBuffers(target.framebuffer(), 3, all);
+    glEnable(GL_DEPTH_TEST);
+  }
+  glBindVertexArray(0);
+  check_gl_errors("drawing");
+}
+
+std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, float aspect) {
+  const size_t max_vertices = size_t(tables_.plans.n_patches()) * 64 * 64 * 6 + 64;
+  unsigned buffer = 0, query = 0;
+  glCreateBuffers(1, &buffer);
+  glNamedBufferData(buffer, GLsizeiptr(max_vertices * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
+  glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
+  for (int b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+  set_frame_uniforms(feedback_, camera, o, aspect, 512, 512);
+  feedback_.use();
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
+  glBindVertexArray(empty_vao_);
+  glPatchParameteri(GL_PATCH_VERTICES, 1);
+  glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+  glBeginTransformFeedback(GL_TRIANGLES);
+  glDrawArrays(GL_PATCHES, 0, tables_.plans.n_patches());
+  glEndTransformFeedback();
+  glEndQuery(GL_PRIMITIVES_GENERATED);
+  glDisable(GL_RASTERIZER_DISCARD);
+  GLuint primitives = 0;
+  glGetQueryObjectuiv(query, GL_QUERY_RESULT, &primitives);
+  std::vector<TessellatedVertex> out(std::min<size_t>(max_vertices, size_t(primitives) * 3));
+  glGetNamedBufferSubData(buffer, 0, GLsizeiptr(out.size() * sizeof(TessellatedVertex)), out.data());
+  glDeleteBuffers(1, &buffer);
+  glDeleteQueries(1, &query);
+  check_gl_errors("capturing tessellated vertices");
+  return out;
+}
+
+std::vector<float> SurfaceRenderer::read_points() const {
+  std::vector<float> points(size_t(tables_.stencils.n_points()) * 12);
+  glGetNamedBufferSubData(buffers_[kPoints], 0, GLsizeiptr(points.size() * sizeof(float)), points.data());
+  check_gl_errors("reading the plan points");
+  return points;
+}
+
+size_t SurfaceRenderer::buffer_bytes() const {
+  size_t total = 0;
+  for (const size_t s : buffer_sizes_) total += s;
+  return total;
+}
+
+}  // namespace gps

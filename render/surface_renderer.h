@@ -1,0 +1,84 @@
+#pragma once
+// The GPU pipeline of DESIGN.md §2: plans and stencils uploaded once per topology; per edit a
+// compute pass maps changed vertices to 9D and applies the stencils; per frame GL_PATCHES with
+// tessellation shaders evaluate the limit surface, shaded by MatCap.
+#include <glm/glm.hpp>
+#include <memory>
+#include <vector>
+
+#include "core/covariance_mesh.h"
+#include "core/plan_builder.h"
+#include "core/triangle_mesh.h"
+#include "render/camera.h"
+#include "render/image_io.h"
+#include "render/render_target.h"
+#include "render/shader_program.h"
+
+namespace gps {
+
+enum class ShadingMode { matcap = 0, normals = 1, flat = 2 };
+
+struct DrawOptions {
+  float level = 8.0f;      // uniform tessellation level 1..64
+  float pixels = 0.0f;     // > 0: adaptive levels, target edge length in pixels
+  ShadingMode mode = ShadingMode::matcap;
+  bool wireframe = false;  // tessellation wireframe over the shading
+  bool mesh_lines = false; // the base mesh as thin grey lines
+  bool ellipsoids = false; // covariance ellipsoids
+  float sigma_scale = 1.0f;
+  glm::vec3 background{1.0f, 1.0f, 1.0f};
+  bool static_triangles = false;  // draw the triangles of set_triangles() instead of the patches
+  bool debug_mismatch = false;    // tests only: give neighbouring patches different edge levels
+};
+
+/// One vertex the tessellator produced: patch, (u, v), position and normal (transform feedback).
+struct TessellatedVertex {
+  float patch, u, v;
+  float position[3];
+  float normal[3];
+};
+
+class SurfaceRenderer {
+public:
+  /// Needs a current GL 4.5 context.
+  SurfaceRenderer();
+  ~SurfaceRenderer();
+  SurfaceRenderer(const SurfaceRenderer&) = delete;
+  SurfaceRenderer& operator=(const SurfaceRenderer&) = delete;
+
+  /// New topology: builds plans and stencils (CPU) and uploads everything, then a full compute pass.
+  void set_mesh(const CovarianceMesh& mesh, int depth);
+  /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them.
+  void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  /// Triangles to draw with DrawOptions::static_triangles (CPU tessellation, reference subdivision).
+  void set_triangles(const TriangleMesh& triangles);
+  void set_matcap(const Image& matcap);
+
+  void draw(const RenderTarget& target, const Camera& camera, const DrawOptions& options);
+  /// The vertices the tessellator generates for `options` (no rasterisation).
+  std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, float aspect);
+
+  const PlanTables& tables() const { return tables_; }
+  /// The plan points as the compute passes left them (12 floats each: q in three vec4).
+  std::vector<float> read_points() const;
+  /// GPU memory held by the pipeline's buffers, in bytes.
+  size_t buffer_bytes() const;
+
+private:
+  void upload_gaussians(const CovarianceMesh& mesh);
+  void run_compute(const std::vector<int>* changed);
+  void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& options, float aspect, int width,
+                          int height) const;
+
+  PlanTables tables_;
+  std::vector<int> dependents_offsets_, dependents_rows_;
+  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangles_, lines_;
+  unsigned buffers_[10] = {};
+  size_t buffer_sizes_[10] = {};
+  unsigned empty_vao_ = 0, triangle_vao_ = 0, triangle_vbo_ = 0, triangle_ibo_ = 0, lines_vao_ = 0, lines_vbo_ = 0;
+  int triangle_count_ = 0, line_vertex_count_ = 0;
+  unsigned matcap_ = 0;
+  int n_base_ = 0;
+};
+
+}  // namespace gps

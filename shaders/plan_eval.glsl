@@ -1,0 +1,56 @@
+// The plans and their points (core/plan_table.h) and their evaluation; mirrors core/patch_eval.cpp.
+// A 9D point q = (xx xy xz yy yz zz | b0 b1 b2) is three vec4: (xx xy xz yy) (yz zz b0 b1) (b2 0 0 0).
+layout(std430, binding = 1) readonly buffer Points { vec4 points[]; };
+layout(std430, binding = 5) readonly buffer Nodes { int nodes[]; };
+layout(std430, binding = 6) readonly buffer Roots { int roots[]; };
+layout(std430, binding = 7) readonly buffer CornerPoints { int corner_points[]; };
+
+mat3 precision_of(vec4 a, vec4 b) { return mat3(a.x, a.y, a.z, a.y, a.w, b.x, a.z, b.x, b.y); }
+vec3 precision_mean_of(vec4 b, vec4 c) { return vec3(b.z, b.w, c.x); }
+
+// μ of plan point p: solve [q̂] μ = q̄ (thesis Eq. 2.11).
+vec3 point_mean(int p) {
+  vec4 a = points[3 * p], b = points[3 * p + 1], c = points[3 * p + 2];
+  return inverse(precision_of(a, b)) * precision_mean_of(b, c);
+}
+
+// Position, tangents (Eq. 3.12) and normal of the limit surface at (u, v) of a patch.
+void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 mu_v) {
+  int node = roots[patch_id];
+  float scale = 1.0;
+  // The kind is read into a variable once per node: re-reading nodes[node] after the loop gave the
+  // stale value on Mesa 22.3 llvmpipe (caught by test_surface_renderer).
+  int kind = nodes[node];
+  while (kind == 0) {
+    int ubit = uv.x >= 0.5 ? 1 : 0, vbit = uv.y >= 0.5 ? 1 : 0;
+    uv = 2.0 * uv - vec2(ubit, vbit);
+    scale *= 2.0;
+    node = nodes[node + 1 + ubit + 2 * vbit];
+    kind = nodes[node];
+  }
+  float wu[4], dwu[4], wv[4], dwv[4];
+  if (kind == 1) {
+    bspline_basis(uv.x, wu, dwu);
+    bspline_basis(uv.y, wv, dwv);
+  } else {
+    bezier_basis(uv.x, wu, dwu);
+    bezier_basis(uv.y, wv, dwv);
+  }
+  vec4 qa = vec4(0.0), qb = vec4(0.0), qc = vec4(0.0);
+  vec4 ua = vec4(0.0), ub = vec4(0.0), uc = vec4(0.0);
+  vec4 va = vec4(0.0), vb = vec4(0.0), vc = vec4(0.0);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      int p = nodes[node + 1 + i + 4 * j];
+      vec4 a = points[3 * p], b = points[3 * p + 1], c = points[3 * p + 2];
+      float w = wu[i] * wv[j], wdu = dwu[i] * wv[j], wdv = wu[i] * dwv[j];
+      qa += w * a; qb += w * b; qc += w * c;
+      ua += wdu * a; ub += wdu * b; uc += wdu * c;
+      va += wdv * a; vb += wdv * b; vc += wdv * c;
+    }
+  mat3 sigma = inverse(precision_of(qa, qb));
+  mu = sigma * precision_mean_of(qb, qc);
+  // Eq. 3.12: μ_u = [q̂]⁻¹ (q̄_u − [q̂_u] μ), in patch parameters.
+  mu_u = scale * (sigma * (precision_mean_of(ub, uc) - precision_of(ua, ub) * mu));
+  mu_v = scale * (sigma * (precision_mean_of(vb, vc) - precision_of(va, vb) * mu));
+}

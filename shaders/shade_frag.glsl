@@ -1,0 +1,29 @@
+// MatCap shading (thesis 4.1), normals as colours, or flat; plus world-space AOVs.
+in vec3 v_position;
+in vec3 v_normal;
+in vec2 v_grid;
+
+uniform int u_mode;  // 0 MatCap, 1 normals, 2 flat
+uniform mat4 u_view;
+uniform sampler2D u_matcap;
+uniform vec4 u_wire_color;  // alpha 0: no tessellation wireframe
+
+layout(location = 0) out vec4 out_color;
+layout(location = 1) out vec4 out_position;
+layout(location = 2) out vec4 out_normal;
+
+void main() {
+  vec3 n = normalize(v_normal);
+  if (u_mode == 2) n = normalize(cross(dFdx(v_position), dFdy(v_position)));
+  vec3 shading_normal = gl_FrontFacing ? n : -n;
+  vec3 view_normal = normalize(mat3(u_view) * shading_normal);
+  vec3 color;
+  if (u_mode == 1) color = 0.5 * n + 0.5;
+  else color = texture(u_matcap, 0.5 * view_normal.xy + 0.5).rgb;
+  // Tessellation wireframe: distance to the nearest grid line, in pixels.
+  vec2 to_line = abs(fract(v_grid - 0.5) - 0.5) / max(fwidth(v_grid), vec2(1e-6));
+  float wire = u_wire_color.a * (1.0 - clamp(min(to_line.x, to_line.y) - 0.25, 0.0, 1.0));
+  out_color = vec4(mix(color, u_wire_color.rgb, wire), 1.0);
+  out_position = vec4(v_position, 1.0);
+  out_normal = vec4(n, 1.0);
+}

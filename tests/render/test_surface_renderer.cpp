@@ -1,0 +1,80 @@
+// The GPU pipeline on OSMesa against the CPU evaluator (issue "The GPU pipeline").
+#include "render/surface_renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/patch_eval.h"
+#include "core/samples.h"
+#include "core/stencil_table.h"
+#include "render/gl_context.h"
+#include "tests/support/plan_fixture.h"
+
+namespace gps {
+namespace {
+
+class GpuTest : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() { context_ = create_offscreen_context().release(); }
+  static void TearDownTestSuite() {
+    delete context_;
+    context_ = nullptr;
+  }
+  static GlContext* context_;
+};
+GlContext* GpuTest::context_ = nullptr;
+
+struct VertexErrors {
+  double position = 0, normal_degrees = 0;
+  size_t count = 0;
+};
+
+// Every vertex the GPU tessellator produced, against the CPU evaluator at the same (patch, u, v).
+VertexErrors compare_vertices(const CovarianceMesh& mesh, int depth, float level) {
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, depth);
+  DrawOptions o;
+  o.level = level;
+  const auto vertices = renderer.capture_vertices(Camera{}, o, 1.0f);
+  const test::PlannedMesh cpu(mesh, depth);
+  const double diag = bounding_box_diagonal(mesh);
+  VertexErrors e;
+  for (const auto& v : vertices) {
+    const auto s = evaluate_patch(cpu.tables.plans, cpu.points, int(v.patch), v.u, v.v);
+    if (!s) continue;
+    e.position = std::max(e.position, (s->position - Vec3(v.position[0], v.position[1], v.position[2])).norm() / diag);
+    const double c = std::clamp(s->normal.dot(Vec3(v.normal[0], v.normal[1], v.normal[2]).normalized()), -1.0, 1.0);
+    e.normal_degrees = std::max(e.normal_degrees, std::acos(c) * 180.0 / M_PI);
+    ++e.count;
+  }
+  return e;
+}
+
+// The compute passes (dual map, stencils) against core's apply_stencils().
+TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
+  for (const char* name : {"cube", "cone-pointy", "cylinder"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(mesh, 3);
+    const test::PlannedMesh cpu(mesh, 3);
+    const auto gpu = renderer.read_points();
+    ASSERT_EQ(gpu.size(), cpu.points.size() * 12);
+    static constexpr int kSlot[9] = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+    for (size_t p = 0; p < cpu.points.size(); ++p)
+      for (int k = 0; k < 9; ++k)
+        EXPECT_NEAR(gpu[12 * p + size_t(kSlot[k])], cpu.points[p][k], 1e-4 * (1 + std::abs(cpu.points[p][k]))) << name << " point " << p << " k " << k;
+  }
+}
+
+TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
+  for (const char* name : {"cube", "valence5", "wirecube", "cylinder", "cone"}) {
+    const VertexErrors e = compare_vertices(make_sample(name), 3, 6.0f);
+    EXPECT_GT(e.count, 100u) << name;
+    EXPECT_LT(e.position, 1e-4) << name;
+    EXPECT_LT(e.normal_degrees, 1.0) << name;
+  }
+}
+
+}  // namespace
+}  // namespace gps
