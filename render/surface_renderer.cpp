@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 #include "core/stencil_table.h"
@@ -196,6 +197,7 @@ void SurfaceRenderer::set_frame_uniforms(const ShaderProgram& p, const Camera& c
   p.set("u_level", std::clamp(o.level, 1.0f, 64.0f));
   p.set("u_pixels", o.pixels);
   p.set("u_debug_mismatch", o.debug_mismatch ? 1 : 0);
+  p.set("u_flag_back_faces", o.flag_back_faces ? 1 : 0);
   p.set("u_mode", int(o.mode));
   p.set("u_matcap", 0);
   p.set("u_wire_color", glm::vec4(0.1f, 0.1f, 0.15f, o.wireframe ? 0.85f : 0.0f));
@@ -222,9 +224,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glBindVertexArray(triangle_vao_);
     glDrawElements(GL_TRIANGLES, 3 * triangle_count_, GL_UNSIGNED_INT, nullptr);
   } else {
-    glBindVertexArray(empty_vao_);
-    glPatchParameteri(GL_PATCH_VERTICES, 1);
-    glDrawArrays(GL_PATCHES, 0, tables_.plans.n_patches());
+    draw_patches(program, o);
   }
   if (o.mesh_lines && line_vertex_count_ > 0) {
     lines_.set("u_view_projection", camera.view_projection(aspect));
@@ -254,11 +254,9 @@ std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& c
   feedback_.use();
   glEnable(GL_RASTERIZER_DISCARD);
   glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
-  glBindVertexArray(empty_vao_);
-  glPatchParameteri(GL_PATCH_VERTICES, 1);
   glBeginQuery(GL_PRIMITIVES_GENERATED, query);
   glBeginTransformFeedback(GL_TRIANGLES);
-  glDrawArrays(GL_PATCHES, 0, tables_.plans.n_patches());
+  draw_patches(feedback_, o);
   glEndTransformFeedback();
   glEndQuery(GL_PRIMITIVES_GENERATED);
   glDisable(GL_RASTERIZER_DISCARD);
@@ -277,6 +275,20 @@ std::vector<float> SurfaceRenderer::read_points() const {
   glGetNamedBufferSubData(buffers_[kPoints], 0, GLsizeiptr(points.size() * sizeof(float)), points.data());
   check_gl_errors("reading the plan points");
   return points;
+}
+
+void SurfaceRenderer::draw_patches(const ShaderProgram& program, const DrawOptions& o) const {
+  // Mesa 22.3's llvmpipe was seen to drop whole patches from draws that generate some 10^5
+  // vertices (the crack test caught it), so draw in batches of at most ~2^15 generated vertices at
+  // the chosen level (adaptive levels: the worst case, 64).
+  const int level = o.pixels > 0.0f ? 64 : std::clamp(int(std::ceil(o.level)), 1, 64);
+  const int batch = std::max(1, 32768 / ((level + 1) * (level + 1)));
+  glBindVertexArray(empty_vao_);
+  glPatchParameteri(GL_PATCH_VERTICES, 1);
+  for (int first = 0; first < tables_.plans.n_patches(); first += batch) {
+    program.set("u_first_patch", first);
+    glDrawArrays(GL_PATCHES, 0, std::min(batch, tables_.plans.n_patches() - first));
+  }
 }
 
 size_t SurfaceRenderer::buffer_bytes() const {

@@ -28,6 +28,7 @@ struct DrawOptions {
   float sigma_scale = 1.0f;
   glm::vec3 background{1.0f, 1.0f, 1.0f};
   bool static_triangles = false;  // draw the triangles of set_triangles() instead of the patches
+  bool flag_back_faces = false;   // crack checks: draw back faces in pure magenta
   bool debug_mismatch = false;    // tests only: give neighbouring patches different edge levels
 };
 
@@ -67,6 +68,7 @@ public:
 private:
   void upload_gaussians(const CovarianceMesh& mesh);
   void run_compute(const std::vector<int>* changed);
+  void draw_patches(const ShaderProgram& program, const DrawOptions& options) const;
   void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& options, float aspect, int width,
                           int height) const;
 

@@ -8,6 +8,7 @@ uniform vec2 u_viewport;
 uniform float u_level;        // uniform level, when u_pixels <= 0
 uniform float u_pixels;       // adaptive: target edge length in pixels
 uniform int u_debug_mismatch; // tests only: break edge agreement on purpose
+uniform int u_first_patch;    // patches are drawn in batches; gl_PrimitiveID restarts with each
 
 float edge_level(int a, int b) {
   if (u_pixels <= 0.0) return u_level;
@@ -19,11 +20,11 @@ float edge_level(int a, int b) {
 }
 
 void main() {
-  int p = gl_PrimitiveID;
+  int p = u_first_patch + gl_PrimitiveID;
   tc_patch = p;
   float level[4];  // edge k runs from corner k to corner k+1
   for (int k = 0; k < 4; ++k) level[k] = edge_level(corner_points[4 * p + k], corner_points[4 * p + (k + 1) % 4]);
-  if (u_debug_mismatch != 0 && p % 2 == 0) level[0] = level[0] + 1.0;
+  if (u_debug_mismatch != 0 && p % 2 == 0) level[0] = min(64.0, 2.0 * level[0] + 1.0);
   gl_TessLevelOuter[0] = level[3];  // u = 0
   gl_TessLevelOuter[1] = level[0];  // v = 0
   gl_TessLevelOuter[2] = level[1];  // u = 1

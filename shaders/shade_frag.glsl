@@ -7,6 +7,7 @@ uniform int u_mode;  // 0 MatCap, 1 normals, 2 flat
 uniform mat4 u_view;
 uniform sampler2D u_matcap;
 uniform vec4 u_wire_color;  // alpha 0: no tessellation wireframe
+uniform int u_flag_back_faces;  // crack checks: back faces in pure magenta
 
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out vec4 out_position;
@@ -24,6 +25,7 @@ void main() {
   vec2 to_line = abs(fract(v_grid - 0.5) - 0.5) / max(fwidth(v_grid), vec2(1e-6));
   float wire = u_wire_color.a * (1.0 - clamp(min(to_line.x, to_line.y) - 0.25, 0.0, 1.0));
   out_color = vec4(mix(color, u_wire_color.rgb, wire), 1.0);
+  if (u_flag_back_faces != 0 && !gl_FrontFacing) out_color = vec4(1.0, 0.0, 1.0, 1.0);
   out_position = vec4(v_position, 1.0);
   out_normal = vec4(n, 1.0);
 }

@@ -76,5 +76,68 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
   }
 }
 
+int flagged_pixels(const Image& color) {
+  int n = 0;
+  for (int y = 0; y < color.height; ++y)
+    for (int x = 0; x < color.width; ++x) n += color.at(x, y, 0) > 0.99f && color.at(x, y, 1) < 0.01f && color.at(x, y, 2) > 0.99f;
+  return n;
+}
+
+Image render_color(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const DrawOptions& o, int size = 160) {
+  Vec3 lo = mesh.mean(0), hi = lo;
+  for (size_t i = 1; i < mesh.n_vertices(); ++i) lo = lo.cwiseMin(mesh.mean(i)), hi = hi.cwiseMax(mesh.mean(i));
+  RenderTarget target(size, size);
+  renderer.draw(target, frame_box(lo, hi, 35.0f, 25.0f), o);
+  return target.read(0);
+}
+
+// A closed mesh seen from outside shows no back face unless the tessellation cracks; the check fails
+// when neighbouring patches are given different edge levels on purpose.
+TEST_F(GpuTest, TessellationIsCrackFree) {
+  for (const char* name : {"cube", "wirecube", "cylinder"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(mesh, 3);
+    DrawOptions o;
+    o.flag_back_faces = true;
+    for (const float level : {1.0f, 2.0f, 5.0f, 16.0f, 64.0f}) {
+      o.level = level;
+      EXPECT_EQ(flagged_pixels(render_color(renderer, mesh, o)), 0) << name << " level " << level;
+    }
+    o.pixels = 4.0f;  // adaptive
+    EXPECT_EQ(flagged_pixels(render_color(renderer, mesh, o)), 0) << name << " adaptive";
+    o.pixels = 0.0f;
+    o.level = 2.0f;
+    o.debug_mismatch = true;
+    EXPECT_GT(flagged_pixels(render_color(renderer, mesh, o)), 0) << name << " with mismatched edge levels";
+  }
+}
+
+// An edit runs the compute passes on the changed vertex only, and gives the same image as
+// rebuilding everything for the edited mesh.
+TEST_F(GpuTest, EditingOneCovarianceUpdatesTheSurface) {
+  CovarianceMesh mesh = make_sample("cube");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, 3);
+  DrawOptions o;
+  o.mode = ShadingMode::normals;
+  const Image before = render_color(renderer, mesh, o);
+  const auto nodes = renderer.tables().plans.nodes;
+  mesh.covariances[6] *= 0.001;  // vertex (1, 1, 1) faces the camera: a sharp corner
+  renderer.update_vertices(mesh, {6});
+  const Image edited = render_color(renderer, mesh, o);
+  EXPECT_EQ(renderer.tables().plans.nodes, nodes);
+  SurfaceRenderer rebuilt;
+  rebuilt.set_mesh(mesh, 3);
+  const Image fresh = render_color(rebuilt, mesh, o);
+  int changed = 0, mismatched = 0;
+  for (size_t i = 0; i < before.pixels.size(); ++i) {
+    changed += std::abs(before.pixels[i] - edited.pixels[i]) > 0.02f;
+    mismatched += std::abs(fresh.pixels[i] - edited.pixels[i]) > 0.02f;
+  }
+  EXPECT_GT(changed, 200);
+  EXPECT_EQ(mismatched, 0);
+}
+
 }  // namespace
 }  // namespace gps
