@@ -131,7 +131,9 @@ CovarianceMesh valence(int n) {
         else if (a == 0) id[0][size_t(b)] = spoke[size_t(t)][size_t(b)];
         else {
           id[size_t(a)][size_t(b)] = int(p.size());
-          p.push_back(lift(double(a) * dir(s) + double(b) * dir(t)));
+          // Polar layout: radius max(a, b), angle between the two spokes, so the mesh is a disc.
+          const double angle = 2 * pi * (s + double(b) / (a + b)) / n;
+          p.push_back(lift(std::max(a, b) * Vec3(std::cos(angle), std::sin(angle), 0)));
         }
       }
     for (int a = 0; a < k; ++a)

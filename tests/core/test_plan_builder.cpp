@@ -81,8 +81,9 @@ TEST(PlanBuilder, PatchCornersAreExactLimitPositions) {
 }
 
 // Near extraordinary vertices the terminal Bézier patches approximate; the error falls with depth.
-// Measured (max over limit vertices of reference level 5, relative to the bounding-box diagonal):
-// depth 3 ≤ 3.2e-3 on all of these, the worst being the cylinder's octagon caps.
+// Measured (max over limit vertices of reference level 5, relative to the bounding-box diagonal), at
+// depth 3: cube 6.4e-4, wirecube 2.1e-3, valence3 1.6e-4, valence5 7.3e-4, valence8 4.1e-3,
+// valence10 6.2e-3; the error roughly halves with each further level.
 TEST(PlanBuilder, ErrorNearExtraordinaryVerticesFallsWithDepth) {
   std::vector<std::string> names = {"cube", "wirecube"};
   for (int n = 3; n <= 10; ++n) names.push_back("valence" + std::to_string(n));
@@ -94,7 +95,7 @@ TEST(PlanBuilder, ErrorNearExtraordinaryVerticesFallsWithDepth) {
       else EXPECT_LT(error, previous) << name << " depth " << depth;
       previous = error;
     }
-    EXPECT_LT(previous, 3.5e-3) << name;
+    EXPECT_LT(previous, 7e-3) << name;
   }
 }
 
