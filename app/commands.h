@@ -10,4 +10,5 @@ void add_subdivide_command(CLI::App& app);
 void add_tessellate_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_render_command(CLI::App& app);
+void add_diff_command(CLI::App& app);
 }  // namespace gps

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   gps::add_tessellate_command(app);
   gps::add_bench_command(app);
   gps::add_render_command(app);
+  gps::add_diff_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,13 +1,12 @@
 #!/usr/bin/env bash
-# Fresh machine to the main job: installs dependencies, builds, and runs gpsurf on its embedded
-# default sample, writing the results to out/.
+# Fresh machine to the main job: installs dependencies, builds, and renders the embedded default
+# sample headless (OSMesa) to out/default.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install_deps.sh
 scripts/build.sh
 mkdir -p out
 gpsurf=build/app/gpsurf
-$gpsurf sample cube -o out/cube.ply
-$gpsurf subdivide out/cube.ply -o out/cube_subdivided.ply --levels 3 --limit
-$gpsurf info out/cube_subdivided.ply
-echo "results: $(pwd)/out/cube.ply (the built-in cube), $(pwd)/out/cube_subdivided.ply (3 levels of GPS subdivision, limit positions)"
+$gpsurf sample cone-pointy -o out/default.ply
+$gpsurf render out/default.ply -o out/default.png --size 960x720 --mesh --pixels 4
+echo "rendered the built-in sample 'cone-pointy' (Preiner's cone with a sharp apex) headless: $(pwd)/out/default.png"

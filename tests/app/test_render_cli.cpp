@@ -1,0 +1,58 @@
+// gpsurf render and diff, run as a user would (OSMesa, no display).
+#include <gtest/gtest.h>
+
+#include "render/image_io.h"
+#include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+using test::gpsurf;
+using test::run_command;
+
+TEST(RenderCli, RendersAovsAndDifferenceImages) {
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample valence5 -o " + dir.file("v.ply"))).exit_code, 0);
+  const auto r = run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("v.png") + " --size 96x64 --level 6 --mesh --wireframe" +
+                                    " --aov position=" + dir.file("p.exr") + " --aov normal=" + dir.file("n.exr")));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Image png = read_image(dir.file("v.png"));
+  EXPECT_EQ(png.width, 96);
+  EXPECT_EQ(png.height, 64);
+  const Image position = read_image(dir.file("p.exr"));
+  int covered = 0;
+  for (int y = 0; y < position.height; ++y)
+    for (int x = 0; x < position.width; ++x) covered += position.at(x, y, 3) > 0.5f;
+  EXPECT_GT(covered, 500);
+  ASSERT_EQ(run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("r.png") + " --size 96x64 --reference 4 --mode normals" +
+                               " --aov position=" + dir.file("rp.exr"))).exit_code, 0);
+  const auto d = run_command(gpsurf("diff " + dir.file("p.exr") + " " + dir.file("p.exr") + " -o " + dir.file("same.png")));
+  EXPECT_EQ(d.exit_code, 0) << d.output;
+  EXPECT_NE(d.output.find("max 0,"), std::string::npos) << d.output;
+  const auto e = run_command(gpsurf("diff " + dir.file("p.exr") + " " + dir.file("rp.exr") + " -o " + dir.file("d.png")));
+  EXPECT_EQ(e.exit_code, 0) << e.output;
+  EXPECT_NE(e.output.find("position difference"), std::string::npos);
+  EXPECT_EQ(run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("a.png") + " --size 32x32 --pixels 4 --matcap jade")).exit_code, 0);
+}
+
+TEST(RenderCli, BadInputIsAUsageError) {
+  test::TempDir dir;
+  run_command(gpsurf("sample cube -o " + dir.file("c.ply")));
+  run_command(gpsurf("render " + dir.file("c.ply") + " -o " + dir.file("a.png") + " --size 16x16 --aov position=" + dir.file("a.exr")));
+  run_command(gpsurf("render " + dir.file("c.ply") + " -o " + dir.file("b.png") + " --size 24x16 --aov position=" + dir.file("b.exr")));
+  const std::string mesh = dir.file("c.ply"), out = " -o " + dir.file("x.png");
+  for (const std::string& args : std::vector<std::string>{
+           "render " + dir.file("missing.ply") + out, "render " + mesh + out + " --matcap velvet",
+           "render " + mesh + out + " --level 0", "render " + mesh + out + " --level 65", "render " + mesh + out + " --size 10by10",
+           "render " + mesh + out + " --aov depth=" + dir.file("d.exr"), "render " + mesh + out + " --mode toon",
+           "diff " + dir.file("a.exr") + " " + dir.file("missing.exr") + out,
+           "diff " + dir.file("a.exr") + " " + dir.file("b.exr") + out}) {
+    const auto r = run_command(gpsurf(args));
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << ": " << r.output;
+  }
+}
+
+}  // namespace
+}  // namespace gps
