@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
@@ -12,6 +13,11 @@
 #include "core/plan_builder.h"
 #include "core/samples.h"
 #include "core/stencil_table.h"
+#include "core/tessellator.h"
+#include "render/frame_timer.h"
+#include "render/line_plot.h"
+#include "render/gl_context.h"
+#include "render/surface_renderer.h"
 
 namespace gps {
 
@@ -62,21 +68,102 @@ nlohmann::json bench_preprocess(const std::string& name, int size, int depth) {
           {"stencil_update_one_vertex_us", update * 1e6}};
 }
 
+// Frame time per mesh and level: the compute passes, the tessellated draw, and the floor: the same
+// triangles (CPU tessellation) drawn from a static vertex buffer with the same shading.
+nlohmann::json bench_render(const std::string& name, int depth, int size, const std::vector<int>& levels) {
+  const CovarianceMesh mesh = make_sample(name);
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, depth);
+  Vec3 lo = mesh.mean(0), hi = lo;
+  for (size_t i = 1; i < mesh.n_vertices(); ++i) lo = lo.cwiseMin(mesh.mean(i)), hi = hi.cwiseMax(mesh.mean(i));
+  const Camera camera = frame_box(lo, hi);
+  RenderTarget target(size, size);
+  const FrameTiming compute = time_gl_work([&] { renderer.recompute_all(); }, 5);
+  std::vector<Dual> q(mesh.n_vertices());
+  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariance(i));
+  const std::vector<Dual> points = apply_stencils(renderer.tables().stencils, q);
+  nlohmann::json rows = nlohmann::json::array();
+  for (const int level : levels) {
+    DrawOptions o;
+    o.level = float(level);
+    const int repeats = level >= 32 ? 2 : 4;
+    const FrameTiming patches = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
+    const TriangleMesh triangles = tessellate(renderer.tables().plans, points, level);
+    renderer.set_triangles(triangles);
+    o.static_triangles = true;
+    const FrameTiming floor = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
+    const double n = double(triangles.triangles.size());
+    rows.push_back({{"mesh", name},
+                    {"patches", renderer.tables().plans.n_patches()},
+                    {"level", level},
+                    {"triangles", n},
+                    {"compute_gpu_ms", compute.gpu_ms},
+                    {"draw_gpu_ms", patches.gpu_ms},
+                    {"frame_ms", patches.wall_ms},
+                    {"triangles_per_second", n / (patches.wall_ms * 1e-3)},
+                    {"static_buffer_frame_ms", floor.wall_ms},
+                    {"ratio_to_static_buffer", patches.wall_ms / floor.wall_ms},
+                    {"pipeline_buffer_bytes", renderer.buffer_bytes()},
+                    {"static_buffer_bytes", triangles.positions.size() * 24 + triangles.triangles.size() * 12}});
+  }
+  return rows;
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app) {
   struct Args {
-    bool preprocess = false;
+    bool preprocess = false, render = false;
+    int size = 512;
     int depth = 3;
-    std::string json;
+    std::string json, plots;
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("bench", "Benchmarks (figures for the closing notes; see also build/bench/)");
   cmd->add_flag("--preprocess", args->preprocess, "plan building and stencil application per mesh");
+  cmd->add_flag("--render", args->render, "GPU frame times per mesh and tessellation level, against a static vertex buffer");
+  cmd->add_option("--size", args->size, "render size in pixels (square)")->check(CLI::Range(16, 4096));
   cmd->add_option("--depth", args->depth, "maximum plan depth")->check(CLI::Range(1, 8));
   cmd->add_option("--json", args->json, "also write the figures as JSON");
+  cmd->add_option("--plots", args->plots, "with --render: write PREFIX_frame_time.png and PREFIX_memory.png");
   cmd->callback([args] {
-    if (!args->preprocess) throw usage_error("bench: choose what to measure (--preprocess)");
+    if (!args->preprocess && !args->render) throw usage_error("bench: choose what to measure (--preprocess, --render)");
+    if (args->render) {
+      const auto context = create_offscreen_context();
+      std::printf("device: %s, %dx%d pixels, depth %d\n", context->description().c_str(), args->size, args->size, args->depth);
+      std::printf("%-12s %7s %5s %9s %10s %10s %10s %12s %10s %7s %9s\n", "mesh", "patches", "level", "triangles", "compute",
+                  "draw(gpu)", "frame", "tri/s", "static", "ratio", "memory");
+      nlohmann::json all = nlohmann::json::array();
+      for (const char* name : {"cube", "wirecube", "cylinder", "valence5", "cone-pointy"}) {
+        for (const auto& r : bench_render(name, args->depth, args->size, {1, 4, 16, 64})) {
+          std::printf("%-12s %7d %5d %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %6.1f kB\n", r["mesh"].get<std::string>().c_str(),
+                      r["patches"].get<int>(), r["level"].get<int>(), r["triangles"].get<double>(), r["compute_gpu_ms"].get<double>(),
+                      r["draw_gpu_ms"].get<double>(), r["frame_ms"].get<double>(), r["triangles_per_second"].get<double>(),
+                      r["static_buffer_frame_ms"].get<double>(), r["ratio_to_static_buffer"].get<double>(),
+                      r["pipeline_buffer_bytes"].get<double>() / 1024.0);
+          std::fflush(stdout);
+          all.push_back(r);
+        }
+      }
+      if (!args->json.empty()) write_file_atomically(args->json, [&](std::ostream& out) { out << all.dump(2) << "\n"; });
+      if (!args->plots.empty()) {
+        std::map<std::string, PlotSeries> time_over_level, memory_over_time;
+        for (const auto& r : all) {
+          const std::string mesh = r["mesh"];
+          time_over_level[mesh].name = memory_over_time[mesh].name = mesh;
+          time_over_level[mesh].points.emplace_back(r["level"].get<double>(), r["frame_ms"].get<double>());
+          memory_over_time[mesh].points.emplace_back(r["frame_ms"].get<double>(),
+                                                     (r["pipeline_buffer_bytes"].get<double>() + r["static_buffer_bytes"].get<double>()) / 1024.0);
+        }
+        std::vector<PlotSeries> a, b;
+        for (auto& [_, s] : time_over_level) a.push_back(s);
+        for (auto& [_, s] : memory_over_time) b.push_back(s);
+        write_line_plot(args->plots + "_frame_time.png", "Frame time over tessellation level", "level", "frame ms", a, true, true);
+        write_line_plot(args->plots + "_memory.png", "Memory over frame time (pipeline + equivalent static mesh)", "frame ms", "kB", b, true, true);
+        std::printf("plots: %s_frame_time.png, %s_memory.png\n", args->plots.c_str(), args->plots.c_str());
+      }
+      return;
+    }
     std::vector<std::pair<std::string, int>> meshes = {{"cube", 0}, {"wirecube", 0}};
     for (int n = 3; n <= 10; ++n) meshes.emplace_back("valence" + std::to_string(n), 0);
     meshes.insert(meshes.end(), {{"sphere", 250}, {"grid", 1000}, {"grid", 10000}, {"grid", 100000},

@@ -51,6 +51,8 @@ public:
   void set_mesh(const CovarianceMesh& mesh, int depth);
   /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them.
   void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  /// The compute passes over every vertex and stencil row (as after set_mesh), for benchmarks.
+  void recompute_all() { run_compute(nullptr); }
   /// Triangles to draw with DrawOptions::static_triangles (CPU tessellation, reference subdivision).
   void set_triangles(const TriangleMesh& triangles);
   void set_matcap(const Image& matcap);

@@ -6,7 +6,7 @@ packages=(
   libopenmesh-dev libeigen3-dev libglm-dev libopenimageio-dev openimageio-tools
   libglfw3-dev libosmesa6-dev libegl-dev libgl-dev libimgui-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth
+  xvfb xauth fonts-dejavu-core
 )
 missing=()
 for p in "${packages[@]}"; do
