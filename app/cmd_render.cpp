@@ -20,7 +20,8 @@ struct RenderArgs {
   std::vector<std::string> aovs;
   int level = 8, depth = 3, reference = -1;
   float pixels = 0;
-  bool mesh_lines = false, wireframe = false;
+  bool mesh_lines = false, wireframe = false, ellipsoids = false;
+  float sigma = 1.0f;
 };
 
 std::vector<float> parse_floats(const std::string& text, const char* what, size_t min_count, size_t max_count) {
@@ -65,6 +66,8 @@ void render(const RenderArgs& a) {
   o.mode = a.mode == "normals" ? ShadingMode::normals : a.mode == "flat" ? ShadingMode::flat : ShadingMode::matcap;
   o.mesh_lines = a.mesh_lines;
   o.wireframe = a.wireframe;
+  o.ellipsoids = a.ellipsoids;
+  o.sigma_scale = a.sigma;
   o.background = {bg[0], bg[1], bg[2]};
   if (a.reference >= 0) {
     renderer.set_triangles(reference_triangles(mesh, a.reference));
@@ -109,6 +112,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--camera", a->camera, "orbit yaw,pitch[,distance] in degrees (default: auto-framed 30,20)");
   cmd->add_flag("--mesh", a->mesh_lines, "draw the base mesh as thin grey lines");
   cmd->add_flag("--wireframe", a->wireframe, "draw the tessellation wireframe over the shading");
+  cmd->add_flag("--ellipsoids", a->ellipsoids, "draw the covariance ellipsoids");
+  cmd->add_option("--sigma", a->sigma, "ellipsoid scale in standard deviations (k-sigma)")->check(CLI::Range(0.01f, 100.0f));
   cmd->add_option("--background", a->background, "background colour r,g,b in [0,1]");
   cmd->add_option("--aov", a->aovs, "world-space float buffers: position=FILE.exr, normal=FILE.exr");
   cmd->add_option("--reference", a->reference, "draw the CPU reference subdivision at level N instead of the patches")->check(CLI::Range(0, 7));

@@ -2,6 +2,7 @@
 
 #include <glad/gl.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
@@ -34,7 +35,8 @@ SurfaceRenderer::SurfaceRenderer()
       patches_(patch_program(false)),
       feedback_(patch_program(true)),
       triangles_("mesh", {{GL_VERTEX_SHADER, {shaders::mesh_vert}}, {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
-      lines_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
+      lines_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}),
+      ellipsoids_("ellipsoids", {{GL_VERTEX_SHADER, {shaders::ellipsoid_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
   glCreateBuffers(10, buffers_);
   glCreateVertexArrays(1, &empty_vao_);
   glCreateVertexArrays(1, &triangle_vao_);
@@ -43,6 +45,33 @@ SurfaceRenderer::SurfaceRenderer()
   glCreateBuffers(1, &triangle_ibo_);
   glCreateBuffers(1, &lines_vbo_);
   set_matcap(make_builtin_matcap("clay"));
+  // Three unit circles (xy, yz, zx planes) as line segments, instanced per vertex.
+  std::vector<float> circles;
+  const int segments = 32;
+  for (int plane = 0; plane < 3; ++plane)
+    for (int i = 0; i < segments; ++i)
+      for (const int j : {i, i + 1}) {
+        const float a = 6.2831853f * float(j) / segments;
+        float p[3] = {0, 0, 0};
+        p[plane] = std::cos(a);
+        p[(plane + 1) % 3] = std::sin(a);
+        circles.insert(circles.end(), p, p + 3);
+      }
+  circle_vertex_count_ = int(circles.size() / 3);
+  glCreateVertexArrays(1, &ellipsoid_vao_);
+  glCreateBuffers(1, &circle_vbo_);
+  glCreateBuffers(1, &ellipsoid_vbo_);
+  glNamedBufferData(circle_vbo_, GLsizeiptr(circles.size() * sizeof(float)), circles.data(), GL_STATIC_DRAW);
+  glVertexArrayVertexBuffer(ellipsoid_vao_, 0, circle_vbo_, 0, 3 * sizeof(float));
+  glEnableVertexArrayAttrib(ellipsoid_vao_, 0);
+  glVertexArrayAttribFormat(ellipsoid_vao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(ellipsoid_vao_, 0, 0);
+  for (GLuint c = 0; c < 4; ++c) {
+    glEnableVertexArrayAttrib(ellipsoid_vao_, 1 + c);
+    glVertexArrayAttribFormat(ellipsoid_vao_, 1 + c, 4, GL_FLOAT, GL_FALSE, c * 4 * sizeof(float));
+    glVertexArrayAttribBinding(ellipsoid_vao_, 1 + c, 1);
+  }
+  glVertexArrayBindingDivisor(ellipsoid_vao_, 1, 1);
   check_gl_errors("creating the renderer");
 }
 
@@ -54,6 +83,9 @@ SurfaceRenderer::~SurfaceRenderer() {
   glDeleteBuffers(1, &triangle_vbo_);
   glDeleteBuffers(1, &triangle_ibo_);
   glDeleteBuffers(1, &lines_vbo_);
+  glDeleteVertexArrays(1, &ellipsoid_vao_);
+  glDeleteBuffers(1, &circle_vbo_);
+  glDeleteBuffers(1, &ellipsoid_vbo_);
   if (matcap_) glDeleteTextures(1, &matcap_);
 }
 
@@ -101,6 +133,7 @@ void SurfaceRenderer::upload_gaussians(const CovarianceMesh& mesh) {
     const double values[9] = {m.x(), m.y(), m.z(), c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
     std::copy(values, values + 9, g.begin() + long(9 * i));
   }
+  upload_ellipsoids(mesh);
   if (buffer_sizes_[kGaussians] == std::max<size_t>(sizeof(float), g.size() * sizeof(float)))
     glNamedBufferSubData(buffers_[kGaussians], 0, GLsizeiptr(g.size() * sizeof(float)), g.data());
   else
@@ -115,7 +148,22 @@ void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vec
                              float(c(0, 2)), float(c(1, 1)), float(c(1, 2)), float(c(2, 2))};
     glNamedBufferSubData(buffers_[kGaussians], GLintptr(9 * sizeof(float) * size_t(v)), sizeof values, values);
   }
+  upload_ellipsoids(mesh);
   run_compute(&changed);
+}
+
+void SurfaceRenderer::upload_ellipsoids(const CovarianceMesh& mesh) {
+  ellipsoid_transforms_.assign(mesh.n_vertices() * 16, 0.0f);
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+    // Σ = V D Vᵀ; the unit sphere maps to the 1-σ ellipsoid by V D^½.
+    const Eigen::SelfAdjointEigenSolver<Mat3> eig(mesh.covariance(i));
+    const Mat3 root = eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+    float* m = &ellipsoid_transforms_[16 * i];
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) m[4 * c + r] = float(root(r, c));
+    const Vec3 mu = mesh.mean(i);
+    m[12] = float(mu.x()), m[13] = float(mu.y()), m[14] = float(mu.z()), m[15] = 1.0f;
+  }
 }
 
 void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
@@ -225,6 +273,19 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glDrawElements(GL_TRIANGLES, 3 * triangle_count_, GL_UNSIGNED_INT, nullptr);
   } else {
     draw_patches(program, o);
+  }
+  if (o.ellipsoids && !ellipsoid_transforms_.empty()) {
+    // k-σ: scale the columns of Σ^½, keep the translation.
+    std::vector<float> scaled = ellipsoid_transforms_;
+    for (size_t i = 0; i < scaled.size(); i += 16)
+      for (int k = 0; k < 12; ++k) scaled[i + size_t(k)] *= o.sigma_scale;
+    glNamedBufferData(ellipsoid_vbo_, GLsizeiptr(scaled.size() * sizeof(float)), scaled.data(), GL_STREAM_DRAW);
+    glVertexArrayVertexBuffer(ellipsoid_vao_, 1, ellipsoid_vbo_, 0, 16 * sizeof(float));
+    ellipsoids_.set("u_view_projection", camera.view_projection(aspect));
+    ellipsoids_.set("u_color", glm::vec4(0.15f, 0.35f, 0.85f, 1.0f));
+    ellipsoids_.use();
+    glBindVertexArray(ellipsoid_vao_);
+    glDrawArraysInstanced(GL_LINES, 0, circle_vertex_count_, GLsizei(scaled.size() / 16));
   }
   if (o.mesh_lines && line_vertex_count_ > 0) {
     lines_.set("u_view_projection", camera.view_projection(aspect));

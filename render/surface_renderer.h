@@ -69,6 +69,7 @@ public:
 
 private:
   void upload_gaussians(const CovarianceMesh& mesh);
+  void upload_ellipsoids(const CovarianceMesh& mesh);
   void run_compute(const std::vector<int>* changed);
   void draw_patches(const ShaderProgram& program, const DrawOptions& options) const;
   void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& options, float aspect, int width,
@@ -76,11 +77,14 @@ private:
 
   PlanTables tables_;
   std::vector<int> dependents_offsets_, dependents_rows_;
-  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangles_, lines_;
+  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangles_, lines_, ellipsoids_;
   unsigned buffers_[10] = {};
   size_t buffer_sizes_[10] = {};
   unsigned empty_vao_ = 0, triangle_vao_ = 0, triangle_vbo_ = 0, triangle_ibo_ = 0, lines_vao_ = 0, lines_vbo_ = 0;
   int triangle_count_ = 0, line_vertex_count_ = 0;
+  unsigned ellipsoid_vao_ = 0, circle_vbo_ = 0, ellipsoid_vbo_ = 0;
+  int circle_vertex_count_ = 0;
+  std::vector<float> ellipsoid_transforms_;  // per vertex: 16 floats, μ + Σ^½ (k applied in draw)
   unsigned matcap_ = 0;
   int n_base_ = 0;
 };
