@@ -1,11 +1,14 @@
 // gpsurf render IN -o OUT.png: a headless render of the GPS limit surface (OSMesa, no display).
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
 
 #include "app/commands.h"
 #include "core/error.h"
 #include "core/mesh_io.h"
+#include "core/samples.h"
+#include "core/text_file.h"
 #include "render/gl_context.h"
 #include "render/matcap.h"
 #include "render/reference_triangles.h"
@@ -41,7 +44,8 @@ std::vector<float> parse_floats(const std::string& text, const char* what, size_
   return values;
 }
 
-void render(const RenderArgs& a) {
+// One render with the given renderer (its context current): mesh, options, outputs.
+void render_one(SurfaceRenderer& renderer, const std::string& description, const RenderArgs& a, const CovarianceMesh& mesh) {
   std::smatch size_match;
   if (!std::regex_match(a.size, size_match, std::regex(R"((\d{1,5})x(\d{1,5}))"))) throw usage_error("--size: expected WxH, got '" + a.size + "'");
   const int width = std::stoi(size_match[1]), height = std::stoi(size_match[2]);
@@ -53,11 +57,7 @@ void render(const RenderArgs& a) {
     (kind == "position" ? position_aov : normal_aov) = file;
   }
   const auto bg = parse_floats(a.background, "--background", 3, 3);
-  const Image matcap = load_matcap(a.matcap);  // before any GL work: a bad name is a usage error
-  const CovarianceMesh mesh = read_mesh(a.input);
-
-  const auto context = create_offscreen_context();
-  SurfaceRenderer renderer;
+  const Image matcap = load_matcap(a.matcap);
   renderer.set_mesh(mesh, a.depth);
   renderer.set_matcap(matcap);
   DrawOptions o;
@@ -89,7 +89,84 @@ void render(const RenderArgs& a) {
   if (!position_aov.empty()) write_image(position_aov, target.read(1));
   if (!normal_aov.empty()) write_image(normal_aov, target.read(2));
   std::cout << "wrote " << a.output << " (" << width << "x" << height << ", " << renderer.tables().plans.n_patches() << " patches, "
-            << context->description() << ")\n";
+            << description << ")\n";
+}
+
+void render(const RenderArgs& a) {
+  load_matcap(a.matcap);  // before any GL work: a bad name is a usage error
+  const CovarianceMesh mesh = read_mesh(a.input);
+  const auto context = create_offscreen_context();
+  SurfaceRenderer renderer;
+  render_one(renderer, context->description(), a, mesh);
+}
+
+// --script FILE.json: {"renders": [{"mesh": FILE or "sample:NAME", "output": FILE.png, "size": "WxH",
+// "level": L, "pixels": P, "depth": D, "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]",
+// "mesh_lines": bool, "wireframe": bool, "ellipsoids": bool, "sigma": k, "background": "r,g,b",
+// "aov": ["position=FILE.exr", ...], "reference": N,
+// "edits": [{"vertex": i, "mean": [x,y,z], "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]}
+// All renders share one process and one GL context.
+void run_script(const std::string& path) {
+  nlohmann::json script;
+  try {
+    script = nlohmann::json::parse(read_text_file(path));
+  } catch (const nlohmann::json::parse_error& e) {
+    throw usage_error(path + ": not valid JSON (byte " + std::to_string(e.byte) + ")");
+  }
+  if (!script.is_object() || !script.contains("renders") || !script["renders"].is_array())
+    throw usage_error(path + ": expected {\"renders\": [ ... ]}");
+  const auto context = create_offscreen_context();
+  SurfaceRenderer renderer;
+  int index = 0;
+  for (const auto& job : script["renders"]) {
+    const std::string where = path + ": render " + std::to_string(index++);
+    try {
+      RenderArgs a;
+      a.input = job.at("mesh").get<std::string>();
+      a.output = job.at("output").get<std::string>();
+      a.size = job.value("size", a.size);
+      a.level = job.value("level", a.level);
+      a.pixels = job.value("pixels", a.pixels);
+      a.depth = job.value("depth", a.depth);
+      a.matcap = job.value("matcap", a.matcap);
+      a.mode = job.value("mode", a.mode);
+      a.camera = job.value("camera", a.camera);
+      a.mesh_lines = job.value("mesh_lines", a.mesh_lines);
+      a.wireframe = job.value("wireframe", a.wireframe);
+      a.ellipsoids = job.value("ellipsoids", a.ellipsoids);
+      a.sigma = job.value("sigma", a.sigma);
+      a.background = job.value("background", a.background);
+      a.aovs = job.value("aov", a.aovs);
+      a.reference = job.value("reference", a.reference);
+      if (a.level < 1 || a.level > 64) throw usage_error("level must be 1..64");
+      if (a.depth < 1 || a.depth > 8) throw usage_error("depth must be 1..8");
+      if (a.mode != "matcap" && a.mode != "normals" && a.mode != "flat") throw usage_error("mode must be matcap, normals or flat");
+      CovarianceMesh mesh = a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh(a.input);
+      for (const auto& edit : job.value("edits", nlohmann::json::array())) {
+        const int v = edit.at("vertex").get<int>();
+        if (v < 0 || size_t(v) >= mesh.n_vertices()) throw usage_error("edit of vertex " + std::to_string(v) + ", but the mesh has " + std::to_string(mesh.n_vertices()));
+        if (edit.contains("mean")) {
+          const auto m = edit["mean"].get<std::vector<double>>();
+          if (m.size() != 3) throw usage_error("edit of vertex " + std::to_string(v) + ": mean needs 3 numbers");
+          mesh.set_mean(size_t(v), Vec3(m[0], m[1], m[2]));
+        }
+        if (edit.contains("covariance")) {
+          const auto c = edit["covariance"].get<std::vector<double>>();
+          if (c.size() != 6) throw usage_error("edit of vertex " + std::to_string(v) + ": covariance needs xx xy xz yy yz zz");
+          Mat3 m;
+          m << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
+          mesh.covariances[size_t(v)] = m;
+        }
+        if (edit.contains("scale")) mesh.covariances[size_t(v)] *= edit["scale"].get<double>();
+        if (!is_spd(mesh.covariances[size_t(v)])) throw usage_error("edit of vertex " + std::to_string(v) + " gives a covariance that is not positive definite");
+      }
+      render_one(renderer, context->description(), a, mesh);
+    } catch (const nlohmann::json::exception& e) {
+      throw usage_error(where + ": " + std::string(e.what()).substr(0, 160));
+    } catch (const Error& e) {
+      throw Error(where + ": " + e.what(), e.kind());
+    }
+  }
 }
 
 }  // namespace
@@ -97,8 +174,13 @@ void render(const RenderArgs& a) {
 void add_render_command(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
   auto* cmd = app.add_subcommand("render", "Render the limit surface without a display (OSMesa)");
-  cmd->add_option("input", a->input, "input mesh")->required()->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", a->output, "output image (.png)")->required();
+  auto script = std::make_shared<std::string>();
+  auto* input = cmd->add_option("input", a->input, "input mesh")->check(CLI::ExistingFile);
+  auto* output = cmd->add_option("-o,--output", a->output, "output image (.png)");
+  cmd->add_option("--script", *script, "run the renders listed in a JSON file, in one process and one context")
+      ->check(CLI::ExistingFile)
+      ->excludes(input)
+      ->excludes(output);
   cmd->add_option("--size", a->size, "image size WxH");
   auto* level = cmd->add_option("--level", a->level, "uniform tessellation level")->check(CLI::Range(1, 64));
   cmd->add_option("--pixels", a->pixels, "adaptive tessellation: target edge length in pixels")->check(CLI::Range(0.5f, 1000.0f))->excludes(level);
@@ -117,7 +199,11 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--background", a->background, "background colour r,g,b in [0,1]");
   cmd->add_option("--aov", a->aovs, "world-space float buffers: position=FILE.exr, normal=FILE.exr");
   cmd->add_option("--reference", a->reference, "draw the CPU reference subdivision at level N instead of the patches")->check(CLI::Range(0, 7));
-  cmd->callback([a] { render(*a); });
+  cmd->callback([a, script] {
+    if (!script->empty()) return run_script(*script);
+    if (a->input.empty() || a->output.empty()) throw usage_error("render: give an input mesh and -o OUTPUT.png (or --script FILE.json)");
+    render(*a);
+  });
 }
 
 }  // namespace gps

@@ -36,6 +36,26 @@ TEST(RenderCli, RendersAovsAndDifferenceImages) {
   EXPECT_EQ(run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("a.png") + " --size 32x32 --pixels 4 --matcap jade")).exit_code, 0);
 }
 
+// A script renders several images in one process; an edit changes the image, and bad edits are refused.
+TEST(RenderCli, ScriptedRendersWithEdits) {
+  test::TempDir dir;
+  const std::string script = dir.write("s.json", R"({"renders": [
+    {"mesh": "sample:cube", "output": ")" + dir.file("a.png") + R"(", "size": "48x48", "mode": "normals"},
+    {"mesh": "sample:cube", "output": ")" + dir.file("b.png") + R"(", "size": "48x48", "mode": "normals",
+     "edits": [{"vertex": 6, "scale": 0.001}]}]})");
+  const auto r = run_command(gpsurf("render --script " + script));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Image a = read_image(dir.file("a.png")), b = read_image(dir.file("b.png"));
+  int changed = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) changed += std::abs(a.pixels[i] - b.pixels[i]) > 0.05f;
+  EXPECT_GT(changed, 20);
+  const std::string bad = dir.write("bad.json", R"({"renders": [{"mesh": "sample:cube", "output": "x.png", "edits": [{"vertex": 99}]}]})");
+  const auto e = run_command(gpsurf("render --script " + bad));
+  EXPECT_EQ(e.exit_code, 2);
+  EXPECT_NE(e.output.find("render 0: edit of vertex 99"), std::string::npos) << e.output;
+  EXPECT_EQ(run_command(gpsurf("render --script " + dir.write("broken.json", "{\"renders\": ["))).exit_code, 2);
+}
+
 TEST(RenderCli, BadInputIsAUsageError) {
   test::TempDir dir;
   run_command(gpsurf("sample cube -o " + dir.file("c.ply")));
