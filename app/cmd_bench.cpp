@@ -116,12 +116,13 @@ void add_bench_command(CLI::App& app) {
     bool preprocess = false, render = false;
     int size = 512;
     int depth = 3;
-    std::string json, plots;
+    std::string json, plots, context = "auto";
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("bench", "Benchmarks (figures for the closing notes; see also build/bench/)");
   cmd->add_flag("--preprocess", args->preprocess, "plan building and stencil application per mesh");
   cmd->add_flag("--render", args->render, "GPU frame times per mesh and tessellation level, against a static vertex buffer");
+  cmd->add_option("--context", args->context, "GL context for --render: auto, osmesa, egl")->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   cmd->add_option("--size", args->size, "render size in pixels (square)")->check(CLI::Range(16, 4096));
   cmd->add_option("--depth", args->depth, "maximum plan depth")->check(CLI::Range(1, 8));
   cmd->add_option("--json", args->json, "also write the figures as JSON");
@@ -129,7 +130,9 @@ void add_bench_command(CLI::App& app) {
   cmd->callback([args] {
     if (!args->preprocess && !args->render) throw usage_error("bench: choose what to measure (--preprocess, --render)");
     if (args->render) {
-      const auto context = create_offscreen_context();
+      const auto context = create_offscreen_context(args->context == "egl" ? ContextKind::egl
+                                                    : args->context == "osmesa" ? ContextKind::osmesa
+                                                                                : ContextKind::automatic);
       std::printf("device: %s, %dx%d pixels, depth %d\n", context->description().c_str(), args->size, args->size, args->depth);
       std::printf("%-12s %7s %5s %9s %10s %10s %10s %12s %10s %7s %9s\n", "mesh", "patches", "level", "triangles", "compute",
                   "draw(gpu)", "frame", "tri/s", "static", "ratio", "memory");

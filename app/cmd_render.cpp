@@ -23,6 +23,7 @@ struct RenderArgs {
   std::vector<std::string> aovs;
   int level = 8, depth = 3, reference = -1;
   float pixels = 0;
+  std::string context = "auto";
   bool mesh_lines = false, wireframe = false, ellipsoids = false;
   float sigma = 1.0f;
 };
@@ -92,10 +93,14 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
             << description << ")\n";
 }
 
+ContextKind context_kind(const std::string& name) {
+  return name == "egl" ? ContextKind::egl : name == "osmesa" ? ContextKind::osmesa : ContextKind::automatic;
+}
+
 void render(const RenderArgs& a) {
   load_matcap(a.matcap);  // before any GL work: a bad name is a usage error
   const CovarianceMesh mesh = read_mesh(a.input);
-  const auto context = create_offscreen_context();
+  const auto context = create_offscreen_context(context_kind(a.context));
   SurfaceRenderer renderer;
   render_one(renderer, context->description(), a, mesh);
 }
@@ -106,7 +111,7 @@ void render(const RenderArgs& a) {
 // "aov": ["position=FILE.exr", ...], "reference": N,
 // "edits": [{"vertex": i, "mean": [x,y,z], "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]}
 // All renders share one process and one GL context.
-void run_script(const std::string& path) {
+void run_script(const std::string& path, const std::string& context_name) {
   nlohmann::json script;
   try {
     script = nlohmann::json::parse(read_text_file(path));
@@ -115,7 +120,7 @@ void run_script(const std::string& path) {
   }
   if (!script.is_object() || !script.contains("renders") || !script["renders"].is_array())
     throw usage_error(path + ": expected {\"renders\": [ ... ]}");
-  const auto context = create_offscreen_context();
+  const auto context = create_offscreen_context(context_kind(context_name));
   SurfaceRenderer renderer;
   int index = 0;
   for (const auto& job : script["renders"]) {
@@ -194,13 +199,15 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--camera", a->camera, "orbit yaw,pitch[,distance] in degrees (default: auto-framed 30,20)");
   cmd->add_flag("--mesh", a->mesh_lines, "draw the base mesh as thin grey lines");
   cmd->add_flag("--wireframe", a->wireframe, "draw the tessellation wireframe over the shading");
+  cmd->add_option("--context", a->context, "GL context: auto (EGL on a GPU device, else OSMesa), osmesa, egl")
+      ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   cmd->add_flag("--ellipsoids", a->ellipsoids, "draw the covariance ellipsoids");
   cmd->add_option("--sigma", a->sigma, "ellipsoid scale in standard deviations (k-sigma)")->check(CLI::Range(0.01f, 100.0f));
   cmd->add_option("--background", a->background, "background colour r,g,b in [0,1]");
   cmd->add_option("--aov", a->aovs, "world-space float buffers: position=FILE.exr, normal=FILE.exr");
   cmd->add_option("--reference", a->reference, "draw the CPU reference subdivision at level N instead of the patches")->check(CLI::Range(0, 7));
   cmd->callback([a, script] {
-    if (!script->empty()) return run_script(*script);
+    if (!script->empty()) return run_script(*script, a->context);
     if (a->input.empty() || a->output.empty()) throw usage_error("render: give an input mesh and -o OUTPUT.png (or --script FILE.json)");
     render(*a);
   });

@@ -2,6 +2,8 @@
 
 #include <glad/gl.h>
 
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
 #include <GL/osmesa.h>
 
 #include <mutex>
@@ -46,6 +48,58 @@ private:
   std::vector<unsigned char> buffer_;
 };
 
+// A surfaceless EGL context (EGL_KHR_surfaceless_context) on a device or Mesa's surfaceless platform.
+class EglContext : public GlContext {
+public:
+  explicit EglContext(bool require_hardware) {
+    const auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    const auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+    if (!get_platform_display) throw Error("EGL has no eglGetPlatformDisplayEXT");
+    if (query_devices) {  // prefer a real device (a GPU driver)
+      EGLDeviceEXT devices[8];
+      EGLint count = 0;
+      if (query_devices(8, devices, &count) && count > 0) {
+        for (EGLint i = 0; i < count && display_ == EGL_NO_DISPLAY; ++i) {
+          const EGLDisplay d = get_platform_display(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+          EGLint major = 0, minor = 0;
+          if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) display_ = d;
+        }
+      }
+    }
+    if (display_ == EGL_NO_DISPLAY && !require_hardware) {
+      display_ = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+      EGLint major = 0, minor = 0;
+      if (display_ != EGL_NO_DISPLAY && !eglInitialize(display_, &major, &minor)) display_ = EGL_NO_DISPLAY;
+    }
+    if (display_ == EGL_NO_DISPLAY) throw Error("no EGL display for a headless OpenGL context");
+    const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint n = 0;
+    eglBindAPI(EGL_OPENGL_API);
+    // Without surfaces a context needs no configuration where EGL_KHR_no_config_context exists.
+    if (!eglChooseConfig(display_, config_attributes, &config, 1, &n) || n < 1) config = EGL_NO_CONFIG_KHR;
+    const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attributes);
+    if (context_ == EGL_NO_CONTEXT) throw Error("EGL could not create an OpenGL 4.5 core context");
+    make_current();
+    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress))) throw Error("could not load the OpenGL 4.5 functions through EGL");
+    enable_gl_debug_output();
+  }
+  ~EglContext() override {
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(display_, context_);
+    eglTerminate(display_);
+  }
+  void make_current() override {
+    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) throw Error("EGL could not make its context current");
+  }
+
+private:
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLContext context_ = EGL_NO_CONTEXT;
+};
+
 }  // namespace
 
 std::string GlContext::description() const {
@@ -54,7 +108,21 @@ std::string GlContext::description() const {
   return std::string(renderer ? renderer : "?") + ", OpenGL " + (version ? version : "?");
 }
 
-std::unique_ptr<GlContext> create_offscreen_context() { return std::make_unique<OsMesaContext>(); }
+std::unique_ptr<GlContext> create_offscreen_context(ContextKind kind) {
+  switch (kind) {
+    case ContextKind::osmesa: return std::make_unique<OsMesaContext>();
+    case ContextKind::egl: return std::make_unique<EglContext>(false);
+    case ContextKind::automatic:
+      try {
+        auto context = std::make_unique<EglContext>(true);
+        // Mesa's software device counts as a device too: keep EGL only for a real GPU.
+        if (context->description().find("llvmpipe") == std::string::npos) return context;
+      } catch (const Error&) {
+      }
+      return std::make_unique<OsMesaContext>();
+  }
+  return std::make_unique<OsMesaContext>();
+}
 
 void enable_gl_debug_output() {
   glEnable(GL_DEBUG_OUTPUT);

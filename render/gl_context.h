@@ -14,9 +14,13 @@ public:
   virtual std::string description() const;
 };
 
-/// An off-screen context through Mesa's OSMesa (software, llvmpipe); renders into FBOs.
+enum class ContextKind { automatic, osmesa, egl };
+
+/// An off-screen context, rendering into FBOs: OSMesa (Mesa's software llvmpipe, works anywhere) or
+/// EGL without a surface (a GPU driver's headless context: EGL_EXT_platform_device, else Mesa's
+/// surfaceless platform). `automatic` tries EGL on a GPU device first, then OSMesa.
 /// Throws gps::Error when no 4.5 core context can be made.
-std::unique_ptr<GlContext> create_offscreen_context();
+std::unique_ptr<GlContext> create_offscreen_context(ContextKind kind = ContextKind::osmesa);
 
 /// Turns on KHR_debug and records GL errors; check_gl_errors() throws the first one as gps::Error.
 void enable_gl_debug_output();

@@ -56,6 +56,19 @@ TEST(RenderCli, ScriptedRendersWithEdits) {
   EXPECT_EQ(run_command(gpsurf("render --script " + dir.write("broken.json", "{\"renders\": ["))).exit_code, 2);
 }
 
+// The EGL context (surfaceless Mesa here, a GPU driver's device elsewhere) renders what OSMesa renders.
+TEST(RenderCli, EglAndOsMesaContextsAgree) {
+  test::TempDir dir;
+  run_command(gpsurf("sample valence6 -o " + dir.file("v.ply")));
+  for (const char* kind : {"egl", "osmesa"}) {
+    const auto r = run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file(std::string(kind) + ".png") + " --size 64x64 --context " +
+                                      kind + " --aov position=" + dir.file(std::string(kind) + ".exr")));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  const auto d = run_command(gpsurf("diff " + dir.file("egl.exr") + " " + dir.file("osmesa.exr") + " -o " + dir.file("d.png")));
+  EXPECT_NE(d.output.find("max 0,"), std::string::npos) << d.output;
+}
+
 TEST(RenderCli, BadInputIsAUsageError) {
   test::TempDir dir;
   run_command(gpsurf("sample cube -o " + dir.file("c.ply")));
