@@ -16,7 +16,8 @@ public:
   unsigned framebuffer() const { return fbo_; }
   /// Binds it for drawing, with all three outputs, and sets the viewport.
   void bind() const;
-  /// Attachment 0 as RGBA in [0,1]; 1 (position) and 2 (normal) as xyz + coverage (w = 1 where drawn).
+  /// Attachment 0 as RGBA in [0,1]; 1 (position) and 2 (normal) as xyz + coverage (w ≥ 1 where drawn;
+  /// the normal's w is 2 where a regular plan node was evaluated, 3 where a terminal one).
   Image read(int attachment) const;
 
 private:

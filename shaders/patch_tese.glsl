@@ -9,10 +9,11 @@ out vec3 v_position;
 out vec3 v_normal;
 out vec3 v_patch_uv;  // patch id and (u, v), for transform feedback checks
 out vec2 v_grid;      // tessellation grid coordinates, for the wireframe
+flat out int v_kind;  // plan node kind: 1 regular (exact B-spline), 2 terminal (Bézier approximation)
 
 void main() {
   vec3 mu, mu_u, mu_v;
-  evaluate_plan(tc_patch, gl_TessCoord.xy, mu, mu_u, mu_v);
+  evaluate_plan(tc_patch, gl_TessCoord.xy, mu, mu_u, mu_v, v_kind);
   v_position = mu;
   v_normal = normalize(cross(mu_u, mu_v));
   v_patch_uv = vec3(float(tc_patch), gl_TessCoord.xy);

@@ -14,8 +14,9 @@ vec3 point_mean(int p) {
   return inverse(precision_of(a, b)) * precision_mean_of(b, c);
 }
 
-// Position, tangents (Eq. 3.12) and normal of the limit surface at (u, v) of a patch.
-void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 mu_v) {
+// Position and tangents (Eq. 3.12) of the limit surface at (u, v) of a patch; `leaf_kind` is the
+// kind of the node that was evaluated (1 regular, 2 terminal).
+void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int leaf_kind) {
   int node = roots[patch_id];
   float scale = 1.0;
   // The kind is read into a variable once per node: re-reading nodes[node] after the loop gave the
@@ -28,6 +29,7 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
     node = nodes[node + 1 + ubit + 2 * vbit];
     kind = nodes[node];
   }
+  leaf_kind = kind;
   float wu[4], dwu[4], wv[4], dwv[4];
   if (kind == 1) {
     bspline_basis(uv.x, wu, dwu);

@@ -2,6 +2,7 @@
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_grid;
+flat in int v_kind;
 
 uniform int u_mode;  // 0 MatCap, 1 normals, 2 flat
 uniform mat4 u_view;
@@ -27,5 +28,5 @@ void main() {
   out_color = vec4(mix(color, u_wire_color.rgb, wire), 1.0);
   if (u_flag_back_faces != 0 && !gl_FrontFacing) out_color = vec4(1.0, 0.0, 1.0, 1.0);
   out_position = vec4(v_position, 1.0);
-  out_normal = vec4(n, 1.0);
+  out_normal = vec4(n, 1.0 + float(v_kind));  // w: 1 static mesh, 2 regular node, 3 terminal node
 }

@@ -8,6 +8,7 @@
 #include "core/patch_eval.h"
 #include "core/samples.h"
 #include "core/stencil_table.h"
+#include "core/tessellator.h"
 #include "render/gl_context.h"
 #include "tests/support/plan_fixture.h"
 
@@ -73,6 +74,64 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
     EXPECT_GT(e.count, 100u) << name;
     EXPECT_LT(e.position, 1e-4) << name;
     EXPECT_LT(e.normal_degrees, 1.0) << name;
+  }
+}
+
+// Position and normal AOVs of the patches against the CPU evaluator's tessellation (same level)
+// drawn as a static mesh through the same shading, over pixels covered by both and their neighbours.
+TEST_F(GpuTest, AovsMatchTheCpuEvaluatorPixelForPixel) {
+  for (const char* name : {"valence5", "wirecube", "cone"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(mesh, 3);
+    const test::PlannedMesh cpu(mesh, 3);
+    DrawOptions o;
+    o.level = 64;  // the two triangulations differ by the chord error, ~1e-4 of the diagonal at 64 here
+    Vec3 lo = mesh.mean(0), hi = lo;
+    for (size_t i = 1; i < mesh.n_vertices(); ++i) lo = lo.cwiseMin(mesh.mean(i)), hi = hi.cwiseMax(mesh.mean(i));
+    const Camera camera = frame_box(lo, hi, 35.0f, 25.0f);
+    RenderTarget target(200, 200);
+    renderer.draw(target, camera, o);
+    const Image gpu_position = target.read(1), gpu_normal = target.read(2);
+    renderer.set_triangles(tessellate(cpu.tables.plans, cpu.points, 64));
+    o.static_triangles = true;
+    renderer.draw(target, camera, o);
+    const Image cpu_position = target.read(1), cpu_normal = target.read(2);
+    const double diag = bounding_box_diagonal(mesh);
+    // Covered, and no silhouette or occlusion edge in the 3×3 neighbourhood (positions continuous).
+    const auto inside = [&](const Image& im, int x, int y) {
+      const Vec3 p(im.at(x, y, 0), im.at(x, y, 1), im.at(x, y, 2));
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int xx = std::clamp(x + dx, 0, im.width - 1), yy = std::clamp(y + dy, 0, im.height - 1);
+          if (im.at(xx, yy, 3) < 0.5f) return false;
+          if ((Vec3(im.at(xx, yy, 0), im.at(xx, yy, 1), im.at(xx, yy, 2)) - p).norm() > 0.02 * bounding_box_diagonal(mesh)) return false;
+        }
+      return true;
+    };
+    double position = 0, normal = 0;
+    int covered = 0;
+    for (int y = 0; y < 200; ++y)
+      for (int x = 0; x < 200; ++x) {
+        if (!inside(gpu_position, x, y) || !inside(cpu_position, x, y)) continue;
+        const Vec3 a(gpu_position.at(x, y, 0), gpu_position.at(x, y, 1), gpu_position.at(x, y, 2));
+        const Vec3 b(cpu_position.at(x, y, 0), cpu_position.at(x, y, 1), cpu_position.at(x, y, 2));
+        // At grazing angles a sub-pixel difference in the triangulation moves the hit far along the ray.
+        const glm::vec3 eye = camera.eye();
+        const Vec3 ray = (a - Vec3(eye.x, eye.y, eye.z)).normalized();
+        const Vec3 n(cpu_normal.at(x, y, 0), cpu_normal.at(x, y, 1), cpu_normal.at(x, y, 2));
+        if (std::abs(ray.dot(n.normalized())) < 0.3) continue;
+        position = std::max(position, (a - b).norm() / diag);
+        if (gpu_normal.at(x, y, 3) != 2.0f) continue;  // normals: where the node is regular
+        const Vec3 na(gpu_normal.at(x, y, 0), gpu_normal.at(x, y, 1), gpu_normal.at(x, y, 2));
+        const Vec3 nb(cpu_normal.at(x, y, 0), cpu_normal.at(x, y, 1), cpu_normal.at(x, y, 2));
+        normal = std::max(normal, std::acos(std::clamp(na.normalized().dot(nb.normalized()), -1.0, 1.0)) * 180.0 / M_PI);
+        ++covered;
+      }
+    EXPECT_GT(covered, 2000) << name;
+    std::printf("%s: max position %.2e of the diagonal, max normal %.3f degrees over %d pixels\n", name, position, normal, covered);
+    EXPECT_LT(position, 1e-4) << name;
+    EXPECT_LT(normal, 1.0) << name;
   }
 }
 
