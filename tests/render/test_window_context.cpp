@@ -1,0 +1,39 @@
+// A real GLFW window (run under xvfb-run by ctest): the pipeline draws and the frame reaches the window.
+#include "render/window_context.h"
+
+#include <glad/gl.h>
+#include <gtest/gtest.h>
+
+#include "core/samples.h"
+#include "render/surface_renderer.h"
+
+namespace gps {
+namespace {
+
+TEST(WindowContext, DrawsTheSurfaceIntoAWindow) {
+  WindowContext window(320, 240, "gpsurf test", true);
+  EXPECT_NE(window.description().find("4.5"), std::string::npos) << window.description();
+  const CovarianceMesh mesh = make_sample("cube");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, 3);
+  int width = 0, height = 0;
+  window.framebuffer_size(width, height);
+  RenderTarget target(width, height);
+  DrawOptions o;
+  o.background = {0.0f, 0.0f, 0.0f};
+  renderer.draw(target, frame_box(Vec3(-1, -1, -1), Vec3(1, 1, 1)), o);
+  window.blit(target);
+  std::vector<unsigned char> pixels(size_t(width) * size_t(height) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  int lit = 0;
+  for (size_t i = 0; i < pixels.size(); i += 4) lit += pixels[i] > 40;
+  EXPECT_GT(lit, width * height / 20);
+  EXPECT_LT(lit, width * height);  // the background shows around the surface
+  window.swap_buffers();
+  EXPECT_FALSE(window.should_close());
+}
+
+}  // namespace
+}  // namespace gps
