@@ -4,6 +4,9 @@
 #include <glad/gl.h>
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
+#include "core/error.h"
 #include "core/samples.h"
 #include "render/surface_renderer.h"
 
@@ -33,6 +36,20 @@ TEST(WindowContext, DrawsTheSurfaceIntoAWindow) {
   EXPECT_LT(lit, width * height);  // the background shows around the surface
   window.swap_buffers();
   EXPECT_FALSE(window.should_close());
+}
+
+TEST(WindowContext, NoDisplayIsAOneLineError) {
+  const char* saved = std::getenv("DISPLAY");
+  const std::string display = saved ? saved : "";
+  setenv("DISPLAY", ":4999", 1);  // no server there
+  unsetenv("WAYLAND_DISPLAY");
+  try {
+    WindowContext window(64, 64, "none", false);
+    ADD_FAILURE() << "a window opened without a display";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+  }
+  if (saved) setenv("DISPLAY", display.c_str(), 1);
 }
 
 }  // namespace
