@@ -1,0 +1,87 @@
+// Picking: rays through pixels, vertices near the mouse, the surface point under a pixel (OSMesa).
+#include "render/picking.h"
+
+#include <gtest/gtest.h>
+
+#include "core/samples.h"
+#include "render/gl_context.h"
+#include "render/surface_renderer.h"
+
+namespace gps {
+namespace {
+
+glm::vec3 mean_of(const CovarianceMesh& mesh, size_t i) {
+  const Vec3 m = mesh.mean(i);
+  return {float(m.x()), float(m.y()), float(m.z())};
+}
+
+Camera cube_camera() { return frame_box(Vec3(-1, -1, -1), Vec3(1, 1, 1), 35.0f, 25.0f); }
+
+TEST(Picking, RaysThroughAProjectedPointHitIt) {
+  const CovarianceMesh mesh = make_sample("cube");
+  const Camera camera = cube_camera();
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+    const glm::vec3 world = mean_of(mesh, i);
+    const auto p = project_to_pixel(camera, 200, 150, world);
+    ASSERT_TRUE(p.has_value());
+    const Ray ray = pixel_ray(camera, 200, 150, glm::vec2(*p) - glm::vec2(0.5f));
+    const glm::vec3 to_point = world - ray.origin;
+    const float off_ray = glm::length(to_point - glm::dot(to_point, ray.direction) * ray.direction);
+    EXPECT_LT(off_ray, 1e-4f * glm::length(to_point)) << "vertex " << i;
+    EXPECT_GT(glm::dot(to_point, ray.direction), 0.0f);
+  }
+}
+
+TEST(Picking, PicksTheVertexUnderTheMouseAndNothingElsewhere) {
+  const CovarianceMesh mesh = make_sample("cube");
+  const Camera camera = cube_camera();
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+    const auto p = project_to_pixel(camera, 200, 150, mean_of(mesh, i));
+    ASSERT_TRUE(p.has_value());
+    // Three pixels off to the side still picks it; the pixel centre convention matches pixel_ray.
+    EXPECT_EQ(pick_vertex(camera, 200, 150, glm::vec2(p->x + 2.5f, p->y - 0.5f), mesh, 6.0f), int(i));
+  }
+  EXPECT_EQ(pick_vertex(camera, 200, 150, glm::vec2(1.0f, 1.0f), mesh, 6.0f), -1);
+  // Seen along a diagonal, (1,1,1) hides (-1,-1,-1) exactly: the front one wins.
+  Camera diagonal = camera;
+  diagonal.target = glm::vec3(0.0f);
+  diagonal.yaw_degrees = 45.0f;
+  diagonal.pitch_degrees = glm::degrees(std::asin(1.0f / std::sqrt(3.0f)));
+  int front = -1;
+  for (size_t i = 0; i < mesh.n_vertices(); ++i)
+    if (mesh.mean(i).minCoeff() > 0) front = int(i);
+  EXPECT_EQ(pick_vertex(diagonal, 100, 100, glm::vec2(49.5f, 49.5f), mesh, 4.0f), front);
+}
+
+TEST(Picking, SurfacePointUnderAPixelLiesOnTheRay) {
+  const auto context = create_offscreen_context();
+  const CovarianceMesh mesh = make_sample("cube");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, 3);
+  RenderTarget target(96, 64);
+  const Camera camera = cube_camera();
+  DrawOptions o;
+  o.level = 16;
+  renderer.draw(target, camera, o);
+  EXPECT_FALSE(surface_point(target, glm::vec2(1.0f, 1.0f)).has_value());
+  EXPECT_FALSE(surface_point(target, glm::vec2(-1.0f, 10.0f)).has_value());
+  int hits = 0;
+  for (const glm::vec2 pixel : {glm::vec2(48, 32), glm::vec2(40, 28), glm::vec2(55, 38)}) {
+    const auto point = surface_point(target, pixel);
+    ASSERT_TRUE(point.has_value()) << pixel.x << "," << pixel.y;
+    ++hits;
+    // The point lies inside the cube's hull, on the ray through that pixel, in front of the eye.
+    EXPECT_LE(glm::length(*point), std::sqrt(3.0f) + 1e-3f);
+    const Ray ray = pixel_ray(camera, 96, 64, pixel);
+    const glm::vec3 to_point = *point - ray.origin;
+    const float along = glm::dot(to_point, ray.direction);
+    EXPECT_GT(along, 0.0f);
+    // Within a pixel's footprint at that distance.
+    const float footprint = 2.0f * along * std::tan(glm::radians(camera.fov_degrees) * 0.5f) / 64.0f;
+    EXPECT_LT(glm::length(to_point - along * ray.direction), footprint);
+  }
+  EXPECT_EQ(hits, 3);
+}
+
+}  // namespace
+}  // namespace gps
