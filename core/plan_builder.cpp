@@ -53,8 +53,8 @@ int other_face(const LocalMesh& m, int e, int f) {
 
 class Builder {
 public:
-  Builder(const PolygonTopology& topology, int max_depth)
-      : max_depth_(max_depth), base_(base_local_mesh(topology)), stencils_(topology.n_vertices) {}
+  Builder(const PolygonTopology& topology, int max_depth, bool bspline_leaves)
+      : max_depth_(max_depth), bspline_leaves_(bspline_leaves), base_(base_local_mesh(topology)), stencils_(topology.n_vertices) {}
 
   PlanTables build() {
     const PolygonTopology& t = base_.topology;
@@ -224,7 +224,8 @@ private:
     bool regular = true;
     for (const int v : c) regular = regular && regular_vertex(m, v);
     const std::vector<int> corners(c.begin(), c.end());
-    if (regular) return emit_leaf(NodeKind::regular, m, bspline_net(m, m.find_face(corners), c));
+    if (regular && bspline_leaves_) return emit_leaf(NodeKind::regular, m, bspline_net(m, m.find_face(corners), c));
+    if (regular) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
     if (depth == max_depth_) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
 
     const int offset = int(plans_.nodes.size());
@@ -252,6 +253,7 @@ private:
   }
 
   int max_depth_;
+  bool bspline_leaves_;
   LocalMesh base_;
   StencilTableBuilder stencils_;
   PlanTable plans_;
@@ -259,9 +261,9 @@ private:
 
 }  // namespace
 
-PlanTables build_plans(const PolygonTopology& topology, int max_depth) {
+PlanTables build_plans(const PolygonTopology& topology, int max_depth, bool bspline_leaves) {
   if (max_depth < 1 || max_depth > 8) throw usage_error("plan depth must be 1..8, got " + std::to_string(max_depth));
-  return Builder(topology, max_depth).build();
+  return Builder(topology, max_depth, bspline_leaves).build();
 }
 
 }  // namespace gps
