@@ -1,0 +1,77 @@
+// Subdivision plans: preprocessing (build_plans), full stencil application and the incremental
+// update of one vertex, per sample mesh at depth 3 (issue "Subdivision plans and stencil tables").
+#include <benchmark/benchmark.h>
+
+#include "core/dual_map.h"
+#include "core/plan_builder.h"
+#include "core/samples.h"
+#include "core/stencil_table.h"
+
+namespace {
+
+struct Case {
+  const char* name;
+  int size;
+};
+// valence3..10 are cheap; the sphere at ~250 faces stands in for the thesis' anvil.
+constexpr Case kCases[] = {{"cube", 0},       {"wirecube", 0},   {"valence3", 0},     {"valence6", 0},
+                           {"valence10", 0},  {"sphere", 250},   {"grid", 1000},      {"sphere", 1000},
+                           {"grid", 10000},   {"sphere", 10000}, {"grid", 100000},    {"sphere", 100000}};
+
+struct Prepared {
+  gps::CovarianceMesh mesh;
+  gps::PlanTables tables;
+  std::vector<gps::Dual> q;
+};
+
+Prepared prepare(const Case& c) {
+  Prepared p{gps::make_sample(c.name, c.size), {}, {}};
+  p.tables = gps::build_plans(gps::topology_of(p.mesh.mesh), 3);
+  for (size_t i = 0; i < p.mesh.n_vertices(); ++i) p.q.push_back(gps::to_dual(p.mesh.mean(i), p.mesh.covariance(i)));
+  return p;
+}
+
+void label(benchmark::State& state, const Case& c, const Prepared& p) {
+  state.SetLabel(std::string(c.name) + (c.size ? "/" + std::to_string(c.size) : ""));
+  state.counters["faces"] = double(p.mesh.n_faces());
+  state.counters["rows"] = double(p.tables.stencils.n_rows());
+  state.counters["nnz"] = double(p.tables.stencils.indices.size());
+  state.counters["node_ints"] = double(p.tables.plans.nodes.size());
+}
+
+void BM_BuildPlans(benchmark::State& state) {
+  const Case& c = kCases[state.range(0)];
+  const Prepared p = prepare(c);
+  const gps::PolygonTopology topology = gps::topology_of(p.mesh.mesh);
+  for (auto _ : state) benchmark::DoNotOptimize(gps::build_plans(topology, 3));
+  label(state, c, p);
+  state.counters["us_per_face"] =
+      benchmark::Counter(double(p.mesh.n_faces()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void BM_ApplyStencils(benchmark::State& state) {
+  const Case& c = kCases[state.range(0)];
+  const Prepared p = prepare(c);
+  for (auto _ : state) benchmark::DoNotOptimize(gps::apply_stencils(p.tables.stencils, p.q));
+  label(state, c, p);
+}
+
+void BM_UpdateOneVertex(benchmark::State& state) {
+  const Case& c = kCases[state.range(0)];
+  const Prepared p = prepare(c);
+  const gps::StencilDependents deps = gps::stencil_dependents(p.tables.stencils);
+  std::vector<gps::Dual> points = gps::apply_stencils(p.tables.stencils, p.q);
+  const std::vector<int> changed = {int(p.mesh.n_vertices() / 2)};
+  for (auto _ : state) {
+    gps::update_stencils(p.tables.stencils, deps, changed, points);
+    benchmark::DoNotOptimize(points.data());
+  }
+  label(state, c, p);
+}
+
+constexpr int kNumCases = int(sizeof(kCases) / sizeof(kCases[0]));
+BENCHMARK(BM_BuildPlans)->DenseRange(0, kNumCases - 1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ApplyStencils)->DenseRange(0, kNumCases - 1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_UpdateOneVertex)->DenseRange(0, kNumCases - 1)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
