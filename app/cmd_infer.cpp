@@ -24,7 +24,13 @@ void add_infer_command(CLI::App& app) {
       ->excludes(bias);
   cmd->add_flag("--binary", args->binary, "binary PLY");
   cmd->callback([args] {
-    CovarianceMesh m = read_mesh(args->input);
+    ImportOptions options;  // a plain mesh gets the same kind of covariances on import
+    options.bias = args->bias;
+    if (args->isotropic > 0) {
+      options.covariance = ImportOptions::Covariance::isotropic;
+      options.isotropic_scale = args->isotropic;
+    }
+    CovarianceMesh m = read_mesh(args->input, options);
     if (args->isotropic > 0) isotropic_covariances(m, args->isotropic);
     else infer_covariances(m, args->bias);
     write_mesh(args->output, m, args->binary);

@@ -156,6 +156,9 @@ CovarianceMesh parse_stl(const std::string& data, const std::string& source) {
     if (corners.size() % 3 != 0) throw Error(source + ": a facet does not have three vertices");
   }
   if (corners.empty()) throw Error(source + ": no triangles");
+  for (size_t c = 0; c < corners.size(); ++c)  // before welding: NaN keys would break the ordered map
+    if (!corners[c].allFinite())
+      throw Error(source + ": triangle " + std::to_string(c / 3) + " has a corner that is not finite");
   std::map<std::array<double, 3>, int> index;
   std::vector<Vec3> points;
   std::vector<std::vector<int>> faces;

@@ -1,6 +1,8 @@
 #include "core/ply_io.h"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -102,6 +104,27 @@ public:
     for (int i = t.size - 1; i >= 0; --i) u = (u << 8) | b[i];
     if (t.is_signed && (u >> (8 * t.size - 1)) & 1) return double((long long)u - (1LL << (8 * t.size)));
     return double(u);
+  }
+
+  // A list length: a non-negative integer that fits in the data left (one byte per binary value,
+  // two characters per ASCII value), so a corrupt count can neither overflow nor run for long.
+  size_t read_count(const ScalarType& t) {
+    const double n = read(t);
+    const size_t limit = format_ == Format::ascii ? tokens_.size() - token_index_ : remaining();
+    if (!(n >= 0) || n != std::floor(n)) fail(where() + "list length " + format_number(n) + " is not a count");
+    if (n > double(limit))
+      fail(where() + "list length " + format_number(n) +
+           (format_ == Format::ascii ? " exceeds the values on the line" : " exceeds the data left (truncated)"));
+    return size_t(n);
+  }
+
+  // "line N: " for ASCII data, "" for binary data (which has no lines).
+  std::string where() const { return format_ == Format::ascii ? "line " + std::to_string(line_) + ": " : ""; }
+
+  static std::string format_number(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
   }
 
   void end_record() {
@@ -214,6 +237,7 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       return -1;
     };
     if (e.name == "vertex") {
+      if (has_vertex) fail("line " + std::to_string(e.header_line) + ": a second vertex element");
       has_vertex = true;
       const int ix = index_of("x"), iy = index_of("y"), iz = index_of("z");
       if (ix < 0 || iy < 0 || iz < 0) fail("the vertex element lacks x, y or z");
@@ -231,8 +255,8 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
         for (size_t k = 0; k < e.properties.size(); ++k) {
           const Property& p = e.properties[k];
           if (p.is_list) {
-            const double n = body.read(p.count_type);
-            for (int i = 0; i < int(n); ++i) body.read(p.type);
+            const size_t n = body.read_count(p.count_type);
+            for (size_t i = 0; i < n; ++i) body.read(p.type);
           } else {
             values[k] = body.read(p.type);
           }
@@ -250,6 +274,7 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
         }
       }
     } else if (e.name == "face") {
+      if (!faces.empty()) fail("line " + std::to_string(e.header_line) + ": a second face element");
       int list = -1;
       for (size_t i = 0; i < e.properties.size(); ++i)
         if (e.properties[i].is_list && (e.properties[i].name == "vertex_indices" || e.properties[i].name == "vertex_index"))
@@ -264,13 +289,13 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
             body.read(p.type);
             continue;
           }
-          const double n = body.read(p.count_type);
-          if (int(k) == list && n < 3) fail("face " + std::to_string(f) + " has " + std::to_string(int(n)) + " vertices (at least 3 needed)");
-          for (int i = 0; i < int(n); ++i) {
+          const size_t n = body.read_count(p.count_type);
+          if (int(k) == list && n < 3) fail(body.where() + "face " + std::to_string(f) + " has " + std::to_string(n) + " vertices (at least 3 needed)");
+          for (size_t i = 0; i < n; ++i) {
             const double index = body.read(p.type);
             if (int(k) != list) continue;
-            if (index < 0 || index >= double(means.size()))
-              fail("face " + std::to_string(f) + " refers to vertex " + std::to_string((long long)index) +
+            if (!(index >= 0 && index < double(means.size())) || index != std::floor(index))
+              fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + BodyReader::format_number(index) +
                    ", but there are " + std::to_string(means.size()) + " vertices");
             faces[f].push_back(int(index));
           }
@@ -281,8 +306,8 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       for (size_t r = 0; r < e.count; ++r) {
         body.begin_record();
         for (const Property& p : e.properties) {
-          const double n = p.is_list ? body.read(p.count_type) : 1;
-          for (int i = 0; i < int(n); ++i) body.read(p.type);
+          const size_t n = p.is_list ? body.read_count(p.count_type) : 1;
+          for (size_t i = 0; i < n; ++i) body.read(p.type);
         }
         body.end_record();
       }
@@ -302,7 +327,11 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
       << "comment gpsurf covariance mesh\n"
       << "element vertex " << m.n_vertices() << "\n";
   for (const char* name : {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz"}) out << "property double " << name << "\n";
-  out << "element face " << m.n_faces() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  // Face sizes fit a uchar unless some face has more than 255 corners.
+  bool wide = false;
+  for (const auto f : m.mesh.faces()) wide = wide || m.mesh.valence(f) > 255;
+  out << "element face " << m.n_faces() << "\nproperty list " << (wide ? "int" : "uchar")
+      << " int vertex_indices\nend_header\n";
   char buffer[32];
   for (size_t i = 0; i < m.n_vertices(); ++i) {
     const Vec3 p = m.mean(i);
@@ -319,9 +348,10 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
     }
   }
   for (const auto f : m.mesh.faces()) {
-    const unsigned char n = static_cast<unsigned char>(m.mesh.valence(f));
-    if (binary) out.put(char(n));
-    else out << int(n);
+    const int32_t n = static_cast<int32_t>(m.mesh.valence(f));
+    if (!binary) out << n;
+    else if (wide) out.write(reinterpret_cast<const char*>(&n), 4);
+    else out.put(char(static_cast<unsigned char>(n)));
     for (const auto v : m.mesh.fv_range(f)) {
       const int32_t index = v.idx();
       if (binary) out.write(reinterpret_cast<const char*>(&index), 4);

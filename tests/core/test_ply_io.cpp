@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <sstream>
 #include <random>
 
 #include "core/error.h"
@@ -164,6 +166,83 @@ TEST(PlyIo, FailedWriteLeavesTheTargetAndNoTemporaryFile) {
   EXPECT_EQ(files, 1u);
   write_mesh(target, m);
   EXPECT_EQ(read_mesh(target).n_vertices(), 8u);
+}
+
+TEST(PlyIo, CorruptListLengthsAndIndicesAreErrors) {
+  const std::string v0 = "0 0 0 1 0 0 1 0 1\n", v1 = "1 0 0 1 0 0 1 0 1\n", v2 = "0 1 0 1 0 0 1 0 1\n";
+  const std::string h = header("ascii", 3, 1) + v0 + v1 + v2;
+  const std::vector<BadInput> cases = {
+      {"nan_count.ply", h + "nan 0 1 2\n", "line 19: list length nan is not a count"},
+      {"frac_count.ply", h + "3.5 0 1 2\n", "list length 3.5 is not a count"},
+      {"neg_count.ply", h + "-3 0 1 2\n", "list length -3 is not a count"},
+      {"long_count.ply", h + "4 0 1 2\n", "line 19: list length 4 exceeds the values on the line"},
+      {"huge_count.ply", h + "1e300 0 1 2\n", "list length 1e+300 exceeds"},
+      {"nan_index.ply", h + "3 0 1 nan\n", "face 0 refers to vertex nan"},
+      {"frac_index.ply", h + "3 0 1 1.5\n", "face 0 refers to vertex 1.5"},
+      {"neg_index.ply", h + "3 0 -1 2\n", "face 0 refers to vertex -1"},
+      {"two_vertex.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+                         "element vertex 0\nproperty float x\nproperty float y\nproperty float z\nend_header\n",
+       "line 7: a second vertex element"},
+      {"no_xyz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n",
+       "lacks x, y or z"},
+      {"some_cov.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+                       "property float cxx\nend_header\n0 0 0 1\n", "only some of"},
+      {"no_format.ply", "ply\nelement vertex 0\nend_header\n", "no format line"},
+      {"huge_binary_list.ply", header("binary_little_endian", 3, 1) + binary_vertices(3) + std::string("\xff\x00\x00\x00\x00", 5),
+       "list length 255 exceeds the data left (truncated)"},
+  };
+  for (const auto& c : cases) {
+    try {
+      parse_ply(c.contents, c.name);
+      ADD_FAILURE() << c.name << " was accepted";
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(std::string(c.name) + ": ", 0), 0u) << what;
+      EXPECT_NE(what.find(c.expected), std::string::npos) << c.name << ": " << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+  }
+}
+
+// Faces with more than 255 corners do not fit the usual uchar list length: the writer widens it.
+TEST(PlyIo, RoundTripOfAFaceWithMoreThan255Corners) {
+  std::vector<Vec3> p;
+  std::vector<int> face;
+  for (int i = 0; i < 300; ++i) {
+    p.emplace_back(std::cos(i * 0.021), std::sin(i * 0.021), 0);
+    face.push_back(i);
+  }
+  const CovarianceMesh m = make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.01 * Mat3::Identity()), {face}, "ngon");
+  test::TempDir dir;
+  for (const bool binary : {false, true}) {
+    const std::string path = dir.file(binary ? "b.ply" : "a.ply");
+    write_mesh(path, m, binary);
+    expect_identical(m, read_mesh(path));
+  }
+}
+
+// Every truncation and many single-byte corruptions of a valid file either read or give a gps::Error:
+// never a crash, a hang or another exception.
+TEST(PlyIo, TruncatedAndCorruptedFilesNeverCrash) {
+  const CovarianceMesh m = make_sample("cube");
+  for (const bool binary : {false, true}) {
+    std::ostringstream out;
+    write_ply(out, m, binary);
+    const std::string data = out.str();
+    // (An ASCII file cut just before its final newline is still complete.)
+    for (size_t n = 0; n + (binary ? 0 : 1) < data.size(); ++n) EXPECT_THROW(parse_ply(data.substr(0, n), "cut.ply"), Error) << n;
+    std::mt19937 rng(binary ? 7 : 8);
+    for (int trial = 0; trial < 2000; ++trial) {
+      std::string bad = data;
+      const size_t at = rng() % bad.size();
+      bad[at] = binary ? char(rng()) : "0123456789 .-e\nnax"[rng() % 19];
+      try {
+        parse_ply(bad, "bad.ply");
+      } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      }
+    }
+  }
 }
 
 }  // namespace
