@@ -35,12 +35,14 @@ Stencil LocalMesh::combination(const std::vector<std::pair<int, double>>& terms)
     for (const auto& [v, w] : terms) s += Stencil::vertex(v) * w;
     return s;
   }
-  Eigen::VectorXd sum = Eigen::VectorXd::Zero(Eigen::Index(base_ids.size()));
+  thread_local Eigen::VectorXd sum;  // scratch: one allocation per thread, not per point
+  sum.setZero(Eigen::Index(base_ids.size()));
   for (const auto& [v, w] : terms) {
     if (points[size_t(v)].size() == 0) throw std::logic_error("plan builder read a point outside the known neighbourhood");
     sum += w * points[size_t(v)];
   }
   std::vector<std::pair<int, double>> sparse;
+  sparse.reserve(size_t((sum.array() != 0.0).count()));
   for (Eigen::Index i = 0; i < sum.size(); ++i)
     if (sum[i] != 0.0) sparse.emplace_back(base_ids[size_t(i)], sum[i]);
   return Stencil::from_terms(std::move(sparse));

@@ -15,24 +15,30 @@ StencilTableBuilder::StencilTableBuilder(int n_base) {
 int StencilTableBuilder::add(const Stencil& s) {
   if (const int v = s.as_vertex(); v >= 0) return v;
   assert(!s.empty() && std::abs(s.weight_sum() - 1.0) < 1e-9);
-  std::vector<std::pair<int, double>> terms;
-  terms.reserve(s.terms().size());
-  for (const auto& t : s.terms())
-    if (t.second != 0.0) terms.push_back(t);
-  size_t hash = terms.size();
-  for (const auto& [index, weight] : terms)
-    hash = (hash * 0x9e3779b97f4a7c15ull) ^ (size_t(index) * 31 + std::bit_cast<size_t>(weight));
-  auto& candidates = rows_by_hash_[hash];
+  // Zero weights are skipped in the hash, the comparison and the row alike (no copy of the terms).
+  size_t hash = 0, n_terms = 0;
+  for (const auto& [index, weight] : s.terms())
+    if (weight != 0.0) {
+      hash = (hash * 0x9e3779b97f4a7c15ull) ^ (size_t(index) * 31 + std::bit_cast<size_t>(weight));
+      ++n_terms;
+    }
+  auto& candidates = rows_by_hash_[hash ^ n_terms];
   for (const int row : candidates) {
     const int b = table_.offsets[size_t(row)], e = table_.offsets[size_t(row) + 1];
-    if (e - b != int(terms.size())) continue;
+    if (e - b != int(n_terms)) continue;
     bool same = true;
-    for (int k = b; k < e && same; ++k)
-      same = table_.indices[size_t(k)] == terms[size_t(k - b)].first && table_.weights[size_t(k)] == terms[size_t(k - b)].second;
+    int k = b;
+    for (const auto& [index, weight] : s.terms()) {
+      if (weight == 0.0) continue;
+      same = table_.indices[size_t(k)] == index && table_.weights[size_t(k)] == weight;
+      if (!same) break;
+      ++k;
+    }
     if (same) return table_.n_base + row;
   }
   const int row = table_.n_rows();
-  for (const auto& [index, weight] : terms) {
+  for (const auto& [index, weight] : s.terms()) {
+    if (weight == 0.0) continue;
     table_.indices.push_back(index);
     table_.weights.push_back(weight);
   }
