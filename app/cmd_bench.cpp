@@ -74,9 +74,7 @@ nlohmann::json bench_render(const std::string& name, int depth, int size, const 
   const CovarianceMesh mesh = make_sample(name);
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh, depth);
-  Vec3 lo = mesh.mean(0), hi = lo;
-  for (size_t i = 1; i < mesh.n_vertices(); ++i) lo = lo.cwiseMin(mesh.mean(i)), hi = hi.cwiseMax(mesh.mean(i));
-  const Camera camera = frame_box(lo, hi);
+  const Camera camera = frame_mesh(mesh);
   RenderTarget target(size, size);
   const FrameTiming compute = time_gl_work([&] { renderer.recompute_all(); }, 5);
   std::vector<Dual> q(mesh.n_vertices());

@@ -74,13 +74,11 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
     renderer.set_triangles(reference_triangles(mesh, a.reference));
     o.static_triangles = true;
   }
-  Vec3 lo = mesh.mean(0), hi = lo;
-  for (size_t i = 1; i < mesh.n_vertices(); ++i) lo = lo.cwiseMin(mesh.mean(i)), hi = hi.cwiseMax(mesh.mean(i));
-  Camera camera = frame_box(lo, hi);
+  Camera camera = frame_mesh(mesh);
   if (!a.camera.empty()) {
     const auto c = parse_floats(a.camera, "--camera", 2, 3);
     const float distance = camera.distance;
-    camera = frame_box(lo, hi, c[0], c[1]);
+    camera = frame_mesh(mesh, c[0], c[1]);
     camera.distance = c.size() > 2 ? c[2] : distance;
   }
   RenderTarget target(width, height);

@@ -86,13 +86,17 @@ void validate_gaussians(const CovarianceMesh& m, const std::string& source) {
   }
 }
 
-double bounding_box_diagonal(const CovarianceMesh& m) {
-  if (m.n_vertices() == 0) return 0.0;
-  Vec3 lo = m.mean(0), hi = lo;
+void bounding_box(const CovarianceMesh& m, Vec3& lo, Vec3& hi) {
+  lo = hi = m.n_vertices() == 0 ? Vec3::Zero() : m.mean(0);
   for (size_t i = 1; i < m.n_vertices(); ++i) {
     lo = lo.cwiseMin(m.mean(i));
     hi = hi.cwiseMax(m.mean(i));
   }
+}
+
+double bounding_box_diagonal(const CovarianceMesh& m) {
+  Vec3 lo, hi;
+  bounding_box(m, lo, hi);
   return (hi - lo).norm();
 }
 

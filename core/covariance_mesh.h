@@ -41,6 +41,9 @@ void validate_gaussians(const CovarianceMesh& m, const std::string& source = "me
 /// Whether a covariance is symmetric (to relative 1e-9) and positive definite.
 bool is_spd(const Mat3& covariance);
 
+/// Axis-aligned bounding box [lo, hi] of the means (both zero for an empty mesh).
+void bounding_box(const CovarianceMesh& m, Vec3& lo, Vec3& hi);
+
 /// Bounding-box diagonal length of the means.
 double bounding_box_diagonal(const CovarianceMesh& m);
 

@@ -30,4 +30,10 @@ Camera frame_box(const Vec3& lo, const Vec3& hi, float yaw_degrees, float pitch_
   return c;
 }
 
+Camera frame_mesh(const CovarianceMesh& mesh, float yaw_degrees, float pitch_degrees) {
+  Vec3 lo, hi;
+  bounding_box(mesh, lo, hi);
+  return frame_box(lo, hi, yaw_degrees, pitch_degrees);
+}
+
 }  // namespace gps

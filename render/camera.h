@@ -2,6 +2,7 @@
 // An orbit camera: yaw and pitch around a target at a distance, perspective projection.
 #include <glm/glm.hpp>
 
+#include "core/covariance_mesh.h"
 #include "core/linalg.h"
 
 namespace gps {
@@ -21,5 +22,8 @@ struct Camera {
 
 /// A camera at the given angles that frames the box [lo, hi] (the whole box in view).
 Camera frame_box(const Vec3& lo, const Vec3& hi, float yaw_degrees = 30.0f, float pitch_degrees = 20.0f);
+
+/// frame_box() of the bounding box of a mesh's means.
+Camera frame_mesh(const CovarianceMesh& mesh, float yaw_degrees = 30.0f, float pitch_degrees = 20.0f);
 
 }  // namespace gps

@@ -16,13 +16,11 @@ namespace {
 Image render_sample(SurfaceRenderer& renderer, const std::string& name) {
   const CovarianceMesh mesh = make_sample(name);
   renderer.set_mesh(mesh, 3);
-  Vec3 lo = mesh.mean(0), hi = lo;
-  for (size_t i = 1; i < mesh.n_vertices(); ++i) lo = lo.cwiseMin(mesh.mean(i)), hi = hi.cwiseMax(mesh.mean(i));
   RenderTarget target(128, 128);
   DrawOptions o;
   o.level = 8;
   o.mesh_lines = true;
-  renderer.draw(target, frame_box(lo, hi, 35.0f, 25.0f), o);
+  renderer.draw(target, frame_mesh(mesh, 35.0f, 25.0f), o);
   Image rgba = target.read(0), rgb{rgba.width, rgba.height, 3, {}};
   for (size_t i = 0; i < rgba.pixels.size(); i += 4) rgb.pixels.insert(rgb.pixels.end(), rgba.pixels.begin() + long(i), rgba.pixels.begin() + long(i) + 3);
   return rgb;

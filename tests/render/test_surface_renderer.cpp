@@ -87,9 +87,7 @@ TEST_F(GpuTest, AovsMatchTheCpuEvaluatorPixelForPixel) {
     const test::PlannedMesh cpu(mesh, 3);
     DrawOptions o;
     o.level = 64;  // the two triangulations differ by the chord error, ~1e-4 of the diagonal at 64 here
-    Vec3 lo = mesh.mean(0), hi = lo;
-    for (size_t i = 1; i < mesh.n_vertices(); ++i) lo = lo.cwiseMin(mesh.mean(i)), hi = hi.cwiseMax(mesh.mean(i));
-    const Camera camera = frame_box(lo, hi, 35.0f, 25.0f);
+    const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
     RenderTarget target(200, 200);
     renderer.draw(target, camera, o);
     const Image gpu_position = target.read(1), gpu_normal = target.read(2);
@@ -143,10 +141,8 @@ int flagged_pixels(const Image& color) {
 }
 
 Image render_color(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const DrawOptions& o, int size = 160) {
-  Vec3 lo = mesh.mean(0), hi = lo;
-  for (size_t i = 1; i < mesh.n_vertices(); ++i) lo = lo.cwiseMin(mesh.mean(i)), hi = hi.cwiseMax(mesh.mean(i));
   RenderTarget target(size, size);
-  renderer.draw(target, frame_box(lo, hi, 35.0f, 25.0f), o);
+  renderer.draw(target, frame_mesh(mesh, 35.0f, 25.0f), o);
   return target.read(0);
 }
 
