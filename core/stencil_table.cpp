@@ -22,8 +22,8 @@ int StencilTableBuilder::add(const Stencil& s) {
       hash = (hash * 0x9e3779b97f4a7c15ull) ^ (size_t(index) * 31 + std::bit_cast<size_t>(weight));
       ++n_terms;
     }
-  auto& candidates = rows_by_hash_[hash ^ n_terms];
-  for (const int row : candidates) {
+  const auto chain = last_row_by_hash_.try_emplace(hash ^ n_terms, -1).first;
+  for (int row = chain->second; row >= 0; row = previous_same_hash_[size_t(row)]) {
     const int b = table_.offsets[size_t(row)], e = table_.offsets[size_t(row) + 1];
     if (e - b != int(n_terms)) continue;
     bool same = true;
@@ -43,7 +43,8 @@ int StencilTableBuilder::add(const Stencil& s) {
     table_.weights.push_back(weight);
   }
   table_.offsets.push_back(int(table_.indices.size()));
-  candidates.push_back(row);
+  previous_same_hash_.push_back(chain->second);
+  chain->second = row;
   return table_.n_base + row;
 }
 

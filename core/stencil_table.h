@@ -20,7 +20,8 @@ public:
 
 private:
   StencilTable table_;
-  std::unordered_map<size_t, std::vector<int>> rows_by_hash_;
+  std::unordered_map<size_t, int> last_row_by_hash_;  // chains through previous_same_hash_
+  std::vector<int> previous_same_hash_;               // per row: the previous row of equal hash, or −1
 };
 
 /// All points: q of the base vertices, then every row (one sparse matrix-vector product over 9D).
