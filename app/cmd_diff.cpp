@@ -9,7 +9,7 @@ namespace gps {
 
 void add_diff_command(CLI::App& app) {
   struct Args {
-    std::string a, b, output, kind = "position";
+    std::string a, b, output, kind = "auto";
     double factor = 0, threshold = 1e-3;
   };
   auto args = std::make_shared<Args>();
@@ -17,7 +17,8 @@ void add_diff_command(CLI::App& app) {
   cmd->add_option("a", args->a, "first AOV image (.exr)")->required()->check(CLI::ExistingFile);
   cmd->add_option("b", args->b, "second AOV image (.exr)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->output, "difference image (.png)")->required();
-  cmd->add_option("--kind", args->kind, "what the AOVs hold")->check(CLI::IsMember({"position", "normal"}));
+  cmd->add_option("--kind", args->kind, "what the AOVs hold (auto: from the channel names render --aov writes)")
+      ->check(CLI::IsMember({"auto", "position", "normal"}));
   cmd->add_option("--factor", args->factor, "scale of the shown difference (default 200 for position, 5000 for normal)")->check(CLI::PositiveNumber);
   cmd->add_option("--threshold", args->threshold, "count pixels whose difference exceeds this (unscaled)")->check(CLI::NonNegativeNumber);
   cmd->callback([args] {
@@ -27,6 +28,16 @@ void add_diff_command(CLI::App& app) {
       b = read_image(args->b);
     } catch (const Error& e) {
       throw usage_error(e.what());
+    }
+    if (args->kind == "auto") {
+      const auto kind_of = [](const std::string& path) {
+        const auto names = read_channel_names(path);
+        return names == kNormalChannels ? "normal" : names == kPositionChannels ? "position" : "";
+      };
+      const std::string ka = kind_of(args->a), kb = kind_of(args->b);
+      if (!ka.empty() && !kb.empty() && ka != kb)
+        throw usage_error(args->a + " holds " + ka + "s but " + args->b + " holds " + kb + "s");
+      args->kind = !ka.empty() ? ka : !kb.empty() ? kb : "position";
     }
     const AovKind kind = args->kind == "normal" ? AovKind::normal : AovKind::position;
     const double factor = args->factor > 0 ? args->factor : (kind == AovKind::normal ? 5000.0 : 200.0);

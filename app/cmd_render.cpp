@@ -85,8 +85,8 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   renderer.draw(target, camera, o);
   Image color = target.read(0);
   write_image(a.output, color);
-  if (!position_aov.empty()) write_image(position_aov, target.read(1));
-  if (!normal_aov.empty()) write_image(normal_aov, target.read(2));
+  if (!position_aov.empty()) write_image(position_aov, target.read(1), kPositionChannels);
+  if (!normal_aov.empty()) write_image(normal_aov, target.read(2), kNormalChannels);
   std::cout << "wrote " << a.output << " (" << width << "x" << height << ", " << renderer.tables().plans.n_patches() << " patches, "
             << description << ")\n";
 }

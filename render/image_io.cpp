@@ -28,7 +28,16 @@ Image read_image(const std::string& path) {
   return image;
 }
 
-void write_image(const std::string& path, const Image& image) {
+const std::vector<std::string> kPositionChannels = {"P.X", "P.Y", "P.Z", "P.coverage"};
+const std::vector<std::string> kNormalChannels = {"N.X", "N.Y", "N.Z", "N.kind"};
+
+std::vector<std::string> read_channel_names(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw Error(path + ": cannot read the image (" + OIIO::geterror().substr(0, 120) + ")");
+  return in->spec().channelnames;
+}
+
+void write_image(const std::string& path, const Image& image, const std::vector<std::string>& channel_names) {
   namespace fs = std::filesystem;
   const std::string ext = extension_of(path);
   const fs::path dir = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
@@ -40,6 +49,7 @@ void write_image(const std::string& path, const Image& image) {
   if (!out) throw Error(path + ": cannot write images of type '" + ext + "'");
   const bool is_float = ext == ".exr" || ext == ".hdr";
   OIIO::ImageSpec spec(image.width, image.height, image.channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  if (channel_names.size() == size_t(image.channels)) spec.channelnames = channel_names;
   if (!out->open(temp.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) || !out->close()) {
     fs::remove(temp, ec);
     throw Error(path + ": writing the image failed");

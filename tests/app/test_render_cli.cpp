@@ -33,6 +33,14 @@ TEST(RenderCli, RendersAovsAndDifferenceImages) {
   const auto e = run_command(gpsurf("diff " + dir.file("p.exr") + " " + dir.file("rp.exr") + " -o " + dir.file("d.png")));
   EXPECT_EQ(e.exit_code, 0) << e.output;
   EXPECT_NE(e.output.find("position difference"), std::string::npos);
+  // diff tells the AOVs apart by their channel names: normals get the normal difference, and a
+  // position buffer against a normal buffer is refused.
+  const auto n = run_command(gpsurf("diff " + dir.file("n.exr") + " " + dir.file("n.exr") + " -o " + dir.file("nn.png")));
+  EXPECT_EQ(n.exit_code, 0) << n.output;
+  EXPECT_NE(n.output.find("normal difference"), std::string::npos) << n.output;
+  const auto mixed = run_command(gpsurf("diff " + dir.file("p.exr") + " " + dir.file("n.exr") + " -o " + dir.file("pn.png")));
+  EXPECT_EQ(mixed.exit_code, 2) << mixed.output;
+  EXPECT_NE(mixed.output.find("holds positions but"), std::string::npos) << mixed.output;
   EXPECT_EQ(run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("a.png") + " --size 32x32 --pixels 4 --matcap jade")).exit_code, 0);
 }
 
