@@ -2,6 +2,8 @@
 // update of one vertex, per sample mesh at depth 3 (issue "Subdivision plans and stencil tables").
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+
 #include "core/dual_map.h"
 #include "core/plan_builder.h"
 #include "core/samples.h"
@@ -56,22 +58,29 @@ void BM_ApplyStencils(benchmark::State& state) {
   label(state, c, p);
 }
 
-void BM_UpdateOneVertex(benchmark::State& state) {
+// The k base vertices with the most dependent rows (the worst case: extraordinary vertices first),
+// re-applied incrementally; compare with BM_ApplyStencils of the same mesh.
+void BM_UpdateVertices(benchmark::State& state) {
   const Case& c = kCases[state.range(0)];
   const Prepared p = prepare(c);
   const gps::StencilDependents deps = gps::stencil_dependents(p.tables.stencils);
   std::vector<gps::Dual> points = gps::apply_stencils(p.tables.stencils, p.q);
-  const std::vector<int> changed = {int(p.mesh.n_vertices() / 2)};
+  std::vector<int> changed(p.mesh.n_vertices());
+  for (size_t v = 0; v < changed.size(); ++v) changed[v] = int(v);
+  const auto dependents = [&](int v) { return deps.offsets[size_t(v) + 1] - deps.offsets[size_t(v)]; };
+  std::stable_sort(changed.begin(), changed.end(), [&](int a, int b) { return dependents(a) > dependents(b); });
+  changed.resize(std::min(changed.size(), size_t(state.range(1))));
   for (auto _ : state) {
     gps::update_stencils(p.tables.stencils, deps, changed, points);
     benchmark::DoNotOptimize(points.data());
   }
   label(state, c, p);
+  state.counters["k"] = double(changed.size());
 }
 
 constexpr int kNumCases = int(sizeof(kCases) / sizeof(kCases[0]));
 BENCHMARK(BM_BuildPlans)->DenseRange(0, kNumCases - 1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ApplyStencils)->DenseRange(0, kNumCases - 1)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_UpdateOneVertex)->DenseRange(0, kNumCases - 1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_UpdateVertices)->ArgsProduct({{0, 1, 5, 9, 11}, {1, 4, 16, 64}})->Unit(benchmark::kMicrosecond);
 
 }  // namespace

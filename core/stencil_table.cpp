@@ -74,16 +74,31 @@ StencilDependents stencil_dependents(const StencilTable& t) {
 
 void update_stencils(const StencilTable& t, const StencilDependents& d, const std::vector<int>& changed,
                      std::vector<Dual>& points) {
-  std::vector<int> rows;
-  for (const int v : changed) rows.insert(rows.end(), d.rows.begin() + d.offsets[size_t(v)], d.rows.begin() + d.offsets[size_t(v) + 1]);
-  std::sort(rows.begin(), rows.end());
-  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-  for (const int r : rows) {
+  const auto apply_row = [&](int r) {
     Dual sum = Dual::Zero();
     for (int k = t.offsets[size_t(r)]; k < t.offsets[size_t(r) + 1]; ++k)
       sum += t.weights[size_t(k)] * points[size_t(t.indices[size_t(k)])];
     points[size_t(t.n_base + r)] = sum;
+  };
+  size_t n_dependents = 0;
+  for (const int v : changed) n_dependents += size_t(d.offsets[size_t(v) + 1] - d.offsets[size_t(v)]);
+  // Measured (bench_plans): gathering and sorting the rows costs more than re-applying the whole
+  // table once they are a sizeable part of it; then every row is re-applied.
+  if (4 * n_dependents >= size_t(t.n_rows())) {
+    for (int r = 0; r < t.n_rows(); ++r) apply_row(r);
+    return;
   }
+  if (changed.size() == 1) {  // one vertex's rows are already sorted and unique
+    const int v = changed[0];
+    for (int i = d.offsets[size_t(v)]; i < d.offsets[size_t(v) + 1]; ++i) apply_row(d.rows[size_t(i)]);
+    return;
+  }
+  std::vector<int> rows;
+  rows.reserve(n_dependents);
+  for (const int v : changed) rows.insert(rows.end(), d.rows.begin() + d.offsets[size_t(v)], d.rows.begin() + d.offsets[size_t(v) + 1]);
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  for (const int r : rows) apply_row(r);
 }
 
 }  // namespace gps

@@ -33,8 +33,9 @@ struct StencilDependents {
 };
 StencilDependents stencil_dependents(const StencilTable& table);
 
-/// Re-applies only the rows that read the changed base vertices; `points` holds every point and
-/// must already carry the changed vertices' new q in its first n_base entries.
+/// Re-applies only the rows that read the changed base vertices (all rows once those are a quarter
+/// of the table or more: faster, measured); `points` holds every point and must already carry the
+/// changed vertices' new q in its first n_base entries.
 void update_stencils(const StencilTable& table, const StencilDependents& dependents,
                      const std::vector<int>& changed_vertices, std::vector<Dual>& points);
 

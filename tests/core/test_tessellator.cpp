@@ -46,12 +46,26 @@ TEST(Tessellator, OpenMeshKeepsItsBoundaryAndNormalsPointOutward) {
   EXPECT_THROW(tessellate(cube.tables.plans, cube.points, 65), Error);
 }
 
-// After an edit of k vertices, re-applying only the dependent rows equals the full product.
-TEST(StencilTable, IncrementalUpdateEqualsFullApply) {
-  test::PlannedMesh p(make_sample("valence6"), 4);
+// After an edit of k vertices, re-applying only the dependent rows equals the full product (small
+// edits of a large table take the sparse paths, large ones re-apply the whole table).
+// Parameters: sample, size, changed vertices, whether the edit is small enough for a sparse path.
+class StencilTable : public testing::TestWithParam<std::tuple<const char*, int, std::vector<int>, bool>> {};
+
+INSTANTIATE_TEST_SUITE_P(Edits, StencilTable,
+                         testing::Values(std::tuple{"valence6", 0, std::vector<int>{0, 5, 17}, false},
+                                         std::tuple{"sphere", 2000, std::vector<int>{3}, true},
+                                         std::tuple{"sphere", 2000, std::vector<int>{0, 1, 2, 700, 1500}, false},
+                                         std::tuple{"grid", 400, std::vector<int>{0, 1, 20}, true}));
+
+TEST_P(StencilTable, IncrementalUpdateEqualsFullApply) {
+  const auto& [name, size, changed, sparse] = GetParam();
+  test::PlannedMesh p(make_sample(name, size), 4);
   const auto deps = stencil_dependents(p.tables.stencils);
+  size_t n_dependents = 0;
+  for (const int v : changed) n_dependents += size_t(deps.offsets[size_t(v) + 1] - deps.offsets[size_t(v)]);
+  EXPECT_GT(n_dependents, 0u);
+  EXPECT_EQ(4 * n_dependents < size_t(p.tables.stencils.n_rows()), sparse) << "the update path this case is meant to take";
   std::vector<Dual> points = p.points;
-  const std::vector<int> changed = {0, 5, 17};
   for (const int v : changed) {
     Mat3 c = p.mesh.covariance(size_t(v));
     c(0, 0) *= 0.01;
