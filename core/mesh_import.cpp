@@ -87,7 +87,12 @@ CovarianceMesh parse_off(const std::string& data, const std::string& source) {
     for (auto& w : words_of(line)) tokens.emplace_back(w, line_number);
   }
   size_t t = 0;
-  if (t < tokens.size() && tokens[t].first == "OFF") ++t;
+  // The keyword: OFF or a variant (COFF, NOFF, STCNOFF, ...) whose extra vertex values are skipped below.
+  if (t < tokens.size() && tokens[t].first.size() >= 3 && tokens[t].first.ends_with("OFF")) {
+    if (tokens[t].first.find("4") != std::string::npos || tokens[t].first.starts_with("n"))
+      throw Error(source + ": line " + std::to_string(tokens[t].second) + ": " + tokens[t].first + " (4D or n-dimensional OFF) is not supported");
+    ++t;
+  }
   const auto next_int = [&](const char* what) {
     if (t >= tokens.size()) throw Error(source + ": the file ends early (expected " + what + ")");
     long long v = 0;
@@ -101,13 +106,16 @@ CovarianceMesh parse_off(const std::string& data, const std::string& source) {
   if (size_t(nv) > tokens.size() || size_t(nf) > tokens.size())
     throw Error(source + ": the header declares more vertices or faces than the file holds");
   std::vector<Vec3> points(static_cast<size_t>(nv));
-  for (auto& p : points)
+  for (auto& p : points) {
     for (int k = 0; k < 3; ++k) {
       if (t >= tokens.size()) throw Error(source + ": the file ends early (truncated vertex list)");
       if (!parse_double(tokens[t].first, p[k]))
         throw Error(source + ": line " + std::to_string(tokens[t].second) + ": '" + tokens[t].first + "' is not a number");
       ++t;
     }
+    const int line = tokens[t - 1].second;
+    while (t < tokens.size() && tokens[t].second == line) ++t;  // normals, colours, texture coordinates
+  }
   std::vector<std::vector<int>> faces(static_cast<size_t>(nf));
   for (size_t f = 0; f < faces.size(); ++f) {
     const int line = t < tokens.size() ? tokens[t].second : line_number;

@@ -322,6 +322,16 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
 
 PlyContents read_ply(const std::string& path) { return parse_ply(read_text_file(path), path); }
 
+namespace {
+// Writes a scalar's bytes in little-endian order whatever the host's order.
+template <class T>
+void put_little_endian(std::ostream& out, T value) {
+  auto bytes = std::bit_cast<std::array<char, sizeof(T)>>(value);
+  if constexpr (std::endian::native == std::endian::big) std::reverse(bytes.begin(), bytes.end());
+  out.write(bytes.data(), sizeof(T));
+}
+}  // namespace
+
 void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
   out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\n"
       << "comment gpsurf covariance mesh\n"
@@ -339,7 +349,7 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
     const double values[9] = {p.x(), p.y(), p.z(), c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
     for (int k = 0; k < 9; ++k) {
       if (binary) {
-        out.write(reinterpret_cast<const char*>(&values[k]), 8);  // the host is little endian (x86-64, arm64)
+        put_little_endian(out, values[k]);
       } else {
         const auto r = std::to_chars(buffer, buffer + sizeof buffer, values[k]);
         out.write(buffer, r.ptr - buffer);
@@ -350,11 +360,11 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
   for (const auto f : m.mesh.faces()) {
     const int32_t n = static_cast<int32_t>(m.mesh.valence(f));
     if (!binary) out << n;
-    else if (wide) out.write(reinterpret_cast<const char*>(&n), 4);
+    else if (wide) put_little_endian(out, n);
     else out.put(char(static_cast<unsigned char>(n)));
     for (const auto v : m.mesh.fv_range(f)) {
       const int32_t index = v.idx();
-      if (binary) out.write(reinterpret_cast<const char*>(&index), 4);
+      if (binary) put_little_endian(out, index);
       else out << ' ' << index;
     }
     if (!binary) out << '\n';

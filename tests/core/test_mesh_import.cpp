@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Eigen/Eigenvalues>
 #include <cstring>
 
@@ -39,6 +41,31 @@ TEST(MeshImport, OffWithCommentsAndColours) {
   EXPECT_EQ(m.n_faces(), 4u);
   EXPECT_NE(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "x.off"); }).find("refers to vertex 5"), std::string::npos);
   EXPECT_NE(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n", "y.off"); }).find("truncated"), std::string::npos);
+}
+
+// COFF/NOFF carry colours or normals after each vertex position: they are skipped.
+TEST(MeshImport, OffVariantsWithPerVertexValues) {
+  const auto m = parse_off("COFF\n4 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n1 1 0 0 0 255 255\n0 1 0 9 9 9 9\n4 0 1 2 3\n", "c.off");
+  EXPECT_EQ(m.n_vertices(), 4u);
+  EXPECT_EQ(m.n_faces(), 1u);
+  EXPECT_EQ(m.mean(2), Vec3(1, 1, 0));
+  EXPECT_NE(error_of([] { parse_off("4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n", "d.off"); }).find("d.off: line 1: 4OFF"),
+            std::string::npos);
+  EXPECT_NE(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "e.off"); }).find("face 0 has fewer than 3"),
+            std::string::npos);
+}
+
+TEST(MeshImport, StlWithNonFiniteCornerIsAnError) {
+  std::string binary(84, '\0');
+  const uint32_t n = 1;
+  std::memcpy(&binary[80], &n, 4);
+  const float tri[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, std::nanf(""), 1, 0};
+  binary.append(reinterpret_cast<const char*>(tri), sizeof tri);
+  binary.append(2, '\0');
+  EXPECT_NE(error_of([&] { parse_stl(binary, "n.stl"); }).find("n.stl: triangle 0 has a corner that is not finite"), std::string::npos);
+  EXPECT_NE(error_of([] { parse_stl("solid x\nfacet normal 0 0 1\nvertex 0 0 0\nvertex 1 0 0\nendsolid\n", "t.stl"); })
+                .find("t.stl: a facet does not have three vertices"),
+            std::string::npos);
 }
 
 TEST(MeshImport, StlAsciiAndBinaryWeldCorners) {
