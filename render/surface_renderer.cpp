@@ -35,6 +35,9 @@ SurfaceRenderer::SurfaceRenderer()
       patches_(patch_program(false)),
       feedback_(patch_program(true)),
       triangles_("mesh", {{GL_VERTEX_SHADER, {shaders::mesh_vert}}, {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
+      triangles_wire_("mesh_wire", {{GL_VERTEX_SHADER, {"#define GEOMETRY_NEXT\n", shaders::mesh_vert}},
+                                    {GL_GEOMETRY_SHADER, {shaders::mesh_geom}},
+                                    {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
       lines_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}),
       ellipsoids_("ellipsoids", {{GL_VERTEX_SHADER, {shaders::ellipsoid_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
   glCreateBuffers(10, buffers_);
@@ -45,6 +48,7 @@ SurfaceRenderer::SurfaceRenderer()
   glCreateBuffers(1, &triangle_ibo_);
   glCreateBuffers(1, &lines_vbo_);
   set_matcap(make_builtin_matcap("clay"));
+  triangles_wire_.set("u_barycentric_grid", 1);
   // Three unit circles (xy, yz, zx planes) as line segments, instanced per vertex.
   std::vector<float> circles;
   const int segments = 32;
@@ -265,7 +269,8 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   glBindTextureUnit(0, matcap_);
   for (int b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
   const float aspect = float(target.width()) / float(target.height());
-  const ShaderProgram& program = o.static_triangles ? triangles_ : patches_;
+  // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
+  const ShaderProgram& program = !o.static_triangles ? patches_ : o.wireframe ? triangles_wire_ : triangles_;
   set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
   program.use();
   if (o.static_triangles) {

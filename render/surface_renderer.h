@@ -77,7 +77,7 @@ private:
 
   PlanTables tables_;
   std::vector<int> dependents_offsets_, dependents_rows_;
-  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangles_, lines_, ellipsoids_;
+  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangles_, triangles_wire_, lines_, ellipsoids_;
   unsigned buffers_[10] = {};
   size_t buffer_sizes_[10] = {};
   unsigned empty_vao_ = 0, triangle_vao_ = 0, triangle_vbo_ = 0, triangle_ibo_ = 0, lines_vao_ = 0, lines_vbo_ = 0;

@@ -10,6 +10,7 @@
 #include "core/stencil_table.h"
 #include "core/tessellator.h"
 #include "render/gl_context.h"
+#include "render/reference_triangles.h"
 #include "tests/support/plan_fixture.h"
 
 namespace gps {
@@ -192,6 +193,28 @@ TEST_F(GpuTest, EditingOneCovarianceUpdatesTheSurface) {
   }
   EXPECT_GT(changed, 200);
   EXPECT_EQ(mismatched, 0);
+}
+
+
+// --wireframe over static triangles (render --reference) draws every triangle's edges, shading
+// untouched elsewhere; without it the triangle program has no geometry shader.
+TEST_F(GpuTest, WireframeOverStaticTriangles) {
+  const CovarianceMesh mesh = make_sample("cube");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, 2);
+  renderer.set_triangles(reference_triangles(mesh, 2));
+  DrawOptions o;
+  o.static_triangles = true;
+  const Image plain = render_color(renderer, mesh, o);
+  o.wireframe = true;
+  const Image wire = render_color(renderer, mesh, o);
+  int darker = 0, brighter = 0;
+  for (size_t i = 0; i < plain.pixels.size(); i += 4) {
+    darker += wire.pixels[i] < plain.pixels[i] - 0.2f;
+    brighter += wire.pixels[i] > plain.pixels[i] + 0.02f;
+  }
+  EXPECT_GT(darker, 300);  // 96 quads' worth of triangle edges in view
+  EXPECT_EQ(brighter, 0);
 }
 
 }  // namespace
