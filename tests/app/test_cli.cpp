@@ -1,6 +1,7 @@
 // The gpsurf command line, run as a user would: exit codes 0/1/2, one-line errors, files written.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 
 #include "core/mesh_io.h"
@@ -74,6 +75,28 @@ TEST(Cli, RuntimeErrorsExitWithOneAndKeepFiles) {
   const auto loop = run_command(gpsurf("subdivide " + dir.file("cube.ply") + " -o " + keep + " --scheme loop"));
   EXPECT_EQ(loop.exit_code, 1);
   EXPECT_NE(loop.output.find("face 0 has 4 vertices"), std::string::npos) << loop.output;
+}
+
+TEST(Cli, InferAndInfoOnPlainMeshes) {
+  test::TempDir dir;
+  // Two quads, the second with all corners at one point: inference (Eq. 16) refuses it, isotropic does not.
+  const std::string obj = dir.write("strip.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 5 5 5\nv 5 5 5\nv 5 5 5\nv 5 5 5\n"
+                                                 "f 1 2 3 4\nf 5 6 7 8\n");
+  const auto inferred = run_command(gpsurf("infer " + obj + " -o " + dir.file("i.ply")));
+  EXPECT_EQ(inferred.exit_code, 1) << inferred.output;
+  EXPECT_NE(inferred.output.find("face 1 is degenerate"), std::string::npos) << inferred.output;
+  EXPECT_NE(inferred.output.find(obj), std::string::npos) << inferred.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("i.ply")));
+  const auto isotropic = run_command(gpsurf("infer " + obj + " -o " + dir.file("j.ply") + " --isotropic 0.5"));
+  EXPECT_EQ(isotropic.exit_code, 0) << isotropic.output;
+  const auto both = run_command(gpsurf("infer " + obj + " -o " + dir.file("k.ply") + " --isotropic 0.5 --bias 0.1"));
+  EXPECT_EQ(both.exit_code, 2) << both.output;
+  // info on the isotropic result: σ = 0.5 × edge length 1 on the first quad gives eigenvalue 0.25.
+  const auto info = run_command(gpsurf("info " + dir.file("j.ply")));
+  EXPECT_EQ(info.exit_code, 0) << info.output;
+  EXPECT_NE(info.output.find("faces: 2 (2 with 4 sides)"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("boundary edges: 8"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("covariance eigenvalues: "), std::string::npos) << info.output;
 }
 
 }  // namespace
