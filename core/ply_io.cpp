@@ -303,6 +303,7 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
         body.end_record();
       }
     } else {
+      if (e.properties.empty() && *format != Format::ascii) continue;  // empty binary records: nothing to skip
       for (size_t r = 0; r < e.count; ++r) {
         body.begin_record();
         for (const Property& p : e.properties) {

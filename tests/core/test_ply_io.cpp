@@ -204,6 +204,16 @@ TEST(PlyIo, CorruptListLengthsAndIndicesAreErrors) {
   }
 }
 
+// An element without properties has empty binary records: a huge count costs nothing.
+TEST(PlyIo, HugeElementWithoutPropertiesIsSkippedAtOnce) {
+  std::string ply = header("binary_little_endian", 3, 1);
+  ply.insert(ply.find("end_header"), "element nothing 1000000000000000\n");
+  ply += binary_vertices(3) + std::string("\x03", 1);
+  for (const int32_t i : {0, 1, 2}) ply.append(reinterpret_cast<const char*>(&i), 4);
+  const PlyContents c = parse_ply(ply, "empty_records.ply");
+  EXPECT_EQ(c.mesh.n_faces(), 1u);
+}
+
 // Faces with more than 255 corners do not fit the usual uchar list length: the writer widens it.
 TEST(PlyIo, RoundTripOfAFaceWithMoreThan255Corners) {
   std::vector<Vec3> p;
