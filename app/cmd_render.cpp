@@ -176,7 +176,7 @@ void run_script(const std::string& path, const std::string& context_name) {
 
 void add_render_command(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
-  auto* cmd = app.add_subcommand("render", "Render the limit surface without a display (OSMesa)");
+  auto* cmd = app.add_subcommand("render", "Render the limit surface without a display (OSMesa, or EGL with --context)");
   auto script = std::make_shared<std::string>();
   auto* input = cmd->add_option("input", a->input, "input mesh")->check(CLI::ExistingFile);
   auto* output = cmd->add_option("-o,--output", a->output, "output image (.png)");
