@@ -28,10 +28,14 @@ void infer_covariances(CovarianceMesh& m, double bias) {
     const Mat3 inv = Eigen::LLT<Mat3>(c).solve(Mat3::Identity());
     for (const auto v : m.mesh.fv_range(f)) precision[size_t(v.idx())] += inv;
   }
+  // An isolated vertex has no faces to infer from: σ = half the mesh's mean edge length.
+  double total = 0;
+  for (const auto e : m.mesh.edges()) total += m.mesh.calc_edge_length(e);
+  const double sigma = m.mesh.n_edges() && total > 0 ? 0.5 * total / double(m.mesh.n_edges()) : 1.0;
   for (size_t i = 0; i < m.n_vertices(); ++i) {
     const Eigen::LLT<Mat3> llt(precision[i]);
-    if (llt.info() != Eigen::Success) {  // an isolated vertex: keep an isotropic guess
-      m.covariances[i] = Mat3::Identity();
+    if (llt.info() != Eigen::Success) {
+      m.covariances[i] = sigma * sigma * Mat3::Identity();
       continue;
     }
     const Mat3 cov = llt.solve(Mat3::Identity());

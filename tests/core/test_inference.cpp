@@ -76,6 +76,14 @@ TEST(Inference, LargerBiasGivesRounderGaussians) {
   }
 }
 
+// A vertex in no face: isotropic, σ = half the mean edge length (here edges 1, 1 and √2).
+TEST(Inference, IsolatedVertexGetsAnIsotropicGuessAtTheMeshScale) {
+  CovarianceMesh m = plain({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {9, 9, 9}}, {{0, 1, 2}});
+  infer_covariances(m);
+  const double sigma = 0.5 * (2 + std::sqrt(2.0)) / 3;
+  EXPECT_LT(relative_error(m.covariance(3), sigma * sigma * Mat3::Identity()), 1e-12);
+}
+
 TEST(Inference, DegenerateFaceAndBadBiasAreErrors) {
   CovarianceMesh m = plain({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
   EXPECT_THROW(infer_covariances(m, -1.0), Error);
