@@ -134,7 +134,11 @@ CovarianceMesh parse_off(const std::string& data, const std::string& source) {
 CovarianceMesh parse_stl(const std::string& data, const std::string& source) {
   if (data.empty()) throw Error(source + ": the file is empty");
   std::vector<Vec3> corners;
-  const bool looks_ascii = data.compare(0, 5, "solid") == 0 && data.find("facet") != std::string::npos;
+  // Some binary STL headers start with "solid" too: a size matching the triangle count means binary.
+  uint32_t declared = 0;
+  if (data.size() >= 84) std::memcpy(&declared, data.data() + 80, 4);
+  const bool binary_size = data.size() >= 84 && data.size() == 84 + size_t(declared) * 50;
+  const bool looks_ascii = !binary_size && data.compare(0, 5, "solid") == 0 && data.find("facet") != std::string::npos;
   if (!looks_ascii) {
     if (data.size() < 84) throw Error(source + ": binary STL shorter than its 84-byte header (truncated)");
     uint32_t n = 0;

@@ -55,6 +55,20 @@ TEST(MeshImport, OffVariantsWithPerVertexValues) {
             std::string::npos);
 }
 
+// A binary STL whose header starts with "solid" and mentions "facet" is still read as binary.
+TEST(MeshImport, BinaryStlWithSolidHeader) {
+  std::string binary = "solid exported by a tool that writes facet in the header";
+  binary.resize(80, ' ');
+  const uint32_t n = 1;
+  binary.append(reinterpret_cast<const char*>(&n), 4);
+  const float tri[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0};
+  binary.append(reinterpret_cast<const char*>(tri), sizeof tri);
+  binary.append(2, '\0');
+  const auto m = parse_stl(binary, "s.stl");
+  EXPECT_EQ(m.n_vertices(), 3u);
+  EXPECT_EQ(m.n_faces(), 1u);
+}
+
 TEST(MeshImport, StlWithNonFiniteCornerIsAnError) {
   std::string binary(84, '\0');
   const uint32_t n = 1;
