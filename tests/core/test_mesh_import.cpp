@@ -55,6 +55,20 @@ TEST(MeshImport, OffVariantsWithPerVertexValues) {
             std::string::npos);
 }
 
+// write_mesh(.obj) then read_mesh: positions exact (17 significant digits), faces in order.
+TEST(MeshImport, ObjRoundTripKeepsPositionsExactly) {
+  test::TempDir dir;
+  CovarianceMesh m = make_covariance_mesh({{0.1, 1.0 / 3, -2e-7}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e30}},
+                                          std::vector<Mat3>(4, Mat3::Identity()), {{0, 1, 2, 3}}, "q");
+  write_mesh(dir.file("q.obj"), m);
+  const CovarianceMesh r = read_mesh(dir.file("q.obj"), {ImportOptions::Covariance::isotropic});
+  ASSERT_EQ(r.n_vertices(), 4u);
+  for (size_t i = 0; i < 4; ++i) EXPECT_EQ(r.mean(i), m.mean(i));
+  std::vector<int> face;
+  for (const auto v : r.mesh.fv_range(PolyMesh::FaceHandle(0))) face.push_back(v.idx());
+  EXPECT_EQ(face, (std::vector<int>{0, 1, 2, 3}));
+}
+
 // A binary STL whose header starts with "solid" and mentions "facet" is still read as binary.
 TEST(MeshImport, BinaryStlWithSolidHeader) {
   std::string binary = "solid exported by a tool that writes facet in the header";
