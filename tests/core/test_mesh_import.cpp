@@ -6,6 +6,8 @@
 
 #include <Eigen/Eigenvalues>
 #include <cstring>
+#include <functional>
+#include <random>
 
 #include "core/error.h"
 #include "core/inference.h"
@@ -143,6 +145,37 @@ TEST(Inference, PlanarMeshGivesFlatCovariancesAlongTheNormal) {
     }
   }
   EXPECT_THROW(infer_covariances(m, 0.0), Error);
+}
+
+// Truncations and single-byte corruptions of OBJ, OFF and STL either read or give a one-line gps::Error.
+TEST(MeshImport, CorruptedFilesNeverCrash) {
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nf 1 2 3 4\nf 1 5 2\nf -1 -4 -3\n";
+  const std::string off = "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n4 0 1 2 3\n3 0 4 1\n3 4 0 3\n";
+  std::string stl(80, ' ');
+  const uint32_t n = 2;
+  stl.append(reinterpret_cast<const char*>(&n), 4);
+  const float tris[2][12] = {{0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 0}};
+  for (const auto& t : tris) stl.append(reinterpret_cast<const char*>(t), sizeof t).append(2, '\0');
+  std::mt19937 rng(3);
+  const auto survives = [](const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    }
+  };
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string a = obj, b = off, c = stl;
+    a[rng() % a.size()] = "0123456789 -/.fv\n"[rng() % 17];
+    b[rng() % b.size()] = "0123456789 -.#\n"[rng() % 15];
+    c[84 + rng() % (c.size() - 84)] = char(rng());
+    survives([&] { parse_obj(a, "a.obj"); });
+    survives([&] { parse_off(b, "b.off"); });
+    survives([&] { parse_stl(c, "c.stl"); });
+    survives([&] { parse_obj(obj.substr(0, rng() % obj.size()), "a.obj"); });
+    survives([&] { parse_off(off.substr(0, rng() % off.size()), "b.off"); });
+    survives([&] { parse_stl(stl.substr(0, rng() % stl.size()), "c.stl"); });
+  }
 }
 
 }  // namespace
