@@ -137,7 +137,7 @@ void SurfaceRenderer::upload_gaussians(const CovarianceMesh& mesh) {
     const double values[9] = {m.x(), m.y(), m.z(), c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
     std::copy(values, values + 9, g.begin() + long(9 * i));
   }
-  upload_ellipsoids(mesh);
+  upload_ellipsoids(mesh, nullptr);
   if (buffer_sizes_[kGaussians] == std::max<size_t>(sizeof(float), g.size() * sizeof(float)))
     glNamedBufferSubData(buffers_[kGaussians], 0, GLsizeiptr(g.size() * sizeof(float)), g.data());
   else
@@ -152,22 +152,35 @@ void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vec
                              float(c(0, 2)), float(c(1, 1)), float(c(1, 2)), float(c(2, 2))};
     glNamedBufferSubData(buffers_[kGaussians], GLintptr(9 * sizeof(float) * size_t(v)), sizeof values, values);
   }
-  upload_ellipsoids(mesh);
+  upload_ellipsoids(mesh, &changed);
   run_compute(&changed);
 }
 
-void SurfaceRenderer::upload_ellipsoids(const CovarianceMesh& mesh) {
-  ellipsoid_transforms_.assign(mesh.n_vertices() * 16, 0.0f);
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
-    // Σ = V D Vᵀ; the unit sphere maps to the 1-σ ellipsoid by V D^½.
+void SurfaceRenderer::upload_ellipsoids(const CovarianceMesh& mesh, const std::vector<int>* changed) {
+  // Σ = V D Vᵀ; the unit sphere maps to the 1-σ ellipsoid by [V D^½ | μ] (column-major mat4).
+  const auto transform = [&mesh](size_t i, float* m) {
     const Eigen::SelfAdjointEigenSolver<Mat3> eig(mesh.covariance(i));
     const Mat3 root = eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
-    float* m = &ellipsoid_transforms_[16 * i];
-    for (int c = 0; c < 3; ++c)
+    for (int c = 0; c < 3; ++c) {
       for (int r = 0; r < 3; ++r) m[4 * c + r] = float(root(r, c));
+      m[4 * c + 3] = 0.0f;
+    }
     const Vec3 mu = mesh.mean(i);
     m[12] = float(mu.x()), m[13] = float(mu.y()), m[14] = float(mu.z()), m[15] = 1.0f;
+  };
+  if (changed) {  // an edit: only the changed vertices' instances
+    for (const int v : *changed) {
+      float m[16];
+      transform(size_t(v), m);
+      glNamedBufferSubData(ellipsoid_vbo_, GLintptr(sizeof m * size_t(v)), sizeof m, m);
+    }
+    return;
   }
+  std::vector<float> all(std::max<size_t>(1, mesh.n_vertices()) * 16, 0.0f);
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) transform(i, &all[16 * i]);
+  glNamedBufferData(ellipsoid_vbo_, GLsizeiptr(all.size() * sizeof(float)), all.data(), GL_DYNAMIC_DRAW);
+  glVertexArrayVertexBuffer(ellipsoid_vao_, 1, ellipsoid_vbo_, 0, 16 * sizeof(float));
+  ellipsoid_count_ = int(mesh.n_vertices());
 }
 
 void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
@@ -279,18 +292,13 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   } else {
     draw_patches(program, o);
   }
-  if (o.ellipsoids && !ellipsoid_transforms_.empty()) {
-    // k-σ: scale the columns of Σ^½, keep the translation.
-    std::vector<float> scaled = ellipsoid_transforms_;
-    for (size_t i = 0; i < scaled.size(); i += 16)
-      for (int k = 0; k < 12; ++k) scaled[i + size_t(k)] *= o.sigma_scale;
-    glNamedBufferData(ellipsoid_vbo_, GLsizeiptr(scaled.size() * sizeof(float)), scaled.data(), GL_STREAM_DRAW);
-    glVertexArrayVertexBuffer(ellipsoid_vao_, 1, ellipsoid_vbo_, 0, 16 * sizeof(float));
+  if (o.ellipsoids && ellipsoid_count_ > 0) {
     ellipsoids_.set("u_view_projection", camera.view_projection(aspect));
+    ellipsoids_.set("u_sigma", o.sigma_scale);
     ellipsoids_.set("u_color", glm::vec4(0.15f, 0.35f, 0.85f, 1.0f));
     ellipsoids_.use();
     glBindVertexArray(ellipsoid_vao_);
-    glDrawArraysInstanced(GL_LINES, 0, circle_vertex_count_, GLsizei(scaled.size() / 16));
+    glDrawArraysInstanced(GL_LINES, 0, circle_vertex_count_, ellipsoid_count_);
   }
   if (o.mesh_lines && line_vertex_count_ > 0) {
     lines_.set("u_view_projection", camera.view_projection(aspect));

@@ -69,7 +69,7 @@ public:
 
 private:
   void upload_gaussians(const CovarianceMesh& mesh);
-  void upload_ellipsoids(const CovarianceMesh& mesh);
+  void upload_ellipsoids(const CovarianceMesh& mesh, const std::vector<int>* changed);
   void run_compute(const std::vector<int>* changed);
   void draw_patches(const ShaderProgram& program, const DrawOptions& options) const;
   void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& options, float aspect, int width,
@@ -84,7 +84,7 @@ private:
   int triangle_count_ = 0, line_vertex_count_ = 0;
   unsigned ellipsoid_vao_ = 0, circle_vbo_ = 0, ellipsoid_vbo_ = 0;
   int circle_vertex_count_ = 0;
-  std::vector<float> ellipsoid_transforms_;  // per vertex: 16 floats, μ + Σ^½ (k applied in draw)
+  int ellipsoid_count_ = 0;  // instances in ellipsoid_vbo_: per vertex a mat4 [Σ^½ | μ] (k-σ in the shader)
   unsigned matcap_ = 0;
   int n_base_ = 0;
 };

@@ -217,5 +217,34 @@ TEST_F(GpuTest, WireframeOverStaticTriangles) {
   EXPECT_EQ(brighter, 0);
 }
 
+
+// Ellipsoid instances follow an edit (only the changed vertex is re-uploaded) and the k-σ scale.
+TEST_F(GpuTest, EllipsoidsFollowEditsAndSigma) {
+  CovarianceMesh mesh = make_sample("cube");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, 2);
+  DrawOptions o;
+  o.ellipsoids = true;
+  o.sigma_scale = 1.5f;
+  const Image before = render_color(renderer, mesh, o);
+  mesh.covariances[6] *= 9.0;  // three times the radii
+  renderer.update_vertices(mesh, {6});
+  const Image edited = render_color(renderer, mesh, o);
+  SurfaceRenderer rebuilt;
+  rebuilt.set_mesh(mesh, 2);
+  const Image fresh = render_color(rebuilt, mesh, o);
+  o.sigma_scale = 3.0f;
+  const Image wider = render_color(rebuilt, mesh, o);
+  int changed = 0, mismatched = 0, widened = 0;
+  for (size_t i = 0; i < before.pixels.size(); ++i) {
+    changed += std::abs(before.pixels[i] - edited.pixels[i]) > 0.02f;
+    mismatched += std::abs(fresh.pixels[i] - edited.pixels[i]) > 0.02f;
+    widened += std::abs(fresh.pixels[i] - wider.pixels[i]) > 0.02f;
+  }
+  EXPECT_GT(changed, 50);
+  EXPECT_EQ(mismatched, 0);
+  EXPECT_GT(widened, 50);
+}
+
 }  // namespace
 }  // namespace gps
