@@ -5,6 +5,7 @@ packages=(
   cmake g++ ninja-build pkg-config python3-glad
   libopenmesh-dev libeigen3-dev libglm-dev libopenimageio-dev openimageio-tools
   libglfw3-dev libosmesa6-dev libegl-dev libgl-dev libimgui-dev
+  libgl1-mesa-dri libglx-mesa0 libegl-mesa0
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth fonts-dejavu-core
 )
