@@ -122,11 +122,19 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
     means[i] = g->mean;
     covariances[i] = g->covariance;
   }
-  std::vector<std::vector<int>> faces(size_t(t.n_faces()));
-  for (int f = 0; f < t.n_faces(); ++f)
-    faces[size_t(f)].assign(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
+  // The refinement of a valid manifold mesh is manifold: build the OpenMesh directly, without the
+  // per-face vectors and manifold checks of make_covariance_mesh().
   SubdivisionResult result;
-  result.mesh = make_covariance_mesh(means, covariances, faces, "subdivided mesh");
+  PolyMesh& out = result.mesh.mesh;
+  out.reserve(means.size(), t.verts.size(), size_t(t.n_faces()));
+  for (const Vec3& m : means) out.add_vertex(to_point(m));
+  std::vector<PolyMesh::VertexHandle> fv;
+  for (int f = 0; f < t.n_faces(); ++f) {
+    fv.clear();
+    for (int i = t.offsets[size_t(f)]; i < t.offsets[size_t(f) + 1]; ++i) fv.emplace_back(t.verts[size_t(i)]);
+    if (!out.add_face(fv).is_valid()) throw Error("subdivided mesh: face " + std::to_string(f) + " could not be added");
+  }
+  result.mesh.covariances = std::move(covariances);
   if (cc) result.vertex_params = vertex_params_of(t, params);
   return result;
 }
