@@ -34,22 +34,35 @@ void fill_rows(int n_keys, const std::vector<std::pair<int, int>>& pairs, std::v
 MeshConnectivity connectivity_of(const PolygonTopology& t) {
   MeshConnectivity c;
   const size_t n_corners = t.verts.size();
-  // Half-edges keyed by (min, max) vertex pair, sorted to pair them into edges.
+  // Half-edges keyed by (min, max) vertex pair, sorted to pair them into edges: a counting sort by
+  // the smaller vertex, then an insertion sort of each (small) bucket by the larger one — linear time.
   struct HalfEdge {
     long long key;
     int face, corner;
   };
-  std::vector<HalfEdge> halves;
-  halves.reserve(n_corners);
+  std::vector<int> bucket(size_t(t.n_vertices) + 1, 0);
   for (int f = 0; f < t.n_faces(); ++f) {
     const int begin = t.offsets[size_t(f)], n = t.face_size(f);
-    for (int k = 0; k < n; ++k) {
-      const int a = t.verts[size_t(begin + k)], b = t.verts[size_t(begin + (k + 1) % n)];
-      const long long key = (long long)std::min(a, b) * t.n_vertices + std::max(a, b);
-      halves.push_back({key, f, begin + k});
+    for (int k = 0; k < n; ++k)
+      ++bucket[size_t(std::min(t.verts[size_t(begin + k)], t.verts[size_t(begin + (k + 1) % n)])) + 1];
+  }
+  for (int v = 0; v < t.n_vertices; ++v) bucket[size_t(v) + 1] += bucket[size_t(v)];
+  std::vector<HalfEdge> halves(n_corners);
+  {
+    std::vector<int> next(bucket.begin(), bucket.end() - 1);
+    for (int f = 0; f < t.n_faces(); ++f) {
+      const int begin = t.offsets[size_t(f)], n = t.face_size(f);
+      for (int k = 0; k < n; ++k) {
+        const int a = t.verts[size_t(begin + k)], b = t.verts[size_t(begin + (k + 1) % n)];
+        const long long key = (long long)std::min(a, b) * t.n_vertices + std::max(a, b);
+        halves[size_t(next[size_t(std::min(a, b))]++)] = {key, f, begin + k};
+      }
     }
   }
-  std::sort(halves.begin(), halves.end(), [](const HalfEdge& x, const HalfEdge& y) { return x.key < y.key; });
+  for (int v = 0; v < t.n_vertices; ++v)
+    for (int i = bucket[size_t(v)] + 1; i < bucket[size_t(v) + 1]; ++i)
+      for (int j = i; j > bucket[size_t(v)] && halves[size_t(j - 1)].key > halves[size_t(j)].key; --j)
+        std::swap(halves[size_t(j - 1)], halves[size_t(j)]);
   c.face_edges.assign(n_corners, -1);
   for (size_t i = 0; i < halves.size();) {
     const int e = c.n_edges();
