@@ -47,6 +47,12 @@ SurfaceRenderer::SurfaceRenderer()
   glCreateBuffers(1, &triangle_vbo_);
   glCreateBuffers(1, &triangle_ibo_);
   glCreateBuffers(1, &lines_vbo_);
+  glCreateBuffers(1, &lines_ibo_);
+  glVertexArrayVertexBuffer(lines_vao_, 0, lines_vbo_, 0, 3 * sizeof(float));
+  glVertexArrayElementBuffer(lines_vao_, lines_ibo_);
+  glEnableVertexArrayAttrib(lines_vao_, 0);
+  glVertexArrayAttribFormat(lines_vao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(lines_vao_, 0, 0);
   set_matcap(make_builtin_matcap("clay"));
   triangles_wire_.set("u_barycentric_grid", 1);
   // Three unit circles (xy, yz, zx planes) as line segments, instanced per vertex.
@@ -87,6 +93,7 @@ SurfaceRenderer::~SurfaceRenderer() {
   glDeleteBuffers(1, &triangle_vbo_);
   glDeleteBuffers(1, &triangle_ibo_);
   glDeleteBuffers(1, &lines_vbo_);
+  glDeleteBuffers(1, &lines_ibo_);
   glDeleteVertexArrays(1, &ellipsoid_vao_);
   glDeleteBuffers(1, &circle_vbo_);
   glDeleteBuffers(1, &ellipsoid_vbo_);
@@ -115,17 +122,16 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, int depth) {
   upload(buffers_[kCorners], buffer_sizes_[kCorners], tables_.plans.patch_corner_points);
   upload(buffers_[kPoints], buffer_sizes_[kPoints], std::vector<float>(size_t(s.n_points()) * 12, 0.0f));
   upload_gaussians(mesh);
-  // Base mesh lines.
-  std::vector<float> lines;
-  for (const auto e : mesh.mesh.edges())
-    for (const auto v : {e.v0(), e.v1()})
-      for (int k = 0; k < 3; ++k) lines.push_back(float(mesh.mesh.point(v)[k]));
-  line_vertex_count_ = int(lines.size() / 3);
-  glNamedBufferData(lines_vbo_, GLsizeiptr(std::max<size_t>(1, lines.size()) * sizeof(float)), lines.data(), GL_STATIC_DRAW);
-  glVertexArrayVertexBuffer(lines_vao_, 0, lines_vbo_, 0, 3 * sizeof(float));
-  glEnableVertexArrayAttrib(lines_vao_, 0);
-  glVertexArrayAttribFormat(lines_vao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(lines_vao_, 0, 0);
+  // Base mesh lines: the vertex positions (updated by edits) and each edge as a pair of indices.
+  std::vector<float> positions(3 * mesh.n_vertices());
+  for (size_t i = 0; i < mesh.n_vertices(); ++i)
+    for (int k = 0; k < 3; ++k) positions[3 * i + size_t(k)] = float(mesh.mean(i)[k]);
+  std::vector<unsigned> edges;
+  edges.reserve(2 * mesh.mesh.n_edges());
+  for (const auto e : mesh.mesh.edges()) edges.insert(edges.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
+  line_index_count_ = int(edges.size());
+  glNamedBufferData(lines_vbo_, GLsizeiptr(std::max<size_t>(3, positions.size()) * sizeof(float)), positions.data(), GL_DYNAMIC_DRAW);
+  glNamedBufferData(lines_ibo_, GLsizeiptr(std::max<size_t>(2, edges.size()) * sizeof(unsigned)), edges.data(), GL_STATIC_DRAW);
   run_compute(nullptr);
 }
 
@@ -151,6 +157,7 @@ void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vec
     const float values[9] = {float(m.x()), float(m.y()), float(m.z()), float(c(0, 0)), float(c(0, 1)),
                              float(c(0, 2)), float(c(1, 1)), float(c(1, 2)), float(c(2, 2))};
     glNamedBufferSubData(buffers_[kGaussians], GLintptr(9 * sizeof(float) * size_t(v)), sizeof values, values);
+    glNamedBufferSubData(lines_vbo_, GLintptr(3 * sizeof(float) * size_t(v)), 3 * sizeof(float), values);
   }
   upload_ellipsoids(mesh, &changed);
   run_compute(&changed);
@@ -184,6 +191,7 @@ void SurfaceRenderer::upload_ellipsoids(const CovarianceMesh& mesh, const std::v
 }
 
 void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
+  const GpuPassScope pass(timer_, "9D + stencils");
   const int n_rows = tables_.stencils.n_rows();
   for (int b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
   int vertex_count = n_base_, row_count = n_rows;
@@ -268,31 +276,58 @@ void SurfaceRenderer::set_frame_uniforms(const ShaderProgram& p, const Camera& c
   p.set("u_wire_color", glm::vec4(0.1f, 0.1f, 0.15f, o.wireframe ? 0.85f : 0.0f));
 }
 
+void SurfaceRenderer::set_collect_statistics(bool collect) {
+  if (!collect) {
+    statistics_.reset();
+  } else if (!statistics_) {
+    std::vector<unsigned> targets = {GL_PRIMITIVES_GENERATED};
+    if (GLAD_GL_ARB_pipeline_statistics_query) targets.push_back(GL_TESS_EVALUATION_SHADER_INVOCATIONS_ARB);
+    statistics_ = std::make_unique<QueryRing>(targets, 4);
+  }
+}
+
+DrawStatistics SurfaceRenderer::last_statistics() {
+  if (statistics_)
+    if (const auto& counts = statistics_->latest()) {
+      last_statistics_.triangles = (long long)(*counts)[0];
+      last_statistics_.vertices = counts->size() > 1 ? (long long)(*counts)[1] : 0;
+    }
+  if (!GLAD_GL_ARB_pipeline_statistics_query) last_statistics_.vertices = -1;
+  last_statistics_.patches = tables_.plans.n_patches();
+  return last_statistics_;
+}
+
 void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, const DrawOptions& o) {
-  target.bind();
-  const float clear_color[4] = {o.background.r, o.background.g, o.background.b, 1.0f};
-  const float clear_zero[4] = {0, 0, 0, 0};
-  glClearBufferfv(GL_COLOR, 0, clear_color);
-  glClearBufferfv(GL_COLOR, 1, clear_zero);
-  glClearBufferfv(GL_COLOR, 2, clear_zero);
-  const float far_depth = 1.0f;
-  glClearBufferfv(GL_DEPTH, 0, &far_depth);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glBindTextureUnit(0, matcap_);
-  for (int b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
   const float aspect = float(target.width()) / float(target.height());
-  // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
-  const ShaderProgram& program = !o.static_triangles ? patches_ : o.wireframe ? triangles_wire_ : triangles_;
-  set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
-  program.use();
-  if (o.static_triangles) {
-    glBindVertexArray(triangle_vao_);
-    glDrawElements(GL_TRIANGLES, 3 * triangle_count_, GL_UNSIGNED_INT, nullptr);
-  } else {
-    draw_patches(program, o);
+  {
+    const GpuPassScope pass(timer_, "surface");
+    target.bind();
+    const float clear_color[4] = {o.background.r, o.background.g, o.background.b, 1.0f};
+    const float clear_zero[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, clear_color);
+    glClearBufferfv(GL_COLOR, 1, clear_zero);
+    glClearBufferfv(GL_COLOR, 2, clear_zero);
+    const float far_depth = 1.0f;
+    glClearBufferfv(GL_DEPTH, 0, &far_depth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glBindTextureUnit(0, matcap_);
+    for (int b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+    // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
+    const ShaderProgram& program = !o.static_triangles ? patches_ : o.wireframe ? triangles_wire_ : triangles_;
+    set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
+    program.use();
+    if (o.static_triangles) {
+      glBindVertexArray(triangle_vao_);
+      glDrawElements(GL_TRIANGLES, 3 * triangle_count_, GL_UNSIGNED_INT, nullptr);
+    } else {
+      if (statistics_) statistics_->begin();
+      draw_patches(program, o);
+      if (statistics_) statistics_->end();
+    }
   }
   if (o.ellipsoids && ellipsoid_count_ > 0) {
+    const GpuPassScope pass(timer_, "ellipsoids");
     ellipsoids_.set("u_view_projection", camera.view_projection(aspect));
     ellipsoids_.set("u_sigma", o.sigma_scale);
     ellipsoids_.set("u_color", glm::vec4(0.15f, 0.35f, 0.85f, 1.0f));
@@ -300,7 +335,8 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glBindVertexArray(ellipsoid_vao_);
     glDrawArraysInstanced(GL_LINES, 0, circle_vertex_count_, ellipsoid_count_);
   }
-  if (o.mesh_lines && line_vertex_count_ > 0) {
+  if (o.mesh_lines && line_index_count_ > 0) {
+    const GpuPassScope pass(timer_, "mesh lines");
     lines_.set("u_view_projection", camera.view_projection(aspect));
     lines_.set("u_color", glm::vec4(0.45f, 0.45f, 0.45f, 1.0f));
     lines_.use();
@@ -308,7 +344,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     const GLenum only_colour[3] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE};
     glNamedFramebufferDrawBuffers(target.framebuffer(), 3, only_colour);
     glBindVertexArray(lines_vao_);
-    glDrawArrays(GL_LINES, 0, line_vertex_count_);
+    glDrawElements(GL_LINES, line_index_count_, GL_UNSIGNED_INT, nullptr);
     const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
     glNamedFramebufferDrawBuffers(target.framebuffer(), 3, all);
     glEnable(GL_DEPTH_TEST);

@@ -10,7 +10,9 @@
 #include "core/plan_builder.h"
 #include "core/triangle_mesh.h"
 #include "render/camera.h"
+#include "render/gpu_pass_timer.h"
 #include "render/image_io.h"
+#include "render/query_ring.h"
 #include "render/render_target.h"
 #include "render/shader_program.h"
 
@@ -39,6 +41,13 @@ struct TessellatedVertex {
   float normal[3];
 };
 
+/// What the patch draws produced (pipeline-statistics queries; see SurfaceRenderer::set_collect_statistics).
+struct DrawStatistics {
+  long long triangles = 0;  // primitives the tessellator generated
+  long long vertices = 0;   // tessellation evaluation shader invocations; -1 without ARB_pipeline_statistics_query
+  int patches = 0;          // patches of the plan
+};
+
 class SurfaceRenderer {
 public:
   /// Needs a current GL 4.5 context.
@@ -61,6 +70,15 @@ public:
   /// The vertices the tessellator generates for `options` (no rasterisation).
   std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, float aspect);
 
+  /// Times the compute passes ("9D + stencils") and each drawn layer ("surface", "ellipsoids",
+  /// "mesh lines") into `timer`; nullptr (the default) times nothing.
+  void set_pass_timer(GpuPassTimer* timer) { timer_ = timer; }
+  /// Counts triangles and vertices of each patch draw (off by default: headless renders pay nothing).
+  void set_collect_statistics(bool collect);
+  /// The figures of the newest patch draw whose queries finished: drawing every frame, they lag a
+  /// frame or two (the queries are never waited for). Zero counts before any finished.
+  DrawStatistics last_statistics();
+
   const PlanTables& tables() const { return tables_; }
   /// The plan points as the compute passes left them (12 floats each: q in three vec4).
   std::vector<float> read_points() const;
@@ -80,13 +98,17 @@ private:
   ShaderProgram dual_map_, stencil_, patches_, feedback_, triangles_, triangles_wire_, lines_, ellipsoids_;
   unsigned buffers_[10] = {};
   size_t buffer_sizes_[10] = {};
-  unsigned empty_vao_ = 0, triangle_vao_ = 0, triangle_vbo_ = 0, triangle_ibo_ = 0, lines_vao_ = 0, lines_vbo_ = 0;
-  int triangle_count_ = 0, line_vertex_count_ = 0;
+  unsigned empty_vao_ = 0, triangle_vao_ = 0, triangle_vbo_ = 0, triangle_ibo_ = 0;
+  unsigned lines_vao_ = 0, lines_vbo_ = 0, lines_ibo_ = 0;  // base vertex positions, edges as index pairs
+  int triangle_count_ = 0, line_index_count_ = 0;
   unsigned ellipsoid_vao_ = 0, circle_vbo_ = 0, ellipsoid_vbo_ = 0;
   int circle_vertex_count_ = 0;
   int ellipsoid_count_ = 0;  // instances in ellipsoid_vbo_: per vertex a mat4 [Σ^½ | μ] (k-σ in the shader)
   unsigned matcap_ = 0;
   int n_base_ = 0;
+  GpuPassTimer* timer_ = nullptr;
+  std::unique_ptr<QueryRing> statistics_;  // set while collecting statistics
+  DrawStatistics last_statistics_;
 };
 
 }  // namespace gps

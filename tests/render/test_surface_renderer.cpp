@@ -3,13 +3,17 @@
 
 #include <gtest/gtest.h>
 
+#include <glad/gl.h>
+
 #include <cmath>
+#include <tuple>
 
 #include "core/patch_eval.h"
 #include "core/samples.h"
 #include "core/stencil_table.h"
 #include "core/tessellator.h"
 #include "render/gl_context.h"
+#include "render/picking.h"
 #include "render/reference_triangles.h"
 #include "tests/support/plan_fixture.h"
 
@@ -244,6 +248,100 @@ TEST_F(GpuTest, EllipsoidsFollowEditsAndSigma) {
   EXPECT_GT(changed, 50);
   EXPECT_EQ(mismatched, 0);
   EXPECT_GT(widened, 50);
+}
+
+// Quads at a uniform integer level L with equal spacing: L×L cells, 2·L² triangles per patch.
+TEST_F(GpuTest, StatisticsCountTheTessellatedTriangles) {
+  for (const auto& [name, size, level] : {std::tuple{"cube", 0, 4}, std::tuple{"sphere", 500, 16}}) {
+    const CovarianceMesh mesh = make_sample(name, size);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(mesh, 3);
+    DrawOptions o;
+    o.level = float(level);
+    render_color(renderer, mesh, o, 64);
+    glFinish();
+    EXPECT_EQ(renderer.last_statistics().triangles, 0) << name << ": statistics are off by default";
+    renderer.set_collect_statistics(true);
+    for (int frame = 0; frame < 2; ++frame) render_color(renderer, mesh, o, 64);
+    glFinish();
+    const DrawStatistics s = renderer.last_statistics();
+    const long long patches = renderer.tables().plans.n_patches();
+    EXPECT_EQ(s.patches, patches) << name;
+    EXPECT_EQ(s.triangles, patches * 2 * level * level) << name;
+    if (GLAD_GL_ARB_pipeline_statistics_query)
+      EXPECT_GT(s.vertices, 0) << name;
+    else
+      EXPECT_EQ(s.vertices, -1) << name;
+    std::printf("%s: %d patches at level %d: %lld triangles, %lld evaluation shader invocations\n", name, s.patches, level,
+                s.triangles, s.vertices);
+  }
+}
+
+// The base-mesh lines follow an edit that moves a vertex: the lines meet where the vertex now
+// projects, exactly as for a renderer built for the edited mesh.
+TEST_F(GpuTest, MeshLinesFollowAMovedVertex) {
+  CovarianceMesh mesh = make_sample("cube");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, 2);
+  const Camera camera = frame_box(Vec3(-3, -3, -3), Vec3(3, 3, 3), 35.0f, 25.0f);
+  DrawOptions o;
+  o.mesh_lines = true;
+  o.level = 2;
+  RenderTarget target(200, 200);
+  renderer.draw(target, camera, o);
+  const Image before = target.read(0);
+  mesh.set_mean(6, Vec3(1.0, 3.2, 1.0));  // (1, 1, 1) moved far up, clear of the surface
+  renderer.update_vertices(mesh, {6});
+  renderer.draw(target, camera, o);
+  const Image edited = target.read(0);
+  const auto p = project_to_pixel(camera, 200, 200, glm::vec3(1.0f, 3.2f, 1.0f));
+  ASSERT_TRUE(p.has_value());
+  const int px = int(p->x), py = int(p->y);
+  ASSERT_TRUE(px > 1 && py > 1 && px < 198 && py < 198);
+  const auto line_near = [&](const Image& im) {
+    int n = 0;
+    for (int y = py - 1; y <= py + 1; ++y)
+      for (int x = px - 1; x <= px + 1; ++x)
+        n += std::abs(im.at(x, y, 0) - 0.45f) < 0.03f && std::abs(im.at(x, y, 2) - 0.45f) < 0.03f;
+    return n;
+  };
+  EXPECT_EQ(line_near(before), 0);
+  EXPECT_GE(line_near(edited), 2);
+  SurfaceRenderer rebuilt;
+  rebuilt.set_mesh(mesh, 2);
+  rebuilt.draw(target, camera, o);
+  const Image fresh = target.read(0);
+  int mismatched = 0;
+  for (size_t i = 0; i < fresh.pixels.size(); ++i) mismatched += std::abs(fresh.pixels[i] - edited.pixels[i]) > 0.02f;
+  EXPECT_EQ(mismatched, 0);
+}
+
+// With a pass timer the compute passes and each drawn layer are timed, in the order first run;
+// layers not drawn are not reported.
+TEST_F(GpuTest, PassTimerSeesComputeAndEachDrawnLayer) {
+  const CovarianceMesh mesh = make_sample("cube");
+  SurfaceRenderer renderer;
+  GpuPassTimer timer;
+  renderer.set_pass_timer(&timer);
+  renderer.set_mesh(mesh, 2);
+  DrawOptions o;
+  o.mesh_lines = true;
+  render_color(renderer, mesh, o, 64);
+  glFinish();
+  const auto names = [&timer] {
+    std::vector<std::string> out;
+    for (const auto& [name, ms] : timer.latest()) {
+      EXPECT_TRUE(std::isfinite(ms) && ms >= 0.0) << name;
+      out.push_back(name);
+    }
+    return out;
+  };
+  EXPECT_EQ(names(), (std::vector<std::string>{"9D + stencils", "surface", "mesh lines"}));
+  o.ellipsoids = true;
+  render_color(renderer, mesh, o, 64);
+  glFinish();
+  EXPECT_EQ(names(), (std::vector<std::string>{"9D + stencils", "surface", "mesh lines", "ellipsoids"}));
+  renderer.set_pass_timer(nullptr);
 }
 
 }  // namespace
