@@ -11,6 +11,9 @@ struct Image {
   float at(int x, int y, int c) const { return pixels[(size_t(y) * size_t(width) + size_t(x)) * size_t(channels) + size_t(c)]; }
 };
 
+/// Reverses the order of the rows (GL reads rows bottom-up; images run top-down).
+void flip_rows(Image& image);
+
 /// Reads any image OpenImageIO knows; throws gps::Error naming the file.
 Image read_image(const std::string& path);
 

@@ -45,11 +45,7 @@ Image RenderTarget::read(int attachment) const {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, image.pixels.data());
   check_gl_errors("reading the render target");
-  // GL's rows run bottom-up; images run top-down.
-  const size_t row = size_t(width_) * 4;
-  for (int y = 0; y < height_ / 2; ++y)
-    std::swap_ranges(image.pixels.begin() + long(size_t(y) * row), image.pixels.begin() + long(size_t(y + 1) * row),
-                     image.pixels.begin() + long(size_t(height_ - 1 - y) * row));
+  flip_rows(image);
   return image;
 }
 

@@ -49,6 +49,19 @@ void WindowContext::blit(const RenderTarget& target) const {
   check_gl_errors("showing the frame");
 }
 
+Image WindowContext::read_pixels() const {
+  int width = 0, height = 0;
+  framebuffer_size(width, height);
+  Image image{width, height, 4, std::vector<float>(size_t(width) * size_t(height) * 4)};
+  glNamedFramebufferReadBuffer(0, GL_BACK);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, image.pixels.data());
+  check_gl_errors("reading the window");
+  flip_rows(image);
+  return image;
+}
+
 void WindowContext::swap_buffers() { glfwSwapBuffers(window_); }
 
 bool WindowContext::should_close() const { return glfwWindowShouldClose(window_); }

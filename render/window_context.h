@@ -24,6 +24,8 @@ public:
   void framebuffer_size(int& width, int& height) const;
   /// Copies a render target's colour into the window's back buffer (scaled to fit).
   void blit(const RenderTarget& target) const;
+  /// The back buffer (call after drawing, before swap_buffers) as RGBA in [0,1], rows top-down, for screenshots.
+  Image read_pixels() const;
   void swap_buffers();
   bool should_close() const;
 

@@ -38,6 +38,39 @@ TEST(WindowContext, DrawsTheSurfaceIntoAWindow) {
   EXPECT_FALSE(window.should_close());
 }
 
+// read_pixels gives the back buffer top row first: a colour cleared into the top half only (GL's
+// rows count from the bottom) shows in the image's first rows.
+TEST(WindowContext, ReadPixelsGivesTheBackBufferTopDown) {
+  WindowContext window(96, 64, "gpsurf read test", true);
+  int width = 0, height = 0;
+  window.framebuffer_size(width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, width, height);
+  glClearColor(0.2f, 0.4f, 0.6f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, height / 2, width, height - height / 2);
+  glClearColor(1.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  const Image image = window.read_pixels();
+  ASSERT_EQ(image.width, width);
+  ASSERT_EQ(image.height, height);
+  ASSERT_EQ(image.channels, 4);
+  const auto expect_colour = [&image](int x, int y, float r, float g, float b) {
+    EXPECT_NEAR(image.at(x, y, 0), r, 1.0f / 255) << x << "," << y;
+    EXPECT_NEAR(image.at(x, y, 1), g, 1.0f / 255) << x << "," << y;
+    EXPECT_NEAR(image.at(x, y, 2), b, 1.0f / 255) << x << "," << y;
+  };
+  for (const int x : {0, width / 2, width - 1}) {
+    expect_colour(x, 0, 1.0f, 0.0f, 0.0f);
+    expect_colour(x, height / 2 - 1, 1.0f, 0.0f, 0.0f);
+    expect_colour(x, height - height / 2, 0.2f, 0.4f, 0.6f);
+    expect_colour(x, height - 1, 0.2f, 0.4f, 0.6f);
+  }
+  window.swap_buffers();
+}
+
 TEST(WindowContext, NoDisplayIsAOneLineError) {
   const char* saved = std::getenv("DISPLAY");
   const std::string display = saved ? saved : "";
