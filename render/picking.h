@@ -26,6 +26,10 @@ std::optional<glm::vec3> project_to_pixel(const Camera& camera, int width, int h
 /// equally near (within half a pixel) the front-most. -1 when none is that near.
 int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, float radius);
 
+/// The vertex whose k-sigma ellipsoid {x : (x−μ)ᵀΣ⁻¹(x−μ) = k²} the pixel's ray meets first
+/// (nearest entry point in front of the eye); −1 when the ray misses them all.
+int pick_ellipsoid(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, double k_sigma);
+
 /// The world position of the limit surface under a pixel (window coordinates) of the last draw into
 /// `target`, read from its position AOV; nullopt where the pixel shows background.
 std::optional<glm::vec3> surface_point(const RenderTarget& target, glm::vec2 pixel);

@@ -1,0 +1,41 @@
+// gpsurf-editor: the interactive editor (ui/editor.h); this file only parses the command line.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <regex>
+
+#include "core/error.h"
+#include "ui/editor.h"
+
+int main(int argc, char** argv) {
+  gps::EditorOptions o;
+  std::string size = "1280x800";
+  bool no_vsync = false;
+  CLI::App app{"gpsurf-editor: edit covariance meshes on their GPS limit surface (F1 in the window lists the bindings)"};
+  app.add_option("file", o.file, "mesh to open (.ply, .obj, .off, .stl); default: a built-in sample")->check(CLI::ExistingFile);
+  app.add_option("--play", o.play, "replay recorded input (EVENTS.json), then exit")->check(CLI::ExistingFile);
+  app.add_option("--record", o.record, "record the session's input to EVENTS.json (written on exit)");
+  app.add_option("--screenshot", o.screenshot, "after the events, write the window to this PNG and exit");
+  app.add_option("--save", o.save, "after the events, save the mesh here (.ply) and exit");
+  app.add_option("--size", size, "window size WxH in pixels");
+  app.add_flag("--no-vsync", no_vsync, "draw as fast as possible");
+  app.failure_message([](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + std::string(e.what()) + "\n"; });
+  try {
+    app.parse(argc, argv);
+    std::smatch m;
+    if (!std::regex_match(size, m, std::regex(R"((\d{2,5})x(\d{2,5}))"))) throw gps::usage_error("--size: expected WxH, got '" + size + "'");
+    o.width = std::stoi(m[1]);
+    o.height = std::stoi(m[2]);
+    o.vsync = !no_vsync;
+    return gps::run_editor(o);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  } catch (const gps::Error& e) {
+    std::cerr << "gpsurf-editor: " << e.what() << "\n";
+    return e.exit_code();
+  } catch (const std::exception& e) {
+    std::cerr << "gpsurf-editor: " << e.what() << "\n";
+    return 1;
+  }
+}

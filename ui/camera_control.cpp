@@ -1,0 +1,52 @@
+#include "ui/camera_control.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/picking.h"
+
+namespace gps {
+
+void orbit(Camera& camera, glm::vec2 delta) {
+  camera.yaw_degrees = std::fmod(camera.yaw_degrees - 0.4f * delta.x, 360.0f);
+  camera.pitch_degrees = std::clamp(camera.pitch_degrees + 0.4f * delta.y, -89.0f, 89.0f);
+}
+
+void pan(Camera& camera, glm::vec2 delta, int height) {
+  const glm::mat4 view = camera.view();
+  const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
+  const float per_pixel = 2.0f * camera.distance * std::tan(glm::radians(camera.fov_degrees) * 0.5f) / float(std::max(1, height));
+  camera.target += per_pixel * (-delta.x * right + delta.y * up);
+}
+
+void zoom_to_cursor(Camera& camera, float steps, int width, int height, glm::vec2 cursor, std::optional<glm::vec3> anchor) {
+  const float scale = std::pow(0.85f, steps);
+  const glm::vec3 eye = camera.eye();
+  if (!anchor) {  // the cursor's point at the target's depth
+    const Ray ray = pixel_ray(camera, width, height, cursor);
+    const glm::vec3 forward = glm::normalize(camera.target - eye);
+    const float t = camera.distance / std::max(1e-6f, glm::dot(ray.direction, forward));
+    anchor = ray.origin + t * ray.direction;
+  }
+  // Eye and target both move toward the anchor by the same factor: the view direction is kept and
+  // the anchor stays on the same pixel. Never closer than a millionth of the old distance.
+  const float new_distance = std::max(camera.distance * scale, 1e-6f);
+  const float s = new_distance / camera.distance;
+  camera.target = *anchor + (camera.target - *anchor) * s;
+  camera.distance = new_distance;
+}
+
+Camera frame_points(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices, double min_radius) {
+  if (vertices.empty()) return camera;
+  Vec3 lo = mesh.mean(size_t(vertices[0])), hi = lo;
+  for (const int v : vertices) {
+    lo = lo.cwiseMin(mesh.mean(size_t(v)));
+    hi = hi.cwiseMax(mesh.mean(size_t(v)));
+  }
+  const Vec3 centre = 0.5 * (lo + hi), half = Vec3::Constant(min_radius / std::sqrt(3.0));
+  Camera framed = frame_box(lo.cwiseMin(centre - half), hi.cwiseMax(centre + half), camera.yaw_degrees, camera.pitch_degrees);
+  framed.fov_degrees = camera.fov_degrees;
+  return framed;
+}
+
+}  // namespace gps

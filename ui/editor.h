@@ -1,0 +1,21 @@
+#pragma once
+// gpsurf-editor: a Dear ImGui editor of covariance meshes on the GPU pipeline (issue "editor").
+#include <string>
+
+namespace gps {
+
+struct EditorOptions {
+  std::string file;        // the mesh to open; "" = the embedded default sample
+  std::string play;        // events file to replay (then the editor finishes and exits)
+  std::string record;      // write the live input to this events file on exit
+  std::string screenshot;  // scripted: PNG of the window after the events
+  std::string save;        // scripted: save the mesh here after the events
+  int width = 1280, height = 800;
+  bool vsync = true;
+};
+
+/// Opens the window and runs the editor until the user quits (or, with play/screenshot/save, until
+/// the script is done). Returns the exit code; errors that stop it are gps::Error (one line).
+int run_editor(const EditorOptions& options);
+
+}  // namespace gps

@@ -1,0 +1,50 @@
+#include "ui/view_panel.h"
+
+#include <imgui.h>
+
+#include "render/matcap.h"
+
+namespace gps {
+
+ViewPanelChanges draw_view_panel(ViewOptions& o, bool* open) {
+  ViewPanelChanges changes;
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + viewport->WorkSize.y - 40),
+                          ImGuiCond_FirstUseEver, ImVec2(1, 1));
+  ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("View", open)) {
+    ImGui::End();
+    return changes;
+  }
+  ImGui::PushItemWidth(170);
+  ImGui::Checkbox("adaptive", &o.adaptive);
+  ImGui::SameLine();
+  if (o.adaptive) ImGui::SliderFloat("px/edge", &o.adaptive_pixels, 1.0f, 32.0f, "%.1f");
+  else ImGui::SliderFloat("level", &o.draw.level, 1.0f, 64.0f, "%.0f");
+  o.draw.pixels = o.adaptive ? o.adaptive_pixels : 0.0f;
+  if (ImGui::SliderInt("plan depth", &o.depth, 1, 6)) changes.depth = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("maximum quadtree depth at extraordinary vertices (rebuilds the plans)");
+  if (ImGui::BeginCombo("MatCap", o.matcap.c_str())) {
+    for (const std::string& name : builtin_matcap_names())
+      if (ImGui::Selectable(name.c_str(), name == o.matcap)) o.matcap = name, changes.matcap = true;
+    if (ImGui::Selectable("Load from file...")) changes.load_matcap = true;
+    ImGui::EndCombo();
+  }
+  int mode = int(o.draw.mode);
+  if (ImGui::Combo("shading", &mode, "MatCap\0normals\0flat\0")) o.draw.mode = ShadingMode(mode);
+  ImGui::Checkbox("base mesh", &o.draw.mesh_lines);
+  ImGui::SameLine();
+  ImGui::Checkbox("wireframe", &o.draw.wireframe);
+  ImGui::Checkbox("ellipsoids", &o.draw.ellipsoids);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderFloat("k-sigma", &o.draw.sigma_scale, 0.1f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+  if (ImGui::Checkbox("v-sync", &o.vsync)) changes.vsync = true;
+  ImGui::SameLine();
+  ImGui::Checkbox("statistics", &o.show_statistics);
+  ImGui::PopItemWidth();
+  ImGui::End();
+  return changes;
+}
+
+}  // namespace gps
