@@ -1,7 +1,11 @@
-// gpsurf bench --preprocess: plan building and stencil application, per mesh (issue "plans").
+// gpsurf bench --preprocess: plan building and stencil application, per mesh (issue "plans");
+// --render: frame times per mesh and level; --edit: edit-to-frame time on a large mesh (issue "editor").
+#include <glad/gl.h>
+
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -25,19 +29,27 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Median seconds of `f` over repeats that fill about `budget` seconds (at least 3, at most 200).
-template <class F>
-double median_seconds(F&& f, double budget = 0.3) {
-  std::vector<double> times;
+// Median seconds of each function over rounds that fill about `budget` seconds (at least 3, at most
+// 200); each round runs every function once, in order, so a changing machine load hits all alike.
+std::vector<double> interleaved_median_seconds(const std::vector<std::function<void()>>& functions, double budget) {
+  std::vector<std::vector<double>> times(functions.size());
   const auto start = Clock::now();
-  while (times.size() < 3 || (times.size() < 200 && std::chrono::duration<double>(Clock::now() - start).count() < budget)) {
-    const auto t0 = Clock::now();
-    f();
-    times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+  for (size_t round = 0; round < 3 || (round < 200 && std::chrono::duration<double>(Clock::now() - start).count() < budget); ++round)
+    for (size_t i = 0; i < functions.size(); ++i) {
+      const auto t0 = Clock::now();
+      functions[i]();
+      times[i].push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+    }
+  std::vector<double> medians;
+  for (auto& t : times) {
+    std::nth_element(t.begin(), t.begin() + long(t.size() / 2), t.end());
+    medians.push_back(t[t.size() / 2]);
   }
-  std::nth_element(times.begin(), times.begin() + long(times.size() / 2), times.end());
-  return times[times.size() / 2];
+  return medians;
 }
+
+// Median seconds of `f` over repeats that fill about `budget` seconds (at least 3, at most 200).
+double median_seconds(const std::function<void()>& f, double budget = 0.3) { return interleaved_median_seconds({f}, budget)[0]; }
 
 nlohmann::json bench_preprocess(const std::string& name, int size, int depth) {
   const CovarianceMesh mesh = make_sample(name, size);
@@ -107,12 +119,83 @@ nlohmann::json bench_render(const std::string& name, int depth, int size, const 
   return rows;
 }
 
+// Edit-to-frame time on a `faces`-face sphere: an edit maps only the changed vertices to 9D and
+// re-applies the stencils that read them (no topology rebuild), against the plain frame, the full
+// recompute and set_mesh. Wall times to after glFinish; the figures are measured interleaved.
+nlohmann::json bench_edit(int faces, int depth) {
+  CovarianceMesh mesh = make_sample("sphere", faces);
+  SurfaceRenderer renderer;
+  const auto rebuild_start = Clock::now();
+  renderer.set_mesh(mesh, depth);
+  glFinish();
+  const double set_mesh = std::chrono::duration<double>(Clock::now() - rebuild_start).count();
+  const Camera camera = frame_mesh(mesh);
+  RenderTarget target(1280, 720);
+  DrawOptions o;
+  o.pixels = 6.0f;
+  const auto frame = [&] {
+    renderer.draw(target, camera, o);
+    glFinish();
+  };
+  renderer.set_collect_statistics(true);
+  frame();  // warm-up, and the triangle count (glFinish made the queries' results available)
+  const DrawStatistics statistics = renderer.last_statistics();
+  renderer.set_collect_statistics(false);
+  // Each edit scales the covariances by 1.1 and the next one back, so the surface stays put.
+  bool grow = true;
+  const auto edit = [&](const std::vector<int>& vertices) {
+    const double scale = grow ? 1.1 : 1.0 / 1.1;
+    grow = !grow;
+    for (const int v : vertices) mesh.covariances[size_t(v)] *= scale;
+    renderer.update_vertices(mesh, vertices);
+  };
+  const std::vector<int> one = {int(mesh.n_vertices() / 2)};
+  std::vector<int> sixteen(16);
+  for (int i = 0; i < 16; ++i) sixteen[size_t(i)] = one[0] + i;
+  const std::vector<double> t = interleaved_median_seconds(
+      {frame,
+       [&] {
+         edit(one);
+         frame();
+       },
+       [&] {
+         edit(sixteen);
+         frame();
+       },
+       [&] {
+         renderer.recompute_all();
+         frame();
+       },
+       [&] {
+         edit(one);
+         glFinish();
+       },
+       [&] {
+         renderer.recompute_all();
+         glFinish();
+       }},
+      20.0);
+  return {{"mesh", "sphere/" + std::to_string(faces)},
+          {"faces", mesh.n_faces()},
+          {"vertices", mesh.n_vertices()},
+          {"patches", statistics.patches},
+          {"depth", depth},
+          {"triangles", statistics.triangles},
+          {"frame_ms", t[0] * 1e3},
+          {"edit_to_frame_1_vertex_ms", t[1] * 1e3},
+          {"edit_to_frame_16_vertices_ms", t[2] * 1e3},
+          {"full_recompute_frame_ms", t[3] * 1e3},
+          {"edit_1_vertex_compute_ms", t[4] * 1e3},
+          {"full_recompute_ms", t[5] * 1e3},
+          {"set_mesh_ms", set_mesh * 1e3}};
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app) {
   struct Args {
-    bool preprocess = false, render = false;
-    int size = 512;
+    bool preprocess = false, render = false, edit = false;
+    int size = 0;  // the mode's default
     int depth = 3;
     std::string json, plots, context = "auto";
   };
@@ -120,17 +203,45 @@ void add_bench_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("bench", "Benchmarks (figures for the closing notes; see also build/bench/)");
   cmd->add_flag("--preprocess", args->preprocess, "plan building and stencil application per mesh");
   cmd->add_flag("--render", args->render, "GPU frame times per mesh and tessellation level, against a static vertex buffer");
-  cmd->add_option("--context", args->context, "GL context for --render: auto, osmesa, egl")->check(CLI::IsMember({"auto", "osmesa", "egl"}));
-  cmd->add_option("--size", args->size, "render size in pixels (square)")->check(CLI::Range(16, 4096));
+  cmd->add_flag("--edit", args->edit, "edit-to-frame and frame times on a large sphere (1280x720, adaptive 6 px)");
+  cmd->add_option("--context", args->context, "GL context for --render and --edit: auto, osmesa, egl")->check(CLI::IsMember({"auto", "osmesa", "egl"}));
+  cmd->add_option("--size", args->size, "--render: render size in pixels (square, default 512); --edit: faces (default 100000)")
+      ->check(CLI::Range(16, 4000000));
   cmd->add_option("--depth", args->depth, "maximum plan depth")->check(CLI::Range(1, 8));
   cmd->add_option("--json", args->json, "also write the figures as JSON");
   cmd->add_option("--plots", args->plots, "with --render: write PREFIX_frame_time.png and PREFIX_memory.png");
   cmd->callback([args] {
-    if (!args->preprocess && !args->render) throw usage_error("bench: choose what to measure (--preprocess, --render)");
+    if (int(args->preprocess) + int(args->render) + int(args->edit) != 1)
+      throw usage_error("bench: choose one thing to measure (--preprocess, --render, --edit)");
+    const auto make_context = [&args] {
+      return create_offscreen_context(args->context == "egl" ? ContextKind::egl
+                                      : args->context == "osmesa" ? ContextKind::osmesa
+                                                                  : ContextKind::automatic);
+    };
+    if (args->edit) {
+      const auto context = make_context();
+      const auto r = bench_edit(args->size ? args->size : 100000, args->depth);
+      std::printf("device: %s\n%s: %d faces, %d patches, depth %d, 1280x720, adaptive 6 px, %lld triangles per frame\n",
+                  context->description().c_str(), r["mesh"].get<std::string>().c_str(), r["faces"].get<int>(), r["patches"].get<int>(),
+                  r["depth"].get<int>(), r["triangles"].get<long long>());
+      const double frame = r["frame_ms"], one = r["edit_to_frame_1_vertex_ms"], sixteen = r["edit_to_frame_16_vertices_ms"];
+      const double full = r["full_recompute_frame_ms"];
+      std::printf("%-40s %10.2f ms\n", "frame (draw + glFinish)", frame);
+      std::printf("%-40s %10.2f ms\n", "edit-to-frame, 1 vertex", one);
+      std::printf("%-40s %10.2f ms\n", "edit-to-frame, 16 vertices", sixteen);
+      std::printf("%-40s %10.2f ms\n", "full recompute + frame", full);
+      std::printf("%-40s %10.2f ms\n", "set_mesh (topology rebuild, once)", r["set_mesh_ms"].get<double>());
+      std::printf("%-40s %10.3f ms\n", "compute only: edit of 1 vertex", r["edit_1_vertex_compute_ms"].get<double>());
+      std::printf("%-40s %10.3f ms\n", "compute only: full recompute", r["full_recompute_ms"].get<double>());
+      std::printf("edit-to-frame / frame: %.3f (1 vertex), %.3f (16 vertices); full / edit-to-frame: %.2f (1 vertex), %.2f (16 vertices)\n",
+                  one / frame, sixteen / frame, full / one, full / sixteen);
+      if (!args->json.empty()) write_file_atomically(args->json, [&](std::ostream& out) { out << r.dump(2) << "\n"; });
+      return;
+    }
     if (args->render) {
-      const auto context = create_offscreen_context(args->context == "egl" ? ContextKind::egl
-                                                    : args->context == "osmesa" ? ContextKind::osmesa
-                                                                                : ContextKind::automatic);
+      if (!args->size) args->size = 512;
+      if (args->size > 4096) throw usage_error("bench --render: --size is at most 4096 pixels");
+      const auto context = make_context();
       std::printf("device: %s, %dx%d pixels, depth %d\n", context->description().c_str(), args->size, args->size, args->depth);
       std::printf("%-12s %7s %5s %9s %10s %10s %10s %12s %10s %7s %9s\n", "mesh", "patches", "level", "triangles", "compute",
                   "draw(gpu)", "frame", "tri/s", "static", "ratio", "memory");
