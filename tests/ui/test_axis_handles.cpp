@@ -1,0 +1,165 @@
+// Handle hit-testing and drag math on a real camera, without a window.
+#include "ui/axis_handles.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include "core/samples.h"
+#include "render/picking.h"
+
+namespace gps {
+namespace {
+
+glm::vec3 to_glm(const Vec3& v) { return {float(v.x()), float(v.y()), float(v.z())}; }
+
+glm::vec2 pixel_of(const Viewport& view, const Vec3& world) {
+  const auto p = project_to_pixel(view.camera, view.width, view.height, to_glm(world));
+  EXPECT_TRUE(p.has_value());
+  return glm::vec2(*p) - glm::vec2(0.5f);  // the pixel whose centre it is (pixel_ray's convention)
+}
+
+// A cube whose vertex 0 carries an anisotropic, rotated Gaussian large enough to see.
+CovarianceMesh test_mesh() {
+  CovarianceMesh mesh = make_sample("cube");
+  const Mat3 r = Eigen::AngleAxisd(0.4, Vec3(1, 2, 0.5).normalized()).toRotationMatrix();
+  mesh.covariances[0] = r * Vec3(0.01, 0.04, 0.09).asDiagonal() * r.transpose();
+  mesh.covariances[3] = Vec3(0.02, 0.03, 0.05).asDiagonal();
+  return mesh;
+}
+
+Viewport test_view(int width = 900, int height = 700) {
+  Viewport v;
+  v.camera = frame_box(Vec3(-1, -1, -1), Vec3(1, 1, 1), 35.0f, 25.0f);
+  v.width = width;
+  v.height = height;
+  return v;
+}
+
+Vec3 sorted_sigmas(const Mat3& c) { return Eigen::SelfAdjointEigenSolver<Mat3>(c).eigenvalues().cwiseSqrt(); }
+
+TEST(AxisHandles, EveryHandleIsHitAtItsPixel) {
+  const CovarianceMesh mesh = test_mesh();
+  for (const auto& [w, h] : {std::pair{900, 700}, std::pair{320, 900}, std::pair{1920, 400}}) {
+    const Viewport view = test_view(w, h);
+    const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
+    for (int axis = 0; axis < 3; ++axis)
+      for (const int side : {1, -1}) {
+        const auto hit = hit_handle(view, pixel_of(view, f.end(axis, side)), mesh, {0}, 2.0);
+        ASSERT_TRUE(hit.has_value());
+        EXPECT_EQ(hit->vertex, 0);
+        EXPECT_EQ(hit->axis, axis) << w << "x" << h;
+        EXPECT_EQ(hit->side, side);
+      }
+    const auto centre = hit_handle(view, pixel_of(view, f.centre), mesh, {0}, 2.0);
+    ASSERT_TRUE(centre.has_value());
+    EXPECT_TRUE(centre->is_centre());
+    EXPECT_FALSE(hit_handle(view, glm::vec2(2.0f, 2.0f), mesh, {0}, 2.0).has_value());
+  }
+}
+
+TEST(AxisHandles, TinyGaussiansKeepGrabbableHandles) {
+  CovarianceMesh mesh = make_sample("cube");
+  mesh.covariances[0] = 1e-10 * Mat3::Identity();
+  const Viewport view = test_view();
+  const HandleFrame f = handle_frame(mesh, 0, 1.0, view, 24.0);
+  for (int axis = 0; axis < 3; ++axis) {
+    const float on_screen = glm::length(pixel_of(view, f.end(axis, 1)) - pixel_of(view, f.centre));
+    EXPECT_GT(on_screen, 5.0f);  // 24 px along the view plane, foreshortened at most this much here
+    EXPECT_LE(on_screen, 24.5f);
+  }
+}
+
+// Dragging an axis end along its axis by d scales that σ by (r + d)/r; the others stay.
+TEST(AxisHandles, DraggingAnEndAlongTheAxisScalesItsSigma) {
+  const Viewport view = test_view();
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double target : {1.6, 0.7}) {
+      CovarianceMesh mesh = test_mesh();
+      const Vec3 before = sorted_sigmas(mesh.covariance(0));
+      const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
+      const Vec3 end = f.end(axis, 1), goal = f.centre + target * (end - f.centre);
+      const HandleDrag drag(mesh, {0}, Handle{0, axis, 1}, 2.0, view, pixel_of(view, end));
+      ASSERT_TRUE(drag.update(mesh, view, pixel_of(view, goal)));
+      const Vec3 after = sorted_sigmas(mesh.covariance(0));
+      // The scaled σ may change rank; compare as multisets.
+      Vec3 expected = before;
+      expected[axis] *= target;
+      std::sort(expected.data(), expected.data() + 3);
+      EXPECT_LT((after - expected).cwiseAbs().maxCoeff(), 0.01 * expected.maxCoeff()) << "axis " << axis << " × " << target;
+      EXPECT_EQ(mesh.mean(0), test_mesh().mean(0));
+      for (size_t v = 1; v < mesh.n_vertices(); ++v) EXPECT_EQ(mesh.covariance(v), test_mesh().covariance(v));
+    }
+}
+
+TEST(AxisHandles, DraggingAcrossTheAxisRotatesAndKeepsTheEigenvalues) {
+  const Viewport view = test_view();
+  CovarianceMesh mesh = test_mesh();
+  const Mat3 original = mesh.covariance(0);
+  const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
+  const glm::vec2 start = pixel_of(view, f.end(2, 1));
+  const glm::vec2 along = glm::normalize(start - pixel_of(view, f.centre));
+  const HandleDrag drag(mesh, {0}, Handle{0, 2, 1}, 2.0, view, start);
+  ASSERT_TRUE(drag.update(mesh, view, start + 30.0f * glm::vec2(-along.y, along.x)));
+  EXPECT_GT((mesh.covariance(0) - original).norm(), 1e-3 * original.norm());  // it turned
+  // Motion across the projected axis has no component along the axis in the drag plane up to the
+  // pixel grid, so the eigenvalues stay to within a small fraction.
+  const Vec3 a = sorted_sigmas(original), b = sorted_sigmas(mesh.covariance(0));
+  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 0.02 * a.maxCoeff());
+  // The axis now points toward the cursor: its end projects onto the cursor's direction.
+  const HandleFrame g = handle_frame(mesh, 0, 2.0, view);
+  int best = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(g.axes.sigmas[k] - a[2]) < std::abs(g.axes.sigmas[best] - a[2])) best = k;
+  const glm::vec2 d0 = glm::normalize(pixel_of(view, g.end(best, 1)) - pixel_of(view, g.centre));
+  const glm::vec2 d1 = glm::normalize(start + 30.0f * glm::vec2(-along.y, along.x) - pixel_of(view, f.centre));
+  EXPECT_GT(std::abs(glm::dot(d0, d1)), 0.99f);
+}
+
+TEST(AxisHandles, EveryDragKeepsCovariancesPositiveDefinite) {
+  const Viewport view = test_view();
+  CovarianceMesh mesh = test_mesh();
+  const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
+  const glm::vec2 start = pixel_of(view, f.end(0, 1));
+  const HandleDrag drag(mesh, {0}, Handle{0, 0, 1}, 2.0, view, start);
+  for (const glm::vec2 to : {pixel_of(view, f.end(0, -1)), pixel_of(view, f.centre), start + glm::vec2(4000, -3000), glm::vec2(0, 0)}) {
+    if (!drag.update(mesh, view, to)) continue;
+    EXPECT_TRUE(is_spd(mesh.covariance(0)));
+    EXPECT_GT(Eigen::SelfAdjointEigenSolver<Mat3>(mesh.covariance(0)).eigenvalues().minCoeff(), 0.0);
+  }
+}
+
+TEST(AxisHandles, CentreDragMovesEverySelectedMeanByTheSameVector) {
+  const Viewport view = test_view();
+  CovarianceMesh mesh = test_mesh();
+  const CovarianceMesh original = mesh;
+  const glm::vec2 start = pixel_of(view, mesh.mean(0));
+  const HandleDrag drag(mesh, {0, 3}, Handle{0, -1, 1}, 2.0, view, start);
+  ASSERT_TRUE(drag.update(mesh, view, start + glm::vec2(40, -25)));
+  const Vec3 d0 = mesh.mean(0) - original.mean(0), d3 = mesh.mean(3) - original.mean(3);
+  EXPECT_GT(d0.norm(), 0.01);
+  EXPECT_LT((d0 - d3).norm(), 1e-12);
+  // The grabbed vertex follows the cursor.
+  EXPECT_LT(glm::length(pixel_of(view, mesh.mean(0)) - (start + glm::vec2(40, -25))), 0.05f);
+  EXPECT_EQ(mesh.covariance(0), original.covariance(0));
+}
+
+TEST(AxisHandles, SeveralSelectedVerticesGetTheSameRelativeChange) {
+  const Viewport view = test_view();
+  CovarianceMesh mesh = test_mesh();
+  const CovarianceMesh original = mesh;
+  const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
+  const Vec3 end = f.end(1, 1);
+  const HandleDrag drag(mesh, {0, 3}, Handle{0, 1, 1}, 2.0, view, pixel_of(view, end));
+  ASSERT_TRUE(drag.update(mesh, view, pixel_of(view, f.centre + 1.5 * (end - f.centre))));
+  // Vertex 3's middle σ grew by the same factor; its others stayed.
+  Vec3 expected = sorted_sigmas(original.covariance(3));
+  expected[1] *= 1.5;
+  std::sort(expected.data(), expected.data() + 3);
+  EXPECT_LT((sorted_sigmas(mesh.covariance(3)) - expected).cwiseAbs().maxCoeff(), 0.01 * expected.maxCoeff());
+  for (const size_t v : {1, 2, 4, 5, 6, 7}) EXPECT_EQ(mesh.covariance(v), original.covariance(v));
+}
+
+}  // namespace
+}  // namespace gps
