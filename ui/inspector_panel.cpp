@@ -59,7 +59,7 @@ std::vector<int> InspectorPanel::draw(EditorDocument& document, const Selection&
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + 10), ImGuiCond_FirstUseEver,
                           ImVec2(1, 0));
-  ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, 300), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Inspector", open)) {
     ImGui::End();
     return changed;
