@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   app.add_option("--record", o.record, "record the session's input to EVENTS.json (written on exit)");
   app.add_option("--screenshot", o.screenshot, "after the events, write the window to this PNG and exit");
   app.add_option("--save", o.save, "after the events, save the mesh here (.ply) and exit");
+  app.add_option("--stats", o.stats, "on exit, write frame time and edit-to-frame time (medians) to this JSON file");
   app.add_option("--size", size, "window size WxH in pixels");
   app.add_flag("--no-vsync", no_vsync, "draw as fast as possible");
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + std::string(e.what()) + "\n"; });

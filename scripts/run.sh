@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# Fresh machine to the main job: installs dependencies, builds, and renders the embedded default
-# sample headless (OSMesa) to out/default.png.
+# Fresh machine to the main job: installs dependencies and builds; then, where there is a display,
+# opens the editor on its embedded default sample (Preiner's cone with a sharp apex), and where there
+# is none renders that sample headless (OSMesa) to out/default.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install_deps.sh
 scripts/build.sh
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+  exec build/app/gpsurf-editor "$@"
+fi
 mkdir -p out
 gpsurf=build/app/gpsurf
 $gpsurf sample cone-pointy -o out/default.ply
 $gpsurf render out/default.ply -o out/default.png --size 960x720 --mesh --pixels 4
-echo "rendered the built-in sample 'cone-pointy' (Preiner's cone with a sharp apex) headless: $(pwd)/out/default.png"
+echo "no display: rendered the built-in sample 'cone-pointy' (Preiner's cone with a sharp apex) headless: $(pwd)/out/default.png"

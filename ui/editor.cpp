@@ -47,6 +47,7 @@ constexpr const char* kDefaultSample = "cone-pointy";
 constexpr float kPickRadius = 8.0f;       // window pixels
 constexpr float kBoxThreshold = 4.0f;     // pixels a left press moves before it becomes a box
 constexpr size_t kMaxHandleVertices = 64;  // more selected: handles on the active vertex only
+constexpr size_t kMaxFacesWithLines = 5000;  // larger meshes open with the base-mesh lines off
 const std::vector<std::string> kMeshExtensions = {".ply", ".obj", ".off", ".stl"};
 const std::vector<std::string> kImageExtensions = {".png", ".jpg", ".jpeg", ".exr", ".tif", ".tiff", ".hdr"};
 
@@ -98,6 +99,7 @@ private:
   void mesh_replaced();
   void mark_changed(const std::vector<int>& vertices);
   void write_screenshot(const std::string& path);
+  void write_statistics(const std::string& path);
   void set_status(const std::string& message, bool error);
   void update_title();
 
@@ -263,7 +265,7 @@ void Editor::handle_event(const InputEvent& e) {
       }
       break;
     case InputEvent::Type::key_press:
-      if (!io.WantCaptureKeyboard) handle_key(e.key);
+      if (!io.WantCaptureKeyboard && !browser_.is_open()) handle_key(e.key);
       break;
     case InputEvent::Type::drop:
       if (!e.paths.empty()) request({Action::Kind::open_file, e.paths.front()});
@@ -376,6 +378,7 @@ int Editor::run() {
     if (script_finished()) break;
   }
   if (recorder_) recorder_->save(options_.record);
+  if (!options_.stats.empty()) write_statistics(options_.stats);
   return 0;
 }
 
@@ -454,6 +457,22 @@ void Editor::render_and_present() {
     clock_.edit_shown(frame_input_time_);
   }
   clock_.frame_done();
+}
+
+void Editor::write_statistics(const std::string& path) {
+  const DrawStatistics draw = renderer_->last_statistics();
+  nlohmann::json passes = nlohmann::json::object();
+  for (const auto& [pass, ms] : timer_->latest()) passes[pass] = ms;
+  const nlohmann::json j = {{"mesh", document_.display_name()},
+                            {"faces", document_.mesh.n_faces()},
+                            {"patches", draw.patches},
+                            {"triangles", draw.triangles},
+                            {"gl", window_.description()},
+                            {"median_frame_ms", clock_.median_frame_ms()},
+                            {"median_edit_to_frame_ms", clock_.median_edit_ms()},
+                            {"edits", clock_.edit_count()},
+                            {"gpu_pass_ms", passes}};
+  write_file_atomically(path, [&j](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 
 void Editor::write_screenshot(const std::string& path) {
@@ -706,6 +725,8 @@ void Editor::mesh_replaced() {
   selection_.clear();
   renderer_->set_mesh(document_.mesh, view_.depth);
   camera_ = frame_mesh(document_.mesh);
+  // Base-mesh lines are drawn over the surface: on a dense mesh they would hide it.
+  view_.draw.mesh_lines = document_.mesh.n_faces() <= kMaxFacesWithLines;
 }
 
 bool Editor::save() {

@@ -10,6 +10,7 @@ struct EditorOptions {
   std::string record;      // write the live input to this events file on exit
   std::string screenshot;  // scripted: PNG of the window after the events
   std::string save;        // scripted: save the mesh here after the events
+  std::string stats;       // on exit, write frame and edit-to-frame figures here (JSON)
   int width = 1280, height = 800;
   bool vsync = true;
 };

@@ -85,3 +85,34 @@ TEST(Picking, SurfacePointUnderAPixelLiesOnTheRay) {
 
 }  // namespace
 }  // namespace gps
+
+namespace gps {
+namespace {
+
+// A ray through any pixel inside a vertex's projected k-sigma ellipsoid picks it, for any camera
+// and window size; a pixel well outside every ellipsoid picks nothing.
+TEST(Picking, EllipsoidsArePickedExactlyWhereTheyProject) {
+  CovarianceMesh mesh = make_sample("cube");
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) mesh.covariances[i] = Vec3(0.01, 0.0025, 0.04).asDiagonal();
+  for (const auto& [w, h, yaw] : {std::tuple{640, 480, 30.0f}, std::tuple{300, 900, 120.0f}, std::tuple{1500, 500, -60.0f}}) {
+    const Camera camera = frame_box(Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 1.5), yaw, 25.0f);
+    for (size_t v = 0; v < mesh.n_vertices(); ++v) {
+      // A point on the 2-sigma ellipsoid's silhouette-facing side: μ + 1.9 σ_z ẑ lies inside it.
+      const Vec3 inside = mesh.mean(v) + Vec3(0, 0, 1.9 * 0.2);
+      const auto p = project_to_pixel(camera, w, h, glm::vec3(float(inside.x()), float(inside.y()), float(inside.z())));
+      ASSERT_TRUE(p.has_value());
+      const int picked = pick_ellipsoid(camera, w, h, glm::vec2(*p) - glm::vec2(0.5f), mesh, 2.0);
+      // Another ellipsoid may lie in front along that ray: then the picked one must be nearer the eye.
+      ASSERT_GE(picked, 0);
+      if (picked != int(v)) {
+        const glm::vec3 eye = camera.eye();
+        const Vec3 e(eye.x, eye.y, eye.z);
+        EXPECT_LT((mesh.mean(size_t(picked)) - e).norm(), (mesh.mean(v) - e).norm());
+      }
+    }
+    EXPECT_EQ(pick_ellipsoid(camera, w, h, glm::vec2(1.0f, 1.0f), mesh, 2.0), -1);
+  }
+}
+
+}  // namespace
+}  // namespace gps
