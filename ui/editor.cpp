@@ -28,11 +28,14 @@
 #include "ui/editor_document.h"
 #include "ui/event_script.h"
 #include "ui/file_browser.h"
+#include "ui/glfw_input.h"
+#include "ui/handle_overlay.h"
 #include "ui/help_overlay.h"
 #include "ui/input_events.h"
 #include "ui/inspector_panel.h"
 #include "ui/recent_files.h"
 #include "ui/selection.h"
+#include "ui/status_bar.h"
 #include "ui/statistics_overlay.h"
 #include "ui/view_options.h"
 #include "ui/view_panel.h"
@@ -67,8 +70,6 @@ public:
 
 private:
   // Input.
-  static Editor& of(GLFWwindow* w) { return *static_cast<Editor*>(glfwGetWindowUserPointer(w)); }
-  void install_callbacks();
   void push_live(InputEvent e);
   void handle_event(const InputEvent& e);
   void handle_key(int key);
@@ -83,7 +84,6 @@ private:
   void draw_ui();
   void draw_menu();
   void draw_handles_and_box();
-  void draw_status_bar();
   void draw_unsaved_prompt();
   void handle_browser_result();
   void render_and_present();
@@ -105,6 +105,7 @@ private:
 
   EditorOptions options_;
   WindowContext window_;
+  GlfwInputForwarder input_forwarder_;
   std::unique_ptr<SurfaceRenderer> renderer_;
   std::unique_ptr<GpuPassTimer> timer_;
   std::unique_ptr<RenderTarget> target_;
@@ -143,9 +144,9 @@ private:
 Editor::Editor(const EditorOptions& options)
     : options_(options),
       window_(options.width, options.height, "gpsurf", true),
+      input_forwarder_(window_.window(), [this](InputEvent e) { push_live(std::move(e)); },
+                       [this] { request({Action::Kind::quit, ""}); }),
       recent_(RecentFiles::default_store()) {
-  glfwSetWindowUserPointer(window_.window(), this);
-  install_callbacks();
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
@@ -179,57 +180,6 @@ Editor::~Editor() {
   target_.reset();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui::DestroyContext();
-}
-
-void Editor::install_callbacks() {
-  GLFWwindow* w = window_.window();
-  glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
-    InputEvent e;
-    e.position = {float(x), float(y)};
-    of(win).push_live(e);
-  });
-  glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
-    if (button > 2) return;
-    double x = 0, y = 0;
-    glfwGetCursorPos(win, &x, &y);
-    InputEvent e;
-    e.type = action == GLFW_PRESS ? InputEvent::Type::press : InputEvent::Type::release;
-    e.button = button;
-    e.position = {float(x), float(y)};
-    of(win).push_live(e);
-  });
-  glfwSetScrollCallback(w, [](GLFWwindow* win, double, double dy) {
-    double x = 0, y = 0;
-    glfwGetCursorPos(win, &x, &y);
-    InputEvent e;
-    e.type = InputEvent::Type::scroll;
-    e.steps = float(dy);
-    e.position = {float(x), float(y)};
-    of(win).push_live(e);
-  });
-  glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
-    if (action == GLFW_REPEAT || key < 0) return;  // ImGui repeats held keys itself
-    InputEvent e;
-    e.type = action == GLFW_PRESS ? InputEvent::Type::key_press : InputEvent::Type::key_release;
-    e.key = key;
-    of(win).push_live(e);
-  });
-  glfwSetCharCallback(w, [](GLFWwindow* win, unsigned codepoint) {
-    InputEvent e;
-    e.type = InputEvent::Type::text;
-    e.codepoint = codepoint;
-    of(win).push_live(e);
-  });
-  glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
-    InputEvent e;
-    e.type = InputEvent::Type::drop;
-    e.paths.assign(paths, paths + count);
-    of(win).push_live(e);
-  });
-  glfwSetWindowCloseCallback(w, [](GLFWwindow* win) {
-    glfwSetWindowShouldClose(win, GLFW_FALSE);  // we ask about unsaved changes first
-    of(win).request({Action::Kind::quit, ""});
-  });
 }
 
 void Editor::push_live(InputEvent e) {
@@ -505,7 +455,7 @@ void Editor::draw_ui() {
   draw_help_overlay(&view_.show_help);
   draw_unsaved_prompt();
   handle_browser_result();
-  draw_status_bar();
+  draw_status_bar(document_, selection_.vertices().size(), status_, status_error_);
   update_title();
 }
 
@@ -556,65 +506,18 @@ void Editor::draw_menu() {
 }
 
 void Editor::draw_handles_and_box() {
-  ImDrawList* draw = ImGui::GetBackgroundDrawList();
   const Viewport v = viewport();
-  const auto pixel = [&v](const Vec3& p) -> std::optional<ImVec2> {
-    const auto q = project_to_pixel(v.camera, v.width, v.height, glm::vec3(float(p.x()), float(p.y()), float(p.z())));
-    if (!q || q->z < -1.0f || q->z > 1.0f) return std::nullopt;
-    return ImVec2(q->x, q->y);
-  };
-  const ImU32 selected_colour = IM_COL32(255, 170, 40, 255);
-  for (const int vertex : selection_.vertices())
-    if (const auto p = pixel(document_.mesh.mean(size_t(vertex)))) draw->AddCircleFilled(*p, 3.5f, selected_colour);
   std::optional<Handle> hovered;
   if (mode_ == Mode::handle) hovered = drag_->handle();
   else if (mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
     hovered = hit_handle(v, input_.cursor, document_.mesh, handle_vertices(), view_.draw.sigma_scale, kPickRadius);
-  const ImU32 axis_colours[3] = {IM_COL32(235, 80, 80, 255), IM_COL32(90, 210, 90, 255), IM_COL32(90, 150, 255, 255)};
-  const ImU32 highlight = IM_COL32(255, 240, 90, 255);
-  for (const int vertex : handle_vertices()) {
-    const HandleFrame f = handle_frame(document_.mesh, vertex, view_.draw.sigma_scale, v);
-    const auto centre = pixel(f.centre);
-    if (!centre) continue;
-    for (int axis = 0; axis < 3; ++axis)
-      for (const int side : {1, -1}) {
-        const auto end = pixel(f.end(axis, side));
-        if (!end) continue;
-        const bool lit = hovered && hovered->vertex == vertex && hovered->axis == axis && hovered->side == side;
-        draw->AddLine(*centre, *end, axis_colours[axis], 2.0f);
-        draw->AddCircleFilled(*end, lit ? 7.0f : 5.0f, lit ? highlight : axis_colours[axis]);
-        draw->AddCircle(*end, lit ? 7.0f : 5.0f, IM_COL32(0, 0, 0, 200));
-      }
-    const bool lit = hovered && hovered->vertex == vertex && hovered->is_centre();
-    draw->AddCircleFilled(*centre, lit ? 7.0f : 5.0f, lit ? highlight : IM_COL32(245, 245, 245, 255));
-    draw->AddCircle(*centre, lit ? 7.0f : 5.0f, IM_COL32(0, 0, 0, 200));
-  }
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the 3D view, under the panels
+  draw_handle_overlay(*draw, v, document_.mesh, selection_.vertices(), handle_vertices(), view_.draw.sigma_scale, hovered);
   if (mode_ == Mode::box) {
     const ImVec2 a(press_pixel_.x, press_pixel_.y), b(input_.cursor.x, input_.cursor.y);
     draw->AddRectFilled(a, b, IM_COL32(90, 150, 255, 40));
     draw->AddRect(a, b, IM_COL32(90, 150, 255, 220));
   }
-}
-
-void Editor::draw_status_bar() {
-  const ImGuiViewport* vp = ImGui::GetMainViewport();
-  const float height = ImGui::GetFrameHeight() + 4.0f;
-  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x, vp->WorkPos.y + vp->WorkSize.y - height));
-  ImGui::SetNextWindowSize(ImVec2(vp->WorkSize.x, height));
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
-                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoBringToFrontOnFocus;
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 2));
-  if (ImGui::Begin("##status", nullptr, flags)) {
-    ImGui::Text("%zu vertices, %zu faces, %zu selected%s", document_.mesh.n_vertices(), document_.mesh.n_faces(),
-                selection_.vertices().size(), document_.dirty() ? "  (unsaved changes)" : "");
-    if (!status_.empty()) {
-      ImGui::SameLine(0, 24);
-      if (status_error_) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", status_.c_str());
-      else ImGui::TextUnformatted(status_.c_str());
-    }
-  }
-  ImGui::End();
-  ImGui::PopStyleVar();
 }
 
 void Editor::draw_unsaved_prompt() {
@@ -627,8 +530,11 @@ void Editor::draw_unsaved_prompt() {
   ImGui::Text("Save them before %s?", pending_.kind == Action::Kind::quit ? "quitting" : "opening another mesh");
   if (ImGui::Button("Save")) {
     ImGui::CloseCurrentPopup();
-    after_save_perform_ = true;
-    if (save()) perform(pending_);
+    after_save_perform_ = true;  // a Save As dialog performs it once the file is written
+    if (save()) {
+      after_save_perform_ = false;
+      perform(pending_);
+    }
   }
   ImGui::SameLine();
   if (ImGui::Button("Discard")) {

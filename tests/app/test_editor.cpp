@@ -99,8 +99,10 @@ protected:
   }
   test::CommandResult play(const std::string& events_items, const std::string& extra) {
     const std::string events = dir_.write("events.json", "{\"events\": [\n" + events_items + "\n]}\n");
-    return test::run_command(editor(dir_.file("original.ply") + " --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) +
-                                    " --play " + events + " " + extra));
+    // The recent-files list goes to the test's folder, not the user's.
+    return test::run_command("XDG_CONFIG_HOME=" + dir_.path().string() + " " +
+                             editor(dir_.file("original.ply") + " --size " + std::to_string(kWidth) + "x" +
+                                    std::to_string(kHeight) + " --play " + events + " " + extra));
   }
   test::TempDir dir_;
   CovarianceMesh original_;
@@ -181,6 +183,24 @@ TEST_F(EditorTest, AMalformedFileIsReportedAndTheMeshStays) {
   for (int y = shot.height - 24; y < shot.height; ++y)
     for (int x = 0; x < shot.width; ++x) red += shot.at(x, y, 0) > 0.8f && shot.at(x, y, 1) < 0.5f && shot.at(x, y, 2) < 0.5f;
   EXPECT_GT(red, 50) << "no error shown in the status bar";
+}
+
+TEST_F(EditorTest, OpeningAnotherMeshWithUnsavedChangesAsksFirst) {
+  write_mesh(dir_.file("other.ply"), make_sample("torus"));
+  const DragPlan plan = plan_drag(original_, 1.5);
+  // Drop another mesh after the drag: the editor asks and holds the open back; Escape cancels.
+  const auto r = play(plan.events + ",\n" + R"({"type": "drop", "paths": [")" + dir_.file("other.ply") +
+                          R"("]}, {"type": "wait", "frames": 3}, {"type": "key", "key": "escape"}, {"type": "wait", "frames": 2})",
+                      "--save " + dir_.file("still.ply"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const CovarianceMesh still = read_mesh(dir_.file("still.ply"));
+  EXPECT_EQ(still.n_vertices(), original_.n_vertices());
+  EXPECT_NE(still.covariance(kVertex), original_.covariance(kVertex));  // the edit is still there
+  // Without changes the same drop opens the other mesh at once.
+  const auto clean = play(R"({"type": "drop", "paths": [")" + dir_.file("other.ply") + R"("]}, {"type": "wait", "frames": 2})",
+                          "--save " + dir_.file("opened.ply"));
+  ASSERT_EQ(clean.exit_code, 0) << clean.output;
+  EXPECT_EQ(read_mesh(dir_.file("opened.ply")).n_vertices(), make_sample("torus").n_vertices());
 }
 
 TEST(EditorCommandLine, BadInputIsOneLineAndNonZero) {
