@@ -6,12 +6,11 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
-#include <fstream>
-#include <sstream>
 
 #include "../support/run_command.h"
 #include "../support/temp_dir.h"
 #include "core/mesh_io.h"
+#include "core/text_file.h"
 #include "core/samples.h"
 #include "render/image_io.h"
 #include "render/picking.h"
@@ -23,13 +22,6 @@ namespace {
 
 constexpr int kWidth = 1024, kHeight = 700;
 constexpr int kVertex = 6;  // the cube's (1, 1, 1) corner, in front for the default camera
-
-std::string contents(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::string editor(const std::string& args) { return std::string(GPSURF_EDITOR_BINARY) + " " + args; }
 
@@ -161,12 +153,12 @@ TEST_F(EditorTest, UndoAfterTheDragRestoresTheOriginalFileExactly) {
   const auto r = play(plan.events + ",\n" + R"({"type": "key", "key": "ctrl+z"}, {"type": "wait", "frames": 2})",
                       "--save " + dir_.file("undone.ply"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(contents(dir_.file("undone.ply")), contents(dir_.file("original.ply")));
+  EXPECT_EQ(read_text_file(dir_.file("undone.ply")), read_text_file(dir_.file("original.ply")));
   // And redo brings the drag back.
   const auto redo = play(plan.events + ",\n" + R"({"type": "key", "key": "ctrl+z"}, {"type": "key", "key": "ctrl+shift+z"})",
                          "--save " + dir_.file("redone.ply"));
   ASSERT_EQ(redo.exit_code, 0) << redo.output;
-  EXPECT_NE(contents(dir_.file("redone.ply")), contents(dir_.file("original.ply")));
+  EXPECT_NE(read_text_file(dir_.file("redone.ply")), read_text_file(dir_.file("original.ply")));
   EXPECT_NE(read_mesh(dir_.file("redone.ply")).covariance(kVertex), original_.covariance(kVertex));
 }
 
@@ -176,7 +168,7 @@ TEST_F(EditorTest, AMalformedFileIsReportedAndTheMeshStays) {
                       "--save " + dir_.file("kept.ply") + " --screenshot " + dir_.file("error.png"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("broken.ply"), std::string::npos) << r.output;
-  EXPECT_EQ(contents(dir_.file("kept.ply")), contents(dir_.file("original.ply")));
+  EXPECT_EQ(read_text_file(dir_.file("kept.ply")), read_text_file(dir_.file("original.ply")));
   // The error is on screen: red text in the status bar.
   const Image shot = read_image(dir_.file("error.png"));
   int red = 0;

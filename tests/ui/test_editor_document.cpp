@@ -2,23 +2,15 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 
 #include "../support/temp_dir.h"
 #include "core/error.h"
 #include "core/mesh_io.h"
+#include "core/text_file.h"
 #include "core/samples.h"
 
 namespace gps {
 namespace {
-
-std::string contents(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 TEST(EditorDocument, AMalformedFileKeepsTheCurrentMesh) {
   const test::TempDir dir;
@@ -57,7 +49,7 @@ TEST(EditorDocument, SavingClearsDirtyAndKeepsTheFormat) {
   EXPECT_TRUE(doc.dirty());
   doc.save(doc.ply_path());
   EXPECT_FALSE(doc.dirty());
-  EXPECT_NE(contents(dir.file("b.ply")).find("format binary_little_endian"), std::string::npos);
+  EXPECT_NE(read_text_file(dir.file("b.ply")).find("format binary_little_endian"), std::string::npos);
   EXPECT_EQ(read_mesh(dir.file("b.ply")).covariance(2), 0.5 * make_sample("cube").covariance(2));
   // Undo after saving is an unsaved change again; redo returns to the saved state.
   doc.history.undo(doc.mesh);
