@@ -139,6 +139,7 @@ private:
   std::string status_;
   bool status_error_ = false;
   std::string last_title_;
+  int swap_interval_ = -1;
 };
 
 Editor::Editor(const EditorOptions& options)
@@ -343,7 +344,8 @@ bool Editor::script_finished() {
 
 void Editor::frame() {
   glfwPollEvents();
-  glfwSwapInterval(view_.vsync && !script_ ? 1 : 0);
+  const int swap_interval = view_.vsync && !script_ ? 1 : 0;  // replays run as fast as they can
+  if (swap_interval != swap_interval_) glfwSwapInterval(swap_interval_ = swap_interval);
   frame_input_time_ = Clock::now();
   const std::vector<InputEvent> events = script_ ? script_->next_frame() : queue_.take_frame();
   if (recorder_) recorder_->record_frame(events);

@@ -39,7 +39,7 @@ ViewPanelChanges draw_view_panel(ViewOptions& o, bool* open) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(120);
   ImGui::SliderFloat("k-sigma", &o.draw.sigma_scale, 0.1f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-  if (ImGui::Checkbox("v-sync", &o.vsync)) changes.vsync = true;
+  ImGui::Checkbox("v-sync", &o.vsync);
   ImGui::SameLine();
   ImGui::Checkbox("statistics", &o.show_statistics);
   ImGui::PopItemWidth();

@@ -9,7 +9,6 @@ struct ViewPanelChanges {
   bool depth = false;          // the plans must be rebuilt
   bool matcap = false;         // options.matcap names another built-in
   bool load_matcap = false;    // the user asked to load a MatCap image
-  bool vsync = false;
 };
 
 ViewPanelChanges draw_view_panel(ViewOptions& options, bool* open);
