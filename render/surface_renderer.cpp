@@ -123,14 +123,11 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, int depth) {
   upload(buffers_[kPoints], buffer_sizes_[kPoints], std::vector<float>(size_t(s.n_points()) * 12, 0.0f));
   upload_gaussians(mesh);
   // Base mesh lines: the vertex positions (updated by edits) and each edge as a pair of indices.
-  std::vector<float> positions(3 * mesh.n_vertices());
-  for (size_t i = 0; i < mesh.n_vertices(); ++i)
-    for (int k = 0; k < 3; ++k) positions[3 * i + size_t(k)] = float(mesh.mean(i)[k]);
   std::vector<unsigned> edges;
   edges.reserve(2 * mesh.mesh.n_edges());
   for (const auto e : mesh.mesh.edges()) edges.insert(edges.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
   line_index_count_ = int(edges.size());
-  glNamedBufferData(lines_vbo_, GLsizeiptr(std::max<size_t>(3, positions.size()) * sizeof(float)), positions.data(), GL_DYNAMIC_DRAW);
+  upload_line_positions(mesh);
   glNamedBufferData(lines_ibo_, GLsizeiptr(std::max<size_t>(2, edges.size()) * sizeof(unsigned)), edges.data(), GL_STATIC_DRAW);
   run_compute(nullptr);
 }
@@ -150,7 +147,20 @@ void SurfaceRenderer::upload_gaussians(const CovarianceMesh& mesh) {
     upload(buffers_[kGaussians], buffer_sizes_[kGaussians], g);
 }
 
+void SurfaceRenderer::upload_line_positions(const CovarianceMesh& mesh) {
+  std::vector<float> positions(3 * mesh.n_vertices());
+  for (size_t i = 0; i < mesh.n_vertices(); ++i)
+    for (int k = 0; k < 3; ++k) positions[3 * i + size_t(k)] = float(mesh.mean(i)[k]);
+  glNamedBufferData(lines_vbo_, GLsizeiptr(std::max<size_t>(3, positions.size()) * sizeof(float)), positions.data(), GL_DYNAMIC_DRAW);
+}
+
 void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  if (changed.size() * 8 > size_t(n_base_)) {  // most of the mesh (select all, drag): whole buffers, one call each
+    upload_gaussians(mesh);
+    upload_line_positions(mesh);
+    run_compute(nullptr);
+    return;
+  }
   for (const int v : changed) {
     const Vec3 m = mesh.mean(size_t(v));
     const Mat3& c = mesh.covariance(size_t(v));

@@ -58,7 +58,8 @@ public:
 
   /// New topology: builds plans and stencils (CPU) and uploads everything, then a full compute pass.
   void set_mesh(const CovarianceMesh& mesh, int depth);
-  /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them.
+  /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them
+  /// (past an eighth of the vertices: whole buffers and the full passes, fewer calls).
   void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);
   /// The compute passes over every vertex and stencil row (as after set_mesh), for benchmarks.
   void recompute_all() { run_compute(nullptr); }
@@ -87,6 +88,7 @@ public:
 
 private:
   void upload_gaussians(const CovarianceMesh& mesh);
+  void upload_line_positions(const CovarianceMesh& mesh);
   void upload_ellipsoids(const CovarianceMesh& mesh, const std::vector<int>* changed);
   void run_compute(const std::vector<int>* changed);
   void draw_patches(const ShaderProgram& program, const DrawOptions& options) const;

@@ -199,6 +199,28 @@ TEST_F(GpuTest, EditingOneCovarianceUpdatesTheSurface) {
   EXPECT_EQ(mismatched, 0);
 }
 
+// Edits of one vertex, of a few, and of most of the mesh (the whole-buffer path) leave the plan
+// points exactly where a renderer built for the edited mesh has them.
+TEST_F(GpuTest, EditsOfAnySizeEqualARebuild) {
+  CovarianceMesh mesh = make_sample("torus");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, 3);
+  const std::vector<std::vector<int>> edits = {{5}, {1, 40, 41, 200}, [&mesh] {
+    std::vector<int> most;
+    for (int v = 0; v < int(mesh.n_vertices()); v += 2) most.push_back(v);
+    return most;
+  }()};
+  for (const auto& changed : edits) {
+    for (const int v : changed) {
+      mesh.covariances[size_t(v)] *= 0.5;
+      mesh.set_mean(size_t(v), mesh.mean(size_t(v)) * 1.1);
+    }
+    renderer.update_vertices(mesh, changed);
+    SurfaceRenderer rebuilt;
+    rebuilt.set_mesh(mesh, 3);
+    EXPECT_EQ(renderer.read_points(), rebuilt.read_points()) << changed.size() << " vertices";
+  }
+}
 
 // --wireframe over static triangles (render --reference) draws every triangle's edges, shading
 // untouched elsewhere; without it the triangle program has no geometry shader.
