@@ -14,6 +14,7 @@
 #include "core/atomic_file.h"
 #include "core/dual_map.h"
 #include "core/error.h"
+#include "core/median.h"
 #include "core/plan_builder.h"
 #include "core/samples.h"
 #include "core/stencil_table.h"
@@ -41,10 +42,7 @@ std::vector<double> interleaved_median_seconds(const std::vector<std::function<v
       times[i].push_back(std::chrono::duration<double>(Clock::now() - t0).count());
     }
   std::vector<double> medians;
-  for (auto& t : times) {
-    std::nth_element(t.begin(), t.begin() + long(t.size() / 2), t.end());
-    medians.push_back(t[t.size() / 2]);
-  }
+  for (auto& t : times) medians.push_back(median(std::move(t)));
   return medians;
 }
 

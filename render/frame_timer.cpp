@@ -1,5 +1,7 @@
 #include "render/frame_timer.h"
 
+#include "core/median.h"
+
 #include <glad/gl.h>
 
 #include <algorithm>
@@ -26,10 +28,6 @@ FrameTiming time_gl_work(const std::function<void()>& work, int repeats) {
     gpu.push_back(double(ns) * 1e-6);
   }
   glDeleteQueries(1, &query);
-  const auto median = [](std::vector<double>& v) {
-    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
   return {median(gpu), median(wall)};
 }
 

@@ -26,13 +26,6 @@ void FrameClock::edit_shown(Clock::time_point edit_time) {
   ++edit_total_;
 }
 
-double FrameClock::median(const std::deque<double>& values) {
-  if (values.empty()) return 0.0;
-  std::vector<double> v(values.begin(), values.end());
-  std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
-
 void draw_statistics_overlay(const FrameClock& clock, const std::vector<std::pair<std::string, double>>& gpu_passes,
                              const DrawStatistics& draw, bool* open) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/median.h"
 #include "render/surface_renderer.h"
 
 namespace gps {
@@ -19,13 +20,12 @@ public:
   void frame_done();
   /// Call when the frame that shows an edit made at `edit_time` has finished on the GPU.
   void edit_shown(Clock::time_point edit_time);
-  double median_frame_ms() const { return median(frames_); }
-  double median_edit_ms() const { return median(edits_); }
+  double median_frame_ms() const { return median({frames_.begin(), frames_.end()}); }
+  double median_edit_ms() const { return median({edits_.begin(), edits_.end()}); }
   double last_edit_ms() const { return edits_.empty() ? 0.0 : edits_.back(); }
   size_t edit_count() const { return edit_total_; }
 
 private:
-  static double median(const std::deque<double>& values);
   Clock::time_point last_frame_{};
   std::deque<double> frames_, edits_;
   size_t edit_total_ = 0;
