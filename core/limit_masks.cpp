@@ -67,5 +67,6 @@ template std::vector<Vec3> catmull_clark_limit(const PolygonTopology&, const Mes
 template std::vector<Dual> catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&);
 template std::vector<Vec3> loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&, LoopBeta);
 template std::vector<Dual> loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&, LoopBeta);
+template std::vector<Eigen::VectorXd> loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Eigen::VectorXd>&, LoopBeta);
 
 }  // namespace gps

@@ -1,11 +1,37 @@
+// The bases of the patches in a plan and the descent through triangle nodes: ONE source, compiled
+// as C++ (namespace gps, double) and, with GPS_GLSL defined, embedded into the shaders as GLSL
+// (float) by cmake/embed_shaders.cmake, as OpenSubdiv does with osd/patchBasis.h. Keep to the
+// common subset of both languages: the macros below cover parameters, constants and arrays.
+#ifndef GPS_GLSL
 #pragma once
-// The cubic bases of the patches in a plan (thesis 2.3); shaders/patch_basis.glsl mirrors this file.
-
 namespace gps {
+#define GPS_REAL double
+#define GPS_FN inline
+#define GPS_CONST inline constexpr
+#define GPS_OUT               // arrays are passed by pointer in C++
+#define GPS_OUT_REF(T) T&
+#define GPS_INOUT_REF(T) T&
+#else
+#define GPS_REAL float
+#define GPS_FN
+#define GPS_CONST const
+#define GPS_OUT out
+#define GPS_OUT_REF(T) out T
+#define GPS_INOUT_REF(T) inout T
+#endif
+
+// Node kinds of core/plan_table.h (C++: the values of NodeKind).
+GPS_CONST int kNodeInternal = 0;
+GPS_CONST int kNodeRegular = 1;       // quads: bicubic B-spline; triangles: Loop's quartic box spline
+GPS_CONST int kNodeTerminal = 2;      // quads: bicubic Bézier from the rules of thesis Fig. 2.5
+GPS_CONST int kNodeExtraordinary = 3; // triangles: exact evaluation at an extraordinary corner
+// Levels of the extraordinary tables (core/loop_ev_tables.h): below 2^-kEvLevels of the corner,
+// the limit masks give the point (closer than double precision resolves).
+GPS_CONST int kEvLevels = 40;
 
 /// Uniform cubic B-spline basis on one segment, t in [0,1]: values w[0..3] and derivatives dw[0..3].
-inline void bspline_basis(double t, double w[4], double dw[4]) {
-  const double s = 1.0 - t, t2 = t * t;
+GPS_FN void bspline_basis(GPS_REAL t, GPS_OUT GPS_REAL w[4], GPS_OUT GPS_REAL dw[4]) {
+  GPS_REAL s = 1.0 - t, t2 = t * t;
   w[0] = s * s * s / 6.0;
   w[1] = (3.0 * t2 * t - 6.0 * t2 + 4.0) / 6.0;
   w[2] = (-3.0 * t2 * t + 3.0 * t2 + 3.0 * t + 1.0) / 6.0;
@@ -17,8 +43,8 @@ inline void bspline_basis(double t, double w[4], double dw[4]) {
 }
 
 /// Cubic Bernstein basis, t in [0,1]: values w[0..3] and derivatives dw[0..3].
-inline void bezier_basis(double t, double w[4], double dw[4]) {
-  const double s = 1.0 - t;
+GPS_FN void bezier_basis(GPS_REAL t, GPS_OUT GPS_REAL w[4], GPS_OUT GPS_REAL dw[4]) {
+  GPS_REAL s = 1.0 - t;
   w[0] = s * s * s;
   w[1] = 3.0 * t * s * s;
   w[2] = 3.0 * t * t * s;
@@ -29,4 +55,143 @@ inline void bezier_basis(double t, double w[4], double dw[4]) {
   dw[3] = 3.0 * t * t;
 }
 
+// Loop's regular patch (Stam 1998, "Evaluation of Loop subdivision surfaces"): the quartic box
+// spline over a triangle (v0, v1, v2) = lattice points (0,0), (1,0), (0,1), parameters (u, v) with
+// barycentrics (1−u−v, u, v). Its 12 control points are the lattice points of the three corners'
+// 1-rings, in this order: (0,0) (1,0) (0,1) (−1,0) (0,−1) (1,−1) (−1,1) (2,−1) (2,0) (1,1) (0,2) (−1,2).
+// The patch is a quartic Bézier triangle whose 15 ordinates b_ab (weight of u^a v^b w^(4−a−b), rows
+// in the order b = 0..4, a = 0..4−b) are these combinations of the 12 control points, times 1/24;
+// tests/core/test_loop_patch_basis.cpp derives them again from Loop subdivision and limit masks.
+#ifdef GPS_GLSL
+const float kLoopBezier[180] = float[180](
+#else
+inline constexpr double kLoopBezier[180] = {
+#endif
+  12, 2, 2, 2, 2, 2, 2, 0, 0, 0, 0, 0,
+  12, 4, 3, 0, 1, 3, 1, 0, 0, 0, 0, 0,
+  8, 8, 4, 0, 0, 4, 0, 0, 0, 0, 0, 0,
+  4, 12, 3, 0, 0, 3, 0, 1, 0, 1, 0, 0,
+  2, 12, 2, 0, 0, 2, 0, 2, 2, 2, 0, 0,
+  12, 3, 4, 1, 0, 1, 3, 0, 0, 0, 0, 0,
+  10, 6, 6, 0, 0, 1, 1, 0, 0, 0, 0, 0,
+  6, 10, 6, 0, 0, 1, 0, 0, 0, 1, 0, 0,
+  3, 12, 4, 0, 0, 1, 0, 0, 1, 3, 0, 0,
+  8, 4, 8, 0, 0, 0, 4, 0, 0, 0, 0, 0,
+  6, 6, 10, 0, 0, 0, 1, 0, 0, 1, 0, 0,
+  4, 8, 8, 0, 0, 0, 0, 0, 0, 4, 0, 0,
+  4, 3, 12, 0, 0, 0, 3, 0, 0, 1, 0, 1,
+  3, 4, 12, 0, 0, 0, 1, 0, 0, 3, 1, 0,
+  2, 2, 12, 0, 0, 0, 2, 0, 0, 2, 2, 2
+#ifdef GPS_GLSL
+);
+#else
+};
+#endif
+
+/// Loop's box-spline basis at (u, v): weights w[0..11] of the 12 control points and their u and v
+/// derivatives, through the quartic Bernstein polynomials B_ab = 4!/(a! b! c!) u^a v^b w^c, c = 4−a−b.
+GPS_FN void loop_box_spline_basis(GPS_REAL u, GPS_REAL v, GPS_OUT GPS_REAL w[12], GPS_OUT GPS_REAL du[12],
+                                  GPS_OUT GPS_REAL dv[12]) {
+  GPS_REAL t = 1.0 - u - v;
+  GPS_REAL pu[5], pv[5], pt[5];  // powers 0..4
+  pu[0] = 1.0; pv[0] = 1.0; pt[0] = 1.0;
+  for (int i = 1; i < 5; ++i) {
+    pu[i] = pu[i - 1] * u;
+    pv[i] = pv[i - 1] * v;
+    pt[i] = pt[i - 1] * t;
+  }
+  for (int k = 0; k < 12; ++k) {
+    w[k] = 0.0;
+    du[k] = 0.0;
+    dv[k] = 0.0;
+  }
+  int row = 0;
+  for (int b = 0; b <= 4; ++b)
+    for (int a = 0; a <= 4 - b; ++a) {
+      int c = 4 - a - b;
+      // multinomial 4!/(a! b! c!) from the exponents
+      GPS_REAL m = 24.0;
+      for (int i = 2; i <= a; ++i) m /= GPS_REAL(i);
+      for (int i = 2; i <= b; ++i) m /= GPS_REAL(i);
+      for (int i = 2; i <= c; ++i) m /= GPS_REAL(i);
+      GPS_REAL value = m * pu[a] * pv[b] * pt[c];
+      // d/du and d/dv of u^a v^b (1−u−v)^c
+      GPS_REAL d_t = c > 0 ? m * GPS_REAL(c) * pu[a] * pv[b] * pt[c - 1] : 0.0;
+      GPS_REAL value_u = (a > 0 ? m * GPS_REAL(a) * pu[a - 1] * pv[b] * pt[c] : 0.0) - d_t;
+      GPS_REAL value_v = (b > 0 ? m * GPS_REAL(b) * pu[a] * pv[b - 1] * pt[c] : 0.0) - d_t;
+      for (int k = 0; k < 12; ++k) {
+        GPS_REAL x = kLoopBezier[12 * row + k] / 24.0;
+        w[k] += x * value;
+        du[k] += x * value_u;
+        dv[k] += x * value_v;
+      }
+      row += 1;
+    }
+}
+
+/// One step down a triangle node (core/plan_table.h): the child under (u, v) — 0 at corner 0
+/// (u + v < ½), 1 at corner 1 (u ≥ ½), 2 at corner 2 (v ≥ ½), 3 the middle triangle, turned by a
+/// half turn — with (u, v) mapped into the child's domain; `sign` (±1) times 2 is d(child)/d(node).
+GPS_FN int triangle_child(GPS_INOUT_REF(GPS_REAL) u, GPS_INOUT_REF(GPS_REAL) v, GPS_OUT_REF(GPS_REAL) sign) {
+  sign = 1.0;
+  if (u + v < 0.5) {
+    u = 2.0 * u;
+    v = 2.0 * v;
+    return 0;
+  }
+  if (u >= 0.5) {
+    u = 2.0 * u - 1.0;
+    v = 2.0 * v;
+    return 1;
+  }
+  if (v >= 0.5) {
+    u = 2.0 * u;
+    v = 2.0 * v - 1.0;
+    return 2;
+  }
+  u = 1.0 - 2.0 * u;
+  v = 1.0 - 2.0 * v;
+  sign = -1.0;
+  return 3;
+}
+
+/// Parameters (s, t) of a triangle node turned so that its corner r is corner 0: barycentrics
+/// (b0, b1, b2) = (1−u−v, u, v) become s = b_{r+1}, t = b_{r+2}.
+GPS_FN void turn_to_corner(int r, GPS_REAL u, GPS_REAL v, GPS_OUT_REF(GPS_REAL) s, GPS_OUT_REF(GPS_REAL) t) {
+  GPS_REAL b0 = 1.0 - u - v;
+  if (r == 0) { s = u; t = v; }
+  else if (r == 1) { s = v; t = b0; }
+  else { s = b0; t = u; }
+}
+
+/// Derivatives back from (s, t) of turn_to_corner() to (u, v): d/du, d/dv of a function with
+/// derivatives (f_s, f_t), as coefficients: d/du = a_s f_s + a_t f_t, d/dv = b_s f_s + b_t f_t.
+GPS_FN void turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]) {
+  if (r == 0) { c[0] = 1.0; c[1] = 0.0; c[2] = 0.0; c[3] = 1.0; }
+  else if (r == 1) { c[0] = 0.0; c[1] = -1.0; c[2] = 1.0; c[3] = -1.0; }
+  else { c[0] = -1.0; c[1] = 1.0; c[2] = -1.0; c[3] = 0.0; }
+}
+
+/// Where (s, t) of an extraordinary node falls (Stam 1998, §3), its extraordinary vertex at
+/// (0, 0): after n halvings toward that corner, in child c = 1..3 of triangle_child() at the new
+/// (s, t). Returns the table block 3n + c − 1 (core/loop_ev_tables.h), or −1 closer to the corner
+/// than 2^−kEvLevels (there the limit masks apply); `scale` = d(new s, t)/d(s, t).
+GPS_FN int loop_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale) {
+  scale = 1.0;
+  int n = 0;
+  while (s + t < 0.5 && n < kEvLevels - 1) {
+    s = 2.0 * s;
+    t = 2.0 * t;
+    scale = 2.0 * scale;
+    n += 1;
+  }
+  if (s + t < 0.5) return -1;
+  GPS_REAL sign = 1.0;
+  int child = triangle_child(s, t, sign);
+  scale = 2.0 * sign * scale;
+  return 3 * n + child - 1;
+}
+
+#ifndef GPS_GLSL
 }  // namespace gps
+#endif

@@ -7,8 +7,85 @@
 
 namespace gps {
 
+namespace {
+
+// A triangle plan (core/plan_table.h, Loop): descend with triangle_child(), then a box-spline
+// node or an extraordinary node (core/loop_ev_tables.h); mirrors shaders/loop_eval.glsl.
+void evaluate_triangle_dual(const PlanTable& plans, const std::vector<Dual>& points, int patch, double u, double v,
+                            Dual& q, Dual& q_u, Dual& q_v, int* depth_out, NodeKind* kind_out) {
+  const int32_t* nodes = plans.nodes.data();
+  int node = plans.patch_roots[size_t(patch)];
+  double scale = 1.0;  // d(node parameter)/d(patch parameter), with the half turns of middle children
+  int depth = 0;
+  while (nodes[node] == kNodeInternal) {
+    double sign = 1.0;
+    const int child = triangle_child(u, v, sign);
+    scale *= 2.0 * sign;
+    ++depth;
+    node = nodes[node + 1 + child];
+  }
+  q.setZero();
+  q_u.setZero();
+  q_v.setZero();
+  const int kind = nodes[node];
+  if (kind == kNodeRegular) {
+    double w[12], wu[12], wv[12];
+    loop_box_spline_basis(u, v, w, wu, wv);
+    for (int j = 0; j < 12; ++j) {
+      const Dual& p = points[size_t(nodes[node + 1 + j])];
+      q += w[j] * p;
+      q_u += wu[j] * p;
+      q_v += wv[j] * p;
+    }
+  } else {
+    const int r = nodes[node + 1], k = nodes[node + 3];
+    const double* table = plans.ev_tables.data() + nodes[node + 2];
+    double s, t, ev_scale;
+    turn_to_corner(r, u, v, s, t);
+    const int block = loop_ev_locate(s, t, ev_scale);
+    double w[12], ws[12], wt[12];
+    const double* rows;
+    int n_rows;
+    if (block >= 0) {
+      loop_box_spline_basis(s, t, w, ws, wt);
+      rows = table + size_t(12 * block) * size_t(k);
+      n_rows = 12;
+    } else {  // the limit masks: rows 0, 1, 2 are position, d/ds, d/dt
+      w[0] = 1.0, ws[0] = 0.0, wt[0] = 0.0, w[1] = 0.0, ws[1] = 1.0, wt[1] = 0.0, w[2] = 0.0, ws[2] = 0.0, wt[2] = 1.0;
+      rows = table + size_t(36 * kEvLevels) * size_t(k);
+      n_rows = 3;
+      ev_scale = 1.0;
+    }
+    Dual q_s = Dual::Zero(), q_t = Dual::Zero();
+    for (int i = 0; i < k; ++i) {
+      double a = 0.0, a_s = 0.0, a_t = 0.0;
+      for (int j = 0; j < n_rows; ++j) {
+        const double x = rows[size_t(j * k + i)];
+        a += w[j] * x;
+        a_s += ws[j] * x;
+        a_t += wt[j] * x;
+      }
+      const Dual& p = points[size_t(nodes[node + 4 + i])];
+      q += a * p;
+      q_s += a_s * p;
+      q_t += a_t * p;
+    }
+    double d[4];
+    turned_derivative_coefficients(r, d);
+    q_u = ev_scale * (d[0] * q_s + d[1] * q_t);
+    q_v = ev_scale * (d[2] * q_s + d[3] * q_t);
+  }
+  q_u *= scale;
+  q_v *= scale;
+  if (depth_out) *depth_out = depth;
+  if (kind_out) *kind_out = NodeKind(kind);
+}
+
+}  // namespace
+
 void evaluate_dual(const PlanTable& plans, const std::vector<Dual>& points, int patch, double u, double v, Dual& q,
                    Dual& q_u, Dual& q_v, int* depth_out, NodeKind* kind_out) {
+  if (plans.shape == PatchShape::triangle) return evaluate_triangle_dual(plans, points, patch, u, v, q, q_u, q_v, depth_out, kind_out);
   int node = plans.patch_roots[size_t(patch)];
   double scale = 1.0;  // d(node parameter)/d(patch parameter)
   int depth = 0;

@@ -17,12 +17,31 @@
 //             rules baked into the stencils), same i + 4·j order.
 // A node at depth k covers a square of side 2^-k of its patch; its domain is rescaled to [0,1]²,
 // so derivatives in patch parameters are 2^k times the node's.
+//
+// Triangle plans (Loop, core/loop_plan_builder.h) use the same arrays with triangle nodes over
+// parameters (u, v), barycentrics (1−u−v, u, v):
+//   internal: nodes[o+1 .. o+4] = the four children of triangle_child() (core/patch_basis.h);
+//   regular:  nodes[o+1 .. o+12] = the 12 control points of Loop's box-spline patch, in the
+//             order of loop_box_spline_basis();
+//   extraordinary: nodes[o+1] = r, the corner of the node at the extraordinary vertex;
+//             nodes[o+2] = offset of its table in ev_tables; nodes[o+3] = K; nodes[o+4 .. o+3+K]
+//             = the K points of its neighbourhood (core/loop_ev_tables.h), evaluated exactly.
 #include <cstdint>
 #include <vector>
 
+#include "core/patch_basis.h"
+
 namespace gps {
 
-enum class NodeKind : int32_t { internal = 0, regular = 1, terminal = 2 };
+enum class NodeKind : int32_t {
+  internal = kNodeInternal,
+  regular = kNodeRegular,
+  terminal = kNodeTerminal,
+  extraordinary = kNodeExtraordinary
+};
+
+/// The shape of the patches of a plan: quads (Catmull-Clark) or triangles (Loop).
+enum class PatchShape : int32_t { quad = 4, triangle = 3 };
 
 struct StencilTable {
   int32_t n_base = 0;            // number of base vertices (points that are q_i themselves)
@@ -34,12 +53,16 @@ struct StencilTable {
 };
 
 struct PlanTable {
+  PatchShape shape = PatchShape::quad;
   int32_t max_depth = 3;
   std::vector<int32_t> nodes;                 // node records, see above
   std::vector<int32_t> patch_roots;           // per patch: offset of its root node in nodes
-  std::vector<int32_t> patch_corner_points;   // 4 per patch: points whose means are the corners of
-                                              // the patch's control quad (for edge tessellation levels);
-                                              // a corner shared by two patches has the same index in both
+  std::vector<int32_t> patch_corner_points;   // 4 (quads) or 3 (triangles) per patch: points whose means
+                                              // are the corners of the patch's control polygon (for edge
+                                              // tessellation levels); a corner shared by two patches has
+                                              // the same index in both
+  std::vector<double> ev_tables;              // triangles: the tables of core/loop_ev_tables.h
+  int32_t corners() const { return int32_t(shape); }
   int32_t n_patches() const { return int32_t(patch_roots.size()); }
 };
 

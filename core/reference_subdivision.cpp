@@ -55,6 +55,36 @@ CornerParams refine_corner_params(const PolygonTopology& t, const CornerParams& 
   return out;
 }
 
+bool all_triangles(const PolygonTopology& t) {
+  for (int f = 0; f < t.n_faces(); ++f)
+    if (t.face_size(f) != 3) return false;
+  return true;
+}
+
+// Loop: face f is patch f, its corners at (0,0), (1,0), (0,1) (core/loop_plan_builder.h).
+CornerParams loop_base_corner_params(const PolygonTopology& t) {
+  CornerParams params(t.verts.size());
+  for (int f = 0; f < t.n_faces(); ++f) {
+    const int o = t.offsets[size_t(f)];
+    params[size_t(o)] = {f, 0, 0};
+    params[size_t(o + 1)] = {f, 1, 0};
+    params[size_t(o + 2)] = {f, 0, 1};
+  }
+  return params;
+}
+
+// Corner params of the Loop children, in loop_topology() order.
+CornerParams refine_loop_corner_params(const PolygonTopology& t, const CornerParams& params) {
+  CornerParams out;
+  out.reserve(4 * t.verts.size());
+  for (int f = 0; f < t.n_faces(); ++f) {
+    const PatchParam* p = &params[size_t(t.offsets[size_t(f)])];
+    const PatchParam m01 = midpoint(p[0], p[1]), m12 = midpoint(p[1], p[2]), m20 = midpoint(p[2], p[0]);
+    out.insert(out.end(), {p[0], m01, m20, p[1], m12, m01, p[2], m20, m12, m01, m12, m20});
+  }
+  return out;
+}
+
 std::vector<PatchParam> vertex_params_of(const PolygonTopology& t, const CornerParams& params) {
   std::vector<PatchParam> out(size_t(t.n_vertices));
   for (size_t i = 0; i < t.verts.size(); ++i) {
@@ -72,7 +102,7 @@ std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, co
     throw usage_error("subdivision levels must be 0..8, got " + std::to_string(o.levels));
   PolygonTopology t = base;
   std::vector<T> p = values;
-  if (params) *params = base_corner_params(base);
+  if (params) *params = o.scheme == Scheme::loop ? loop_base_corner_params(base) : base_corner_params(base);
   for (int level = 0; level < o.levels; ++level) {
     const MeshConnectivity c = connectivity_of(t);
     if (o.scheme == Scheme::catmull_clark) {
@@ -81,6 +111,7 @@ std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, co
       t = catmull_clark_topology(t, c);
     } else {
       p = loop_values(t, c, p, o.loop_beta);
+      if (params) *params = refine_loop_corner_params(t, *params);
       t = loop_topology(t, c);
     }
   }
@@ -111,8 +142,8 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariances[i]);
   PolygonTopology t;
   CornerParams params;
-  const bool cc = options.scheme == Scheme::catmull_clark;
-  const std::vector<Dual> refined = run(base, q, options, &t, cc ? &params : nullptr);
+  const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
+  const std::vector<Dual> refined = run(base, q, options, &t, with_params ? &params : nullptr);
 
   std::vector<Vec3> means(refined.size());
   std::vector<Mat3> covariances(refined.size());
@@ -135,7 +166,7 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
     if (!out.add_face(fv).is_valid()) throw Error("subdivided mesh: face " + std::to_string(f) + " could not be added");
   }
   result.mesh.covariances = std::move(covariances);
-  if (cc) result.vertex_params = vertex_params_of(t, params);
+  if (with_params) result.vertex_params = vertex_params_of(t, params);
   return result;
 }
 

@@ -20,8 +20,8 @@ struct SubdivisionOptions {
 
 struct SubdivisionResult {
   CovarianceMesh mesh;
-  /// Catmull-Clark only: for each output vertex, one (patch, u, v) of the input mesh's patch layout
-  /// (core/patch_layout.h) where it lies; empty for Loop.
+  /// For each output vertex, one (patch, u, v) where it lies: Catmull-Clark in the input mesh's patch
+  /// layout (core/patch_layout.h), Loop in its triangle patches (core/loop_plan_builder.h).
   std::vector<PatchParam> vertex_params;
 };
 

@@ -11,24 +11,13 @@
 #include "core/patch_layout.h"
 #include "core/reference_subdivision.h"
 #include "tests/support/plan_fixture.h"
+#include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
 
 using test::PlannedMesh;
-
-CovarianceMesh with_random_covariances(CovarianceMesh m, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (auto& c : m.covariances) {
-    Mat3 a;
-    for (int i = 0; i < 9; ++i) a.data()[i] = u(rng);
-    const double s = c.trace() / 3.0;
-    c = s * (0.3 * a * a.transpose() + 0.2 * Mat3::Identity());
-    c = (0.5 * (c + c.transpose())).eval();
-  }
-  return m;
-}
+using test::with_random_covariances;
 
 // Max distance (relative to the bounding-box diagonal) between plan and reference limit vertices,
 // over the vertices whose leaf node is of the given kinds.

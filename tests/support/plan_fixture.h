@@ -2,6 +2,7 @@
 // A mesh with its plans, stencils and evaluated plan points, for tests of the plans.
 #include "core/dual_map.h"
 #include "core/plan_builder.h"
+#include "core/planned_surface.h"
 #include "core/samples.h"
 #include "core/stencil_table.h"
 
@@ -12,11 +13,12 @@ struct PlannedMesh {
   PlanTables tables;
   std::vector<Dual> base, points;
 
-  PlannedMesh(CovarianceMesh m, int depth) : mesh(std::move(m)), tables(build_plans(topology_of(mesh.mesh), depth)) {
-    base.resize(mesh.n_vertices());
-    for (size_t i = 0; i < base.size(); ++i) base[i] = to_dual(mesh.mean(i), mesh.covariance(i));
+  PlannedMesh(CovarianceMesh m, const PlanOptions& options)
+      : mesh(std::move(m)), tables(build_surface_plans(topology_of(mesh.mesh), options)), base(base_points(mesh)) {
     points = apply_stencils(tables.stencils, base);
   }
+  /// Catmull-Clark plans of the given depth.
+  PlannedMesh(CovarianceMesh m, int depth) : PlannedMesh(std::move(m), PlanOptions{Scheme::catmull_clark, depth}) {}
 };
 
 }  // namespace gps::test

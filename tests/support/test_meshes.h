@@ -1,6 +1,7 @@
 #pragma once
 // Small covariance meshes built inside the tests (no files).
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "core/covariance_mesh.h"
@@ -49,6 +50,60 @@ inline CovarianceMesh prism_mesh(double sigma = 0.4) {
   std::vector<std::vector<int>> faces = {{4, 3, 2, 1, 0}, {5, 6, 7, 8, 9}};
   for (int k = 0; k < 5; ++k) faces.push_back({k, (k + 1) % 5, 5 + (k + 1) % 5, 5 + k});
   return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "prism");
+}
+
+/// The icosahedron of circumradius 1: 12 vertices of valence 5, 20 outward triangles.
+inline CovarianceMesh icosahedron_mesh(double sigma = 0.3) {
+  const double g = (1 + std::sqrt(5.0)) / 2, s = 1 / std::sqrt(1 + g * g);
+  std::vector<Vec3> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                         {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  for (auto& x : p) x *= s;
+  std::vector<std::vector<int>> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                                         {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "icosahedron");
+}
+
+/// A closed bipyramid: two apexes of valence n over a ring of n vertices of valence 4.
+inline CovarianceMesh bipyramid_mesh(int n, double sigma = 0.3) {
+  std::vector<Vec3> p = {{0, 0, 1.2}, {0, 0, -0.9}};
+  for (int k = 0; k < n; ++k) p.emplace_back(std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n), 0.1 * std::sin(3.0 * k));
+  std::vector<std::vector<int>> faces;
+  for (int k = 0; k < n; ++k) {
+    faces.push_back({0, 2 + k, 2 + (k + 1) % n});
+    faces.push_back({1, 2 + (k + 1) % n, 2 + k});
+  }
+  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "bipyramid");
+}
+
+/// An open triangle grid of n × m cells (two triangles each) with a bump: regular inside, boundary
+/// vertices of 3 faces, corners of 1 and 2 faces.
+inline CovarianceMesh triangle_grid_mesh(int n, int m, double sigma = 0.3) {
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= n; ++i) p.emplace_back(i + 0.5 * j, 0.87 * j, 0.4 * std::sin(0.9 * i) * std::cos(0.6 * j));
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      faces.push_back({a, a + 1, a + n + 1});
+      faces.push_back({a + 1, a + n + 2, a + n + 1});
+    }
+  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "triangle grid");
+}
+
+/// Every covariance replaced by a random anisotropic one of about the same size.
+inline CovarianceMesh with_random_covariances(CovarianceMesh m, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (auto& c : m.covariances) {
+    Mat3 a;
+    for (int i = 0; i < 9; ++i) a.data()[i] = u(rng);
+    const double s = c.trace() / 3.0;
+    c = s * (0.3 * a * a.transpose() + 0.2 * Mat3::Identity());
+    c = (0.5 * (c + c.transpose())).eval();
+  }
+  return m;
 }
 
 }  // namespace gps::test

@@ -1,0 +1,105 @@
+#include "core/loop_ev_tables.h"
+
+#include <Eigen/Core>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "core/loop_nets.h"
+
+namespace gps {
+
+namespace {
+
+// Rows of `values` (vectors over the coarse vertices) as a matrix over the coarse points `columns`;
+// a weight on any other vertex means the neighbourhood was not complete: a bug, not bad input.
+Eigen::MatrixXd restrict_rows(const std::vector<Eigen::VectorXd>& rows, const std::vector<int>& columns) {
+  Eigen::MatrixXd m(long(rows.size()), long(columns.size()));
+  for (size_t r = 0; r < rows.size(); ++r) {
+    Eigen::VectorXd rest = rows[r];
+    for (size_t c = 0; c < columns.size(); ++c) {
+      m(long(r), long(c)) = rows[r](columns[c]);
+      rest(columns[c]) = 0.0;
+    }
+    if (rest.cwiseAbs().maxCoeff() > 1e-12 || std::abs(m.row(long(r)).sum() - 1.0) > 1e-9)
+      throw std::logic_error("Loop extraordinary table: a subdivided point reads outside its neighbourhood");
+  }
+  return m;
+}
+
+}  // namespace
+
+int LoopEvTables::offset(const LoopEvConfiguration& configuration, const PolygonTopology& mesh,
+                         const MeshConnectivity& connectivity, int v, int a, int b) {
+  if (const auto it = offsets_.find(configuration); it != offsets_.end()) return it->second;
+  const TriangleWalker coarse(mesh, connectivity);
+  const std::vector<int> points = loop_ev_neighbourhood(coarse, v, a, b);
+  const int k = int(points.size()), n = mesh.n_vertices;
+  // One more Loop step of the whole piece, each coarse vertex a unit vector.
+  std::vector<Eigen::VectorXd> unit(size_t(n), Eigen::VectorXd::Zero(n));
+  for (int i = 0; i < n; ++i) unit[size_t(i)](i) = 1.0;
+  const PolygonTopology fine = loop_topology(mesh, connectivity);
+  const std::vector<Eigen::VectorXd> values = loop_values(mesh, connectivity, unit, beta_);
+  const MeshConnectivity fine_connectivity = connectivity_of(fine);
+  const TriangleWalker walker(fine, fine_connectivity);
+  const auto edge_point = [&](int x, int y) { return n + coarse.edge(x, y); };
+  const int ea = edge_point(v, a), eb = edge_point(v, b), eab = edge_point(a, b);
+  // A: the neighbourhood of the corner child (v', e_va, e_vb) from that of (v, a, b).
+  std::vector<Eigen::VectorXd> rows;
+  for (const int p : loop_ev_neighbourhood(walker, v, ea, eb)) rows.push_back(values[size_t(p)]);
+  if (int(rows.size()) != k) throw std::logic_error("Loop extraordinary table: the neighbourhood changed size");
+  const Eigen::MatrixXd step = restrict_rows(rows, points);
+  // Ā_k: the nets of children 1..3 of triangle_child(), regular after one step.
+  const int child[3][3] = {{ea, a, eab}, {eb, eab, b}, {eab, eb, ea}};
+  Eigen::MatrixXd nets[3];
+  for (int c = 0; c < 3; ++c) {
+    rows.clear();
+    for (const auto& combination : loop_regular_net(walker, child[c][0], child[c][1], child[c][2])) {
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+      for (const auto& [vertex, weight] : combination) x += weight * values[size_t(vertex)];
+      rows.push_back(x);
+    }
+    nets[c] = restrict_rows(rows, points);
+  }
+  const int offset = int(tables_.size());
+  tables_.resize(tables_.size() + loop_ev_table_size(k), 0.0);
+  double* table = &tables_[size_t(offset)];
+  Eigen::MatrixXd power = Eigen::MatrixXd::Identity(k, k);
+  for (int level = 0; level < kEvLevels; ++level) {
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::MatrixXd block = nets[c] * power;
+      for (int j = 0; j < 12; ++j)
+        for (int i = 0; i < k; ++i) table[size_t((3 * level + c) * 12 + j) * size_t(k) + size_t(i)] = block(j, i);
+    }
+    power = step * power;
+  }
+  // Limit masks: position and two tangents at v, oriented as (s, t).
+  double* masks = table + size_t(36 * kEvLevels) * size_t(k);
+  const int valence = connectivity.valence(v);
+  if (!configuration.boundary) {
+    // Interior: (1 − Nχ)v + χΣ ring, χ = 1/(3/(8β) + N); tangents Σ cos/sin(2πi/N) ring_i (ring from a).
+    const double beta = loop_beta(valence, beta_), chi = 1.0 / (3.0 / (8.0 * beta) + valence);
+    masks[0] = 1.0 - valence * chi;
+    for (int i = 0; i < valence; ++i) {
+      const double angle = 2.0 * std::numbers::pi * i / valence;
+      masks[1 + i] = chi;
+      masks[k + 1 + i] = std::cos(angle);
+      masks[2 * k + 1 + i] = std::sin(angle);
+    }
+  } else {
+    // Boundary: the deepest block's child 1 at its corner, 2^−kEvLevels from v.
+    double w[12], ws[12], wt[12];
+    loop_box_spline_basis(0.0, 0.0, w, ws, wt);
+    const double* block = table + size_t(3 * (kEvLevels - 1) * 12) * size_t(k);
+    for (int j = 0; j < 12; ++j)
+      for (int i = 0; i < k; ++i) {
+        masks[i] += w[j] * block[size_t(j * k + i)];
+        masks[k + i] += ws[j] * block[size_t(j * k + i)];
+        masks[2 * k + i] += wt[j] * block[size_t(j * k + i)];
+      }
+  }
+  offsets_.emplace(configuration, offset);
+  return offset;
+}
+
+}  // namespace gps

@@ -1,0 +1,52 @@
+#include "core/planned_surface.h"
+
+#include <algorithm>
+
+#include "core/dual_map.h"
+#include "core/loop_plan_builder.h"
+#include "core/reference_subdivision.h"
+
+namespace gps {
+
+Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
+  if (options.scheme) return *options.scheme;
+  for (int f = 0; f < topology.n_faces(); ++f)
+    if (topology.face_size(f) != 3) return Scheme::catmull_clark;
+  return topology.n_faces() > 0 ? Scheme::loop : Scheme::catmull_clark;
+}
+
+PlanTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options) {
+  if (scheme_for(topology, options) == Scheme::loop) return build_loop_plans(topology, options.loop_beta);
+  return build_plans(topology, options.depth);
+}
+
+std::vector<Dual> base_points(const CovarianceMesh& mesh) {
+  std::vector<Dual> q(mesh.n_vertices());
+  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariance(i));
+  return q;
+}
+
+PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {
+  const PolygonTopology topology = topology_of(mesh.mesh);
+  scheme_ = scheme_for(topology, options);
+  tables_ = build_surface_plans(topology, options);
+  dependents_ = stencil_dependents(tables_.stencils);
+  points_ = apply_stencils(tables_.stencils, base_points(mesh));
+}
+
+void PlannedSurface::update(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  for (const int v : changed) points_[size_t(v)] = to_dual(mesh.mean(size_t(v)), mesh.covariance(size_t(v)));
+  update_stencils(tables_.stencils, dependents_, changed, points_);
+}
+
+std::vector<int> PlannedSurface::rows_reading(const std::vector<int>& vertices) const {
+  std::vector<int> rows;
+  for (const int v : vertices)
+    rows.insert(rows.end(), dependents_.rows.begin() + dependents_.offsets[size_t(v)],
+                dependents_.rows.begin() + dependents_.offsets[size_t(v) + 1]);
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  return rows;
+}
+
+}  // namespace gps

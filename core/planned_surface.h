@@ -1,0 +1,51 @@
+#pragma once
+// The planned surface of a covariance mesh (DESIGN.md §2): its plan and stencil tables, built once
+// per topology by the scheme that fits the mesh, and the 9D plan points, kept up to date by edits.
+// The renderer uploads these tables as they are (as OpenSubdiv's Osd takes Far's tables).
+#include <optional>
+#include <vector>
+
+#include "core/covariance_mesh.h"
+#include "core/loop.h"
+#include "core/plan_builder.h"
+#include "core/reference_subdivision.h"
+#include "core/stencil_table.h"
+
+namespace gps {
+
+struct PlanOptions {
+  std::optional<Scheme> scheme;  // empty: Loop for a mesh of triangles only, else Catmull-Clark
+  int depth = 3;                 // Catmull-Clark plan depth 1..8 (Loop plans are exact at depth 1)
+  LoopBeta loop_beta = LoopBeta::loop;
+};
+
+/// The scheme `options` give for this mesh.
+Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options);
+
+/// Plans and stencils of the mesh under its scheme (core/plan_builder.h, core/loop_plan_builder.h).
+PlanTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options);
+
+/// The 9D point q = (vech(Σ⁻¹), Σ⁻¹μ) of every vertex (thesis Eq. 2.10).
+std::vector<Dual> base_points(const CovarianceMesh& mesh);
+
+class PlannedSurface {
+public:
+  PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options);
+
+  Scheme scheme() const { return scheme_; }
+  const PlanTables& tables() const { return tables_; }
+  /// Every plan point: the base vertices' q, then the stencil rows.
+  const std::vector<Dual>& points() const { return points_; }
+  /// After an edit of `changed` vertices of `mesh`: their q and the rows that read them.
+  void update(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  /// The stencil rows that read any of `vertices`, sorted, without repeats.
+  std::vector<int> rows_reading(const std::vector<int>& vertices) const;
+
+private:
+  Scheme scheme_;
+  PlanTables tables_;
+  StencilDependents dependents_;
+  std::vector<Dual> points_;
+};
+
+}  // namespace gps
