@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/plan_arguments.h"
 #include "core/error.h"
 #include "core/mesh_io.h"
 #include "core/samples.h"
@@ -21,7 +22,8 @@ namespace {
 struct RenderArgs {
   std::string input, output, size = "800x600", matcap = "clay", mode = "matcap", camera, background = "1,1,1";
   std::vector<std::string> aovs;
-  int level = 8, depth = 3, reference = -1;
+  int level = 8, reference = -1;
+  PlanArguments plans;
   float pixels = 0;
   std::string context = "auto";
   bool mesh_lines = false, wireframe = false, ellipsoids = false;
@@ -59,7 +61,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   }
   const auto bg = parse_floats(a.background, "--background", 3, 3);
   const Image matcap = load_matcap(a.matcap);
-  renderer.set_mesh(mesh, a.depth);
+  renderer.set_mesh(mesh, a.plans.options());
   renderer.set_matcap(matcap);
   DrawOptions o;
   o.level = float(a.level);
@@ -104,7 +106,7 @@ void render(const RenderArgs& a) {
 }
 
 // --script FILE.json: {"renders": [{"mesh": FILE or "sample:NAME", "output": FILE.png, "size": "WxH",
-// "level": L, "pixels": P, "depth": D, "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]",
+// "level": L, "pixels": P, "depth": D, "scheme": "auto"|"loop"|"catmull-clark", "loop_beta": "loop"|"warren", "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]",
 // "mesh_lines": bool, "wireframe": bool, "ellipsoids": bool, "sigma": k, "background": "r,g,b",
 // "aov": ["position=FILE.exr", ...], "reference": N,
 // "edits": [{"vertex": i, "mean": [x,y,z], "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]}
@@ -130,7 +132,10 @@ void run_script(const std::string& path, const std::string& context_name) {
       a.size = job.value("size", a.size);
       a.level = job.value("level", a.level);
       a.pixels = job.value("pixels", a.pixels);
-      a.depth = job.value("depth", a.depth);
+      a.plans.depth = job.value("depth", a.plans.depth);
+      a.plans.scheme = job.value("scheme", a.plans.scheme);
+      a.plans.loop_beta = job.value("loop_beta", a.plans.loop_beta);
+      a.plans.options();  // checks the names and the depth
       a.matcap = job.value("matcap", a.matcap);
       a.mode = job.value("mode", a.mode);
       a.camera = job.value("camera", a.camera);
@@ -142,7 +147,6 @@ void run_script(const std::string& path, const std::string& context_name) {
       a.aovs = job.value("aov", a.aovs);
       a.reference = job.value("reference", a.reference);
       if (a.level < 1 || a.level > 64) throw usage_error("level must be 1..64");
-      if (a.depth < 1 || a.depth > 8) throw usage_error("depth must be 1..8");
       if (a.mode != "matcap" && a.mode != "normals" && a.mode != "flat") throw usage_error("mode must be matcap, normals or flat");
       CovarianceMesh mesh = a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh(a.input);
       for (const auto& edit : job.value("edits", nlohmann::json::array())) {
@@ -187,7 +191,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--size", a->size, "image size WxH");
   auto* level = cmd->add_option("--level", a->level, "uniform tessellation level")->check(CLI::Range(1, 64));
   cmd->add_option("--pixels", a->pixels, "adaptive tessellation: target edge length in pixels")->check(CLI::Range(0.5f, 1000.0f))->excludes(level);
-  cmd->add_option("--depth", a->depth, "maximum plan depth")->check(CLI::Range(1, 8));
+  add_plan_arguments(cmd, a->plans);
   cmd->add_option("--matcap", a->matcap, "built-in MatCap (" + [] {
     std::string s;
     for (const auto& n : builtin_matcap_names()) s += (s.empty() ? "" : ", ") + n;

@@ -4,6 +4,10 @@ set(text "// Generated from shaders/*.glsl by cmake/embed_shaders.cmake; do not 
 foreach(source ${SOURCES})
   get_filename_component(name ${source} NAME_WE)
   file(READ ${source} body)
+  # A C++ header shared with GLSL (core/patch_basis.h) is read as GLSL under GPS_GLSL.
+  if(source MATCHES "\\.h$")
+    set(body "#define GPS_GLSL\n${body}")
+  endif()
   string(APPEND text "inline constexpr const char* ${name} = R\"glsl(${body})glsl\";\n")
 endforeach()
 string(APPEND text "}  // namespace gps::shaders\n")

@@ -87,9 +87,12 @@ int LoopEvTables::offset(const LoopEvConfiguration& configuration, const Polygon
       masks[2 * k + 1 + i] = std::sin(angle);
     }
   } else {
-    // Boundary: the deepest block's child 1 at its corner, 2^−kEvLevels from v.
+    // Boundary: the deepest block's child 1 at its corner, 2^−kEvLevels from v; its derivatives
+    // times 2^kEvLevels are in (s, t) (float keeps them in range on the GPU).
     double w[12], ws[12], wt[12];
     loop_box_spline_basis(0.0, 0.0, w, ws, wt);
+    const double to_st = std::ldexp(1.0, kEvLevels);
+    for (int j = 0; j < 12; ++j) ws[j] *= to_st, wt[j] *= to_st;
     const double* block = table + size_t(3 * (kEvLevels - 1) * 12) * size_t(k);
     for (int j = 0; j < 12; ++j)
       for (int i = 0; i < k; ++i) {

@@ -105,9 +105,9 @@ GPS_FN void loop_box_spline_basis(GPS_REAL u, GPS_REAL v, GPS_OUT GPS_REAL w[12]
     du[k] = 0.0;
     dv[k] = 0.0;
   }
-  int row = 0;
-  for (int b = 0; b <= 4; ++b)
-    for (int a = 0; a <= 4 - b; ++a) {
+  for (int row = 0; row < 15; ++row) {
+      int b = row < 5 ? 0 : row < 9 ? 1 : row < 12 ? 2 : row < 14 ? 3 : 4;
+      int a = row - (b * 5 - (b * (b - 1)) / 2);
       int c = 4 - a - b;
       // multinomial 4!/(a! b! c!) from the exponents
       GPS_REAL m = 24.0;
@@ -115,18 +115,19 @@ GPS_FN void loop_box_spline_basis(GPS_REAL u, GPS_REAL v, GPS_OUT GPS_REAL w[12]
       for (int i = 2; i <= b; ++i) m /= GPS_REAL(i);
       for (int i = 2; i <= c; ++i) m /= GPS_REAL(i);
       GPS_REAL value = m * pu[a] * pv[b] * pt[c];
-      // d/du and d/dv of u^a v^b (1−u−v)^c
-      GPS_REAL d_t = c > 0 ? m * GPS_REAL(c) * pu[a] * pv[b] * pt[c - 1] : 0.0;
-      GPS_REAL value_u = (a > 0 ? m * GPS_REAL(a) * pu[a - 1] * pv[b] * pt[c] : 0.0) - d_t;
-      GPS_REAL value_v = (b > 0 ? m * GPS_REAL(b) * pu[a] * pv[b - 1] * pt[c] : 0.0) - d_t;
+      // d/du and d/dv of u^a v^b (1−u−v)^c; a zero exponent's factor is 0 (indices kept in range:
+      // Mesa's llvmpipe reads out of range when a select of the two branches is compiled).
+      int a1 = a > 0 ? a - 1 : 0, b1 = b > 0 ? b - 1 : 0, c1 = c > 0 ? c - 1 : 0;
+      GPS_REAL d_t = m * GPS_REAL(c) * pu[a] * pv[b] * pt[c1];
+      GPS_REAL value_u = m * GPS_REAL(a) * pu[a1] * pv[b] * pt[c] - d_t;
+      GPS_REAL value_v = m * GPS_REAL(b) * pu[a] * pv[b1] * pt[c] - d_t;
       for (int k = 0; k < 12; ++k) {
         GPS_REAL x = kLoopBezier[12 * row + k] / 24.0;
         w[k] += x * value;
         du[k] += x * value_u;
         dv[k] += x * value_v;
       }
-      row += 1;
-    }
+  }
 }
 
 /// One step down a triangle node (core/plan_table.h): the child under (u, v) — 0 at corner 0
@@ -179,7 +180,8 @@ GPS_FN void turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]) {
 GPS_FN int loop_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale) {
   scale = 1.0;
   int n = 0;
-  while (s + t < 0.5 && n < kEvLevels - 1) {
+  for (int i = 0; i < kEvLevels - 1; ++i) {
+    if (s + t >= 0.5) break;
     s = 2.0 * s;
     t = 2.0 * t;
     scale = 2.0 * scale;

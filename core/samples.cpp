@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/inference.h"
+#include "core/loop.h"
 
 namespace gps {
 
@@ -213,6 +214,31 @@ CovarianceMesh sphere(int size) {
   return isotropic_mesh(p, f, "sphere");
 }
 
+// An icosahedron refined by midpoint splits (Loop's topology) and projected to the unit sphere:
+// 20·4^k triangles, the k nearest to `size`; 12 vertices of valence 5, every other of valence 6.
+CovarianceMesh icosphere(int size) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Vec3> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                         {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  PolygonTopology t;
+  t.n_vertices = 12;
+  for (const int v : {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8,
+                      3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1}) {
+    t.verts.push_back(v);
+    if (t.verts.size() % 3 == 0) t.offsets.push_back(int(t.verts.size()));
+  }
+  const int levels = std::max(0, int(std::lround(std::log(std::max(size, 20) / 20.0) / std::log(4.0))));
+  for (int level = 0; level < levels; ++level) {
+    const MeshConnectivity c = connectivity_of(t);
+    for (int e = 0; e < c.n_edges(); ++e) p.push_back(0.5 * (p[size_t(c.edge_verts[2 * size_t(e)])] + p[size_t(c.edge_verts[2 * size_t(e) + 1])]));
+    t = loop_topology(t, c);
+  }
+  for (auto& x : p) x.normalize();
+  Faces f(size_t(t.n_faces()));
+  for (int i = 0; i < t.n_faces(); ++i) f[size_t(i)].assign(t.verts.begin() + t.offsets[size_t(i)], t.verts.begin() + t.offsets[size_t(i) + 1]);
+  return isotropic_mesh(p, f, "icosphere");
+}
+
 struct Sample {
   std::string name, description;
   std::function<CovarianceMesh(int)> make;
@@ -241,6 +267,8 @@ const std::vector<Sample>& samples() {
                  [](int size) { return grid(size > 0 ? size : 1024); }});
     s.push_back({"sphere", "cube-sphere of quads, 8 valence-3 vertices; --size sets the face count (default 1536)",
                  [](int size) { return sphere(size > 0 ? size : 1536); }});
+    s.push_back({"icosphere", "subdivided icosahedron of triangles (Loop), 12 valence-5 vertices; --size sets the face count, 20·4^k (default 1280)",
+                 [](int size) { return icosphere(size > 0 ? size : 1280); }});
     return s;
   }();
   return list;

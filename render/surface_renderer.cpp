@@ -16,15 +16,23 @@ namespace gps {
 
 namespace {
 
-enum Binding { kGaussians = 0, kPoints = 1, kOffsets = 2, kIndices = 3, kWeights = 4, kNodes = 5, kRoots = 6, kCorners = 7, kChanged = 8, kRows = 9 };
+enum Binding { kGaussians = 0, kPoints = 1, kOffsets = 2, kIndices = 3, kWeights = 4, kNodes = 5, kRoots = 6, kCorners = 7, kChanged = 8, kRows = 9, kEvTables = 10, kBindings = 11 };
 
-ShaderProgram patch_program(bool feedback) {
+// The patch program of a shape: quads (Catmull-Clark plans) or triangles (Loop plans).
+ShaderProgram patch_program(PatchShape shape, bool feedback) {
+  const bool triangles = shape == PatchShape::triangle;
+  std::vector<const char*> control = {shaders::patch_basis, shaders::plan_eval, shaders::tess_levels};
+  std::vector<const char*> evaluation = {shaders::patch_basis, shaders::plan_eval};
+  control.push_back(triangles ? shaders::triangle_tesc : shaders::patch_tesc);
+  if (triangles) evaluation.push_back(shaders::loop_eval);
+  evaluation.push_back(triangles ? shaders::triangle_tese : shaders::patch_tese);
   std::vector<ShaderStage> stages = {{GL_VERTEX_SHADER, {shaders::patch_vert}},
-                                     {GL_TESS_CONTROL_SHADER, {shaders::patch_basis, shaders::plan_eval, shaders::patch_tesc}},
-                                     {GL_TESS_EVALUATION_SHADER, {shaders::patch_basis, shaders::plan_eval, shaders::patch_tese}}};
-  if (feedback) return ShaderProgram("patch_feedback", stages, {"v_patch_uv", "v_position", "v_normal"});
+                                     {GL_TESS_CONTROL_SHADER, control},
+                                     {GL_TESS_EVALUATION_SHADER, evaluation}};
+  const std::string name = triangles ? "triangle_patch" : "patch";
+  if (feedback) return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal"});
   stages.push_back({GL_FRAGMENT_SHADER, {shaders::shade_frag}});
-  return ShaderProgram("patch", stages);
+  return ShaderProgram(name, stages);
 }
 
 }  // namespace
@@ -32,15 +40,17 @@ ShaderProgram patch_program(bool feedback) {
 SurfaceRenderer::SurfaceRenderer()
     : dual_map_("dual_map", {{GL_COMPUTE_SHADER, {shaders::dual_map_comp}}}),
       stencil_("stencil", {{GL_COMPUTE_SHADER, {shaders::stencil_comp}}}),
-      patches_(patch_program(false)),
-      feedback_(patch_program(true)),
+      patches_(patch_program(PatchShape::quad, false)),
+      feedback_(patch_program(PatchShape::quad, true)),
+      triangle_patches_(patch_program(PatchShape::triangle, false)),
+      triangle_feedback_(patch_program(PatchShape::triangle, true)),
       triangles_("mesh", {{GL_VERTEX_SHADER, {shaders::mesh_vert}}, {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
       triangles_wire_("mesh_wire", {{GL_VERTEX_SHADER, {"#define GEOMETRY_NEXT\n", shaders::mesh_vert}},
                                     {GL_GEOMETRY_SHADER, {shaders::mesh_geom}},
                                     {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
       lines_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}),
       ellipsoids_("ellipsoids", {{GL_VERTEX_SHADER, {shaders::ellipsoid_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
-  glCreateBuffers(10, buffers_);
+  glCreateBuffers(kBindings, buffers_);
   glCreateVertexArrays(1, &empty_vao_);
   glCreateVertexArrays(1, &triangle_vao_);
   glCreateVertexArrays(1, &lines_vao_);
@@ -54,7 +64,6 @@ SurfaceRenderer::SurfaceRenderer()
   glVertexArrayAttribFormat(lines_vao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
   glVertexArrayAttribBinding(lines_vao_, 0, 0);
   set_matcap(make_builtin_matcap("clay"));
-  triangles_wire_.set("u_barycentric_grid", 1);
   // Three unit circles (xy, yz, zx planes) as line segments, instanced per vertex.
   std::vector<float> circles;
   const int segments = 32;
@@ -86,7 +95,7 @@ SurfaceRenderer::SurfaceRenderer()
 }
 
 SurfaceRenderer::~SurfaceRenderer() {
-  glDeleteBuffers(10, buffers_);
+  glDeleteBuffers(kBindings, buffers_);
   glDeleteVertexArrays(1, &empty_vao_);
   glDeleteVertexArrays(1, &triangle_vao_);
   glDeleteVertexArrays(1, &lines_vao_);
@@ -107,8 +116,8 @@ static void upload(unsigned buffer, size_t& size, const std::vector<T>& data) {
   glNamedBufferData(buffer, GLsizeiptr(size), data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
 }
 
-void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, int depth) {
-  tables_ = build_plans(topology_of(mesh.mesh), depth);
+void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, const PlanOptions& options) {
+  tables_ = build_surface_plans(topology_of(mesh.mesh), options);
   n_base_ = int(mesh.n_vertices());
   const StencilTable& s = tables_.stencils;
   const StencilDependents deps = stencil_dependents(s);
@@ -120,6 +129,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, int depth) {
   upload(buffers_[kNodes], buffer_sizes_[kNodes], tables_.plans.nodes);
   upload(buffers_[kRoots], buffer_sizes_[kRoots], tables_.plans.patch_roots);
   upload(buffers_[kCorners], buffer_sizes_[kCorners], tables_.plans.patch_corner_points);
+  upload(buffers_[kEvTables], buffer_sizes_[kEvTables], std::vector<float>(tables_.plans.ev_tables.begin(), tables_.plans.ev_tables.end()));
   upload(buffers_[kPoints], buffer_sizes_[kPoints], std::vector<float>(size_t(s.n_points()) * 12, 0.0f));
   upload_gaussians(mesh);
   // Base mesh lines: the vertex positions (updated by edits) and each edge as a pair of indices.
@@ -203,7 +213,7 @@ void SurfaceRenderer::upload_ellipsoids(const CovarianceMesh& mesh, const std::v
 void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
   const GpuPassScope pass(timer_, "9D + stencils");
   const int n_rows = tables_.stencils.n_rows();
-  for (int b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+  for (int b = 0; b < kBindings; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
   int vertex_count = n_base_, row_count = n_rows;
   if (changed) {
     std::vector<int> rows;
@@ -322,9 +332,9 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glBindTextureUnit(0, matcap_);
-    for (int b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+    for (int b = 0; b < kBindings; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
     // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
-    const ShaderProgram& program = !o.static_triangles ? patches_ : o.wireframe ? triangles_wire_ : triangles_;
+    const ShaderProgram& program = !o.static_triangles ? patch_program_for(false) : o.wireframe ? triangles_wire_ : triangles_;
     set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
     program.use();
     if (o.static_triangles) {
@@ -369,14 +379,15 @@ std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& c
   glCreateBuffers(1, &buffer);
   glNamedBufferData(buffer, GLsizeiptr(max_vertices * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
   glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
-  for (int b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
-  set_frame_uniforms(feedback_, camera, o, aspect, 512, 512);
-  feedback_.use();
+  for (int b = 0; b < kBindings; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+  const ShaderProgram& feedback = patch_program_for(true);
+  set_frame_uniforms(feedback, camera, o, aspect, 512, 512);
+  feedback.use();
   glEnable(GL_RASTERIZER_DISCARD);
   glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
   glBeginQuery(GL_PRIMITIVES_GENERATED, query);
   glBeginTransformFeedback(GL_TRIANGLES);
-  draw_patches(feedback_, o);
+  draw_patches(feedback, o);
   glEndTransformFeedback();
   glEndQuery(GL_PRIMITIVES_GENERATED);
   glDisable(GL_RASTERIZER_DISCARD);
@@ -409,6 +420,11 @@ void SurfaceRenderer::draw_patches(const ShaderProgram& program, const DrawOptio
     program.set("u_first_patch", first);
     glDrawArrays(GL_PATCHES, 0, std::min(batch, tables_.plans.n_patches() - first));
   }
+}
+
+const ShaderProgram& SurfaceRenderer::patch_program_for(bool feedback) const {
+  if (tables_.plans.shape == PatchShape::triangle) return feedback ? triangle_feedback_ : triangle_patches_;
+  return feedback ? feedback_ : patches_;
 }
 
 size_t SurfaceRenderer::buffer_bytes() const {

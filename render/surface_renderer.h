@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/covariance_mesh.h"
-#include "core/plan_builder.h"
+#include "core/planned_surface.h"
 #include "core/triangle_mesh.h"
 #include "render/camera.h"
 #include "render/gpu_pass_timer.h"
@@ -56,8 +56,11 @@ public:
   SurfaceRenderer(const SurfaceRenderer&) = delete;
   SurfaceRenderer& operator=(const SurfaceRenderer&) = delete;
 
-  /// New topology: builds plans and stencils (CPU) and uploads everything, then a full compute pass.
-  void set_mesh(const CovarianceMesh& mesh, int depth);
+  /// New topology: builds plans and stencils (CPU) under the scheme `options` give for the mesh
+  /// (Loop for triangles only, else Catmull-Clark) and uploads everything, then a full compute pass.
+  void set_mesh(const CovarianceMesh& mesh, const PlanOptions& options);
+  /// The same with the scheme that fits the mesh and Catmull-Clark plans of depth `depth`.
+  void set_mesh(const CovarianceMesh& mesh, int depth) { set_mesh(mesh, PlanOptions{std::nullopt, depth}); }
   /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them
   /// (past an eighth of the vertices: whole buffers and the full passes, fewer calls).
   void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);
@@ -97,9 +100,11 @@ private:
 
   PlanTables tables_;
   std::vector<int> dependents_offsets_, dependents_rows_;
-  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangles_, triangles_wire_, lines_, ellipsoids_;
-  unsigned buffers_[10] = {};
-  size_t buffer_sizes_[10] = {};
+  const ShaderProgram& patch_program_for(bool feedback) const;
+
+  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangle_patches_, triangle_feedback_, triangles_, triangles_wire_, lines_, ellipsoids_;
+  unsigned buffers_[11] = {};
+  size_t buffer_sizes_[11] = {};
   unsigned empty_vao_ = 0, triangle_vao_ = 0, triangle_vbo_ = 0, triangle_ibo_ = 0;
   unsigned lines_vao_ = 0, lines_vbo_ = 0, lines_ibo_ = 0;  // base vertex positions, edges as index pairs
   int triangle_count_ = 0, line_index_count_ = 0;

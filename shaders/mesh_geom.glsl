@@ -1,19 +1,19 @@
 // Wireframe over static triangles (reference subdivision, CPU tessellation): each triangle passes
 // through with its corners' barycentric coordinates in v_grid; the fragment shader draws a line where
-// one of the three is zero (u_barycentric_grid).
+// one of the three is zero.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 in vec3 g_position[];
 in vec3 g_normal[];
-in vec2 g_grid[];
+in vec3 g_grid[];
 flat in int g_kind[];
 out vec3 v_position;
 out vec3 v_normal;
-out vec2 v_grid;
+out vec3 v_grid;
 flat out int v_kind;
 
 void main() {
-  const vec2 corner[3] = vec2[3](vec2(0.0, 0.0), vec2(1.0, 0.0), vec2(0.0, 1.0));
+  const vec3 corner[3] = vec3[3](vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0));
   for (int i = 0; i < 3; ++i) {
     v_position = g_position[i];
     v_normal = g_normal[i];

@@ -10,13 +10,13 @@ layout(location = 1) in vec3 a_normal;
 uniform mat4 u_view_projection;
 out vec3 v_position;
 out vec3 v_normal;
-out vec2 v_grid;      // no tessellation grid here
+out vec3 v_grid;      // no tessellation grid here
 flat out int v_kind;  // no plan node either
 
 void main() {
   v_position = a_position;
   v_normal = a_normal;
-  v_grid = vec2(0.5);
+  v_grid = vec3(0.5);
   v_kind = 0;
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 }

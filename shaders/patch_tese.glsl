@@ -8,7 +8,7 @@ uniform mat4 u_view_projection;
 out vec3 v_position;
 out vec3 v_normal;
 out vec3 v_patch_uv;  // patch id and (u, v), for transform feedback checks
-out vec2 v_grid;      // tessellation grid coordinates, for the wireframe
+out vec3 v_grid;      // tessellation grid coordinates, for the wireframe (z: no third family)
 flat out int v_kind;  // plan node kind: 1 regular (exact B-spline), 2 terminal (Bézier approximation)
 
 void main() {
@@ -17,6 +17,6 @@ void main() {
   v_position = mu;
   v_normal = normalize(cross(mu_u, mu_v));
   v_patch_uv = vec3(float(tc_patch), gl_TessCoord.xy);
-  v_grid = gl_TessCoord.xy * vec2(gl_TessLevelInner[0], gl_TessLevelInner[1]);
+  v_grid = vec3(gl_TessCoord.xy * vec2(gl_TessLevelInner[0], gl_TessLevelInner[1]), 0.5);
   gl_Position = u_view_projection * vec4(mu, 1.0);
 }

@@ -14,6 +14,16 @@ vec3 point_mean(int p) {
   return inverse(precision_of(a, b)) * precision_mean_of(b, c);
 }
 
+// μ and its tangents (thesis Eq. 3.12) from q, q_u, q_v (three vec4 each), derivatives times `scale`:
+// μ = [q̂]⁻¹ q̄, μ_u = [q̂]⁻¹ (q̄_u − [q̂_u] μ).
+void dual_to_surface(vec4 qa, vec4 qb, vec4 qc, vec4 ua, vec4 ub, vec4 uc, vec4 va, vec4 vb, vec4 vc, float scale,
+                     out vec3 mu, out vec3 mu_u, out vec3 mu_v) {
+  mat3 sigma = inverse(precision_of(qa, qb));
+  mu = sigma * precision_mean_of(qb, qc);
+  mu_u = scale * (sigma * (precision_mean_of(ub, uc) - precision_of(ua, ub) * mu));
+  mu_v = scale * (sigma * (precision_mean_of(vb, vc) - precision_of(va, vb) * mu));
+}
+
 // Position and tangents (Eq. 3.12) of the limit surface at (u, v) of a patch; `leaf_kind` is the
 // kind of the node that was evaluated (1 regular, 2 terminal).
 void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int leaf_kind) {
@@ -22,7 +32,7 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
   // The kind is read into a variable once per node: re-reading nodes[node] after the loop gave the
   // stale value on Mesa 22.3 llvmpipe (caught by test_surface_renderer).
   int kind = nodes[node];
-  while (kind == 0) {
+  while (kind == kNodeInternal) {
     int ubit = uv.x >= 0.5 ? 1 : 0, vbit = uv.y >= 0.5 ? 1 : 0;
     uv = 2.0 * uv - vec2(ubit, vbit);
     scale *= 2.0;
@@ -31,7 +41,7 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
   }
   leaf_kind = kind;
   float wu[4], dwu[4], wv[4], dwv[4];
-  if (kind == 1) {
+  if (kind == kNodeRegular) {
     bspline_basis(uv.x, wu, dwu);
     bspline_basis(uv.y, wv, dwv);
   } else {
@@ -50,9 +60,5 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
       ua += wdu * a; ub += wdu * b; uc += wdu * c;
       va += wdv * a; vb += wdv * b; vc += wdv * c;
     }
-  mat3 sigma = inverse(precision_of(qa, qb));
-  mu = sigma * precision_mean_of(qb, qc);
-  // Eq. 3.12: μ_u = [q̂]⁻¹ (q̄_u − [q̂_u] μ), in patch parameters.
-  mu_u = scale * (sigma * (precision_mean_of(ub, uc) - precision_of(ua, ub) * mu));
-  mu_v = scale * (sigma * (precision_mean_of(vb, vc) - precision_of(va, vb) * mu));
+  dual_to_surface(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
 }

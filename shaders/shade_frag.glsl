@@ -1,14 +1,13 @@
 // MatCap shading (thesis 4.1), normals as colours, or flat; plus world-space AOVs.
 in vec3 v_position;
 in vec3 v_normal;
-in vec2 v_grid;
+in vec3 v_grid;  // wireframe: lines where a component is a whole number (tess_levels, mesh_geom)
 flat in int v_kind;
 
 uniform int u_mode;  // 0 MatCap, 1 normals, 2 flat
 uniform mat4 u_view;
 uniform sampler2D u_matcap;
 uniform vec4 u_wire_color;  // alpha 0: no tessellation wireframe
-uniform int u_barycentric_grid;  // v_grid holds barycentric (b1, b2) of static triangles (mesh_geom)
 uniform int u_flag_back_faces;  // crack checks: back faces in pure magenta
 
 layout(location = 0) out vec4 out_color;
@@ -24,15 +23,8 @@ void main() {
   if (u_mode == 1) color = 0.5 * n + 0.5;
   else color = texture(u_matcap, 0.5 * view_normal.xy + 0.5).rgb;
   // Tessellation wireframe: distance to the nearest grid line, in pixels.
-  float to_line;
-  if (u_barycentric_grid != 0) {
-    vec3 b = vec3(v_grid, 1.0 - v_grid.x - v_grid.y);
-    vec3 d = b / max(fwidth(b), vec3(1e-6));
-    to_line = min(d.x, min(d.y, d.z));
-  } else {
-    vec2 d = abs(fract(v_grid - 0.5) - 0.5) / max(fwidth(v_grid), vec2(1e-6));
-    to_line = min(d.x, d.y);
-  }
+  vec3 d = abs(fract(v_grid - 0.5) - 0.5) / max(fwidth(v_grid), vec3(1e-6));
+  float to_line = min(d.x, min(d.y, d.z));
   float wire = u_wire_color.a * (1.0 - clamp(to_line - 0.25, 0.0, 1.0));
   out_color = vec4(mix(color, u_wire_color.rgb, wire), 1.0);
   if (u_flag_back_faces != 0 && !gl_FrontFacing) out_color = vec4(1.0, 0.0, 1.0, 1.0);

@@ -16,6 +16,7 @@
 #include "render/picking.h"
 #include "render/reference_triangles.h"
 #include "tests/support/plan_fixture.h"
+#include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
@@ -37,21 +38,25 @@ struct VertexErrors {
 };
 
 // Every vertex the GPU tessellator produced, against the CPU evaluator at the same (patch, u, v).
-VertexErrors compare_vertices(const CovarianceMesh& mesh, int depth, float level) {
+VertexErrors compare_vertices(const CovarianceMesh& mesh, const PlanOptions& options, float level) {
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, depth);
+  renderer.set_mesh(mesh, options);
   DrawOptions o;
   o.level = level;
   const auto vertices = renderer.capture_vertices(Camera{}, o, 1.0f);
-  const test::PlannedMesh cpu(mesh, depth);
+  const test::PlannedMesh cpu(mesh, options);
   const double diag = bounding_box_diagonal(mesh);
   VertexErrors e;
   for (const auto& v : vertices) {
     const auto s = evaluate_patch(cpu.tables.plans, cpu.points, int(v.patch), v.u, v.v);
     if (!s) continue;
     e.position = std::max(e.position, (s->position - Vec3(v.position[0], v.position[1], v.position[2])).norm() / diag);
-    const double c = std::clamp(s->normal.dot(Vec3(v.normal[0], v.normal[1], v.normal[2]).normalized()), -1.0, 1.0);
-    e.normal_degrees = std::max(e.normal_degrees, std::acos(c) * 180.0 / M_PI);
+    const Vec3 gpu_normal(v.normal[0], v.normal[1], v.normal[2]);
+    const double c = std::clamp(s->normal.dot(gpu_normal.normalized()), -1.0, 1.0);
+    // A non-finite GPU vertex counts as the worst error (max() would skip a NaN).
+    const bool finite = gpu_normal.allFinite() && Vec3(v.position[0], v.position[1], v.position[2]).allFinite();
+    e.normal_degrees = std::max(e.normal_degrees, finite ? std::acos(c) * 180.0 / M_PI : 180.0);
+    if (!finite) e.position = 1.0;
     ++e.count;
   }
   return e;
@@ -63,7 +68,7 @@ TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
     const CovarianceMesh mesh = make_sample(name);
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh, 3);
-    const test::PlannedMesh cpu(mesh, 3);
+    const test::PlannedMesh cpu(mesh, PlanOptions{std::nullopt, 3});
     const auto gpu = renderer.read_points();
     ASSERT_EQ(gpu.size(), cpu.points.size() * 12);
     static constexpr int kSlot[9] = {0, 1, 2, 3, 4, 5, 6, 7, 8};
@@ -75,11 +80,26 @@ TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
 
 TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
   for (const char* name : {"cube", "valence5", "wirecube", "cylinder", "cone"}) {
-    const VertexErrors e = compare_vertices(make_sample(name), 3, 6.0f);
+    const VertexErrors e = compare_vertices(make_sample(name), PlanOptions{Scheme::catmull_clark, 3}, 6.0f);
     EXPECT_GT(e.count, 100u) << name;
     EXPECT_LT(e.position, 1e-4) << name;
     EXPECT_LT(e.normal_degrees, 1.0) << name;
   }
+}
+
+// Loop patches (box splines and exact extraordinary nodes) on the GPU against the CPU evaluator.
+TEST_F(GpuTest, LoopPatchesMatchTheCpuEvaluator) {
+  std::vector<std::pair<std::string, CovarianceMesh>> meshes;
+  for (const char* name : {"cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder"}) meshes.emplace_back(name, make_sample(name));
+  meshes.emplace_back("icosahedron", test::with_random_covariances(test::icosahedron_mesh(), 4));
+  meshes.emplace_back("triangle grid", test::with_random_covariances(test::triangle_grid_mesh(5, 4), 5));
+  for (const auto& [name, mesh] : meshes)
+    for (const float level : {1.0f, 7.0f}) {
+      const VertexErrors e = compare_vertices(mesh, PlanOptions{Scheme::loop, 3}, level);
+      EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
+      EXPECT_LT(e.position, 1e-4) << name << " level " << level;
+      EXPECT_LT(e.normal_degrees, 1.0) << name << " level " << level;
+    }
 }
 
 // Position and normal AOVs of the patches against the CPU evaluator's tessellation (same level)
@@ -89,7 +109,7 @@ TEST_F(GpuTest, AovsMatchTheCpuEvaluatorPixelForPixel) {
     const CovarianceMesh mesh = make_sample(name);
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh, 3);
-    const test::PlannedMesh cpu(mesh, 3);
+    const test::PlannedMesh cpu(mesh, PlanOptions{std::nullopt, 3});
     DrawOptions o;
     o.level = 64;  // the two triangulations differ by the chord error, ~1e-4 of the diagonal at 64 here
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
@@ -131,7 +151,7 @@ TEST_F(GpuTest, AovsMatchTheCpuEvaluatorPixelForPixel) {
         normal = std::max(normal, std::acos(std::clamp(na.normalized().dot(nb.normalized()), -1.0, 1.0)) * 180.0 / M_PI);
         ++covered;
       }
-    EXPECT_GT(covered, 2000) << name;
+    EXPECT_GT(covered, 1000) << name;
     std::printf("%s: max position %.2e of the diagonal, max normal %.3f degrees over %d pixels\n", name, position, normal, covered);
     EXPECT_LT(position, 1e-4) << name;
     EXPECT_LT(normal, 1.0) << name;

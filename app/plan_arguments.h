@@ -1,0 +1,20 @@
+#pragma once
+// The command-line options that choose a mesh's plans: --scheme, --loop-beta, --depth.
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "core/planned_surface.h"
+
+namespace gps {
+
+struct PlanArguments {
+  std::string scheme = "auto", loop_beta = "loop";
+  int depth = 3;
+  /// The options these name; throws a usage error for an unknown name (scripts are not checked by CLI11).
+  PlanOptions options() const;
+};
+
+/// Adds --scheme auto|loop|catmull-clark, --loop-beta loop|warren and --depth 1..8 to `cmd`.
+void add_plan_arguments(CLI::App* cmd, PlanArguments& arguments);
+
+}  // namespace gps
