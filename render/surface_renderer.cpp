@@ -2,7 +2,6 @@
 
 #include <glad/gl.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
@@ -48,8 +47,7 @@ SurfaceRenderer::SurfaceRenderer()
       triangles_wire_("mesh_wire", {{GL_VERTEX_SHADER, {"#define GEOMETRY_NEXT\n", shaders::mesh_vert}},
                                     {GL_GEOMETRY_SHADER, {shaders::mesh_geom}},
                                     {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
-      lines_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}),
-      ellipsoids_("ellipsoids", {{GL_VERTEX_SHADER, {shaders::ellipsoid_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
+      lines_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
   glCreateBuffers(kBindings, buffers_);
   glCreateVertexArrays(1, &empty_vao_);
   glCreateVertexArrays(1, &triangle_vao_);
@@ -64,33 +62,6 @@ SurfaceRenderer::SurfaceRenderer()
   glVertexArrayAttribFormat(lines_vao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
   glVertexArrayAttribBinding(lines_vao_, 0, 0);
   set_matcap(make_builtin_matcap("clay"));
-  // Three unit circles (xy, yz, zx planes) as line segments, instanced per vertex.
-  std::vector<float> circles;
-  const int segments = 32;
-  for (int plane = 0; plane < 3; ++plane)
-    for (int i = 0; i < segments; ++i)
-      for (const int j : {i, i + 1}) {
-        const float a = 6.2831853f * float(j) / segments;
-        float p[3] = {0, 0, 0};
-        p[plane] = std::cos(a);
-        p[(plane + 1) % 3] = std::sin(a);
-        circles.insert(circles.end(), p, p + 3);
-      }
-  circle_vertex_count_ = int(circles.size() / 3);
-  glCreateVertexArrays(1, &ellipsoid_vao_);
-  glCreateBuffers(1, &circle_vbo_);
-  glCreateBuffers(1, &ellipsoid_vbo_);
-  glNamedBufferData(circle_vbo_, GLsizeiptr(circles.size() * sizeof(float)), circles.data(), GL_STATIC_DRAW);
-  glVertexArrayVertexBuffer(ellipsoid_vao_, 0, circle_vbo_, 0, 3 * sizeof(float));
-  glEnableVertexArrayAttrib(ellipsoid_vao_, 0);
-  glVertexArrayAttribFormat(ellipsoid_vao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(ellipsoid_vao_, 0, 0);
-  for (GLuint c = 0; c < 4; ++c) {
-    glEnableVertexArrayAttrib(ellipsoid_vao_, 1 + c);
-    glVertexArrayAttribFormat(ellipsoid_vao_, 1 + c, 4, GL_FLOAT, GL_FALSE, c * 4 * sizeof(float));
-    glVertexArrayAttribBinding(ellipsoid_vao_, 1 + c, 1);
-  }
-  glVertexArrayBindingDivisor(ellipsoid_vao_, 1, 1);
   check_gl_errors("creating the renderer");
 }
 
@@ -103,9 +74,6 @@ SurfaceRenderer::~SurfaceRenderer() {
   glDeleteBuffers(1, &triangle_ibo_);
   glDeleteBuffers(1, &lines_vbo_);
   glDeleteBuffers(1, &lines_ibo_);
-  glDeleteVertexArrays(1, &ellipsoid_vao_);
-  glDeleteBuffers(1, &circle_vbo_);
-  glDeleteBuffers(1, &ellipsoid_vbo_);
   if (matcap_) glDeleteTextures(1, &matcap_);
 }
 
@@ -150,7 +118,7 @@ void SurfaceRenderer::upload_gaussians(const CovarianceMesh& mesh) {
     const double values[9] = {m.x(), m.y(), m.z(), c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
     std::copy(values, values + 9, g.begin() + long(9 * i));
   }
-  upload_ellipsoids(mesh, nullptr);
+  ellipsoids_.upload(mesh, nullptr);
   if (buffer_sizes_[kGaussians] == std::max<size_t>(sizeof(float), g.size() * sizeof(float)))
     glNamedBufferSubData(buffers_[kGaussians], 0, GLsizeiptr(g.size() * sizeof(float)), g.data());
   else
@@ -179,35 +147,8 @@ void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vec
     glNamedBufferSubData(buffers_[kGaussians], GLintptr(9 * sizeof(float) * size_t(v)), sizeof values, values);
     glNamedBufferSubData(lines_vbo_, GLintptr(3 * sizeof(float) * size_t(v)), 3 * sizeof(float), values);
   }
-  upload_ellipsoids(mesh, &changed);
+  ellipsoids_.upload(mesh, &changed);
   run_compute(&changed);
-}
-
-void SurfaceRenderer::upload_ellipsoids(const CovarianceMesh& mesh, const std::vector<int>* changed) {
-  // Σ = V D Vᵀ; the unit sphere maps to the 1-σ ellipsoid by [V D^½ | μ] (column-major mat4).
-  const auto transform = [&mesh](size_t i, float* m) {
-    const Eigen::SelfAdjointEigenSolver<Mat3> eig(mesh.covariance(i));
-    const Mat3 root = eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
-    for (int c = 0; c < 3; ++c) {
-      for (int r = 0; r < 3; ++r) m[4 * c + r] = float(root(r, c));
-      m[4 * c + 3] = 0.0f;
-    }
-    const Vec3 mu = mesh.mean(i);
-    m[12] = float(mu.x()), m[13] = float(mu.y()), m[14] = float(mu.z()), m[15] = 1.0f;
-  };
-  if (changed) {  // an edit: only the changed vertices' instances
-    for (const int v : *changed) {
-      float m[16];
-      transform(size_t(v), m);
-      glNamedBufferSubData(ellipsoid_vbo_, GLintptr(sizeof m * size_t(v)), sizeof m, m);
-    }
-    return;
-  }
-  std::vector<float> all(std::max<size_t>(1, mesh.n_vertices()) * 16, 0.0f);
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) transform(i, &all[16 * i]);
-  glNamedBufferData(ellipsoid_vbo_, GLsizeiptr(all.size() * sizeof(float)), all.data(), GL_DYNAMIC_DRAW);
-  glVertexArrayVertexBuffer(ellipsoid_vao_, 1, ellipsoid_vbo_, 0, 16 * sizeof(float));
-  ellipsoid_count_ = int(mesh.n_vertices());
 }
 
 void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
@@ -346,14 +287,9 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
       if (statistics_) statistics_->end();
     }
   }
-  if (o.ellipsoids && ellipsoid_count_ > 0) {
+  if (o.ellipsoids && ellipsoids_.count() > 0) {
     const GpuPassScope pass(timer_, "ellipsoids");
-    ellipsoids_.set("u_view_projection", camera.view_projection(aspect));
-    ellipsoids_.set("u_sigma", o.sigma_scale);
-    ellipsoids_.set("u_color", glm::vec4(0.15f, 0.35f, 0.85f, 1.0f));
-    ellipsoids_.use();
-    glBindVertexArray(ellipsoid_vao_);
-    glDrawArraysInstanced(GL_LINES, 0, circle_vertex_count_, ellipsoid_count_);
+    ellipsoids_.draw(camera.view_projection(aspect), o.sigma_scale);
   }
   if (o.mesh_lines && line_index_count_ > 0) {
     const GpuPassScope pass(timer_, "mesh lines");

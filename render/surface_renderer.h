@@ -10,6 +10,7 @@
 #include "core/planned_surface.h"
 #include "core/triangle_mesh.h"
 #include "render/camera.h"
+#include "render/ellipsoid_overlay.h"
 #include "render/gpu_pass_timer.h"
 #include "render/image_io.h"
 #include "render/query_ring.h"
@@ -92,7 +93,6 @@ public:
 private:
   void upload_gaussians(const CovarianceMesh& mesh);
   void upload_line_positions(const CovarianceMesh& mesh);
-  void upload_ellipsoids(const CovarianceMesh& mesh, const std::vector<int>* changed);
   void run_compute(const std::vector<int>* changed);
   void draw_patches(const ShaderProgram& program, const DrawOptions& options) const;
   void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& options, float aspect, int width,
@@ -102,15 +102,13 @@ private:
   std::vector<int> dependents_offsets_, dependents_rows_;
   const ShaderProgram& patch_program_for(bool feedback) const;
 
-  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangle_patches_, triangle_feedback_, triangles_, triangles_wire_, lines_, ellipsoids_;
+  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangle_patches_, triangle_feedback_, triangles_, triangles_wire_, lines_;
+  EllipsoidOverlay ellipsoids_;
   unsigned buffers_[11] = {};
   size_t buffer_sizes_[11] = {};
   unsigned empty_vao_ = 0, triangle_vao_ = 0, triangle_vbo_ = 0, triangle_ibo_ = 0;
   unsigned lines_vao_ = 0, lines_vbo_ = 0, lines_ibo_ = 0;  // base vertex positions, edges as index pairs
   int triangle_count_ = 0, line_index_count_ = 0;
-  unsigned ellipsoid_vao_ = 0, circle_vbo_ = 0, ellipsoid_vbo_ = 0;
-  int circle_vertex_count_ = 0;
-  int ellipsoid_count_ = 0;  // instances in ellipsoid_vbo_: per vertex a mat4 [Σ^½ | μ] (k-σ in the shader)
   unsigned matcap_ = 0;
   int n_base_ = 0;
   GpuPassTimer* timer_ = nullptr;

@@ -172,24 +172,27 @@ Image render_color(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const 
 }
 
 // A closed mesh seen from outside shows no back face unless the tessellation cracks; the check fails
-// when neighbouring patches are given different edge levels on purpose.
+// when neighbouring patches are given different edge levels on purpose. Loop patches (icosphere):
+// neighbours evaluate a shared edge from opposite ends in float, which can leave an isolated
+// pinhole; bit-exact shared edges are issue 14 (until then up to 2 pixels are allowed there).
 TEST_F(GpuTest, TessellationIsCrackFree) {
-  for (const char* name : {"cube", "wirecube", "cylinder"}) {
+  for (const char* name : {"cube", "wirecube", "cylinder", "icosphere"}) {
     const CovarianceMesh mesh = make_sample(name);
+    const int pinholes = std::string(name) == "icosphere" ? 2 : 0;
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh, 3);
     DrawOptions o;
     o.flag_back_faces = true;
     for (const float level : {1.0f, 2.0f, 5.0f, 16.0f, 64.0f}) {
       o.level = level;
-      EXPECT_EQ(flagged_pixels(render_color(renderer, mesh, o)), 0) << name << " level " << level;
+      EXPECT_LE(flagged_pixels(render_color(renderer, mesh, o)), pinholes) << name << " level " << level;
     }
     o.pixels = 4.0f;  // adaptive
-    EXPECT_EQ(flagged_pixels(render_color(renderer, mesh, o)), 0) << name << " adaptive";
+    EXPECT_LE(flagged_pixels(render_color(renderer, mesh, o)), pinholes) << name << " adaptive";
     o.pixels = 0.0f;
     o.level = 2.0f;
     o.debug_mismatch = true;
-    EXPECT_GT(flagged_pixels(render_color(renderer, mesh, o)), 0) << name << " with mismatched edge levels";
+    EXPECT_GT(flagged_pixels(render_color(renderer, mesh, o)), pinholes) << name << " with mismatched edge levels";
   }
 }
 
