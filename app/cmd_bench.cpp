@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/plan_arguments.h"
 #include "core/atomic_file.h"
 #include "core/dual_map.h"
 #include "core/error.h"
@@ -49,13 +50,12 @@ std::vector<double> interleaved_median_seconds(const std::vector<std::function<v
 // Median seconds of `f` over repeats that fill about `budget` seconds (at least 3, at most 200).
 double median_seconds(const std::function<void()>& f, double budget = 0.3) { return interleaved_median_seconds({f}, budget)[0]; }
 
-nlohmann::json bench_preprocess(const std::string& name, int size, int depth) {
+nlohmann::json bench_preprocess(const std::string& name, int size, const PlanOptions& options) {
   const CovarianceMesh mesh = make_sample(name, size);
   const PolygonTopology topology = topology_of(mesh.mesh);
   PlanTables tables;
-  const double preprocess = median_seconds([&] { tables = build_plans(topology, depth); });
-  std::vector<Dual> q(mesh.n_vertices());
-  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariance(i));
+  const double preprocess = median_seconds([&] { tables = build_surface_plans(topology, options); });
+  std::vector<Dual> q = base_points(mesh);
   std::vector<Dual> points;
   const double apply = median_seconds([&] { points = apply_stencils(tables.stencils, q); });
   const StencilDependents deps = stencil_dependents(tables.stencils);
@@ -67,8 +67,13 @@ nlohmann::json bench_preprocess(const std::string& name, int size, int depth) {
   return {{"mesh", name + (size ? "/" + std::to_string(size) : "")},
           {"faces", mesh.n_faces()},
           {"patches", tables.plans.n_patches()},
-          {"depth", depth},
+          {"scheme", tables.plans.shape == PatchShape::triangle ? "loop" : "catmull-clark"},
+          {"depth", tables.plans.max_depth},
           {"nodes_ints", tables.plans.nodes.size()},
+          {"table_bytes_per_face", double(tables.plans.nodes.size() * 4 + tables.plans.patch_roots.size() * 4 +
+                                          tables.plans.patch_corner_points.size() * 4 + tables.plans.ev_tables.size() * 8 +
+                                          tables.stencils.indices.size() * 12 + tables.stencils.offsets.size() * 4) /
+                                       double(mesh.n_faces())},
           {"stencil_rows", tables.stencils.n_rows()},
           {"stencil_nonzeros", tables.stencils.indices.size()},
           {"preprocess_ms", preprocess * 1e3},
@@ -80,16 +85,14 @@ nlohmann::json bench_preprocess(const std::string& name, int size, int depth) {
 
 // Frame time per mesh and level: the compute passes, the tessellated draw, and the floor: the same
 // triangles (CPU tessellation) drawn from a static vertex buffer with the same shading.
-nlohmann::json bench_render(const std::string& name, int depth, int size, const std::vector<int>& levels) {
+nlohmann::json bench_render(const std::string& name, const PlanOptions& options, int size, const std::vector<int>& levels) {
   const CovarianceMesh mesh = make_sample(name);
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, depth);
+  renderer.set_mesh(mesh, options);
   const Camera camera = frame_mesh(mesh);
   RenderTarget target(size, size);
   const FrameTiming compute = time_gl_work([&] { renderer.recompute_all(); }, 5);
-  std::vector<Dual> q(mesh.n_vertices());
-  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariance(i));
-  const std::vector<Dual> points = apply_stencils(renderer.tables().stencils, q);
+  const std::vector<Dual> points = apply_stencils(renderer.tables().stencils, base_points(mesh));
   nlohmann::json rows = nlohmann::json::array();
   for (const int level : levels) {
     DrawOptions o;
@@ -120,11 +123,11 @@ nlohmann::json bench_render(const std::string& name, int depth, int size, const 
 // Edit-to-frame time on a `faces`-face sphere: an edit maps only the changed vertices to 9D and
 // re-applies the stencils that read them (no topology rebuild), against the plain frame, the full
 // recompute and set_mesh. Wall times to after glFinish; the figures are measured interleaved.
-nlohmann::json bench_edit(int faces, int depth) {
-  CovarianceMesh mesh = make_sample("sphere", faces);
+nlohmann::json bench_edit(const std::string& name, int faces, const PlanOptions& options) {
+  CovarianceMesh mesh = make_sample(name, faces);
   SurfaceRenderer renderer;
   const auto rebuild_start = Clock::now();
-  renderer.set_mesh(mesh, depth);
+  renderer.set_mesh(mesh, options);
   glFinish();
   const double set_mesh = std::chrono::duration<double>(Clock::now() - rebuild_start).count();
   const Camera camera = frame_mesh(mesh);
@@ -177,7 +180,7 @@ nlohmann::json bench_edit(int faces, int depth) {
           {"faces", mesh.n_faces()},
           {"vertices", mesh.n_vertices()},
           {"patches", statistics.patches},
-          {"depth", depth},
+          {"depth", renderer.tables().plans.max_depth},
           {"triangles", statistics.triangles},
           {"frame_ms", t[0] * 1e3},
           {"edit_to_frame_1_vertex_ms", t[1] * 1e3},
@@ -194,8 +197,8 @@ void add_bench_command(CLI::App& app) {
   struct Args {
     bool preprocess = false, render = false, edit = false;
     int size = 0;  // the mode's default
-    int depth = 3;
-    std::string json, plots, context = "auto";
+    PlanArguments plans;
+    std::string json, plots, context = "auto", mesh;
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("bench", "Benchmarks (figures for the closing notes; see also build/bench/)");
@@ -205,7 +208,8 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--context", args->context, "GL context for --render and --edit: auto, osmesa, egl")->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   cmd->add_option("--size", args->size, "--render: render size in pixels (square, default 512); --edit: faces (default 100000)")
       ->check(CLI::Range(16, 4000000));
-  cmd->add_option("--depth", args->depth, "maximum plan depth")->check(CLI::Range(1, 8));
+  add_plan_arguments(cmd, args->plans);
+  cmd->add_option("--mesh", args->mesh, "--edit: the sample to edit (default: sphere; icosphere for triangles)");
   cmd->add_option("--json", args->json, "also write the figures as JSON");
   cmd->add_option("--plots", args->plots, "with --render: write PREFIX_frame_time.png and PREFIX_memory.png");
   cmd->callback([args] {
@@ -218,7 +222,7 @@ void add_bench_command(CLI::App& app) {
     };
     if (args->edit) {
       const auto context = make_context();
-      const auto r = bench_edit(args->size ? args->size : 100000, args->depth);
+      const auto r = bench_edit(args->mesh.empty() ? "sphere" : args->mesh, args->size ? args->size : 100000, args->plans.options());
       std::printf("device: %s\n%s: %d faces, %d patches, depth %d, 1280x720, adaptive 6 px, %lld triangles per frame\n",
                   context->description().c_str(), r["mesh"].get<std::string>().c_str(), r["faces"].get<int>(), r["patches"].get<int>(),
                   r["depth"].get<int>(), r["triangles"].get<long long>());
@@ -240,12 +244,12 @@ void add_bench_command(CLI::App& app) {
       if (!args->size) args->size = 512;
       if (args->size > 4096) throw usage_error("bench --render: --size is at most 4096 pixels");
       const auto context = make_context();
-      std::printf("device: %s, %dx%d pixels, depth %d\n", context->description().c_str(), args->size, args->size, args->depth);
+      std::printf("device: %s, %dx%d pixels, depth %d\n", context->description().c_str(), args->size, args->size, args->plans.depth);
       std::printf("%-12s %7s %5s %9s %10s %10s %10s %12s %10s %7s %9s\n", "mesh", "patches", "level", "triangles", "compute",
                   "draw(gpu)", "frame", "tri/s", "static", "ratio", "memory");
       nlohmann::json all = nlohmann::json::array();
-      for (const char* name : {"cube", "wirecube", "cylinder", "valence5", "cone-pointy"}) {
-        for (const auto& r : bench_render(name, args->depth, args->size, {1, 4, 16, 64})) {
+      for (const char* name : {"cube", "wirecube", "cylinder", "valence5", "cone-pointy", "icosphere"}) {
+        for (const auto& r : bench_render(name, args->plans.options(), args->size, {1, 4, 16, 64})) {
           std::printf("%-12s %7d %5d %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %6.1f kB\n", r["mesh"].get<std::string>().c_str(),
                       r["patches"].get<int>(), r["level"].get<int>(), r["triangles"].get<double>(), r["compute_gpu_ms"].get<double>(),
                       r["draw_gpu_ms"].get<double>(), r["frame_ms"].get<double>(), r["triangles_per_second"].get<double>(),
@@ -277,16 +281,18 @@ void add_bench_command(CLI::App& app) {
     std::vector<std::pair<std::string, int>> meshes = {{"cube", 0}, {"wirecube", 0}};
     for (int n = 3; n <= 10; ++n) meshes.emplace_back("valence" + std::to_string(n), 0);
     meshes.insert(meshes.end(), {{"sphere", 250}, {"grid", 1000}, {"grid", 10000}, {"grid", 100000},
-                                 {"sphere", 1000}, {"sphere", 10000}, {"sphere", 100000}});
+                                 {"sphere", 1000}, {"sphere", 10000}, {"sphere", 100000}, {"icosphere", 1280},
+                                 {"icosphere", 20480}, {"icosphere", 81920}, {"icosphere", 1310720}, {"cone-pointy", 0}});
     nlohmann::json all = nlohmann::json::array();
-    std::printf("%-14s %7s %8s %7s %8s %12s %11s %10s %10s %10s\n", "mesh", "faces", "patches", "rows", "nnz",
-                "preprocess", "us/face", "dual map", "apply", "1-vertex");
+    std::printf("%-18s %7s %8s %7s %8s %12s %11s %10s %10s %10s %9s\n", "mesh", "faces", "patches", "rows", "nnz",
+                "preprocess", "us/face", "dual map", "apply", "1-vertex", "B/face");
     for (const auto& [name, size] : meshes) {
-      const auto r = bench_preprocess(name, size, args->depth);
-      std::printf("%-14s %7d %8d %7d %8d %9.3f ms %11.3f %7.3f ms %7.3f ms %7.2f us\n", r["mesh"].get<std::string>().c_str(),
+      const auto r = bench_preprocess(name, size, args->plans.options());
+      std::printf("%-18s %7d %8d %7d %8d %9.3f ms %11.3f %7.3f ms %7.3f ms %7.2f us %9.0f\n", r["mesh"].get<std::string>().c_str(),
                   r["faces"].get<int>(), r["patches"].get<int>(), r["stencil_rows"].get<int>(), r["stencil_nonzeros"].get<int>(),
                   r["preprocess_ms"].get<double>(), r["preprocess_us_per_face"].get<double>(), r["dual_map_ms"].get<double>(),
-                  r["stencil_apply_ms"].get<double>(), r["stencil_update_one_vertex_us"].get<double>());
+                  r["stencil_apply_ms"].get<double>(), r["stencil_update_one_vertex_us"].get<double>(),
+                  r["table_bytes_per_face"].get<double>());
       std::fflush(stdout);
       all.push_back(r);
     }
