@@ -5,6 +5,24 @@
 
 namespace gps {
 
+TriangleWalker::TriangleWalker(const PolygonTopology& topology, const MeshConnectivity& connectivity)
+    : t_(topology), c_(connectivity) {
+  fan_offsets_.reserve(size_t(t_.n_vertices) + 1);
+  fans_.reserve(c_.vertex_edges.size());
+  fan_offsets_.push_back(0);
+  for (int v = 0; v < t_.n_vertices; ++v) {
+    const int valence = c_.valence(v);
+    if (valence > 0) {
+      int start = c_.other_vertex(c_.vertex_edges[size_t(c_.vertex_edge_offsets[size_t(v)])], v);
+      if (vertex_role(c_, v) != VertexRole::interior)  // walk clockwise to the boundary start
+        for (int x = cw_next(v, start), guard = 0; x >= 0 && guard < valence; x = cw_next(v, start), ++guard) start = x;
+      fans_.push_back(start);
+      for (int x = ccw_next(v, start), n = 1; x >= 0 && x != start && n < valence; x = ccw_next(v, x), ++n) fans_.push_back(x);
+    }
+    fan_offsets_.push_back(int(fans_.size()));
+  }
+}
+
 int TriangleWalker::ccw_next(int v, int w) const {
   for (int i = c_.vertex_face_offsets[size_t(v)]; i < c_.vertex_face_offsets[size_t(v) + 1]; ++i) {
     const int f = c_.vertex_faces[size_t(i)], k = c_.vertex_face_corners[size_t(i)], o = t_.offsets[size_t(f)];
@@ -22,11 +40,17 @@ int TriangleWalker::cw_next(int v, int w) const {
 }
 
 std::vector<int> TriangleWalker::ring_from(int v, int first) const {
-  std::vector<int> ring = {first};
-  const int valence = c_.valence(v);
-  for (int w = ccw_next(v, first); w >= 0 && w != first && int(ring.size()) <= valence; w = ccw_next(v, w)) ring.push_back(w);
-  if (ring.size() < size_t(valence))
-    for (int w = cw_next(v, first); w >= 0 && int(ring.size()) < valence; w = cw_next(v, w)) ring.push_back(w);
+  const int* f = fan(v);
+  const int n = fan_size(v);
+  const int at = int(std::find(f, f + n, first) - f);
+  std::vector<int> ring;
+  ring.reserve(size_t(n));
+  if (vertex_role(c_, v) == VertexRole::interior) {
+    for (int i = 0; i < n; ++i) ring.push_back(f[(at + i) % n]);
+  } else {  // counter-clockwise to the boundary end, then clockwise from `first` to the start
+    for (int i = at; i < n; ++i) ring.push_back(f[i]);
+    for (int i = at - 1; i >= 0; --i) ring.push_back(f[i]);
+  }
   return ring;
 }
 
@@ -61,12 +85,7 @@ int net_index(int i, int j) {
 // vertex's two missing ones are phantoms, reflections across its boundary edges.
 std::array<VertexCombination, 6> lattice_ring(const TriangleWalker& w, int c, int first, int d0) {
   std::array<VertexCombination, 6> ring;
-  // The fan counter-clockwise from its boundary start (an interior vertex: from `first`).
-  int start = first;
-  if (vertex_role(w.connectivity(), c) != VertexRole::interior)
-    for (int x = w.cw_next(c, start), guard = 0; x >= 0 && guard < 6; x = w.cw_next(c, start), ++guard) start = x;
-  std::vector<int> fan = {start};
-  for (int x = w.ccw_next(c, start); x >= 0 && x != start && fan.size() < 6; x = w.ccw_next(c, x)) fan.push_back(x);
+  const std::vector<int> fan(w.fan(c), w.fan(c) + w.fan_size(c));
   const int shift = int(std::find(fan.begin(), fan.end(), first) - fan.begin());
   for (size_t j = 0; j < fan.size(); ++j) ring[size_t((d0 + int(j) - shift + 12) % 6)] = {{fan[j], 1.0}};
   if (fan.size() == 4) {  // regular boundary: d(f3)+1 = f3 − f2 + c, d(f0)−1 = f0 − f1 + c

@@ -3,6 +3,7 @@
 // subdivision surfaces"): the 12-point net of a regular triangle, with phantom points beyond a
 // boundary, and the neighbourhood of a triangle at an extraordinary vertex.
 #include <array>
+#include <initializer_list>
 #include <utility>
 #include <vector>
 
@@ -10,14 +11,29 @@
 
 namespace gps {
 
-/// A point as a combination of mesh vertices: a vertex itself, or a phantom point.
-using VertexCombination = std::vector<std::pair<int, double>>;
+/// A point as a combination of mesh vertices: a vertex itself, or a phantom point (three terms).
+class VertexCombination {
+public:
+  VertexCombination() = default;
+  VertexCombination(std::initializer_list<std::pair<int, double>> terms) {
+    for (const auto& t : terms) terms_[size_++] = t;
+  }
+  const std::pair<int, double>* begin() const { return terms_.data(); }
+  const std::pair<int, double>* end() const { return terms_.data() + size_; }
+  size_t size() const { return size_t(size_); }
+  bool empty() const { return size_ == 0; }
+  const std::pair<int, double>& operator[](size_t i) const { return terms_[i]; }
+
+private:
+  std::array<std::pair<int, double>, 3> terms_{};
+  int size_ = 0;
+};
 
 /// Triangle-mesh adjacency for the walks below.
 class TriangleWalker {
 public:
-  TriangleWalker(const PolygonTopology& topology, const MeshConnectivity& connectivity)
-      : t_(topology), c_(connectivity) {}
+  /// Builds every vertex's ring once (linear in the mesh for bounded valence).
+  TriangleWalker(const PolygonTopology& topology, const MeshConnectivity& connectivity);
   /// The vertex after w counter-clockwise around v (the third vertex of the face with directed edge
   /// v→w), or −1 across a boundary.
   int ccw_next(int v, int w) const;
@@ -31,10 +47,14 @@ public:
   /// The edge joining a and b, or −1.
   int edge(int a, int b) const;
   const MeshConnectivity& connectivity() const { return c_; }
+  /// The neighbours of v counter-clockwise, a boundary vertex's from its boundary start.
+  const int* fan(int v) const { return &fans_[size_t(fan_offsets_[size_t(v)])]; }
+  int fan_size(int v) const { return fan_offsets_[size_t(v) + 1] - fan_offsets_[size_t(v)]; }
 
 private:
   const PolygonTopology& t_;
   const MeshConnectivity& c_;
+  std::vector<int> fan_offsets_, fans_;
 };
 
 /// The 12 control points of the box-spline patch of the triangle (v0, v1, v2), all three regular,
