@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/stencil_table.h"
 #include "render/gl_context.h"
+#include "render/gpu_layout.h"
 #include "render/matcap.h"
 #include "shaders/embedded_shaders.h"
 
@@ -15,13 +16,16 @@ namespace gps {
 
 namespace {
 
-enum Binding { kGaussians = 0, kPoints = 1, kOffsets = 2, kIndices = 3, kWeights = 4, kNodes = 5, kRoots = 6, kCorners = 7, kChanged = 8, kRows = 9, kEvTables = 10, kBindings = 11 };
+using namespace gpu;
+constexpr int kGaussians = kBindingGaussians, kPoints = kBindingPoints, kOffsets = kBindingOffsets, kIndices = kBindingIndices,
+              kWeights = kBindingWeights, kNodes = kBindingNodes, kRoots = kBindingRoots, kCorners = kBindingCorners,
+              kChanged = kBindingChanged, kRows = kBindingRows, kEvTables = kBindingEvTables, kBindings = kBindingCount;
 
 // The patch program of a shape: quads (Catmull-Clark plans) or triangles (Loop plans).
 ShaderProgram patch_program(PatchShape shape, bool feedback) {
   const bool triangles = shape == PatchShape::triangle;
-  std::vector<const char*> control = {shaders::patch_basis, shaders::plan_eval, shaders::tess_levels};
-  std::vector<const char*> evaluation = {shaders::patch_basis, shaders::plan_eval};
+  std::vector<const char*> control = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::tess_levels};
+  std::vector<const char*> evaluation = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
   control.push_back(triangles ? shaders::triangle_tesc : shaders::patch_tesc);
   if (triangles) evaluation.push_back(shaders::loop_eval);
   evaluation.push_back(triangles ? shaders::triangle_tese : shaders::patch_tese);
@@ -37,8 +41,8 @@ ShaderProgram patch_program(PatchShape shape, bool feedback) {
 }  // namespace
 
 SurfaceRenderer::SurfaceRenderer()
-    : dual_map_("dual_map", {{GL_COMPUTE_SHADER, {shaders::dual_map_comp}}}),
-      stencil_("stencil", {{GL_COMPUTE_SHADER, {shaders::stencil_comp}}}),
+    : dual_map_("dual_map", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::dual_map_comp}}}),
+      stencil_("stencil", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::stencil_comp}}}),
       patches_(patch_program(PatchShape::quad, false)),
       feedback_(patch_program(PatchShape::quad, true)),
       triangle_patches_(patch_program(PatchShape::triangle, false)),
@@ -98,7 +102,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, const PlanOptions& op
   upload(buffers_[kRoots], buffer_sizes_[kRoots], tables_.plans.patch_roots);
   upload(buffers_[kCorners], buffer_sizes_[kCorners], tables_.plans.patch_corner_points);
   upload(buffers_[kEvTables], buffer_sizes_[kEvTables], std::vector<float>(tables_.plans.ev_tables.begin(), tables_.plans.ev_tables.end()));
-  upload(buffers_[kPoints], buffer_sizes_[kPoints], std::vector<float>(size_t(s.n_points()) * 12, 0.0f));
+  upload(buffers_[kPoints], buffer_sizes_[kPoints], std::vector<float>(size_t(s.n_points()) * kVec4PerPoint * 4, 0.0f));
   upload_gaussians(mesh);
   // Base mesh lines: the vertex positions (updated by edits) and each edge as a pair of indices.
   std::vector<unsigned> edges;
@@ -173,13 +177,13 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
   dual_map_.use();
   dual_map_.set("u_count", vertex_count);
   dual_map_.set("u_use_list", changed ? 1 : 0);
-  if (vertex_count > 0) glDispatchCompute(GLuint((vertex_count + 63) / 64), 1, 1);
+  if (vertex_count > 0) glDispatchCompute(GLuint((vertex_count + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   stencil_.use();
   stencil_.set("u_count", row_count);
   stencil_.set("u_n_base", n_base_);
   stencil_.set("u_use_list", changed ? 1 : 0);
-  if (row_count > 0) glDispatchCompute(GLuint((row_count + 63) / 64), 1, 1);
+  if (row_count > 0) glDispatchCompute(GLuint((row_count + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   check_gl_errors("the compute passes");
 }
@@ -338,7 +342,7 @@ std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& c
 }
 
 std::vector<float> SurfaceRenderer::read_points() const {
-  std::vector<float> points(size_t(tables_.stencils.n_points()) * 12);
+  std::vector<float> points(size_t(tables_.stencils.n_points()) * kVec4PerPoint * 4);
   glGetNamedBufferSubData(buffers_[kPoints], 0, GLsizeiptr(points.size() * sizeof(float)), points.data());
   check_gl_errors("reading the plan points");
   return points;

@@ -1,8 +1,8 @@
 // Maps base Gaussians (μ, Σ) to their 9D points q = (vech(Σ⁻¹), Σ⁻¹μ) (thesis Eq. 2.10).
-layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Gaussians { float gaussians[]; };  // 9 per vertex: μ, Σ xx xy xz yy yz zz
-layout(std430, binding = 1) buffer Points { vec4 points[]; };
-layout(std430, binding = 8) readonly buffer Changed { int changed[]; };
+layout(local_size_x = kWorkGroupSize) in;
+layout(std430, binding = kBindingGaussians) readonly buffer Gaussians { float gaussians[]; };  // 9 per vertex: μ, Σ xx xy xz yy yz zz
+layout(std430, binding = kBindingPoints) buffer Points { vec4 points[]; };
+layout(std430, binding = kBindingChanged) readonly buffer Changed { int changed[]; };
 uniform int u_count;
 uniform int u_use_list;
 
@@ -15,7 +15,7 @@ void main() {
   mat3 sigma = mat3(g[3], g[4], g[5], g[4], g[6], g[7], g[5], g[7], g[8]);
   mat3 p = inverse(sigma);
   vec3 b = p * vec3(g[0], g[1], g[2]);
-  points[3 * v] = vec4(p[0][0], p[0][1], p[0][2], p[1][1]);
-  points[3 * v + 1] = vec4(p[1][2], p[2][2], b.x, b.y);
-  points[3 * v + 2] = vec4(b.z, 0.0, 0.0, 0.0);
+  points[kVec4PerPoint * v] = vec4(p[0][0], p[0][1], p[0][2], p[1][1]);
+  points[kVec4PerPoint * v + 1] = vec4(p[1][2], p[2][2], b.x, b.y);
+  points[kVec4PerPoint * v + 2] = vec4(b.z, 0.0, 0.0, 0.0);
 }

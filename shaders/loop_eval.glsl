@@ -1,6 +1,6 @@
 // Triangle plans (Loop): descent, box-spline nodes and exact extraordinary nodes
 // (core/loop_ev_tables.h); mirrors evaluate_triangle_dual in core/patch_eval.cpp.
-layout(std430, binding = 10) readonly buffer EvTables { float ev_tables[]; };
+layout(std430, binding = kBindingEvTables) readonly buffer EvTables { float ev_tables[]; };
 
 void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int leaf_kind) {
   float u = patch_u, v = patch_v;
@@ -23,7 +23,7 @@ void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3
     loop_box_spline_basis(u, v, w, ws, wt);
     for (int j = 0; j < 12; ++j) {
       int p = nodes[node + 1 + j];
-      vec4 a = points[3 * p], b = points[3 * p + 1], c = points[3 * p + 2];
+      vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
       qa += w[j] * a; qb += w[j] * b; qc += w[j] * c;
       ua += ws[j] * a; ub += ws[j] * b; uc += ws[j] * c;
       va += wt[j] * a; vb += wt[j] * b; vc += wt[j] * c;
@@ -56,7 +56,7 @@ void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3
       x_t += wt[j] * e;
     }
     int p = nodes[node + 4 + i];
-    vec4 a = points[3 * p], b = points[3 * p + 1], c = points[3 * p + 2];
+    vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
     qa += x * a; qb += x * b; qc += x * c;
     ua += x_s * a; ub += x_s * b; uc += x_s * c;
     va += x_t * a; vb += x_t * b; vc += x_t * c;

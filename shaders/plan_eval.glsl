@@ -1,16 +1,16 @@
 // The plans and their points (core/plan_table.h) and their evaluation; mirrors core/patch_eval.cpp.
 // A 9D point q = (xx xy xz yy yz zz | b0 b1 b2) is three vec4: (xx xy xz yy) (yz zz b0 b1) (b2 0 0 0).
-layout(std430, binding = 1) readonly buffer Points { vec4 points[]; };
-layout(std430, binding = 5) readonly buffer Nodes { int nodes[]; };
-layout(std430, binding = 6) readonly buffer Roots { int roots[]; };
-layout(std430, binding = 7) readonly buffer CornerPoints { int corner_points[]; };
+layout(std430, binding = kBindingPoints) readonly buffer Points { vec4 points[]; };
+layout(std430, binding = kBindingNodes) readonly buffer Nodes { int nodes[]; };
+layout(std430, binding = kBindingRoots) readonly buffer Roots { int roots[]; };
+layout(std430, binding = kBindingCorners) readonly buffer CornerPoints { int corner_points[]; };
 
 mat3 precision_of(vec4 a, vec4 b) { return mat3(a.x, a.y, a.z, a.y, a.w, b.x, a.z, b.x, b.y); }
 vec3 precision_mean_of(vec4 b, vec4 c) { return vec3(b.z, b.w, c.x); }
 
 // μ of plan point p: solve [q̂] μ = q̄ (thesis Eq. 2.11).
 vec3 point_mean(int p) {
-  vec4 a = points[3 * p], b = points[3 * p + 1], c = points[3 * p + 2];
+  vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
   return inverse(precision_of(a, b)) * precision_mean_of(b, c);
 }
 
@@ -54,7 +54,7 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i) {
       int p = nodes[node + 1 + i + 4 * j];
-      vec4 a = points[3 * p], b = points[3 * p + 1], c = points[3 * p + 2];
+      vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
       float w = wu[i] * wv[j], wdu = dwu[i] * wv[j], wdv = wu[i] * dwv[j];
       qa += w * a; qb += w * b; qc += w * c;
       ua += wdu * a; ub += wdu * b; uc += wdu * c;

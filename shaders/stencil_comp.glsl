@@ -1,10 +1,10 @@
 // Applies the stencil table: point n_base + r = Σ w · q[index] (one sparse matrix-vector product).
-layout(local_size_x = 64) in;
-layout(std430, binding = 1) buffer Points { vec4 points[]; };
-layout(std430, binding = 2) readonly buffer Offsets { int offsets[]; };
-layout(std430, binding = 3) readonly buffer Indices { int indices[]; };
-layout(std430, binding = 4) readonly buffer Weights { float weights[]; };
-layout(std430, binding = 9) readonly buffer Rows { int rows[]; };
+layout(local_size_x = kWorkGroupSize) in;
+layout(std430, binding = kBindingPoints) buffer Points { vec4 points[]; };
+layout(std430, binding = kBindingOffsets) readonly buffer Offsets { int offsets[]; };
+layout(std430, binding = kBindingIndices) readonly buffer Indices { int indices[]; };
+layout(std430, binding = kBindingWeights) readonly buffer Weights { float weights[]; };
+layout(std430, binding = kBindingRows) readonly buffer Rows { int rows[]; };
 uniform int u_count;
 uniform int u_n_base;
 uniform int u_use_list;
@@ -17,12 +17,12 @@ void main() {
   for (int k = offsets[r]; k < offsets[r + 1]; ++k) {
     int p = indices[k];
     float w = weights[k];
-    a += w * points[3 * p];
-    b += w * points[3 * p + 1];
-    c += w * points[3 * p + 2];
+    a += w * points[kVec4PerPoint * p];
+    b += w * points[kVec4PerPoint * p + 1];
+    c += w * points[kVec4PerPoint * p + 2];
   }
   int out_point = u_n_base + r;
-  points[3 * out_point] = a;
-  points[3 * out_point + 1] = b;
-  points[3 * out_point + 2] = c;
+  points[kVec4PerPoint * out_point] = a;
+  points[kVec4PerPoint * out_point + 1] = b;
+  points[kVec4PerPoint * out_point + 2] = c;
 }

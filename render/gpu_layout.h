@@ -1,0 +1,33 @@
+// What the C++ pipeline and its shaders agree on: buffer bindings, the compute work-group size and
+// the layout of a 9D point. ONE source: compiled as C++ and embedded, with GPS_GLSL defined, ahead
+// of the shaders that use it (cmake/embed_shaders.cmake), like core/patch_basis.h.
+#ifndef GPS_GLSL
+#pragma once
+namespace gps::gpu {
+#define GPS_LAYOUT_CONST inline constexpr
+#else
+#define GPS_LAYOUT_CONST const
+#endif
+
+// Shader storage buffer bindings.
+GPS_LAYOUT_CONST int kBindingGaussians = 0;     // 9 floats per base vertex: μ, Σ xx xy xz yy yz zz
+GPS_LAYOUT_CONST int kBindingPoints = 1;        // the plan points, kVec4PerPoint vec4 each
+GPS_LAYOUT_CONST int kBindingOffsets = 2;       // stencil table (core/plan_table.h)
+GPS_LAYOUT_CONST int kBindingIndices = 3;
+GPS_LAYOUT_CONST int kBindingWeights = 4;
+GPS_LAYOUT_CONST int kBindingNodes = 5;         // plan nodes
+GPS_LAYOUT_CONST int kBindingRoots = 6;
+GPS_LAYOUT_CONST int kBindingCorners = 7;
+GPS_LAYOUT_CONST int kBindingChanged = 8;       // an edit's changed vertices
+GPS_LAYOUT_CONST int kBindingRows = 9;          // the stencil rows that read them
+GPS_LAYOUT_CONST int kBindingEvTables = 10;     // Loop extraordinary tables (core/loop_ev_tables.h)
+GPS_LAYOUT_CONST int kBindingCount = 11;
+
+// Compute passes: invocations per work group.
+GPS_LAYOUT_CONST int kWorkGroupSize = 64;
+// A 9D point q = (xx xy xz yy yz zz | b0 b1 b2) is three vec4: (xx xy xz yy) (yz zz b0 b1) (b2 0 0 0).
+GPS_LAYOUT_CONST int kVec4PerPoint = 3;
+
+#ifndef GPS_GLSL
+}  // namespace gps::gpu
+#endif
