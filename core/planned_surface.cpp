@@ -12,6 +12,10 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
   if (options.scheme) return *options.scheme;
   for (int f = 0; f < topology.n_faces(); ++f)
     if (topology.face_size(f) != 3) return Scheme::catmull_clark;
+  // Loop's exact tables grow with the valence: past kMaxLoopValence faces at a vertex, Catmull-Clark.
+  std::vector<int> faces_at(size_t(topology.n_vertices), 0);
+  for (const int v : topology.verts)
+    if (++faces_at[size_t(v)] > kMaxLoopValence) return Scheme::catmull_clark;
   return topology.n_faces() > 0 ? Scheme::loop : Scheme::catmull_clark;
 }
 

@@ -14,7 +14,8 @@
 namespace gps {
 
 struct PlanOptions {
-  std::optional<Scheme> scheme;  // empty: Loop for a mesh of triangles only, else Catmull-Clark
+  std::optional<Scheme> scheme;  // empty: Loop for a mesh of triangles only (valences up to
+                                 // kMaxLoopValence), else Catmull-Clark
   int depth = 3;                 // Catmull-Clark plan depth 1..8 (Loop plans are exact at depth 1)
   LoopBeta loop_beta = LoopBeta::loop;
 };

@@ -12,6 +12,7 @@
 #include "core/loop_ev_tables.h"
 #include "core/patch_basis.h"
 #include "core/patch_eval.h"
+#include "core/planned_surface.h"
 #include "core/reference_subdivision.h"
 #include "core/samples.h"
 #include "core/tessellator.h"
@@ -208,8 +209,50 @@ TEST(LoopPlans, TessellationIsWatertight) {
   EXPECT_EQ(t.triangles.size(), size_t(p.tables.plans.n_patches() * 25));
 }
 
+// Every sample of every cone variant keeps q̂ positive definite (tessellate() throws otherwise), and
+// the phantom points of boundary box splines leave non-negative net weights on the real vertices.
+TEST(LoopPlans, StayInsideThePositiveDefiniteCone) {
+  for (const auto& name : {"cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder"}) {
+    const PlannedMesh p = loop_planned(make_sample(name));
+    EXPECT_NO_THROW(tessellate(p.tables.plans, p.points, 16)) << name;
+  }
+  const PlannedMesh grid = loop_planned(test::triangle_grid_mesh(5, 4));
+  const auto& plans = grid.tables.plans;
+  const auto& stencils = grid.tables.stencils;
+  int boundary_nets = 0;
+  for (const int root : plans.patch_roots) {
+    if (plans.nodes[size_t(root)] != kNodeRegular) continue;
+    bool phantom = false;
+    for (int j = 0; j < 12; ++j) phantom = phantom || plans.nodes[size_t(root + 1 + j)] >= stencils.n_base;
+    if (!phantom) continue;
+    ++boundary_nets;
+    for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.3, 0.3}, {0.5, 0.0}, {0.1, 0.8}, {0.33, 0.6}}) {
+      double w[12], wu[12], wv[12];
+      loop_box_spline_basis(u, v, w, wu, wv);
+      std::map<int, double> net;  // weight per base vertex
+      for (int j = 0; j < 12; ++j) {
+        const int point = plans.nodes[size_t(root + 1 + j)];
+        if (point < stencils.n_base) {
+          net[point] += w[j];
+          continue;
+        }
+        const int r = point - stencils.n_base;
+        for (int k = stencils.offsets[size_t(r)]; k < stencils.offsets[size_t(r) + 1]; ++k)
+          net[stencils.indices[size_t(k)]] += w[j] * stencils.weights[size_t(k)];
+      }
+      for (const auto& [vertex, weight] : net) EXPECT_GE(weight, -1e-12) << "vertex " << vertex << " at " << u << ", " << v;
+    }
+  }
+  EXPECT_GT(boundary_nets, 10);
+}
+
 TEST(LoopPlans, RefuseNonTrianglesAndHugeValences) {
   EXPECT_THROW(build_loop_plans(topology_of(test::cube_mesh().mesh), LoopBeta::loop), Error);
+  const PolygonTopology fan = topology_of(test::bipyramid_mesh(kMaxLoopValence + 1).mesh);
+  EXPECT_THROW(build_loop_plans(fan, LoopBeta::loop), Error);
+  // The automatic choice takes Catmull-Clark there, Loop for the same shape of lower valence.
+  EXPECT_EQ(scheme_for(fan, PlanOptions{}), Scheme::catmull_clark);
+  EXPECT_EQ(scheme_for(topology_of(test::bipyramid_mesh(kMaxLoopValence).mesh), PlanOptions{}), Scheme::loop);
 }
 
 }  // namespace
