@@ -96,42 +96,53 @@ TEST(PlanBuilder, ErrorNearExtraordinaryVerticesFallsWithDepth) {
   }
 }
 
-// Both sides of every shared patch edge give the same positions at the same edge parameters.
+// Both sides of every shared patch edge give the same positions at the same edge parameters, where
+// a quad meets two half-size patches of a split face too (T-junctions, core/plan_table.h).
 TEST(PlanBuilder, NeighbouringPatchesAreWatertight) {
-  for (const char* name : {"wirecube", "valence9", "cylinder", "cone-pointy", "grid"}) {
-    const PlannedMesh p(with_random_covariances(make_sample(name, 64), 7), 3);
+  for (const char* name : {"wirecube", "valence9", "cylinder", "cone-pointy", "grid", "pawn", "prism"}) {
+    const CovarianceMesh mesh = std::string(name) == "prism" ? test::prism_mesh() : make_sample(name, 64);
+    const PlannedMesh p(with_random_covariances(mesh, 7), 3);
     const auto& plans = p.tables.plans;
     const double diag = bounding_box_diagonal(p.mesh);
-    const auto edge_param = [](int k, double t) {
-      switch (k) {
-        case 0: return std::pair{t, 0.0};
-        case 1: return std::pair{1.0, t};
-        case 2: return std::pair{1.0 - t, 1.0};
-        default: return std::pair{0.0, 1.0 - t};
-      }
-    };
-    std::map<std::pair<int, int>, std::pair<int, int>> first_side;
-    int shared = 0;
+    // The first evaluation at parameter s/32 of each mesh edge (lower point first).
+    std::map<std::tuple<int, int, int>, Vec3> first_side;
+    int shared = 0, t_junctions = 0;
     for (int patch = 0; patch < plans.n_patches(); ++patch)
       for (int k = 0; k < 4; ++k) {
-        const int a = plans.patch_corner_points[size_t(4 * patch + k)];
-        const int b = plans.patch_corner_points[size_t(4 * patch + (k + 1) % 4)];
-        const auto [it, added] = first_side.try_emplace({std::min(a, b), std::max(a, b)}, patch, k);
-        if (added) continue;
-        ++shared;
-        const auto [other, ko] = it->second;
+        const PatchEdge e = patch_edge(plans, patch, k);
+        t_junctions += e.part == PatchEdgePart::whole_beside_halves;
+        const bool half = e.part == PatchEdgePart::first_half || e.part == PatchEdgePart::second_half;
         for (int i = 0; i <= 16; ++i) {
           const double t = i / 16.0;
-          const auto [u0, v0] = edge_param(k, t);
-          const auto [u1, v1] = edge_param(ko, 1.0 - t);  // the neighbour runs the edge the other way
-          const auto s0 = evaluate_patch(plans, p.points, patch, u0, v0);
-          const auto s1 = evaluate_patch(plans, p.points, other, u1, v1);
-          ASSERT_TRUE(s0 && s1);
-          EXPECT_LT((s0->position - s1->position).norm(), 1e-12 * diag) << name << " patches " << patch << "/" << other;
+          const auto [u, v] = std::array<std::pair<double, double>, 4>{
+              std::pair{t, 0.0}, std::pair{1.0, t}, std::pair{1.0 - t, 1.0}, std::pair{0.0, 1.0 - t}}[size_t(k)];
+          int s = half ? i + (e.part == PatchEdgePart::second_half ? 16 : 0) : 2 * i;  // of 32, from `from`
+          if (e.from > e.to) s = 32 - s;
+          const auto sample = evaluate_patch(plans, p.points, patch, u, v);
+          ASSERT_TRUE(sample);
+          const auto [it, added] = first_side.try_emplace({std::min(e.from, e.to), std::max(e.from, e.to), s}, sample->position);
+          if (added) continue;
+          ++shared;
+          EXPECT_LT((sample->position - it->second).norm(), 1e-12 * diag) << name << " patch " << patch << " edge " << k;
         }
       }
     EXPECT_GT(shared, 10) << name;
+    if (std::string(name) == "pawn") {
+      EXPECT_EQ(t_junctions, 2 * 32) << name;
+    }
   }
+}
+
+// A quad stays one patch beside other faces; a face of n sides is n patches.
+TEST(PlanBuilder, MixedMeshesSplitOnlyWhatIsNotAQuad) {
+  for (const char* name : {"pawn", "cylinder", "cone"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    int expected = 0;
+    for (const auto f : mesh.mesh.faces()) expected += mesh.mesh.valence(f) == 4 ? 1 : int(mesh.mesh.valence(f));
+    EXPECT_EQ(PlannedMesh(mesh, 3).tables.plans.n_patches(), expected) << name;
+    EXPECT_EQ(make_patch_layout(mesh.mesh).n_patches(), expected) << name;
+  }
+  EXPECT_EQ(PlannedMesh(make_sample("pawn"), 2).tables.plans.n_patches(), 736 + 3 * 64);
 }
 
 // Every evaluated q̂ is positive definite, extreme covariances included; net weights of the

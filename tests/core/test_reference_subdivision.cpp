@@ -153,7 +153,7 @@ TEST(ReferenceSubdivision, VertexParamsNameAPatchOfTheInput) {
   const auto r = subdivide(mesh, {Scheme::catmull_clark, 2, false});
   ASSERT_EQ(r.vertex_params.size(), r.mesh.n_vertices());
   const int n_patches = make_patch_layout(mesh.mesh).n_patches();
-  EXPECT_EQ(n_patches, 2 * 5 + 5 * 4);  // mixed faces: every face is split
+  EXPECT_EQ(n_patches, 2 * 5 + 5);  // the pentagons are split, the quads are not
   for (const auto& p : r.vertex_params) {
     EXPECT_GE(p.patch, 0);
     EXPECT_LT(p.patch, n_patches);
