@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <map>
 #include <random>
 
@@ -99,8 +101,9 @@ TEST(PlanBuilder, ErrorNearExtraordinaryVerticesFallsWithDepth) {
 // Both sides of every shared patch edge give the same positions at the same edge parameters, where
 // a quad meets two half-size patches of a split face too (T-junctions, core/plan_table.h).
 TEST(PlanBuilder, NeighbouringPatchesAreWatertight) {
-  for (const char* name : {"wirecube", "valence9", "cylinder", "cone-pointy", "grid", "pawn", "prism"}) {
-    const CovarianceMesh mesh = std::string(name) == "prism" ? test::prism_mesh() : make_sample(name, 64);
+  for (const char* name : {"wirecube", "valence9", "cylinder", "cone-pointy", "grid", "pawn", "prism", "open-cylinder"}) {
+    const std::string n = name;
+    const CovarianceMesh mesh = n == "prism" ? test::prism_mesh() : n == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name, 64);
     const PlannedMesh p(with_random_covariances(mesh, 7), 3);
     const auto& plans = p.tables.plans;
     const double diag = bounding_box_diagonal(p.mesh);
@@ -143,6 +146,28 @@ TEST(PlanBuilder, MixedMeshesSplitOnlyWhatIsNotAQuad) {
     EXPECT_EQ(make_patch_layout(mesh.mesh).n_patches(), expected) << name;
   }
   EXPECT_EQ(PlannedMesh(make_sample("pawn"), 2).tables.plans.n_patches(), 736 + 3 * 64);
+}
+
+// Plans are built on all cores in ranges of faces; the result is the one-core result, bit for bit:
+// a quad mesh of 20 ranges and a triangle mesh of 2 (its edge midpoints shared across ranges).
+TEST(PlanBuilder, AllCoresGiveTheOneCoreTablesBitForBit) {
+  const CovarianceMesh triangles = subdivide(make_sample("cone"), {Scheme::loop, 4, false}).mesh;
+  for (const CovarianceMesh& mesh : {make_sample("sphere", 20000), triangles}) {
+    const PolygonTopology topology = topology_of(mesh.mesh);
+    omp_set_num_threads(1);
+    const PlanTables one = build_plans(topology, 3);
+    omp_set_num_threads(2);
+    const PlanTables two = build_plans(topology, 3);
+    omp_set_num_threads(omp_get_num_procs());
+    EXPECT_GT(mesh.n_faces(), 2000u);
+    EXPECT_EQ(one.plans.nodes, two.plans.nodes);
+    EXPECT_EQ(one.plans.patch_roots, two.plans.patch_roots);
+    EXPECT_EQ(one.plans.patch_corner_points, two.plans.patch_corner_points);
+    EXPECT_EQ(one.plans.patch_edges, two.plans.patch_edges);
+    EXPECT_EQ(one.stencils.offsets, two.stencils.offsets);
+    EXPECT_EQ(one.stencils.indices, two.stencils.indices);
+    EXPECT_EQ(one.stencils.weights, two.stencils.weights);
+  }
 }
 
 // Every evaluated q̂ is positive definite, extreme covariances included; net weights of the
