@@ -7,6 +7,7 @@
 
 #include <map>
 #include <random>
+#include <tuple>
 
 #include "core/error.h"
 #include "core/patch_eval.h"
@@ -167,6 +168,19 @@ TEST(PlanBuilder, AllCoresGiveTheOneCoreTablesBitForBit) {
     EXPECT_EQ(one.stencils.offsets, two.stencils.offsets);
     EXPECT_EQ(one.stencils.indices, two.stencils.indices);
     EXPECT_EQ(one.stencils.weights, two.stencils.weights);
+  }
+  // ... and the merged ranges are right: the sphere's patch corners, in every range, are the exact
+  // limit positions of their base vertices.
+  const test::PlannedMesh p(make_sample("sphere", 20000), 3);
+  const auto limit = subdivide(p.mesh, {Scheme::catmull_clark, 0, true});
+  const double diag = bounding_box_diagonal(p.mesh);
+  for (int patch = 0; patch < p.tables.plans.n_patches(); patch += 97) {
+    const auto corners = face_vertices(p.mesh.mesh, p.mesh.mesh.face_handle(patch));
+    for (const auto& [k, u, v] : {std::tuple{0, 0.0, 0.0}, std::tuple{2, 1.0, 1.0}}) {
+      const auto s = evaluate_patch(p.tables.plans, p.points, patch, u, v);
+      ASSERT_TRUE(s);
+      EXPECT_LT((s->position - limit.mesh.mean(size_t(corners[size_t(k)]))).norm(), 1e-12 * diag) << "patch " << patch;
+    }
   }
 }
 
