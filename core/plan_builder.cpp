@@ -285,35 +285,46 @@ private:
 
 // Appends the plans of consecutive face ranges in order. A row is added to the whole table where it
 // is first used, which is in the first range that uses it, in that range's order: so the result is
-// the table a single range over all faces gives, bit for bit, whatever the ranges.
+// the table a single range over all faces gives, bit for bit, whatever the ranges. The rows are
+// merged in order, one range after the other; the renumbered nodes are then copied on all cores.
 PlanTables merge(std::vector<PlanTables>& parts, int n_base) {
   StencilTableBuilder stencils(n_base);
+  std::vector<std::vector<int>> rows(parts.size());  // per range: local row -> point in the whole table
+  for (size_t r = 0; r < parts.size(); ++r) {
+    const StencilTable& s = parts[r].stencils;
+    rows[r].resize(size_t(s.n_rows()));
+    for (int row = 0; row < s.n_rows(); ++row) rows[r][size_t(row)] = stencils.add_row(s, row);
+  }
+  // Where each range's records start in the whole table.
+  std::vector<size_t> node_base(parts.size() + 1, 0), patch_base(parts.size() + 1, 0);
+  for (size_t r = 0; r < parts.size(); ++r) {
+    node_base[r + 1] = node_base[r] + parts[r].plans.nodes.size();
+    patch_base[r + 1] = patch_base[r] + parts[r].plans.patch_roots.size();
+  }
   PlanTable plans;
-  std::vector<int> point;  // local point index -> index in the whole table
-  for (PlanTables& part : parts) {
-    const StencilTable& s = part.stencils;
-    point.resize(size_t(s.n_points()));
-    for (int v = 0; v < n_base; ++v) point[size_t(v)] = v;
-    for (int r = 0; r < s.n_rows(); ++r) {
-      std::vector<std::pair<int, double>> terms;
-      for (int k = s.offsets[size_t(r)]; k < s.offsets[size_t(r) + 1]; ++k) terms.emplace_back(s.indices[size_t(k)], s.weights[size_t(k)]);
-      point[size_t(n_base + r)] = stencils.add(Stencil::from_terms(std::move(terms)));
-    }
-    const PlanTable& p = part.plans;
-    const int node_base = int(plans.nodes.size());
+  plans.nodes.resize(node_base.back());
+  plans.patch_roots.resize(patch_base.back());
+  plans.patch_corner_points.resize(4 * patch_base.back());
+  plans.patch_edges.resize(12 * patch_base.back());
+#pragma omp parallel for schedule(dynamic)
+  for (size_t r = 0; r < parts.size(); ++r) {
+    const PlanTable& p = parts[r].plans;
+    const auto point = [&row = rows[r], n_base](int p) { return p < n_base ? p : row[size_t(p - n_base)]; };
+    const int base = int(node_base[r]);
+    int32_t* nodes = plans.nodes.data() + node_base[r];
     for (size_t o = 0; o < p.nodes.size();) {  // node records: kind, then 4 child offsets or 16 points
       const auto kind = NodeKind(p.nodes[o]);
-      plans.nodes.push_back(p.nodes[o]);
+      nodes[o] = p.nodes[o];
       const size_t n = kind == NodeKind::internal ? 4 : 16;
-      for (size_t i = o + 1; i <= o + n; ++i)
-        plans.nodes.push_back(kind == NodeKind::internal ? node_base + p.nodes[i] : point[size_t(p.nodes[i])]);
+      for (size_t i = o + 1; i <= o + n; ++i) nodes[i] = kind == NodeKind::internal ? base + p.nodes[i] : point(p.nodes[i]);
       o += n + 1;
     }
-    for (const int root : p.patch_roots) plans.patch_roots.push_back(node_base + root);
-    for (const int c : p.patch_corner_points) plans.patch_corner_points.push_back(point[size_t(c)]);
+    const size_t first = patch_base[r];
+    for (size_t i = 0; i < p.patch_roots.size(); ++i) plans.patch_roots[first + i] = base + p.patch_roots[i];
+    for (size_t i = 0; i < p.patch_corner_points.size(); ++i) plans.patch_corner_points[4 * first + i] = point(p.patch_corner_points[i]);
     for (size_t i = 0; i < p.patch_edges.size(); ++i)
-      plans.patch_edges.push_back(i % 3 == 2 ? p.patch_edges[i] : point[size_t(p.patch_edges[i])]);
-    part = {};
+      plans.patch_edges[12 * first + i] = i % 3 == 2 ? p.patch_edges[i] : point(p.patch_edges[i]);
+    parts[r] = {};
   }
   return {std::move(plans), stencils.finish()};
 }
