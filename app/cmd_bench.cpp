@@ -248,7 +248,8 @@ void add_bench_command(CLI::App& app) {
       std::printf("%-12s %7s %5s %9s %10s %10s %10s %12s %10s %7s %9s\n", "mesh", "patches", "level", "triangles", "compute",
                   "draw(gpu)", "frame", "tri/s", "static", "ratio", "memory");
       nlohmann::json all = nlohmann::json::array();
-      for (const char* name : {"cube", "wirecube", "cylinder", "valence5", "cone-pointy", "icosphere"}) {
+      // pawn against pawn-quads: a mixed mesh against its quads-only twin (issue 12).
+      for (const char* name : {"cube", "wirecube", "cylinder", "valence5", "cone-pointy", "icosphere", "pawn", "pawn-quads"}) {
         for (const auto& r : bench_render(name, args->plans.options(), args->size, {1, 4, 16, 64})) {
           std::printf("%-12s %7d %5d %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %6.1f kB\n", r["mesh"].get<std::string>().c_str(),
                       r["patches"].get<int>(), r["level"].get<int>(), r["triangles"].get<double>(), r["compute_gpu_ms"].get<double>(),

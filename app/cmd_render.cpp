@@ -1,4 +1,5 @@
 // gpsurf render IN -o OUT.png: a headless render of the GPS limit surface (OSMesa, no display).
+#include <algorithm>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -22,9 +23,9 @@ namespace {
 struct RenderArgs {
   std::string input, output, size = "800x600", matcap = "clay", mode = "matcap", camera, background = "1,1,1";
   std::vector<std::string> aovs;
-  int level = 8, reference = -1;
+  int level = 0, reference = -1;  // level 0: adaptive
   PlanArguments plans;
-  float pixels = 0;
+  float pixels = 0;               // 0: default_pixels() of the output size
   std::string context = "auto";
   bool mesh_lines = false, wireframe = false, ellipsoids = false;
   float sigma = 1.0f;
@@ -47,6 +48,10 @@ std::vector<float> parse_floats(const std::string& text, const char* what, size_
   return values;
 }
 
+// The adaptive target edge length when none is given: 4 pixels up to a 400-pixel image, growing with
+// the image's smaller side (1% of it), so a curve's facets stay about as visible at any output size.
+float default_pixels(int width, int height) { return std::max(4.0f, 0.01f * float(std::min(width, height))); }
+
 // One render with the given renderer (its context current): mesh, options, outputs.
 void render_one(SurfaceRenderer& renderer, const std::string& description, const RenderArgs& a, const CovarianceMesh& mesh) {
   std::smatch size_match;
@@ -64,8 +69,8 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   renderer.set_mesh(mesh, a.plans.options());
   renderer.set_matcap(matcap);
   DrawOptions o;
-  o.level = float(a.level);
-  o.pixels = a.pixels;
+  if (a.level > 0) o.level = float(a.level), o.pixels = 0;
+  else o.pixels = a.pixels > 0 ? a.pixels : default_pixels(width, height);
   o.mode = a.mode == "normals" ? ShadingMode::normals : a.mode == "flat" ? ShadingMode::flat : ShadingMode::matcap;
   o.mesh_lines = a.mesh_lines;
   o.wireframe = a.wireframe;
@@ -89,8 +94,11 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   write_image(a.output, color);
   if (!position_aov.empty()) write_image(position_aov, target.read(1), kPositionChannels);
   if (!normal_aov.empty()) write_image(normal_aov, target.read(2), kNormalChannels);
+  std::ostringstream tessellation;
+  if (o.pixels > 0) tessellation << "adaptive " << o.pixels << " px";
+  else tessellation << "level " << a.level;
   std::cout << "wrote " << a.output << " (" << width << "x" << height << ", " << renderer.tables().plans.n_patches() << " patches, "
-            << description << ")\n";
+            << tessellation.str() << ", " << description << ")\n";
 }
 
 ContextKind context_kind(const std::string& name) {
@@ -146,7 +154,7 @@ void run_script(const std::string& path, const std::string& context_name) {
       a.background = job.value("background", a.background);
       a.aovs = job.value("aov", a.aovs);
       a.reference = job.value("reference", a.reference);
-      if (a.level < 1 || a.level > 64) throw usage_error("level must be 1..64");
+      if (job.contains("level") && (a.level < 1 || a.level > 64)) throw usage_error("level must be 1..64");
       if (a.mode != "matcap" && a.mode != "normals" && a.mode != "flat") throw usage_error("mode must be matcap, normals or flat");
       CovarianceMesh mesh = a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh(a.input);
       for (const auto& edit : job.value("edits", nlohmann::json::array())) {
@@ -189,8 +197,8 @@ void add_render_command(CLI::App& app) {
       ->excludes(input)
       ->excludes(output);
   cmd->add_option("--size", a->size, "image size WxH");
-  auto* level = cmd->add_option("--level", a->level, "uniform tessellation level")->check(CLI::Range(1, 64));
-  cmd->add_option("--pixels", a->pixels, "adaptive tessellation: target edge length in pixels")->check(CLI::Range(0.5f, 1000.0f))->excludes(level);
+  auto* level = cmd->add_option("--level", a->level, "uniform tessellation level (default: adaptive, see --pixels)")->check(CLI::Range(1, 64));
+  cmd->add_option("--pixels", a->pixels, "adaptive tessellation: target edge length in pixels (default: 1% of the smaller image side, at least 4)")->check(CLI::Range(0.5f, 1000.0f))->excludes(level);
   add_plan_arguments(cmd, a->plans);
   cmd->add_option("--matcap", a->matcap, "built-in MatCap (" + [] {
     std::string s;

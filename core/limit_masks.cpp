@@ -33,6 +33,7 @@ bool boundary_limit(const MeshConnectivity& c, const std::vector<T>& p, int v, T
 template <class T>
 std::vector<T> catmull_clark_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p) {
   std::vector<T> out(p.size());
+#pragma omp parallel for if (t.n_vertices >= kParallelFaces)
   for (int v = 0; v < t.n_vertices; ++v) {
     if (boundary_limit(c, p, v, out[size_t(v)])) continue;
     const double n = c.valence(v);
@@ -51,6 +52,7 @@ std::vector<T> catmull_clark_limit(const PolygonTopology& t, const MeshConnectiv
 template <class T>
 std::vector<T> loop_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p, LoopBeta kind) {
   std::vector<T> out(p.size());
+#pragma omp parallel for if (t.n_vertices >= kParallelFaces)
   for (int v = 0; v < t.n_vertices; ++v) {
     if (boundary_limit(c, p, v, out[size_t(v)])) continue;
     const int n = c.valence(v);

@@ -6,6 +6,10 @@
 
 namespace gps {
 
+/// Per-element loops over a mesh (subdivision rules, limit masks) run on all cores (OpenMP) from
+/// this many elements on; below it starting the threads costs more than the loop.
+constexpr int kParallelFaces = 4096;
+
 /// Faces as vertex-index lists in compressed form (face f: verts[offsets[f] .. offsets[f+1])).
 struct PolygonTopology {
   int n_vertices = 0;

@@ -1,14 +1,14 @@
 #pragma once
 // Which patches a polygon mesh has and how their (u, v) domains sit on its faces (DESIGN.md §2 step 1).
 //
-// Patches are numbered in base-face order. In a mesh of quads only, each face is one patch: its
-// corners, in the order face_vertices() returns them, sit at (u, v) = (0,0), (1,0), (1,1), (0,1).
-// In a mesh with any face that is not a quad, every face with n vertices c_0..c_{n-1} (quads too)
-// is n patches, after one Catmull-Clark step: patch first_patch(f) + k is the quad
-// (c_k', e'(c_k, c_{k+1}), f', e'(c_{k-1}, c_k)) — vertex point, edge point, face point, edge
-// point — with the same corner placement. Splitting the quads too keeps patch edges matched one to
-// one (no T-junction between a quad's patch and the half-size patches of its n-gon neighbour), so
-// tessellation stays crack-free (a deviation from DESIGN.md §2 step 1, which splits n-gons only).
+// Patches are numbered in base-face order. A quad is one patch: its corners, in the order
+// face_vertices() returns them, sit at (u, v) = (0,0), (1,0), (1,1), (0,1). A face with n ≠ 4
+// vertices c_0..c_{n-1} is n patches, after one Catmull-Clark step: patch first_patch(f) + k is the
+// quad (c_k', e'(c_k, c_{k+1}), f', e'(c_{k-1}, c_k)) — vertex point, edge point, face point, edge
+// point — with the same corner placement. Where a quad meets such a face, one quad edge meets two
+// half-size patch edges; the limit curve along the edge is one curve, which subdivision halves
+// exactly at the edge point, so both sides agree when the quad's edge samples at even steps what
+// each half samples at all steps (the tessellation levels of core/plan_table.h's PatchEdgePart).
 #include <vector>
 
 #include "core/covariance_mesh.h"
@@ -32,8 +32,5 @@ struct PatchLayout {
 };
 
 PatchLayout make_patch_layout(const PolyMesh& mesh);
-
-/// Whether every face of the mesh is a quad (then each face is one patch, unsplit).
-bool is_quad_mesh(const PolyMesh& mesh);
 
 }  // namespace gps

@@ -1,6 +1,8 @@
 #include "core/plan_builder.h"
 
+#include <algorithm>
 #include <array>
+#include <exception>
 #include <stdexcept>
 
 #include "core/error.h"
@@ -51,26 +53,33 @@ int other_face(const LocalMesh& m, int e, int f) {
   return a == f ? b : a;
 }
 
+// Builds the plans of the faces [first, last): patches in face order, stencil rows in the order of
+// their first use, point indices and node offsets local to this range (merge() renumbers them).
 class Builder {
 public:
-  Builder(const PolygonTopology& topology, int max_depth, bool bspline_leaves)
-      : max_depth_(max_depth), bspline_leaves_(bspline_leaves), base_(base_local_mesh(topology)), stencils_(topology.n_vertices) {}
+  Builder(const LocalMesh& base, int max_depth, bool bspline_leaves)
+      : max_depth_(max_depth), bspline_leaves_(bspline_leaves), base_(base), stencils_(base.topology.n_vertices) {}
 
-  PlanTables build() {
+  PlanTables build(int first, int last) {
     const PolygonTopology& t = base_.topology;
-    const bool split = !all_quads(t);  // core/patch_layout.h: then every face is split
-    for (int f = 0; f < t.n_faces(); ++f) {
+    for (int f = first; f < last; ++f) {
       std::vector<int> corners(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
-      if (!split) {
+      const int n = int(corners.size());
+      if (n == 4) {
         plans_.patch_roots.push_back(build_node(base_, {corners[0], corners[1], corners[2], corners[3]}, 0));
         plans_.patch_corner_points.insert(plans_.patch_corner_points.end(), corners.begin(), corners.end());
+        for (int k = 0; k < 4; ++k) {
+          const int a = corners[size_t(k)], b = corners[size_t((k + 1) % 4)];
+          add_edge(a, b, beside_split_face(f, a, b) ? PatchEdgePart::whole_beside_halves : PatchEdgePart::whole);
+        }
         continue;
       }
-      // A face of n sides: its n Catmull-Clark children are the patch roots.
+      // A face of n sides: its n Catmull-Clark children are the patch roots, one level down already,
+      // so that along an edge shared with a quad both sides reach the same depth (same limit curve).
       std::vector<int> index;
       const LocalMesh sub = extract_neighbourhood(base_, corners, index);
       const LocalMesh fine = refine_local_mesh(sub);
-      const int n = int(corners.size()), nv = sub.topology.n_vertices, ne = sub.connectivity.n_edges();
+      const int nv = sub.topology.n_vertices, ne = sub.connectivity.n_edges();
       std::vector<int> sc(corners.size());
       for (size_t k = 0; k < corners.size(); ++k) sc[k] = index[size_t(corners[k])];
       const int face_point = nv + ne + sub.find_face(sc);
@@ -80,14 +89,19 @@ public:
       Stencil centroid;
       for (const int c : corners) centroid += Stencil::vertex(c) * (1.0 / n);
       const int centroid_point = stencils_.add(centroid);
+      const auto corner = [&](int k) { return corners[size_t((k + n) % n)]; };
       for (int k = 0; k < n; ++k) {
         const std::array<int, 4> child = {sc[size_t(k)], edge_point(k), face_point, edge_point(k + n - 1)};
-        plans_.patch_roots.push_back(build_node(fine, child, 0));
+        plans_.patch_roots.push_back(build_node(fine, child, 1));
         const auto midpoint = [&](int a, int b) {
-          return stencils_.add(Stencil::vertex(corners[size_t(a % n)]) * 0.5 + Stencil::vertex(corners[size_t(b % n)]) * 0.5);
+          return stencils_.add(Stencil::vertex(corner(a)) * 0.5 + Stencil::vertex(corner(b)) * 0.5);
         };
-        plans_.patch_corner_points.insert(plans_.patch_corner_points.end(),
-                                          {corners[size_t(k)], midpoint(k, k + 1), centroid_point, midpoint(k + n - 1, k)});
+        const int next_mid = midpoint(k, k + 1), prev_mid = midpoint(k - 1, k);
+        plans_.patch_corner_points.insert(plans_.patch_corner_points.end(), {corner(k), next_mid, centroid_point, prev_mid});
+        add_edge(corner(k), corner(k + 1), PatchEdgePart::first_half);
+        add_edge(next_mid, centroid_point, PatchEdgePart::whole);
+        add_edge(centroid_point, prev_mid, PatchEdgePart::whole);
+        add_edge(corner(k - 1), corner(k), PatchEdgePart::second_half);
       }
     }
     plans_.max_depth = max_depth_;
@@ -95,6 +109,16 @@ public:
   }
 
 private:
+  void add_edge(int from, int to, PatchEdgePart part) {
+    plans_.patch_edges.insert(plans_.patch_edges.end(), {from, to, int32_t(part)});
+  }
+
+  // Whether the face across base edge a–b from face f is split into patches (not a quad).
+  bool beside_split_face(int f, int a, int b) const {
+    const int other = other_face(base_, base_.find_edge(a, b), f);
+    return other >= 0 && base_.topology.face_size(other) != 4;
+  }
+
   int point(const LocalMesh& m, const Combo& combo) {
     if (m.is_base && combo.size() == 1 && combo[0].second == 1.0) return combo[0].first;
     return stencils_.add(m.combination(combo));
@@ -254,16 +278,80 @@ private:
 
   int max_depth_;
   bool bspline_leaves_;
-  LocalMesh base_;
+  const LocalMesh& base_;
   StencilTableBuilder stencils_;
   PlanTable plans_;
 };
+
+// Appends the plans of consecutive face ranges in order. A row is added to the whole table where it
+// is first used, which is in the first range that uses it, in that range's order: so the result is
+// the table a single range over all faces gives, bit for bit, whatever the ranges. The rows are
+// merged in order, one range after the other; the renumbered nodes are then copied on all cores.
+PlanTables merge(std::vector<PlanTables>& parts, int n_base) {
+  StencilTableBuilder stencils(n_base);
+  std::vector<std::vector<int>> rows(parts.size());  // per range: local row -> point in the whole table
+  for (size_t r = 0; r < parts.size(); ++r) {
+    const StencilTable& s = parts[r].stencils;
+    rows[r].resize(size_t(s.n_rows()));
+    for (int row = 0; row < s.n_rows(); ++row) rows[r][size_t(row)] = stencils.add_row(s, row);
+  }
+  // Where each range's records start in the whole table.
+  std::vector<size_t> node_base(parts.size() + 1, 0), patch_base(parts.size() + 1, 0);
+  for (size_t r = 0; r < parts.size(); ++r) {
+    node_base[r + 1] = node_base[r] + parts[r].plans.nodes.size();
+    patch_base[r + 1] = patch_base[r] + parts[r].plans.patch_roots.size();
+  }
+  PlanTable plans;
+  plans.nodes.resize(node_base.back());
+  plans.patch_roots.resize(patch_base.back());
+  plans.patch_corner_points.resize(4 * patch_base.back());
+  plans.patch_edges.resize(12 * patch_base.back());
+#pragma omp parallel for schedule(dynamic)
+  for (size_t r = 0; r < parts.size(); ++r) {
+    const PlanTable& p = parts[r].plans;
+    const auto point = [&row = rows[r], n_base](int p) { return p < n_base ? p : row[size_t(p - n_base)]; };
+    const int base = int(node_base[r]);
+    int32_t* nodes = plans.nodes.data() + node_base[r];
+    for (size_t o = 0; o < p.nodes.size();) {  // node records: kind, then 4 child offsets or 16 points
+      const auto kind = NodeKind(p.nodes[o]);
+      nodes[o] = p.nodes[o];
+      const size_t n = kind == NodeKind::internal ? 4 : 16;
+      for (size_t i = o + 1; i <= o + n; ++i) nodes[i] = kind == NodeKind::internal ? base + p.nodes[i] : point(p.nodes[i]);
+      o += n + 1;
+    }
+    const size_t first = patch_base[r];
+    for (size_t i = 0; i < p.patch_roots.size(); ++i) plans.patch_roots[first + i] = base + p.patch_roots[i];
+    for (size_t i = 0; i < p.patch_corner_points.size(); ++i) plans.patch_corner_points[4 * first + i] = point(p.patch_corner_points[i]);
+    for (size_t i = 0; i < p.patch_edges.size(); ++i)
+      plans.patch_edges[12 * first + i] = i % 3 == 2 ? p.patch_edges[i] : point(p.patch_edges[i]);
+    parts[r] = {};
+  }
+  return {std::move(plans), stencils.finish()};
+}
 
 }  // namespace
 
 PlanTables build_plans(const PolygonTopology& topology, int max_depth, bool bspline_leaves) {
   if (max_depth < 1 || max_depth > 8) throw usage_error("plan depth must be 1..8, got " + std::to_string(max_depth));
-  return Builder(topology, max_depth, bspline_leaves).build();
+  const LocalMesh base = base_local_mesh(topology);
+  // Faces in ranges of a fixed size, built on all cores (OpenMP), merged in order.
+  constexpr int kFacesPerRange = 1024;
+  const int n_faces = topology.n_faces(), n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);
+  std::vector<PlanTables> parts(static_cast<size_t>(n_ranges));
+  std::vector<std::exception_ptr> failures(parts.size());
+#pragma omp parallel for schedule(dynamic)
+  for (int r = 0; r < n_ranges; ++r) {
+    try {
+      parts[size_t(r)] = Builder(base, max_depth, bspline_leaves).build(r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange));
+    } catch (...) {
+      failures[size_t(r)] = std::current_exception();
+    }
+  }
+  for (const auto& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+  PlanTables tables = merge(parts, topology.n_vertices);
+  tables.plans.max_depth = max_depth;
+  return tables;
 }
 
 }  // namespace gps

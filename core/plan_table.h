@@ -26,6 +26,7 @@
 //   extraordinary: nodes[o+1] = r, the corner of the node at the extraordinary vertex;
 //             nodes[o+2] = offset of its table in ev_tables; nodes[o+3] = K; nodes[o+4 .. o+3+K]
 //             = the K points of its neighbourhood (core/loop_ev_tables.h), evaluated exactly.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -61,9 +62,33 @@ struct PlanTable {
                                               // are the corners of the patch's control polygon (for edge
                                               // tessellation levels); a corner shared by two patches has
                                               // the same index in both
+  std::vector<int32_t> patch_edges;           // quads: 4 × 3 per patch, see PatchEdgePart
   std::vector<double> ev_tables;              // triangles: the tables of core/loop_ev_tables.h
   int32_t corners() const { return int32_t(shape); }
   int32_t n_patches() const { return int32_t(patch_roots.size()); }
 };
+
+/// Patch edge k of a patch runs from its corner k to corner k+1 and is described by three ints in
+/// PlanTable::patch_edges[12·patch + 3·k ...]: the points whose means are the two ends of the edge
+/// of the (base or split-face) mesh it lies on, in the patch edge's direction, and its part of that
+/// edge. A quad next to a split face meets two half-size patches along one edge (a T-junction):
+/// it gives that edge an even tessellation level and each half takes half of it, so the vertices of
+/// both sides sit at the same parameters of the same limit curve (core/patch_layout.h).
+enum class PatchEdgePart : int32_t {
+  whole = 0,             // all of the edge, and so is the patch beside it
+  whole_beside_halves,   // all of the edge; the other side is split into two halves
+  first_half,            // the half at `from`: the patch edge runs from `from` to the midpoint
+  second_half,           // the half at `to`: the patch edge runs from the midpoint to `to`
+};
+
+struct PatchEdge {
+  int32_t from, to;
+  PatchEdgePart part;
+};
+
+inline PatchEdge patch_edge(const PlanTable& plans, int patch, int k) {
+  const int32_t* e = &plans.patch_edges[size_t(12 * patch + 3 * k)];
+  return {e[0], e[1], PatchEdgePart(e[2])};
+}
 
 }  // namespace gps

@@ -1,5 +1,7 @@
 #include "core/reference_subdivision.h"
 
+#include <algorithm>
+
 #include "core/catmull_clark.h"
 #include "core/dual_map.h"
 #include "core/error.h"
@@ -14,12 +16,11 @@ namespace {
 using CornerParams = std::vector<PatchParam>;
 
 CornerParams base_corner_params(const PolygonTopology& t) {
-  const bool split = !all_quads(t);
   CornerParams params(t.verts.size());
   int patch = 0;
   for (int f = 0; f < t.n_faces(); ++f) {
     const int o = t.offsets[size_t(f)], n = t.face_size(f);
-    if (n == 4 && !split) {
+    if (n == 4) {
       const double us[4] = {0, 1, 1, 0}, vs[4] = {0, 0, 1, 1};
       for (int k = 0; k < 4; ++k) params[size_t(o + k)] = {patch, us[k], vs[k]};
       patch += 1;
@@ -139,6 +140,7 @@ std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, co
 SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
   const PolygonTopology base = topology_of(mesh.mesh);
   std::vector<Dual> q(mesh.n_vertices());
+#pragma omp parallel for if (q.size() >= size_t(kParallelFaces))
   for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariances[i]);
   PolygonTopology t;
   CornerParams params;
@@ -147,12 +149,19 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
 
   std::vector<Vec3> means(refined.size());
   std::vector<Mat3> covariances(refined.size());
+  size_t first_invalid = refined.size();
+#pragma omp parallel for if (refined.size() >= size_t(kParallelFaces)) reduction(min : first_invalid)
   for (size_t i = 0; i < refined.size(); ++i) {
     const auto g = from_dual(refined[i]);
-    if (!g) throw Error("subdivided vertex " + std::to_string(i) + " left the cone of positive definite matrices");
+    if (!g) {
+      first_invalid = std::min(first_invalid, i);
+      continue;
+    }
     means[i] = g->mean;
     covariances[i] = g->covariance;
   }
+  if (first_invalid < refined.size())
+    throw Error("subdivided vertex " + std::to_string(first_invalid) + " left the cone of positive definite matrices");
   // The refinement of a valid manifold mesh is manifold: build the OpenMesh directly, without the
   // per-face vectors and manifold checks of make_covariance_mesh().
   SubdivisionResult result;

@@ -239,6 +239,36 @@ CovarianceMesh icosphere(int size) {
   return isotropic_mesh(p, f, "icosphere");
 }
 
+// A chess pawn turned on a lathe: a profile of 24 (radius, height) points between the two poles,
+// revolved in 32 sectors, covariances inferred (GPS paper Eq. 16–17). The 23 bands are quads; at
+// each pole a fan of 32 triangles, or, for `quads_only`, 16 quads that each join two neighbouring
+// fan triangles (the same mesh without triangles: 768 quads against 736 quads and 64 triangles).
+CovarianceMesh pawn(bool quads_only) {
+  const double profile[24][2] = {
+      {0.50, 0.00}, {0.55, 0.02}, {0.56, 0.07}, {0.54, 0.11}, {0.47, 0.14}, {0.42, 0.17}, {0.40, 0.21}, {0.35, 0.24},
+      {0.28, 0.28}, {0.23, 0.36}, {0.20, 0.46}, {0.18, 0.56}, {0.17, 0.64}, {0.24, 0.67}, {0.27, 0.70}, {0.22, 0.73},
+      {0.16, 0.75}, {0.20, 0.79}, {0.23, 0.85}, {0.24, 0.91}, {0.22, 0.98}, {0.17, 1.04}, {0.11, 1.08}, {0.05, 1.10}};
+  const int sectors = 32, rings = 24;
+  std::vector<Vec3> p = {{0, 0, 0}};
+  for (const auto& [r, y] : profile)
+    for (int k = 0; k < sectors; ++k) p.emplace_back(r * std::cos(2 * pi * k / sectors), y, -r * std::sin(2 * pi * k / sectors));
+  p.emplace_back(0, 1.11, 0);
+  const int top = int(p.size()) - 1;
+  const auto at = [&](int ring, int k) { return 1 + ring * sectors + (k % sectors); };
+  Faces f;
+  const int fan_step = quads_only ? 2 : 1;
+  for (int k = 0; k < sectors; k += fan_step)  // bottom pole, outward normals point down
+    f.push_back(quads_only ? std::vector<int>{0, at(0, k + 2), at(0, k + 1), at(0, k)} : std::vector<int>{0, at(0, k + 1), at(0, k)});
+  for (int ring = 0; ring + 1 < rings; ++ring)
+    for (int k = 0; k < sectors; ++k) f.push_back({at(ring, k), at(ring, k + 1), at(ring + 1, k + 1), at(ring + 1, k)});
+  for (int k = 0; k < sectors; k += fan_step)
+    f.push_back(quads_only ? std::vector<int>{top, at(rings - 1, k), at(rings - 1, k + 1), at(rings - 1, k + 2)}
+                           : std::vector<int>{top, at(rings - 1, k), at(rings - 1, k + 1)});
+  CovarianceMesh m = make_covariance_mesh(p, std::vector<Mat3>(p.size(), Mat3::Identity()), f, quads_only ? "pawn-quads" : "pawn");
+  infer_covariances(m);
+  return m;
+}
+
 struct Sample {
   std::string name, description;
   std::function<CovarianceMesh(int)> make;
@@ -269,6 +299,10 @@ const std::vector<Sample>& samples() {
                  [](int size) { return sphere(size > 0 ? size : 1536); }});
     s.push_back({"icosphere", "subdivided icosahedron of triangles (Loop), 12 valence-5 vertices; --size sets the face count, 20·4^k (default 1280)",
                  [](int size) { return icosphere(size > 0 ? size : 1280); }});
+    s.push_back({"pawn", "chess pawn turned on a lathe: 736 quads, triangle fans at the poles (64), inferred covariances",
+                 [](int) { return pawn(false); }});
+    s.push_back({"pawn-quads", "the pawn with each pair of pole triangles joined into a quad: 768 quads",
+                 [](int) { return pawn(true); }});
     return s;
   }();
   return list;

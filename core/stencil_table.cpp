@@ -12,12 +12,40 @@ StencilTableBuilder::StencilTableBuilder(int n_base) {
   table_.offsets.push_back(0);
 }
 
+namespace {
+// The (index, weight) terms of one row of a table, as a range.
+struct RowTerms {
+  struct Iterator {
+    const int32_t* index;
+    const double* weight;
+    std::pair<int, double> operator*() const { return {*index, *weight}; }
+    Iterator& operator++() {
+      ++index, ++weight;
+      return *this;
+    }
+    bool operator!=(const Iterator& o) const { return index != o.index; }
+  };
+  const StencilTable& table;
+  int row;
+  Iterator begin() const { return at(table.offsets[size_t(row)]); }
+  Iterator end() const { return at(table.offsets[size_t(row) + 1]); }
+  Iterator at(int k) const { return {table.indices.data() + k, table.weights.data() + k}; }
+};
+}  // namespace
+
 int StencilTableBuilder::add(const Stencil& s) {
   if (const int v = s.as_vertex(); v >= 0) return v;
   assert(!s.empty() && std::abs(s.weight_sum() - 1.0) < 1e-9);
+  return add_terms(s.terms());
+}
+
+int StencilTableBuilder::add_row(const StencilTable& other, int row) { return add_terms(RowTerms{other, row}); }
+
+template <class Terms>
+int StencilTableBuilder::add_terms(const Terms& terms) {
   // Zero weights are skipped in the hash, the comparison and the row alike (no copy of the terms).
   size_t hash = 0, n_terms = 0;
-  for (const auto& [index, weight] : s.terms())
+  for (const auto& [index, weight] : terms)
     if (weight != 0.0) {
       hash = (hash * 0x9e3779b97f4a7c15ull) ^ (size_t(index) * 31 + std::bit_cast<size_t>(weight));
       ++n_terms;
@@ -28,7 +56,7 @@ int StencilTableBuilder::add(const Stencil& s) {
     if (e - b != int(n_terms)) continue;
     bool same = true;
     int k = b;
-    for (const auto& [index, weight] : s.terms()) {
+    for (const auto& [index, weight] : terms) {
       if (weight == 0.0) continue;
       same = table_.indices[size_t(k)] == index && table_.weights[size_t(k)] == weight;
       if (!same) break;
@@ -37,7 +65,7 @@ int StencilTableBuilder::add(const Stencil& s) {
     if (same) return table_.n_base + row;
   }
   const int row = table_.n_rows();
-  for (const auto& [index, weight] : s.terms()) {
+  for (const auto& [index, weight] : terms) {
     if (weight == 0.0) continue;
     table_.indices.push_back(index);
     table_.weights.push_back(weight);

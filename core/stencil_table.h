@@ -16,9 +16,14 @@ public:
   explicit StencilTableBuilder(int n_base);
   /// The point index of `s` (a base vertex index, or n_base + row).
   int add(const Stencil& s);
+  /// The point index of row `row` of another table over the same base vertices.
+  int add_row(const StencilTable& other, int row);
   StencilTable finish() { return std::move(table_); }
 
 private:
+  template <class Terms>
+  int add_terms(const Terms& terms);
+
   StencilTable table_;
   std::unordered_map<size_t, int> last_row_by_hash_;  // chains through previous_same_hash_
   std::vector<int> previous_same_hash_;               // per row: the previous row of equal hash, or −1

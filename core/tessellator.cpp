@@ -1,6 +1,8 @@
 #include "core/tessellator.h"
 
+#include <array>
 #include <map>
+#include <numeric>
 
 #include "core/error.h"
 #include "core/patch_eval.h"
@@ -41,6 +43,33 @@ int append_sample(TriangleMesh& out, const PlanTable& plans, const std::vector<D
   return int(out.positions.size()) - 1;
 }
 
+// (u, v) of the point at parameter t along patch edge k (edge k runs from corner k to corner k+1).
+std::array<double, 2> edge_uv(int k, double t) {
+  switch (k) {
+    case 0: return {t, 0.0};
+    case 1: return {1.0, t};
+    case 2: return {1.0 - t, 1.0};
+    default: return {0.0, 1.0 - t};
+  }
+}
+
+// Samples on patch boundaries are shared between patches by a key: a mesh vertex (the corner
+// point: {point, −1, 0, 0}) or a reduced fraction num/den along the mesh edge between two points
+// (lower point first), so a quad's edge sample and the corner of a half-size patch beside it meet.
+using BoundaryKey = std::array<int, 4>;
+
+BoundaryKey boundary_key(const PatchEdge& e, int step, int steps) {
+  int num = step, den = steps;
+  if (e.part == PatchEdgePart::first_half) den *= 2;
+  if (e.part == PatchEdgePart::second_half) num += steps, den *= 2;
+  int a = e.from, b = e.to;
+  if (a > b) std::swap(a, b), num = den - num;
+  if (num == 0) return {a, -1, 0, 0};
+  if (num == den) return {b, -1, 0, 0};
+  const int g = std::gcd(num, den);
+  return {a, b, num / g, den / g};
+}
+
 // Triangle patches: the points (i, j)/L, i + j ≤ L, of each patch's (u, v) triangle.
 TriangleMesh tessellate_triangles(const PlanTable& plans, const std::vector<Dual>& points, int L) {
   TriangleMesh out;
@@ -77,35 +106,63 @@ TriangleMesh tessellate(const PlanTable& plans, const std::vector<Dual>& points,
   if (plans.shape == PatchShape::triangle) return tessellate_triangles(plans, points, level);
   TriangleMesh out;
   const int L = level;
-  SharedSamples shared;
+  std::map<BoundaryKey, int> shared;
   std::vector<int> grid(size_t(L + 1) * size_t(L + 1));
   for (int patch = 0; patch < plans.n_patches(); ++patch) {
-    const int* corner = &plans.patch_corner_points[size_t(4 * patch)];
-    for (int j = 0; j <= L; ++j)
-      for (int i = 0; i <= L; ++i) {
-        const auto sample = [&] { return append_sample(out, plans, points, patch, double(i) / L, double(j) / L); };
-        int& slot = grid[size_t(i + (L + 1) * j)];
-        const bool u_end = i == 0 || i == L, v_end = j == 0 || j == L;
-        if (u_end && v_end) {
-          slot = shared.corner(corner[i == 0 ? (j == 0 ? 0 : 3) : (j == 0 ? 1 : 2)], sample);
-        } else if (u_end || v_end) {
-          // Edge k runs from corner k to corner k+1; step s counts from corner k.
-          int k, step;
-          if (j == 0) k = 0, step = i;
-          else if (i == L) k = 1, step = j;
-          else if (j == L) k = 2, step = L - i;
-          else k = 3, step = L - j;
-          slot = shared.edge(corner[k], corner[(k + 1) % 4], step, L, sample);
-        } else {
-          slot = sample();
-        }
+    const auto sample = [&](double u, double v) { return append_sample(out, plans, points, patch, u, v); };
+    PatchEdge edges[4];
+    int steps[4];  // samples along each edge: L, or 2L where two half-size patches lie beside it
+    for (int k = 0; k < 4; ++k) {
+      edges[k] = patch_edge(plans, patch, k);
+      steps[k] = edges[k].part == PatchEdgePart::whole_beside_halves ? 2 * L : L;
+    }
+    const auto boundary_sample = [&](int k, int step) {
+      const auto [it, added] = shared.try_emplace(boundary_key(edges[k], step, steps[k]), -1);
+      if (added) {
+        const auto [u, v] = edge_uv(k, double(step) / steps[k]);
+        it->second = sample(u, v);
       }
+      return it->second;
+    };
+    // Grid point (i, j) on the boundary: on edge k at step `step` of L (a corner belongs to the
+    // edge it starts, unless it is the midpoint where the previous, half-size edge ends).
+    const auto grid_sample = [&](int i, int j) {
+      const bool u_end = i == 0 || i == L, v_end = j == 0 || j == L;
+      if (!u_end && !v_end) return sample(double(i) / L, double(j) / L);
+      int k, step;
+      if (j == 0 && i < L) k = 0, step = i;
+      else if (i == L && j < L) k = 1, step = j;
+      else if (j == L && i > 0) k = 2, step = L - i;
+      else k = 3, step = L - j;
+      const int previous = (k + 3) % 4;
+      if (step == 0 && edges[previous].part == PatchEdgePart::first_half) return boundary_sample(previous, L);
+      return boundary_sample(k, step * (steps[k] / L));
+    };
+    for (int j = 0; j <= L; ++j)
+      for (int i = 0; i <= L; ++i) grid[size_t(i + (L + 1) * j)] = grid_sample(i, j);
     for (int j = 0; j < L; ++j)
       for (int i = 0; i < L; ++i) {
         const int a = grid[size_t(i + (L + 1) * j)], b = grid[size_t(i + 1 + (L + 1) * j)];
         const int c = grid[size_t(i + 1 + (L + 1) * (j + 1))], d = grid[size_t(i + (L + 1) * (j + 1))];
-        out.triangles.push_back({a, b, c});
-        out.triangles.push_back({a, c, d});
+        // The cell's outline, counter-clockwise, with the extra sample of each side on an edge of 2L.
+        std::vector<int> outline = {a};
+        const auto side = [&](int k, int step, bool on_edge, int next) {
+          if (on_edge && steps[k] == 2 * L) outline.push_back(boundary_sample(k, 2 * step + 1));
+          outline.push_back(next);
+        };
+        side(0, i, j == 0, b);
+        side(1, j, i + 1 == L, c);
+        side(2, L - i - 1, j + 1 == L, d);
+        side(3, L - j - 1, i == 0, a);
+        outline.pop_back();
+        if (outline.size() == 4) {
+          out.triangles.push_back({a, b, c});
+          out.triangles.push_back({a, c, d});
+          continue;
+        }
+        // A fan around the cell's centre joins the finer edge to the grid.
+        const int centre = sample((i + 0.5) / L, (j + 0.5) / L);
+        for (size_t m = 0; m < outline.size(); ++m) out.triangles.push_back({centre, outline[m], outline[(m + 1) % outline.size()]});
       }
   }
   return out;

@@ -21,7 +21,8 @@ GPS_LAYOUT_CONST int kBindingCorners = 7;
 GPS_LAYOUT_CONST int kBindingChanged = 8;       // an edit's changed vertices
 GPS_LAYOUT_CONST int kBindingRows = 9;          // the stencil rows that read them
 GPS_LAYOUT_CONST int kBindingEvTables = 10;     // Loop extraordinary tables (core/loop_ev_tables.h)
-GPS_LAYOUT_CONST int kBindingCount = 11;
+GPS_LAYOUT_CONST int kBindingPatchEdges = 11;   // quads: patch edges and their parts (core/plan_table.h)
+GPS_LAYOUT_CONST int kBindingCount = 12;
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;

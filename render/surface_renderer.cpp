@@ -19,7 +19,8 @@ namespace {
 using namespace gpu;
 constexpr int kGaussians = kBindingGaussians, kPoints = kBindingPoints, kOffsets = kBindingOffsets, kIndices = kBindingIndices,
               kWeights = kBindingWeights, kNodes = kBindingNodes, kRoots = kBindingRoots, kCorners = kBindingCorners,
-              kChanged = kBindingChanged, kRows = kBindingRows, kEvTables = kBindingEvTables, kBindings = kBindingCount;
+              kChanged = kBindingChanged, kRows = kBindingRows, kEvTables = kBindingEvTables, kEdges = kBindingPatchEdges,
+              kBindings = kBindingCount;
 
 // The patch program of a shape: quads (Catmull-Clark plans) or triangles (Loop plans).
 ShaderProgram patch_program(PatchShape shape, bool feedback) {
@@ -102,6 +103,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, const PlanOptions& op
   upload(buffers_[kRoots], buffer_sizes_[kRoots], tables_.plans.patch_roots);
   upload(buffers_[kCorners], buffer_sizes_[kCorners], tables_.plans.patch_corner_points);
   upload(buffers_[kEvTables], buffer_sizes_[kEvTables], std::vector<float>(tables_.plans.ev_tables.begin(), tables_.plans.ev_tables.end()));
+  upload(buffers_[kEdges], buffer_sizes_[kEdges], tables_.plans.patch_edges);
   upload(buffers_[kPoints], buffer_sizes_[kPoints], std::vector<float>(size_t(s.n_points()) * kVec4PerPoint * 4, 0.0f));
   upload_gaussians(mesh);
   // Base mesh lines: the vertex positions (updated by edits) and each edge as a pair of indices.

@@ -104,8 +104,8 @@ private:
 
   ShaderProgram dual_map_, stencil_, patches_, feedback_, triangle_patches_, triangle_feedback_, triangles_, triangles_wire_, lines_;
   EllipsoidOverlay ellipsoids_;
-  unsigned buffers_[11] = {};
-  size_t buffer_sizes_[11] = {};
+  unsigned buffers_[12] = {};
+  size_t buffer_sizes_[12] = {};
   unsigned empty_vao_ = 0, triangle_vao_ = 0, triangle_vbo_ = 0, triangle_ibo_ = 0;
   unsigned lines_vao_ = 0, lines_vbo_ = 0, lines_ibo_ = 0;  // base vertex positions, edges as index pairs
   int triangle_count_ = 0, line_index_count_ = 0;

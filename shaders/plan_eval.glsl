@@ -4,6 +4,7 @@ layout(std430, binding = kBindingPoints) readonly buffer Points { vec4 points[];
 layout(std430, binding = kBindingNodes) readonly buffer Nodes { int nodes[]; };
 layout(std430, binding = kBindingRoots) readonly buffer Roots { int roots[]; };
 layout(std430, binding = kBindingCorners) readonly buffer CornerPoints { int corner_points[]; };
+layout(std430, binding = kBindingPatchEdges) readonly buffer PatchEdges { int patch_edges[]; };  // quads: core/plan_table.h
 
 mat3 precision_of(vec4 a, vec4 b) { return mat3(a.x, a.y, a.z, a.y, a.w, b.x, a.z, b.x, b.y); }
 vec3 precision_mean_of(vec4 b, vec4 c) { return vec3(b.z, b.w, c.x); }

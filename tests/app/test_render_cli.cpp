@@ -11,6 +11,25 @@ namespace {
 using test::gpsurf;
 using test::run_command;
 
+// Without --level or --pixels the tessellation is adaptive, its edge length set by the output size;
+// --level forces a uniform level.
+TEST(RenderCli, DefaultsToAdaptiveLevelsForTheOutputSize) {
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample pawn -o " + dir.file("p.ply"))).exit_code, 0);
+  const std::string base = "render " + dir.file("p.ply") + " -o " + dir.file("p.png");
+  for (const auto& [options, expected] : {std::pair{" --size 120x90", "adaptive 4 px"}, std::pair{" --size 700x500", "adaptive 5 px"},
+                                          std::pair{" --size 120x90 --pixels 9", "adaptive 9 px"}, std::pair{" --size 120x90 --level 3", "level 3"}}) {
+    const auto r = run_command(gpsurf(base + options));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find(std::string("patches, ") + expected + ","), std::string::npos) << options << ": " << r.output;
+  }
+  const Image png = read_image(dir.file("p.png"));
+  int drawn = 0;
+  for (int y = 0; y < png.height; ++y)
+    for (int x = 0; x < png.width; ++x) drawn += png.at(x, y, 0) < 0.9f;
+  EXPECT_GT(drawn, 500);
+}
+
 TEST(RenderCli, RendersAovsAndDifferenceImages) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample valence5 -o " + dir.file("v.ply"))).exit_code, 0);

@@ -3,8 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <map>
 #include <random>
+#include <tuple>
 
 #include "core/error.h"
 #include "core/patch_eval.h"
@@ -96,41 +99,88 @@ TEST(PlanBuilder, ErrorNearExtraordinaryVerticesFallsWithDepth) {
   }
 }
 
-// Both sides of every shared patch edge give the same positions at the same edge parameters.
+// Both sides of every shared patch edge give the same positions at the same edge parameters, where
+// a quad meets two half-size patches of a split face too (T-junctions, core/plan_table.h).
 TEST(PlanBuilder, NeighbouringPatchesAreWatertight) {
-  for (const char* name : {"wirecube", "valence9", "cylinder", "cone-pointy", "grid"}) {
-    const PlannedMesh p(with_random_covariances(make_sample(name, 64), 7), 3);
+  for (const char* name : {"wirecube", "valence9", "cylinder", "cone-pointy", "grid", "pawn", "prism", "open-cylinder"}) {
+    const std::string n = name;
+    const CovarianceMesh mesh = n == "prism" ? test::prism_mesh() : n == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name, 64);
+    const PlannedMesh p(with_random_covariances(mesh, 7), 3);
     const auto& plans = p.tables.plans;
     const double diag = bounding_box_diagonal(p.mesh);
-    const auto edge_param = [](int k, double t) {
-      switch (k) {
-        case 0: return std::pair{t, 0.0};
-        case 1: return std::pair{1.0, t};
-        case 2: return std::pair{1.0 - t, 1.0};
-        default: return std::pair{0.0, 1.0 - t};
-      }
-    };
-    std::map<std::pair<int, int>, std::pair<int, int>> first_side;
-    int shared = 0;
+    // The first evaluation at parameter s/32 of each mesh edge (lower point first).
+    std::map<std::tuple<int, int, int>, Vec3> first_side;
+    int shared = 0, t_junctions = 0;
     for (int patch = 0; patch < plans.n_patches(); ++patch)
       for (int k = 0; k < 4; ++k) {
-        const int a = plans.patch_corner_points[size_t(4 * patch + k)];
-        const int b = plans.patch_corner_points[size_t(4 * patch + (k + 1) % 4)];
-        const auto [it, added] = first_side.try_emplace({std::min(a, b), std::max(a, b)}, patch, k);
-        if (added) continue;
-        ++shared;
-        const auto [other, ko] = it->second;
+        const PatchEdge e = patch_edge(plans, patch, k);
+        t_junctions += e.part == PatchEdgePart::whole_beside_halves;
+        const bool half = e.part == PatchEdgePart::first_half || e.part == PatchEdgePart::second_half;
         for (int i = 0; i <= 16; ++i) {
           const double t = i / 16.0;
-          const auto [u0, v0] = edge_param(k, t);
-          const auto [u1, v1] = edge_param(ko, 1.0 - t);  // the neighbour runs the edge the other way
-          const auto s0 = evaluate_patch(plans, p.points, patch, u0, v0);
-          const auto s1 = evaluate_patch(plans, p.points, other, u1, v1);
-          ASSERT_TRUE(s0 && s1);
-          EXPECT_LT((s0->position - s1->position).norm(), 1e-12 * diag) << name << " patches " << patch << "/" << other;
+          const auto [u, v] = std::array<std::pair<double, double>, 4>{
+              std::pair{t, 0.0}, std::pair{1.0, t}, std::pair{1.0 - t, 1.0}, std::pair{0.0, 1.0 - t}}[size_t(k)];
+          int s = half ? i + (e.part == PatchEdgePart::second_half ? 16 : 0) : 2 * i;  // of 32, from `from`
+          if (e.from > e.to) s = 32 - s;
+          const auto sample = evaluate_patch(plans, p.points, patch, u, v);
+          ASSERT_TRUE(sample);
+          const auto [it, added] = first_side.try_emplace({std::min(e.from, e.to), std::max(e.from, e.to), s}, sample->position);
+          if (added) continue;
+          ++shared;
+          EXPECT_LT((sample->position - it->second).norm(), 1e-12 * diag) << name << " patch " << patch << " edge " << k;
         }
       }
     EXPECT_GT(shared, 10) << name;
+    if (std::string(name) == "pawn") {
+      EXPECT_EQ(t_junctions, 2 * 32) << name;
+    }
+  }
+}
+
+// A quad stays one patch beside other faces; a face of n sides is n patches.
+TEST(PlanBuilder, MixedMeshesSplitOnlyWhatIsNotAQuad) {
+  for (const char* name : {"pawn", "cylinder", "cone"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    int expected = 0;
+    for (const auto f : mesh.mesh.faces()) expected += mesh.mesh.valence(f) == 4 ? 1 : int(mesh.mesh.valence(f));
+    EXPECT_EQ(PlannedMesh(mesh, 3).tables.plans.n_patches(), expected) << name;
+    EXPECT_EQ(make_patch_layout(mesh.mesh).n_patches(), expected) << name;
+  }
+  EXPECT_EQ(PlannedMesh(make_sample("pawn"), 2).tables.plans.n_patches(), 736 + 3 * 64);
+}
+
+// Plans are built on all cores in ranges of faces; the result is the one-core result, bit for bit:
+// a quad mesh of 20 ranges and a triangle mesh of 2 (its edge midpoints shared across ranges).
+TEST(PlanBuilder, AllCoresGiveTheOneCoreTablesBitForBit) {
+  const CovarianceMesh triangles = subdivide(make_sample("cone"), {Scheme::loop, 4, false}).mesh;
+  for (const CovarianceMesh& mesh : {make_sample("sphere", 20000), triangles}) {
+    const PolygonTopology topology = topology_of(mesh.mesh);
+    omp_set_num_threads(1);
+    const PlanTables one = build_plans(topology, 3);
+    omp_set_num_threads(2);
+    const PlanTables two = build_plans(topology, 3);
+    omp_set_num_threads(omp_get_num_procs());
+    EXPECT_GT(mesh.n_faces(), 2000u);
+    EXPECT_EQ(one.plans.nodes, two.plans.nodes);
+    EXPECT_EQ(one.plans.patch_roots, two.plans.patch_roots);
+    EXPECT_EQ(one.plans.patch_corner_points, two.plans.patch_corner_points);
+    EXPECT_EQ(one.plans.patch_edges, two.plans.patch_edges);
+    EXPECT_EQ(one.stencils.offsets, two.stencils.offsets);
+    EXPECT_EQ(one.stencils.indices, two.stencils.indices);
+    EXPECT_EQ(one.stencils.weights, two.stencils.weights);
+  }
+  // ... and the merged ranges are right: the sphere's patch corners, in every range, are the exact
+  // limit positions of their base vertices.
+  const test::PlannedMesh p(make_sample("sphere", 20000), 3);
+  const auto limit = subdivide(p.mesh, {Scheme::catmull_clark, 0, true});
+  const double diag = bounding_box_diagonal(p.mesh);
+  for (int patch = 0; patch < p.tables.plans.n_patches(); patch += 97) {
+    const auto corners = face_vertices(p.mesh.mesh, p.mesh.mesh.face_handle(patch));
+    for (const auto& [k, u, v] : {std::tuple{0, 0.0, 0.0}, std::tuple{2, 1.0, 1.0}}) {
+      const auto s = evaluate_patch(p.tables.plans, p.points, patch, u, v);
+      ASSERT_TRUE(s);
+      EXPECT_LT((s->position - limit.mesh.mean(size_t(corners[size_t(k)]))).norm(), 1e-12 * diag) << "patch " << patch;
+    }
   }
 }
 

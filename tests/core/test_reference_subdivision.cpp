@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <random>
 
 #include "core/dual_map.h"
 #include "core/error.h"
+#include "core/samples.h"
 #include "tests/support/test_meshes.h"
 
 namespace gps {
@@ -153,7 +156,7 @@ TEST(ReferenceSubdivision, VertexParamsNameAPatchOfTheInput) {
   const auto r = subdivide(mesh, {Scheme::catmull_clark, 2, false});
   ASSERT_EQ(r.vertex_params.size(), r.mesh.n_vertices());
   const int n_patches = make_patch_layout(mesh.mesh).n_patches();
-  EXPECT_EQ(n_patches, 2 * 5 + 5 * 4);  // mixed faces: every face is split
+  EXPECT_EQ(n_patches, 2 * 5 + 5);  // the pentagons are split, the quads are not
   for (const auto& p : r.vertex_params) {
     EXPECT_GE(p.patch, 0);
     EXPECT_LT(p.patch, n_patches);
@@ -161,6 +164,21 @@ TEST(ReferenceSubdivision, VertexParamsNameAPatchOfTheInput) {
     EXPECT_LE(p.u, 1);
     EXPECT_GE(p.v, 0);
     EXPECT_LE(p.v, 1);
+  }
+}
+
+// The per-face, per-edge and per-vertex rules run on all cores for large meshes: same result, bit for bit.
+TEST(ReferenceSubdivision, AllCoresGiveTheOneCoreResultBitForBit) {
+  const CovarianceMesh mesh = make_sample("sphere", 20000);
+  omp_set_num_threads(1);
+  const auto one = subdivide(mesh, {Scheme::catmull_clark, 2, true});
+  omp_set_num_threads(2);
+  const auto two = subdivide(mesh, {Scheme::catmull_clark, 2, true});
+  omp_set_num_threads(omp_get_num_procs());
+  ASSERT_EQ(one.mesh.n_vertices(), two.mesh.n_vertices());
+  for (size_t i = 0; i < one.mesh.n_vertices(); ++i) {
+    ASSERT_EQ(one.mesh.mean(i), two.mesh.mean(i)) << i;
+    ASSERT_EQ(one.mesh.covariance(i), two.mesh.covariance(i)) << i;
   }
 }
 

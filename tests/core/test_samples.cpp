@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+#include <tuple>
+
 #include "core/error.h"
 #include "core/mesh_connectivity.h"
 #include "core/reference_subdivision.h"
@@ -31,6 +34,23 @@ TEST(Samples, CountsAreAsDescribed) {
   const auto wire = make_sample("wirecube");
   EXPECT_EQ(int(wire.mesh.n_vertices()) - int(wire.mesh.n_edges()) + int(wire.mesh.n_faces()), -8);
   for (const auto e : wire.mesh.edges()) EXPECT_FALSE(wire.mesh.is_boundary(e));
+}
+
+// The pawn: a closed lathe mesh of quads with triangle fans at its poles, covariances inferred
+// (anisotropic); its twin joins each pair of pole triangles into a quad.
+TEST(Samples, PawnIsAClosedMixedMeshAndItsTwinAllQuads) {
+  for (const auto& [name, quads, triangles] : {std::tuple{"pawn", 736, 64}, std::tuple{"pawn-quads", 768, 0}}) {
+    const auto m = make_sample(name);
+    int n_quads = 0, n_triangles = 0;
+    for (const auto f : m.mesh.faces()) (m.mesh.valence(f) == 4 ? n_quads : n_triangles) += 1;
+    EXPECT_EQ(n_quads, quads) << name;
+    EXPECT_EQ(n_triangles, triangles) << name;
+    EXPECT_EQ(int(m.mesh.n_vertices()) - int(m.mesh.n_edges()) + int(m.mesh.n_faces()), 2) << name;
+    for (const auto e : m.mesh.edges()) EXPECT_FALSE(m.mesh.is_boundary(e)) << name;
+    const Eigen::SelfAdjointEigenSolver<Mat3> eigen(m.covariance(100));
+    EXPECT_GT(eigen.eigenvalues()[2], 2.0 * eigen.eigenvalues()[0]) << name << ": inferred, not isotropic";
+  }
+  EXPECT_EQ(make_sample("pawn").n_vertices(), make_sample("pawn-quads").n_vertices());
 }
 
 TEST(Samples, ValenceSamplesHaveOneExtraordinaryVertex) {

@@ -22,7 +22,7 @@ int open_edges(const TriangleMesh& t) {
 }
 
 TEST(Tessellator, ClosedMeshesGiveClosedTriangleMeshes) {
-  for (const char* name : {"cube", "wirecube", "cylinder", "torus"}) {
+  for (const char* name : {"cube", "wirecube", "cylinder", "torus", "pawn"}) {  // cylinder, pawn: T-junctions
     const test::PlannedMesh p(make_sample(name), 3);
     for (const int level : {1, 3, 8}) {
       const TriangleMesh t = tessellate(p.tables.plans, p.points, level);

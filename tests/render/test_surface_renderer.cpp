@@ -5,7 +5,9 @@
 
 #include <glad/gl.h>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <tuple>
 
 #include "core/patch_eval.h"
@@ -13,6 +15,7 @@
 #include "core/stencil_table.h"
 #include "core/tessellator.h"
 #include "render/gl_context.h"
+#include "render/image_io.h"
 #include "render/picking.h"
 #include "render/reference_triangles.h"
 #include "tests/support/plan_fixture.h"
@@ -160,10 +163,32 @@ TEST_F(GpuTest, AovsMatchTheCpuEvaluatorPixelForPixel) {
   }
 }
 
+bool flagged(const Image& color, int x, int y) {
+  return x >= 0 && y >= 0 && x < color.width && y < color.height && color.at(x, y, 0) > 0.99f && color.at(x, y, 1) < 0.01f &&
+         color.at(x, y, 2) > 0.99f;
+}
+
 int flagged_pixels(const Image& color) {
   int n = 0;
   for (int y = 0; y < color.height; ++y)
-    for (int x = 0; x < color.width; ++x) n += color.at(x, y, 0) > 0.99f && color.at(x, y, 1) < 0.01f && color.at(x, y, 2) > 0.99f;
+    for (int x = 0; x < color.width; ++x) n += flagged(color, x, y);
+  return n;
+}
+
+// Flagged pixels beside another flagged pixel. A crack between patches (mismatched samples along an
+// edge) is a sliver along the edge; a lone pixel is a float rounding gap between two evaluations
+// of the same point where the surface is seen edge-on (it shows on quad-only meshes too, at levels
+// 31–33; bit-exact shared edges are issue 14's work).
+int crack_pixels(const Image& color) {
+  int n = 0;
+  for (int y = 0; y < color.height; ++y)
+    for (int x = 0; x < color.width; ++x) {
+      if (!flagged(color, x, y)) continue;
+      bool beside = false;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) beside = beside || ((dx || dy) && flagged(color, x + dx, y + dy));
+      n += beside;
+    }
   return n;
 }
 
@@ -174,27 +199,96 @@ Image render_color(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const 
 }
 
 // A closed mesh seen from outside shows no back face unless the tessellation cracks; the check fails
-// when neighbouring patches are given different edge levels on purpose. Loop patches (icosphere):
-// neighbours evaluate a shared edge from opposite ends in float, which can leave an isolated
-// pinhole; bit-exact shared edges are issue 14 (until then up to 2 pixels are allowed there).
+// when neighbouring patches are given different edge levels on purpose. The cylinder, the pawn and
+// the open cylinder (seen from above) mix quads with other faces: quads meet half-size patches.
+// Loop patches (icosphere) too. Neighbours evaluate a shared point in float from different patches,
+// which can leave an isolated pinhole; bit-exact shared edges are issue 14 (until then up to 2 lone
+// pixels are allowed, never two side by side).
 TEST_F(GpuTest, TessellationIsCrackFree) {
-  for (const char* name : {"cube", "wirecube", "cylinder", "icosphere"}) {
-    const CovarianceMesh mesh = make_sample(name);
-    const int pinholes = std::string(name) == "icosphere" ? 2 : 0;
+  const auto expect_no_crack = [](const Image& color, const std::string& what) {
+    const int cracks = crack_pixels(color), lone = flagged_pixels(color) - cracks;
+    EXPECT_EQ(cracks, 0) << what << " (see crack-" << what << ".png)";
+    EXPECT_LE(lone, 2) << what << " (see crack-" << what << ".png)";
+    if (cracks || lone > 2) write_image("crack-" + what + ".png", color);
+    if (lone) std::printf("%s: %d lone rounding pixel(s)\n", what.c_str(), lone);
+  };
+  for (const char* name : {"cube", "wirecube", "cylinder", "pawn", "open-cylinder", "icosphere"}) {
+    const CovarianceMesh mesh = std::string(name) == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name);
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh, 3);
     DrawOptions o;
     o.flag_back_faces = true;
-    for (const float level : {1.0f, 2.0f, 5.0f, 16.0f, 64.0f}) {
-      o.level = level;
-      EXPECT_LE(flagged_pixels(render_color(renderer, mesh, o)), pinholes) << name << " level " << level;
+    for (int level = 1; level <= 64; level += level < 8 ? 1 : level < 32 ? 7 : 8) {  // 1..8, 15, 22, 29, 36, ..., 64
+      o.level = float(level);
+      expect_no_crack(render_color(renderer, mesh, o), std::string(name) + "-level" + std::to_string(level));
     }
-    o.pixels = 4.0f;  // adaptive
-    EXPECT_LE(flagged_pixels(render_color(renderer, mesh, o)), pinholes) << name << " adaptive";
+    for (const float pixels : {1.0f, 4.0f, 13.0f}) {  // adaptive
+      o.pixels = pixels;
+      expect_no_crack(render_color(renderer, mesh, o), std::string(name) + "-adaptive" + std::to_string(int(pixels)));
+    }
+    if (std::string(name) == "pawn") continue;  // its patches are too small at this size for a mismatch to show
     o.pixels = 0.0f;
     o.level = 2.0f;
     o.debug_mismatch = true;
+    const int pinholes = std::string(name) == "icosphere" ? 2 : 0;
     EXPECT_GT(flagged_pixels(render_color(renderer, mesh, o)), pinholes) << name << " with mismatched edge levels";
+  }
+}
+
+// The exact form of the check above: every vertex the GPU tessellator puts on a patch edge inside
+// the mesh has a vertex of another patch at the same place (to float rounding), T-junctions of
+// quads and half-size patches included, at uniform levels 1..64 and adaptive; a mismatch of edge
+// levels leaves vertices without a partner.
+int unmatched_edge_vertices(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const DrawOptions& o) {
+  const auto vertices = renderer.capture_vertices(frame_mesh(mesh, 35.0f, 25.0f), o, 1.0f);
+  const double tolerance = 2e-5 * bounding_box_diagonal(mesh);
+  std::map<std::array<long long, 3>, std::vector<size_t>> cells;  // a grid of cells of the tolerance's size
+  const auto cell = [&](const float* p, int k) { return (long long)std::floor(p[k] / tolerance); };
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    const float* p = vertices[i].position;
+    cells[{cell(p, 0), cell(p, 1), cell(p, 2)}].push_back(i);
+  }
+  int unmatched = 0;
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    const TessellatedVertex& v = vertices[i];
+    const bool on_edge = v.u == 0.0f || v.u == 1.0f || v.v == 0.0f || v.v == 1.0f;
+    if (!on_edge || std::abs(v.position[1] + 1.0f) < 1e-4f) continue;  // open-cylinder: its open rim at y = −1
+    bool matched = false;
+    for (int dx = -1; dx <= 1 && !matched; ++dx)
+      for (int dy = -1; dy <= 1 && !matched; ++dy)
+        for (int dz = -1; dz <= 1 && !matched; ++dz) {
+          const auto it = cells.find({cell(v.position, 0) + dx, cell(v.position, 1) + dy, cell(v.position, 2) + dz});
+          if (it == cells.end()) continue;
+          for (const size_t j : it->second) {
+            const TessellatedVertex& w = vertices[j];
+            const float d = std::hypot(w.position[0] - v.position[0], w.position[1] - v.position[1], w.position[2] - v.position[2]);
+            matched = matched || (w.patch != v.patch && d < tolerance);
+          }
+        }
+    unmatched += !matched;
+  }
+  return unmatched;
+}
+
+TEST_F(GpuTest, PatchEdgeVerticesMeetAtTJunctions) {
+  for (const char* name : {"cylinder", "pawn", "open-cylinder"}) {
+    const CovarianceMesh mesh = std::string(name) == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(mesh, 3);
+    DrawOptions o;
+    for (const int level : {1, 2, 3, 4, 5, 7, 16, 31, 32, 33, 63, 64}) {
+      if (level > 16 && std::string(name) == "pawn") break;  // 928 patches: millions of captured vertices
+      o.level = float(level);
+      EXPECT_EQ(unmatched_edge_vertices(renderer, mesh, o), 0) << name << " level " << level;
+    }
+    for (const float pixels : {1.0f, 3.0f, 10.0f}) {
+      o.pixels = pixels;
+      EXPECT_EQ(unmatched_edge_vertices(renderer, mesh, o), 0) << name << " adaptive " << pixels << " px";
+    }
+    o.pixels = 0.0f;
+    o.level = 3.0f;
+    o.debug_mismatch = true;
+    EXPECT_GT(unmatched_edge_vertices(renderer, mesh, o), 0) << name << " with mismatched edge levels";
   }
 }
 

@@ -106,4 +106,18 @@ inline CovarianceMesh with_random_covariances(CovarianceMesh m, unsigned seed) {
   return m;
 }
 
+/// A mixed open cylinder: two rings of 8 quads, a fan of 8 triangles closing the top, the bottom
+/// open (seen from above, the inside stays hidden); T-junctions where the quads meet the fan.
+inline CovarianceMesh open_cylinder_mesh(double sigma = 0.4) {
+  std::vector<Vec3> p;
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 8; ++k) p.emplace_back(std::cos(k * M_PI / 4), -1.0 + r, -std::sin(k * M_PI / 4));
+  p.emplace_back(0, 1.3, 0);
+  std::vector<std::vector<int>> faces;
+  for (int r = 0; r < 2; ++r)
+    for (int k = 0; k < 8; ++k) faces.push_back({r * 8 + k, r * 8 + (k + 1) % 8, (r + 1) * 8 + (k + 1) % 8, (r + 1) * 8 + k});
+  for (int k = 0; k < 8; ++k) faces.push_back({24, 16 + k, 16 + (k + 1) % 8});
+  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "open-cylinder");
+}
+
 }  // namespace gps::test

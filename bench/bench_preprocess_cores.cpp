@@ -1,0 +1,56 @@
+// Preprocessing on 1 and 2 cores (issue 12): build_plans (plans + stencil table, depth 3) and the
+// reference subdivision (2 levels + limit) of a 1M-face sphere, with the tables' memory per face.
+// The results are the same bit for bit on any number of cores (tests/core/test_plan_builder.cpp).
+#include <benchmark/benchmark.h>
+#include <omp.h>
+#include <sys/resource.h>
+
+#include "core/plan_builder.h"
+#include "core/reference_subdivision.h"
+#include "core/samples.h"
+
+namespace {
+
+const gps::CovarianceMesh& sphere() {
+  static const gps::CovarianceMesh mesh = gps::make_sample("sphere", 1'000'000);
+  return mesh;
+}
+
+double peak_rss_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) * 1024.0;
+}
+
+void BM_BuildPlansOnCores(benchmark::State& state) {
+  const gps::CovarianceMesh& mesh = sphere();
+  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  omp_set_num_threads(int(state.range(0)));
+  size_t table_bytes = 0;
+  for (auto _ : state) {
+    const gps::PlanTables t = gps::build_plans(topology, 3);
+    table_bytes = 4 * (t.plans.nodes.size() + t.plans.patch_roots.size() + t.plans.patch_corner_points.size() + t.plans.patch_edges.size() +
+                       t.stencils.offsets.size() + t.stencils.indices.size()) +
+                  8 * t.stencils.weights.size();
+  }
+  omp_set_num_threads(omp_get_num_procs());
+  const double faces = double(mesh.n_faces());
+  state.counters["cores"] = double(state.range(0));
+  state.counters["faces"] = faces;
+  state.counters["table_bytes_per_face"] = double(table_bytes) / faces;
+  state.counters["peak_rss_bytes_per_face"] = peak_rss_bytes() / faces;
+}
+
+void BM_ReferenceSubdivisionOnCores(benchmark::State& state) {
+  const gps::CovarianceMesh& mesh = sphere();
+  omp_set_num_threads(int(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(gps::subdivide(mesh, {gps::Scheme::catmull_clark, 2, true}));
+  omp_set_num_threads(omp_get_num_procs());
+  state.counters["cores"] = double(state.range(0));
+  state.counters["faces"] = double(mesh.n_faces());
+}
+
+BENCHMARK(BM_BuildPlansOnCores)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
+BENCHMARK(BM_ReferenceSubdivisionOnCores)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+}  // namespace
