@@ -11,6 +11,7 @@
 #include "core/triangle_mesh.h"
 #include "render/camera.h"
 #include "render/ellipsoid_overlay.h"
+#include "render/gpu_layout.h"
 #include "render/gpu_pass_timer.h"
 #include "render/image_io.h"
 #include "render/query_ring.h"
@@ -104,8 +105,8 @@ private:
 
   ShaderProgram dual_map_, stencil_, patches_, feedback_, triangle_patches_, triangle_feedback_, triangles_, triangles_wire_, lines_;
   EllipsoidOverlay ellipsoids_;
-  unsigned buffers_[12] = {};
-  size_t buffer_sizes_[12] = {};
+  unsigned buffers_[gpu::kBindingCount] = {};
+  size_t buffer_sizes_[gpu::kBindingCount] = {};
   unsigned empty_vao_ = 0, triangle_vao_ = 0, triangle_vbo_ = 0, triangle_ibo_ = 0;
   unsigned lines_vao_ = 0, lines_vbo_ = 0, lines_ibo_ = 0;  // base vertex positions, edges as index pairs
   int triangle_count_ = 0, line_index_count_ = 0;
