@@ -29,7 +29,7 @@ struct Prepared {
 Prepared prepare(const Case& c) {
   Prepared p{gps::make_sample(c.name, c.size), {}, {}};
   p.tables = gps::build_plans(gps::topology_of(p.mesh.mesh), 3);
-  for (size_t i = 0; i < p.mesh.n_vertices(); ++i) p.q.push_back(gps::to_dual(p.mesh.mean(i), p.mesh.covariance(i)));
+  p.q = gps::base_points(p.mesh);
   return p;
 }
 

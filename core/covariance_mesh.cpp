@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/dual_map.h"
 #include "core/error.h"
 
 namespace gps {
@@ -98,6 +99,13 @@ double bounding_box_diagonal(const CovarianceMesh& m) {
   Vec3 lo, hi;
   bounding_box(m, lo, hi);
   return (hi - lo).norm();
+}
+
+std::vector<Dual> base_points(const CovarianceMesh& mesh) {
+  std::vector<Dual> q(mesh.n_vertices());
+#pragma omp parallel for if (q.size() >= 4096)
+  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariance(i));
+  return q;
 }
 
 }  // namespace gps

@@ -24,12 +24,6 @@ PlanTables build_surface_plans(const PolygonTopology& topology, const PlanOption
   return build_plans(topology, options.depth);
 }
 
-std::vector<Dual> base_points(const CovarianceMesh& mesh) {
-  std::vector<Dual> q(mesh.n_vertices());
-  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariance(i));
-  return q;
-}
-
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {
   const PolygonTopology topology = topology_of(mesh.mesh);
   scheme_ = scheme_for(topology, options);

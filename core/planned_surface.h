@@ -26,9 +26,6 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options);
 /// Plans and stencils of the mesh under its scheme (core/plan_builder.h, core/loop_plan_builder.h).
 PlanTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options);
 
-/// The 9D point q = (vech(Σ⁻¹), Σ⁻¹μ) of every vertex (thesis Eq. 2.10).
-std::vector<Dual> base_points(const CovarianceMesh& mesh);
-
 class PlannedSurface {
 public:
   PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options);

@@ -139,9 +139,7 @@ std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, co
 
 SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
   const PolygonTopology base = topology_of(mesh.mesh);
-  std::vector<Dual> q(mesh.n_vertices());
-#pragma omp parallel for if (q.size() >= size_t(kParallelFaces))
-  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariances[i]);
+  const std::vector<Dual> q = base_points(mesh);
   PolygonTopology t;
   CornerParams params;
   const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
