@@ -13,7 +13,7 @@
 #include "core/text_file.h"
 #include "core/samples.h"
 #include "render/image_io.h"
-#include "render/picking.h"
+#include "view/picking.h"
 #include "ui/axis_handles.h"
 #include "ui/view_options.h"
 
