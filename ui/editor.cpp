@@ -16,6 +16,7 @@
 #include "render/image_io.h"
 #include "render/matcap.h"
 #include "ui/editor_app.h"
+#include "ui/editor_settings.h"
 #include "ui/help_overlay.h"
 #include "ui/status_bar.h"
 #include "ui/view_panel.h"
@@ -37,7 +38,12 @@ EditorApp::EditorApp(const EditorOptions& options)
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;  // the layout starts the same every time (scripted sessions rely on it)
+  // The panel layout and the View settings are kept in the user's configuration folder.
+  config_folder_ = config_folder();
+  std::error_code ignored;
+  if (!config_folder_.empty()) std::filesystem::create_directories(config_folder_, ignored);
+  layout_file_ = config_folder_.empty() ? "" : config_folder_ + "/imgui.ini";
+  io.IniFilename = layout_file_.empty() ? nullptr : layout_file_.c_str();
   map_imgui_keys(io);
   // DejaVu (Debian's fonts-dejavu-core) covers the Greek letters and symbols the panels use.
   const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
@@ -49,7 +55,15 @@ EditorApp::EditorApp(const EditorOptions& options)
   timer_ = std::make_unique<GpuPassTimer>();
   renderer_->set_pass_timer(timer_.get());
   renderer_->set_collect_statistics(true);
-  view_.vsync = options.vsync;
+  if (const std::string error = load_settings(config_folder_, view_, reach_options_); !error.empty()) set_status(error, true);
+  if (!options.vsync) view_.vsync = false;
+  if (view_.matcap != "clay") {
+    try {
+      renderer_->set_matcap(load_matcap(view_.matcap));
+    } catch (const Error&) {
+      view_.matcap = "clay";  // a MatCap image that is gone
+    }
+  }
   build_commands();
   if (!options.play.empty()) script_ = EventScript::load(options.play);
   if (!options.record.empty()) recorder_.emplace();
@@ -76,6 +90,7 @@ int EditorApp::run() {
     if (script_finished()) break;
   }
   if (recorder_) recorder_->save(options_.record);
+  if (const std::string error = save_settings(config_folder_, view_, reach_options_); !error.empty()) set_status(error, true);
   if (!options_.stats.empty()) write_statistics(options_.stats);
   return 0;
 }

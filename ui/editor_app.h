@@ -89,6 +89,7 @@ private:
   void note_free_region();
 
   EditorOptions options_;
+  std::string config_folder_, layout_file_;  // where settings and the panel layout are kept
   WindowContext window_;
   GlfwInputForwarder input_forwarder_;
   std::unique_ptr<SurfaceRenderer> renderer_;

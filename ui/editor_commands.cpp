@@ -56,6 +56,8 @@ void EditorApp::build_commands() {
   t.add({"View", "Bottom view", {key(GLFW_KEY_KP_7, true)}, [this] { axis_view(0.0f, -89.9f); }});
   t.add({"View", "Orthographic", {key(GLFW_KEY_KP_5)}, [this] { camera_.orthographic = !camera_.orthographic; }, always,
          [this] { return camera_.orthographic; }});
+  t.add({"View", "Ellipsoids", {key(GLFW_KEY_E)}, [this] { view_.draw.ellipsoids = !view_.draw.ellipsoids; }, always,
+         [this] { return view_.draw.ellipsoids; }, nullptr, true});
   t.add({"View", "Inspector", {}, [this] { view_.show_inspector = !view_.show_inspector; }, always,
          [this] { return view_.show_inspector; }, nullptr, true});
   t.add({"View", "View options", {}, [this] { view_.show_view = !view_.show_view; }, always, [this] { return view_.show_view; }});
