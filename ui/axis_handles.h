@@ -82,6 +82,8 @@ public:
   /// The grabbed vertex's frame now: its start axes with the change applied, each axis keeping its
   /// index (and so its colour) for the whole drag.
   HandleFrame frame(const Viewport& view) const;
+  /// Where the grabbed vertex's mean was when the drag began.
+  const Vec3& start_centre() const { return centre_; }
   /// A one-line description for the status bar ("scale σ1 ×1.25", "move along z 0.3").
   std::string describe() const;
 

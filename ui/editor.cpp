@@ -34,7 +34,8 @@ EditorApp::EditorApp(const EditorOptions& options)
       input_forwarder_(window_.window(), [this](InputEvent e) {
         if (!script_) queue_.push(std::move(e));  // a replay is not disturbed by the real pointer
       }, [this] { request({Action::Kind::quit, ""}); }),
-      recent_(RecentFiles::default_store()) {
+      recent_(RecentFiles::default_store()),
+      free_max_(float(options.width), float(options.height)) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();

@@ -190,10 +190,10 @@ void EditorApp::draw_handles_and_box() {
   ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the 3D view, under the panels
   if (mode_ == Mode::handle) {
     draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), drag_->frame(v), drag_->handle());
-    if (reach_options_.proportional) {  // the radius, as a circle around the grabbed point
-      const HandleFrame f = drag_->frame(v);
-      const double pixels = reach_options_.radius / world_per_pixel(v.camera, v.height, f.centre);
-      if (const auto centre = visible_pixel(v.camera, v.width, v.height, f.centre))
+    if (reach_options_.proportional) {  // the radius, as a circle around where the grabbed vertex was
+      const Vec3 start = drag_->start_centre();
+      const double pixels = reach_options_.radius / world_per_pixel(v.camera, v.height, start);
+      if (const auto centre = visible_pixel(v.camera, v.width, v.height, start))
         draw->AddCircle(ImVec2(centre->x, centre->y), float(std::min(pixels, 1e4)), IM_COL32(255, 255, 255, 160), 64, 1.5f);
     }
   } else {
