@@ -22,11 +22,11 @@ struct Shortcut {
 struct Command {
   std::string menu;   // "File", "Edit", "View", "Help"; "" for keys only
   std::string label;  // menu label and help text
-  std::vector<Shortcut> shortcuts;
-  std::function<void()> action;
-  std::function<bool()> enabled;   // null: always
-  std::function<bool()> checked;   // null: not a toggle
-  std::function<void()> submenu;   // instead of an action: draws the items of a submenu
+  std::vector<Shortcut> shortcuts = {};
+  std::function<void()> action = nullptr;
+  std::function<bool()> enabled = nullptr;  // null: always
+  std::function<bool()> checked = nullptr;  // null: not a toggle
+  std::function<void()> submenu = nullptr;  // instead of an action: draws the items of a submenu
   bool separator_before = false;
 };
 
