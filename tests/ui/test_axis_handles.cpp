@@ -254,7 +254,8 @@ TEST(AxisHandles, AConstrainedMoveChangesOneCoordinate) {
     const Vec3 moved = mesh.mean(0) - before;
     EXPECT_GT(std::abs(moved[axis]), 0.01) << axis;
     for (int k = 0; k < 3; ++k) {
-      if (k != axis) EXPECT_EQ(mesh.mean(0)[k], before[k]) << axis;
+      if (k == axis) continue;
+      EXPECT_EQ(mesh.mean(0)[k], before[k]) << axis;
     }
     // A typed distance replaces the mouse's.
     drag.drag.set_typed("0.25");
