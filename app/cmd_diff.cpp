@@ -1,6 +1,7 @@
 // gpsurf diff A B -o OUT.png: difference images of position or normal AOVs (thesis Figs. 4.4, 4.8).
 #include <cstdio>
 
+#include "app/cli_checks.h"
 #include "app/commands.h"
 #include "core/error.h"
 #include "render/difference_image.h"
@@ -19,8 +20,8 @@ void add_diff_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "difference image (.png)")->required();
   cmd->add_option("--kind", args->kind, "what the AOVs hold (auto: from the channel names render --aov writes)")
       ->check(CLI::IsMember({"auto", "position", "normal"}));
-  cmd->add_option("--factor", args->factor, "scale of the shown difference (default 200 for position, 5000 for normal)")->check(CLI::PositiveNumber);
-  cmd->add_option("--threshold", args->threshold, "count pixels whose difference exceeds this (unscaled)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--factor", args->factor, "scale of the shown difference (default 200 for position, 5000 for normal)")->check(positive_number());
+  cmd->add_option("--threshold", args->threshold, "count pixels whose difference exceeds this (unscaled)")->check(non_negative_number());
   cmd->callback([args] {
     Image a, b;
     try {

@@ -1,6 +1,7 @@
 // gpsurf infer IN -o OUT: covariances for a plain mesh (GPS paper Eq. 16–17, or isotropic).
 #include <iostream>
 
+#include "app/cli_checks.h"
 #include "app/commands.h"
 #include "core/inference.h"
 #include "core/mesh_io.h"
@@ -18,9 +19,9 @@ void add_infer_command(CLI::App& app) {
   cmd->add_option("input", args->input, "input mesh")->required();
   cmd->add_option("-o,--output", args->output, "output covariance PLY")->required();
   auto* bias = cmd->add_option("--bias", args->bias, "bias added to the face covariances, times λmax (Eq. 16)")
-                   ->check(CLI::PositiveNumber);
+                   ->check(positive_number());
   cmd->add_option("--isotropic", args->isotropic, "isotropic covariances: σ = S × mean edge length")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->excludes(bias);
   cmd->add_flag("--binary", args->binary, "binary PLY");
   cmd->callback([args] {

@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <sstream>
 
+#include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/plan_arguments.h"
 #include "core/error.h"
@@ -54,9 +54,7 @@ float default_pixels(int width, int height) { return std::max(4.0f, 0.01f * floa
 
 // One render with the given renderer (its context current): mesh, options, outputs.
 void render_one(SurfaceRenderer& renderer, const std::string& description, const RenderArgs& a, const CovarianceMesh& mesh) {
-  std::smatch size_match;
-  if (!std::regex_match(a.size, size_match, std::regex(R"((\d{1,5})x(\d{1,5}))"))) throw usage_error("--size: expected WxH, got '" + a.size + "'");
-  const int width = std::stoi(size_match[1]), height = std::stoi(size_match[2]);
+  const auto [width, height] = parse_pixel_size(a.size);
   std::string position_aov, normal_aov;
   for (const auto& aov : a.aovs) {
     const auto eq = aov.find('=');

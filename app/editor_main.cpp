@@ -2,8 +2,8 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
-#include <regex>
 
+#include "app/cli_checks.h"
 #include "core/error.h"
 #include "ui/editor.h"
 
@@ -23,10 +23,9 @@ int main(int argc, char** argv) {
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + std::string(e.what()) + "\n"; });
   try {
     app.parse(argc, argv);
-    std::smatch m;
-    if (!std::regex_match(size, m, std::regex(R"((\d{2,5})x(\d{2,5}))"))) throw gps::usage_error("--size: expected WxH, got '" + size + "'");
-    o.width = std::stoi(m[1]);
-    o.height = std::stoi(m[2]);
+    const gps::PixelSize window = gps::parse_pixel_size(size);
+    o.width = window.width;
+    o.height = window.height;
     o.vsync = !no_vsync;
     return gps::run_editor(o);
   } catch (const CLI::ParseError& e) {

@@ -26,6 +26,7 @@ struct CovarianceMesh {
   Vec3 mean(size_t i) const;
   void set_mean(size_t i, const Vec3& mean);
   const Mat3& covariance(size_t i) const { return covariances[i]; }
+  void set_covariance(size_t i, const Mat3& covariance) { covariances[i] = covariance; }
 };
 
 /// Builds a covariance mesh from plain arrays; faces are vertex-index lists.

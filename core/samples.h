@@ -17,4 +17,7 @@ std::string sample_description(const std::string& name);
 /// others). Throws a usage error for an unknown name or a size outside 1..4,000,000.
 CovarianceMesh make_sample(const std::string& name, int size = 0);
 
+/// Whether make_sample() uses `size` for this sample ("grid" and "sphere").
+bool sample_has_size(const std::string& name);
+
 }  // namespace gps

@@ -62,6 +62,19 @@ Image WindowContext::read_pixels() const {
   return image;
 }
 
+void WindowContext::bind_default_framebuffer() const {
+  int width = 0, height = 0;
+  framebuffer_size(width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, width, height);
+}
+
+void WindowContext::wait_for_gpu() const {
+  const GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(2'000'000'000));
+  glDeleteSync(fence);
+}
+
 void WindowContext::swap_buffers() { glfwSwapBuffers(window_); }
 
 bool WindowContext::should_close() const { return glfwWindowShouldClose(window_); }

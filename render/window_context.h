@@ -26,6 +26,10 @@ public:
   void blit(const RenderTarget& target) const;
   /// The back buffer (call after drawing, before swap_buffers) as RGBA in [0,1], rows top-down, for screenshots.
   Image read_pixels() const;
+  /// Makes the window's own framebuffer the draw target, over the whole framebuffer (for the UI).
+  void bind_default_framebuffer() const;
+  /// Blocks until the GPU has finished every command issued so far (at most 2 s).
+  void wait_for_gpu() const;
   void swap_buffers();
   bool should_close() const;
 

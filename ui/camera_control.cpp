@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/picking.h"
+#include "view/projection.h"
 
 namespace gps {
 
@@ -15,7 +15,7 @@ void orbit(Camera& camera, glm::vec2 delta) {
 void pan(Camera& camera, glm::vec2 delta, int height) {
   const glm::mat4 view = camera.view();
   const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
-  const float per_pixel = 2.0f * camera.distance * std::tan(glm::radians(camera.fov_degrees) * 0.5f) / float(std::max(1, height));
+  const float per_pixel = view_height(camera) / float(std::max(1, height));
   camera.target += per_pixel * (-delta.x * right + delta.y * up);
 }
 
@@ -25,7 +25,7 @@ void zoom_to_cursor(Camera& camera, float steps, int width, int height, glm::vec
   if (!anchor) {  // the cursor's point at the target's depth
     const Ray ray = pixel_ray(camera, width, height, cursor);
     const glm::vec3 forward = glm::normalize(camera.target - eye);
-    const float t = camera.distance / std::max(1e-6f, glm::dot(ray.direction, forward));
+    const float t = glm::dot(camera.target - ray.origin, forward) / std::max(1e-6f, glm::dot(ray.direction, forward));
     anchor = ray.origin + t * ray.direction;
   }
   // Eye and target both move toward the anchor by the same factor: the view direction is kept and
@@ -46,6 +46,23 @@ Camera frame_points(const Camera& camera, const CovarianceMesh& mesh, const std:
   const Vec3 centre = 0.5 * (lo + hi), half = Vec3::Constant(min_radius / std::sqrt(3.0));
   Camera framed = frame_box(lo.cwiseMin(centre - half), hi.cwiseMax(centre + half), camera.yaw_degrees, camera.pitch_degrees);
   framed.fov_degrees = camera.fov_degrees;
+  return framed;
+}
+
+}  // namespace gps
+
+namespace gps {
+
+Camera frame_points_in_region(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices, double min_radius,
+                              glm::vec2 window, glm::vec2 region_min, glm::vec2 region_max) {
+  Camera framed = frame_points(camera, mesh, vertices, min_radius);
+  framed.orthographic = camera.orthographic;
+  const glm::vec2 region = glm::max(region_max - region_min, glm::vec2(1.0f));
+  // The framed sphere fills the window's height; shrink it to fit the region's smaller side.
+  const float fit = std::min(region.x, region.y) / window.y;
+  framed.distance /= std::max(1e-3f, std::min(1.0f, fit));
+  // Slide the view so that the target shows at the region's centre.
+  pan(framed, (region_min + region_max) * 0.5f - window * 0.5f, int(window.y));
   return framed;
 }
 

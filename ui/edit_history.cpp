@@ -32,7 +32,7 @@ std::vector<int> EditHistory::undo(CovarianceMesh& mesh) {
   const VertexEdit& e = steps_[--position_];
   for (size_t i = 0; i < e.vertices.size(); ++i) {
     mesh.set_mean(size_t(e.vertices[i]), e.means_before[i]);
-    mesh.covariances[size_t(e.vertices[i])] = e.covariances_before[i];
+    mesh.set_covariance(size_t(e.vertices[i]), e.covariances_before[i]);
   }
   return e.vertices;
 }
@@ -42,7 +42,7 @@ std::vector<int> EditHistory::redo(CovarianceMesh& mesh) {
   const VertexEdit& e = steps_[position_++];
   for (size_t i = 0; i < e.vertices.size(); ++i) {
     mesh.set_mean(size_t(e.vertices[i]), e.means_after[i]);
-    mesh.covariances[size_t(e.vertices[i])] = e.covariances_after[i];
+    mesh.set_covariance(size_t(e.vertices[i]), e.covariances_after[i]);
   }
   return e.vertices;
 }

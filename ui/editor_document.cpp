@@ -1,5 +1,6 @@
 #include "ui/editor_document.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -37,21 +38,107 @@ void EditorDocument::open_sample(const std::string& name) {
 
 void EditorDocument::save(const std::string& path) {
   const bool ply = extension_of(path) == ".ply";
-  write_mesh(path, mesh, ply && binary_);
+  write_mesh(path, mesh_, ply && binary_);
   if (!ply) return;  // an OBJ export keeps no covariances: the document stays unsaved
   const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
   ply_path_ = source_path_ = absolute;
   display_name_ = std::filesystem::path(path).filename().string();
-  history.mark_saved();
+  history_.mark_saved();
 }
 
 void EditorDocument::replace(CovarianceMesh loaded, const std::string& source, const std::string& ply_path, const std::string& name) {
-  mesh = std::move(loaded);
-  history.clear();
+  mesh_ = std::move(loaded);
+  history_.clear();
+  edit_.reset();
+  edit_index_.clear();
+  changed_.clear();
   source_path_ = source;
   ply_path_ = ply_path;
   display_name_ = name;
-  ++generation_;
+}
+
+void EditorDocument::begin_edit() {
+  if (edit_) commit_edit();
+  edit_.emplace();
+  edit_index_.clear();
+}
+
+void EditorDocument::touch(int vertex) {
+  changed_.push_back(vertex);
+  if (!edit_ || edit_index_.count(vertex)) return;
+  edit_index_.emplace(vertex, edit_->vertices.size());
+  edit_->vertices.push_back(vertex);
+  edit_->means_before.push_back(mesh_.mean(size_t(vertex)));
+  edit_->covariances_before.push_back(mesh_.covariance(size_t(vertex)));
+}
+
+void EditorDocument::set_mean(int vertex, const Vec3& mean) {
+  touch(vertex);
+  mesh_.set_mean(size_t(vertex), mean);
+}
+
+void EditorDocument::set_covariance(int vertex, const Mat3& covariance) {
+  touch(vertex);
+  mesh_.set_covariance(size_t(vertex), covariance);
+}
+
+Vec3 EditorDocument::start_mean(int vertex) const {
+  const auto it = edit_ ? edit_index_.find(vertex) : edit_index_.end();
+  return it != edit_index_.end() ? edit_->means_before[it->second] : mesh_.mean(size_t(vertex));
+}
+
+const Mat3& EditorDocument::start_covariance(int vertex) const {
+  const auto it = edit_ ? edit_index_.find(vertex) : edit_index_.end();
+  return it != edit_index_.end() ? edit_->covariances_before[it->second] : mesh_.covariance(size_t(vertex));
+}
+
+void EditorDocument::revert_edit() {
+  if (!edit_) return;
+  for (size_t i = 0; i < edit_->vertices.size(); ++i) {
+    mesh_.set_mean(size_t(edit_->vertices[i]), edit_->means_before[i]);
+    mesh_.set_covariance(size_t(edit_->vertices[i]), edit_->covariances_before[i]);
+    changed_.push_back(edit_->vertices[i]);
+  }
+}
+
+bool EditorDocument::commit_edit() {
+  if (!edit_) return false;
+  VertexEdit edit = std::move(*edit_);
+  edit_.reset();
+  edit_index_.clear();
+  bool changed = false;
+  for (size_t i = 0; i < edit.vertices.size() && !changed; ++i) {
+    const size_t v = size_t(edit.vertices[i]);
+    changed = mesh_.mean(v) != edit.means_before[i] || mesh_.covariance(v) != edit.covariances_before[i];
+  }
+  if (changed) history_.commit(std::move(edit), mesh_);
+  return changed;
+}
+
+void EditorDocument::cancel_edit() {
+  revert_edit();
+  edit_.reset();
+  edit_index_.clear();
+}
+
+void EditorDocument::undo() {
+  if (!can_undo()) return;
+  const std::vector<int> vertices = history_.undo(mesh_);
+  changed_.insert(changed_.end(), vertices.begin(), vertices.end());
+}
+
+void EditorDocument::redo() {
+  if (!can_redo()) return;
+  const std::vector<int> vertices = history_.redo(mesh_);
+  changed_.insert(changed_.end(), vertices.begin(), vertices.end());
+}
+
+std::vector<int> EditorDocument::take_changed() {
+  std::vector<int> changed;
+  changed.swap(changed_);
+  std::sort(changed.begin(), changed.end());
+  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+  return changed;
 }
 
 }  // namespace gps

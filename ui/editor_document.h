@@ -1,6 +1,11 @@
 #pragma once
-// The mesh being edited: where it came from, its undo history and unsaved-changes state.
+// The mesh being edited: where it came from, and every change to its Gaussians as one transaction
+// (begin, set, commit) that records the undo step, the unsaved-changes state and the vertices the
+// GPU must update, in one place.
+#include <optional>
 #include <string>
+#include <unordered_map>
+#include <vector>
 
 #include "core/covariance_mesh.h"
 #include "ui/edit_history.h"
@@ -27,19 +32,45 @@ public:
   const std::string& source_path() const { return source_path_; }
   /// A short name for the title bar: the file name, or "sample NAME".
   const std::string& display_name() const { return display_name_; }
-  bool dirty() const { return history.dirty(); }
-  /// Changes whenever a different mesh is loaded (the topology, plans and stencils must be rebuilt).
-  unsigned generation() const { return generation_; }
+  bool dirty() const { return history_.dirty(); }
+  const CovarianceMesh& mesh() const { return mesh_; }
 
-  CovarianceMesh mesh;
-  EditHistory history;
+  // Edits. Between begin_edit() and commit_edit() (or cancel_edit()) set_mean/set_covariance
+  // change vertices; the first change of a vertex records its start value.
+  void begin_edit();
+  bool editing() const { return edit_.has_value(); }
+  void set_mean(int vertex, const Vec3& mean);
+  void set_covariance(int vertex, const Mat3& covariance);
+  /// The value a vertex had when the open edit began (its current value outside an edit).
+  Vec3 start_mean(int vertex) const;
+  const Mat3& start_covariance(int vertex) const;
+  /// Puts every vertex changed by the open edit back to its start value (the edit stays open).
+  void revert_edit();
+  /// Closes the edit: one undo step when it changed anything. Returns whether it did.
+  bool commit_edit();
+  /// Closes the edit, restoring the start values; no undo step.
+  void cancel_edit();
+
+  bool can_undo() const { return !editing() && history_.can_undo(); }
+  bool can_redo() const { return !editing() && history_.can_redo(); }
+  void undo();
+  void redo();
+
+  /// The vertices whose Gaussians changed since the last call (ascending, unique): what the GPU
+  /// must re-read. A new mesh is not listed: whoever opens it rebuilds from scratch.
+  std::vector<int> take_changed();
 
 private:
   void replace(CovarianceMesh mesh, const std::string& source, const std::string& ply_path, const std::string& name);
+  void touch(int vertex);
 
+  CovarianceMesh mesh_;
+  EditHistory history_;
+  std::optional<VertexEdit> edit_;
+  std::unordered_map<int, size_t> edit_index_;  // vertex → its slot in edit_
+  std::vector<int> changed_;
   std::string source_path_, ply_path_, display_name_;
   bool binary_ = false;
-  unsigned generation_ = 0;
 };
 
 }  // namespace gps

@@ -2,38 +2,34 @@
 
 #include <imgui.h>
 
-#include "render/picking.h"
-
 namespace gps {
 
 void draw_handle_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMesh& mesh, const std::vector<int>& selected,
-                         const std::vector<int>& handle_vertices, double k_sigma, const std::optional<Handle>& hovered) {
+                         const std::optional<HandleFrame>& gizmo, const std::optional<Handle>& hovered) {
   const auto pixel = [&v](const Vec3& p) -> std::optional<ImVec2> {
-    const auto q = project_to_pixel(v.camera, v.width, v.height, glm::vec3(float(p.x()), float(p.y()), float(p.z())));
-    if (!q || q->z < -1.0f || q->z > 1.0f) return std::nullopt;
+    const auto q = visible_pixel(v.camera, v.width, v.height, p);
+    if (!q) return std::nullopt;
     return ImVec2(q->x, q->y);
   };
   for (const int vertex : selected)
     if (const auto p = pixel(mesh.mean(size_t(vertex)))) draw.AddCircleFilled(*p, 3.5f, IM_COL32(255, 170, 40, 255));
+  if (!gizmo) return;
   const ImU32 axis_colours[3] = {IM_COL32(235, 80, 80, 255), IM_COL32(90, 210, 90, 255), IM_COL32(90, 150, 255, 255)};
   const ImU32 highlight = IM_COL32(255, 240, 90, 255), outline = IM_COL32(0, 0, 0, 200);
   const auto dot = [&](ImVec2 at, bool lit, ImU32 colour) {
     draw.AddCircleFilled(at, lit ? 7.0f : 5.0f, lit ? highlight : colour);
     draw.AddCircle(at, lit ? 7.0f : 5.0f, outline);
   };
-  for (const int vertex : handle_vertices) {
-    const HandleFrame f = handle_frame(mesh, vertex, k_sigma, v);
-    const auto centre = pixel(f.centre);
-    if (!centre) continue;
-    for (int axis = 0; axis < 3; ++axis)
-      for (const int side : {1, -1}) {
-        const auto end = pixel(f.end(axis, side));
-        if (!end) continue;
-        draw.AddLine(*centre, *end, axis_colours[axis], 2.0f);
-        dot(*end, hovered && hovered->vertex == vertex && hovered->axis == axis && hovered->side == side, axis_colours[axis]);
-      }
-    dot(*centre, hovered && hovered->vertex == vertex && hovered->is_centre(), IM_COL32(245, 245, 245, 255));
-  }
+  const auto centre = pixel(gizmo->centre);
+  if (!centre) return;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const int side : {1, -1}) {
+      const auto end = pixel(gizmo->end(axis, side));
+      if (!end) continue;
+      draw.AddLine(*centre, *end, axis_colours[axis], 2.0f);
+      dot(*end, hovered && hovered->axis == axis && hovered->side == side, axis_colours[axis]);
+    }
+  dot(*centre, hovered && hovered->is_centre(), IM_COL32(245, 245, 245, 255));
 }
 
 }  // namespace gps

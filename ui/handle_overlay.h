@@ -1,5 +1,5 @@
 #pragma once
-// Drawing the selection and the ellipsoid-axis handles over the 3D view (Dear ImGui draw lists).
+// Drawing the selection and the gizmo over the 3D view (Dear ImGui draw lists).
 #include <optional>
 #include <vector>
 
@@ -9,9 +9,10 @@ struct ImDrawList;
 
 namespace gps {
 
-/// A dot on every selected vertex, and for `handle_vertices` their handles: both ends of each axis
-/// (red, green, blue by ascending σ) joined to the white centre dot; `hovered` is drawn lit.
+/// A dot on every selected vertex, and the gizmo: both ends of each axis of `gizmo` (red, green,
+/// blue by axis index: during a drag the index stays the grabbed one's) joined to the white centre
+/// dot; the `hovered` (or dragged) handle is drawn lit.
 void draw_handle_overlay(ImDrawList& draw, const Viewport& view, const CovarianceMesh& mesh, const std::vector<int>& selected,
-                         const std::vector<int>& handle_vertices, double k_sigma, const std::optional<Handle>& hovered);
+                         const std::optional<HandleFrame>& gizmo, const std::optional<Handle>& hovered);
 
 }  // namespace gps

@@ -83,6 +83,7 @@ const std::vector<std::pair<std::string, int>>& named_keys() {
     for (char c = 'a'; c <= 'z'; ++c) n.push_back({std::string(1, c), GLFW_KEY_A + (c - 'a')});
     for (char c = '0'; c <= '9'; ++c) n.push_back({std::string(1, c), GLFW_KEY_0 + (c - '0')});
     for (int f = 1; f <= 12; ++f) n.push_back({"f" + std::to_string(f), GLFW_KEY_F1 + f - 1});
+    for (char c = '0'; c <= '9'; ++c) n.push_back({"kp" + std::string(1, c), GLFW_KEY_KP_0 + (c - '0')});
     return n;
   }();
   return names;

@@ -4,8 +4,8 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdio>
 
-#include "ui/covariance_edit.h"
 #include "ui/covariance_presets.h"
 
 namespace gps {
@@ -30,91 +30,116 @@ Mat3 rotation_from_euler_degrees(const Vec3& angles) {
       .toRotationMatrix();
 }
 
+double display_value(double value, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  const double rounded = std::round(value * scale) / scale;
+  return rounded == 0.0 ? 0.0 : rounded;  // −0.00 shows as 0.00
+}
+
 namespace {
 
-// Begins an undo step when a numeric field is activated and commits it when the user leaves it.
-void track_entry(std::optional<VertexEdit>& entry, EditorDocument& document, const Selection& selection) {
-  if (ImGui::IsItemActivated()) entry = EditHistory::begin(document.mesh, selection.vertices());
-  if (ImGui::IsItemDeactivated() && entry) {
-    if (ImGui::IsItemDeactivatedAfterEdit()) document.history.commit(std::move(*entry), document.mesh);
-    entry.reset();
-  }
+const ImVec4 kAxisColours[3] = {ImVec4(0.92f, 0.31f, 0.31f, 1), ImVec4(0.35f, 0.82f, 0.35f, 1), ImVec4(0.35f, 0.59f, 1.0f, 1)};
+
+// One number field showing `value` rounded to `decimals` (or "mixed"); returns the typed value when
+// the user changed the number (a field left unchanged never rounds the value it shows).
+std::optional<double> number_field(const char* label, double value, bool mixed, int decimals, float width) {
+  char format[16];
+  std::snprintf(format, sizeof format, "%%.%df", decimals);
+  double shown = mixed ? 0.0 : display_value(value, decimals);
+  const double before = shown;
+  ImGui::SetNextItemWidth(width);
+  if (!ImGui::InputDouble(label, &shown, 0.0, 0.0, mixed ? "mixed" : format) || !std::isfinite(shown)) return std::nullopt;
+  if (!mixed && display_value(shown, decimals) == before) return std::nullopt;
+  return shown;
+}
+
+bool all_equal(const std::vector<double>& values) {
+  for (const double v : values)
+    if (v != values.front()) return false;
+  return true;
 }
 
 }  // namespace
 
-std::vector<int> InspectorPanel::apply_preset(EditorDocument& document, const Selection& selection, int preset) {
-  const std::vector<int>& vertices = selection.vertices();
-  const std::vector<Mat3> covariances =
-      preset_covariances(document.mesh, vertices, CovariancePreset(preset), isotropic_sigma_);
-  VertexEdit edit = EditHistory::begin(document.mesh, vertices);
-  for (size_t i = 0; i < vertices.size(); ++i)
-    document.mesh.covariances[size_t(vertices[i])] = clamp_spd(covariances[i], document.mesh.covariance(size_t(vertices[i])));
-  document.history.commit(std::move(edit), document.mesh);
-  return vertices;
+// Begins the document's edit when a field is activated and commits it when the user leaves it.
+void InspectorPanel::track_entry(EditorDocument& document) {
+  if (ImGui::IsItemActivated() && !document.editing()) {
+    document.begin_edit();
+    entry_open_ = true;
+  }
+  if (ImGui::IsItemDeactivated() && entry_open_) {
+    document.commit_edit();
+    entry_open_ = false;
+    entry_axes_.reset();
+  }
 }
 
-std::vector<int> InspectorPanel::draw(EditorDocument& document, const Selection& selection, bool* open) {
-  std::vector<int> changed;
-  const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + 10), ImGuiCond_FirstUseEver,
-                          ImVec2(1, 0));
-  ImGui::SetNextWindowSize(ImVec2(360, 300), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Inspector", open)) {
-    ImGui::End();
-    return changed;
-  }
-  const int active = selection.active();
-  if (active < 0) {
-    ImGui::TextWrapped("Click a vertex or its ellipsoid to select it; shift-click adds or removes, drag a box to select many.");
-    ImGui::End();
-    return changed;
-  }
-  CovarianceMesh& mesh = document.mesh;
-  const std::vector<int>& vertices = selection.vertices();
-  if (vertices.size() == 1) ImGui::Text("Vertex %d", active);
-  else ImGui::Text("Vertex %d and %zu more: changes apply to all", active, vertices.size() - 1);
-  ImGui::Separator();
-
-  // Mean: the same displacement for every selected vertex.
-  Vec3 mean = mesh.mean(size_t(active));
-  const Vec3 old_mean = mean;
-  if (ImGui::InputScalarN("mean", ImGuiDataType_Double, mean.data(), 3, nullptr, nullptr, "%.6g") && mean.allFinite()) {
-    const Vec3 delta = mean - old_mean;
-    for (const int v : vertices) mesh.set_mean(size_t(v), mesh.mean(size_t(v)) + delta);
-    changed = vertices;
-  }
-  track_entry(entry_, document, selection);
-
-  // Standard deviations: each axis rank scaled by the same factor.
-  const EllipsoidAxes axes = ellipsoid_axes(mesh.covariance(size_t(active)));
-  Vec3 sigmas = axes.sigmas;
-  if (ImGui::InputScalarN("sigma", ImGuiDataType_Double, sigmas.data(), 3, nullptr, nullptr, "%.6g") && sigmas.allFinite()) {
-    const Vec3 factors = sigmas.cwiseMax(1e-5).cwiseQuotient(axes.sigmas.cwiseMax(1e-300));
-    for (const int v : vertices) {
-      Mat3 c = mesh.covariance(size_t(v));
-      const Mat3 before = c;
-      for (int a = 0; a < 3; ++a) c = scale_axis(c, a, factors[a]);
-      mesh.covariances[size_t(v)] = clamp_spd(c, before);
+void InspectorPanel::draw_means(EditorDocument& document, const std::vector<int>& vertices) {
+  static const char* kLabels[] = {"##mean x", "##mean y", "##mean z"};
+  for (int k = 0; k < 3; ++k) {
+    std::vector<double> values;
+    for (const int v : vertices) values.push_back(document.mesh().mean(size_t(v))[k]);
+    if (k > 0) ImGui::SameLine();
+    if (const auto typed = number_field(kLabels[k], values.front(), !all_equal(values), 4, 80)) {
+      for (const int v : vertices) {
+        Vec3 m = document.start_mean(v);
+        m[k] = *typed;
+        document.set_mean(v, m);
+      }
     }
-    changed = vertices;
+    track_entry(document);
   }
-  track_entry(entry_, document, selection);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("standard deviations along the principal axes, smallest first");
+  ImGui::SameLine();
+  ImGui::TextUnformatted("mean");
+}
 
-  // Orientation: the principal frame as Euler angles; the same rotation for every selected vertex.
-  Vec3 angles = euler_degrees(axes.axes);
-  if (ImGui::InputScalarN("rotation", ImGuiDataType_Double, angles.data(), 3, nullptr, nullptr, "%.2f") && angles.allFinite()) {
-    const Mat3 turn = rotation_from_euler_degrees(angles) * axes.axes.transpose();
-    for (const int v : vertices) mesh.covariances[size_t(v)] = rotate_covariance(mesh.covariance(size_t(v)), turn);
-    changed = vertices;
+void InspectorPanel::draw_sigmas(EditorDocument& document, const std::vector<int>& vertices, int active) {
+  // While a σ is typed, the axes keep the order they had when the entry began (no re-sorting).
+  const EllipsoidAxes axes = entry_axes_ ? *entry_axes_ : ellipsoid_axes(document.mesh().covariance(size_t(active)));
+  static const char* kLabels[] = {"##sigma 1", "##sigma 2", "##sigma 3"};
+  for (int k = 0; k < 3; ++k) {
+    std::vector<double> values;
+    for (const int v : vertices) values.push_back(v == active ? axes.sigmas[k] : ellipsoid_axes(document.mesh().covariance(size_t(v))).sigmas[k]);
+    if (k > 0) ImGui::SameLine();
+    ImGui::PushStyleColor(ImGuiCol_Text, kAxisColours[k]);
+    const auto typed = number_field(kLabels[k], axes.sigmas[k], !all_equal(values), 5, 80);
+    ImGui::PopStyleColor();
+    if (typed && *typed > 0) {
+      for (const int v : vertices) {  // σ_k of every selected vertex (its own axis of rank k at the start) set to the value
+        EllipsoidAxes e = ellipsoid_axes(document.start_covariance(v));
+        e.sigmas[k] = std::clamp(*typed, 1e-5, 1e5);
+        document.set_covariance(v, covariance_from_axes(e.axes, e.sigmas));
+      }
+    }
+    if (ImGui::IsItemActivated()) entry_axes_ = axes;
+    track_entry(document);
   }
-  track_entry(entry_, document, selection);
+  ImGui::SameLine();
+  ImGui::TextUnformatted("σ");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("standard deviations along the principal axes (colours as on the gizmo)");
+}
+
+void InspectorPanel::draw_rotation(EditorDocument& document, const std::vector<int>& vertices, int active) {
+  // The principal frame as Euler angles; a change turns every selected vertex by the same rotation.
+  const EllipsoidAxes axes = ellipsoid_axes(document.start_covariance(active));
+  const Vec3 angles = euler_degrees(ellipsoid_axes(document.mesh().covariance(size_t(active))).axes);
+  static const char* kLabels[] = {"##angle x", "##angle y", "##angle z"};
+  for (int k = 0; k < 3; ++k) {
+    if (k > 0) ImGui::SameLine();
+    if (const auto typed = number_field(kLabels[k], angles[k], false, 2, 80)) {
+      Vec3 wanted = euler_degrees(axes.axes);
+      wanted[k] = *typed;
+      const Mat3 turn = rotation_from_euler_degrees(wanted) * axes.axes.transpose();
+      for (const int v : vertices) document.set_covariance(v, rotate_covariance(document.start_covariance(v), turn));
+    }
+    track_entry(document);
+  }
+  ImGui::SameLine();
+  ImGui::TextUnformatted("rotation");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("principal frame as Euler angles in degrees (about x, then y, then z)");
+}
 
-  const Mat3& c = mesh.covariance(size_t(active));
-  ImGui::TextDisabled("Σ = [%.4g %.4g %.4g; %.4g %.4g; %.4g]", c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2));
-  ImGui::Separator();
+void InspectorPanel::draw_presets(EditorDocument& document, const std::vector<int>& vertices) {
   ImGui::TextUnformatted("Presets");
   int preset = -1;
   ImGui::SetNextItemWidth(120);
@@ -135,9 +160,57 @@ std::vector<int> InspectorPanel::draw(EditorDocument& document, const Selection&
   ImGui::SameLine();
   if (ImGui::Button("Reset to inferred")) preset = int(CovariancePreset::inferred);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("the covariance inferred from the mesh around the vertex (GPS Eq. 16-17)");
-  if (preset >= 0) changed = apply_preset(document, selection, preset);
+  if (preset < 0) return;
+  const std::vector<Mat3> covariances = preset_covariances(document.mesh(), vertices, CovariancePreset(preset), isotropic_sigma_);
+  document.begin_edit();
+  for (size_t i = 0; i < vertices.size(); ++i)
+    document.set_covariance(vertices[i], clamp_spd(covariances[i], document.mesh().covariance(size_t(vertices[i]))));
+  document.commit_edit();
+}
+
+void InspectorPanel::draw(EditorDocument& document, const Selection& selection, ReachOptions& reach, bool* open) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + 10), ImGuiCond_FirstUseEver,
+                          ImVec2(1, 0));
+  ImGui::SetNextWindowSize(ImVec2(360, 300), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Inspector", open)) {
+    ImGui::End();
+    return;
+  }
+  const int active = selection.active();
+  if (active < 0) {
+    ImGui::TextWrapped("Click a vertex or its ellipsoid to select it; shift-click adds or removes, drag a box to select many.");
+  } else {
+    const std::vector<int>& vertices = selection.vertices();
+    if (vertices.size() == 1) ImGui::Text("Vertex %d", active);
+    else ImGui::Text("Vertex %d and %zu more: a typed value applies to all", active, vertices.size() - 1);
+    ImGui::Separator();
+    draw_means(document, vertices);
+    draw_sigmas(document, vertices, active);
+    draw_rotation(document, vertices, active);
+    const Mat3& c = document.mesh().covariance(size_t(active));
+    ImGui::TextDisabled("Σ = [%.4g %.4g %.4g; %.4g %.4g; %.4g]", c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2));
+    ImGui::Separator();
+    draw_presets(document, vertices);
+  }
+  ImGui::Separator();
+  ImGui::Checkbox("proportional (O)", &reach.proportional);
+  if (reach.proportional) {
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputDouble("radius", &reach.radius, 0, 0, "%.4f");
+    reach.radius = std::isfinite(reach.radius) ? std::clamp(reach.radius, 1e-9, 1e9) : 1.0;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(100);
+    int falloff = int(reach.falloff);
+    if (ImGui::Combo("falloff", &falloff, kFalloffNames)) reach.falloff = Falloff(falloff);
+  }
+  ImGui::Checkbox("mirror (M)", &reach.mirror);
+  if (reach.mirror) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(60);
+    ImGui::Combo("across", &reach.mirror_axis, "x\0y\0z\0");
+  }
   ImGui::End();
-  return changed;
 }
 
 }  // namespace gps

@@ -1,11 +1,13 @@
 #pragma once
-// The inspector: the active vertex's mean, its covariance as three standard deviations and an
-// orientation, and presets. Every change applies to all selected vertices as the same relative
-// change, and is one undo step (one per preset, one per numeric entry).
+// The inspector: the selection's means, standard deviations (per principal axis, coloured as the
+// gizmo's axes) and orientation, presets, and how far edits reach (proportional, mirror). Values
+// that differ across the selection show as "mixed"; a typed value applies to every selected vertex.
+// Every change is one undo step (one per preset, one per numeric entry).
 #include <optional>
 #include <vector>
 
-#include "ui/edit_history.h"
+#include "core/covariance_edit.h"
+#include "ui/edit_reach.h"
 #include "ui/editor_document.h"
 #include "ui/selection.h"
 
@@ -13,13 +15,18 @@ namespace gps {
 
 class InspectorPanel {
 public:
-  /// Draws the panel (between ImGui::NewFrame and ImGui::Render); returns the vertices it changed.
-  std::vector<int> draw(EditorDocument& document, const Selection& selection, bool* open);
+  /// Draws the panel (between ImGui::NewFrame and ImGui::Render); edits go through the document.
+  void draw(EditorDocument& document, const Selection& selection, ReachOptions& reach, bool* open);
 
 private:
-  std::vector<int> apply_preset(EditorDocument& document, const Selection& selection, int preset);
+  void draw_means(EditorDocument& document, const std::vector<int>& vertices);
+  void draw_sigmas(EditorDocument& document, const std::vector<int>& vertices, int active);
+  void draw_rotation(EditorDocument& document, const std::vector<int>& vertices, int active);
+  void draw_presets(EditorDocument& document, const std::vector<int>& vertices);
+  void track_entry(EditorDocument& document);
 
-  std::optional<VertexEdit> entry_;  // a numeric entry in progress: committed when its field is left
+  bool entry_open_ = false;                   // a numeric entry in progress: committed when its field is left
+  std::optional<EllipsoidAxes> entry_axes_;   // the active vertex's axes when the entry began: fields keep their order
   double isotropic_sigma_ = 0.05;
 };
 
@@ -27,5 +34,8 @@ private:
 Vec3 euler_degrees(const Mat3& rotation);
 /// The rotation matrix of euler_degrees().
 Mat3 rotation_from_euler_degrees(const Vec3& angles);
+
+/// A value for a fixed-width display: rounded to `decimals`, without a negative zero.
+double display_value(double value, int decimals);
 
 }  // namespace gps

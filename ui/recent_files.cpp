@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "ui/editor_settings.h"
 
 namespace gps {
 namespace {
@@ -30,12 +31,8 @@ RecentFiles::RecentFiles(std::string store, std::size_t capacity) : store_(std::
 }
 
 std::string RecentFiles::default_store() {
-  // The XDG base directory specification ignores relative paths in its variables.
-  const char* config = std::getenv("XDG_CONFIG_HOME");
-  if (config && config[0] == '/') return std::string(config) + "/gpsurf/recent.txt";
-  const char* home = std::getenv("HOME");
-  if (home && home[0] != '\0') return std::string(home) + "/.config/gpsurf/recent.txt";
-  return "";
+  const std::string folder = config_folder();
+  return folder.empty() ? "" : folder + "/recent.txt";
 }
 
 void RecentFiles::add(const std::string& path) {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "render/picking.h"
+#include "view/projection.h"
 
 namespace gps {
 
@@ -45,18 +45,12 @@ void Selection::clear() {
   last_clicked_ = -1;
 }
 
-void Selection::restrict_to(size_t n_vertices) {
-  vertices_.erase(std::lower_bound(vertices_.begin(), vertices_.end(), int(n_vertices)), vertices_.end());
-  if (last_clicked_ >= int(n_vertices)) last_clicked_ = -1;
-}
-
 std::vector<int> vertices_in_box(const Camera& camera, int width, int height, glm::vec2 a, glm::vec2 b, const CovarianceMesh& mesh) {
   const glm::vec2 lo = glm::min(a, b), hi = glm::max(a, b) + glm::vec2(1.0f);  // pixel squares, inclusive
   std::vector<int> inside;
   for (size_t i = 0; i < mesh.n_vertices(); ++i) {
-    const Vec3 m = mesh.mean(i);
-    const auto p = project_to_pixel(camera, width, height, glm::vec3(float(m.x()), float(m.y()), float(m.z())));
-    if (!p || p->z < -1.0f || p->z > 1.0f) continue;
+    const auto p = visible_pixel(camera, width, height, mesh.mean(i));
+    if (!p) continue;
     if (p->x >= lo.x && p->x <= hi.x && p->y >= lo.y && p->y <= hi.y) inside.push_back(int(i));
   }
   return inside;

@@ -5,7 +5,7 @@
 #include <glm/glm.hpp>
 
 #include "core/covariance_mesh.h"
-#include "render/camera.h"
+#include "view/camera.h"
 
 namespace gps {
 
@@ -25,8 +25,6 @@ public:
   void select(const std::vector<int>& inside, bool additive);
   void select_all(size_t n_vertices);
   void clear();
-  /// Drops vertices ≥ n (after loading another mesh).
-  void restrict_to(size_t n_vertices);
 
 private:
   std::vector<int> vertices_;

@@ -13,7 +13,7 @@ void draw_status_bar(const EditorDocument& document, size_t selected, const std:
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoBringToFrontOnFocus;
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 2));
   if (ImGui::Begin("##status", nullptr, flags)) {
-    ImGui::Text("%zu vertices, %zu faces, %zu selected%s", document.mesh.n_vertices(), document.mesh.n_faces(),
+    ImGui::Text("%zu vertices, %zu faces, %zu selected%s", document.mesh().n_vertices(), document.mesh().n_faces(),
                 selected, document.dirty() ? "  (unsaved changes)" : "");
     if (!message.empty()) {
       ImGui::SameLine(0, 24);

@@ -22,6 +22,7 @@ struct ViewOptions {
   int depth = 3;              // maximum plan depth (rebuilds the plans when changed)
   std::string matcap = "clay";
   bool vsync = true;
+  bool common_frame = false;  // a multi-selection drag: every Gaussian in the grabbed one's frame (else its own)
   bool show_inspector = true, show_view = true, show_statistics = true, show_help = false;
 };
 

@@ -6,6 +6,57 @@
 
 namespace gps {
 
+namespace {
+
+// The panel is a list of sections, each a function of the options: a new setting goes in its
+// section, a new section (say, the subdivision scheme) in kSections.
+void tessellation_section(ViewOptions& o, ViewPanelChanges& changes) {
+  ImGui::Checkbox("adaptive", &o.adaptive);
+  ImGui::SameLine();
+  if (o.adaptive) ImGui::SliderFloat("px/edge", &o.adaptive_pixels, 1.0f, 32.0f, "%.1f");
+  else ImGui::SliderFloat("level", &o.draw.level, 1.0f, 64.0f, "%.0f");
+  o.draw.pixels = o.adaptive ? o.adaptive_pixels : 0.0f;
+  if (ImGui::SliderInt("plan depth", &o.depth, 1, 6)) changes.depth = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("maximum quadtree depth at extraordinary vertices (rebuilds the plans)");
+}
+
+void shading_section(ViewOptions& o, ViewPanelChanges& changes) {
+  if (ImGui::BeginCombo("MatCap", o.matcap.c_str())) {
+    for (const std::string& name : builtin_matcap_names())
+      if (ImGui::Selectable(name.c_str(), name == o.matcap)) o.matcap = name, changes.matcap = true;
+    if (ImGui::Selectable("Load from file...")) changes.load_matcap = true;
+    ImGui::EndCombo();
+  }
+  int mode = int(o.draw.mode);
+  if (ImGui::Combo("shading", &mode, "MatCap\0normals\0flat\0")) o.draw.mode = ShadingMode(mode);
+}
+
+void overlay_section(ViewOptions& o, ViewPanelChanges&) {
+  ImGui::Checkbox("base mesh", &o.draw.mesh_lines);
+  ImGui::SameLine();
+  ImGui::Checkbox("wireframe", &o.draw.wireframe);
+  ImGui::Checkbox("ellipsoids", &o.draw.ellipsoids);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderFloat("k-sigma", &o.draw.sigma_scale, 0.1f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+}
+
+void editing_section(ViewOptions& o, ViewPanelChanges&) {
+  ImGui::Checkbox("common frame", &o.common_frame);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("a multi-selection drag scales every Gaussian along the grabbed axis (else each along its own)");
+}
+
+void window_section(ViewOptions& o, ViewPanelChanges&) {
+  ImGui::Checkbox("v-sync", &o.vsync);
+  ImGui::SameLine();
+  ImGui::Checkbox("statistics", &o.show_statistics);
+}
+
+using Section = void (*)(ViewOptions&, ViewPanelChanges&);
+constexpr Section kSections[] = {tessellation_section, shading_section, overlay_section, editing_section, window_section};
+
+}  // namespace
+
 ViewPanelChanges draw_view_panel(ViewOptions& o, bool* open) {
   ViewPanelChanges changes;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
@@ -17,31 +68,7 @@ ViewPanelChanges draw_view_panel(ViewOptions& o, bool* open) {
     return changes;
   }
   ImGui::PushItemWidth(170);
-  ImGui::Checkbox("adaptive", &o.adaptive);
-  ImGui::SameLine();
-  if (o.adaptive) ImGui::SliderFloat("px/edge", &o.adaptive_pixels, 1.0f, 32.0f, "%.1f");
-  else ImGui::SliderFloat("level", &o.draw.level, 1.0f, 64.0f, "%.0f");
-  o.draw.pixels = o.adaptive ? o.adaptive_pixels : 0.0f;
-  if (ImGui::SliderInt("plan depth", &o.depth, 1, 6)) changes.depth = true;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("maximum quadtree depth at extraordinary vertices (rebuilds the plans)");
-  if (ImGui::BeginCombo("MatCap", o.matcap.c_str())) {
-    for (const std::string& name : builtin_matcap_names())
-      if (ImGui::Selectable(name.c_str(), name == o.matcap)) o.matcap = name, changes.matcap = true;
-    if (ImGui::Selectable("Load from file...")) changes.load_matcap = true;
-    ImGui::EndCombo();
-  }
-  int mode = int(o.draw.mode);
-  if (ImGui::Combo("shading", &mode, "MatCap\0normals\0flat\0")) o.draw.mode = ShadingMode(mode);
-  ImGui::Checkbox("base mesh", &o.draw.mesh_lines);
-  ImGui::SameLine();
-  ImGui::Checkbox("wireframe", &o.draw.wireframe);
-  ImGui::Checkbox("ellipsoids", &o.draw.ellipsoids);
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(120);
-  ImGui::SliderFloat("k-sigma", &o.draw.sigma_scale, 0.1f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-  ImGui::Checkbox("v-sync", &o.vsync);
-  ImGui::SameLine();
-  ImGui::Checkbox("statistics", &o.show_statistics);
+  for (const Section section : kSections) section(o, changes);
   ImGui::PopItemWidth();
   ImGui::End();
   return changes;

@@ -54,6 +54,22 @@ TEST(Cli, UsageErrorsExitWithTwo) {
   }
 }
 
+// Issue 13: an option a command would ignore is an error, and a range error is short.
+TEST(Cli, IgnoredOptionsAndRangesAreShortErrors) {
+  test::TempDir dir;
+  run_command(gpsurf("sample cube -o " + dir.file("cube.ply")));
+  const auto size = run_command(gpsurf("sample cube --size 5 -o " + dir.file("c.ply")));
+  EXPECT_EQ(size.exit_code, 2) << size.output;
+  EXPECT_NE(size.output.find("--size applies to grid and sphere only"), std::string::npos) << size.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("c.ply")));
+  EXPECT_EQ(run_command(gpsurf("sample sphere --size 500 -o " + dir.file("s.ply"))).exit_code, 0);
+  const auto bias = run_command(gpsurf("infer " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --bias 0"));
+  EXPECT_EQ(bias.exit_code, 2) << bias.output;
+  EXPECT_NE(bias.output.find("expected a number > 0, got '0'"), std::string::npos) << bias.output;
+  EXPECT_LT(bias.output.size(), 160u) << bias.output;
+  EXPECT_EQ(run_command(gpsurf("render " + dir.file("cube.ply") + " -o " + dir.file("r.png") + " --size 0x5")).exit_code, 2);
+}
+
 TEST(Cli, RuntimeErrorsExitWithOneAndKeepFiles) {
   test::TempDir dir;
   const std::string bad = dir.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nend_header\n1\n");

@@ -7,13 +7,12 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
-#include "../support/run_command.h"
-#include "../support/temp_dir.h"
+#include "../support/editor_driver.h"
 #include "core/mesh_io.h"
 #include "core/text_file.h"
 #include "core/samples.h"
 #include "render/image_io.h"
-#include "render/picking.h"
+#include "view/picking.h"
 #include "ui/axis_handles.h"
 #include "ui/view_options.h"
 
@@ -23,7 +22,9 @@ namespace {
 constexpr int kWidth = 1024, kHeight = 700;
 constexpr int kVertex = 6;  // the cube's (1, 1, 1) corner, in front for the default camera
 
-std::string editor(const std::string& args) { return std::string(GPSURF_EDITOR_BINARY) + " " + args; }
+using test::pixel_of;
+using test::point;
+std::string editor(const std::string& args) { return test::editor_command(args); }
 
 // The cube with an anisotropic, turned Gaussian at the edited corner.
 CovarianceMesh test_mesh() {
@@ -41,14 +42,6 @@ Viewport editor_view(const CovarianceMesh& mesh) {
   v.height = kHeight;
   return v;
 }
-
-glm::vec2 pixel_of(const Viewport& v, const Vec3& p) {
-  const auto q = project_to_pixel(v.camera, v.width, v.height, glm::vec3(float(p.x()), float(p.y()), float(p.z())));
-  EXPECT_TRUE(q.has_value());
-  return glm::vec2(*q) - glm::vec2(0.5f);
-}
-
-std::string point(glm::vec2 p) { return "[" + std::to_string(p.x) + ", " + std::to_string(p.y) + "]"; }
 
 struct DragPlan {
   int axis = 0;

@@ -1,5 +1,6 @@
 // Picking: rays through pixels, vertices near the mouse, the surface point under a pixel (OSMesa).
 #include "render/picking.h"
+#include "view/picking.h"
 
 #include <gtest/gtest.h>
 

@@ -17,6 +17,7 @@
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/picking.h"
+#include "view/picking.h"
 #include "render/reference_triangles.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"

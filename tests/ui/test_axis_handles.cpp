@@ -7,7 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "core/samples.h"
-#include "render/picking.h"
+#include "view/picking.h"
 
 namespace gps {
 namespace {
@@ -38,6 +38,25 @@ Viewport test_view(int width = 900, int height = 700) {
 }
 
 Vec3 sorted_sigmas(const Mat3& c) { return Eigen::SelfAdjointEigenSolver<Mat3>(c).eigenvalues().cwiseSqrt(); }
+
+// A drag applied as the editor applies it: each vertex's change to its Gaussian at the drag's start.
+struct AppliedDrag {
+  AppliedDrag(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Handle& grabbed, double k_sigma, const Viewport& view,
+              glm::vec2 start_pixel)
+      : drag(mesh, vertices, grabbed, k_sigma, view, start_pixel), start(mesh) {}
+  bool update(CovarianceMesh& mesh, const Viewport& view, glm::vec2 pixel, const DragModifiers& modifiers = {}) {
+    const auto changes = drag.update(view, pixel, modifiers);
+    if (!changes) return false;
+    for (size_t i = 0; i < drag.vertices().size(); ++i) {
+      const size_t v = size_t(drag.vertices()[i]);
+      mesh.set_mean(v, (*changes)[i].apply_to_mean(start.mean(v)));
+      mesh.set_covariance(v, (*changes)[i].keeps_covariance() ? start.covariance(v) : (*changes)[i].apply_to_covariance(start.covariance(v)));
+    }
+    return true;
+  }
+  HandleDrag drag;
+  CovarianceMesh start;
+};
 
 TEST(AxisHandles, EveryHandleIsHitAtItsPixel) {
   const CovarianceMesh mesh = test_mesh();
@@ -80,7 +99,7 @@ TEST(AxisHandles, DraggingAnEndAlongTheAxisScalesItsSigma) {
       const Vec3 before = sorted_sigmas(mesh.covariance(0));
       const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
       const Vec3 end = f.end(axis, 1), goal = f.centre + target * (end - f.centre);
-      const HandleDrag drag(mesh, {0}, Handle{0, axis, 1}, 2.0, view, pixel_of(view, end));
+      AppliedDrag drag(mesh, {0}, Handle{0, axis, 1}, 2.0, view, pixel_of(view, end));
       ASSERT_TRUE(drag.update(mesh, view, pixel_of(view, goal)));
       const Vec3 after = sorted_sigmas(mesh.covariance(0));
       // The scaled σ may change rank; compare as multisets.
@@ -100,7 +119,7 @@ TEST(AxisHandles, DraggingAcrossTheAxisRotatesAndKeepsTheEigenvalues) {
   const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
   const glm::vec2 start = pixel_of(view, f.end(2, 1));
   const glm::vec2 along = glm::normalize(start - pixel_of(view, f.centre));
-  const HandleDrag drag(mesh, {0}, Handle{0, 2, 1}, 2.0, view, start);
+  AppliedDrag drag(mesh, {0}, Handle{0, 2, 1}, 2.0, view, start);
   ASSERT_TRUE(drag.update(mesh, view, start + 30.0f * glm::vec2(-along.y, along.x)));
   EXPECT_GT((mesh.covariance(0) - original).norm(), 1e-3 * original.norm());  // it turned
   // Motion across the projected axis has no component along the axis in the drag plane up to the
@@ -122,7 +141,7 @@ TEST(AxisHandles, EveryDragKeepsCovariancesPositiveDefinite) {
   CovarianceMesh mesh = test_mesh();
   const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
   const glm::vec2 start = pixel_of(view, f.end(0, 1));
-  const HandleDrag drag(mesh, {0}, Handle{0, 0, 1}, 2.0, view, start);
+  AppliedDrag drag(mesh, {0}, Handle{0, 0, 1}, 2.0, view, start);
   for (const glm::vec2 to : {pixel_of(view, f.end(0, -1)), pixel_of(view, f.centre), start + glm::vec2(4000, -3000), glm::vec2(0, 0)}) {
     if (!drag.update(mesh, view, to)) continue;
     EXPECT_TRUE(is_spd(mesh.covariance(0)));
@@ -135,7 +154,7 @@ TEST(AxisHandles, CentreDragMovesEverySelectedMeanByTheSameVector) {
   CovarianceMesh mesh = test_mesh();
   const CovarianceMesh original = mesh;
   const glm::vec2 start = pixel_of(view, mesh.mean(0));
-  const HandleDrag drag(mesh, {0, 3}, Handle{0, -1, 1}, 2.0, view, start);
+  AppliedDrag drag(mesh, {0, 3}, Handle{0, -1, 1}, 2.0, view, start);
   ASSERT_TRUE(drag.update(mesh, view, start + glm::vec2(40, -25)));
   const Vec3 d0 = mesh.mean(0) - original.mean(0), d3 = mesh.mean(3) - original.mean(3);
   EXPECT_GT(d0.norm(), 0.01);
@@ -151,7 +170,7 @@ TEST(AxisHandles, SeveralSelectedVerticesGetTheSameRelativeChange) {
   const CovarianceMesh original = mesh;
   const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
   const Vec3 end = f.end(1, 1);
-  const HandleDrag drag(mesh, {0, 3}, Handle{0, 1, 1}, 2.0, view, pixel_of(view, end));
+  AppliedDrag drag(mesh, {0, 3}, Handle{0, 1, 1}, 2.0, view, pixel_of(view, end));
   ASSERT_TRUE(drag.update(mesh, view, pixel_of(view, f.centre + 1.5 * (end - f.centre))));
   // Vertex 3's middle σ grew by the same factor; its others stayed.
   Vec3 expected = sorted_sigmas(original.covariance(3));
@@ -159,6 +178,99 @@ TEST(AxisHandles, SeveralSelectedVerticesGetTheSameRelativeChange) {
   std::sort(expected.data(), expected.data() + 3);
   EXPECT_LT((sorted_sigmas(mesh.covariance(3)) - expected).cwiseAbs().maxCoeff(), 0.01 * expected.maxCoeff());
   for (const size_t v : {1, 2, 4, 5, 6, 7}) EXPECT_EQ(mesh.covariance(v), original.covariance(v));
+}
+
+// Issue 13: a scale drag changes exactly one σ and keeps the frame; a turn keeps every σ; Shift
+// scales all three; the axis keeps its index (its colour) for the whole drag.
+TEST(AxisHandles, AScaleDragChangesOneSigmaAndKeepsTheFrameExactly) {
+  const Viewport view = test_view();
+  for (int axis = 0; axis < 3; ++axis) {
+    CovarianceMesh mesh = test_mesh();
+    const EllipsoidAxes before = ellipsoid_axes(mesh.covariance(0));
+    const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
+    const Vec3 end = f.end(axis, 1);
+    AppliedDrag drag(mesh, {0}, Handle{0, axis, 1}, 2.0, view, pixel_of(view, end));
+    // Past the other σ: the dragged axis keeps its index (and colour) however its rank changes.
+    ASSERT_TRUE(drag.update(mesh, view, pixel_of(view, f.centre + 4.0 * (end - f.centre))));
+    EXPECT_EQ(drag.drag.kind(), HandleDrag::Kind::scale);
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = before.axes.col(k);
+      // Each start axis is still an eigenvector: Σ'u ∥ u, and its σ changed only for the dragged one.
+      const Vec3 image = mesh.covariance(0) * u;
+      EXPECT_LT((image - image.dot(u) * u).norm(), 1e-9 * image.norm()) << "axis " << k;
+      const double sigma = std::sqrt(u.dot(mesh.covariance(0) * u));
+      if (k == axis) EXPECT_GT(sigma, 2.0 * before.sigmas[k]);
+      else EXPECT_NEAR(sigma, before.sigmas[k], 1e-9 * before.sigmas[k]) << "axis " << k;
+    }
+    const HandleFrame during = drag.drag.frame(view);
+    EXPECT_LT((during.axes.axes.col(axis) - before.axes.col(axis)).norm(), 1e-9);
+  }
+}
+
+TEST(AxisHandles, ATurnKeepsEverySigmaExactly) {
+  const Viewport view = test_view();
+  CovarianceMesh mesh = test_mesh();
+  const Vec3 before = sorted_sigmas(mesh.covariance(0));
+  const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
+  const glm::vec2 start = pixel_of(view, f.end(1, 1));
+  const glm::vec2 along = glm::normalize(start - pixel_of(view, f.centre));
+  AppliedDrag drag(mesh, {0}, Handle{0, 1, 1}, 2.0, view, start);
+  // Across first (decides a turn), then with some motion along the axis too: still only a turn.
+  ASSERT_TRUE(drag.update(mesh, view, start + 20.0f * glm::vec2(-along.y, along.x)));
+  ASSERT_TRUE(drag.update(mesh, view, start + 30.0f * glm::vec2(-along.y, along.x) + 25.0f * along));
+  EXPECT_EQ(drag.drag.kind(), HandleDrag::Kind::rotate);
+  EXPECT_GT((mesh.covariance(0) - test_mesh().covariance(0)).norm(), 1e-3 * mesh.covariance(0).norm());
+  EXPECT_LT((sorted_sigmas(mesh.covariance(0)) - before).cwiseAbs().maxCoeff(), 1e-9 * before.maxCoeff());
+  // Ctrl snaps the angle to 5°.
+  const auto snapped = drag.drag.update(view, start + 30.0f * glm::vec2(-along.y, along.x), DragModifiers{false, true});
+  ASSERT_TRUE(snapped.has_value());
+  const double degrees = Eigen::AngleAxisd((*snapped)[0].rotation).angle() * 180.0 / M_PI;
+  EXPECT_NEAR(degrees, 5.0 * std::round(degrees / 5.0), 1e-9);
+}
+
+TEST(AxisHandles, ShiftScalesAllThreeSigmas) {
+  const Viewport view = test_view();
+  CovarianceMesh mesh = test_mesh();
+  const Vec3 before = sorted_sigmas(mesh.covariance(0));
+  const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
+  const Vec3 end = f.end(2, 1);
+  AppliedDrag drag(mesh, {0}, Handle{0, 2, 1}, 2.0, view, pixel_of(view, end));
+  ASSERT_TRUE(drag.update(mesh, view, pixel_of(view, f.centre + 1.5 * (end - f.centre)), DragModifiers{true, false}));
+  const Vec3 ratio = sorted_sigmas(mesh.covariance(0)).cwiseQuotient(before);
+  EXPECT_NEAR(ratio[0], 1.5, 0.01);
+  EXPECT_NEAR(ratio[1], ratio[0], 1e-9);
+  EXPECT_NEAR(ratio[2], ratio[0], 1e-9);
+}
+
+TEST(AxisHandles, AConstrainedMoveChangesOneCoordinate) {
+  const Viewport view = test_view();
+  for (int axis = 0; axis < 3; ++axis) {
+    CovarianceMesh mesh = test_mesh();
+    const Vec3 before = mesh.mean(0);
+    const glm::vec2 start = pixel_of(view, before);
+    AppliedDrag drag(mesh, {0}, Handle{0, -1, 1}, 2.0, view, start);
+    drag.drag.constrain(MoveConstraint::axis, axis);
+    ASSERT_TRUE(drag.update(mesh, view, start + glm::vec2(35, -20)));
+    const Vec3 moved = mesh.mean(0) - before;
+    EXPECT_GT(std::abs(moved[axis]), 0.01) << axis;
+    for (int k = 0; k < 3; ++k) {
+      if (k == axis) continue;
+      EXPECT_EQ(mesh.mean(0)[k], before[k]) << axis;
+    }
+    // A typed distance replaces the mouse's.
+    drag.drag.set_typed("0.25");
+    ASSERT_TRUE(drag.update(mesh, view, start + glm::vec2(35, -20)));
+    EXPECT_NEAR(mesh.mean(0)[axis] - before[axis], 0.25, 1e-12);
+  }
+  // Along the normal: the motion is parallel to the vertex normal.
+  CovarianceMesh mesh = test_mesh();
+  const glm::vec2 start = pixel_of(view, mesh.mean(0));
+  AppliedDrag drag(mesh, {0}, Handle{0, -1, 1}, 2.0, view, start);
+  drag.drag.constrain(MoveConstraint::normal);
+  drag.drag.set_typed("-0.1");
+  ASSERT_TRUE(drag.update(mesh, view, start));
+  const Vec3 normal = (test_mesh().mean(0) - Vec3::Zero()).normalized();  // the cube's corner normal points outward
+  EXPECT_LT(((mesh.mean(0) - test_mesh().mean(0)) - (-0.1) * normal).norm(), 1e-9);
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/samples.h"
-#include "render/picking.h"
+#include "view/picking.h"
 
 namespace gps {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "core/inference.h"
 #include "core/samples.h"
-#include "ui/covariance_edit.h"
+#include "core/covariance_edit.h"
 #include "ui/inspector_panel.h"
 
 namespace gps {

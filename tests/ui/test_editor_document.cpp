@@ -18,11 +18,9 @@ TEST(EditorDocument, AMalformedFileKeepsTheCurrentMesh) {
   const std::string bad = dir.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n2\n");
   EditorDocument doc;
   doc.open(dir.file("good.ply"));
-  const unsigned generation = doc.generation();
-  doc.mesh.covariances[0] *= 2.0;
-  VertexEdit e = EditHistory::begin(doc.mesh, {1});
-  doc.mesh.covariances[1] *= 3.0;
-  doc.history.commit(std::move(e), doc.mesh);
+  doc.begin_edit();
+  doc.set_covariance(1, 3.0 * doc.mesh().covariance(1));
+  doc.commit_edit();
   try {
     doc.open(bad);
     FAIL() << "a malformed file opened";
@@ -30,9 +28,8 @@ TEST(EditorDocument, AMalformedFileKeepsTheCurrentMesh) {
     EXPECT_NE(std::string(x.what()).find("bad.ply"), std::string::npos);
     EXPECT_EQ(std::string(x.what()).find('\n'), std::string::npos);
   }
-  EXPECT_EQ(doc.generation(), generation);
-  EXPECT_EQ(doc.mesh.n_vertices(), 8u);
-  EXPECT_EQ(doc.mesh.covariance(1), 3.0 * make_sample("cube").covariance(1));
+  EXPECT_EQ(doc.mesh().n_vertices(), 8u);
+  EXPECT_EQ(doc.mesh().covariance(1), 3.0 * make_sample("cube").covariance(1));
   EXPECT_TRUE(doc.dirty());
   EXPECT_EQ(doc.display_name(), "good.ply");
 }
@@ -43,18 +40,18 @@ TEST(EditorDocument, SavingClearsDirtyAndKeepsTheFormat) {
   EditorDocument doc;
   doc.open(dir.file("b.ply"));
   EXPECT_TRUE(doc.can_save_in_place());
-  VertexEdit e = EditHistory::begin(doc.mesh, {2});
-  doc.mesh.covariances[2] *= 0.5;
-  doc.history.commit(std::move(e), doc.mesh);
+  doc.begin_edit();
+  doc.set_covariance(2, 0.5 * doc.mesh().covariance(2));
+  doc.commit_edit();
   EXPECT_TRUE(doc.dirty());
   doc.save(doc.ply_path());
   EXPECT_FALSE(doc.dirty());
   EXPECT_NE(read_text_file(dir.file("b.ply")).find("format binary_little_endian"), std::string::npos);
   EXPECT_EQ(read_mesh(dir.file("b.ply")).covariance(2), 0.5 * make_sample("cube").covariance(2));
   // Undo after saving is an unsaved change again; redo returns to the saved state.
-  doc.history.undo(doc.mesh);
+  doc.undo();
   EXPECT_TRUE(doc.dirty());
-  doc.history.redo(doc.mesh);
+  doc.redo();
   EXPECT_FALSE(doc.dirty());
 }
 
@@ -77,12 +74,52 @@ TEST(EditorDocument, AFailedSaveKeepsTheFileAndTheState) {
   const test::TempDir dir;
   EditorDocument doc;
   doc.open_sample("cube");
-  VertexEdit e = EditHistory::begin(doc.mesh, {0});
-  doc.mesh.covariances[0] *= 2.0;
-  doc.history.commit(std::move(e), doc.mesh);
+  doc.begin_edit();
+  doc.set_covariance(0, 2.0 * doc.mesh().covariance(0));
+  doc.commit_edit();
   EXPECT_THROW(doc.save(dir.file("missing-folder/x.ply")), Error);
   EXPECT_TRUE(doc.dirty());
   EXPECT_FALSE(doc.can_save_in_place());
+}
+
+// One transaction: every set is recorded for the GPU without a separate mark, the start values are
+// readable during the edit, a commit is one undo step (none when nothing changed), cancel restores.
+TEST(EditorDocument, AnEditIsOneTransaction) {
+  EditorDocument doc;
+  doc.open_sample("cube");
+  const CovarianceMesh original = doc.mesh();
+  doc.take_changed();
+  doc.begin_edit();
+  doc.set_mean(3, Vec3(1, 2, 3));
+  doc.set_mean(3, Vec3(4, 5, 6));
+  doc.set_covariance(5, 2.0 * original.covariance(5));
+  EXPECT_EQ(doc.take_changed(), (std::vector<int>{3, 5}));
+  EXPECT_EQ(doc.start_mean(3), original.mean(3));
+  EXPECT_EQ(doc.start_covariance(5), original.covariance(5));
+  EXPECT_EQ(doc.mesh().mean(3), Vec3(4, 5, 6));
+  EXPECT_FALSE(doc.can_undo());  // not in the middle of an edit
+  EXPECT_TRUE(doc.commit_edit());
+  EXPECT_TRUE(doc.dirty());
+  doc.undo();
+  EXPECT_EQ(doc.take_changed(), (std::vector<int>{3, 5}));
+  EXPECT_EQ(doc.mesh().mean(3), original.mean(3));
+  EXPECT_EQ(doc.mesh().covariance(5), original.covariance(5));
+  EXPECT_FALSE(doc.dirty());
+  EXPECT_FALSE(doc.can_undo());
+  // Setting a vertex back to its start value is no step.
+  doc.begin_edit();
+  doc.set_mean(1, Vec3(9, 9, 9));
+  doc.set_mean(1, original.mean(1));
+  EXPECT_FALSE(doc.commit_edit());
+  EXPECT_FALSE(doc.can_undo());
+  // Cancel restores and records the vertices for the GPU.
+  doc.take_changed();
+  doc.begin_edit();
+  doc.set_covariance(2, 3.0 * original.covariance(2));
+  doc.cancel_edit();
+  EXPECT_EQ(doc.mesh().covariance(2), original.covariance(2));
+  EXPECT_EQ(doc.take_changed(), std::vector<int>{2});
+  EXPECT_FALSE(doc.dirty());
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/samples.h"
-#include "render/picking.h"
+#include "view/picking.h"
 
 namespace gps {
 namespace {
@@ -28,7 +28,7 @@ TEST(Selection, ClickShiftClickAllNone) {
   EXPECT_TRUE(s.empty());
   s.select_all(4);
   EXPECT_EQ(s.vertices(), (std::vector<int>{0, 1, 2, 3}));
-  s.restrict_to(2);
+  s.select({1, 0}, false);
   EXPECT_EQ(s.vertices(), (std::vector<int>{0, 1}));
   s.select({3, 1, 3}, true);
   EXPECT_EQ(s.vertices(), (std::vector<int>{0, 1, 3}));

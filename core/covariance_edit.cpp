@@ -1,4 +1,4 @@
-#include "ui/covariance_edit.h"
+#include "core/covariance_edit.h"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -40,7 +40,7 @@ Mat3 rotate_covariance(const Mat3& covariance, const Mat3& rotation) {
 
 double axis_drag_factor(double handle_distance, double drag_along_axis) {
   if (!(handle_distance > 0)) return 1.0;
-  return std::max(1e-3, (handle_distance + drag_along_axis) / handle_distance);
+  return std::clamp((handle_distance + drag_along_axis) / handle_distance, 1e-3, 1e3);
 }
 
 }  // namespace gps

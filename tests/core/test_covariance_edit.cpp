@@ -1,4 +1,4 @@
-#include "ui/covariance_edit.h"
+#include "core/covariance_edit.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "render/camera.h"
+#include "view/camera.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,8 +16,14 @@ glm::mat4 Camera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 
 
 glm::mat4 Camera::projection(float aspect) const {
   const float near_plane = std::max(1e-4f, distance * 0.01f), far_plane = distance * 100.0f;
+  if (orthographic) {
+    const float half = 0.5f * view_height(*this);
+    return glm::ortho(-half * aspect, half * aspect, -half, half, near_plane, far_plane);
+  }
   return glm::perspective(glm::radians(fov_degrees), aspect, near_plane, far_plane);
 }
+
+float view_height(const Camera& camera) { return 2.0f * camera.distance * std::tan(glm::radians(camera.fov_degrees) * 0.5f); }
 
 Camera frame_box(const Vec3& lo, const Vec3& hi, float yaw_degrees, float pitch_degrees) {
   Camera c;

@@ -1,0 +1,64 @@
+#pragma once
+// Driving gpsurf-editor in a real window by an events file (ui/event_script.h), from a test folder
+// that is also its configuration folder (XDG_CONFIG_HOME): recent files and settings stay there.
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "run_command.h"
+#include "temp_dir.h"
+#include "view/projection.h"
+
+namespace gps::test {
+
+inline std::string editor_command(const std::string& args) { return std::string(GPSURF_EDITOR_BINARY) + " " + args; }
+
+/// The window pixel whose centre a world point projects to (pixel_ray's convention).
+inline glm::vec2 pixel_of(const Viewport& v, const Vec3& p) {
+  const auto q = project_to_pixel(v.camera, v.width, v.height, to_glm(p));
+  return q ? glm::vec2(*q) - glm::vec2(0.5f) : glm::vec2(-1.0f);
+}
+
+inline std::string point(glm::vec2 p) { return "[" + std::to_string(p.x) + ", " + std::to_string(p.y) + "]"; }
+
+/// An events file, built one event at a time.
+class Events {
+public:
+  Events& add(const std::string& item) {
+    items_ += (items_.empty() ? "" : ",\n") + item;
+    return *this;
+  }
+  Events& click(glm::vec2 p, const std::string& mods = "") {
+    return add(R"({"type": "click", "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) +
+               (mods.empty() ? "" : R"(, "mods": ")" + mods + "\"") + "}");
+  }
+  Events& drag(glm::vec2 from, glm::vec2 to, int steps = 6, const std::string& mods = "") {
+    return add(R"({"type": "drag", "from": )" + point(from) + R"(, "to": )" + point(to) + R"(, "steps": )" + std::to_string(steps) +
+               (mods.empty() ? "" : R"(, "mods": ")" + mods + "\"") + "}");
+  }
+  Events& press(glm::vec2 p) { return add(R"({"type": "press", "button": "left", "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) + "}"); }
+  Events& release(glm::vec2 p) { return add(R"({"type": "release", "button": "left", "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) + "}"); }
+  Events& move(glm::vec2 p) { return add(R"({"type": "move", "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) + "}"); }
+  Events& key(const std::string& name) { return add(R"({"type": "key", "key": ")" + name + "\"}"); }
+  Events& text(const std::string& typed) { return add(R"({"type": "text", "text": ")" + typed + "\"}"); }
+  Events& scroll(glm::vec2 p, float steps) {
+    return add(R"({"type": "scroll", "steps": )" + std::to_string(steps) + R"(, "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) + "}");
+  }
+  Events& wait(int frames = 2) { return add(R"({"type": "wait", "frames": )" + std::to_string(frames) + "}"); }
+  std::string json() const { return "{\"events\": [\n" + items_ + "\n]}\n"; }
+
+private:
+  std::string items_;
+};
+
+/// Runs the editor on `mesh_file` in a width × height window with the events, then `extra` (e.g.
+/// --save F --screenshot G --stats H); the test folder is its configuration folder.
+inline CommandResult play_editor(const TempDir& dir, const std::string& mesh_file, const Events& events, int width, int height,
+                                 const std::string& extra) {
+  const std::string file = dir.write("events.json", events.json());
+  return run_command("XDG_CONFIG_HOME=" + dir.path().string() + " " +
+                     editor_command(mesh_file + " --size " + std::to_string(width) + "x" + std::to_string(height) + " --play " + file +
+                                    " " + extra));
+}
+
+}  // namespace gps::test

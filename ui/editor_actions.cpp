@@ -1,0 +1,165 @@
+// The editor's actions on the document: open, save, undo and redo, the unsaved-changes prompt.
+#include <imgui.h>
+
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/samples.h"
+#include "render/matcap.h"
+#include "ui/editor_app.h"
+
+namespace gps {
+
+namespace {
+constexpr size_t kMaxFacesWithLines = 5000;  // larger meshes open with the base-mesh lines off
+const std::vector<std::string> kMeshExtensions = {".ply", ".obj", ".off", ".stl"};
+}  // namespace
+
+void EditorApp::request(Action action) {
+  if (document_.dirty() && action.kind != Action::Kind::none) {
+    pending_ = std::move(action);
+    prompt_unsaved_ = true;
+    return;
+  }
+  perform(action);
+}
+
+void EditorApp::perform(const Action& action) {
+  switch (action.kind) {
+    case Action::Kind::quit: quit_ = true; break;
+    case Action::Kind::open_file:
+      if (!action.argument.empty()) {
+        open_file(action.argument);
+      } else {  // ask for the file, beside the current one
+        browser_purpose_ = BrowserPurpose::open_mesh;
+        const std::filesystem::path source = document_.source_path();
+        browser_.open(FileBrowser::Mode::open, "Open mesh",
+                      source.empty() ? std::filesystem::current_path().string() : source.parent_path().string(), kMeshExtensions);
+      }
+      break;
+    case Action::Kind::open_sample: open_sample(action.argument); break;
+    case Action::Kind::none: break;
+  }
+  pending_ = {};
+}
+
+void EditorApp::open_file(const std::string& path) {
+  try {
+    document_.open(path);
+  } catch (const Error& e) {  // the current mesh stays
+    set_status(e.what(), true);
+    return;
+  }
+  if (!script_) recent_.add(document_.source_path());
+  mesh_replaced();
+  set_status("opened " + document_.source_path(), false);
+}
+
+void EditorApp::open_sample(const std::string& name) {
+  document_.open_sample(name);
+  mesh_replaced();
+  set_status("opened the built-in sample '" + name + "': " + sample_description(name), false);
+}
+
+void EditorApp::mesh_replaced() {
+  mode_ = Mode::none;
+  drag_.reset();
+  reach_.clear();
+  selection_.clear();
+  renderer_->set_mesh(document_.mesh(), view_.depth);
+  camera_ = frame_mesh(document_.mesh());
+  // Base-mesh lines are drawn over the surface: on a dense mesh they would hide it.
+  view_.draw.mesh_lines = document_.mesh().n_faces() <= kMaxFacesWithLines;
+  reach_options_.radius = 0.1 * bounding_box_diagonal(document_.mesh());
+  reach_options_.mirror_tolerance = 1e-6 * bounding_box_diagonal(document_.mesh());
+}
+
+bool EditorApp::save() {
+  if (!document_.can_save_in_place()) {
+    save_to("");
+    return false;
+  }
+  save_to(document_.ply_path());
+  return !document_.dirty();
+}
+
+void EditorApp::save_to(const std::string& path) {
+  if (path.empty()) {  // Save As: ask for a name, beside the current file
+    browser_purpose_ = BrowserPurpose::save_mesh;
+    const std::filesystem::path source = document_.source_path();
+    const std::string folder = source.empty() ? std::filesystem::current_path().string() : source.parent_path().string();
+    const std::string name = source.empty() ? "untitled.ply" : source.stem().string() + ".ply";
+    browser_.open(FileBrowser::Mode::save, "Save covariance mesh", folder, {".ply", ".obj"}, name);
+    return;
+  }
+  try {
+    document_.save(path);
+    if (!script_) recent_.add(document_.source_path());
+    set_status("saved " + path, false);
+  } catch (const Error& e) {
+    if (!options_.save.empty() && path == options_.save) throw;  // a scripted save must not fail quietly
+    set_status(e.what(), true);
+  }
+}
+
+void EditorApp::undo_redo(bool undo) {
+  if (mode_ == Mode::handle) return;  // not in the middle of a drag
+  if (undo) document_.undo();
+  else document_.redo();
+}
+
+void EditorApp::draw_unsaved_prompt() {
+  if (prompt_unsaved_) {
+    ImGui::OpenPopup("Unsaved changes");
+    prompt_unsaved_ = false;
+  }
+  if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::Text("%s has unsaved changes.", document_.display_name().c_str());
+  ImGui::Text("Save them before %s?", pending_.kind == Action::Kind::quit ? "quitting" : "opening another mesh");
+  if (ImGui::Button("Save")) {
+    ImGui::CloseCurrentPopup();
+    after_save_perform_ = true;  // a Save As dialog performs it once the file is written
+    if (save()) {
+      after_save_perform_ = false;
+      perform(pending_);
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Discard")) {
+    ImGui::CloseCurrentPopup();
+    perform(pending_);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    ImGui::CloseCurrentPopup();
+    pending_ = {};
+  }
+  ImGui::EndPopup();
+}
+
+void EditorApp::handle_browser_result() {
+  const bool was_open = browser_.is_open();
+  const std::optional<std::string> chosen = browser_.draw();
+  if (!chosen) {
+    if (was_open && !browser_.is_open()) after_save_perform_ = false, pending_ = {};  // cancelled
+    return;
+  }
+  switch (browser_purpose_) {
+    case BrowserPurpose::open_mesh: open_file(*chosen); break;
+    case BrowserPurpose::save_mesh:
+      save_to(*chosen);
+      if (after_save_perform_ && !document_.dirty()) perform(pending_);
+      break;
+    case BrowserPurpose::load_matcap:
+      try {
+        renderer_->set_matcap(load_matcap(*chosen));
+        view_.matcap = std::filesystem::path(*chosen).filename().string();
+      } catch (const Error& e) {
+        set_status(e.what(), true);
+      }
+      break;
+  }
+  after_save_perform_ = false;
+}
+
+}  // namespace gps

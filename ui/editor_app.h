@@ -1,0 +1,134 @@
+#pragma once
+// The editor's parts and their wiring (private to ui/): one class, its methods in one file per
+// concept — editor.cpp (frames, drawing, output), editor_pointer.cpp (mouse and handle drags),
+// editor_actions.cpp (open, save, undo, the unsaved-changes prompt) and editor_commands.cpp
+// (the command table: keys, menus, help).
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/gpu_pass_timer.h"
+#include "render/render_target.h"
+#include "render/surface_renderer.h"
+#include "render/window_context.h"
+#include "ui/axis_handles.h"
+#include "ui/command_table.h"
+#include "ui/edit_reach.h"
+#include "ui/editor.h"
+#include "ui/editor_document.h"
+#include "ui/event_script.h"
+#include "ui/file_browser.h"
+#include "ui/glfw_input.h"
+#include "ui/input_events.h"
+#include "ui/inspector_panel.h"
+#include "ui/recent_files.h"
+#include "ui/selection.h"
+#include "ui/statistics_overlay.h"
+#include "ui/view_options.h"
+
+namespace gps {
+
+// What a confirmation about unsaved changes holds back.
+struct Action {
+  enum class Kind { none, quit, open_file, open_sample } kind = Kind::none;
+  std::string argument;
+};
+
+class EditorApp {
+public:
+  explicit EditorApp(const EditorOptions& options);
+  ~EditorApp();
+  EditorApp(const EditorApp&) = delete;
+  EditorApp& operator=(const EditorApp&) = delete;
+  int run();
+
+private:
+  using Clock = std::chrono::steady_clock;
+
+  // Pointer and handle drags (editor_pointer.cpp).
+  void handle_event(const InputEvent& e);
+  void press(const InputEvent& e);
+  void release(const InputEvent& e);
+  void follow_cursor();
+  bool drag_key(int key);
+  void drag_text(unsigned codepoint);
+  void update_drag();
+  void rebuild_reach();
+  void end_drag(bool keep);
+  int pick(glm::vec2 pixel) const;
+  std::vector<int> handle_vertices() const;
+  Viewport viewport() const;
+  void draw_handles_and_box();
+  // Commands (editor_commands.cpp).
+  void build_commands();
+  void frame_vertices(const std::vector<int>& vertices);  // none: the whole mesh
+  glm::vec2 viewport_size() const;
+  void axis_view(float yaw, float pitch);
+  // Actions (editor_actions.cpp).
+  void request(Action action);
+  void perform(const Action& action);
+  void open_file(const std::string& path);
+  void open_sample(const std::string& name);
+  bool save();  // false: a file name is being asked for
+  void save_to(const std::string& path);
+  void undo_redo(bool undo);
+  void mesh_replaced();
+  void draw_unsaved_prompt();
+  void handle_browser_result();
+  // Frames and output (editor.cpp).
+  void frame();
+  void draw_ui();
+  void render_and_present();
+  bool script_finished();
+  void write_screenshot(const std::string& path);
+  void write_statistics(const std::string& path);
+  void set_status(const std::string& message, bool error);
+  void update_title();
+  void note_free_region();
+
+  EditorOptions options_;
+  std::string config_folder_, layout_file_;  // where settings and the panel layout are kept
+  WindowContext window_;
+  GlfwInputForwarder input_forwarder_;
+  std::unique_ptr<SurfaceRenderer> renderer_;
+  std::unique_ptr<GpuPassTimer> timer_;
+  std::unique_ptr<RenderTarget> target_;
+  EditorDocument document_;
+  Selection selection_;
+  Camera camera_;
+  ViewOptions view_;
+  ReachOptions reach_options_;
+  InspectorPanel inspector_;
+  FileBrowser browser_;
+  enum class BrowserPurpose { open_mesh, save_mesh, load_matcap } browser_purpose_ = BrowserPurpose::open_mesh;
+  RecentFiles recent_;
+  FrameClock clock_;
+  CommandTable commands_;
+
+  InputQueue queue_;
+  InputState input_;
+  std::optional<EventScript> script_;
+  std::optional<EventRecorder> recorder_;
+  int finishing_frames_ = 0;
+
+  enum class Mode { none, click, box, orbit, pan, handle } mode_ = Mode::none;
+  int mode_button_ = 0;
+  glm::vec2 press_pixel_{0.0f}, last_cursor_{0.0f};
+  std::optional<HandleDrag> drag_;
+  std::vector<ReachedVertex> reach_;  // the vertices the drag changes, and how strongly
+  std::vector<GaussianChange> drag_changes_;
+  glm::vec2 free_min_{0.0f}, free_max_{1.0f};  // the part of the window the panels leave free
+
+  Clock::time_point frame_input_time_{}, last_frame_time_ = Clock::now();
+  Action pending_;
+  bool prompt_unsaved_ = false, after_save_perform_ = false, quit_ = false;
+  std::string screenshot_request_;
+  std::string status_;
+  bool status_error_ = false;
+  std::string last_title_;
+  int swap_interval_ = -1;
+};
+
+}  // namespace gps

@@ -1,0 +1,214 @@
+// The editor's pointer: clicks and boxes select, drags orbit and pan, the wheel zooms, and a drag
+// on the gizmo edits the selection (with its proportional and mirrored reach) as one undo step.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <cmath>
+
+#include "render/picking.h"
+#include "ui/camera_control.h"
+#include "ui/editor_app.h"
+#include "ui/handle_overlay.h"
+#include "view/picking.h"
+
+namespace gps {
+
+namespace {
+constexpr float kPickRadius = 8.0f;    // window pixels
+constexpr float kBoxThreshold = 4.0f;  // pixels a left press moves before it becomes a box
+}  // namespace
+
+Viewport EditorApp::viewport() const {
+  Viewport v;
+  v.camera = camera_;
+  glfwGetWindowSize(window_.window(), &v.width, &v.height);
+  v.width = std::max(1, v.width);
+  v.height = std::max(1, v.height);
+  return v;
+}
+
+// One gizmo, on the active vertex: its change applies to every selected vertex.
+std::vector<int> EditorApp::handle_vertices() const {
+  if (selection_.empty()) return {};
+  return {selection_.active()};
+}
+
+int EditorApp::pick(glm::vec2 pixel) const {
+  const Viewport v = viewport();
+  const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius);
+  if (vertex >= 0 || !view_.draw.ellipsoids) return vertex;
+  return pick_ellipsoid(v.camera, v.width, v.height, pixel, document_.mesh(), view_.draw.sigma_scale);
+}
+
+void EditorApp::handle_event(const InputEvent& e) {
+  const ImGuiIO& io = ImGui::GetIO();
+  switch (e.type) {
+    case InputEvent::Type::press:
+      if (!io.WantCaptureMouse && !prompt_unsaved_) press(e);
+      break;
+    case InputEvent::Type::release: release(e); break;
+    case InputEvent::Type::scroll:
+      if (mode_ == Mode::handle && reach_options_.proportional) {  // the wheel sets the radius while dragging
+        reach_options_.radius *= std::pow(1.15, double(e.steps));
+        rebuild_reach();
+        update_drag();
+      } else if (!io.WantCaptureMouse) {
+        const Viewport v = viewport();
+        std::optional<glm::vec3> anchor;
+        if (target_) anchor = surface_point(*target_, e.position * glm::vec2(float(target_->width()) / float(v.width),
+                                                                              float(target_->height()) / float(v.height)));
+        zoom_to_cursor(camera_, e.steps, v.width, v.height, e.position, anchor);
+      }
+      break;
+    case InputEvent::Type::key_press:
+      if (mode_ == Mode::handle && drag_key(e.key)) break;
+      if (!io.WantCaptureKeyboard && !browser_.is_open()) commands_.handle_key(e.key, input_.ctrl(), input_.shift(), input_.alt());
+      break;
+    case InputEvent::Type::text:
+      if (mode_ == Mode::handle) drag_text(e.codepoint);
+      break;
+    case InputEvent::Type::drop:
+      if (!e.paths.empty()) request({Action::Kind::open_file, e.paths.front()});
+      break;
+    case InputEvent::Type::move:
+    case InputEvent::Type::key_release: break;
+  }
+}
+
+void EditorApp::press(const InputEvent& e) {
+  if (mode_ != Mode::none) return;
+  mode_button_ = e.button;
+  press_pixel_ = last_cursor_ = e.position;
+  if (e.button == 0 && !input_.alt()) {
+    const Viewport v = viewport();
+    if (const auto handle = hit_handle(v, e.position, document_.mesh(), handle_vertices(), view_.draw.sigma_scale, kPickRadius)) {
+      document_.begin_edit();
+      drag_.emplace(document_.mesh(), selection_.vertices(), *handle, view_.draw.sigma_scale, v, e.position, view_.common_frame);
+      rebuild_reach();
+      mode_ = Mode::handle;
+    } else {
+      mode_ = Mode::click;
+    }
+    return;
+  }
+  mode_ = input_.shift() ? Mode::pan : Mode::orbit;
+}
+
+void EditorApp::release(const InputEvent& e) {
+  if (mode_ == Mode::none || e.button != mode_button_) return;
+  const Viewport v = viewport();
+  if (mode_ == Mode::click) {
+    selection_.click(pick(e.position), input_.shift());
+  } else if (mode_ == Mode::box) {
+    selection_.select(vertices_in_box(v.camera, v.width, v.height, press_pixel_, e.position, document_.mesh()), input_.shift());
+  } else if (mode_ == Mode::handle) {
+    end_drag(true);
+  }
+  mode_ = Mode::none;
+}
+
+void EditorApp::end_drag(bool keep) {
+  if (keep) document_.commit_edit();  // one undo step per drag, soft and mirrored vertices included
+  else document_.cancel_edit();
+  drag_.reset();
+  mode_ = Mode::none;
+}
+
+// Keys during a drag: X/Y/Z (Shift: the plane normal to it) and N constrain a move, digits type
+// its distance, Enter finishes, Escape cancels. Returns whether the key was the drag's.
+bool EditorApp::drag_key(int key) {
+  if (key == GLFW_KEY_ESCAPE) {
+    end_drag(false);
+    set_status("drag cancelled", false);
+    return true;
+  }
+  if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) {
+    end_drag(true);
+    return true;
+  }
+  if (!drag_->handle().is_centre()) return false;
+  if (key == GLFW_KEY_X || key == GLFW_KEY_Y || key == GLFW_KEY_Z) {
+    drag_->constrain(input_.shift() ? MoveConstraint::plane : MoveConstraint::axis, key - GLFW_KEY_X);
+  } else if (key == GLFW_KEY_N) {
+    drag_->constrain(MoveConstraint::normal);
+  } else if (key == GLFW_KEY_BACKSPACE) {
+    std::string typed = drag_->typed();
+    if (!typed.empty()) typed.pop_back();
+    drag_->set_typed(typed);
+  } else {
+    return false;
+  }
+  update_drag();
+  return true;
+}
+
+void EditorApp::drag_text(unsigned codepoint) {
+  if (!drag_->handle().is_centre()) return;
+  const char c = char(codepoint);
+  if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == 'e')) return;
+  drag_->set_typed(drag_->typed() + c);
+  update_drag();
+}
+
+// The proportional and mirrored reach of the drag, from the positions at its start.
+void EditorApp::rebuild_reach() {
+  std::vector<Vec3> means(document_.mesh().n_vertices());
+  for (size_t v = 0; v < means.size(); ++v) means[v] = document_.start_mean(int(v));
+  document_.revert_edit();  // vertices that leave the reach go back to their start
+  reach_ = edit_reach(means, drag_->vertices(), reach_options_);
+}
+
+void EditorApp::update_drag() {
+  const DragModifiers modifiers{input_.shift(), input_.ctrl()};
+  const auto changes = drag_->update(viewport(), input_.cursor, modifiers);
+  if (!changes) return;
+  drag_changes_ = *changes;
+  apply_reach(document_, reach_, drag_changes_, reach_options_.mirror_axis);
+  status_ = drag_->describe() + (reach_.size() > drag_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "");
+  status_error_ = false;
+}
+
+void EditorApp::follow_cursor() {
+  const glm::vec2 cursor = input_.cursor, delta = cursor - last_cursor_;
+  switch (mode_) {
+    case Mode::orbit: orbit(camera_, delta); break;
+    case Mode::pan: pan(camera_, delta, viewport().height); break;
+    case Mode::click:
+      if (glm::length(cursor - press_pixel_) > kBoxThreshold) mode_ = Mode::box;
+      break;
+    case Mode::handle:
+      if (delta != glm::vec2(0.0f)) update_drag();
+      break;
+    case Mode::box:
+    case Mode::none: break;
+  }
+  last_cursor_ = cursor;
+}
+
+void EditorApp::draw_handles_and_box() {
+  const Viewport v = viewport();
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the 3D view, under the panels
+  if (mode_ == Mode::handle) {
+    draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), drag_->frame(v), drag_->handle());
+    if (reach_options_.proportional) {  // the radius, as a circle around where the grabbed vertex was
+      const Vec3 start = drag_->start_centre();
+      const double pixels = reach_options_.radius / world_per_pixel(v.camera, v.height, start);
+      if (const auto centre = visible_pixel(v.camera, v.width, v.height, start))
+        draw->AddCircle(ImVec2(centre->x, centre->y), float(std::min(pixels, 1e4)), IM_COL32(255, 255, 255, 160), 64, 1.5f);
+    }
+  } else {
+    std::optional<Handle> hovered;
+    if (mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
+      hovered = hit_handle(v, input_.cursor, document_.mesh(), handle_vertices(), view_.draw.sigma_scale, kPickRadius);
+    std::optional<HandleFrame> gizmo;
+    if (!selection_.empty()) gizmo = handle_frame(document_.mesh(), selection_.active(), view_.draw.sigma_scale, v);
+    draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, hovered);
+  }
+  if (mode_ == Mode::box) {
+    const ImVec2 a(press_pixel_.x, press_pixel_.y), b(input_.cursor.x, input_.cursor.y);
+    draw->AddRectFilled(a, b, IM_COL32(90, 150, 255, 40));
+    draw->AddRect(a, b, IM_COL32(90, 150, 255, 220));
+  }
+}
+
+}  // namespace gps

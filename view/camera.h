@@ -1,0 +1,33 @@
+#pragma once
+// An orbit camera: yaw and pitch around a target at a distance, perspective projection.
+#include <glm/glm.hpp>
+
+#include "core/covariance_mesh.h"
+#include "core/linalg.h"
+
+namespace gps {
+
+struct Camera {
+  glm::vec3 target{0.0f};
+  float yaw_degrees = 30.0f;    // around +y
+  float pitch_degrees = 20.0f;  // above the xz-plane
+  float distance = 5.0f;
+  float fov_degrees = 35.0f;
+  bool orthographic = false;  // parallel projection showing the height the perspective shows at the target
+
+  glm::vec3 eye() const;
+  glm::mat4 view() const;
+  glm::mat4 projection(float aspect) const;
+  glm::mat4 view_projection(float aspect) const { return projection(aspect) * view(); }
+};
+
+/// The height of the view at the target's depth (world units).
+float view_height(const Camera& camera);
+
+/// A camera at the given angles that frames the box [lo, hi] (the whole box in view).
+Camera frame_box(const Vec3& lo, const Vec3& hi, float yaw_degrees = 30.0f, float pitch_degrees = 20.0f);
+
+/// frame_box() of the bounding box of a mesh's means.
+Camera frame_mesh(const CovarianceMesh& mesh, float yaw_degrees = 30.0f, float pitch_degrees = 20.0f);
+
+}  // namespace gps

@@ -1,0 +1,19 @@
+#pragma once
+// Picking for the editor without GL: the base vertex near the mouse, the ellipsoid under it.
+#include <glm/glm.hpp>
+
+#include "core/covariance_mesh.h"
+#include "view/camera.h"
+#include "view/projection.h"
+
+namespace gps {
+
+/// The base vertex whose mean projects nearest to `pixel`, within `radius` pixels; of vertices
+/// equally near (within half a pixel) the front-most. -1 when none is that near.
+int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, float radius);
+
+/// The vertex whose k-sigma ellipsoid {x : (x−μ)ᵀΣ⁻¹(x−μ) = k²} the pixel's ray meets first
+/// (nearest entry point in front of the eye); −1 when the ray misses them all.
+int pick_ellipsoid(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, double k_sigma);
+
+}  // namespace gps
