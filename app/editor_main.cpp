@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   gps::EditorOptions o;
   std::string size = "1280x800";
   bool no_vsync = false;
+  std::string scheme, loop_beta = "loop";
   CLI::App app{"gpsurf-editor: edit covariance meshes on their GPS limit surface (F1 in the window lists the bindings)"};
   app.add_option("file", o.file, "mesh to open (.ply, .obj, .off, .stl); default: a built-in sample")->check(CLI::ExistingFile);
   app.add_option("--play", o.play, "replay recorded input (EVENTS.json), then exit")->check(CLI::ExistingFile);
@@ -20,6 +21,9 @@ int main(int argc, char** argv) {
   app.add_option("--stats", o.stats, "on exit, write frame time and edit-to-frame time (medians) to this JSON file");
   app.add_option("--size", size, "window size WxH in pixels");
   app.add_flag("--no-vsync", no_vsync, "draw as fast as possible");
+  app.add_option("--scheme", scheme, "auto (Loop for a mesh of triangles only), loop or catmull-clark")
+      ->check(CLI::IsMember({"auto", "loop", "catmull-clark"}));
+  app.add_option("--loop-beta", loop_beta, "Loop vertex weight: Loop's original or Warren's 3/(8n)")->check(CLI::IsMember({"loop", "warren"}));
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + std::string(e.what()) + "\n"; });
   try {
     app.parse(argc, argv);
@@ -27,6 +31,8 @@ int main(int argc, char** argv) {
     o.width = window.width;
     o.height = window.height;
     o.vsync = !no_vsync;
+    if (!scheme.empty()) o.scheme = scheme == "loop" ? 1 : scheme == "catmull-clark" ? 2 : 0;
+    o.warren = loop_beta == "warren";
     return gps::run_editor(o);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);

@@ -9,7 +9,7 @@
 #include "core/covariance_mesh.h"
 #include "core/planned_surface.h"
 #include "core/triangle_mesh.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/ellipsoid_overlay.h"
 #include "render/gpu_layout.h"
 #include "render/gpu_pass_timer.h"

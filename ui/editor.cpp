@@ -58,6 +58,8 @@ EditorApp::EditorApp(const EditorOptions& options)
   renderer_->set_collect_statistics(true);
   if (const std::string error = load_settings(config_folder_, view_, reach_options_); !error.empty()) set_status(error, true);
   if (!options.vsync) view_.vsync = false;
+  if (options.scheme >= 0) view_.scheme = options.scheme;
+  if (options.warren) view_.warren = true;
   if (view_.matcap != "clay") {
     try {
       renderer_->set_matcap(load_matcap(view_.matcap));
@@ -199,7 +201,7 @@ void EditorApp::draw_ui() {
   if (view_.show_inspector) inspector_.draw(document_, selection_, reach_options_, &view_.show_inspector);
   if (view_.show_view) {
     const ViewPanelChanges c = draw_view_panel(view_, &view_.show_view);
-    if (c.depth) renderer_->set_mesh(document_.mesh(), view_.depth);
+    if (c.depth) renderer_->set_mesh(document_.mesh(), view_.plans());
     if (c.matcap) renderer_->set_matcap(load_matcap(view_.matcap));
     if (c.load_matcap) {
       browser_purpose_ = BrowserPurpose::load_matcap;

@@ -66,7 +66,8 @@ void EditorApp::mesh_replaced() {
   drag_.reset();
   reach_.clear();
   selection_.clear();
-  renderer_->set_mesh(document_.mesh(), view_.depth);
+  view_.triangle_mesh = scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
+  renderer_->set_mesh(document_.mesh(), view_.plans());
   camera_ = frame_mesh(document_.mesh());
   // Base-mesh lines are drawn over the surface: on a dense mesh they would hide it.
   view_.draw.mesh_lines = document_.mesh().n_faces() <= kMaxFacesWithLines;

@@ -21,6 +21,8 @@ void visit_settings(ViewOptions& view, ReachOptions& reach, Visit visit) {
   visit("adaptive_pixels", view.adaptive_pixels);
   visit("level", view.draw.level);
   visit("plan_depth", view.depth);
+  visit("scheme", view.scheme);
+  visit("loop_warren", view.warren);
   visit("matcap", view.matcap);
   visit("wireframe", view.draw.wireframe);
   visit("ellipsoids", view.draw.ellipsoids);

@@ -19,7 +19,20 @@ struct ViewOptions {
   }();
   bool adaptive = true;       // draw.pixels is used (else draw.level)
   float adaptive_pixels = 6.0f;
-  int depth = 3;              // maximum plan depth (rebuilds the plans when changed)
+  int depth = 3;              // maximum Catmull-Clark plan depth (rebuilds the plans when changed)
+  int scheme = 0;             // 0 automatic (Loop for triangle meshes), 1 Loop, 2 Catmull-Clark
+  bool warren = false;        // Loop with Warren's β (as Preiner's demo)
+  bool triangle_mesh = false; // the open mesh has only triangles: the panel offers the scheme (not kept)
+
+  /// The plans these options ask for.
+  PlanOptions plans() const {
+    PlanOptions p;
+    p.depth = depth;
+    if (scheme == 1) p.scheme = Scheme::loop;
+    if (scheme == 2) p.scheme = Scheme::catmull_clark;
+    p.loop_beta = warren ? LoopBeta::warren : LoopBeta::loop;
+    return p;
+  }
   std::string matcap = "clay";
   bool vsync = true;
   bool common_frame = false;  // a multi-selection drag: every Gaussian in the grabbed one's frame (else its own)

@@ -16,8 +16,15 @@ void tessellation_section(ViewOptions& o, ViewPanelChanges& changes) {
   if (o.adaptive) ImGui::SliderFloat("px/edge", &o.adaptive_pixels, 1.0f, 32.0f, "%.1f");
   else ImGui::SliderFloat("level", &o.draw.level, 1.0f, 64.0f, "%.0f");
   o.draw.pixels = o.adaptive ? o.adaptive_pixels : 0.0f;
-  if (ImGui::SliderInt("plan depth", &o.depth, 1, 6)) changes.depth = true;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("maximum quadtree depth at extraordinary vertices (rebuilds the plans)");
+  if (o.triangle_mesh) {
+    if (ImGui::Combo("scheme", &o.scheme, "automatic (Loop)\0Loop\0Catmull-Clark\0")) changes.depth = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Loop patches are exact at every depth; Catmull-Clark splits each triangle into three quads");
+    if (o.scheme != 2 && ImGui::Checkbox("Warren's beta", &o.warren)) changes.depth = true;
+  }
+  if (!o.triangle_mesh || o.scheme == 2) {
+    if (ImGui::SliderInt("plan depth", &o.depth, 1, 6)) changes.depth = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("maximum quadtree depth at extraordinary vertices (rebuilds the plans)");
+  }
 }
 
 void shading_section(ViewOptions& o, ViewPanelChanges& changes) {
