@@ -446,7 +446,11 @@ void Editor::draw_ui() {
   if (view_.show_inspector) mark_changed(inspector_.draw(document_, selection_, &view_.show_inspector));
   if (view_.show_view) {
     const ViewPanelChanges c = draw_view_panel(view_, &view_.show_view);
-    if (c.depth) renderer_->set_mesh(document_.mesh, view_.depth);
+    if (c.depth) try {
+        renderer_->set_mesh(document_.mesh, view_.depth);
+      } catch (const Error& e) {  // too deep for the GPU's buffers: the previous plans stay
+        set_status(e.what(), true);
+      }
     if (c.matcap) renderer_->set_matcap(load_matcap(view_.matcap));
     if (c.load_matcap) {
       browser_purpose_ = BrowserPurpose::load_matcap;
@@ -608,14 +612,16 @@ void Editor::perform(const Action& action) {
 }
 
 void Editor::open_file(const std::string& path) {
+  const EditorDocument previous = document_;
   try {
     document_.open(path);
+    mesh_replaced();  // the renderer may refuse the mesh (valence, GPU limits): nothing changed then
   } catch (const Error& e) {  // the current mesh stays
+    document_ = previous;
     set_status(e.what(), true);
     return;
   }
   recent_.add(document_.source_path());
-  mesh_replaced();
   set_status("opened " + document_.source_path(), false);
 }
 
@@ -626,12 +632,12 @@ void Editor::open_sample(const std::string& name) {
 }
 
 void Editor::mesh_replaced() {
+  renderer_->set_mesh(document_.mesh, view_.depth);  // first: it throws before changing anything
   mode_ = Mode::none;
   drag_.reset();
   drag_edit_.reset();
   changed_.clear();
   selection_.clear();
-  renderer_->set_mesh(document_.mesh, view_.depth);
   camera_ = frame_mesh(document_.mesh);
   // Base-mesh lines are drawn over the surface: on a dense mesh they would hide it.
   view_.draw.mesh_lines = document_.mesh.n_faces() <= kMaxFacesWithLines;
