@@ -498,7 +498,7 @@ TEST_F(GpuTest, ComputePassesSplitIntoSeveralDispatches) {
   const CovarianceMesh mesh = subdivide(make_sample("cone"), loop).mesh;
   SurfaceRenderer renderer;
   renderer.lower_device_limits(64, 0);
-  renderer.set_mesh(mesh, 5);
+  renderer.set_mesh(mesh, PlanOptions{Scheme::catmull_clark, 5, LoopBeta::loop});  // split triangles: many rows
   const int n_rows = renderer.tables().stencils.n_rows();
   ASSERT_GT(n_rows, 20 * 64 * 64);
   const auto gpu = renderer.read_points();
