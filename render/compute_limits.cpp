@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "core/error.h"
@@ -25,7 +26,11 @@ void check_storage_fits(const char* what, size_t bytes, int n_vertices, int n_fa
   GLint64 max_block = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
   if (limit > 0) max_block = std::min<GLint64>(max_block, limit);
-  const auto size = [](size_t n) { return n >= (1u << 20) ? std::to_string(n >> 20) + " MiB" : std::to_string(n >> 10) + " KiB"; };
+  const auto size = [](size_t n) {
+    char text[32];
+    std::snprintf(text, sizeof text, n >= (1u << 20) ? "%.1f MiB" : "%.1f KiB", double(n) / (n >= (1u << 20) ? 1 << 20 : 1 << 10));
+    return std::string(text);
+  };
   if (max_block > 0 && bytes > size_t(max_block))
     throw Error("the mesh (" + std::to_string(n_vertices) + " vertices, " + std::to_string(n_faces) + " faces) needs " +
                 size(bytes) + " of " + what + ", more than the GPU's largest storage buffer (" + size(size_t(max_block)) +

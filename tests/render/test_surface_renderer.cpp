@@ -537,7 +537,7 @@ TEST_F(GpuTest, AMeshBeyondTheStorageLimitIsRefusedWithItsFigures) {
     const std::string what = e.what();
     EXPECT_NE(what.find("the mesh (" + std::to_string(sphere.n_vertices()) + " vertices, " + std::to_string(sphere.n_faces()) +
                         " faces) needs "), std::string::npos) << what;
-    EXPECT_NE(what.find(" KiB of plan points, more than the GPU's largest storage buffer (64 KiB)"), std::string::npos) << what;
+    EXPECT_NE(what.find(" KiB of plan points, more than the GPU's largest storage buffer (64.0 KiB)"), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos);
   }
   RenderTarget target(32, 32);  // the previous mesh is still drawn
