@@ -6,8 +6,10 @@
 
 namespace gps {
 
-/// Writes through `write` into a temporary file beside `path`, then renames it over `path`.
-/// On any failure the temporary file is removed, `path` is untouched, and gps::Error names it.
+/// Writes through `write` into a temporary file beside `path` (".NAME.tmpPID"), flushes it to disk,
+/// renames it over `path` and flushes the folder. A symbolic link is written through (the link stays).
+/// On any failure, or SIGINT/SIGTERM/SIGHUP/SIGQUIT meanwhile, the temporary file is removed and `path`
+/// is untouched; gps::Error names it. Temporary files of this naming left by dead processes are removed.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary = false);
 

@@ -1,29 +1,17 @@
 #include "core/covariance_mesh.h"
 
 #include <Eigen/Cholesky>
-#include <iostream>
+#include <Eigen/Eigenvalues>
+#include <limits>
 #include <algorithm>
 #include <sstream>
 
 #include "core/dual_map.h"
 #include "core/error.h"
+#include "core/mesh_connectivity.h"
 
 namespace gps {
 
-namespace {
-// Sends std::cerr to nowhere while alive.
-class CerrSilencer {
-public:
-  CerrSilencer() : old_(std::cerr.rdbuf(sink_.rdbuf())) {}
-  ~CerrSilencer() { std::cerr.rdbuf(old_); }
-  CerrSilencer(const CerrSilencer&) = delete;
-  CerrSilencer& operator=(const CerrSilencer&) = delete;
-
-private:
-  std::ostringstream sink_;
-  std::streambuf* old_;
-};
-}  // namespace
 
 Vec3 CovarianceMesh::mean(size_t i) const { return to_vec3(mesh.point(PolyMesh::VertexHandle(int(i)))); }
 
@@ -47,44 +35,70 @@ CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::v
                 std::to_string(covariances.size()) + " covariances");
   CovarianceMesh m;
   m.covariances = covariances;
-  std::vector<PolyMesh::VertexHandle> handles;
-  handles.reserve(means.size());
   m.mesh.reserve(means.size(), 2 * faces.size() + means.size(), faces.size());
-  for (const Vec3& p : means) handles.push_back(m.mesh.add_vertex(to_point(p)));
-  std::vector<PolyMesh::VertexHandle> fv;
-  // OpenMesh prints to std::cerr and returns an invalid handle on complex (non-manifold) input.
-  const CerrSilencer silence_openmesh;
+  for (const Vec3& p : means) m.mesh.add_vertex(to_point(p));
+  PolygonTopology t;
+  t.n_vertices = int(means.size());
+  t.verts.reserve(faces.size() * 4);
+  std::vector<size_t> last_face(means.size(), size_t(-1));  // the last face that used each vertex: repeats in O(1)
   for (size_t f = 0; f < faces.size(); ++f) {
     const auto& face = faces[f];
     const auto where = [&] { return source + ": face " + std::to_string(f); };
     if (face.size() < 3) throw Error(where() + " has " + std::to_string(face.size()) + " vertices (at least 3 needed)");
-    fv.clear();
     for (int i : face) {
       if (i < 0 || size_t(i) >= means.size())
         throw Error(where() + " refers to vertex " + std::to_string(i) + ", but there are only " +
                     std::to_string(means.size()) + " vertices");
-      if (std::count(face.begin(), face.end(), i) > 1) throw Error(where() + " uses vertex " + std::to_string(i) + " twice");
-      fv.push_back(handles[size_t(i)]);
+      if (last_face[size_t(i)] == f) throw Error(where() + " uses vertex " + std::to_string(i) + " twice");
+      last_face[size_t(i)] = f;
+      t.verts.push_back(i);
     }
-    const auto fh = m.mesh.add_face(fv);
-    if (!fh.is_valid())
-      throw Error(where() + " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
+    t.offsets.push_back(int(t.verts.size()));
   }
-  for (const auto vh : m.mesh.vertices()) {
-    if (!m.mesh.is_manifold(vh))
-      throw Error(source + ": vertex " + std::to_string(vh.idx()) + " is non-manifold (its faces do not form one fan)");
-  }
+  add_faces(m.mesh, t, source);
   return m;
 }
 
-void validate_gaussians(const CovarianceMesh& m, const std::string& source) {
+namespace {
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+}  // namespace
+
+std::string position_problem(const Vec3& mean) {
+  if (!mean.allFinite()) return "has a position that is not finite";
+  if (mean.cwiseAbs().maxCoeff() > kMaxPositionMagnitude)
+    return "has a coordinate " + number(mean.cwiseAbs().maxCoeff()) + " beyond ±" + number(kMaxPositionMagnitude) +
+           " (its products would overflow)";
+  return "";
+}
+
+std::string covariance_problem(const Mat3& c) {
+  if (!c.allFinite()) return "has a covariance that is not finite";
+  if (!is_spd(c)) return "has a covariance that is not symmetric positive definite";
+  const Vec3 ev = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues();
+  if (ev(0) < kMinCovarianceEigenvalue)
+    return "has a covariance eigenvalue " + number(ev(0)) + " below " + number(kMinCovarianceEigenvalue) +
+           (ev(0) < std::numeric_limits<double>::min() ? " (subnormal: underflows)" : "") + " (its inverse would overflow)";
+  if (ev(2) > kMaxCovarianceEigenvalue)
+    return "has a covariance eigenvalue " + number(ev(2)) + " above " + number(kMaxCovarianceEigenvalue) +
+           " (its inverse would underflow)";
+  return "";
+}
+
+std::string gaussians_problem(const CovarianceMesh& m) {
   for (size_t i = 0; i < m.n_vertices(); ++i) {
-    if (!m.mean(i).allFinite())
-      throw Error(source + ": vertex " + std::to_string(i) + " has a position that is not finite");
-    if (!is_spd(m.covariances[i]))
-      throw Error(source + ": vertex " + std::to_string(i) +
-                  " has a covariance that is not symmetric positive definite");
+    std::string why = position_problem(m.mean(i));
+    if (why.empty()) why = covariance_problem(m.covariances[i]);
+    if (!why.empty()) return "vertex " + std::to_string(i) + " " + why;
   }
+  return "";
+}
+
+void validate_gaussians(const CovarianceMesh& m, const std::string& source) {
+  if (const std::string why = gaussians_problem(m); !why.empty()) throw Error(source + ": " + why);
 }
 
 void bounding_box(const CovarianceMesh& m, Vec3& lo, Vec3& hi) {

@@ -35,8 +35,21 @@ CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::v
                                     const std::vector<std::vector<int>>& faces,
                                     const std::string& source = "mesh");
 
-/// Throws gps::Error naming `source` and the vertex if a covariance is not finite, not symmetric
-/// or not positive definite, or a mean is not finite.
+/// Largest position coordinate magnitude accepted: squares and products of positions (and their
+/// products with inverse covariances) must stay far from double overflow.
+inline constexpr double kMaxPositionMagnitude = 1e100;
+/// Range accepted for covariance eigenvalues: Σ⁻¹ (the dual map's q̂) and Σ⁻¹μ stay finite and normal.
+inline constexpr double kMinCovarianceEigenvalue = 1e-100, kMaxCovarianceEigenvalue = 1e100;
+
+/// Why a position cannot be used ("has a position that is not finite", ...), or "" if it can.
+std::string position_problem(const Vec3& mean);
+/// Why a covariance cannot be used (not finite, not symmetric positive definite, eigenvalues whose
+/// inverse under- or overflows), or "" if it can.
+std::string covariance_problem(const Mat3& covariance);
+
+/// "vertex i <problem>" for the first vertex whose position or covariance has a problem above, or "".
+std::string gaussians_problem(const CovarianceMesh& m);
+/// Throws gps::Error naming `source` and the vertex if a position or covariance has a problem above.
 void validate_gaussians(const CovarianceMesh& m, const std::string& source = "mesh");
 
 /// Whether a covariance is symmetric (to relative 1e-9) and positive definite.

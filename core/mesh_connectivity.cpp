@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/error.h"
+
 #include "core/patch_layout.h"
 
 namespace gps {
@@ -34,35 +36,29 @@ void fill_rows(int n_keys, const std::vector<std::pair<int, int>>& pairs, std::v
 MeshConnectivity connectivity_of(const PolygonTopology& t) {
   MeshConnectivity c;
   const size_t n_corners = t.verts.size();
-  // Half-edges keyed by (min, max) vertex pair, sorted to pair them into edges: a counting sort by
-  // the smaller vertex, then an insertion sort of each (small) bucket by the larger one — linear time.
+  // Half-edges keyed by (min, max) vertex pair, sorted to pair them into edges: a radix sort of two
+  // counting passes (by the larger vertex, then stably by the smaller) — linear whatever the valence.
   struct HalfEdge {
     long long key;
     int face, corner;
   };
-  std::vector<int> bucket(size_t(t.n_vertices) + 1, 0);
+  std::vector<HalfEdge> by_max(n_corners), halves(n_corners);
+  const auto counting_sort = [&](const std::vector<HalfEdge>& in, std::vector<HalfEdge>& out, auto digit) {
+    std::vector<size_t> next(size_t(t.n_vertices) + 1, 0);
+    for (const HalfEdge& h : in) ++next[size_t(digit(h)) + 1];
+    for (int v = 0; v < t.n_vertices; ++v) next[size_t(v) + 1] += next[size_t(v)];
+    for (const HalfEdge& h : in) out[next[size_t(digit(h))]++] = h;
+  };
   for (int f = 0; f < t.n_faces(); ++f) {
     const int begin = t.offsets[size_t(f)], n = t.face_size(f);
-    for (int k = 0; k < n; ++k)
-      ++bucket[size_t(std::min(t.verts[size_t(begin + k)], t.verts[size_t(begin + (k + 1) % n)])) + 1];
-  }
-  for (int v = 0; v < t.n_vertices; ++v) bucket[size_t(v) + 1] += bucket[size_t(v)];
-  std::vector<HalfEdge> halves(n_corners);
-  {
-    std::vector<int> next(bucket.begin(), bucket.end() - 1);
-    for (int f = 0; f < t.n_faces(); ++f) {
-      const int begin = t.offsets[size_t(f)], n = t.face_size(f);
-      for (int k = 0; k < n; ++k) {
-        const int a = t.verts[size_t(begin + k)], b = t.verts[size_t(begin + (k + 1) % n)];
-        const long long key = (long long)std::min(a, b) * t.n_vertices + std::max(a, b);
-        halves[size_t(next[size_t(std::min(a, b))]++)] = {key, f, begin + k};
-      }
+    for (int k = 0; k < n; ++k) {
+      const int a = t.verts[size_t(begin + k)], b = t.verts[size_t(begin + (k + 1) % n)];
+      halves[size_t(begin + k)] = {(long long)std::min(a, b) * t.n_vertices + std::max(a, b), f, begin + k};
     }
   }
-  for (int v = 0; v < t.n_vertices; ++v)
-    for (int i = bucket[size_t(v)] + 1; i < bucket[size_t(v) + 1]; ++i)
-      for (int j = i; j > bucket[size_t(v)] && halves[size_t(j - 1)].key > halves[size_t(j)].key; --j)
-        std::swap(halves[size_t(j - 1)], halves[size_t(j)]);
+  counting_sort(halves, by_max, [&](const HalfEdge& h) { return h.key % t.n_vertices; });
+  counting_sort(by_max, halves, [&](const HalfEdge& h) { return h.key / t.n_vertices; });
+  by_max = {};
   c.face_edges.assign(n_corners, -1);
   for (size_t i = 0; i < halves.size();) {
     const int e = c.n_edges();
@@ -114,6 +110,65 @@ VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
   }
   if (found == 0) return VertexRole::interior;
   return n_faces == 1 ? VertexRole::corner : VertexRole::boundary;
+}
+
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source) {
+  using HH = PolyMesh::HalfedgeHandle;
+  const MeshConnectivity c = connectivity_of(t);
+  for (int e = 0; e + 1 < c.n_edges(); ++e)  // equal edges are neighbours in connectivity_of's order
+    if (c.edge_verts[2 * size_t(e)] == c.edge_verts[2 * size_t(e) + 2] && c.edge_verts[2 * size_t(e) + 1] == c.edge_verts[2 * size_t(e) + 3])
+      throw Error(source + ": face " + std::to_string(c.edge_faces[2 * size_t(e) + 2]) +
+                  " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
+  for (int e = 0; e < c.n_edges(); ++e)
+    mesh.new_edge(PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e)]), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e) + 1]));
+  // Corner k of a face owns the half-edge from its vertex to the next: 2e (along the edge's order) or 2e + 1.
+  std::vector<int> halfedge(t.verts.size());
+  std::vector<char> used(2 * size_t(c.n_edges()), 0);
+  for (int f = 0; f < t.n_faces(); ++f)
+    for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
+      const int e = c.face_edges[size_t(k)];
+      const int h = 2 * e + (t.verts[size_t(k)] == c.edge_verts[2 * size_t(e)] ? 0 : 1);
+      if (used[size_t(h)]++)
+        throw Error(source + ": face " + std::to_string(f) +
+                    " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
+      halfedge[size_t(k)] = h;
+    }
+  for (int f = 0; f < t.n_faces(); ++f) {
+    const auto fh = mesh.new_face();
+    const int begin = t.offsets[size_t(f)], end = t.offsets[size_t(f) + 1];
+    for (int k = begin; k < end; ++k) {
+      const HH h(halfedge[size_t(k)]);
+      mesh.set_face_handle(h, fh);
+      mesh.set_next_halfedge_handle(h, HH(halfedge[size_t(k + 1 < end ? k + 1 : begin)]));
+      mesh.set_halfedge_handle(PolyMesh::VertexHandle(t.verts[size_t(k)]), h);
+    }
+    mesh.set_halfedge_handle(fh, HH(halfedge[size_t(end - 1)]));  // as add_face: fv_range starts at corner 0
+  }
+  // Boundary half-edges: each vertex has at most one going out (one fan), which is its outgoing half-edge.
+  const auto non_manifold = [&](int v) {
+    return Error(source + ": vertex " + std::to_string(v) + " is non-manifold (its faces do not form one fan)");
+  };
+  std::vector<int> boundary_out(size_t(t.n_vertices), -1);
+  for (int h = 0; h < 2 * c.n_edges(); ++h) {
+    if (used[size_t(h)]) continue;
+    const int from = mesh.to_vertex_handle(HH(h ^ 1)).idx();
+    if (boundary_out[size_t(from)] >= 0) throw non_manifold(from);
+    boundary_out[size_t(from)] = h;
+    mesh.set_halfedge_handle(PolyMesh::VertexHandle(from), HH(h));
+  }
+  for (int h = 0; h < 2 * c.n_edges(); ++h)
+    if (!used[size_t(h)]) mesh.set_next_halfedge_handle(HH(h), HH(boundary_out[size_t(mesh.to_vertex_handle(HH(h)).idx())]));
+  // One fan per vertex: circling the outgoing half-edges from one of them meets all of its edges.
+  for (int v = 0; v < t.n_vertices; ++v) {
+    if (c.valence(v) == 0) continue;
+    const HH first = mesh.halfedge_handle(PolyMesh::VertexHandle(v));
+    int count = 0;
+    HH h = first;
+    do {
+      h = mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(h));
+    } while (++count <= c.valence(v) && h != first);
+    if (count != c.valence(v)) throw non_manifold(v);
+  }
 }
 
 }  // namespace gps

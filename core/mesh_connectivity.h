@@ -1,5 +1,6 @@
 #pragma once
 // Flat polygon topology and its edge/vertex adjacency, the form the subdivision loops run on.
+#include <string>
 #include <vector>
 
 #include "core/covariance_mesh.h"
@@ -40,6 +41,12 @@ struct MeshConnectivity {
 
 /// Builds the adjacency; the topology must be manifold (as CovarianceMesh guarantees).
 MeshConnectivity connectivity_of(const PolygonTopology& topology);
+
+/// Adds the faces of `t` to `mesh`, whose vertices 0 .. t.n_vertices − 1 exist, building OpenMesh's
+/// half-edge structure directly in time linear in the mesh whatever the valence (OpenMesh's add_face
+/// searches the half-edges around each vertex: quadratic on a fan). Edges are paired by
+/// connectivity_of; throws gps::Error naming `source` and the face or vertex where the mesh is not manifold.
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source);
 
 /// How a vertex behaves under the boundary rules: interior, on a boundary curve, or a corner (one face).
 enum class VertexRole { interior, boundary, corner, isolated };

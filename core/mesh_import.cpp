@@ -1,12 +1,14 @@
 #include "core/mesh_import.h"
 
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cstring>
 #include <map>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/number_text.h"
 
 namespace gps {
 
@@ -15,14 +17,9 @@ namespace {
 CovarianceMesh plain_mesh(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces,
                           const std::string& source) {
   for (size_t i = 0; i < points.size(); ++i)
-    if (!points[i].allFinite()) throw Error(source + ": vertex " + std::to_string(i) + " has a position that is not finite");
+    if (const std::string why = position_problem(points[i]); !why.empty())
+      throw Error(source + ": vertex " + std::to_string(i) + " " + why);
   return make_covariance_mesh(points, std::vector<Mat3>(points.size(), Mat3::Identity()), faces, source);
-}
-
-bool parse_double(std::string_view s, double& out) {
-  if (!s.empty() && s[0] == '+') s.remove_prefix(1);
-  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-  return ec == std::errc() && p == s.data() + s.size();
 }
 
 bool parse_int(std::string_view s, long long& out) {
@@ -54,7 +51,7 @@ CovarianceMesh parse_obj(const std::string& data, const std::string& source) {
       Vec3 p;
       if (words.size() < 4) throw Error(at + "a vertex needs three coordinates");
       for (int k = 0; k < 3; ++k)
-        if (!parse_double(words[size_t(k + 1)], p[k])) throw Error(at + "'" + words[size_t(k + 1)] + "' is not a number");
+        if (const std::string why = parse_number(words[size_t(k + 1)], p[k]); !why.empty()) throw Error(at + why);
       points.push_back(p);
     } else if (words[0] == "f") {
       std::vector<int> face;
@@ -75,58 +72,89 @@ CovarianceMesh parse_obj(const std::string& data, const std::string& source) {
   return plain_mesh(points, faces, source);
 }
 
+namespace {
+// The whitespace-separated tokens of a text, '#' comments skipped, one at a time with their line
+// numbers (no token list: memory stays that of the text).
+class TokenCursor {
+public:
+  explicit TokenCursor(const std::string& data) : data_(data) { advance(); }
+  bool done() const { return token_.empty(); }
+  std::string_view token() const { return token_; }
+  int line() const { return line_; }
+  void next() { advance(); }
+  // Skips the remaining tokens of the current token's line (extra values: normals, colours).
+  void skip_line(int line) {
+    while (!done() && line_ == line) advance();
+  }
+
+private:
+  void advance() {
+    for (;;) {
+      while (pos_ < data_.size() && std::isspace((unsigned char)data_[pos_])) line_ += data_[pos_++] == '\n';
+      if (pos_ < data_.size() && data_[pos_] == '#') {
+        while (pos_ < data_.size() && data_[pos_] != '\n') ++pos_;
+        continue;
+      }
+      break;
+    }
+    const size_t begin = pos_;
+    while (pos_ < data_.size() && !std::isspace((unsigned char)data_[pos_]) && data_[pos_] != '#') ++pos_;
+    token_ = std::string_view(data_).substr(begin, pos_ - begin);
+  }
+  const std::string& data_;
+  size_t pos_ = 0;
+  int line_ = 1;
+  std::string_view token_;
+};
+}  // namespace
+
 CovarianceMesh parse_off(const std::string& data, const std::string& source) {
   if (data.empty()) throw Error(source + ": the file is empty");
-  // Tokens with their line numbers, comments removed.
-  std::vector<std::pair<std::string, int>> tokens;
-  std::istringstream in(data);
-  int line_number = 0;
-  for (std::string line; std::getline(in, line);) {
-    ++line_number;
-    line = line.substr(0, line.find('#'));
-    for (auto& w : words_of(line)) tokens.emplace_back(w, line_number);
-  }
-  size_t t = 0;
+  TokenCursor t(data);
+  const auto at = [&](int line) { return source + ": line " + std::to_string(line) + ": "; };
   // The keyword: OFF or a variant (COFF, NOFF, STCNOFF, ...) whose extra vertex values are skipped below.
-  if (t < tokens.size() && tokens[t].first.size() >= 3 && tokens[t].first.ends_with("OFF")) {
-    if (tokens[t].first.find("4") != std::string::npos || tokens[t].first.starts_with("n"))
-      throw Error(source + ": line " + std::to_string(tokens[t].second) + ": " + tokens[t].first + " (4D or n-dimensional OFF) is not supported");
-    ++t;
+  if (!t.done() && t.token().size() >= 3 && t.token().ends_with("OFF")) {
+    if (t.token().find('4') != std::string_view::npos || t.token().starts_with("n"))
+      throw Error(at(t.line()) + std::string(t.token()) + " (4D or n-dimensional OFF) is not supported");
+    t.next();
   }
   const auto next_int = [&](const char* what) {
-    if (t >= tokens.size()) throw Error(source + ": the file ends early (expected " + what + ")");
+    if (t.done()) throw Error(source + ": the file ends early (expected " + what + ")");
     long long v = 0;
-    if (!parse_int(tokens[t].first, v) || v < 0)
-      throw Error(source + ": line " + std::to_string(tokens[t].second) + ": '" + tokens[t].first + "' is not a valid " + what);
-    ++t;
+    if (!parse_int(t.token(), v) || v < 0) throw Error(at(t.line()) + "'" + std::string(t.token()) + "' is not a valid " + what);
+    t.next();
     return v;
   };
   const long long nv = next_int("vertex count"), nf = next_int("face count");
   next_int("edge count");
-  if (size_t(nv) > tokens.size() || size_t(nf) > tokens.size())
+  // Every vertex takes at least 6 characters ("0 0 0\n"), every face at least 8 ("3 0 1 2\n").
+  if (nv > (long long)data.size() / 6 || nf > (long long)data.size() / 8)
     throw Error(source + ": the header declares more vertices or faces than the file holds");
-  std::vector<Vec3> points(static_cast<size_t>(nv));
-  for (auto& p : points) {
+  // Arrays grow as records arrive (never sized from the header): memory follows what the file holds.
+  std::vector<Vec3> points;
+  for (long long v = 0; v < nv; ++v) {
+    Vec3& p = points.emplace_back();
+    int line = t.line();
     for (int k = 0; k < 3; ++k) {
-      if (t >= tokens.size()) throw Error(source + ": the file ends early (truncated vertex list)");
-      if (!parse_double(tokens[t].first, p[k]))
-        throw Error(source + ": line " + std::to_string(tokens[t].second) + ": '" + tokens[t].first + "' is not a number");
-      ++t;
+      if (t.done()) throw Error(source + ": the file ends early (truncated vertex list)");
+      line = t.line();
+      if (const std::string why = parse_number(t.token(), p[k]); !why.empty()) throw Error(at(line) + why);
+      t.next();
     }
-    const int line = tokens[t - 1].second;
-    while (t < tokens.size() && tokens[t].second == line) ++t;  // normals, colours, texture coordinates
+    t.skip_line(line);  // normals, colours, texture coordinates
   }
-  std::vector<std::vector<int>> faces(static_cast<size_t>(nf));
-  for (size_t f = 0; f < faces.size(); ++f) {
-    const int line = t < tokens.size() ? tokens[t].second : line_number;
+  std::vector<std::vector<int>> faces;
+  for (long long f = 0; f < nf; ++f) {
+    std::vector<int>& face = faces.emplace_back();
+    const int line = t.line();
     const long long n = next_int("face size");
-    if (n < 3) throw Error(source + ": line " + std::to_string(line) + ": face " + std::to_string(f) + " has fewer than 3 vertices");
+    if (n < 3) throw Error(at(line) + "face " + std::to_string(f) + " has fewer than 3 vertices");
     for (long long k = 0; k < n; ++k) {
       const long long index = next_int("vertex index");
-      if (index >= nv) throw Error(source + ": line " + std::to_string(line) + ": face " + std::to_string(f) + " refers to vertex " + std::to_string(index) + ", but there are " + std::to_string(nv));
-      faces[f].push_back(int(index));
+      if (index >= nv) throw Error(at(line) + "face " + std::to_string(f) + " refers to vertex " + std::to_string(index) + ", but there are " + std::to_string(nv));
+      face.push_back(int(index));
     }
-    while (t < tokens.size() && tokens[t].second == line) ++t;  // colour values
+    t.skip_line(line);  // colour values
   }
   return plain_mesh(points, faces, source);
 }
@@ -161,8 +189,8 @@ CovarianceMesh parse_stl(const std::string& data, const std::string& source) {
       Vec3 p;
       if (words.size() != 4) throw Error(source + ": line " + std::to_string(line_number) + ": a vertex needs three coordinates");
       for (int k = 0; k < 3; ++k)
-        if (!parse_double(words[size_t(k + 1)], p[k]))
-          throw Error(source + ": line " + std::to_string(line_number) + ": '" + words[size_t(k + 1)] + "' is not a number");
+        if (const std::string why = parse_number(words[size_t(k + 1)], p[k]); !why.empty())
+          throw Error(source + ": line " + std::to_string(line_number) + ": " + why);
       corners.push_back(p);
     }
     if (corners.size() % 3 != 0) throw Error(source + ": a facet does not have three vertices");

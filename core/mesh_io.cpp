@@ -48,6 +48,8 @@ CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options) 
 
 void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary) {
   const std::string ext = extension_of(path);
+  // What gpsurf writes it must read back: refuse values the readers would refuse.
+  if (const std::string why = gaussians_problem(mesh); !why.empty()) throw Error(path + ": not written: " + why);
   if (ext == ".ply") {
     write_file_atomically(path, [&](std::ostream& out) { write_ply(out, mesh, binary); }, binary);
   } else if (ext == ".obj") {

@@ -331,8 +331,31 @@ PlanTables merge(std::vector<PlanTables>& parts, int n_base) {
 
 }  // namespace
 
+namespace {
+// The plans read every neighbour of an extraordinary vertex from each patch at it (thesis Fig. 2.5
+// corner rule), so their stencils grow with the square of the valence (and of the face size, which
+// becomes the valence of the face's centre after the split): past this bound they would take
+// minutes and gigabytes, so such meshes are refused up front with a message.
+constexpr int kMaxPlanValence = 256;
+
+void check_plan_valences(const PolygonTopology& t) {
+  std::vector<int> faces_at(size_t(t.n_vertices), 0);
+  for (int f = 0; f < t.n_faces(); ++f) {
+    if (t.face_size(f) > kMaxPlanValence)
+      throw Error("face " + std::to_string(f) + " has " + std::to_string(t.face_size(f)) + " sides; patch plans handle up to " +
+                  std::to_string(kMaxPlanValence) + " (split the face, or use gpsurf subdivide)");
+    for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k)
+      if (++faces_at[size_t(t.verts[size_t(k)])] > kMaxPlanValence)
+        throw Error("vertex " + std::to_string(t.verts[size_t(k)]) + " has more than " + std::to_string(kMaxPlanValence) +
+                    " faces; patch plans handle valences up to " + std::to_string(kMaxPlanValence) +
+                    " (their stencils grow with its square; use gpsurf subdivide)");
+  }
+}
+}  // namespace
+
 PlanTables build_plans(const PolygonTopology& topology, int max_depth, bool bspline_leaves) {
   if (max_depth < 1 || max_depth > 8) throw usage_error("plan depth must be 1..8, got " + std::to_string(max_depth));
+  check_plan_valences(topology);
   const LocalMesh base = base_local_mesh(topology);
   // Faces in ranges of a fixed size, built on all cores (OpenMP), merged in order.
   constexpr int kFacesPerRange = 1024;

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/number_text.h"
 #include "core/text_file.h"
 
 namespace gps {
@@ -85,9 +86,7 @@ public:
       if (token_index_ >= tokens_.size()) fail("line " + std::to_string(line_) + ": too few values");
       const std::string_view tok = tokens_[token_index_++];
       double value = 0;
-      const auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), value);
-      if (ec != std::errc() || end != tok.data() + tok.size())
-        fail("line " + std::to_string(line_) + ": '" + std::string(tok) + "' is not a number");
+      if (const std::string why = parse_number(tok, value); !why.empty()) fail("line " + std::to_string(line_) + ": " + why);
       return value;
     }
     if (pos_ + size_t(t.size) > data_.size()) fail("the binary data ends early (truncated)");
@@ -247,8 +246,9 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       for (int k = 0; k < 6; ++k) found += (ic[k] = index_of(cov_names[k])) >= 0;
       if (found != 0 && found != 6) fail("the vertex element has only some of cxx cxy cxz cyy cyz czz");
       has_covariances = found == 6;
-      means.resize(e.count);
-      covariances.assign(e.count, Mat3::Identity());
+      // Arrays grow as records arrive (never sized from the header): memory follows what the file holds.
+      means.reserve(std::min<size_t>(e.count, 1 << 16));
+      covariances.reserve(means.capacity());
       std::vector<double> values(e.properties.size());
       for (size_t v = 0; v < e.count; ++v) {
         body.begin_record();
@@ -262,15 +262,14 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
           }
         }
         body.end_record();
-        means[v] = Vec3(values[size_t(ix)], values[size_t(iy)], values[size_t(iz)]);
-        if (!means[v].allFinite()) fail("vertex " + std::to_string(v) + " has a position that is not finite");
+        means.emplace_back(values[size_t(ix)], values[size_t(iy)], values[size_t(iz)]);
+        if (const std::string why = position_problem(means[v]); !why.empty()) fail("vertex " + std::to_string(v) + " " + why);
+        Mat3& m = covariances.emplace_back(Mat3::Identity());
         if (has_covariances) {
           double c[6];
           for (int k = 0; k < 6; ++k) c[k] = values[size_t(ic[k])];
-          Mat3& m = covariances[v];
           m << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
-          if (!m.allFinite()) fail("vertex " + std::to_string(v) + " has a covariance that is not finite");
-          if (!is_spd(m)) fail("vertex " + std::to_string(v) + " has a covariance that is not positive definite");
+          if (const std::string why = covariance_problem(m); !why.empty()) fail("vertex " + std::to_string(v) + " " + why);
         }
       }
     } else if (e.name == "face") {
@@ -280,8 +279,9 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
         if (e.properties[i].is_list && (e.properties[i].name == "vertex_indices" || e.properties[i].name == "vertex_index"))
           list = int(i);
       if (list < 0) fail("the face element has no vertex_indices list");
-      faces.resize(e.count);
+      faces.reserve(std::min<size_t>(e.count, 1 << 16));
       for (size_t f = 0; f < e.count; ++f) {
+        std::vector<int>& face = faces.emplace_back();
         body.begin_record();
         for (size_t k = 0; k < e.properties.size(); ++k) {
           const Property& p = e.properties[k];
@@ -297,7 +297,7 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
             if (!(index >= 0 && index < double(means.size())) || index != std::floor(index))
               fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + BodyReader::format_number(index) +
                    ", but there are " + std::to_string(means.size()) + " vertices");
-            faces[f].push_back(int(index));
+            face.push_back(int(index));
           }
         }
         body.end_record();

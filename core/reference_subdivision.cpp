@@ -160,18 +160,11 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   }
   if (first_invalid < refined.size())
     throw Error("subdivided vertex " + std::to_string(first_invalid) + " left the cone of positive definite matrices");
-  // The refinement of a valid manifold mesh is manifold: build the OpenMesh directly, without the
-  // per-face vectors and manifold checks of make_covariance_mesh().
   SubdivisionResult result;
   PolyMesh& out = result.mesh.mesh;
   out.reserve(means.size(), t.verts.size(), size_t(t.n_faces()));
   for (const Vec3& m : means) out.add_vertex(to_point(m));
-  std::vector<PolyMesh::VertexHandle> fv;
-  for (int f = 0; f < t.n_faces(); ++f) {
-    fv.clear();
-    for (int i = t.offsets[size_t(f)]; i < t.offsets[size_t(f) + 1]; ++i) fv.emplace_back(t.verts[size_t(i)]);
-    if (!out.add_face(fv).is_valid()) throw Error("subdivided mesh: face " + std::to_string(f) + " could not be added");
-  }
+  add_faces(out, t, "subdivided mesh");
   result.mesh.covariances = std::move(covariances);
   if (with_params) result.vertex_params = vertex_params_of(t, params);
   return result;

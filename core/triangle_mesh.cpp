@@ -64,6 +64,9 @@ void write_obj(std::ostream& out, const TriangleMesh& m) {
 
 void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, bool binary) {
   const std::string ext = extension_of(path);
+  for (size_t i = 0; i < mesh.positions.size(); ++i)
+    if (const std::string why = position_problem(mesh.positions[i]); !why.empty() || (i < mesh.normals.size() && !mesh.normals[i].allFinite()))
+      throw Error(path + ": not written: vertex " + std::to_string(i) + " " + (why.empty() ? "has a normal that is not finite" : why));
   if (ext == ".ply") write_file_atomically(path, [&](std::ostream& out) { write_ply(out, mesh, binary); }, binary);
   else if (ext == ".obj") write_file_atomically(path, [&](std::ostream& out) { write_obj(out, mesh); });
   else throw usage_error(path + ": cannot write format '" + ext + "' (use .ply or .obj)");

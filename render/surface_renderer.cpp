@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/stencil_table.h"
+#include "render/compute_limits.h"
 #include "render/gl_context.h"
 #include "render/gpu_layout.h"
 #include "render/matcap.h"
@@ -90,8 +91,14 @@ static void upload(unsigned buffer, size_t& size, const std::vector<T>& data) {
 }
 
 void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, const PlanOptions& options) {
-  tables_ = build_surface_plans(topology_of(mesh.mesh), options);
-  n_base_ = int(mesh.n_vertices());
+  PlanTables tables = build_surface_plans(topology_of(mesh.mesh), options);
+  // Refused before anything changes: the renderer keeps drawing the previous mesh.
+  const int n_vertices = int(mesh.n_vertices()), n_faces = int(mesh.n_faces());
+  check_storage_fits("plan points", size_t(tables.stencils.n_points()) * kVec4PerPoint * 4 * sizeof(float), n_vertices, n_faces, storage_limit_);
+  check_storage_fits("stencil weights", tables.stencils.weights.size() * sizeof(float), n_vertices, n_faces, storage_limit_);
+  check_storage_fits("plan nodes", tables.plans.nodes.size() * sizeof(tables.plans.nodes[0]), n_vertices, n_faces, storage_limit_);
+  tables_ = std::move(tables);
+  n_base_ = n_vertices;
   const StencilTable& s = tables_.stencils;
   const StencilDependents deps = stencil_dependents(s);
   dependents_offsets_ = deps.offsets;
@@ -179,13 +186,13 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
   dual_map_.use();
   dual_map_.set("u_count", vertex_count);
   dual_map_.set("u_use_list", changed ? 1 : 0);
-  if (vertex_count > 0) glDispatchCompute(GLuint((vertex_count + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
+  dispatch_split(dual_map_, vertex_count, group_limit_);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   stencil_.use();
   stencil_.set("u_count", row_count);
   stencil_.set("u_n_base", n_base_);
   stencil_.set("u_use_list", changed ? 1 : 0);
-  if (row_count > 0) glDispatchCompute(GLuint((row_count + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
+  dispatch_split(stencil_, row_count, group_limit_);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   check_gl_errors("the compute passes");
 }

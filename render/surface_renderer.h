@@ -90,6 +90,13 @@ public:
   std::vector<float> read_points() const;
   /// GPU memory held by the pipeline's buffers, in bytes.
   size_t buffer_bytes() const;
+  /// Lowers the device's limits on work groups per compute dispatch and on storage block bytes
+  /// (0: the device's own), so that tests reach the dispatch split and the size refusal with meshes
+  /// of test size. Applies from the next set_mesh / update_vertices.
+  void lower_device_limits(int max_groups, long long max_storage_bytes) {
+    group_limit_ = max_groups;
+    storage_limit_ = max_storage_bytes;
+  }
 
 private:
   void upload_gaussians(const CovarianceMesh& mesh);
@@ -112,6 +119,8 @@ private:
   int triangle_count_ = 0, line_index_count_ = 0;
   unsigned matcap_ = 0;
   int n_base_ = 0;
+  int group_limit_ = 0;             // lower_device_limits
+  long long storage_limit_ = 0;
   GpuPassTimer* timer_ = nullptr;
   std::unique_ptr<QueryRing> statistics_;  // set while collecting statistics
   DrawStatistics last_statistics_;

@@ -4,10 +4,11 @@ layout(std430, binding = kBindingGaussians) readonly buffer Gaussians { float ga
 layout(std430, binding = kBindingPoints) buffer Points { vec4 points[]; };
 layout(std430, binding = kBindingChanged) readonly buffer Changed { int changed[]; };
 uniform int u_count;
+uniform int u_first;  // this dispatch's first invocation (dispatches split to the device's group limit)
 uniform int u_use_list;
 
 void main() {
-  int i = int(gl_GlobalInvocationID.x);
+  int i = u_first + int(gl_GlobalInvocationID.x);
   if (i >= u_count) return;
   int v = u_use_list != 0 ? changed[i] : i;
   float g[9];

@@ -6,11 +6,12 @@ layout(std430, binding = kBindingIndices) readonly buffer Indices { int indices[
 layout(std430, binding = kBindingWeights) readonly buffer Weights { float weights[]; };
 layout(std430, binding = kBindingRows) readonly buffer Rows { int rows[]; };
 uniform int u_count;
+uniform int u_first;  // this dispatch's first invocation (dispatches split to the device's group limit)
 uniform int u_n_base;
 uniform int u_use_list;
 
 void main() {
-  int i = int(gl_GlobalInvocationID.x);
+  int i = u_first + int(gl_GlobalInvocationID.x);
   if (i >= u_count) return;
   int r = u_use_list != 0 ? rows[i] : i;
   vec4 a = vec4(0.0), b = vec4(0.0), c = vec4(0.0);

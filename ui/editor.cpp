@@ -201,7 +201,11 @@ void EditorApp::draw_ui() {
   if (view_.show_inspector) inspector_.draw(document_, selection_, reach_options_, &view_.show_inspector);
   if (view_.show_view) {
     const ViewPanelChanges c = draw_view_panel(view_, &view_.show_view);
-    if (c.depth) renderer_->set_mesh(document_.mesh(), view_.plans());
+    if (c.depth) try {
+        renderer_->set_mesh(document_.mesh(), view_.plans());
+      } catch (const Error& e) {  // too big for the GPU's buffers: the previous plans stay
+        set_status(e.what(), true);
+      }
     if (c.matcap) renderer_->set_matcap(load_matcap(view_.matcap));
     if (c.load_matcap) {
       browser_purpose_ = BrowserPurpose::load_matcap;

@@ -44,14 +44,16 @@ void EditorApp::perform(const Action& action) {
 }
 
 void EditorApp::open_file(const std::string& path) {
+  const EditorDocument previous = document_;
   try {
     document_.open(path);
+    mesh_replaced();  // the renderer may refuse the mesh (valence, GPU limits): nothing changed then
   } catch (const Error& e) {  // the current mesh stays
+    document_ = previous;
     set_status(e.what(), true);
     return;
   }
   if (!script_) recent_.add(document_.source_path());
-  mesh_replaced();
   set_status("opened " + document_.source_path(), false);
 }
 
@@ -62,12 +64,14 @@ void EditorApp::open_sample(const std::string& name) {
 }
 
 void EditorApp::mesh_replaced() {
+  ViewOptions view = view_;
+  view.triangle_mesh = scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
+  renderer_->set_mesh(document_.mesh(), view.plans());  // first: it throws before anything changes
+  view_.triangle_mesh = view.triangle_mesh;
   mode_ = Mode::none;
   drag_.reset();
   reach_.clear();
   selection_.clear();
-  view_.triangle_mesh = scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
-  renderer_->set_mesh(document_.mesh(), view_.plans());
   camera_ = frame_mesh(document_.mesh());
   // Base-mesh lines are drawn over the surface: on a dense mesh they would hide it.
   view_.draw.mesh_lines = document_.mesh().n_faces() <= kMaxFacesWithLines;

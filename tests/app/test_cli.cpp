@@ -3,6 +3,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <tuple>
 
 #include "core/mesh_io.h"
 #include "tests/support/run_command.h"
@@ -38,6 +40,51 @@ TEST(Cli, SampleInfoSubdivideInfer) {
   EXPECT_EQ(run_command(gpsurf("infer " + dir.file("s.obj") + " -o " + dir.file("j.ply") + " --isotropic 0.3")).exit_code, 0);
   for (const char* cmd : {"info", "sample", "infer", "subdivide"})
     EXPECT_EQ(run_command(gpsurf(std::string(cmd) + " --help")).exit_code, 0) << cmd;
+}
+
+// Covariances that are subnormal (1e-310) or huge (1e308), ASCII or binary, and positions at ±1e308:
+// every command refuses them with a message that says so, and writes nothing (issue 14: they once
+// gave "wrote s.ply", exit 0, and a file of NaNs that `gpsurf info` refused).
+TEST(Cli, ValuesBeyondWhatTheMathCarriesAreRefusedAndNothingIsWritten) {
+  test::TempDir dir;
+  const auto ply = [](const std::string& format, double position, double variance) {
+    std::string s = "ply\nformat " + format + " 1.0\nelement vertex 4\n";
+    for (const char* p : {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz"}) s += std::string("property double ") + p + "\n";
+    s += "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const double v[4][3] = {{0, 0, 0}, {position, 0, 0}, {1, 1, 0}, {0, -position, 0}};
+    for (const auto& p : v) {
+      const double values[9] = {p[0], p[1], p[2], variance, 0, 0, variance, 0, variance};
+      if (format == "ascii") {
+        std::ostringstream line;
+        line.precision(17);
+        for (const double x : values) line << x << ' ';
+        s += line.str() + "\n";
+      } else {
+        s.append(reinterpret_cast<const char*>(values), sizeof values);
+      }
+    }
+    s += format == "ascii" ? "4 0 1 2 3\n" : std::string("\x04\0\0\0\0\x01\0\0\0\x02\0\0\0\x03\0\0\0", 17);
+    return s;
+  };
+  const std::vector<std::tuple<std::string, std::string, std::string>> inputs = {
+      {"subnormal.ply", ply("ascii", 1, 1e-310), "covariance eigenvalue 1e-310 below 1e-100 (subnormal: underflows)"},
+      {"subnormal_binary.ply", ply("binary_little_endian", 1, 1e-310), "(subnormal: underflows)"},
+      {"huge.ply", ply("binary_little_endian", 1, 1e308), "covariance eigenvalue 1e+308 above 1e+100"},
+      {"far.ply", ply("ascii", 1e308, 0.1), "vertex 1 has a coordinate 1e+308 beyond"},
+      {"underflow.obj", "v 0 0 0\nv 1e-400 1 0\nv 1 0 0\nf 1 2 3\n", "line 2: '1e-400' underflows"},
+  };
+  for (const auto& [name, contents, expected] : inputs) {
+    const std::string in = dir.write(name, contents);
+    for (const std::string& cmd : {"info " + in, "subdivide " + in + " -o " + dir.file("s.ply") + " --levels 1",
+                                   "tessellate " + in + " -o " + dir.file("t.ply") + " --depth 2 --level 2"}) {
+      const auto r = run_command(gpsurf(cmd));
+      EXPECT_EQ(r.exit_code, 1) << cmd << ": " << r.output;
+      EXPECT_EQ(lines(r.output), 1u) << cmd << ": " << r.output;
+      EXPECT_NE(r.output.find(expected), std::string::npos) << cmd << ": " << r.output;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir.file("s.ply")));
+    EXPECT_FALSE(std::filesystem::exists(dir.file("t.ply")));
+  }
 }
 
 TEST(Cli, UsageErrorsExitWithTwo) {

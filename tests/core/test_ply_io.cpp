@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <sstream>
 #include <random>
 
@@ -117,7 +118,18 @@ TEST(PlyIo, MalformedFilesGiveOneLineErrors) {
       {"inf.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 inf 0 0 1 0 1\n3 0 1 2\n",
        "vertex 2 has a covariance that is not finite"},
       {"spd.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 1 2 0 1 0 1\n3 0 1 2\n",
-       "vertex 2 has a covariance that is not positive definite"},
+       "vertex 2 has a covariance that is not symmetric positive definite"},
+      {"underflow.ply", header("ascii", 3, 1) + "0 1e-400 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n",
+       "line 16: '1e-400' underflows"},
+      {"overflow.ply", header("ascii", 3, 1) + "0 -1e400 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n", "'-1e400' overflows"},
+      {"subnormal.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 1e-310 0 0 1e-310 0 1e-310\n3 0 1 2\n",
+       "vertex 2 has a covariance eigenvalue 1e-310 below 1e-100 (subnormal: underflows)"},
+      {"tiny.ply", header("ascii", 3, 1) + v0 + "1 0 0 1e-200 0 0 1 0 1\n" + v1 + "3 0 1 2\n",
+       "vertex 1 has a covariance eigenvalue 1e-200 below 1e-100"},
+      {"hugecov.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 1e308 0 0 1e308 0 1e308\n3 0 1 2\n",
+       "vertex 2 has a covariance eigenvalue 1e+308 above 1e+100"},
+      {"far.ply", header("ascii", 3, 1) + v0 + "1e308 0 0 1 0 0 1 0 1\n-1e308 1 0 1 0 0 1 0 1\n3 0 1 2\n",
+       "vertex 1 has a coordinate 1e+308 beyond"},
       {"word.ply", header("ascii", 3, 1) + "0 zero 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n", "line 16: 'zero' is not a number"},
       {"short_ascii.ply", header("ascii", 3, 1) + tri, "truncated"},
       {"long_line.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 1 0 0 1 0 1 7\n3 0 1 2\n", "line 18: more values"},
@@ -166,6 +178,35 @@ TEST(PlyIo, FailedWriteLeavesTheTargetAndNoTemporaryFile) {
   EXPECT_EQ(files, 1u);
   write_mesh(target, m);
   EXPECT_EQ(read_mesh(target).n_vertices(), 8u);
+}
+
+// Values the readers would refuse are not written either (issue 14: no file gpsurf cannot read back).
+TEST(PlyIo, WritingRefusesWhatReadingWouldRefuse) {
+  test::TempDir dir;
+  CovarianceMesh m = make_sample("cone");
+  m.covariances[3] = Mat3::Identity() * 1e-310;
+  try {
+    write_mesh(dir.file("m.ply"), m, true);
+    ADD_FAILURE() << "written";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("m.ply: not written: vertex 3 has a covariance eigenvalue"), std::string::npos) << e.what();
+  }
+  m.covariances[3] = Mat3::Identity();
+  m.set_mean(5, Vec3(0, std::nan(""), 0));
+  EXPECT_THROW(write_mesh(dir.file("m.obj"), m, false), Error);
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+// Distinct vertices at ±1e308 (an OBJ): refused for the range, not reported as a degenerate face.
+TEST(PlyIo, HugePositionsInImportsAreNamedAsSuch) {
+  test::TempDir dir;
+  const std::string path = dir.write("far.obj", "v 1e308 0 0\nv -1e308 0 0\nv 0 1e308 0\nf 1 2 3\n");
+  try {
+    read_mesh(path);
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("far.obj: vertex 0 has a coordinate 1e+308 beyond"), std::string::npos) << e.what();
+  }
 }
 
 TEST(PlyIo, CorruptListLengthsAndIndicesAreErrors) {

@@ -10,7 +10,9 @@
 #include <map>
 #include <tuple>
 
+#include "core/error.h"
 #include "core/patch_eval.h"
+#include "core/reference_subdivision.h"
 #include "core/samples.h"
 #include "core/stencil_table.h"
 #include "core/tessellator.h"
@@ -484,6 +486,65 @@ TEST_F(GpuTest, PassTimerSeesComputeAndEachDrawnLayer) {
   glFinish();
   EXPECT_EQ(names(), (std::vector<std::string>{"9D + stencils", "surface", "mesh lines", "ellipsoids"}));
   renderer.set_pass_timer(nullptr);
+}
+
+// Passes larger than one dispatch can reach are split into several. llvmpipe's limits (65,535 groups
+// of 64, storage blocks of 128 MiB) let no buffer hold 65,535 × 64 points, so the test lowers the
+// group limit to 64 (4,096 rows a dispatch): the passes over 186,054 rows take 46 dispatches, and
+// every point matches the CPU, the last dispatch's included.
+TEST_F(GpuTest, ComputePassesSplitIntoSeveralDispatches) {
+  SubdivisionOptions loop;
+  loop.scheme = Scheme::loop;
+  loop.levels = 3;
+  const CovarianceMesh mesh = subdivide(make_sample("cone"), loop).mesh;
+  SurfaceRenderer renderer;
+  renderer.lower_device_limits(64, 0);
+  renderer.set_mesh(mesh, PlanOptions{Scheme::catmull_clark, 5, LoopBeta::loop});  // split triangles: many rows
+  const int n_rows = renderer.tables().stencils.n_rows();
+  ASSERT_GT(n_rows, 20 * 64 * 64);
+  const auto gpu = renderer.read_points();
+  std::vector<Dual> base(mesh.n_vertices());
+  for (size_t i = 0; i < base.size(); ++i) base[i] = to_dual(mesh.mean(i), mesh.covariance(i));
+  const std::vector<Dual> cpu = apply_stencils(renderer.tables().stencils, base);
+  ASSERT_EQ(gpu.size(), cpu.size() * 12);
+  for (size_t p = 0; p < cpu.size(); ++p)
+    for (int k = 0; k < 9; ++k)
+      ASSERT_NEAR(gpu[12 * p + size_t(k)], cpu[p][k], 1e-4 * (1 + std::abs(cpu[p][k]))) << "point " << p << " k " << k;
+  // An edit (the listed-rows path) splits the same way: 64 rows a dispatch.
+  renderer.lower_device_limits(1, 0);
+  CovarianceMesh edited = mesh;
+  edited.set_mean(0, mesh.mean(0) + Vec3(0.05, 0.0, 0.0));
+  renderer.update_vertices(edited, {0});
+  base[0] = to_dual(edited.mean(0), edited.covariance(0));
+  const std::vector<Dual> cpu_edited = apply_stencils(renderer.tables().stencils, base);
+  const auto gpu_edited = renderer.read_points();
+  for (size_t p = 0; p < cpu_edited.size(); ++p)
+    for (int k = 0; k < 9; ++k)
+      ASSERT_NEAR(gpu_edited[12 * p + size_t(k)], cpu_edited[p][k], 1e-4 * (1 + std::abs(cpu_edited[p][k]))) << "point " << p;
+}
+
+// A mesh whose plan points exceed the device's largest storage block is refused before any upload,
+// with one line naming the mesh and the figures (the limit lowered to 64 KiB: llvmpipe's 128 MiB
+// takes some 3 million plan points, a minute of plan building); the previous mesh stays.
+TEST_F(GpuTest, AMeshBeyondTheStorageLimitIsRefusedWithItsFigures) {
+  SurfaceRenderer renderer;
+  renderer.set_mesh(make_sample("cube"), 3);
+  renderer.lower_device_limits(0, 64 << 10);
+  const CovarianceMesh sphere = make_sample("sphere");  // 1536 quads: more than 64 KiB of points
+  try {
+    renderer.set_mesh(sphere, 3);
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("the mesh (" + std::to_string(sphere.n_vertices()) + " vertices, " + std::to_string(sphere.n_faces()) +
+                        " faces) needs "), std::string::npos) << what;
+    EXPECT_NE(what.find(" KiB of plan points, more than the GPU's largest storage buffer (64.0 KiB)"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos);
+  }
+  RenderTarget target(32, 32);  // the previous mesh is still drawn
+  renderer.draw(target, frame_mesh(make_sample("cube"), 30.0f, 20.0f), DrawOptions{});
+  const Image image = target.read(0);
+  EXPECT_LT(image.at(16, 16, 0), 0.99f);
 }
 
 }  // namespace

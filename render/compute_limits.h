@@ -1,0 +1,19 @@
+#pragma once
+// The device limits the compute passes must respect: work groups per dispatch and storage block
+// size (GL_MAX_COMPUTE_WORK_GROUP_COUNT, GL_MAX_SHADER_STORAGE_BLOCK_SIZE).
+#include <cstddef>
+
+#include "render/shader_program.h"
+
+namespace gps {
+
+/// Runs `program` (current) over `count` invocations in groups of kWorkGroupSize, in as many
+/// dispatches as GL_MAX_COMPUTE_WORK_GROUP_COUNT (x), or a lower `group_limit` > 0, requires; the
+/// program's `u_first` uniform gets each dispatch's first invocation.
+void dispatch_split(const ShaderProgram& program, int count, int group_limit);
+
+/// Throws gps::Error naming the mesh and the figures if `bytes` of `what`, read by a shader as one
+/// storage block, exceed GL_MAX_SHADER_STORAGE_BLOCK_SIZE (or a lower `limit` > 0).
+void check_storage_fits(const char* what, size_t bytes, int n_vertices, int n_faces, long long limit);
+
+}  // namespace gps
