@@ -6,16 +6,12 @@
 #include <Eigen/Geometry>
 #include <random>
 
+#include "tests/support/random_spd.h"
+
 namespace gps {
 namespace {
 
-Mat3 random_spd(std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  Mat3 a;
-  for (int i = 0; i < 9; ++i) a.data()[i] = u(rng);
-  Mat3 c = a * a.transpose() + 0.05 * Mat3::Identity();
-  return 0.5 * (c + c.transpose());
-}
+Mat3 random_spd(std::mt19937& rng) { return test::random_spd(rng, 0.05); }
 
 TEST(CovarianceEdit, AxesRoundTrip) {
   std::mt19937 rng(1);

@@ -5,15 +5,12 @@
 #include <Eigen/Eigenvalues>
 #include <random>
 
+#include "tests/support/random_spd.h"
+
 namespace gps {
 namespace {
 
-Mat3 random_spd(std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Mat3 a;
-  for (int i = 0; i < 9; ++i) a.data()[i] = u(rng);
-  return a * a.transpose() + 0.1 * Mat3::Identity();
-}
+using test::random_spd;
 
 Vec3 random_vec(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-3.0, 3.0);

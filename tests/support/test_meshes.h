@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/covariance_mesh.h"
+#include "tests/support/random_spd.h"
 
 namespace gps::test {
 
@@ -95,14 +96,7 @@ inline CovarianceMesh triangle_grid_mesh(int n, int m, double sigma = 0.3) {
 /// Every covariance replaced by a random anisotropic one of about the same size.
 inline CovarianceMesh with_random_covariances(CovarianceMesh m, unsigned seed) {
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (auto& c : m.covariances) {
-    Mat3 a;
-    for (int i = 0; i < 9; ++i) a.data()[i] = u(rng);
-    const double s = c.trace() / 3.0;
-    c = s * (0.3 * a * a.transpose() + 0.2 * Mat3::Identity());
-    c = (0.5 * (c + c.transpose())).eval();
-  }
+  for (auto& c : m.covariances) c = (c.trace() / 3.0) * 0.3 * random_spd(rng, 0.2 / 0.3);
   return m;
 }
 
