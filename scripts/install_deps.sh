@@ -9,7 +9,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   libosd-dev  # OpenSubdiv: the peer benchmark only (bench/), never linked into core, render or app
   xvfb xauth fonts-dejavu-core
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev libomp-dev  # the fuzzers (clang, with OpenMP in core)
 )
 missing=()
 for p in "${packages[@]}"; do
