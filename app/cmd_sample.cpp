@@ -29,7 +29,7 @@ void add_sample_command(CLI::App& app) {
     if (args->name.empty()) throw usage_error("sample: give a sample name (see gpsurf sample --list)");
     if (args->output.empty()) throw usage_error("sample: give an output file with -o");
     if (args->size != 0 && !sample_has_size(args->name))
-      throw usage_error("sample: --size applies to grid and sphere only, not '" + args->name + "'");
+      throw usage_error("sample: --size applies to grid, sphere and icosphere only, not '" + args->name + "'");
     write_mesh(args->output, make_sample(args->name, args->size), args->binary);
     std::cout << "wrote " << args->name << " to " << args->output << "\n";
   });

@@ -331,6 +331,6 @@ CovarianceMesh make_sample(const std::string& name, int size) {
   throw usage_error("unknown sample '" + name + "' (known: " + known + ")");
 }
 
-bool sample_has_size(const std::string& name) { return name == "grid" || name == "sphere"; }
+bool sample_has_size(const std::string& name) { return name == "grid" || name == "sphere" || name == "icosphere"; }
 
 }  // namespace gps

@@ -23,11 +23,15 @@ constexpr int kGaussians = kBindingGaussians, kPoints = kBindingPoints, kOffsets
               kChanged = kBindingChanged, kRows = kBindingRows, kEvTables = kBindingEvTables, kEdges = kBindingPatchEdges,
               kBindings = kBindingCount;
 
-// The patch program of a shape: quads (Catmull-Clark plans) or triangles (Loop plans).
-ShaderProgram patch_program(PatchShape shape, bool feedback) {
-  const bool triangles = shape == PatchShape::triangle;
+// The patch program of a shape: quads (Catmull-Clark plans) or triangles (Loop plans). Triangle
+// patches draw their wireframe through mesh_geom.glsl (the tessellator's triangles do not follow
+// lines of constant barycentrics).
+enum class PatchOutput { shaded, feedback, wireframe };
+ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
+  const bool triangles = shape == PatchShape::triangle, feedback = output == PatchOutput::feedback;
   std::vector<const char*> control = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::tess_levels};
   std::vector<const char*> evaluation = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
+  if (output == PatchOutput::wireframe) evaluation.insert(evaluation.begin(), shaders::geometry_next);
   control.push_back(triangles ? shaders::triangle_tesc : shaders::patch_tesc);
   if (triangles) evaluation.push_back(shaders::loop_eval);
   evaluation.push_back(triangles ? shaders::triangle_tese : shaders::patch_tese);
@@ -36,8 +40,9 @@ ShaderProgram patch_program(PatchShape shape, bool feedback) {
                                      {GL_TESS_EVALUATION_SHADER, evaluation}};
   const std::string name = triangles ? "triangle_patch" : "patch";
   if (feedback) return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal"});
+  if (output == PatchOutput::wireframe) stages.push_back({GL_GEOMETRY_SHADER, {shaders::mesh_geom}});
   stages.push_back({GL_FRAGMENT_SHADER, {shaders::shade_frag}});
-  return ShaderProgram(name, stages);
+  return ShaderProgram(name + (output == PatchOutput::wireframe ? "_wire" : ""), stages);
 }
 
 }  // namespace
@@ -45,12 +50,13 @@ ShaderProgram patch_program(PatchShape shape, bool feedback) {
 SurfaceRenderer::SurfaceRenderer()
     : dual_map_("dual_map", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::dual_map_comp}}}),
       stencil_("stencil", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::stencil_comp}}}),
-      patches_(patch_program(PatchShape::quad, false)),
-      feedback_(patch_program(PatchShape::quad, true)),
-      triangle_patches_(patch_program(PatchShape::triangle, false)),
-      triangle_feedback_(patch_program(PatchShape::triangle, true)),
+      patches_(patch_program(PatchShape::quad, PatchOutput::shaded)),
+      feedback_(patch_program(PatchShape::quad, PatchOutput::feedback)),
+      triangle_patches_(patch_program(PatchShape::triangle, PatchOutput::shaded)),
+      triangle_feedback_(patch_program(PatchShape::triangle, PatchOutput::feedback)),
+      triangle_wire_(patch_program(PatchShape::triangle, PatchOutput::wireframe)),
       triangles_("mesh", {{GL_VERTEX_SHADER, {shaders::mesh_vert}}, {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
-      triangles_wire_("mesh_wire", {{GL_VERTEX_SHADER, {"#define GEOMETRY_NEXT\n", shaders::mesh_vert}},
+      triangles_wire_("mesh_wire", {{GL_VERTEX_SHADER, {shaders::geometry_next, shaders::mesh_vert}},
                                     {GL_GEOMETRY_SHADER, {shaders::mesh_geom}},
                                     {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
       lines_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
@@ -288,7 +294,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glBindTextureUnit(0, matcap_);
     for (int b = 0; b < kBindings; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
     // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
-    const ShaderProgram& program = !o.static_triangles ? patch_program_for(false) : o.wireframe ? triangles_wire_ : triangles_;
+    const ShaderProgram& program = !o.static_triangles ? patch_program_for(false, o.wireframe) : o.wireframe ? triangles_wire_ : triangles_;
     set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
     program.use();
     if (o.static_triangles) {
@@ -329,7 +335,7 @@ std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& c
   glNamedBufferData(buffer, GLsizeiptr(max_vertices * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
   glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
   for (int b = 0; b < kBindings; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
-  const ShaderProgram& feedback = patch_program_for(true);
+  const ShaderProgram& feedback = patch_program_for(true, false);
   set_frame_uniforms(feedback, camera, o, aspect, 512, 512);
   feedback.use();
   glEnable(GL_RASTERIZER_DISCARD);
@@ -371,8 +377,8 @@ void SurfaceRenderer::draw_patches(const ShaderProgram& program, const DrawOptio
   }
 }
 
-const ShaderProgram& SurfaceRenderer::patch_program_for(bool feedback) const {
-  if (tables_.plans.shape == PatchShape::triangle) return feedback ? triangle_feedback_ : triangle_patches_;
+const ShaderProgram& SurfaceRenderer::patch_program_for(bool feedback, bool wireframe) const {
+  if (tables_.plans.shape == PatchShape::triangle) return feedback ? triangle_feedback_ : wireframe ? triangle_wire_ : triangle_patches_;
   return feedback ? feedback_ : patches_;
 }
 

@@ -108,9 +108,9 @@ private:
 
   PlanTables tables_;
   std::vector<int> dependents_offsets_, dependents_rows_;
-  const ShaderProgram& patch_program_for(bool feedback) const;
+  const ShaderProgram& patch_program_for(bool feedback, bool wireframe) const;
 
-  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangle_patches_, triangle_feedback_, triangles_, triangles_wire_, lines_;
+  ShaderProgram dual_map_, stencil_, patches_, feedback_, triangle_patches_, triangle_feedback_, triangle_wire_, triangles_, triangles_wire_, lines_;
   EllipsoidOverlay ellipsoids_;
   unsigned buffers_[gpu::kBindingCount] = {};
   size_t buffer_sizes_[gpu::kBindingCount] = {};

@@ -1,10 +1,4 @@
 // Triangles from a vertex buffer (CPU tessellation or reference subdivision), shaded like the patches.
-#ifdef GEOMETRY_NEXT  // the wireframe program: mesh_geom.glsl reads these under its own names
-#define v_position g_position
-#define v_normal g_normal
-#define v_grid g_grid
-#define v_kind g_kind
-#endif
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 uniform mat4 u_view_projection;

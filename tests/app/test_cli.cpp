@@ -107,7 +107,7 @@ TEST(Cli, IgnoredOptionsAndRangesAreShortErrors) {
   run_command(gpsurf("sample cube -o " + dir.file("cube.ply")));
   const auto size = run_command(gpsurf("sample cube --size 5 -o " + dir.file("c.ply")));
   EXPECT_EQ(size.exit_code, 2) << size.output;
-  EXPECT_NE(size.output.find("--size applies to grid and sphere only"), std::string::npos) << size.output;
+  EXPECT_NE(size.output.find("--size applies to grid, sphere and icosphere only"), std::string::npos) << size.output;
   EXPECT_FALSE(std::filesystem::exists(dir.file("c.ply")));
   EXPECT_EQ(run_command(gpsurf("sample sphere --size 500 -o " + dir.file("s.ply"))).exit_code, 0);
   const auto bias = run_command(gpsurf("infer " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --bias 0"));
