@@ -38,13 +38,7 @@ void PlannedSurface::update(const CovarianceMesh& mesh, const std::vector<int>& 
 }
 
 std::vector<int> PlannedSurface::rows_reading(const std::vector<int>& vertices) const {
-  std::vector<int> rows;
-  for (const int v : vertices)
-    rows.insert(rows.end(), dependents_.rows.begin() + dependents_.offsets[size_t(v)],
-                dependents_.rows.begin() + dependents_.offsets[size_t(v) + 1]);
-  std::sort(rows.begin(), rows.end());
-  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-  return rows;
+  return gps::rows_reading(dependents_, vertices);
 }
 
 }  // namespace gps

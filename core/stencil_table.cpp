@@ -129,4 +129,14 @@ void update_stencils(const StencilTable& t, const StencilDependents& d, const st
   for (const int r : rows) apply_row(r);
 }
 
+std::vector<int> rows_reading(const StencilDependents& dependents, const std::vector<int>& vertices) {
+  std::vector<int> rows;
+  for (const int v : vertices)
+    rows.insert(rows.end(), dependents.rows.begin() + dependents.offsets[size_t(v)],
+                dependents.rows.begin() + dependents.offsets[size_t(v) + 1]);
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  return rows;
+}
+
 }  // namespace gps

@@ -37,6 +37,8 @@ struct StencilDependents {
   std::vector<int> offsets, rows;
 };
 StencilDependents stencil_dependents(const StencilTable& table);
+/// The rows that read any of `vertices`, sorted, without repeats.
+std::vector<int> rows_reading(const StencilDependents& dependents, const std::vector<int>& vertices);
 
 /// Re-applies only the rows that read the changed base vertices (all rows once those are a quarter
 /// of the table or more: faster, measured); `points` holds every point and must already carry the

@@ -106,9 +106,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, const PlanOptions& op
   tables_ = std::move(tables);
   n_base_ = n_vertices;
   const StencilTable& s = tables_.stencils;
-  const StencilDependents deps = stencil_dependents(s);
-  dependents_offsets_ = deps.offsets;
-  dependents_rows_ = deps.rows;
+  dependents_ = stencil_dependents(s);
   upload(buffers_[kOffsets], buffer_sizes_[kOffsets], s.offsets);
   upload(buffers_[kIndices], buffer_sizes_[kIndices], s.indices);
   upload(buffers_[kWeights], buffer_sizes_[kWeights], std::vector<float>(s.weights.begin(), s.weights.end()));
@@ -176,12 +174,7 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
   for (int b = 0; b < kBindings; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
   int vertex_count = n_base_, row_count = n_rows;
   if (changed) {
-    std::vector<int> rows;
-    for (const int v : *changed)
-      rows.insert(rows.end(), dependents_rows_.begin() + dependents_offsets_[size_t(v)],
-                  dependents_rows_.begin() + dependents_offsets_[size_t(v) + 1]);
-    std::sort(rows.begin(), rows.end());
-    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    const std::vector<int> rows = rows_reading(dependents_, *changed);
     upload(buffers_[kChanged], buffer_sizes_[kChanged], *changed);
     upload(buffers_[kRows], buffer_sizes_[kRows], rows);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChanged, buffers_[kChanged]);

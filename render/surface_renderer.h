@@ -107,7 +107,7 @@ private:
                           int height) const;
 
   PlanTables tables_;
-  std::vector<int> dependents_offsets_, dependents_rows_;
+  StencilDependents dependents_;  // which stencil rows read each base vertex
   const ShaderProgram& patch_program_for(bool feedback, bool wireframe) const;
 
   ShaderProgram dual_map_, stencil_, patches_, feedback_, triangle_patches_, triangle_feedback_, triangle_wire_, triangles_, triangles_wire_, lines_;
