@@ -124,5 +124,30 @@ TEST(ExactPlans, NormalsAreDefinedAtExtraordinaryVertices) {
   }
 }
 
+// With exact nodes the plans stop one level below an irregular vertex (two below a split face's
+// centre), whatever depth is asked for, and need far fewer stencil rows than the thesis' plans.
+TEST(ExactPlans, StopOneLevelBelowIrregularVertices) {
+  for (const char* name : {"cube", "valence7", "wirecube", "cylinder", "cone-pointy", "pawn", "sphere"}) {
+    const PolygonTopology t = topology_of(make_sample(name).mesh);
+    const PlanTables exact = build_surface_plans(t, PlanOptions{Scheme::catmull_clark});
+    const PlanTables thesis = build_surface_plans(t, PlanOptions{Scheme::catmull_clark, 3, LoopBeta::loop, false});
+    std::printf("%-12s exact: depth %d, %d rows, %zu nodes; thesis depth 3: %d rows, %zu nodes\n", name, exact.plans.max_depth,
+                exact.stencils.n_rows(), exact.plans.nodes.size(), thesis.stencils.n_rows(), thesis.plans.nodes.size());
+    EXPECT_LE(exact.plans.max_depth, 2) << name;
+    EXPECT_LT(exact.stencils.n_rows(), thesis.stencils.n_rows()) << name;
+    const std::vector<Dual> points(size_t(exact.stencils.n_points()), Dual::Zero());  // the node kinds are what is looked at
+    int terminal = 0;
+    for (int patch = 0; patch < exact.plans.n_patches(); ++patch)
+      for (const double u : {0.1, 0.4, 0.6, 0.9})
+        for (const double v : {0.1, 0.4, 0.6, 0.9}) {
+          NodeKind kind;
+          Dual q, q_u, q_v;
+          evaluate_dual(exact.plans, points, patch, u, v, q, q_u, q_v, nullptr, &kind);
+          terminal += kind == NodeKind::terminal;
+        }
+    EXPECT_EQ(terminal, 0) << name << ": no approximate (Bézier) node is left";
+  }
+}
+
 }  // namespace
 }  // namespace gps

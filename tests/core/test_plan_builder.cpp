@@ -100,12 +100,14 @@ TEST(PlanBuilder, ErrorNearExtraordinaryVerticesFallsWithDepth) {
 }
 
 // Both sides of every shared patch edge give the same positions at the same edge parameters, where
-// a quad meets two half-size patches of a split face too (T-junctions, core/plan_table.h).
+// a quad meets two half-size patches of a split face too (T-junctions, core/plan_table.h); exact
+// plans and the thesis' plans of depth 3.
 TEST(PlanBuilder, NeighbouringPatchesAreWatertight) {
+  for (const bool exact : {true, false})
   for (const char* name : {"wirecube", "valence9", "cylinder", "cone-pointy", "grid", "pawn", "prism", "open-cylinder"}) {
     const std::string n = name;
     const CovarianceMesh mesh = n == "prism" ? test::prism_mesh() : n == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name, 64);
-    const PlannedMesh p(with_random_covariances(mesh, 7), 3);
+    const PlannedMesh p(with_random_covariances(mesh, 7), PlanOptions{Scheme::catmull_clark, 3, LoopBeta::loop, exact});
     const auto& plans = p.tables.plans;
     const double diag = bounding_box_diagonal(p.mesh);
     // The first evaluation at parameter s/32 of each mesh edge (lower point first).

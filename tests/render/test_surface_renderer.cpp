@@ -84,12 +84,25 @@ TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
   }
 }
 
+// Every sample's patches (exact extraordinary nodes included) under its own scheme and under
+// Catmull-Clark, float on the GPU against double on the CPU (issue 11: ≤ 2e-6 of the diagonal, 0.05°).
+// The pawn's inferred covariances are thin at its poles: there q_u, q_v are differences of 9D values
+// of size ~1e4 and float keeps 0.35° of the normal, on regular nodes as on extraordinary ones.
 TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
-  for (const char* name : {"cube", "valence5", "wirecube", "cylinder", "cone"}) {
-    const VertexErrors e = compare_vertices(make_sample(name), PlanOptions{Scheme::catmull_clark, 3}, 6.0f);
-    EXPECT_GT(e.count, 100u) << name;
-    EXPECT_LT(e.position, 1e-4) << name;
-    EXPECT_LT(e.normal_degrees, 1.0) << name;
+  for (const std::string& name : sample_names()) {
+    const CovarianceMesh mesh = make_sample(name, 300);
+    const bool large = mesh.mesh.n_faces() > 200;
+    for (const auto& scheme : {std::optional<Scheme>{}, std::optional<Scheme>{Scheme::catmull_clark}}) {
+      if (scheme && scheme_for(topology_of(mesh.mesh), {}) == Scheme::catmull_clark) continue;  // the same plans
+      for (const float level : {1.0f, large ? 3.0f : 7.0f}) {
+        const VertexErrors e = compare_vertices(mesh, PlanOptions{scheme}, level);
+        std::printf("%-13s %-6s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.4f degrees, %zu vertices\n",
+                    name.c_str(), scheme ? "cc" : "auto", level, e.position, e.normal_degrees, e.count);
+        EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
+        EXPECT_LT(e.position, 2e-6) << name << " level " << level;
+        EXPECT_LT(e.normal_degrees, name == "pawn" ? 0.5 : 0.05) << name << " level " << level;
+      }
+    }
   }
 }
 
