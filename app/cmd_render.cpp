@@ -112,7 +112,7 @@ void render(const RenderArgs& a) {
 }
 
 // --script FILE.json: {"renders": [{"mesh": FILE or "sample:NAME", "output": FILE.png, "size": "WxH",
-// "level": L, "pixels": P, "depth": D, "scheme": "auto"|"loop"|"catmull-clark", "loop_beta": "loop"|"warren", "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]",
+// "level": L, "pixels": P, "depth": D, "approximate": true|false, "scheme": "auto"|"loop"|"catmull-clark", "loop_beta": "loop"|"warren", "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]",
 // "mesh_lines": bool, "wireframe": bool, "ellipsoids": bool, "sigma": k, "background": "r,g,b",
 // "aov": ["position=FILE.exr", ...], "reference": N,
 // "edits": [{"vertex": i, "mean": [x,y,z], "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]}
@@ -139,6 +139,7 @@ void run_script(const std::string& path, const std::string& context_name) {
       a.level = job.value("level", a.level);
       a.pixels = job.value("pixels", a.pixels);
       a.plans.depth = job.value("depth", a.plans.depth);
+      a.plans.approximate = job.value("approximate", a.plans.approximate);
       a.plans.scheme = job.value("scheme", a.plans.scheme);
       a.plans.loop_beta = job.value("loop_beta", a.plans.loop_beta);
       a.plans.options();  // checks the names and the depth

@@ -11,9 +11,11 @@ PlanOptions PlanArguments::options() const {
   else if (scheme != "auto") throw usage_error("scheme must be auto, loop or catmull-clark, got '" + scheme + "'");
   if (loop_beta != "loop" && loop_beta != "warren") throw usage_error("loop-beta must be loop or warren, got '" + loop_beta + "'");
   o.loop_beta = loop_beta == "warren" ? LoopBeta::warren : LoopBeta::loop;
-  if (depth < 0 || depth > 8) throw usage_error("depth must be 1..8, got " + std::to_string(depth));
-  o.exact = depth == 0;
-  if (depth > 0) o.depth = depth;
+  o.exact = !approximate;
+  if (approximate) o.depth = 3;
+  if (depth >= 0) o.depth = depth;
+  if (o.depth < (approximate ? 1 : 0) || o.depth > 8)
+    throw usage_error("depth must be " + std::string(approximate ? "1" : "0") + "..8, got " + std::to_string(depth));
   return o;
 }
 
@@ -22,9 +24,12 @@ void add_plan_arguments(CLI::App* cmd, PlanArguments& a) {
       ->check(CLI::IsMember({"auto", "loop", "catmull-clark"}));
   cmd->add_option("--loop-beta", a.loop_beta, "Loop vertex weight: Loop's original or Warren's 3/(8n)")->check(CLI::IsMember({"loop", "warren"}));
   cmd->add_option("--depth", a.depth,
-                  "Catmull-Clark: approximate extraordinary vertices with the thesis' Bezier plans of this depth 1..8 "
-                  "(default: evaluate them exactly; Loop plans are always exact)")
-      ->check(CLI::Range(1, 8));
+                  "Catmull-Clark plan depth: where exact extraordinary nodes take over, 0..8 (default " + std::to_string(kExactPlanDepth) +
+                      "; deeper: more stencil rows, cheaper evaluation), or with --approximate the depth of the Bezier patches, 1..8 "
+                      "(default 3). Loop plans are always exact.")
+      ->check(CLI::Range(0, 8));
+  cmd->add_flag("--approximate", a.approximate,
+                "Catmull-Clark: the thesis' plans, Bezier patches approximating the surface at extraordinary vertices");
 }
 
 }  // namespace gps

@@ -19,6 +19,9 @@ namespace {
 
 using Combo = LocalCombination;
 
+// Exact plans refine past their depth only where a node is not yet self-similar; this bounds it.
+constexpr int kDeepestPlan = 8;
+
 // The plans of a range of faces; an extraordinary node's table field holds an index into `ev`
 // until merge() lays the tables out.
 struct RangePlans {
@@ -129,9 +132,9 @@ private:
     const std::vector<int> corners(c.begin(), c.end());
     if (irregular == 0 && bspline_leaves_) return emit_leaf(NodeKind::regular, m, bspline_net(m, m.find_face(corners), c));
     if (irregular == 0) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
-    if (exact_ && irregular == 1 && m.complete[size_t(c[size_t(corner)])])
+    if (exact_ && irregular == 1 && depth >= max_depth_ && m.complete[size_t(c[size_t(corner)])])
       if (const int offset = emit_extraordinary(m, c, corner); offset >= 0) return offset;
-    if (depth == max_depth_) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
+    if (depth == (exact_ ? kDeepestPlan : max_depth_)) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
 
     const int offset = int(plans_.nodes.size());
     plans_.nodes.insert(plans_.nodes.end(), {int32_t(NodeKind::internal), 0, 0, 0, 0});
@@ -260,7 +263,9 @@ void check_plan_valences(const PolygonTopology& t) {
 }  // namespace
 
 PlanTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary, bool bspline_leaves) {
-  if (max_depth < 1 || max_depth > 8) throw usage_error("plan depth must be 1..8, got " + std::to_string(max_depth));
+  const int shallowest = extraordinary == ExtraordinaryNodes::exact ? 0 : 1;
+  if (max_depth < shallowest || max_depth > kDeepestPlan)
+    throw usage_error("plan depth must be " + std::to_string(shallowest) + "..8, got " + std::to_string(max_depth));
   check_plan_valences(topology);
   const LocalMesh base = base_local_mesh(topology);
   // Faces in ranges of a fixed size, built on all cores (OpenMP), merged in order.

@@ -13,10 +13,14 @@
 
 namespace gps {
 
+/// The depth of exact Catmull-Clark plans unless asked otherwise: measured fastest at equal
+/// exactness (issue 11's closing note; gpsurf bench --render --depth N).
+constexpr int kExactPlanDepth = 1;
+
 struct PlanOptions {
   std::optional<Scheme> scheme;  // empty: Loop for a mesh of triangles only (valences up to
                                  // kMaxLoopValence), else Catmull-Clark
-  int depth = 3;                 // Catmull-Clark without `exact`: the thesis' Bézier plans of this depth 1..8
+  int depth = kExactPlanDepth;   // Catmull-Clark: where exact nodes take over (0..8), or the thesis' Bézier plans (1..8)
   LoopBeta loop_beta = LoopBeta::loop;
   bool exact = true;             // Catmull-Clark: extraordinary vertices evaluated exactly (Loop's always are)
 };

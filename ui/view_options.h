@@ -20,7 +20,7 @@ struct ViewOptions {
   bool adaptive = true;       // draw.pixels is used (else draw.level)
   float adaptive_pixels = 6.0f;
   bool exact = true;          // Catmull-Clark extraordinary vertices evaluated exactly (else the thesis' plans)
-  int depth = 3;              // the thesis' Catmull-Clark plan depth, when not exact (rebuilds the plans when changed)
+  int depth = kExactPlanDepth; // Catmull-Clark plan depth (rebuilds the plans when changed)
   int scheme = 0;             // 0 automatic (Loop for triangle meshes), 1 Loop, 2 Catmull-Clark
   bool warren = false;        // Loop with Warren's β (as Preiner's demo)
   bool triangle_mesh = false; // the open mesh has only triangles: the panel offers the scheme (not kept)

@@ -38,7 +38,7 @@ TEST(TessellateCli, WritesPlyWithNormalsAndObj) {
 TEST(TessellateCli, UsageAndRuntimeErrors) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample cube -o " + dir.file("cube.ply"))).exit_code, 0);
-  for (const std::string& args : {std::string("--depth 0"), std::string("--depth 9"), std::string("--level 0"), std::string("--level 65")}) {
+  for (const std::string& args : {std::string("--depth 9"), std::string("--approximate --depth 0"), std::string("--level 0"), std::string("--level 65")}) {
     const auto r = run_command(gpsurf("tessellate " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " " + args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;

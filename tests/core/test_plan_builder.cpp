@@ -249,7 +249,7 @@ TEST(PlanBuilder, AnalyticNormalsMatchFiniteDifferences) {
     EXPECT_LT((c->du - du).norm(), 1e-5 * (1 + du.norm()));
     EXPECT_LT((c->dv - dv).norm(), 1e-5 * (1 + dv.norm()));
   }
-  EXPECT_THROW(build_plans(topology_of(p.mesh.mesh), 0), Error);
+  EXPECT_THROW(build_plans(topology_of(p.mesh.mesh), 0, ExtraordinaryNodes::bezier), Error);
   EXPECT_THROW(build_plans(topology_of(p.mesh.mesh), 9), Error);
 }
 

@@ -74,7 +74,7 @@ TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
     const CovarianceMesh mesh = make_sample(name);
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh);
-    const test::PlannedMesh cpu(mesh, PlanOptions{std::nullopt, 3});
+    const test::PlannedMesh cpu(mesh, PlanOptions{});
     const auto gpu = renderer.read_points();
     ASSERT_EQ(gpu.size(), cpu.points.size() * 12);
     static constexpr int kSlot[9] = {0, 1, 2, 3, 4, 5, 6, 7, 8};
@@ -130,7 +130,7 @@ TEST_F(GpuTest, AovsMatchTheCpuEvaluatorPixelForPixel) {
     const CovarianceMesh mesh = make_sample(name);
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh);
-    const test::PlannedMesh cpu(mesh, PlanOptions{std::nullopt, 3});
+    const test::PlannedMesh cpu(mesh, PlanOptions{});
     DrawOptions o;
     o.level = 64;  // the two triangulations differ by the chord error, ~1e-4 of the diagonal at 64 here
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
