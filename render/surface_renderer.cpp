@@ -301,7 +301,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   }
   if (o.ellipsoids && ellipsoids_.count() > 0) {
     const GpuPassScope pass(timer_, "ellipsoids");
-    ellipsoids_.draw(camera.view_projection(aspect), o.sigma_scale);
+    ellipsoids_.draw(camera.view_projection(aspect), o.sigma_scale, o.ellipsoid_vertices);
   }
   if (o.mesh_lines && line_index_count_ > 0) {
     const GpuPassScope pass(timer_, "mesh lines");

@@ -32,6 +32,7 @@ struct DrawOptions {
   bool wireframe = false;  // tessellation wireframe over the shading
   bool mesh_lines = false; // the base mesh as thin grey lines, faint (kHiddenCageAlpha) where behind the surface
   bool ellipsoids = false; // covariance ellipsoids
+  const std::vector<int>* ellipsoid_vertices = nullptr;  // set: only these vertices' ellipsoids (ascending)
   float sigma_scale = 1.0f;
   glm::vec3 background{1.0f, 1.0f, 1.0f};
   bool static_triangles = false;  // draw the triangles of set_triangles() instead of the patches
