@@ -312,7 +312,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glBindVertexArray(lines_vao_);
     glDepthMask(GL_FALSE);  // the cage with depth: its parts behind the surface faint, the others full
     glEnablei(GL_BLEND, 0);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // the image's alpha kept
     for (const bool hidden : {true, false}) {
       glDepthFunc(hidden ? GL_GREATER : GL_LEQUAL);
       lines_.set("u_color", glm::vec4(0.45f, 0.45f, 0.45f, hidden ? kHiddenCageAlpha : 1.0f));
