@@ -1,6 +1,7 @@
 #include "ui/inspector_panel.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -202,6 +203,7 @@ void InspectorPanel::draw_presets(EditorDocument& document, const std::vector<in
 }
 
 void InspectorPanel::draw(EditorDocument& document, const Selection& selection, ReachOptions& reach, bool* open) {
+  if (precise_id_ != 0 && ImGui::GetActiveID() != precise_id_) precise_id_ = 0;  // its field went away while edited
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + 10), ImGuiCond_FirstUseEver,
                           ImVec2(1, 0));

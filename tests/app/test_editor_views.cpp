@@ -29,7 +29,7 @@ using test::pixel_of;
 constexpr int kWidth = 1024, kHeight = 700;
 // The Inspector's first row of fields (mean x, y, z; then σ1..3 a row below) at its first-use place
 // in a 1024-pixel-wide window: 360 wide, 10 pixels from the right edge, below the menu bar.
-const glm::vec2 kMeanX(700.0f, 72.0f), kSigma1(700.0f, 97.0f);
+const glm::vec2 kMeanX(700.0f, 72.0f), kMeanY(790.0f, 72.0f), kSigma1(700.0f, 97.0f);
 
 Viewport editor_view(const CovarianceMesh& mesh) {
   Viewport v;
@@ -226,6 +226,20 @@ TEST_F(EditorViews, InspectorFieldsHoldFullPrecisionWhileEdited) {
   escape.click(kMeanX).wait(2).text("7").wait(2).key("escape").wait(2);
   ASSERT_EQ(play(escape, "--save " + dir_.file("escaped.ply")).exit_code, 0);
   EXPECT_EQ(read_text_file(dir_.file("escaped.ply")), read_text_file(dir_.file("original.ply")));
+
+  // Two vertices whose y differ: the field reads "mixed", and a typed value applies to both exactly.
+  int below = -1;
+  for (size_t v = 0; v < original_.n_vertices(); ++v)
+    if ((original_.mean(v) - Vec3(1, -1, 1)).norm() < 1e-12) below = int(v);
+  ASSERT_GE(below, 0);
+  Events mixed = select;
+  mixed.click(pixel_of(view, original_.mean(size_t(below))), "shift").wait(3).click(kMeanY).wait(2).text("0.1").key("enter").wait(2);
+  ASSERT_EQ(play(mixed, "--save " + dir_.file("mixed.ply")).exit_code, 0);
+  const CovarianceMesh both = read_mesh(dir_.file("mixed.ply"));
+  EXPECT_EQ(both.mean(6).y(), 0.1);
+  EXPECT_EQ(both.mean(size_t(below)).y(), 0.1);
+  EXPECT_EQ(both.mean(6).x(), original_.mean(6).x()) << "the other coordinates as they were";
+  EXPECT_EQ(both.mean(size_t(below)).z(), original_.mean(size_t(below)).z());
 
   // A screenshot while σ1 is being edited: the field holds 0.063245553203367583, the others round.
   Events editing = select;
