@@ -21,7 +21,8 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
 
 PlanTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options) {
   if (scheme_for(topology, options) == Scheme::loop) return build_loop_plans(topology, options.loop_beta);
-  return build_plans(topology, options.depth);
+  if (options.exact) return build_plans(topology, 8, ExtraordinaryNodes::exact);
+  return build_plans(topology, options.depth, ExtraordinaryNodes::bezier);
 }
 
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {

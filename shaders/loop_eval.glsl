@@ -33,7 +33,7 @@ void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3
   }
   int r = nodes[node + 1], table = nodes[node + 2], k = nodes[node + 3];
   float s, t, ev_scale;
-  turn_to_corner(r, u, v, s, t);
+  triangle_turn_to_corner(r, u, v, s, t);
   int block = loop_ev_locate(s, t, ev_scale);
   int rows, n_rows;
   if (block >= 0) {
@@ -62,7 +62,7 @@ void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3
     va += x_t * a; vb += x_t * b; vc += x_t * c;
   }
   float d[4];
-  turned_derivative_coefficients(r, d);
+  triangle_turned_derivative_coefficients(r, d);
   vec4 sa = ua, sb = ub, sc = uc;
   ua = ev_scale * (d[0] * sa + d[1] * va); ub = ev_scale * (d[0] * sb + d[1] * vb); uc = ev_scale * (d[0] * sc + d[1] * vc);
   va = ev_scale * (d[2] * sa + d[3] * va); vb = ev_scale * (d[2] * sb + d[3] * vb); vc = ev_scale * (d[2] * sc + d[3] * vc);
