@@ -194,12 +194,13 @@ GPS_FN void triangle_turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]
 GPS_FN int loop_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale) {
   scale = 1.0;
   int n = 0;
-  for (int i = 0; i < kEvLevels - 1; ++i) {
-    if (s + t >= 0.5) break;
-    s = 2.0 * s;
-    t = 2.0 * t;
-    scale = 2.0 * scale;
-    n += 1;
+  for (int i = 0; i < kEvLevels - 1; ++i) {  // no break: llvmpipe miscompiles a divergent early exit
+    if (s + t < 0.5) {
+      s = 2.0 * s;
+      t = 2.0 * t;
+      scale = 2.0 * scale;
+      n += 1;
+    }
   }
   if (s + t < 0.5) return -1;
   GPS_REAL sign = 1.0;
@@ -233,12 +234,13 @@ GPS_FN void quad_turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]) {
 GPS_FN int quad_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale) {
   scale = 1.0;
   int n = 0;
-  for (int i = 0; i < kEvLevels - 1; ++i) {
-    if (s >= 0.5 || t >= 0.5) break;
-    s = 2.0 * s;
-    t = 2.0 * t;
-    scale = 2.0 * scale;
-    n += 1;
+  for (int i = 0; i < kEvLevels - 1; ++i) {  // no break: llvmpipe miscompiles a divergent early exit
+    if (s < 0.5 && t < 0.5) {
+      s = 2.0 * s;
+      t = 2.0 * t;
+      scale = 2.0 * scale;
+      n += 1;
+    }
   }
   if (s < 0.5 && t < 0.5) return -1;
   int child = s >= 0.5 ? (t >= 0.5 ? 2 : 1) : 3;
