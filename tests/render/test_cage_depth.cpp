@@ -25,7 +25,7 @@ struct Shots {
 
 Shots render(const CovarianceMesh& mesh, const Camera& camera) {
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 2);
+  renderer.set_mesh(mesh);
   RenderTarget target(kSize, kSize);
   DrawOptions o;
   o.level = 8;

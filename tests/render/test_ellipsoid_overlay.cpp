@@ -43,7 +43,7 @@ protected:
   }
   static GlContext* context_;
   CovarianceMesh mesh_ = make_sample("cube");
-  void SetUp() override { renderer_.set_mesh(mesh_, 2); }
+  void SetUp() override { renderer_.set_mesh(mesh_); }
   SurfaceRenderer renderer_;
   RenderTarget target_{kSize, kSize};
   Camera camera_ = frame_box(Vec3(-2, -2, -2), Vec3(2, 2, 2), 35.0f, 25.0f);
