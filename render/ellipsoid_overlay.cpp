@@ -28,6 +28,7 @@ EllipsoidOverlay::EllipsoidOverlay()
   glCreateVertexArrays(1, &vao_);
   glCreateBuffers(1, &circle_vbo_);
   glCreateBuffers(1, &instance_vbo_);
+  glCreateBuffers(1, &indirect_);
   glNamedBufferData(circle_vbo_, GLsizeiptr(circles.size() * sizeof(float)), circles.data(), GL_STATIC_DRAW);
   glVertexArrayVertexBuffer(vao_, 0, circle_vbo_, 0, 3 * sizeof(float));
   glEnableVertexArrayAttrib(vao_, 0);
@@ -46,6 +47,7 @@ EllipsoidOverlay::~EllipsoidOverlay() {
   glDeleteVertexArrays(1, &vao_);
   glDeleteBuffers(1, &circle_vbo_);
   glDeleteBuffers(1, &instance_vbo_);
+  glDeleteBuffers(1, &indirect_);
 }
 
 void EllipsoidOverlay::upload(const CovarianceMesh& mesh, const std::vector<int>* changed) {
@@ -75,13 +77,31 @@ void EllipsoidOverlay::upload(const CovarianceMesh& mesh, const std::vector<int>
   count_ = int(mesh.n_vertices());
 }
 
-void EllipsoidOverlay::draw(const glm::mat4& view_projection, float sigma) const {
+void EllipsoidOverlay::draw(const glm::mat4& view_projection, float sigma, const std::vector<int>* only) {
   program_.set("u_view_projection", view_projection);
   program_.set("u_sigma", sigma);
   program_.set("u_color", glm::vec4(0.15f, 0.35f, 0.85f, 1.0f));
   program_.use();
   glBindVertexArray(vao_);
-  glDrawArraysInstanced(GL_LINES, 0, circle_vertex_count_, count_);
+  if (!only) {
+    glDrawArraysInstanced(GL_LINES, 0, circle_vertex_count_, count_);
+    return;
+  }
+  // The circles once per instance of each run of consecutive vertices (baseInstance: the run's first).
+  struct Command {
+    GLuint count, instances, first, base_instance;
+  };
+  std::vector<Command> commands;
+  for (const int v : *only) {
+    if (v < 0 || v >= count_) continue;
+    if (!commands.empty() && commands.back().base_instance + commands.back().instances == GLuint(v)) ++commands.back().instances;
+    else commands.push_back({GLuint(circle_vertex_count_), 1, 0, GLuint(v)});
+  }
+  if (commands.empty()) return;
+  glNamedBufferData(indirect_, GLsizeiptr(commands.size() * sizeof(Command)), commands.data(), GL_STREAM_DRAW);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, indirect_);
+  glMultiDrawArraysIndirect(GL_LINES, nullptr, GLsizei(commands.size()), 0);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 
 }  // namespace gps

@@ -19,13 +19,14 @@ public:
 
   /// Every vertex's ellipsoid (`changed` null), or only those of `changed`.
   void upload(const CovarianceMesh& mesh, const std::vector<int>* changed);
-  /// The k-σ ellipsoids as lines in the current framebuffer.
-  void draw(const glm::mat4& view_projection, float sigma) const;
+  /// The k-σ ellipsoids as lines in the current framebuffer: every vertex's (`only` null) or
+  /// those of the vertices in `only` (ascending; one indirect draw, a command per run of indices).
+  void draw(const glm::mat4& view_projection, float sigma, const std::vector<int>* only = nullptr);
   int count() const { return count_; }
 
 private:
   ShaderProgram program_;
-  unsigned vao_ = 0, circle_vbo_ = 0, instance_vbo_ = 0;
+  unsigned vao_ = 0, circle_vbo_ = 0, instance_vbo_ = 0, indirect_ = 0;
   int circle_vertex_count_ = 0;
   int count_ = 0;  // instances: per vertex a mat4 [Σ^½ | μ] (k-σ in the shader)
 };

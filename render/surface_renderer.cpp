@@ -301,21 +301,28 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   }
   if (o.ellipsoids && ellipsoids_.count() > 0) {
     const GpuPassScope pass(timer_, "ellipsoids");
-    ellipsoids_.draw(camera.view_projection(aspect), o.sigma_scale);
+    ellipsoids_.draw(camera.view_projection(aspect), o.sigma_scale, o.ellipsoid_vertices);
   }
   if (o.mesh_lines && line_index_count_ > 0) {
     const GpuPassScope pass(timer_, "mesh lines");
     lines_.set("u_view_projection", camera.view_projection(aspect));
-    lines_.set("u_color", glm::vec4(0.45f, 0.45f, 0.45f, 1.0f));
     lines_.use();
-    glDisable(GL_DEPTH_TEST);
     const GLenum only_colour[3] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE};
     glNamedFramebufferDrawBuffers(target.framebuffer(), 3, only_colour);
     glBindVertexArray(lines_vao_);
-    glDrawElements(GL_LINES, line_index_count_, GL_UNSIGNED_INT, nullptr);
+    glDepthMask(GL_FALSE);  // the cage with depth: its parts behind the surface faint, the others full
+    glEnablei(GL_BLEND, 0);
+    glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // the image's alpha kept
+    for (const bool hidden : {true, false}) {
+      glDepthFunc(hidden ? GL_GREATER : GL_LEQUAL);
+      lines_.set("u_color", glm::vec4(0.45f, 0.45f, 0.45f, hidden ? kHiddenCageAlpha : 1.0f));
+      glDrawElements(GL_LINES, line_index_count_, GL_UNSIGNED_INT, nullptr);
+    }
+    glDisablei(GL_BLEND, 0);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LEQUAL);
     const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
     glNamedFramebufferDrawBuffers(target.framebuffer(), 3, all);
-    glEnable(GL_DEPTH_TEST);
   }
   glBindVertexArray(0);
   check_gl_errors("drawing");

@@ -22,13 +22,17 @@ namespace gps {
 
 enum class ShadingMode { matcap = 0, normals = 1, flat = 2 };
 
+/// The opacity of the base mesh's lines where the surface hides them (those in front are opaque).
+constexpr float kHiddenCageAlpha = 0.25f;
+
 struct DrawOptions {
   float level = 8.0f;      // uniform tessellation level 1..64
   float pixels = 0.0f;     // > 0: adaptive levels, target edge length in pixels
   ShadingMode mode = ShadingMode::matcap;
   bool wireframe = false;  // tessellation wireframe over the shading
-  bool mesh_lines = false; // the base mesh as thin grey lines
+  bool mesh_lines = false; // the base mesh as thin grey lines, faint (kHiddenCageAlpha) where behind the surface
   bool ellipsoids = false; // covariance ellipsoids
+  const std::vector<int>* ellipsoid_vertices = nullptr;  // set: only these vertices' ellipsoids (ascending)
   float sigma_scale = 1.0f;
   glm::vec3 background{1.0f, 1.0f, 1.0f};
   bool static_triangles = false;  // draw the triangles of set_triangles() instead of the patches

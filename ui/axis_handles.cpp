@@ -30,33 +30,47 @@ HandleFrame handle_frame(const CovarianceMesh& mesh, int vertex, double k_sigma,
   return handle_frame(mesh.mean(size_t(vertex)), ellipsoid_axes(mesh.covariance(size_t(vertex))), k_sigma, view, min_pixels);
 }
 
+namespace {
+
+// Ends win over a centre as near (within a pixel): they overlap it when the axes are short.
+void consider(NearestProjected& nearest, std::vector<Handle>& handles, const HandleFrame& f, int vertex) {
+  for (int axis = 0; axis < 3; ++axis)
+    for (const int side : {1, -1}) {
+      nearest.consider(int(handles.size()), f.end(axis, side), 1);
+      handles.push_back(Handle{vertex, axis, side});
+    }
+  nearest.consider(int(handles.size()), f.centre, 0);
+  handles.push_back(Handle{vertex, -1, 1});
+}
+
+}  // namespace
+
 std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh, const std::vector<int>& vertices,
                                  double k_sigma, float radius) {
-  // Ends win over a centre as near (within a pixel): they overlap it when the axes are short.
   NearestProjected nearest(view.camera, view.width, view.height, pixel, radius, 1.0f);
   std::vector<Handle> handles;
-  for (const int v : vertices) {
-    const HandleFrame f = handle_frame(mesh, v, k_sigma, view);
-    for (int axis = 0; axis < 3; ++axis)
-      for (const int side : {1, -1}) {
-        nearest.consider(int(handles.size()), f.end(axis, side), 1);
-        handles.push_back(Handle{v, axis, side});
-      }
-    nearest.consider(int(handles.size()), f.centre, 0);
-    handles.push_back(Handle{v, -1, 1});
-  }
+  for (const int v : vertices) consider(nearest, handles, handle_frame(mesh, v, k_sigma, view), v);
+  if (nearest.best() < 0) return std::nullopt;
+  return handles[size_t(nearest.best())];
+}
+
+std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const HandleFrame& frame, int vertex, float radius) {
+  NearestProjected nearest(view.camera, view.width, view.height, pixel, radius, 1.0f);
+  std::vector<Handle> handles;
+  consider(nearest, handles, frame, vertex);
   if (nearest.best() < 0) return std::nullopt;
   return handles[size_t(nearest.best())];
 }
 
 HandleDrag::HandleDrag(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Handle& grabbed, double k_sigma,
-                       const Viewport& view, glm::vec2 start_pixel, bool common_frame)
+                       const Viewport& view, glm::vec2 start_pixel, bool common_frame, const std::optional<Vec3>& pivot)
     : vertices_(vertices), handle_(grabbed), common_frame_(common_frame), k_sigma_(k_sigma), start_pixel_(start_pixel) {
   for (size_t i = 0; i < vertices_.size(); ++i) {
     start_axes_.push_back(ellipsoid_axes(mesh.covariance(size_t(vertices_[i]))));
     if (vertices_[i] == grabbed.vertex) grabbed_index_ = i;
   }
-  const HandleFrame f = handle_frame(mesh, grabbed.vertex, k_sigma, view);
+  grabbed_mean_ = mesh.mean(size_t(grabbed.vertex));
+  const HandleFrame f = handle_frame(pivot.value_or(grabbed_mean_), ellipsoid_axes(mesh.covariance(size_t(grabbed.vertex))), k_sigma, view);
   centre_ = f.centre;
   normal_ = vertex_normal(mesh, grabbed.vertex);
   sigma_ = f.axes.sigmas.maxCoeff();

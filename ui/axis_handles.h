@@ -1,5 +1,6 @@
 #pragma once
-// The gizmo on the active vertex's ellipsoid: both ends of each principal axis and the centre.
+// The gizmo on the active vertex's ellipsoid (or its axes at a pivot, such as the selection's
+// centroid): both ends of each principal axis and the centre.
 // Hit-testing in window pixels, and the drag that turns cursor motion into one kind of change:
 // an axis end dragged along its axis scales that σ (the frame kept), across it turns the frame
 // (every σ kept), with Shift all three σ scale together; the centre moves the mean in the view
@@ -41,6 +42,8 @@ HandleFrame handle_frame(const Vec3& centre, const EllipsoidAxes& axes, double k
 /// when equally near, then the front-most); nullopt when none is that near.
 std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh, const std::vector<int>& vertices,
                                  double k_sigma, float radius = 8.0f);
+/// The same for one gizmo, `frame`, that edits `vertex` (and the selection with it) wherever it sits.
+std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const HandleFrame& frame, int vertex, float radius = 8.0f);
 
 /// How the centre handle moves the mean: in the view plane, along a world axis (X/Y/Z), in the
 /// plane normal to one (Shift+X/Y/Z), or along the surface normal at the vertex (N).
@@ -58,13 +61,14 @@ struct DragModifiers {
 /// turns the frame by the rotation taking the axis to r·axis + p. The first few pixels of motion
 /// decide which of the two the drag does. Every selected vertex gets the same relative change: its
 /// own axis of the same rank scaled (or, in a common frame, the grabbed vertex's axis), its frame
-/// turned by the same rotation, its mean moved by the same vector.
+/// turned by the same rotation, its mean moved by the same vector. `pivot` places the gizmo (the
+/// grabbed vertex's axes) elsewhere than on the grabbed vertex's mean; the change stays the same.
 class HandleDrag {
 public:
   enum class Kind { undecided, scale, rotate, move };
 
   HandleDrag(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Handle& grabbed, double k_sigma, const Viewport& view,
-             glm::vec2 start_pixel, bool common_frame = false);
+             glm::vec2 start_pixel, bool common_frame = false, const std::optional<Vec3>& pivot = std::nullopt);
 
   /// The change of each of vertices() for the cursor at `pixel` (applied to their values at the
   /// start of the drag); nullopt when the cursor's ray misses the drag plane.
@@ -83,7 +87,7 @@ public:
   /// index (and so its colour) for the whole drag.
   HandleFrame frame(const Viewport& view) const;
   /// Where the grabbed vertex's mean was when the drag began.
-  const Vec3& start_centre() const { return centre_; }
+  const Vec3& start_centre() const { return grabbed_mean_; }
   /// A one-line description for the status bar ("scale σ1 ×1.25", "move along z 0.3").
   std::string describe() const;
 
@@ -98,7 +102,8 @@ private:
   size_t grabbed_index_ = 0;
   bool common_frame_ = false;
   double k_sigma_ = 2.0;
-  Vec3 centre_ = Vec3::Zero(), normal_ = Vec3::UnitZ();
+  Vec3 centre_ = Vec3::Zero(), normal_ = Vec3::UnitZ();  // the gizmo's centre at the start (the pivot), the grabbed vertex's normal
+  Vec3 grabbed_mean_ = Vec3::Zero();
   Vec3 axis_ = Vec3::UnitX();  // the grabbed axis end's direction (side included), unit
   double length_ = 1.0;        // the grabbed end's distance from the centre
   double sigma_ = 1.0;         // the grabbed Gaussian's largest σ (snapping step for distances)

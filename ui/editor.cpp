@@ -17,6 +17,7 @@
 #include "render/matcap.h"
 #include "ui/editor_app.h"
 #include "ui/editor_settings.h"
+#include "ui/ellipsoid_scope.h"
 #include "ui/help_overlay.h"
 #include "ui/status_bar.h"
 #include "ui/view_panel.h"
@@ -147,7 +148,12 @@ void EditorApp::render_and_present() {
       target_.reset();
       target_ = std::make_unique<RenderTarget>(fb_width, fb_height);
     }
-    renderer_->draw(*target_, camera_, view_.draw);
+    DrawOptions draw = view_.draw;
+    if (draw.ellipsoids && !all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices())) {
+      shown_ellipsoids_ = selection_neighbourhood(document_.mesh(), selection_.vertices());
+      draw.ellipsoid_vertices = &shown_ellipsoids_;
+    }
+    renderer_->draw(*target_, camera_, draw);
     window_.blit(*target_);
   }
   window_.bind_default_framebuffer();
@@ -212,7 +218,12 @@ void EditorApp::draw_ui() {
       browser_.open(FileBrowser::Mode::open, "Load MatCap", std::filesystem::current_path().string(), kImageExtensions);
     }
   }
-  if (view_.show_statistics) draw_statistics_overlay(clock_, timer_->latest(), renderer_->last_statistics(), &view_.show_statistics);
+  if (view_.show_statistics) {
+    std::vector<ScreenBox> keep_clear;
+    if (gizmo_box_) keep_clear.push_back(*gizmo_box_);
+    draw_statistics_overlay(clock_, timer_->latest(), renderer_->last_statistics(), {free_min_, free_max_}, keep_clear,
+                            &view_.show_statistics);
+  }
   draw_help_overlay(&view_.show_help, commands_.key_bindings());
   draw_unsaved_prompt();
   handle_browser_result();

@@ -58,7 +58,8 @@ private:
   void rebuild_reach();
   void end_drag(bool keep);
   int pick(glm::vec2 pixel) const;
-  std::vector<int> handle_vertices() const;
+  Vec3 gizmo_pivot() const;
+  std::optional<HandleFrame> gizmo_frame(const Viewport& v) const;
   Viewport viewport() const;
   void draw_handles_and_box();
   // Commands (editor_commands.cpp).
@@ -120,6 +121,8 @@ private:
   std::vector<ReachedVertex> reach_;  // the vertices the drag changes, and how strongly
   std::vector<GaussianChange> drag_changes_;
   glm::vec2 free_min_{0.0f}, free_max_{1.0f};  // the part of the window the panels leave free
+  std::optional<ScreenBox> gizmo_box_;         // where the gizmo was drawn this frame (the statistics keep clear of it)
+  std::vector<int> shown_ellipsoids_;          // the vertices whose ellipsoids are drawn, when not all
 
   Clock::time_point frame_input_time_{}, last_frame_time_ = Clock::now();
   Action pending_;

@@ -8,6 +8,7 @@
 #include "render/picking.h"
 #include "ui/camera_control.h"
 #include "ui/editor_app.h"
+#include "ui/ellipsoid_scope.h"
 #include "ui/handle_overlay.h"
 #include "view/picking.h"
 
@@ -27,17 +28,29 @@ Viewport EditorApp::viewport() const {
   return v;
 }
 
-// One gizmo, on the active vertex: its change applies to every selected vertex.
-std::vector<int> EditorApp::handle_vertices() const {
-  if (selection_.empty()) return {};
-  return {selection_.active()};
+// One gizmo for the selection, with the active vertex's axes, on that vertex or at the selected
+// vertices' centroid (View panel); its change applies to every selected vertex.
+Vec3 EditorApp::gizmo_pivot() const {
+  const CovarianceMesh& mesh = document_.mesh();
+  const std::vector<int>& selected = selection_.vertices();
+  if (view_.pivot == 0 || selected.size() < 2) return mesh.mean(size_t(selection_.active()));
+  Vec3 sum = Vec3::Zero();
+  for (const int v : selected) sum += mesh.mean(size_t(v));
+  return sum / double(selected.size());
+}
+
+std::optional<HandleFrame> EditorApp::gizmo_frame(const Viewport& v) const {
+  if (selection_.empty()) return std::nullopt;
+  const Mat3& covariance = document_.mesh().covariance(size_t(selection_.active()));
+  return handle_frame(gizmo_pivot(), ellipsoid_axes(covariance), view_.draw.sigma_scale, v);
 }
 
 int EditorApp::pick(glm::vec2 pixel) const {
   const Viewport v = viewport();
   const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius);
   if (vertex >= 0 || !view_.draw.ellipsoids) return vertex;
-  return pick_ellipsoid(v.camera, v.width, v.height, pixel, document_.mesh(), view_.draw.sigma_scale);
+  const bool all = all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices());
+  return pick_ellipsoid(v.camera, v.width, v.height, pixel, document_.mesh(), view_.draw.sigma_scale, all ? nullptr : &shown_ellipsoids_);
 }
 
 void EditorApp::handle_event(const InputEvent& e) {
@@ -81,9 +94,11 @@ void EditorApp::press(const InputEvent& e) {
   press_pixel_ = last_cursor_ = e.position;
   if (e.button == 0 && !input_.alt()) {
     const Viewport v = viewport();
-    if (const auto handle = hit_handle(v, e.position, document_.mesh(), handle_vertices(), view_.draw.sigma_scale, kPickRadius)) {
+    const auto gizmo = gizmo_frame(v);
+    if (const auto handle = gizmo ? hit_handle(v, e.position, *gizmo, selection_.active(), kPickRadius) : std::nullopt) {
       document_.begin_edit();
-      drag_.emplace(document_.mesh(), selection_.vertices(), *handle, view_.draw.sigma_scale, v, e.position, view_.common_frame);
+      drag_.emplace(document_.mesh(), selection_.vertices(), *handle, view_.draw.sigma_scale, v, e.position, view_.common_frame,
+                    gizmo->centre);
       rebuild_reach();
       mode_ = Mode::handle;
     } else {
@@ -188,8 +203,11 @@ void EditorApp::follow_cursor() {
 void EditorApp::draw_handles_and_box() {
   const Viewport v = viewport();
   ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the 3D view, under the panels
+  std::optional<HandleFrame> gizmo;
+  std::optional<Handle> lit;
   if (mode_ == Mode::handle) {
-    draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), drag_->frame(v), drag_->handle());
+    gizmo = drag_->frame(v);
+    lit = drag_->handle();
     if (reach_options_.proportional) {  // the radius, as a circle around where the grabbed vertex was
       const Vec3 start = drag_->start_centre();
       const double pixels = reach_options_.radius / world_per_pixel(v.camera, v.height, start);
@@ -197,12 +215,18 @@ void EditorApp::draw_handles_and_box() {
         draw->AddCircle(ImVec2(centre->x, centre->y), float(std::min(pixels, 1e4)), IM_COL32(255, 255, 255, 160), 64, 1.5f);
     }
   } else {
-    std::optional<Handle> hovered;
-    if (mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
-      hovered = hit_handle(v, input_.cursor, document_.mesh(), handle_vertices(), view_.draw.sigma_scale, kPickRadius);
-    std::optional<HandleFrame> gizmo;
-    if (!selection_.empty()) gizmo = handle_frame(document_.mesh(), selection_.active(), view_.draw.sigma_scale, v);
-    draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, hovered);
+    gizmo = gizmo_frame(v);
+    if (gizmo && mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
+      lit = hit_handle(v, input_.cursor, *gizmo, selection_.active(), kPickRadius);
+  }
+  draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, lit);
+  gizmo_box_.reset();
+  if (gizmo) {  // the gizmo's extent on screen, its dots included
+    for (int k = -1; k < 6; ++k)
+      if (const auto p = visible_pixel(v.camera, v.width, v.height, k < 0 ? gizmo->centre : gizmo->end(k / 2, k % 2 ? -1 : 1))) {
+        const ScreenBox dot{glm::vec2(*p) - glm::vec2(10.0f), glm::vec2(*p) + glm::vec2(10.0f)};
+        gizmo_box_ = gizmo_box_ ? ScreenBox{glm::min(gizmo_box_->min, dot.min), glm::max(gizmo_box_->max, dot.max)} : dot;
+      }
   }
   if (mode_ == Mode::box) {
     const ImVec2 a(press_pixel_.x, press_pixel_.y), b(input_.cursor.x, input_.cursor.y);

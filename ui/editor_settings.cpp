@@ -30,6 +30,8 @@ void visit_settings(ViewOptions& view, ReachOptions& reach, Visit visit) {
   visit("k_sigma", view.draw.sigma_scale);
   visit("vsync", view.vsync);
   visit("common_frame", view.common_frame);
+  visit("pivot", view.pivot);
+  visit("ellipsoid_scope", view.ellipsoid_scope);
   visit("show_inspector", view.show_inspector);
   visit("show_view", view.show_view);
   visit("show_statistics", view.show_statistics);
@@ -76,6 +78,8 @@ std::string load_settings(const std::string& folder, ViewOptions& view, ReachOpt
   reach.falloff = Falloff(falloff);
   view.draw.pixels = view.adaptive ? view.adaptive_pixels : 0.0f;
   reach.mirror_axis = std::clamp(reach.mirror_axis, 0, 2);
+  view.pivot = std::clamp(view.pivot, 0, 1);
+  view.ellipsoid_scope = std::clamp(view.ellipsoid_scope, 0, 2);
   return error;
 }
 

@@ -1,10 +1,13 @@
 #include "ui/inspector_panel.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 #include "ui/covariance_presets.h"
 
@@ -40,19 +43,6 @@ namespace {
 
 const ImVec4 kAxisColours[3] = {ImVec4(0.92f, 0.31f, 0.31f, 1), ImVec4(0.35f, 0.82f, 0.35f, 1), ImVec4(0.35f, 0.59f, 1.0f, 1)};
 
-// One number field showing `value` rounded to `decimals` (or "mixed"); returns the typed value when
-// the user changed the number (a field left unchanged never rounds the value it shows).
-std::optional<double> number_field(const char* label, double value, bool mixed, int decimals, float width) {
-  char format[16];
-  std::snprintf(format, sizeof format, "%%.%df", decimals);
-  double shown = mixed ? 0.0 : display_value(value, decimals);
-  const double before = shown;
-  ImGui::SetNextItemWidth(width);
-  if (!ImGui::InputDouble(label, &shown, 0.0, 0.0, mixed ? "mixed" : format) || !std::isfinite(shown)) return std::nullopt;
-  if (!mixed && display_value(shown, decimals) == before) return std::nullopt;
-  return shown;
-}
-
 bool all_equal(const std::vector<double>& values) {
   for (const double v : values)
     if (v != values.front()) return false;
@@ -61,14 +51,57 @@ bool all_equal(const std::vector<double>& values) {
 
 }  // namespace
 
-// Begins the document's edit when a field is activated and commits it when the user leaves it.
+// One number field: it shows `value` rounded to `decimals` (or "mixed"); once being edited it holds
+// the full-precision value (%.17g), so that a field entered and left unchanged changes nothing and
+// a typed value is applied exactly as parsed. Returns the typed value when the text was changed.
+std::optional<double> InspectorPanel::number_field(const char* label, double value, bool mixed, int decimals, float width) {
+  struct Start {
+    InspectorPanel* panel;
+    ImGuiID id;
+    const char* text;
+  };
+  const ImGuiID id = ImGui::GetID(label);
+  char shown[64] = "", full[40] = "";
+  if (!mixed) {
+    std::snprintf(shown, sizeof shown, "%.*f", decimals, display_value(value, decimals));
+    std::snprintf(full, sizeof full, "%.17g", value);
+  }
+  Start start{this, id, full};
+  // The edit buffer begins with the rounded text; the first callback of an entry swaps in the full one.
+  const auto swap_in_full = [](ImGuiInputTextCallbackData* data) {
+    Start& s = *static_cast<Start*>(data->UserData);
+    if (s.panel->precise_id_ == s.id) return 0;
+    s.panel->precise_id_ = s.id;
+    s.panel->precise_text_ = s.text;
+    data->DeleteChars(0, data->BufTextLen);
+    data->InsertChars(0, s.text);
+    data->SelectionStart = data->BufTextLen;  // all selected, the cursor at the start: the leading digits in view
+    data->SelectionEnd = data->CursorPos = 0;
+    return 0;
+  };
+  ImGui::SetNextItemWidth(width);
+  const ImGuiInputTextFlags flags = ImGuiInputTextFlags_CharsScientific | ImGuiInputTextFlags_AutoSelectAll | ImGuiInputTextFlags_CallbackAlways;
+  const bool edited = ImGui::InputTextWithHint(label, mixed ? "mixed" : "", shown, sizeof shown, flags, swap_in_full, &start);
+  const bool ours = precise_id_ == id;
+  if (ImGui::IsItemDeactivated() && ours) precise_id_ = 0;
+  if (!edited || !ours || precise_text_ == shown) return std::nullopt;
+  char* end = nullptr;
+  const double typed = std::strtod(shown, &end);
+  while (end && *end == ' ') ++end;
+  if (end == shown || !end || *end != '\0' || !std::isfinite(typed)) return std::nullopt;
+  return typed;
+}
+
+// Begins the document's edit when a field is activated and commits it when the user leaves it
+// (Escape: cancels it, the values as before the entry).
 void InspectorPanel::track_entry(EditorDocument& document) {
   if (ImGui::IsItemActivated() && !document.editing()) {
     document.begin_edit();
     entry_open_ = true;
   }
   if (ImGui::IsItemDeactivated() && entry_open_) {
-    document.commit_edit();
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) document.cancel_edit();
+    else document.commit_edit();
     entry_open_ = false;
     entry_axes_.reset();
   }
@@ -102,8 +135,9 @@ void InspectorPanel::draw_sigmas(EditorDocument& document, const std::vector<int
     for (const int v : vertices) values.push_back(v == active ? axes.sigmas[k] : ellipsoid_axes(document.mesh().covariance(size_t(v))).sigmas[k]);
     if (k > 0) ImGui::SameLine();
     ImGui::PushStyleColor(ImGuiCol_Text, kAxisColours[k]);
+    ImGui::PushStyleColor(ImGuiCol_TextDisabled, kAxisColours[k]);  // "mixed" in the axis colour too
     const auto typed = number_field(kLabels[k], axes.sigmas[k], !all_equal(values), 5, 80);
-    ImGui::PopStyleColor();
+    ImGui::PopStyleColor(2);
     if (typed && *typed > 0) {
       for (const int v : vertices) {  // σ_k of every selected vertex (its own axis of rank k at the start) set to the value
         EllipsoidAxes e = ellipsoid_axes(document.start_covariance(v));
@@ -169,6 +203,7 @@ void InspectorPanel::draw_presets(EditorDocument& document, const std::vector<in
 }
 
 void InspectorPanel::draw(EditorDocument& document, const Selection& selection, ReachOptions& reach, bool* open) {
+  if (precise_id_ != 0 && ImGui::GetActiveID() != precise_id_) precise_id_ = 0;  // its field went away while edited
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + 10), ImGuiCond_FirstUseEver,
                           ImVec2(1, 0));

@@ -2,8 +2,10 @@
 // The inspector: the selection's means, standard deviations (per principal axis, coloured as the
 // gizmo's axes) and orientation, presets, and how far edits reach (proportional, mirror). Values
 // that differ across the selection show as "mixed"; a typed value applies to every selected vertex.
+// Fields show rounded values of a fixed width; a field being edited holds the full-precision value.
 // Every change is one undo step (one per preset, one per numeric entry).
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/covariance_edit.h"
@@ -24,10 +26,13 @@ private:
   void draw_rotation(EditorDocument& document, const std::vector<int>& vertices, int active);
   void draw_presets(EditorDocument& document, const std::vector<int>& vertices);
   void track_entry(EditorDocument& document);
+  std::optional<double> number_field(const char* label, double value, bool mixed, int decimals, float width);
 
   bool entry_open_ = false;                   // a numeric entry in progress: committed when its field is left
   std::optional<EllipsoidAxes> entry_axes_;   // the active vertex's axes when the entry began: fields keep their order
   double isotropic_sigma_ = 0.05;
+  unsigned precise_id_ = 0;   // the field being edited (its ImGui id), which holds the full-precision value
+  std::string precise_text_;  // that value's text as the entry began
 };
 
 /// Euler angles (degrees, rotations about x then y then z: R = Rz·Ry·Rx) of a rotation matrix.

@@ -1,8 +1,9 @@
 #pragma once
 // The statistics overlay: frame rate, GPU time per pass, what the tessellator made, and the time
-// from an edit to the frame that showed it.
+// from an edit to the frame that showed it; it moves to another corner rather than cover the gizmo.
 #include <chrono>
 #include <deque>
+#include <glm/glm.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,8 +32,20 @@ private:
   size_t edit_total_ = 0;
 };
 
-/// Draws the overlay in the viewport's top-left corner.
+/// A rectangle in window pixels.
+struct ScreenBox {
+  glm::vec2 min{0.0f}, max{0.0f};
+  bool overlaps(const ScreenBox& o) const { return min.x < o.max.x && o.min.x < max.x && min.y < o.max.y && o.min.y < max.y; }
+};
+
+/// Where the overlay's top-left corner goes: the first corner of the `free` part of the window (top
+/// left, bottom left, top right, bottom right; 10 pixels in) where a box of `size` covers none of
+/// `keep_clear` (the gizmo); the top left when every corner would.
+glm::vec2 statistics_position(const ScreenBox& free, glm::vec2 size, const std::vector<ScreenBox>& keep_clear);
+
+/// Draws the overlay at statistics_position() (its size as last drawn). It takes no input: a click
+/// on it reaches the view below.
 void draw_statistics_overlay(const FrameClock& clock, const std::vector<std::pair<std::string, double>>& gpu_passes,
-                             const DrawStatistics& draw, bool* open);
+                             const DrawStatistics& draw, const ScreenBox& free, const std::vector<ScreenBox>& keep_clear, bool* open);
 
 }  // namespace gps

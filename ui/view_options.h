@@ -38,6 +38,8 @@ struct ViewOptions {
   std::string matcap = "clay";
   bool vsync = true;
   bool common_frame = false;  // a multi-selection drag: every Gaussian in the grabbed one's frame (else its own)
+  int pivot = 0;              // where the gizmo of a multi-selection sits: 0 the active vertex, 1 the selection's centroid
+  int ellipsoid_scope = 0;    // whose ellipsoids: 0 automatic (ui/ellipsoid_scope.h), 1 the selection and its neighbours, 2 all
   bool show_inspector = true, show_view = true, show_statistics = true, show_help = false;
 };
 

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include "render/matcap.h"
+#include "ui/ellipsoid_scope.h"
 
 namespace gps {
 
@@ -54,11 +55,18 @@ void overlay_section(ViewOptions& o, ViewPanelChanges&) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(120);
   ImGui::SliderFloat("k-sigma", &o.draw.sigma_scale, 0.1f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+  if (o.draw.ellipsoids) {
+    ImGui::Combo("of", &o.ellipsoid_scope, "automatic\0selection and neighbours\0all vertices\0");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("automatic: every vertex's ellipsoid up to %zu vertices, else those of the selection and its neighbours", kAllEllipsoidsUpTo);
+  }
 }
 
 void editing_section(ViewOptions& o, ViewPanelChanges&) {
   ImGui::Checkbox("common frame", &o.common_frame);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("a multi-selection drag scales every Gaussian along the grabbed axis (else each along its own)");
+  ImGui::Combo("gizmo at", &o.pivot, "active vertex\0centroid\0");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("where the one gizmo of a multi-selection sits: the vertex last clicked, or the selected vertices' mean position");
 }
 
 void window_section(ViewOptions& o, ViewPanelChanges&) {

@@ -12,12 +12,16 @@ int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, co
   return nearest.best();
 }
 
-int pick_ellipsoid(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, double k_sigma) {
+int pick_ellipsoid(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, double k_sigma,
+                   const std::vector<int>* candidates) {
   const Ray ray = pixel_ray(camera, width, height, pixel);
   const Vec3 origin = to_vec(ray.origin), d = to_vec(ray.direction);
   int best = -1;
   double best_t = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+  const size_t n = candidates ? candidates->size() : mesh.n_vertices();
+  for (size_t k = 0; k < n; ++k) {
+    const size_t i = candidates ? size_t((*candidates)[k]) : k;
+    if (i >= mesh.n_vertices()) continue;
     // |o + t·d|²_{Σ⁻¹} = k² with o = origin − μ: a t² + 2 b t + c = 0, Σ⁻¹ applied by an LDLᵀ solve.
     const Eigen::LDLT<Mat3> ldlt(mesh.covariance(i));
     const Vec3 o = origin - mesh.mean(i);

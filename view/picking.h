@@ -1,6 +1,7 @@
 #pragma once
 // Picking for the editor without GL: the base vertex near the mouse, the ellipsoid under it.
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "core/covariance_mesh.h"
 #include "view/camera.h"
@@ -13,7 +14,9 @@ namespace gps {
 int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, float radius);
 
 /// The vertex whose k-sigma ellipsoid {x : (x−μ)ᵀΣ⁻¹(x−μ) = k²} the pixel's ray meets first
-/// (nearest entry point in front of the eye); −1 when the ray misses them all.
-int pick_ellipsoid(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, double k_sigma);
+/// (nearest entry point in front of the eye), of every vertex or of `candidates`; −1 when the ray
+/// misses them all.
+int pick_ellipsoid(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, double k_sigma,
+                   const std::vector<int>* candidates = nullptr);
 
 }  // namespace gps

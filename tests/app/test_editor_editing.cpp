@@ -25,15 +25,11 @@ namespace gps {
 namespace {
 
 using test::Events;
+using test::artefact;
 using test::pixel_of;
 
 constexpr int kWidth = 1024, kHeight = 700;
 constexpr int kVertex = 6;  // the cube's (1, 1, 1) corner, in front for the default camera
-
-std::string artefact(const std::string& name) {
-  std::filesystem::create_directories(GPS_TEST_ARTEFACTS_DIR);
-  return std::string(GPS_TEST_ARTEFACTS_DIR) + "/" + name;
-}
 
 Viewport editor_view(const CovarianceMesh& mesh, int width = kWidth, int height = kHeight) {
   Viewport v;

@@ -1,6 +1,7 @@
 #pragma once
 // Driving gpsurf-editor in a real window by an events file (ui/event_script.h), from a test folder
 // that is also its configuration folder (XDG_CONFIG_HOME): recent files and settings stay there.
+#include <filesystem>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -10,6 +11,14 @@
 #include "view/projection.h"
 
 namespace gps::test {
+
+#ifdef GPS_TEST_ARTEFACTS_DIR
+/// A file kept after the test, for people to look at: build/test-artefacts/<test>/NAME.
+inline std::string artefact(const std::string& name) {
+  std::filesystem::create_directories(GPS_TEST_ARTEFACTS_DIR);
+  return std::string(GPS_TEST_ARTEFACTS_DIR) + "/" + name;
+}
+#endif
 
 inline std::string editor_command(const std::string& args) { return std::string(GPSURF_EDITOR_BINARY) + " " + args; }
 

@@ -1,0 +1,46 @@
+// The View settings kept between sessions (settings.json): the gizmo's pivot and whose ellipsoids
+// are drawn among them (issue 13); out-of-range values are clamped, a wrong type is reported.
+#include "ui/editor_settings.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+TEST(EditorSettings, ThePivotAndTheEllipsoidScopeAreKept) {
+  const test::TempDir dir;
+  ViewOptions view;
+  ReachOptions reach;
+  EXPECT_EQ(view.pivot, 0);            // the active vertex
+  EXPECT_EQ(view.ellipsoid_scope, 0);  // automatic
+  view.pivot = 1;
+  view.ellipsoid_scope = 2;
+  view.draw.ellipsoids = true;
+  ASSERT_EQ(save_settings(dir.path().string(), view, reach), "");
+  ViewOptions read;
+  ReachOptions read_reach;
+  ASSERT_EQ(load_settings(dir.path().string(), read, read_reach), "");
+  EXPECT_EQ(read.pivot, 1);
+  EXPECT_EQ(read.ellipsoid_scope, 2);
+  EXPECT_TRUE(read.draw.ellipsoids);
+}
+
+TEST(EditorSettings, OutOfRangeChoicesAreClampedAndAWrongTypeReported) {
+  const test::TempDir dir;
+  dir.write("settings.json", R"({"pivot": 7, "ellipsoid_scope": -3})");
+  ViewOptions view;
+  ReachOptions reach;
+  EXPECT_EQ(load_settings(dir.path().string(), view, reach), "");
+  EXPECT_EQ(view.pivot, 1);
+  EXPECT_EQ(view.ellipsoid_scope, 0);
+  dir.write("settings.json", R"({"pivot": "centroid"})");
+  ViewOptions typed;
+  const std::string error = load_settings(dir.path().string(), typed, reach);
+  EXPECT_NE(error.find("'pivot' has the wrong type"), std::string::npos) << error;
+  EXPECT_EQ(typed.pivot, 0);
+}
+
+}  // namespace
+}  // namespace gps
