@@ -26,19 +26,8 @@ PlannedMesh exact_plans(CovarianceMesh m) { return PlannedMesh(std::move(m), Pla
 // bipyramid of triangles after one Catmull-Clark step.
 CovarianceMesh quad_bipyramid(int n) { return subdivide(test::bipyramid_mesh(n), {Scheme::catmull_clark, 1, false}).mesh; }
 
-// Largest distance, relative to the bounding-box diagonal, between the plans at a reference
-// vertex's parameter and that vertex.
 double error_against_reference(const PlannedMesh& p, int levels) {
-  const auto ref = subdivide(p.mesh, {Scheme::catmull_clark, levels, true});
-  const double diag = bounding_box_diagonal(p.mesh);
-  double worst = 0;
-  for (size_t k = 0; k < ref.mesh.n_vertices(); ++k) {
-    const PatchParam& pp = ref.vertex_params[k];
-    const auto s = evaluate_patch(p.tables.plans, p.points, pp.patch, pp.u, pp.v);
-    EXPECT_TRUE(s.has_value());
-    if (s) worst = std::max(worst, (s->position - ref.mesh.mean(k)).norm() / diag);
-  }
-  return worst;
+  return test::error_against_reference(p, {Scheme::catmull_clark, levels, true});
 }
 
 TEST(ExactPlans, EqualTheReferenceAtInteriorExtraordinaryVertices) {

@@ -74,22 +74,7 @@ TEST(LoopPatchBasis, IsTheLimitOfLoopSubdivisionOfTheNet) {
 // Largest distance, relative to the bounding-box diagonal, between the plans at a reference
 // vertex's parameter and that vertex (Loop GPS subdivision with limit projection).
 double error_against_reference(const PlannedMesh& p, int levels, LoopBeta beta = LoopBeta::loop) {
-  SubdivisionOptions o;
-  o.scheme = Scheme::loop;
-  o.levels = levels;
-  o.limit = true;
-  o.loop_beta = beta;
-  const auto ref = subdivide(p.mesh, o);
-  const double diag = bounding_box_diagonal(p.mesh);
-  double worst = 0;
-  EXPECT_EQ(ref.vertex_params.size(), ref.mesh.n_vertices());
-  for (size_t k = 0; k < ref.mesh.n_vertices(); ++k) {
-    const PatchParam& pp = ref.vertex_params[k];
-    const auto s = evaluate_patch(p.tables.plans, p.points, pp.patch, pp.u, pp.v);
-    EXPECT_TRUE(s.has_value());
-    if (s) worst = std::max(worst, (s->position - ref.mesh.mean(k)).norm() / diag);
-  }
-  return worst;
+  return test::error_against_reference(p, {Scheme::loop, levels, true, beta});
 }
 
 TEST(LoopPlans, RegularTrianglesAreOneBoxSplineNode) {

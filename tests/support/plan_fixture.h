@@ -1,6 +1,12 @@
 #pragma once
 // A mesh with its plans, stencils and evaluated plan points, for tests of the plans.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
 #include "core/dual_map.h"
+#include "core/patch_eval.h"
+#include "core/reference_subdivision.h"
 #include "core/plan_builder.h"
 #include "core/planned_surface.h"
 #include "core/samples.h"
@@ -20,5 +26,21 @@ struct PlannedMesh {
   /// The thesis' approximate Catmull-Clark plans of the given depth (Bézier patches at extraordinary vertices).
   PlannedMesh(CovarianceMesh m, int depth) : PlannedMesh(std::move(m), PlanOptions{Scheme::catmull_clark, depth, LoopBeta::loop, false}) {}
 };
+
+/// Largest distance, relative to the bounding-box diagonal, between the plans at each reference
+/// vertex's parameter and that vertex (GPS subdivision as `reference` says, with limit projection).
+inline double error_against_reference(const PlannedMesh& p, const SubdivisionOptions& reference) {
+  const auto ref = subdivide(p.mesh, reference);
+  const double diag = bounding_box_diagonal(p.mesh);
+  double worst = 0;
+  EXPECT_EQ(ref.vertex_params.size(), ref.mesh.n_vertices());
+  for (size_t k = 0; k < ref.mesh.n_vertices(); ++k) {
+    const PatchParam& pp = ref.vertex_params[k];
+    const auto s = evaluate_patch(p.tables.plans, p.points, pp.patch, pp.u, pp.v);
+    EXPECT_TRUE(s.has_value());
+    if (s) worst = std::max(worst, (s->position - ref.mesh.mean(k)).norm() / diag);
+  }
+  return worst;
+}
 
 }  // namespace gps::test
