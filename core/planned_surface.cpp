@@ -4,6 +4,7 @@
 
 #include "core/dual_map.h"
 #include "core/loop_plan_builder.h"
+#include "core/patch_adjacency.h"
 #include "core/reference_subdivision.h"
 
 namespace gps {
@@ -20,8 +21,10 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
 }
 
 PlanTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options) {
-  if (scheme_for(topology, options) == Scheme::loop) return build_loop_plans(topology, options.loop_beta);
-  return build_plans(topology, options.depth);
+  PlanTables tables = scheme_for(topology, options) == Scheme::loop ? build_loop_plans(topology, options.loop_beta)
+                                                                    : build_plans(topology, options.depth);
+  add_patch_adjacency(tables.plans);
+  return tables;
 }
 
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {
