@@ -242,7 +242,9 @@ void add_bench_command(CLI::App& app) {
       if (!args->size) args->size = 512;
       if (args->size > 4096) throw usage_error("bench --render: --size is at most 4096 pixels");
       const auto context = make_context();
-      std::printf("device: %s, %dx%d pixels, depth %d\n", context->description().c_str(), args->size, args->size, args->plans.depth);
+      const PlanOptions plans = args->plans.options();
+      std::printf("device: %s, %dx%d pixels, %s\n", context->description().c_str(), args->size, args->size,
+                  plans.exact ? "exact plans" : ("plans of depth " + std::to_string(plans.depth)).c_str());
       std::printf("%-12s %7s %5s %9s %10s %10s %10s %12s %10s %7s %9s\n", "mesh", "patches", "level", "triangles", "compute",
                   "draw(gpu)", "frame", "tri/s", "static", "ratio", "memory");
       nlohmann::json all = nlohmann::json::array();

@@ -76,7 +76,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   o.sigma_scale = a.sigma;
   o.background = {bg[0], bg[1], bg[2]};
   if (a.reference >= 0) {
-    renderer.set_triangles(reference_triangles(mesh, a.reference));
+    renderer.set_triangles(reference_triangles(mesh, a.reference, a.plans.options()));
     o.static_triangles = true;
   }
   Camera camera = frame_mesh(mesh);

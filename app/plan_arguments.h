@@ -9,12 +9,12 @@ namespace gps {
 
 struct PlanArguments {
   std::string scheme = "auto", loop_beta = "loop";
-  int depth = 3;
+  int depth = 0;  // 0: exact; 1..8: the thesis' approximate plans of that depth
   /// The options these name; throws a usage error for an unknown name (scripts are not checked by CLI11).
   PlanOptions options() const;
 };
 
-/// Adds --scheme auto|loop|catmull-clark, --loop-beta loop|warren and --depth 1..8 to `cmd`.
+/// Adds --scheme auto|loop|catmull-clark, --loop-beta loop|warren and --depth 1..8 (approximate plans) to `cmd`.
 void add_plan_arguments(CLI::App* cmd, PlanArguments& arguments);
 
 }  // namespace gps

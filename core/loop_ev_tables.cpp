@@ -1,10 +1,9 @@
 #include "core/loop_ev_tables.h"
 
 #include <Eigen/Core>
-#include <cmath>
-#include <numbers>
 #include <stdexcept>
 
+#include "core/ev_corner_masks.h"
 #include "core/loop_nets.h"
 
 namespace gps {
@@ -73,33 +72,20 @@ int LoopEvTables::offset(const LoopEvConfiguration& configuration, const Polygon
     }
     power = step * power;
   }
-  // Limit masks: position and two tangents at v, oriented as (s, t).
+  // Limit masks at v (core/ev_corner_masks.h), the tangents from child 1's patch at its corner.
+  double w[12], ws[12], wt[12];
+  loop_box_spline_basis(0.0, 0.0, w, ws, wt);
+  Eigen::RowVectorXd d_s = Eigen::RowVectorXd::Zero(k), d_t = Eigen::RowVectorXd::Zero(k);
+  for (int j = 0; j < 12; ++j) {
+    d_s += ws[j] * nets[0].row(j);
+    d_t += wt[j] * nets[0].row(j);
+  }
+  const CornerMasks corner = extraordinary_corner_masks(step, d_s, d_t);
   double* masks = table + size_t(36 * kEvLevels) * size_t(k);
-  const int valence = connectivity.valence(v);
-  if (!configuration.boundary) {
-    // Interior: (1 − Nχ)v + χΣ ring, χ = 1/(3/(8β) + N); tangents Σ cos/sin(2πi/N) ring_i (ring from a).
-    const double beta = loop_beta(valence, beta_), chi = 1.0 / (3.0 / (8.0 * beta) + valence);
-    masks[0] = 1.0 - valence * chi;
-    for (int i = 0; i < valence; ++i) {
-      const double angle = 2.0 * std::numbers::pi * i / valence;
-      masks[1 + i] = chi;
-      masks[k + 1 + i] = std::cos(angle);
-      masks[2 * k + 1 + i] = std::sin(angle);
-    }
-  } else {
-    // Boundary: the deepest block's child 1 at its corner, 2^−kEvLevels from v; its derivatives
-    // times 2^kEvLevels are in (s, t) (float keeps them in range on the GPU).
-    double w[12], ws[12], wt[12];
-    loop_box_spline_basis(0.0, 0.0, w, ws, wt);
-    const double to_st = std::ldexp(1.0, kEvLevels);
-    for (int j = 0; j < 12; ++j) ws[j] *= to_st, wt[j] *= to_st;
-    const double* block = table + size_t(3 * (kEvLevels - 1) * 12) * size_t(k);
-    for (int j = 0; j < 12; ++j)
-      for (int i = 0; i < k; ++i) {
-        masks[i] += w[j] * block[size_t(j * k + i)];
-        masks[k + i] += ws[j] * block[size_t(j * k + i)];
-        masks[2 * k + i] += wt[j] * block[size_t(j * k + i)];
-      }
+  for (int i = 0; i < k; ++i) {
+    masks[i] = corner.position(i);
+    masks[k + i] = corner.d_s(i);
+    masks[2 * k + i] = corner.d_t(i);
   }
   offsets_.emplace(configuration, offset);
   return offset;

@@ -7,7 +7,7 @@
 // Ā_k Aⁿ C. Stam diagonalises A; we store the products Ā_k Aⁿ for n < kEvLevels (powers of a
 // matrix whose eigenvalues are at most 1 in size: stable, and exact also where A is not
 // diagonalisable, as at some boundary configurations). Closer to v than 2^−kEvLevels the limit
-// position and tangent masks apply. GPS is linear in 9D, so all of this acts on the dual points.
+// position and tangent masks apply (core/ev_corner_masks.h). GPS is linear in 9D, so all of this acts on the dual points.
 //
 // Table layout (doubles from its offset): blocks b = 3n + k, each 12×K (row j: the weights of the
 // K points in net point j), then three rows of K: limit position, tangent along s, tangent along t.

@@ -24,8 +24,8 @@ namespace gps {
 GPS_CONST int kNodeInternal = 0;
 GPS_CONST int kNodeRegular = 1;       // quads: bicubic B-spline; triangles: Loop's quartic box spline
 GPS_CONST int kNodeTerminal = 2;      // quads: bicubic Bézier from the rules of thesis Fig. 2.5
-GPS_CONST int kNodeExtraordinary = 3; // triangles: exact evaluation at an extraordinary corner
-// Levels of the extraordinary tables (core/loop_ev_tables.h): below 2^-kEvLevels of the corner,
+GPS_CONST int kNodeExtraordinary = 3; // exact evaluation at an extraordinary corner (both shapes)
+// Levels of the extraordinary tables (core/loop_ev_tables.h, core/quad_ev_tables.h): below 2^-kEvLevels of the corner,
 // the limit masks give the point (closer than double precision resolves).
 GPS_CONST int kEvLevels = 40;
 
@@ -40,6 +40,20 @@ GPS_FN void bspline_basis(GPS_REAL t, GPS_OUT GPS_REAL w[4], GPS_OUT GPS_REAL dw
   dw[1] = 1.5 * t2 - 2.0 * t;
   dw[2] = -1.5 * t2 + t + 0.5;
   dw[3] = 0.5 * t2;
+}
+
+/// The bicubic B-spline patch at (u, v): weights w[i + 4j] of its 16 points (i along u) and their
+/// u and v derivatives.
+GPS_FN void bspline_patch_basis(GPS_REAL u, GPS_REAL v, GPS_OUT GPS_REAL w[16], GPS_OUT GPS_REAL du[16], GPS_OUT GPS_REAL dv[16]) {
+  GPS_REAL wu[4], dwu[4], wv[4], dwv[4];
+  bspline_basis(u, wu, dwu);
+  bspline_basis(v, wv, dwv);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      w[i + 4 * j] = wu[i] * wv[j];
+      du[i + 4 * j] = dwu[i] * wv[j];
+      dv[i + 4 * j] = wu[i] * dwv[j];
+    }
 }
 
 /// Cubic Bernstein basis, t in [0,1]: values w[0..3] and derivatives dw[0..3].
@@ -158,16 +172,16 @@ GPS_FN int triangle_child(GPS_INOUT_REF(GPS_REAL) u, GPS_INOUT_REF(GPS_REAL) v, 
 
 /// Parameters (s, t) of a triangle node turned so that its corner r is corner 0: barycentrics
 /// (b0, b1, b2) = (1−u−v, u, v) become s = b_{r+1}, t = b_{r+2}.
-GPS_FN void turn_to_corner(int r, GPS_REAL u, GPS_REAL v, GPS_OUT_REF(GPS_REAL) s, GPS_OUT_REF(GPS_REAL) t) {
+GPS_FN void triangle_turn_to_corner(int r, GPS_REAL u, GPS_REAL v, GPS_OUT_REF(GPS_REAL) s, GPS_OUT_REF(GPS_REAL) t) {
   GPS_REAL b0 = 1.0 - u - v;
   if (r == 0) { s = u; t = v; }
   else if (r == 1) { s = v; t = b0; }
   else { s = b0; t = u; }
 }
 
-/// Derivatives back from (s, t) of turn_to_corner() to (u, v): d/du, d/dv of a function with
+/// Derivatives back from (s, t) of triangle_turn_to_corner() to (u, v): d/du, d/dv of a function with
 /// derivatives (f_s, f_t), as coefficients: d/du = a_s f_s + a_t f_t, d/dv = b_s f_s + b_t f_t.
-GPS_FN void turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]) {
+GPS_FN void triangle_turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]) {
   if (r == 0) { c[0] = 1.0; c[1] = 0.0; c[2] = 0.0; c[3] = 1.0; }
   else if (r == 1) { c[0] = 0.0; c[1] = -1.0; c[2] = 1.0; c[3] = -1.0; }
   else { c[0] = -1.0; c[1] = 1.0; c[2] = -1.0; c[3] = 0.0; }
@@ -180,17 +194,59 @@ GPS_FN void turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]) {
 GPS_FN int loop_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale) {
   scale = 1.0;
   int n = 0;
-  for (int i = 0; i < kEvLevels - 1; ++i) {
-    if (s + t >= 0.5) break;
-    s = 2.0 * s;
-    t = 2.0 * t;
-    scale = 2.0 * scale;
-    n += 1;
+  for (int i = 0; i < kEvLevels - 1; ++i) {  // no break: llvmpipe miscompiles a divergent early exit
+    if (s + t < 0.5) {
+      s = 2.0 * s;
+      t = 2.0 * t;
+      scale = 2.0 * scale;
+      n += 1;
+    }
   }
   if (s + t < 0.5) return -1;
   GPS_REAL sign = 1.0;
   int child = triangle_child(s, t, sign);
   scale = 2.0 * sign * scale;
+  return 3 * n + child - 1;
+}
+
+/// Parameters (s, t) of a quad node turned so that its corner r is corner 0 (corners k at (0,0),
+/// (1,0), (1,1), (0,1)): s runs toward corner r + 1, t toward corner r + 3; a rotation.
+GPS_FN void quad_turn_to_corner(int r, GPS_REAL u, GPS_REAL v, GPS_OUT_REF(GPS_REAL) s, GPS_OUT_REF(GPS_REAL) t) {
+  if (r == 0) { s = u; t = v; }
+  else if (r == 1) { s = v; t = 1.0 - u; }
+  else if (r == 2) { s = 1.0 - u; t = 1.0 - v; }
+  else { s = 1.0 - v; t = u; }
+}
+
+/// Derivatives back from (s, t) of quad_turn_to_corner() to (u, v), as in
+/// triangle_turned_derivative_coefficients(): d/du = c[0] f_s + c[1] f_t, d/dv = c[2] f_s + c[3] f_t.
+GPS_FN void quad_turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]) {
+  if (r == 0) { c[0] = 1.0; c[1] = 0.0; c[2] = 0.0; c[3] = 1.0; }
+  else if (r == 1) { c[0] = 0.0; c[1] = -1.0; c[2] = 1.0; c[3] = 0.0; }
+  else if (r == 2) { c[0] = -1.0; c[1] = 0.0; c[2] = 0.0; c[3] = -1.0; }
+  else { c[0] = 0.0; c[1] = 1.0; c[2] = -1.0; c[3] = 0.0; }
+}
+
+/// Where (s, t) of a quad extraordinary node falls (Stam 1998), its extraordinary vertex at (0, 0):
+/// after n halvings toward that corner, in quadrant c = 1 (s ≥ ½ > t), 2 (both ≥ ½) or 3 (t ≥ ½ > s)
+/// at the quadrant's own (s, t). Returns the table block 3n + c − 1 (core/quad_ev_tables.h), or −1
+/// closer to the corner than 2^−kEvLevels (there the limit masks apply); `scale` = d(new s, t)/d(s, t).
+GPS_FN int quad_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale) {
+  scale = 1.0;
+  int n = 0;
+  for (int i = 0; i < kEvLevels - 1; ++i) {  // no break: llvmpipe miscompiles a divergent early exit
+    if (s < 0.5 && t < 0.5) {
+      s = 2.0 * s;
+      t = 2.0 * t;
+      scale = 2.0 * scale;
+      n += 1;
+    }
+  }
+  if (s < 0.5 && t < 0.5) return -1;
+  int child = s >= 0.5 ? (t >= 0.5 ? 2 : 1) : 3;
+  s = s >= 0.5 ? 2.0 * s - 1.0 : 2.0 * s;
+  t = t >= 0.5 ? 2.0 * t - 1.0 : 2.0 * t;
+  scale = 2.0 * scale;
   return 3 * n + child - 1;
 }
 

@@ -3,64 +3,38 @@
 #include <algorithm>
 #include <array>
 #include <exception>
+#include <map>
+#include <memory>
 #include <stdexcept>
 
 #include "core/error.h"
-#include "core/limit_masks.h"
 #include "core/local_mesh.h"
+#include "core/quad_ev_tables.h"
+#include "core/quad_nets.h"
 #include "core/stencil_table.h"
 
 namespace gps {
 
 namespace {
 
-// A point as a combination of the vertices of a LocalMesh (before it becomes a base stencil).
-using Combo = std::vector<std::pair<int, double>>;
+using Combo = LocalCombination;
 
-Combo one(int v) { return {{v, 1.0}}; }
-
-Combo combine(const std::vector<std::pair<const Combo*, double>>& parts) {
-  Combo out;
-  for (const auto& [c, w] : parts)
-    for (const auto& [v, x] : *c) out.emplace_back(v, w * x);
-  return out;
-}
-
-struct Grid2 {
-  int i, j;
-  Grid2 operator+(Grid2 o) const { return {i + o.i, j + o.j}; }
-  Grid2 operator-(Grid2 o) const { return {i - o.i, j - o.j}; }
+// The plans of a range of faces; an extraordinary node's table field holds an index into `ev`
+// until merge() lays the tables out.
+struct RangePlans {
+  PlanTables tables;
+  std::vector<std::shared_ptr<const std::vector<double>>> ev;
 };
-
-// Corner k of a node's quad sits at grid position kCorner[k] of its 4×4 B-spline net; kOut[k] points
-// away from the quad across edge k (from corner k to corner k+1).
-constexpr Grid2 kCorner[4] = {{1, 1}, {2, 1}, {2, 2}, {1, 2}};
-constexpr Grid2 kOut[4] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
-
-int face_vertex(const LocalMesh& m, int f, int k) {
-  const int n = m.topology.face_size(f);
-  return m.topology.verts[size_t(m.topology.offsets[size_t(f)] + ((k % n) + n) % n)];
-}
-
-int corner_index(const LocalMesh& m, int f, int v) {
-  for (int k = 0; k < m.topology.face_size(f); ++k)
-    if (face_vertex(m, f, k) == v) return k;
-  throw std::logic_error("plan builder: vertex not in face");
-}
-
-int other_face(const LocalMesh& m, int e, int f) {
-  const int a = m.connectivity.edge_faces[2 * size_t(e)], b = m.connectivity.edge_faces[2 * size_t(e) + 1];
-  return a == f ? b : a;
-}
 
 // Builds the plans of the faces [first, last): patches in face order, stencil rows in the order of
 // their first use, point indices and node offsets local to this range (merge() renumbers them).
 class Builder {
 public:
-  Builder(const LocalMesh& base, int max_depth, bool bspline_leaves)
-      : max_depth_(max_depth), bspline_leaves_(bspline_leaves), base_(base), stencils_(base.topology.n_vertices) {}
+  Builder(const LocalMesh& base, int max_depth, ExtraordinaryNodes extraordinary, bool bspline_leaves, QuadEvTableCache& cache)
+      : max_depth_(max_depth), exact_(extraordinary == ExtraordinaryNodes::exact), bspline_leaves_(bspline_leaves), base_(base),
+        cache_(cache), stencils_(base.topology.n_vertices) {}
 
-  PlanTables build(int first, int last) {
+  RangePlans build(int first, int last) {
     const PolygonTopology& t = base_.topology;
     for (int f = first; f < last; ++f) {
       std::vector<int> corners(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
@@ -104,8 +78,8 @@ public:
         add_edge(corner(k - 1), corner(k), PatchEdgePart::second_half);
       }
     }
-    plans_.max_depth = max_depth_;
-    return {std::move(plans_), stencils_.finish()};
+    plans_.max_depth = deepest_;
+    return {{std::move(plans_), stencils_.finish()}, std::move(ev_)};
   }
 
 private:
@@ -124,119 +98,6 @@ private:
     return stencils_.add(m.combination(combo));
   }
 
-  // Interior valence 4, boundary with two faces, or a corner with one face; all faces around quads.
-  static bool regular_vertex(const LocalMesh& m, int v) {
-    const auto& c = m.connectivity;
-    if (!m.complete[size_t(v)]) return false;
-    for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i)
-      if (m.topology.face_size(c.vertex_faces[size_t(i)]) != 4) return false;
-    switch (vertex_role(c, v)) {
-      case VertexRole::interior: return c.n_vertex_faces(v) == 4;
-      case VertexRole::boundary: return c.n_vertex_faces(v) == 2;
-      case VertexRole::corner: return true;
-      case VertexRole::isolated: return false;
-    }
-    return false;
-  }
-
-  // The 4×4 B-spline net of a regular quad, with boundary phantoms p₋₁ = 2p₀ − p₁.
-  std::array<Combo, 16> bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c) {
-    std::array<Combo, 16> net;
-    const auto at = [&](Grid2 g) -> Combo& { return net[size_t(g.i + 4 * g.j)]; };
-    const auto mirror = [&](Grid2 g, Grid2 out) { at(g + out) = combine({{&at(g), 2.0}, {&at(g - out), -1.0}}); };
-    bool boundary_edge[4];
-    for (int k = 0; k < 4; ++k) at(kCorner[k]) = one(c[size_t(k)]);
-    for (int k = 0; k < 4; ++k) {
-      const int a = c[size_t(k)], b = c[size_t((k + 1) % 4)];
-      const int e = m.find_edge(a, b);
-      boundary_edge[k] = m.connectivity.is_boundary_edge(e);
-      if (boundary_edge[k]) {
-        mirror(kCorner[k], kOut[k]);
-        mirror(kCorner[(k + 1) % 4], kOut[k]);
-        continue;
-      }
-      const int n = other_face(m, e, q), j = corner_index(m, n, a);  // n runs b, a, x, y
-      at(kCorner[k] + kOut[k]) = one(face_vertex(m, n, j + 1));
-      at(kCorner[(k + 1) % 4] + kOut[k]) = one(face_vertex(m, n, j + 2));
-    }
-    for (int k = 0; k < 4; ++k) {
-      const Grid2 g = kCorner[k], o1 = kOut[k], o2 = kOut[(k + 3) % 4];
-      const int v = c[size_t(k)];
-      if (vertex_role(m.connectivity, v) == VertexRole::interior) {
-        const auto& conn = m.connectivity;
-        for (int i = conn.vertex_face_offsets[size_t(v)]; i < conn.vertex_face_offsets[size_t(v) + 1]; ++i) {
-          const int f = conn.vertex_faces[size_t(i)], kv = conn.vertex_face_corners[size_t(i)];
-          const int prev = face_vertex(m, f, kv + 3), next = face_vertex(m, f, kv + 1);
-          if (f == q || prev == c[size_t((k + 1) % 4)] || next == c[size_t((k + 1) % 4)] || prev == c[size_t((k + 3) % 4)] ||
-              next == c[size_t((k + 3) % 4)])
-            continue;
-          at(g + o1 + o2) = one(face_vertex(m, f, kv + 2));
-        }
-      } else if (boundary_edge[(k + 3) % 4]) {
-        mirror(g + o1, o2);
-      } else {
-        mirror(g + o2, o1);
-      }
-    }
-    return net;
-  }
-
-  // The Bézier net of a terminal node by the rules of thesis Fig. 2.5 (DESIGN.md §2).
-  std::array<Combo, 16> bezier_net(const LocalMesh& m, const std::array<int, 4>& c) {
-    static constexpr Grid2 kBezier[4] = {{0, 0}, {3, 0}, {3, 3}, {0, 3}};
-    const auto& conn = m.connectivity;
-    std::array<Combo, 16> net;
-    const auto at = [&](Grid2 g) -> Combo& { return net[size_t(g.i + 4 * g.j)]; };
-    for (int k = 0; k < 4; ++k) {
-      const int v = c[size_t(k)], next = c[size_t((k + 1) % 4)], prev = c[size_t((k + 3) % 4)], opposite = c[size_t((k + 2) % 4)];
-      const VertexRole role = vertex_role(conn, v);
-      const int n = conn.valence(v);
-      const double nr = role == VertexRole::interior ? n : 4.0;  // boundary vertices take regular weights
-      const Grid2 g = kBezier[k];
-      const Grid2 to_next = {(kBezier[(k + 1) % 4].i - g.i) / 3, (kBezier[(k + 1) % 4].j - g.j) / 3};
-      const Grid2 to_prev = {(kBezier[(k + 3) % 4].i - g.i) / 3, (kBezier[(k + 3) % 4].j - g.j) / 3};
-      // Corner point: the exact limit position.
-      Combo corner;
-      if (role == VertexRole::interior) {
-        const double total = n * (n + 5.0);
-        corner.emplace_back(v, n * n / total);
-        for (int i = conn.vertex_edge_offsets[size_t(v)]; i < conn.vertex_edge_offsets[size_t(v) + 1]; ++i)
-          corner.emplace_back(conn.other_vertex(conn.vertex_edges[size_t(i)], v), 4.0 / total);
-        for (int i = conn.vertex_face_offsets[size_t(v)]; i < conn.vertex_face_offsets[size_t(v) + 1]; ++i)
-          corner.emplace_back(face_vertex(m, conn.vertex_faces[size_t(i)], conn.vertex_face_corners[size_t(i)] + 2), 1.0 / total);
-      } else if (role == VertexRole::boundary) {
-        int a = -1, b = -1;
-        vertex_role(conn, v, &a, &b);
-        corner = {{a, 1.0 / 6.0}, {v, 4.0 / 6.0}, {b, 1.0 / 6.0}};
-      } else {
-        corner = one(v);
-      }
-      at(g) = corner;
-      // Edge points on the edges to `next` and `prev`.
-      for (const auto& [w, dir] : {std::pair{next, to_next}, std::pair{prev, to_prev}}) {
-        const int e = m.find_edge(v, w);
-        if (conn.is_boundary_edge(e)) {
-          at(g + dir) = {{v, 2.0 / 3.0}, {w, 1.0 / 3.0}};
-          continue;
-        }
-        const double total = 2.0 * nr + 10.0;
-        Combo edge = {{v, 2.0 * nr / total}, {w, 4.0 / total}};
-        for (const int f : {conn.edge_faces[2 * size_t(e)], conn.edge_faces[2 * size_t(e) + 1]}) {
-          const int kv = corner_index(m, f, v), kw = corner_index(m, f, w);
-          const int beside_v = face_vertex(m, f, kv + (face_vertex(m, f, kv + 1) == w ? 3 : 1));
-          const int beside_w = face_vertex(m, f, kw + (face_vertex(m, f, kw + 1) == v ? 3 : 1));
-          edge.emplace_back(beside_v, 2.0 / total);
-          edge.emplace_back(beside_w, 1.0 / total);
-        }
-        at(g + dir) = edge;
-      }
-      // Interior point.
-      const double total = nr + 5.0;
-      at(g + to_next + to_prev) = {{v, nr / total}, {next, 2.0 / total}, {prev, 2.0 / total}, {opposite, 1.0 / total}};
-    }
-    return net;
-  }
-
   int emit_leaf(NodeKind kind, const LocalMesh& m, const std::array<Combo, 16>& net) {
     const int offset = int(plans_.nodes.size());
     plans_.nodes.push_back(int32_t(kind));
@@ -244,12 +105,32 @@ private:
     return offset;
   }
 
+  // A node whose corner r is its only irregular one, evaluated exactly (core/quad_ev_tables.h),
+  // or −1 where its neighbourhood is not self-similar.
+  int emit_extraordinary(const LocalMesh& m, const std::array<int, 4>& c, int r) {
+    const std::array<int, 4> turned = {c[size_t(r)], c[size_t((r + 1) % 4)], c[size_t((r + 2) % 4)], c[size_t((r + 3) % 4)]};
+    const auto neighbourhood = quad_ev_neighbourhood(m, turned);
+    if (!neighbourhood) return -1;
+    auto table = cache_.table(neighbourhood->signature);
+    if (!table) return -1;
+    auto used = std::find(ev_.begin(), ev_.end(), table);
+    if (used == ev_.end()) used = ev_.insert(ev_.end(), std::move(table));
+    const int offset = int(plans_.nodes.size());
+    plans_.nodes.insert(plans_.nodes.end(), {kNodeExtraordinary, r, int(used - ev_.begin()), int(neighbourhood->points.size())});
+    for (const int p : neighbourhood->points) plans_.nodes.push_back(point(m, {{p, 1.0}}));
+    return offset;
+  }
+
   int build_node(const LocalMesh& m, const std::array<int, 4>& c, int depth) {
-    bool regular = true;
-    for (const int v : c) regular = regular && regular_vertex(m, v);
+    deepest_ = std::max(deepest_, depth);
+    int irregular = 0, corner = -1;
+    for (int k = 0; k < 4; ++k)
+      if (!regular_vertex(m, c[size_t(k)])) ++irregular, corner = k;
     const std::vector<int> corners(c.begin(), c.end());
-    if (regular && bspline_leaves_) return emit_leaf(NodeKind::regular, m, bspline_net(m, m.find_face(corners), c));
-    if (regular) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
+    if (irregular == 0 && bspline_leaves_) return emit_leaf(NodeKind::regular, m, bspline_net(m, m.find_face(corners), c));
+    if (irregular == 0) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
+    if (exact_ && irregular == 1 && m.complete[size_t(c[size_t(corner)])])
+      if (const int offset = emit_extraordinary(m, c, corner); offset >= 0) return offset;
     if (depth == max_depth_) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
 
     const int offset = int(plans_.nodes.size());
@@ -277,8 +158,12 @@ private:
   }
 
   int max_depth_;
+  int deepest_ = 0;
+  bool exact_;
   bool bspline_leaves_;
   const LocalMesh& base_;
+  QuadEvTableCache& cache_;
+  std::vector<std::shared_ptr<const std::vector<double>>> ev_;
   StencilTableBuilder stencils_;
   PlanTable plans_;
 };
@@ -287,8 +172,20 @@ private:
 // is first used, which is in the first range that uses it, in that range's order: so the result is
 // the table a single range over all faces gives, bit for bit, whatever the ranges. The rows are
 // merged in order, one range after the other; the renumbered nodes are then copied on all cores.
-PlanTables merge(std::vector<PlanTables>& parts, int n_base) {
+// The extraordinary tables are laid out in the order of their first use, so the same.
+PlanTables merge(std::vector<RangePlans>& ranges, int n_base) {
   StencilTableBuilder stencils(n_base);
+  PlanTable plans;
+  std::vector<std::vector<int>> ev_offset(ranges.size());  // per range: table index -> offset in the whole
+  std::map<const std::vector<double>*, int> laid_out;
+  for (size_t r = 0; r < ranges.size(); ++r)
+    for (const auto& table : ranges[r].ev) {
+      const auto [at, added] = laid_out.try_emplace(table.get(), int(plans.ev_tables.size()));
+      if (added) plans.ev_tables.insert(plans.ev_tables.end(), table->begin(), table->end());
+      ev_offset[r].push_back(at->second);
+    }
+  std::vector<PlanTables> parts(ranges.size());
+  for (size_t r = 0; r < ranges.size(); ++r) parts[r] = std::move(ranges[r].tables);
   std::vector<std::vector<int>> rows(parts.size());  // per range: local row -> point in the whole table
   for (size_t r = 0; r < parts.size(); ++r) {
     const StencilTable& s = parts[r].stencils;
@@ -298,10 +195,10 @@ PlanTables merge(std::vector<PlanTables>& parts, int n_base) {
   // Where each range's records start in the whole table.
   std::vector<size_t> node_base(parts.size() + 1, 0), patch_base(parts.size() + 1, 0);
   for (size_t r = 0; r < parts.size(); ++r) {
+    plans.max_depth = std::max(plans.max_depth, parts[r].plans.max_depth);
     node_base[r + 1] = node_base[r] + parts[r].plans.nodes.size();
     patch_base[r + 1] = patch_base[r] + parts[r].plans.patch_roots.size();
   }
-  PlanTable plans;
   plans.nodes.resize(node_base.back());
   plans.patch_roots.resize(patch_base.back());
   plans.patch_corner_points.resize(4 * patch_base.back());
@@ -312,9 +209,18 @@ PlanTables merge(std::vector<PlanTables>& parts, int n_base) {
     const auto point = [&row = rows[r], n_base](int p) { return p < n_base ? p : row[size_t(p - n_base)]; };
     const int base = int(node_base[r]);
     int32_t* nodes = plans.nodes.data() + node_base[r];
-    for (size_t o = 0; o < p.nodes.size();) {  // node records: kind, then 4 child offsets or 16 points
+    for (size_t o = 0; o < p.nodes.size();) {  // node records: kind, then children, points or a table
       const auto kind = NodeKind(p.nodes[o]);
       nodes[o] = p.nodes[o];
+      if (kind == NodeKind::extraordinary) {  // corner, table, K, K points
+        const size_t k = size_t(p.nodes[o + 3]);
+        nodes[o + 1] = p.nodes[o + 1];
+        nodes[o + 2] = ev_offset[r][size_t(p.nodes[o + 2])];
+        nodes[o + 3] = p.nodes[o + 3];
+        for (size_t i = o + 4; i < o + 4 + k; ++i) nodes[i] = point(p.nodes[i]);
+        o += 4 + k;
+        continue;
+      }
       const size_t n = kind == NodeKind::internal ? 4 : 16;
       for (size_t i = o + 1; i <= o + n; ++i) nodes[i] = kind == NodeKind::internal ? base + p.nodes[i] : point(p.nodes[i]);
       o += n + 1;
@@ -353,28 +259,27 @@ void check_plan_valences(const PolygonTopology& t) {
 }
 }  // namespace
 
-PlanTables build_plans(const PolygonTopology& topology, int max_depth, bool bspline_leaves) {
+PlanTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary, bool bspline_leaves) {
   if (max_depth < 1 || max_depth > 8) throw usage_error("plan depth must be 1..8, got " + std::to_string(max_depth));
   check_plan_valences(topology);
   const LocalMesh base = base_local_mesh(topology);
   // Faces in ranges of a fixed size, built on all cores (OpenMP), merged in order.
   constexpr int kFacesPerRange = 1024;
   const int n_faces = topology.n_faces(), n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);
-  std::vector<PlanTables> parts(static_cast<size_t>(n_ranges));
+  std::vector<RangePlans> parts(static_cast<size_t>(n_ranges));
+  QuadEvTableCache cache;
   std::vector<std::exception_ptr> failures(parts.size());
 #pragma omp parallel for schedule(dynamic)
   for (int r = 0; r < n_ranges; ++r) {
     try {
-      parts[size_t(r)] = Builder(base, max_depth, bspline_leaves).build(r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange));
+      parts[size_t(r)] = Builder(base, max_depth, extraordinary, bspline_leaves, cache).build(r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange));
     } catch (...) {
       failures[size_t(r)] = std::current_exception();
     }
   }
   for (const auto& failure : failures)
     if (failure) std::rethrow_exception(failure);
-  PlanTables tables = merge(parts, topology.n_vertices);
-  tables.plans.max_depth = max_depth;
-  return tables;
+  return merge(parts, topology.n_vertices);
 }
 
 }  // namespace gps

@@ -55,7 +55,7 @@ struct StencilTable {
 
 struct PlanTable {
   PatchShape shape = PatchShape::quad;
-  int32_t max_depth = 3;
+  int32_t max_depth = 0;                      // of the deepest node
   std::vector<int32_t> nodes;                 // node records, see above
   std::vector<int32_t> patch_roots;           // per patch: offset of its root node in nodes
   std::vector<int32_t> patch_corner_points;   // 4 (quads) or 3 (triangles) per patch: points whose means

@@ -22,7 +22,8 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
 
 PlanTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options) {
   PlanTables tables = scheme_for(topology, options) == Scheme::loop ? build_loop_plans(topology, options.loop_beta)
-                                                                    : build_plans(topology, options.depth);
+                      : options.exact                                 ? build_plans(topology, 8, ExtraordinaryNodes::exact)
+                                                                      : build_plans(topology, options.depth, ExtraordinaryNodes::bezier);
   add_patch_adjacency(tables.plans);
   return tables;
 }

@@ -16,8 +16,9 @@ namespace gps {
 struct PlanOptions {
   std::optional<Scheme> scheme;  // empty: Loop for a mesh of triangles only (valences up to
                                  // kMaxLoopValence), else Catmull-Clark
-  int depth = 3;                 // Catmull-Clark plan depth 1..8 (Loop plans are exact at depth 1)
+  int depth = 3;                 // Catmull-Clark without `exact`: the thesis' Bézier plans of this depth 1..8
   LoopBeta loop_beta = LoopBeta::loop;
+  bool exact = true;             // Catmull-Clark: extraordinary vertices evaluated exactly (Loop's always are)
 };
 
 /// The scheme `options` give for this mesh.

@@ -6,8 +6,8 @@
 
 namespace gps {
 
-TriangleMesh reference_triangles(const CovarianceMesh& mesh, int levels) {
-  const SubdivisionResult r = subdivide(mesh, {Scheme::catmull_clark, levels, true});
+TriangleMesh reference_triangles(const CovarianceMesh& mesh, int levels, const PlanOptions& options) {
+  const SubdivisionResult r = subdivide(mesh, {scheme_for(topology_of(mesh.mesh), options), levels, true, options.loop_beta});
   TriangleMesh t;
   t.positions.resize(r.mesh.n_vertices());
   t.normals.assign(r.mesh.n_vertices(), Vec3::Zero());

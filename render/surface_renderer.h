@@ -64,8 +64,8 @@ public:
   /// New topology: builds plans and stencils (CPU) under the scheme `options` give for the mesh
   /// (Loop for triangles only, else Catmull-Clark) and uploads everything, then a full compute pass.
   void set_mesh(const CovarianceMesh& mesh, const PlanOptions& options);
-  /// The same with the scheme that fits the mesh and Catmull-Clark plans of depth `depth`.
-  void set_mesh(const CovarianceMesh& mesh, int depth) { set_mesh(mesh, PlanOptions{std::nullopt, depth}); }
+  /// The same with the default options: the scheme that fits the mesh, exact plans.
+  void set_mesh(const CovarianceMesh& mesh) { set_mesh(mesh, PlanOptions{}); }
   /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them
   /// (past an eighth of the vertices: whole buffers and the full passes, fewer calls).
   void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);

@@ -20,6 +20,7 @@ void visit_settings(ViewOptions& view, ReachOptions& reach, Visit visit) {
   visit("adaptive", view.adaptive);
   visit("adaptive_pixels", view.adaptive_pixels);
   visit("level", view.draw.level);
+  visit("exact_plans", view.exact);
   visit("plan_depth", view.depth);
   visit("scheme", view.scheme);
   visit("loop_warren", view.warren);

@@ -19,7 +19,8 @@ struct ViewOptions {
   }();
   bool adaptive = true;       // draw.pixels is used (else draw.level)
   float adaptive_pixels = 6.0f;
-  int depth = 3;              // maximum Catmull-Clark plan depth (rebuilds the plans when changed)
+  bool exact = true;          // Catmull-Clark extraordinary vertices evaluated exactly (else the thesis' plans)
+  int depth = 3;              // the thesis' Catmull-Clark plan depth, when not exact (rebuilds the plans when changed)
   int scheme = 0;             // 0 automatic (Loop for triangle meshes), 1 Loop, 2 Catmull-Clark
   bool warren = false;        // Loop with Warren's β (as Preiner's demo)
   bool triangle_mesh = false; // the open mesh has only triangles: the panel offers the scheme (not kept)
@@ -27,6 +28,7 @@ struct ViewOptions {
   /// The plans these options ask for.
   PlanOptions plans() const {
     PlanOptions p;
+    p.exact = exact;
     p.depth = depth;
     if (scheme == 1) p.scheme = Scheme::loop;
     if (scheme == 2) p.scheme = Scheme::catmull_clark;

@@ -22,8 +22,13 @@ void tessellation_section(ViewOptions& o, ViewPanelChanges& changes) {
     if (o.scheme != 2 && ImGui::Checkbox("Warren's beta", &o.warren)) changes.depth = true;
   }
   if (!o.triangle_mesh || o.scheme == 2) {
-    if (ImGui::SliderInt("plan depth", &o.depth, 1, 6)) changes.depth = true;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("maximum quadtree depth at extraordinary vertices (rebuilds the plans)");
+    if (ImGui::Checkbox("exact", &o.exact)) changes.depth = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("extraordinary vertices evaluated exactly (else the thesis' Bezier plans)");
+    if (!o.exact) {
+      ImGui::SameLine();
+      if (ImGui::SliderInt("plan depth", &o.depth, 1, 6)) changes.depth = true;
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("quadtree depth of the thesis' approximate plans (rebuilds the plans)");
+    }
   }
 }
 

@@ -58,7 +58,7 @@ TEST(Picking, SurfacePointUnderAPixelLiesOnTheRay) {
   const auto context = create_offscreen_context();
   const CovarianceMesh mesh = make_sample("cube");
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 3);
+  renderer.set_mesh(mesh);
   RenderTarget target(96, 64);
   const Camera camera = cube_camera();
   DrawOptions o;

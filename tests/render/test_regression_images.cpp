@@ -15,7 +15,7 @@ namespace {
 
 Image render_sample(SurfaceRenderer& renderer, const std::string& name) {
   const CovarianceMesh mesh = make_sample(name);
-  renderer.set_mesh(mesh, 3);
+  renderer.set_mesh(mesh);
   RenderTarget target(128, 128);
   DrawOptions o;
   o.level = 8;

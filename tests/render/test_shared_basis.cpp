@@ -36,9 +36,9 @@ void main() {
   outputs[o + 52] = float(triangle_child(cu, cv, sign));
   outputs[o + 53] = cu; outputs[o + 54] = cv; outputs[o + 55] = sign;
   float s, t, scale;
-  turn_to_corner(1, u, v, s, t);
+  triangle_turn_to_corner(1, u, v, s, t);
   outputs[o + 56] = s; outputs[o + 57] = t;
-  turn_to_corner(2, u, v, s, t);
+  triangle_turn_to_corner(2, u, v, s, t);
   outputs[o + 58] = s; outputs[o + 59] = t;
   s = 0.001 * u; t = 0.001 * v;
   outputs[o + 60] = float(loop_ev_locate(s, t, scale));
@@ -60,9 +60,9 @@ std::vector<double> cpu_probe(double u, double v) {
   out[52] = triangle_child(cu, cv, sign);
   out[53] = cu, out[54] = cv, out[55] = sign;
   double s, t, scale;
-  turn_to_corner(1, u, v, s, t);
+  triangle_turn_to_corner(1, u, v, s, t);
   out[56] = s, out[57] = t;
-  turn_to_corner(2, u, v, s, t);
+  triangle_turn_to_corner(2, u, v, s, t);
   out[58] = s, out[59] = t;
   s = 0.001 * u, t = 0.001 * v;
   out[60] = loop_ev_locate(s, t, scale);

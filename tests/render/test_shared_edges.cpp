@@ -139,22 +139,35 @@ CovarianceMesh mesh_named(const std::string& name) {
 
 class EverySample : public SharedEdges, public ::testing::WithParamInterface<std::string> {};
 
+// Exact plans (the default) at levels 1, 2, 3, 7, 64 and adaptive; the thesis' Bézier plans of
+// depth 3 (--depth 3) at levels 3 and 64.
 TEST_P(EverySample, SharesItsEdgeVerticesBitForBit) {
   const std::string name = GetParam();
   const CovarianceMesh mesh = mesh_named(name);
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 3);
-  std::vector<DrawOptions> settings;
+  std::vector<std::pair<bool, DrawOptions>> settings;
   for (const int level : {1, 2, 3, 7, 64}) {
     DrawOptions o;
     o.level = float(level);
-    settings.push_back(o);
+    settings.push_back({true, o});
   }
   DrawOptions adaptive;
   adaptive.pixels = 3.0f;
-  settings.push_back(adaptive);
-  for (const DrawOptions& o : settings) {
-    const std::string what = name + (o.pixels > 0 ? " adaptive 3 px" : " level " + std::to_string(int(o.level)));
+  settings.push_back({true, adaptive});
+  for (const int level : {3, 64}) {
+    DrawOptions o;
+    o.level = float(level);
+    settings.push_back({false, o});
+  }
+  int loaded = -1;  // the plans set: 1 exact, 0 Bézier
+  for (const auto& [exact, o] : settings) {
+    if (loaded != int(exact)) {
+      PlanOptions plans;
+      plans.exact = exact;
+      renderer.set_mesh(mesh, plans);
+      loaded = int(exact);
+    }
+    const std::string what = name + (exact ? "" : " depth-3") + (o.pixels > 0 ? " adaptive 3 px" : " level " + std::to_string(int(o.level)));
     const SharedEdgeCheck c = check_shared_edges(renderer, mesh, o);
     EXPECT_GT(c.vertices, 0u) << what;
     EXPECT_EQ(c.without_twin, 0u) << what;
@@ -176,7 +189,7 @@ TEST_F(SharedEdges, MismatchedEdgeLevelsLeaveVerticesWithoutATwin) {
   for (const char* name : {"cube", "cylinder", "icosphere"}) {
     const CovarianceMesh mesh = make_sample(name);
     SurfaceRenderer renderer;
-    renderer.set_mesh(mesh, 3);
+    renderer.set_mesh(mesh);
     DrawOptions o;
     o.level = 3.0f;
     o.debug_mismatch = true;

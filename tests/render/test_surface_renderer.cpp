@@ -74,7 +74,7 @@ TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
   for (const char* name : {"cube", "cone-pointy", "cylinder"}) {
     const CovarianceMesh mesh = make_sample(name);
     SurfaceRenderer renderer;
-    renderer.set_mesh(mesh, 3);
+    renderer.set_mesh(mesh);
     const test::PlannedMesh cpu(mesh, PlanOptions{std::nullopt, 3});
     const auto gpu = renderer.read_points();
     ASSERT_EQ(gpu.size(), cpu.points.size() * 12);
@@ -117,7 +117,7 @@ TEST_F(GpuTest, AovsMatchTheCpuEvaluatorPixelForPixel) {
   for (const char* name : {"valence5", "wirecube", "cone"}) {
     const CovarianceMesh mesh = make_sample(name);
     SurfaceRenderer renderer;
-    renderer.set_mesh(mesh, 3);
+    renderer.set_mesh(mesh);
     const test::PlannedMesh cpu(mesh, PlanOptions{std::nullopt, 3});
     DrawOptions o;
     o.level = 64;  // the two triangulations differ by the chord error, ~1e-4 of the diagonal at 64 here
@@ -261,7 +261,7 @@ TEST_F(GpuTest, TessellationIsCrackFree) {
   for (const char* name : {"cube", "wirecube", "cylinder", "pawn", "open-cylinder", "icosphere"}) {
     const CovarianceMesh mesh = crack_test_mesh(name);
     SurfaceRenderer renderer;
-    renderer.set_mesh(mesh, 3);
+    renderer.set_mesh(mesh);
     DrawOptions o;
     o.flag_back_faces = true;
     o.background = {1.0f, 0.0f, 0.0f};
@@ -291,7 +291,7 @@ TEST_P(PinholeTest, NoPinholeFromTwentyCameras) {
   const std::string name = GetParam();
   const CovarianceMesh mesh = crack_test_mesh(name);
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 3);
+  renderer.set_mesh(mesh);
   DrawOptions o;
   o.flag_back_faces = true;
   o.background = {1.0f, 0.0f, 0.0f};
@@ -327,7 +327,7 @@ TEST_P(PinholeTest, NoPinholeFromTwentyCameras) {
 TEST_F(GpuTest, PinholeDetectorFindsOnePunchedPixel) {
   const CovarianceMesh mesh = make_sample("cube");
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 3);
+  renderer.set_mesh(mesh);
   DrawOptions o;
   o.background = {1.0f, 0.0f, 0.0f};
   Frame f = render_frame(renderer, frame_mesh(mesh, 35.0f, 25.0f), o, 160);
@@ -389,7 +389,7 @@ TEST_F(GpuTest, PatchEdgeVerticesMeetAtTJunctions) {
   for (const char* name : {"cylinder", "pawn", "open-cylinder"}) {
     const CovarianceMesh mesh = std::string(name) == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name);
     SurfaceRenderer renderer;
-    renderer.set_mesh(mesh, 3);
+    renderer.set_mesh(mesh);
     DrawOptions o;
     for (const int level : {1, 2, 3, 4, 5, 7, 16, 31, 32, 33, 63, 64}) {
       if (level > 16 && std::string(name) == "pawn") break;  // 928 patches: millions of captured vertices
@@ -412,7 +412,7 @@ TEST_F(GpuTest, PatchEdgeVerticesMeetAtTJunctions) {
 TEST_F(GpuTest, EditingOneCovarianceUpdatesTheSurface) {
   CovarianceMesh mesh = make_sample("cube");
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 3);
+  renderer.set_mesh(mesh);
   DrawOptions o;
   o.mode = ShadingMode::normals;
   const Image before = render_color(renderer, mesh, o);
@@ -422,7 +422,7 @@ TEST_F(GpuTest, EditingOneCovarianceUpdatesTheSurface) {
   const Image edited = render_color(renderer, mesh, o);
   EXPECT_EQ(renderer.tables().plans.nodes, nodes);
   SurfaceRenderer rebuilt;
-  rebuilt.set_mesh(mesh, 3);
+  rebuilt.set_mesh(mesh);
   const Image fresh = render_color(rebuilt, mesh, o);
   int changed = 0, mismatched = 0;
   for (size_t i = 0; i < before.pixels.size(); ++i) {
@@ -438,7 +438,7 @@ TEST_F(GpuTest, EditingOneCovarianceUpdatesTheSurface) {
 TEST_F(GpuTest, EditsOfAnySizeEqualARebuild) {
   CovarianceMesh mesh = make_sample("torus");
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 3);
+  renderer.set_mesh(mesh);
   const std::vector<std::vector<int>> edits = {{5}, {1, 40, 41, 200}, [&mesh] {
     std::vector<int> most;
     for (int v = 0; v < int(mesh.n_vertices()); v += 2) most.push_back(v);
@@ -451,7 +451,7 @@ TEST_F(GpuTest, EditsOfAnySizeEqualARebuild) {
     }
     renderer.update_vertices(mesh, changed);
     SurfaceRenderer rebuilt;
-    rebuilt.set_mesh(mesh, 3);
+    rebuilt.set_mesh(mesh);
     EXPECT_EQ(renderer.read_points(), rebuilt.read_points()) << changed.size() << " vertices";
   }
 }
@@ -461,7 +461,7 @@ TEST_F(GpuTest, EditsOfAnySizeEqualARebuild) {
 TEST_F(GpuTest, WireframeOverStaticTriangles) {
   const CovarianceMesh mesh = make_sample("cube");
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 2);
+  renderer.set_mesh(mesh);
   renderer.set_triangles(reference_triangles(mesh, 2));
   DrawOptions o;
   o.static_triangles = true;
@@ -482,7 +482,7 @@ TEST_F(GpuTest, WireframeOverStaticTriangles) {
 TEST_F(GpuTest, EllipsoidsFollowEditsAndSigma) {
   CovarianceMesh mesh = make_sample("cube");
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 2);
+  renderer.set_mesh(mesh);
   DrawOptions o;
   o.ellipsoids = true;
   o.sigma_scale = 1.5f;
@@ -491,7 +491,7 @@ TEST_F(GpuTest, EllipsoidsFollowEditsAndSigma) {
   renderer.update_vertices(mesh, {6});
   const Image edited = render_color(renderer, mesh, o);
   SurfaceRenderer rebuilt;
-  rebuilt.set_mesh(mesh, 2);
+  rebuilt.set_mesh(mesh);
   const Image fresh = render_color(rebuilt, mesh, o);
   o.sigma_scale = 3.0f;
   const Image wider = render_color(rebuilt, mesh, o);
@@ -511,7 +511,7 @@ TEST_F(GpuTest, StatisticsCountTheTessellatedTriangles) {
   for (const auto& [name, size, level] : {std::tuple{"cube", 0, 4}, std::tuple{"sphere", 500, 16}}) {
     const CovarianceMesh mesh = make_sample(name, size);
     SurfaceRenderer renderer;
-    renderer.set_mesh(mesh, 3);
+    renderer.set_mesh(mesh);
     DrawOptions o;
     o.level = float(level);
     render_color(renderer, mesh, o, 64);
@@ -538,7 +538,7 @@ TEST_F(GpuTest, StatisticsCountTheTessellatedTriangles) {
 TEST_F(GpuTest, MeshLinesFollowAMovedVertex) {
   CovarianceMesh mesh = make_sample("cube");
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 2);
+  renderer.set_mesh(mesh);
   const Camera camera = frame_box(Vec3(-3, -3, -3), Vec3(3, 3, 3), 35.0f, 25.0f);
   DrawOptions o;
   o.mesh_lines = true;
@@ -564,7 +564,7 @@ TEST_F(GpuTest, MeshLinesFollowAMovedVertex) {
   EXPECT_EQ(line_near(before), 0);
   EXPECT_GE(line_near(edited), 2);
   SurfaceRenderer rebuilt;
-  rebuilt.set_mesh(mesh, 2);
+  rebuilt.set_mesh(mesh);
   rebuilt.draw(target, camera, o);
   const Image fresh = target.read(0);
   int mismatched = 0;
@@ -579,7 +579,7 @@ TEST_F(GpuTest, PassTimerSeesComputeAndEachDrawnLayer) {
   SurfaceRenderer renderer;
   GpuPassTimer timer;
   renderer.set_pass_timer(&timer);
-  renderer.set_mesh(mesh, 2);
+  renderer.set_mesh(mesh);
   DrawOptions o;
   o.mesh_lines = true;
   render_color(renderer, mesh, o, 64);
@@ -611,7 +611,7 @@ TEST_F(GpuTest, ComputePassesSplitIntoSeveralDispatches) {
   const CovarianceMesh mesh = subdivide(make_sample("cone"), loop).mesh;
   SurfaceRenderer renderer;
   renderer.lower_device_limits(64, 0);
-  renderer.set_mesh(mesh, PlanOptions{Scheme::catmull_clark, 5, LoopBeta::loop});  // split triangles: many rows
+  renderer.set_mesh(mesh, PlanOptions{Scheme::catmull_clark, 5, LoopBeta::loop, false});  // the thesis plans of depth 5: many rows
   const int n_rows = renderer.tables().stencils.n_rows();
   ASSERT_GT(n_rows, 20 * 64 * 64);
   const auto gpu = renderer.read_points();
@@ -640,11 +640,11 @@ TEST_F(GpuTest, ComputePassesSplitIntoSeveralDispatches) {
 // takes some 3 million plan points, a minute of plan building); the previous mesh stays.
 TEST_F(GpuTest, AMeshBeyondTheStorageLimitIsRefusedWithItsFigures) {
   SurfaceRenderer renderer;
-  renderer.set_mesh(make_sample("cube"), 3);
+  renderer.set_mesh(make_sample("cube"));
   renderer.lower_device_limits(0, 64 << 10);
   const CovarianceMesh sphere = make_sample("sphere");  // 1536 quads: more than 64 KiB of points
   try {
-    renderer.set_mesh(sphere, 3);
+    renderer.set_mesh(sphere);
     ADD_FAILURE() << "accepted";
   } catch (const Error& e) {
     const std::string what = e.what();

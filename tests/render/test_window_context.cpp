@@ -18,7 +18,7 @@ TEST(WindowContext, DrawsTheSurfaceIntoAWindow) {
   EXPECT_NE(window.description().find("4.5"), std::string::npos) << window.description();
   const CovarianceMesh mesh = make_sample("cube");
   SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, 3);
+  renderer.set_mesh(mesh);
   int width = 0, height = 0;
   window.framebuffer_size(width, height);
   RenderTarget target(width, height);

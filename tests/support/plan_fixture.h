@@ -17,8 +17,8 @@ struct PlannedMesh {
       : mesh(std::move(m)), tables(build_surface_plans(topology_of(mesh.mesh), options)), base(base_points(mesh)) {
     points = apply_stencils(tables.stencils, base);
   }
-  /// Catmull-Clark plans of the given depth.
-  PlannedMesh(CovarianceMesh m, int depth) : PlannedMesh(std::move(m), PlanOptions{Scheme::catmull_clark, depth}) {}
+  /// The thesis' approximate Catmull-Clark plans of the given depth (Bézier patches at extraordinary vertices).
+  PlannedMesh(CovarianceMesh m, int depth) : PlannedMesh(std::move(m), PlanOptions{Scheme::catmull_clark, depth, LoopBeta::loop, false}) {}
 };
 
 }  // namespace gps::test

@@ -1,0 +1,37 @@
+#include "core/ev_corner_masks.h"
+
+#include <stdexcept>
+
+namespace gps {
+
+CornerMasks extraordinary_corner_masks(const Eigen::MatrixXd& step, Eigen::RowVectorXd d_s, Eigen::RowVectorXd d_t) {
+  CornerMasks masks;
+  // stepⁿ for n = 2^20 at most (every row converges to the limit mask: eigenvalue 1, all others
+  // smaller in size); the rows are kept affine (summing to 1), so rounding cannot grow eigenvalue 1.
+  Eigen::MatrixXd power = step;
+  for (int i = 0; i < 20; ++i) {
+    Eigen::MatrixXd next = power * power;
+    for (Eigen::Index r = 0; r < next.rows(); ++r) next.row(r) /= next.row(r).sum();
+    const double change = (next - power).cwiseAbs().maxCoeff();
+    power = next;
+    if (change < 1e-16) break;
+  }
+  masks.position = power.row(0);
+  if ((power.rowwise() - masks.position).cwiseAbs().maxCoeff() > 1e-12)
+    throw std::logic_error("extraordinary corner: the subdivision step does not converge to one limit point");
+  // Subspace iteration on {d_s, d_t}; the limit's own part (weights summing to 1) is removed each step.
+  const auto without_position = [&](Eigen::RowVectorXd r) { return Eigen::RowVectorXd(r - r.sum() * masks.position); };
+  for (int i = 0; i < 200; ++i) {
+    d_s = without_position(d_s * step);
+    d_t = without_position(d_t * step);
+    const double length = d_s.norm();
+    d_s /= length;
+    d_t -= d_t.dot(d_s) * d_s;
+    d_t /= d_t.norm();
+  }
+  masks.d_s = d_s;
+  masks.d_t = d_t;
+  return masks;
+}
+
+}  // namespace gps
