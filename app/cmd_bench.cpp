@@ -2,6 +2,7 @@
 // --render: frame times per mesh and level; --edit: edit-to-frame time on a large mesh (issue "editor").
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -81,10 +82,31 @@ nlohmann::json bench_preprocess(const std::string& name, int size, const PlanOpt
           {"stencil_update_one_vertex_us", update * 1e6}};
 }
 
+// "NAME" or "NAME:FACES" (FACES 0: the sample's default size), checked against the samples.
+std::vector<std::pair<std::string, int>> sample_list(const std::vector<std::string>& specs) {
+  std::vector<std::pair<std::string, int>> list;
+  for (const std::string& spec : specs) {
+    const size_t colon = spec.find(':');
+    const std::string name = spec.substr(0, colon);
+    int faces = 0;
+    if (colon != std::string::npos) {
+      const std::string count = spec.substr(colon + 1);
+      if (count.empty() || count.size() > 8 || count.find_first_not_of("0123456789") != std::string::npos)
+        throw usage_error("bench: '" + spec + "' is not NAME or NAME:FACES");
+      faces = std::stoi(count);
+      if (!sample_has_size(name)) throw usage_error("bench: the sample '" + name + "' has no size to set");
+    }
+    const std::vector<std::string> known = sample_names();
+    if (std::find(known.begin(), known.end(), name) == known.end()) make_sample(name);  // refuses it, listing the samples
+    list.emplace_back(name, faces);
+  }
+  return list;
+}
+
 // Frame time per mesh and level: the compute passes, the tessellated draw, and the floor: the same
 // triangles (CPU tessellation) drawn from a static vertex buffer with the same shading.
-nlohmann::json bench_render(const std::string& name, const PlanOptions& options, int size, const std::vector<int>& levels) {
-  const CovarianceMesh mesh = make_sample(name);
+nlohmann::json bench_render(const std::string& name, int faces, const PlanOptions& options, int size, const std::vector<int>& levels) {
+  const CovarianceMesh mesh = make_sample(name, faces);
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh, options);
   const Camera camera = frame_mesh(mesh);
@@ -102,7 +124,8 @@ nlohmann::json bench_render(const std::string& name, const PlanOptions& options,
     o.static_triangles = true;
     const FrameTiming floor = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
     const double n = double(triangles.triangles.size());
-    rows.push_back({{"mesh", name},
+    rows.push_back({{"mesh", mesh.name},
+                    {"faces", mesh.mesh.n_faces()},
                     {"patches", renderer.tables().plans.n_patches()},
                     {"level", level},
                     {"triangles", n},
@@ -197,6 +220,8 @@ void add_bench_command(CLI::App& app) {
     int size = 0;  // the mode's default
     PlanArguments plans;
     std::string json, plots, context = "auto", mesh;
+    std::vector<std::string> meshes;
+    std::vector<int> levels = {1, 4, 16, 64};
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("bench", "Benchmarks (figures for the closing notes; see also build/bench/)");
@@ -208,6 +233,11 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::Range(16, 4000000));
   add_plan_arguments(cmd, args->plans);
   cmd->add_option("--mesh", args->mesh, "--edit: the sample to edit (default: sphere; icosphere for triangles)");
+  cmd->add_option("--meshes", args->meshes, "--render, --preprocess: these samples instead of the default list, each NAME or NAME:FACES")
+      ->delimiter(',');
+  cmd->add_option("--levels", args->levels, "--render: the uniform tessellation levels (default 1,4,16,64)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 64));
   cmd->add_option("--json", args->json, "also write the figures as JSON");
   cmd->add_option("--plots", args->plots, "with --render: write PREFIX_frame_time.png and PREFIX_memory.png");
   cmd->callback([args] {
@@ -249,8 +279,10 @@ void add_bench_command(CLI::App& app) {
                   "draw(gpu)", "frame", "tri/s", "static", "ratio", "memory");
       nlohmann::json all = nlohmann::json::array();
       // pawn against pawn-quads: a mixed mesh against its quads-only twin (issue 12).
-      for (const char* name : {"cube", "wirecube", "cylinder", "valence5", "cone-pointy", "icosphere", "pawn", "pawn-quads"}) {
-        for (const auto& r : bench_render(name, args->plans.options(), args->size, {1, 4, 16, 64})) {
+      const auto meshes = args->meshes.empty() ? sample_list({"cube", "wirecube", "cylinder", "valence5", "cone-pointy", "icosphere", "pawn", "pawn-quads"})
+                                               : sample_list(args->meshes);
+      for (const auto& [name, faces] : meshes) {
+        for (const auto& r : bench_render(name, faces, plans, args->size, args->levels)) {
           std::printf("%-12s %7d %5d %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %6.1f kB\n", r["mesh"].get<std::string>().c_str(),
                       r["patches"].get<int>(), r["level"].get<int>(), r["triangles"].get<double>(), r["compute_gpu_ms"].get<double>(),
                       r["draw_gpu_ms"].get<double>(), r["frame_ms"].get<double>(), r["triangles_per_second"].get<double>(),
@@ -279,11 +311,11 @@ void add_bench_command(CLI::App& app) {
       }
       return;
     }
-    std::vector<std::pair<std::string, int>> meshes = {{"cube", 0}, {"wirecube", 0}};
-    for (int n = 3; n <= 10; ++n) meshes.emplace_back("valence" + std::to_string(n), 0);
-    meshes.insert(meshes.end(), {{"sphere", 250}, {"grid", 1000}, {"grid", 10000}, {"grid", 100000},
-                                 {"sphere", 1000}, {"sphere", 10000}, {"sphere", 100000}, {"icosphere", 1280},
-                                 {"icosphere", 20480}, {"icosphere", 81920}, {"icosphere", 1310720}, {"cone-pointy", 0}});
+    std::vector<std::string> names = {"cube", "wirecube"};
+    for (int n = 3; n <= 10; ++n) names.push_back("valence" + std::to_string(n));
+    names.insert(names.end(), {"sphere:250", "grid:1000", "grid:10000", "grid:100000", "sphere:1000", "sphere:10000", "sphere:100000",
+                               "icosphere:1280", "icosphere:20480", "icosphere:81920", "icosphere:1310720", "cone-pointy"});
+    const auto meshes = sample_list(args->meshes.empty() ? names : args->meshes);
     nlohmann::json all = nlohmann::json::array();
     std::printf("%-18s %7s %8s %7s %8s %12s %11s %10s %10s %10s %9s\n", "mesh", "faces", "patches", "rows", "nnz",
                 "preprocess", "us/face", "dual map", "apply", "1-vertex", "B/face");

@@ -63,6 +63,8 @@ struct PlanTable {
                                               // tessellation levels); a corner shared by two patches has
                                               // the same index in both
   std::vector<int32_t> patch_edges;           // quads: 4 × 3 per patch, see PatchEdgePart
+  std::vector<int32_t> patch_neighbours;      // 4 per patch edge and corner_owners 2 per patch corner:
+  std::vector<int32_t> corner_owners;         // core/patch_adjacency.h (build_surface_plans fills them)
   std::vector<double> ev_tables;              // triangles: the tables of core/loop_ev_tables.h
   int32_t corners() const { return int32_t(shape); }
   int32_t n_patches() const { return int32_t(patch_roots.size()); }

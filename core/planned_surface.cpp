@@ -4,6 +4,7 @@
 
 #include "core/dual_map.h"
 #include "core/loop_plan_builder.h"
+#include "core/patch_adjacency.h"
 #include "core/reference_subdivision.h"
 
 namespace gps {
@@ -20,9 +21,11 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
 }
 
 PlanTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options) {
-  if (scheme_for(topology, options) == Scheme::loop) return build_loop_plans(topology, options.loop_beta);
-  if (options.exact) return build_plans(topology, options.depth, ExtraordinaryNodes::exact);
-  return build_plans(topology, options.depth, ExtraordinaryNodes::bezier);
+  const ExtraordinaryNodes extraordinary = options.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier;
+  PlanTables tables = scheme_for(topology, options) == Scheme::loop ? build_loop_plans(topology, options.loop_beta)
+                                                                    : build_plans(topology, options.depth, extraordinary);
+  add_patch_adjacency(tables.plans);
+  return tables;
 }
 
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {

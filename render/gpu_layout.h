@@ -22,7 +22,9 @@ GPS_LAYOUT_CONST int kBindingChanged = 8;       // an edit's changed vertices
 GPS_LAYOUT_CONST int kBindingRows = 9;          // the stencil rows that read them
 GPS_LAYOUT_CONST int kBindingEvTables = 10;     // Loop extraordinary tables (core/loop_ev_tables.h)
 GPS_LAYOUT_CONST int kBindingPatchEdges = 11;   // quads: patch edges and their parts (core/plan_table.h)
-GPS_LAYOUT_CONST int kBindingCount = 12;
+GPS_LAYOUT_CONST int kBindingPatchNeighbours = 12;  // per patch edge: the patch across (core/patch_adjacency.h)
+GPS_LAYOUT_CONST int kBindingCornerOwners = 13;     // per patch corner: the patch that evaluates it
+GPS_LAYOUT_CONST int kBindingCount = 14;
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;

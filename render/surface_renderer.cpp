@@ -21,7 +21,7 @@ using namespace gpu;
 constexpr int kGaussians = kBindingGaussians, kPoints = kBindingPoints, kOffsets = kBindingOffsets, kIndices = kBindingIndices,
               kWeights = kBindingWeights, kNodes = kBindingNodes, kRoots = kBindingRoots, kCorners = kBindingCorners,
               kChanged = kBindingChanged, kRows = kBindingRows, kEvTables = kBindingEvTables, kEdges = kBindingPatchEdges,
-              kBindings = kBindingCount;
+              kNeighbours = kBindingPatchNeighbours, kOwners = kBindingCornerOwners, kBindings = kBindingCount;
 
 // The patch program of a shape: quads (Catmull-Clark plans) or triangles (Loop plans). Triangle
 // patches draw their wireframe through mesh_geom.glsl (the tessellator's triangles do not follow
@@ -34,12 +34,13 @@ ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
   if (output == PatchOutput::wireframe) evaluation.insert(evaluation.begin(), shaders::geometry_next);
   control.push_back(triangles ? shaders::triangle_tesc : shaders::patch_tesc);
   if (triangles) evaluation.push_back(shaders::loop_eval);
+  evaluation.push_back(shaders::canonical_edge);
   evaluation.push_back(triangles ? shaders::triangle_tese : shaders::patch_tese);
   std::vector<ShaderStage> stages = {{GL_VERTEX_SHADER, {shaders::patch_vert}},
                                      {GL_TESS_CONTROL_SHADER, control},
                                      {GL_TESS_EVALUATION_SHADER, evaluation}};
   const std::string name = triangles ? "triangle_patch" : "patch";
-  if (feedback) return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal"});
+  if (feedback) return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal", "v_evaluated"});
   if (output == PatchOutput::wireframe) stages.push_back({GL_GEOMETRY_SHADER, {shaders::mesh_geom}});
   stages.push_back({GL_FRAGMENT_SHADER, {shaders::shade_frag}});
   return ShaderProgram(name + (output == PatchOutput::wireframe ? "_wire" : ""), stages);
@@ -115,6 +116,8 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, const PlanOptions& op
   upload(buffers_[kCorners], buffer_sizes_[kCorners], tables_.plans.patch_corner_points);
   upload(buffers_[kEvTables], buffer_sizes_[kEvTables], std::vector<float>(tables_.plans.ev_tables.begin(), tables_.plans.ev_tables.end()));
   upload(buffers_[kEdges], buffer_sizes_[kEdges], tables_.plans.patch_edges);
+  upload(buffers_[kNeighbours], buffer_sizes_[kNeighbours], tables_.plans.patch_neighbours);
+  upload(buffers_[kOwners], buffer_sizes_[kOwners], tables_.plans.corner_owners);
   upload(buffers_[kPoints], buffer_sizes_[kPoints], std::vector<float>(size_t(s.n_points()) * kVec4PerPoint * 4, 0.0f));
   upload_gaussians(mesh);
   // Base mesh lines: the vertex positions (updated by edits) and each edge as a pair of indices.
@@ -328,8 +331,11 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   check_gl_errors("drawing");
 }
 
-std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, float aspect) {
-  const size_t max_vertices = size_t(tables_.plans.n_patches()) * 64 * 64 * 6 + 64;
+std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, float aspect,
+                                                                 int first_patch, int n_patches) {
+  first_patch = std::clamp(first_patch, 0, tables_.plans.n_patches());
+  n_patches = n_patches < 0 ? tables_.plans.n_patches() - first_patch : std::min(n_patches, tables_.plans.n_patches() - first_patch);
+  const size_t max_vertices = size_t(n_patches) * 64 * 64 * 6 + 64;
   unsigned buffer = 0, query = 0;
   glCreateBuffers(1, &buffer);
   glNamedBufferData(buffer, GLsizeiptr(max_vertices * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
@@ -342,7 +348,7 @@ std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& c
   glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
   glBeginQuery(GL_PRIMITIVES_GENERATED, query);
   glBeginTransformFeedback(GL_TRIANGLES);
-  draw_patches(feedback, o);
+  draw_patches(feedback, o, first_patch, n_patches);
   glEndTransformFeedback();
   glEndQuery(GL_PRIMITIVES_GENERATED);
   glDisable(GL_RASTERIZER_DISCARD);
@@ -363,7 +369,7 @@ std::vector<float> SurfaceRenderer::read_points() const {
   return points;
 }
 
-void SurfaceRenderer::draw_patches(const ShaderProgram& program, const DrawOptions& o) const {
+void SurfaceRenderer::draw_patches(const ShaderProgram& program, const DrawOptions& o, int first_patch, int n_patches) const {
   // Mesa 22.3's llvmpipe was seen to drop whole patches from draws that generate some 10^5
   // vertices (the crack test caught it), so draw in batches of at most ~2^15 generated vertices at
   // the chosen level (adaptive levels: the worst case, 64).
@@ -371,9 +377,10 @@ void SurfaceRenderer::draw_patches(const ShaderProgram& program, const DrawOptio
   const int batch = std::max(1, 32768 / ((level + 1) * (level + 1)));
   glBindVertexArray(empty_vao_);
   glPatchParameteri(GL_PATCH_VERTICES, 1);
-  for (int first = 0; first < tables_.plans.n_patches(); first += batch) {
+  const int end = n_patches < 0 ? tables_.plans.n_patches() : std::min(tables_.plans.n_patches(), first_patch + n_patches);
+  for (int first = first_patch; first < end; first += batch) {
     program.set("u_first_patch", first);
-    glDrawArrays(GL_PATCHES, 0, std::min(batch, tables_.plans.n_patches() - first));
+    glDrawArrays(GL_PATCHES, 0, std::min(batch, end - first));
   }
 }
 

@@ -41,10 +41,13 @@ struct DrawOptions {
 };
 
 /// One vertex the tessellator produced: patch, (u, v), position and normal (transform feedback).
+/// A vertex on a patch edge is evaluated from the canonical patch of that point
+/// (shaders/canonical_edge.glsl): `evaluated` is the patch and (u, v) that computed it.
 struct TessellatedVertex {
   float patch, u, v;
   float position[3];
   float normal[3];
+  float evaluated[3];
 };
 
 /// What the patch draws produced (pipeline-statistics queries; see SurfaceRenderer::set_collect_statistics).
@@ -77,8 +80,10 @@ public:
   void set_matcap(const Image& matcap);
 
   void draw(const RenderTarget& target, const Camera& camera, const DrawOptions& options);
-  /// The vertices the tessellator generates for `options` (no rasterisation).
-  std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, float aspect);
+  /// The vertices the tessellator generates for `options` (no rasterisation), of the patches
+  /// [first_patch, first_patch + n_patches) (n_patches < 0: to the last).
+  std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, float aspect,
+                                                  int first_patch = 0, int n_patches = -1);
 
   /// Times the compute passes ("9D + stencils") and each drawn layer ("surface", "ellipsoids",
   /// "mesh lines") into `timer`; nullptr (the default) times nothing.
@@ -106,7 +111,7 @@ private:
   void upload_gaussians(const CovarianceMesh& mesh);
   void upload_line_positions(const CovarianceMesh& mesh);
   void run_compute(const std::vector<int>* changed);
-  void draw_patches(const ShaderProgram& program, const DrawOptions& options) const;
+  void draw_patches(const ShaderProgram& program, const DrawOptions& options, int first_patch = 0, int n_patches = -1) const;
   void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& options, float aspect, int width,
                           int height) const;
 

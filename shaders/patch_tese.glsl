@@ -8,31 +8,53 @@ uniform mat4 u_view_projection;
 out vec3 v_position;
 out vec3 v_normal;
 out vec3 v_patch_uv;  // patch id and (u, v), for transform feedback checks
+out vec3 v_evaluated; // the patch id and (u, v) evaluated: the canonical patch on patch edges (canonical_edge.glsl)
 out vec3 v_grid;      // tessellation grid coordinates, for the wireframe (z: no third family)
 flat out int v_kind;  // plan node kind: 1 regular (exact B-spline), 2 terminal (Bézier approximation)
 
 // The tessellator places the vertices of an outer edge of level n near i/n (llvmpipe: in fixed
-// point), and the roundings differ between levels. A quad edge at level 2n meets two half-size
-// patches at level n (core/plan_table.h, PatchEdgePart): snapped to the exact i/n, a vertex of the
-// quad and the vertex of the half beside it evaluate the same limit point at the same parameter.
-vec2 edge_snapped_coord() {
-  vec2 uv = gl_TessCoord.xy;
-  float n_u0 = ceil(gl_TessLevelOuter[0]), n_v0 = ceil(gl_TessLevelOuter[1]);
-  float n_u1 = ceil(gl_TessLevelOuter[2]), n_v1 = ceil(gl_TessLevelOuter[3]);
-  if (uv.y == 0.0) uv.x = round(uv.x * n_v0) / n_v0;
-  else if (uv.y == 1.0) uv.x = round(uv.x * n_v1) / n_v1;
-  if (uv.x == 0.0) uv.y = round(uv.y * n_u0) / n_u0;
-  else if (uv.x == 1.0) uv.y = round(uv.y * n_u1) / n_u1;
-  return uv;
+// point). A vertex on the patch's boundary is named by its edge and step i (integers), and
+// evaluated from the canonical patch of that point at exactly i/n (canonical_edge.glsl): every
+// patch beside an edge or around a corner, T-junctions with half-size patches included
+// (core/plan_table.h, PatchEdgePart), generates it bit for bit alike.
+bool boundary_point(out EdgePoint e) {
+  vec2 t = gl_TessCoord.xy;
+  int n0 = int(ceil(gl_TessLevelOuter[1])), n1 = int(ceil(gl_TessLevelOuter[2]));  // edges v = 0, u = 1
+  int n2 = int(ceil(gl_TessLevelOuter[3])), n3 = int(ceil(gl_TessLevelOuter[0]));  // edges v = 1, u = 0
+  if (t.y == 0.0) e = EdgePoint(tc_patch, 0, int(round(t.x * float(n0))), n0);
+  else if (t.x == 1.0) e = EdgePoint(tc_patch, 1, int(round(t.y * float(n1))), n1);
+  else if (t.y == 1.0) e = EdgePoint(tc_patch, 2, n2 - int(round(t.x * float(n2))), n2);
+  else if (t.x == 0.0) e = EdgePoint(tc_patch, 3, n3 - int(round(t.y * float(n3))), n3);
+  else return false;
+  return true;
+}
+
+// (u, v) of an edge point; corners are (0,0), (1,0), (1,1), (0,1).
+vec2 edge_point_uv(EdgePoint e) {
+  vec2 f = edge_fractions(e);
+  if (e.edge == 0) return vec2(f.x, 0.0);
+  if (e.edge == 1) return vec2(1.0, f.x);
+  if (e.edge == 2) return vec2(f.y, 1.0);
+  return vec2(0.0, f.y);
 }
 
 void main() {
   vec3 mu, mu_u, mu_v;
-  vec2 uv = edge_snapped_coord();
-  evaluate_plan(tc_patch, uv, mu, mu_u, mu_v, v_kind);
+  vec2 uv = gl_TessCoord.xy;
+  int patch_id = tc_patch;
+  vec2 eval_uv = uv;
+  EdgePoint e;
+  if (boundary_point(e)) {
+    uv = edge_point_uv(e);
+    EdgePoint c = canonical_boundary_point(e, 4);
+    patch_id = c.patch_id;
+    eval_uv = edge_point_uv(c);
+  }
+  evaluate_plan(patch_id, eval_uv, mu, mu_u, mu_v, v_kind);
   v_position = mu;
   v_normal = normalize(cross(mu_u, mu_v));
   v_patch_uv = vec3(float(tc_patch), uv);
+  v_evaluated = vec3(float(patch_id), eval_uv);
   v_grid = vec3(gl_TessCoord.xy * vec2(gl_TessLevelInner[0], gl_TessLevelInner[1]), 0.5);
   gl_Position = u_view_projection * vec4(mu, 1.0);
 }
