@@ -26,7 +26,8 @@ constexpr int kGaussians = kBindingGaussians, kPoints = kBindingPoints, kOffsets
 // The patch program of a shape: quads (Catmull-Clark plans) or triangles (Loop plans). Triangle
 // patches draw their wireframe through mesh_geom.glsl (the tessellator's triangles do not follow
 // lines of constant barycentrics).
-enum class PatchOutput { shaded, feedback, wireframe };
+// `capture`: what the fragment shader reads, for the surface cache (cache_vert.glsl redraws it).
+enum class PatchOutput { shaded, feedback, wireframe, capture };
 ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
   const bool triangles = shape == PatchShape::triangle, feedback = output == PatchOutput::feedback;
   std::vector<const char*> control = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::tess_levels};
@@ -41,6 +42,7 @@ ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
                                      {GL_TESS_EVALUATION_SHADER, evaluation}};
   const std::string name = triangles ? "triangle_patch" : "patch";
   if (feedback) return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal", "v_evaluated"});
+  if (output == PatchOutput::capture) return ShaderProgram(name + "_capture", stages, {"v_position", "v_normal", "v_grid", "v_kind"});
   if (output == PatchOutput::wireframe) stages.push_back({GL_GEOMETRY_SHADER, {shaders::mesh_geom}});
   stages.push_back({GL_FRAGMENT_SHADER, {shaders::shade_frag}});
   return ShaderProgram(name + (output == PatchOutput::wireframe ? "_wire" : ""), stages);
@@ -60,7 +62,15 @@ SurfaceRenderer::SurfaceRenderer()
       triangles_wire_("mesh_wire", {{GL_VERTEX_SHADER, {shaders::geometry_next, shaders::mesh_vert}},
                                     {GL_GEOMETRY_SHADER, {shaders::mesh_geom}},
                                     {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
-      lines_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
+      lines_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}),
+      capture_(patch_program(PatchShape::quad, PatchOutput::capture)),
+      triangle_capture_(patch_program(PatchShape::triangle, PatchOutput::capture)),
+      cached_("cached", {{GL_VERTEX_SHADER, {shaders::geometry_next, shaders::cache_vert}},
+                         {GL_GEOMETRY_SHADER, {shaders::cache_geom}},
+                         {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
+      cached_wire_("cached_wire", {{GL_VERTEX_SHADER, {shaders::geometry_next, shaders::cache_vert}},
+                                   {GL_GEOMETRY_SHADER, {shaders::mesh_geom}},
+                                   {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}) {
   glCreateBuffers(kBindings, buffers_);
   glCreateVertexArrays(1, &empty_vao_);
   glCreateVertexArrays(1, &triangle_vao_);
@@ -126,6 +136,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, const PlanOptions& op
   for (const auto e : mesh.mesh.edges()) edges.insert(edges.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
   line_index_count_ = int(edges.size());
   upload_line_positions(mesh);
+  cache_.set_cage(mesh);
   glNamedBufferData(lines_ibo_, GLsizeiptr(std::max<size_t>(2, edges.size()) * sizeof(unsigned)), edges.data(), GL_STATIC_DRAW);
   run_compute(nullptr);
 }
@@ -153,6 +164,7 @@ void SurfaceRenderer::upload_line_positions(const CovarianceMesh& mesh) {
 }
 
 void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  cache_.update_cage(mesh, changed);
   if (changed.size() * 8 > size_t(n_base_)) {  // most of the mesh (select all, drag): whole buffers, one call each
     upload_gaussians(mesh);
     upload_line_positions(mesh);
@@ -173,6 +185,7 @@ void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vec
 
 void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
   const GpuPassScope pass(timer_, "9D + stencils");
+  ++points_generation_;
   const int n_rows = tables_.stencils.n_rows();
   for (int b = 0; b < kBindings; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
   int vertex_count = n_base_, row_count = n_rows;
@@ -289,13 +302,20 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glDepthFunc(GL_LEQUAL);
     glBindTextureUnit(0, matcap_);
     for (int b = 0; b < kBindings; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+    const bool cached = !o.static_triangles && o.surface_cache && draw_from_cache(camera, o, aspect, target.width(), target.height());
     // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
-    const ShaderProgram& program = !o.static_triangles ? patch_program_for(false, o.wireframe) : o.wireframe ? triangles_wire_ : triangles_;
+    const bool triangle_wire = o.wireframe && tables_.plans.shape == PatchShape::triangle;
+    const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : cached_)
+                                   : !o.static_triangles ? patch_program_for(false, o.wireframe)
+                                   : o.wireframe         ? triangles_wire_
+                                                         : triangles_;
     set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
     program.use();
     if (o.static_triangles) {
       glBindVertexArray(triangle_vao_);
       glDrawElements(GL_TRIANGLES, 3 * triangle_count_, GL_UNSIGNED_INT, nullptr);
+    } else if (cached) {
+      cache_.draw();
     } else {
       if (statistics_) statistics_->begin();
       draw_patches(program, o);
@@ -329,6 +349,35 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   }
   glBindVertexArray(0);
   check_gl_errors("drawing");
+}
+
+// Captures the patches' triangles when the cache does not hold them for these inputs (the storage
+// buffers bound); true when stored triangles are there to draw.
+bool SurfaceRenderer::draw_from_cache(const Camera& camera, const DrawOptions& o, float aspect, int width, int height) {
+  SurfaceCache::Key key;
+  key.points = points_generation_;
+  key.pixels = std::max(o.pixels, 0.0f);
+  key.level = key.pixels > 0.0f ? 0.0f : std::clamp(o.level, 1.0f, 64.0f);
+  key.debug_mismatch = o.debug_mismatch;
+  const glm::mat4 view_projection = camera.view_projection(aspect);
+  const glm::vec2 viewport{float(width), float(height)};
+  if (!cache_.current(key, view_projection, viewport)) {
+    // Buffer size: uniform levels generate about 2·L² triangles per quad (L² per triangle), the
+    // larger edge levels beside half-size patches a little more; adaptive ones as last time.
+    const bool quads = tables_.plans.shape == PatchShape::quad;
+    const long long level = (long long)std::ceil(key.level), patches = tables_.plans.n_patches();
+    const long long estimate = key.pixels > 0.0f ? (cache_.triangles() > 0 ? cache_.triangles() * 5 / 4 : patches * 128)
+                                                 : patches * (quads ? 2 : 1) * level * level * 5 / 4 + 64;
+    const ShaderProgram& capture = quads ? capture_ : triangle_capture_;
+    set_frame_uniforms(capture, camera, o, aspect, width, height);
+    capture.use();
+    cache_.capture(key, view_projection, viewport, estimate, [&] {
+      if (statistics_) statistics_->begin();
+      draw_patches(capture, o);
+      if (statistics_) statistics_->end();
+    });
+  }
+  return cache_.holds_triangles();
 }
 
 std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, float aspect,

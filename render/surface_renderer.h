@@ -17,6 +17,7 @@
 #include "render/query_ring.h"
 #include "render/render_target.h"
 #include "render/shader_program.h"
+#include "render/surface_cache.h"
 
 namespace gps {
 
@@ -36,6 +37,7 @@ struct DrawOptions {
   float sigma_scale = 1.0f;
   glm::vec3 background{1.0f, 1.0f, 1.0f};
   bool static_triangles = false;  // draw the triangles of set_triangles() instead of the patches
+  bool surface_cache = true;      // redraw stored triangles while points and levels stay (render/surface_cache.h)
   bool flag_back_faces = false;   // crack checks: draw back faces in pure magenta
   bool debug_mismatch = false;    // tests only: give neighbouring patches different edge levels
 };
@@ -85,6 +87,10 @@ public:
   std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, float aspect,
                                                   int first_patch = 0, int n_patches = -1);
 
+  /// The stored triangles of DrawOptions::surface_cache (its capture count, hysteresis, limit).
+  SurfaceCache& surface_cache() { return cache_; }
+  const SurfaceCache& surface_cache() const { return cache_; }
+
   /// Times the compute passes ("9D + stencils") and each drawn layer ("surface", "ellipsoids",
   /// "mesh lines") into `timer`; nullptr (the default) times nothing.
   void set_pass_timer(GpuPassTimer* timer) { timer_ = timer; }
@@ -111,6 +117,7 @@ private:
   void upload_gaussians(const CovarianceMesh& mesh);
   void upload_line_positions(const CovarianceMesh& mesh);
   void run_compute(const std::vector<int>* changed);
+  bool draw_from_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
   void draw_patches(const ShaderProgram& program, const DrawOptions& options, int first_patch = 0, int n_patches = -1) const;
   void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& options, float aspect, int width,
                           int height) const;
@@ -120,6 +127,9 @@ private:
   const ShaderProgram& patch_program_for(bool feedback, bool wireframe) const;
 
   ShaderProgram dual_map_, stencil_, patches_, feedback_, triangle_patches_, triangle_feedback_, triangle_wire_, triangles_, triangles_wire_, lines_;
+  ShaderProgram capture_, triangle_capture_, cached_, cached_wire_;  // the surface cache's capture and draw
+  SurfaceCache cache_;
+  long long points_generation_ = 0;  // bumped by every compute pass: the cache's key
   EllipsoidOverlay ellipsoids_;
   unsigned buffers_[gpu::kBindingCount] = {};
   size_t buffer_sizes_[gpu::kBindingCount] = {};

@@ -1,0 +1,186 @@
+// The surface cache (issue 12): frames drawn from the stored triangles against the live pipeline,
+// invalidation by edits and levels, and the adaptive levels' camera hysteresis.
+#include "render/surface_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+
+#include "core/samples.h"
+#include "render/gl_context.h"
+#include "render/render_target.h"
+#include "render/surface_renderer.h"
+
+namespace gps {
+namespace {
+
+class SurfaceCacheTest : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() { context_ = create_offscreen_context().release(); }
+  static void TearDownTestSuite() {
+    delete context_;
+    context_ = nullptr;
+  }
+  static GlContext* context_;
+};
+GlContext* SurfaceCacheTest::context_ = nullptr;
+
+constexpr int kSize = 160;
+
+// Colour, position and normal AOVs of one frame.
+struct Frame {
+  Image layers[3];
+};
+
+Frame draw(SurfaceRenderer& renderer, const RenderTarget& target, const Camera& camera, DrawOptions o, bool cache) {
+  o.surface_cache = cache;
+  renderer.draw(target, camera, o);
+  Frame f;
+  for (int a = 0; a < 3; ++a) f.layers[a] = target.read(a);
+  return f;
+}
+
+// Pixels (of any layer) whose floats differ in any bit.
+size_t differing_pixels(const Frame& a, const Frame& b) {
+  size_t count = 0;
+  for (int l = 0; l < 3; ++l) {
+    const Image &x = a.layers[l], &y = b.layers[l];
+    if (x.pixels.size() != y.pixels.size()) return size_t(-1);
+    const size_t c = size_t(x.channels);
+    for (size_t i = 0; i < x.pixels.size(); i += c)
+      count += std::memcmp(&x.pixels[i], &y.pixels[i], c * sizeof(float)) != 0;
+  }
+  return count;
+}
+
+DrawOptions uniform(float level) {
+  DrawOptions o;
+  o.level = level;
+  return o;
+}
+
+DrawOptions adaptive(float pixels) {
+  DrawOptions o;
+  o.pixels = pixels;
+  return o;
+}
+
+TEST_F(SurfaceCacheTest, CachedFramesEqualLiveFramesBitForBit) {
+  RenderTarget target(kSize, kSize);
+  for (const char* name : {"cube", "pawn", "icosphere", "cone-pointy"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(mesh);
+    const Camera camera = frame_mesh(mesh, 35.0f, 25.0f), turned = frame_mesh(mesh, -60.0f, 10.0f);
+    for (DrawOptions o : {uniform(1), uniform(5), adaptive(6)}) {
+      for (const bool wireframe : {false, true}) {
+        o.wireframe = wireframe;
+        const std::string what = std::string(name) + (o.pixels > 0 ? " adaptive" : " level " + std::to_string(int(o.level))) +
+                                 (wireframe ? " wireframe" : "");
+        const Frame live = draw(renderer, target, camera, o, false);
+        const int before = renderer.surface_cache().captures();
+        const Frame first = draw(renderer, target, camera, o, true);  // captures, then draws the stored triangles
+        const Frame second = draw(renderer, target, camera, o, true);
+        EXPECT_TRUE(renderer.surface_cache().holds_triangles()) << what;
+        // A wireframe is shading only: the stored triangles serve it.
+        EXPECT_EQ(renderer.surface_cache().captures(), before + (wireframe ? 0 : 1)) << what;
+        EXPECT_EQ(differing_pixels(live, first), 0u) << what;
+        EXPECT_EQ(differing_pixels(live, second), 0u) << what;
+        if (o.pixels > 0) continue;
+        // Uniform levels do not depend on the camera: the stored triangles seen from elsewhere.
+        const Frame live_turned = draw(renderer, target, turned, o, false);
+        const Frame cached_turned = draw(renderer, target, turned, o, true);
+        EXPECT_EQ(renderer.surface_cache().captures(), before + (wireframe ? 0 : 1)) << what;
+        EXPECT_EQ(differing_pixels(live_turned, cached_turned), 0u) << what << ", turned";
+      }
+    }
+  }
+}
+
+TEST_F(SurfaceCacheTest, AnEditShowsInTheNextFrame) {
+  RenderTarget target(kSize, kSize);
+  CovarianceMesh mesh = make_sample("pawn");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh);
+  const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
+  const DrawOptions o = uniform(4);
+  const Frame before = draw(renderer, target, camera, o, true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 1);
+  const int v = int(mesh.n_vertices() / 2);
+  mesh.set_mean(size_t(v), mesh.mean(size_t(v)) + 0.3 * bounding_box_diagonal(mesh) * Vec3(1.0, 0.5, 0.25).normalized());
+  renderer.update_vertices(mesh, {v});
+  const Frame edited = draw(renderer, target, camera, o, true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 2);
+  EXPECT_GT(differing_pixels(before, edited), 20u);
+  EXPECT_EQ(differing_pixels(edited, draw(renderer, target, camera, o, false)), 0u);
+  // recompute_all and a level change invalidate too; the same inputs again do not.
+  renderer.recompute_all();
+  draw(renderer, target, camera, o, true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 3);
+  draw(renderer, target, camera, uniform(5), true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 4);
+  draw(renderer, target, camera, uniform(5), true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 4);
+  // set_mesh: a new mesh, captured anew.
+  renderer.set_mesh(make_sample("cube"));
+  draw(renderer, target, camera, uniform(5), true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 5);
+}
+
+TEST_F(SurfaceCacheTest, AdaptiveLevelsRecaptureOnlyBeyondTheHysteresis) {
+  RenderTarget target(kSize, kSize);
+  const CovarianceMesh mesh = make_sample("cube");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh);
+  const DrawOptions o = adaptive(4);
+  Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
+  draw(renderer, target, camera, o, true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 1);
+  const float distance = camera.distance;
+  camera.distance = distance * 1.1f;  // edges ~9% shorter on screen: within the factor 1.25
+  draw(renderer, target, camera, o, true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 1);
+  camera.distance = distance * 0.9f;
+  draw(renderer, target, camera, o, true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 1);
+  camera.distance = distance * 0.6f;  // ~1.7× longer: captured again, and equal to the live frame
+  const Frame near = draw(renderer, target, camera, o, true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 2);
+  EXPECT_EQ(differing_pixels(near, draw(renderer, target, camera, o, false)), 0u);
+  // A turn that foreshortens edges beyond the factor captures too.
+  Camera turned = frame_mesh(mesh, 80.0f, 60.0f);
+  turned.distance = camera.distance;
+  draw(renderer, target, turned, o, true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 3);
+  // A tighter factor: the small move now counts.
+  renderer.surface_cache().set_hysteresis(1.01f);
+  turned.distance *= 1.1f;
+  draw(renderer, target, turned, o, true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 4);
+  // A different target edge length is a different key.
+  draw(renderer, target, turned, adaptive(8), true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 5);
+}
+
+TEST_F(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
+  RenderTarget target(kSize, kSize);
+  const CovarianceMesh mesh = make_sample("cube");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh);
+  renderer.surface_cache().set_limit_bytes(100 * 3 * SurfaceCache::kVertexBytes);  // 100 triangles
+  const Camera camera = frame_mesh(mesh);
+  const DrawOptions o = uniform(8);
+  const Frame cached = draw(renderer, target, camera, o, true);
+  EXPECT_FALSE(renderer.surface_cache().holds_triangles());
+  EXPECT_EQ(differing_pixels(cached, draw(renderer, target, camera, o, false)), 0u);
+  draw(renderer, target, camera, o, true);  // refused inputs are not tried again every frame
+  EXPECT_EQ(renderer.surface_cache().captures(), 1);
+  // Small enough (level 1: 2 triangles per patch, from an estimate past the limit) it fits.
+  draw(renderer, target, camera, uniform(1), true);
+  EXPECT_TRUE(renderer.surface_cache().holds_triangles());
+  EXPECT_EQ(renderer.surface_cache().triangles(), 2 * renderer.tables().plans.n_patches());
+}
+
+}  // namespace
+}  // namespace gps
