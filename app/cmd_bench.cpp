@@ -103,28 +103,43 @@ std::vector<std::pair<std::string, int>> sample_list(const std::vector<std::stri
   return list;
 }
 
-// Frame time per mesh and level: the compute passes, the tessellated draw, and the floor: the same
-// triangles (CPU tessellation) drawn from a static vertex buffer with the same shading.
+// Frame time per mesh and level: the compute passes, the tessellated draw (live: every patch
+// evaluated), the surface cache's frame (stored triangles) and a frame after a one-vertex edit (the
+// cache captures again), and the floor: the same triangles (CPU tessellation) drawn from a static
+// vertex buffer with the same shading.
 nlohmann::json bench_render(const std::string& name, int faces, const PlanOptions& options, int size, const std::vector<int>& levels) {
-  const CovarianceMesh mesh = make_sample(name, faces);
+  CovarianceMesh mesh = make_sample(name, faces);
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh, options);
   const Camera camera = frame_mesh(mesh);
   RenderTarget target(size, size);
   const FrameTiming compute = time_gl_work([&] { renderer.recompute_all(); }, 5);
   const std::vector<Dual> points = apply_stencils(renderer.tables().stencils, base_points(mesh));
+  const std::vector<int> edited = {int(mesh.n_vertices() / 2)};
+  bool grow = true;  // the edit scales a covariance by 1.1 and the next one back
   nlohmann::json rows = nlohmann::json::array();
   for (const int level : levels) {
     DrawOptions o;
     o.level = float(level);
     const int repeats = level >= 32 ? 2 : 4;
+    o.surface_cache = false;
     const FrameTiming patches = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
+    o.surface_cache = true;
+    const FrameTiming cached = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
+    const FrameTiming edit = time_gl_work([&] {
+      mesh.covariances[size_t(edited[0])] *= grow ? 1.1 : 1.0 / 1.1;
+      grow = !grow;
+      renderer.update_vertices(mesh, edited);
+      renderer.draw(target, camera, o);
+    }, repeats);
+    const size_t cache_bytes = renderer.surface_cache().buffer_bytes();
+    const bool cache_held = renderer.surface_cache().holds_triangles();
     const TriangleMesh triangles = tessellate(renderer.tables().plans, points, level);
     renderer.set_triangles(triangles);
     o.static_triangles = true;
     const FrameTiming floor = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
     const double n = double(triangles.triangles.size());
-    rows.push_back({{"mesh", mesh.name},
+    rows.push_back({{"mesh", name + (faces ? "/" + std::to_string(faces) : "")},
                     {"faces", mesh.mesh.n_faces()},
                     {"patches", renderer.tables().plans.n_patches()},
                     {"level", level},
@@ -135,6 +150,12 @@ nlohmann::json bench_render(const std::string& name, int faces, const PlanOption
                     {"triangles_per_second", n / (patches.wall_ms * 1e-3)},
                     {"static_buffer_frame_ms", floor.wall_ms},
                     {"ratio_to_static_buffer", patches.wall_ms / floor.wall_ms},
+                    {"cached_frame_ms", cached.wall_ms},
+                    {"cached_ratio_to_static_buffer", cached.wall_ms / floor.wall_ms},
+                    {"edit_frame_ms", edit.wall_ms},
+                    {"edit_ratio_to_static_buffer", edit.wall_ms / floor.wall_ms},
+                    {"cache_held", cache_held},
+                    {"cache_buffer_bytes", cache_bytes},
                     {"pipeline_buffer_bytes", renderer.buffer_bytes()},
                     {"static_buffer_bytes", triangles.positions.size() * 24 + triangles.triangles.size() * 12}});
   }
@@ -275,19 +296,22 @@ void add_bench_command(CLI::App& app) {
       const PlanOptions plans = args->plans.options();
       std::printf("device: %s, %dx%d pixels, %s\n", context->description().c_str(), args->size, args->size,
                   ((plans.exact ? "exact plans of depth " : "the thesis' plans of depth ") + std::to_string(plans.depth)).c_str());
-      std::printf("%-12s %7s %5s %9s %10s %10s %10s %12s %10s %7s %9s\n", "mesh", "patches", "level", "triangles", "compute",
-                  "draw(gpu)", "frame", "tri/s", "static", "ratio", "memory");
+      std::printf("%-12s %7s %5s %9s %10s %10s %10s %12s %10s %7s %10s %7s %10s %7s %9s\n", "mesh", "patches", "level", "triangles",
+                  "compute", "draw(gpu)", "frame", "tri/s", "static", "ratio", "cached", "ratio", "edit", "ratio", "memory");
       nlohmann::json all = nlohmann::json::array();
       // pawn against pawn-quads: a mixed mesh against its quads-only twin (issue 12).
       const auto meshes = args->meshes.empty() ? sample_list({"cube", "wirecube", "cylinder", "valence5", "cone-pointy", "icosphere", "pawn", "pawn-quads"})
                                                : sample_list(args->meshes);
       for (const auto& [name, faces] : meshes) {
         for (const auto& r : bench_render(name, faces, plans, args->size, args->levels)) {
-          std::printf("%-12s %7d %5d %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %6.1f kB\n", r["mesh"].get<std::string>().c_str(),
-                      r["patches"].get<int>(), r["level"].get<int>(), r["triangles"].get<double>(), r["compute_gpu_ms"].get<double>(),
-                      r["draw_gpu_ms"].get<double>(), r["frame_ms"].get<double>(), r["triangles_per_second"].get<double>(),
-                      r["static_buffer_frame_ms"].get<double>(), r["ratio_to_static_buffer"].get<double>(),
-                      r["pipeline_buffer_bytes"].get<double>() / 1024.0);
+          std::printf("%-12s %7d %5d %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %7.2f ms %7.2f %7.2f ms %7.2f %6.1f kB%s\n",
+                      r["mesh"].get<std::string>().c_str(), r["patches"].get<int>(), r["level"].get<int>(), r["triangles"].get<double>(),
+                      r["compute_gpu_ms"].get<double>(), r["draw_gpu_ms"].get<double>(), r["frame_ms"].get<double>(),
+                      r["triangles_per_second"].get<double>(), r["static_buffer_frame_ms"].get<double>(),
+                      r["ratio_to_static_buffer"].get<double>(), r["cached_frame_ms"].get<double>(),
+                      r["cached_ratio_to_static_buffer"].get<double>(), r["edit_frame_ms"].get<double>(),
+                      r["edit_ratio_to_static_buffer"].get<double>(), r["pipeline_buffer_bytes"].get<double>() / 1024.0,
+                      r["cache_held"].get<bool>() ? "" : " (past the cache's memory limit: drawn live)");
           std::fflush(stdout);
           all.push_back(r);
         }

@@ -27,7 +27,7 @@ struct RenderArgs {
   PlanArguments plans;
   float pixels = 0;               // 0: default_pixels() of the output size
   std::string context = "auto";
-  bool mesh_lines = false, wireframe = false, ellipsoids = false;
+  bool mesh_lines = false, wireframe = false, ellipsoids = false, no_cache = false;
   float sigma = 1.0f;
 };
 
@@ -72,6 +72,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   o.mode = a.mode == "normals" ? ShadingMode::normals : a.mode == "flat" ? ShadingMode::flat : ShadingMode::matcap;
   o.mesh_lines = a.mesh_lines;
   o.wireframe = a.wireframe;
+  o.surface_cache = !a.no_cache;
   o.ellipsoids = a.ellipsoids;
   o.sigma_scale = a.sigma;
   o.background = {bg[0], bg[1], bg[2]};
@@ -208,6 +209,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--camera", a->camera, "orbit yaw,pitch[,distance] in degrees (default: auto-framed 30,20)");
   cmd->add_flag("--mesh", a->mesh_lines, "draw the base mesh as thin grey lines");
   cmd->add_flag("--wireframe", a->wireframe, "draw the tessellation wireframe over the shading");
+  cmd->add_flag("--no-cache", a->no_cache, "draw through the tessellation pipeline, not the surface cache's stored triangles (same image)");
   cmd->add_option("--context", a->context, "GL context: auto (EGL on a GPU device, else OSMesa), osmesa, egl")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   cmd->add_flag("--ellipsoids", a->ellipsoids, "draw the covariance ellipsoids");

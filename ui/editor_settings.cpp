@@ -26,6 +26,7 @@ void visit_settings(ViewOptions& view, ReachOptions& reach, Visit visit) {
   visit("loop_warren", view.warren);
   visit("matcap", view.matcap);
   visit("wireframe", view.draw.wireframe);
+  visit("surface_cache", view.draw.surface_cache);
   visit("ellipsoids", view.draw.ellipsoids);
   visit("k_sigma", view.draw.sigma_scale);
   visit("vsync", view.vsync);

@@ -17,6 +17,9 @@ void tessellation_section(ViewOptions& o, ViewPanelChanges& changes) {
   if (o.adaptive) ImGui::SliderFloat("px/edge", &o.adaptive_pixels, 1.0f, 32.0f, "%.1f");
   else ImGui::SliderFloat("level", &o.draw.level, 1.0f, 64.0f, "%.0f");
   o.draw.pixels = o.adaptive ? o.adaptive_pixels : 0.0f;
+  ImGui::Checkbox("surface cache", &o.draw.surface_cache);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("redraw the stored triangles while the mesh and the levels stay (else every frame evaluates every patch)");
   if (o.triangle_mesh) {
     if (ImGui::Combo("scheme", &o.scheme, "automatic (Loop)\0Loop\0Catmull-Clark\0")) changes.depth = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Loop patches are exact at every depth; Catmull-Clark splits each triangle into three quads");
