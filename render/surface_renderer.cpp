@@ -276,7 +276,11 @@ void SurfaceRenderer::set_collect_statistics(bool collect) {
 }
 
 DrawStatistics SurfaceRenderer::last_statistics() {
-  if (statistics_)
+  last_statistics_.cached = last_frame_cached_;
+  if (last_frame_cached_) {
+    last_statistics_.triangles = cache_.triangles();
+    last_statistics_.vertices = 0;
+  } else if (statistics_)
     if (const auto& counts = statistics_->latest()) {
       last_statistics_.triangles = (long long)(*counts)[0];
       last_statistics_.vertices = counts->size() > 1 ? (long long)(*counts)[1] : 0;
@@ -303,6 +307,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glBindTextureUnit(0, matcap_);
     for (int b = 0; b < kBindings; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
     const bool cached = !o.static_triangles && o.surface_cache && draw_from_cache(camera, o, aspect, target.width(), target.height());
+    last_frame_cached_ = cached;
     // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
     const bool triangle_wire = o.wireframe && tables_.plans.shape == PatchShape::triangle;
     const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : cached_)

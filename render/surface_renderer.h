@@ -57,6 +57,7 @@ struct DrawStatistics {
   long long triangles = 0;  // primitives the tessellator generated
   long long vertices = 0;   // tessellation evaluation shader invocations; -1 without ARB_pipeline_statistics_query
   int patches = 0;          // patches of the plan
+  bool cached = false;      // drawn from the surface cache: `triangles` are the stored ones, nothing was evaluated
 };
 
 class SurfaceRenderer {
@@ -143,6 +144,7 @@ private:
   GpuPassTimer* timer_ = nullptr;
   std::unique_ptr<QueryRing> statistics_;  // set while collecting statistics
   DrawStatistics last_statistics_;
+  bool last_frame_cached_ = false;
 };
 
 }  // namespace gps

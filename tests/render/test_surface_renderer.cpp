@@ -527,6 +527,7 @@ TEST_F(GpuTest, StatisticsCountTheTessellatedTriangles) {
     renderer.set_mesh(mesh);
     DrawOptions o;
     o.level = float(level);
+    o.surface_cache = false;  // the live pipeline's counts; the cached frame's below
     render_color(renderer, mesh, o, 64);
     glFinish();
     EXPECT_EQ(renderer.last_statistics().triangles, 0) << name << ": statistics are off by default";
@@ -543,6 +544,14 @@ TEST_F(GpuTest, StatisticsCountTheTessellatedTriangles) {
       EXPECT_EQ(s.vertices, -1) << name;
     std::printf("%s: %d patches at level %d: %lld triangles, %lld evaluation shader invocations\n", name, s.patches, level,
                 s.triangles, s.vertices);
+    // A frame from the surface cache counts the stored triangles and evaluates nothing.
+    o.surface_cache = true;
+    for (int frame = 0; frame < 2; ++frame) render_color(renderer, mesh, o, 64);
+    glFinish();
+    const DrawStatistics c = renderer.last_statistics();
+    EXPECT_TRUE(c.cached) << name;
+    EXPECT_EQ(c.triangles, patches * 2 * level * level) << name;
+    EXPECT_EQ(c.vertices, 0) << name;
   }
 }
 
