@@ -1,0 +1,132 @@
+// Exact plans against the thesis' Bézier plans (issue 11): per mesh and plan kind, the live frame
+// (every patch evaluated, surface cache off) at equal tessellation, the preprocessing (plans and
+// stencils) and the tables' memory. Plan kinds: the thesis' depth 3 ("approx3"), exact plans of
+// depth 0..3 ("exact0".."exact3"). Run with --benchmark_enable_random_interleaving=true and
+// --benchmark_repetitions=N so that a changing machine load hits every kind alike.
+#include <benchmark/benchmark.h>
+#include <glad/gl.h>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/planned_surface.h"
+#include "core/samples.h"
+#include "render/gl_context.h"
+#include "render/render_target.h"
+#include "render/surface_renderer.h"
+#include "view/camera.h"
+
+namespace {
+
+struct PlanKind {
+  const char* name;
+  gps::PlanOptions options;
+};
+
+gps::PlanOptions plan_options(bool exact, int depth) {
+  gps::PlanOptions o;
+  o.scheme = gps::Scheme::catmull_clark;
+  o.exact = exact;
+  o.depth = depth;
+  return o;
+}
+
+const std::vector<PlanKind>& plan_kinds() {
+  static const std::vector<PlanKind> kinds = {{"approx3", plan_options(false, 3)}, {"exact0", plan_options(true, 0)},
+                                              {"exact1", plan_options(true, 1)},   {"exact2", plan_options(true, 2)},
+                                              {"exact3", plan_options(true, 3)}};
+  return kinds;
+}
+
+struct MeshCase {
+  std::string name;
+  int faces;
+};
+
+const gps::CovarianceMesh& sample(const MeshCase& m) {
+  static std::map<std::string, gps::CovarianceMesh> meshes;
+  const std::string key = m.name + "/" + std::to_string(m.faces);
+  auto it = meshes.find(key);
+  if (it == meshes.end()) it = meshes.emplace(key, gps::make_sample(m.name, m.faces)).first;
+  return it->second;
+}
+
+gps::GlContext& context() {
+  static const std::unique_ptr<gps::GlContext> c = gps::create_offscreen_context(gps::ContextKind::automatic);
+  return *c;
+}
+
+size_t table_bytes(const gps::PlanTables& t) {
+  const gps::PlanTable& p = t.plans;
+  return 4 * (p.nodes.size() + p.patch_roots.size() + p.patch_corner_points.size() + p.patch_edges.size() +
+              p.patch_neighbours.size() + p.corner_owners.size() + t.stencils.offsets.size() + t.stencils.indices.size()) +
+         8 * (p.ev_tables.size() + t.stencils.weights.size());
+}
+
+// One live frame at a uniform level (level > 0) or adaptive 6-pixel edges (level 0), 512x512.
+void BM_Frame(benchmark::State& state, MeshCase m, int kind, int level) {
+  context().make_current();
+  const gps::CovarianceMesh& mesh = sample(m);
+  gps::SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, plan_kinds()[size_t(kind)].options);
+  const gps::Camera camera = gps::frame_mesh(mesh);
+  gps::RenderTarget target(512, 512);
+  gps::DrawOptions o;
+  o.surface_cache = false;
+  o.level = float(level > 0 ? level : 8);
+  o.pixels = level > 0 ? 0.0f : 6.0f;
+  renderer.draw(target, camera, o);
+  glFinish();
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    renderer.draw(target, camera, o);
+    glFinish();
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  state.counters["patches"] = double(renderer.tables().plans.n_patches());
+  state.counters["gpu_buffer_bytes"] = double(renderer.buffer_bytes());
+}
+
+// Plans and stencils of the mesh (CPU), with the tables' bytes per face.
+void BM_Preprocess(benchmark::State& state, MeshCase m, int kind) {
+  const gps::CovarianceMesh& mesh = sample(m);
+  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  size_t bytes = 0, rows = 0;
+  for (auto _ : state) {
+    const gps::PlanTables t = gps::build_surface_plans(topology, plan_kinds()[size_t(kind)].options);
+    bytes = table_bytes(t);
+    rows = size_t(t.stencils.n_rows());
+  }
+  state.counters["table_bytes_per_face"] = double(bytes) / double(mesh.n_faces());
+  state.counters["table_bytes"] = double(bytes);
+  state.counters["stencil_rows"] = double(rows);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // The valence samples, the wirecube, and a 100k-patch mesh with an extraordinary vertex at every
+  // vertex (an icosphere under Catmull-Clark: every triangle three quads around valence-6 vertices).
+  const std::vector<MeshCase> meshes = {{"valence3", 0}, {"valence5", 0}, {"valence8", 0}, {"valence10", 0},
+                                        {"wirecube", 0}, {"icosphere", 81920}};
+  for (const MeshCase& m : meshes)
+    for (size_t k = 0; k < plan_kinds().size(); ++k) {
+      const std::string id = m.name + (m.faces ? ":" + std::to_string(m.faces) : "") + "/" + plan_kinds()[k].name;
+      benchmark::RegisterBenchmark(("Preprocess/" + id).c_str(), BM_Preprocess, m, int(k))->Unit(benchmark::kMillisecond);
+      const std::vector<int> levels = m.faces ? std::vector<int>{1, 0} : std::vector<int>{4, 16, 0};
+      for (const int level : levels)
+        benchmark::RegisterBenchmark(("Frame/" + id + "/" + (level ? "level" + std::to_string(level) : "adaptive6px")).c_str(),
+                                     BM_Frame, m, int(k), level)
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond);
+    }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
