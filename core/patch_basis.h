@@ -4,8 +4,13 @@
 // common subset of both languages: the macros below cover parameters, constants and arrays.
 #ifndef GPS_GLSL
 #pragma once
+#include <algorithm>
+#include <cmath>
 namespace gps {
 #define GPS_REAL double
+#define GPS_MAX std::max
+#define GPS_LDEXP std::ldexp
+#define GPS_EXPONENT(x, e) std::frexp(x, &e)
 #define GPS_FN inline
 #define GPS_CONST inline constexpr
 #define GPS_OUT               // arrays are passed by pointer in C++
@@ -13,6 +18,9 @@ namespace gps {
 #define GPS_INOUT_REF(T) T&
 #else
 #define GPS_REAL float
+#define GPS_MAX max
+#define GPS_LDEXP ldexp
+#define GPS_EXPONENT(x, e) frexp(x, e)
 #define GPS_FN
 #define GPS_CONST const
 #define GPS_OUT out
@@ -187,25 +195,31 @@ GPS_FN void triangle_turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]
   else { c[0] = -1.0; c[1] = 1.0; c[2] = -1.0; c[3] = 0.0; }
 }
 
+/// The halvings n ≥ 0 toward an extraordinary corner after which x · 2ⁿ ≥ ½ (x: the distance measure
+/// of a locate step, in [0, 2]), or −1 where that takes kEvLevels or more (or x = 0): there the
+/// limit masks apply. From x's binary exponent (x = m · 2^e, ½ ≤ m < 1: n = −e), no loop.
+GPS_FN int ev_halvings(GPS_REAL x) {
+  int e = 0;
+  GPS_EXPONENT(x, e);
+  if (x <= 0.0 || -e > kEvLevels - 1) return -1;
+  return e >= 0 ? 0 : -e;
+}
+
 /// Where (s, t) of an extraordinary node falls (Stam 1998, §3), its extraordinary vertex at
 /// (0, 0): after n halvings toward that corner, in child c = 1..3 of triangle_child() at the new
 /// (s, t). Returns the table block 3n + c − 1 (core/loop_ev_tables.h), or −1 closer to the corner
 /// than 2^−kEvLevels (there the limit masks apply); `scale` = d(new s, t)/d(s, t).
 GPS_FN int loop_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale) {
+  // n = the halvings that bring s + t to at least ½, read off its binary exponent (doubling is
+  // exact, so this equals halving step by step); then that many doublings of s and t by ldexp.
   scale = 1.0;
-  int n = 0;
-  for (int i = 0; i < kEvLevels - 1; ++i) {  // no break: llvmpipe miscompiles a divergent early exit
-    if (s + t < 0.5) {
-      s = 2.0 * s;
-      t = 2.0 * t;
-      scale = 2.0 * scale;
-      n += 1;
-    }
-  }
-  if (s + t < 0.5) return -1;
+  int n = ev_halvings(s + t);
+  if (n < 0) return -1;
+  s = GPS_LDEXP(s, n);
+  t = GPS_LDEXP(t, n);
   GPS_REAL sign = 1.0;
   int child = triangle_child(s, t, sign);
-  scale = 2.0 * sign * scale;
+  scale = 2.0 * sign * GPS_LDEXP(GPS_REAL(1.0), n);
   return 3 * n + child - 1;
 }
 
@@ -233,20 +247,14 @@ GPS_FN void quad_turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]) {
 /// closer to the corner than 2^−kEvLevels (there the limit masks apply); `scale` = d(new s, t)/d(s, t).
 GPS_FN int quad_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale) {
   scale = 1.0;
-  int n = 0;
-  for (int i = 0; i < kEvLevels - 1; ++i) {  // no break: llvmpipe miscompiles a divergent early exit
-    if (s < 0.5 && t < 0.5) {
-      s = 2.0 * s;
-      t = 2.0 * t;
-      scale = 2.0 * scale;
-      n += 1;
-    }
-  }
-  if (s < 0.5 && t < 0.5) return -1;
+  int n = ev_halvings(GPS_MAX(s, t));  // both below ½ exactly while max(s, t) is
+  if (n < 0) return -1;
+  s = GPS_LDEXP(s, n);
+  t = GPS_LDEXP(t, n);
   int child = s >= 0.5 ? (t >= 0.5 ? 2 : 1) : 3;
   s = s >= 0.5 ? 2.0 * s - 1.0 : 2.0 * s;
   t = t >= 0.5 ? 2.0 * t - 1.0 : 2.0 * t;
-  scale = 2.0 * scale;
+  scale = 2.0 * GPS_LDEXP(GPS_REAL(1.0), n);
   return 3 * n + child - 1;
 }
 
