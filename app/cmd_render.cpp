@@ -105,7 +105,8 @@ ContextKind context_kind(const std::string& name) {
 }
 
 void render(const RenderArgs& a) {
-  load_matcap(a.matcap);  // before any GL work: a bad name is a usage error
+  load_matcap(a.matcap);    // before any GL work: a bad name or size is a usage error
+  parse_pixel_size(a.size);
   const CovarianceMesh mesh = read_mesh(a.input);
   const auto context = create_offscreen_context(context_kind(a.context));
   SurfaceRenderer renderer;
