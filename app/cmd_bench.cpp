@@ -69,10 +69,7 @@ nlohmann::json bench_preprocess(const std::string& name, int size, const PlanOpt
           {"scheme", tables.plans.shape == PatchShape::triangle ? "loop" : "catmull-clark"},
           {"depth", tables.plans.max_depth},
           {"nodes_ints", tables.plans.nodes.size()},
-          {"table_bytes_per_face", double(tables.plans.nodes.size() * 4 + tables.plans.patch_roots.size() * 4 +
-                                          tables.plans.patch_corner_points.size() * 4 + tables.plans.ev_tables.size() * 8 +
-                                          tables.stencils.indices.size() * 12 + tables.stencils.offsets.size() * 4) /
-                                       double(mesh.n_faces())},
+          {"table_bytes_per_face", double(tables.bytes()) / double(mesh.n_faces())},
           {"stencil_rows", tables.stencils.n_rows()},
           {"stencil_nonzeros", tables.stencils.indices.size()},
           {"preprocess_ms", preprocess * 1e3},

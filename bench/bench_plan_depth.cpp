@@ -60,13 +60,6 @@ gps::GlContext& context() {
   return *c;
 }
 
-size_t table_bytes(const gps::PlanTables& t) {
-  const gps::PlanTable& p = t.plans;
-  return 4 * (p.nodes.size() + p.patch_roots.size() + p.patch_corner_points.size() + p.patch_edges.size() +
-              p.patch_neighbours.size() + p.corner_owners.size() + t.stencils.offsets.size() + t.stencils.indices.size()) +
-         8 * (p.ev_tables.size() + t.stencils.weights.size());
-}
-
 // One live frame at a uniform level (level > 0) or adaptive 6-pixel edges (level 0), 512x512.
 void BM_Frame(benchmark::State& state, MeshCase m, int kind, int level) {
   context().make_current();
@@ -98,7 +91,7 @@ void BM_Preprocess(benchmark::State& state, MeshCase m, int kind) {
   size_t bytes = 0, rows = 0;
   for (auto _ : state) {
     const gps::PlanTables t = gps::build_surface_plans(topology, plan_kinds()[size_t(kind)].options);
-    bytes = table_bytes(t);
+    bytes = t.bytes();
     rows = size_t(t.stencils.n_rows());
   }
   state.counters["table_bytes_per_face"] = double(bytes) / double(mesh.n_faces());

@@ -1,11 +1,11 @@
-// Preprocessing on 1 and 2 cores (issue 12): build_plans (plans + stencil table, depth 3) and the
+// Preprocessing on 1 and 2 cores (issue 12): the default plans + stencil table (build_surface_plans) and the
 // reference subdivision (2 levels + limit) of a 1M-face sphere, with the tables' memory per face.
 // The results are the same bit for bit on any number of cores (tests/core/test_plan_builder.cpp).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 #include <sys/resource.h>
 
-#include "core/plan_builder.h"
+#include "core/planned_surface.h"
 #include "core/reference_subdivision.h"
 #include "core/samples.h"
 
@@ -28,10 +28,8 @@ void BM_BuildPlansOnCores(benchmark::State& state) {
   omp_set_num_threads(int(state.range(0)));
   size_t table_bytes = 0;
   for (auto _ : state) {
-    const gps::PlanTables t = gps::build_plans(topology, 3);
-    table_bytes = 4 * (t.plans.nodes.size() + t.plans.patch_roots.size() + t.plans.patch_corner_points.size() + t.plans.patch_edges.size() +
-                       t.stencils.offsets.size() + t.stencils.indices.size()) +
-                  8 * t.stencils.weights.size();
+    const gps::PlanTables t = gps::build_surface_plans(topology, gps::PlanOptions{});
+    table_bytes = t.bytes();
   }
   omp_set_num_threads(omp_get_num_procs());
   const double faces = double(mesh.n_faces());

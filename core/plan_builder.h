@@ -8,6 +8,14 @@ namespace gps {
 struct PlanTables {
   PlanTable plans;
   StencilTable stencils;
+
+  /// The bytes the tables hold in the CPU's memory (ints, and doubles for weights and ev tables).
+  size_t bytes() const {
+    const PlanTable& p = plans;
+    return 4 * (p.nodes.size() + p.patch_roots.size() + p.patch_corner_points.size() + p.patch_edges.size() +
+                p.patch_neighbours.size() + p.corner_owners.size() + stencils.offsets.size() + stencils.indices.size()) +
+           8 * (p.ev_tables.size() + stencils.weights.size());
+  }
 };
 
 /// How plans meet extraordinary and irregular boundary vertices.

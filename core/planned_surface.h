@@ -15,7 +15,7 @@ namespace gps {
 
 /// The depth of exact Catmull-Clark plans unless asked otherwise: measured fastest at equal
 /// exactness (issue 11's closing note; gpsurf bench --render --depth N).
-constexpr int kExactPlanDepth = 1;
+constexpr int kExactPlanDepth = 2;
 
 struct PlanOptions {
   std::optional<Scheme> scheme;  // empty: Loop for a mesh of triangles only (valences up to
