@@ -110,9 +110,7 @@ void update_stencils(const StencilTable& t, const StencilDependents& d, const st
   };
   size_t n_dependents = 0;
   for (const int v : changed) n_dependents += size_t(d.offsets[size_t(v) + 1] - d.offsets[size_t(v)]);
-  // Measured (bench_plans): gathering and sorting the rows costs more than re-applying the whole
-  // table once they are a sizeable part of it; then every row is re-applied.
-  if (4 * n_dependents >= size_t(t.n_rows())) {
+  if (update_everything(n_dependents, size_t(t.n_rows()))) {
     for (int r = 0; r < t.n_rows(); ++r) apply_row(r);
     return;
   }

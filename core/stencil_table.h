@@ -40,9 +40,15 @@ StencilDependents stencil_dependents(const StencilTable& table);
 /// The rows that read any of `vertices`, sorted, without repeats.
 std::vector<int> rows_reading(const StencilDependents& dependents, const std::vector<int>& vertices);
 
-/// Re-applies only the rows that read the changed base vertices (all rows once those are a quarter
-/// of the table or more: faster, measured); `points` holds every point and must already carry the
-/// changed vertices' new q in its first n_base entries.
+/// An edit whose part of the work (dependent rows of all rows, changed vertices of all vertices)
+/// reaches 1/kWholeUpdateDivisor updates everything at once: gathering and sorting the parts was
+/// measured to cost more (bench_plans). The CPU update and the renderer's compute passes both follow it.
+constexpr size_t kWholeUpdateDivisor = 4;
+inline bool update_everything(size_t part, size_t whole) { return part * kWholeUpdateDivisor >= whole; }
+
+/// Re-applies only the rows that read the changed base vertices (every row past update_everything);
+/// `points` holds every point and must already carry the changed vertices' new q in its first
+/// n_base entries.
 void update_stencils(const StencilTable& table, const StencilDependents& dependents,
                      const std::vector<int>& changed_vertices, std::vector<Dual>& points);
 

@@ -1,0 +1,127 @@
+#include "render/patch_draw.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "render/gl_context.h"
+#include "shaders/embedded_shaders.h"
+
+namespace gps {
+
+namespace {
+
+ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
+  const bool triangles = shape == PatchShape::triangle, feedback = output == PatchOutput::feedback;
+  std::vector<const char*> control = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::tess_levels};
+  std::vector<const char*> evaluation = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
+  if (output == PatchOutput::wireframe) evaluation.insert(evaluation.begin(), shaders::geometry_next);
+  control.push_back(triangles ? shaders::triangle_tesc : shaders::patch_tesc);
+  if (triangles) evaluation.push_back(shaders::loop_eval);
+  evaluation.push_back(shaders::canonical_edge);
+  evaluation.push_back(triangles ? shaders::triangle_tese : shaders::patch_tese);
+  std::vector<ShaderStage> stages = {{GL_VERTEX_SHADER, {shaders::patch_vert}},
+                                     {GL_TESS_CONTROL_SHADER, control},
+                                     {GL_TESS_EVALUATION_SHADER, evaluation}};
+  const std::string name = triangles ? "triangle_patch" : "patch";
+  if (feedback) return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal", "v_evaluated"});
+  if (output == PatchOutput::capture) return ShaderProgram(name + "_capture", stages, {"v_position", "v_normal", "v_grid", "v_kind"});
+  if (output == PatchOutput::wireframe) stages.push_back({GL_GEOMETRY_SHADER, {shaders::mesh_geom}});
+  stages.push_back({GL_FRAGMENT_SHADER, {shaders::shade_frag}});
+  return ShaderProgram(name + (output == PatchOutput::wireframe ? "_wire" : ""), stages);
+}
+
+int quad_slot(PatchOutput output) {
+  if (output == PatchOutput::wireframe) throw Error("quad patches have no wireframe program");
+  return output == PatchOutput::capture ? 2 : int(output);
+}
+
+}  // namespace
+
+PatchDraw::PatchDraw()
+    : quad_{patch_program(PatchShape::quad, PatchOutput::shaded), patch_program(PatchShape::quad, PatchOutput::feedback),
+            patch_program(PatchShape::quad, PatchOutput::capture)},
+      triangle_{patch_program(PatchShape::triangle, PatchOutput::shaded), patch_program(PatchShape::triangle, PatchOutput::feedback),
+                patch_program(PatchShape::triangle, PatchOutput::wireframe), patch_program(PatchShape::triangle, PatchOutput::capture)} {
+  glCreateVertexArrays(1, &empty_vao_);
+}
+
+PatchDraw::~PatchDraw() { glDeleteVertexArrays(1, &empty_vao_); }
+
+const ShaderProgram& PatchDraw::program(PatchShape shape, PatchOutput output) const {
+  return shape == PatchShape::triangle ? triangle_[int(output)] : quad_[quad_slot(output)];
+}
+
+void PatchDraw::draw(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch, int n_patches) const {
+  if (statistics_) statistics_->begin();
+  draw_batches(program, o, n_total, first_patch, n_patches);
+  if (statistics_) statistics_->end();
+}
+
+void PatchDraw::draw_batches(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch, int n_patches) const {
+  // Mesa 22.3's llvmpipe was seen to drop whole patches from draws that generate some 10^5
+  // vertices (the crack test caught it), so draw in batches of at most ~2^15 generated vertices at
+  // the chosen level (adaptive levels: the worst case, 64).
+  const int level = o.pixels > 0.0f ? 64 : std::clamp(int(std::ceil(o.level)), 1, 64);
+  const int batch = std::max(1, 32768 / ((level + 1) * (level + 1)));
+  glBindVertexArray(empty_vao_);
+  glPatchParameteri(GL_PATCH_VERTICES, 1);
+  const int end = n_patches < 0 ? n_total : std::min(n_total, first_patch + n_patches);
+  for (int first = first_patch; first < end; first += batch) {
+    program.set("u_first_patch", first);
+    glDrawArrays(GL_PATCHES, 0, std::min(batch, end - first));
+  }
+}
+
+std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o, float aspect,
+                                                           int n_total, int first_patch, int n_patches) const {
+  first_patch = std::clamp(first_patch, 0, n_total);
+  n_patches = n_patches < 0 ? n_total - first_patch : std::min(n_patches, n_total - first_patch);
+  const size_t max_vertices = size_t(n_patches) * 64 * 64 * 6 + 64;
+  unsigned buffer = 0, query = 0;
+  glCreateBuffers(1, &buffer);
+  glNamedBufferData(buffer, GLsizeiptr(max_vertices * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
+  glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
+  const ShaderProgram& feedback = program(shape, PatchOutput::feedback);
+  set_frame_uniforms(feedback, camera, o, aspect, 512, 512);
+  feedback.use();
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
+  glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+  glBeginTransformFeedback(GL_TRIANGLES);
+  draw_batches(feedback, o, n_total, first_patch, n_patches);
+  glEndTransformFeedback();
+  glEndQuery(GL_PRIMITIVES_GENERATED);
+  glDisable(GL_RASTERIZER_DISCARD);
+  GLuint primitives = 0;
+  glGetQueryObjectuiv(query, GL_QUERY_RESULT, &primitives);
+  std::vector<TessellatedVertex> out(std::min<size_t>(max_vertices, size_t(primitives) * 3));
+  glGetNamedBufferSubData(buffer, 0, GLsizeiptr(out.size() * sizeof(TessellatedVertex)), out.data());
+  glDeleteBuffers(1, &buffer);
+  glDeleteQueries(1, &query);
+  check_gl_errors("capturing tessellated vertices");
+  return out;
+}
+
+void PatchDraw::set_collect_statistics(bool collect) {
+  if (!collect) {
+    statistics_.reset();
+  } else if (!statistics_) {
+    std::vector<unsigned> targets = {GL_PRIMITIVES_GENERATED};
+    if (GLAD_GL_ARB_pipeline_statistics_query) targets.push_back(GL_TESS_EVALUATION_SHADER_INVOCATIONS_ARB);
+    statistics_ = std::make_unique<QueryRing>(targets, 4);
+  }
+}
+
+void PatchDraw::latest_statistics(DrawStatistics& s) const {
+  if (statistics_)
+    if (const auto& counts = statistics_->latest()) {
+      s.triangles = (long long)(*counts)[0];
+      s.vertices = counts->size() > 1 ? (long long)(*counts)[1] : 0;
+    }
+  if (!GLAD_GL_ARB_pipeline_statistics_query) s.vertices = -1;
+}
+
+}  // namespace gps
