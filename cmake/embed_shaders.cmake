@@ -1,4 +1,4 @@
-# Turns GLSL files into C++ string constants: cmake -DOUT=<header> -DSOURCES=<a|b|...> -P embed_shaders.cmake
+# Turns GLSL files into C++ string constants: cmake -DOUT=<header> -DROOT=<source dir> -DSOURCES=<a|b|...> -P embed_shaders.cmake
 string(REPLACE "|" ";" SOURCES "${SOURCES}")
 set(text "// Generated from shaders/*.glsl by cmake/embed_shaders.cmake; do not edit.\n#pragma once\n\nnamespace gps::shaders {\n")
 foreach(source ${SOURCES})
@@ -7,6 +7,15 @@ foreach(source ${SOURCES})
   # A C++ header shared with GLSL (core/patch_basis.h) is read as GLSL under GPS_GLSL.
   if(source MATCHES "\\.h$")
     set(body "#define GPS_GLSL\n${body}")
+  else()
+    # A shader's #include "core/x.h" (GLSL has none) takes that shared header's text in its place,
+    # read as GLSL: GPS_GLSL is defined by core/patch_basis.h, which comes before such a shader.
+    string(REGEX MATCHALL "#include \"[^\"]+\\.h\"" includes "${body}")
+    foreach(line ${includes})
+      string(REGEX REPLACE "#include \"([^\"]+)\"" "\\1" header "${line}")
+      file(READ ${ROOT}/${header} header_body)
+      string(REPLACE "${line}" "${header_body}" body "${body}")
+    endforeach()
   endif()
   string(APPEND text "inline constexpr const char* ${name} = R\"glsl(${body})glsl\";\n")
 endforeach()

@@ -1,18 +1,10 @@
-// Triangle plans (Loop): descent, box-spline nodes and exact extraordinary nodes
-// (evaluate_extraordinary_node in plan_eval.glsl); mirrors evaluate_triangle_dual in core/patch_eval.cpp.
+// Triangle plans (Loop): descent (core/plan_descent.h), box-spline nodes and exact extraordinary nodes
+// (evaluate_extraordinary_node in plan_eval.glsl); mirrors evaluate_dual in core/patch_eval.cpp.
 
 void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int leaf_kind) {
-  float u = patch_u, v = patch_v;
-  int node = roots[patch_id];
-  float scale = 1.0;
-  int kind = nodes[node];  // read once per node (see evaluate_plan)
-  for (int depth = 0; depth < 8 && kind == kNodeInternal; ++depth) {  // triangle plans are one level deep
-    float sign;
-    int child = triangle_child(u, v, sign);
-    scale *= 2.0 * sign;
-    node = nodes[node + 1 + child];
-    kind = nodes[node];
-  }
+  float u = patch_u, v = patch_v, scale;
+  int kind, depth;
+  int node = descend_plan(roots[patch_id], true, u, v, scale, kind, depth);
   leaf_kind = kind;
   vec4 qa = vec4(0.0), qb = vec4(0.0), qc = vec4(0.0);
   vec4 ua = vec4(0.0), ub = vec4(0.0), uc = vec4(0.0);

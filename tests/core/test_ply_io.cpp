@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/mesh_io.h"
 #include "core/samples.h"
+#include "tests/support/random_spd.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {
@@ -20,12 +21,7 @@ CovarianceMesh mesh_with_random_covariances() {
   CovarianceMesh m = make_sample("cylinder");
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> u(-1, 1);
-  for (auto& c : m.covariances) {
-    Mat3 a;
-    for (int i = 0; i < 9; ++i) a.data()[i] = u(rng) / 3.0;
-    c = a * a.transpose() + 1e-3 * Mat3::Identity();
-    c = (0.5 * (c + c.transpose())).eval();
-  }
+  for (auto& c : m.covariances) c = test::random_spd(rng, 9e-3) / 9.0;  // a/3 · (a/3)ᵀ + 10⁻³ I
   for (size_t i = 0; i < m.n_vertices(); ++i) m.set_mean(i, m.mean(i) + Vec3(u(rng), u(rng), u(rng)) * 1e-3);
   return m;
 }

@@ -9,21 +9,15 @@
 #include "core/dual_map.h"
 #include "core/error.h"
 #include "core/samples.h"
+#include "tests/support/random_spd.h"
 #include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
 
-Mat3 random_spd(std::mt19937& rng, double scale) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Mat3 a;
-  for (int i = 0; i < 9; ++i) a.data()[i] = u(rng);
-  return scale * (a * a.transpose() + 0.2 * Mat3::Identity());
-}
-
 void randomize_covariances(CovarianceMesh& m, unsigned seed, double scale = 0.1) {
   std::mt19937 rng(seed);
-  for (auto& c : m.covariances) c = random_spd(rng, scale);
+  for (auto& c : m.covariances) c = scale * test::random_spd(rng, 0.2);
 }
 
 double max_mean_distance(const CovarianceMesh& a, const std::vector<Vec3>& b) {

@@ -1,5 +1,5 @@
-// core/patch_basis.h is one source for C++ and GLSL: compiled both ways, it must give the same
-// results on the same inputs (a compute shader against the C++ functions).
+// core/patch_basis.h and core/plan_descent.h are one source for C++ and GLSL: compiled both ways,
+// they must give the same results on the same inputs (compute shaders against the C++ functions).
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
@@ -7,9 +7,12 @@
 #include <vector>
 
 #include "core/patch_basis.h"
+#include "core/plan_descent.h"
+#include "core/planned_surface.h"
 #include "render/gl_context.h"
 #include "render/shader_program.h"
 #include "shaders/embedded_shaders.h"
+#include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
@@ -97,6 +100,107 @@ TEST(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
       EXPECT_NEAR(gpu[size_t(i * kOut + k)], cpu[size_t(k)], 2e-5 * (1 + std::abs(cpu[size_t(k)])))
           << "output " << k << " at (" << inputs[size_t(2 * i)] << ", " << inputs[size_t(2 * i + 1)] << ")";
   }
+}
+
+// The descent of core/plan_descent.h through real plans, and an extraordinary leaf's rows: per
+// input (root, triangle, u, v): leaf node, kind, depth, leaf (u, v), scale, then the leaf's rows
+// count, first row, d[4], scale and 16 weights each of w, ws, wt: 64 floats.
+constexpr const char* kDescentBuffers = R"glsl(
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) readonly buffer Nodes { int nodes[]; };
+)glsl";
+constexpr const char* kDescentProbe = R"glsl(
+layout(std430, binding = 1) readonly buffer In { vec4 inputs[]; };
+layout(std430, binding = 2) writeonly buffer Out { float outputs[]; };
+void main() {
+  int i = int(gl_GlobalInvocationID.x), o = 64 * i;
+  for (int k = 0; k < 64; ++k) outputs[o + k] = 0.0;
+  bool triangle = inputs[i].y != 0.0;
+  float u = inputs[i].z, v = inputs[i].w, scale;
+  int kind, depth;
+  int node = descend_plan(int(inputs[i].x), triangle, u, v, scale, kind, depth);
+  outputs[o] = float(node); outputs[o + 1] = float(kind); outputs[o + 2] = float(depth);
+  outputs[o + 3] = u; outputs[o + 4] = v; outputs[o + 5] = scale;
+  if (kind != kNodeExtraordinary) return;
+  float w[16], ws[16], wt[16], d[4], ev_scale;
+  int first_row;
+  int n = extraordinary_rows(!triangle, nodes[node + 1], u, v, first_row, w, ws, wt, d, ev_scale);
+  outputs[o + 6] = float(n); outputs[o + 7] = float(first_row);
+  for (int k = 0; k < 4; ++k) outputs[o + 8 + k] = d[k];
+  outputs[o + 12] = ev_scale;
+  for (int k = 0; k < n; ++k) { outputs[o + 16 + k] = w[k]; outputs[o + 32 + k] = ws[k]; outputs[o + 48 + k] = wt[k]; }
+}
+)glsl";
+
+std::vector<double> cpu_descent(const std::vector<int32_t>& nodes, int root, bool triangle, double u, double v) {
+  std::vector<double> out(kOut, 0.0);
+  double scale;
+  int kind, depth;
+  const int node = descend_plan(nodes.data(), root, triangle, u, v, scale, kind, depth);
+  out[0] = node, out[1] = kind, out[2] = depth, out[3] = u, out[4] = v, out[5] = scale;
+  if (kind != kNodeExtraordinary) return out;
+  double w[16], ws[16], wt[16], d[4], ev_scale;
+  int first_row;
+  const int n = extraordinary_rows(!triangle, nodes[size_t(node + 1)], u, v, first_row, w, ws, wt, d, ev_scale);
+  out[6] = n, out[7] = first_row;
+  for (int k = 0; k < 4; ++k) out[size_t(8 + k)] = d[k];
+  out[12] = ev_scale;
+  for (int k = 0; k < n; ++k) out[size_t(16 + k)] = w[k], out[size_t(32 + k)] = ws[k], out[size_t(48 + k)] = wt[k];
+  return out;
+}
+
+void expect_same_descent(const char* name, const CovarianceMesh& mesh, const PlanOptions& options) {
+  const PlanTables tables = build_surface_plans(topology_of(mesh.mesh), options);
+  const PlanTable& plans = tables.plans;
+  const bool triangle = plans.shape == PatchShape::triangle;
+  const ShaderProgram probe("descent_probe", {{GL_COMPUTE_SHADER, {shaders::patch_basis, kDescentBuffers, shaders::plan_descent, kDescentProbe}}});
+  // Every patch at points inside, along the edges and near each corner (down to the limit masks).
+  std::vector<float> inputs;
+  const std::vector<std::pair<double, double>> uvs = {{0.3, 0.2},     {0.71, 0.13},   {0.05, 0.6},  {0.33, 0.33},
+                                                      {0.0, 0.0},     {1.0, 0.0},     {0.0, 1.0},   {0.02, 0.01},
+                                                      {1e-6, 3e-7},   {1e-13, 1e-13}, {0.99, 0.004}, {0.004, 0.98},
+                                                      {0.6, 0.37},    {0.9, 0.9}};
+  for (int patch = 0; patch < plans.n_patches(); ++patch)
+    for (const auto& [u, v] : uvs) {
+      if (triangle && u + v > 1.0) continue;
+      inputs.insert(inputs.end(), {float(plans.patch_roots[size_t(patch)]), triangle ? 1.0f : 0.0f, float(u), float(v)});
+    }
+  const int n = int(inputs.size() / 4);
+  unsigned buffers[3];
+  glCreateBuffers(3, buffers);
+  glNamedBufferData(buffers[0], GLsizeiptr(plans.nodes.size() * sizeof(int32_t)), plans.nodes.data(), GL_STATIC_DRAW);
+  glNamedBufferData(buffers[1], GLsizeiptr(inputs.size() * sizeof(float)), inputs.data(), GL_STATIC_DRAW);
+  glNamedBufferData(buffers[2], GLsizeiptr(size_t(n) * kOut * sizeof(float)), nullptr, GL_STREAM_READ);
+  for (unsigned b = 0; b < 3; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, buffers[b]);
+  probe.use();
+  glDispatchCompute(GLuint(n), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> gpu(size_t(n) * kOut);
+  glGetNamedBufferSubData(buffers[2], 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
+  glDeleteBuffers(3, buffers);
+  check_gl_errors("the descent probe");
+  int extraordinary = 0, deep = 0;
+  for (int i = 0; i < n; ++i) {
+    const float* in = &inputs[size_t(4 * i)];
+    const std::vector<double> cpu = cpu_descent(plans.nodes, int(in[0]), triangle, double(in[2]), double(in[3]));
+    extraordinary += cpu[1] == kNodeExtraordinary;
+    deep += cpu[2] > 1;
+    for (int k = 0; k < kOut; ++k)
+      EXPECT_NEAR(gpu[size_t(i * kOut + k)], cpu[size_t(k)], 2e-5 * (1 + std::abs(cpu[size_t(k)])))
+          << name << ": output " << k << " from root " << in[0] << " at (" << in[2] << ", " << in[3] << ")";
+  }
+  EXPECT_GT(extraordinary, 0) << name;  // the inputs reach extraordinary leaves,
+  if (!triangle) {
+    EXPECT_GT(deep, 0) << name;  // and quad plans more than one level down
+  }
+}
+
+TEST(SharedPlanDescent, GlslAndCppAgreeOnTheSameInputs) {
+  const auto context = create_offscreen_context();
+  expect_same_descent("cube", test::cube_mesh(), PlanOptions{Scheme::catmull_clark, 3});
+  expect_same_descent("prism", test::prism_mesh(), PlanOptions{Scheme::catmull_clark, 2});
+  expect_same_descent("icosahedron", test::icosahedron_mesh(), PlanOptions{Scheme::loop});
+  expect_same_descent("cone", test::cone_mesh(), PlanOptions{Scheme::loop});
 }
 
 }  // namespace
