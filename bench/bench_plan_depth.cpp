@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "core/planned_surface.h"
 #include "core/samples.h"
 #include "render/gl_context.h"
@@ -65,7 +66,12 @@ void BM_Frame(benchmark::State& state, MeshCase m, int kind, int level) {
   context().make_current();
   const gps::CovarianceMesh& mesh = sample(m);
   gps::SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, plan_kinds()[size_t(kind)].options);
+  try {
+    renderer.set_mesh(mesh, plan_kinds()[size_t(kind)].options);
+  } catch (const gps::Error& e) {  // e.g. plan buffers past the device's storage-block limit
+    state.SkipWithError(e.what());
+    return;
+  }
   const gps::Camera camera = gps::frame_mesh(mesh);
   gps::RenderTarget target(512, 512);
   gps::DrawOptions o;
@@ -102,10 +108,11 @@ void BM_Preprocess(benchmark::State& state, MeshCase m, int kind) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // The valence samples, the wirecube, and a 100k-patch mesh with an extraordinary vertex at every
-  // vertex (an icosphere under Catmull-Clark: every triangle three quads around valence-6 vertices).
-  const std::vector<MeshCase> meshes = {{"valence3", 0}, {"valence5", 0}, {"valence8", 0}, {"valence10", 0},
-                                        {"wirecube", 0}, {"icosphere", 81920}};
+  // The valence samples, the wirecube, and icospheres under Catmull-Clark (every triangle three
+  // quads, extraordinary vertices everywhere): 15k patches, and 246k, past what the thesis' depth-3
+  // plans fit in llvmpipe's 128 MiB storage blocks (reported as an error there).
+  const std::vector<MeshCase> meshes = {{"valence3", 0}, {"valence5", 0},    {"valence8", 0},       {"valence10", 0},
+                                        {"wirecube", 0}, {"icosphere", 5120}, {"icosphere", 81920}};
   for (const MeshCase& m : meshes)
     for (size_t k = 0; k < plan_kinds().size(); ++k) {
       const std::string id = m.name + (m.faces ? ":" + std::to_string(m.faces) : "") + "/" + plan_kinds()[k].name;
