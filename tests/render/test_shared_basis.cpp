@@ -9,9 +9,9 @@
 #include "core/patch_basis.h"
 #include "core/plan_descent.h"
 #include "core/planned_surface.h"
-#include "render/gl_context.h"
 #include "render/shader_program.h"
 #include "shaders/embedded_shaders.h"
+#include "tests/support/gl_fixture.h"
 #include "tests/support/test_meshes.h"
 
 namespace gps {
@@ -73,8 +73,9 @@ std::vector<double> cpu_probe(double u, double v) {
   return out;
 }
 
-TEST(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
-  const auto context = create_offscreen_context();
+using SharedPatchBasis = test::GlTest;
+
+TEST_F(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
   const ShaderProgram probe("basis_probe", {{GL_COMPUTE_SHADER, {shaders::patch_basis, kProbe}}});
   std::vector<float> inputs;
   for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.5, 0.5}, {0.25, 0.125}, {0.6, 0.1},
@@ -195,8 +196,9 @@ void expect_same_descent(const char* name, const CovarianceMesh& mesh, const Pla
   }
 }
 
-TEST(SharedPlanDescent, GlslAndCppAgreeOnTheSameInputs) {
-  const auto context = create_offscreen_context();
+using SharedPlanDescent = test::GlTest;
+
+TEST_F(SharedPlanDescent, GlslAndCppAgreeOnTheSameInputs) {
   expect_same_descent("cube", test::cube_mesh(), PlanOptions{Scheme::catmull_clark, 3});
   expect_same_descent("prism", test::prism_mesh(), PlanOptions{Scheme::catmull_clark, 2});
   expect_same_descent("icosahedron", test::icosahedron_mesh(), PlanOptions{Scheme::loop});
