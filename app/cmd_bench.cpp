@@ -1,83 +1,24 @@
-// gpsurf bench --preprocess: plan building and stencil application, per mesh (issue "plans");
-// --render: frame times per mesh and level; --edit: edit-to-frame time on a large mesh (issue "editor").
-#include <glad/gl.h>
-
+// gpsurf bench: the command line and the printed tables of the figures bench/ measures: --preprocess
+// (bench/preprocess_figures.h), --render (bench/frame_figures.h), --edit (bench/edit_figures.h).
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <fstream>
-#include <functional>
-#include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
 #include "app/plan_arguments.h"
+#include "bench/edit_figures.h"
+#include "bench/frame_figures.h"
+#include "bench/preprocess_figures.h"
 #include "core/atomic_file.h"
-#include "core/dual_map.h"
 #include "core/error.h"
-#include "core/median.h"
-#include "core/plan_builder.h"
 #include "core/samples.h"
-#include "core/stencil_table.h"
-#include "core/tessellator.h"
-#include "render/frame_timer.h"
-#include "render/line_plot.h"
 #include "render/gl_context.h"
-#include "render/surface_renderer.h"
+#include "render/line_plot.h"
 
 namespace gps {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// Median seconds of each function over rounds that fill about `budget` seconds (at least 3, at most
-// 200); each round runs every function once, in order, so a changing machine load hits all alike.
-std::vector<double> interleaved_median_seconds(const std::vector<std::function<void()>>& functions, double budget) {
-  std::vector<std::vector<double>> times(functions.size());
-  const auto start = Clock::now();
-  for (size_t round = 0; round < 3 || (round < 200 && std::chrono::duration<double>(Clock::now() - start).count() < budget); ++round)
-    for (size_t i = 0; i < functions.size(); ++i) {
-      const auto t0 = Clock::now();
-      functions[i]();
-      times[i].push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-    }
-  std::vector<double> medians;
-  for (auto& t : times) medians.push_back(median(std::move(t)));
-  return medians;
-}
-
-// Median seconds of `f` over repeats that fill about `budget` seconds (at least 3, at most 200).
-double median_seconds(const std::function<void()>& f, double budget = 0.3) { return interleaved_median_seconds({f}, budget)[0]; }
-
-nlohmann::json bench_preprocess(const std::string& name, int size, const PlanOptions& options) {
-  const CovarianceMesh mesh = make_sample(name, size);
-  const PolygonTopology topology = topology_of(mesh.mesh);
-  PlanTables tables;
-  const double preprocess = median_seconds([&] { tables = build_surface_plans(topology, options); });
-  std::vector<Dual> q = base_points(mesh);
-  std::vector<Dual> points;
-  const double apply = median_seconds([&] { points = apply_stencils(tables.stencils, q); });
-  const StencilDependents deps = stencil_dependents(tables.stencils);
-  const std::vector<int> one_vertex = {int(mesh.n_vertices() / 2)};
-  const double update = median_seconds([&] { update_stencils(tables.stencils, deps, one_vertex, points); });
-  const double dual_map = median_seconds([&] { q = base_points(mesh); });
-  return {{"mesh", name + (size ? "/" + std::to_string(size) : "")},
-          {"faces", mesh.n_faces()},
-          {"patches", tables.plans.n_patches()},
-          {"scheme", tables.plans.shape == PatchShape::triangle ? "loop" : "catmull-clark"},
-          {"depth", tables.plans.max_depth},
-          {"nodes_ints", tables.plans.nodes.size()},
-          {"table_bytes_per_face", double(tables.bytes()) / double(mesh.n_faces())},
-          {"stencil_rows", tables.stencils.n_rows()},
-          {"stencil_nonzeros", tables.stencils.indices.size()},
-          {"preprocess_ms", preprocess * 1e3},
-          {"preprocess_us_per_face", preprocess * 1e6 / double(mesh.n_faces())},
-          {"dual_map_ms", dual_map * 1e3},
-          {"stencil_apply_ms", apply * 1e3},
-          {"stencil_update_one_vertex_us", update * 1e6}};
-}
 
 // "NAME" or "NAME:FACES" (FACES 0: the sample's default size), checked against the samples.
 std::vector<std::pair<std::string, int>> sample_list(const std::vector<std::string>& specs) {
@@ -98,136 +39,6 @@ std::vector<std::pair<std::string, int>> sample_list(const std::vector<std::stri
     list.emplace_back(name, faces);
   }
   return list;
-}
-
-// Frame time per mesh and level: the compute passes, the tessellated draw (live: every patch
-// evaluated), the surface cache's frame (stored triangles) and a frame after a one-vertex edit (the
-// cache captures again), and the floor: the same triangles (CPU tessellation) drawn from a static
-// vertex buffer with the same shading.
-nlohmann::json bench_render(const std::string& name, int faces, const PlanOptions& options, int size, const std::vector<int>& levels) {
-  CovarianceMesh mesh = make_sample(name, faces);
-  SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, options);
-  const Camera camera = frame_mesh(mesh);
-  RenderTarget target(size, size);
-  const FrameTiming compute = time_gl_work([&] { renderer.recompute_all(); }, 5);
-  const std::vector<Dual> points = apply_stencils(renderer.tables().stencils, base_points(mesh));
-  const std::vector<int> edited = {int(mesh.n_vertices() / 2)};
-  bool grow = true;  // the edit scales a covariance by 1.1 and the next one back
-  nlohmann::json rows = nlohmann::json::array();
-  for (const int level : levels) {
-    DrawOptions o;
-    o.level = float(level);
-    const int repeats = level >= 32 ? 2 : 4;
-    o.surface_cache = false;
-    const FrameTiming patches = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
-    o.surface_cache = true;
-    const FrameTiming cached = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
-    const FrameTiming edit = time_gl_work([&] {
-      mesh.covariances[size_t(edited[0])] *= grow ? 1.1 : 1.0 / 1.1;
-      grow = !grow;
-      renderer.update_vertices(mesh, edited);
-      renderer.draw(target, camera, o);
-    }, repeats);
-    const size_t cache_bytes = renderer.surface_cache().buffer_bytes();
-    const bool cache_held = renderer.surface_cache().holds_triangles();
-    const TriangleMesh triangles = tessellate(renderer.tables().plans, points, level);
-    renderer.set_triangles(triangles);
-    o.static_triangles = true;
-    const FrameTiming floor = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
-    const double n = double(triangles.triangles.size());
-    rows.push_back({{"mesh", name + (faces ? "/" + std::to_string(faces) : "")},
-                    {"faces", mesh.mesh.n_faces()},
-                    {"patches", renderer.tables().plans.n_patches()},
-                    {"level", level},
-                    {"triangles", n},
-                    {"compute_gpu_ms", compute.gpu_ms},
-                    {"draw_gpu_ms", patches.gpu_ms},
-                    {"frame_ms", patches.wall_ms},
-                    {"triangles_per_second", n / (patches.wall_ms * 1e-3)},
-                    {"static_buffer_frame_ms", floor.wall_ms},
-                    {"ratio_to_static_buffer", patches.wall_ms / floor.wall_ms},
-                    {"cached_frame_ms", cached.wall_ms},
-                    {"cached_ratio_to_static_buffer", cached.wall_ms / floor.wall_ms},
-                    {"edit_frame_ms", edit.wall_ms},
-                    {"edit_ratio_to_static_buffer", edit.wall_ms / floor.wall_ms},
-                    {"cache_held", cache_held},
-                    {"cache_buffer_bytes", cache_bytes},
-                    {"pipeline_buffer_bytes", renderer.buffer_bytes()},
-                    {"static_buffer_bytes", triangles.positions.size() * 24 + triangles.triangles.size() * 12}});
-  }
-  return rows;
-}
-
-// Edit-to-frame time on a `faces`-face sphere: an edit maps only the changed vertices to 9D and
-// re-applies the stencils that read them (no topology rebuild), against the plain frame, the full
-// recompute and set_mesh. Wall times to after glFinish; the figures are measured interleaved.
-nlohmann::json bench_edit(const std::string& name, int faces, const PlanOptions& options) {
-  CovarianceMesh mesh = make_sample(name, faces);
-  SurfaceRenderer renderer;
-  const auto rebuild_start = Clock::now();
-  renderer.set_mesh(mesh, options);
-  glFinish();
-  const double set_mesh = std::chrono::duration<double>(Clock::now() - rebuild_start).count();
-  const Camera camera = frame_mesh(mesh);
-  RenderTarget target(1280, 720);
-  DrawOptions o;
-  o.pixels = 6.0f;
-  const auto frame = [&] {
-    renderer.draw(target, camera, o);
-    glFinish();
-  };
-  renderer.set_collect_statistics(true);
-  frame();  // warm-up, and the triangle count (glFinish made the queries' results available)
-  const DrawStatistics statistics = renderer.last_statistics();
-  renderer.set_collect_statistics(false);
-  // Each edit scales the covariances by 1.1 and the next one back, so the surface stays put.
-  bool grow = true;
-  const auto edit = [&](const std::vector<int>& vertices) {
-    const double scale = grow ? 1.1 : 1.0 / 1.1;
-    grow = !grow;
-    for (const int v : vertices) mesh.covariances[size_t(v)] *= scale;
-    renderer.update_vertices(mesh, vertices);
-  };
-  const std::vector<int> one = {int(mesh.n_vertices() / 2)};
-  std::vector<int> sixteen(16);
-  for (int i = 0; i < 16; ++i) sixteen[size_t(i)] = one[0] + i;
-  const std::vector<double> t = interleaved_median_seconds(
-      {frame,
-       [&] {
-         edit(one);
-         frame();
-       },
-       [&] {
-         edit(sixteen);
-         frame();
-       },
-       [&] {
-         renderer.recompute_all();
-         frame();
-       },
-       [&] {
-         edit(one);
-         glFinish();
-       },
-       [&] {
-         renderer.recompute_all();
-         glFinish();
-       }},
-      20.0);
-  return {{"mesh", "sphere/" + std::to_string(faces)},
-          {"faces", mesh.n_faces()},
-          {"vertices", mesh.n_vertices()},
-          {"patches", statistics.patches},
-          {"depth", renderer.tables().plans.max_depth},
-          {"triangles", statistics.triangles},
-          {"frame_ms", t[0] * 1e3},
-          {"edit_to_frame_1_vertex_ms", t[1] * 1e3},
-          {"edit_to_frame_16_vertices_ms", t[2] * 1e3},
-          {"full_recompute_frame_ms", t[3] * 1e3},
-          {"edit_1_vertex_compute_ms", t[4] * 1e3},
-          {"full_recompute_ms", t[5] * 1e3},
-          {"set_mesh_ms", set_mesh * 1e3}};
 }
 
 }  // namespace
@@ -268,7 +79,7 @@ void add_bench_command(CLI::App& app) {
     };
     if (args->edit) {
       const auto context = make_context();
-      const auto r = bench_edit(args->mesh.empty() ? "sphere" : args->mesh, args->size ? args->size : 100000, args->plans.options());
+      const auto r = edit_figures(args->mesh.empty() ? "sphere" : args->mesh, args->size ? args->size : 100000, args->plans.options());
       std::printf("device: %s\n%s: %d faces, %d patches, depth %d, 1280x720, adaptive 6 px, %lld triangles per frame\n",
                   context->description().c_str(), r["mesh"].get<std::string>().c_str(), r["faces"].get<int>(), r["patches"].get<int>(),
                   r["depth"].get<int>(), r["triangles"].get<long long>());
@@ -300,7 +111,7 @@ void add_bench_command(CLI::App& app) {
       const auto meshes = args->meshes.empty() ? sample_list({"cube", "wirecube", "cylinder", "valence5", "cone-pointy", "icosphere", "pawn", "pawn-quads"})
                                                : sample_list(args->meshes);
       for (const auto& [name, faces] : meshes) {
-        for (const auto& r : bench_render(name, faces, plans, args->size, args->levels)) {
+        for (const auto& r : frame_figures(name, faces, plans, args->size, args->levels)) {
           std::printf("%-12s %7d %5d %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %7.2f ms %7.2f %7.2f ms %7.2f %6.1f kB%s\n",
                       r["mesh"].get<std::string>().c_str(), r["patches"].get<int>(), r["level"].get<int>(), r["triangles"].get<double>(),
                       r["compute_gpu_ms"].get<double>(), r["draw_gpu_ms"].get<double>(), r["frame_ms"].get<double>(),
@@ -341,7 +152,7 @@ void add_bench_command(CLI::App& app) {
     std::printf("%-18s %7s %8s %7s %8s %12s %11s %10s %10s %10s %9s\n", "mesh", "faces", "patches", "rows", "nnz",
                 "preprocess", "us/face", "dual map", "apply", "1-vertex", "B/face");
     for (const auto& [name, size] : meshes) {
-      const auto r = bench_preprocess(name, size, args->plans.options());
+      const auto r = preprocess_figures(name, size, args->plans.options());
       std::printf("%-18s %7d %8d %7d %8d %9.3f ms %11.3f %7.3f ms %7.3f ms %7.2f us %9.0f\n", r["mesh"].get<std::string>().c_str(),
                   r["faces"].get<int>(), r["patches"].get<int>(), r["stencil_rows"].get<int>(), r["stencil_nonzeros"].get<int>(),
                   r["preprocess_ms"].get<double>(), r["preprocess_us_per_face"].get<double>(), r["dual_map_ms"].get<double>(),

@@ -8,9 +8,10 @@ foreach(source ${SOURCES})
   if(source MATCHES "\\.h$")
     set(body "#define GPS_GLSL\n${body}")
   else()
-    # A shader's #include "core/x.h" (GLSL has none) takes that shared header's text in its place,
-    # read as GLSL: GPS_GLSL is defined by core/patch_basis.h, which comes before such a shader.
-    string(REGEX MATCHALL "#include \"[^\"]+\\.h\"" includes "${body}")
+    # A shader's #include "x.h" or "x.glsl" (GLSL has none) takes that file's text in its place: a
+    # shared C++ header is read as GLSL (GPS_GLSL is defined by core/patch_basis.h, which comes
+    # before such a shader); a .glsl file is a piece two shaders share (not itself embedded).
+    string(REGEX MATCHALL "#include \"[^\"]+\\.(h|glsl)\"" includes "${body}")
     foreach(line ${includes})
       string(REGEX REPLACE "#include \"([^\"]+)\"" "\\1" header "${line}")
       file(READ ${ROOT}/${header} header_body)

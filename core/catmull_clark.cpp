@@ -1,6 +1,7 @@
 #include "core/catmull_clark.h"
 
 #include "core/linalg.h"
+#include "core/vertex_mask.h"
 
 namespace gps {
 
@@ -48,27 +49,23 @@ std::vector<T> catmull_clark_values(const PolygonTopology& t, const MeshConnecti
     else
       edge_points[e] = 0.25 * (a + b + face_points[c.edge_faces[2 * size_t(e)]] + face_points[c.edge_faces[2 * size_t(e) + 1]]);
   }
-#pragma omp parallel for if (parallel)
-  for (int v = 0; v < nv; ++v) {
-    int a = -1, b = -1;
-    switch (vertex_role(c, v, &a, &b)) {
-      case VertexRole::isolated:
-      case VertexRole::corner:
-        vertex_points[v] = p[size_t(v)];
-        break;
-      case VertexRole::boundary:  // cubic B-spline curve: (a + 6v + b)/8
-        vertex_points[v] = (p[size_t(a)] + 6.0 * p[size_t(v)] + p[size_t(b)]) / 8.0;
-        break;
-      case VertexRole::interior: {  // (n−2)/n·v + Σ e_j/n² + Σ f_j/n²
-        const double n = c.valence(v);
-        T sum = T::Zero(p[size_t(v)].rows());
-        for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i)
-          sum += p[size_t(c.other_vertex(c.vertex_edges[size_t(i)], v))];
-        for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i)
-          sum += face_points[c.vertex_faces[size_t(i)]];
-        vertex_points[v] = ((n - 2.0) / n) * p[size_t(v)] + sum / (n * n);
-        break;
+#pragma omp parallel if (parallel)
+  {
+    VertexMask boundary;
+#pragma omp for
+    for (int v = 0; v < nv; ++v) {
+      if (boundary_mask(c, v, BoundaryRule::step, boundary)) {
+        vertex_points[v] = boundary.apply(p);
+        continue;
       }
+      // Interior: (n−2)/n·v + Σ e_j/n² + Σ f_j/n², reading the face points.
+      const double n = c.valence(v);
+      T sum = T::Zero(p[size_t(v)].rows());
+      for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i)
+        sum += p[size_t(c.other_vertex(c.vertex_edges[size_t(i)], v))];
+      for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i)
+        sum += face_points[c.vertex_faces[size_t(i)]];
+      vertex_points[v] = ((n - 2.0) / n) * p[size_t(v)] + sum / (n * n);
     }
   }
   return out;

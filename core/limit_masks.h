@@ -1,5 +1,6 @@
 #pragma once
-// Exact limit positions of subdivision vertices (DESIGN.md §2 "limit projection").
+// Exact limit positions of subdivision vertices (DESIGN.md §2 "limit projection"): the masks of
+// core/vertex_mask.h applied to every vertex.
 #include <vector>
 
 #include "core/loop.h"

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/linalg.h"
+#include "core/vertex_mask.h"
 
 namespace gps {
 
@@ -66,26 +67,10 @@ std::vector<T> loop_values(const PolygonTopology& t, const MeshConnectivity& c, 
       out[size_t(nv + e)] = 0.375 * (a + b) + 0.125 * (x + y);
     }
   }
+  VertexMask mask;
   for (int v = 0; v < nv; ++v) {
-    int a = -1, b = -1;
-    switch (vertex_role(c, v, &a, &b)) {
-      case VertexRole::isolated:
-      case VertexRole::corner:
-        out[size_t(v)] = p[size_t(v)];
-        break;
-      case VertexRole::boundary:
-        out[size_t(v)] = (p[size_t(a)] + 6.0 * p[size_t(v)] + p[size_t(b)]) / 8.0;
-        break;
-      case VertexRole::interior: {
-        const int n = c.valence(v);
-        const double beta = loop_beta(n, kind);
-        T sum = T::Zero(p[size_t(v)].rows());
-        for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i)
-          sum += p[size_t(c.other_vertex(c.vertex_edges[size_t(i)], v))];
-        out[size_t(v)] = (1.0 - n * beta) * p[size_t(v)] + beta * sum;
-        break;
-      }
-    }
+    loop_vertex_mask(c, v, kind, mask);
+    out[size_t(v)] = mask.apply(p);
   }
   return out;
 }

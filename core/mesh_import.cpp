@@ -1,7 +1,6 @@
 #include "core/mesh_import.h"
 
 #include <array>
-#include <cctype>
 #include <charconv>
 #include <cstring>
 #include <map>
@@ -9,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/number_text.h"
+#include "core/text_words.h"
 
 namespace gps {
 
@@ -25,13 +25,6 @@ CovarianceMesh plain_mesh(const std::vector<Vec3>& points, const std::vector<std
 bool parse_int(std::string_view s, long long& out) {
   const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   return ec == std::errc() && p == s.data() + s.size();
-}
-
-std::vector<std::string> words_of(const std::string& line) {
-  std::istringstream in(line);
-  std::vector<std::string> words;
-  for (std::string w; in >> w;) words.push_back(w);
-  return words;
 }
 
 }  // namespace
@@ -57,11 +50,11 @@ CovarianceMesh parse_obj(const std::string& data, const std::string& source) {
       std::vector<int> face;
       for (size_t k = 1; k < words.size(); ++k) {
         long long index = 0;
-        if (!parse_int(std::string_view(words[k]).substr(0, words[k].find('/')), index))
-          throw Error(at + "'" + words[k] + "' is not a vertex index");
+        if (!parse_int(words[k].substr(0, words[k].find('/')), index))
+          throw Error(at + "'" + std::string(words[k]) + "' is not a vertex index");
         if (index < 0) index += (long long)points.size() + 1;  // relative to the end
         if (index < 1 || index > (long long)points.size())
-          throw Error(at + "vertex index " + words[k] + " is out of range (" + std::to_string(points.size()) + " vertices so far)");
+          throw Error(at + "vertex index " + std::string(words[k]) + " is out of range (" + std::to_string(points.size()) + " vertices so far)");
         face.push_back(int(index - 1));
       }
       if (face.size() < 3) throw Error(at + "a face needs at least 3 vertices");
@@ -72,56 +65,20 @@ CovarianceMesh parse_obj(const std::string& data, const std::string& source) {
   return plain_mesh(points, faces, source);
 }
 
-namespace {
-// The whitespace-separated tokens of a text, '#' comments skipped, one at a time with their line
-// numbers (no token list: memory stays that of the text).
-class TokenCursor {
-public:
-  explicit TokenCursor(const std::string& data) : data_(data) { advance(); }
-  bool done() const { return token_.empty(); }
-  std::string_view token() const { return token_; }
-  int line() const { return line_; }
-  void next() { advance(); }
-  // Skips the remaining tokens of the current token's line (extra values: normals, colours).
-  void skip_line(int line) {
-    while (!done() && line_ == line) advance();
-  }
-
-private:
-  void advance() {
-    for (;;) {
-      while (pos_ < data_.size() && std::isspace((unsigned char)data_[pos_])) line_ += data_[pos_++] == '\n';
-      if (pos_ < data_.size() && data_[pos_] == '#') {
-        while (pos_ < data_.size() && data_[pos_] != '\n') ++pos_;
-        continue;
-      }
-      break;
-    }
-    const size_t begin = pos_;
-    while (pos_ < data_.size() && !std::isspace((unsigned char)data_[pos_]) && data_[pos_] != '#') ++pos_;
-    token_ = std::string_view(data_).substr(begin, pos_ - begin);
-  }
-  const std::string& data_;
-  size_t pos_ = 0;
-  int line_ = 1;
-  std::string_view token_;
-};
-}  // namespace
-
 CovarianceMesh parse_off(const std::string& data, const std::string& source) {
   if (data.empty()) throw Error(source + ": the file is empty");
-  TokenCursor t(data);
+  WordCursor t(data);
   const auto at = [&](int line) { return source + ": line " + std::to_string(line) + ": "; };
   // The keyword: OFF or a variant (COFF, NOFF, STCNOFF, ...) whose extra vertex values are skipped below.
-  if (!t.done() && t.token().size() >= 3 && t.token().ends_with("OFF")) {
-    if (t.token().find('4') != std::string_view::npos || t.token().starts_with("n"))
-      throw Error(at(t.line()) + std::string(t.token()) + " (4D or n-dimensional OFF) is not supported");
+  if (!t.done() && t.word().size() >= 3 && t.word().ends_with("OFF")) {
+    if (t.word().find('4') != std::string_view::npos || t.word().starts_with("n"))
+      throw Error(at(t.line()) + std::string(t.word()) + " (4D or n-dimensional OFF) is not supported");
     t.next();
   }
   const auto next_int = [&](const char* what) {
     if (t.done()) throw Error(source + ": the file ends early (expected " + what + ")");
     long long v = 0;
-    if (!parse_int(t.token(), v) || v < 0) throw Error(at(t.line()) + "'" + std::string(t.token()) + "' is not a valid " + what);
+    if (!parse_int(t.word(), v) || v < 0) throw Error(at(t.line()) + "'" + std::string(t.word()) + "' is not a valid " + what);
     t.next();
     return v;
   };
@@ -138,7 +95,7 @@ CovarianceMesh parse_off(const std::string& data, const std::string& source) {
     for (int k = 0; k < 3; ++k) {
       if (t.done()) throw Error(source + ": the file ends early (truncated vertex list)");
       line = t.line();
-      if (const std::string why = parse_number(t.token(), p[k]); !why.empty()) throw Error(at(line) + why);
+      if (const std::string why = parse_number(t.word(), p[k]); !why.empty()) throw Error(at(line) + why);
       t.next();
     }
     t.skip_line(line);  // normals, colours, texture coordinates

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -13,6 +12,7 @@
 #include "core/error.h"
 #include "core/number_text.h"
 #include "core/text_file.h"
+#include "core/text_words.h"
 
 namespace gps {
 
@@ -26,7 +26,7 @@ struct ScalarType {
   bool is_signed = false;
 };
 
-std::optional<ScalarType> scalar_type(const std::string& name) {
+std::optional<ScalarType> scalar_type(std::string_view name) {
   if (name == "char" || name == "int8") return ScalarType{1, false, true};
   if (name == "uchar" || name == "uint8") return ScalarType{1, false, false};
   if (name == "short" || name == "int16") return ScalarType{2, false, true};
@@ -70,14 +70,7 @@ public:
       ++line_;
       std::string_view text(data_.data() + pos_, end - pos_);
       pos_ = end + 1;
-      size_t i = 0;
-      while (i < text.size()) {
-        while (i < text.size() && std::isspace((unsigned char)text[i])) ++i;
-        size_t j = i;
-        while (j < text.size() && !std::isspace((unsigned char)text[j])) ++j;
-        if (j > i) tokens_.push_back(text.substr(i, j - i));
-        i = j;
-      }
+      tokens_ = words_of(text);
     }
   }
 
@@ -145,13 +138,6 @@ private:
   size_t token_index_ = 0;
 };
 
-std::vector<std::string> split_words(const std::string& line) {
-  std::istringstream in(line);
-  std::vector<std::string> words;
-  for (std::string w; in >> w;) words.push_back(w);
-  return words;
-}
-
 }  // namespace
 
 PlyContents parse_ply(const std::string& data, const std::string& source) {
@@ -172,7 +158,7 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
     pos = end + 1;
     ++line;
     const std::string at = "line " + std::to_string(line) + ": ";
-    const auto words = split_words(text);
+    const auto words = words_of(text);
     if (line == 1) {
       if (words.size() != 1 || words[0] != "ply") fail("not a PLY file (the first line is not 'ply')");
       continue;
@@ -183,7 +169,7 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       if (words[1] == "ascii") format = Format::ascii;
       else if (words[1] == "binary_little_endian") format = Format::binary_le;
       else if (words[1] == "binary_big_endian") format = Format::binary_be;
-      else fail(at + "unknown format '" + words[1] + "'");
+      else fail(at + "unknown format '" + std::string(words[1]) + "'");
     } else if (words[0] == "element") {
       if (words.size() != 3) fail(at + "malformed element line");
       Element e;
@@ -191,7 +177,7 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       e.header_line = line;
       unsigned long long count = 0;
       const auto [p, ec] = std::from_chars(words[2].data(), words[2].data() + words[2].size(), count);
-      if (ec != std::errc() || p != words[2].data() + words[2].size()) fail(at + "element count '" + words[2] + "' is not a number");
+      if (ec != std::errc() || p != words[2].data() + words[2].size()) fail(at + "element count '" + std::string(words[2]) + "' is not a number");
       e.count = size_t(count);
       elements.push_back(e);
     } else if (words[0] == "property") {
@@ -200,11 +186,11 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       if (words.size() == 5 && words[1] == "list") {
         const auto ct = scalar_type(words[2]), it = scalar_type(words[3]);
         if (!ct || !it || ct->is_float) fail(at + "bad list property types");
-        prop = {words[4], *it, true, *ct};
+        prop = {std::string(words[4]), *it, true, *ct};
       } else if (words.size() == 3) {
         const auto t = scalar_type(words[1]);
-        if (!t) fail(at + "unknown property type '" + words[1] + "'");
-        prop = {words[2], *t, false, {}};
+        if (!t) fail(at + "unknown property type '" + std::string(words[1]) + "'");
+        prop = {std::string(words[2]), *t, false, {}};
       } else {
         fail(at + "malformed property line");
       }

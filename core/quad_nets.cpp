@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "core/vertex_mask.h"
+
 namespace gps {
 
 namespace {
@@ -106,6 +108,7 @@ std::array<LocalCombination, 16> bezier_net(const LocalMesh& m, const std::array
   const auto& conn = m.connectivity;
   std::array<Combo, 16> net;
   const auto at = [&](Grid2 g) -> Combo& { return net[size_t(g.i + 4 * g.j)]; };
+  VertexMask corner_mask;
   for (int k = 0; k < 4; ++k) {
     const int v = c[size_t(k)], next = c[size_t((k + 1) % 4)], prev = c[size_t((k + 3) % 4)], opposite = c[size_t((k + 2) % 4)];
     const VertexRole role = vertex_role(conn, v);
@@ -115,22 +118,8 @@ std::array<LocalCombination, 16> bezier_net(const LocalMesh& m, const std::array
     const Grid2 to_next = {(kBezier[(k + 1) % 4].i - g.i) / 3, (kBezier[(k + 1) % 4].j - g.j) / 3};
     const Grid2 to_prev = {(kBezier[(k + 3) % 4].i - g.i) / 3, (kBezier[(k + 3) % 4].j - g.j) / 3};
     // Corner point: the exact limit position.
-    Combo corner;
-    if (role == VertexRole::interior) {
-      const double total = n * (n + 5.0);
-      corner.emplace_back(v, n * n / total);
-      for (int i = conn.vertex_edge_offsets[size_t(v)]; i < conn.vertex_edge_offsets[size_t(v) + 1]; ++i)
-        corner.emplace_back(conn.other_vertex(conn.vertex_edges[size_t(i)], v), 4.0 / total);
-      for (int i = conn.vertex_face_offsets[size_t(v)]; i < conn.vertex_face_offsets[size_t(v) + 1]; ++i)
-        corner.emplace_back(face_vertex(m, conn.vertex_faces[size_t(i)], conn.vertex_face_corners[size_t(i)] + 2), 1.0 / total);
-    } else if (role == VertexRole::boundary) {
-      int a = -1, b = -1;
-      vertex_role(conn, v, &a, &b);
-      corner = {{a, 1.0 / 6.0}, {v, 4.0 / 6.0}, {b, 1.0 / 6.0}};
-    } else {
-      corner = one(v);
-    }
-    at(g) = corner;
+    catmull_clark_limit_mask(m.topology, conn, v, corner_mask);
+    at(g) = corner_mask.terms();
     // Edge points on the edges to `next` and `prev`.
     for (const auto& [w, dir] : {std::pair{next, to_next}, std::pair{prev, to_prev}}) {
       const int e = m.find_edge(v, w);

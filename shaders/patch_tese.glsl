@@ -3,14 +3,7 @@
 layout(quads, equal_spacing, ccw) in;
 patch in int tc_patch;
 
-uniform mat4 u_view_projection;
-
-out vec3 v_position;
-out vec3 v_normal;
-out vec3 v_patch_uv;  // patch id and (u, v), for transform feedback checks
-out vec3 v_evaluated; // the patch id and (u, v) evaluated: the canonical patch on patch edges (canonical_edge.glsl)
-out vec3 v_grid;      // tessellation grid coordinates, for the wireframe (z: no third family)
-flat out int v_kind;  // plan node kind: 1 regular (exact B-spline), 2 terminal (Bézier approximation)
+const int kCorners = 4;
 
 // The tessellator places the vertices of an outer edge of level n near i/n (llvmpipe: in fixed
 // point). A vertex on the patch's boundary is named by its edge and step i (integers), and
@@ -38,23 +31,14 @@ vec2 edge_point_uv(EdgePoint e) {
   return vec2(0.0, f.y);
 }
 
-void main() {
-  vec3 mu, mu_u, mu_v;
-  vec2 uv = gl_TessCoord.xy;
-  int patch_id = tc_patch;
-  vec2 eval_uv = uv;
-  EdgePoint e;
-  if (boundary_point(e)) {
-    uv = edge_point_uv(e);
-    EdgePoint c = canonical_boundary_point(e, 4);
-    patch_id = c.patch_id;
-    eval_uv = edge_point_uv(c);
-  }
-  evaluate_plan(patch_id, eval_uv, mu, mu_u, mu_v, v_kind);
-  v_position = mu;
-  v_normal = normalize(cross(mu_u, mu_v));
-  v_patch_uv = vec3(float(tc_patch), uv);
-  v_evaluated = vec3(float(patch_id), eval_uv);
-  v_grid = vec3(gl_TessCoord.xy * vec2(gl_TessLevelInner[0], gl_TessLevelInner[1]), 0.5);
-  gl_Position = u_view_projection * vec4(mu, 1.0);
+vec2 tess_uv() { return gl_TessCoord.xy; }
+
+// Node kinds: regular (exact B-spline), terminal (Bézier approximation), extraordinary (exact).
+void evaluate_limit(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int kind) {
+  evaluate_plan(patch_id, uv, mu, mu_u, mu_v, kind);
 }
+
+// The tessellation grid's two families (z: no third).
+vec3 grid_coordinates() { return vec3(gl_TessCoord.xy * vec2(gl_TessLevelInner[0], gl_TessLevelInner[1]), 0.5); }
+
+#include "shaders/limit_point_tese.glsl"

@@ -3,14 +3,7 @@
 layout(triangles, equal_spacing, ccw) in;
 patch in int tc_patch;
 
-uniform mat4 u_view_projection;
-
-out vec3 v_position;
-out vec3 v_normal;
-out vec3 v_patch_uv;  // patch id and (u, v), for transform feedback checks
-out vec3 v_evaluated; // the patch id and (u, v) evaluated: the canonical patch on patch edges (canonical_edge.glsl)
-out vec3 v_grid;      // tessellation grid: the three barycentrics times the inner level
-flat out int v_kind;  // plan node kind: 1 box spline, 3 extraordinary (exact)
+const int kCorners = 3;
 
 // A vertex on the patch's boundary: its edge (k from corner k to k+1) and step i of the edge's
 // level, evaluated from the canonical patch of that point (canonical_edge.glsl) so that the
@@ -35,23 +28,14 @@ vec2 edge_point_uv(EdgePoint e) {
   return vec2(0.0, f.y);
 }
 
-void main() {
-  vec3 mu, mu_u, mu_v;
-  vec2 uv = gl_TessCoord.yz;
-  int patch_id = tc_patch;
-  vec2 eval_uv = uv;
-  EdgePoint e;
-  if (boundary_point(e)) {
-    uv = edge_point_uv(e);
-    EdgePoint c = canonical_boundary_point(e, 3);
-    patch_id = c.patch_id;
-    eval_uv = edge_point_uv(c);
-  }
-  evaluate_triangle_plan(patch_id, eval_uv.x, eval_uv.y, mu, mu_u, mu_v, v_kind);
-  v_position = mu;
-  v_normal = normalize(cross(mu_u, mu_v));
-  v_patch_uv = vec3(float(tc_patch), uv);
-  v_evaluated = vec3(float(patch_id), eval_uv);
-  v_grid = gl_TessCoord * gl_TessLevelInner[0];
-  gl_Position = u_view_projection * vec4(mu, 1.0);
+vec2 tess_uv() { return gl_TessCoord.yz; }
+
+// Node kinds: box spline, extraordinary (exact).
+void evaluate_limit(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int kind) {
+  evaluate_triangle_plan(patch_id, uv.x, uv.y, mu, mu_u, mu_v, kind);
 }
+
+// The tessellation grid: the three barycentrics times the inner level.
+vec3 grid_coordinates() { return gl_TessCoord * gl_TessLevelInner[0]; }
+
+#include "shaders/limit_point_tese.glsl"

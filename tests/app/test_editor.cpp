@@ -19,9 +19,10 @@
 namespace gps {
 namespace {
 
-constexpr int kWidth = 1024, kHeight = 700;
+constexpr int kWidth = test::kWindowWidth, kHeight = test::kWindowHeight;
 constexpr int kVertex = 6;  // the cube's (1, 1, 1) corner, in front for the default camera
 
+using test::editor_view;
 using test::pixel_of;
 using test::point;
 std::string editor(const std::string& args) { return test::editor_command(args); }
@@ -32,15 +33,6 @@ CovarianceMesh test_mesh() {
   const Mat3 r = Eigen::AngleAxisd(0.5, Vec3(1, -2, 0.5).normalized()).toRotationMatrix();
   mesh.covariances[kVertex] = r * Vec3(0.004, 0.02, 0.06).asDiagonal() * r.transpose();
   return mesh;
-}
-
-// What the editor shows on opening: its default camera and k-sigma, in a kWidth × kHeight window.
-Viewport editor_view(const CovarianceMesh& mesh) {
-  Viewport v;
-  v.camera = frame_mesh(mesh);
-  v.width = kWidth;
-  v.height = kHeight;
-  return v;
 }
 
 struct DragPlan {

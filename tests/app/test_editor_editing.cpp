@@ -26,18 +26,11 @@ namespace {
 
 using test::Events;
 using test::artefact;
+using test::editor_view;
 using test::pixel_of;
 
-constexpr int kWidth = 1024, kHeight = 700;
+constexpr int kWidth = test::kWindowWidth, kHeight = test::kWindowHeight;
 constexpr int kVertex = 6;  // the cube's (1, 1, 1) corner, in front for the default camera
-
-Viewport editor_view(const CovarianceMesh& mesh, int width = kWidth, int height = kHeight) {
-  Viewport v;
-  v.camera = frame_mesh(mesh);
-  v.width = width;
-  v.height = height;
-  return v;
-}
 
 class EditorEditing : public ::testing::Test {
 protected:
@@ -221,8 +214,7 @@ TEST_F(EditorEditing, ScreenshotsOfAMultiSelectionAndOfFramingBesideThePanels) {
   const Viewport view = editor_view(original_);
   // A box from a corner on the torus, grown until it holds 12 vertices.
   const glm::vec2 corner(430.0f, 330.0f);
-  float side = 4.0f;
-  while (side < 400.0f && vertices_in_box(view.camera, view.width, view.height, corner, corner + side, original_).size() < 12) side += 1.0f;
+  const float side = test::box_side_holding(view, corner, original_, 12);
   ASSERT_EQ(vertices_in_box(view.camera, view.width, view.height, corner, corner + side, original_).size(), 12u);
   Events events;
   events.drag(corner, corner + side, 8).wait();

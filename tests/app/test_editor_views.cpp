@@ -23,21 +23,14 @@ namespace gps {
 namespace {
 
 using test::artefact;
+using test::editor_view;
 using test::Events;
 using test::pixel_of;
 
-constexpr int kWidth = 1024, kHeight = 700;
+constexpr int kWidth = test::kWindowWidth, kHeight = test::kWindowHeight;
 // The Inspector's first row of fields (mean x, y, z; then σ1..3 a row below) at its first-use place
 // in a 1024-pixel-wide window: 360 wide, 10 pixels from the right edge, below the menu bar.
 const glm::vec2 kMeanX(700.0f, 72.0f), kMeanY(790.0f, 72.0f), kSigma1(700.0f, 97.0f);
-
-Viewport editor_view(const CovarianceMesh& mesh) {
-  Viewport v;
-  v.camera = frame_mesh(mesh);
-  v.width = kWidth;
-  v.height = kHeight;
-  return v;
-}
 
 glm::vec3 colour_at(const Image& im, glm::vec2 p) {
   const int x = int(std::lround(p.x)), y = int(std::lround(p.y));
@@ -119,8 +112,7 @@ TEST_F(EditorViews, TheGizmoOfAMultiSelectionAtItsCentroid) {
   use_mesh(make_sample("torus"));
   const Viewport view = editor_view(original_);
   const glm::vec2 corner(430.0f, 330.0f);
-  float side = 4.0f;
-  while (side < 400.0f && vertices_in_box(view.camera, view.width, view.height, corner, corner + side, original_).size() < 12) side += 1.0f;
+  const float side = test::box_side_holding(view, corner, original_, 12);
   const std::vector<int> selected = vertices_in_box(view.camera, view.width, view.height, corner, corner + side, original_);
   ASSERT_EQ(selected.size(), 12u);
   Vec3 centroid = Vec3::Zero();

@@ -7,9 +7,9 @@
 #include <cstdlib>
 
 #include "core/samples.h"
-#include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/surface_renderer.h"
+#include "tests/support/gl_fixture.h"
 #include "view/camera.h"
 #include "view/projection.h"
 
@@ -55,11 +55,12 @@ float cage_strength(const Shots& s, glm::vec2 pixel) {
   return strongest;
 }
 
+using CageDepth = test::GlTest;
+
 // Looking down the cube's diagonal, its back corner (−1, −1, −1) lies right behind the rounded
 // limit surface and its front corner (1, 1, 1) right before it; their edges project 60° apart.
 // Compared a little way along one edge of each, away from the corners where lines overlap.
-TEST(CageDepth, EdgesBehindTheSurfaceAreFaintAndThoseInFrontFull) {
-  const auto context = create_offscreen_context();
+TEST_F(CageDepth, EdgesBehindTheSurfaceAreFaintAndThoseInFrontFull) {
   Camera camera;
   camera.yaw_degrees = 45.0f;
   camera.pitch_degrees = glm::degrees(std::asin(1.0f / std::sqrt(3.0f)));
@@ -80,8 +81,7 @@ TEST(CageDepth, EdgesBehindTheSurfaceAreFaintAndThoseInFrontFull) {
 
 // Where no surface lies behind a line it is not hidden: the cube's cage, outside its small rounded
 // surface, is drawn in full at its front corner.
-TEST(CageDepth, EdgesOverTheBackgroundAreFull) {
-  const auto context = create_offscreen_context();
+TEST_F(CageDepth, EdgesOverTheBackgroundAreFull) {
   const CovarianceMesh mesh = make_sample("cube");
   const Camera camera = frame_box(Vec3(-1.6, -1.6, -1.6), Vec3(1.6, 1.6, 1.6), 35.0f, 25.0f);
   const auto p = project_to_pixel(camera, kSize, kSize, glm::vec3(1.0f, -1.0f, 1.0f));

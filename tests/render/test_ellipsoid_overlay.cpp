@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "core/samples.h"
-#include "render/gl_context.h"
 #include "render/surface_renderer.h"
+#include "tests/support/gl_fixture.h"
 #include "view/camera.h"
 #include "view/projection.h"
 
@@ -13,13 +13,8 @@ namespace {
 
 constexpr int kSize = 200;
 
-class EllipsoidSubset : public ::testing::Test {
+class EllipsoidSubset : public test::GlTest {
 protected:
-  static void SetUpTestSuite() { context_ = create_offscreen_context().release(); }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
   Image render(bool ellipsoids, const std::vector<int>* only) {
     DrawOptions o;
     o.level = 4;
@@ -41,14 +36,12 @@ protected:
           }
     return out;
   }
-  static GlContext* context_;
   CovarianceMesh mesh_ = make_sample("cube");
   void SetUp() override { renderer_.set_mesh(mesh_); }
   SurfaceRenderer renderer_;
   RenderTarget target_{kSize, kSize};
   Camera camera_ = frame_box(Vec3(-2, -2, -2), Vec3(2, 2, 2), 35.0f, 25.0f);
 };
-GlContext* EllipsoidSubset::context_ = nullptr;
 
 TEST_F(EllipsoidSubset, OnlyTheChosenVerticesEllipsoidsAreDrawn) {
   const Image none = render(false, nullptr), all = render(true, nullptr);

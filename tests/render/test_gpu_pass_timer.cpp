@@ -7,22 +7,13 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "render/gl_context.h"
 #include "render/render_target.h"
+#include "tests/support/gl_fixture.h"
 
 namespace gps {
 namespace {
 
-class GpuPassTimerTest : public ::testing::Test {
-protected:
-  static void SetUpTestSuite() { context_ = create_offscreen_context(ContextKind::osmesa).release(); }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  static GlContext* context_;
-};
-GlContext* GpuPassTimerTest::context_ = nullptr;
+using GpuPassTimerTest = test::GlTest;
 
 void clear(const RenderTarget& target, float grey) {
   target.bind();

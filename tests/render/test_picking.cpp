@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "core/samples.h"
-#include "render/gl_context.h"
 #include "render/surface_renderer.h"
+#include "tests/support/gl_fixture.h"
 
 namespace gps {
 namespace {
@@ -18,7 +18,9 @@ glm::vec3 mean_of(const CovarianceMesh& mesh, size_t i) {
 
 Camera cube_camera() { return frame_box(Vec3(-1, -1, -1), Vec3(1, 1, 1), 35.0f, 25.0f); }
 
-TEST(Picking, RaysThroughAProjectedPointHitIt) {
+using Picking = test::GlTest;
+
+TEST_F(Picking, RaysThroughAProjectedPointHitIt) {
   const CovarianceMesh mesh = make_sample("cube");
   const Camera camera = cube_camera();
   for (size_t i = 0; i < mesh.n_vertices(); ++i) {
@@ -33,7 +35,7 @@ TEST(Picking, RaysThroughAProjectedPointHitIt) {
   }
 }
 
-TEST(Picking, PicksTheVertexUnderTheMouseAndNothingElsewhere) {
+TEST_F(Picking, PicksTheVertexUnderTheMouseAndNothingElsewhere) {
   const CovarianceMesh mesh = make_sample("cube");
   const Camera camera = cube_camera();
   for (size_t i = 0; i < mesh.n_vertices(); ++i) {
@@ -54,8 +56,7 @@ TEST(Picking, PicksTheVertexUnderTheMouseAndNothingElsewhere) {
   EXPECT_EQ(pick_vertex(diagonal, 100, 100, glm::vec2(49.5f, 49.5f), mesh, 4.0f), front);
 }
 
-TEST(Picking, SurfacePointUnderAPixelLiesOnTheRay) {
-  const auto context = create_offscreen_context();
+TEST_F(Picking, SurfacePointUnderAPixelLiesOnTheRay) {
   const CovarianceMesh mesh = make_sample("cube");
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh);
@@ -92,7 +93,7 @@ namespace {
 
 // A ray through any pixel inside a vertex's projected k-sigma ellipsoid picks it, for any camera
 // and window size; a pixel well outside every ellipsoid picks nothing.
-TEST(Picking, EllipsoidsArePickedExactlyWhereTheyProject) {
+TEST_F(Picking, EllipsoidsArePickedExactlyWhereTheyProject) {
   CovarianceMesh mesh = make_sample("cube");
   for (size_t i = 0; i < mesh.n_vertices(); ++i) mesh.covariances[i] = Vec3(0.01, 0.0025, 0.04).asDiagonal();
   for (const auto& [w, h, yaw] : {std::tuple{640, 480, 30.0f}, std::tuple{300, 900, 120.0f}, std::tuple{1500, 500, -60.0f}}) {

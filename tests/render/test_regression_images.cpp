@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "core/samples.h"
-#include "render/gl_context.h"
 #include "render/surface_renderer.h"
+#include "tests/support/gl_fixture.h"
 
 namespace gps {
 namespace {
@@ -26,8 +26,9 @@ Image render_sample(SurfaceRenderer& renderer, const std::string& name) {
   return rgb;
 }
 
-TEST(RegressionImages, SamplesRenderAsStored) {
-  const auto context = create_offscreen_context();
+using RegressionImages = test::GlTest;
+
+TEST_F(RegressionImages, SamplesRenderAsStored) {
   SurfaceRenderer renderer;
   const bool update = std::getenv("GPSURF_UPDATE_REGRESSION") != nullptr;
   for (const char* name : {"cube", "cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder", "wirecube", "valence5", "valence8", "cylinder"}) {

@@ -1,5 +1,7 @@
-// core/patch_basis.h and core/plan_descent.h are one source for C++ and GLSL: compiled both ways,
-// they must give the same results on the same inputs (compute shaders against the C++ functions).
+// core/patch_basis.h, core/plan_descent.h and render/gpu_layout.h are one source for C++ and GLSL:
+// compiled both ways, they must give the same results and constants (compute shaders against the
+// C++ functions and values), and the pipeline's shaders must take their bindings and work-group
+// size from them.
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
@@ -10,8 +12,10 @@
 #include "core/plan_descent.h"
 #include "core/planned_surface.h"
 #include "render/gl_context.h"
+#include "render/gpu_layout.h"
 #include "render/shader_program.h"
 #include "shaders/embedded_shaders.h"
+#include "tests/support/gl_fixture.h"
 #include "tests/support/test_meshes.h"
 
 namespace gps {
@@ -73,8 +77,9 @@ std::vector<double> cpu_probe(double u, double v) {
   return out;
 }
 
-TEST(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
-  const auto context = create_offscreen_context();
+using SharedPatchBasis = test::GlTest;
+
+TEST_F(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
   const ShaderProgram probe("basis_probe", {{GL_COMPUTE_SHADER, {shaders::patch_basis, kProbe}}});
   std::vector<float> inputs;
   for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.5, 0.5}, {0.25, 0.125}, {0.6, 0.1},
@@ -195,8 +200,70 @@ void expect_same_descent(const char* name, const CovarianceMesh& mesh, const Pla
   }
 }
 
-TEST(SharedPlanDescent, GlslAndCppAgreeOnTheSameInputs) {
-  const auto context = create_offscreen_context();
+// Every constant of gpu_layout.h and the node kinds of patch_basis.h, read back from GLSL.
+constexpr const char* kConstantsProbe = R"glsl(
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) writeonly buffer Out { int outputs[]; };
+void main() {
+  int values[21] = int[21](kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
+                           kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingEvTables,
+                           kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCount,
+                           kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary);
+  for (int k = 0; k < 21; ++k) outputs[k] = values[k];
+}
+)glsl";
+
+using SharedLayout = test::GlTest;
+
+TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
+  using namespace gpu;
+  const std::vector<int> cpu = {kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
+                                kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingEvTables,
+                                kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCount,
+                                kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary};
+  const ShaderProgram probe("constants_probe", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::patch_basis, kConstantsProbe}}});
+  unsigned buffer = 0;
+  glCreateBuffers(1, &buffer);
+  glNamedBufferData(buffer, GLsizeiptr(cpu.size() * sizeof(int)), nullptr, GL_STREAM_READ);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
+  probe.use();
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<int> gpu(cpu.size());
+  glGetNamedBufferSubData(buffer, 0, GLsizeiptr(gpu.size() * sizeof(int)), gpu.data());
+  glDeleteBuffers(1, &buffer);
+  check_gl_errors("the constants probe");
+  EXPECT_EQ(gpu, cpu);
+}
+
+// The compute passes as the renderer builds them (render/dual_stencil_pass.cpp): their work-group
+// size and each storage block's binding, as the driver reports them, are gpu_layout.h's.
+TEST_F(SharedLayout, ComputePassesUseTheSharedBindingsAndWorkGroupSize) {
+  const auto expect_layout = [](const char* name, const char* source, const std::vector<std::pair<const char*, int>>& blocks) {
+    const ShaderProgram program(name, {{GL_COMPUTE_SHADER, {shaders::gpu_layout, source}}});
+    GLint size[3] = {};
+    glGetProgramiv(program.id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
+    EXPECT_EQ(size[0], gpu::kWorkGroupSize) << name;
+    for (const auto& [block, binding] : blocks) {
+      const GLuint index = glGetProgramResourceIndex(program.id(), GL_SHADER_STORAGE_BLOCK, block);
+      ASSERT_NE(index, GL_INVALID_INDEX) << name << ": no block " << block;
+      const GLenum property = GL_BUFFER_BINDING;
+      GLint value = -1;
+      glGetProgramResourceiv(program.id(), GL_SHADER_STORAGE_BLOCK, index, 1, &property, 1, nullptr, &value);
+      EXPECT_EQ(value, binding) << name << ": block " << block;
+    }
+    check_gl_errors(name);
+  };
+  expect_layout("dual_map", shaders::dual_map_comp,
+                {{"Gaussians", gpu::kBindingGaussians}, {"Points", gpu::kBindingPoints}, {"Changed", gpu::kBindingChanged}});
+  expect_layout("stencil", shaders::stencil_comp,
+                {{"Points", gpu::kBindingPoints}, {"Offsets", gpu::kBindingOffsets}, {"Indices", gpu::kBindingIndices},
+                 {"Weights", gpu::kBindingWeights}, {"Rows", gpu::kBindingRows}});
+}
+
+using SharedPlanDescent = test::GlTest;
+
+TEST_F(SharedPlanDescent, GlslAndCppAgreeOnTheSameInputs) {
   expect_same_descent("cube", test::cube_mesh(), PlanOptions{Scheme::catmull_clark, 3});
   expect_same_descent("prism", test::prism_mesh(), PlanOptions{Scheme::catmull_clark, 2});
   expect_same_descent("icosahedron", test::icosahedron_mesh(), PlanOptions{Scheme::loop});

@@ -13,23 +13,14 @@
 
 #include "core/patch_adjacency.h"
 #include "core/samples.h"
-#include "render/gl_context.h"
 #include "render/surface_renderer.h"
+#include "tests/support/gl_fixture.h"
 #include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
 
-class SharedEdges : public ::testing::Test {
-protected:
-  static void SetUpTestSuite() { context_ = create_offscreen_context().release(); }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  static GlContext* context_;
-};
-GlContext* SharedEdges::context_ = nullptr;
+using SharedEdges = test::GlTest;
 
 // A vertex on a patch's boundary, once per (patch, position).
 struct EdgeVertex {

@@ -8,23 +8,14 @@
 #include <string>
 
 #include "core/samples.h"
-#include "render/gl_context.h"
 #include "render/render_target.h"
 #include "render/surface_renderer.h"
+#include "tests/support/gl_fixture.h"
 
 namespace gps {
 namespace {
 
-class SurfaceCacheTest : public ::testing::Test {
-protected:
-  static void SetUpTestSuite() { context_ = create_offscreen_context().release(); }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  static GlContext* context_;
-};
-GlContext* SurfaceCacheTest::context_ = nullptr;
+using SurfaceCacheTest = test::GlTest;
 
 constexpr int kSize = 160;
 

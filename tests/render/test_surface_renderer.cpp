@@ -16,27 +16,18 @@
 #include "core/samples.h"
 #include "core/stencil_table.h"
 #include "core/tessellator.h"
-#include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/picking.h"
-#include "view/picking.h"
 #include "render/reference_triangles.h"
+#include "tests/support/gl_fixture.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
+#include "view/picking.h"
 
 namespace gps {
 namespace {
 
-class GpuTest : public ::testing::Test {
-protected:
-  static void SetUpTestSuite() { context_ = create_offscreen_context().release(); }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  static GlContext* context_;
-};
-GlContext* GpuTest::context_ = nullptr;
+using GpuTest = test::GlTest;
 
 struct VertexErrors {
   double position = 0, normal_degrees = 0;

@@ -8,6 +8,8 @@
 
 #include "run_command.h"
 #include "temp_dir.h"
+#include "ui/selection.h"
+#include "view/camera.h"
 #include "view/projection.h"
 
 namespace gps::test {
@@ -26,6 +28,26 @@ inline std::string editor_command(const std::string& args) { return std::string(
 inline glm::vec2 pixel_of(const Viewport& v, const Vec3& p) {
   const auto q = project_to_pixel(v.camera, v.width, v.height, to_glm(p));
   return q ? glm::vec2(*q) - glm::vec2(0.5f) : glm::vec2(-1.0f);
+}
+
+/// The window the editor tests open (--size 1024x700).
+constexpr int kWindowWidth = 1024, kWindowHeight = 700;
+
+/// What the editor shows on opening: its default camera framing `mesh`, in a width × height window.
+inline Viewport editor_view(const CovarianceMesh& mesh, int width = kWindowWidth, int height = kWindowHeight) {
+  Viewport v;
+  v.camera = frame_mesh(mesh);
+  v.width = width;
+  v.height = height;
+  return v;
+}
+
+/// The side of the square box from window pixel `corner`, grown a pixel at a time from 4 (up to
+/// 400), at which it first holds `count` of the mesh's vertices (a box selection of that many).
+inline float box_side_holding(const Viewport& view, glm::vec2 corner, const CovarianceMesh& mesh, size_t count) {
+  float side = 4.0f;
+  while (side < 400.0f && vertices_in_box(view.camera, view.width, view.height, corner, corner + side, mesh).size() < count) side += 1.0f;
+  return side;
 }
 
 inline std::string point(glm::vec2 p) { return "[" + std::to_string(p.x) + ", " + std::to_string(p.y) + "]"; }

@@ -1,0 +1,36 @@
+// What the quad and triangle evaluation stages share (patch_tese.glsl, triangle_tese.glsl; put in
+// place of their #include by cmake/embed_shaders.cmake): the outputs and main(). A vertex on the
+// patch's boundary is evaluated from the canonical patch of that point (canonical_edge.glsl), so
+// that every patch beside an edge or around a corner generates it bit for bit alike; then the GPS
+// limit point, its analytic normal (thesis Eq. 3.12) and the clip position. The including stage
+// defines kCorners, boundary_point(), edge_point_uv(), tess_uv() (the tessellation coordinate as
+// patch parameters), evaluate_limit() and grid_coordinates().
+uniform mat4 u_view_projection;
+
+out vec3 v_position;
+out vec3 v_normal;
+out vec3 v_patch_uv;  // patch id and (u, v), for transform feedback checks
+out vec3 v_evaluated; // the patch id and (u, v) evaluated: the canonical patch on patch edges (canonical_edge.glsl)
+out vec3 v_grid;      // tessellation grid coordinates, for the wireframe (grid_coordinates())
+flat out int v_kind;  // plan node kind (gpu_layout.h)
+
+void main() {
+  vec3 mu, mu_u, mu_v;
+  vec2 uv = tess_uv();
+  int patch_id = tc_patch;
+  vec2 eval_uv = uv;
+  EdgePoint e;
+  if (boundary_point(e)) {
+    uv = edge_point_uv(e);
+    EdgePoint c = canonical_boundary_point(e, kCorners);
+    patch_id = c.patch_id;
+    eval_uv = edge_point_uv(c);
+  }
+  evaluate_limit(patch_id, eval_uv, mu, mu_u, mu_v, v_kind);
+  v_position = mu;
+  v_normal = normalize(cross(mu_u, mu_v));
+  v_patch_uv = vec3(float(tc_patch), uv);
+  v_evaluated = vec3(float(patch_id), eval_uv);
+  v_grid = grid_coordinates();
+  gl_Position = u_view_projection * vec4(mu, 1.0);
+}
