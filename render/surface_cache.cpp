@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/stencil_table.h"
 #include "render/gl_context.h"
 
 namespace gps {
@@ -54,14 +53,15 @@ void SurfaceCache::update_cage(const CovarianceMesh& mesh, const std::vector<int
 }
 
 void SurfaceCache::points_changed(long long points, const std::vector<int>* patches) {
-  // Tracked from the capture on, one compute pass after the other, while the share stays small.
+  // Tracked from the capture on, one compute pass after the other, while at most half the patches
+  // are stale (a refresh costs its stale patches and copies; past half, little less than a capture).
   const bool follows = stored_ && !refused_ && tracked_points_ >= 0 && points == tracked_points_ + 1;
   if (!patches || !follows) {
     tracked_points_ = -1;
     return;
   }
   blocks_.mark_stale(*patches);
-  tracked_points_ = update_everything(size_t(blocks_.stale_patches()), size_t(blocks_.n_patches())) ? -1 : points;
+  tracked_points_ = 2 * blocks_.stale_patches() > blocks_.n_patches() ? -1 : points;
 }
 
 bool SurfaceCache::current(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {

@@ -15,8 +15,8 @@
 // counted by its own query. An edit reports the patches it changed (points_changed); the next frame
 // captures only their blocks again (refresh), under the camera of the capture, into a scratch
 // buffer, and copies them into place (or, where adaptive levels changed a block's count, assembles
-// a new buffer from the clean and the new blocks). Past update_everything's share of the patches
-// (core/stencil_table.h) the whole surface is captured again.
+// a new buffer from the clean and the new blocks). Past half of the patches, or after a compute pass
+// over everything (core's update_everything), the whole surface is captured again.
 #include <glm/glm.hpp>
 #include <functional>
 #include <vector>
