@@ -65,6 +65,9 @@ public:
   /// (drawn live). False when refused.
   bool capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches, long long estimate,
                const DrawPatches& draw_patches);
+  /// Whether edits are followed (points_changed's patches kept for a refresh): a capture stands
+  /// and every compute pass since reported its patches.
+  bool follows_edits() const { return tracked_points_ >= 0; }
   /// Whether refresh() brings the stored triangles to `key`: only the points differ, and every
   /// compute pass since the capture reported its patches; the camera is close (adaptive levels).
   bool refreshable(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;

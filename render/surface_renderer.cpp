@@ -70,7 +70,7 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
     buffers_.upload_edit(*changed, rows);
     buffers_.bind();
     compute_.run_listed(n_base_, int(changed->size()), int(rows.size()), group_limit_);
-    if (cache_.holds_triangles()) {
+    if (cache_.follows_edits()) {
       const std::vector<int> patches = changed_patches(*changed, rows);
       cache_.points_changed(points_generation_, &patches);
       return;
