@@ -11,8 +11,8 @@ namespace gps {
 
 SurfaceCache::SurfaceCache() {
   glCreateBuffers(1, &buffer_);
+  glCreateBuffers(1, &scratch_);
   glCreateVertexArrays(1, &vao_);
-  glCreateQueries(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 1, &written_query_);
   glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kVertexBytes);
   for (GLuint a = 0; a < 3; ++a) {
     glEnableVertexArrayAttrib(vao_, a);
@@ -27,8 +27,9 @@ SurfaceCache::SurfaceCache() {
 
 SurfaceCache::~SurfaceCache() {
   glDeleteBuffers(1, &buffer_);
+  glDeleteBuffers(1, &scratch_);
   glDeleteVertexArrays(1, &vao_);
-  glDeleteQueries(1, &written_query_);
+  if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
 }
 
 void SurfaceCache::set_cage(const CovarianceMesh& mesh) {
@@ -41,6 +42,7 @@ void SurfaceCache::set_cage(const CovarianceMesh& mesh) {
   cage_edges_.reserve(2 * mesh.mesh.n_edges());
   for (const auto e : mesh.mesh.edges()) cage_edges_.insert(cage_edges_.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
   stored_ = false;
+  tracked_points_ = -1;
 }
 
 void SurfaceCache::update_cage(const CovarianceMesh& mesh, const std::vector<int>& changed) {
@@ -48,12 +50,30 @@ void SurfaceCache::update_cage(const CovarianceMesh& mesh, const std::vector<int
     const Vec3 m = mesh.mean(size_t(v));
     cage_positions_[size_t(v)] = glm::vec3(float(m.x()), float(m.y()), float(m.z()));
   }
-  stored_ = false;
+}
+
+void SurfaceCache::points_changed(long long points, const std::vector<int>* patches) {
+  // Tracked from the capture on, one compute pass after the other, while at most half the patches
+  // are stale (a refresh costs its stale patches and copies; past half, little less than a capture).
+  const bool follows = stored_ && !refused_ && tracked_points_ >= 0 && points == tracked_points_ + 1;
+  if (!patches || !follows) {
+    tracked_points_ = -1;
+    return;
+  }
+  blocks_.mark_stale(*patches);
+  tracked_points_ = 2 * blocks_.stale_patches() > blocks_.n_patches() ? -1 : points;
 }
 
 bool SurfaceCache::current(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
   if (!stored_ || !(key == key_)) return false;
   return key.pixels <= 0.0f || camera_close(view_projection, viewport, key.pixels);
+}
+
+bool SurfaceCache::refreshable(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
+  if (!stored_ || refused_ || tracked_points_ < 0 || key.points != tracked_points_) return false;
+  Key same = key;
+  same.points = key_.points;
+  return same == key_ && (key.pixels <= 0.0f || camera_close(view_projection, viewport, key.pixels));
 }
 
 // The adaptive rule (see the header): every base edge's projected length, floored at `pixels`,
@@ -85,52 +105,149 @@ bool SurfaceCache::camera_close(const glm::mat4& view_projection, glm::vec2 view
   return true;
 }
 
-void SurfaceCache::reserve(long long triangles) {
-  const long long most = std::max(1ll, limit_bytes_ / (3 * kVertexBytes));
-  triangles = std::clamp(triangles, 1ll, most);
+long long SurfaceCache::most_triangles() const { return std::max(1ll, limit_bytes_ / (3 * kVertexBytes)); }
+
+void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long triangles) const {
+  triangles = std::clamp(triangles, 1ll, most_triangles());
   // Grow to fit; shrink where the buffer is four times what is needed.
-  if (triangles <= capacity_ && 4 * triangles >= capacity_) return;
-  capacity_ = triangles;
-  glNamedBufferData(buffer_, GLsizeiptr(capacity_ * 3 * kVertexBytes), nullptr, GL_DYNAMIC_COPY);
+  if (triangles <= capacity && 4 * triangles >= capacity) return;
+  capacity = triangles;
+  glNamedBufferData(buffer, GLsizeiptr(capacity * 3 * kVertexBytes), nullptr, GL_DYNAMIC_COPY);
 }
 
-bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, long long estimate,
-                           const std::function<void()>& draw_patches) {
+// One feedback session; each block's triangles are counted by its own query (queries of primitives
+// written may begin and end while feedback is active), so the blocks lie one after the other.
+bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
+                                  const DrawPatches& draw_patches, std::vector<long long>& counts) {
+  if (queries_.size() < blocks.size()) {
+    const size_t had = queries_.size();
+    queries_.resize(blocks.size());
+    glCreateQueries(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, GLsizei(blocks.size() - had), queries_.data() + had);
+  }
+  glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer, 0, GLsizeiptr(capacity * 3 * kVertexBytes));
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBeginTransformFeedback(GL_TRIANGLES);
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queries_[i]);
+    draw_patches(blocks_.first_patch(blocks[i]), blocks_.patches_in(blocks[i]));
+    glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+  }
+  glEndTransformFeedback();
+  glDisable(GL_RASTERIZER_DISCARD);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+  counts.resize(blocks.size());
+  long long total = 0;
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    GLuint64 written = 0;
+    glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &written);
+    counts[i] = (long long)written;
+    total += counts[i];
+  }
+  check_gl_errors("capturing the surface");
+  return total < capacity;  // a full buffer may have dropped triangles
+}
+
+void SurfaceCache::set_buffer(unsigned buffer, long long capacity) {
+  buffer_ = buffer;
+  capacity_ = capacity;
+  glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kVertexBytes);
+}
+
+bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches,
+                           long long estimate, const DrawPatches& draw_patches) {
   ++captures_;
   key_ = key;
   view_projection_ = view_projection;
   viewport_ = viewport;
   stored_ = true;
   refused_ = false;
-  reserve(estimate);
-  const long long most = limit_bytes_ / (3 * kVertexBytes);
-  for (;;) {
-    glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer_, 0, GLsizeiptr(capacity_ * 3 * kVertexBytes));
-    glEnable(GL_RASTERIZER_DISCARD);
-    glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, written_query_);
-    glBeginTransformFeedback(GL_TRIANGLES);
-    draw_patches();
-    glEndTransformFeedback();
-    glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
-    glDisable(GL_RASTERIZER_DISCARD);
-    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-    GLuint64 written = 0;
-    glGetQueryObjectui64v(written_query_, GL_QUERY_RESULT, &written);
-    check_gl_errors("capturing the surface");
-    triangles_ = (long long)written;
-    if (triangles_ < capacity_) return true;  // a full buffer may have dropped triangles
-    if (capacity_ >= most) {
+  tracked_points_ = key.points;
+  blocks_.reset(n_patches, patches_per_block(n_patches));
+  std::vector<int> all(size_t(blocks_.size()));
+  for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);
+  reserve(buffer_, capacity_, estimate);
+  std::vector<long long> counts;
+  while (!capture_blocks(buffer_, capacity_, all, draw_patches, counts)) {
+    if (capacity_ >= most_triangles()) {
       refused_ = true;
-      triangles_ = 0;
+      tracked_points_ = -1;
+      blocks_.reset(0, 1);
       return false;
     }
-    reserve(std::min(2 * capacity_, most));
+    reserve(buffer_, capacity_, std::min(2 * capacity_, most_triangles()));
   }
+  blocks_.set_counts(counts);
+  return true;
+}
+
+bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches) {
+  const std::vector<int> stale = blocks_.stale();
+  long long stale_triangles = 0;
+  for (const int b : stale) stale_triangles += blocks_.triangles(b);
+  // Uniform levels keep the counts; adaptive ones may change them, so room for more.
+  reserve(scratch_, scratch_capacity_, std::max(2 * stale_triangles, 1024ll));
+  std::vector<long long> counts;
+  while (!capture_blocks(scratch_, scratch_capacity_, stale, draw_patches, counts)) {
+    if (scratch_capacity_ >= most_triangles()) return false;
+    reserve(scratch_, scratch_capacity_, std::min(2 * scratch_capacity_, most_triangles()));
+  }
+  bool same_counts = true;
+  for (size_t i = 0; i < stale.size(); ++i) same_counts = same_counts && counts[i] == blocks_.triangles(stale[i]);
+  if (same_counts) {
+    long long from = 0;
+    for (size_t i = 0; i < stale.size(); ++i) {
+      if (counts[i] > 0)
+        glCopyNamedBufferSubData(scratch_, buffer_, GLintptr(from * 3 * kVertexBytes),
+                                 GLintptr(blocks_.first_triangle(stale[i]) * 3 * kVertexBytes), GLsizeiptr(counts[i] * 3 * kVertexBytes));
+      from += counts[i];
+    }
+  } else if (!assemble(stale, counts)) {
+    return false;
+  }
+  check_gl_errors("refreshing the surface cache");
+  ++refreshes_;
+  refreshed_patches_ = blocks_.stale_patches();
+  blocks_.clear_stale();
+  key_ = key;
+  return true;
+}
+
+// A new buffer: the runs of clean blocks from the stored buffer, the new blocks from the scratch
+// buffer, in patch order.
+bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<long long>& counts) {
+  long long total = blocks_.total();
+  for (size_t i = 0; i < blocks.size(); ++i) total += counts[i] - blocks_.triangles(blocks[i]);
+  if (total >= most_triangles()) return false;
+  unsigned assembled = 0;
+  glCreateBuffers(1, &assembled);
+  long long capacity = 0;
+  reserve(assembled, capacity, total + total / 8 + 64);
+  const auto copy = [&](unsigned source, long long from, long long to, long long n) {
+    if (n > 0)
+      glCopyNamedBufferSubData(source, assembled, GLintptr(from * 3 * kVertexBytes), GLintptr(to * 3 * kVertexBytes),
+                               GLsizeiptr(n * 3 * kVertexBytes));
+  };
+  long long to = 0, scratch_from = 0;
+  int clean = 0;  // the first block not yet copied
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    const long long run = blocks_.first_triangle(blocks[i]) - blocks_.first_triangle(clean);
+    copy(buffer_, blocks_.first_triangle(clean), to, run);
+    to += run;
+    copy(scratch_, scratch_from, to, counts[i]);
+    to += counts[i];
+    scratch_from += counts[i];
+    clean = blocks[i] + 1;
+  }
+  copy(buffer_, blocks_.first_triangle(clean), to, blocks_.total() - blocks_.first_triangle(clean));
+  glDeleteBuffers(1, &buffer_);
+  set_buffer(assembled, capacity);
+  blocks_.replace_counts(blocks, counts);
+  return true;
 }
 
 void SurfaceCache::draw() const {
   glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * triangles_));
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * blocks_.total()));
 }
 
 }  // namespace gps

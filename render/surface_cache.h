@@ -10,11 +10,19 @@
 // level 1 either way), changed by more than the hysteresis factor (default 1.25) since then, or
 // crossed the eye plane. Within that, the stored levels stay within the factor of what the live
 // pipeline would choose.
+//
+// Edits: triangles are captured in blocks of consecutive patches (render/surface_blocks.h), each
+// counted by its own query. An edit reports the patches it changed (points_changed); the next frame
+// captures only their blocks again (refresh), under the camera of the capture, into a scratch
+// buffer, and copies them into place (or, where adaptive levels changed a block's count, assembles
+// a new buffer from the clean and the new blocks). Past half of the patches, or after a compute pass
+// over everything (core's update_everything), the whole surface is captured again.
 #include <glm/glm.hpp>
 #include <functional>
 #include <vector>
 
 #include "core/covariance_mesh.h"
+#include "render/surface_blocks.h"
 
 namespace gps {
 
@@ -40,17 +48,35 @@ public:
 
   /// The base mesh (vertex positions and edges) the adaptive hysteresis measures; drops the capture.
   void set_cage(const CovarianceMesh& mesh);
-  /// Moved base vertices (the points changed, so the capture is stale anyway).
+  /// Moved base vertices (for the hysteresis; points_changed says what the edit changed).
   void update_cage(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  /// A compute pass made plan points of generation `points`, changing the triangles of `patches`
+  /// (nullptr: of all patches).
+  void points_changed(long long points, const std::vector<int>* patches);
 
   /// Whether the last capture (or its refusal, past the memory limit) stands for these inputs.
   bool current(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
-  /// Captures the triangles that `draw_patches` generates (it issues the patch draws; the caller
-  /// has bound a program with the feedback varyings), under transform feedback with the rasteriser
-  /// off. `estimate` triangles size the buffer; a full buffer grows and captures again, up to the
-  /// memory limit, past which the inputs are refused (drawn live). False when refused.
-  bool capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, long long estimate,
-               const std::function<void()>& draw_patches);
+  /// Issues the patch draws of patches [first, first + count) (the caller has bound a program with
+  /// the feedback varyings).
+  using DrawPatches = std::function<void(int first, int count)>;
+  /// Captures the triangles of all `n_patches` that `draw_patches` generates, block by block,
+  /// under transform feedback with the rasteriser off. `estimate` triangles size the buffer; a full
+  /// buffer grows and captures again, up to the memory limit, past which the inputs are refused
+  /// (drawn live). False when refused.
+  bool capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches, long long estimate,
+               const DrawPatches& draw_patches);
+  /// Whether edits are followed (points_changed's patches kept for a refresh): a capture stands
+  /// and every compute pass since reported its patches.
+  bool follows_edits() const { return tracked_points_ >= 0; }
+  /// Whether refresh() brings the stored triangles to `key`: only the points differ, and every
+  /// compute pass since the capture reported its patches; the camera is close (adaptive levels).
+  bool refreshable(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
+  /// Captures the stale blocks again; the caller has set the capture camera below in the program's
+  /// uniforms. False where that did not fit the memory limit (capture everything then).
+  bool refresh(const Key& key, const DrawPatches& draw_patches);
+  /// The camera of the capture: a refresh evaluates adaptive levels as the capture did.
+  const glm::mat4& captured_view_projection() const { return view_projection_; }
+  glm::vec2 captured_viewport() const { return viewport_; }
   /// Whether stored triangles are there to draw (a capture that was not refused).
   bool holds_triangles() const { return stored_ && !refused_; }
   /// Binds the vertex array of the stored triangles and draws them with the bound program.
@@ -58,18 +84,31 @@ public:
 
   void set_hysteresis(float factor) { hysteresis_ = factor; }
   void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
-  /// Captures so far (tests: a frame that should draw stored triangles must not add one).
+  /// Full captures so far (tests: a frame that should draw stored triangles must not add one).
   int captures() const { return captures_; }
-  long long triangles() const { return triangles_; }
-  size_t buffer_bytes() const { return size_t(capacity_) * 3 * kVertexBytes; }
+  /// Refreshes so far, and the patches the last one evaluated (those of its stale blocks).
+  int refreshes() const { return refreshes_; }
+  int refreshed_patches() const { return refreshed_patches_; }
+  long long triangles() const { return blocks_.total(); }
+  size_t buffer_bytes() const { return size_t(capacity_ + scratch_capacity_) * 3 * kVertexBytes; }
 
 private:
   bool camera_close(const glm::mat4& view_projection, glm::vec2 viewport, float pixels) const;
-  void reserve(long long triangles);
+  long long most_triangles() const;
+  void reserve(unsigned buffer, long long& capacity, long long triangles) const;
+  /// Captures `blocks` one after the other into `buffer` from its start; their counts; false
+  /// where the buffer was full (and some triangles may be missing).
+  bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks, const DrawPatches& draw_patches,
+                      std::vector<long long>& counts);
+  /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
+  bool assemble(const std::vector<int>& blocks, const std::vector<long long>& counts);
+  void set_buffer(unsigned buffer, long long capacity);
 
-  unsigned buffer_ = 0, vao_ = 0, written_query_ = 0;
-  long long capacity_ = 0;   // triangles the buffer holds
-  long long triangles_ = 0;  // triangles stored
+  unsigned buffer_ = 0, scratch_ = 0, vao_ = 0;
+  std::vector<unsigned> queries_;  // one per block of a capture
+  long long capacity_ = 0, scratch_capacity_ = 0;  // triangles the buffers hold
+  SurfaceBlocks blocks_;
+  long long tracked_points_ = -1;  // the points the stale blocks lead to (−1: untracked)
   bool stored_ = false, refused_ = false;
   Key key_;
   glm::mat4 view_projection_{1.0f};
@@ -78,7 +117,7 @@ private:
   std::vector<unsigned> cage_edges_;  // index pairs
   float hysteresis_ = 1.25f;
   long long limit_bytes_ = kDefaultLimitBytes;
-  int captures_ = 0;
+  int captures_ = 0, refreshes_ = 0, refreshed_patches_ = 0;
 };
 
 }  // namespace gps

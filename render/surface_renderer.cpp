@@ -36,6 +36,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surfac
   // Refused before anything changes: the renderer keeps drawing the previous mesh.
   PlanBuffers::check_fits(surface.tables(), int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_);
   surface_ = std::make_unique<const PlannedSurface>(std::move(surface));
+  readers_.reset();
   n_base_ = int(mesh.n_vertices());
   buffers_.upload_tables(surface_->tables());
   buffers_.upload_gaussians(mesh);
@@ -69,10 +70,24 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
     buffers_.upload_edit(*changed, rows);
     buffers_.bind();
     compute_.run_listed(n_base_, int(changed->size()), int(rows.size()), group_limit_);
+    if (cache_.follows_edits()) {
+      const std::vector<int> patches = changed_patches(*changed, rows);
+      cache_.points_changed(points_generation_, &patches);
+      return;
+    }
   } else {
     buffers_.bind();
     compute_.run_all(n_base_, n_rows, group_limit_);
   }
+  cache_.points_changed(points_generation_, nullptr);
+}
+
+std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {
+  const StencilTable& stencils = tables().stencils;
+  if (!readers_) readers_ = std::make_unique<const PatchReaders>(tables().plans, stencils.n_points());
+  std::vector<int> points = changed;
+  for (const int r : rows) points.push_back(stencils.n_base + r);
+  return readers_->patches_changed_by(points);
 }
 
 void SurfaceRenderer::set_matcap(const Image& m) {
@@ -168,9 +183,19 @@ bool SurfaceRenderer::draw_from_cache(const Camera& camera, const DrawOptions& o
     const long long estimate = key.pixels > 0.0f ? (cache_.triangles() > 0 ? cache_.triangles() * 5 / 4 : patches * 128)
                                                  : patches * (quads ? 2 : 1) * level * level * 5 / 4 + 64;
     const ShaderProgram& capture = patches_.program(shape(), PatchOutput::capture);
-    set_frame_uniforms(capture, camera, o, aspect, width, height);
     capture.use();
-    cache_.capture(key, view_projection, viewport, estimate, [&] { patches_.draw(capture, o, n_patches()); });
+    const auto draw_patches = [&](int first, int count) { patches_.draw(capture, o, n_patches(), first, count); };
+    bool refreshed = false;
+    if (cache_.refreshable(key, view_projection, viewport)) {  // an edit: its patches, under the capture's camera
+      set_frame_uniforms(capture, camera, o, aspect, width, height);
+      capture.set("u_view_projection", cache_.captured_view_projection());
+      capture.set("u_viewport", cache_.captured_viewport());
+      refreshed = cache_.refresh(key, draw_patches);
+    }
+    if (!refreshed) {
+      set_frame_uniforms(capture, camera, o, aspect, width, height);
+      cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw_patches);
+    }
   }
   return cache_.holds_triangles();
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/covariance_mesh.h"
+#include "core/patch_readers.h"
 #include "core/planned_surface.h"
 #include "core/triangle_mesh.h"
 #include "view/camera.h"
@@ -45,7 +46,8 @@ public:
   /// The same with the default options: the scheme that fits the mesh, exact plans.
   void set_mesh(const CovarianceMesh& mesh) { set_mesh(mesh, PlanOptions{}); }
   /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them
-  /// (past core's update_everything share of the vertices: whole buffers and the full passes).
+  /// (past core's update_everything share of the vertices: whole buffers and the full passes); the
+  /// surface cache learns which patches changed (core/patch_readers.h) and re-captures only those.
   void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);
   /// The compute passes over every vertex and stencil row (as after set_mesh), for benchmarks.
   void recompute_all() { run_compute(nullptr); }
@@ -87,11 +89,14 @@ public:
 
 private:
   void run_compute(const std::vector<int>* changed);
+  /// The patches whose triangles an edit of `changed` vertices and the stencil `rows` reading them changes.
+  std::vector<int> changed_patches(const std::vector<int>& changed, const std::vector<int>& rows);
   bool draw_from_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
   PatchShape shape() const { return tables().plans.shape; }
   int n_patches() const { return tables().plans.n_patches(); }
 
   std::unique_ptr<const PlannedSurface> surface_;
+  std::unique_ptr<const PatchReaders> readers_;  // built at the first edit the cache can follow
   PlanBuffers buffers_;
   DualStencilPass compute_;
   PatchDraw patches_;

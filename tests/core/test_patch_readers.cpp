@@ -1,0 +1,75 @@
+// The patches an edit changes (core/patch_readers.h): every patch whose evaluation or whose
+// canonical boundary patch reads a changed point is listed; the others evaluate bit for bit alike.
+#include "core/patch_readers.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "core/patch_eval.h"
+#include "core/planned_surface.h"
+#include "core/samples.h"
+
+namespace gps {
+namespace {
+
+// The changed points of an edit of base vertices: the vertices, then n_base + the rows reading them.
+std::vector<int> changed_points(const PlannedSurface& surface, const std::vector<int>& vertices) {
+  std::vector<int> points = vertices;
+  for (const int r : surface.rows_reading(vertices)) points.push_back(surface.tables().stencils.n_base + r);
+  return points;
+}
+
+// Whether patch p evaluates alike (q and its derivatives, bit for bit) from both point sets, at a
+// grid of parameters that includes its boundary.
+bool evaluates_alike(const PlanTable& plans, const std::vector<Dual>& a, const std::vector<Dual>& b, int p) {
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) {
+      const double u = i / 4.0, v = j / 4.0;
+      if (plans.shape == PatchShape::triangle && u + v > 1.0) continue;
+      Dual qa, qa_u, qa_v, qb, qb_u, qb_v;
+      evaluate_dual(plans, a, p, u, v, qa, qa_u, qa_v);
+      evaluate_dual(plans, b, p, u, v, qb, qb_u, qb_v);
+      if (qa != qb || qa_u != qb_u || qa_v != qb_v) return false;
+    }
+  return true;
+}
+
+TEST(PatchReaders, UnlistedPatchesEvaluateAlikeAfterAnEdit) {
+  for (const char* name : {"cube", "pawn", "icosphere", "sphere"}) {
+    CovarianceMesh mesh = make_sample(name);
+    const PlannedSurface surface(mesh, PlanOptions{});
+    const PlanTable& plans = surface.tables().plans;
+    const PatchReaders readers(plans, surface.tables().stencils.n_points());
+    const std::vector<Dual> before = apply_stencils(surface.tables().stencils, base_points(mesh));
+    const std::vector<int> edited = {int(mesh.n_vertices() / 2), int(mesh.n_vertices() / 3)};
+    for (const int v : edited) mesh.set_mean(size_t(v), mesh.mean(size_t(v)) + Vec3(0.1, -0.2, 0.05));
+    const std::vector<Dual> after = apply_stencils(surface.tables().stencils, base_points(mesh));
+    const std::vector<int> listed = readers.patches_changed_by(changed_points(surface, edited));
+    ASSERT_TRUE(std::is_sorted(listed.begin(), listed.end())) << name;
+    int changed = 0;
+    for (int p = 0; p < plans.n_patches(); ++p) {
+      const bool alike = evaluates_alike(plans, before, after, p);
+      changed += !alike;
+      if (!std::binary_search(listed.begin(), listed.end(), p)) EXPECT_TRUE(alike) << name << " patch " << p;
+    }
+    EXPECT_GT(changed, 0) << name;
+    if (plans.n_patches() > 500) EXPECT_LT(listed.size() * 4, size_t(plans.n_patches())) << name;
+  }
+}
+
+TEST(PatchReaders, NoPointsChangeNothingAndAllPointsEverything) {
+  for (const char* name : {"pawn", "icosphere"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    const PlannedSurface surface(mesh, PlanOptions{});
+    const PatchReaders readers(surface.tables().plans, surface.tables().stencils.n_points());
+    EXPECT_TRUE(readers.patches_changed_by({}).empty()) << name;
+    std::vector<int> all(size_t(surface.tables().stencils.n_points()));
+    for (size_t i = 0; i < all.size(); ++i) all[i] = int(i);
+    EXPECT_EQ(readers.patches_changed_by(all).size(), size_t(surface.tables().plans.n_patches())) << name;
+  }
+}
+
+}  // namespace
+}  // namespace gps
