@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/sparse_lists.h"
 
 namespace gps {
 
@@ -20,19 +21,6 @@ void collect_node_points(const PlanTable& plans, int node, std::vector<int>& out
     const int net = plans.shape == PatchShape::triangle ? 12 : 16;
     out.insert(out.end(), n + 1, n + 1 + net);
   }
-}
-
-// The transpose of rows `offsets`/`values` (row r holds values[offsets[r] .. offsets[r+1])) over
-// `n_columns` columns: per column the rows holding it, in increasing order (a counting sort).
-void transpose(const std::vector<int>& offsets, const std::vector<int>& values, int n_columns, std::vector<int>& out_offsets,
-               std::vector<int>& out_values) {
-  out_offsets.assign(size_t(n_columns) + 1, 0);
-  for (const int c : values) ++out_offsets[size_t(c) + 1];
-  for (size_t c = 0; c < size_t(n_columns); ++c) out_offsets[c + 1] += out_offsets[c];
-  out_values.resize(values.size());
-  std::vector<int> next(out_offsets.begin(), out_offsets.end() - 1);
-  for (size_t r = 0; r + 1 < offsets.size(); ++r)
-    for (int i = offsets[r]; i < offsets[r + 1]; ++i) out_values[size_t(next[size_t(values[size_t(i)])]++)] = int(r);
 }
 
 }  // namespace
@@ -66,22 +54,15 @@ PatchReaders::PatchReaders(const PlanTable& plans, int n_points) : n_patches_(pl
     sources.erase(std::unique(sources.begin() + source_offsets.back(), sources.end()), sources.end());
     source_offsets.push_back(int(sources.size()));
   }
-  transpose(read_offsets, reads, n_points, point_offsets_, point_patches_);
-  transpose(source_offsets, sources, n_patches_, canonical_offsets_, canonical_users_);
+  transpose_lists(read_offsets, reads, n_points, point_offsets_, point_patches_);
+  transpose_lists(source_offsets, sources, n_patches_, canonical_offsets_, canonical_users_);
 }
 
 std::vector<int> PatchReaders::patches_changed_by(const std::vector<int>& points) const {
-  std::vector<int> read;
-  for (const int point : points)
-    read.insert(read.end(), point_patches_.begin() + point_offsets_[size_t(point)],
-                point_patches_.begin() + point_offsets_[size_t(point) + 1]);
-  std::sort(read.begin(), read.end());
-  read.erase(std::unique(read.begin(), read.end()), read.end());
-  std::vector<int> out = read;
-  for (const int p : read)
-    out.insert(out.end(), canonical_users_.begin() + canonical_offsets_[size_t(p)],
-               canonical_users_.begin() + canonical_offsets_[size_t(p) + 1]);
-  std::sort(out.begin(), out.end());
+  const std::vector<int> read = union_of_lists(point_offsets_, point_patches_, points);
+  std::vector<int> out = union_of_lists(canonical_offsets_, canonical_users_, read);
+  out.insert(out.end(), read.begin(), read.end());  // the readers themselves, then merged in order
+  std::inplace_merge(out.begin(), out.end() - ptrdiff_t(read.size()), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }

@@ -5,6 +5,8 @@
 #include <cassert>
 #include <cmath>
 
+#include "core/sparse_lists.h"
+
 namespace gps {
 
 StencilTableBuilder::StencilTableBuilder(int n_base) {
@@ -90,13 +92,7 @@ std::vector<Dual> apply_stencils(const StencilTable& t, const std::vector<Dual>&
 
 StencilDependents stencil_dependents(const StencilTable& t) {
   StencilDependents d;
-  d.offsets.assign(size_t(t.n_base) + 1, 0);
-  for (const int i : t.indices) ++d.offsets[size_t(i) + 1];
-  for (int v = 0; v < t.n_base; ++v) d.offsets[size_t(v) + 1] += d.offsets[size_t(v)];
-  d.rows.resize(t.indices.size());
-  std::vector<int> next(d.offsets.begin(), d.offsets.end() - 1);
-  for (int r = 0; r < t.n_rows(); ++r)
-    for (int k = t.offsets[size_t(r)]; k < t.offsets[size_t(r) + 1]; ++k) d.rows[size_t(next[size_t(t.indices[size_t(k)])]++)] = r;
+  transpose_lists(t.offsets, t.indices, t.n_base, d.offsets, d.rows);
   return d;
 }
 
@@ -119,22 +115,11 @@ void update_stencils(const StencilTable& t, const StencilDependents& d, const st
     for (int i = d.offsets[size_t(v)]; i < d.offsets[size_t(v) + 1]; ++i) apply_row(d.rows[size_t(i)]);
     return;
   }
-  std::vector<int> rows;
-  rows.reserve(n_dependents);
-  for (const int v : changed) rows.insert(rows.end(), d.rows.begin() + d.offsets[size_t(v)], d.rows.begin() + d.offsets[size_t(v) + 1]);
-  std::sort(rows.begin(), rows.end());
-  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-  for (const int r : rows) apply_row(r);
+  for (const int r : rows_reading(d, changed)) apply_row(r);
 }
 
 std::vector<int> rows_reading(const StencilDependents& dependents, const std::vector<int>& vertices) {
-  std::vector<int> rows;
-  for (const int v : vertices)
-    rows.insert(rows.end(), dependents.rows.begin() + dependents.offsets[size_t(v)],
-                dependents.rows.begin() + dependents.offsets[size_t(v) + 1]);
-  std::sort(rows.begin(), rows.end());
-  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-  return rows;
+  return union_of_lists(dependents.offsets, dependents.rows, vertices);
 }
 
 }  // namespace gps
