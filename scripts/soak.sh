@@ -25,7 +25,7 @@ for ((round = 0; round < rounds; ++round)); do
   seed=$((first_seed + round))
   echo "soak round $((round + 1))/$rounds: seed $seed, $events events per sample"
   (cd "$build/tests" && GPS_SOAK_EVENTS="$events" GPS_SOAK_SEED="$seed" GPS_SOAK_TIMEOUT=$((600 + 2 * events)) \
-    xvfb-run -a -s "-screen 0 1280x1024x24" ./test_editor_soak --gtest_brief=1)
+    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" ./test_editor_soak --gtest_brief=1)
   total=$((total + 5 * events))
 done
 echo "soak: $total random events on 5 samples in $(( $(date +%s) - start )) s, no crash, no hang, every save loads"
