@@ -13,8 +13,7 @@
 namespace gps {
 
 SurfaceRenderer::SurfaceRenderer()
-    : cached_("cached", {{GL_VERTEX_SHADER, {shaders::geometry_next, shaders::cache_vert}},
-                         {GL_GEOMETRY_SHADER, {shaders::cache_geom}},
+    : cached_("cached", {{GL_VERTEX_SHADER, {shaders::cache_vert}},
                          {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
       cached_wire_("cached_wire", {{GL_VERTEX_SHADER, {shaders::geometry_next, shaders::cache_vert}},
                                    {GL_GEOMETRY_SHADER, {shaders::mesh_geom}},

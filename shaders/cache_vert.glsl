@@ -1,5 +1,7 @@
 // Triangles the surface cache stored (render/surface_cache.h): the tessellation evaluation
-// outputs as transform feedback wrote them, projected as patch_tese.glsl projects them.
+// outputs as transform feedback wrote them, projected as patch_tese.glsl projects them. No geometry
+// stage follows (it cost 1.5-2x the frame on llvmpipe), so llvmpipe rounds the viewport transform
+// apart from the live pipeline: the AOVs agree to ~1e-4, not bit for bit (test_surface_cache.cpp).
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_grid;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -45,6 +47,36 @@ size_t differing_pixels(const Frame& a, const Frame& b) {
   return count;
 }
 
+// A cached frame against the live one. The stored triangles are the live pipeline's own vertices,
+// but llvmpipe projects a vertex stage's output in that stage's code and a tessellation stage's
+// output apart from it, and the two round differently: covered pixels and node kinds are the
+// same, colours within 2/255 (the MatCap lookup), and the interpolated position and normal AOVs
+// within 1e-3 of the surface's size and of a unit normal (measured at most 4.9e-4 and 1.6e-4).
+::testing::AssertionResult same_surface(const Frame& cached, const Frame& live) {
+  const Image &normal_a = cached.layers[2], &normal_b = live.layers[2];
+  if (normal_a.pixels.size() != normal_b.pixels.size()) return ::testing::AssertionFailure() << "frames of different sizes";
+  float size = 0.0f;
+  for (size_t i = 0; i < live.layers[1].pixels.size(); i += 4)
+    if (normal_b.pixels[i + 3] != 0.0f)
+      for (size_t k = 0; k < 3; ++k) size = std::max(size, std::abs(live.layers[1].pixels[i + k]));
+  const float tolerance[3] = {2.0f / 255.0f, 1e-3f * size, 1e-3f};
+  const char* layer_name[3] = {"colour", "position", "normal"};
+  for (size_t i = 0; i < normal_a.pixels.size(); i += 4) {
+    const size_t pixel = i / 4;
+    if (normal_a.pixels[i + 3] != normal_b.pixels[i + 3])
+      return ::testing::AssertionFailure() << "pixel " << pixel << ": coverage or node kind " << normal_a.pixels[i + 3] << " against "
+                                           << normal_b.pixels[i + 3];
+    for (int l = 0; l < 3; ++l)
+      for (size_t k = 0; k < 3; ++k) {
+        const float d = std::abs(cached.layers[l].pixels[i + k] - live.layers[l].pixels[i + k]);
+        if (!(d <= tolerance[l]))
+          return ::testing::AssertionFailure() << "pixel " << pixel << ": " << layer_name[l] << " differs by " << d << " (tolerance "
+                                               << tolerance[l] << ")";
+      }
+  }
+  return ::testing::AssertionSuccess();
+}
+
 DrawOptions uniform(float level) {
   DrawOptions o;
   o.level = level;
@@ -57,7 +89,7 @@ DrawOptions adaptive(float pixels) {
   return o;
 }
 
-TEST_F(SurfaceCacheTest, CachedFramesEqualLiveFramesBitForBit) {
+TEST_F(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
   RenderTarget target(kSize, kSize);
   for (const char* name : {"cube", "pawn", "icosphere", "cone-pointy"}) {
     const CovarianceMesh mesh = make_sample(name);
@@ -76,14 +108,14 @@ TEST_F(SurfaceCacheTest, CachedFramesEqualLiveFramesBitForBit) {
         EXPECT_TRUE(renderer.surface_cache().holds_triangles()) << what;
         // A wireframe is shading only: the stored triangles serve it.
         EXPECT_EQ(renderer.surface_cache().captures(), before + (wireframe ? 0 : 1)) << what;
-        EXPECT_EQ(differing_pixels(live, first), 0u) << what;
-        EXPECT_EQ(differing_pixels(live, second), 0u) << what;
+        EXPECT_TRUE(same_surface(first, live)) << what;
+        EXPECT_TRUE(same_surface(second, live)) << what;
         if (o.pixels > 0) continue;
         // Uniform levels do not depend on the camera: the stored triangles seen from elsewhere.
         const Frame live_turned = draw(renderer, target, turned, o, false);
         const Frame cached_turned = draw(renderer, target, turned, o, true);
         EXPECT_EQ(renderer.surface_cache().captures(), before + (wireframe ? 0 : 1)) << what;
-        EXPECT_EQ(differing_pixels(live_turned, cached_turned), 0u) << what << ", turned";
+        EXPECT_TRUE(same_surface(cached_turned, live_turned)) << what << ", turned";
       }
     }
   }
@@ -106,7 +138,7 @@ TEST_F(SurfaceCacheTest, AnEditShowsInTheNextFrame) {
   EXPECT_EQ(renderer.surface_cache().captures(), 1);
   EXPECT_EQ(renderer.surface_cache().refreshes(), 1);
   EXPECT_GT(differing_pixels(before, edited), 20u);
-  EXPECT_EQ(differing_pixels(edited, draw(renderer, target, camera, o, false)), 0u);
+  EXPECT_TRUE(same_surface(edited, draw(renderer, target, camera, o, false)));
   // recompute_all and a level change capture everything; the same inputs again do not.
   renderer.recompute_all();
   draw(renderer, target, camera, o, true);
@@ -141,7 +173,7 @@ TEST_F(SurfaceCacheTest, AdaptiveLevelsRecaptureOnlyBeyondTheHysteresis) {
   camera.distance = distance * 0.6f;  // ~1.7× longer: captured again, and equal to the live frame
   const Frame near = draw(renderer, target, camera, o, true);
   EXPECT_EQ(renderer.surface_cache().captures(), 2);
-  EXPECT_EQ(differing_pixels(near, draw(renderer, target, camera, o, false)), 0u);
+  EXPECT_TRUE(same_surface(near, draw(renderer, target, camera, o, false)));
   // A turn that foreshortens edges beyond the factor captures too.
   Camera turned = frame_mesh(mesh, 80.0f, 60.0f);
   turned.distance = camera.distance;
@@ -167,7 +199,7 @@ TEST_F(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
   const DrawOptions o = uniform(8);
   const Frame cached = draw(renderer, target, camera, o, true);
   EXPECT_FALSE(renderer.surface_cache().holds_triangles());
-  EXPECT_EQ(differing_pixels(cached, draw(renderer, target, camera, o, false)), 0u);
+  EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false)));
   draw(renderer, target, camera, o, true);  // refused inputs are not tried again every frame
   EXPECT_EQ(renderer.surface_cache().captures(), 1);
   // Small enough (level 1: 2 triangles per patch, from an estimate past the limit) it fits.
@@ -182,7 +214,7 @@ void move_vertex(CovarianceMesh& mesh, int v, double fraction) {
   mesh.set_mean(size_t(v), mesh.mean(size_t(v)) + fraction * bounding_box_diagonal(mesh) * direction);
 }
 
-TEST_F(SurfaceCacheTest, EditedFramesEqualLiveFramesBitForBit) {
+TEST_F(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
   RenderTarget target(kSize, kSize);
   for (const char* name : {"cube", "pawn", "icosphere"}) {
     for (const DrawOptions& o : {uniform(4), adaptive(6)}) {
@@ -198,15 +230,18 @@ TEST_F(SurfaceCacheTest, EditedFramesEqualLiveFramesBitForBit) {
         for (const int v : edited) move_vertex(mesh, v, 0.2);
         renderer.update_vertices(mesh, edited);
         const Frame cached = draw(renderer, target, camera, o, true);
-        EXPECT_EQ(differing_pixels(cached, draw(renderer, target, camera, o, false)), 0u) << what << ", " << edited.size() << " vertices";
+        EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false))) << what << ", " << edited.size() << " vertices";
       }
       // The cube's every patch reads every vertex: captured whole. The others: only the edits' blocks.
       const bool partial = std::string(name) != "cube";
       EXPECT_EQ(renderer.surface_cache().captures(), partial ? 1 : 3) << what;
       EXPECT_EQ(renderer.surface_cache().refreshes(), partial ? 2 : 0) << what;
       // Uniform levels keep every block's count; adaptive ones here change some (a new buffer is assembled).
-      if (o.pixels <= 0) EXPECT_EQ(renderer.surface_cache().triangles(), triangles) << what;
-      if (o.pixels > 0 && partial) EXPECT_NE(renderer.surface_cache().triangles(), triangles) << what;
+      if (o.pixels <= 0) {
+        EXPECT_EQ(renderer.surface_cache().triangles(), triangles) << what;
+      } else if (partial) {
+        EXPECT_NE(renderer.surface_cache().triangles(), triangles) << what;
+      }
     }
   }
 }
@@ -228,7 +263,7 @@ TEST_F(SurfaceCacheTest, AOneVertexEditCapturesOnlyTheBlocksOfItsPatches) {
   EXPECT_EQ(cache.refreshes(), 1);
   EXPECT_GT(cache.refreshed_patches(), 0);
   EXPECT_LT(4 * cache.refreshed_patches(), renderer.tables().plans.n_patches());
-  EXPECT_EQ(differing_pixels(cached, draw(renderer, target, camera, o, false)), 0u);
+  EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false)));
 }
 
 TEST_F(SurfaceCacheTest, EditsAndUndoEqualLiveFramesEachTime) {
@@ -251,7 +286,7 @@ TEST_F(SurfaceCacheTest, EditsAndUndoEqualLiveFramesEachTime) {
           move_vertex(mesh, v, 0.1);
       }
       renderer.update_vertices(mesh, edits[e]);
-      EXPECT_EQ(differing_pixels(draw(renderer, target, camera, o, true), draw(renderer, target, camera, o, false)), 0u)
+      EXPECT_TRUE(same_surface(draw(renderer, target, camera, o, true), draw(renderer, target, camera, o, false)))
           << "edit " << e;
     }
     for (size_t e = edits.size(); e-- > 0;) {
@@ -260,10 +295,10 @@ TEST_F(SurfaceCacheTest, EditsAndUndoEqualLiveFramesEachTime) {
         mesh.covariances[size_t(v)] = original.covariances[size_t(v)];
       }
       renderer.update_vertices(mesh, edits[e]);
-      EXPECT_EQ(differing_pixels(draw(renderer, target, camera, o, true), draw(renderer, target, camera, o, false)), 0u)
+      EXPECT_TRUE(same_surface(draw(renderer, target, camera, o, true), draw(renderer, target, camera, o, false)))
           << "undo " << e;
     }
-    EXPECT_EQ(differing_pixels(draw(renderer, target, camera, o, true), first), 0u);
+    EXPECT_EQ(differing_pixels(draw(renderer, target, camera, o, true), first), 0u);  // both from the cache
     EXPECT_EQ(renderer.surface_cache().captures(), 1);
     EXPECT_EQ(renderer.surface_cache().refreshes(), int(2 * edits.size()));
   }
@@ -286,7 +321,7 @@ TEST_F(SurfaceCacheTest, AnEditAfterASmallCameraMoveKeepsTheLevelsOfTheCapture) 
   draw(renderer, target, moved, o, true);  // refreshed with the capture's levels
   EXPECT_EQ(renderer.surface_cache().captures(), 1);
   EXPECT_EQ(renderer.surface_cache().refreshes(), 1);
-  EXPECT_EQ(differing_pixels(draw(renderer, target, camera, o, true), draw(renderer, target, camera, o, false)), 0u);
+  EXPECT_TRUE(same_surface(draw(renderer, target, camera, o, true), draw(renderer, target, camera, o, false)));
 }
 
 }  // namespace
