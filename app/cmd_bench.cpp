@@ -51,6 +51,7 @@ void add_bench_command(CLI::App& app) {
     std::string json, plots, context = "auto", mesh;
     std::vector<std::string> meshes;
     std::vector<int> levels = {1, 4, 16, 64};
+    float adaptive_pixels = 6.0f;
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("bench", "Benchmarks (figures for the closing notes; see also build/bench/)");
@@ -67,6 +68,8 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--levels", args->levels, "--render: the uniform tessellation levels (default 1,4,16,64)")
       ->delimiter(',')
       ->check(CLI::Range(1, 64));
+  cmd->add_option("--adaptive", args->adaptive_pixels, "--render: also a row at adaptive levels of this many pixels per segment (default 6; 0: none)")
+      ->check(CLI::Range(0.0f, 1000.0f));
   cmd->add_option("--json", args->json, "also write the figures as JSON");
   cmd->add_option("--plots", args->plots, "with --render: write PREFIX_frame_time.png and PREFIX_memory.png");
   cmd->callback([args] {
@@ -111,9 +114,11 @@ void add_bench_command(CLI::App& app) {
       const auto meshes = args->meshes.empty() ? sample_list({"cube", "wirecube", "cylinder", "valence5", "cone-pointy", "icosphere", "pawn", "pawn-quads"})
                                                : sample_list(args->meshes);
       for (const auto& [name, faces] : meshes) {
-        for (const auto& r : frame_figures(name, faces, plans, args->size, args->levels)) {
-          std::printf("%-12s %7d %5d %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %7.2f ms %7.2f %7.2f ms %7.2f %6.1f kB%s\n",
-                      r["mesh"].get<std::string>().c_str(), r["patches"].get<int>(), r["level"].get<int>(), r["triangles"].get<double>(),
+        for (const auto& r : frame_figures(name, faces, plans, args->size, args->levels, args->adaptive_pixels)) {
+          const int level = r["level"].get<int>();
+          const std::string level_text = level > 0 ? std::to_string(level) : "a" + std::to_string(int(r["adaptive_pixels"].get<float>()));
+          std::printf("%-12s %7d %5s %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %7.2f ms %7.2f %7.2f ms %7.2f %6.1f kB%s\n",
+                      r["mesh"].get<std::string>().c_str(), r["patches"].get<int>(), level_text.c_str(), r["triangles"].get<double>(),
                       r["compute_gpu_ms"].get<double>(), r["draw_gpu_ms"].get<double>(), r["frame_ms"].get<double>(),
                       r["triangles_per_second"].get<double>(), r["static_buffer_frame_ms"].get<double>(),
                       r["ratio_to_static_buffer"].get<double>(), r["cached_frame_ms"].get<double>(),
@@ -128,6 +133,7 @@ void add_bench_command(CLI::App& app) {
       if (!args->plots.empty()) {
         std::map<std::string, PlotSeries> time_over_level, memory_over_time;
         for (const auto& r : all) {
+          if (r["level"].get<int>() == 0) continue;  // the adaptive row has no level to plot over
           const std::string mesh = r["mesh"];
           time_over_level[mesh].name = memory_over_time[mesh].name = mesh;
           time_over_level[mesh].points.emplace_back(r["level"].get<double>(), r["frame_ms"].get<double>());

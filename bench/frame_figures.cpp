@@ -1,5 +1,7 @@
 #include "bench/frame_figures.h"
 
+#include <cmath>
+
 #include "core/dual_map.h"
 #include "core/samples.h"
 #include "core/stencil_table.h"
@@ -11,7 +13,8 @@
 
 namespace gps {
 
-nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptions& options, int size, const std::vector<int>& levels) {
+nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptions& options, int size, const std::vector<int>& levels,
+                             float adaptive_pixels) {
   CovarianceMesh mesh = make_sample(name, faces);
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh, options);
@@ -21,43 +24,57 @@ nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptio
   const std::vector<Dual> points = apply_stencils(renderer.tables().stencils, base_points(mesh));
   const std::vector<int> edited = {int(mesh.n_vertices() / 2)};
   bool grow = true;  // the edit scales a covariance by 1.1 and the next one back
-  nlohmann::json rows = nlohmann::json::array();
+  std::vector<DrawOptions> settings;
   for (const int level : levels) {
-    DrawOptions o;
-    o.level = float(level);
-    const int repeats = level >= 32 ? 2 : 4;
+    settings.emplace_back();
+    settings.back().level = float(level);
+  }
+  if (adaptive_pixels > 0.0f) {
+    settings.emplace_back();
+    settings.back().pixels = adaptive_pixels;
+  }
+  nlohmann::json rows = nlohmann::json::array();
+  for (DrawOptions o : settings) {
+    const int repeats = o.level >= 32 || o.pixels > 0.0f ? 2 : 4;
     o.surface_cache = false;
     const FrameTiming patches = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
     o.surface_cache = true;
     const FrameTiming cached = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
+    const size_t cache_bytes = renderer.surface_cache().buffer_bytes();
+    const bool cache_held = renderer.surface_cache().holds_triangles();
+    // The floor draws exactly the cached triangles; past the cache's limit, those of the CPU
+    // tessellation (uniform levels; adaptive ones then have no floor).
+    const TriangleMesh triangles = cache_held ? renderer.surface_cache().stored_triangles()
+                                   : o.pixels > 0.0f ? TriangleMesh{}
+                                                     : tessellate(renderer.tables().plans, points, int(o.level));
     const FrameTiming edit = time_gl_work([&] {
       mesh.covariances[size_t(edited[0])] *= grow ? 1.1 : 1.0 / 1.1;
       grow = !grow;
       renderer.update_vertices(mesh, edited);
       renderer.draw(target, camera, o);
     }, repeats);
-    const size_t cache_bytes = renderer.surface_cache().buffer_bytes();
-    const bool cache_held = renderer.surface_cache().holds_triangles();
-    const TriangleMesh triangles = tessellate(renderer.tables().plans, points, level);
     renderer.set_triangles(triangles);
-    o.static_triangles = true;
-    const FrameTiming floor = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
+    DrawOptions static_options = o;
+    static_options.static_triangles = true;
+    const FrameTiming floor = time_gl_work([&] { renderer.draw(target, camera, static_options); }, repeats);
     const double n = double(triangles.triangles.size());
+    const double floor_ms = n > 0 ? floor.wall_ms : std::nan("");
     rows.push_back({{"mesh", name + (faces ? "/" + std::to_string(faces) : "")},
                     {"faces", mesh.mesh.n_faces()},
                     {"patches", renderer.tables().plans.n_patches()},
-                    {"level", level},
+                    {"level", o.pixels > 0.0f ? 0 : int(o.level)},
+                    {"adaptive_pixels", o.pixels},
                     {"triangles", n},
                     {"compute_gpu_ms", compute.gpu_ms},
                     {"draw_gpu_ms", patches.gpu_ms},
                     {"frame_ms", patches.wall_ms},
                     {"triangles_per_second", n / (patches.wall_ms * 1e-3)},
-                    {"static_buffer_frame_ms", floor.wall_ms},
-                    {"ratio_to_static_buffer", patches.wall_ms / floor.wall_ms},
+                    {"static_buffer_frame_ms", floor_ms},
+                    {"ratio_to_static_buffer", patches.wall_ms / floor_ms},
                     {"cached_frame_ms", cached.wall_ms},
-                    {"cached_ratio_to_static_buffer", cached.wall_ms / floor.wall_ms},
+                    {"cached_ratio_to_static_buffer", cached.wall_ms / floor_ms},
                     {"edit_frame_ms", edit.wall_ms},
-                    {"edit_ratio_to_static_buffer", edit.wall_ms / floor.wall_ms},
+                    {"edit_ratio_to_static_buffer", edit.wall_ms / floor_ms},
                     {"cache_held", cache_held},
                     {"cache_buffer_bytes", cache_bytes},
                     {"pipeline_buffer_bytes", renderer.buffer_bytes()},

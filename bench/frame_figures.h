@@ -8,10 +8,12 @@
 
 namespace gps {
 
-/// One row per level in a `size`×`size` target: the compute passes, the tessellated draw (live: every
-/// patch evaluated), the surface cache's frame (stored triangles) and a frame after a one-vertex edit
-/// (the cache captures again), and the floor: the same triangles (CPU tessellation) drawn from a
-/// static vertex buffer with the same shading.
-nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptions& options, int size, const std::vector<int>& levels);
+/// One row per uniform level, and one for adaptive levels of `adaptive_pixels` (0: none), in a
+/// `size`×`size` target: the compute passes, the tessellated draw (live: every patch evaluated),
+/// the surface cache's frame (stored triangles), a frame after a one-vertex edit (the cache
+/// refreshes that vertex's patches), and the floor: the cached triangles, welded, drawn from a
+/// static indexed vertex buffer with the same shading. JSON "level" is 0 for the adaptive row.
+nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptions& options, int size, const std::vector<int>& levels,
+                             float adaptive_pixels);
 
 }  // namespace gps

@@ -3,7 +3,10 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
+#include <unordered_map>
 
 #include "render/gl_context.h"
 
@@ -248,6 +251,37 @@ bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<lo
 void SurfaceCache::draw() const {
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * blocks_.total()));
+}
+
+TriangleMesh SurfaceCache::stored_triangles() const {
+  TriangleMesh mesh;
+  if (!holds_triangles()) return mesh;
+  const size_t floats_per_vertex = kVertexBytes / sizeof(float);
+  std::vector<float> vertices(size_t(3 * blocks_.total()) * floats_per_vertex);
+  glGetNamedBufferSubData(buffer_, 0, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data());
+  check_gl_errors("reading the surface cache");
+  using Bits = std::array<uint32_t, 6>;  // position and normal
+  struct BitsHash {
+    size_t operator()(const Bits& b) const {
+      size_t h = 0;
+      for (const uint32_t x : b) h = h * 0x9E3779B97F4A7C15ull + x;
+      return h;
+    }
+  };
+  std::unordered_map<Bits, int, BitsHash> index;
+  mesh.triangles.resize(size_t(blocks_.total()));
+  for (size_t v = 0; v < vertices.size() / floats_per_vertex; ++v) {
+    const float* f = &vertices[v * floats_per_vertex];
+    Bits bits;
+    std::memcpy(bits.data(), f, sizeof(bits));
+    const auto [it, added] = index.emplace(bits, int(mesh.positions.size()));
+    if (added) {
+      mesh.positions.emplace_back(f[0], f[1], f[2]);
+      mesh.normals.emplace_back(f[3], f[4], f[5]);
+    }
+    mesh.triangles[v / 3][v % 3] = it->second;
+  }
+  return mesh;
 }
 
 }  // namespace gps

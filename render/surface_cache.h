@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/covariance_mesh.h"
+#include "core/triangle_mesh.h"
 #include "render/surface_blocks.h"
 
 namespace gps {
@@ -81,6 +82,9 @@ public:
   bool holds_triangles() const { return stored_ && !refused_; }
   /// Binds the vertex array of the stored triangles and draws them with the bound program.
   void draw() const;
+  /// The stored triangles read back, vertices with bit-identical position and normal welded (shared
+  /// patch edges are bit-exact): the benchmark's static-buffer floor for exactly these triangles.
+  TriangleMesh stored_triangles() const;
 
   void set_hysteresis(float factor) { hysteresis_ = factor; }
   void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
