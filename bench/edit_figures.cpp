@@ -38,7 +38,7 @@ nlohmann::json edit_figures(const std::string& name, int faces, const PlanOption
          glFinish();
        }},
       20.0);
-  return {{"mesh", "sphere/" + std::to_string(faces)},
+  return {{"mesh", name + "/" + std::to_string(faces)},
           {"faces", scene.mesh().n_faces()},
           {"vertices", scene.mesh().n_vertices()},
           {"patches", statistics.patches},
