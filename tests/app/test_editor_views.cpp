@@ -206,8 +206,9 @@ TEST_F(EditorViews, InspectorFieldsHoldFullPrecisionWhileEdited) {
   const CovarianceMesh edited = read_mesh(dir_.file("typed.ply"));
   EXPECT_EQ(edited.mean(6).x(), std::strtod(typed.c_str(), nullptr));
   EXPECT_EQ(edited.mean(6).y(), original_.mean(6).y());
-  for (size_t v = 0; v < original_.n_vertices(); ++v)
+  for (size_t v = 0; v < original_.n_vertices(); ++v) {
     if (v != 6) EXPECT_EQ(edited.mean(v), original_.mean(v));
+  }
   Events undo = edit;
   undo.key("ctrl+z").wait();
   ASSERT_EQ(play(undo, "--save " + dir_.file("undone.ply")).exit_code, 0);
