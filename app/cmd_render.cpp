@@ -64,7 +64,11 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   }
   const auto bg = parse_floats(a.background, "--background", 3, 3);
   const Image matcap = load_matcap(a.matcap);
-  renderer.set_mesh(mesh, a.plans.options());
+  try {
+    renderer.set_mesh(mesh, a.plans.options());
+  } catch (const Error& e) {  // e.g. the storage limit: name the mesh it is about
+    throw Error(a.input + ": " + e.what(), e.kind());
+  }
   renderer.set_matcap(matcap);
   DrawOptions o;
   if (a.level > 0) o.level = float(a.level), o.pixels = 0;
@@ -171,9 +175,9 @@ void run_script(const std::string& path, const std::string& context_name) {
           if (c.size() != 6) throw usage_error("edit of vertex " + std::to_string(v) + ": covariance needs xx xy xz yy yz zz");
           Mat3 m;
           m << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
-          mesh.covariances[size_t(v)] = m;
+          mesh.set_covariance(size_t(v), m);
         }
-        if (edit.contains("scale")) mesh.covariances[size_t(v)] *= edit["scale"].get<double>();
+        if (edit.contains("scale")) mesh.set_covariance(size_t(v), mesh.covariances[size_t(v)] * edit["scale"].get<double>());
         if (!is_spd(mesh.covariances[size_t(v)])) throw usage_error("edit of vertex " + std::to_string(v) + " gives a covariance that is not positive definite");
       }
       render_one(renderer, context->description(), a, mesh);

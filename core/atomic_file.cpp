@@ -119,6 +119,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     struct stat old {};
     if (::stat(target.c_str(), &old) == 0) ::chmod(temp.c_str(), old.st_mode & 07777);  // keep the old file's mode
     sync_path(temp, path);  // the data on disk before the name points at it
+    sync_path(dir, path);   // and the temporary file's own entry in its folder
     fs::rename(temp, target, ec);
     if (ec) throw Error(path + ": cannot replace the file (" + ec.message() + ")");
     sync_path(dir, path);  // the rename itself on disk

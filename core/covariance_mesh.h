@@ -59,10 +59,11 @@ bool is_spd(const Mat3& covariance);
 void bounding_box(const CovarianceMesh& m, Vec3& lo, Vec3& hi);
 
 /// Bounding-box diagonal length of the means.
+double bounding_box_diagonal(const CovarianceMesh& m);
+
 /// The 9D point q = (vech(Σ⁻¹), Σ⁻¹μ) of every vertex (thesis Eq. 2.10), the base of the plans'
 /// points and of the reference subdivision.
 std::vector<Dual> base_points(const CovarianceMesh& mesh);
-double bounding_box_diagonal(const CovarianceMesh& m);
 
 inline Vec3 to_vec3(const OpenMesh::Vec3d& p) { return Vec3(p[0], p[1], p[2]); }
 inline OpenMesh::Vec3d to_point(const Vec3& v) { return OpenMesh::Vec3d(v[0], v[1], v[2]); }

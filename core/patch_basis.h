@@ -50,20 +50,6 @@ GPS_FN void bspline_basis(GPS_REAL t, GPS_OUT GPS_REAL w[4], GPS_OUT GPS_REAL dw
   dw[3] = 0.5 * t2;
 }
 
-/// The bicubic B-spline patch at (u, v): weights w[i + 4j] of its 16 points (i along u) and their
-/// u and v derivatives.
-GPS_FN void bspline_patch_basis(GPS_REAL u, GPS_REAL v, GPS_OUT GPS_REAL w[16], GPS_OUT GPS_REAL du[16], GPS_OUT GPS_REAL dv[16]) {
-  GPS_REAL wu[4], dwu[4], wv[4], dwv[4];
-  bspline_basis(u, wu, dwu);
-  bspline_basis(v, wv, dwv);
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) {
-      w[i + 4 * j] = wu[i] * wv[j];
-      du[i + 4 * j] = dwu[i] * wv[j];
-      dv[i + 4 * j] = wu[i] * dwv[j];
-    }
-}
-
 /// Cubic Bernstein basis, t in [0,1]: values w[0..3] and derivatives dw[0..3].
 GPS_FN void bezier_basis(GPS_REAL t, GPS_OUT GPS_REAL w[4], GPS_OUT GPS_REAL dw[4]) {
   GPS_REAL s = 1.0 - t;
@@ -75,6 +61,26 @@ GPS_FN void bezier_basis(GPS_REAL t, GPS_OUT GPS_REAL w[4], GPS_OUT GPS_REAL dw[
   dw[1] = 3.0 * s * s - 6.0 * t * s;
   dw[2] = 6.0 * t * s - 3.0 * t * t;
   dw[3] = 3.0 * t * t;
+}
+
+/// A quad leaf of a plan at (u, v): weights w[i + 4j] of its 16 points (i along u) and their u and
+/// v derivatives; a regular node is a bicubic B-spline patch, a terminal node a bicubic Bézier patch.
+GPS_FN void quad_leaf_basis(int kind, GPS_REAL u, GPS_REAL v, GPS_OUT GPS_REAL w[16], GPS_OUT GPS_REAL du[16],
+                            GPS_OUT GPS_REAL dv[16]) {
+  GPS_REAL wu[4], dwu[4], wv[4], dwv[4];
+  if (kind == kNodeRegular) {
+    bspline_basis(u, wu, dwu);
+    bspline_basis(v, wv, dwv);
+  } else {
+    bezier_basis(u, wu, dwu);
+    bezier_basis(v, wv, dwv);
+  }
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      w[i + 4 * j] = wu[i] * wv[j];
+      du[i + 4 * j] = dwu[i] * wv[j];
+      dv[i + 4 * j] = wu[i] * dwv[j];
+    }
 }
 
 // Loop's regular patch (Stam 1998, "Evaluation of Loop subdivision surfaces"): the quartic box

@@ -71,20 +71,8 @@ void evaluate_dual(const PlanTable& plans, const std::vector<Dual>& points, int 
     loop_box_spline_basis(u, v, w, wu, wv);
     evaluate_net(points, nodes + node + 1, 12, w, wu, wv, q, q_u, q_v);
   } else {
-    double w[16], wu[16], wv[16], cu[4], dcu[4], cv[4], dcv[4];
-    if (kind == kNodeRegular) {
-      bspline_basis(u, cu, dcu);
-      bspline_basis(v, cv, dcv);
-    } else {
-      bezier_basis(u, cu, dcu);
-      bezier_basis(v, cv, dcv);
-    }
-    for (int j = 0; j < 4; ++j)
-      for (int i = 0; i < 4; ++i) {
-        w[i + 4 * j] = cu[i] * cv[j];
-        wu[i + 4 * j] = dcu[i] * cv[j];
-        wv[i + 4 * j] = cu[i] * dcv[j];
-      }
+    double w[16], wu[16], wv[16];
+    quad_leaf_basis(kind, u, v, w, wu, wv);
     evaluate_net(points, nodes + node + 1, 16, w, wu, wv, q, q_u, q_v);
   }
   q_u *= scale;

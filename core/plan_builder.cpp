@@ -130,7 +130,10 @@ private:
     for (int k = 0; k < 4; ++k)
       if (!regular_vertex(m, c[size_t(k)])) ++irregular, corner = k;
     const std::vector<int> corners(c.begin(), c.end());
-    if (irregular == 0 && bspline_leaves_) return emit_leaf(NodeKind::regular, m, bspline_net(m, m.find_face(corners), c));
+    if (irregular == 0 && bspline_leaves_) {
+      bspline_net(m, m.find_face(corners), c, net_);
+      return emit_leaf(NodeKind::regular, m, net_);
+    }
     if (irregular == 0) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
     if (exact_ && irregular == 1 && depth >= max_depth_ && m.complete[size_t(c[size_t(corner)])])
       if (const int offset = emit_extraordinary(m, c, corner); offset >= 0) return offset;
@@ -167,6 +170,7 @@ private:
   const LocalMesh& base_;
   QuadEvTableCache& cache_;
   std::vector<std::shared_ptr<const std::vector<double>>> ev_;
+  std::array<Combo, 16> net_;  // the regular leaves' nets, reused (no allocation per leaf)
   StencilTableBuilder stencils_;
   PlanTable plans_;
 };

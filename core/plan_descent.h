@@ -88,7 +88,7 @@ GPS_FN int extraordinary_rows(bool quad, int r, GPS_REAL u, GPS_REAL v, GPS_OUT_
     return 3;
   }
   if (quad) {
-    bspline_patch_basis(s, t, w, ws, wt);
+    quad_leaf_basis(kNodeRegular, s, t, w, ws, wt);
   } else {
     GPS_REAL w12[12], ws12[12], wt12[12];
     loop_box_spline_basis(s, t, w12, ws12, wt12);

@@ -96,7 +96,8 @@ std::shared_ptr<const std::vector<double>> compute_table(const std::vector<int>&
   for (int c = 0; c < 3; ++c) {
     for (const int v : children[c])
       if (!regular_vertex(fine, v)) return nullptr;
-    const auto net = bspline_net(fine, fine.find_face({children[c][0], children[c][1], children[c][2], children[c][3]}), children[c]);
+    std::array<LocalCombination, 16> net;
+    bspline_net(fine, fine.find_face({children[c][0], children[c][1], children[c][2], children[c][3]}), children[c], net);
     nets[c] = rows_of(fine, {net.begin(), net.end()}, k);
   }
   auto table = std::make_shared<std::vector<double>>(quad_ev_table_size(k), 0.0);

@@ -10,15 +10,6 @@ namespace {
 
 using Combo = LocalCombination;
 
-Combo one(int v) { return {{v, 1.0}}; }
-
-Combo combine(const std::vector<std::pair<const Combo*, double>>& parts) {
-  Combo out;
-  for (const auto& [c, w] : parts)
-    for (const auto& [v, x] : *c) out.emplace_back(v, w * x);
-  return out;
-}
-
 struct Grid2 {
   int i, j;
   Grid2 operator+(Grid2 o) const { return {i + o.i, j + o.j}; }
@@ -62,12 +53,22 @@ bool regular_vertex(const LocalMesh& m, int v) {
   return false;
 }
 
-std::array<LocalCombination, 16> bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c) {
-  std::array<Combo, 16> net;
+void bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c, std::array<LocalCombination, 16>& net) {
   const auto at = [&](Grid2 g) -> Combo& { return net[size_t(g.i + 4 * g.j)]; };
-  const auto mirror = [&](Grid2 g, Grid2 out) { at(g + out) = combine({{&at(g), 2.0}, {&at(g - out), -1.0}}); };
+  const auto set_vertex = [&](Grid2 g, int v) {
+    Combo& p = at(g);
+    p.clear();
+    p.emplace_back(v, 1.0);
+  };
+  // p₋₁ = 2p₀ − p₁ (g + out = 2·g − (g − out)).
+  const auto mirror = [&](Grid2 g, Grid2 out) {
+    Combo& p = at(g + out);
+    p.clear();
+    for (const auto& [v, x] : at(g)) p.emplace_back(v, 2.0 * x);
+    for (const auto& [v, x] : at(g - out)) p.emplace_back(v, -x);
+  };
   bool boundary_edge[4];
-  for (int k = 0; k < 4; ++k) at(kCorner[k]) = one(c[size_t(k)]);
+  for (int k = 0; k < 4; ++k) set_vertex(kCorner[k], c[size_t(k)]);
   for (int k = 0; k < 4; ++k) {
     const int a = c[size_t(k)], b = c[size_t((k + 1) % 4)];
     const int e = m.find_edge(a, b);
@@ -78,8 +79,8 @@ std::array<LocalCombination, 16> bspline_net(const LocalMesh& m, int q, const st
       continue;
     }
     const int n = other_face(m, e, q), j = corner_index(m, n, a);  // n runs b, a, x, y
-    at(kCorner[k] + kOut[k]) = one(face_vertex(m, n, j + 1));
-    at(kCorner[(k + 1) % 4] + kOut[k]) = one(face_vertex(m, n, j + 2));
+    set_vertex(kCorner[k] + kOut[k], face_vertex(m, n, j + 1));
+    set_vertex(kCorner[(k + 1) % 4] + kOut[k], face_vertex(m, n, j + 2));
   }
   for (int k = 0; k < 4; ++k) {
     const Grid2 g = kCorner[k], o1 = kOut[k], o2 = kOut[(k + 3) % 4];
@@ -92,7 +93,7 @@ std::array<LocalCombination, 16> bspline_net(const LocalMesh& m, int q, const st
         if (f == q || prev == c[size_t((k + 1) % 4)] || next == c[size_t((k + 1) % 4)] || prev == c[size_t((k + 3) % 4)] ||
             next == c[size_t((k + 3) % 4)])
           continue;
-        at(g + o1 + o2) = one(face_vertex(m, f, kv + 2));
+        set_vertex(g + o1 + o2, face_vertex(m, f, kv + 2));
       }
     } else if (boundary_edge[(k + 3) % 4]) {
       mirror(g + o1, o2);
@@ -100,7 +101,6 @@ std::array<LocalCombination, 16> bspline_net(const LocalMesh& m, int q, const st
       mirror(g + o2, o1);
     }
   }
-  return net;
 }
 
 std::array<LocalCombination, 16> bezier_net(const LocalMesh& m, const std::array<int, 4>& c) {

@@ -23,8 +23,9 @@ int other_face(const LocalMesh& m, int e, int f);
 bool regular_vertex(const LocalMesh& m, int v);
 
 /// The 4×4 B-spline net of quad q with corners c (all regular), net index i + 4j with i along the
-/// edge c[0] → c[1]; boundary phantoms p₋₁ = 2p₀ − p₁.
-std::array<LocalCombination, 16> bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c);
+/// edge c[0] → c[1]; boundary phantoms p₋₁ = 2p₀ − p₁. Written into `net`, whose vectors keep
+/// their capacity: a builder that reuses one allocates nothing per regular leaf.
+void bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c, std::array<LocalCombination, 16>& net);
 
 /// The Bézier net of a terminal node with corners c by the rules of thesis Fig. 2.5 (DESIGN.md §2).
 std::array<LocalCombination, 16> bezier_net(const LocalMesh& m, const std::array<int, 4>& c);

@@ -2,9 +2,9 @@
 
 #include <glad/gl.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "core/covariance_edit.h"
 #include "render/gl_context.h"
 #include "shaders/embedded_shaders.h"
 
@@ -51,10 +51,10 @@ EllipsoidOverlay::~EllipsoidOverlay() {
 }
 
 void EllipsoidOverlay::upload(const CovarianceMesh& mesh, const std::vector<int>* changed) {
-  // Σ = V D Vᵀ; the unit sphere maps to the 1-σ ellipsoid by [V D^½ | μ] (column-major mat4).
+  // Σ = V diag(σ²) Vᵀ; the unit sphere maps to the 1-σ ellipsoid by [V diag(σ) | μ] (column-major mat4).
   const auto transform = [&mesh](size_t i, float* m) {
-    const Eigen::SelfAdjointEigenSolver<Mat3> eig(mesh.covariance(i));
-    const Mat3 root = eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+    const EllipsoidAxes e = ellipsoid_axes(mesh.covariance(i));
+    const Mat3 root = e.axes * e.sigmas.asDiagonal();
     for (int c = 0; c < 3; ++c) {
       for (int r = 0; r < 3; ++r) m[4 * c + r] = float(root(r, c));
       m[4 * c + 3] = 0.0f;

@@ -71,25 +71,17 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
     dual_to_surface(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
     return;
   }
-  float wu[4], dwu[4], wv[4], dwv[4];
-  if (kind == kNodeRegular) {
-    bspline_basis(uv.x, wu, dwu);
-    bspline_basis(uv.y, wv, dwv);
-  } else {
-    bezier_basis(uv.x, wu, dwu);
-    bezier_basis(uv.y, wv, dwv);
-  }
+  float w[16], wdu[16], wdv[16];
+  quad_leaf_basis(kind, uv.x, uv.y, w, wdu, wdv);
   qa = vec4(0.0); qb = vec4(0.0); qc = vec4(0.0);
   ua = vec4(0.0); ub = vec4(0.0); uc = vec4(0.0);
   va = vec4(0.0); vb = vec4(0.0); vc = vec4(0.0);
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) {
-      int p = nodes[node + 1 + i + 4 * j];
-      vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
-      float w = wu[i] * wv[j], wdu = dwu[i] * wv[j], wdv = wu[i] * dwv[j];
-      qa += w * a; qb += w * b; qc += w * c;
-      ua += wdu * a; ub += wdu * b; uc += wdu * c;
-      va += wdv * a; vb += wdv * b; vc += wdv * c;
-    }
+  for (int k = 0; k < 16; ++k) {
+    int p = nodes[node + 1 + k];
+    vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
+    qa += w[k] * a; qb += w[k] * b; qc += w[k] * c;
+    ua += wdu[k] * a; ub += wdu[k] * b; uc += wdu[k] * c;
+    va += wdv[k] * a; vb += wdv[k] * b; vc += wdv[k] * c;
+  }
   dual_to_surface(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
 }

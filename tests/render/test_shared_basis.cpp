@@ -22,14 +22,15 @@ namespace gps {
 namespace {
 
 // Per input (u, v): 36 Loop weights and derivatives, 16 cubic values, the child, sign, the turned
-// (s, t) of corner 1 and 2, and the extraordinary block and scale: 64 floats.
-constexpr int kOut = 64;
+// (s, t) of corner 1 and 2, the extraordinary block and scale, then a quad leaf's 48 weights and
+// derivatives (regular for even inputs, terminal for odd): 112 floats.
+constexpr int kOut = 112;
 constexpr const char* kProbe = R"glsl(
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) readonly buffer In { vec2 inputs[]; };
 layout(std430, binding = 1) writeonly buffer Out { float outputs[]; };
 void main() {
-  int i = int(gl_GlobalInvocationID.x), o = 64 * i;
+  int i = int(gl_GlobalInvocationID.x), o = 112 * i;
   float u = inputs[i].x, v = inputs[i].y;
   float w[12], wu[12], wv[12];
   loop_box_spline_basis(u, v, w, wu, wv);
@@ -50,10 +51,13 @@ void main() {
   s = 0.001 * u; t = 0.001 * v;
   outputs[o + 60] = float(loop_ev_locate(s, t, scale));
   outputs[o + 61] = s; outputs[o + 62] = t; outputs[o + 63] = scale;
+  float q[16], qu[16], qv[16];
+  quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, u, v, q, qu, qv);
+  for (int k = 0; k < 16; ++k) { outputs[o + 64 + k] = q[k]; outputs[o + 80 + k] = qu[k]; outputs[o + 96 + k] = qv[k]; }
 }
 )glsl";
 
-std::vector<double> cpu_probe(double u, double v) {
+std::vector<double> cpu_probe(int i, double u, double v) {
   std::vector<double> out(kOut);
   double w[12], wu[12], wv[12];
   loop_box_spline_basis(u, v, w, wu, wv);
@@ -74,6 +78,9 @@ std::vector<double> cpu_probe(double u, double v) {
   s = 0.001 * u, t = 0.001 * v;
   out[60] = loop_ev_locate(s, t, scale);
   out[61] = s, out[62] = t, out[63] = scale;
+  double q[16], qu[16], qv[16];
+  quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, u, v, q, qu, qv);
+  for (int k = 0; k < 16; ++k) out[size_t(64 + k)] = q[k], out[size_t(80 + k)] = qu[k], out[size_t(96 + k)] = qv[k];
   return out;
 }
 
@@ -100,7 +107,7 @@ TEST_F(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
   glDeleteBuffers(2, buffers);
   check_gl_errors("the basis probe");
   for (int i = 0; i < n; ++i) {
-    const std::vector<double> cpu = cpu_probe(double(inputs[size_t(2 * i)]), double(inputs[size_t(2 * i + 1)]));
+    const std::vector<double> cpu = cpu_probe(i, double(inputs[size_t(2 * i)]), double(inputs[size_t(2 * i + 1)]));
     for (int k = 0; k < kOut; ++k)
       EXPECT_NEAR(gpu[size_t(i * kOut + k)], cpu[size_t(k)], 2e-5 * (1 + std::abs(cpu[size_t(k)])))
           << "output " << k << " at (" << inputs[size_t(2 * i)] << ", " << inputs[size_t(2 * i + 1)] << ")";
@@ -110,6 +117,7 @@ TEST_F(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
 // The descent of core/plan_descent.h through real plans, and an extraordinary leaf's rows: per
 // input (root, triangle, u, v): leaf node, kind, depth, leaf (u, v), scale, then the leaf's rows
 // count, first row, d[4], scale and 16 weights each of w, ws, wt: 64 floats.
+constexpr int kDescentOut = 64;
 constexpr const char* kDescentBuffers = R"glsl(
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) readonly buffer Nodes { int nodes[]; };
@@ -138,7 +146,7 @@ void main() {
 )glsl";
 
 std::vector<double> cpu_descent(const std::vector<int32_t>& nodes, int root, bool triangle, double u, double v) {
-  std::vector<double> out(kOut, 0.0);
+  std::vector<double> out(kDescentOut, 0.0);
   double scale;
   int kind, depth;
   const int node = descend_plan(nodes.data(), root, triangle, u, v, scale, kind, depth);
@@ -175,12 +183,12 @@ void expect_same_descent(const char* name, const CovarianceMesh& mesh, const Pla
   glCreateBuffers(3, buffers);
   glNamedBufferData(buffers[0], GLsizeiptr(plans.nodes.size() * sizeof(int32_t)), plans.nodes.data(), GL_STATIC_DRAW);
   glNamedBufferData(buffers[1], GLsizeiptr(inputs.size() * sizeof(float)), inputs.data(), GL_STATIC_DRAW);
-  glNamedBufferData(buffers[2], GLsizeiptr(size_t(n) * kOut * sizeof(float)), nullptr, GL_STREAM_READ);
+  glNamedBufferData(buffers[2], GLsizeiptr(size_t(n) * kDescentOut * sizeof(float)), nullptr, GL_STREAM_READ);
   for (unsigned b = 0; b < 3; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, buffers[b]);
   probe.use();
   glDispatchCompute(GLuint(n), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<float> gpu(size_t(n) * kOut);
+  std::vector<float> gpu(size_t(n) * kDescentOut);
   glGetNamedBufferSubData(buffers[2], 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
   glDeleteBuffers(3, buffers);
   check_gl_errors("the descent probe");
@@ -190,8 +198,8 @@ void expect_same_descent(const char* name, const CovarianceMesh& mesh, const Pla
     const std::vector<double> cpu = cpu_descent(plans.nodes, int(in[0]), triangle, double(in[2]), double(in[3]));
     extraordinary += cpu[1] == kNodeExtraordinary;
     deep += cpu[2] > 1;
-    for (int k = 0; k < kOut; ++k)
-      EXPECT_NEAR(gpu[size_t(i * kOut + k)], cpu[size_t(k)], 2e-5 * (1 + std::abs(cpu[size_t(k)])))
+    for (int k = 0; k < kDescentOut; ++k)
+      EXPECT_NEAR(gpu[size_t(i * kDescentOut + k)], cpu[size_t(k)], 2e-5 * (1 + std::abs(cpu[size_t(k)])))
           << name << ": output " << k << " from root " << in[0] << " at (" << in[2] << ", " << in[3] << ")";
   }
   EXPECT_GT(extraordinary, 0) << name;  // the inputs reach extraordinary leaves,
