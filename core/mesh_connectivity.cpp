@@ -119,6 +119,8 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& sour
     if (c.edge_verts[2 * size_t(e)] == c.edge_verts[2 * size_t(e) + 2] && c.edge_verts[2 * size_t(e) + 1] == c.edge_verts[2 * size_t(e) + 3])
       throw Error(source + ": face " + std::to_string(c.edge_faces[2 * size_t(e) + 2]) +
                   " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
+  // Every element's storage at its final size at once: growing by doubling would hold up to twice it.
+  mesh.reserve(mesh.n_vertices(), size_t(c.n_edges()), size_t(t.n_faces()));
   for (int e = 0; e < c.n_edges(); ++e)
     mesh.new_edge(PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e)]), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e) + 1]));
   // Corner k of a face owns the half-edge from its vertex to the next: 2e (along the edge's order) or 2e + 1.

@@ -16,10 +16,19 @@ std::string read_text_file(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open (" + std::strerror(errno) + ")");
-  std::ostringstream data;
-  data << in.rdbuf();
+  // The whole file in one string of its own size (a growing stream buffer would hold up to twice it),
+  // then whatever a pipe or a file still growing adds past that size.
+  const auto size = std::filesystem::file_size(path, ec);
+  std::string data(ec ? 0 : size_t(size), '\0');
+  in.read(data.data(), std::streamsize(data.size()));
+  data.resize(size_t(in.gcount()));
   if (in.bad()) throw Error(path + ": cannot read");
-  return std::move(data).str();
+  if (in) {
+    std::ostringstream rest;
+    rest << in.rdbuf();
+    data += std::move(rest).str();
+  }
+  return data;
 }
 
 }  // namespace gps
