@@ -33,6 +33,14 @@ GPS_CONST int kNodeInternal = 0;
 GPS_CONST int kNodeRegular = 1;       // quads: bicubic B-spline; triangles: Loop's quartic box spline
 GPS_CONST int kNodeTerminal = 2;      // quads: bicubic Bézier from the rules of thesis Fig. 2.5
 GPS_CONST int kNodeExtraordinary = 3; // exact evaluation at an extraordinary corner (both shapes)
+// Patch edges of quad patches (core/plan_table.h, PatchEdge): kPatchEdgeInts ints per edge (from, to,
+// part), four edges per patch; the parts are PatchEdgePart's values.
+GPS_CONST int kPatchEdgeInts = 3;
+GPS_CONST int kPatchEdgeStride = 4 * kPatchEdgeInts;
+GPS_CONST int kEdgeWhole = 0;             // all of the edge, and so is the patch beside it
+GPS_CONST int kEdgeWholeBesideHalves = 1; // all of the edge; the other side is split into two halves
+GPS_CONST int kEdgeFirstHalf = 2;         // the half at `from`
+GPS_CONST int kEdgeSecondHalf = 3;        // the half at `to`
 // Levels of the extraordinary tables (core/loop_ev_tables.h, core/quad_ev_tables.h): below 2^-kEvLevels of the corner,
 // the limit masks give the point (closer than double precision resolves).
 GPS_CONST int kEvLevels = 40;

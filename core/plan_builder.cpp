@@ -209,7 +209,7 @@ PlanTables merge(std::vector<RangePlans>& ranges, int n_base) {
   plans.nodes.resize(node_base.back());
   plans.patch_roots.resize(patch_base.back());
   plans.patch_corner_points.resize(4 * patch_base.back());
-  plans.patch_edges.resize(12 * patch_base.back());
+  plans.patch_edges.resize(kPatchEdgeStride * patch_base.back());
 #pragma omp parallel for schedule(dynamic)
   for (size_t r = 0; r < parts.size(); ++r) {
     const PlanTable& p = parts[r].plans;
@@ -236,7 +236,7 @@ PlanTables merge(std::vector<RangePlans>& ranges, int n_base) {
     for (size_t i = 0; i < p.patch_roots.size(); ++i) plans.patch_roots[first + i] = base + p.patch_roots[i];
     for (size_t i = 0; i < p.patch_corner_points.size(); ++i) plans.patch_corner_points[4 * first + i] = point(p.patch_corner_points[i]);
     for (size_t i = 0; i < p.patch_edges.size(); ++i)
-      plans.patch_edges[12 * first + i] = i % 3 == 2 ? p.patch_edges[i] : point(p.patch_edges[i]);
+      plans.patch_edges[kPatchEdgeStride * first + i] = i % kPatchEdgeInts == 2 ? p.patch_edges[i] : point(p.patch_edges[i]);
     parts[r] = {};
   }
   return {std::move(plans), stencils.finish()};

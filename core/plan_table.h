@@ -71,16 +71,16 @@ struct PlanTable {
 };
 
 /// Patch edge k of a patch runs from its corner k to corner k+1 and is described by three ints in
-/// PlanTable::patch_edges[12·patch + 3·k ...]: the points whose means are the two ends of the edge
+/// PlanTable::patch_edges[kPatchEdgeStride·patch + kPatchEdgeInts·k ...]: the points whose means are the two ends of the edge
 /// of the (base or split-face) mesh it lies on, in the patch edge's direction, and its part of that
 /// edge. A quad next to a split face meets two half-size patches along one edge (a T-junction):
 /// it gives that edge an even tessellation level and each half takes half of it, so the vertices of
 /// both sides sit at the same parameters of the same limit curve (core/patch_layout.h).
 enum class PatchEdgePart : int32_t {
-  whole = 0,             // all of the edge, and so is the patch beside it
-  whole_beside_halves,   // all of the edge; the other side is split into two halves
-  first_half,            // the half at `from`: the patch edge runs from `from` to the midpoint
-  second_half,           // the half at `to`: the patch edge runs from the midpoint to `to`
+  whole = kEdgeWhole,                            // all of the edge, and so is the patch beside it
+  whole_beside_halves = kEdgeWholeBesideHalves,  // all of the edge; the other side is split into two halves
+  first_half = kEdgeFirstHalf,                   // the half at `from`: the patch edge runs from `from` to the midpoint
+  second_half = kEdgeSecondHalf,                 // the half at `to`: the patch edge runs from the midpoint to `to`
 };
 
 struct PatchEdge {
@@ -89,7 +89,7 @@ struct PatchEdge {
 };
 
 inline PatchEdge patch_edge(const PlanTable& plans, int patch, int k) {
-  const int32_t* e = &plans.patch_edges[size_t(12 * patch + 3 * k)];
+  const int32_t* e = &plans.patch_edges[size_t(kPatchEdgeStride * patch + kPatchEdgeInts * k)];
   return {e[0], e[1], PatchEdgePart(e[2])};
 }
 

@@ -18,8 +18,8 @@ struct EdgePoint {
 EdgePoint canonical_edge_point(EdgePoint e, int corners) {
   if (e.i <= 0 || e.i >= e.n) return e;
   int r = 4 * (corners * e.patch_id + e.edge);
-  int part = corners == 4 ? patch_edges[12 * e.patch_id + 3 * e.edge + 2] : 0;
-  if (part == 1) {  // a whole quad edge beside two half-size patches, which evaluate it: step h of 2h is their corner
+  int part = corners == 4 ? patch_edges[kPatchEdgeStride * e.patch_id + kPatchEdgeInts * e.edge + 2] : kEdgeWhole;
+  if (part == kEdgeWholeBesideHalves) {  // a whole quad edge beside two half-size patches, which evaluate it: step h of 2h is their corner
     int h = e.n / 2;
     bool first = e.i <= h;
     int q = patch_neighbours[r + (first ? 0 : 2)], code = patch_neighbours[r + (first ? 1 : 3)];
@@ -31,7 +31,7 @@ EdgePoint canonical_edge_point(EdgePoint e, int corners) {
   int q = patch_neighbours[r], code = patch_neighbours[r + 1];
   if (q < 0) return e;  // a mesh boundary
   int m = code & 3;
-  if (part >= 2 && patch_edges[12 * q + 3 * m + 2] == 1) return e;  // a half beside a whole quad edge
+  if (part >= kEdgeFirstHalf && patch_edges[kPatchEdgeStride * q + kPatchEdgeInts * m + 2] == kEdgeWholeBesideHalves) return e;  // a half beside a whole quad edge
   if (q > e.patch_id || (q == e.patch_id && m > e.edge)) return e;        // the lower patch evaluates
   return EdgePoint(q, m, code >= 4 ? e.n - e.i : e.i, e.n);
 }

@@ -6,11 +6,11 @@ patch out int tc_patch;
 // half half of it, so both sides place their vertices at the same points of the edge; the level of
 // a half comes from the whole edge's two end points.
 float patch_edge_level(int p, int k) {
-  int e = 12 * p + 3 * k, part = patch_edges[e + 2];
-  if (part == 0) return edge_level(patch_edges[e], patch_edges[e + 1]);
+  int e = kPatchEdgeStride * p + kPatchEdgeInts * k, part = patch_edges[e + 2];
+  if (part == kEdgeWhole) return edge_level(patch_edges[e], patch_edges[e + 1]);
   float whole = u_pixels <= 0.0 ? min(2.0 * ceil(u_level), 64.0) : edge_level(patch_edges[e], patch_edges[e + 1]);
   float half_level = ceil(0.5 * whole);
-  return part == 1 ? 2.0 * half_level : half_level;
+  return part == kEdgeWholeBesideHalves ? 2.0 * half_level : half_level;
 }
 
 void main() {

@@ -207,7 +207,9 @@ TEST_F(EditorViews, InspectorFieldsHoldFullPrecisionWhileEdited) {
   EXPECT_EQ(edited.mean(6).x(), std::strtod(typed.c_str(), nullptr));
   EXPECT_EQ(edited.mean(6).y(), original_.mean(6).y());
   for (size_t v = 0; v < original_.n_vertices(); ++v) {
-    if (v != 6) EXPECT_EQ(edited.mean(v), original_.mean(v));
+    if (v != 6) {
+      EXPECT_EQ(edited.mean(v), original_.mean(v));
+    }
   }
   Events undo = edit;
   undo.key("ctrl+z").wait();

@@ -52,10 +52,14 @@ TEST(PatchReaders, UnlistedPatchesEvaluateAlikeAfterAnEdit) {
     for (int p = 0; p < plans.n_patches(); ++p) {
       const bool alike = evaluates_alike(plans, before, after, p);
       changed += !alike;
-      if (!std::binary_search(listed.begin(), listed.end(), p)) EXPECT_TRUE(alike) << name << " patch " << p;
+      if (!std::binary_search(listed.begin(), listed.end(), p)) {
+        EXPECT_TRUE(alike) << name << " patch " << p;
+      }
     }
     EXPECT_GT(changed, 0) << name;
-    if (plans.n_patches() > 500) EXPECT_LT(listed.size() * 4, size_t(plans.n_patches())) << name;
+    if (plans.n_patches() > 500) {
+      EXPECT_LT(listed.size() * 4, size_t(plans.n_patches())) << name;
+    }
   }
 }
 

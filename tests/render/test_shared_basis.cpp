@@ -213,11 +213,12 @@ constexpr const char* kConstantsProbe = R"glsl(
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) writeonly buffer Out { int outputs[]; };
 void main() {
-  int values[21] = int[21](kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
+  int values[27] = int[27](kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
                            kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingEvTables,
                            kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCount,
-                           kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary);
-  for (int k = 0; k < 21; ++k) outputs[k] = values[k];
+                           kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary,
+                           kPatchEdgeInts, kPatchEdgeStride, kEdgeWhole, kEdgeWholeBesideHalves, kEdgeFirstHalf, kEdgeSecondHalf);
+  for (int k = 0; k < 27; ++k) outputs[k] = values[k];
 }
 )glsl";
 
@@ -228,7 +229,8 @@ TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
   const std::vector<int> cpu = {kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
                                 kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingEvTables,
                                 kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCount,
-                                kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary};
+                                kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary,
+                                kPatchEdgeInts, kPatchEdgeStride, kEdgeWhole, kEdgeWholeBesideHalves, kEdgeFirstHalf, kEdgeSecondHalf};
   const ShaderProgram probe("constants_probe", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::patch_basis, kConstantsProbe}}});
   unsigned buffer = 0;
   glCreateBuffers(1, &buffer);
