@@ -12,13 +12,7 @@ void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3
   float w[12], ws[12], wt[12];
   if (kind == kNodeRegular) {
     loop_box_spline_basis(u, v, w, ws, wt);
-    for (int j = 0; j < 12; ++j) {
-      int p = nodes[node + 1 + j];
-      vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
-      qa += w[j] * a; qb += w[j] * b; qc += w[j] * c;
-      ua += ws[j] * a; ub += ws[j] * b; uc += ws[j] * c;
-      va += wt[j] * a; vb += wt[j] * b; vc += wt[j] * c;
-    }
+    for (int j = 0; j < 12; ++j) add_point(nodes[node + 1 + j], w[j], ws[j], wt[j], qa, qb, qc, ua, ub, uc, va, vb, vc);
     dual_to_surface(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
     return;
   }

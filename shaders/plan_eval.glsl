@@ -29,6 +29,16 @@ void dual_to_surface(vec4 qa, vec4 qb, vec4 qc, vec4 ua, vec4 ub, vec4 uc, vec4 
   mu_v = scale * (sigma * (precision_mean_of(vb, vc) - precision_of(va, vb) * mu));
 }
 
+// Plan point p with weight w and derivative weights w_u, w_v added to q = (qa qb qc) and its
+// derivatives (ua ub uc), (va vb vc), three vec4 each (gpu_layout.h).
+void add_point(int p, float w, float w_u, float w_v, inout vec4 qa, inout vec4 qb, inout vec4 qc, inout vec4 ua,
+               inout vec4 ub, inout vec4 uc, inout vec4 va, inout vec4 vb, inout vec4 vc) {
+  vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
+  qa += w * a; qb += w * b; qc += w * c;
+  ua += w_u * a; ub += w_u * b; uc += w_u * c;
+  va += w_v * a; vb += w_v * b; vc += w_v * c;
+}
+
 // An extraordinary node (core/loop_ev_tables.h, core/quad_ev_tables.h) at (u, v) of its own domain:
 // q and its u and v derivatives; mirrors evaluate_extraordinary in core/patch_eval.cpp.
 void evaluate_extraordinary_node(int node, bool quad, float u, float v, out vec4 qa, out vec4 qb, out vec4 qc,
@@ -48,11 +58,7 @@ void evaluate_extraordinary_node(int node, bool quad, float u, float v, out vec4
       x_s += ws[j] * e;
       x_t += wt[j] * e;
     }
-    int p = nodes[node + 4 + i];
-    vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
-    qa += x * a; qb += x * b; qc += x * c;
-    sa += x_s * a; sb += x_s * b; sc += x_s * c;
-    ta += x_t * a; tb += x_t * b; tc += x_t * c;
+    add_point(nodes[node + 4 + i], x, x_s, x_t, qa, qb, qc, sa, sb, sc, ta, tb, tc);
   }
   ua = scale * (d[0] * sa + d[1] * ta); ub = scale * (d[0] * sb + d[1] * tb); uc = scale * (d[0] * sc + d[1] * tc);
   va = scale * (d[2] * sa + d[3] * ta); vb = scale * (d[2] * sb + d[3] * tb); vc = scale * (d[2] * sc + d[3] * tc);
@@ -76,12 +82,6 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
   qa = vec4(0.0); qb = vec4(0.0); qc = vec4(0.0);
   ua = vec4(0.0); ub = vec4(0.0); uc = vec4(0.0);
   va = vec4(0.0); vb = vec4(0.0); vc = vec4(0.0);
-  for (int k = 0; k < 16; ++k) {
-    int p = nodes[node + 1 + k];
-    vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
-    qa += w[k] * a; qb += w[k] * b; qc += w[k] * c;
-    ua += wdu[k] * a; ub += wdu[k] * b; uc += wdu[k] * c;
-    va += wdv[k] * a; vb += wdv[k] * b; vc += wdv[k] * c;
-  }
+  for (int k = 0; k < 16; ++k) add_point(nodes[node + 1 + k], w[k], wdu[k], wdv[k], qa, qb, qc, ua, ub, uc, va, vb, vc);
   dual_to_surface(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
 }
