@@ -177,8 +177,8 @@ void run_script(const std::string& path, const std::string& context_name) {
           m << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
           mesh.set_covariance(size_t(v), m);
         }
-        if (edit.contains("scale")) mesh.set_covariance(size_t(v), mesh.covariances[size_t(v)] * edit["scale"].get<double>());
-        if (!is_spd(mesh.covariances[size_t(v)])) throw usage_error("edit of vertex " + std::to_string(v) + " gives a covariance that is not positive definite");
+        if (edit.contains("scale")) mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * edit["scale"].get<double>());
+        if (!is_spd(mesh.covariance(size_t(v)))) throw usage_error("edit of vertex " + std::to_string(v) + " gives a covariance that is not positive definite");
       }
       render_one(renderer, context->description(), a, mesh);
     } catch (const nlohmann::json::exception& e) {

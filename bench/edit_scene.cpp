@@ -25,7 +25,7 @@ void EditScene::frame() {
 void EditScene::edit(const std::vector<int>& vertices) {
   const double scale = grow_ ? 1.1 : 1.0 / 1.1;
   grow_ = !grow_;
-  for (const int v : vertices) mesh_.set_covariance(size_t(v), mesh_.covariances[size_t(v)] * scale);
+  for (const int v : vertices) mesh_.set_covariance(size_t(v), mesh_.covariance(size_t(v)) * scale);
   renderer_.update_vertices(mesh_, vertices);
 }
 

@@ -48,7 +48,7 @@ nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptio
                                    : o.pixels > 0.0f ? TriangleMesh{}
                                                      : tessellate(renderer.tables().plans, points, int(o.level));
     const FrameTiming edit = time_gl_work([&] {
-      mesh.set_covariance(size_t(edited[0]), mesh.covariances[size_t(edited[0])] * (grow ? 1.1 : 1.0 / 1.1));
+      mesh.set_covariance(size_t(edited[0]), mesh.covariance(size_t(edited[0])) * (grow ? 1.1 : 1.0 / 1.1));
       grow = !grow;
       renderer.update_vertices(mesh, edited);
       renderer.draw(target, camera, o);

@@ -35,7 +35,7 @@ CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::v
                 std::to_string(covariances.size()) + " covariances");
   CovarianceMesh m;
   m.covariances = covariances;
-  m.mesh.reserve(means.size(), 2 * faces.size() + means.size(), faces.size());
+  m.mesh.reserve(means.size(), 0, 0);  // edges and faces: add_faces, at their exact counts
   for (const Vec3& p : means) m.mesh.add_vertex(to_point(p));
   PolygonTopology t;
   t.n_vertices = int(means.size());

@@ -162,7 +162,7 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
     throw Error("subdivided vertex " + std::to_string(first_invalid) + " left the cone of positive definite matrices");
   SubdivisionResult result;
   PolyMesh& out = result.mesh.mesh;
-  out.reserve(means.size(), t.verts.size(), size_t(t.n_faces()));
+  out.reserve(means.size(), 0, 0);  // edges and faces: add_faces, at their exact counts
   for (const Vec3& m : means) out.add_vertex(to_point(m));
   add_faces(out, t, "subdivided mesh");
   result.mesh.covariances = std::move(covariances);
