@@ -98,7 +98,8 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   if (!position_aov.empty()) write_image(position_aov, target.read(1), kPositionChannels);
   if (!normal_aov.empty()) write_image(normal_aov, target.read(2), kNormalChannels);
   std::ostringstream tessellation;
-  if (o.pixels > 0) tessellation << "adaptive " << o.pixels << " px";
+  if (a.reference >= 0) tessellation << "reference level " << a.reference;
+  else if (o.pixels > 0) tessellation << "adaptive " << o.pixels << " px";
   else tessellation << "level " << a.level;
   std::cout << "wrote " << a.output << " (" << width << "x" << height << ", " << renderer.tables().plans.n_patches() << " patches, "
             << tessellation.str() << ", " << description << ")\n";

@@ -1,5 +1,6 @@
 #include "core/ev_corner_masks.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace gps {
@@ -19,15 +20,20 @@ CornerMasks extraordinary_corner_masks(const Eigen::MatrixXd& step, Eigen::RowVe
   masks.position = power.row(0);
   if ((power.rowwise() - masks.position).cwiseAbs().maxCoeff() > 1e-12)
     throw std::logic_error("extraordinary corner: the subdivision step does not converge to one limit point");
-  // Subspace iteration on {d_s, d_t}; the limit's own part (weights summing to 1) is removed each step.
+  // Subspace iteration on {d_s, d_t}; the limit's own part (weights summing to 1) is removed each
+  // step. It converges as (|λ₄| / |λ₃|)ⁿ: at high valences the next eigenvalue is close (0.95 of the
+  // subdominant one at Catmull-Clark valence 16, 0.997 at 64), so it runs until the masks stop
+  // changing, not a fixed count.
   const auto without_position = [&](Eigen::RowVectorXd r) { return Eigen::RowVectorXd(r - r.sum() * masks.position); };
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < 50000; ++i) {
+    const Eigen::RowVectorXd last_s = d_s, last_t = d_t;
     d_s = without_position(d_s * step);
     d_t = without_position(d_t * step);
     const double length = d_s.norm();
     d_s /= length;
     d_t -= d_t.dot(d_s) * d_s;
     d_t /= d_t.norm();
+    if (i >= 200 && std::max((d_s - last_s).cwiseAbs().maxCoeff(), (d_t - last_t).cwiseAbs().maxCoeff()) < 1e-16) break;
   }
   masks.d_s = d_s;
   masks.d_t = d_t;

@@ -1,11 +1,13 @@
 #include "core/reference_subdivision.h"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "core/catmull_clark.h"
 #include "core/dual_map.h"
 #include "core/error.h"
 #include "core/limit_masks.h"
+#include "core/limit_tangents.h"
 
 namespace gps {
 
@@ -96,9 +98,14 @@ std::vector<PatchParam> vertex_params_of(const PolygonTopology& t, const CornerP
   return out;
 }
 
+// The limit tangents q_u, q_v at each vertex (first, second), where the limit projection is taken.
+struct LimitTangents {
+  std::vector<Dual> first, second;
+};
+
 template <class T>
 std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, const SubdivisionOptions& o,
-                   PolygonTopology* final_topology, CornerParams* params) {
+                   PolygonTopology* final_topology, CornerParams* params, LimitTangents* tangents = nullptr) {
   if (o.levels < 0 || o.levels > 8)
     throw usage_error("subdivision levels must be 0..8, got " + std::to_string(o.levels));
   PolygonTopology t = base;
@@ -120,13 +127,26 @@ std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, co
     const MeshConnectivity c = connectivity_of(t);
     if (o.scheme == Scheme::loop) {
       if (o.levels == 0) loop_topology(t, c);  // refuses non-triangle meshes
+      if constexpr (std::is_same_v<T, Dual>)
+        if (tangents) limit_tangents(t, c, p, true, tangents->first, tangents->second);
       p = loop_limit(t, c, p, o.loop_beta);
     } else if (all_quads(t)) {
+      if constexpr (std::is_same_v<T, Dual>)
+        if (tangents) limit_tangents(t, c, p, false, tangents->first, tangents->second);
       p = catmull_clark_limit(t, c, p);
     } else {
-      // A vertex's limit is that of its vertex point one level down, where every face is a quad.
+      // A vertex's limit (and tangent plane) is that of its vertex point one level down, where
+      // every face is a quad.
       const PolygonTopology finer = catmull_clark_topology(t, c);
-      std::vector<T> limit = catmull_clark_limit(finer, connectivity_of(finer), catmull_clark_values(t, c, p));
+      const MeshConnectivity finer_c = connectivity_of(finer);
+      const std::vector<T> finer_p = catmull_clark_values(t, c, p);
+      if constexpr (std::is_same_v<T, Dual>)
+        if (tangents) {
+          limit_tangents(finer, finer_c, finer_p, false, tangents->first, tangents->second);
+          tangents->first.resize(p.size());
+          tangents->second.resize(p.size());
+        }
+      std::vector<T> limit = catmull_clark_limit(finer, finer_c, finer_p);
       limit.resize(p.size());
       p = std::move(limit);
     }
@@ -143,7 +163,9 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   PolygonTopology t;
   CornerParams params;
   const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
-  const std::vector<Dual> refined = run(base, q, options, &t, with_params ? &params : nullptr);
+  LimitTangents tangents;
+  const bool with_normals = options.normals && options.limit;
+  const std::vector<Dual> refined = run(base, q, options, &t, with_params ? &params : nullptr, with_normals ? &tangents : nullptr);
 
   std::vector<Vec3> means(refined.size());
   std::vector<Mat3> covariances(refined.size());
@@ -166,7 +188,13 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   for (const Vec3& m : means) out.add_vertex(to_point(m));
   add_faces(out, t, "subdivided mesh");
   result.mesh.covariances = std::move(covariances);
-  if (with_params) result.vertex_params = vertex_params_of(t, params);
+  if (with_params) {
+    result.vertex_params = vertex_params_of(t, params);
+    for (PatchParam& p : params)
+      if (p.patch < 0) p.patch = -1 - p.patch;
+    result.corner_params = std::move(params);
+  }
+  if (with_normals) result.normals = limit_normals(refined, means, tangents.first, tangents.second);
   return result;
 }
 
