@@ -78,8 +78,9 @@ TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
 
 // Every sample's patches (exact extraordinary nodes included) under its own scheme and under
 // Catmull-Clark, float on the GPU against double on the CPU (issue 11: ≤ 2e-6 of the diagonal, 0.05°).
-// The pawn's inferred covariances are thin at its poles: there q_u, q_v are differences of 9D values
-// of size ~1e4 and float keeps 0.35° of the normal, on regular nodes as on extraordinary ones.
+// The pawn's inferred covariances are thin at its poles (eigenvalues down to 9.3e-7): there q̂ and
+// q̄ reach 1e6 and q_u, q_v are their differences; float keeps 0.12° of the normal next to the
+// valence-32 poles (mapping back in double changes nothing measurable: it is the 9D sums).
 TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
   for (const std::string& name : sample_names()) {
     const CovarianceMesh mesh = make_sample(name, 300);
@@ -92,7 +93,7 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
                     name.c_str(), scheme ? "cc" : "auto", level, e.position, e.normal_degrees, e.count);
         EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
         EXPECT_LT(e.position, 2e-6) << name << " level " << level;
-        EXPECT_LT(e.normal_degrees, name == "pawn" ? 0.5 : 0.05) << name << " level " << level;
+        EXPECT_LT(e.normal_degrees, name == "pawn" ? 0.2 : 0.05) << name << " level " << level;
       }
     }
   }
