@@ -113,8 +113,11 @@ VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
 }
 
 void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source) {
+  add_faces(mesh, t, connectivity_of(t), source);
+}
+
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source) {
   using HH = PolyMesh::HalfedgeHandle;
-  const MeshConnectivity c = connectivity_of(t);
   for (int e = 0; e + 1 < c.n_edges(); ++e)  // equal edges are neighbours in connectivity_of's order
     if (c.edge_verts[2 * size_t(e)] == c.edge_verts[2 * size_t(e) + 2] && c.edge_verts[2 * size_t(e) + 1] == c.edge_verts[2 * size_t(e) + 3])
       throw Error(source + ": face " + std::to_string(c.edge_faces[2 * size_t(e) + 2]) +

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/catmull_clark.h"
+#include "core/catmull_clark_connectivity.h"
 #include "core/dual_map.h"
 #include "core/error.h"
 #include "core/limit_masks.h"
@@ -98,26 +99,28 @@ std::vector<PatchParam> vertex_params_of(const PolygonTopology& t, const CornerP
 
 template <class T>
 std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, const SubdivisionOptions& o,
-                   PolygonTopology* final_topology, CornerParams* params) {
+                   PolygonTopology* final_topology, MeshConnectivity* final_connectivity, CornerParams* params) {
   if (o.levels < 0 || o.levels > 8)
     throw usage_error("subdivision levels must be 0..8, got " + std::to_string(o.levels));
   PolygonTopology t = base;
+  MeshConnectivity c = connectivity_of(t);
   std::vector<T> p = values;
   if (params) *params = o.scheme == Scheme::loop ? loop_base_corner_params(base) : base_corner_params(base);
   for (int level = 0; level < o.levels; ++level) {
-    const MeshConnectivity c = connectivity_of(t);
     if (o.scheme == Scheme::catmull_clark) {
       p = catmull_clark_values(t, c, p);
       if (params) *params = refine_corner_params(t, *params);
+      MeshConnectivity finer = catmull_clark_connectivity(t, c);
       t = catmull_clark_topology(t, c);
+      c = std::move(finer);
     } else {
       p = loop_values(t, c, p, o.loop_beta);
       if (params) *params = refine_loop_corner_params(t, *params);
       t = loop_topology(t, c);
+      c = connectivity_of(t);
     }
   }
   if (o.limit) {
-    const MeshConnectivity c = connectivity_of(t);
     if (o.scheme == Scheme::loop) {
       if (o.levels == 0) loop_topology(t, c);  // refuses non-triangle meshes
       p = loop_limit(t, c, p, o.loop_beta);
@@ -126,12 +129,13 @@ std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, co
     } else {
       // A vertex's limit is that of its vertex point one level down, where every face is a quad.
       const PolygonTopology finer = catmull_clark_topology(t, c);
-      std::vector<T> limit = catmull_clark_limit(finer, connectivity_of(finer), catmull_clark_values(t, c, p));
+      std::vector<T> limit = catmull_clark_limit(finer, catmull_clark_connectivity(t, c), catmull_clark_values(t, c, p));
       limit.resize(p.size());
       p = std::move(limit);
     }
   }
   *final_topology = std::move(t);
+  if (final_connectivity) *final_connectivity = std::move(c);
   return p;
 }
 
@@ -141,9 +145,10 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   const PolygonTopology base = topology_of(mesh.mesh);
   const std::vector<Dual> q = base_points(mesh);
   PolygonTopology t;
+  MeshConnectivity c;
   CornerParams params;
   const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
-  const std::vector<Dual> refined = run(base, q, options, &t, with_params ? &params : nullptr);
+  const std::vector<Dual> refined = run(base, q, options, &t, &c, with_params ? &params : nullptr);
 
   std::vector<Vec3> means(refined.size());
   std::vector<Mat3> covariances(refined.size());
@@ -164,7 +169,7 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   PolyMesh& out = result.mesh.mesh;
   out.reserve(means.size(), 0, 0);  // edges and faces: add_faces, at their exact counts
   for (const Vec3& m : means) out.add_vertex(to_point(m));
-  add_faces(out, t, "subdivided mesh");
+  add_faces(out, t, c, "subdivided mesh");
   result.mesh.covariances = std::move(covariances);
   if (with_params) result.vertex_params = vertex_params_of(t, params);
   return result;
@@ -174,7 +179,7 @@ std::vector<Vec3> subdivide_points(const CovarianceMesh& mesh, const Subdivision
   std::vector<Vec3> points(mesh.n_vertices());
   for (size_t i = 0; i < points.size(); ++i) points[i] = mesh.mean(i);
   PolygonTopology t;
-  return run(topology_of(mesh.mesh), points, options, &t, nullptr);
+  return run(topology_of(mesh.mesh), points, options, &t, nullptr, nullptr);
 }
 
 }  // namespace gps
