@@ -35,26 +35,25 @@ CornerParams base_corner_params(const PolygonTopology& t) {
 
 PatchParam midpoint(const PatchParam& a, const PatchParam& b) { return {a.patch, 0.5 * (a.u + b.u), 0.5 * (a.v + b.v)}; }
 
-// Corner params of the children, in catmull_clark_topology() order.
-CornerParams refine_corner_params(const PolygonTopology& t, const CornerParams& params) {
-  CornerParams out;
-  out.reserve(4 * t.verts.size());
+// Corner params of the children, in catmull_clark_topology() order: put(i, param) for child corner i.
+template <class Put>
+void refine_corner_params(const PolygonTopology& t, const CornerParams& params, Put put) {
+  size_t i = 0;
   for (int f = 0; f < t.n_faces(); ++f) {
     const int o = t.offsets[size_t(f)], n = t.face_size(f);
     const PatchParam* p = &params[size_t(o)];
     if (p[0].patch < 0) {  // an n-gon's child k is patch k of the face
       for (int k = 0; k < n; ++k) {
         const int patch = -1 - p[k].patch;
-        out.insert(out.end(), {{patch, 0, 0}, {patch, 1, 0}, {patch, 1, 1}, {patch, 0, 1}});
+        for (const PatchParam& q : {PatchParam{patch, 0, 0}, {patch, 1, 0}, {patch, 1, 1}, {patch, 0, 1}}) put(i++, q);
       }
       continue;
     }
     const PatchParam centre = {p[0].patch, 0.25 * (p[0].u + p[1].u + p[2].u + p[3].u),
                                0.25 * (p[0].v + p[1].v + p[2].v + p[3].v)};
     for (int k = 0; k < 4; ++k)
-      out.insert(out.end(), {p[k], midpoint(p[k], p[(k + 1) % 4]), centre, midpoint(p[(k + 3) % 4], p[k])});
+      for (const PatchParam& q : {p[k], midpoint(p[k], p[(k + 1) % 4]), centre, midpoint(p[(k + 3) % 4], p[k])}) put(i++, q);
   }
-  return out;
 }
 
 bool all_triangles(const PolygonTopology& t) {
@@ -75,48 +74,72 @@ CornerParams loop_base_corner_params(const PolygonTopology& t) {
   return params;
 }
 
-// Corner params of the Loop children, in loop_topology() order.
-CornerParams refine_loop_corner_params(const PolygonTopology& t, const CornerParams& params) {
-  CornerParams out;
-  out.reserve(4 * t.verts.size());
+// Corner params of the Loop children, in loop_topology() order: put(i, param) for child corner i.
+template <class Put>
+void refine_loop_corner_params(const PolygonTopology& t, const CornerParams& params, Put put) {
+  size_t i = 0;
   for (int f = 0; f < t.n_faces(); ++f) {
     const PatchParam* p = &params[size_t(t.offsets[size_t(f)])];
     const PatchParam m01 = midpoint(p[0], p[1]), m12 = midpoint(p[1], p[2]), m20 = midpoint(p[2], p[0]);
-    out.insert(out.end(), {p[0], m01, m20, p[1], m12, m01, p[2], m20, m12, m01, m12, m20});
+    for (const PatchParam& q : {p[0], m01, m20, p[1], m12, m01, p[2], m20, m12, m01, m12, m20}) put(i++, q);
   }
-  return out;
+}
+
+// A vertex takes the param of its last corner, the split base faces' marks undone.
+void put_vertex_param(std::vector<PatchParam>& vertex_params, int v, PatchParam p) {
+  if (p.patch < 0) p.patch = -1 - p.patch;
+  vertex_params[size_t(v)] = p;
 }
 
 std::vector<PatchParam> vertex_params_of(const PolygonTopology& t, const CornerParams& params) {
   std::vector<PatchParam> out(size_t(t.n_vertices));
-  for (size_t i = 0; i < t.verts.size(); ++i) {
-    PatchParam p = params[i];
-    if (p.patch < 0) p.patch = -1 - p.patch;
-    out[size_t(t.verts[i])] = p;
-  }
+  for (size_t i = 0; i < t.verts.size(); ++i) put_vertex_param(out, t.verts[i], params[i]);
   return out;
+}
+
+// One level of params from `coarse` to `fine` by refine(coarse, params, put): the corners' params,
+// or at the last level straight the vertices' (the finest corners' array would only feed them).
+template <class Refine>
+void refine_params(const PolygonTopology& coarse, const PolygonTopology& fine, bool last, CornerParams& params,
+                   std::vector<PatchParam>& vertex_params, Refine refine) {
+  if (last) {
+    vertex_params.assign(size_t(fine.n_vertices), PatchParam{});
+    refine(coarse, params, [&](size_t i, const PatchParam& p) { put_vertex_param(vertex_params, fine.verts[i], p); });
+    return;
+  }
+  CornerParams out(fine.verts.size());
+  refine(coarse, params, [&](size_t i, const PatchParam& p) { out[i] = p; });
+  params = std::move(out);
 }
 
 template <class T>
 std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, const SubdivisionOptions& o,
-                   PolygonTopology* final_topology, MeshConnectivity* final_connectivity, CornerParams* params) {
+                   PolygonTopology* final_topology, MeshConnectivity* final_connectivity,
+                   std::vector<PatchParam>* vertex_params) {
   if (o.levels < 0 || o.levels > 8)
     throw usage_error("subdivision levels must be 0..8, got " + std::to_string(o.levels));
   PolygonTopology t = base;
   MeshConnectivity c = connectivity_of(t);
   std::vector<T> p = values;
-  if (params) *params = o.scheme == Scheme::loop ? loop_base_corner_params(base) : base_corner_params(base);
+  CornerParams params;
+  if (vertex_params) params = o.scheme == Scheme::loop ? loop_base_corner_params(base) : base_corner_params(base);
+  if (vertex_params && o.levels == 0) *vertex_params = vertex_params_of(t, params);
   for (int level = 0; level < o.levels; ++level) {
+    const bool last = level + 1 == o.levels;
     if (o.scheme == Scheme::catmull_clark) {
       p = catmull_clark_values(t, c, p);
-      if (params) *params = refine_corner_params(t, *params);
-      MeshConnectivity finer = catmull_clark_connectivity(t, c);
-      t = catmull_clark_topology(t, c);
-      c = std::move(finer);
+      MeshConnectivity finer_connectivity = catmull_clark_connectivity(t, c);
+      PolygonTopology finer = catmull_clark_topology(t, c);
+      if (vertex_params)
+        refine_params(t, finer, last, params, *vertex_params, [](const auto&... a) { refine_corner_params(a...); });
+      t = std::move(finer);
+      c = std::move(finer_connectivity);
     } else {
       p = loop_values(t, c, p, o.loop_beta);
-      if (params) *params = refine_loop_corner_params(t, *params);
-      t = loop_topology(t, c);
+      PolygonTopology finer = loop_topology(t, c);
+      if (vertex_params)
+        refine_params(t, finer, last, params, *vertex_params, [](const auto&... a) { refine_loop_corner_params(a...); });
+      t = std::move(finer);
       c = connectivity_of(t);
     }
   }
@@ -146,9 +169,9 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   const std::vector<Dual> q = base_points(mesh);
   PolygonTopology t;
   MeshConnectivity c;
-  CornerParams params;
+  SubdivisionResult result;
   const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
-  const std::vector<Dual> refined = run(base, q, options, &t, &c, with_params ? &params : nullptr);
+  const std::vector<Dual> refined = run(base, q, options, &t, &c, with_params ? &result.vertex_params : nullptr);
 
   std::vector<Vec3> means(refined.size());
   std::vector<Mat3> covariances(refined.size());
@@ -165,13 +188,11 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   }
   if (first_invalid < refined.size())
     throw Error("subdivided vertex " + std::to_string(first_invalid) + " left the cone of positive definite matrices");
-  SubdivisionResult result;
   PolyMesh& out = result.mesh.mesh;
   out.reserve(means.size(), 0, 0);  // edges and faces: add_faces, at their exact counts
   for (const Vec3& m : means) out.add_vertex(to_point(m));
   add_faces(out, t, c, "subdivided mesh");
   result.mesh.covariances = std::move(covariances);
-  if (with_params) result.vertex_params = vertex_params_of(t, params);
   return result;
 }
 
