@@ -99,6 +99,9 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
 VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
   const int n_faces = c.n_vertex_faces(v);
   if (n_faces == 0) return VertexRole::isolated;
+  // Each face at v brings two of v's edges and each edge has one or two faces, so 2F = 2E − B with B
+  // the boundary edges at v: as many edges as faces means none (without reading every edge's faces).
+  if (c.valence(v) == n_faces) return VertexRole::interior;
   int found = 0;
   for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
     const int e = c.vertex_edges[size_t(i)];
@@ -122,10 +125,14 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity&
     if (c.edge_verts[2 * size_t(e)] == c.edge_verts[2 * size_t(e) + 2] && c.edge_verts[2 * size_t(e) + 1] == c.edge_verts[2 * size_t(e) + 3])
       throw Error(source + ": face " + std::to_string(c.edge_faces[2 * size_t(e) + 2]) +
                   " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
-  // Every element's storage at its final size at once: growing by doubling would hold up to twice it.
-  mesh.reserve(mesh.n_vertices(), size_t(c.n_edges()), size_t(t.n_faces()));
-  for (int e = 0; e < c.n_edges(); ++e)
-    mesh.new_edge(PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e)]), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e) + 1]));
+  // Every element's storage at its final size at once (growing by doubling would hold up to twice
+  // it): resize() adds the default edges and faces that new_edge() and new_face() would, and resizes
+  // the properties once rather than per element.
+  mesh.resize(mesh.n_vertices(), size_t(c.n_edges()), size_t(t.n_faces()));
+  for (int e = 0; e < c.n_edges(); ++e) {  // as new_edge(edge_verts[2e], edge_verts[2e + 1])
+    mesh.set_vertex_handle(HH(2 * e), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e) + 1]));
+    mesh.set_vertex_handle(HH(2 * e + 1), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e)]));
+  }
   // Corner k of a face owns the half-edge from its vertex to the next: 2e (along the edge's order) or 2e + 1.
   std::vector<int> halfedge(t.verts.size());
   std::vector<char> used(2 * size_t(c.n_edges()), 0);
@@ -139,7 +146,7 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity&
       halfedge[size_t(k)] = h;
     }
   for (int f = 0; f < t.n_faces(); ++f) {
-    const auto fh = mesh.new_face();
+    const PolyMesh::FaceHandle fh(f);
     const int begin = t.offsets[size_t(f)], end = t.offsets[size_t(f) + 1];
     for (int k = begin; k < end; ++k) {
       const HH h(halfedge[size_t(k)]);
