@@ -112,10 +112,17 @@ void refine_params(const PolygonTopology& coarse, const PolygonTopology& fine, b
   params = std::move(out);
 }
 
+// The mesh after N levels, and its values before any limit.
 template <class T>
-std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, const SubdivisionOptions& o,
-                   PolygonTopology* final_topology, MeshConnectivity* final_connectivity,
-                   std::vector<PatchParam>* vertex_params) {
+struct Refined {
+  PolygonTopology topology;
+  MeshConnectivity connectivity;
+  std::vector<T> values;
+};
+
+template <class T>
+Refined<T> refine(const PolygonTopology& base, const std::vector<T>& values, const SubdivisionOptions& o,
+                  std::vector<PatchParam>* vertex_params) {
   if (o.levels < 0 || o.levels > 8)
     throw usage_error("subdivision levels must be 0..8, got " + std::to_string(o.levels));
   PolygonTopology t = base;
@@ -143,64 +150,70 @@ std::vector<T> run(const PolygonTopology& base, const std::vector<T>& values, co
       c = connectivity_of(t);
     }
   }
-  if (o.limit) {
-    if (o.scheme == Scheme::loop) {
-      if (o.levels == 0) loop_topology(t, c);  // refuses non-triangle meshes
-      p = loop_limit(t, c, p, o.loop_beta);
-    } else if (all_quads(t)) {
-      p = catmull_clark_limit(t, c, p);
-    } else {
-      // A vertex's limit is that of its vertex point one level down, where every face is a quad.
-      const PolygonTopology finer = catmull_clark_topology(t, c);
-      std::vector<T> limit = catmull_clark_limit(finer, catmull_clark_connectivity(t, c), catmull_clark_values(t, c, p));
-      limit.resize(p.size());
-      p = std::move(limit);
-    }
+  return {std::move(t), std::move(c), std::move(p)};
+}
+
+// Each vertex's final value, its limit position or its refined value, handed to put(v, value) as it
+// is made (from all cores for a large mesh): no array of limits is kept.
+template <class T>
+void put_final_values(const Refined<T>& r, const SubdivisionOptions& o, const PutLimit<T>& put) {
+  const PolygonTopology& t = r.topology;
+  const MeshConnectivity& c = r.connectivity;
+  if (!o.limit) {
+#pragma omp parallel for if (t.n_vertices >= kParallelFaces)
+    for (int v = 0; v < t.n_vertices; ++v) put(v, r.values[size_t(v)]);
+  } else if (o.scheme == Scheme::loop) {
+    if (o.levels == 0) loop_topology(t, c);  // refuses non-triangle meshes
+    loop_limit(t, c, r.values, o.loop_beta, put);
+  } else if (all_quads(t)) {
+    catmull_clark_limit(t, c, r.values, t.n_vertices, put);
+  } else {
+    // A vertex's limit is that of its vertex point one level down, where every face is a quad.
+    catmull_clark_limit(catmull_clark_topology(t, c), catmull_clark_connectivity(t, c), catmull_clark_values(t, c, r.values),
+                        t.n_vertices, put);
   }
-  *final_topology = std::move(t);
-  if (final_connectivity) *final_connectivity = std::move(c);
-  return p;
 }
 
 }  // namespace
 
 SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
   const PolygonTopology base = topology_of(mesh.mesh);
-  const std::vector<Dual> q = base_points(mesh);
-  PolygonTopology t;
-  MeshConnectivity c;
   SubdivisionResult result;
   const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
-  const std::vector<Dual> refined = run(base, q, options, &t, &c, with_params ? &result.vertex_params : nullptr);
+  const Refined<Dual> r = refine(base, base_points(mesh), options, with_params ? &result.vertex_params : nullptr);
 
-  std::vector<Vec3> means(refined.size());
-  std::vector<Mat3> covariances(refined.size());
-  size_t first_invalid = refined.size();
-#pragma omp parallel for if (refined.size() >= size_t(kParallelFaces)) reduction(min : first_invalid)
-  for (size_t i = 0; i < refined.size(); ++i) {
-    const auto g = from_dual(refined[i]);
-    if (!g) {
-      first_invalid = std::min(first_invalid, i);
-      continue;
-    }
-    means[i] = g->mean;
-    covariances[i] = g->covariance;
-  }
-  if (first_invalid < refined.size())
-    throw Error("subdivided vertex " + std::to_string(first_invalid) + " left the cone of positive definite matrices");
+  // The vertices as add_vertex() adds them, with storage at its final size and the properties resized
+  // once; each Gaussian is mapped back as its value is made, its mean going straight to its point.
+  // Edges and faces: add_faces, at their exact counts.
+  const int n = r.topology.n_vertices;
   PolyMesh& out = result.mesh.mesh;
-  out.reserve(means.size(), 0, 0);  // edges and faces: add_faces, at their exact counts
-  for (const Vec3& m : means) out.add_vertex(to_point(m));
-  add_faces(out, t, c, "subdivided mesh");
-  result.mesh.covariances = std::move(covariances);
+  out.resize(size_t(n), 0, 0);
+  std::vector<Mat3>& covariances = result.mesh.covariances;
+  covariances.resize(size_t(n));
+  int first_invalid = n;
+  put_final_values<Dual>(r, options, [&](int v, const Dual& q) {
+    const auto g = from_dual(q);
+    if (!g) {
+#pragma omp critical
+      first_invalid = std::min(first_invalid, v);
+      return;
+    }
+    out.set_point(PolyMesh::VertexHandle(v), to_point(g->mean));
+    covariances[size_t(v)] = g->covariance;
+  });
+  if (first_invalid < n)
+    throw Error("subdivided vertex " + std::to_string(first_invalid) + " left the cone of positive definite matrices");
+  add_faces(out, r.topology, r.connectivity, "subdivided mesh");
   return result;
 }
 
 std::vector<Vec3> subdivide_points(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
   std::vector<Vec3> points(mesh.n_vertices());
   for (size_t i = 0; i < points.size(); ++i) points[i] = mesh.mean(i);
-  PolygonTopology t;
-  return run(topology_of(mesh.mesh), points, options, &t, nullptr, nullptr);
+  const Refined<Vec3> r = refine(topology_of(mesh.mesh), points, options, nullptr);
+  points.resize(size_t(r.topology.n_vertices));
+  put_final_values<Vec3>(r, options, [&](int v, const Vec3& p) { points[size_t(v)] = p; });
+  return points;
 }
 
 }  // namespace gps
