@@ -134,27 +134,27 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity&
     mesh.set_vertex_handle(HH(2 * e + 1), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e)]));
   }
   // Corner k of a face owns the half-edge from its vertex to the next: 2e (along the edge's order) or 2e + 1.
-  std::vector<int> halfedge(t.verts.size());
   std::vector<char> used(2 * size_t(c.n_edges()), 0);
-  for (int f = 0; f < t.n_faces(); ++f)
-    for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
+  std::vector<int> halfedge;  // those of one face
+  for (int f = 0; f < t.n_faces(); ++f) {
+    const int begin = t.offsets[size_t(f)], end = t.offsets[size_t(f) + 1];
+    halfedge.clear();
+    for (int k = begin; k < end; ++k) {
       const int e = c.face_edges[size_t(k)];
       const int h = 2 * e + (t.verts[size_t(k)] == c.edge_verts[2 * size_t(e)] ? 0 : 1);
       if (used[size_t(h)]++)
         throw Error(source + ": face " + std::to_string(f) +
                     " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
-      halfedge[size_t(k)] = h;
+      halfedge.push_back(h);
     }
-  for (int f = 0; f < t.n_faces(); ++f) {
     const PolyMesh::FaceHandle fh(f);
-    const int begin = t.offsets[size_t(f)], end = t.offsets[size_t(f) + 1];
-    for (int k = begin; k < end; ++k) {
+    for (int k = 0; k < end - begin; ++k) {
       const HH h(halfedge[size_t(k)]);
       mesh.set_face_handle(h, fh);
-      mesh.set_next_halfedge_handle(h, HH(halfedge[size_t(k + 1 < end ? k + 1 : begin)]));
-      mesh.set_halfedge_handle(PolyMesh::VertexHandle(t.verts[size_t(k)]), h);
+      mesh.set_next_halfedge_handle(h, HH(halfedge[size_t(k + 1 < end - begin ? k + 1 : 0)]));
+      mesh.set_halfedge_handle(PolyMesh::VertexHandle(t.verts[size_t(begin + k)]), h);
     }
-    mesh.set_halfedge_handle(fh, HH(halfedge[size_t(end - 1)]));  // as add_face: fv_range starts at corner 0
+    mesh.set_halfedge_handle(fh, HH(halfedge.back()));  // as add_face: fv_range starts at corner 0
   }
   // Boundary half-edges: each vertex has at most one going out (one fan), which is its outgoing half-edge.
   const auto non_manifold = [&](int v) {
