@@ -121,13 +121,12 @@ struct Refined {
 };
 
 template <class T>
-Refined<T> refine(const PolygonTopology& base, const std::vector<T>& values, const SubdivisionOptions& o,
+Refined<T> refine(const PolygonTopology& base, std::vector<T> p, const SubdivisionOptions& o,
                   std::vector<PatchParam>* vertex_params) {
   if (o.levels < 0 || o.levels > 8)
     throw usage_error("subdivision levels must be 0..8, got " + std::to_string(o.levels));
   PolygonTopology t = base;
   MeshConnectivity c = connectivity_of(t);
-  std::vector<T> p = values;
   CornerParams params;
   if (vertex_params) params = o.scheme == Scheme::loop ? loop_base_corner_params(base) : base_corner_params(base);
   if (vertex_params && o.levels == 0) *vertex_params = vertex_params_of(t, params);
