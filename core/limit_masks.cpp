@@ -1,5 +1,7 @@
 #include "core/limit_masks.h"
 
+#include <algorithm>
+
 #include "core/linalg.h"
 #include "core/vertex_mask.h"
 
@@ -12,16 +14,22 @@ bool all_quads(const PolygonTopology& t) {
 }
 
 namespace {
-// Each vertex v < n: put(v, its mask applied to the values), on all cores for a large mesh (one mask per thread).
+// Each vertex v < n: put(v, its mask applied to the values), on all cores for a large mesh. A block
+// of vertices at a time: first all their masks, then all their sums, then put: the memory lookups
+// of different vertices, independent, overlap instead of each waiting behind its vertex's work.
 template <class T, class MaskOf>
 void apply_masks(int n, const std::vector<T>& p, MaskOf mask_of, const PutLimit<T>& put) {
+  constexpr int kBlock = 64;
 #pragma omp parallel if (n >= kParallelFaces)
   {
-    VertexMask mask;
+    std::vector<VertexMask> masks(kBlock);  // one block per thread, storage reused
+    std::vector<T> sums(kBlock);
 #pragma omp for
-    for (int v = 0; v < n; ++v) {
-      mask_of(v, mask);
-      put(v, mask.apply(p));
+    for (int begin = 0; begin < n; begin += kBlock) {
+      const int end = std::min(n, begin + kBlock);
+      for (int v = begin; v < end; ++v) mask_of(v, masks[size_t(v - begin)]);
+      for (int v = begin; v < end; ++v) sums[size_t(v - begin)] = masks[size_t(v - begin)].apply(p);
+      for (int v = begin; v < end; ++v) put(v, sums[size_t(v - begin)]);
     }
   }
 }

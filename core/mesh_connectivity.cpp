@@ -133,7 +133,8 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity&
     mesh.set_vertex_handle(HH(2 * e), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e) + 1]));
     mesh.set_vertex_handle(HH(2 * e + 1), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e)]));
   }
-  // Corner k of a face owns the half-edge from its vertex to the next: 2e (along the edge's order) or 2e + 1.
+  // Corner k of a face owns the half-edge from its vertex to the next: 2e along the edge's order (from
+  // the lower vertex, as connectivity_of stores it; read off the face, not the edge) or 2e + 1.
   std::vector<char> used(2 * size_t(c.n_edges()), 0);
   std::vector<int> halfedge;  // those of one face
   for (int f = 0; f < t.n_faces(); ++f) {
@@ -141,7 +142,7 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity&
     halfedge.clear();
     for (int k = begin; k < end; ++k) {
       const int e = c.face_edges[size_t(k)];
-      const int h = 2 * e + (t.verts[size_t(k)] == c.edge_verts[2 * size_t(e)] ? 0 : 1);
+      const int h = 2 * e + (t.verts[size_t(k)] < t.verts[size_t(k + 1 < end ? k + 1 : begin)] ? 0 : 1);
       if (used[size_t(h)]++)
         throw Error(source + ": face " + std::to_string(f) +
                     " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
