@@ -195,18 +195,11 @@ void limit_tangents(const PolygonTopology& t, const MeshConnectivity& c, const s
   }
 }
 
-std::vector<Vec3> limit_normals(const std::vector<Dual>& q, const std::vector<Vec3>& means,
-                                const std::vector<Dual>& first, const std::vector<Dual>& second) {
-  std::vector<Vec3> out(means.size(), Vec3::Zero());
-#pragma omp parallel for if (means.size() >= size_t(kParallelFaces))
-  for (size_t i = 0; i < means.size(); ++i) {
-    if (first[i].isZero(0.0) || second[i].isZero(0.0)) continue;
-    const Vec3 normal = mean_derivative(q[i], first[i], means[i]).cross(mean_derivative(q[i], second[i], means[i]));
-    const double length = normal.norm();
-    if (!(length > 1e-300) || !std::isfinite(length)) continue;
-    out[i] = normal / length;
-  }
-  return out;
+Vec3 limit_normal(const Dual& q, const Vec3& mean, const Dual& first, const Dual& second) {
+  if (first.isZero(0.0) || second.isZero(0.0)) return Vec3::Zero();
+  const Vec3 normal = mean_derivative(q, first, mean).cross(mean_derivative(q, second, mean));
+  const double length = normal.norm();
+  return length > 1e-300 && std::isfinite(length) ? Vec3(normal / length) : Vec3::Zero();
 }
 
 }  // namespace gps

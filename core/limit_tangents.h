@@ -31,9 +31,8 @@ bool loop_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int
 void limit_tangents(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<Dual>& p, bool loop,
                     std::vector<Dual>& first, std::vector<Dual>& second);
 
-/// Unit limit normals μ_u × μ_v (thesis Eq. 3.12 from the 9D limit points q and their tangents);
-/// zero where the tangents are missing or degenerate.
-std::vector<Vec3> limit_normals(const std::vector<Dual>& q, const std::vector<Vec3>& means,
-                                const std::vector<Dual>& first, const std::vector<Dual>& second);
+/// The unit limit normal μ_u × μ_v (thesis Eq. 3.12) at a vertex whose 9D limit is q, its mean
+/// `mean`, from its tangents; zero where they are missing or degenerate.
+Vec3 limit_normal(const Dual& q, const Vec3& mean, const Dual& first, const Dual& second);
 
 }  // namespace gps

@@ -99,6 +99,9 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
 VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
   const int n_faces = c.n_vertex_faces(v);
   if (n_faces == 0) return VertexRole::isolated;
+  // Each face at v brings two of v's edges and each edge has one or two faces, so 2F = 2E − B with B
+  // the boundary edges at v: as many edges as faces means none (without reading every edge's faces).
+  if (c.valence(v) == n_faces) return VertexRole::interior;
   int found = 0;
   for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
     const int e = c.vertex_edges[size_t(i)];
@@ -113,38 +116,46 @@ VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
 }
 
 void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source) {
+  add_faces(mesh, t, connectivity_of(t), source);
+}
+
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source) {
   using HH = PolyMesh::HalfedgeHandle;
-  const MeshConnectivity c = connectivity_of(t);
   for (int e = 0; e + 1 < c.n_edges(); ++e)  // equal edges are neighbours in connectivity_of's order
     if (c.edge_verts[2 * size_t(e)] == c.edge_verts[2 * size_t(e) + 2] && c.edge_verts[2 * size_t(e) + 1] == c.edge_verts[2 * size_t(e) + 3])
       throw Error(source + ": face " + std::to_string(c.edge_faces[2 * size_t(e) + 2]) +
                   " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
-  // Every element's storage at its final size at once: growing by doubling would hold up to twice it.
-  mesh.reserve(mesh.n_vertices(), size_t(c.n_edges()), size_t(t.n_faces()));
-  for (int e = 0; e < c.n_edges(); ++e)
-    mesh.new_edge(PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e)]), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e) + 1]));
-  // Corner k of a face owns the half-edge from its vertex to the next: 2e (along the edge's order) or 2e + 1.
-  std::vector<int> halfedge(t.verts.size());
+  // Every element's storage at its final size at once (growing by doubling would hold up to twice
+  // it): resize() adds the default edges and faces that new_edge() and new_face() would, and resizes
+  // the properties once rather than per element.
+  mesh.resize(mesh.n_vertices(), size_t(c.n_edges()), size_t(t.n_faces()));
+  for (int e = 0; e < c.n_edges(); ++e) {  // as new_edge(edge_verts[2e], edge_verts[2e + 1])
+    mesh.set_vertex_handle(HH(2 * e), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e) + 1]));
+    mesh.set_vertex_handle(HH(2 * e + 1), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e)]));
+  }
+  // Corner k of a face owns the half-edge from its vertex to the next: 2e along the edge's order (from
+  // the lower vertex, as connectivity_of stores it; read off the face, not the edge) or 2e + 1.
   std::vector<char> used(2 * size_t(c.n_edges()), 0);
-  for (int f = 0; f < t.n_faces(); ++f)
-    for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
+  std::vector<int> halfedge;  // those of one face
+  for (int f = 0; f < t.n_faces(); ++f) {
+    const int begin = t.offsets[size_t(f)], end = t.offsets[size_t(f) + 1];
+    halfedge.clear();
+    for (int k = begin; k < end; ++k) {
       const int e = c.face_edges[size_t(k)];
-      const int h = 2 * e + (t.verts[size_t(k)] == c.edge_verts[2 * size_t(e)] ? 0 : 1);
+      const int h = 2 * e + (t.verts[size_t(k)] < t.verts[size_t(k + 1 < end ? k + 1 : begin)] ? 0 : 1);
       if (used[size_t(h)]++)
         throw Error(source + ": face " + std::to_string(f) +
                     " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
-      halfedge[size_t(k)] = h;
+      halfedge.push_back(h);
     }
-  for (int f = 0; f < t.n_faces(); ++f) {
-    const auto fh = mesh.new_face();
-    const int begin = t.offsets[size_t(f)], end = t.offsets[size_t(f) + 1];
-    for (int k = begin; k < end; ++k) {
+    const PolyMesh::FaceHandle fh(f);
+    for (int k = 0; k < end - begin; ++k) {
       const HH h(halfedge[size_t(k)]);
       mesh.set_face_handle(h, fh);
-      mesh.set_next_halfedge_handle(h, HH(halfedge[size_t(k + 1 < end ? k + 1 : begin)]));
-      mesh.set_halfedge_handle(PolyMesh::VertexHandle(t.verts[size_t(k)]), h);
+      mesh.set_next_halfedge_handle(h, HH(halfedge[size_t(k + 1 < end - begin ? k + 1 : 0)]));
+      mesh.set_halfedge_handle(PolyMesh::VertexHandle(t.verts[size_t(begin + k)]), h);
     }
-    mesh.set_halfedge_handle(fh, HH(halfedge[size_t(end - 1)]));  // as add_face: fv_range starts at corner 0
+    mesh.set_halfedge_handle(fh, HH(halfedge.back()));  // as add_face: fv_range starts at corner 0
   }
   // Boundary half-edges: each vertex has at most one going out (one fan), which is its outgoing half-edge.
   const auto non_manifold = [&](int v) {

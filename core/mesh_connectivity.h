@@ -47,6 +47,8 @@ MeshConnectivity connectivity_of(const PolygonTopology& topology);
 /// searches the half-edges around each vertex: quadratic on a fan). Edges are paired by
 /// connectivity_of; throws gps::Error naming `source` and the face or vertex where the mesh is not manifold.
 void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source);
+/// The same with the topology's connectivity already built (`c` = connectivity_of(t)).
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source);
 
 /// How a vertex behaves under the boundary rules: interior, on a boundary curve, or a corner (one face).
 enum class VertexRole { interior, boundary, corner, isolated };

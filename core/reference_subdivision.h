@@ -16,7 +16,7 @@ struct SubdivisionOptions {
   int levels = 1;  // 0..8
   bool limit = false;
   LoopBeta loop_beta = LoopBeta::loop;
-  bool normals = false;  // with limit: the exact limit normals too (core/limit_tangents.h)
+  bool normals = false;  // with limit: the exact limit normals and the corners' params too (for drawing)
 };
 
 struct SubdivisionResult {
@@ -24,7 +24,8 @@ struct SubdivisionResult {
   /// For each output vertex, one (patch, u, v) where it lies: Catmull-Clark in the input mesh's patch
   /// layout (core/patch_layout.h), Loop in its triangle patches (core/loop_plan_builder.h).
   std::vector<PatchParam> vertex_params;
-  /// The same for each face corner, in face order: the corners of one face share its patch.
+  /// With options.normals, the same for each face corner, in face order: the corners of one face
+  /// share its patch.
   std::vector<PatchParam> corner_params;
   /// With options.normals: the unit limit normal at each vertex, zero where it has no tangent masks.
   std::vector<Vec3> normals;

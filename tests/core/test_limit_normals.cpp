@@ -112,8 +112,9 @@ TEST(LimitNormals, AreTheNormalsOfTheRefinedSurface) {
     EXPECT_LT(worst[0][1], 0.5) << c.name;
     EXPECT_LE(worst[0][1], worst[0][0] / 10.0) << c.name << ": inside, the fan does not close in on the mask normal as h²";
     EXPECT_LT(worst[1][1], 1.0) << c.name;
-    if (worst[1][1] > 0.01)  // below that, cone-pointy's Loop boundary has not settled into its rate
+    if (worst[1][1] > 0.01) {  // below that, cone-pointy's Loop boundary has not settled into its rate
       EXPECT_LE(worst[1][1], worst[1][0] / 3.0) << c.name << ": on the boundary, the fan does not close in on the mask normal as h";
+    }
   }
 }
 

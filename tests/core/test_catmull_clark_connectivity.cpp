@@ -1,0 +1,51 @@
+#include "core/catmull_clark_connectivity.h"
+
+#include <gtest/gtest.h>
+
+#include "core/catmull_clark.h"
+#include "core/samples.h"
+
+namespace gps {
+namespace {
+
+void expect_equal(const MeshConnectivity& a, const MeshConnectivity& b) {
+  EXPECT_EQ(a.edge_verts, b.edge_verts);
+  EXPECT_EQ(a.edge_faces, b.edge_faces);
+  EXPECT_EQ(a.face_edges, b.face_edges);
+  EXPECT_EQ(a.vertex_edge_offsets, b.vertex_edge_offsets);
+  EXPECT_EQ(a.vertex_edges, b.vertex_edges);
+  EXPECT_EQ(a.vertex_face_offsets, b.vertex_face_offsets);
+  EXPECT_EQ(a.vertex_faces, b.vertex_faces);
+  EXPECT_EQ(a.vertex_face_corners, b.vertex_face_corners);
+}
+
+// Every sample (quads, triangles, n-gons, boundaries, corners, high valence), two steps deep, and a
+// mesh large enough for the parallel loops: the refined connectivity is connectivity_of's exactly.
+TEST(CatmullClarkConnectivity, EqualsConnectivityOfTheRefinedTopology) {
+  for (const std::string& name : sample_names()) {
+    SCOPED_TRACE(name);
+    PolygonTopology t = topology_of(make_sample(name, 0).mesh);
+    MeshConnectivity c = connectivity_of(t);
+    for (int level = 0; level < 2; ++level) {
+      MeshConnectivity refined = catmull_clark_connectivity(t, c);
+      t = catmull_clark_topology(t, c);
+      expect_equal(refined, connectivity_of(t));
+      c = std::move(refined);
+    }
+  }
+  const PolygonTopology t = topology_of(make_sample("grid", 3 * kParallelFaces).mesh);
+  const MeshConnectivity c = connectivity_of(t);
+  expect_equal(catmull_clark_connectivity(t, c), connectivity_of(catmull_clark_topology(t, c)));
+}
+
+TEST(CatmullClarkConnectivity, IsolatedVerticesKeepNoEdges) {
+  PolygonTopology t;
+  t.n_vertices = 6;  // vertices 2 and 5 belong to no face
+  t.verts = {0, 1, 3, 4};
+  t.offsets = {0, 4};
+  const MeshConnectivity c = connectivity_of(t);
+  expect_equal(catmull_clark_connectivity(t, c), connectivity_of(catmull_clark_topology(t, c)));
+}
+
+}  // namespace
+}  // namespace gps
