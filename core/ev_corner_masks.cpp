@@ -23,9 +23,9 @@ CornerMasks extraordinary_corner_masks(const Eigen::MatrixXd& step, Eigen::RowVe
   // Subspace iteration on {d_s, d_t}; the limit's own part (weights summing to 1) is removed each
   // step. It converges as (|λ₄| / |λ₃|)ⁿ: at high valences the next eigenvalue is close (0.95 of the
   // subdominant one at Catmull-Clark valence 16, 0.997 at 64), so it runs until the masks stop
-  // changing, not a fixed count, four subdivision steps at a time (step⁴: a quarter of the
-  // matrix-vector products; the tangent pair keeps all but about one digit of its weaker direction
-  // between two orthogonalisations).
+  // changing (by 1e-14; rounding alone moves them by ~1e-16), not a fixed count, four subdivision
+  // steps at a time (step⁴: a quarter of the matrix-vector products; the tangent pair keeps all but
+  // about one digit of its weaker direction between two orthogonalisations).
   const Eigen::MatrixXd step2 = step * step;
   const Eigen::MatrixXd step4 = step2 * step2;
   const auto without_position = [&](Eigen::RowVectorXd r) { return Eigen::RowVectorXd(r - r.sum() * masks.position); };
@@ -37,7 +37,7 @@ CornerMasks extraordinary_corner_masks(const Eigen::MatrixXd& step, Eigen::RowVe
     d_s /= length;
     d_t -= d_t.dot(d_s) * d_s;
     d_t /= d_t.norm();
-    if (i >= 50 && std::max((d_s - last_s).cwiseAbs().maxCoeff(), (d_t - last_t).cwiseAbs().maxCoeff()) < 1e-16) break;
+    if (i >= 50 && std::max((d_s - last_s).cwiseAbs().maxCoeff(), (d_t - last_t).cwiseAbs().maxCoeff()) < 1e-14) break;
   }
   masks.d_s = d_s;
   masks.d_t = d_t;
