@@ -24,7 +24,9 @@ GPS_LAYOUT_CONST int kBindingEvTables = 10;     // Loop extraordinary tables (co
 GPS_LAYOUT_CONST int kBindingPatchEdges = 11;   // quads: patch edges and their parts (core/plan_table.h)
 GPS_LAYOUT_CONST int kBindingPatchNeighbours = 12;  // per patch edge: the patch across (core/patch_adjacency.h)
 GPS_LAYOUT_CONST int kBindingCornerOwners = 13;     // per patch corner: the patch that evaluates it
-GPS_LAYOUT_CONST int kBindingCount = 14;
+GPS_LAYOUT_CONST int kBindingCornerLimits = 14;     // per patch corner: its owner's limit point, normal, node kind
+GPS_LAYOUT_CONST int kBindingCornerList = 15;       // an edit's corners to evaluate again
+GPS_LAYOUT_CONST int kBindingCount = 16;
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;

@@ -22,10 +22,14 @@ void PlanBuffers::upload(int binding, const std::vector<T>& data) {
   glNamedBufferData(buffers_[binding], GLsizeiptr(sizes_[binding]), data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
 }
 
+// Two vec4 per patch corner: limit point and node kind, normal (shaders/corner_limit_comp.glsl).
+size_t PlanBuffers::corner_limit_floats(const PlanTable& plans) { return size_t(plans.corners()) * size_t(plans.n_patches()) * 8; }
+
 void PlanBuffers::check_fits(const PlanTables& tables, int n_vertices, int n_faces, long long storage_limit) {
   check_storage_fits("plan points", size_t(tables.stencils.n_points()) * kVec4PerPoint * 4 * sizeof(float), n_vertices, n_faces, storage_limit);
   check_storage_fits("stencil weights", tables.stencils.weights.size() * sizeof(float), n_vertices, n_faces, storage_limit);
   check_storage_fits("plan nodes", tables.plans.nodes.size() * sizeof(tables.plans.nodes[0]), n_vertices, n_faces, storage_limit);
+  check_storage_fits("corner limits", corner_limit_floats(tables.plans) * sizeof(float), n_vertices, n_faces, storage_limit);
 }
 
 void PlanBuffers::upload_tables(const PlanTables& tables) {
@@ -42,6 +46,7 @@ void PlanBuffers::upload_tables(const PlanTables& tables) {
   upload(kBindingPatchNeighbours, p.patch_neighbours);
   upload(kBindingCornerOwners, p.corner_owners);
   upload(kBindingPoints, std::vector<float>(size_t(s.n_points()) * kVec4PerPoint * 4, 0.0f));
+  upload(kBindingCornerLimits, std::vector<float>(corner_limit_floats(p), 0.0f));
 }
 
 // μ, then Σ's xx xy xz yy yz zz (shaders/dual_map_comp.glsl).
@@ -73,6 +78,8 @@ void PlanBuffers::upload_edit(const std::vector<int>& changed, const std::vector
   upload(kBindingChanged, changed);
   upload(kBindingRows, rows);
 }
+
+void PlanBuffers::upload_corner_list(const std::vector<int>& slots) { upload(kBindingCornerList, slots); }
 
 void PlanBuffers::bind() const {
   for (int b = 0; b < kBindingCount; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);

@@ -30,6 +30,8 @@ public:
   void update_gaussians(const CovarianceMesh& mesh, const std::vector<int>& changed);
   /// An edit's changed vertices and the stencil rows that read them, for the listed compute passes.
   void upload_edit(const std::vector<int>& changed, const std::vector<int>& rows);
+  /// An edit's corner slots to evaluate again (render/corner_limit_pass.h).
+  void upload_corner_list(const std::vector<int>& slots);
   /// Binds every buffer at its binding.
   void bind() const;
   /// The plan points as the compute passes left them (gpu::kVec4PerPoint vec4 each).
@@ -38,6 +40,7 @@ public:
   size_t bytes() const;
 
 private:
+  static size_t corner_limit_floats(const PlanTable& plans);
   template <class T>
   void upload(int binding, const std::vector<T>& data);
 

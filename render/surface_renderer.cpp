@@ -64,19 +64,24 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
   const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   const int n_rows = tables().stencils.n_rows();
+  const PlanTable& plans = tables().plans;
   if (changed) {
     const std::vector<int> rows = surface_->rows_reading(*changed);
     buffers_.upload_edit(*changed, rows);
+    const std::vector<int> patches = changed_patches(*changed, rows);
+    const std::vector<int> corners = CornerLimitPass::owner_slots(plans, patches);
+    buffers_.upload_corner_list(corners);
     buffers_.bind();
     compute_.run_listed(n_base_, int(changed->size()), int(rows.size()), group_limit_);
+    corners_.run_listed(plans, int(corners.size()), group_limit_);
     if (cache_.follows_edits()) {
-      const std::vector<int> patches = changed_patches(*changed, rows);
       cache_.points_changed(points_generation_, &patches);
       return;
     }
   } else {
     buffers_.bind();
     compute_.run_all(n_base_, n_rows, group_limit_);
+    corners_.run_all(plans, group_limit_);
   }
   cache_.points_changed(points_generation_, nullptr);
 }

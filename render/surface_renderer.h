@@ -15,6 +15,7 @@
 #include "core/triangle_mesh.h"
 #include "view/camera.h"
 #include "render/cage_lines.h"
+#include "render/corner_limit_pass.h"
 #include "render/draw_options.h"
 #include "render/dual_stencil_pass.h"
 #include "render/ellipsoid_overlay.h"
@@ -99,6 +100,7 @@ private:
   std::unique_ptr<const PatchReaders> readers_;  // built at the first edit the cache can follow
   PlanBuffers buffers_;
   DualStencilPass compute_;
+  CornerLimitPass corners_;
   PatchDraw patches_;
   StaticTriangles static_triangles_;
   CageLines cage_;

@@ -6,6 +6,8 @@
 // defines kCorners, boundary_point(), edge_point_uv(), tess_uv() (the tessellation coordinate as
 // patch parameters), evaluate_limit() and grid_coordinates().
 uniform mat4 u_view_projection;
+// Every patch corner's limit point (xyz, node kind in w) and normal, from its owner (corner_limit_comp.glsl).
+layout(std430, binding = kBindingCornerLimits) readonly buffer CornerLimits { vec4 corner_limits[]; };
 
 out vec3 v_position;
 out vec3 v_normal;
@@ -20,15 +22,25 @@ void main() {
   int patch_id = tc_patch;
   vec2 eval_uv = uv;
   EdgePoint e;
+  int corner = -1;
   if (boundary_point(e)) {
     uv = edge_point_uv(e);
     EdgePoint c = canonical_boundary_point(e, kCorners);
     patch_id = c.patch_id;
     eval_uv = edge_point_uv(c);
+    if (c.i == 0) corner = c.edge;  // a corner: step 0 of its owner's edge that starts there
   }
-  evaluate_limit(patch_id, eval_uv, mu, mu_u, mu_v, v_kind);
+  if (corner >= 0) {
+    int slot = kCorners * patch_id + corner;
+    vec4 limit = corner_limits[2 * slot];
+    mu = limit.xyz;
+    v_kind = int(limit.w);
+    v_normal = corner_limits[2 * slot + 1].xyz;
+  } else {
+    evaluate_limit(patch_id, eval_uv, mu, mu_u, mu_v, v_kind);
+    v_normal = normalize(cross(mu_u, mu_v));
+  }
   v_position = mu;
-  v_normal = normalize(cross(mu_u, mu_v));
   v_patch_uv = vec3(float(tc_patch), uv);
   v_evaluated = vec3(float(patch_id), eval_uv);
   v_grid = grid_coordinates();

@@ -213,12 +213,12 @@ constexpr const char* kConstantsProbe = R"glsl(
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) writeonly buffer Out { int outputs[]; };
 void main() {
-  int values[27] = int[27](kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
+  int values[29] = int[29](kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
                            kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingEvTables,
-                           kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCount,
+                           kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCornerLimits, kBindingCornerList, kBindingCount,
                            kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary,
                            kPatchEdgeInts, kPatchEdgeStride, kEdgeWhole, kEdgeWholeBesideHalves, kEdgeFirstHalf, kEdgeSecondHalf);
-  for (int k = 0; k < 27; ++k) outputs[k] = values[k];
+  for (int k = 0; k < 29; ++k) outputs[k] = values[k];
 }
 )glsl";
 
@@ -228,7 +228,7 @@ TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
   using namespace gpu;
   const std::vector<int> cpu = {kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
                                 kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingEvTables,
-                                kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCount,
+                                kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCornerLimits, kBindingCornerList, kBindingCount,
                                 kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary,
                                 kPatchEdgeInts, kPatchEdgeStride, kEdgeWhole, kEdgeWholeBesideHalves, kEdgeFirstHalf, kEdgeSecondHalf};
   const ShaderProgram probe("constants_probe", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::patch_basis, kConstantsProbe}}});
