@@ -22,6 +22,14 @@ void dispatch_split(const ShaderProgram& program, int count, int group_limit) {
   }
 }
 
+void run_compute_pass(const ShaderProgram& program, int count, bool use_list, int group_limit) {
+  program.use();
+  program.set("u_count", count);
+  program.set("u_use_list", use_list ? 1 : 0);
+  dispatch_split(program, count, group_limit);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
 void check_storage_fits(const char* what, size_t bytes, int n_vertices, int n_faces, long long limit) {
   GLint64 max_block = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);

@@ -44,12 +44,7 @@ std::vector<int> CornerLimitPass::owner_slots(const PlanTable& plans, const std:
 
 void CornerLimitPass::run(const PlanTable& plans, int count, bool use_list, int group_limit) const {
   if (count <= 0) return;
-  const ShaderProgram& program = plans.shape == PatchShape::triangle ? triangles_ : quads_;
-  program.use();
-  program.set("u_count", count);
-  program.set("u_use_list", use_list ? 1 : 0);
-  dispatch_split(program, count, group_limit);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  run_compute_pass(plans.shape == PatchShape::triangle ? triangles_ : quads_, count, use_list, group_limit);
   check_gl_errors("the corner pass");
 }
 

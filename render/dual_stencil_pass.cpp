@@ -13,17 +13,10 @@ DualStencilPass::DualStencilPass()
       stencil_("stencil", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::stencil_comp}}}) {}
 
 void DualStencilPass::run(int n_base, int vertex_count, int row_count, bool use_list, int group_limit) const {
-  dual_map_.use();
-  dual_map_.set("u_count", vertex_count);
-  dual_map_.set("u_use_list", use_list ? 1 : 0);
-  dispatch_split(dual_map_, vertex_count, group_limit);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  run_compute_pass(dual_map_, vertex_count, use_list, group_limit);
   stencil_.use();
-  stencil_.set("u_count", row_count);
   stencil_.set("u_n_base", n_base);
-  stencil_.set("u_use_list", use_list ? 1 : 0);
-  dispatch_split(stencil_, row_count, group_limit);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  run_compute_pass(stencil_, row_count, use_list, group_limit);
   check_gl_errors("the compute passes");
 }
 

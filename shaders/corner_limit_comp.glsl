@@ -3,13 +3,10 @@
 // (limit_point_tese.glsl). A corner at an extraordinary vertex is its exact node's limit masks over
 // K points: evaluated in the tessellation stage, the SIMD batch around it ran that and the regular
 // leaf both (issue 11). Preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
-layout(local_size_x = kWorkGroupSize) in;
+#include "shaders/compute_pass.glsl"
 layout(std430, binding = kBindingCornerOwners) readonly buffer CornerOwners { int corner_owners[]; };
 layout(std430, binding = kBindingCornerLimits) writeonly buffer CornerLimits { vec4 corner_limits[]; };
 layout(std430, binding = kBindingCornerList) readonly buffer CornerList { int corner_list[]; };
-uniform int u_count;
-uniform int u_first;  // this dispatch's first invocation (dispatches split to the device's group limit)
-uniform int u_use_list;
 
 #ifdef GPS_TRIANGLE_PATCHES
 const int kCorners = 3;
@@ -18,8 +15,8 @@ const int kCorners = 4;
 #endif
 
 void main() {
-  int i = u_first + int(gl_GlobalInvocationID.x);
-  if (i >= u_count) return;
+  int i = compute_invocation();
+  if (i < 0) return;
   int slot = u_use_list != 0 ? corner_list[i] : i;  // kCorners · patch + corner
   int patch_id = slot / kCorners, corner = slot - kCorners * patch_id;
   if (corner_owners[2 * slot] != patch_id || corner_owners[2 * slot + 1] != corner) return;  // its owner's slot holds it

@@ -1,15 +1,12 @@
 // Maps base Gaussians (μ, Σ) to their 9D points q = (vech(Σ⁻¹), Σ⁻¹μ) (thesis Eq. 2.10).
-layout(local_size_x = kWorkGroupSize) in;
+#include "shaders/compute_pass.glsl"
 layout(std430, binding = kBindingGaussians) readonly buffer Gaussians { float gaussians[]; };  // 9 per vertex: μ, Σ xx xy xz yy yz zz
 layout(std430, binding = kBindingPoints) buffer Points { vec4 points[]; };
 layout(std430, binding = kBindingChanged) readonly buffer Changed { int changed[]; };
-uniform int u_count;
-uniform int u_first;  // this dispatch's first invocation (dispatches split to the device's group limit)
-uniform int u_use_list;
 
 void main() {
-  int i = u_first + int(gl_GlobalInvocationID.x);
-  if (i >= u_count) return;
+  int i = compute_invocation();
+  if (i < 0) return;
   int v = u_use_list != 0 ? changed[i] : i;
   float g[9];
   for (int k = 0; k < 9; ++k) g[k] = gaussians[9 * v + k];

@@ -1,18 +1,15 @@
 // Applies the stencil table: point n_base + r = Σ w · q[index] (one sparse matrix-vector product).
-layout(local_size_x = kWorkGroupSize) in;
+#include "shaders/compute_pass.glsl"
 layout(std430, binding = kBindingPoints) buffer Points { vec4 points[]; };
 layout(std430, binding = kBindingOffsets) readonly buffer Offsets { int offsets[]; };
 layout(std430, binding = kBindingIndices) readonly buffer Indices { int indices[]; };
 layout(std430, binding = kBindingWeights) readonly buffer Weights { float weights[]; };
 layout(std430, binding = kBindingRows) readonly buffer Rows { int rows[]; };
-uniform int u_count;
-uniform int u_first;  // this dispatch's first invocation (dispatches split to the device's group limit)
 uniform int u_n_base;
-uniform int u_use_list;
 
 void main() {
-  int i = u_first + int(gl_GlobalInvocationID.x);
-  if (i >= u_count) return;
+  int i = compute_invocation();
+  if (i < 0) return;
   int r = u_use_list != 0 ? rows[i] : i;
   vec4 a = vec4(0.0), b = vec4(0.0), c = vec4(0.0);
   for (int k = offsets[r]; k < offsets[r + 1]; ++k) {
