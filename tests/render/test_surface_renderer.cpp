@@ -7,7 +7,6 @@
 
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <map>
 #include <tuple>
 
@@ -450,43 +449,6 @@ TEST_F(GpuTest, EditingOneCovarianceUpdatesTheSurface) {
   }
   EXPECT_GT(changed, 200);
   EXPECT_EQ(mismatched, 0);
-}
-
-// Edits of one vertex, of a few, and of most of the mesh (the whole-buffer path) leave the plan
-// points exactly where a renderer built for the edited mesh has them.
-// The plan points and the tessellated vertices (the corners from the corner pass's listed slots
-// included) after an edit equal those of the edited mesh set anew, bit for bit, for quad and
-// triangle patches.
-TEST_F(GpuTest, EditsOfAnySizeEqualARebuild) {
-  for (const char* name : {"torus", "icosphere"}) {
-    CovarianceMesh mesh = make_sample(name);
-    SurfaceRenderer renderer;
-    renderer.set_mesh(mesh);
-    const std::vector<std::vector<int>> edits = {{5}, {1, 40, 41, 200}, [&mesh] {
-      std::vector<int> most;
-      for (int v = 0; v < int(mesh.n_vertices()); v += 2) most.push_back(v);
-      return most;
-    }()};
-    DrawOptions o;
-    o.level = 3;
-    for (const auto& changed : edits) {
-      for (const int v : changed) {
-        mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * 0.5);
-        mesh.set_mean(size_t(v), mesh.mean(size_t(v)) * 1.1);
-      }
-      renderer.update_vertices(mesh, changed);
-      SurfaceRenderer rebuilt;
-      rebuilt.set_mesh(mesh);
-      EXPECT_EQ(renderer.read_points(), rebuilt.read_points()) << name << ", " << changed.size() << " vertices";
-      const auto edited = renderer.capture_vertices(Camera{}, o, 1.0f), fresh = rebuilt.capture_vertices(Camera{}, o, 1.0f);
-      ASSERT_EQ(edited.size(), fresh.size()) << name;
-      size_t differing = 0;
-      for (size_t i = 0; i < edited.size(); ++i)
-        differing += std::memcmp(edited[i].position, fresh[i].position, sizeof edited[i].position) != 0 ||
-                     std::memcmp(edited[i].normal, fresh[i].normal, sizeof edited[i].normal) != 0;
-      EXPECT_EQ(differing, 0u) << name << ", " << changed.size() << " vertices: tessellated vertices differ from a rebuild";
-    }
-  }
 }
 
 // --wireframe over static triangles (render --reference) draws every triangle's edges, shading
