@@ -30,7 +30,8 @@ GPS_LAYOUT_CONST int kBindingCount = 16;
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;
-// A 9D point q = (xx xy xz yy yz zz | b0 b1 b2) is three vec4: (xx xy xz yy) (yz zz b0 b1) (b2 0 0 0).
+// A plan point q = (q̂, q̄) about its anchor a is three vec4: (xx xy xz yy) (yz zz y0 y1) (y2 a0 a1 a2),
+// y = q̄ − q̂ a (shaders/plan_point.glsl).
 GPS_LAYOUT_CONST int kVec4PerPoint = 3;
 
 #ifndef GPS_GLSL

@@ -1,4 +1,5 @@
-// Maps base Gaussians (μ, Σ) to their 9D points q = (vech(Σ⁻¹), Σ⁻¹μ) (thesis Eq. 2.10).
+// Maps base Gaussians (μ, Σ) to their 9D points q = (vech(Σ⁻¹), Σ⁻¹μ) (thesis Eq. 2.10), kept about
+// μ itself: y = 0, anchor μ (plan_point.glsl).
 #include "shaders/compute_pass.glsl"
 layout(std430, binding = kBindingGaussians) readonly buffer Gaussians { float gaussians[]; };  // 9 per vertex: μ, Σ xx xy xz yy yz zz
 layout(std430, binding = kBindingPoints) buffer Points { vec4 points[]; };
@@ -12,8 +13,8 @@ void main() {
   for (int k = 0; k < 9; ++k) g[k] = gaussians[9 * v + k];
   mat3 sigma = mat3(g[3], g[4], g[5], g[4], g[6], g[7], g[5], g[7], g[8]);
   mat3 p = inverse(sigma);
-  vec3 b = p * vec3(g[0], g[1], g[2]);
+  vec3 mu = vec3(g[0], g[1], g[2]);
   points[kVec4PerPoint * v] = vec4(p[0][0], p[0][1], p[0][2], p[1][1]);
-  points[kVec4PerPoint * v + 1] = vec4(p[1][2], p[2][2], b.x, b.y);
-  points[kVec4PerPoint * v + 2] = vec4(b.z, 0.0, 0.0, 0.0);
+  points[kVec4PerPoint * v + 1] = vec4(p[1][2], p[2][2], 0.0, 0.0);
+  points[kVec4PerPoint * v + 2] = vec4(0.0, mu);
 }

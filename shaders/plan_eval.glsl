@@ -1,7 +1,9 @@
 // The plans and their points (core/plan_table.h) and their evaluation; mirrors core/patch_eval.cpp,
 // the descent and the extraordinary rows are one source for both (core/plan_descent.h).
-// A 9D point q = (xx xy xz yy yz zz | b0 b1 b2) is three vec4: (xx xy xz yy) (yz zz b0 b1) (b2 0 0 0).
+// Sums of points are 9D points about an anchor near the node (plan_point.glsl): q = (qa qb qc), three
+// vec4 (xx xy xz yy) (yz zz y0 y1) (y2 0 0 0) with y = q̄ − q̂ · anchor.
 layout(std430, binding = kBindingPoints) readonly buffer Points { vec4 points[]; };
+#include "shaders/plan_point.glsl"
 layout(std430, binding = kBindingNodes) readonly buffer Nodes { int nodes[]; };
 layout(std430, binding = kBindingRoots) readonly buffer Roots { int roots[]; };
 layout(std430, binding = kBindingCorners) readonly buffer CornerPoints { int corner_points[]; };
@@ -10,30 +12,25 @@ layout(std430, binding = kBindingEvTables) readonly buffer EvTables { float ev_t
 
 #include "core/plan_descent.h"
 
-mat3 precision_of(vec4 a, vec4 b) { return mat3(a.x, a.y, a.z, a.y, a.w, b.x, a.z, b.x, b.y); }
-vec3 precision_mean_of(vec4 b, vec4 c) { return vec3(b.z, b.w, c.x); }
+vec3 g_anchor;  // what the sums are taken about: set before the first add_point of an evaluation
 
-// μ of plan point p: solve [q̂] μ = q̄ (thesis Eq. 2.11).
-vec3 point_mean(int p) {
-  vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
-  return inverse(precision_of(a, b)) * precision_mean_of(b, c);
-}
-
-// μ and its tangents (thesis Eq. 3.12) from q, q_u, q_v (three vec4 each), derivatives times `scale`:
-// μ = [q̂]⁻¹ q̄, μ_u = [q̂]⁻¹ (q̄_u − [q̂_u] μ).
+// μ and its tangents (thesis Eq. 3.12) from q, q_u, q_v about g_anchor (three vec4 each), derivatives
+// times `scale`: with y = q̄ − q̂ c, μ − c = [q̂]⁻¹ y and μ_u = [q̂]⁻¹ (y_u − [q̂_u] (μ − c)).
 void dual_to_surface(vec4 qa, vec4 qb, vec4 qc, vec4 ua, vec4 ub, vec4 uc, vec4 va, vec4 vb, vec4 vc, float scale,
                      out vec3 mu, out vec3 mu_u, out vec3 mu_v) {
   mat3 sigma = inverse(precision_of(qa, qb));
-  mu = sigma * precision_mean_of(qb, qc);
-  mu_u = scale * (sigma * (precision_mean_of(ub, uc) - precision_of(ua, ub) * mu));
-  mu_v = scale * (sigma * (precision_mean_of(vb, vc) - precision_of(va, vb) * mu));
+  vec3 offset = sigma * offset_part(qb, qc);
+  mu = g_anchor + offset;
+  mu_u = scale * (sigma * (offset_part(ub, uc) - precision_of(ua, ub) * offset));
+  mu_v = scale * (sigma * (offset_part(vb, vc) - precision_of(va, vb) * offset));
 }
 
 // Plan point p with weight w and derivative weights w_u, w_v added to q = (qa qb qc) and its
 // derivatives (ua ub uc), (va vb vc), three vec4 each (gpu_layout.h).
 void add_point(int p, float w, float w_u, float w_v, inout vec4 qa, inout vec4 qb, inout vec4 qc, inout vec4 ua,
                inout vec4 ub, inout vec4 uc, inout vec4 va, inout vec4 vb, inout vec4 vc) {
-  vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
+  vec4 a, b, c;
+  anchored_point(p, g_anchor, a, b, c);
   qa += w * a; qb += w * b; qc += w * c;
   ua += w_u * a; ub += w_u * b; uc += w_u * c;
   va += w_v * a; vb += w_v * b; vc += w_v * c;
@@ -48,6 +45,7 @@ void evaluate_extraordinary_node(int node, bool quad, float u, float v, out vec4
   int first_row;
   int n_rows = extraordinary_rows(quad, nodes[node + 1], u, v, first_row, w, ws, wt, d, scale);
   int rows = nodes[node + 2] + first_row * k;
+  g_anchor = point_anchor(nodes[node + 4]);
   qa = vec4(0.0); qb = vec4(0.0); qc = vec4(0.0);
   vec4 sa = vec4(0.0), sb = vec4(0.0), sc = vec4(0.0), ta = vec4(0.0), tb = vec4(0.0), tc = vec4(0.0);
   for (int i = 0; i < k; ++i) {
@@ -82,6 +80,7 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
   qa = vec4(0.0); qb = vec4(0.0); qc = vec4(0.0);
   ua = vec4(0.0); ub = vec4(0.0); uc = vec4(0.0);
   va = vec4(0.0); vb = vec4(0.0); vc = vec4(0.0);
+  g_anchor = point_anchor(nodes[node + 1]);
   for (int k = 0; k < 16; ++k) add_point(nodes[node + 1 + k], w[k], wdu[k], wdv[k], qa, qb, qc, ua, ub, uc, va, vb, vc);
   dual_to_surface(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
 }

@@ -1,6 +1,8 @@
-// Applies the stencil table: point n_base + r = Σ w · q[index] (one sparse matrix-vector product).
+// Applies the stencil table: point n_base + r = Σ w · q[index] (one sparse matrix-vector product), the
+// sum taken about an anchor, the row's heaviest point's, which the row keeps (plan_point.glsl).
 #include "shaders/compute_pass.glsl"
 layout(std430, binding = kBindingPoints) buffer Points { vec4 points[]; };
+#include "shaders/plan_point.glsl"
 layout(std430, binding = kBindingOffsets) readonly buffer Offsets { int offsets[]; };
 layout(std430, binding = kBindingIndices) readonly buffer Indices { int indices[]; };
 layout(std430, binding = kBindingWeights) readonly buffer Weights { float weights[]; };
@@ -11,14 +13,27 @@ void main() {
   int i = compute_invocation();
   if (i < 0) return;
   int r = u_use_list != 0 ? rows[i] : i;
-  vec4 a = vec4(0.0), b = vec4(0.0), c = vec4(0.0);
-  for (int k = offsets[r]; k < offsets[r + 1]; ++k) {
-    int p = indices[k];
-    float w = weights[k];
-    a += w * points[kVec4PerPoint * p];
-    b += w * points[kVec4PerPoint * p + 1];
-    c += w * points[kVec4PerPoint * p + 2];
+  int begin = offsets[r], end = offsets[r + 1];
+  // The anchor: that of the point weighing most (|w| tr q̂), which keeps the largest term small.
+  int heaviest = begin;
+  float most = 0.0;
+  for (int k = begin; k < end; ++k) {
+    vec4 pa = points[kVec4PerPoint * indices[k]], pb = points[kVec4PerPoint * indices[k] + 1];
+    float weight = abs(weights[k]) * abs(pa.x + pa.w + pb.y);
+    heaviest = weight > most ? k : heaviest;
+    most = max(most, weight);
   }
+  vec3 anchor = point_anchor(indices[heaviest]);
+  vec4 a = vec4(0.0), b = vec4(0.0), c = vec4(0.0);
+  for (int k = begin; k < end; ++k) {
+    vec4 pa, pb, pc;
+    anchored_point(indices[k], anchor, pa, pb, pc);
+    float w = weights[k];
+    a += w * pa;
+    b += w * pb;
+    c += w * pc;
+  }
+  c.yzw = anchor;
   int out_point = u_n_base + r;
   points[kVec4PerPoint * out_point] = a;
   points[kVec4PerPoint * out_point + 1] = b;

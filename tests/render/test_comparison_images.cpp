@@ -65,11 +65,13 @@ Shown shown(const Aovs& gpu, const Aovs& reference, AovKind kind) {
   return s;
 }
 
-// Black: no pixel covered in one image only, and at most 1 % of the covered pixels at 8/255 or
-// more in any channel (a position 1.6e-4 of the diagonal apart, a normal component 6e-6). The share
-// of pixels lit at all (1/255) and the brightest are reported. The two cones whose apex covariance is
-// 1e-5 (q̂ ~ 1e5 I there) lose five of the float's digits in their normals: up to 6 % of their
-// pixels reach 8/255 (measured 5.5 % and 5.2 %), the largest normal difference 2.7e-3 (cone-concave).
+// Black: at most 1 % of the covered pixels at 8/255 or more in any channel (a position 1.6e-4 of the
+// diagonal apart, a normal component 6e-6), and no pixel covered in one image only but where a
+// silhouette edge passes within float rounding of a pixel centre (at most 1 in 10,000 covered). The
+// share of pixels lit at all (1/255) and the brightest are reported. cone-concave's apex covariance
+// is 1e-5 (q̂ ~ 1e5 I) where its surface folds inwards: up to 6 % of its normal pixels reach 8/255
+// (measured 5.1 %, the largest difference 8.9e-4). cone-pointy, with the same apex, measured 5.5 %
+// while the GPU summed q̄ = q̂μ itself, 0.47 % about nearby anchors (shaders/plan_point.glsl).
 TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
   const PlanOptions options{Scheme::catmull_clark};
   for (const char* name : {"valence3", "valence5", "valence8", "valence10", "wirecube", "cone", "cone-pointy", "cone-concave",
@@ -85,15 +87,15 @@ TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
     const Aovs gpu = draw(renderer, camera, false);
     renderer.set_triangles(reference_triangles(mesh, levels, options));
     const Aovs reference = draw(renderer, camera, true);
-    const bool needle_apex = std::string(name) == "cone-pointy" || std::string(name) == "cone-concave";
+    const bool folded_needle = std::string(name) == "cone-concave";
     for (const AovKind kind : {AovKind::position, AovKind::normal}) {
       const Shown s = shown(gpu, reference, kind);
       const char* what = kind == AovKind::position ? "position x200" : "normal x5000";
       std::printf("%-14s %-14s %6d pixels, %6.3f%% lit, %6.3f%% at 8/255, brightest %3d/255, largest difference %.1e, mean %.1e\n",
                   name, what, s.stats.covered, 100.0 * s.lit, 100.0 * s.visible, s.brightest, s.stats.max, s.stats.mean);
       EXPECT_GT(s.stats.covered, kSize * kSize / 20) << name;
-      EXPECT_EQ(s.stats.coverage_mismatch, 0) << name << " " << what;
-      EXPECT_LE(s.visible, kind == AovKind::normal && needle_apex ? 0.06 : 0.01) << name << " " << what;
+      EXPECT_LE(s.stats.coverage_mismatch, s.stats.covered / 10000) << name << " " << what;
+      EXPECT_LE(s.visible, kind == AovKind::normal && folded_needle ? 0.06 : 0.01) << name << " " << what;
     }
   }
 }

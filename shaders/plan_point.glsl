@@ -1,0 +1,28 @@
+// A plan point q = (q̂, q̄) is kept on the GPU about an anchor a, a mean near it: three vec4
+// (xx xy xz yy) (yz zz y0 y1) (y2 a0 a1 a2) with y = q̄ − q̂ a (gpu_layout.h). A base vertex is
+// (Σ⁻¹, 0, μ). Sums are taken about one anchor c: Σ w q̄ = Σ w (y + q̂ (a − c)) + (Σ w q̂) c, exact
+// since q is linear. In float, q̄ = q̂ μ of a thin Gaussian (q̂ ~ 1e6) far from the origin keeps few
+// digits of the surface's shape near it; y about a nearby anchor keeps them (issue 11: the pawn's
+// normals). Points that are not Gaussians (boundary rows with negative weights) are kept the same way.
+// The including shader declares the Points buffer.
+mat3 precision_of(vec4 a, vec4 b) { return mat3(a.x, a.y, a.z, a.y, a.w, b.x, a.z, b.x, b.y); }
+vec3 offset_part(vec4 b, vec4 c) { return vec3(b.z, b.w, c.x); }
+
+vec3 point_anchor(int p) { return points[kVec4PerPoint * p + 2].yzw; }
+
+// μ of plan point p: a + [q̂]⁻¹ y (thesis Eq. 2.11 about the anchor).
+vec3 point_mean(int p) {
+  vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
+  return c.yzw + inverse(precision_of(a, b)) * offset_part(b, c);
+}
+
+// Plan point p about `anchor`: (q̂, y + q̂ (a − anchor)) in the first nine floats; the tenth to twelfth
+// are zero, so that sums of them are sums of 9D points.
+void anchored_point(int p, vec3 anchor, out vec4 a, out vec4 b, out vec4 c) {
+  a = points[kVec4PerPoint * p];
+  b = points[kVec4PerPoint * p + 1];
+  c = points[kVec4PerPoint * p + 2];
+  vec3 y = offset_part(b, c) + precision_of(a, b) * (c.yzw - anchor);
+  b.zw = y.xy;
+  c = vec4(y.z, 0.0, 0.0, 0.0);
+}
