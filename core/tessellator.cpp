@@ -105,17 +105,21 @@ TriangleMesh tessellate(const PlanTable& plans, const std::vector<Dual>& points,
   if (level < 1 || level > 64) throw usage_error("tessellation level must be 1..64, got " + std::to_string(level));
   if (plans.shape == PatchShape::triangle) return tessellate_triangles(plans, points, level);
   TriangleMesh out;
-  const int L = level;
+  // Level L is L segments along an edge of the mesh, as on the GPU (shaders/patch_tesc.glsl): a
+  // split face's half-size patches take L/2 and a quad's edge beside two of them L; for an odd L
+  // the half-size patches take L and the quad's edge beside them 2L, joined to its L×L grid by fans.
+  const bool even = level % 2 == 0;
   std::map<BoundaryKey, int> shared;
-  std::vector<int> grid(size_t(L + 1) * size_t(L + 1));
+  std::vector<int> grid;
   for (int patch = 0; patch < plans.n_patches(); ++patch) {
     const auto sample = [&](double u, double v) { return append_sample(out, plans, points, patch, u, v); };
     PatchEdge edges[4];
-    int steps[4];  // samples along each edge: L, or 2L where two half-size patches lie beside it
-    for (int k = 0; k < 4; ++k) {
-      edges[k] = patch_edge(plans, patch, k);
-      steps[k] = edges[k].part == PatchEdgePart::whole_beside_halves ? 2 * L : L;
-    }
+    for (int k = 0; k < 4; ++k) edges[k] = patch_edge(plans, patch, k);
+    const bool half_size = edges[0].part == PatchEdgePart::first_half || edges[0].part == PatchEdgePart::second_half;
+    const int L = half_size && even ? level / 2 : level;  // the patch's grid
+    int steps[4];  // samples along each edge: L, or 2L where two half-size patches of an odd level lie beside it
+    for (int k = 0; k < 4; ++k) steps[k] = edges[k].part == PatchEdgePart::whole_beside_halves && !even ? 2 * L : L;
+    grid.assign(size_t(L + 1) * size_t(L + 1), -1);
     const auto boundary_sample = [&](int k, int step) {
       const auto [it, added] = shared.try_emplace(boundary_key(edges[k], step, steps[k]), -1);
       if (added) {
@@ -135,7 +139,7 @@ TriangleMesh tessellate(const PlanTable& plans, const std::vector<Dual>& points,
       else if (j == L && i > 0) k = 2, step = L - i;
       else k = 3, step = L - j;
       const int previous = (k + 3) % 4;
-      if (step == 0 && edges[previous].part == PatchEdgePart::first_half) return boundary_sample(previous, L);
+      if (step == 0 && edges[previous].part == PatchEdgePart::first_half) return boundary_sample(previous, steps[previous]);
       return boundary_sample(k, step * (steps[k] / L));
     };
     for (int j = 0; j <= L; ++j)

@@ -6,7 +6,8 @@
 
 namespace gps {
 
-/// Every patch at level L (1..64): an (L+1)² grid of limit points, two triangles per cell.
+/// Every patch at level L (1..64): an (L+1)² grid of limit points, two triangles per cell; a split
+/// face's half-size patches an (L/2+1)² grid when L is even (L segments along every mesh edge).
 /// Samples on a patch corner or a shared patch edge are evaluated once and shared, so the mesh is
 /// watertight. Throws gps::Error if a sample leaves the cone of positive definite matrices.
 TriangleMesh tessellate(const PlanTable& plans, const std::vector<Dual>& points, int level);
