@@ -22,10 +22,15 @@ void main() {
   vec3 color;
   if (u_mode == 1) color = 0.5 * n + 0.5;
   else color = texture(u_matcap, 0.5 * view_normal.xy + 0.5).rgb;
-  // Tessellation wireframe: distance to the nearest grid line, in pixels.
-  vec3 d = abs(fract(v_grid - 0.5) - 0.5) / max(fwidth(v_grid), vec3(1e-6));
-  float to_line = min(d.x, min(d.y, d.z));
-  float wire = u_wire_color.a * (1.0 - clamp(to_line - 0.25, 0.0, 1.0));
+  // Tessellation wireframe: distance to the nearest grid line, in pixels. A uniform branch: without
+  // the wireframe, a fragment costs what the static-buffer floor's does (whose constant v_grid the
+  // linker folds away).
+  float wire = 0.0;
+  if (u_wire_color.a > 0.0) {
+    vec3 d = abs(fract(v_grid - 0.5) - 0.5) / max(fwidth(v_grid), vec3(1e-6));
+    float to_line = min(d.x, min(d.y, d.z));
+    wire = u_wire_color.a * (1.0 - clamp(to_line - 0.25, 0.0, 1.0));
+  }
   out_color = vec4(mix(color, u_wire_color.rgb, wire), 1.0);
   if (u_flag_back_faces != 0 && !gl_FrontFacing) out_color = vec4(1.0, 0.0, 1.0, 1.0);
   out_position = vec4(v_position, 1.0);
