@@ -27,24 +27,27 @@ ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
                                      {GL_TESS_EVALUATION_SHADER, evaluation}};
   const std::string name = triangles ? "triangle_patch" : "patch";
   if (feedback) return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal", "v_evaluated"});
-  if (output == PatchOutput::capture) return ShaderProgram(name + "_capture", stages, {"v_position", "v_normal", "v_grid", "v_kind"});
+  const std::vector<const char*> stored = {"v_position", "v_normal", "v_grid", "v_kind"};  // cache_vert.glsl's inputs
+  if (output == PatchOutput::capture) return ShaderProgram(name + "_capture", stages, stored);
   if (output == PatchOutput::wireframe) stages.push_back({GL_GEOMETRY_SHADER, {shaders::mesh_geom}});
   stages.push_back({GL_FRAGMENT_SHADER, {shaders::shade_frag}});
+  if (output == PatchOutput::shaded_capture) return ShaderProgram(name + "_shaded_capture", stages, stored);
   return ShaderProgram(name + (output == PatchOutput::wireframe ? "_wire" : ""), stages);
 }
 
 int quad_slot(PatchOutput output) {
   if (output == PatchOutput::wireframe) throw Error("quad patches have no wireframe program");
-  return output == PatchOutput::capture ? 2 : int(output);
+  return output == PatchOutput::capture ? 2 : output == PatchOutput::shaded_capture ? 3 : int(output);
 }
 
 }  // namespace
 
 PatchDraw::PatchDraw()
     : quad_{patch_program(PatchShape::quad, PatchOutput::shaded), patch_program(PatchShape::quad, PatchOutput::feedback),
-            patch_program(PatchShape::quad, PatchOutput::capture)},
+            patch_program(PatchShape::quad, PatchOutput::capture), patch_program(PatchShape::quad, PatchOutput::shaded_capture)},
       triangle_{patch_program(PatchShape::triangle, PatchOutput::shaded), patch_program(PatchShape::triangle, PatchOutput::feedback),
-                patch_program(PatchShape::triangle, PatchOutput::wireframe), patch_program(PatchShape::triangle, PatchOutput::capture)} {
+                patch_program(PatchShape::triangle, PatchOutput::wireframe), patch_program(PatchShape::triangle, PatchOutput::capture),
+                patch_program(PatchShape::triangle, PatchOutput::shaded_capture)} {
   glCreateVertexArrays(1, &empty_vao_);
 }
 

@@ -26,15 +26,17 @@ struct TessellatedVertex {
 /// What the patch draws produced (pipeline-statistics queries; see SurfaceRenderer::set_collect_statistics).
 struct DrawStatistics {
   long long triangles = 0;  // primitives the tessellator generated
-  long long vertices = 0;   // tessellation evaluation shader invocations; -1 without ARB_pipeline_statistics_query
+  long long vertices = 0;   // tessellation evaluation shader invocations; -1 not counted (without
+                            // ARB_pipeline_statistics_query, or a frame drawn as the surface cache captured it)
   int patches = 0;          // patches of the plan
   bool cached = false;      // drawn from the surface cache: `triangles` are the stored ones, nothing was evaluated
 };
 
 /// What a patch program writes: shaded fragments, TessellatedVertex, shaded with the triangle
 /// wireframe (triangle patches: their tessellator's triangles do not follow lines of constant
-/// barycentrics, so mesh_geom.glsl draws it), or what the surface cache stores (cache_vert.glsl).
-enum class PatchOutput { shaded, feedback, wireframe, capture };
+/// barycentrics, so mesh_geom.glsl draws it), what the surface cache stores (cache_vert.glsl), or
+/// shaded fragments and what the cache stores both (a frame that captures as it draws).
+enum class PatchOutput { shaded, feedback, wireframe, capture, shaded_capture };
 
 class PatchDraw {
 public:
@@ -65,7 +67,7 @@ public:
 private:
   void draw_batches(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch, int n_patches) const;
 
-  ShaderProgram quad_[3], triangle_[4];  // by PatchOutput (quads: shaded, feedback, capture)
+  ShaderProgram quad_[4], triangle_[5];  // by PatchOutput (quads: shaded, feedback, capture, shaded_capture)
   unsigned empty_vao_ = 0;
   std::unique_ptr<QueryRing> statistics_;  // set while collecting statistics
 };

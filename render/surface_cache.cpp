@@ -121,14 +121,14 @@ void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long trian
 // One feedback session; each block's triangles are counted by its own query (queries of primitives
 // written may begin and end while feedback is active), so the blocks lie one after the other.
 bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
-                                  const DrawPatches& draw_patches, std::vector<long long>& counts) {
+                                  const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize) {
   if (queries_.size() < blocks.size()) {
     const size_t had = queries_.size();
     queries_.resize(blocks.size());
     glCreateQueries(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, GLsizei(blocks.size() - had), queries_.data() + had);
   }
   glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer, 0, GLsizeiptr(capacity * 3 * kVertexBytes));
-  glEnable(GL_RASTERIZER_DISCARD);
+  if (!rasterize) glEnable(GL_RASTERIZER_DISCARD);
   glBeginTransformFeedback(GL_TRIANGLES);
   for (size_t i = 0; i < blocks.size(); ++i) {
     glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queries_[i]);
@@ -157,7 +157,7 @@ void SurfaceCache::set_buffer(unsigned buffer, long long capacity) {
 }
 
 bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches,
-                           long long estimate, const DrawPatches& draw_patches) {
+                           long long estimate, const DrawPatches& draw_patches, bool rasterize) {
   ++captures_;
   key_ = key;
   view_projection_ = view_projection;
@@ -170,7 +170,7 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
   for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);
   reserve(buffer_, capacity_, estimate);
   std::vector<long long> counts;
-  while (!capture_blocks(buffer_, capacity_, all, draw_patches, counts)) {
+  while (!capture_blocks(buffer_, capacity_, all, draw_patches, counts, rasterize)) {
     if (capacity_ >= most_triangles()) {
       refused_ = true;
       tracked_points_ = -1;

@@ -61,11 +61,11 @@ public:
   /// the feedback varyings).
   using DrawPatches = std::function<void(int first, int count)>;
   /// Captures the triangles of all `n_patches` that `draw_patches` generates, block by block,
-  /// under transform feedback with the rasteriser off. `estimate` triangles size the buffer; a full
-  /// buffer grows and captures again, up to the memory limit, past which the inputs are refused
-  /// (drawn live). False when refused.
+  /// under transform feedback, with the rasteriser off or (`rasterize`: a frame drawn as it is
+  /// captured) on. `estimate` triangles size the buffer; a full buffer grows and captures again, up
+  /// to the memory limit, past which the inputs are refused (drawn live). False when refused.
   bool capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches, long long estimate,
-               const DrawPatches& draw_patches);
+               const DrawPatches& draw_patches, bool rasterize = false);
   /// Whether edits are followed (points_changed's patches kept for a refresh): a capture stands
   /// and every compute pass since reported its patches.
   bool follows_edits() const { return tracked_points_ >= 0; }
@@ -103,7 +103,7 @@ private:
   /// Captures `blocks` one after the other into `buffer` from its start; their counts; false
   /// where the buffer was full (and some triangles may be missing).
   bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks, const DrawPatches& draw_patches,
-                      std::vector<long long>& counts);
+                      std::vector<long long>& counts, bool rasterize = false);
   /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
   bool assemble(const std::vector<int>& blocks, const std::vector<long long>& counts);
   void set_buffer(unsigned buffer, long long capacity);

@@ -113,11 +113,11 @@ void SurfaceRenderer::set_matcap(const Image& m) {
 }
 
 DrawStatistics SurfaceRenderer::last_statistics() {
-  last_statistics_.cached = last_frame_cached_;
-  if (last_frame_cached_) {
+  last_statistics_.cached = last_cache_frame_ == CacheFrame::stored;
+  if (last_cache_frame_ != CacheFrame::live) {
     last_statistics_.triangles = cache_.triangles();
-    last_statistics_.vertices = 0;
-    if (!GLAD_GL_ARB_pipeline_statistics_query) last_statistics_.vertices = -1;
+    // A frame drawn as it was captured ran its evaluation block by block: not counted.
+    last_statistics_.vertices = last_statistics_.cached && GLAD_GL_ARB_pipeline_statistics_query ? 0 : -1;
   } else {
     patches_.latest_statistics(last_statistics_);
   }
@@ -141,21 +141,26 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glDepthFunc(GL_LEQUAL);
     glBindTextureUnit(0, matcap_);
     buffers_.bind();
-    const bool cached = !o.static_triangles && o.surface_cache && draw_from_cache(camera, o, aspect, target.width(), target.height());
-    last_frame_cached_ = cached;
-    // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
-    const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
-    const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : cached_)
-                                   : !o.static_triangles ? patches_.frame_program(shape(), o)
-                                                         : static_triangles_.program(o.wireframe);
-    set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
-    program.use();
-    if (o.static_triangles)
-      static_triangles_.draw();
-    else if (cached)
-      cache_.draw();
-    else
-      patches_.draw(program, o, n_patches());
+    const CacheFrame cache_frame = !o.static_triangles && o.surface_cache
+                                       ? draw_from_cache(camera, o, aspect, target.width(), target.height())
+                                       : CacheFrame::live;
+    const bool cached = cache_frame == CacheFrame::stored;
+    last_cache_frame_ = cache_frame;
+    if (cache_frame != CacheFrame::drawn) {  // else drawn as it was captured
+      // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
+      const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
+      const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : cached_)
+                                     : !o.static_triangles ? patches_.frame_program(shape(), o)
+                                                           : static_triangles_.program(o.wireframe);
+      set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
+      program.use();
+      if (o.static_triangles)
+        static_triangles_.draw();
+      else if (cached)
+        cache_.draw();
+      else
+        patches_.draw(program, o, n_patches());
+    }
   }
   if (o.ellipsoids && ellipsoids_.count() > 0) {
     const GpuPassScope pass(timer_, "ellipsoids");
@@ -170,8 +175,11 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
 }
 
 // Captures the patches' triangles when the cache does not hold them for these inputs (the storage
-// buffers bound); true when stored triangles are there to draw.
-bool SurfaceRenderer::draw_from_cache(const Camera& camera, const DrawOptions& o, float aspect, int width, int height) {
+// buffers and the frame's target bound). A whole capture draws the frame as it goes (the shaded
+// program under transform feedback, rasteriser on), but where a geometry stage draws the triangle
+// wireframe: transform feedback would store its output.
+SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camera, const DrawOptions& o, float aspect, int width,
+                                                             int height) {
   SurfaceCache::Key key;
   key.points = points_generation_;
   key.pixels = std::max(o.pixels, 0.0f);
@@ -197,11 +205,16 @@ bool SurfaceRenderer::draw_from_cache(const Camera& camera, const DrawOptions& o
       refreshed = cache_.refresh(key, draw_patches);
     }
     if (!refreshed) {
-      set_frame_uniforms(capture, camera, o, aspect, width, height);
-      cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw_patches);
+      const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
+      const ShaderProgram& program = triangle_wire ? capture : patches_.program(shape(), PatchOutput::shaded_capture);
+      set_frame_uniforms(program, camera, o, aspect, width, height);
+      program.use();
+      const auto draw = [&](int first, int count) { patches_.draw(program, o, n_patches(), first, count); };
+      if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire)) return CacheFrame::live;
+      if (!triangle_wire) return CacheFrame::drawn;
     }
   }
-  return cache_.holds_triangles();
+  return cache_.holds_triangles() ? CacheFrame::stored : CacheFrame::live;
 }
 
 std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, float aspect,

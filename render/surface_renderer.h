@@ -92,7 +92,10 @@ private:
   void run_compute(const std::vector<int>* changed);
   /// The patches whose triangles an edit of `changed` vertices and the stencil `rows` reading them changes.
   std::vector<int> changed_patches(const std::vector<int>& changed, const std::vector<int>& rows);
-  bool draw_from_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
+  /// How a frame uses the surface cache: it draws the stored triangles, it was drawn while it was
+  /// captured, or it is drawn live (the cache refused these inputs).
+  enum class CacheFrame { stored, drawn, live };
+  CacheFrame draw_from_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
   PatchShape shape() const { return tables().plans.shape; }
   int n_patches() const { return tables().plans.n_patches(); }
 
@@ -114,7 +117,7 @@ private:
   long long storage_limit_ = 0;
   GpuPassTimer* timer_ = nullptr;
   DrawStatistics last_statistics_;
-  bool last_frame_cached_ = false;
+  CacheFrame last_cache_frame_ = CacheFrame::live;
 };
 
 }  // namespace gps

@@ -103,7 +103,7 @@ TEST_F(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
                                  (wireframe ? " wireframe" : "");
         const Frame live = draw(renderer, target, camera, o, false);
         const int before = renderer.surface_cache().captures();
-        const Frame first = draw(renderer, target, camera, o, true);  // captures, then draws the stored triangles
+        const Frame first = draw(renderer, target, camera, o, true);  // drawn as it is captured
         const Frame second = draw(renderer, target, camera, o, true);
         EXPECT_TRUE(renderer.surface_cache().holds_triangles()) << what;
         // A wireframe is shading only: the stored triangles serve it.
@@ -274,6 +274,7 @@ TEST_F(SurfaceCacheTest, EditsAndUndoEqualLiveFramesEachTime) {
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh);
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
+    draw(renderer, target, camera, o, true);  // drawn as it is captured
     const Frame first = draw(renderer, target, camera, o, true);
     const int n = int(mesh.n_vertices());
     // Moves, a covariance scaled, then each undone (the original values back), newest first.
