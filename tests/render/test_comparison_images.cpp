@@ -70,8 +70,8 @@ Shown shown(const Aovs& gpu, const Aovs& reference, AovKind kind) {
 // silhouette edge passes within float rounding of a pixel centre (at most 1 in 10,000 covered). The
 // share of pixels lit at all (1/255) and the brightest are reported. cone-concave's apex covariance
 // is 1e-5 (q̂ ~ 1e5 I) where its surface folds inwards: up to 6 % of its normal pixels reach 8/255
-// (measured 5.1 %, the largest difference 8.9e-4). cone-pointy, with the same apex, measured 5.5 %
-// while the GPU summed q̄ = q̂μ itself, 0.47 % about nearby anchors (shaders/plan_point.glsl).
+// (measured 3.9 %, the largest difference 2.4e-4). cone-pointy, with the same apex, measured 5.5 %
+// while the GPU summed q̄ = q̂μ itself, 0.54 % about nearby anchors (shaders/plan_point.glsl).
 TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
   const PlanOptions options{Scheme::catmull_clark};
   for (const char* name : {"valence3", "valence5", "valence8", "valence10", "wirecube", "cone", "cone-pointy", "cone-concave",
