@@ -87,6 +87,8 @@ int LoopEvTables::offset(const LoopEvConfiguration& configuration, const Polygon
     masks[k + i] = corner.d_s(i);
     masks[2 * k + i] = corner.d_t(i);
   }
+  for (int r = 0; r < k; ++r)
+    for (int i = 0; i < k; ++i) masks[size_t(3 + r) * size_t(k) + size_t(i)] = step(r, i);
   offsets_.emplace(configuration, offset);
   return offset;
 }

@@ -6,11 +6,13 @@
 // at (s, t) lies, after n halvings toward v, in a regular child k: it is the box spline of the net
 // Ā_k Aⁿ C. Stam diagonalises A; we store the products Ā_k Aⁿ for n < kEvLevels (powers of a
 // matrix whose eigenvalues are at most 1 in size: stable, and exact also where A is not
-// diagonalisable, as at some boundary configurations). Closer to v than 2^−kEvLevels the limit
-// position and tangent masks apply (core/ev_corner_masks.h). GPS is linear in 9D, so all of this acts on the dual points.
+// diagonalisable, as at some boundary configurations), and A itself for the levels past them (C
+// stepped by A first). At v the limit position and tangent masks apply (core/ev_corner_masks.h).
+// GPS is linear in 9D, so all of this acts on the dual points.
 //
 // Table layout (doubles from its offset): blocks b = 3n + k, each 12×K (row j: the weights of the
-// K points in net point j), then three rows of K: limit position, tangent along s, tangent along t.
+// K points in net point j), then three rows of K: limit position, tangent along s, tangent along t,
+// then A: K rows of K (row r: the weights of the K points in point r one level down).
 #include <compare>
 #include <map>
 #include <vector>
@@ -47,6 +49,6 @@ private:
 };
 
 /// Doubles in the table of a node with K points.
-inline size_t loop_ev_table_size(int k) { return size_t(36 * kEvLevels + 3) * size_t(k); }
+inline size_t loop_ev_table_size(int k) { return size_t(36 * kEvLevels + 3 + k) * size_t(k); }
 
 }  // namespace gps

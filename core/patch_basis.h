@@ -41,9 +41,11 @@ GPS_CONST int kEdgeWhole = 0;             // all of the edge, and so is the patc
 GPS_CONST int kEdgeWholeBesideHalves = 1; // all of the edge; the other side is split into two halves
 GPS_CONST int kEdgeFirstHalf = 2;         // the half at `from`
 GPS_CONST int kEdgeSecondHalf = 3;        // the half at `to`
-// Levels of the extraordinary tables (core/loop_ev_tables.h, core/quad_ev_tables.h): below 2^-kEvLevels of the corner,
-// the limit masks give the point (closer than double precision resolves).
-GPS_CONST int kEvLevels = 40;
+// Levels of the extraordinary tables (core/loop_ev_tables.h, core/quad_ev_tables.h). Tessellation
+// at integer levels up to 64 puts no point closer to a corner than 1/64 of its patch (s + t and
+// max(s, t) ≥ 1/64 for Loop's and Catmull-Clark's locate), 5 halvings; closer points take the
+// level-(kEvLevels − 1) block after further steps of the table's subdivision matrix A.
+GPS_CONST int kEvLevels = 7;
 
 /// Uniform cubic B-spline basis on one segment, t in [0,1]: values w[0..3] and derivatives dw[0..3].
 GPS_FN void bspline_basis(GPS_REAL t, GPS_OUT GPS_REAL w[4], GPS_OUT GPS_REAL dw[4]) {
@@ -210,23 +212,32 @@ GPS_FN void triangle_turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]
 }
 
 /// The halvings n ≥ 0 toward an extraordinary corner after which x · 2ⁿ ≥ ½ (x: the distance measure
-/// of a locate step, in [0, 2]), or −1 where that takes kEvLevels or more (or x = 0): there the
-/// limit masks apply. From x's binary exponent (x = m · 2^e, ½ ≤ m < 1: n = −e), no loop.
+/// of a locate step, in [0, 2]), or −1 at the corner (x = 0): there the limit masks apply. From x's
+/// binary exponent (x = m · 2^e, ½ ≤ m < 1: n = −e), no loop.
 GPS_FN int ev_halvings(GPS_REAL x) {
   int e = 0;
   GPS_EXPONENT(x, e);
-  if (x <= 0.0 || -e > kEvLevels - 1) return -1;
+  if (x <= 0.0) return -1;
   return e >= 0 ? 0 : -e;
+}
+
+/// The table block 3n + c − 1 of a point n halvings down in child c, the levels past the table's
+/// last taken as `steps` more applications of its subdivision matrix A to the node's points.
+GPS_FN int ev_block(int n, int child, GPS_OUT_REF(int) steps) {
+  steps = GPS_MAX(n - (kEvLevels - 1), 0);
+  return 3 * (n - steps) + child - 1;
 }
 
 /// Where (s, t) of an extraordinary node falls (Stam 1998, §3), its extraordinary vertex at
 /// (0, 0): after n halvings toward that corner, in child c = 1..3 of triangle_child() at the new
-/// (s, t). Returns the table block 3n + c − 1 (core/loop_ev_tables.h), or −1 closer to the corner
-/// than 2^−kEvLevels (there the limit masks apply); `scale` = d(new s, t)/d(s, t).
-GPS_FN int loop_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale) {
+/// (s, t). Returns the table block of ev_block() (core/loop_ev_tables.h), or −1 at the corner (there
+/// the limit masks apply); `scale` = d(new s, t)/d(s, t).
+GPS_FN int loop_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale,
+                          GPS_OUT_REF(int) steps) {
   // n = the halvings that bring s + t to at least ½, read off its binary exponent (doubling is
   // exact, so this equals halving step by step); then that many doublings of s and t by ldexp.
   scale = 1.0;
+  steps = 0;
   int n = ev_halvings(s + t);
   if (n < 0) return -1;
   s = GPS_LDEXP(s, n);
@@ -234,7 +245,7 @@ GPS_FN int loop_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, 
   GPS_REAL sign = 1.0;
   int child = triangle_child(s, t, sign);
   scale = 2.0 * sign * GPS_LDEXP(GPS_REAL(1.0), n);
-  return 3 * n + child - 1;
+  return ev_block(n, child, steps);
 }
 
 /// Parameters (s, t) of a quad node turned so that its corner r is corner 0 (corners k at (0,0),
@@ -257,10 +268,12 @@ GPS_FN void quad_turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]) {
 
 /// Where (s, t) of a quad extraordinary node falls (Stam 1998), its extraordinary vertex at (0, 0):
 /// after n halvings toward that corner, in quadrant c = 1 (s ≥ ½ > t), 2 (both ≥ ½) or 3 (t ≥ ½ > s)
-/// at the quadrant's own (s, t). Returns the table block 3n + c − 1 (core/quad_ev_tables.h), or −1
-/// closer to the corner than 2^−kEvLevels (there the limit masks apply); `scale` = d(new s, t)/d(s, t).
-GPS_FN int quad_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale) {
+/// at the quadrant's own (s, t). Returns the table block of ev_block() (core/quad_ev_tables.h), or −1
+/// at the corner (there the limit masks apply); `scale` = d(new s, t)/d(s, t).
+GPS_FN int quad_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale,
+                          GPS_OUT_REF(int) steps) {
   scale = 1.0;
+  steps = 0;
   int n = ev_halvings(GPS_MAX(s, t));  // both below ½ exactly while max(s, t) is
   if (n < 0) return -1;
   s = GPS_LDEXP(s, n);
@@ -269,7 +282,7 @@ GPS_FN int quad_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, 
   s = s >= 0.5 ? 2.0 * s - 1.0 : 2.0 * s;
   t = t >= 0.5 ? 2.0 * t - 1.0 : 2.0 * t;
   scale = 2.0 * GPS_LDEXP(GPS_REAL(1.0), n);
-  return 3 * n + child - 1;
+  return ev_block(n, child, steps);
 }
 
 #ifndef GPS_GLSL

@@ -11,15 +11,25 @@ namespace gps {
 namespace {
 
 // An extraordinary node at (u, v) of its own domain: the rows of extraordinary_rows()
-// (core/plan_descent.h) of its table times its K points.
+// (core/plan_descent.h) of its table times its K points, stepped by the table's A past its levels.
 void evaluate_extraordinary(const PlanTable& plans, const std::vector<Dual>& points, int node, double u, double v, Dual& q,
                             Dual& q_u, Dual& q_v) {
   const int32_t* nodes = plans.nodes.data();
-  const int k = nodes[node + 3];
+  const int k = nodes[node + 3], net = plans.shape == PatchShape::quad ? 16 : 12;
   double w[16], ws[16], wt[16], d[4], scale;
-  int first_row;
-  const int n_rows = extraordinary_rows(plans.shape == PatchShape::quad, nodes[node + 1], u, v, first_row, w, ws, wt, d, scale);
-  const double* rows = plans.ev_tables.data() + nodes[node + 2] + size_t(first_row) * size_t(k);
+  int first_row, steps;
+  const int n_rows = extraordinary_rows(plans.shape == PatchShape::quad, nodes[node + 1], u, v, true, first_row, steps, w,
+                                        ws, wt, d, scale);
+  const double* table = plans.ev_tables.data() + nodes[node + 2];
+  const double* rows = table + size_t(first_row) * size_t(k);
+  Eigen::Matrix<double, Eigen::Dynamic, 9> stepped;  // the K points after `steps` steps of A, where there are any
+  if (steps > 0) {
+    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> step(
+        table + size_t(3 * net * kEvLevels + 3) * size_t(k), k, k);
+    stepped.resize(k, 9);
+    for (int i = 0; i < k; ++i) stepped.row(i) = points[size_t(nodes[node + 4 + i])].transpose();
+    for (int n = 0; n < steps; ++n) stepped = step * stepped;
+  }
   q.setZero();
   Dual q_s = Dual::Zero(), q_t = Dual::Zero();
   for (int i = 0; i < k; ++i) {
@@ -30,7 +40,7 @@ void evaluate_extraordinary(const PlanTable& plans, const std::vector<Dual>& poi
       a_s += ws[j] * x;
       a_t += wt[j] * x;
     }
-    const Dual& p = points[size_t(nodes[node + 4 + i])];
+    const Dual p = steps > 0 ? Dual(stepped.row(i).transpose()) : points[size_t(nodes[node + 4 + i])];
     q += a * p;
     q_s += a_s * p;
     q_t += a_t * p;

@@ -62,22 +62,26 @@ GPS_FN int descend_plan(GPS_NODES_PARAM int node, bool triangle, GPS_INOUT_REF(G
 /// 16 for quads, 12 for triangles); at the corner the limit masks (3 rows: position, d/ds, d/dt).
 /// Returns the rows' count; `first_row` is the first, w/ws/wt the rows' weights for the point and
 /// its s and t derivatives, and d/du = scale (d[0] ∂s + d[1] ∂t), d/dv = scale (d[2] ∂s + d[3] ∂t).
-GPS_FN int extraordinary_rows(bool quad, int r, GPS_REAL u, GPS_REAL v, GPS_OUT_REF(int) first_row, GPS_OUT GPS_REAL w[16],
-                              GPS_OUT GPS_REAL ws[16], GPS_OUT GPS_REAL wt[16], GPS_OUT GPS_REAL d[4],
-                              GPS_OUT_REF(GPS_REAL) scale) {
+/// Past the table's levels the rows apply to the node's points after `steps` steps of the table's
+/// matrix A, where `stepping` (the CPU); without it (the GPU, whose tessellations stay within the
+/// levels: core/patch_basis.h, kEvLevels) the limit masks stand in, steps = 0.
+GPS_FN int extraordinary_rows(bool quad, int r, GPS_REAL u, GPS_REAL v, bool stepping, GPS_OUT_REF(int) first_row,
+                              GPS_OUT_REF(int) steps, GPS_OUT GPS_REAL w[16], GPS_OUT GPS_REAL ws[16],
+                              GPS_OUT GPS_REAL wt[16], GPS_OUT GPS_REAL d[4], GPS_OUT_REF(GPS_REAL) scale) {
   int net = quad ? 16 : 12;
   GPS_REAL s, t;
   int block;
   if (quad) {
     quad_turn_to_corner(r, u, v, s, t);
     quad_turned_derivative_coefficients(r, d);
-    block = quad_ev_locate(s, t, scale);
+    block = quad_ev_locate(s, t, scale, steps);
   } else {
     triangle_turn_to_corner(r, u, v, s, t);
     triangle_turned_derivative_coefficients(r, d);
-    block = loop_ev_locate(s, t, scale);
+    block = loop_ev_locate(s, t, scale, steps);
   }
-  if (block < 0) {  // the limit masks
+  if (block < 0 || (steps > 0 && !stepping)) {  // the limit masks
+    steps = 0;
     for (int j = 0; j < 3; ++j) {
       w[j] = j == 0 ? 1.0 : 0.0;
       ws[j] = j == 1 ? 1.0 : 0.0;

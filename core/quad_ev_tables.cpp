@@ -126,6 +126,8 @@ std::shared_ptr<const std::vector<double>> compute_table(const std::vector<int>&
     rows[k + i] = masks.d_s(i);
     rows[2 * k + i] = masks.d_t(i);
   }
+  for (int r = 0; r < k; ++r)
+    for (int i = 0; i < k; ++i) rows[size_t(3 + r) * size_t(k) + size_t(i)] = step(r, i);
   return table;
 }
 

@@ -7,8 +7,9 @@
 // point at (s, t) lies, after n halvings toward the vertex, in a regular child c: the bicubic
 // B-spline of the net Ā_c Aⁿ C. Instead of Stam's eigen-decomposition we store the products
 // Ā_c Aⁿ for n < kEvLevels (stable, and exact also where A is not diagonalisable, as at boundary
-// vertices), and the limit masks at the vertex (core/ev_corner_masks.h). GPS is linear in 9D, so
-// all of this acts on the dual points as they are.
+// vertices), A itself for the levels past them (C stepped by A first), and the limit masks at the
+// vertex (core/ev_corner_masks.h). GPS is linear in 9D, so all of this acts on the dual points as
+// they are.
 //
 // A neighbourhood is known by its signature (its faces in a canonical walk, vertices by first
 // visit); the table depends on nothing else, so nodes with equal signatures share one. A node is
@@ -17,7 +18,8 @@
 //
 // Table layout (doubles from its offset): blocks b = 3n + c − 1 (quad_ev_locate() in
 // core/patch_basis.h), each 16×K (row j: the weights of the K points in net point j, j = i + 4·k as
-// in a regular node), then three rows of K: limit position, tangent along s, tangent along t.
+// in a regular node), then three rows of K: limit position, tangent along s, tangent along t, then
+// A: K rows of K (row r: the weights of the K points in point r one level down).
 #include <array>
 #include <map>
 #include <memory>
@@ -51,6 +53,6 @@ private:
 };
 
 /// Doubles in the table of a node with K points.
-inline size_t quad_ev_table_size(int k) { return size_t(48 * kEvLevels + 3) * size_t(k); }
+inline size_t quad_ev_table_size(int k) { return size_t(48 * kEvLevels + 3 + k) * size_t(k); }
 
 }  // namespace gps

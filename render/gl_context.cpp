@@ -18,7 +18,11 @@ namespace {
 std::mutex debug_mutex;
 std::string first_error;
 
-void GLAPIENTRY on_gl_message(GLenum, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message, const void*) {
+// The first error the driver reports. Not the shader compiler's messages: Mesa reports its warnings
+// there as errors, and only while it compiles (not when its shader cache has the program), so they
+// came and went with the cache; a shader that does not compile or link throws in ShaderProgram.
+void GLAPIENTRY on_gl_message(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message, const void*) {
+  if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
   if (type != GL_DEBUG_TYPE_ERROR && severity != GL_DEBUG_SEVERITY_HIGH) return;
   const std::lock_guard lock(debug_mutex);
   if (first_error.empty()) first_error = message;

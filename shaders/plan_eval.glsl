@@ -12,7 +12,7 @@ layout(std430, binding = kBindingEvTables) readonly buffer EvTables { float ev_t
 
 #include "core/plan_descent.h"
 
-vec3 g_anchor;  // what the sums are taken about: set before the first add_point of an evaluation
+vec3 g_anchor = vec3(0.0);  // what the sums are taken about: set before the first add_point of an evaluation
 
 // μ and its tangents (thesis Eq. 3.12) from q, q_u, q_v about g_anchor (three vec4 each), derivatives
 // times `scale`: with y = q̄ − q̂ c, μ − c = [q̂]⁻¹ y and μ_u = [q̂]⁻¹ (y_u − [q̂_u] (μ − c)).
@@ -42,8 +42,8 @@ void evaluate_extraordinary_node(int node, bool quad, float u, float v, out vec4
                                  out vec4 ua, out vec4 ub, out vec4 uc, out vec4 va, out vec4 vb, out vec4 vc) {
   int k = nodes[node + 3];
   float w[16], ws[16], wt[16], d[4], scale;
-  int first_row;
-  int n_rows = extraordinary_rows(quad, nodes[node + 1], u, v, first_row, w, ws, wt, d, scale);
+  int first_row, steps;
+  int n_rows = extraordinary_rows(quad, nodes[node + 1], u, v, false, first_row, steps, w, ws, wt, d, scale);
   int rows = nodes[node + 2] + first_row * k;
   g_anchor = point_anchor(nodes[node + 4]);
   qa = vec4(0.0); qb = vec4(0.0); qc = vec4(0.0);

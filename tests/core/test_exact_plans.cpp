@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 
 #include "core/mesh_connectivity.h"
+#include "core/patch_basis.h"
 #include "core/patch_eval.h"
 #include "core/reference_subdivision.h"
 #include "tests/support/plan_fixture.h"
@@ -79,6 +81,67 @@ TEST(ExactPlans, DerivativesMatchFiniteDifferences) {
       EXPECT_LT((c->dv - dv).norm(), 1e-5 * dv.norm()) << name << " patch " << patch << " at " << s << ", " << t;
     }
     EXPECT_GT(extraordinary, 15) << name;
+  }
+}
+
+// Past the tables' kEvLevels levels the evaluator steps the node's points by the table's A
+// (core/plan_descent.h): the surface goes on smoothly across each level where that starts (a wrong
+// A or row would break it there by far more than the window's width) and closes in on the limit
+// point, normals defined, down to 2^-60 of the patch. Both schemes, interior and boundary vertices.
+TEST(ExactPlans, PastTheTablesLevelsStepsContinueTheSurface) {
+  const std::vector<std::pair<std::string, PlannedMesh>> cases = [] {
+    std::vector<std::pair<std::string, PlannedMesh>> c;
+    c.emplace_back("valence5, Catmull-Clark", exact_plans(with_random_covariances(make_sample("valence5"), 5)));
+    c.emplace_back("quad bipyramid 7", exact_plans(with_random_covariances(quad_bipyramid(7), 7)));
+    c.emplace_back("bipyramid 7, Loop", PlannedMesh(with_random_covariances(test::bipyramid_mesh(7), 8), PlanOptions{Scheme::loop}));
+    c.emplace_back("triangle grid, Loop", PlannedMesh(with_random_covariances(test::triangle_grid_mesh(4, 3), 9), PlanOptions{Scheme::loop}));
+    return c;
+  }();
+  for (const auto& [name, p] : cases) {
+    const bool quad = p.tables.plans.shape == PatchShape::quad;
+    const double diag = bounding_box_diagonal(p.mesh);
+    int corners = 0;
+    for (int patch = 0; patch < p.tables.plans.n_patches(); ++patch)
+      for (int r = 0; r < (quad ? 4 : 3); ++r) {
+        // The point h along a direction into the patch from corner r; `measure` is what locate halves
+        // (max(s, t) for quads, s + t for triangles), so h = 2^-k / measure is where level k starts.
+        const double a = 0.37, b = 0.61, measure = quad ? b : a + b;
+        const auto uv = [&](double h) -> std::pair<double, double> {
+          if (!quad) return r == 0 ? std::pair{h * a, h * b} : r == 1 ? std::pair{1 - h * (a + b), h * a} : std::pair{h * b, 1 - h * (a + b)};
+          const double cu[4] = {0, 1, 1, 0}, cv[4] = {0, 0, 1, 1}, su[4] = {1, -1, -1, 1}, sv[4] = {1, 1, -1, -1};
+          return {cu[r] + su[r] * h * a, cv[r] + sv[r] * h * b};
+        };
+        const auto at = [&](double h) {
+          const auto [u, v] = uv(h);
+          return evaluate_patch(p.tables.plans, p.points, patch, u, v);
+        };
+        const auto near = at(std::ldexp(1.0, -20));
+        if (!near || near->kind != NodeKind::extraordinary) continue;
+        ++corners;
+        const auto corner = at(0.0);
+        ASSERT_TRUE(corner);
+        for (int k = kEvLevels - 2; k <= kEvLevels + 2; ++k) {
+          const double h = std::ldexp(1.0, -k) / measure, delta = 1e-7;
+          const auto below = at(h * (1 - delta)), above = at(h * (1 + delta)), mid = at(h);
+          ASSERT_TRUE(below && above && mid);
+          const auto [du, dv] = std::pair{uv(h * (1 + delta)).first - uv(h * (1 - delta)).first, uv(h * (1 + delta)).second - uv(h * (1 - delta)).second};
+          const Vec3 expected = du * mid->du + dv * mid->dv;
+          EXPECT_LT((above->position - below->position - expected).norm(), 1e-3 * expected.norm() + 1e-14 * diag)
+              << name << " patch " << patch << " corner " << r << " at level " << k;
+        }
+        double last = std::numeric_limits<double>::infinity();
+        for (int m = 1; m <= 60; ++m) {
+          const auto s = at(std::ldexp(1.0, -m));
+          ASSERT_TRUE(s);
+          const double distance = (s->position - corner->position).norm();
+          EXPECT_LE(distance, last * (1 + 1e-9) + 1e-15 * diag) << name << " patch " << patch << " corner " << r << " at 2^-" << m;
+          EXPECT_TRUE(s->normal.allFinite()) << name << " patch " << patch << " corner " << r << " at 2^-" << m;
+          last = distance;
+        }
+        EXPECT_LT(last, 1e-12 * diag) << name << " patch " << patch << " corner " << r;
+      }
+    std::printf("%-24s: %d extraordinary corners\n", name.c_str(), corners);
+    EXPECT_GT(corners, 2) << name;
   }
 }
 

@@ -49,7 +49,8 @@ void main() {
   triangle_turn_to_corner(2, u, v, s, t);
   outputs[o + 58] = s; outputs[o + 59] = t;
   s = 0.001 * u; t = 0.001 * v;
-  outputs[o + 60] = float(loop_ev_locate(s, t, scale));
+  int steps;
+  outputs[o + 60] = float(loop_ev_locate(s, t, scale, steps));
   outputs[o + 61] = s; outputs[o + 62] = t; outputs[o + 63] = scale;
   float q[16], qu[16], qv[16];
   quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, u, v, q, qu, qv);
@@ -76,7 +77,8 @@ std::vector<double> cpu_probe(int i, double u, double v) {
   triangle_turn_to_corner(2, u, v, s, t);
   out[58] = s, out[59] = t;
   s = 0.001 * u, t = 0.001 * v;
-  out[60] = loop_ev_locate(s, t, scale);
+  int steps;
+  out[60] = loop_ev_locate(s, t, scale, steps);
   out[61] = s, out[62] = t, out[63] = scale;
   double q[16], qu[16], qv[16];
   quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, u, v, q, qu, qv);
@@ -116,7 +118,7 @@ TEST_F(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
 
 // The descent of core/plan_descent.h through real plans, and an extraordinary leaf's rows: per
 // input (root, triangle, u, v): leaf node, kind, depth, leaf (u, v), scale, then the leaf's rows
-// count, first row, d[4], scale and 16 weights each of w, ws, wt: 64 floats.
+// count, first row, d[4], scale, steps (0: the GPU takes no steps) and 16 weights each of w, ws, wt: 64 floats.
 constexpr int kDescentOut = 64;
 constexpr const char* kDescentBuffers = R"glsl(
 layout(local_size_x = 1) in;
@@ -136,9 +138,9 @@ void main() {
   outputs[o + 3] = u; outputs[o + 4] = v; outputs[o + 5] = scale;
   if (kind != kNodeExtraordinary) return;
   float w[16], ws[16], wt[16], d[4], ev_scale;
-  int first_row;
-  int n = extraordinary_rows(!triangle, nodes[node + 1], u, v, first_row, w, ws, wt, d, ev_scale);
-  outputs[o + 6] = float(n); outputs[o + 7] = float(first_row);
+  int first_row, steps;
+  int n = extraordinary_rows(!triangle, nodes[node + 1], u, v, false, first_row, steps, w, ws, wt, d, ev_scale);
+  outputs[o + 6] = float(n); outputs[o + 7] = float(first_row); outputs[o + 13] = float(steps);
   for (int k = 0; k < 4; ++k) outputs[o + 8 + k] = d[k];
   outputs[o + 12] = ev_scale;
   for (int k = 0; k < n; ++k) { outputs[o + 16 + k] = w[k]; outputs[o + 32 + k] = ws[k]; outputs[o + 48 + k] = wt[k]; }
@@ -153,9 +155,9 @@ std::vector<double> cpu_descent(const std::vector<int32_t>& nodes, int root, boo
   out[0] = node, out[1] = kind, out[2] = depth, out[3] = u, out[4] = v, out[5] = scale;
   if (kind != kNodeExtraordinary) return out;
   double w[16], ws[16], wt[16], d[4], ev_scale;
-  int first_row;
-  const int n = extraordinary_rows(!triangle, nodes[size_t(node + 1)], u, v, first_row, w, ws, wt, d, ev_scale);
-  out[6] = n, out[7] = first_row;
+  int first_row, steps;
+  const int n = extraordinary_rows(!triangle, nodes[size_t(node + 1)], u, v, false, first_row, steps, w, ws, wt, d, ev_scale);
+  out[6] = n, out[7] = first_row, out[13] = steps;
   for (int k = 0; k < 4; ++k) out[size_t(8 + k)] = d[k];
   out[12] = ev_scale;
   for (int k = 0; k < n; ++k) out[size_t(16 + k)] = w[k], out[size_t(32 + k)] = ws[k], out[size_t(48 + k)] = wt[k];
