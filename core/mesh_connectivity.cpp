@@ -39,10 +39,10 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
   // Half-edges keyed by (min, max) vertex pair, sorted to pair them into edges: a radix sort of two
   // counting passes (by the larger vertex, then stably by the smaller) — linear whatever the valence.
   struct HalfEdge {
-    long long key;
+    int low, high;  // the smaller and the larger vertex
     int face, corner;
   };
-  std::vector<HalfEdge> by_max(n_corners), halves(n_corners);
+  std::vector<HalfEdge> by_high(n_corners), halves(n_corners);
   const auto counting_sort = [&](const std::vector<HalfEdge>& in, std::vector<HalfEdge>& out, auto digit) {
     std::vector<size_t> next(size_t(t.n_vertices) + 1, 0);
     for (const HalfEdge& h : in) ++next[size_t(digit(h)) + 1];
@@ -53,21 +53,21 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
     const int begin = t.offsets[size_t(f)], n = t.face_size(f);
     for (int k = 0; k < n; ++k) {
       const int a = t.verts[size_t(begin + k)], b = t.verts[size_t(begin + (k + 1) % n)];
-      halves[size_t(begin + k)] = {(long long)std::min(a, b) * t.n_vertices + std::max(a, b), f, begin + k};
+      halves[size_t(begin + k)] = {std::min(a, b), std::max(a, b), f, begin + k};
     }
   }
-  counting_sort(halves, by_max, [&](const HalfEdge& h) { return h.key % t.n_vertices; });
-  counting_sort(by_max, halves, [&](const HalfEdge& h) { return h.key / t.n_vertices; });
-  by_max = {};
+  counting_sort(halves, by_high, [](const HalfEdge& h) { return h.high; });
+  counting_sort(by_high, halves, [](const HalfEdge& h) { return h.low; });
+  by_high = {};
   c.face_edges.assign(n_corners, -1);
+  const auto same_edge = [](const HalfEdge& x, const HalfEdge& y) { return x.low == y.low && x.high == y.high; };
   for (size_t i = 0; i < halves.size();) {
     const int e = c.n_edges();
-    const int a = int(halves[i].key / t.n_vertices), b = int(halves[i].key % t.n_vertices);
-    c.edge_verts.push_back(a);
-    c.edge_verts.push_back(b);
+    c.edge_verts.push_back(halves[i].low);
+    c.edge_verts.push_back(halves[i].high);
     c.edge_faces.push_back(halves[i].face);
     c.face_edges[size_t(halves[i].corner)] = e;
-    if (i + 1 < halves.size() && halves[i + 1].key == halves[i].key) {
+    if (i + 1 < halves.size() && same_edge(halves[i + 1], halves[i])) {
       c.edge_faces.push_back(halves[i + 1].face);
       c.face_edges[size_t(halves[i + 1].corner)] = e;
       i += 2;
