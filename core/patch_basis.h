@@ -43,8 +43,9 @@ GPS_CONST int kEdgeFirstHalf = 2;         // the half at `from`
 GPS_CONST int kEdgeSecondHalf = 3;        // the half at `to`
 // Levels of the extraordinary tables (core/loop_ev_tables.h, core/quad_ev_tables.h). Tessellation
 // at integer levels up to 64 puts no point closer to a corner than 1/64 of its patch (s + t and
-// max(s, t) ≥ 1/64 for Loop's and Catmull-Clark's locate), 5 halvings; closer points take the
-// level-(kEvLevels − 1) block after further steps of the table's subdivision matrix A.
+// max(s, t) ≥ 1/64 for Loop's and Catmull-Clark's locate): levels 0..5, and one more against
+// float rounding. Closer points take the level-(kEvLevels − 1) block after further steps of the
+// table's subdivision matrix A (on the CPU; the GPU takes the limit point there).
 GPS_CONST int kEvLevels = 7;
 
 /// Uniform cubic B-spline basis on one segment, t in [0,1]: values w[0..3] and derivatives dw[0..3].
