@@ -41,6 +41,9 @@ GPS_CONST int kEdgeWhole = 0;             // all of the edge, and so is the patc
 GPS_CONST int kEdgeWholeBesideHalves = 1; // all of the edge; the other side is split into two halves
 GPS_CONST int kEdgeFirstHalf = 2;         // the half at `from`
 GPS_CONST int kEdgeSecondHalf = 3;        // the half at `to`
+/// Whether a patch whose edge 0 is this part is half-size: a patch of a split face (one Catmull-Clark
+/// step down), whose edge 0 is half of the face's edge.
+GPS_FN bool half_size_part(int edge0_part) { return edge0_part == kEdgeFirstHalf || edge0_part == kEdgeSecondHalf; }
 // Levels of the extraordinary tables (core/loop_ev_tables.h, core/quad_ev_tables.h). Tessellation
 // at integer levels up to 64 puts no point closer to a corner than 1/64 of its patch (s + t and
 // max(s, t) ≥ 1/64 for Loop's and Catmull-Clark's locate): levels 0..5, and one more against

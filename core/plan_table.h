@@ -93,4 +93,9 @@ inline PatchEdge patch_edge(const PlanTable& plans, int patch, int k) {
   return {e[0], e[1], PatchEdgePart(e[2])};
 }
 
+/// Whether the patch is one of a split face's half-size patches (quads).
+inline bool half_size_patch(const PlanTable& plans, int patch) {
+  return plans.shape == PatchShape::quad && half_size_part(plans.patch_edges[size_t(kPatchEdgeStride * patch + 2)]);
+}
+
 }  // namespace gps

@@ -115,7 +115,7 @@ TriangleMesh tessellate(const PlanTable& plans, const std::vector<Dual>& points,
     const auto sample = [&](double u, double v) { return append_sample(out, plans, points, patch, u, v); };
     PatchEdge edges[4];
     for (int k = 0; k < 4; ++k) edges[k] = patch_edge(plans, patch, k);
-    const bool half_size = edges[0].part == PatchEdgePart::first_half || edges[0].part == PatchEdgePart::second_half;
+    const bool half_size = half_size_patch(plans, patch);
     const int L = half_size && even ? level / 2 : level;  // the patch's grid
     int steps[4];  // samples along each edge: L, or 2L where two half-size patches of an odd level lie beside it
     for (int k = 0; k < 4; ++k) steps[k] = edges[k].part == PatchEdgePart::whole_beside_halves && !even ? 2 * L : L;

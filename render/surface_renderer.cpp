@@ -188,12 +188,21 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
   const glm::mat4 view_projection = camera.view_projection(aspect);
   const glm::vec2 viewport{float(width), float(height)};
   if (!cache_.current(key, view_projection, viewport)) {
-    // Buffer size: uniform levels generate about 2·L² triangles per quad (L² per triangle), the
-    // larger edge levels beside half-size patches a little more; adaptive ones as last time.
-    const bool quads = shape() == PatchShape::quad;
+    // Buffer size: uniform level L generates about 2·L² triangles per quad patch, 2·(L/2)² per
+    // half-size one at an even L (shaders/patch_tesc.glsl), L² per triangle patch, and a little more
+    // beside half-size patches at an odd L; adaptive levels as last time.
     const long long level = (long long)std::ceil(key.level), patches = n_patches();
-    const long long estimate = key.pixels > 0.0f ? (cache_.triangles() > 0 ? cache_.triangles() * 5 / 4 : patches * 128)
-                                                 : patches * (quads ? 2 : 1) * level * level * 5 / 4 + 64;
+    long long estimate = 64;
+    if (key.pixels > 0.0f) {
+      estimate += cache_.triangles() > 0 ? cache_.triangles() * 5 / 4 : patches * 128;
+    } else if (shape() == PatchShape::triangle) {
+      estimate += patches * level * level * 5 / 4;
+    } else {
+      long long halves = 0;
+      for (int p = 0; p < patches; ++p) halves += half_size_patch(tables().plans, p);
+      const long long half_level = level % 2 == 0 ? level / 2 : level;
+      estimate += ((patches - halves) * 2 * level * level + halves * 2 * half_level * half_level) * 5 / 4;
+    }
     const ShaderProgram& capture = patches_.program(shape(), PatchOutput::capture);
     capture.use();
     const auto draw_patches = [&](int first, int count) { patches_.draw(capture, o, n_patches(), first, count); };

@@ -2,13 +2,6 @@
 layout(vertices = 1) out;
 patch out int tc_patch;
 
-// A patch of a split face (one Catmull-Clark step down) is half-size: two of its edges are halves
-// of the face's edges (core/plan_table.h, PatchEdgePart).
-bool half_size_patch(int p) {
-  int part = patch_edges[kPatchEdgeStride * p + 2];  // edge 0: the first half, for a split face's patch
-  return part == kEdgeFirstHalf || part == kEdgeSecondHalf;
-}
-
 // An edge met by two half-size patches gets an even level, each half half of it, so both sides place
 // their vertices at the same points of the edge. Uniform level L is L segments along an edge of the
 // mesh: a half-size patch takes L/2 on each of its edges and a quad's edge beside two of them L; for
@@ -31,7 +24,7 @@ void main() {
   int p = u_first_patch + gl_PrimitiveID;
   tc_patch = p;
   float level[4];  // edge k runs from corner k to corner k+1
-  bool half_size = half_size_patch(p);
+  bool half_size = half_size_part(patch_edges[kPatchEdgeStride * p + 2]);
   for (int k = 0; k < 4; ++k) level[k] = patch_edge_level(p, k, half_size);
   if (u_debug_mismatch != 0 && p % 2 == 0) level[0] = min(64.0, 2.0 * level[0] + 1.0);
   gl_TessLevelOuter[0] = level[3];  // u = 0
