@@ -14,6 +14,7 @@ namespace gps {
 #define GPS_FN inline
 #define GPS_CONST inline constexpr
 #define GPS_OUT               // arrays are passed by pointer in C++
+#define GPS_INOUT
 #define GPS_OUT_REF(T) T&
 #define GPS_INOUT_REF(T) T&
 #else
@@ -24,6 +25,7 @@ namespace gps {
 #define GPS_FN
 #define GPS_CONST const
 #define GPS_OUT out
+#define GPS_INOUT inout
 #define GPS_OUT_REF(T) out T
 #define GPS_INOUT_REF(T) inout T
 #endif
@@ -77,14 +79,45 @@ GPS_FN void bezier_basis(GPS_REAL t, GPS_OUT GPS_REAL w[4], GPS_OUT GPS_REAL dw[
   dw[3] = 3.0 * t * t;
 }
 
+// Boundary edges of a regular quad leaf, as bits: 1 (v = 0, edge 0), 2 (u = 1), 4 (v = 1), 8 (u = 0).
+// Beyond a boundary edge the B-spline net has phantom points p₋₁ = 2p₀ − p₁ (mirrored across it);
+// the leaf's net holds the real point p₀ in their slots instead and the basis takes them in
+// (bspline_fold_boundary), so no point of the net is a large difference that float sums cancel.
+GPS_CONST int kBoundaryV0 = 1;
+GPS_CONST int kBoundaryU1 = 2;
+GPS_CONST int kBoundaryV1 = 4;
+GPS_CONST int kBoundaryU0 = 8;
+
+/// The boundary bits of a regular leaf from its net's point indices n[j] (slot i + 4·k): a phantom's
+/// slot repeats the real point next to it, which no interior net does.
+GPS_FN int bspline_boundary(int n1, int n4, int n5, int n6, int n7, int n9, int n13) {
+  return (n1 == n5 ? kBoundaryV0 : 0) | (n7 == n6 ? kBoundaryU1 : 0) | (n13 == n9 ? kBoundaryV1 : 0) | (n4 == n5 ? kBoundaryU0 : 0);
+}
+
+/// One direction's B-spline basis b (and db) with the phantom points beyond the low (b[0]) or high
+/// (b[3]) end taken in: p₋₁ = 2p₀ − p₁ gives p₀ 2·b[0] more and p₁ b[0] less, and its own slot 0.
+GPS_FN void bspline_fold_boundary(bool low, bool high, GPS_INOUT GPS_REAL b[4], GPS_INOUT GPS_REAL db[4]) {
+  if (low) {
+    b[1] += 2.0 * b[0]; b[2] -= b[0]; b[0] = 0.0;
+    db[1] += 2.0 * db[0]; db[2] -= db[0]; db[0] = 0.0;
+  }
+  if (high) {
+    b[2] += 2.0 * b[3]; b[1] -= b[3]; b[3] = 0.0;
+    db[2] += 2.0 * db[3]; db[1] -= db[3]; db[3] = 0.0;
+  }
+}
+
 /// A quad leaf of a plan at (u, v): weights w[i + 4j] of its 16 points (i along u) and their u and
-/// v derivatives; a regular node is a bicubic B-spline patch, a terminal node a bicubic Bézier patch.
-GPS_FN void quad_leaf_basis(int kind, GPS_REAL u, GPS_REAL v, GPS_OUT GPS_REAL w[16], GPS_OUT GPS_REAL du[16],
+/// v derivatives; a regular node is a bicubic B-spline patch, a terminal node a bicubic Bézier patch;
+/// `boundary`: a regular node's boundary bits (kBoundaryV0 …), whose phantom points the basis takes in.
+GPS_FN void quad_leaf_basis(int kind, int boundary, GPS_REAL u, GPS_REAL v, GPS_OUT GPS_REAL w[16], GPS_OUT GPS_REAL du[16],
                             GPS_OUT GPS_REAL dv[16]) {
   GPS_REAL wu[4], dwu[4], wv[4], dwv[4];
   if (kind == kNodeRegular) {
     bspline_basis(u, wu, dwu);
     bspline_basis(v, wv, dwv);
+    bspline_fold_boundary((boundary & kBoundaryU0) != 0, (boundary & kBoundaryU1) != 0, wu, dwu);
+    bspline_fold_boundary((boundary & kBoundaryV0) != 0, (boundary & kBoundaryV1) != 0, wv, dwv);
   } else {
     bezier_basis(u, wu, dwu);
     bezier_basis(v, wv, dwv);

@@ -101,6 +101,19 @@ private:
     return stencils_.add(m.combination(combo));
   }
 
+  // A regular leaf's phantom points (combinations p₋₁ = 2p₀ − p₁ beyond a boundary edge) replaced
+  // by the real point p₀ they mirror from; the basis takes them in (core/patch_basis.h,
+  // bspline_boundary), so the GPU sums no large differences of points.
+  static void take_in_phantoms(std::array<Combo, 16>& net) {
+    const auto phantom = [&](int i, int j) { return net[size_t(i + 4 * j)].size() != 1; };
+    const bool v0 = phantom(1, 0), u1 = phantom(3, 1), v1 = phantom(1, 3), u0 = phantom(0, 1);
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) {
+        const int ri = u0 && i == 0 ? 1 : u1 && i == 3 ? 2 : i, rj = v0 && j == 0 ? 1 : v1 && j == 3 ? 2 : j;
+        if (ri != i || rj != j) net[size_t(i + 4 * j)] = net[size_t(ri + 4 * rj)];
+      }
+  }
+
   int emit_leaf(NodeKind kind, const LocalMesh& m, const std::array<Combo, 16>& net) {
     const int offset = int(plans_.nodes.size());
     plans_.nodes.push_back(int32_t(kind));
@@ -132,6 +145,7 @@ private:
     const std::vector<int> corners(c.begin(), c.end());
     if (irregular == 0 && bspline_leaves_) {
       bspline_net(m, m.find_face(corners), c, net_);
+      take_in_phantoms(net_);
       return emit_leaf(NodeKind::regular, m, net_);
     }
     if (irregular == 0) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));

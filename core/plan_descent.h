@@ -92,7 +92,7 @@ GPS_FN int extraordinary_rows(bool quad, int r, GPS_REAL u, GPS_REAL v, bool ste
     return 3;
   }
   if (quad) {
-    quad_leaf_basis(kNodeRegular, s, t, w, ws, wt);
+    quad_leaf_basis(kNodeRegular, 0, s, t, w, ws, wt);  // the tables' nets hold their phantoms
   } else {
     GPS_REAL w12[12], ws12[12], wt12[12];
     loop_box_spline_basis(s, t, w12, ws12, wt12);

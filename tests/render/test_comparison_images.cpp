@@ -69,9 +69,11 @@ Shown shown(const Aovs& gpu, const Aovs& reference, AovKind kind) {
 // diagonal apart, a normal component 6e-6), and no pixel covered in one image only but where a
 // silhouette edge passes within float rounding of a pixel centre (at most 1 in 10,000 covered). The
 // share of pixels lit at all (1/255) and the brightest are reported. cone-concave's apex covariance
-// is 1e-5 (q̂ ~ 1e5 I) where its surface folds inwards: up to 6 % of its normal pixels reach 8/255
-// (measured 3.9 %, the largest difference 2.4e-4). cone-pointy, with the same apex, measured 5.5 %
-// while the GPU summed q̄ = q̂μ itself, 0.54 % about nearby anchors (shaders/plan_point.glsl).
+// is 1e-5 (q̂ ~ 1e5 I) where its surface folds inwards: up to 4 % of its normal pixels reach 8/255
+// (measured 3.0 %, the largest difference 2.4e-4). cone-pointy, with the same apex, measured 5.5 %
+// while the GPU summed q̄ = q̂μ itself, 0.54 % about nearby anchors (shaders/plan_point.glsl), 0.37 %
+// since boundary leaves take their phantom points into the basis (core/patch_basis.h): before, a
+// phantom beside the rim was 2p₀ − p₁ with p₁ weighing the apex, a large difference in float.
 TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
   const PlanOptions options{Scheme::catmull_clark};
   for (const char* name : {"valence3", "valence5", "valence8", "valence10", "wirecube", "cone", "cone-pointy", "cone-concave",
@@ -94,7 +96,7 @@ TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
                   name, what, s.stats.covered, 100.0 * s.lit, 100.0 * s.visible, s.brightest, s.stats.max, s.stats.mean);
       EXPECT_GT(s.stats.covered, kSize * kSize / 20) << name;
       EXPECT_LE(s.stats.coverage_mismatch, s.stats.covered / 10000) << name << " " << what;
-      EXPECT_LE(s.visible, kind == AovKind::normal && folded_needle ? 0.06 : 0.01) << name << " " << what;
+      EXPECT_LE(s.visible, kind == AovKind::normal && folded_needle ? 0.04 : 0.01) << name << " " << what;
     }
   }
 }

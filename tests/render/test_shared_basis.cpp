@@ -53,7 +53,7 @@ void main() {
   outputs[o + 60] = float(loop_ev_locate(s, t, scale, steps));
   outputs[o + 61] = s; outputs[o + 62] = t; outputs[o + 63] = scale;
   float q[16], qu[16], qv[16];
-  quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, u, v, q, qu, qv);
+  quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, i % 4 == 0 ? kBoundaryV0 | kBoundaryU1 : 0, u, v, q, qu, qv);
   for (int k = 0; k < 16; ++k) { outputs[o + 64 + k] = q[k]; outputs[o + 80 + k] = qu[k]; outputs[o + 96 + k] = qv[k]; }
 }
 )glsl";
@@ -81,7 +81,7 @@ std::vector<double> cpu_probe(int i, double u, double v) {
   out[60] = loop_ev_locate(s, t, scale, steps);
   out[61] = s, out[62] = t, out[63] = scale;
   double q[16], qu[16], qv[16];
-  quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, u, v, q, qu, qv);
+  quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, i % 4 == 0 ? kBoundaryV0 | kBoundaryU1 : 0, u, v, q, qu, qv);
   for (int k = 0; k < 16; ++k) out[size_t(64 + k)] = q[k], out[size_t(80 + k)] = qu[k], out[size_t(96 + k)] = qv[k];
   return out;
 }

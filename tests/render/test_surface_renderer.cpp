@@ -112,7 +112,9 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
         std::printf("%-13s %-6s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.4f degrees, %zu vertices\n",
                     name.c_str(), scheme ? "cc" : "auto", level, e.position, e.normal_degrees, e.count);
         EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
-        EXPECT_LT(e.position, name == "cone-pointy" && scheme ? 2.5e-6 : 2e-6) << name << " level " << level;
+        // The issue asks 2e-6; 1.9e-7 at most since boundary phantoms are folded into the basis
+        // (cone-pointy as Catmull-Clark was 2.2e-6 on its rim before).
+        EXPECT_LT(e.position, 5e-7) << name << " level " << level;
         EXPECT_LT(e.normal_degrees, 0.05) << name << " level " << level;
       }
     }
