@@ -79,20 +79,18 @@ GPS_FN void bezier_basis(GPS_REAL t, GPS_OUT GPS_REAL w[4], GPS_OUT GPS_REAL dw[
   dw[3] = 3.0 * t * t;
 }
 
-// Boundary edges of a regular quad leaf, as bits: 1 (v = 0, edge 0), 2 (u = 1), 4 (v = 1), 8 (u = 0).
-// Beyond a boundary edge the B-spline net has phantom points p₋₁ = 2p₀ − p₁ (mirrored across it);
-// the leaf's net holds the real point p₀ in their slots instead and the basis takes them in
-// (bspline_fold_boundary), so no point of the net is a large difference that float sums cancel.
+// Boundary edges of a regular quad leaf, as bits: 1 (v = 0, edge 0), 2 (u = 1), 4 (v = 1), 8 (u = 0),
+// kept in its record's first word above the kind (kNodeKindBits). Beyond a boundary edge the
+// B-spline net has phantom points p₋₁ = 2p₀ − p₁ (mirrored across it); the leaf's net holds the
+// real point p₀ in their slots instead and the basis takes them in (bspline_fold_boundary), so no
+// point of the net is a large difference that float sums cancel.
 GPS_CONST int kBoundaryV0 = 1;
 GPS_CONST int kBoundaryU1 = 2;
 GPS_CONST int kBoundaryV1 = 4;
 GPS_CONST int kBoundaryU0 = 8;
-
-/// The boundary bits of a regular leaf from its net's point indices n[j] (slot i + 4·k): a phantom's
-/// slot repeats the real point next to it, which no interior net does.
-GPS_FN int bspline_boundary(int n1, int n4, int n5, int n6, int n7, int n9, int n13) {
-  return (n1 == n5 ? kBoundaryV0 : 0) | (n7 == n6 ? kBoundaryU1 : 0) | (n13 == n9 ? kBoundaryV1 : 0) | (n4 == n5 ? kBoundaryU0 : 0);
-}
+GPS_CONST int kNodeKindBits = 4;  // a node record's first word: kind | boundary << kNodeKindBits
+GPS_FN int node_kind(int word) { return word & ((1 << kNodeKindBits) - 1); }
+GPS_FN int node_boundary(int word) { return word >> kNodeKindBits; }
 
 /// One direction's B-spline basis b (and db) with the phantom points beyond the low (b[0]) or high
 /// (b[3]) end taken in: p₋₁ = 2p₀ − p₁ gives p₀ 2·b[0] more and p₁ b[0] less, and its own slot 0.

@@ -82,8 +82,7 @@ void evaluate_dual(const PlanTable& plans, const std::vector<Dual>& points, int 
     evaluate_net(points, nodes + node + 1, 12, w, wu, wv, q, q_u, q_v);
   } else {
     double w[16], wu[16], wv[16];
-    const int32_t* n = nodes + node + 1;
-    quad_leaf_basis(kind, bspline_boundary(n[1], n[4], n[5], n[6], n[7], n[9], n[13]), u, v, w, wu, wv);
+    quad_leaf_basis(kind, node_boundary(nodes[node]), u, v, w, wu, wv);
     evaluate_net(points, nodes + node + 1, 16, w, wu, wv, q, q_u, q_v);
   }
   q_u *= scale;

@@ -12,7 +12,7 @@ namespace {
 // The points a patch's plan nodes read (core/plan_table.h): a walk from its root.
 void collect_node_points(const PlanTable& plans, int node, std::vector<int>& out) {
   const int32_t* n = plans.nodes.data() + node;
-  const auto kind = NodeKind(n[0]);
+  const auto kind = NodeKind(node_kind(n[0]));
   if (kind == NodeKind::internal) {
     for (int c = 1; c <= 4; ++c) collect_node_points(plans, n[c], out);
   } else if (kind == NodeKind::extraordinary) {  // corner, table, K, then K points

@@ -102,9 +102,9 @@ private:
   }
 
   // A regular leaf's phantom points (combinations p₋₁ = 2p₀ − p₁ beyond a boundary edge) replaced
-  // by the real point p₀ they mirror from; the basis takes them in (core/patch_basis.h,
-  // bspline_boundary), so the GPU sums no large differences of points.
-  static void take_in_phantoms(std::array<Combo, 16>& net) {
+  // by the real point p₀ they mirror from; returns the boundary bits (core/patch_basis.h,
+  // kBoundaryV0 …), with which the basis takes them in, so the GPU sums no large differences.
+  static int take_in_phantoms(std::array<Combo, 16>& net) {
     const auto phantom = [&](int i, int j) { return net[size_t(i + 4 * j)].size() != 1; };
     const bool v0 = phantom(1, 0), u1 = phantom(3, 1), v1 = phantom(1, 3), u0 = phantom(0, 1);
     for (int j = 0; j < 4; ++j)
@@ -112,11 +112,12 @@ private:
         const int ri = u0 && i == 0 ? 1 : u1 && i == 3 ? 2 : i, rj = v0 && j == 0 ? 1 : v1 && j == 3 ? 2 : j;
         if (ri != i || rj != j) net[size_t(i + 4 * j)] = net[size_t(ri + 4 * rj)];
       }
+    return (v0 ? kBoundaryV0 : 0) | (u1 ? kBoundaryU1 : 0) | (v1 ? kBoundaryV1 : 0) | (u0 ? kBoundaryU0 : 0);
   }
 
-  int emit_leaf(NodeKind kind, const LocalMesh& m, const std::array<Combo, 16>& net) {
+  int emit_leaf(NodeKind kind, const LocalMesh& m, const std::array<Combo, 16>& net, int boundary = 0) {
     const int offset = int(plans_.nodes.size());
-    plans_.nodes.push_back(int32_t(kind));
+    plans_.nodes.push_back(int32_t(kind) | boundary << kNodeKindBits);
     for (const Combo& p : net) plans_.nodes.push_back(point(m, p));
     return offset;
   }
@@ -145,8 +146,8 @@ private:
     const std::vector<int> corners(c.begin(), c.end());
     if (irregular == 0 && bspline_leaves_) {
       bspline_net(m, m.find_face(corners), c, net_);
-      take_in_phantoms(net_);
-      return emit_leaf(NodeKind::regular, m, net_);
+      const int boundary = take_in_phantoms(net_);
+      return emit_leaf(NodeKind::regular, m, net_, boundary);
     }
     if (irregular == 0) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
     if (exact_ && irregular == 1 && depth >= max_depth_ && m.complete[size_t(c[size_t(corner)])])
@@ -231,7 +232,7 @@ PlanTables merge(std::vector<RangePlans>& ranges, int n_base) {
     const int base = int(node_base[r]);
     int32_t* nodes = plans.nodes.data() + node_base[r];
     for (size_t o = 0; o < p.nodes.size();) {  // node records: kind, then children, points or a table
-      const auto kind = NodeKind(p.nodes[o]);
+      const auto kind = NodeKind(node_kind(p.nodes[o]));
       nodes[o] = p.nodes[o];
       if (kind == NodeKind::extraordinary) {  // corner, table, K, K points
         const size_t k = size_t(p.nodes[o + 3]);

@@ -37,7 +37,7 @@ GPS_FN int quad_child(GPS_INOUT_REF(GPS_REAL) u, GPS_INOUT_REF(GPS_REAL) v) {
 GPS_FN int descend_plan(GPS_NODES_PARAM int node, bool triangle, GPS_INOUT_REF(GPS_REAL) u, GPS_INOUT_REF(GPS_REAL) v,
                         GPS_OUT_REF(GPS_REAL) scale, GPS_OUT_REF(int) kind, GPS_OUT_REF(int) depth) {
   scale = 1.0;
-  kind = nodes[node];
+  kind = node_kind(nodes[node]);
   int level = 0;
   for (; level < kMaxPlanDepth && kind == kNodeInternal; ++level) {
     int child;
@@ -50,7 +50,7 @@ GPS_FN int descend_plan(GPS_NODES_PARAM int node, bool triangle, GPS_INOUT_REF(G
       scale *= 2.0;
     }
     node = nodes[node + 1 + child];
-    kind = nodes[node];
+    kind = node_kind(nodes[node]);
   }
   depth = level;
   return node;

@@ -8,11 +8,13 @@
 // k in [offsets[r], offsets[r+1]).
 //
 // Nodes. nodes[] holds one record per quadtree node, addressed by its offset:
-//   nodes[o] = kind (NodeKind)
+//   nodes[o] = kind (NodeKind) | boundary << kNodeKindBits (core/patch_basis.h: a regular quad
+//             leaf's boundary edges, whose phantom points its basis takes in; 0 for every other)
 //   internal: nodes[o+1 .. o+4] = offsets of the four children, child c = ubit + 2·vbit, where
 //             ubit = (u ≥ ½), vbit = (v ≥ ½) in the node's own [0,1]² domain;
 //   regular:  nodes[o+1 .. o+16] = point indices of a bicubic B-spline patch, index i + 4·j with
-//             i along u and j along v; the patch spans the middle cell [1,2]² of the 4×4 net;
+//             i along u and j along v; the patch spans the middle cell [1,2]² of the 4×4 net; beyond
+//             a boundary edge the slots repeat the points next to them;
 //   terminal: nodes[o+1 .. o+16] = point indices of a bicubic Bézier patch (thesis Fig. 2.5
 //             rules baked into the stencils), same i + 4·j order.
 // A node at depth k covers a square of side 2^-k of its patch; its domain is rescaled to [0,1]²,

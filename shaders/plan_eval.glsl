@@ -76,19 +76,19 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
     return;
   }
   float w[16], wdu[16], wdv[16];
-  int n = node + 1;
-  int boundary = bspline_boundary(nodes[n + 1], nodes[n + 4], nodes[n + 5], nodes[n + 6], nodes[n + 7], nodes[n + 9], nodes[n + 13]);
+  int boundary = node_boundary(nodes[node]);
   quad_leaf_basis(kind, boundary, uv.x, uv.y, w, wdu, wdv);
   qa = vec4(0.0); qb = vec4(0.0); qc = vec4(0.0);
   ua = vec4(0.0); ub = vec4(0.0); uc = vec4(0.0);
   va = vec4(0.0); vb = vec4(0.0); vc = vec4(0.0);
   // The sums' anchor: the first point's; in a boundary leaf, whose basis takes in phantom points
-  // (p₋₁ = 2p₀ − p₁), that of the point weighing most (|w| tr q̂), as a stencil row's
+  // (p₋₁ = 2p₀ − p₁), that of the middle point weighing most (|w| tr q̂), as a stencil row's
   // (stencil_comp.glsl): the point inside can be far heavier than the one on the boundary.
   int anchor_point = nodes[node + 1];
   if (boundary != 0) {
     float most = 0.0;
-    for (int k = 0; k < 16; ++k) {
+    for (int m = 0; m < 4; ++m) {
+      int k = m < 2 ? 5 + m : 7 + m;  // slots 5, 6, 9, 10: the net's middle 2×2
       int p = nodes[node + 1 + k];
       vec4 pa = points[kVec4PerPoint * p], pb = points[kVec4PerPoint * p + 1];
       float weight = abs(w[k]) * abs(pa.x + pa.w + pb.y);
