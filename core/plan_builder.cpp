@@ -40,17 +40,18 @@ public:
   RangePlans build(int first, int last) {
     const PolygonTopology& t = base_.topology;
     for (int f = first; f < last; ++f) {
-      std::vector<int> corners(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
-      const int n = int(corners.size());
+      const int n = t.face_size(f);
       if (n == 4) {
-        plans_.patch_roots.push_back(build_node(base_, {corners[0], corners[1], corners[2], corners[3]}, 0));
-        plans_.patch_corner_points.insert(plans_.patch_corner_points.end(), corners.begin(), corners.end());
+        const int* v = t.verts.data() + t.offsets[size_t(f)];
+        plans_.patch_roots.push_back(build_node(base_, {v[0], v[1], v[2], v[3]}, 0, f));
+        plans_.patch_corner_points.insert(plans_.patch_corner_points.end(), v, v + 4);
         for (int k = 0; k < 4; ++k) {
-          const int a = corners[size_t(k)], b = corners[size_t((k + 1) % 4)];
+          const int a = v[k], b = v[(k + 1) % 4];
           add_edge(a, b, beside_split_face(f, a, b) ? PatchEdgePart::whole_beside_halves : PatchEdgePart::whole);
         }
         continue;
       }
+      std::vector<int> corners(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
       // A face of n sides: its n Catmull-Clark children are the patch roots, one level down already,
       // so that along an edge shared with a quad both sides reach the same depth (same limit curve).
       std::vector<int> index;
@@ -138,14 +139,14 @@ private:
     return offset;
   }
 
-  int build_node(const LocalMesh& m, const std::array<int, 4>& c, int depth) {
+  // The node of the quad with corners c of m (the face `face` of m where known).
+  int build_node(const LocalMesh& m, const std::array<int, 4>& c, int depth, int face = -1) {
     deepest_ = std::max(deepest_, depth);
     int irregular = 0, corner = -1;
     for (int k = 0; k < 4; ++k)
       if (!regular_vertex(m, c[size_t(k)])) ++irregular, corner = k;
-    const std::vector<int> corners(c.begin(), c.end());
     if (irregular == 0 && bspline_leaves_) {
-      bspline_net(m, m.find_face(corners), c, net_);
+      bspline_net(m, face >= 0 ? face : m.find_face({c[0], c[1], c[2], c[3]}), c, net_);
       const int boundary = take_in_phantoms(net_);
       return emit_leaf(NodeKind::regular, m, net_, boundary);
     }
@@ -157,7 +158,7 @@ private:
     const int offset = int(plans_.nodes.size());
     plans_.nodes.insert(plans_.nodes.end(), {int32_t(NodeKind::internal), 0, 0, 0, 0});
     std::vector<int> index;
-    const LocalMesh sub = extract_neighbourhood(m, corners, index);
+    const LocalMesh sub = extract_neighbourhood(m, {c[0], c[1], c[2], c[3]}, index);
     const LocalMesh fine = refine_local_mesh(sub);
     const int nv = sub.topology.n_vertices, ne = sub.connectivity.n_edges();
     std::array<int, 4> sc;
