@@ -22,13 +22,14 @@ void evaluate_extraordinary(const PlanTable& plans, const std::vector<Dual>& poi
                                         ws, wt, d, scale);
   const double* table = plans.ev_tables.data() + nodes[node + 2];
   const double* rows = table + size_t(first_row) * size_t(k);
-  Eigen::Matrix<double, Eigen::Dynamic, 9> stepped;  // the K points after `steps` steps of A, where there are any
+  std::vector<Dual> stepped;  // the K points after `steps` steps of A, where there are any
   if (steps > 0) {
     const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> step(
         table + size_t(3 * net * kEvLevels + 3) * size_t(k), k, k);
-    stepped.resize(k, 9);
-    for (int i = 0; i < k; ++i) stepped.row(i) = points[size_t(nodes[node + 4 + i])].transpose();
-    for (int n = 0; n < steps; ++n) stepped = step * stepped;
+    Eigen::Matrix<double, Eigen::Dynamic, 9> c(k, 9);
+    for (int i = 0; i < k; ++i) c.row(i) = points[size_t(nodes[node + 4 + i])].transpose();
+    for (int n = 0; n < steps; ++n) c = step * c;
+    for (int i = 0; i < k; ++i) stepped.push_back(c.row(i).transpose());
   }
   q.setZero();
   Dual q_s = Dual::Zero(), q_t = Dual::Zero();
@@ -40,7 +41,7 @@ void evaluate_extraordinary(const PlanTable& plans, const std::vector<Dual>& poi
       a_s += ws[j] * x;
       a_t += wt[j] * x;
     }
-    const Dual p = steps > 0 ? Dual(stepped.row(i).transpose()) : points[size_t(nodes[node + 4 + i])];
+    const Dual& p = steps > 0 ? stepped[size_t(i)] : points[size_t(nodes[node + 4 + i])];
     q += a * p;
     q_s += a_s * p;
     q_t += a_t * p;

@@ -37,6 +37,8 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surfac
   surface_ = std::make_unique<const PlannedSurface>(std::move(surface));
   readers_.reset();
   n_base_ = int(mesh.n_vertices());
+  half_size_patches_ = 0;
+  for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
   buffers_.upload_tables(surface_->tables());
   buffers_.upload_gaussians(mesh);
   ellipsoids_.upload(mesh, nullptr);
@@ -198,9 +200,7 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
     } else if (shape() == PatchShape::triangle) {
       estimate += patches * level * level * 5 / 4;
     } else {
-      long long halves = 0;
-      for (int p = 0; p < patches; ++p) halves += half_size_patch(tables().plans, p);
-      const long long half_level = level % 2 == 0 ? level / 2 : level;
+      const long long halves = half_size_patches_, half_level = level % 2 == 0 ? level / 2 : level;
       estimate += ((patches - halves) * 2 * level * level + halves * 2 * half_level * half_level) * 5 / 4;
     }
     const ShaderProgram& capture = patches_.program(shape(), PatchOutput::capture);

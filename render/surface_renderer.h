@@ -113,6 +113,7 @@ private:
   long long points_generation_ = 0;  // bumped by every compute pass: the cache's key
   unsigned matcap_ = 0;
   int n_base_ = 0;
+  long long half_size_patches_ = 0;  // a split face's patches (quads): the cache's buffer estimate
   int group_limit_ = 0;  // lower_device_limits
   long long storage_limit_ = 0;
   GpuPassTimer* timer_ = nullptr;

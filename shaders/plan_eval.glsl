@@ -90,8 +90,7 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
     for (int m = 0; m < 4; ++m) {
       int k = m < 2 ? 5 + m : 7 + m;  // slots 5, 6, 9, 10: the net's middle 2×2
       int p = nodes[node + 1 + k];
-      vec4 pa = points[kVec4PerPoint * p], pb = points[kVec4PerPoint * p + 1];
-      float weight = abs(w[k]) * abs(pa.x + pa.w + pb.y);
+      float weight = abs(w[k]) * abs(point_precision_trace(p));
       anchor_point = weight > most ? p : anchor_point;
       most = max(most, weight);
     }

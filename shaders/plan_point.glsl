@@ -10,6 +10,12 @@ vec3 offset_part(vec4 b, vec4 c) { return vec3(b.z, b.w, c.x); }
 
 vec3 point_anchor(int p) { return points[kVec4PerPoint * p + 2].yzw; }
 
+// tr q̂ of plan point p: how heavily it weighs in a sum, for the choice of the sum's anchor.
+float point_precision_trace(int p) {
+  vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1];
+  return a.x + a.w + b.y;
+}
+
 // μ of plan point p: a + [q̂]⁻¹ y (thesis Eq. 2.11 about the anchor).
 vec3 point_mean(int p) {
   vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];

@@ -18,8 +18,7 @@ void main() {
   int heaviest = begin;
   float most = 0.0;
   for (int k = begin; k < end; ++k) {
-    vec4 pa = points[kVec4PerPoint * indices[k]], pb = points[kVec4PerPoint * indices[k] + 1];
-    float weight = abs(weights[k]) * abs(pa.x + pa.w + pb.y);
+    float weight = abs(weights[k]) * abs(point_precision_trace(indices[k]));
     heaviest = weight > most ? k : heaviest;
     most = max(most, weight);
   }
