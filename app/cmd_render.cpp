@@ -12,7 +12,9 @@
 #include "core/samples.h"
 #include "core/text_file.h"
 #include "render/gl_context.h"
+#include "render/image_io.h"
 #include "render/matcap.h"
+#include "render/matcap_file.h"
 #include "render/reference_triangles.h"
 #include "render/surface_renderer.h"
 

@@ -5,6 +5,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GL/osmesa.h>
+#include <dlfcn.h>
 
 #include <mutex>
 #include <vector>
@@ -28,26 +29,51 @@ void GLAPIENTRY on_gl_message(GLenum source, GLenum type, GLuint, GLenum severit
   if (first_error.empty()) first_error = message;
 }
 
+// OSMesa's four entry points, loaded when the first OSMesa context is made: a machine with a GPU
+// and EGL runs gpsurf without Mesa's software renderer (and the LLVM it links) installed.
+struct OsMesaLibrary {
+  decltype(&OSMesaCreateContextAttribs) create = nullptr;
+  decltype(&OSMesaMakeCurrent) make_current = nullptr;
+  decltype(&OSMesaGetProcAddress) get_proc_address = nullptr;
+  decltype(&OSMesaDestroyContext) destroy = nullptr;
+
+  static const OsMesaLibrary& get() {
+    static const OsMesaLibrary library = [] {
+      OsMesaLibrary l;
+      void* handle = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_GLOBAL);
+      if (!handle) throw Error("OSMesa (libOSMesa.so.8, Debian's libosmesa6) is not installed; on a GPU use --context egl");
+      l.create = reinterpret_cast<decltype(l.create)>(dlsym(handle, "OSMesaCreateContextAttribs"));
+      l.make_current = reinterpret_cast<decltype(l.make_current)>(dlsym(handle, "OSMesaMakeCurrent"));
+      l.get_proc_address = reinterpret_cast<decltype(l.get_proc_address)>(dlsym(handle, "OSMesaGetProcAddress"));
+      l.destroy = reinterpret_cast<decltype(l.destroy)>(dlsym(handle, "OSMesaDestroyContext"));
+      if (!l.create || !l.make_current || !l.get_proc_address || !l.destroy) throw Error("libOSMesa.so.8 lacks the OSMesa 11.2 entry points");
+      return l;
+    }();
+    return library;
+  }
+};
+
 class OsMesaContext : public GlContext {
 public:
-  OsMesaContext() {
+  OsMesaContext() : osmesa_(OsMesaLibrary::get()) {
     const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                               OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
-    context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+    context_ = osmesa_.create(attributes, nullptr);
     if (!context_) throw Error("OSMesa could not create an OpenGL 4.5 core context");
     buffer_.resize(4 * 4 * 4);
     make_current();
-    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(OSMesaGetProcAddress)))
+    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(osmesa_.get_proc_address)))
       throw Error("could not load the OpenGL 4.5 functions through OSMesa");
     enable_gl_debug_output();
   }
-  ~OsMesaContext() override { OSMesaDestroyContext(context_); }
+  ~OsMesaContext() override { osmesa_.destroy(context_); }
   void make_current() override {
     // OSMesa needs a colour buffer to be current; drawing goes to our framebuffers.
-    if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 4, 4)) throw Error("OSMesa could not make its context current");
+    if (!osmesa_.make_current(context_, buffer_.data(), GL_UNSIGNED_BYTE, 4, 4)) throw Error("OSMesa could not make its context current");
   }
 
 private:
+  const OsMesaLibrary& osmesa_;
   OSMesaContext context_ = nullptr;
   std::vector<unsigned char> buffer_;
 };

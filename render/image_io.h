@@ -3,16 +3,9 @@
 #include <string>
 #include <vector>
 
+#include "render/image.h"
+
 namespace gps {
-
-struct Image {
-  int width = 0, height = 0, channels = 0;
-  std::vector<float> pixels;  // row-major, top row first, `channels` floats per pixel
-  float at(int x, int y, int c) const { return pixels[(size_t(y) * size_t(width) + size_t(x)) * size_t(channels) + size_t(c)]; }
-};
-
-/// Reverses the order of the rows (GL reads rows bottom-up; images run top-down).
-void flip_rows(Image& image);
 
 /// Reads any image OpenImageIO knows; throws gps::Error naming the file.
 Image read_image(const std::string& path);

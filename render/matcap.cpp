@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 #include "core/error.h"
 
@@ -53,20 +52,6 @@ Image make_builtin_matcap(const std::string& name, int size) {
         image.pixels[(size_t(y) * size_t(size) + size_t(x)) * 3 + size_t(c)] = std::clamp(v, 0.0f, 1.0f);
       }
     }
-  return image;
-}
-
-Image load_matcap(const std::string& name_or_file) {
-  const auto names = builtin_matcap_names();
-  if (std::find(names.begin(), names.end(), name_or_file) != names.end()) return make_builtin_matcap(name_or_file);
-  std::error_code ec;
-  if (!std::filesystem::exists(name_or_file, ec)) {
-    std::string known;
-    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-    throw usage_error("unknown MatCap '" + name_or_file + "' (neither a file nor one of: " + known + ")");
-  }
-  Image image = read_image(name_or_file);
-  if (image.channels < 3) throw Error(name_or_file + ": a MatCap needs an RGB image");
   return image;
 }
 

@@ -3,16 +3,12 @@
 #include <string>
 #include <vector>
 
-#include "render/image_io.h"
+#include "render/image.h"
 
 namespace gps {
 
 /// The MatCaps gpsurf makes itself, by name.
 std::vector<std::string> builtin_matcap_names();
-
-/// A built-in MatCap by name, or an image file (PNG, EXR, ... through OpenImageIO).
-/// An unknown name that is not a file is a usage error listing the names.
-Image load_matcap(const std::string& name_or_file);
 
 /// A built-in MatCap rendered procedurally (a lit sphere), size × size RGB.
 Image make_builtin_matcap(const std::string& name, int size = 256);

@@ -1,6 +1,6 @@
 #pragma once
 // An off-screen framebuffer: colour (RGBA8) plus world position and normal AOVs (RGBA32F) and depth.
-#include "render/image_io.h"
+#include "render/image.h"
 
 namespace gps {
 

@@ -20,7 +20,7 @@
 #include "render/dual_stencil_pass.h"
 #include "render/ellipsoid_overlay.h"
 #include "render/gpu_pass_timer.h"
-#include "render/image_io.h"
+#include "render/image.h"
 #include "render/patch_draw.h"
 #include "render/plan_buffers.h"
 #include "render/render_target.h"

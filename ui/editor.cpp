@@ -15,6 +15,7 @@
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/matcap.h"
+#include "render/matcap_file.h"
 #include "ui/editor_app.h"
 #include "ui/editor_settings.h"
 #include "ui/ellipsoid_scope.h"

@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 #include "core/samples.h"
-#include "render/matcap.h"
+#include "render/matcap_file.h"
 #include "ui/editor_app.h"
 
 namespace gps {

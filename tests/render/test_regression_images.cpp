@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/samples.h"
+#include "render/image_io.h"
 #include "render/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 

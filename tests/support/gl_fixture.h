@@ -1,10 +1,12 @@
 #pragma once
-// One OSMesa GL 4.5 context for a whole test suite: `using MySuite = test::GlTest;` (or derive from
-// it) and write TEST_F(MySuite, ...). The context is made current before the suite's first test and
-// destroyed after its last.
+// One GL 4.5 context for a whole test suite: `using MySuite = test::GlTest;` (or derive from it) and
+// write TEST_F(MySuite, ...). The context is made current before the suite's first test and destroyed
+// after its last. OSMesa unless GPSURF_TEST_CONTEXT=egl (the same tests on a GPU driver).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <memory>
+#include <string_view>
 
 #include "render/gl_context.h"
 
@@ -12,7 +14,10 @@ namespace gps::test {
 
 class GlTest : public ::testing::Test {
 protected:
-  static void SetUpTestSuite() { context_ = create_offscreen_context(ContextKind::osmesa); }
+  static void SetUpTestSuite() {
+    const char* kind = std::getenv("GPSURF_TEST_CONTEXT");
+    context_ = create_offscreen_context(kind && std::string_view(kind) == "egl" ? ContextKind::egl : ContextKind::osmesa);
+  }
   static void TearDownTestSuite() { context_.reset(); }
 
 private:
