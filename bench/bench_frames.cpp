@@ -2,6 +2,7 @@
 // and tessellation setting, a live frame (every patch evaluated), a cached frame (the surface
 // cache's stored triangles), a frame after a one-vertex edit (the cache refreshes that vertex's
 // patches) and the floor (the cached triangles, welded, from a static vertex buffer, same shading).
+// `unwelded` is the floor without shared vertices.
 // `gpsurf bench --render` prints the same four in one table from a few repetitions each; this one
 // lets Google Benchmark choose the iterations, as sub-millisecond frames on a GPU need.
 // Names: Frame/<kind>/<mesh>/<setting>, e.g. Frame/floor/valence5/level16, Frame/cached/sphere:100000/adaptive6px.
@@ -9,6 +10,7 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <memory>
@@ -21,8 +23,23 @@
 
 namespace {
 
-enum class FrameKind { live, cached, edit, floor };
-constexpr const char* kKindNames[] = {"live", "cached", "edit", "floor"};
+// unwelded: the floor's triangles with three vertices each, as the cache stores them (what sharing
+// vertices saves on the device).
+enum class FrameKind { live, cached, edit, floor, unwelded };
+constexpr const char* kKindNames[] = {"live", "cached", "edit", "floor", "unwelded"};
+
+gps::TriangleMesh unwelded(const gps::TriangleMesh& welded) {
+  gps::TriangleMesh soup;
+  for (const auto& t : welded.triangles) {
+    const int first = int(soup.positions.size());
+    for (const int v : t) {
+      soup.positions.push_back(welded.positions[size_t(v)]);
+      soup.normals.push_back(welded.normals[size_t(v)]);
+    }
+    soup.triangles.push_back({first, first + 1, first + 2});
+  }
+  return soup;
+}
 
 struct MeshCase {
   std::string name;
@@ -62,29 +79,50 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   o.pixels = level > 0 ? 0.0f : 6.0f;
   o.surface_cache = kind != FrameKind::live;
   s.renderer.draw(s.target, s.camera, o);  // fills the cache (or compiles the live programs)
-  if (kind == FrameKind::floor) {
+  if (kind == FrameKind::floor || kind == FrameKind::unwelded) {
     if (!s.renderer.surface_cache().holds_triangles()) {
       state.SkipWithError("past the surface cache's memory limit: no stored triangles for a floor");
       return;
     }
-    s.renderer.set_triangles(s.renderer.surface_cache().stored_triangles());
+    const gps::TriangleMesh stored = s.renderer.surface_cache().stored_triangles();
+    s.renderer.set_triangles(kind == FrameKind::floor ? stored : unwelded(stored));
     o.static_triangles = true;
   }
   const int edited = int(s.mesh.n_vertices() / 2);
-  s.renderer.draw(s.target, s.camera, o);
-  glFinish();
-  for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
+  const auto frame = [&] {
     if (kind == FrameKind::edit) {
       s.mesh.set_covariance(size_t(edited), s.mesh.covariance(size_t(edited)) * (s.grow ? 1.1 : 1.0 / 1.1));
       s.grow = !s.grow;
       s.renderer.update_vertices(s.mesh, {edited});
     }
     s.renderer.draw(s.target, s.camera, o);
+  };
+  // Warm-up: the first frame of a kind may compile or allocate (reported apart as first_ms).
+  auto start = std::chrono::steady_clock::now();
+  frame();
+  glFinish();
+  const double first_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  frame();
+  glFinish();
+  // The GPU's own time of each frame (GL_TIME_ELAPSED): wall time beyond it is waiting and the CPU.
+  unsigned query = 0;
+  glCreateQueries(GL_TIME_ELAPSED, 1, &query);
+  double gpu_ns = 0;
+  for (auto _ : state) {
+    start = std::chrono::steady_clock::now();
+    glBeginQuery(GL_TIME_ELAPSED, query);
+    frame();
+    glEndQuery(GL_TIME_ELAPSED);
     glFinish();
     state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+    gpu_ns += double(ns);
   }
+  glDeleteQueries(1, &query);
   state.counters["patches"] = double(s.renderer.tables().plans.n_patches());
+  state.counters["gpu_ms"] = gpu_ns * 1e-6 / double(std::max<benchmark::IterationCount>(1, state.iterations()));
+  state.counters["first_ms"] = first_ms;
 }
 
 }  // namespace
@@ -95,7 +133,7 @@ int main(int argc, char** argv) {
                                         {"icosphere", 0}, {"pawn", 0},     {"pawn-quads", 0}, {"sphere", 100000}};
   for (const MeshCase& m : meshes)
     for (const int level : {1, 4, 16, 64, 0})
-      for (const FrameKind kind : {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor}) {
+      for (const FrameKind kind : {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor, FrameKind::unwelded}) {
         const std::string id = m.name + (m.faces ? ":" + std::to_string(m.faces) : "") + "/" +
                                (level ? "level" + std::to_string(level) : std::string("adaptive6px"));
         benchmark::RegisterBenchmark(("Frame/" + std::string(kKindNames[int(kind)]) + "/" + id).c_str(), BM_Frame, m, kind, level)

@@ -87,6 +87,15 @@ std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, con
   glCreateBuffers(1, &buffer);
   glNamedBufferData(buffer, GLsizeiptr(max_vertices * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
   glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
+  // A draw needs a complete framebuffer even with rasterization discarded (NVIDIA's driver checks
+  // it, and a surfaceless EGL context has no default one): one without attachments, 1×1 (GL 4.3).
+  GLint previous_framebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_framebuffer);
+  unsigned framebuffer = 0;
+  glCreateFramebuffers(1, &framebuffer);
+  glNamedFramebufferParameteri(framebuffer, GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);
+  glNamedFramebufferParameteri(framebuffer, GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
   const ShaderProgram& feedback = program(shape, PatchOutput::feedback);
   set_frame_uniforms(feedback, camera, o, aspect, 512, 512);
   feedback.use();
@@ -98,6 +107,8 @@ std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, con
   glEndTransformFeedback();
   glEndQuery(GL_PRIMITIVES_GENERATED);
   glDisable(GL_RASTERIZER_DISCARD);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previous_framebuffer));
+  glDeleteFramebuffers(1, &framebuffer);
   GLuint primitives = 0;
   glGetQueryObjectuiv(query, GL_QUERY_RESULT, &primitives);
   std::vector<TessellatedVertex> out(std::min<size_t>(max_vertices, size_t(primitives) * 3));

@@ -15,6 +15,7 @@ namespace gps {
 SurfaceCache::SurfaceCache() {
   glCreateBuffers(1, &buffer_);
   glCreateBuffers(1, &scratch_);
+  glCreateBuffers(1, &spare_);
   glCreateVertexArrays(1, &vao_);
   glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kVertexBytes);
   for (GLuint a = 0; a < 3; ++a) {
@@ -31,6 +32,7 @@ SurfaceCache::SurfaceCache() {
 SurfaceCache::~SurfaceCache() {
   glDeleteBuffers(1, &buffer_);
   glDeleteBuffers(1, &scratch_);
+  glDeleteBuffers(1, &spare_);
   glDeleteVertexArrays(1, &vao_);
   if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
 }
@@ -150,12 +152,6 @@ bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std
   return total < capacity;  // a full buffer may have dropped triangles
 }
 
-void SurfaceCache::set_buffer(unsigned buffer, long long capacity) {
-  buffer_ = buffer;
-  capacity_ = capacity;
-  glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kVertexBytes);
-}
-
 bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches,
                            long long estimate, const DrawPatches& draw_patches, bool rasterize) {
   ++captures_;
@@ -166,6 +162,10 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
   refused_ = false;
   tracked_points_ = key.points;
   blocks_.reset(n_patches, patches_per_block(n_patches));
+  if (spare_capacity_ > 0) {  // edits start over from here
+    glNamedBufferData(spare_, 0, nullptr, GL_DYNAMIC_COPY);
+    spare_capacity_ = 0;
+  }
   std::vector<int> all(size_t(blocks_.size()));
   for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);
   reserve(buffer_, capacity_, estimate);
@@ -215,19 +215,18 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches) {
   return true;
 }
 
-// A new buffer: the runs of clean blocks from the stored buffer, the new blocks from the scratch
-// buffer, in patch order.
+// The spare buffer, made the stored one: the runs of clean blocks from the stored buffer, the new
+// blocks from the scratch buffer, in patch order. The spare is kept for the next edit (an adaptive
+// edit changes counts every time; creating a buffer of the whole surface per edit cost a GPU 40 ms
+// on the 100k-face sphere) and released by the next full capture.
 bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<long long>& counts) {
   long long total = blocks_.total();
   for (size_t i = 0; i < blocks.size(); ++i) total += counts[i] - blocks_.triangles(blocks[i]);
   if (total >= most_triangles()) return false;
-  unsigned assembled = 0;
-  glCreateBuffers(1, &assembled);
-  long long capacity = 0;
-  reserve(assembled, capacity, total + total / 8 + 64);
+  reserve(spare_, spare_capacity_, total + total / 8 + 64);
   const auto copy = [&](unsigned source, long long from, long long to, long long n) {
     if (n > 0)
-      glCopyNamedBufferSubData(source, assembled, GLintptr(from * 3 * kVertexBytes), GLintptr(to * 3 * kVertexBytes),
+      glCopyNamedBufferSubData(source, spare_, GLintptr(from * 3 * kVertexBytes), GLintptr(to * 3 * kVertexBytes),
                                GLsizeiptr(n * 3 * kVertexBytes));
   };
   long long to = 0, scratch_from = 0;
@@ -242,8 +241,9 @@ bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<lo
     clean = blocks[i] + 1;
   }
   copy(buffer_, blocks_.first_triangle(clean), to, blocks_.total() - blocks_.first_triangle(clean));
-  glDeleteBuffers(1, &buffer_);
-  set_buffer(assembled, capacity);
+  std::swap(buffer_, spare_);
+  std::swap(capacity_, spare_capacity_);
+  glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kVertexBytes);
   blocks_.replace_counts(blocks, counts);
   return true;
 }

@@ -15,7 +15,7 @@
 // counted by its own query. An edit reports the patches it changed (points_changed); the next frame
 // captures only their blocks again (refresh), under the camera of the capture, into a scratch
 // buffer, and copies them into place (or, where adaptive levels changed a block's count, assembles
-// a new buffer from the clean and the new blocks). Past half of the patches, or after a compute pass
+// the clean and the new blocks in a spare buffer, which then becomes the stored one). Past half of the patches, or after a compute pass
 // over everything (core's update_everything), the whole surface is captured again.
 #include <glm/glm.hpp>
 #include <functional>
@@ -94,7 +94,7 @@ public:
   int refreshes() const { return refreshes_; }
   int refreshed_patches() const { return refreshed_patches_; }
   long long triangles() const { return blocks_.total(); }
-  size_t buffer_bytes() const { return size_t(capacity_ + scratch_capacity_) * 3 * kVertexBytes; }
+  size_t buffer_bytes() const { return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kVertexBytes; }
 
 private:
   bool camera_close(const glm::mat4& view_projection, glm::vec2 viewport, float pixels) const;
@@ -106,11 +106,10 @@ private:
                       std::vector<long long>& counts, bool rasterize = false);
   /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
   bool assemble(const std::vector<int>& blocks, const std::vector<long long>& counts);
-  void set_buffer(unsigned buffer, long long capacity);
 
-  unsigned buffer_ = 0, scratch_ = 0, vao_ = 0;
+  unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, vao_ = 0;
   std::vector<unsigned> queries_;  // one per block of a capture
-  long long capacity_ = 0, scratch_capacity_ = 0;  // triangles the buffers hold
+  long long capacity_ = 0, scratch_capacity_ = 0, spare_capacity_ = 0;  // triangles the buffers hold
   SurfaceBlocks blocks_;
   long long tracked_points_ = -1;  // the points the stale blocks lead to (−1: untracked)
   bool stored_ = false, refused_ = false;
