@@ -24,9 +24,9 @@
 namespace {
 
 // unwelded: the floor's triangles with three vertices each, as the cache stores them (what sharing
-// vertices saves on the device).
-enum class FrameKind { live, cached, edit, floor, unwelded };
-constexpr const char* kKindNames[] = {"live", "cached", "edit", "floor", "unwelded"};
+// vertices saves on the device); update: the edit's compute passes alone, no frame.
+enum class FrameKind { live, cached, edit, floor, unwelded, update };
+constexpr const char* kKindNames[] = {"live", "cached", "edit", "floor", "unwelded", "update"};
 
 gps::TriangleMesh unwelded(const gps::TriangleMesh& welded) {
   gps::TriangleMesh soup;
@@ -90,12 +90,12 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   }
   const int edited = int(s.mesh.n_vertices() / 2);
   const auto frame = [&] {
-    if (kind == FrameKind::edit) {
+    if (kind == FrameKind::edit || kind == FrameKind::update) {
       s.mesh.set_covariance(size_t(edited), s.mesh.covariance(size_t(edited)) * (s.grow ? 1.1 : 1.0 / 1.1));
       s.grow = !s.grow;
       s.renderer.update_vertices(s.mesh, {edited});
     }
-    s.renderer.draw(s.target, s.camera, o);
+    if (kind != FrameKind::update) s.renderer.draw(s.target, s.camera, o);
   };
   // Warm-up: the first frame of a kind may compile or allocate (reported apart as first_ms).
   auto start = std::chrono::steady_clock::now();
@@ -133,7 +133,8 @@ int main(int argc, char** argv) {
                                         {"icosphere", 0}, {"pawn", 0},     {"pawn-quads", 0}, {"sphere", 100000}};
   for (const MeshCase& m : meshes)
     for (const int level : {1, 4, 16, 64, 0})
-      for (const FrameKind kind : {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor, FrameKind::unwelded}) {
+      for (const FrameKind kind :
+           {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor, FrameKind::unwelded, FrameKind::update}) {
         const std::string id = m.name + (m.faces ? ":" + std::to_string(m.faces) : "") + "/" +
                                (level ? "level" + std::to_string(level) : std::string("adaptive6px"));
         benchmark::RegisterBenchmark(("Frame/" + std::string(kKindNames[int(kind)]) + "/" + id).c_str(), BM_Frame, m, kind, level)

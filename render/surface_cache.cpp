@@ -122,8 +122,23 @@ void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long trian
 
 // One feedback session; each block's triangles are counted by its own query (queries of primitives
 // written may begin and end while feedback is active), so the blocks lie one after the other.
+// With `known` counts (uniform levels: an edit keeps every patch's triangles) no query is read, and
+// the frame goes on without waiting for the capture.
 bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
-                                  const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize) {
+                                  const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize, bool known) {
+  if (known) {
+    glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer, 0, GLsizeiptr(capacity * 3 * kVertexBytes));
+    glEnable(GL_RASTERIZER_DISCARD);
+    glBeginTransformFeedback(GL_TRIANGLES);
+    for (const int b : blocks) draw_patches(blocks_.first_patch(b), blocks_.patches_in(b));
+    glEndTransformFeedback();
+    glDisable(GL_RASTERIZER_DISCARD);
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+    counts.clear();
+    long long total = 0;
+    for (const int b : blocks) total += counts.emplace_back(blocks_.triangles(b));
+    return total <= capacity;
+  }
   if (queries_.size() < blocks.size()) {
     const size_t had = queries_.size();
     queries_.resize(blocks.size());
@@ -188,9 +203,10 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches) {
   long long stale_triangles = 0;
   for (const int b : stale) stale_triangles += blocks_.triangles(b);
   // Uniform levels keep the counts; adaptive ones may change them, so room for more.
+  const bool uniform = key.pixels <= 0.0f;
   reserve(scratch_, scratch_capacity_, std::max(2 * stale_triangles, 1024ll));
   std::vector<long long> counts;
-  while (!capture_blocks(scratch_, scratch_capacity_, stale, draw_patches, counts)) {
+  while (!capture_blocks(scratch_, scratch_capacity_, stale, draw_patches, counts, false, uniform)) {
     if (scratch_capacity_ >= most_triangles()) return false;
     reserve(scratch_, scratch_capacity_, std::min(2 * scratch_capacity_, most_triangles()));
   }

@@ -100,10 +100,10 @@ private:
   bool camera_close(const glm::mat4& view_projection, glm::vec2 viewport, float pixels) const;
   long long most_triangles() const;
   void reserve(unsigned buffer, long long& capacity, long long triangles) const;
-  /// Captures `blocks` one after the other into `buffer` from its start; their counts; false
-  /// where the buffer was full (and some triangles may be missing).
+  /// Captures `blocks` one after the other into `buffer` from its start; their counts (counted, or
+  /// where `known`, those stored); false where the buffer was full (and some triangles may be missing).
   bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks, const DrawPatches& draw_patches,
-                      std::vector<long long>& counts, bool rasterize = false);
+                      std::vector<long long>& counts, bool rasterize = false, bool known = false);
   /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
   bool assemble(const std::vector<int>& blocks, const std::vector<long long>& counts);
 
