@@ -108,6 +108,7 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   unsigned query = 0;
   glCreateQueries(GL_TIME_ELAPSED, 1, &query);
   double gpu_ns = 0;
+  const int captures = s.renderer.surface_cache().captures(), refreshes = s.renderer.surface_cache().refreshes();
   for (auto _ : state) {
     start = std::chrono::steady_clock::now();
     glBeginQuery(GL_TIME_ELAPSED, query);
@@ -120,6 +121,9 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
     gpu_ns += double(ns);
   }
   glDeleteQueries(1, &query);
+  const gps::SurfaceCache& cache = s.renderer.surface_cache();
+  state.counters["captures"] = double(cache.captures() - captures) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
+  state.counters["refreshes"] = double(cache.refreshes() - refreshes) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.counters["patches"] = double(s.renderer.tables().plans.n_patches());
   state.counters["gpu_ms"] = gpu_ns * 1e-6 / double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.counters["first_ms"] = first_ms;

@@ -23,9 +23,6 @@ SurfaceCache::SurfaceCache() {
     glVertexArrayAttribFormat(vao_, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
     glVertexArrayAttribBinding(vao_, a, 0);
   }
-  glEnableVertexArrayAttrib(vao_, 3);
-  glVertexArrayAttribIFormat(vao_, 3, 1, GL_INT, 9 * sizeof(float));
-  glVertexArrayAttribBinding(vao_, 3, 0);
   check_gl_errors("creating the surface cache");
 }
 
@@ -264,7 +261,10 @@ bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<lo
   return true;
 }
 
-void SurfaceCache::draw() const {
+void SurfaceCache::draw(bool grid) const {
+  // Attribute 2 fetched only for a program that reads it.
+  if (grid) glEnableVertexArrayAttrib(vao_, 2);
+  else glDisableVertexArrayAttrib(vao_, 2);
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * blocks_.total()));
 }
@@ -293,7 +293,9 @@ TriangleMesh SurfaceCache::stored_triangles() const {
     const auto [it, added] = index.emplace(bits, int(mesh.positions.size()));
     if (added) {
       mesh.positions.emplace_back(f[0], f[1], f[2]);
-      mesh.normals.emplace_back(f[3], f[4], f[5]);
+      // The stored normal is the normal times 2^kind (shaders/cache_vert.glsl).
+      const Vec3 stored(f[3], f[4], f[5]);
+      mesh.normals.push_back(stored * std::exp2(-std::round(std::log2(stored.norm()))));
     }
     mesh.triangles[v / 3][v % 3] = it->second;
   }

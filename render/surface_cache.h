@@ -38,7 +38,7 @@ public:
     }
   };
   /// One stored vertex: the tessellation evaluation outputs the fragment shader reads.
-  static constexpr int kVertexBytes = 10 * 4;  // position, normal, grid (vec3 each), node kind (int)
+  static constexpr int kVertexBytes = 9 * 4;  // position, normal · 2^(node kind), grid (vec3 each)
   static constexpr long long kDefaultLimitBytes = 512ll << 20;
 
   /// Needs a current GL context.
@@ -80,8 +80,9 @@ public:
   glm::vec2 captured_viewport() const { return viewport_; }
   /// Whether stored triangles are there to draw (a capture that was not refused).
   bool holds_triangles() const { return stored_ && !refused_; }
-  /// Binds the vertex array of the stored triangles and draws them with the bound program.
-  void draw() const;
+  /// Binds the vertex array of the stored triangles and draws them with the bound program, which
+  /// reads the tessellation grid (attribute 2) where `grid`.
+  void draw(bool grid) const;
   /// The stored triangles read back, vertices with bit-identical position and normal welded (shared
   /// patch edges are bit-exact): the benchmark's static-buffer floor for exactly these triangles.
   TriangleMesh stored_triangles() const;

@@ -15,6 +15,8 @@ namespace gps {
 SurfaceRenderer::SurfaceRenderer()
     : cached_("cached", {{GL_VERTEX_SHADER, {shaders::cache_vert}},
                          {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
+      cached_grid_("cached_grid", {{GL_VERTEX_SHADER, {"#define CACHE_GRID\n", shaders::cache_vert}},
+                                   {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
       cached_wire_("cached_wire", {{GL_VERTEX_SHADER, {shaders::geometry_next, shaders::cache_vert}},
                                    {GL_GEOMETRY_SHADER, {shaders::mesh_geom}},
                                    {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}) {
@@ -151,7 +153,10 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     if (cache_frame != CacheFrame::drawn) {  // else drawn as it was captured
       // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
       const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
-      const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : cached_)
+      // Cached quads' wireframe is their tessellation grid, stored with them; triangles' comes from
+      // the geometry stage.
+      const bool grid = cached && o.wireframe && !triangle_wire;
+      const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : grid ? cached_grid_ : cached_)
                                      : !o.static_triangles ? patches_.frame_program(shape(), o)
                                                            : static_triangles_.program(o.wireframe);
       set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
@@ -159,7 +164,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
       if (o.static_triangles)
         static_triangles_.draw();
       else if (cached)
-        cache_.draw();
+        cache_.draw(grid);
       else
         patches_.draw(program, o, n_patches());
     }

@@ -108,7 +108,7 @@ private:
   StaticTriangles static_triangles_;
   CageLines cage_;
   EllipsoidOverlay ellipsoids_;
-  ShaderProgram cached_, cached_wire_;  // the surface cache's draw
+  ShaderProgram cached_, cached_grid_, cached_wire_;  // the surface cache's draw (plain, quads' wireframe, triangles' wireframe)
   SurfaceCache cache_;
   long long points_generation_ = 0;  // bumped by every compute pass: the cache's key
   unsigned matcap_ = 0;

@@ -15,6 +15,9 @@ out vec3 v_patch_uv;  // patch id and (u, v), for transform feedback checks
 out vec3 v_evaluated; // the patch id and (u, v) evaluated: the canonical patch on patch edges (canonical_edge.glsl)
 out vec3 v_grid;      // tessellation grid coordinates, for the wireframe (grid_coordinates())
 flat out int v_kind;  // plan node kind (gpu_layout.h)
+// v_normal · 2^v_kind: normal and kind in one vector for the surface cache (cache_vert.glsl takes
+// them apart exactly, a power of two scaling no bit of the normal away).
+out vec3 v_stored_normal;
 
 void main() {
   vec3 mu, mu_u, mu_v;
@@ -41,6 +44,7 @@ void main() {
     v_normal = normalize(cross(mu_u, mu_v));
   }
   v_position = mu;
+  v_stored_normal = ldexp(v_normal, ivec3(v_kind));
   v_patch_uv = vec3(float(tc_patch), uv);
   v_evaluated = vec3(float(patch_id), eval_uv);
   v_grid = grid_coordinates();
