@@ -20,19 +20,6 @@ PolygonTopology topology_of(const PolyMesh& mesh) {
   return t;
 }
 
-namespace {
-// Compressed rows from (key, value) pairs sorted by key.
-void fill_rows(int n_keys, const std::vector<std::pair<int, int>>& pairs, std::vector<int>& offsets,
-               std::vector<int>& values) {
-  offsets.assign(size_t(n_keys) + 1, 0);
-  for (const auto& [k, _] : pairs) ++offsets[size_t(k) + 1];
-  for (int i = 0; i < n_keys; ++i) offsets[size_t(i) + 1] += offsets[size_t(i)];
-  values.resize(pairs.size());
-  std::vector<int> next(offsets.begin(), offsets.end() - 1);
-  for (const auto& [k, v] : pairs) values[size_t(next[size_t(k)]++)] = v;
-}
-}  // namespace
-
 MeshConnectivity connectivity_of(const PolygonTopology& t) {
   MeshConnectivity c;
   const size_t n_corners = t.verts.size();
@@ -52,7 +39,7 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
   for (int f = 0; f < t.n_faces(); ++f) {
     const int begin = t.offsets[size_t(f)], n = t.face_size(f);
     for (int k = 0; k < n; ++k) {
-      const int a = t.verts[size_t(begin + k)], b = t.verts[size_t(begin + (k + 1) % n)];
+      const int a = t.verts[size_t(begin + k)], b = t.verts[size_t(begin + (k + 1 == n ? 0 : k + 1))];
       halves[size_t(begin + k)] = {std::min(a, b), std::max(a, b), f, begin + k};
     }
   }
@@ -76,23 +63,28 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
       i += 1;
     }
   }
-  std::vector<std::pair<int, int>> pairs;
-  pairs.reserve(c.edge_verts.size());
-  for (int e = 0; e < c.n_edges(); ++e) {
-    pairs.emplace_back(c.edge_verts[2 * size_t(e)], e);
-    pairs.emplace_back(c.edge_verts[2 * size_t(e) + 1], e);
-  }
-  fill_rows(t.n_vertices, pairs, c.vertex_edge_offsets, c.vertex_edges);
-  pairs.clear();
-  std::vector<std::pair<int, int>> corner_pairs;
+  // Compressed rows per vertex, each in the order its entries come (edges in edge order, faces in
+  // face order): a count, a prefix sum, a fill.
+  const auto prefix = [&](std::vector<int>& offsets) {
+    for (int v = 0; v < t.n_vertices; ++v) offsets[size_t(v) + 1] += offsets[size_t(v)];
+    return std::vector<int>(offsets.begin(), offsets.end() - 1);
+  };
+  c.vertex_edge_offsets.assign(size_t(t.n_vertices) + 1, 0);
+  for (const int v : c.edge_verts) ++c.vertex_edge_offsets[size_t(v) + 1];
+  std::vector<int> next = prefix(c.vertex_edge_offsets);
+  c.vertex_edges.resize(c.edge_verts.size());
+  for (size_t i = 0; i < c.edge_verts.size(); ++i) c.vertex_edges[size_t(next[size_t(c.edge_verts[i])]++)] = int(i / 2);
+  c.vertex_face_offsets.assign(size_t(t.n_vertices) + 1, 0);
+  for (const int v : t.verts) ++c.vertex_face_offsets[size_t(v) + 1];
+  next = prefix(c.vertex_face_offsets);
+  c.vertex_faces.resize(n_corners);
+  c.vertex_face_corners.resize(n_corners);
   for (int f = 0; f < t.n_faces(); ++f)
-    for (int k = 0; k < t.face_size(f); ++k) {
-      pairs.emplace_back(t.verts[size_t(t.offsets[size_t(f)] + k)], f);
-      corner_pairs.emplace_back(t.verts[size_t(t.offsets[size_t(f)] + k)], k);
+    for (int i = t.offsets[size_t(f)], k = 0; i < t.offsets[size_t(f) + 1]; ++i, ++k) {
+      const int at = next[size_t(t.verts[size_t(i)])]++;
+      c.vertex_faces[size_t(at)] = f;
+      c.vertex_face_corners[size_t(at)] = k;
     }
-  fill_rows(t.n_vertices, pairs, c.vertex_face_offsets, c.vertex_faces);
-  std::vector<int> unused;
-  fill_rows(t.n_vertices, corner_pairs, unused, c.vertex_face_corners);
   return c;
 }
 
