@@ -16,7 +16,7 @@
 #include <memory>
 
 #include "core/samples.h"
-#include "render/gl_context.h"
+#include "bench/gl_bench_cases.h"
 #include "render/render_target.h"
 #include "render/surface_renderer.h"
 #include "view/camera.h"
@@ -41,15 +41,7 @@ gps::TriangleMesh unwelded(const gps::TriangleMesh& welded) {
   return soup;
 }
 
-struct MeshCase {
-  std::string name;
-  int faces;
-};
-
-gps::GlContext& context() {
-  static const std::unique_ptr<gps::GlContext> c = gps::create_offscreen_context(gps::ContextKind::automatic);
-  return *c;
-}
+using gps::bench::MeshCase;
 
 // One renderer per mesh, kept for all its benchmarks (set_mesh of the 100k sphere is the slow part).
 struct Scene {
@@ -66,13 +58,13 @@ struct Scene {
 
 Scene& scene(const MeshCase& m) {
   static std::map<std::string, std::unique_ptr<Scene>> scenes;
-  auto& s = scenes[m.name + "/" + std::to_string(m.faces)];
+  auto& s = scenes[m.id()];
   if (!s) s = std::make_unique<Scene>(m);
   return *s;
 }
 
 void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
-  context().make_current();
+  gps::bench::context().make_current();
   Scene& s = scene(m);
   gps::DrawOptions o;
   o.level = float(level > 0 ? level : 8);
@@ -139,15 +131,10 @@ int main(int argc, char** argv) {
     for (const int level : {1, 4, 16, 64, 0})
       for (const FrameKind kind :
            {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor, FrameKind::unwelded, FrameKind::update}) {
-        const std::string id = m.name + (m.faces ? ":" + std::to_string(m.faces) : "") + "/" +
-                               (level ? "level" + std::to_string(level) : std::string("adaptive6px"));
+        const std::string id = m.id() + "/" + gps::bench::setting_name(level);
         benchmark::RegisterBenchmark(("Frame/" + std::string(kKindNames[int(kind)]) + "/" + id).c_str(), BM_Frame, m, kind, level)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
       }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return gps::bench::run_registered(argc, argv);
 }

@@ -16,7 +16,7 @@
 #include "core/error.h"
 #include "core/planned_surface.h"
 #include "core/samples.h"
-#include "render/gl_context.h"
+#include "bench/gl_bench_cases.h"
 #include "render/render_target.h"
 #include "render/surface_renderer.h"
 #include "view/camera.h"
@@ -43,27 +43,19 @@ const std::vector<PlanKind>& plan_kinds() {
   return kinds;
 }
 
-struct MeshCase {
-  std::string name;
-  int faces;
-};
+using gps::bench::MeshCase;
 
 const gps::CovarianceMesh& sample(const MeshCase& m) {
   static std::map<std::string, gps::CovarianceMesh> meshes;
-  const std::string key = m.name + "/" + std::to_string(m.faces);
+  const std::string key = m.id();
   auto it = meshes.find(key);
   if (it == meshes.end()) it = meshes.emplace(key, gps::make_sample(m.name, m.faces)).first;
   return it->second;
 }
 
-gps::GlContext& context() {
-  static const std::unique_ptr<gps::GlContext> c = gps::create_offscreen_context(gps::ContextKind::automatic);
-  return *c;
-}
-
 // One live frame at a uniform level (level > 0) or adaptive 6-pixel edges (level 0), 512x512.
 void BM_Frame(benchmark::State& state, MeshCase m, int kind, int level) {
-  context().make_current();
+  gps::bench::context().make_current();
   const gps::CovarianceMesh& mesh = sample(m);
   gps::SurfaceRenderer renderer;
   try {
@@ -115,18 +107,13 @@ int main(int argc, char** argv) {
                                         {"wirecube", 0}, {"icosphere", 5120}, {"icosphere", 81920}};
   for (const MeshCase& m : meshes)
     for (size_t k = 0; k < plan_kinds().size(); ++k) {
-      const std::string id = m.name + (m.faces ? ":" + std::to_string(m.faces) : "") + "/" + plan_kinds()[k].name;
+      const std::string id = m.id() + "/" + plan_kinds()[k].name;
       benchmark::RegisterBenchmark(("Preprocess/" + id).c_str(), BM_Preprocess, m, int(k))->Unit(benchmark::kMillisecond);
       const std::vector<int> levels = m.faces ? std::vector<int>{1, 0} : std::vector<int>{4, 16, 0};
       for (const int level : levels)
-        benchmark::RegisterBenchmark(("Frame/" + id + "/" + (level ? "level" + std::to_string(level) : "adaptive6px")).c_str(),
-                                     BM_Frame, m, int(k), level)
+        benchmark::RegisterBenchmark(("Frame/" + id + "/" + gps::bench::setting_name(level)).c_str(), BM_Frame, m, int(k), level)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
     }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return gps::bench::run_registered(argc, argv);
 }

@@ -99,6 +99,14 @@ Frame render_frame(SurfaceRenderer& renderer, const Camera& camera, const DrawOp
   return {target.read(0), target.read(1), target.read(2), camera.eye()};
 }
 
+// Back faces in magenta on a red background: what shows through a crack or a pinhole.
+DrawOptions flagging_options() {
+  DrawOptions o;
+  o.flag_back_faces = true;
+  o.background = {1.0f, 0.0f, 0.0f};
+  return o;
+}
+
 CovarianceMesh crack_test_mesh(const std::string& name) { return name == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name); }
 
 // A closed mesh seen from outside shows no back face unless the tessellation cracks; the check fails
@@ -117,9 +125,7 @@ TEST_F(GpuTest, TessellationIsCrackFree) {
     const CovarianceMesh mesh = crack_test_mesh(name);
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh);
-    DrawOptions o;
-    o.flag_back_faces = true;
-    o.background = {1.0f, 0.0f, 0.0f};
+    DrawOptions o = flagging_options();
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
     for (int level = 1; level <= 64; level += level < 8 ? 1 : level < 32 ? 7 : 8) {  // 1..8, 15, 22, 29, 36, ..., 64
       o.level = float(level);
@@ -151,9 +157,7 @@ TEST_P(PinholeTest, NoPinholeFromTwentyCameras) {
   const CovarianceMesh mesh = crack_test_mesh(name);
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh);
-  DrawOptions o;
-  o.flag_back_faces = true;
-  o.background = {1.0f, 0.0f, 0.0f};
+  DrawOptions o = flagging_options();
   const double diag = bounding_box_diagonal(mesh);
   int total = 0;
   if (name == "cone-pointy") {
