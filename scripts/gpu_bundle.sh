@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Packs what checks gpsurf on another machine's GPU into DIR (default out/gpu-bundle, about 15 MB):
+# the GL tests that need no OpenImageIO and the frame benchmarks, stripped, with the three shared
+# libraries they need beyond glibc, libstdc++ and the GL loader (libEGL). On the GPU machine:
+#   DIR/run.sh OUT [tests|bench|all]
+# runs the GL tests on the GPU's EGL device (GPSURF_TEST_CONTEXT=egl) and the benchmarks, writing
+# logs and JSON to OUT. The tests read their data from this checkout's path, as compiled in: run.sh
+# needs the checkout (tests/data) at the same path there, or a link to it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+dir=${1:-out/gpu-bundle}
+scripts/build.sh
+rm -rf "$dir" && mkdir -p "$dir/bin" "$dir/lib"
+tests=()
+for t in build/tests/test_*; do
+  # Only tests whose libraries a GPU machine has: not those writing images (OpenImageIO).
+  if [ -x "$t" ] && grep -q "gl_fixture\|GlTest" "tests/render/$(basename "$t").cpp" 2>/dev/null && ! ldd "$t" | grep -q OpenImageIO; then
+    strip -o "$dir/bin/$(basename "$t")" "$t"
+    tests+=("$(basename "$t")")
+  fi
+done
+for b in gpsurf_bench_frames gpsurf_bench_plan_depth gpsurf_bench_edit; do strip -o "$dir/bin/$b" "build/bench/$b"; done
+for l in $(ldd "$dir/bin/gpsurf_bench_frames" "$dir/bin/${tests[0]}" | awk '/=>/ {print $3}' | sort -u); do
+  case "$(basename "$l")" in
+    libc.so*|libm.so*|libstdc++*|libgcc_s*|libEGL*|libGLdispatch*|ld-linux*) ;;
+    *) cp -L "$l" "$dir/lib/" ;;
+  esac
+done
+cat > "$dir/run.sh" <<RUN
+#!/usr/bin/env bash
+# GL tests on the GPU (EGL) and frame benchmarks; logs and JSON into \$1. Built from $(git rev-parse --short HEAD).
+set -u
+here=\$(cd "\$(dirname "\$0")" && pwd)
+out=\${1:?usage: run.sh OUT [tests|bench|all]}; mode=\${2:-all}
+mkdir -p "\$out"
+export LD_LIBRARY_PATH="\$here/lib\${LD_LIBRARY_PATH:+:\$LD_LIBRARY_PATH}"
+if [ "\$mode" != bench ]; then
+  for t in ${tests[*]}; do
+    GPSURF_TEST_CONTEXT=egl timeout 300 "\$here/bin/\$t" > "\$out/\$t.log" 2>&1
+    echo "\$t exit \$?" | tee -a "\$out/tests.txt"
+  done
+fi
+if [ "\$mode" != tests ]; then
+  "\$here/bin/gpsurf_bench_frames" --benchmark_min_time=0.1 --benchmark_filter='^Frame/[a-z]+/[a-z0-9-]+/' \\
+    --benchmark_out="\$out/frames.json" --benchmark_out_format=json | tee "\$out/frames.txt"
+  "\$here/bin/gpsurf_bench_edit" --benchmark_min_time=0.2 | tee "\$out/edit.txt"
+fi
+RUN
+chmod +x "$dir/run.sh"
+echo "$dir: ${#tests[@]} GL tests and 3 benchmarks, $(du -sh "$dir" | cut -f1); run $dir/run.sh OUT on the GPU machine"
