@@ -230,8 +230,8 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches) {
 
 // The spare buffer, made the stored one: the runs of clean blocks from the stored buffer, the new
 // blocks from the scratch buffer, in patch order. The spare is kept for the next edit (an adaptive
-// edit changes counts every time; creating a buffer of the whole surface per edit cost a GPU 40 ms
-// on the 100k-face sphere) and released by the next full capture.
+// edit changes counts every time: no buffer of the whole surface created and deleted per edit; it
+// holds up to the memory limit too while edits go on) and released by the next full capture.
 bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<long long>& counts) {
   long long total = blocks_.total();
   for (size_t i = 0; i < blocks.size(); ++i) total += counts[i] - blocks_.triangles(blocks[i]);
