@@ -15,11 +15,10 @@
 #include <map>
 #include <memory>
 
-#include "core/samples.h"
+#include "bench/edit_scene.h"
 #include "bench/gl_bench_cases.h"
 #include "render/render_target.h"
 #include "render/surface_renderer.h"
-#include "view/camera.h"
 
 namespace {
 
@@ -43,17 +42,12 @@ gps::TriangleMesh unwelded(const gps::TriangleMesh& welded) {
 
 using gps::bench::MeshCase;
 
-// One renderer per mesh, kept for all its benchmarks (set_mesh of the 100k sphere is the slow part).
+// One renderer per mesh, kept for all its benchmarks (set_mesh of the 100k sphere is the slow
+// part), with the edits of the edit-to-frame benchmarks (bench/edit_scene.h), drawn at 512².
 struct Scene {
-  gps::CovarianceMesh mesh;
-  gps::SurfaceRenderer renderer;
-  gps::Camera camera;
+  gps::EditScene edits;
   gps::RenderTarget target{512, 512};
-  bool grow = true;  // the edit scales a covariance by 1.1, the next one back
-  explicit Scene(const MeshCase& m) : mesh(gps::make_sample(m.name, m.faces)) {
-    renderer.set_mesh(mesh, gps::PlanOptions{});
-    camera = gps::frame_mesh(mesh);
-  }
+  explicit Scene(const MeshCase& m) : edits(m.name, m.faces, gps::PlanOptions{}) {}
 };
 
 Scene& scene(const MeshCase& m) {
@@ -66,28 +60,25 @@ Scene& scene(const MeshCase& m) {
 void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   gps::bench::context().make_current();
   Scene& s = scene(m);
+  gps::SurfaceRenderer& renderer = s.edits.renderer();
   gps::DrawOptions o;
   o.level = float(level > 0 ? level : 8);
   o.pixels = level > 0 ? 0.0f : 6.0f;
   o.surface_cache = kind != FrameKind::live;
-  s.renderer.draw(s.target, s.camera, o);  // fills the cache (or compiles the live programs)
+  renderer.draw(s.target, s.edits.camera(), o);  // fills the cache (or compiles the live programs)
   if (kind == FrameKind::floor || kind == FrameKind::unwelded) {
-    if (!s.renderer.surface_cache().holds_triangles()) {
+    if (!renderer.surface_cache().holds_triangles()) {
       state.SkipWithError("past the surface cache's memory limit: no stored triangles for a floor");
       return;
     }
-    const gps::TriangleMesh stored = s.renderer.surface_cache().stored_triangles();
-    s.renderer.set_triangles(kind == FrameKind::floor ? stored : unwelded(stored));
+    const gps::TriangleMesh stored = renderer.surface_cache().stored_triangles();
+    renderer.set_triangles(kind == FrameKind::floor ? stored : unwelded(stored));
     o.static_triangles = true;
   }
-  const int edited = int(s.mesh.n_vertices() / 2);
+  const std::vector<int> edited = s.edits.middle_vertices(1);
   const auto frame = [&] {
-    if (kind == FrameKind::edit || kind == FrameKind::update) {
-      s.mesh.set_covariance(size_t(edited), s.mesh.covariance(size_t(edited)) * (s.grow ? 1.1 : 1.0 / 1.1));
-      s.grow = !s.grow;
-      s.renderer.update_vertices(s.mesh, {edited});
-    }
-    if (kind != FrameKind::update) s.renderer.draw(s.target, s.camera, o);
+    if (kind == FrameKind::edit || kind == FrameKind::update) s.edits.edit(edited);
+    if (kind != FrameKind::update) renderer.draw(s.target, s.edits.camera(), o);
   };
   // Warm-up: the first frame of a kind may compile or allocate (reported apart as first_ms).
   auto start = std::chrono::steady_clock::now();
@@ -100,7 +91,7 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   unsigned query = 0;
   glCreateQueries(GL_TIME_ELAPSED, 1, &query);
   double gpu_ns = 0;
-  const int captures = s.renderer.surface_cache().captures(), refreshes = s.renderer.surface_cache().refreshes();
+  const int captures = renderer.surface_cache().captures(), refreshes = renderer.surface_cache().refreshes();
   for (auto _ : state) {
     start = std::chrono::steady_clock::now();
     glBeginQuery(GL_TIME_ELAPSED, query);
@@ -113,10 +104,10 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
     gpu_ns += double(ns);
   }
   glDeleteQueries(1, &query);
-  const gps::SurfaceCache& cache = s.renderer.surface_cache();
+  const gps::SurfaceCache& cache = renderer.surface_cache();
   state.counters["captures"] = double(cache.captures() - captures) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.counters["refreshes"] = double(cache.refreshes() - refreshes) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
-  state.counters["patches"] = double(s.renderer.tables().plans.n_patches());
+  state.counters["patches"] = double(renderer.tables().plans.n_patches());
   state.counters["gpu_ms"] = gpu_ns * 1e-6 / double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.counters["first_ms"] = first_ms;
 }

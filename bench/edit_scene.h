@@ -24,6 +24,7 @@ public:
 
   const CovarianceMesh& mesh() const { return mesh_; }
   SurfaceRenderer& renderer() { return renderer_; }
+  const Camera& camera() const { return camera_; }
   double set_mesh_seconds() const { return set_mesh_seconds_; }
   /// The middle vertex and the `count` − 1 after it: the vertices an edit of `count` changes.
   std::vector<int> middle_vertices(int count) const;

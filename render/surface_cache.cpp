@@ -123,20 +123,7 @@ void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long trian
 // the frame goes on without waiting for the capture.
 bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
                                   const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize, bool known) {
-  if (known) {
-    glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer, 0, GLsizeiptr(capacity * 3 * kVertexBytes));
-    glEnable(GL_RASTERIZER_DISCARD);
-    glBeginTransformFeedback(GL_TRIANGLES);
-    for (const int b : blocks) draw_patches(blocks_.first_patch(b), blocks_.patches_in(b));
-    glEndTransformFeedback();
-    glDisable(GL_RASTERIZER_DISCARD);
-    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-    counts.clear();
-    long long total = 0;
-    for (const int b : blocks) total += counts.emplace_back(blocks_.triangles(b));
-    return total <= capacity;
-  }
-  if (queries_.size() < blocks.size()) {
+  if (!known && queries_.size() < blocks.size()) {
     const size_t had = queries_.size();
     queries_.resize(blocks.size());
     glCreateQueries(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, GLsizei(blocks.size() - had), queries_.data() + had);
@@ -145,9 +132,9 @@ bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std
   if (!rasterize) glEnable(GL_RASTERIZER_DISCARD);
   glBeginTransformFeedback(GL_TRIANGLES);
   for (size_t i = 0; i < blocks.size(); ++i) {
-    glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queries_[i]);
+    if (!known) glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queries_[i]);
     draw_patches(blocks_.first_patch(blocks[i]), blocks_.patches_in(blocks[i]));
-    glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+    if (!known) glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
   }
   glEndTransformFeedback();
   glDisable(GL_RASTERIZER_DISCARD);
@@ -155,13 +142,17 @@ bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std
   counts.resize(blocks.size());
   long long total = 0;
   for (size_t i = 0; i < blocks.size(); ++i) {
-    GLuint64 written = 0;
-    glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &written);
-    counts[i] = (long long)written;
+    if (known) {
+      counts[i] = blocks_.triangles(blocks[i]);
+    } else {
+      GLuint64 written = 0;
+      glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &written);
+      counts[i] = (long long)written;
+    }
     total += counts[i];
   }
   check_gl_errors("capturing the surface");
-  return total < capacity;  // a full buffer may have dropped triangles
+  return known ? total <= capacity : total < capacity;  // a full buffer may have dropped triangles
 }
 
 bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches,
