@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "render/driver_heap.h"
 
 namespace gps {
 
@@ -56,6 +57,7 @@ struct OsMesaLibrary {
 class OsMesaContext : public GlContext {
 public:
   OsMesaContext() : osmesa_(OsMesaLibrary::get()) {
+    retain_freed_heap();
     const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                               OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
     context_ = osmesa_.create(attributes, nullptr);
@@ -82,6 +84,7 @@ private:
 class EglContext : public GlContext {
 public:
   explicit EglContext(bool require_hardware) {
+    retain_freed_heap();  // Mesa's surfaceless platform is llvmpipe too
     const auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     const auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     if (!get_platform_display) throw Error("EGL has no eglGetPlatformDisplayEXT");

@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 
 #include "core/error.h"
+#include "render/driver_heap.h"
 
 namespace gps {
 
@@ -14,6 +15,7 @@ void on_glfw_error(int, const char* message) { last_glfw_error = message; }
 }  // namespace
 
 WindowContext::WindowContext(int width, int height, const std::string& title, bool visible) {
+  retain_freed_heap();  // without a GPU, GLX is llvmpipe
   glfwSetErrorCallback(on_glfw_error);
   if (!glfwInit()) throw Error("cannot open a window: " + (last_glfw_error.empty() ? std::string("no display") : last_glfw_error));
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
