@@ -2,7 +2,8 @@
 // and tessellation setting, a live frame (every patch evaluated), a cached frame (the surface
 // cache's stored triangles), a frame after a one-vertex edit (the cache refreshes that vertex's
 // patches) and the floor (the cached triangles, welded, from a static vertex buffer, same shading).
-// `unwelded` is the floor without shared vertices.
+// `unwelded` is the floor without shared vertices; `welded` and `captured` are cached frames with
+// the stored vertices welded or not, whatever this device's default (render/surface_cache.h).
 // `gpsurf bench --render` prints the same four in one table from a few repetitions each; this one
 // lets Google Benchmark choose the iterations, as sub-millisecond frames on a GPU need.
 // Names: Frame/<kind>/<mesh>/<setting>, e.g. Frame/floor/valence5/level16, Frame/cached/sphere:100000/adaptive6px.
@@ -24,8 +25,8 @@ namespace {
 
 // unwelded: the floor's triangles with three vertices each, as the cache stores them (what sharing
 // vertices saves on the device); update: the edit's compute passes alone, no frame.
-enum class FrameKind { live, cached, edit, floor, unwelded, update };
-constexpr const char* kKindNames[] = {"live", "cached", "edit", "floor", "unwelded", "update"};
+enum class FrameKind { live, cached, edit, floor, unwelded, update, welded, captured };
+constexpr const char* kKindNames[] = {"live", "cached", "edit", "floor", "unwelded", "update", "welded", "captured"};
 
 gps::TriangleMesh unwelded(const gps::TriangleMesh& welded) {
   gps::TriangleMesh soup;
@@ -47,7 +48,8 @@ using gps::bench::MeshCase;
 struct Scene {
   gps::EditScene edits;
   gps::RenderTarget target{512, 512};
-  explicit Scene(const MeshCase& m) : edits(m.name, m.faces, gps::PlanOptions{}) {}
+  bool weld_default;  // the surface cache's choice on this device
+  explicit Scene(const MeshCase& m) : edits(m.name, m.faces, gps::PlanOptions{}), weld_default(edits.renderer().surface_cache().welds()) {}
 };
 
 Scene& scene(const MeshCase& m) {
@@ -65,6 +67,7 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   o.level = float(level > 0 ? level : 8);
   o.pixels = level > 0 ? 0.0f : 6.0f;
   o.surface_cache = kind != FrameKind::live;
+  renderer.surface_cache().set_weld(kind == FrameKind::welded ? true : kind == FrameKind::captured ? false : s.weld_default);
   renderer.draw(s.target, s.edits.camera(), o);  // fills the cache (or compiles the live programs)
   if (kind == FrameKind::floor || kind == FrameKind::unwelded) {
     if (!renderer.surface_cache().holds_triangles()) {
@@ -121,7 +124,8 @@ int main(int argc, char** argv) {
   for (const MeshCase& m : meshes)
     for (const int level : {1, 4, 16, 64, 0})
       for (const FrameKind kind :
-           {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor, FrameKind::unwelded, FrameKind::update}) {
+           {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor, FrameKind::unwelded, FrameKind::update,
+            FrameKind::welded, FrameKind::captured}) {
         const std::string id = m.id() + "/" + gps::bench::setting_name(level);
         benchmark::RegisterBenchmark(("Frame/" + std::string(kKindNames[int(kind)]) + "/" + id).c_str(), BM_Frame, m, kind, level)
             ->UseManualTime()

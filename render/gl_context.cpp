@@ -141,6 +141,12 @@ std::string GlContext::description() const {
   return std::string(renderer ? renderer : "?") + ", OpenGL " + (version ? version : "?");
 }
 
+bool software_renderer() {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string name = renderer ? renderer : "";
+  return name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
+}
+
 std::unique_ptr<GlContext> create_offscreen_context(ContextKind kind) {
   switch (kind) {
     case ContextKind::osmesa: return std::make_unique<OsMesaContext>();

@@ -22,6 +22,10 @@ enum class ContextKind { automatic, osmesa, egl };
 /// Throws gps::Error when no 4.5 core context can be made.
 std::unique_ptr<GlContext> create_offscreen_context(ContextKind kind = ContextKind::osmesa);
 
+/// Whether the current context renders on the CPU (Mesa's llvmpipe or softpipe): there, vertex work is
+/// cheap beside rasterising, unlike on a GPU.
+bool software_renderer();
+
 /// Turns on KHR_debug and records GL errors; check_gl_errors() throws the first one as gps::Error.
 void enable_gl_debug_output();
 void check_gl_errors(const char* where);

@@ -26,7 +26,12 @@ GPS_LAYOUT_CONST int kBindingPatchNeighbours = 12;  // per patch edge: the patch
 GPS_LAYOUT_CONST int kBindingCornerOwners = 13;     // per patch corner: the patch that evaluates it
 GPS_LAYOUT_CONST int kBindingCornerLimits = 14;     // per patch corner: its owner's limit point, normal, node kind
 GPS_LAYOUT_CONST int kBindingCornerList = 15;       // an edit's corners to evaluate again
-GPS_LAYOUT_CONST int kBindingCount = 16;
+GPS_LAYOUT_CONST int kBindingCount = 16;          // the plan buffers' bindings (render/plan_buffers.h)
+// The surface cache's weld (shaders/weld_comp.glsl), past the plan buffers'.
+GPS_LAYOUT_CONST int kBindingStoredVertices = 16;
+GPS_LAYOUT_CONST int kBindingWeldTable = 17;
+GPS_LAYOUT_CONST int kBindingStoredIndices = 18;
+GPS_LAYOUT_CONST int kBindingBlockStarts = 19;
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;

@@ -12,11 +12,13 @@
 
 namespace gps {
 
-SurfaceCache::SurfaceCache() {
+SurfaceCache::SurfaceCache() : weld_vertices_(!software_renderer()) {
   glCreateBuffers(1, &buffer_);
   glCreateBuffers(1, &scratch_);
   glCreateBuffers(1, &spare_);
+  glCreateBuffers(1, &indices_);
   glCreateVertexArrays(1, &vao_);
+  glVertexArrayElementBuffer(vao_, indices_);
   glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kVertexBytes);
   for (GLuint a = 0; a < 3; ++a) {
     glEnableVertexArrayAttrib(vao_, a);
@@ -30,6 +32,7 @@ SurfaceCache::~SurfaceCache() {
   glDeleteBuffers(1, &buffer_);
   glDeleteBuffers(1, &scratch_);
   glDeleteBuffers(1, &spare_);
+  glDeleteBuffers(1, &indices_);
   glDeleteVertexArrays(1, &vao_);
   if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
 }
@@ -107,7 +110,14 @@ bool SurfaceCache::camera_close(const glm::mat4& view_projection, glm::vec2 view
   return true;
 }
 
-long long SurfaceCache::most_triangles() const { return std::max(1ll, limit_bytes_ / (3 * kVertexBytes)); }
+long long SurfaceCache::most_triangles() const { return std::max(1ll, limit_bytes_ / triangle_bytes()); }
+
+void SurfaceCache::set_weld(bool weld) {
+  if (weld == weld_vertices_) return;
+  weld_vertices_ = weld;
+  stored_ = false;
+  tracked_points_ = -1;
+}
 
 void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long triangles) const {
   triangles = std::clamp(triangles, 1ll, most_triangles());
@@ -183,6 +193,7 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
     reserve(buffer_, capacity_, std::min(2 * capacity_, most_triangles()));
   }
   blocks_.set_counts(counts);
+  weld();
   return true;
 }
 
@@ -208,6 +219,7 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches) {
                                  GLintptr(blocks_.first_triangle(stale[i]) * 3 * kVertexBytes), GLsizeiptr(counts[i] * 3 * kVertexBytes));
       from += counts[i];
     }
+    weld(stale);
   } else if (!assemble(stale, counts)) {
     return false;
   }
@@ -249,7 +261,24 @@ bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<lo
   std::swap(capacity_, spare_capacity_);
   glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kVertexBytes);
   blocks_.replace_counts(blocks, counts);
+  weld();
   return true;
+}
+
+void SurfaceCache::weld(const std::vector<int>& blocks) {
+  if (!weld_vertices_) return;
+  const long long total = blocks_.total();
+  if (total > index_capacity_ || 4 * total < index_capacity_) {
+    index_capacity_ = std::max(total, 1ll);
+    glNamedBufferData(indices_, GLsizeiptr(index_capacity_ * 3 * 4), nullptr, GL_DYNAMIC_COPY);
+  }
+  std::vector<long long> starts(size_t(blocks_.size()));
+  for (int b = 0; b < blocks_.size(); ++b) starts[size_t(b)] = 3 * blocks_.first_triangle(b);
+  if (blocks.empty()) {
+    weld_.weld(buffer_, indices_, 0, 3 * total, starts);
+    return;
+  }
+  for (const int b : blocks) weld_.weld(buffer_, indices_, starts[size_t(b)], 3 * blocks_.triangles(b), starts);
 }
 
 void SurfaceCache::draw(bool grid) const {
@@ -257,7 +286,19 @@ void SurfaceCache::draw(bool grid) const {
   if (grid) glEnableVertexArrayAttrib(vao_, 2);
   else glDisableVertexArrayAttrib(vao_, 2);
   glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * blocks_.total()));
+  if (weld_vertices_) glDrawElements(GL_TRIANGLES, GLsizei(3 * blocks_.total()), GL_UNSIGNED_INT, nullptr);
+  else glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * blocks_.total()));
+}
+
+long long SurfaceCache::distinct_vertices() const {
+  const long long vertices = 3 * blocks_.total();
+  if (!weld_vertices_ || !holds_triangles()) return vertices;
+  std::vector<GLuint> indices(static_cast<size_t>(vertices), 0u);
+  glGetNamedBufferSubData(indices_, 0, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data());
+  check_gl_errors("reading the surface cache's indices");
+  long long own = 0;
+  for (size_t v = 0; v < indices.size(); ++v) own += indices[v] == v;
+  return own;
 }
 
 TriangleMesh SurfaceCache::stored_triangles() const {

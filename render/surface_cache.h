@@ -11,6 +11,11 @@
 // crossed the eye plane. Within that, the stored levels stay within the factor of what the live
 // pipeline would choose.
 //
+// On a GPU the stored vertices are welded after each capture (render/stored_vertex_weld.h) and
+// drawn by index, as a welded static buffer is. Not on llvmpipe, where rasterising the triangles
+// costs the frame and the weld only adds to captures (pawn, level 16: cached frame 61-64 ms welded
+// or not; a cube's edit at level 64 27.6 -> 37.3 ms).
+//
 // Edits: triangles are captured in blocks of consecutive patches (render/surface_blocks.h), each
 // counted by its own query. An edit reports the patches it changed (points_changed); the next frame
 // captures only their blocks again (refresh), under the camera of the capture, into a scratch
@@ -23,6 +28,7 @@
 
 #include "core/covariance_mesh.h"
 #include "core/triangle_mesh.h"
+#include "render/stored_vertex_weld.h"
 #include "render/surface_blocks.h"
 
 namespace gps {
@@ -86,6 +92,17 @@ public:
   /// The stored triangles read back, vertices with bit-identical position and normal welded (shared
   /// patch edges are bit-exact): the benchmark's static-buffer floor for exactly these triangles.
   TriangleMesh stored_triangles() const;
+  /// The distinct vertices a cached frame fetches (read back): where welded, those that are their
+  /// own index; else three per triangle.
+  long long distinct_vertices() const;
+
+  /// Whether stored vertices are welded (default: where the renderer is not software); a change
+  /// drops the stored triangles.
+  void set_weld(bool weld);
+  bool welds() const { return weld_vertices_; }
+  /// What a stored triangle takes of the memory limit: its vertices and, where welded, their
+  /// indices and, while they are welded, their hash table slots.
+  int triangle_bytes() const { return 3 * (kVertexBytes + (weld_vertices_ ? 4 + StoredVertexWeld::kTableBytesPerVertex : 0)); }
 
   void set_hysteresis(float factor) { hysteresis_ = factor; }
   void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
@@ -95,7 +112,9 @@ public:
   int refreshes() const { return refreshes_; }
   int refreshed_patches() const { return refreshed_patches_; }
   long long triangles() const { return blocks_.total(); }
-  size_t buffer_bytes() const { return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kVertexBytes; }
+  size_t buffer_bytes() const {
+    return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kVertexBytes + size_t(index_capacity_) * 3 * 4 + weld_.bytes();
+  }
 
 private:
   bool camera_close(const glm::mat4& view_projection, glm::vec2 viewport, float pixels) const;
@@ -107,8 +126,13 @@ private:
                       std::vector<long long>& counts, bool rasterize = false, bool known = false);
   /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
   bool assemble(const std::vector<int>& blocks, const std::vector<long long>& counts);
+  /// Welds the stored vertices of `blocks` (all of them where empty) into the index buffer.
+  void weld(const std::vector<int>& blocks = {});
 
-  unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, vao_ = 0;
+  unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, indices_ = 0, vao_ = 0;
+  long long index_capacity_ = 0;  // triangles the index buffer holds
+  StoredVertexWeld weld_;
+  bool weld_vertices_;
   std::vector<unsigned> queries_;  // one per block of a capture
   long long capacity_ = 0, scratch_capacity_ = 0, spare_capacity_ = 0;  // triangles the buffers hold
   SurfaceBlocks blocks_;

@@ -215,12 +215,13 @@ constexpr const char* kConstantsProbe = R"glsl(
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) writeonly buffer Out { int outputs[]; };
 void main() {
-  int values[29] = int[29](kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
+  int values[33] = int[33](kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
                            kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingEvTables,
                            kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCornerLimits, kBindingCornerList, kBindingCount,
+                           kBindingStoredVertices, kBindingWeldTable, kBindingStoredIndices, kBindingBlockStarts,
                            kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary,
                            kPatchEdgeInts, kPatchEdgeStride, kEdgeWhole, kEdgeWholeBesideHalves, kEdgeFirstHalf, kEdgeSecondHalf);
-  for (int k = 0; k < 29; ++k) outputs[k] = values[k];
+  for (int k = 0; k < 33; ++k) outputs[k] = values[k];
 }
 )glsl";
 
@@ -231,6 +232,7 @@ TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
   const std::vector<int> cpu = {kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
                                 kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingEvTables,
                                 kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCornerLimits, kBindingCornerList, kBindingCount,
+                                kBindingStoredVertices, kBindingWeldTable, kBindingStoredIndices, kBindingBlockStarts,
                                 kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary,
                                 kPatchEdgeInts, kPatchEdgeStride, kEdgeWhole, kEdgeWholeBesideHalves, kEdgeFirstHalf, kEdgeSecondHalf};
   const ShaderProgram probe("constants_probe", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::patch_basis, kConstantsProbe}}});

@@ -17,7 +17,8 @@
 namespace gps {
 namespace {
 
-using SurfaceCacheTest = test::GlTest;
+// Each test with the stored vertices welded (as on a GPU) and as captured (as on llvmpipe).
+class SurfaceCacheTest : public test::GlTest, public ::testing::WithParamInterface<bool> {};
 
 constexpr int kSize = 160;
 
@@ -77,6 +78,12 @@ size_t differing_pixels(const Frame& a, const Frame& b) {
   return ::testing::AssertionSuccess();
 }
 
+// Moves base vertex v by `fraction` of the mesh's diagonal (a different direction per vertex).
+void move_vertex(CovarianceMesh& mesh, int v, double fraction) {
+  const Vec3 direction = Vec3(1.0 + v % 3, 0.5 - v % 2, 0.25 + v % 5).normalized();
+  mesh.set_mean(size_t(v), mesh.mean(size_t(v)) + fraction * bounding_box_diagonal(mesh) * direction);
+}
+
 DrawOptions uniform(float level) {
   DrawOptions o;
   o.level = level;
@@ -89,11 +96,12 @@ DrawOptions adaptive(float pixels) {
   return o;
 }
 
-TEST_F(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
+TEST_P(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
   RenderTarget target(kSize, kSize);
   for (const char* name : {"cube", "pawn", "icosphere", "cone-pointy"}) {
     const CovarianceMesh mesh = make_sample(name);
     SurfaceRenderer renderer;
+    renderer.surface_cache().set_weld(GetParam());
     renderer.set_mesh(mesh);
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f), turned = frame_mesh(mesh, -60.0f, 10.0f);
     for (DrawOptions o : {uniform(1), uniform(5), adaptive(6)}) {
@@ -121,10 +129,41 @@ TEST_F(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
   }
 }
 
-TEST_F(SurfaceCacheTest, AnEditShowsInTheNextFrame) {
+// Welded, a quad patch at uniform level L is fetched as its (L + 1)² grid points: its triangles
+// share them; vertices of different patches differ in their grid coordinates and stay apart. An
+// edit's refresh welds its blocks again, to as many.
+TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
+  RenderTarget target(kSize, kSize);
+  const CovarianceMesh cube = make_sample("cube");
+  SurfaceRenderer renderer;
+  renderer.surface_cache().set_weld(GetParam());
+  renderer.set_mesh(cube);
+  const SurfaceCache& cache = renderer.surface_cache();
+  for (const int level : {1, 8}) {
+    draw(renderer, target, frame_mesh(cube, 35.0f, 25.0f), uniform(float(level)), true);
+    const long long patches = renderer.tables().plans.n_patches(), grid = (level + 1) * (level + 1);
+    ASSERT_EQ(cache.triangles(), patches * 2 * level * level);
+    EXPECT_EQ(cache.distinct_vertices(), GetParam() ? patches * grid : 3 * cache.triangles()) << "level " << level;
+  }
+  CovarianceMesh sphere = make_sample("sphere", 3000);
+  renderer.set_mesh(sphere);
+  const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
+  draw(renderer, target, camera, uniform(4), true);
+  const long long distinct = cache.distinct_vertices();
+  if (GetParam()) EXPECT_LT(distinct, cache.triangles());  // a quad patch: (L + 1)² of its 6 L² stored
+  const int v = int(sphere.n_vertices() / 2);
+  move_vertex(sphere, v, 0.05);
+  renderer.update_vertices(sphere, {v});
+  draw(renderer, target, camera, uniform(4), true);
+  EXPECT_EQ(cache.refreshes(), 1);
+  EXPECT_EQ(cache.distinct_vertices(), distinct);
+}
+
+TEST_P(SurfaceCacheTest, AnEditShowsInTheNextFrame) {
   RenderTarget target(kSize, kSize);
   CovarianceMesh mesh = make_sample("pawn");
   SurfaceRenderer renderer;
+  renderer.surface_cache().set_weld(GetParam());
   renderer.set_mesh(mesh);
   const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
   const DrawOptions o = uniform(4);
@@ -154,10 +193,11 @@ TEST_F(SurfaceCacheTest, AnEditShowsInTheNextFrame) {
   EXPECT_EQ(renderer.surface_cache().refreshes(), 1);
 }
 
-TEST_F(SurfaceCacheTest, AdaptiveLevelsRecaptureOnlyBeyondTheHysteresis) {
+TEST_P(SurfaceCacheTest, AdaptiveLevelsRecaptureOnlyBeyondTheHysteresis) {
   RenderTarget target(kSize, kSize);
   const CovarianceMesh mesh = make_sample("cube");
   SurfaceRenderer renderer;
+  renderer.surface_cache().set_weld(GetParam());
   renderer.set_mesh(mesh);
   const DrawOptions o = adaptive(4);
   Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
@@ -189,12 +229,13 @@ TEST_F(SurfaceCacheTest, AdaptiveLevelsRecaptureOnlyBeyondTheHysteresis) {
   EXPECT_EQ(renderer.surface_cache().captures(), 5);
 }
 
-TEST_F(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
+TEST_P(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
   RenderTarget target(kSize, kSize);
   const CovarianceMesh mesh = make_sample("cube");
   SurfaceRenderer renderer;
+  renderer.surface_cache().set_weld(GetParam());
   renderer.set_mesh(mesh);
-  renderer.surface_cache().set_limit_bytes(100 * 3 * SurfaceCache::kVertexBytes);  // 100 triangles
+  renderer.surface_cache().set_limit_bytes(100 * renderer.surface_cache().triangle_bytes());  // 100 triangles
   const Camera camera = frame_mesh(mesh);
   const DrawOptions o = uniform(8);
   const Frame cached = draw(renderer, target, camera, o, true);
@@ -208,19 +249,14 @@ TEST_F(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
   EXPECT_EQ(renderer.surface_cache().triangles(), 2 * renderer.tables().plans.n_patches());
 }
 
-// Moves base vertex v by `fraction` of the mesh's diagonal (a different direction per vertex).
-void move_vertex(CovarianceMesh& mesh, int v, double fraction) {
-  const Vec3 direction = Vec3(1.0 + v % 3, 0.5 - v % 2, 0.25 + v % 5).normalized();
-  mesh.set_mean(size_t(v), mesh.mean(size_t(v)) + fraction * bounding_box_diagonal(mesh) * direction);
-}
-
-TEST_F(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
+TEST_P(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
   RenderTarget target(kSize, kSize);
   for (const char* name : {"cube", "pawn", "icosphere"}) {
     for (const DrawOptions& o : {uniform(4), adaptive(6)}) {
       const std::string what = std::string(name) + (o.pixels > 0 ? " adaptive" : " level 4");
       CovarianceMesh mesh = make_sample(name);
       SurfaceRenderer renderer;
+      renderer.surface_cache().set_weld(GetParam());
       renderer.set_mesh(mesh);
       const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
       draw(renderer, target, camera, o, true);
@@ -246,10 +282,11 @@ TEST_F(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
   }
 }
 
-TEST_F(SurfaceCacheTest, AOneVertexEditCapturesOnlyTheBlocksOfItsPatches) {
+TEST_P(SurfaceCacheTest, AOneVertexEditCapturesOnlyTheBlocksOfItsPatches) {
   RenderTarget target(kSize, kSize);
   CovarianceMesh mesh = make_sample("sphere", 3000);
   SurfaceRenderer renderer;
+  renderer.surface_cache().set_weld(GetParam());
   renderer.set_mesh(mesh);
   const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
   const DrawOptions o = uniform(3);
@@ -266,12 +303,13 @@ TEST_F(SurfaceCacheTest, AOneVertexEditCapturesOnlyTheBlocksOfItsPatches) {
   EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false)));
 }
 
-TEST_F(SurfaceCacheTest, EditsAndUndoEqualLiveFramesEachTime) {
+TEST_P(SurfaceCacheTest, EditsAndUndoEqualLiveFramesEachTime) {
   RenderTarget target(kSize, kSize);
   for (const DrawOptions& o : {uniform(3), adaptive(5)}) {
     const CovarianceMesh original = make_sample("pawn");
     CovarianceMesh mesh = original;
     SurfaceRenderer renderer;
+    renderer.surface_cache().set_weld(GetParam());
     renderer.set_mesh(mesh);
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
     draw(renderer, target, camera, o, true);  // drawn as it is captured
@@ -305,10 +343,11 @@ TEST_F(SurfaceCacheTest, EditsAndUndoEqualLiveFramesEachTime) {
   }
 }
 
-TEST_F(SurfaceCacheTest, AnEditAfterASmallCameraMoveKeepsTheLevelsOfTheCapture) {
+TEST_P(SurfaceCacheTest, AnEditAfterASmallCameraMoveKeepsTheLevelsOfTheCapture) {
   RenderTarget target(kSize, kSize);
   CovarianceMesh mesh = make_sample("pawn");
   SurfaceRenderer renderer;
+  renderer.surface_cache().set_weld(GetParam());
   renderer.set_mesh(mesh);
   const DrawOptions o = adaptive(5);
   const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
@@ -324,6 +363,9 @@ TEST_F(SurfaceCacheTest, AnEditAfterASmallCameraMoveKeepsTheLevelsOfTheCapture) 
   EXPECT_EQ(renderer.surface_cache().refreshes(), 1);
   EXPECT_TRUE(same_surface(draw(renderer, target, camera, o, true), draw(renderer, target, camera, o, false)));
 }
+
+INSTANTIATE_TEST_SUITE_P(StoredVertices, SurfaceCacheTest, ::testing::Values(true, false),
+                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Welded" : "AsCaptured"; });
 
 }  // namespace
 }  // namespace gps

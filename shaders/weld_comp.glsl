@@ -1,0 +1,50 @@
+// Welds a range of the surface cache's stored vertices (render/stored_vertex_weld.h): each vertex
+// looks itself up in an open-addressing hash table by its 36 bytes (position, normal · 2^kind, grid)
+// and takes as its index the vertex of the same block that is there first with the same bytes,
+// else inserts itself. The draw then fetches and shades each such vertex once, as a welded static
+// buffer's are. A block's vertices weld among themselves only, so that a block can be captured and
+// welded again alone (an edit's refresh).
+#include "shaders/compute_pass.glsl"
+layout(std430, binding = kBindingStoredVertices) readonly buffer StoredVertices { uint stored[]; };  // 9 words a vertex
+layout(std430, binding = kBindingWeldTable) buffer WeldTable { uint slots[]; };                    // 0 or vertex + 1
+layout(std430, binding = kBindingStoredIndices) writeonly buffer StoredIndices { uint indices[]; };
+layout(std430, binding = kBindingBlockStarts) readonly buffer BlockStarts { uint block_starts[]; };  // each block's first vertex
+uniform int u_range_first;  // the range's first vertex; invocation i welds vertex u_range_first + i
+uniform int u_slots;        // table size, at least twice the range: a free slot is always found
+uniform int u_blocks;
+
+int block_of(uint v) {  // the last block starting at or before v
+  int low = 0, high = u_blocks - 1;
+  while (low < high) {
+    int middle = (low + high + 1) / 2;
+    if (block_starts[middle] <= v) low = middle;
+    else high = middle - 1;
+  }
+  return low;
+}
+
+void main() {
+  int i = compute_invocation();
+  if (i < 0) return;
+  uint v = uint(u_range_first + i), slots_in_table = uint(u_slots);
+  uint word[9];
+  uint hash = 2166136261u;  // FNV-1a over the nine words
+  for (int k = 0; k < 9; ++k) {
+    word[k] = stored[9u * v + uint(k)];
+    hash = (hash ^ word[k]) * 16777619u;
+  }
+  for (uint slot = (hash ^ (hash >> 16)) % slots_in_table;; slot = slot + 1u == slots_in_table ? 0u : slot + 1u) {
+    uint held = atomicCompSwap(slots[slot], 0u, v + 1u);
+    if (held == 0u) {
+      indices[v] = v;
+      return;
+    }
+    uint w = held - 1u;
+    bool same = true;
+    for (int k = 0; k < 9; ++k) same = same && stored[9u * w + uint(k)] == word[k];
+    if (same && block_of(w) == block_of(v)) {
+      indices[v] = w;
+      return;
+    }
+  }
+}
