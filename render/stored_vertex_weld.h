@@ -2,8 +2,8 @@
 // Welds the surface cache's stored vertices on the GPU (shaders/weld_comp.glsl): transform feedback
 // stores three vertices per triangle, so a cached frame would fetch and shade every vertex about six
 // times where a welded buffer shades it once (on an NVIDIA H200, 1.2 M cached vertices drew in 2 x
-// the welded floor's time). The weld gives every stored vertex the index of the first vertex of its
-// block with the same 36 bytes, and the cache draws those indices.
+// the welded floor's time). The weld gives every stored vertex the index of the vertex of its
+// block with the same 36 bytes that entered the hash table first, and the cache draws those indices.
 #include <vector>
 
 #include "render/shader_program.h"
