@@ -106,19 +106,21 @@ TriangleMesh tessellate(const PlanTable& plans, const std::vector<Dual>& points,
   if (plans.shape == PatchShape::triangle) return tessellate_triangles(plans, points, level);
   TriangleMesh out;
   // Level L is L segments along an edge of the mesh, as on the GPU (shaders/patch_tesc.glsl): a
-  // split face's half-size patches take L/2 and a quad's edge beside two of them L; for an odd L
-  // the half-size patches take L and the quad's edge beside them 2L, joined to its L×L grid by fans.
-  const bool even = level % 2 == 0;
+  // split face's half-size patches take L/2 and a quad's edge beside two of them L; for an odd L,
+  // one more: the half-size patches take (L + 1)/2 and the quad's edge beside them L + 1, joined to
+  // its L×L grid.
+  const int beside_halves = level + level % 2;
   std::map<BoundaryKey, int> shared;
   std::vector<int> grid;
   for (int patch = 0; patch < plans.n_patches(); ++patch) {
     const auto sample = [&](double u, double v) { return append_sample(out, plans, points, patch, u, v); };
     PatchEdge edges[4];
     for (int k = 0; k < 4; ++k) edges[k] = patch_edge(plans, patch, k);
-    const bool half_size = half_size_patch(plans, patch);
-    const int L = half_size && even ? level / 2 : level;  // the patch's grid
-    int steps[4];  // samples along each edge: L, or 2L where two half-size patches of an odd level lie beside it
-    for (int k = 0; k < 4; ++k) steps[k] = edges[k].part == PatchEdgePart::whole_beside_halves && !even ? 2 * L : L;
+    const int L = half_size_patch(plans, patch) ? beside_halves / 2 : level;  // the patch's grid
+    int steps[4];  // samples along each edge: L, or L + 1 where two half-size patches of an odd level lie beside it
+    for (int k = 0; k < 4; ++k) steps[k] = edges[k].part == PatchEdgePart::whole_beside_halves ? beside_halves : L;
+    // The edge sample that stands for grid step `step` along edge k: the first at or past it.
+    const auto snapped = [&](int k, int step) { return (step * steps[k] + L - 1) / L; };
     grid.assign(size_t(L + 1) * size_t(L + 1), -1);
     const auto boundary_sample = [&](int k, int step) {
       const auto [it, added] = shared.try_emplace(boundary_key(edges[k], step, steps[k]), -1);
@@ -140,7 +142,7 @@ TriangleMesh tessellate(const PlanTable& plans, const std::vector<Dual>& points,
       else k = 3, step = L - j;
       const int previous = (k + 3) % 4;
       if (step == 0 && edges[previous].part == PatchEdgePart::first_half) return boundary_sample(previous, steps[previous]);
-      return boundary_sample(k, step * (steps[k] / L));
+      return boundary_sample(k, snapped(k, step));
     };
     for (int j = 0; j <= L; ++j)
       for (int i = 0; i <= L; ++i) grid[size_t(i + (L + 1) * j)] = grid_sample(i, j);
@@ -148,10 +150,11 @@ TriangleMesh tessellate(const PlanTable& plans, const std::vector<Dual>& points,
       for (int i = 0; i < L; ++i) {
         const int a = grid[size_t(i + (L + 1) * j)], b = grid[size_t(i + 1 + (L + 1) * j)];
         const int c = grid[size_t(i + 1 + (L + 1) * (j + 1))], d = grid[size_t(i + (L + 1) * (j + 1))];
-        // The cell's outline, counter-clockwise, with the extra sample of each side on an edge of 2L.
+        // The cell's outline, counter-clockwise, with the samples of a finer edge between its corners.
         std::vector<int> outline = {a};
         const auto side = [&](int k, int step, bool on_edge, int next) {
-          if (on_edge && steps[k] == 2 * L) outline.push_back(boundary_sample(k, 2 * step + 1));
+          if (on_edge)
+            for (int s = snapped(k, step) + 1; s < snapped(k, step + 1); ++s) outline.push_back(boundary_sample(k, s));
           outline.push_back(next);
         };
         side(0, i, j == 0, b);

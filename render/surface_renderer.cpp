@@ -195,9 +195,8 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
   const glm::mat4 view_projection = camera.view_projection(aspect);
   const glm::vec2 viewport{float(width), float(height)};
   if (!cache_.current(key, view_projection, viewport)) {
-    // Buffer size: uniform level L generates about 2·L² triangles per quad patch, 2·(L/2)² per
-    // half-size one at an even L (shaders/patch_tesc.glsl), L² per triangle patch, and a little more
-    // beside half-size patches at an odd L; adaptive levels as last time.
+    // Buffer size: uniform level L generates about 2·L² triangles per quad patch, 2·⌈L/2⌉² per
+    // half-size one (shaders/patch_tesc.glsl), L² per triangle patch; adaptive levels as last time.
     const long long level = (long long)std::ceil(key.level), patches = n_patches();
     long long estimate = 64;
     if (key.pixels > 0.0f) {
@@ -205,7 +204,7 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
     } else if (shape() == PatchShape::triangle) {
       estimate += patches * level * level * 5 / 4;
     } else {
-      const long long halves = half_size_patches_, half_level = level % 2 == 0 ? level / 2 : level;
+      const long long halves = half_size_patches_, half_level = (level + 1) / 2;
       estimate += ((patches - halves) * 2 * level * level + halves * 2 * half_level * half_level) * 5 / 4;
     }
     const ShaderProgram& capture = patches_.program(shape(), PatchOutput::capture);

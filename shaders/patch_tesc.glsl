@@ -5,12 +5,12 @@ patch out int tc_patch;
 // An edge met by two half-size patches gets an even level, each half half of it, so both sides place
 // their vertices at the same points of the edge. Uniform level L is L segments along an edge of the
 // mesh: a half-size patch takes L/2 on each of its edges and a quad's edge beside two of them L; for
-// an odd L the halves take L and the quad's edge 2L (at most 64). Adaptive: the level of a half
-// comes from the whole edge's two end points.
+// an odd L, one more: the halves take (L + 1)/2 and the quad's edge L + 1. Adaptive: the level of a
+// half comes from the whole edge's two end points.
 float patch_edge_level(int p, int k, bool half_size) {
   int e = kPatchEdgeStride * p + kPatchEdgeInts * k, part = patch_edges[e + 2];
   float level = ceil(u_level);
-  float whole_beside_halves = mod(level, 2.0) == 0.0 ? level : min(2.0 * level, 64.0);
+  float whole_beside_halves = level + mod(level, 2.0);
   if (part == kEdgeWhole) {
     if (u_pixels > 0.0 || !half_size) return edge_level(patch_edges[e], patch_edges[e + 1]);
     return 0.5 * whole_beside_halves;  // an inner edge of a split face
@@ -31,6 +31,10 @@ void main() {
   gl_TessLevelOuter[1] = level[0];  // v = 0
   gl_TessLevelOuter[2] = level[1];  // u = 1
   gl_TessLevelOuter[3] = level[2];  // v = 1
-  gl_TessLevelInner[0] = max(level[0], level[2]);
-  gl_TessLevelInner[1] = max(level[1], level[3]);
+  // Inner levels: adaptive, the finer of the opposite edges; uniform, the patch's own grid (the
+  // coarser: they differ only where a quad's edge of L + 1 at an odd L meets two half-size patches,
+  // and that edge joins the L×L grid through the transition ring).
+  bool uniform_levels = u_pixels <= 0.0;
+  gl_TessLevelInner[0] = uniform_levels ? min(level[0], level[2]) : max(level[0], level[2]);
+  gl_TessLevelInner[1] = uniform_levels ? min(level[1], level[3]) : max(level[1], level[3]);
 }
