@@ -117,6 +117,11 @@ void SurfaceCache::set_weld(bool weld) {
   weld_vertices_ = weld;
   stored_ = false;
   tracked_points_ = -1;
+  if (!weld) {  // its buffers go
+    weld_.reset();
+    glNamedBufferData(indices_, 0, nullptr, GL_DYNAMIC_COPY);
+    index_capacity_ = 0;
+  }
 }
 
 void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long triangles) const {
@@ -267,6 +272,7 @@ bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<lo
 
 void SurfaceCache::weld(const std::vector<int>& blocks) {
   if (!weld_vertices_) return;
+  if (!weld_) weld_ = std::make_unique<StoredVertexWeld>();
   const long long total = blocks_.total();
   if (total > index_capacity_ || 4 * total < index_capacity_) {
     index_capacity_ = std::max(total, 1ll);
@@ -275,10 +281,10 @@ void SurfaceCache::weld(const std::vector<int>& blocks) {
   std::vector<long long> starts(size_t(blocks_.size()));
   for (int b = 0; b < blocks_.size(); ++b) starts[size_t(b)] = 3 * blocks_.first_triangle(b);
   if (blocks.empty()) {
-    weld_.weld(buffer_, indices_, 0, 3 * total, starts);
+    weld_->weld(buffer_, indices_, 0, 3 * total, starts);
     return;
   }
-  for (const int b : blocks) weld_.weld(buffer_, indices_, starts[size_t(b)], 3 * blocks_.triangles(b), starts);
+  for (const int b : blocks) weld_->weld(buffer_, indices_, starts[size_t(b)], 3 * blocks_.triangles(b), starts);
 }
 
 void SurfaceCache::draw(bool grid) const {

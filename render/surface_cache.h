@@ -24,6 +24,7 @@
 // over everything (core's update_everything), the whole surface is captured again.
 #include <glm/glm.hpp>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "core/covariance_mesh.h"
@@ -113,7 +114,8 @@ public:
   int refreshed_patches() const { return refreshed_patches_; }
   long long triangles() const { return blocks_.total(); }
   size_t buffer_bytes() const {
-    return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kVertexBytes + size_t(index_capacity_) * 3 * 4 + weld_.bytes();
+    return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kVertexBytes + size_t(index_capacity_) * 3 * 4 +
+           (weld_ ? weld_->bytes() : 0);
   }
 
 private:
@@ -131,7 +133,7 @@ private:
 
   unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, indices_ = 0, vao_ = 0;
   long long index_capacity_ = 0;  // triangles the index buffer holds
-  StoredVertexWeld weld_;
+  std::unique_ptr<StoredVertexWeld> weld_;  // made at the first weld
   bool weld_vertices_;
   std::vector<unsigned> queries_;  // one per block of a capture
   long long capacity_ = 0, scratch_capacity_ = 0, spare_capacity_ = 0;  // triangles the buffers hold
