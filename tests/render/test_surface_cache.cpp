@@ -150,7 +150,9 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
   const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
   draw(renderer, target, camera, uniform(4), true);
   const long long distinct = cache.distinct_vertices();
-  if (GetParam()) EXPECT_LT(distinct, cache.triangles());  // a quad patch: (L + 1)² of its 6 L² stored
+  if (GetParam()) {
+    EXPECT_LT(distinct, cache.triangles());  // a quad patch: (L + 1)² of its 6 L² stored
+  }
   const int v = int(sphere.n_vertices() / 2);
   move_vertex(sphere, v, 0.05);
   renderer.update_vertices(sphere, {v});
