@@ -4,6 +4,7 @@
 
 #include "core/catmull_clark.h"
 #include "core/catmull_clark_connectivity.h"
+#include "core/loop_connectivity.h"
 #include "core/dual_map.h"
 #include "core/error.h"
 #include "core/limit_masks.h"
@@ -146,11 +147,12 @@ Refined<T> refine(const PolygonTopology& base, std::vector<T> p, const Subdivisi
       c = std::move(finer_connectivity);
     } else {
       p = loop_values(t, c, p, o.loop_beta);
-      PolygonTopology finer = loop_topology(t, c);
+      PolygonTopology finer = loop_topology(t, c);  // throws where a face is not a triangle
+      MeshConnectivity finer_connectivity = loop_connectivity(t, c);
       if (vertex_params)
         refine_params(t, finer, last, corner_params, params, *vertex_params, [](const auto&... a) { refine_loop_corner_params(a...); });
       t = std::move(finer);
-      c = connectivity_of(t);
+      c = std::move(finer_connectivity);
     }
   }
   if (vertex_params && corner_params) {
