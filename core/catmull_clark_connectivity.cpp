@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/refined_outer_edges.h"
+
 namespace gps {
 
 MeshConnectivity catmull_clark_connectivity(const PolygonTopology& t, const MeshConnectivity& c) {
@@ -23,13 +25,7 @@ MeshConnectivity catmull_clark_connectivity(const PolygonTopology& t, const Mesh
   // Refined edges sorted by lower then higher vertex, as connectivity_of numbers them: first the
   // outer halves (v, e') of each vertex v's edges e, at v's vertex_edges indices; then the inner
   // edges (e', f') of each edge e and side j, at inner_begin[e] + j.
-  std::vector<int> outer(2 * size_t(ne));  // the outer half of e at its end edge_verts[2e + s]
-#pragma omp parallel for if (parallel)
-  for (int v = 0; v < nv; ++v)
-    for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
-      const int e = c.vertex_edges[size_t(i)];
-      outer[2 * size_t(e) + (c.edge_verts[2 * size_t(e)] == v ? 0 : 1)] = i;
-    }
+  const std::vector<int> outer = outer_half_edges(c, nv, parallel);
   std::vector<int> inner_begin(size_t(ne) + 1);
   inner_begin[0] = 2 * ne;
   for (int e = 0; e < ne; ++e) inner_begin[size_t(e) + 1] = inner_begin[size_t(e)] + (c.is_boundary_edge(e) ? 1 : 2);
@@ -52,12 +48,9 @@ MeshConnectivity catmull_clark_connectivity(const PolygonTopology& t, const Mesh
     // Vertex points: their outer halves, one refined face (corner 0) per coarse face around them.
 #pragma omp for nowait
     for (int v = 0; v < nv; ++v) {
-      r.vertex_edge_offsets[size_t(v)] = c.vertex_edge_offsets[size_t(v)];
+      write_outer_half_edges(c, v, nv, r);
       for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
         const int e = c.vertex_edges[size_t(i)];
-        r.edge_verts[2 * size_t(i)] = v;
-        r.edge_verts[2 * size_t(i) + 1] = edge_base + e;
-        r.vertex_edges[size_t(i)] = i;
         for (int j = 0; j < 2; ++j) {
           const int corner = side_corner[2 * size_t(e) + size_t(j)];
           r.edge_faces[2 * size_t(i) + size_t(j)] =

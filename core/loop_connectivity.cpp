@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/refined_outer_edges.h"
+
 namespace gps {
 
 MeshConnectivity loop_connectivity(const PolygonTopology& t, const MeshConnectivity& c) {
@@ -13,13 +15,7 @@ MeshConnectivity loop_connectivity(const PolygonTopology& t, const MeshConnectiv
   // Refined edges sorted by lower then higher vertex, as connectivity_of numbers them: first the
   // outer halves (v, e') of each vertex v's edges, at v's vertex_edges indices; then the inner edges
   // (e'_a, e'_b) of each face, grouped by their lower edge point e'_a, at inner_begin[a] on.
-  std::vector<int> outer(2 * size_t(ne));  // the outer half of e at its end edge_verts[2e + s]
-#pragma omp parallel for if (parallel)
-  for (int v = 0; v < nv; ++v)
-    for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
-      const int e = c.vertex_edges[size_t(i)];
-      outer[2 * size_t(e) + (c.edge_verts[2 * size_t(e)] == v ? 0 : 1)] = i;
-    }
+  const std::vector<int> outer = outer_half_edges(c, nv, parallel);
   const auto outer_at = [&](int e, int v) { return outer[2 * size_t(e) + (c.edge_verts[2 * size_t(e)] == v ? 0 : 1)]; };
   // Inner edges by lower edge: each face's pair (e_k, e_{k−1}) counts for the lower of the two.
   std::vector<int> inner_begin(size_t(ne) + 1, 0);
@@ -72,12 +68,9 @@ MeshConnectivity loop_connectivity(const PolygonTopology& t, const MeshConnectiv
     // Vertices: their outer halves, and the child at their corner of each coarse face around them.
 #pragma omp for nowait
     for (int v = 0; v < nv; ++v) {
-      r.vertex_edge_offsets[size_t(v)] = c.vertex_edge_offsets[size_t(v)];
+      write_outer_half_edges(c, v, nv, r);
       for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
         const int e = c.vertex_edges[size_t(i)];
-        r.edge_verts[2 * size_t(i)] = v;
-        r.edge_verts[2 * size_t(i) + 1] = nv + e;
-        r.vertex_edges[size_t(i)] = i;
         for (int j = 0; j < 2; ++j) {
           const int f = c.edge_faces[2 * size_t(e) + size_t(j)];
           int k = 0;

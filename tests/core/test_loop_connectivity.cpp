@@ -4,20 +4,12 @@
 
 #include "core/loop.h"
 #include "core/samples.h"
+#include "tests/support/connectivity_equal.h"
 
 namespace gps {
 namespace {
 
-void expect_equal(const MeshConnectivity& a, const MeshConnectivity& b) {
-  EXPECT_EQ(a.edge_verts, b.edge_verts);
-  EXPECT_EQ(a.edge_faces, b.edge_faces);
-  EXPECT_EQ(a.face_edges, b.face_edges);
-  EXPECT_EQ(a.vertex_edge_offsets, b.vertex_edge_offsets);
-  EXPECT_EQ(a.vertex_edges, b.vertex_edges);
-  EXPECT_EQ(a.vertex_face_offsets, b.vertex_face_offsets);
-  EXPECT_EQ(a.vertex_faces, b.vertex_faces);
-  EXPECT_EQ(a.vertex_face_corners, b.vertex_face_corners);
-}
+using test::expect_equal;
 
 // Every triangle sample (closed, open, high valence), two steps deep, and a mesh large enough for
 // the parallel loops: the refined connectivity is connectivity_of's exactly.
