@@ -2,28 +2,25 @@
 
 #include <cmath>
 
+#include "bench/edit_scene.h"
 #include "core/dual_map.h"
-#include "core/samples.h"
 #include "core/stencil_table.h"
 #include "core/tessellator.h"
 #include "render/frame_timer.h"
 #include "render/render_target.h"
-#include "render/surface_renderer.h"
-#include "view/camera.h"
 
 namespace gps {
 
 nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptions& options, int size, const std::vector<int>& levels,
                              float adaptive_pixels) {
-  CovarianceMesh mesh = make_sample(name, faces);
-  SurfaceRenderer renderer;
-  renderer.set_mesh(mesh, options);
-  const Camera camera = frame_mesh(mesh);
+  EditScene scene(name, faces, options);  // its edits scale a covariance by 1.1 and the next one back
+  SurfaceRenderer& renderer = scene.renderer();
+  const CovarianceMesh& mesh = scene.mesh();
+  const Camera& camera = scene.camera();
   RenderTarget target(size, size);
   const FrameTiming compute = time_gl_work([&] { renderer.recompute_all(); }, 5);
   const std::vector<Dual> points = apply_stencils(renderer.tables().stencils, base_points(mesh));
-  const std::vector<int> edited = {int(mesh.n_vertices() / 2)};
-  bool grow = true;  // the edit scales a covariance by 1.1 and the next one back
+  const std::vector<int> edited = scene.middle_vertices(1);
   std::vector<DrawOptions> settings;
   for (const int level : levels) {
     settings.emplace_back();
@@ -48,9 +45,7 @@ nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptio
                                    : o.pixels > 0.0f ? TriangleMesh{}
                                                      : tessellate(renderer.tables().plans, points, int(o.level));
     const FrameTiming edit = time_gl_work([&] {
-      mesh.set_covariance(size_t(edited[0]), mesh.covariance(size_t(edited[0])) * (grow ? 1.1 : 1.0 / 1.1));
-      grow = !grow;
-      renderer.update_vertices(mesh, edited);
+      scene.edit(edited);
       renderer.draw(target, camera, o);
     }, repeats);
     renderer.set_triangles(triangles);
