@@ -33,7 +33,10 @@ void main() {
     word[k] = stored[9u * v + uint(k)];
     hash = (hash ^ word[k]) * 16777619u;
   }
-  for (uint slot = (hash ^ (hash >> 16)) % slots_in_table;; slot = slot + 1u == slots_in_table ? 0u : slot + 1u) {
+  // At most one probe per slot: the table has twice the range's slots, so a free one comes long before;
+  // the bound keeps a driver from spinning should it not.
+  uint slot = (hash ^ (hash >> 16)) % slots_in_table;
+  for (uint probe = 0u; probe < slots_in_table; ++probe, slot = slot + 1u == slots_in_table ? 0u : slot + 1u) {
     uint held = atomicCompSwap(slots[slot], 0u, v + 1u);
     if (held == 0u) {
       indices[v] = v;
@@ -47,4 +50,5 @@ void main() {
       return;
     }
   }
+  indices[v] = v;  // not welded: drawn as captured
 }
