@@ -21,16 +21,16 @@ StoredVertexWeld::~StoredVertexWeld() {
   glDeleteBuffers(1, &block_starts_);
 }
 
-void StoredVertexWeld::weld(unsigned vertices, unsigned indices, long long first, long long count,
+void StoredVertexWeld::weld(unsigned vertices, unsigned indices, const std::vector<Range>& ranges,
                             const std::vector<long long>& block_starts) {
-  if (count <= 0) return;
-  const long long needed = 2 * count;
-  if (needed > slots_ || 4 * needed < slots_) {
-    slots_ = needed;
+  long long most = 0;
+  for (const Range& r : ranges) most = std::max(most, r.count);
+  if (most <= 0) return;
+  // One table for the largest range, cleared before each; the block starts uploaded once.
+  if (2 * most > slots_ || 8 * most < slots_) {
+    slots_ = 2 * most;
     glNamedBufferData(table_, GLsizeiptr(slots_ * 4), nullptr, GL_DYNAMIC_COPY);
   }
-  const GLuint zero = 0;
-  glClearNamedBufferSubData(table_, GL_R32UI, 0, GLsizeiptr(needed * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   std::vector<GLuint> starts(block_starts.begin(), block_starts.end());
   glNamedBufferData(block_starts_, GLsizeiptr(starts.size() * sizeof(GLuint)), starts.data(), GL_STREAM_DRAW);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingStoredVertices, vertices);
@@ -38,10 +38,15 @@ void StoredVertexWeld::weld(unsigned vertices, unsigned indices, long long first
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingStoredIndices, indices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingBlockStarts, block_starts_);
   program_.use();
-  program_.set("u_range_first", int(first));
-  program_.set("u_slots", int(needed));
   program_.set("u_blocks", int(starts.size()));
-  run_compute_pass(program_, int(count), false, 0);
+  const GLuint zero = 0;
+  for (const Range& r : ranges) {
+    if (r.count <= 0) continue;
+    glClearNamedBufferSubData(table_, GL_R32UI, 0, GLsizeiptr(2 * r.count * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    program_.set("u_range_first", int(r.first));
+    program_.set("u_slots", int(2 * r.count));
+    run_compute_pass(program_, int(r.count), false, 0);  // its barrier orders the table's reuse
+  }
   glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT);
   check_gl_errors("welding the surface cache");
 }

@@ -18,10 +18,14 @@ public:
   StoredVertexWeld(const StoredVertexWeld&) = delete;
   StoredVertexWeld& operator=(const StoredVertexWeld&) = delete;
 
-  /// Writes indices[v] for the vertices v of [first, first + count) of `vertices` (9 words each),
-  /// welding only within the blocks that `block_starts` (each block's first vertex, ascending, the
-  /// first 0) delimit; a barrier then makes the indices ready to draw.
-  void weld(unsigned vertices, unsigned indices, long long first, long long count, const std::vector<long long>& block_starts);
+  /// A run of stored vertices: the first and how many.
+  struct Range {
+    long long first, count;
+  };
+  /// Writes indices[v] for the vertices v of each range of `vertices` (9 words each), welding only
+  /// within the blocks that `block_starts` (each block's first vertex, ascending, the first 0)
+  /// delimit; a barrier then makes the indices ready to draw.
+  void weld(unsigned vertices, unsigned indices, const std::vector<Range>& ranges, const std::vector<long long>& block_starts);
   /// The hash table's bytes (kept between welds, shrunk when four times too large).
   size_t bytes() const { return size_t(slots_) * 4; }
   /// Table bytes per welded vertex at most (its slots are twice the vertices).

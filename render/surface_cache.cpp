@@ -280,11 +280,10 @@ void SurfaceCache::weld(const std::vector<int>& blocks) {
   }
   std::vector<long long> starts(size_t(blocks_.size()));
   for (int b = 0; b < blocks_.size(); ++b) starts[size_t(b)] = 3 * blocks_.first_triangle(b);
-  if (blocks.empty()) {
-    weld_->weld(buffer_, indices_, 0, 3 * total, starts);
-    return;
-  }
-  for (const int b : blocks) weld_->weld(buffer_, indices_, starts[size_t(b)], 3 * blocks_.triangles(b), starts);
+  std::vector<StoredVertexWeld::Range> ranges;
+  if (blocks.empty()) ranges.push_back({0, 3 * total});
+  for (const int b : blocks) ranges.push_back({starts[size_t(b)], 3 * blocks_.triangles(b)});
+  weld_->weld(buffer_, indices_, ranges, starts);
 }
 
 void SurfaceCache::draw(bool grid) const {
