@@ -3,7 +3,8 @@
 // cache's stored triangles), a frame after a one-vertex edit (the cache refreshes that vertex's
 // patches) and the floor (the cached triangles, welded, from a static vertex buffer, same shading).
 // `unwelded` is the floor without shared vertices; `welded` and `captured` are cached frames with
-// the stored vertices welded or not, whatever this device's default (render/surface_cache.h).
+// the stored vertices welded at each capture or never, whatever this device's default
+// (render/surface_cache.h).
 // `gpsurf bench --render` prints the same four in one table from a few repetitions each; this one
 // lets Google Benchmark choose the iterations, as sub-millisecond frames on a GPU need.
 // Names: Frame/<kind>/<mesh>/<setting>, e.g. Frame/floor/valence5/level16, Frame/cached/sphere:100000/adaptive6px.
@@ -48,8 +49,9 @@ using gps::bench::MeshCase;
 struct Scene {
   gps::EditScene edits;
   gps::RenderTarget target{512, 512};
-  bool weld_default;  // the surface cache's choice on this device
-  explicit Scene(const MeshCase& m) : edits(m.name, m.faces, gps::PlanOptions{}), weld_default(edits.renderer().surface_cache().welds()) {}
+  gps::SurfaceCache::Weld weld_default;  // the surface cache's choice on this device
+  explicit Scene(const MeshCase& m)
+      : edits(m.name, m.faces, gps::PlanOptions{}), weld_default(edits.renderer().surface_cache().weld_mode()) {}
 };
 
 Scene& scene(const MeshCase& m) {
@@ -67,7 +69,8 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   o.level = float(level > 0 ? level : 8);
   o.pixels = level > 0 ? 0.0f : 6.0f;
   o.surface_cache = kind != FrameKind::live;
-  renderer.surface_cache().set_weld(kind == FrameKind::welded ? true : kind == FrameKind::captured ? false : s.weld_default);
+  using Weld = gps::SurfaceCache::Weld;
+  renderer.surface_cache().set_weld(kind == FrameKind::welded ? Weld::at_capture : kind == FrameKind::captured ? Weld::off : s.weld_default);
   renderer.draw(s.target, s.edits.camera(), o);  // fills the cache (or compiles the live programs)
   if (kind == FrameKind::floor || kind == FrameKind::unwelded) {
     if (!renderer.surface_cache().holds_triangles()) {

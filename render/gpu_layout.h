@@ -32,6 +32,8 @@ GPS_LAYOUT_CONST int kBindingStoredVertices = 16;
 GPS_LAYOUT_CONST int kBindingWeldTable = 17;
 GPS_LAYOUT_CONST int kBindingStoredIndices = 18;
 GPS_LAYOUT_CONST int kBindingBlockStarts = 19;
+GPS_LAYOUT_CONST int kBindingScanValues = 20;      // render/exclusive_scan.h
+GPS_LAYOUT_CONST int kBindingWeldedVertices = 21;  // the welded vertices, numbered block by block
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;

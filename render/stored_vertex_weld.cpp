@@ -11,7 +11,9 @@
 
 namespace gps {
 
-StoredVertexWeld::StoredVertexWeld() : program_("weld", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::weld_comp}}}) {
+StoredVertexWeld::StoredVertexWeld()
+    : weld_("weld", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::weld_comp}}}),
+      compact_("compact", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::compact_comp}}}) {
   glCreateBuffers(1, &table_);
   glCreateBuffers(1, &block_starts_);
 }
@@ -21,7 +23,7 @@ StoredVertexWeld::~StoredVertexWeld() {
   glDeleteBuffers(1, &block_starts_);
 }
 
-void StoredVertexWeld::weld(unsigned vertices, unsigned indices, const std::vector<Range>& ranges,
+void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded_vertices, const std::vector<Range>& ranges,
                             const std::vector<long long>& block_starts) {
   long long most = 0;
   for (const Range& r : ranges) most = std::max(most, r.count);
@@ -37,17 +39,26 @@ void StoredVertexWeld::weld(unsigned vertices, unsigned indices, const std::vect
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldTable, table_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingStoredIndices, indices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingBlockStarts, block_starts_);
-  program_.use();
-  program_.set("u_blocks", int(starts.size()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_vertices);
+  for (const ShaderProgram* p : {&weld_, &compact_}) {
+    p->use();
+    p->set("u_blocks", int(starts.size()));
+  }
   const GLuint zero = 0;
   for (const Range& r : ranges) {
     if (r.count <= 0) continue;
     glClearNamedBufferSubData(table_, GL_R32UI, 0, GLsizeiptr(2 * r.count * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    program_.set("u_range_first", int(r.first));
-    program_.set("u_slots", int(2 * r.count));
-    run_compute_pass(program_, int(r.count), false, 0);  // its barrier orders the table's reuse
+    scan_.bind(r.count);
+    weld_.use();
+    weld_.set("u_range_first", int(r.first));
+    weld_.set("u_slots", int(2 * r.count));
+    run_compute_pass(weld_, int(r.count), false, 0);  // its barrier orders the table's reuse
+    scan_.run(r.count);
+    compact_.use();
+    compact_.set("u_range_first", int(r.first));
+    run_compute_pass(compact_, int(r.count), false, 0);
   }
-  glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT);
+  glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
   check_gl_errors("welding the surface cache");
 }
 

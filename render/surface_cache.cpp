@@ -6,25 +6,30 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <unordered_map>
 
 #include "render/gl_context.h"
 
 namespace gps {
 
-SurfaceCache::SurfaceCache() : weld_vertices_(!software_renderer()) {
+SurfaceCache::SurfaceCache() : weld_mode_(software_renderer() ? Weld::when_settled : Weld::at_capture) {
   glCreateBuffers(1, &buffer_);
   glCreateBuffers(1, &scratch_);
   glCreateBuffers(1, &spare_);
   glCreateBuffers(1, &indices_);
+  glCreateBuffers(1, &welded_);
   glCreateVertexArrays(1, &vao_);
-  glVertexArrayElementBuffer(vao_, indices_);
+  glCreateVertexArrays(1, &welded_vao_);
   glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kVertexBytes);
-  for (GLuint a = 0; a < 3; ++a) {
-    glEnableVertexArrayAttrib(vao_, a);
-    glVertexArrayAttribFormat(vao_, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
-    glVertexArrayAttribBinding(vao_, a, 0);
-  }
+  glVertexArrayVertexBuffer(welded_vao_, 0, welded_, 0, kVertexBytes);
+  glVertexArrayElementBuffer(welded_vao_, indices_);
+  for (const GLuint vao : {vao_, welded_vao_})
+    for (GLuint a = 0; a < 3; ++a) {
+      glEnableVertexArrayAttrib(vao, a);
+      glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
+      glVertexArrayAttribBinding(vao, a, 0);
+    }
   check_gl_errors("creating the surface cache");
 }
 
@@ -33,7 +38,9 @@ SurfaceCache::~SurfaceCache() {
   glDeleteBuffers(1, &scratch_);
   glDeleteBuffers(1, &spare_);
   glDeleteBuffers(1, &indices_);
+  glDeleteBuffers(1, &welded_);
   glDeleteVertexArrays(1, &vao_);
+  glDeleteVertexArrays(1, &welded_vao_);
   if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
 }
 
@@ -110,16 +117,17 @@ bool SurfaceCache::camera_close(const glm::mat4& view_projection, glm::vec2 view
   return true;
 }
 
-long long SurfaceCache::most_triangles() const { return std::max(1ll, limit_bytes_ / triangle_bytes()); }
+long long SurfaceCache::most_triangles() const { return std::max(1ll, limit_bytes_ / kTriangleBytes); }
 
-void SurfaceCache::set_weld(bool weld) {
-  if (weld == weld_vertices_) return;
-  weld_vertices_ = weld;
+void SurfaceCache::set_weld(Weld weld) {
+  if (weld == weld_mode_) return;
+  weld_mode_ = weld;
   stored_ = false;
   tracked_points_ = -1;
-  if (!weld) {  // its buffers go
+  if (weld == Weld::off) {  // its buffers go
     weld_.reset();
     glNamedBufferData(indices_, 0, nullptr, GL_DYNAMIC_COPY);
+    glNamedBufferData(welded_, 0, nullptr, GL_DYNAMIC_COPY);
     index_capacity_ = 0;
   }
 }
@@ -271,39 +279,74 @@ bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<lo
 }
 
 void SurfaceCache::weld(const std::vector<int>& blocks) {
-  if (!weld_vertices_) return;
-  if (!weld_) weld_ = std::make_unique<StoredVertexWeld>();
+  switch (weld_mode_) {
+    case Weld::off:
+      return;
+    case Weld::at_capture:
+      weld_now(blocks);
+      return;
+    case Weld::when_settled:
+      if (blocks.empty()) {
+        weld_all_pending_ = true;
+        weld_pending_.clear();
+      } else if (!weld_all_pending_) {
+        std::vector<int> both;
+        std::set_union(weld_pending_.begin(), weld_pending_.end(), blocks.begin(), blocks.end(), std::back_inserter(both));
+        weld_pending_ = std::move(both);
+      }
+      return;
+  }
+}
+
+void SurfaceCache::settle() {
+  if (weld_mode_ == Weld::when_settled && holds_triangles() && (weld_all_pending_ || !weld_pending_.empty()))
+    weld_now(weld_all_pending_ ? std::vector<int>{} : weld_pending_);
+}
+
+void SurfaceCache::weld_now(const std::vector<int>& blocks) {
   const long long total = blocks_.total();
-  if (total > index_capacity_ || 4 * total < index_capacity_) {
+  if (total > limit_bytes_ / kWeldedTriangleBytes) {  // drawn as captured
+    weld_all_pending_ = true;
+    return;
+  }
+  if (!weld_) weld_ = std::make_unique<StoredVertexWeld>();
+  bool all = blocks.empty();
+  if (total > index_capacity_ || 4 * total < index_capacity_) {  // new buffers: every block welded again
     index_capacity_ = std::max(total, 1ll);
     glNamedBufferData(indices_, GLsizeiptr(index_capacity_ * 3 * 4), nullptr, GL_DYNAMIC_COPY);
+    glNamedBufferData(welded_, GLsizeiptr(index_capacity_ * 3 * kVertexBytes), nullptr, GL_DYNAMIC_COPY);
+    all = true;
   }
   std::vector<long long> starts(size_t(blocks_.size()));
   for (int b = 0; b < blocks_.size(); ++b) starts[size_t(b)] = 3 * blocks_.first_triangle(b);
   std::vector<StoredVertexWeld::Range> ranges;
-  if (blocks.empty()) ranges.push_back({0, 3 * total});
-  for (const int b : blocks) ranges.push_back({starts[size_t(b)], 3 * blocks_.triangles(b)});
-  weld_->weld(buffer_, indices_, ranges, starts);
+  if (all) ranges.push_back({0, 3 * total});
+  else
+    for (const int b : blocks) ranges.push_back({starts[size_t(b)], 3 * blocks_.triangles(b)});
+  weld_->weld(buffer_, indices_, welded_, ranges, starts);
+  weld_all_pending_ = false;
+  weld_pending_.clear();
 }
 
 void SurfaceCache::draw(bool grid) const {
+  const bool welded = draws_welded();
+  const GLuint vao = welded ? welded_vao_ : vao_;
   // Attribute 2 fetched only for a program that reads it.
-  if (grid) glEnableVertexArrayAttrib(vao_, 2);
-  else glDisableVertexArrayAttrib(vao_, 2);
-  glBindVertexArray(vao_);
-  if (weld_vertices_) glDrawElements(GL_TRIANGLES, GLsizei(3 * blocks_.total()), GL_UNSIGNED_INT, nullptr);
+  if (grid) glEnableVertexArrayAttrib(vao, 2);
+  else glDisableVertexArrayAttrib(vao, 2);
+  glBindVertexArray(vao);
+  if (welded) glDrawElements(GL_TRIANGLES, GLsizei(3 * blocks_.total()), GL_UNSIGNED_INT, nullptr);
   else glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * blocks_.total()));
 }
 
 long long SurfaceCache::distinct_vertices() const {
   const long long vertices = 3 * blocks_.total();
-  if (!weld_vertices_ || !holds_triangles()) return vertices;
+  if (!draws_welded() || !holds_triangles()) return vertices;
   std::vector<GLuint> indices(static_cast<size_t>(vertices), 0u);
   glGetNamedBufferSubData(indices_, 0, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data());
   check_gl_errors("reading the surface cache's indices");
-  long long own = 0;
-  for (size_t v = 0; v < indices.size(); ++v) own += indices[v] == v;
-  return own;
+  std::sort(indices.begin(), indices.end());
+  return std::unique(indices.begin(), indices.end()) - indices.begin();
 }
 
 TriangleMesh SurfaceCache::stored_triangles() const {

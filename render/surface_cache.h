@@ -11,10 +11,11 @@
 // crossed the eye plane. Within that, the stored levels stay within the factor of what the live
 // pipeline would choose.
 //
-// On a GPU the stored vertices are welded after each capture (render/stored_vertex_weld.h) and
-// drawn by index, as a welded static buffer is. Not on llvmpipe, where rasterising the triangles
-// costs the frame and the weld only adds to captures (pawn, level 16: cached frame 61-64 ms welded
-// or not; a cube's edit at level 64 27.6 -> 37.3 ms).
+// The stored vertices are welded (render/stored_vertex_weld.h) and drawn by index, as a welded
+// static buffer is. On a GPU right after each capture or refresh (Weld::at_capture). On llvmpipe
+// (Weld::when_settled) by the first frame that finds the stored triangles current: there the weld
+// costs an edit's frame more than it saves it (a cube's edit at level 64: 27.6 -> 37.3 ms), so the
+// frames of a drag draw the triangles as captured and the frames after it welded.
 //
 // Edits: triangles are captured in blocks of consecutive patches (render/surface_blocks.h), each
 // counted by its own query. An edit reports the patches it changed (points_changed); the next frame
@@ -47,6 +48,9 @@ public:
   /// One stored vertex: the tessellation evaluation outputs the fragment shader reads.
   static constexpr int kVertexBytes = 9 * 4;  // position, normal · 2^(node kind), grid (vec3 each)
   static constexpr long long kDefaultLimitBytes = 512ll << 20;
+  /// When the stored vertices are welded: never, after each capture and refresh, or by the first
+  /// frame that draws them unchanged (settle()).
+  enum class Weld { off, at_capture, when_settled };
 
   /// Needs a current GL context.
   SurfaceCache();
@@ -87,23 +91,29 @@ public:
   glm::vec2 captured_viewport() const { return viewport_; }
   /// Whether stored triangles are there to draw (a capture that was not refused).
   bool holds_triangles() const { return stored_ && !refused_; }
+  /// A frame found the stored triangles current: welds what Weld::when_settled left unwelded.
+  void settle();
   /// Binds the vertex array of the stored triangles and draws them with the bound program, which
-  /// reads the tessellation grid (attribute 2) where `grid`.
+  /// reads the tessellation grid (attribute 2) where `grid`: welded where they are.
   void draw(bool grid) const;
+  /// Whether draw() draws welded vertices by index.
+  bool draws_welded() const { return weld_mode_ != Weld::off && !weld_all_pending_ && weld_pending_.empty(); }
   /// The stored triangles read back, vertices with bit-identical position and normal welded (shared
   /// patch edges are bit-exact): the benchmark's static-buffer floor for exactly these triangles.
   TriangleMesh stored_triangles() const;
-  /// The distinct vertices a cached frame fetches (read back): where welded, those that are their
-  /// own index; else three per triangle.
+  /// The distinct vertices a cached frame fetches (read back): where welded, the distinct indices;
+  /// else three per triangle.
   long long distinct_vertices() const;
 
-  /// Whether stored vertices are welded (default: where the renderer is not software); a change
-  /// drops the stored triangles.
-  void set_weld(bool weld);
-  bool welds() const { return weld_vertices_; }
-  /// What a stored triangle takes of the memory limit: its vertices and, where welded, their
-  /// indices and, while they are welded, their hash table slots.
-  int triangle_bytes() const { return 3 * (kVertexBytes + (weld_vertices_ ? 4 + StoredVertexWeld::kTableBytesPerVertex : 0)); }
+  /// When stored vertices are welded (default: at_capture, or when_settled where the renderer is
+  /// software); a change drops the stored triangles.
+  void set_weld(Weld weld);
+  Weld weld_mode() const { return weld_mode_; }
+  /// What a stored triangle takes of the memory limit: its captured vertices. Welded, also their
+  /// indices, the welded vertices and, while they are welded, the weld's table and prefix sum:
+  /// triangles past the limit welded are drawn as captured.
+  static constexpr int kTriangleBytes = 3 * kVertexBytes;
+  static constexpr int kWeldedTriangleBytes = 3 * (2 * kVertexBytes + 4 + StoredVertexWeld::kTableBytesPerVertex);
 
   void set_hysteresis(float factor) { hysteresis_ = factor; }
   void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
@@ -114,8 +124,8 @@ public:
   int refreshed_patches() const { return refreshed_patches_; }
   long long triangles() const { return blocks_.total(); }
   size_t buffer_bytes() const {
-    return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kVertexBytes + size_t(index_capacity_) * 3 * 4 +
-           (weld_ ? weld_->bytes() : 0);
+    return size_t(capacity_ + scratch_capacity_ + spare_capacity_ + index_capacity_) * 3 * kVertexBytes +
+           size_t(index_capacity_) * 3 * 4 + (weld_ ? weld_->bytes() : 0);
   }
 
 private:
@@ -128,13 +138,18 @@ private:
                       std::vector<long long>& counts, bool rasterize = false, bool known = false);
   /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
   bool assemble(const std::vector<int>& blocks, const std::vector<long long>& counts);
-  /// Welds the stored vertices of `blocks` (all of them where empty) into the index buffer.
+  /// The stored vertices of `blocks` (all of them where empty) changed: welds them now or, when
+  /// settled, later.
   void weld(const std::vector<int>& blocks = {});
+  /// Welds them into the index and welded vertex buffers.
+  void weld_now(const std::vector<int>& blocks);
 
-  unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, indices_ = 0, vao_ = 0;
-  long long index_capacity_ = 0;  // triangles the index buffer holds
+  unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, indices_ = 0, welded_ = 0, vao_ = 0, welded_vao_ = 0;
+  long long index_capacity_ = 0;  // triangles the index and welded vertex buffers hold
   std::unique_ptr<StoredVertexWeld> weld_;  // made at the first weld
-  bool weld_vertices_;
+  Weld weld_mode_;
+  bool weld_all_pending_ = true;   // when settled: every block to weld
+  std::vector<int> weld_pending_;  // else these, in order
   std::vector<unsigned> queries_;  // one per block of a capture
   long long capacity_ = 0, scratch_capacity_ = 0, spare_capacity_ = 0;  // triangles the buffers hold
   SurfaceBlocks blocks_;

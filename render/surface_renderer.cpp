@@ -226,6 +226,8 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
       if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire)) return CacheFrame::live;
       if (!triangle_wire) return CacheFrame::drawn;
     }
+  } else {
+    cache_.settle();
   }
   return cache_.holds_triangles() ? CacheFrame::stored : CacheFrame::live;
 }

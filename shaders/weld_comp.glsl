@@ -3,24 +3,20 @@
 // and takes as its index the vertex of the same block that is there first with the same bytes,
 // else inserts itself. The draw then fetches and shades each such vertex once, as a welded static
 // buffer's are. A block's vertices weld among themselves only, so that a block can be captured and
-// welded again alone (an edit's refresh).
+// welded again alone (an edit's refresh). Each vertex also writes whether it is its own index, for
+// the prefix sum that numbers the distinct vertices (shaders/compact_comp.glsl).
 #include "shaders/compute_pass.glsl"
+#include "shaders/stored_blocks.glsl"
 layout(std430, binding = kBindingStoredVertices) readonly buffer StoredVertices { uint stored[]; };  // 9 words a vertex
 layout(std430, binding = kBindingWeldTable) buffer WeldTable { uint slots[]; };                    // 0 or vertex + 1
 layout(std430, binding = kBindingStoredIndices) writeonly buffer StoredIndices { uint indices[]; };
-layout(std430, binding = kBindingBlockStarts) readonly buffer BlockStarts { uint block_starts[]; };  // each block's first vertex
+layout(std430, binding = kBindingScanValues) writeonly buffer Distinct { uint distinct[]; };  // per range vertex: 1 if its own index
 uniform int u_range_first;  // the range's first vertex; invocation i welds vertex u_range_first + i
 uniform int u_slots;        // table size, at least twice the range: a free slot is always found
-uniform int u_blocks;
 
-int block_of(uint v) {  // the last block starting at or before v
-  int low = 0, high = u_blocks - 1;
-  while (low < high) {
-    int middle = (low + high + 1) / 2;
-    if (block_starts[middle] <= v) low = middle;
-    else high = middle - 1;
-  }
-  return low;
+void keep(uint v, uint index) {
+  indices[v] = index;
+  distinct[v - uint(u_range_first)] = index == v ? 1u : 0u;
 }
 
 void main() {
@@ -39,16 +35,16 @@ void main() {
   for (uint probe = 0u; probe < slots_in_table; ++probe, slot = slot + 1u == slots_in_table ? 0u : slot + 1u) {
     uint held = atomicCompSwap(slots[slot], 0u, v + 1u);
     if (held == 0u) {
-      indices[v] = v;
+      keep(v, v);
       return;
     }
     uint w = held - 1u;
     bool same = true;
     for (int k = 0; k < 9; ++k) same = same && stored[9u * w + uint(k)] == word[k];
     if (same && block_of(w) == block_of(v)) {
-      indices[v] = w;
+      keep(v, w);
       return;
     }
   }
-  indices[v] = v;  // not welded: drawn as captured
+  keep(v, v);  // not welded: drawn as captured
 }

@@ -17,8 +17,12 @@
 namespace gps {
 namespace {
 
-// Each test with the stored vertices welded (as on a GPU) and as captured (as on llvmpipe).
-class SurfaceCacheTest : public test::GlTest, public ::testing::WithParamInterface<bool> {};
+// Each test with the stored vertices welded at each capture (as on a GPU), by the first frame that
+// draws them unchanged (as on llvmpipe), and never.
+class SurfaceCacheTest : public test::GlTest, public ::testing::WithParamInterface<SurfaceCache::Weld> {
+protected:
+  bool welds() const { return GetParam() != SurfaceCache::Weld::off; }
+};
 
 constexpr int kSize = 160;
 
@@ -131,7 +135,8 @@ TEST_P(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
 
 // Welded, a quad patch at uniform level L is fetched as its (L + 1)² grid points: its triangles
 // share them; vertices of different patches differ in their grid coordinates and stay apart. An
-// edit's refresh welds its blocks again, to as many.
+// edit's refresh welds its blocks again, to as many. Welded when settled, the frames that capture
+// or refresh draw the triangles as captured, and the next one welded.
 TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
   RenderTarget target(kSize, kSize);
   const CovarianceMesh cube = make_sample("cube");
@@ -139,18 +144,25 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
   renderer.surface_cache().set_weld(GetParam());
   renderer.set_mesh(cube);
   const SurfaceCache& cache = renderer.surface_cache();
+  const bool settles = GetParam() == SurfaceCache::Weld::when_settled;
   for (const int level : {1, 8}) {
-    draw(renderer, target, frame_mesh(cube, 35.0f, 25.0f), uniform(float(level)), true);
+    const Camera camera = frame_mesh(cube, 35.0f, 25.0f);
+    draw(renderer, target, camera, uniform(float(level)), true);
     const long long patches = renderer.tables().plans.n_patches(), grid = (level + 1) * (level + 1);
     ASSERT_EQ(cache.triangles(), patches * 2 * level * level);
-    EXPECT_EQ(cache.distinct_vertices(), GetParam() ? patches * grid : 3 * cache.triangles()) << "level " << level;
+    EXPECT_EQ(cache.draws_welded(), welds() && !settles);
+    EXPECT_EQ(cache.distinct_vertices(), welds() && !settles ? patches * grid : 3 * cache.triangles()) << "level " << level;
+    draw(renderer, target, camera, uniform(float(level)), true);
+    EXPECT_EQ(cache.draws_welded(), welds());
+    EXPECT_EQ(cache.distinct_vertices(), welds() ? patches * grid : 3 * cache.triangles()) << "level " << level;
   }
   CovarianceMesh sphere = make_sample("sphere", 3000);
   renderer.set_mesh(sphere);
   const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
   draw(renderer, target, camera, uniform(4), true);
+  draw(renderer, target, camera, uniform(4), true);
   const long long distinct = cache.distinct_vertices();
-  if (GetParam()) {
+  if (welds()) {
     EXPECT_LT(distinct, cache.triangles());  // a quad patch: (L + 1)² of its 6 L² stored
   }
   const int v = int(sphere.n_vertices() / 2);
@@ -158,7 +170,11 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
   renderer.update_vertices(sphere, {v});
   draw(renderer, target, camera, uniform(4), true);
   EXPECT_EQ(cache.refreshes(), 1);
+  EXPECT_EQ(cache.draws_welded(), welds() && !settles);
+  const Frame settled = draw(renderer, target, camera, uniform(4), true);
+  EXPECT_EQ(cache.refreshes(), 1);
   EXPECT_EQ(cache.distinct_vertices(), distinct);
+  EXPECT_TRUE(same_surface(settled, draw(renderer, target, camera, uniform(4), false)));
 }
 
 TEST_P(SurfaceCacheTest, AnEditShowsInTheNextFrame) {
@@ -237,7 +253,7 @@ TEST_P(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
   SurfaceRenderer renderer;
   renderer.surface_cache().set_weld(GetParam());
   renderer.set_mesh(mesh);
-  renderer.surface_cache().set_limit_bytes(100 * renderer.surface_cache().triangle_bytes());  // 100 triangles
+  renderer.surface_cache().set_limit_bytes(100 * SurfaceCache::kTriangleBytes);  // 100 triangles
   const Camera camera = frame_mesh(mesh);
   const DrawOptions o = uniform(8);
   const Frame cached = draw(renderer, target, camera, o, true);
@@ -249,6 +265,15 @@ TEST_P(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
   draw(renderer, target, camera, uniform(1), true);
   EXPECT_TRUE(renderer.surface_cache().holds_triangles());
   EXPECT_EQ(renderer.surface_cache().triangles(), 2 * renderer.tables().plans.n_patches());
+  EXPECT_EQ(renderer.surface_cache().draws_welded(), welds() && GetParam() == SurfaceCache::Weld::at_capture);
+  // Level 2 fits as captured, but welded would take more than the limit: drawn as captured, still frames too.
+  draw(renderer, target, camera, uniform(2), true);
+  EXPECT_TRUE(renderer.surface_cache().holds_triangles());
+  ASSERT_GT(renderer.surface_cache().triangles() * SurfaceCache::kWeldedTriangleBytes, 100 * SurfaceCache::kTriangleBytes);
+  const Frame still = draw(renderer, target, camera, uniform(2), true);
+  EXPECT_FALSE(renderer.surface_cache().draws_welded());
+  EXPECT_EQ(renderer.surface_cache().distinct_vertices(), 3 * renderer.surface_cache().triangles());
+  EXPECT_TRUE(same_surface(still, draw(renderer, target, camera, uniform(2), false)));
 }
 
 TEST_P(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
@@ -366,8 +391,13 @@ TEST_P(SurfaceCacheTest, AnEditAfterASmallCameraMoveKeepsTheLevelsOfTheCapture) 
   EXPECT_TRUE(same_surface(draw(renderer, target, camera, o, true), draw(renderer, target, camera, o, false)));
 }
 
-INSTANTIATE_TEST_SUITE_P(StoredVertices, SurfaceCacheTest, ::testing::Values(true, false),
-                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Welded" : "AsCaptured"; });
+INSTANTIATE_TEST_SUITE_P(StoredVertices, SurfaceCacheTest,
+                         ::testing::Values(SurfaceCache::Weld::at_capture, SurfaceCache::Weld::when_settled, SurfaceCache::Weld::off),
+                         [](const ::testing::TestParamInfo<SurfaceCache::Weld>& info) {
+                           return info.param == SurfaceCache::Weld::at_capture     ? "WeldedAtCapture"
+                                  : info.param == SurfaceCache::Weld::when_settled ? "WeldedWhenSettled"
+                                                                                    : "AsCaptured";
+                         });
 
 }  // namespace
 }  // namespace gps
