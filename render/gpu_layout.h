@@ -34,6 +34,8 @@ GPS_LAYOUT_CONST int kBindingStoredIndices = 18;
 GPS_LAYOUT_CONST int kBindingBlockStarts = 19;
 GPS_LAYOUT_CONST int kBindingScanValues = 20;      // render/exclusive_scan.h
 GPS_LAYOUT_CONST int kBindingWeldedVertices = 21;  // the welded vertices, numbered block by block
+GPS_LAYOUT_CONST int kBindingWeldedParameters = 22;  // their patch and (u, v) evaluated (render/stored_vertex_evaluation.h)
+GPS_LAYOUT_CONST int kBindingWeldedDispatches = 23;  // per block: work groups over its welded vertices (indirect dispatch)
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;

@@ -27,7 +27,8 @@ ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
                                      {GL_TESS_EVALUATION_SHADER, evaluation}};
   const std::string name = triangles ? "triangle_patch" : "patch";
   if (feedback) return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal", "v_evaluated"});
-  const std::vector<const char*> stored = {"v_position", "v_stored_normal", "v_grid"};  // cache_vert.glsl's inputs
+  // cache_vert.glsl's inputs, then what the surface cache evaluates again after an edit (render/stored_vertex_evaluation.h).
+  const std::vector<const char*> stored = {"v_position", "v_stored_normal", "v_grid", "v_evaluated"};
   if (output == PatchOutput::capture) return ShaderProgram(name + "_capture", stages, stored);
   if (output == PatchOutput::wireframe) stages.push_back({GL_GEOMETRY_SHADER, {shaders::mesh_geom}});
   stages.push_back({GL_FRAGMENT_SHADER, {shaders::shade_frag}});

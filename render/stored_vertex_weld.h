@@ -29,22 +29,30 @@ public:
   struct Range {
     long long first, count;
   };
-  /// For the vertices v of each range of `vertices` (9 words each; ranges of whole blocks): writes
-  /// indices[v], the number of v's welded vertex, and copies the welded vertices to
-  /// `welded_vertices` (as large as `vertices`), each block's from the block's first vertex on.
+  /// For the vertices v of each range of `vertices` (12 words each; ranges of whole blocks): writes
+  /// indices[v], the number of v's welded vertex, and copies the welded vertices' first 9 words to
+  /// `welded_vertices` and their last 3 (the parameters evaluated) to `parameters`, each block's
+  /// from the block's first vertex on; the rest of a range's parameters are all ones bits (none).
   /// Welds only within the blocks that `block_starts` (each block's first vertex, ascending, the
   /// first 0) delimit; a barrier then makes the indices and vertices ready to draw.
-  void weld(unsigned vertices, unsigned indices, unsigned welded_vertices, const std::vector<Range>& ranges,
+  void weld(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters, const std::vector<Range>& ranges,
             const std::vector<long long>& block_starts);
+  /// Per block, three words: the work groups of kWorkGroupSize over its welded vertices, 1, 1
+  /// (written by a weld of the block): an indirect dispatch's (render/stored_vertex_evaluation.h).
+  unsigned dispatches() const { return dispatches_; }
+  /// Copies the welded vertices' position and stored normal back to every vertex v of `ranges` of
+  /// `vertices`, from welded vertex indices[v] (after the welded ones were evaluated again).
+  void copy_back(unsigned vertices, unsigned indices, unsigned welded_vertices, const std::vector<Range>& ranges);
   /// The hash table's and the prefix sum's bytes (kept between welds, shrunk when four times too large).
   size_t bytes() const { return size_t(slots_) * 4 + scan_.bytes(); }
   /// Table and prefix sum bytes per welded vertex at most (its slots are twice the vertices).
   static constexpr int kTableBytesPerVertex = 8 + 5;
 
 private:
-  ShaderProgram weld_, compact_;
+  ShaderProgram weld_, compact_, copy_back_;
   ExclusiveScan scan_;
-  unsigned table_ = 0, block_starts_ = 0;
+  unsigned table_ = 0, block_starts_ = 0, dispatches_ = 0;
+  long long dispatch_blocks_ = 0;  // blocks the dispatches buffer holds
   long long slots_ = 0;
 };
 

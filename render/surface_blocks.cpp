@@ -36,6 +36,11 @@ void SurfaceBlocks::mark_stale(const std::vector<int>& patches) {
   }
 }
 
+void SurfaceBlocks::mark_all_stale() {
+  std::fill(stale_.begin(), stale_.end(), 1);
+  stale_patches_ = n_patches_;
+}
+
 std::vector<int> SurfaceBlocks::stale() const {
   std::vector<int> out;
   for (int b = 0; b < size(); ++b)

@@ -31,6 +31,7 @@ public:
 
   /// Marks the blocks holding any of `patches` stale.
   void mark_stale(const std::vector<int>& patches);
+  void mark_all_stale();
   /// The stale blocks, in order.
   std::vector<int> stale() const;
   /// Patches in stale blocks.

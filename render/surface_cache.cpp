@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "render/gl_context.h"
+#include "render/gpu_layout.h"
 
 namespace gps {
 
@@ -19,9 +20,10 @@ SurfaceCache::SurfaceCache() : weld_mode_(software_renderer() ? Weld::when_settl
   glCreateBuffers(1, &spare_);
   glCreateBuffers(1, &indices_);
   glCreateBuffers(1, &welded_);
+  glCreateBuffers(1, &parameters_);
   glCreateVertexArrays(1, &vao_);
   glCreateVertexArrays(1, &welded_vao_);
-  glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kVertexBytes);
+  glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kCapturedVertexBytes);
   glVertexArrayVertexBuffer(welded_vao_, 0, welded_, 0, kVertexBytes);
   glVertexArrayElementBuffer(welded_vao_, indices_);
   for (const GLuint vao : {vao_, welded_vao_})
@@ -39,6 +41,7 @@ SurfaceCache::~SurfaceCache() {
   glDeleteBuffers(1, &spare_);
   glDeleteBuffers(1, &indices_);
   glDeleteBuffers(1, &welded_);
+  glDeleteBuffers(1, &parameters_);
   glDeleteVertexArrays(1, &vao_);
   glDeleteVertexArrays(1, &welded_vao_);
   if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
@@ -64,16 +67,27 @@ void SurfaceCache::update_cage(const CovarianceMesh& mesh, const std::vector<int
   }
 }
 
+// Tracked from the capture on, one compute pass after the other (refresh() decides what is worth it).
+bool SurfaceCache::follows(long long points) const {
+  return stored_ && !refused_ && tracked_points_ >= 0 && points == tracked_points_ + 1;
+}
+
 void SurfaceCache::points_changed(long long points, const std::vector<int>* patches) {
-  // Tracked from the capture on, one compute pass after the other, while at most half the patches
-  // are stale (a refresh costs its stale patches and copies; past half, little less than a capture).
-  const bool follows = stored_ && !refused_ && tracked_points_ >= 0 && points == tracked_points_ + 1;
-  if (!patches || !follows) {
+  if (!patches || !follows(points)) {
     tracked_points_ = -1;
     return;
   }
   blocks_.mark_stale(*patches);
-  tracked_points_ = 2 * blocks_.stale_patches() > blocks_.n_patches() ? -1 : points;
+  tracked_points_ = points;
+}
+
+void SurfaceCache::all_points_changed(long long points) {
+  if (!follows(points)) {
+    tracked_points_ = -1;
+    return;
+  }
+  blocks_.mark_all_stale();
+  tracked_points_ = points;
 }
 
 bool SurfaceCache::current(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
@@ -128,6 +142,7 @@ void SurfaceCache::set_weld(Weld weld) {
     weld_.reset();
     glNamedBufferData(indices_, 0, nullptr, GL_DYNAMIC_COPY);
     glNamedBufferData(welded_, 0, nullptr, GL_DYNAMIC_COPY);
+    glNamedBufferData(parameters_, 0, nullptr, GL_DYNAMIC_COPY);
     index_capacity_ = 0;
   }
 }
@@ -137,7 +152,7 @@ void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long trian
   // Grow to fit; shrink where the buffer is four times what is needed.
   if (triangles <= capacity && 4 * triangles >= capacity) return;
   capacity = triangles;
-  glNamedBufferData(buffer, GLsizeiptr(capacity * 3 * kVertexBytes), nullptr, GL_DYNAMIC_COPY);
+  glNamedBufferData(buffer, GLsizeiptr(capacity * 3 * kCapturedVertexBytes), nullptr, GL_DYNAMIC_COPY);
 }
 
 // One feedback session; each block's triangles are counted by its own query (queries of primitives
@@ -151,7 +166,7 @@ bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std
     queries_.resize(blocks.size());
     glCreateQueries(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, GLsizei(blocks.size() - had), queries_.data() + had);
   }
-  glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer, 0, GLsizeiptr(capacity * 3 * kVertexBytes));
+  glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer, 0, GLsizeiptr(capacity * 3 * kCapturedVertexBytes));
   if (!rasterize) glEnable(GL_RASTERIZER_DISCARD);
   glBeginTransformFeedback(GL_TRIANGLES);
   for (size_t i = 0; i < blocks.size(); ++i) {
@@ -210,8 +225,29 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
   return true;
 }
 
-bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches) {
+bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded) {
   const std::vector<int> stale = blocks_.stale();
+  if (evaluate_welded && draws_welded() && key.pixels <= 0.0f) {
+    // Uniform levels: the same tessellation, so the welded vertices are evaluated again where they
+    // are (render/stored_vertex_evaluation.h), and the captured ones copied from them.
+    std::vector<StoredVertexWeld::Range> ranges;
+    for (const int b : stale) ranges.push_back({3 * blocks_.first_triangle(b), 3 * blocks_.triangles(b)});
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedParameters, parameters_);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, weld_->dispatches());
+    for (size_t i = 0; i < stale.size(); ++i) evaluate_welded(ranges[i].first, ranges[i].count, 3 * 4 * stale[i]);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+    // Copied back in runs of consecutive blocks, one pass each.
+    std::vector<StoredVertexWeld::Range> runs;
+    for (const StoredVertexWeld::Range& r : ranges)
+      if (!runs.empty() && runs.back().first + runs.back().count == r.first) runs.back().count += r.count;
+      else runs.push_back(r);
+    weld_->copy_back(buffer_, indices_, welded_, runs);
+    return refreshed(key);
+  }
+  // Captured again: past half of the patches, little less than capturing them all.
+  if (2 * blocks_.stale_patches() > blocks_.n_patches()) return false;
   long long stale_triangles = 0;
   for (const int b : stale) stale_triangles += blocks_.triangles(b);
   // Uniform levels keep the counts; adaptive ones may change them, so room for more.
@@ -228,8 +264,8 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches) {
     long long from = 0;
     for (size_t i = 0; i < stale.size(); ++i) {
       if (counts[i] > 0)
-        glCopyNamedBufferSubData(scratch_, buffer_, GLintptr(from * 3 * kVertexBytes),
-                                 GLintptr(blocks_.first_triangle(stale[i]) * 3 * kVertexBytes), GLsizeiptr(counts[i] * 3 * kVertexBytes));
+        glCopyNamedBufferSubData(scratch_, buffer_, GLintptr(from * 3 * kCapturedVertexBytes),
+                                 GLintptr(blocks_.first_triangle(stale[i]) * 3 * kCapturedVertexBytes), GLsizeiptr(counts[i] * 3 * kCapturedVertexBytes));
       from += counts[i];
     }
     weld(stale);
@@ -237,6 +273,10 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches) {
     return false;
   }
   check_gl_errors("refreshing the surface cache");
+  return refreshed(key);
+}
+
+bool SurfaceCache::refreshed(const Key& key) {
   ++refreshes_;
   refreshed_patches_ = blocks_.stale_patches();
   blocks_.clear_stale();
@@ -255,8 +295,8 @@ bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<lo
   reserve(spare_, spare_capacity_, total + total / 8 + 64);
   const auto copy = [&](unsigned source, long long from, long long to, long long n) {
     if (n > 0)
-      glCopyNamedBufferSubData(source, spare_, GLintptr(from * 3 * kVertexBytes), GLintptr(to * 3 * kVertexBytes),
-                               GLsizeiptr(n * 3 * kVertexBytes));
+      glCopyNamedBufferSubData(source, spare_, GLintptr(from * 3 * kCapturedVertexBytes), GLintptr(to * 3 * kCapturedVertexBytes),
+                               GLsizeiptr(n * 3 * kCapturedVertexBytes));
   };
   long long to = 0, scratch_from = 0;
   int clean = 0;  // the first block not yet copied
@@ -272,7 +312,7 @@ bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<lo
   copy(buffer_, blocks_.first_triangle(clean), to, blocks_.total() - blocks_.first_triangle(clean));
   std::swap(buffer_, spare_);
   std::swap(capacity_, spare_capacity_);
-  glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kVertexBytes);
+  glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kCapturedVertexBytes);
   blocks_.replace_counts(blocks, counts);
   weld();
   return true;
@@ -315,6 +355,7 @@ void SurfaceCache::weld_now(const std::vector<int>& blocks) {
     index_capacity_ = std::max(total, 1ll);
     glNamedBufferData(indices_, GLsizeiptr(index_capacity_ * 3 * 4), nullptr, GL_DYNAMIC_COPY);
     glNamedBufferData(welded_, GLsizeiptr(index_capacity_ * 3 * kVertexBytes), nullptr, GL_DYNAMIC_COPY);
+    glNamedBufferData(parameters_, GLsizeiptr(index_capacity_ * 3 * kParameterBytes), nullptr, GL_DYNAMIC_COPY);
     all = true;
   }
   std::vector<long long> starts(size_t(blocks_.size()));
@@ -323,7 +364,7 @@ void SurfaceCache::weld_now(const std::vector<int>& blocks) {
   if (all) ranges.push_back({0, 3 * total});
   else
     for (const int b : blocks) ranges.push_back({starts[size_t(b)], 3 * blocks_.triangles(b)});
-  weld_->weld(buffer_, indices_, welded_, ranges, starts);
+  weld_->weld(buffer_, indices_, welded_, parameters_, ranges, starts);
   weld_all_pending_ = false;
   weld_pending_.clear();
 }
@@ -352,7 +393,7 @@ long long SurfaceCache::distinct_vertices() const {
 TriangleMesh SurfaceCache::stored_triangles() const {
   TriangleMesh mesh;
   if (!holds_triangles()) return mesh;
-  const size_t floats_per_vertex = kVertexBytes / sizeof(float);
+  const size_t floats_per_vertex = kCapturedVertexBytes / sizeof(float);
   std::vector<float> vertices(size_t(3 * blocks_.total()) * floats_per_vertex);
   glGetNamedBufferSubData(buffer_, 0, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data());
   check_gl_errors("reading the surface cache");

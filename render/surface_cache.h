@@ -19,10 +19,14 @@
 //
 // Edits: triangles are captured in blocks of consecutive patches (render/surface_blocks.h), each
 // counted by its own query. An edit reports the patches it changed (points_changed); the next frame
-// captures only their blocks again (refresh), under the camera of the capture, into a scratch
-// buffer, and copies them into place (or, where adaptive levels changed a block's count, assembles
-// the clean and the new blocks in a spare buffer, which then becomes the stored one). Past half of the patches, or after a compute pass
-// over everything (core's update_everything), the whole surface is captured again.
+// brings only their blocks up to date (refresh). At uniform levels with the vertices welded, a
+// compute pass evaluates their welded vertices again at the parameters they were captured at
+// (render/stored_vertex_evaluation.h): each point once, on all of llvmpipe's threads. Else it
+// captures those blocks again, under the camera of the capture, into a scratch buffer, and copies
+// them into place (or, where adaptive levels changed a block's count, assembles the clean and the
+// new blocks in a spare buffer, which then becomes the stored one); past half of the patches, or
+// after a compute pass over everything (core's update_everything), the whole surface is captured
+// again.
 #include <glm/glm.hpp>
 #include <functional>
 #include <memory>
@@ -45,8 +49,13 @@ public:
       return points == o.points && level == o.level && pixels == o.pixels && debug_mismatch == o.debug_mismatch;
     }
   };
-  /// One stored vertex: the tessellation evaluation outputs the fragment shader reads.
+  /// One drawn vertex: the tessellation evaluation outputs the fragment shader reads.
   static constexpr int kVertexBytes = 9 * 4;  // position, normal · 2^(node kind), grid (vec3 each)
+  /// One captured vertex: a drawn one, then the patch and (u, v) it was evaluated at (the
+  /// canonical patch on patch edges; shaders/limit_point_tese.glsl), for evaluating it again.
+  static constexpr int kCapturedVertexBytes = 12 * 4;
+  /// What a welded vertex keeps of those parameters.
+  static constexpr int kParameterBytes = 3 * 4;
   static constexpr long long kDefaultLimitBytes = 512ll << 20;
   /// When the stored vertices are welded: never, after each capture and refresh, or by the first
   /// frame that draws them unchanged (settle()).
@@ -63,8 +72,11 @@ public:
   /// Moved base vertices (for the hysteresis; points_changed says what the edit changed).
   void update_cage(const CovarianceMesh& mesh, const std::vector<int>& changed);
   /// A compute pass made plan points of generation `points`, changing the triangles of `patches`
-  /// (nullptr: of all patches).
+  /// (nullptr: of all patches, not followed as an edit: captured again).
   void points_changed(long long points, const std::vector<int>* patches);
+  /// An edit's compute pass over everything (most of the mesh moved) made plan points of
+  /// generation `points`: every block is stale, followed as an edit's.
+  void all_points_changed(long long points);
 
   /// Whether the last capture (or its refusal, past the memory limit) stands for these inputs.
   bool current(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
@@ -83,9 +95,16 @@ public:
   /// Whether refresh() brings the stored triangles to `key`: only the points differ, and every
   /// compute pass since the capture reported its patches; the camera is close (adaptive levels).
   bool refreshable(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
-  /// Captures the stale blocks again; the caller has set the capture camera below in the program's
-  /// uniforms. False where that did not fit the memory limit (capture everything then).
-  bool refresh(const Key& key, const DrawPatches& draw_patches);
+  /// Evaluates the welded vertices of a block again (render/stored_vertex_evaluation.h): those
+  /// from `first` on, fewer than `bound`, in the work groups that the bound indirect dispatch
+  /// buffer holds at `dispatch_offset`; with the welded vertex and parameter buffers bound.
+  using EvaluateWelded = std::function<void(long long first, long long bound, long long dispatch_offset)>;
+  /// Brings the stale blocks to `key`: at uniform levels with the vertices welded, by evaluating
+  /// the welded vertices again (`evaluate_welded`, where given); else by capturing them again, for
+  /// which the caller has set the capture camera below in the program's uniforms. False where
+  /// capturing them again is not worth it (over half of the patches) or did not fit the memory
+  /// limit (capture everything then).
+  bool refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded = {});
   /// The camera of the capture: a refresh evaluates adaptive levels as the capture did.
   const glm::mat4& captured_view_projection() const { return view_projection_; }
   glm::vec2 captured_viewport() const { return viewport_; }
@@ -112,8 +131,9 @@ public:
   /// What a stored triangle takes of the memory limit: its captured vertices. Welded, also their
   /// indices, the welded vertices and, while they are welded, the weld's table and prefix sum:
   /// triangles past the limit welded are drawn as captured.
-  static constexpr int kTriangleBytes = 3 * kVertexBytes;
-  static constexpr int kWeldedTriangleBytes = 3 * (2 * kVertexBytes + 4 + StoredVertexWeld::kTableBytesPerVertex);
+  static constexpr int kTriangleBytes = 3 * kCapturedVertexBytes;
+  static constexpr int kWeldedTriangleBytes =
+      3 * (kCapturedVertexBytes + kVertexBytes + kParameterBytes + 4 + StoredVertexWeld::kTableBytesPerVertex);
 
   void set_hysteresis(float factor) { hysteresis_ = factor; }
   void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
@@ -124,18 +144,22 @@ public:
   int refreshed_patches() const { return refreshed_patches_; }
   long long triangles() const { return blocks_.total(); }
   size_t buffer_bytes() const {
-    return size_t(capacity_ + scratch_capacity_ + spare_capacity_ + index_capacity_) * 3 * kVertexBytes +
-           size_t(index_capacity_) * 3 * 4 + (weld_ ? weld_->bytes() : 0);
+    return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kCapturedVertexBytes +
+           size_t(index_capacity_) * 3 * (kVertexBytes + kParameterBytes + 4) + (weld_ ? weld_->bytes() : 0);
   }
 
 private:
   bool camera_close(const glm::mat4& view_projection, glm::vec2 viewport, float pixels) const;
+  /// Whether plan points of generation `points` follow the stored triangles' by one edit.
+  bool follows(long long points) const;
   long long most_triangles() const;
   void reserve(unsigned buffer, long long& capacity, long long triangles) const;
   /// Captures `blocks` one after the other into `buffer` from its start; their counts (counted, or
   /// where `known`, those stored); false where the buffer was full (and some triangles may be missing).
   bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks, const DrawPatches& draw_patches,
                       std::vector<long long>& counts, bool rasterize = false, bool known = false);
+  /// Counts a refresh: the stale blocks are fresh, the stored triangles those of `key`.
+  bool refreshed(const Key& key);
   /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
   bool assemble(const std::vector<int>& blocks, const std::vector<long long>& counts);
   /// The stored vertices of `blocks` (all of them where empty) changed: welds them now or, when
@@ -144,8 +168,8 @@ private:
   /// Welds them into the index and welded vertex buffers.
   void weld_now(const std::vector<int>& blocks);
 
-  unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, indices_ = 0, welded_ = 0, vao_ = 0, welded_vao_ = 0;
-  long long index_capacity_ = 0;  // triangles the index and welded vertex buffers hold
+  unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, indices_ = 0, welded_ = 0, parameters_ = 0, vao_ = 0, welded_vao_ = 0;
+  long long index_capacity_ = 0;  // triangles the index, welded vertex and parameter buffers hold
   std::unique_ptr<StoredVertexWeld> weld_;  // made at the first weld
   Weld weld_mode_;
   bool weld_all_pending_ = true;   // when settled: every block to weld

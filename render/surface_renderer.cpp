@@ -55,7 +55,7 @@ void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vec
     buffers_.upload_gaussians(mesh);
     ellipsoids_.upload(mesh, nullptr);
     cage_.upload_positions(mesh);
-    run_compute(nullptr);
+    run_compute(nullptr, true);
     return;
   }
   buffers_.update_gaussians(mesh, changed);
@@ -64,7 +64,7 @@ void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vec
   run_compute(&changed);
 }
 
-void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
+void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
   const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   const int n_rows = tables().stencils.n_rows();
@@ -86,6 +86,10 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed) {
     buffers_.bind();
     compute_.run_all(n_base_, n_rows, group_limit_);
     corners_.run_all(plans, group_limit_);
+    if (edit) {
+      cache_.all_points_changed(points_generation_);
+      return;
+    }
   }
   cache_.points_changed(points_generation_, nullptr);
 }
@@ -215,7 +219,10 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
       set_frame_uniforms(capture, camera, o, aspect, width, height);
       capture.set("u_view_projection", cache_.captured_view_projection());
       capture.set("u_viewport", cache_.captured_viewport());
-      refreshed = cache_.refresh(key, draw_patches);
+      const auto evaluate_welded = [&](long long first, long long bound, long long dispatch_offset) {
+        stored_evaluation_.run(shape(), first, bound, dispatch_offset);
+      };
+      refreshed = cache_.refresh(key, draw_patches, evaluate_welded);
     }
     if (!refreshed) {
       const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;

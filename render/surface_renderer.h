@@ -26,6 +26,7 @@
 #include "render/render_target.h"
 #include "render/shader_program.h"
 #include "render/static_triangles.h"
+#include "render/stored_vertex_evaluation.h"
 #include "render/surface_cache.h"
 
 namespace gps {
@@ -89,7 +90,9 @@ public:
   }
 
 private:
-  void run_compute(const std::vector<int>* changed);
+  /// The compute passes for `changed` base vertices, or all (nullptr; an `edit` of most of them
+  /// where set, which the surface cache follows as such).
+  void run_compute(const std::vector<int>* changed, bool edit = false);
   /// The patches whose triangles an edit of `changed` vertices and the stencil `rows` reading them changes.
   std::vector<int> changed_patches(const std::vector<int>& changed, const std::vector<int>& rows);
   /// How a frame uses the surface cache: it draws the stored triangles, it was drawn while it was
@@ -110,6 +113,7 @@ private:
   EllipsoidOverlay ellipsoids_;
   ShaderProgram cached_, cached_grid_, cached_wire_;  // the surface cache's draw (plain, quads' wireframe, triangles' wireframe)
   SurfaceCache cache_;
+  StoredVertexEvaluation stored_evaluation_;  // the cache's edits at uniform levels
   long long points_generation_ = 0;  // bumped by every compute pass: the cache's key
   unsigned matcap_ = 0;
   int n_base_ = 0;

@@ -1,24 +1,39 @@
 // Numbers a welded range's distinct vertices block by block (render/stored_vertex_weld.h): a
-// vertex that is its own index is copied to its block's first vertex plus the number of distinct
+// vertex that is its own index is copied (its drawn words, and apart the patch and parameters it
+// was evaluated at) to its block's first vertex plus the number of distinct
 // vertices before it in the block (from the exclusive prefix sum of shaders/weld_comp.glsl's
 // flags), and every vertex's index becomes its representative's number. The welded vertices of a
 // block thus lie together, in the order they were captured, as a welded static buffer's do: a
 // vertex cache keyed by index (llvmpipe's) finds the shared ones.
 #include "shaders/compute_pass.glsl"
 #include "shaders/stored_blocks.glsl"
-layout(std430, binding = kBindingStoredVertices) readonly buffer StoredVertices { uint stored[]; };  // 9 words a vertex
+layout(std430, binding = kBindingStoredVertices) readonly buffer StoredVertices { uint stored[]; };  // 12 words a vertex
 layout(std430, binding = kBindingStoredIndices) buffer StoredIndices { uint indices[]; };
 layout(std430, binding = kBindingScanValues) readonly buffer DistinctBefore { uint distinct_before[]; };  // per range vertex
-layout(std430, binding = kBindingWeldedVertices) writeonly buffer WeldedVertices { uint welded[]; };
+layout(std430, binding = kBindingWeldedVertices) writeonly buffer WeldedVertices { uint welded[]; };       // 9 words a vertex
+layout(std430, binding = kBindingWeldedParameters) writeonly buffer WeldedParameters { uint parameters[]; };  // 3 words a vertex
+layout(std430, binding = kBindingWeldedDispatches) writeonly buffer WeldedDispatches { uint dispatches[]; };  // 3 words a block
 uniform int u_range_first;  // the range's first vertex (a block's); invocation i numbers vertex u_range_first + i
 
 void main() {
   int i = compute_invocation();
   if (i < 0) return;
   uint first = uint(u_range_first), v = first + uint(i), representative = indices[v];
-  uint start = block_starts[block_of(v)];
+  int block = block_of(v);
+  uint start = block_starts[block];
   uint number = start + distinct_before[representative - first] - distinct_before[start - first];
   indices[v] = number;
-  if (representative == v)
-    for (uint k = 0u; k < 9u; ++k) welded[9u * number + k] = stored[9u * v + k];
+  if (representative == v) {
+    for (uint k = 0u; k < 9u; ++k) welded[9u * number + k] = stored[12u * v + k];
+    for (uint k = 0u; k < 3u; ++k) parameters[3u * number + k] = stored[12u * v + 9u + k];
+  }
+  // The block's last vertex: the work groups that evaluate its welded vertices again
+  // (render/stored_vertex_evaluation.h, an indirect dispatch).
+  uint range_end = first + uint(u_count), end = block + 1 < u_blocks ? min(block_starts[block + 1], range_end) : range_end;
+  if (v + 1u == end) {
+    uint welded_vertices = distinct_before[i] + (representative == v ? 1u : 0u) - distinct_before[start - first];
+    dispatches[3 * block] = (welded_vertices + uint(kWorkGroupSize) - 1u) / uint(kWorkGroupSize);
+    dispatches[3 * block + 1] = 1u;
+    dispatches[3 * block + 2] = 1u;
+  }
 }

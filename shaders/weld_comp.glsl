@@ -1,5 +1,5 @@
 // Welds a range of the surface cache's stored vertices (render/stored_vertex_weld.h): each vertex
-// looks itself up in an open-addressing hash table by its 36 bytes (position, normal · 2^kind, grid)
+// looks itself up in an open-addressing hash table by its drawn 36 bytes (position, normal · 2^kind, grid)
 // and takes as its index the vertex of the same block that is there first with the same bytes,
 // else inserts itself. The draw then fetches and shades each such vertex once, as a welded static
 // buffer's are. A block's vertices weld among themselves only, so that a block can be captured and
@@ -7,7 +7,7 @@
 // the prefix sum that numbers the distinct vertices (shaders/compact_comp.glsl).
 #include "shaders/compute_pass.glsl"
 #include "shaders/stored_blocks.glsl"
-layout(std430, binding = kBindingStoredVertices) readonly buffer StoredVertices { uint stored[]; };  // 9 words a vertex
+layout(std430, binding = kBindingStoredVertices) readonly buffer StoredVertices { uint stored[]; };  // 12 words a vertex, 9 drawn
 layout(std430, binding = kBindingWeldTable) buffer WeldTable { uint slots[]; };                    // 0 or vertex + 1
 layout(std430, binding = kBindingStoredIndices) writeonly buffer StoredIndices { uint indices[]; };
 layout(std430, binding = kBindingScanValues) writeonly buffer Distinct { uint distinct[]; };  // per range vertex: 1 if its own index
@@ -26,7 +26,7 @@ void main() {
   uint word[9];
   uint hash = 2166136261u;  // FNV-1a over the nine words
   for (int k = 0; k < 9; ++k) {
-    word[k] = stored[9u * v + uint(k)];
+    word[k] = stored[12u * v + uint(k)];
     hash = (hash ^ word[k]) * 16777619u;
   }
   // At most one probe per slot: the table has twice the range's slots, so a free one comes long before;
@@ -40,7 +40,7 @@ void main() {
     }
     uint w = held - 1u;
     bool same = true;
-    for (int k = 0; k < 9; ++k) same = same && stored[9u * w + uint(k)] == word[k];
+    for (int k = 0; k < 9; ++k) same = same && stored[12u * w + uint(k)] == word[k];
     if (same && block_of(w) == block_of(v)) {
       keep(v, w);
       return;

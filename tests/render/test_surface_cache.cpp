@@ -135,8 +135,8 @@ TEST_P(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
 
 // Welded, a quad patch at uniform level L is fetched as its (L + 1)² grid points: its triangles
 // share them; vertices of different patches differ in their grid coordinates and stay apart. An
-// edit's refresh welds its blocks again, to as many. Welded when settled, the frames that capture
-// or refresh draw the triangles as captured, and the next one welded.
+// edit's refresh (uniform levels: its welded vertices evaluated again) keeps as many. Welded when
+// settled, the frame that captures draws the triangles as captured, and the next one welded.
 TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
   RenderTarget target(kSize, kSize);
   const CovarianceMesh cube = make_sample("cube");
@@ -170,11 +170,48 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
   renderer.update_vertices(sphere, {v});
   draw(renderer, target, camera, uniform(4), true);
   EXPECT_EQ(cache.refreshes(), 1);
-  EXPECT_EQ(cache.draws_welded(), welds() && !settles);
+  EXPECT_EQ(cache.draws_welded(), welds());
   const Frame settled = draw(renderer, target, camera, uniform(4), true);
   EXPECT_EQ(cache.refreshes(), 1);
   EXPECT_EQ(cache.distinct_vertices(), distinct);
   EXPECT_TRUE(same_surface(settled, draw(renderer, target, camera, uniform(4), false)));
+}
+
+// An edit at uniform levels evaluates the welded vertices again (render/stored_vertex_evaluation.h)
+// where the tessellation stage evaluated them at the capture: the stored triangles are what a
+// capture of the edited points stores, bit for bit (patch edges and corners included, which both
+// sides must keep alike), for quad patches with half-size ones (the pawn) and Loop's triangles.
+TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
+  if (!welds()) GTEST_SKIP() << "edits are captured again without a weld";
+  RenderTarget target(kSize, kSize);
+  for (const char* name : {"pawn", "icosphere", "cube"}) {
+    CovarianceMesh mesh = make_sample(name);
+    SurfaceRenderer renderer;
+    renderer.surface_cache().set_weld(GetParam());
+    renderer.set_mesh(mesh);
+    const SurfaceCache& cache = renderer.surface_cache();
+    const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
+    draw(renderer, target, camera, uniform(5), true);
+    draw(renderer, target, camera, uniform(5), true);  // settled
+    const int n = int(mesh.n_vertices());
+    for (const int v : {n / 2, n / 3}) move_vertex(mesh, v, 0.2);
+    renderer.update_vertices(mesh, {n / 2, n / 3});
+    draw(renderer, target, camera, uniform(5), true);
+    ASSERT_EQ(cache.captures(), 1) << name;
+    ASSERT_EQ(cache.refreshes(), 1) << name;
+    const TriangleMesh evaluated = cache.stored_triangles();
+    draw(renderer, target, camera, uniform(4), true);
+    draw(renderer, target, camera, uniform(5), true);  // the same points captured
+    ASSERT_EQ(cache.captures(), 3) << name;
+    const TriangleMesh captured = cache.stored_triangles();
+    ASSERT_EQ(evaluated.triangles.size(), captured.triangles.size()) << name;
+    ASSERT_EQ(evaluated.positions.size(), captured.positions.size()) << name;
+    size_t differing = 0;
+    for (size_t i = 0; i < captured.positions.size(); ++i)
+      differing += evaluated.positions[i] != captured.positions[i] || evaluated.normals[i] != captured.normals[i];
+    EXPECT_EQ(differing, 0u) << name << ": of " << captured.positions.size() << " vertices";
+    EXPECT_TRUE(evaluated.triangles == captured.triangles) << name;
+  }
 }
 
 TEST_P(SurfaceCacheTest, AnEditShowsInTheNextFrame) {
@@ -287,6 +324,7 @@ TEST_P(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
       renderer.set_mesh(mesh);
       const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
       draw(renderer, target, camera, o, true);
+      draw(renderer, target, camera, o, true);  // a still frame: welded when settled too
       const int n = int(mesh.n_vertices());
       const long long triangles = renderer.surface_cache().triangles();
       for (const std::vector<int>& edited : {std::vector<int>{n / 2}, std::vector<int>{n / 3, n / 3 + 1, 2 * n / 3}}) {
@@ -295,8 +333,9 @@ TEST_P(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
         const Frame cached = draw(renderer, target, camera, o, true);
         EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false))) << what << ", " << edited.size() << " vertices";
       }
-      // The cube's every patch reads every vertex: captured whole. The others: only the edits' blocks.
-      const bool partial = std::string(name) != "cube";
+      // The cube's every patch reads every vertex: captured whole, unless its welded vertices are
+      // evaluated again (uniform levels). The others: only the edits' blocks.
+      const bool partial = std::string(name) != "cube" || (welds() && o.pixels <= 0);
       EXPECT_EQ(renderer.surface_cache().captures(), partial ? 1 : 3) << what;
       EXPECT_EQ(renderer.surface_cache().refreshes(), partial ? 2 : 0) << what;
       // Uniform levels keep every block's count; adaptive ones here change some (a new buffer is assembled).

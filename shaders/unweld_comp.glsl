@@ -1,0 +1,15 @@
+// Copies the welded vertices' position and stored normal back to the captured vertices they stand
+// for (render/stored_vertex_weld.h), after they were evaluated again (an edit): the captured
+// buffer stays what a capture would hold, for the frames and refreshes that read it.
+#include "shaders/compute_pass.glsl"
+layout(std430, binding = kBindingStoredVertices) buffer StoredVertices { uint stored[]; };  // 12 words a vertex
+layout(std430, binding = kBindingStoredIndices) readonly buffer StoredIndices { uint indices[]; };
+layout(std430, binding = kBindingWeldedVertices) readonly buffer WeldedVertices { uint welded[]; };  // 9 words a vertex
+uniform int u_range_first;  // invocation i copies to captured vertex u_range_first + i
+
+void main() {
+  int i = compute_invocation();
+  if (i < 0) return;
+  uint v = uint(u_range_first + i), w = indices[v];
+  for (uint k = 0u; k < 6u; ++k) stored[12u * v + k] = welded[9u * w + k];
+}
