@@ -11,12 +11,17 @@ foreach(source ${SOURCES})
     # A shader's #include "x.h" or "x.glsl" (GLSL has none) takes that file's text in its place: a
     # shared C++ header is read as GLSL (GPS_GLSL is defined by core/patch_basis.h, which comes
     # before such a shader); a .glsl file is a piece two shaders share (not itself embedded).
+    # A .glsl piece may include pieces itself: replaced until none is left (a C++ header's own
+    # includes stay, in its C++ part).
     string(REGEX MATCHALL "#include \"[^\"]+\\.(h|glsl)\"" includes "${body}")
-    foreach(line ${includes})
-      string(REGEX REPLACE "#include \"([^\"]+)\"" "\\1" header "${line}")
-      file(READ ${ROOT}/${header} header_body)
-      string(REPLACE "${line}" "${header_body}" body "${body}")
-    endforeach()
+    while(includes)
+      foreach(line ${includes})
+        string(REGEX REPLACE "#include \"([^\"]+)\"" "\\1" header "${line}")
+        file(READ ${ROOT}/${header} header_body)
+        string(REPLACE "${line}" "${header_body}" body "${body}")
+      endforeach()
+      string(REGEX MATCHALL "#include \"[^\"]+\\.glsl\"" includes "${body}")
+    endwhile()
   endif()
   string(APPEND text "inline constexpr const char* ${name} = R\"glsl(${body})glsl\";\n")
 endforeach()

@@ -36,6 +36,9 @@ GPS_LAYOUT_CONST int kBindingScanValues = 20;      // render/exclusive_scan.h
 GPS_LAYOUT_CONST int kBindingWeldedVertices = 21;  // the welded vertices, numbered block by block
 GPS_LAYOUT_CONST int kBindingWeldedParameters = 22;  // their patch and (u, v) evaluated (render/stored_vertex_evaluation.h)
 GPS_LAYOUT_CONST int kBindingWeldedDispatches = 23;  // per block: work groups over its welded vertices (indirect dispatch)
+GPS_LAYOUT_CONST int kBindingEvaluationBlocks = 24;  // the blocks an evaluation of welded vertices runs over
+GPS_LAYOUT_CONST int kBindingEvaluationGroups = 25;  // its dispatch and each block's first work group
+GPS_LAYOUT_CONST int kBindingCopyRuns = 26;          // the runs of captured vertices a copy back writes
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;

@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include "render/gl_context.h"
+#include "render/gpu_layout.h"
 #include "shaders/embedded_shaders.h"
 
 namespace gps {
@@ -14,18 +15,38 @@ StoredVertexEvaluation::StoredVertexEvaluation()
       triangles_("stored_vertex_evaluation_triangles",
                  {{GL_COMPUTE_SHADER,
                    {"#define GPS_TRIANGLE_PATCHES\n", shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::loop_eval,
-                    shaders::stored_vertex_evaluation_comp}}}) {}
+                    shaders::stored_vertex_evaluation_comp}}}),
+      groups_program_("evaluation_groups", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {
+  glCreateBuffers(1, &blocks_);
+  glCreateBuffers(1, &groups_);
+}
 
-void StoredVertexEvaluation::run(PatchShape shape, long long first, long long bound, long long dispatch_offset) const {
-  if (bound <= 0) return;
+StoredVertexEvaluation::~StoredVertexEvaluation() {
+  glDeleteBuffers(1, &blocks_);
+  glDeleteBuffers(1, &groups_);
+}
+
+void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches) {
+  if (blocks.empty()) return;
+  std::vector<GLint> listed;
+  listed.reserve(3 * blocks.size());
+  for (const Block& b : blocks) listed.insert(listed.end(), {GLint(b.block), GLint(b.first), GLint(b.bound)});
+  glNamedBufferData(blocks_, GLsizeiptr(listed.size() * sizeof(GLint)), listed.data(), GL_STREAM_DRAW);
+  glNamedBufferData(groups_, GLsizeiptr((3 + blocks.size()) * sizeof(GLuint)), nullptr, GL_STREAM_COPY);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedDispatches, dispatches);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingEvaluationBlocks, blocks_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingEvaluationGroups, groups_);
+  groups_program_.use();
+  groups_program_.set("u_blocks", int(blocks.size()));
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   const ShaderProgram& program = shape == PatchShape::triangle ? triangles_ : quads_;
   program.use();
-  program.set("u_range_first", int(first));
-  program.set("u_count", int(bound));
-  program.set("u_first", 0);
-  program.set("u_use_list", 0);
-  glDispatchComputeIndirect(GLintptr(dispatch_offset));
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  program.set("u_blocks", int(blocks.size()));
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, groups_);
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
   check_gl_errors("evaluating the stored vertices");
 }
 

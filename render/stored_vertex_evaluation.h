@@ -4,6 +4,8 @@
 // keeps the patch and (u, v) its tessellation vertex was evaluated at, which an edit at the same
 // levels does not change, and is evaluated there once, where the tessellation stage evaluates a
 // point once per patch around it, on llvmpipe in one thread. The plan buffers are bound (render/plan_buffers.h).
+#include <vector>
+
 #include "core/plan_table.h"
 #include "render/shader_program.h"
 
@@ -11,16 +13,24 @@ namespace gps {
 
 class StoredVertexEvaluation {
 public:
+  /// A block of the surface cache: its welded vertices lie from `first` on, fewer than `bound`.
+  struct Block {
+    int block;
+    long long first, bound;
+  };
   /// Needs a current GL context.
   StoredVertexEvaluation();
-  /// Evaluates the welded vertices from `first` on, fewer than `bound`, of the buffers bound at
-  /// kBindingWeldedVertices and kBindingWeldedParameters, for patches of `shape`, in the work
-  /// groups that the bound GL_DISPATCH_INDIRECT_BUFFER holds at `dispatch_offset` (a block's,
-  /// render/stored_vertex_weld.h); a storage barrier follows.
-  void run(PatchShape shape, long long first, long long bound, long long dispatch_offset) const;
+  ~StoredVertexEvaluation();
+  StoredVertexEvaluation(const StoredVertexEvaluation&) = delete;
+  StoredVertexEvaluation& operator=(const StoredVertexEvaluation&) = delete;
+  /// Evaluates the welded vertices of `blocks` (of the buffers bound at kBindingWeldedVertices and
+  /// kBindingWeldedParameters), for patches of `shape`, in one indirect dispatch of the work groups
+  /// that `dispatches` holds per block (render/stored_vertex_weld.h); a storage barrier follows.
+  void run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches);
 
 private:
-  ShaderProgram quads_, triangles_;
+  ShaderProgram quads_, triangles_, groups_program_;
+  unsigned blocks_ = 0, groups_ = 0;
 };
 
 }  // namespace gps

@@ -18,12 +18,14 @@ StoredVertexWeld::StoredVertexWeld()
   glCreateBuffers(1, &table_);
   glCreateBuffers(1, &block_starts_);
   glCreateBuffers(1, &dispatches_);
+  glCreateBuffers(1, &runs_);
 }
 
 StoredVertexWeld::~StoredVertexWeld() {
   glDeleteBuffers(1, &table_);
   glDeleteBuffers(1, &block_starts_);
   glDeleteBuffers(1, &dispatches_);
+  glDeleteBuffers(1, &runs_);
 }
 
 void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters,
@@ -83,12 +85,23 @@ void StoredVertexWeld::copy_back(unsigned vertices, unsigned indices, unsigned w
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingStoredVertices, vertices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingStoredIndices, indices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_vertices);
+  std::vector<GLuint> runs;
+  long long total = 0;
   for (const Range& r : ranges) {
     if (r.count <= 0) continue;
-    copy_back_.use();
-    copy_back_.set("u_range_first", int(r.first));
-    run_compute_pass(copy_back_, int(r.count), false, 0);
+    if (!runs.empty() && runs[runs.size() - 2] + (total - runs.back()) == GLuint(r.first)) {  // goes on from the last run
+      total += r.count;
+      continue;
+    }
+    runs.insert(runs.end(), {GLuint(r.first), GLuint(total)});
+    total += r.count;
   }
+  if (total == 0) return;
+  glNamedBufferData(runs_, GLsizeiptr(runs.size() * sizeof(GLuint)), runs.data(), GL_STREAM_DRAW);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingCopyRuns, runs_);
+  copy_back_.use();
+  copy_back_.set("u_runs", int(runs.size() / 2));
+  run_compute_pass(copy_back_, int(total), false, 0);
   glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TRANSFORM_FEEDBACK_BARRIER_BIT);
   check_gl_errors("copying welded vertices back");
 }

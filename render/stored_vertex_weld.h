@@ -41,7 +41,7 @@ public:
   /// (written by a weld of the block): an indirect dispatch's (render/stored_vertex_evaluation.h).
   unsigned dispatches() const { return dispatches_; }
   /// Copies the welded vertices' position and stored normal back to every vertex v of `ranges` of
-  /// `vertices`, from welded vertex indices[v] (after the welded ones were evaluated again).
+  /// `vertices`, from welded vertex indices[v] (after the welded ones were evaluated again), in one pass.
   void copy_back(unsigned vertices, unsigned indices, unsigned welded_vertices, const std::vector<Range>& ranges);
   /// The hash table's and the prefix sum's bytes (kept between welds, shrunk when four times too large).
   size_t bytes() const { return size_t(slots_) * 4 + scan_.bytes(); }
@@ -51,7 +51,7 @@ public:
 private:
   ShaderProgram weld_, compact_, copy_back_;
   ExclusiveScan scan_;
-  unsigned table_ = 0, block_starts_ = 0, dispatches_ = 0;
+  unsigned table_ = 0, block_starts_ = 0, dispatches_ = 0, runs_ = 0;
   long long dispatch_blocks_ = 0;  // blocks the dispatches buffer holds
   long long slots_ = 0;
 };

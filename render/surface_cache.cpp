@@ -227,23 +227,17 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
 
 bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded) {
   const std::vector<int> stale = blocks_.stale();
-  if (evaluate_welded && draws_welded() && key.pixels <= 0.0f) {
+  if (evaluate_welded && draws_welded() && key.pixels <= 0.0f && key.level >= kEvaluatedFromLevel) {
     // Uniform levels: the same tessellation, so the welded vertices are evaluated again where they
     // are (render/stored_vertex_evaluation.h), and the captured ones copied from them.
     std::vector<StoredVertexWeld::Range> ranges;
     for (const int b : stale) ranges.push_back({3 * blocks_.first_triangle(b), 3 * blocks_.triangles(b)});
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedParameters, parameters_);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, weld_->dispatches());
-    for (size_t i = 0; i < stale.size(); ++i) evaluate_welded(ranges[i].first, ranges[i].count, 3 * 4 * stale[i]);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
-    // Copied back in runs of consecutive blocks, one pass each.
-    std::vector<StoredVertexWeld::Range> runs;
-    for (const StoredVertexWeld::Range& r : ranges)
-      if (!runs.empty() && runs.back().first + runs.back().count == r.first) runs.back().count += r.count;
-      else runs.push_back(r);
-    weld_->copy_back(buffer_, indices_, welded_, runs);
+    std::vector<StoredVertexEvaluation::Block> blocks;
+    for (size_t i = 0; i < stale.size(); ++i) blocks.push_back({stale[i], ranges[i].first, ranges[i].count});
+    evaluate_welded(blocks, weld_->dispatches());
+    weld_->copy_back(buffer_, indices_, welded_, ranges);
     return refreshed(key);
   }
   // Captured again: past half of the patches, little less than capturing them all.

@@ -219,8 +219,8 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
       set_frame_uniforms(capture, camera, o, aspect, width, height);
       capture.set("u_view_projection", cache_.captured_view_projection());
       capture.set("u_viewport", cache_.captured_viewport());
-      const auto evaluate_welded = [&](long long first, long long bound, long long dispatch_offset) {
-        stored_evaluation_.run(shape(), first, bound, dispatch_offset);
+      const auto evaluate_welded = [&](const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches) {
+        stored_evaluation_.run(shape(), blocks, dispatches);
       };
       refreshed = cache_.refresh(key, draw_patches, evaluate_welded);
     }

@@ -6,8 +6,7 @@
 // defines kCorners, boundary_point(), edge_point_uv(), tess_uv() (the tessellation coordinate as
 // patch parameters), evaluate_limit() and grid_coordinates().
 uniform mat4 u_view_projection;
-// Every patch corner's limit point (xyz, node kind in w) and normal, from its owner (corner_limit_comp.glsl).
-layout(std430, binding = kBindingCornerLimits) readonly buffer CornerLimits { vec4 corner_limits[]; };
+#include "shaders/limit_point.glsl"
 
 out vec3 v_position;
 out vec3 v_normal;
@@ -20,7 +19,7 @@ flat out int v_kind;  // plan node kind (gpu_layout.h)
 out vec3 v_stored_normal;
 
 void main() {
-  vec3 mu, mu_u, mu_v;
+  vec3 mu;
   vec2 uv = tess_uv();
   int patch_id = tc_patch;
   vec2 eval_uv = uv;
@@ -33,16 +32,7 @@ void main() {
     eval_uv = edge_point_uv(c);
     if (c.i == 0) corner = c.edge;  // a corner: step 0 of its owner's edge that starts there
   }
-  if (corner >= 0) {
-    int slot = kCorners * patch_id + corner;
-    vec4 limit = corner_limits[2 * slot];
-    mu = limit.xyz;
-    v_kind = int(limit.w);
-    v_normal = corner_limits[2 * slot + 1].xyz;
-  } else {
-    evaluate_limit(patch_id, eval_uv, mu, mu_u, mu_v, v_kind);
-    v_normal = normalize(cross(mu_u, mu_v));
-  }
+  limit_point(patch_id, eval_uv, corner, mu, v_normal, v_kind);
   v_position = mu;
   v_stored_normal = ldexp(v_normal, ivec3(v_kind));
   v_patch_uv = vec3(float(tc_patch), uv);

@@ -3,47 +3,51 @@
 // evaluated (the canonical patch on a patch edge, so that both sides stay bit for bit alike), a
 // patch corner from its owner's limit point; position and normal · 2^kind, the grid kept.
 // Preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
-#include "shaders/compute_pass.glsl"
-layout(std430, binding = kBindingCornerLimits) readonly buffer CornerLimits { vec4 corner_limits[]; };
+// One indirect dispatch for all listed blocks: a work group finds its block by its first group
+// (shaders/evaluation_groups_comp.glsl).
+layout(local_size_x = kWorkGroupSize) in;
 layout(std430, binding = kBindingWeldedVertices) buffer WeldedVertices { float welded[]; };                  // 9 floats a vertex
 layout(std430, binding = kBindingWeldedParameters) readonly buffer WeldedParameters { float parameters[]; };  // patch, u, v
-uniform int u_range_first;  // invocation i evaluates welded vertex u_range_first + i
+layout(std430, binding = kBindingEvaluationBlocks) readonly buffer EvaluationBlocks { int blocks[]; };  // block, first vertex, bound
+layout(std430, binding = kBindingEvaluationGroups) readonly buffer EvaluationGroups { uint groups[]; };  // dispatch, then first groups
+uniform int u_blocks;
 
+// The corner whose (u, v) the tessellation stages' edge_point_uv gives, or −1: a boundary point
+// evaluated at a patch's corner is that corner, any other is not.
 #ifdef GPS_TRIANGLE_PATCHES
 const int kCorners = 3;
-// The corner whose (u, v) edge_point_uv gives, or −1.
 int corner_at(vec2 uv) { return uv == vec2(0.0) ? 0 : uv == vec2(1.0, 0.0) ? 1 : uv == vec2(0.0, 1.0) ? 2 : -1; }
+void evaluate_limit(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int kind) {
+  evaluate_triangle_plan(patch_id, uv.x, uv.y, mu, mu_u, mu_v, kind);
+}
 #else
 const int kCorners = 4;
 int corner_at(vec2 uv) {
   return uv == vec2(0.0) ? 0 : uv == vec2(1.0, 0.0) ? 1 : uv == vec2(1.0) ? 2 : uv == vec2(0.0, 1.0) ? 3 : -1;
 }
+void evaluate_limit(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int kind) {
+  evaluate_plan(patch_id, uv, mu, mu_u, mu_v, kind);
+}
 #endif
+#include "shaders/limit_point.glsl"
 
 void main() {
-  int i = compute_invocation();
-  if (i < 0) return;
-  uint v = uint(u_range_first + i);
+  uint group = gl_WorkGroupID.x;
+  int low = 0, high = u_blocks - 1;  // the last listed block whose first group is at or before this one
+  while (low < high) {
+    int middle = (low + high + 1) / 2;
+    if (groups[3 + middle] <= group) low = middle;
+    else high = middle - 1;
+  }
+  uint i = (group - groups[3 + low]) * uint(kWorkGroupSize) + gl_LocalInvocationID.x;
+  if (i >= uint(blocks[3 * low + 2])) return;
+  uint v = uint(blocks[3 * low + 1]) + i;
   if (floatBitsToUint(parameters[3u * v]) == ~0u) return;  // past the block's welded vertices
   int patch_id = int(parameters[3u * v]);
   vec2 uv = vec2(parameters[3u * v + 1u], parameters[3u * v + 2u]);
-  vec3 mu, mu_u, mu_v, normal;
+  vec3 mu, normal;
   int kind;
-  int corner = corner_at(uv);
-  if (corner >= 0) {
-    int slot = kCorners * patch_id + corner;
-    vec4 limit = corner_limits[2 * slot];
-    mu = limit.xyz;
-    kind = int(limit.w);
-    normal = corner_limits[2 * slot + 1].xyz;
-  } else {
-#ifdef GPS_TRIANGLE_PATCHES
-    evaluate_triangle_plan(patch_id, uv.x, uv.y, mu, mu_u, mu_v, kind);
-#else
-    evaluate_plan(patch_id, uv, mu, mu_u, mu_v, kind);
-#endif
-    normal = normalize(cross(mu_u, mu_v));
-  }
+  limit_point(patch_id, uv, corner_at(uv), mu, normal, kind);
   vec3 stored_normal = ldexp(normal, ivec3(kind));
   for (uint k = 0u; k < 3u; ++k) {
     welded[9u * v + k] = mu[k];

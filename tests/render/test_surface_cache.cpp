@@ -156,28 +156,32 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
     EXPECT_EQ(cache.draws_welded(), welds());
     EXPECT_EQ(cache.distinct_vertices(), welds() ? patches * grid : 3 * cache.triangles()) << "level " << level;
   }
-  CovarianceMesh sphere = make_sample("sphere", 3000);
-  renderer.set_mesh(sphere);
-  const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
-  draw(renderer, target, camera, uniform(4), true);
-  draw(renderer, target, camera, uniform(4), true);
-  const long long distinct = cache.distinct_vertices();
-  if (welds()) {
-    EXPECT_LT(distinct, cache.triangles());  // a quad patch: (L + 1)² of its 6 L² stored
+  // Level 4: the edit's blocks captured again (and welded again); level 8: evaluated again.
+  for (const float level : {4.0f, 8.0f}) {
+    CovarianceMesh sphere = make_sample("sphere", 3000);
+    renderer.set_mesh(sphere);
+    const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
+    draw(renderer, target, camera, uniform(level), true);
+    draw(renderer, target, camera, uniform(level), true);
+    const long long distinct = cache.distinct_vertices();
+    if (welds()) {
+      EXPECT_LT(distinct, cache.triangles());  // a quad patch: (L + 1)² of its 6 L² stored
+    }
+    const int v = int(sphere.n_vertices() / 2);
+    move_vertex(sphere, v, 0.05);
+    const int refreshes = cache.refreshes();
+    renderer.update_vertices(sphere, {v});
+    draw(renderer, target, camera, uniform(level), true);
+    EXPECT_EQ(cache.refreshes(), refreshes + 1);
+    EXPECT_EQ(cache.draws_welded(), welds() && (!settles || level >= SurfaceCache::kEvaluatedFromLevel)) << level;
+    const Frame settled = draw(renderer, target, camera, uniform(level), true);
+    EXPECT_EQ(cache.refreshes(), refreshes + 1);
+    EXPECT_EQ(cache.distinct_vertices(), distinct) << level;
+    EXPECT_TRUE(same_surface(settled, draw(renderer, target, camera, uniform(level), false))) << level;
   }
-  const int v = int(sphere.n_vertices() / 2);
-  move_vertex(sphere, v, 0.05);
-  renderer.update_vertices(sphere, {v});
-  draw(renderer, target, camera, uniform(4), true);
-  EXPECT_EQ(cache.refreshes(), 1);
-  EXPECT_EQ(cache.draws_welded(), welds());
-  const Frame settled = draw(renderer, target, camera, uniform(4), true);
-  EXPECT_EQ(cache.refreshes(), 1);
-  EXPECT_EQ(cache.distinct_vertices(), distinct);
-  EXPECT_TRUE(same_surface(settled, draw(renderer, target, camera, uniform(4), false)));
 }
 
-// An edit at uniform levels evaluates the welded vertices again (render/stored_vertex_evaluation.h)
+// An edit at uniform levels from 8 evaluates the welded vertices again (render/stored_vertex_evaluation.h)
 // where the tessellation stage evaluated them at the capture: the stored triangles are what a
 // capture of the edited points stores, bit for bit (patch edges and corners included, which both
 // sides must keep alike), for quad patches with half-size ones (the pawn) and Loop's triangles.
@@ -191,17 +195,17 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
     renderer.set_mesh(mesh);
     const SurfaceCache& cache = renderer.surface_cache();
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
-    draw(renderer, target, camera, uniform(5), true);
-    draw(renderer, target, camera, uniform(5), true);  // settled
+    draw(renderer, target, camera, uniform(8), true);
+    draw(renderer, target, camera, uniform(8), true);  // settled
     const int n = int(mesh.n_vertices());
     for (const int v : {n / 2, n / 3}) move_vertex(mesh, v, 0.2);
     renderer.update_vertices(mesh, {n / 2, n / 3});
-    draw(renderer, target, camera, uniform(5), true);
+    draw(renderer, target, camera, uniform(8), true);
     ASSERT_EQ(cache.captures(), 1) << name;
     ASSERT_EQ(cache.refreshes(), 1) << name;
     const TriangleMesh evaluated = cache.stored_triangles();
     draw(renderer, target, camera, uniform(4), true);
-    draw(renderer, target, camera, uniform(5), true);  // the same points captured
+    draw(renderer, target, camera, uniform(8), true);  // the same points captured
     ASSERT_EQ(cache.captures(), 3) << name;
     const TriangleMesh captured = cache.stored_triangles();
     ASSERT_EQ(evaluated.triangles.size(), captured.triangles.size()) << name;
@@ -316,8 +320,8 @@ TEST_P(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
 TEST_P(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
   RenderTarget target(kSize, kSize);
   for (const char* name : {"cube", "pawn", "icosphere"}) {
-    for (const DrawOptions& o : {uniform(4), adaptive(6)}) {
-      const std::string what = std::string(name) + (o.pixels > 0 ? " adaptive" : " level 4");
+    for (const DrawOptions& o : {uniform(4), uniform(8), adaptive(6)}) {
+      const std::string what = std::string(name) + (o.pixels > 0 ? " adaptive" : " level " + std::to_string(int(o.level)));
       CovarianceMesh mesh = make_sample(name);
       SurfaceRenderer renderer;
       renderer.surface_cache().set_weld(GetParam());
@@ -334,8 +338,8 @@ TEST_P(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
         EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false))) << what << ", " << edited.size() << " vertices";
       }
       // The cube's every patch reads every vertex: captured whole, unless its welded vertices are
-      // evaluated again (uniform levels). The others: only the edits' blocks.
-      const bool partial = std::string(name) != "cube" || (welds() && o.pixels <= 0);
+      // evaluated again (uniform levels from 8). The others: only the edits' blocks.
+      const bool partial = std::string(name) != "cube" || (welds() && o.pixels <= 0 && o.level >= SurfaceCache::kEvaluatedFromLevel);
       EXPECT_EQ(renderer.surface_cache().captures(), partial ? 1 : 3) << what;
       EXPECT_EQ(renderer.surface_cache().refreshes(), partial ? 2 : 0) << what;
       // Uniform levels keep every block's count; adaptive ones here change some (a new buffer is assembled).
