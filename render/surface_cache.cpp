@@ -230,12 +230,14 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   if (evaluate_welded && draws_welded() && key.pixels <= 0.0f && key.level >= kEvaluatedFromLevel) {
     // Uniform levels: the same tessellation, so the welded vertices are evaluated again where they
     // are (render/stored_vertex_evaluation.h), and the captured ones copied from them.
+    std::vector<StoredVertexEvaluation::Block> blocks;
     std::vector<StoredVertexWeld::Range> ranges;
-    for (const int b : stale) ranges.push_back({3 * blocks_.first_triangle(b), 3 * blocks_.triangles(b)});
+    for (const int b : stale) {
+      blocks.push_back({b, 3 * blocks_.first_triangle(b), 3 * blocks_.triangles(b)});
+      ranges.push_back({blocks.back().first, blocks.back().bound});
+    }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedParameters, parameters_);
-    std::vector<StoredVertexEvaluation::Block> blocks;
-    for (size_t i = 0; i < stale.size(); ++i) blocks.push_back({stale[i], ranges[i].first, ranges[i].count});
     evaluate_welded(blocks, weld_->dispatches());
     weld_->copy_back(buffer_, indices_, welded_, ranges);
     return refreshed(key);

@@ -19,9 +19,10 @@
 //
 // Edits: triangles are captured in blocks of consecutive patches (render/surface_blocks.h), each
 // counted by its own query. An edit reports the patches it changed (points_changed); the next frame
-// brings only their blocks up to date (refresh). At uniform levels with the vertices welded, a
-// compute pass evaluates their welded vertices again at the parameters they were captured at
-// (render/stored_vertex_evaluation.h): each point once, on all of llvmpipe's threads. Else it
+// brings only their blocks up to date (refresh). At uniform levels from kEvaluatedFromLevel with the
+// vertices welded, a compute pass evaluates their welded vertices again at the parameters they were
+// captured at (render/stored_vertex_evaluation.h): each point once, on all of llvmpipe's threads
+// (adaptive levels may change with the points, so their blocks are captured). Else it
 // captures those blocks again, under the camera of the capture, into a scratch buffer, and copies
 // them into place (or, where adaptive levels changed a block's count, assembles the clean and the
 // new blocks in a spare buffer, which then becomes the stored one); past half of the patches, or
@@ -104,11 +105,11 @@ public:
   /// Evaluates the welded vertices of blocks again (render/stored_vertex_evaluation.h) in the work
   /// groups that `dispatches` holds per block, with the welded vertex and parameter buffers bound.
   using EvaluateWelded = std::function<void(const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches)>;
-  /// Brings the stale blocks to `key`: at uniform levels from kEvaluatedFromLevel with the vertices welded, by evaluating
-  /// the welded vertices again (`evaluate_welded`, where given); else by capturing them again, for
-  /// which the caller has set the capture camera below in the program's uniforms. False where
-  /// capturing them again is not worth it (over half of the patches) or did not fit the memory
-  /// limit (capture everything then).
+  /// Brings the stale blocks to `key`: at uniform levels from kEvaluatedFromLevel with the vertices
+  /// welded, by evaluating the welded vertices again (`evaluate_welded`, where given); else by
+  /// capturing them again, for which the caller has set the capture camera below in the program's
+  /// uniforms. False where capturing them again is not worth it (over half of the patches) or did
+  /// not fit the memory limit (capture everything then).
   bool refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded = {});
   /// The camera of the capture: a refresh evaluates adaptive levels as the capture did.
   const glm::mat4& captured_view_projection() const { return view_projection_; }
