@@ -2,6 +2,8 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
+
 #include "render/gl_context.h"
 #include "render/gpu_layout.h"
 #include "shaders/embedded_shaders.h"
@@ -26,8 +28,30 @@ StoredVertexEvaluation::~StoredVertexEvaluation() {
   glDeleteBuffers(1, &groups_);
 }
 
-void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches) {
-  if (blocks.empty()) return;
+void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches, int group_limit) {
+  GLint max_groups = 0;
+  glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups);
+  if (group_limit > 0) max_groups = std::min(max_groups, group_limit);
+  // The blocks in runs that fit a dispatch: a block's welded vertices are fewer than a third of its
+  // capture slots (evaluated from level 8 on: a quad patch at level L has (L + 1)² of 6 L², a
+  // half-size one at ⌈L/2⌉ and a triangle at L alike), so many work groups at most.
+  for (size_t begin = 0; begin < blocks.size();) {
+    size_t end = begin;
+    long long groups = 0;
+    while (end < blocks.size()) {
+      const long long most = (blocks[end].bound / 3 + gpu::kWorkGroupSize - 1) / gpu::kWorkGroupSize;
+      if (end > begin && groups + most > max_groups) break;
+      groups += most;
+      ++end;
+    }
+    dispatch(shape, std::vector<Block>(blocks.begin() + long(begin), blocks.begin() + long(end)), dispatches);
+    begin = end;
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+  check_gl_errors("evaluating the stored vertices");
+}
+
+void StoredVertexEvaluation::dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches) {
   std::vector<GLint> listed;
   listed.reserve(3 * blocks.size());
   for (const Block& b : blocks) listed.insert(listed.end(), {GLint(b.block), GLint(b.first), GLint(b.bound)});
@@ -46,8 +70,7 @@ void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blo
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, groups_);
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
-  check_gl_errors("evaluating the stored vertices");
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the list and groups buffers' reuse
 }
 
 }  // namespace gps

@@ -25,10 +25,14 @@ public:
   StoredVertexEvaluation& operator=(const StoredVertexEvaluation&) = delete;
   /// Evaluates the welded vertices of `blocks` (of the buffers bound at kBindingWeldedVertices and
   /// kBindingWeldedParameters), for patches of `shape`, in one indirect dispatch of the work groups
-  /// that `dispatches` holds per block (render/stored_vertex_weld.h); a storage barrier follows.
-  void run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches);
+  /// that `dispatches` holds per block (render/stored_vertex_weld.h), or as many as the device's
+  /// work groups per dispatch (or a lower `group_limit` > 0) require; a storage barrier follows.
+  void run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches, int group_limit);
 
 private:
+  /// One indirect dispatch over `blocks`.
+  void dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches);
+
   ShaderProgram quads_, triangles_, groups_program_;
   unsigned blocks_ = 0, groups_ = 0;
 };

@@ -220,7 +220,7 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
       capture.set("u_view_projection", cache_.captured_view_projection());
       capture.set("u_viewport", cache_.captured_viewport());
       const auto evaluate_welded = [&](const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches) {
-        stored_evaluation_.run(shape(), blocks, dispatches);
+        stored_evaluation_.run(shape(), blocks, dispatches, group_limit_);
       };
       refreshed = cache_.refresh(key, draw_patches, evaluate_welded);
     }

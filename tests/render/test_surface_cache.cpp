@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "core/samples.h"
 #include "render/render_target.h"
@@ -184,7 +185,8 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
 // An edit at uniform levels from 8 evaluates the welded vertices again (render/stored_vertex_evaluation.h)
 // where the tessellation stage evaluated them at the capture: the stored triangles are what a
 // capture of the edited points stores, bit for bit (patch edges and corners included, which both
-// sides must keep alike), for quad patches with half-size ones (the pawn) and Loop's triangles.
+// sides must keep alike), for quad patches with half-size ones (the pawn) and Loop's triangles; an
+// edit of every vertex with the work groups per dispatch lowered to 64 too (several dispatches).
 TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
   if (!welds()) GTEST_SKIP() << "edits are captured again without a weld";
   RenderTarget target(kSize, kSize);
@@ -195,26 +197,33 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
     renderer.set_mesh(mesh);
     const SurfaceCache& cache = renderer.surface_cache();
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
-    draw(renderer, target, camera, uniform(8), true);
-    draw(renderer, target, camera, uniform(8), true);  // settled
     const int n = int(mesh.n_vertices());
-    for (const int v : {n / 2, n / 3}) move_vertex(mesh, v, 0.2);
-    renderer.update_vertices(mesh, {n / 2, n / 3});
-    draw(renderer, target, camera, uniform(8), true);
-    ASSERT_EQ(cache.captures(), 1) << name;
-    ASSERT_EQ(cache.refreshes(), 1) << name;
-    const TriangleMesh evaluated = cache.stored_triangles();
-    draw(renderer, target, camera, uniform(4), true);
-    draw(renderer, target, camera, uniform(8), true);  // the same points captured
-    ASSERT_EQ(cache.captures(), 3) << name;
-    const TriangleMesh captured = cache.stored_triangles();
-    ASSERT_EQ(evaluated.triangles.size(), captured.triangles.size()) << name;
-    ASSERT_EQ(evaluated.positions.size(), captured.positions.size()) << name;
-    size_t differing = 0;
-    for (size_t i = 0; i < captured.positions.size(); ++i)
-      differing += evaluated.positions[i] != captured.positions[i] || evaluated.normals[i] != captured.normals[i];
-    EXPECT_EQ(differing, 0u) << name << ": of " << captured.positions.size() << " vertices";
-    EXPECT_TRUE(evaluated.triangles == captured.triangles) << name;
+    std::vector<int> every(static_cast<size_t>(n));
+    for (int v = 0; v < n; ++v) every[size_t(v)] = v;
+    for (const std::vector<int>& edited : {std::vector<int>{n / 2, n / 3}, every}) {
+      const std::string what = std::string(name) + ", " + std::to_string(edited.size()) + " vertices";
+      if (edited.size() > 2) renderer.lower_device_limits(64, 0);
+      draw(renderer, target, camera, uniform(8), true);
+      draw(renderer, target, camera, uniform(8), true);  // settled
+      const int captures = cache.captures(), refreshes = cache.refreshes();
+      for (const int v : edited) move_vertex(mesh, v, 0.2 / double(edited.size()));
+      renderer.update_vertices(mesh, edited);
+      draw(renderer, target, camera, uniform(8), true);
+      ASSERT_EQ(cache.captures(), captures) << what;
+      ASSERT_EQ(cache.refreshes(), refreshes + 1) << what;
+      const TriangleMesh evaluated = cache.stored_triangles();
+      draw(renderer, target, camera, uniform(4), true);
+      draw(renderer, target, camera, uniform(8), true);  // the same points captured
+      ASSERT_EQ(cache.captures(), captures + 2) << what;
+      const TriangleMesh captured = cache.stored_triangles();
+      ASSERT_EQ(evaluated.triangles.size(), captured.triangles.size()) << what;
+      ASSERT_EQ(evaluated.positions.size(), captured.positions.size()) << what;
+      size_t differing = 0;
+      for (size_t i = 0; i < captured.positions.size(); ++i)
+        differing += evaluated.positions[i] != captured.positions[i] || evaluated.normals[i] != captured.normals[i];
+      EXPECT_EQ(differing, 0u) << what << ": of " << captured.positions.size() << " vertices";
+      EXPECT_TRUE(evaluated.triangles == captured.triangles) << what;
+    }
   }
 }
 
