@@ -9,7 +9,7 @@
 // triangles share nearby indices, as a welded static buffer's do: llvmpipe's vertex cache, keyed
 // by index, shades a shared vertex once only then: numbered in capture slots, as the indices
 // first were, a shared vertex mostly missed it (llvmpipe, cached frame over the floor, pawn level
-// 16: 1.25 as captured, 1.26 welded in capture slots, 1.08 numbered).
+// 16: 1.20-1.21 as captured, 1.17-1.26 welded in capture slots, 1.08-1.12 numbered).
 #include <memory>
 #include <vector>
 
