@@ -33,6 +33,8 @@ struct DrawOptions {
 /// The uniform level of `o`, clamped to 1..64.
 inline float uniform_level(const DrawOptions& o) { return std::clamp(o.level, 1.0f, 64.0f); }
 
+/// The tessellation levels' uniforms (shaders/tess_levels.glsl).
+void set_level_uniforms(const ShaderProgram& p, const glm::mat4& view_projection, glm::vec2 viewport, const DrawOptions& o);
 /// Camera, viewport, levels and shading of a frame, for the patch, cached and static-triangle programs.
 void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& o, float aspect, int width, int height);
 

@@ -39,6 +39,9 @@ GPS_LAYOUT_CONST int kBindingWeldedDispatches = 23;  // per block: work groups o
 GPS_LAYOUT_CONST int kBindingEvaluationBlocks = 24;  // the blocks an evaluation of welded vertices runs over
 GPS_LAYOUT_CONST int kBindingEvaluationGroups = 25;  // its dispatch and each block's first work group
 GPS_LAYOUT_CONST int kBindingCopyRuns = 26;          // the runs of captured vertices a copy back writes
+GPS_LAYOUT_CONST int kBindingPatchLevels = 27;       // per patch: the outer levels it was captured at (render/stored_patch_levels.h)
+GPS_LAYOUT_CONST int kBindingLevelPatches = 28;      // the patches a level check runs over, with their listed block
+GPS_LAYOUT_CONST int kBindingLevelChanges = 29;      // per listed block: whether a patch's levels changed
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;

@@ -221,51 +221,90 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
   return true;
 }
 
-bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded) {
+bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded,
+                           const LevelsChanged& levels_changed) {
   const std::vector<int> stale = blocks_.stale();
-  if (evaluate_welded && draws_welded() && key.pixels <= 0.0f && key.level >= kEvaluatedFromLevel) {
-    // Uniform levels: the same tessellation, so the welded vertices are evaluated again where they
-    // are (render/stored_vertex_evaluation.h), and the captured ones copied from them.
-    std::vector<StoredVertexEvaluation::Block> blocks;
-    std::vector<StoredVertexWeld::Range> ranges;
-    for (const int b : stale) {
-      blocks.push_back({b, 3 * blocks_.first_triangle(b), 3 * blocks_.triangles(b)});
-      ranges.push_back({blocks.back().first, blocks.back().bound});
+  const bool uniform = key.pixels <= 0.0f;
+  GLint capture_program = 0;  // the compute passes below change it
+  glGetIntegerv(GL_CURRENT_PROGRAM, &capture_program);
+  // The stale blocks whose tessellation stays: all at uniform levels; at adaptive ones, those whose
+  // patches keep their levels (the check also keeps the new levels of the others).
+  std::vector<char> kept(stale.size(), uniform ? 1 : 0);
+  if (!uniform && levels_changed) {
+    std::vector<StoredPatchLevels::Block> patches;
+    for (const int b : stale) patches.push_back({blocks_.first_patch(b), blocks_.patches_in(b)});
+    const std::vector<char> changed = levels_changed(patches);
+    for (size_t i = 0; i < stale.size(); ++i) kept[i] = !changed[i];
+  }
+  // Kept blocks with welded vertices are evaluated again where they are (render/stored_vertex_evaluation.h)
+  // from uniform level kEvaluatedFromLevel on, and at adaptive levels; the others captured again.
+  const bool evaluate = evaluate_welded && draws_welded() && (!uniform || key.level >= kEvaluatedFromLevel);
+  std::vector<int> evaluated, captured;
+  bool captured_kept = true;
+  int captured_patches = 0;
+  for (size_t i = 0; i < stale.size(); ++i) {
+    if (evaluate && kept[i]) {
+      evaluated.push_back(stale[i]);
+    } else {
+      captured.push_back(stale[i]);
+      captured_kept = captured_kept && kept[i];
+      captured_patches += blocks_.patches_in(stale[i]);
     }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedParameters, parameters_);
-    evaluate_welded(blocks, weld_->dispatches());
-    weld_->copy_back(buffer_, indices_, welded_, ranges);
-    return refreshed(key);
   }
   // Captured again: past half of the patches, little less than capturing them all.
-  if (2 * blocks_.stale_patches() > blocks_.n_patches()) return false;
+  if (2 * captured_patches > blocks_.n_patches()) return false;
+  if (!evaluated.empty()) evaluate_again(evaluated, uniform, evaluate_welded);
+  glUseProgram(GLuint(capture_program));
+  evaluated_patches_ = blocks_.stale_patches() - captured_patches;
+  if (!captured.empty() && !capture_again(captured, draw_patches, captured_kept)) return false;
+  // A drag that evaluates keeps its vertices welded for its next edit.
+  if (!evaluated.empty()) settle();
+  check_gl_errors("refreshing the surface cache");
+  return refreshed(key);
+}
+
+// The welded vertices of `blocks` evaluated again, and the captured ones copied from them. A block's
+// welded vertices are fewer than its capture slots; from uniform level 8 on, fewer than a third
+// (render/stored_vertex_evaluation.cpp).
+void SurfaceCache::evaluate_again(const std::vector<int>& blocks, bool uniform, const EvaluateWelded& evaluate_welded) {
+  std::vector<StoredVertexEvaluation::Block> listed;
+  std::vector<StoredVertexWeld::Range> ranges;
+  for (const int b : blocks) {
+    const long long first = 3 * blocks_.first_triangle(b), slots = 3 * blocks_.triangles(b);
+    listed.push_back({b, first, uniform ? slots / 3 : slots});
+    ranges.push_back({first, slots});
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedParameters, parameters_);
+  evaluate_welded(listed, weld_->dispatches());
+  weld_->copy_back(buffer_, indices_, welded_, ranges);
+}
+
+// `blocks` captured again into the scratch buffer, under the capture's camera, and copied into
+// place; where their counts changed (adaptive levels), assembled with the others in the spare buffer.
+// `kept`: their levels, and so their counts, are those stored.
+bool SurfaceCache::capture_again(const std::vector<int>& blocks, const DrawPatches& draw_patches, bool kept) {
   long long stale_triangles = 0;
-  for (const int b : stale) stale_triangles += blocks_.triangles(b);
-  // Uniform levels keep the counts; adaptive ones may change them, so room for more.
-  const bool uniform = key.pixels <= 0.0f;
-  reserve(scratch_, scratch_capacity_, std::max(2 * stale_triangles, 1024ll));
+  for (const int b : blocks) stale_triangles += blocks_.triangles(b);
+  reserve(scratch_, scratch_capacity_, std::max(2 * stale_triangles, 1024ll));  // room for more where levels change
   std::vector<long long> counts;
-  while (!capture_blocks(scratch_, scratch_capacity_, stale, draw_patches, counts, false, uniform)) {
+  while (!capture_blocks(scratch_, scratch_capacity_, blocks, draw_patches, counts, false, kept)) {
     if (scratch_capacity_ >= most_triangles()) return false;
     reserve(scratch_, scratch_capacity_, std::min(2 * scratch_capacity_, most_triangles()));
   }
   bool same_counts = true;
-  for (size_t i = 0; i < stale.size(); ++i) same_counts = same_counts && counts[i] == blocks_.triangles(stale[i]);
-  if (same_counts) {
-    long long from = 0;
-    for (size_t i = 0; i < stale.size(); ++i) {
-      if (counts[i] > 0)
-        glCopyNamedBufferSubData(scratch_, buffer_, GLintptr(from * 3 * kCapturedVertexBytes),
-                                 GLintptr(blocks_.first_triangle(stale[i]) * 3 * kCapturedVertexBytes), GLsizeiptr(counts[i] * 3 * kCapturedVertexBytes));
-      from += counts[i];
-    }
-    weld(stale);
-  } else if (!assemble(stale, counts)) {
-    return false;
+  for (size_t i = 0; i < blocks.size(); ++i) same_counts = same_counts && counts[i] == blocks_.triangles(blocks[i]);
+  if (!same_counts) return assemble(blocks, counts);
+  long long from = 0;
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    if (counts[i] > 0)
+      glCopyNamedBufferSubData(scratch_, buffer_, GLintptr(from * 3 * kCapturedVertexBytes),
+                               GLintptr(blocks_.first_triangle(blocks[i]) * 3 * kCapturedVertexBytes),
+                               GLsizeiptr(counts[i] * 3 * kCapturedVertexBytes));
+    from += counts[i];
   }
-  check_gl_errors("refreshing the surface cache");
-  return refreshed(key);
+  weld(blocks);
+  return true;
 }
 
 bool SurfaceCache::refreshed(const Key& key) {

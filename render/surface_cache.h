@@ -19,15 +19,15 @@
 //
 // Edits: triangles are captured in blocks of consecutive patches (render/surface_blocks.h), each
 // counted by its own query. An edit reports the patches it changed (points_changed); the next frame
-// brings only their blocks up to date (refresh). At uniform levels from kEvaluatedFromLevel with the
-// vertices welded, a compute pass evaluates their welded vertices again at the parameters they were
-// captured at (render/stored_vertex_evaluation.h): each point once, on all of llvmpipe's threads
-// (adaptive levels may change with the points, so their blocks are captured). Else it
-// captures those blocks again, under the camera of the capture, into a scratch buffer, and copies
-// them into place (or, where adaptive levels changed a block's count, assembles the clean and the
-// new blocks in a spare buffer, which then becomes the stored one); past half of the patches, or
-// after a compute pass over everything (core's update_everything), the whole surface is captured
-// again.
+// brings only their blocks up to date (refresh). Where a block's tessellation stays (uniform levels;
+// adaptive ones where the level check finds every patch's levels unchanged under the capture's
+// camera, render/stored_patch_levels.h) and the vertices are welded, a compute pass evaluates its
+// welded vertices again at the parameters they were captured at (render/stored_vertex_evaluation.h):
+// each point once, on all of llvmpipe's threads; at uniform levels only from kEvaluatedFromLevel.
+// The other stale blocks are captured again, under the camera of the capture, into a scratch buffer,
+// and copied into place (or, where adaptive levels changed a block's count, the clean and the new
+// blocks are assembled in a spare buffer, which then becomes the stored one); where over half of the
+// patches would be captured so, the whole surface is captured again.
 #include <glm/glm.hpp>
 #include <functional>
 #include <memory>
@@ -35,6 +35,7 @@
 
 #include "core/covariance_mesh.h"
 #include "core/triangle_mesh.h"
+#include "render/stored_patch_levels.h"
 #include "render/stored_vertex_evaluation.h"
 #include "render/stored_vertex_weld.h"
 #include "render/surface_blocks.h"
@@ -105,12 +106,17 @@ public:
   /// Evaluates the welded vertices of blocks again (render/stored_vertex_evaluation.h) in the work
   /// groups that `dispatches` holds per block, with the welded vertex and parameter buffers bound.
   using EvaluateWelded = std::function<void(const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches)>;
-  /// Brings the stale blocks to `key`: at uniform levels from kEvaluatedFromLevel with the vertices
-  /// welded, by evaluating the welded vertices again (`evaluate_welded`, where given); else by
+  /// At adaptive levels: per block (its patches listed), whether an edit changed any patch's levels
+  /// under the capture's camera (render/stored_patch_levels.h, recorded at each adaptive capture).
+  using LevelsChanged = std::function<std::vector<char>(const std::vector<StoredPatchLevels::Block>& blocks)>;
+  /// Brings the stale blocks to `key`. Blocks whose tessellation stays (uniform levels from
+  /// kEvaluatedFromLevel; adaptive ones that `levels_changed` leaves alone) with the vertices welded:
+  /// by evaluating the welded vertices again (`evaluate_welded`, where given). The others by
   /// capturing them again, for which the caller has set the capture camera below in the program's
   /// uniforms. False where capturing them again is not worth it (over half of the patches) or did
   /// not fit the memory limit (capture everything then).
-  bool refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded = {});
+  bool refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded = {},
+               const LevelsChanged& levels_changed = {});
   /// The camera of the capture: a refresh evaluates adaptive levels as the capture did.
   const glm::mat4& captured_view_projection() const { return view_projection_; }
   glm::vec2 captured_viewport() const { return viewport_; }
@@ -145,9 +151,11 @@ public:
   void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
   /// Full captures so far (tests: a frame that should draw stored triangles must not add one).
   int captures() const { return captures_; }
-  /// Refreshes so far, and the patches the last one evaluated (those of its stale blocks).
+  /// Refreshes so far, and the patches the last one brought up to date (those of its stale blocks).
   int refreshes() const { return refreshes_; }
   int refreshed_patches() const { return refreshed_patches_; }
+  /// Of those, the patches whose welded vertices it evaluated again (the rest it captured again).
+  int evaluated_patches() const { return evaluated_patches_; }
   long long triangles() const { return blocks_.total(); }
   size_t buffer_bytes() const {
     return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kCapturedVertexBytes +
@@ -164,6 +172,8 @@ private:
   /// where `known`, those stored); false where the buffer was full (and some triangles may be missing).
   bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks, const DrawPatches& draw_patches,
                       std::vector<long long>& counts, bool rasterize = false, bool known = false);
+  void evaluate_again(const std::vector<int>& blocks, bool uniform, const EvaluateWelded& evaluate_welded);
+  bool capture_again(const std::vector<int>& blocks, const DrawPatches& draw_patches, bool kept);
   /// Counts a refresh: the stale blocks are fresh, the stored triangles those of `key`.
   bool refreshed(const Key& key);
   /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
@@ -192,7 +202,7 @@ private:
   std::vector<unsigned> cage_edges_;  // index pairs
   float hysteresis_ = 1.25f;
   long long limit_bytes_ = kDefaultLimitBytes;
-  int captures_ = 0, refreshes_ = 0, refreshed_patches_ = 0;
+  int captures_ = 0, refreshes_ = 0, refreshed_patches_ = 0, evaluated_patches_ = 0;
 };
 
 }  // namespace gps

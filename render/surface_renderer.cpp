@@ -222,7 +222,12 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
       const auto evaluate_welded = [&](const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches) {
         stored_evaluation_.run(shape(), blocks, dispatches, group_limit_);
       };
-      refreshed = cache_.refresh(key, draw_patches, evaluate_welded);
+      const auto levels_changed = [&](const std::vector<StoredPatchLevels::Block>& blocks) {
+        const ShaderProgram& check = stored_levels_.program(shape());
+        set_level_uniforms(check, cache_.captured_view_projection(), cache_.captured_viewport(), o);
+        return stored_levels_.changed(shape(), blocks, group_limit_);
+      };
+      refreshed = cache_.refresh(key, draw_patches, evaluate_welded, levels_changed);
     }
     if (!refreshed) {
       const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
@@ -231,6 +236,11 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
       program.use();
       const auto draw = [&](int first, int count) { patches_.draw(program, o, n_patches(), first, count); };
       if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire)) return CacheFrame::live;
+      if (key.pixels > 0.0f) {  // the levels an edit's refresh checks
+        const ShaderProgram& record = stored_levels_.program(shape());
+        set_level_uniforms(record, view_projection, viewport, o);
+        stored_levels_.record(shape(), n_patches(), group_limit_);
+      }
       if (!triangle_wire) return CacheFrame::drawn;
     }
   } else {

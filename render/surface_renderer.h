@@ -26,6 +26,7 @@
 #include "render/render_target.h"
 #include "render/shader_program.h"
 #include "render/static_triangles.h"
+#include "render/stored_patch_levels.h"
 #include "render/stored_vertex_evaluation.h"
 #include "render/surface_cache.h"
 
@@ -113,7 +114,8 @@ private:
   EllipsoidOverlay ellipsoids_;
   ShaderProgram cached_, cached_grid_, cached_wire_;  // the surface cache's draw (plain, quads' wireframe, triangles' wireframe)
   SurfaceCache cache_;
-  StoredVertexEvaluation stored_evaluation_;  // the cache's edits at uniform levels
+  StoredVertexEvaluation stored_evaluation_;  // the cache's edits where the tessellation stays
+  StoredPatchLevels stored_levels_;            // the levels of the cache's adaptive capture
   long long points_generation_ = 0;  // bumped by every compute pass: the cache's key
   unsigned matcap_ = 0;
   int n_base_ = 0;

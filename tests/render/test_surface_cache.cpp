@@ -182,48 +182,69 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
   }
 }
 
-// An edit at uniform levels from 8 evaluates the welded vertices again (render/stored_vertex_evaluation.h)
-// where the tessellation stage evaluated them at the capture: the stored triangles are what a
-// capture of the edited points stores, bit for bit (patch edges and corners included, which both
-// sides must keep alike), for quad patches with half-size ones (the pawn) and Loop's triangles; an
-// edit of every vertex with the work groups per dispatch lowered to 64 too (several dispatches).
+// The stored triangles of two frames (read back) are the same, bit for bit.
+::testing::AssertionResult same_triangles(const TriangleMesh& a, const TriangleMesh& b) {
+  if (a.triangles != b.triangles || a.positions.size() != b.positions.size())
+    return ::testing::AssertionFailure() << a.triangles.size() << " triangle corners against " << b.triangles.size();
+  size_t differing = 0;
+  for (size_t i = 0; i < a.positions.size(); ++i) differing += a.positions[i] != b.positions[i] || a.normals[i] != b.normals[i];
+  if (differing > 0) return ::testing::AssertionFailure() << differing << " of " << a.positions.size() << " vertices differ";
+  return ::testing::AssertionSuccess();
+}
+
+// An edit that keeps the tessellation (uniform levels from 8; adaptive levels where the level check
+// finds a block's patches' levels unchanged) evaluates the welded vertices again
+// (render/stored_vertex_evaluation.h) where the tessellation stage evaluated them at the capture:
+// the stored triangles are what a capture of the edited points stores, bit for bit (patch edges and
+// corners included, which both sides must keep alike), for quad patches with half-size ones (the
+// pawn) and Loop's triangles. At uniform levels an edit of every vertex too, with the work groups
+// per dispatch lowered to 64 (several dispatches). At adaptive ones a covariance scaled (levels
+// kept) and vertices moved (some blocks' levels change: captured again beside the evaluated ones).
 TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
   if (!welds()) GTEST_SKIP() << "edits are captured again without a weld";
   RenderTarget target(kSize, kSize);
-  for (const char* name : {"pawn", "icosphere", "cube"}) {
-    CovarianceMesh mesh = make_sample(name);
-    SurfaceRenderer renderer;
-    renderer.surface_cache().set_weld(GetParam());
-    renderer.set_mesh(mesh);
-    const SurfaceCache& cache = renderer.surface_cache();
-    const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
-    const int n = int(mesh.n_vertices());
-    std::vector<int> every(static_cast<size_t>(n));
-    for (int v = 0; v < n; ++v) every[size_t(v)] = v;
-    for (const std::vector<int>& edited : {std::vector<int>{n / 2, n / 3}, every}) {
-      const std::string what = std::string(name) + ", " + std::to_string(edited.size()) + " vertices";
-      if (edited.size() > 2) renderer.lower_device_limits(64, 0);
-      draw(renderer, target, camera, uniform(8), true);
-      draw(renderer, target, camera, uniform(8), true);  // settled
-      const int captures = cache.captures(), refreshes = cache.refreshes();
-      for (const int v : edited) move_vertex(mesh, v, 0.2 / double(edited.size()));
-      renderer.update_vertices(mesh, edited);
-      draw(renderer, target, camera, uniform(8), true);
-      ASSERT_EQ(cache.captures(), captures) << what;
-      ASSERT_EQ(cache.refreshes(), refreshes + 1) << what;
-      const TriangleMesh evaluated = cache.stored_triangles();
-      draw(renderer, target, camera, uniform(4), true);
-      draw(renderer, target, camera, uniform(8), true);  // the same points captured
-      ASSERT_EQ(cache.captures(), captures + 2) << what;
-      const TriangleMesh captured = cache.stored_triangles();
-      ASSERT_EQ(evaluated.triangles.size(), captured.triangles.size()) << what;
-      ASSERT_EQ(evaluated.positions.size(), captured.positions.size()) << what;
-      size_t differing = 0;
-      for (size_t i = 0; i < captured.positions.size(); ++i)
-        differing += evaluated.positions[i] != captured.positions[i] || evaluated.normals[i] != captured.normals[i];
-      EXPECT_EQ(differing, 0u) << what << ": of " << captured.positions.size() << " vertices";
-      EXPECT_TRUE(evaluated.triangles == captured.triangles) << what;
+  for (const DrawOptions& o : {uniform(8), adaptive(4)}) {
+    int evaluated = 0, captured_again = 0;  // patches, over the edits
+    for (const char* name : {"pawn", "icosphere", "cube"}) {
+      CovarianceMesh mesh = make_sample(name);
+      SurfaceRenderer renderer;
+      renderer.surface_cache().set_weld(GetParam());
+      renderer.set_mesh(mesh);
+      const SurfaceCache& cache = renderer.surface_cache();
+      const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
+      const int n = int(mesh.n_vertices());
+      std::vector<int> every(static_cast<size_t>(n));
+      for (int v = 0; v < n; ++v) every[size_t(v)] = v;
+      const std::vector<std::vector<int>> edits =
+          o.pixels > 0 ? std::vector<std::vector<int>>{{n / 2}, {n / 2, n / 3}} : std::vector<std::vector<int>>{{n / 2, n / 3}, every};
+      for (size_t e = 0; e < edits.size(); ++e) {
+        const std::vector<int>& edited = edits[e];
+        const std::string what = std::string(name) + (o.pixels > 0 ? " adaptive" : " level 8") + ", edit " + std::to_string(e);
+        if (edited.size() > 2) renderer.lower_device_limits(64, 0);
+        draw(renderer, target, camera, o, true);
+        draw(renderer, target, camera, o, true);  // settled
+        const int captures = cache.captures(), refreshes = cache.refreshes();
+        for (const int v : edited) {
+          if (o.pixels > 0 && e == 0) mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * 1.1);
+          else move_vertex(mesh, v, (o.pixels > 0 ? 0.02 : 0.2) / double(edited.size()));
+        }
+        renderer.update_vertices(mesh, edited);
+        draw(renderer, target, camera, o, true);
+        ASSERT_EQ(cache.captures(), captures) << what;
+        ASSERT_EQ(cache.refreshes(), refreshes + 1) << what;
+        evaluated += cache.evaluated_patches();
+        captured_again += cache.refreshed_patches() - cache.evaluated_patches();
+        if (o.pixels <= 0) EXPECT_EQ(cache.evaluated_patches(), cache.refreshed_patches()) << what;
+        const TriangleMesh refreshed = cache.stored_triangles();
+        draw(renderer, target, camera, uniform(2), true);
+        draw(renderer, target, camera, o, true);  // the same points captured
+        ASSERT_EQ(cache.captures(), captures + 2) << what;
+        EXPECT_TRUE(same_triangles(refreshed, cache.stored_triangles())) << what;
+      }
     }
+    EXPECT_GT(evaluated, 0);
+    if (o.pixels > 0) EXPECT_GT(captured_again, 0) << "no edit changed adaptive levels";
+    std::printf("%s: %d patches evaluated again, %d captured again\n", o.pixels > 0 ? "adaptive" : "uniform", evaluated, captured_again);
   }
 }
 
