@@ -83,6 +83,7 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
     const gps::TriangleMesh stored = renderer.surface_cache().stored_triangles();
     renderer.set_triangles(kind == FrameKind::floor ? stored : unwelded(stored));
     o.static_triangles = true;
+    state.counters["vertices"] = double(kind == FrameKind::floor ? stored.positions.size() : 3 * stored.triangles.size());
   }
   const std::vector<int> edited = s.edits.middle_vertices(1);
   const auto frame = [&] {
@@ -119,6 +120,9 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   state.counters["patches"] = double(renderer.tables().plans.n_patches());
   state.counters["gpu_ms"] = gpu_ns * 1e-6 / double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.counters["first_ms"] = first_ms;
+  // The vertices a frame from the cache fetches (read back, after the timing).
+  if (kind != FrameKind::live && kind != FrameKind::floor && kind != FrameKind::unwelded && cache.holds_triangles())
+    state.counters["vertices"] = double(cache.distinct_vertices());
 }
 
 }  // namespace

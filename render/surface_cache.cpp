@@ -401,7 +401,7 @@ void SurfaceCache::weld_now(const std::vector<int>& blocks) {
 }
 
 void SurfaceCache::draw(bool grid) const {
-  const bool welded = draws_welded();
+  const bool welded = draws_welded() && !grid;  // welded copies of a point had their own grids
   const GLuint vao = welded ? welded_vao_ : vao_;
   // Attribute 2 fetched only for a program that reads it.
   if (grid) glEnableVertexArrayAttrib(vao, 2);

@@ -125,9 +125,10 @@ public:
   /// A frame found the stored triangles current: welds what Weld::when_settled left unwelded.
   void settle();
   /// Binds the vertex array of the stored triangles and draws them with the bound program, which
-  /// reads the tessellation grid (attribute 2) where `grid`: welded where they are.
+  /// reads the tessellation grid (attribute 2) where `grid`: welded where they are, but with the grid
+  /// (the welded copies of a point on a patch edge had each their patch's grid).
   void draw(bool grid) const;
-  /// Whether draw() draws welded vertices by index.
+  /// Whether draw() draws welded vertices by index (but for the grid).
   bool draws_welded() const { return weld_mode_ != Weld::off && !weld_all_pending_ && weld_pending_.empty(); }
   /// The stored triangles read back, vertices with bit-identical position and normal welded (shared
   /// patch edges are bit-exact): the benchmark's static-buffer floor for exactly these triangles.

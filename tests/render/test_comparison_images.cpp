@@ -2,13 +2,18 @@
 // against the CPU reference's, ×200 and ×5000, as `gpsurf diff` writes them, are black. The
 // reference (render --reference) is GPS subdivision with limit projection and its exact limit
 // normals, its quads split along the tessellator's diagonals, at the level whose vertices are the
-// tessellation's: every pixel then compares one surface at one parameter, evaluated twice.
+// tessellation's: every pixel then compares one surface at one parameter, evaluated twice. Under
+// Loop, GL's triangle tessellation puts its inner rings off the dyadic grid, so no reference level
+// has its vertices: there the reference is the exact evaluator (equal to subdivision and limit
+// projection at every parameter: tests/core) at the parameters of the GPU's own vertices.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "core/error.h"
+#include "core/patch_eval.h"
 #include "core/samples.h"
 #include "render/difference_image.h"
 #include "render/image_io.h"
@@ -16,6 +21,7 @@
 #include "render/render_target.h"
 #include "render/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
+#include "tests/support/plan_fixture.h"
 #include "view/camera.h"
 
 namespace gps {
@@ -97,6 +103,57 @@ TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
       EXPECT_GT(s.stats.covered, kSize * kSize / 20) << name;
       EXPECT_LE(s.stats.coverage_mismatch, s.stats.covered / 10000) << name << " " << what;
       EXPECT_LE(s.visible, kind == AovKind::normal && folded_needle ? 0.04 : 0.01) << name << " " << what;
+    }
+  }
+}
+
+// The exact surface at the parameters of the GPU's own tessellation vertices (transform feedback),
+// in double on the CPU: the GPU's triangles with the evaluator's positions and normals.
+TriangleMesh exact_at_gpu_vertices(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const PlanOptions& options,
+                                   const Camera& camera) {
+  DrawOptions o;
+  o.level = float(kLevel);
+  o.pixels = 0;
+  const std::vector<TessellatedVertex> vertices = renderer.capture_vertices(camera, o, 1.0f);
+  const test::PlannedMesh cpu(mesh, options);
+  TriangleMesh exact;
+  for (const TessellatedVertex& v : vertices) {
+    const auto s = evaluate_patch(cpu.tables.plans, cpu.points, int(v.evaluated[0]), v.evaluated[1], v.evaluated[2]);
+    if (!s) throw Error("no limit at a GPU vertex");
+    exact.positions.push_back(s->position);
+    exact.normals.push_back(s->normal);
+  }
+  for (int i = 0; i + 2 < int(exact.positions.size()); i += 3) exact.triangles.push_back({i, i + 1, i + 2});
+  return exact;
+}
+
+// The triangle samples under their own scheme, Loop, with the bounds above: black but for the normals
+// of the two cones with a needle apex (covariance 1e-5, q̂ ~ 1e5 I). There the GPU's float normals
+// are off by 2.1e-5 and 2.3e-5 on average (largest 1.2e-4 and 1.6e-2), over the 6e-6 that 8/255
+// shows at ×5000: 78 % and 56 % of their pixels (as Catmull-Clark 0.37 % and 3.0 %). The apex weighs
+// in every box spline of its ring's patches, so float's rounding of its q̂ reaches them all. Those
+// two are held to what they measure (issue 11 leaves it open).
+TEST_F(ComparisonImages, AreBlackOnTheConesUnderLoop) {
+  const PlanOptions options{Scheme::loop};
+  for (const char* name : {"cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder", "icosphere"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(mesh, options);
+    const Camera camera = frame_mesh(mesh);
+    const Aovs gpu = draw(renderer, camera, false);
+    renderer.set_triangles(exact_at_gpu_vertices(renderer, mesh, options, camera));
+    const Aovs reference = draw(renderer, camera, true);
+    const bool needle = std::string(name) == "cone-concave" || std::string(name) == "cone-pointy";
+    for (const AovKind kind : {AovKind::position, AovKind::normal}) {
+      const bool needle_normals = needle && kind == AovKind::normal;
+      const Shown s = shown(gpu, reference, kind);
+      const char* what = kind == AovKind::position ? "position x200" : "normal x5000";
+      std::printf("%-14s %-14s %6d pixels, %6.3f%% lit, %6.3f%% at 8/255, brightest %3d/255, largest difference %.1e, mean %.1e\n",
+                  name, what, s.stats.covered, 100.0 * s.lit, 100.0 * s.visible, s.brightest, s.stats.max, s.stats.mean);
+      EXPECT_GT(s.stats.covered, kSize * kSize / 20) << name;
+      EXPECT_LE(s.stats.coverage_mismatch, s.stats.covered / 10000) << name << " " << what;
+      EXPECT_LE(s.visible, needle_normals ? 0.9 : 0.01) << name << " " << what;
+      if (needle_normals) EXPECT_LE(s.stats.mean, 5e-5) << name;
     }
   }
 }
