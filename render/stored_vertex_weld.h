@@ -31,14 +31,17 @@ public:
   struct Range {
     long long first, count;
   };
-  /// For the vertices v of each range of `vertices` (12 words each; ranges of whole blocks): writes
-  /// indices[v], the number of v's welded vertex, and copies the welded vertices' first 9 words to
-  /// `welded_vertices` and their last 3 (the parameters evaluated) to `parameters`, each block's
-  /// from the block's first vertex on; the rest of a range's parameters are all ones bits (none).
-  /// Welds only within the blocks that `block_starts` (each block's first vertex, ascending, the
-  /// first 0) delimit; a barrier then makes the indices and vertices ready to draw.
-  void weld(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters, const std::vector<Range>& ranges,
+  /// For the first `count` vertices v of `vertices` (12 words each): writes indices[v], the number
+  /// of v's welded vertex, and copies the welded vertices' first 9 words to `welded_vertices` and
+  /// their last 3 (the parameters evaluated) to `parameters`, each block's from the block's first
+  /// vertex on (`block_starts`: each block's first vertex, ascending, the first 0); the rest of the
+  /// parameters are all ones bits (none). Copies of a point in different blocks weld too. A barrier
+  /// then makes the indices and vertices ready to draw.
+  void weld(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters, long long count,
             const std::vector<long long>& block_starts);
+  /// After `ranges` (whole blocks) were captured again in the tessellation they had: each of their
+  /// vertices keeps its index and writes its words to its welded vertex (shaders/reweld_comp.glsl).
+  void weld_again(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters, const std::vector<Range>& ranges);
   /// Per block, three words: the work groups of kWorkGroupSize over its welded vertices, 1, 1
   /// (written by a weld of the block): an indirect dispatch's (render/stored_vertex_evaluation.h).
   unsigned dispatches() const { return dispatches_; }
@@ -51,7 +54,10 @@ public:
   static constexpr int kTableBytesPerVertex = 8 + 5;
 
 private:
-  ShaderProgram weld_, compact_, copy_back_;
+  /// Uploads the runs of `ranges` for copy_back and weld_again (shaders/copy_runs.glsl); their vertices.
+  long long upload_runs(const std::vector<Range>& ranges);
+
+  ShaderProgram weld_, compact_, copy_back_, reweld_;
   ExclusiveScan scan_;
   unsigned table_ = 0, block_starts_ = 0, dispatches_ = 0, runs_ = 0;
   long long dispatch_blocks_ = 0;  // blocks the dispatches buffer holds

@@ -253,7 +253,11 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   }
   // Captured again: past half of the patches, little less than capturing them all.
   if (2 * captured_patches > blocks_.n_patches()) return false;
-  if (!evaluated.empty()) evaluate_again(evaluated, uniform, evaluate_welded);
+  // A welded vertex on a block's edge may stand for copies in the blocks beside it, which are stale
+  // too where it changed (core/patch_readers.h: an edit's patches and their neighbours). So with
+  // some blocks captured again, the welded vertices of all stale blocks are evaluated, that the
+  // evaluated blocks' copies of them are current.
+  if (!evaluated.empty()) evaluate_again(captured.empty() ? evaluated : stale, uniform, evaluate_welded);
   glUseProgram(GLuint(capture_program));
   evaluated_patches_ = blocks_.stale_patches() - captured_patches;
   if (!captured.empty() && !capture_again(captured, draw_patches, captured_kept)) return false;
@@ -303,7 +307,10 @@ bool SurfaceCache::capture_again(const std::vector<int>& blocks, const DrawPatch
                                GLsizeiptr(counts[i] * 3 * kCapturedVertexBytes));
     from += counts[i];
   }
-  weld(blocks);
+  // Their tessellation kept: their vertices keep their welded ones; else (levels changed, the counts
+  // alike) welded anew.
+  if (kept) weld(blocks);
+  else weld();
   return true;
 }
 
@@ -389,13 +396,15 @@ void SurfaceCache::weld_now(const std::vector<int>& blocks) {
     glNamedBufferData(parameters_, GLsizeiptr(index_capacity_ * 3 * kParameterBytes), nullptr, GL_DYNAMIC_COPY);
     all = true;
   }
-  std::vector<long long> starts(size_t(blocks_.size()));
-  for (int b = 0; b < blocks_.size(); ++b) starts[size_t(b)] = 3 * blocks_.first_triangle(b);
-  std::vector<StoredVertexWeld::Range> ranges;
-  if (all) ranges.push_back({0, 3 * total});
-  else
-    for (const int b : blocks) ranges.push_back({starts[size_t(b)], 3 * blocks_.triangles(b)});
-  weld_->weld(buffer_, indices_, welded_, parameters_, ranges, starts);
+  if (all) {
+    std::vector<long long> starts(size_t(blocks_.size()));
+    for (int b = 0; b < blocks_.size(); ++b) starts[size_t(b)] = 3 * blocks_.first_triangle(b);
+    weld_->weld(buffer_, indices_, welded_, parameters_, 3 * total, starts);
+  } else {  // captured again in the tessellation they had: their vertices keep their indices
+    std::vector<StoredVertexWeld::Range> ranges;
+    for (const int b : blocks) ranges.push_back({3 * blocks_.first_triangle(b), 3 * blocks_.triangles(b)});
+    weld_->weld_again(buffer_, indices_, welded_, parameters_, ranges);
+  }
   weld_all_pending_ = false;
   weld_pending_.clear();
 }

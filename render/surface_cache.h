@@ -179,8 +179,8 @@ private:
   bool refreshed(const Key& key);
   /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
   bool assemble(const std::vector<int>& blocks, const std::vector<long long>& counts);
-  /// The stored vertices of `blocks` (all of them where empty) changed: welds them now or, when
-  /// settled, later.
+  /// The stored vertices of `blocks` changed, captured again in the tessellation they had (each keeps
+  /// its welded vertex), or where empty all of them: welds them now or, when settled, later.
   void weld(const std::vector<int>& blocks = {});
   /// Welds them into the index and welded vertex buffers.
   void weld_now(const std::vector<int>& blocks);

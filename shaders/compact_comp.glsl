@@ -1,10 +1,10 @@
-// Numbers a welded range's distinct vertices block by block (render/stored_vertex_weld.h): a
-// vertex that is its own index is copied (its drawn words, and apart the patch and parameters it
-// was evaluated at) to its block's first vertex plus the number of distinct
-// vertices before it in the block (from the exclusive prefix sum of shaders/weld_comp.glsl's
-// flags), and every vertex's index becomes its representative's number. The welded vertices of a
-// block thus lie together, in the order they were captured, as a welded static buffer's do: a
-// vertex cache keyed by index (llvmpipe's) finds the shared ones.
+// Numbers the welded distinct vertices block by block (render/stored_vertex_weld.h): a vertex that
+// is its own index is copied (its drawn words, and apart the patch and parameters it was evaluated
+// at) to its block's first vertex plus the number of distinct vertices before it in the block
+// (from the exclusive prefix sum of shaders/weld_comp.glsl's flags), and every vertex's index
+// becomes its representative's number (the representative may lie in another block). The welded
+// vertices of a block thus lie together, in the order they were captured, as a welded static
+// buffer's do: a vertex cache keyed by index (llvmpipe's) finds the shared ones.
 #include "shaders/compute_pass.glsl"
 #include "shaders/stored_blocks.glsl"
 layout(std430, binding = kBindingStoredVertices) readonly buffer StoredVertices { uint stored[]; };  // 12 words a vertex
@@ -13,15 +13,14 @@ layout(std430, binding = kBindingScanValues) readonly buffer DistinctBefore { ui
 layout(std430, binding = kBindingWeldedVertices) writeonly buffer WeldedVertices { uint welded[]; };       // 9 words a vertex
 layout(std430, binding = kBindingWeldedParameters) writeonly buffer WeldedParameters { uint parameters[]; };  // 3 words a vertex
 layout(std430, binding = kBindingWeldedDispatches) writeonly buffer WeldedDispatches { uint dispatches[]; };  // 3 words a block
-uniform int u_range_first;  // the range's first vertex (a block's); invocation i numbers vertex u_range_first + i
 
 void main() {
   int i = compute_invocation();
   if (i < 0) return;
-  uint first = uint(u_range_first), v = first + uint(i), representative = indices[v];
+  uint v = uint(i), representative = indices[v];
   int block = block_of(v);
-  uint start = block_starts[block];
-  uint number = start + distinct_before[representative - first] - distinct_before[start - first];
+  uint start = block_starts[block], representative_start = block_starts[block_of(representative)];
+  uint number = representative_start + distinct_before[representative] - distinct_before[representative_start];
   indices[v] = number;
   if (representative == v) {
     for (uint k = 0u; k < 9u; ++k) welded[9u * number + k] = stored[12u * v + k];
@@ -29,9 +28,9 @@ void main() {
   }
   // The block's last vertex: the work groups that evaluate its welded vertices again
   // (render/stored_vertex_evaluation.h, an indirect dispatch).
-  uint range_end = first + uint(u_count), end = block + 1 < u_blocks ? min(block_starts[block + 1], range_end) : range_end;
+  uint end = block + 1 < u_blocks ? block_starts[block + 1] : uint(u_count);
   if (v + 1u == end) {
-    uint welded_vertices = distinct_before[i] + (representative == v ? 1u : 0u) - distinct_before[start - first];
+    uint welded_vertices = distinct_before[v] + (representative == v ? 1u : 0u) - distinct_before[start];
     dispatches[3 * block] = (welded_vertices + uint(kWorkGroupSize) - 1u) / uint(kWorkGroupSize);
     dispatches[3 * block + 1] = 1u;
     dispatches[3 * block + 2] = 1u;

@@ -1,33 +1,30 @@
-// Welds a range of the surface cache's stored vertices (render/stored_vertex_weld.h): each vertex
-// looks itself up in an open-addressing hash table by its position, normal · 2^kind and the patch
-// and (u, v) it was evaluated at (the canonical patch on a patch edge, a corner's owner: one surface
-// point, evaluated once), and takes as its index the vertex of the same block that is there first
-// with the same words, else inserts itself. Copies on the patches around a point so weld; their
+// Welds the surface cache's stored vertices (render/stored_vertex_weld.h): each vertex looks itself
+// up in an open-addressing hash table by its position, normal · 2^kind and the patch and (u, v) it
+// was evaluated at (the canonical patch on a patch edge, a corner's owner: one surface point,
+// evaluated once), and takes as its index the vertex that is there first with the same words, else
+// inserts itself. Copies on the patches around a point so weld, across blocks too; their
 // tessellation grids differ, and a frame that draws the grid draws the vertices as captured. The
-// draw then fetches and shades each such vertex once, as a welded static buffer's are. A block's
-// vertices weld among themselves only, so that a block can be captured and welded again alone (an
-// edit's refresh). Each vertex also writes whether it is its own index, for the prefix sum that
-// numbers the distinct vertices (shaders/compact_comp.glsl).
+// draw then fetches and shades each such vertex once, as a welded static buffer's are. Each vertex
+// also writes whether it is its own index, for the prefix sum that numbers the distinct vertices
+// (shaders/compact_comp.glsl).
 #include "shaders/compute_pass.glsl"
-#include "shaders/stored_blocks.glsl"
 layout(std430, binding = kBindingStoredVertices) readonly buffer StoredVertices { uint stored[]; };  // 12 words a vertex, 9 drawn
 const int kKeyWords = 9;  // of a stored vertex's 12: position and normal (0–5), patch and (u, v) evaluated (9–11)
 uint key_word(uint v, int k) { return stored[12u * v + uint(k < 6 ? k : k + 3)]; }
 layout(std430, binding = kBindingWeldTable) buffer WeldTable { uint slots[]; };                    // 0 or vertex + 1
 layout(std430, binding = kBindingStoredIndices) writeonly buffer StoredIndices { uint indices[]; };
 layout(std430, binding = kBindingScanValues) writeonly buffer Distinct { uint distinct[]; };  // per range vertex: 1 if its own index
-uniform int u_range_first;  // the range's first vertex; invocation i welds vertex u_range_first + i
-uniform int u_slots;        // table size, at least twice the range: a free slot is always found
+uniform int u_slots;  // table size, at least twice the vertices: a free slot is always found
 
 void keep(uint v, uint index) {
   indices[v] = index;
-  distinct[v - uint(u_range_first)] = index == v ? 1u : 0u;
+  distinct[v] = index == v ? 1u : 0u;
 }
 
 void main() {
   int i = compute_invocation();
   if (i < 0) return;
-  uint v = uint(u_range_first + i), slots_in_table = uint(u_slots);
+  uint v = uint(i), slots_in_table = uint(u_slots);
   uint word[kKeyWords];
   uint hash = 2166136261u;  // FNV-1a over the key's words
   for (int k = 0; k < kKeyWords; ++k) {
@@ -46,7 +43,7 @@ void main() {
     uint w = held - 1u;
     bool same = true;
     for (int k = 0; k < kKeyWords; ++k) same = same && key_word(w, k) == word[k];
-    if (same && block_of(w) == block_of(v)) {
+    if (same) {
       keep(v, w);
       return;
     }

@@ -134,11 +134,12 @@ TEST_P(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
   }
 }
 
-// Welded, a quad patch at uniform level L is fetched as its (L + 1)² grid points: its triangles
-// share them; vertices of different patches differ in their grid coordinates and stay apart. An
-// edit's refresh (uniform levels: its welded vertices evaluated again) keeps as many. Welded when
-// settled, the frame that captures draws the triangles as captured, and the next one welded.
-TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
+// Welded, each point of the surface is fetched once, as the floor's welded buffer has it: the
+// triangles of a patch share its grid points, and the patches (in one block or not) share the
+// points of their edges and corners. An edit's refresh (level 4: its blocks captured and welded
+// again; level 8: their welded vertices evaluated again) keeps as many. Welded when settled, the
+// frame that captures draws the triangles as captured, and the next one welded.
+TEST_P(SurfaceCacheTest, WeldedVerticesAreEachSurfacePointOnce) {
   RenderTarget target(kSize, kSize);
   const CovarianceMesh cube = make_sample("cube");
   SurfaceRenderer renderer;
@@ -149,13 +150,16 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
   for (const int level : {1, 8}) {
     const Camera camera = frame_mesh(cube, 35.0f, 25.0f);
     draw(renderer, target, camera, uniform(float(level)), true);
-    const long long patches = renderer.tables().plans.n_patches(), grid = (level + 1) * (level + 1);
+    const long long patches = renderer.tables().plans.n_patches();
     ASSERT_EQ(cache.triangles(), patches * 2 * level * level);
+    // The cube's surface points at level L: inside its 6 faces, on its 12 edges, its 8 corners.
+    const long long points = 6 * (level - 1) * (level - 1) + 12 * (level - 1) + 8;
     EXPECT_EQ(cache.draws_welded(), welds() && !settles);
-    EXPECT_EQ(cache.distinct_vertices(), welds() && !settles ? patches * grid : 3 * cache.triangles()) << "level " << level;
+    EXPECT_EQ(cache.distinct_vertices(), welds() && !settles ? points : 3 * cache.triangles()) << "level " << level;
     draw(renderer, target, camera, uniform(float(level)), true);
     EXPECT_EQ(cache.draws_welded(), welds());
-    EXPECT_EQ(cache.distinct_vertices(), welds() ? patches * grid : 3 * cache.triangles()) << "level " << level;
+    EXPECT_EQ(cache.distinct_vertices(), welds() ? points : 3 * cache.triangles()) << "level " << level;
+    EXPECT_EQ(cache.stored_triangles().positions.size(), size_t(points)) << "the floor's welded vertices";
   }
   // Level 4: the edit's blocks captured again (and welded again); level 8: evaluated again.
   for (const float level : {4.0f, 8.0f}) {
@@ -165,8 +169,8 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachGridPointOnce) {
     draw(renderer, target, camera, uniform(level), true);
     draw(renderer, target, camera, uniform(level), true);
     const long long distinct = cache.distinct_vertices();
-    if (welds()) {
-      EXPECT_LT(distinct, cache.triangles());  // a quad patch: (L + 1)² of its 6 L² stored
+    if (welds()) {  // each surface point once, as the floor's welded buffer has it
+      EXPECT_EQ(distinct, (long long)cache.stored_triangles().positions.size()) << level;
     }
     const int v = int(sphere.n_vertices() / 2);
     move_vertex(sphere, v, 0.05);
