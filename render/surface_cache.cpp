@@ -20,10 +20,10 @@ SurfaceCache::SurfaceCache() : weld_mode_(software_renderer() ? Weld::when_settl
   glCreateVertexArrays(1, &vao_);
   glCreateVertexArrays(1, &welded_vao_);
   glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kCapturedVertexBytes);
-  glVertexArrayVertexBuffer(welded_vao_, 0, welded_, 0, kVertexBytes);
+  glVertexArrayVertexBuffer(welded_vao_, 0, welded_, 0, kWeldedVertexBytes);
   glVertexArrayElementBuffer(welded_vao_, indices_);
   for (const GLuint vao : {vao_, welded_vao_})
-    for (GLuint a = 0; a < 3; ++a) {
+    for (GLuint a = 0; a < (vao == vao_ ? 3u : 2u); ++a) {  // welded: no grid
       glEnableVertexArrayAttrib(vao, a);
       glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
       glVertexArrayAttribBinding(vao, a, 0);
@@ -392,7 +392,7 @@ void SurfaceCache::weld_now(const std::vector<int>& blocks) {
   if (total > index_capacity_ || 4 * total < index_capacity_) {  // new buffers: every block welded again
     index_capacity_ = std::max(total, 1ll);
     glNamedBufferData(indices_, GLsizeiptr(index_capacity_ * 3 * 4), nullptr, GL_DYNAMIC_COPY);
-    glNamedBufferData(welded_, GLsizeiptr(index_capacity_ * 3 * kVertexBytes), nullptr, GL_DYNAMIC_COPY);
+    glNamedBufferData(welded_, GLsizeiptr(index_capacity_ * 3 * kWeldedVertexBytes), nullptr, GL_DYNAMIC_COPY);
     glNamedBufferData(parameters_, GLsizeiptr(index_capacity_ * 3 * kParameterBytes), nullptr, GL_DYNAMIC_COPY);
     all = true;
   }
@@ -413,8 +413,10 @@ void SurfaceCache::draw(bool grid) const {
   const bool welded = draws_welded() && !grid;  // welded copies of a point had their own grids
   const GLuint vao = welded ? welded_vao_ : vao_;
   // Attribute 2 fetched only for a program that reads it.
-  if (grid) glEnableVertexArrayAttrib(vao, 2);
-  else glDisableVertexArrayAttrib(vao, 2);
+  if (!welded) {
+    if (grid) glEnableVertexArrayAttrib(vao, 2);
+    else glDisableVertexArrayAttrib(vao, 2);
+  }
   glBindVertexArray(vao);
   if (welded) glDrawElements(GL_TRIANGLES, GLsizei(3 * blocks_.total()), GL_UNSIGNED_INT, nullptr);
   else glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * blocks_.total()));

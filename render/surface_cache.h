@@ -52,11 +52,13 @@ public:
       return points == o.points && level == o.level && pixels == o.pixels && debug_mismatch == o.debug_mismatch;
     }
   };
-  /// One drawn vertex: the tessellation evaluation outputs the fragment shader reads.
-  static constexpr int kVertexBytes = 9 * 4;  // position, normal · 2^(node kind), grid (vec3 each)
-  /// One captured vertex: a drawn one, then the patch and (u, v) it was evaluated at (the
+  /// One captured vertex: the tessellation evaluation outputs the fragment shader reads (position,
+  /// normal · 2^(node kind), grid: vec3 each), then the patch and (u, v) it was evaluated at (the
   /// canonical patch on patch edges; shaders/limit_point_tese.glsl), for evaluating it again.
   static constexpr int kCapturedVertexBytes = 12 * 4;
+  /// One welded vertex: position and normal · 2^(node kind); no grid (the copies of a point on a
+  /// patch edge each had their patch's: a frame that draws the grid draws them as captured).
+  static constexpr int kWeldedVertexBytes = 6 * 4;
   /// What a welded vertex keeps of those parameters.
   static constexpr int kParameterBytes = 3 * 4;
   static constexpr long long kDefaultLimitBytes = 512ll << 20;
@@ -146,7 +148,7 @@ public:
   /// triangles past the limit welded are drawn as captured.
   static constexpr int kTriangleBytes = 3 * kCapturedVertexBytes;
   static constexpr int kWeldedTriangleBytes =
-      3 * (kCapturedVertexBytes + kVertexBytes + kParameterBytes + 4 + StoredVertexWeld::kTableBytesPerVertex);
+      3 * (kCapturedVertexBytes + kWeldedVertexBytes + kParameterBytes + 4 + StoredVertexWeld::kTableBytesPerVertex);
 
   void set_hysteresis(float factor) { hysteresis_ = factor; }
   void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
@@ -160,7 +162,7 @@ public:
   long long triangles() const { return blocks_.total(); }
   size_t buffer_bytes() const {
     return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kCapturedVertexBytes +
-           size_t(index_capacity_) * 3 * (kVertexBytes + kParameterBytes + 4) + (weld_ ? weld_->bytes() : 0);
+           size_t(index_capacity_) * 3 * (kWeldedVertexBytes + kParameterBytes + 4) + (weld_ ? weld_->bytes() : 0);
   }
 
 private:

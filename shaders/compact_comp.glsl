@@ -1,6 +1,6 @@
 // Numbers the welded distinct vertices block by block (render/stored_vertex_weld.h): a vertex that
-// is its own index is copied (its drawn words, and apart the patch and parameters it was evaluated
-// at) to its block's first vertex plus the number of distinct vertices before it in the block
+// is its own index is copied (its position and normal, and apart the patch and parameters it was
+// evaluated at) to its block's first vertex plus the number of distinct vertices before it in the block
 // (from the exclusive prefix sum of shaders/weld_comp.glsl's flags), and every vertex's index
 // becomes its representative's number (the representative may lie in another block). The welded
 // vertices of a block thus lie together, in the order they were captured, as a welded static
@@ -10,7 +10,7 @@
 layout(std430, binding = kBindingStoredVertices) readonly buffer StoredVertices { uint stored[]; };  // 12 words a vertex
 layout(std430, binding = kBindingStoredIndices) buffer StoredIndices { uint indices[]; };
 layout(std430, binding = kBindingScanValues) readonly buffer DistinctBefore { uint distinct_before[]; };  // per range vertex
-layout(std430, binding = kBindingWeldedVertices) writeonly buffer WeldedVertices { uint welded[]; };       // 9 words a vertex
+layout(std430, binding = kBindingWeldedVertices) writeonly buffer WeldedVertices { uint welded[]; };       // 6 words a vertex
 layout(std430, binding = kBindingWeldedParameters) writeonly buffer WeldedParameters { uint parameters[]; };  // 3 words a vertex
 layout(std430, binding = kBindingWeldedDispatches) writeonly buffer WeldedDispatches { uint dispatches[]; };  // 3 words a block
 
@@ -23,7 +23,7 @@ void main() {
   uint number = representative_start + distinct_before[representative] - distinct_before[representative_start];
   indices[v] = number;
   if (representative == v) {
-    for (uint k = 0u; k < 9u; ++k) welded[9u * number + k] = stored[12u * v + k];
+    for (uint k = 0u; k < 6u; ++k) welded[6u * number + k] = stored[12u * v + k];
     for (uint k = 0u; k < 3u; ++k) parameters[3u * number + k] = stored[12u * v + 9u + k];
   }
   // The block's last vertex: the work groups that evaluate its welded vertices again

@@ -6,7 +6,7 @@
 // One indirect dispatch for all listed blocks: a work group finds its block by its first group
 // (shaders/evaluation_groups_comp.glsl).
 layout(local_size_x = kWorkGroupSize) in;
-layout(std430, binding = kBindingWeldedVertices) buffer WeldedVertices { float welded[]; };                  // 9 floats a vertex
+layout(std430, binding = kBindingWeldedVertices) buffer WeldedVertices { float welded[]; };                  // 6 floats a vertex
 layout(std430, binding = kBindingWeldedParameters) readonly buffer WeldedParameters { float parameters[]; };  // patch, u, v
 layout(std430, binding = kBindingEvaluationBlocks) readonly buffer EvaluationBlocks { int blocks[]; };  // block, first vertex, bound
 layout(std430, binding = kBindingEvaluationGroups) readonly buffer EvaluationGroups { uint groups[]; };  // dispatch, then first groups
@@ -50,7 +50,7 @@ void main() {
   limit_point(patch_id, uv, corner_at(uv), mu, normal, kind);
   vec3 stored_normal = ldexp(normal, ivec3(kind));
   for (uint k = 0u; k < 3u; ++k) {
-    welded[9u * v + k] = mu[k];
-    welded[9u * v + 3u + k] = stored_normal[k];
+    welded[6u * v + k] = mu[k];
+    welded[6u * v + 3u + k] = stored_normal[k];
   }
 }

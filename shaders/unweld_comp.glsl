@@ -6,11 +6,11 @@
 #include "shaders/copy_runs.glsl"
 layout(std430, binding = kBindingStoredVertices) buffer StoredVertices { uint stored[]; };  // 12 words a vertex
 layout(std430, binding = kBindingStoredIndices) readonly buffer StoredIndices { uint indices[]; };
-layout(std430, binding = kBindingWeldedVertices) readonly buffer WeldedVertices { uint welded[]; };  // 9 words a vertex
+layout(std430, binding = kBindingWeldedVertices) readonly buffer WeldedVertices { uint welded[]; };  // 6 words a vertex
 
 void main() {
   int i = compute_invocation();
   if (i < 0) return;
   uint v = run_vertex(i), w = indices[v];
-  for (uint k = 0u; k < 6u; ++k) stored[12u * v + k] = welded[9u * w + k];
+  for (uint k = 0u; k < 6u; ++k) stored[12u * v + k] = welded[6u * w + k];
 }
