@@ -32,14 +32,13 @@ void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blo
   GLint max_groups = 0;
   glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups);
   if (group_limit > 0) max_groups = std::min(max_groups, group_limit);
-  // The blocks in runs that fit a dispatch: a block's welded vertices are fewer than a third of its
-  // capture slots (evaluated from level 8 on: a quad patch at level L has (L + 1)² of 6 L², a
-  // half-size one at ⌈L/2⌉ and a triangle at L alike), so many work groups at most.
+  // The blocks in runs that fit a dispatch: a block's welded vertices are fewer than its bound, so
+  // many work groups at most.
   for (size_t begin = 0; begin < blocks.size();) {
     size_t end = begin;
     long long groups = 0;
     while (end < blocks.size()) {
-      const long long most = (blocks[end].bound / 3 + gpu::kWorkGroupSize - 1) / gpu::kWorkGroupSize;
+      const long long most = (blocks[end].bound + gpu::kWorkGroupSize - 1) / gpu::kWorkGroupSize;
       if (end > begin && groups + most > max_groups) break;
       groups += most;
       ++end;

@@ -268,8 +268,9 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
 }
 
 // The welded vertices of `blocks` evaluated again, and the captured ones copied from them. A block's
-// welded vertices are fewer than its capture slots; from uniform level 8 on, fewer than a third
-// (render/stored_vertex_evaluation.cpp).
+// welded vertices are fewer than its capture slots; from uniform level 8 on, fewer than a third (a
+// quad patch at level L has (L + 1)² of 6 L², a half-size one at ⌈L/2⌉ and a triangle at L alike):
+// the bound that sizes the evaluation's dispatches.
 void SurfaceCache::evaluate_again(const std::vector<int>& blocks, bool uniform, const EvaluateWelded& evaluate_welded) {
   std::vector<StoredVertexEvaluation::Block> listed;
   std::vector<StoredVertexWeld::Range> ranges;
