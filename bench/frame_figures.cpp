@@ -37,7 +37,7 @@ nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptio
     const FrameTiming patches = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
     o.surface_cache = true;
     const FrameTiming cached = time_gl_work([&] { renderer.draw(target, camera, o); }, repeats);
-    const size_t cache_bytes = renderer.surface_cache().buffer_bytes();
+    const size_t cache_bytes = renderer.surface_cache_bytes();
     const bool cache_held = renderer.surface_cache().holds_triangles();
     // The floor draws exactly the cached triangles; past the cache's limit, those of the CPU
     // tessellation (uniform levels; adaptive ones then have no floor).

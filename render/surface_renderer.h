@@ -67,6 +67,8 @@ public:
   /// The stored triangles of DrawOptions::surface_cache (its capture count, hysteresis, limit).
   SurfaceCache& surface_cache() { return cache_; }
   const SurfaceCache& surface_cache() const { return cache_; }
+  /// The surface cache's GPU buffers and the levels its adaptive capture recorded.
+  size_t surface_cache_bytes() const { return cache_.buffer_bytes() + stored_levels_.bytes(); }
 
   /// Times the compute passes ("9D + stencils") and each drawn layer ("surface", "ellipsoids",
   /// "mesh lines") into `timer`; nullptr (the default) times nothing.
