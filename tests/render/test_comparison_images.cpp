@@ -154,7 +154,9 @@ TEST_F(ComparisonImages, AreBlackOnTheConesUnderLoop) {
     const Aovs reference = draw(renderer, camera, true);
     const bool needle = std::string(name) == "cone-concave" || std::string(name) == "cone-pointy";
     const double mean = expect_black(name, gpu, reference, needle ? 0.9 : 0.01);
-    if (needle) EXPECT_LE(mean, 5e-5) << name;
+    if (needle) {
+      EXPECT_LE(mean, 5e-5) << name;
+    }
   }
 }
 

@@ -238,7 +238,9 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
         ASSERT_EQ(cache.refreshes(), refreshes + 1) << what;
         evaluated += cache.evaluated_patches();
         captured_again += cache.refreshed_patches() - cache.evaluated_patches();
-        if (o.pixels <= 0) EXPECT_EQ(cache.evaluated_patches(), cache.refreshed_patches()) << what;
+        if (o.pixels <= 0) {
+          EXPECT_EQ(cache.evaluated_patches(), cache.refreshed_patches()) << what;
+        }
         const TriangleMesh refreshed = cache.stored_triangles();
         draw(renderer, target, camera, uniform(2), true);
         draw(renderer, target, camera, o, true);  // the same points captured
@@ -247,7 +249,9 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
       }
     }
     EXPECT_GT(evaluated, 0);
-    if (o.pixels > 0) EXPECT_GT(captured_again, 0) << "no edit changed adaptive levels";
+    if (o.pixels > 0) {
+      EXPECT_GT(captured_again, 0) << "no edit changed adaptive levels";
+    }
     std::printf("%s: %d patches evaluated again, %d captured again\n", o.pixels > 0 ? "adaptive" : "uniform", evaluated, captured_again);
   }
 }
