@@ -9,7 +9,7 @@
 #include "shaders/stored_blocks.glsl"
 layout(std430, binding = kBindingStoredVertices) readonly buffer StoredVertices { uint stored[]; };  // 12 words a vertex
 layout(std430, binding = kBindingStoredIndices) buffer StoredIndices { uint indices[]; };
-layout(std430, binding = kBindingScanValues) readonly buffer DistinctBefore { uint distinct_before[]; };  // per range vertex
+layout(std430, binding = kBindingScanValues) readonly buffer DistinctBefore { uint distinct_before[]; };  // per vertex
 layout(std430, binding = kBindingWeldedVertices) writeonly buffer WeldedVertices { uint welded[]; };       // 6 words a vertex
 layout(std430, binding = kBindingWeldedParameters) writeonly buffer WeldedParameters { uint parameters[]; };  // 3 words a vertex
 layout(std430, binding = kBindingWeldedDispatches) writeonly buffer WeldedDispatches { uint dispatches[]; };  // 3 words a block

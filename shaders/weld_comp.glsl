@@ -13,7 +13,7 @@ const int kKeyWords = 9;  // of a stored vertex's 12: position and normal (0–5
 uint key_word(uint v, int k) { return stored[12u * v + uint(k < 6 ? k : k + 3)]; }
 layout(std430, binding = kBindingWeldTable) buffer WeldTable { uint slots[]; };                    // 0 or vertex + 1
 layout(std430, binding = kBindingStoredIndices) writeonly buffer StoredIndices { uint indices[]; };
-layout(std430, binding = kBindingScanValues) writeonly buffer Distinct { uint distinct[]; };  // per range vertex: 1 if its own index
+layout(std430, binding = kBindingScanValues) writeonly buffer Distinct { uint distinct[]; };  // per vertex: 1 if its own index
 uniform int u_slots;  // table size, at least twice the vertices: a free slot is always found
 
 void keep(uint v, uint index) {
