@@ -23,7 +23,7 @@
 // adaptive ones where the level check finds every patch's levels unchanged under the capture's
 // camera, render/stored_patch_levels.h) and the vertices are welded, a compute pass evaluates its
 // welded vertices again at the parameters they were captured at (render/stored_vertex_evaluation.h):
-// each point once, on all of llvmpipe's threads; at uniform levels only from kEvaluatedFromLevel.
+// each point once, on all of llvmpipe's threads; at uniform levels only from evaluated_from_level().
 // The other stale blocks are captured again, under the camera of the capture, into a scratch buffer,
 // and copied into place (or, where adaptive levels changed a block's count, the clean and the new
 // blocks are assembled in a spare buffer, which then becomes the stored one); where over half of the
@@ -62,11 +62,15 @@ public:
   /// What a welded vertex keeps of those parameters.
   static constexpr int kParameterBytes = 3 * 4;
   static constexpr long long kDefaultLimitBytes = 512ll << 20;
-  /// From this uniform level on, an edit evaluates the welded vertices again instead of capturing
-  /// its blocks again: below, its three compute passes cost more than the capture (llvmpipe, edit
-  /// over the floor, capture / evaluation: cylinder level 1 1.25 / 1.54, level 4 1.38 / 1.54,
-  /// level 16 1.89 / 1.64, level 64 2.84 / 1.96).
-  static constexpr float kEvaluatedFromLevel = 8.0f;
+  /// Where the weld waits for a still frame (llvmpipe), an edit evaluates the welded vertices again
+  /// instead of capturing its blocks again only from this uniform level on: below, its three compute
+  /// passes cost more than the capture (llvmpipe, edit over the floor, capture / evaluation: cylinder
+  /// level 1 1.25 / 1.54, level 4 1.38 / 1.54, level 16 1.89 / 1.64, level 64 2.84 / 1.96).
+  static constexpr float kSettledEvaluatedFromLevel = 8.0f;
+  /// From a uniform level of 8 on, a block's welded vertices are fewer than a third of its capture
+  /// slots (a quad patch at level L has (L + 1)² of 6 L², a half-size one at ⌈L/2⌉ and a triangle at L
+  /// alike), the bound that sizes the evaluation's dispatches; below, all of its slots.
+  static constexpr float kThirdOfSlotsFromLevel = 8.0f;
   /// When the stored vertices are welded: never, after each capture and refresh, or by the first
   /// frame that draws them unchanged (settle()).
   enum class Weld { off, at_capture, when_settled };
@@ -111,8 +115,12 @@ public:
   /// At adaptive levels: per block (its patches listed), whether an edit changed any patch's levels
   /// under the capture's camera (render/stored_patch_levels.h, recorded at each adaptive capture).
   using LevelsChanged = std::function<std::vector<char>(const std::vector<StoredPatchLevels::Block>& blocks)>;
+  /// The uniform level from which an edit evaluates welded vertices again: kSettledEvaluatedFromLevel
+  /// where the weld waits for a still frame; every level where it welds at capture (a GPU's frames
+  /// are short, and its transform feedback costs more than the compute passes).
+  float evaluated_from_level() const { return weld_mode_ == Weld::when_settled ? kSettledEvaluatedFromLevel : 0.0f; }
   /// Brings the stale blocks to `key`. Blocks whose tessellation stays (uniform levels from
-  /// kEvaluatedFromLevel; adaptive ones that `levels_changed` leaves alone) with the vertices welded:
+  /// evaluated_from_level(); adaptive ones that `levels_changed` leaves alone) with the vertices welded:
   /// by evaluating the welded vertices again (`evaluate_welded`, where given). The others by
   /// capturing them again, for which the caller has set the capture camera below in the program's
   /// uniforms. False where capturing them again is not worth it (over half of the patches) or did
@@ -175,7 +183,7 @@ private:
   /// where `known`, those stored); false where the buffer was full (and some triangles may be missing).
   bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks, const DrawPatches& draw_patches,
                       std::vector<long long>& counts, bool rasterize = false, bool known = false);
-  void evaluate_again(const std::vector<int>& blocks, bool uniform, const EvaluateWelded& evaluate_welded);
+  void evaluate_again(const std::vector<int>& blocks, bool third, const EvaluateWelded& evaluate_welded);
   bool capture_again(const std::vector<int>& blocks, const DrawPatches& draw_patches, bool kept);
   /// Counts a refresh: the stale blocks are fresh, the stored triangles those of `key`.
   bool refreshed(const Key& key);

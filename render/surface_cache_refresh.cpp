@@ -27,8 +27,8 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
     for (size_t i = 0; i < stale.size(); ++i) kept[i] = !changed[i];
   }
   // Kept blocks with welded vertices are evaluated again where they are (render/stored_vertex_evaluation.h)
-  // from uniform level kEvaluatedFromLevel on, and at adaptive levels; the others captured again.
-  const bool evaluate = evaluate_welded && draws_welded() && (!uniform || key.level >= kEvaluatedFromLevel);
+  // from uniform level evaluated_from_level() on, and at adaptive levels; the others captured again.
+  const bool evaluate = evaluate_welded && draws_welded() && (!uniform || key.level >= evaluated_from_level());
   std::vector<int> evaluated, captured;
   bool captured_kept = true;
   int captured_patches = 0;
@@ -47,7 +47,7 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   // too where it changed (core/patch_readers.h: an edit's patches and their neighbours). So with
   // some blocks captured again, the welded vertices of all stale blocks are evaluated, that the
   // evaluated blocks' copies of them are current.
-  if (!evaluated.empty()) evaluate_again(captured.empty() ? evaluated : stale, uniform, evaluate_welded);
+  if (!evaluated.empty()) evaluate_again(captured.empty() ? evaluated : stale, uniform && key.level >= kThirdOfSlotsFromLevel, evaluate_welded);
   glUseProgram(GLuint(capture_program));
   evaluated_patches_ = blocks_.stale_patches() - captured_patches;
   if (!captured.empty() && !capture_again(captured, draw_patches, captured_kept)) return false;
@@ -58,15 +58,14 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
 }
 
 // The welded vertices of `blocks` evaluated again, and the captured ones copied from them. A block's
-// welded vertices are fewer than its capture slots; from uniform level 8 on, fewer than a third (a
-// quad patch at level L has (L + 1)² of 6 L², a half-size one at ⌈L/2⌉ and a triangle at L alike):
-// the bound that sizes the evaluation's dispatches.
-void SurfaceCache::evaluate_again(const std::vector<int>& blocks, bool uniform, const EvaluateWelded& evaluate_welded) {
+// welded vertices are fewer than its capture slots; `third`: fewer than a third of them
+// (kThirdOfSlotsFromLevel), the bound that sizes the evaluation's dispatches.
+void SurfaceCache::evaluate_again(const std::vector<int>& blocks, bool third, const EvaluateWelded& evaluate_welded) {
   std::vector<StoredVertexEvaluation::Block> listed;
   std::vector<StoredVertexWeld::Range> ranges;
   for (const int b : blocks) {
     const long long first = 3 * blocks_.first_triangle(b), slots = 3 * blocks_.triangles(b);
-    listed.push_back({b, first, uniform ? slots / 3 : slots});
+    listed.push_back({b, first, third ? slots / 3 : slots});
     ranges.push_back({first, slots});
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_);

@@ -161,7 +161,8 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachSurfacePointOnce) {
     EXPECT_EQ(cache.distinct_vertices(), welds() ? points : 3 * cache.triangles()) << "level " << level;
     EXPECT_EQ(cache.stored_triangles().positions.size(), size_t(points)) << "the floor's welded vertices";
   }
-  // Level 4: the edit's blocks captured again (and welded again); level 8: evaluated again.
+  // Level 4: the edit's blocks captured again (and welded again) where the weld waits for a still
+  // frame, else evaluated again; level 8: evaluated again.
   for (const float level : {4.0f, 8.0f}) {
     CovarianceMesh sphere = make_sample("sphere", 3000);
     renderer.set_mesh(sphere);
@@ -178,7 +179,7 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachSurfacePointOnce) {
     renderer.update_vertices(sphere, {v});
     draw(renderer, target, camera, uniform(level), true);
     EXPECT_EQ(cache.refreshes(), refreshes + 1);
-    EXPECT_EQ(cache.draws_welded(), welds() && (!settles || level >= SurfaceCache::kEvaluatedFromLevel)) << level;
+    EXPECT_EQ(cache.draws_welded(), welds() && (!settles || level >= cache.evaluated_from_level())) << level;
     const Frame settled = draw(renderer, target, camera, uniform(level), true);
     EXPECT_EQ(cache.refreshes(), refreshes + 1);
     EXPECT_EQ(cache.distinct_vertices(), distinct) << level;
@@ -202,12 +203,15 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachSurfacePointOnce) {
 // the stored triangles are what a capture of the edited points stores, bit for bit (patch edges and
 // corners included, which both sides must keep alike), for quad patches with half-size ones (the
 // pawn) and Loop's triangles. At uniform levels an edit of every vertex too, with the work groups
-// per dispatch lowered to 64 (several dispatches). At adaptive ones a covariance scaled (levels
-// kept) and vertices moved (some blocks' levels change: captured again beside the evaluated ones).
+// per dispatch lowered to 64 (several dispatches); level 2 where the weld is at capture (more welded
+// vertices than a third of the slots). At adaptive ones a covariance scaled (levels kept) and
+// vertices moved (some blocks' levels change: captured again beside the evaluated ones).
 TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
   if (!welds()) GTEST_SKIP() << "edits are captured again without a weld";
   RenderTarget target(kSize, kSize);
-  for (const DrawOptions& o : {uniform(8), adaptive(4)}) {
+  std::vector<DrawOptions> settings = {uniform(8), adaptive(4)};
+  if (GetParam() == SurfaceCache::Weld::at_capture) settings.push_back(uniform(2));
+  for (const DrawOptions& o : settings) {
     int evaluated = 0, captured_again = 0;  // patches, over the edits
     for (const char* name : {"pawn", "icosphere", "cube"}) {
       CovarianceMesh mesh = make_sample(name);
@@ -223,7 +227,8 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
           o.pixels > 0 ? std::vector<std::vector<int>>{{n / 2}, {n / 2, n / 3}} : std::vector<std::vector<int>>{{n / 2, n / 3}, every};
       for (size_t e = 0; e < edits.size(); ++e) {
         const std::vector<int>& edited = edits[e];
-        const std::string what = std::string(name) + (o.pixels > 0 ? " adaptive" : " level 8") + ", edit " + std::to_string(e);
+        const std::string what =
+            std::string(name) + (o.pixels > 0 ? " adaptive" : " level " + std::to_string(int(o.level))) + ", edit " + std::to_string(e);
         if (edited.size() > 2) renderer.lower_device_limits(64, 0);
         draw(renderer, target, camera, o, true);
         draw(renderer, target, camera, o, true);  // settled
@@ -242,7 +247,7 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
           EXPECT_EQ(cache.evaluated_patches(), cache.refreshed_patches()) << what;
         }
         const TriangleMesh refreshed = cache.stored_triangles();
-        draw(renderer, target, camera, uniform(2), true);
+        draw(renderer, target, camera, uniform(3), true);
         draw(renderer, target, camera, o, true);  // the same points captured
         ASSERT_EQ(cache.captures(), captures + 2) << what;
         EXPECT_TRUE(same_triangles(refreshed, cache.stored_triangles())) << what;
@@ -252,7 +257,8 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
     if (o.pixels > 0) {
       EXPECT_GT(captured_again, 0) << "no edit changed adaptive levels";
     }
-    std::printf("%s: %d patches evaluated again, %d captured again\n", o.pixels > 0 ? "adaptive" : "uniform", evaluated, captured_again);
+    std::printf("%s: %d patches evaluated again, %d captured again\n", o.pixels > 0 ? "adaptive" : ("level " + std::to_string(int(o.level))).c_str(),
+                evaluated, captured_again);
   }
 }
 
@@ -376,8 +382,9 @@ TEST_P(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
         EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false))) << what << ", " << edited.size() << " vertices";
       }
       // The cube's every patch reads every vertex: captured whole, unless its welded vertices are
-      // evaluated again (uniform levels from 8). The others: only the edits' blocks.
-      const bool partial = std::string(name) != "cube" || (welds() && o.pixels <= 0 && o.level >= SurfaceCache::kEvaluatedFromLevel);
+      // evaluated again (uniform levels from evaluated_from_level()). The others: only the edits' blocks.
+      const bool partial =
+          std::string(name) != "cube" || (welds() && o.pixels <= 0 && o.level >= renderer.surface_cache().evaluated_from_level());
       EXPECT_EQ(renderer.surface_cache().captures(), partial ? 1 : 3) << what;
       EXPECT_EQ(renderer.surface_cache().refreshes(), partial ? 2 : 0) << what;
       // Uniform levels keep every block's count; adaptive ones here change some (a new buffer is assembled).
