@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <iterator>
 
+#include "render/device_memory.h"
 #include "render/gl_context.h"
 
 namespace gps {
 
-SurfaceCache::SurfaceCache() : weld_mode_(software_renderer() ? Weld::when_settled : Weld::at_capture) {
+SurfaceCache::SurfaceCache()
+    : weld_mode_(software_renderer() ? Weld::when_settled : Weld::at_capture),
+      limit_bytes_(std::max(kLeastLimitBytes, device_memory_bytes() / kDeviceMemoryShare)) {
   glCreateBuffers(1, &buffer_);
   glCreateBuffers(1, &scratch_);
   glCreateBuffers(1, &spare_);

@@ -61,7 +61,10 @@ public:
   static constexpr int kWeldedVertexBytes = 6 * 4;
   /// What a welded vertex keeps of those parameters.
   static constexpr int kParameterBytes = 3 * 4;
-  static constexpr long long kDefaultLimitBytes = 512ll << 20;
+  /// The memory limit: a sixteenth of the device's memory (render/device_memory.h; a GPU's, or the
+  /// machine's for llvmpipe), at least kLeastLimitBytes.
+  static constexpr long long kLeastLimitBytes = 512ll << 20;
+  static constexpr int kDeviceMemoryShare = 16;
   /// Where the weld waits for a still frame (llvmpipe), an edit evaluates the welded vertices again
   /// instead of capturing its blocks again only from this uniform level on: below, its three compute
   /// passes cost more than the capture (llvmpipe, edit over the floor, capture / evaluation: cylinder
@@ -160,6 +163,7 @@ public:
 
   void set_hysteresis(float factor) { hysteresis_ = factor; }
   void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
+  long long limit_bytes() const { return limit_bytes_; }
   /// Full captures so far (tests: a frame that should draw stored triangles must not add one).
   int captures() const { return captures_; }
   /// Refreshes so far, and the patches the last one brought up to date (those of its stale blocks).
@@ -212,7 +216,7 @@ private:
   std::vector<glm::vec3> cage_positions_;
   std::vector<unsigned> cage_edges_;  // index pairs
   float hysteresis_ = 1.25f;
-  long long limit_bytes_ = kDefaultLimitBytes;
+  long long limit_bytes_;
   int captures_ = 0, refreshes_ = 0, refreshed_patches_ = 0, evaluated_patches_ = 0;
 };
 

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "core/samples.h"
+#include "render/device_memory.h"
+#include "render/gl_context.h"
 #include "render/render_target.h"
 #include "render/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
@@ -330,6 +332,18 @@ TEST_P(SurfaceCacheTest, AdaptiveLevelsRecaptureOnlyBeyondTheHysteresis) {
   // A different target edge length is a different key.
   draw(renderer, target, turned, adaptive(8), true);
   EXPECT_EQ(renderer.surface_cache().captures(), 5);
+}
+
+// The memory limit follows the device's memory (on llvmpipe the machine's, which is always known).
+using SurfaceCacheLimit = test::GlTest;
+
+TEST_F(SurfaceCacheLimit, IsAShareOfTheDevicesMemory) {
+  const long long device = device_memory_bytes();
+  if (software_renderer()) {
+    EXPECT_GT(device, 1ll << 30) << "the machine's physical memory";
+  }
+  const SurfaceCache cache;
+  EXPECT_EQ(cache.limit_bytes(), std::max(SurfaceCache::kLeastLimitBytes, device / SurfaceCache::kDeviceMemoryShare));
 }
 
 TEST_P(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
