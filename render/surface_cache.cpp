@@ -12,7 +12,7 @@ namespace gps {
 
 SurfaceCache::SurfaceCache()
     : weld_mode_(software_renderer() ? Weld::when_settled : Weld::at_capture),
-      limit_bytes_(std::max(kLeastLimitBytes, device_memory_bytes() / kDeviceMemoryShare)) {
+      limit_bytes_(std::clamp(device_memory_bytes() / kDeviceMemoryShare, kLeastLimitBytes, kMostLimitBytes)) {
   glCreateBuffers(1, &buffer_);
   glCreateBuffers(1, &scratch_);
   glCreateBuffers(1, &spare_);

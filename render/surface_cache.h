@@ -62,8 +62,11 @@ public:
   /// What a welded vertex keeps of those parameters.
   static constexpr int kParameterBytes = 3 * 4;
   /// The memory limit: a sixteenth of the device's memory (render/device_memory.h; a GPU's, or the
-  /// machine's for llvmpipe), at least kLeastLimitBytes.
+  /// machine's for llvmpipe), at least kLeastLimitBytes and at most kMostLimitBytes, which keeps
+  /// every buffer under 2 GiB: transform feedback into a larger one ended early on NVIDIA's driver
+  /// (580, H100: of a 5.3 GB buffer it filled 1.05 GB, the wrap past 4 GiB, and counted only those).
   static constexpr long long kLeastLimitBytes = 512ll << 20;
+  static constexpr long long kMostLimitBytes = (2ll << 30) - 1;
   static constexpr int kDeviceMemoryShare = 16;
   /// Where the weld waits for a still frame (llvmpipe), an edit evaluates the welded vertices again
   /// instead of capturing its blocks again only from this uniform level on: below, its three compute

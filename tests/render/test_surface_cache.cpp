@@ -343,7 +343,7 @@ TEST_F(SurfaceCacheLimit, IsAShareOfTheDevicesMemory) {
     EXPECT_GT(device, 1ll << 30) << "the machine's physical memory";
   }
   const SurfaceCache cache;
-  EXPECT_EQ(cache.limit_bytes(), std::max(SurfaceCache::kLeastLimitBytes, device / SurfaceCache::kDeviceMemoryShare));
+  EXPECT_EQ(cache.limit_bytes(), std::clamp(device / SurfaceCache::kDeviceMemoryShare, SurfaceCache::kLeastLimitBytes, SurfaceCache::kMostLimitBytes));
 }
 
 TEST_P(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
