@@ -12,7 +12,7 @@ void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3
   float w[12], ws[12], wt[12];
   if (kind == kNodeRegular) {
     loop_box_spline_basis(u, v, w, ws, wt);
-    g_anchor = point_anchor(nodes[node + 1]);
+    g_anchor = point_anchor(heaviest_point(node + 1, w));
     for (int j = 0; j < 12; ++j) add_point(nodes[node + 1 + j], w[j], ws[j], wt[j], qa, qb, qc, ua, ub, uc, va, vb, vc);
     dual_to_surface(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
     return;

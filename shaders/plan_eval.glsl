@@ -14,6 +14,25 @@ layout(std430, binding = kBindingEvTables) readonly buffer EvTables { float ev_t
 
 vec3 g_anchor = vec3(0.0);  // what the sums are taken about: set before the first add_point of an evaluation
 
+// The point of a leaf's net (n points from nodes[net]) weighing most in its sum at these weights,
+// |w| tr q̂: the sums' anchor. About it the heaviest term is its own small offset y, not q̂ times a
+// distance between anchors, which kept too few digits in float where a needle's apex (q̂ ~ 1e5 I)
+// is in the net: Loop's needle cones were 0.011° off the CPU, 0.004° so, and 56 % of cone-concave's
+// ×5000 normal image lit at 8/255, 3.0 % so. In a quad leaf at a boundary, phantom points included
+// (core/patch_basis.h). Costs llvmpipe's live frames about 5 %.
+#define GPS_HEAVIEST_POINT(n)                                  \
+  int heaviest = nodes[net];                                   \
+  float most = -1.0;                                           \
+  for (int k = 0; k < n; ++k) {                                \
+    int p = nodes[net + k];                                    \
+    float weight = abs(w[k]) * abs(point_precision_trace(p));  \
+    heaviest = weight > most ? p : heaviest;                   \
+    most = max(most, weight);                                  \
+  }                                                            \
+  return heaviest;
+int heaviest_point(int net, float w[16]) { GPS_HEAVIEST_POINT(16) }  // a quad leaf's net
+int heaviest_point(int net, float w[12]) { GPS_HEAVIEST_POINT(12) }  // a box spline's
+
 // μ and its tangents (thesis Eq. 3.12) from q, q_u, q_v about g_anchor (three vec4 each), derivatives
 // times `scale`: with y = q̄ − q̂ c, μ − c = [q̂]⁻¹ y and μ_u = [q̂]⁻¹ (y_u − [q̂_u] (μ − c)).
 void dual_to_surface(vec4 qa, vec4 qb, vec4 qc, vec4 ua, vec4 ub, vec4 uc, vec4 va, vec4 vb, vec4 vc, float scale,
@@ -45,7 +64,17 @@ void evaluate_extraordinary_node(int node, bool quad, float u, float v, out vec4
   int first_row, steps;
   int n_rows = extraordinary_rows(quad, nodes[node + 1], u, v, false, first_row, steps, w, ws, wt, d, scale);
   int rows = nodes[node + 2] + first_row * k;
-  g_anchor = point_anchor(nodes[node + 4]);
+  // The anchor: the ring's point of the most precision, as heaviest_point() (its weights are
+  // known only in the loop below).
+  int anchor_point = nodes[node + 4];
+  float most = -1.0;
+  for (int i = 0; i < k; ++i) {
+    int p = nodes[node + 4 + i];
+    float trace = abs(point_precision_trace(p));
+    anchor_point = trace > most ? p : anchor_point;
+    most = max(most, trace);
+  }
+  g_anchor = point_anchor(anchor_point);
   qa = vec4(0.0); qb = vec4(0.0); qc = vec4(0.0);
   vec4 sa = vec4(0.0), sb = vec4(0.0), sc = vec4(0.0), ta = vec4(0.0), tb = vec4(0.0), tc = vec4(0.0);
   for (int i = 0; i < k; ++i) {
@@ -81,21 +110,7 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
   qa = vec4(0.0); qb = vec4(0.0); qc = vec4(0.0);
   ua = vec4(0.0); ub = vec4(0.0); uc = vec4(0.0);
   va = vec4(0.0); vb = vec4(0.0); vc = vec4(0.0);
-  // The sums' anchor: the first point's; in a boundary leaf, whose basis takes in phantom points
-  // (p₋₁ = 2p₀ − p₁), that of the middle point weighing most (|w| tr q̂), as a stencil row's
-  // (stencil_comp.glsl): the point inside can be far heavier than the one on the boundary.
-  int anchor_point = nodes[node + 1];
-  if (boundary != 0) {
-    float most = 0.0;
-    for (int m = 0; m < 4; ++m) {
-      int k = m < 2 ? 5 + m : 7 + m;  // slots 5, 6, 9, 10: the net's middle 2×2
-      int p = nodes[node + 1 + k];
-      float weight = abs(w[k]) * abs(point_precision_trace(p));
-      anchor_point = weight > most ? p : anchor_point;
-      most = max(most, weight);
-    }
-  }
-  g_anchor = point_anchor(anchor_point);
+  g_anchor = point_anchor(heaviest_point(node + 1, w));
   for (int k = 0; k < 16; ++k) add_point(nodes[node + 1 + k], w[k], wdu[k], wdv[k], qa, qb, qc, ua, ub, uc, va, vb, vc);
   dual_to_surface(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
 }

@@ -137,11 +137,14 @@ TriangleMesh exact_at_gpu_vertices(SurfaceRenderer& renderer, const CovarianceMe
 }
 
 // The triangle samples under their own scheme, Loop, with the bounds above: black but for the normals
-// of the two cones with a needle apex (covariance 1e-5, q̂ ~ 1e5 I). There the GPU's float normals
-// are off by 2.1e-5 and 2.3e-5 on average (largest 1.2e-4 and 1.6e-2), over the 6e-6 that 8/255
-// shows at ×5000: 78 % and 56 % of their pixels (as Catmull-Clark 0.37 % and 3.0 %). The apex weighs
-// in every box spline of its ring's patches, so float's rounding of its q̂ reaches them all. Those
-// two are held to what they measure (issue 11 leaves it open).
+// of the two cones with a needle apex (covariance 1e-5, q̂ ~ 1e5 I). The apex weighs in every box
+// spline of its ring's patches. While each leaf's sums were taken about its first point's anchor,
+// the apex's term q̂ (a − c) ~ 1e5 kept too few digits in float: normals 2.1e-5 and 2.3e-5 off on
+// average, 78 % and 56 % of the pixels at 8/255. About the heaviest point's anchor
+// (shaders/plan_eval.glsl) cone-concave measures 3.0 % (as Catmull-Clark, with the same bound), and
+// cone-pointy 53 %, mean 9.8e-6: its rest lies on the patches' outer edges in the apex's
+// extraordinary nodes, where a float emulation of the sums on the CPU is as far off with the sums in
+// double: the rounding of the points and weights themselves, not of the sums (issue 11 leaves it open).
 TEST_F(ComparisonImages, AreBlackOnTheConesUnderLoop) {
   const PlanOptions options{Scheme::loop};
   for (const char* name : {"cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder", "icosphere"}) {
@@ -152,10 +155,10 @@ TEST_F(ComparisonImages, AreBlackOnTheConesUnderLoop) {
     const Aovs gpu = draw(renderer, camera, false);
     renderer.set_triangles(exact_at_gpu_vertices(renderer, mesh, options, camera));
     const Aovs reference = draw(renderer, camera, true);
-    const bool needle = std::string(name) == "cone-concave" || std::string(name) == "cone-pointy";
-    const double mean = expect_black(name, gpu, reference, needle ? 0.9 : 0.01);
-    if (needle) {
-      EXPECT_LE(mean, 5e-5) << name;
+    const bool pointy = std::string(name) == "cone-pointy", concave = std::string(name) == "cone-concave";
+    const double mean = expect_black(name, gpu, reference, pointy ? 0.6 : concave ? 0.04 : 0.01);
+    if (pointy) {
+      EXPECT_LE(mean, 1.5e-5) << name;
     }
   }
 }
