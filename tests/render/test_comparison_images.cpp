@@ -144,9 +144,9 @@ TriangleMesh exact_at_gpu_vertices(SurfaceRenderer& renderer, const CovarianceMe
 // (shaders/plan_eval.glsl) cone-concave measures 3.0 % (as Catmull-Clark, with the same bound; an
 // NVIDIA H100 0.000 %), and cone-pointy 53 %, mean 9.8e-6 (H100: 68 %, 1.3e-5). Its vertices are
 // 1.1e-6 off on average, but those on its patches' outer edges, in the apex's extraordinary nodes,
-// up to 9e-5, and the surface's parametrisation gives their triangles most of its pixels. A float
-// emulation of those sums on the CPU puts the rest in the solve of μ's tangents: nearly parallel
-// there, their cross product needs more digits than a float's (issue 11 leaves it open).
+// up to 9e-5, and the surface's parametrisation gives their triangles most of its pixels. In a float
+// emulation of those nodes on the CPU, solving for μ's tangents in double removed that error; in the
+// shader it did not (53.7 %), so its cause is not found (issue 11 leaves it open).
 TEST_F(ComparisonImages, AreBlackOnTheConesUnderLoop) {
   const PlanOptions options{Scheme::loop};
   for (const char* name : {"cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder", "icosphere"}) {
