@@ -18,5 +18,5 @@ void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3
     return;
   }
   evaluate_extraordinary_node(node, false, u, v, qa, qb, qc, ua, ub, uc, va, vb, vc);
-  dual_to_surface(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
+  dual_to_surface_in_double(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
 }

@@ -44,6 +44,23 @@ void dual_to_surface(vec4 qa, vec4 qb, vec4 qc, vec4 ua, vec4 ub, vec4 uc, vec4 
   mu_v = scale * (sigma * (offset_part(vb, vc) - precision_of(va, vb) * offset));
 }
 
+// dual_to_surface for an extraordinary node, in double from the float sums, with μ_v made orthogonal
+// to μ_u (their cross product, the normal, is the same): there, as at a needle apex (q̂ ~ 1e5 I), the
+// tangents can be nearly parallel, and the normal, their cross product in float, then lost its digits
+// (Loop's cone-pointy: ×5000 normal image 53 % of the pixels at 8/255, normals 9e-5 off on its
+// patches' outer edges; 0.3 % so). Extraordinary nodes only: a GPU's doubles can be slow.
+void dual_to_surface_in_double(vec4 qa, vec4 qb, vec4 qc, vec4 ua, vec4 ub, vec4 uc, vec4 va, vec4 vb, vec4 vc,
+                               float scale, out vec3 mu, out vec3 mu_u, out vec3 mu_v) {
+  dmat3 sigma = inverse(dmat3(precision_of(qa, qb)));
+  dvec3 offset = sigma * dvec3(offset_part(qb, qc));
+  mu = g_anchor + vec3(offset);
+  dvec3 tangent_u = sigma * (dvec3(offset_part(ub, uc)) - dmat3(precision_of(ua, ub)) * offset);
+  dvec3 tangent_v = sigma * (dvec3(offset_part(vb, vc)) - dmat3(precision_of(va, vb)) * offset);
+  tangent_v -= (dot(tangent_u, tangent_v) / dot(tangent_u, tangent_u)) * tangent_u;
+  mu_u = scale * vec3(tangent_u);
+  mu_v = scale * vec3(tangent_v);
+}
+
 // Plan point p with weight w and derivative weights w_u, w_v added to q = (qa qb qc) and its
 // derivatives (ua ub uc), (va vb vc), three vec4 each (gpu_layout.h).
 void add_point(int p, float w, float w_u, float w_v, inout vec4 qa, inout vec4 qb, inout vec4 qc, inout vec4 ua,
@@ -101,7 +118,7 @@ void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 m
   vec4 qa, qb, qc, ua, ub, uc, va, vb, vc;
   if (kind == kNodeExtraordinary) {
     evaluate_extraordinary_node(node, true, uv.x, uv.y, qa, qb, qc, ua, ub, uc, va, vb, vc);
-    dual_to_surface(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
+    dual_to_surface_in_double(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
     return;
   }
   float w[16], wdu[16], wdv[16];
