@@ -201,6 +201,7 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
   refused_ = false;
   tracked_points_ = key.points;
   blocks_.reset(n_patches, patches_per_block(n_patches));
+  copy_pending_.clear();  // all captured anew
   if (spare_capacity_ > 0) {  // edits start over from here
     glNamedBufferData(spare_, 0, nullptr, GL_DYNAMIC_COPY);
     spare_capacity_ = 0;
@@ -244,8 +245,21 @@ void SurfaceCache::weld(const std::vector<int>& blocks) {
 }
 
 void SurfaceCache::settle() {
+  copy_back_evaluated();
+  weld_pending();
+}
+
+void SurfaceCache::weld_pending() {
   if (weld_mode_ == Weld::when_settled && holds_triangles() && (weld_all_pending_ || !weld_pending_.empty()))
     weld_now(weld_all_pending_ ? std::vector<int>{} : weld_pending_);
+}
+
+void SurfaceCache::copy_back_evaluated() {
+  if (copy_pending_.empty()) return;
+  std::vector<StoredVertexWeld::Range> ranges;
+  for (const int b : copy_pending_) ranges.push_back({3 * blocks_.first_triangle(b), 3 * blocks_.triangles(b)});
+  weld_->copy_back(buffer_, indices_, welded_, ranges);
+  copy_pending_.clear();
 }
 
 void SurfaceCache::weld_now(const std::vector<int>& blocks) {

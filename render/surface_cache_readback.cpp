@@ -23,9 +23,10 @@ long long SurfaceCache::distinct_vertices() const {
   return std::unique(indices.begin(), indices.end()) - indices.begin();
 }
 
-TriangleMesh SurfaceCache::stored_triangles() const {
+TriangleMesh SurfaceCache::stored_triangles() {
   TriangleMesh mesh;
   if (!holds_triangles()) return mesh;
+  copy_back_evaluated();
   const size_t floats_per_vertex = kCapturedVertexBytes / sizeof(float);
   std::vector<float> vertices(size_t(3 * blocks_.total()) * floats_per_vertex);
   glGetNamedBufferSubData(buffer_, 0, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data());

@@ -4,6 +4,7 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <iterator>
 
 #include "render/gl_context.h"
 #include "render/gpu_layout.h"
@@ -48,30 +49,33 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   // some blocks captured again, the welded vertices of all stale blocks are evaluated, that the
   // evaluated blocks' copies of them are current.
   if (!evaluated.empty()) evaluate_again(captured.empty() ? evaluated : stale, uniform && key.level >= kThirdOfSlotsFromLevel, evaluate_welded);
+  // Blocks captured again are copied into place and welded from their captured vertices, beside
+  // clean ones that may be assembled: all captured copies current first.
+  if (!captured.empty()) copy_back_evaluated();
   glUseProgram(GLuint(capture_program));
   evaluated_patches_ = blocks_.stale_patches() - captured_patches;
   if (!captured.empty() && !capture_again(captured, draw_patches, captured_kept)) return false;
   // A drag that evaluates keeps its vertices welded for its next edit.
-  if (!evaluated.empty()) settle();
+  if (!evaluated.empty()) weld_pending();
   check_gl_errors("refreshing the surface cache");
   return refreshed(key);
 }
 
-// The welded vertices of `blocks` evaluated again, and the captured ones copied from them. A block's
+// The welded vertices of `blocks` evaluated again; their captured copies later (copy_back_evaluated()). A block's
 // welded vertices are fewer than its capture slots; `third`: fewer than a third of them
 // (kThirdOfSlotsFromLevel), the bound that sizes the evaluation's dispatches.
 void SurfaceCache::evaluate_again(const std::vector<int>& blocks, bool third, const EvaluateWelded& evaluate_welded) {
   std::vector<StoredVertexEvaluation::Block> listed;
-  std::vector<StoredVertexWeld::Range> ranges;
   for (const int b : blocks) {
     const long long first = 3 * blocks_.first_triangle(b), slots = 3 * blocks_.triangles(b);
     listed.push_back({b, first, third ? slots / 3 : slots});
-    ranges.push_back({first, slots});
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedParameters, parameters_);
   evaluate_welded(listed, weld_->dispatches());
-  weld_->copy_back(buffer_, indices_, welded_, ranges);
+  std::vector<int> both;
+  std::set_union(copy_pending_.begin(), copy_pending_.end(), blocks.begin(), blocks.end(), std::back_inserter(both));
+  copy_pending_ = std::move(both);
 }
 
 // `blocks` captured again into the scratch buffer, under the capture's camera, and copied into

@@ -160,6 +160,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
       // Cached quads' wireframe is their tessellation grid, stored with them; triangles' comes from
       // the geometry stage.
       const bool grid = cached && o.wireframe && !triangle_wire;
+      if (grid) cache_.copy_back_evaluated();
       const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : grid ? cached_grid_ : cached_)
                                      : !o.static_triangles ? patches_.frame_program(shape(), o)
                                                            : static_triangles_.program(o.wireframe);

@@ -147,7 +147,7 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachSurfacePointOnce) {
   SurfaceRenderer renderer;
   renderer.surface_cache().set_weld(GetParam());
   renderer.set_mesh(cube);
-  const SurfaceCache& cache = renderer.surface_cache();
+  SurfaceCache& cache = renderer.surface_cache();
   const bool settles = GetParam() == SurfaceCache::Weld::when_settled;
   for (const int level : {1, 8}) {
     const Camera camera = frame_mesh(cube, 35.0f, 25.0f);
@@ -220,7 +220,7 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
       SurfaceRenderer renderer;
       renderer.surface_cache().set_weld(GetParam());
       renderer.set_mesh(mesh);
-      const SurfaceCache& cache = renderer.surface_cache();
+      SurfaceCache& cache = renderer.surface_cache();
       const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
       const int n = int(mesh.n_vertices());
       std::vector<int> every(static_cast<size_t>(n));
@@ -261,6 +261,51 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
     }
     std::printf("%s: %d patches evaluated again, %d captured again\n", o.pixels > 0 ? "adaptive" : ("level " + std::to_string(int(o.level))).c_str(),
                 evaluated, captured_again);
+  }
+}
+
+// A drag's frames leave the captured copies of the vertices they evaluated as they were
+// (render/surface_cache.h); what reads those copies brings them up to date first: a frame of the
+// quads' grid, a refresh that captures blocks again (adaptive levels: the move changes some), the
+// read-back. Three edits without a still frame between, the last one's frame with the grid: the
+// same frame, and the same stored triangles, as after a capture of the same points.
+TEST_P(SurfaceCacheTest, ADragsEvaluatedVerticesReachTheGridAndTheReadBack) {
+  if (!welds()) GTEST_SKIP() << "edits are captured again without a weld";
+  RenderTarget target(kSize, kSize);
+  for (const DrawOptions& o : {uniform(8), adaptive(4)}) {
+    const std::string what = o.pixels > 0 ? "adaptive" : "level 8";
+    CovarianceMesh mesh = make_sample("pawn");
+    SurfaceRenderer renderer;
+    renderer.surface_cache().set_weld(GetParam());
+    renderer.set_mesh(mesh);
+    SurfaceCache& cache = renderer.surface_cache();
+    const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
+    DrawOptions grid = o;
+    grid.wireframe = true;
+    draw(renderer, target, camera, o, true);
+    draw(renderer, target, camera, o, true);  // settled
+    const int captures = cache.captures(), n = int(mesh.n_vertices());
+    int evaluated = 0, captured_again = 0;
+    Frame dragged;
+    for (const int v : {n / 2, n / 3, n / 5}) {
+      if (v == n / 3) move_vertex(mesh, v, 0.02);
+      else mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * 1.1);
+      renderer.update_vertices(mesh, {v});
+      dragged = draw(renderer, target, camera, v == n / 5 ? grid : o, true);
+      evaluated += cache.evaluated_patches();
+      captured_again += cache.refreshed_patches() - cache.evaluated_patches();
+    }
+    ASSERT_EQ(cache.captures(), captures) << what;
+    EXPECT_GT(evaluated, 0) << what;
+    if (o.pixels > 0) {
+      EXPECT_GT(captured_again, 0) << "no move changed adaptive levels";
+    }
+    const TriangleMesh stored = cache.stored_triangles();
+    draw(renderer, target, camera, uniform(3), true);
+    draw(renderer, target, camera, o, true);  // the same points captured
+    ASSERT_EQ(cache.captures(), captures + 2) << what;
+    EXPECT_EQ(differing_pixels(dragged, draw(renderer, target, camera, grid, true)), 0u) << what;
+    EXPECT_TRUE(same_triangles(stored, cache.stored_triangles())) << what;
   }
 }
 
@@ -424,7 +469,7 @@ TEST_P(SurfaceCacheTest, AOneVertexEditCapturesOnlyTheBlocksOfItsPatches) {
   move_vertex(mesh, v, 0.05);
   renderer.update_vertices(mesh, {v});
   const Frame cached = draw(renderer, target, camera, o, true);
-  const SurfaceCache& cache = renderer.surface_cache();
+  SurfaceCache& cache = renderer.surface_cache();
   EXPECT_EQ(cache.captures(), 1);
   EXPECT_EQ(cache.refreshes(), 1);
   EXPECT_GT(cache.refreshed_patches(), 0);
