@@ -137,6 +137,12 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   const float aspect = float(target.width()) / float(target.height());
   {
     const GpuPassScope pass(timer_, "surface");
+    const bool use_cache = !o.static_triangles && o.surface_cache;
+    buffers_.bind();
+    // An edit's compute passes before the clear: on llvmpipe one after it splits the frame in two
+    // (the cleared target written out, then read back for the draw; a cube's edit at level 64: a
+    // sixth of its frame).
+    const bool refreshed = use_cache && refresh_cache(camera, o, aspect, target.width(), target.height());
     target.bind();
     const float clear_color[4] = {o.background.r, o.background.g, o.background.b, 1.0f};
     const float clear_zero[4] = {0, 0, 0, 0};
@@ -148,10 +154,9 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glBindTextureUnit(0, matcap_);
-    buffers_.bind();
-    const CacheFrame cache_frame = !o.static_triangles && o.surface_cache
-                                       ? draw_from_cache(camera, o, aspect, target.width(), target.height())
-                                       : CacheFrame::live;
+    const CacheFrame cache_frame = !use_cache   ? CacheFrame::live
+                                   : refreshed ? CacheFrame::stored
+                                               : draw_from_cache(camera, o, aspect, target.width(), target.height());
     const bool cached = cache_frame == CacheFrame::stored;
     last_cache_frame_ = cache_frame;
     if (cache_frame != CacheFrame::drawn) {  // else drawn as it was captured
@@ -186,17 +191,46 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   check_gl_errors("drawing");
 }
 
-// Captures the patches' triangles when the cache does not hold them for these inputs (the storage
-// buffers and the frame's target bound). A whole capture draws the frame as it goes (the shaded
-// program under transform feedback, rasteriser on), but where a geometry stage draws the triangle
-// wireframe: transform feedback would store its output.
-SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camera, const DrawOptions& o, float aspect, int width,
-                                                             int height) {
+SurfaceCache::Key SurfaceRenderer::cache_key(const DrawOptions& o) const {
   SurfaceCache::Key key;
   key.points = points_generation_;
   key.pixels = std::max(o.pixels, 0.0f);
   key.level = key.pixels > 0.0f ? 0.0f : uniform_level(o);
   key.debug_mismatch = o.debug_mismatch;
+  return key;
+}
+
+// The storage buffers bound; the target not yet (a refresh draws nothing).
+bool SurfaceRenderer::refresh_cache(const Camera& camera, const DrawOptions& o, float aspect, int width, int height) {
+  const SurfaceCache::Key key = cache_key(o);
+  const glm::mat4 view_projection = camera.view_projection(aspect);
+  const glm::vec2 viewport{float(width), float(height)};
+  // An edit: its patches, under the capture's camera.
+  if (cache_.current(key, view_projection, viewport) || !cache_.refreshable(key, view_projection, viewport)) return false;
+  const ShaderProgram& capture = patches_.program(shape(), PatchOutput::capture);
+  capture.use();
+  set_frame_uniforms(capture, camera, o, aspect, width, height);
+  capture.set("u_view_projection", cache_.captured_view_projection());
+  capture.set("u_viewport", cache_.captured_viewport());
+  const auto draw_patches = [&](int first, int count) { patches_.draw(capture, o, n_patches(), first, count); };
+  const auto evaluate_welded = [&](const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches) {
+    stored_evaluation_.run(shape(), blocks, dispatches, group_limit_);
+  };
+  const auto levels_changed = [&](const std::vector<StoredPatchLevels::Block>& blocks) {
+    const ShaderProgram& check = stored_levels_.program(shape());
+    set_level_uniforms(check, cache_.captured_view_projection(), cache_.captured_viewport(), o);
+    return stored_levels_.changed(shape(), blocks, group_limit_);
+  };
+  return cache_.refresh(key, draw_patches, evaluate_welded, levels_changed) && cache_.holds_triangles();
+}
+
+// Captures the patches' triangles when the cache does not hold them for these inputs (the storage
+// buffers and the frame's target bound), where no refresh brought them up to date. A whole capture
+// draws the frame as it goes (the shaded program under transform feedback, rasteriser on), but
+// where a geometry stage draws the triangle wireframe: transform feedback would store its output.
+SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camera, const DrawOptions& o, float aspect, int width,
+                                                             int height) {
+  const SurfaceCache::Key key = cache_key(o);
   const glm::mat4 view_projection = camera.view_projection(aspect);
   const glm::vec2 viewport{float(width), float(height)};
   if (!cache_.current(key, view_projection, viewport)) {
@@ -212,38 +246,18 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camer
       const long long halves = half_size_patches_, half_level = (level + 1) / 2;
       estimate += ((patches - halves) * 2 * level * level + halves * 2 * half_level * half_level) * 5 / 4;
     }
-    const ShaderProgram& capture = patches_.program(shape(), PatchOutput::capture);
-    capture.use();
-    const auto draw_patches = [&](int first, int count) { patches_.draw(capture, o, n_patches(), first, count); };
-    bool refreshed = false;
-    if (cache_.refreshable(key, view_projection, viewport)) {  // an edit: its patches, under the capture's camera
-      set_frame_uniforms(capture, camera, o, aspect, width, height);
-      capture.set("u_view_projection", cache_.captured_view_projection());
-      capture.set("u_viewport", cache_.captured_viewport());
-      const auto evaluate_welded = [&](const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches) {
-        stored_evaluation_.run(shape(), blocks, dispatches, group_limit_);
-      };
-      const auto levels_changed = [&](const std::vector<StoredPatchLevels::Block>& blocks) {
-        const ShaderProgram& check = stored_levels_.program(shape());
-        set_level_uniforms(check, cache_.captured_view_projection(), cache_.captured_viewport(), o);
-        return stored_levels_.changed(shape(), blocks, group_limit_);
-      };
-      refreshed = cache_.refresh(key, draw_patches, evaluate_welded, levels_changed);
+    const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
+    const ShaderProgram& program = patches_.program(shape(), triangle_wire ? PatchOutput::capture : PatchOutput::shaded_capture);
+    set_frame_uniforms(program, camera, o, aspect, width, height);
+    program.use();
+    const auto draw = [&](int first, int count) { patches_.draw(program, o, n_patches(), first, count); };
+    if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire)) return CacheFrame::live;
+    if (key.pixels > 0.0f) {  // the levels an edit's refresh checks
+      const ShaderProgram& record = stored_levels_.program(shape());
+      set_level_uniforms(record, view_projection, viewport, o);
+      stored_levels_.record(shape(), n_patches(), group_limit_);
     }
-    if (!refreshed) {
-      const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
-      const ShaderProgram& program = triangle_wire ? capture : patches_.program(shape(), PatchOutput::shaded_capture);
-      set_frame_uniforms(program, camera, o, aspect, width, height);
-      program.use();
-      const auto draw = [&](int first, int count) { patches_.draw(program, o, n_patches(), first, count); };
-      if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire)) return CacheFrame::live;
-      if (key.pixels > 0.0f) {  // the levels an edit's refresh checks
-        const ShaderProgram& record = stored_levels_.program(shape());
-        set_level_uniforms(record, view_projection, viewport, o);
-        stored_levels_.record(shape(), n_patches(), group_limit_);
-      }
-      if (!triangle_wire) return CacheFrame::drawn;
-    }
+    if (!triangle_wire) return CacheFrame::drawn;
   } else {
     cache_.settle();
   }

@@ -101,6 +101,11 @@ private:
   /// How a frame uses the surface cache: it draws the stored triangles, it was drawn while it was
   /// captured, or it is drawn live (the cache refused these inputs).
   enum class CacheFrame { stored, drawn, live };
+  /// The surface cache's inputs for a frame of these options.
+  SurfaceCache::Key cache_key(const DrawOptions& options) const;
+  /// An edit's refresh of the stored triangles (compute passes, and captures with the rasteriser
+  /// off), before the frame's target is cleared: true where they are then current.
+  bool refresh_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
   CacheFrame draw_from_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
   PatchShape shape() const { return tables().plans.shape; }
   int n_patches() const { return tables().plans.n_patches(); }
