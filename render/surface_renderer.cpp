@@ -139,10 +139,10 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     const GpuPassScope pass(timer_, "surface");
     const bool use_cache = !o.static_triangles && o.surface_cache;
     buffers_.bind();
-    // An edit's compute passes before the clear: on llvmpipe one after it splits the frame in two
+    // The cache's compute passes before the clear: on llvmpipe one after it splits the frame in two
     // (the cleared target written out, then read back for the draw; a cube's edit at level 64: a
     // sixth of its frame).
-    const bool refreshed = use_cache && refresh_cache(camera, o, aspect, target.width(), target.height());
+    const bool cache_current = use_cache && prepare_cache(camera, o, aspect, target.width(), target.height());
     target.bind();
     const float clear_color[4] = {o.background.r, o.background.g, o.background.b, 1.0f};
     const float clear_zero[4] = {0, 0, 0, 0};
@@ -154,9 +154,10 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glBindTextureUnit(0, matcap_);
-    const CacheFrame cache_frame = !use_cache   ? CacheFrame::live
-                                   : refreshed ? CacheFrame::stored
-                                               : draw_from_cache(camera, o, aspect, target.width(), target.height());
+    const CacheFrame cache_frame = !use_cache        ? CacheFrame::live
+                                   : !cache_current ? capture_cache(camera, o, aspect, target.width(), target.height())
+                                   : cache_.holds_triangles() ? CacheFrame::stored
+                                                               : CacheFrame::live;  // refused: past the memory limit
     const bool cached = cache_frame == CacheFrame::stored;
     last_cache_frame_ = cache_frame;
     if (cache_frame != CacheFrame::drawn) {  // else drawn as it was captured
@@ -165,7 +166,6 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
       // Cached quads' wireframe is their tessellation grid, stored with them; triangles' comes from
       // the geometry stage.
       const bool grid = cached && o.wireframe && !triangle_wire;
-      if (grid) cache_.copy_back_evaluated();
       const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : grid ? cached_grid_ : cached_)
                                      : !o.static_triangles ? patches_.frame_program(shape(), o)
                                                            : static_triangles_.program(o.wireframe);
@@ -200,13 +200,17 @@ SurfaceCache::Key SurfaceRenderer::cache_key(const DrawOptions& o) const {
   return key;
 }
 
-// The storage buffers bound; the target not yet (a refresh draws nothing).
-bool SurfaceRenderer::refresh_cache(const Camera& camera, const DrawOptions& o, float aspect, int width, int height) {
+// The storage buffers bound; the target not yet (none of this draws).
+bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, float aspect, int width, int height) {
   const SurfaceCache::Key key = cache_key(o);
   const glm::mat4 view_projection = camera.view_projection(aspect);
   const glm::vec2 viewport{float(width), float(height)};
+  if (cache_.current(key, view_projection, viewport)) {
+    cache_.settle();
+    return true;
+  }
   // An edit: its patches, under the capture's camera.
-  if (cache_.current(key, view_projection, viewport) || !cache_.refreshable(key, view_projection, viewport)) return false;
+  if (!cache_.refreshable(key, view_projection, viewport)) return false;
   const ShaderProgram& capture = patches_.program(shape(), PatchOutput::capture);
   capture.use();
   set_frame_uniforms(capture, camera, o, aspect, width, height);
@@ -221,47 +225,44 @@ bool SurfaceRenderer::refresh_cache(const Camera& camera, const DrawOptions& o, 
     set_level_uniforms(check, cache_.captured_view_projection(), cache_.captured_viewport(), o);
     return stored_levels_.changed(shape(), blocks, group_limit_);
   };
-  return cache_.refresh(key, draw_patches, evaluate_welded, levels_changed) && cache_.holds_triangles();
+  if (!cache_.refresh(key, draw_patches, evaluate_welded, levels_changed)) return false;
+  // Cached quads' wireframe is their tessellation grid, read with the captured vertices.
+  if (o.wireframe && shape() == PatchShape::quad) cache_.copy_back_evaluated();
+  return true;
 }
 
-// Captures the patches' triangles when the cache does not hold them for these inputs (the storage
-// buffers and the frame's target bound), where no refresh brought them up to date. A whole capture
-// draws the frame as it goes (the shaded program under transform feedback, rasteriser on), but
-// where a geometry stage draws the triangle wireframe: transform feedback would store its output.
-SurfaceRenderer::CacheFrame SurfaceRenderer::draw_from_cache(const Camera& camera, const DrawOptions& o, float aspect, int width,
-                                                             int height) {
+// Captures the patches' triangles (the storage buffers and the frame's target bound). It draws the
+// frame as it goes (the shaded program under transform feedback, rasteriser on), but where a
+// geometry stage draws the triangle wireframe: transform feedback would store its output.
+SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera, const DrawOptions& o, float aspect, int width,
+                                                           int height) {
   const SurfaceCache::Key key = cache_key(o);
   const glm::mat4 view_projection = camera.view_projection(aspect);
   const glm::vec2 viewport{float(width), float(height)};
-  if (!cache_.current(key, view_projection, viewport)) {
-    // Buffer size: uniform level L generates about 2·L² triangles per quad patch, 2·⌈L/2⌉² per
-    // half-size one (shaders/patch_tesc.glsl), L² per triangle patch; adaptive levels as last time.
-    const long long level = (long long)std::ceil(key.level), patches = n_patches();
-    long long estimate = 64;
-    if (key.pixels > 0.0f) {
-      estimate += cache_.triangles() > 0 ? cache_.triangles() * 5 / 4 : patches * 128;
-    } else if (shape() == PatchShape::triangle) {
-      estimate += patches * level * level * 5 / 4;
-    } else {
-      const long long halves = half_size_patches_, half_level = (level + 1) / 2;
-      estimate += ((patches - halves) * 2 * level * level + halves * 2 * half_level * half_level) * 5 / 4;
-    }
-    const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
-    const ShaderProgram& program = patches_.program(shape(), triangle_wire ? PatchOutput::capture : PatchOutput::shaded_capture);
-    set_frame_uniforms(program, camera, o, aspect, width, height);
-    program.use();
-    const auto draw = [&](int first, int count) { patches_.draw(program, o, n_patches(), first, count); };
-    if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire)) return CacheFrame::live;
-    if (key.pixels > 0.0f) {  // the levels an edit's refresh checks
-      const ShaderProgram& record = stored_levels_.program(shape());
-      set_level_uniforms(record, view_projection, viewport, o);
-      stored_levels_.record(shape(), n_patches(), group_limit_);
-    }
-    if (!triangle_wire) return CacheFrame::drawn;
+  // Buffer size: uniform level L generates about 2·L² triangles per quad patch, 2·⌈L/2⌉² per
+  // half-size one (shaders/patch_tesc.glsl), L² per triangle patch; adaptive levels as last time.
+  const long long level = (long long)std::ceil(key.level), patches = n_patches();
+  long long estimate = 64;
+  if (key.pixels > 0.0f) {
+    estimate += cache_.triangles() > 0 ? cache_.triangles() * 5 / 4 : patches * 128;
+  } else if (shape() == PatchShape::triangle) {
+    estimate += patches * level * level * 5 / 4;
   } else {
-    cache_.settle();
+    const long long halves = half_size_patches_, half_level = (level + 1) / 2;
+    estimate += ((patches - halves) * 2 * level * level + halves * 2 * half_level * half_level) * 5 / 4;
   }
-  return cache_.holds_triangles() ? CacheFrame::stored : CacheFrame::live;
+  const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
+  const ShaderProgram& program = patches_.program(shape(), triangle_wire ? PatchOutput::capture : PatchOutput::shaded_capture);
+  set_frame_uniforms(program, camera, o, aspect, width, height);
+  program.use();
+  const auto draw = [&](int first, int count) { patches_.draw(program, o, n_patches(), first, count); };
+  if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire)) return CacheFrame::live;
+  if (key.pixels > 0.0f) {  // the levels an edit's refresh checks
+    const ShaderProgram& record = stored_levels_.program(shape());
+    set_level_uniforms(record, view_projection, viewport, o);
+    stored_levels_.record(shape(), n_patches(), group_limit_);
+  }
+  return triangle_wire ? CacheFrame::stored : CacheFrame::drawn;  // the triangle wireframe: drawn from the cache
 }
 
 std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, float aspect,

@@ -103,10 +103,12 @@ private:
   enum class CacheFrame { stored, drawn, live };
   /// The surface cache's inputs for a frame of these options.
   SurfaceCache::Key cache_key(const DrawOptions& options) const;
-  /// An edit's refresh of the stored triangles (compute passes, and captures with the rasteriser
-  /// off), before the frame's target is cleared: true where they are then current.
-  bool refresh_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
-  CacheFrame draw_from_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
+  /// The surface cache's work for a frame before its target is cleared: an edit's refresh (compute
+  /// passes, captures with the rasteriser off), or a still frame's settling, and the captured copies
+  /// a grid frame reads. True where the cache then stands for the frame's inputs.
+  bool prepare_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
+  /// A capture of every patch (drawing the frame as it goes), where prepare_cache() found none current.
+  CacheFrame capture_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
   PatchShape shape() const { return tables().plans.shape; }
   int n_patches() const { return tables().plans.n_patches(); }
 
