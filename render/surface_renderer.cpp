@@ -163,9 +163,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     if (cache_frame != CacheFrame::drawn) {  // else drawn as it was captured
       // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
       const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
-      // Cached quads' wireframe is their tessellation grid, stored with them; triangles' comes from
-      // the geometry stage.
-      const bool grid = cached && o.wireframe && !triangle_wire;
+      const bool grid = cached && draws_grid(o);
       const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : grid ? cached_grid_ : cached_)
                                      : !o.static_triangles ? patches_.frame_program(shape(), o)
                                                            : static_triangles_.program(o.wireframe);
@@ -226,8 +224,7 @@ bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, 
     return stored_levels_.changed(shape(), blocks, group_limit_);
   };
   if (!cache_.refresh(key, draw_patches, evaluate_welded, levels_changed)) return false;
-  // Cached quads' wireframe is their tessellation grid, read with the captured vertices.
-  if (o.wireframe && shape() == PatchShape::quad) cache_.copy_back_evaluated();
+  if (draws_grid(o)) cache_.copy_back_evaluated();
   return true;
 }
 

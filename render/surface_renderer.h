@@ -109,6 +109,9 @@ private:
   bool prepare_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
   /// A capture of every patch (drawing the frame as it goes), where prepare_cache() found none current.
   CacheFrame capture_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
+  /// Whether a cached frame of these options draws the quads' wireframe: their tessellation grid,
+  /// stored with the captured vertices (triangles' comes from a geometry stage).
+  bool draws_grid(const DrawOptions& o) const { return o.wireframe && shape() == PatchShape::quad; }
   PatchShape shape() const { return tables().plans.shape; }
   int n_patches() const { return tables().plans.n_patches(); }
 
