@@ -4,6 +4,11 @@
 # the file readers briefly (scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# The three builds below (plain, ASan, fuzz) take about 3 GB of disk together.
+free_kb=$(df -Pk . | awk 'NR == 2 {print $4}')
+if [ "$free_kb" -lt $((3 * 1024 * 1024)) ]; then
+  echo "warning: $((free_kb / 1024)) MB free in $PWD; a full test run's builds take about 3 GB" >&2
+fi
 scripts/install_deps.sh
 scripts/build.sh
 (cd build && ctest --output-on-failure -j"$(nproc)" --timeout 600)
