@@ -11,6 +11,7 @@
 #include "core/mesh_io.h"
 #include "core/samples.h"
 #include "core/text_file.h"
+#include "render/exact_triangles.h"
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/matcap.h"
@@ -29,7 +30,7 @@ struct RenderArgs {
   PlanArguments plans;
   float pixels = 0;               // 0: default_pixels() of the output size
   std::string context = "auto";
-  bool mesh_lines = false, wireframe = false, ellipsoids = false, no_cache = false;
+  bool mesh_lines = false, wireframe = false, ellipsoids = false, no_cache = false, exact = false;
   float sigma = 1.0f;
 };
 
@@ -82,10 +83,6 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   o.ellipsoids = a.ellipsoids;
   o.sigma_scale = a.sigma;
   o.background = {bg[0], bg[1], bg[2]};
-  if (a.reference >= 0) {
-    renderer.set_triangles(reference_triangles(mesh, a.reference, a.plans.options()));
-    o.static_triangles = true;
-  }
   Camera camera = frame_mesh(mesh);
   if (!a.camera.empty()) {
     const auto c = parse_floats(a.camera, "--camera", 2, 3);
@@ -93,6 +90,9 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
     camera = frame_mesh(mesh, c[0], c[1]);
     camera.distance = c.size() > 2 ? c[2] : distance;
   }
+  if (a.reference >= 0) renderer.set_triangles(reference_triangles(mesh, a.reference, a.plans.options()));
+  if (a.exact) renderer.set_triangles(exact_triangles(renderer, mesh, camera, o, width, height));
+  o.static_triangles = a.reference >= 0 || a.exact;
   RenderTarget target(width, height);
   renderer.draw(target, camera, o);
   Image color = target.read(0);
@@ -103,6 +103,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   if (a.reference >= 0) tessellation << "reference level " << a.reference;
   else if (o.pixels > 0) tessellation << "adaptive " << o.pixels << " px";
   else tessellation << "level " << a.level;
+  if (a.exact) tessellation << ", exact evaluator";
   std::cout << "wrote " << a.output << " (" << width << "x" << height << ", " << renderer.tables().plans.n_patches() << " patches, "
             << tessellation.str() << ", " << description << ")\n";
 }
@@ -123,7 +124,7 @@ void render(const RenderArgs& a) {
 // --script FILE.json: {"renders": [{"mesh": FILE or "sample:NAME", "output": FILE.png, "size": "WxH",
 // "level": L, "pixels": P, "depth": D, "approximate": true|false, "scheme": "auto"|"loop"|"catmull-clark", "loop_beta": "loop"|"warren", "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]",
 // "mesh_lines": bool, "wireframe": bool, "ellipsoids": bool, "sigma": k, "background": "r,g,b",
-// "aov": ["position=FILE.exr", ...], "reference": N,
+// "aov": ["position=FILE.exr", ...], "reference": N, "exact": true|false,
 // "edits": [{"vertex": i, "mean": [x,y,z], "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]}
 // All renders share one process and one GL context.
 void run_script(const std::string& path, const std::string& context_name) {
@@ -162,6 +163,8 @@ void run_script(const std::string& path, const std::string& context_name) {
       a.background = job.value("background", a.background);
       a.aovs = job.value("aov", a.aovs);
       a.reference = job.value("reference", a.reference);
+      a.exact = job.value("exact", a.exact);
+      if (a.exact && a.reference >= 0) throw usage_error("exact and reference exclude each other");
       if (job.contains("level") && (a.level < 1 || a.level > 64)) throw usage_error("level must be 1..64");
       if (a.mode != "matcap" && a.mode != "normals" && a.mode != "flat") throw usage_error("mode must be matcap, normals or flat");
       CovarianceMesh mesh = a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh(a.input);
@@ -224,7 +227,14 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--sigma", a->sigma, "ellipsoid scale in standard deviations (k-sigma)")->check(CLI::Range(0.01f, 100.0f));
   cmd->add_option("--background", a->background, "background colour r,g,b in [0,1]");
   cmd->add_option("--aov", a->aovs, "world-space float buffers: position=FILE.exr, normal=FILE.exr");
-  cmd->add_option("--reference", a->reference, "draw the CPU reference subdivision at level N instead of the patches")->check(CLI::Range(0, 7));
+  auto* reference = cmd->add_option("--reference", a->reference,
+                                    "draw the CPU reference subdivision at level N instead of the patches (the patches' triangles at "
+                                    "--level 2^N under Catmull-Clark, not under Loop: see --exact)")
+                        ->check(CLI::Range(0, 7));
+  cmd->add_flag("--exact", a->exact,
+                "draw the patches' own triangles with the CPU's exact values at their vertices (double): diff against a "
+                "render of the patches shows the GPU's error alone, at any level and under either scheme")
+      ->excludes(reference);
   cmd->callback([a, script] {
     if (!script->empty()) return run_script(*script, a->context);
     if (a->input.empty() || a->output.empty()) throw usage_error("render: give an input mesh and -o OUTPUT.png (or --script FILE.json)");

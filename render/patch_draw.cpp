@@ -79,14 +79,12 @@ void PatchDraw::draw_batches(const ShaderProgram& program, const DrawOptions& o,
   }
 }
 
-std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o, float aspect,
-                                                           int n_total, int first_patch, int n_patches) const {
+std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o, int width,
+                                                           int height, int n_total, int first_patch, int n_patches) const {
   first_patch = std::clamp(first_patch, 0, n_total);
   n_patches = n_patches < 0 ? n_total - first_patch : std::min(n_patches, n_total - first_patch);
-  const size_t max_vertices = size_t(n_patches) * 64 * 64 * 6 + 64;
   unsigned buffer = 0, query = 0;
   glCreateBuffers(1, &buffer);
-  glNamedBufferData(buffer, GLsizeiptr(max_vertices * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
   glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
   // A draw needs a complete framebuffer even with rasterization discarded (NVIDIA's driver checks
   // it, and a surfaceless EGL context has no default one): one without attachments, 1×1 (GL 4.3).
@@ -98,21 +96,28 @@ std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, con
   glNamedFramebufferParameteri(framebuffer, GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
   const ShaderProgram& feedback = program(shape, PatchOutput::feedback);
-  set_frame_uniforms(feedback, camera, o, aspect, 512, 512);
+  set_frame_uniforms(feedback, camera, o, float(width) / float(height), width, height);
   feedback.use();
   glEnable(GL_RASTERIZER_DISCARD);
-  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
-  glBeginQuery(GL_PRIMITIVES_GENERATED, query);
-  glBeginTransformFeedback(GL_TRIANGLES);
-  draw_batches(feedback, o, n_total, first_patch, n_patches);
-  glEndTransformFeedback();
-  glEndQuery(GL_PRIMITIVES_GENERATED);
+  // Counted first, then captured into a buffer of that size (a bound from the largest level alone
+  // is 24,576 vertices a quad: gigabytes for a mesh of a few thousand faces).
+  GLuint primitives = 0;
+  for (const bool capture : {false, true}) {
+    if (capture) {
+      glNamedBufferData(buffer, GLsizeiptr(std::max<size_t>(1, size_t(primitives) * 3) * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
+      glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
+      glBeginTransformFeedback(GL_TRIANGLES);
+    }
+    glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+    draw_batches(feedback, o, n_total, first_patch, n_patches);
+    glEndQuery(GL_PRIMITIVES_GENERATED);
+    if (capture) glEndTransformFeedback();
+    if (!capture) glGetQueryObjectuiv(query, GL_QUERY_RESULT, &primitives);
+  }
   glDisable(GL_RASTERIZER_DISCARD);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previous_framebuffer));
   glDeleteFramebuffers(1, &framebuffer);
-  GLuint primitives = 0;
-  glGetQueryObjectuiv(query, GL_QUERY_RESULT, &primitives);
-  std::vector<TessellatedVertex> out(std::min<size_t>(max_vertices, size_t(primitives) * 3));
+  std::vector<TessellatedVertex> out(size_t(primitives) * 3);
   glGetNamedBufferSubData(buffer, 0, GLsizeiptr(out.size() * sizeof(TessellatedVertex)), out.data());
   glDeleteBuffers(1, &buffer);
   glDeleteQueries(1, &query);

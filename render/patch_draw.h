@@ -55,8 +55,9 @@ public:
   /// Draws patches [first_patch, first_patch + n_patches) of `n_total` (n_patches < 0: to the last)
   /// with `program` (bound, with the plan buffers), counted by the statistics queries if collecting.
   void draw(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch = 0, int n_patches = -1) const;
-  /// The vertices the tessellator generates for `o` (no rasterisation) of those patches.
-  std::vector<TessellatedVertex> capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o, float aspect,
+  /// The vertices the tessellator generates for `o` in a width × height viewport (no
+  /// rasterisation) of those patches.
+  std::vector<TessellatedVertex> capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o, int width, int height,
                                                   int n_total, int first_patch, int n_patches) const;
 
   void set_collect_statistics(bool collect);

@@ -262,10 +262,10 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
   return triangle_wire ? CacheFrame::stored : CacheFrame::drawn;  // the triangle wireframe: drawn from the cache
 }
 
-std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, float aspect,
+std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, int width, int height,
                                                                  int first_patch, int n_patches) {
   buffers_.bind();
-  return patches_.capture_vertices(shape(), camera, o, aspect, this->n_patches(), first_patch, n_patches);
+  return patches_.capture_vertices(shape(), camera, o, width, height, this->n_patches(), first_patch, n_patches);
 }
 
 }  // namespace gps

@@ -59,9 +59,9 @@ public:
   void set_matcap(const Image& matcap);
 
   void draw(const RenderTarget& target, const Camera& camera, const DrawOptions& options);
-  /// The vertices the tessellator generates for `options` (no rasterisation), of the patches
-  /// [first_patch, first_patch + n_patches) (n_patches < 0: to the last).
-  std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, float aspect,
+  /// The vertices the tessellator generates for `options` in a width × height viewport (no
+  /// rasterisation), of the patches [first_patch, first_patch + n_patches) (n_patches < 0: to the last).
+  std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, int width, int height,
                                                   int first_patch = 0, int n_patches = -1);
 
   /// The stored triangles of DrawOptions::surface_cache (its capture count, hysteresis, limit).

@@ -1,6 +1,10 @@
 // gpsurf render and diff, run as a user would (OSMesa, no display).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
 #include "render/image_io.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
@@ -61,6 +65,47 @@ TEST(RenderCli, RendersAovsAndDifferenceImages) {
   EXPECT_EQ(mixed.exit_code, 2) << mixed.output;
   EXPECT_NE(mixed.output.find("holds positions but"), std::string::npos) << mixed.output;
   EXPECT_EQ(run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("a.png") + " --size 32x32 --pixels 4 --matcap jade")).exit_code, 0);
+}
+
+// The number after `label` ("max ") in `gpsurf diff`'s line, or −1.
+double figure_after(const std::string& text, const std::string& label) {
+  const size_t at = text.find(label);
+  return at == std::string::npos ? -1.0 : std::atof(text.c_str() + at + label.size());
+}
+
+// --exact draws the patches' own triangles (at the default adaptive levels here) with the CPU's
+// exact values: its AOVs differ from the patches' by the GPU's float error alone, under Loop (whose
+// triangles no reference level has) and under Catmull-Clark on a mixed mesh.
+TEST(RenderCli, ExactEvaluatorDrawsThePatchesOwnTriangles) {
+  test::TempDir dir;
+  for (const char* sample : {"icosphere", "pawn"}) {
+    const std::string mesh = dir.file(std::string(sample) + ".ply");
+    ASSERT_EQ(run_command(gpsurf("sample " + std::string(sample) + " -o " + mesh)).exit_code, 0);
+    for (const bool exact : {false, true}) {
+      const std::string name = exact ? "e" : "g";
+      const auto r = run_command(gpsurf("render " + mesh + " -o " + dir.file(name + ".png") + " --size 160x120" + (exact ? " --exact" : "") +
+                                        " --aov position=" + dir.file(name + "p.exr") + " --aov normal=" + dir.file(name + "n.exr")));
+      ASSERT_EQ(r.exit_code, 0) << r.output;
+      EXPECT_EQ(r.output.find("adaptive 4 px, exact evaluator,") != std::string::npos, exact) << r.output;
+    }
+    const auto p = run_command(gpsurf("diff " + dir.file("gp.exr") + " " + dir.file("ep.exr") + " -o " + dir.file("dp.png")));
+    const auto n = run_command(gpsurf("diff " + dir.file("gn.exr") + " " + dir.file("en.exr") + " -o " + dir.file("dn.png")));
+    ASSERT_EQ(p.exit_code, 0) << p.output;
+    ASSERT_EQ(n.exit_code, 0) << n.output;
+    // Measured: icosphere 4.8e-6 and 1.4e-5, pawn 8.2e-7 and 9.2e-5. Not 0: double is not float.
+    EXPECT_GT(figure_after(p.output, "max "), 0.0) << p.output;
+    EXPECT_LT(figure_after(p.output, "max "), 1e-4) << sample << ": " << p.output;
+    EXPECT_GT(figure_after(n.output, "max "), 0.0) << n.output;
+    EXPECT_LT(figure_after(n.output, "max "), 1e-3) << sample << ": " << n.output;
+  }
+  const std::string script = dir.write("s.json", R"({"renders": [{"mesh": "sample:cone", "output": ")" + dir.file("s.png") +
+                                                     R"(", "size": "48x48", "level": 4, "exact": true}]})");
+  const auto s = run_command(gpsurf("render --script " + script));
+  EXPECT_EQ(s.exit_code, 0) << s.output;
+  EXPECT_NE(s.output.find("level 4, exact evaluator,"), std::string::npos) << s.output;
+  const auto both = run_command(gpsurf("render " + dir.file("pawn.ply") + " -o " + dir.file("x.png") + " --exact --reference 3"));
+  EXPECT_EQ(both.exit_code, 2) << both.output;
+  EXPECT_EQ(std::count(both.output.begin(), both.output.end(), '\n'), 1) << both.output;
 }
 
 // A script renders several images in one process; an edit changes the image, and bad edits are refused.

@@ -12,16 +12,14 @@
 #include <cstdio>
 #include <string>
 
-#include "core/error.h"
-#include "core/patch_eval.h"
 #include "core/samples.h"
 #include "render/difference_image.h"
+#include "render/exact_triangles.h"
 #include "render/image_io.h"
 #include "render/reference_triangles.h"
 #include "render/render_target.h"
 #include "render/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
-#include "tests/support/plan_fixture.h"
 #include "view/camera.h"
 
 namespace gps {
@@ -36,13 +34,17 @@ struct Aovs {
   Image position, normal;
 };
 
-Aovs draw(SurfaceRenderer& renderer, const Camera& camera, bool reference) {
-  RenderTarget target(kSize, kSize);
+DrawOptions options_at_level(bool static_triangles) {
   DrawOptions o;
   o.level = float(kLevel);
   o.pixels = 0;
-  o.static_triangles = reference;
-  renderer.draw(target, camera, o);
+  o.static_triangles = static_triangles;
+  return o;
+}
+
+Aovs draw(SurfaceRenderer& renderer, const Camera& camera, bool reference) {
+  RenderTarget target(kSize, kSize);
+  renderer.draw(target, camera, options_at_level(reference));
   return {target.read(1), target.read(2)};
 }
 
@@ -118,26 +120,6 @@ TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
   }
 }
 
-// The exact surface at the parameters of the GPU's own tessellation vertices (transform feedback),
-// in double on the CPU: the GPU's triangles with the evaluator's positions and normals.
-TriangleMesh exact_at_gpu_vertices(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const PlanOptions& options,
-                                   const Camera& camera) {
-  DrawOptions o;
-  o.level = float(kLevel);
-  o.pixels = 0;
-  const std::vector<TessellatedVertex> vertices = renderer.capture_vertices(camera, o, 1.0f);
-  const test::PlannedMesh cpu(mesh, options);
-  TriangleMesh exact;
-  for (const TessellatedVertex& v : vertices) {
-    const auto s = evaluate_patch(cpu.tables.plans, cpu.points, int(v.evaluated[0]), v.evaluated[1], v.evaluated[2]);
-    if (!s) throw Error("no limit at a GPU vertex");
-    exact.positions.push_back(s->position);
-    exact.normals.push_back(s->normal);
-  }
-  for (int i = 0; i + 2 < int(exact.positions.size()); i += 3) exact.triangles.push_back({i, i + 1, i + 2});
-  return exact;
-}
-
 // The triangle samples under their own scheme, Loop, with the bounds above: black but cone-concave,
 // held to Catmull-Clark's 4 %. The two cones with a needle apex (covariance 1e-5, q̂ ~ 1e5 I) were
 // 78 % (cone-pointy) and 56 % (cone-concave) of their pixels at 8/255 while each leaf's sums were
@@ -152,7 +134,7 @@ TEST_F(ComparisonImages, AreBlackOnTheConesUnderLoop) {
     renderer.set_mesh(mesh, options);
     const Camera camera = frame_mesh(mesh);
     const Aovs gpu = draw(renderer, camera, false);
-    renderer.set_triangles(exact_at_gpu_vertices(renderer, mesh, options, camera));
+    renderer.set_triangles(exact_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize));
     const Aovs reference = draw(renderer, camera, true);
     expect_black(name, gpu, reference, std::string(name) == "cone-concave" ? 0.04 : 0.01);
   }

@@ -56,7 +56,7 @@ std::vector<EdgeVertex> capture_edge_vertices(SurfaceRenderer& renderer, const C
   std::vector<EdgeVertex> out;
   std::unordered_map<std::string, bool> seen;
   for (int first = 0; first < plans.n_patches(); first += chunk)
-    for (const TessellatedVertex& t : renderer.capture_vertices(frame_mesh(mesh, 35.0f, 25.0f), o, 1.0f, first, chunk)) {
+    for (const TessellatedVertex& t : renderer.capture_vertices(frame_mesh(mesh, 35.0f, 25.0f), o, 512, 512, first, chunk)) {
       const std::vector<int> k = edges_at(plans.shape, t.u, t.v);
       if (k.empty()) continue;
       EdgeVertex e{int(t.patch), t.u, t.v, {t.position[0], t.position[1], t.position[2]}, false};

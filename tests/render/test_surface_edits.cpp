@@ -37,7 +37,7 @@ TEST_F(GpuTest, EditsOfAnySizeEqualARebuild) {
       SurfaceRenderer rebuilt;
       rebuilt.set_mesh(mesh);
       EXPECT_EQ(renderer.read_points(), rebuilt.read_points()) << name << ", " << changed.size() << " vertices";
-      const auto edited = renderer.capture_vertices(Camera{}, o, 1.0f), fresh = rebuilt.capture_vertices(Camera{}, o, 1.0f);
+      const auto edited = renderer.capture_vertices(Camera{}, o, 512, 512), fresh = rebuilt.capture_vertices(Camera{}, o, 512, 512);
       ASSERT_EQ(edited.size(), fresh.size()) << name;
       size_t differing = 0;
       for (size_t i = 0; i < edited.size(); ++i)

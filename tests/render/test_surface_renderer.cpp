@@ -57,7 +57,7 @@ VertexErrors compare_vertices(const CovarianceMesh& mesh, const PlanOptions& opt
   renderer.set_mesh(mesh, options);
   DrawOptions o;
   o.level = level;
-  const auto vertices = renderer.capture_vertices(Camera{}, o, 1.0f);
+  const auto vertices = renderer.capture_vertices(Camera{}, o, 512, 512);
   const test::PlannedMesh cpu(mesh, options);
   const double diag = bounding_box_diagonal(mesh);
   VertexErrors e;

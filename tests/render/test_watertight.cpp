@@ -222,7 +222,7 @@ INSTANTIATE_TEST_SUITE_P(Samples, PinholeTest,
 // quads and half-size patches included, at uniform levels 1..64 and adaptive; a mismatch of edge
 // levels leaves vertices without a partner.
 int unmatched_edge_vertices(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const DrawOptions& o) {
-  const auto vertices = renderer.capture_vertices(frame_mesh(mesh, 35.0f, 25.0f), o, 1.0f);
+  const auto vertices = renderer.capture_vertices(frame_mesh(mesh, 35.0f, 25.0f), o, 512, 512);
   const double tolerance = 2e-5 * bounding_box_diagonal(mesh);
   std::map<std::array<long long, 3>, std::vector<size_t>> cells;  // a grid of cells of the tolerance's size
   const auto cell = [&](const float* p, int k) { return (long long)std::floor(p[k] / tolerance); };
