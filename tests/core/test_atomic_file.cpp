@@ -86,7 +86,9 @@ TEST(AtomicFile, ASignalDuringASaveRemovesTheTemporaryFile) {
     int status = 0;
     ASSERT_EQ(::waitpid(child, &status, 0), child);
     EXPECT_TRUE(WIFSIGNALED(status)) << "signal " << sig;
-    if (WIFSIGNALED(status)) EXPECT_EQ(WTERMSIG(status), sig);
+    if (WIFSIGNALED(status)) {
+      EXPECT_EQ(WTERMSIG(status), sig);
+    }
     EXPECT_EQ(contents(path), "old contents") << "signal " << sig;
     EXPECT_TRUE(others(dir.path(), {"m.ply"}).empty()) << "signal " << sig << ": " << others(dir.path(), {"m.ply"})[0];
   }
