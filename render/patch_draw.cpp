@@ -36,6 +36,32 @@ ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
   return ShaderProgram(name + (output == PatchOutput::wireframe ? "_wire" : ""), stages);
 }
 
+// Rasterisation discarded, into a framebuffer without attachments, while it lives: a draw needs a
+// complete framebuffer even so (NVIDIA's driver checks it, and a surfaceless EGL context has no
+// default one), one of 1×1 (GL 4.3).
+class DiscardedRaster {
+public:
+  DiscardedRaster() {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_);
+    glCreateFramebuffers(1, &framebuffer_);
+    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);
+    glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
+    glEnable(GL_RASTERIZER_DISCARD);
+  }
+  ~DiscardedRaster() {
+    glDisable(GL_RASTERIZER_DISCARD);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previous_));
+    glDeleteFramebuffers(1, &framebuffer_);
+  }
+  DiscardedRaster(const DiscardedRaster&) = delete;
+  DiscardedRaster& operator=(const DiscardedRaster&) = delete;
+
+private:
+  GLint previous_ = 0;
+  unsigned framebuffer_ = 0;
+};
+
 int quad_slot(PatchOutput output) {
   if (output == PatchOutput::wireframe) throw Error("quad patches have no wireframe program");
   return output == PatchOutput::capture ? 2 : output == PatchOutput::shaded_capture ? 3 : int(output);
@@ -79,48 +105,46 @@ void PatchDraw::draw_batches(const ShaderProgram& program, const DrawOptions& o,
   }
 }
 
+long long PatchDraw::count_triangles(PatchShape shape, const Camera& camera, const DrawOptions& o, int width, int height, int n_total,
+                                     int first_patch, int n_patches) const {
+  const ShaderProgram& feedback = program(shape, PatchOutput::feedback);
+  set_frame_uniforms(feedback, camera, o, float(width) / float(height), width, height);
+  feedback.use();
+  unsigned query = 0;
+  glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
+  {
+    const DiscardedRaster discarded;
+    glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+    draw_batches(feedback, o, n_total, first_patch, n_patches);
+    glEndQuery(GL_PRIMITIVES_GENERATED);
+  }
+  GLuint64 primitives = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &primitives);
+  glDeleteQueries(1, &query);
+  check_gl_errors("counting tessellated triangles");
+  return (long long)primitives;
+}
+
 std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o, int width,
                                                            int height, int n_total, int first_patch, int n_patches) const {
   first_patch = std::clamp(first_patch, 0, n_total);
   n_patches = n_patches < 0 ? n_total - first_patch : std::min(n_patches, n_total - first_patch);
-  unsigned buffer = 0, query = 0;
-  glCreateBuffers(1, &buffer);
-  glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
-  // A draw needs a complete framebuffer even with rasterization discarded (NVIDIA's driver checks
-  // it, and a surfaceless EGL context has no default one): one without attachments, 1×1 (GL 4.3).
-  GLint previous_framebuffer = 0;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_framebuffer);
-  unsigned framebuffer = 0;
-  glCreateFramebuffers(1, &framebuffer);
-  glNamedFramebufferParameteri(framebuffer, GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);
-  glNamedFramebufferParameteri(framebuffer, GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
-  const ShaderProgram& feedback = program(shape, PatchOutput::feedback);
-  set_frame_uniforms(feedback, camera, o, float(width) / float(height), width, height);
-  feedback.use();
-  glEnable(GL_RASTERIZER_DISCARD);
   // Counted first, then captured into a buffer of that size (a bound from the largest level alone
   // is 24,576 vertices a quad: gigabytes for a mesh of a few thousand faces).
-  GLuint primitives = 0;
-  for (const bool capture : {false, true}) {
-    if (capture) {
-      glNamedBufferData(buffer, GLsizeiptr(std::max<size_t>(1, size_t(primitives) * 3) * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
-      glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
-      glBeginTransformFeedback(GL_TRIANGLES);
-    }
-    glBeginQuery(GL_PRIMITIVES_GENERATED, query);
-    draw_batches(feedback, o, n_total, first_patch, n_patches);
-    glEndQuery(GL_PRIMITIVES_GENERATED);
-    if (capture) glEndTransformFeedback();
-    if (!capture) glGetQueryObjectuiv(query, GL_QUERY_RESULT, &primitives);
+  const long long triangles = count_triangles(shape, camera, o, width, height, n_total, first_patch, n_patches);
+  std::vector<TessellatedVertex> out(size_t(triangles) * 3);
+  unsigned buffer = 0;
+  glCreateBuffers(1, &buffer);
+  glNamedBufferData(buffer, GLsizeiptr(std::max<size_t>(1, out.size()) * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
+  {
+    const DiscardedRaster discarded;
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
+    glBeginTransformFeedback(GL_TRIANGLES);
+    draw_batches(program(shape, PatchOutput::feedback), o, n_total, first_patch, n_patches);
+    glEndTransformFeedback();
   }
-  glDisable(GL_RASTERIZER_DISCARD);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previous_framebuffer));
-  glDeleteFramebuffers(1, &framebuffer);
-  std::vector<TessellatedVertex> out(size_t(primitives) * 3);
   glGetNamedBufferSubData(buffer, 0, GLsizeiptr(out.size() * sizeof(TessellatedVertex)), out.data());
   glDeleteBuffers(1, &buffer);
-  glDeleteQueries(1, &query);
   check_gl_errors("capturing tessellated vertices");
   return out;
 }

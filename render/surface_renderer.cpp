@@ -237,11 +237,17 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
   const glm::mat4 view_projection = camera.view_projection(aspect);
   const glm::vec2 viewport{float(width), float(height)};
   // Buffer size: uniform level L generates about 2·L² triangles per quad patch, 2·⌈L/2⌉² per
-  // half-size one (shaders/patch_tesc.glsl), L² per triangle patch; adaptive levels as last time.
+  // half-size one (shaders/patch_tesc.glsl), L² per triangle patch; adaptive levels as many as last
+  // time, or where nothing is stored, as many as a draw counts (128 a patch was 1.8 GB for a
+  // 100k-face sphere at 800², which drew 0.2 M triangles). A full buffer grows and captures again.
   const long long level = (long long)std::ceil(key.level), patches = n_patches();
   long long estimate = 64;
   if (key.pixels > 0.0f) {
-    estimate += cache_.triangles() > 0 ? cache_.triangles() * 5 / 4 : patches * 128;
+    if (cache_.triangles() > 0) {
+      estimate += cache_.triangles() * 5 / 4;
+    } else {
+      estimate += patches_.count_triangles(shape(), camera, o, width, height, patches) * 9 / 8;
+    }
   } else if (shape() == PatchShape::triangle) {
     estimate += patches * level * level * 5 / 4;
   } else {

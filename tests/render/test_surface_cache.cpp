@@ -2,10 +2,12 @@
 // invalidation by edits and levels, and the adaptive levels' camera hysteresis.
 #include "render/surface_cache.h"
 
+#include <glad/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -134,6 +136,43 @@ TEST_P(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
       }
     }
   }
+}
+
+// Where nothing is stored, an adaptive capture sizes its buffer by counting the triangles first
+// (SurfaceRenderer::capture_cache); later ones take the last count, and close up the patches make
+// more: the full buffer grows and the capture takes every triangle, as the live frame draws them.
+TEST_P(SurfaceCacheTest, AdaptiveCapturesHoldWhatTheyDrawAndGrowWhenTheyNeedMore) {
+  RenderTarget target(kSize, kSize);
+  const CovarianceMesh mesh = make_sample("pawn");
+  SurfaceRenderer renderer;
+  renderer.surface_cache().set_weld(GetParam());
+  renderer.set_mesh(mesh);
+  renderer.set_collect_statistics(true);
+  const DrawOptions o = adaptive(2);
+  long long drawn_before = 0;
+  for (const float closer : {1.0f, 0.2f}) {
+    Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
+    camera.distance *= closer;
+    const Frame live = draw(renderer, target, camera, o, false);
+    glFinish();
+    const long long drawn = renderer.last_statistics().triangles;
+    const Frame first = draw(renderer, target, camera, o, true);
+    EXPECT_TRUE(renderer.surface_cache().holds_triangles());
+    EXPECT_EQ(renderer.surface_cache().triangles(), drawn);
+    // Unwelded, the buffer is all there is: the count and an eighth (measured 1.12).
+    const double held = double(renderer.surface_cache().buffer_bytes()) / double(drawn * SurfaceCache::kTriangleBytes);
+    std::printf("distance x%.1f: %lld triangles, the buffers hold %.2f times their bytes\n", closer, drawn, held);
+    if (!welds() && closer == 1.0f) {
+      EXPECT_LT(held, 1.2);
+    }
+    EXPECT_TRUE(same_surface(first, live)) << closer;
+    EXPECT_TRUE(same_surface(draw(renderer, target, camera, o, true), live)) << closer;
+    if (closer < 1.0f) {
+      ASSERT_GT(drawn, 2 * drawn_before) << "the case of this test: more than the last capture's buffer";
+    }
+    drawn_before = drawn;
+  }
+  EXPECT_EQ(renderer.surface_cache().captures(), 2);
 }
 
 // Welded, each point of the surface is fetched once, as the floor's welded buffer has it: the
