@@ -140,6 +140,7 @@ std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, con
     const DiscardedRaster discarded;
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
     glBeginTransformFeedback(GL_TRIANGLES);
+    // The feedback program as count_triangles() left it: bound, with this frame's uniforms.
     draw_batches(program(shape, PatchOutput::feedback), o, n_total, first_patch, n_patches);
     glEndTransformFeedback();
   }
