@@ -5,9 +5,11 @@
 
 #include "app/cli_checks.h"
 #include "core/error.h"
+#include "core/freed_memory.h"
 #include "ui/editor.h"
 
 int main(int argc, char** argv) {
+  gps::keep_freed_memory();
   gps::EditorOptions o;
   std::string size = "1280x800";
   bool no_vsync = false;

@@ -6,8 +6,10 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "core/freed_memory.h"
 
 int main(int argc, char** argv) {
+  gps::keep_freed_memory();
   CLI::App app{"gpsurf: Gaussian-product subdivision surfaces"};
   app.require_subcommand(1);
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return "gpsurf: " + std::string(e.what()) + "\n"; });
