@@ -19,6 +19,7 @@
 
 #include "bench/edit_scene.h"
 #include "bench/gl_bench_cases.h"
+#include "bench/run_benchmarks.h"
 #include "render/render_target.h"
 #include "render/surface_renderer.h"
 
@@ -141,5 +142,5 @@ int main(int argc, char** argv) {
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
       }
-  return gps::bench::run_registered(argc, argv);
+  return gps::bench::run_benchmarks(argc, argv);
 }

@@ -17,6 +17,7 @@
 #include "core/planned_surface.h"
 #include "core/samples.h"
 #include "bench/gl_bench_cases.h"
+#include "bench/run_benchmarks.h"
 #include "render/render_target.h"
 #include "render/surface_renderer.h"
 #include "view/camera.h"
@@ -115,5 +116,5 @@ int main(int argc, char** argv) {
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
     }
-  return gps::bench::run_registered(argc, argv);
+  return gps::bench::run_benchmarks(argc, argv);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // What the Google Benchmarks of GL frames share (bench_frames.cpp, bench_plan_depth.cpp): the
-// context, a sample by name and size, the names of tessellation settings, and their main().
+// context, a sample by name and size and the names of tessellation settings.
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -25,14 +25,5 @@ inline GlContext& context() {
 
 /// "levelN" for a uniform level N, "adaptive6px" for 0 (adaptive levels of 6-pixel edges).
 inline std::string setting_name(int level) { return level ? "level" + std::to_string(level) : "adaptive6px"; }
-
-/// main() after the benchmarks are registered.
-inline int run_registered(int argc, char** argv) {
-  ::benchmark::Initialize(&argc, argv);
-  if (::benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  ::benchmark::RunSpecifiedBenchmarks();
-  ::benchmark::Shutdown();
-  return 0;
-}
 
 }  // namespace gps::bench

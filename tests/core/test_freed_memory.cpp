@@ -1,0 +1,47 @@
+// core/freed_memory.h: after keep_freed_memory(), a large block comes from the heap, not from a
+// mapping of its own, and stays in the process when freed (ctest runs each test in its own process).
+#include <gtest/gtest.h>
+
+#include <climits>
+#include <cstdlib>
+#include <cstring>
+
+#include "core/freed_memory.h"
+
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#include <malloc.h>
+
+namespace gps {
+namespace {
+
+constexpr size_t kLarge = size_t(64) << 20;  // past glibc's largest mmap threshold (32 MiB)
+
+// Mapped blocks and the heap's bytes while a large block is held.
+struct Held {
+  size_t mapped_blocks, heap_bytes;
+};
+
+char* volatile g_block;  // through a volatile, so that the compiler keeps the allocation
+
+Held while_holding_a_large_block() {
+  g_block = static_cast<char*>(std::malloc(kLarge));
+  std::memset(g_block, 1, kLarge);
+  const struct mallinfo2 info = mallinfo2();
+  std::free(g_block);
+  return {info.hblks, info.arena};
+}
+
+TEST(FreedMemory, LargeBlocksComeFromTheHeapAndStayInTheProcess) {
+  EXPECT_GE(while_holding_a_large_block().mapped_blocks, 1u);  // glibc's default: a mapping of its own
+  keep_freed_memory();
+  const Held held = while_holding_a_large_block();
+  EXPECT_EQ(held.mapped_blocks, 0u);
+  EXPECT_GE(held.heap_bytes, kLarge);
+  EXPECT_GE(mallinfo2().arena, kLarge);  // freed, still the process's
+}
+
+}  // namespace
+}  // namespace gps
+#else
+TEST(FreedMemory, LargeBlocksComeFromTheHeapAndStayInTheProcess) { GTEST_SKIP() << "glibc's own malloc only"; }
+#endif
