@@ -1,7 +1,6 @@
 #pragma once
 // What the Google Benchmarks of GL frames share (bench_frames.cpp, bench_plan_depth.cpp): the
 // context, a sample by name and size and the names of tessellation settings.
-#include <benchmark/benchmark.h>
 
 #include <memory>
 #include <string>
