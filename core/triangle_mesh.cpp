@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include <Eigen/Geometry>
+
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/mesh_io.h"
@@ -61,6 +63,17 @@ void write_obj(std::ostream& out, const TriangleMesh& m) {
 }
 
 }  // namespace
+
+void fill_missing_normals(TriangleMesh& mesh) {
+  std::vector<Vec3> around(mesh.positions.size(), Vec3::Zero());
+  for (const auto& t : mesh.triangles) {
+    const Vec3& a = mesh.positions[size_t(t[0])];
+    const Vec3 normal = (mesh.positions[size_t(t[1])] - a).cross(mesh.positions[size_t(t[2])] - a);  // twice the area
+    for (const int i : t) around[size_t(i)] += normal;
+  }
+  for (size_t i = 0; i < mesh.normals.size(); ++i)
+    if (mesh.normals[i].isZero(0.0)) mesh.normals[i] = around[i].normalized();
+}
 
 void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, bool binary) {
   const std::string ext = extension_of(path);

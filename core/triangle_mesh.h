@@ -13,6 +13,9 @@ struct TriangleMesh {
   std::vector<std::array<int, 3>> triangles;
 };
 
+/// Gives each vertex whose normal is zero (none known there) the area-weighted normal of its triangles.
+void fill_missing_normals(TriangleMesh& mesh);
+
 /// Writes .ply (x y z nx ny nz; ASCII or binary little endian) or .obj (v, vn, f v//vn), atomically.
 void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, bool binary = false);
 

@@ -1,17 +1,21 @@
 // The thesis' comparison images (Figs. 4.4, 4.8; issue 11): the GPU's position and normal AOVs
 // against the CPU reference's, ×200 and ×5000, as `gpsurf diff` writes them, are black. The
-// reference (render --reference) is GPS subdivision with limit projection and its exact limit
-// normals, its quads split along the tessellator's diagonals, at the level whose vertices are the
-// tessellation's: every pixel then compares one surface at one parameter, evaluated twice. Under
-// Loop, GL's triangle tessellation puts its inner rings off the dyadic grid, so no reference level
-// has its vertices: there the reference is the exact evaluator (equal to subdivision and limit
-// projection at every parameter: tests/core) at the parameters of the GPU's own vertices.
+// reference is GPS subdivision with limit projection and its exact limit normals, at the level
+// whose vertices are the tessellation's, drawn in the GPU's own triangles, corner for corner
+// (render/reference_triangles.h): every pixel then compares one surface at one parameter, evaluated
+// twice and rasterised alike. Under Loop, GL's triangle tessellation puts its inner rings off the
+// dyadic grid, so no reference level has its vertices: there the reference is the exact evaluator
+// (equal to subdivision and limit projection at every parameter: tests/core) at the parameters of
+// the GPU's own vertices.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include <glm/glm.hpp>
+
+#include "core/error.h"
 #include "core/samples.h"
 #include "render/difference_image.h"
 #include "render/exact_triangles.h"
@@ -54,9 +58,14 @@ struct Shown {
   double lit = 0, visible = 0;  // any channel at 1/255, at 8/255 or more
   int brightest = 0;
   DifferenceStats stats;
+  // Where the pixels at 8/255 are, to tell a GPU's error from the image's sensitivity: by the plan
+  // node the GPU evaluated there (regular, terminal, extraordinary), and those where the surface is
+  // seen within 15° of edge-on.
+  int visible_by_kind[3] = {0, 0, 0};
+  int visible_edge_on = 0;
 };
 
-Shown shown(const Aovs& gpu, const Aovs& reference, AovKind kind) {
+Shown shown(const Aovs& gpu, const Aovs& reference, AovKind kind, const Camera& camera) {
   Shown s;
   const Image d = kind == AovKind::position ? difference_image(gpu.position, reference.position, kind, 200.0, 0.0, s.stats)
                                             : difference_image(gpu.normal, reference.normal, kind, 5000.0, 0.0, s.stats);
@@ -66,6 +75,14 @@ Shown shown(const Aovs& gpu, const Aovs& reference, AovKind kind) {
     for (int c = 0; c < 3; ++c) brightest = std::max(brightest, int(std::lround(d.pixels[i + size_t(c)] * 255.0f)));
     lit += brightest > 0;
     visible += brightest >= 8;
+    if (brightest >= 8) {
+      const size_t n = gpu.normal.channels * (i / 3), p = gpu.position.channels * (i / 3);
+      const int node_kind = int(gpu.normal.pixels[n + 3]) - 2;  // shade_frag.glsl: 2 regular, 3 terminal, 4 extraordinary
+      if (node_kind >= 0 && node_kind < 3) ++s.visible_by_kind[node_kind];
+      const glm::vec3 normal(gpu.normal.pixels[n], gpu.normal.pixels[n + 1], gpu.normal.pixels[n + 2]);
+      const glm::vec3 position(gpu.position.pixels[p], gpu.position.pixels[p + 1], gpu.position.pixels[p + 2]);
+      s.visible_edge_on += std::abs(glm::dot(normal, glm::normalize(camera.eye() - position))) < std::sin(glm::radians(15.0f));
+    }
     s.brightest = std::max(s.brightest, brightest);
   }
   s.lit = s.stats.covered ? double(lit) / s.stats.covered : 1.0;
@@ -75,12 +92,15 @@ Shown shown(const Aovs& gpu, const Aovs& reference, AovKind kind) {
 
 // Expects both images black (as below), the normal image with at most `normal_share` of the covered
 // pixels at 8/255; prints what they show.
-void expect_black(const char* name, const Aovs& gpu, const Aovs& reference, double normal_share) {
+void expect_black(const char* name, const Aovs& gpu, const Aovs& reference, const Camera& camera, double normal_share) {
   for (const AovKind kind : {AovKind::position, AovKind::normal}) {
-    const Shown s = shown(gpu, reference, kind);
+    const Shown s = shown(gpu, reference, kind, camera);
     const char* what = kind == AovKind::position ? "position x200" : "normal x5000";
     std::printf("%-14s %-14s %6d pixels, %6.3f%% lit, %6.3f%% at 8/255, brightest %3d/255, largest difference %.1e, mean %.1e\n", name,
                 what, s.stats.covered, 100.0 * s.lit, 100.0 * s.visible, s.brightest, s.stats.max, s.stats.mean);
+    if (s.visible > 0)
+      std::printf("%-14s %-14s at 8/255: %d regular, %d terminal, %d extraordinary node pixels; %d seen within 15 deg of edge-on\n",
+                  name, what, s.visible_by_kind[0], s.visible_by_kind[1], s.visible_by_kind[2], s.visible_edge_on);
     EXPECT_GT(s.stats.covered, kSize * kSize / 20) << name;
     EXPECT_LE(s.stats.coverage_mismatch, s.stats.covered / 10000) << name << " " << what;
     EXPECT_LE(s.visible, kind == AovKind::normal ? normal_share : 0.01) << name << " " << what;
@@ -92,15 +112,18 @@ void expect_black(const char* name, const Aovs& gpu, const Aovs& reference, doub
 // silhouette edge passes within float rounding of a pixel centre (at most 1 in 10,000 covered). The
 // share of pixels lit at all (1/255) and the brightest are reported. cone-concave's apex covariance
 // is 1e-5 (q̂ ~ 1e5 I) where its surface folds inwards: up to 4 % of its normal pixels reach 8/255
-// (measured 3.0 %, the largest difference 2.4e-4). That is this image's sensitivity there more than
+// (measured 3.0 %, the largest difference 4.6e-5). That is this image's sensitivity there more than
 // the GPU's error. On llvmpipe the GPU's vertex normals are within 1.8e-6 of the exact evaluator's
-// (6.7e-6 at the apex, whose triangles cover no pixel); its own triangles drawn with every normal
-// turned by 1e-6 light 2.1 % of the pixels at 8/255 (differences up to 4.3e-5); and the exact
-// evaluator's values in the GPU's triangles light 1.8 % against the reference, whose vertices they
-// equal to 1e-12 (the rest is the two triangulations). cone-pointy, with the same apex, measured 5.5 %
-// while the GPU summed q̄ = q̂μ itself, 0.54 % about nearby anchors (shaders/plan_point.glsl), 0.37 %
-// since boundary leaves take their phantom points into the basis (core/patch_basis.h): before, a
-// phantom beside the rim was 2p₀ − p₁ with p₁ weighing the apex, a large difference in float.
+// (6.7e-6 at the apex, whose triangles cover no pixel), and its own triangles drawn with every
+// normal turned by 1e-6 light 2.1 % of the pixels at 8/255 (differences up to 4.3e-5). cone-pointy,
+// with the same apex, measured 5.5 % while the GPU summed q̄ = q̂μ itself, 0.54 % about nearby anchors
+// (shaders/plan_point.glsl), 0.37 % since boundary leaves take their phantom points into the basis
+// (core/patch_basis.h): before, a phantom beside the rim was 2p₀ − p₁ with p₁ weighing the apex, a
+// large difference in float. Drawn in the reference's own triangles (split along the diagonals the
+// tessellator takes), the images also showed the two draws' rounding: the exact evaluator's values,
+// equal to the reference's to 1e-14, lit 330 pixels of cone-plateau over 1e-6 in the one
+// triangulation against the other (llvmpipe), where a triangle seen edge-on covers a pixel centre;
+// cone-concave had a pixel at 255/255 (2.4e-4), cone-plateau 0.020 % at 8/255 (0.007 % now).
 TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
   const PlanOptions options{Scheme::catmull_clark};
   for (const char* name : {"valence3", "valence5", "valence8", "valence10", "wirecube", "cone", "cone-pointy", "cone-concave",
@@ -113,10 +136,37 @@ TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
     renderer.set_mesh(mesh, options);
     const Camera camera = frame_mesh(mesh);
     const Aovs gpu = draw(renderer, camera, false);
-    renderer.set_triangles(reference_triangles(mesh, levels, options));
+    renderer.set_triangles(reference_in_patch_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize, levels));
     const Aovs reference = draw(renderer, camera, true);
     const bool folded_needle = std::string(name) == "cone-concave";
-    expect_black(name, gpu, reference, folded_needle ? 0.04 : 0.01);
+    expect_black(name, gpu, reference, camera, folded_needle ? 0.04 : 0.01);
+  }
+}
+
+// The reference in the patches' triangles is the reference at their vertices: equal to the exact
+// evaluator's values in the same triangles (tests/core: the two surfaces are one), a triangle's
+// half-size patches included (cone); off the reference's grid it refuses.
+TEST_F(ComparisonImages, ReferenceInThePatchesTrianglesHasTheirVertices) {
+  const PlanOptions options{Scheme::catmull_clark};
+  for (const char* name : {"valence5", "cone"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(mesh, options);
+    const Camera camera = frame_mesh(mesh);
+    const TriangleMesh exact = exact_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize);
+    const TriangleMesh reference = reference_in_patch_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize, 4);
+    ASSERT_EQ(reference.triangles, exact.triangles) << name;
+    ASSERT_EQ(reference.positions.size(), exact.positions.size()) << name;
+    double position = 0, normal = 0;
+    for (size_t i = 0; i < exact.positions.size(); ++i) {
+      position = std::max(position, (reference.positions[i] - exact.positions[i]).norm());
+      normal = std::max(normal, (reference.normals[i] - exact.normals[i]).norm());
+    }
+    EXPECT_LT(position, 1e-12) << name;
+    EXPECT_LT(normal, 1e-9) << name;
+    DrawOptions off_grid = options_at_level(false);
+    off_grid.level = 12.0f;
+    EXPECT_THROW(reference_in_patch_triangles(renderer, mesh, camera, off_grid, kSize, kSize, 4), Error) << name;
   }
 }
 
@@ -136,7 +186,7 @@ TEST_F(ComparisonImages, AreBlackOnTheConesUnderLoop) {
     const Aovs gpu = draw(renderer, camera, false);
     renderer.set_triangles(exact_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize));
     const Aovs reference = draw(renderer, camera, true);
-    expect_black(name, gpu, reference, std::string(name) == "cone-concave" ? 0.04 : 0.01);
+    expect_black(name, gpu, reference, camera, std::string(name) == "cone-concave" ? 0.04 : 0.01);
   }
 }
 
