@@ -90,7 +90,15 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
     camera = frame_mesh(mesh, c[0], c[1]);
     camera.distance = c.size() > 2 ? c[2] : distance;
   }
-  if (a.reference >= 0) renderer.set_triangles(reference_triangles(mesh, a.reference, a.plans.options()));
+  if (a.reference >= 1 && a.reference <= 6 && scheme_for(topology_of(mesh.mesh), a.plans.options()) == Scheme::catmull_clark) {
+    // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level
+    // then shows the two surfaces' values alone, not two draws' rounding (render/reference_triangles.h).
+    DrawOptions at_level = o;
+    at_level.level = float(1 << a.reference), at_level.pixels = 0;
+    renderer.set_triangles(reference_in_patch_triangles(renderer, mesh, camera, at_level, width, height, a.reference));
+  } else if (a.reference >= 0) {
+    renderer.set_triangles(reference_triangles(mesh, a.reference, a.plans.options()));
+  }
   if (a.exact) renderer.set_triangles(exact_triangles(renderer, mesh, camera, o, width, height));
   o.static_triangles = a.reference >= 0 || a.exact;
   RenderTarget target(width, height);
@@ -228,8 +236,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--background", a->background, "background colour r,g,b in [0,1]");
   cmd->add_option("--aov", a->aovs, "world-space float buffers: position=FILE.exr, normal=FILE.exr");
   auto* reference = cmd->add_option("--reference", a->reference,
-                                    "draw the CPU reference subdivision at level N instead of the patches (the patches' triangles at "
-                                    "--level 2^N under Catmull-Clark, not under Loop: see --exact)")
+                                    "draw the CPU reference subdivision at level N instead of the patches: under Catmull-Clark "
+                                    "(N = 1..6) in the patches' own triangles at --level 2^N, so that diff against them shows the "
+                                    "surfaces alone; under Loop, whose triangles no reference level has, see --exact")
                         ->check(CLI::Range(0, 7));
   cmd->add_flag("--exact", a->exact,
                 "draw the patches' own triangles with the CPU's exact values at their vertices (double): diff against a "
