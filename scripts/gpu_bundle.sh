@@ -14,7 +14,7 @@ rm -rf "$dir" && mkdir -p "$dir/bin" "$dir/lib"
 tests=()
 for t in build/tests/test_*; do
   # Only tests whose libraries a GPU machine has: not those writing images (OpenImageIO).
-  if [ -x "$t" ] && grep -q "gl_fixture\|GlTest" "tests/render/$(basename "$t").cpp" 2>/dev/null && ! ldd "$t" | grep -q OpenImageIO; then
+  if [ -x "$t" ] && grep -q "gl_fixture\|GlTest" "tests/render/$(basename "$t").cpp" 2>/dev/null && ! ldd "$t" | grep OpenImageIO > /dev/null; then  # not -q: under pipefail, ldd killed by SIGPIPE would pass
     strip -o "$dir/bin/$(basename "$t")" "$t"
     tests+=("$(basename "$t")")
   fi
@@ -44,6 +44,8 @@ if [ "\$mode" != tests ]; then
   "\$here/bin/gpsurf_bench_frames" --benchmark_min_time=0.1 --benchmark_filter='^Frame/[a-z]+/[a-z0-9-]+/' \\
     --benchmark_out="\$out/frames.json" --benchmark_out_format=json | tee "\$out/frames.txt"
   "\$here/bin/gpsurf_bench_edit" --benchmark_min_time=0.2 | tee "\$out/edit.txt"
+  # Issue 11: exact plans (depth 2) against the thesis' depth 3, the wirecube's many extraordinary nodes.
+  "\$here/bin/gpsurf_bench_plan_depth" --benchmark_min_time=0.2 --benchmark_filter='wirecube/(approx3|exact2)' | tee "\$out/plan_depth.txt"
 fi
 RUN
 chmod +x "$dir/run.sh"
