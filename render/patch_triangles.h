@@ -1,6 +1,6 @@
 #pragma once
-// The GPU's own tessellation, its vertices given values on the CPU: what `render --exact` and the
-// comparison images draw, so that two images of one surface differ in its values alone.
+// The GPU's own tessellation, its vertices given values on the CPU: what `render --exact` and
+// `render --reference` (Catmull-Clark) draw, so that two images of one surface differ in its values alone.
 #include <functional>
 
 #include "core/linalg.h"

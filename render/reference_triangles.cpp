@@ -1,6 +1,7 @@
 #include "render/reference_triangles.h"
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <unordered_map>
 

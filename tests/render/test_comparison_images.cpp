@@ -121,9 +121,9 @@ void expect_black(const char* name, const Aovs& gpu, const Aovs& reference, cons
 // (core/patch_basis.h): before, a phantom beside the rim was 2p₀ − p₁ with p₁ weighing the apex, a
 // large difference in float. Drawn in the reference's own triangles (split along the diagonals the
 // tessellator takes), the images also showed the two draws' rounding: the exact evaluator's values,
-// equal to the reference's to 1e-14, lit 330 pixels of cone-plateau over 1e-6 in the one
-// triangulation against the other (llvmpipe), where a triangle seen edge-on covers a pixel centre;
-// cone-concave had a pixel at 255/255 (2.4e-4), cone-plateau 0.020 % at 8/255 (0.007 % now).
+// equal to the reference's to 1e-14, lit 330 pixels of cone-plateau over 1e-6 (the largest 2.2e-5)
+// in the one triangulation against the other (llvmpipe); cone-concave had a pixel at 255/255
+// (2.4e-4), cone-plateau 0.020 % at 8/255 (0.007 % now).
 TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
   const PlanOptions options{Scheme::catmull_clark};
   for (const char* name : {"valence3", "valence5", "valence8", "valence10", "wirecube", "cone", "cone-pointy", "cone-concave",
