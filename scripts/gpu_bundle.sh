@@ -29,6 +29,7 @@ done
 cat > "$dir/run.sh" <<RUN
 #!/usr/bin/env bash
 # GL tests on the GPU (EGL) and frame benchmarks; logs and JSON into \$1. Built from $(git rev-parse --short HEAD).
+# Checkout: $(pwd)
 set -u
 here=\$(cd "\$(dirname "\$0")" && pwd)
 out=\${1:?usage: run.sh OUT [tests|bench|all]}; mode=\${2:-all}
