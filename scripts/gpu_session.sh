@@ -13,7 +13,7 @@ for f in .gl/*.deb; do [ -e "$f" ] && dpkg -x "$f" /; done
 ldconfig
 export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
 # The tests read tests/data from the path compiled in (the checkout where the bundle was built).
-built_in=$(sed -n 's/^# GL tests .* Built from \(.*\)$/\1/p' out/gpu-bundle/run.sh | head -1)
+built_in=$(sed -n 's/^# GL tests .* Built from \([0-9a-f]*\)\.$/\1/p' out/gpu-bundle/run.sh | head -1)
 checkout=$(sed -n 's/^# Checkout: //p' out/gpu-bundle/run.sh | head -1)
 if [ -n "$checkout" ] && [ ! -e "$checkout" ]; then mkdir -p "$(dirname "$checkout")" && ln -s "$PWD" "$checkout"; fi
 nvidia-smi --query-gpu=name,driver_version --format=csv,noheader || true

@@ -110,8 +110,8 @@ TEST(RenderCli, ExactEvaluatorDrawsThePatchesOwnTriangles) {
 
 // Under Catmull-Clark, --reference N draws the reference in the patches' own triangles at level 2^N:
 // against the exact evaluator's values in the same triangles (equal to the reference's to 1e-14) the
-// images are the same (measured: 0), where the reference's own triangles differed by 2.2e-5 at
-// pixels seen edge-on (cone-plateau). A triangle mesh under Catmull-Clark: half-size patches.
+// images are the same (measured: 0), where in the reference's own triangles they differed by up to
+// 2.2e-5 (cone-plateau). A triangle mesh under Catmull-Clark: half-size patches.
 TEST(RenderCli, ReferenceDrawsInThePatchesTrianglesUnderCatmullClark) {
   test::TempDir dir;
   const std::string mesh = dir.file("cone.ply");
