@@ -13,12 +13,31 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_
 cmake --build build-asan -j"$(nproc)"
 # Libraries stay loaded until exit (scripts/no_dlclose.c), so leaks in them name their module.
 cc -shared -fPIC -O1 -o build-asan/no_dlclose.so scripts/no_dlclose.c
+# C heap blocks over 128 KiB are reused, not mapped afresh on every draw (scripts/asan_block_reuse.c:
+# the GL tests took 4-50x their time without it); first checked to keep ASan's findings.
+cc -shared -fPIC -O2 -fno-omit-frame-pointer -o build-asan/asan_block_reuse.so scripts/asan_block_reuse.c
+cc -fsanitize=address -O0 -g -o build-asan/asan_block_reuse_check scripts/asan_block_reuse_check.c
+reuse_check() {
+  LD_PRELOAD=build-asan/asan_block_reuse.so ASAN_OPTIONS=verify_asan_link_order=0 build-asan/asan_block_reuse_check "$1" 2>&1
+}
+if ! reuse_check reused >/dev/null; then
+  echo "scripts/asan_block_reuse.c is not in effect: a freed large block did not come back" >&2
+  exit 1
+fi
+for check in overflow:use-after-poison use-after-free:use-after-poison overflow-after-realloc:use-after-poison \
+  double-free:double-free leak:LeakSanitizer; do
+  if report=$(reuse_check "${check%%:*}") || [[ "$report" != *"${check#*:}"* ]]; then
+    echo "scripts/asan_block_reuse.c hides ASan's finding in case ${check%%:*} (expected ${check#*:}):" >&2
+    echo "$report" | head -20 >&2
+    exit 1
+  fi
+done
 # Mesa's llvmpipe links LLVM, which the GL loaders open late (dlopen; no binary links OSMesa, which
 # render/gl_context.cpp loads when it makes a context). LeakSanitizer's tracer then crashed at the
 # editor's exit (signal 11 while it stopped the threads, 3 runs in 4); with LLVM loaded at start,
 # as when OSMesa was linked, it does not (4 in 4).
 llvm=$(ldd "$(ldconfig -p | awk '/libOSMesa\.so\.8 / {print $NF; exit}')" 2>/dev/null | awk '/libLLVM/ {print $3; exit}' || true)
-export LD_PRELOAD="$PWD/build-asan/no_dlclose.so${llvm:+ $llvm}"
+export LD_PRELOAD="$PWD/build-asan/no_dlclose.so $PWD/build-asan/asan_block_reuse.so${llvm:+ $llvm}"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:detect_odr_violation=0:verify_asan_link_order=0"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
