@@ -15,7 +15,6 @@
 // which LeakSanitizer leaves the dynamic linker's own allocations alone.
 #include <stddef.h>
 #include <stdint.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
