@@ -167,12 +167,14 @@ void free(void* p) {
   }
   const int s = in_use[i].shift;
   erase((size_t)i);
+  release();
+  // Poisoned before it is listed: once listed, another thread may take it and unpoison it.
+  __asan_poison_memory_region(p, (size_t)1 << s);
+  acquire();
   const int keep = n_kept[s] < kKeptPerSize;
   if (keep) kept[s][n_kept[s]++] = p;
   release();
-  if (keep) {
-    __asan_poison_memory_region(p, (size_t)1 << s);
-  } else {
+  if (!keep) {
     __asan_unpoison_memory_region(p, (size_t)1 << s);
     __interceptor_free(p);
   }
