@@ -3,7 +3,7 @@
 #include <cmath>
 #include <regex>
 
-#include "core/error.h"
+#include "core/mesh/error.h"
 
 namespace gps {
 

@@ -10,11 +10,11 @@
 #include "bench/edit_figures.h"
 #include "bench/frame_figures.h"
 #include "bench/preprocess_figures.h"
-#include "core/atomic_file.h"
-#include "core/error.h"
-#include "core/samples.h"
-#include "render/gl_context.h"
-#include "render/line_plot.h"
+#include "core/io/atomic_file.h"
+#include "core/mesh/error.h"
+#include "core/mesh/samples.h"
+#include "render/gl/gl_context.h"
+#include "render/image/line_plot.h"
 
 namespace gps {
 

@@ -3,8 +3,8 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
-#include "core/error.h"
-#include "render/difference_image.h"
+#include "core/mesh/error.h"
+#include "render/image/difference_image.h"
 
 namespace gps {
 

@@ -3,8 +3,8 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
-#include "core/inference.h"
-#include "core/mesh_io.h"
+#include "core/mesh/inference.h"
+#include "core/io/mesh_io.h"
 
 namespace gps {
 

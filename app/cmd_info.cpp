@@ -4,8 +4,8 @@
 #include <map>
 
 #include "app/commands.h"
-#include "core/mesh_connectivity.h"
-#include "core/mesh_io.h"
+#include "core/mesh/mesh_connectivity.h"
+#include "core/io/mesh_io.h"
 
 namespace gps {
 
@@ -25,9 +25,9 @@ void print_info(const std::string& path) {
   }
   double lo = std::numeric_limits<double>::infinity(), hi = 0;
   for (const Mat3& s : m.covariances) {
-    const Vec3 ev = Eigen::SelfAdjointEigenSolver<Mat3>(s, Eigen::EigenvaluesOnly).eigenvalues();
-    lo = std::min(lo, ev(0));
-    hi = std::max(hi, ev(2));
+    const Vec3 eigenvalues = Eigen::SelfAdjointEigenSolver<Mat3>(s, Eigen::EigenvaluesOnly).eigenvalues();
+    lo = std::min(lo, eigenvalues(0));
+    hi = std::max(hi, eigenvalues(2));
   }
   std::cout << "file: " << path << "\nvertices: " << m.n_vertices() << "\nfaces: " << m.n_faces() << " (";
   const char* sep = "";

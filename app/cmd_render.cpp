@@ -7,17 +7,17 @@
 #include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/plan_arguments.h"
-#include "core/error.h"
-#include "core/mesh_io.h"
-#include "core/samples.h"
-#include "core/text_file.h"
-#include "render/exact_triangles.h"
-#include "render/gl_context.h"
-#include "render/image_io.h"
-#include "render/matcap.h"
-#include "render/matcap_file.h"
-#include "render/reference_triangles.h"
-#include "render/surface_renderer.h"
+#include "core/mesh/error.h"
+#include "core/io/mesh_io.h"
+#include "core/mesh/samples.h"
+#include "core/io/text_file.h"
+#include "render/comparison/exact_triangles.h"
+#include "render/gl/gl_context.h"
+#include "render/image/image_io.h"
+#include "render/image/matcap.h"
+#include "render/image/matcap_file.h"
+#include "render/comparison/reference_triangles.h"
+#include "render/pipeline/surface_renderer.h"
 
 namespace gps {
 
@@ -92,7 +92,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   }
   if (a.reference >= 1 && a.reference <= 6 && scheme_for(topology_of(mesh.mesh), a.plans.options()) == Scheme::catmull_clark) {
     // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level
-    // then shows the two surfaces' values alone, not two draws' rounding (render/reference_triangles.h).
+    // then shows the two surfaces' values alone, not two draws' rounding (render/comparison/reference_triangles.h).
     DrawOptions at_level = o;
     at_level.level = float(1 << a.reference), at_level.pixels = 0;
     renderer.set_triangles(reference_in_patch_triangles(renderer, mesh, camera, at_level, width, height, a.reference));

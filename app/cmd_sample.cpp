@@ -2,9 +2,9 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "core/error.h"
-#include "core/mesh_io.h"
-#include "core/samples.h"
+#include "core/mesh/error.h"
+#include "core/io/mesh_io.h"
+#include "core/mesh/samples.h"
 
 namespace gps {
 

@@ -2,8 +2,8 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "core/mesh_io.h"
-#include "core/reference_subdivision.h"
+#include "core/io/mesh_io.h"
+#include "core/reference/reference_subdivision.h"
 
 namespace gps {
 

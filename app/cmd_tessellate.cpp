@@ -3,9 +3,9 @@
 
 #include "app/commands.h"
 #include "app/plan_arguments.h"
-#include "core/mesh_io.h"
-#include "core/planned_surface.h"
-#include "core/tessellator.h"
+#include "core/io/mesh_io.h"
+#include "core/plans/planned_surface.h"
+#include "core/evaluation/tessellator.h"
 
 namespace gps {
 

@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "app/cli_checks.h"
-#include "core/error.h"
-#include "core/freed_memory.h"
+#include "core/mesh/error.h"
+#include "core/support/freed_memory.h"
 #include "ui/editor.h"
 
 int main(int argc, char** argv) {

@@ -5,8 +5,9 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "core/error.h"
-#include "core/freed_memory.h"
+#include "core/mesh/error.h"
+#include "core/version.h"
+#include "core/support/freed_memory.h"
 
 int main(int argc, char** argv) {
   gps::keep_freed_memory();
@@ -14,14 +15,17 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return "gpsurf: " + std::string(e.what()) + "\n"; });
   app.set_help_all_flag("--help-all", "help on every subcommand");
+  app.set_version_flag("--version", std::string("gpsurf ") + gps::kVersion);
   gps::add_info_command(app);
   gps::add_sample_command(app);
   gps::add_infer_command(app);
   gps::add_subdivide_command(app);
   gps::add_tessellate_command(app);
+#ifdef GPSURF_WITH_GL
   gps::add_bench_command(app);
   gps::add_render_command(app);
   gps::add_diff_command(app);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,6 +1,6 @@
 #include "app/plan_arguments.h"
 
-#include "core/error.h"
+#include "core/mesh/error.h"
 
 namespace gps {
 

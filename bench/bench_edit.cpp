@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "bench/edit_scene.h"
-#include "render/gl_context.h"
+#include "render/gl/gl_context.h"
 
 namespace {
 

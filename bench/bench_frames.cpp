@@ -4,7 +4,7 @@
 // patches) and the floor (the cached triangles, welded, from a static vertex buffer, same shading).
 // `unwelded` is the floor without shared vertices; `welded` and `captured` are cached frames with
 // the stored vertices welded at each capture or never, whatever this device's default
-// (render/surface_cache.h).
+// (render/cache/surface_cache.h).
 // `gpsurf bench --render` prints the same four in one table from a few repetitions each; this one
 // lets Google Benchmark choose the iterations, as sub-millisecond frames on a GPU need.
 // Names: Frame/<kind>/<mesh>/<setting>, e.g. Frame/floor/valence5/level16, Frame/cached/sphere:100000/adaptive6px.
@@ -20,8 +20,8 @@
 #include "bench/edit_scene.h"
 #include "bench/gl_bench_cases.h"
 #include "bench/run_benchmarks.h"
-#include "render/render_target.h"
-#include "render/surface_renderer.h"
+#include "render/gl/render_target.h"
+#include "render/pipeline/surface_renderer.h"
 
 namespace {
 

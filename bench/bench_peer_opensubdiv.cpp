@@ -2,7 +2,7 @@
 // OpenSubdiv is linked into this benchmark only; the reference stays our own code.
 //  - Reference: N levels of uniform Catmull-Clark on 9D primvars (q = F(μ, Σ)) and the limit
 //    positions of the last level, from Gaussians to Gaussians with the refined faces: ours is
-//    subdivide() (core/reference_subdivision.h), theirs TopologyRefiner + PrimvarRefiner in double.
+//    subdivide() (core/reference/reference_subdivision.h), theirs TopologyRefiner + PrimvarRefiner in double.
 //  - Preprocessing: our build_plans() (plans + stencil table, depth 3) beside Far's adaptive
 //    refinement to level 3, StencilTable and PatchTable with its local-point stencils appended.
 // Ratios: divide the "Ours" time by the "Osd" time of the same arguments.
@@ -15,11 +15,11 @@
 
 #include <memory>
 
-#include "core/dual_map.h"
-#include "core/mesh_connectivity.h"
-#include "core/plan_builder.h"
-#include "core/reference_subdivision.h"
-#include "core/samples.h"
+#include "core/mesh/dual_map.h"
+#include "core/mesh/mesh_connectivity.h"
+#include "core/plans/plan_builder.h"
+#include "core/reference/reference_subdivision.h"
+#include "core/mesh/samples.h"
 
 namespace {
 

@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "core/error.h"
-#include "core/planned_surface.h"
-#include "core/samples.h"
+#include "core/mesh/error.h"
+#include "core/plans/planned_surface.h"
+#include "core/mesh/samples.h"
 #include "bench/gl_bench_cases.h"
 #include "bench/run_benchmarks.h"
-#include "render/render_target.h"
-#include "render/surface_renderer.h"
+#include "render/gl/render_target.h"
+#include "render/pipeline/surface_renderer.h"
 #include "view/camera.h"
 
 namespace {
@@ -89,7 +89,7 @@ void BM_Preprocess(benchmark::State& state, MeshCase m, int kind) {
   const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
   size_t bytes = 0, rows = 0;
   for (auto _ : state) {
-    const gps::PlanTables t = gps::build_surface_plans(topology, plan_kinds()[size_t(kind)].options);
+    const gps::SurfaceTables t = gps::build_surface_plans(topology, plan_kinds()[size_t(kind)].options);
     bytes = t.bytes();
     rows = size_t(t.stencils.n_rows());
   }

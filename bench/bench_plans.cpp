@@ -4,10 +4,10 @@
 
 #include <algorithm>
 
-#include "core/dual_map.h"
-#include "core/plan_builder.h"
-#include "core/samples.h"
-#include "core/stencil_table.h"
+#include "core/mesh/dual_map.h"
+#include "core/plans/plan_builder.h"
+#include "core/mesh/samples.h"
+#include "core/plans/stencil_table.h"
 
 namespace {
 
@@ -22,7 +22,7 @@ constexpr Case kCases[] = {{"cube", 0},       {"wirecube", 0},   {"valence3", 0}
 
 struct Prepared {
   gps::CovarianceMesh mesh;
-  gps::PlanTables tables;
+  gps::SurfaceTables tables;
   std::vector<gps::Dual> q;
 };
 

@@ -5,9 +5,9 @@
 #include <omp.h>
 #include <sys/resource.h>
 
-#include "core/planned_surface.h"
-#include "core/reference_subdivision.h"
-#include "core/samples.h"
+#include "core/plans/planned_surface.h"
+#include "core/reference/reference_subdivision.h"
+#include "core/mesh/samples.h"
 
 namespace {
 
@@ -28,7 +28,7 @@ void BM_BuildPlansOnCores(benchmark::State& state) {
   omp_set_num_threads(int(state.range(0)));
   size_t table_bytes = 0;
   for (auto _ : state) {
-    const gps::PlanTables t = gps::build_surface_plans(topology, gps::PlanOptions{});
+    const gps::SurfaceTables t = gps::build_surface_plans(topology, gps::PlanOptions{});
     table_bytes = t.bytes();
   }
   omp_set_num_threads(omp_get_num_procs());

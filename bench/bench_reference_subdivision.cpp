@@ -2,8 +2,8 @@
 // on the icosphere.
 #include <benchmark/benchmark.h>
 
-#include "core/reference_subdivision.h"
-#include "core/samples.h"
+#include "core/reference/reference_subdivision.h"
+#include "core/mesh/samples.h"
 
 namespace {
 

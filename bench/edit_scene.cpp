@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "core/samples.h"
+#include "core/mesh/samples.h"
 
 namespace gps {
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "core/covariance_mesh.h"
-#include "render/render_target.h"
-#include "render/surface_renderer.h"
+#include "core/mesh/covariance_mesh.h"
+#include "render/gl/render_target.h"
+#include "render/pipeline/surface_renderer.h"
 #include "view/camera.h"
 
 namespace gps {

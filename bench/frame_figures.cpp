@@ -3,11 +3,11 @@
 #include <cmath>
 
 #include "bench/edit_scene.h"
-#include "core/dual_map.h"
-#include "core/stencil_table.h"
-#include "core/tessellator.h"
-#include "render/frame_timer.h"
-#include "render/render_target.h"
+#include "core/mesh/dual_map.h"
+#include "core/plans/stencil_table.h"
+#include "core/evaluation/tessellator.h"
+#include "render/gl/frame_timer.h"
+#include "render/gl/render_target.h"
 
 namespace gps {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/planned_surface.h"
+#include "core/plans/planned_surface.h"
 
 namespace gps {
 

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "render/gl_context.h"
+#include "render/gl/gl_context.h"
 
 namespace gps::bench {
 

@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "core/median.h"
+#include "core/support/median.h"
 
 namespace gps {
 

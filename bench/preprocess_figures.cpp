@@ -1,16 +1,16 @@
 #include "bench/preprocess_figures.h"
 
 #include "bench/median_timing.h"
-#include "core/dual_map.h"
-#include "core/samples.h"
-#include "core/stencil_table.h"
+#include "core/mesh/dual_map.h"
+#include "core/mesh/samples.h"
+#include "core/plans/stencil_table.h"
 
 namespace gps {
 
 nlohmann::json preprocess_figures(const std::string& name, int size, const PlanOptions& options) {
   const CovarianceMesh mesh = make_sample(name, size);
   const PolygonTopology topology = topology_of(mesh.mesh);
-  PlanTables tables;
+  SurfaceTables tables;
   const double preprocess = median_seconds([&] { tables = build_surface_plans(topology, options); });
   std::vector<Dual> q = base_points(mesh);
   std::vector<Dual> points;

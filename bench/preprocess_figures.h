@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "core/planned_surface.h"
+#include "core/plans/planned_surface.h"
 
 namespace gps {
 

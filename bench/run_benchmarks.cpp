@@ -2,7 +2,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "core/freed_memory.h"
+#include "core/support/freed_memory.h"
 
 namespace gps::bench {
 

@@ -3,7 +3,7 @@
 
 namespace gps::bench {
 
-/// Runs the registered benchmarks under the programs' heap settings (core/freed_memory.h), so that
+/// Runs the registered benchmarks under the programs' heap settings (core/support/freed_memory.h), so that
 /// they time what gpsurf and the editor do: main() after the benchmarks are registered.
 int run_benchmarks(int argc, char** argv);
 

@@ -6,10 +6,10 @@
 #include <sstream>
 #include <string>
 
-#include "core/error.h"
-#include "core/inference.h"
-#include "core/mesh_import.h"
-#include "core/ply_io.h"
+#include "core/mesh/error.h"
+#include "core/mesh/inference.h"
+#include "core/io/mesh_import.h"
+#include "core/io/ply_io.h"
 
 namespace {
 gps::CovarianceMesh parse(const std::string& data) {

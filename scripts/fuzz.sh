@@ -12,8 +12,8 @@ readers=("${@:-ply obj off stl}")
 read -r -a readers <<< "${readers[*]}"
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGPS_BUILD_FUZZ=ON \
-  -DGPS_BUILD_TESTS=OFF -DGPS_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGPSURF_BUILD_FUZZ=ON \
+  -DGPSURF_BUILD_TESTS=OFF -DGPSURF_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target "${readers[@]/#/fuzz_}"
 for r in "${readers[@]}"; do
   mkdir -p "build-fuzz/corpus/$r"

@@ -11,7 +11,7 @@ command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -
 # -O1, ASan's usual level: on 2 cores the build took 664 s instead of 1,021 s at -O2, and the suite
 # 964 s instead of 824 s.
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DGPS_SANITIZE=ON -DGPS_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
+  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DGPSURF_SANITIZE=ON -DGPSURF_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
 cmake --build build-asan -j"$(nproc)"
 # Libraries stay loaded until exit (scripts/no_dlclose.c), so leaks in them name their module.
 cc -shared -fPIC -O1 -o build-asan/no_dlclose.so scripts/no_dlclose.c
@@ -35,7 +35,7 @@ for check in overflow:use-after-poison use-after-free:use-after-poison overflow-
   fi
 done
 # Mesa's llvmpipe links LLVM, which the GL loaders open late (dlopen; no binary links OSMesa, which
-# render/gl_context.cpp loads when it makes a context). LeakSanitizer's tracer then crashed at the
+# render/gl/gl_context.cpp loads when it makes a context). LeakSanitizer's tracer then crashed at the
 # editor's exit (signal 11 while it stopped the threads, 3 runs in 4); with LLVM loaded at start,
 # as when OSMesa was linked, it does not (4 in 4).
 llvm=$(ldd "$(ldconfig -p | awk '/libOSMesa\.so\.8 / {print $NF; exit}')" 2>/dev/null | awk '/libLLVM/ {print $3; exit}' || true)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The editor soak run long: random event scripts (tests/support/random_events.h) replayed in
-# gpsurf-editor on five samples (tests/app/test_editor_soak.cpp), EVENTS events per sample per round,
+# gpsurf-editor on five samples (tests/window/test_editor_soak.cpp), EVENTS events per sample per round,
 # one round per seed from FIRST_SEED, under xvfb-run. Stops at the first crash, hang or unloadable
 # save; the failing events file is left as build/tests/soak-failed-SAMPLE.json (replay it with
 # gpsurf-editor MESH --play FILE). Builds into BUILD (default build/; build-asan/ after

@@ -1,4 +1,4 @@
-// Triangles the surface cache stored (render/surface_cache.h): the tessellation evaluation
+// Triangles the surface cache stored (render/cache/surface_cache.h): the tessellation evaluation
 // outputs as transform feedback wrote them, projected as patch_tese.glsl projects them. No geometry
 // stage follows (it cost 1.5-2x the frame on llvmpipe), so llvmpipe rounds the viewport transform
 // apart from the live pipeline: the AOVs agree to ~1e-4, not bit for bit (test_surface_cache.cpp).

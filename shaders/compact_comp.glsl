@@ -1,4 +1,4 @@
-// Numbers the welded distinct vertices block by block (render/stored_vertex_weld.h): a vertex that
+// Numbers the welded distinct vertices block by block (render/cache/stored_vertex_weld.h): a vertex that
 // is its own index is copied (its position and normal, and apart the patch and parameters it was
 // evaluated at) to its block's first vertex plus the number of distinct vertices before it in the block
 // (from the exclusive prefix sum of shaders/weld_comp.glsl's flags), and every vertex's index
@@ -27,7 +27,7 @@ void main() {
     for (uint k = 0u; k < 3u; ++k) parameters[3u * number + k] = stored[12u * v + 9u + k];
   }
   // The block's last vertex: the work groups that evaluate its welded vertices again
-  // (render/stored_vertex_evaluation.h, an indirect dispatch).
+  // (render/cache/stored_vertex_evaluation.h, an indirect dispatch).
   uint end = block + 1 < u_blocks ? block_starts[block + 1] : uint(u_count);
   if (v + 1u == end) {
     uint welded_vertices = distinct_before[v] + (representative == v ? 1u : 0u) - distinct_before[start];

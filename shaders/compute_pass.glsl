@@ -1,4 +1,4 @@
-// What the listed compute passes share (render/compute_limits.h, run_compute_pass): their work
+// What the listed compute passes share (render/gl/compute_limits.h, run_compute_pass): their work
 // groups, and the items they run over: item i of u_count is i itself, or with u_use_list the
 // list's i-th entry. main() starts with compute_invocation(), which is −1 past the end.
 layout(local_size_x = kWorkGroupSize) in;

@@ -1,4 +1,4 @@
-// Runs of the surface cache's stored vertices that one pass runs over (render/stored_vertex_weld.h):
+// Runs of the surface cache's stored vertices that one pass runs over (render/cache/stored_vertex_weld.h):
 // invocation i stands for vertex i − (its run's invocations before) past its run's first.
 layout(std430, binding = kBindingCopyRuns) readonly buffer CopyRuns { uint runs[]; };  // per run: first vertex, invocations before
 uniform int u_runs;

@@ -1,5 +1,5 @@
 // The limit point, normal and plan node kind at every patch corner, evaluated once per compute pass
-// by the corner's owner (core/patch_adjacency.h) and read by every tessellation vertex there
+// by the corner's owner (core/plans/patch_adjacency.h) and read by every tessellation vertex there
 // (limit_point_tese.glsl). A corner at an extraordinary vertex is its exact node's limit masks over
 // K points: evaluated in the tessellation stage, the SIMD batch around it ran that and the regular
 // leaf both (issue 11). Preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.

@@ -1,5 +1,5 @@
 // The work groups of one dispatch that evaluates the welded vertices of several blocks again
-// (render/stored_vertex_evaluation.h): one invocation sums the listed blocks' work groups (written
+// (render/cache/stored_vertex_evaluation.h): one invocation sums the listed blocks' work groups (written
 // by their weld, shaders/compact_comp.glsl) into each block's first group and the indirect
 // dispatch's count, so that an edit of many blocks is one dispatch (on llvmpipe each costs ~0.1 ms).
 layout(local_size_x = 1) in;

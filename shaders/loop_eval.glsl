@@ -1,5 +1,5 @@
-// Triangle plans (Loop): descent (core/plan_descent.h), box-spline nodes and exact extraordinary nodes
-// (evaluate_extraordinary_node in plan_eval.glsl); mirrors evaluate_dual in core/patch_eval.cpp.
+// Triangle plans (Loop): descent (core/plans/plan_descent.h), box-spline nodes and exact extraordinary nodes
+// (evaluate_extraordinary_node in plan_eval.glsl); mirrors evaluate_dual in core/evaluation/patch_eval.cpp.
 
 void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int leaf_kind) {
   float u = patch_u, v = patch_v, scale;

@@ -1,4 +1,4 @@
-// The surface cache's level check (render/stored_patch_levels.h): each listed patch's outer
+// The surface cache's level check (render/cache/stored_patch_levels.h): each listed patch's outer
 // tessellation levels (tess_levels.glsl, under the capture's camera) against those it was captured
 // at; the new ones are kept, and a block with any patch changed is flagged (its tessellation
 // changed: captured again; else its welded vertices are evaluated again where they are).

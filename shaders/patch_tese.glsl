@@ -9,7 +9,7 @@ const int kCorners = 4;
 // point). A vertex on the patch's boundary is named by its edge and step i (integers), and
 // evaluated from the canonical patch of that point at exactly i/n (canonical_edge.glsl): every
 // patch beside an edge or around a corner, T-junctions with half-size patches included
-// (core/plan_table.h, PatchEdgePart), generates it bit for bit alike.
+// (core/plans/patch_plans.h, PatchEdgePart), generates it bit for bit alike.
 bool boundary_point(out EdgePoint e) {
   vec2 t = gl_TessCoord.xy;
   int n0 = int(ceil(gl_TessLevelOuter[1])), n1 = int(ceil(gl_TessLevelOuter[2]));  // edges v = 0, u = 1

@@ -1,5 +1,5 @@
-// The plans and their points (core/plan_table.h) and their evaluation; mirrors core/patch_eval.cpp,
-// the descent and the extraordinary rows are one source for both (core/plan_descent.h).
+// The plans and their points (core/plans/patch_plans.h) and their evaluation; mirrors core/evaluation/patch_eval.cpp,
+// the descent and the extraordinary rows are one source for both (core/plans/plan_descent.h).
 // Sums of points are 9D points about an anchor near the node (plan_point.glsl): q = (qa qb qc), three
 // vec4 (xx xy xz yy) (yz zz y0 y1) (y2 0 0 0) with y = q̄ − q̂ · anchor.
 layout(std430, binding = kBindingPoints) readonly buffer Points { vec4 points[]; };
@@ -7,10 +7,10 @@ layout(std430, binding = kBindingPoints) readonly buffer Points { vec4 points[];
 layout(std430, binding = kBindingNodes) readonly buffer Nodes { int nodes[]; };
 layout(std430, binding = kBindingRoots) readonly buffer Roots { int roots[]; };
 layout(std430, binding = kBindingCorners) readonly buffer CornerPoints { int corner_points[]; };
-layout(std430, binding = kBindingPatchEdges) readonly buffer PatchEdges { int patch_edges[]; };  // quads: core/plan_table.h
-layout(std430, binding = kBindingEvTables) readonly buffer EvTables { float ev_tables[]; };
+layout(std430, binding = kBindingPatchEdges) readonly buffer PatchEdges { int patch_edges[]; };  // quads: core/plans/patch_plans.h
+layout(std430, binding = kBindingExtraordinaryTables) readonly buffer ExtraordinaryTables { float extraordinary_tables[]; };
 
-#include "core/plan_descent.h"
+#include "core/plans/plan_descent.h"
 
 vec3 g_anchor = vec3(0.0);  // what the sums are taken about: set before the first add_point of an evaluation
 
@@ -19,7 +19,7 @@ vec3 g_anchor = vec3(0.0);  // what the sums are taken about: set before the fir
 // distance between anchors, which kept too few digits in float where a needle's apex (q̂ ~ 1e5 I)
 // is in the net: Loop's needle cones were 0.011° off the CPU, 0.004° so, and 56 % of cone-concave's
 // ×5000 normal image lit at 8/255, 3.0 % so. In a quad leaf at a boundary, phantom points included
-// (core/patch_basis.h). Costs llvmpipe's live frames about 5 %.
+// (core/plans/patch_basis.h). Costs llvmpipe's live frames about 5 %.
 #define GPS_HEAVIEST_POINT(n)                                  \
   int heaviest = nodes[net];                                   \
   float most = -1.0;                                           \
@@ -72,8 +72,8 @@ void add_point(int p, float w, float w_u, float w_v, inout vec4 qa, inout vec4 q
   va += w_v * a; vb += w_v * b; vc += w_v * c;
 }
 
-// An extraordinary node (core/loop_ev_tables.h, core/quad_ev_tables.h) at (u, v) of its own domain:
-// q and its u and v derivatives; mirrors evaluate_extraordinary in core/patch_eval.cpp.
+// An extraordinary node (core/extraordinary/loop_extraordinary_tables.h, core/extraordinary/quad_extraordinary_tables.h) at (u, v) of its own domain:
+// q and its u and v derivatives; mirrors evaluate_extraordinary in core/evaluation/patch_eval.cpp.
 void evaluate_extraordinary_node(int node, bool quad, float u, float v, out vec4 qa, out vec4 qb, out vec4 qc,
                                  out vec4 ua, out vec4 ub, out vec4 uc, out vec4 va, out vec4 vb, out vec4 vc) {
   int k = nodes[node + 3];
@@ -97,7 +97,7 @@ void evaluate_extraordinary_node(int node, bool quad, float u, float v, out vec4
   for (int i = 0; i < k; ++i) {
     float x = 0.0, x_s = 0.0, x_t = 0.0;
     for (int j = 0; j < n_rows; ++j) {
-      float e = ev_tables[rows + j * k + i];
+      float e = extraordinary_tables[rows + j * k + i];
       x += w[j] * e;
       x_s += ws[j] * e;
       x_t += wt[j] * e;

@@ -1,4 +1,4 @@
-// The welded vertices of blocks captured again in the tessellation they had (render/stored_vertex_weld.h):
+// The welded vertices of blocks captured again in the tessellation they had (render/cache/stored_vertex_weld.h):
 // the same vertices in the same slots, so each keeps the welded vertex it stood for, and writes its
 // words there (position and normal, and apart the patch and parameters it was evaluated at), which
 // copies of one point have alike. One pass over runs of captured vertices.

@@ -1,4 +1,4 @@
-// An exclusive prefix sum in place (render/exclusive_scan.h), one level of it: invocation t sums
+// An exclusive prefix sum in place (render/cache/exclusive_scan.h), one level of it: invocation t sums
 // its tile of kScanTile values serially, writing each value's exclusive sum within the tile, and
 // the tile's total to the next level; with ADD_TILE_OFFSETS, each value adds its tile's scanned
 // total from that next level instead.

@@ -1,4 +1,4 @@
-// The surface cache's blocks, as the weld passes see them (render/stored_vertex_weld.h): each
+// The surface cache's blocks, as the weld passes see them (render/cache/stored_vertex_weld.h): each
 // block's first stored vertex, ascending from 0.
 layout(std430, binding = kBindingBlockStarts) readonly buffer BlockStarts { uint block_starts[]; };
 uniform int u_blocks;

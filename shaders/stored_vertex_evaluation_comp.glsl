@@ -1,4 +1,4 @@
-// Evaluates the surface cache's welded vertices again after an edit (render/stored_vertex_evaluation.h),
+// Evaluates the surface cache's welded vertices again after an edit (render/cache/stored_vertex_evaluation.h),
 // as limit_point_tese.glsl evaluated them when they were captured: at the patch and (u, v) it
 // evaluated (the canonical patch on a patch edge, so that both sides stay bit for bit alike), a
 // patch corner from its owner's limit point; position and normal · 2^kind, the grid kept.

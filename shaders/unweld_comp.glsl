@@ -1,5 +1,5 @@
 // Copies the welded vertices' position and stored normal back to the captured vertices they stand
-// for (render/stored_vertex_weld.h), after they were evaluated again (an edit): the captured
+// for (render/cache/stored_vertex_weld.h), after they were evaluated again (an edit): the captured
 // buffer stays what a capture would hold, for the frames and refreshes that read it. One pass over
 // runs of captured vertices.
 #include "shaders/compute_pass.glsl"

@@ -1,4 +1,4 @@
-// Welds the surface cache's stored vertices (render/stored_vertex_weld.h): each vertex looks itself
+// Welds the surface cache's stored vertices (render/cache/stored_vertex_weld.h): each vertex looks itself
 // up in an open-addressing hash table by its position, normal · 2^kind and the patch and (u, v) it
 // was evaluated at (the canonical patch on a patch edge, a corner's owner: one surface point,
 // evaluated once), and takes as its index the vertex that is there first with the same words, else

@@ -11,9 +11,9 @@
 
 #include <glm/glm.hpp>
 
-#include "core/covariance_edit.h"
-#include "core/covariance_mesh.h"
-#include "core/gaussian_change.h"
+#include "core/edit/covariance_edit.h"
+#include "core/mesh/covariance_mesh.h"
+#include "core/edit/gaussian_change.h"
 #include "view/projection.h"
 
 namespace gps {

@@ -4,7 +4,7 @@
 #include <Eigen/LU>
 #include <cmath>
 
-#include "core/inference.h"
+#include "core/mesh/inference.h"
 
 namespace gps {
 

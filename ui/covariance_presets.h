@@ -3,7 +3,7 @@
 // sharpen and soften, and the covariance inferred from the mesh (GPS paper Eq. 16–17).
 #include <vector>
 
-#include "core/covariance_mesh.h"
+#include "core/mesh/covariance_mesh.h"
 
 namespace gps {
 

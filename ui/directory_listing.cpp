@@ -7,7 +7,7 @@
 #include <utility>
 #include <unistd.h>
 
-#include "core/error.h"
+#include "core/mesh/error.h"
 
 namespace gps {
 namespace {

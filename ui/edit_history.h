@@ -2,7 +2,7 @@
 // Undo and redo for vertex edits: one step per drag, preset or numeric entry; exact restore.
 #include <vector>
 
-#include "core/covariance_mesh.h"
+#include "core/mesh/covariance_mesh.h"
 
 namespace gps {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <unordered_map>
 
-#include "core/covariance_edit.h"
+#include "core/edit/covariance_edit.h"
 #include "ui/editor_document.h"
 
 namespace gps {

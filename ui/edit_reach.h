@@ -5,8 +5,8 @@
 // position of each of those (matched within a tolerance).
 #include <vector>
 
-#include "core/gaussian_change.h"
-#include "core/linalg.h"
+#include "core/edit/gaussian_change.h"
+#include "core/mesh/linalg.h"
 
 namespace gps {
 

@@ -10,12 +10,12 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "core/atomic_file.h"
-#include "core/error.h"
-#include "render/gl_context.h"
-#include "render/image_io.h"
-#include "render/matcap.h"
-#include "render/matcap_file.h"
+#include "core/io/atomic_file.h"
+#include "core/mesh/error.h"
+#include "render/gl/gl_context.h"
+#include "render/image/image_io.h"
+#include "render/image/matcap.h"
+#include "render/image/matcap_file.h"
 #include "ui/editor_app.h"
 #include "ui/editor_settings.h"
 #include "ui/ellipsoid_scope.h"

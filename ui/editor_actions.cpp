@@ -3,9 +3,9 @@
 
 #include <filesystem>
 
-#include "core/error.h"
-#include "core/samples.h"
-#include "render/matcap_file.h"
+#include "core/mesh/error.h"
+#include "core/mesh/samples.h"
+#include "render/image/matcap_file.h"
 #include "ui/editor_app.h"
 
 namespace gps {

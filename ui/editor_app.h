@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "render/gpu_pass_timer.h"
-#include "render/render_target.h"
-#include "render/surface_renderer.h"
-#include "render/window_context.h"
+#include "render/gl/gpu_pass_timer.h"
+#include "render/gl/render_target.h"
+#include "render/pipeline/surface_renderer.h"
+#include "render/gl/window_context.h"
 #include "ui/axis_handles.h"
 #include "ui/command_table.h"
 #include "ui/edit_reach.h"

@@ -4,7 +4,7 @@
 
 #include <ctime>
 
-#include "core/samples.h"
+#include "core/mesh/samples.h"
 #include "ui/camera_control.h"
 #include "ui/editor_app.h"
 

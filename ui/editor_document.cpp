@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/mesh_io.h"
-#include "core/samples.h"
+#include "core/io/mesh_io.h"
+#include "core/mesh/samples.h"
 
 namespace gps {
 

@@ -7,7 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/covariance_mesh.h"
+#include "core/mesh/covariance_mesh.h"
 #include "ui/edit_history.h"
 
 namespace gps {

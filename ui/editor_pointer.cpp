@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "render/picking.h"
+#include "render/pipeline/surface_point.h"
 #include "ui/camera_control.h"
 #include "ui/editor_app.h"
 #include "ui/ellipsoid_scope.h"

@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <type_traits>
 
-#include "core/atomic_file.h"
-#include "core/error.h"
+#include "core/io/atomic_file.h"
+#include "core/mesh/error.h"
 
 namespace gps {
 

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/covariance_mesh.h"
+#include "core/mesh/covariance_mesh.h"
 
 namespace gps {
 

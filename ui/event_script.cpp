@@ -3,9 +3,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/atomic_file.h"
-#include "core/error.h"
-#include "core/text_file.h"
+#include "core/io/atomic_file.h"
+#include "core/mesh/error.h"
+#include "core/io/text_file.h"
 
 namespace gps {
 

@@ -7,7 +7,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "core/error.h"
+#include "core/mesh/error.h"
 
 namespace gps {
 namespace fs = std::filesystem;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/covariance_edit.h"
+#include "core/edit/covariance_edit.h"
 #include "ui/edit_reach.h"
 #include "ui/editor_document.h"
 #include "ui/selection.h"

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <utility>
 
-#include "core/atomic_file.h"
-#include "core/error.h"
+#include "core/io/atomic_file.h"
+#include "core/mesh/error.h"
 #include "ui/editor_settings.h"
 
 namespace gps {

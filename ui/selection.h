@@ -4,7 +4,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/covariance_mesh.h"
+#include "core/mesh/covariance_mesh.h"
 #include "view/camera.h"
 
 namespace gps {

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/median.h"
-#include "render/surface_renderer.h"
+#include "core/support/median.h"
+#include "render/pipeline/surface_renderer.h"
 
 namespace gps {
 

@@ -2,7 +2,7 @@
 // What the editor's viewport shows and how (the View panel edits it).
 #include <string>
 
-#include "render/surface_renderer.h"
+#include "render/pipeline/surface_renderer.h"
 
 namespace gps {
 

@@ -2,7 +2,7 @@
 
 #include <imgui.h>
 
-#include "render/matcap.h"
+#include "render/image/matcap.h"
 #include "ui/ellipsoid_scope.h"
 
 namespace gps {

@@ -2,8 +2,8 @@
 // An orbit camera: yaw and pitch around a target at a distance, perspective projection.
 #include <glm/glm.hpp>
 
-#include "core/covariance_mesh.h"
-#include "core/linalg.h"
+#include "core/mesh/covariance_mesh.h"
+#include "core/mesh/linalg.h"
 
 namespace gps {
 

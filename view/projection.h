@@ -4,7 +4,7 @@
 #include <glm/glm.hpp>
 #include <optional>
 
-#include "core/linalg.h"
+#include "core/mesh/linalg.h"
 #include "view/camera.h"
 
 namespace gps {

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <tuple>
 
-#include "core/mesh_io.h"
+#include "core/io/mesh_io.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 

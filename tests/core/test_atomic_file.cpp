@@ -1,6 +1,6 @@
-// Saves (core/atomic_file.h): through symbolic links, signals in the middle of a save, stale
+// Saves (core/io/atomic_file.h): through symbolic links, signals in the middle of a save, stale
 // temporary files of earlier crashed saves.
-#include "core/atomic_file.h"
+#include "core/io/atomic_file.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/error.h"
+#include "core/mesh/error.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {

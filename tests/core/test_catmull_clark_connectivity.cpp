@@ -1,9 +1,9 @@
-#include "core/catmull_clark_connectivity.h"
+#include "core/reference/catmull_clark_connectivity.h"
 
 #include <gtest/gtest.h>
 
-#include "core/catmull_clark.h"
-#include "core/samples.h"
+#include "core/reference/catmull_clark.h"
+#include "core/mesh/samples.h"
 #include "tests/support/connectivity_equal.h"
 
 namespace gps {

@@ -1,4 +1,4 @@
-#include "core/covariance_edit.h"
+#include "core/edit/covariance_edit.h"
 
 #include <gtest/gtest.h>
 

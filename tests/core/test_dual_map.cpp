@@ -1,4 +1,4 @@
-#include "core/dual_map.h"
+#include "core/mesh/dual_map.h"
 
 #include <gtest/gtest.h>
 

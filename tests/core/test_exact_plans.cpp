@@ -9,10 +9,10 @@
 #include <limits>
 #include <random>
 
-#include "core/mesh_connectivity.h"
-#include "core/patch_basis.h"
-#include "core/patch_eval.h"
-#include "core/reference_subdivision.h"
+#include "core/mesh/mesh_connectivity.h"
+#include "core/plans/patch_basis.h"
+#include "core/evaluation/patch_eval.h"
+#include "core/reference/reference_subdivision.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
 
@@ -84,8 +84,8 @@ TEST(ExactPlans, DerivativesMatchFiniteDifferences) {
   }
 }
 
-// Past the tables' kEvLevels levels the evaluator steps the node's points by the table's A
-// (core/plan_descent.h): the surface goes on smoothly across each level where that starts (a wrong
+// Past the tables' kExtraordinaryLevels levels the evaluator steps the node's points by the table's A
+// (core/plans/plan_descent.h): the surface goes on smoothly across each level where that starts (a wrong
 // A or row would break it there by far more than the window's width) and closes in on the limit
 // point, normals defined, down to 2^-60 of the patch. Both schemes, interior and boundary vertices.
 TEST(ExactPlans, PastTheTablesLevelsStepsContinueTheSurface) {
@@ -120,7 +120,7 @@ TEST(ExactPlans, PastTheTablesLevelsStepsContinueTheSurface) {
         ++corners;
         const auto corner = at(0.0);
         ASSERT_TRUE(corner);
-        for (int k = kEvLevels - 2; k <= kEvLevels + 2; ++k) {
+        for (int k = kExtraordinaryLevels - 2; k <= kExtraordinaryLevels + 2; ++k) {
           const double h = std::ldexp(1.0, -k) / measure, delta = 1e-7;
           const auto below = at(h * (1 - delta)), above = at(h * (1 + delta)), mid = at(h);
           ASSERT_TRUE(below && above && mid);
@@ -181,8 +181,8 @@ TEST(ExactPlans, NormalsAreDefinedAtExtraordinaryVertices) {
 TEST(ExactPlans, StopOneLevelBelowIrregularVertices) {
   for (const char* name : {"cube", "valence7", "wirecube", "cylinder", "cone-pointy", "pawn", "sphere"}) {
     const PolygonTopology t = topology_of(make_sample(name).mesh);
-    const PlanTables exact = build_surface_plans(t, PlanOptions{Scheme::catmull_clark});
-    const PlanTables thesis = build_surface_plans(t, PlanOptions{Scheme::catmull_clark, 3, LoopBeta::loop, false});
+    const SurfaceTables exact = build_surface_plans(t, PlanOptions{Scheme::catmull_clark});
+    const SurfaceTables thesis = build_surface_plans(t, PlanOptions{Scheme::catmull_clark, 3, LoopBeta::loop, false});
     std::printf("%-12s exact: depth %d, %d rows, %zu nodes; thesis depth 3: %d rows, %zu nodes\n", name, exact.plans.max_depth,
                 exact.stencils.n_rows(), exact.plans.nodes.size(), thesis.stencils.n_rows(), thesis.plans.nodes.size());
     EXPECT_LE(exact.plans.max_depth, 2) << name;

@@ -1,4 +1,4 @@
-// core/freed_memory.h: after keep_freed_memory(), a large block comes from the heap, not from a
+// core/support/freed_memory.h: after keep_freed_memory(), a large block comes from the heap, not from a
 // mapping of its own, and stays in the process when freed (ctest runs each test in its own process).
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "core/freed_memory.h"
+#include "core/support/freed_memory.h"
 
 #if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
 #include <malloc.h>

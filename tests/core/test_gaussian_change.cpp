@@ -1,12 +1,12 @@
 // GaussianChange: a scale along a principal axis keeps the frame, a rotation keeps every σ,
 // weights interpolate, and the mirrored change of the mirrored Gaussian is the mirror image.
-#include "core/gaussian_change.h"
+#include "core/edit/gaussian_change.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
 
-#include "core/covariance_edit.h"
+#include "core/edit/covariance_edit.h"
 
 namespace gps {
 namespace {

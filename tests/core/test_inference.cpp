@@ -1,13 +1,13 @@
 // Gaussian inference for plain meshes (GPS paper Eq. 16–17, DESIGN.md §1) and the isotropic default.
-#include "core/inference.h"
+#include "core/mesh/inference.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
-#include "core/error.h"
-#include "core/samples.h"
+#include "core/mesh/error.h"
+#include "core/mesh/samples.h"
 
 namespace gps {
 namespace {
@@ -68,8 +68,8 @@ TEST(Inference, LargerBiasGivesRounderGaussians) {
     double smallest_ratio = 1;
     for (const Mat3& c : m.covariances) {
       EXPECT_TRUE(is_spd(c));
-      const Vec3 ev = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues();
-      smallest_ratio = std::min(smallest_ratio, ev(0) / ev(2));
+      const Vec3 eigenvalues = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues();
+      smallest_ratio = std::min(smallest_ratio, eigenvalues(0) / eigenvalues(2));
     }
     EXPECT_GT(smallest_ratio, previous) << "bias " << bias;
     previous = smallest_ratio;

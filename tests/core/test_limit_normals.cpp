@@ -1,7 +1,7 @@
-// The reference's exact limit normals (core/limit_tangents.h, issue 11): they are those of the
+// The reference's exact limit normals (core/reference/limit_tangents.h, issue 11): they are those of the
 // refined surface (its faces' normals closing in on them level by level), and the plans' evaluator
 // gives the same normal at every reference vertex, extraordinary vertices and boundaries included.
-#include "core/limit_tangents.h"
+#include "core/reference/limit_tangents.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/reference_subdivision.h"
+#include "core/reference/reference_subdivision.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
 
@@ -48,7 +48,7 @@ std::vector<Case> cases() {
 double degrees_between(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI; }
 
 // At every vertex of three levels of the reference, the evaluator's normal at the vertex's
-// parameter (core/patch_eval.h: exact plans, Stam's eigenbases at extraordinary vertices) and the
+// parameter (core/evaluation/patch_eval.h: exact plans, Stam's eigenbases at extraordinary vertices) and the
 // reference's from its tangent masks are one normal. Boundary vertices whose ring has no two
 // separated subdominant eigenvalues have none; they are counted, and must be few.
 TEST(LimitNormals, EqualTheEvaluatorsAtEveryReferenceVertex) {

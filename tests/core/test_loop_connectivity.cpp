@@ -1,9 +1,9 @@
-#include "core/loop_connectivity.h"
+#include "core/reference/loop_connectivity.h"
 
 #include <gtest/gtest.h>
 
-#include "core/loop.h"
-#include "core/samples.h"
+#include "core/reference/loop.h"
+#include "core/mesh/samples.h"
 #include "tests/support/connectivity_equal.h"
 
 namespace gps {

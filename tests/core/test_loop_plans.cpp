@@ -1,21 +1,21 @@
 // Loop plans against the exact reference (issue "Loop GPS in real time"): box-spline patches and
 // exact extraordinary nodes equal Loop GPS subdivision with limit projection at every tested parameter.
-#include "core/loop_plan_builder.h"
+#include "core/plans/loop_plan_builder.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
 #include <map>
 
-#include "core/error.h"
-#include "core/limit_masks.h"
-#include "core/loop_ev_tables.h"
-#include "core/patch_basis.h"
-#include "core/patch_eval.h"
-#include "core/planned_surface.h"
-#include "core/reference_subdivision.h"
-#include "core/samples.h"
-#include "core/tessellator.h"
+#include "core/mesh/error.h"
+#include "core/reference/limit_masks.h"
+#include "core/extraordinary/loop_extraordinary_tables.h"
+#include "core/plans/patch_basis.h"
+#include "core/evaluation/patch_eval.h"
+#include "core/plans/planned_surface.h"
+#include "core/reference/reference_subdivision.h"
+#include "core/mesh/samples.h"
+#include "core/evaluation/tessellator.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
 
@@ -28,7 +28,7 @@ PlannedMesh loop_planned(CovarianceMesh m, LoopBeta beta = LoopBeta::loop) {
   return PlannedMesh(std::move(m), PlanOptions{Scheme::loop, 3, beta});
 }
 
-// The box spline of core/patch_basis.h is the limit of Loop subdivision of its 12-point net: a
+// The box spline of core/plans/patch_basis.h is the limit of Loop subdivision of its 12-point net: a
 // regular lattice, one net point a unit vector, three Loop steps and limit projection.
 TEST(LoopPatchBasis, IsTheLimitOfLoopSubdivisionOfTheNet) {
   const int R = 5;

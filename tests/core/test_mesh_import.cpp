@@ -1,4 +1,4 @@
-#include "core/mesh_import.h"
+#include "core/io/mesh_import.h"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include <functional>
 #include <random>
 
-#include "core/error.h"
-#include "core/inference.h"
-#include "core/mesh_io.h"
+#include "core/mesh/error.h"
+#include "core/mesh/inference.h"
+#include "core/io/mesh_io.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {

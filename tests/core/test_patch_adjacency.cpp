@@ -1,6 +1,6 @@
-// Patch edge neighbours and corner owners (core/patch_adjacency.h), the tables behind bit-exact
+// Patch edge neighbours and corner owners (core/plans/patch_adjacency.h), the tables behind bit-exact
 // shared edges on the GPU (issue 14).
-#include "core/patch_adjacency.h"
+#include "core/plans/patch_adjacency.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <set>
 #include <utility>
 
-#include "core/planned_surface.h"
-#include "core/samples.h"
+#include "core/plans/planned_surface.h"
+#include "core/mesh/samples.h"
 #include "tests/support/test_meshes.h"
 
 namespace gps {
@@ -20,7 +20,7 @@ struct Ends {
   PatchEdgePart part;
 };
 
-Ends ends(const PlanTable& plans, int p, int k) {
+Ends ends(const PatchPlans& plans, int p, int k) {
   if (plans.shape == PatchShape::quad) {
     const PatchEdge e = patch_edge(plans, p, k);
     return {e.from, e.to, e.part};
@@ -38,8 +38,8 @@ std::set<std::pair<int, int>> boundary_edges(const CovarianceMesh& mesh) {
 }
 
 void check_adjacency(const std::string& name, const CovarianceMesh& mesh) {
-  const PlanTables tables = build_surface_plans(topology_of(mesh.mesh), PlanOptions{});
-  const PlanTable& plans = tables.plans;
+  const SurfaceTables tables = build_surface_plans(topology_of(mesh.mesh), PlanOptions{});
+  const PatchPlans& plans = tables.plans;
   const int n = plans.corners();
   ASSERT_EQ(plans.patch_neighbours.size(), size_t(4 * n * plans.n_patches())) << name;
   ASSERT_EQ(plans.corner_owners.size(), size_t(2 * n * plans.n_patches())) << name;
@@ -111,7 +111,7 @@ TEST(PatchAdjacency, EveryInnerEdgeHasItsNeighbourAndEveryCornerItsOwner) {
 // A T-junction of a quad and a split face: the quad's edge names both halves.
 TEST(PatchAdjacency, CylinderCapsMeetTheSideQuadsHalfByHalf) {
   const CovarianceMesh mesh = make_sample("cylinder");
-  const PlanTables tables = build_surface_plans(topology_of(mesh.mesh), PlanOptions{});
+  const SurfaceTables tables = build_surface_plans(topology_of(mesh.mesh), PlanOptions{});
   int beside = 0;
   for (int p = 0; p < tables.plans.n_patches(); ++p)
     for (int k = 0; k < 4; ++k) beside += patch_edge(tables.plans, p, k).part == PatchEdgePart::whole_beside_halves;

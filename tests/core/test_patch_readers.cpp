@@ -1,15 +1,15 @@
-// The patches an edit changes (core/patch_readers.h): every patch whose evaluation or whose
+// The patches an edit changes (core/plans/patch_readers.h): every patch whose evaluation or whose
 // canonical boundary patch reads a changed point is listed; the others evaluate bit for bit alike.
-#include "core/patch_readers.h"
+#include "core/plans/patch_readers.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <string>
 
-#include "core/patch_eval.h"
-#include "core/planned_surface.h"
-#include "core/samples.h"
+#include "core/evaluation/patch_eval.h"
+#include "core/plans/planned_surface.h"
+#include "core/mesh/samples.h"
 
 namespace gps {
 namespace {
@@ -23,7 +23,7 @@ std::vector<int> changed_points(const PlannedSurface& surface, const std::vector
 
 // Whether patch p evaluates alike (q and its derivatives, bit for bit) from both point sets, at a
 // grid of parameters that includes its boundary.
-bool evaluates_alike(const PlanTable& plans, const std::vector<Dual>& a, const std::vector<Dual>& b, int p) {
+bool evaluates_alike(const PatchPlans& plans, const std::vector<Dual>& a, const std::vector<Dual>& b, int p) {
   for (int i = 0; i <= 4; ++i)
     for (int j = 0; j <= 4; ++j) {
       const double u = i / 4.0, v = j / 4.0;
@@ -40,7 +40,7 @@ TEST(PatchReaders, UnlistedPatchesEvaluateAlikeAfterAnEdit) {
   for (const char* name : {"cube", "pawn", "icosphere", "sphere"}) {
     CovarianceMesh mesh = make_sample(name);
     const PlannedSurface surface(mesh, PlanOptions{});
-    const PlanTable& plans = surface.tables().plans;
+    const PatchPlans& plans = surface.tables().plans;
     const PatchReaders readers(plans, surface.tables().stencils.n_points());
     const std::vector<Dual> before = apply_stencils(surface.tables().stencils, base_points(mesh));
     const std::vector<int> edited = {int(mesh.n_vertices() / 2), int(mesh.n_vertices() / 3)};

@@ -1,5 +1,5 @@
 // Plans against the exact reference (issue "Subdivision plans and stencil tables").
-#include "core/plan_builder.h"
+#include "core/plans/plan_builder.h"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <random>
 #include <tuple>
 
-#include "core/error.h"
-#include "core/patch_eval.h"
-#include "core/patch_layout.h"
-#include "core/reference_subdivision.h"
+#include "core/mesh/error.h"
+#include "core/evaluation/patch_eval.h"
+#include "core/plans/patch_layout.h"
+#include "core/reference/reference_subdivision.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
 
@@ -100,7 +100,7 @@ TEST(PlanBuilder, ErrorNearExtraordinaryVerticesFallsWithDepth) {
 }
 
 // Both sides of every shared patch edge give the same positions at the same edge parameters, where
-// a quad meets two half-size patches of a split face too (T-junctions, core/plan_table.h); exact
+// a quad meets two half-size patches of a split face too (T-junctions, core/plans/patch_plans.h); exact
 // plans and the thesis' plans of depth 3.
 TEST(PlanBuilder, NeighbouringPatchesAreWatertight) {
   for (const bool exact : {true, false})
@@ -158,9 +158,9 @@ TEST(PlanBuilder, AllCoresGiveTheOneCoreTablesBitForBit) {
   for (const CovarianceMesh& mesh : {make_sample("sphere", 20000), triangles}) {
     const PolygonTopology topology = topology_of(mesh.mesh);
     omp_set_num_threads(1);
-    const PlanTables one = build_plans(topology, 3);
+    const SurfaceTables one = build_plans(topology, 3);
     omp_set_num_threads(2);
-    const PlanTables two = build_plans(topology, 3);
+    const SurfaceTables two = build_plans(topology, 3);
     omp_set_num_threads(omp_get_num_procs());
     EXPECT_GT(mesh.n_faces(), 2000u);
     EXPECT_EQ(one.plans.nodes, two.plans.nodes);

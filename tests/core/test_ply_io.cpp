@@ -1,4 +1,4 @@
-#include "core/ply_io.h"
+#include "core/io/ply_io.h"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <sstream>
 #include <random>
 
-#include "core/error.h"
-#include "core/mesh_io.h"
-#include "core/samples.h"
+#include "core/mesh/error.h"
+#include "core/io/mesh_io.h"
+#include "core/mesh/samples.h"
 #include "tests/support/random_spd.h"
 #include "tests/support/temp_dir.h"
 

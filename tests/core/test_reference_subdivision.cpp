@@ -1,4 +1,4 @@
-#include "core/reference_subdivision.h"
+#include "core/reference/reference_subdivision.h"
 
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 
 #include <random>
 
-#include "core/dual_map.h"
-#include "core/error.h"
-#include "core/samples.h"
+#include "core/mesh/dual_map.h"
+#include "core/mesh/error.h"
+#include "core/mesh/samples.h"
 #include "tests/support/random_spd.h"
 #include "tests/support/test_meshes.h"
 

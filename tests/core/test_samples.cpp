@@ -1,13 +1,13 @@
-#include "core/samples.h"
+#include "core/mesh/samples.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
 #include <tuple>
 
-#include "core/error.h"
-#include "core/mesh_connectivity.h"
-#include "core/reference_subdivision.h"
+#include "core/mesh/error.h"
+#include "core/mesh/mesh_connectivity.h"
+#include "core/reference/reference_subdivision.h"
 
 namespace gps {
 namespace {

@@ -1,13 +1,13 @@
-#include "core/stencil_table.h"
+#include "core/plans/stencil_table.h"
 
 #include <gtest/gtest.h>
 
 #include <tuple>
 #include <vector>
 
-#include "core/dual_map.h"
-#include "core/planned_surface.h"
-#include "core/samples.h"
+#include "core/mesh/dual_map.h"
+#include "core/plans/planned_surface.h"
+#include "core/mesh/samples.h"
 #include "tests/support/plan_fixture.h"
 
 namespace gps {

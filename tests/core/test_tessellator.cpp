@@ -1,10 +1,10 @@
-#include "core/tessellator.h"
+#include "core/evaluation/tessellator.h"
 
 #include <gtest/gtest.h>
 
 #include <map>
 
-#include "core/error.h"
+#include "core/mesh/error.h"
 #include "tests/support/plan_fixture.h"
 
 namespace gps {

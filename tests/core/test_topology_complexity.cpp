@@ -9,11 +9,11 @@
 #include <functional>
 #include <random>
 
-#include "core/error.h"
-#include "core/inference.h"
-#include "core/mesh_connectivity.h"
-#include "core/plan_builder.h"
-#include "core/reference_subdivision.h"
+#include "core/mesh/error.h"
+#include "core/mesh/inference.h"
+#include "core/mesh/mesh_connectivity.h"
+#include "core/plans/plan_builder.h"
+#include "core/reference/reference_subdivision.h"
 
 namespace gps {
 namespace {

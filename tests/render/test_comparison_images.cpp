@@ -2,7 +2,7 @@
 // against the CPU reference's, ×200 and ×5000, as `gpsurf diff` writes them, are black. The
 // reference is GPS subdivision with limit projection and its exact limit normals, at the level
 // whose vertices are the tessellation's, drawn in the GPU's own triangles, corner for corner
-// (render/reference_triangles.h): every pixel then compares one surface at one parameter, evaluated
+// (render/comparison/reference_triangles.h): every pixel then compares one surface at one parameter, evaluated
 // twice and rasterised alike. Under Loop, GL's triangle tessellation puts its inner rings off the
 // dyadic grid, so no reference level has its vertices: there the reference is the exact evaluator
 // (equal to subdivision and limit projection at every parameter: tests/core) at the parameters of
@@ -15,14 +15,14 @@
 
 #include <glm/glm.hpp>
 
-#include "core/error.h"
-#include "core/samples.h"
-#include "render/difference_image.h"
-#include "render/exact_triangles.h"
-#include "render/image_io.h"
-#include "render/reference_triangles.h"
-#include "render/render_target.h"
-#include "render/surface_renderer.h"
+#include "core/mesh/error.h"
+#include "core/mesh/samples.h"
+#include "render/image/difference_image.h"
+#include "render/comparison/exact_triangles.h"
+#include "render/image/image_io.h"
+#include "render/comparison/reference_triangles.h"
+#include "render/gl/render_target.h"
+#include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 #include "view/camera.h"
 
@@ -118,7 +118,7 @@ void expect_black(const char* name, const Aovs& gpu, const Aovs& reference, cons
 // normal turned by 1e-6 light 2.1 % of the pixels at 8/255 (differences up to 4.3e-5). cone-pointy,
 // with the same apex, measured 5.5 % while the GPU summed q̄ = q̂μ itself, 0.54 % about nearby anchors
 // (shaders/plan_point.glsl), 0.37 % since boundary leaves take their phantom points into the basis
-// (core/patch_basis.h): before, a phantom beside the rim was 2p₀ − p₁ with p₁ weighing the apex, a
+// (core/plans/patch_basis.h): before, a phantom beside the rim was 2p₀ − p₁ with p₁ weighing the apex, a
 // large difference in float. Drawn in the reference's own triangles (split along the diagonals the
 // tessellator takes), the images also showed the two draws' rounding: the exact evaluator's values,
 // equal to the reference's to 1e-14, lit 330 pixels of cone-plateau over 1e-6 (the largest 2.2e-5)

@@ -2,8 +2,8 @@
 // the selection's and its neighbours').
 #include <gtest/gtest.h>
 
-#include "core/samples.h"
-#include "render/surface_renderer.h"
+#include "core/mesh/samples.h"
+#include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 #include "view/camera.h"
 #include "view/projection.h"

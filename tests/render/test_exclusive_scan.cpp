@@ -1,6 +1,6 @@
-// The GPU's exclusive prefix sum (render/exclusive_scan.h) against std::exclusive_scan, at the
+// The GPU's exclusive prefix sum (render/cache/exclusive_scan.h) against std::exclusive_scan, at the
 // sizes where its levels change: one tile, one more than a tile, tiles of tiles, and many levels.
-#include "render/exclusive_scan.h"
+#include "render/cache/exclusive_scan.h"
 
 #include <glad/gl.h>
 #include <gtest/gtest.h>

@@ -1,13 +1,13 @@
 // GPU pass timing on OSMesa: every pass reported, in first-seen order, with finite times.
-#include "render/gpu_pass_timer.h"
+#include "render/gl/gpu_pass_timer.h"
 
 #include <glad/gl.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/error.h"
-#include "render/render_target.h"
+#include "core/mesh/error.h"
+#include "render/gl/render_target.h"
 #include "tests/support/gl_fixture.h"
 
 namespace gps {

@@ -1,11 +1,11 @@
 // Picking: rays through pixels, vertices near the mouse, the surface point under a pixel (OSMesa).
-#include "render/picking.h"
+#include "render/pipeline/surface_point.h"
 #include "view/picking.h"
 
 #include <gtest/gtest.h>
 
-#include "core/samples.h"
-#include "render/surface_renderer.h"
+#include "core/mesh/samples.h"
+#include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 
 namespace gps {

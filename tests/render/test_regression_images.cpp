@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "core/samples.h"
-#include "render/image_io.h"
-#include "render/surface_renderer.h"
+#include "core/mesh/samples.h"
+#include "render/image/image_io.h"
+#include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 
 namespace gps {

@@ -1,4 +1,4 @@
-// core/patch_basis.h, core/plan_descent.h and render/gpu_layout.h are one source for C++ and GLSL:
+// core/plans/patch_basis.h, core/plans/plan_descent.h and render/pipeline/gpu_layout.h are one source for C++ and GLSL:
 // compiled both ways, they must give the same results and constants (compute shaders against the
 // C++ functions and values), and the pipeline's shaders must take their bindings and work-group
 // size from them.
@@ -8,12 +8,12 @@
 
 #include <vector>
 
-#include "core/patch_basis.h"
-#include "core/plan_descent.h"
-#include "core/planned_surface.h"
-#include "render/gl_context.h"
-#include "render/gpu_layout.h"
-#include "render/shader_program.h"
+#include "core/plans/patch_basis.h"
+#include "core/plans/plan_descent.h"
+#include "core/plans/planned_surface.h"
+#include "render/gl/gl_context.h"
+#include "render/pipeline/gpu_layout.h"
+#include "render/gl/shader_program.h"
 #include "shaders/embedded_shaders.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/test_meshes.h"
@@ -50,7 +50,7 @@ void main() {
   outputs[o + 58] = s; outputs[o + 59] = t;
   s = 0.001 * u; t = 0.001 * v;
   int steps;
-  outputs[o + 60] = float(loop_ev_locate(s, t, scale, steps));
+  outputs[o + 60] = float(loop_extraordinary_locate(s, t, scale, steps));
   outputs[o + 61] = s; outputs[o + 62] = t; outputs[o + 63] = scale;
   float q[16], qu[16], qv[16];
   quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, i % 4 == 0 ? kBoundaryV0 | kBoundaryU1 : 0, u, v, q, qu, qv);
@@ -78,7 +78,7 @@ std::vector<double> cpu_probe(int i, double u, double v) {
   out[58] = s, out[59] = t;
   s = 0.001 * u, t = 0.001 * v;
   int steps;
-  out[60] = loop_ev_locate(s, t, scale, steps);
+  out[60] = loop_extraordinary_locate(s, t, scale, steps);
   out[61] = s, out[62] = t, out[63] = scale;
   double q[16], qu[16], qv[16];
   quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, i % 4 == 0 ? kBoundaryV0 | kBoundaryU1 : 0, u, v, q, qu, qv);
@@ -116,7 +116,7 @@ TEST_F(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
   }
 }
 
-// The descent of core/plan_descent.h through real plans, and an extraordinary leaf's rows: per
+// The descent of core/plans/plan_descent.h through real plans, and an extraordinary leaf's rows: per
 // input (root, triangle, u, v): leaf node, kind, depth, leaf (u, v), scale, then the leaf's rows
 // count, first row, d[4], scale, steps (0: the GPU takes no steps) and 16 weights each of w, ws, wt: 64 floats.
 constexpr int kDescentOut = 64;
@@ -137,12 +137,12 @@ void main() {
   outputs[o] = float(node); outputs[o + 1] = float(kind); outputs[o + 2] = float(depth);
   outputs[o + 3] = u; outputs[o + 4] = v; outputs[o + 5] = scale;
   if (kind != kNodeExtraordinary) return;
-  float w[16], ws[16], wt[16], d[4], ev_scale;
+  float w[16], ws[16], wt[16], d[4], extraordinary_scale;
   int first_row, steps;
-  int n = extraordinary_rows(!triangle, nodes[node + 1], u, v, false, first_row, steps, w, ws, wt, d, ev_scale);
+  int n = extraordinary_rows(!triangle, nodes[node + 1], u, v, false, first_row, steps, w, ws, wt, d, extraordinary_scale);
   outputs[o + 6] = float(n); outputs[o + 7] = float(first_row); outputs[o + 13] = float(steps);
   for (int k = 0; k < 4; ++k) outputs[o + 8 + k] = d[k];
-  outputs[o + 12] = ev_scale;
+  outputs[o + 12] = extraordinary_scale;
   for (int k = 0; k < n; ++k) { outputs[o + 16 + k] = w[k]; outputs[o + 32 + k] = ws[k]; outputs[o + 48 + k] = wt[k]; }
 }
 )glsl";
@@ -154,19 +154,19 @@ std::vector<double> cpu_descent(const std::vector<int32_t>& nodes, int root, boo
   const int node = descend_plan(nodes.data(), root, triangle, u, v, scale, kind, depth);
   out[0] = node, out[1] = kind, out[2] = depth, out[3] = u, out[4] = v, out[5] = scale;
   if (kind != kNodeExtraordinary) return out;
-  double w[16], ws[16], wt[16], d[4], ev_scale;
+  double w[16], ws[16], wt[16], d[4], extraordinary_scale;
   int first_row, steps;
-  const int n = extraordinary_rows(!triangle, nodes[size_t(node + 1)], u, v, false, first_row, steps, w, ws, wt, d, ev_scale);
+  const int n = extraordinary_rows(!triangle, nodes[size_t(node + 1)], u, v, false, first_row, steps, w, ws, wt, d, extraordinary_scale);
   out[6] = n, out[7] = first_row, out[13] = steps;
   for (int k = 0; k < 4; ++k) out[size_t(8 + k)] = d[k];
-  out[12] = ev_scale;
+  out[12] = extraordinary_scale;
   for (int k = 0; k < n; ++k) out[size_t(16 + k)] = w[k], out[size_t(32 + k)] = ws[k], out[size_t(48 + k)] = wt[k];
   return out;
 }
 
 void expect_same_descent(const char* name, const CovarianceMesh& mesh, const PlanOptions& options) {
-  const PlanTables tables = build_surface_plans(topology_of(mesh.mesh), options);
-  const PlanTable& plans = tables.plans;
+  const SurfaceTables tables = build_surface_plans(topology_of(mesh.mesh), options);
+  const PatchPlans& plans = tables.plans;
   const bool triangle = plans.shape == PatchShape::triangle;
   const ShaderProgram probe("descent_probe", {{GL_COMPUTE_SHADER, {shaders::patch_basis, kDescentBuffers, shaders::plan_descent, kDescentProbe}}});
   // Every patch at points inside, along the edges and near each corner (down to the limit masks).
@@ -216,7 +216,7 @@ layout(local_size_x = 1) in;
 layout(std430, binding = 0) writeonly buffer Out { int outputs[]; };
 void main() {
   int values[33] = int[33](kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
-                           kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingEvTables,
+                           kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingExtraordinaryTables,
                            kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCornerLimits, kBindingCornerList, kBindingCount,
                            kBindingStoredVertices, kBindingWeldTable, kBindingStoredIndices, kBindingBlockStarts,
                            kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary,
@@ -230,7 +230,7 @@ using SharedLayout = test::GlTest;
 TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
   using namespace gpu;
   const std::vector<int> cpu = {kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
-                                kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingEvTables,
+                                kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingExtraordinaryTables,
                                 kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCornerLimits, kBindingCornerList, kBindingCount,
                                 kBindingStoredVertices, kBindingWeldTable, kBindingStoredIndices, kBindingBlockStarts,
                                 kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary,
@@ -250,7 +250,7 @@ TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
   EXPECT_EQ(gpu, cpu);
 }
 
-// The compute passes as the renderer builds them (render/dual_stencil_pass.cpp): their work-group
+// The compute passes as the renderer builds them (render/pipeline/dual_stencil_pass.cpp): their work-group
 // size and each storage block's binding, as the driver reports them, are gpu_layout.h's.
 TEST_F(SharedLayout, ComputePassesUseTheSharedBindingsAndWorkGroupSize) {
   const auto expect_layout = [](const char* name, const char* source, const std::vector<std::pair<const char*, int>>& blocks) {

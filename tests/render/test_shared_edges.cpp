@@ -11,9 +11,9 @@
 #include <cstring>
 #include <unordered_map>
 
-#include "core/patch_adjacency.h"
-#include "core/samples.h"
-#include "render/surface_renderer.h"
+#include "core/plans/patch_adjacency.h"
+#include "core/mesh/samples.h"
+#include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/test_meshes.h"
 
@@ -50,7 +50,7 @@ std::vector<int> edges_at(PatchShape shape, float u, float v) {
 
 // The boundary vertices of every patch, captured a range of patches at a time (bounded memory).
 std::vector<EdgeVertex> capture_edge_vertices(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const DrawOptions& o) {
-  const PlanTable& plans = renderer.tables().plans;
+  const PatchPlans& plans = renderer.tables().plans;
   const int level = o.pixels > 0.0f ? 64 : int(std::ceil(o.level));
   const int chunk = std::max(1, 400000 / ((level + 1) * (level + 1) * 6));
   std::vector<EdgeVertex> out;

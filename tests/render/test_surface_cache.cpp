@@ -1,6 +1,6 @@
 // The surface cache (issue 12): frames drawn from the stored triangles against the live pipeline,
 // invalidation by edits and levels, and the adaptive levels' camera hysteresis.
-#include "render/surface_cache.h"
+#include "render/cache/surface_cache.h"
 
 #include <glad/gl.h>
 #include <gtest/gtest.h>
@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "core/samples.h"
-#include "render/device_memory.h"
-#include "render/gl_context.h"
-#include "render/render_target.h"
-#include "render/surface_renderer.h"
+#include "core/mesh/samples.h"
+#include "render/gl/device_memory.h"
+#include "render/gl/gl_context.h"
+#include "render/gl/render_target.h"
+#include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 
 namespace gps {
@@ -240,7 +240,7 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachSurfacePointOnce) {
 
 // An edit that keeps the tessellation (uniform levels from 8; adaptive levels where the level check
 // finds a block's patches' levels unchanged) evaluates the welded vertices again
-// (render/stored_vertex_evaluation.h) where the tessellation stage evaluated them at the capture:
+// (render/cache/stored_vertex_evaluation.h) where the tessellation stage evaluated them at the capture:
 // the stored triangles are what a capture of the edited points stores, bit for bit (patch edges and
 // corners included, which both sides must keep alike), for quad patches with half-size ones (the
 // pawn) and Loop's triangles. At uniform levels an edit of every vertex too, with the work groups
@@ -304,7 +304,7 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
 }
 
 // A drag's frames leave the captured copies of the vertices they evaluated as they were
-// (render/surface_cache.h); what reads those copies brings them up to date first: a frame of the
+// (render/cache/surface_cache.h); what reads those copies brings them up to date first: a frame of the
 // quads' grid, a refresh that captures blocks again (adaptive levels: the move changes some), the
 // read-back. Three edits without a still frame between, the last one's frame with the grid: the
 // same frame, and the same stored triangles, as after a capture of the same points.

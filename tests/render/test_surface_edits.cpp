@@ -4,8 +4,8 @@
 
 #include <cstring>
 
-#include "core/samples.h"
-#include "render/surface_renderer.h"
+#include "core/mesh/samples.h"
+#include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 
 namespace gps {

@@ -1,5 +1,5 @@
 // The GPU pipeline on OSMesa against the CPU evaluator (issue "The GPU pipeline"); its watertightness is test_watertight.cpp.
-#include "render/surface_renderer.h"
+#include "render/pipeline/surface_renderer.h"
 
 #include <gtest/gtest.h>
 
@@ -10,14 +10,14 @@
 #include <map>
 #include <tuple>
 
-#include "core/error.h"
-#include "core/patch_eval.h"
-#include "core/reference_subdivision.h"
-#include "core/samples.h"
-#include "core/stencil_table.h"
-#include "core/tessellator.h"
-#include "render/picking.h"
-#include "render/reference_triangles.h"
+#include "core/mesh/error.h"
+#include "core/evaluation/patch_eval.h"
+#include "core/reference/reference_subdivision.h"
+#include "core/mesh/samples.h"
+#include "core/plans/stencil_table.h"
+#include "core/evaluation/tessellator.h"
+#include "render/pipeline/surface_point.h"
+#include "render/comparison/reference_triangles.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
@@ -104,7 +104,7 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
       if (scheme && scheme_for(topology_of(mesh.mesh), {}) == Scheme::catmull_clark) continue;  // the same plans
       // Level 64 on valence10 with plans of depth 0 (extraordinary nodes as large as base faces):
       // the vertices closest to those corners (1/64 of a patch) are within the tables' levels
-      // (core/patch_basis.h, kEvLevels), where the GPU is exact too.
+      // (core/plans/patch_basis.h, kExtraordinaryLevels), where the GPU is exact too.
       std::vector<float> levels = {1.0f, large ? 3.0f : 7.0f};
       if (name == "valence10") levels.push_back(64.0f);
       for (const float level : levels) {

@@ -9,10 +9,10 @@
 #include <map>
 #include <tuple>
 
-#include "core/samples.h"
-#include "render/image_io.h"
-#include "render/render_target.h"
-#include "render/surface_renderer.h"
+#include "core/mesh/samples.h"
+#include "render/image/image_io.h"
+#include "render/gl/render_target.h"
+#include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/test_meshes.h"
 

@@ -2,7 +2,7 @@
 // Two MeshConnectivity values compared field by field (the refined-connectivity tests).
 #include <gtest/gtest.h>
 
-#include "core/mesh_connectivity.h"
+#include "core/mesh/mesh_connectivity.h"
 
 namespace gps::test {
 

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string_view>
 
-#include "render/gl_context.h"
+#include "render/gl/gl_context.h"
 
 namespace gps::test {
 

@@ -4,19 +4,19 @@
 
 #include <algorithm>
 
-#include "core/dual_map.h"
-#include "core/patch_eval.h"
-#include "core/reference_subdivision.h"
-#include "core/plan_builder.h"
-#include "core/planned_surface.h"
-#include "core/samples.h"
-#include "core/stencil_table.h"
+#include "core/mesh/dual_map.h"
+#include "core/evaluation/patch_eval.h"
+#include "core/reference/reference_subdivision.h"
+#include "core/plans/plan_builder.h"
+#include "core/plans/planned_surface.h"
+#include "core/mesh/samples.h"
+#include "core/plans/stencil_table.h"
 
 namespace gps::test {
 
 struct PlannedMesh {
   CovarianceMesh mesh;
-  PlanTables tables;
+  SurfaceTables tables;
   std::vector<Dual> base, points;
 
   PlannedMesh(CovarianceMesh m, const PlanOptions& options)

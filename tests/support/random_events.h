@@ -1,5 +1,5 @@
 #pragma once
-// Random editor sessions for the soak (tests/app/test_editor_soak.cpp, scripts/soak.sh): an events
+// Random editor sessions for the soak (tests/window/test_editor_soak.cpp, scripts/soak.sh): an events
 // file (ui/event_script.h) drawn from a seed: clicks and shift-clicks on vertices and anywhere,
 // drags of handle ends and centres, box selections, orbits and pans, keys during drags, undo and
 // redo, shortcuts, typed text, wheel steps, and drops of valid and broken files. The same seed gives
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/covariance_mesh.h"
+#include "core/mesh/covariance_mesh.h"
 #include "editor_driver.h"
 #include "ui/axis_handles.h"
 

@@ -2,7 +2,7 @@
 // One random symmetric positive definite 3×3 matrix for the tests: a·aᵀ + floor·I, a uniform in [−1, 1].
 #include <random>
 
-#include "core/linalg.h"
+#include "core/mesh/linalg.h"
 
 namespace gps::test {
 

@@ -4,7 +4,7 @@
 #include <random>
 #include <vector>
 
-#include "core/covariance_mesh.h"
+#include "core/mesh/covariance_mesh.h"
 #include "tests/support/random_spd.h"
 
 namespace gps::test {

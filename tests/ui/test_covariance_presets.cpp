@@ -4,9 +4,9 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "core/inference.h"
-#include "core/samples.h"
-#include "core/covariance_edit.h"
+#include "core/mesh/inference.h"
+#include "core/mesh/samples.h"
+#include "core/edit/covariance_edit.h"
 #include "ui/inspector_panel.h"
 
 namespace gps {

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "core/samples.h"
+#include "core/mesh/samples.h"
 
 namespace gps {
 namespace {

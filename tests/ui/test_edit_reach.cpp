@@ -6,7 +6,7 @@
 
 #include <map>
 
-#include "core/samples.h"
+#include "core/mesh/samples.h"
 
 namespace gps {
 namespace {

@@ -4,10 +4,10 @@
 
 
 #include "../support/temp_dir.h"
-#include "core/error.h"
-#include "core/mesh_io.h"
-#include "core/text_file.h"
-#include "core/samples.h"
+#include "core/mesh/error.h"
+#include "core/io/mesh_io.h"
+#include "core/io/text_file.h"
+#include "core/mesh/samples.h"
 
 namespace gps {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/samples.h"
+#include "core/mesh/samples.h"
 
 namespace gps {
 namespace {

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "core/text_file.h"
+#include "core/io/text_file.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {

@@ -1,0 +1,21 @@
+# install(): the core library (and the GL library when built), its headers, the programs, and the
+# CMake package `gpsurf` (find_package(gpsurf 0.2) gives gpsurf::core, and gpsurf::render where built).
+include(CMakePackageConfigHelpers)
+set(GPSURF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/gpsurf)
+
+install(TARGETS gps_core EXPORT gpsurfTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/gpsurf/core
+        FILES_MATCHING PATTERN "*.h")
+install(FILES ${PROJECT_BINARY_DIR}/core/generated/core/version.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/gpsurf/core)
+install(EXPORT gpsurfTargets NAMESPACE gpsurf:: DESTINATION ${GPSURF_CMAKE_DIR})
+install(TARGETS gpsurf RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+if(GPSURF_BUILD_GL)
+  install(TARGETS gpsurf-editor RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/gpsurfConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/gpsurfConfig.cmake INSTALL_DESTINATION ${GPSURF_CMAKE_DIR})
+# 0.x: a minor version may change the interface, so only the same minor version is compatible.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/gpsurfConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/gpsurfConfig.cmake ${PROJECT_BINARY_DIR}/gpsurfConfigVersion.cmake
+        DESTINATION ${GPSURF_CMAKE_DIR})

@@ -1,0 +1,22 @@
+#pragma once
+// A tessellated limit surface: triangles with per-vertex positions and normals, and its files.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/mesh/linalg.h"
+
+namespace gps {
+
+struct TriangleMesh {
+  std::vector<Vec3> positions, normals;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+/// Gives each vertex whose normal is zero (none known there) the area-weighted normal of its triangles.
+void fill_missing_normals(TriangleMesh& mesh);
+
+/// Writes .ply (x y z nx ny nz; ASCII or binary little endian) or .obj (v, vn, f v//vn), atomically.
+void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, bool binary = false);
+
+}  // namespace gps

@@ -1,0 +1,73 @@
+#include "core/io/mesh_io.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "core/io/atomic_file.h"
+#include "core/mesh/error.h"
+#include "core/mesh/inference.h"
+#include "core/io/mesh_import.h"
+#include "core/io/ply_io.h"
+#include "core/io/text_file.h"
+
+namespace gps {
+
+std::string extension_of(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options) {
+  const std::string ext = extension_of(path);
+  if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".stl")
+    throw Error(path + ": unknown mesh format '" + ext + "' (use .ply, .obj, .off or .stl)");
+  const std::string data = read_text_file(path);
+  CovarianceMesh mesh;
+  if (ext == ".ply") {
+    PlyContents ply = parse_ply(data, path);
+    if (ply.has_covariances) return std::move(ply.mesh);
+    mesh = std::move(ply.mesh);
+  } else if (ext == ".obj") {
+    mesh = parse_obj(data, path);
+  } else if (ext == ".off") {
+    mesh = parse_off(data, path);
+  } else {
+    mesh = parse_stl(data, path);
+  }
+  if (mesh.n_faces() == 0) throw Error(path + ": the mesh has no faces");
+  try {
+    if (options.covariance == ImportOptions::Covariance::infer) infer_covariances(mesh, options.bias);
+    else isotropic_covariances(mesh, options.isotropic_scale);
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what(), e.kind());
+  }
+  validate_gaussians(mesh, path);
+  return mesh;
+}
+
+void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary) {
+  const std::string ext = extension_of(path);
+  // What gpsurf writes it must read back: refuse values the readers would refuse.
+  if (const std::string why = gaussians_problem(mesh); !why.empty()) throw Error(path + ": not written: " + why);
+  if (ext == ".ply") {
+    write_file_atomically(path, [&](std::ostream& out) { write_ply(out, mesh, binary); }, binary);
+  } else if (ext == ".obj") {
+    write_file_atomically(path, [&](std::ostream& out) {
+      out.precision(17);
+      for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+        const Vec3 p = mesh.mean(i);
+        out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+      }
+      for (const auto f : mesh.mesh.faces()) {
+        out << 'f';
+        for (const auto v : mesh.mesh.fv_range(f)) out << ' ' << v.idx() + 1;
+        out << '\n';
+      }
+    });
+  } else {
+    throw usage_error(path + ": cannot write format '" + ext + "' (use .ply or .obj)");
+  }
+}
+
+}  // namespace gps

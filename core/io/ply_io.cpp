@@ -1,0 +1,361 @@
+#include "core/io/ply_io.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <sstream>
+
+#include "core/mesh/error.h"
+#include "core/io/number_text.h"
+#include "core/io/text_file.h"
+#include "core/io/text_words.h"
+
+namespace gps {
+
+namespace {
+
+enum class Format { ascii, binary_le, binary_be };
+
+struct ScalarType {
+  int size = 0;
+  bool is_float = false;
+  bool is_signed = false;
+};
+
+std::optional<ScalarType> scalar_type(std::string_view name) {
+  if (name == "char" || name == "int8") return ScalarType{1, false, true};
+  if (name == "uchar" || name == "uint8") return ScalarType{1, false, false};
+  if (name == "short" || name == "int16") return ScalarType{2, false, true};
+  if (name == "ushort" || name == "uint16") return ScalarType{2, false, false};
+  if (name == "int" || name == "int32") return ScalarType{4, false, true};
+  if (name == "uint" || name == "uint32") return ScalarType{4, false, false};
+  if (name == "float" || name == "float32") return ScalarType{4, true, true};
+  if (name == "double" || name == "float64") return ScalarType{8, true, true};
+  return std::nullopt;
+}
+
+struct Property {
+  std::string name;
+  ScalarType type;
+  bool is_list = false;
+  ScalarType count_type;
+};
+
+struct Element {
+  std::string name;
+  size_t count = 0;
+  std::vector<Property> properties;
+  int header_line = 0;
+};
+
+// Reads the body of the file, value by value, in either encoding.
+class BodyReader {
+public:
+  BodyReader(const std::string& data, size_t pos, Format format, int line, const std::string& source)
+      : data_(data), pos_(pos), format_(format), line_(line), source_(source) {}
+
+  // ASCII records are one line each; call at the start of each record.
+  void begin_record() {
+    if (format_ != Format::ascii) return;
+    tokens_.clear();
+    token_index_ = 0;
+    while (tokens_.empty()) {
+      if (pos_ >= data_.size()) fail("the file ends early (truncated)");
+      size_t end = data_.find('\n', pos_);
+      if (end == std::string::npos) end = data_.size();
+      ++line_;
+      std::string_view text(data_.data() + pos_, end - pos_);
+      pos_ = end + 1;
+      tokens_ = words_of(text);
+    }
+  }
+
+  double read(const ScalarType& t) {
+    if (format_ == Format::ascii) {
+      if (token_index_ >= tokens_.size()) fail("line " + std::to_string(line_) + ": too few values");
+      const std::string_view tok = tokens_[token_index_++];
+      double value = 0;
+      if (const std::string why = parse_number(tok, value); !why.empty()) fail("line " + std::to_string(line_) + ": " + why);
+      return value;
+    }
+    if (pos_ + size_t(t.size) > data_.size()) fail("the binary data ends early (truncated)");
+    unsigned char b[8];
+    std::memcpy(b, data_.data() + pos_, size_t(t.size));
+    pos_ += size_t(t.size);
+    if ((format_ == Format::binary_be) == (std::endian::native == std::endian::little))
+      for (int i = 0; i < t.size / 2; ++i) std::swap(b[i], b[t.size - 1 - i]);
+    if (t.is_float) {
+      if (t.size == 4) return double(std::bit_cast<float>(std::array<unsigned char, 4>{b[0], b[1], b[2], b[3]}));
+      return std::bit_cast<double>(std::array<unsigned char, 8>{b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]});
+    }
+    unsigned long long u = 0;
+    for (int i = t.size - 1; i >= 0; --i) u = (u << 8) | b[i];
+    if (t.is_signed && (u >> (8 * t.size - 1)) & 1) return double((long long)u - (1LL << (8 * t.size)));
+    return double(u);
+  }
+
+  // A list length: a non-negative integer that fits in the data left (one byte per binary value,
+  // two characters per ASCII value), so a corrupt count can neither overflow nor run for long.
+  size_t read_count(const ScalarType& t) {
+    const double n = read(t);
+    const size_t limit = format_ == Format::ascii ? tokens_.size() - token_index_ : remaining();
+    if (!(n >= 0) || n != std::floor(n)) fail(where() + "list length " + format_number(n) + " is not a count");
+    if (n > double(limit))
+      fail(where() + "list length " + format_number(n) +
+           (format_ == Format::ascii ? " exceeds the values on the line" : " exceeds the data left (truncated)"));
+    return size_t(n);
+  }
+
+  // "line N: " for ASCII data, "" for binary data (which has no lines).
+  std::string where() const { return format_ == Format::ascii ? "line " + std::to_string(line_) + ": " : ""; }
+
+  static std::string format_number(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+
+  void end_record() {
+    if (format_ == Format::ascii && token_index_ != tokens_.size())
+      fail("line " + std::to_string(line_) + ": more values than the header declares");
+  }
+
+  int line() const { return line_; }
+  size_t remaining() const { return data_.size() - std::min(pos_, data_.size()); }
+  [[noreturn]] void fail(const std::string& what) const { throw Error(source_ + ": " + what); }
+
+private:
+  const std::string& data_;
+  size_t pos_;
+  Format format_;
+  int line_;
+  const std::string& source_;
+  std::vector<std::string_view> tokens_;
+  size_t token_index_ = 0;
+};
+
+}  // namespace
+
+PlyContents parse_ply(const std::string& data, const std::string& source) {
+  const auto fail = [&](const std::string& what) -> void { throw Error(source + ": " + what); };
+  if (data.empty()) fail("the file is empty");
+  // Header.
+  size_t pos = 0;
+  int line = 0;
+  std::optional<Format> format;
+  std::vector<Element> elements;
+  bool ended = false;
+  while (!ended) {
+    if (pos >= data.size()) fail("the header has no end_header line");
+    size_t end = data.find('\n', pos);
+    if (end == std::string::npos) end = data.size();
+    std::string text = data.substr(pos, end - pos);
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    pos = end + 1;
+    ++line;
+    const std::string at = "line " + std::to_string(line) + ": ";
+    const auto words = words_of(text);
+    if (line == 1) {
+      if (words.size() != 1 || words[0] != "ply") fail("not a PLY file (the first line is not 'ply')");
+      continue;
+    }
+    if (words.empty() || words[0] == "comment" || words[0] == "obj_info") continue;
+    if (words[0] == "format") {
+      if (words.size() != 3) fail(at + "malformed format line");
+      if (words[1] == "ascii") format = Format::ascii;
+      else if (words[1] == "binary_little_endian") format = Format::binary_le;
+      else if (words[1] == "binary_big_endian") format = Format::binary_be;
+      else fail(at + "unknown format '" + std::string(words[1]) + "'");
+    } else if (words[0] == "element") {
+      if (words.size() != 3) fail(at + "malformed element line");
+      Element e;
+      e.name = words[1];
+      e.header_line = line;
+      unsigned long long count = 0;
+      const auto [p, ec] = std::from_chars(words[2].data(), words[2].data() + words[2].size(), count);
+      if (ec != std::errc() || p != words[2].data() + words[2].size()) fail(at + "element count '" + std::string(words[2]) + "' is not a number");
+      e.count = size_t(count);
+      elements.push_back(e);
+    } else if (words[0] == "property") {
+      if (elements.empty()) fail(at + "property before any element");
+      Property prop;
+      if (words.size() == 5 && words[1] == "list") {
+        const auto ct = scalar_type(words[2]), it = scalar_type(words[3]);
+        if (!ct || !it || ct->is_float) fail(at + "bad list property types");
+        prop = {std::string(words[4]), *it, true, *ct};
+      } else if (words.size() == 3) {
+        const auto t = scalar_type(words[1]);
+        if (!t) fail(at + "unknown property type '" + std::string(words[1]) + "'");
+        prop = {std::string(words[2]), *t, false, {}};
+      } else {
+        fail(at + "malformed property line");
+      }
+      elements.back().properties.push_back(prop);
+    } else if (words[0] == "end_header") {
+      ended = true;
+    } else {
+      fail(at + "unexpected header line '" + text + "'");
+    }
+  }
+  if (!format) fail("the header has no format line");
+
+  BodyReader body(data, pos, *format, line, source);
+  std::vector<Vec3> means;
+  std::vector<Mat3> covariances;
+  std::vector<std::vector<int>> faces;
+  bool has_vertex = false, has_covariances = false;
+  for (const Element& e : elements) {
+    // Each record needs at least one byte per value (binary) or two characters (ASCII).
+    size_t min_record = 0;
+    for (const Property& p : e.properties) min_record += p.is_list ? size_t(p.count_type.size) : size_t(p.type.size);
+    if (*format == Format::ascii) min_record = 2 * std::max<size_t>(1, e.properties.size());
+    if (min_record > 0 && e.count > body.remaining() / min_record)
+      fail("line " + std::to_string(e.header_line) + ": element '" + e.name + "' declares " + std::to_string(e.count) +
+           " records, more than the file holds (truncated)");
+    const auto index_of = [&](const char* name) {
+      for (size_t i = 0; i < e.properties.size(); ++i)
+        if (e.properties[i].name == name && !e.properties[i].is_list) return int(i);
+      return -1;
+    };
+    if (e.name == "vertex") {
+      if (has_vertex) fail("line " + std::to_string(e.header_line) + ": a second vertex element");
+      has_vertex = true;
+      const int ix = index_of("x"), iy = index_of("y"), iz = index_of("z");
+      if (ix < 0 || iy < 0 || iz < 0) fail("the vertex element lacks x, y or z");
+      const char* cov_names[6] = {"cxx", "cxy", "cxz", "cyy", "cyz", "czz"};
+      int ic[6];
+      int found = 0;
+      for (int k = 0; k < 6; ++k) found += (ic[k] = index_of(cov_names[k])) >= 0;
+      if (found != 0 && found != 6) fail("the vertex element has only some of cxx cxy cxz cyy cyz czz");
+      has_covariances = found == 6;
+      // Arrays grow as records arrive (never sized from the header): memory follows what the file holds.
+      means.reserve(std::min<size_t>(e.count, 1 << 16));
+      covariances.reserve(means.capacity());
+      std::vector<double> values(e.properties.size());
+      for (size_t v = 0; v < e.count; ++v) {
+        body.begin_record();
+        for (size_t k = 0; k < e.properties.size(); ++k) {
+          const Property& p = e.properties[k];
+          if (p.is_list) {
+            const size_t n = body.read_count(p.count_type);
+            for (size_t i = 0; i < n; ++i) body.read(p.type);
+          } else {
+            values[k] = body.read(p.type);
+          }
+        }
+        body.end_record();
+        means.emplace_back(values[size_t(ix)], values[size_t(iy)], values[size_t(iz)]);
+        if (const std::string why = position_problem(means[v]); !why.empty()) fail("vertex " + std::to_string(v) + " " + why);
+        Mat3& m = covariances.emplace_back(Mat3::Identity());
+        if (has_covariances) {
+          double c[6];
+          for (int k = 0; k < 6; ++k) c[k] = values[size_t(ic[k])];
+          m << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
+          if (const std::string why = covariance_problem(m); !why.empty()) fail("vertex " + std::to_string(v) + " " + why);
+        }
+      }
+    } else if (e.name == "face") {
+      if (!faces.empty()) fail("line " + std::to_string(e.header_line) + ": a second face element");
+      int list = -1;
+      for (size_t i = 0; i < e.properties.size(); ++i)
+        if (e.properties[i].is_list && (e.properties[i].name == "vertex_indices" || e.properties[i].name == "vertex_index"))
+          list = int(i);
+      if (list < 0) fail("the face element has no vertex_indices list");
+      faces.reserve(std::min<size_t>(e.count, 1 << 16));
+      for (size_t f = 0; f < e.count; ++f) {
+        std::vector<int>& face = faces.emplace_back();
+        body.begin_record();
+        for (size_t k = 0; k < e.properties.size(); ++k) {
+          const Property& p = e.properties[k];
+          if (!p.is_list) {
+            body.read(p.type);
+            continue;
+          }
+          const size_t n = body.read_count(p.count_type);
+          if (int(k) == list && n < 3) fail(body.where() + "face " + std::to_string(f) + " has " + std::to_string(n) + " vertices (at least 3 needed)");
+          for (size_t i = 0; i < n; ++i) {
+            const double index = body.read(p.type);
+            if (int(k) != list) continue;
+            if (!(index >= 0 && index < double(means.size())) || index != std::floor(index))
+              fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + BodyReader::format_number(index) +
+                   ", but there are " + std::to_string(means.size()) + " vertices");
+            face.push_back(int(index));
+          }
+        }
+        body.end_record();
+      }
+    } else {
+      if (e.properties.empty() && *format != Format::ascii) continue;  // empty binary records: nothing to skip
+      for (size_t r = 0; r < e.count; ++r) {
+        body.begin_record();
+        for (const Property& p : e.properties) {
+          const size_t n = p.is_list ? body.read_count(p.count_type) : 1;
+          for (size_t i = 0; i < n; ++i) body.read(p.type);
+        }
+        body.end_record();
+      }
+    }
+  }
+  if (!has_vertex) fail("the file has no vertex element");
+  PlyContents out;
+  out.mesh = make_covariance_mesh(means, covariances, faces, source);
+  out.has_covariances = has_covariances;
+  return out;
+}
+
+PlyContents read_ply(const std::string& path) { return parse_ply(read_text_file(path), path); }
+
+namespace {
+// Writes a scalar's bytes in little-endian order whatever the host's order.
+template <class T>
+void put_little_endian(std::ostream& out, T value) {
+  auto bytes = std::bit_cast<std::array<char, sizeof(T)>>(value);
+  if constexpr (std::endian::native == std::endian::big) std::reverse(bytes.begin(), bytes.end());
+  out.write(bytes.data(), sizeof(T));
+}
+}  // namespace
+
+void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
+  out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\n"
+      << "comment gpsurf covariance mesh\n"
+      << "element vertex " << m.n_vertices() << "\n";
+  for (const char* name : {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz"}) out << "property double " << name << "\n";
+  // Face sizes fit a uchar unless some face has more than 255 corners.
+  bool wide = false;
+  for (const auto f : m.mesh.faces()) wide = wide || m.mesh.valence(f) > 255;
+  out << "element face " << m.n_faces() << "\nproperty list " << (wide ? "int" : "uchar")
+      << " int vertex_indices\nend_header\n";
+  char buffer[32];
+  for (size_t i = 0; i < m.n_vertices(); ++i) {
+    const Vec3 p = m.mean(i);
+    const Mat3& c = m.covariances[i];
+    const double values[9] = {p.x(), p.y(), p.z(), c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
+    for (int k = 0; k < 9; ++k) {
+      if (binary) {
+        put_little_endian(out, values[k]);
+      } else {
+        const auto r = std::to_chars(buffer, buffer + sizeof buffer, values[k]);
+        out.write(buffer, r.ptr - buffer);
+        out.put(k == 8 ? '\n' : ' ');
+      }
+    }
+  }
+  for (const auto f : m.mesh.faces()) {
+    const int32_t n = static_cast<int32_t>(m.mesh.valence(f));
+    if (!binary) out << n;
+    else if (wide) put_little_endian(out, n);
+    else out.put(char(static_cast<unsigned char>(n)));
+    for (const auto v : m.mesh.fv_range(f)) {
+      const int32_t index = v.idx();
+      if (binary) put_little_endian(out, index);
+      else out << ' ' << index;
+    }
+    if (!binary) out << '\n';
+  }
+}
+
+}  // namespace gps

@@ -1,0 +1,26 @@
+#pragma once
+// The covariance PLY of DESIGN.md §4: vertex x y z and cxx cxy cxz cyy cyz czz (float or double),
+// faces as vertex_indices; ASCII or binary little/big endian. A PLY without the six covariance
+// properties is a plain mesh.
+#include <ostream>
+#include <string>
+
+#include "core/mesh/covariance_mesh.h"
+
+namespace gps {
+
+struct PlyContents {
+  CovarianceMesh mesh;          // identity covariances when the file has none
+  bool has_covariances = false;
+};
+
+/// Reads a PLY file; every malformed input is a gps::Error naming the file and what is wrong.
+PlyContents read_ply(const std::string& path);
+
+/// Parses PLY data already in memory; `source` names it in errors.
+PlyContents parse_ply(const std::string& data, const std::string& source);
+
+/// Writes a covariance PLY (doubles, exact round trip), ASCII or binary little endian.
+void write_ply(std::ostream& out, const CovarianceMesh& mesh, bool binary);
+
+}  // namespace gps

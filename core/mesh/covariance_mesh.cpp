@@ -1,0 +1,125 @@
+#include "core/mesh/covariance_mesh.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <limits>
+#include <algorithm>
+#include <sstream>
+
+#include "core/mesh/dual_map.h"
+#include "core/mesh/error.h"
+#include "core/mesh/mesh_connectivity.h"
+
+namespace gps {
+
+
+Vec3 CovarianceMesh::mean(size_t i) const { return to_vec3(mesh.point(PolyMesh::VertexHandle(int(i)))); }
+
+void CovarianceMesh::set_mean(size_t i, const Vec3& mean) {
+  mesh.set_point(PolyMesh::VertexHandle(int(i)), to_point(mean));
+}
+
+bool is_spd(const Mat3& c) {
+  if (!c.allFinite()) return false;
+  const double scale = c.cwiseAbs().maxCoeff();
+  if (!(scale > 0)) return false;
+  if ((c - c.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) return false;
+  const Eigen::LLT<Mat3> llt(0.5 * (c + c.transpose()));
+  return llt.info() == Eigen::Success;
+}
+
+CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::vector<Mat3>& covariances,
+                                    const std::vector<std::vector<int>>& faces, const std::string& source) {
+  if (means.size() != covariances.size())
+    throw Error(source + ": " + std::to_string(means.size()) + " vertices but " +
+                std::to_string(covariances.size()) + " covariances");
+  CovarianceMesh m;
+  m.covariances = covariances;
+  m.mesh.reserve(means.size(), 0, 0);  // edges and faces: add_faces, at their exact counts
+  for (const Vec3& p : means) m.mesh.add_vertex(to_point(p));
+  PolygonTopology t;
+  t.n_vertices = int(means.size());
+  t.verts.reserve(faces.size() * 4);
+  std::vector<size_t> last_face(means.size(), size_t(-1));  // the last face that used each vertex: repeats in O(1)
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const auto& face = faces[f];
+    const auto where = [&] { return source + ": face " + std::to_string(f); };
+    if (face.size() < 3) throw Error(where() + " has " + std::to_string(face.size()) + " vertices (at least 3 needed)");
+    for (int i : face) {
+      if (i < 0 || size_t(i) >= means.size())
+        throw Error(where() + " refers to vertex " + std::to_string(i) + ", but there are only " +
+                    std::to_string(means.size()) + " vertices");
+      if (last_face[size_t(i)] == f) throw Error(where() + " uses vertex " + std::to_string(i) + " twice");
+      last_face[size_t(i)] = f;
+      t.verts.push_back(i);
+    }
+    t.offsets.push_back(int(t.verts.size()));
+  }
+  add_faces(m.mesh, t, source);
+  return m;
+}
+
+namespace {
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+}  // namespace
+
+std::string position_problem(const Vec3& mean) {
+  if (!mean.allFinite()) return "has a position that is not finite";
+  if (mean.cwiseAbs().maxCoeff() > kMaxPositionMagnitude)
+    return "has a coordinate " + number(mean.cwiseAbs().maxCoeff()) + " beyond ±" + number(kMaxPositionMagnitude) +
+           " (its products would overflow)";
+  return "";
+}
+
+std::string covariance_problem(const Mat3& c) {
+  if (!c.allFinite()) return "has a covariance that is not finite";
+  if (!is_spd(c)) return "has a covariance that is not symmetric positive definite";
+  const Vec3 eigenvalues = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues();
+  if (eigenvalues(0) < kMinCovarianceEigenvalue)
+    return "has a covariance eigenvalue " + number(eigenvalues(0)) + " below " + number(kMinCovarianceEigenvalue) +
+           (eigenvalues(0) < std::numeric_limits<double>::min() ? " (subnormal: underflows)" : "") + " (its inverse would overflow)";
+  if (eigenvalues(2) > kMaxCovarianceEigenvalue)
+    return "has a covariance eigenvalue " + number(eigenvalues(2)) + " above " + number(kMaxCovarianceEigenvalue) +
+           " (its inverse would underflow)";
+  return "";
+}
+
+std::string gaussians_problem(const CovarianceMesh& m) {
+  for (size_t i = 0; i < m.n_vertices(); ++i) {
+    std::string why = position_problem(m.mean(i));
+    if (why.empty()) why = covariance_problem(m.covariances[i]);
+    if (!why.empty()) return "vertex " + std::to_string(i) + " " + why;
+  }
+  return "";
+}
+
+void validate_gaussians(const CovarianceMesh& m, const std::string& source) {
+  if (const std::string why = gaussians_problem(m); !why.empty()) throw Error(source + ": " + why);
+}
+
+void bounding_box(const CovarianceMesh& m, Vec3& lo, Vec3& hi) {
+  lo = hi = m.n_vertices() == 0 ? Vec3::Zero() : m.mean(0);
+  for (size_t i = 1; i < m.n_vertices(); ++i) {
+    lo = lo.cwiseMin(m.mean(i));
+    hi = hi.cwiseMax(m.mean(i));
+  }
+}
+
+double bounding_box_diagonal(const CovarianceMesh& m) {
+  Vec3 lo, hi;
+  bounding_box(m, lo, hi);
+  return (hi - lo).norm();
+}
+
+std::vector<Dual> base_points(const CovarianceMesh& mesh) {
+  std::vector<Dual> q(mesh.n_vertices());
+#pragma omp parallel for if (q.size() >= 4096)
+  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariance(i));
+  return q;
+}
+
+}  // namespace gps

@@ -1,0 +1,16 @@
+#pragma once
+// Covariances for a plain mesh (GPS paper Eq. 16–17, DESIGN.md §1).
+#include "core/mesh/covariance_mesh.h"
+
+namespace gps {
+
+/// Per face the second central moment of its vertices plus bias·λmax·I (Eq. 16); per vertex
+/// Σ⁻¹ = Σ_f Σ_f⁻¹ over its faces (Eq. 17). Replaces every covariance of `mesh`; a vertex in no
+/// face gets σ = half the mean edge length, isotropic.
+void infer_covariances(CovarianceMesh& mesh, double bias = 0.05);
+
+/// Isotropic covariances whose deviation follows the local edge length: Σ_i = (s·l̄_i)²·I with l̄_i
+/// the mean length of the edges at vertex i (an isolated vertex takes the mesh's mean edge length).
+void isotropic_covariances(CovarianceMesh& mesh, double s = 0.5);
+
+}  // namespace gps

@@ -1,0 +1,179 @@
+#include "core/mesh/mesh_connectivity.h"
+
+#include <algorithm>
+
+#include "core/mesh/error.h"
+
+#include "core/plans/patch_layout.h"
+
+namespace gps {
+
+PolygonTopology topology_of(const PolyMesh& mesh) {
+  PolygonTopology t;
+  t.n_vertices = int(mesh.n_vertices());
+  t.offsets.reserve(mesh.n_faces() + 1);
+  t.verts.reserve(mesh.n_faces() * 4);
+  for (const auto f : mesh.faces()) {
+    for (const auto v : mesh.fv_range(f)) t.verts.push_back(v.idx());
+    t.offsets.push_back(int(t.verts.size()));
+  }
+  return t;
+}
+
+MeshConnectivity connectivity_of(const PolygonTopology& t) {
+  MeshConnectivity c;
+  const size_t n_corners = t.verts.size();
+  // Half-edges keyed by (min, max) vertex pair, sorted to pair them into edges: a radix sort of two
+  // counting passes (by the larger vertex, then stably by the smaller) — linear whatever the valence.
+  struct HalfEdge {
+    int low, high;  // the smaller and the larger vertex
+    int face, corner;
+  };
+  std::vector<HalfEdge> by_high(n_corners), halves(n_corners);
+  const auto counting_sort = [&](const std::vector<HalfEdge>& in, std::vector<HalfEdge>& out, auto digit) {
+    std::vector<size_t> next(size_t(t.n_vertices) + 1, 0);
+    for (const HalfEdge& h : in) ++next[size_t(digit(h)) + 1];
+    for (int v = 0; v < t.n_vertices; ++v) next[size_t(v) + 1] += next[size_t(v)];
+    for (const HalfEdge& h : in) out[next[size_t(digit(h))]++] = h;
+  };
+  for (int f = 0; f < t.n_faces(); ++f) {
+    const int begin = t.offsets[size_t(f)], n = t.face_size(f);
+    for (int k = 0; k < n; ++k) {
+      const int a = t.verts[size_t(begin + k)], b = t.verts[size_t(begin + (k + 1 == n ? 0 : k + 1))];
+      halves[size_t(begin + k)] = {std::min(a, b), std::max(a, b), f, begin + k};
+    }
+  }
+  counting_sort(halves, by_high, [](const HalfEdge& h) { return h.high; });
+  counting_sort(by_high, halves, [](const HalfEdge& h) { return h.low; });
+  by_high = {};
+  c.face_edges.assign(n_corners, -1);
+  const auto same_edge = [](const HalfEdge& x, const HalfEdge& y) { return x.low == y.low && x.high == y.high; };
+  for (size_t i = 0; i < halves.size();) {
+    const int e = c.n_edges();
+    c.edge_verts.push_back(halves[i].low);
+    c.edge_verts.push_back(halves[i].high);
+    c.edge_faces.push_back(halves[i].face);
+    c.face_edges[size_t(halves[i].corner)] = e;
+    if (i + 1 < halves.size() && same_edge(halves[i + 1], halves[i])) {
+      c.edge_faces.push_back(halves[i + 1].face);
+      c.face_edges[size_t(halves[i + 1].corner)] = e;
+      i += 2;
+    } else {
+      c.edge_faces.push_back(-1);
+      i += 1;
+    }
+  }
+  // Compressed rows per vertex, each in the order its entries come (edges in edge order, faces in
+  // face order): a count, a prefix sum, a fill.
+  const auto prefix = [&](std::vector<int>& offsets) {
+    for (int v = 0; v < t.n_vertices; ++v) offsets[size_t(v) + 1] += offsets[size_t(v)];
+    return std::vector<int>(offsets.begin(), offsets.end() - 1);
+  };
+  c.vertex_edge_offsets.assign(size_t(t.n_vertices) + 1, 0);
+  for (const int v : c.edge_verts) ++c.vertex_edge_offsets[size_t(v) + 1];
+  std::vector<int> next = prefix(c.vertex_edge_offsets);
+  c.vertex_edges.resize(c.edge_verts.size());
+  for (size_t i = 0; i < c.edge_verts.size(); ++i) c.vertex_edges[size_t(next[size_t(c.edge_verts[i])]++)] = int(i / 2);
+  c.vertex_face_offsets.assign(size_t(t.n_vertices) + 1, 0);
+  for (const int v : t.verts) ++c.vertex_face_offsets[size_t(v) + 1];
+  next = prefix(c.vertex_face_offsets);
+  c.vertex_faces.resize(n_corners);
+  c.vertex_face_corners.resize(n_corners);
+  for (int f = 0; f < t.n_faces(); ++f)
+    for (int i = t.offsets[size_t(f)], k = 0; i < t.offsets[size_t(f) + 1]; ++i, ++k) {
+      const int at = next[size_t(t.verts[size_t(i)])]++;
+      c.vertex_faces[size_t(at)] = f;
+      c.vertex_face_corners[size_t(at)] = k;
+    }
+  return c;
+}
+
+VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
+  const int n_faces = c.n_vertex_faces(v);
+  if (n_faces == 0) return VertexRole::isolated;
+  // Each face at v brings two of v's edges and each edge has one or two faces, so 2F = 2E − B with B
+  // the boundary edges at v: as many edges as faces means none (without reading every edge's faces).
+  if (c.valence(v) == n_faces) return VertexRole::interior;
+  int found = 0;
+  for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
+    const int e = c.vertex_edges[size_t(i)];
+    if (!c.is_boundary_edge(e)) continue;
+    const int w = c.other_vertex(e, v);
+    if (found == 0 && a) *a = w;
+    if (found == 1 && b) *b = w;
+    ++found;
+  }
+  if (found == 0) return VertexRole::interior;
+  return n_faces == 1 ? VertexRole::corner : VertexRole::boundary;
+}
+
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source) {
+  add_faces(mesh, t, connectivity_of(t), source);
+}
+
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source) {
+  using HH = PolyMesh::HalfedgeHandle;
+  for (int e = 0; e + 1 < c.n_edges(); ++e)  // equal edges are neighbours in connectivity_of's order
+    if (c.edge_verts[2 * size_t(e)] == c.edge_verts[2 * size_t(e) + 2] && c.edge_verts[2 * size_t(e) + 1] == c.edge_verts[2 * size_t(e) + 3])
+      throw Error(source + ": face " + std::to_string(c.edge_faces[2 * size_t(e) + 2]) +
+                  " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
+  // Every element's storage at its final size at once (growing by doubling would hold up to twice
+  // it): resize() adds the default edges and faces that new_edge() and new_face() would, and resizes
+  // the properties once rather than per element.
+  mesh.resize(mesh.n_vertices(), size_t(c.n_edges()), size_t(t.n_faces()));
+  for (int e = 0; e < c.n_edges(); ++e) {  // as new_edge(edge_verts[2e], edge_verts[2e + 1])
+    mesh.set_vertex_handle(HH(2 * e), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e) + 1]));
+    mesh.set_vertex_handle(HH(2 * e + 1), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e)]));
+  }
+  // Corner k of a face owns the half-edge from its vertex to the next: 2e along the edge's order (from
+  // the lower vertex, as connectivity_of stores it; read off the face, not the edge) or 2e + 1.
+  std::vector<char> used(2 * size_t(c.n_edges()), 0);
+  std::vector<int> halfedge;  // those of one face
+  for (int f = 0; f < t.n_faces(); ++f) {
+    const int begin = t.offsets[size_t(f)], end = t.offsets[size_t(f) + 1];
+    halfedge.clear();
+    for (int k = begin; k < end; ++k) {
+      const int e = c.face_edges[size_t(k)];
+      const int h = 2 * e + (t.verts[size_t(k)] < t.verts[size_t(k + 1 < end ? k + 1 : begin)] ? 0 : 1);
+      if (used[size_t(h)]++)
+        throw Error(source + ": face " + std::to_string(f) +
+                    " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
+      halfedge.push_back(h);
+    }
+    const PolyMesh::FaceHandle fh(f);
+    for (int k = 0; k < end - begin; ++k) {
+      const HH h(halfedge[size_t(k)]);
+      mesh.set_face_handle(h, fh);
+      mesh.set_next_halfedge_handle(h, HH(halfedge[size_t(k + 1 < end - begin ? k + 1 : 0)]));
+      mesh.set_halfedge_handle(PolyMesh::VertexHandle(t.verts[size_t(begin + k)]), h);
+    }
+    mesh.set_halfedge_handle(fh, HH(halfedge.back()));  // as add_face: fv_range starts at corner 0
+  }
+  // Boundary half-edges: each vertex has at most one going out (one fan), which is its outgoing half-edge.
+  const auto non_manifold = [&](int v) {
+    return Error(source + ": vertex " + std::to_string(v) + " is non-manifold (its faces do not form one fan)");
+  };
+  std::vector<int> boundary_out(size_t(t.n_vertices), -1);
+  for (int h = 0; h < 2 * c.n_edges(); ++h) {
+    if (used[size_t(h)]) continue;
+    const int from = mesh.to_vertex_handle(HH(h ^ 1)).idx();
+    if (boundary_out[size_t(from)] >= 0) throw non_manifold(from);
+    boundary_out[size_t(from)] = h;
+    mesh.set_halfedge_handle(PolyMesh::VertexHandle(from), HH(h));
+  }
+  for (int h = 0; h < 2 * c.n_edges(); ++h)
+    if (!used[size_t(h)]) mesh.set_next_halfedge_handle(HH(h), HH(boundary_out[size_t(mesh.to_vertex_handle(HH(h)).idx())]));
+  // One fan per vertex: circling the outgoing half-edges from one of them meets all of its edges.
+  for (int v = 0; v < t.n_vertices; ++v) {
+    if (c.valence(v) == 0) continue;
+    const HH first = mesh.halfedge_handle(PolyMesh::VertexHandle(v));
+    int count = 0;
+    HH h = first;
+    do {
+      h = mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(h));
+    } while (++count <= c.valence(v) && h != first);
+    if (count != c.valence(v)) throw non_manifold(v);
+  }
+}
+
+}  // namespace gps

@@ -1,0 +1,59 @@
+#pragma once
+// Flat polygon topology and its edge/vertex adjacency, the form the subdivision loops run on.
+#include <string>
+#include <vector>
+
+#include "core/mesh/covariance_mesh.h"
+
+namespace gps {
+
+/// Per-element loops over a mesh (subdivision rules, limit masks) run on all cores (OpenMP) from
+/// this many elements on; below it starting the threads costs more than the loop.
+constexpr int kParallelFaces = 4096;
+
+/// Faces as vertex-index lists in compressed form (face f: verts[offsets[f] .. offsets[f+1])).
+struct PolygonTopology {
+  int n_vertices = 0;
+  std::vector<int> offsets{0};
+  std::vector<int> verts;
+  int n_faces() const { return int(offsets.size()) - 1; }
+  int face_size(int f) const { return offsets[size_t(f) + 1] - offsets[size_t(f)]; }
+};
+
+/// The faces of an OpenMesh polygon mesh in face_vertices() order (core/plans/patch_layout.h).
+PolygonTopology topology_of(const PolyMesh& mesh);
+
+/// Edges and incidences of a PolygonTopology. Edge e joins edge_verts[2e], edge_verts[2e+1];
+/// edge_faces[2e+1] is −1 on a boundary edge. face_edges parallels verts: the edge from corner k to k+1.
+struct MeshConnectivity {
+  std::vector<int> edge_verts;
+  std::vector<int> edge_faces;
+  std::vector<int> face_edges;
+  std::vector<int> vertex_edge_offsets, vertex_edges;  // edges around each vertex
+  std::vector<int> vertex_face_offsets, vertex_faces;  // faces around each vertex
+  std::vector<int> vertex_face_corners;                // parallel to vertex_faces: the vertex's corner index in that face
+  int n_edges() const { return int(edge_verts.size() / 2); }
+  bool is_boundary_edge(int e) const { return edge_faces[2 * size_t(e) + 1] < 0; }
+  int other_vertex(int e, int v) const { return edge_verts[2 * size_t(e)] == v ? edge_verts[2 * size_t(e) + 1] : edge_verts[2 * size_t(e)]; }
+  int valence(int v) const { return vertex_edge_offsets[size_t(v) + 1] - vertex_edge_offsets[size_t(v)]; }
+  int n_vertex_faces(int v) const { return vertex_face_offsets[size_t(v) + 1] - vertex_face_offsets[size_t(v)]; }
+};
+
+/// Builds the adjacency; the topology must be manifold (as CovarianceMesh guarantees).
+MeshConnectivity connectivity_of(const PolygonTopology& topology);
+
+/// Adds the faces of `t` to `mesh`, whose vertices 0 .. t.n_vertices − 1 exist, building OpenMesh's
+/// half-edge structure directly in time linear in the mesh whatever the valence (OpenMesh's add_face
+/// searches the half-edges around each vertex: quadratic on a fan). Edges are paired by
+/// connectivity_of; throws gps::Error naming `source` and the face or vertex where the mesh is not manifold.
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source);
+/// The same with the topology's connectivity already built (`c` = connectivity_of(t)).
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source);
+
+/// How a vertex behaves under the boundary rules: interior, on a boundary curve, or a corner (one face).
+enum class VertexRole { interior, boundary, corner, isolated };
+
+/// The role of vertex v; for a boundary vertex, `a` and `b` get its two boundary-edge neighbours.
+VertexRole vertex_role(const MeshConnectivity& c, int v, int* a = nullptr, int* b = nullptr);
+
+}  // namespace gps

@@ -1,0 +1,44 @@
+#pragma once
+// A piece of a subdivided mesh around one face, its vertices as stencils over the base vertices
+// of the neighbourhood, kept dense (DESIGN.md §2 step 2). A vertex is "complete" when every face it has in the whole mesh at that
+// level is present, so that its Catmull-Clark vertex point (and the edge points of its edges) can
+// be computed from the piece alone.
+#include <vector>
+
+#include "core/mesh/mesh_connectivity.h"
+#include <Eigen/Core>
+
+#include "core/plans/stencil.h"
+
+namespace gps {
+
+struct LocalMesh {
+  PolygonTopology topology;
+  MeshConnectivity connectivity;
+  std::vector<int> base_ids;             // the base vertices the stencils combine (empty when `is_base`)
+  std::vector<Eigen::VectorXd> points;   // per vertex: weights over base_ids; empty when `is_base`
+  std::vector<char> complete;
+  bool is_base = false;                  // the whole base mesh: vertex i is base vertex i
+
+  /// The stencil of vertex v over the global base vertices.
+  Stencil point(int v) const;
+  /// The stencil of Σ w·vertex over the global base vertices.
+  Stencil combination(const std::vector<std::pair<int, double>>& terms) const;
+  /// The face with exactly these corners (in any rotation), or −1.
+  int find_face(const std::vector<int>& corners) const;
+  /// The edge joining a and b, or −1.
+  int find_edge(int a, int b) const;
+};
+
+/// The whole base mesh as a LocalMesh (every vertex complete, identity stencils).
+LocalMesh base_local_mesh(const PolygonTopology& topology);
+
+/// The faces around the given vertices (their 1-ring), renumbered, with completeness carried over.
+LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corners, std::vector<int>& new_index);
+
+/// One Catmull-Clark step of the piece. Vertex points of complete vertices, edge points of edges
+/// with all their faces present, and face points are exact; the others are marked incomplete and
+/// must not be read (plan_builder asserts it).
+LocalMesh refine_local_mesh(const LocalMesh& m);
+
+}  // namespace gps

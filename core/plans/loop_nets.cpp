@@ -1,0 +1,132 @@
+#include "core/plans/loop_nets.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace gps {
+
+TriangleWalker::TriangleWalker(const PolygonTopology& topology, const MeshConnectivity& connectivity)
+    : t_(topology), c_(connectivity) {
+  fan_offsets_.reserve(size_t(t_.n_vertices) + 1);
+  fans_.reserve(c_.vertex_edges.size());
+  fan_offsets_.push_back(0);
+  for (int v = 0; v < t_.n_vertices; ++v) {
+    const int valence = c_.valence(v);
+    if (valence > 0) {
+      int start = c_.other_vertex(c_.vertex_edges[size_t(c_.vertex_edge_offsets[size_t(v)])], v);
+      if (vertex_role(c_, v) != VertexRole::interior)  // walk clockwise to the boundary start
+        for (int x = cw_next(v, start), guard = 0; x >= 0 && guard < valence; x = cw_next(v, start), ++guard) start = x;
+      fans_.push_back(start);
+      for (int x = ccw_next(v, start), n = 1; x >= 0 && x != start && n < valence; x = ccw_next(v, x), ++n) fans_.push_back(x);
+    }
+    fan_offsets_.push_back(int(fans_.size()));
+  }
+}
+
+int TriangleWalker::ccw_next(int v, int w) const {
+  for (int i = c_.vertex_face_offsets[size_t(v)]; i < c_.vertex_face_offsets[size_t(v) + 1]; ++i) {
+    const int f = c_.vertex_faces[size_t(i)], k = c_.vertex_face_corners[size_t(i)], o = t_.offsets[size_t(f)];
+    if (t_.verts[size_t(o + (k + 1) % 3)] == w) return t_.verts[size_t(o + (k + 2) % 3)];
+  }
+  return -1;
+}
+
+int TriangleWalker::cw_next(int v, int w) const {
+  for (int i = c_.vertex_face_offsets[size_t(v)]; i < c_.vertex_face_offsets[size_t(v) + 1]; ++i) {
+    const int f = c_.vertex_faces[size_t(i)], k = c_.vertex_face_corners[size_t(i)], o = t_.offsets[size_t(f)];
+    if (t_.verts[size_t(o + (k + 2) % 3)] == w) return t_.verts[size_t(o + (k + 1) % 3)];
+  }
+  return -1;
+}
+
+std::vector<int> TriangleWalker::ring_from(int v, int first) const {
+  const int* f = fan(v);
+  const int n = fan_size(v);
+  const int at = int(std::find(f, f + n, first) - f);
+  std::vector<int> ring;
+  ring.reserve(size_t(n));
+  if (vertex_role(c_, v) == VertexRole::interior) {
+    for (int i = 0; i < n; ++i) ring.push_back(f[(at + i) % n]);
+  } else {  // counter-clockwise to the boundary end, then clockwise from `first` to the start
+    for (int i = at; i < n; ++i) ring.push_back(f[i]);
+    for (int i = at - 1; i >= 0; --i) ring.push_back(f[i]);
+  }
+  return ring;
+}
+
+bool TriangleWalker::regular(int v) const {
+  switch (vertex_role(c_, v)) {
+    case VertexRole::interior: return c_.n_vertex_faces(v) == 6;
+    case VertexRole::boundary: return c_.n_vertex_faces(v) == 3;
+    default: return false;
+  }
+}
+
+int TriangleWalker::edge(int a, int b) const {
+  for (int i = c_.vertex_edge_offsets[size_t(a)]; i < c_.vertex_edge_offsets[size_t(a) + 1]; ++i)
+    if (c_.other_vertex(c_.vertex_edges[size_t(i)], a) == b) return c_.vertex_edges[size_t(i)];
+  return -1;
+}
+
+namespace {
+
+// Lattice directions counter-clockwise: (1,0) (0,1) (−1,1) (−1,0) (0,−1) (1,−1).
+constexpr int kDirection[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
+// Lattice positions of the 12 net points (core/plans/patch_basis.h order).
+constexpr int kNet[12][2] = {{0, 0}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, -1}, {-1, 1}, {2, -1}, {2, 0}, {1, 1}, {0, 2}, {-1, 2}};
+
+int net_index(int i, int j) {
+  for (int k = 0; k < 12; ++k)
+    if (kNet[k][0] == i && kNet[k][1] == j) return k;
+  return -1;
+}
+
+// The six lattice neighbours of a regular vertex c, `first` lying in direction d0; a boundary
+// vertex's two missing ones are phantoms, reflections across its boundary edges.
+std::array<VertexCombination, 6> lattice_ring(const TriangleWalker& w, int c, int first, int d0) {
+  std::array<VertexCombination, 6> ring;
+  const std::vector<int> fan(w.fan(c), w.fan(c) + w.fan_size(c));
+  const int shift = int(std::find(fan.begin(), fan.end(), first) - fan.begin());
+  for (size_t j = 0; j < fan.size(); ++j) ring[size_t((d0 + int(j) - shift + 12) % 6)] = {{fan[j], 1.0}};
+  if (fan.size() == 4) {  // regular boundary: d(f3)+1 = f3 − f2 + c, d(f0)−1 = f0 − f1 + c
+    const int d3 = (d0 + 3 - shift + 12) % 6, d0f = (d0 - shift + 12) % 6;
+    ring[size_t((d3 + 1) % 6)] = {{fan[3], 1.0}, {fan[2], -1.0}, {c, 1.0}};
+    ring[size_t((d0f + 5) % 6)] = {{fan[0], 1.0}, {fan[1], -1.0}, {c, 1.0}};
+  } else if (fan.size() != 6) {
+    throw std::logic_error("loop_regular_net: vertex " + std::to_string(c) + " is not regular");
+  }
+  return ring;
+}
+
+}  // namespace
+
+std::array<VertexCombination, 12> loop_regular_net(const TriangleWalker& w, int v0, int v1, int v2) {
+  std::array<VertexCombination, 12> net;
+  net[0] = {{v0, 1.0}};
+  net[1] = {{v1, 1.0}};
+  net[2] = {{v2, 1.0}};
+  // Each corner: its lattice position and the direction of the next corner from it.
+  const int corner[3] = {v0, v1, v2}, next[3] = {v1, v2, v0}, at[3][2] = {{0, 0}, {1, 0}, {0, 1}}, d0[3] = {0, 2, 4};
+  for (int k = 0; k < 3; ++k) {
+    const auto ring = lattice_ring(w, corner[k], next[k], d0[k]);
+    for (int d = 0; d < 6; ++d) {
+      const int n = net_index(at[k][0] + kDirection[d][0], at[k][1] + kDirection[d][1]);
+      if (n < 0) continue;
+      // A real vertex wins over a phantom of the same point seen from another corner.
+      if (net[size_t(n)].empty() || (net[size_t(n)].size() > 1 && ring[size_t(d)].size() == 1)) net[size_t(n)] = ring[size_t(d)];
+    }
+  }
+  return net;
+}
+
+std::vector<int> loop_extraordinary_neighbourhood(const TriangleWalker& w, int v, int a, int b) {
+  std::vector<int> points = {v};
+  const std::vector<int> ring = w.ring_from(v, a);
+  points.insert(points.end(), ring.begin(), ring.end());
+  for (const int corner : {a, b})
+    for (const int x : w.ring_from(corner, v))
+      if (std::find(points.begin(), points.end(), x) == points.end()) points.push_back(x);
+  return points;
+}
+
+}  // namespace gps

@@ -1,0 +1,159 @@
+#include "core/plans/loop_plan_builder.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <map>
+
+#include "core/mesh/error.h"
+#include "core/extraordinary/loop_extraordinary_tables.h"
+#include "core/plans/loop_nets.h"
+#include "core/plans/stencil_table.h"
+
+namespace gps {
+
+namespace {
+
+class LoopBuilder {
+public:
+  LoopBuilder(const PolygonTopology& t, LoopBeta beta)
+      : t_(t), c_(connectivity_of(t)), walker_(t_, c_), beta_(beta), tables_(beta), stencils_(t.n_vertices) {
+    plans_.shape = PatchShape::triangle;
+    plans_.max_depth = 1;
+  }
+
+  SurfaceTables build() {
+    for (int f = 0; f < t_.n_faces(); ++f)
+      if (t_.face_size(f) != 3)
+        throw Error("Loop patches need a triangle mesh, but face " + std::to_string(f) + " has " +
+                    std::to_string(t_.face_size(f)) + " vertices");
+    for (int v = 0; v < t_.n_vertices; ++v)
+      if (c_.n_vertex_faces(v) > kMaxLoopValence)
+        throw Error("vertex " + std::to_string(v) + " has " + std::to_string(c_.n_vertex_faces(v)) +
+                    " faces; Loop patches take at most " + std::to_string(kMaxLoopValence) + " (use --scheme catmull-clark)");
+    plans_.patch_roots.reserve(size_t(t_.n_faces()));
+    plans_.patch_corner_points = t_.verts;
+    plans_.nodes.reserve(size_t(t_.n_faces()) * 13);
+    for (int f = 0; f < t_.n_faces(); ++f) {
+      const int* v = &t_.verts[size_t(t_.offsets[size_t(f)])];
+      if (walker_.regular(v[0]) && walker_.regular(v[1]) && walker_.regular(v[2]))
+        plans_.patch_roots.push_back(emit_regular(loop_regular_net(walker_, v[0], v[1], v[2]), nullptr));
+      else
+        plans_.patch_roots.push_back(build_split(f));
+    }
+    plans_.extraordinary_tables = tables_.take();
+    return {std::move(plans_), stencils_.finish()};
+  }
+
+private:
+  // The stencils of a piece's vertices over the base vertices: per piece vertex, weights over `base`.
+  struct Piece {
+    std::vector<int> base;                  // piece-local coarse index → base vertex
+    std::vector<Eigen::VectorXd> weights;   // per fine vertex: weights over `base`
+  };
+
+  int point(const VertexCombination& combination, const Piece* piece) {
+    if (!piece) {
+      if (combination.size() == 1 && combination[0].second == 1.0) return combination[0].first;
+      std::map<int, double> terms;
+      for (const auto& [v, w] : combination) terms[v] += w;
+      return stencils_.add(Stencil::from_terms({terms.begin(), terms.end()}));
+    }
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(long(piece->base.size()));
+    for (const auto& [v, w] : combination) x += w * piece->weights[size_t(v)];
+    std::vector<std::pair<int, double>> terms;
+    for (long i = 0; i < x.size(); ++i)
+      if (x(i) != 0.0) terms.emplace_back(piece->base[size_t(i)], x(i));
+    std::sort(terms.begin(), terms.end());
+    return stencils_.add(Stencil::from_terms(std::move(terms)));
+  }
+
+  int emit_regular(const std::array<VertexCombination, 12>& net, const Piece* piece) {
+    const int offset = int(plans_.nodes.size());
+    plans_.nodes.push_back(kNodeRegular);
+    for (const auto& p : net) plans_.nodes.push_back(point(p, piece));
+    return offset;
+  }
+
+  // The configuration of base vertex v as seen from face f.
+  LoopExtraordinaryConfiguration configuration(int v, int f) const {
+    LoopExtraordinaryConfiguration k;
+    k.faces = c_.n_vertex_faces(v);
+    if (vertex_role(c_, v) == VertexRole::interior) return k;
+    k.boundary = true;
+    // Fan position: count faces clockwise from f to the boundary.
+    const int o = t_.offsets[size_t(f)];
+    int corner = 0;
+    while (t_.verts[size_t(o + corner)] != v) ++corner;
+    for (int w = t_.verts[size_t(o + (corner + 1) % 3)]; (w = walker_.cw_next(v, w)) >= 0;) ++k.fan_position;
+    return k;
+  }
+
+  // A triangle with an irregular corner: one Loop step of the faces around its corners.
+  int build_split(int f) {
+    const int* v = &t_.verts[size_t(t_.offsets[size_t(f)])];
+    // The piece: every face around the three corners, renumbered.
+    std::vector<int> faces;
+    for (int k = 0; k < 3; ++k)
+      for (int i = c_.vertex_face_offsets[size_t(v[k])]; i < c_.vertex_face_offsets[size_t(v[k]) + 1]; ++i)
+        faces.push_back(c_.vertex_faces[size_t(i)]);
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    Piece piece;
+    std::map<int, int> local;
+    PolygonTopology coarse;
+    for (const int g : faces)
+      for (int k = 0; k < 3; ++k) {
+        const int x = t_.verts[size_t(t_.offsets[size_t(g)] + k)];
+        const auto [it, added] = local.try_emplace(x, int(piece.base.size()));
+        if (added) piece.base.push_back(x);
+        coarse.verts.push_back(it->second);
+        if (k == 2) coarse.offsets.push_back(int(coarse.verts.size()));
+      }
+    coarse.n_vertices = int(piece.base.size());
+    const MeshConnectivity coarse_connectivity = connectivity_of(coarse);
+    std::vector<Eigen::VectorXd> unit(piece.base.size(), Eigen::VectorXd::Zero(long(piece.base.size())));
+    for (size_t i = 0; i < unit.size(); ++i) unit[i](long(i)) = 1.0;
+    // Exact where the piece holds every face around a vertex or edge: the corners and their edges.
+    piece.weights = loop_values(coarse, coarse_connectivity, unit, beta_);
+    const PolygonTopology fine = loop_topology(coarse, coarse_connectivity);
+    const MeshConnectivity fine_connectivity = connectivity_of(fine);
+    const TriangleWalker coarse_walker(coarse, coarse_connectivity), walker(fine, fine_connectivity);
+    const int n = coarse.n_vertices;
+    const int c[3] = {local[v[0]], local[v[1]], local[v[2]]};
+    const int e01 = n + coarse_walker.edge(c[0], c[1]), e12 = n + coarse_walker.edge(c[1], c[2]),
+              e20 = n + coarse_walker.edge(c[2], c[0]);
+    const int child[4][3] = {{c[0], e01, e20}, {e01, c[1], e12}, {e20, e12, c[2]}, {e12, e20, e01}};
+    int children[4];
+    for (int k = 0; k < 4; ++k) {
+      const int* x = child[k];
+      if (k < 3 && !walker_.regular(v[k])) {
+        // Child k holds base corner k at its own corner k: turn it to corner 0.
+        const int a = x[(k + 1) % 3], b = x[(k + 2) % 3];
+        const int table = tables_.offset(configuration(v[k], f), fine, fine_connectivity, c[k], a, b);
+        const std::vector<int> points = loop_extraordinary_neighbourhood(walker, c[k], a, b);
+        children[k] = int(plans_.nodes.size());
+        plans_.nodes.insert(plans_.nodes.end(), {kNodeExtraordinary, k, table, int(points.size())});
+        for (const int p : points) plans_.nodes.push_back(point({{p, 1.0}}, &piece));
+      } else {
+        children[k] = emit_regular(loop_regular_net(walker, x[0], x[1], x[2]), &piece);
+      }
+    }
+    const int offset = int(plans_.nodes.size());
+    plans_.nodes.insert(plans_.nodes.end(), {kNodeInternal, children[0], children[1], children[2], children[3]});
+    return offset;
+  }
+
+  const PolygonTopology& t_;
+  MeshConnectivity c_;
+  TriangleWalker walker_;
+  LoopBeta beta_;
+  LoopExtraordinaryTables tables_;
+  StencilTableBuilder stencils_;
+  PatchPlans plans_;
+};
+
+}  // namespace
+
+SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta) { return LoopBuilder(topology, beta).build(); }
+
+}  // namespace gps

@@ -1,0 +1,70 @@
+#include "core/plans/patch_readers.h"
+
+#include <algorithm>
+
+#include "core/mesh/error.h"
+#include "core/mesh/sparse_lists.h"
+
+namespace gps {
+
+namespace {
+
+// The points a patch's plan nodes read (core/plans/patch_plans.h): a walk from its root.
+void collect_node_points(const PatchPlans& plans, int node, std::vector<int>& out) {
+  const int32_t* n = plans.nodes.data() + node;
+  const auto kind = NodeKind(node_kind(n[0]));
+  if (kind == NodeKind::internal) {
+    for (int c = 1; c <= 4; ++c) collect_node_points(plans, n[c], out);
+  } else if (kind == NodeKind::extraordinary) {  // corner, table, K, then K points
+    out.insert(out.end(), n + 4, n + 4 + n[3]);
+  } else {
+    const int net = plans.shape == PatchShape::triangle ? 12 : 16;
+    out.insert(out.end(), n + 1, n + 1 + net);
+  }
+}
+
+}  // namespace
+
+PatchReaders::PatchReaders(const PatchPlans& plans, int n_points) : n_patches_(plans.n_patches()) {
+  const int corners = plans.corners();
+  // Per patch: the points it reads, and the patches it evaluates boundary points from.
+  std::vector<int> read_offsets{0}, reads, source_offsets{0}, sources, points;
+  for (int p = 0; p < n_patches_; ++p) {
+    points.clear();
+    collect_node_points(plans, plans.patch_roots[size_t(p)], points);
+    const auto corner = plans.patch_corner_points.begin() + ptrdiff_t(corners) * p;
+    points.insert(points.end(), corner, corner + corners);
+    if (!plans.patch_edges.empty())
+      for (int k = 0; k < corners; ++k) {
+        const PatchEdge e = patch_edge(plans, p, k);
+        points.insert(points.end(), {e.from, e.to});
+      }
+    std::sort(points.begin(), points.end());
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    if (!points.empty() && (points.front() < 0 || points.back() >= n_points)) throw Error("plan point out of range");
+    reads.insert(reads.end(), points.begin(), points.end());
+    read_offsets.push_back(int(reads.size()));
+    // The patches across the edges (both halves of a whole edge beside halves) and the corners' owners.
+    for (int k = 0; k < corners; ++k) {
+      const int32_t* r = &plans.patch_neighbours[size_t(4 * (corners * p + k))];
+      for (const int q : {r[0], r[2], plans.corner_owners[size_t(2 * (corners * p + k))]})
+        if (q >= 0 && q != p) sources.push_back(q);
+    }
+    std::sort(sources.begin() + source_offsets.back(), sources.end());
+    sources.erase(std::unique(sources.begin() + source_offsets.back(), sources.end()), sources.end());
+    source_offsets.push_back(int(sources.size()));
+  }
+  transpose_lists(read_offsets, reads, n_points, point_offsets_, point_patches_);
+  transpose_lists(source_offsets, sources, n_patches_, canonical_offsets_, canonical_users_);
+}
+
+std::vector<int> PatchReaders::patches_changed_by(const std::vector<int>& points) const {
+  const std::vector<int> read = union_of_lists(point_offsets_, point_patches_, points);
+  std::vector<int> out = union_of_lists(canonical_offsets_, canonical_users_, read);
+  out.insert(out.end(), read.begin(), read.end());  // the readers themselves, then merged in order
+  std::inplace_merge(out.begin(), out.end() - ptrdiff_t(read.size()), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace gps

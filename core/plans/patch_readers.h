@@ -1,0 +1,31 @@
+#pragma once
+// Which patches an edit changes (issue 12, the surface cache's partial re-capture): every patch
+// whose tessellated vertices depend on a plan point. A patch's vertices read its plan's nets, its
+// corner points and the ends of its edges (tessellation levels), and on its boundary the points of
+// the canonical patch of each shared edge or corner (core/plans/patch_adjacency.h). Built once per
+// topology from the plan table alone.
+#include <vector>
+
+#include "core/plans/patch_plans.h"
+
+namespace gps {
+
+class PatchReaders {
+public:
+  /// `n_points`: base vertices plus stencil rows (StencilTable::n_points()).
+  PatchReaders(const PatchPlans& plans, int n_points);
+
+  /// The patches whose generated vertices change when `points` change (point indices: base
+  /// vertices, then n_base + row), sorted, without repeats: the patches that read any of them, and
+  /// those that evaluate a boundary point from one of these (their canonical edge or corner patch).
+  std::vector<int> patches_changed_by(const std::vector<int>& points) const;
+
+  int n_patches() const { return n_patches_; }
+
+private:
+  int n_patches_ = 0;
+  std::vector<int> point_offsets_, point_patches_;      // per point: the patches that read it
+  std::vector<int> canonical_offsets_, canonical_users_;  // per patch: the patches evaluating a boundary point from it
+};
+
+}  // namespace gps

@@ -1,0 +1,310 @@
+#include "core/plans/plan_builder.h"
+
+#include <algorithm>
+#include <array>
+#include <exception>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include "core/mesh/error.h"
+#include "core/plans/local_mesh.h"
+#include "core/extraordinary/quad_extraordinary_tables.h"
+#include "core/plans/quad_nets.h"
+#include "core/plans/stencil_table.h"
+
+namespace gps {
+
+namespace {
+
+using Combo = LocalCombination;
+
+// Exact plans refine past their depth only where a node is not yet self-similar; this bounds it.
+constexpr int kDeepestPlan = 8;
+
+// The plans of a range of faces; an extraordinary node's table field holds an index into `extraordinary_tables`
+// until merge() lays the tables out.
+struct RangePlans {
+  SurfaceTables tables;
+  std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables;
+};
+
+// Builds the plans of the faces [first, last): patches in face order, stencil rows in the order of
+// their first use, point indices and node offsets local to this range (merge() renumbers them).
+class Builder {
+public:
+  Builder(const LocalMesh& base, int max_depth, ExtraordinaryNodes extraordinary, bool bspline_leaves, QuadExtraordinaryTableCache& cache)
+      : max_depth_(max_depth), exact_(extraordinary == ExtraordinaryNodes::exact), bspline_leaves_(bspline_leaves), base_(base),
+        cache_(cache), stencils_(base.topology.n_vertices) {}
+
+  RangePlans build(int first, int last) {
+    const PolygonTopology& t = base_.topology;
+    for (int f = first; f < last; ++f) {
+      const int n = t.face_size(f);
+      if (n == 4) {
+        const int* v = t.verts.data() + t.offsets[size_t(f)];
+        plans_.patch_roots.push_back(build_node(base_, {v[0], v[1], v[2], v[3]}, 0, f));
+        plans_.patch_corner_points.insert(plans_.patch_corner_points.end(), v, v + 4);
+        for (int k = 0; k < 4; ++k) {
+          const int a = v[k], b = v[(k + 1) % 4];
+          add_edge(a, b, beside_split_face(f, a, b) ? PatchEdgePart::whole_beside_halves : PatchEdgePart::whole);
+        }
+        continue;
+      }
+      std::vector<int> corners(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
+      // A face of n sides: its n Catmull-Clark children are the patch roots, one level down already,
+      // so that along an edge shared with a quad both sides reach the same depth (same limit curve).
+      std::vector<int> index;
+      const LocalMesh sub = extract_neighbourhood(base_, corners, index);
+      const LocalMesh fine = refine_local_mesh(sub);
+      const int nv = sub.topology.n_vertices, ne = sub.connectivity.n_edges();
+      std::vector<int> sc(corners.size());
+      for (size_t k = 0; k < corners.size(); ++k) sc[k] = index[size_t(corners[k])];
+      const int face_point = nv + ne + sub.find_face(sc);
+      const auto edge_point = [&](int k) { return nv + sub.find_edge(sc[size_t(k % n)], sc[size_t((k + 1) % n)]); };
+      // Control-quad corners for tessellation levels: the vertex, edge midpoints and centroid of
+      // the linear split, whose stencils do not depend on any summation order.
+      Stencil centroid;
+      for (const int c : corners) centroid += Stencil::vertex(c) * (1.0 / n);
+      const int centroid_point = stencils_.add(centroid);
+      const auto corner = [&](int k) { return corners[size_t((k + n) % n)]; };
+      for (int k = 0; k < n; ++k) {
+        const std::array<int, 4> child = {sc[size_t(k)], edge_point(k), face_point, edge_point(k + n - 1)};
+        plans_.patch_roots.push_back(build_node(fine, child, 1));
+        const auto midpoint = [&](int a, int b) {
+          return stencils_.add(Stencil::vertex(corner(a)) * 0.5 + Stencil::vertex(corner(b)) * 0.5);
+        };
+        const int next_mid = midpoint(k, k + 1), prev_mid = midpoint(k - 1, k);
+        plans_.patch_corner_points.insert(plans_.patch_corner_points.end(), {corner(k), next_mid, centroid_point, prev_mid});
+        add_edge(corner(k), corner(k + 1), PatchEdgePart::first_half);
+        add_edge(next_mid, centroid_point, PatchEdgePart::whole);
+        add_edge(centroid_point, prev_mid, PatchEdgePart::whole);
+        add_edge(corner(k - 1), corner(k), PatchEdgePart::second_half);
+      }
+    }
+    plans_.max_depth = deepest_;
+    return {{std::move(plans_), stencils_.finish()}, std::move(extraordinary_tables_)};
+  }
+
+private:
+  void add_edge(int from, int to, PatchEdgePart part) {
+    plans_.patch_edges.insert(plans_.patch_edges.end(), {from, to, int32_t(part)});
+  }
+
+  // Whether the face across base edge a–b from face f is split into patches (not a quad).
+  bool beside_split_face(int f, int a, int b) const {
+    const int other = other_face(base_, base_.find_edge(a, b), f);
+    return other >= 0 && base_.topology.face_size(other) != 4;
+  }
+
+  int point(const LocalMesh& m, const Combo& combo) {
+    if (m.is_base && combo.size() == 1 && combo[0].second == 1.0) return combo[0].first;
+    return stencils_.add(m.combination(combo));
+  }
+
+  // A regular leaf's phantom points (combinations p₋₁ = 2p₀ − p₁ beyond a boundary edge) replaced
+  // by the real point p₀ they mirror from; returns the boundary bits (core/plans/patch_basis.h,
+  // kBoundaryV0 …), with which the basis takes them in, so the GPU sums no large differences.
+  static int take_in_phantoms(std::array<Combo, 16>& net) {
+    const auto phantom = [&](int i, int j) { return net[size_t(i + 4 * j)].size() != 1; };
+    const bool v0 = phantom(1, 0), u1 = phantom(3, 1), v1 = phantom(1, 3), u0 = phantom(0, 1);
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) {
+        const int ri = u0 && i == 0 ? 1 : u1 && i == 3 ? 2 : i, rj = v0 && j == 0 ? 1 : v1 && j == 3 ? 2 : j;
+        if (ri != i || rj != j) net[size_t(i + 4 * j)] = net[size_t(ri + 4 * rj)];
+      }
+    return (v0 ? kBoundaryV0 : 0) | (u1 ? kBoundaryU1 : 0) | (v1 ? kBoundaryV1 : 0) | (u0 ? kBoundaryU0 : 0);
+  }
+
+  int emit_leaf(NodeKind kind, const LocalMesh& m, const std::array<Combo, 16>& net, int boundary = 0) {
+    const int offset = int(plans_.nodes.size());
+    plans_.nodes.push_back(int32_t(kind) | boundary << kNodeKindBits);
+    for (const Combo& p : net) plans_.nodes.push_back(point(m, p));
+    return offset;
+  }
+
+  // A node whose corner r is its only irregular one, evaluated exactly (core/extraordinary/quad_extraordinary_tables.h),
+  // or −1 where its neighbourhood is not self-similar.
+  int emit_extraordinary(const LocalMesh& m, const std::array<int, 4>& c, int r) {
+    const std::array<int, 4> turned = {c[size_t(r)], c[size_t((r + 1) % 4)], c[size_t((r + 2) % 4)], c[size_t((r + 3) % 4)]};
+    const auto neighbourhood = quad_extraordinary_neighbourhood(m, turned);
+    if (!neighbourhood) return -1;
+    auto table = cache_.table(neighbourhood->signature);
+    if (!table) return -1;
+    auto used = std::find(extraordinary_tables_.begin(), extraordinary_tables_.end(), table);
+    if (used == extraordinary_tables_.end()) used = extraordinary_tables_.insert(extraordinary_tables_.end(), std::move(table));
+    const int offset = int(plans_.nodes.size());
+    plans_.nodes.insert(plans_.nodes.end(), {kNodeExtraordinary, r, int(used - extraordinary_tables_.begin()), int(neighbourhood->points.size())});
+    for (const int p : neighbourhood->points) plans_.nodes.push_back(point(m, {{p, 1.0}}));
+    return offset;
+  }
+
+  // The node of the quad with corners c of m (the face `face` of m where known).
+  int build_node(const LocalMesh& m, const std::array<int, 4>& c, int depth, int face = -1) {
+    deepest_ = std::max(deepest_, depth);
+    int irregular = 0, corner = -1;
+    for (int k = 0; k < 4; ++k)
+      if (!regular_vertex(m, c[size_t(k)])) ++irregular, corner = k;
+    if (irregular == 0 && bspline_leaves_) {
+      bspline_net(m, face >= 0 ? face : m.find_face({c[0], c[1], c[2], c[3]}), c, net_);
+      const int boundary = take_in_phantoms(net_);
+      return emit_leaf(NodeKind::regular, m, net_, boundary);
+    }
+    if (irregular == 0) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
+    if (exact_ && irregular == 1 && depth >= max_depth_ && m.complete[size_t(c[size_t(corner)])])
+      if (const int offset = emit_extraordinary(m, c, corner); offset >= 0) return offset;
+    if (depth == (exact_ ? kDeepestPlan : max_depth_)) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
+
+    const int offset = int(plans_.nodes.size());
+    plans_.nodes.insert(plans_.nodes.end(), {int32_t(NodeKind::internal), 0, 0, 0, 0});
+    std::vector<int> index;
+    const LocalMesh sub = extract_neighbourhood(m, {c[0], c[1], c[2], c[3]}, index);
+    const LocalMesh fine = refine_local_mesh(sub);
+    const int nv = sub.topology.n_vertices, ne = sub.connectivity.n_edges();
+    std::array<int, 4> sc;
+    for (int k = 0; k < 4; ++k) sc[size_t(k)] = index[size_t(c[size_t(k)])];
+    const int face_point = nv + ne + sub.find_face({sc[0], sc[1], sc[2], sc[3]});
+    int edge_point[4];
+    for (int k = 0; k < 4; ++k) edge_point[k] = nv + sub.find_edge(sc[size_t(k)], sc[size_t((k + 1) % 4)]);
+    // Child k = (c_k', e'_k, f', e'_{k−1}) covers the quadrant at corner k; rotate its corners so that
+    // corner 0 sits at the quadrant's (0,0) and store it as child ubit + 2·vbit.
+    static constexpr int kQuadrant[4] = {0, 1, 3, 2};
+    for (int k = 0; k < 4; ++k) {
+      const std::array<int, 4> child = {sc[size_t(k)], edge_point[k], face_point, edge_point[(k + 3) % 4]};
+      std::array<int, 4> aligned;
+      for (int i = 0; i < 4; ++i) aligned[size_t(i)] = child[size_t((i + 4 - k) % 4)];
+      const int child_offset = build_node(fine, aligned, depth + 1);
+      plans_.nodes[size_t(offset + 1 + kQuadrant[k])] = child_offset;
+    }
+    return offset;
+  }
+
+  int max_depth_;
+  int deepest_ = 0;
+  bool exact_;
+  bool bspline_leaves_;
+  const LocalMesh& base_;
+  QuadExtraordinaryTableCache& cache_;
+  std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables_;
+  std::array<Combo, 16> net_;  // the regular leaves' nets, reused (no allocation per leaf)
+  StencilTableBuilder stencils_;
+  PatchPlans plans_;
+};
+
+// Appends the plans of consecutive face ranges in order. A row is added to the whole table where it
+// is first used, which is in the first range that uses it, in that range's order: so the result is
+// the table a single range over all faces gives, bit for bit, whatever the ranges. The rows are
+// merged in order, one range after the other; the renumbered nodes are then copied on all cores.
+// The extraordinary tables are laid out in the order of their first use, so the same.
+SurfaceTables merge(std::vector<RangePlans>& ranges, int n_base) {
+  StencilTableBuilder stencils(n_base);
+  PatchPlans plans;
+  std::vector<std::vector<int>> extraordinary_offset(ranges.size());  // per range: table index -> offset in the whole
+  std::map<const std::vector<double>*, int> laid_out;
+  for (size_t r = 0; r < ranges.size(); ++r)
+    for (const auto& table : ranges[r].extraordinary_tables) {
+      const auto [at, added] = laid_out.try_emplace(table.get(), int(plans.extraordinary_tables.size()));
+      if (added) plans.extraordinary_tables.insert(plans.extraordinary_tables.end(), table->begin(), table->end());
+      extraordinary_offset[r].push_back(at->second);
+    }
+  std::vector<SurfaceTables> parts(ranges.size());
+  for (size_t r = 0; r < ranges.size(); ++r) parts[r] = std::move(ranges[r].tables);
+  std::vector<std::vector<int>> rows(parts.size());  // per range: local row -> point in the whole table
+  for (size_t r = 0; r < parts.size(); ++r) {
+    const StencilTable& s = parts[r].stencils;
+    rows[r].resize(size_t(s.n_rows()));
+    for (int row = 0; row < s.n_rows(); ++row) rows[r][size_t(row)] = stencils.add_row(s, row);
+  }
+  // Where each range's records start in the whole table.
+  std::vector<size_t> node_base(parts.size() + 1, 0), patch_base(parts.size() + 1, 0);
+  for (size_t r = 0; r < parts.size(); ++r) {
+    plans.max_depth = std::max(plans.max_depth, parts[r].plans.max_depth);
+    node_base[r + 1] = node_base[r] + parts[r].plans.nodes.size();
+    patch_base[r + 1] = patch_base[r] + parts[r].plans.patch_roots.size();
+  }
+  plans.nodes.resize(node_base.back());
+  plans.patch_roots.resize(patch_base.back());
+  plans.patch_corner_points.resize(4 * patch_base.back());
+  plans.patch_edges.resize(kPatchEdgeStride * patch_base.back());
+#pragma omp parallel for schedule(dynamic)
+  for (size_t r = 0; r < parts.size(); ++r) {
+    const PatchPlans& p = parts[r].plans;
+    const auto point = [&row = rows[r], n_base](int p) { return p < n_base ? p : row[size_t(p - n_base)]; };
+    const int base = int(node_base[r]);
+    int32_t* nodes = plans.nodes.data() + node_base[r];
+    for (size_t o = 0; o < p.nodes.size();) {  // node records: kind, then children, points or a table
+      const auto kind = NodeKind(node_kind(p.nodes[o]));
+      nodes[o] = p.nodes[o];
+      if (kind == NodeKind::extraordinary) {  // corner, table, K, K points
+        const size_t k = size_t(p.nodes[o + 3]);
+        nodes[o + 1] = p.nodes[o + 1];
+        nodes[o + 2] = extraordinary_offset[r][size_t(p.nodes[o + 2])];
+        nodes[o + 3] = p.nodes[o + 3];
+        for (size_t i = o + 4; i < o + 4 + k; ++i) nodes[i] = point(p.nodes[i]);
+        o += 4 + k;
+        continue;
+      }
+      const size_t n = kind == NodeKind::internal ? 4 : 16;
+      for (size_t i = o + 1; i <= o + n; ++i) nodes[i] = kind == NodeKind::internal ? base + p.nodes[i] : point(p.nodes[i]);
+      o += n + 1;
+    }
+    const size_t first = patch_base[r];
+    for (size_t i = 0; i < p.patch_roots.size(); ++i) plans.patch_roots[first + i] = base + p.patch_roots[i];
+    for (size_t i = 0; i < p.patch_corner_points.size(); ++i) plans.patch_corner_points[4 * first + i] = point(p.patch_corner_points[i]);
+    for (size_t i = 0; i < p.patch_edges.size(); ++i)
+      plans.patch_edges[kPatchEdgeStride * first + i] = i % kPatchEdgeInts == 2 ? p.patch_edges[i] : point(p.patch_edges[i]);
+    parts[r] = {};
+  }
+  return {std::move(plans), stencils.finish()};
+}
+
+}  // namespace
+
+namespace {
+// The plans read every neighbour of an extraordinary vertex from each patch at it (thesis Fig. 2.5
+// corner rule), so their stencils grow with the square of the valence (and of the face size, which
+// becomes the valence of the face's centre after the split): past this bound they would take
+// minutes and gigabytes, so such meshes are refused up front with a message.
+constexpr int kMaxPlanValence = 256;
+
+void check_plan_valences(const PolygonTopology& t) {
+  std::vector<int> faces_at(size_t(t.n_vertices), 0);
+  for (int f = 0; f < t.n_faces(); ++f) {
+    if (t.face_size(f) > kMaxPlanValence)
+      throw Error("face " + std::to_string(f) + " has " + std::to_string(t.face_size(f)) + " sides; patch plans handle up to " +
+                  std::to_string(kMaxPlanValence) + " (split the face, or use gpsurf subdivide)");
+    for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k)
+      if (++faces_at[size_t(t.verts[size_t(k)])] > kMaxPlanValence)
+        throw Error("vertex " + std::to_string(t.verts[size_t(k)]) + " has more than " + std::to_string(kMaxPlanValence) +
+                    " faces; patch plans handle valences up to " + std::to_string(kMaxPlanValence) +
+                    " (their stencils grow with its square; use gpsurf subdivide)");
+  }
+}
+}  // namespace
+
+SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary, bool bspline_leaves) {
+  const int shallowest = extraordinary == ExtraordinaryNodes::exact ? 0 : 1;
+  if (max_depth < shallowest || max_depth > kDeepestPlan)
+    throw usage_error("plan depth must be " + std::to_string(shallowest) + "..8, got " + std::to_string(max_depth));
+  check_plan_valences(topology);
+  const LocalMesh base = base_local_mesh(topology);
+  // Faces in ranges of a fixed size, built on all cores (OpenMP), merged in order.
+  constexpr int kFacesPerRange = 1024;
+  const int n_faces = topology.n_faces(), n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);
+  std::vector<RangePlans> parts(static_cast<size_t>(n_ranges));
+  QuadExtraordinaryTableCache cache;
+  std::vector<std::exception_ptr> failures(parts.size());
+#pragma omp parallel for schedule(dynamic)
+  for (int r = 0; r < n_ranges; ++r) {
+    try {
+      parts[size_t(r)] = Builder(base, max_depth, extraordinary, bspline_leaves, cache).build(r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange));
+    } catch (...) {
+      failures[size_t(r)] = std::current_exception();
+    }
+  }
+  for (const auto& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+  return merge(parts, topology.n_vertices);
+}
+
+}  // namespace gps

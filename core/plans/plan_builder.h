@@ -1,0 +1,40 @@
+#pragma once
+// Subdivision plans and their stencil table from a mesh's topology (thesis 2.3, DESIGN.md §2).
+#include "core/mesh/mesh_connectivity.h"
+#include "core/plans/patch_plans.h"
+
+namespace gps {
+
+struct SurfaceTables {
+  PatchPlans plans;
+  StencilTable stencils;
+
+  /// The bytes the tables hold in the CPU's memory (ints, and doubles for weights and extraordinary tables).
+  size_t bytes() const {
+    const PatchPlans& p = plans;
+    return 4 * (p.nodes.size() + p.patch_roots.size() + p.patch_corner_points.size() + p.patch_edges.size() +
+                p.patch_neighbours.size() + p.corner_owners.size() + stencils.offsets.size() + stencils.indices.size()) +
+           8 * (p.extraordinary_tables.size() + stencils.weights.size());
+  }
+};
+
+/// How plans meet extraordinary and irregular boundary vertices.
+enum class ExtraordinaryNodes {
+  exact,   // refined down to the plan depth 0..8 (further where a node has more than one irregular
+           // corner: one level, two below a split n-gon), then evaluated exactly there
+           // (core/extraordinary/quad_extraordinary_tables.h); the depth trades stencil rows for cheaper evaluation
+  bezier,  // the thesis' plans (2.3): refined down to the plan depth 1..8, then Bézier patches from
+           // the rules of thesis Fig. 2.5, an approximation that closes in as the depth grows
+};
+
+/// Builds one plan per patch (core/plans/patch_layout.h numbering): quadtrees refined around
+/// extraordinary and irregular boundary vertices, regular nodes as bicubic B-splines (boundary
+/// phantoms p₋₁ = 2p₀ − p₁), the nodes at those vertices as `extraordinary` says down from
+/// `max_depth` (an exact node that is still not self-similar at depth 8 would become a Bézier
+/// patch; none is met in practice). Depends on topology only. `bspline_leaves` =
+/// false makes every regular node a terminal Bézier node instead (tests: with n = 4 the Fig. 2.5
+/// rules are the B-spline's).
+SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary = ExtraordinaryNodes::exact,
+                       bool bspline_leaves = true);
+
+}  // namespace gps

@@ -1,0 +1,48 @@
+#include "core/plans/planned_surface.h"
+
+#include <algorithm>
+
+#include "core/mesh/dual_map.h"
+#include "core/plans/loop_plan_builder.h"
+#include "core/plans/patch_adjacency.h"
+#include "core/reference/reference_subdivision.h"
+
+namespace gps {
+
+Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
+  if (options.scheme) return *options.scheme;
+  for (int f = 0; f < topology.n_faces(); ++f)
+    if (topology.face_size(f) != 3) return Scheme::catmull_clark;
+  // Loop's exact tables grow with the valence: past kMaxLoopValence faces at a vertex, Catmull-Clark.
+  std::vector<int> faces_at(size_t(topology.n_vertices), 0);
+  for (const int v : topology.verts)
+    if (++faces_at[size_t(v)] > kMaxLoopValence) return Scheme::catmull_clark;
+  return topology.n_faces() > 0 ? Scheme::loop : Scheme::catmull_clark;
+}
+
+SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options) {
+  const ExtraordinaryNodes extraordinary = options.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier;
+  SurfaceTables tables = scheme_for(topology, options) == Scheme::loop ? build_loop_plans(topology, options.loop_beta)
+                                                                    : build_plans(topology, options.depth, extraordinary);
+  add_patch_adjacency(tables.plans);
+  return tables;
+}
+
+PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {
+  const PolygonTopology topology = topology_of(mesh.mesh);
+  scheme_ = scheme_for(topology, options);
+  tables_ = build_surface_plans(topology, options);
+  dependents_ = stencil_dependents(tables_.stencils);
+  points_ = apply_stencils(tables_.stencils, base_points(mesh));
+}
+
+void PlannedSurface::update(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  for (const int v : changed) points_[size_t(v)] = to_dual(mesh.mean(size_t(v)), mesh.covariance(size_t(v)));
+  update_stencils(tables_.stencils, dependents_, changed, points_);
+}
+
+std::vector<int> PlannedSurface::rows_reading(const std::vector<int>& vertices) const {
+  return gps::rows_reading(dependents_, vertices);
+}
+
+}  // namespace gps

@@ -1,0 +1,54 @@
+#pragma once
+// The planned surface of a covariance mesh (DESIGN.md §2): its plan and stencil tables, built once
+// per topology by the scheme that fits the mesh, and the 9D plan points, kept up to date by edits.
+// The renderer uploads these tables as they are (as OpenSubdiv's Osd takes Far's tables).
+#include <optional>
+#include <vector>
+
+#include "core/mesh/covariance_mesh.h"
+#include "core/reference/loop.h"
+#include "core/plans/plan_builder.h"
+#include "core/reference/reference_subdivision.h"
+#include "core/plans/stencil_table.h"
+
+namespace gps {
+
+/// The depth of exact Catmull-Clark plans unless asked otherwise: measured fastest at equal
+/// exactness (issue 11's closing note; gpsurf bench --render --depth N).
+constexpr int kExactPlanDepth = 2;
+
+struct PlanOptions {
+  std::optional<Scheme> scheme;  // empty: Loop for a mesh of triangles only (valences up to
+                                 // kMaxLoopValence), else Catmull-Clark
+  int depth = kExactPlanDepth;   // Catmull-Clark: where exact nodes take over (0..8), or the thesis' Bézier plans (1..8)
+  LoopBeta loop_beta = LoopBeta::loop;
+  bool exact = true;             // Catmull-Clark: extraordinary vertices evaluated exactly (Loop's always are)
+};
+
+/// The scheme `options` give for this mesh.
+Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options);
+
+/// Plans and stencils of the mesh under its scheme (core/plans/plan_builder.h, core/plans/loop_plan_builder.h).
+SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options);
+
+class PlannedSurface {
+public:
+  PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options);
+
+  Scheme scheme() const { return scheme_; }
+  const SurfaceTables& tables() const { return tables_; }
+  /// Every plan point: the base vertices' q, then the stencil rows.
+  const std::vector<Dual>& points() const { return points_; }
+  /// After an edit of `changed` vertices of `mesh`: their q and the rows that read them.
+  void update(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  /// The stencil rows that read any of `vertices`, sorted, without repeats.
+  std::vector<int> rows_reading(const std::vector<int>& vertices) const;
+
+private:
+  Scheme scheme_;
+  SurfaceTables tables_;
+  StencilDependents dependents_;
+  std::vector<Dual> points_;
+};
+
+}  // namespace gps

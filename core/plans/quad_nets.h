@@ -1,0 +1,33 @@
+#pragma once
+// The control nets of Catmull-Clark patches over a piece of a subdivided mesh (core/plans/local_mesh.h):
+// the 4×4 B-spline net of a regular quad and the Bézier net of a terminal node (thesis Fig. 2.5).
+#include <array>
+#include <utility>
+#include <vector>
+
+#include "core/plans/local_mesh.h"
+
+namespace gps {
+
+/// A point as a combination of the vertices of a LocalMesh (before it becomes a base stencil).
+using LocalCombination = std::vector<std::pair<int, double>>;
+
+/// Corner k of face f (k taken cyclically).
+int face_vertex(const LocalMesh& m, int f, int k);
+/// The corner of face f at vertex v.
+int corner_index(const LocalMesh& m, int f, int v);
+/// The face across edge e from face f, or −1 on the boundary.
+int other_face(const LocalMesh& m, int e, int f);
+
+/// Interior valence 4, boundary with two faces, or a corner with one face; all faces around quads.
+bool regular_vertex(const LocalMesh& m, int v);
+
+/// The 4×4 B-spline net of quad q with corners c (all regular), net index i + 4j with i along the
+/// edge c[0] → c[1]; boundary phantoms p₋₁ = 2p₀ − p₁. Written into `net`, whose vectors keep
+/// their capacity: a builder that reuses one allocates nothing per regular leaf.
+void bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c, std::array<LocalCombination, 16>& net);
+
+/// The Bézier net of a terminal node with corners c by the rules of thesis Fig. 2.5 (DESIGN.md §2).
+std::array<LocalCombination, 16> bezier_net(const LocalMesh& m, const std::array<int, 4>& c);
+
+}  // namespace gps

@@ -1,0 +1,55 @@
+#pragma once
+// Building and applying the stencil table of core/plans/patch_plans.h (DESIGN.md §2 steps 3–4).
+#include <unordered_map>
+#include <vector>
+
+#include "core/mesh/linalg.h"
+#include "core/plans/patch_plans.h"
+#include "core/plans/stencil.h"
+
+namespace gps {
+
+/// Collects the points plans read: a stencil that is a single base vertex is that vertex's index;
+/// any other becomes a row, rows with identical stencils shared.
+class StencilTableBuilder {
+public:
+  explicit StencilTableBuilder(int n_base);
+  /// The point index of `s` (a base vertex index, or n_base + row).
+  int add(const Stencil& s);
+  /// The point index of row `row` of another table over the same base vertices.
+  int add_row(const StencilTable& other, int row);
+  StencilTable finish() { return std::move(table_); }
+
+private:
+  template <class Terms>
+  int add_terms(const Terms& terms);
+
+  StencilTable table_;
+  std::unordered_map<size_t, int> last_row_by_hash_;  // chains through previous_same_hash_
+  std::vector<int> previous_same_hash_;               // per row: the previous row of equal hash, or −1
+};
+
+/// All points: q of the base vertices, then every row (one sparse matrix-vector product over 9D).
+std::vector<Dual> apply_stencils(const StencilTable& table, const std::vector<Dual>& base);
+
+/// For incremental updates: which rows read each base vertex (the transposed table).
+struct StencilDependents {
+  std::vector<int> offsets, rows;
+};
+StencilDependents stencil_dependents(const StencilTable& table);
+/// The rows that read any of `vertices`, sorted, without repeats.
+std::vector<int> rows_reading(const StencilDependents& dependents, const std::vector<int>& vertices);
+
+/// An edit whose part of the work (dependent rows of all rows, changed vertices of all vertices)
+/// reaches 1/kWholeUpdateDivisor updates everything at once: gathering and sorting the parts was
+/// measured to cost more (bench_plans). The CPU update and the renderer's compute passes both follow it.
+constexpr size_t kWholeUpdateDivisor = 4;
+inline bool update_everything(size_t part, size_t whole) { return part * kWholeUpdateDivisor >= whole; }
+
+/// Re-applies only the rows that read the changed base vertices (every row past update_everything);
+/// `points` holds every point and must already carry the changed vertices' new q in its first
+/// n_base entries.
+void update_stencils(const StencilTable& table, const StencilDependents& dependents,
+                     const std::vector<int>& changed_vertices, std::vector<Dual>& points);
+
+}  // namespace gps

@@ -1,0 +1,205 @@
+#include "core/reference/limit_tangents.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+
+#include "core/reference/catmull_clark.h"
+#include "core/mesh/dual_map.h"
+#include "core/reference/loop.h"
+
+namespace gps {
+
+namespace {
+
+// The ring of v in counter-clockwise order (faces oriented counter-clockwise): edge neighbours
+// e_0 … e_m and, for quads, the corner f_i across face i (between e_i and e_{i+1}). For an interior
+// vertex m = n and e_n = e_0 is not repeated; on a boundary e_0 and e_k are the boundary neighbours.
+struct OrderedRing {
+  std::vector<int> edges, diagonals;
+  bool boundary = false;
+};
+
+bool ordered_ring(const PolygonTopology& t, const MeshConnectivity& c, int v, int face_size, OrderedRing& ring) {
+  struct Corner {
+    int next, diagonal, previous;
+  };
+  std::vector<Corner> corners;
+  for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i) {
+    const int f = c.vertex_faces[size_t(i)], k = c.vertex_face_corners[size_t(i)], n = t.face_size(f);
+    if (n != face_size) return false;
+    const int* corner = &t.verts[size_t(t.offsets[size_t(f)])];
+    corners.push_back({corner[(k + 1) % n], n == 4 ? corner[(k + 2) % n] : -1, corner[(k + n - 1) % n]});
+  }
+  if (corners.empty()) return false;
+  // Face i + 1 follows face i where its next neighbour is face i's previous one. A boundary fan
+  // starts at the face whose next neighbour follows no face.
+  const auto following = [&](int neighbour) {
+    return std::find_if(corners.begin(), corners.end(), [&](const Corner& x) { return x.next == neighbour; });
+  };
+  auto start = corners.begin();
+  for (auto it = corners.begin(); it != corners.end(); ++it)
+    if (std::none_of(corners.begin(), corners.end(), [&](const Corner& x) { return x.previous == it->next; })) {
+      start = it;
+      ring.boundary = true;
+    }
+  ring.edges.assign(1, start->next);
+  ring.diagonals.clear();
+  auto at = start;
+  for (size_t walked = 0; walked < corners.size(); ++walked) {
+    ring.diagonals.push_back(at->diagonal);
+    if (walked + 1 == corners.size()) break;
+    ring.edges.push_back(at->previous);
+    at = following(at->previous);
+    if (at == corners.end()) return false;  // not one fan
+  }
+  if (ring.boundary) {
+    ring.edges.push_back(at->previous);
+    return true;
+  }
+  return at->previous == start->next;  // the fan closes
+}
+
+// The subdominant left eigenvectors of the subdivision matrix of a boundary vertex's ring with k
+// faces: points (v, e_0 … e_k, f_0 … f_{k−1}) for quads, (v, e_0 … e_k) for triangles. The matrix
+// comes from our own rules (catmull_clark_values, loop_values) applied to unit vectors on the fan,
+// so it cannot drift from them. Empty when the eigenvalues after 1 are not real or the second and
+// third are not above all others: then the ring has no tangent plane of two modes to take.
+using TangentPair = std::vector<Eigen::VectorXd>;
+
+TangentPair boundary_eigenvectors(int k, bool quads) {
+  PolygonTopology fan;
+  const int n_points = quads ? 2 * k + 2 : k + 2;
+  fan.n_vertices = n_points;
+  fan.offsets = {0};
+  for (int i = 0; i < k; ++i) {
+    if (quads)
+      fan.verts.insert(fan.verts.end(), {0, 1 + i, k + 2 + i, 2 + i});
+    else
+      fan.verts.insert(fan.verts.end(), {0, 1 + i, 2 + i});
+    fan.offsets.push_back(int(fan.verts.size()));
+  }
+  const MeshConnectivity c = connectivity_of(fan);
+  std::vector<Eigen::VectorXd> unit(static_cast<size_t>(n_points));
+  for (int i = 0; i < n_points; ++i) unit[size_t(i)] = Eigen::VectorXd::Unit(n_points, i);
+  const std::vector<Eigen::VectorXd> refined = quads ? catmull_clark_values(fan, c, unit) : loop_values(fan, c, unit, LoopBeta::loop);
+  // The refined ring: v's vertex point, the edge points of (v, e_i), the face points.
+  Eigen::MatrixXd step(n_points, n_points);
+  step.row(0) = refined[0].transpose();
+  for (int e = 0; e < c.n_edges(); ++e) {
+    const int a = c.edge_verts[2 * size_t(e)], b = c.edge_verts[2 * size_t(e) + 1];
+    if (a == 0 || b == 0) step.row(a + b) = refined[size_t(n_points + e)].transpose();
+  }
+  if (quads)
+    for (int f = 0; f < k; ++f) step.row(k + 2 + f) = refined[size_t(n_points + c.n_edges() + f)].transpose();
+
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(step.transpose());
+  const Eigen::VectorXcd values = solver.eigenvalues();
+  std::vector<int> order(static_cast<size_t>(n_points));
+  for (int i = 0; i < n_points; ++i) order[size_t(i)] = i;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(values[a]) > std::abs(values[b]); });
+  const auto real = [&](int i) { return std::abs(values[order[size_t(i)]].imag()) < 1e-12; };
+  const bool separated = n_points == 3 || std::abs(values[order[2]]) > std::abs(values[order[3]]) + 1e-9;
+  if (!real(0) || !real(1) || !real(2) || std::abs(values[order[0]].real() - 1.0) > 1e-12 || !separated) return {};
+  TangentPair pair = {solver.eigenvectors().col(order[1]).real(), solver.eigenvectors().col(order[2]).real()};
+  // An eigenvector's sign is arbitrary: orient the pair on a flat fan (e_i at angle πi/(k + 1),
+  // f_i at e_i + e_{i+1}), so that first × second points to the side the faces' corners turn to.
+  Eigen::MatrixXd flat = Eigen::MatrixXd::Zero(n_points, 2);
+  for (int i = 0; i <= k; ++i) flat.row(1 + i) << std::cos(M_PI * i / (k + 1)), std::sin(M_PI * i / (k + 1));
+  if (quads)
+    for (int i = 0; i < k; ++i) flat.row(k + 2 + i) = flat.row(1 + i) + flat.row(2 + i);
+  const Eigen::Vector2d a = flat.transpose() * pair[0], b = flat.transpose() * pair[1];
+  const double turn = a.x() * b.y() - a.y() * b.x();
+  if (std::abs(turn) < 1e-9 * a.norm() * b.norm()) return {};
+  if (turn < 0) pair[1] = -pair[1];
+  return pair;
+}
+
+// Once per (number of faces, face size), for every thread.
+const TangentPair& cached_boundary_eigenvectors(int k, bool quads) {
+  static std::mutex mutex;
+  static std::map<std::pair<int, bool>, TangentPair> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto it = cache.find({k, quads});
+  if (it == cache.end()) it = cache.emplace(std::make_pair(k, quads), boundary_eigenvectors(k, quads)).first;
+  return it->second;
+}
+
+bool boundary_masks(int v, const OrderedRing& ring, bool quads, VertexMask& first, VertexMask& second) {
+  const TangentPair& pair = cached_boundary_eigenvectors(int(ring.diagonals.size()), quads);
+  if (pair.empty()) return false;
+  VertexMask* masks[2] = {&first, &second};
+  for (int m = 0; m < 2; ++m) {
+    const Eigen::VectorXd& w = pair[size_t(m)];
+    masks[m]->reset(1.0);
+    masks[m]->add_group(w[0], v);
+    for (size_t i = 0; i < ring.edges.size(); ++i) masks[m]->add_group(w[long(1 + i)], ring.edges[i]);
+    if (quads)
+      for (size_t i = 0; i < ring.diagonals.size(); ++i) masks[m]->add_group(w[long(1 + ring.edges.size() + i)], ring.diagonals[i]);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool catmull_clark_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& first, VertexMask& second) {
+  OrderedRing ring;
+  if (!ordered_ring(t, c, v, 4, ring)) return false;
+  if (ring.boundary) return boundary_masks(v, ring, true, first, second);
+  const int n = int(ring.edges.size());
+  const double angle = 2.0 * M_PI / n;
+  const double a = 1.0 + std::cos(angle) + std::cos(M_PI / n) * std::sqrt(2.0 * (9.0 + std::cos(angle)));
+  first.reset(1.0);
+  second.reset(1.0);
+  for (int i = 0; i < n; ++i) {
+    const double c0 = std::cos(angle * i), c1 = std::cos(angle * (i + 1));
+    const double s0 = std::sin(angle * i), s1 = std::sin(angle * (i + 1));
+    first.add_group(a * c0, ring.edges[size_t(i)]);
+    first.add_group(c0 + c1, ring.diagonals[size_t(i)]);
+    second.add_group(a * s0, ring.edges[size_t(i)]);
+    second.add_group(s0 + s1, ring.diagonals[size_t(i)]);
+  }
+  return true;
+}
+
+bool loop_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& first, VertexMask& second) {
+  OrderedRing ring;
+  if (!ordered_ring(t, c, v, 3, ring)) return false;
+  if (ring.boundary) return boundary_masks(v, ring, false, first, second);
+  const int n = int(ring.edges.size());
+  first.reset(1.0);
+  second.reset(1.0);
+  for (int i = 0; i < n; ++i) {
+    first.add_group(std::cos(2.0 * M_PI * i / n), ring.edges[size_t(i)]);
+    second.add_group(std::sin(2.0 * M_PI * i / n), ring.edges[size_t(i)]);
+  }
+  return true;
+}
+
+void limit_tangents(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<Dual>& p, bool loop,
+                    std::vector<Dual>& first, std::vector<Dual>& second) {
+  first.assign(size_t(t.n_vertices), Dual::Zero());
+  second.assign(size_t(t.n_vertices), Dual::Zero());
+#pragma omp parallel if (t.n_vertices >= kParallelFaces)
+  {
+    VertexMask a, b;
+#pragma omp for
+    for (int v = 0; v < t.n_vertices; ++v)
+      if (loop ? loop_tangent_masks(t, c, v, a, b) : catmull_clark_tangent_masks(t, c, v, a, b)) {
+        first[size_t(v)] = a.apply(p);
+        second[size_t(v)] = b.apply(p);
+      }
+  }
+}
+
+Vec3 limit_normal(const Dual& q, const Vec3& mean, const Dual& first, const Dual& second) {
+  if (first.isZero(0.0) || second.isZero(0.0)) return Vec3::Zero();
+  const Vec3 normal = mean_derivative(q, first, mean).cross(mean_derivative(q, second, mean));
+  const double length = normal.norm();
+  return length > 1e-300 && std::isfinite(length) ? Vec3(normal / length) : Vec3::Zero();
+}
+
+}  // namespace gps

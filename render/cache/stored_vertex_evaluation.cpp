@@ -1,0 +1,75 @@
+#include "render/cache/stored_vertex_evaluation.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+
+#include "render/gl/gl_context.h"
+#include "render/pipeline/gpu_layout.h"
+#include "shaders/embedded_shaders.h"
+
+namespace gps {
+
+StoredVertexEvaluation::StoredVertexEvaluation()
+    : quads_("stored_vertex_evaluation", {{GL_COMPUTE_SHADER,
+                                           {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
+                                            shaders::stored_vertex_evaluation_comp}}}),
+      triangles_("stored_vertex_evaluation_triangles",
+                 {{GL_COMPUTE_SHADER,
+                   {"#define GPS_TRIANGLE_PATCHES\n", shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::loop_eval,
+                    shaders::stored_vertex_evaluation_comp}}}),
+      groups_program_("evaluation_groups", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {
+  glCreateBuffers(1, &blocks_);
+  glCreateBuffers(1, &groups_);
+}
+
+StoredVertexEvaluation::~StoredVertexEvaluation() {
+  glDeleteBuffers(1, &blocks_);
+  glDeleteBuffers(1, &groups_);
+}
+
+void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches, int group_limit) {
+  GLint max_groups = 0;
+  glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups);
+  if (group_limit > 0) max_groups = std::min(max_groups, group_limit);
+  // The blocks in runs that fit a dispatch: a block's welded vertices are fewer than its bound, so
+  // many work groups at most.
+  for (size_t begin = 0; begin < blocks.size();) {
+    size_t end = begin;
+    long long groups = 0;
+    while (end < blocks.size()) {
+      const long long most = (blocks[end].bound + gpu::kWorkGroupSize - 1) / gpu::kWorkGroupSize;
+      if (end > begin && groups + most > max_groups) break;
+      groups += most;
+      ++end;
+    }
+    dispatch(shape, std::vector<Block>(blocks.begin() + long(begin), blocks.begin() + long(end)), dispatches);
+    begin = end;
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+  check_gl_errors("evaluating the stored vertices");
+}
+
+void StoredVertexEvaluation::dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches) {
+  std::vector<GLint> listed;
+  listed.reserve(3 * blocks.size());
+  for (const Block& b : blocks) listed.insert(listed.end(), {GLint(b.block), GLint(b.first), GLint(b.bound)});
+  glNamedBufferData(blocks_, GLsizeiptr(listed.size() * sizeof(GLint)), listed.data(), GL_STREAM_DRAW);
+  glNamedBufferData(groups_, GLsizeiptr((3 + blocks.size()) * sizeof(GLuint)), nullptr, GL_STREAM_COPY);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedDispatches, dispatches);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingEvaluationBlocks, blocks_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingEvaluationGroups, groups_);
+  groups_program_.use();
+  groups_program_.set("u_blocks", int(blocks.size()));
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  const ShaderProgram& program = shape == PatchShape::triangle ? triangles_ : quads_;
+  program.use();
+  program.set("u_blocks", int(blocks.size()));
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, groups_);
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the list and groups buffers' reuse
+}
+
+}  // namespace gps

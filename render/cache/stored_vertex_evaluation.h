@@ -1,0 +1,40 @@
+#pragma once
+// Evaluates the surface cache's welded vertices again after an edit (shaders/stored_vertex_evaluation_comp.glsl),
+// in a compute pass instead of a transform feedback capture of the tessellation: each welded vertex
+// keeps the patch and (u, v) its tessellation vertex was evaluated at, which an edit at the same
+// levels does not change, and is evaluated there once, where the tessellation stage evaluates a
+// point once per patch around it, on llvmpipe in one thread. The plan buffers are bound (render/pipeline/plan_buffers.h).
+#include <vector>
+
+#include "core/plans/patch_plans.h"
+#include "render/gl/shader_program.h"
+
+namespace gps {
+
+class StoredVertexEvaluation {
+public:
+  /// A block of the surface cache: its welded vertices lie from `first` on, fewer than `bound`.
+  struct Block {
+    int block;
+    long long first, bound;
+  };
+  /// Needs a current GL context.
+  StoredVertexEvaluation();
+  ~StoredVertexEvaluation();
+  StoredVertexEvaluation(const StoredVertexEvaluation&) = delete;
+  StoredVertexEvaluation& operator=(const StoredVertexEvaluation&) = delete;
+  /// Evaluates the welded vertices of `blocks` (of the buffers bound at kBindingWeldedVertices and
+  /// kBindingWeldedParameters), for patches of `shape`, in one indirect dispatch of the work groups
+  /// that `dispatches` holds per block (render/cache/stored_vertex_weld.h), or as many as the device's
+  /// work groups per dispatch (or a lower `group_limit` > 0) require; a storage barrier follows.
+  void run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches, int group_limit);
+
+private:
+  /// One indirect dispatch over `blocks`.
+  void dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches);
+
+  ShaderProgram quads_, triangles_, groups_program_;
+  unsigned blocks_ = 0, groups_ = 0;
+};
+
+}  // namespace gps

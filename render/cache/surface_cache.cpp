@@ -1,0 +1,306 @@
+#include "render/cache/surface_cache.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <iterator>
+
+#include "render/gl/device_memory.h"
+#include "render/gl/gl_context.h"
+
+namespace gps {
+
+SurfaceCache::SurfaceCache()
+    : weld_mode_(software_renderer() ? Weld::when_settled : Weld::at_capture),
+      limit_bytes_(std::clamp(device_memory_bytes() / kDeviceMemoryShare, kLeastLimitBytes, kMostLimitBytes)) {
+  glCreateBuffers(1, &buffer_);
+  glCreateBuffers(1, &scratch_);
+  glCreateBuffers(1, &spare_);
+  glCreateBuffers(1, &indices_);
+  glCreateBuffers(1, &welded_);
+  glCreateBuffers(1, &parameters_);
+  glCreateVertexArrays(1, &vao_);
+  glCreateVertexArrays(1, &welded_vao_);
+  glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kCapturedVertexBytes);
+  glVertexArrayVertexBuffer(welded_vao_, 0, welded_, 0, kWeldedVertexBytes);
+  glVertexArrayElementBuffer(welded_vao_, indices_);
+  for (const GLuint vao : {vao_, welded_vao_})
+    for (GLuint a = 0; a < (vao == vao_ ? 3u : 2u); ++a) {  // welded: no grid
+      glEnableVertexArrayAttrib(vao, a);
+      glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
+      glVertexArrayAttribBinding(vao, a, 0);
+    }
+  check_gl_errors("creating the surface cache");
+}
+
+SurfaceCache::~SurfaceCache() {
+  glDeleteBuffers(1, &buffer_);
+  glDeleteBuffers(1, &scratch_);
+  glDeleteBuffers(1, &spare_);
+  glDeleteBuffers(1, &indices_);
+  glDeleteBuffers(1, &welded_);
+  glDeleteBuffers(1, &parameters_);
+  glDeleteVertexArrays(1, &vao_);
+  glDeleteVertexArrays(1, &welded_vao_);
+  if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
+}
+
+void SurfaceCache::set_cage(const CovarianceMesh& mesh) {
+  cage_positions_.resize(mesh.n_vertices());
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+    const Vec3 m = mesh.mean(i);
+    cage_positions_[i] = glm::vec3(float(m.x()), float(m.y()), float(m.z()));
+  }
+  cage_edges_.clear();
+  cage_edges_.reserve(2 * mesh.mesh.n_edges());
+  for (const auto e : mesh.mesh.edges()) cage_edges_.insert(cage_edges_.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
+  stored_ = false;
+  tracked_points_ = -1;
+}
+
+void SurfaceCache::update_cage(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  for (const int v : changed) {
+    const Vec3 m = mesh.mean(size_t(v));
+    cage_positions_[size_t(v)] = glm::vec3(float(m.x()), float(m.y()), float(m.z()));
+  }
+}
+
+// Tracked from the capture on, one compute pass after the other (refresh() decides what is worth it).
+bool SurfaceCache::follows(long long points) const {
+  return stored_ && !refused_ && tracked_points_ >= 0 && points == tracked_points_ + 1;
+}
+
+void SurfaceCache::points_changed(long long points, const std::vector<int>* patches) {
+  if (!patches || !follows(points)) {
+    tracked_points_ = -1;
+    return;
+  }
+  blocks_.mark_stale(*patches);
+  tracked_points_ = points;
+}
+
+void SurfaceCache::all_points_changed(long long points) {
+  if (!follows(points)) {
+    tracked_points_ = -1;
+    return;
+  }
+  blocks_.mark_all_stale();
+  tracked_points_ = points;
+}
+
+bool SurfaceCache::current(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
+  if (!stored_ || !(key == key_)) return false;
+  return key.pixels <= 0.0f || camera_close(view_projection, viewport, key.pixels);
+}
+
+bool SurfaceCache::refreshable(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
+  if (!stored_ || refused_ || tracked_points_ < 0 || key.points != tracked_points_) return false;
+  Key same = key;
+  same.points = key_.points;
+  return same == key_ && (key.pixels <= 0.0f || camera_close(view_projection, viewport, key.pixels));
+}
+
+// The adaptive rule (see the header): every base edge's projected length, floored at `pixels`,
+// within the hysteresis factor of its length under the captured camera; no edge end crossing the
+// eye plane (the shaders give such edges level 64).
+bool SurfaceCache::camera_close(const glm::mat4& view_projection, glm::vec2 viewport, float pixels) const {
+  if (view_projection == view_projection_ && viewport == viewport_) return true;
+  struct Projected {
+    glm::vec2 xy;
+    bool behind;
+  };
+  const auto project = [](const glm::mat4& m, glm::vec2 size, const glm::vec3& p) {
+    const glm::vec4 c = m * glm::vec4(p, 1.0f);
+    return Projected{glm::vec2(c) / c.w * 0.5f * size, c.w <= 0.0f};
+  };
+  const float low = 1.0f / hysteresis_, high = hysteresis_;
+  for (size_t e = 0; e + 1 < cage_edges_.size(); e += 2) {
+    const glm::vec3& a = cage_positions_[cage_edges_[e]];
+    const glm::vec3& b = cage_positions_[cage_edges_[e + 1]];
+    const Projected a0 = project(view_projection_, viewport_, a), b0 = project(view_projection_, viewport_, b);
+    const Projected a1 = project(view_projection, viewport, a), b1 = project(view_projection, viewport, b);
+    const bool behind0 = a0.behind || b0.behind, behind1 = a1.behind || b1.behind;
+    if (behind0 != behind1) return false;
+    if (behind0) continue;
+    const float l0 = std::max(glm::length(a0.xy - b0.xy), pixels), l1 = std::max(glm::length(a1.xy - b1.xy), pixels);
+    const float ratio = l1 / l0;
+    if (!(ratio >= low && ratio <= high)) return false;
+  }
+  return true;
+}
+
+long long SurfaceCache::most_triangles() const { return std::max(1ll, limit_bytes_ / kTriangleBytes); }
+
+void SurfaceCache::set_weld(Weld weld) {
+  if (weld == weld_mode_) return;
+  weld_mode_ = weld;
+  stored_ = false;
+  tracked_points_ = -1;
+  if (weld == Weld::off) {  // its buffers go
+    weld_.reset();
+    glNamedBufferData(indices_, 0, nullptr, GL_DYNAMIC_COPY);
+    glNamedBufferData(welded_, 0, nullptr, GL_DYNAMIC_COPY);
+    glNamedBufferData(parameters_, 0, nullptr, GL_DYNAMIC_COPY);
+    index_capacity_ = 0;
+  }
+}
+
+void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long triangles) const {
+  triangles = std::clamp(triangles, 1ll, most_triangles());
+  // Grow to fit; shrink where the buffer is four times what is needed.
+  if (triangles <= capacity && 4 * triangles >= capacity) return;
+  capacity = triangles;
+  glNamedBufferData(buffer, GLsizeiptr(capacity * 3 * kCapturedVertexBytes), nullptr, GL_DYNAMIC_COPY);
+}
+
+// One feedback session; each block's triangles are counted by its own query (queries of primitives
+// written may begin and end while feedback is active), so the blocks lie one after the other.
+// With `known` counts (uniform levels: an edit keeps every patch's triangles) no query is read, and
+// the frame goes on without waiting for the capture.
+bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
+                                  const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize, bool known) {
+  if (!known && queries_.size() < blocks.size()) {
+    const size_t had = queries_.size();
+    queries_.resize(blocks.size());
+    glCreateQueries(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, GLsizei(blocks.size() - had), queries_.data() + had);
+  }
+  glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer, 0, GLsizeiptr(capacity * 3 * kCapturedVertexBytes));
+  if (!rasterize) glEnable(GL_RASTERIZER_DISCARD);
+  glBeginTransformFeedback(GL_TRIANGLES);
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    if (!known) glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queries_[i]);
+    draw_patches(blocks_.first_patch(blocks[i]), blocks_.patches_in(blocks[i]));
+    if (!known) glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+  }
+  glEndTransformFeedback();
+  glDisable(GL_RASTERIZER_DISCARD);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+  counts.resize(blocks.size());
+  long long total = 0;
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    if (known) {
+      counts[i] = blocks_.triangles(blocks[i]);
+    } else {
+      GLuint64 written = 0;
+      glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &written);
+      counts[i] = (long long)written;
+    }
+    total += counts[i];
+  }
+  check_gl_errors("capturing the surface");
+  return known ? total <= capacity : total < capacity;  // a full buffer may have dropped triangles
+}
+
+bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches,
+                           long long estimate, const DrawPatches& draw_patches, bool rasterize) {
+  ++captures_;
+  key_ = key;
+  view_projection_ = view_projection;
+  viewport_ = viewport;
+  stored_ = true;
+  refused_ = false;
+  tracked_points_ = key.points;
+  blocks_.reset(n_patches, patches_per_block(n_patches));
+  copy_pending_.clear();  // all captured anew
+  if (spare_capacity_ > 0) {  // edits start over from here
+    glNamedBufferData(spare_, 0, nullptr, GL_DYNAMIC_COPY);
+    spare_capacity_ = 0;
+  }
+  std::vector<int> all(size_t(blocks_.size()));
+  for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);
+  reserve(buffer_, capacity_, estimate);
+  std::vector<long long> counts;
+  while (!capture_blocks(buffer_, capacity_, all, draw_patches, counts, rasterize)) {
+    if (capacity_ >= most_triangles()) {
+      refused_ = true;
+      tracked_points_ = -1;
+      blocks_.reset(0, 1);
+      return false;
+    }
+    reserve(buffer_, capacity_, std::min(2 * capacity_, most_triangles()));
+  }
+  blocks_.set_counts(counts);
+  weld();
+  return true;
+}
+
+void SurfaceCache::weld(const std::vector<int>& blocks) {
+  switch (weld_mode_) {
+    case Weld::off:
+      return;
+    case Weld::at_capture:
+      weld_now(blocks);
+      return;
+    case Weld::when_settled:
+      if (blocks.empty()) {
+        weld_all_pending_ = true;
+        weld_pending_.clear();
+      } else if (!weld_all_pending_) {
+        std::vector<int> both;
+        std::set_union(weld_pending_.begin(), weld_pending_.end(), blocks.begin(), blocks.end(), std::back_inserter(both));
+        weld_pending_ = std::move(both);
+      }
+      return;
+  }
+}
+
+void SurfaceCache::settle() {
+  copy_back_evaluated();
+  weld_pending();
+}
+
+void SurfaceCache::weld_pending() {
+  if (weld_mode_ == Weld::when_settled && holds_triangles() && (weld_all_pending_ || !weld_pending_.empty()))
+    weld_now(weld_all_pending_ ? std::vector<int>{} : weld_pending_);
+}
+
+void SurfaceCache::copy_back_evaluated() {
+  if (copy_pending_.empty()) return;
+  std::vector<StoredVertexWeld::Range> ranges;
+  for (const int b : copy_pending_) ranges.push_back({3 * blocks_.first_triangle(b), 3 * blocks_.triangles(b)});
+  weld_->copy_back(buffer_, indices_, welded_, ranges);
+  copy_pending_.clear();
+}
+
+void SurfaceCache::weld_now(const std::vector<int>& blocks) {
+  const long long total = blocks_.total();
+  if (total > limit_bytes_ / kWeldedTriangleBytes) {  // drawn as captured
+    weld_all_pending_ = true;
+    return;
+  }
+  if (!weld_) weld_ = std::make_unique<StoredVertexWeld>();
+  bool all = blocks.empty();
+  if (total > index_capacity_ || 4 * total < index_capacity_) {  // new buffers: every block welded again
+    index_capacity_ = std::max(total, 1ll);
+    glNamedBufferData(indices_, GLsizeiptr(index_capacity_ * 3 * 4), nullptr, GL_DYNAMIC_COPY);
+    glNamedBufferData(welded_, GLsizeiptr(index_capacity_ * 3 * kWeldedVertexBytes), nullptr, GL_DYNAMIC_COPY);
+    glNamedBufferData(parameters_, GLsizeiptr(index_capacity_ * 3 * kParameterBytes), nullptr, GL_DYNAMIC_COPY);
+    all = true;
+  }
+  if (all) {
+    std::vector<long long> starts(size_t(blocks_.size()));
+    for (int b = 0; b < blocks_.size(); ++b) starts[size_t(b)] = 3 * blocks_.first_triangle(b);
+    weld_->weld(buffer_, indices_, welded_, parameters_, 3 * total, starts);
+  } else {  // captured again in the tessellation they had: their vertices keep their indices
+    std::vector<StoredVertexWeld::Range> ranges;
+    for (const int b : blocks) ranges.push_back({3 * blocks_.first_triangle(b), 3 * blocks_.triangles(b)});
+    weld_->weld_again(buffer_, indices_, welded_, parameters_, ranges);
+  }
+  weld_all_pending_ = false;
+  weld_pending_.clear();
+}
+
+void SurfaceCache::draw(bool grid) const {
+  const bool welded = draws_welded() && !grid;  // welded copies of a point had their own grids
+  const GLuint vao = welded ? welded_vao_ : vao_;
+  // Attribute 2 fetched only for a program that reads it.
+  if (!welded) {
+    if (grid) glEnableVertexArrayAttrib(vao, 2);
+    else glDisableVertexArrayAttrib(vao, 2);
+  }
+  glBindVertexArray(vao);
+  if (welded) glDrawElements(GL_TRIANGLES, GLsizei(3 * blocks_.total()), GL_UNSIGNED_INT, nullptr);
+  else glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * blocks_.total()));
+}
+
+}  // namespace gps

@@ -1,0 +1,239 @@
+#pragma once
+// The surface cache (issue 12): the triangles the tessellation pipeline produced, captured on the
+// GPU by transform feedback and redrawn from that buffer while their inputs are unchanged.
+//
+// What the stored triangles depend on (SurfaceCache::Key): the plan points (a generation counter
+// the renderer bumps with every compute pass: set_mesh, update_vertices, recompute_all) and the
+// tessellation levels (uniform level, or adaptive target pixels; the debug mismatch). Adaptive
+// levels also depend on the camera; the cache keeps the camera of its capture and re-captures only
+// when some base mesh edge's projected length, counted as at least `pixels` (shorter edges get
+// level 1 either way), changed by more than the hysteresis factor (default 1.25) since then, or
+// crossed the eye plane. Within that, the stored levels stay within the factor of what the live
+// pipeline would choose.
+//
+// The stored vertices are welded (render/cache/stored_vertex_weld.h) and drawn by index, as a welded
+// static buffer is. On a GPU right after each capture or refresh (Weld::at_capture). On llvmpipe
+// (Weld::when_settled) by the first frame that finds the stored triangles current: there the weld
+// costs an edit's frame more than it saves it (a cube's edit at level 64: 27.6 -> 37.3 ms), so the
+// frames of a drag draw the triangles as captured and the frames after it welded.
+//
+// Edits: triangles are captured in blocks of consecutive patches (render/cache/surface_blocks.h), each
+// counted by its own query. An edit reports the patches it changed (points_changed); the next frame
+// brings only their blocks up to date (refresh). Where a block's tessellation stays (uniform levels;
+// adaptive ones where the level check finds every patch's levels unchanged under the capture's
+// camera, render/cache/stored_patch_levels.h) and the vertices are welded, a compute pass evaluates its
+// welded vertices again at the parameters they were captured at (render/cache/stored_vertex_evaluation.h):
+// each point once, on all of llvmpipe's threads; at uniform levels only from evaluated_from_level().
+// The captured copies of those vertices, which only a grid frame, a capture of some blocks again and
+// the read-back use, are brought up to date later, by the next of those or of a still frame
+// (settle()): so the frames of a drag do not copy them (llvmpipe, an edit's frame at level 64:
+// wirecube 161 -> 138 ms, cylinder 63 -> 55 ms).
+// The other stale blocks are captured again, under the camera of the capture, into a scratch buffer,
+// and copied into place (or, where adaptive levels changed a block's count, the clean and the new
+// blocks are assembled in a spare buffer, which then becomes the stored one); where over half of the
+// patches would be captured so, the whole surface is captured again.
+#include <glm/glm.hpp>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "core/mesh/covariance_mesh.h"
+#include "core/evaluation/triangle_mesh.h"
+#include "render/cache/stored_patch_levels.h"
+#include "render/cache/stored_vertex_evaluation.h"
+#include "render/cache/stored_vertex_weld.h"
+#include "render/cache/surface_blocks.h"
+
+namespace gps {
+
+class SurfaceCache {
+public:
+  struct Key {
+    long long points = -1;  // generation of the plan points
+    float level = 0.0f, pixels = 0.0f;
+    bool debug_mismatch = false;
+    bool operator==(const Key& o) const {
+      return points == o.points && level == o.level && pixels == o.pixels && debug_mismatch == o.debug_mismatch;
+    }
+  };
+  /// One captured vertex: the tessellation evaluation outputs the fragment shader reads (position,
+  /// normal · 2^(node kind), grid: vec3 each), then the patch and (u, v) it was evaluated at (the
+  /// canonical patch on patch edges; shaders/limit_point_tese.glsl), for evaluating it again.
+  static constexpr int kCapturedVertexBytes = 12 * 4;
+  /// One welded vertex: position and normal · 2^(node kind); no grid (the copies of a point on a
+  /// patch edge each had their patch's: a frame that draws the grid draws them as captured).
+  static constexpr int kWeldedVertexBytes = 6 * 4;
+  /// What a welded vertex keeps of those parameters.
+  static constexpr int kParameterBytes = 3 * 4;
+  /// The memory limit: a sixteenth of the device's memory (render/gl/device_memory.h; a GPU's, or the
+  /// machine's for llvmpipe), at least kLeastLimitBytes and at most kMostLimitBytes, which keeps
+  /// every buffer under 2 GiB: transform feedback into a larger one ended early on NVIDIA's driver
+  /// (580, H100: of a 5.3 GB buffer it filled 1.05 GB, the wrap past 4 GiB, and counted only those).
+  static constexpr long long kLeastLimitBytes = 512ll << 20;
+  static constexpr long long kMostLimitBytes = (2ll << 30) - 1;
+  static constexpr int kDeviceMemoryShare = 16;
+  /// Where the weld waits for a still frame (llvmpipe), an edit evaluates the welded vertices again
+  /// instead of capturing its blocks again only from this uniform level on: below, its three compute
+  /// passes cost more than the capture (llvmpipe, edit over the floor, capture / evaluation: cylinder
+  /// level 1 1.25 / 1.54, level 4 1.38 / 1.54, level 16 1.89 / 1.64, level 64 2.84 / 1.96).
+  static constexpr float kSettledEvaluatedFromLevel = 8.0f;
+  /// From a uniform level of 8 on, a block's welded vertices are fewer than a third of its capture
+  /// slots (a quad patch at level L has (L + 1)² of 6 L², a half-size one at ⌈L/2⌉ and a triangle at L
+  /// alike), the bound that sizes the evaluation's dispatches; below, all of its slots.
+  static constexpr float kThirdOfSlotsFromLevel = 8.0f;
+  /// When the stored vertices are welded: never, after each capture and refresh, or by the first
+  /// frame that draws them unchanged (settle()).
+  enum class Weld { off, at_capture, when_settled };
+
+  /// Needs a current GL context.
+  SurfaceCache();
+  ~SurfaceCache();
+  SurfaceCache(const SurfaceCache&) = delete;
+  SurfaceCache& operator=(const SurfaceCache&) = delete;
+
+  /// The base mesh (vertex positions and edges) the adaptive hysteresis measures; drops the capture.
+  void set_cage(const CovarianceMesh& mesh);
+  /// Moved base vertices (for the hysteresis; points_changed says what the edit changed).
+  void update_cage(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  /// A compute pass made plan points of generation `points`, changing the triangles of `patches`
+  /// (nullptr: of all patches, not followed as an edit: captured again).
+  void points_changed(long long points, const std::vector<int>* patches);
+  /// An edit's compute pass over everything (most of the mesh moved) made plan points of
+  /// generation `points`: every block is stale, followed as an edit's.
+  void all_points_changed(long long points);
+
+  /// Whether the last capture (or its refusal, past the memory limit) stands for these inputs.
+  bool current(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
+  /// Issues the patch draws of patches [first, first + count) (the caller has bound a program with
+  /// the feedback varyings).
+  using DrawPatches = std::function<void(int first, int count)>;
+  /// Captures the triangles of all `n_patches` that `draw_patches` generates, block by block,
+  /// under transform feedback, with the rasteriser off or (`rasterize`: a frame drawn as it is
+  /// captured) on. `estimate` triangles size the buffer; a full buffer grows and captures again, up
+  /// to the memory limit, past which the inputs are refused (drawn live). False when refused.
+  bool capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches, long long estimate,
+               const DrawPatches& draw_patches, bool rasterize = false);
+  /// Whether edits are followed (points_changed's patches kept for a refresh): a capture stands
+  /// and every compute pass since reported its patches.
+  bool follows_edits() const { return tracked_points_ >= 0; }
+  /// Whether refresh() brings the stored triangles to `key`: only the points differ, and every
+  /// compute pass since the capture reported its patches; the camera is close (adaptive levels).
+  bool refreshable(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
+  /// Evaluates the welded vertices of blocks again (render/cache/stored_vertex_evaluation.h) in the work
+  /// groups that `dispatches` holds per block, with the welded vertex and parameter buffers bound.
+  using EvaluateWelded = std::function<void(const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches)>;
+  /// At adaptive levels: per block (its patches listed), whether an edit changed any patch's levels
+  /// under the capture's camera (render/cache/stored_patch_levels.h, recorded at each adaptive capture).
+  using LevelsChanged = std::function<std::vector<char>(const std::vector<StoredPatchLevels::Block>& blocks)>;
+  /// The uniform level from which an edit evaluates welded vertices again: kSettledEvaluatedFromLevel
+  /// where the weld waits for a still frame; every level where it welds at capture (a GPU: there
+  /// transform feedback costs more than the compute passes; H100, a one-vertex edit's frame over the
+  /// floor at levels 1 and 4, captured again 1.52-3.19, evaluated again 1.31-1.54).
+  float evaluated_from_level() const { return weld_mode_ == Weld::when_settled ? kSettledEvaluatedFromLevel : 0.0f; }
+  /// Brings the stale blocks to `key`. Blocks whose tessellation stays (uniform levels from
+  /// evaluated_from_level(); adaptive ones that `levels_changed` leaves alone) with the vertices welded:
+  /// by evaluating the welded vertices again (`evaluate_welded`, where given). The others by
+  /// capturing them again, for which the caller has set the capture camera below in the program's
+  /// uniforms. False where capturing them again is not worth it (over half of the patches) or did
+  /// not fit the memory limit (capture everything then).
+  bool refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded = {},
+               const LevelsChanged& levels_changed = {});
+  /// The camera of the capture: a refresh evaluates adaptive levels as the capture did.
+  const glm::mat4& captured_view_projection() const { return view_projection_; }
+  glm::vec2 captured_viewport() const { return viewport_; }
+  /// Whether stored triangles are there to draw (a capture that was not refused).
+  bool holds_triangles() const { return stored_ && !refused_; }
+  /// A frame found the stored triangles current: brings the captured copies of evaluated vertices up
+  /// to date and welds what Weld::when_settled left unwelded.
+  void settle();
+  /// Brings the captured copies of the vertices that edits evaluated again up to date (a compute
+  /// pass: call before binding the frame's program), as a frame that draws the grid needs.
+  void copy_back_evaluated();
+  /// Binds the vertex array of the stored triangles and draws them with the bound program, which
+  /// reads the tessellation grid (attribute 2) where `grid`: welded where they are, but with the grid
+  /// (the welded copies of a point on a patch edge had each their patch's grid; copy_back_evaluated() first).
+  void draw(bool grid) const;
+  /// Whether draw() draws welded vertices by index (but for the grid).
+  bool draws_welded() const { return weld_mode_ != Weld::off && !weld_all_pending_ && weld_pending_.empty(); }
+  /// The stored triangles read back, vertices with bit-identical position and normal welded (shared
+  /// patch edges are bit-exact): the benchmark's static-buffer floor for exactly these triangles.
+  /// Their captured copies, brought up to date first (copy_back_evaluated()).
+  TriangleMesh stored_triangles();
+  /// The distinct vertices a cached frame fetches (read back): where welded, the distinct indices;
+  /// else three per triangle.
+  long long distinct_vertices() const;
+
+  /// When stored vertices are welded (default: at_capture, or when_settled where the renderer is
+  /// software); a change drops the stored triangles.
+  void set_weld(Weld weld);
+  Weld weld_mode() const { return weld_mode_; }
+  /// What a stored triangle takes of the memory limit: its captured vertices. Welded, also their
+  /// indices, the welded vertices and, while they are welded, the weld's table and prefix sum:
+  /// triangles past the limit welded are drawn as captured.
+  static constexpr int kTriangleBytes = 3 * kCapturedVertexBytes;
+  static constexpr int kWeldedTriangleBytes =
+      3 * (kCapturedVertexBytes + kWeldedVertexBytes + kParameterBytes + 4 + StoredVertexWeld::kTableBytesPerVertex);
+
+  void set_hysteresis(float factor) { hysteresis_ = factor; }
+  void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
+  long long limit_bytes() const { return limit_bytes_; }
+  /// Full captures so far (tests: a frame that should draw stored triangles must not add one).
+  int captures() const { return captures_; }
+  /// Refreshes so far, and the patches the last one brought up to date (those of its stale blocks).
+  int refreshes() const { return refreshes_; }
+  int refreshed_patches() const { return refreshed_patches_; }
+  /// Of those, the patches whose welded vertices it evaluated again (the rest it captured again).
+  int evaluated_patches() const { return evaluated_patches_; }
+  long long triangles() const { return blocks_.total(); }
+  size_t buffer_bytes() const {
+    return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kCapturedVertexBytes +
+           size_t(index_capacity_) * 3 * (kWeldedVertexBytes + kParameterBytes + 4) + (weld_ ? weld_->bytes() : 0);
+  }
+
+private:
+  bool camera_close(const glm::mat4& view_projection, glm::vec2 viewport, float pixels) const;
+  /// Whether plan points of generation `points` follow the stored triangles' by one edit.
+  bool follows(long long points) const;
+  long long most_triangles() const;
+  void reserve(unsigned buffer, long long& capacity, long long triangles) const;
+  /// Captures `blocks` one after the other into `buffer` from its start; their counts (counted, or
+  /// where `known`, those stored); false where the buffer was full (and some triangles may be missing).
+  bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks, const DrawPatches& draw_patches,
+                      std::vector<long long>& counts, bool rasterize = false, bool known = false);
+  void evaluate_again(const std::vector<int>& blocks, bool third, const EvaluateWelded& evaluate_welded);
+  /// Welds now what Weld::when_settled left unwelded.
+  void weld_pending();
+  bool capture_again(const std::vector<int>& blocks, const DrawPatches& draw_patches, bool kept);
+  /// Counts a refresh: the stale blocks are fresh, the stored triangles those of `key`.
+  bool refreshed(const Key& key);
+  /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
+  bool assemble(const std::vector<int>& blocks, const std::vector<long long>& counts);
+  /// The stored vertices of `blocks` changed, captured again in the tessellation they had (each keeps
+  /// its welded vertex), or where empty all of them: welds them now or, when settled, later.
+  void weld(const std::vector<int>& blocks = {});
+  /// Welds them into the index and welded vertex buffers.
+  void weld_now(const std::vector<int>& blocks);
+
+  unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, indices_ = 0, welded_ = 0, parameters_ = 0, vao_ = 0, welded_vao_ = 0;
+  long long index_capacity_ = 0;  // triangles the index, welded vertex and parameter buffers hold
+  std::unique_ptr<StoredVertexWeld> weld_;  // made at the first weld
+  Weld weld_mode_;
+  bool weld_all_pending_ = true;   // when settled: every block to weld
+  std::vector<int> weld_pending_;  // else these, in order
+  std::vector<int> copy_pending_;  // blocks whose evaluated welded vertices are not yet copied to their captured ones, in order
+  std::vector<unsigned> queries_;  // one per block of a capture
+  long long capacity_ = 0, scratch_capacity_ = 0, spare_capacity_ = 0;  // triangles the buffers hold
+  SurfaceBlocks blocks_;
+  long long tracked_points_ = -1;  // the points the stale blocks lead to (−1: untracked)
+  bool stored_ = false, refused_ = false;
+  Key key_;
+  glm::mat4 view_projection_{1.0f};
+  glm::vec2 viewport_{0.0f};
+  std::vector<glm::vec3> cage_positions_;
+  std::vector<unsigned> cage_edges_;  // index pairs
+  float hysteresis_ = 1.25f;
+  long long limit_bytes_;
+  int captures_ = 0, refreshes_ = 0, refreshed_patches_ = 0, evaluated_patches_ = 0;
+};
+
+}  // namespace gps

@@ -1,0 +1,28 @@
+#pragma once
+// Triangles from a vertex buffer (CPU tessellation, reference subdivision) with the surface's
+// shading: the static-buffer floor the benchmark measures the patch pipeline against.
+#include "core/evaluation/triangle_mesh.h"
+#include "render/gl/shader_program.h"
+
+namespace gps {
+
+class StaticTriangles {
+public:
+  /// Needs a current GL 4.5 context.
+  StaticTriangles();
+  ~StaticTriangles();
+  StaticTriangles(const StaticTriangles&) = delete;
+  StaticTriangles& operator=(const StaticTriangles&) = delete;
+
+  void set(const TriangleMesh& triangles);
+  /// The program to draw with (set its frame uniforms, then draw()).
+  const ShaderProgram& program(bool wireframe) const { return wireframe ? wire_ : shaded_; }
+  void draw() const;
+
+private:
+  ShaderProgram shaded_, wire_;
+  unsigned vao_ = 0, vbo_ = 0, ibo_ = 0;
+  int count_ = 0;
+};
+
+}  // namespace gps

@@ -1,0 +1,52 @@
+#include "render/gl/render_target.h"
+
+#include <glad/gl.h>
+
+#include "core/mesh/error.h"
+#include "render/gl/gl_context.h"
+
+namespace gps {
+
+RenderTarget::RenderTarget(int width, int height) : width_(width), height_(height) {
+  if (width < 1 || height < 1 || width > 16384 || height > 16384)
+    throw usage_error("image size must be 1..16384 pixels each way, got " + std::to_string(width) + "x" + std::to_string(height));
+  glCreateFramebuffers(1, &fbo_);
+  glCreateTextures(GL_TEXTURE_2D, 3, textures_);
+  const GLenum formats[3] = {GL_RGBA8, GL_RGBA32F, GL_RGBA32F};
+  for (int i = 0; i < 3; ++i) {
+    glTextureStorage2D(textures_[i], 1, formats[i], width, height);
+    glNamedFramebufferTexture(fbo_, GLenum(GL_COLOR_ATTACHMENT0 + i), textures_[i], 0);
+  }
+  glCreateRenderbuffers(1, &depth_);
+  glNamedRenderbufferStorage(depth_, GL_DEPTH_COMPONENT32F, width, height);
+  glNamedFramebufferRenderbuffer(fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  const GLenum draw[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(fbo_, 3, draw);
+  if (glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw Error("the off-screen framebuffer is incomplete");
+  check_gl_errors("creating the render target");
+}
+
+RenderTarget::~RenderTarget() {
+  glDeleteFramebuffers(1, &fbo_);
+  glDeleteTextures(3, textures_);
+  glDeleteRenderbuffers(1, &depth_);
+}
+
+void RenderTarget::bind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(0, 0, width_, height_);
+}
+
+Image RenderTarget::read(int attachment) const {
+  Image image{width_, height_, 4, std::vector<float>(size_t(width_) * size_t(height_) * 4)};
+  glNamedFramebufferReadBuffer(fbo_, GLenum(GL_COLOR_ATTACHMENT0 + attachment));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, image.pixels.data());
+  check_gl_errors("reading the render target");
+  flip_rows(image);
+  return image;
+}
+
+}  // namespace gps

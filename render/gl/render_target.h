@@ -1,0 +1,28 @@
+#pragma once
+// An off-screen framebuffer: colour (RGBA8) plus world position and normal AOVs (RGBA32F) and depth.
+#include "render/image/image.h"
+
+namespace gps {
+
+class RenderTarget {
+public:
+  RenderTarget(int width, int height);
+  ~RenderTarget();
+  RenderTarget(const RenderTarget&) = delete;
+  RenderTarget& operator=(const RenderTarget&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  unsigned framebuffer() const { return fbo_; }
+  /// Binds it for drawing, with all three outputs, and sets the viewport.
+  void bind() const;
+  /// Attachment 0 as RGBA in [0,1]; 1 (position) and 2 (normal) as xyz + coverage (w ≥ 1 where drawn;
+  /// the normal's w is 2 where a regular plan node was evaluated, 3 where a terminal one).
+  Image read(int attachment) const;
+
+private:
+  int width_, height_;
+  unsigned fbo_ = 0, textures_[3] = {0, 0, 0}, depth_ = 0;
+};
+
+}  // namespace gps

@@ -1,0 +1,75 @@
+#include "render/overlays/cage_lines.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+
+#include "render/pipeline/draw_options.h"
+#include "render/gl/gl_context.h"
+#include "shaders/embedded_shaders.h"
+
+namespace gps {
+
+CageLines::CageLines() : program_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
+  glCreateVertexArrays(1, &vao_);
+  glCreateBuffers(1, &vbo_);
+  glCreateBuffers(1, &ibo_);
+  glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, 3 * sizeof(float));
+  glVertexArrayElementBuffer(vao_, ibo_);
+  glEnableVertexArrayAttrib(vao_, 0);
+  glVertexArrayAttribFormat(vao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vao_, 0, 0);
+}
+
+CageLines::~CageLines() {
+  glDeleteVertexArrays(1, &vao_);
+  glDeleteBuffers(1, &vbo_);
+  glDeleteBuffers(1, &ibo_);
+}
+
+void CageLines::set_mesh(const CovarianceMesh& mesh) {
+  std::vector<unsigned> edges;
+  edges.reserve(2 * mesh.mesh.n_edges());
+  for (const auto e : mesh.mesh.edges()) edges.insert(edges.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
+  index_count_ = int(edges.size());
+  upload_positions(mesh);
+  glNamedBufferData(ibo_, GLsizeiptr(std::max<size_t>(2, edges.size()) * sizeof(unsigned)), edges.data(), GL_STATIC_DRAW);
+}
+
+void CageLines::upload_positions(const CovarianceMesh& mesh) {
+  std::vector<float> positions(3 * mesh.n_vertices());
+  for (size_t i = 0; i < mesh.n_vertices(); ++i)
+    for (int k = 0; k < 3; ++k) positions[3 * i + size_t(k)] = float(mesh.mean(i)[k]);
+  glNamedBufferData(vbo_, GLsizeiptr(std::max<size_t>(3, positions.size()) * sizeof(float)), positions.data(), GL_DYNAMIC_DRAW);
+}
+
+void CageLines::update_positions(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  for (const int v : changed) {
+    const Vec3 m = mesh.mean(size_t(v));
+    const float position[3] = {float(m.x()), float(m.y()), float(m.z())};
+    glNamedBufferSubData(vbo_, GLintptr(3 * sizeof(float) * size_t(v)), sizeof position, position);
+  }
+}
+
+void CageLines::draw(const RenderTarget& target, const glm::mat4& view_projection) const {
+  program_.set("u_view_projection", view_projection);
+  program_.use();
+  const GLenum only_colour[3] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE};
+  glNamedFramebufferDrawBuffers(target.framebuffer(), 3, only_colour);
+  glBindVertexArray(vao_);
+  glDepthMask(GL_FALSE);  // the cage with depth: its parts behind the surface faint, the others full
+  glEnablei(GL_BLEND, 0);
+  glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // the image's alpha kept
+  for (const bool hidden : {true, false}) {
+    glDepthFunc(hidden ? GL_GREATER : GL_LEQUAL);
+    program_.set("u_color", glm::vec4(0.45f, 0.45f, 0.45f, hidden ? kHiddenCageAlpha : 1.0f));
+    glDrawElements(GL_LINES, index_count_, GL_UNSIGNED_INT, nullptr);
+  }
+  glDisablei(GL_BLEND, 0);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LEQUAL);
+  const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(target.framebuffer(), 3, all);
+}
+
+}  // namespace gps

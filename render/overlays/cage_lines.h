@@ -1,0 +1,37 @@
+#pragma once
+// The base mesh drawn as thin grey lines over the surface: full strength where in front of it,
+// faint (kHiddenCageAlpha) where behind.
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "core/mesh/covariance_mesh.h"
+#include "render/gl/render_target.h"
+#include "render/gl/shader_program.h"
+
+namespace gps {
+
+class CageLines {
+public:
+  /// Needs a current GL 4.5 context.
+  CageLines();
+  ~CageLines();
+  CageLines(const CageLines&) = delete;
+  CageLines& operator=(const CageLines&) = delete;
+
+  /// The mesh's edges and vertex positions.
+  void set_mesh(const CovarianceMesh& mesh);
+  /// Every vertex position.
+  void upload_positions(const CovarianceMesh& mesh);
+  /// The `changed` vertices' positions.
+  void update_positions(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  bool empty() const { return index_count_ == 0; }
+  /// Over the surface already drawn into `target` (its depth), into the colour attachment only.
+  void draw(const RenderTarget& target, const glm::mat4& view_projection) const;
+
+private:
+  ShaderProgram program_;
+  unsigned vao_ = 0, vbo_ = 0, ibo_ = 0;  // base vertex positions, edges as index pairs
+  int index_count_ = 0;
+};
+
+}  // namespace gps

@@ -1,0 +1,51 @@
+#include "render/pipeline/corner_limit_pass.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+
+#include "render/gl/compute_limits.h"
+#include "render/gl/gl_context.h"
+#include "shaders/embedded_shaders.h"
+
+namespace gps {
+
+namespace {
+constexpr const char* kTrianglePatches = "#define GPS_TRIANGLE_PATCHES\n";
+}
+
+CornerLimitPass::CornerLimitPass()
+    : quads_("corner_limits", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::corner_limit_comp}}}),
+      triangles_("corner_limits_triangles", {{GL_COMPUTE_SHADER,
+                                              {kTrianglePatches, shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
+                                               shaders::loop_eval, shaders::corner_limit_comp}}}) {}
+
+void CornerLimitPass::run_all(const PatchPlans& plans, int group_limit) const {
+  run(plans, plans.corners() * plans.n_patches(), false, group_limit);
+}
+
+void CornerLimitPass::run_listed(const PatchPlans& plans, int n_listed, int group_limit) const {
+  run(plans, n_listed, true, group_limit);
+}
+
+std::vector<int> CornerLimitPass::owner_slots(const PatchPlans& plans, const std::vector<int>& patches) {
+  const int n = plans.corners();
+  std::vector<int> slots;
+  slots.reserve(patches.size() * size_t(n));
+  for (const int p : patches)
+    for (int c = 0; c < n; ++c) {
+      const size_t o = size_t(2 * (n * p + c));
+      slots.push_back(n * plans.corner_owners[o] + plans.corner_owners[o + 1]);
+    }
+  std::sort(slots.begin(), slots.end());
+  slots.erase(std::unique(slots.begin(), slots.end()), slots.end());
+  return slots;
+}
+
+void CornerLimitPass::run(const PatchPlans& plans, int count, bool use_list, int group_limit) const {
+  if (count <= 0) return;
+  run_compute_pass(plans.shape == PatchShape::triangle ? triangles_ : quads_, count, use_list, group_limit);
+  check_gl_errors("the corner pass");
+}
+
+}  // namespace gps

@@ -1,0 +1,31 @@
+#pragma once
+// The corner pass (shaders/corner_limit_comp.glsl): after the stencils, the limit point, normal and
+// node kind at every patch corner its owner evaluates, which the tessellation stages then read
+// instead of evaluating a corner themselves; over every corner, or over an edit's list
+// (PlanBuffers::upload_corner_list). Dispatches split to the device's work-group count limit.
+#include <vector>
+
+#include "core/plans/patch_plans.h"
+#include "render/gl/shader_program.h"
+
+namespace gps {
+
+class CornerLimitPass {
+public:
+  /// Needs a current GL 4.5 context.
+  CornerLimitPass();
+
+  /// Every corner slot of the plans' patches (buffers bound).
+  void run_all(const PatchPlans& plans, int group_limit) const;
+  /// The `n_listed` slots of the corner list (buffers bound).
+  void run_listed(const PatchPlans& plans, int n_listed, int group_limit) const;
+  /// The owner slots of the corners of `patches` (the slots whose values an edit of them can change).
+  static std::vector<int> owner_slots(const PatchPlans& plans, const std::vector<int>& patches);
+
+private:
+  void run(const PatchPlans& plans, int count, bool use_list, int group_limit) const;
+
+  ShaderProgram quads_, triangles_;
+};
+
+}  // namespace gps

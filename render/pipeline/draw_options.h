@@ -1,0 +1,41 @@
+#pragma once
+// What a frame of the surface renderer draws, and the uniforms every surface program reads from it.
+#include <glm/glm.hpp>
+#include <algorithm>
+#include <vector>
+
+#include "view/camera.h"
+#include "render/gl/shader_program.h"
+
+namespace gps {
+
+enum class ShadingMode { matcap = 0, normals = 1, flat = 2 };
+
+/// The opacity of the base mesh's lines where the surface hides them (those in front are opaque).
+constexpr float kHiddenCageAlpha = 0.25f;
+
+struct DrawOptions {
+  float level = 8.0f;      // uniform tessellation level 1..64
+  float pixels = 0.0f;     // > 0: adaptive levels, target edge length in pixels
+  ShadingMode mode = ShadingMode::matcap;
+  bool wireframe = false;  // tessellation wireframe over the shading
+  bool mesh_lines = false; // the base mesh as thin grey lines, faint (kHiddenCageAlpha) where behind the surface
+  bool ellipsoids = false; // covariance ellipsoids
+  const std::vector<int>* ellipsoid_vertices = nullptr;  // set: only these vertices' ellipsoids (ascending)
+  float sigma_scale = 1.0f;
+  glm::vec3 background{1.0f, 1.0f, 1.0f};
+  bool static_triangles = false;  // draw the triangles of set_triangles() instead of the patches
+  bool surface_cache = true;      // redraw stored triangles while points and levels stay (render/cache/surface_cache.h)
+  bool flag_back_faces = false;   // crack checks: draw back faces in pure magenta
+  bool debug_mismatch = false;    // tests only: give neighbouring patches different edge levels
+};
+
+/// The uniform level of `o`, clamped to 1..64.
+inline float uniform_level(const DrawOptions& o) { return std::clamp(o.level, 1.0f, 64.0f); }
+
+/// The tessellation levels' uniforms (shaders/tess_levels.glsl).
+void set_level_uniforms(const ShaderProgram& p, const glm::mat4& view_projection, glm::vec2 viewport, const DrawOptions& o);
+/// Camera, viewport, levels and shading of a frame, for the patch, cached and static-triangle programs.
+void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& o, float aspect, int width, int height);
+
+}  // namespace gps

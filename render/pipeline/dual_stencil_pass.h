@@ -1,0 +1,29 @@
+#pragma once
+// The compute passes of an edit (DESIGN.md §2): base vertices' Gaussians to 9D points
+// (shaders/dual_map_comp.glsl), then the stencil rows (shaders/stencil_comp.glsl), over everything
+// or over the lists PlanBuffers::upload_edit left; dispatches split to the device's work-group
+// count limit (render/gl/compute_limits.h).
+#include "render/pipeline/plan_buffers.h"
+#include "render/gl/shader_program.h"
+
+namespace gps {
+
+class DualStencilPass {
+public:
+  /// Needs a current GL 4.5 context.
+  DualStencilPass();
+
+  /// Every one of the `n_base` vertices and `n_rows` stencil rows (buffers bound).
+  void run_all(int n_base, int n_rows, int group_limit) const { run(n_base, n_base, n_rows, false, group_limit); }
+  /// The `n_changed` listed vertices and `n_listed_rows` listed rows (PlanBuffers::upload_edit, buffers bound).
+  void run_listed(int n_base, int n_changed, int n_listed_rows, int group_limit) const {
+    run(n_base, n_changed, n_listed_rows, true, group_limit);
+  }
+
+private:
+  void run(int n_base, int vertex_count, int row_count, bool use_list, int group_limit) const;
+
+  ShaderProgram dual_map_, stencil_;
+};
+
+}  // namespace gps

@@ -1,0 +1,54 @@
+// What the C++ pipeline and its shaders agree on: buffer bindings, the compute work-group size and
+// the layout of a 9D point. ONE source: compiled as C++ and embedded, with GPS_GLSL defined, ahead
+// of the shaders that use it (cmake/embed_shaders.cmake), like core/plans/patch_basis.h.
+#ifndef GPS_GLSL
+#pragma once
+namespace gps::gpu {
+#define GPS_LAYOUT_CONST inline constexpr
+#else
+#define GPS_LAYOUT_CONST const
+#endif
+
+// Shader storage buffer bindings.
+GPS_LAYOUT_CONST int kBindingGaussians = 0;     // 9 floats per base vertex: μ, Σ xx xy xz yy yz zz
+GPS_LAYOUT_CONST int kBindingPoints = 1;        // the plan points, kVec4PerPoint vec4 each
+GPS_LAYOUT_CONST int kBindingOffsets = 2;       // stencil table (core/plans/patch_plans.h)
+GPS_LAYOUT_CONST int kBindingIndices = 3;
+GPS_LAYOUT_CONST int kBindingWeights = 4;
+GPS_LAYOUT_CONST int kBindingNodes = 5;         // plan nodes
+GPS_LAYOUT_CONST int kBindingRoots = 6;
+GPS_LAYOUT_CONST int kBindingCorners = 7;
+GPS_LAYOUT_CONST int kBindingChanged = 8;       // an edit's changed vertices
+GPS_LAYOUT_CONST int kBindingRows = 9;          // the stencil rows that read them
+GPS_LAYOUT_CONST int kBindingExtraordinaryTables = 10;     // Loop extraordinary tables (core/extraordinary/loop_extraordinary_tables.h)
+GPS_LAYOUT_CONST int kBindingPatchEdges = 11;   // quads: patch edges and their parts (core/plans/patch_plans.h)
+GPS_LAYOUT_CONST int kBindingPatchNeighbours = 12;  // per patch edge: the patch across (core/plans/patch_adjacency.h)
+GPS_LAYOUT_CONST int kBindingCornerOwners = 13;     // per patch corner: the patch that evaluates it
+GPS_LAYOUT_CONST int kBindingCornerLimits = 14;     // per patch corner: its owner's limit point, normal, node kind
+GPS_LAYOUT_CONST int kBindingCornerList = 15;       // an edit's corners to evaluate again
+GPS_LAYOUT_CONST int kBindingCount = 16;          // the plan buffers' bindings (render/pipeline/plan_buffers.h)
+// The surface cache's weld (shaders/weld_comp.glsl), past the plan buffers'.
+GPS_LAYOUT_CONST int kBindingStoredVertices = 16;
+GPS_LAYOUT_CONST int kBindingWeldTable = 17;
+GPS_LAYOUT_CONST int kBindingStoredIndices = 18;
+GPS_LAYOUT_CONST int kBindingBlockStarts = 19;
+GPS_LAYOUT_CONST int kBindingScanValues = 20;      // render/cache/exclusive_scan.h
+GPS_LAYOUT_CONST int kBindingWeldedVertices = 21;  // the welded vertices, numbered block by block
+GPS_LAYOUT_CONST int kBindingWeldedParameters = 22;  // their patch and (u, v) evaluated (render/cache/stored_vertex_evaluation.h)
+GPS_LAYOUT_CONST int kBindingWeldedDispatches = 23;  // per block: work groups over its welded vertices (indirect dispatch)
+GPS_LAYOUT_CONST int kBindingEvaluationBlocks = 24;  // the blocks an evaluation of welded vertices runs over
+GPS_LAYOUT_CONST int kBindingEvaluationGroups = 25;  // its dispatch and each block's first work group
+GPS_LAYOUT_CONST int kBindingCopyRuns = 26;          // the runs of captured vertices a copy back writes
+GPS_LAYOUT_CONST int kBindingPatchLevels = 27;       // per patch: the outer levels it was captured at (render/cache/stored_patch_levels.h)
+GPS_LAYOUT_CONST int kBindingLevelPatches = 28;      // the patches a level check runs over, with their listed block
+GPS_LAYOUT_CONST int kBindingLevelChanges = 29;      // per listed block: whether a patch's levels changed
+
+// Compute passes: invocations per work group.
+GPS_LAYOUT_CONST int kWorkGroupSize = 64;
+// A plan point q = (q̂, q̄) about its anchor a is three vec4: (xx xy xz yy) (yz zz y0 y1) (y2 a0 a1 a2),
+// y = q̄ − q̂ a (shaders/plan_point.glsl).
+GPS_LAYOUT_CONST int kVec4PerPoint = 3;
+
+#ifndef GPS_GLSL
+}  // namespace gps::gpu
+#endif

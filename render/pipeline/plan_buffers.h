@@ -1,0 +1,51 @@
+#pragma once
+// The GPU tables of a planned surface (DESIGN.md §2): core's plan and stencil tables (built outside
+// the renderer, core/plans/planned_surface.h) as shader storage buffers at the bindings of
+// render/pipeline/gpu_layout.h, with the base Gaussians, the plan points the compute passes write and an
+// edit's lists of changed vertices and stencil rows.
+#include <cstddef>
+#include <vector>
+
+#include "core/mesh/covariance_mesh.h"
+#include "core/plans/plan_builder.h"
+#include "render/pipeline/gpu_layout.h"
+
+namespace gps {
+
+class PlanBuffers {
+public:
+  /// Needs a current GL context.
+  PlanBuffers();
+  ~PlanBuffers();
+  PlanBuffers(const PlanBuffers&) = delete;
+  PlanBuffers& operator=(const PlanBuffers&) = delete;
+
+  /// Throws gps::Error if a table exceeds the device's storage block size (or `storage_limit` > 0).
+  static void check_fits(const SurfaceTables& tables, int n_vertices, int n_faces, long long storage_limit);
+  /// The plan and stencil tables, and zeroed plan points.
+  void upload_tables(const SurfaceTables& tables);
+  /// Every base vertex's μ and Σ.
+  void upload_gaussians(const CovarianceMesh& mesh);
+  /// The `changed` vertices' μ and Σ.
+  void update_gaussians(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  /// An edit's changed vertices and the stencil rows that read them, for the listed compute passes.
+  void upload_edit(const std::vector<int>& changed, const std::vector<int>& rows);
+  /// An edit's corner slots to evaluate again (render/pipeline/corner_limit_pass.h).
+  void upload_corner_list(const std::vector<int>& slots);
+  /// Binds every buffer at its binding.
+  void bind() const;
+  /// The plan points as the compute passes left them (gpu::kVec4PerPoint vec4 each).
+  std::vector<float> read_points(int n_points) const;
+  /// GPU memory held, in bytes.
+  size_t bytes() const;
+
+private:
+  static size_t corner_limit_floats(const PatchPlans& plans);
+  template <class T>
+  void upload(int binding, const std::vector<T>& data);
+
+  unsigned buffers_[gpu::kBindingCount] = {};
+  size_t sizes_[gpu::kBindingCount] = {};
+};
+
+}  // namespace gps

@@ -1,0 +1,277 @@
+#include "render/pipeline/surface_renderer.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/plans/stencil_table.h"
+#include "render/gl/gl_context.h"
+#include "render/image/matcap.h"
+#include "shaders/embedded_shaders.h"
+
+namespace gps {
+
+SurfaceRenderer::SurfaceRenderer()
+    : cached_("cached", {{GL_VERTEX_SHADER, {shaders::cache_vert}},
+                         {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
+      cached_grid_("cached_grid", {{GL_VERTEX_SHADER, {"#define CACHE_GRID\n", shaders::cache_vert}},
+                                   {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
+      cached_wire_("cached_wire", {{GL_VERTEX_SHADER, {shaders::geometry_next, shaders::cache_vert}},
+                                   {GL_GEOMETRY_SHADER, {shaders::mesh_geom}},
+                                   {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}) {
+  set_matcap(make_builtin_matcap("clay"));
+  check_gl_errors("creating the renderer");
+}
+
+SurfaceRenderer::~SurfaceRenderer() {
+  if (matcap_) glDeleteTextures(1, &matcap_);
+}
+
+const SurfaceTables& SurfaceRenderer::tables() const {
+  static const SurfaceTables none;
+  return surface_ ? surface_->tables() : none;
+}
+
+void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surface) {
+  // Refused before anything changes: the renderer keeps drawing the previous mesh.
+  PlanBuffers::check_fits(surface.tables(), int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_);
+  surface_ = std::make_unique<const PlannedSurface>(std::move(surface));
+  readers_.reset();
+  n_base_ = int(mesh.n_vertices());
+  half_size_patches_ = 0;
+  for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
+  buffers_.upload_tables(surface_->tables());
+  buffers_.upload_gaussians(mesh);
+  ellipsoids_.upload(mesh, nullptr);
+  cage_.set_mesh(mesh);
+  cache_.set_cage(mesh);
+  run_compute(nullptr);
+}
+
+void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  cache_.update_cage(mesh, changed);
+  if (update_everything(changed.size(), size_t(n_base_))) {  // most of the mesh (select all, drag): whole buffers, one call each
+    buffers_.upload_gaussians(mesh);
+    ellipsoids_.upload(mesh, nullptr);
+    cage_.upload_positions(mesh);
+    run_compute(nullptr, true);
+    return;
+  }
+  buffers_.update_gaussians(mesh, changed);
+  cage_.update_positions(mesh, changed);
+  ellipsoids_.upload(mesh, &changed);
+  run_compute(&changed);
+}
+
+void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
+  const GpuPassScope pass(timer_, "9D + stencils");
+  ++points_generation_;
+  const int n_rows = tables().stencils.n_rows();
+  const PatchPlans& plans = tables().plans;
+  if (changed) {
+    const std::vector<int> rows = surface_->rows_reading(*changed);
+    buffers_.upload_edit(*changed, rows);
+    const std::vector<int> patches = changed_patches(*changed, rows);
+    const std::vector<int> corners = CornerLimitPass::owner_slots(plans, patches);
+    buffers_.upload_corner_list(corners);
+    buffers_.bind();
+    compute_.run_listed(n_base_, int(changed->size()), int(rows.size()), group_limit_);
+    corners_.run_listed(plans, int(corners.size()), group_limit_);
+    if (cache_.follows_edits()) {
+      cache_.points_changed(points_generation_, &patches);
+      return;
+    }
+  } else {
+    buffers_.bind();
+    compute_.run_all(n_base_, n_rows, group_limit_);
+    corners_.run_all(plans, group_limit_);
+    if (edit) {
+      cache_.all_points_changed(points_generation_);
+      return;
+    }
+  }
+  cache_.points_changed(points_generation_, nullptr);
+}
+
+std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {
+  const StencilTable& stencils = tables().stencils;
+  if (!readers_) readers_ = std::make_unique<const PatchReaders>(tables().plans, stencils.n_points());
+  std::vector<int> points = changed;
+  for (const int r : rows) points.push_back(stencils.n_base + r);
+  return readers_->patches_changed_by(points);
+}
+
+void SurfaceRenderer::set_matcap(const Image& m) {
+  if (matcap_) glDeleteTextures(1, &matcap_);
+  glCreateTextures(GL_TEXTURE_2D, 1, &matcap_);
+  glTextureStorage2D(matcap_, 1, GL_RGBA32F, m.width, m.height);
+  // Image rows run top-down; texture rows bottom-up, so that v = 0.5·n.y + 0.5 points up.
+  std::vector<float> rgba(size_t(m.width) * size_t(m.height) * 4, 1.0f);
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        rgba[(size_t(m.height - 1 - y) * size_t(m.width) + size_t(x)) * 4 + size_t(c)] = m.at(x, y, std::min(c, m.channels - 1));
+  glTextureSubImage2D(matcap_, 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, rgba.data());
+  glTextureParameteri(matcap_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(matcap_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(matcap_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(matcap_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  check_gl_errors("uploading the MatCap");
+}
+
+DrawStatistics SurfaceRenderer::last_statistics() {
+  last_statistics_.cached = last_cache_frame_ == CacheFrame::stored;
+  if (last_cache_frame_ != CacheFrame::live) {
+    last_statistics_.triangles = cache_.triangles();
+    // A frame drawn as it was captured ran its evaluation block by block: not counted.
+    last_statistics_.vertices = last_statistics_.cached && GLAD_GL_ARB_pipeline_statistics_query ? 0 : -1;
+  } else {
+    patches_.latest_statistics(last_statistics_);
+  }
+  last_statistics_.patches = n_patches();
+  return last_statistics_;
+}
+
+void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, const DrawOptions& o) {
+  const float aspect = float(target.width()) / float(target.height());
+  {
+    const GpuPassScope pass(timer_, "surface");
+    const bool use_cache = !o.static_triangles && o.surface_cache;
+    buffers_.bind();
+    // The cache's compute passes before the clear: on llvmpipe one after it splits the frame in two
+    // (the cleared target written out, then read back for the draw; a cube's edit at level 64: a
+    // sixth of its frame).
+    const bool cache_current = use_cache && prepare_cache(camera, o, aspect, target.width(), target.height());
+    target.bind();
+    const float clear_color[4] = {o.background.r, o.background.g, o.background.b, 1.0f};
+    const float clear_zero[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, clear_color);
+    glClearBufferfv(GL_COLOR, 1, clear_zero);
+    glClearBufferfv(GL_COLOR, 2, clear_zero);
+    const float far_depth = 1.0f;
+    glClearBufferfv(GL_DEPTH, 0, &far_depth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glBindTextureUnit(0, matcap_);
+    const CacheFrame cache_frame = !use_cache        ? CacheFrame::live
+                                   : !cache_current ? capture_cache(camera, o, aspect, target.width(), target.height())
+                                   : cache_.holds_triangles() ? CacheFrame::stored
+                                                               : CacheFrame::live;  // refused: past the memory limit
+    const bool cached = cache_frame == CacheFrame::stored;
+    last_cache_frame_ = cache_frame;
+    if (cache_frame != CacheFrame::drawn) {  // else drawn as it was captured
+      // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
+      const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
+      const bool grid = cached && draws_grid(o);
+      const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : grid ? cached_grid_ : cached_)
+                                     : !o.static_triangles ? patches_.frame_program(shape(), o)
+                                                           : static_triangles_.program(o.wireframe);
+      set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
+      program.use();
+      if (o.static_triangles)
+        static_triangles_.draw();
+      else if (cached)
+        cache_.draw(grid);
+      else
+        patches_.draw(program, o, n_patches());
+    }
+  }
+  if (o.ellipsoids && ellipsoids_.count() > 0) {
+    const GpuPassScope pass(timer_, "ellipsoids");
+    ellipsoids_.draw(camera.view_projection(aspect), o.sigma_scale, o.ellipsoid_vertices);
+  }
+  if (o.mesh_lines && !cage_.empty()) {
+    const GpuPassScope pass(timer_, "mesh lines");
+    cage_.draw(target, camera.view_projection(aspect));
+  }
+  glBindVertexArray(0);
+  check_gl_errors("drawing");
+}
+
+SurfaceCache::Key SurfaceRenderer::cache_key(const DrawOptions& o) const {
+  SurfaceCache::Key key;
+  key.points = points_generation_;
+  key.pixels = std::max(o.pixels, 0.0f);
+  key.level = key.pixels > 0.0f ? 0.0f : uniform_level(o);
+  key.debug_mismatch = o.debug_mismatch;
+  return key;
+}
+
+// The storage buffers bound; the target not yet (none of this draws).
+bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, float aspect, int width, int height) {
+  const SurfaceCache::Key key = cache_key(o);
+  const glm::mat4 view_projection = camera.view_projection(aspect);
+  const glm::vec2 viewport{float(width), float(height)};
+  if (cache_.current(key, view_projection, viewport)) {
+    cache_.settle();
+    return true;
+  }
+  // An edit: its patches, under the capture's camera.
+  if (!cache_.refreshable(key, view_projection, viewport)) return false;
+  const ShaderProgram& capture = patches_.program(shape(), PatchOutput::capture);
+  capture.use();
+  set_frame_uniforms(capture, camera, o, aspect, width, height);
+  capture.set("u_view_projection", cache_.captured_view_projection());
+  capture.set("u_viewport", cache_.captured_viewport());
+  const auto draw_patches = [&](int first, int count) { patches_.draw(capture, o, n_patches(), first, count); };
+  const auto evaluate_welded = [&](const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches) {
+    stored_evaluation_.run(shape(), blocks, dispatches, group_limit_);
+  };
+  const auto levels_changed = [&](const std::vector<StoredPatchLevels::Block>& blocks) {
+    const ShaderProgram& check = stored_levels_.program(shape());
+    set_level_uniforms(check, cache_.captured_view_projection(), cache_.captured_viewport(), o);
+    return stored_levels_.changed(shape(), blocks, group_limit_);
+  };
+  if (!cache_.refresh(key, draw_patches, evaluate_welded, levels_changed)) return false;
+  if (draws_grid(o)) cache_.copy_back_evaluated();
+  return true;
+}
+
+// Captures the patches' triangles (the storage buffers and the frame's target bound). It draws the
+// frame as it goes (the shaded program under transform feedback, rasteriser on), but where a
+// geometry stage draws the triangle wireframe: transform feedback would store its output.
+SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera, const DrawOptions& o, float aspect, int width,
+                                                           int height) {
+  const SurfaceCache::Key key = cache_key(o);
+  const glm::mat4 view_projection = camera.view_projection(aspect);
+  const glm::vec2 viewport{float(width), float(height)};
+  // Buffer size: uniform level L generates about 2·L² triangles per quad patch, 2·⌈L/2⌉² per
+  // half-size one (shaders/patch_tesc.glsl), L² per triangle patch; adaptive levels as many as last
+  // time, or where nothing is stored, as many as a draw counts (128 a patch was 1.8 GB for a
+  // 100k-face sphere at 800², which drew 0.2 M triangles). A full buffer grows and captures again.
+  const long long level = (long long)std::ceil(key.level), patches = n_patches();
+  long long estimate = 64;
+  if (key.pixels > 0.0f) {
+    if (cache_.triangles() > 0) {
+      estimate += cache_.triangles() * 5 / 4;
+    } else {
+      estimate += patches_.count_triangles(shape(), camera, o, width, height, patches) * 9 / 8;
+    }
+  } else if (shape() == PatchShape::triangle) {
+    estimate += patches * level * level * 5 / 4;
+  } else {
+    const long long halves = half_size_patches_, half_level = (level + 1) / 2;
+    estimate += ((patches - halves) * 2 * level * level + halves * 2 * half_level * half_level) * 5 / 4;
+  }
+  const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
+  const ShaderProgram& program = patches_.program(shape(), triangle_wire ? PatchOutput::capture : PatchOutput::shaded_capture);
+  set_frame_uniforms(program, camera, o, aspect, width, height);
+  program.use();
+  const auto draw = [&](int first, int count) { patches_.draw(program, o, n_patches(), first, count); };
+  if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire)) return CacheFrame::live;
+  if (key.pixels > 0.0f) {  // the levels an edit's refresh checks
+    const ShaderProgram& record = stored_levels_.program(shape());
+    set_level_uniforms(record, view_projection, viewport, o);
+    stored_levels_.record(shape(), n_patches(), group_limit_);
+  }
+  return triangle_wire ? CacheFrame::stored : CacheFrame::drawn;  // the triangle wireframe: drawn from the cache
+}
+
+std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, int width, int height,
+                                                                 int first_patch, int n_patches) {
+  buffers_.bind();
+  return patches_.capture_vertices(shape(), camera, o, width, height, this->n_patches(), first_patch, n_patches);
+}
+
+}  // namespace gps

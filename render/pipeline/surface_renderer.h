@@ -1,0 +1,142 @@
+#pragma once
+// The GPU pipeline of DESIGN.md §2, a facade over its parts: the planned surface's tables uploaded
+// once per topology (render/pipeline/plan_buffers.h); per edit the compute passes map changed vertices to 9D
+// and apply the stencils (render/pipeline/dual_stencil_pass.h); per frame GL_PATCHES with tessellation
+// shaders evaluate the limit surface (render/pipeline/patch_draw.h), or the surface cache redraws stored
+// triangles (render/cache/surface_cache.h), shaded by MatCap; overlays of ellipsoids and the base mesh
+// (render/overlays/cage_lines.h); static triangles as the benchmark floor (render/comparison/static_triangles.h).
+#include <glm/glm.hpp>
+#include <memory>
+#include <vector>
+
+#include "core/mesh/covariance_mesh.h"
+#include "core/plans/patch_readers.h"
+#include "core/plans/planned_surface.h"
+#include "core/evaluation/triangle_mesh.h"
+#include "view/camera.h"
+#include "render/overlays/cage_lines.h"
+#include "render/pipeline/corner_limit_pass.h"
+#include "render/pipeline/draw_options.h"
+#include "render/pipeline/dual_stencil_pass.h"
+#include "render/overlays/ellipsoid_overlay.h"
+#include "render/gl/gpu_pass_timer.h"
+#include "render/image/image.h"
+#include "render/pipeline/patch_draw.h"
+#include "render/pipeline/plan_buffers.h"
+#include "render/gl/render_target.h"
+#include "render/gl/shader_program.h"
+#include "render/comparison/static_triangles.h"
+#include "render/cache/stored_patch_levels.h"
+#include "render/cache/stored_vertex_evaluation.h"
+#include "render/cache/surface_cache.h"
+
+namespace gps {
+
+class SurfaceRenderer {
+public:
+  /// Needs a current GL 4.5 context.
+  SurfaceRenderer();
+  ~SurfaceRenderer();
+  SurfaceRenderer(const SurfaceRenderer&) = delete;
+  SurfaceRenderer& operator=(const SurfaceRenderer&) = delete;
+
+  /// New topology: uploads the tables of `surface` (built by core for this mesh; the renderer keeps
+  /// it for its tables and rows_reading), then a full compute pass. Throws gps::Error, before
+  /// anything changes, where the tables exceed the device's storage block size.
+  void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface);
+  /// The same with the surface core plans under `options` (Loop for triangles only, else Catmull-Clark).
+  void set_mesh(const CovarianceMesh& mesh, const PlanOptions& options) { set_mesh(mesh, PlannedSurface(mesh, options)); }
+  /// The same with the default options: the scheme that fits the mesh, exact plans.
+  void set_mesh(const CovarianceMesh& mesh) { set_mesh(mesh, PlanOptions{}); }
+  /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them
+  /// (past core's update_everything share of the vertices: whole buffers and the full passes); the
+  /// surface cache learns which patches changed (core/plans/patch_readers.h) and re-captures only those.
+  void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  /// The compute passes over every vertex and stencil row (as after set_mesh), for benchmarks.
+  void recompute_all() { run_compute(nullptr); }
+  /// Triangles to draw with DrawOptions::static_triangles (CPU tessellation, reference subdivision).
+  void set_triangles(const TriangleMesh& triangles) { static_triangles_.set(triangles); }
+  void set_matcap(const Image& matcap);
+
+  void draw(const RenderTarget& target, const Camera& camera, const DrawOptions& options);
+  /// The vertices the tessellator generates for `options` in a width × height viewport (no
+  /// rasterisation), of the patches [first_patch, first_patch + n_patches) (n_patches < 0: to the last).
+  std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, int width, int height,
+                                                  int first_patch = 0, int n_patches = -1);
+
+  /// The stored triangles of DrawOptions::surface_cache (its capture count, hysteresis, limit).
+  SurfaceCache& surface_cache() { return cache_; }
+  const SurfaceCache& surface_cache() const { return cache_; }
+  /// The surface cache's GPU buffers and the levels its adaptive capture recorded.
+  size_t surface_cache_bytes() const { return cache_.buffer_bytes() + stored_levels_.bytes(); }
+
+  /// Times the compute passes ("9D + stencils") and each drawn layer ("surface", "ellipsoids",
+  /// "mesh lines") into `timer`; nullptr (the default) times nothing.
+  void set_pass_timer(GpuPassTimer* timer) { timer_ = timer; }
+  /// Counts triangles and vertices of each patch draw (off by default: headless renders pay nothing).
+  void set_collect_statistics(bool collect) { patches_.set_collect_statistics(collect); }
+  /// The figures of the newest patch draw whose queries finished: drawing every frame, they lag a
+  /// frame or two (the queries are never waited for). Zero counts before any finished.
+  DrawStatistics last_statistics();
+
+  const SurfaceTables& tables() const;
+  /// The plan points as the compute passes left them (12 floats each: q in three vec4).
+  std::vector<float> read_points() const { return buffers_.read_points(tables().stencils.n_points()); }
+  /// GPU memory held by the pipeline's buffers, in bytes.
+  size_t buffer_bytes() const { return buffers_.bytes(); }
+  /// Lowers the device's limits on work groups per compute dispatch and on storage block bytes
+  /// (0: the device's own), so that tests reach the dispatch split and the size refusal with meshes
+  /// of test size. Applies from the next set_mesh / update_vertices.
+  void lower_device_limits(int max_groups, long long max_storage_bytes) {
+    group_limit_ = max_groups;
+    storage_limit_ = max_storage_bytes;
+  }
+
+private:
+  /// The compute passes for `changed` base vertices, or all (nullptr; an `edit` of most of them
+  /// where set, which the surface cache follows as such).
+  void run_compute(const std::vector<int>* changed, bool edit = false);
+  /// The patches whose triangles an edit of `changed` vertices and the stencil `rows` reading them changes.
+  std::vector<int> changed_patches(const std::vector<int>& changed, const std::vector<int>& rows);
+  /// How a frame uses the surface cache: it draws the stored triangles, it was drawn while it was
+  /// captured, or it is drawn live (the cache refused these inputs).
+  enum class CacheFrame { stored, drawn, live };
+  /// The surface cache's inputs for a frame of these options.
+  SurfaceCache::Key cache_key(const DrawOptions& options) const;
+  /// The surface cache's work for a frame before its target is cleared: an edit's refresh (compute
+  /// passes, captures with the rasteriser off), or a still frame's settling, and the captured copies
+  /// a grid frame reads. True where the cache then stands for the frame's inputs.
+  bool prepare_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
+  /// A capture of every patch (drawing the frame as it goes), where prepare_cache() found none current.
+  CacheFrame capture_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
+  /// Whether a cached frame of these options draws the quads' wireframe: their tessellation grid,
+  /// stored with the captured vertices (triangles' comes from a geometry stage).
+  bool draws_grid(const DrawOptions& o) const { return o.wireframe && shape() == PatchShape::quad; }
+  PatchShape shape() const { return tables().plans.shape; }
+  int n_patches() const { return tables().plans.n_patches(); }
+
+  std::unique_ptr<const PlannedSurface> surface_;
+  std::unique_ptr<const PatchReaders> readers_;  // built at the first edit the cache can follow
+  PlanBuffers buffers_;
+  DualStencilPass compute_;
+  CornerLimitPass corners_;
+  PatchDraw patches_;
+  StaticTriangles static_triangles_;
+  CageLines cage_;
+  EllipsoidOverlay ellipsoids_;
+  ShaderProgram cached_, cached_grid_, cached_wire_;  // the surface cache's draw (plain, quads' wireframe, triangles' wireframe)
+  SurfaceCache cache_;
+  StoredVertexEvaluation stored_evaluation_;  // the cache's edits where the tessellation stays
+  StoredPatchLevels stored_levels_;            // the levels of the cache's adaptive capture
+  long long points_generation_ = 0;  // bumped by every compute pass: the cache's key
+  unsigned matcap_ = 0;
+  int n_base_ = 0;
+  long long half_size_patches_ = 0;  // a split face's patches (quads): the cache's buffer estimate
+  int group_limit_ = 0;  // lower_device_limits
+  long long storage_limit_ = 0;
+  GpuPassTimer* timer_ = nullptr;
+  DrawStatistics last_statistics_;
+  CacheFrame last_cache_frame_ = CacheFrame::live;
+};
+
+}  // namespace gps
