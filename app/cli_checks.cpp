@@ -9,9 +9,11 @@ namespace gps {
 
 PixelSize parse_pixel_size(const std::string& text, const std::string& option) {
   std::smatch m;
-  if (!std::regex_match(text, m, std::regex(R"((\d{1,5})x(\d{1,5}))"))) throw usage_error(option + ": expected WxH, got '" + text + "'");
+  if (!std::regex_match(text, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
+    throw usage_error(option + ": expected WxH, got '" + text + "'");
   const PixelSize size{std::stoi(m[1]), std::stoi(m[2])};
-  if (size.width < 1 || size.height < 1) throw usage_error(option + ": width and height must be at least 1, got '" + text + "'");
+  if (size.width < 1 || size.height < 1)
+    throw usage_error(option + ": width and height must be at least 1, got '" + text + "'");
   return size;
 }
 

@@ -35,7 +35,8 @@ std::vector<std::pair<std::string, int>> sample_list(const std::vector<std::stri
       if (!sample_has_size(name)) throw usage_error("bench: the sample '" + name + "' has no size to set");
     }
     const std::vector<std::string> known = sample_names();
-    if (std::find(known.begin(), known.end(), name) == known.end()) make_sample(name);  // refuses it, listing the samples
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      make_sample(name);  // refuses it, listing the samples
     list.emplace_back(name, faces);
   }
   return list;
@@ -56,19 +57,24 @@ void add_bench_command(CLI::App& app) {
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("bench", "Benchmarks (figures for the closing notes; see also build/bench/)");
   cmd->add_flag("--preprocess", args->preprocess, "plan building and stencil application per mesh");
-  cmd->add_flag("--render", args->render, "GPU frame times per mesh and tessellation level, against a static vertex buffer");
+  cmd->add_flag("--render", args->render,
+                "GPU frame times per mesh and tessellation level, against a static vertex buffer");
   cmd->add_flag("--edit", args->edit, "edit-to-frame and frame times on a large sphere (1280x720, adaptive 6 px)");
-  cmd->add_option("--context", args->context, "GL context for --render and --edit: auto, osmesa, egl")->check(CLI::IsMember({"auto", "osmesa", "egl"}));
-  cmd->add_option("--size", args->size, "--render: render size in pixels (square, default 512); --edit: faces (default 100000)")
+  cmd->add_option("--context", args->context, "GL context for --render and --edit: auto, osmesa, egl")
+      ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
+  cmd->add_option("--size", args->size,
+                  "--render: render size in pixels (square, default 512); --edit: faces (default 100000)")
       ->check(CLI::Range(16, 4000000));
   add_plan_arguments(cmd, args->plans);
   cmd->add_option("--mesh", args->mesh, "--edit: the sample to edit (default: sphere; icosphere for triangles)");
-  cmd->add_option("--meshes", args->meshes, "--render, --preprocess: these samples instead of the default list, each NAME or NAME:FACES")
+  cmd->add_option("--meshes", args->meshes,
+                  "--render, --preprocess: these samples instead of the default list, each NAME or NAME:FACES")
       ->delimiter(',');
   cmd->add_option("--levels", args->levels, "--render: the uniform tessellation levels (default 1,4,16,64)")
       ->delimiter(',')
       ->check(CLI::Range(1, 64));
-  cmd->add_option("--adaptive", args->adaptive_pixels, "--render: also a row at adaptive levels of this many pixels per segment (default 6; 0: none)")
+  cmd->add_option("--adaptive", args->adaptive_pixels,
+                  "--render: also a row at adaptive levels of this many pixels per segment (default 6; 0: none)")
       ->check(CLI::Range(0.0f, 1000.0f));
   cmd->add_option("--json", args->json, "also write the figures as JSON");
   cmd->add_option("--plots", args->plots, "with --render: write PREFIX_frame_time.png and PREFIX_memory.png");
@@ -76,17 +82,19 @@ void add_bench_command(CLI::App& app) {
     if (int(args->preprocess) + int(args->render) + int(args->edit) != 1)
       throw usage_error("bench: choose one thing to measure (--preprocess, --render, --edit)");
     const auto make_context = [&args] {
-      return create_offscreen_context(args->context == "egl" ? ContextKind::egl
+      return create_offscreen_context(args->context == "egl"      ? ContextKind::egl
                                       : args->context == "osmesa" ? ContextKind::osmesa
                                                                   : ContextKind::automatic);
     };
     if (args->edit) {
       const auto context = make_context();
-      const auto r = edit_figures(args->mesh.empty() ? "sphere" : args->mesh, args->size ? args->size : 100000, args->plans.options());
+      const auto r = edit_figures(args->mesh.empty() ? "sphere" : args->mesh, args->size ? args->size : 100000,
+                                  args->plans.options());
       std::printf("device: %s\n%s: %d faces, %d patches, depth %d, 1280x720, adaptive 6 px, %lld triangles per frame\n",
-                  context->description().c_str(), r["mesh"].get<std::string>().c_str(), r["faces"].get<int>(), r["patches"].get<int>(),
-                  r["depth"].get<int>(), r["triangles"].get<long long>());
-      const double frame = r["frame_ms"], one = r["edit_to_frame_1_vertex_ms"], sixteen = r["edit_to_frame_16_vertices_ms"];
+                  context->description().c_str(), r["mesh"].get<std::string>().c_str(), r["faces"].get<int>(),
+                  r["patches"].get<int>(), r["depth"].get<int>(), r["triangles"].get<long long>());
+      const double frame = r["frame_ms"], one = r["edit_to_frame_1_vertex_ms"],
+                   sixteen = r["edit_to_frame_16_vertices_ms"];
       const double full = r["full_recompute_frame_ms"];
       std::printf("%-40s %10.2f ms\n", "frame (draw + glFinish)", frame);
       std::printf("%-40s %10.2f ms\n", "edit-to-frame, 1 vertex", one);
@@ -95,8 +103,10 @@ void add_bench_command(CLI::App& app) {
       std::printf("%-40s %10.2f ms\n", "set_mesh (topology rebuild, once)", r["set_mesh_ms"].get<double>());
       std::printf("%-40s %10.3f ms\n", "compute only: edit of 1 vertex", r["edit_1_vertex_compute_ms"].get<double>());
       std::printf("%-40s %10.3f ms\n", "compute only: full recompute", r["full_recompute_ms"].get<double>());
-      std::printf("edit-to-frame / frame: %.3f (1 vertex), %.3f (16 vertices); full / edit-to-frame: %.2f (1 vertex), %.2f (16 vertices)\n",
-                  one / frame, sixteen / frame, full / one, full / sixteen);
+      std::printf(
+          "edit-to-frame / frame: %.3f (1 vertex), %.3f (16 vertices); full / edit-to-frame: %.2f (1 vertex), %.2f (16 "
+          "vertices)\n",
+          one / frame, sixteen / frame, full / one, full / sixteen);
       if (!args->json.empty()) write_file_atomically(args->json, [&](std::ostream& out) { out << r.dump(2) << "\n"; });
       return;
     }
@@ -105,31 +115,40 @@ void add_bench_command(CLI::App& app) {
       if (args->size > 4096) throw usage_error("bench --render: --size is at most 4096 pixels");
       const auto context = make_context();
       const PlanOptions plans = args->plans.options();
-      std::printf("device: %s, %dx%d pixels, %s\n", context->description().c_str(), args->size, args->size,
-                  ((plans.exact ? "exact plans of depth " : "the thesis' plans of depth ") + std::to_string(plans.depth)).c_str());
-      std::printf("%-12s %7s %5s %9s %10s %10s %10s %12s %10s %7s %10s %7s %10s %7s %9s\n", "mesh", "patches", "level", "triangles",
-                  "compute", "draw(gpu)", "frame", "tri/s", "static", "ratio", "cached", "ratio", "edit", "ratio", "memory");
+      std::printf(
+          "device: %s, %dx%d pixels, %s\n", context->description().c_str(), args->size, args->size,
+          ((plans.exact ? "exact plans of depth " : "the thesis' plans of depth ") + std::to_string(plans.depth))
+              .c_str());
+      std::printf("%-12s %7s %5s %9s %10s %10s %10s %12s %10s %7s %10s %7s %10s %7s %9s\n", "mesh", "patches", "level",
+                  "triangles", "compute", "draw(gpu)", "frame", "tri/s", "static", "ratio", "cached", "ratio", "edit",
+                  "ratio", "memory");
       nlohmann::json all = nlohmann::json::array();
       // pawn against pawn-quads: a mixed mesh against its quads-only twin (issue 12).
-      const auto meshes = args->meshes.empty() ? sample_list({"cube", "wirecube", "cylinder", "valence5", "cone-pointy", "icosphere", "pawn", "pawn-quads"})
+      const auto meshes = args->meshes.empty() ? sample_list({"cube", "wirecube", "cylinder", "valence5", "cone-pointy",
+                                                              "icosphere", "pawn", "pawn-quads"})
                                                : sample_list(args->meshes);
       for (const auto& [name, faces] : meshes) {
         for (const auto& r : frame_figures(name, faces, plans, args->size, args->levels, args->adaptive_pixels)) {
           const int level = r["level"].get<int>();
-          const std::string level_text = level > 0 ? std::to_string(level) : "a" + std::to_string(int(r["adaptive_pixels"].get<float>()));
-          std::printf("%-12s %7d %5s %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %7.2f ms %7.2f %7.2f ms %7.2f %6.1f kB%s\n",
-                      r["mesh"].get<std::string>().c_str(), r["patches"].get<int>(), level_text.c_str(), r["triangles"].get<double>(),
-                      r["compute_gpu_ms"].get<double>(), r["draw_gpu_ms"].get<double>(), r["frame_ms"].get<double>(),
-                      r["triangles_per_second"].get<double>(), r["static_buffer_frame_ms"].get<double>(),
-                      r["ratio_to_static_buffer"].get<double>(), r["cached_frame_ms"].get<double>(),
-                      r["cached_ratio_to_static_buffer"].get<double>(), r["edit_frame_ms"].get<double>(),
-                      r["edit_ratio_to_static_buffer"].get<double>(), r["pipeline_buffer_bytes"].get<double>() / 1024.0,
-                      r["cache_held"].get<bool>() ? "" : " (past the cache's memory limit: drawn live)");
+          const std::string level_text =
+              level > 0 ? std::to_string(level) : "a" + std::to_string(int(r["adaptive_pixels"].get<float>()));
+          std::printf(
+              "%-12s %7d %5s %9.0f %7.3f ms %7.3f ms %7.2f ms %12.3g %7.2f ms %7.2f %7.2f ms %7.2f %7.2f ms %7.2f "
+              "%6.1f kB%s\n",
+              r["mesh"].get<std::string>().c_str(), r["patches"].get<int>(), level_text.c_str(),
+              r["triangles"].get<double>(), r["compute_gpu_ms"].get<double>(), r["draw_gpu_ms"].get<double>(),
+              r["frame_ms"].get<double>(), r["triangles_per_second"].get<double>(),
+              r["static_buffer_frame_ms"].get<double>(), r["ratio_to_static_buffer"].get<double>(),
+              r["cached_frame_ms"].get<double>(), r["cached_ratio_to_static_buffer"].get<double>(),
+              r["edit_frame_ms"].get<double>(), r["edit_ratio_to_static_buffer"].get<double>(),
+              r["pipeline_buffer_bytes"].get<double>() / 1024.0,
+              r["cache_held"].get<bool>() ? "" : " (past the cache's memory limit: drawn live)");
           std::fflush(stdout);
           all.push_back(r);
         }
       }
-      if (!args->json.empty()) write_file_atomically(args->json, [&](std::ostream& out) { out << all.dump(2) << "\n"; });
+      if (!args->json.empty())
+        write_file_atomically(args->json, [&](std::ostream& out) { out << all.dump(2) << "\n"; });
       if (!args->plots.empty()) {
         std::map<std::string, PlotSeries> time_over_level, memory_over_time;
         for (const auto& r : all) {
@@ -137,31 +156,36 @@ void add_bench_command(CLI::App& app) {
           const std::string mesh = r["mesh"];
           time_over_level[mesh].name = memory_over_time[mesh].name = mesh;
           time_over_level[mesh].points.emplace_back(r["level"].get<double>(), r["frame_ms"].get<double>());
-          memory_over_time[mesh].points.emplace_back(r["frame_ms"].get<double>(),
-                                                     (r["pipeline_buffer_bytes"].get<double>() + r["static_buffer_bytes"].get<double>()) / 1024.0);
+          memory_over_time[mesh].points.emplace_back(
+              r["frame_ms"].get<double>(),
+              (r["pipeline_buffer_bytes"].get<double>() + r["static_buffer_bytes"].get<double>()) / 1024.0);
         }
         std::vector<PlotSeries> a, b;
         for (auto& [_, s] : time_over_level) a.push_back(s);
         for (auto& [_, s] : memory_over_time) b.push_back(s);
-        write_line_plot(args->plots + "_frame_time.png", "Frame time over tessellation level", "level", "frame ms", a, true, true);
-        write_line_plot(args->plots + "_memory.png", "Memory over frame time (pipeline + equivalent static mesh)", "frame ms", "kB", b, true, true);
+        write_line_plot(args->plots + "_frame_time.png", "Frame time over tessellation level", "level", "frame ms", a,
+                        true, true);
+        write_line_plot(args->plots + "_memory.png", "Memory over frame time (pipeline + equivalent static mesh)",
+                        "frame ms", "kB", b, true, true);
         std::printf("plots: %s_frame_time.png, %s_memory.png\n", args->plots.c_str(), args->plots.c_str());
       }
       return;
     }
     std::vector<std::string> names = {"cube", "wirecube"};
     for (int n = 3; n <= 10; ++n) names.push_back("valence" + std::to_string(n));
-    names.insert(names.end(), {"sphere:250", "grid:1000", "grid:10000", "grid:100000", "sphere:1000", "sphere:10000", "sphere:100000",
-                               "icosphere:1280", "icosphere:20480", "icosphere:81920", "icosphere:1310720", "cone-pointy"});
+    names.insert(names.end(), {"sphere:250", "grid:1000", "grid:10000", "grid:100000", "sphere:1000", "sphere:10000",
+                               "sphere:100000", "icosphere:1280", "icosphere:20480", "icosphere:81920",
+                               "icosphere:1310720", "cone-pointy"});
     const auto meshes = sample_list(args->meshes.empty() ? names : args->meshes);
     nlohmann::json all = nlohmann::json::array();
     std::printf("%-18s %7s %8s %7s %8s %12s %11s %10s %10s %10s %9s\n", "mesh", "faces", "patches", "rows", "nnz",
                 "preprocess", "us/face", "dual map", "apply", "1-vertex", "B/face");
     for (const auto& [name, size] : meshes) {
       const auto r = preprocess_figures(name, size, args->plans.options());
-      std::printf("%-18s %7d %8d %7d %8d %9.3f ms %11.3f %7.3f ms %7.3f ms %7.2f us %9.0f\n", r["mesh"].get<std::string>().c_str(),
-                  r["faces"].get<int>(), r["patches"].get<int>(), r["stencil_rows"].get<int>(), r["stencil_nonzeros"].get<int>(),
-                  r["preprocess_ms"].get<double>(), r["preprocess_us_per_face"].get<double>(), r["dual_map_ms"].get<double>(),
+      std::printf("%-18s %7d %8d %7d %8d %9.3f ms %11.3f %7.3f ms %7.3f ms %7.2f us %9.0f\n",
+                  r["mesh"].get<std::string>().c_str(), r["faces"].get<int>(), r["patches"].get<int>(),
+                  r["stencil_rows"].get<int>(), r["stencil_nonzeros"].get<int>(), r["preprocess_ms"].get<double>(),
+                  r["preprocess_us_per_face"].get<double>(), r["dual_map_ms"].get<double>(),
                   r["stencil_apply_ms"].get<double>(), r["stencil_update_one_vertex_us"].get<double>(),
                   r["table_bytes_per_face"].get<double>());
       std::fflush(stdout);

@@ -20,8 +20,10 @@ void add_diff_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "difference image (.png)")->required();
   cmd->add_option("--kind", args->kind, "what the AOVs hold (auto: from the channel names render --aov writes)")
       ->check(CLI::IsMember({"auto", "position", "normal"}));
-  cmd->add_option("--factor", args->factor, "scale of the shown difference (default 200 for position, 5000 for normal)")->check(positive_number());
-  cmd->add_option("--threshold", args->threshold, "count pixels whose difference exceeds this (unscaled)")->check(non_negative_number());
+  cmd->add_option("--factor", args->factor, "scale of the shown difference (default 200 for position, 5000 for normal)")
+      ->check(positive_number());
+  cmd->add_option("--threshold", args->threshold, "count pixels whose difference exceeds this (unscaled)")
+      ->check(non_negative_number());
   cmd->callback([args] {
     Image a, b;
     try {
@@ -45,9 +47,11 @@ void add_diff_command(CLI::App& app) {
     DifferenceStats s;
     const Image d = difference_image(a, b, kind, factor, args->threshold, s);
     write_image(args->output, d);
-    std::printf("%s difference (%s): max %.3g, mean %.3g, %.2f%% of %d pixels above %.3g, %d pixels covered in one image only; wrote %s\n",
-                args->kind.c_str(), kind == AovKind::position ? "distance / bounding-box diagonal" : "largest component",
-                s.max, s.mean, 100.0 * s.share_above, s.covered, args->threshold, s.coverage_mismatch, args->output.c_str());
+    std::printf(
+        "%s difference (%s): max %.3g, mean %.3g, %.2f%% of %d pixels above %.3g, %d pixels covered in one image only; "
+        "wrote %s\n",
+        args->kind.c_str(), kind == AovKind::position ? "distance / bounding-box diagonal" : "largest component", s.max,
+        s.mean, 100.0 * s.share_above, s.covered, args->threshold, s.coverage_mismatch, args->output.c_str());
   });
 }
 

@@ -32,8 +32,10 @@ void add_infer_command(CLI::App& app) {
       options.isotropic_scale = args->isotropic;
     }
     CovarianceMesh m = read_mesh(args->input, options);
-    if (args->isotropic > 0) isotropic_covariances(m, args->isotropic);
-    else infer_covariances(m, args->bias);
+    if (args->isotropic > 0)
+      isotropic_covariances(m, args->isotropic);
+    else
+      infer_covariances(m, args->bias);
     write_mesh(args->output, m, args->binary);
     std::cout << "wrote " << args->output << "\n";
   });

@@ -21,7 +21,8 @@ void print_info(const std::string& path) {
   for (int v = 0; v < t.n_vertices; ++v) {
     ++valences[c.valence(v)];
     const VertexRole role = vertex_role(c, v);
-    extraordinary += (role == VertexRole::interior && c.valence(v) != 4) || (role == VertexRole::boundary && c.valence(v) != 3);
+    extraordinary +=
+        (role == VertexRole::interior && c.valence(v) != 4) || (role == VertexRole::boundary && c.valence(v) != 3);
   }
   double lo = std::numeric_limits<double>::infinity(), hi = 0;
   for (const Mat3& s : m.covariances) {
@@ -31,7 +32,8 @@ void print_info(const std::string& path) {
   }
   std::cout << "file: " << path << "\nvertices: " << m.n_vertices() << "\nfaces: " << m.n_faces() << " (";
   const char* sep = "";
-  for (const auto& [size, count] : face_sizes) std::cout << std::exchange(sep, ", ") << count << " with " << size << " sides";
+  for (const auto& [size, count] : face_sizes)
+    std::cout << std::exchange(sep, ", ") << count << " with " << size << " sides";
   std::cout << ")\nedges: " << c.n_edges() << "\nboundary edges: " << boundary_edges << "\nvalences:";
   for (const auto& [valence, count] : valences) std::cout << ' ' << valence << ':' << count;
   std::cout << "\nextraordinary vertices: " << extraordinary << "\n";

@@ -28,7 +28,7 @@ struct RenderArgs {
   std::vector<std::string> aovs;
   int level = 0, reference = -1;  // level 0: adaptive
   PlanArguments plans;
-  float pixels = 0;               // 0: default_pixels() of the output size
+  float pixels = 0;  // 0: default_pixels() of the output size
   std::string context = "auto";
   bool mesh_lines = false, wireframe = false, ellipsoids = false, no_cache = false, exact = false;
   float sigma = 1.0f;
@@ -47,7 +47,8 @@ std::vector<float> parse_floats(const std::string& text, const char* what, size_
     }
   }
   if (values.size() < min_count || values.size() > max_count)
-    throw usage_error(std::string(what) + ": expected " + std::to_string(min_count) + " to " + std::to_string(max_count) + " numbers, got '" + text + "'");
+    throw usage_error(std::string(what) + ": expected " + std::to_string(min_count) + " to " +
+                      std::to_string(max_count) + " numbers, got '" + text + "'");
   return values;
 }
 
@@ -56,13 +57,15 @@ std::vector<float> parse_floats(const std::string& text, const char* what, size_
 float default_pixels(int width, int height) { return std::max(4.0f, 0.01f * float(std::min(width, height))); }
 
 // One render with the given renderer (its context current): mesh, options, outputs.
-void render_one(SurfaceRenderer& renderer, const std::string& description, const RenderArgs& a, const CovarianceMesh& mesh) {
+void render_one(SurfaceRenderer& renderer, const std::string& description, const RenderArgs& a,
+                const CovarianceMesh& mesh) {
   const auto [width, height] = parse_pixel_size(a.size);
   std::string position_aov, normal_aov;
   for (const auto& aov : a.aovs) {
     const auto eq = aov.find('=');
     const std::string kind = aov.substr(0, eq), file = eq == std::string::npos ? "" : aov.substr(eq + 1);
-    if (file.empty() || (kind != "position" && kind != "normal")) throw usage_error("--aov: expected position=FILE.exr or normal=FILE.exr, got '" + aov + "'");
+    if (file.empty() || (kind != "position" && kind != "normal"))
+      throw usage_error("--aov: expected position=FILE.exr or normal=FILE.exr, got '" + aov + "'");
     (kind == "position" ? position_aov : normal_aov) = file;
   }
   const auto bg = parse_floats(a.background, "--background", 3, 3);
@@ -74,8 +77,10 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   }
   renderer.set_matcap(matcap);
   DrawOptions o;
-  if (a.level > 0) o.level = float(a.level), o.pixels = 0;
-  else o.pixels = a.pixels > 0 ? a.pixels : default_pixels(width, height);
+  if (a.level > 0)
+    o.level = float(a.level), o.pixels = 0;
+  else
+    o.pixels = a.pixels > 0 ? a.pixels : default_pixels(width, height);
   o.mode = a.mode == "normals" ? ShadingMode::normals : a.mode == "flat" ? ShadingMode::flat : ShadingMode::matcap;
   o.mesh_lines = a.mesh_lines;
   o.wireframe = a.wireframe;
@@ -90,7 +95,8 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
     camera = frame_mesh(mesh, c[0], c[1]);
     camera.distance = c.size() > 2 ? c[2] : distance;
   }
-  if (a.reference >= 1 && a.reference <= 6 && scheme_for(topology_of(mesh.mesh), a.plans.options()) == Scheme::catmull_clark) {
+  if (a.reference >= 1 && a.reference <= 6 &&
+      scheme_for(topology_of(mesh.mesh), a.plans.options()) == Scheme::catmull_clark) {
     // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level
     // then shows the two surfaces' values alone, not two draws' rounding (render/comparison/reference_triangles.h).
     DrawOptions at_level = o;
@@ -108,12 +114,15 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   if (!position_aov.empty()) write_image(position_aov, target.read(1), kPositionChannels);
   if (!normal_aov.empty()) write_image(normal_aov, target.read(2), kNormalChannels);
   std::ostringstream tessellation;
-  if (a.reference >= 0) tessellation << "reference level " << a.reference;
-  else if (o.pixels > 0) tessellation << "adaptive " << o.pixels << " px";
-  else tessellation << "level " << a.level;
+  if (a.reference >= 0)
+    tessellation << "reference level " << a.reference;
+  else if (o.pixels > 0)
+    tessellation << "adaptive " << o.pixels << " px";
+  else
+    tessellation << "level " << a.level;
   if (a.exact) tessellation << ", exact evaluator";
-  std::cout << "wrote " << a.output << " (" << width << "x" << height << ", " << renderer.tables().plans.n_patches() << " patches, "
-            << tessellation.str() << ", " << description << ")\n";
+  std::cout << "wrote " << a.output << " (" << width << "x" << height << ", " << renderer.tables().plans.n_patches()
+            << " patches, " << tessellation.str() << ", " << description << ")\n";
 }
 
 ContextKind context_kind(const std::string& name) {
@@ -121,7 +130,7 @@ ContextKind context_kind(const std::string& name) {
 }
 
 void render(const RenderArgs& a) {
-  load_matcap(a.matcap);    // before any GL work: a bad name or size is a usage error
+  load_matcap(a.matcap);  // before any GL work: a bad name or size is a usage error
   parse_pixel_size(a.size);
   const CovarianceMesh mesh = read_mesh(a.input);
   const auto context = create_offscreen_context(context_kind(a.context));
@@ -130,11 +139,11 @@ void render(const RenderArgs& a) {
 }
 
 // --script FILE.json: {"renders": [{"mesh": FILE or "sample:NAME", "output": FILE.png, "size": "WxH",
-// "level": L, "pixels": P, "depth": D, "approximate": true|false, "scheme": "auto"|"loop"|"catmull-clark", "loop_beta": "loop"|"warren", "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]",
-// "mesh_lines": bool, "wireframe": bool, "ellipsoids": bool, "sigma": k, "background": "r,g,b",
-// "aov": ["position=FILE.exr", ...], "reference": N, "exact": true|false,
-// "edits": [{"vertex": i, "mean": [x,y,z], "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]}
-// All renders share one process and one GL context.
+// "level": L, "pixels": P, "depth": D, "approximate": true|false, "scheme": "auto"|"loop"|"catmull-clark", "loop_beta":
+// "loop"|"warren", "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]", "mesh_lines": bool, "wireframe": bool,
+// "ellipsoids": bool, "sigma": k, "background": "r,g,b", "aov": ["position=FILE.exr", ...], "reference": N, "exact":
+// true|false, "edits": [{"vertex": i, "mean": [x,y,z], "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]} All
+// renders share one process and one GL context.
 void run_script(const std::string& path, const std::string& context_name) {
   nlohmann::json script;
   try {
@@ -174,11 +183,14 @@ void run_script(const std::string& path, const std::string& context_name) {
       a.exact = job.value("exact", a.exact);
       if (a.exact && a.reference >= 0) throw usage_error("exact and reference exclude each other");
       if (job.contains("level") && (a.level < 1 || a.level > 64)) throw usage_error("level must be 1..64");
-      if (a.mode != "matcap" && a.mode != "normals" && a.mode != "flat") throw usage_error("mode must be matcap, normals or flat");
+      if (a.mode != "matcap" && a.mode != "normals" && a.mode != "flat")
+        throw usage_error("mode must be matcap, normals or flat");
       CovarianceMesh mesh = a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh(a.input);
       for (const auto& edit : job.value("edits", nlohmann::json::array())) {
         const int v = edit.at("vertex").get<int>();
-        if (v < 0 || size_t(v) >= mesh.n_vertices()) throw usage_error("edit of vertex " + std::to_string(v) + ", but the mesh has " + std::to_string(mesh.n_vertices()));
+        if (v < 0 || size_t(v) >= mesh.n_vertices())
+          throw usage_error("edit of vertex " + std::to_string(v) + ", but the mesh has " +
+                            std::to_string(mesh.n_vertices()));
         if (edit.contains("mean")) {
           const auto m = edit["mean"].get<std::vector<double>>();
           if (m.size() != 3) throw usage_error("edit of vertex " + std::to_string(v) + ": mean needs 3 numbers");
@@ -186,13 +198,17 @@ void run_script(const std::string& path, const std::string& context_name) {
         }
         if (edit.contains("covariance")) {
           const auto c = edit["covariance"].get<std::vector<double>>();
-          if (c.size() != 6) throw usage_error("edit of vertex " + std::to_string(v) + ": covariance needs xx xy xz yy yz zz");
+          if (c.size() != 6)
+            throw usage_error("edit of vertex " + std::to_string(v) + ": covariance needs xx xy xz yy yz zz");
           Mat3 m;
           m << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
           mesh.set_covariance(size_t(v), m);
         }
-        if (edit.contains("scale")) mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * edit["scale"].get<double>());
-        if (!is_spd(mesh.covariance(size_t(v)))) throw usage_error("edit of vertex " + std::to_string(v) + " gives a covariance that is not positive definite");
+        if (edit.contains("scale"))
+          mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * edit["scale"].get<double>());
+        if (!is_spd(mesh.covariance(size_t(v))))
+          throw usage_error("edit of vertex " + std::to_string(v) +
+                            " gives a covariance that is not positive definite");
       }
       render_one(renderer, context->description(), a, mesh);
     } catch (const nlohmann::json::exception& e) {
@@ -207,7 +223,8 @@ void run_script(const std::string& path, const std::string& context_name) {
 
 void add_render_command(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
-  auto* cmd = app.add_subcommand("render", "Render the limit surface without a display (OSMesa, or EGL with --context)");
+  auto* cmd =
+      app.add_subcommand("render", "Render the limit surface without a display (OSMesa, or EGL with --context)");
   auto script = std::make_shared<std::string>();
   auto* input = cmd->add_option("input", a->input, "input mesh")->check(CLI::ExistingFile);
   auto* output = cmd->add_option("-o,--output", a->output, "output image (.png)");
@@ -216,37 +233,48 @@ void add_render_command(CLI::App& app) {
       ->excludes(input)
       ->excludes(output);
   cmd->add_option("--size", a->size, "image size WxH");
-  auto* level = cmd->add_option("--level", a->level, "uniform tessellation level (default: adaptive, see --pixels)")->check(CLI::Range(1, 64));
-  cmd->add_option("--pixels", a->pixels, "adaptive tessellation: target edge length in pixels (default: 1% of the smaller image side, at least 4)")->check(CLI::Range(0.5f, 1000.0f))->excludes(level);
+  auto* level = cmd->add_option("--level", a->level, "uniform tessellation level (default: adaptive, see --pixels)")
+                    ->check(CLI::Range(1, 64));
+  cmd->add_option(
+         "--pixels", a->pixels,
+         "adaptive tessellation: target edge length in pixels (default: 1% of the smaller image side, at least 4)")
+      ->check(CLI::Range(0.5f, 1000.0f))
+      ->excludes(level);
   add_plan_arguments(cmd, a->plans);
-  cmd->add_option("--matcap", a->matcap, "built-in MatCap (" + [] {
-    std::string s;
-    for (const auto& n : builtin_matcap_names()) s += (s.empty() ? "" : ", ") + n;
-    return s;
-  }() + ") or an image file");
+  cmd->add_option(
+      "--matcap", a->matcap, "built-in MatCap (" + [] {
+        std::string s;
+        for (const auto& n : builtin_matcap_names()) s += (s.empty() ? "" : ", ") + n;
+        return s;
+      }() + ") or an image file");
   cmd->add_option("--mode", a->mode, "shading")->check(CLI::IsMember({"matcap", "normals", "flat"}));
   cmd->add_option("--camera", a->camera, "orbit yaw,pitch[,distance] in degrees (default: auto-framed 30,20)");
   cmd->add_flag("--mesh", a->mesh_lines, "draw the base mesh as thin grey lines");
   cmd->add_flag("--wireframe", a->wireframe, "draw the tessellation wireframe over the shading");
-  cmd->add_flag("--no-cache", a->no_cache, "draw through the tessellation pipeline, not the surface cache's stored triangles (same image)");
+  cmd->add_flag("--no-cache", a->no_cache,
+                "draw through the tessellation pipeline, not the surface cache's stored triangles (same image)");
   cmd->add_option("--context", a->context, "GL context: auto (EGL on a GPU device, else OSMesa), osmesa, egl")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   cmd->add_flag("--ellipsoids", a->ellipsoids, "draw the covariance ellipsoids");
-  cmd->add_option("--sigma", a->sigma, "ellipsoid scale in standard deviations (k-sigma)")->check(CLI::Range(0.01f, 100.0f));
+  cmd->add_option("--sigma", a->sigma, "ellipsoid scale in standard deviations (k-sigma)")
+      ->check(CLI::Range(0.01f, 100.0f));
   cmd->add_option("--background", a->background, "background colour r,g,b in [0,1]");
   cmd->add_option("--aov", a->aovs, "world-space float buffers: position=FILE.exr, normal=FILE.exr");
-  auto* reference = cmd->add_option("--reference", a->reference,
-                                    "draw the CPU reference subdivision at level N instead of the patches: under Catmull-Clark "
-                                    "(N = 1..6) in the patches' own triangles at --level 2^N, so that diff against them shows the "
-                                    "surfaces alone; under Loop, whose triangles no reference level has, see --exact")
-                        ->check(CLI::Range(0, 7));
-  cmd->add_flag("--exact", a->exact,
-                "draw the patches' own triangles with the CPU's exact values at their vertices (double): diff against a "
-                "render of the patches shows the GPU's error alone, at any level and under either scheme")
+  auto* reference =
+      cmd->add_option("--reference", a->reference,
+                      "draw the CPU reference subdivision at level N instead of the patches: under Catmull-Clark "
+                      "(N = 1..6) in the patches' own triangles at --level 2^N, so that diff against them shows the "
+                      "surfaces alone; under Loop, whose triangles no reference level has, see --exact")
+          ->check(CLI::Range(0, 7));
+  cmd->add_flag(
+         "--exact", a->exact,
+         "draw the patches' own triangles with the CPU's exact values at their vertices (double): diff against a "
+         "render of the patches shows the GPU's error alone, at any level and under either scheme")
       ->excludes(reference);
   cmd->callback([a, script] {
     if (!script->empty()) return run_script(*script, a->context);
-    if (a->input.empty() || a->output.empty()) throw usage_error("render: give an input mesh and -o OUTPUT.png (or --script FILE.json)");
+    if (a->input.empty() || a->output.empty())
+      throw usage_error("render: give an input mesh and -o OUTPUT.png (or --script FILE.json)");
     render(*a);
   });
 }

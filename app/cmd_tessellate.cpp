@@ -17,7 +17,8 @@ void add_tessellate_command(CLI::App& app) {
     bool binary = false;
   };
   auto args = std::make_shared<Args>();
-  auto* cmd = app.add_subcommand("tessellate", "Evaluate the plans on the CPU into a watertight triangle mesh with normals");
+  auto* cmd =
+      app.add_subcommand("tessellate", "Evaluate the plans on the CPU into a watertight triangle mesh with normals");
   cmd->add_option("input", args->input, "input mesh")->required();
   cmd->add_option("-o,--output", args->output, "output .ply (x y z nx ny nz) or .obj")->required();
   add_plan_arguments(cmd, args->plans);
@@ -29,8 +30,8 @@ void add_tessellate_command(CLI::App& app) {
     const TriangleMesh t = tessellate(surface.tables().plans, surface.points(), args->level);
     write_triangle_mesh(args->output, t, args->binary);
     std::cout << "wrote " << args->output << " (" << (surface.scheme() == Scheme::loop ? "Loop, " : "Catmull-Clark, ")
-              << surface.tables().plans.n_patches() << " patches, " << t.positions.size()
-              << " vertices, " << t.triangles.size() << " triangles)\n";
+              << surface.tables().plans.n_patches() << " patches, " << t.positions.size() << " vertices, "
+              << t.triangles.size() << " triangles)\n";
   });
 }
 

@@ -14,8 +14,10 @@ int main(int argc, char** argv) {
   std::string size = "1280x800";
   bool no_vsync = false;
   std::string scheme, loop_beta = "loop";
-  CLI::App app{"gpsurf-editor: edit covariance meshes on their GPS limit surface (F1 in the window lists the bindings)"};
-  app.add_option("file", o.file, "mesh to open (.ply, .obj, .off, .stl); default: a built-in sample")->check(CLI::ExistingFile);
+  CLI::App app{
+      "gpsurf-editor: edit covariance meshes on their GPS limit surface (F1 in the window lists the bindings)"};
+  app.add_option("file", o.file, "mesh to open (.ply, .obj, .off, .stl); default: a built-in sample")
+      ->check(CLI::ExistingFile);
   app.add_option("--play", o.play, "replay recorded input (EVENTS.json), then exit")->check(CLI::ExistingFile);
   app.add_option("--record", o.record, "record the session's input to EVENTS.json (written on exit)");
   app.add_option("--screenshot", o.screenshot, "after the events, write the window to this PNG and exit");
@@ -25,8 +27,10 @@ int main(int argc, char** argv) {
   app.add_flag("--no-vsync", no_vsync, "draw as fast as possible");
   app.add_option("--scheme", scheme, "auto (Loop for a mesh of triangles only), loop or catmull-clark")
       ->check(CLI::IsMember({"auto", "loop", "catmull-clark"}));
-  app.add_option("--loop-beta", loop_beta, "Loop vertex weight: Loop's original or Warren's 3/(8n)")->check(CLI::IsMember({"loop", "warren"}));
-  app.failure_message([](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + std::string(e.what()) + "\n"; });
+  app.add_option("--loop-beta", loop_beta, "Loop vertex weight: Loop's original or Warren's 3/(8n)")
+      ->check(CLI::IsMember({"loop", "warren"}));
+  app.failure_message(
+      [](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + std::string(e.what()) + "\n"; });
   try {
     app.parse(argc, argv);
     const gps::PixelSize window = gps::parse_pixel_size(size);

@@ -71,7 +71,9 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   o.pixels = level > 0 ? 0.0f : 6.0f;
   o.surface_cache = kind != FrameKind::live;
   using Weld = gps::SurfaceCache::Weld;
-  renderer.surface_cache().set_weld(kind == FrameKind::welded ? Weld::at_capture : kind == FrameKind::captured ? Weld::off : s.weld_default);
+  renderer.surface_cache().set_weld(kind == FrameKind::welded     ? Weld::at_capture
+                                    : kind == FrameKind::captured ? Weld::off
+                                                                  : s.weld_default);
   // Fills the cache (or compiles the live programs); the second, still frame welds it where that
   // waits for one, as an editor's drag starts from a still frame.
   renderer.draw(s.target, s.edits.camera(), o);
@@ -84,7 +86,8 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
     const gps::TriangleMesh stored = renderer.surface_cache().stored_triangles();
     renderer.set_triangles(kind == FrameKind::floor ? stored : unwelded(stored));
     o.static_triangles = true;
-    state.counters["vertices"] = double(kind == FrameKind::floor ? stored.positions.size() : 3 * stored.triangles.size());
+    state.counters["vertices"] =
+        double(kind == FrameKind::floor ? stored.positions.size() : 3 * stored.triangles.size());
   }
   const std::vector<int> edited = s.edits.middle_vertices(1);
   const auto frame = [&] {
@@ -116,8 +119,10 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   }
   glDeleteQueries(1, &query);
   const gps::SurfaceCache& cache = renderer.surface_cache();
-  state.counters["captures"] = double(cache.captures() - captures) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
-  state.counters["refreshes"] = double(cache.refreshes() - refreshes) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
+  state.counters["captures"] =
+      double(cache.captures() - captures) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
+  state.counters["refreshes"] =
+      double(cache.refreshes() - refreshes) / double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.counters["patches"] = double(renderer.tables().plans.n_patches());
   state.counters["gpu_ms"] = gpu_ns * 1e-6 / double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.counters["first_ms"] = first_ms;
@@ -130,15 +135,16 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
 
 int main(int argc, char** argv) {
   // `gpsurf bench --render`'s samples, and the 100k-face sphere of the editor's figures.
-  const std::vector<MeshCase> meshes = {{"cube", 0},     {"wirecube", 0}, {"cylinder", 0}, {"valence5", 0},  {"cone-pointy", 0},
-                                        {"icosphere", 0}, {"pawn", 0},     {"pawn-quads", 0}, {"sphere", 100000}};
+  const std::vector<MeshCase> meshes = {{"cube", 0},     {"wirecube", 0},    {"cylinder", 0},
+                                        {"valence5", 0}, {"cone-pointy", 0}, {"icosphere", 0},
+                                        {"pawn", 0},     {"pawn-quads", 0},  {"sphere", 100000}};
   for (const MeshCase& m : meshes)
     for (const int level : {1, 4, 16, 64, 0})
-      for (const FrameKind kind :
-           {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor, FrameKind::unwelded, FrameKind::update,
-            FrameKind::welded, FrameKind::captured}) {
+      for (const FrameKind kind : {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor,
+                                   FrameKind::unwelded, FrameKind::update, FrameKind::welded, FrameKind::captured}) {
         const std::string id = m.id() + "/" + gps::bench::setting_name(level);
-        benchmark::RegisterBenchmark(("Frame/" + std::string(kKindNames[int(kind)]) + "/" + id).c_str(), BM_Frame, m, kind, level)
+        benchmark::RegisterBenchmark(("Frame/" + std::string(kKindNames[int(kind)]) + "/" + id).c_str(), BM_Frame, m,
+                                     kind, level)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
       }

@@ -53,8 +53,8 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const gps::PolygonTopology& t
 
 void counters(benchmark::State& state, const gps::CovarianceMesh& mesh) {
   state.counters["faces"] = double(mesh.n_faces());
-  state.counters["ns_per_base_face"] =
-      benchmark::Counter(double(mesh.n_faces()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_base_face"] = benchmark::Counter(
+      double(mesh.n_faces()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void BM_ReferenceOurs(benchmark::State& state) {
@@ -132,11 +132,13 @@ void BM_PreprocessOsd(benchmark::State& state) {
     Far::StencilTableFactoryReal<double>::Options stencil_options;
     stencil_options.generateOffsets = true;
     stencil_options.generateIntermediateLevels = true;
-    std::unique_ptr<const Far::StencilTableReal<double>> stencils(Far::StencilTableFactoryReal<double>::Create(*refiner, stencil_options));
+    std::unique_ptr<const Far::StencilTableReal<double>> stencils(
+        Far::StencilTableFactoryReal<double>::Create(*refiner, stencil_options));
     patch_options.SetPatchPrecision<double>();
     std::unique_ptr<const Far::PatchTable> patches(Far::PatchTableFactory::Create(*refiner, patch_options));
-    std::unique_ptr<const Far::StencilTableReal<double>> all(Far::StencilTableFactoryReal<double>::AppendLocalPointStencilTable(
-        *refiner, stencils.get(), patches->GetLocalPointStencilTable<double>()));
+    std::unique_ptr<const Far::StencilTableReal<double>> all(
+        Far::StencilTableFactoryReal<double>::AppendLocalPointStencilTable(
+            *refiner, stencils.get(), patches->GetLocalPointStencilTable<double>()));
     benchmark::DoNotOptimize(all.get());
   }
   counters(state, mesh);

@@ -38,8 +38,10 @@ gps::PlanOptions plan_options(bool exact, int depth) {
 }
 
 const std::vector<PlanKind>& plan_kinds() {
-  static const std::vector<PlanKind> kinds = {{"approx3", plan_options(false, 3)}, {"exact0", plan_options(true, 0)},
-                                              {"exact1", plan_options(true, 1)},   {"exact2", plan_options(true, 2)},
+  static const std::vector<PlanKind> kinds = {{"approx3", plan_options(false, 3)},
+                                              {"exact0", plan_options(true, 0)},
+                                              {"exact1", plan_options(true, 1)},
+                                              {"exact2", plan_options(true, 2)},
                                               {"exact3", plan_options(true, 3)}};
   return kinds;
 }
@@ -104,15 +106,17 @@ int main(int argc, char** argv) {
   // The valence samples, the wirecube, and icospheres under Catmull-Clark (every triangle three
   // quads, extraordinary vertices everywhere): 15k patches, and 246k, past what the thesis' depth-3
   // plans fit in llvmpipe's 128 MiB storage blocks (reported as an error there).
-  const std::vector<MeshCase> meshes = {{"valence3", 0}, {"valence5", 0},    {"valence8", 0},       {"valence10", 0},
+  const std::vector<MeshCase> meshes = {{"valence3", 0}, {"valence5", 0},     {"valence8", 0},     {"valence10", 0},
                                         {"wirecube", 0}, {"icosphere", 5120}, {"icosphere", 81920}};
   for (const MeshCase& m : meshes)
     for (size_t k = 0; k < plan_kinds().size(); ++k) {
       const std::string id = m.id() + "/" + plan_kinds()[k].name;
-      benchmark::RegisterBenchmark(("Preprocess/" + id).c_str(), BM_Preprocess, m, int(k))->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("Preprocess/" + id).c_str(), BM_Preprocess, m, int(k))
+          ->Unit(benchmark::kMillisecond);
       const std::vector<int> levels = m.faces ? std::vector<int>{1, 0} : std::vector<int>{4, 16, 0};
       for (const int level : levels)
-        benchmark::RegisterBenchmark(("Frame/" + id + "/" + gps::bench::setting_name(level)).c_str(), BM_Frame, m, int(k), level)
+        benchmark::RegisterBenchmark(("Frame/" + id + "/" + gps::bench::setting_name(level)).c_str(), BM_Frame, m,
+                                     int(k), level)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
     }

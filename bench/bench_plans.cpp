@@ -16,9 +16,9 @@ struct Case {
   int size;
 };
 // valence3..10 are cheap; the sphere at ~250 faces stands in for the thesis' anvil.
-constexpr Case kCases[] = {{"cube", 0},       {"wirecube", 0},   {"valence3", 0},     {"valence6", 0},
-                           {"valence10", 0},  {"sphere", 250},   {"grid", 1000},      {"sphere", 1000},
-                           {"grid", 10000},   {"sphere", 10000}, {"grid", 100000},    {"sphere", 100000}};
+constexpr Case kCases[] = {{"cube", 0},      {"wirecube", 0},   {"valence3", 0},  {"valence6", 0},
+                           {"valence10", 0}, {"sphere", 250},   {"grid", 1000},   {"sphere", 1000},
+                           {"grid", 10000},  {"sphere", 10000}, {"grid", 100000}, {"sphere", 100000}};
 
 struct Prepared {
   gps::CovarianceMesh mesh;
@@ -47,8 +47,8 @@ void BM_BuildPlans(benchmark::State& state) {
   const gps::PolygonTopology topology = gps::topology_of(p.mesh.mesh);
   for (auto _ : state) benchmark::DoNotOptimize(gps::build_plans(topology, 3));
   label(state, c, p);
-  state.counters["us_per_face"] =
-      benchmark::Counter(double(p.mesh.n_faces()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["us_per_face"] = benchmark::Counter(
+      double(p.mesh.n_faces()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void BM_ApplyStencils(benchmark::State& state) {

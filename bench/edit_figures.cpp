@@ -15,29 +15,28 @@ nlohmann::json edit_figures(const std::string& name, int faces, const PlanOption
   const DrawStatistics statistics = renderer.last_statistics();
   renderer.set_collect_statistics(false);
   const std::vector<int> one = scene.middle_vertices(1), sixteen = scene.middle_vertices(16);
-  const std::vector<double> t = interleaved_median_seconds(
-      {[&] { scene.frame(); },
-       [&] {
-         scene.edit(one);
-         scene.frame();
-       },
-       [&] {
-         scene.edit(sixteen);
-         scene.frame();
-       },
-       [&] {
-         renderer.recompute_all();
-         scene.frame();
-       },
-       [&] {
-         scene.edit(one);
-         glFinish();
-       },
-       [&] {
-         renderer.recompute_all();
-         glFinish();
-       }},
-      20.0);
+  const std::vector<double> t = interleaved_median_seconds({[&] { scene.frame(); },
+                                                            [&] {
+                                                              scene.edit(one);
+                                                              scene.frame();
+                                                            },
+                                                            [&] {
+                                                              scene.edit(sixteen);
+                                                              scene.frame();
+                                                            },
+                                                            [&] {
+                                                              renderer.recompute_all();
+                                                              scene.frame();
+                                                            },
+                                                            [&] {
+                                                              scene.edit(one);
+                                                              glFinish();
+                                                            },
+                                                            [&] {
+                                                              renderer.recompute_all();
+                                                              glFinish();
+                                                            }},
+                                                           20.0);
   return {{"mesh", name + "/" + std::to_string(faces)},
           {"faces", scene.mesh().n_faces()},
           {"vertices", scene.mesh().n_vertices()},

@@ -11,8 +11,8 @@
 
 namespace gps {
 
-nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptions& options, int size, const std::vector<int>& levels,
-                             float adaptive_pixels) {
+nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptions& options, int size,
+                             const std::vector<int>& levels, float adaptive_pixels) {
   EditScene scene(name, faces, options);  // its edits scale a covariance by 1.1 and the next one back
   SurfaceRenderer& renderer = scene.renderer();
   const CovarianceMesh& mesh = scene.mesh();
@@ -41,13 +41,15 @@ nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptio
     const bool cache_held = renderer.surface_cache().holds_triangles();
     // The floor draws exactly the cached triangles; past the cache's limit, those of the CPU
     // tessellation (uniform levels; adaptive ones then have no floor).
-    const TriangleMesh triangles = cache_held ? renderer.surface_cache().stored_triangles()
+    const TriangleMesh triangles = cache_held        ? renderer.surface_cache().stored_triangles()
                                    : o.pixels > 0.0f ? TriangleMesh{}
                                                      : tessellate(renderer.tables().plans, points, int(o.level));
-    const FrameTiming edit = time_gl_work([&] {
-      scene.edit(edited);
-      renderer.draw(target, camera, o);
-    }, repeats);
+    const FrameTiming edit = time_gl_work(
+        [&] {
+          scene.edit(edited);
+          renderer.draw(target, camera, o);
+        },
+        repeats);
     renderer.set_triangles(triangles);
     DrawOptions static_options = o;
     static_options.static_triangles = true;

@@ -13,7 +13,7 @@ namespace gps {
 /// the surface cache's frame (stored triangles), a frame after a one-vertex edit (the cache
 /// refreshes that vertex's patches), and the floor: the cached triangles, welded, drawn from a
 /// static indexed vertex buffer with the same shading. JSON "level" is 0 for the adaptive row.
-nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptions& options, int size, const std::vector<int>& levels,
-                             float adaptive_pixels);
+nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptions& options, int size,
+                             const std::vector<int>& levels, float adaptive_pixels);
 
 }  // namespace gps

@@ -10,7 +10,8 @@ std::vector<double> interleaved_median_seconds(const std::vector<std::function<v
   using Clock = std::chrono::steady_clock;
   std::vector<std::vector<double>> times(functions.size());
   const auto start = Clock::now();
-  for (size_t round = 0; round < 3 || (round < 200 && std::chrono::duration<double>(Clock::now() - start).count() < budget); ++round)
+  for (size_t round = 0;
+       round < 3 || (round < 200 && std::chrono::duration<double>(Clock::now() - start).count() < budget); ++round)
     for (size_t i = 0; i < functions.size(); ++i) {
       const auto t0 = Clock::now();
       functions[i]();
@@ -21,6 +22,8 @@ std::vector<double> interleaved_median_seconds(const std::vector<std::function<v
   return medians;
 }
 
-double median_seconds(const std::function<void()>& f, double budget) { return interleaved_median_seconds({f}, budget)[0]; }
+double median_seconds(const std::function<void()>& f, double budget) {
+  return interleaved_median_seconds({f}, budget)[0];
+}
 
 }  // namespace gps

@@ -39,7 +39,7 @@ enum {
   kSmallestShift = 17,  // blocks over 128 KiB: ASan maps each of them
   kLargestShift = 26,   // up to 64 MiB
   kKeptPerSize = 8,
-  kSlots = 1 << 12,     // blocks in use at once (a power of two)
+  kSlots = 1 << 12,  // blocks in use at once (a power of two)
 };
 
 struct Block {
@@ -157,7 +157,8 @@ void free(void* p) {
     const int twice = is_kept(p);
     release();
     if (twice) {
-      static const char message[] = "ERROR: AddressSanitizer (scripts/asan_block_reuse.c): attempting double-free of a kept block\n";
+      static const char message[] =
+          "ERROR: AddressSanitizer (scripts/asan_block_reuse.c): attempting double-free of a kept block\n";
       (void)!write(2, message, sizeof message - 1);
       __sanitizer_print_stack_trace();
       abort();

@@ -17,7 +17,8 @@ double snapped(double value, double step) { return step * std::round(value / ste
 
 }  // namespace
 
-HandleFrame handle_frame(const Vec3& centre, const EllipsoidAxes& axes, double k_sigma, const Viewport& view, double min_pixels) {
+HandleFrame handle_frame(const Vec3& centre, const EllipsoidAxes& axes, double k_sigma, const Viewport& view,
+                         double min_pixels) {
   HandleFrame f;
   f.centre = centre;
   f.axes = axes;
@@ -26,8 +27,10 @@ HandleFrame handle_frame(const Vec3& centre, const EllipsoidAxes& axes, double k
   return f;
 }
 
-HandleFrame handle_frame(const CovarianceMesh& mesh, int vertex, double k_sigma, const Viewport& view, double min_pixels) {
-  return handle_frame(mesh.mean(size_t(vertex)), ellipsoid_axes(mesh.covariance(size_t(vertex))), k_sigma, view, min_pixels);
+HandleFrame handle_frame(const CovarianceMesh& mesh, int vertex, double k_sigma, const Viewport& view,
+                         double min_pixels) {
+  return handle_frame(mesh.mean(size_t(vertex)), ellipsoid_axes(mesh.covariance(size_t(vertex))), k_sigma, view,
+                      min_pixels);
 }
 
 namespace {
@@ -45,8 +48,8 @@ void consider(NearestProjected& nearest, std::vector<Handle>& handles, const Han
 
 }  // namespace
 
-std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh, const std::vector<int>& vertices,
-                                 double k_sigma, float radius) {
+std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh,
+                                 const std::vector<int>& vertices, double k_sigma, float radius) {
   NearestProjected nearest(view.camera, view.width, view.height, pixel, radius, 1.0f);
   std::vector<Handle> handles;
   for (const int v : vertices) consider(nearest, handles, handle_frame(mesh, v, k_sigma, view), v);
@@ -54,7 +57,8 @@ std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const Co
   return handles[size_t(nearest.best())];
 }
 
-std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const HandleFrame& frame, int vertex, float radius) {
+std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const HandleFrame& frame, int vertex,
+                                 float radius) {
   NearestProjected nearest(view.camera, view.width, view.height, pixel, radius, 1.0f);
   std::vector<Handle> handles;
   consider(nearest, handles, frame, vertex);
@@ -62,15 +66,17 @@ std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const Ha
   return handles[size_t(nearest.best())];
 }
 
-HandleDrag::HandleDrag(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Handle& grabbed, double k_sigma,
-                       const Viewport& view, glm::vec2 start_pixel, bool common_frame, const std::optional<Vec3>& pivot)
+HandleDrag::HandleDrag(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Handle& grabbed,
+                       double k_sigma, const Viewport& view, glm::vec2 start_pixel, bool common_frame,
+                       const std::optional<Vec3>& pivot)
     : vertices_(vertices), handle_(grabbed), common_frame_(common_frame), k_sigma_(k_sigma), start_pixel_(start_pixel) {
   for (size_t i = 0; i < vertices_.size(); ++i) {
     start_axes_.push_back(ellipsoid_axes(mesh.covariance(size_t(vertices_[i]))));
     if (vertices_[i] == grabbed.vertex) grabbed_index_ = i;
   }
   grabbed_mean_ = mesh.mean(size_t(grabbed.vertex));
-  const HandleFrame f = handle_frame(pivot.value_or(grabbed_mean_), ellipsoid_axes(mesh.covariance(size_t(grabbed.vertex))), k_sigma, view);
+  const HandleFrame f = handle_frame(pivot.value_or(grabbed_mean_),
+                                     ellipsoid_axes(mesh.covariance(size_t(grabbed.vertex))), k_sigma, view);
   centre_ = f.centre;
   normal_ = vertex_normal(mesh, grabbed.vertex);
   sigma_ = f.axes.sigmas.maxCoeff();
@@ -148,7 +154,8 @@ std::optional<Vec3> HandleDrag::move_motion(const Viewport& view, glm::vec2 pixe
   return distance * d;
 }
 
-std::optional<std::vector<GaussianChange>> HandleDrag::update(const Viewport& view, glm::vec2 pixel, const DragModifiers& modifiers) {
+std::optional<std::vector<GaussianChange>> HandleDrag::update(const Viewport& view, glm::vec2 pixel,
+                                                              const DragModifiers& modifiers) {
   change_ = GaussianChange{};
   if (handle_.is_centre()) {
     const auto motion = move_motion(view, pixel, modifiers.snap);
@@ -201,20 +208,34 @@ std::string HandleDrag::describe() const {
   char text[160];
   static const char* kAxisNames[] = {"x", "y", "z"};
   switch (kind_) {
-    case Kind::undecided: return "drag along the axis to scale, across it to turn";
+    case Kind::undecided:
+      return "drag along the axis to scale, across it to turn";
     case Kind::scale:
     case Kind::rotate:
-      if (change_.scale != 1.0 && change_.scale_axis.isZero()) std::snprintf(text, sizeof text, "scale all σ ×%.3f", change_.scale);
-      else if (kind_ == Kind::scale) std::snprintf(text, sizeof text, "scale σ%d ×%.3f", handle_.axis + 1, change_.scale);
-      else std::snprintf(text, sizeof text, "turn %.1f°", Eigen::AngleAxisd(change_.rotation).angle() * 180.0 / M_PI);
+      if (change_.scale != 1.0 && change_.scale_axis.isZero())
+        std::snprintf(text, sizeof text, "scale all σ ×%.3f", change_.scale);
+      else if (kind_ == Kind::scale)
+        std::snprintf(text, sizeof text, "scale σ%d ×%.3f", handle_.axis + 1, change_.scale);
+      else
+        std::snprintf(text, sizeof text, "turn %.1f°", Eigen::AngleAxisd(change_.rotation).angle() * 180.0 / M_PI);
       return text;
     case Kind::move: {
       const double distance = change_.translation.norm();
       switch (constraint_) {
-        case MoveConstraint::view_plane: std::snprintf(text, sizeof text, "move %.4f (X/Y/Z: along an axis, Shift: in a plane, N: normal)", distance); break;
-        case MoveConstraint::axis: std::snprintf(text, sizeof text, "move along %s %s", kAxisNames[constraint_axis_], typed_.empty() ? "" : typed_.c_str()); break;
-        case MoveConstraint::plane: std::snprintf(text, sizeof text, "move in the plane normal to %s %.4f", kAxisNames[constraint_axis_], distance); break;
-        case MoveConstraint::normal: std::snprintf(text, sizeof text, "move along the normal %s", typed_.empty() ? "" : typed_.c_str()); break;
+        case MoveConstraint::view_plane:
+          std::snprintf(text, sizeof text, "move %.4f (X/Y/Z: along an axis, Shift: in a plane, N: normal)", distance);
+          break;
+        case MoveConstraint::axis:
+          std::snprintf(text, sizeof text, "move along %s %s", kAxisNames[constraint_axis_],
+                        typed_.empty() ? "" : typed_.c_str());
+          break;
+        case MoveConstraint::plane:
+          std::snprintf(text, sizeof text, "move in the plane normal to %s %.4f", kAxisNames[constraint_axis_],
+                        distance);
+          break;
+        case MoveConstraint::normal:
+          std::snprintf(text, sizeof text, "move along the normal %s", typed_.empty() ? "" : typed_.c_str());
+          break;
       }
       return text;
     }

@@ -35,15 +35,18 @@ struct HandleFrame {
   Vec3 end(int axis, int side) const { return centre + double(side) * lengths[axis] * axes.axes.col(axis); }
 };
 
-HandleFrame handle_frame(const CovarianceMesh& mesh, int vertex, double k_sigma, const Viewport& view, double min_pixels = 24.0);
-HandleFrame handle_frame(const Vec3& centre, const EllipsoidAxes& axes, double k_sigma, const Viewport& view, double min_pixels = 24.0);
+HandleFrame handle_frame(const CovarianceMesh& mesh, int vertex, double k_sigma, const Viewport& view,
+                         double min_pixels = 24.0);
+HandleFrame handle_frame(const Vec3& centre, const EllipsoidAxes& axes, double k_sigma, const Viewport& view,
+                         double min_pixels = 24.0);
 
 /// The handle of `vertices` nearest to `pixel` within `radius` pixels (axis ends before the centre
 /// when equally near, then the front-most); nullopt when none is that near.
-std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh, const std::vector<int>& vertices,
-                                 double k_sigma, float radius = 8.0f);
+std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh,
+                                 const std::vector<int>& vertices, double k_sigma, float radius = 8.0f);
 /// The same for one gizmo, `frame`, that edits `vertex` (and the selection with it) wherever it sits.
-std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const HandleFrame& frame, int vertex, float radius = 8.0f);
+std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const HandleFrame& frame, int vertex,
+                                 float radius = 8.0f);
 
 /// How the centre handle moves the mean: in the view plane, along a world axis (X/Y/Z), in the
 /// plane normal to one (Shift+X/Y/Z), or along the surface normal at the vertex (N).
@@ -67,12 +70,14 @@ class HandleDrag {
 public:
   enum class Kind { undecided, scale, rotate, move };
 
-  HandleDrag(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Handle& grabbed, double k_sigma, const Viewport& view,
-             glm::vec2 start_pixel, bool common_frame = false, const std::optional<Vec3>& pivot = std::nullopt);
+  HandleDrag(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Handle& grabbed, double k_sigma,
+             const Viewport& view, glm::vec2 start_pixel, bool common_frame = false,
+             const std::optional<Vec3>& pivot = std::nullopt);
 
   /// The change of each of vertices() for the cursor at `pixel` (applied to their values at the
   /// start of the drag); nullopt when the cursor's ray misses the drag plane.
-  std::optional<std::vector<GaussianChange>> update(const Viewport& view, glm::vec2 pixel, const DragModifiers& modifiers = {});
+  std::optional<std::vector<GaussianChange>> update(const Viewport& view, glm::vec2 pixel,
+                                                    const DragModifiers& modifiers = {});
 
   /// Constrains a centre drag (axis: 0..2 for X/Y/Z, ignored for view_plane and normal).
   void constrain(MoveConstraint constraint, int axis = 0);
@@ -102,7 +107,8 @@ private:
   size_t grabbed_index_ = 0;
   bool common_frame_ = false;
   double k_sigma_ = 2.0;
-  Vec3 centre_ = Vec3::Zero(), normal_ = Vec3::UnitZ();  // the gizmo's centre at the start (the pivot), the grabbed vertex's normal
+  Vec3 centre_ = Vec3::Zero(),
+       normal_ = Vec3::UnitZ();  // the gizmo's centre at the start (the pivot), the grabbed vertex's normal
   Vec3 grabbed_mean_ = Vec3::Zero();
   Vec3 axis_ = Vec3::UnitX();  // the grabbed axis end's direction (side included), unit
   double length_ = 1.0;        // the grabbed end's distance from the centre

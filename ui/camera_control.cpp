@@ -19,7 +19,8 @@ void pan(Camera& camera, glm::vec2 delta, int height) {
   camera.target += per_pixel * (-delta.x * right + delta.y * up);
 }
 
-void zoom_to_cursor(Camera& camera, float steps, int width, int height, glm::vec2 cursor, std::optional<glm::vec3> anchor) {
+void zoom_to_cursor(Camera& camera, float steps, int width, int height, glm::vec2 cursor,
+                    std::optional<glm::vec3> anchor) {
   const float scale = std::pow(0.85f, steps);
   const glm::vec3 eye = camera.eye();
   if (!anchor) {  // the cursor's point at the target's depth
@@ -36,7 +37,8 @@ void zoom_to_cursor(Camera& camera, float steps, int width, int height, glm::vec
   camera.distance = new_distance;
 }
 
-Camera frame_points(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices, double min_radius) {
+Camera frame_points(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices,
+                    double min_radius) {
   if (vertices.empty()) return camera;
   Vec3 lo = mesh.mean(size_t(vertices[0])), hi = lo;
   for (const int v : vertices) {
@@ -44,7 +46,8 @@ Camera frame_points(const Camera& camera, const CovarianceMesh& mesh, const std:
     hi = hi.cwiseMax(mesh.mean(size_t(v)));
   }
   const Vec3 centre = 0.5 * (lo + hi), half = Vec3::Constant(min_radius / std::sqrt(3.0));
-  Camera framed = frame_box(lo.cwiseMin(centre - half), hi.cwiseMax(centre + half), camera.yaw_degrees, camera.pitch_degrees);
+  Camera framed =
+      frame_box(lo.cwiseMin(centre - half), hi.cwiseMax(centre + half), camera.yaw_degrees, camera.pitch_degrees);
   framed.fov_degrees = camera.fov_degrees;
   return framed;
 }
@@ -53,8 +56,8 @@ Camera frame_points(const Camera& camera, const CovarianceMesh& mesh, const std:
 
 namespace gps {
 
-Camera frame_points_in_region(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices, double min_radius,
-                              glm::vec2 window, glm::vec2 region_min, glm::vec2 region_max) {
+Camera frame_points_in_region(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices,
+                              double min_radius, glm::vec2 window, glm::vec2 region_min, glm::vec2 region_max) {
   Camera framed = frame_points(camera, mesh, vertices, min_radius);
   framed.orthographic = camera.orthographic;
   const glm::vec2 region = glm::max(region_max - region_min, glm::vec2(1.0f));

@@ -20,15 +20,17 @@ void pan(Camera& camera, glm::vec2 delta, int height);
 
 /// Zooms by 0.85^steps toward `anchor` (the surface point under the cursor; else the point at the
 /// target's depth): a homothety of the camera about the anchor, which stays under the cursor.
-void zoom_to_cursor(Camera& camera, float steps, int width, int height, glm::vec2 cursor, std::optional<glm::vec3> anchor);
+void zoom_to_cursor(Camera& camera, float steps, int width, int height, glm::vec2 cursor,
+                    std::optional<glm::vec3> anchor);
 
 /// The camera at the same angles framing the given points (all of them in view); `camera` unchanged
 /// when there are none. Points closer than `min_radius` to their centre are framed at that radius.
-Camera frame_points(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices, double min_radius);
+Camera frame_points(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices,
+                    double min_radius);
 
 /// frame_points() fitted into the window-pixel rectangle [region_min, region_max] of a window of
 /// size `window` (the part the panels leave free): the points' centre shows at the region's centre.
-Camera frame_points_in_region(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices, double min_radius,
-                              glm::vec2 window, glm::vec2 region_min, glm::vec2 region_max);
+Camera frame_points_in_region(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices,
+                              double min_radius, glm::vec2 window, glm::vec2 region_min, glm::vec2 region_max);
 
 }  // namespace gps

@@ -15,9 +15,12 @@ std::string Shortcut::text() const {
     name = "Numpad " + std::to_string(key - GLFW_KEY_KP_0);
   } else {
     name = key_name(key);
-    if (name.size() == 1) name[0] = char(std::toupper(static_cast<unsigned char>(name[0])));
-    else if (!name.empty() && name[0] == 'f' && name.size() <= 3) name[0] = 'F';
-    else if (!name.empty()) name[0] = char(std::toupper(static_cast<unsigned char>(name[0])));
+    if (name.size() == 1)
+      name[0] = char(std::toupper(static_cast<unsigned char>(name[0])));
+    else if (!name.empty() && name[0] == 'f' && name.size() <= 3)
+      name[0] = 'F';
+    else if (!name.empty())
+      name[0] = char(std::toupper(static_cast<unsigned char>(name[0])));
   }
   return std::string(ctrl ? "Ctrl+" : "") + (shift ? "Shift+" : "") + (alt ? "Alt+" : "") + name;
 }
@@ -63,7 +66,8 @@ void CommandTable::draw_menu_bar() const {
         continue;
       }
       const std::string shortcut = c.shortcuts.empty() ? "" : c.shortcuts.front().text();
-      if (ImGui::MenuItem(c.label.c_str(), shortcut.empty() ? nullptr : shortcut.c_str(), c.checked && c.checked(), is_enabled(c)) &&
+      if (ImGui::MenuItem(c.label.c_str(), shortcut.empty() ? nullptr : shortcut.c_str(), c.checked && c.checked(),
+                          is_enabled(c)) &&
           c.action)
         c.action();
     }

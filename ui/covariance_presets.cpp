@@ -23,7 +23,8 @@ Vec3 vertex_normal(const CovarianceMesh& mesh, int vertex) {
 
 double mean_sigma(const Mat3& covariance) { return std::pow(std::max(covariance.determinant(), 1e-300), 1.0 / 6.0); }
 
-std::vector<Mat3> preset_covariances(const CovarianceMesh& mesh, const std::vector<int>& vertices, CovariancePreset preset, double sigma) {
+std::vector<Mat3> preset_covariances(const CovarianceMesh& mesh, const std::vector<int>& vertices,
+                                     CovariancePreset preset, double sigma) {
   std::vector<Mat3> out;
   if (preset == CovariancePreset::inferred) {
     CovarianceMesh copy;
@@ -39,12 +40,23 @@ std::vector<Mat3> preset_covariances(const CovarianceMesh& mesh, const std::vect
     const Mat3 along = n * n.transpose(), across = Mat3::Identity() - along;
     const double s = mean_sigma(c), thin = kFlatRatio * s;
     switch (preset) {
-      case CovariancePreset::isotropic: out.push_back(sigma * sigma * Mat3::Identity()); break;
-      case CovariancePreset::disc: out.push_back(s * s * across + thin * thin * along); break;
-      case CovariancePreset::needle: out.push_back(thin * thin * across + s * s * along); break;
-      case CovariancePreset::sharpen: out.push_back(0.1 * c); break;
-      case CovariancePreset::soften: out.push_back(10.0 * c); break;
-      case CovariancePreset::inferred: break;
+      case CovariancePreset::isotropic:
+        out.push_back(sigma * sigma * Mat3::Identity());
+        break;
+      case CovariancePreset::disc:
+        out.push_back(s * s * across + thin * thin * along);
+        break;
+      case CovariancePreset::needle:
+        out.push_back(thin * thin * across + s * s * along);
+        break;
+      case CovariancePreset::sharpen:
+        out.push_back(0.1 * c);
+        break;
+      case CovariancePreset::soften:
+        out.push_back(10.0 * c);
+        break;
+      case CovariancePreset::inferred:
+        break;
     }
   }
   return out;

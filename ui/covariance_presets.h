@@ -24,6 +24,7 @@ constexpr double kFlatRatio = 0.1;
 /// and needle keep each vertex's mean_sigma() (σ in the wide directions, kFlatRatio·σ in the thin
 /// ones; the disc is thin along the normal, the needle long along it); sharpen scales Σ by 0.1,
 /// soften by 10; inferred recomputes Eq. 16–17 from the current means (bias 0.05).
-std::vector<Mat3> preset_covariances(const CovarianceMesh& mesh, const std::vector<int>& vertices, CovariancePreset preset, double sigma);
+std::vector<Mat3> preset_covariances(const CovarianceMesh& mesh, const std::vector<int>& vertices,
+                                     CovariancePreset preset, double sigma);
 
 }  // namespace gps

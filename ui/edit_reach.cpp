@@ -32,7 +32,8 @@ public:
 private:
   Eigen::Vector3i cell_of(const Vec3& p) const { return (p / cell_).array().floor().cast<int>(); }
   static long long key(const Eigen::Vector3i& c) {
-    return (static_cast<long long>(c.x()) * 73856093LL) ^ (static_cast<long long>(c.y()) * 19349663LL) ^ (static_cast<long long>(c.z()) * 83492791LL);
+    return (static_cast<long long>(c.x()) * 73856093LL) ^ (static_cast<long long>(c.y()) * 19349663LL) ^
+           (static_cast<long long>(c.z()) * 83492791LL);
   }
   double cell_;
   std::unordered_map<long long, std::vector<int>> cells_;
@@ -43,15 +44,20 @@ private:
 double falloff_weight(Falloff falloff, double t) {
   t = std::clamp(t, 0.0, 1.0);
   switch (falloff) {
-    case Falloff::smooth: return 1.0 - t * t * (3.0 - 2.0 * t);
-    case Falloff::linear: return 1.0 - t;
-    case Falloff::sharp: return (1.0 - t) * (1.0 - t);
-    case Falloff::constant: return 1.0;
+    case Falloff::smooth:
+      return 1.0 - t * t * (3.0 - 2.0 * t);
+    case Falloff::linear:
+      return 1.0 - t;
+    case Falloff::sharp:
+      return (1.0 - t) * (1.0 - t);
+    case Falloff::constant:
+      return 1.0;
   }
   return 0.0;
 }
 
-std::vector<ReachedVertex> edit_reach(const std::vector<Vec3>& means, const std::vector<int>& selected, const ReachOptions& options) {
+std::vector<ReachedVertex> edit_reach(const std::vector<Vec3>& means, const std::vector<int>& selected,
+                                      const ReachOptions& options) {
   std::vector<ReachedVertex> reach;
   std::vector<char> reached(means.size(), 0);
   for (size_t s = 0; s < selected.size(); ++s) {
@@ -102,8 +108,8 @@ std::vector<ReachedVertex> edit_reach(const std::vector<Vec3>& means, const std:
   return reach;
 }
 
-void apply_reach(EditorDocument& document, const std::vector<ReachedVertex>& reach, const std::vector<GaussianChange>& changes,
-                 int mirror_axis) {
+void apply_reach(EditorDocument& document, const std::vector<ReachedVertex>& reach,
+                 const std::vector<GaussianChange>& changes, int mirror_axis) {
   for (const ReachedVertex& r : reach) {
     GaussianChange change = r.weight == 1.0 ? changes[r.source] : changes[r.source].weighted(r.weight);
     if (r.mirrored) change = change.mirrored(mirror_axis);

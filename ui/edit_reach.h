@@ -24,7 +24,7 @@ struct ReachOptions {
   double radius = 0.5;
   Falloff falloff = Falloff::smooth;
   bool mirror = false;
-  int mirror_axis = 0;           // mirror across the plane x (0), y (1) or z (2) = 0
+  int mirror_axis = 0;             // mirror across the plane x (0), y (1) or z (2) = 0
   double mirror_tolerance = 1e-6;  // world distance within which positions match
 };
 
@@ -36,11 +36,12 @@ struct ReachedVertex {
 };
 
 /// The reach of an edit of `selected` (vertex indices into `means`, the start positions).
-std::vector<ReachedVertex> edit_reach(const std::vector<Vec3>& means, const std::vector<int>& selected, const ReachOptions& options);
+std::vector<ReachedVertex> edit_reach(const std::vector<Vec3>& means, const std::vector<int>& selected,
+                                      const ReachOptions& options);
 
 /// Sets every reached vertex to its start value with its source's change applied at its weight
 /// (mirrored where it is the mirror image). Covariances stay SPD.
-void apply_reach(EditorDocument& document, const std::vector<ReachedVertex>& reach, const std::vector<GaussianChange>& changes,
-                 int mirror_axis);
+void apply_reach(EditorDocument& document, const std::vector<ReachedVertex>& reach,
+                 const std::vector<GaussianChange>& changes, int mirror_axis);
 
 }  // namespace gps

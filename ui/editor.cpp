@@ -33,9 +33,14 @@ const std::vector<std::string> kImageExtensions = {".png", ".jpg", ".jpeg", ".ex
 EditorApp::EditorApp(const EditorOptions& options)
     : options_(options),
       window_(options.width, options.height, "gpsurf", true),
-      input_forwarder_(window_.window(), [this](InputEvent e) {
-        if (!script_) queue_.push(std::move(e));  // a replay is not disturbed by the real pointer
-      }, [this] { request({Action::Kind::quit, ""}); }),
+      input_forwarder_(
+          window_.window(),
+          [this](InputEvent e) {
+            if (!script_) queue_.push(std::move(e));  // a replay is not disturbed by the real pointer
+          },
+          [this] {
+            request({Action::Kind::quit, ""});
+          }),
       recent_(RecentFiles::default_store()),
       free_max_(float(options.width), float(options.height)) {
   IMGUI_CHECKVERSION();
@@ -51,14 +56,16 @@ EditorApp::EditorApp(const EditorOptions& options)
   // DejaVu (Debian's fonts-dejavu-core) covers the Greek letters and symbols the panels use.
   const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
   static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x22FF, 0};
-  if (!std::filesystem::exists(font) || !io.Fonts->AddFontFromFileTTF(font, 15.0f, nullptr, ranges)) io.Fonts->AddFontDefault();
+  if (!std::filesystem::exists(font) || !io.Fonts->AddFontFromFileTTF(font, 15.0f, nullptr, ranges))
+    io.Fonts->AddFontDefault();
   ImGui::StyleColorsDark();
   ImGui_ImplOpenGL3_Init("#version 450 core");
   renderer_ = std::make_unique<SurfaceRenderer>();
   timer_ = std::make_unique<GpuPassTimer>();
   renderer_->set_pass_timer(timer_.get());
   renderer_->set_collect_statistics(true);
-  if (const std::string error = load_settings(config_folder_, view_, reach_options_); !error.empty()) set_status(error, true);
+  if (const std::string error = load_settings(config_folder_, view_, reach_options_); !error.empty())
+    set_status(error, true);
   if (!options.vsync) view_.vsync = false;
   if (options.scheme >= 0) view_.scheme = options.scheme;
   if (options.warren) view_.warren = true;
@@ -95,7 +102,8 @@ int EditorApp::run() {
     if (script_finished()) break;
   }
   if (recorder_) recorder_->save(options_.record);
-  if (const std::string error = save_settings(config_folder_, view_, reach_options_); !error.empty()) set_status(error, true);
+  if (const std::string error = save_settings(config_folder_, view_, reach_options_); !error.empty())
+    set_status(error, true);
   if (!options_.stats.empty()) write_statistics(options_.stats);
   return 0;
 }
@@ -123,8 +131,11 @@ void EditorApp::frame() {
   glfwGetWindowSize(window_.window(), &width, &height);
   window_.framebuffer_size(fb_width, fb_height);
   io.DisplaySize = ImVec2(float(width), float(height));
-  if (width > 0 && height > 0) io.DisplayFramebufferScale = ImVec2(float(fb_width) / float(width), float(fb_height) / float(height));
-  io.DeltaTime = script_ ? 1.0f / 60.0f : std::clamp(std::chrono::duration<float>(frame_input_time_ - last_frame_time_).count(), 1e-4f, 1.0f);
+  if (width > 0 && height > 0)
+    io.DisplayFramebufferScale = ImVec2(float(fb_width) / float(width), float(fb_height) / float(height));
+  io.DeltaTime =
+      script_ ? 1.0f / 60.0f
+              : std::clamp(std::chrono::duration<float>(frame_input_time_ - last_frame_time_).count(), 1e-4f, 1.0f);
   last_frame_time_ = frame_input_time_;
   feed_imgui(io, input_, events);
   ImGui_ImplOpenGL3_NewFrame();
@@ -238,7 +249,8 @@ void EditorApp::draw_ui() {
 void EditorApp::note_free_region() {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   free_min_ = glm::vec2(vp->WorkPos.x, vp->WorkPos.y);
-  free_max_ = glm::vec2(vp->WorkPos.x + vp->WorkSize.x, vp->WorkPos.y + vp->WorkSize.y - ImGui::GetFrameHeight() - 4.0f);
+  free_max_ =
+      glm::vec2(vp->WorkPos.x + vp->WorkSize.x, vp->WorkPos.y + vp->WorkSize.y - ImGui::GetFrameHeight() - 4.0f);
   for (const char* name : {"Inspector", "View"}) {
     const ImGuiWindow* panel = ImGui::FindWindowByName(name);
     if (!panel || !panel->Active || panel->Collapsed) continue;

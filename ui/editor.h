@@ -13,8 +13,8 @@ struct EditorOptions {
   std::string stats;       // on exit, write frame and edit-to-frame figures here (JSON)
   int width = 1280, height = 800;
   bool vsync = true;
-  int scheme = -1;         // ViewOptions::scheme from the command line; −1: as kept in the settings
-  bool warren = false;     // Loop with Warren's β
+  int scheme = -1;      // ViewOptions::scheme from the command line; −1: as kept in the settings
+  bool warren = false;  // Loop with Warren's β
 };
 
 /// Opens the window and runs the editor until the user quits (or, with play/screenshot/save, until

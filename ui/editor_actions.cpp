@@ -26,7 +26,9 @@ void EditorApp::request(Action action) {
 
 void EditorApp::perform(const Action& action) {
   switch (action.kind) {
-    case Action::Kind::quit: quit_ = true; break;
+    case Action::Kind::quit:
+      quit_ = true;
+      break;
     case Action::Kind::open_file:
       if (!action.argument.empty()) {
         open_file(action.argument);
@@ -34,11 +36,15 @@ void EditorApp::perform(const Action& action) {
         browser_purpose_ = BrowserPurpose::open_mesh;
         const std::filesystem::path source = document_.source_path();
         browser_.open(FileBrowser::Mode::open, "Open mesh",
-                      source.empty() ? std::filesystem::current_path().string() : source.parent_path().string(), kMeshExtensions);
+                      source.empty() ? std::filesystem::current_path().string() : source.parent_path().string(),
+                      kMeshExtensions);
       }
       break;
-    case Action::Kind::open_sample: open_sample(action.argument); break;
-    case Action::Kind::none: break;
+    case Action::Kind::open_sample:
+      open_sample(action.argument);
+      break;
+    case Action::Kind::none:
+      break;
   }
   pending_ = {};
 }
@@ -47,7 +53,7 @@ void EditorApp::open_file(const std::string& path) {
   const EditorDocument previous = document_;
   try {
     document_.open(path);
-    mesh_replaced();  // the renderer may refuse the mesh (valence, GPU limits): nothing changed then
+    mesh_replaced();          // the renderer may refuse the mesh (valence, GPU limits): nothing changed then
   } catch (const Error& e) {  // the current mesh stays
     document_ = previous;
     set_status(e.what(), true);
@@ -92,7 +98,8 @@ void EditorApp::save_to(const std::string& path) {
   if (path.empty()) {  // Save As: ask for a name, beside the current file
     browser_purpose_ = BrowserPurpose::save_mesh;
     const std::filesystem::path source = document_.source_path();
-    const std::string folder = source.empty() ? std::filesystem::current_path().string() : source.parent_path().string();
+    const std::string folder =
+        source.empty() ? std::filesystem::current_path().string() : source.parent_path().string();
     const std::string name = source.empty() ? "untitled.ply" : source.stem().string() + ".ply";
     browser_.open(FileBrowser::Mode::save, "Save covariance mesh", folder, {".ply", ".obj"}, name);
     return;
@@ -109,8 +116,10 @@ void EditorApp::save_to(const std::string& path) {
 
 void EditorApp::undo_redo(bool undo) {
   if (mode_ == Mode::handle) return;  // not in the middle of a drag
-  if (undo) document_.undo();
-  else document_.redo();
+  if (undo)
+    document_.undo();
+  else
+    document_.redo();
 }
 
 void EditorApp::draw_unsaved_prompt() {
@@ -150,7 +159,9 @@ void EditorApp::handle_browser_result() {
     return;
   }
   switch (browser_purpose_) {
-    case BrowserPurpose::open_mesh: open_file(*chosen); break;
+    case BrowserPurpose::open_mesh:
+      open_file(*chosen);
+      break;
     case BrowserPurpose::save_mesh:
       save_to(*chosen);
       if (after_save_perform_ && !document_.dirty()) perform(pending_);

@@ -11,7 +11,9 @@
 namespace gps {
 
 void EditorApp::build_commands() {
-  const auto key = [](int k, bool ctrl = false, bool shift = false, bool alt = false) { return Shortcut{k, ctrl, shift, alt}; };
+  const auto key = [](int k, bool ctrl = false, bool shift = false, bool alt = false) {
+    return Shortcut{k, ctrl, shift, alt};
+  };
   const auto always = std::function<bool()>();
   CommandTable& t = commands_;
   // File
@@ -20,7 +22,13 @@ void EditorApp::build_commands() {
            for (const std::string& name : sample_names())
              if (ImGui::MenuItem(name.c_str())) request({Action::Kind::open_sample, name});
          }});
-  t.add({"File", "Open recent", {}, {}, [this] { return !recent_.paths().empty(); }, nullptr, [this] {
+  t.add({"File",
+         "Open recent",
+         {},
+         {},
+         [this] { return !recent_.paths().empty(); },
+         nullptr,
+         [this] {
            for (const std::string& path : recent_.paths())
              if (ImGui::MenuItem(path.c_str())) request({Action::Kind::open_file, path});
          }});
@@ -32,39 +40,101 @@ void EditorApp::build_commands() {
            std::strftime(name, sizeof name, "gpsurf-%Y%m%d-%H%M%S.png", std::localtime(&now));
            screenshot_request_ = name;
          }});
-  t.add({"File", "Quit", {key(GLFW_KEY_Q, true)}, [this] { request({Action::Kind::quit, ""}); }, always, nullptr, nullptr, true});
+  t.add({"File",
+         "Quit",
+         {key(GLFW_KEY_Q, true)},
+         [this] {
+           request({Action::Kind::quit, ""});
+         },
+         always,
+         nullptr,
+         nullptr,
+         true});
   // Edit
-  t.add({"Edit", "Undo", {key(GLFW_KEY_Z, true)}, [this] { undo_redo(true); }, [this] { return document_.can_undo(); }});
-  t.add({"Edit", "Redo", {key(GLFW_KEY_Z, true, true), key(GLFW_KEY_Y, true)}, [this] { undo_redo(false); },
+  t.add(
+      {"Edit", "Undo", {key(GLFW_KEY_Z, true)}, [this] { undo_redo(true); }, [this] { return document_.can_undo(); }});
+  t.add({"Edit",
+         "Redo",
+         {key(GLFW_KEY_Z, true, true), key(GLFW_KEY_Y, true)},
+         [this] { undo_redo(false); },
          [this] { return document_.can_redo(); }});
-  t.add({"Edit", "Select all", {key(GLFW_KEY_A, true)}, [this] { selection_.select_all(document_.mesh().n_vertices()); }, always,
-         nullptr, nullptr, true});
-  t.add({"Edit", "Select none", {key(GLFW_KEY_ESCAPE), key(GLFW_KEY_A, false, false, true)}, [this] { selection_.clear(); }});
-  t.add({"Edit", "Proportional editing", {key(GLFW_KEY_O)}, [this] { reach_options_.proportional = !reach_options_.proportional; },
-         always, [this] { return reach_options_.proportional; }, nullptr, true});
-  t.add({"Edit", "Mirror editing", {key(GLFW_KEY_M)}, [this] { reach_options_.mirror = !reach_options_.mirror; }, always,
+  t.add({"Edit",
+         "Select all",
+         {key(GLFW_KEY_A, true)},
+         [this] { selection_.select_all(document_.mesh().n_vertices()); },
+         always,
+         nullptr,
+         nullptr,
+         true});
+  t.add({"Edit", "Select none", {key(GLFW_KEY_ESCAPE), key(GLFW_KEY_A, false, false, true)}, [this] {
+           selection_.clear();
+         }});
+  t.add({"Edit",
+         "Proportional editing",
+         {key(GLFW_KEY_O)},
+         [this] { reach_options_.proportional = !reach_options_.proportional; },
+         always,
+         [this] { return reach_options_.proportional; },
+         nullptr,
+         true});
+  t.add({"Edit",
+         "Mirror editing",
+         {key(GLFW_KEY_M)},
+         [this] { reach_options_.mirror = !reach_options_.mirror; },
+         always,
          [this] { return reach_options_.mirror; }});
   // View
   t.add({"View", "Frame all", {key(GLFW_KEY_HOME)}, [this] { frame_vertices({}); }});
-  t.add({"View", "Frame selection (all when none)", {key(GLFW_KEY_F), key(GLFW_KEY_KP_DECIMAL)},
-         [this] { frame_vertices(selection_.vertices()); }});
-  t.add({"View", "Front view", {key(GLFW_KEY_KP_1)}, [this] { axis_view(0.0f, 0.0f); }, always, nullptr, nullptr, true});
+  t.add({"View", "Frame selection (all when none)", {key(GLFW_KEY_F), key(GLFW_KEY_KP_DECIMAL)}, [this] {
+           frame_vertices(selection_.vertices());
+         }});
+  t.add(
+      {"View", "Front view", {key(GLFW_KEY_KP_1)}, [this] { axis_view(0.0f, 0.0f); }, always, nullptr, nullptr, true});
   t.add({"View", "Back view", {key(GLFW_KEY_KP_1, true)}, [this] { axis_view(180.0f, 0.0f); }});
   t.add({"View", "Right view", {key(GLFW_KEY_KP_3)}, [this] { axis_view(90.0f, 0.0f); }});
   t.add({"View", "Left view", {key(GLFW_KEY_KP_3, true)}, [this] { axis_view(-90.0f, 0.0f); }});
   t.add({"View", "Top view", {key(GLFW_KEY_KP_7)}, [this] { axis_view(0.0f, 89.9f); }});
   t.add({"View", "Bottom view", {key(GLFW_KEY_KP_7, true)}, [this] { axis_view(0.0f, -89.9f); }});
-  t.add({"View", "Orthographic", {key(GLFW_KEY_KP_5)}, [this] { camera_.orthographic = !camera_.orthographic; }, always,
+  t.add({"View",
+         "Orthographic",
+         {key(GLFW_KEY_KP_5)},
+         [this] { camera_.orthographic = !camera_.orthographic; },
+         always,
          [this] { return camera_.orthographic; }});
-  t.add({"View", "Ellipsoids", {key(GLFW_KEY_E)}, [this] { view_.draw.ellipsoids = !view_.draw.ellipsoids; }, always,
-         [this] { return view_.draw.ellipsoids; }, nullptr, true});
-  t.add({"View", "Inspector", {}, [this] { view_.show_inspector = !view_.show_inspector; }, always,
-         [this] { return view_.show_inspector; }, nullptr, true});
-  t.add({"View", "View options", {}, [this] { view_.show_view = !view_.show_view; }, always, [this] { return view_.show_view; }});
-  t.add({"View", "Statistics", {}, [this] { view_.show_statistics = !view_.show_statistics; }, always,
+  t.add({"View",
+         "Ellipsoids",
+         {key(GLFW_KEY_E)},
+         [this] { view_.draw.ellipsoids = !view_.draw.ellipsoids; },
+         always,
+         [this] { return view_.draw.ellipsoids; },
+         nullptr,
+         true});
+  t.add({"View",
+         "Inspector",
+         {},
+         [this] { view_.show_inspector = !view_.show_inspector; },
+         always,
+         [this] { return view_.show_inspector; },
+         nullptr,
+         true});
+  t.add({"View",
+         "View options",
+         {},
+         [this] { view_.show_view = !view_.show_view; },
+         always,
+         [this] { return view_.show_view; }});
+  t.add({"View",
+         "Statistics",
+         {},
+         [this] { view_.show_statistics = !view_.show_statistics; },
+         always,
          [this] { return view_.show_statistics; }});
   // Help
-  t.add({"Help", "Mouse and keys", {key(GLFW_KEY_F1)}, [this] { view_.show_help = !view_.show_help; }, always,
+  t.add({"Help",
+         "Mouse and keys",
+         {key(GLFW_KEY_F1)},
+         [this] { view_.show_help = !view_.show_help; },
+         always,
          [this] { return view_.show_help; }});
 }
 

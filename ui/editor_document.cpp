@@ -46,7 +46,8 @@ void EditorDocument::save(const std::string& path) {
   history_.mark_saved();
 }
 
-void EditorDocument::replace(CovarianceMesh loaded, const std::string& source, const std::string& ply_path, const std::string& name) {
+void EditorDocument::replace(CovarianceMesh loaded, const std::string& source, const std::string& ply_path,
+                             const std::string& name) {
   mesh_ = std::move(loaded);
   history_.clear();
   edit_.reset();

@@ -50,7 +50,8 @@ int EditorApp::pick(glm::vec2 pixel) const {
   const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius);
   if (vertex >= 0 || !view_.draw.ellipsoids) return vertex;
   const bool all = all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices());
-  return pick_ellipsoid(v.camera, v.width, v.height, pixel, document_.mesh(), view_.draw.sigma_scale, all ? nullptr : &shown_ellipsoids_);
+  return pick_ellipsoid(v.camera, v.width, v.height, pixel, document_.mesh(), view_.draw.sigma_scale,
+                        all ? nullptr : &shown_ellipsoids_);
 }
 
 void EditorApp::handle_event(const InputEvent& e) {
@@ -59,7 +60,9 @@ void EditorApp::handle_event(const InputEvent& e) {
     case InputEvent::Type::press:
       if (!io.WantCaptureMouse && !prompt_unsaved_) press(e);
       break;
-    case InputEvent::Type::release: release(e); break;
+    case InputEvent::Type::release:
+      release(e);
+      break;
     case InputEvent::Type::scroll:
       if (mode_ == Mode::handle && reach_options_.proportional) {  // the wheel sets the radius while dragging
         reach_options_.radius *= std::pow(1.15, double(e.steps));
@@ -68,14 +71,16 @@ void EditorApp::handle_event(const InputEvent& e) {
       } else if (!io.WantCaptureMouse) {
         const Viewport v = viewport();
         std::optional<glm::vec3> anchor;
-        if (target_) anchor = surface_point(*target_, e.position * glm::vec2(float(target_->width()) / float(v.width),
-                                                                              float(target_->height()) / float(v.height)));
+        if (target_)
+          anchor = surface_point(*target_, e.position * glm::vec2(float(target_->width()) / float(v.width),
+                                                                  float(target_->height()) / float(v.height)));
         zoom_to_cursor(camera_, e.steps, v.width, v.height, e.position, anchor);
       }
       break;
     case InputEvent::Type::key_press:
       if (mode_ == Mode::handle && drag_key(e.key)) break;
-      if (!io.WantCaptureKeyboard && !browser_.is_open()) commands_.handle_key(e.key, input_.ctrl(), input_.shift(), input_.alt());
+      if (!io.WantCaptureKeyboard && !browser_.is_open())
+        commands_.handle_key(e.key, input_.ctrl(), input_.shift(), input_.alt());
       break;
     case InputEvent::Type::text:
       if (mode_ == Mode::handle) drag_text(e.codepoint);
@@ -84,7 +89,8 @@ void EditorApp::handle_event(const InputEvent& e) {
       if (!e.paths.empty()) request({Action::Kind::open_file, e.paths.front()});
       break;
     case InputEvent::Type::move:
-    case InputEvent::Type::key_release: break;
+    case InputEvent::Type::key_release:
+      break;
   }
 }
 
@@ -95,10 +101,11 @@ void EditorApp::press(const InputEvent& e) {
   if (e.button == 0 && !input_.alt()) {
     const Viewport v = viewport();
     const auto gizmo = gizmo_frame(v);
-    if (const auto handle = gizmo ? hit_handle(v, e.position, *gizmo, selection_.active(), kPickRadius) : std::nullopt) {
+    if (const auto handle =
+            gizmo ? hit_handle(v, e.position, *gizmo, selection_.active(), kPickRadius) : std::nullopt) {
       document_.begin_edit();
-      drag_.emplace(document_.mesh(), selection_.vertices(), *handle, view_.draw.sigma_scale, v, e.position, view_.common_frame,
-                    gizmo->centre);
+      drag_.emplace(document_.mesh(), selection_.vertices(), *handle, view_.draw.sigma_scale, v, e.position,
+                    view_.common_frame, gizmo->centre);
       rebuild_reach();
       mode_ = Mode::handle;
     } else {
@@ -115,7 +122,8 @@ void EditorApp::release(const InputEvent& e) {
   if (mode_ == Mode::click) {
     selection_.click(pick(e.position), input_.shift());
   } else if (mode_ == Mode::box) {
-    selection_.select(vertices_in_box(v.camera, v.width, v.height, press_pixel_, e.position, document_.mesh()), input_.shift());
+    selection_.select(vertices_in_box(v.camera, v.width, v.height, press_pixel_, e.position, document_.mesh()),
+                      input_.shift());
   } else if (mode_ == Mode::handle) {
     end_drag(true);
   }
@@ -123,8 +131,10 @@ void EditorApp::release(const InputEvent& e) {
 }
 
 void EditorApp::end_drag(bool keep) {
-  if (keep) document_.commit_edit();  // one undo step per drag, soft and mirrored vertices included
-  else document_.cancel_edit();
+  if (keep)
+    document_.commit_edit();  // one undo step per drag, soft and mirrored vertices included
+  else
+    document_.cancel_edit();
   drag_.reset();
   mode_ = Mode::none;
 }
@@ -179,15 +189,20 @@ void EditorApp::update_drag() {
   if (!changes) return;
   drag_changes_ = *changes;
   apply_reach(document_, reach_, drag_changes_, reach_options_.mirror_axis);
-  status_ = drag_->describe() + (reach_.size() > drag_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "");
+  status_ = drag_->describe() +
+            (reach_.size() > drag_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "");
   status_error_ = false;
 }
 
 void EditorApp::follow_cursor() {
   const glm::vec2 cursor = input_.cursor, delta = cursor - last_cursor_;
   switch (mode_) {
-    case Mode::orbit: orbit(camera_, delta); break;
-    case Mode::pan: pan(camera_, delta, viewport().height); break;
+    case Mode::orbit:
+      orbit(camera_, delta);
+      break;
+    case Mode::pan:
+      pan(camera_, delta, viewport().height);
+      break;
     case Mode::click:
       if (glm::length(cursor - press_pixel_) > kBoxThreshold) mode_ = Mode::box;
       break;
@@ -195,7 +210,8 @@ void EditorApp::follow_cursor() {
       if (delta != glm::vec2(0.0f)) update_drag();
       break;
     case Mode::box:
-    case Mode::none: break;
+    case Mode::none:
+      break;
   }
   last_cursor_ = cursor;
 }
@@ -212,7 +228,8 @@ void EditorApp::draw_handles_and_box() {
       const Vec3 start = drag_->start_centre();
       const double pixels = reach_options_.radius / world_per_pixel(v.camera, v.height, start);
       if (const auto centre = visible_pixel(v.camera, v.width, v.height, start))
-        draw->AddCircle(ImVec2(centre->x, centre->y), float(std::min(pixels, 1e4)), IM_COL32(255, 255, 255, 160), 64, 1.5f);
+        draw->AddCircle(ImVec2(centre->x, centre->y), float(std::min(pixels, 1e4)), IM_COL32(255, 255, 255, 160), 64,
+                        1.5f);
     }
   } else {
     gizmo = gizmo_frame(v);
@@ -223,9 +240,11 @@ void EditorApp::draw_handles_and_box() {
   gizmo_box_.reset();
   if (gizmo) {  // the gizmo's extent on screen, its dots included
     for (int k = -1; k < 6; ++k)
-      if (const auto p = visible_pixel(v.camera, v.width, v.height, k < 0 ? gizmo->centre : gizmo->end(k / 2, k % 2 ? -1 : 1))) {
+      if (const auto p =
+              visible_pixel(v.camera, v.width, v.height, k < 0 ? gizmo->centre : gizmo->end(k / 2, k % 2 ? -1 : 1))) {
         const ScreenBox dot{glm::vec2(*p) - glm::vec2(10.0f), glm::vec2(*p) + glm::vec2(10.0f)};
-        gizmo_box_ = gizmo_box_ ? ScreenBox{glm::min(gizmo_box_->min, dot.min), glm::max(gizmo_box_->max, dot.max)} : dot;
+        gizmo_box_ =
+            gizmo_box_ ? ScreenBox{glm::min(gizmo_box_->min, dot.min), glm::max(gizmo_box_->max, dot.max)} : dot;
       }
   }
   if (mode_ == Mode::box) {

@@ -73,8 +73,10 @@ std::string load_settings(const std::string& folder, ViewOptions& view, ReachOpt
     }
   });
   int mode = int(view.draw.mode), falloff = int(reach.falloff);
-  if (j.is_object() && j.contains("shading") && j["shading"].is_number_integer()) mode = std::clamp(j["shading"].get<int>(), 0, 2);
-  if (j.is_object() && j.contains("falloff") && j["falloff"].is_number_integer()) falloff = std::clamp(j["falloff"].get<int>(), 0, 3);
+  if (j.is_object() && j.contains("shading") && j["shading"].is_number_integer())
+    mode = std::clamp(j["shading"].get<int>(), 0, 2);
+  if (j.is_object() && j.contains("falloff") && j["falloff"].is_number_integer())
+    falloff = std::clamp(j["falloff"].get<int>(), 0, 3);
   view.draw.mode = ShadingMode(mode);
   reach.falloff = Falloff(falloff);
   view.draw.pixels = view.adaptive ? view.adaptive_pixels : 0.0f;

@@ -6,9 +6,12 @@ namespace gps {
 
 bool all_ellipsoids(EllipsoidScope scope, size_t n_vertices) {
   switch (scope) {
-    case EllipsoidScope::all: return true;
-    case EllipsoidScope::neighbourhood: return false;
-    case EllipsoidScope::automatic: return n_vertices <= kAllEllipsoidsUpTo;
+    case EllipsoidScope::all:
+      return true;
+    case EllipsoidScope::neighbourhood:
+      return false;
+    case EllipsoidScope::automatic:
+      return n_vertices <= kAllEllipsoidsUpTo;
   }
   return true;
 }

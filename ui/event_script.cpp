@@ -193,13 +193,19 @@ void EventRecorder::record_frame(const std::vector<InputEvent>& events) {
   for (const InputEvent& e : events) {
     Json j;
     switch (e.type) {
-      case InputEvent::Type::move: j = {{"type", "move"}, {"x", e.position.x}, {"y", e.position.y}}; break;
+      case InputEvent::Type::move:
+        j = {{"type", "move"}, {"x", e.position.x}, {"y", e.position.y}};
+        break;
       case InputEvent::Type::press:
       case InputEvent::Type::release:
-        j = {{"type", e.type == InputEvent::Type::press ? "press" : "release"}, {"button", button_name(e.button)},
-             {"x", e.position.x}, {"y", e.position.y}};
+        j = {{"type", e.type == InputEvent::Type::press ? "press" : "release"},
+             {"button", button_name(e.button)},
+             {"x", e.position.x},
+             {"y", e.position.y}};
         break;
-      case InputEvent::Type::scroll: j = {{"type", "scroll"}, {"steps", e.steps}, {"x", e.position.x}, {"y", e.position.y}}; break;
+      case InputEvent::Type::scroll:
+        j = {{"type", "scroll"}, {"steps", e.steps}, {"x", e.position.x}, {"y", e.position.y}};
+        break;
       case InputEvent::Type::key_press:
       case InputEvent::Type::key_release: {
         const std::string name = key_name(e.key);
@@ -210,14 +216,21 @@ void EventRecorder::record_frame(const std::vector<InputEvent>& events) {
       case InputEvent::Type::text: {
         std::string utf8;
         const unsigned c = e.codepoint;
-        if (c < 0x80) utf8 += char(c);
-        else if (c < 0x800) utf8 += {char(0xC0 | (c >> 6)), char(0x80 | (c & 0x3F))};
-        else if (c < 0x10000) utf8 += {char(0xE0 | (c >> 12)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
-        else utf8 += {char(0xF0 | (c >> 18)), char(0x80 | ((c >> 12) & 0x3F)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
+        if (c < 0x80)
+          utf8 += char(c);
+        else if (c < 0x800)
+          utf8 += {char(0xC0 | (c >> 6)), char(0x80 | (c & 0x3F))};
+        else if (c < 0x10000)
+          utf8 += {char(0xE0 | (c >> 12)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
+        else
+          utf8 += {char(0xF0 | (c >> 18)), char(0x80 | ((c >> 12) & 0x3F)), char(0x80 | ((c >> 6) & 0x3F)),
+                   char(0x80 | (c & 0x3F))};
         j = {{"type", "text"}, {"text", utf8}};
         break;
       }
-      case InputEvent::Type::drop: j = {{"type", "drop"}, {"paths", e.paths}}; break;
+      case InputEvent::Type::drop:
+        j = {{"type", "drop"}, {"paths", e.paths}};
+        break;
     }
     lines_.push_back(j.dump());
   }

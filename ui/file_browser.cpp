@@ -126,8 +126,10 @@ std::optional<std::string> FileBrowser::draw() {
   const float hidden_width = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize("Hidden").x;
   ImGui::SetNextItemWidth(-(hidden_width + style.ItemSpacing.x));
   if (ImGui::InputText("##folder", &path_text_, ImGuiInputTextFlags_EnterReturnsTrue)) {
-    if (navigate(path_text_)) focus_name_ = true;
-    else ImGui::SetKeyboardFocusHere(-1);  // keep the typed path to correct it
+    if (navigate(path_text_))
+      focus_name_ = true;
+    else
+      ImGui::SetKeyboardFocusHere(-1);  // keep the typed path to correct it
   }
   ImGui::SameLine();
   if (ImGui::Checkbox("Hidden", &show_hidden_)) navigate(".");
@@ -141,7 +143,8 @@ std::optional<std::string> FileBrowser::draw() {
   }
   ImGui::SetNextItemWidth(-2 * (button_width + style.ItemSpacing.x));
   const ImGuiInputTextFlags select = select_name_ ? ImGuiInputTextFlags_AutoSelectAll : 0;
-  confirm |= ImGui::InputTextWithHint("##name", "file name", &file_name_, ImGuiInputTextFlags_EnterReturnsTrue | select);
+  confirm |=
+      ImGui::InputTextWithHint("##name", "file name", &file_name_, ImGuiInputTextFlags_EnterReturnsTrue | select);
   if (ImGui::IsItemActive()) select_name_ = false;  // selected once on opening; later the text is kept to fix
   ImGui::SameLine();
   confirm |= ImGui::Button(mode_ == Mode::open ? "Open" : "Save", ImVec2(button_width, 0));

@@ -6,7 +6,9 @@ namespace gps {
 
 namespace {
 
-GlfwInputForwarder::Handlers& of(GLFWwindow* w) { return *static_cast<GlfwInputForwarder::Handlers*>(glfwGetWindowUserPointer(w)); }
+GlfwInputForwarder::Handlers& of(GLFWwindow* w) {
+  return *static_cast<GlfwInputForwarder::Handlers*>(glfwGetWindowUserPointer(w));
+}
 
 glm::vec2 cursor_of(GLFWwindow* w) {
   double x = 0, y = 0;
@@ -16,7 +18,8 @@ glm::vec2 cursor_of(GLFWwindow* w) {
 
 }  // namespace
 
-GlfwInputForwarder::GlfwInputForwarder(GLFWwindow* window, std::function<void(InputEvent)> push, std::function<void()> on_close)
+GlfwInputForwarder::GlfwInputForwarder(GLFWwindow* window, std::function<void(InputEvent)> push,
+                                       std::function<void()> on_close)
     : window_(window), handlers_{std::move(push), std::move(on_close)} {
   glfwSetWindowUserPointer(window, &handlers_);
   glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {

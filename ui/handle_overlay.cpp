@@ -4,8 +4,9 @@
 
 namespace gps {
 
-void draw_handle_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMesh& mesh, const std::vector<int>& selected,
-                         const std::optional<HandleFrame>& gizmo, const std::optional<Handle>& hovered) {
+void draw_handle_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMesh& mesh,
+                         const std::vector<int>& selected, const std::optional<HandleFrame>& gizmo,
+                         const std::optional<Handle>& hovered) {
   const auto pixel = [&v](const Vec3& p) -> std::optional<ImVec2> {
     const auto q = visible_pixel(v.camera, v.width, v.height, p);
     if (!q) return std::nullopt;

@@ -12,7 +12,8 @@ namespace gps {
 /// A dot on every selected vertex, and the gizmo: both ends of each axis of `gizmo` (red, green,
 /// blue by axis index: during a drag the index stays the grabbed one's) joined to the white centre
 /// dot; the `hovered` (or dragged) handle is drawn lit.
-void draw_handle_overlay(ImDrawList& draw, const Viewport& view, const CovarianceMesh& mesh, const std::vector<int>& selected,
-                         const std::optional<HandleFrame>& gizmo, const std::optional<Handle>& hovered);
+void draw_handle_overlay(ImDrawList& draw, const Viewport& view, const CovarianceMesh& mesh,
+                         const std::vector<int>& selected, const std::optional<HandleFrame>& gizmo,
+                         const std::optional<Handle>& hovered);
 
 }  // namespace gps

@@ -21,7 +21,9 @@ std::vector<InputEvent> InputQueue::take_frame() {
 void InputState::apply(const InputEvent& e) {
   switch (e.type) {
     case InputEvent::Type::move:
-    case InputEvent::Type::scroll: cursor = e.position; break;
+    case InputEvent::Type::scroll:
+      cursor = e.position;
+      break;
     case InputEvent::Type::press:
     case InputEvent::Type::release:
       cursor = e.position;
@@ -32,7 +34,8 @@ void InputState::apply(const InputEvent& e) {
       if (e.key >= 0 && e.key < int(keys.size())) keys[size_t(e.key)] = e.type == InputEvent::Type::key_press;
       break;
     case InputEvent::Type::text:
-    case InputEvent::Type::drop: break;
+    case InputEvent::Type::drop:
+      break;
   }
 }
 
@@ -55,15 +58,28 @@ void feed_imgui(ImGuiIO& io, const InputState& state, const std::vector<InputEve
 }
 
 void map_imgui_keys(ImGuiIO& io) {
-  const std::pair<ImGuiKey_, int> keys[] = {
-      {ImGuiKey_Tab, GLFW_KEY_TAB},         {ImGuiKey_LeftArrow, GLFW_KEY_LEFT}, {ImGuiKey_RightArrow, GLFW_KEY_RIGHT},
-      {ImGuiKey_UpArrow, GLFW_KEY_UP},      {ImGuiKey_DownArrow, GLFW_KEY_DOWN}, {ImGuiKey_PageUp, GLFW_KEY_PAGE_UP},
-      {ImGuiKey_PageDown, GLFW_KEY_PAGE_DOWN}, {ImGuiKey_Home, GLFW_KEY_HOME},   {ImGuiKey_End, GLFW_KEY_END},
-      {ImGuiKey_Insert, GLFW_KEY_INSERT},   {ImGuiKey_Delete, GLFW_KEY_DELETE}, {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE},
-      {ImGuiKey_Space, GLFW_KEY_SPACE},     {ImGuiKey_Enter, GLFW_KEY_ENTER},   {ImGuiKey_Escape, GLFW_KEY_ESCAPE},
-      {ImGuiKey_KeyPadEnter, GLFW_KEY_KP_ENTER}, {ImGuiKey_A, GLFW_KEY_A},      {ImGuiKey_C, GLFW_KEY_C},
-      {ImGuiKey_V, GLFW_KEY_V},             {ImGuiKey_X, GLFW_KEY_X},           {ImGuiKey_Y, GLFW_KEY_Y},
-      {ImGuiKey_Z, GLFW_KEY_Z}};
+  const std::pair<ImGuiKey_, int> keys[] = {{ImGuiKey_Tab, GLFW_KEY_TAB},
+                                            {ImGuiKey_LeftArrow, GLFW_KEY_LEFT},
+                                            {ImGuiKey_RightArrow, GLFW_KEY_RIGHT},
+                                            {ImGuiKey_UpArrow, GLFW_KEY_UP},
+                                            {ImGuiKey_DownArrow, GLFW_KEY_DOWN},
+                                            {ImGuiKey_PageUp, GLFW_KEY_PAGE_UP},
+                                            {ImGuiKey_PageDown, GLFW_KEY_PAGE_DOWN},
+                                            {ImGuiKey_Home, GLFW_KEY_HOME},
+                                            {ImGuiKey_End, GLFW_KEY_END},
+                                            {ImGuiKey_Insert, GLFW_KEY_INSERT},
+                                            {ImGuiKey_Delete, GLFW_KEY_DELETE},
+                                            {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE},
+                                            {ImGuiKey_Space, GLFW_KEY_SPACE},
+                                            {ImGuiKey_Enter, GLFW_KEY_ENTER},
+                                            {ImGuiKey_Escape, GLFW_KEY_ESCAPE},
+                                            {ImGuiKey_KeyPadEnter, GLFW_KEY_KP_ENTER},
+                                            {ImGuiKey_A, GLFW_KEY_A},
+                                            {ImGuiKey_C, GLFW_KEY_C},
+                                            {ImGuiKey_V, GLFW_KEY_V},
+                                            {ImGuiKey_X, GLFW_KEY_X},
+                                            {ImGuiKey_Y, GLFW_KEY_Y},
+                                            {ImGuiKey_Z, GLFW_KEY_Z}};
   for (const auto& [imgui_key, glfw_key] : keys) io.KeyMap[imgui_key] = glfw_key;
 }
 
@@ -71,15 +87,29 @@ namespace {
 
 const std::vector<std::pair<std::string, int>>& named_keys() {
   static const std::vector<std::pair<std::string, int>> names = [] {
-    std::vector<std::pair<std::string, int>> n = {
-        {"ctrl", GLFW_KEY_LEFT_CONTROL}, {"shift", GLFW_KEY_LEFT_SHIFT}, {"alt", GLFW_KEY_LEFT_ALT},
-        {"super", GLFW_KEY_LEFT_SUPER},  {"escape", GLFW_KEY_ESCAPE},    {"enter", GLFW_KEY_ENTER},
-        {"tab", GLFW_KEY_TAB},           {"backspace", GLFW_KEY_BACKSPACE}, {"delete", GLFW_KEY_DELETE},
-        {"space", GLFW_KEY_SPACE},       {"left", GLFW_KEY_LEFT},        {"right", GLFW_KEY_RIGHT},
-        {"up", GLFW_KEY_UP},             {"down", GLFW_KEY_DOWN},        {"home", GLFW_KEY_HOME},
-        {"end", GLFW_KEY_END},           {"pageup", GLFW_KEY_PAGE_UP},   {"pagedown", GLFW_KEY_PAGE_DOWN},
-        {"period", GLFW_KEY_PERIOD},     {"minus", GLFW_KEY_MINUS},      {"right_ctrl", GLFW_KEY_RIGHT_CONTROL},
-        {"right_shift", GLFW_KEY_RIGHT_SHIFT}, {"right_alt", GLFW_KEY_RIGHT_ALT}};
+    std::vector<std::pair<std::string, int>> n = {{"ctrl", GLFW_KEY_LEFT_CONTROL},
+                                                  {"shift", GLFW_KEY_LEFT_SHIFT},
+                                                  {"alt", GLFW_KEY_LEFT_ALT},
+                                                  {"super", GLFW_KEY_LEFT_SUPER},
+                                                  {"escape", GLFW_KEY_ESCAPE},
+                                                  {"enter", GLFW_KEY_ENTER},
+                                                  {"tab", GLFW_KEY_TAB},
+                                                  {"backspace", GLFW_KEY_BACKSPACE},
+                                                  {"delete", GLFW_KEY_DELETE},
+                                                  {"space", GLFW_KEY_SPACE},
+                                                  {"left", GLFW_KEY_LEFT},
+                                                  {"right", GLFW_KEY_RIGHT},
+                                                  {"up", GLFW_KEY_UP},
+                                                  {"down", GLFW_KEY_DOWN},
+                                                  {"home", GLFW_KEY_HOME},
+                                                  {"end", GLFW_KEY_END},
+                                                  {"pageup", GLFW_KEY_PAGE_UP},
+                                                  {"pagedown", GLFW_KEY_PAGE_DOWN},
+                                                  {"period", GLFW_KEY_PERIOD},
+                                                  {"minus", GLFW_KEY_MINUS},
+                                                  {"right_ctrl", GLFW_KEY_RIGHT_CONTROL},
+                                                  {"right_shift", GLFW_KEY_RIGHT_SHIFT},
+                                                  {"right_alt", GLFW_KEY_RIGHT_ALT}};
     for (char c = 'a'; c <= 'z'; ++c) n.push_back({std::string(1, c), GLFW_KEY_A + (c - 'a')});
     for (char c = '0'; c <= '9'; ++c) n.push_back({std::string(1, c), GLFW_KEY_0 + (c - '0')});
     for (int f = 1; f <= 12; ++f) n.push_back({"f" + std::to_string(f), GLFW_KEY_F1 + f - 1});

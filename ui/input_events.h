@@ -15,11 +15,11 @@ namespace gps {
 struct InputEvent {
   enum class Type { move, press, release, scroll, key_press, key_release, text, drop };
   Type type = Type::move;
-  glm::vec2 position{0.0f};  // move, press, release, scroll: window pixels, origin top-left
-  int button = 0;            // press, release: 0 left, 1 right, 2 middle
-  float steps = 0.0f;        // scroll: wheel steps, positive away from the user
-  int key = 0;               // key_press, key_release: GLFW key code
-  unsigned codepoint = 0;    // text
+  glm::vec2 position{0.0f};        // move, press, release, scroll: window pixels, origin top-left
+  int button = 0;                  // press, release: 0 left, 1 right, 2 middle
+  float steps = 0.0f;              // scroll: wheel steps, positive away from the user
+  int key = 0;                     // key_press, key_release: GLFW key code
+  unsigned codepoint = 0;          // text
   std::vector<std::string> paths;  // drop
 
   /// Presses and releases of buttons and keys, and drops: at most one of these per frame.

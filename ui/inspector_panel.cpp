@@ -29,7 +29,8 @@ Vec3 euler_degrees(const Mat3& r) {
 
 Mat3 rotation_from_euler_degrees(const Vec3& angles) {
   const Vec3 r = angles * (M_PI / 180.0);
-  return (Eigen::AngleAxisd(r.z(), Vec3::UnitZ()) * Eigen::AngleAxisd(r.y(), Vec3::UnitY()) * Eigen::AngleAxisd(r.x(), Vec3::UnitX()))
+  return (Eigen::AngleAxisd(r.z(), Vec3::UnitZ()) * Eigen::AngleAxisd(r.y(), Vec3::UnitY()) *
+          Eigen::AngleAxisd(r.x(), Vec3::UnitX()))
       .toRotationMatrix();
 }
 
@@ -41,7 +42,8 @@ double display_value(double value, int decimals) {
 
 namespace {
 
-const ImVec4 kAxisColours[3] = {ImVec4(0.92f, 0.31f, 0.31f, 1), ImVec4(0.35f, 0.82f, 0.35f, 1), ImVec4(0.35f, 0.59f, 1.0f, 1)};
+const ImVec4 kAxisColours[3] = {ImVec4(0.92f, 0.31f, 0.31f, 1), ImVec4(0.35f, 0.82f, 0.35f, 1),
+                                ImVec4(0.35f, 0.59f, 1.0f, 1)};
 
 bool all_equal(const std::vector<double>& values) {
   for (const double v : values)
@@ -54,7 +56,8 @@ bool all_equal(const std::vector<double>& values) {
 // One number field: it shows `value` rounded to `decimals` (or "mixed"); once being edited it holds
 // the full-precision value (%.17g), so that a field entered and left unchanged changes nothing and
 // a typed value is applied exactly as parsed. Returns the typed value when the text was changed.
-std::optional<double> InspectorPanel::number_field(const char* label, double value, bool mixed, int decimals, float width) {
+std::optional<double> InspectorPanel::number_field(const char* label, double value, bool mixed, int decimals,
+                                                   float width) {
   struct Start {
     InspectorPanel* panel;
     ImGuiID id;
@@ -80,8 +83,10 @@ std::optional<double> InspectorPanel::number_field(const char* label, double val
     return 0;
   };
   ImGui::SetNextItemWidth(width);
-  const ImGuiInputTextFlags flags = ImGuiInputTextFlags_CharsScientific | ImGuiInputTextFlags_AutoSelectAll | ImGuiInputTextFlags_CallbackAlways;
-  const bool edited = ImGui::InputTextWithHint(label, mixed ? "mixed" : "", shown, sizeof shown, flags, swap_in_full, &start);
+  const ImGuiInputTextFlags flags =
+      ImGuiInputTextFlags_CharsScientific | ImGuiInputTextFlags_AutoSelectAll | ImGuiInputTextFlags_CallbackAlways;
+  const bool edited =
+      ImGui::InputTextWithHint(label, mixed ? "mixed" : "", shown, sizeof shown, flags, swap_in_full, &start);
   const bool ours = precise_id_ == id;
   if (ImGui::IsItemDeactivated() && ours) precise_id_ = 0;
   if (!edited || !ours || precise_text_ == shown) return std::nullopt;
@@ -100,8 +105,10 @@ void InspectorPanel::track_entry(EditorDocument& document) {
     entry_open_ = true;
   }
   if (ImGui::IsItemDeactivated() && entry_open_) {
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) document.cancel_edit();
-    else document.commit_edit();
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
+      document.cancel_edit();
+    else
+      document.commit_edit();
     entry_open_ = false;
     entry_axes_.reset();
   }
@@ -132,14 +139,16 @@ void InspectorPanel::draw_sigmas(EditorDocument& document, const std::vector<int
   static const char* kLabels[] = {"##sigma 1", "##sigma 2", "##sigma 3"};
   for (int k = 0; k < 3; ++k) {
     std::vector<double> values;
-    for (const int v : vertices) values.push_back(v == active ? axes.sigmas[k] : ellipsoid_axes(document.mesh().covariance(size_t(v))).sigmas[k]);
+    for (const int v : vertices)
+      values.push_back(v == active ? axes.sigmas[k] : ellipsoid_axes(document.mesh().covariance(size_t(v))).sigmas[k]);
     if (k > 0) ImGui::SameLine();
     ImGui::PushStyleColor(ImGuiCol_Text, kAxisColours[k]);
     ImGui::PushStyleColor(ImGuiCol_TextDisabled, kAxisColours[k]);  // "mixed" in the axis colour too
     const auto typed = number_field(kLabels[k], axes.sigmas[k], !all_equal(values), 5, 80);
     ImGui::PopStyleColor(2);
     if (typed && *typed > 0) {
-      for (const int v : vertices) {  // σ_k of every selected vertex (its own axis of rank k at the start) set to the value
+      for (const int v :
+           vertices) {  // σ_k of every selected vertex (its own axis of rank k at the start) set to the value
         EllipsoidAxes e = ellipsoid_axes(document.start_covariance(v));
         e.sigmas[k] = std::clamp(*typed, 1e-5, 1e5);
         document.set_covariance(v, covariance_from_axes(e.axes, e.sigmas));
@@ -150,7 +159,8 @@ void InspectorPanel::draw_sigmas(EditorDocument& document, const std::vector<int
   }
   ImGui::SameLine();
   ImGui::TextUnformatted("σ");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("standard deviations along the principal axes (colours as on the gizmo)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("standard deviations along the principal axes (colours as on the gizmo)");
 }
 
 void InspectorPanel::draw_rotation(EditorDocument& document, const std::vector<int>& vertices, int active) {
@@ -193,9 +203,11 @@ void InspectorPanel::draw_presets(EditorDocument& document, const std::vector<in
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Σ × 10");
   ImGui::SameLine();
   if (ImGui::Button("Reset to inferred")) preset = int(CovariancePreset::inferred);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the covariance inferred from the mesh around the vertex (GPS Eq. 16-17)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the covariance inferred from the mesh around the vertex (GPS Eq. 16-17)");
   if (preset < 0) return;
-  const std::vector<Mat3> covariances = preset_covariances(document.mesh(), vertices, CovariancePreset(preset), isotropic_sigma_);
+  const std::vector<Mat3> covariances =
+      preset_covariances(document.mesh(), vertices, CovariancePreset(preset), isotropic_sigma_);
   document.begin_edit();
   for (size_t i = 0; i < vertices.size(); ++i)
     document.set_covariance(vertices[i], clamp_spd(covariances[i], document.mesh().covariance(size_t(vertices[i]))));
@@ -205,8 +217,8 @@ void InspectorPanel::draw_presets(EditorDocument& document, const std::vector<in
 void InspectorPanel::draw(EditorDocument& document, const Selection& selection, ReachOptions& reach, bool* open) {
   if (precise_id_ != 0 && ImGui::GetActiveID() != precise_id_) precise_id_ = 0;  // its field went away while edited
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + 10), ImGuiCond_FirstUseEver,
-                          ImVec2(1, 0));
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + 10),
+                          ImGuiCond_FirstUseEver, ImVec2(1, 0));
   ImGui::SetNextWindowSize(ImVec2(360, 300), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Inspector", open)) {
     ImGui::End();
@@ -214,11 +226,14 @@ void InspectorPanel::draw(EditorDocument& document, const Selection& selection, 
   }
   const int active = selection.active();
   if (active < 0) {
-    ImGui::TextWrapped("Click a vertex or its ellipsoid to select it; shift-click adds or removes, drag a box to select many.");
+    ImGui::TextWrapped(
+        "Click a vertex or its ellipsoid to select it; shift-click adds or removes, drag a box to select many.");
   } else {
     const std::vector<int>& vertices = selection.vertices();
-    if (vertices.size() == 1) ImGui::Text("Vertex %d", active);
-    else ImGui::Text("Vertex %d and %zu more: a typed value applies to all", active, vertices.size() - 1);
+    if (vertices.size() == 1)
+      ImGui::Text("Vertex %d", active);
+    else
+      ImGui::Text("Vertex %d and %zu more: a typed value applies to all", active, vertices.size() - 1);
     ImGui::Separator();
     draw_means(document, vertices);
     draw_sigmas(document, vertices, active);

@@ -28,8 +28,8 @@ private:
   void track_entry(EditorDocument& document);
   std::optional<double> number_field(const char* label, double value, bool mixed, int decimals, float width);
 
-  bool entry_open_ = false;                   // a numeric entry in progress: committed when its field is left
-  std::optional<EllipsoidAxes> entry_axes_;   // the active vertex's axes when the entry began: fields keep their order
+  bool entry_open_ = false;                  // a numeric entry in progress: committed when its field is left
+  std::optional<EllipsoidAxes> entry_axes_;  // the active vertex's axes when the entry began: fields keep their order
   double isotropic_sigma_ = 0.05;
   unsigned precise_id_ = 0;   // the field being edited (its ImGui id), which holds the full-precision value
   std::string precise_text_;  // that value's text as the entry began

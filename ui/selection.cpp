@@ -45,7 +45,8 @@ void Selection::clear() {
   last_clicked_ = -1;
 }
 
-std::vector<int> vertices_in_box(const Camera& camera, int width, int height, glm::vec2 a, glm::vec2 b, const CovarianceMesh& mesh) {
+std::vector<int> vertices_in_box(const Camera& camera, int width, int height, glm::vec2 a, glm::vec2 b,
+                                 const CovarianceMesh& mesh) {
   const glm::vec2 lo = glm::min(a, b), hi = glm::max(a, b) + glm::vec2(1.0f);  // pixel squares, inclusive
   std::vector<int> inside;
   for (size_t i = 0; i < mesh.n_vertices(); ++i) {

@@ -33,6 +33,7 @@ private:
 
 /// The vertices whose means project inside the window-pixel rectangle spanned by `a` and `b` (any
 /// two opposite corners), in front of the camera; hidden ones too (box selection selects through).
-std::vector<int> vertices_in_box(const Camera& camera, int width, int height, glm::vec2 a, glm::vec2 b, const CovarianceMesh& mesh);
+std::vector<int> vertices_in_box(const Camera& camera, int width, int height, glm::vec2 a, glm::vec2 b,
+                                 const CovarianceMesh& mesh);
 
 }  // namespace gps

@@ -35,7 +35,9 @@ private:
 /// A rectangle in window pixels.
 struct ScreenBox {
   glm::vec2 min{0.0f}, max{0.0f};
-  bool overlaps(const ScreenBox& o) const { return min.x < o.max.x && o.min.x < max.x && min.y < o.max.y && o.min.y < max.y; }
+  bool overlaps(const ScreenBox& o) const {
+    return min.x < o.max.x && o.min.x < max.x && min.y < o.max.y && o.min.y < max.y;
+  }
 };
 
 /// Where the overlay's top-left corner goes: the first corner of the `free` part of the window (top
@@ -46,6 +48,7 @@ glm::vec2 statistics_position(const ScreenBox& free, glm::vec2 size, const std::
 /// Draws the overlay at statistics_position() (its size as last drawn). It takes no input: a click
 /// on it reaches the view below.
 void draw_statistics_overlay(const FrameClock& clock, const std::vector<std::pair<std::string, double>>& gpu_passes,
-                             const DrawStatistics& draw, const ScreenBox& free, const std::vector<ScreenBox>& keep_clear, bool* open);
+                             const DrawStatistics& draw, const ScreenBox& free,
+                             const std::vector<ScreenBox>& keep_clear, bool* open);
 
 }  // namespace gps

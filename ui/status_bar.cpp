@@ -9,16 +9,19 @@ void draw_status_bar(const EditorDocument& document, size_t selected, const std:
   const float height = ImGui::GetFrameHeight() + 4.0f;
   ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x, vp->WorkPos.y + vp->WorkSize.y - height));
   ImGui::SetNextWindowSize(ImVec2(vp->WorkSize.x, height));
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
-                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoBringToFrontOnFocus;
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing |
+                                 ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoBringToFrontOnFocus;
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 2));
   if (ImGui::Begin("##status", nullptr, flags)) {
     ImGui::Text("%zu vertices, %zu faces, %zu selected%s", document.mesh().n_vertices(), document.mesh().n_faces(),
                 selected, document.dirty() ? "  (unsaved changes)" : "");
     if (!message.empty()) {
       ImGui::SameLine(0, 24);
-      if (error) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", message.c_str());
-      else ImGui::TextUnformatted(message.c_str());
+      if (error)
+        ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", message.c_str());
+      else
+        ImGui::TextUnformatted(message.c_str());
     }
   }
   ImGui::End();

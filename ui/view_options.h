@@ -17,13 +17,13 @@ struct ViewOptions {
     o.background = {0.23f, 0.24f, 0.26f};
     return o;
   }();
-  bool adaptive = true;       // draw.pixels is used (else draw.level)
+  bool adaptive = true;  // draw.pixels is used (else draw.level)
   float adaptive_pixels = 6.0f;
-  bool exact = true;          // Catmull-Clark extraordinary vertices evaluated exactly (else the thesis' plans)
-  int depth = kExactPlanDepth; // Catmull-Clark plan depth (rebuilds the plans when changed)
-  int scheme = 0;             // 0 automatic (Loop for triangle meshes), 1 Loop, 2 Catmull-Clark
-  bool warren = false;        // Loop with Warren's β (as Preiner's demo)
-  bool triangle_mesh = false; // the open mesh has only triangles: the panel offers the scheme (not kept)
+  bool exact = true;            // Catmull-Clark extraordinary vertices evaluated exactly (else the thesis' plans)
+  int depth = kExactPlanDepth;  // Catmull-Clark plan depth (rebuilds the plans when changed)
+  int scheme = 0;               // 0 automatic (Loop for triangle meshes), 1 Loop, 2 Catmull-Clark
+  bool warren = false;          // Loop with Warren's β (as Preiner's demo)
+  bool triangle_mesh = false;   // the open mesh has only triangles: the panel offers the scheme (not kept)
 
   /// The plans these options ask for.
   PlanOptions plans() const {
@@ -38,8 +38,9 @@ struct ViewOptions {
   std::string matcap = "clay";
   bool vsync = true;
   bool common_frame = false;  // a multi-selection drag: every Gaussian in the grabbed one's frame (else its own)
-  int pivot = 0;              // where the gizmo of a multi-selection sits: 0 the active vertex, 1 the selection's centroid
-  int ellipsoid_scope = 0;    // whose ellipsoids: 0 automatic (ui/ellipsoid_scope.h), 1 the selection and its neighbours, 2 all
+  int pivot = 0;  // where the gizmo of a multi-selection sits: 0 the active vertex, 1 the selection's centroid
+  int ellipsoid_scope =
+      0;  // whose ellipsoids: 0 automatic (ui/ellipsoid_scope.h), 1 the selection and its neighbours, 2 all
   bool show_inspector = true, show_view = true, show_statistics = true, show_help = false;
 };
 

@@ -14,15 +14,19 @@ namespace {
 void tessellation_section(ViewOptions& o, ViewPanelChanges& changes) {
   ImGui::Checkbox("adaptive", &o.adaptive);
   ImGui::SameLine();
-  if (o.adaptive) ImGui::SliderFloat("px/edge", &o.adaptive_pixels, 1.0f, 32.0f, "%.1f");
-  else ImGui::SliderFloat("level", &o.draw.level, 1.0f, 64.0f, "%.0f");
+  if (o.adaptive)
+    ImGui::SliderFloat("px/edge", &o.adaptive_pixels, 1.0f, 32.0f, "%.1f");
+  else
+    ImGui::SliderFloat("level", &o.draw.level, 1.0f, 64.0f, "%.0f");
   o.draw.pixels = o.adaptive ? o.adaptive_pixels : 0.0f;
   ImGui::Checkbox("surface cache", &o.draw.surface_cache);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("redraw the stored triangles while the mesh and the levels stay (else every frame evaluates every patch)");
+    ImGui::SetTooltip(
+        "redraw the stored triangles while the mesh and the levels stay (else every frame evaluates every patch)");
   if (o.triangle_mesh) {
     if (ImGui::Combo("scheme", &o.scheme, "automatic (Loop)\0Loop\0Catmull-Clark\0")) changes.depth = true;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Loop patches are exact at every depth; Catmull-Clark splits each triangle into three quads");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Loop patches are exact at every depth; Catmull-Clark splits each triangle into three quads");
     if (o.scheme != 2 && ImGui::Checkbox("Warren's beta", &o.warren)) changes.depth = true;
   }
   if (!o.triangle_mesh || o.scheme == 2) {
@@ -30,7 +34,8 @@ void tessellation_section(ViewOptions& o, ViewPanelChanges& changes) {
       changes.depth = true;
       o.depth = o.exact ? kExactPlanDepth : 3;
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("extraordinary vertices evaluated exactly (else the thesis' Bezier plans)");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("extraordinary vertices evaluated exactly (else the thesis' Bezier plans)");
     ImGui::SameLine();
     if (ImGui::SliderInt("plan depth", &o.depth, o.exact ? 0 : 1, 6)) changes.depth = true;
     if (ImGui::IsItemHovered())
@@ -61,15 +66,21 @@ void overlay_section(ViewOptions& o, ViewPanelChanges&) {
   if (o.draw.ellipsoids) {
     ImGui::Combo("of", &o.ellipsoid_scope, "automatic\0selection and neighbours\0all vertices\0");
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("automatic: every vertex's ellipsoid up to %zu vertices, else those of the selection and its neighbours", kAllEllipsoidsUpTo);
+      ImGui::SetTooltip(
+          "automatic: every vertex's ellipsoid up to %zu vertices, else those of the selection and its neighbours",
+          kAllEllipsoidsUpTo);
   }
 }
 
 void editing_section(ViewOptions& o, ViewPanelChanges&) {
   ImGui::Checkbox("common frame", &o.common_frame);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("a multi-selection drag scales every Gaussian along the grabbed axis (else each along its own)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("a multi-selection drag scales every Gaussian along the grabbed axis (else each along its own)");
   ImGui::Combo("gizmo at", &o.pivot, "active vertex\0centroid\0");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("where the one gizmo of a multi-selection sits: the vertex last clicked, or the selected vertices' mean position");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "where the one gizmo of a multi-selection sits: the vertex last clicked, or the selected vertices' mean "
+        "position");
 }
 
 void window_section(ViewOptions& o, ViewPanelChanges&) {
@@ -79,15 +90,17 @@ void window_section(ViewOptions& o, ViewPanelChanges&) {
 }
 
 using Section = void (*)(ViewOptions&, ViewPanelChanges&);
-constexpr Section kSections[] = {tessellation_section, shading_section, overlay_section, editing_section, window_section};
+constexpr Section kSections[] = {tessellation_section, shading_section, overlay_section, editing_section,
+                                 window_section};
 
 }  // namespace
 
 ViewPanelChanges draw_view_panel(ViewOptions& o, bool* open) {
   ViewPanelChanges changes;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + viewport->WorkSize.y - 40),
-                          ImGuiCond_FirstUseEver, ImVec2(1, 1));
+  ImGui::SetNextWindowPos(
+      ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + viewport->WorkSize.y - 40),
+      ImGuiCond_FirstUseEver, ImVec2(1, 1));
   ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("View", open)) {
     ImGui::End();

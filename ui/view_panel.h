@@ -6,9 +6,9 @@
 namespace gps {
 
 struct ViewPanelChanges {
-  bool depth = false;          // the plans must be rebuilt
-  bool matcap = false;         // options.matcap names another built-in
-  bool load_matcap = false;    // the user asked to load a MatCap image
+  bool depth = false;        // the plans must be rebuilt
+  bool matcap = false;       // options.matcap names another built-in
+  bool load_matcap = false;  // the user asked to load a MatCap image
 };
 
 ViewPanelChanges draw_view_panel(ViewOptions& options, bool* open);

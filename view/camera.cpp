@@ -9,7 +9,8 @@ namespace gps {
 
 glm::vec3 Camera::eye() const {
   const float yaw = glm::radians(yaw_degrees), pitch = glm::radians(pitch_degrees);
-  return target + distance * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+  return target +
+         distance * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
 }
 
 glm::mat4 Camera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 1, 0)); }
@@ -23,7 +24,9 @@ glm::mat4 Camera::projection(float aspect) const {
   return glm::perspective(glm::radians(fov_degrees), aspect, near_plane, far_plane);
 }
 
-float view_height(const Camera& camera) { return 2.0f * camera.distance * std::tan(glm::radians(camera.fov_degrees) * 0.5f); }
+float view_height(const Camera& camera) {
+  return 2.0f * camera.distance * std::tan(glm::radians(camera.fov_degrees) * 0.5f);
+}
 
 Camera frame_box(const Vec3& lo, const Vec3& hi, float yaw_degrees, float pitch_degrees) {
   Camera c;

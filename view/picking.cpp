@@ -6,14 +6,15 @@
 
 namespace gps {
 
-int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, float radius) {
+int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh,
+                float radius) {
   NearestProjected nearest(camera, width, height, pixel, radius, 0.5f);
   for (size_t i = 0; i < mesh.n_vertices(); ++i) nearest.consider(int(i), mesh.mean(i));
   return nearest.best();
 }
 
-int pick_ellipsoid(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, double k_sigma,
-                   const std::vector<int>* candidates) {
+int pick_ellipsoid(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh,
+                   double k_sigma, const std::vector<int>* candidates) {
   const Ray ray = pixel_ray(camera, width, height, pixel);
   const Vec3 origin = to_vec(ray.origin), d = to_vec(ray.direction);
   int best = -1;

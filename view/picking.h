@@ -16,7 +16,7 @@ int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, co
 /// The vertex whose k-sigma ellipsoid {x : (x−μ)ᵀΣ⁻¹(x−μ) = k²} the pixel's ray meets first
 /// (nearest entry point in front of the eye), of every vertex or of `candidates`; −1 when the ray
 /// misses them all.
-int pick_ellipsoid(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, double k_sigma,
-                   const std::vector<int>* candidates = nullptr);
+int pick_ellipsoid(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh,
+                   double k_sigma, const std::vector<int>* candidates = nullptr);
 
 }  // namespace gps

@@ -43,8 +43,15 @@ double world_per_pixel(const Camera& camera, int height, const Vec3& point) {
   return 2.0 * depth * std::tan(glm::radians(double(camera.fov_degrees)) * 0.5) / double(std::max(1, height));
 }
 
-NearestProjected::NearestProjected(const Camera& camera, int width, int height, glm::vec2 pixel, float radius, float tolerance)
-    : camera_(camera), width_(width), height_(height), centre_(pixel + glm::vec2(0.5f)), radius_(radius), tolerance_(tolerance), best_distance_(radius) {}
+NearestProjected::NearestProjected(const Camera& camera, int width, int height, glm::vec2 pixel, float radius,
+                                   float tolerance)
+    : camera_(camera),
+      width_(width),
+      height_(height),
+      centre_(pixel + glm::vec2(0.5f)),
+      radius_(radius),
+      tolerance_(tolerance),
+      best_distance_(radius) {}
 
 void NearestProjected::consider(int id, const Vec3& point, int priority) {
   const auto p = visible_pixel(camera_, width_, height_, point);

@@ -5,7 +5,8 @@
 namespace gps {
 
 Mat3 GaussianChange::linear() const {
-  const Mat3 s = scale_axis.isZero() ? Mat3(scale * Mat3::Identity()) : Mat3(Mat3::Identity() + (scale - 1.0) * scale_axis * scale_axis.transpose());
+  const Mat3 s = scale_axis.isZero() ? Mat3(scale * Mat3::Identity())
+                                     : Mat3(Mat3::Identity() + (scale - 1.0) * scale_axis * scale_axis.transpose());
   return rotation.toRotationMatrix() * s;
 }
 

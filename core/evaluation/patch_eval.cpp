@@ -12,14 +12,14 @@ namespace {
 
 // An extraordinary node at (u, v) of its own domain: the rows of extraordinary_rows()
 // (core/plans/plan_descent.h) of its table times its K points, stepped by the table's A past its levels.
-void evaluate_extraordinary(const PatchPlans& plans, const std::vector<Dual>& points, int node, double u, double v, Dual& q,
-                            Dual& q_u, Dual& q_v) {
+void evaluate_extraordinary(const PatchPlans& plans, const std::vector<Dual>& points, int node, double u, double v,
+                            Dual& q, Dual& q_u, Dual& q_v) {
   const int32_t* nodes = plans.nodes.data();
   const int k = nodes[node + 3], net = plans.shape == PatchShape::quad ? 16 : 12;
   double w[16], ws[16], wt[16], d[4], scale;
   int first_row, steps;
-  const int n_rows = extraordinary_rows(plans.shape == PatchShape::quad, nodes[node + 1], u, v, true, first_row, steps, w,
-                                        ws, wt, d, scale);
+  const int n_rows = extraordinary_rows(plans.shape == PatchShape::quad, nodes[node + 1], u, v, true, first_row, steps,
+                                        w, ws, wt, d, scale);
   const double* table = plans.extraordinary_tables.data() + nodes[node + 2];
   const double* rows = table + size_t(first_row) * size_t(k);
   std::vector<Dual> stepped;  // the K points after `steps` steps of A, where there are any

@@ -13,9 +13,9 @@ struct PatchSample {
   Dual q, q_u, q_v;  // in patch parameters
   Vec3 position;
   Mat3 covariance;
-  Vec3 du, dv;       // μ_u, μ_v (thesis Eq. 3.12)
-  Vec3 normal;       // normalize(μ_u × μ_v)
-  int depth = 0;     // of the leaf node
+  Vec3 du, dv;    // μ_u, μ_v (thesis Eq. 3.12)
+  Vec3 normal;    // normalize(μ_u × μ_v)
+  int depth = 0;  // of the leaf node
   NodeKind kind = NodeKind::regular;
 };
 

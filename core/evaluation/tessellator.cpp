@@ -35,7 +35,8 @@ private:
 };
 
 // The limit point at (u, v) of a patch, appended to `out`; its index.
-int append_sample(TriangleMesh& out, const PatchPlans& plans, const std::vector<Dual>& points, int patch, double u, double v) {
+int append_sample(TriangleMesh& out, const PatchPlans& plans, const std::vector<Dual>& points, int patch, double u,
+                  double v) {
   const auto s = evaluate_patch(plans, points, patch, u, v);
   if (!s) throw Error("patch " + std::to_string(patch) + " left the cone of positive definite matrices");
   out.positions.push_back(s->position);
@@ -46,10 +47,14 @@ int append_sample(TriangleMesh& out, const PatchPlans& plans, const std::vector<
 // (u, v) of the point at parameter t along patch edge k (edge k runs from corner k to corner k+1).
 std::array<double, 2> edge_uv(int k, double t) {
   switch (k) {
-    case 0: return {t, 0.0};
-    case 1: return {1.0, t};
-    case 2: return {1.0 - t, 1.0};
-    default: return {0.0, 1.0 - t};
+    case 0:
+      return {t, 0.0};
+    case 1:
+      return {1.0, t};
+    case 2:
+      return {1.0 - t, 1.0};
+    default:
+      return {0.0, 1.0 - t};
   }
 }
 
@@ -81,13 +86,20 @@ TriangleMesh tessellate_triangles(const PatchPlans& plans, const std::vector<Dua
       for (int i = 0; i + j <= L; ++i) {
         const auto sample = [&] { return append_sample(out, plans, points, patch, double(i) / L, double(j) / L); };
         int& slot = grid[size_t(i + (L + 1) * j)];
-        if (i == 0 && j == 0) slot = shared.corner(corner[0], sample);
-        else if (i == L) slot = shared.corner(corner[1], sample);
-        else if (j == L) slot = shared.corner(corner[2], sample);
-        else if (j == 0) slot = shared.edge(corner[0], corner[1], i, L, sample);
-        else if (i + j == L) slot = shared.edge(corner[1], corner[2], j, L, sample);
-        else if (i == 0) slot = shared.edge(corner[2], corner[0], L - j, L, sample);
-        else slot = sample();
+        if (i == 0 && j == 0)
+          slot = shared.corner(corner[0], sample);
+        else if (i == L)
+          slot = shared.corner(corner[1], sample);
+        else if (j == L)
+          slot = shared.corner(corner[2], sample);
+        else if (j == 0)
+          slot = shared.edge(corner[0], corner[1], i, L, sample);
+        else if (i + j == L)
+          slot = shared.edge(corner[1], corner[2], j, L, sample);
+        else if (i == 0)
+          slot = shared.edge(corner[2], corner[0], L - j, L, sample);
+        else
+          slot = sample();
       }
     const auto at = [&](int i, int j) { return grid[size_t(i + (L + 1) * j)]; };
     for (int j = 0; j < L; ++j)
@@ -136,12 +148,17 @@ TriangleMesh tessellate(const PatchPlans& plans, const std::vector<Dual>& points
       const bool u_end = i == 0 || i == L, v_end = j == 0 || j == L;
       if (!u_end && !v_end) return sample(double(i) / L, double(j) / L);
       int k, step;
-      if (j == 0 && i < L) k = 0, step = i;
-      else if (i == L && j < L) k = 1, step = j;
-      else if (j == L && i > 0) k = 2, step = L - i;
-      else k = 3, step = L - j;
+      if (j == 0 && i < L)
+        k = 0, step = i;
+      else if (i == L && j < L)
+        k = 1, step = j;
+      else if (j == L && i > 0)
+        k = 2, step = L - i;
+      else
+        k = 3, step = L - j;
       const int previous = (k + 3) % 4;
-      if (step == 0 && edges[previous].part == PatchEdgePart::first_half) return boundary_sample(previous, steps[previous]);
+      if (step == 0 && edges[previous].part == PatchEdgePart::first_half)
+        return boundary_sample(previous, steps[previous]);
       return boundary_sample(k, snapped(k, step));
     };
     for (int j = 0; j <= L; ++j)
@@ -169,7 +186,8 @@ TriangleMesh tessellate(const PatchPlans& plans, const std::vector<Dual>& points
         }
         // A fan around the cell's centre joins the finer edge to the grid.
         const int centre = sample((i + 0.5) / L, (j + 0.5) / L);
-        for (size_t m = 0; m < outline.size(); ++m) out.triangles.push_back({centre, outline[m], outline[(m + 1) % outline.size()]});
+        for (size_t m = 0; m < outline.size(); ++m)
+          out.triangles.push_back({centre, outline[m], outline[(m + 1) % outline.size()]});
       }
   }
   return out;

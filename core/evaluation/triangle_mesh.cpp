@@ -19,7 +19,8 @@ void write_number(std::ostream& out, double x) {
 }
 
 void write_ply(std::ostream& out, const TriangleMesh& m, bool binary) {
-  out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\ncomment gpsurf tessellated limit surface\n"
+  out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii")
+      << " 1.0\ncomment gpsurf tessellated limit surface\n"
       << "element vertex " << m.positions.size() << "\n";
   for (const char* name : {"x", "y", "z", "nx", "ny", "nz"}) out << "property double " << name << "\n";
   out << "element face " << m.triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
@@ -59,7 +60,8 @@ void write_obj(std::ostream& out, const TriangleMesh& m) {
     }
   }
   for (const auto& t : m.triangles)
-    out << "f " << t[0] + 1 << "//" << t[0] + 1 << ' ' << t[1] + 1 << "//" << t[1] + 1 << ' ' << t[2] + 1 << "//" << t[2] + 1 << '\n';
+    out << "f " << t[0] + 1 << "//" << t[0] + 1 << ' ' << t[1] + 1 << "//" << t[1] + 1 << ' ' << t[2] + 1 << "//"
+        << t[2] + 1 << '\n';
 }
 
 }  // namespace
@@ -78,11 +80,17 @@ void fill_missing_normals(TriangleMesh& mesh) {
 void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, bool binary) {
   const std::string ext = extension_of(path);
   for (size_t i = 0; i < mesh.positions.size(); ++i)
-    if (const std::string why = position_problem(mesh.positions[i]); !why.empty() || (i < mesh.normals.size() && !mesh.normals[i].allFinite()))
-      throw Error(path + ": not written: vertex " + std::to_string(i) + " " + (why.empty() ? "has a normal that is not finite" : why));
-  if (ext == ".ply") write_file_atomically(path, [&](std::ostream& out) { write_ply(out, mesh, binary); }, binary);
-  else if (ext == ".obj") write_file_atomically(path, [&](std::ostream& out) { write_obj(out, mesh); });
-  else throw usage_error(path + ": cannot write format '" + ext + "' (use .ply or .obj)");
+    if (const std::string why = position_problem(mesh.positions[i]);
+        !why.empty() || (i < mesh.normals.size() && !mesh.normals[i].allFinite()))
+      throw Error(path + ": not written: vertex " + std::to_string(i) + " " +
+                  (why.empty() ? "has a normal that is not finite" : why));
+  if (ext == ".ply")
+    write_file_atomically(
+        path, [&](std::ostream& out) { write_ply(out, mesh, binary); }, binary);
+  else if (ext == ".obj")
+    write_file_atomically(path, [&](std::ostream& out) { write_obj(out, mesh); });
+  else
+    throw usage_error(path + ": cannot write format '" + ext + "' (use .ply or .obj)");
 }
 
 }  // namespace gps

@@ -1,7 +1,7 @@
 #pragma once
 // The limit position and tangent masks at an extraordinary vertex, from the subdivision step of
-// its neighbourhood (core/extraordinary/loop_extraordinary_tables.h, core/extraordinary/quad_extraordinary_tables.h): generic for interior and
-// boundary vertices of either scheme, exact also where the step matrix is not diagonalisable.
+// its neighbourhood (core/extraordinary/loop_extraordinary_tables.h, core/extraordinary/quad_extraordinary_tables.h):
+// generic for interior and boundary vertices of either scheme, exact also where the step matrix is not diagonalisable.
 #include <Eigen/Core>
 
 namespace gps {

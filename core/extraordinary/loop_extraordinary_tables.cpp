@@ -29,7 +29,7 @@ Eigen::MatrixXd restrict_rows(const std::vector<Eigen::VectorXd>& rows, const st
 }  // namespace
 
 int LoopExtraordinaryTables::offset(const LoopExtraordinaryConfiguration& configuration, const PolygonTopology& mesh,
-                         const MeshConnectivity& connectivity, int v, int a, int b) {
+                                    const MeshConnectivity& connectivity, int v, int a, int b) {
   if (const auto it = offsets_.find(configuration); it != offsets_.end()) return it->second;
   const TriangleWalker coarse(mesh, connectivity);
   const std::vector<int> points = loop_extraordinary_neighbourhood(coarse, v, a, b);
@@ -72,7 +72,8 @@ int LoopExtraordinaryTables::offset(const LoopExtraordinaryConfiguration& config
     }
     power = step * power;
   }
-  // Limit masks at v (core/extraordinary/extraordinary_corner_masks.h), the tangents from child 1's patch at its corner.
+  // Limit masks at v (core/extraordinary/extraordinary_corner_masks.h), the tangents from child 1's patch at its
+  // corner.
   double w[12], ws[12], wt[12];
   loop_box_spline_basis(0.0, 0.0, w, ws, wt);
   Eigen::RowVectorXd d_s = Eigen::RowVectorXd::Zero(k), d_t = Eigen::RowVectorXd::Zero(k);

@@ -7,8 +7,8 @@
 // Ā_k Aⁿ C. Stam diagonalises A; we store the products Ā_k Aⁿ for n < kExtraordinaryLevels (powers of a
 // matrix whose eigenvalues are at most 1 in size: stable, and exact also where A is not
 // diagonalisable, as at some boundary configurations), and A itself for the levels past them (C
-// stepped by A first). At v the limit position and tangent masks apply (core/extraordinary/extraordinary_corner_masks.h).
-// GPS is linear in 9D, so all of this acts on the dual points.
+// stepped by A first). At v the limit position and tangent masks apply
+// (core/extraordinary/extraordinary_corner_masks.h). GPS is linear in 9D, so all of this acts on the dual points.
 //
 // Table layout (doubles from its offset): blocks b = 3n + k, each 12×K (row j: the weights of the
 // K points in net point j), then three rows of K: limit position, tangent along s, tangent along t,
@@ -38,8 +38,8 @@ public:
   explicit LoopExtraordinaryTables(LoopBeta beta) : beta_(beta) {}
   /// Offset of the table of `configuration`; on first use computed from the triangle (v, a, b) of
   /// `mesh`, a mesh refined at least once around v (a and b regular, the rings read complete).
-  int offset(const LoopExtraordinaryConfiguration& configuration, const PolygonTopology& mesh, const MeshConnectivity& connectivity,
-             int v, int a, int b);
+  int offset(const LoopExtraordinaryConfiguration& configuration, const PolygonTopology& mesh,
+             const MeshConnectivity& connectivity, int v, int a, int b);
   std::vector<double> take() { return std::move(tables_); }
 
 private:

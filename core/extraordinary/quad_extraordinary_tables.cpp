@@ -8,7 +8,8 @@
 
 namespace gps {
 
-std::optional<QuadExtraordinaryNeighbourhood> quad_extraordinary_neighbourhood(const LocalMesh& m, const std::array<int, 4>& c) {
+std::optional<QuadExtraordinaryNeighbourhood> quad_extraordinary_neighbourhood(const LocalMesh& m,
+                                                                               const std::array<int, 4>& c) {
   const auto& conn = m.connectivity;
   std::vector<int> region;  // the faces at the corners
   for (const int v : c)
@@ -53,7 +54,8 @@ namespace {
 LocalMesh neighbourhood_mesh(const std::vector<int>& signature) {
   LocalMesh m;
   for (size_t i = 0; i < signature.size(); i += size_t(signature[i]) + 1) {
-    m.topology.verts.insert(m.topology.verts.end(), signature.begin() + long(i) + 1, signature.begin() + long(i) + 1 + signature[i]);
+    m.topology.verts.insert(m.topology.verts.end(), signature.begin() + long(i) + 1,
+                            signature.begin() + long(i) + 1 + signature[i]);
     m.topology.offsets.push_back(int(m.topology.verts.size()));
   }
   m.topology.n_vertices = *std::max_element(m.topology.verts.begin(), m.topology.verts.end()) + 1;
@@ -72,7 +74,8 @@ Eigen::MatrixXd rows_of(const LocalMesh& fine, const std::vector<LocalCombinatio
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(long(rows.size()), k);
   for (size_t r = 0; r < rows.size(); ++r)
     for (const auto& [v, w] : rows[r]) {
-      if (fine.points[size_t(v)].size() == 0) throw std::logic_error("Catmull-Clark extraordinary table: a point outside the neighbourhood");
+      if (fine.points[size_t(v)].size() == 0)
+        throw std::logic_error("Catmull-Clark extraordinary table: a point outside the neighbourhood");
       out.row(long(r)) += w * fine.points[size_t(v)].transpose();
     }
   return out;
@@ -83,7 +86,8 @@ std::shared_ptr<const std::vector<double>> compute_table(const std::vector<int>&
   const LocalMesh fine = refine_local_mesh(coarse);
   const int k = coarse.topology.n_vertices, ne = coarse.connectivity.n_edges();
   const auto edge_point = [&](int a, int b) { return k + coarse.find_edge(a, b); };
-  const int face_point = k + ne + 0, e01 = edge_point(0, 1), e12 = edge_point(1, 2), e23 = edge_point(2, 3), e30 = edge_point(3, 0);
+  const int face_point = k + ne + 0, e01 = edge_point(0, 1), e12 = edge_point(1, 2), e23 = edge_point(2, 3),
+            e30 = edge_point(3, 0);
   // A: the corner child (0', e01, f, e30) must have the same neighbourhood, one level down.
   const auto child = quad_extraordinary_neighbourhood(fine, {0, e01, face_point, e30});
   if (!child || child->signature != signature) return nullptr;
@@ -91,13 +95,15 @@ std::shared_ptr<const std::vector<double>> compute_table(const std::vector<int>&
   for (const int p : child->points) step_rows.push_back({{p, 1.0}});
   const Eigen::MatrixXd step = rows_of(fine, step_rows, k);
   // Ā_c: the nets of children 1..3 (quadrants s ≥ ½ > t, both ≥ ½, t ≥ ½ > s), each from its (0, 0).
-  const std::array<int, 4> children[3] = {{e01, 1, e12, face_point}, {face_point, e12, 2, e23}, {e30, face_point, e23, 3}};
+  const std::array<int, 4> children[3] = {
+      {e01, 1, e12, face_point}, {face_point, e12, 2, e23}, {e30, face_point, e23, 3}};
   Eigen::MatrixXd nets[3];
   for (int c = 0; c < 3; ++c) {
     for (const int v : children[c])
       if (!regular_vertex(fine, v)) return nullptr;
     std::array<LocalCombination, 16> net;
-    bspline_net(fine, fine.find_face({children[c][0], children[c][1], children[c][2], children[c][3]}), children[c], net);
+    bspline_net(fine, fine.find_face({children[c][0], children[c][1], children[c][2], children[c][3]}), children[c],
+                net);
     nets[c] = rows_of(fine, {net.begin(), net.end()}, k);
   }
   auto table = std::make_shared<std::vector<double>>(quad_extraordinary_table_size(k), 0.0);

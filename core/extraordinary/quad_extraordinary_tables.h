@@ -8,8 +8,8 @@
 // B-spline of the net Ā_c Aⁿ C. Instead of Stam's eigen-decomposition we store the products
 // Ā_c Aⁿ for n < kExtraordinaryLevels (stable, and exact also where A is not diagonalisable, as at boundary
 // vertices), A itself for the levels past them (C stepped by A first), and the limit masks at the
-// vertex (core/extraordinary/extraordinary_corner_masks.h). GPS is linear in 9D, so all of this acts on the dual points as
-// they are.
+// vertex (core/extraordinary/extraordinary_corner_masks.h). GPS is linear in 9D, so all of this acts on the dual points
+// as they are.
 //
 // A neighbourhood is known by its signature (its faces in a canonical walk, vertices by first
 // visit); the table depends on nothing else, so nodes with equal signatures share one. A node is
@@ -39,7 +39,8 @@ struct QuadExtraordinaryNeighbourhood {
 
 /// The neighbourhood of the quad with corners c (in its face's order, c[0] the irregular one);
 /// empty where the faces around the corners are not reached by walking across their edges.
-std::optional<QuadExtraordinaryNeighbourhood> quad_extraordinary_neighbourhood(const LocalMesh& m, const std::array<int, 4>& c);
+std::optional<QuadExtraordinaryNeighbourhood> quad_extraordinary_neighbourhood(const LocalMesh& m,
+                                                                               const std::array<int, 4>& c);
 
 /// The tables of every signature met while building one set of plans, shared by the threads.
 class QuadExtraordinaryTableCache {

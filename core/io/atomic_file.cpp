@@ -54,7 +54,7 @@ public:
   TempFileSignalGuard& operator=(const TempFileSignalGuard&) = delete;
 
 private:
-  struct sigaction previous_[std::size(kCleanupSignals)] {};
+  struct sigaction previous_[std::size(kCleanupSignals)]{};
   bool installed_ = false;
 };
 

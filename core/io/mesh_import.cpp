@@ -54,7 +54,8 @@ CovarianceMesh parse_obj(const std::string& data, const std::string& source) {
           throw Error(at + "'" + std::string(words[k]) + "' is not a vertex index");
         if (index < 0) index += (long long)points.size() + 1;  // relative to the end
         if (index < 1 || index > (long long)points.size())
-          throw Error(at + "vertex index " + std::string(words[k]) + " is out of range (" + std::to_string(points.size()) + " vertices so far)");
+          throw Error(at + "vertex index " + std::string(words[k]) + " is out of range (" +
+                      std::to_string(points.size()) + " vertices so far)");
         face.push_back(int(index - 1));
       }
       if (face.size() < 3) throw Error(at + "a face needs at least 3 vertices");
@@ -78,7 +79,8 @@ CovarianceMesh parse_off(const std::string& data, const std::string& source) {
   const auto next_int = [&](const char* what) {
     if (t.done()) throw Error(source + ": the file ends early (expected " + what + ")");
     long long v = 0;
-    if (!parse_int(t.word(), v) || v < 0) throw Error(at(t.line()) + "'" + std::string(t.word()) + "' is not a valid " + what);
+    if (!parse_int(t.word(), v) || v < 0)
+      throw Error(at(t.line()) + "'" + std::string(t.word()) + "' is not a valid " + what);
     t.next();
     return v;
   };
@@ -108,7 +110,9 @@ CovarianceMesh parse_off(const std::string& data, const std::string& source) {
     if (n < 3) throw Error(at(line) + "face " + std::to_string(f) + " has fewer than 3 vertices");
     for (long long k = 0; k < n; ++k) {
       const long long index = next_int("vertex index");
-      if (index >= nv) throw Error(at(line) + "face " + std::to_string(f) + " refers to vertex " + std::to_string(index) + ", but there are " + std::to_string(nv));
+      if (index >= nv)
+        throw Error(at(line) + "face " + std::to_string(f) + " refers to vertex " + std::to_string(index) +
+                    ", but there are " + std::to_string(nv));
       face.push_back(int(index));
     }
     t.skip_line(line);  // colour values
@@ -144,7 +148,8 @@ CovarianceMesh parse_stl(const std::string& data, const std::string& source) {
       const auto words = words_of(line);
       if (words.empty() || words[0] != "vertex") continue;
       Vec3 p;
-      if (words.size() != 4) throw Error(source + ": line " + std::to_string(line_number) + ": a vertex needs three coordinates");
+      if (words.size() != 4)
+        throw Error(source + ": line " + std::to_string(line_number) + ": a vertex needs three coordinates");
       for (int k = 0; k < 3; ++k)
         if (const std::string why = parse_number(words[size_t(k + 1)], p[k]); !why.empty())
           throw Error(source + ": line " + std::to_string(line_number) + ": " + why);

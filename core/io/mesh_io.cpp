@@ -37,8 +37,10 @@ CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options) 
   }
   if (mesh.n_faces() == 0) throw Error(path + ": the mesh has no faces");
   try {
-    if (options.covariance == ImportOptions::Covariance::infer) infer_covariances(mesh, options.bias);
-    else isotropic_covariances(mesh, options.isotropic_scale);
+    if (options.covariance == ImportOptions::Covariance::infer)
+      infer_covariances(mesh, options.bias);
+    else
+      isotropic_covariances(mesh, options.isotropic_scale);
   } catch (const Error& e) {
     throw Error(path + ": " + e.what(), e.kind());
   }
@@ -51,7 +53,8 @@ void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary
   // What gpsurf writes it must read back: refuse values the readers would refuse.
   if (const std::string why = gaussians_problem(mesh); !why.empty()) throw Error(path + ": not written: " + why);
   if (ext == ".ply") {
-    write_file_atomically(path, [&](std::ostream& out) { write_ply(out, mesh, binary); }, binary);
+    write_file_atomically(
+        path, [&](std::ostream& out) { write_ply(out, mesh, binary); }, binary);
   } else if (ext == ".obj") {
     write_file_atomically(path, [&](std::ostream& out) {
       out.precision(17);

@@ -79,7 +79,8 @@ public:
       if (token_index_ >= tokens_.size()) fail("line " + std::to_string(line_) + ": too few values");
       const std::string_view tok = tokens_[token_index_++];
       double value = 0;
-      if (const std::string why = parse_number(tok, value); !why.empty()) fail("line " + std::to_string(line_) + ": " + why);
+      if (const std::string why = parse_number(tok, value); !why.empty())
+        fail("line " + std::to_string(line_) + ": " + why);
       return value;
     }
     if (pos_ + size_t(t.size) > data_.size()) fail("the binary data ends early (truncated)");
@@ -166,10 +167,14 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
     if (words.empty() || words[0] == "comment" || words[0] == "obj_info") continue;
     if (words[0] == "format") {
       if (words.size() != 3) fail(at + "malformed format line");
-      if (words[1] == "ascii") format = Format::ascii;
-      else if (words[1] == "binary_little_endian") format = Format::binary_le;
-      else if (words[1] == "binary_big_endian") format = Format::binary_be;
-      else fail(at + "unknown format '" + std::string(words[1]) + "'");
+      if (words[1] == "ascii")
+        format = Format::ascii;
+      else if (words[1] == "binary_little_endian")
+        format = Format::binary_le;
+      else if (words[1] == "binary_big_endian")
+        format = Format::binary_be;
+      else
+        fail(at + "unknown format '" + std::string(words[1]) + "'");
     } else if (words[0] == "element") {
       if (words.size() != 3) fail(at + "malformed element line");
       Element e;
@@ -177,7 +182,8 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       e.header_line = line;
       unsigned long long count = 0;
       const auto [p, ec] = std::from_chars(words[2].data(), words[2].data() + words[2].size(), count);
-      if (ec != std::errc() || p != words[2].data() + words[2].size()) fail(at + "element count '" + std::string(words[2]) + "' is not a number");
+      if (ec != std::errc() || p != words[2].data() + words[2].size())
+        fail(at + "element count '" + std::string(words[2]) + "' is not a number");
       e.count = size_t(count);
       elements.push_back(e);
     } else if (words[0] == "property") {
@@ -249,20 +255,23 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
         }
         body.end_record();
         means.emplace_back(values[size_t(ix)], values[size_t(iy)], values[size_t(iz)]);
-        if (const std::string why = position_problem(means[v]); !why.empty()) fail("vertex " + std::to_string(v) + " " + why);
+        if (const std::string why = position_problem(means[v]); !why.empty())
+          fail("vertex " + std::to_string(v) + " " + why);
         Mat3& m = covariances.emplace_back(Mat3::Identity());
         if (has_covariances) {
           double c[6];
           for (int k = 0; k < 6; ++k) c[k] = values[size_t(ic[k])];
           m << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
-          if (const std::string why = covariance_problem(m); !why.empty()) fail("vertex " + std::to_string(v) + " " + why);
+          if (const std::string why = covariance_problem(m); !why.empty())
+            fail("vertex " + std::to_string(v) + " " + why);
         }
       }
     } else if (e.name == "face") {
       if (!faces.empty()) fail("line " + std::to_string(e.header_line) + ": a second face element");
       int list = -1;
       for (size_t i = 0; i < e.properties.size(); ++i)
-        if (e.properties[i].is_list && (e.properties[i].name == "vertex_indices" || e.properties[i].name == "vertex_index"))
+        if (e.properties[i].is_list &&
+            (e.properties[i].name == "vertex_indices" || e.properties[i].name == "vertex_index"))
           list = int(i);
       if (list < 0) fail("the face element has no vertex_indices list");
       faces.reserve(std::min<size_t>(e.count, 1 << 16));
@@ -276,13 +285,15 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
             continue;
           }
           const size_t n = body.read_count(p.count_type);
-          if (int(k) == list && n < 3) fail(body.where() + "face " + std::to_string(f) + " has " + std::to_string(n) + " vertices (at least 3 needed)");
+          if (int(k) == list && n < 3)
+            fail(body.where() + "face " + std::to_string(f) + " has " + std::to_string(n) +
+                 " vertices (at least 3 needed)");
           for (size_t i = 0; i < n; ++i) {
             const double index = body.read(p.type);
             if (int(k) != list) continue;
             if (!(index >= 0 && index < double(means.size())) || index != std::floor(index))
-              fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + BodyReader::format_number(index) +
-                   ", but there are " + std::to_string(means.size()) + " vertices");
+              fail(body.where() + "face " + std::to_string(f) + " refers to vertex " +
+                   BodyReader::format_number(index) + ", but there are " + std::to_string(means.size()) + " vertices");
             face.push_back(int(index));
           }
         }
@@ -323,7 +334,8 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
   out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\n"
       << "comment gpsurf covariance mesh\n"
       << "element vertex " << m.n_vertices() << "\n";
-  for (const char* name : {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz"}) out << "property double " << name << "\n";
+  for (const char* name : {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz"})
+    out << "property double " << name << "\n";
   // Face sizes fit a uchar unless some face has more than 255 corners.
   bool wide = false;
   for (const auto f : m.mesh.faces()) wide = wide || m.mesh.valence(f) > 255;
@@ -346,13 +358,18 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
   }
   for (const auto f : m.mesh.faces()) {
     const int32_t n = static_cast<int32_t>(m.mesh.valence(f));
-    if (!binary) out << n;
-    else if (wide) put_little_endian(out, n);
-    else out.put(char(static_cast<unsigned char>(n)));
+    if (!binary)
+      out << n;
+    else if (wide)
+      put_little_endian(out, n);
+    else
+      out.put(char(static_cast<unsigned char>(n)));
     for (const auto v : m.mesh.fv_range(f)) {
       const int32_t index = v.idx();
-      if (binary) put_little_endian(out, index);
-      else out << ' ' << index;
+      if (binary)
+        put_little_endian(out, index);
+      else
+        out << ' ' << index;
     }
     if (!binary) out << '\n';
   }

@@ -10,7 +10,7 @@
 namespace gps {
 
 struct PlyContents {
-  CovarianceMesh mesh;          // identity covariances when the file has none
+  CovarianceMesh mesh;  // identity covariances when the file has none
   bool has_covariances = false;
 };
 

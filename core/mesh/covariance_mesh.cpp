@@ -12,7 +12,6 @@
 
 namespace gps {
 
-
 Vec3 CovarianceMesh::mean(size_t i) const { return to_vec3(mesh.point(PolyMesh::VertexHandle(int(i)))); }
 
 void CovarianceMesh::set_mean(size_t i, const Vec3& mean) {
@@ -31,8 +30,8 @@ bool is_spd(const Mat3& c) {
 CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::vector<Mat3>& covariances,
                                     const std::vector<std::vector<int>>& faces, const std::string& source) {
   if (means.size() != covariances.size())
-    throw Error(source + ": " + std::to_string(means.size()) + " vertices but " +
-                std::to_string(covariances.size()) + " covariances");
+    throw Error(source + ": " + std::to_string(means.size()) + " vertices but " + std::to_string(covariances.size()) +
+                " covariances");
   CovarianceMesh m;
   m.covariances = covariances;
   m.mesh.reserve(means.size(), 0, 0);  // edges and faces: add_faces, at their exact counts
@@ -81,7 +80,8 @@ std::string covariance_problem(const Mat3& c) {
   const Vec3 eigenvalues = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues();
   if (eigenvalues(0) < kMinCovarianceEigenvalue)
     return "has a covariance eigenvalue " + number(eigenvalues(0)) + " below " + number(kMinCovarianceEigenvalue) +
-           (eigenvalues(0) < std::numeric_limits<double>::min() ? " (subnormal: underflows)" : "") + " (its inverse would overflow)";
+           (eigenvalues(0) < std::numeric_limits<double>::min() ? " (subnormal: underflows)" : "") +
+           " (its inverse would overflow)";
   if (eigenvalues(2) > kMaxCovarianceEigenvalue)
     return "has a covariance eigenvalue " + number(eigenvalues(2)) + " above " + number(kMaxCovarianceEigenvalue) +
            " (its inverse would underflow)";

@@ -32,8 +32,7 @@ struct CovarianceMesh {
 /// Builds a covariance mesh from plain arrays; faces are vertex-index lists.
 /// Throws gps::Error naming `source` and the face if the topology is non-manifold or a face is degenerate.
 CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::vector<Mat3>& covariances,
-                                    const std::vector<std::vector<int>>& faces,
-                                    const std::string& source = "mesh");
+                                    const std::vector<std::vector<int>>& faces, const std::string& source = "mesh");
 
 /// Largest position coordinate magnitude accepted: squares and products of positions (and their
 /// products with inverse covariances) must stay far from double overflow.

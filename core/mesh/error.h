@@ -11,8 +11,7 @@ namespace gps {
 class Error : public std::runtime_error {
 public:
   enum class Kind { runtime, usage };
-  explicit Error(const std::string& message, Kind kind = Kind::runtime)
-      : std::runtime_error(message), kind_(kind) {}
+  explicit Error(const std::string& message, Kind kind = Kind::runtime) : std::runtime_error(message), kind_(kind) {}
   Kind kind() const { return kind_; }
   int exit_code() const { return kind_ == Kind::usage ? 2 : 1; }
 

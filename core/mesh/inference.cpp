@@ -23,7 +23,8 @@ void infer_covariances(CovarianceMesh& m, double bias) {
     for (const Vec3& x : p) c += (x - centre) * (x - centre).transpose();
     c /= double(p.size());
     const double lambda_max = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues()(2);
-    if (!(lambda_max > 0)) throw Error("face " + std::to_string(f.idx()) + " is degenerate (all its vertices coincide)");
+    if (!(lambda_max > 0))
+      throw Error("face " + std::to_string(f.idx()) + " is degenerate (all its vertices coincide)");
     c += bias * lambda_max * Mat3::Identity();
     const Mat3 inv = Eigen::LLT<Mat3>(c).solve(Mat3::Identity());
     for (const auto v : m.mesh.fv_range(f)) precision[size_t(v.idx())] += inv;

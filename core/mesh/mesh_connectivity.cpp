@@ -114,7 +114,8 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& sour
 void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source) {
   using HH = PolyMesh::HalfedgeHandle;
   for (int e = 0; e + 1 < c.n_edges(); ++e)  // equal edges are neighbours in connectivity_of's order
-    if (c.edge_verts[2 * size_t(e)] == c.edge_verts[2 * size_t(e) + 2] && c.edge_verts[2 * size_t(e) + 1] == c.edge_verts[2 * size_t(e) + 3])
+    if (c.edge_verts[2 * size_t(e)] == c.edge_verts[2 * size_t(e) + 2] &&
+        c.edge_verts[2 * size_t(e) + 1] == c.edge_verts[2 * size_t(e) + 3])
       throw Error(source + ": face " + std::to_string(c.edge_faces[2 * size_t(e) + 2]) +
                   " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
   // Every element's storage at its final size at once (growing by doubling would hold up to twice
@@ -162,7 +163,8 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity&
     mesh.set_halfedge_handle(PolyMesh::VertexHandle(from), HH(h));
   }
   for (int h = 0; h < 2 * c.n_edges(); ++h)
-    if (!used[size_t(h)]) mesh.set_next_halfedge_handle(HH(h), HH(boundary_out[size_t(mesh.to_vertex_handle(HH(h)).idx())]));
+    if (!used[size_t(h)])
+      mesh.set_next_halfedge_handle(HH(h), HH(boundary_out[size_t(mesh.to_vertex_handle(HH(h)).idx())]));
   // One fan per vertex: circling the outgoing half-edges from one of them meets all of its edges.
   for (int v = 0; v < t.n_vertices; ++v) {
     if (c.valence(v) == 0) continue;

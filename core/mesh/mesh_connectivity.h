@@ -31,10 +31,12 @@ struct MeshConnectivity {
   std::vector<int> face_edges;
   std::vector<int> vertex_edge_offsets, vertex_edges;  // edges around each vertex
   std::vector<int> vertex_face_offsets, vertex_faces;  // faces around each vertex
-  std::vector<int> vertex_face_corners;                // parallel to vertex_faces: the vertex's corner index in that face
+  std::vector<int> vertex_face_corners;  // parallel to vertex_faces: the vertex's corner index in that face
   int n_edges() const { return int(edge_verts.size() / 2); }
   bool is_boundary_edge(int e) const { return edge_faces[2 * size_t(e) + 1] < 0; }
-  int other_vertex(int e, int v) const { return edge_verts[2 * size_t(e)] == v ? edge_verts[2 * size_t(e) + 1] : edge_verts[2 * size_t(e)]; }
+  int other_vertex(int e, int v) const {
+    return edge_verts[2 * size_t(e)] == v ? edge_verts[2 * size_t(e) + 1] : edge_verts[2 * size_t(e)];
+  }
   int valence(int v) const { return vertex_edge_offsets[size_t(v) + 1] - vertex_edge_offsets[size_t(v)]; }
   int n_vertex_faces(int v) const { return vertex_face_offsets[size_t(v) + 1] - vertex_face_offsets[size_t(v)]; }
 };

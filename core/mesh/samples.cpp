@@ -51,7 +51,8 @@ CovarianceMesh cylinder() {
     for (int k = 0; k < n; ++k) p.emplace_back(std::cos(2 * pi * k / n), -1.0 + r, -std::sin(2 * pi * k / n));
   Faces f;
   for (int r = 0; r < 2; ++r)
-    for (int k = 0; k < n; ++k) f.push_back({r * n + k, r * n + (k + 1) % n, (r + 1) * n + (k + 1) % n, (r + 1) * n + k});
+    for (int k = 0; k < n; ++k)
+      f.push_back({r * n + k, r * n + (k + 1) % n, (r + 1) * n + (k + 1) % n, (r + 1) * n + k});
   std::vector<int> top, bottom;
   for (int k = 0; k < n; ++k) top.push_back(2 * n + k), bottom.push_back(n - 1 - k);
   f.push_back(top);
@@ -128,8 +129,10 @@ CovarianceMesh valence(int n) {
     std::vector<std::vector<int>> id(size_t(k + 1), std::vector<int>(size_t(k + 1), 0));
     for (int a = 0; a <= k; ++a)
       for (int b = 0; b <= k; ++b) {
-        if (b == 0) id[size_t(a)][0] = spoke[size_t(s)][size_t(a)];
-        else if (a == 0) id[0][size_t(b)] = spoke[size_t(t)][size_t(b)];
+        if (b == 0)
+          id[size_t(a)][0] = spoke[size_t(s)][size_t(a)];
+        else if (a == 0)
+          id[0][size_t(b)] = spoke[size_t(t)][size_t(b)];
         else {
           id[size_t(a)][size_t(b)] = int(p.size());
           // Polar layout: radius max(a, b), angle between the two spokes, so the mesh is a disc.
@@ -150,7 +153,8 @@ CovarianceMesh torus(int nu = 24, int nv = 12, double big = 2.0, double small = 
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
       const double a = 2 * pi * i / nu, b = 2 * pi * j / nv;
-      p.emplace_back((big + small * std::cos(b)) * std::cos(a), small * std::sin(b), (big + small * std::cos(b)) * std::sin(a));
+      p.emplace_back((big + small * std::cos(b)) * std::cos(a), small * std::sin(b),
+                     (big + small * std::cos(b)) * std::sin(a));
     }
   Faces f;
   for (int i = 0; i < nu; ++i)
@@ -218,24 +222,27 @@ CovarianceMesh sphere(int size) {
 // 20·4^k triangles, the k nearest to `size`; 12 vertices of valence 5, every other of valence 6.
 CovarianceMesh icosphere(int size) {
   const double g = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Vec3> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                         {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<Vec3> p = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                         {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
   PolygonTopology t;
   t.n_vertices = 12;
-  for (const int v : {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8,
-                      3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1}) {
+  for (const int v :
+       {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4,  11, 10, 2,  10, 7, 6, 7, 1, 8,
+        3, 9,  4, 3, 4, 2, 3, 2, 6, 3, 6, 8,  3, 8,  9,  4, 9, 5, 2, 4,  11, 6,  2,  10, 8,  6, 7, 9, 8, 1}) {
     t.verts.push_back(v);
     if (t.verts.size() % 3 == 0) t.offsets.push_back(int(t.verts.size()));
   }
   const int levels = std::max(0, int(std::lround(std::log(std::max(size, 20) / 20.0) / std::log(4.0))));
   for (int level = 0; level < levels; ++level) {
     const MeshConnectivity c = connectivity_of(t);
-    for (int e = 0; e < c.n_edges(); ++e) p.push_back(0.5 * (p[size_t(c.edge_verts[2 * size_t(e)])] + p[size_t(c.edge_verts[2 * size_t(e) + 1])]));
+    for (int e = 0; e < c.n_edges(); ++e)
+      p.push_back(0.5 * (p[size_t(c.edge_verts[2 * size_t(e)])] + p[size_t(c.edge_verts[2 * size_t(e) + 1])]));
     t = loop_topology(t, c);
   }
   for (auto& x : p) x.normalize();
   Faces f(size_t(t.n_faces()));
-  for (int i = 0; i < t.n_faces(); ++i) f[size_t(i)].assign(t.verts.begin() + t.offsets[size_t(i)], t.verts.begin() + t.offsets[size_t(i) + 1]);
+  for (int i = 0; i < t.n_faces(); ++i)
+    f[size_t(i)].assign(t.verts.begin() + t.offsets[size_t(i)], t.verts.begin() + t.offsets[size_t(i) + 1]);
   return isotropic_mesh(p, f, "icosphere");
 }
 
@@ -244,27 +251,30 @@ CovarianceMesh icosphere(int size) {
 // each pole a fan of 32 triangles, or, for `quads_only`, 16 quads that each join two neighbouring
 // fan triangles (the same mesh without triangles: 768 quads against 736 quads and 64 triangles).
 CovarianceMesh pawn(bool quads_only) {
-  const double profile[24][2] = {
-      {0.50, 0.00}, {0.55, 0.02}, {0.56, 0.07}, {0.54, 0.11}, {0.47, 0.14}, {0.42, 0.17}, {0.40, 0.21}, {0.35, 0.24},
-      {0.28, 0.28}, {0.23, 0.36}, {0.20, 0.46}, {0.18, 0.56}, {0.17, 0.64}, {0.24, 0.67}, {0.27, 0.70}, {0.22, 0.73},
-      {0.16, 0.75}, {0.20, 0.79}, {0.23, 0.85}, {0.24, 0.91}, {0.22, 0.98}, {0.17, 1.04}, {0.11, 1.08}, {0.05, 1.10}};
+  const double profile[24][2] = {{0.50, 0.00}, {0.55, 0.02}, {0.56, 0.07}, {0.54, 0.11}, {0.47, 0.14}, {0.42, 0.17},
+                                 {0.40, 0.21}, {0.35, 0.24}, {0.28, 0.28}, {0.23, 0.36}, {0.20, 0.46}, {0.18, 0.56},
+                                 {0.17, 0.64}, {0.24, 0.67}, {0.27, 0.70}, {0.22, 0.73}, {0.16, 0.75}, {0.20, 0.79},
+                                 {0.23, 0.85}, {0.24, 0.91}, {0.22, 0.98}, {0.17, 1.04}, {0.11, 1.08}, {0.05, 1.10}};
   const int sectors = 32, rings = 24;
   std::vector<Vec3> p = {{0, 0, 0}};
   for (const auto& [r, y] : profile)
-    for (int k = 0; k < sectors; ++k) p.emplace_back(r * std::cos(2 * pi * k / sectors), y, -r * std::sin(2 * pi * k / sectors));
+    for (int k = 0; k < sectors; ++k)
+      p.emplace_back(r * std::cos(2 * pi * k / sectors), y, -r * std::sin(2 * pi * k / sectors));
   p.emplace_back(0, 1.11, 0);
   const int top = int(p.size()) - 1;
   const auto at = [&](int ring, int k) { return 1 + ring * sectors + (k % sectors); };
   Faces f;
   const int fan_step = quads_only ? 2 : 1;
   for (int k = 0; k < sectors; k += fan_step)  // bottom pole, outward normals point down
-    f.push_back(quads_only ? std::vector<int>{0, at(0, k + 2), at(0, k + 1), at(0, k)} : std::vector<int>{0, at(0, k + 1), at(0, k)});
+    f.push_back(quads_only ? std::vector<int>{0, at(0, k + 2), at(0, k + 1), at(0, k)}
+                           : std::vector<int>{0, at(0, k + 1), at(0, k)});
   for (int ring = 0; ring + 1 < rings; ++ring)
     for (int k = 0; k < sectors; ++k) f.push_back({at(ring, k), at(ring, k + 1), at(ring + 1, k + 1), at(ring + 1, k)});
   for (int k = 0; k < sectors; k += fan_step)
     f.push_back(quads_only ? std::vector<int>{top, at(rings - 1, k), at(rings - 1, k + 1), at(rings - 1, k + 2)}
                            : std::vector<int>{top, at(rings - 1, k), at(rings - 1, k + 1)});
-  CovarianceMesh m = make_covariance_mesh(p, std::vector<Mat3>(p.size(), Mat3::Identity()), f, quads_only ? "pawn-quads" : "pawn");
+  CovarianceMesh m =
+      make_covariance_mesh(p, std::vector<Mat3>(p.size(), Mat3::Identity()), f, quads_only ? "pawn-quads" : "pawn");
   infer_covariances(m);
   return m;
 }
@@ -278,9 +288,12 @@ const std::vector<Sample>& samples() {
   static const std::vector<Sample> list = [] {
     std::vector<Sample> s = {
         {"cube", "8 vertices, 6 quads, isotropic", [](int) { return cube(); }},
-        {"cone", "Preiner's cone: 8 triangles, open bottom, covariance 0.01 I", [](int) { return cone(0.01 * Mat3::Identity()); }},
-        {"cone-pointy", "cone with apex covariance 1e-5 I: a sharp tip", [](int) { return cone(1e-5 * Mat3::Identity()); }},
-        {"cone-concave", "cone with apex covariance diag(1e-5, 1e-3, 1e-5), a needle along the axis: a tip with concave flanks",
+        {"cone", "Preiner's cone: 8 triangles, open bottom, covariance 0.01 I",
+         [](int) { return cone(0.01 * Mat3::Identity()); }},
+        {"cone-pointy", "cone with apex covariance 1e-5 I: a sharp tip",
+         [](int) { return cone(1e-5 * Mat3::Identity()); }},
+        {"cone-concave",
+         "cone with apex covariance diag(1e-5, 1e-3, 1e-5), a needle along the axis: a tip with concave flanks",
          [](int) { return cone(diag(1e-5, 1e-3, 1e-5)); }},
         {"cone-plateau", "cone with apex covariance diag(1e-3, 1e-5, 1e-3), a flat disc: a plateau",
          [](int) { return cone(diag(1e-3, 1e-5, 1e-3)); }},
@@ -290,16 +303,20 @@ const std::vector<Sample>& samples() {
         {"wirecube", "the edges of a cube as square beams: genus-5 quad mesh", [](int) { return wirecube(); }},
     };
     for (int n = 3; n <= 10; ++n)
-      s.push_back({"valence" + std::to_string(n), "quad mesh with one extraordinary vertex of valence " + std::to_string(n),
+      s.push_back({"valence" + std::to_string(n),
+                   "quad mesh with one extraordinary vertex of valence " + std::to_string(n),
                    [n](int) { return valence(n); }});
     s.push_back({"torus", "24 x 12 quads", [](int) { return torus(); }});
     s.push_back({"grid", "bumpy quad grid with boundary; --size sets the face count (default 1024)",
                  [](int size) { return grid(size > 0 ? size : 1024); }});
     s.push_back({"sphere", "cube-sphere of quads, 8 valence-3 vertices; --size sets the face count (default 1536)",
                  [](int size) { return sphere(size > 0 ? size : 1536); }});
-    s.push_back({"icosphere", "subdivided icosahedron of triangles (Loop), 12 valence-5 vertices; --size sets the face count, 20·4^k (default 1280)",
+    s.push_back({"icosphere",
+                 "subdivided icosahedron of triangles (Loop), 12 valence-5 vertices; --size sets the face count, "
+                 "20·4^k (default 1280)",
                  [](int size) { return icosphere(size > 0 ? size : 1280); }});
-    s.push_back({"pawn", "chess pawn turned on a lathe: 736 quads, triangle fans at the poles (64), inferred covariances",
+    s.push_back({"pawn",
+                 "chess pawn turned on a lathe: 736 quads, triangle fans at the poles (64), inferred covariances",
                  [](int) { return pawn(false); }});
     s.push_back({"pawn-quads", "the pawn with each pair of pole triangles joined into a quad: 768 quads",
                  [](int) { return pawn(true); }});
@@ -323,7 +340,8 @@ std::string sample_description(const std::string& name) {
 }
 
 CovarianceMesh make_sample(const std::string& name, int size) {
-  if (size < 0 || size > 4'000'000) throw usage_error("sample size must be 1..4000000 faces, got " + std::to_string(size));
+  if (size < 0 || size > 4'000'000)
+    throw usage_error("sample size must be 1..4000000 faces, got " + std::to_string(size));
   for (const auto& s : samples())
     if (s.name == name) return s.make(size);
   std::string known;

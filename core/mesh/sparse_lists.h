@@ -23,7 +23,8 @@ inline void transpose_lists(const std::vector<int>& offsets, const std::vector<i
 inline std::vector<int> union_of_lists(const std::vector<int>& offsets, const std::vector<int>& values,
                                        const std::vector<int>& lists) {
   std::vector<int> out;
-  for (const int r : lists) out.insert(out.end(), values.begin() + offsets[size_t(r)], values.begin() + offsets[size_t(r) + 1]);
+  for (const int r : lists)
+    out.insert(out.end(), values.begin() + offsets[size_t(r)], values.begin() + offsets[size_t(r) + 1]);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;

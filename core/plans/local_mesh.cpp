@@ -38,7 +38,8 @@ Stencil LocalMesh::combination(const std::vector<std::pair<int, double>>& terms)
   thread_local Eigen::VectorXd sum;  // scratch: one allocation per thread, not per point
   sum.setZero(Eigen::Index(base_ids.size()));
   for (const auto& [v, w] : terms) {
-    if (points[size_t(v)].size() == 0) throw std::logic_error("plan builder read a point outside the known neighbourhood");
+    if (points[size_t(v)].size() == 0)
+      throw std::logic_error("plan builder read a point outside the known neighbourhood");
     sum += w * points[size_t(v)];
   }
   std::vector<std::pair<int, double>> sparse;
@@ -118,7 +119,8 @@ LocalMesh refine_local_mesh(const LocalMesh& m) {
   for (int v = 0; v < nv; ++v) out.complete[size_t(v)] = m.complete[size_t(v)];
   for (int e = 0; e < ne; ++e) {
     const bool both_faces = !c.is_boundary_edge(e);
-    const bool known = m.complete[size_t(c.edge_verts[2 * size_t(e)])] || m.complete[size_t(c.edge_verts[2 * size_t(e) + 1])];
+    const bool known =
+        m.complete[size_t(c.edge_verts[2 * size_t(e)])] || m.complete[size_t(c.edge_verts[2 * size_t(e) + 1])];
     out.complete[size_t(nv + e)] = both_faces || known;
   }
   for (size_t i = 0; i < out.points.size(); ++i)

@@ -1,8 +1,8 @@
 #pragma once
 // A piece of a subdivided mesh around one face, its vertices as stencils over the base vertices
-// of the neighbourhood, kept dense (DESIGN.md §2 step 2). A vertex is "complete" when every face it has in the whole mesh at that
-// level is present, so that its Catmull-Clark vertex point (and the edge points of its edges) can
-// be computed from the piece alone.
+// of the neighbourhood, kept dense (DESIGN.md §2 step 2). A vertex is "complete" when every face it has in the whole
+// mesh at that level is present, so that its Catmull-Clark vertex point (and the edge points of its edges) can be
+// computed from the piece alone.
 #include <vector>
 
 #include "core/mesh/mesh_connectivity.h"
@@ -15,10 +15,10 @@ namespace gps {
 struct LocalMesh {
   PolygonTopology topology;
   MeshConnectivity connectivity;
-  std::vector<int> base_ids;             // the base vertices the stencils combine (empty when `is_base`)
-  std::vector<Eigen::VectorXd> points;   // per vertex: weights over base_ids; empty when `is_base`
+  std::vector<int> base_ids;            // the base vertices the stencils combine (empty when `is_base`)
+  std::vector<Eigen::VectorXd> points;  // per vertex: weights over base_ids; empty when `is_base`
   std::vector<char> complete;
-  bool is_base = false;                  // the whole base mesh: vertex i is base vertex i
+  bool is_base = false;  // the whole base mesh: vertex i is base vertex i
 
   /// The stencil of vertex v over the global base vertices.
   Stencil point(int v) const;

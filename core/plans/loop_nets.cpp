@@ -17,7 +17,8 @@ TriangleWalker::TriangleWalker(const PolygonTopology& topology, const MeshConnec
       if (vertex_role(c_, v) != VertexRole::interior)  // walk clockwise to the boundary start
         for (int x = cw_next(v, start), guard = 0; x >= 0 && guard < valence; x = cw_next(v, start), ++guard) start = x;
       fans_.push_back(start);
-      for (int x = ccw_next(v, start), n = 1; x >= 0 && x != start && n < valence; x = ccw_next(v, x), ++n) fans_.push_back(x);
+      for (int x = ccw_next(v, start), n = 1; x >= 0 && x != start && n < valence; x = ccw_next(v, x), ++n)
+        fans_.push_back(x);
     }
     fan_offsets_.push_back(int(fans_.size()));
   }
@@ -56,9 +57,12 @@ std::vector<int> TriangleWalker::ring_from(int v, int first) const {
 
 bool TriangleWalker::regular(int v) const {
   switch (vertex_role(c_, v)) {
-    case VertexRole::interior: return c_.n_vertex_faces(v) == 6;
-    case VertexRole::boundary: return c_.n_vertex_faces(v) == 3;
-    default: return false;
+    case VertexRole::interior:
+      return c_.n_vertex_faces(v) == 6;
+    case VertexRole::boundary:
+      return c_.n_vertex_faces(v) == 3;
+    default:
+      return false;
   }
 }
 
@@ -73,7 +77,8 @@ namespace {
 // Lattice directions counter-clockwise: (1,0) (0,1) (−1,1) (−1,0) (0,−1) (1,−1).
 constexpr int kDirection[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
 // Lattice positions of the 12 net points (core/plans/patch_basis.h order).
-constexpr int kNet[12][2] = {{0, 0}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, -1}, {-1, 1}, {2, -1}, {2, 0}, {1, 1}, {0, 2}, {-1, 2}};
+constexpr int kNet[12][2] = {{0, 0},  {1, 0},  {0, 1}, {-1, 0}, {0, -1}, {1, -1},
+                             {-1, 1}, {2, -1}, {2, 0}, {1, 1},  {0, 2},  {-1, 2}};
 
 int net_index(int i, int j) {
   for (int k = 0; k < 12; ++k)
@@ -113,7 +118,8 @@ std::array<VertexCombination, 12> loop_regular_net(const TriangleWalker& w, int 
       const int n = net_index(at[k][0] + kDirection[d][0], at[k][1] + kDirection[d][1]);
       if (n < 0) continue;
       // A real vertex wins over a phantom of the same point seen from another corner.
-      if (net[size_t(n)].empty() || (net[size_t(n)].size() > 1 && ring[size_t(d)].size() == 1)) net[size_t(n)] = ring[size_t(d)];
+      if (net[size_t(n)].empty() || (net[size_t(n)].size() > 1 && ring[size_t(d)].size() == 1))
+        net[size_t(n)] = ring[size_t(d)];
     }
   }
   return net;

@@ -29,7 +29,8 @@ public:
     for (int v = 0; v < t_.n_vertices; ++v)
       if (c_.n_vertex_faces(v) > kMaxLoopValence)
         throw Error("vertex " + std::to_string(v) + " has " + std::to_string(c_.n_vertex_faces(v)) +
-                    " faces; Loop patches take at most " + std::to_string(kMaxLoopValence) + " (use --scheme catmull-clark)");
+                    " faces; Loop patches take at most " + std::to_string(kMaxLoopValence) +
+                    " (use --scheme catmull-clark)");
     plans_.patch_roots.reserve(size_t(t_.n_faces()));
     plans_.patch_corner_points = t_.verts;
     plans_.nodes.reserve(size_t(t_.n_faces()) * 13);
@@ -47,8 +48,8 @@ public:
 private:
   // The stencils of a piece's vertices over the base vertices: per piece vertex, weights over `base`.
   struct Piece {
-    std::vector<int> base;                  // piece-local coarse index → base vertex
-    std::vector<Eigen::VectorXd> weights;   // per fine vertex: weights over `base`
+    std::vector<int> base;                 // piece-local coarse index → base vertex
+    std::vector<Eigen::VectorXd> weights;  // per fine vertex: weights over `base`
   };
 
   int point(const VertexCombination& combination, const Piece* piece) {
@@ -154,6 +155,8 @@ private:
 
 }  // namespace
 
-SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta) { return LoopBuilder(topology, beta).build(); }
+SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta) {
+  return LoopBuilder(topology, beta).build();
+}
 
 }  // namespace gps

@@ -8,10 +8,9 @@ namespace gps {
 /// One plan per triangle (patch p = face p, corners in face order at (u, v) = (0,0), (1,0), (0,1)):
 /// a regular triangle (every corner regular: interior of valence 6 or on a boundary with 3 faces) is
 /// one box-spline node; any other is split once, which leaves at most one irregular corner per
-/// child: that child is an extraordinary node, evaluated exactly (core/extraordinary/loop_extraordinary_tables.h), the others
-/// are box splines. Depth therefore does not trade accuracy: the plans are exact at depth 1.
-/// Throws gps::Error naming the first face that is not a triangle, or a vertex of more than
-/// kMaxLoopValence faces.
+/// child: that child is an extraordinary node, evaluated exactly (core/extraordinary/loop_extraordinary_tables.h), the
+/// others are box splines. Depth therefore does not trade accuracy: the plans are exact at depth 1. Throws gps::Error
+/// naming the first face that is not a triangle, or a vertex of more than kMaxLoopValence faces.
 SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta);
 
 /// The largest valence the exact tables take (their size grows with it).

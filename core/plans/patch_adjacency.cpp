@@ -63,7 +63,8 @@ void link_edge(PatchPlans& plans, const std::vector<const EdgeUse*>& uses) {
   } else if (n_whole == 0 && n_beside == 0 && n_halves == 4) {
     for (const EdgeUse* a : halves)
       for (const EdgeUse* b : halves)
-        if (a != b && a->patch != b->patch && half_end(*a) == half_end(*b) && a->from != b->from) link(plans, *a, *b, 0);
+        if (a != b && a->patch != b->patch && half_end(*a) == half_end(*b) && a->from != b->from)
+          link(plans, *a, *b, 0);
   }
 }
 

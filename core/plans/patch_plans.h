@@ -57,27 +57,27 @@ struct StencilTable {
 
 struct PatchPlans {
   PatchShape shape = PatchShape::quad;
-  int32_t max_depth = 0;                      // of the deepest node
-  std::vector<int32_t> nodes;                 // node records, see above
-  std::vector<int32_t> patch_roots;           // per patch: offset of its root node in nodes
-  std::vector<int32_t> patch_corner_points;   // 4 (quads) or 3 (triangles) per patch: points whose means
-                                              // are the corners of the patch's control polygon (for edge
-                                              // tessellation levels); a corner shared by two patches has
-                                              // the same index in both
-  std::vector<int32_t> patch_edges;           // quads: 4 × 3 per patch, see PatchEdgePart
-  std::vector<int32_t> patch_neighbours;      // 4 per patch edge and corner_owners 2 per patch corner:
-  std::vector<int32_t> corner_owners;         // core/plans/patch_adjacency.h (build_surface_plans fills them)
-  std::vector<double> extraordinary_tables;              // triangles: the tables of core/extraordinary/loop_extraordinary_tables.h
+  int32_t max_depth = 0;                     // of the deepest node
+  std::vector<int32_t> nodes;                // node records, see above
+  std::vector<int32_t> patch_roots;          // per patch: offset of its root node in nodes
+  std::vector<int32_t> patch_corner_points;  // 4 (quads) or 3 (triangles) per patch: points whose means
+                                             // are the corners of the patch's control polygon (for edge
+                                             // tessellation levels); a corner shared by two patches has
+                                             // the same index in both
+  std::vector<int32_t> patch_edges;          // quads: 4 × 3 per patch, see PatchEdgePart
+  std::vector<int32_t> patch_neighbours;     // 4 per patch edge and corner_owners 2 per patch corner:
+  std::vector<int32_t> corner_owners;        // core/plans/patch_adjacency.h (build_surface_plans fills them)
+  std::vector<double> extraordinary_tables;  // triangles: the tables of core/extraordinary/loop_extraordinary_tables.h
   int32_t corners() const { return int32_t(shape); }
   int32_t n_patches() const { return int32_t(patch_roots.size()); }
 };
 
 /// Patch edge k of a patch runs from its corner k to corner k+1 and is described by three ints in
-/// PatchPlans::patch_edges[kPatchEdgeStride·patch + kPatchEdgeInts·k ...]: the points whose means are the two ends of the edge
-/// of the (base or split-face) mesh it lies on, in the patch edge's direction, and its part of that
-/// edge. A quad next to a split face meets two half-size patches along one edge (a T-junction):
-/// it gives that edge an even tessellation level and each half takes half of it, so the vertices of
-/// both sides sit at the same parameters of the same limit curve (core/plans/patch_layout.h).
+/// PatchPlans::patch_edges[kPatchEdgeStride·patch + kPatchEdgeInts·k ...]: the points whose means are the two ends of
+/// the edge of the (base or split-face) mesh it lies on, in the patch edge's direction, and its part of that edge. A
+/// quad next to a split face meets two half-size patches along one edge (a T-junction): it gives that edge an even
+/// tessellation level and each half takes half of it, so the vertices of both sides sit at the same parameters of the
+/// same limit curve (core/plans/patch_layout.h).
 enum class PatchEdgePart : int32_t {
   whole = kEdgeWhole,                            // all of the edge, and so is the patch beside it
   whole_beside_halves = kEdgeWholeBesideHalves,  // all of the edge; the other side is split into two halves

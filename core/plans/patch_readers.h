@@ -24,7 +24,7 @@ public:
 
 private:
   int n_patches_ = 0;
-  std::vector<int> point_offsets_, point_patches_;      // per point: the patches that read it
+  std::vector<int> point_offsets_, point_patches_;        // per point: the patches that read it
   std::vector<int> canonical_offsets_, canonical_users_;  // per patch: the patches evaluating a boundary point from it
 };
 

@@ -33,9 +33,14 @@ struct RangePlans {
 // their first use, point indices and node offsets local to this range (merge() renumbers them).
 class Builder {
 public:
-  Builder(const LocalMesh& base, int max_depth, ExtraordinaryNodes extraordinary, bool bspline_leaves, QuadExtraordinaryTableCache& cache)
-      : max_depth_(max_depth), exact_(extraordinary == ExtraordinaryNodes::exact), bspline_leaves_(bspline_leaves), base_(base),
-        cache_(cache), stencils_(base.topology.n_vertices) {}
+  Builder(const LocalMesh& base, int max_depth, ExtraordinaryNodes extraordinary, bool bspline_leaves,
+          QuadExtraordinaryTableCache& cache)
+      : max_depth_(max_depth),
+        exact_(extraordinary == ExtraordinaryNodes::exact),
+        bspline_leaves_(bspline_leaves),
+        base_(base),
+        cache_(cache),
+        stencils_(base.topology.n_vertices) {}
 
   RangePlans build(int first, int last) {
     const PolygonTopology& t = base_.topology;
@@ -75,7 +80,8 @@ public:
           return stencils_.add(Stencil::vertex(corner(a)) * 0.5 + Stencil::vertex(corner(b)) * 0.5);
         };
         const int next_mid = midpoint(k, k + 1), prev_mid = midpoint(k - 1, k);
-        plans_.patch_corner_points.insert(plans_.patch_corner_points.end(), {corner(k), next_mid, centroid_point, prev_mid});
+        plans_.patch_corner_points.insert(plans_.patch_corner_points.end(),
+                                          {corner(k), next_mid, centroid_point, prev_mid});
         add_edge(corner(k), corner(k + 1), PatchEdgePart::first_half);
         add_edge(next_mid, centroid_point, PatchEdgePart::whole);
         add_edge(centroid_point, prev_mid, PatchEdgePart::whole);
@@ -123,18 +129,21 @@ private:
     return offset;
   }
 
-  // A node whose corner r is its only irregular one, evaluated exactly (core/extraordinary/quad_extraordinary_tables.h),
-  // or −1 where its neighbourhood is not self-similar.
+  // A node whose corner r is its only irregular one, evaluated exactly
+  // (core/extraordinary/quad_extraordinary_tables.h), or −1 where its neighbourhood is not self-similar.
   int emit_extraordinary(const LocalMesh& m, const std::array<int, 4>& c, int r) {
-    const std::array<int, 4> turned = {c[size_t(r)], c[size_t((r + 1) % 4)], c[size_t((r + 2) % 4)], c[size_t((r + 3) % 4)]};
+    const std::array<int, 4> turned = {c[size_t(r)], c[size_t((r + 1) % 4)], c[size_t((r + 2) % 4)],
+                                       c[size_t((r + 3) % 4)]};
     const auto neighbourhood = quad_extraordinary_neighbourhood(m, turned);
     if (!neighbourhood) return -1;
     auto table = cache_.table(neighbourhood->signature);
     if (!table) return -1;
     auto used = std::find(extraordinary_tables_.begin(), extraordinary_tables_.end(), table);
-    if (used == extraordinary_tables_.end()) used = extraordinary_tables_.insert(extraordinary_tables_.end(), std::move(table));
+    if (used == extraordinary_tables_.end())
+      used = extraordinary_tables_.insert(extraordinary_tables_.end(), std::move(table));
     const int offset = int(plans_.nodes.size());
-    plans_.nodes.insert(plans_.nodes.end(), {kNodeExtraordinary, r, int(used - extraordinary_tables_.begin()), int(neighbourhood->points.size())});
+    plans_.nodes.insert(plans_.nodes.end(), {kNodeExtraordinary, r, int(used - extraordinary_tables_.begin()),
+                                             int(neighbourhood->points.size())});
     for (const int p : neighbourhood->points) plans_.nodes.push_back(point(m, {{p, 1.0}}));
     return offset;
   }
@@ -245,14 +254,17 @@ SurfaceTables merge(std::vector<RangePlans>& ranges, int n_base) {
         continue;
       }
       const size_t n = kind == NodeKind::internal ? 4 : 16;
-      for (size_t i = o + 1; i <= o + n; ++i) nodes[i] = kind == NodeKind::internal ? base + p.nodes[i] : point(p.nodes[i]);
+      for (size_t i = o + 1; i <= o + n; ++i)
+        nodes[i] = kind == NodeKind::internal ? base + p.nodes[i] : point(p.nodes[i]);
       o += n + 1;
     }
     const size_t first = patch_base[r];
     for (size_t i = 0; i < p.patch_roots.size(); ++i) plans.patch_roots[first + i] = base + p.patch_roots[i];
-    for (size_t i = 0; i < p.patch_corner_points.size(); ++i) plans.patch_corner_points[4 * first + i] = point(p.patch_corner_points[i]);
+    for (size_t i = 0; i < p.patch_corner_points.size(); ++i)
+      plans.patch_corner_points[4 * first + i] = point(p.patch_corner_points[i]);
     for (size_t i = 0; i < p.patch_edges.size(); ++i)
-      plans.patch_edges[kPatchEdgeStride * first + i] = i % kPatchEdgeInts == 2 ? p.patch_edges[i] : point(p.patch_edges[i]);
+      plans.patch_edges[kPatchEdgeStride * first + i] =
+          i % kPatchEdgeInts == 2 ? p.patch_edges[i] : point(p.patch_edges[i]);
     parts[r] = {};
   }
   return {std::move(plans), stencils.finish()};
@@ -271,18 +283,20 @@ void check_plan_valences(const PolygonTopology& t) {
   std::vector<int> faces_at(size_t(t.n_vertices), 0);
   for (int f = 0; f < t.n_faces(); ++f) {
     if (t.face_size(f) > kMaxPlanValence)
-      throw Error("face " + std::to_string(f) + " has " + std::to_string(t.face_size(f)) + " sides; patch plans handle up to " +
-                  std::to_string(kMaxPlanValence) + " (split the face, or use gpsurf subdivide)");
+      throw Error("face " + std::to_string(f) + " has " + std::to_string(t.face_size(f)) +
+                  " sides; patch plans handle up to " + std::to_string(kMaxPlanValence) +
+                  " (split the face, or use gpsurf subdivide)");
     for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k)
       if (++faces_at[size_t(t.verts[size_t(k)])] > kMaxPlanValence)
-        throw Error("vertex " + std::to_string(t.verts[size_t(k)]) + " has more than " + std::to_string(kMaxPlanValence) +
-                    " faces; patch plans handle valences up to " + std::to_string(kMaxPlanValence) +
-                    " (their stencils grow with its square; use gpsurf subdivide)");
+        throw Error("vertex " + std::to_string(t.verts[size_t(k)]) + " has more than " +
+                    std::to_string(kMaxPlanValence) + " faces; patch plans handle valences up to " +
+                    std::to_string(kMaxPlanValence) + " (their stencils grow with its square; use gpsurf subdivide)");
   }
 }
 }  // namespace
 
-SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary, bool bspline_leaves) {
+SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary,
+                          bool bspline_leaves) {
   const int shallowest = extraordinary == ExtraordinaryNodes::exact ? 0 : 1;
   if (max_depth < shallowest || max_depth > kDeepestPlan)
     throw usage_error("plan depth must be " + std::to_string(shallowest) + "..8, got " + std::to_string(max_depth));
@@ -297,7 +311,8 @@ SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, Extrao
 #pragma omp parallel for schedule(dynamic)
   for (int r = 0; r < n_ranges; ++r) {
     try {
-      parts[size_t(r)] = Builder(base, max_depth, extraordinary, bspline_leaves, cache).build(r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange));
+      parts[size_t(r)] = Builder(base, max_depth, extraordinary, bspline_leaves, cache)
+                             .build(r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange));
     } catch (...) {
       failures[size_t(r)] = std::current_exception();
     }

@@ -13,7 +13,8 @@ struct SurfaceTables {
   size_t bytes() const {
     const PatchPlans& p = plans;
     return 4 * (p.nodes.size() + p.patch_roots.size() + p.patch_corner_points.size() + p.patch_edges.size() +
-                p.patch_neighbours.size() + p.corner_owners.size() + stencils.offsets.size() + stencils.indices.size()) +
+                p.patch_neighbours.size() + p.corner_owners.size() + stencils.offsets.size() +
+                stencils.indices.size()) +
            8 * (p.extraordinary_tables.size() + stencils.weights.size());
   }
 };
@@ -34,7 +35,7 @@ enum class ExtraordinaryNodes {
 /// patch; none is met in practice). Depends on topology only. `bspline_leaves` =
 /// false makes every regular node a terminal Bézier node instead (tests: with n = 4 the Fig. 2.5
 /// rules are the B-spline's).
-SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary = ExtraordinaryNodes::exact,
-                       bool bspline_leaves = true);
+SurfaceTables build_plans(const PolygonTopology& topology, int max_depth,
+                          ExtraordinaryNodes extraordinary = ExtraordinaryNodes::exact, bool bspline_leaves = true);
 
 }  // namespace gps

@@ -22,8 +22,9 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
 
 SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options) {
   const ExtraordinaryNodes extraordinary = options.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier;
-  SurfaceTables tables = scheme_for(topology, options) == Scheme::loop ? build_loop_plans(topology, options.loop_beta)
-                                                                    : build_plans(topology, options.depth, extraordinary);
+  SurfaceTables tables = scheme_for(topology, options) == Scheme::loop
+                             ? build_loop_plans(topology, options.loop_beta)
+                             : build_plans(topology, options.depth, extraordinary);
   add_patch_adjacency(tables.plans);
   return tables;
 }

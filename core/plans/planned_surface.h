@@ -20,9 +20,9 @@ constexpr int kExactPlanDepth = 2;
 struct PlanOptions {
   std::optional<Scheme> scheme;  // empty: Loop for a mesh of triangles only (valences up to
                                  // kMaxLoopValence), else Catmull-Clark
-  int depth = kExactPlanDepth;   // Catmull-Clark: where exact nodes take over (0..8), or the thesis' Bézier plans (1..8)
+  int depth = kExactPlanDepth;  // Catmull-Clark: where exact nodes take over (0..8), or the thesis' Bézier plans (1..8)
   LoopBeta loop_beta = LoopBeta::loop;
-  bool exact = true;             // Catmull-Clark: extraordinary vertices evaluated exactly (Loop's always are)
+  bool exact = true;  // Catmull-Clark: extraordinary vertices evaluated exactly (Loop's always are)
 };
 
 /// The scheme `options` give for this mesh.

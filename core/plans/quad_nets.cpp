@@ -51,10 +51,14 @@ bool regular_vertex(const LocalMesh& m, int v) {
   for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i)
     if (m.topology.face_size(c.vertex_faces[size_t(i)]) != 4) return false;
   switch (vertex_role(c, v)) {
-    case VertexRole::interior: return c.n_vertex_faces(v) == 4;
-    case VertexRole::boundary: return c.n_vertex_faces(v) == 2;
-    case VertexRole::corner: return true;
-    case VertexRole::isolated: return false;
+    case VertexRole::interior:
+      return c.n_vertex_faces(v) == 4;
+    case VertexRole::boundary:
+      return c.n_vertex_faces(v) == 2;
+    case VertexRole::corner:
+      return true;
+    case VertexRole::isolated:
+      return false;
   }
   return false;
 }
@@ -96,8 +100,8 @@ void bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c, std::ar
       for (int i = conn.vertex_face_offsets[size_t(v)]; i < conn.vertex_face_offsets[size_t(v) + 1]; ++i) {
         const int f = conn.vertex_faces[size_t(i)], kv = conn.vertex_face_corners[size_t(i)];
         const int prev = face_vertex(m, f, kv + 3), next = face_vertex(m, f, kv + 1);
-        if (f == q || prev == c[size_t((k + 1) % 4)] || next == c[size_t((k + 1) % 4)] || prev == c[size_t((k + 3) % 4)] ||
-            next == c[size_t((k + 3) % 4)])
+        if (f == q || prev == c[size_t((k + 1) % 4)] || next == c[size_t((k + 1) % 4)] ||
+            prev == c[size_t((k + 3) % 4)] || next == c[size_t((k + 3) % 4)])
           continue;
         set_vertex(g + o1 + o2, face_vertex(m, f, kv + 2));
       }
@@ -116,7 +120,8 @@ std::array<LocalCombination, 16> bezier_net(const LocalMesh& m, const std::array
   const auto at = [&](Grid2 g) -> Combo& { return net[size_t(g.i + 4 * g.j)]; };
   VertexMask corner_mask;
   for (int k = 0; k < 4; ++k) {
-    const int v = c[size_t(k)], next = c[size_t((k + 1) % 4)], prev = c[size_t((k + 3) % 4)], opposite = c[size_t((k + 2) % 4)];
+    const int v = c[size_t(k)], next = c[size_t((k + 1) % 4)], prev = c[size_t((k + 3) % 4)],
+              opposite = c[size_t((k + 2) % 4)];
     const VertexRole role = vertex_role(conn, v);
     const int n = conn.valence(v);
     const double nr = role == VertexRole::interior ? n : 4.0;  // boundary vertices take regular weights

@@ -47,7 +47,8 @@ std::vector<T> catmull_clark_values(const PolygonTopology& t, const MeshConnecti
     if (c.is_boundary_edge(e))
       edge_points[e] = 0.5 * (a + b);
     else
-      edge_points[e] = 0.25 * (a + b + face_points[c.edge_faces[2 * size_t(e)]] + face_points[c.edge_faces[2 * size_t(e) + 1]]);
+      edge_points[e] =
+          0.25 * (a + b + face_points[c.edge_faces[2 * size_t(e)]] + face_points[c.edge_faces[2 * size_t(e) + 1]]);
   }
 #pragma omp parallel if (parallel)
   {
@@ -71,9 +72,11 @@ std::vector<T> catmull_clark_values(const PolygonTopology& t, const MeshConnecti
   return out;
 }
 
-template std::vector<Vec3> catmull_clark_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&);
+template std::vector<Vec3> catmull_clark_values(const PolygonTopology&, const MeshConnectivity&,
+                                                const std::vector<Vec3>&);
 template std::vector<Eigen::VectorXd> catmull_clark_values(const PolygonTopology&, const MeshConnectivity&,
                                                            const std::vector<Eigen::VectorXd>&);
-template std::vector<Dual> catmull_clark_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&);
+template std::vector<Dual> catmull_clark_values(const PolygonTopology&, const MeshConnectivity&,
+                                                const std::vector<Dual>&);
 
 }  // namespace gps

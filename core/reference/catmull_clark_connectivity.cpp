@@ -30,7 +30,9 @@ MeshConnectivity catmull_clark_connectivity(const PolygonTopology& t, const Mesh
   inner_begin[0] = 2 * ne;
   for (int e = 0; e < ne; ++e) inner_begin[size_t(e) + 1] = inner_begin[size_t(e)] + (c.is_boundary_edge(e) ? 1 : 2);
   const auto outer_at = [&](int e, int v) { return outer[2 * size_t(e) + (c.edge_verts[2 * size_t(e)] == v ? 0 : 1)]; };
-  const auto inner_at = [&](int e, int f) { return inner_begin[size_t(e)] + (c.edge_faces[2 * size_t(e)] == f ? 0 : 1); };
+  const auto inner_at = [&](int e, int f) {
+    return inner_begin[size_t(e)] + (c.edge_faces[2 * size_t(e)] == f ? 0 : 1);
+  };
 
   MeshConnectivity r;
   const size_t n_edges = size_t(inner_begin[size_t(ne)]);
@@ -53,8 +55,10 @@ MeshConnectivity catmull_clark_connectivity(const PolygonTopology& t, const Mesh
         const int e = c.vertex_edges[size_t(i)];
         for (int j = 0; j < 2; ++j) {
           const int corner = side_corner[2 * size_t(e) + size_t(j)];
-          r.edge_faces[2 * size_t(i) + size_t(j)] =
-              j == 1 && c.is_boundary_edge(e) ? -1 : t.verts[size_t(corner)] == v ? corner : side_next[2 * size_t(e) + size_t(j)];
+          r.edge_faces[2 * size_t(i) + size_t(j)] = j == 1 && c.is_boundary_edge(e) ? -1
+                                                    : t.verts[size_t(corner)] == v
+                                                        ? corner
+                                                        : side_next[2 * size_t(e) + size_t(j)];
         }
       }
       r.vertex_face_offsets[size_t(v)] = c.vertex_face_offsets[size_t(v)];
@@ -108,7 +112,8 @@ MeshConnectivity catmull_clark_connectivity(const PolygonTopology& t, const Mesh
         r.vertex_faces[face_offset + size_t(k)] = o + k;
         r.vertex_face_corners[face_offset + size_t(k)] = 2;
       }
-      std::sort(r.vertex_edges.begin() + std::ptrdiff_t(edge_offset), r.vertex_edges.begin() + std::ptrdiff_t(edge_offset) + n);
+      std::sort(r.vertex_edges.begin() + std::ptrdiff_t(edge_offset),
+                r.vertex_edges.begin() + std::ptrdiff_t(edge_offset) + n);
     }
   }
   r.vertex_edge_offsets[n_vertices] = int(2 * n_edges);

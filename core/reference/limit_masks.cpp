@@ -41,13 +41,17 @@ PutLimit<T> store_in(std::vector<T>& out) {
 }  // namespace
 
 template <class T>
-void catmull_clark_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p, int n, const PutLimit<T>& put) {
-  apply_masks(n, p, [&](int v, VertexMask& mask) { catmull_clark_limit_mask(t, c, v, mask); }, put);
+void catmull_clark_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p, int n,
+                         const PutLimit<T>& put) {
+  apply_masks(
+      n, p, [&](int v, VertexMask& mask) { catmull_clark_limit_mask(t, c, v, mask); }, put);
 }
 
 template <class T>
-void loop_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p, LoopBeta kind, const PutLimit<T>& put) {
-  apply_masks(t.n_vertices, p, [&](int v, VertexMask& mask) { loop_limit_mask(c, v, kind, mask); }, put);
+void loop_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p, LoopBeta kind,
+                const PutLimit<T>& put) {
+  apply_masks(
+      t.n_vertices, p, [&](int v, VertexMask& mask) { loop_limit_mask(c, v, kind, mask); }, put);
 }
 
 template <class T>
@@ -64,14 +68,23 @@ std::vector<T> loop_limit(const PolygonTopology& t, const MeshConnectivity& c, c
   return out;
 }
 
-template std::vector<Vec3> catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&);
-template std::vector<Dual> catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&);
-template std::vector<Vec3> loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&, LoopBeta);
-template std::vector<Dual> loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&, LoopBeta);
-template std::vector<Eigen::VectorXd> loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Eigen::VectorXd>&, LoopBeta);
-template void catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&, int, const PutLimit<Vec3>&);
-template void catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&, int, const PutLimit<Dual>&);
-template void loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&, LoopBeta, const PutLimit<Vec3>&);
-template void loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&, LoopBeta, const PutLimit<Dual>&);
+template std::vector<Vec3> catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&,
+                                               const std::vector<Vec3>&);
+template std::vector<Dual> catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&,
+                                               const std::vector<Dual>&);
+template std::vector<Vec3> loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&,
+                                      LoopBeta);
+template std::vector<Dual> loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&,
+                                      LoopBeta);
+template std::vector<Eigen::VectorXd> loop_limit(const PolygonTopology&, const MeshConnectivity&,
+                                                 const std::vector<Eigen::VectorXd>&, LoopBeta);
+template void catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&, int,
+                                  const PutLimit<Vec3>&);
+template void catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&, int,
+                                  const PutLimit<Dual>&);
+template void loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&, LoopBeta,
+                         const PutLimit<Vec3>&);
+template void loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&, LoopBeta,
+                         const PutLimit<Dual>&);
 
 }  // namespace gps

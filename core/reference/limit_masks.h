@@ -17,9 +17,11 @@ bool all_quads(const PolygonTopology& t);
 template <class T>
 std::vector<T> catmull_clark_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values);
 
-/// Loop limit of each vertex: interior (1 − nχ)v + χΣn_i with χ = 1/(3/(8β) + n), boundary (a + 4v + b)/6, corners stay.
+/// Loop limit of each vertex: interior (1 − nχ)v + χΣn_i with χ = 1/(3/(8β) + n), boundary (a + 4v + b)/6, corners
+/// stay.
 template <class T>
-std::vector<T> loop_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values, LoopBeta kind);
+std::vector<T> loop_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values,
+                          LoopBeta kind);
 
 /// Takes each limit as it is made, put(v, limit of vertex v), from all cores for a large mesh: the
 /// limits need not be stored before their use (the reference maps them straight back to Gaussians).

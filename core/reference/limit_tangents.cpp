@@ -85,7 +85,8 @@ TangentPair boundary_eigenvectors(int k, bool quads) {
   const MeshConnectivity c = connectivity_of(fan);
   std::vector<Eigen::VectorXd> unit(static_cast<size_t>(n_points));
   for (int i = 0; i < n_points; ++i) unit[size_t(i)] = Eigen::VectorXd::Unit(n_points, i);
-  const std::vector<Eigen::VectorXd> refined = quads ? catmull_clark_values(fan, c, unit) : loop_values(fan, c, unit, LoopBeta::loop);
+  const std::vector<Eigen::VectorXd> refined =
+      quads ? catmull_clark_values(fan, c, unit) : loop_values(fan, c, unit, LoopBeta::loop);
   // The refined ring: v's vertex point, the edge points of (v, e_i), the face points.
   Eigen::MatrixXd step(n_points, n_points);
   step.row(0) = refined[0].transpose();
@@ -138,14 +139,16 @@ bool boundary_masks(int v, const OrderedRing& ring, bool quads, VertexMask& firs
     masks[m]->add_group(w[0], v);
     for (size_t i = 0; i < ring.edges.size(); ++i) masks[m]->add_group(w[long(1 + i)], ring.edges[i]);
     if (quads)
-      for (size_t i = 0; i < ring.diagonals.size(); ++i) masks[m]->add_group(w[long(1 + ring.edges.size() + i)], ring.diagonals[i]);
+      for (size_t i = 0; i < ring.diagonals.size(); ++i)
+        masks[m]->add_group(w[long(1 + ring.edges.size() + i)], ring.diagonals[i]);
   }
   return true;
 }
 
 }  // namespace
 
-bool catmull_clark_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& first, VertexMask& second) {
+bool catmull_clark_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& first,
+                                 VertexMask& second) {
   OrderedRing ring;
   if (!ordered_ring(t, c, v, 4, ring)) return false;
   if (ring.boundary) return boundary_masks(v, ring, true, first, second);
@@ -165,7 +168,8 @@ bool catmull_clark_tangent_masks(const PolygonTopology& t, const MeshConnectivit
   return true;
 }
 
-bool loop_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& first, VertexMask& second) {
+bool loop_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& first,
+                        VertexMask& second) {
   OrderedRing ring;
   if (!ordered_ring(t, c, v, 3, ring)) return false;
   if (ring.boundary) return boundary_masks(v, ring, false, first, second);

@@ -17,14 +17,16 @@ namespace gps {
 /// A_n = 1 + cos(2π/n) + cos(π/n)·√(2(9 + cos(2π/n))), e_i counter-clockwise, f_i between e_i and
 /// e_{i+1}. A boundary vertex or corner: the eigenvectors of its ring's subdivision matrix under
 /// the boundary rules, computed once per number of faces. first × second is the normal on the side
-/// the faces' corners turn to (outward for counter-clockwise faces). False where there is no tangent plane to take (isolated vertex, an open
-/// fan, eigenvalues not real or not separated).
-bool catmull_clark_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& first, VertexMask& second);
+/// the faces' corners turn to (outward for counter-clockwise faces). False where there is no tangent plane to take
+/// (isolated vertex, an open fan, eigenvalues not real or not separated).
+bool catmull_clark_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& first,
+                                 VertexMask& second);
 
 /// Loop, every face around v a triangle. Interior (Loop 1987): Σ_i cos(2πi/n) e_i and
 /// Σ_i sin(2πi/n) e_i, e_i counter-clockwise (whatever β: the subdominant left eigenvectors do not
 /// involve it). Boundary as for Catmull-Clark.
-bool loop_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& first, VertexMask& second);
+bool loop_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& first,
+                        VertexMask& second);
 
 /// q_u and q_v (first and second mask applied to the 9D points p) at every vertex; zero where the
 /// vertex has no masks.

@@ -75,8 +75,11 @@ std::vector<T> loop_values(const PolygonTopology& t, const MeshConnectivity& c, 
   return out;
 }
 
-template std::vector<Vec3> loop_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&, LoopBeta);
-template std::vector<Dual> loop_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&, LoopBeta);
-template std::vector<Eigen::VectorXd> loop_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Eigen::VectorXd>&, LoopBeta);
+template std::vector<Vec3> loop_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&,
+                                       LoopBeta);
+template std::vector<Dual> loop_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&,
+                                       LoopBeta);
+template std::vector<Eigen::VectorXd> loop_values(const PolygonTopology&, const MeshConnectivity&,
+                                                  const std::vector<Eigen::VectorXd>&, LoopBeta);
 
 }  // namespace gps

@@ -38,7 +38,8 @@ MeshConnectivity loop_connectivity(const PolygonTopology& t, const MeshConnectiv
   std::vector<int> inner_id(3 * size_t(nf));
 #pragma omp parallel for if (parallel)
   for (int e = 0; e < ne; ++e) {
-    const auto first = inner.begin() + (inner_begin[size_t(e)] - 2 * ne), last = inner.begin() + (inner_begin[size_t(e) + 1] - 2 * ne);
+    const auto first = inner.begin() + (inner_begin[size_t(e)] - 2 * ne),
+               last = inner.begin() + (inner_begin[size_t(e) + 1] - 2 * ne);
     std::sort(first, last);
     for (auto it = first; it != last; ++it) inner_id[size_t(it->second)] = 2 * ne + int(it - inner.begin());
   }
@@ -126,7 +127,7 @@ MeshConnectivity loop_connectivity(const PolygonTopology& t, const MeshConnectiv
         r.edge_faces[2 * id] = 4 * f + k;
         r.edge_faces[2 * id + 1] = 4 * f + 3;
       }
-    // Children's edges, corner k to k + 1.
+      // Children's edges, corner k to k + 1.
 #pragma omp for
     for (int f = 0; f < nf; ++f)
       for (int k = 0; k < 3; ++k) {

@@ -35,7 +35,9 @@ CornerParams base_corner_params(const PolygonTopology& t) {
   return params;
 }
 
-PatchParam midpoint(const PatchParam& a, const PatchParam& b) { return {a.patch, 0.5 * (a.u + b.u), 0.5 * (a.v + b.v)}; }
+PatchParam midpoint(const PatchParam& a, const PatchParam& b) {
+  return {a.patch, 0.5 * (a.u + b.u), 0.5 * (a.v + b.v)};
+}
 
 // Corner params of the children, in catmull_clark_topology() order: put(i, param) for child corner i.
 template <class Put>
@@ -54,7 +56,8 @@ void refine_corner_params(const PolygonTopology& t, const CornerParams& params, 
     const PatchParam centre = {p[0].patch, 0.25 * (p[0].u + p[1].u + p[2].u + p[3].u),
                                0.25 * (p[0].v + p[1].v + p[2].v + p[3].v)};
     for (int k = 0; k < 4; ++k)
-      for (const PatchParam& q : {p[k], midpoint(p[k], p[(k + 1) % 4]), centre, midpoint(p[(k + 3) % 4], p[k])}) put(i++, q);
+      for (const PatchParam& q : {p[k], midpoint(p[k], p[(k + 1) % 4]), centre, midpoint(p[(k + 3) % 4], p[k])})
+        put(i++, q);
   }
 }
 
@@ -142,7 +145,8 @@ Refined<T> refine(const PolygonTopology& base, std::vector<T> p, const Subdivisi
       MeshConnectivity finer_connectivity = catmull_clark_connectivity(t, c);
       PolygonTopology finer = catmull_clark_topology(t, c);
       if (vertex_params)
-        refine_params(t, finer, last, corner_params, params, *vertex_params, [](const auto&... a) { refine_corner_params(a...); });
+        refine_params(t, finer, last, corner_params, params, *vertex_params,
+                      [](const auto&... a) { refine_corner_params(a...); });
       t = std::move(finer);
       c = std::move(finer_connectivity);
     } else {
@@ -150,7 +154,8 @@ Refined<T> refine(const PolygonTopology& base, std::vector<T> p, const Subdivisi
       PolygonTopology finer = loop_topology(t, c);  // throws where a face is not a triangle
       MeshConnectivity finer_connectivity = loop_connectivity(t, c);
       if (vertex_params)
-        refine_params(t, finer, last, corner_params, params, *vertex_params, [](const auto&... a) { refine_loop_corner_params(a...); });
+        refine_params(t, finer, last, corner_params, params, *vertex_params,
+                      [](const auto&... a) { refine_loop_corner_params(a...); });
       t = std::move(finer);
       c = std::move(finer_connectivity);
     }
@@ -179,23 +184,24 @@ void put_final_values(const Refined<T>& r, const SubdivisionOptions& o, const Pu
     catmull_clark_limit(t, c, r.values, t.n_vertices, put);
   } else {
     // A vertex's limit is that of its vertex point one level down, where every face is a quad.
-    catmull_clark_limit(catmull_clark_topology(t, c), catmull_clark_connectivity(t, c), catmull_clark_values(t, c, r.values),
-                        t.n_vertices, put);
+    catmull_clark_limit(catmull_clark_topology(t, c), catmull_clark_connectivity(t, c),
+                        catmull_clark_values(t, c, r.values), t.n_vertices, put);
   }
 }
 
 // The limit tangents q_u, q_v of every vertex (core/reference/limit_tangents.h), where put_final_values
 // takes its limits: on the refined mesh, or one Catmull-Clark step down where it has other faces
 // than quads (a vertex's tangent plane is that of its vertex point).
-void limit_tangents_of(const Refined<Dual>& r, const SubdivisionOptions& o, std::vector<Dual>& first, std::vector<Dual>& second) {
+void limit_tangents_of(const Refined<Dual>& r, const SubdivisionOptions& o, std::vector<Dual>& first,
+                       std::vector<Dual>& second) {
   const PolygonTopology& t = r.topology;
   const MeshConnectivity& c = r.connectivity;
   if (o.scheme == Scheme::loop || all_quads(t)) {
     limit_tangents(t, c, r.values, o.scheme == Scheme::loop, first, second);
     return;
   }
-  limit_tangents(catmull_clark_topology(t, c), catmull_clark_connectivity(t, c), catmull_clark_values(t, c, r.values), false,
-                 first, second);
+  limit_tangents(catmull_clark_topology(t, c), catmull_clark_connectivity(t, c), catmull_clark_values(t, c, r.values),
+                 false, first, second);
   first.resize(size_t(t.n_vertices));
   second.resize(size_t(t.n_vertices));
 }

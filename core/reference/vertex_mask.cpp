@@ -18,7 +18,8 @@ std::vector<std::pair<int, double>> VertexMask::terms() const {
   std::vector<std::pair<int, double>> out;
   out.reserve(points_.size());
   for (size_t g = 0; g < group_weights_.size(); ++g)
-    for (int i = group_begins_[g]; i < group_end(g); ++i) out.emplace_back(points_[size_t(i)], group_weights_[g] / denominator_);
+    for (int i = group_begins_[g]; i < group_end(g); ++i)
+      out.emplace_back(points_[size_t(i)], group_weights_[g] / denominator_);
   return out;
 }
 

@@ -35,7 +35,9 @@ std::vector<Level> levels_of(long long count) {
 
 ExclusiveScan::ExclusiveScan()
     : scan_tiles_("scan_tiles", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::scan_comp}}}),
-      add_tile_offsets_("add_tile_offsets", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, "#define ADD_TILE_OFFSETS\n", shaders::scan_comp}}}) {
+      add_tile_offsets_(
+          "add_tile_offsets",
+          {{GL_COMPUTE_SHADER, {shaders::gpu_layout, "#define ADD_TILE_OFFSETS\n", shaders::scan_comp}}}) {
   glCreateBuffers(1, &values_);
 }
 

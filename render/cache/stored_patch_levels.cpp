@@ -13,8 +13,8 @@ namespace gps {
 
 namespace {
 ShaderProgram check_program(bool triangles) {
-  std::vector<const char*> pieces = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::tess_levels,
-                                     shaders::patch_level_check_comp};
+  std::vector<const char*> pieces = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
+                                     shaders::tess_levels, shaders::patch_level_check_comp};
   if (triangles) pieces.insert(pieces.begin(), "#define GPS_TRIANGLE_PATCHES\n");
   return ShaderProgram(triangles ? "patch_level_check_triangles" : "patch_level_check", {{GL_COMPUTE_SHADER, pieces}});
 }
@@ -48,7 +48,8 @@ void StoredPatchLevels::record(PatchShape shape, int n_patches, int group_limit)
 std::vector<char> StoredPatchLevels::changed(PatchShape shape, const std::vector<Block>& blocks, int group_limit) {
   std::vector<GLint> listed;  // patch, its block in the list
   for (size_t b = 0; b < blocks.size(); ++b)
-    for (int p = blocks[b].first; p < blocks[b].first + blocks[b].count; ++p) listed.insert(listed.end(), {GLint(p), GLint(b)});
+    for (int p = blocks[b].first; p < blocks[b].first + blocks[b].count; ++p)
+      listed.insert(listed.end(), {GLint(p), GLint(b)});
   std::vector<GLuint> changes(blocks.size(), 0u);
   if (listed.empty()) return std::vector<char>(blocks.size(), 0);
   glNamedBufferData(patches_, GLsizeiptr(listed.size() * sizeof(GLint)), listed.data(), GL_STREAM_DRAW);

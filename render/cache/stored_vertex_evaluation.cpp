@@ -11,14 +11,16 @@
 namespace gps {
 
 StoredVertexEvaluation::StoredVertexEvaluation()
-    : quads_("stored_vertex_evaluation", {{GL_COMPUTE_SHADER,
-                                           {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                                            shaders::stored_vertex_evaluation_comp}}}),
+    : quads_(
+          "stored_vertex_evaluation",
+          {{GL_COMPUTE_SHADER,
+            {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::stored_vertex_evaluation_comp}}}),
       triangles_("stored_vertex_evaluation_triangles",
                  {{GL_COMPUTE_SHADER,
-                   {"#define GPS_TRIANGLE_PATCHES\n", shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::loop_eval,
-                    shaders::stored_vertex_evaluation_comp}}}),
-      groups_program_("evaluation_groups", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {
+                   {"#define GPS_TRIANGLE_PATCHES\n", shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
+                    shaders::loop_eval, shaders::stored_vertex_evaluation_comp}}}),
+      groups_program_("evaluation_groups",
+                      {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {
   glCreateBuffers(1, &blocks_);
   glCreateBuffers(1, &groups_);
 }
@@ -28,7 +30,8 @@ StoredVertexEvaluation::~StoredVertexEvaluation() {
   glDeleteBuffers(1, &groups_);
 }
 
-void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches, int group_limit) {
+void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches,
+                                 int group_limit) {
   GLint max_groups = 0;
   glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups);
   if (group_limit > 0) max_groups = std::min(max_groups, group_limit);

@@ -3,7 +3,8 @@
 // in a compute pass instead of a transform feedback capture of the tessellation: each welded vertex
 // keeps the patch and (u, v) its tessellation vertex was evaluated at, which an edit at the same
 // levels does not change, and is evaluated there once, where the tessellation stage evaluates a
-// point once per patch around it, on llvmpipe in one thread. The plan buffers are bound (render/pipeline/plan_buffers.h).
+// point once per patch around it, on llvmpipe in one thread. The plan buffers are bound
+// (render/pipeline/plan_buffers.h).
 #include <vector>
 
 #include "core/plans/patch_plans.h"

@@ -29,8 +29,8 @@ StoredVertexWeld::~StoredVertexWeld() {
   glDeleteBuffers(1, &runs_);
 }
 
-void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters, long long count,
-                            const std::vector<long long>& block_starts) {
+void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters,
+                            long long count, const std::vector<long long>& block_starts) {
   if (count <= 0) return;
   if (2 * count > slots_ || 8 * count < slots_) {  // the table: twice the vertices
     slots_ = 2 * count;
@@ -54,7 +54,8 @@ void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded
   glClearNamedBufferSubData(table_, GL_R32UI, 0, GLsizeiptr(2 * count * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glClearNamedBufferSubData(parameters, GL_R32UI, 0, GLsizeiptr(3 * count * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
   // No work groups for a block until its last vertex writes them (none for an empty block).
-  glClearNamedBufferSubData(dispatches_, GL_R32UI, 0, GLsizeiptr(3 * blocks * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferSubData(dispatches_, GL_R32UI, 0, GLsizeiptr(3 * blocks * 4), GL_RED_INTEGER, GL_UNSIGNED_INT,
+                            &zero);
   scan_.bind(count);
   weld_.use();
   weld_.set("u_slots", int(2 * count));
@@ -72,7 +73,8 @@ long long StoredVertexWeld::upload_runs(const std::vector<Range>& ranges) {
   long long total = 0;
   for (const Range& r : ranges) {
     if (r.count <= 0) continue;
-    if (!runs.empty() && runs[runs.size() - 2] + (total - runs.back()) == GLuint(r.first)) {  // goes on from the last run
+    if (!runs.empty() &&
+        runs[runs.size() - 2] + (total - runs.back()) == GLuint(r.first)) {  // goes on from the last run
       total += r.count;
       continue;
     }
@@ -102,14 +104,16 @@ void StoredVertexWeld::weld_again(unsigned vertices, unsigned indices, unsigned 
   check_gl_errors("welding blocks again");
 }
 
-void StoredVertexWeld::copy_back(unsigned vertices, unsigned indices, unsigned welded_vertices, const std::vector<Range>& ranges) {
+void StoredVertexWeld::copy_back(unsigned vertices, unsigned indices, unsigned welded_vertices,
+                                 const std::vector<Range>& ranges) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingStoredVertices, vertices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingStoredIndices, indices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_vertices);
   const long long total = upload_runs(ranges);
   if (total == 0) return;
   run_compute_pass(copy_back_, int(total), false, 0);
-  glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TRANSFORM_FEEDBACK_BARRIER_BIT);
+  glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+                  GL_TRANSFORM_FEEDBACK_BARRIER_BIT);
   check_gl_errors("copying welded vertices back");
 }
 

@@ -41,7 +41,8 @@ public:
             const std::vector<long long>& block_starts);
   /// After `ranges` (whole blocks) were captured again in the tessellation they had: each of their
   /// vertices keeps its index and writes its words to its welded vertex (shaders/reweld_comp.glsl).
-  void weld_again(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters, const std::vector<Range>& ranges);
+  void weld_again(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters,
+                  const std::vector<Range>& ranges);
   /// Per block, three words: the work groups of kWorkGroupSize over its welded vertices, 1, 1
   /// (written by a weld of the block): an indirect dispatch's (render/cache/stored_vertex_evaluation.h).
   unsigned dispatches() const { return dispatches_; }

@@ -17,7 +17,8 @@ void SurfaceBlocks::reset(int n_patches, int per_block) {
 int SurfaceBlocks::patches_in(int b) const { return std::min(per_block_, n_patches_ - first_patch(b)); }
 
 void SurfaceBlocks::set_counts(const std::vector<long long>& counts) {
-  for (size_t b = 0; b < counts.size() && b < size_t(size()); ++b) first_triangle_[b + 1] = first_triangle_[b] + counts[b];
+  for (size_t b = 0; b < counts.size() && b < size_t(size()); ++b)
+    first_triangle_[b + 1] = first_triangle_[b] + counts[b];
 }
 
 void SurfaceBlocks::replace_counts(const std::vector<int>& blocks, const std::vector<long long>& counts) {

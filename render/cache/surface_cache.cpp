@@ -53,7 +53,8 @@ void SurfaceCache::set_cage(const CovarianceMesh& mesh) {
   }
   cage_edges_.clear();
   cage_edges_.reserve(2 * mesh.mesh.n_edges());
-  for (const auto e : mesh.mesh.edges()) cage_edges_.insert(cage_edges_.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
+  for (const auto e : mesh.mesh.edges())
+    cage_edges_.insert(cage_edges_.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
   stored_ = false;
   tracked_points_ = -1;
 }
@@ -158,7 +159,8 @@ void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long trian
 // With `known` counts (uniform levels: an edit keeps every patch's triangles) no query is read, and
 // the frame goes on without waiting for the capture.
 bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
-                                  const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize, bool known) {
+                                  const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize,
+                                  bool known) {
   if (!known && queries_.size() < blocks.size()) {
     const size_t had = queries_.size();
     queries_.resize(blocks.size());
@@ -201,7 +203,7 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
   refused_ = false;
   tracked_points_ = key.points;
   blocks_.reset(n_patches, patches_per_block(n_patches));
-  copy_pending_.clear();  // all captured anew
+  copy_pending_.clear();      // all captured anew
   if (spare_capacity_ > 0) {  // edits start over from here
     glNamedBufferData(spare_, 0, nullptr, GL_DYNAMIC_COPY);
     spare_capacity_ = 0;
@@ -237,7 +239,8 @@ void SurfaceCache::weld(const std::vector<int>& blocks) {
         weld_pending_.clear();
       } else if (!weld_all_pending_) {
         std::vector<int> both;
-        std::set_union(weld_pending_.begin(), weld_pending_.end(), blocks.begin(), blocks.end(), std::back_inserter(both));
+        std::set_union(weld_pending_.begin(), weld_pending_.end(), blocks.begin(), blocks.end(),
+                       std::back_inserter(both));
         weld_pending_ = std::move(both);
       }
       return;
@@ -295,12 +298,16 @@ void SurfaceCache::draw(bool grid) const {
   const GLuint vao = welded ? welded_vao_ : vao_;
   // Attribute 2 fetched only for a program that reads it.
   if (!welded) {
-    if (grid) glEnableVertexArrayAttrib(vao, 2);
-    else glDisableVertexArrayAttrib(vao, 2);
+    if (grid)
+      glEnableVertexArrayAttrib(vao, 2);
+    else
+      glDisableVertexArrayAttrib(vao, 2);
   }
   glBindVertexArray(vao);
-  if (welded) glDrawElements(GL_TRIANGLES, GLsizei(3 * blocks_.total()), GL_UNSIGNED_INT, nullptr);
-  else glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * blocks_.total()));
+  if (welded)
+    glDrawElements(GL_TRIANGLES, GLsizei(3 * blocks_.total()), GL_UNSIGNED_INT, nullptr);
+  else
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * blocks_.total()));
 }
 
 }  // namespace gps

@@ -121,7 +121,8 @@ public:
   bool refreshable(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
   /// Evaluates the welded vertices of blocks again (render/cache/stored_vertex_evaluation.h) in the work
   /// groups that `dispatches` holds per block, with the welded vertex and parameter buffers bound.
-  using EvaluateWelded = std::function<void(const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches)>;
+  using EvaluateWelded =
+      std::function<void(const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches)>;
   /// At adaptive levels: per block (its patches listed), whether an edit changed any patch's levels
   /// under the capture's camera (render/cache/stored_patch_levels.h, recorded at each adaptive capture).
   using LevelsChanged = std::function<std::vector<char>(const std::vector<StoredPatchLevels::Block>& blocks)>;
@@ -198,8 +199,9 @@ private:
   void reserve(unsigned buffer, long long& capacity, long long triangles) const;
   /// Captures `blocks` one after the other into `buffer` from its start; their counts (counted, or
   /// where `known`, those stored); false where the buffer was full (and some triangles may be missing).
-  bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks, const DrawPatches& draw_patches,
-                      std::vector<long long>& counts, bool rasterize = false, bool known = false);
+  bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
+                      const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize = false,
+                      bool known = false);
   void evaluate_again(const std::vector<int>& blocks, bool third, const EvaluateWelded& evaluate_welded);
   /// Welds now what Weld::when_settled left unwelded.
   void weld_pending();
@@ -215,13 +217,14 @@ private:
   void weld_now(const std::vector<int>& blocks);
 
   unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, indices_ = 0, welded_ = 0, parameters_ = 0, vao_ = 0, welded_vao_ = 0;
-  long long index_capacity_ = 0;  // triangles the index, welded vertex and parameter buffers hold
+  long long index_capacity_ = 0;            // triangles the index, welded vertex and parameter buffers hold
   std::unique_ptr<StoredVertexWeld> weld_;  // made at the first weld
   Weld weld_mode_;
   bool weld_all_pending_ = true;   // when settled: every block to weld
   std::vector<int> weld_pending_;  // else these, in order
-  std::vector<int> copy_pending_;  // blocks whose evaluated welded vertices are not yet copied to their captured ones, in order
-  std::vector<unsigned> queries_;  // one per block of a capture
+  std::vector<int>
+      copy_pending_;  // blocks whose evaluated welded vertices are not yet copied to their captured ones, in order
+  std::vector<unsigned> queries_;                                       // one per block of a capture
   long long capacity_ = 0, scratch_capacity_ = 0, spare_capacity_ = 0;  // triangles the buffers hold
   SurfaceBlocks blocks_;
   long long tracked_points_ = -1;  // the points the stale blocks lead to (−1: untracked)

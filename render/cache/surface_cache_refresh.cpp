@@ -48,7 +48,9 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   // too where it changed (core/plans/patch_readers.h: an edit's patches and their neighbours). So with
   // some blocks captured again, the welded vertices of all stale blocks are evaluated, that the
   // evaluated blocks' copies of them are current.
-  if (!evaluated.empty()) evaluate_again(captured.empty() ? evaluated : stale, uniform && key.level >= kThirdOfSlotsFromLevel, evaluate_welded);
+  if (!evaluated.empty())
+    evaluate_again(captured.empty() ? evaluated : stale, uniform && key.level >= kThirdOfSlotsFromLevel,
+                   evaluate_welded);
   // Blocks captured again are copied into place and welded from their captured vertices, beside
   // clean ones that may be assembled: all captured copies current first.
   if (!captured.empty()) copy_back_evaluated();
@@ -103,8 +105,10 @@ bool SurfaceCache::capture_again(const std::vector<int>& blocks, const DrawPatch
   }
   // Their tessellation kept: their vertices keep their welded ones; else (levels changed, the counts
   // alike) welded anew.
-  if (kept) weld(blocks);
-  else weld();
+  if (kept)
+    weld(blocks);
+  else
+    weld();
   return true;
 }
 
@@ -127,8 +131,8 @@ bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<lo
   reserve(spare_, spare_capacity_, total + total / 8 + 64);
   const auto copy = [&](unsigned source, long long from, long long to, long long n) {
     if (n > 0)
-      glCopyNamedBufferSubData(source, spare_, GLintptr(from * 3 * kCapturedVertexBytes), GLintptr(to * 3 * kCapturedVertexBytes),
-                               GLsizeiptr(n * 3 * kCapturedVertexBytes));
+      glCopyNamedBufferSubData(source, spare_, GLintptr(from * 3 * kCapturedVertexBytes),
+                               GLintptr(to * 3 * kCapturedVertexBytes), GLsizeiptr(n * 3 * kCapturedVertexBytes));
   };
   long long to = 0, scratch_from = 0;
   int clean = 0;  // the first block not yet copied

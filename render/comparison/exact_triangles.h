@@ -16,7 +16,7 @@ class SurfaceRenderer;
 /// the GPU's float error alone, at any level and under either scheme. (No reference level has the
 /// vertices of GL's triangle tessellation: its inner rings lie off the dyadic grid.) `mesh` is the
 /// renderer's mesh.
-TriangleMesh exact_triangles(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const Camera& camera, const DrawOptions& o,
-                             int width, int height);
+TriangleMesh exact_triangles(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const Camera& camera,
+                             const DrawOptions& o, int width, int height);
 
 }  // namespace gps

@@ -8,8 +8,8 @@
 
 namespace gps {
 
-TriangleMesh patch_triangles(SurfaceRenderer& renderer, const Camera& camera, const DrawOptions& o, int width, int height,
-                             const SurfaceAt& surface_at) {
+TriangleMesh patch_triangles(SurfaceRenderer& renderer, const Camera& camera, const DrawOptions& o, int width,
+                             int height, const SurfaceAt& surface_at) {
   const std::vector<TessellatedVertex> captured = renderer.capture_vertices(camera, o, width, height);
   // The triangles around a point each captured it: given values once per (patch, u, v), bit for bit.
   std::unordered_map<std::string, int> index;

@@ -24,7 +24,7 @@ using SurfaceAt = std::function<SurfaceValues(int patch, double u, double v)>;
 /// point on a patch edge (shaders/canonical_edge.glsl). Drawn as static triangles they rasterise
 /// as the patches do, triangle for triangle and corner for corner: the images differ where the
 /// values do. A vertex `surface_at` gives no normal takes the area-weighted normal of its triangles.
-TriangleMesh patch_triangles(SurfaceRenderer& renderer, const Camera& camera, const DrawOptions& o, int width, int height,
-                             const SurfaceAt& surface_at);
+TriangleMesh patch_triangles(SurfaceRenderer& renderer, const Camera& camera, const DrawOptions& o, int width,
+                             int height, const SurfaceAt& surface_at);
 
 }  // namespace gps

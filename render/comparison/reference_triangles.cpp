@@ -66,9 +66,11 @@ TriangleMesh reference_in_patch_triangles(SurfaceRenderer& renderer, const Covar
   }
   return patch_triangles(renderer, camera, o, width, height, [&](int patch, double u, double v) {
     const auto at = vertex_at.find(key(patch, u, v));
-    if (at == vertex_at.end() || std::abs(u * steps - std::round(u * steps)) > 1e-4 || std::abs(v * steps - std::round(v * steps)) > 1e-4)
-      throw Error("the reference at level " + std::to_string(levels) + " has no vertex at patch " + std::to_string(patch) + " (" +
-                  std::to_string(u) + ", " + std::to_string(v) + "): draw the patches at level 2^" + std::to_string(levels));
+    if (at == vertex_at.end() || std::abs(u * steps - std::round(u * steps)) > 1e-4 ||
+        std::abs(v * steps - std::round(v * steps)) > 1e-4)
+      throw Error("the reference at level " + std::to_string(levels) + " has no vertex at patch " +
+                  std::to_string(patch) + " (" + std::to_string(u) + ", " + std::to_string(v) +
+                  "): draw the patches at level 2^" + std::to_string(levels));
     return SurfaceValues{r.mesh.mean(size_t(at->second)), r.normals[size_t(at->second)]};
   });
 }

@@ -32,10 +32,13 @@ void StaticTriangles::set(const TriangleMesh& t) {
     for (const Vec3* v : {&t.positions[i], &t.normals[i]})
       for (int k = 0; k < 3; ++k) vertices.push_back(float((*v)[k]));
   std::vector<unsigned> indices;
-  for (const auto& tri : t.triangles) indices.insert(indices.end(), {unsigned(tri[0]), unsigned(tri[1]), unsigned(tri[2])});
+  for (const auto& tri : t.triangles)
+    indices.insert(indices.end(), {unsigned(tri[0]), unsigned(tri[1]), unsigned(tri[2])});
   count_ = int(t.triangles.size());
-  glNamedBufferData(vbo_, GLsizeiptr(std::max<size_t>(1, vertices.size()) * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
-  glNamedBufferData(ibo_, GLsizeiptr(std::max<size_t>(1, indices.size()) * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
+  glNamedBufferData(vbo_, GLsizeiptr(std::max<size_t>(1, vertices.size()) * sizeof(float)), vertices.data(),
+                    GL_STATIC_DRAW);
+  glNamedBufferData(ibo_, GLsizeiptr(std::max<size_t>(1, indices.size()) * sizeof(unsigned)), indices.data(),
+                    GL_STATIC_DRAW);
   glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, 6 * sizeof(float));
   glVertexArrayElementBuffer(vao_, ibo_);
   for (GLuint a = 0; a < 2; ++a) {

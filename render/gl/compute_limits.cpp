@@ -18,7 +18,9 @@ void dispatch_split(const ShaderProgram& program, int count, int group_limit) {
   const long long per_dispatch = (long long)gpu::kWorkGroupSize * std::max(1, max_groups);
   for (long long first = 0; first < count; first += per_dispatch) {
     program.set("u_first", int(first));
-    glDispatchCompute(GLuint((std::min<long long>(per_dispatch, count - first) + gpu::kWorkGroupSize - 1) / gpu::kWorkGroupSize), 1, 1);
+    glDispatchCompute(
+        GLuint((std::min<long long>(per_dispatch, count - first) + gpu::kWorkGroupSize - 1) / gpu::kWorkGroupSize), 1,
+        1);
   }
 }
 
@@ -36,13 +38,14 @@ void check_storage_fits(const char* what, size_t bytes, int n_vertices, int n_fa
   if (limit > 0) max_block = std::min<GLint64>(max_block, limit);
   const auto size = [](size_t n) {
     char text[32];
-    std::snprintf(text, sizeof text, n >= (1u << 20) ? "%.1f MiB" : "%.1f KiB", double(n) / (n >= (1u << 20) ? 1 << 20 : 1 << 10));
+    std::snprintf(text, sizeof text, n >= (1u << 20) ? "%.1f MiB" : "%.1f KiB",
+                  double(n) / (n >= (1u << 20) ? 1 << 20 : 1 << 10));
     return std::string(text);
   };
   if (max_block > 0 && bytes > size_t(max_block))
     throw Error("the mesh (" + std::to_string(n_vertices) + " vertices, " + std::to_string(n_faces) + " faces) needs " +
-                size(bytes) + " of " + what + ", more than the GPU's largest storage buffer (" + size(size_t(max_block)) +
-                "); lower the depth or use a smaller mesh");
+                size(bytes) + " of " + what + ", more than the GPU's largest storage buffer (" +
+                size(size_t(max_block)) + "); lower the depth or use a smaller mesh");
 }
 
 }  // namespace gps

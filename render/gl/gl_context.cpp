@@ -23,7 +23,8 @@ std::string first_error;
 // The first error the driver reports. Not the shader compiler's messages: Mesa reports its warnings
 // there as errors, and only while it compiles (not when its shader cache has the program), so they
 // came and went with the cache; a shader that does not compile or link throws in ShaderProgram.
-void GLAPIENTRY on_gl_message(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message, const void*) {
+void GLAPIENTRY on_gl_message(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
+                              const void*) {
   if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
   if (type != GL_DEBUG_TYPE_ERROR && severity != GL_DEBUG_SEVERITY_HIGH) return;
   const std::lock_guard lock(debug_mutex);
@@ -42,12 +43,14 @@ struct OsMesaLibrary {
     static const OsMesaLibrary library = [] {
       OsMesaLibrary l;
       void* handle = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_GLOBAL);
-      if (!handle) throw Error("OSMesa (libOSMesa.so.8, Debian's libosmesa6) is not installed; on a GPU use --context egl");
+      if (!handle)
+        throw Error("OSMesa (libOSMesa.so.8, Debian's libosmesa6) is not installed; on a GPU use --context egl");
       l.create = reinterpret_cast<decltype(l.create)>(dlsym(handle, "OSMesaCreateContextAttribs"));
       l.make_current = reinterpret_cast<decltype(l.make_current)>(dlsym(handle, "OSMesaMakeCurrent"));
       l.get_proc_address = reinterpret_cast<decltype(l.get_proc_address)>(dlsym(handle, "OSMesaGetProcAddress"));
       l.destroy = reinterpret_cast<decltype(l.destroy)>(dlsym(handle, "OSMesaDestroyContext"));
-      if (!l.create || !l.make_current || !l.get_proc_address || !l.destroy) throw Error("libOSMesa.so.8 lacks the OSMesa 11.2 entry points");
+      if (!l.create || !l.make_current || !l.get_proc_address || !l.destroy)
+        throw Error("libOSMesa.so.8 lacks the OSMesa 11.2 entry points");
       return l;
     }();
     return library;
@@ -58,8 +61,17 @@ class OsMesaContext : public GlContext {
 public:
   OsMesaContext() : osmesa_(OsMesaLibrary::get()) {
     retain_freed_heap();
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                              OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    const int attributes[] = {OSMESA_FORMAT,
+                              OSMESA_RGBA,
+                              OSMESA_DEPTH_BITS,
+                              24,
+                              OSMESA_PROFILE,
+                              OSMESA_CORE_PROFILE,
+                              OSMESA_CONTEXT_MAJOR_VERSION,
+                              4,
+                              OSMESA_CONTEXT_MINOR_VERSION,
+                              5,
+                              0};
     context_ = osmesa_.create(attributes, nullptr);
     if (!context_) throw Error("OSMesa could not create an OpenGL 4.5 core context");
     buffer_.resize(4 * 4 * 4);
@@ -71,7 +83,8 @@ public:
   ~OsMesaContext() override { osmesa_.destroy(context_); }
   void make_current() override {
     // OSMesa needs a colour buffer to be current; drawing goes to our framebuffers.
-    if (!osmesa_.make_current(context_, buffer_.data(), GL_UNSIGNED_BYTE, 4, 4)) throw Error("OSMesa could not make its context current");
+    if (!osmesa_.make_current(context_, buffer_.data(), GL_UNSIGNED_BYTE, 4, 4))
+      throw Error("OSMesa could not make its context current");
   }
 
 private:
@@ -85,7 +98,8 @@ class EglContext : public GlContext {
 public:
   explicit EglContext(bool require_hardware) {
     retain_freed_heap();  // Mesa's surfaceless platform is llvmpipe too
-    const auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    const auto get_platform_display =
+        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     const auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     if (!get_platform_display) throw Error("EGL has no eglGetPlatformDisplayEXT");
     if (query_devices) {  // prefer a real device (a GPU driver)
@@ -111,12 +125,14 @@ public:
     eglBindAPI(EGL_OPENGL_API);
     // Without surfaces a context needs no configuration where EGL_KHR_no_config_context exists.
     if (!eglChooseConfig(display_, config_attributes, &config, 1, &n) || n < 1) config = EGL_NO_CONFIG_KHR;
-    const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint context_attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attributes);
     if (context_ == EGL_NO_CONTEXT) throw Error("EGL could not create an OpenGL 4.5 core context");
     make_current();
-    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress))) throw Error("could not load the OpenGL 4.5 functions through EGL");
+    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)))
+      throw Error("could not load the OpenGL 4.5 functions through EGL");
     enable_gl_debug_output();
   }
   ~EglContext() override {
@@ -125,7 +141,8 @@ public:
     eglTerminate(display_);
   }
   void make_current() override {
-    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) throw Error("EGL could not make its context current");
+    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+      throw Error("EGL could not make its context current");
   }
 
 private:
@@ -149,8 +166,10 @@ bool software_renderer() {
 
 std::unique_ptr<GlContext> create_offscreen_context(ContextKind kind) {
   switch (kind) {
-    case ContextKind::osmesa: return std::make_unique<OsMesaContext>();
-    case ContextKind::egl: return std::make_unique<EglContext>(false);
+    case ContextKind::osmesa:
+      return std::make_unique<OsMesaContext>();
+    case ContextKind::egl:
+      return std::make_unique<EglContext>(false);
     case ContextKind::automatic:
       try {
         auto context = std::make_unique<EglContext>(true);

@@ -17,7 +17,8 @@ void GpuPassTimer::begin(const std::string& pass) {
   if (open_ >= 0) throw Error("GPU pass '" + pass + "' begun inside '" + passes_[size_t(open_)].name + "'");
   size_t i = 0;
   while (i < passes_.size() && passes_[i].name != pass) ++i;
-  if (i == passes_.size()) passes_.push_back({pass, std::make_unique<QueryRing>(std::vector<unsigned>{GL_TIME_ELAPSED}, kSlots)});
+  if (i == passes_.size())
+    passes_.push_back({pass, std::make_unique<QueryRing>(std::vector<unsigned>{GL_TIME_ELAPSED}, kSlots)});
   passes_[i].queries->begin();
   open_ = int(i);
 }

@@ -9,7 +9,8 @@ namespace gps {
 
 RenderTarget::RenderTarget(int width, int height) : width_(width), height_(height) {
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw usage_error("image size must be 1..16384 pixels each way, got " + std::to_string(width) + "x" + std::to_string(height));
+    throw usage_error("image size must be 1..16384 pixels each way, got " + std::to_string(width) + "x" +
+                      std::to_string(height));
   glCreateFramebuffers(1, &fbo_);
   glCreateTextures(GL_TEXTURE_2D, 3, textures_);
   const GLenum formats[3] = {GL_RGBA8, GL_RGBA32F, GL_RGBA32F};

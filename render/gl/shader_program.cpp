@@ -31,7 +31,8 @@ ShaderProgram::ShaderProgram(const std::string& name, const std::vector<ShaderSt
     glAttachShader(id_, s);
     shaders.push_back(s);
   }
-  if (!feedback.empty()) glTransformFeedbackVaryings(id_, GLsizei(feedback.size()), feedback.data(), GL_INTERLEAVED_ATTRIBS);
+  if (!feedback.empty())
+    glTransformFeedbackVaryings(id_, GLsizei(feedback.size()), feedback.data(), GL_INTERLEAVED_ATTRIBS);
   glLinkProgram(id_);
   for (const GLuint s : shaders) glDeleteShader(s);
   GLint ok = 0;
@@ -56,10 +57,18 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
 }
 
 void ShaderProgram::use() const { glUseProgram(id_); }
-void ShaderProgram::set(const char* name, int value) const { glProgramUniform1i(id_, glGetUniformLocation(id_, name), value); }
-void ShaderProgram::set(const char* name, float value) const { glProgramUniform1f(id_, glGetUniformLocation(id_, name), value); }
-void ShaderProgram::set(const char* name, const glm::vec2& v) const { glProgramUniform2fv(id_, glGetUniformLocation(id_, name), 1, glm::value_ptr(v)); }
-void ShaderProgram::set(const char* name, const glm::vec4& v) const { glProgramUniform4fv(id_, glGetUniformLocation(id_, name), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* name, int value) const {
+  glProgramUniform1i(id_, glGetUniformLocation(id_, name), value);
+}
+void ShaderProgram::set(const char* name, float value) const {
+  glProgramUniform1f(id_, glGetUniformLocation(id_, name), value);
+}
+void ShaderProgram::set(const char* name, const glm::vec2& v) const {
+  glProgramUniform2fv(id_, glGetUniformLocation(id_, name), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const char* name, const glm::vec4& v) const {
+  glProgramUniform4fv(id_, glGetUniformLocation(id_, name), 1, glm::value_ptr(v));
+}
 void ShaderProgram::set(const char* name, const glm::mat4& m) const {
   glProgramUniformMatrix4fv(id_, glGetUniformLocation(id_, name), 1, GL_FALSE, glm::value_ptr(m));
 }

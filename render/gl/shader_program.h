@@ -8,7 +8,7 @@
 namespace gps {
 
 struct ShaderStage {
-  unsigned type;  // GL_VERTEX_SHADER, ...
+  unsigned type;                     // GL_VERTEX_SHADER, ...
   std::vector<const char*> sources;  // concatenated after the #version line
 };
 

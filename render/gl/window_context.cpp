@@ -17,7 +17,8 @@ void on_glfw_error(int, const char* message) { last_glfw_error = message; }
 WindowContext::WindowContext(int width, int height, const std::string& title, bool visible) {
   retain_freed_heap();  // without a GPU, GLX is llvmpipe
   glfwSetErrorCallback(on_glfw_error);
-  if (!glfwInit()) throw Error("cannot open a window: " + (last_glfw_error.empty() ? std::string("no display") : last_glfw_error));
+  if (!glfwInit())
+    throw Error("cannot open a window: " + (last_glfw_error.empty() ? std::string("no display") : last_glfw_error));
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -29,7 +30,8 @@ WindowContext::WindowContext(int width, int height, const std::string& title, bo
     throw Error("cannot open an OpenGL 4.5 core window: " + last_glfw_error);
   }
   make_current();
-  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress))) throw Error("could not load the OpenGL 4.5 functions through GLFW");
+  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)))
+    throw Error("could not load the OpenGL 4.5 functions through GLFW");
   enable_gl_debug_output();
 }
 
@@ -40,14 +42,16 @@ WindowContext::~WindowContext() {
 
 void WindowContext::make_current() { glfwMakeContextCurrent(window_); }
 
-void WindowContext::framebuffer_size(int& width, int& height) const { glfwGetFramebufferSize(window_, &width, &height); }
+void WindowContext::framebuffer_size(int& width, int& height) const {
+  glfwGetFramebufferSize(window_, &width, &height);
+}
 
 void WindowContext::blit(const RenderTarget& target) const {
   int width = 0, height = 0;
   framebuffer_size(width, height);
   glNamedFramebufferReadBuffer(target.framebuffer(), GL_COLOR_ATTACHMENT0);
-  glBlitNamedFramebuffer(target.framebuffer(), 0, 0, 0, target.width(), target.height(), 0, 0, width, height, GL_COLOR_BUFFER_BIT,
-                         GL_LINEAR);
+  glBlitNamedFramebuffer(target.framebuffer(), 0, 0, 0, target.width(), target.height(), 0, 0, width, height,
+                         GL_COLOR_BUFFER_BIT, GL_LINEAR);
   check_gl_errors("showing the frame");
 }
 

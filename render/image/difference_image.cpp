@@ -8,10 +8,11 @@
 
 namespace gps {
 
-Image difference_image(const Image& a, const Image& b, AovKind kind, double factor, double threshold, DifferenceStats& s) {
+Image difference_image(const Image& a, const Image& b, AovKind kind, double factor, double threshold,
+                       DifferenceStats& s) {
   if (a.width != b.width || a.height != b.height)
-    throw usage_error("the images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
-                      std::to_string(b.width) + "x" + std::to_string(b.height));
+    throw usage_error("the images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                      " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
   if (a.channels < 3 || b.channels < 3) throw usage_error("AOV images need at least three channels (x y z)");
   const auto covered = [](const Image& im, int x, int y) { return im.channels < 4 || im.at(x, y, 3) > 0.5f; };
   const auto value = [](const Image& im, int x, int y) { return Vec3(im.at(x, y, 0), im.at(x, y, 1), im.at(x, y, 2)); };

@@ -14,6 +14,7 @@ struct DifferenceStats {
 /// Position: Euclidean distance / bounding-box diagonal (of A's covered pixels) × factor, grey.
 /// Normal: per-component |difference| × factor, RGB. Pixels covered in one image only are red.
 /// Stats are of the unscaled differences; `threshold` is on the same scale.
-Image difference_image(const Image& a, const Image& b, AovKind kind, double factor, double threshold, DifferenceStats& stats);
+Image difference_image(const Image& a, const Image& b, AovKind kind, double factor, double threshold,
+                       DifferenceStats& stats);
 
 }  // namespace gps

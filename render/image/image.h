@@ -8,7 +8,9 @@ namespace gps {
 struct Image {
   int width = 0, height = 0, channels = 0;
   std::vector<float> pixels;  // row-major, top row first, `channels` floats per pixel
-  float at(int x, int y, int c) const { return pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels) + std::size_t(c)]; }
+  float at(int x, int y, int c) const {
+    return pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels) + std::size_t(c)];
+  }
 };
 
 /// Reverses the order of the rows (GL reads rows bottom-up; images run top-down).

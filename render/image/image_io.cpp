@@ -49,9 +49,11 @@ void write_image(const std::string& path, const Image& image, const std::vector<
   auto out = OIIO::ImageOutput::create(temp.string());
   if (!out) throw Error(path + ": cannot write images of type '" + ext + "'");
   const bool is_float = ext == ".exr" || ext == ".hdr";
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec spec(image.width, image.height, image.channels,
+                       is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   if (channel_names.size() == size_t(image.channels)) spec.channelnames = channel_names;
-  if (!out->open(temp.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) || !out->close()) {
+  if (!out->open(temp.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) ||
+      !out->close()) {
     fs::remove(temp, ec);
     throw Error(path + ": writing the image failed");
   }

@@ -25,8 +25,8 @@ std::string number(double v) {
 }
 }  // namespace
 
-void write_line_plot(const std::string& path, const std::string& title, const std::string& x_label, const std::string& y_label,
-                     const std::vector<PlotSeries>& series, bool log_x, bool log_y) {
+void write_line_plot(const std::string& path, const std::string& title, const std::string& x_label,
+                     const std::string& y_label, const std::vector<PlotSeries>& series, bool log_x, bool log_y) {
   const int width = 720, height = 480, left = 90, right = 170, top = 40, bottom = 60;
   OIIO::ImageBuf image(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
   const float white[3] = {1, 1, 1}, black[3] = {0, 0, 0}, grey[3] = {0.6f, 0.6f, 0.6f};
@@ -62,8 +62,10 @@ void write_line_plot(const std::string& path, const std::string& title, const st
     const float* c = kColors[k % 6];
     const auto& pts = series[k].points;
     for (size_t i = 0; i + 1 < pts.size(); ++i)
-      OIIO::ImageBufAlgo::render_line(image, px(pts[i].first), py(pts[i].second), px(pts[i + 1].first), py(pts[i + 1].second), {c, 3});
-    for (const auto& [x, y] : pts) OIIO::ImageBufAlgo::render_box(image, px(x) - 2, py(y) - 2, px(x) + 2, py(y) + 2, {c, 3}, true);
+      OIIO::ImageBufAlgo::render_line(image, px(pts[i].first), py(pts[i].second), px(pts[i + 1].first),
+                                      py(pts[i + 1].second), {c, 3});
+    for (const auto& [x, y] : pts)
+      OIIO::ImageBufAlgo::render_box(image, px(x) - 2, py(y) - 2, px(x) + 2, py(y) + 2, {c, 3}, true);
     const int ly = top + 20 + 22 * int(k);
     OIIO::ImageBufAlgo::render_box(image, width - right + 12, ly - 8, width - right + 24, ly + 2, {c, 3}, true);
     text(width - right + 30, ly + 2, series[k].name);

@@ -12,7 +12,7 @@ struct PlotSeries {
 };
 
 /// Writes a plot with axes, ticks at the data's range ends, a legend, and logarithmic axes where asked.
-void write_line_plot(const std::string& path, const std::string& title, const std::string& x_label, const std::string& y_label,
-                     const std::vector<PlotSeries>& series, bool log_x, bool log_y);
+void write_line_plot(const std::string& path, const std::string& title, const std::string& x_label,
+                     const std::string& y_label, const std::vector<PlotSeries>& series, bool log_x, bool log_y);
 
 }  // namespace gps

@@ -32,7 +32,8 @@ std::vector<std::string> builtin_matcap_names() {
 }
 
 Image make_builtin_matcap(const std::string& name, int size) {
-  const auto it = std::find_if(std::begin(kMaterials), std::end(kMaterials), [&](const Material& m) { return name == m.name; });
+  const auto it =
+      std::find_if(std::begin(kMaterials), std::end(kMaterials), [&](const Material& m) { return name == m.name; });
   if (it == std::end(kMaterials)) throw usage_error("unknown MatCap '" + name + "'");
   Image image{size, size, 3, std::vector<float>(size_t(size) * size_t(size) * 3)};
   const float light[3] = {-0.4f, 0.6f, 0.69f}, fill[3] = {0.6f, -0.3f, 0.74f};
@@ -45,7 +46,8 @@ Image make_builtin_matcap(const std::string& name, int size) {
       const float back = std::max(0.0f, nx * fill[0] + ny * fill[1] + nz * fill[2]);
       const float h[3] = {light[0], light[1], light[2] + 1.0f};
       const float hn = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
-      const float spec = std::pow(std::max(0.0f, (nx * h[0] + ny * h[1] + nz * h[2]) / hn), it->shininess) * it->specular;
+      const float spec =
+          std::pow(std::max(0.0f, (nx * h[0] + ny * h[1] + nz * h[2]) / hn), it->shininess) * it->specular;
       const float rim = std::pow(1.0f - nz, 3.0f);
       for (int c = 0; c < 3; ++c) {
         const float v = it->base[c] * (0.18f + 0.72f * diffuse + 0.15f * back) + spec + it->rim[c] * rim;

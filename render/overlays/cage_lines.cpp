@@ -10,7 +10,8 @@
 
 namespace gps {
 
-CageLines::CageLines() : program_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
+CageLines::CageLines()
+    : program_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
   glCreateVertexArrays(1, &vao_);
   glCreateBuffers(1, &vbo_);
   glCreateBuffers(1, &ibo_);
@@ -33,14 +34,16 @@ void CageLines::set_mesh(const CovarianceMesh& mesh) {
   for (const auto e : mesh.mesh.edges()) edges.insert(edges.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
   index_count_ = int(edges.size());
   upload_positions(mesh);
-  glNamedBufferData(ibo_, GLsizeiptr(std::max<size_t>(2, edges.size()) * sizeof(unsigned)), edges.data(), GL_STATIC_DRAW);
+  glNamedBufferData(ibo_, GLsizeiptr(std::max<size_t>(2, edges.size()) * sizeof(unsigned)), edges.data(),
+                    GL_STATIC_DRAW);
 }
 
 void CageLines::upload_positions(const CovarianceMesh& mesh) {
   std::vector<float> positions(3 * mesh.n_vertices());
   for (size_t i = 0; i < mesh.n_vertices(); ++i)
     for (int k = 0; k < 3; ++k) positions[3 * i + size_t(k)] = float(mesh.mean(i)[k]);
-  glNamedBufferData(vbo_, GLsizeiptr(std::max<size_t>(3, positions.size()) * sizeof(float)), positions.data(), GL_DYNAMIC_DRAW);
+  glNamedBufferData(vbo_, GLsizeiptr(std::max<size_t>(3, positions.size()) * sizeof(float)), positions.data(),
+                    GL_DYNAMIC_DRAW);
 }
 
 void CageLines::update_positions(const CovarianceMesh& mesh, const std::vector<int>& changed) {

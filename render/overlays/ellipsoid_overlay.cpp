@@ -11,7 +11,8 @@
 namespace gps {
 
 EllipsoidOverlay::EllipsoidOverlay()
-    : program_("ellipsoids", {{GL_VERTEX_SHADER, {shaders::ellipsoid_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
+    : program_("ellipsoids",
+               {{GL_VERTEX_SHADER, {shaders::ellipsoid_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
   // Three unit circles (xy, yz, zx planes) as line segments, instanced per vertex.
   std::vector<float> circles;
   const int segments = 32;
@@ -94,8 +95,10 @@ void EllipsoidOverlay::draw(const glm::mat4& view_projection, float sigma, const
   std::vector<Command> commands;
   for (const int v : *only) {
     if (v < 0 || v >= count_) continue;
-    if (!commands.empty() && commands.back().base_instance + commands.back().instances == GLuint(v)) ++commands.back().instances;
-    else commands.push_back({GLuint(circle_vertex_count_), 1, 0, GLuint(v)});
+    if (!commands.empty() && commands.back().base_instance + commands.back().instances == GLuint(v))
+      ++commands.back().instances;
+    else
+      commands.push_back({GLuint(circle_vertex_count_), 1, 0, GLuint(v)});
   }
   if (commands.empty()) return;
   glNamedBufferData(indirect_, GLsizeiptr(commands.size() * sizeof(Command)), commands.data(), GL_STREAM_DRAW);

@@ -15,10 +15,12 @@ constexpr const char* kTrianglePatches = "#define GPS_TRIANGLE_PATCHES\n";
 }
 
 CornerLimitPass::CornerLimitPass()
-    : quads_("corner_limits", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::corner_limit_comp}}}),
+    : quads_("corner_limits",
+             {{GL_COMPUTE_SHADER,
+               {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::corner_limit_comp}}}),
       triangles_("corner_limits_triangles", {{GL_COMPUTE_SHADER,
-                                              {kTrianglePatches, shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                                               shaders::loop_eval, shaders::corner_limit_comp}}}) {}
+                                              {kTrianglePatches, shaders::gpu_layout, shaders::patch_basis,
+                                               shaders::plan_eval, shaders::loop_eval, shaders::corner_limit_comp}}}) {}
 
 void CornerLimitPass::run_all(const PatchPlans& plans, int group_limit) const {
   run(plans, plans.corners() * plans.n_patches(), false, group_limit);

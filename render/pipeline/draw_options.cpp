@@ -2,7 +2,8 @@
 
 namespace gps {
 
-void set_level_uniforms(const ShaderProgram& p, const glm::mat4& view_projection, glm::vec2 viewport, const DrawOptions& o) {
+void set_level_uniforms(const ShaderProgram& p, const glm::mat4& view_projection, glm::vec2 viewport,
+                        const DrawOptions& o) {
   p.set("u_view_projection", view_projection);
   p.set("u_viewport", viewport);
   p.set("u_level", uniform_level(o));
@@ -10,7 +11,8 @@ void set_level_uniforms(const ShaderProgram& p, const glm::mat4& view_projection
   p.set("u_debug_mismatch", o.debug_mismatch ? 1 : 0);
 }
 
-void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& o, float aspect, int width, int height) {
+void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& o, float aspect, int width,
+                        int height) {
   set_level_uniforms(p, camera.view_projection(aspect), glm::vec2(float(width), float(height)), o);
   p.set("u_view", camera.view());
   p.set("u_flag_back_faces", o.flag_back_faces ? 1 : 0);

@@ -15,12 +15,12 @@ enum class ShadingMode { matcap = 0, normals = 1, flat = 2 };
 constexpr float kHiddenCageAlpha = 0.25f;
 
 struct DrawOptions {
-  float level = 8.0f;      // uniform tessellation level 1..64
-  float pixels = 0.0f;     // > 0: adaptive levels, target edge length in pixels
+  float level = 8.0f;   // uniform tessellation level 1..64
+  float pixels = 0.0f;  // > 0: adaptive levels, target edge length in pixels
   ShadingMode mode = ShadingMode::matcap;
-  bool wireframe = false;  // tessellation wireframe over the shading
-  bool mesh_lines = false; // the base mesh as thin grey lines, faint (kHiddenCageAlpha) where behind the surface
-  bool ellipsoids = false; // covariance ellipsoids
+  bool wireframe = false;   // tessellation wireframe over the shading
+  bool mesh_lines = false;  // the base mesh as thin grey lines, faint (kHiddenCageAlpha) where behind the surface
+  bool ellipsoids = false;  // covariance ellipsoids
   const std::vector<int>* ellipsoid_vertices = nullptr;  // set: only these vertices' ellipsoids (ascending)
   float sigma_scale = 1.0f;
   glm::vec3 background{1.0f, 1.0f, 1.0f};
@@ -34,8 +34,10 @@ struct DrawOptions {
 inline float uniform_level(const DrawOptions& o) { return std::clamp(o.level, 1.0f, 64.0f); }
 
 /// The tessellation levels' uniforms (shaders/tess_levels.glsl).
-void set_level_uniforms(const ShaderProgram& p, const glm::mat4& view_projection, glm::vec2 viewport, const DrawOptions& o);
+void set_level_uniforms(const ShaderProgram& p, const glm::mat4& view_projection, glm::vec2 viewport,
+                        const DrawOptions& o);
 /// Camera, viewport, levels and shading of a frame, for the patch, cached and static-triangle programs.
-void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& o, float aspect, int width, int height);
+void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& o, float aspect, int width,
+                        int height);
 
 }  // namespace gps

@@ -15,7 +15,8 @@ namespace {
 
 ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
   const bool triangles = shape == PatchShape::triangle, feedback = output == PatchOutput::feedback;
-  std::vector<const char*> control = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::tess_levels};
+  std::vector<const char*> control = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
+                                      shaders::tess_levels};
   std::vector<const char*> evaluation = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
   if (output == PatchOutput::wireframe) evaluation.insert(evaluation.begin(), shaders::geometry_next);
   control.push_back(triangles ? shaders::triangle_tesc : shaders::patch_tesc);
@@ -26,8 +27,10 @@ ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
                                      {GL_TESS_CONTROL_SHADER, control},
                                      {GL_TESS_EVALUATION_SHADER, evaluation}};
   const std::string name = triangles ? "triangle_patch" : "patch";
-  if (feedback) return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal", "v_evaluated"});
-  // cache_vert.glsl's inputs, then what the surface cache evaluates again after an edit (render/cache/stored_vertex_evaluation.h).
+  if (feedback)
+    return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal", "v_evaluated"});
+  // cache_vert.glsl's inputs, then what the surface cache evaluates again after an edit
+  // (render/cache/stored_vertex_evaluation.h).
   const std::vector<const char*> stored = {"v_position", "v_stored_normal", "v_grid", "v_evaluated"};
   if (output == PatchOutput::capture) return ShaderProgram(name + "_capture", stages, stored);
   if (output == PatchOutput::wireframe) stages.push_back({GL_GEOMETRY_SHADER, {shaders::mesh_geom}});
@@ -70,10 +73,14 @@ int quad_slot(PatchOutput output) {
 }  // namespace
 
 PatchDraw::PatchDraw()
-    : quad_{patch_program(PatchShape::quad, PatchOutput::shaded), patch_program(PatchShape::quad, PatchOutput::feedback),
-            patch_program(PatchShape::quad, PatchOutput::capture), patch_program(PatchShape::quad, PatchOutput::shaded_capture)},
-      triangle_{patch_program(PatchShape::triangle, PatchOutput::shaded), patch_program(PatchShape::triangle, PatchOutput::feedback),
-                patch_program(PatchShape::triangle, PatchOutput::wireframe), patch_program(PatchShape::triangle, PatchOutput::capture),
+    : quad_{patch_program(PatchShape::quad, PatchOutput::shaded),
+            patch_program(PatchShape::quad, PatchOutput::feedback),
+            patch_program(PatchShape::quad, PatchOutput::capture),
+            patch_program(PatchShape::quad, PatchOutput::shaded_capture)},
+      triangle_{patch_program(PatchShape::triangle, PatchOutput::shaded),
+                patch_program(PatchShape::triangle, PatchOutput::feedback),
+                patch_program(PatchShape::triangle, PatchOutput::wireframe),
+                patch_program(PatchShape::triangle, PatchOutput::capture),
                 patch_program(PatchShape::triangle, PatchOutput::shaded_capture)} {
   glCreateVertexArrays(1, &empty_vao_);
 }
@@ -84,13 +91,15 @@ const ShaderProgram& PatchDraw::program(PatchShape shape, PatchOutput output) co
   return shape == PatchShape::triangle ? triangle_[int(output)] : quad_[quad_slot(output)];
 }
 
-void PatchDraw::draw(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch, int n_patches) const {
+void PatchDraw::draw(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
+                     int n_patches) const {
   if (statistics_) statistics_->begin();
   draw_batches(program, o, n_total, first_patch, n_patches);
   if (statistics_) statistics_->end();
 }
 
-void PatchDraw::draw_batches(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch, int n_patches) const {
+void PatchDraw::draw_batches(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
+                             int n_patches) const {
   // Mesa 22.3's llvmpipe was seen to drop whole patches from draws that generate some 10^5
   // vertices (the crack test caught it), so draw in batches of at most ~2^15 generated vertices at
   // the chosen level (adaptive levels: the worst case, 64).
@@ -105,8 +114,8 @@ void PatchDraw::draw_batches(const ShaderProgram& program, const DrawOptions& o,
   }
 }
 
-long long PatchDraw::count_triangles(PatchShape shape, const Camera& camera, const DrawOptions& o, int width, int height, int n_total,
-                                     int first_patch, int n_patches) const {
+long long PatchDraw::count_triangles(PatchShape shape, const Camera& camera, const DrawOptions& o, int width,
+                                     int height, int n_total, int first_patch, int n_patches) const {
   const ShaderProgram& feedback = program(shape, PatchOutput::feedback);
   set_frame_uniforms(feedback, camera, o, float(width) / float(height), width, height);
   feedback.use();
@@ -125,8 +134,9 @@ long long PatchDraw::count_triangles(PatchShape shape, const Camera& camera, con
   return (long long)primitives;
 }
 
-std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o, int width,
-                                                           int height, int n_total, int first_patch, int n_patches) const {
+std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o,
+                                                           int width, int height, int n_total, int first_patch,
+                                                           int n_patches) const {
   first_patch = std::clamp(first_patch, 0, n_total);
   n_patches = n_patches < 0 ? n_total - first_patch : std::min(n_patches, n_total - first_patch);
   // Counted first, then captured into a buffer of that size (a bound from the largest level alone
@@ -135,7 +145,8 @@ std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, con
   std::vector<TessellatedVertex> out(size_t(triangles) * 3);
   unsigned buffer = 0;
   glCreateBuffers(1, &buffer);
-  glNamedBufferData(buffer, GLsizeiptr(std::max<size_t>(1, out.size()) * sizeof(TessellatedVertex)), nullptr, GL_STREAM_READ);
+  glNamedBufferData(buffer, GLsizeiptr(std::max<size_t>(1, out.size()) * sizeof(TessellatedVertex)), nullptr,
+                    GL_STREAM_READ);
   {
     const DiscardedRaster discarded;
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);

@@ -54,15 +54,17 @@ public:
   }
   /// Draws patches [first_patch, first_patch + n_patches) of `n_total` (n_patches < 0: to the last)
   /// with `program` (bound, with the plan buffers), counted by the statistics queries if collecting.
-  void draw(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch = 0, int n_patches = -1) const;
+  void draw(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch = 0,
+            int n_patches = -1) const;
   /// The triangles the tessellator generates for `o` in a width × height viewport, of those
   /// patches (a draw with rasterisation discarded).
-  long long count_triangles(PatchShape shape, const Camera& camera, const DrawOptions& o, int width, int height, int n_total,
-                            int first_patch = 0, int n_patches = -1) const;
+  long long count_triangles(PatchShape shape, const Camera& camera, const DrawOptions& o, int width, int height,
+                            int n_total, int first_patch = 0, int n_patches = -1) const;
   /// The vertices the tessellator generates for `o` in a width × height viewport (no
   /// rasterisation) of those patches.
-  std::vector<TessellatedVertex> capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o, int width, int height,
-                                                  int n_total, int first_patch, int n_patches) const;
+  std::vector<TessellatedVertex> capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o,
+                                                  int width, int height, int n_total, int first_patch,
+                                                  int n_patches) const;
 
   void set_collect_statistics(bool collect);
   /// The counts of the newest draw whose queries finished (triangles, vertices; -1 vertices without
@@ -70,7 +72,8 @@ public:
   void latest_statistics(DrawStatistics& s) const;
 
 private:
-  void draw_batches(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch, int n_patches) const;
+  void draw_batches(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
+                    int n_patches) const;
 
   ShaderProgram quad_[4], triangle_[5];  // by PatchOutput (quads: shaded, feedback, capture, shaded_capture)
   unsigned empty_vao_ = 0;

@@ -19,17 +19,24 @@ template <class T>
 void PlanBuffers::upload(int binding, const std::vector<T>& data) {
   // Empty buffers still need storage to be bound.
   sizes_[binding] = std::max<size_t>(sizeof(T), data.size() * sizeof(T));
-  glNamedBufferData(buffers_[binding], GLsizeiptr(sizes_[binding]), data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
+  glNamedBufferData(buffers_[binding], GLsizeiptr(sizes_[binding]), data.empty() ? nullptr : data.data(),
+                    GL_DYNAMIC_DRAW);
 }
 
 // Two vec4 per patch corner: limit point and node kind, normal (shaders/corner_limit_comp.glsl).
-size_t PlanBuffers::corner_limit_floats(const PatchPlans& plans) { return size_t(plans.corners()) * size_t(plans.n_patches()) * 8; }
+size_t PlanBuffers::corner_limit_floats(const PatchPlans& plans) {
+  return size_t(plans.corners()) * size_t(plans.n_patches()) * 8;
+}
 
 void PlanBuffers::check_fits(const SurfaceTables& tables, int n_vertices, int n_faces, long long storage_limit) {
-  check_storage_fits("plan points", size_t(tables.stencils.n_points()) * kVec4PerPoint * 4 * sizeof(float), n_vertices, n_faces, storage_limit);
-  check_storage_fits("stencil weights", tables.stencils.weights.size() * sizeof(float), n_vertices, n_faces, storage_limit);
-  check_storage_fits("plan nodes", tables.plans.nodes.size() * sizeof(tables.plans.nodes[0]), n_vertices, n_faces, storage_limit);
-  check_storage_fits("corner limits", corner_limit_floats(tables.plans) * sizeof(float), n_vertices, n_faces, storage_limit);
+  check_storage_fits("plan points", size_t(tables.stencils.n_points()) * kVec4PerPoint * 4 * sizeof(float), n_vertices,
+                     n_faces, storage_limit);
+  check_storage_fits("stencil weights", tables.stencils.weights.size() * sizeof(float), n_vertices, n_faces,
+                     storage_limit);
+  check_storage_fits("plan nodes", tables.plans.nodes.size() * sizeof(tables.plans.nodes[0]), n_vertices, n_faces,
+                     storage_limit);
+  check_storage_fits("corner limits", corner_limit_floats(tables.plans) * sizeof(float), n_vertices, n_faces,
+                     storage_limit);
 }
 
 void PlanBuffers::upload_tables(const SurfaceTables& tables) {

@@ -13,8 +13,7 @@
 namespace gps {
 
 SurfaceRenderer::SurfaceRenderer()
-    : cached_("cached", {{GL_VERTEX_SHADER, {shaders::cache_vert}},
-                         {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
+    : cached_("cached", {{GL_VERTEX_SHADER, {shaders::cache_vert}}, {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
       cached_grid_("cached_grid", {{GL_VERTEX_SHADER, {"#define CACHE_GRID\n", shaders::cache_vert}},
                                    {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
       cached_wire_("cached_wire", {{GL_VERTEX_SHADER, {shaders::geometry_next, shaders::cache_vert}},
@@ -51,7 +50,8 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surfac
 
 void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
   cache_.update_cage(mesh, changed);
-  if (update_everything(changed.size(), size_t(n_base_))) {  // most of the mesh (select all, drag): whole buffers, one call each
+  if (update_everything(changed.size(),
+                        size_t(n_base_))) {  // most of the mesh (select all, drag): whole buffers, one call each
     buffers_.upload_gaussians(mesh);
     ellipsoids_.upload(mesh, nullptr);
     cage_.upload_positions(mesh);
@@ -111,7 +111,8 @@ void SurfaceRenderer::set_matcap(const Image& m) {
   for (int y = 0; y < m.height; ++y)
     for (int x = 0; x < m.width; ++x)
       for (int c = 0; c < 3; ++c)
-        rgba[(size_t(m.height - 1 - y) * size_t(m.width) + size_t(x)) * 4 + size_t(c)] = m.at(x, y, std::min(c, m.channels - 1));
+        rgba[(size_t(m.height - 1 - y) * size_t(m.width) + size_t(x)) * 4 + size_t(c)] =
+            m.at(x, y, std::min(c, m.channels - 1));
   glTextureSubImage2D(matcap_, 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, rgba.data());
   glTextureParameteri(matcap_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(matcap_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -154,17 +155,19 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glBindTextureUnit(0, matcap_);
-    const CacheFrame cache_frame = !use_cache        ? CacheFrame::live
+    const CacheFrame cache_frame = !use_cache       ? CacheFrame::live
                                    : !cache_current ? capture_cache(camera, o, aspect, target.width(), target.height())
                                    : cache_.holds_triangles() ? CacheFrame::stored
-                                                               : CacheFrame::live;  // refused: past the memory limit
+                                                              : CacheFrame::live;  // refused: past the memory limit
     const bool cached = cache_frame == CacheFrame::stored;
     last_cache_frame_ = cache_frame;
     if (cache_frame != CacheFrame::drawn) {  // else drawn as it was captured
       // The geometry shader only where a triangle wireframe is wanted: the static floor of the benchmark stays plain.
       const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
       const bool grid = cached && draws_grid(o);
-      const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_ : grid ? cached_grid_ : cached_)
+      const ShaderProgram& program = cached                ? (triangle_wire ? cached_wire_
+                                                              : grid        ? cached_grid_
+                                                                            : cached_)
                                      : !o.static_triangles ? patches_.frame_program(shape(), o)
                                                            : static_triangles_.program(o.wireframe);
       set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
@@ -231,8 +234,8 @@ bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, 
 // Captures the patches' triangles (the storage buffers and the frame's target bound). It draws the
 // frame as it goes (the shaded program under transform feedback, rasteriser on), but where a
 // geometry stage draws the triangle wireframe: transform feedback would store its output.
-SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera, const DrawOptions& o, float aspect, int width,
-                                                           int height) {
+SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera, const DrawOptions& o, float aspect,
+                                                           int width, int height) {
   const SurfaceCache::Key key = cache_key(o);
   const glm::mat4 view_projection = camera.view_projection(aspect);
   const glm::vec2 viewport{float(width), float(height)};
@@ -255,11 +258,13 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
     estimate += ((patches - halves) * 2 * level * level + halves * 2 * half_level * half_level) * 5 / 4;
   }
   const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
-  const ShaderProgram& program = patches_.program(shape(), triangle_wire ? PatchOutput::capture : PatchOutput::shaded_capture);
+  const ShaderProgram& program =
+      patches_.program(shape(), triangle_wire ? PatchOutput::capture : PatchOutput::shaded_capture);
   set_frame_uniforms(program, camera, o, aspect, width, height);
   program.use();
   const auto draw = [&](int first, int count) { patches_.draw(program, o, n_patches(), first, count); };
-  if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire)) return CacheFrame::live;
+  if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire))
+    return CacheFrame::live;
   if (key.pixels > 0.0f) {  // the levels an edit's refresh checks
     const ShaderProgram& record = stored_levels_.program(shape());
     set_level_uniforms(record, view_projection, viewport, o);
@@ -268,8 +273,8 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
   return triangle_wire ? CacheFrame::stored : CacheFrame::drawn;  // the triangle wireframe: drawn from the cache
 }
 
-std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, int width, int height,
-                                                                 int first_patch, int n_patches) {
+std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& camera, const DrawOptions& o, int width,
+                                                                 int height, int first_patch, int n_patches) {
   buffers_.bind();
   return patches_.capture_vertices(shape(), camera, o, width, height, this->n_patches(), first_patch, n_patches);
 }

@@ -45,7 +45,9 @@ public:
   /// anything changes, where the tables exceed the device's storage block size.
   void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface);
   /// The same with the surface core plans under `options` (Loop for triangles only, else Catmull-Clark).
-  void set_mesh(const CovarianceMesh& mesh, const PlanOptions& options) { set_mesh(mesh, PlannedSurface(mesh, options)); }
+  void set_mesh(const CovarianceMesh& mesh, const PlanOptions& options) {
+    set_mesh(mesh, PlannedSurface(mesh, options));
+  }
   /// The same with the default options: the scheme that fits the mesh, exact plans.
   void set_mesh(const CovarianceMesh& mesh) { set_mesh(mesh, PlanOptions{}); }
   /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them
@@ -61,8 +63,8 @@ public:
   void draw(const RenderTarget& target, const Camera& camera, const DrawOptions& options);
   /// The vertices the tessellator generates for `options` in a width × height viewport (no
   /// rasterisation), of the patches [first_patch, first_patch + n_patches) (n_patches < 0: to the last).
-  std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, int width, int height,
-                                                  int first_patch = 0, int n_patches = -1);
+  std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, int width,
+                                                  int height, int first_patch = 0, int n_patches = -1);
 
   /// The stored triangles of DrawOptions::surface_cache (its capture count, hysteresis, limit).
   SurfaceCache& surface_cache() { return cache_; }
@@ -124,15 +126,16 @@ private:
   StaticTriangles static_triangles_;
   CageLines cage_;
   EllipsoidOverlay ellipsoids_;
-  ShaderProgram cached_, cached_grid_, cached_wire_;  // the surface cache's draw (plain, quads' wireframe, triangles' wireframe)
+  ShaderProgram cached_, cached_grid_,
+      cached_wire_;  // the surface cache's draw (plain, quads' wireframe, triangles' wireframe)
   SurfaceCache cache_;
   StoredVertexEvaluation stored_evaluation_;  // the cache's edits where the tessellation stays
-  StoredPatchLevels stored_levels_;            // the levels of the cache's adaptive capture
-  long long points_generation_ = 0;  // bumped by every compute pass: the cache's key
+  StoredPatchLevels stored_levels_;           // the levels of the cache's adaptive capture
+  long long points_generation_ = 0;           // bumped by every compute pass: the cache's key
   unsigned matcap_ = 0;
   int n_base_ = 0;
   long long half_size_patches_ = 0;  // a split face's patches (quads): the cache's buffer estimate
-  int group_limit_ = 0;  // lower_device_limits
+  int group_limit_ = 0;              // lower_device_limits
   long long storage_limit_ = 0;
   GpuPassTimer* timer_ = nullptr;
   DrawStatistics last_statistics_;

@@ -29,15 +29,23 @@ TEST(Cli, SampleInfoSubdivideInfer) {
   EXPECT_NE(info.output.find("vertices: 8"), std::string::npos) << info.output;
   EXPECT_NE(info.output.find("6 with 4 sides"), std::string::npos) << info.output;
   EXPECT_NE(info.output.find("extraordinary vertices: 8"), std::string::npos) << info.output;
-  const auto sub = run_command(gpsurf("subdivide " + dir.file("cube.ply") + " -o " + dir.file("s.ply") + " --levels 2 --limit"));
+  const auto sub =
+      run_command(gpsurf("subdivide " + dir.file("cube.ply") + " -o " + dir.file("s.ply") + " --levels 2 --limit"));
   EXPECT_EQ(sub.exit_code, 0) << sub.output;
   EXPECT_EQ(read_mesh(dir.file("s.ply")).n_faces(), 96u);
-  EXPECT_EQ(run_command(gpsurf("subdivide " + dir.file("cube.ply") + " -o " + dir.file("s.obj") + " --levels 1")).exit_code, 0);
+  EXPECT_EQ(
+      run_command(gpsurf("subdivide " + dir.file("cube.ply") + " -o " + dir.file("s.obj") + " --levels 1")).exit_code,
+      0);
   EXPECT_EQ(read_mesh(dir.file("s.obj")).n_faces(), 24u);
   EXPECT_EQ(run_command(gpsurf("sample cone -o " + dir.file("cone.ply"))).exit_code, 0);
-  EXPECT_EQ(run_command(gpsurf("subdivide " + dir.file("cone.ply") + " -o " + dir.file("l.ply") + " --levels 2 --scheme loop --loop-beta warren")).exit_code, 0);
-  EXPECT_EQ(run_command(gpsurf("infer " + dir.file("s.obj") + " -o " + dir.file("i.ply") + " --bias 0.1")).exit_code, 0);
-  EXPECT_EQ(run_command(gpsurf("infer " + dir.file("s.obj") + " -o " + dir.file("j.ply") + " --isotropic 0.3")).exit_code, 0);
+  EXPECT_EQ(run_command(gpsurf("subdivide " + dir.file("cone.ply") + " -o " + dir.file("l.ply") +
+                               " --levels 2 --scheme loop --loop-beta warren"))
+                .exit_code,
+            0);
+  EXPECT_EQ(run_command(gpsurf("infer " + dir.file("s.obj") + " -o " + dir.file("i.ply") + " --bias 0.1")).exit_code,
+            0);
+  EXPECT_EQ(
+      run_command(gpsurf("infer " + dir.file("s.obj") + " -o " + dir.file("j.ply") + " --isotropic 0.3")).exit_code, 0);
   for (const char* cmd : {"info", "sample", "infer", "subdivide"})
     EXPECT_EQ(run_command(gpsurf(std::string(cmd) + " --help")).exit_code, 0) << cmd;
 }
@@ -49,7 +57,8 @@ TEST(Cli, ValuesBeyondWhatTheMathCarriesAreRefusedAndNothingIsWritten) {
   test::TempDir dir;
   const auto ply = [](const std::string& format, double position, double variance) {
     std::string s = "ply\nformat " + format + " 1.0\nelement vertex 4\n";
-    for (const char* p : {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz"}) s += std::string("property double ") + p + "\n";
+    for (const char* p : {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz"})
+      s += std::string("property double ") + p + "\n";
     s += "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     const double v[4][3] = {{0, 0, 0}, {position, 0, 0}, {1, 1, 0}, {0, -position, 0}};
     for (const auto& p : v) {
@@ -90,11 +99,11 @@ TEST(Cli, ValuesBeyondWhatTheMathCarriesAreRefusedAndNothingIsWritten) {
 TEST(Cli, UsageErrorsExitWithTwo) {
   test::TempDir dir;
   run_command(gpsurf("sample cube -o " + dir.file("cube.ply")));
-  for (const std::string& args : std::vector<std::string>{"", "frobnicate", "sample teapot -o " + dir.file("t.ply"),
-                                 "subdivide " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --levels 9",
-                                 "subdivide " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --scheme butterfly",
-                                 "infer " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --bias -1",
-                                 "sample cube"}) {
+  for (const std::string& args : std::vector<std::string>{
+           "", "frobnicate", "sample teapot -o " + dir.file("t.ply"),
+           "subdivide " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --levels 9",
+           "subdivide " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --scheme butterfly",
+           "infer " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --bias -1", "sample cube"}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
     EXPECT_EQ(lines(r.output), 1u) << args << ": " << r.output;
@@ -114,17 +123,19 @@ TEST(Cli, IgnoredOptionsAndRangesAreShortErrors) {
   EXPECT_EQ(bias.exit_code, 2) << bias.output;
   EXPECT_NE(bias.output.find("expected a number > 0, got '0'"), std::string::npos) << bias.output;
   EXPECT_LT(bias.output.size(), 160u) << bias.output;
-  EXPECT_EQ(run_command(gpsurf("render " + dir.file("cube.ply") + " -o " + dir.file("r.png") + " --size 0x5")).exit_code, 2);
+  EXPECT_EQ(
+      run_command(gpsurf("render " + dir.file("cube.ply") + " -o " + dir.file("r.png") + " --size 0x5")).exit_code, 2);
 }
 
 TEST(Cli, RuntimeErrorsExitWithOneAndKeepFiles) {
   test::TempDir dir;
-  const std::string bad = dir.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nend_header\n1\n");
+  const std::string bad =
+      dir.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nend_header\n1\n");
   const std::string keep = dir.write("keep.ply", "precious");
-  for (const std::string& args : std::vector<std::string>{"info " + dir.file("missing.ply"), "info " + bad, "info " + dir.path().string(),
-                                 "subdivide " + bad + " -o " + keep,
-                                 "subdivide " + dir.file("cube.ply") + " -o " + keep,
-                                 "sample cube -o " + dir.file("no/folder/c.ply")}) {
+  for (const std::string& args :
+       std::vector<std::string>{"info " + dir.file("missing.ply"), "info " + bad, "info " + dir.path().string(),
+                                "subdivide " + bad + " -o " + keep, "subdivide " + dir.file("cube.ply") + " -o " + keep,
+                                "sample cube -o " + dir.file("no/folder/c.ply")}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 1) << args << ": " << r.output;
     EXPECT_EQ(lines(r.output), 1u) << args << ": " << r.output;
@@ -143,8 +154,9 @@ TEST(Cli, RuntimeErrorsExitWithOneAndKeepFiles) {
 TEST(Cli, InferAndInfoOnPlainMeshes) {
   test::TempDir dir;
   // Two quads, the second with all corners at one point: inference (Eq. 16) refuses it, isotropic does not.
-  const std::string obj = dir.write("strip.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 5 5 5\nv 5 5 5\nv 5 5 5\nv 5 5 5\n"
-                                                 "f 1 2 3 4\nf 5 6 7 8\n");
+  const std::string obj = dir.write("strip.obj",
+                                    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 5 5 5\nv 5 5 5\nv 5 5 5\nv 5 5 5\n"
+                                    "f 1 2 3 4\nf 5 6 7 8\n");
   const auto inferred = run_command(gpsurf("infer " + obj + " -o " + dir.file("i.ply")));
   EXPECT_EQ(inferred.exit_code, 1) << inferred.output;
   EXPECT_NE(inferred.output.find("face 1 is degenerate"), std::string::npos) << inferred.output;

@@ -47,16 +47,19 @@ TEST(ReaderMemory, AmplificationInputsAreRefusedWithinFourTimesTheFileSize) {
   const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
   const std::vector<std::pair<std::string, std::string>> inputs = {
       // Binary faces of 0 vertices: one byte each, 24+ bytes each if sized from the header.
-      {"zero_faces.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
-                         "property float z\nelement face " + std::to_string(kSize) +
-                         "\nproperty list uchar int vertex_indices\nend_header\n" + std::string(kSize, '\0')},
+      {"zero_faces.ply",
+       "ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+       "property float z\nelement face " +
+           std::to_string(kSize) + "\nproperty list uchar int vertex_indices\nend_header\n" + std::string(kSize, '\0')},
       // A vertex element of blank space: counts allowed by the size, no values.
       {"blank_vertices.ply", "ply\nformat ascii 1.0\nelement vertex " + std::to_string(kSize / 6) +
-                             "\nproperty double x\nproperty double y\nproperty double z\nend_header\n" + std::string(kSize, ' ')},
+                                 "\nproperty double x\nproperty double y\nproperty double z\nend_header\n" +
+                                 std::string(kSize, ' ')},
       {"blank_lines.ply", "ply\nformat ascii 1.0\nelement vertex " + std::to_string(kSize / 6) +
-                          "\nproperty double x\nproperty double y\nproperty double z\nend_header\n" + std::string(kSize, '\n')},
+                              "\nproperty double x\nproperty double y\nproperty double z\nend_header\n" +
+                              std::string(kSize, '\n')},
       {"huge_counts.off", "OFF\n" + std::to_string(kSize / 6) + " " + std::to_string(kSize / 8) + " 0\n" + vertices +
-                          std::string(kSize, ' ')},
+                              std::string(kSize, ' ')},
       {"many_short_faces.off", "OFF\n3 " + std::to_string(kSize / 8) + " 0\n" + vertices + std::string(kSize, '\n')},
   };
   const MeasuredRun baseline = run_measured({GPSURF_BINARY, "sample", "--list"});

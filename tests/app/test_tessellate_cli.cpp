@@ -24,21 +24,25 @@ std::string slurp(const std::string& path) {
 TEST(TessellateCli, WritesPlyWithNormalsAndObj) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample cube -o " + dir.file("cube.ply"))).exit_code, 0);
-  const auto r = run_command(gpsurf("tessellate " + dir.file("cube.ply") + " -o " + dir.file("t.ply") + " --depth 2 --level 4"));
+  const auto r =
+      run_command(gpsurf("tessellate " + dir.file("cube.ply") + " -o " + dir.file("t.ply") + " --depth 2 --level 4"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   // 6 patches at level 4, welded: V = 6·3² + 12·3 + 8 = 98, F = 6·4²·2 = 192.
   EXPECT_NE(r.output.find("98 vertices, 192 triangles"), std::string::npos) << r.output;
   const std::string ply = slurp(dir.file("t.ply"));
   EXPECT_NE(ply.find("element vertex 98"), std::string::npos);
   EXPECT_NE(ply.find("property double nx"), std::string::npos);
-  EXPECT_EQ(run_command(gpsurf("tessellate " + dir.file("cube.ply") + " -o " + dir.file("t.obj") + " --level 2")).exit_code, 0);
+  EXPECT_EQ(
+      run_command(gpsurf("tessellate " + dir.file("cube.ply") + " -o " + dir.file("t.obj") + " --level 2")).exit_code,
+      0);
   EXPECT_NE(slurp(dir.file("t.obj")).find("vn "), std::string::npos);
 }
 
 TEST(TessellateCli, UsageAndRuntimeErrors) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample cube -o " + dir.file("cube.ply"))).exit_code, 0);
-  for (const std::string& args : {std::string("--depth 9"), std::string("--approximate --depth 0"), std::string("--level 0"), std::string("--level 65")}) {
+  for (const std::string& args : {std::string("--depth 9"), std::string("--approximate --depth 0"),
+                                  std::string("--level 0"), std::string("--level 65")}) {
     const auto r = run_command(gpsurf("tessellate " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " " + args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;

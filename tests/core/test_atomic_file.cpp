@@ -31,7 +31,8 @@ std::string contents(const std::string& path) {
 std::vector<std::string> others(const fs::path& dir, const std::vector<std::string>& keep) {
   std::vector<std::string> out;
   for (const auto& e : fs::directory_iterator(dir))
-    if (std::find(keep.begin(), keep.end(), e.path().filename().string()) == keep.end()) out.push_back(e.path().filename().string());
+    if (std::find(keep.begin(), keep.end(), e.path().filename().string()) == keep.end())
+      out.push_back(e.path().filename().string());
   return out;
 }
 
@@ -43,7 +44,7 @@ TEST(AtomicFile, WritesThroughASymbolicLinkAndKeepsIt) {
   test::TempDir dir;
   fs::create_directories(dir.path() / "real");
   const std::string target = dir.write("real/mesh.ply", "old");
-  fs::create_symlink("real/mesh.ply", dir.path() / "link.ply");  // relative, as `ln -s` makes them
+  fs::create_symlink("real/mesh.ply", dir.path() / "link.ply");           // relative, as `ln -s` makes them
   fs::create_symlink(dir.path() / "link.ply", dir.path() / "link2.ply");  // a chain of two
   write_text(dir.file("link2.ply"), "new");
   EXPECT_TRUE(fs::is_symlink(dir.path() / "link.ply"));
@@ -63,7 +64,8 @@ TEST(AtomicFile, KeepsTheModeOfTheFileItReplaces) {
   const std::string path = dir.write("m.ply", "old");
   fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
   write_text(path, "new");
-  EXPECT_EQ(fs::status(path).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  EXPECT_EQ(fs::status(path).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
 }
 
 // A child process saves and is signalled while writing (the writer raises the signal half-way):

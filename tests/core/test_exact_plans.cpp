@@ -26,7 +26,9 @@ PlannedMesh exact_plans(CovarianceMesh m) { return PlannedMesh(std::move(m), Pla
 
 // A closed quad mesh with two extraordinary vertices of valence n and 2n of valence 3: the
 // bipyramid of triangles after one Catmull-Clark step.
-CovarianceMesh quad_bipyramid(int n) { return subdivide(test::bipyramid_mesh(n), {Scheme::catmull_clark, 1, false}).mesh; }
+CovarianceMesh quad_bipyramid(int n) {
+  return subdivide(test::bipyramid_mesh(n), {Scheme::catmull_clark, 1, false}).mesh;
+}
 
 double error_against_reference(const PlannedMesh& p, int levels) {
   return test::error_against_reference(p, {Scheme::catmull_clark, levels, true});
@@ -48,7 +50,8 @@ TEST(ExactPlans, EqualTheReferenceAtInteriorExtraordinaryVertices) {
 
 TEST(ExactPlans, EqualTheReferenceAtBoundaryVerticesAndSplitFaces) {
   std::vector<std::pair<std::string, CovarianceMesh>> cases;
-  for (int n = 3; n <= 10; ++n) cases.emplace_back("valence" + std::to_string(n), make_sample("valence" + std::to_string(n)));
+  for (int n = 3; n <= 10; ++n)
+    cases.emplace_back("valence" + std::to_string(n), make_sample("valence" + std::to_string(n)));
   for (const char* name : {"cone", "cone-pointy", "cylinder", "pawn"}) cases.emplace_back(name, make_sample(name));
   cases.emplace_back("triangle grid", with_random_covariances(test::triangle_grid_mesh(4, 3), 5));
   cases.emplace_back("open cylinder", with_random_covariances(test::open_cylinder_mesh(), 6));
@@ -75,7 +78,9 @@ TEST(ExactPlans, DerivativesMatchFiniteDifferences) {
       const auto c = evaluate_patch(p.tables.plans, p.points, patch, s, t);
       ASSERT_TRUE(c);
       extraordinary += c->kind == NodeKind::extraordinary;
-      const auto at = [&](double ds, double dt) { return evaluate_patch(p.tables.plans, p.points, patch, s + ds, t + dt)->position; };
+      const auto at = [&](double ds, double dt) {
+        return evaluate_patch(p.tables.plans, p.points, patch, s + ds, t + dt)->position;
+      };
       const Vec3 du = (at(h, 0) - at(-h, 0)) / (2 * h), dv = (at(0, h) - at(0, -h)) / (2 * h);
       EXPECT_LT((c->du - du).norm(), 1e-5 * du.norm()) << name << " patch " << patch << " at " << s << ", " << t;
       EXPECT_LT((c->dv - dv).norm(), 1e-5 * dv.norm()) << name << " patch " << patch << " at " << s << ", " << t;
@@ -93,8 +98,10 @@ TEST(ExactPlans, PastTheTablesLevelsStepsContinueTheSurface) {
     std::vector<std::pair<std::string, PlannedMesh>> c;
     c.emplace_back("valence5, Catmull-Clark", exact_plans(with_random_covariances(make_sample("valence5"), 5)));
     c.emplace_back("quad bipyramid 7", exact_plans(with_random_covariances(quad_bipyramid(7), 7)));
-    c.emplace_back("bipyramid 7, Loop", PlannedMesh(with_random_covariances(test::bipyramid_mesh(7), 8), PlanOptions{Scheme::loop}));
-    c.emplace_back("triangle grid, Loop", PlannedMesh(with_random_covariances(test::triangle_grid_mesh(4, 3), 9), PlanOptions{Scheme::loop}));
+    c.emplace_back("bipyramid 7, Loop",
+                   PlannedMesh(with_random_covariances(test::bipyramid_mesh(7), 8), PlanOptions{Scheme::loop}));
+    c.emplace_back("triangle grid, Loop",
+                   PlannedMesh(with_random_covariances(test::triangle_grid_mesh(4, 3), 9), PlanOptions{Scheme::loop}));
     return c;
   }();
   for (const auto& [name, p] : cases) {
@@ -107,7 +114,10 @@ TEST(ExactPlans, PastTheTablesLevelsStepsContinueTheSurface) {
         // (max(s, t) for quads, s + t for triangles), so h = 2^-k / measure is where level k starts.
         const double a = 0.37, b = 0.61, measure = quad ? b : a + b;
         const auto uv = [&](double h) -> std::pair<double, double> {
-          if (!quad) return r == 0 ? std::pair{h * a, h * b} : r == 1 ? std::pair{1 - h * (a + b), h * a} : std::pair{h * b, 1 - h * (a + b)};
+          if (!quad)
+            return r == 0   ? std::pair{h * a, h * b}
+                   : r == 1 ? std::pair{1 - h * (a + b), h * a}
+                            : std::pair{h * b, 1 - h * (a + b)};
           const double cu[4] = {0, 1, 1, 0}, cv[4] = {0, 0, 1, 1}, su[4] = {1, -1, -1, 1}, sv[4] = {1, 1, -1, -1};
           return {cu[r] + su[r] * h * a, cv[r] + sv[r] * h * b};
         };
@@ -124,7 +134,8 @@ TEST(ExactPlans, PastTheTablesLevelsStepsContinueTheSurface) {
           const double h = std::ldexp(1.0, -k) / measure, delta = 1e-7;
           const auto below = at(h * (1 - delta)), above = at(h * (1 + delta)), mid = at(h);
           ASSERT_TRUE(below && above && mid);
-          const auto [du, dv] = std::pair{uv(h * (1 + delta)).first - uv(h * (1 - delta)).first, uv(h * (1 + delta)).second - uv(h * (1 - delta)).second};
+          const auto [du, dv] = std::pair{uv(h * (1 + delta)).first - uv(h * (1 - delta)).first,
+                                          uv(h * (1 + delta)).second - uv(h * (1 - delta)).second};
           const Vec3 expected = du * mid->du + dv * mid->dv;
           EXPECT_LT((above->position - below->position - expected).norm(), 1e-3 * expected.norm() + 1e-14 * diag)
               << name << " patch " << patch << " corner " << r << " at level " << k;
@@ -134,7 +145,8 @@ TEST(ExactPlans, PastTheTablesLevelsStepsContinueTheSurface) {
           const auto s = at(std::ldexp(1.0, -m));
           ASSERT_TRUE(s);
           const double distance = (s->position - corner->position).norm();
-          EXPECT_LE(distance, last * (1 + 1e-9) + 1e-15 * diag) << name << " patch " << patch << " corner " << r << " at 2^-" << m;
+          EXPECT_LE(distance, last * (1 + 1e-9) + 1e-15 * diag)
+              << name << " patch " << patch << " corner " << r << " at 2^-" << m;
           EXPECT_TRUE(s->normal.allFinite()) << name << " patch " << patch << " corner " << r << " at 2^-" << m;
           last = distance;
         }
@@ -146,7 +158,8 @@ TEST(ExactPlans, PastTheTablesLevelsStepsContinueTheSurface) {
 }
 
 // At the extraordinary vertex itself the normal is defined (from the limit tangent masks) and is
-// the reference surface's: the normal of the fan of limit points around the vertex at level 7 (its fan is within 0.5°; at level 6, 0.9° at valence 12).
+// the reference surface's: the normal of the fan of limit points around the vertex at level 7 (its fan is within 0.5°;
+// at level 6, 0.9° at valence 12).
 TEST(ExactPlans, NormalsAreDefinedAtExtraordinaryVertices) {
   for (int n : {3, 6, 12}) {
     const CovarianceMesh mesh = with_random_covariances(quad_bipyramid(n), unsigned(n));
@@ -165,7 +178,9 @@ TEST(ExactPlans, NormalsAreDefinedAtExtraordinaryVertices) {
       const auto& t = topology_of(ref.mesh.mesh);
       for (int i = fine.vertex_face_offsets[k]; i < fine.vertex_face_offsets[k + 1]; ++i) {
         const int f = fine.vertex_faces[size_t(i)], c = fine.vertex_face_corners[size_t(i)];
-        const auto vertex = [&](int j) { return ref.mesh.mean(size_t(t.verts[size_t(t.offsets[size_t(f)] + (c + j) % 4)])); };
+        const auto vertex = [&](int j) {
+          return ref.mesh.mean(size_t(t.verts[size_t(t.offsets[size_t(f)] + (c + j) % 4)]));
+        };
         normal += (vertex(1) - vertex(0)).cross(vertex(3) - vertex(0));
       }
       const double angle = std::acos(std::clamp(s->normal.dot(normal.normalized()), -1.0, 1.0)) * 180.0 / M_PI;
@@ -183,11 +198,13 @@ TEST(ExactPlans, StopOneLevelBelowIrregularVertices) {
     const PolygonTopology t = topology_of(make_sample(name).mesh);
     const SurfaceTables exact = build_surface_plans(t, PlanOptions{Scheme::catmull_clark});
     const SurfaceTables thesis = build_surface_plans(t, PlanOptions{Scheme::catmull_clark, 3, LoopBeta::loop, false});
-    std::printf("%-12s exact: depth %d, %d rows, %zu nodes; thesis depth 3: %d rows, %zu nodes\n", name, exact.plans.max_depth,
-                exact.stencils.n_rows(), exact.plans.nodes.size(), thesis.stencils.n_rows(), thesis.plans.nodes.size());
+    std::printf("%-12s exact: depth %d, %d rows, %zu nodes; thesis depth 3: %d rows, %zu nodes\n", name,
+                exact.plans.max_depth, exact.stencils.n_rows(), exact.plans.nodes.size(), thesis.stencils.n_rows(),
+                thesis.plans.nodes.size());
     EXPECT_LE(exact.plans.max_depth, 2) << name;
     EXPECT_LT(exact.stencils.n_rows(), thesis.stencils.n_rows()) << name;
-    const std::vector<Dual> points(size_t(exact.stencils.n_points()), Dual::Zero());  // the node kinds are what is looked at
+    const std::vector<Dual> points(size_t(exact.stencils.n_points()),
+                                   Dual::Zero());  // the node kinds are what is looked at
     int terminal = 0;
     for (int patch = 0; patch < exact.plans.n_patches(); ++patch)
       for (const double u : {0.1, 0.4, 0.6, 0.9})

@@ -106,11 +106,12 @@ TEST(Inference, DegenerateFaceAndBadBiasAreErrors) {
 // Isotropic: σ_i = s × the mean length of the edges at vertex i.
 TEST(Inference, IsotropicVarianceFollowsLocalEdgeLength) {
   // A strip of two quads, the second twice as long: edge lengths 1 and 2.
-  CovarianceMesh m = plain({{0, 0, 0}, {1, 0, 0}, {3, 0, 0}, {0, 1, 0}, {1, 1, 0}, {3, 1, 0}}, {{0, 1, 4, 3}, {1, 2, 5, 4}});
+  CovarianceMesh m =
+      plain({{0, 0, 0}, {1, 0, 0}, {3, 0, 0}, {0, 1, 0}, {1, 1, 0}, {3, 1, 0}}, {{0, 1, 4, 3}, {1, 2, 5, 4}});
   isotropic_covariances(m, 0.5);
-  EXPECT_LT(relative_error(m.covariance(0), 0.25 * Mat3::Identity()), 1e-12);                               // edges 1, 1
-  EXPECT_LT(relative_error(m.covariance(2), std::pow(0.5 * 1.5, 2) * Mat3::Identity()), 1e-12);             // edges 2, 1
-  EXPECT_LT(relative_error(m.covariance(1), std::pow(0.5 * 4.0 / 3.0, 2) * Mat3::Identity()), 1e-12);       // 1, 2, 1
+  EXPECT_LT(relative_error(m.covariance(0), 0.25 * Mat3::Identity()), 1e-12);                          // edges 1, 1
+  EXPECT_LT(relative_error(m.covariance(2), std::pow(0.5 * 1.5, 2) * Mat3::Identity()), 1e-12);        // edges 2, 1
+  EXPECT_LT(relative_error(m.covariance(1), std::pow(0.5 * 4.0 / 3.0, 2) * Mat3::Identity()), 1e-12);  // 1, 2, 1
   EXPECT_THROW(isotropic_covariances(m, 0.0), Error);
 }
 

@@ -41,7 +41,8 @@ std::vector<Case> cases() {
   }
   out.push_back({"open cylinder", with_random_covariances(test::open_cylinder_mesh(), 6), Scheme::catmull_clark});
   out.push_back({"triangle grid (Loop)", with_random_covariances(test::triangle_grid_mesh(4, 3), 5), Scheme::loop});
-  out.push_back({"triangle grid (Catmull-Clark)", with_random_covariances(test::triangle_grid_mesh(4, 3), 5), Scheme::catmull_clark});
+  out.push_back({"triangle grid (Catmull-Clark)", with_random_covariances(test::triangle_grid_mesh(4, 3), 5),
+                 Scheme::catmull_clark});
   return out;
 }
 
@@ -67,7 +68,8 @@ TEST(LimitNormals, EqualTheEvaluatorsAtEveryReferenceVertex) {
       ASSERT_TRUE(s) << c.name << " vertex " << k;
       worst = std::max(worst, degrees_between(s->normal, ref.normals[k]));
     }
-    std::printf("%-32s %6zu vertices, largest angle %.1e degrees, %d without masks\n", c.name.c_str(), ref.mesh.n_vertices(), worst, missing);
+    std::printf("%-32s %6zu vertices, largest angle %.1e degrees, %d without masks\n", c.name.c_str(),
+                ref.mesh.n_vertices(), worst, missing);
     EXPECT_LT(worst, 1e-8) << c.name;
     EXPECT_LE(missing, 16) << c.name;
   }
@@ -95,7 +97,8 @@ TEST(LimitNormals, AreTheNormalsOfTheRefinedSurface) {
       for (int f = 0; f < t.n_faces(); ++f) {
         const int o = t.offsets[size_t(f)], n = t.face_size(f);
         const auto at = [&](int i) { return fine.mesh.mean(size_t(t.verts[size_t(o + i % n)])); };
-        for (int i = 0; i < n; ++i) fan[size_t(t.verts[size_t(o + i)])] += (at(i + 1) - at(i)).cross(at(i + n - 1) - at(i));
+        for (int i = 0; i < n; ++i)
+          fan[size_t(t.verts[size_t(o + i)])] += (at(i + 1) - at(i)).cross(at(i + n - 1) - at(i));
       }
       for (int k = 0; k < coarse_topology.n_vertices; ++k) {  // vertex points keep their indices
         const VertexRole role = vertex_role(connectivity, k);
@@ -107,13 +110,16 @@ TEST(LimitNormals, AreTheNormalsOfTheRefinedSurface) {
         w = std::max(w, degrees_between(coarse.normals[size_t(k)], fan[size_t(k)]));
       }
     }
-    std::printf("%-32s largest angle to the fan, 2 and 4 levels down: inside %.2e, %.2e; on the boundary %.2e, %.2e degrees\n",
-                c.name.c_str(), worst[0][0], worst[0][1], worst[1][0], worst[1][1]);
+    std::printf(
+        "%-32s largest angle to the fan, 2 and 4 levels down: inside %.2e, %.2e; on the boundary %.2e, %.2e degrees\n",
+        c.name.c_str(), worst[0][0], worst[0][1], worst[1][0], worst[1][1]);
     EXPECT_LT(worst[0][1], 0.5) << c.name;
-    EXPECT_LE(worst[0][1], worst[0][0] / 10.0) << c.name << ": inside, the fan does not close in on the mask normal as h²";
+    EXPECT_LE(worst[0][1], worst[0][0] / 10.0)
+        << c.name << ": inside, the fan does not close in on the mask normal as h²";
     EXPECT_LT(worst[1][1], 1.0) << c.name;
     if (worst[1][1] > 0.01) {  // below that, cone-pointy's Loop boundary has not settled into its rate
-      EXPECT_LE(worst[1][1], worst[1][0] / 3.0) << c.name << ": on the boundary, the fan does not close in on the mask normal as h";
+      EXPECT_LE(worst[1][1], worst[1][0] / 3.0)
+          << c.name << ": on the boundary, the fan does not close in on the mask normal as h";
     }
   }
 }

@@ -44,18 +44,21 @@ TEST(LoopPatchBasis, IsTheLimitOfLoopSubdivisionOfTheNet) {
     const auto [i, j] = ij;
     for (const auto& tri : {std::array<std::pair<int, int>, 3>{{{i, j}, {i + 1, j}, {i, j + 1}}},
                             std::array<std::pair<int, int>, 3>{{{i + 1, j}, {i + 1, j + 1}, {i, j + 1}}}}) {
-      if (!has(tri[0].first, tri[0].second) || !has(tri[1].first, tri[1].second) || !has(tri[2].first, tri[2].second)) continue;
+      if (!has(tri[0].first, tri[0].second) || !has(tri[1].first, tri[1].second) || !has(tri[2].first, tri[2].second))
+        continue;
       for (const auto& x : tri) t.verts.push_back(id[x]);
       t.offsets.push_back(int(t.verts.size()));
     }
   }
-  const int net[12][2] = {{0, 0}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, -1}, {-1, 1}, {2, -1}, {2, 0}, {1, 1}, {0, 2}, {-1, 2}};
+  const int net[12][2] = {{0, 0},  {1, 0},  {0, 1}, {-1, 0}, {0, -1}, {1, -1},
+                          {-1, 1}, {2, -1}, {2, 0}, {1, 1},  {0, 2},  {-1, 2}};
   std::vector<Eigen::VectorXd> values(uv.size(), Eigen::VectorXd::Zero(12));
   for (int k = 0; k < 12; ++k) values[size_t(id[{net[k][0], net[k][1]}])](k) = 1.0;
   for (int level = 0; level < 3; ++level) {
     const MeshConnectivity c = connectivity_of(t);
     values = loop_values(t, c, values, LoopBeta::loop);
-    for (int e = 0; e < c.n_edges(); ++e) uv.push_back(0.5 * (uv[size_t(c.edge_verts[2 * size_t(e)])] + uv[size_t(c.edge_verts[2 * size_t(e) + 1])]));
+    for (int e = 0; e < c.n_edges(); ++e)
+      uv.push_back(0.5 * (uv[size_t(c.edge_verts[2 * size_t(e)])] + uv[size_t(c.edge_verts[2 * size_t(e) + 1])]));
     t = loop_topology(t, c);
   }
   const std::vector<Eigen::VectorXd> limit = loop_limit(t, connectivity_of(t), values, LoopBeta::loop);
@@ -94,14 +97,16 @@ TEST(LoopPlans, EqualTheReferenceAtEveryDyadicParameter) {
   };
   std::vector<Case> cases;
   cases.push_back({"icosahedron", test::with_random_covariances(test::icosahedron_mesh(), 1)});
-  for (int n = 3; n <= 16; ++n) cases.push_back({"bipyramid", test::with_random_covariances(test::bipyramid_mesh(n), unsigned(n))});
+  for (int n = 3; n <= 16; ++n)
+    cases.push_back({"bipyramid", test::with_random_covariances(test::bipyramid_mesh(n), unsigned(n))});
   cases.push_back({"open grid", test::with_random_covariances(test::triangle_grid_mesh(5, 4), 7)});
   for (const auto& name : {"cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder"})
     cases.push_back({name, make_sample(name)});
   for (const auto& c : cases) {
     const PlannedMesh p = loop_planned(c.mesh);
     const double error = error_against_reference(p, 6);
-    std::printf("%-14s %3zu vertices: max error at the reference's parameters %.1e of the diagonal\n", c.name, c.mesh.n_vertices(), error);
+    std::printf("%-14s %3zu vertices: max error at the reference's parameters %.1e of the diagonal\n", c.name,
+                c.mesh.n_vertices(), error);
     EXPECT_LT(error, 1e-9) << c.name << " with " << c.mesh.n_vertices() << " vertices";
   }
 }
@@ -166,8 +171,11 @@ TEST(LoopPlans, ScalingEveryCovarianceChangesNothingAndIsotropicIsPlainLoop) {
 
 // Independent Loop GPS implementation's apex heights (Loop's β, limit projection, apex at y = 1.5).
 TEST(LoopPlans, ConeApexesReachTheIndependentLimitHeights) {
-  const std::map<std::string, double> apex = {{"cone", 0.11744},         {"cone-pointy", 1.49744}, {"cone-concave", 1.26376},
-                                              {"cone-plateau", 1.49744}, {"cone-cylinder", 1.49744}};
+  const std::map<std::string, double> apex = {{"cone", 0.11744},
+                                              {"cone-pointy", 1.49744},
+                                              {"cone-concave", 1.26376},
+                                              {"cone-plateau", 1.49744},
+                                              {"cone-cylinder", 1.49744}};
   for (const auto& [name, height] : apex) {
     const PlannedMesh p = loop_planned(make_sample(name));
     // The apex is vertex 0, corner 0 of face 0.
@@ -211,7 +219,8 @@ TEST(LoopPlans, StayInsideThePositiveDefiniteCone) {
     for (int j = 0; j < 12; ++j) phantom = phantom || plans.nodes[size_t(root + 1 + j)] >= stencils.n_base;
     if (!phantom) continue;
     ++boundary_nets;
-    for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.3, 0.3}, {0.5, 0.0}, {0.1, 0.8}, {0.33, 0.6}}) {
+    for (const auto& [u, v] :
+         {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.3, 0.3}, {0.5, 0.0}, {0.1, 0.8}, {0.33, 0.6}}) {
       double w[12], wu[12], wv[12];
       loop_box_spline_basis(u, v, w, wu, wv);
       std::map<int, double> net;  // weight per base vertex
@@ -225,7 +234,8 @@ TEST(LoopPlans, StayInsideThePositiveDefiniteCone) {
         for (int k = stencils.offsets[size_t(r)]; k < stencils.offsets[size_t(r) + 1]; ++k)
           net[stencils.indices[size_t(k)]] += w[j] * stencils.weights[size_t(k)];
       }
-      for (const auto& [vertex, weight] : net) EXPECT_GE(weight, -1e-12) << "vertex " << vertex << " at " << u << ", " << v;
+      for (const auto& [vertex, weight] : net)
+        EXPECT_GE(weight, -1e-12) << "vertex " << vertex << " at " << u << ", " << v;
     }
   }
   EXPECT_GT(boundary_nets, 10);

@@ -31,30 +31,46 @@ TEST(MeshImport, ObjWithSlashesAndNegativeIndices) {
   EXPECT_EQ(m.n_vertices(), 4u);
   EXPECT_EQ(m.n_faces(), 1u);
   EXPECT_EQ(m.mesh.valence(PolyMesh::FaceHandle(0)), 4u);
-  EXPECT_NE(error_of([] { parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "b.obj"); }).find("b.obj: line 4: vertex index 9 is out of range"), std::string::npos);
-  EXPECT_NE(error_of([] { parse_obj("v 0 0 0\nv 1 0 0\nf 1 2\n", "c.obj"); }).find("line 3: a face needs at least 3 vertices"), std::string::npos);
-  EXPECT_NE(error_of([] { parse_obj("v 0 nan 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "d.obj"); }).find("vertex 0 has a position that is not finite"), std::string::npos);
+  EXPECT_NE(error_of([] {
+              parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "b.obj");
+            }).find("b.obj: line 4: vertex index 9 is out of range"),
+            std::string::npos);
+  EXPECT_NE(error_of([] {
+              parse_obj("v 0 0 0\nv 1 0 0\nf 1 2\n", "c.obj");
+            }).find("line 3: a face needs at least 3 vertices"),
+            std::string::npos);
+  EXPECT_NE(error_of([] {
+              parse_obj("v 0 nan 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "d.obj");
+            }).find("vertex 0 has a position that is not finite"),
+            std::string::npos);
   EXPECT_NE(error_of([] { parse_obj("", "e.obj"); }).find("e.obj: the file is empty"), std::string::npos);
 }
 
 TEST(MeshImport, OffWithCommentsAndColours) {
-  const auto m = parse_off("OFF\n# tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 255 0 0\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", "t.off");
+  const auto m = parse_off(
+      "OFF\n# tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 255 0 0\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", "t.off");
   EXPECT_EQ(m.n_vertices(), 4u);
   EXPECT_EQ(m.n_faces(), 4u);
-  EXPECT_NE(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "x.off"); }).find("refers to vertex 5"), std::string::npos);
+  EXPECT_NE(
+      error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "x.off"); }).find("refers to vertex 5"),
+      std::string::npos);
   EXPECT_NE(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n", "y.off"); }).find("truncated"), std::string::npos);
 }
 
 // COFF/NOFF carry colours or normals after each vertex position: they are skipped.
 TEST(MeshImport, OffVariantsWithPerVertexValues) {
-  const auto m = parse_off("COFF\n4 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n1 1 0 0 0 255 255\n0 1 0 9 9 9 9\n4 0 1 2 3\n", "c.off");
+  const auto m = parse_off(
+      "COFF\n4 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n1 1 0 0 0 255 255\n0 1 0 9 9 9 9\n4 0 1 2 3\n", "c.off");
   EXPECT_EQ(m.n_vertices(), 4u);
   EXPECT_EQ(m.n_faces(), 1u);
   EXPECT_EQ(m.mean(2), Vec3(1, 1, 0));
-  EXPECT_NE(error_of([] { parse_off("4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n", "d.off"); }).find("d.off: line 1: 4OFF"),
+  EXPECT_NE(error_of([] {
+              parse_off("4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n", "d.off");
+            }).find("d.off: line 1: 4OFF"),
             std::string::npos);
-  EXPECT_NE(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "e.off"); }).find("face 0 has fewer than 3"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "e.off"); }).find("face 0 has fewer than 3"),
+      std::string::npos);
 }
 
 // write_mesh(.obj) then read_mesh: positions exact (17 significant digits), faces in order.
@@ -92,9 +108,11 @@ TEST(MeshImport, StlWithNonFiniteCornerIsAnError) {
   const float tri[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, std::nanf(""), 1, 0};
   binary.append(reinterpret_cast<const char*>(tri), sizeof tri);
   binary.append(2, '\0');
-  EXPECT_NE(error_of([&] { parse_stl(binary, "n.stl"); }).find("n.stl: triangle 0 has a corner that is not finite"), std::string::npos);
-  EXPECT_NE(error_of([] { parse_stl("solid x\nfacet normal 0 0 1\nvertex 0 0 0\nvertex 1 0 0\nendsolid\n", "t.stl"); })
-                .find("t.stl: a facet does not have three vertices"),
+  EXPECT_NE(error_of([&] { parse_stl(binary, "n.stl"); }).find("n.stl: triangle 0 has a corner that is not finite"),
+            std::string::npos);
+  EXPECT_NE(error_of([] {
+              parse_stl("solid x\nfacet normal 0 0 1\nvertex 0 0 0\nvertex 1 0 0\nendsolid\n", "t.stl");
+            }).find("t.stl: a facet does not have three vertices"),
             std::string::npos);
 }
 
@@ -133,8 +151,9 @@ TEST(MeshImport, ReadMeshInfersCovariancesForPlainFiles) {
 // A planar mesh: the smallest axis of every inferred covariance is the plane's normal (Eq. 16–17).
 TEST(Inference, PlanarMeshGivesFlatCovariancesAlongTheNormal) {
   test::TempDir dir;
-  CovarianceMesh m = read_mesh(dir.write("g.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1.2 0\n"
-                                                  "f 1 2 5 4\nf 2 3 6 5\n"));
+  CovarianceMesh m = read_mesh(dir.write("g.obj",
+                                         "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1.2 0\n"
+                                         "f 1 2 5 4\nf 2 3 6 5\n"));
   for (double bias : {0.01, 0.05, 0.2}) {
     infer_covariances(m, bias);
     for (const Mat3& c : m.covariances) {

@@ -50,7 +50,8 @@ void check_adjacency(const std::string& name, const CovarianceMesh& mesh) {
       const Ends e = ends(plans, p, k);
       const EdgeNeighbour a = edge_neighbour(plans, p, k, 0), b = edge_neighbour(plans, p, k, 1);
       // Base-mesh boundary edges (the points are base vertices there) have no neighbour; every other edge has.
-      const bool on_boundary = e.from < int(mesh.n_vertices()) && e.to < int(mesh.n_vertices()) && open.count(std::minmax(e.from, e.to));
+      const bool on_boundary =
+          e.from < int(mesh.n_vertices()) && e.to < int(mesh.n_vertices()) && open.count(std::minmax(e.from, e.to));
       EXPECT_EQ(a.patch < 0, on_boundary) << name << " patch " << p << " edge " << k;
       if (a.patch < 0) continue;
       ++linked;
@@ -92,12 +93,14 @@ void check_adjacency(const std::string& name, const CovarianceMesh& mesh) {
     for (int c = 0; c < n; ++c) {
       const int32_t point = plans.patch_corner_points[size_t(n * p + c)];
       first.try_emplace(point, p);
-      const int owner = plans.corner_owners[size_t(2 * (n * p + c))], corner = plans.corner_owners[size_t(2 * (n * p + c) + 1)];
+      const int owner = plans.corner_owners[size_t(2 * (n * p + c))],
+                corner = plans.corner_owners[size_t(2 * (n * p + c) + 1)];
       EXPECT_EQ(owner, first[point]) << name;
       EXPECT_EQ(plans.patch_corner_points[size_t(n * owner + corner)], point) << name;
     }
   EXPECT_GT(linked, 0) << name;
-  std::printf("%-14s %5d patches: %5d linked edges, %3d whole quad edges beside halves\n", name.c_str(), plans.n_patches(), linked, t_junctions);
+  std::printf("%-14s %5d patches: %5d linked edges, %3d whole quad edges beside halves\n", name.c_str(),
+              plans.n_patches(), linked, t_junctions);
 }
 
 TEST(PatchAdjacency, EveryInnerEdgeHasItsNeighbourAndEveryCornerItsOwner) {

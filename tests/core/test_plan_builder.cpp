@@ -91,8 +91,10 @@ TEST(PlanBuilder, ErrorNearExtraordinaryVerticesFallsWithDepth) {
     double previous = 1;
     for (int depth = 1; depth <= 3; ++depth) {
       const double error = compare_with_reference(PlannedMesh(make_sample(name), depth), 5).all;
-      if (name == "valence4") EXPECT_LT(error, 1e-12);  // no extraordinary vertex: exact at every depth
-      else EXPECT_LT(error, previous) << name << " depth " << depth;
+      if (name == "valence4")
+        EXPECT_LT(error, 1e-12);  // no extraordinary vertex: exact at every depth
+      else
+        EXPECT_LT(error, previous) << name << " depth " << depth;
       previous = error;
     }
     EXPECT_LT(previous, 7e-3) << name;
@@ -104,39 +106,45 @@ TEST(PlanBuilder, ErrorNearExtraordinaryVerticesFallsWithDepth) {
 // plans and the thesis' plans of depth 3.
 TEST(PlanBuilder, NeighbouringPatchesAreWatertight) {
   for (const bool exact : {true, false})
-  for (const char* name : {"wirecube", "valence9", "cylinder", "cone-pointy", "grid", "pawn", "prism", "open-cylinder"}) {
-    const std::string n = name;
-    const CovarianceMesh mesh = n == "prism" ? test::prism_mesh() : n == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name, 64);
-    const PlannedMesh p(with_random_covariances(mesh, 7), PlanOptions{Scheme::catmull_clark, 3, LoopBeta::loop, exact});
-    const auto& plans = p.tables.plans;
-    const double diag = bounding_box_diagonal(p.mesh);
-    // The first evaluation at parameter s/32 of each mesh edge (lower point first).
-    std::map<std::tuple<int, int, int>, Vec3> first_side;
-    int shared = 0, t_junctions = 0;
-    for (int patch = 0; patch < plans.n_patches(); ++patch)
-      for (int k = 0; k < 4; ++k) {
-        const PatchEdge e = patch_edge(plans, patch, k);
-        t_junctions += e.part == PatchEdgePart::whole_beside_halves;
-        const bool half = e.part == PatchEdgePart::first_half || e.part == PatchEdgePart::second_half;
-        for (int i = 0; i <= 16; ++i) {
-          const double t = i / 16.0;
-          const auto [u, v] = std::array<std::pair<double, double>, 4>{
-              std::pair{t, 0.0}, std::pair{1.0, t}, std::pair{1.0 - t, 1.0}, std::pair{0.0, 1.0 - t}}[size_t(k)];
-          int s = half ? i + (e.part == PatchEdgePart::second_half ? 16 : 0) : 2 * i;  // of 32, from `from`
-          if (e.from > e.to) s = 32 - s;
-          const auto sample = evaluate_patch(plans, p.points, patch, u, v);
-          ASSERT_TRUE(sample);
-          const auto [it, added] = first_side.try_emplace({std::min(e.from, e.to), std::max(e.from, e.to), s}, sample->position);
-          if (added) continue;
-          ++shared;
-          EXPECT_LT((sample->position - it->second).norm(), 1e-12 * diag) << name << " patch " << patch << " edge " << k;
+    for (const char* name :
+         {"wirecube", "valence9", "cylinder", "cone-pointy", "grid", "pawn", "prism", "open-cylinder"}) {
+      const std::string n = name;
+      const CovarianceMesh mesh = n == "prism"           ? test::prism_mesh()
+                                  : n == "open-cylinder" ? test::open_cylinder_mesh()
+                                                         : make_sample(name, 64);
+      const PlannedMesh p(with_random_covariances(mesh, 7),
+                          PlanOptions{Scheme::catmull_clark, 3, LoopBeta::loop, exact});
+      const auto& plans = p.tables.plans;
+      const double diag = bounding_box_diagonal(p.mesh);
+      // The first evaluation at parameter s/32 of each mesh edge (lower point first).
+      std::map<std::tuple<int, int, int>, Vec3> first_side;
+      int shared = 0, t_junctions = 0;
+      for (int patch = 0; patch < plans.n_patches(); ++patch)
+        for (int k = 0; k < 4; ++k) {
+          const PatchEdge e = patch_edge(plans, patch, k);
+          t_junctions += e.part == PatchEdgePart::whole_beside_halves;
+          const bool half = e.part == PatchEdgePart::first_half || e.part == PatchEdgePart::second_half;
+          for (int i = 0; i <= 16; ++i) {
+            const double t = i / 16.0;
+            const auto [u, v] = std::array<std::pair<double, double>, 4>{
+                std::pair{t, 0.0}, std::pair{1.0, t}, std::pair{1.0 - t, 1.0}, std::pair{0.0, 1.0 - t}}[size_t(k)];
+            int s = half ? i + (e.part == PatchEdgePart::second_half ? 16 : 0) : 2 * i;  // of 32, from `from`
+            if (e.from > e.to) s = 32 - s;
+            const auto sample = evaluate_patch(plans, p.points, patch, u, v);
+            ASSERT_TRUE(sample);
+            const auto [it, added] =
+                first_side.try_emplace({std::min(e.from, e.to), std::max(e.from, e.to), s}, sample->position);
+            if (added) continue;
+            ++shared;
+            EXPECT_LT((sample->position - it->second).norm(), 1e-12 * diag)
+                << name << " patch " << patch << " edge " << k;
+          }
         }
+      EXPECT_GT(shared, 10) << name;
+      if (std::string(name) == "pawn") {
+        EXPECT_EQ(t_junctions, 2 * 32) << name;
       }
-    EXPECT_GT(shared, 10) << name;
-    if (std::string(name) == "pawn") {
-      EXPECT_EQ(t_junctions, 2 * 32) << name;
     }
-  }
 }
 
 // A quad stays one patch beside other faces; a face of n sides is n patches.
@@ -193,7 +201,8 @@ TEST(PlanBuilder, EvaluatedGaussiansStayValid) {
     const PlannedMesh p(make_sample(name, 36), 3);
     for (int patch = 0; patch < p.tables.plans.n_patches(); ++patch)
       for (int i = 0; i <= 8; ++i)
-        for (int j = 0; j <= 8; ++j) EXPECT_TRUE(evaluate_patch(p.tables.plans, p.points, patch, i / 8.0, j / 8.0)) << name;
+        for (int j = 0; j <= 8; ++j)
+          EXPECT_TRUE(evaluate_patch(p.tables.plans, p.points, patch, i / 8.0, j / 8.0)) << name;
   }
   // Net weights: evaluate with q = unit vectors per base vertex (one coordinate of a 9-vector).
   const PlannedMesh grid(make_sample("grid", 16), 3);
@@ -232,7 +241,9 @@ TEST(PlanBuilder, IsotropicCovariancesGivePlainCatmullClarkAndScalingChangesNoth
     evaluate_dual(p.tables.plans, plain_points, patch, s, t, q, qu, qv);
     EXPECT_LT((evaluate_patch(p.tables.plans, p.points, patch, s, t)->position - q.tail<3>()).norm(), 1e-12);
     EXPECT_LT((evaluate_patch(a.tables.plans, a.points, patch, s, t)->position -
-               evaluate_patch(b.tables.plans, b.points, patch, s, t)->position).norm(), 1e-12);
+               evaluate_patch(b.tables.plans, b.points, patch, s, t)->position)
+                  .norm(),
+              1e-12);
   }
 }
 
@@ -244,7 +255,9 @@ TEST(PlanBuilder, AnalyticNormalsMatchFiniteDifferences) {
     const int patch = int(u(rng) * p.tables.plans.n_patches());
     const double s = u(rng), t = u(rng), h = 1e-6;
     const auto c = evaluate_patch(p.tables.plans, p.points, patch, s, t);
-    const auto su = [&](double ds, double dt) { return evaluate_patch(p.tables.plans, p.points, patch, s + ds, t + dt)->position; };
+    const auto su = [&](double ds, double dt) {
+      return evaluate_patch(p.tables.plans, p.points, patch, s + ds, t + dt)->position;
+    };
     const Vec3 du = (su(h, 0) - su(-h, 0)) / (2 * h), dv = (su(0, h) - su(0, -h)) / (2 * h);
     EXPECT_LT((c->du - du).norm(), 1e-5 * (1 + du.norm()));
     EXPECT_LT((c->dv - dv).norm(), 1e-5 * (1 + dv.norm()));

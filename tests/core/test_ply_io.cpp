@@ -106,7 +106,8 @@ TEST(PlyIo, MalformedFilesGiveOneLineErrors) {
       {"header.ply", "plx\n", "not a PLY file"},
       {"format.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n", "unknown format"},
       {"noend.ply", "ply\nformat ascii 1.0\nelement vertex 1\n", "end_header"},
-      {"proptype.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n", "unknown property type"},
+      {"proptype.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n",
+       "unknown property type"},
       {"index.ply", header("ascii", 3, 1) + tri + "3 0 1 7\n", "refers to vertex 7"},
       {"small_face.ply", header("ascii", 3, 1) + tri + "2 0 1\n", "face 0 has 2 vertices"},
       {"nan.ply", header("ascii", 3, 1) + "0 nan 0 1 0 0 1 0 1\n" + tri.substr(tri.find('\n') + 1) + "3 0 1 2\n",
@@ -117,7 +118,8 @@ TEST(PlyIo, MalformedFilesGiveOneLineErrors) {
        "vertex 2 has a covariance that is not symmetric positive definite"},
       {"underflow.ply", header("ascii", 3, 1) + "0 1e-400 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n",
        "line 16: '1e-400' underflows"},
-      {"overflow.ply", header("ascii", 3, 1) + "0 -1e400 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n", "'-1e400' overflows"},
+      {"overflow.ply", header("ascii", 3, 1) + "0 -1e400 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n",
+       "'-1e400' overflows"},
       {"subnormal.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 1e-310 0 0 1e-310 0 1e-310\n3 0 1 2\n",
        "vertex 2 has a covariance eigenvalue 1e-310 below 1e-100 (subnormal: underflows)"},
       {"tiny.ply", header("ascii", 3, 1) + v0 + "1 0 0 1e-200 0 0 1 0 1\n" + v1 + "3 0 1 2\n",
@@ -126,15 +128,17 @@ TEST(PlyIo, MalformedFilesGiveOneLineErrors) {
        "vertex 2 has a covariance eigenvalue 1e+308 above 1e+100"},
       {"far.ply", header("ascii", 3, 1) + v0 + "1e308 0 0 1 0 0 1 0 1\n-1e308 1 0 1 0 0 1 0 1\n3 0 1 2\n",
        "vertex 1 has a coordinate 1e+308 beyond"},
-      {"word.ply", header("ascii", 3, 1) + "0 zero 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n", "line 16: 'zero' is not a number"},
+      {"word.ply", header("ascii", 3, 1) + "0 zero 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n",
+       "line 16: 'zero' is not a number"},
       {"short_ascii.ply", header("ascii", 3, 1) + tri, "truncated"},
       {"long_line.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 1 0 0 1 0 1 7\n3 0 1 2\n", "line 18: more values"},
       {"truncated.ply", header("binary_little_endian", 4, 1) + binary_vertices(4).substr(0, 200), "truncated"},
-      {"truncated_faces.ply", header("binary_little_endian", 3, 1) + binary_vertices(3) + std::string("\x03\x00\x00", 3),
-       "truncated"},
+      {"truncated_faces.ply",
+       header("binary_little_endian", 3, 1) + binary_vertices(3) + std::string("\x03\x00\x00", 3), "truncated"},
       {"huge.ply", header("binary_little_endian", 2000000000, 1) + binary_vertices(3), "more than the file holds"},
       {"nonmanifold.ply",
-       header("ascii", 5, 3) + tri + "0 -1 0 1 0 0 1 0 1\n0 0 1 1 0 0 1 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n", "non-manifold"},
+       header("ascii", 5, 3) + tri + "0 -1 0 1 0 0 1 0 1\n0 0 1 1 0 0 1 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n",
+       "non-manifold"},
   };
   test::TempDir dir;
   for (const auto& c : cases) {
@@ -185,7 +189,8 @@ TEST(PlyIo, WritingRefusesWhatReadingWouldRefuse) {
     write_mesh(dir.file("m.ply"), m, true);
     ADD_FAILURE() << "written";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("m.ply: not written: vertex 3 has a covariance eigenvalue"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("m.ply: not written: vertex 3 has a covariance eigenvalue"), std::string::npos)
+        << e.what();
   }
   m.covariances[3] = Mat3::Identity();
   m.set_mean(5, Vec3(0, std::nan(""), 0));
@@ -201,7 +206,8 @@ TEST(PlyIo, HugePositionsInImportsAreNamedAsSuch) {
     read_mesh(path);
     ADD_FAILURE() << "accepted";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("far.obj: vertex 0 has a coordinate 1e+308 beyond"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("far.obj: vertex 0 has a coordinate 1e+308 beyond"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -217,15 +223,19 @@ TEST(PlyIo, CorruptListLengthsAndIndicesAreErrors) {
       {"nan_index.ply", h + "3 0 1 nan\n", "face 0 refers to vertex nan"},
       {"frac_index.ply", h + "3 0 1 1.5\n", "face 0 refers to vertex 1.5"},
       {"neg_index.ply", h + "3 0 -1 2\n", "face 0 refers to vertex -1"},
-      {"two_vertex.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
-                         "element vertex 0\nproperty float x\nproperty float y\nproperty float z\nend_header\n",
+      {"two_vertex.ply",
+       "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+       "element vertex 0\nproperty float x\nproperty float y\nproperty float z\nend_header\n",
        "line 7: a second vertex element"},
       {"no_xyz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n",
        "lacks x, y or z"},
-      {"some_cov.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
-                       "property float cxx\nend_header\n0 0 0 1\n", "only some of"},
+      {"some_cov.ply",
+       "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+       "property float cxx\nend_header\n0 0 0 1\n",
+       "only some of"},
       {"no_format.ply", "ply\nelement vertex 0\nend_header\n", "no format line"},
-      {"huge_binary_list.ply", header("binary_little_endian", 3, 1) + binary_vertices(3) + std::string("\xff\x00\x00\x00\x00", 5),
+      {"huge_binary_list.ply",
+       header("binary_little_endian", 3, 1) + binary_vertices(3) + std::string("\xff\x00\x00\x00\x00", 5),
        "list length 255 exceeds the data left (truncated)"},
   };
   for (const auto& c : cases) {
@@ -259,7 +269,8 @@ TEST(PlyIo, RoundTripOfAFaceWithMoreThan255Corners) {
     p.emplace_back(std::cos(i * 0.021), std::sin(i * 0.021), 0);
     face.push_back(i);
   }
-  const CovarianceMesh m = make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.01 * Mat3::Identity()), {face}, "ngon");
+  const CovarianceMesh m =
+      make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.01 * Mat3::Identity()), {face}, "ngon");
   test::TempDir dir;
   for (const bool binary : {false, true}) {
     const std::string path = dir.file(binary ? "b.ply" : "a.ply");
@@ -277,7 +288,8 @@ TEST(PlyIo, TruncatedAndCorruptedFilesNeverCrash) {
     write_ply(out, m, binary);
     const std::string data = out.str();
     // (An ASCII file cut just before its final newline is still complete.)
-    for (size_t n = 0; n + (binary ? 0 : 1) < data.size(); ++n) EXPECT_THROW(parse_ply(data.substr(0, n), "cut.ply"), Error) << n;
+    for (size_t n = 0; n + (binary ? 0 : 1) < data.size(); ++n)
+      EXPECT_THROW(parse_ply(data.substr(0, n), "cut.ply"), Error) << n;
     std::mt19937 rng(binary ? 7 : 8);
     for (int trial = 0; trial < 2000; ++trial) {
       std::string bad = data;

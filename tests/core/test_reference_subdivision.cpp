@@ -60,10 +60,14 @@ TEST(ReferenceSubdivision, ScalingEveryCovarianceChangesNothing) {
 double bspline(int i, double t) {
   const double s = 1 - t;
   switch (i) {
-    case 0: return s * s * s / 6;
-    case 1: return (3 * t * t * t - 6 * t * t + 4) / 6;
-    case 2: return (-3 * t * t * t + 3 * t * t + 3 * t + 1) / 6;
-    default: return t * t * t / 6;
+    case 0:
+      return s * s * s / 6;
+    case 1:
+      return (3 * t * t * t - 6 * t * t + 4) / 6;
+    case 2:
+      return (-3 * t * t * t + 3 * t * t + 3 * t + 1) / 6;
+    default:
+      return t * t * t / 6;
   }
 }
 
@@ -121,10 +125,12 @@ TEST(ReferenceSubdivision, BoundariesFollowTheCubicBSplineCurveAndCornersStay) {
   CovarianceMesh mesh = test::grid_mesh(3, 3);
   randomize_covariances(mesh, 13);
   const auto r = subdivide(mesh, {Scheme::catmull_clark, 2, true});
-  for (const int corner : {0, 3, 12, 15}) EXPECT_LT((r.mesh.mean(size_t(corner)) - mesh.mean(size_t(corner))).norm(), 1e-13);
+  for (const int corner : {0, 3, 12, 15})
+    EXPECT_LT((r.mesh.mean(size_t(corner)) - mesh.mean(size_t(corner))).norm(), 1e-13);
   // Boundary vertex 1 (between 0 and 2 on the bottom row): limit (a + 4v + b)/6 in 9D.
   const Dual q = (to_dual(mesh.mean(0), mesh.covariance(0)) + 4.0 * to_dual(mesh.mean(1), mesh.covariance(1)) +
-                  to_dual(mesh.mean(2), mesh.covariance(2))) / 6.0;
+                  to_dual(mesh.mean(2), mesh.covariance(2))) /
+                 6.0;
   EXPECT_LT((from_dual(q)->mean - r.mesh.mean(1)).norm(), 1e-12);
 }
 

@@ -96,14 +96,14 @@ double height_at(const std::string& name, double r0, double r1) {
 TEST(Samples, ConeVariantsBehaveAsThePaperShows) {
   const double iso = height_at("cone", 0, 1e-9);
   EXPECT_NEAR(iso, 0.0, 1e-9);  // Warren's Loop limit of the apex: the plain cone is far below 1.5
-  EXPECT_GT(height_at("cone-pointy", 0, 1e-9), 1.49);  // a sharp tip at the apex
+  EXPECT_GT(height_at("cone-pointy", 0, 1e-9), 1.49);   // a sharp tip at the apex
   EXPECT_LT(height_at("cone-pointy", 0.6, 1.6), -1.0);  // ... on a low, wide base
   const double concave_tip = height_at("cone-concave", 0, 1e-9);
   EXPECT_GT(concave_tip, iso + 1.0);
   EXPECT_LT(height_at("cone-concave", 0.2, 0.4), 0.5 * (concave_tip - 1.5));  // flanks below the straight line
-  EXPECT_GT(height_at("cone-plateau", 0.0, 0.8), 1.49);  // flat on top
+  EXPECT_GT(height_at("cone-plateau", 0.0, 0.8), 1.49);                       // flat on top
   EXPECT_GT(height_at("cone-plateau", 0.6, 0.8), 1.4);
-  EXPECT_LT(height_at("cone-plateau", 1.6, 1.8), 1.4);  // ... rounding off before the rim
+  EXPECT_LT(height_at("cone-plateau", 1.6, 1.8), 1.4);    // ... rounding off before the rim
   EXPECT_GT(height_at("cone-cylinder", 1.6, 1.8), 1.45);  // flat out to the rim: vertical sides
 }
 

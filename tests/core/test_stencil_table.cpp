@@ -31,7 +31,8 @@ TEST_P(StencilTable, IncrementalUpdateEqualsFullApply) {
   size_t n_dependents = 0;
   for (const int v : changed) n_dependents += size_t(deps.offsets[size_t(v) + 1] - deps.offsets[size_t(v)]);
   EXPECT_GT(n_dependents, 0u);
-  EXPECT_EQ(4 * n_dependents < size_t(p.tables.stencils.n_rows()), sparse) << "the update path this case is meant to take";
+  EXPECT_EQ(4 * n_dependents < size_t(p.tables.stencils.n_rows()), sparse)
+      << "the update path this case is meant to take";
   std::vector<Dual> points = p.points;
   for (const int v : changed) {
     Mat3 c = p.mesh.covariance(size_t(v));
@@ -44,7 +45,6 @@ TEST_P(StencilTable, IncrementalUpdateEqualsFullApply) {
   for (size_t i = 0; i < full.size(); ++i) EXPECT_LT((points[i] - full[i]).norm(), 1e-12 * (1 + full[i].norm())) << i;
   EXPECT_NE(points, p.points);
 }
-
 
 // The planned surface's own update after an edit equals a planned surface built anew from the
 // edited mesh, for Catmull-Clark and Loop, and its rows_reading lists exactly the rows whose points

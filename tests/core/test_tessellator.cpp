@@ -14,7 +14,8 @@ namespace {
 int open_edges(const TriangleMesh& t) {
   std::map<std::pair<int, int>, int> uses;
   for (const auto& tri : t.triangles)
-    for (int k = 0; k < 3; ++k) ++uses[{std::min(tri[size_t(k)], tri[size_t((k + 1) % 3)]), std::max(tri[size_t(k)], tri[size_t((k + 1) % 3)])}];
+    for (int k = 0; k < 3; ++k)
+      ++uses[{std::min(tri[size_t(k)], tri[size_t((k + 1) % 3)]), std::max(tri[size_t(k)], tri[size_t((k + 1) % 3)])}];
   int open = 0;
   for (const auto& [edge, n] : uses) open += n == 1;
   return open;

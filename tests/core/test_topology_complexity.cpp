@@ -26,7 +26,8 @@ struct Shape {
 Shape fan(int n) {  // a disc: n triangles around vertex 0, in shuffled order
   Shape s;
   s.points.emplace_back(0, 0, 0);
-  for (int i = 0; i < n; ++i) s.points.emplace_back(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0.1 * std::sin(7.0 * i));
+  for (int i = 0; i < n; ++i)
+    s.points.emplace_back(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0.1 * std::sin(7.0 * i));
   for (int i = 0; i < n; ++i) s.faces.push_back({0, 1 + i, 1 + (i + 1) % n});
   std::shuffle(s.faces.begin(), s.faces.end(), std::mt19937(1));
   return s;
@@ -83,7 +84,8 @@ TEST(TopologyComplexity, LongFaceIsLinear) {
 TEST(TopologyComplexity, PlansRefuseValencesBeyondTheirBoundAtOnce) {
   for (const auto& [shape, what] : {std::pair{fan(100000), std::string("vertex 0 has more than 256 faces")},
                                     std::pair{polygon(300000), std::string("face 0 has 300000 sides")}}) {
-    const CovarianceMesh m = make_covariance_mesh(shape.points, std::vector<Mat3>(shape.points.size(), Mat3::Identity()), shape.faces);
+    const CovarianceMesh m =
+        make_covariance_mesh(shape.points, std::vector<Mat3>(shape.points.size(), Mat3::Identity()), shape.faces);
     try {
       build_plans(topology_of(m.mesh), 2);
       ADD_FAILURE() << "no error for " << what;
@@ -91,7 +93,9 @@ TEST(TopologyComplexity, PlansRefuseValencesBeyondTheirBoundAtOnce) {
       EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
     }
   }
-  EXPECT_NO_THROW(build_plans(topology_of(make_covariance_mesh(fan(64).points, std::vector<Mat3>(65, Mat3::Identity()), fan(64).faces).mesh), 2));
+  EXPECT_NO_THROW(build_plans(
+      topology_of(make_covariance_mesh(fan(64).points, std::vector<Mat3>(65, Mat3::Identity()), fan(64).faces).mesh),
+      2));
 }
 
 }  // namespace

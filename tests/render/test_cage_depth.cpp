@@ -72,7 +72,8 @@ TEST_F(CageDepth, EdgesBehindTheSurfaceAreFaintAndThoseInFrontFull) {
   ASSERT_TRUE(back && front);
   EXPECT_GT(cage_strength(s, *front), 0.97f) << "the edges in front are drawn at full strength";
   EXPECT_GT(cage_strength(s, *back), 0.5f * kHiddenCageAlpha) << "the hidden edges still show";
-  EXPECT_LT(cage_strength(s, *back), 1.5f * kHiddenCageAlpha) << "the hidden edges are drawn through the surface at full strength";
+  EXPECT_LT(cage_strength(s, *back), 1.5f * kHiddenCageAlpha)
+      << "the hidden edges are drawn through the surface at full strength";
   // The faint lines are blended in colour only: the image stays opaque (no see-through lines once
   // written to a file or shown over another background).
   for (int y = 0; y < kSize; ++y)

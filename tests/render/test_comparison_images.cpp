@@ -67,8 +67,9 @@ struct Shown {
 
 Shown shown(const Aovs& gpu, const Aovs& reference, AovKind kind, const Camera& camera) {
   Shown s;
-  const Image d = kind == AovKind::position ? difference_image(gpu.position, reference.position, kind, 200.0, 0.0, s.stats)
-                                            : difference_image(gpu.normal, reference.normal, kind, 5000.0, 0.0, s.stats);
+  const Image d = kind == AovKind::position
+                      ? difference_image(gpu.position, reference.position, kind, 200.0, 0.0, s.stats)
+                      : difference_image(gpu.normal, reference.normal, kind, 5000.0, 0.0, s.stats);
   int lit = 0, visible = 0;
   for (size_t i = 0; i < d.pixels.size(); i += 3) {
     int brightest = 0;
@@ -77,11 +78,13 @@ Shown shown(const Aovs& gpu, const Aovs& reference, AovKind kind, const Camera& 
     visible += brightest >= 8;
     if (brightest >= 8) {
       const size_t n = gpu.normal.channels * (i / 3), p = gpu.position.channels * (i / 3);
-      const int node_kind = int(gpu.normal.pixels[n + 3]) - 2;  // shade_frag.glsl: 2 regular, 3 terminal, 4 extraordinary
+      const int node_kind =
+          int(gpu.normal.pixels[n + 3]) - 2;  // shade_frag.glsl: 2 regular, 3 terminal, 4 extraordinary
       if (node_kind >= 0 && node_kind < 3) ++s.visible_by_kind[node_kind];
       const glm::vec3 normal(gpu.normal.pixels[n], gpu.normal.pixels[n + 1], gpu.normal.pixels[n + 2]);
       const glm::vec3 position(gpu.position.pixels[p], gpu.position.pixels[p + 1], gpu.position.pixels[p + 2]);
-      s.visible_edge_on += std::abs(glm::dot(normal, glm::normalize(camera.eye() - position))) < std::sin(glm::radians(15.0f));
+      s.visible_edge_on +=
+          std::abs(glm::dot(normal, glm::normalize(camera.eye() - position))) < std::sin(glm::radians(15.0f));
     }
     s.brightest = std::max(s.brightest, brightest);
   }
@@ -96,11 +99,15 @@ void expect_black(const char* name, const Aovs& gpu, const Aovs& reference, cons
   for (const AovKind kind : {AovKind::position, AovKind::normal}) {
     const Shown s = shown(gpu, reference, kind, camera);
     const char* what = kind == AovKind::position ? "position x200" : "normal x5000";
-    std::printf("%-14s %-14s %6d pixels, %6.3f%% lit, %6.3f%% at 8/255, brightest %3d/255, largest difference %.1e, mean %.1e\n", name,
-                what, s.stats.covered, 100.0 * s.lit, 100.0 * s.visible, s.brightest, s.stats.max, s.stats.mean);
+    std::printf(
+        "%-14s %-14s %6d pixels, %6.3f%% lit, %6.3f%% at 8/255, brightest %3d/255, largest difference %.1e, mean "
+        "%.1e\n",
+        name, what, s.stats.covered, 100.0 * s.lit, 100.0 * s.visible, s.brightest, s.stats.max, s.stats.mean);
     if (s.visible > 0)
-      std::printf("%-14s %-14s at 8/255: %d regular, %d terminal, %d extraordinary node pixels; %d seen within 15 deg of edge-on\n",
-                  name, what, s.visible_by_kind[0], s.visible_by_kind[1], s.visible_by_kind[2], s.visible_edge_on);
+      std::printf(
+          "%-14s %-14s at 8/255: %d regular, %d terminal, %d extraordinary node pixels; %d seen within 15 deg of "
+          "edge-on\n",
+          name, what, s.visible_by_kind[0], s.visible_by_kind[1], s.visible_by_kind[2], s.visible_edge_on);
     EXPECT_GT(s.stats.covered, kSize * kSize / 20) << name;
     EXPECT_LE(s.stats.coverage_mismatch, s.stats.covered / 10000) << name << " " << what;
     EXPECT_LE(s.visible, kind == AovKind::normal ? normal_share : 0.01) << name << " " << what;
@@ -126,8 +133,8 @@ void expect_black(const char* name, const Aovs& gpu, const Aovs& reference, cons
 // (2.4e-4), cone-plateau 0.020 % at 8/255 (0.007 % now).
 TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
   const PlanOptions options{Scheme::catmull_clark};
-  for (const char* name : {"valence3", "valence5", "valence8", "valence10", "wirecube", "cone", "cone-pointy", "cone-concave",
-                           "cone-plateau", "cone-cylinder"}) {
+  for (const char* name : {"valence3", "valence5", "valence8", "valence10", "wirecube", "cone", "cone-pointy",
+                           "cone-concave", "cone-plateau", "cone-cylinder"}) {
     const CovarianceMesh mesh = make_sample(name);
     // Level 16 is 16 segments along every mesh edge, a triangle's three half-size patches (a
     // Catmull-Clark step's quads) included: the reference's level 4 has the same vertices.
@@ -136,7 +143,8 @@ TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
     renderer.set_mesh(mesh, options);
     const Camera camera = frame_mesh(mesh);
     const Aovs gpu = draw(renderer, camera, false);
-    renderer.set_triangles(reference_in_patch_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize, levels));
+    renderer.set_triangles(
+        reference_in_patch_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize, levels));
     const Aovs reference = draw(renderer, camera, true);
     const bool folded_needle = std::string(name) == "cone-concave";
     expect_black(name, gpu, reference, camera, folded_needle ? 0.04 : 0.01);
@@ -154,7 +162,8 @@ TEST_F(ComparisonImages, ReferenceInThePatchesTrianglesHasTheirVertices) {
     renderer.set_mesh(mesh, options);
     const Camera camera = frame_mesh(mesh);
     const TriangleMesh exact = exact_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize);
-    const TriangleMesh reference = reference_in_patch_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize, 4);
+    const TriangleMesh reference =
+        reference_in_patch_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize, 4);
     ASSERT_EQ(reference.triangles, exact.triangles) << name;
     ASSERT_EQ(reference.positions.size(), exact.positions.size()) << name;
     double position = 0, normal = 0;

@@ -81,9 +81,7 @@ TEST_F(GpuPassTimerTest, NestingIsAnErrorAndANullScopeDoesNothing) {
   EXPECT_THROW(timer.begin("inner"), Error);
   timer.end();
   EXPECT_THROW(timer.end(), Error);
-  {
-    const GpuPassScope pass(nullptr, "nothing");
-  }
+  { const GpuPassScope pass(nullptr, "nothing"); }
   glFinish();
   const auto times = timer.latest();
   ASSERT_EQ(times.size(), 1u);

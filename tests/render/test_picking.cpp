@@ -96,7 +96,8 @@ namespace {
 TEST_F(Picking, EllipsoidsArePickedExactlyWhereTheyProject) {
   CovarianceMesh mesh = make_sample("cube");
   for (size_t i = 0; i < mesh.n_vertices(); ++i) mesh.covariances[i] = Vec3(0.01, 0.0025, 0.04).asDiagonal();
-  for (const auto& [w, h, yaw] : {std::tuple{640, 480, 30.0f}, std::tuple{300, 900, 120.0f}, std::tuple{1500, 500, -60.0f}}) {
+  for (const auto& [w, h, yaw] :
+       {std::tuple{640, 480, 30.0f}, std::tuple{300, 900, 120.0f}, std::tuple{1500, 500, -60.0f}}) {
     const Camera camera = frame_box(Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 1.5), yaw, 25.0f);
     for (size_t v = 0; v < mesh.n_vertices(); ++v) {
       // A point on the 2-sigma ellipsoid's silhouette-facing side: μ + 1.9 σ_z ẑ lies inside it.

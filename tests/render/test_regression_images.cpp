@@ -23,7 +23,8 @@ Image render_sample(SurfaceRenderer& renderer, const std::string& name) {
   o.mesh_lines = true;
   renderer.draw(target, frame_mesh(mesh, 35.0f, 25.0f), o);
   Image rgba = target.read(0), rgb{rgba.width, rgba.height, 3, {}};
-  for (size_t i = 0; i < rgba.pixels.size(); i += 4) rgb.pixels.insert(rgb.pixels.end(), rgba.pixels.begin() + long(i), rgba.pixels.begin() + long(i) + 3);
+  for (size_t i = 0; i < rgba.pixels.size(); i += 4)
+    rgb.pixels.insert(rgb.pixels.end(), rgba.pixels.begin() + long(i), rgba.pixels.begin() + long(i) + 3);
   return rgb;
 }
 
@@ -32,7 +33,8 @@ using RegressionImages = test::GlTest;
 TEST_F(RegressionImages, SamplesRenderAsStored) {
   SurfaceRenderer renderer;
   const bool update = std::getenv("GPSURF_UPDATE_REGRESSION") != nullptr;
-  for (const char* name : {"cube", "cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder", "wirecube", "valence5", "valence8", "cylinder"}) {
+  for (const char* name : {"cube", "cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder", "wirecube",
+                           "valence5", "valence8", "cylinder"}) {
     const Image actual = render_sample(renderer, name);
     const std::string stored = std::string(GPS_TEST_DATA_DIR) + "/regression/" + name + ".png";
     if (update) {
@@ -48,7 +50,8 @@ TEST_F(RegressionImages, SamplesRenderAsStored) {
     for (int y = 0; y < actual.height; ++y)
       for (int x = 0; x < actual.width; ++x) {
         float worst = 0;
-        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(actual.at(x, y, c) - expected.at(x, y, std::min(c, expected.channels - 1))));
+        for (int c = 0; c < 3; ++c)
+          worst = std::max(worst, std::abs(actual.at(x, y, c) - expected.at(x, y, std::min(c, expected.channels - 1))));
         diff.pixels[(size_t(y) * size_t(actual.width) + size_t(x)) * 3] = std::min(1.0f, worst * 8.0f);
         changed += worst > 10.0f / 255.0f;
       }
@@ -57,8 +60,8 @@ TEST_F(RegressionImages, SamplesRenderAsStored) {
       write_image(std::string(name) + ".actual.png", actual);
       write_image(std::string(name) + ".diff.png", diff);
     }
-    EXPECT_LE(share, 0.002) << name << ": " << changed << " pixels changed; see " << std::filesystem::current_path().string() << "/" << name
-                            << ".diff.png";
+    EXPECT_LE(share, 0.002) << name << ": " << changed << " pixels changed; see "
+                            << std::filesystem::current_path().string() << "/" << name << ".diff.png";
   }
 }
 

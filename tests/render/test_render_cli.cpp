@@ -21,11 +21,13 @@ TEST(RenderCli, DefaultsToAdaptiveLevelsForTheOutputSize) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample pawn -o " + dir.file("p.ply"))).exit_code, 0);
   const std::string base = "render " + dir.file("p.ply") + " -o " + dir.file("p.png");
-  for (const auto& [options, expected] : {std::pair{" --size 120x90", "adaptive 4 px"}, std::pair{" --size 700x500", "adaptive 5 px"},
-                                          std::pair{" --size 120x90 --pixels 9", "adaptive 9 px"}, std::pair{" --size 120x90 --level 3", "level 3"}}) {
+  for (const auto& [options, expected] :
+       {std::pair{" --size 120x90", "adaptive 4 px"}, std::pair{" --size 700x500", "adaptive 5 px"},
+        std::pair{" --size 120x90 --pixels 9", "adaptive 9 px"}, std::pair{" --size 120x90 --level 3", "level 3"}}) {
     const auto r = run_command(gpsurf(base + options));
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    EXPECT_NE(r.output.find(std::string("patches, ") + expected + ","), std::string::npos) << options << ": " << r.output;
+    EXPECT_NE(r.output.find(std::string("patches, ") + expected + ","), std::string::npos)
+        << options << ": " << r.output;
   }
   const Image png = read_image(dir.file("p.png"));
   int drawn = 0;
@@ -37,7 +39,8 @@ TEST(RenderCli, DefaultsToAdaptiveLevelsForTheOutputSize) {
 TEST(RenderCli, RendersAovsAndDifferenceImages) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample valence5 -o " + dir.file("v.ply"))).exit_code, 0);
-  const auto r = run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("v.png") + " --size 96x64 --level 6 --mesh --wireframe" +
+  const auto r = run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("v.png") +
+                                    " --size 96x64 --level 6 --mesh --wireframe" +
                                     " --aov position=" + dir.file("p.exr") + " --aov normal=" + dir.file("n.exr")));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Image png = read_image(dir.file("v.png"));
@@ -48,23 +51,32 @@ TEST(RenderCli, RendersAovsAndDifferenceImages) {
   for (int y = 0; y < position.height; ++y)
     for (int x = 0; x < position.width; ++x) covered += position.at(x, y, 3) > 0.5f;
   EXPECT_GT(covered, 500);
-  ASSERT_EQ(run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("r.png") + " --size 96x64 --reference 4 --mode normals" +
-                               " --aov position=" + dir.file("rp.exr"))).exit_code, 0);
-  const auto d = run_command(gpsurf("diff " + dir.file("p.exr") + " " + dir.file("p.exr") + " -o " + dir.file("same.png")));
+  ASSERT_EQ(run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("r.png") +
+                               " --size 96x64 --reference 4 --mode normals" + " --aov position=" + dir.file("rp.exr")))
+                .exit_code,
+            0);
+  const auto d =
+      run_command(gpsurf("diff " + dir.file("p.exr") + " " + dir.file("p.exr") + " -o " + dir.file("same.png")));
   EXPECT_EQ(d.exit_code, 0) << d.output;
   EXPECT_NE(d.output.find("max 0,"), std::string::npos) << d.output;
-  const auto e = run_command(gpsurf("diff " + dir.file("p.exr") + " " + dir.file("rp.exr") + " -o " + dir.file("d.png")));
+  const auto e =
+      run_command(gpsurf("diff " + dir.file("p.exr") + " " + dir.file("rp.exr") + " -o " + dir.file("d.png")));
   EXPECT_EQ(e.exit_code, 0) << e.output;
   EXPECT_NE(e.output.find("position difference"), std::string::npos);
   // diff tells the AOVs apart by their channel names: normals get the normal difference, and a
   // position buffer against a normal buffer is refused.
-  const auto n = run_command(gpsurf("diff " + dir.file("n.exr") + " " + dir.file("n.exr") + " -o " + dir.file("nn.png")));
+  const auto n =
+      run_command(gpsurf("diff " + dir.file("n.exr") + " " + dir.file("n.exr") + " -o " + dir.file("nn.png")));
   EXPECT_EQ(n.exit_code, 0) << n.output;
   EXPECT_NE(n.output.find("normal difference"), std::string::npos) << n.output;
-  const auto mixed = run_command(gpsurf("diff " + dir.file("p.exr") + " " + dir.file("n.exr") + " -o " + dir.file("pn.png")));
+  const auto mixed =
+      run_command(gpsurf("diff " + dir.file("p.exr") + " " + dir.file("n.exr") + " -o " + dir.file("pn.png")));
   EXPECT_EQ(mixed.exit_code, 2) << mixed.output;
   EXPECT_NE(mixed.output.find("holds positions but"), std::string::npos) << mixed.output;
-  EXPECT_EQ(run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("a.png") + " --size 32x32 --pixels 4 --matcap jade")).exit_code, 0);
+  EXPECT_EQ(run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file("a.png") +
+                               " --size 32x32 --pixels 4 --matcap jade"))
+                .exit_code,
+            0);
 }
 
 // The number after `label` ("max ") in `gpsurf diff`'s line, or −1.
@@ -83,13 +95,16 @@ TEST(RenderCli, ExactEvaluatorDrawsThePatchesOwnTriangles) {
     ASSERT_EQ(run_command(gpsurf("sample " + std::string(sample) + " -o " + mesh)).exit_code, 0);
     for (const bool exact : {false, true}) {
       const std::string name = exact ? "e" : "g";
-      const auto r = run_command(gpsurf("render " + mesh + " -o " + dir.file(name + ".png") + " --size 160x120" + (exact ? " --exact" : "") +
-                                        " --aov position=" + dir.file(name + "p.exr") + " --aov normal=" + dir.file(name + "n.exr")));
+      const auto r = run_command(gpsurf("render " + mesh + " -o " + dir.file(name + ".png") + " --size 160x120" +
+                                        (exact ? " --exact" : "") + " --aov position=" + dir.file(name + "p.exr") +
+                                        " --aov normal=" + dir.file(name + "n.exr")));
       ASSERT_EQ(r.exit_code, 0) << r.output;
       EXPECT_EQ(r.output.find("adaptive 4 px, exact evaluator,") != std::string::npos, exact) << r.output;
     }
-    const auto p = run_command(gpsurf("diff " + dir.file("gp.exr") + " " + dir.file("ep.exr") + " -o " + dir.file("dp.png")));
-    const auto n = run_command(gpsurf("diff " + dir.file("gn.exr") + " " + dir.file("en.exr") + " -o " + dir.file("dn.png")));
+    const auto p =
+        run_command(gpsurf("diff " + dir.file("gp.exr") + " " + dir.file("ep.exr") + " -o " + dir.file("dp.png")));
+    const auto n =
+        run_command(gpsurf("diff " + dir.file("gn.exr") + " " + dir.file("en.exr") + " -o " + dir.file("dn.png")));
     ASSERT_EQ(p.exit_code, 0) << p.output;
     ASSERT_EQ(n.exit_code, 0) << n.output;
     // Measured: icosphere 4.8e-6 and 1.4e-5, pawn 8.2e-7 and 9.2e-5. Not 0: double is not float.
@@ -98,12 +113,14 @@ TEST(RenderCli, ExactEvaluatorDrawsThePatchesOwnTriangles) {
     EXPECT_GT(figure_after(n.output, "max "), 0.0) << n.output;
     EXPECT_LT(figure_after(n.output, "max "), 1e-3) << sample << ": " << n.output;
   }
-  const std::string script = dir.write("s.json", R"({"renders": [{"mesh": "sample:cone", "output": ")" + dir.file("s.png") +
-                                                     R"(", "size": "48x48", "level": 4, "exact": true}]})");
+  const std::string script =
+      dir.write("s.json", R"({"renders": [{"mesh": "sample:cone", "output": ")" + dir.file("s.png") +
+                              R"(", "size": "48x48", "level": 4, "exact": true}]})");
   const auto s = run_command(gpsurf("render --script " + script));
   EXPECT_EQ(s.exit_code, 0) << s.output;
   EXPECT_NE(s.output.find("level 4, exact evaluator,"), std::string::npos) << s.output;
-  const auto both = run_command(gpsurf("render " + dir.file("pawn.ply") + " -o " + dir.file("x.png") + " --exact --reference 3"));
+  const auto both =
+      run_command(gpsurf("render " + dir.file("pawn.ply") + " -o " + dir.file("x.png") + " --exact --reference 3"));
   EXPECT_EQ(both.exit_code, 2) << both.output;
   EXPECT_EQ(std::count(both.output.begin(), both.output.end(), '\n'), 1) << both.output;
 }
@@ -117,11 +134,13 @@ TEST(RenderCli, ReferenceDrawsInThePatchesTrianglesUnderCatmullClark) {
   const std::string mesh = dir.file("cone.ply");
   ASSERT_EQ(run_command(gpsurf("sample cone-plateau -o " + mesh)).exit_code, 0);
   for (const std::string& how : {std::string("--exact --level 16"), std::string("--reference 4")}) {
-    const auto r = run_command(gpsurf("render " + mesh + " -o " + dir.file("r.png") + " --size 256x256 --scheme catmull-clark " + how +
-                                      " --aov normal=" + dir.file(how[2] + std::string("n.exr"))));
+    const auto r =
+        run_command(gpsurf("render " + mesh + " -o " + dir.file("r.png") + " --size 256x256 --scheme catmull-clark " +
+                           how + " --aov normal=" + dir.file(how[2] + std::string("n.exr"))));
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
-  const auto n = run_command(gpsurf("diff " + dir.file("en.exr") + " " + dir.file("rn.exr") + " -o " + dir.file("d.png")));
+  const auto n =
+      run_command(gpsurf("diff " + dir.file("en.exr") + " " + dir.file("rn.exr") + " -o " + dir.file("d.png")));
   ASSERT_EQ(n.exit_code, 0) << n.output;
   EXPECT_GE(figure_after(n.output, "max "), 0.0) << n.output;
   EXPECT_LT(figure_after(n.output, "max "), 1e-6) << n.output;
@@ -131,8 +150,10 @@ TEST(RenderCli, ReferenceDrawsInThePatchesTrianglesUnderCatmullClark) {
 TEST(RenderCli, ScriptedRendersWithEdits) {
   test::TempDir dir;
   const std::string script = dir.write("s.json", R"({"renders": [
-    {"mesh": "sample:cube", "output": ")" + dir.file("a.png") + R"(", "size": "48x48", "mode": "normals"},
-    {"mesh": "sample:cube", "output": ")" + dir.file("b.png") + R"(", "size": "48x48", "mode": "normals",
+    {"mesh": "sample:cube", "output": ")" + dir.file("a.png") +
+                                                     R"(", "size": "48x48", "mode": "normals"},
+    {"mesh": "sample:cube", "output": ")" + dir.file("b.png") +
+                                                     R"(", "size": "48x48", "mode": "normals",
      "edits": [{"vertex": 6, "scale": 0.001}]}]})");
   const auto r = run_command(gpsurf("render --script " + script));
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -140,7 +161,8 @@ TEST(RenderCli, ScriptedRendersWithEdits) {
   int changed = 0;
   for (size_t i = 0; i < a.pixels.size(); ++i) changed += std::abs(a.pixels[i] - b.pixels[i]) > 0.05f;
   EXPECT_GT(changed, 20);
-  const std::string bad = dir.write("bad.json", R"({"renders": [{"mesh": "sample:cube", "output": "x.png", "edits": [{"vertex": 99}]}]})");
+  const std::string bad =
+      dir.write("bad.json", R"({"renders": [{"mesh": "sample:cube", "output": "x.png", "edits": [{"vertex": 99}]}]})");
   const auto e = run_command(gpsurf("render --script " + bad));
   EXPECT_EQ(e.exit_code, 2);
   EXPECT_NE(e.output.find("render 0: edit of vertex 99"), std::string::npos) << e.output;
@@ -152,25 +174,29 @@ TEST(RenderCli, EglAndOsMesaContextsAgree) {
   test::TempDir dir;
   run_command(gpsurf("sample valence6 -o " + dir.file("v.ply")));
   for (const char* kind : {"egl", "osmesa"}) {
-    const auto r = run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file(std::string(kind) + ".png") + " --size 64x64 --context " +
-                                      kind + " --aov position=" + dir.file(std::string(kind) + ".exr")));
+    const auto r = run_command(gpsurf("render " + dir.file("v.ply") + " -o " + dir.file(std::string(kind) + ".png") +
+                                      " --size 64x64 --context " + kind +
+                                      " --aov position=" + dir.file(std::string(kind) + ".exr")));
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
-  const auto d = run_command(gpsurf("diff " + dir.file("egl.exr") + " " + dir.file("osmesa.exr") + " -o " + dir.file("d.png")));
+  const auto d =
+      run_command(gpsurf("diff " + dir.file("egl.exr") + " " + dir.file("osmesa.exr") + " -o " + dir.file("d.png")));
   EXPECT_NE(d.output.find("max 0,"), std::string::npos) << d.output;
 }
 
 TEST(RenderCli, BadInputIsAUsageError) {
   test::TempDir dir;
   run_command(gpsurf("sample cube -o " + dir.file("c.ply")));
-  run_command(gpsurf("render " + dir.file("c.ply") + " -o " + dir.file("a.png") + " --size 16x16 --aov position=" + dir.file("a.exr")));
-  run_command(gpsurf("render " + dir.file("c.ply") + " -o " + dir.file("b.png") + " --size 24x16 --aov position=" + dir.file("b.exr")));
+  run_command(gpsurf("render " + dir.file("c.ply") + " -o " + dir.file("a.png") +
+                     " --size 16x16 --aov position=" + dir.file("a.exr")));
+  run_command(gpsurf("render " + dir.file("c.ply") + " -o " + dir.file("b.png") +
+                     " --size 24x16 --aov position=" + dir.file("b.exr")));
   const std::string mesh = dir.file("c.ply"), out = " -o " + dir.file("x.png");
   for (const std::string& args : std::vector<std::string>{
            "render " + dir.file("missing.ply") + out, "render " + mesh + out + " --matcap velvet",
-           "render " + mesh + out + " --level 0", "render " + mesh + out + " --level 65", "render " + mesh + out + " --size 10by10",
-           "render " + mesh + out + " --aov depth=" + dir.file("d.exr"), "render " + mesh + out + " --mode toon",
-           "diff " + dir.file("a.exr") + " " + dir.file("missing.exr") + out,
+           "render " + mesh + out + " --level 0", "render " + mesh + out + " --level 65",
+           "render " + mesh + out + " --size 10by10", "render " + mesh + out + " --aov depth=" + dir.file("d.exr"),
+           "render " + mesh + out + " --mode toon", "diff " + dir.file("a.exr") + " " + dir.file("missing.exr") + out,
            "diff " + dir.file("a.exr") + " " + dir.file("b.exr") + out}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;

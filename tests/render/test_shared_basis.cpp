@@ -81,7 +81,8 @@ std::vector<double> cpu_probe(int i, double u, double v) {
   out[60] = loop_extraordinary_locate(s, t, scale, steps);
   out[61] = s, out[62] = t, out[63] = scale;
   double q[16], qu[16], qv[16];
-  quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, i % 4 == 0 ? kBoundaryV0 | kBoundaryU1 : 0, u, v, q, qu, qv);
+  quad_leaf_basis(i % 2 == 0 ? kNodeRegular : kNodeTerminal, i % 4 == 0 ? kBoundaryV0 | kBoundaryU1 : 0, u, v, q, qu,
+                  qv);
   for (int k = 0; k < 16; ++k) out[size_t(64 + k)] = q[k], out[size_t(80 + k)] = qu[k], out[size_t(96 + k)] = qv[k];
   return out;
 }
@@ -91,8 +92,18 @@ using SharedPatchBasis = test::GlTest;
 TEST_F(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
   const ShaderProgram probe("basis_probe", {{GL_COMPUTE_SHADER, {shaders::patch_basis, kProbe}}});
   std::vector<float> inputs;
-  for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.5, 0.5}, {0.25, 0.125}, {0.6, 0.1},
-                             {0.1, 0.7}, {0.3, 0.3}, {0.2, 0.2}, {0.75, 0.25}, {0.01, 0.02}, {1.0 / 3, 1.0 / 3}})
+  for (const auto& [u, v] : {std::pair{0.0, 0.0},
+                             {1.0, 0.0},
+                             {0.0, 1.0},
+                             {0.5, 0.5},
+                             {0.25, 0.125},
+                             {0.6, 0.1},
+                             {0.1, 0.7},
+                             {0.3, 0.3},
+                             {0.2, 0.2},
+                             {0.75, 0.25},
+                             {0.01, 0.02},
+                             {1.0 / 3, 1.0 / 3}})
     inputs.insert(inputs.end(), {float(u), float(v)});
   const int n = int(inputs.size() / 2);
   unsigned buffers[2];
@@ -156,7 +167,8 @@ std::vector<double> cpu_descent(const std::vector<int32_t>& nodes, int root, boo
   if (kind != kNodeExtraordinary) return out;
   double w[16], ws[16], wt[16], d[4], extraordinary_scale;
   int first_row, steps;
-  const int n = extraordinary_rows(!triangle, nodes[size_t(node + 1)], u, v, false, first_row, steps, w, ws, wt, d, extraordinary_scale);
+  const int n = extraordinary_rows(!triangle, nodes[size_t(node + 1)], u, v, false, first_row, steps, w, ws, wt, d,
+                                   extraordinary_scale);
   out[6] = n, out[7] = first_row, out[13] = steps;
   for (int k = 0; k < 4; ++k) out[size_t(8 + k)] = d[k];
   out[12] = extraordinary_scale;
@@ -168,17 +180,19 @@ void expect_same_descent(const char* name, const CovarianceMesh& mesh, const Pla
   const SurfaceTables tables = build_surface_plans(topology_of(mesh.mesh), options);
   const PatchPlans& plans = tables.plans;
   const bool triangle = plans.shape == PatchShape::triangle;
-  const ShaderProgram probe("descent_probe", {{GL_COMPUTE_SHADER, {shaders::patch_basis, kDescentBuffers, shaders::plan_descent, kDescentProbe}}});
+  const ShaderProgram probe(
+      "descent_probe",
+      {{GL_COMPUTE_SHADER, {shaders::patch_basis, kDescentBuffers, shaders::plan_descent, kDescentProbe}}});
   // Every patch at points inside, along the edges and near each corner (down to the limit masks).
   std::vector<float> inputs;
-  const std::vector<std::pair<double, double>> uvs = {{0.3, 0.2},     {0.71, 0.13},   {0.05, 0.6},  {0.33, 0.33},
-                                                      {0.0, 0.0},     {1.0, 0.0},     {0.0, 1.0},   {0.02, 0.01},
-                                                      {1e-6, 3e-7},   {1e-13, 1e-13}, {0.99, 0.004}, {0.004, 0.98},
-                                                      {0.6, 0.37},    {0.9, 0.9}};
+  const std::vector<std::pair<double, double>> uvs = {
+      {0.3, 0.2},   {0.71, 0.13}, {0.05, 0.6},    {0.33, 0.33},  {0.0, 0.0},    {1.0, 0.0},  {0.0, 1.0},
+      {0.02, 0.01}, {1e-6, 3e-7}, {1e-13, 1e-13}, {0.99, 0.004}, {0.004, 0.98}, {0.6, 0.37}, {0.9, 0.9}};
   for (int patch = 0; patch < plans.n_patches(); ++patch)
     for (const auto& [u, v] : uvs) {
       if (triangle && u + v > 1.0) continue;
-      inputs.insert(inputs.end(), {float(plans.patch_roots[size_t(patch)]), triangle ? 1.0f : 0.0f, float(u), float(v)});
+      inputs.insert(inputs.end(),
+                    {float(plans.patch_roots[size_t(patch)]), triangle ? 1.0f : 0.0f, float(u), float(v)});
     }
   const int n = int(inputs.size() / 4);
   unsigned buffers[3];
@@ -229,13 +243,41 @@ using SharedLayout = test::GlTest;
 
 TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
   using namespace gpu;
-  const std::vector<int> cpu = {kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
-                                kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingExtraordinaryTables,
-                                kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCornerLimits, kBindingCornerList, kBindingCount,
-                                kBindingStoredVertices, kBindingWeldTable, kBindingStoredIndices, kBindingBlockStarts,
-                                kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary,
-                                kPatchEdgeInts, kPatchEdgeStride, kEdgeWhole, kEdgeWholeBesideHalves, kEdgeFirstHalf, kEdgeSecondHalf};
-  const ShaderProgram probe("constants_probe", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::patch_basis, kConstantsProbe}}});
+  const std::vector<int> cpu = {kBindingGaussians,
+                                kBindingPoints,
+                                kBindingOffsets,
+                                kBindingIndices,
+                                kBindingWeights,
+                                kBindingNodes,
+                                kBindingRoots,
+                                kBindingCorners,
+                                kBindingChanged,
+                                kBindingRows,
+                                kBindingExtraordinaryTables,
+                                kBindingPatchEdges,
+                                kBindingPatchNeighbours,
+                                kBindingCornerOwners,
+                                kBindingCornerLimits,
+                                kBindingCornerList,
+                                kBindingCount,
+                                kBindingStoredVertices,
+                                kBindingWeldTable,
+                                kBindingStoredIndices,
+                                kBindingBlockStarts,
+                                kWorkGroupSize,
+                                kVec4PerPoint,
+                                kNodeInternal,
+                                kNodeRegular,
+                                kNodeTerminal,
+                                kNodeExtraordinary,
+                                kPatchEdgeInts,
+                                kPatchEdgeStride,
+                                kEdgeWhole,
+                                kEdgeWholeBesideHalves,
+                                kEdgeFirstHalf,
+                                kEdgeSecondHalf};
+  const ShaderProgram probe("constants_probe",
+                            {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::patch_basis, kConstantsProbe}}});
   unsigned buffer = 0;
   glCreateBuffers(1, &buffer);
   glNamedBufferData(buffer, GLsizeiptr(cpu.size() * sizeof(int)), nullptr, GL_STREAM_READ);
@@ -253,7 +295,8 @@ TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
 // The compute passes as the renderer builds them (render/pipeline/dual_stencil_pass.cpp): their work-group
 // size and each storage block's binding, as the driver reports them, are gpu_layout.h's.
 TEST_F(SharedLayout, ComputePassesUseTheSharedBindingsAndWorkGroupSize) {
-  const auto expect_layout = [](const char* name, const char* source, const std::vector<std::pair<const char*, int>>& blocks) {
+  const auto expect_layout = [](const char* name, const char* source,
+                                const std::vector<std::pair<const char*, int>>& blocks) {
     const ShaderProgram program(name, {{GL_COMPUTE_SHADER, {shaders::gpu_layout, source}}});
     GLint size[3] = {};
     glGetProgramiv(program.id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
@@ -268,11 +311,15 @@ TEST_F(SharedLayout, ComputePassesUseTheSharedBindingsAndWorkGroupSize) {
     }
     check_gl_errors(name);
   };
-  expect_layout("dual_map", shaders::dual_map_comp,
-                {{"Gaussians", gpu::kBindingGaussians}, {"Points", gpu::kBindingPoints}, {"Changed", gpu::kBindingChanged}});
+  expect_layout(
+      "dual_map", shaders::dual_map_comp,
+      {{"Gaussians", gpu::kBindingGaussians}, {"Points", gpu::kBindingPoints}, {"Changed", gpu::kBindingChanged}});
   expect_layout("stencil", shaders::stencil_comp,
-                {{"Points", gpu::kBindingPoints}, {"Offsets", gpu::kBindingOffsets}, {"Indices", gpu::kBindingIndices},
-                 {"Weights", gpu::kBindingWeights}, {"Rows", gpu::kBindingRows}});
+                {{"Points", gpu::kBindingPoints},
+                 {"Offsets", gpu::kBindingOffsets},
+                 {"Indices", gpu::kBindingIndices},
+                 {"Weights", gpu::kBindingWeights},
+                 {"Rows", gpu::kBindingRows}});
 }
 
 using SharedPlanDescent = test::GlTest;

@@ -30,7 +30,9 @@ struct EdgeVertex {
   bool needs_partner;  // one of its patch edges has a neighbour (not all on the mesh's open boundary)
 };
 
-bool bit_equal(const std::array<float, 3>& a, const std::array<float, 3>& b) { return std::memcmp(a.data(), b.data(), sizeof(a)) == 0; }
+bool bit_equal(const std::array<float, 3>& a, const std::array<float, 3>& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(a)) == 0;
+}
 
 // The patch edges a vertex at (u, v) lies on (own parameters as the shader reports them).
 std::vector<int> edges_at(PatchShape shape, float u, float v) {
@@ -49,14 +51,16 @@ std::vector<int> edges_at(PatchShape shape, float u, float v) {
 }
 
 // The boundary vertices of every patch, captured a range of patches at a time (bounded memory).
-std::vector<EdgeVertex> capture_edge_vertices(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const DrawOptions& o) {
+std::vector<EdgeVertex> capture_edge_vertices(SurfaceRenderer& renderer, const CovarianceMesh& mesh,
+                                              const DrawOptions& o) {
   const PatchPlans& plans = renderer.tables().plans;
   const int level = o.pixels > 0.0f ? 64 : int(std::ceil(o.level));
   const int chunk = std::max(1, 400000 / ((level + 1) * (level + 1) * 6));
   std::vector<EdgeVertex> out;
   std::unordered_map<std::string, bool> seen;
   for (int first = 0; first < plans.n_patches(); first += chunk)
-    for (const TessellatedVertex& t : renderer.capture_vertices(frame_mesh(mesh, 35.0f, 25.0f), o, 512, 512, first, chunk)) {
+    for (const TessellatedVertex& t :
+         renderer.capture_vertices(frame_mesh(mesh, 35.0f, 25.0f), o, 512, 512, first, chunk)) {
       const std::vector<int> k = edges_at(plans.shape, t.u, t.v);
       if (k.empty()) continue;
       EdgeVertex e{int(t.patch), t.u, t.v, {t.position[0], t.position[1], t.position[2]}, false};
@@ -158,13 +162,14 @@ TEST_P(EverySample, SharesItsEdgeVerticesBitForBit) {
       renderer.set_mesh(mesh, plans);
       loaded = int(exact);
     }
-    const std::string what = name + (exact ? "" : " depth-3") + (o.pixels > 0 ? " adaptive 3 px" : " level " + std::to_string(int(o.level)));
+    const std::string what =
+        name + (exact ? "" : " depth-3") + (o.pixels > 0 ? " adaptive 3 px" : " level " + std::to_string(int(o.level)));
     const SharedEdgeCheck c = check_shared_edges(renderer, mesh, o);
     EXPECT_GT(c.vertices, 0u) << what;
     EXPECT_EQ(c.without_twin, 0u) << what;
     EXPECT_EQ(c.near_misses, 0u) << what;
-    std::printf("%-28s %8zu edge vertices: %zu without a bit-identical twin, %zu near misses\n", what.c_str(), c.vertices, c.without_twin,
-                c.near_misses);
+    std::printf("%-28s %8zu edge vertices: %zu without a bit-identical twin, %zu near misses\n", what.c_str(),
+                c.vertices, c.without_twin, c.near_misses);
   }
 }
 

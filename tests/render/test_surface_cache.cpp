@@ -64,7 +64,8 @@ size_t differing_pixels(const Frame& a, const Frame& b) {
 // within 1e-3 of the surface's size and of a unit normal (measured at most 4.9e-4 and 1.6e-4).
 ::testing::AssertionResult same_surface(const Frame& cached, const Frame& live) {
   const Image &normal_a = cached.layers[2], &normal_b = live.layers[2];
-  if (normal_a.pixels.size() != normal_b.pixels.size()) return ::testing::AssertionFailure() << "frames of different sizes";
+  if (normal_a.pixels.size() != normal_b.pixels.size())
+    return ::testing::AssertionFailure() << "frames of different sizes";
   float size = 0.0f;
   for (size_t i = 0; i < live.layers[1].pixels.size(); i += 4)
     if (normal_b.pixels[i + 3] != 0.0f)
@@ -74,14 +75,14 @@ size_t differing_pixels(const Frame& a, const Frame& b) {
   for (size_t i = 0; i < normal_a.pixels.size(); i += 4) {
     const size_t pixel = i / 4;
     if (normal_a.pixels[i + 3] != normal_b.pixels[i + 3])
-      return ::testing::AssertionFailure() << "pixel " << pixel << ": coverage or node kind " << normal_a.pixels[i + 3] << " against "
-                                           << normal_b.pixels[i + 3];
+      return ::testing::AssertionFailure() << "pixel " << pixel << ": coverage or node kind " << normal_a.pixels[i + 3]
+                                           << " against " << normal_b.pixels[i + 3];
     for (int l = 0; l < 3; ++l)
       for (size_t k = 0; k < 3; ++k) {
         const float d = std::abs(cached.layers[l].pixels[i + k] - live.layers[l].pixels[i + k]);
         if (!(d <= tolerance[l]))
-          return ::testing::AssertionFailure() << "pixel " << pixel << ": " << layer_name[l] << " differs by " << d << " (tolerance "
-                                               << tolerance[l] << ")";
+          return ::testing::AssertionFailure() << "pixel " << pixel << ": " << layer_name[l] << " differs by " << d
+                                               << " (tolerance " << tolerance[l] << ")";
       }
   }
   return ::testing::AssertionSuccess();
@@ -116,7 +117,8 @@ TEST_P(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
     for (DrawOptions o : {uniform(1), uniform(5), adaptive(6)}) {
       for (const bool wireframe : {false, true}) {
         o.wireframe = wireframe;
-        const std::string what = std::string(name) + (o.pixels > 0 ? " adaptive" : " level " + std::to_string(int(o.level))) +
+        const std::string what = std::string(name) +
+                                 (o.pixels > 0 ? " adaptive" : " level " + std::to_string(int(o.level))) +
                                  (wireframe ? " wireframe" : "");
         const Frame live = draw(renderer, target, camera, o, false);
         const int before = renderer.surface_cache().captures();
@@ -233,8 +235,10 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachSurfacePointOnce) {
   if (a.triangles != b.triangles || a.positions.size() != b.positions.size())
     return ::testing::AssertionFailure() << a.triangles.size() << " triangle corners against " << b.triangles.size();
   size_t differing = 0;
-  for (size_t i = 0; i < a.positions.size(); ++i) differing += a.positions[i] != b.positions[i] || a.normals[i] != b.normals[i];
-  if (differing > 0) return ::testing::AssertionFailure() << differing << " of " << a.positions.size() << " vertices differ";
+  for (size_t i = 0; i < a.positions.size(); ++i)
+    differing += a.positions[i] != b.positions[i] || a.normals[i] != b.normals[i];
+  if (differing > 0)
+    return ::testing::AssertionFailure() << differing << " of " << a.positions.size() << " vertices differ";
   return ::testing::AssertionSuccess();
 }
 
@@ -264,19 +268,22 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
       const int n = int(mesh.n_vertices());
       std::vector<int> every(static_cast<size_t>(n));
       for (int v = 0; v < n; ++v) every[size_t(v)] = v;
-      const std::vector<std::vector<int>> edits =
-          o.pixels > 0 ? std::vector<std::vector<int>>{{n / 2}, {n / 2, n / 3}} : std::vector<std::vector<int>>{{n / 2, n / 3}, every};
+      const std::vector<std::vector<int>> edits = o.pixels > 0 ? std::vector<std::vector<int>>{{n / 2}, {n / 2, n / 3}}
+                                                               : std::vector<std::vector<int>>{{n / 2, n / 3}, every};
       for (size_t e = 0; e < edits.size(); ++e) {
         const std::vector<int>& edited = edits[e];
-        const std::string what =
-            std::string(name) + (o.pixels > 0 ? " adaptive" : " level " + std::to_string(int(o.level))) + ", edit " + std::to_string(e);
+        const std::string what = std::string(name) +
+                                 (o.pixels > 0 ? " adaptive" : " level " + std::to_string(int(o.level))) + ", edit " +
+                                 std::to_string(e);
         if (edited.size() > 2) renderer.lower_device_limits(64, 0);
         draw(renderer, target, camera, o, true);
         draw(renderer, target, camera, o, true);  // settled
         const int captures = cache.captures(), refreshes = cache.refreshes();
         for (const int v : edited) {
-          if (o.pixels > 0 && e == 0) mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * 1.1);
-          else move_vertex(mesh, v, (o.pixels > 0 ? 0.02 : 0.2) / double(edited.size()));
+          if (o.pixels > 0 && e == 0)
+            mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * 1.1);
+          else
+            move_vertex(mesh, v, (o.pixels > 0 ? 0.02 : 0.2) / double(edited.size()));
         }
         renderer.update_vertices(mesh, edited);
         draw(renderer, target, camera, o, true);
@@ -298,8 +305,9 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
     if (o.pixels > 0) {
       EXPECT_GT(captured_again, 0) << "no edit changed adaptive levels";
     }
-    std::printf("%s: %d patches evaluated again, %d captured again\n", o.pixels > 0 ? "adaptive" : ("level " + std::to_string(int(o.level))).c_str(),
-                evaluated, captured_again);
+    std::printf("%s: %d patches evaluated again, %d captured again\n",
+                o.pixels > 0 ? "adaptive" : ("level " + std::to_string(int(o.level))).c_str(), evaluated,
+                captured_again);
   }
 }
 
@@ -327,8 +335,10 @@ TEST_P(SurfaceCacheTest, ADragsEvaluatedVerticesReachTheGridAndTheReadBack) {
     int evaluated = 0, captured_again = 0;
     Frame dragged;
     for (const int v : {n / 2, n / 3, n / 5}) {
-      if (v == n / 3) move_vertex(mesh, v, 0.02);
-      else mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * 1.1);
+      if (v == n / 3)
+        move_vertex(mesh, v, 0.02);
+      else
+        mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * 1.1);
       renderer.update_vertices(mesh, {v});
       dragged = draw(renderer, target, camera, v == n / 5 ? grid : o, true);
       evaluated += cache.evaluated_patches();
@@ -359,7 +369,8 @@ TEST_P(SurfaceCacheTest, AnEditShowsInTheNextFrame) {
   const Frame before = draw(renderer, target, camera, o, true);
   EXPECT_EQ(renderer.surface_cache().captures(), 1);
   const int v = int(mesh.n_vertices() / 2);
-  mesh.set_mean(size_t(v), mesh.mean(size_t(v)) + 0.3 * bounding_box_diagonal(mesh) * Vec3(1.0, 0.5, 0.25).normalized());
+  mesh.set_mean(size_t(v),
+                mesh.mean(size_t(v)) + 0.3 * bounding_box_diagonal(mesh) * Vec3(1.0, 0.5, 0.25).normalized());
   renderer.update_vertices(mesh, {v});
   const Frame edited = draw(renderer, target, camera, o, true);
   // A one-vertex edit captures the blocks of its patches again, not the whole surface.
@@ -427,7 +438,8 @@ TEST_F(SurfaceCacheLimit, IsAShareOfTheDevicesMemory) {
     EXPECT_GT(device, 1ll << 30) << "the machine's physical memory";
   }
   const SurfaceCache cache;
-  EXPECT_EQ(cache.limit_bytes(), std::clamp(device / SurfaceCache::kDeviceMemoryShare, SurfaceCache::kLeastLimitBytes, SurfaceCache::kMostLimitBytes));
+  EXPECT_EQ(cache.limit_bytes(), std::clamp(device / SurfaceCache::kDeviceMemoryShare, SurfaceCache::kLeastLimitBytes,
+                                            SurfaceCache::kMostLimitBytes));
 }
 
 TEST_P(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
@@ -452,7 +464,8 @@ TEST_P(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
   // Level 2 fits as captured, but welded would take more than the limit: drawn as captured, still frames too.
   draw(renderer, target, camera, uniform(2), true);
   EXPECT_TRUE(renderer.surface_cache().holds_triangles());
-  ASSERT_GT(renderer.surface_cache().triangles() * SurfaceCache::kWeldedTriangleBytes, 100 * SurfaceCache::kTriangleBytes);
+  ASSERT_GT(renderer.surface_cache().triangles() * SurfaceCache::kWeldedTriangleBytes,
+            100 * SurfaceCache::kTriangleBytes);
   const Frame still = draw(renderer, target, camera, uniform(2), true);
   EXPECT_FALSE(renderer.surface_cache().draws_welded());
   EXPECT_EQ(renderer.surface_cache().distinct_vertices(), 3 * renderer.surface_cache().triangles());
@@ -463,7 +476,8 @@ TEST_P(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
   RenderTarget target(kSize, kSize);
   for (const char* name : {"cube", "pawn", "icosphere"}) {
     for (const DrawOptions& o : {uniform(4), uniform(8), adaptive(6)}) {
-      const std::string what = std::string(name) + (o.pixels > 0 ? " adaptive" : " level " + std::to_string(int(o.level)));
+      const std::string what =
+          std::string(name) + (o.pixels > 0 ? " adaptive" : " level " + std::to_string(int(o.level)));
       CovarianceMesh mesh = make_sample(name);
       SurfaceRenderer renderer;
       renderer.surface_cache().set_weld(GetParam());
@@ -477,12 +491,13 @@ TEST_P(SurfaceCacheTest, EditedFramesEqualLiveFrames) {
         for (const int v : edited) move_vertex(mesh, v, 0.2);
         renderer.update_vertices(mesh, edited);
         const Frame cached = draw(renderer, target, camera, o, true);
-        EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false))) << what << ", " << edited.size() << " vertices";
+        EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false)))
+            << what << ", " << edited.size() << " vertices";
       }
       // The cube's every patch reads every vertex: captured whole, unless its welded vertices are
       // evaluated again (uniform levels from evaluated_from_level()). The others: only the edits' blocks.
-      const bool partial =
-          std::string(name) != "cube" || (welds() && o.pixels <= 0 && o.level >= renderer.surface_cache().evaluated_from_level());
+      const bool partial = std::string(name) != "cube" ||
+                           (welds() && o.pixels <= 0 && o.level >= renderer.surface_cache().evaluated_from_level());
       EXPECT_EQ(renderer.surface_cache().captures(), partial ? 1 : 3) << what;
       EXPECT_EQ(renderer.surface_cache().refreshes(), partial ? 2 : 0) << what;
       // Uniform levels keep every block's count; adaptive ones here change some (a new buffer is assembled).
@@ -578,11 +593,12 @@ TEST_P(SurfaceCacheTest, AnEditAfterASmallCameraMoveKeepsTheLevelsOfTheCapture) 
 }
 
 INSTANTIATE_TEST_SUITE_P(StoredVertices, SurfaceCacheTest,
-                         ::testing::Values(SurfaceCache::Weld::at_capture, SurfaceCache::Weld::when_settled, SurfaceCache::Weld::off),
+                         ::testing::Values(SurfaceCache::Weld::at_capture, SurfaceCache::Weld::when_settled,
+                                           SurfaceCache::Weld::off),
                          [](const ::testing::TestParamInfo<SurfaceCache::Weld>& info) {
                            return info.param == SurfaceCache::Weld::at_capture     ? "WeldedAtCapture"
                                   : info.param == SurfaceCache::Weld::when_settled ? "WeldedWhenSettled"
-                                                                                    : "AsCaptured";
+                                                                                   : "AsCaptured";
                          });
 
 }  // namespace

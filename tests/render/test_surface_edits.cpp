@@ -22,10 +22,11 @@ TEST_F(GpuTest, EditsOfAnySizeEqualARebuild) {
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh);
     const std::vector<std::vector<int>> edits = {{5}, {1, 40, 41, 200}, [&mesh] {
-      std::vector<int> most;
-      for (int v = 0; v < int(mesh.n_vertices()); v += 2) most.push_back(v);
-      return most;
-    }()};
+                                                   std::vector<int> most;
+                                                   for (int v = 0; v < int(mesh.n_vertices()); v += 2)
+                                                     most.push_back(v);
+                                                   return most;
+                                                 }()};
     DrawOptions o;
     o.level = 3;
     for (const auto& changed : edits) {
@@ -37,13 +38,15 @@ TEST_F(GpuTest, EditsOfAnySizeEqualARebuild) {
       SurfaceRenderer rebuilt;
       rebuilt.set_mesh(mesh);
       EXPECT_EQ(renderer.read_points(), rebuilt.read_points()) << name << ", " << changed.size() << " vertices";
-      const auto edited = renderer.capture_vertices(Camera{}, o, 512, 512), fresh = rebuilt.capture_vertices(Camera{}, o, 512, 512);
+      const auto edited = renderer.capture_vertices(Camera{}, o, 512, 512),
+                 fresh = rebuilt.capture_vertices(Camera{}, o, 512, 512);
       ASSERT_EQ(edited.size(), fresh.size()) << name;
       size_t differing = 0;
       for (size_t i = 0; i < edited.size(); ++i)
         differing += std::memcmp(edited[i].position, fresh[i].position, sizeof edited[i].position) != 0 ||
                      std::memcmp(edited[i].normal, fresh[i].normal, sizeof edited[i].normal) != 0;
-      EXPECT_EQ(differing, 0u) << name << ", " << changed.size() << " vertices: tessellated vertices differ from a rebuild";
+      EXPECT_EQ(differing, 0u) << name << ", " << changed.size()
+                               << " vertices: tessellated vertices differ from a rebuild";
     }
   }
 }

@@ -1,4 +1,5 @@
-// The GPU pipeline on OSMesa against the CPU evaluator (issue "The GPU pipeline"); its watertightness is test_watertight.cpp.
+// The GPU pipeline on OSMesa against the CPU evaluator (issue "The GPU pipeline"); its watertightness is
+// test_watertight.cpp.
 #include "render/pipeline/surface_renderer.h"
 
 #include <gtest/gtest.h>
@@ -109,8 +110,10 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
       if (name == "valence10") levels.push_back(64.0f);
       for (const float level : levels) {
         const VertexErrors e = compare_vertices(mesh, PlanOptions{scheme, level == 64.0f ? 0 : kExactPlanDepth}, level);
-        std::printf("%-13s %-6s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.4f degrees, %zu vertices\n",
-                    name.c_str(), scheme ? "cc" : "auto", level, e.position, e.normal_degrees, e.count);
+        std::printf(
+            "%-13s %-6s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.4f degrees, %zu "
+            "vertices\n",
+            name.c_str(), scheme ? "cc" : "auto", level, e.position, e.normal_degrees, e.count);
         EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
         // The issue asks 2e-6; 1.9e-7 at most since boundary phantoms are folded into the basis
         // (cone-pointy as Catmull-Clark was 2.2e-6 on its rim before).
@@ -124,15 +127,18 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
 // Loop patches (box splines and exact extraordinary nodes) on the GPU against the CPU evaluator.
 TEST_F(GpuTest, LoopPatchesMatchTheCpuEvaluator) {
   std::vector<std::pair<std::string, CovarianceMesh>> meshes;
-  for (const char* name : {"cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder"}) meshes.emplace_back(name, make_sample(name));
+  for (const char* name : {"cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder"})
+    meshes.emplace_back(name, make_sample(name));
   meshes.emplace_back("icosahedron", test::with_random_covariances(test::icosahedron_mesh(), 4));
   meshes.emplace_back("triangle grid", test::with_random_covariances(test::triangle_grid_mesh(5, 4), 5));
   for (const auto& [name, mesh] : meshes)
-    for (const float level : {1.0f, 7.0f, 64.0f}) {  // 64: the points closest to the corners (as in TessellatedVertices…)
+    for (const float level :
+         {1.0f, 7.0f, 64.0f}) {  // 64: the points closest to the corners (as in TessellatedVertices…)
       if (level == 64.0f && name != "icosahedron") continue;
       const VertexErrors e = compare_vertices(mesh, PlanOptions{Scheme::loop, 3}, level);
-      std::printf("%-14s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.3f degrees, %zu vertices\n", name.c_str(),
-                  level, e.position, e.normal_degrees, e.count);
+      std::printf(
+          "%-14s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.3f degrees, %zu vertices\n",
+          name.c_str(), level, e.position, e.normal_degrees, e.count);
       EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
       // Float against double, the bounds of TessellatedVerticesMatchTheCpuEvaluator: the needle cones'
       // normals were 0.011° off while the sums were taken about a leaf's first point, 0.004° about its
@@ -168,7 +174,9 @@ TEST_F(GpuTest, AovsMatchTheCpuEvaluatorPixelForPixel) {
         for (int dx = -1; dx <= 1; ++dx) {
           const int xx = std::clamp(x + dx, 0, im.width - 1), yy = std::clamp(y + dy, 0, im.height - 1);
           if (im.at(xx, yy, 3) < 0.5f) return false;
-          if ((Vec3(im.at(xx, yy, 0), im.at(xx, yy, 1), im.at(xx, yy, 2)) - p).norm() > 0.02 * bounding_box_diagonal(mesh)) return false;
+          if ((Vec3(im.at(xx, yy, 0), im.at(xx, yy, 1), im.at(xx, yy, 2)) - p).norm() >
+              0.02 * bounding_box_diagonal(mesh))
+            return false;
         }
       return true;
     };
@@ -188,11 +196,13 @@ TEST_F(GpuTest, AovsMatchTheCpuEvaluatorPixelForPixel) {
         if (gpu_normal.at(x, y, 3) != 2.0f) continue;  // normals: where the node is regular
         const Vec3 na(gpu_normal.at(x, y, 0), gpu_normal.at(x, y, 1), gpu_normal.at(x, y, 2));
         const Vec3 nb(cpu_normal.at(x, y, 0), cpu_normal.at(x, y, 1), cpu_normal.at(x, y, 2));
-        normal = std::max(normal, std::acos(std::clamp(na.normalized().dot(nb.normalized()), -1.0, 1.0)) * 180.0 / M_PI);
+        normal =
+            std::max(normal, std::acos(std::clamp(na.normalized().dot(nb.normalized()), -1.0, 1.0)) * 180.0 / M_PI);
         ++covered;
       }
     EXPECT_GT(covered, 1000) << name;
-    std::printf("%s: max position %.2e of the diagonal, max normal %.3f degrees over %d pixels\n", name, position, normal, covered);
+    std::printf("%s: max position %.2e of the diagonal, max normal %.3f degrees over %d pixels\n", name, position,
+                normal, covered);
     EXPECT_LT(position, 1e-4) << name;
     EXPECT_LT(normal, 1.0) << name;
   }
@@ -252,7 +262,6 @@ TEST_F(GpuTest, WireframeOverStaticTriangles) {
   EXPECT_EQ(brighter, 0);
 }
 
-
 // Ellipsoid instances follow an edit (only the changed vertex is re-uploaded) and the k-σ scale.
 TEST_F(GpuTest, EllipsoidsFollowEditsAndSigma) {
   CovarianceMesh mesh = make_sample("cube");
@@ -304,8 +313,8 @@ TEST_F(GpuTest, StatisticsCountTheTessellatedTriangles) {
       EXPECT_GT(s.vertices, 0) << name;
     else
       EXPECT_EQ(s.vertices, -1) << name;
-    std::printf("%s: %d patches at level %d: %lld triangles, %lld evaluation shader invocations\n", name, s.patches, level,
-                s.triangles, s.vertices);
+    std::printf("%s: %d patches at level %d: %lld triangles, %lld evaluation shader invocations\n", name, s.patches,
+                level, s.triangles, s.vertices);
     // A frame from the surface cache counts the stored triangles and evaluates nothing.
     o.surface_cache = true;
     for (int frame = 0; frame < 2; ++frame) render_color(renderer, mesh, o, 64);
@@ -395,7 +404,8 @@ TEST_F(GpuTest, ComputePassesSplitIntoSeveralDispatches) {
   const CovarianceMesh mesh = subdivide(make_sample("cone"), loop).mesh;
   SurfaceRenderer renderer;
   renderer.lower_device_limits(64, 0);
-  renderer.set_mesh(mesh, PlanOptions{Scheme::catmull_clark, 5, LoopBeta::loop, false});  // the thesis plans of depth 5: many rows
+  renderer.set_mesh(
+      mesh, PlanOptions{Scheme::catmull_clark, 5, LoopBeta::loop, false});  // the thesis plans of depth 5: many rows
   const int n_rows = renderer.tables().stencils.n_rows();
   ASSERT_GT(n_rows, 20 * 64 * 64);
   expect_points_match(renderer.read_points(), apply_stencils(renderer.tables().stencils, base_points(mesh)), "rebuild");
@@ -420,9 +430,13 @@ TEST_F(GpuTest, AMeshBeyondTheStorageLimitIsRefusedWithItsFigures) {
     ADD_FAILURE() << "accepted";
   } catch (const Error& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("the mesh (" + std::to_string(sphere.n_vertices()) + " vertices, " + std::to_string(sphere.n_faces()) +
-                        " faces) needs "), std::string::npos) << what;
-    EXPECT_NE(what.find(" KiB of plan points, more than the GPU's largest storage buffer (64.0 KiB)"), std::string::npos) << what;
+    EXPECT_NE(what.find("the mesh (" + std::to_string(sphere.n_vertices()) + " vertices, " +
+                        std::to_string(sphere.n_faces()) + " faces) needs "),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find(" KiB of plan points, more than the GPU's largest storage buffer (64.0 KiB)"),
+              std::string::npos)
+        << what;
     EXPECT_EQ(what.find('\n'), std::string::npos);
   }
   RenderTarget target(32, 32);  // the previous mesh is still drawn

@@ -22,8 +22,8 @@ namespace {
 using GpuTest = test::GlTest;
 
 bool flagged(const Image& color, int x, int y) {
-  return x >= 0 && y >= 0 && x < color.width && y < color.height && color.at(x, y, 0) > 0.99f && color.at(x, y, 1) < 0.01f &&
-         color.at(x, y, 2) > 0.99f;
+  return x >= 0 && y >= 0 && x < color.width && y < color.height && color.at(x, y, 0) > 0.99f &&
+         color.at(x, y, 1) < 0.01f && color.at(x, y, 2) > 0.99f;
 }
 
 int flagged_pixels(const Image& color) {
@@ -72,7 +72,8 @@ int pinholes(const Image& color, const Image& position, const Image& normal, con
         for (int dx = -1; dx <= 1; ++dx) {
           if (!dx && !dy) continue;
           const int xx = x + dx, yy = y + dy;
-          surrounded = surrounded && !flagged(color, xx, yy) && !background(color, xx, yy) && position.at(xx, yy, 3) >= 0.5f;
+          surrounded =
+              surrounded && !flagged(color, xx, yy) && !background(color, xx, yy) && position.at(xx, yy, 3) >= 0.5f;
           const Vec3 p(position.at(xx, yy, 0), position.at(xx, yy, 1), position.at(xx, yy, 2));
           const Vec3 n(normal.at(xx, yy, 0), normal.at(xx, yy, 1), normal.at(xx, yy, 2));
           const Vec3 ray = (p - Vec3(eye.x, eye.y, eye.z)).normalized();
@@ -107,7 +108,9 @@ DrawOptions flagging_options() {
   return o;
 }
 
-CovarianceMesh crack_test_mesh(const std::string& name) { return name == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name); }
+CovarianceMesh crack_test_mesh(const std::string& name) {
+  return name == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name);
+}
 
 // A closed mesh seen from outside shows no back face unless the tessellation cracks; the check fails
 // when neighbouring patches are given different edge levels on purpose. The cylinder, the pawn and
@@ -129,17 +132,20 @@ TEST_F(GpuTest, TessellationIsCrackFree) {
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
     for (int level = 1; level <= 64; level += level < 8 ? 1 : level < 32 ? 7 : 8) {  // 1..8, 15, 22, 29, 36, ..., 64
       o.level = float(level);
-      expect_no_crack(render_frame(renderer, camera, o, 160), mesh, 160, std::string(name) + "-level" + std::to_string(level));
+      expect_no_crack(render_frame(renderer, camera, o, 160), mesh, 160,
+                      std::string(name) + "-level" + std::to_string(level));
     }
     for (const float pixels : {1.0f, 4.0f, 13.0f}) {  // adaptive
       o.pixels = pixels;
-      expect_no_crack(render_frame(renderer, camera, o, 160), mesh, 160, std::string(name) + "-adaptive" + std::to_string(int(pixels)));
+      expect_no_crack(render_frame(renderer, camera, o, 160), mesh, 160,
+                      std::string(name) + "-adaptive" + std::to_string(int(pixels)));
     }
     if (std::string(name) == "pawn") continue;  // its patches are too small at this size for a mismatch to show
     o.pixels = 0.0f;
     o.level = 2.0f;
     o.debug_mismatch = true;
-    EXPECT_GT(flagged_pixels(render_frame(renderer, camera, o, 160).color), 0) << name << " with mismatched edge levels";
+    EXPECT_GT(flagged_pixels(render_frame(renderer, camera, o, 160).color), 0)
+        << name << " with mismatched edge levels";
   }
 }
 
@@ -176,7 +182,8 @@ TEST_P(PinholeTest, NoPinholeFromTwentyCameras) {
       o.pixels = setting < 0 ? -setting : 0.0f;
       const Frame f = render_frame(renderer, camera, o, 200);
       const int holes = f.holes(0.1 * diag * 160 / 200, name == "cone-concave" || name == "cone-plateau");
-      const std::string what = name + "-camera" + std::to_string(k) + (setting < 0 ? "-adaptive" : "-level" + std::to_string(int(setting)));
+      const std::string what =
+          name + "-camera" + std::to_string(k) + (setting < 0 ? "-adaptive" : "-level" + std::to_string(int(setting)));
       EXPECT_EQ(holes, 0) << what << " (yaw " << yaw << ", pitch " << pitch << "; see pinhole-" << what << ".png)";
       if (holes) write_image("pinhole-" + what + ".png", f.color);
       total += holes;
@@ -200,22 +207,24 @@ TEST_F(GpuTest, PinholeDetectorFindsOnePunchedPixel) {
   while (background(f.color, edge_x, 80)) ++edge_x;  // the first surface pixel of the middle row
   for (const auto& [x, expected] : {std::pair{80, 1}, std::pair{edge_x, 0}}) {
     Frame punched = f;
-    for (int c = 0; c < 3; ++c) punched.color.pixels[(size_t(80) * 160 + size_t(x)) * 4 + size_t(c)] = c == 0 ? 1.0f : 0.0f;
+    for (int c = 0; c < 3; ++c)
+      punched.color.pixels[(size_t(80) * 160 + size_t(x)) * 4 + size_t(c)] = c == 0 ? 1.0f : 0.0f;
     EXPECT_EQ(punched.holes(spread), expected) << "x " << x;
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Samples, PinholeTest,
-                         ::testing::ValuesIn([] {  // every built-in sample, and the open cylinder of quads and triangles
-                           std::vector<std::string> names = sample_names();
-                           names.push_back("open-cylinder");
-                           return names;
-                         }()),
-                         [](const auto& info) {
-                           std::string s = info.param;
-                           std::replace(s.begin(), s.end(), '-', '_');
-                           return s;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Samples, PinholeTest,
+    ::testing::ValuesIn([] {  // every built-in sample, and the open cylinder of quads and triangles
+      std::vector<std::string> names = sample_names();
+      names.push_back("open-cylinder");
+      return names;
+    }()),
+    [](const auto& info) {
+      std::string s = info.param;
+      std::replace(s.begin(), s.end(), '-', '_');
+      return s;
+    });
 
 // The exact form of the check above: every vertex the GPU tessellator puts on a patch edge inside
 // the mesh has a vertex of another patch at the same place (to float rounding), T-junctions of
@@ -243,7 +252,8 @@ int unmatched_edge_vertices(SurfaceRenderer& renderer, const CovarianceMesh& mes
           if (it == cells.end()) continue;
           for (const size_t j : it->second) {
             const TessellatedVertex& w = vertices[j];
-            const float d = std::hypot(w.position[0] - v.position[0], w.position[1] - v.position[1], w.position[2] - v.position[2]);
+            const float d =
+                std::hypot(w.position[0] - v.position[0], w.position[1] - v.position[1], w.position[2] - v.position[2]);
             matched = matched || (w.patch != v.patch && d < tolerance);
           }
         }

@@ -46,7 +46,9 @@ inline Viewport editor_view(const CovarianceMesh& mesh, int width = kWindowWidth
 /// 400), at which it first holds `count` of the mesh's vertices (a box selection of that many).
 inline float box_side_holding(const Viewport& view, glm::vec2 corner, const CovarianceMesh& mesh, size_t count) {
   float side = 4.0f;
-  while (side < 400.0f && vertices_in_box(view.camera, view.width, view.height, corner, corner + side, mesh).size() < count) side += 1.0f;
+  while (side < 400.0f &&
+         vertices_in_box(view.camera, view.width, view.height, corner, corner + side, mesh).size() < count)
+    side += 1.0f;
   return side;
 }
 
@@ -64,16 +66,25 @@ public:
                (mods.empty() ? "" : R"(, "mods": ")" + mods + "\"") + "}");
   }
   Events& drag(glm::vec2 from, glm::vec2 to, int steps = 6, const std::string& mods = "") {
-    return add(R"({"type": "drag", "from": )" + point(from) + R"(, "to": )" + point(to) + R"(, "steps": )" + std::to_string(steps) +
-               (mods.empty() ? "" : R"(, "mods": ")" + mods + "\"") + "}");
+    return add(R"({"type": "drag", "from": )" + point(from) + R"(, "to": )" + point(to) + R"(, "steps": )" +
+               std::to_string(steps) + (mods.empty() ? "" : R"(, "mods": ")" + mods + "\"") + "}");
   }
-  Events& press(glm::vec2 p) { return add(R"({"type": "press", "button": "left", "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) + "}"); }
-  Events& release(glm::vec2 p) { return add(R"({"type": "release", "button": "left", "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) + "}"); }
-  Events& move(glm::vec2 p) { return add(R"({"type": "move", "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) + "}"); }
+  Events& press(glm::vec2 p) {
+    return add(R"({"type": "press", "button": "left", "x": )" + std::to_string(p.x) + R"(, "y": )" +
+               std::to_string(p.y) + "}");
+  }
+  Events& release(glm::vec2 p) {
+    return add(R"({"type": "release", "button": "left", "x": )" + std::to_string(p.x) + R"(, "y": )" +
+               std::to_string(p.y) + "}");
+  }
+  Events& move(glm::vec2 p) {
+    return add(R"({"type": "move", "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) + "}");
+  }
   Events& key(const std::string& name) { return add(R"({"type": "key", "key": ")" + name + "\"}"); }
   Events& text(const std::string& typed) { return add(R"({"type": "text", "text": ")" + typed + "\"}"); }
   Events& scroll(glm::vec2 p, float steps) {
-    return add(R"({"type": "scroll", "steps": )" + std::to_string(steps) + R"(, "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) + "}");
+    return add(R"({"type": "scroll", "steps": )" + std::to_string(steps) + R"(, "x": )" + std::to_string(p.x) +
+               R"(, "y": )" + std::to_string(p.y) + "}");
   }
   Events& wait(int frames = 2) { return add(R"({"type": "wait", "frames": )" + std::to_string(frames) + "}"); }
   std::string json() const { return "{\"events\": [\n" + items_ + "\n]}\n"; }
@@ -84,12 +95,12 @@ private:
 
 /// Runs the editor on `mesh_file` in a width × height window with the events, then `extra` (e.g.
 /// --save F --screenshot G --stats H); the test folder is its configuration folder.
-inline CommandResult play_editor(const TempDir& dir, const std::string& mesh_file, const Events& events, int width, int height,
-                                 const std::string& extra) {
+inline CommandResult play_editor(const TempDir& dir, const std::string& mesh_file, const Events& events, int width,
+                                 int height, const std::string& extra) {
   const std::string file = dir.write("events.json", events.json());
   return run_command("XDG_CONFIG_HOME=" + dir.path().string() + " " +
-                     editor_command(mesh_file + " --size " + std::to_string(width) + "x" + std::to_string(height) + " --play " + file +
-                                    " " + extra));
+                     editor_command(mesh_file + " --size " + std::to_string(width) + "x" + std::to_string(height) +
+                                    " --play " + file + " " + extra));
 }
 
 }  // namespace gps::test

@@ -16,7 +16,8 @@ class GlTest : public ::testing::Test {
 protected:
   static void SetUpTestSuite() {
     const char* kind = std::getenv("GPSURF_TEST_CONTEXT");
-    context_ = create_offscreen_context(kind && std::string_view(kind) == "egl" ? ContextKind::egl : ContextKind::osmesa);
+    context_ =
+        create_offscreen_context(kind && std::string_view(kind) == "egl" ? ContextKind::egl : ContextKind::osmesa);
   }
   static void TearDownTestSuite() { context_.reset(); }
 

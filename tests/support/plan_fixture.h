@@ -24,7 +24,8 @@ struct PlannedMesh {
     points = apply_stencils(tables.stencils, base);
   }
   /// The thesis' approximate Catmull-Clark plans of the given depth (Bézier patches at extraordinary vertices).
-  PlannedMesh(CovarianceMesh m, int depth) : PlannedMesh(std::move(m), PlanOptions{Scheme::catmull_clark, depth, LoopBeta::loop, false}) {}
+  PlannedMesh(CovarianceMesh m, int depth)
+      : PlannedMesh(std::move(m), PlanOptions{Scheme::catmull_clark, depth, LoopBeta::loop, false}) {}
 };
 
 /// Largest distance, relative to the bounding-box diagonal, between the plans at each reference

@@ -17,7 +17,7 @@ namespace gps::test {
 struct SoakSettings {
   int width = 640, height = 480;
   int events = 300;
-  double k_sigma = 1.0;                // the editor's default sigma scale for handle positions
+  double k_sigma = 1.0;                 // the editor's default sigma scale for handle positions
   std::vector<std::string> drop_paths;  // files to drop: valid meshes and broken ones
 };
 
@@ -34,11 +34,52 @@ inline std::string random_events(const CovarianceMesh& mesh, const SoakSettings&
   const auto jitter = [&](glm::vec2 p, float r) { return p + glm::vec2(float(uniform(-r, r)), float(uniform(-r, r))); };
   const auto vertex_pixel = [&](int v) { return pixel_of(view, mesh.mean(size_t(v))); };
   const int n_vertices = int(mesh.n_vertices());
-  static const std::vector<std::string> keys = {"escape", "enter", "backspace", "delete", "tab", "home", "f", "o", "m", "e", "x", "y",
-                                                "z", "n", "kp1", "kp3", "kp5", "kp7", "ctrl+kp1", "ctrl+a", "alt+a", "ctrl+z",
-                                                "ctrl+shift+z", "ctrl+y", "ctrl+s", "f1", "f12", "space", "left", "right", "up", "down",
-                                                "shift+x", "shift+z", "period", "minus", "1", "5", "0", "a", "s", "g", "r", "h"};
-  static const std::vector<std::string> texts = {"0.25", "-1", "1e-300", "nan", "1e308", "0", "3", ".", "-", "e", "999999999"};
+  static const std::vector<std::string> keys = {"escape",
+                                                "enter",
+                                                "backspace",
+                                                "delete",
+                                                "tab",
+                                                "home",
+                                                "f",
+                                                "o",
+                                                "m",
+                                                "e",
+                                                "x",
+                                                "y",
+                                                "z",
+                                                "n",
+                                                "kp1",
+                                                "kp3",
+                                                "kp5",
+                                                "kp7",
+                                                "ctrl+kp1",
+                                                "ctrl+a",
+                                                "alt+a",
+                                                "ctrl+z",
+                                                "ctrl+shift+z",
+                                                "ctrl+y",
+                                                "ctrl+s",
+                                                "f1",
+                                                "f12",
+                                                "space",
+                                                "left",
+                                                "right",
+                                                "up",
+                                                "down",
+                                                "shift+x",
+                                                "shift+z",
+                                                "period",
+                                                "minus",
+                                                "1",
+                                                "5",
+                                                "0",
+                                                "a",
+                                                "s",
+                                                "g",
+                                                "r",
+                                                "h"};
+  static const std::vector<std::string> texts = {"0.25", "-1", "1e-300", "nan", "1e308",    "0",
+                                                 "3",    ".",  "-",      "e",   "999999999"};
   static const std::vector<std::string> buttons = {"left", "right", "middle"};
   Events events;
   for (int i = 0; i < s.events; ++i) {
@@ -56,8 +97,9 @@ inline std::string random_events(const CovarianceMesh& mesh, const SoakSettings&
       events.drag(a, jitter(a, 200.0f), 2 + pick(4), pick(2) ? "shift" : "");
     } else if (kind < 48) {  // orbit, pan (right or middle button, or left with alt)
       const glm::vec2 a = anywhere(), b = jitter(a, 150.0f);
-      events.add(R"({"type": "drag", "button": ")" + buttons[size_t(1 + pick(2))] + R"(", "from": )" + point(a) + R"(, "to": )" + point(b) +
-                 R"(, "steps": )" + std::to_string(1 + pick(5)) + (pick(3) == 0 ? R"(, "mods": "shift")" : "") + "}");
+      events.add(R"({"type": "drag", "button": ")" + buttons[size_t(1 + pick(2))] + R"(", "from": )" + point(a) +
+                 R"(, "to": )" + point(b) + R"(, "steps": )" + std::to_string(1 + pick(5)) +
+                 (pick(3) == 0 ? R"(, "mods": "shift")" : "") + "}");
     } else if (kind < 54) {  // a handle drag interrupted by keys: axis constraints, cancel, confirm
       const int v = pick(n_vertices);
       const HandleFrame f = handle_frame(mesh, v, s.k_sigma, view);
@@ -80,8 +122,8 @@ inline std::string random_events(const CovarianceMesh& mesh, const SoakSettings&
     } else if (kind < 95) {  // a click anywhere: panels, sliders, empty space
       const std::string button = buttons[size_t(pick(10) < 8 ? 0 : 1 + pick(2))];
       const glm::vec2 p = anywhere();
-      events.add(R"({"type": "click", "button": ")" + button + R"(", "x": )" + std::to_string(p.x) + R"(, "y": )" + std::to_string(p.y) +
-                 (pick(4) == 0 ? R"(, "mods": "shift")" : "") + "}");
+      events.add(R"({"type": "click", "button": ")" + button + R"(", "x": )" + std::to_string(p.x) + R"(, "y": )" +
+                 std::to_string(p.y) + (pick(4) == 0 ? R"(, "mods": "shift")" : "") + "}");
     } else {
       events.wait(1 + pick(3));
     }

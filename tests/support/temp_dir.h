@@ -13,9 +13,9 @@ class TempDir {
 public:
   TempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("gpsurf_" + std::string(info ? info->test_suite_name() : "t") + "_" + (info ? info->name() : "x") + "_" +
-             std::to_string(::getpid()));
+    path_ =
+        std::filesystem::temp_directory_path() / ("gpsurf_" + std::string(info ? info->test_suite_name() : "t") + "_" +
+                                                  (info ? info->name() : "x") + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }

@@ -56,19 +56,21 @@ inline CovarianceMesh prism_mesh(double sigma = 0.4) {
 /// The icosahedron of circumradius 1: 12 vertices of valence 5, 20 outward triangles.
 inline CovarianceMesh icosahedron_mesh(double sigma = 0.3) {
   const double g = (1 + std::sqrt(5.0)) / 2, s = 1 / std::sqrt(1 + g * g);
-  std::vector<Vec3> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                         {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<Vec3> p = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                         {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
   for (auto& x : p) x *= s;
-  std::vector<std::vector<int>> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                                         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                                         {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  std::vector<std::vector<int>> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                         {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                         {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                         {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
   return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "icosahedron");
 }
 
 /// A closed bipyramid: two apexes of valence n over a ring of n vertices of valence 4.
 inline CovarianceMesh bipyramid_mesh(int n, double sigma = 0.3) {
   std::vector<Vec3> p = {{0, 0, 1.2}, {0, 0, -0.9}};
-  for (int k = 0; k < n; ++k) p.emplace_back(std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n), 0.1 * std::sin(3.0 * k));
+  for (int k = 0; k < n; ++k)
+    p.emplace_back(std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n), 0.1 * std::sin(3.0 * k));
   std::vector<std::vector<int>> faces;
   for (int k = 0; k < n; ++k) {
     faces.push_back({0, 2 + k, 2 + (k + 1) % n});
@@ -109,7 +111,8 @@ inline CovarianceMesh open_cylinder_mesh(double sigma = 0.4) {
   p.emplace_back(0, 1.3, 0);
   std::vector<std::vector<int>> faces;
   for (int r = 0; r < 2; ++r)
-    for (int k = 0; k < 8; ++k) faces.push_back({r * 8 + k, r * 8 + (k + 1) % 8, (r + 1) * 8 + (k + 1) % 8, (r + 1) * 8 + k});
+    for (int k = 0; k < 8; ++k)
+      faces.push_back({r * 8 + k, r * 8 + (k + 1) % 8, (r + 1) * 8 + (k + 1) % 8, (r + 1) * 8 + k});
   for (int k = 0; k < 8; ++k) faces.push_back({24, 16 + k, 16 + (k + 1) % 8});
   return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "open-cylinder");
 }

@@ -41,8 +41,8 @@ Vec3 sorted_sigmas(const Mat3& c) { return Eigen::SelfAdjointEigenSolver<Mat3>(c
 
 // A drag applied as the editor applies it: each vertex's change to its Gaussian at the drag's start.
 struct AppliedDrag {
-  AppliedDrag(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Handle& grabbed, double k_sigma, const Viewport& view,
-              glm::vec2 start_pixel)
+  AppliedDrag(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Handle& grabbed, double k_sigma,
+              const Viewport& view, glm::vec2 start_pixel)
       : drag(mesh, vertices, grabbed, k_sigma, view, start_pixel), start(mesh) {}
   bool update(CovarianceMesh& mesh, const Viewport& view, glm::vec2 pixel, const DragModifiers& modifiers = {}) {
     const auto changes = drag.update(view, pixel, modifiers);
@@ -50,7 +50,8 @@ struct AppliedDrag {
     for (size_t i = 0; i < drag.vertices().size(); ++i) {
       const size_t v = size_t(drag.vertices()[i]);
       mesh.set_mean(v, (*changes)[i].apply_to_mean(start.mean(v)));
-      mesh.set_covariance(v, (*changes)[i].keeps_covariance() ? start.covariance(v) : (*changes)[i].apply_to_covariance(start.covariance(v)));
+      mesh.set_covariance(v, (*changes)[i].keeps_covariance() ? start.covariance(v)
+                                                              : (*changes)[i].apply_to_covariance(start.covariance(v)));
     }
     return true;
   }
@@ -106,7 +107,8 @@ TEST(AxisHandles, DraggingAnEndAlongTheAxisScalesItsSigma) {
       Vec3 expected = before;
       expected[axis] *= target;
       std::sort(expected.data(), expected.data() + 3);
-      EXPECT_LT((after - expected).cwiseAbs().maxCoeff(), 0.01 * expected.maxCoeff()) << "axis " << axis << " × " << target;
+      EXPECT_LT((after - expected).cwiseAbs().maxCoeff(), 0.01 * expected.maxCoeff())
+          << "axis " << axis << " × " << target;
       EXPECT_EQ(mesh.mean(0), test_mesh().mean(0));
       for (size_t v = 1; v < mesh.n_vertices(); ++v) EXPECT_EQ(mesh.covariance(v), test_mesh().covariance(v));
     }
@@ -142,7 +144,8 @@ TEST(AxisHandles, EveryDragKeepsCovariancesPositiveDefinite) {
   const HandleFrame f = handle_frame(mesh, 0, 2.0, view);
   const glm::vec2 start = pixel_of(view, f.end(0, 1));
   AppliedDrag drag(mesh, {0}, Handle{0, 0, 1}, 2.0, view, start);
-  for (const glm::vec2 to : {pixel_of(view, f.end(0, -1)), pixel_of(view, f.centre), start + glm::vec2(4000, -3000), glm::vec2(0, 0)}) {
+  for (const glm::vec2 to :
+       {pixel_of(view, f.end(0, -1)), pixel_of(view, f.centre), start + glm::vec2(4000, -3000), glm::vec2(0, 0)}) {
     if (!drag.update(mesh, view, to)) continue;
     EXPECT_TRUE(is_spd(mesh.covariance(0)));
     EXPECT_GT(Eigen::SelfAdjointEigenSolver<Mat3>(mesh.covariance(0)).eigenvalues().minCoeff(), 0.0);
@@ -199,8 +202,10 @@ TEST(AxisHandles, AScaleDragChangesOneSigmaAndKeepsTheFrameExactly) {
       const Vec3 image = mesh.covariance(0) * u;
       EXPECT_LT((image - image.dot(u) * u).norm(), 1e-9 * image.norm()) << "axis " << k;
       const double sigma = std::sqrt(u.dot(mesh.covariance(0) * u));
-      if (k == axis) EXPECT_GT(sigma, 2.0 * before.sigmas[k]);
-      else EXPECT_NEAR(sigma, before.sigmas[k], 1e-9 * before.sigmas[k]) << "axis " << k;
+      if (k == axis)
+        EXPECT_GT(sigma, 2.0 * before.sigmas[k]);
+      else
+        EXPECT_NEAR(sigma, before.sigmas[k], 1e-9 * before.sigmas[k]) << "axis " << k;
     }
     const HandleFrame during = drag.drag.frame(view);
     EXPECT_LT((during.axes.axes.col(axis) - before.axes.col(axis)).norm(), 1e-9);

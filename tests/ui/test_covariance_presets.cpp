@@ -34,7 +34,8 @@ TEST(CovariancePresets, IsotropicSharpenSoftenInferred) {
   CovarianceMesh mesh = make_sample("valence5");
   mesh.set_mean(3, mesh.mean(3) + Vec3(0.1, 0.2, 0.05));
   const std::vector<int> vs = {1, 3};
-  EXPECT_TRUE(preset_covariances(mesh, vs, CovariancePreset::isotropic, 0.2)[1].isApprox(0.04 * Mat3::Identity(), 1e-15));
+  EXPECT_TRUE(
+      preset_covariances(mesh, vs, CovariancePreset::isotropic, 0.2)[1].isApprox(0.04 * Mat3::Identity(), 1e-15));
   EXPECT_EQ(preset_covariances(mesh, vs, CovariancePreset::sharpen, 0)[0], 0.1 * mesh.covariance(1));
   EXPECT_EQ(preset_covariances(mesh, vs, CovariancePreset::soften, 0)[1], 10.0 * mesh.covariance(3));
   CovarianceMesh inferred = mesh;

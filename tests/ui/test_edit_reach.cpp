@@ -32,7 +32,8 @@ TEST(EditReach, ProportionalWeightsFollowTheNearestSelectedVertex) {
   options.falloff = Falloff::linear;
   const std::vector<ReachedVertex> reach = edit_reach(means, selected, options);
   std::map<int, ReachedVertex> by_vertex;
-  for (const ReachedVertex& r : reach) EXPECT_TRUE(by_vertex.emplace(r.vertex, r).second) << "reached twice: " << r.vertex;
+  for (const ReachedVertex& r : reach)
+    EXPECT_TRUE(by_vertex.emplace(r.vertex, r).second) << "reached twice: " << r.vertex;
   for (size_t v = 0; v < means.size(); ++v) {
     const double d0 = (means[v] - means[10]).norm(), d1 = (means[v] - means[200]).norm();
     const double d = std::min(d0, d1);

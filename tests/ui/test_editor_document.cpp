@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-
 #include "../support/temp_dir.h"
 #include "core/mesh/error.h"
 #include "core/io/mesh_io.h"
@@ -15,7 +14,8 @@ namespace {
 TEST(EditorDocument, AMalformedFileKeepsTheCurrentMesh) {
   const test::TempDir dir;
   write_mesh(dir.file("good.ply"), make_sample("cube"));
-  const std::string bad = dir.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n2\n");
+  const std::string bad =
+      dir.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n2\n");
   EditorDocument doc;
   doc.open(dir.file("good.ply"));
   doc.begin_edit();

@@ -21,7 +21,8 @@ TEST(EllipsoidScope, TheNeighbourhoodIsTheSelectionAndItsOneRing) {
   // Corner 6 = (1, 1, 1) shares an edge with the three corners that differ from it in one coordinate.
   std::vector<int> expected = {6};
   for (size_t v = 0; v < cube.n_vertices(); ++v)
-    if ((cube.mean(v) - cube.mean(6)).norm() > 1.9 && (cube.mean(v) - cube.mean(6)).norm() < 2.1) expected.push_back(int(v));
+    if ((cube.mean(v) - cube.mean(6)).norm() > 1.9 && (cube.mean(v) - cube.mean(6)).norm() < 2.1)
+      expected.push_back(int(v));
   std::sort(expected.begin(), expected.end());
   ASSERT_EQ(expected.size(), 4u);
   EXPECT_EQ(selection_neighbourhood(cube, {6}), expected);

@@ -23,7 +23,8 @@ TEST(EventScript, OneTransitionPerFrameAndDragsMoveFrameByFrame) {
     {"type": "wait", "frames": 3},
     {"type": "drag", "from": [100, 100], "to": [140, 60.5], "steps": 4},
     {"type": "key", "key": "ctrl+z"}
-  ]})", "test"));
+  ]})",
+                                                  "test"));
   int transitions = 0, moves_in_drag = 0;
   for (const auto& f : frames) {
     int t = 0;
@@ -44,7 +45,8 @@ TEST(EventScript, OneTransitionPerFrameAndDragsMoveFrameByFrame) {
   // The drag ends exactly where it was told, with fractional pixels kept.
   bool released_at_end = false;
   for (const auto& f : frames)
-    for (const auto& e : f) released_at_end = released_at_end || (e.type == Type::release && e.position == glm::vec2(140.0f, 60.5f));
+    for (const auto& e : f)
+      released_at_end = released_at_end || (e.type == Type::release && e.position == glm::vec2(140.0f, 60.5f));
   EXPECT_TRUE(released_at_end);
   // Three empty frames for the wait.
   int empty = 0;
@@ -64,10 +66,13 @@ TEST(EventScript, ErrorsNameTheFileAndTheEvent) {
   };
   EXPECT_NE(message("{").find("events.json: not valid JSON"), std::string::npos);
   EXPECT_NE(message("[]").find("events.json: expected"), std::string::npos);
-  EXPECT_NE(message(R"({"events": [{"type": "wait", "frames": 1}, {"type": "jump"}]})").find("events.json: event 1: unknown type 'jump'"),
+  EXPECT_NE(message(R"({"events": [{"type": "wait", "frames": 1}, {"type": "jump"}]})")
+                .find("events.json: event 1: unknown type 'jump'"),
             std::string::npos);
-  EXPECT_NE(message(R"({"events": [{"type": "key", "key": "ctrl+nokey"}]})").find("event 0: unknown key 'nokey'"), std::string::npos);
-  EXPECT_NE(message(R"({"events": [{"type": "press", "button": "fourth", "x": 1, "y": 2}]})").find("unknown button"), std::string::npos);
+  EXPECT_NE(message(R"({"events": [{"type": "key", "key": "ctrl+nokey"}]})").find("event 0: unknown key 'nokey'"),
+            std::string::npos);
+  EXPECT_NE(message(R"({"events": [{"type": "press", "button": "fourth", "x": 1, "y": 2}]})").find("unknown button"),
+            std::string::npos);
   EXPECT_NE(message(R"({"events": [{"type": "move", "x": 1}]})").find("event 0"), std::string::npos);
   EXPECT_THROW(EventScript::load("/nonexistent/events.json"), Error);
 }

@@ -82,7 +82,8 @@ protected:
     if (!listing) return std::nullopt;
     const float row_height = ImGui::GetFontSize() + 2 * ImGui::GetStyle().CellPadding.y;
     ImGuiIO& io = ImGui::GetIO();
-    io.MousePos = ImVec2(listing->ContentRegionRect.Min.x + 20, listing->ContentRegionRect.Min.y + row_height * (row + 0.5f));
+    io.MousePos =
+        ImVec2(listing->ContentRegionRect.Min.x + 20, listing->ContentRegionRect.Min.y + row_height * (row + 0.5f));
     std::optional<std::string> result = frames(20);  // past the double-click time of earlier clicks
     for (int i = 0; i < clicks; ++i) {
       for (const bool down : {true, false}) {
@@ -185,7 +186,7 @@ TEST_F(FileBrowserTest, DoubleClicksEnterFoldersAndOpenFiles) {
 
   browser.open(FileBrowser::Mode::open, "Open mesh", dir.path().string(), mesh_extensions);
   frames(3);
-  EXPECT_EQ(click_row(1, 1), std::nullopt);  // one click only selects
+  EXPECT_EQ(click_row(1, 1), std::nullopt);        // one click only selects
   EXPECT_EQ(press(ImGuiKey_Enter), std::nullopt);  // the name field no longer has the keyboard
   EXPECT_EQ(click_row(1, 2), path("a.ply"));
 }

@@ -22,9 +22,9 @@ TEST(Selection, ClickShiftClickAllNone) {
   EXPECT_EQ(s.active(), 2);  // the last clicked is gone: the first
   s.click(-1, true);         // shift-click on nothing keeps the selection
   EXPECT_EQ(s.vertices().size(), 2u);
-  s.click(5, false);         // a plain click replaces it
+  s.click(5, false);  // a plain click replaces it
   EXPECT_EQ(s.vertices(), std::vector<int>{5});
-  s.click(-1, false);        // a plain click on nothing clears it
+  s.click(-1, false);  // a plain click on nothing clears it
   EXPECT_TRUE(s.empty());
   s.select_all(4);
   EXPECT_EQ(s.vertices(), (std::vector<int>{0, 1, 2, 3}));

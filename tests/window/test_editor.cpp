@@ -57,8 +57,8 @@ DragPlan plan_drag(const CovarianceMesh& mesh, double factor) {
   const Vec3 end = f.end(plan.axis, 1), goal = f.centre + factor * (end - f.centre);
   plan.events = R"({"type": "click", "x": )" + std::to_string(pixel_of(view, f.centre).x) + R"(, "y": )" +
                 std::to_string(pixel_of(view, f.centre).y) + "},\n" + R"({"type": "wait", "frames": 2},)" + "\n" +
-                R"({"type": "drag", "from": )" + point(pixel_of(view, end)) + R"(, "to": )" + point(pixel_of(view, goal)) +
-                R"(, "steps": 6},)" + "\n" + R"({"type": "wait", "frames": 2})";
+                R"({"type": "drag", "from": )" + point(pixel_of(view, end)) + R"(, "to": )" +
+                point(pixel_of(view, goal)) + R"(, "steps": 6},)" + "\n" + R"({"type": "wait", "frames": 2})";
   return plan;
 }
 
@@ -140,15 +140,17 @@ TEST_F(EditorTest, UndoAfterTheDragRestoresTheOriginalFileExactly) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(read_text_file(dir_.file("undone.ply")), read_text_file(dir_.file("original.ply")));
   // And redo brings the drag back.
-  const auto redo = play(plan.events + ",\n" + R"({"type": "key", "key": "ctrl+z"}, {"type": "key", "key": "ctrl+shift+z"})",
-                         "--save " + dir_.file("redone.ply"));
+  const auto redo =
+      play(plan.events + ",\n" + R"({"type": "key", "key": "ctrl+z"}, {"type": "key", "key": "ctrl+shift+z"})",
+           "--save " + dir_.file("redone.ply"));
   ASSERT_EQ(redo.exit_code, 0) << redo.output;
   EXPECT_NE(read_text_file(dir_.file("redone.ply")), read_text_file(dir_.file("original.ply")));
   EXPECT_NE(read_mesh(dir_.file("redone.ply")).covariance(kVertex), original_.covariance(kVertex));
 }
 
 TEST_F(EditorTest, AMalformedFileIsReportedAndTheMeshStays) {
-  const std::string bad = dir_.write("broken.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nend_header\n1\n");
+  const std::string bad =
+      dir_.write("broken.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nend_header\n1\n");
   const auto r = play(R"({"type": "drop", "paths": [")" + bad + R"("]}, {"type": "wait", "frames": 2})",
                       "--save " + dir_.file("kept.ply") + " --screenshot " + dir_.file("error.png"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -158,7 +160,8 @@ TEST_F(EditorTest, AMalformedFileIsReportedAndTheMeshStays) {
   const Image shot = read_image(dir_.file("error.png"));
   int red = 0;
   for (int y = shot.height - 24; y < shot.height; ++y)
-    for (int x = 0; x < shot.width; ++x) red += shot.at(x, y, 0) > 0.8f && shot.at(x, y, 1) < 0.5f && shot.at(x, y, 2) < 0.5f;
+    for (int x = 0; x < shot.width; ++x)
+      red += shot.at(x, y, 0) > 0.8f && shot.at(x, y, 1) < 0.5f && shot.at(x, y, 2) < 0.5f;
   EXPECT_GT(red, 50) << "no error shown in the status bar";
 }
 
@@ -166,16 +169,18 @@ TEST_F(EditorTest, OpeningAnotherMeshWithUnsavedChangesAsksFirst) {
   write_mesh(dir_.file("other.ply"), make_sample("torus"));
   const DragPlan plan = plan_drag(original_, 1.5);
   // Drop another mesh after the drag: the editor asks and holds the open back; Escape cancels.
-  const auto r = play(plan.events + ",\n" + R"({"type": "drop", "paths": [")" + dir_.file("other.ply") +
-                          R"("]}, {"type": "wait", "frames": 3}, {"type": "key", "key": "escape"}, {"type": "wait", "frames": 2})",
-                      "--save " + dir_.file("still.ply"));
+  const auto r =
+      play(plan.events + ",\n" + R"({"type": "drop", "paths": [")" + dir_.file("other.ply") +
+               R"("]}, {"type": "wait", "frames": 3}, {"type": "key", "key": "escape"}, {"type": "wait", "frames": 2})",
+           "--save " + dir_.file("still.ply"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const CovarianceMesh still = read_mesh(dir_.file("still.ply"));
   EXPECT_EQ(still.n_vertices(), original_.n_vertices());
   EXPECT_NE(still.covariance(kVertex), original_.covariance(kVertex));  // the edit is still there
   // Without changes the same drop opens the other mesh at once.
-  const auto clean = play(R"({"type": "drop", "paths": [")" + dir_.file("other.ply") + R"("]}, {"type": "wait", "frames": 2})",
-                          "--save " + dir_.file("opened.ply"));
+  const auto clean =
+      play(R"({"type": "drop", "paths": [")" + dir_.file("other.ply") + R"("]}, {"type": "wait", "frames": 2})",
+           "--save " + dir_.file("opened.ply"));
   ASSERT_EQ(clean.exit_code, 0) << clean.output;
   EXPECT_EQ(read_mesh(dir_.file("opened.ply")).n_vertices(), make_sample("torus").n_vertices());
 }

@@ -24,9 +24,9 @@
 namespace gps {
 namespace {
 
-using test::Events;
 using test::artefact;
 using test::editor_view;
+using test::Events;
 using test::pixel_of;
 
 constexpr int kWidth = test::kWindowWidth, kHeight = test::kWindowHeight;
@@ -46,13 +46,16 @@ protected:
   }
   // Plays the events, saves; then plays them again with Ctrl+Z and checks the file is the original.
   CovarianceMesh play_and_undo(const Events& events, int width = kWidth, int height = kHeight) {
-    const auto r = test::play_editor(dir_, dir_.file("original.ply"), events, width, height, "--save " + dir_.file("edited.ply"));
+    const auto r =
+        test::play_editor(dir_, dir_.file("original.ply"), events, width, height, "--save " + dir_.file("edited.ply"));
     EXPECT_EQ(r.exit_code, 0) << r.output;
     Events undo = events;
     undo.key("ctrl+z").wait();
-    const auto u = test::play_editor(dir_, dir_.file("original.ply"), undo, width, height, "--save " + dir_.file("undone.ply"));
+    const auto u =
+        test::play_editor(dir_, dir_.file("original.ply"), undo, width, height, "--save " + dir_.file("undone.ply"));
     EXPECT_EQ(u.exit_code, 0) << u.output;
-    EXPECT_EQ(read_text_file(dir_.file("undone.ply")), read_text_file(dir_.file("original.ply"))) << "one undo step restores the file";
+    EXPECT_EQ(read_text_file(dir_.file("undone.ply")), read_text_file(dir_.file("original.ply")))
+        << "one undo step restores the file";
     return read_mesh(dir_.file("edited.ply"));
   }
   void expect_others_unchanged(const CovarianceMesh& edited, const std::vector<int>& changed) {
@@ -83,7 +86,10 @@ TEST_F(EditorEditing, AScaleDragChangesExactlyOneSigmaAndKeepsTheFrame) {
   const Viewport view = editor_view(original_);
   const Vec3 end = f.end(axis, 1);
   Events events;
-  events.click(pixel_of(view, f.centre)).wait().drag(pixel_of(view, end), pixel_of(view, f.centre + 0.6 * (end - f.centre))).wait();
+  events.click(pixel_of(view, f.centre))
+      .wait()
+      .drag(pixel_of(view, end), pixel_of(view, f.centre + 0.6 * (end - f.centre)))
+      .wait();
   const CovarianceMesh edited = play_and_undo(events);
   const EllipsoidAxes before = ellipsoid_axes(original_.covariance(kVertex));
   const Mat3& c = edited.covariance(kVertex);
@@ -91,8 +97,10 @@ TEST_F(EditorEditing, AScaleDragChangesExactlyOneSigmaAndKeepsTheFrame) {
     const Vec3 u = before.axes.col(k), image = c * u;
     EXPECT_LT((image - image.dot(u) * u).norm(), 1e-9 * image.norm()) << "the frame turned (axis " << k << ")";
     const double sigma = std::sqrt(u.dot(image));
-    if (k == axis) EXPECT_NEAR(sigma, 0.6 * before.sigmas[k], 0.01 * before.sigmas[k]);
-    else EXPECT_NEAR(sigma, before.sigmas[k], 1e-9 * before.sigmas[k]) << "axis " << k;
+    if (k == axis)
+      EXPECT_NEAR(sigma, 0.6 * before.sigmas[k], 0.01 * before.sigmas[k]);
+    else
+      EXPECT_NEAR(sigma, before.sigmas[k], 1e-9 * before.sigmas[k]) << "axis " << k;
   }
   expect_others_unchanged(edited, {kVertex});
   EXPECT_EQ(edited.mean(kVertex), original_.mean(kVertex));
@@ -103,17 +111,26 @@ TEST_F(EditorEditing, ATurnKeepsEverySigmaAndShiftScalesAllThree) {
   const Viewport view = editor_view(original_);
   const glm::vec2 start = pixel_of(view, f.end(axis, 1)), along = glm::normalize(start - pixel_of(view, f.centre));
   Events turn;
-  turn.click(pixel_of(view, f.centre)).wait().drag(start, start + 40.0f * glm::vec2(-along.y, along.x) + 10.0f * along).wait();
+  turn.click(pixel_of(view, f.centre))
+      .wait()
+      .drag(start, start + 40.0f * glm::vec2(-along.y, along.x) + 10.0f * along)
+      .wait();
   const CovarianceMesh turned = play_and_undo(turn);
-  const auto sigmas = [](const Mat3& c) { return Vec3(Eigen::SelfAdjointEigenSolver<Mat3>(c).eigenvalues().cwiseSqrt()); };
+  const auto sigmas = [](const Mat3& c) {
+    return Vec3(Eigen::SelfAdjointEigenSolver<Mat3>(c).eigenvalues().cwiseSqrt());
+  };
   const Vec3 before = sigmas(original_.covariance(kVertex));
-  EXPECT_GT((turned.covariance(kVertex) - original_.covariance(kVertex)).norm(), 1e-3 * original_.covariance(kVertex).norm());
+  EXPECT_GT((turned.covariance(kVertex) - original_.covariance(kVertex)).norm(),
+            1e-3 * original_.covariance(kVertex).norm());
   EXPECT_LT((sigmas(turned.covariance(kVertex)) - before).cwiseAbs().maxCoeff(), 1e-9 * before.maxCoeff());
   expect_others_unchanged(turned, {kVertex});
 
   const Vec3 end = f.end(axis, 1);
   Events uniform;
-  uniform.click(pixel_of(view, f.centre)).wait().drag(pixel_of(view, end), pixel_of(view, f.centre + 1.5 * (end - f.centre)), 6, "shift").wait();
+  uniform.click(pixel_of(view, f.centre))
+      .wait()
+      .drag(pixel_of(view, end), pixel_of(view, f.centre + 1.5 * (end - f.centre)), 6, "shift")
+      .wait();
   const CovarianceMesh scaled = play_and_undo(uniform);
   const Vec3 ratio = sigmas(scaled.covariance(kVertex)).cwiseQuotient(before);
   EXPECT_NEAR(ratio[0], 1.5, 0.02);
@@ -127,7 +144,14 @@ TEST_F(EditorEditing, AMoveAlongOneAxisChangesOneCoordinateAndATypedDistanceIsEx
   const Viewport view = editor_view(original_);
   const glm::vec2 centre = pixel_of(view, f.centre);
   Events along_z;
-  along_z.click(centre).wait().press(centre).move(centre + glm::vec2(4, -6)).key("z").move(centre + glm::vec2(10, -40)).release(centre + glm::vec2(10, -40)).wait();
+  along_z.click(centre)
+      .wait()
+      .press(centre)
+      .move(centre + glm::vec2(4, -6))
+      .key("z")
+      .move(centre + glm::vec2(10, -40))
+      .release(centre + glm::vec2(10, -40))
+      .wait();
   const CovarianceMesh moved = play_and_undo(along_z);
   EXPECT_GT(std::abs(moved.mean(kVertex).z() - original_.mean(kVertex).z()), 0.05);
   EXPECT_EQ(moved.mean(kVertex).x(), original_.mean(kVertex).x());
@@ -136,7 +160,15 @@ TEST_F(EditorEditing, AMoveAlongOneAxisChangesOneCoordinateAndATypedDistanceIsEx
   expect_others_unchanged(moved, {kVertex});
 
   Events typed;
-  typed.click(centre).wait().press(centre).move(centre + glm::vec2(5, 5)).key("y").text("-0.25").key("enter").release(centre + glm::vec2(5, 5)).wait();
+  typed.click(centre)
+      .wait()
+      .press(centre)
+      .move(centre + glm::vec2(5, 5))
+      .key("y")
+      .text("-0.25")
+      .key("enter")
+      .release(centre + glm::vec2(5, 5))
+      .wait();
   const CovarianceMesh exact = play_and_undo(typed);
   EXPECT_NEAR(exact.mean(kVertex).y() - original_.mean(kVertex).y(), -0.25, 1e-6);  // the file keeps floats
   EXPECT_EQ(exact.mean(kVertex).x(), original_.mean(kVertex).x());
@@ -149,11 +181,22 @@ TEST_F(EditorEditing, AMirroredEditChangesTheMirrorVertexByTheMirroredAmount) {
   const glm::vec2 centre = pixel_of(view, f.centre);
   int partner = -1;
   for (size_t v = 0; v < original_.n_vertices(); ++v)
-    if ((original_.mean(v) - Vec3(-original_.mean(kVertex).x(), original_.mean(kVertex).y(), original_.mean(kVertex).z())).norm() < 1e-9)
+    if ((original_.mean(v) -
+         Vec3(-original_.mean(kVertex).x(), original_.mean(kVertex).y(), original_.mean(kVertex).z()))
+            .norm() < 1e-9)
       partner = int(v);
   ASSERT_GE(partner, 0);
   Events events;
-  events.key("m").click(centre).wait().press(centre).move(centre + glm::vec2(5, 5)).key("x").text("0.3").key("enter").release(centre).wait();
+  events.key("m")
+      .click(centre)
+      .wait()
+      .press(centre)
+      .move(centre + glm::vec2(5, 5))
+      .key("x")
+      .text("0.3")
+      .key("enter")
+      .release(centre)
+      .wait();
   const CovarianceMesh edited = play_and_undo(events);
   EXPECT_NEAR(edited.mean(kVertex).x() - original_.mean(kVertex).x(), 0.3, 1e-6);
   EXPECT_NEAR(edited.mean(size_t(partner)).x() - original_.mean(size_t(partner)).x(), -0.3, 1e-6);
@@ -177,7 +220,16 @@ TEST_F(EditorEditing, AProportionalEditMovesTheVerticesInsideTheRadiusByTheFallo
   const glm::vec2 centre = pixel_of(view, original_.mean(size_t(vertex)));
   ASSERT_EQ(pick_vertex(view.camera, view.width, view.height, centre, original_, 8.0f), vertex);
   Events events;
-  events.key("o").click(centre).wait().press(centre).move(centre + glm::vec2(3, 6)).key("z").text("0.3").key("enter").release(centre).wait();
+  events.key("o")
+      .click(centre)
+      .wait()
+      .press(centre)
+      .move(centre + glm::vec2(3, 6))
+      .key("z")
+      .text("0.3")
+      .key("enter")
+      .release(centre)
+      .wait();
   const CovarianceMesh edited = play_and_undo(events);
   const double radius = 0.1 * bounding_box_diagonal(original_);  // the editor's default radius
   int inside = 0;
@@ -224,7 +276,8 @@ TEST_F(EditorEditing, ScreenshotsOfAMultiSelectionAndOfFramingBesideThePanels) {
 
   Events home;
   home.wait(3).key("home").wait(3);
-  const auto framed = test::play_editor(dir_, dir_.file("original.ply"), home, 900, 600, "--screenshot " + artefact("torus_framed.png"));
+  const auto framed = test::play_editor(dir_, dir_.file("original.ply"), home, 900, 600,
+                                        "--screenshot " + artefact("torus_framed.png"));
   ASSERT_EQ(framed.exit_code, 0) << framed.output;
   // The surface (warm clay) lies left of the panels, which start at about 900 − 10 − 340.
   const Image shot = read_image(artefact("torus_framed.png"));
@@ -249,8 +302,9 @@ TEST_F(EditorEditing, AProportionalDragOnTheLargeSphere) {
   events.key("o").click(centre).wait().press(centre).move(centre + glm::vec2(1, -4)).key("y").scroll(centre, -4.0f);
   for (int i = 1; i <= 12; ++i) events.move(centre + glm::vec2(1.0f, -4.0f - 3.0f * float(i))).wait(1);
   events.wait();
-  const auto r = test::play_editor(dir_, dir_.file("original.ply"), events, kWidth, kHeight,
-                                   "--screenshot " + artefact("proportional_sphere.png") + " --stats " + artefact("proportional_sphere.json"));
+  const auto r = test::play_editor(
+      dir_, dir_.file("original.ply"), events, kWidth, kHeight,
+      "--screenshot " + artefact("proportional_sphere.png") + " --stats " + artefact("proportional_sphere.json"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json stats = nlohmann::json::parse(read_text_file(artefact("proportional_sphere.json")));
   EXPECT_GT(stats.at("last_edit_vertices").get<int>(), 500);

@@ -80,8 +80,8 @@ TEST_F(EditorViews, TheStatisticsOverlayKeepsClearOfTheGizmo) {
   ASSERT_LT(glm::length(at - wanted), 1.0f);
 
   Events select;
-  select.add(R"({"type": "drag", "button": "right", "mods": "shift", "from": )" + test::point(from) + R"(, "to": )" + test::point(to) +
-             R"(, "steps": 6})");
+  select.add(R"({"type": "drag", "button": "right", "mods": "shift", "from": )" + test::point(from) + R"(, "to": )" +
+             test::point(to) + R"(, "steps": 6})");
   select.wait().click(at).wait(3);
   Events shown = select;
   shown.move(glm::vec2(480.0f, 600.0f)).wait(2);  // the cursor off the gizmo: its centre dot white, not lit
@@ -113,7 +113,8 @@ TEST_F(EditorViews, TheGizmoOfAMultiSelectionAtItsCentroid) {
   const Viewport view = editor_view(original_);
   const glm::vec2 corner(430.0f, 330.0f);
   const float side = test::box_side_holding(view, corner, original_, 12);
-  const std::vector<int> selected = vertices_in_box(view.camera, view.width, view.height, corner, corner + side, original_);
+  const std::vector<int> selected =
+      vertices_in_box(view.camera, view.width, view.height, corner, corner + side, original_);
   ASSERT_EQ(selected.size(), 12u);
   Vec3 centroid = Vec3::Zero();
   for (const int v : selected) centroid += original_.mean(size_t(v)) / 12.0;
@@ -122,7 +123,8 @@ TEST_F(EditorViews, TheGizmoOfAMultiSelectionAtItsCentroid) {
   Events events;
   events.drag(corner, corner + side, 8).wait().drag(pivot, pivot + glm::vec2(0.0f, -40.0f), 8).wait();
   write_settings(R"({"pivot": 1})");
-  const auto r = play(events, "--save " + dir_.file("centroid.ply") + " --screenshot " + artefact("pivot_centroid.png"));
+  const auto r =
+      play(events, "--save " + dir_.file("centroid.ply") + " --screenshot " + artefact("pivot_centroid.png"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const CovarianceMesh moved = read_mesh(dir_.file("centroid.ply"));
   const Vec3 shift = moved.mean(size_t(selected[0])) - original_.mean(size_t(selected[0]));
@@ -228,7 +230,13 @@ TEST_F(EditorViews, InspectorFieldsHoldFullPrecisionWhileEdited) {
     if ((original_.mean(v) - Vec3(1, -1, 1)).norm() < 1e-12) below = int(v);
   ASSERT_GE(below, 0);
   Events mixed = select;
-  mixed.click(pixel_of(view, original_.mean(size_t(below))), "shift").wait(3).click(kMeanY).wait(2).text("0.1").key("enter").wait(2);
+  mixed.click(pixel_of(view, original_.mean(size_t(below))), "shift")
+      .wait(3)
+      .click(kMeanY)
+      .wait(2)
+      .text("0.1")
+      .key("enter")
+      .wait(2);
   ASSERT_EQ(play(mixed, "--save " + dir_.file("mixed.ply")).exit_code, 0);
   const CovarianceMesh both = read_mesh(dir_.file("mixed.ply"));
   EXPECT_EQ(both.mean(6).y(), 0.1);
