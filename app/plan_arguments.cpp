@@ -1,27 +1,8 @@
 #include "app/plan_arguments.h"
 
-#include "core/mesh/error.h"
-
 namespace gps {
 
-PlanOptions PlanArguments::options() const {
-  PlanOptions o;
-  if (scheme == "loop")
-    o.scheme = Scheme::loop;
-  else if (scheme == "catmull-clark")
-    o.scheme = Scheme::catmull_clark;
-  else if (scheme != "auto")
-    throw usage_error("scheme must be auto, loop or catmull-clark, got '" + scheme + "'");
-  if (loop_beta != "loop" && loop_beta != "warren")
-    throw usage_error("loop-beta must be loop or warren, got '" + loop_beta + "'");
-  o.loop_beta = loop_beta == "warren" ? LoopBeta::warren : LoopBeta::loop;
-  o.exact = !approximate;
-  if (approximate) o.depth = 3;
-  if (depth >= 0) o.depth = depth;
-  if (o.depth < (approximate ? 1 : 0) || o.depth > 8)
-    throw usage_error("depth must be " + std::string(approximate ? "1" : "0") + "..8, got " + std::to_string(depth));
-  return o;
-}
+PlanOptions PlanArguments::options() const { return plan_options_named(scheme, loop_beta, depth, approximate); }
 
 void add_plan_arguments(CLI::App* cmd, PlanArguments& a) {
   cmd->add_option(

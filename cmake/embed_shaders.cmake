@@ -1,4 +1,5 @@
-# Turns GLSL files into C++ string constants: cmake -DOUT=<header> -DROOT=<source dir> -DSOURCES=<a|b|...> -P embed_shaders.cmake
+# Turns GLSL files into C++ string constants:
+# cmake -DOUT=<header> -DROOT=<source dir> -DSOURCES=<a|b|...> -P embed_shaders.cmake
 string(REPLACE "|" ";" SOURCES "${SOURCES}")
 set(text "// Generated from shaders/*.glsl by cmake/embed_shaders.cmake; do not edit.\n#pragma once\n\nnamespace gps::shaders {\n")
 foreach(source ${SOURCES})

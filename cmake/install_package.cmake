@@ -1,5 +1,5 @@
-# install(): the core library (and the GL library when built), its headers, the programs, and the
-# CMake package `gpsurf` (find_package(gpsurf 0.2) gives gpsurf::core, and gpsurf::render where built).
+# install(): the core library, its headers, the programs, and the CMake package `gpsurf`
+# (find_package(gpsurf 0.2) gives gpsurf::core). The Python module installs itself (python/).
 include(CMakePackageConfigHelpers)
 set(GPSURF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/gpsurf)
 

@@ -3,11 +3,31 @@
 #include <algorithm>
 
 #include "core/mesh/dual_map.h"
+#include "core/mesh/error.h"
 #include "core/plans/loop_plan_builder.h"
 #include "core/plans/patch_adjacency.h"
 #include "core/reference/reference_subdivision.h"
 
 namespace gps {
+
+PlanOptions plan_options_named(const std::string& scheme, const std::string& loop_beta, int depth, bool approximate) {
+  PlanOptions o;
+  if (scheme == "loop")
+    o.scheme = Scheme::loop;
+  else if (scheme == "catmull-clark")
+    o.scheme = Scheme::catmull_clark;
+  else if (scheme != "auto")
+    throw usage_error("scheme must be auto, loop or catmull-clark, got '" + scheme + "'");
+  if (loop_beta != "loop" && loop_beta != "warren")
+    throw usage_error("loop-beta must be loop or warren, got '" + loop_beta + "'");
+  o.loop_beta = loop_beta == "warren" ? LoopBeta::warren : LoopBeta::loop;
+  o.exact = !approximate;
+  if (approximate) o.depth = 3;  // the thesis' plans
+  if (depth >= 0) o.depth = depth;
+  if (o.depth < (approximate ? 1 : 0) || o.depth > 8)
+    throw usage_error("depth must be " + std::string(approximate ? "1" : "0") + "..8, got " + std::to_string(depth));
+  return o;
+}
 
 Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
   if (options.scheme) return *options.scheme;

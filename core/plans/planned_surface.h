@@ -1,8 +1,9 @@
 #pragma once
-// The planned surface of a covariance mesh (DESIGN.md §2): its plan and stencil tables, built once
+// The planned surface of a covariance mesh (docs/design.md §2): its plan and stencil tables, built once
 // per topology by the scheme that fits the mesh, and the 9D plan points, kept up to date by edits.
 // The renderer uploads these tables as they are (as OpenSubdiv's Osd takes Far's tables).
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
@@ -13,8 +14,8 @@
 
 namespace gps {
 
-/// The depth of exact Catmull-Clark plans unless asked otherwise: measured fastest at equal
-/// exactness (issue 11's closing note; gpsurf bench --render --depth N).
+/// The depth of exact Catmull-Clark plans unless asked otherwise: the depth trades stencil rows for
+/// cheaper evaluation, and this one renders fastest at equal exactness (gpsurf bench --render --depth N).
 constexpr int kExactPlanDepth = 2;
 
 struct PlanOptions {
@@ -24,6 +25,12 @@ struct PlanOptions {
   LoopBeta loop_beta = LoopBeta::loop;
   bool exact = true;  // Catmull-Clark: extraordinary vertices evaluated exactly (Loop's always are)
 };
+
+/// The options the command line and Python name: scheme "auto" | "loop" | "catmull-clark", loop_beta
+/// "loop" | "warren", depth −1 for the default, approximate for the thesis' Bézier plans. Throws a usage
+/// error for an unknown name or a depth out of range.
+PlanOptions plan_options_named(const std::string& scheme, const std::string& loop_beta, int depth = -1,
+                               bool approximate = false);
 
 /// The scheme `options` give for this mesh.
 Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options);

@@ -1,0 +1,14 @@
+#pragma once
+// The parts of the Python module `gpsurf`, each adding its functions and classes to it.
+#include <pybind11/pybind11.h>
+
+namespace gps::python {
+
+/// Mesh, read, samples, infer, subdivide.
+void add_mesh_bindings(pybind11::module_& m);
+/// Surface (plans and their evaluation), tessellate.
+void add_surface_bindings(pybind11::module_& m);
+/// render, read_image, write_image (the GPU renderer, off-screen).
+void add_render_bindings(pybind11::module_& m);
+
+}  // namespace gps::python

@@ -1,0 +1,137 @@
+// gpsurf.Mesh and what makes or transforms one: read, sample, infer, subdivide.
+#include <pybind11/stl.h>
+
+#include "core/io/mesh_io.h"
+#include "core/mesh/covariance_mesh.h"
+#include "core/mesh/error.h"
+#include "core/mesh/inference.h"
+#include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/samples.h"
+#include "core/plans/patch_layout.h"
+#include "core/reference/reference_subdivision.h"
+#include "python/arrays.h"
+#include "python/bindings.h"
+#include "core/plans/planned_surface.h"
+
+namespace gps::python {
+namespace {
+
+std::vector<std::vector<int>> faces_of(const CovarianceMesh& m) {
+  std::vector<std::vector<int>> faces;
+  faces.reserve(m.n_faces());
+  for (const auto f : m.mesh.faces()) faces.push_back(face_vertices(m.mesh, f));
+  return faces;
+}
+
+std::vector<Vec3> means_of(const CovarianceMesh& m) {
+  std::vector<Vec3> means(m.n_vertices());
+  for (size_t i = 0; i < means.size(); ++i) means[i] = m.mean(i);
+  return means;
+}
+
+// A mesh from arrays; covariances inferred (GPS paper Eq. 16-17, bias 0.05) when not given.
+CovarianceMesh make_mesh(const DoubleArray& positions, const std::vector<std::vector<int>>& faces,
+                         const std::optional<DoubleArray>& covariances) {
+  const std::vector<Vec3> means = array_to_rows(positions, "positions");
+  std::vector<Mat3> sigmas(means.size(), Mat3::Identity());
+  if (covariances) {
+    sigmas = array_to_matrices(*covariances, "covariances");
+    if (sigmas.size() != means.size())
+      throw py::value_error("covariances: " + std::to_string(sigmas.size()) + " matrices for " +
+                            std::to_string(means.size()) + " positions");
+  }
+  CovarianceMesh m = make_covariance_mesh(means, sigmas, faces);
+  if (!covariances) infer_covariances(m);
+  validate_gaussians(m);
+  return m;
+}
+
+
+
+}  // namespace
+
+void add_mesh_bindings(py::module_& m) {
+  py::class_<CovarianceMesh>(m, "Mesh", "A covariance mesh: a polygon mesh whose every vertex carries a 3D Gaussian")
+      .def(py::init(&make_mesh), py::arg("positions"), py::arg("faces"), py::arg("covariances") = py::none(),
+           "A mesh from an n x 3 array of positions, a list of faces (vertex index lists, counted from 0) and an "
+           "n x 3 x 3 array of covariances (inferred from the faces, GPS paper Eq. 16-17, when not given)")
+      .def_property_readonly("n_vertices", &CovarianceMesh::n_vertices)
+      .def_property_readonly("n_faces", &CovarianceMesh::n_faces)
+      .def_property(
+          "positions", [](const CovarianceMesh& c) { return rows_to_array(means_of(c)); },
+          [](CovarianceMesh& c, const DoubleArray& a) {
+            const auto rows = array_to_rows(a, "positions");
+            if (rows.size() != c.n_vertices()) throw py::value_error("positions: expected " + std::to_string(c.n_vertices()) + " rows");
+            CovarianceMesh edited = c;
+            for (size_t i = 0; i < rows.size(); ++i) edited.set_mean(i, rows[i]);
+            validate_gaussians(edited);
+            c = std::move(edited);
+          },
+          "the means, an n x 3 array (a copy; assign an array to change them)")
+      .def_property(
+          "covariances", [](const CovarianceMesh& c) { return matrices_to_array(c.covariances); },
+          [](CovarianceMesh& c, const DoubleArray& a) {
+            auto matrices = array_to_matrices(a, "covariances");
+            if (matrices.size() != c.n_vertices()) throw py::value_error("covariances: expected " + std::to_string(c.n_vertices()) + " matrices");
+            CovarianceMesh edited = c;
+            edited.covariances = std::move(matrices);
+            validate_gaussians(edited);
+            c = std::move(edited);
+          },
+          "the covariances, an n x 3 x 3 array (a copy; assign an array to change them)")
+      .def_property_readonly("faces", &faces_of, "the faces as lists of vertex indices (from 0)")
+      .def(
+          "write", [](const CovarianceMesh& c, const std::string& path, bool binary) { write_mesh(path, c, binary); },
+          py::arg("path"), py::arg("binary") = false,
+          "Writes the mesh: .ply keeps the covariances exactly, .obj positions and faces only")
+      .def("copy", [](const CovarianceMesh& c) { return c; })
+      .def("__repr__", [](const CovarianceMesh& c) {
+        return "<gpsurf.Mesh: " + std::to_string(c.n_vertices()) + " vertices, " + std::to_string(c.n_faces()) + " faces>";
+      });
+
+  m.def(
+      "read",
+      [](const std::string& path, const std::string& covariance, double bias, double isotropic) {
+        ImportOptions o;
+        if (covariance != "infer" && covariance != "isotropic")
+          throw py::value_error("covariance: expected 'infer' or 'isotropic', got '" + covariance + "'");
+        o.covariance = covariance == "infer" ? ImportOptions::Covariance::infer : ImportOptions::Covariance::isotropic;
+        o.bias = bias;
+        o.isotropic_scale = isotropic;
+        return read_mesh(path, o);
+      },
+      py::arg("path"), py::arg("covariance") = "infer", py::arg("bias") = 0.05, py::arg("isotropic") = 0.5,
+      "Reads a covariance PLY, or a plain PLY/OBJ/OFF/STL with covariances inferred (or isotropic: sigma = "
+      "isotropic x the mean edge length at the vertex)");
+  m.def("samples", &sample_names, "The names of the built-in meshes");
+  m.def("sample_description", &sample_description, py::arg("name"));
+  m.def("sample", &make_sample, py::arg("name"), py::arg("size") = 0,
+        "A built-in mesh (size: the face count of the sized samples, 0 for their default)");
+  m.def(
+      "infer",
+      [](const CovarianceMesh& mesh, double bias) {
+        CovarianceMesh out = mesh;
+        infer_covariances(out, bias);
+        return out;
+      },
+      py::arg("mesh"), py::arg("bias") = 0.05,
+      "A copy of the mesh with covariances inferred from its faces (GPS paper Eq. 16-17)");
+  m.def(
+      "subdivide",
+      [](const CovarianceMesh& mesh, int levels, bool limit, const std::string& scheme, const std::string& loop_beta) {
+        if (levels < 0 || levels > 8) throw py::value_error("levels: expected 0..8, got " + std::to_string(levels));
+        const PlanOptions named = plan_options_named(scheme, loop_beta);
+        SubdivisionOptions o;
+        o.scheme = scheme_for(topology_of(mesh.mesh), named);
+        o.levels = levels;
+        o.limit = limit;
+        o.loop_beta = named.loop_beta;
+        return subdivide(mesh, o).mesh;
+      },
+      py::arg("mesh"), py::arg("levels") = 1, py::arg("limit") = true, py::arg("scheme") = "auto",
+      py::arg("loop_beta") = "loop",
+      "The exact CPU reference: GPS subdivision in 9D, `levels` times, then (limit=True) every vertex at its exact "
+      "limit. scheme: 'auto' (Loop for a mesh of triangles, else Catmull-Clark), 'loop' or 'catmull-clark'");
+}
+
+}  // namespace gps::python
