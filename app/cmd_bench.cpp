@@ -123,7 +123,7 @@ void add_bench_command(CLI::App& app) {
                   "triangles", "compute", "draw(gpu)", "frame", "tri/s", "static", "ratio", "cached", "ratio", "edit",
                   "ratio", "memory");
       nlohmann::json all = nlohmann::json::array();
-      // pawn against pawn-quads: a mixed mesh against its quads-only twin (issue 12).
+      // pawn against pawn-quads: a mixed mesh against its quads-only twin.
       const auto meshes = args->meshes.empty() ? sample_list({"cube", "wirecube", "cylinder", "valence5", "cone-pointy",
                                                               "icosphere", "pawn", "pawn-quads"})
                                                : sample_list(args->meshes);

@@ -28,7 +28,7 @@ struct RenderArgs {
   std::vector<std::string> aovs;
   int level = 0, reference = -1;  // level 0: adaptive
   PlanArguments plans;
-  float pixels = 0;  // 0: default_pixels() of the output size
+  float pixels = 0;  // 0: default_adaptive_pixels() of the output size
   std::string context = "auto";
   bool mesh_lines = false, wireframe = false, ellipsoids = false, no_cache = false, exact = false;
   float sigma = 1.0f;
@@ -51,10 +51,6 @@ std::vector<float> parse_floats(const std::string& text, const char* what, size_
                       std::to_string(max_count) + " numbers, got '" + text + "'");
   return values;
 }
-
-// The adaptive target edge length when none is given: 4 pixels up to a 400-pixel image, growing with
-// the image's smaller side (1% of it), so a curve's facets stay about as visible at any output size.
-float default_pixels(int width, int height) { return std::max(4.0f, 0.01f * float(std::min(width, height))); }
 
 // One render with the given renderer (its context current): mesh, options, outputs.
 void render_one(SurfaceRenderer& renderer, const std::string& description, const RenderArgs& a,
@@ -80,7 +76,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   if (a.level > 0)
     o.level = float(a.level), o.pixels = 0;
   else
-    o.pixels = a.pixels > 0 ? a.pixels : default_pixels(width, height);
+    o.pixels = a.pixels > 0 ? a.pixels : default_adaptive_pixels(width, height);
   o.mode = a.mode == "normals" ? ShadingMode::normals : a.mode == "flat" ? ShadingMode::flat : ShadingMode::matcap;
   o.mesh_lines = a.mesh_lines;
   o.wireframe = a.wireframe;

@@ -1,4 +1,4 @@
-// Edit-to-frame on a 100k-face sphere (issue "editor"), the scene `gpsurf bench --edit` times
+// Edit-to-frame on a 100k-face sphere, the scene `gpsurf bench --edit` times
 // (bench/edit_scene.h): a frame alone, and an edit of 1 or 16 vertices followed by a frame.
 #include <benchmark/benchmark.h>
 

@@ -1,4 +1,4 @@
-// Frames against the cost of drawing the same triangles (issue 12), as Google Benchmarks: per sample
+// Frames against the cost of drawing the same triangles, as Google Benchmarks: per sample
 // and tessellation setting, a live frame (every patch evaluated), a cached frame (the surface
 // cache's stored triangles), a frame after a one-vertex edit (the cache refreshes that vertex's
 // patches) and the floor (the cached triangles, welded, from a static vertex buffer, same shading).

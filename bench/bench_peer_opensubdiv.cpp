@@ -1,4 +1,4 @@
-// The peer benchmark (issue 12): ours beside OpenSubdiv's Far (Debian's libosd-dev) at equal output.
+// The peer benchmark: ours beside OpenSubdiv's Far (Debian's libosd-dev) at equal output.
 // OpenSubdiv is linked into this benchmark only; the reference stays our own code.
 //  - Reference: N levels of uniform Catmull-Clark on 9D primvars (q = F(μ, Σ)) and the limit
 //    positions of the last level, from Gaussians to Gaussians with the refined faces: ours is

@@ -1,4 +1,4 @@
-// Exact plans against the thesis' Bézier plans (issue 11): per mesh and plan kind, the live frame
+// Exact plans against the thesis' Bézier plans: per mesh and plan kind, the live frame
 // (every patch evaluated, surface cache off) at equal tessellation, the preprocessing (plans and
 // stencils) and the tables' memory. Plan kinds: the thesis' depth 3 ("approx3"), exact plans of
 // depth 0..3 ("exact0".."exact3"). Run with --benchmark_enable_random_interleaving=true and

@@ -1,5 +1,5 @@
 // Subdivision plans: preprocessing (build_plans), full stencil application and the incremental
-// update of one vertex, per sample mesh at depth 3 (issue "Subdivision plans and stencil tables").
+// update of one vertex, per sample mesh at depth 3.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Preprocessing on 1 and 2 cores (issue 12): the default plans + stencil table (build_surface_plans) and the
+// Preprocessing on 1 and 2 cores: the default plans + stencil table (build_surface_plans) and the
 // reference subdivision (2 levels + limit) of a 1M-face sphere, with the tables' memory per face.
 // The results are the same bit for bit on any number of cores (tests/core/test_plan_builder.cpp).
 #include <benchmark/benchmark.h>

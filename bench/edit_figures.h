@@ -1,5 +1,5 @@
 #pragma once
-// `gpsurf bench --edit`: edit-to-frame time on a large mesh (issue "editor"). A current GL context needed.
+// `gpsurf bench --edit`: edit-to-frame time on a large mesh. A current GL context needed.
 #include <nlohmann/json.hpp>
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// `gpsurf bench --preprocess`: plan building and stencil application for one sample mesh (issue "plans").
+// `gpsurf bench --preprocess`: plan building and stencil application for one sample mesh.
 #include <nlohmann/json.hpp>
 #include <string>
 

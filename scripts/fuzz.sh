@@ -10,10 +10,9 @@ seconds="${1:-30}"
 shift || true
 readers=("${@:-ply obj off stl}")
 read -r -a readers <<< "${readers[*]}"
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+source scripts/compiler_cache.sh
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGPSURF_BUILD_FUZZ=ON \
-  -DGPSURF_BUILD_TESTS=OFF -DGPSURF_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
+  -DGPSURF_BUILD_TESTS=OFF -DGPSURF_BUILD_BENCH=OFF -DGPSURF_BUILD_GL=OFF -DGPSURF_BUILD_PYTHON=OFF "${launcher[@]}" >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target "${readers[@]/#/fuzz_}"
 for r in "${readers[@]}"; do
   mkdir -p "build-fuzz/corpus/$r"

@@ -10,6 +10,8 @@ packages=(
   libosd-dev  # OpenSubdiv: the peer benchmark only (bench/), never linked into core, render or app
   xvfb xauth fonts-dejavu-core
   clang libclang-rt-14-dev libomp-dev  # the fuzzers (clang, with OpenMP in core)
+  pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module and its tests
+  ccache clang-format
 )
 missing=()
 for p in "${packages[@]}"; do

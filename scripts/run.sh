@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Fresh machine to the main job: installs dependencies and builds; then, where there is a display,
-# opens the editor on its embedded default sample (Preiner's cone with a sharp apex), and where there
-# is none renders that sample headless (OSMesa) to out/default.png.
+# Fresh machine to the main job: installs dependencies, builds, and installs gpsurf under /usr/local
+# (the programs, the C++ package and the Python module: `python3 -c "import gpsurf"`); then, where
+# there is a display, opens the editor on its embedded default sample (Preiner's cone with a sharp
+# apex), and where there is none renders that sample headless (OSMesa) to out/default.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install_deps.sh
 scripts/build.sh
+cmake --install build >/dev/null
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   exec build/app/gpsurf-editor "$@"
 fi

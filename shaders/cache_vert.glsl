@@ -1,10 +1,10 @@
 // Triangles the surface cache stored (render/cache/surface_cache.h): the tessellation evaluation
 // outputs as transform feedback wrote them, projected as patch_tese.glsl projects them. No geometry
-// stage follows (it cost 1.5-2x the frame on llvmpipe), so llvmpipe rounds the viewport transform
-// apart from the live pipeline: the AOVs agree to ~1e-4, not bit for bit (test_surface_cache.cpp).
+// stage follows (one is costly on llvmpipe), so llvmpipe rounds the viewport transform apart from
+// the live pipeline: the AOVs agree to ~1e-4, not bit for bit (tests/render/test_surface_cache.cpp).
 // The stored normal is the normal times 2^kind (limit_point_tese.glsl): two attributes to fetch, as
-// the static floor's, and the tessellation grid a third one only for the wireframe (CACHE_GRID; on
-// an NVIDIA H200 the two extra attributes cost 30 % of a frame of 1.2M vertices).
+// the static floor's, and the tessellation grid a third one only for the wireframe (CACHE_GRID:
+// every attribute fetched adds to a cached frame's cost, on a GPU too).
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_stored_normal;
 #ifdef CACHE_GRID

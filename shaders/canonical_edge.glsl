@@ -1,8 +1,9 @@
-// Shared patch edges and corners, bit for bit (issue 14): a tessellation vertex on a patch's boundary
-// is evaluated from one canonical patch at one parameter, whichever patch generated it, so that the
+// Shared patch edges and corners, bit for bit: a tessellation vertex on a patch's boundary is
+// evaluated from one canonical patch at one parameter, whichever patch generated it, so that the
 // patches beside an edge or around a corner produce bit-identical positions there and no background
-// pixel shows through (core/plans/patch_adjacency.h has the tables and the rules). The canonical point is
-// found with integers only; the one float step, parameter = step / level, is the same on every side.
+// pixel shows through (core/plans/patch_adjacency.h has the tables and the rules). The canonical
+// point is found with integers only; the one float step, parameter = step / level, is the same on
+// every side.
 layout(std430, binding = kBindingPatchNeighbours) readonly buffer PatchNeighbours { int patch_neighbours[]; };
 layout(std430, binding = kBindingCornerOwners) readonly buffer CornerOwners { int corner_owners[]; };
 

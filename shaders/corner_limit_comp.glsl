@@ -1,8 +1,8 @@
 // The limit point, normal and plan node kind at every patch corner, evaluated once per compute pass
 // by the corner's owner (core/plans/patch_adjacency.h) and read by every tessellation vertex there
 // (limit_point_tese.glsl). A corner at an extraordinary vertex is its exact node's limit masks over
-// K points: evaluated in the tessellation stage, the SIMD batch around it ran that and the regular
-// leaf both (issue 11). Preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
+// K points: evaluated in the tessellation stage, the SIMD batch around it would run that and the
+// regular leaf both. Preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
 #include "shaders/compute_pass.glsl"
 layout(std430, binding = kBindingCornerOwners) readonly buffer CornerOwners { int corner_owners[]; };
 layout(std430, binding = kBindingCornerLimits) writeonly buffer CornerLimits { vec4 corner_limits[]; };

@@ -1,7 +1,7 @@
 // The work groups of one dispatch that evaluates the welded vertices of several blocks again
 // (render/cache/stored_vertex_evaluation.h): one invocation sums the listed blocks' work groups (written
 // by their weld, shaders/compact_comp.glsl) into each block's first group and the indirect
-// dispatch's count, so that an edit of many blocks is one dispatch (on llvmpipe each costs ~0.1 ms).
+// dispatch's count, so that an edit of many blocks is one dispatch (each dispatch has its own cost).
 layout(local_size_x = 1) in;
 layout(std430, binding = kBindingWeldedDispatches) readonly buffer WeldedDispatches { uint dispatches[]; };  // 3 words a block
 layout(std430, binding = kBindingEvaluationBlocks) readonly buffer EvaluationBlocks { int blocks[]; };  // block, first vertex, bound

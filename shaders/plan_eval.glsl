@@ -16,10 +16,9 @@ vec3 g_anchor = vec3(0.0);  // what the sums are taken about: set before the fir
 
 // The point of a leaf's net (n points from nodes[net]) weighing most in its sum at these weights,
 // |w| tr q̂: the sums' anchor. About it the heaviest term is its own small offset y, not q̂ times a
-// distance between anchors, which kept too few digits in float where a needle's apex (q̂ ~ 1e5 I)
-// is in the net: Loop's needle cones were 0.011° off the CPU, 0.004° so, and 56 % of cone-concave's
-// ×5000 normal image lit at 8/255, 3.0 % so. In a quad leaf at a boundary, phantom points included
-// (core/plans/patch_basis.h). Costs llvmpipe's live frames about 5 %.
+// distance between anchors, which keeps too few digits in float where a needle's apex (q̂ ~ 1e5 I)
+// is in the net. In a quad leaf at a boundary, phantom points included (core/plans/patch_basis.h).
+// It costs one more pass over the net's weights per leaf.
 #define GPS_HEAVIEST_POINT(n)                                  \
   int heaviest = nodes[net];                                   \
   float most = -1.0;                                           \
@@ -46,9 +45,8 @@ void dual_to_surface(vec4 qa, vec4 qb, vec4 qc, vec4 ua, vec4 ub, vec4 uc, vec4 
 
 // dual_to_surface for an extraordinary node, in double from the float sums, with μ_v made orthogonal
 // to μ_u (their cross product, the normal, is the same): there, as at a needle apex (q̂ ~ 1e5 I), the
-// tangents can be nearly parallel, and the normal, their cross product in float, then lost its digits
-// (Loop's cone-pointy: ×5000 normal image 53 % of the pixels at 8/255, normals 9e-5 off on its
-// patches' outer edges; 0.3 % so). Extraordinary nodes only: a GPU's doubles can be slow.
+// tangents can be nearly parallel, and the normal, their cross product in float, would lose its
+// digits. Extraordinary nodes only: a GPU's doubles can be slow.
 void dual_to_surface_in_double(vec4 qa, vec4 qb, vec4 qc, vec4 ua, vec4 ub, vec4 uc, vec4 va, vec4 vb, vec4 vc,
                                float scale, out vec3 mu, out vec3 mu_u, out vec3 mu_v) {
   dmat3 sigma = inverse(dmat3(precision_of(qa, qb)));
@@ -72,8 +70,9 @@ void add_point(int p, float w, float w_u, float w_v, inout vec4 qa, inout vec4 q
   va += w_v * a; vb += w_v * b; vc += w_v * c;
 }
 
-// An extraordinary node (core/extraordinary/loop_extraordinary_tables.h, core/extraordinary/quad_extraordinary_tables.h) at (u, v) of its own domain:
-// q and its u and v derivatives; mirrors evaluate_extraordinary in core/evaluation/patch_eval.cpp.
+// An extraordinary node (core/extraordinary/loop_extraordinary_tables.h,
+// core/extraordinary/quad_extraordinary_tables.h) at (u, v) of its own domain: q and its u and v
+// derivatives; mirrors evaluate_extraordinary in core/evaluation/patch_eval.cpp.
 void evaluate_extraordinary_node(int node, bool quad, float u, float v, out vec4 qa, out vec4 qb, out vec4 qc,
                                  out vec4 ua, out vec4 ub, out vec4 uc, out vec4 va, out vec4 vb, out vec4 vc) {
   int k = nodes[node + 3];

@@ -2,8 +2,9 @@
 // (xx xy xz yy) (yz zz y0 y1) (y2 a0 a1 a2) with y = q̄ − q̂ a (gpu_layout.h). A base vertex is
 // (Σ⁻¹, 0, μ). Sums are taken about one anchor c: Σ w q̄ = Σ w (y + q̂ (a − c)) + (Σ w q̂) c, exact
 // since q is linear. In float, q̄ = q̂ μ of a thin Gaussian (q̂ ~ 1e6) far from the origin keeps few
-// digits of the surface's shape near it; y about a nearby anchor keeps them (issue 11: the pawn's
-// normals). Points that are not Gaussians (boundary rows with negative weights) are kept the same way.
+// digits of the surface's shape near it; y about a nearby anchor keeps them (the pawn's thin poles
+// need them for their normals). Points that are not Gaussians (boundary rows with negative weights)
+// are kept the same way.
 // The including shader declares the Points buffer.
 mat3 precision_of(vec4 a, vec4 b) { return mat3(a.x, a.y, a.z, a.y, a.w, b.x, a.z, b.x, b.y); }
 vec3 offset_part(vec4 b, vec4 c) { return vec3(b.z, b.w, c.x); }

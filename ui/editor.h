@@ -1,5 +1,5 @@
 #pragma once
-// gpsurf-editor: a Dear ImGui editor of covariance meshes on the GPU pipeline (issue "editor").
+// gpsurf-editor: a Dear ImGui editor of covariance meshes on the GPU pipeline.
 #include <string>
 
 namespace gps {

@@ -1,6 +1,6 @@
 #pragma once
 // The editor's input as a stream of events: what GLFW reports live and what an events file replays
-// go through the same path, so a recorded session replays exactly (issue "editor": --play).
+// go through the same path, so a recorded session replays exactly (gpsurf-editor --play).
 #include <array>
 #include <deque>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // Editing a Gaussian through its ellipsoid: principal axes, scaling one axis, rotating the frame,
-// and keeping the result symmetric positive definite whatever the user drags (issue "editor").
+// and keeping the result symmetric positive definite whatever the user drags in the editor.
 #include "core/mesh/linalg.h"
 
 namespace gps {

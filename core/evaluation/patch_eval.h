@@ -1,6 +1,6 @@
 #pragma once
 // CPU evaluation of the plans, written to mirror the evaluation shader line for line
-// (DESIGN.md §2 step 6): descend to the node under (u, v), evaluate q, q_u, q_v in 9D, map back.
+// (docs/design.md §2 step 6): descend to the node under (u, v), evaluate q, q_u, q_v in 9D, map back.
 #include <optional>
 #include <vector>
 

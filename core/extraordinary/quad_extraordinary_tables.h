@@ -16,7 +16,7 @@
 // evaluated this way only where refining it once gives the corner child the same signature
 // (self-similar): any node one level below an irregular vertex, and most base quads.
 //
-// Table layout (doubles from its offset): blocks b = 3n + c − 1 (quad_ev_locate() in
+// Table layout (doubles from its offset): blocks b = 3n + c − 1 (quad_extraordinary_locate() in
 // core/plans/patch_basis.h), each 16×K (row j: the weights of the K points in net point j, j = i + 4·k as
 // in a regular node), then three rows of K: limit position, tangent along s, tangent along t, then
 // A: K rows of K (row r: the weights of the K points in point r one level down).

@@ -1,5 +1,5 @@
 #pragma once
-// Writing a file so that the target is either the old file or the complete new one (DESIGN.md §4).
+// Writing a file so that the target is either the old file or the complete new one (docs/design.md §4).
 #include <functional>
 #include <ostream>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Reading and writing meshes by file extension (DESIGN.md §4).
+// Reading and writing meshes by file extension (docs/design.md §4).
 #include <string>
 
 #include "core/mesh/covariance_mesh.h"

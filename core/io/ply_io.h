@@ -1,5 +1,5 @@
 #pragma once
-// The covariance PLY of DESIGN.md §4: vertex x y z and cxx cxy cxz cyy cyz czz (float or double),
+// The covariance PLY of docs/design.md §4: vertex x y z and cxx cxy cxz cyy cyz czz (float or double),
 // faces as vertex_indices; ASCII or binary little/big endian. A PLY without the six covariance
 // properties is a plain mesh.
 #include <ostream>

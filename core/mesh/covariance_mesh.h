@@ -1,5 +1,5 @@
 #pragma once
-// A covariance mesh: a polygon mesh whose vertex i carries a Gaussian (μ_i, Σ_i) (DESIGN.md §1).
+// A covariance mesh: a polygon mesh whose vertex i carries a Gaussian (μ_i, Σ_i) (docs/design.md §1).
 #include <string>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Covariances for a plain mesh (GPS paper Eq. 16–17, DESIGN.md §1).
+// Covariances for a plain mesh (GPS paper Eq. 16–17, docs/design.md §1).
 #include "core/mesh/covariance_mesh.h"
 
 namespace gps {

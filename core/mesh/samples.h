@@ -1,5 +1,5 @@
 #pragma once
-// Built-in covariance meshes, generated procedurally (issue "Foundation": built-in samples).
+// Built-in covariance meshes, generated procedurally.
 #include <string>
 #include <vector>
 

@@ -1,8 +1,8 @@
 #pragma once
 // A piece of a subdivided mesh around one face, its vertices as stencils over the base vertices
-// of the neighbourhood, kept dense (DESIGN.md §2 step 2). A vertex is "complete" when every face it has in the whole
-// mesh at that level is present, so that its Catmull-Clark vertex point (and the edge points of its edges) can be
-// computed from the piece alone.
+// of the neighbourhood, kept dense (docs/design.md §2 step 2). A vertex is "complete" when every face it has in the
+// whole mesh at that level is present, so that its Catmull-Clark vertex point (and the edge points of its edges) can
+// be computed from the piece alone.
 #include <vector>
 
 #include "core/mesh/mesh_connectivity.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Subdivision plans of a triangle mesh under Loop GPS (DESIGN.md §2, "Triangle meshes: Loop").
+// Subdivision plans of a triangle mesh under Loop GPS (docs/design.md §2, "Triangle meshes: Loop").
 #include "core/reference/loop.h"
 #include "core/plans/plan_builder.h"
 

@@ -75,7 +75,7 @@ void add_patch_adjacency(PatchPlans& plans) {
   plans.patch_neighbours.assign(size_t(4 * n * n_patches), -1);
   plans.corner_owners.assign(size_t(2 * n * n_patches), -1);
   // The uses of each edge, grouped by their lower end point with a counting sort (linear, no map of
-  // lists: on a 1M-face mesh the hashed lists were a third of the plan building), then by the upper.
+  // lists: hashed lists would weigh on plan building for a large mesh), then by the upper.
   std::vector<EdgeUse> uses;
   uses.reserve(size_t(n * n_patches));
   int32_t n_points = 0;

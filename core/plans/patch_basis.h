@@ -46,11 +46,12 @@ GPS_CONST int kEdgeSecondHalf = 3;        // the half at `to`
 /// Whether a patch whose edge 0 is this part is half-size: a patch of a split face (one Catmull-Clark
 /// step down), whose edge 0 is half of the face's edge.
 GPS_FN bool half_size_part(int edge0_part) { return edge0_part == kEdgeFirstHalf || edge0_part == kEdgeSecondHalf; }
-// Levels of the extraordinary tables (core/extraordinary/loop_extraordinary_tables.h, core/extraordinary/quad_extraordinary_tables.h). Tessellation
-// at integer levels up to 64 puts no point closer to a corner than 1/64 of its patch (s + t and
-// max(s, t) ≥ 1/64 for Loop's and Catmull-Clark's locate): levels 0..5, and one more against
-// float rounding. Closer points take the level-(kExtraordinaryLevels − 1) block after further steps of the
-// table's subdivision matrix A (on the CPU; the GPU takes the limit point there).
+// Levels of the extraordinary tables (core/extraordinary/loop_extraordinary_tables.h,
+// core/extraordinary/quad_extraordinary_tables.h). Tessellation at integer levels up to 64 puts no
+// point closer to a corner than 1/64 of its patch (s + t and max(s, t) ≥ 1/64 for Loop's and
+// Catmull-Clark's locate): levels 0..5, and one more against float rounding. Closer points take the
+// level-(kExtraordinaryLevels − 1) block after further steps of the table's subdivision matrix A (on
+// the CPU; the GPU takes the limit point there).
 GPS_CONST int kExtraordinaryLevels = 7;
 
 /// Uniform cubic B-spline basis on one segment, t in [0,1]: values w[0..3] and derivatives dw[0..3].
@@ -134,7 +135,7 @@ GPS_FN void quad_leaf_basis(int kind, int boundary, GPS_REAL u, GPS_REAL v, GPS_
 // 1-rings, in this order: (0,0) (1,0) (0,1) (−1,0) (0,−1) (1,−1) (−1,1) (2,−1) (2,0) (1,1) (0,2) (−1,2).
 // The patch is a quartic Bézier triangle whose 15 ordinates b_ab (weight of u^a v^b w^(4−a−b), rows
 // in the order b = 0..4, a = 0..4−b) are these combinations of the 12 control points, times 1/24;
-// tests/core/test_loop_patch_basis.cpp derives them again from Loop subdivision and limit masks.
+// tests/core/test_loop_plans.cpp checks the basis against Loop subdivision and limit projection.
 #ifdef GPS_GLSL
 const float kLoopBezier[180] = float[180](
 #else
@@ -265,8 +266,9 @@ GPS_FN int extraordinary_block(int n, int child, GPS_OUT_REF(int) steps) {
 
 /// Where (s, t) of an extraordinary node falls (Stam 1998, §3), its extraordinary vertex at
 /// (0, 0): after n halvings toward that corner, in child c = 1..3 of triangle_child() at the new
-/// (s, t). Returns the table block of extraordinary_block() (core/extraordinary/loop_extraordinary_tables.h), or −1 at the corner (there
-/// the limit masks apply); `scale` = d(new s, t)/d(s, t).
+/// (s, t). Returns the table block of extraordinary_block()
+/// (core/extraordinary/loop_extraordinary_tables.h), or −1 at the corner (there the limit masks
+/// apply); `scale` = d(new s, t)/d(s, t).
 GPS_FN int loop_extraordinary_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale,
                           GPS_OUT_REF(int) steps) {
   // n = the halvings that bring s + t to at least ½, read off its binary exponent (doubling is
@@ -303,9 +305,10 @@ GPS_FN void quad_turned_derivative_coefficients(int r, GPS_OUT GPS_REAL c[4]) {
 
 /// Where (s, t) of a quad extraordinary node falls (Stam 1998), its extraordinary vertex at (0, 0):
 /// after n halvings toward that corner, in quadrant c = 1 (s ≥ ½ > t), 2 (both ≥ ½) or 3 (t ≥ ½ > s)
-/// at the quadrant's own (s, t). Returns the table block of extraordinary_block() (core/extraordinary/quad_extraordinary_tables.h), or −1
-/// at the corner (there the limit masks apply); `scale` = d(new s, t)/d(s, t).
-GPS_FN int quad_ev_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale,
+/// at the quadrant's own (s, t). Returns the table block of extraordinary_block()
+/// (core/extraordinary/quad_extraordinary_tables.h), or −1 at the corner (there the limit masks
+/// apply); `scale` = d(new s, t)/d(s, t).
+GPS_FN int quad_extraordinary_locate(GPS_INOUT_REF(GPS_REAL) s, GPS_INOUT_REF(GPS_REAL) t, GPS_OUT_REF(GPS_REAL) scale,
                           GPS_OUT_REF(int) steps) {
   scale = 1.0;
   steps = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// Which patches a polygon mesh has and how their (u, v) domains sit on its faces (DESIGN.md §2 step 1).
+// Which patches a polygon mesh has and how their (u, v) domains sit on its faces (docs/design.md §2 step 1).
 //
 // Patches are numbered in base-face order. A quad is one patch: its corners, in the order
 // face_vertices() returns them, sit at (u, v) = (0,0), (1,0), (1,1), (0,1). A face with n ≠ 4

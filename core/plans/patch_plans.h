@@ -1,6 +1,6 @@
 #pragma once
 // Subdivision plans and the stencil table: the real-time representation of the GPS limit surface
-// (thesis 2.3, DESIGN.md §2 steps 2–3). Flat arrays of 32-bit ints and floats that a GPU reads as
+// (thesis 2.3, docs/design.md §2 steps 2–3). Flat arrays of 32-bit ints and floats that a GPU reads as
 // they are; built once per topology by plan_builder.h.
 //
 // Points. The plans read an array of 9D points: points [0, n_base) are the base vertices' dual

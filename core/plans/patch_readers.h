@@ -1,5 +1,5 @@
 #pragma once
-// Which patches an edit changes (issue 12, the surface cache's partial re-capture): every patch
+// Which patches an edit changes (for the surface cache's partial re-capture): every patch
 // whose tessellated vertices depend on a plan point. A patch's vertices read its plan's nets, its
 // corner points and the ends of its edges (tessellation levels), and on its boundary the points of
 // the canonical patch of each shared edge or corner (core/plans/patch_adjacency.h). Built once per

@@ -1,5 +1,5 @@
 #pragma once
-// Subdivision plans and their stencil table from a mesh's topology (thesis 2.3, DESIGN.md §2).
+// Subdivision plans and their stencil table from a mesh's topology (thesis 2.3, docs/design.md §2).
 #include "core/mesh/mesh_connectivity.h"
 #include "core/plans/patch_plans.h"
 

@@ -17,7 +17,7 @@ namespace gps {
 #endif
 
 // No plan is deeper (core/plans/plan_builder.cpp): the descent is a bounded loop (after a divergent while
-// loop, Mesa's llvmpipe ran the extraordinary node's loops with wrong values).
+// loop, Mesa's llvmpipe runs the extraordinary node's loops with wrong values).
 GPS_CONST int kMaxPlanDepth = 8;
 
 /// One step down a quad node: child ubit + 2·vbit, ubit = (u ≥ ½), vbit = (v ≥ ½), with (u, v)
@@ -32,8 +32,8 @@ GPS_FN int quad_child(GPS_INOUT_REF(GPS_REAL) u, GPS_INOUT_REF(GPS_REAL) v) {
 /// From node `node` down to the leaf under (u, v) of a quad (`triangle` false) or triangle plan:
 /// returns the leaf, its kind and depth; (u, v) become the leaf's own parameters and `scale`
 /// = d(leaf parameter)/d(patch parameter), with the half turns of middle triangle children. The
-/// kind is read into a variable once per node: re-reading nodes[node] after the loop gave the stale
-/// value on Mesa 22.3 llvmpipe (caught by test_surface_renderer).
+/// kind is read into a variable once per node: re-reading nodes[node] after the loop gives a stale
+/// value on Mesa 22.3's llvmpipe.
 GPS_FN int descend_plan(GPS_NODES_PARAM int node, bool triangle, GPS_INOUT_REF(GPS_REAL) u, GPS_INOUT_REF(GPS_REAL) v,
                         GPS_OUT_REF(GPS_REAL) scale, GPS_OUT_REF(int) kind, GPS_OUT_REF(int) depth) {
   scale = 1.0;
@@ -56,10 +56,11 @@ GPS_FN int descend_plan(GPS_NODES_PARAM int node, bool triangle, GPS_INOUT_REF(G
   return node;
 }
 
-/// An extraordinary node (core/extraordinary/quad_extraordinary_tables.h, core/extraordinary/loop_extraordinary_tables.h) with its extraordinary
-/// vertex at corner r, at (u, v) of its own domain: turned so that corner is at (0, 0) and located
-/// in a regular child n levels down, whose net is a block of `net` rows of the node's table (net =
-/// 16 for quads, 12 for triangles); at the corner the limit masks (3 rows: position, d/ds, d/dt).
+/// An extraordinary node (core/extraordinary/quad_extraordinary_tables.h,
+/// core/extraordinary/loop_extraordinary_tables.h) with its extraordinary vertex at corner r, at (u, v)
+/// of its own domain: turned so that corner is at (0, 0) and located in a regular child n levels down,
+/// whose net is a block of `net` rows of the node's table (net = 16 for quads, 12 for triangles); at
+/// the corner the limit masks (3 rows: position, d/ds, d/dt).
 /// Returns the rows' count; `first_row` is the first, w/ws/wt the rows' weights for the point and
 /// its s and t derivatives, and d/du = scale (d[0] ∂s + d[1] ∂t), d/dv = scale (d[2] ∂s + d[3] ∂t).
 /// Past the table's levels the rows apply to the node's points after `steps` steps of the table's
@@ -74,7 +75,7 @@ GPS_FN int extraordinary_rows(bool quad, int r, GPS_REAL u, GPS_REAL v, bool ste
   if (quad) {
     quad_turn_to_corner(r, u, v, s, t);
     quad_turned_derivative_coefficients(r, d);
-    block = quad_ev_locate(s, t, scale, steps);
+    block = quad_extraordinary_locate(s, t, scale, steps);
   } else {
     triangle_turn_to_corner(r, u, v, s, t);
     triangle_turned_derivative_coefficients(r, d);

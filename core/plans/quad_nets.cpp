@@ -25,8 +25,8 @@ constexpr Grid2 kOut[4] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
 
 int face_vertex(const LocalMesh& m, int f, int k) {
   const int n = m.topology.face_size(f);
-  // Callers step a few corners from a corner index: a subtraction, not two divisions (which were a
-  // third of bspline_net's time).
+  // Callers step a few corners from a corner index: a subtraction, not two divisions, which would
+  // cost a large share of bspline_net's time.
   if (k >= n) k -= n;
   if (k < 0) k += n;
   if (k < 0 || k >= n) k = ((k % n) + n) % n;

@@ -27,7 +27,7 @@ bool regular_vertex(const LocalMesh& m, int v);
 /// their capacity: a builder that reuses one allocates nothing per regular leaf.
 void bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c, std::array<LocalCombination, 16>& net);
 
-/// The Bézier net of a terminal node with corners c by the rules of thesis Fig. 2.5 (DESIGN.md §2).
+/// The Bézier net of a terminal node with corners c by the rules of thesis Fig. 2.5 (docs/design.md §2).
 std::array<LocalCombination, 16> bezier_net(const LocalMesh& m, const std::array<int, 4>& c);
 
 }  // namespace gps

@@ -1,5 +1,5 @@
 #pragma once
-// Building and applying the stencil table of core/plans/patch_plans.h (DESIGN.md §2 steps 3–4).
+// Building and applying the stencil table of core/plans/patch_plans.h (docs/design.md §2 steps 3–4).
 #include <unordered_map>
 #include <vector>
 
@@ -41,8 +41,8 @@ StencilDependents stencil_dependents(const StencilTable& table);
 std::vector<int> rows_reading(const StencilDependents& dependents, const std::vector<int>& vertices);
 
 /// An edit whose part of the work (dependent rows of all rows, changed vertices of all vertices)
-/// reaches 1/kWholeUpdateDivisor updates everything at once: gathering and sorting the parts was
-/// measured to cost more (bench_plans). The CPU update and the renderer's compute passes both follow it.
+/// reaches 1/kWholeUpdateDivisor updates everything at once: past that share, gathering and sorting
+/// the parts costs more than the whole update. The CPU update and the renderer's compute passes both follow it.
 constexpr size_t kWholeUpdateDivisor = 4;
 inline bool update_everything(size_t part, size_t whole) { return part * kWholeUpdateDivisor >= whole; }
 

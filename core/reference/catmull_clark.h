@@ -1,6 +1,6 @@
 #pragma once
 // One Catmull-Clark step on any polygon mesh, boundaries by the cubic B-spline curve rules and
-// one-face vertices as fixed corners (DESIGN.md §1, §3). Values are any linear type: the 9D duals
+// one-face vertices as fixed corners (docs/design.md §1, §3). Values are any linear type: the 9D duals
 // for GPS subdivision (thesis Eq. 2.10 makes it linear), 3D points for the plain scheme.
 //
 // Output numbering: vertex points keep the input vertex indices, then one edge point per edge

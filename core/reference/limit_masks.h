@@ -1,5 +1,5 @@
 #pragma once
-// Exact limit positions of subdivision vertices (DESIGN.md §2 "limit projection"): the masks of
+// Exact limit positions of subdivision vertices (docs/design.md §2 "limit projection"): the masks of
 // core/reference/vertex_mask.h applied to every vertex.
 #include <functional>
 #include <vector>

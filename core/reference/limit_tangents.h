@@ -1,6 +1,6 @@
 #pragma once
-// Exact limit tangents of subdivision vertices, for the reference's normals (issue 11): two masks
-// per vertex whose results span the limit surface's tangent plane there. Each mask is a left
+// Exact limit tangents of subdivision vertices, for the reference's normals: two masks per vertex
+// whose results span the limit surface's tangent plane there. Each mask is a left
 // eigenvector of the local subdivision matrix for a subdominant eigenvalue, so applied to a
 // vertex's ring at any level it gives the tangent of the limit surface at that vertex exactly.
 // In 9D the masks give q_u, q_v, and thesis Eq. 3.12 (mean_derivative) takes them to 3D.

@@ -1,5 +1,5 @@
 #pragma once
-// The exact CPU reference: iterative GPS subdivision with limit projection (DESIGN.md §2).
+// The exact CPU reference: iterative GPS subdivision with limit projection (docs/design.md §2).
 // Gaussians go to 9D once (thesis Eq. 2.10), a linear scheme refines them, and they come back once.
 #include <vector>
 

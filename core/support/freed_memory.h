@@ -6,8 +6,8 @@ namespace gps {
 /// Keeps freed memory in the process for the next allocation instead of returning it to the system:
 /// every block comes from the heap (none from its own mmap), and the heap is not trimmed. Loading
 /// and preparing a large mesh allocates and frees many blocks of tens of MB (face lists,
-/// connectivity, plans, stencils, staging for the GPU); from mmap, each came back as fresh pages,
-/// faulted in and zeroed by the kernel one page at a time. The peak stays what it was; memory freed
+/// connectivity, plans, stencils, staging for the GPU); from mmap, each would come back as fresh
+/// pages, faulted in and zeroed by the kernel one page at a time. The peak is unchanged; memory freed
 /// after it is reused rather than released (the heap's free top goes back past 2 GiB). Call first
 /// thing in main(). Does nothing where the C library has no such settings.
 void keep_freed_memory();

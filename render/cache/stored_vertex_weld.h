@@ -1,16 +1,14 @@
 #pragma once
 // Welds the surface cache's stored vertices on the GPU (shaders/weld_comp.glsl): transform feedback
 // stores three vertices per triangle, so a cached frame would fetch and shade every vertex about six
-// times where a welded buffer shades it once (on an NVIDIA H200, 1.2 M cached vertices drew in 2 x
-// the welded floor's time). The weld gives every stored vertex the index of the vertex with the
-// same position, normal and evaluated parameters (shaders/weld_comp.glsl: one surface point, in
-// whichever block) that entered the hash table first; a prefix sum then numbers those
-// distinct vertices block by block, and they are copied, in capture order, to a welded buffer that
-// the cache draws by the renumbered indices (shaders/compact_comp.glsl). Numbered so, neighbouring
-// triangles share nearby indices, as a welded static buffer's do: llvmpipe's vertex cache, keyed
-// by index, shades a shared vertex once only then: numbered in capture slots, as the indices
-// first were, a shared vertex mostly missed it (llvmpipe, cached frame over the floor, pawn level
-// 16: 1.20-1.21 as captured, 1.17-1.26 welded in capture slots, 1.08-1.12 numbered).
+// times where a welded buffer shades it once. The weld gives every stored vertex the index of the
+// vertex with the same position, normal and evaluated parameters (shaders/weld_comp.glsl: one
+// surface point, in whichever block) that entered the hash table first; a prefix sum then numbers
+// those distinct vertices block by block, and they are copied, in capture order, to a welded buffer
+// that the cache draws by the renumbered indices (shaders/compact_comp.glsl). Numbered so,
+// neighbouring triangles share nearby indices, as a welded static buffer's do: llvmpipe's vertex
+// cache, keyed by index, then shades a shared vertex once, where numbered in capture slots a shared
+// vertex would mostly miss it.
 #include <memory>
 #include <vector>
 

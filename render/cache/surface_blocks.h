@@ -1,5 +1,5 @@
 #pragma once
-// The surface cache's blocks (issue 12): runs of consecutive patches captured under one query each,
+// The surface cache's blocks: runs of consecutive patches captured under one query each,
 // so that an edit captures again only the blocks of the patches it changed. Keeps where each
 // block's triangles lie in the stored buffer (the running sums of the counts) and which blocks are
 // stale. No GL.

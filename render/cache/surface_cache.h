@@ -1,6 +1,6 @@
 #pragma once
-// The surface cache (issue 12): the triangles the tessellation pipeline produced, captured on the
-// GPU by transform feedback and redrawn from that buffer while their inputs are unchanged.
+// The surface cache: the triangles the tessellation pipeline produced, captured on the GPU by
+// transform feedback and redrawn from that buffer while their inputs are unchanged.
 //
 // What the stored triangles depend on (SurfaceCache::Key): the plan points (a generation counter
 // the renderer bumps with every compute pass: set_mesh, update_vertices, recompute_all) and the
@@ -14,8 +14,8 @@
 // The stored vertices are welded (render/cache/stored_vertex_weld.h) and drawn by index, as a welded
 // static buffer is. On a GPU right after each capture or refresh (Weld::at_capture). On llvmpipe
 // (Weld::when_settled) by the first frame that finds the stored triangles current: there the weld
-// costs an edit's frame more than it saves it (a cube's edit at level 64: 27.6 -> 37.3 ms), so the
-// frames of a drag draw the triangles as captured and the frames after it welded.
+// costs an edit's frame more than it saves it, so the frames of a drag draw the triangles as
+// captured and the frames after it welded.
 //
 // Edits: triangles are captured in blocks of consecutive patches (render/cache/surface_blocks.h), each
 // counted by its own query. An edit reports the patches it changed (points_changed); the next frame
@@ -26,8 +26,7 @@
 // each point once, on all of llvmpipe's threads; at uniform levels only from evaluated_from_level().
 // The captured copies of those vertices, which only a grid frame, a capture of some blocks again and
 // the read-back use, are brought up to date later, by the next of those or of a still frame
-// (settle()): so the frames of a drag do not copy them (llvmpipe, an edit's frame at level 64:
-// wirecube 161 -> 138 ms, cylinder 63 -> 55 ms).
+// (settle()): so the frames of a drag do not copy them.
 // The other stale blocks are captured again, under the camera of the capture, into a scratch buffer,
 // and copied into place (or, where adaptive levels changed a block's count, the clean and the new
 // blocks are assembled in a spare buffer, which then becomes the stored one); where over half of the
@@ -67,15 +66,14 @@ public:
   static constexpr int kParameterBytes = 3 * 4;
   /// The memory limit: a sixteenth of the device's memory (render/gl/device_memory.h; a GPU's, or the
   /// machine's for llvmpipe), at least kLeastLimitBytes and at most kMostLimitBytes, which keeps
-  /// every buffer under 2 GiB: transform feedback into a larger one ended early on NVIDIA's driver
-  /// (580, H100: of a 5.3 GB buffer it filled 1.05 GB, the wrap past 4 GiB, and counted only those).
+  /// every buffer under 2 GiB: NVIDIA's driver (580) ends transform feedback into a larger one early,
+  /// filling and counting only what lies past a wrap at 4 GiB.
   static constexpr long long kLeastLimitBytes = 512ll << 20;
   static constexpr long long kMostLimitBytes = (2ll << 30) - 1;
   static constexpr int kDeviceMemoryShare = 16;
   /// Where the weld waits for a still frame (llvmpipe), an edit evaluates the welded vertices again
   /// instead of capturing its blocks again only from this uniform level on: below, its three compute
-  /// passes cost more than the capture (llvmpipe, edit over the floor, capture / evaluation: cylinder
-  /// level 1 1.25 / 1.54, level 4 1.38 / 1.54, level 16 1.89 / 1.64, level 64 2.84 / 1.96).
+  /// passes cost more than the capture.
   static constexpr float kSettledEvaluatedFromLevel = 8.0f;
   /// From a uniform level of 8 on, a block's welded vertices are fewer than a third of its capture
   /// slots (a quad patch at level L has (L + 1)² of 6 L², a half-size one at ⌈L/2⌉ and a triangle at L
@@ -128,8 +126,7 @@ public:
   using LevelsChanged = std::function<std::vector<char>(const std::vector<StoredPatchLevels::Block>& blocks)>;
   /// The uniform level from which an edit evaluates welded vertices again: kSettledEvaluatedFromLevel
   /// where the weld waits for a still frame; every level where it welds at capture (a GPU: there
-  /// transform feedback costs more than the compute passes; H100, a one-vertex edit's frame over the
-  /// floor at levels 1 and 4, captured again 1.52-3.19, evaluated again 1.31-1.54).
+  /// transform feedback costs more than the compute passes).
   float evaluated_from_level() const { return weld_mode_ == Weld::when_settled ? kSettledEvaluatedFromLevel : 0.0f; }
   /// Brings the stale blocks to `key`. Blocks whose tessellation stays (uniform levels from
   /// evaluated_from_level(); adaptive ones that `levels_changed` leaves alone) with the vertices welded:

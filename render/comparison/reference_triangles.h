@@ -22,10 +22,8 @@ TriangleMesh reference_triangles(const CovarianceMesh& mesh, int levels, const P
 /// tessellation level 2^N (render/comparison/patch_triangles.h): each vertex of the GPU's tessellation is a
 /// vertex of the reference, found by its patch parameters on the 2^-N grid. Drawn against the
 /// patches, the difference images then show the two surfaces' values alone, not also the rounding
-/// of two different draws (llvmpipe, cone-plateau's ×5000 normal image: 330 pixels over 1e-6, the
-/// largest 2.2e-5, between the exact evaluator's values drawn in either triangulation, values equal
-/// to 1e-14; 0 in the same triangles). `mesh` is the renderer's mesh, drawn at
-/// options `o` with o.level = 2^N; throws where a vertex is off the grid.
+/// of two different triangulations, which the amplified normal images would show. `mesh` is the
+/// renderer's mesh, drawn at options `o` with o.level = 2^N; throws where a vertex is off the grid.
 TriangleMesh reference_in_patch_triangles(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const Camera& camera,
                                           const DrawOptions& o, int width, int height, int levels);
 

@@ -22,7 +22,7 @@ std::string first_error;
 
 // The first error the driver reports. Not the shader compiler's messages: Mesa reports its warnings
 // there as errors, and only while it compiles (not when its shader cache has the program), so they
-// came and went with the cache; a shader that does not compile or link throws in ShaderProgram.
+// would come and go with the cache; a shader that does not compile or link throws in ShaderProgram.
 void GLAPIENTRY on_gl_message(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
                               const void*) {
   if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;

@@ -30,6 +30,13 @@ struct DrawOptions {
   bool debug_mismatch = false;    // tests only: give neighbouring patches different edge levels
 };
 
+/// The adaptive target edge length of a render when none is given: 4 pixels up to a 400-pixel image,
+/// growing with the image's smaller side (1% of it), so that a curve's facets stay about as visible at
+/// any output size.
+inline float default_adaptive_pixels(int width, int height) {
+  return std::max(4.0f, 0.01f * float(std::min(width, height)));
+}
+
 /// The uniform level of `o`, clamped to 1..64.
 inline float uniform_level(const DrawOptions& o) { return std::clamp(o.level, 1.0f, 64.0f); }
 

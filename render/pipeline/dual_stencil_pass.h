@@ -1,5 +1,5 @@
 #pragma once
-// The compute passes of an edit (DESIGN.md §2): base vertices' Gaussians to 9D points
+// The compute passes of an edit (docs/design.md §2): base vertices' Gaussians to 9D points
 // (shaders/dual_map_comp.glsl), then the stencil rows (shaders/stencil_comp.glsl), over everything
 // or over the lists PlanBuffers::upload_edit left; dispatches split to the device's work-group
 // count limit (render/gl/compute_limits.h).

@@ -100,9 +100,9 @@ void PatchDraw::draw(const ShaderProgram& program, const DrawOptions& o, int n_t
 
 void PatchDraw::draw_batches(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
                              int n_patches) const {
-  // Mesa 22.3's llvmpipe was seen to drop whole patches from draws that generate some 10^5
-  // vertices (the crack test caught it), so draw in batches of at most ~2^15 generated vertices at
-  // the chosen level (adaptive levels: the worst case, 64).
+  // Mesa 22.3's llvmpipe drops whole patches from draws that generate some 10^5 vertices, so draw
+  // in batches of at most ~2^15 generated vertices at the chosen level (adaptive levels: the worst
+  // case, 64).
   const int level = o.pixels > 0.0f ? 64 : std::clamp(int(std::ceil(o.level)), 1, 64);
   const int batch = std::max(1, 32768 / ((level + 1) * (level + 1)));
   glBindVertexArray(empty_vao_);

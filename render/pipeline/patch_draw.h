@@ -1,5 +1,5 @@
 #pragma once
-// The patch draw (DESIGN.md §2): GL_PATCHES of one vertex each, evaluated by the tessellation
+// The patch draw (docs/design.md §2): GL_PATCHES of one vertex each, evaluated by the tessellation
 // programs of the plan's patch shape (quads: Catmull-Clark plans, triangles: Loop plans), drawn
 // shaded, as wireframe, under transform feedback for tests (TessellatedVertex) or for the surface
 // cache, with optional pipeline-statistics queries.

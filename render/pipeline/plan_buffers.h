@@ -1,5 +1,5 @@
 #pragma once
-// The GPU tables of a planned surface (DESIGN.md §2): core's plan and stencil tables (built outside
+// The GPU tables of a planned surface (docs/design.md §2): core's plan and stencil tables (built outside
 // the renderer, core/plans/planned_surface.h) as shader storage buffers at the bindings of
 // render/pipeline/gpu_layout.h, with the base Gaussians, the plan points the compute passes write and an
 // edit's lists of changed vertices and stencil rows.

@@ -141,8 +141,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     const bool use_cache = !o.static_triangles && o.surface_cache;
     buffers_.bind();
     // The cache's compute passes before the clear: on llvmpipe one after it splits the frame in two
-    // (the cleared target written out, then read back for the draw; a cube's edit at level 64: a
-    // sixth of its frame).
+    // (the cleared target written out, then read back for the draw).
     const bool cache_current = use_cache && prepare_cache(camera, o, aspect, target.width(), target.height());
     target.bind();
     const float clear_color[4] = {o.background.r, o.background.g, o.background.b, 1.0f};
@@ -241,8 +240,8 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
   const glm::vec2 viewport{float(width), float(height)};
   // Buffer size: uniform level L generates about 2·L² triangles per quad patch, 2·⌈L/2⌉² per
   // half-size one (shaders/patch_tesc.glsl), L² per triangle patch; adaptive levels as many as last
-  // time, or where nothing is stored, as many as a draw counts (128 a patch was 1.8 GB for a
-  // 100k-face sphere at 800², which drew 0.2 M triangles). A full buffer grows and captures again.
+  // time, or where nothing is stored, as many as a draw counts (a fixed bound such as 128 a patch
+  // would take gigabytes for a large mesh that draws far fewer). A full buffer grows and captures again.
   const long long level = (long long)std::ceil(key.level), patches = n_patches();
   long long estimate = 64;
   if (key.pixels > 0.0f) {

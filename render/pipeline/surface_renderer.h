@@ -1,5 +1,5 @@
 #pragma once
-// The GPU pipeline of DESIGN.md §2, a facade over its parts: the planned surface's tables uploaded
+// The GPU pipeline of docs/design.md §2, a facade over its parts: the planned surface's tables uploaded
 // once per topology (render/pipeline/plan_buffers.h); per edit the compute passes map changed vertices to 9D
 // and apply the stencils (render/pipeline/dual_stencil_pass.h); per frame GL_PATCHES with tessellation
 // shaders evaluate the limit surface (render/pipeline/patch_draw.h), or the surface cache redraws stored

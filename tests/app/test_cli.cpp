@@ -51,8 +51,8 @@ TEST(Cli, SampleInfoSubdivideInfer) {
 }
 
 // Covariances that are subnormal (1e-310) or huge (1e308), ASCII or binary, and positions at ±1e308:
-// every command refuses them with a message that says so, and writes nothing (issue 14: they once
-// gave "wrote s.ply", exit 0, and a file of NaNs that `gpsurf info` refused).
+// every command refuses them with a message that says so, and writes nothing (never a file of NaNs
+// that `gpsurf info` would refuse).
 TEST(Cli, ValuesBeyondWhatTheMathCarriesAreRefusedAndNothingIsWritten) {
   test::TempDir dir;
   const auto ply = [](const std::string& format, double position, double variance) {
@@ -110,7 +110,7 @@ TEST(Cli, UsageErrorsExitWithTwo) {
   }
 }
 
-// Issue 13: an option a command would ignore is an error, and a range error is short.
+// An option a command would ignore is an error, and a range error is short.
 TEST(Cli, IgnoredOptionsAndRangesAreShortErrors) {
   test::TempDir dir;
   run_command(gpsurf("sample cube -o " + dir.file("cube.ply")));

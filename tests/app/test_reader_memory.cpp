@@ -1,4 +1,4 @@
-// Readers never hold much more than the file's own size (issue 14): inputs built to make a reader
+// Readers never hold much more than the file's own size: inputs built to make a reader
 // allocate from a header count (faces of 0 vertices, a vertex element of blank space, an OFF header
 // with huge counts) are refused with peak memory within 4× the file size over gpsurf's own baseline.
 #include <gtest/gtest.h>

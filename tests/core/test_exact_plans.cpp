@@ -1,4 +1,4 @@
-// Catmull-Clark plans evaluate extraordinary vertices exactly (issue 11): at every parameter the
+// Catmull-Clark plans evaluate extraordinary vertices exactly: at every parameter the
 // reference (GPS subdivision with limit projection) gives, not only at node corners.
 #include <gtest/gtest.h>
 

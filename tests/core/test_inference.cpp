@@ -1,4 +1,4 @@
-// Gaussian inference for plain meshes (GPS paper Eq. 16–17, DESIGN.md §1) and the isotropic default.
+// Gaussian inference for plain meshes (GPS paper Eq. 16–17, docs/design.md §1) and the isotropic default.
 #include "core/mesh/inference.h"
 
 #include <gtest/gtest.h>

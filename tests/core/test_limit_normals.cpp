@@ -1,4 +1,4 @@
-// The reference's exact limit normals (core/reference/limit_tangents.h, issue 11): they are those of the
+// The reference's exact limit normals (core/reference/limit_tangents.h): they are those of the
 // refined surface (its faces' normals closing in on them level by level), and the plans' evaluator
 // gives the same normal at every reference vertex, extraordinary vertices and boundaries included.
 #include "core/reference/limit_tangents.h"

@@ -1,5 +1,5 @@
-// Loop plans against the exact reference (issue "Loop GPS in real time"): box-spline patches and
-// exact extraordinary nodes equal Loop GPS subdivision with limit projection at every tested parameter.
+// Loop plans against the exact reference: box-spline patches and exact extraordinary nodes equal Loop
+// GPS subdivision with limit projection at every tested parameter.
 #include "core/plans/loop_plan_builder.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Patch edge neighbours and corner owners (core/plans/patch_adjacency.h), the tables behind bit-exact
-// shared edges on the GPU (issue 14).
+// shared edges on the GPU.
 #include "core/plans/patch_adjacency.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The patch bases and the Bézier rules of the terminal nodes (issue "Subdivision plans and stencil tables").
+// The patch bases and the Bézier rules of the terminal nodes.
 #include "core/evaluation/patch_eval.h"
 
 #include <gtest/gtest.h>

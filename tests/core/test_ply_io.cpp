@@ -180,7 +180,7 @@ TEST(PlyIo, FailedWriteLeavesTheTargetAndNoTemporaryFile) {
   EXPECT_EQ(read_mesh(target).n_vertices(), 8u);
 }
 
-// Values the readers would refuse are not written either (issue 14: no file gpsurf cannot read back).
+// Values the readers would refuse are not written either: no file gpsurf cannot read back.
 TEST(PlyIo, WritingRefusesWhatReadingWouldRefuse) {
   test::TempDir dir;
   CovarianceMesh m = make_sample("cone");

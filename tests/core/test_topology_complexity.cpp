@@ -1,6 +1,6 @@
-// Topology steps in time linear in the mesh whatever the valence or face size (issue 14): a fan of
-// triangles around one vertex (faces in shuffled order) and one face of very many sides, at n and 4n,
-// timed in one run. Quadratic steps took 91 s on a 100,000-triangle fan and 30 s on a 300,000-gon.
+// Topology steps in time linear in the mesh whatever the valence or face size: a fan of triangles
+// around one vertex (faces in shuffled order) and one face of very many sides, at n and 4n, timed in
+// one run, so that a quadratic step shows as a 16× ratio.
 #include <gtest/gtest.h>
 
 #include <algorithm>

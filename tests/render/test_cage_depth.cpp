@@ -1,4 +1,4 @@
-// The base-mesh cage is drawn with depth (issue 13): where the surface hides it, it is faint
+// The base-mesh cage is drawn with depth: where the surface hides it, it is faint
 // (kHiddenCageAlpha over the surface); where it is in front, at full strength.
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
-// The thesis' comparison images (Figs. 4.4, 4.8; issue 11): the GPU's position and normal AOVs
-// against the CPU reference's, ×200 and ×5000, as `gpsurf diff` writes them, are black. The
-// reference is GPS subdivision with limit projection and its exact limit normals, at the level
-// whose vertices are the tessellation's, drawn in the GPU's own triangles, corner for corner
-// (render/comparison/reference_triangles.h): every pixel then compares one surface at one parameter, evaluated
-// twice and rasterised alike. Under Loop, GL's triangle tessellation puts its inner rings off the
-// dyadic grid, so no reference level has its vertices: there the reference is the exact evaluator
-// (equal to subdivision and limit projection at every parameter: tests/core) at the parameters of
-// the GPU's own vertices.
+// The thesis' comparison images (Figs. 4.4, 4.8): the GPU's position and normal AOVs against the
+// CPU reference's, ×200 and ×5000, as `gpsurf diff` writes them, are black. The reference is GPS
+// subdivision with limit projection and its exact limit normals, at the level whose vertices are the
+// tessellation's, drawn in the GPU's own triangles, corner for corner
+// (render/comparison/reference_triangles.h): every pixel then compares one surface at one parameter,
+// evaluated twice and rasterised alike. Under Loop, GL's triangle tessellation puts its inner rings
+// off the dyadic grid, so no reference level has its vertices: there the reference is the exact
+// evaluator (equal to subdivision and limit projection at every parameter: tests/core) at the
+// parameters of the GPU's own vertices.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -118,19 +118,12 @@ void expect_black(const char* name, const Aovs& gpu, const Aovs& reference, cons
 // diagonal apart, a normal component 6e-6), and no pixel covered in one image only but where a
 // silhouette edge passes within float rounding of a pixel centre (at most 1 in 10,000 covered). The
 // share of pixels lit at all (1/255) and the brightest are reported. cone-concave's apex covariance
-// is 1e-5 (q̂ ~ 1e5 I) where its surface folds inwards: up to 4 % of its normal pixels reach 8/255
-// (measured 3.0 %, the largest difference 4.6e-5). That is this image's sensitivity there more than
-// the GPU's error. On llvmpipe the GPU's vertex normals are within 1.8e-6 of the exact evaluator's
-// (6.7e-6 at the apex, whose triangles cover no pixel), and its own triangles drawn with every
-// normal turned by 1e-6 light 2.1 % of the pixels at 8/255 (differences up to 4.3e-5). cone-pointy,
-// with the same apex, measured 5.5 % while the GPU summed q̄ = q̂μ itself, 0.54 % about nearby anchors
-// (shaders/plan_point.glsl), 0.37 % since boundary leaves take their phantom points into the basis
-// (core/plans/patch_basis.h): before, a phantom beside the rim was 2p₀ − p₁ with p₁ weighing the apex, a
-// large difference in float. Drawn in the reference's own triangles (split along the diagonals the
-// tessellator takes), the images also showed the two draws' rounding: the exact evaluator's values,
-// equal to the reference's to 1e-14, lit 330 pixels of cone-plateau over 1e-6 (the largest 2.2e-5)
-// in the one triangulation against the other (llvmpipe); cone-concave had a pixel at 255/255
-// (2.4e-4), cone-plateau 0.020 % at 8/255 (0.007 % now).
+// is 1e-5 (q̂ ~ 1e5 I) where its surface folds inwards: up to 4 % of its normal pixels may reach
+// 8/255, this image's sensitivity there more than the GPU's error (normals turned by as little as
+// 1e-6 light a few percent of its pixels). cone-pointy, with the same apex, stays within 1 % because
+// the GPU sums q̄ about nearby anchors (shaders/plan_point.glsl) and boundary leaves take their
+// phantom points into the basis (core/plans/patch_basis.h), so that no net point is a large
+// difference in float.
 TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
   const PlanOptions options{Scheme::catmull_clark};
   for (const char* name : {"valence3", "valence5", "valence8", "valence10", "wirecube", "cone", "cone-pointy",
@@ -180,11 +173,10 @@ TEST_F(ComparisonImages, ReferenceInThePatchesTrianglesHasTheirVertices) {
 }
 
 // The triangle samples under their own scheme, Loop, with the bounds above: black but cone-concave,
-// held to Catmull-Clark's 4 %. The two cones with a needle apex (covariance 1e-5, q̂ ~ 1e5 I) were
-// 78 % (cone-pointy) and 56 % (cone-concave) of their pixels at 8/255 while each leaf's sums were
-// taken about its first point's anchor, 53 % and 3.0 % about its heaviest (shaders/plan_eval.glsl),
-// and cone-pointy 0.30 % since an extraordinary node's tangents are solved in double and made
-// orthogonal before their cross product (nearly parallel there, that lost the normal's digits).
+// held to Catmull-Clark's 4 %. The two cones with a needle apex (covariance 1e-5, q̂ ~ 1e5 I) stay
+// within these bounds because each leaf's sums are taken about its heaviest point's anchor
+// (shaders/plan_eval.glsl) and an extraordinary node's tangents are solved in double and made
+// orthogonal before their cross product (nearly parallel there, they would lose the normal's digits).
 TEST_F(ComparisonImages, AreBlackOnTheConesUnderLoop) {
   const PlanOptions options{Scheme::loop};
   for (const char* name : {"cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder", "icosphere"}) {

@@ -1,5 +1,5 @@
-// The covariance ellipsoids of every vertex or of a chosen few (issue 13: a dense mesh shows only
-// the selection's and its neighbours').
+// The covariance ellipsoids of every vertex or of a chosen few (a dense mesh shows only the
+// selection's and its neighbours').
 #include <gtest/gtest.h>
 
 #include "core/mesh/samples.h"

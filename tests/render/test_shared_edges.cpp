@@ -1,4 +1,4 @@
-// Bit-exact shared patch edges on the GPU (issue 14): in the captured output of the tessellation
+// Bit-exact shared patch edges on the GPU: in the captured output of the tessellation
 // evaluation shaders, every vertex on a patch edge inside the mesh has a vertex of another patch at
 // exactly the same position (bit for bit), and the vertices of different patches that lie at one
 // point (within a small tolerance) are all bit-identical: quads, split n-gons (T-junctions),

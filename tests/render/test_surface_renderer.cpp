@@ -1,5 +1,4 @@
-// The GPU pipeline on OSMesa against the CPU evaluator (issue "The GPU pipeline"); its watertightness is
-// test_watertight.cpp.
+// The GPU pipeline on OSMesa against the CPU evaluator; its watertightness is test_watertight.cpp.
 #include "render/pipeline/surface_renderer.h"
 
 #include <gtest/gtest.h>
@@ -90,13 +89,13 @@ TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
 }
 
 // Every sample's patches (exact extraordinary nodes included) under its own scheme and under
-// Catmull-Clark, float on the GPU against double on the CPU (issue 11: ≤ 2e-6 of the diagonal, 0.05°).
+// Catmull-Clark, float on the GPU against double on the CPU (required: ≤ 2e-6 of the diagonal, 0.05°).
 // The pawn's inferred covariances are thin at its poles (eigenvalues down to 9.3e-7, q̂ ~ 1e6): its
-// normals were 0.12° off while the GPU summed q̄ = q̂μ itself, 0.0025° with points kept about
-// nearby anchors (shaders/plan_point.glsl), and are 0.0016° with each leaf's sums about its heaviest
-// point's anchor (shaders/plan_eval.glsl). cone-pointy as Catmull-Clark is 2.2e-6 off on its rim,
-// where boundary rows weigh its apex (q̂ = 1e5 I) by −0.375: float's rounding of the apex's q̂ alone
-// moves the rim by that much.
+// normals keep within the bound because the GPU keeps points about nearby anchors
+// (shaders/plan_point.glsl) and takes each leaf's sums about its heaviest point's anchor
+// (shaders/plan_eval.glsl) instead of summing q̄ = q̂μ itself. cone-pointy as Catmull-Clark, whose
+// boundary rows weigh its apex (q̂ = 1e5 I) by −0.375, keeps within it because boundary phantoms are
+// folded into the basis (core/plans/patch_basis.h).
 TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
   for (const std::string& name : sample_names()) {
     const CovarianceMesh mesh = make_sample(name, 300);
@@ -115,8 +114,8 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
             "vertices\n",
             name.c_str(), scheme ? "cc" : "auto", level, e.position, e.normal_degrees, e.count);
         EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
-        // The issue asks 2e-6; 1.9e-7 at most since boundary phantoms are folded into the basis
-        // (cone-pointy as Catmull-Clark was 2.2e-6 on its rim before).
+        // 2e-6 is required; 5e-7 holds since boundary phantoms are folded into the basis
+        // (core/plans/patch_basis.h).
         EXPECT_LT(e.position, 5e-7) << name << " level " << level;
         EXPECT_LT(e.normal_degrees, 0.05) << name << " level " << level;
       }
@@ -141,8 +140,8 @@ TEST_F(GpuTest, LoopPatchesMatchTheCpuEvaluator) {
           name.c_str(), level, e.position, e.normal_degrees, e.count);
       EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
       // Float against double, the bounds of TessellatedVerticesMatchTheCpuEvaluator: the needle cones'
-      // normals were 0.011° off while the sums were taken about a leaf's first point, 0.004° about its
-      // heaviest (shaders/plan_eval.glsl).
+      // normals keep within them because each leaf's sums are taken about its heaviest point's anchor
+      // (shaders/plan_eval.glsl).
       EXPECT_LT(e.position, 5e-7) << name << " level " << level;
       EXPECT_LT(e.normal_degrees, 0.05) << name << " level " << level;
     }
@@ -419,7 +418,7 @@ TEST_F(GpuTest, ComputePassesSplitIntoSeveralDispatches) {
 
 // A mesh whose plan points exceed the device's largest storage block is refused before any upload,
 // with one line naming the mesh and the figures (the limit lowered to 64 KiB: llvmpipe's 128 MiB
-// takes some 3 million plan points, a minute of plan building); the previous mesh stays.
+// takes some 3 million plan points, too many to build in a test); the previous mesh stays.
 TEST_F(GpuTest, AMeshBeyondTheStorageLimitIsRefusedWithItsFigures) {
   SurfaceRenderer renderer;
   renderer.set_mesh(make_sample("cube"));

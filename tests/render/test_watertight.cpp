@@ -1,6 +1,6 @@
 // The tessellation is watertight: no crack between patches (flagged back faces), no pinhole from
 // twenty cameras, and every patch-edge vertex meets one of its neighbour's, T-junctions of quads and
-// half-size patches included (issue 12), on OSMesa.
+// half-size patches included, on OSMesa.
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
@@ -150,12 +150,12 @@ TEST_F(GpuTest, TessellationIsCrackFree) {
 }
 
 // Twenty cameras around every sample (closed and open, quads, split n-gons, Loop, sharp cones), on
-// a red background: no pinhole at a fixed level or adaptive. The issue's own case first: cone-pointy
-// at 300×300 from (30°, 10°) showed a red pixel at (141, 197) before edges were bit-exact.
+// a red background: no pinhole at a fixed level or adaptive. First cone-pointy at 300×300 from
+// (30°, 10°), where edges that are not bit-exact leave a red pixel at (141, 197).
 // Back faces inside the silhouette count too, except on the cones with an anisotropic apex
 // (cone-concave, cone-plateau): there the tessellation of the steep flanks near the apex turns a
-// lone triangle away from the viewer (1 to 15 such pixels in 60 renders, never a background pixel;
-// their patch edges are bit-exact, SharedEdges), which is no hole; for them only the background counts.
+// lone triangle away from the viewer (a few such pixels, never a background pixel; their patch edges
+// are bit-exact, SharedEdges), which is no hole; for them only the background counts.
 class PinholeTest : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(PinholeTest, NoPinholeFromTwentyCameras) {

@@ -183,8 +183,8 @@ TEST(AxisHandles, SeveralSelectedVerticesGetTheSameRelativeChange) {
   for (const size_t v : {1, 2, 4, 5, 6, 7}) EXPECT_EQ(mesh.covariance(v), original.covariance(v));
 }
 
-// Issue 13: a scale drag changes exactly one σ and keeps the frame; a turn keeps every σ; Shift
-// scales all three; the axis keeps its index (its colour) for the whole drag.
+// A scale drag changes exactly one σ and keeps the frame; a turn keeps every σ; Shift scales all
+// three; the axis keeps its index (its colour) for the whole drag.
 TEST(AxisHandles, AScaleDragChangesOneSigmaAndKeepsTheFrameExactly) {
   const Viewport view = test_view();
   for (int axis = 0; axis < 3; ++axis) {

@@ -1,5 +1,5 @@
 // The View settings kept between sessions (settings.json): the gizmo's pivot and whose ellipsoids
-// are drawn among them (issue 13); out-of-range values are clamped, a wrong type is reported.
+// are drawn among them; out-of-range values are clamped, a wrong type is reported.
 #include "ui/editor_settings.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Whose ellipsoids the editor draws (issue 13): all of them on a small mesh, on a large one those
+// Whose ellipsoids the editor draws: all of them on a small mesh, on a large one those
 // of the selection and its neighbours.
 #include "ui/ellipsoid_scope.h"
 

@@ -1,4 +1,4 @@
-// The statistics overlay keeps clear of the gizmo (issue 13): it takes the first free corner.
+// The statistics overlay keeps clear of the gizmo: it takes the first free corner.
 #include "ui/statistics_overlay.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
-// Issue 13 end to end, in a real window under Xvfb: each handle does one thing (scale one σ with
-// the frame kept, turn with every σ kept, uniform scale, a move along one axis, a typed distance),
-// proportional and mirrored edits, each one undo step that restores the file byte for byte; and
-// the screenshots the issue asks for, kept in the build folder (test-artefacts/editor/).
+// The editor's edits end to end, in a real window under Xvfb: each handle does one thing (scale one σ
+// with the frame kept, turn with every σ kept, uniform scale, a move along one axis, a typed
+// distance), proportional and mirrored edits, each one undo step that restores the file byte for
+// byte; and screenshots of them, kept in build/test-artefacts/EditorEditing/.
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -259,7 +259,7 @@ TEST_F(EditorEditing, SettingsAreKeptInTheConfigurationFolder) {
   EXPECT_FALSE(std::filesystem::exists(dir_.file("gpsurf/recent.txt"))) << "--play runs are not recent files";
 }
 
-// Screenshots for the issue: a 12-vertex selection with one gizmo and mixed values in the
+// Screenshots: a 12-vertex selection with one gizmo and mixed values in the
 // Inspector; the torus framed beside the panels (Home) at 900 × 600.
 TEST_F(EditorEditing, ScreenshotsOfAMultiSelectionAndOfFramingBesideThePanels) {
   use_mesh(make_sample("torus"));
@@ -291,7 +291,7 @@ TEST_F(EditorEditing, ScreenshotsOfAMultiSelectionAndOfFramingBesideThePanels) {
   EXPECT_LT(under_panels, left / 50) << "the torus is under the panels";
 }
 
-// The issue's figure: a proportional drag over about 1,000 vertices of the 100k sphere, its
+// The edit-to-frame figure: a proportional drag over about 1,000 vertices of the 100k sphere, its
 // edit-to-frame time in the statistics (and a screenshot of the drag with its radius).
 TEST_F(EditorEditing, AProportionalDragOnTheLargeSphere) {
   use_mesh(make_sample("sphere", 100000));

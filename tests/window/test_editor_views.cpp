@@ -1,4 +1,4 @@
-// Issue 13, views and numbers, in a real window under Xvfb: the statistics overlay keeps clear of
+// The editor's views and numbers, in a real window under Xvfb: the statistics overlay keeps clear of
 // the gizmo; the gizmo of a multi-selection at its centroid; ellipsoids of the selection and its
 // neighbours only on a large mesh; Inspector fields that hold the full-precision value while edited
 // and apply a typed value exactly. Screenshots kept in build/test-artefacts/EditorViews/.
