@@ -48,10 +48,10 @@ nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptio
     static_options.static_triangles = true;
     // Live, cached and floor frames side by side (the Google Benchmarks' method: warm-up, steady
     // state, medians), so that the ratios compare frames of the same moment.
-    const auto frames = time_gl_work_interleaved({[&] { renderer.draw(target, camera, live); },
-                                                  [&] { renderer.draw(target, camera, cached); },
-                                                  [&] { renderer.draw(target, camera, static_options); }},
-                                                 5, 1.0);
+    const auto frames = time_gl_work_interleaved(
+        {[&] { renderer.draw(target, camera, live); }, [&] { renderer.draw(target, camera, cached); },
+         [&] { renderer.draw(target, camera, static_options); }},
+        5, 1.0);
     const FrameTiming &patches = frames[0], &cached_frame = frames[1], &floor = frames[2];
     const FrameTiming edit = time_gl_work(
         [&] {

@@ -13,11 +13,11 @@ DoubleArray rows_to_array(const std::vector<Vec3>& rows) {
 }
 
 std::vector<Vec3> array_to_rows(const DoubleArray& array, const char* what) {
-  if (array.ndim() != 2 || array.shape(1) != 3)
-    throw py::value_error(std::string(what) + ": expected an n x 3 array");
+  if (array.ndim() != 2 || array.shape(1) != 3) throw py::value_error(std::string(what) + ": expected an n x 3 array");
   auto r = array.unchecked<2>();
   std::vector<Vec3> rows(size_t(array.shape(0)));
-  for (size_t i = 0; i < rows.size(); ++i) rows[i] = Vec3(r(py::ssize_t(i), 0), r(py::ssize_t(i), 1), r(py::ssize_t(i), 2));
+  for (size_t i = 0; i < rows.size(); ++i)
+    rows[i] = Vec3(r(py::ssize_t(i), 0), r(py::ssize_t(i), 1), r(py::ssize_t(i), 2));
   return rows;
 }
 

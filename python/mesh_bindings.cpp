@@ -46,8 +46,6 @@ CovarianceMesh make_mesh(const DoubleArray& positions, const std::vector<std::ve
   return m;
 }
 
-
-
 }  // namespace
 
 void add_mesh_bindings(py::module_& m) {
@@ -61,7 +59,8 @@ void add_mesh_bindings(py::module_& m) {
           "positions", [](const CovarianceMesh& c) { return rows_to_array(means_of(c)); },
           [](CovarianceMesh& c, const DoubleArray& a) {
             const auto rows = array_to_rows(a, "positions");
-            if (rows.size() != c.n_vertices()) throw py::value_error("positions: expected " + std::to_string(c.n_vertices()) + " rows");
+            if (rows.size() != c.n_vertices())
+              throw py::value_error("positions: expected " + std::to_string(c.n_vertices()) + " rows");
             CovarianceMesh edited = c;
             for (size_t i = 0; i < rows.size(); ++i) edited.set_mean(i, rows[i]);
             validate_gaussians(edited);
@@ -72,7 +71,8 @@ void add_mesh_bindings(py::module_& m) {
           "covariances", [](const CovarianceMesh& c) { return matrices_to_array(c.covariances); },
           [](CovarianceMesh& c, const DoubleArray& a) {
             auto matrices = array_to_matrices(a, "covariances");
-            if (matrices.size() != c.n_vertices()) throw py::value_error("covariances: expected " + std::to_string(c.n_vertices()) + " matrices");
+            if (matrices.size() != c.n_vertices())
+              throw py::value_error("covariances: expected " + std::to_string(c.n_vertices()) + " matrices");
             CovarianceMesh edited = c;
             edited.covariances = std::move(matrices);
             validate_gaussians(edited);
@@ -86,7 +86,8 @@ void add_mesh_bindings(py::module_& m) {
           "Writes the mesh: .ply keeps the covariances exactly, .obj positions and faces only")
       .def("copy", [](const CovarianceMesh& c) { return c; })
       .def("__repr__", [](const CovarianceMesh& c) {
-        return "<gpsurf.Mesh: " + std::to_string(c.n_vertices()) + " vertices, " + std::to_string(c.n_faces()) + " faces>";
+        return "<gpsurf.Mesh: " + std::to_string(c.n_vertices()) + " vertices, " + std::to_string(c.n_faces()) +
+               " faces>";
       });
 
   m.def(

@@ -53,8 +53,10 @@ FloatImage render(const CovarianceMesh& mesh, int width, int height, int level, 
                   bool ellipsoids, float sigma, std::vector<float> background, const std::string& scheme,
                   const std::string& loop_beta, const std::string& context) {
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw py::value_error("width and height: expected 1..16384, got " + std::to_string(width) + "x" + std::to_string(height));
-  if (level < 0 || level > 64) throw py::value_error("level: expected 1..64 (0: adaptive), got " + std::to_string(level));
+    throw py::value_error("width and height: expected 1..16384, got " + std::to_string(width) + "x" +
+                          std::to_string(height));
+  if (level < 0 || level > 64)
+    throw py::value_error("level: expected 1..64 (0: adaptive), got " + std::to_string(level));
   if (camera && camera->size() != 2 && camera->size() != 3)
     throw py::value_error("camera: expected (yaw, pitch) or (yaw, pitch, distance) in degrees");
   if (background.size() != 3) throw py::value_error("background: expected (r, g, b)");
@@ -96,10 +98,10 @@ FloatImage render(const CovarianceMesh& mesh, int width, int height, int level, 
 
 void add_render_bindings(py::module_& m) {
   m.def("render", &render, py::arg("mesh"), py::arg("width") = 800, py::arg("height") = 600, py::arg("level") = 0,
-        py::arg("pixels") = 0.0f, py::arg("matcap") = "clay", py::arg("mode") = "matcap", py::arg("camera") = py::none(),
-        py::arg("mesh_lines") = false, py::arg("wireframe") = false, py::arg("ellipsoids") = false,
-        py::arg("sigma") = 1.0f, py::arg("background") = std::vector<float>{1, 1, 1}, py::arg("scheme") = "auto",
-        py::arg("loop_beta") = "loop", py::arg("context") = "auto",
+        py::arg("pixels") = 0.0f, py::arg("matcap") = "clay", py::arg("mode") = "matcap",
+        py::arg("camera") = py::none(), py::arg("mesh_lines") = false, py::arg("wireframe") = false,
+        py::arg("ellipsoids") = false, py::arg("sigma") = 1.0f, py::arg("background") = std::vector<float>{1, 1, 1},
+        py::arg("scheme") = "auto", py::arg("loop_beta") = "loop", py::arg("context") = "auto",
         "The limit surface drawn off-screen as `gpsurf render` draws it: a height x width x 4 float32 RGBA array in "
         "[0, 1], top row first. level 0: adaptive (pixels: target edge length, 0 for the default); camera: (yaw, "
         "pitch[, distance]) in degrees, None to frame the mesh; matcap: clay, porcelain, jade, red-wax or an image "

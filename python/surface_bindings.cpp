@@ -17,7 +17,8 @@ namespace {
 // (q̂ left the positive definite cone).
 py::tuple evaluate(const PlannedSurface& s, const py::array_t<int, py::array::c_style | py::array::forcecast>& patches,
                    const DoubleArray& u, const DoubleArray& v) {
-  const size_t n = patches.ndim() == 0 ? std::max(u.ndim() == 0 ? 1 : size_t(u.size()), size_t(1)) : size_t(patches.size());
+  const size_t n =
+      patches.ndim() == 0 ? std::max(u.ndim() == 0 ? 1 : size_t(u.size()), size_t(1)) : size_t(patches.size());
   if (patches.ndim() > 1) throw py::value_error("patches: expected a number or a 1D array");
   std::vector<int> p(n);
   if (patches.ndim() == 0)
@@ -30,8 +31,10 @@ py::tuple evaluate(const PlannedSurface& s, const py::array_t<int, py::array::c_
   std::vector<Vec3> position(n, nan), du(n, nan), dv(n, nan), normal(n, nan);
   for (size_t i = 0; i < n; ++i) {
     if (p[i] < 0 || p[i] >= plans.n_patches())
-      throw py::index_error("patch " + std::to_string(p[i]) + " out of range 0.." + std::to_string(plans.n_patches() - 1));
-    if (!(us[i] >= 0 && vs[i] >= 0 && us[i] <= 1 && vs[i] <= 1 && (plans.shape == PatchShape::quad || us[i] + vs[i] <= 1)))
+      throw py::index_error("patch " + std::to_string(p[i]) + " out of range 0.." +
+                            std::to_string(plans.n_patches() - 1));
+    if (!(us[i] >= 0 && vs[i] >= 0 && us[i] <= 1 && vs[i] <= 1 &&
+          (plans.shape == PatchShape::quad || us[i] + vs[i] <= 1)))
       throw py::value_error("(u, v) = (" + std::to_string(us[i]) + ", " + std::to_string(vs[i]) +
                             ") lies outside the patch's domain");
     if (const auto sample = evaluate_patch(plans, s.points(), p[i], us[i], vs[i])) {
@@ -54,10 +57,12 @@ void add_surface_bindings(py::module_& m) {
            py::arg("approximate") = false,
            "Plans the surface of `mesh`: scheme 'auto' (Loop for a mesh of triangles, else Catmull-Clark), 'loop' "
            "or 'catmull-clark'; depth -1 for the default; approximate: the thesis' Bezier plans")
-      .def_property_readonly("scheme", [](const PlannedSurface& s) { return s.scheme() == Scheme::loop ? "loop" : "catmull-clark"; })
+      .def_property_readonly(
+          "scheme", [](const PlannedSurface& s) { return s.scheme() == Scheme::loop ? "loop" : "catmull-clark"; })
       .def_property_readonly("n_patches", [](const PlannedSurface& s) { return s.tables().plans.n_patches(); })
-      .def_property_readonly("patch_corners", [](const PlannedSurface& s) { return s.tables().plans.corners(); },
-                             "4 (quads, domain [0,1]^2) or 3 (triangles, u, v >= 0, u + v <= 1)")
+      .def_property_readonly(
+          "patch_corners", [](const PlannedSurface& s) { return s.tables().plans.corners(); },
+          "4 (quads, domain [0,1]^2) or 3 (triangles, u, v >= 0, u + v <= 1)")
       .def("evaluate", &evaluate, py::arg("patches"), py::arg("u"), py::arg("v"),
            "The limit surface at (patch, u, v), each a number or a 1D array: (positions, du, dv, normals), n x 3 "
            "arrays; NaN rows where the surface is undefined")
@@ -69,7 +74,8 @@ void add_surface_bindings(py::module_& m) {
               std::iota(changed->begin(), changed->end(), 0);
             }
             for (const int v : *changed)
-              if (v < 0 || size_t(v) >= mesh.n_vertices()) throw py::index_error("vertex " + std::to_string(v) + " out of range");
+              if (v < 0 || size_t(v) >= mesh.n_vertices())
+                throw py::index_error("vertex " + std::to_string(v) + " out of range");
             s.update(mesh, *changed);
           },
           py::arg("mesh"), py::arg("changed") = py::none(),

@@ -45,7 +45,7 @@ if [ "\$mode" != tests ]; then
   "\$here/bin/gpsurf_bench_frames" --benchmark_min_time=0.1 --benchmark_filter='^Frame/[a-z]+/[a-z0-9-]+/' \\
     --benchmark_out="\$out/frames.json" --benchmark_out_format=json | tee "\$out/frames.txt"
   "\$here/bin/gpsurf_bench_edit" --benchmark_min_time=0.2 | tee "\$out/edit.txt"
-  # Issue 11: exact plans (depth 2) against the thesis' depth 3, the wirecube's many extraordinary nodes.
+  # Exact plans (depth 2) against the thesis' depth 3, on the wirecube's many extraordinary nodes.
   "\$here/bin/gpsurf_bench_plan_depth" --benchmark_min_time=0.2 --benchmark_filter='wirecube/(approx3|exact2)' | tee "\$out/plan_depth.txt"
 fi
 RUN

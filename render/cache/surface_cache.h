@@ -50,9 +50,10 @@ public:
   struct Key {
     long long points = -1;  // generation of the plan points
     float level = 0.0f, pixels = 0.0f;
-    bool debug_mismatch = false;
+    bool mismatched_edge_levels = false;
     bool operator==(const Key& o) const {
-      return points == o.points && level == o.level && pixels == o.pixels && debug_mismatch == o.debug_mismatch;
+      return points == o.points && level == o.level && pixels == o.pixels &&
+             mismatched_edge_levels == o.mismatched_edge_levels;
     }
   };
   /// One captured vertex: the tessellation evaluation outputs the fragment shader reads (position,

@@ -8,14 +8,14 @@ void set_level_uniforms(const ShaderProgram& p, const glm::mat4& view_projection
   p.set("u_viewport", viewport);
   p.set("u_level", uniform_level(o));
   p.set("u_pixels", o.pixels);
-  p.set("u_debug_mismatch", o.debug_mismatch ? 1 : 0);
+  p.set("u_debug_mismatch", o.diagnostics.mismatched_edge_levels ? 1 : 0);
 }
 
 void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& o, float aspect, int width,
                         int height) {
   set_level_uniforms(p, camera.view_projection(aspect), glm::vec2(float(width), float(height)), o);
   p.set("u_view", camera.view());
-  p.set("u_flag_back_faces", o.flag_back_faces ? 1 : 0);
+  p.set("u_flag_back_faces", o.diagnostics.back_faces_magenta ? 1 : 0);
   p.set("u_mode", int(o.mode));
   p.set("u_matcap", 0);
   p.set("u_wire_color", glm::vec4(0.1f, 0.1f, 0.15f, o.wireframe ? 0.85f : 0.0f));

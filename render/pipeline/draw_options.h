@@ -14,6 +14,12 @@ enum class ShadingMode { matcap = 0, normals = 1, flat = 2 };
 /// The opacity of the base mesh's lines where the surface hides them (those in front are opaque).
 constexpr float kHiddenCageAlpha = 0.25f;
 
+/// What crack checks switch on: never part of a draw a user sees.
+struct DrawDiagnostics {
+  bool back_faces_magenta = false;      // draw back faces in pure magenta: a crack shows them
+  bool mismatched_edge_levels = false;  // give neighbouring patches different edge levels on purpose
+};
+
 struct DrawOptions {
   float level = 8.0f;   // uniform tessellation level 1..64
   float pixels = 0.0f;  // > 0: adaptive levels, target edge length in pixels
@@ -26,8 +32,7 @@ struct DrawOptions {
   glm::vec3 background{1.0f, 1.0f, 1.0f};
   bool static_triangles = false;  // draw the triangles of set_triangles() instead of the patches
   bool surface_cache = true;      // redraw stored triangles while points and levels stay (render/cache/surface_cache.h)
-  bool flag_back_faces = false;   // crack checks: draw back faces in pure magenta
-  bool debug_mismatch = false;    // tests only: give neighbouring patches different edge levels
+  DrawDiagnostics diagnostics;    // off in every draw a user sees
 };
 
 /// The adaptive target edge length of a render when none is given: 4 pixels up to a 400-pixel image,

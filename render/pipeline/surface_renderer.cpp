@@ -196,7 +196,7 @@ SurfaceCache::Key SurfaceRenderer::cache_key(const DrawOptions& o) const {
   key.points = points_generation_;
   key.pixels = std::max(o.pixels, 0.0f);
   key.level = key.pixels > 0.0f ? 0.0f : uniform_level(o);
-  key.debug_mismatch = o.debug_mismatch;
+  key.mismatched_edge_levels = o.diagnostics.mismatched_edge_levels;
   return key;
 }
 

@@ -86,15 +86,11 @@ public:
   std::vector<float> read_points() const { return buffers_.read_points(tables().stencils.n_points()); }
   /// GPU memory held by the pipeline's buffers, in bytes.
   size_t buffer_bytes() const { return buffers_.bytes(); }
-  /// Lowers the device's limits on work groups per compute dispatch and on storage block bytes
-  /// (0: the device's own), so that tests reach the dispatch split and the size refusal with meshes
-  /// of test size. Applies from the next set_mesh / update_vertices.
-  void lower_device_limits(int max_groups, long long max_storage_bytes) {
-    group_limit_ = max_groups;
-    storage_limit_ = max_storage_bytes;
-  }
 
 private:
+  // Tests lower the device's limits (tests/support/device_limits.h).
+  friend struct DeviceLimitsForTests;
+
   /// The compute passes for `changed` base vertices, or all (nullptr; an `edit` of most of them
   /// where set, which the surface cache follows as such).
   void run_compute(const std::vector<int>* changed, bool edit = false);
@@ -135,7 +131,7 @@ private:
   unsigned matcap_ = 0;
   int n_base_ = 0;
   long long half_size_patches_ = 0;  // a split face's patches (quads): the cache's buffer estimate
-  int group_limit_ = 0;              // lower_device_limits
+  int group_limit_ = 0;              // lowered by tests only (DeviceLimitsForTests)
   long long storage_limit_ = 0;
   GpuPassTimer* timer_ = nullptr;
   DrawStatistics last_statistics_;

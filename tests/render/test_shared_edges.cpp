@@ -188,7 +188,7 @@ TEST_F(SharedEdges, MismatchedEdgeLevelsLeaveVerticesWithoutATwin) {
     renderer.set_mesh(mesh);
     DrawOptions o;
     o.level = 3.0f;
-    o.debug_mismatch = true;
+    o.diagnostics.mismatched_edge_levels = true;
     EXPECT_GT(check_shared_edges(renderer, mesh, o).without_twin, 0u) << name;
   }
 }

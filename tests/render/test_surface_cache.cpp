@@ -17,6 +17,7 @@
 #include "render/gl/gl_context.h"
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"
+#include "tests/support/device_limits.h"
 #include "tests/support/gl_fixture.h"
 
 namespace gps {
@@ -275,7 +276,7 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
         const std::string what = std::string(name) +
                                  (o.pixels > 0 ? " adaptive" : " level " + std::to_string(int(o.level))) + ", edit " +
                                  std::to_string(e);
-        if (edited.size() > 2) renderer.lower_device_limits(64, 0);
+        if (edited.size() > 2) DeviceLimitsForTests::lower(renderer, 64, 0);
         draw(renderer, target, camera, o, true);
         draw(renderer, target, camera, o, true);  // settled
         const int captures = cache.captures(), refreshes = cache.refreshes();

@@ -18,6 +18,7 @@
 #include "core/evaluation/tessellator.h"
 #include "render/pipeline/surface_point.h"
 #include "render/comparison/reference_triangles.h"
+#include "tests/support/device_limits.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
@@ -402,14 +403,14 @@ TEST_F(GpuTest, ComputePassesSplitIntoSeveralDispatches) {
   loop.levels = 3;
   const CovarianceMesh mesh = subdivide(make_sample("cone"), loop).mesh;
   SurfaceRenderer renderer;
-  renderer.lower_device_limits(64, 0);
+  DeviceLimitsForTests::lower(renderer, 64, 0);
   renderer.set_mesh(
       mesh, PlanOptions{Scheme::catmull_clark, 5, LoopBeta::loop, false});  // the thesis plans of depth 5: many rows
   const int n_rows = renderer.tables().stencils.n_rows();
   ASSERT_GT(n_rows, 20 * 64 * 64);
   expect_points_match(renderer.read_points(), apply_stencils(renderer.tables().stencils, base_points(mesh)), "rebuild");
   // An edit (the listed-rows path) splits the same way: 64 rows a dispatch.
-  renderer.lower_device_limits(1, 0);
+  DeviceLimitsForTests::lower(renderer, 1, 0);
   CovarianceMesh edited = mesh;
   edited.set_mean(0, mesh.mean(0) + Vec3(0.05, 0.0, 0.0));
   renderer.update_vertices(edited, {0});
@@ -422,7 +423,7 @@ TEST_F(GpuTest, ComputePassesSplitIntoSeveralDispatches) {
 TEST_F(GpuTest, AMeshBeyondTheStorageLimitIsRefusedWithItsFigures) {
   SurfaceRenderer renderer;
   renderer.set_mesh(make_sample("cube"));
-  renderer.lower_device_limits(0, 64 << 10);
+  DeviceLimitsForTests::lower(renderer, 0, 64 << 10);
   const CovarianceMesh sphere = make_sample("sphere");  // 1536 quads: more than 64 KiB of points
   try {
     renderer.set_mesh(sphere);

@@ -103,7 +103,7 @@ Frame render_frame(SurfaceRenderer& renderer, const Camera& camera, const DrawOp
 // Back faces in magenta on a red background: what shows through a crack or a pinhole.
 DrawOptions flagging_options() {
   DrawOptions o;
-  o.flag_back_faces = true;
+  o.diagnostics.back_faces_magenta = true;
   o.background = {1.0f, 0.0f, 0.0f};
   return o;
 }
@@ -143,7 +143,7 @@ TEST_F(GpuTest, TessellationIsCrackFree) {
     if (std::string(name) == "pawn") continue;  // its patches are too small at this size for a mismatch to show
     o.pixels = 0.0f;
     o.level = 2.0f;
-    o.debug_mismatch = true;
+    o.diagnostics.mismatched_edge_levels = true;
     EXPECT_GT(flagged_pixels(render_frame(renderer, camera, o, 160).color), 0)
         << name << " with mismatched edge levels";
   }
@@ -167,12 +167,12 @@ TEST_P(PinholeTest, NoPinholeFromTwentyCameras) {
   const double diag = bounding_box_diagonal(mesh);
   int total = 0;
   if (name == "cone-pointy") {
-    o.flag_back_faces = false;
+    o.diagnostics.back_faces_magenta = false;
     o.pixels = 4.0f;  // gpsurf render's default at this size
     const Frame f = render_frame(renderer, frame_mesh(mesh, 30.0f, 10.0f), o, 300);
     EXPECT_FALSE(background(f.color, 141, 197));
     EXPECT_EQ(f.holes(0.1 * diag * 160 / 300), 0);
-    o.flag_back_faces = true;
+    o.diagnostics.back_faces_magenta = true;
   }
   for (int k = 0; k < 20; ++k) {
     const float yaw = 7.0f + 18.0f * float(k), pitch = -70.0f + 140.0f * float((7 * k) % 20) / 19.0f;
@@ -279,7 +279,7 @@ TEST_F(GpuTest, PatchEdgeVerticesMeetAtTJunctions) {
     }
     o.pixels = 0.0f;
     o.level = 3.0f;
-    o.debug_mismatch = true;
+    o.diagnostics.mismatched_edge_levels = true;
     EXPECT_GT(unmatched_edge_vertices(renderer, mesh, o), 0) << name << " with mismatched edge levels";
   }
 }
