@@ -120,6 +120,23 @@ CovarianceMesh parse_off(const std::string& data, const std::string& source) {
   return plain_mesh(points, faces, source);
 }
 
+void check_text_head(std::string_view head, size_t size) {
+  if (size == 0) throw Error("the file is empty");
+  if (const size_t nul = head.find('\0'); nul != std::string_view::npos)
+    throw Error("byte " + std::to_string(nul + 1) + " is a NUL: not a text file");
+}
+
+void check_stl_head(std::string_view head, size_t size) {
+  if (size == 0) throw Error("the file is empty");
+  if (head.starts_with("solid") && head.find('\0') == std::string_view::npos) return;  // ASCII
+  if (size < 84) throw Error("binary STL shorter than its 84-byte header (truncated)");
+  uint32_t declared = 0;
+  std::memcpy(&declared, head.data() + 80, 4);
+  if (size != 84 + size_t(declared) * 50)
+    throw Error("binary STL of " + std::to_string(size) + " bytes whose header declares " + std::to_string(declared) +
+                " triangles (" + std::to_string(84 + size_t(declared) * 50) + " bytes)");
+}
+
 CovarianceMesh parse_stl(const std::string& data, const std::string& source) {
   if (data.empty()) throw Error(source + ": the file is empty");
   std::vector<Vec3> corners;

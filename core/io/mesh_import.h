@@ -2,6 +2,7 @@
 // Plain polygon meshes from OBJ, OFF and STL (ASCII or binary); covariances are left as identity
 // for the caller to infer (core/mesh/inference.h).
 #include <string>
+#include <string_view>
 
 #include "core/mesh/covariance_mesh.h"
 
@@ -9,6 +10,12 @@ namespace gps {
 
 /// Parses OBJ text (v and f records; f accepts v/vt/vn and negative indices; other records are skipped).
 CovarianceMesh parse_obj(const std::string& data, const std::string& source);
+
+/// The first bytes of an OBJ or OFF file (core/io/text_file.h): text, without NUL bytes.
+void check_text_head(std::string_view head, size_t size);
+/// The first bytes of an STL file: ASCII ("solid ...", text) or binary (84-byte header, its triangle
+/// count matching the file's size).
+void check_stl_head(std::string_view head, size_t size);
 
 /// Parses OFF text (optionally with the 'OFF' keyword missing and '#' comments).
 CovarianceMesh parse_off(const std::string& data, const std::string& source);

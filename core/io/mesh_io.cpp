@@ -22,7 +22,9 @@ CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options) 
   const std::string ext = extension_of(path);
   if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".stl")
     throw Error(path + ": unknown mesh format '" + ext + "' (use .ply, .obj, .off or .stl)");
-  const std::string data = read_text_file(path);
+  const std::string data = read_text_file(path, ext == ".ply"   ? HeadCheck(check_ply_head)
+                                                : ext == ".stl" ? check_stl_head
+                                                                : check_text_head);
   CovarianceMesh mesh;
   if (ext == ".ply") {
     PlyContents ply = parse_ply(data, path);

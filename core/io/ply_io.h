@@ -4,6 +4,7 @@
 // properties is a plain mesh.
 #include <ostream>
 #include <string>
+#include <string_view>
 
 #include "core/mesh/covariance_mesh.h"
 
@@ -16,6 +17,9 @@ struct PlyContents {
 
 /// Reads a PLY file; every malformed input is a gps::Error naming the file and what is wrong.
 PlyContents read_ply(const std::string& path);
+
+/// The first bytes of a PLY file (core/io/text_file.h): its first line is "ply".
+void check_ply_head(std::string_view head, size_t size);
 
 /// Parses PLY data already in memory; `source` names it in errors.
 PlyContents parse_ply(const std::string& data, const std::string& source);

@@ -1,32 +1,74 @@
 #include "core/io/text_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "core/mesh/error.h"
 
 namespace gps {
+namespace {
 
-std::string read_text_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw Error(path + ": no such file");
-  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open (" + std::strerror(errno) + ")");
-  // The whole file in one string of its own size (a growing stream buffer would hold up to twice it),
-  // then whatever a pipe or a file still growing adds past that size.
-  const auto size = std::filesystem::file_size(path, ec);
-  std::string data(ec ? 0 : size_t(size), '\0');
-  in.read(data.data(), std::streamsize(data.size()));
-  data.resize(size_t(in.gcount()));
-  if (in.bad()) throw Error(path + ": cannot read");
-  if (in) {
-    std::ostringstream rest;
-    rest << in.rdbuf();
-    data += std::move(rest).str();
+// What a file that is not a regular one is, for the message.
+const char* kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// Closes the descriptor however the read ends.
+struct FileDescriptor {
+  int fd;
+  ~FileDescriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+// Reads up to `count` bytes into `out`, fewer only at the end of the file.
+size_t read_fully(int fd, char* out, size_t count, const std::string& path) {
+  size_t done = 0;
+  while (done < count) {
+    const ssize_t n = ::read(fd, out + done, count - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw Error(path + ": cannot read (" + std::strerror(errno) + ")");
+    if (n == 0) break;
+    done += size_t(n);
+  }
+  return done;
+}
+
+}  // namespace
+
+std::string read_text_file(const std::string& path, const HeadCheck& check_head) {
+  // Non-blocking: opening a FIFO without a writer returns at once, and fstat then refuses it.
+  const FileDescriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+  if (file.fd < 0) {
+    if (errno == ENOENT) throw Error(path + ": no such file");
+    if (errno == ELOOP) throw Error(path + ": a loop of symbolic links");
+    throw Error(path + ": cannot open (" + std::strerror(errno) + ")");
+  }
+  struct stat status {};
+  if (::fstat(file.fd, &status) != 0) throw Error(path + ": cannot read (" + std::strerror(errno) + ")");
+  if (!S_ISREG(status.st_mode)) throw Error(path + ": is " + std::string(kind_of(status.st_mode)) + ", not a file");
+  const size_t size = size_t(status.st_size);
+  std::string data(std::min(size, kHeadBytes), '\0');
+  data.resize(read_fully(file.fd, data.data(), data.size(), path));
+  if (check_head) {
+    try {
+      check_head(data, size);
+    } catch (const Error& e) {
+      throw Error(path + ": " + e.what(), e.kind());
+    }
+  }
+  if (data.size() < size && data.size() == kHeadBytes) {
+    data.resize(size);
+    data.resize(kHeadBytes + read_fully(file.fd, data.data() + kHeadBytes, size - kHeadBytes, path));
   }
   return data;
 }

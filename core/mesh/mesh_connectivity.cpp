@@ -176,6 +176,22 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity&
     } while (++count <= c.valence(v) && h != first);
     if (count != c.valence(v)) throw non_manifold(v);
   }
+  // Two faces that share all their edges close up on their own (a pillow): manifold, but the first
+  // refinement of Loop (and the plans) makes it non-manifold, so it is refused here, named.
+  for (int f = 0; f < t.n_faces(); ++f) {
+    const int begin = t.offsets[size_t(f)], end = t.offsets[size_t(f) + 1];
+    const auto other_face = [&](int e) {
+      const int a = c.edge_faces[2 * size_t(e)], b = c.edge_faces[2 * size_t(e) + 1];
+      return a == f ? b : a;
+    };
+    const int g = other_face(c.face_edges[size_t(begin)]);
+    if (g <= f || t.face_size(g) != end - begin) continue;
+    bool shares_all = true;
+    for (int k = begin + 1; k < end && shares_all; ++k) shares_all = other_face(c.face_edges[size_t(k)]) == g;
+    if (shares_all)
+      throw Error(source + ": faces " + std::to_string(f) + " and " + std::to_string(g) +
+                  " share all their edges (a closed pillow of two faces, which no subdivision can refine)");
+  }
 }
 
 }  // namespace gps

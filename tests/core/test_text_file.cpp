@@ -1,0 +1,112 @@
+// Only regular files are read, never past their size, and a file whose first bytes cannot begin its
+// format is refused before the rest is read: FIFOs and devices at once (no hang), a sparse file of
+// gigabytes without reading it, each with one line naming the file and what it is.
+#include "core/io/text_file.h"
+
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <functional>
+
+#include "core/io/mesh_io.h"
+#include "core/mesh/error.h"
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The process's peak resident memory in MiB (each test runs in its own process under ctest).
+double peak_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;
+}
+
+TEST(TextFile, AFifoIsRefusedByItsTypeWithoutWaitingForAWriter) {
+  const test::TempDir dir;
+  const std::string fifo = dir.file("pipe.ply");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(error_of([&] { read_mesh(fifo); }), fifo + ": is a FIFO (named pipe), not a file");
+}
+
+TEST(TextFile, DevicesAndFoldersAreRefusedByTheirType) {
+  const test::TempDir dir;
+  const std::string zero = dir.file("zero.ply");
+  std::filesystem::create_symlink("/dev/zero", zero);
+  EXPECT_EQ(error_of([&] { read_mesh(zero); }), zero + ": is a character device, not a file");
+  std::filesystem::create_directory(dir.file("folder.obj"));
+  EXPECT_EQ(error_of([&] { read_mesh(dir.file("folder.obj")); }),
+            dir.file("folder.obj") + ": is a directory, not a file");
+  EXPECT_EQ(error_of([&] { read_mesh(dir.file("missing.off")); }), dir.file("missing.off") + ": no such file");
+  const std::string loop = dir.file("loop.stl");
+  std::filesystem::create_symlink(loop, loop);
+  EXPECT_EQ(error_of([&] { read_mesh(loop); }), loop + ": a loop of symbolic links");
+}
+
+// A sparse file of 2 GiB of zeros under each format's name: refused from its first bytes, without
+// the gigabytes read or held.
+TEST(TextFile, ASparseFileIsRefusedFromItsFirstBytes) {
+  const test::TempDir dir;
+  for (const std::string name : {"big.ply", "big.obj", "big.off", "big.stl"}) {
+    const std::string path = dir.file(name);
+    std::filesystem::resize_file(dir.write(name, ""), 2ull << 30);
+    const std::string error = error_of([&] { read_mesh(path); });
+    EXPECT_EQ(error.rfind(path + ": ", 0), 0u) << error;
+    EXPECT_NE(error.find(name == "big.ply"   ? "not a PLY file"
+                         : name == "big.stl" ? "binary STL"
+                                             : "NUL"),
+              std::string::npos)
+        << error;
+  }
+  EXPECT_LT(peak_mib(), 256.0);
+}
+
+TEST(TextFile, EmptyFilesAreNamedAsEmpty) {
+  const test::TempDir dir;
+  for (const std::string name : {"e.ply", "e.obj", "e.off", "e.stl"})
+    EXPECT_EQ(error_of([&] { read_mesh(dir.write(name, "")); }), dir.file(name) + ": the file is empty");
+}
+
+// The check sees the first bytes only, then the whole file is read, and no more than its size.
+TEST(TextFile, TheHeadCheckSeesTheFirstBytesThenTheWholeFileIsRead) {
+  const test::TempDir dir;
+  const std::string contents = std::string(3 * kHeadBytes + 17, 'x');
+  const std::string path = dir.write("long.txt", contents);
+  size_t seen = 0, declared = 0;
+  const std::string read = read_text_file(path, [&](std::string_view head, size_t size) {
+    seen = head.size();
+    declared = size;
+  });
+  EXPECT_EQ(seen, kHeadBytes);
+  EXPECT_EQ(declared, contents.size());
+  EXPECT_EQ(read, contents);
+  EXPECT_EQ(error_of([&] { read_text_file(path, [](std::string_view, size_t) { throw Error("not this"); }); }),
+            path + ": not this");
+}
+
+// Two faces on the same three vertices close up on their own: refused at load, naming both faces.
+TEST(TextFile, AClosedPillowOfTwoFacesIsRefusedNamingThem) {
+  const test::TempDir dir;
+  const std::string path = dir.write("pillow.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n");
+  EXPECT_EQ(error_of([&] { read_mesh(path); }),
+            path +
+                ": faces 0 and 1 share all their edges (a closed pillow of two faces, which no subdivision can "
+                "refine)");
+  const std::string quads = dir.write("quads.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 4 3 2 1\n");
+  EXPECT_NE(error_of([&] { read_mesh(quads); }).find("faces 0 and 1 share all their edges"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace gps
