@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/io/mesh_io.h"
+#include "core/plans/planned_surface.h"
 
 namespace gps {
 
@@ -16,13 +17,17 @@ void print_info(const std::string& path) {
   const MeshConnectivity c = connectivity_of(t);
   std::map<int, int> face_sizes, valences;
   for (int f = 0; f < t.n_faces(); ++f) ++face_sizes[t.face_size(f)];
+  // Extraordinary by the rules of the scheme the surface is drawn with: regular interior valence 4
+  // and boundary 3 under Catmull-Clark, 6 and 4 under Loop.
+  const Scheme scheme = scheme_for(t, PlanOptions{});
+  const int regular_interior = scheme == Scheme::loop ? 6 : 4, regular_boundary = scheme == Scheme::loop ? 4 : 3;
   int boundary_edges = 0, extraordinary = 0;
   for (int e = 0; e < c.n_edges(); ++e) boundary_edges += c.is_boundary_edge(e);
   for (int v = 0; v < t.n_vertices; ++v) {
     ++valences[c.valence(v)];
     const VertexRole role = vertex_role(c, v);
-    extraordinary +=
-        (role == VertexRole::interior && c.valence(v) != 4) || (role == VertexRole::boundary && c.valence(v) != 3);
+    extraordinary += (role == VertexRole::interior && c.valence(v) != regular_interior) ||
+                     (role == VertexRole::boundary && c.valence(v) != regular_boundary);
   }
   double lo = std::numeric_limits<double>::infinity(), hi = 0;
   for (const Mat3& s : m.covariances) {
@@ -36,7 +41,9 @@ void print_info(const std::string& path) {
     std::cout << std::exchange(sep, ", ") << count << " with " << size << " sides";
   std::cout << ")\nedges: " << c.n_edges() << "\nboundary edges: " << boundary_edges << "\nvalences:";
   for (const auto& [valence, count] : valences) std::cout << ' ' << valence << ':' << count;
-  std::cout << "\nextraordinary vertices: " << extraordinary << "\n";
+  std::cout << "\nscheme: " << (scheme == Scheme::loop ? "Loop (a mesh of triangles)" : "Catmull-Clark")
+            << "\nextraordinary vertices: " << extraordinary << " (by "
+            << (scheme == Scheme::loop ? "Loop" : "Catmull-Clark") << "'s rules)\n";
   std::cout << "covariance eigenvalues: " << lo << " .. " << hi << "\n";
 }
 }  // namespace

@@ -3,13 +3,15 @@
 
 #include "app/commands.h"
 #include "core/io/mesh_io.h"
+#include "core/mesh/mesh_connectivity.h"
+#include "core/plans/planned_surface.h"
 #include "core/reference/reference_subdivision.h"
 
 namespace gps {
 
 void add_subdivide_command(CLI::App& app) {
   struct Args {
-    std::string input, output, scheme = "catmull-clark", beta = "loop";
+    std::string input, output, scheme = "auto", beta = "loop";
     int levels = 1;
     bool limit = false, binary = false;
   };
@@ -18,22 +20,25 @@ void add_subdivide_command(CLI::App& app) {
   cmd->add_option("input", args->input, "input mesh")->required();
   cmd->add_option("-o,--output", args->output, "output (.ply keeps covariances, .obj positions)")->required();
   cmd->add_option("--levels", args->levels, "subdivision levels")->check(CLI::Range(0, 8));
-  cmd->add_option("--scheme", args->scheme, "linear scheme")->check(CLI::IsMember({"catmull-clark", "loop"}));
+  cmd->add_option("--scheme", args->scheme,
+                  "linear scheme: auto (Loop for a mesh of triangles only, else Catmull-Clark), loop, catmull-clark")
+      ->check(CLI::IsMember({"auto", "catmull-clark", "loop"}));
   cmd->add_option("--loop-beta", args->beta, "Loop vertex weight: Loop's original or Warren's 3/(8n)")
       ->check(CLI::IsMember({"loop", "warren"}));
   cmd->add_flag("--limit", args->limit, "move every vertex to its exact limit position");
   cmd->add_flag("--binary", args->binary, "binary PLY");
   cmd->callback([args] {
     const CovarianceMesh m = read_mesh(args->input);
+    const PlanOptions named = plan_options_named(args->scheme, args->beta);
     SubdivisionOptions o;
-    o.scheme = args->scheme == "loop" ? Scheme::loop : Scheme::catmull_clark;
+    o.scheme = scheme_for(topology_of(m.mesh), named);
     o.levels = args->levels;
     o.limit = args->limit;
-    o.loop_beta = args->beta == "warren" ? LoopBeta::warren : LoopBeta::loop;
+    o.loop_beta = named.loop_beta;
     const SubdivisionResult r = subdivide(m, o);
     write_mesh(args->output, r.mesh, args->binary);
-    std::cout << "wrote " << args->output << " (" << r.mesh.n_vertices() << " vertices, " << r.mesh.n_faces()
-              << " faces)\n";
+    std::cout << "wrote " << args->output << " (" << (o.scheme == Scheme::loop ? "Loop, " : "Catmull-Clark, ")
+              << r.mesh.n_vertices() << " vertices, " << r.mesh.n_faces() << " faces)\n";
   });
 }
 

@@ -42,6 +42,21 @@ TEST(Cli, SampleInfoSubdivideInfer) {
                                " --levels 2 --scheme loop --loop-beta warren"))
                 .exit_code,
             0);
+  // A mesh of triangles: Loop by default, as render and tessellate draw it, and info says so.
+  EXPECT_EQ(run_command(gpsurf("subdivide " + dir.file("cone.ply") + " -o " + dir.file("auto.ply") + " --levels 2"))
+                .exit_code,
+            0);
+  EXPECT_EQ(run_command(gpsurf("subdivide " + dir.file("cone.ply") + " -o " + dir.file("loop.ply") +
+                               " --levels 2 --scheme loop"))
+                .exit_code,
+            0);
+  EXPECT_EQ(read_mesh(dir.file("auto.ply")).n_faces(), 8u * 16u);
+  EXPECT_EQ(read_mesh(dir.file("auto.ply")).covariances, read_mesh(dir.file("loop.ply")).covariances);
+  const auto cone_info = run_command(gpsurf("info " + dir.file("cone.ply")));
+  EXPECT_NE(cone_info.output.find("scheme: Loop"), std::string::npos) << cone_info.output;
+  EXPECT_NE(cone_info.output.find("extraordinary vertices: 9 (by Loop's rules)"), std::string::npos)
+      << cone_info.output;
+  EXPECT_NE(info.output.find("scheme: Catmull-Clark"), std::string::npos) << info.output;
   EXPECT_EQ(run_command(gpsurf("infer " + dir.file("s.obj") + " -o " + dir.file("i.ply") + " --bias 0.1")).exit_code,
             0);
   EXPECT_EQ(
