@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/naming_input.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/plans/planned_surface.h"
@@ -35,7 +36,7 @@ void add_subdivide_command(CLI::App& app) {
     o.levels = args->levels;
     o.limit = args->limit;
     o.loop_beta = named.loop_beta;
-    const SubdivisionResult r = subdivide(m, o);
+    const SubdivisionResult r = naming_input(args->input, [&] { return subdivide(m, o); });
     write_mesh(args->output, r.mesh, args->binary);
     std::cout << "wrote " << args->output << " (" << (o.scheme == Scheme::loop ? "Loop, " : "Catmull-Clark, ")
               << r.mesh.n_vertices() << " vertices, " << r.mesh.n_faces() << " faces)\n";

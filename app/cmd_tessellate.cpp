@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/naming_input.h"
 #include "app/plan_arguments.h"
 #include "core/io/mesh_io.h"
 #include "core/plans/planned_surface.h"
@@ -26,8 +27,9 @@ void add_tessellate_command(CLI::App& app) {
   cmd->add_flag("--binary", args->binary, "binary PLY");
   cmd->callback([args] {
     const CovarianceMesh m = read_mesh(args->input);
-    const PlannedSurface surface(m, args->plans.options());
-    const TriangleMesh t = tessellate(surface.tables().plans, surface.points(), args->level);
+    const PlannedSurface surface = naming_input(args->input, [&] { return PlannedSurface(m, args->plans.options()); });
+    const TriangleMesh t =
+        naming_input(args->input, [&] { return tessellate(surface.tables().plans, surface.points(), args->level); });
     write_triangle_mesh(args->output, t, args->binary);
     std::cout << "wrote " << args->output << " (" << (surface.scheme() == Scheme::loop ? "Loop, " : "Catmull-Clark, ")
               << surface.tables().plans.n_patches() << " patches, " << t.positions.size() << " vertices, "

@@ -6,6 +6,7 @@
 
 #include "core/mesh/error.h"
 #include "core/evaluation/patch_eval.h"
+#include "core/evaluation/tessellation_size.h"
 
 namespace gps {
 
@@ -115,6 +116,9 @@ TriangleMesh tessellate_triangles(const PatchPlans& plans, const std::vector<Dua
 
 TriangleMesh tessellate(const PatchPlans& plans, const std::vector<Dual>& points, int level) {
   if (level < 1 || level > 64) throw usage_error("tessellation level must be 1..64, got " + std::to_string(level));
+  check_output_size(tessellation_size(plans, level),
+                    "tessellating " + std::to_string(plans.n_patches()) + " patches at level " + std::to_string(level),
+                    "triangles", "use a lower level");
   if (plans.shape == PatchShape::triangle) return tessellate_triangles(plans, points, level);
   TriangleMesh out;
   // Level L is L segments along an edge of the mesh, as on the GPU (shaders/patch_tesc.glsl): a

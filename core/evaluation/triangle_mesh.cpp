@@ -7,6 +7,7 @@
 #include "core/io/atomic_file.h"
 #include "core/mesh/error.h"
 #include "core/io/mesh_io.h"
+#include "core/io/quoted_text.h"
 
 namespace gps {
 
@@ -82,7 +83,7 @@ void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, bool
   for (size_t i = 0; i < mesh.positions.size(); ++i)
     if (const std::string why = position_problem(mesh.positions[i]);
         !why.empty() || (i < mesh.normals.size() && !mesh.normals[i].allFinite()))
-      throw Error(path + ": not written: vertex " + std::to_string(i) + " " +
+      throw Error(escaped(path) + ": not written: vertex " + std::to_string(i) + " " +
                   (why.empty() ? "has a normal that is not finite" : why));
   if (ext == ".ply")
     write_file_atomically(
@@ -90,7 +91,7 @@ void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, bool
   else if (ext == ".obj")
     write_file_atomically(path, [&](std::ostream& out) { write_obj(out, mesh); });
   else
-    throw usage_error(path + ": cannot write format '" + ext + "' (use .ply or .obj)");
+    throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) + " (use .ply or .obj)");
 }
 
 }  // namespace gps

@@ -1,6 +1,7 @@
 #include "core/io/atomic_file.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -11,6 +12,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/io/file_kind.h"
+#include "core/io/quoted_text.h"
+#include "core/io/save_target.h"
 #include "core/mesh/error.h"
 
 namespace gps {
@@ -58,25 +62,65 @@ private:
   bool installed_ = false;
 };
 
-// The file a path names after following symbolic links (a dangling link names its missing target),
-// so that a save writes through the link and keeps it.
-fs::path follow_links(fs::path path) {
-  std::error_code ec;
-  for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(path, ec)); ++hops) {
-    const fs::path link = fs::read_symlink(path, ec);
-    if (ec) break;
-    path = link.is_absolute() ? link : path.parent_path() / link;
+// Holds the signals that would end the process (they arrive once it is released), so that a file
+// written in place is never left half old, half new by them.
+class HeldSignals {
+public:
+  HeldSignals() {
+    sigset_t held;
+    sigemptyset(&held);
+    for (const int sig : kCleanupSignals) sigaddset(&held, sig);
+    ::pthread_sigmask(SIG_BLOCK, &held, &previous_);
   }
-  return path;
+  ~HeldSignals() { ::pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+  HeldSignals(const HeldSignals&) = delete;
+  HeldSignals& operator=(const HeldSignals&) = delete;
+
+private:
+  sigset_t previous_{};
+};
+
+// Closes the descriptor however the save ends.
+struct FileDescriptor {
+  int fd;
+  ~FileDescriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+// Copies every byte of the file `from` into the descriptor `to` from its start, cuts `to` to that
+// length and flushes it to disk; returns an empty string, or what failed.
+std::string copy_into(const fs::path& from, int to) {
+  const FileDescriptor in{::open(from.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (in.fd < 0) return std::string("cannot open ") + escaped(from.string()) + " (" + std::strerror(errno) + ")";
+  if (::lseek(to, 0, SEEK_SET) != 0) return std::strerror(errno);
+  char buffer[1 << 16];
+  off_t total = 0;
+  for (;;) {
+    const ssize_t n = ::read(in.fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return std::string("cannot read ") + escaped(from.string()) + " (" + std::strerror(errno) + ")";
+    if (n == 0) break;
+    for (ssize_t done = 0; done < n;) {
+      const ssize_t w = ::write(to, buffer + done, size_t(n - done));
+      if (w < 0 && errno == EINTR) continue;
+      if (w < 0) return std::strerror(errno);
+      done += w;
+    }
+    total += n;
+  }
+  if (::ftruncate(to, total) != 0 || ::fsync(to) != 0) return std::strerror(errno);
+  return {};
 }
 
-// Flushes a file or folder to the disk; throws naming `path` when the system refuses.
-void sync_path(const fs::path& what, const std::string& path) {
+// Flushes a file or folder to the disk; throws with `name` (the save's path as messages show it) when
+// the system refuses.
+void sync_path(const fs::path& what, const std::string& name) {
   const int fd = ::open(what.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0 || ::fsync(fd) != 0) {
     const std::string why = std::strerror(errno);
     if (fd >= 0) ::close(fd);
-    throw Error(path + ": cannot flush " + what.string() + " to disk (" + why + ")");
+    throw Error(name + ": cannot flush " + escaped(what.string()) + " to disk (" + why + ")");
   }
   ::close(fd);
 }
@@ -98,31 +142,78 @@ void remove_stale_temps(const fs::path& dir, const std::string& name) {
   }
 }
 
+// A file with more than one name (hard links) is written in place, so that every name keeps seeing
+// it, as careful editors do: its old contents are first saved as NAME~ beside it (atomically, flushed),
+// then the complete new contents in `temp` are copied over it with the ending signals held. A failed
+// copy puts the old contents back; where even that fails, the message names the backup.
+void write_in_place(const SaveTarget& target, const fs::path& temp, const std::string& name) {
+  const fs::path backup = target.file.string() + "~";
+  const std::string shown_backup = escaped(backup.string());
+  struct stat status {};
+  if (::lstat(backup.c_str(), &status) == 0 && !S_ISREG(status.st_mode))
+    throw Error(name + ": has " + std::to_string(target.links) +
+                " hard links, so it is written in place after a backup to " + shown_backup + ", which is " +
+                file_kind(status.st_mode) + "; nothing written");
+  const HeldSignals held;
+  const std::string backup_name = backup.filename().string();
+  remove_stale_temps(target.folder, backup_name);
+  const fs::path backup_temp = target.folder / ("." + backup_name + ".tmp" + std::to_string(::getpid()));
+  {
+    const FileDescriptor out{::open(backup_temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, target.mode & 0777)};
+    const std::string failed = out.fd < 0 ? std::string(std::strerror(errno)) : copy_into(target.file, out.fd);
+    if (!failed.empty()) {
+      std::error_code ignored;
+      fs::remove(backup_temp, ignored);
+      throw Error(name + ": cannot keep a backup " + shown_backup + " before writing in place (" + failed + ")");
+    }
+  }
+  std::error_code ec;
+  fs::rename(backup_temp, backup, ec);
+  if (ec) {
+    fs::remove(backup_temp, ec);
+    throw Error(name + ": cannot keep a backup " + shown_backup + " before writing in place (" + ec.message() + ")");
+  }
+  sync_path(target.folder, name);
+  const FileDescriptor file{::open(target.file.c_str(), O_WRONLY | O_NOFOLLOW | O_CLOEXEC)};
+  struct stat now {};
+  if (file.fd < 0 || ::fstat(file.fd, &now) != 0 || now.st_dev != target.device || now.st_ino != target.inode)
+    throw Error(name + ": changed while it was being saved; not written (the old contents are also in " + shown_backup +
+                ")");
+  const std::string failed = copy_into(temp, file.fd);
+  if (failed.empty()) return;
+  if (copy_into(backup, file.fd).empty())
+    throw Error(name + ": writing in place failed (" + failed + "); the old contents are back");
+  throw Error(name + ": writing in place failed (" + failed + "); the old contents are in " + shown_backup);
+}
+
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write, bool binary) {
-  std::error_code ec;
-  const fs::path target = follow_links(fs::path(path));
-  if (fs::is_directory(target, ec)) throw Error(path + ": is a directory");
-  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  if (!fs::is_directory(dir, ec)) throw Error(path + ": cannot write, folder " + dir.string() + " does not exist");
-  remove_stale_temps(dir, target.filename().string());
-  const fs::path temp = dir / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
+  const SaveTarget target = inspect_save_target(path);
+  const std::string name = escaped(path);
+  const fs::path& dir = target.folder;
+  remove_stale_temps(dir, target.file.filename().string());
+  const fs::path temp = dir / ("." + target.file.filename().string() + ".tmp" + std::to_string(::getpid()));
   const TempFileSignalGuard guard(temp);
+  std::error_code ec;
   try {
     std::ofstream out(temp, binary ? std::ios::binary : std::ios::out);
-    if (!out) throw Error(path + ": cannot write (" + std::strerror(errno) + ")");
+    if (!out) throw Error(name + ": cannot write (" + std::strerror(errno) + ")");
     write(out);
     out.flush();
-    if (!out) throw Error(path + ": writing failed (" + std::strerror(errno) + ")");
+    if (!out) throw Error(name + ": writing failed (" + std::strerror(errno) + ")");
     out.close();
-    struct stat old {};
-    if (::stat(target.c_str(), &old) == 0) ::chmod(temp.c_str(), old.st_mode & 07777);  // keep the old file's mode
-    sync_path(temp, path);  // the data on disk before the name points at it
-    sync_path(dir, path);   // and the temporary file's own entry in its folder
-    fs::rename(temp, target, ec);
-    if (ec) throw Error(path + ": cannot replace the file (" + ec.message() + ")");
-    sync_path(dir, path);  // the rename itself on disk
+    if (target.exists) ::chmod(temp.c_str(), target.mode & 07777);  // keep the old file's mode
+    sync_path(temp, name);                                          // the data on disk before the name points at it
+    if (target.links > 1) {
+      write_in_place(target, temp, name);
+      fs::remove(temp, ec);
+      return;
+    }
+    sync_path(dir, name);  // the temporary file's own entry in its folder
+    fs::rename(temp, target.file, ec);
+    if (ec) throw Error(name + ": cannot replace the file (" + ec.message() + ")");
+    sync_path(dir, name);  // the rename itself on disk
   } catch (...) {
     fs::remove(temp, ec);
     throw;

@@ -8,12 +8,14 @@
 
 #include "core/mesh/error.h"
 #include "core/io/number_text.h"
+#include "core/io/quoted_text.h"
 #include "core/io/text_words.h"
 
 namespace gps {
 
 namespace {
 
+// `source` is already as messages show it (escaped).
 CovarianceMesh plain_mesh(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces,
                           const std::string& source) {
   for (size_t i = 0; i < points.size(); ++i)
@@ -29,7 +31,8 @@ bool parse_int(std::string_view s, long long& out) {
 
 }  // namespace
 
-CovarianceMesh parse_obj(const std::string& data, const std::string& source) {
+CovarianceMesh parse_obj(const std::string& data, const std::string& source_path) {
+  const std::string source = escaped(source_path);
   if (data.empty()) throw Error(source + ": the file is empty");
   std::vector<Vec3> points;
   std::vector<std::vector<int>> faces;
@@ -51,10 +54,11 @@ CovarianceMesh parse_obj(const std::string& data, const std::string& source) {
       for (size_t k = 1; k < words.size(); ++k) {
         long long index = 0;
         if (!parse_int(words[k].substr(0, words[k].find('/')), index))
-          throw Error(at + "'" + std::string(words[k]) + "' is not a vertex index");
+          throw Error(at + quoted_token(words[k]) + " is not a vertex index");
+        const long long written = index;
         if (index < 0) index += (long long)points.size() + 1;  // relative to the end
         if (index < 1 || index > (long long)points.size())
-          throw Error(at + "vertex index " + std::string(words[k]) + " is out of range (" +
+          throw Error(at + "vertex index " + std::to_string(written) + " is out of range (" +
                       std::to_string(points.size()) + " vertices so far)");
         face.push_back(int(index - 1));
       }
@@ -66,21 +70,22 @@ CovarianceMesh parse_obj(const std::string& data, const std::string& source) {
   return plain_mesh(points, faces, source);
 }
 
-CovarianceMesh parse_off(const std::string& data, const std::string& source) {
+CovarianceMesh parse_off(const std::string& data, const std::string& source_path) {
+  const std::string source = escaped(source_path);
   if (data.empty()) throw Error(source + ": the file is empty");
   WordCursor t(data);
   const auto at = [&](int line) { return source + ": line " + std::to_string(line) + ": "; };
   // The keyword: OFF or a variant (COFF, NOFF, STCNOFF, ...) whose extra vertex values are skipped below.
   if (!t.done() && t.word().size() >= 3 && t.word().ends_with("OFF")) {
     if (t.word().find('4') != std::string_view::npos || t.word().starts_with("n"))
-      throw Error(at(t.line()) + std::string(t.word()) + " (4D or n-dimensional OFF) is not supported");
+      throw Error(at(t.line()) + quoted_token(t.word()) + " (4D or n-dimensional OFF) is not supported");
     t.next();
   }
   const auto next_int = [&](const char* what) {
     if (t.done()) throw Error(source + ": the file ends early (expected " + what + ")");
     long long v = 0;
     if (!parse_int(t.word(), v) || v < 0)
-      throw Error(at(t.line()) + "'" + std::string(t.word()) + "' is not a valid " + what);
+      throw Error(at(t.line()) + quoted_token(t.word()) + " is not a valid " + what);
     t.next();
     return v;
   };
@@ -137,7 +142,8 @@ void check_stl_head(std::string_view head, size_t size) {
                 " triangles (" + std::to_string(84 + size_t(declared) * 50) + " bytes)");
 }
 
-CovarianceMesh parse_stl(const std::string& data, const std::string& source) {
+CovarianceMesh parse_stl(const std::string& data, const std::string& source_path) {
+  const std::string source = escaped(source_path);
   if (data.empty()) throw Error(source + ": the file is empty");
   std::vector<Vec3> corners;
   // Some binary STL headers start with "solid" too: a size matching the triangle count means binary.

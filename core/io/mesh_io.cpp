@@ -8,6 +8,7 @@
 #include "core/mesh/inference.h"
 #include "core/io/mesh_import.h"
 #include "core/io/ply_io.h"
+#include "core/io/quoted_text.h"
 #include "core/io/text_file.h"
 
 namespace gps {
@@ -21,14 +22,15 @@ std::string extension_of(const std::string& path) {
 CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options) {
   const std::string ext = extension_of(path);
   if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".stl")
-    throw Error(path + ": unknown mesh format '" + ext + "' (use .ply, .obj, .off or .stl)");
+    throw Error(escaped(path) + ": unknown mesh format " + quoted_token(ext) + " (use .ply, .obj, .off or .stl)");
   const std::string data = read_text_file(path, ext == ".ply"   ? HeadCheck(check_ply_head)
                                                 : ext == ".stl" ? check_stl_head
                                                                 : check_text_head);
   CovarianceMesh mesh;
+  bool has_covariances = false;
   if (ext == ".ply") {
     PlyContents ply = parse_ply(data, path);
-    if (ply.has_covariances) return std::move(ply.mesh);
+    has_covariances = ply.has_covariances;
     mesh = std::move(ply.mesh);
   } else if (ext == ".obj") {
     mesh = parse_obj(data, path);
@@ -37,23 +39,26 @@ CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options) 
   } else {
     mesh = parse_stl(data, path);
   }
-  if (mesh.n_faces() == 0) throw Error(path + ": the mesh has no faces");
+  // Every command and the editor draw or measure a surface: Gaussians without faces have none.
+  if (mesh.n_faces() == 0) throw Error(escaped(path) + ": the mesh has no faces");
+  if (has_covariances) return mesh;
   try {
     if (options.covariance == ImportOptions::Covariance::infer)
       infer_covariances(mesh, options.bias);
     else
       isotropic_covariances(mesh, options.isotropic_scale);
   } catch (const Error& e) {
-    throw Error(path + ": " + e.what(), e.kind());
+    throw Error(escaped(path) + ": " + e.what(), e.kind());
   }
-  validate_gaussians(mesh, path);
+  validate_gaussians(mesh, escaped(path));
   return mesh;
 }
 
 void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary) {
   const std::string ext = extension_of(path);
   // What gpsurf writes it must read back: refuse values the readers would refuse.
-  if (const std::string why = gaussians_problem(mesh); !why.empty()) throw Error(path + ": not written: " + why);
+  if (const std::string why = gaussians_problem(mesh); !why.empty())
+    throw Error(escaped(path) + ": not written: " + why);
   if (ext == ".ply") {
     write_file_atomically(
         path, [&](std::ostream& out) { write_ply(out, mesh, binary); }, binary);
@@ -71,7 +76,7 @@ void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary
       }
     });
   } else {
-    throw usage_error(path + ": cannot write format '" + ext + "' (use .ply or .obj)");
+    throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) + " (use .ply or .obj)");
   }
 }
 

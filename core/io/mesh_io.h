@@ -13,7 +13,8 @@ struct ImportOptions {
 };
 
 /// Reads .ply (a covariance PLY keeps its covariances; a plain one gets them from `options`),
-/// .obj, .off, .stl (covariances from `options`). Throws gps::Error naming the file.
+/// .obj, .off, .stl (covariances from `options`). Throws gps::Error naming the file, also for a mesh
+/// without faces (every use of a mesh needs its surface).
 CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options = {});
 
 /// Writes .ply (covariances kept; ASCII or binary little endian) or .obj (positions and faces),

@@ -3,14 +3,17 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <sstream>
 
 #include "core/mesh/error.h"
 #include "core/io/number_text.h"
+#include "core/io/quoted_text.h"
 #include "core/io/text_file.h"
 #include "core/io/text_words.h"
 
@@ -43,6 +46,7 @@ struct Property {
   ScalarType type;
   bool is_list = false;
   ScalarType count_type;
+  int header_line = 0;
 };
 
 struct Element {
@@ -56,7 +60,7 @@ struct Element {
 class BodyReader {
 public:
   BodyReader(const std::string& data, size_t pos, Format format, int line, const std::string& source)
-      : data_(data), pos_(pos), format_(format), line_(line), source_(source) {}
+      : data_(data), pos_(pos), format_(format), line_(line), source_(escaped(source)) {}
 
   // ASCII records are one line each; call at the start of each record.
   void begin_record() {
@@ -120,6 +124,22 @@ public:
     return s.str();
   }
 
+  // ASCII data ends with its last record: anything but white space after it is refused.
+  void check_end() {
+    if (format_ != Format::ascii) return;
+    int line = line_ + 1;
+    for (size_t i = pos_; i < data_.size(); ++i) {
+      if (data_[i] == '\n') {
+        ++line;
+      } else if (!std::isspace(static_cast<unsigned char>(data_[i]))) {
+        const size_t end = data_.find_first_of(" \t\r\n", i);
+        fail("line " + std::to_string(line) + ": " +
+             quoted_token(std::string_view(data_).substr(i, end == std::string::npos ? end : end - i)) +
+             " after the last element's records");
+      }
+    }
+  }
+
   void end_record() {
     if (format_ == Format::ascii && token_index_ != tokens_.size())
       fail("line " + std::to_string(line_) + ": more values than the header declares");
@@ -134,7 +154,7 @@ private:
   size_t pos_;
   Format format_;
   int line_;
-  const std::string& source_;
+  const std::string source_;
   std::vector<std::string_view> tokens_;
   size_t token_index_ = 0;
 };
@@ -142,12 +162,14 @@ private:
 }  // namespace
 
 PlyContents parse_ply(const std::string& data, const std::string& source) {
-  const auto fail = [&](const std::string& what) -> void { throw Error(source + ": " + what); };
+  const std::string shown_source = escaped(source);
+  const auto fail = [&](const std::string& what) -> void { throw Error(shown_source + ": " + what); };
   if (data.empty()) fail("the file is empty");
   // Header.
   size_t pos = 0;
   int line = 0;
   std::optional<Format> format;
+  int format_line = 0;
   std::vector<Element> elements;
   bool ended = false;
   while (!ended) {
@@ -166,6 +188,8 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
     }
     if (words.empty() || words[0] == "comment" || words[0] == "obj_info") continue;
     if (words[0] == "format") {
+      if (format_line > 0) fail(at + "a second format line (the first is line " + std::to_string(format_line) + ")");
+      format_line = line;
       if (words.size() != 3) fail(at + "malformed format line");
       if (words[1] == "ascii")
         format = Format::ascii;
@@ -174,16 +198,20 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       else if (words[1] == "binary_big_endian")
         format = Format::binary_be;
       else
-        fail(at + "unknown format '" + std::string(words[1]) + "'");
+        fail(at + "unknown format " + quoted_token(words[1]));
     } else if (words[0] == "element") {
       if (words.size() != 3) fail(at + "malformed element line");
       Element e;
       e.name = words[1];
       e.header_line = line;
+      // Elements may come in any order, but the vertices and the faces once each.
+      for (const Element& earlier : elements)
+        if (earlier.name == e.name && (e.name == "vertex" || e.name == "face"))
+          fail(at + "a second " + e.name + " element (the first is line " + std::to_string(earlier.header_line) + ")");
       unsigned long long count = 0;
       const auto [p, ec] = std::from_chars(words[2].data(), words[2].data() + words[2].size(), count);
       if (ec != std::errc() || p != words[2].data() + words[2].size())
-        fail(at + "element count '" + std::string(words[2]) + "' is not a number");
+        fail(at + "element count " + quoted_token(words[2]) + " is not a number");
       e.count = size_t(count);
       elements.push_back(e);
     } else if (words[0] == "property") {
@@ -192,44 +220,53 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       if (words.size() == 5 && words[1] == "list") {
         const auto ct = scalar_type(words[2]), it = scalar_type(words[3]);
         if (!ct || !it || ct->is_float) fail(at + "bad list property types");
-        prop = {std::string(words[4]), *it, true, *ct};
+        prop = {std::string(words[4]), *it, true, *ct, line};
       } else if (words.size() == 3) {
         const auto t = scalar_type(words[1]);
-        if (!t) fail(at + "unknown property type '" + std::string(words[1]) + "'");
-        prop = {std::string(words[2]), *t, false, {}};
+        if (!t) fail(at + "unknown property type " + quoted_token(words[1]));
+        prop = {std::string(words[2]), *t, false, {}, line};
       } else {
         fail(at + "malformed property line");
       }
-      elements.back().properties.push_back(prop);
+      Element& owner = elements.back();
+      for (const Property& earlier : owner.properties)
+        if (earlier.name == prop.name)
+          fail(at + "property " + quoted_token(prop.name) + " of element " + quoted_token(owner.name) +
+               " appears twice (the first is line " + std::to_string(earlier.header_line) + ")");
+      owner.properties.push_back(prop);
     } else if (words[0] == "end_header") {
       ended = true;
     } else {
-      fail(at + "unexpected header line '" + text + "'");
+      fail(at + "unexpected header line " + quoted_token(text));
     }
   }
   if (!format) fail("the header has no format line");
+  // Face indices are checked against the vertex count the header declares: the face element may
+  // come first.
+  const auto vertex_element =
+      std::find_if(elements.begin(), elements.end(), [](const Element& e) { return e.name == "vertex"; });
+  if (vertex_element == elements.end()) fail("the file has no vertex element");
+  const size_t vertex_count = std::min<size_t>(vertex_element->count, size_t(std::numeric_limits<int>::max()));
 
   BodyReader body(data, pos, *format, line, source);
   std::vector<Vec3> means;
   std::vector<Mat3> covariances;
   std::vector<std::vector<int>> faces;
-  bool has_vertex = false, has_covariances = false;
+  bool has_covariances = false;
   for (const Element& e : elements) {
     // Each record needs at least one byte per value (binary) or two characters (ASCII).
     size_t min_record = 0;
     for (const Property& p : e.properties) min_record += p.is_list ? size_t(p.count_type.size) : size_t(p.type.size);
     if (*format == Format::ascii) min_record = 2 * std::max<size_t>(1, e.properties.size());
     if (min_record > 0 && e.count > body.remaining() / min_record)
-      fail("line " + std::to_string(e.header_line) + ": element '" + e.name + "' declares " + std::to_string(e.count) +
-           " records, more than the file holds (truncated)");
+      fail("line " + std::to_string(e.header_line) + ": element " + quoted_token(e.name) + " declares " +
+           std::to_string(e.count) + " records, more than the file holds (truncated)");
     const auto index_of = [&](const char* name) {
       for (size_t i = 0; i < e.properties.size(); ++i)
         if (e.properties[i].name == name && !e.properties[i].is_list) return int(i);
       return -1;
     };
     if (e.name == "vertex") {
-      if (has_vertex) fail("line " + std::to_string(e.header_line) + ": a second vertex element");
-      has_vertex = true;
       const int ix = index_of("x"), iy = index_of("y"), iz = index_of("z");
       if (ix < 0 || iy < 0 || iz < 0) fail("the vertex element lacks x, y or z");
       const char* cov_names[6] = {"cxx", "cxy", "cxz", "cyy", "cyz", "czz"};
@@ -267,7 +304,6 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
         }
       }
     } else if (e.name == "face") {
-      if (!faces.empty()) fail("line " + std::to_string(e.header_line) + ": a second face element");
       int list = -1;
       for (size_t i = 0; i < e.properties.size(); ++i)
         if (e.properties[i].is_list &&
@@ -291,9 +327,9 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
           for (size_t i = 0; i < n; ++i) {
             const double index = body.read(p.type);
             if (int(k) != list) continue;
-            if (!(index >= 0 && index < double(means.size())) || index != std::floor(index))
+            if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
               fail(body.where() + "face " + std::to_string(f) + " refers to vertex " +
-                   BodyReader::format_number(index) + ", but there are " + std::to_string(means.size()) + " vertices");
+                   BodyReader::format_number(index) + ", but there are " + std::to_string(vertex_count) + " vertices");
             face.push_back(int(index));
           }
         }
@@ -311,9 +347,9 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       }
     }
   }
-  if (!has_vertex) fail("the file has no vertex element");
+  body.check_end();
   PlyContents out;
-  out.mesh = make_covariance_mesh(means, covariances, faces, source);
+  out.mesh = make_covariance_mesh(means, covariances, faces, shown_source);
   out.has_covariances = has_covariances;
   return out;
 }

@@ -21,7 +21,8 @@ PlyContents read_ply(const std::string& path);
 /// The first bytes of a PLY file (core/io/text_file.h): its first line is "ply".
 void check_ply_head(std::string_view head, size_t size);
 
-/// Parses PLY data already in memory; `source` names it in errors.
+/// Parses PLY data already in memory; `source` names it in errors, which show text from the file as
+/// core/io/quoted_text.h does.
 PlyContents parse_ply(const std::string& data, const std::string& source);
 
 /// Writes a covariance PLY (doubles, exact round trip), ASCII or binary little endian.

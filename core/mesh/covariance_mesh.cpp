@@ -76,8 +76,14 @@ std::string position_problem(const Vec3& mean) {
 
 std::string covariance_problem(const Mat3& c) {
   if (!c.allFinite()) return "has a covariance that is not finite";
-  if (!is_spd(c)) return "has a covariance that is not symmetric positive definite";
+  const double scale = c.cwiseAbs().maxCoeff();
+  if (!(scale > 0)) return "has a covariance that is zero";
+  if ((c - c.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) return "has a covariance that is not symmetric";
   const Vec3 eigenvalues = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues();
+  // Named by its smallest eigenvalue: also where a Cholesky factorisation succeeds but rounding leaves
+  // that eigenvalue at or below zero.
+  if (!is_spd(c) || !(eigenvalues(0) > 0))
+    return "has a covariance that is not positive definite (eigenvalue " + number(eigenvalues(0)) + ")";
   if (eigenvalues(0) < kMinCovarianceEigenvalue)
     return "has a covariance eigenvalue " + number(eigenvalues(0)) + " below " + number(kMinCovarianceEigenvalue) +
            (eigenvalues(0) < std::numeric_limits<double>::min() ? " (subnormal: underflows)" : "") +

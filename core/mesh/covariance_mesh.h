@@ -42,8 +42,8 @@ inline constexpr double kMinCovarianceEigenvalue = 1e-100, kMaxCovarianceEigenva
 
 /// Why a position cannot be used ("has a position that is not finite", ...), or "" if it can.
 std::string position_problem(const Vec3& mean);
-/// Why a covariance cannot be used (not finite, not symmetric positive definite, eigenvalues whose
-/// inverse under- or overflows), or "" if it can.
+/// Why a covariance cannot be used (not finite, not symmetric, not positive definite with its smallest
+/// eigenvalue, eigenvalues whose inverse under- or overflows), or "" if it can.
 std::string covariance_problem(const Mat3& covariance);
 
 /// "vertex i <problem>" for the first vertex whose position or covariance has a problem above, or "".

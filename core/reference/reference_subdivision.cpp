@@ -9,6 +9,7 @@
 #include "core/mesh/error.h"
 #include "core/reference/limit_masks.h"
 #include "core/reference/limit_tangents.h"
+#include "core/reference/subdivision_size.h"
 
 namespace gps {
 
@@ -210,6 +211,12 @@ void limit_tangents_of(const Refined<Dual>& r, const SubdivisionOptions& o, std:
 
 SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
   const PolygonTopology base = topology_of(mesh.mesh);
+  // Loop on a mesh that is not all triangles is refused below, naming the face.
+  if (options.scheme != Scheme::loop || all_triangles(base))
+    check_output_size(subdivision_size(mesh, options),
+                      std::to_string(options.levels) + (options.levels == 1 ? " level" : " levels") + " of " +
+                          (options.scheme == Scheme::loop ? "Loop" : "Catmull-Clark") + " subdivision",
+                      "faces", "use fewer levels");
   SubdivisionResult result;
   const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
   const bool with_normals = options.normals && options.limit;

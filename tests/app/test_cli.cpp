@@ -1,6 +1,8 @@
 // The gpsurf command line, run as a user would: exit codes 0/1/2, one-line errors, files written.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -187,6 +189,59 @@ TEST(Cli, InferAndInfoOnPlainMeshes) {
   EXPECT_NE(info.output.find("faces: 2 (2 with 4 sides)"), std::string::npos) << info.output;
   EXPECT_NE(info.output.find("boundary edges: 8"), std::string::npos) << info.output;
   EXPECT_NE(info.output.find("covariance eigenvalues: "), std::string::npos) << info.output;
+}
+
+// Saves onto what is not a regular file, or onto a read-only file, are refused at once (a FIFO with
+// no reader would otherwise be replaced, or block); a hard-linked file keeps its links.
+TEST(Cli, SavesOntoSpecialOrReadOnlyTargetsAreRefused) {
+  test::TempDir dir;
+  ASSERT_EQ(::mkfifo(dir.file("pipe.ply").c_str(), 0644), 0);
+  const std::string read_only = dir.write("read-only.ply", "precious");
+  std::filesystem::permissions(read_only, std::filesystem::perms::owner_read);
+  for (const std::string& target : {dir.file("pipe.ply"), read_only}) {
+    const auto r = run_command(gpsurf("sample cube -o " + target));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_EQ(lines(r.output), 1u) << r.output;
+    EXPECT_NE(r.output.find(target), std::string::npos) << r.output;
+  }
+  EXPECT_TRUE(std::filesystem::is_fifo(dir.file("pipe.ply")));
+  std::ifstream in(read_only);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), "precious");
+  const std::string linked = dir.write("linked.ply", "old");
+  std::filesystem::create_hard_link(linked, dir.file("second-name.ply"));
+  EXPECT_EQ(run_command(gpsurf("sample cube -o " + linked)).exit_code, 0);
+  EXPECT_EQ(std::filesystem::hard_link_count(linked), 2u);
+  EXPECT_EQ(read_mesh(dir.file("second-name.ply")).n_vertices(), 8u);
+}
+
+// Bytes from a file and control bytes in a path reach the terminal escaped, on one line.
+TEST(Cli, MessagesAreOneLineWithoutTheFilesControlBytes) {
+  test::TempDir dir;
+  const std::string obj = dir.write("evil\nname.obj", "v 0 \x1b]0;owned\x07" + std::string(100000, '9') + " 0\n");
+  const auto r = run_command(gpsurf("info '" + obj + "'"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(lines(r.output), 1u) << r.output;
+  EXPECT_NE(r.output.find("evil\\x0Aname.obj: line 1: '\\x1B]0;owned\\x07999"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+  EXPECT_LT(r.output.size(), 400u) << r.output;
+}
+
+// Gaussians without faces have no surface: every command refuses them instead of writing an empty
+// result with exit 0.
+TEST(Cli, ACovarianceMeshWithoutFacesIsRefused) {
+  test::TempDir dir;
+  const std::string points = dir.write(
+      "points.ply",
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nproperty double y\nproperty double z\n"
+      "property double cxx\nproperty double cxy\nproperty double cxz\nproperty double cyy\nproperty double cyz\n"
+      "property double czz\nend_header\n0 0 0 1 0 0 1 0 1\n");
+  for (const std::string& args : {"info " + points, "tessellate " + points + " -o " + dir.file("t.ply"),
+                                  "subdivide " + points + " -o " + dir.file("s.ply")}) {
+    const auto r = run_command(gpsurf(args));
+    EXPECT_EQ(r.exit_code, 1) << args << ": " << r.output;
+    EXPECT_EQ(r.output, "gpsurf: " + points + ": the mesh has no faces\n") << args;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("t.ply")));
 }
 
 }  // namespace

@@ -1,16 +1,22 @@
 // Saves (core/io/atomic_file.h): through symbolic links, signals in the middle of a save, stale
-// temporary files of earlier crashed saves.
+// temporary files of earlier crashed saves, targets that are not regular files, hard-linked and
+// read-only targets.
 #include "core/io/atomic_file.h"
 
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <cstring>
 
 #include "core/mesh/error.h"
 #include "tests/support/temp_dir.h"
@@ -123,6 +129,139 @@ TEST(AtomicFile, AFailedWriteLeavesTheOldFileAndNoTemporaryFile) {
   const std::string path = dir.write("m.ply", "old");
   EXPECT_THROW(write_file_atomically(path, [](std::ostream&) { throw Error("writer failed"); }), Error);
   EXPECT_EQ(contents(path), "old");
+  EXPECT_TRUE(others(dir.path(), {"m.ply"}).empty());
+}
+
+// The message of the error a save throws, or "" when it succeeds.
+std::string save_error(const std::string& path, const std::string& text) {
+  try {
+    write_text(path, text);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(AtomicFile, RefusesTargetsThatAreNotRegularFilesBeforeWriting) {
+  test::TempDir dir;
+  ASSERT_EQ(::mkfifo(dir.file("pipe.ply").c_str(), 0644), 0);
+  fs::create_directories(dir.path() / "folder.ply");
+  // A device node of the test's own (the null device's numbers), reached through a link: never a
+  // device of the system, which a save that wrongly replaced it would break. Only root may make one.
+  const bool device = ::mknod(dir.file("null").c_str(), S_IFCHR | 0666, ::makedev(1, 3)) == 0;
+  if (device) fs::create_symlink("null", dir.path() / "null.ply");
+  const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  ASSERT_GE(sock, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  const std::string socket_path = dir.file("socket.ply");
+  ASSERT_LT(socket_path.size(), sizeof address.sun_path);
+  std::memcpy(address.sun_path, socket_path.c_str(), socket_path.size() + 1);
+  ASSERT_EQ(::bind(sock, reinterpret_cast<const sockaddr*>(&address), sizeof address), 0);
+  bool wrote = false;
+  const auto writer = [&wrote](std::ostream& out) {
+    wrote = true;
+    out << "new";
+  };
+  std::vector<std::pair<std::string, std::string>> cases = {
+      {"pipe.ply", "a FIFO"}, {"folder.ply", "is a directory"}, {"socket.ply", "a socket"}};
+  if (device) cases.emplace_back("null.ply", "a character device");
+  for (const auto& [name, kind] : cases) {
+    try {
+      write_file_atomically(dir.file(name), writer);
+      ADD_FAILURE() << name << " was written";
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(dir.file(name)), std::string::npos) << message;
+      EXPECT_NE(message.find(kind), std::string::npos) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
+  ::close(sock);
+  EXPECT_FALSE(wrote);
+  EXPECT_TRUE(fs::is_fifo(dir.path() / "pipe.ply"));
+  EXPECT_TRUE(fs::is_directory(dir.path() / "folder.ply"));
+  EXPECT_TRUE(fs::is_socket(dir.path() / "socket.ply"));
+  if (device) {
+    EXPECT_TRUE(fs::is_symlink(dir.path() / "null.ply"));
+    EXPECT_TRUE(fs::is_character_file(dir.path() / "null"));
+  }
+  EXPECT_TRUE(others(dir.path(), {"pipe.ply", "folder.ply", "null.ply", "null", "socket.ply"}).empty());
+}
+
+TEST(AtomicFile, RefusesALoopOfSymbolicLinksAndKeepsTheLinks) {
+  test::TempDir dir;
+  fs::create_symlink("b.ply", dir.path() / "a.ply");
+  fs::create_symlink("a.ply", dir.path() / "b.ply");
+  fs::create_symlink("self.ply", dir.path() / "self.ply");
+  for (const std::string name : {"a.ply", "self.ply"}) {
+    const std::string message = save_error(dir.file(name), "new");
+    EXPECT_NE(message.find("a loop of symbolic links"), std::string::npos) << message;
+    EXPECT_NE(message.find(dir.file(name)), std::string::npos) << message;
+  }
+  EXPECT_TRUE(fs::is_symlink(dir.path() / "a.ply"));
+  EXPECT_TRUE(fs::is_symlink(dir.path() / "b.ply"));
+  EXPECT_TRUE(fs::is_symlink(dir.path() / "self.ply"));
+  EXPECT_EQ(fs::read_symlink(dir.path() / "a.ply"), "b.ply");
+  EXPECT_TRUE(others(dir.path(), {"a.ply", "b.ply", "self.ply"}).empty());
+}
+
+// A hard-linked file is written in place, so that both names see the new contents, after its old
+// contents are kept beside it as NAME~.
+TEST(AtomicFile, WritesAHardLinkedFileInPlaceAfterABackup) {
+  test::TempDir dir;
+  const std::string path = dir.write("m.ply", "old contents");
+  fs::create_hard_link(path, dir.path() / "other.ply");
+  fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  struct stat before {};
+  ASSERT_EQ(::stat(path.c_str(), &before), 0);
+  write_text(path, "new");
+  struct stat after {};
+  ASSERT_EQ(::stat(path.c_str(), &after), 0);
+  EXPECT_EQ(after.st_ino, before.st_ino);
+  EXPECT_EQ(after.st_nlink, 2u);
+  EXPECT_EQ(contents(path), "new");
+  EXPECT_EQ(contents(dir.file("other.ply")), "new");
+  EXPECT_EQ(contents(dir.file("m.ply~")), "old contents");
+  EXPECT_EQ(fs::status(path).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  write_text(dir.file("other.ply"), "newer, and longer");
+  EXPECT_EQ(contents(path), "newer, and longer");
+  EXPECT_EQ(contents(dir.file("other.ply~")), "new");
+  EXPECT_TRUE(others(dir.path(), {"m.ply", "other.ply", "m.ply~", "other.ply~"}).empty());
+}
+
+TEST(AtomicFile, RefusesAHardLinkedFileWhoseBackupNameIsTaken) {
+  test::TempDir dir;
+  const std::string path = dir.write("m.ply", "old");
+  fs::create_hard_link(path, dir.path() / "other.ply");
+  fs::create_directories(dir.path() / "m.ply~");
+  const std::string message = save_error(path, "new");
+  EXPECT_NE(message.find("hard links"), std::string::npos) << message;
+  EXPECT_NE(message.find("a directory"), std::string::npos) << message;
+  EXPECT_EQ(contents(path), "old");
+  EXPECT_TRUE(others(dir.path(), {"m.ply", "other.ply", "m.ply~"}).empty());
+}
+
+// A read-only file in a writable folder is not replaced, even where this process could (root).
+TEST(AtomicFile, RefusesAReadOnlyTarget) {
+  test::TempDir dir;
+  const std::string path = dir.write("m.ply", "old");
+  fs::permissions(path, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  bool wrote = false;
+  try {
+    write_file_atomically(path, [&wrote](std::ostream& out) {
+      wrote = true;
+      out << "new";
+    });
+    ADD_FAILURE() << "a read-only file was replaced";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("read-only (mode 0444)"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(wrote);
+  EXPECT_EQ(contents(path), "old");
+  EXPECT_EQ(fs::status(path).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
   EXPECT_TRUE(others(dir.path(), {"m.ply"}).empty());
 }
 

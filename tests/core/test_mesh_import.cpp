@@ -66,7 +66,7 @@ TEST(MeshImport, OffVariantsWithPerVertexValues) {
   EXPECT_EQ(m.mean(2), Vec3(1, 1, 0));
   EXPECT_NE(error_of([] {
               parse_off("4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n", "d.off");
-            }).find("d.off: line 1: 4OFF"),
+            }).find("d.off: line 1: '4OFF'"),
             std::string::npos);
   EXPECT_NE(
       error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "e.off"); }).find("face 0 has fewer than 3"),

@@ -115,7 +115,7 @@ TEST(PlyIo, MalformedFilesGiveOneLineErrors) {
       {"inf.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 inf 0 0 1 0 1\n3 0 1 2\n",
        "vertex 2 has a covariance that is not finite"},
       {"spd.ply", header("ascii", 3, 1) + v0 + v1 + "0 1 0 1 2 0 1 0 1\n3 0 1 2\n",
-       "vertex 2 has a covariance that is not symmetric positive definite"},
+       "vertex 2 has a covariance that is not positive definite (eigenvalue -1)"},
       {"underflow.ply", header("ascii", 3, 1) + "0 1e-400 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n",
        "line 16: '1e-400' underflows"},
       {"overflow.ply", header("ascii", 3, 1) + "0 -1e400 0 1 0 0 1 0 1\n" + v1 + v1 + "3 0 1 2\n",

@@ -1,0 +1,77 @@
+// Outputs sized before the work, as a user meets them: `subdivide` and `tessellate` refuse what
+// exceeds the memory budget (GPSURF_MEMORY_LIMIT_BYTES, small here) with the figures and exit 2, and
+// an allocation that fails anyway ends in one line naming the input, exit 1.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+using test::gpsurf;
+using test::run_command;
+
+size_t lines(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
+
+TEST(OutputLimitsCli, SubdivideAndTessellateRefuseWhatExceedsTheBudget) {
+  test::TempDir dir;
+  const std::string cube = dir.file("cube.ply");
+  ASSERT_EQ(run_command(gpsurf("sample cube -o " + cube)).exit_code, 0);
+  const std::string tight = "GPSURF_MEMORY_LIMIT_BYTES=100000 ";
+  const auto subdivided = run_command(tight + gpsurf("subdivide " + cube + " -o " + dir.file("s.ply") + " --levels 4"));
+  EXPECT_EQ(subdivided.exit_code, 2) << subdivided.output;
+  EXPECT_EQ(lines(subdivided.output), 1u) << subdivided.output;
+  EXPECT_EQ(subdivided.output.rfind("gpsurf: " + cube +
+                                        ": 4 levels of Catmull-Clark subdivision would make about 1,538 vertices and "
+                                        "1,536 faces and hold about ",
+                                    0),
+            0u)
+      << subdivided.output;
+  EXPECT_NE(subdivided.output.find("more than the 97.7 KiB allowed (set by GPSURF_MEMORY_LIMIT_BYTES)"),
+            std::string::npos)
+      << subdivided.output;
+  const auto tessellated =
+      run_command(tight + gpsurf("tessellate " + cube + " -o " + dir.file("t.ply") + " --level 64"));
+  EXPECT_EQ(tessellated.exit_code, 2) << tessellated.output;
+  EXPECT_EQ(lines(tessellated.output), 1u) << tessellated.output;
+  EXPECT_NE(tessellated.output.find(cube + ": tessellating 6 patches at level 64 would make about 25,350 vertices and "
+                                           "49,152 triangles"),
+            std::string::npos)
+      << tessellated.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("s.ply")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("t.ply")));
+  // Within the budget both run; a malformed budget is a usage error.
+  EXPECT_EQ(run_command(tight + gpsurf("subdivide " + cube + " -o " + dir.file("s.ply") + " --levels 2")).exit_code, 0);
+  EXPECT_EQ(run_command(tight + gpsurf("tessellate " + cube + " -o " + dir.file("t.ply") + " --level 4")).exit_code, 0);
+  const auto malformed =
+      run_command("GPSURF_MEMORY_LIMIT_BYTES=lots " + gpsurf("subdivide " + cube + " -o " + dir.file("s.ply")));
+  EXPECT_EQ(malformed.exit_code, 2) << malformed.output;
+  EXPECT_NE(malformed.output.find("GPSURF_MEMORY_LIMIT_BYTES: expected a positive whole number of bytes, got 'lots'"),
+            std::string::npos)
+      << malformed.output;
+}
+
+// Where the estimate allows more than the process may take (here a virtual memory limit of the
+// shell), the failed allocation is one line naming the input, not "std::bad_alloc".
+TEST(OutputLimitsCli, RunningOutOfMemoryNamesTheInput) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit allows";
+#else
+  test::TempDir dir;
+  const std::string sphere = dir.file("sphere.ply");
+  ASSERT_EQ(run_command(gpsurf("sample sphere --size 1000 -o " + sphere)).exit_code, 0);
+  // About 4 million samples at level 64: far more than 200 MB of address space holds.
+  const auto r = run_command("ulimit -v 200000 && OMP_NUM_THREADS=1 GPSURF_MEMORY_LIMIT_BYTES=1000000000000 " +
+                             gpsurf("tessellate " + sphere + " -o " + dir.file("t.ply") + " --level 64"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(r.output, "gpsurf: " + sphere + ": out of memory in tessellate\n");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("t.ply")));
+#endif
+}
+
+}  // namespace
+}  // namespace gps
