@@ -79,7 +79,7 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   renderer.draw(s.target, s.edits.camera(), o);
   renderer.draw(s.target, s.edits.camera(), o);
   if (kind == FrameKind::floor || kind == FrameKind::unwelded) {
-    if (!renderer.surface_cache().holds_triangles()) {
+    if (!renderer.surface_cache().has_stored_triangles()) {
       state.SkipWithError("past the surface cache's memory limit: no stored triangles for a floor");
       return;
     }
@@ -127,7 +127,8 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   state.counters["gpu_ms"] = gpu_ns * 1e-6 / double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.counters["first_ms"] = first_ms;
   // The vertices a frame from the cache fetches (read back, after the timing).
-  if (kind != FrameKind::live && kind != FrameKind::floor && kind != FrameKind::unwelded && cache.holds_triangles())
+  if (kind != FrameKind::live && kind != FrameKind::floor && kind != FrameKind::unwelded &&
+      cache.has_stored_triangles())
     state.counters["vertices"] = double(cache.distinct_vertices());
 }
 

@@ -37,7 +37,7 @@ nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptio
     cached.surface_cache = true;
     renderer.draw(target, camera, cached);  // fills the cache, whose triangles the floor draws
     const size_t cache_bytes = renderer.surface_cache_bytes();
-    const bool cache_held = renderer.surface_cache().holds_triangles();
+    const bool cache_held = renderer.surface_cache().has_stored_triangles();
     // The floor draws exactly the cached triangles; past the cache's limit, those of the CPU
     // tessellation (uniform levels; adaptive ones then have no floor).
     const TriangleMesh triangles = cache_held        ? renderer.surface_cache().stored_triangles()

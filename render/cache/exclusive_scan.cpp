@@ -37,11 +37,7 @@ ExclusiveScan::ExclusiveScan()
     : scan_tiles_("scan_tiles", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::scan_comp}}}),
       add_tile_offsets_(
           "add_tile_offsets",
-          {{GL_COMPUTE_SHADER, {shaders::gpu_layout, "#define ADD_TILE_OFFSETS\n", shaders::scan_comp}}}) {
-  glCreateBuffers(1, &values_);
-}
-
-ExclusiveScan::~ExclusiveScan() { glDeleteBuffers(1, &values_); }
+          {{GL_COMPUTE_SHADER, {shaders::gpu_layout, "#define ADD_TILE_OFFSETS\n", shaders::scan_comp}}}) {}
 
 unsigned ExclusiveScan::bind(long long count) {
   const Level last = levels_of(std::max(count, 1ll)).back();

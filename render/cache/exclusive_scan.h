@@ -3,6 +3,7 @@
 // a storage buffer at binding kBindingScanValues, written there by an earlier pass, and become
 // their exclusive sums in place. Tiles of 64 values are summed serially, their totals scanned one
 // level up the same way, and added back: levels of n, n/64, n/64², ... values.
+#include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {
@@ -11,7 +12,6 @@ class ExclusiveScan {
 public:
   /// Needs a current GL context.
   ExclusiveScan();
-  ~ExclusiveScan();
   ExclusiveScan(const ExclusiveScan&) = delete;
   ExclusiveScan& operator=(const ExclusiveScan&) = delete;
 
@@ -25,7 +25,7 @@ public:
 
 private:
   ShaderProgram scan_tiles_, add_tile_offsets_;
-  unsigned values_ = 0;
+  GlBuffer values_;
   long long capacity_ = 0;  // values the buffer holds
 };
 

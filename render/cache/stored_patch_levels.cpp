@@ -20,17 +20,7 @@ ShaderProgram check_program(bool triangles) {
 }
 }  // namespace
 
-StoredPatchLevels::StoredPatchLevels() : quads_(check_program(false)), triangles_(check_program(true)) {
-  glCreateBuffers(1, &levels_);
-  glCreateBuffers(1, &patches_);
-  glCreateBuffers(1, &changes_);
-}
-
-StoredPatchLevels::~StoredPatchLevels() {
-  glDeleteBuffers(1, &levels_);
-  glDeleteBuffers(1, &patches_);
-  glDeleteBuffers(1, &changes_);
-}
+StoredPatchLevels::StoredPatchLevels() : quads_(check_program(false)), triangles_(check_program(true)) {}
 
 void StoredPatchLevels::reserve(int n_patches) {
   if (n_patches <= capacity_ && 4 * n_patches >= capacity_) return;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/plans/patch_plans.h"
+#include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {
@@ -22,7 +23,6 @@ public:
   };
   /// Needs a current GL context.
   StoredPatchLevels();
-  ~StoredPatchLevels();
   StoredPatchLevels(const StoredPatchLevels&) = delete;
   StoredPatchLevels& operator=(const StoredPatchLevels&) = delete;
 
@@ -41,7 +41,7 @@ private:
   void reserve(int n_patches);
 
   ShaderProgram quads_, triangles_;
-  unsigned levels_ = 0, patches_ = 0, changes_ = 0;
+  GlBuffer levels_, patches_, changes_;
   int capacity_ = 0;  // patches the levels buffer holds
 };
 

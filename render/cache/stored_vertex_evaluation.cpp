@@ -20,15 +20,7 @@ StoredVertexEvaluation::StoredVertexEvaluation()
                    {"#define GPS_TRIANGLE_PATCHES\n", shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
                     shaders::loop_eval, shaders::stored_vertex_evaluation_comp}}}),
       groups_program_("evaluation_groups",
-                      {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {
-  glCreateBuffers(1, &blocks_);
-  glCreateBuffers(1, &groups_);
-}
-
-StoredVertexEvaluation::~StoredVertexEvaluation() {
-  glDeleteBuffers(1, &blocks_);
-  glDeleteBuffers(1, &groups_);
-}
+                      {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {}
 
 void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches,
                                  int group_limit) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/plans/patch_plans.h"
+#include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {
@@ -21,7 +22,6 @@ public:
   };
   /// Needs a current GL context.
   StoredVertexEvaluation();
-  ~StoredVertexEvaluation();
   StoredVertexEvaluation(const StoredVertexEvaluation&) = delete;
   StoredVertexEvaluation& operator=(const StoredVertexEvaluation&) = delete;
   /// Evaluates the welded vertices of `blocks` (of the buffers bound at kBindingWeldedVertices and
@@ -35,7 +35,7 @@ private:
   void dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches);
 
   ShaderProgram quads_, triangles_, groups_program_;
-  unsigned blocks_ = 0, groups_ = 0;
+  GlBuffer blocks_, groups_;
 };
 
 }  // namespace gps

@@ -15,19 +15,7 @@ StoredVertexWeld::StoredVertexWeld()
     : weld_("weld", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::weld_comp}}}),
       compact_("compact", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::compact_comp}}}),
       copy_back_("unweld", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::unweld_comp}}}),
-      reweld_("reweld", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::reweld_comp}}}) {
-  glCreateBuffers(1, &table_);
-  glCreateBuffers(1, &block_starts_);
-  glCreateBuffers(1, &dispatches_);
-  glCreateBuffers(1, &runs_);
-}
-
-StoredVertexWeld::~StoredVertexWeld() {
-  glDeleteBuffers(1, &table_);
-  glDeleteBuffers(1, &block_starts_);
-  glDeleteBuffers(1, &dispatches_);
-  glDeleteBuffers(1, &runs_);
-}
+      reweld_("reweld", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::reweld_comp}}}) {}
 
 void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters,
                             long long count, const std::vector<long long>& block_starts) {

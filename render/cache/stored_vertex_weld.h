@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "render/cache/exclusive_scan.h"
+#include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {
@@ -21,7 +22,6 @@ class StoredVertexWeld {
 public:
   /// Needs a current GL context.
   StoredVertexWeld();
-  ~StoredVertexWeld();
   StoredVertexWeld(const StoredVertexWeld&) = delete;
   StoredVertexWeld& operator=(const StoredVertexWeld&) = delete;
 
@@ -58,7 +58,7 @@ private:
 
   ShaderProgram weld_, compact_, copy_back_, reweld_;
   ExclusiveScan scan_;
-  unsigned table_ = 0, block_starts_ = 0, dispatches_ = 0, runs_ = 0;
+  GlBuffer table_, block_starts_, dispatches_, runs_;
   long long dispatch_blocks_ = 0;  // blocks the dispatches buffer holds
   long long slots_ = 0;
 };

@@ -13,36 +13,16 @@ namespace gps {
 SurfaceCache::SurfaceCache()
     : weld_mode_(software_renderer() ? Weld::when_settled : Weld::at_capture),
       limit_bytes_(std::clamp(device_memory_bytes() / kDeviceMemoryShare, kLeastLimitBytes, kMostLimitBytes)) {
-  glCreateBuffers(1, &buffer_);
-  glCreateBuffers(1, &scratch_);
-  glCreateBuffers(1, &spare_);
-  glCreateBuffers(1, &indices_);
-  glCreateBuffers(1, &welded_);
-  glCreateBuffers(1, &parameters_);
-  glCreateVertexArrays(1, &vao_);
-  glCreateVertexArrays(1, &welded_vao_);
   glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kCapturedVertexBytes);
   glVertexArrayVertexBuffer(welded_vao_, 0, welded_, 0, kWeldedVertexBytes);
   glVertexArrayElementBuffer(welded_vao_, indices_);
-  for (const GLuint vao : {vao_, welded_vao_})
+  for (const GLuint vao : {vao_.get(), welded_vao_.get()})
     for (GLuint a = 0; a < (vao == vao_ ? 3u : 2u); ++a) {  // welded: no grid
       glEnableVertexArrayAttrib(vao, a);
       glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
       glVertexArrayAttribBinding(vao, a, 0);
     }
   check_gl_errors("creating the surface cache");
-}
-
-SurfaceCache::~SurfaceCache() {
-  glDeleteBuffers(1, &buffer_);
-  glDeleteBuffers(1, &scratch_);
-  glDeleteBuffers(1, &spare_);
-  glDeleteBuffers(1, &indices_);
-  glDeleteBuffers(1, &welded_);
-  glDeleteBuffers(1, &parameters_);
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteVertexArrays(1, &welded_vao_);
-  if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
 }
 
 void SurfaceCache::set_cage(const CovarianceMesh& mesh) {
@@ -66,39 +46,35 @@ void SurfaceCache::update_cage(const CovarianceMesh& mesh, const std::vector<int
   }
 }
 
-// Tracked from the capture on, one compute pass after the other (refresh() decides what is worth it).
-bool SurfaceCache::follows(long long points) const {
-  return stored_ && !refused_ && tracked_points_ >= 0 && points == tracked_points_ + 1;
+// Followed from the capture on, one compute pass after the other (refresh() decides what is worth it).
+bool SurfaceCache::follow_edit(long long points) {
+  const bool next = has_stored_triangles() && tracked_points_ >= 0 && points == tracked_points_ + 1;
+  tracked_points_ = next ? points : -1;
+  return next;
 }
 
 void SurfaceCache::points_changed(long long points, const std::vector<int>* patches) {
-  if (!patches || !follows(points)) {
+  if (!patches)
     tracked_points_ = -1;
-    return;
-  }
-  blocks_.mark_stale(*patches);
-  tracked_points_ = points;
+  else if (follow_edit(points))
+    blocks_.mark_stale(*patches);
 }
 
 void SurfaceCache::all_points_changed(long long points) {
-  if (!follows(points)) {
-    tracked_points_ = -1;
-    return;
-  }
-  blocks_.mark_all_stale();
-  tracked_points_ = points;
+  if (follow_edit(points)) blocks_.mark_all_stale();
 }
 
-bool SurfaceCache::current(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
+bool SurfaceCache::matches(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
   if (!stored_ || !(key == key_)) return false;
   return key.pixels <= 0.0f || camera_close(view_projection, viewport, key.pixels);
 }
 
-bool SurfaceCache::refreshable(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
-  if (!stored_ || refused_ || tracked_points_ < 0 || key.points != tracked_points_) return false;
-  Key same = key;
-  same.points = key_.points;
-  return same == key_ && (key.pixels <= 0.0f || camera_close(view_projection, viewport, key.pixels));
+// The key's points those that the edits followed since the capture lead to; the rest as for matches().
+bool SurfaceCache::can_refresh_to(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
+  if (!has_stored_triangles() || tracked_points_ < 0 || key.points != tracked_points_) return false;
+  Key captured = key;
+  captured.points = key_.points;
+  return matches(captured, view_projection, viewport);
 }
 
 // The adaptive rule (see the header): every base edge's projected length, floored at `pixels`,
@@ -161,11 +137,8 @@ void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long trian
 bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
                                   const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize,
                                   bool known) {
-  if (!known && queries_.size() < blocks.size()) {
-    const size_t had = queries_.size();
-    queries_.resize(blocks.size());
-    glCreateQueries(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, GLsizei(blocks.size() - had), queries_.data() + had);
-  }
+  if (!known)
+    while (queries_.size() < blocks.size()) queries_.emplace_back(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
   glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer, 0, GLsizeiptr(capacity * 3 * kCapturedVertexBytes));
   if (!rasterize) glEnable(GL_RASTERIZER_DISCARD);
   glBeginTransformFeedback(GL_TRIANGLES);
@@ -253,7 +226,7 @@ void SurfaceCache::settle() {
 }
 
 void SurfaceCache::weld_pending() {
-  if (weld_mode_ == Weld::when_settled && holds_triangles() && (weld_all_pending_ || !weld_pending_.empty()))
+  if (weld_mode_ == Weld::when_settled && has_stored_triangles() && (weld_all_pending_ || !weld_pending_.empty()))
     weld_now(weld_all_pending_ ? std::vector<int>{} : weld_pending_);
 }
 
@@ -294,7 +267,7 @@ void SurfaceCache::weld_now(const std::vector<int>& blocks) {
 }
 
 void SurfaceCache::draw(bool grid) const {
-  const bool welded = draws_welded() && !grid;  // welded copies of a point had their own grids
+  const bool welded = stored_vertices_welded() && !grid;  // welded copies of a point had their own grids
   const GLuint vao = welded ? welded_vao_ : vao_;
   // Attribute 2 fetched only for a program that reads it.
   if (!welded) {

@@ -13,8 +13,8 @@
 //
 // The stored vertices are welded (render/cache/stored_vertex_weld.h) and drawn by index, as a welded
 // static buffer is. On a GPU right after each capture or refresh (Weld::at_capture). On llvmpipe
-// (Weld::when_settled) by the first frame that finds the stored triangles current: there the weld
-// costs an edit's frame more than it saves it, so the frames of a drag draw the triangles as
+// (Weld::when_settled) by the first frame whose inputs the stored triangles match (settle()): there
+// the weld costs an edit's frame more than it saves it, so the frames of a drag draw the triangles as
 // captured and the frames after it welded.
 //
 // Edits: triangles are captured in blocks of consecutive patches (render/cache/surface_blocks.h), each
@@ -42,11 +42,14 @@
 #include "render/cache/stored_vertex_evaluation.h"
 #include "render/cache/stored_vertex_weld.h"
 #include "render/cache/surface_blocks.h"
+#include "render/gl/gl_object.h"
 
 namespace gps {
 
 class SurfaceCache {
 public:
+  /// What the stored triangles depend on but the camera: the generation of the plan points and the
+  /// tessellation levels.
   struct Key {
     long long points = -1;  // generation of the plan points
     float level = 0.0f, pixels = 0.0f;
@@ -56,6 +59,111 @@ public:
              mismatched_edge_levels == o.mismatched_edge_levels;
     }
   };
+  /// When the stored vertices are welded: never, after each capture and refresh, or by the first
+  /// frame that draws them unchanged (settle()).
+  enum class Weld { off, at_capture, when_settled };
+  /// Issues the patch draws of patches [first, first + count) (the caller has bound a program with
+  /// the feedback varyings).
+  using DrawPatches = std::function<void(int first, int count)>;
+  /// Evaluates the welded vertices of blocks again (render/cache/stored_vertex_evaluation.h) in the work
+  /// groups that `dispatches` holds per block, with the welded vertex and parameter buffers bound.
+  using EvaluateWelded =
+      std::function<void(const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches)>;
+  /// At adaptive levels: per block (its patches listed), whether an edit changed any patch's levels
+  /// under the capture's camera (render/cache/stored_patch_levels.h, recorded at each adaptive capture).
+  using LevelsChanged = std::function<std::vector<char>(const std::vector<StoredPatchLevels::Block>& blocks)>;
+
+  /// Needs a current GL context.
+  SurfaceCache();
+  SurfaceCache(const SurfaceCache&) = delete;
+  SurfaceCache& operator=(const SurfaceCache&) = delete;
+
+  // What changed.
+
+  /// The base mesh (vertex positions and edges) the adaptive hysteresis measures; drops the capture.
+  void set_cage(const CovarianceMesh& mesh);
+  /// Moved base vertices (for the hysteresis; points_changed says what the edit changed).
+  void update_cage(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  /// A compute pass made plan points of generation `points`, changing the triangles of `patches`
+  /// (nullptr: of all patches, not followed as an edit: captured again). An edit is followed from a
+  /// capture on, one compute pass after the other; any other change is captured again.
+  void points_changed(long long points, const std::vector<int>* patches);
+  /// An edit's compute pass over everything (most of the mesh moved) made plan points of
+  /// generation `points`: every block is stale, followed as an edit's.
+  void all_points_changed(long long points);
+
+  // What a frame asks.
+
+  /// Whether the last capture, or its refusal past the memory limit, was made for these inputs: the
+  /// key, and at adaptive levels a camera within the hysteresis of the capture's. Such a frame
+  /// neither captures nor refreshes: it draws the stored triangles, or live where they were refused.
+  bool matches(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
+  /// Whether refresh() brings the stored triangles to these inputs: they differ from the capture's
+  /// only by the plan points of edits followed since, and the camera matches as for matches().
+  bool can_refresh_to(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
+  /// Whether stored triangles are there to draw: a capture that was not refused.
+  bool has_stored_triangles() const { return stored_ && !refused_; }
+  /// Whether the stored vertices are welded, none left for a later weld: draw() draws them by index,
+  /// but for the grid.
+  bool stored_vertices_welded() const { return weld_mode_ != Weld::off && !weld_all_pending_ && weld_pending_.empty(); }
+
+  // What a frame does.
+
+  /// Captures the triangles of all `n_patches` that `draw_patches` generates, block by block,
+  /// under transform feedback, with the rasteriser off or (`rasterize`: a frame drawn as it is
+  /// captured) on. `estimate` triangles size the buffer; a full buffer grows and captures again, up
+  /// to the memory limit, past which the inputs are refused (drawn live). False when refused.
+  bool capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches, long long estimate,
+               const DrawPatches& draw_patches, bool rasterize = false);
+  /// The camera of the capture, under which refresh() captures blocks again and the level check
+  /// evaluates adaptive levels, as the capture did.
+  const glm::mat4& captured_view_projection() const { return view_projection_; }
+  glm::vec2 captured_viewport() const { return viewport_; }
+  /// Brings the stale blocks to `key` (where can_refresh_to()). Blocks whose tessellation stays
+  /// (uniform levels from evaluated_from_level(); adaptive ones that `levels_changed` leaves alone)
+  /// with the vertices welded: by evaluating the welded vertices again (`evaluate_welded`, where
+  /// given). The others by capturing them again, for which the caller has set the capture camera
+  /// above in the program's uniforms. False where capturing them again is not worth it (over half of
+  /// the patches) or did not fit the memory limit (capture everything then).
+  bool refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded = {},
+               const LevelsChanged& levels_changed = {});
+  /// The uniform level from which an edit evaluates welded vertices again: kSettledEvaluatedFromLevel
+  /// where the weld waits for a still frame; every level where it welds at capture (a GPU: there
+  /// transform feedback costs more than the compute passes).
+  float evaluated_from_level() const { return weld_mode_ == Weld::when_settled ? kSettledEvaluatedFromLevel : 0.0f; }
+  /// For a frame that matches(): brings the captured copies of evaluated vertices up to date and
+  /// welds what Weld::when_settled left unwelded.
+  void settle();
+  /// Brings the captured copies of the vertices that edits evaluated again up to date (a compute
+  /// pass: call before binding the frame's program), as a frame that draws the grid needs.
+  void copy_back_evaluated();
+  /// Binds the vertex array of the stored triangles and draws them with the bound program, which
+  /// reads the tessellation grid (attribute 2) where `grid`: welded where they are, but with the grid
+  /// (the welded copies of a point on a patch edge had each their patch's grid; copy_back_evaluated() first).
+  void draw(bool grid) const;
+
+  // Read back (benchmarks, tests).
+
+  /// The stored triangles read back, vertices with bit-identical position and normal welded (shared
+  /// patch edges are bit-exact): the benchmark's static-buffer floor for exactly these triangles.
+  /// Their captured copies, brought up to date first (copy_back_evaluated()).
+  TriangleMesh stored_triangles();
+  /// The distinct vertices a cached frame fetches (read back): where welded, the distinct indices;
+  /// else three per triangle.
+  long long distinct_vertices() const;
+
+  // Settings.
+
+  /// When stored vertices are welded (default: at_capture, or when_settled where the renderer is
+  /// software); a change drops the stored triangles.
+  void set_weld(Weld weld);
+  Weld weld_mode() const { return weld_mode_; }
+  /// The factor by which a base edge's projected length may change before adaptive levels capture
+  /// again (default 1.25).
+  void set_hysteresis(float factor) { hysteresis_ = factor; }
+
+  // Memory.
+
   /// One captured vertex: the tessellation evaluation outputs the fragment shader reads (position,
   /// normal · 2^(node kind), grid: vec3 each), then the patch and (u, v) it was evaluated at (the
   /// canonical patch on patch edges; shaders/limit_point_tese.glsl), for evaluating it again.
@@ -65,6 +173,12 @@ public:
   static constexpr int kWeldedVertexBytes = 6 * 4;
   /// What a welded vertex keeps of those parameters.
   static constexpr int kParameterBytes = 3 * 4;
+  /// What a stored triangle takes of the memory limit: its captured vertices. Welded, also their
+  /// indices, the welded vertices and, while they are welded, the weld's table and prefix sum:
+  /// triangles past the limit welded are drawn as captured.
+  static constexpr int kTriangleBytes = 3 * kCapturedVertexBytes;
+  static constexpr int kWeldedTriangleBytes =
+      3 * (kCapturedVertexBytes + kWeldedVertexBytes + kParameterBytes + 4 + StoredVertexWeld::kTableBytesPerVertex);
   /// The memory limit: a sixteenth of the device's memory (render/gl/device_memory.h; a GPU's, or the
   /// machine's for llvmpipe), at least kLeastLimitBytes and at most kMostLimitBytes, which keeps
   /// every buffer under 2 GiB: NVIDIA's driver (580) ends transform feedback into a larger one early,
@@ -72,6 +186,27 @@ public:
   static constexpr long long kLeastLimitBytes = 512ll << 20;
   static constexpr long long kMostLimitBytes = (2ll << 30) - 1;
   static constexpr int kDeviceMemoryShare = 16;
+  void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
+  long long limit_bytes() const { return limit_bytes_; }
+  /// The bytes of the cache's buffers.
+  size_t buffer_bytes() const {
+    return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kCapturedVertexBytes +
+           size_t(index_capacity_) * 3 * (kWeldedVertexBytes + kParameterBytes + 4) + (weld_ ? weld_->bytes() : 0);
+  }
+
+  // Counts (statistics, benchmarks, tests).
+
+  /// Full captures so far (tests: a frame that should draw stored triangles must not add one).
+  int captures() const { return captures_; }
+  /// Refreshes so far, and the patches the last one brought up to date (those of its stale blocks).
+  int refreshes() const { return refreshes_; }
+  int refreshed_patches() const { return refreshed_patches_; }
+  /// Of those, the patches whose welded vertices it evaluated again (the rest it captured again).
+  int evaluated_patches() const { return evaluated_patches_; }
+  /// The stored triangles' count.
+  long long triangles() const { return blocks_.total(); }
+
+private:
   /// Where the weld waits for a still frame (llvmpipe), an edit evaluates the welded vertices again
   /// instead of capturing its blocks again only from this uniform level on: below, its three compute
   /// passes cost more than the capture.
@@ -80,119 +215,11 @@ public:
   /// slots (a quad patch at level L has (L + 1)² of 6 L², a half-size one at ⌈L/2⌉ and a triangle at L
   /// alike), the bound that sizes the evaluation's dispatches; below, all of its slots.
   static constexpr float kThirdOfSlotsFromLevel = 8.0f;
-  /// When the stored vertices are welded: never, after each capture and refresh, or by the first
-  /// frame that draws them unchanged (settle()).
-  enum class Weld { off, at_capture, when_settled };
 
-  /// Needs a current GL context.
-  SurfaceCache();
-  ~SurfaceCache();
-  SurfaceCache(const SurfaceCache&) = delete;
-  SurfaceCache& operator=(const SurfaceCache&) = delete;
-
-  /// The base mesh (vertex positions and edges) the adaptive hysteresis measures; drops the capture.
-  void set_cage(const CovarianceMesh& mesh);
-  /// Moved base vertices (for the hysteresis; points_changed says what the edit changed).
-  void update_cage(const CovarianceMesh& mesh, const std::vector<int>& changed);
-  /// A compute pass made plan points of generation `points`, changing the triangles of `patches`
-  /// (nullptr: of all patches, not followed as an edit: captured again).
-  void points_changed(long long points, const std::vector<int>* patches);
-  /// An edit's compute pass over everything (most of the mesh moved) made plan points of
-  /// generation `points`: every block is stale, followed as an edit's.
-  void all_points_changed(long long points);
-
-  /// Whether the last capture (or its refusal, past the memory limit) stands for these inputs.
-  bool current(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
-  /// Issues the patch draws of patches [first, first + count) (the caller has bound a program with
-  /// the feedback varyings).
-  using DrawPatches = std::function<void(int first, int count)>;
-  /// Captures the triangles of all `n_patches` that `draw_patches` generates, block by block,
-  /// under transform feedback, with the rasteriser off or (`rasterize`: a frame drawn as it is
-  /// captured) on. `estimate` triangles size the buffer; a full buffer grows and captures again, up
-  /// to the memory limit, past which the inputs are refused (drawn live). False when refused.
-  bool capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches, long long estimate,
-               const DrawPatches& draw_patches, bool rasterize = false);
-  /// Whether edits are followed (points_changed's patches kept for a refresh): a capture stands
-  /// and every compute pass since reported its patches.
-  bool follows_edits() const { return tracked_points_ >= 0; }
-  /// Whether refresh() brings the stored triangles to `key`: only the points differ, and every
-  /// compute pass since the capture reported its patches; the camera is close (adaptive levels).
-  bool refreshable(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
-  /// Evaluates the welded vertices of blocks again (render/cache/stored_vertex_evaluation.h) in the work
-  /// groups that `dispatches` holds per block, with the welded vertex and parameter buffers bound.
-  using EvaluateWelded =
-      std::function<void(const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches)>;
-  /// At adaptive levels: per block (its patches listed), whether an edit changed any patch's levels
-  /// under the capture's camera (render/cache/stored_patch_levels.h, recorded at each adaptive capture).
-  using LevelsChanged = std::function<std::vector<char>(const std::vector<StoredPatchLevels::Block>& blocks)>;
-  /// The uniform level from which an edit evaluates welded vertices again: kSettledEvaluatedFromLevel
-  /// where the weld waits for a still frame; every level where it welds at capture (a GPU: there
-  /// transform feedback costs more than the compute passes).
-  float evaluated_from_level() const { return weld_mode_ == Weld::when_settled ? kSettledEvaluatedFromLevel : 0.0f; }
-  /// Brings the stale blocks to `key`. Blocks whose tessellation stays (uniform levels from
-  /// evaluated_from_level(); adaptive ones that `levels_changed` leaves alone) with the vertices welded:
-  /// by evaluating the welded vertices again (`evaluate_welded`, where given). The others by
-  /// capturing them again, for which the caller has set the capture camera below in the program's
-  /// uniforms. False where capturing them again is not worth it (over half of the patches) or did
-  /// not fit the memory limit (capture everything then).
-  bool refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded = {},
-               const LevelsChanged& levels_changed = {});
-  /// The camera of the capture: a refresh evaluates adaptive levels as the capture did.
-  const glm::mat4& captured_view_projection() const { return view_projection_; }
-  glm::vec2 captured_viewport() const { return viewport_; }
-  /// Whether stored triangles are there to draw (a capture that was not refused).
-  bool holds_triangles() const { return stored_ && !refused_; }
-  /// A frame found the stored triangles current: brings the captured copies of evaluated vertices up
-  /// to date and welds what Weld::when_settled left unwelded.
-  void settle();
-  /// Brings the captured copies of the vertices that edits evaluated again up to date (a compute
-  /// pass: call before binding the frame's program), as a frame that draws the grid needs.
-  void copy_back_evaluated();
-  /// Binds the vertex array of the stored triangles and draws them with the bound program, which
-  /// reads the tessellation grid (attribute 2) where `grid`: welded where they are, but with the grid
-  /// (the welded copies of a point on a patch edge had each their patch's grid; copy_back_evaluated() first).
-  void draw(bool grid) const;
-  /// Whether draw() draws welded vertices by index (but for the grid).
-  bool draws_welded() const { return weld_mode_ != Weld::off && !weld_all_pending_ && weld_pending_.empty(); }
-  /// The stored triangles read back, vertices with bit-identical position and normal welded (shared
-  /// patch edges are bit-exact): the benchmark's static-buffer floor for exactly these triangles.
-  /// Their captured copies, brought up to date first (copy_back_evaluated()).
-  TriangleMesh stored_triangles();
-  /// The distinct vertices a cached frame fetches (read back): where welded, the distinct indices;
-  /// else three per triangle.
-  long long distinct_vertices() const;
-
-  /// When stored vertices are welded (default: at_capture, or when_settled where the renderer is
-  /// software); a change drops the stored triangles.
-  void set_weld(Weld weld);
-  Weld weld_mode() const { return weld_mode_; }
-  /// What a stored triangle takes of the memory limit: its captured vertices. Welded, also their
-  /// indices, the welded vertices and, while they are welded, the weld's table and prefix sum:
-  /// triangles past the limit welded are drawn as captured.
-  static constexpr int kTriangleBytes = 3 * kCapturedVertexBytes;
-  static constexpr int kWeldedTriangleBytes =
-      3 * (kCapturedVertexBytes + kWeldedVertexBytes + kParameterBytes + 4 + StoredVertexWeld::kTableBytesPerVertex);
-
-  void set_hysteresis(float factor) { hysteresis_ = factor; }
-  void set_limit_bytes(long long bytes) { limit_bytes_ = bytes; }
-  long long limit_bytes() const { return limit_bytes_; }
-  /// Full captures so far (tests: a frame that should draw stored triangles must not add one).
-  int captures() const { return captures_; }
-  /// Refreshes so far, and the patches the last one brought up to date (those of its stale blocks).
-  int refreshes() const { return refreshes_; }
-  int refreshed_patches() const { return refreshed_patches_; }
-  /// Of those, the patches whose welded vertices it evaluated again (the rest it captured again).
-  int evaluated_patches() const { return evaluated_patches_; }
-  long long triangles() const { return blocks_.total(); }
-  size_t buffer_bytes() const {
-    return size_t(capacity_ + scratch_capacity_ + spare_capacity_) * 3 * kCapturedVertexBytes +
-           size_t(index_capacity_) * 3 * (kWeldedVertexBytes + kParameterBytes + 4) + (weld_ ? weld_->bytes() : 0);
-  }
-
-private:
   bool camera_close(const glm::mat4& view_projection, glm::vec2 viewport, float pixels) const;
-  /// Whether plan points of generation `points` follow the stored triangles' by one edit.
-  bool follows(long long points) const;
+  /// Follows plan points of generation `points` as an edit's where they come one compute pass after
+  /// those followed so far (true); else stops following edits until the next capture (false).
+  bool follow_edit(long long points);
   long long most_triangles() const;
   void reserve(unsigned buffer, long long& capacity, long long triangles) const;
   /// Captures `blocks` one after the other into `buffer` from its start; their counts (counted, or
@@ -214,7 +241,8 @@ private:
   /// Welds them into the index and welded vertex buffers.
   void weld_now(const std::vector<int>& blocks);
 
-  unsigned buffer_ = 0, scratch_ = 0, spare_ = 0, indices_ = 0, welded_ = 0, parameters_ = 0, vao_ = 0, welded_vao_ = 0;
+  GlBuffer buffer_, scratch_, spare_, indices_, welded_, parameters_;
+  GlVertexArray vao_, welded_vao_;
   long long index_capacity_ = 0;            // triangles the index, welded vertex and parameter buffers hold
   std::unique_ptr<StoredVertexWeld> weld_;  // made at the first weld
   Weld weld_mode_;
@@ -222,7 +250,7 @@ private:
   std::vector<int> weld_pending_;  // else these, in order
   std::vector<int>
       copy_pending_;  // blocks whose evaluated welded vertices are not yet copied to their captured ones, in order
-  std::vector<unsigned> queries_;                                       // one per block of a capture
+  std::vector<GlQuery> queries_;                                        // one per block of a capture
   long long capacity_ = 0, scratch_capacity_ = 0, spare_capacity_ = 0;  // triangles the buffers hold
   SurfaceBlocks blocks_;
   long long tracked_points_ = -1;  // the points the stale blocks lead to (−1: untracked)

@@ -15,7 +15,7 @@ namespace gps {
 
 long long SurfaceCache::distinct_vertices() const {
   const long long vertices = 3 * blocks_.total();
-  if (!draws_welded() || !holds_triangles()) return vertices;
+  if (!stored_vertices_welded() || !has_stored_triangles()) return vertices;
   std::vector<GLuint> indices(static_cast<size_t>(vertices), 0u);
   glGetNamedBufferSubData(indices_, 0, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data());
   check_gl_errors("reading the surface cache's indices");
@@ -25,7 +25,7 @@ long long SurfaceCache::distinct_vertices() const {
 
 TriangleMesh SurfaceCache::stored_triangles() {
   TriangleMesh mesh;
-  if (!holds_triangles()) return mesh;
+  if (!has_stored_triangles()) return mesh;
   copy_back_evaluated();
   const size_t floats_per_vertex = kCapturedVertexBytes / sizeof(float);
   std::vector<float> vertices(size_t(3 * blocks_.total()) * floats_per_vertex);

@@ -29,7 +29,8 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   }
   // Kept blocks with welded vertices are evaluated again where they are (render/cache/stored_vertex_evaluation.h)
   // from uniform level evaluated_from_level() on, and at adaptive levels; the others captured again.
-  const bool evaluate = evaluate_welded && draws_welded() && (!uniform || key.level >= evaluated_from_level());
+  const bool evaluate =
+      evaluate_welded && stored_vertices_welded() && (!uniform || key.level >= evaluated_from_level());
   std::vector<int> evaluated, captured;
   bool captured_kept = true;
   int captured_patches = 0;

@@ -13,17 +13,7 @@ StaticTriangles::StaticTriangles()
     : shaded_("mesh", {{GL_VERTEX_SHADER, {shaders::mesh_vert}}, {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}),
       wire_("mesh_wire", {{GL_VERTEX_SHADER, {shaders::geometry_next, shaders::mesh_vert}},
                           {GL_GEOMETRY_SHADER, {shaders::mesh_geom}},
-                          {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}) {
-  glCreateVertexArrays(1, &vao_);
-  glCreateBuffers(1, &vbo_);
-  glCreateBuffers(1, &ibo_);
-}
-
-StaticTriangles::~StaticTriangles() {
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteBuffers(1, &vbo_);
-  glDeleteBuffers(1, &ibo_);
-}
+                          {GL_FRAGMENT_SHADER, {shaders::shade_frag}}}) {}
 
 void StaticTriangles::set(const TriangleMesh& t) {
   std::vector<float> vertices;

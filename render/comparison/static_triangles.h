@@ -2,6 +2,7 @@
 // Triangles from a vertex buffer (CPU tessellation, reference subdivision) with the surface's
 // shading: the static-buffer floor the benchmark measures the patch pipeline against.
 #include "core/evaluation/triangle_mesh.h"
+#include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {
@@ -10,7 +11,6 @@ class StaticTriangles {
 public:
   /// Needs a current GL 4.5 context.
   StaticTriangles();
-  ~StaticTriangles();
   StaticTriangles(const StaticTriangles&) = delete;
   StaticTriangles& operator=(const StaticTriangles&) = delete;
 
@@ -21,7 +21,8 @@ public:
 
 private:
   ShaderProgram shaded_, wire_;
-  unsigned vao_ = 0, vbo_ = 0, ibo_ = 0;
+  GlVertexArray vao_;
+  GlBuffer vbo_, ibo_;
   int count_ = 0;
 };
 

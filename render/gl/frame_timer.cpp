@@ -1,6 +1,7 @@
 #include "render/gl/frame_timer.h"
 
 #include "core/support/median.h"
+#include "render/gl/gl_object.h"
 
 #include <glad/gl.h>
 
@@ -19,8 +20,7 @@ std::vector<FrameTiming> time_gl_work_interleaved(const std::vector<std::functio
       glFinish();
     }
   std::vector<std::vector<double>> gpu(works.size()), wall(works.size());
-  unsigned query = 0;
-  glCreateQueries(GL_TIME_ELAPSED, 1, &query);
+  const GlQuery query(GL_TIME_ELAPSED);
   const auto begin = Clock::now();
   for (int round = 0; round < std::max(1, min_rounds) ||
                       (round < 200 && std::chrono::duration<double>(Clock::now() - begin).count() < budget_seconds);
@@ -36,7 +36,6 @@ std::vector<FrameTiming> time_gl_work_interleaved(const std::vector<std::functio
       glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
       gpu[i].push_back(double(ns) * 1e-6);
     }
-  glDeleteQueries(1, &query);
   std::vector<FrameTiming> timings;
   for (size_t i = 0; i < works.size(); ++i) timings.push_back({median(gpu[i]), median(wall[i])});
   return timings;

@@ -9,13 +9,10 @@ namespace gps {
 
 QueryRing::QueryRing(const std::vector<unsigned>& targets, int slots)
     : targets_(targets), queries_(targets.size() * size_t(slots)), slots_(slots) {
-  // glGenQueries, not glCreateQueries: Mesa 22.3's glCreateQueries refuses the pipeline-statistics
-  // targets; generated names take their target at the first glBeginQuery.
-  glGenQueries(GLsizei(queries_.size()), queries_.data());
+  // Queries without a target (gl_kind::Query: Mesa 22.3's glCreateQueries refuses the
+  // pipeline-statistics targets); each takes its target at its first glBeginQuery.
   check_gl_errors("creating GL queries");
 }
-
-QueryRing::~QueryRing() { glDeleteQueries(GLsizei(queries_.size()), queries_.data()); }
 
 bool QueryRing::begin() {
   if (active_) throw Error("a GL query ring was begun twice without an end");
@@ -41,7 +38,7 @@ const std::optional<std::vector<unsigned long long>>& QueryRing::latest() {
 
 void QueryRing::collect() {
   while (taken_ < issued_) {
-    const GLuint* slot = &queries_[size_t(taken_ % slots_) * targets_.size()];
+    const GlQuery* slot = &queries_[size_t(taken_ % slots_) * targets_.size()];
     for (size_t t = 0; t < targets_.size(); ++t) {
       GLuint available = GL_FALSE;
       glGetQueryObjectuiv(slot[t], GL_QUERY_RESULT_AVAILABLE, &available);

@@ -4,13 +4,14 @@
 #include <optional>
 #include <vector>
 
+#include "render/gl/gl_object.h"
+
 namespace gps {
 
 class QueryRing {
 public:
   /// `slots` slots of one query object per target; needs a current GL context.
   QueryRing(const std::vector<unsigned>& targets, int slots);
-  ~QueryRing();
   QueryRing(const QueryRing&) = delete;
   QueryRing& operator=(const QueryRing&) = delete;
 
@@ -26,7 +27,7 @@ private:
   void collect();
 
   std::vector<unsigned> targets_;
-  std::vector<unsigned> queries_;  // slot-major: queries_[slot * targets + t]
+  std::vector<GlQuery> queries_;  // slot-major: queries_[slot * targets + t]
   int slots_;
   long long issued_ = 0, taken_ = 0;  // slots ended and slots read, counted from the start
   bool active_ = false;

@@ -7,18 +7,27 @@
 
 namespace gps {
 
-RenderTarget::RenderTarget(int width, int height) : width_(width), height_(height) {
+namespace {
+
+// The width, once both sides are checked: before any GL object is made.
+int checked_width(int width, int height) {
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
     throw usage_error("image size must be 1..16384 pixels each way, got " + std::to_string(width) + "x" +
                       std::to_string(height));
-  glCreateFramebuffers(1, &fbo_);
-  glCreateTextures(GL_TEXTURE_2D, 3, textures_);
+  return width;
+}
+
+}  // namespace
+
+RenderTarget::RenderTarget(int width, int height)
+    : width_(checked_width(width, height)),
+      height_(height),
+      textures_{GlTexture(GL_TEXTURE_2D), GlTexture(GL_TEXTURE_2D), GlTexture(GL_TEXTURE_2D)} {
   const GLenum formats[3] = {GL_RGBA8, GL_RGBA32F, GL_RGBA32F};
   for (int i = 0; i < 3; ++i) {
     glTextureStorage2D(textures_[i], 1, formats[i], width, height);
     glNamedFramebufferTexture(fbo_, GLenum(GL_COLOR_ATTACHMENT0 + i), textures_[i], 0);
   }
-  glCreateRenderbuffers(1, &depth_);
   glNamedRenderbufferStorage(depth_, GL_DEPTH_COMPONENT32F, width, height);
   glNamedFramebufferRenderbuffer(fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
   const GLenum draw[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
@@ -26,12 +35,6 @@ RenderTarget::RenderTarget(int width, int height) : width_(width), height_(heigh
   if (glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw Error("the off-screen framebuffer is incomplete");
   check_gl_errors("creating the render target");
-}
-
-RenderTarget::~RenderTarget() {
-  glDeleteFramebuffers(1, &fbo_);
-  glDeleteTextures(3, textures_);
-  glDeleteRenderbuffers(1, &depth_);
 }
 
 void RenderTarget::bind() const {

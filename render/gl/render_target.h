@@ -1,5 +1,8 @@
 #pragma once
 // An off-screen framebuffer: colour (RGBA8) plus world position and normal AOVs (RGBA32F) and depth.
+#include <array>
+
+#include "render/gl/gl_object.h"
 #include "render/image/image.h"
 
 namespace gps {
@@ -7,7 +10,6 @@ namespace gps {
 class RenderTarget {
 public:
   RenderTarget(int width, int height);
-  ~RenderTarget();
   RenderTarget(const RenderTarget&) = delete;
   RenderTarget& operator=(const RenderTarget&) = delete;
 
@@ -22,7 +24,9 @@ public:
 
 private:
   int width_, height_;
-  unsigned fbo_ = 0, textures_[3] = {0, 0, 0}, depth_ = 0;
+  GlFramebuffer fbo_;
+  std::array<GlTexture, 3> textures_;  // colour, position, normal
+  GlRenderbuffer depth_;
 };
 
 }  // namespace gps

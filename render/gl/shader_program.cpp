@@ -9,13 +9,13 @@
 namespace gps {
 
 ShaderProgram::ShaderProgram(const std::string& name, const std::vector<ShaderStage>& stages,
-                             const std::vector<const char*>& feedback) {
-  id_ = glCreateProgram();
-  std::vector<GLuint> shaders;
+                             const std::vector<const char*>& feedback)
+    : program_() {
+  std::vector<GlShader> shaders;
   for (const auto& stage : stages) {
     std::vector<const char*> sources = {"#version 450 core\n"};
     sources.insert(sources.end(), stage.sources.begin(), stage.sources.end());
-    const GLuint s = glCreateShader(stage.type);
+    GlShader s(stage.type);
     glShaderSource(s, GLsizei(sources.size()), sources.data(), nullptr);
     glCompileShader(s);
     GLint ok = 0;
@@ -25,52 +25,40 @@ ShaderProgram::ShaderProgram(const std::string& name, const std::vector<ShaderSt
       glGetShaderInfoLog(s, sizeof log - 1, nullptr, log);
       std::string line(log);
       line = line.substr(0, line.find('\n'));
-      glDeleteShader(s);
       throw Error("shader " + name + " does not compile: " + line);
     }
-    glAttachShader(id_, s);
-    shaders.push_back(s);
+    glAttachShader(program_, s);
+    shaders.push_back(std::move(s));
   }
   if (!feedback.empty())
-    glTransformFeedbackVaryings(id_, GLsizei(feedback.size()), feedback.data(), GL_INTERLEAVED_ATTRIBS);
-  glLinkProgram(id_);
-  for (const GLuint s : shaders) glDeleteShader(s);
+    glTransformFeedbackVaryings(program_, GLsizei(feedback.size()), feedback.data(), GL_INTERLEAVED_ATTRIBS);
+  glLinkProgram(program_);
+  shaders.clear();  // deleted once the program is linked
   GLint ok = 0;
-  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
   if (!ok) {
     char log[2048] = {};
-    glGetProgramInfoLog(id_, sizeof log - 1, nullptr, log);
+    glGetProgramInfoLog(program_, sizeof log - 1, nullptr, log);
     std::string line(log);
     throw Error("shader " + name + " does not link: " + line.substr(0, line.find('\n')));
   }
 }
 
-ShaderProgram::~ShaderProgram() {
-  if (id_) glDeleteProgram(id_);
-}
-
-ShaderProgram::ShaderProgram(ShaderProgram&& other) noexcept : id_(other.id_) { other.id_ = 0; }
-
-ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
-  std::swap(id_, other.id_);
-  return *this;
-}
-
-void ShaderProgram::use() const { glUseProgram(id_); }
+void ShaderProgram::use() const { glUseProgram(program_); }
 void ShaderProgram::set(const char* name, int value) const {
-  glProgramUniform1i(id_, glGetUniformLocation(id_, name), value);
+  glProgramUniform1i(program_, glGetUniformLocation(program_, name), value);
 }
 void ShaderProgram::set(const char* name, float value) const {
-  glProgramUniform1f(id_, glGetUniformLocation(id_, name), value);
+  glProgramUniform1f(program_, glGetUniformLocation(program_, name), value);
 }
 void ShaderProgram::set(const char* name, const glm::vec2& v) const {
-  glProgramUniform2fv(id_, glGetUniformLocation(id_, name), 1, glm::value_ptr(v));
+  glProgramUniform2fv(program_, glGetUniformLocation(program_, name), 1, glm::value_ptr(v));
 }
 void ShaderProgram::set(const char* name, const glm::vec4& v) const {
-  glProgramUniform4fv(id_, glGetUniformLocation(id_, name), 1, glm::value_ptr(v));
+  glProgramUniform4fv(program_, glGetUniformLocation(program_, name), 1, glm::value_ptr(v));
 }
 void ShaderProgram::set(const char* name, const glm::mat4& m) const {
-  glProgramUniformMatrix4fv(id_, glGetUniformLocation(id_, name), 1, GL_FALSE, glm::value_ptr(m));
+  glProgramUniformMatrix4fv(program_, glGetUniformLocation(program_, name), 1, GL_FALSE, glm::value_ptr(m));
 }
 
 }  // namespace gps

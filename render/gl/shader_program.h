@@ -5,6 +5,8 @@
 
 #include <glm/glm.hpp>
 
+#include "render/gl/gl_object.h"
+
 namespace gps {
 
 struct ShaderStage {
@@ -14,16 +16,16 @@ struct ShaderStage {
 
 class ShaderProgram {
 public:
+  /// No program (id 0).
   ShaderProgram() = default;
   /// Compiles and links; `name` appears in the one-line error if the driver refuses it.
   /// `feedback` names varyings captured by transform feedback (interleaved).
   ShaderProgram(const std::string& name, const std::vector<ShaderStage>& stages,
                 const std::vector<const char*>& feedback = {});
-  ~ShaderProgram();
-  ShaderProgram(ShaderProgram&& other) noexcept;
-  ShaderProgram& operator=(ShaderProgram&& other) noexcept;
+  ShaderProgram(ShaderProgram&& other) noexcept = default;
+  ShaderProgram& operator=(ShaderProgram&& other) noexcept = default;
 
-  unsigned id() const { return id_; }
+  unsigned id() const { return program_; }
   void use() const;
   void set(const char* name, int value) const;
   void set(const char* name, float value) const;
@@ -32,7 +34,7 @@ public:
   void set(const char* name, const glm::mat4& value) const;
 
 private:
-  unsigned id_ = 0;
+  GlProgram program_ = GlProgram::none();
 };
 
 }  // namespace gps

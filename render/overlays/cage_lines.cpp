@@ -12,20 +12,11 @@ namespace gps {
 
 CageLines::CageLines()
     : program_("lines", {{GL_VERTEX_SHADER, {shaders::lines_vert}}, {GL_FRAGMENT_SHADER, {shaders::lines_frag}}}) {
-  glCreateVertexArrays(1, &vao_);
-  glCreateBuffers(1, &vbo_);
-  glCreateBuffers(1, &ibo_);
   glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, 3 * sizeof(float));
   glVertexArrayElementBuffer(vao_, ibo_);
   glEnableVertexArrayAttrib(vao_, 0);
   glVertexArrayAttribFormat(vao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
   glVertexArrayAttribBinding(vao_, 0, 0);
-}
-
-CageLines::~CageLines() {
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteBuffers(1, &vbo_);
-  glDeleteBuffers(1, &ibo_);
 }
 
 void CageLines::set_mesh(const CovarianceMesh& mesh) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "render/gl/gl_object.h"
 #include "render/gl/render_target.h"
 #include "render/gl/shader_program.h"
 
@@ -14,7 +15,6 @@ class CageLines {
 public:
   /// Needs a current GL 4.5 context.
   CageLines();
-  ~CageLines();
   CageLines(const CageLines&) = delete;
   CageLines& operator=(const CageLines&) = delete;
 
@@ -30,7 +30,8 @@ public:
 
 private:
   ShaderProgram program_;
-  unsigned vao_ = 0, vbo_ = 0, ibo_ = 0;  // base vertex positions, edges as index pairs
+  GlVertexArray vao_;
+  GlBuffer vbo_, ibo_;  // base vertex positions, edges as index pairs
   int index_count_ = 0;
 };
 

@@ -26,10 +26,6 @@ EllipsoidOverlay::EllipsoidOverlay()
         circles.insert(circles.end(), p, p + 3);
       }
   circle_vertex_count_ = int(circles.size() / 3);
-  glCreateVertexArrays(1, &vao_);
-  glCreateBuffers(1, &circle_vbo_);
-  glCreateBuffers(1, &instance_vbo_);
-  glCreateBuffers(1, &indirect_);
   glNamedBufferData(circle_vbo_, GLsizeiptr(circles.size() * sizeof(float)), circles.data(), GL_STATIC_DRAW);
   glVertexArrayVertexBuffer(vao_, 0, circle_vbo_, 0, 3 * sizeof(float));
   glEnableVertexArrayAttrib(vao_, 0);
@@ -42,13 +38,6 @@ EllipsoidOverlay::EllipsoidOverlay()
   }
   glVertexArrayBindingDivisor(vao_, 1, 1);
   check_gl_errors("creating the ellipsoid overlay");
-}
-
-EllipsoidOverlay::~EllipsoidOverlay() {
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteBuffers(1, &circle_vbo_);
-  glDeleteBuffers(1, &instance_vbo_);
-  glDeleteBuffers(1, &indirect_);
 }
 
 void EllipsoidOverlay::upload(const CovarianceMesh& mesh, const std::vector<int>* changed) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {
@@ -13,7 +14,6 @@ class EllipsoidOverlay {
 public:
   /// Needs a current GL 4.5 context.
   EllipsoidOverlay();
-  ~EllipsoidOverlay();
   EllipsoidOverlay(const EllipsoidOverlay&) = delete;
   EllipsoidOverlay& operator=(const EllipsoidOverlay&) = delete;
 
@@ -26,7 +26,8 @@ public:
 
 private:
   ShaderProgram program_;
-  unsigned vao_ = 0, circle_vbo_ = 0, instance_vbo_ = 0, indirect_ = 0;
+  GlVertexArray vao_;
+  GlBuffer circle_vbo_, instance_vbo_, indirect_;
   int circle_vertex_count_ = 0;
   int count_ = 0;  // instances: per vertex a mat4 [Σ^½ | μ] (k-σ in the shader)
 };

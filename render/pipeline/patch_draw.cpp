@@ -46,7 +46,6 @@ class DiscardedRaster {
 public:
   DiscardedRaster() {
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_);
-    glCreateFramebuffers(1, &framebuffer_);
     glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);
     glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
@@ -55,14 +54,13 @@ public:
   ~DiscardedRaster() {
     glDisable(GL_RASTERIZER_DISCARD);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previous_));
-    glDeleteFramebuffers(1, &framebuffer_);
   }
   DiscardedRaster(const DiscardedRaster&) = delete;
   DiscardedRaster& operator=(const DiscardedRaster&) = delete;
 
 private:
   GLint previous_ = 0;
-  unsigned framebuffer_ = 0;
+  GlFramebuffer framebuffer_;
 };
 
 int quad_slot(PatchOutput output) {
@@ -81,11 +79,7 @@ PatchDraw::PatchDraw()
                 patch_program(PatchShape::triangle, PatchOutput::feedback),
                 patch_program(PatchShape::triangle, PatchOutput::wireframe),
                 patch_program(PatchShape::triangle, PatchOutput::capture),
-                patch_program(PatchShape::triangle, PatchOutput::shaded_capture)} {
-  glCreateVertexArrays(1, &empty_vao_);
-}
-
-PatchDraw::~PatchDraw() { glDeleteVertexArrays(1, &empty_vao_); }
+                patch_program(PatchShape::triangle, PatchOutput::shaded_capture)} {}
 
 const ShaderProgram& PatchDraw::program(PatchShape shape, PatchOutput output) const {
   return shape == PatchShape::triangle ? triangle_[int(output)] : quad_[quad_slot(output)];
@@ -119,8 +113,7 @@ long long PatchDraw::count_triangles(PatchShape shape, const Camera& camera, con
   const ShaderProgram& feedback = program(shape, PatchOutput::feedback);
   set_frame_uniforms(feedback, camera, o, float(width) / float(height), width, height);
   feedback.use();
-  unsigned query = 0;
-  glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
+  const GlQuery query(GL_PRIMITIVES_GENERATED);
   {
     const DiscardedRaster discarded;
     glBeginQuery(GL_PRIMITIVES_GENERATED, query);
@@ -129,7 +122,6 @@ long long PatchDraw::count_triangles(PatchShape shape, const Camera& camera, con
   }
   GLuint64 primitives = 0;
   glGetQueryObjectui64v(query, GL_QUERY_RESULT, &primitives);
-  glDeleteQueries(1, &query);
   check_gl_errors("counting tessellated triangles");
   return (long long)primitives;
 }
@@ -143,8 +135,7 @@ std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, con
   // is 24,576 vertices a quad: gigabytes for a mesh of a few thousand faces).
   const long long triangles = count_triangles(shape, camera, o, width, height, n_total, first_patch, n_patches);
   std::vector<TessellatedVertex> out(size_t(triangles) * 3);
-  unsigned buffer = 0;
-  glCreateBuffers(1, &buffer);
+  const GlBuffer buffer;
   glNamedBufferData(buffer, GLsizeiptr(std::max<size_t>(1, out.size()) * sizeof(TessellatedVertex)), nullptr,
                     GL_STREAM_READ);
   {
@@ -156,7 +147,6 @@ std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, con
     glEndTransformFeedback();
   }
   glGetNamedBufferSubData(buffer, 0, GLsizeiptr(out.size() * sizeof(TessellatedVertex)), out.data());
-  glDeleteBuffers(1, &buffer);
   check_gl_errors("capturing tessellated vertices");
   return out;
 }

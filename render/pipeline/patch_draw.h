@@ -8,6 +8,7 @@
 
 #include "core/plans/plan_builder.h"
 #include "render/pipeline/draw_options.h"
+#include "render/gl/gl_object.h"
 #include "render/gl/query_ring.h"
 #include "render/gl/shader_program.h"
 
@@ -42,7 +43,6 @@ class PatchDraw {
 public:
   /// Needs a current GL 4.5 context.
   PatchDraw();
-  ~PatchDraw();
   PatchDraw(const PatchDraw&) = delete;
   PatchDraw& operator=(const PatchDraw&) = delete;
 
@@ -76,7 +76,7 @@ private:
                     int n_patches) const;
 
   ShaderProgram quad_[4], triangle_[5];  // by PatchOutput (quads: shaded, feedback, capture, shaded_capture)
-  unsigned empty_vao_ = 0;
+  GlVertexArray empty_vao_;
   std::unique_ptr<QueryRing> statistics_;  // set while collecting statistics
 };
 

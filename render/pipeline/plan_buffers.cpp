@@ -11,9 +11,7 @@ namespace gps {
 
 using namespace gpu;
 
-PlanBuffers::PlanBuffers() { glCreateBuffers(kBindingCount, buffers_); }
-
-PlanBuffers::~PlanBuffers() { glDeleteBuffers(kBindingCount, buffers_); }
+PlanBuffers::PlanBuffers() = default;
 
 template <class T>
 void PlanBuffers::upload(int binding, const std::vector<T>& data) {

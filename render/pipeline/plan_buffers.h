@@ -3,11 +3,13 @@
 // the renderer, core/plans/planned_surface.h) as shader storage buffers at the bindings of
 // render/pipeline/gpu_layout.h, with the base Gaussians, the plan points the compute passes write and an
 // edit's lists of changed vertices and stencil rows.
+#include <array>
 #include <cstddef>
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
 #include "core/plans/plan_builder.h"
+#include "render/gl/gl_object.h"
 #include "render/pipeline/gpu_layout.h"
 
 namespace gps {
@@ -16,7 +18,6 @@ class PlanBuffers {
 public:
   /// Needs a current GL context.
   PlanBuffers();
-  ~PlanBuffers();
   PlanBuffers(const PlanBuffers&) = delete;
   PlanBuffers& operator=(const PlanBuffers&) = delete;
 
@@ -44,7 +45,7 @@ private:
   template <class T>
   void upload(int binding, const std::vector<T>& data);
 
-  unsigned buffers_[gpu::kBindingCount] = {};
+  std::array<GlBuffer, gpu::kBindingCount> buffers_;
   size_t sizes_[gpu::kBindingCount] = {};
 };
 

@@ -23,10 +23,6 @@ SurfaceRenderer::SurfaceRenderer()
   check_gl_errors("creating the renderer");
 }
 
-SurfaceRenderer::~SurfaceRenderer() {
-  if (matcap_) glDeleteTextures(1, &matcap_);
-}
-
 const SurfaceTables& SurfaceRenderer::tables() const {
   static const SurfaceTables none;
   return surface_ ? surface_->tables() : none;
@@ -78,20 +74,16 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
     buffers_.bind();
     compute_.run_listed(n_base_, int(changed->size()), int(rows.size()), group_limit_);
     corners_.run_listed(plans, int(corners.size()), group_limit_);
-    if (cache_.follows_edits()) {
-      cache_.points_changed(points_generation_, &patches);
-      return;
-    }
-  } else {
-    buffers_.bind();
-    compute_.run_all(n_base_, n_rows, group_limit_);
-    corners_.run_all(plans, group_limit_);
-    if (edit) {
-      cache_.all_points_changed(points_generation_);
-      return;
-    }
+    cache_.points_changed(points_generation_, &patches);
+    return;
   }
-  cache_.points_changed(points_generation_, nullptr);
+  buffers_.bind();
+  compute_.run_all(n_base_, n_rows, group_limit_);
+  corners_.run_all(plans, group_limit_);
+  if (edit)
+    cache_.all_points_changed(points_generation_);
+  else
+    cache_.points_changed(points_generation_, nullptr);
 }
 
 std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {
@@ -103,8 +95,7 @@ std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& change
 }
 
 void SurfaceRenderer::set_matcap(const Image& m) {
-  if (matcap_) glDeleteTextures(1, &matcap_);
-  glCreateTextures(GL_TEXTURE_2D, 1, &matcap_);
+  matcap_ = GlTexture(GL_TEXTURE_2D);  // its storage is immutable: a new texture per MatCap
   glTextureStorage2D(matcap_, 1, GL_RGBA32F, m.width, m.height);
   // Image rows run top-down; texture rows bottom-up, so that v = 0.5·n.y + 0.5 points up.
   std::vector<float> rgba(size_t(m.width) * size_t(m.height) * 4, 1.0f);
@@ -142,7 +133,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     buffers_.bind();
     // The cache's compute passes before the clear: on llvmpipe one after it splits the frame in two
     // (the cleared target written out, then read back for the draw).
-    const bool cache_current = use_cache && prepare_cache(camera, o, aspect, target.width(), target.height());
+    const bool cache_matches = use_cache && prepare_cache(camera, o, aspect, target.width(), target.height());
     target.bind();
     const float clear_color[4] = {o.background.r, o.background.g, o.background.b, 1.0f};
     const float clear_zero[4] = {0, 0, 0, 0};
@@ -155,9 +146,10 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glDepthFunc(GL_LEQUAL);
     glBindTextureUnit(0, matcap_);
     const CacheFrame cache_frame = !use_cache       ? CacheFrame::live
-                                   : !cache_current ? capture_cache(camera, o, aspect, target.width(), target.height())
-                                   : cache_.holds_triangles() ? CacheFrame::stored
-                                                              : CacheFrame::live;  // refused: past the memory limit
+                                   : !cache_matches ? capture_cache(camera, o, aspect, target.width(), target.height())
+                                   : cache_.has_stored_triangles()
+                                       ? CacheFrame::stored
+                                       : CacheFrame::live;  // refused: past the memory limit
     const bool cached = cache_frame == CacheFrame::stored;
     last_cache_frame_ = cache_frame;
     if (cache_frame != CacheFrame::drawn) {  // else drawn as it was captured
@@ -205,12 +197,12 @@ bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, 
   const SurfaceCache::Key key = cache_key(o);
   const glm::mat4 view_projection = camera.view_projection(aspect);
   const glm::vec2 viewport{float(width), float(height)};
-  if (cache_.current(key, view_projection, viewport)) {
+  if (cache_.matches(key, view_projection, viewport)) {
     cache_.settle();
     return true;
   }
   // An edit: its patches, under the capture's camera.
-  if (!cache_.refreshable(key, view_projection, viewport)) return false;
+  if (!cache_.can_refresh_to(key, view_projection, viewport)) return false;
   const ShaderProgram& capture = patches_.program(shape(), PatchOutput::capture);
   capture.use();
   set_frame_uniforms(capture, camera, o, aspect, width, height);

@@ -19,6 +19,7 @@
 #include "render/pipeline/draw_options.h"
 #include "render/pipeline/dual_stencil_pass.h"
 #include "render/overlays/ellipsoid_overlay.h"
+#include "render/gl/gl_object.h"
 #include "render/gl/gpu_pass_timer.h"
 #include "render/image/image.h"
 #include "render/pipeline/patch_draw.h"
@@ -36,7 +37,6 @@ class SurfaceRenderer {
 public:
   /// Needs a current GL 4.5 context.
   SurfaceRenderer();
-  ~SurfaceRenderer();
   SurfaceRenderer(const SurfaceRenderer&) = delete;
   SurfaceRenderer& operator=(const SurfaceRenderer&) = delete;
 
@@ -103,9 +103,10 @@ private:
   SurfaceCache::Key cache_key(const DrawOptions& options) const;
   /// The surface cache's work for a frame before its target is cleared: an edit's refresh (compute
   /// passes, captures with the rasteriser off), or a still frame's settling, and the captured copies
-  /// a grid frame reads. True where the cache then stands for the frame's inputs.
+  /// a grid frame reads. True where the cache then matches the frame's inputs (SurfaceCache::matches).
   bool prepare_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
-  /// A capture of every patch (drawing the frame as it goes), where prepare_cache() found none current.
+  /// A capture of every patch (drawing the frame as it goes), where prepare_cache() left the cache
+  /// not matching the frame.
   CacheFrame capture_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
   /// Whether a cached frame of these options draws the quads' wireframe: their tessellation grid,
   /// stored with the captured vertices (triangles' comes from a geometry stage).
@@ -128,7 +129,7 @@ private:
   StoredVertexEvaluation stored_evaluation_;  // the cache's edits where the tessellation stays
   StoredPatchLevels stored_levels_;           // the levels of the cache's adaptive capture
   long long points_generation_ = 0;           // bumped by every compute pass: the cache's key
-  unsigned matcap_ = 0;
+  GlTexture matcap_ = GlTexture::none();      // made by set_matcap()
   int n_base_ = 0;
   long long half_size_patches_ = 0;  // a split face's patches (quads): the cache's buffer estimate
   int group_limit_ = 0;              // lowered by tests only (DeviceLimitsForTests)

@@ -12,6 +12,7 @@
 #include "core/plans/plan_descent.h"
 #include "core/plans/planned_surface.h"
 #include "render/gl/gl_context.h"
+#include "render/gl/gl_object.h"
 #include "render/pipeline/gpu_layout.h"
 #include "render/gl/shader_program.h"
 #include "shaders/embedded_shaders.h"
@@ -106,8 +107,7 @@ TEST_F(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
                              {1.0 / 3, 1.0 / 3}})
     inputs.insert(inputs.end(), {float(u), float(v)});
   const int n = int(inputs.size() / 2);
-  unsigned buffers[2];
-  glCreateBuffers(2, buffers);
+  const GlBuffer buffers[2];
   glNamedBufferData(buffers[0], GLsizeiptr(inputs.size() * sizeof(float)), inputs.data(), GL_STATIC_DRAW);
   glNamedBufferData(buffers[1], GLsizeiptr(size_t(n) * kOut * sizeof(float)), nullptr, GL_STREAM_READ);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
@@ -117,7 +117,6 @@ TEST_F(SharedPatchBasis, GlslAndCppAgreeOnTheSameInputs) {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> gpu(size_t(n) * kOut);
   glGetNamedBufferSubData(buffers[1], 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
-  glDeleteBuffers(2, buffers);
   check_gl_errors("the basis probe");
   for (int i = 0; i < n; ++i) {
     const std::vector<double> cpu = cpu_probe(i, double(inputs[size_t(2 * i)]), double(inputs[size_t(2 * i + 1)]));
@@ -195,8 +194,7 @@ void expect_same_descent(const char* name, const CovarianceMesh& mesh, const Pla
                     {float(plans.patch_roots[size_t(patch)]), triangle ? 1.0f : 0.0f, float(u), float(v)});
     }
   const int n = int(inputs.size() / 4);
-  unsigned buffers[3];
-  glCreateBuffers(3, buffers);
+  const GlBuffer buffers[3];
   glNamedBufferData(buffers[0], GLsizeiptr(plans.nodes.size() * sizeof(int32_t)), plans.nodes.data(), GL_STATIC_DRAW);
   glNamedBufferData(buffers[1], GLsizeiptr(inputs.size() * sizeof(float)), inputs.data(), GL_STATIC_DRAW);
   glNamedBufferData(buffers[2], GLsizeiptr(size_t(n) * kDescentOut * sizeof(float)), nullptr, GL_STREAM_READ);
@@ -206,7 +204,6 @@ void expect_same_descent(const char* name, const CovarianceMesh& mesh, const Pla
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> gpu(size_t(n) * kDescentOut);
   glGetNamedBufferSubData(buffers[2], 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
-  glDeleteBuffers(3, buffers);
   check_gl_errors("the descent probe");
   int extraordinary = 0, deep = 0;
   for (int i = 0; i < n; ++i) {
@@ -278,8 +275,7 @@ TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
                                 kEdgeSecondHalf};
   const ShaderProgram probe("constants_probe",
                             {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::patch_basis, kConstantsProbe}}});
-  unsigned buffer = 0;
-  glCreateBuffers(1, &buffer);
+  const GlBuffer buffer;
   glNamedBufferData(buffer, GLsizeiptr(cpu.size() * sizeof(int)), nullptr, GL_STREAM_READ);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
   probe.use();
@@ -287,7 +283,6 @@ TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<int> gpu(cpu.size());
   glGetNamedBufferSubData(buffer, 0, GLsizeiptr(gpu.size() * sizeof(int)), gpu.data());
-  glDeleteBuffers(1, &buffer);
   check_gl_errors("the constants probe");
   EXPECT_EQ(gpu, cpu);
 }

@@ -125,7 +125,7 @@ TEST_P(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
         const int before = renderer.surface_cache().captures();
         const Frame first = draw(renderer, target, camera, o, true);  // drawn as it is captured
         const Frame second = draw(renderer, target, camera, o, true);
-        EXPECT_TRUE(renderer.surface_cache().holds_triangles()) << what;
+        EXPECT_TRUE(renderer.surface_cache().has_stored_triangles()) << what;
         // A wireframe is shading only: the stored triangles serve it.
         EXPECT_EQ(renderer.surface_cache().captures(), before + (wireframe ? 0 : 1)) << what;
         EXPECT_TRUE(same_surface(first, live)) << what;
@@ -160,7 +160,7 @@ TEST_P(SurfaceCacheTest, AdaptiveCapturesHoldWhatTheyDrawAndGrowWhenTheyNeedMore
     glFinish();
     const long long drawn = renderer.last_statistics().triangles;
     const Frame first = draw(renderer, target, camera, o, true);
-    EXPECT_TRUE(renderer.surface_cache().holds_triangles());
+    EXPECT_TRUE(renderer.surface_cache().has_stored_triangles());
     EXPECT_EQ(renderer.surface_cache().triangles(), drawn);
     // Unwelded, the buffer is all there is: the count and an eighth, below 1.2 times the triangles' bytes.
     const double held = double(renderer.surface_cache().buffer_bytes()) / double(drawn * SurfaceCache::kTriangleBytes);
@@ -198,10 +198,10 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachSurfacePointOnce) {
     ASSERT_EQ(cache.triangles(), patches * 2 * level * level);
     // The cube's surface points at level L: inside its 6 faces, on its 12 edges, its 8 corners.
     const long long points = 6 * (level - 1) * (level - 1) + 12 * (level - 1) + 8;
-    EXPECT_EQ(cache.draws_welded(), welds() && !settles);
+    EXPECT_EQ(cache.stored_vertices_welded(), welds() && !settles);
     EXPECT_EQ(cache.distinct_vertices(), welds() && !settles ? points : 3 * cache.triangles()) << "level " << level;
     draw(renderer, target, camera, uniform(float(level)), true);
-    EXPECT_EQ(cache.draws_welded(), welds());
+    EXPECT_EQ(cache.stored_vertices_welded(), welds());
     EXPECT_EQ(cache.distinct_vertices(), welds() ? points : 3 * cache.triangles()) << "level " << level;
     EXPECT_EQ(cache.stored_triangles().positions.size(), size_t(points)) << "the floor's welded vertices";
   }
@@ -223,7 +223,7 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachSurfacePointOnce) {
     renderer.update_vertices(sphere, {v});
     draw(renderer, target, camera, uniform(level), true);
     EXPECT_EQ(cache.refreshes(), refreshes + 1);
-    EXPECT_EQ(cache.draws_welded(), welds() && (!settles || level >= cache.evaluated_from_level())) << level;
+    EXPECT_EQ(cache.stored_vertices_welded(), welds() && (!settles || level >= cache.evaluated_from_level())) << level;
     const Frame settled = draw(renderer, target, camera, uniform(level), true);
     EXPECT_EQ(cache.refreshes(), refreshes + 1);
     EXPECT_EQ(cache.distinct_vertices(), distinct) << level;
@@ -453,22 +453,22 @@ TEST_P(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
   const Camera camera = frame_mesh(mesh);
   const DrawOptions o = uniform(8);
   const Frame cached = draw(renderer, target, camera, o, true);
-  EXPECT_FALSE(renderer.surface_cache().holds_triangles());
+  EXPECT_FALSE(renderer.surface_cache().has_stored_triangles());
   EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false)));
   draw(renderer, target, camera, o, true);  // refused inputs are not tried again every frame
   EXPECT_EQ(renderer.surface_cache().captures(), 1);
   // Small enough (level 1: 2 triangles per patch, from an estimate past the limit) it fits.
   draw(renderer, target, camera, uniform(1), true);
-  EXPECT_TRUE(renderer.surface_cache().holds_triangles());
+  EXPECT_TRUE(renderer.surface_cache().has_stored_triangles());
   EXPECT_EQ(renderer.surface_cache().triangles(), 2 * renderer.tables().plans.n_patches());
-  EXPECT_EQ(renderer.surface_cache().draws_welded(), welds() && GetParam() == SurfaceCache::Weld::at_capture);
+  EXPECT_EQ(renderer.surface_cache().stored_vertices_welded(), welds() && GetParam() == SurfaceCache::Weld::at_capture);
   // Level 2 fits as captured, but welded would take more than the limit: drawn as captured, still frames too.
   draw(renderer, target, camera, uniform(2), true);
-  EXPECT_TRUE(renderer.surface_cache().holds_triangles());
+  EXPECT_TRUE(renderer.surface_cache().has_stored_triangles());
   ASSERT_GT(renderer.surface_cache().triangles() * SurfaceCache::kWeldedTriangleBytes,
             100 * SurfaceCache::kTriangleBytes);
   const Frame still = draw(renderer, target, camera, uniform(2), true);
-  EXPECT_FALSE(renderer.surface_cache().draws_welded());
+  EXPECT_FALSE(renderer.surface_cache().stored_vertices_welded());
   EXPECT_EQ(renderer.surface_cache().distinct_vertices(), 3 * renderer.surface_cache().triangles());
   EXPECT_TRUE(same_surface(still, draw(renderer, target, camera, uniform(2), false)));
 }
