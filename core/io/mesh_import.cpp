@@ -1,12 +1,14 @@
 #include "core/io/mesh_import.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cstring>
-#include <map>
+#include <numeric>
 #include <sstream>
 
 #include "core/mesh/error.h"
+#include "core/mesh/mesh_connectivity.h"
 #include "core/io/number_text.h"
 #include "core/io/quoted_text.h"
 #include "core/io/text_words.h"
@@ -15,7 +17,16 @@ namespace gps {
 
 namespace {
 
-// `source` is already as messages show it (escaped).
+// `source` is already as messages show it (escaped). A mesh of vertices only is refused before its
+// arrays are built, with read_mesh's message.
+CovarianceMesh plain_mesh(std::vector<Vec3>&& points, PolygonTopology&& faces, const std::string& source) {
+  for (size_t i = 0; i < points.size(); ++i)
+    if (const std::string why = position_problem(points[i]); !why.empty())
+      throw Error(source + ": vertex " + std::to_string(i) + " " + why);
+  if (faces.n_faces() == 0) throw Error(source + ": the mesh has no faces");
+  return make_covariance_mesh(std::move(points), {}, std::move(faces), source);
+}
+
 CovarianceMesh plain_mesh(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces,
                           const std::string& source) {
   for (size_t i = 0; i < points.size(); ++i)
@@ -31,46 +42,70 @@ bool parse_int(std::string_view s, long long& out) {
 
 }  // namespace
 
-CovarianceMesh parse_obj(const std::string& data, const std::string& source_path) {
+CovarianceMesh parse_obj(std::string data, const std::string& source_path) {
   const std::string source = escaped(source_path);
   if (data.empty()) throw Error(source + ": the file is empty");
+  // Two passes over the lines: the first counts the vertices and face corners, so that the arrays are
+  // reserved at their exact sizes and the faces are stored flat (an offset per face, an index per corner).
+  size_t n_points = 0, n_faces = 0, n_corners = 0;
+  for (LineCursor lines(data); !lines.done(); lines.next()) {
+    std::string_view line = lines.line();
+    const std::string_view keyword = next_word(line);
+    if (keyword == "v") ++n_points;
+    if (keyword != "f") continue;
+    ++n_faces;
+    while (!next_word(line).empty()) ++n_corners;
+  }
   std::vector<Vec3> points;
-  std::vector<std::vector<int>> faces;
-  std::istringstream in(data);
-  int line_number = 0;
-  for (std::string line; std::getline(in, line);) {
-    ++line_number;
-    const std::string at = source + ": line " + std::to_string(line_number) + ": ";
-    const auto words = words_of(line);
-    if (words.empty() || words[0][0] == '#') continue;
-    if (words[0] == "v") {
+  points.reserve(n_points);
+  PolygonTopology faces;
+  faces.offsets.reserve(n_faces + 1);
+  faces.verts.reserve(n_corners);
+  for (LineCursor lines(data); !lines.done(); lines.next()) {
+    std::string_view line = lines.line();
+    const auto at = [&] { return source + ": line " + std::to_string(lines.number()) + ": "; };
+    const std::string_view keyword = next_word(line);
+    if (keyword.empty() || keyword[0] == '#') continue;
+    if (keyword == "v") {
       Vec3 p;
-      if (words.size() < 4) throw Error(at + "a vertex needs three coordinates");
+      std::string_view coordinates[3];
+      for (auto& c : coordinates) c = next_word(line);
+      if (coordinates[2].empty()) throw Error(at() + "a vertex needs three coordinates");
       for (int k = 0; k < 3; ++k)
-        if (const std::string why = parse_number(words[size_t(k + 1)], p[k]); !why.empty()) throw Error(at + why);
+        if (const std::string why = parse_number(coordinates[k], p[k]); !why.empty()) throw Error(at() + why);
       points.push_back(p);
-    } else if (words[0] == "f") {
-      std::vector<int> face;
-      for (size_t k = 1; k < words.size(); ++k) {
+    } else if (keyword == "f") {
+      size_t size = 0;
+      for (std::string_view word = next_word(line); !word.empty(); word = next_word(line), ++size) {
         long long index = 0;
-        if (!parse_int(words[k].substr(0, words[k].find('/')), index))
-          throw Error(at + quoted_token(words[k]) + " is not a vertex index");
+        if (!parse_int(word.substr(0, word.find('/')), index))
+          throw Error(at() + quoted_token(word) + " is not a vertex index");
         const long long written = index;
         if (index < 0) index += (long long)points.size() + 1;  // relative to the end
         if (index < 1 || index > (long long)points.size())
-          throw Error(at + "vertex index " + std::to_string(written) + " is out of range (" +
+          throw Error(at() + "vertex index " + std::to_string(written) + " is out of range (" +
                       std::to_string(points.size()) + " vertices so far)");
-        face.push_back(int(index - 1));
+        faces.verts.push_back(int(index - 1));
       }
-      if (face.size() < 3) throw Error(at + "a face needs at least 3 vertices");
-      faces.push_back(face);
+      if (size < 3) throw Error(at() + "a face needs at least 3 vertices");
+      faces.offsets.push_back(int(faces.verts.size()));
+      // Each edge of a manifold mesh borders at most two faces, so its corners are at most n(n − 1) for
+      // n vertices; past that (one face repeated, say) the faces so far are refused as they stand.
+      const double n = double(points.size());
+      if (double(faces.verts.size()) > n * (n - 1)) {
+        faces.offsets.shrink_to_fit();
+        faces.verts.shrink_to_fit();
+        plain_mesh(std::move(points), std::move(faces), source);
+        throw Error(source + ": the mesh is not manifold");  // not reached: the check above throws
+      }
     }
   }
   if (points.empty()) throw Error(source + ": no vertices");
-  return plain_mesh(points, faces, source);
+  std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built
+  return plain_mesh(std::move(points), std::move(faces), source);
 }
 
-CovarianceMesh parse_off(const std::string& data, const std::string& source_path) {
+CovarianceMesh parse_off(std::string data, const std::string& source_path) {
   const std::string source = escaped(source_path);
   if (data.empty()) throw Error(source + ": the file is empty");
   WordCursor t(data);
@@ -107,9 +142,8 @@ CovarianceMesh parse_off(const std::string& data, const std::string& source_path
     }
     t.skip_line(line);  // normals, colours, texture coordinates
   }
-  std::vector<std::vector<int>> faces;
+  PolygonTopology faces;
   for (long long f = 0; f < nf; ++f) {
-    std::vector<int>& face = faces.emplace_back();
     const int line = t.line();
     const long long n = next_int("face size");
     if (n < 3) throw Error(at(line) + "face " + std::to_string(f) + " has fewer than 3 vertices");
@@ -118,11 +152,13 @@ CovarianceMesh parse_off(const std::string& data, const std::string& source_path
       if (index >= nv)
         throw Error(at(line) + "face " + std::to_string(f) + " refers to vertex " + std::to_string(index) +
                     ", but there are " + std::to_string(nv));
-      face.push_back(int(index));
+      faces.verts.push_back(int(index));
     }
+    faces.offsets.push_back(int(faces.verts.size()));
     t.skip_line(line);  // colour values
   }
-  return plain_mesh(points, faces, source);
+  std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built
+  return plain_mesh(std::move(points), std::move(faces), source);
 }
 
 void check_text_head(std::string_view head, size_t size) {
@@ -142,7 +178,7 @@ void check_stl_head(std::string_view head, size_t size) {
                 " triangles (" + std::to_string(84 + size_t(declared) * 50) + " bytes)");
 }
 
-CovarianceMesh parse_stl(const std::string& data, const std::string& source_path) {
+CovarianceMesh parse_stl(std::string data, const std::string& source_path) {
   const std::string source = escaped(source_path);
   if (data.empty()) throw Error(source + ": the file is empty");
   std::vector<Vec3> corners;
@@ -157,6 +193,7 @@ CovarianceMesh parse_stl(const std::string& data, const std::string& source_path
     std::memcpy(&n, data.data() + 80, 4);
     if (84 + size_t(n) * 50 > data.size())
       throw Error(source + ": binary STL declares " + std::to_string(n) + " triangles but holds fewer (truncated)");
+    corners.reserve(3 * size_t(n));
     for (size_t i = 0; i < n; ++i)
       for (int c = 0; c < 3; ++c) {
         float xyz[3];
@@ -181,22 +218,48 @@ CovarianceMesh parse_stl(const std::string& data, const std::string& source_path
     if (corners.size() % 3 != 0) throw Error(source + ": a facet does not have three vertices");
   }
   if (corners.empty()) throw Error(source + ": no triangles");
-  for (size_t c = 0; c < corners.size(); ++c)  // before welding: NaN keys would break the ordered map
+  for (size_t c = 0; c < corners.size(); ++c)  // before welding: NaN would break the sort by position
     if (!corners[c].allFinite())
       throw Error(source + ": triangle " + std::to_string(c / 3) + " has a corner that is not finite");
-  std::map<std::array<double, 3>, int> index;
-  std::vector<Vec3> points;
-  std::vector<std::vector<int>> faces;
-  for (size_t i = 0; i < corners.size(); i += 3) {
-    std::vector<int> face;
-    for (size_t c = i; c < i + 3; ++c) {
-      const auto [it, added] = index.try_emplace({corners[c].x(), corners[c].y(), corners[c].z()}, int(points.size()));
-      if (added) points.push_back(corners[c]);
-      face.push_back(it->second);
-    }
-    if (face[0] != face[1] && face[1] != face[2] && face[0] != face[2]) faces.push_back(face);
+  std::string().swap(data);  // the file is parsed: its bytes are not held while the mesh is built
+  // Welding: the corners sorted by position (ties by their order), so that each corner finds the first
+  // corner at its position; positions compare as the ordered map of arrays of them would.
+  const auto position_less = [&](int a, int b) {
+    const Vec3 &p = corners[size_t(a)], &q = corners[size_t(b)];
+    return std::array<double, 3>{p.x(), p.y(), p.z()} < std::array<double, 3>{q.x(), q.y(), q.z()};
+  };
+  std::vector<int> first(corners.size());  // per corner: the first corner at its position, then its vertex
+  {
+    std::vector<int> order(corners.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return position_less(a, b) || (!position_less(b, a) && a < b); });
+    for (size_t i = 0; i < order.size(); ++i)
+      first[size_t(order[i])] =
+          i > 0 && !position_less(order[i - 1], order[i]) ? first[size_t(order[i - 1])] : order[i];
   }
-  return plain_mesh(points, faces, source);
+  size_t n_points = 0;
+  for (size_t c = 0; c < corners.size(); ++c) n_points += first[c] == int(c);
+  std::vector<Vec3> points;
+  points.reserve(n_points);
+  for (size_t c = 0; c < corners.size(); ++c) {  // vertices in the order their first corners come
+    if (first[c] == int(c)) {
+      first[c] = int(points.size());
+      points.push_back(corners[c]);
+    } else {
+      first[c] = first[size_t(first[c])];
+    }
+  }
+  std::vector<Vec3>().swap(corners);
+  PolygonTopology faces;
+  for (size_t i = 0; i < first.size(); i += 3) {
+    const int a = first[i], b = first[i + 1], c = first[i + 2];
+    if (a == b || b == c || a == c) continue;  // welded to fewer than three vertices
+    faces.verts.insert(faces.verts.end(), {a, b, c});
+    faces.offsets.push_back(int(faces.verts.size()));
+  }
+  std::vector<int>().swap(first);
+  return plain_mesh(std::move(points), std::move(faces), source);
 }
 
 }  // namespace gps

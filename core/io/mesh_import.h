@@ -10,7 +10,8 @@
 namespace gps {
 
 /// Parses OBJ text (v and f records; f accepts v/vt/vn and negative indices; other records are skipped).
-CovarianceMesh parse_obj(const std::string& data, const std::string& source);
+/// The text is taken over and freed once parsed, before the mesh is built (pass it moved).
+CovarianceMesh parse_obj(std::string data, const std::string& source);
 
 /// The first bytes of an OBJ or OFF file (core/io/text_file.h): text, without NUL bytes.
 void check_text_head(std::string_view head, size_t size);
@@ -19,9 +20,11 @@ void check_text_head(std::string_view head, size_t size);
 void check_stl_head(std::string_view head, size_t size);
 
 /// Parses OFF text (optionally with the 'OFF' keyword missing and '#' comments).
-CovarianceMesh parse_off(const std::string& data, const std::string& source);
+/// The text is taken over and freed once parsed, before the mesh is built (pass it moved).
+CovarianceMesh parse_off(std::string data, const std::string& source);
 
 /// Parses STL, ASCII or binary; triangle corners at identical positions are welded into one vertex.
-CovarianceMesh parse_stl(const std::string& data, const std::string& source);
+/// The data is taken over and freed once parsed, before the mesh is built (pass it moved).
+CovarianceMesh parse_stl(std::string data, const std::string& source);
 
 }  // namespace gps

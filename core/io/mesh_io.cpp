@@ -23,22 +23,17 @@ CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options) 
   const std::string ext = extension_of(path);
   if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".stl")
     throw Error(escaped(path) + ": unknown mesh format " + quoted_token(ext) + " (use .ply, .obj, .off or .stl)");
-  const std::string data = read_text_file(path, ext == ".ply"   ? HeadCheck(check_ply_head)
-                                                : ext == ".stl" ? check_stl_head
-                                                                : check_text_head);
-  CovarianceMesh mesh;
+  std::string data = read_text_file(path, ext == ".ply"   ? HeadCheck(check_ply_head)
+                                          : ext == ".stl" ? check_stl_head
+                                                          : check_text_head);
   bool has_covariances = false;
-  if (ext == ".ply") {
-    PlyContents ply = parse_ply(data, path);
-    has_covariances = ply.has_covariances;
-    mesh = std::move(ply.mesh);
-  } else if (ext == ".obj") {
-    mesh = parse_obj(data, path);
-  } else if (ext == ".off") {
-    mesh = parse_off(data, path);
-  } else {
-    mesh = parse_stl(data, path);
-  }
+  // Built in place: OpenMesh's meshes have no move, so an assignment would copy the whole mesh.
+  CovarianceMesh mesh = [&]() -> CovarianceMesh {
+    if (ext == ".ply") return parse_ply(std::move(data), path, has_covariances);
+    if (ext == ".obj") return parse_obj(std::move(data), path);
+    if (ext == ".off") return parse_off(std::move(data), path);
+    return parse_stl(std::move(data), path);
+  }();
   // Every command and the editor draw or measure a surface: Gaussians without faces have none.
   if (mesh.n_faces() == 0) throw Error(escaped(path) + ": the mesh has no faces");
   if (has_covariances) return mesh;

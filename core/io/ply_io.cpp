@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/mesh/error.h"
+#include "core/mesh/mesh_connectivity.h"
 #include "core/io/number_text.h"
 #include "core/io/quoted_text.h"
 #include "core/io/text_file.h"
@@ -161,7 +162,12 @@ private:
 
 }  // namespace
 
-PlyContents parse_ply(const std::string& data, const std::string& source) {
+namespace {
+
+// The mesh of PLY data, built in place; `release`, where given, is the string `data` views, freed
+// once parsed and before the mesh is built.
+CovarianceMesh parse_ply_mesh(const std::string& data, const std::string& source, bool& file_has_covariances,
+                              std::string* release) {
   const std::string shown_source = escaped(source);
   const auto fail = [&](const std::string& what) -> void { throw Error(shown_source + ": " + what); };
   if (data.empty()) fail("the file is empty");
@@ -251,7 +257,7 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
   BodyReader body(data, pos, *format, line, source);
   std::vector<Vec3> means;
   std::vector<Mat3> covariances;
-  std::vector<std::vector<int>> faces;
+  PolygonTopology faces;
   bool has_covariances = false;
   for (const Element& e : elements) {
     // Each record needs at least one byte per value (binary) or two characters (ASCII).
@@ -277,7 +283,7 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
       has_covariances = found == 6;
       // Arrays grow as records arrive (never sized from the header): memory follows what the file holds.
       means.reserve(std::min<size_t>(e.count, 1 << 16));
-      covariances.reserve(means.capacity());
+      if (has_covariances) covariances.reserve(means.capacity());  // else none: identity, made with the mesh
       std::vector<double> values(e.properties.size());
       for (size_t v = 0; v < e.count; ++v) {
         body.begin_record();
@@ -294,8 +300,8 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
         means.emplace_back(values[size_t(ix)], values[size_t(iy)], values[size_t(iz)]);
         if (const std::string why = position_problem(means[v]); !why.empty())
           fail("vertex " + std::to_string(v) + " " + why);
-        Mat3& m = covariances.emplace_back(Mat3::Identity());
         if (has_covariances) {
+          Mat3& m = covariances.emplace_back();
           double c[6];
           for (int k = 0; k < 6; ++k) c[k] = values[size_t(ic[k])];
           m << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
@@ -310,9 +316,8 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
             (e.properties[i].name == "vertex_indices" || e.properties[i].name == "vertex_index"))
           list = int(i);
       if (list < 0) fail("the face element has no vertex_indices list");
-      faces.reserve(std::min<size_t>(e.count, 1 << 16));
+      faces.offsets.reserve(std::min<size_t>(e.count, 1 << 16) + 1);
       for (size_t f = 0; f < e.count; ++f) {
-        std::vector<int>& face = faces.emplace_back();
         body.begin_record();
         for (size_t k = 0; k < e.properties.size(); ++k) {
           const Property& p = e.properties[k];
@@ -330,9 +335,10 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
             if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
               fail(body.where() + "face " + std::to_string(f) + " refers to vertex " +
                    BodyReader::format_number(index) + ", but there are " + std::to_string(vertex_count) + " vertices");
-            face.push_back(int(index));
+            faces.verts.push_back(int(index));
           }
         }
+        faces.offsets.push_back(int(faces.verts.size()));
         body.end_record();
       }
     } else {
@@ -348,10 +354,22 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
     }
   }
   body.check_end();
-  PlyContents out;
-  out.mesh = make_covariance_mesh(means, covariances, faces, shown_source);
+  file_has_covariances = has_covariances;
+  if (release) std::string().swap(*release);
+  return make_covariance_mesh(std::move(means), std::move(covariances), std::move(faces), shown_source);
+}
+
+}  // namespace
+
+PlyContents parse_ply(const std::string& data, const std::string& source) {
+  bool has_covariances = false;
+  PlyContents out{parse_ply_mesh(data, source, has_covariances, nullptr)};  // in place: a mesh has no move
   out.has_covariances = has_covariances;
   return out;
+}
+
+CovarianceMesh parse_ply(std::string data, const std::string& source, bool& has_covariances) {
+  return parse_ply_mesh(data, source, has_covariances, &data);
 }
 
 void check_ply_head(std::string_view head, size_t size) {

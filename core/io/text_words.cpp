@@ -21,6 +21,16 @@ std::vector<std::string_view> words_of(std::string_view line) {
   return words;
 }
 
+std::string_view next_word(std::string_view& line) {
+  size_t i = 0;
+  while (i < line.size() && is_space(line[i])) ++i;
+  size_t j = i;
+  while (j < line.size() && !is_space(line[j])) ++j;
+  const std::string_view word = line.substr(i, j - i);
+  line.remove_prefix(j);
+  return word;
+}
+
 void WordCursor::advance() {
   for (;;) {
     while (pos_ < text_.size() && is_space(text_[pos_])) line_ += text_[pos_++] == '\n';

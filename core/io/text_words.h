@@ -1,6 +1,7 @@
 #pragma once
 // The words of the text file formats (OBJ, OFF, ASCII STL, PLY): runs of characters between white
 // space, as the C locale's isspace separates them. One place for every reader's tokenizing.
+#include <algorithm>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -9,6 +10,35 @@ namespace gps {
 
 /// The whitespace-separated words of one line, as views into it.
 std::vector<std::string_view> words_of(std::string_view line);
+
+/// The first word of `line` (empty when there is none), which is then cut off `line`.
+std::string_view next_word(std::string_view& line);
+
+/// The lines of a text one at a time as views into it, split at '\n' as std::getline splits them,
+/// with their numbers from 1: no copy of a line, however long.
+class LineCursor {
+public:
+  explicit LineCursor(std::string_view text) : text_(text) { advance(); }
+  bool done() const { return begin_ >= text_.size(); }
+  std::string_view line() const { return line_; }
+  int number() const { return number_; }
+  void next() {
+    begin_ = end_ + 1;
+    advance();
+  }
+
+private:
+  void advance() {
+    ++number_;
+    if (done()) return;
+    end_ = std::min(text_.find('\n', begin_), text_.size());
+    line_ = text_.substr(begin_, end_ - begin_);
+  }
+  std::string_view text_;
+  size_t begin_ = 0, end_ = 0;
+  int number_ = 0;
+  std::string_view line_;
+};
 
 /// The words of a whole text one at a time with their line numbers, '#' comments skipped (OFF). No
 /// word list: memory stays that of the text, whatever a hostile file's lines hold.

@@ -3,6 +3,9 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <limits>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <algorithm>
 #include <sstream>
 
@@ -29,32 +32,55 @@ bool is_spd(const Mat3& c) {
 
 CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::vector<Mat3>& covariances,
                                     const std::vector<std::vector<int>>& faces, const std::string& source) {
-  if (means.size() != covariances.size())
-    throw Error(source + ": " + std::to_string(means.size()) + " vertices but " + std::to_string(covariances.size()) +
-                " covariances");
-  CovarianceMesh m;
-  m.covariances = covariances;
-  m.mesh.reserve(means.size(), 0, 0);  // edges and faces: add_faces, at their exact counts
-  for (const Vec3& p : means) m.mesh.add_vertex(to_point(p));
   PolygonTopology t;
-  t.n_vertices = int(means.size());
-  t.verts.reserve(faces.size() * 4);
-  std::vector<size_t> last_face(means.size(), size_t(-1));  // the last face that used each vertex: repeats in O(1)
-  for (size_t f = 0; f < faces.size(); ++f) {
-    const auto& face = faces[f];
-    const auto where = [&] { return source + ": face " + std::to_string(f); };
-    if (face.size() < 3) throw Error(where() + " has " + std::to_string(face.size()) + " vertices (at least 3 needed)");
-    for (int i : face) {
-      if (i < 0 || size_t(i) >= means.size())
-        throw Error(where() + " refers to vertex " + std::to_string(i) + ", but there are only " +
-                    std::to_string(means.size()) + " vertices");
-      if (last_face[size_t(i)] == f) throw Error(where() + " uses vertex " + std::to_string(i) + " twice");
-      last_face[size_t(i)] = f;
-      t.verts.push_back(i);
-    }
+  size_t n_corners = 0;
+  for (const auto& face : faces) n_corners += face.size();
+  t.offsets.reserve(faces.size() + 1);
+  t.verts.reserve(n_corners);
+  for (const auto& face : faces) {
+    t.verts.insert(t.verts.end(), face.begin(), face.end());
     t.offsets.push_back(int(t.verts.size()));
   }
+  return make_covariance_mesh(std::vector<Vec3>(means), std::vector<Mat3>(covariances), std::move(t), source);
+}
+
+CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
+                                    const std::string& source) {
+  if (means.size() != covariances.size() && !covariances.empty())
+    throw Error(source + ": " + std::to_string(means.size()) + " vertices but " + std::to_string(covariances.size()) +
+                " covariances");
+  t.n_vertices = int(means.size());
+  {
+    std::vector<size_t> last_face(means.size(), size_t(-1));  // the last face that used each vertex: repeats in O(1)
+    for (int f = 0; f < t.n_faces(); ++f) {
+      const auto where = [&] { return source + ": face " + std::to_string(f); };
+      if (t.face_size(f) < 3)
+        throw Error(where() + " has " + std::to_string(t.face_size(f)) + " vertices (at least 3 needed)");
+      for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
+        const int i = t.verts[size_t(k)];
+        if (i < 0 || size_t(i) >= means.size())
+          throw Error(where() + " refers to vertex " + std::to_string(i) + ", but there are only " +
+                      std::to_string(means.size()) + " vertices");
+        if (last_face[size_t(i)] == size_t(f)) throw Error(where() + " uses vertex " + std::to_string(i) + " twice");
+        last_face[size_t(i)] = size_t(f);
+      }
+    }
+  }
+  CovarianceMesh m;
+  m.covariances = std::move(covariances);
+  m.mesh.reserve(means.size(), 0, 0);  // edges and faces: add_faces, at their exact counts
+  for (const Vec3& p : means) m.mesh.add_vertex(to_point(p));
+  const size_t n_vertices = means.size();
+  std::vector<Vec3>().swap(means);
   add_faces(m.mesh, t, source);
+  t = {};
+#ifdef __GLIBC__
+  // The temporaries above may lie below the top of the heap, which free() does not hand back:
+  // their pages are returned before the covariances are made.
+  malloc_trim(0);
+#endif
+  // Identity covariances are made once the faces' temporary arrays are gone.
+  if (m.covariances.empty()) m.covariances.assign(n_vertices, Mat3::Identity());
   return m;
 }
 

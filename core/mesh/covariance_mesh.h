@@ -9,6 +9,8 @@
 
 namespace gps {
 
+struct PolygonTopology;  // core/mesh/mesh_connectivity.h
+
 struct MeshTraits : public OpenMesh::DefaultTraits {
   using Point = OpenMesh::Vec3d;
   using Normal = OpenMesh::Vec3d;
@@ -33,6 +35,11 @@ struct CovarianceMesh {
 /// Throws gps::Error naming `source` and the face if the topology is non-manifold or a face is degenerate.
 CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::vector<Mat3>& covariances,
                                     const std::vector<std::vector<int>>& faces, const std::string& source = "mesh");
+/// The same with the faces in compressed form, taking its arrays over: nothing is copied, so a
+/// reader's memory is that of the arrays it filled. Empty `covariances` stand for the identity at
+/// every vertex, made after the faces are built (a plain mesh's placeholders, not held meanwhile).
+CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& faces,
+                                    const std::string& source = "mesh");
 
 /// Largest position coordinate magnitude accepted: squares and products of positions (and their
 /// products with inverse covariances) must stay far from double overflow.

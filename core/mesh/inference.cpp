@@ -9,9 +9,9 @@ namespace gps {
 
 void infer_covariances(CovarianceMesh& m, double bias) {
   if (!(bias > 0)) throw usage_error("the inference bias must be positive, got " + std::to_string(bias));
-  std::vector<Mat3> precision(m.n_vertices(), Mat3::Zero());
   std::vector<Vec3> p;
-  for (const auto f : m.mesh.faces()) {
+  // The precision of face f's points, or false where the face is degenerate.
+  const auto face_precision = [&](PolyMesh::FaceHandle f, Mat3& inv) {
     p.clear();
     Vec3 centre = Vec3::Zero();
     for (const auto v : m.mesh.fv_range(f)) {
@@ -23,10 +23,21 @@ void infer_covariances(CovarianceMesh& m, double bias) {
     for (const Vec3& x : p) c += (x - centre) * (x - centre).transpose();
     c /= double(p.size());
     const double lambda_max = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues()(2);
-    if (!(lambda_max > 0))
-      throw Error("face " + std::to_string(f.idx()) + " is degenerate (all its vertices coincide)");
+    if (!(lambda_max > 0)) return false;
     c += bias * lambda_max * Mat3::Identity();
-    const Mat3 inv = Eigen::LLT<Mat3>(c).solve(Mat3::Identity());
+    inv = Eigen::LLT<Mat3>(c).solve(Mat3::Identity());
+    return true;
+  };
+  // Every face is checked before the covariances change, which then hold the summed precisions: no
+  // second array of a matrix per vertex, and the mesh is left as it was when a face is degenerate.
+  Mat3 inv;
+  for (const auto f : m.mesh.faces())
+    if (!face_precision(f, inv))
+      throw Error("face " + std::to_string(f.idx()) + " is degenerate (all its vertices coincide)");
+  std::vector<Mat3>& precision = m.covariances;
+  precision.assign(m.n_vertices(), Mat3::Zero());
+  for (const auto f : m.mesh.faces()) {
+    face_precision(f, inv);
     for (const auto v : m.mesh.fv_range(f)) precision[size_t(v.idx())] += inv;
   }
   // An isolated vertex has no faces to infer from: σ = half the mesh's mean edge length.
@@ -34,7 +45,7 @@ void infer_covariances(CovarianceMesh& m, double bias) {
   for (const auto e : m.mesh.edges()) total += m.mesh.calc_edge_length(e);
   const double sigma = m.mesh.n_edges() && total > 0 ? 0.5 * total / double(m.mesh.n_edges()) : 1.0;
   for (size_t i = 0; i < m.n_vertices(); ++i) {
-    const Eigen::LLT<Mat3> llt(precision[i]);
+    const Eigen::LLT<Mat3> llt(Mat3(precision[i]));
     if (llt.info() != Eigen::Success) {
       m.covariances[i] = sigma * sigma * Mat3::Identity();
       continue;

@@ -20,7 +20,11 @@ PolygonTopology topology_of(const PolyMesh& mesh) {
   return t;
 }
 
-MeshConnectivity connectivity_of(const PolygonTopology& t) {
+namespace {
+
+// The edges, their faces, each corner's edge and each vertex's valence; with `rows`, also the
+// vertices' edge and face rows (add_faces needs only the former).
+MeshConnectivity connectivity_of(const PolygonTopology& t, bool rows) {
   MeshConnectivity c;
   const size_t n_corners = t.verts.size();
   // Half-edges keyed by (min, max) vertex pair, sorted to pair them into edges: a radix sort of two
@@ -48,6 +52,11 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
   by_high = {};
   c.face_edges.assign(n_corners, -1);
   const auto same_edge = [](const HalfEdge& x, const HalfEdge& y) { return x.low == y.low && x.high == y.high; };
+  size_t n_edges = 0;  // counted first: the edge arrays at their exact sizes
+  for (size_t i = 0; i < halves.size(); ++n_edges)
+    i += i + 1 < halves.size() && same_edge(halves[i + 1], halves[i]) ? 2 : 1;
+  c.edge_verts.reserve(2 * n_edges);
+  c.edge_faces.reserve(2 * n_edges);
   for (size_t i = 0; i < halves.size();) {
     const int e = c.n_edges();
     c.edge_verts.push_back(halves[i].low);
@@ -63,6 +72,7 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
       i += 1;
     }
   }
+  halves = {};
   // Compressed rows per vertex, each in the order its entries come (edges in edge order, faces in
   // face order): a count, a prefix sum, a fill.
   const auto prefix = [&](std::vector<int>& offsets) {
@@ -71,6 +81,10 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
   };
   c.vertex_edge_offsets.assign(size_t(t.n_vertices) + 1, 0);
   for (const int v : c.edge_verts) ++c.vertex_edge_offsets[size_t(v) + 1];
+  if (!rows) {
+    prefix(c.vertex_edge_offsets);
+    return c;
+  }
   std::vector<int> next = prefix(c.vertex_edge_offsets);
   c.vertex_edges.resize(c.edge_verts.size());
   for (size_t i = 0; i < c.edge_verts.size(); ++i) c.vertex_edges[size_t(next[size_t(c.edge_verts[i])]++)] = int(i / 2);
@@ -87,6 +101,10 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
     }
   return c;
 }
+
+}  // namespace
+
+MeshConnectivity connectivity_of(const PolygonTopology& t) { return connectivity_of(t, true); }
 
 VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
   const int n_faces = c.n_vertex_faces(v);
@@ -108,7 +126,7 @@ VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
 }
 
 void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source) {
-  add_faces(mesh, t, connectivity_of(t), source);
+  add_faces(mesh, t, connectivity_of(t, false), source);
 }
 
 void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source) {
