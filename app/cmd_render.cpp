@@ -16,6 +16,7 @@
 #include "render/image/image_io.h"
 #include "render/image/matcap.h"
 #include "render/image/matcap_file.h"
+#include "render/image/non_finite_pixels.h"
 #include "render/comparison/reference_triangles.h"
 #include "render/pipeline/surface_renderer.h"
 
@@ -105,10 +106,15 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   o.static_triangles = a.reference >= 0 || a.exact;
   RenderTarget target(width, height);
   renderer.draw(target, camera, o);
+  // A frame the float evaluation could not represent is an error, not an image.
+  const Image position = target.read(1), normal = target.read(2);
+  if (const long long bad = count_non_finite_pixels(position, normal); bad > 0)
+    throw Error(a.input + ": the GPU's evaluation is not finite at " + std::to_string(bad) +
+                " pixels; nothing written");
   Image color = target.read(0);
   write_image(a.output, color);
-  if (!position_aov.empty()) write_image(position_aov, target.read(1), kPositionChannels);
-  if (!normal_aov.empty()) write_image(normal_aov, target.read(2), kNormalChannels);
+  if (!position_aov.empty()) write_image(position_aov, position, kPositionChannels);
+  if (!normal_aov.empty()) write_image(normal_aov, normal, kNormalChannels);
   std::ostringstream tessellation;
   if (a.reference >= 0)
     tessellation << "reference level " << a.reference;

@@ -20,6 +20,7 @@
 #include "bench/edit_scene.h"
 #include "bench/gl_bench_cases.h"
 #include "bench/run_benchmarks.h"
+#include "render/gl/gl_object.h"
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"
 
@@ -102,8 +103,7 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   frame();
   glFinish();
   // The GPU's own time of each frame (GL_TIME_ELAPSED): wall time beyond it is waiting and the CPU.
-  unsigned query = 0;
-  glCreateQueries(GL_TIME_ELAPSED, 1, &query);
+  const gps::GlQuery query(GL_TIME_ELAPSED);
   double gpu_ns = 0;
   const int captures = renderer.surface_cache().captures(), refreshes = renderer.surface_cache().refreshes();
   for (auto _ : state) {
@@ -117,7 +117,6 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
     glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
     gpu_ns += double(ns);
   }
-  glDeleteQueries(1, &query);
   const gps::SurfaceCache& cache = renderer.surface_cache();
   state.counters["captures"] =
       double(cache.captures() - captures) / double(std::max<benchmark::IterationCount>(1, state.iterations()));

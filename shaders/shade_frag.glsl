@@ -9,6 +9,9 @@ uniform mat4 u_view;
 uniform sampler2D u_matcap;
 uniform vec4 u_wire_color;  // alpha 0: no tessellation wireframe
 uniform int u_flag_back_faces;  // crack checks: back faces in pure magenta
+// The drawn points' frame (render/pipeline/normalised_frame.h): world = centre + unit · point.
+uniform vec3 u_frame_centre;
+uniform float u_frame_unit;
 
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out vec4 out_position;
@@ -33,6 +36,6 @@ void main() {
   }
   out_color = vec4(mix(color, u_wire_color.rgb, wire), 1.0);
   if (u_flag_back_faces != 0 && !gl_FrontFacing) out_color = vec4(1.0, 0.0, 1.0, 1.0);
-  out_position = vec4(v_position, 1.0);
+  out_position = vec4(u_frame_centre + u_frame_unit * v_position, 1.0);
   out_normal = vec4(n, 1.0 + float(v_kind));  // w: 1 static mesh, 2 regular node, 3 terminal node
 }

@@ -21,6 +21,7 @@
 #include "ui/ellipsoid_scope.h"
 #include "ui/help_overlay.h"
 #include "ui/status_bar.h"
+#include "render/image/non_finite_pixels.h"
 #include "ui/view_panel.h"
 
 namespace gps {
@@ -166,6 +167,17 @@ void EditorApp::render_and_present() {
       draw.ellipsoid_vertices = &shown_ellipsoids_;
     }
     renderer_->draw(*target_, camera_, draw);
+    // Once the surface has settled after an edit or a new mesh (a read-back every frame of a drag
+    // would cost too much): a frame the float evaluation could not represent is said, not just shown.
+    if (edited) {
+      check_finite_ = true;
+    } else if (check_finite_) {
+      check_finite_ = false;
+      if (const long long bad = count_non_finite_pixels(target_->read(1), target_->read(2)); bad > 0)
+        set_status(
+            document_.display_name() + ": the GPU's evaluation is not finite at " + std::to_string(bad) + " pixels",
+            true);
+    }
     window_.blit(*target_);
   }
   window_.bind_default_framebuffer();

@@ -129,6 +129,7 @@ private:
   bool prompt_unsaved_ = false, after_save_perform_ = false, quit_ = false;
   std::string screenshot_request_;
   std::string status_;
+  bool check_finite_ = true;  // the next frame without an edit reads its AOVs back for non-finite values
   bool status_error_ = false;
   std::string last_title_;
   int swap_interval_ = -1;

@@ -15,13 +15,35 @@ glm::vec3 Camera::eye() const {
 
 glm::mat4 Camera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 1, 0)); }
 
+// The near plane follows the distance at any scale (a fixed floor would clip a tiny mesh).
 glm::mat4 Camera::projection(float aspect) const {
-  const float near_plane = std::max(1e-4f, distance * 0.01f), far_plane = distance * 100.0f;
+  const float near_plane = distance > 0.0f ? distance * 0.01f : 1e-4f, far_plane = distance * 100.0f;
   if (orthographic) {
     const float half = 0.5f * view_height(*this);
     return glm::ortho(-half * aspect, half * aspect, -half, half, near_plane, far_plane);
   }
   return glm::perspective(glm::radians(fov_degrees), aspect, near_plane, far_plane);
+}
+
+glm::dmat4 Camera::view_double() const {
+  const double yaw = glm::radians(double(yaw_degrees)), pitch = glm::radians(double(pitch_degrees));
+  const glm::dvec3 centre(target);
+  const glm::dvec3 eye_d = centre + double(distance) * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                                                  std::cos(pitch) * std::cos(yaw));
+  return glm::lookAt(eye_d, centre, glm::dvec3(0, 1, 0));
+}
+
+glm::dmat4 Camera::view_projection_double(float aspect) const {
+  const double d = double(distance);
+  const double near_plane = d > 0.0 ? d * 0.01 : 1e-4, far_plane = d * 100.0;
+  glm::dmat4 projection_d;
+  if (orthographic) {
+    const double half = d * std::tan(glm::radians(double(fov_degrees)) * 0.5);
+    projection_d = glm::ortho(-half * aspect, half * aspect, -half, half, near_plane, far_plane);
+  } else {
+    projection_d = glm::perspective(glm::radians(double(fov_degrees)), double(aspect), near_plane, far_plane);
+  }
+  return projection_d * view_double();
 }
 
 float view_height(const Camera& camera) {

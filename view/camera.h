@@ -19,6 +19,10 @@ struct Camera {
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
   glm::mat4 view_projection(float aspect) const { return projection(aspect) * view(); }
+  /// view() and view_projection() in double, for combining with a model matrix before the cast to
+  /// float (far from the origin, a float eye loses the view's direction).
+  glm::dmat4 view_double() const;
+  glm::dmat4 view_projection_double(float aspect) const;
 };
 
 /// The height of the view at the target's depth (world units).

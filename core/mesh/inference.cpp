@@ -45,7 +45,7 @@ void infer_covariances(CovarianceMesh& m, double bias) {
   for (const auto e : m.mesh.edges()) total += m.mesh.calc_edge_length(e);
   const double sigma = m.mesh.n_edges() && total > 0 ? 0.5 * total / double(m.mesh.n_edges()) : 1.0;
   for (size_t i = 0; i < m.n_vertices(); ++i) {
-    const Eigen::LLT<Mat3> llt(Mat3(precision[i]));
+    const Eigen::LLT<Mat3> llt{Mat3(precision[i])};
     if (llt.info() != Eigen::Success) {
       m.covariances[i] = sigma * sigma * Mat3::Identity();
       continue;

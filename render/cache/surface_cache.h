@@ -42,6 +42,7 @@
 #include "render/cache/stored_vertex_evaluation.h"
 #include "render/cache/stored_vertex_weld.h"
 #include "render/cache/surface_blocks.h"
+#include "render/pipeline/normalised_frame.h"
 #include "render/gl/gl_object.h"
 
 namespace gps {
@@ -146,8 +147,11 @@ public:
 
   /// The stored triangles read back, vertices with bit-identical position and normal welded (shared
   /// patch edges are bit-exact): the benchmark's static-buffer floor for exactly these triangles.
-  /// Their captured copies, brought up to date first (copy_back_evaluated()).
+  /// Their captured copies, brought up to date first (copy_back_evaluated()). Positions in world
+  /// coordinates: the stored ones lie in the frame of set_frame().
   TriangleMesh stored_triangles();
+  /// The frame the captured positions lie in (render/pipeline/normalised_frame.h).
+  void set_frame(const NormalisedFrame& frame) { frame_ = frame; }
   /// The distinct vertices a cached frame fetches (read back): where welded, the distinct indices;
   /// else three per triangle.
   long long distinct_vertices() const;
@@ -207,6 +211,7 @@ public:
   long long triangles() const { return blocks_.total(); }
 
 private:
+  NormalisedFrame frame_;
   /// Where the weld waits for a still frame (llvmpipe), an edit evaluates the welded vertices again
   /// instead of capturing its blocks again only from this uniform level on: below, its three compute
   /// passes cost more than the capture.

@@ -47,7 +47,8 @@ TriangleMesh SurfaceCache::stored_triangles() {
     std::memcpy(bits.data(), f, sizeof(bits));
     const auto [it, added] = index.emplace(bits, int(mesh.positions.size()));
     if (added) {
-      mesh.positions.emplace_back(f[0], f[1], f[2]);
+      const glm::dvec3 world = frame_.to_world(glm::dvec3(f[0], f[1], f[2]));
+      mesh.positions.emplace_back(world.x, world.y, world.z);
       // The stored normal is the normal times 2^kind (shaders/cache_vert.glsl).
       const Vec3 stored(f[3], f[4], f[5]);
       mesh.normals.push_back(stored * std::exp2(-std::round(std::log2(stored.norm()))));

@@ -54,6 +54,9 @@ void ShaderProgram::set(const char* name, float value) const {
 void ShaderProgram::set(const char* name, const glm::vec2& v) const {
   glProgramUniform2fv(program_, glGetUniformLocation(program_, name), 1, glm::value_ptr(v));
 }
+void ShaderProgram::set(const char* name, const glm::vec3& v) const {
+  glProgramUniform3fv(program_, glGetUniformLocation(program_, name), 1, glm::value_ptr(v));
+}
 void ShaderProgram::set(const char* name, const glm::vec4& v) const {
   glProgramUniform4fv(program_, glGetUniformLocation(program_, name), 1, glm::value_ptr(v));
 }

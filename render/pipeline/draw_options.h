@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "view/camera.h"
+#include "render/pipeline/normalised_frame.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {
@@ -49,7 +50,11 @@ inline float uniform_level(const DrawOptions& o) { return std::clamp(o.level, 1.
 void set_level_uniforms(const ShaderProgram& p, const glm::mat4& view_projection, glm::vec2 viewport,
                         const DrawOptions& o);
 /// Camera, viewport, levels and shading of a frame, for the patch, cached and static-triangle programs.
+/// The points drawn lie in `frame` (the identity for world-space data): the view-projection is combined
+/// with its map in double, and the position AOV is written in world coordinates.
 void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const DrawOptions& o, float aspect, int width,
-                        int height);
+                        int height, const NormalisedFrame& frame = {});
+/// The camera's view-projection of points in `frame`, combined in double.
+glm::mat4 frame_view_projection(const Camera& camera, float aspect, const NormalisedFrame& frame);
 
 }  // namespace gps

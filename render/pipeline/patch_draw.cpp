@@ -111,7 +111,7 @@ void PatchDraw::draw_batches(const ShaderProgram& program, const DrawOptions& o,
 long long PatchDraw::count_triangles(PatchShape shape, const Camera& camera, const DrawOptions& o, int width,
                                      int height, int n_total, int first_patch, int n_patches) const {
   const ShaderProgram& feedback = program(shape, PatchOutput::feedback);
-  set_frame_uniforms(feedback, camera, o, float(width) / float(height), width, height);
+  set_frame_uniforms(feedback, camera, o, float(width) / float(height), width, height, frame_);
   feedback.use();
   const GlQuery query(GL_PRIMITIVES_GENERATED);
   {
@@ -148,6 +148,10 @@ std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, con
   }
   glGetNamedBufferSubData(buffer, 0, GLsizeiptr(out.size() * sizeof(TessellatedVertex)), out.data());
   check_gl_errors("capturing tessellated vertices");
+  for (TessellatedVertex& t : out) {
+    const glm::dvec3 world = frame_.to_world(glm::dvec3(t.position[0], t.position[1], t.position[2]));
+    for (int k = 0; k < 3; ++k) t.position[k] = float(world[k]);
+  }
   return out;
 }
 

@@ -61,10 +61,15 @@ public:
   long long count_triangles(PatchShape shape, const Camera& camera, const DrawOptions& o, int width, int height,
                             int n_total, int first_patch = 0, int n_patches = -1) const;
   /// The vertices the tessellator generates for `o` in a width × height viewport (no
-  /// rasterisation) of those patches.
+  /// rasterisation) of those patches, positions in world coordinates.
   std::vector<TessellatedVertex> capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o,
                                                   int width, int height, int n_total, int first_patch,
                                                   int n_patches) const;
+
+  /// The frame the plan points lie in (SurfaceRenderer::set_mesh); count_triangles() and
+  /// capture_vertices() draw in it.
+  void set_frame(const NormalisedFrame& frame) { frame_ = frame; }
+  const NormalisedFrame& frame() const { return frame_; }
 
   void set_collect_statistics(bool collect);
   /// The counts of the newest draw whose queries finished (triangles, vertices; -1 vertices without
@@ -78,6 +83,7 @@ private:
   ShaderProgram quad_[4], triangle_[5];  // by PatchOutput (quads: shaded, feedback, capture, shaded_capture)
   GlVertexArray empty_vao_;
   std::unique_ptr<QueryRing> statistics_;  // set while collecting statistics
+  NormalisedFrame frame_;
 };
 
 }  // namespace gps

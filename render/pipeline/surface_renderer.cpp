@@ -28,7 +28,7 @@ const SurfaceTables& SurfaceRenderer::tables() const {
   return surface_ ? surface_->tables() : none;
 }
 
-void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surface) {
+void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surface, const NormalisedFrame& frame) {
   // Refused before anything changes: the renderer keeps drawing the previous mesh.
   PlanBuffers::check_fits(surface.tables(), int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_);
   surface_ = std::make_unique<const PlannedSurface>(std::move(surface));
@@ -37,24 +37,30 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surfac
   half_size_patches_ = 0;
   for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
   buffers_.upload_tables(surface_->tables());
-  buffers_.upload_gaussians(mesh);
+  frame_ = frame;
+  patches_.set_frame(frame_);
+  cache_.set_frame(frame_);
+  framed_ = frame_.to_frame(mesh);
+  buffers_.upload_gaussians(framed_);
   ellipsoids_.upload(mesh, nullptr);
   cage_.set_mesh(mesh);
-  cache_.set_cage(mesh);
+  cache_.set_cage(framed_);  // projected with the frame's view-projection
   run_compute(nullptr);
 }
 
 void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
-  cache_.update_cage(mesh, changed);
+  // The frame stays that of set_mesh, so that the vertices not uploaded again still fit.
+  frame_.to_frame(mesh, changed, framed_);
+  cache_.update_cage(framed_, changed);
   if (update_everything(changed.size(),
                         size_t(n_base_))) {  // most of the mesh (select all, drag): whole buffers, one call each
-    buffers_.upload_gaussians(mesh);
+    buffers_.upload_gaussians(framed_);
     ellipsoids_.upload(mesh, nullptr);
     cage_.upload_positions(mesh);
     run_compute(nullptr, true);
     return;
   }
-  buffers_.update_gaussians(mesh, changed);
+  buffers_.update_gaussians(framed_, changed);
   cage_.update_positions(mesh, changed);
   ellipsoids_.upload(mesh, &changed);
   run_compute(&changed);
@@ -161,7 +167,8 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
                                                                             : cached_)
                                      : !o.static_triangles ? patches_.frame_program(shape(), o)
                                                            : static_triangles_.program(o.wireframe);
-      set_frame_uniforms(program, camera, o, aspect, target.width(), target.height());
+      set_frame_uniforms(program, camera, o, aspect, target.width(), target.height(),
+                         o.static_triangles ? NormalisedFrame{} : frame_);
       program.use();
       if (o.static_triangles)
         static_triangles_.draw();
@@ -195,7 +202,7 @@ SurfaceCache::Key SurfaceRenderer::cache_key(const DrawOptions& o) const {
 // The storage buffers bound; the target not yet (none of this draws).
 bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, float aspect, int width, int height) {
   const SurfaceCache::Key key = cache_key(o);
-  const glm::mat4 view_projection = camera.view_projection(aspect);
+  const glm::mat4 view_projection = frame_view_projection(camera, aspect, frame_);
   const glm::vec2 viewport{float(width), float(height)};
   if (cache_.matches(key, view_projection, viewport)) {
     cache_.settle();
@@ -205,7 +212,7 @@ bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, 
   if (!cache_.can_refresh_to(key, view_projection, viewport)) return false;
   const ShaderProgram& capture = patches_.program(shape(), PatchOutput::capture);
   capture.use();
-  set_frame_uniforms(capture, camera, o, aspect, width, height);
+  set_frame_uniforms(capture, camera, o, aspect, width, height, frame_);
   capture.set("u_view_projection", cache_.captured_view_projection());
   capture.set("u_viewport", cache_.captured_viewport());
   const auto draw_patches = [&](int first, int count) { patches_.draw(capture, o, n_patches(), first, count); };
@@ -228,7 +235,7 @@ bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, 
 SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera, const DrawOptions& o, float aspect,
                                                            int width, int height) {
   const SurfaceCache::Key key = cache_key(o);
-  const glm::mat4 view_projection = camera.view_projection(aspect);
+  const glm::mat4 view_projection = frame_view_projection(camera, aspect, frame_);
   const glm::vec2 viewport{float(width), float(height)};
   // Buffer size: uniform level L generates about 2·L² triangles per quad patch, 2·⌈L/2⌉² per
   // half-size one (shaders/patch_tesc.glsl), L² per triangle patch; adaptive levels as many as last
@@ -251,7 +258,7 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
   const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
   const ShaderProgram& program =
       patches_.program(shape(), triangle_wire ? PatchOutput::capture : PatchOutput::shaded_capture);
-  set_frame_uniforms(program, camera, o, aspect, width, height);
+  set_frame_uniforms(program, camera, o, aspect, width, height, frame_);
   program.use();
   const auto draw = [&](int first, int count) { patches_.draw(program, o, n_patches(), first, count); };
   if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire))

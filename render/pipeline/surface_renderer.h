@@ -7,6 +7,7 @@
 // (render/overlays/cage_lines.h); static triangles as the benchmark floor (render/comparison/static_triangles.h).
 #include <glm/glm.hpp>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
@@ -43,7 +44,12 @@ public:
   /// New topology: uploads the tables of `surface` (built by core for this mesh; the renderer keeps
   /// it for its tables and rows_reading), then a full compute pass. Throws gps::Error, before
   /// anything changes, where the tables exceed the device's storage block size.
-  void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface);
+  void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface) {
+    set_mesh(mesh, std::move(surface), NormalisedFrame::of(mesh));
+  }
+  /// The same, evaluated in `frame` instead of the mesh's own (a rebuild that must match edits made
+  /// in an earlier frame).
+  void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface, const NormalisedFrame& frame);
   /// The same with the surface core plans under `options` (Loop for triangles only, else Catmull-Clark).
   void set_mesh(const CovarianceMesh& mesh, const PlanOptions& options) {
     set_mesh(mesh, PlannedSurface(mesh, options));
@@ -82,7 +88,10 @@ public:
   DrawStatistics last_statistics();
 
   const SurfaceTables& tables() const;
-  /// The plan points as the compute passes left them (12 floats each: q in three vec4).
+  /// The frame the GPU evaluates the mesh in, fixed by set_mesh (render/pipeline/normalised_frame.h).
+  const NormalisedFrame& frame() const { return frame_; }
+  /// The plan points as the compute passes left them (12 floats each: q in three vec4), of the mesh
+  /// in frame() (frame().to_frame(mesh)).
   std::vector<float> read_points() const { return buffers_.read_points(tables().stencils.n_points()); }
   /// GPU memory held by the pipeline's buffers, in bytes.
   size_t buffer_bytes() const { return buffers_.bytes(); }
@@ -120,6 +129,8 @@ private:
   DualStencilPass compute_;
   CornerLimitPass corners_;
   PatchDraw patches_;
+  NormalisedFrame frame_;
+  CovarianceMesh framed_;  // the mesh in frame_, as uploaded
   StaticTriangles static_triangles_;
   CageLines cage_;
   EllipsoidOverlay ellipsoids_;

@@ -36,7 +36,7 @@ TEST_F(GpuTest, EditsOfAnySizeEqualARebuild) {
       }
       renderer.update_vertices(mesh, changed);
       SurfaceRenderer rebuilt;
-      rebuilt.set_mesh(mesh);
+      rebuilt.set_mesh(mesh, PlannedSurface(mesh, PlanOptions{}), renderer.frame());  // the edits' frame
       EXPECT_EQ(renderer.read_points(), rebuilt.read_points()) << name << ", " << changed.size() << " vertices";
       const auto edited = renderer.capture_vertices(Camera{}, o, 512, 512),
                  fresh = rebuilt.capture_vertices(Camera{}, o, 512, 512);

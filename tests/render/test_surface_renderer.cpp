@@ -84,7 +84,8 @@ TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
     const CovarianceMesh mesh = make_sample(name);
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh);
-    const test::PlannedMesh cpu(mesh, PlanOptions{});
+    // The GPU's points are those of the mesh in the renderer's frame.
+    const test::PlannedMesh cpu(renderer.frame().to_frame(mesh), PlanOptions{});
     expect_points_match(renderer.read_points(), cpu.points, name);
   }
 }
@@ -408,13 +409,17 @@ TEST_F(GpuTest, ComputePassesSplitIntoSeveralDispatches) {
       mesh, PlanOptions{Scheme::catmull_clark, 5, LoopBeta::loop, false});  // the thesis plans of depth 5: many rows
   const int n_rows = renderer.tables().stencils.n_rows();
   ASSERT_GT(n_rows, 20 * 64 * 64);
-  expect_points_match(renderer.read_points(), apply_stencils(renderer.tables().stencils, base_points(mesh)), "rebuild");
+  expect_points_match(renderer.read_points(),
+                      apply_stencils(renderer.tables().stencils, base_points(renderer.frame().to_frame(mesh))),
+                      "rebuild");
   // An edit (the listed-rows path) splits the same way: 64 rows a dispatch.
   DeviceLimitsForTests::lower(renderer, 1, 0);
   CovarianceMesh edited = mesh;
   edited.set_mean(0, mesh.mean(0) + Vec3(0.05, 0.0, 0.0));
   renderer.update_vertices(edited, {0});
-  expect_points_match(renderer.read_points(), apply_stencils(renderer.tables().stencils, base_points(edited)), "edit");
+  expect_points_match(renderer.read_points(),
+                      apply_stencils(renderer.tables().stencils, base_points(renderer.frame().to_frame(edited))),
+                      "edit");
 }
 
 // A mesh whose plan points exceed the device's largest storage block is refused before any upload,
