@@ -13,18 +13,12 @@
 #include "core/mesh/inference.h"
 #include "core/io/mesh_io.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/error_of.h"
 
 namespace gps {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(accepted)";
-}
+using test::error_of;
 
 TEST(MeshImport, ObjWithSlashesAndNegativeIndices) {
   const auto m = parse_obj("# square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1 -1/1\n", "a.obj");

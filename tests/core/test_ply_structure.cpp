@@ -11,18 +11,12 @@
 #include "core/mesh/error.h"
 #include "core/mesh/samples.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/error_of.h"
 
 namespace gps {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(accepted)";
-}
+using test::error_of;
 
 const std::string kVertexElement =
     "element vertex 3\nproperty double x\nproperty double y\nproperty double z\nproperty double cxx\n"

@@ -11,18 +11,12 @@
 #include "core/io/ply_io.h"
 #include "core/mesh/error.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/error_of.h"
 
 namespace gps {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(accepted)";
-}
+using test::error_of;
 
 // A message that a terminal shows as one harmless line: no control byte, nothing that is not UTF-8.
 void expect_one_harmless_line(const std::string& message, size_t max_size = 300) {

@@ -14,18 +14,12 @@
 #include "core/io/mesh_io.h"
 #include "core/mesh/error.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/error_of.h"
 
 namespace gps {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::error_of;
 
 // The process's peak resident memory in MiB (each test runs in its own process under ctest).
 double peak_mib() {
