@@ -165,6 +165,17 @@ TEST_F(EditorTest, AMalformedFileIsReportedAndTheMeshStays) {
   EXPECT_GT(red, 50) << "no error shown in the status bar";
 }
 
+// A closed pillow of two faces (which Loop's refinement cannot keep manifold) dropped on the window:
+// refused at load, named, and the editor keeps its mesh and runs on.
+TEST_F(EditorTest, AMeshNoSchemeCanRefineIsRefusedAndTheMeshStays) {
+  const std::string pillow = dir_.write("pillow.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n");
+  const auto r = play(R"({"type": "drop", "paths": [")" + pillow + R"("]}, {"type": "wait", "frames": 2})",
+                      "--save " + dir_.file("kept.ply"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("pillow.obj: faces 0 and 1 share all their edges"), std::string::npos) << r.output;
+  EXPECT_EQ(read_text_file(dir_.file("kept.ply")), read_text_file(dir_.file("original.ply")));
+}
+
 TEST_F(EditorTest, OpeningAnotherMeshWithUnsavedChangesAsksFirst) {
   write_mesh(dir_.file("other.ply"), make_sample("torus"));
   const DragPlan plan = plan_drag(original_, 1.5);
