@@ -74,10 +74,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   }
   renderer.set_matcap(matcap);
   DrawOptions o;
-  if (a.level > 0)
-    o.level = float(a.level), o.pixels = 0;
-  else
-    o.pixels = a.pixels > 0 ? a.pixels : default_adaptive_pixels(width, height);
+  set_render_tessellation(o, a.level, a.pixels, width, height);
   o.mode = a.mode == "normals" ? ShadingMode::normals : a.mode == "flat" ? ShadingMode::flat : ShadingMode::matcap;
   o.mesh_lines = a.mesh_lines;
   o.wireframe = a.wireframe;
@@ -85,13 +82,8 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   o.ellipsoids = a.ellipsoids;
   o.sigma_scale = a.sigma;
   o.background = {bg[0], bg[1], bg[2]};
-  Camera camera = frame_mesh(mesh);
-  if (!a.camera.empty()) {
-    const auto c = parse_floats(a.camera, "--camera", 2, 3);
-    const float distance = camera.distance;
-    camera = frame_mesh(mesh, c[0], c[1]);
-    camera.distance = c.size() > 2 ? c[2] : distance;
-  }
+  const Camera camera =
+      frame_mesh(mesh, a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3));
   if (a.reference >= 1 && a.reference <= 6 &&
       scheme_for(topology_of(mesh.mesh), a.plans.options()) == Scheme::catmull_clark) {
     // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level

@@ -62,10 +62,7 @@ FloatImage render(const CovarianceMesh& mesh, int width, int height, int level, 
   if (background.size() != 3) throw py::value_error("background: expected (r, g, b)");
   const PlanOptions plans = plan_options_named(scheme, loop_beta);
   DrawOptions o;
-  if (level > 0)
-    o.level = float(level), o.pixels = 0;
-  else
-    o.pixels = pixels > 0 ? pixels : default_adaptive_pixels(width, height);
+  set_render_tessellation(o, level, pixels, width, height);
   o.mode = shading_named(mode);
   o.mesh_lines = mesh_lines;
   o.wireframe = wireframe;
@@ -73,12 +70,7 @@ FloatImage render(const CovarianceMesh& mesh, int width, int height, int level, 
   o.sigma_scale = sigma;
   o.background = {background[0], background[1], background[2]};
   const Image matcap_image = load_matcap(matcap);
-  Camera view = frame_mesh(mesh);
-  if (camera) {
-    const float distance = view.distance;
-    view = frame_mesh(mesh, (*camera)[0], (*camera)[1]);
-    view.distance = camera->size() > 2 ? (*camera)[2] : distance;
-  }
+  const Camera view = frame_mesh(mesh, camera.value_or(std::vector<float>{}));
   const ContextKind kind = context_named(context);
   Image color;
   {

@@ -67,4 +67,11 @@ Camera frame_mesh(const CovarianceMesh& mesh, float yaw_degrees, float pitch_deg
   return frame_box(lo, hi, yaw_degrees, pitch_degrees);
 }
 
+Camera frame_mesh(const CovarianceMesh& mesh, const std::vector<float>& yaw_pitch_distance) {
+  if (yaw_pitch_distance.size() < 2) return frame_mesh(mesh);
+  Camera camera = frame_mesh(mesh, yaw_pitch_distance[0], yaw_pitch_distance[1]);
+  if (yaw_pitch_distance.size() > 2) camera.distance = yaw_pitch_distance[2];
+  return camera;
+}
+
 }  // namespace gps

@@ -1,6 +1,7 @@
 #pragma once
 // An orbit camera: yaw and pitch around a target at a distance, perspective projection.
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "core/mesh/covariance_mesh.h"
 #include "core/mesh/linalg.h"
@@ -33,5 +34,8 @@ Camera frame_box(const Vec3& lo, const Vec3& hi, float yaw_degrees = 30.0f, floa
 
 /// frame_box() of the bounding box of a mesh's means.
 Camera frame_mesh(const CovarianceMesh& mesh, float yaw_degrees = 30.0f, float pitch_degrees = 20.0f);
+/// The camera a render asks for: {} frames the mesh from the default angles; {yaw, pitch} in degrees
+/// frames it from there; a third value replaces the framed distance.
+Camera frame_mesh(const CovarianceMesh& mesh, const std::vector<float>& yaw_pitch_distance);
 
 }  // namespace gps

@@ -43,6 +43,13 @@ inline float default_adaptive_pixels(int width, int height) {
   return std::max(4.0f, 0.01f * float(std::min(width, height)));
 }
 
+/// A render's tessellation: uniform `level` where it is above 0, else adaptive with target edge length
+/// `pixels` (default_adaptive_pixels() of the image where 0).
+inline void set_render_tessellation(DrawOptions& o, int level, float pixels, int width, int height) {
+  o.level = level > 0 ? float(level) : o.level;
+  o.pixels = level > 0 ? 0.0f : pixels > 0 ? pixels : default_adaptive_pixels(width, height);
+}
+
 /// The uniform level of `o`, clamped to 1..64.
 inline float uniform_level(const DrawOptions& o) { return std::clamp(o.level, 1.0f, 64.0f); }
 
