@@ -1,0 +1,118 @@
+#include "core/modelling/mesh_arrays.h"
+
+#include <algorithm>
+
+#include "core/mesh/error.h"
+#include "core/mesh/mesh_connectivity.h"
+
+namespace gps {
+
+int MeshArrays::add_vertex(const Gaussian& g) {
+  means.push_back(g.mean);
+  covariances.push_back(g.covariance);
+  return int(means.size()) - 1;
+}
+
+MeshArrays arrays_of(const CovarianceMesh& m) {
+  MeshArrays a;
+  a.means.reserve(m.n_vertices());
+  for (size_t i = 0; i < m.n_vertices(); ++i) a.means.push_back(m.mean(i));
+  a.covariances = m.covariances;
+  const PolygonTopology t = topology_of(m.mesh);
+  a.faces.resize(size_t(t.n_faces()));
+  for (int f = 0; f < t.n_faces(); ++f)
+    a.faces[size_t(f)].assign(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
+  return a;
+}
+
+CovarianceMesh build_mesh(const MeshArrays& a) {
+  if (a.faces.empty()) throw Error("the result would have no faces");
+  try {
+    CovarianceMesh m = make_covariance_mesh(a.means, a.covariances, a.faces, "the result would not be a valid mesh");
+    validate_gaussians(m, "the result would not be a valid mesh");
+    return m;
+  } catch (const Error& e) {
+    throw Error(e.what());
+  }
+}
+
+std::vector<int> drop_unused_vertices(MeshArrays& a) {
+  std::vector<int> map(a.means.size(), -1);
+  for (const auto& face : a.faces)
+    for (int v : face) map[size_t(v)] = 0;
+  int next = 0;
+  for (size_t v = 0; v < map.size(); ++v)
+    if (map[v] == 0) {
+      a.means[size_t(next)] = a.means[v];
+      a.covariances[size_t(next)] = a.covariances[v];
+      map[v] = next++;
+    }
+  a.means.resize(size_t(next));
+  a.covariances.resize(size_t(next));
+  for (auto& face : a.faces)
+    for (int& v : face) v = map[size_t(v)];
+  return map;
+}
+
+Gaussian blend_gaussians(const MeshArrays& a, const std::vector<std::pair<int, double>>& weights) {
+  Dual q = Dual::Zero();
+  for (const auto& [v, w] : weights) q += w * to_dual(a.means[size_t(v)], a.covariances[size_t(v)]);
+  const std::optional<Gaussian> g = from_dual(q);
+  if (!g) throw Error("a new vertex would get a covariance that is not positive definite");
+  return *g;
+}
+
+Gaussian face_point(const MeshArrays& a, int f) {
+  const auto& face = a.faces[size_t(f)];
+  std::vector<std::pair<int, double>> w;
+  for (int v : face) w.emplace_back(v, 1.0 / double(face.size()));
+  return blend_gaussians(a, w);
+}
+
+DirectedEdges directed_edges(const MeshArrays& a) {
+  DirectedEdges edges;
+  size_t n = 0;
+  for (const auto& face : a.faces) n += face.size();
+  edges.reserve(n);
+  for (int f = 0; f < a.n_faces(); ++f) {
+    const auto& face = a.faces[size_t(f)];
+    for (size_t k = 0; k < face.size(); ++k)
+      edges.emplace(directed_key(face[k], face[(k + 1) % face.size()]), std::pair<int, int>(f, int(k)));
+  }
+  return edges;
+}
+
+bool has_edge(const DirectedEdges& e, int a, int b) {
+  return e.count(directed_key(a, b)) != 0 || e.count(directed_key(b, a)) != 0;
+}
+
+bool is_boundary_edge(const DirectedEdges& e, int a, int b) {
+  return (e.count(directed_key(a, b)) != 0) != (e.count(directed_key(b, a)) != 0);
+}
+
+void check_vertex(const MeshArrays& a, int v) {
+  if (v < 0 || v >= a.n_vertices())
+    throw Error("vertex " + std::to_string(v) + " is not in the mesh (" + std::to_string(a.n_vertices()) +
+                " vertices)");
+}
+
+void check_face(const MeshArrays& a, int f) {
+  if (f < 0 || f >= a.n_faces())
+    throw Error("face " + std::to_string(f) + " is not in the mesh (" + std::to_string(a.n_faces()) + " faces)");
+}
+
+std::vector<int> sorted_vertices(const MeshArrays& a, std::vector<int> vertices) {
+  for (int v : vertices) check_vertex(a, v);
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
+}
+
+std::vector<int> sorted_faces(const MeshArrays& a, std::vector<int> faces) {
+  for (int f : faces) check_face(a, f);
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  return faces;
+}
+
+}  // namespace gps

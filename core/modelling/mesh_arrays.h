@@ -1,0 +1,74 @@
+#pragma once
+// The form the modelling operations work on: a covariance mesh as plain arrays (Gaussians by vertex
+// index, faces as vertex-index lists), turned back into a validated covariance mesh at the end, so
+// that an operation either yields a manifold mesh or throws and changes nothing.
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "core/mesh/covariance_mesh.h"
+#include "core/mesh/dual_map.h"
+
+namespace gps {
+
+struct MeshArrays {
+  std::vector<Vec3> means;
+  std::vector<Mat3> covariances;
+  std::vector<std::vector<int>> faces;
+
+  int n_vertices() const { return int(means.size()); }
+  int n_faces() const { return int(faces.size()); }
+  Gaussian gaussian(int v) const { return {means[size_t(v)], covariances[size_t(v)]}; }
+  /// Appends a vertex; returns its index.
+  int add_vertex(const Gaussian& g);
+};
+
+/// The outcome of a modelling operation: the new mesh, the vertices a user goes on working with
+/// (the extruded cap, the new loop, ...; ascending) and a one-line account of what was done.
+struct Modelled {
+  CovarianceMesh mesh;
+  std::vector<int> selection;
+  std::string summary;
+};
+
+/// The mesh as arrays; faces in the mesh's face order, corners in face_vertices() order.
+MeshArrays arrays_of(const CovarianceMesh& mesh);
+
+/// The arrays as a covariance mesh. Throws gps::Error ("the result would ...: <why>") when they do
+/// not make a manifold mesh of valid Gaussians.
+CovarianceMesh build_mesh(const MeshArrays& arrays);
+
+/// Removes the vertices no face uses, keeping the others in order; returns old index → new (−1 removed).
+std::vector<int> drop_unused_vertices(MeshArrays& arrays);
+
+/// The Gaussian whose 9D point is Σ w_k q_k over (vertex, weight) pairs (weights ≥ 0, summing to 1):
+/// the normalised product of the Gaussians (docs/design.md §1), what a linear scheme gives a vertex
+/// it inserts with these weights.
+Gaussian blend_gaussians(const MeshArrays& arrays, const std::vector<std::pair<int, double>>& weights);
+
+/// The 9D average of a face's corners (the Catmull-Clark face point in 9D).
+Gaussian face_point(const MeshArrays& arrays, int face);
+
+/// A key for the directed edge a → b, and for the undirected edge {a, b}.
+inline uint64_t directed_key(int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); }
+inline uint64_t edge_key(int a, int b) { return a < b ? directed_key(a, b) : directed_key(b, a); }
+
+/// Where each directed edge a → b of the faces lies: (face, corner of a in it).
+using DirectedEdges = std::unordered_map<uint64_t, std::pair<int, int>>;
+DirectedEdges directed_edges(const MeshArrays& arrays);
+
+/// Whether {a, b} is an edge, and whether it is a boundary edge (one face only).
+bool has_edge(const DirectedEdges& edges, int a, int b);
+bool is_boundary_edge(const DirectedEdges& edges, int a, int b);
+
+/// Throws a gps::Error for an index outside the mesh ("vertex 12 is not in the mesh (8 vertices)").
+void check_vertex(const MeshArrays& arrays, int v);
+void check_face(const MeshArrays& arrays, int f);
+
+/// The selection of vertices for an operation: sorted, unique, each checked.
+std::vector<int> sorted_vertices(const MeshArrays& arrays, std::vector<int> vertices);
+std::vector<int> sorted_faces(const MeshArrays& arrays, std::vector<int> faces);
+
+}  // namespace gps
