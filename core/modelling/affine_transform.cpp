@@ -1,5 +1,6 @@
 #include "core/modelling/affine_transform.h"
 
+#include <Eigen/LU>
 #include <cmath>
 #include <string>
 
