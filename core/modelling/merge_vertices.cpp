@@ -1,0 +1,193 @@
+#include "core/modelling/merge_vertices.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+
+#include "core/mesh/error.h"
+
+namespace gps {
+
+namespace {
+
+// The Gaussian a group merges into at its centre: the mean of the means, the covariance of the 9D average.
+Gaussian group_center(const MeshArrays& a, const std::vector<int>& group) {
+  std::vector<std::pair<int, double>> weights;
+  Vec3 mean = Vec3::Zero();
+  for (int v : group) {
+    weights.emplace_back(v, 1.0 / double(group.size()));
+    mean += a.means[size_t(v)];
+  }
+  return {mean / double(group.size()), blend_gaussians(a, weights).covariance};
+}
+
+struct MergeResult {
+  MeshArrays arrays;
+  std::vector<int> new_index;  // old vertex → new (−1 deleted)
+  int faces_removed = 0;
+};
+
+// Replaces every vertex v by target[v] (target[v] ≤ v; target[t] == t for a kept vertex), whose
+// Gaussian becomes gaussians[t] where given, then drops repeated corners, degenerate faces and the
+// merged-away vertices.
+MergeResult merge_into(const MeshArrays& in, const std::vector<int>& target,
+                       const std::unordered_map<int, Gaussian>& gaussians) {
+  MergeResult r;
+  MeshArrays& a = r.arrays;
+  a = in;
+  for (const auto& [v, g] : gaussians) {
+    a.means[size_t(v)] = g.mean;
+    a.covariances[size_t(v)] = g.covariance;
+  }
+  std::vector<std::vector<int>> faces;
+  faces.reserve(a.faces.size());
+  std::vector<int> last_seen(a.means.size(), -1);
+  for (int f = 0; f < in.n_faces(); ++f) {
+    std::vector<int> face;
+    for (int v : in.faces[size_t(f)]) {
+      const int t = target[size_t(v)];
+      if (face.empty() || face.back() != t) face.push_back(t);
+    }
+    while (face.size() > 1 && face.front() == face.back()) face.pop_back();
+    if (face.size() < 3) {
+      ++r.faces_removed;
+      continue;
+    }
+    for (int v : face) {
+      if (last_seen[size_t(v)] == f)
+        throw Error("face " + std::to_string(f) + " would use vertex " + std::to_string(v) + " twice");
+      last_seen[size_t(v)] = f;
+    }
+    faces.push_back(std::move(face));
+  }
+  a.faces = std::move(faces);
+  r.new_index.assign(a.means.size(), -1);
+  int next = 0;
+  for (size_t v = 0; v < a.means.size(); ++v)
+    if (target[v] == int(v)) {
+      a.means[size_t(next)] = a.means[v];
+      a.covariances[size_t(next)] = a.covariances[v];
+      r.new_index[v] = next++;
+    }
+  a.means.resize(size_t(next));
+  a.covariances.resize(size_t(next));
+  for (auto& face : a.faces)
+    for (int& v : face) v = r.new_index[size_t(v)];
+  return r;
+}
+
+std::string faces_removed_text(int n) {
+  if (n == 0) return "";
+  return ", " + std::to_string(n) + (n == 1 ? " face" : " faces") + " removed";
+}
+
+// Union-find with the smallest index as each set's root.
+int find_root(std::vector<int>& parent, int v) {
+  while (parent[size_t(v)] != v) {
+    parent[size_t(v)] = parent[size_t(parent[size_t(v)])];
+    v = parent[size_t(v)];
+  }
+  return v;
+}
+
+void unite(std::vector<int>& parent, int u, int v) {
+  u = find_root(parent, u);
+  v = find_root(parent, v);
+  if (u < v) parent[size_t(v)] = u;
+  if (v < u) parent[size_t(u)] = v;
+}
+
+struct CellHash {
+  size_t operator()(const std::array<int64_t, 3>& c) const {
+    return size_t(uint64_t(c[0]) * 73856093u ^ uint64_t(c[1]) * 19349663u ^ uint64_t(c[2]) * 83492791u);
+  }
+};
+
+}  // namespace
+
+Modelled merge_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, MergePoint at) {
+  const MeshArrays a = arrays_of(mesh);
+  const std::vector<int> group = sorted_vertices(a, vertices);
+  if (group.size() != vertices.size()) {
+    std::vector<int> listed = vertices;
+    std::sort(listed.begin(), listed.end());
+    const int twice = *std::adjacent_find(listed.begin(), listed.end());
+    throw Error("vertex " + std::to_string(twice) + " is listed twice");
+  }
+  if (group.size() < 2) throw Error("merging needs at least 2 vertices");
+  const Gaussian g = at == MergePoint::center  ? group_center(a, group)
+                     : at == MergePoint::first ? a.gaussian(vertices.front())
+                                               : a.gaussian(vertices.back());
+  std::vector<int> target(size_t(a.n_vertices()));
+  std::iota(target.begin(), target.end(), 0);
+  for (int v : group) target[size_t(v)] = group.front();
+  const MergeResult r = merge_into(a, target, {{group.front(), g}});
+  Modelled out{build_mesh(r.arrays), {r.new_index[size_t(group.front())]}, ""};
+  out.summary = "merged " + std::to_string(group.size()) + " vertices into vertex " +
+                std::to_string(out.selection.front()) + faces_removed_text(r.faces_removed);
+  return out;
+}
+
+Modelled weld_by_distance(const CovarianceMesh& mesh, const std::vector<int>& vertices, double distance) {
+  const MeshArrays a = arrays_of(mesh);
+  std::ostringstream d;
+  d << distance;
+  if (!(distance > 0) || !std::isfinite(distance))
+    throw Error("the distance must be positive and finite (got " + d.str() + ")");
+  std::vector<int> candidates = sorted_vertices(a, vertices);
+  if (vertices.empty()) {
+    candidates.resize(size_t(a.n_vertices()));
+    std::iota(candidates.begin(), candidates.end(), 0);
+  }
+  // Cells of size `distance`: two points closer than it lie in the same or neighbouring cells.
+  constexpr double kMaxCell = 1e15;  // cell coordinates stay exact integers
+  std::unordered_map<std::array<int64_t, 3>, std::vector<int>, CellHash> cells;
+  std::vector<std::array<int64_t, 3>> cell_of(candidates.size());
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const Vec3 c = a.means[size_t(candidates[k])] / distance;
+    if (c.cwiseAbs().maxCoeff() > kMaxCell)
+      throw Error("the distance " + d.str() + " is too small for the mesh's extent");
+    cell_of[k] = {int64_t(std::floor(c[0])), int64_t(std::floor(c[1])), int64_t(std::floor(c[2]))};
+    cells[cell_of[k]].push_back(candidates[k]);
+  }
+  std::vector<int> parent(size_t(a.n_vertices()));
+  std::iota(parent.begin(), parent.end(), 0);
+  const double d2 = distance * distance;
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const int v = candidates[k];
+    for (int64_t dx = -1; dx <= 1; ++dx)
+      for (int64_t dy = -1; dy <= 1; ++dy)
+        for (int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find({cell_of[k][0] + dx, cell_of[k][1] + dy, cell_of[k][2] + dz});
+          if (it == cells.end()) continue;
+          for (int w : it->second)
+            if (w > v && (a.means[size_t(w)] - a.means[size_t(v)]).squaredNorm() < d2) unite(parent, v, w);
+        }
+  }
+  std::vector<int> target(parent.size());
+  std::unordered_map<int, std::vector<int>> clusters;
+  for (size_t v = 0; v < parent.size(); ++v) {
+    target[v] = find_root(parent, int(v));
+    if (target[v] != int(v)) clusters[target[v]].push_back(int(v));
+  }
+  std::unordered_map<int, Gaussian> gaussians;
+  int removed = 0;
+  for (auto& [root, members] : clusters) {
+    members.push_back(root);
+    gaussians[root] = group_center(a, members);
+    removed += int(members.size()) - 1;
+  }
+  const MergeResult r = merge_into(a, target, gaussians);
+  Modelled out{build_mesh(r.arrays), {}, ""};
+  for (const auto& [root, members] : clusters) out.selection.push_back(r.new_index[size_t(root)]);
+  std::sort(out.selection.begin(), out.selection.end());
+  out.summary = "welded " + std::to_string(clusters.size()) + (clusters.size() == 1 ? " cluster" : " clusters") + ": " +
+                std::to_string(removed) + (removed == 1 ? " vertex" : " vertices") + " removed" +
+                faces_removed_text(r.faces_removed);
+  return out;
+}
+
+}  // namespace gps

@@ -1,0 +1,167 @@
+#include "core/modelling/mesh_queries.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/mesh/error.h"
+
+namespace gps {
+
+namespace {
+
+using VH = PolyMesh::VertexHandle;
+using HH = PolyMesh::HalfedgeHandle;
+
+void check_vertex(const PolyMesh& m, int v) {
+  if (v < 0 || v >= int(m.n_vertices()))
+    throw Error("vertex " + std::to_string(v) + " is not in the mesh (" + std::to_string(m.n_vertices()) +
+                " vertices)");
+}
+
+// One flag per vertex, set for the given vertices (each checked).
+std::vector<char> vertex_mask(const PolyMesh& m, const std::vector<int>& vertices) {
+  std::vector<char> mask(m.n_vertices(), 0);
+  for (int v : vertices) {
+    check_vertex(m, v);
+    mask[size_t(v)] = 1;
+  }
+  return mask;
+}
+
+std::vector<int> masked(const std::vector<char>& mask) {
+  std::vector<int> out;
+  for (size_t v = 0; v < mask.size(); ++v)
+    if (mask[v]) out.push_back(int(v));
+  return out;
+}
+
+bool continues(const PolyMesh& m, VH v) { return !m.is_boundary(v) && m.valence(v) == 4; }
+
+// At an interior vertex of valence 4 reached by half-edge h, the half-edge out along the opposite edge.
+HH straight_on(const PolyMesh& m, HH h) {
+  HH out = m.opposite_halfedge_handle(h);
+  for (int k = 0; k < 2; ++k) out = m.next_halfedge_handle(m.opposite_halfedge_handle(out));
+  return out;
+}
+
+// Walks the edge loop on from half-edge h, appending the vertices reached, until a vertex where it
+// cannot continue, or `start`; returns whether it came back to `start`.
+bool walk_loop(const PolyMesh& m, HH h, VH start, std::vector<int>& loop) {
+  while (true) {
+    const VH v = m.to_vertex_handle(h);
+    if (v == start) return true;
+    loop.push_back(v.idx());
+    if (!continues(m, v)) return false;
+    h = straight_on(m, h);
+  }
+}
+
+}  // namespace
+
+std::vector<int> edge_loop(const CovarianceMesh& mesh, int a, int b) {
+  const PolyMesh& m = mesh.mesh;
+  check_vertex(m, a);
+  check_vertex(m, b);
+  const HH h = m.find_halfedge(VH(a), VH(b));
+  if (!h.is_valid()) throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
+  std::vector<int> loop;
+  if (m.is_boundary(m.edge_handle(h))) {
+    const HH first = m.is_boundary(h) ? h : m.opposite_halfedge_handle(h);
+    HH g = first;
+    do {
+      loop.push_back(m.to_vertex_handle(g).idx());
+      g = m.next_halfedge_handle(g);
+    } while (g != first);
+  } else {
+    loop = {a};
+    const bool closed = walk_loop(m, h, VH(a), loop);
+    if (!closed && continues(m, VH(a))) walk_loop(m, straight_on(m, m.opposite_halfedge_handle(h)), VH(a), loop);
+    if (loop.size() == 2)
+      for (const VH v : m.fv_range(m.face_handle(h))) loop.push_back(v.idx());
+  }
+  std::sort(loop.begin(), loop.end());
+  loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+  return loop;
+}
+
+std::vector<int> linked_vertices(const CovarianceMesh& mesh, const std::vector<int>& seeds) {
+  const PolyMesh& m = mesh.mesh;
+  std::vector<char> seen = vertex_mask(m, seeds);
+  std::vector<int> stack = masked(seen);
+  while (!stack.empty()) {
+    const VH v(stack.back());
+    stack.pop_back();
+    for (const VH w : m.vv_range(v))
+      if (!seen[size_t(w.idx())]) {
+        seen[size_t(w.idx())] = 1;
+        stack.push_back(w.idx());
+      }
+  }
+  return masked(seen);
+}
+
+std::vector<int> grow_selection(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  const PolyMesh& m = mesh.mesh;
+  std::vector<char> grown = vertex_mask(m, vertices);
+  for (int v : vertices)
+    for (const auto f : m.vf_range(VH(v)))
+      for (const VH w : m.fv_range(f)) grown[size_t(w.idx())] = 1;
+  return masked(grown);
+}
+
+std::vector<int> shrink_selection(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  const PolyMesh& m = mesh.mesh;
+  const std::vector<char> selected = vertex_mask(m, vertices);
+  std::vector<char> kept = selected;
+  for (int v : vertices)
+    for (const auto f : m.vf_range(VH(v)))
+      for (const VH w : m.fv_range(f))
+        if (!selected[size_t(w.idx())]) kept[size_t(v)] = 0;
+  return masked(kept);
+}
+
+std::vector<int> faces_within(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  const PolyMesh& m = mesh.mesh;
+  const std::vector<char> selected = vertex_mask(m, vertices);
+  std::vector<int> faces;
+  for (const auto f : m.faces()) {
+    bool all = true;
+    for (const VH v : m.fv_range(f)) all = all && selected[size_t(v.idx())];
+    if (all) faces.push_back(f.idx());
+  }
+  return faces;
+}
+
+std::vector<std::array<int, 2>> edges_within(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  const PolyMesh& m = mesh.mesh;
+  const std::vector<char> selected = vertex_mask(m, vertices);
+  std::vector<std::array<int, 2>> edges;
+  for (int v : masked(selected))
+    for (const VH w : m.vv_range(VH(v)))
+      if (w.idx() > v && selected[size_t(w.idx())]) edges.push_back({v, w.idx()});
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+std::vector<std::vector<int>> boundary_loops(const CovarianceMesh& mesh) {
+  const PolyMesh& m = mesh.mesh;
+  std::vector<char> visited(m.n_halfedges(), 0);
+  std::vector<std::vector<int>> loops;
+  for (const VH v : m.vertices()) {
+    const HH first = m.halfedge_handle(v);
+    if (!first.is_valid() || !m.is_boundary(first) || visited[size_t(first.idx())]) continue;
+    // The boundary half-edges (no face) run against the faces' edges: follow them, then reverse.
+    std::vector<int> loop;
+    HH h = first;
+    do {
+      visited[size_t(h.idx())] = 1;
+      loop.push_back(m.from_vertex_handle(h).idx());
+      h = m.next_halfedge_handle(h);
+    } while (h != first);
+    std::reverse(loop.begin() + 1, loop.end());
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+}  // namespace gps

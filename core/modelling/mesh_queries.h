@@ -1,0 +1,37 @@
+#pragma once
+// The editor's selection tools: queries on sets of vertices (sorted ascending in and out) that walk
+// the half-edge structure of the mesh, in time linear in what they visit, so that a click on a large
+// mesh answers at once. They throw gps::Error naming a vertex or edge that is not in the mesh.
+#include <array>
+#include <vector>
+
+#include "core/mesh/covariance_mesh.h"
+
+namespace gps {
+
+/// The edge loop through the edge {a, b}: from each end it continues through every interior vertex of
+/// valence 4 to the edge opposite the one it arrived by (the edge sharing no face with it), until a
+/// vertex of another valence, a boundary vertex, or the start again. A boundary edge gives its whole
+/// boundary loop. When neither end continues (both are poles, as on a cube) the loop is the corners of
+/// the face on the left of a → b. Returns the loop's vertices.
+std::vector<int> edge_loop(const CovarianceMesh& mesh, int a, int b);
+
+/// Every vertex connected to the seeds through edges.
+std::vector<int> linked_vertices(const CovarianceMesh& mesh, const std::vector<int>& seeds);
+
+/// The selection plus the vertices sharing a face with it.
+std::vector<int> grow_selection(const CovarianceMesh& mesh, const std::vector<int>& vertices);
+/// The selection minus its vertices that share a face with an unselected vertex.
+std::vector<int> shrink_selection(const CovarianceMesh& mesh, const std::vector<int>& vertices);
+
+/// The faces all of whose corners are selected.
+std::vector<int> faces_within(const CovarianceMesh& mesh, const std::vector<int>& vertices);
+/// The edges both of whose ends are selected, each once as (min, max), sorted.
+std::vector<std::array<int, 2>> edges_within(const CovarianceMesh& mesh, const std::vector<int>& vertices);
+
+/// Every boundary loop of the mesh, each as its vertices in the direction of its faces' boundary
+/// half-edges (a face's edge a → b on the boundary puts b after a), starting at its smallest vertex;
+/// loops ordered by that vertex.
+std::vector<std::vector<int>> boundary_loops(const CovarianceMesh& mesh);
+
+}  // namespace gps

@@ -1,0 +1,120 @@
+#include "core/modelling/mesh_queries.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/mesh/error.h"
+#include "core/mesh/samples.h"
+#include "core/modelling/mesh_arrays.h"
+#include "core/modelling/primitives.h"
+#include "tests/support/error_of.h"
+#include "tests/support/test_meshes.h"
+
+namespace gps {
+namespace {
+
+using test::error_of;
+using V = std::vector<int>;
+
+V range(int begin, int end, int step = 1) {
+  V v;
+  for (int k = begin; k < end; k += step) v.push_back(k);
+  return v;
+}
+
+TEST(MeshQueries, EdgeLoopOnTheCubeIsTheFaceOnTheLeftOfTheEdge) {
+  const CovarianceMesh cube = make_sample("cube");
+  EXPECT_EQ(edge_loop(cube, 0, 1), (V{0, 1, 4, 5}));  // face {0, 1, 5, 4}
+  EXPECT_EQ(edge_loop(cube, 1, 0), (V{0, 1, 2, 3}));  // face {0, 3, 2, 1}
+}
+
+TEST(MeshQueries, EdgeLoopOnAGridIsARowOrAColumn) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);  // vertex j·5 + i
+  EXPECT_EQ(edge_loop(grid, 11, 12), range(10, 15));
+  EXPECT_EQ(edge_loop(grid, 13, 12), range(10, 15));
+  EXPECT_EQ(edge_loop(grid, 7, 12), range(2, 25, 5));
+  // A boundary edge gives the whole boundary loop: 16 vertices around the 4 × 4 grid.
+  const V boundary = edge_loop(grid, 0, 1);
+  EXPECT_EQ(boundary.size(), 16u);
+  EXPECT_EQ(std::count(boundary.begin(), boundary.end(), 12), 0);
+}
+
+TEST(MeshQueries, EdgeLoopClosesAroundTheTorusAndStopsAtPoles) {
+  const CovarianceMesh torus = make_sample("torus");  // 24 × 12, vertex i·12 + j
+  EXPECT_EQ(edge_loop(torus, 0, 1), range(0, 12));
+  EXPECT_EQ(edge_loop(torus, 12, 0), range(0, 288, 12));
+  const CovarianceMesh cylinder = make_sample("cylinder");  // the middle ring has valence 4
+  EXPECT_EQ(edge_loop(cylinder, 9, 8), range(8, 16));
+  // Up the side: ring 0 and ring 2 are on the caps' corners (valence 3), where the loop stops.
+  EXPECT_EQ(edge_loop(cylinder, 8, 16), (V{0, 8, 16}));
+}
+
+TEST(MeshQueries, EdgeLoopRefusesWhatIsNotAnEdge) {
+  const CovarianceMesh cube = make_sample("cube");
+  EXPECT_EQ(error_of([&] { edge_loop(cube, 0, 6); }), "edge 0–6 is not in the mesh");
+  EXPECT_EQ(error_of([&] { edge_loop(cube, 0, 8); }), "vertex 8 is not in the mesh (8 vertices)");
+}
+
+TEST(MeshQueries, LinkedVerticesStayInTheirPart) {
+  const Modelled two = add_primitive(make_sample("cube"), Primitive::cube, Vec3(5, 0, 0), 1);
+  EXPECT_EQ(linked_vertices(two.mesh, {2}), range(0, 8));
+  EXPECT_EQ(linked_vertices(two.mesh, {9}), range(8, 16));
+  EXPECT_EQ(linked_vertices(two.mesh, {0, 15}), range(0, 16));
+  EXPECT_TRUE(linked_vertices(two.mesh, {}).empty());
+}
+
+TEST(MeshQueries, GrowAndShrinkByFaces) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);
+  const V block = {6, 7, 8, 11, 12, 13, 16, 17, 18};
+  EXPECT_EQ(grow_selection(grid, {12}), block);
+  EXPECT_EQ(shrink_selection(grid, block), V{12});
+  EXPECT_TRUE(shrink_selection(grid, {12}).empty());
+  EXPECT_EQ(grow_selection(grid, {0}), (V{0, 1, 5, 6}));
+  EXPECT_EQ(grow_selection(grid, block).size(), 25u);
+  EXPECT_EQ(shrink_selection(grid, range(0, 25)), range(0, 25));  // nothing unselected around
+}
+
+TEST(MeshQueries, FacesAndEdgesWithin) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);
+  const V block = {6, 7, 8, 11, 12, 13, 16, 17, 18};
+  EXPECT_EQ(faces_within(grid, block), (V{5, 6, 9, 10}));
+  const auto edges = edges_within(grid, block);
+  EXPECT_EQ(edges.size(), 12u);
+  EXPECT_EQ(edges.front(), (std::array<int, 2>{6, 7}));
+  for (const auto& e : edges) EXPECT_LT(e[0], e[1]);
+  EXPECT_TRUE(faces_within(grid, {6, 7, 11}).empty());
+  EXPECT_EQ(edges_within(grid, {6, 7, 11}).size(), 2u);
+}
+
+TEST(MeshQueries, BoundaryLoopsRunAlongTheFacesEdges) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);
+  const auto loops = boundary_loops(grid);
+  ASSERT_EQ(loops.size(), 1u);
+  ASSERT_EQ(loops[0].size(), 16u);
+  EXPECT_EQ(loops[0].front(), 0);
+  const DirectedEdges edges = directed_edges(arrays_of(grid));
+  for (size_t k = 0; k < loops[0].size(); ++k) {
+    const int a = loops[0][k], b = loops[0][(k + 1) % loops[0].size()];
+    EXPECT_TRUE(edges.count(directed_key(a, b))) << a << "→" << b;
+    EXPECT_TRUE(is_boundary_edge(edges, a, b)) << a << "–" << b;
+  }
+  EXPECT_TRUE(boundary_loops(make_sample("cube")).empty());
+  // The open cone: one loop, its base ring.
+  const auto cone = boundary_loops(test::cone_mesh());
+  ASSERT_EQ(cone.size(), 1u);
+  EXPECT_EQ(std::set<int>(cone[0].begin(), cone[0].end()), std::set<int>({1, 2, 3, 4, 5, 6, 7, 8}));
+}
+
+TEST(MeshQueries, LargeMeshesAnswerInOnePass) {
+  const CovarianceMesh grid = make_sample("grid", 102400);  // 320 × 320 quads
+  EXPECT_EQ(boundary_loops(grid)[0].size(), 4u * 320u);
+  EXPECT_EQ(edge_loop(grid, 321 * 160, 321 * 160 + 1).size(), 321u);
+  EXPECT_EQ(linked_vertices(grid, {0}).size(), 321u * 321u);
+  const V all = linked_vertices(grid, {0});
+  EXPECT_EQ(faces_within(grid, all).size(), 320u * 320u);
+  EXPECT_EQ(shrink_selection(grid, grow_selection(grid, {321 * 160 + 160})), V{321 * 160 + 160});
+}
+
+}  // namespace
+}  // namespace gps
