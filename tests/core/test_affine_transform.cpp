@@ -1,0 +1,121 @@
+// Affine transforms of vertices: GPS commutes with affine maps, so transforming every vertex moves
+// the exact limit surface with the map (means and covariances); a partial transform touches only its
+// vertices; malformed and singular maps are refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Geometry>
+
+#include "core/mesh/samples.h"
+#include "core/modelling/affine_transform.h"
+#include "core/reference/reference_subdivision.h"
+#include "tests/support/error_of.h"
+#include "tests/support/test_meshes.h"
+
+namespace gps {
+namespace {
+
+using test::error_of;
+
+// A rotation, a non-uniform scale and a shear together, and a translation.
+AffineMap skewed_map() {
+  const Mat3 rotation = Eigen::AngleAxisd(0.7, Vec3(1, 2, -0.5).normalized()).toRotationMatrix();
+  Mat3 shear = Mat3::Identity();
+  shear(0, 1) = 0.6;
+  shear(2, 0) = -0.3;
+  const Mat3 scale = Vec3(2.5, 0.4, 1.3).asDiagonal();
+  return AffineMap{rotation * scale * shear, Vec3(3, -1, 7.5)};
+}
+
+SubdivisionResult limit_of(const CovarianceMesh& m, Scheme scheme) {
+  SubdivisionOptions o;
+  o.scheme = scheme;
+  o.levels = 2;
+  o.limit = true;
+  return subdivide(m, o);
+}
+
+void expect_limit_moves_with_the_map(const CovarianceMesh& m, Scheme scheme) {
+  const AffineMap map = skewed_map();
+  const Modelled moved = transform_vertices(m, {}, map);
+  ASSERT_EQ(moved.selection.size(), m.n_vertices());
+  for (size_t v = 0; v < m.n_vertices(); ++v) {
+    const Mat3 want = map.linear * m.covariance(v) * map.linear.transpose();
+    EXPECT_LE((moved.mesh.covariance(v) - want).norm(), 1e-15 * want.norm());
+    EXPECT_LE((moved.mesh.mean(v) - map.apply(m.mean(v))).norm(), 1e-15 * (1 + moved.mesh.mean(v).norm()));
+  }
+  const SubdivisionResult before = limit_of(m, scheme), after = limit_of(moved.mesh, scheme);
+  ASSERT_EQ(before.mesh.n_vertices(), after.mesh.n_vertices());
+  const double diagonal = bounding_box_diagonal(after.mesh);
+  double worst_mean = 0, worst_covariance = 0;
+  for (size_t v = 0; v < before.mesh.n_vertices(); ++v) {
+    worst_mean = std::max(worst_mean, (after.mesh.mean(v) - map.apply(before.mesh.mean(v))).norm());
+    const Mat3 want = map.linear * before.mesh.covariance(v) * map.linear.transpose();
+    worst_covariance = std::max(worst_covariance, (after.mesh.covariance(v) - want).norm() / want.norm());
+  }
+  EXPECT_LE(worst_mean, 1e-12 * diagonal);
+  EXPECT_LE(worst_covariance, 1e-9);
+}
+
+TEST(AffineTransform, CatmullClarkLimitMovesWithTheMap) {
+  expect_limit_moves_with_the_map(test::with_random_covariances(make_sample("cylinder"), 21), Scheme::catmull_clark);
+  expect_limit_moves_with_the_map(test::with_random_covariances(test::grid_mesh(4, 3), 22), Scheme::catmull_clark);
+}
+
+TEST(AffineTransform, LoopLimitMovesWithTheMap) {
+  expect_limit_moves_with_the_map(test::with_random_covariances(make_sample("icosphere", 80), 23), Scheme::loop);
+}
+
+TEST(AffineTransform, PartialTransformChangesOnlyItsVertices) {
+  const CovarianceMesh m = test::with_random_covariances(make_sample("cube"), 24);
+  const Modelled r = transform_vertices(m, {6, 1, 6}, skewed_map());
+  EXPECT_EQ(r.selection, (std::vector<int>{1, 6}));
+  EXPECT_EQ(r.summary, "transformed 2 vertices");
+  for (size_t v = 0; v < m.n_vertices(); ++v) {
+    if (v == 1 || v == 6) {
+      EXPECT_NE(r.mesh.mean(v), m.mean(v));
+      EXPECT_LE((r.mesh.mean(v) - skewed_map().apply(m.mean(v))).norm(), 1e-14);
+    } else {
+      EXPECT_EQ(r.mesh.mean(v), m.mean(v)) << "vertex " << v;
+      EXPECT_EQ(r.mesh.covariance(v), m.covariance(v)) << "vertex " << v;
+    }
+  }
+  EXPECT_EQ(arrays_of(r.mesh).faces, arrays_of(m).faces);
+}
+
+TEST(AffineTransform, AboutKeepsThePivotAndFromRowsReadsRowMajor) {
+  const Vec3 pivot(1, 2, 3);
+  const AffineMap about = AffineMap::about(pivot, skewed_map().linear);
+  EXPECT_LE((about.apply(pivot) - pivot).norm(), 1e-14);
+  const AffineMap rows = AffineMap::from_rows({1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 12, 11, 0, 0, 0, 1});
+  EXPECT_EQ(rows.apply(Vec3(1, 0, 0)), Vec3(5, 13, 20));
+  EXPECT_EQ(rows.translation, Vec3(4, 8, 11));
+}
+
+TEST(AffineTransform, RefusalsChangeNothing) {
+  const CovarianceMesh m = make_sample("cube");
+  const std::vector<double> singular = {1, 0, 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 0, 1};
+  EXPECT_EQ(error_of([] {
+              AffineMap::from_rows({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0});
+            }),
+            "the matrix has 15 numbers (16 needed: a row-major 4×4 affine map)");
+  EXPECT_EQ(error_of([] {
+              AffineMap::from_rows({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1, 1});
+            }),
+            "the matrix's last row must be 0 0 0 1 (an affine map)");
+  EXPECT_EQ(
+      error_of([] {
+        AffineMap::from_rows({1, 0, 0, std::numeric_limits<double>::infinity(), 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+      }),
+      "the matrix has a number that is not finite");
+  EXPECT_EQ(error_of([&] { transform_vertices(m, {}, AffineMap::from_rows(singular)); }),
+            "the map is singular (it would flatten the Gaussians)");
+  EXPECT_EQ(error_of([&] { transform_vertices(m, {2, 8}, skewed_map()); }), "vertex 8 is not in the mesh (8 vertices)");
+  const CovarianceMesh fresh = make_sample("cube");
+  for (size_t v = 0; v < m.n_vertices(); ++v) EXPECT_EQ(m.mean(v), fresh.mean(v));
+}
+
+}  // namespace
+}  // namespace gps
