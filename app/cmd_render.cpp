@@ -10,6 +10,7 @@
 #include "core/mesh/error.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
+#include "core/modelling/operation_list.h"
 #include "core/io/text_file.h"
 #include "render/comparison/exact_triangles.h"
 #include "render/gl/gl_context.h"
@@ -136,8 +137,8 @@ void render(const RenderArgs& a) {
 // "level": L, "pixels": P, "depth": D, "approximate": true|false, "scheme": "auto"|"loop"|"catmull-clark", "loop_beta":
 // "loop"|"warren", "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]", "mesh_lines": bool, "wireframe": bool,
 // "ellipsoids": bool, "sigma": k, "background": "r,g,b", "aov": ["position=FILE.exr", ...], "reference": N, "exact":
-// true|false, "edits": [{"vertex": i, "mean": [x,y,z], "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]} All
-// renders share one process and one GL context.
+// true|false, "ops": [modelling operations, as gpsurf edit --ops], "edits": [{"vertex": i, "mean": [x,y,z],
+// "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]} All renders share one process and one GL context.
 void run_script(const std::string& path, const std::string& context_name) {
   nlohmann::json script;
   try {
@@ -180,6 +181,7 @@ void run_script(const std::string& path, const std::string& context_name) {
       if (a.mode != "matcap" && a.mode != "normals" && a.mode != "flat")
         throw usage_error("mode must be matcap, normals or flat");
       CovarianceMesh mesh = a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh(a.input);
+      if (job.contains("ops")) mesh = OperationList::parse(job["ops"].dump(), "").apply(mesh).mesh;
       for (const auto& edit : job.value("edits", nlohmann::json::array())) {
         const int v = edit.at("vertex").get<int>();
         if (v < 0 || size_t(v) >= mesh.n_vertices())

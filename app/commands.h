@@ -11,4 +11,5 @@ void add_tessellate_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_diff_command(CLI::App& app);
+void add_edit_command(CLI::App& app);
 }  // namespace gps

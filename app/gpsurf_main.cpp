@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   gps::add_sample_command(app);
   gps::add_infer_command(app);
   gps::add_subdivide_command(app);
+  gps::add_edit_command(app);
   gps::add_tessellate_command(app);
 #ifdef GPSURF_WITH_GL
   gps::add_bench_command(app);

@@ -1,4 +1,4 @@
-// gpsurf.Mesh and what makes or transforms one: read, sample, infer, subdivide.
+// gpsurf.Mesh and what makes or transforms one: read, sample, infer, subdivide, edit.
 #include <pybind11/stl.h>
 
 #include "core/io/mesh_io.h"
@@ -7,6 +7,7 @@
 #include "core/mesh/inference.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/mesh/samples.h"
+#include "core/modelling/operation_list.h"
 #include "core/plans/patch_layout.h"
 #include "core/reference/reference_subdivision.h"
 #include "python/arrays.h"
@@ -104,6 +105,18 @@ void add_mesh_bindings(py::module_& m) {
       py::arg("path"), py::arg("covariance") = "infer", py::arg("bias") = 0.05, py::arg("isotropic") = 0.5,
       "Reads a covariance PLY, or a plain PLY/OBJ/OFF/STL with covariances inferred (or isotropic: sigma = "
       "isotropic x the mean edge length at the vertex)");
+  m.def(
+      "edit",
+      [](const CovarianceMesh& mesh, const py::object& ops) {
+        // A list of dicts as Python writes it, or the JSON text gpsurf edit --ops takes.
+        const std::string text = py::isinstance<py::str>(ops)
+                                     ? ops.cast<std::string>()
+                                     : py::module_::import("json").attr("dumps")(ops).cast<std::string>();
+        return OperationList::parse(text, "ops").apply(mesh).mesh;
+      },
+      py::arg("mesh"), py::arg("ops"),
+      "A copy of the mesh changed by modelling operations, as gpsurf edit --ops takes them: a list such as "
+      "[{'op': 'loop_cut', 'edge': [0, 1]}, {'op': 'extrude', 'faces': [4], 'distance': 0.5}] (or its JSON text)");
   m.def("samples", &sample_names, "The names of the built-in meshes");
   m.def("sample_description", &sample_description, py::arg("name"));
   m.def("sample", &make_sample, py::arg("name"), py::arg("size") = 0,

@@ -1,5 +1,6 @@
 """The Python module against the command line (bit for bit where both compute the same thing) and
 against the math's properties."""
+import json
 import math
 import os
 import subprocess
@@ -122,6 +123,21 @@ def test_update_after_editing_a_gaussian_equals_planning_again():
     surface.update(mesh, [0])
     patches = np.arange(surface.n_patches)
     assert np.array_equal(surface.evaluate(patches, 0.25, 0.25)[0], gpsurf.Surface(mesh).evaluate(patches, 0.25, 0.25)[0])
+
+
+def test_edit_equals_the_command_line(tmp_path, cli):
+    ops = [{"op": "loop_cut", "edge": [0, 1], "cuts": 2}, {"op": "extrude", "faces": [1], "distance": 0.5}]
+    (tmp_path / "ops.json").write_text(json.dumps(ops))
+    cli("edit", "sample:cube", "-o", "edited.ply", "--ops", "@ops.json")
+    expected = gpsurf.read(str(tmp_path / "edited.ply"))
+    got = gpsurf.edit(gpsurf.sample("cube"), ops)
+    assert (got.n_vertices, got.n_faces) == (8 + 8 + 4, 6 + 8 + 4)
+    assert np.array_equal(got.positions, expected.positions)
+    assert np.array_equal(got.covariances, expected.covariances)
+    assert got.faces == expected.faces
+    assert gpsurf.edit(gpsurf.sample("cube"), json.dumps(ops)).faces == got.faces
+    with pytest.raises(gpsurf.Error, match=r"ops\[0\] \(merge\): vertex 99 is not in the mesh"):
+        gpsurf.edit(gpsurf.sample("cube"), [{"op": "merge", "vertices": [0, 99]}])
 
 
 def test_errors_carry_the_one_line_message(tmp_path):

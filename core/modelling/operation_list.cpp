@@ -1,0 +1,353 @@
+#include "core/modelling/operation_list.h"
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "core/mesh/covariance_mesh.h"
+#include "core/mesh/error.h"
+#include "core/modelling/affine_transform.h"
+#include "core/modelling/bridge.h"
+#include "core/modelling/delete_elements.h"
+#include "core/modelling/edge_operations.h"
+#include "core/modelling/extrude.h"
+#include "core/modelling/fill.h"
+#include "core/modelling/inset.h"
+#include "core/modelling/loop_cut.h"
+#include "core/modelling/merge_vertices.h"
+#include "core/modelling/primitives.h"
+#include "core/modelling/subdivide_mesh.h"
+
+namespace gps {
+namespace {
+
+using Json = nlohmann::json;
+using Run = std::function<Modelled(const CovarianceMesh&)>;
+using Edges = std::vector<std::array<int, 2>>;
+
+// The keys of one operation object, read with checks; every message names the key.
+class Fields {
+public:
+  explicit Fields(const Json& object) : object_(object) {}
+
+  bool has(const char* key) {
+    used_.insert(key);
+    return object_.contains(key);
+  }
+  bool is_text(const char* key) { return has(key) && object_.at(key).is_string(); }
+  bool is_list(const char* key) { return has(key) && object_.at(key).is_array(); }
+  /// Any number of finite numbers (the caller checks the count).
+  std::vector<double> list_of_numbers(const char* key) { return numbers(key, at(key).size()); }
+  double number(const char* key) {
+    const Json& v = at(key);
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      throw usage_error("\"" + std::string(key) + "\" must be a finite number");
+    return v.get<double>();
+  }
+  double number(const char* key, double otherwise) { return has(key) ? number(key) : otherwise; }
+  int integer(const char* key) {
+    const Json& v = at(key);
+    if (!v.is_number_integer()) throw usage_error("\"" + std::string(key) + "\" must be an integer");
+    return v.get<int>();
+  }
+  int integer(const char* key, int otherwise) { return has(key) ? integer(key) : otherwise; }
+  std::string text(const char* key) {
+    const Json& v = at(key);
+    if (!v.is_string()) throw usage_error("\"" + std::string(key) + "\" must be a string");
+    return v.get<std::string>();
+  }
+  std::vector<int> indices(const char* key) { return index_list(at(key), key); }
+  std::array<int, 2> edge(const char* key) { return edge_of(at(key), key); }
+  Edges edges(const char* key) {
+    const Json& v = at(key);
+    if (!v.is_array() || v.empty()) throw usage_error("\"" + std::string(key) + "\" must be a list of [a, b] edges");
+    Edges out;
+    for (const Json& e : v) out.push_back(edge_of(e, key));
+    return out;
+  }
+  std::vector<double> numbers(const char* key, size_t count) {
+    const Json& v = at(key);
+    const std::string what = "\"" + std::string(key) + "\" must be " + std::to_string(count) + " numbers";
+    if (!v.is_array() || v.size() != count) throw usage_error(what);
+    std::vector<double> out;
+    for (const Json& x : v) {
+      if (!x.is_number() || !std::isfinite(x.get<double>())) throw usage_error(what);
+      out.push_back(x.get<double>());
+    }
+    return out;
+  }
+  Vec3 vector3(const char* key) {
+    const std::vector<double> v = numbers(key, 3);
+    return Vec3(v[0], v[1], v[2]);
+  }
+  /// Refuses keys the operation does not read (a misspelt key would otherwise be ignored).
+  void check_all_used() const {
+    for (const auto& [key, value] : object_.items())
+      if (key != "op" && !used_.count(key)) throw usage_error("unknown key \"" + key + "\"");
+  }
+
+private:
+  const Json& at(const char* key) {
+    used_.insert(key);
+    if (!object_.contains(key)) throw usage_error("\"" + std::string(key) + "\" is missing");
+    return object_.at(key);
+  }
+  static std::vector<int> index_list(const Json& v, const std::string& key) {
+    if (!v.is_array()) throw usage_error("\"" + key + "\" must be a list of indices");
+    std::vector<int> out;
+    for (const Json& x : v) {
+      if (!x.is_number_integer() || x.get<long long>() < 0 || x.get<long long>() > INT32_MAX)
+        throw usage_error("\"" + key + "\" must be a list of indices (integers from 0)");
+      out.push_back(x.get<int>());
+    }
+    return out;
+  }
+  static std::array<int, 2> edge_of(const Json& v, const std::string& key) {
+    const std::vector<int> e = index_list(v, key);
+    if (e.size() != 2) throw usage_error("\"" + key + "\" must give an edge as [a, b]");
+    return {e[0], e[1]};
+  }
+
+  const Json& object_;
+  std::set<std::string> used_;
+};
+
+// Exactly one of the keys present: which one.
+const char* one_of(Fields& f, std::initializer_list<const char*> keys) {
+  const char* found = nullptr;
+  std::string names;
+  for (const char* k : keys) {
+    names += std::string(names.empty() ? "" : " or ") + "\"" + k + "\"";
+    if (f.has(k)) {
+      if (found) throw usage_error("give one of " + names);
+      found = k;
+    }
+  }
+  if (!found) throw usage_error("give " + names);
+  return found;
+}
+
+// A 3×3 covariance from its six entries xx xy xz yy yz zz.
+Mat3 covariance_of(const std::vector<double>& c) {
+  Mat3 m;
+  m << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
+  return m;
+}
+
+// {"op":"set","vertices":[…],"mean":[x,y,z],"covariance":[xx,xy,xz,yy,yz,zz],"scale":s}: Gaussians set
+// directly (the mean, the covariance, then the covariance scaled).
+Run set_gaussians(Fields& f) {
+  const std::vector<int> vertices = f.indices("vertices");
+  std::optional<Vec3> mean;
+  std::optional<Mat3> covariance;
+  double scale = 1;
+  if (f.has("mean")) mean = f.vector3("mean");
+  if (f.has("covariance")) covariance = covariance_of(f.numbers("covariance", 6));
+  if (f.has("scale") && !((scale = f.number("scale")) > 0)) throw usage_error("\"scale\" must be positive");
+  if (!mean && !covariance && !f.has("scale")) throw usage_error("give \"mean\", \"covariance\" or \"scale\"");
+  return [=](const CovarianceMesh& mesh) {
+    MeshArrays a = arrays_of(mesh);
+    const std::vector<int> set = sorted_vertices(a, vertices);
+    for (int v : set) {
+      if (mean) a.means[size_t(v)] = *mean;
+      if (covariance) a.covariances[size_t(v)] = *covariance;
+      a.covariances[size_t(v)] *= scale;
+      if (const std::string why = covariance_problem(a.covariances[size_t(v)]); !why.empty())
+        throw Error("vertex " + std::to_string(v) + " would get a covariance that " + why);
+    }
+    return Modelled{build_mesh(a), set,
+                    "set " + std::to_string(set.size()) + (set.size() == 1 ? " Gaussian" : " Gaussians")};
+  };
+}
+
+Run transform(Fields& f) {
+  std::vector<int> vertices;  // empty: all
+  if (!f.has("vertices")) throw usage_error("\"vertices\" is missing (a list of indices, or \"all\")");
+  if (!f.is_text("vertices") || f.text("vertices") != "all") {
+    vertices = f.indices("vertices");
+    if (vertices.empty()) throw usage_error("\"vertices\" must be \"all\" or a non-empty list of indices");
+  }
+  const std::vector<double> rows =
+      f.has("matrix") && f.is_list("matrix") ? f.list_of_numbers("matrix") : f.numbers("matrix", 16);
+  const AffineMap map = [&] {
+    try {
+      return AffineMap::from_rows(rows);
+    } catch (const Error& e) {
+      throw usage_error(e.what());
+    }
+  }();
+  return [=](const CovarianceMesh& mesh) { return transform_vertices(mesh, vertices, map); };
+}
+
+Run parse_step(const std::string& op, Fields& f) {
+  if (op == "subdivide") {
+    if (f.has("faces")) {
+      const std::vector<int> faces = f.indices("faces");
+      if (faces.empty()) throw usage_error("\"faces\" is empty");
+      return [=](const CovarianceMesh& m) { return subdivide_faces(m, faces); };
+    }
+    return [](const CovarianceMesh& m) { return subdivide_all(m); };
+  }
+  if (op == "loop_cut") {
+    const auto e = f.edge("edge");
+    const int cuts = f.integer("cuts", 1);
+    const double slide = f.number("slide", 0);
+    return [=](const CovarianceMesh& m) { return loop_cut(m, e[0], e[1], cuts, slide); };
+  }
+  if (op == "split_edge") {
+    const auto e = f.edge("edge");
+    const double t = f.number("t", 0.5);
+    return [=](const CovarianceMesh& m) { return split_edge(m, e[0], e[1], t); };
+  }
+  if (op == "flip_edge") {
+    const auto e = f.edge("edge");
+    return [=](const CovarianceMesh& m) { return flip_edge(m, e[0], e[1]); };
+  }
+  if (op == "extrude") {
+    const char* what = one_of(f, {"faces", "edges", "vertices"});
+    if (std::string(what) == "faces") {
+      const std::vector<int> faces = f.indices("faces");
+      const double distance = f.number("distance");
+      return [=](const CovarianceMesh& m) { return extrude_faces(m, faces, distance); };
+    }
+    const Vec3 offset = f.vector3("offset");
+    if (std::string(what) == "edges") {
+      const Edges edges = f.edges("edges");
+      return [=](const CovarianceMesh& m) { return extrude_edges(m, edges, offset); };
+    }
+    const std::vector<int> vertices = f.indices("vertices");
+    return [=](const CovarianceMesh& m) { return extrude_vertices(m, vertices, offset); };
+  }
+  if (op == "inset") {
+    const std::vector<int> faces = f.indices("faces");
+    const double thickness = f.number("thickness");
+    return [=](const CovarianceMesh& m) { return inset_faces(m, faces, thickness); };
+  }
+  if (op == "delete" || op == "dissolve") {
+    const bool del = op == "delete";
+    const char* what = del ? one_of(f, {"faces", "edges", "vertices"}) : one_of(f, {"edges", "vertices"});
+    if (std::string(what) == "edges") {
+      const Edges edges = f.edges("edges");
+      return [=](const CovarianceMesh& m) { return del ? delete_edges(m, edges) : dissolve_edges(m, edges); };
+    }
+    const std::vector<int> list = f.indices(what);
+    if (std::string(what) == "faces") return [=](const CovarianceMesh& m) { return delete_faces(m, list); };
+    return [=](const CovarianceMesh& m) { return del ? delete_vertices(m, list) : dissolve_vertices(m, list); };
+  }
+  if (op == "merge") {
+    const std::vector<int> vertices = f.indices("vertices");
+    const std::string at = f.has("at") ? f.text("at") : "center";
+    const std::map<std::string, MergePoint> points{
+        {"center", MergePoint::center}, {"first", MergePoint::first}, {"last", MergePoint::last}};
+    if (!points.count(at)) throw usage_error("\"at\" must be \"center\", \"first\" or \"last\"");
+    const MergePoint point = points.at(at);
+    return [=](const CovarianceMesh& m) { return merge_vertices(m, vertices, point); };
+  }
+  if (op == "weld") {
+    const double distance = f.number("distance");
+    const std::vector<int> vertices = f.has("vertices") ? f.indices("vertices") : std::vector<int>();
+    return [=](const CovarianceMesh& m) { return weld_by_distance(m, vertices, distance); };
+  }
+  if (op == "fill") {
+    const std::vector<int> vertices = f.indices("vertices");
+    return [=](const CovarianceMesh& m) { return fill(m, vertices); };
+  }
+  if (op == "transform") return transform(f);
+  if (op == "add") {
+    const std::string name = f.text("primitive");
+    const std::optional<Primitive> primitive = primitive_named(name);
+    if (!primitive) {
+      std::string names;
+      for (const std::string& n : primitive_names()) names += (names.empty() ? "" : ", ") + n;
+      throw usage_error("unknown primitive \"" + name + "\" (known: " + names + ")");
+    }
+    const Vec3 center = f.has("center") ? f.vector3("center") : Vec3::Zero();
+    const double size = f.number("size", 1.0);
+    if (!(size > 0)) throw usage_error("\"size\" must be positive");
+    return [=](const CovarianceMesh& m) { return add_primitive(m, *primitive, center, size); };
+  }
+  if (op == "set") return set_gaussians(f);
+  std::string names;
+  for (const std::string& n : operation_names()) names += (names.empty() ? "" : ", ") + n;
+  throw usage_error("unknown operation (known: " + names + ")");
+}
+
+// "SOURCE: message", or the message alone for an unnamed source.
+std::string prefixed(const std::string& source, const std::string& message) {
+  return source.empty() ? message : source + ": " + message;
+}
+
+}  // namespace
+
+std::vector<std::string> operation_names() {
+  return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude",   "inset", "delete", "dissolve",
+          "merge",     "weld",     "fill",       "bridge",    "transform", "add",   "set"};
+}
+
+OperationList OperationList::parse(const std::string& text, const std::string& source) {
+  Json ops;
+  try {
+    ops = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    throw usage_error(prefixed(source, "not valid JSON (byte " + std::to_string(e.byte) + ")"));
+  }
+  if (!ops.is_array()) throw usage_error(prefixed(source, "expected a JSON array of operations [{\"op\": ...}, ...]"));
+  OperationList list;
+  list.source_ = source;
+  for (size_t i = 0; i < ops.size(); ++i) {
+    const std::string where = prefixed(source, "ops[" + std::to_string(i) + "]");
+    const Json& object = ops[i];
+    if (!object.is_object() || !object.contains("op") || !object["op"].is_string())
+      throw usage_error(where + ": expected an object with \"op\"");
+    const std::string name = object["op"].get<std::string>();
+    try {
+      Fields fields(object);
+      Run run;
+      if (name == "bridge") {
+        if (!fields.has("loops")) throw usage_error("\"loops\" is missing (two lists of boundary vertices)");
+        const Json& loops = object["loops"];
+        if (!loops.is_array() || loops.size() != 2) throw usage_error("\"loops\" must be two lists of vertices");
+        std::array<std::vector<int>, 2> l;
+        for (size_t k = 0; k < 2; ++k) {
+          if (!loops[k].is_array()) throw usage_error("\"loops\" must be two lists of vertices");
+          for (const Json& x : loops[k]) {
+            if (!x.is_number_integer() || x.get<long long>() < 0 || x.get<long long>() > INT32_MAX)
+              throw usage_error("\"loops\" must be two lists of vertex indices (integers from 0)");
+            l[k].push_back(x.get<int>());
+          }
+        }
+        run = [l](const CovarianceMesh& m) { return bridge(m, l[0], l[1]); };
+      } else {
+        run = parse_step(name, fields);
+      }
+      fields.check_all_used();
+      list.steps_.push_back({name, std::move(run)});
+    } catch (const Error& e) {
+      throw Error(where + " (" + name + "): " + e.what(), e.kind());
+    }
+  }
+  return list;
+}
+
+std::vector<std::string> OperationList::names() const {
+  std::vector<std::string> out;
+  for (const Step& s : steps_) out.push_back(s.name);
+  return out;
+}
+
+Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::string>* summaries) const {
+  Modelled current{mesh, {}, ""};
+  for (size_t i = 0; i < steps_.size(); ++i) {
+    try {
+      current = steps_[i].run(current.mesh);
+    } catch (const Error& e) {
+      throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + steps_[i].name + "): " + e.what()), e.kind());
+    }
+    if (summaries) summaries->push_back(current.summary);
+  }
+  return current;
+}
+
+}  // namespace gps

@@ -1,0 +1,42 @@
+#pragma once
+// Modelling operations as data, for scripts: a JSON array of objects such as
+//   [{"op": "loop_cut", "edge": [0, 1], "cuts": 2}, {"op": "extrude", "faces": [4], "distance": 0.5}]
+// applied in order, every index referring to the mesh as it stands before that operation (file
+// order for the first). docs/command_line.md lists every operation and its keys.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/modelling/mesh_arrays.h"
+
+namespace gps {
+
+class OperationList {
+public:
+  /// Reads the operations from JSON text; `source` names the text in errors ("ops.json"). Throws a
+  /// usage error naming the operation ("ops.json: ops[2] (extrude): \"distance\" must be a number")
+  /// for anything malformed, before any operation is applied.
+  static OperationList parse(const std::string& json_text, const std::string& source);
+
+  size_t size() const { return steps_.size(); }
+  /// The operations' names in order ("loop_cut", ...).
+  std::vector<std::string> names() const;
+
+  /// Applies every operation in order to a copy of `mesh`. On a refusal throws gps::Error naming the
+  /// operation and why ("ops.json: ops[1] (merge): ..."); nothing is changed. `summaries` gets one
+  /// line per operation applied.
+  Modelled apply(const CovarianceMesh& mesh, std::vector<std::string>* summaries = nullptr) const;
+
+private:
+  struct Step {
+    std::string name;
+    std::function<Modelled(const CovarianceMesh&)> run;
+  };
+  std::vector<Step> steps_;
+  std::string source_;
+};
+
+/// The operation names OperationList knows, for help texts.
+std::vector<std::string> operation_names();
+
+}  // namespace gps

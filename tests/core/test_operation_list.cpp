@@ -1,0 +1,111 @@
+// Modelling operations as data (core/modelling/operation_list.h): the same result as the calls they
+// name, indices that refer to the mesh as each operation finds it, and errors that name the
+// operation before anything is applied.
+#include <gtest/gtest.h>
+
+#include "core/mesh/error.h"
+#include "core/mesh/samples.h"
+#include "core/modelling/delete_elements.h"
+#include "core/modelling/extrude.h"
+#include "core/modelling/fill.h"
+#include "core/modelling/loop_cut.h"
+#include "core/modelling/operation_list.h"
+#include "core/plans/patch_layout.h"
+
+namespace gps {
+namespace {
+
+void expect_same_mesh(const CovarianceMesh& a, const CovarianceMesh& b) {
+  ASSERT_EQ(a.n_vertices(), b.n_vertices());
+  ASSERT_EQ(a.n_faces(), b.n_faces());
+  for (size_t v = 0; v < a.n_vertices(); ++v) {
+    EXPECT_EQ(a.mean(v), b.mean(v)) << "vertex " << v;
+    EXPECT_EQ(a.covariance(v), b.covariance(v)) << "vertex " << v;
+  }
+  for (size_t f = 0; f < a.n_faces(); ++f)
+    EXPECT_EQ(face_vertices(a.mesh, PolyMesh::FaceHandle(int(f))), face_vertices(b.mesh, PolyMesh::FaceHandle(int(f))))
+        << "face " << f;
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(OperationList, SameAsTheCallsItNames) {
+  const CovarianceMesh cube = make_sample("cube");
+  const OperationList ops = OperationList::parse(
+      R"([{"op":"loop_cut","edge":[0,1],"cuts":2},{"op":"extrude","faces":[1],"distance":0.25}])", "ops.json");
+  EXPECT_EQ(ops.names(), (std::vector<std::string>{"loop_cut", "extrude"}));
+  std::vector<std::string> summaries;
+  const Modelled scripted = ops.apply(cube, &summaries);
+  EXPECT_EQ(summaries.size(), 2u);
+  const Modelled direct = extrude_faces(loop_cut(cube, 0, 1, 2).mesh, {1}, 0.25);
+  expect_same_mesh(scripted.mesh, direct.mesh);
+  EXPECT_EQ(scripted.selection, direct.selection);
+}
+
+TEST(OperationList, IndicesReferToTheMeshAsItStands) {
+  // Deleting face 0 closes up the faces: the old face 1 is face 0 for the next operation, and the
+  // hole's corners keep their indices (no vertex is unused), so filling them closes the cube again.
+  const CovarianceMesh cube = make_sample("cube");
+  const Modelled m = OperationList::parse(R"([{"op":"delete","faces":[0]},{"op":"fill","vertices":[0,3,2,1]},
+                                              {"op":"extrude","faces":[0],"distance":1}])",
+                                          "")
+                         .apply(cube);
+  EXPECT_EQ(m.mesh.n_faces(), 6u + 4u);
+  const Modelled direct = extrude_faces(fill(delete_faces(cube, {0}).mesh, {0, 3, 2, 1}).mesh, {0}, 1.0);
+  expect_same_mesh(m.mesh, direct.mesh);
+  // Face 0 is now the old top face (z = 1): its vertices moved up by 1.
+  for (int v : face_vertices(m.mesh.mesh, PolyMesh::FaceHandle(0))) EXPECT_DOUBLE_EQ(m.mesh.mean(size_t(v)).z(), 2.0);
+}
+
+TEST(OperationList, SetAndTransform) {
+  const CovarianceMesh cube = make_sample("cube");
+  const Modelled m = OperationList::parse(R"([{"op":"set","vertices":[6,7],"covariance":[0.01,0,0,0.04,0,0.09]},
+      {"op":"transform","vertices":[6],"matrix":[1,0,0,1, 0,2,0,0, 0,0,1,0, 0,0,0,1]}])",
+                                          "")
+                         .apply(cube);
+  EXPECT_EQ(m.mesh.covariance(7), Vec3(0.01, 0.04, 0.09).asDiagonal().toDenseMatrix());
+  EXPECT_TRUE(m.mesh.covariance(6).isApprox(Vec3(0.01, 0.16, 0.09).asDiagonal().toDenseMatrix(), 1e-15));
+  EXPECT_EQ(m.mesh.mean(6), Vec3(2, 2, 1));
+  EXPECT_EQ(m.mesh.mean(0), cube.mean(0));
+}
+
+TEST(OperationList, MalformedListsNameTheOperationBeforeApplyingAny) {
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"([{"op":"subdivide"},{"op":"extrude","faces":[1]}])", R"(f: ops[1] (extrude): "distance" is missing)"},
+           {R"([{"op":"extrude","faces":[1],"distance":"far"}])",
+            R"(f: ops[0] (extrude): "distance" must be a finite number)"},
+           {R"([{"op":"extrude","faces":[1],"edges":[[0,1]],"distance":1}])", R"(f: ops[0] (extrude): give one of)"},
+           {R"([{"op":"loop_cut","edge":[0]}])", R"(f: ops[0] (loop_cut): "edge" must give an edge as [a, b])"},
+           {R"([{"op":"delete","faces":[-1]}])", R"(f: ops[0] (delete): "faces" must be a list of indices)"},
+           {R"([{"op":"merge","vertices":[0,1],"at":"middle"}])", R"(f: ops[0] (merge): "at" must be)"},
+           {R"([{"op":"add","primitive":"teapot"}])", R"(f: ops[0] (add): unknown primitive "teapot")"},
+           {R"([{"op":"subdivide","levels":2}])", R"(f: ops[0] (subdivide): unknown key "levels")"},
+           {R"([{"op":"transform","vertices":"all","matrix":[1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,1]}])",
+            "f: ops[0] (transform): the matrix's last row must be 0 0 0 1"},
+           {R"([3])", R"(f: ops[0]: expected an object with "op")"},
+           {R"({})", "f: expected a JSON array"},
+           {R"([)", "f: not valid JSON"}}) {
+    const std::string error = error_of([&, text = text] { OperationList::parse(text, "f"); });
+    EXPECT_EQ(error.rfind(message, 0), 0u) << text << " gave: " << error;
+  }
+}
+
+TEST(OperationList, RefusalNamesTheOperationAndChangesNothing) {
+  const CovarianceMesh cube = make_sample("cube");
+  const OperationList ops =
+      OperationList::parse(R"([{"op":"extrude","faces":[0],"distance":1},{"op":"loop_cut","edge":[0,6]}])", "ops.json");
+  const std::string error = error_of([&] { ops.apply(cube); });
+  EXPECT_EQ(error.rfind("ops.json: ops[1] (loop_cut): ", 0), 0u) << error;
+  EXPECT_EQ(cube.n_vertices(), 8u);
+  EXPECT_EQ(cube.n_faces(), 6u);
+}
+
+}  // namespace
+}  // namespace gps
