@@ -1,0 +1,268 @@
+#include "core/modelling/delete_elements.h"
+
+#include <algorithm>
+#include <set>
+#include <string>
+#include <unordered_map>
+
+#include "core/mesh/error.h"
+
+namespace gps {
+
+namespace {
+
+std::string count_of(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+std::string edge_name(int a, int b) { return "edge " + std::to_string(a) + "–" + std::to_string(b); }
+
+/// "<head>: F faces, V vertices removed" (the faces left out when `count_faces` is false, the
+/// vertices when none were removed).
+std::string summary(const std::string& head, size_t faces_removed, size_t vertices_removed, bool count_faces) {
+  std::vector<std::string> parts;
+  if (count_faces) parts.push_back(count_of(faces_removed, "face", "faces"));
+  if (vertices_removed > 0) parts.push_back(count_of(vertices_removed, "vertex", "vertices"));
+  std::string s = head;
+  for (size_t i = 0; i < parts.size(); ++i) s += (i == 0 ? ": " : ", ") + parts[i];
+  return parts.empty() ? s : s + " removed";
+}
+
+/// The mesh without the faces marked in `removed` and the vertices left unused. Refuses an empty
+/// result and a vertex at which the remaining faces would form more than one fan.
+Modelled without_faces(MeshArrays a, const std::vector<char>& removed, const std::string& head, bool count_faces) {
+  std::vector<char> touched(size_t(a.n_vertices()), 0);
+  std::vector<std::vector<int>> kept;
+  for (int f = 0; f < a.n_faces(); ++f) {
+    if (!removed[size_t(f)]) {
+      kept.push_back(std::move(a.faces[size_t(f)]));
+      continue;
+    }
+    for (int v : a.faces[size_t(f)]) touched[size_t(v)] = 1;
+  }
+  if (kept.empty()) throw Error("the result would have no faces");
+  const size_t faces_removed = a.faces.size() - kept.size();
+  a.faces = std::move(kept);
+
+  // Around a vertex that lost a face the remaining faces form open fans: one per corner there that
+  // has no face across its outgoing edge. More than one fan makes the vertex non-manifold.
+  const DirectedEdges edges = directed_edges(a);
+  std::vector<int> fans(size_t(a.n_vertices()), 0);
+  for (const auto& face : a.faces)
+    for (size_t k = 0; k < face.size(); ++k) {
+      const int v = face[k], w = face[(k + 1) % face.size()];
+      if (touched[size_t(v)] && !edges.count(directed_key(w, v))) ++fans[size_t(v)];
+    }
+  for (int v = 0; v < a.n_vertices(); ++v)
+    if (fans[size_t(v)] > 1)
+      throw Error("the result would be non-manifold at vertex " + std::to_string(v) + " (" +
+                  std::to_string(fans[size_t(v)]) + " fans of faces would meet only there)");
+
+  const int n_vertices = a.n_vertices();
+  drop_unused_vertices(a);
+  Modelled out;
+  out.mesh = build_mesh(a);
+  out.summary = summary(head, faces_removed, size_t(n_vertices - a.n_vertices()), count_faces);
+  return out;
+}
+
+/// Checks the edges (in the mesh; interior when `interior`) and returns them once each.
+std::vector<std::array<int, 2>> checked_edges(const DirectedEdges& de, const std::vector<std::array<int, 2>>& edges,
+                                              bool interior) {
+  if (edges.empty()) throw Error("no edges are selected");
+  std::vector<std::array<int, 2>> unique;
+  std::set<uint64_t> seen;
+  for (const auto& [x, y] : edges) {
+    if (!has_edge(de, x, y)) throw Error(edge_name(x, y) + " is not in the mesh");
+    if (interior && is_boundary_edge(de, x, y)) throw Error(edge_name(x, y) + " is on the boundary");
+    if (seen.insert(edge_key(x, y)).second) unique.push_back({x, y});
+  }
+  return unique;
+}
+
+/// Faces being merged across edges. Each directed edge knows its current face; a merged polygon keeps
+/// the lower face index and the corner order of that face.
+class FaceMerger {
+public:
+  explicit FaceMerger(MeshArrays& a) : a_(a), alive_(size_t(a.n_faces()), 1), merged_into_(size_t(a.n_faces()), -1) {
+    for (const auto& [key, place] : directed_edges(a)) face_of_[key] = place.first;
+  }
+
+  bool has(int x, int y) const { return face_of_.count(directed_key(x, y)) != 0; }
+
+  /// Removes the interior edge {p, q}, merging the faces on its two sides (`what` names the element
+  /// being dissolved, for errors).
+  void dissolve(int p, int q, const std::string& what) {
+    const int f = face_of_.at(directed_key(p, q)), g = face_of_.at(directed_key(q, p));
+    if (f == g) {
+      remove_spike(f, p, q, what);
+    } else {
+      const int keep = std::min(f, g), other = std::max(f, g);
+      const int x = keep == f ? p : q, y = keep == f ? q : p;  // keep has x → y, other has y → x
+      const std::vector<int>& k_face = a_.faces[size_t(keep)];
+      const std::vector<int>& o_face = a_.faces[size_t(other)];
+      const size_t i = corner_of(k_face, x, y), j = corner_of(o_face, y, x), n = o_face.size();
+      std::vector<int> merged(k_face.begin(), k_face.begin() + long(i) + 1);
+      for (size_t step = 2; step < n; ++step) merged.push_back(o_face[(j + step) % n]);
+      merged.insert(merged.end(), k_face.begin() + long(i) + 1, k_face.end());
+      for (size_t c = 0; c < n; ++c) face_of_[directed_key(o_face[c], o_face[(c + 1) % n])] = keep;
+      a_.faces[size_t(keep)] = std::move(merged);
+      a_.faces[size_t(other)].clear();
+      alive_[size_t(other)] = 0;
+      merged_into_[size_t(other)] = keep;
+    }
+    face_of_.erase(directed_key(p, q));
+    face_of_.erase(directed_key(q, p));
+  }
+
+  /// Removes the vertex v from the face that input face `f` is now part of: its edges u → v → w
+  /// become u → w.
+  void remove_from_face(int v, int f) {
+    while (!alive_[size_t(f)]) f = merged_into_[size_t(f)];
+    std::vector<int>& face = a_.faces[size_t(f)];
+    const size_t c = size_t(std::find(face.begin(), face.end(), v) - face.begin()), n = face.size();
+    const int u = face[(c + n - 1) % n], w = face[(c + 1) % n];
+    face.erase(face.begin() + long(c));
+    face_of_.erase(directed_key(u, v));
+    face_of_.erase(directed_key(v, w));
+    face_of_[directed_key(u, w)] = f;
+  }
+
+  /// Refuses a face left with fewer than 3 corners or a vertex twice; then drops the merged-away faces.
+  void finish() {
+    for (int f = 0; f < a_.n_faces(); ++f) {
+      if (!alive_[size_t(f)]) continue;
+      std::vector<int> corners = a_.faces[size_t(f)];
+      if (corners.size() < 3)
+        throw Error("face " + std::to_string(f) + " would be left with " + std::to_string(corners.size()) + " corners");
+      std::sort(corners.begin(), corners.end());
+      const auto twice = std::adjacent_find(corners.begin(), corners.end());
+      if (twice != corners.end())
+        throw Error("the merged face " + std::to_string(f) + " would have vertex " + std::to_string(*twice) + " twice");
+    }
+    std::vector<std::vector<int>> kept;
+    for (int f = 0; f < a_.n_faces(); ++f)
+      if (alive_[size_t(f)]) kept.push_back(std::move(a_.faces[size_t(f)]));
+    a_.faces = std::move(kept);
+  }
+
+private:
+  static size_t corner_of(const std::vector<int>& face, int x, int y) {
+    for (size_t k = 0; k < face.size(); ++k)
+      if (face[k] == x && face[(k + 1) % face.size()] == y) return k;
+    return face.size();
+  }
+
+  /// Both sides of {p, q} are one face: allowed only where the edge is a spike p → q → p (or
+  /// q → p → q), whose tip and one repeat of its base go.
+  void remove_spike(int f, int p, int q, const std::string& what) {
+    std::vector<int>& face = a_.faces[size_t(f)];
+    const size_t n = face.size(), i = corner_of(face, p, q), j = corner_of(face, q, p);
+    size_t tip;
+    if (j == (i + 1) % n)
+      tip = j;
+    else if (i == (j + 1) % n)
+      tip = i;
+    else
+      throw Error("dissolving " + what + " would cut a hole into face " + std::to_string(f));
+    const size_t repeat = (tip + 1) % n;
+    face.erase(face.begin() + long(std::max(tip, repeat)));
+    face.erase(face.begin() + long(std::min(tip, repeat)));
+  }
+
+  MeshArrays& a_;
+  std::vector<char> alive_;
+  std::vector<int> merged_into_;  ///< by merged-away face: the face it went into
+  std::unordered_map<uint64_t, int> face_of_;
+};
+
+Modelled merged(MeshArrays& a, FaceMerger& merger, const std::string& head) {
+  const int n_faces = a.n_faces(), n_vertices = a.n_vertices();
+  merger.finish();
+  drop_unused_vertices(a);
+  Modelled out;
+  out.mesh = build_mesh(a);
+  out.summary = summary(head, size_t(n_faces - a.n_faces()), size_t(n_vertices - a.n_vertices()), true);
+  return out;
+}
+
+}  // namespace
+
+Modelled delete_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) {
+  const MeshArrays a = arrays_of(mesh);
+  if (faces.empty()) throw Error("no faces are selected");
+  const std::vector<int> chosen = sorted_faces(a, faces);
+  std::vector<char> removed(size_t(a.n_faces()), 0);
+  for (int f : chosen) removed[size_t(f)] = 1;
+  return without_faces(a, removed, "deleted " + count_of(chosen.size(), "face", "faces"), false);
+}
+
+Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  const MeshArrays a = arrays_of(mesh);
+  if (vertices.empty()) throw Error("no vertices are selected");
+  const std::vector<int> chosen = sorted_vertices(a, vertices);
+  std::vector<char> selected(size_t(a.n_vertices()), 0);
+  for (int v : chosen) selected[size_t(v)] = 1;
+  std::vector<char> removed(size_t(a.n_faces()), 0);
+  for (int f = 0; f < a.n_faces(); ++f)
+    for (int v : a.faces[size_t(f)]) removed[size_t(f)] |= selected[size_t(v)];
+  return without_faces(a, removed, "deleted " + count_of(chosen.size(), "vertex", "vertices"), true);
+}
+
+Modelled delete_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
+  const MeshArrays a = arrays_of(mesh);
+  const DirectedEdges de = directed_edges(a);
+  const std::vector<std::array<int, 2>> chosen = checked_edges(de, edges, false);
+  std::vector<char> removed(size_t(a.n_faces()), 0);
+  for (const auto& [x, y] : chosen)
+    for (const uint64_t key : {directed_key(x, y), directed_key(y, x)})
+      if (const auto it = de.find(key); it != de.end()) removed[size_t(it->second.first)] = 1;
+  return without_faces(a, removed, "deleted " + count_of(chosen.size(), "edge", "edges"), true);
+}
+
+Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  MeshArrays a = arrays_of(mesh);
+  if (vertices.empty()) throw Error("no vertices are selected");
+  const std::vector<int> chosen = sorted_vertices(a, vertices);
+  // The vertices after each vertex in its faces, and its last face, in the input mesh.
+  std::vector<std::vector<int>> next(size_t(a.n_vertices()));
+  std::vector<int> face_of_vertex(size_t(a.n_vertices()), -1);
+  std::vector<char> on_boundary(size_t(a.n_vertices()), 0);
+  const DirectedEdges de = directed_edges(a);
+  for (int f = 0; f < a.n_faces(); ++f) {
+    const auto& face = a.faces[size_t(f)];
+    for (size_t k = 0; k < face.size(); ++k) {
+      const int v = face[k], w = face[(k + 1) % face.size()];
+      next[size_t(v)].push_back(w);
+      face_of_vertex[size_t(v)] = f;
+      if (!de.count(directed_key(w, v))) on_boundary[size_t(v)] = on_boundary[size_t(w)] = 1;
+    }
+  }
+  for (int v : chosen)
+    if (on_boundary[size_t(v)] && next[size_t(v)].size() != 1)
+      throw Error("vertex " + std::to_string(v) + " is on the boundary of " +
+                  count_of(next[size_t(v)].size(), "face", "faces") +
+                  " (only a boundary vertex of a single face can be dissolved)");
+
+  FaceMerger merger(a);
+  for (int v : chosen) {
+    const std::string what = "vertex " + std::to_string(v);
+    if (on_boundary[size_t(v)]) {
+      merger.remove_from_face(v, face_of_vertex[size_t(v)]);
+      continue;
+    }
+    for (int w : next[size_t(v)])
+      if (merger.has(v, w)) merger.dissolve(v, w, what);
+  }
+  return merged(a, merger, "dissolved " + count_of(chosen.size(), "vertex", "vertices"));
+}
+
+Modelled dissolve_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
+  MeshArrays a = arrays_of(mesh);
+  const std::vector<std::array<int, 2>> chosen = checked_edges(directed_edges(a), edges, true);
+  FaceMerger merger(a);
+  for (const auto& [x, y] : chosen) merger.dissolve(x, y, edge_name(x, y));
+  return merged(a, merger, "dissolved " + count_of(chosen.size(), "edge", "edges"));
+}
+
+}  // namespace gps

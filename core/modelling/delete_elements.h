@@ -1,0 +1,36 @@
+#pragma once
+// Deleting and dissolving vertices, edges and faces. Deleting removes faces (and the vertices no face
+// uses any more), leaving holes; dissolving merges the faces around an element into one polygon,
+// leaving no hole. Follows the modelling contract (core/modelling/mesh_arrays.h): the input is never
+// changed, a refusal throws a one-line gps::Error naming the element (by its index in the input mesh),
+// and the remaining vertices and faces compact in order. Selection after each: empty.
+#include <array>
+#include <vector>
+
+#include "core/modelling/mesh_arrays.h"
+
+namespace gps {
+
+/// Removes the faces; vertices no longer used by any face are removed too. Refuses a result that would
+/// be non-manifold (two fans of faces left touching at one vertex, named by its input index) or empty.
+Modelled delete_faces(const CovarianceMesh& mesh, const std::vector<int>& faces);
+
+/// Removes the vertices and every face that uses one of them (then the vertices left unused).
+Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices);
+
+/// Removes every face that has one of the edges (then the vertices left unused). Refuses an edge that
+/// is not in the mesh ("edge a–b is not in the mesh").
+Modelled delete_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges);
+
+/// Dissolves vertices: the faces around an interior vertex merge into one polygon without it; a
+/// boundary vertex that lies in a single face is simply removed from that face. Refuses any other
+/// boundary vertex, and a result with a polygon of fewer than 3 corners or with a vertex repeated.
+Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices);
+
+/// Dissolves interior edges: the two faces on each merge into one polygon (a chain of edges merges
+/// several faces; the merged polygon keeps the index of the first of them and starts at its first
+/// corner). Refuses boundary edges, an edge whose removal would cut a hole into a face, and a result
+/// with a vertex repeated in a face.
+Modelled dissolve_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges);
+
+}  // namespace gps

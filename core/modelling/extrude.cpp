@@ -1,0 +1,246 @@
+#include "core/modelling/extrude.h"
+
+#include <algorithm>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "core/mesh/error.h"
+
+namespace gps {
+
+namespace {
+
+const char* const kClosedPart = "extruding every face of a closed part would leave nothing to join";
+
+std::string count_of(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+std::string edge_name(int a, int b) { return "edge " + std::to_string(a) + "–" + std::to_string(b); }
+
+void check_offset(const Vec3& offset) {
+  if (!offset.allFinite()) {
+    std::ostringstream s;
+    s << "offset (" << offset.x() << ", " << offset.y() << ", " << offset.z() << ") is not finite";
+    throw Error(s.str());
+  }
+}
+
+/// Union-find over indices, for the region's corners and faces.
+struct Partition {
+  std::vector<int> parent;
+  explicit Partition(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int root(int i) {
+    while (parent[size_t(i)] != i) i = parent[size_t(i)] = parent[size_t(parent[size_t(i)])];
+    return i;
+  }
+  void join(int i, int j) { parent[size_t(root(i))] = root(j); }
+};
+
+/// Moves the region by `shift`: inner vertices moved, boundary vertices copied (same covariance).
+std::vector<int> move_region(MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
+  std::vector<Gaussian> copies;
+  for (const auto& s : r.sectors)
+    copies.push_back({a.means[size_t(s.vertex)] + shift, a.covariances[size_t(s.vertex)]});
+  std::vector<int> selection = detach_region(a, r, copies);
+  for (int v : r.inner_vertices) a.means[size_t(v)] += shift;
+  selection.insert(selection.end(), r.inner_vertices.begin(), r.inner_vertices.end());
+  std::sort(selection.begin(), selection.end());
+  return selection;
+}
+
+Modelled extruded_faces(MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
+  if (r.has_closed_part) throw Error(kClosedPart);
+  const int n_vertices = a.n_vertices(), n_faces = a.n_faces();
+  Modelled out;
+  out.selection = move_region(a, r, shift);
+  out.mesh = build_mesh(a);
+  out.summary = "extruded " + count_of(r.faces.size(), "face", "faces") + ": " +
+                count_of(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
+                count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
+  return out;
+}
+
+/// Extrudes boundary edges given as directed edges of their faces (unique).
+Modelled extruded_edges(MeshArrays& a, const std::vector<std::pair<int, int>>& directed, const Vec3& offset) {
+  const int n_faces = a.n_faces();
+  std::set<int> ends;
+  for (const auto& [x, y] : directed) ends.insert(x), ends.insert(y);
+  std::map<int, int> copy;
+  for (int v : ends) copy[v] = a.add_vertex({a.means[size_t(v)] + offset, a.covariances[size_t(v)]});
+  // The face has x → y, so the quad runs y → x and its outer edge x′ → y′.
+  for (const auto& [x, y] : directed) a.faces.push_back({y, x, copy[x], copy[y]});
+  Modelled out;
+  for (const auto& [v, c] : copy) out.selection.push_back(c);
+  out.mesh = build_mesh(a);
+  out.summary = "extruded " + count_of(directed.size(), "edge", "edges") + ": " +
+                count_of(copy.size(), "vertex", "vertices") + ", " +
+                count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
+  return out;
+}
+
+}  // namespace
+
+Vec3 newell_normal(const MeshArrays& a, int f) {
+  const auto& face = a.faces[size_t(f)];
+  Vec3 n = Vec3::Zero();
+  for (size_t k = 0; k < face.size(); ++k)
+    n += a.means[size_t(face[k])].cross(a.means[size_t(face[(k + 1) % face.size()])]);
+  return n;
+}
+
+FaceRegion face_region(const MeshArrays& a, const std::vector<int>& faces) {
+  if (faces.empty()) throw Error("no faces are selected");
+  FaceRegion r;
+  r.faces = sorted_faces(a, faces);
+  r.in_region.assign(size_t(a.n_faces()), 0);
+  for (int f : r.faces) r.in_region[size_t(f)] = 1;
+  const DirectedEdges edges = directed_edges(a);
+
+  // Corners of region faces, numbered face by face; corners at a vertex joined across interior
+  // region edges form its sectors, and faces joined across them form the region's pieces.
+  std::vector<int> first_corner(r.faces.size() + 1, 0);
+  for (size_t i = 0; i < r.faces.size(); ++i)
+    first_corner[i + 1] = first_corner[i] + int(a.faces[size_t(r.faces[i])].size());
+  std::vector<int> slot(size_t(a.n_faces()), -1);
+  for (size_t i = 0; i < r.faces.size(); ++i) slot[size_t(r.faces[i])] = int(i);
+  auto corner_id = [&](int f, int k) {
+    const int n = int(a.faces[size_t(f)].size());
+    return first_corner[size_t(slot[size_t(f)])] + ((k % n) + n) % n;
+  };
+  Partition corners(size_t(first_corner.back())), pieces(r.faces.size());
+  std::vector<char> on_boundary(size_t(first_corner.back()), 0);
+  std::vector<char> boundary_vertex(size_t(a.n_vertices()), 0);
+  for (int f : r.faces) {
+    const auto& face = a.faces[size_t(f)];
+    for (int k = 0; k < int(face.size()); ++k) {
+      const int v = face[size_t(k)], w = face[(size_t(k) + 1) % face.size()];
+      const auto twin = edges.find(directed_key(w, v));
+      if (twin == edges.end() || !r.in_region[size_t(twin->second.first)]) {
+        on_boundary[size_t(corner_id(f, k))] = 1;
+        boundary_vertex[size_t(v)] = boundary_vertex[size_t(w)] = 1;
+        r.boundary.emplace_back(f, k);
+      } else {
+        const auto [g, j] = twin->second;  // g has w → v at corner j, so v is its corner j + 1
+        corners.join(corner_id(f, k), corner_id(g, j + 1));
+        pieces.join(slot[size_t(f)], slot[size_t(g)]);
+      }
+    }
+  }
+  std::vector<char> piece_has_boundary(r.faces.size(), 0);
+  for (const auto& [f, k] : r.boundary) piece_has_boundary[size_t(pieces.root(slot[size_t(f)]))] = 1;
+  for (size_t i = 0; i < r.faces.size(); ++i)
+    if (pieces.root(int(i)) == int(i) && !piece_has_boundary[i]) r.has_closed_part = true;
+
+  std::map<int, size_t> sector_of_root;
+  std::set<int> inner;
+  for (int f : r.faces) {
+    const auto& face = a.faces[size_t(f)];
+    for (int k = 0; k < int(face.size()); ++k) {
+      const int v = face[size_t(k)];
+      if (!boundary_vertex[size_t(v)]) {
+        inner.insert(v);
+        continue;
+      }
+      const auto [it, added] = sector_of_root.emplace(corners.root(corner_id(f, k)), r.sectors.size());
+      if (added) r.sectors.emplace_back().vertex = v;
+      FaceRegion::Sector& s = r.sectors[it->second];
+      s.corners.emplace_back(f, k);
+      if (on_boundary[size_t(corner_id(f, k))]) s.outgoing = {f, k};
+      if (on_boundary[size_t(corner_id(f, k - 1))]) s.incoming = {f, (k + int(face.size()) - 1) % int(face.size())};
+    }
+  }
+  std::stable_sort(r.sectors.begin(), r.sectors.end(),
+                   [](const FaceRegion::Sector& x, const FaceRegion::Sector& y) { return x.vertex < y.vertex; });
+  r.inner_vertices.assign(inner.begin(), inner.end());
+  return r;
+}
+
+std::vector<int> detach_region(MeshArrays& a, const FaceRegion& r, const std::vector<Gaussian>& copies) {
+  std::vector<std::array<int, 2>> outer;
+  for (const auto& [f, k] : r.boundary) {
+    const auto& face = a.faces[size_t(f)];
+    outer.push_back({face[size_t(k)], face[(size_t(k) + 1) % face.size()]});
+  }
+  std::vector<int> added;
+  for (size_t s = 0; s < r.sectors.size(); ++s) {
+    added.push_back(a.add_vertex(copies[s]));
+    for (const auto& [f, k] : r.sectors[s].corners) a.faces[size_t(f)][size_t(k)] = added.back();
+  }
+  for (size_t i = 0; i < r.boundary.size(); ++i) {
+    const auto& face = a.faces[size_t(r.boundary[i].first)];
+    const size_t k = size_t(r.boundary[i].second);
+    a.faces.push_back({outer[i][0], outer[i][1], face[(k + 1) % face.size()], face[k]});
+  }
+  return added;
+}
+
+Modelled extrude_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double distance) {
+  if (!std::isfinite(distance)) throw Error("distance " + std::to_string(distance) + " is not finite");
+  MeshArrays a = arrays_of(mesh);
+  const FaceRegion r = face_region(a, faces);
+  if (r.has_closed_part) throw Error(kClosedPart);
+  Vec3 normal = Vec3::Zero();
+  double scale = 0;
+  for (int f : r.faces) {
+    const Vec3 n = newell_normal(a, f);
+    normal += n;
+    scale += n.norm();
+  }
+  Vec3 shift = Vec3::Zero();
+  if (distance != 0) {
+    if (!(normal.norm() > 1e-12 * scale))
+      throw Error("the faces' normals cancel out, so there is no direction to extrude along");
+    shift = distance * normal.normalized();
+  }
+  return extruded_faces(a, r, shift);
+}
+
+Modelled extrude_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, const Vec3& offset) {
+  check_offset(offset);
+  if (edges.empty()) throw Error("no edges are selected");
+  MeshArrays a = arrays_of(mesh);
+  const DirectedEdges de = directed_edges(a);
+  std::vector<std::pair<int, int>> directed;
+  std::set<uint64_t> seen;
+  for (const auto& [x, y] : edges) {
+    if (!has_edge(de, x, y)) throw Error(edge_name(x, y) + " is not in the mesh");
+    if (!is_boundary_edge(de, x, y)) throw Error(edge_name(x, y) + " is not on a boundary");
+    if (!seen.insert(edge_key(x, y)).second) continue;
+    if (de.count(directed_key(x, y)))
+      directed.emplace_back(x, y);
+    else
+      directed.emplace_back(y, x);
+  }
+  return extruded_edges(a, directed, offset);
+}
+
+Modelled extrude_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Vec3& offset) {
+  check_offset(offset);
+  MeshArrays a = arrays_of(mesh);
+  std::vector<char> selected(size_t(a.n_vertices()), 0);
+  for (int v : sorted_vertices(a, vertices)) selected[size_t(v)] = 1;
+  std::vector<int> region;
+  for (int f = 0; f < a.n_faces(); ++f) {
+    const auto& face = a.faces[size_t(f)];
+    if (std::all_of(face.begin(), face.end(), [&](int v) { return selected[size_t(v)]; })) region.push_back(f);
+  }
+  if (!region.empty()) return extruded_faces(a, face_region(a, region), offset);
+
+  const DirectedEdges de = directed_edges(a);
+  std::vector<std::pair<int, int>> directed;
+  for (const auto& face : a.faces)
+    for (size_t k = 0; k < face.size(); ++k) {
+      const int x = face[k], y = face[(k + 1) % face.size()];
+      if (selected[size_t(x)] && selected[size_t(y)] && !de.count(directed_key(y, x))) directed.emplace_back(x, y);
+    }
+  if (directed.empty()) throw Error("select faces or boundary edges to extrude");
+  return extruded_edges(a, directed, offset);
+}
+
+}  // namespace gps

@@ -1,0 +1,106 @@
+#include "core/modelling/inset.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "core/mesh/error.h"
+#include "core/modelling/extrude.h"
+
+namespace gps {
+
+namespace {
+
+std::string count_of(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+std::string number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+/// The inner copy of a sector's vertex: moved along the bisector of its boundary edges so that the
+/// inner edges lie `thickness` inside, with the covariance of the 9D blend towards the fan's face points.
+Gaussian inner_copy(const MeshArrays& a, const FaceRegion::Sector& s, double thickness) {
+  const std::string vertex = "vertex " + std::to_string(s.vertex);
+  std::set<int> fan;
+  for (const auto& [f, k] : s.corners) fan.insert(f);
+  Vec3 normal = Vec3::Zero();
+  for (int f : fan) normal += newell_normal(a, f);
+  if (!(normal.norm() > 0)) throw Error("the faces at " + vertex + " have no normal to inset along");
+  normal.normalize();
+
+  const auto& in_face = a.faces[size_t(s.incoming.first)];
+  const auto& out_face = a.faces[size_t(s.outgoing.first)];
+  const Vec3& p = a.means[size_t(s.vertex)];
+  const Vec3& u = a.means[size_t(in_face[size_t(s.incoming.second)])];
+  const Vec3& w = a.means[(size_t(out_face[(size_t(s.outgoing.second) + 1) % out_face.size()]))];
+  // A face's inside lies to the left of its edges: normal × edge direction.
+  const Vec3 left_in = normal.cross(p - u).normalized(), left_out = normal.cross(w - p).normalized();
+  const Vec3 bisector = (left_in + left_out).normalized();
+  const double cos_half = bisector.dot(left_in);
+  if (!left_in.allFinite() || !left_out.allFinite() || !bisector.allFinite() || !(cos_half > 1e-6))
+    throw Error("the corner at " + vertex + " is too sharp to inset");
+  const Vec3 moved = p + bisector * (thickness / cos_half);
+
+  // The 9D average of the fan's face points, and the fraction of the way to it the vertex moved.
+  std::vector<std::pair<int, double>> weights;
+  for (int f : fan) {
+    const auto& face = a.faces[size_t(f)];
+    for (int v : face) weights.emplace_back(v, 1.0 / double(fan.size() * face.size()));
+  }
+  const Vec3 centre = blend_gaussians(a, weights).mean;
+  const double t = (moved - p).norm() / (centre - p).norm();
+  if (!(t < 1))
+    throw Error("a thickness of " + number(thickness) + " would carry " + vertex + " past the centre of face " +
+                std::to_string(*fan.begin()));
+  for (auto& [v, w_v] : weights) w_v *= t;
+  weights.emplace_back(s.vertex, 1 - t);
+  return {moved, blend_gaussians(a, weights).covariance};
+}
+
+}  // namespace
+
+Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double thickness) {
+  if (!(std::isfinite(thickness) && thickness > 0))
+    throw Error("thickness " + number(thickness) + " is not a positive number");
+  MeshArrays a = arrays_of(mesh);
+  const FaceRegion r = face_region(a, faces);
+  if (r.has_closed_part) throw Error("insetting every face of a closed part would leave no border to inset from");
+
+  std::vector<Gaussian> copies;
+  for (const auto& s : r.sectors) copies.push_back(inner_copy(a, s, thickness));
+
+  // Every region face must keep its orientation and the direction of each of its edges.
+  std::vector<Vec3> old_normals;
+  for (int f : r.faces) old_normals.push_back(newell_normal(a, f));
+  const MeshArrays before = a;
+  const int n_faces = a.n_faces();
+  Modelled out;
+  out.selection = detach_region(a, r, copies);
+  for (size_t i = 0; i < r.faces.size(); ++i) {
+    const int f = r.faces[i];
+    const auto& old_face = before.faces[size_t(f)];
+    const auto& face = a.faces[size_t(f)];
+    bool kept = newell_normal(a, f).dot(old_normals[i]) > 0;
+    for (size_t k = 0; k < face.size() && kept; ++k) {
+      const size_t l = (k + 1) % face.size();
+      const Vec3 now = a.means[size_t(face[l])] - a.means[size_t(face[k])];
+      const Vec3 was = before.means[size_t(old_face[l])] - before.means[size_t(old_face[k])];
+      kept = now.dot(was) > 0;
+    }
+    if (!kept)
+      throw Error("a thickness of " + number(thickness) + " would turn face " + std::to_string(f) + " inside out");
+  }
+  out.mesh = build_mesh(a);
+  out.summary = "inset " + count_of(r.faces.size(), "face", "faces") + ": " +
+                count_of(out.selection.size(), "vertex", "vertices") + ", " +
+                count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
+  return out;
+}
+
+}  // namespace gps

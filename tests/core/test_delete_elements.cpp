@@ -1,0 +1,239 @@
+#include "core/modelling/delete_elements.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "core/mesh/samples.h"
+#include "tests/support/error_of.h"
+
+namespace gps {
+namespace {
+
+using test::error_of;
+
+/// Counts of a mesh, whether every directed edge appears once, and its boundary loops' lengths (sorted).
+struct Shape {
+  int vertices = 0, edges = 0, faces = 0;
+  bool oriented = true;
+  std::vector<int> boundary_loops;
+  int euler() const { return vertices - edges + faces; }
+};
+
+Shape shape_of(const CovarianceMesh& mesh) {
+  const MeshArrays a = arrays_of(mesh);
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& face : a.faces)
+    for (size_t k = 0; k < face.size(); ++k) ++directed[{face[k], face[(k + 1) % face.size()]}];
+  Shape s;
+  s.vertices = a.n_vertices();
+  s.faces = a.n_faces();
+  std::set<std::pair<int, int>> undirected;
+  std::map<int, int> boundary_next;
+  for (const auto& [e, n] : directed) {
+    s.oriented = s.oriented && n == 1;
+    undirected.insert({std::min(e.first, e.second), std::max(e.first, e.second)});
+    if (!directed.count({e.second, e.first})) boundary_next[e.first] = e.second;
+  }
+  s.edges = int(undirected.size());
+  std::set<int> seen;
+  for (const auto& [start, next] : boundary_next) {
+    if (seen.count(start)) continue;
+    int length = 0;
+    for (int v = start; seen.insert(v).second; v = boundary_next.at(v)) ++length;
+    s.boundary_loops.push_back(length);
+  }
+  std::sort(s.boundary_loops.begin(), s.boundary_loops.end());
+  return s;
+}
+
+/// A flat n × m grid of unit quads in the xy-plane (vertex j·(n+1) + i at (i, j)), covariance 0.01·I.
+CovarianceMesh flat_grid(int n, int m) {
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= n; ++i) p.emplace_back(i, j, 0);
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      faces.push_back({a, a + 1, a + n + 2, a + n + 1});
+    }
+  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.01 * Mat3::Identity()), faces);
+}
+
+void expect_unchanged(const CovarianceMesh& mesh, const MeshArrays& before) {
+  const MeshArrays after = arrays_of(mesh);
+  EXPECT_EQ(after.means, before.means);
+  EXPECT_EQ(after.covariances, before.covariances);
+  EXPECT_EQ(after.faces, before.faces);
+}
+
+TEST(DeleteFaces, ACubeFaceLeavesOneBoundaryLoopOfFourEdges) {
+  const CovarianceMesh cube = make_sample("cube");
+  const Modelled m = delete_faces(cube, {0});
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 8);
+  EXPECT_EQ(s.faces, 5);
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(s.boundary_loops, (std::vector<int>{4}));
+  EXPECT_EQ(s.euler(), 1);
+  EXPECT_TRUE(m.selection.empty());
+  EXPECT_EQ(m.summary, "deleted 1 face");
+  EXPECT_EQ(arrays_of(m.mesh).faces[0], (std::vector<int>{4, 5, 6, 7}));  // the rest compact in order
+}
+
+TEST(DeleteFaces, FacesAroundACornerTakeTheCornerVertexWithThem) {
+  const CovarianceMesh cube = make_sample("cube");
+  const MeshArrays before = arrays_of(cube);
+  const Modelled m = delete_faces(cube, {5, 0, 2});  // the three faces at vertex 0
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 7);
+  EXPECT_EQ(s.faces, 3);
+  EXPECT_EQ(s.boundary_loops, (std::vector<int>{6}));
+  EXPECT_EQ(m.summary, "deleted 3 faces: 1 vertex removed");
+  const MeshArrays a = arrays_of(m.mesh);
+  for (int v = 0; v < 7; ++v) EXPECT_EQ(a.means[size_t(v)], before.means[size_t(v + 1)]);
+  EXPECT_EQ(a.faces[0], (std::vector<int>{3, 4, 5, 6}));  // input face 1 {4, 5, 6, 7}
+}
+
+TEST(DeleteFaces, RefusesANonManifoldOrEmptyResult) {
+  const CovarianceMesh grid = flat_grid(2, 2);
+  const MeshArrays before = arrays_of(grid);
+  EXPECT_EQ(error_of([&] {
+              delete_faces(grid, {1, 2});
+            }),
+            "the result would be non-manifold at vertex 4 (2 fans of faces would meet only there)");
+  EXPECT_EQ(error_of([&] { delete_faces(grid, {0, 1, 2, 3}); }), "the result would have no faces");
+  EXPECT_EQ(error_of([&] { delete_faces(grid, {4}); }), "face 4 is not in the mesh (4 faces)");
+  expect_unchanged(grid, before);
+
+  // Vertex 3 goes with face 2, but the refusal names vertex 6 by its index in the input.
+  const CovarianceMesh big = flat_grid(3, 3);
+  EXPECT_EQ(error_of([&] {
+              delete_faces(big, {2, 4, 6});
+            }),
+            "the result would be non-manifold at vertex 6 (2 fans of faces would meet only there)");
+}
+
+TEST(DeleteVertices, AVertexTakesItsFaces) {
+  const CovarianceMesh grid = flat_grid(4, 4);
+  const Modelled m = delete_vertices(grid, {12});  // the centre: a square hole
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 24);
+  EXPECT_EQ(s.faces, 12);
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(s.boundary_loops, (std::vector<int>{8, 16}));
+  EXPECT_EQ(m.summary, "deleted 1 vertex: 4 faces, 1 vertex removed");
+  EXPECT_TRUE(m.selection.empty());
+
+  const Modelled corner = delete_vertices(make_sample("cube"), {0});
+  EXPECT_EQ(corner.mesh.n_vertices(), 7u);
+  EXPECT_EQ(corner.mesh.n_faces(), 3u);
+  EXPECT_EQ(error_of([&] { delete_vertices(grid, {25}); }), "vertex 25 is not in the mesh (25 vertices)");
+}
+
+TEST(DeleteEdges, AnEdgeTakesTheFacesOnBothSides) {
+  const CovarianceMesh cube = make_sample("cube");
+  const MeshArrays before = arrays_of(cube);
+  const Modelled m = delete_edges(cube, {{1, 0}});
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 8);
+  EXPECT_EQ(s.faces, 4);
+  EXPECT_EQ(s.boundary_loops, (std::vector<int>{6}));
+  EXPECT_EQ(m.summary, "deleted 1 edge: 2 faces removed");
+  EXPECT_EQ(error_of([&] { delete_edges(cube, {{0, 6}}); }), "edge 0–6 is not in the mesh");
+  expect_unchanged(cube, before);
+}
+
+// Cube faces 1 {4, 5, 6, 7} and 2 {0, 1, 5, 4} share edge 4–5.
+TEST(DissolveEdges, TwoFacesMergeIntoOneWithCornersInOrder) {
+  const CovarianceMesh cube = make_sample("cube");
+  const Modelled m = dissolve_edges(cube, {{4, 5}});
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 8);
+  EXPECT_EQ(s.faces, 5);
+  EXPECT_EQ(s.euler(), 2);
+  EXPECT_TRUE(s.oriented);
+  EXPECT_TRUE(s.boundary_loops.empty());
+  EXPECT_EQ(m.summary, "dissolved 1 edge: 1 face removed");
+  const MeshArrays a = arrays_of(m.mesh);
+  EXPECT_EQ(a.faces, (std::vector<std::vector<int>>{
+                         {0, 3, 2, 1}, {4, 0, 1, 5, 6, 7}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}}));
+}
+
+TEST(DissolveEdges, AChainOfEdgesMergesARowOfFaces) {
+  const CovarianceMesh row = flat_grid(3, 1);  // vertices 0..3 below, 4..7 above
+  const Modelled m = dissolve_edges(row, {{2, 6}, {1, 5}});
+  EXPECT_EQ(arrays_of(m.mesh).faces, (std::vector<std::vector<int>>{{0, 1, 2, 3, 7, 6, 5, 4}}));
+  EXPECT_EQ(shape_of(m.mesh).boundary_loops, (std::vector<int>{8}));
+}
+
+TEST(DissolveEdges, EveryEdgeAroundAVertexLeavesOnePolygonWithoutIt) {
+  const CovarianceMesh grid = flat_grid(3, 3);
+  const Modelled m = dissolve_edges(grid, {{5, 1}, {5, 4}, {5, 6}, {5, 9}});
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 15);
+  EXPECT_EQ(s.faces, 6);
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(s.euler(), 1);
+  EXPECT_EQ(arrays_of(m.mesh).faces[0], (std::vector<int>{0, 1, 2, 5, 9, 8, 7, 4}));
+}
+
+TEST(DissolveEdges, RefusesBoundaryEdgesAndRepeatedVertices) {
+  const CovarianceMesh cube = make_sample("cube");
+  const MeshArrays before = arrays_of(cube);
+  // Faces 1, 2 and 4 meet pairwise at edges 4–5, 5–6 and 1–5: merging all three leaves 1–5 hanging
+  // inside the merged face, which passes vertex 1 twice.
+  EXPECT_EQ(error_of([&] { dissolve_edges(cube, {{4, 5}, {5, 6}}); }), "the merged face 1 would have vertex 1 twice");
+  EXPECT_EQ(error_of([&] { dissolve_edges(cube, {{0, 7}}); }), "edge 0–7 is not in the mesh");
+  expect_unchanged(cube, before);
+  const CovarianceMesh grid = flat_grid(2, 2);
+  EXPECT_EQ(error_of([&] { dissolve_edges(grid, {{0, 1}}); }), "edge 0–1 is on the boundary");
+}
+
+TEST(DissolveVertices, AnInteriorVertexMergesItsFacesInOrder) {
+  const CovarianceMesh grid = flat_grid(3, 3);
+  const Modelled m = dissolve_vertices(grid, {5});
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 15);
+  EXPECT_EQ(s.faces, 6);
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(s.euler(), 1);
+  EXPECT_EQ(s.boundary_loops, (std::vector<int>{12}));
+  EXPECT_EQ(m.summary, "dissolved 1 vertex: 3 faces, 1 vertex removed");
+  EXPECT_TRUE(m.selection.empty());
+  EXPECT_EQ(arrays_of(m.mesh).faces[0], (std::vector<int>{0, 1, 2, 5, 9, 8, 7, 4}));
+
+  const Modelled corner = dissolve_vertices(make_sample("cube"), {0});
+  const Shape c = shape_of(corner.mesh);
+  EXPECT_EQ(c.vertices, 7);
+  EXPECT_EQ(c.faces, 4);
+  EXPECT_EQ(c.euler(), 2);
+  EXPECT_TRUE(c.oriented);
+  EXPECT_TRUE(c.boundary_loops.empty());
+}
+
+TEST(DissolveVertices, ABoundaryVertexOfOneFaceIsRemovedFromIt) {
+  const CovarianceMesh grid = flat_grid(2, 2);
+  const Modelled m = dissolve_vertices(grid, {0});
+  EXPECT_EQ(m.mesh.n_vertices(), 8u);
+  EXPECT_EQ(arrays_of(m.mesh).faces[0], (std::vector<int>{0, 3, 2}));  // input {1, 4, 3}
+  EXPECT_EQ(shape_of(m.mesh).boundary_loops, (std::vector<int>{7}));
+}
+
+TEST(DissolveVertices, Refusals) {
+  const CovarianceMesh grid = flat_grid(2, 2);
+  const MeshArrays before = arrays_of(grid);
+  EXPECT_EQ(error_of([&] { dissolve_vertices(grid, {1}); }),
+            "vertex 1 is on the boundary of 2 faces (only a boundary vertex of a single face can be dissolved)");
+  EXPECT_EQ(error_of([&] { dissolve_vertices(grid, {9}); }), "vertex 9 is not in the mesh (9 vertices)");
+  expect_unchanged(grid, before);
+  const CovarianceMesh triangle =
+      make_covariance_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, std::vector<Mat3>(3, Mat3::Identity()), {{0, 1, 2}});
+  EXPECT_EQ(error_of([&] { dissolve_vertices(triangle, {0}); }), "face 0 would be left with 2 corners");
+}
+
+}  // namespace
+}  // namespace gps

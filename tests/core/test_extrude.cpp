@@ -1,0 +1,219 @@
+#include "core/modelling/extrude.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "core/mesh/samples.h"
+#include "tests/support/error_of.h"
+
+namespace gps {
+namespace {
+
+using test::error_of;
+
+/// Counts of a mesh and whether its orientation is consistent (every directed edge once).
+struct Shape {
+  int vertices = 0, edges = 0, faces = 0, boundary_edges = 0;
+  bool oriented = true;
+  int euler() const { return vertices - edges + faces; }
+};
+
+Shape shape_of(const CovarianceMesh& mesh) {
+  const MeshArrays a = arrays_of(mesh);
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& face : a.faces)
+    for (size_t k = 0; k < face.size(); ++k) ++directed[{face[k], face[(k + 1) % face.size()]}];
+  Shape s;
+  s.vertices = a.n_vertices();
+  s.faces = a.n_faces();
+  std::set<std::pair<int, int>> undirected;
+  for (const auto& [e, n] : directed) {
+    s.oriented = s.oriented && n == 1;
+    undirected.insert({std::min(e.first, e.second), std::max(e.first, e.second)});
+    if (!directed.count({e.second, e.first})) ++s.boundary_edges;
+  }
+  s.edges = int(undirected.size());
+  return s;
+}
+
+void expect_same(const MeshArrays& x, const MeshArrays& y) {
+  EXPECT_EQ(x.means, y.means);
+  EXPECT_EQ(x.covariances, y.covariances);
+  EXPECT_EQ(x.faces, y.faces);
+}
+
+// The cube's face 1 is its +z face (corners 4, 5, 6, 7 at z = 1).
+TEST(ExtrudeFaces, OneCubeFaceAddsFourVerticesAndFourQuads) {
+  const CovarianceMesh cube = make_sample("cube");
+  const MeshArrays before = arrays_of(cube);
+  const double d = 0.37;
+  const Modelled m = extrude_faces(cube, {1}, d);
+  const Shape s = shape_of(m.mesh), s0 = shape_of(cube);
+  EXPECT_EQ(s.vertices, 12);
+  EXPECT_EQ(s.faces, 10);
+  EXPECT_EQ(s.euler(), s0.euler());
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(s.boundary_edges, 0);
+  EXPECT_EQ(m.selection, (std::vector<int>{8, 9, 10, 11}));
+  EXPECT_EQ(m.summary, "extruded 1 face: 4 vertices, 4 faces added");
+
+  const MeshArrays a = arrays_of(m.mesh);
+  EXPECT_EQ(a.faces[1], (std::vector<int>{8, 9, 10, 11}));
+  for (int k = 0; k < 4; ++k) {
+    const int v = 4 + k, copy = 8 + k;
+    EXPECT_EQ(a.means[size_t(v)], before.means[size_t(v)]);  // the originals stay
+    EXPECT_EQ(a.means[size_t(copy)].z(), before.means[size_t(v)].z() + d);
+    EXPECT_EQ(a.means[size_t(copy)].x(), before.means[size_t(v)].x());
+    EXPECT_EQ(a.means[size_t(copy)].y(), before.means[size_t(v)].y());
+    EXPECT_EQ(a.covariances[size_t(copy)], before.covariances[size_t(v)]);
+  }
+  // The first side quad joins edge 4 → 5 to its copy.
+  EXPECT_EQ(a.faces[6], (std::vector<int>{4, 5, 9, 8}));
+  expect_same(arrays_of(cube), before);
+}
+
+TEST(ExtrudeFaces, TwoAdjacentCubeFacesMoveAlongTheirAverageNormal) {
+  const CovarianceMesh cube = make_sample("cube");
+  const MeshArrays before = arrays_of(cube);
+  const Modelled m = extrude_faces(cube, {4, 1}, 1.0);  // +x and +z faces, sharing edge 5–6
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 14);
+  EXPECT_EQ(s.faces, 12);
+  EXPECT_EQ(s.euler(), 2);
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(s.boundary_edges, 0);
+  EXPECT_EQ(m.selection, (std::vector<int>{8, 9, 10, 11, 12, 13}));
+  const MeshArrays a = arrays_of(m.mesh);
+  const Vec3 shift = Vec3(1, 0, 1) / std::sqrt(2.0);
+  const std::vector<int> originals = {1, 2, 4, 5, 6, 7};
+  for (size_t k = 0; k < originals.size(); ++k)
+    EXPECT_LT((a.means[8 + k] - before.means[size_t(originals[k])] - shift).norm(), 1e-15);
+}
+
+TEST(ExtrudeFaces, FaceOnAGridBorderKeepsTheBoundary) {
+  const CovarianceMesh grid = make_sample("grid", 16);  // 4 × 4 quads, 25 vertices
+  const Shape s0 = shape_of(grid);
+  const Modelled m = extrude_faces(grid, {0}, 0.5);
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 29);
+  EXPECT_EQ(s.faces, 20);
+  EXPECT_EQ(s.euler(), s0.euler());
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(s.boundary_edges, s0.boundary_edges);
+}
+
+TEST(ExtrudeFaces, InnerVerticesOfARegionMoveInsteadOfBeingCopied) {
+  const CovarianceMesh grid = make_sample("grid", 16);
+  const MeshArrays before = arrays_of(grid);
+  const Modelled m = extrude_faces(grid, {5, 6, 9, 10}, 0.25);  // the 2 × 2 block around vertex 12
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 25 + 8);
+  EXPECT_EQ(s.faces, 16 + 8);
+  EXPECT_EQ(s.euler(), 1);
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(m.selection.size(), 9u);
+  EXPECT_EQ(m.selection[0], 12);
+  const MeshArrays a = arrays_of(m.mesh);
+  EXPECT_GT((a.means[12] - before.means[12]).norm(), 0.2);
+  EXPECT_LT(std::abs((a.means[12] - before.means[12]).norm() - 0.25), 1e-12);
+  EXPECT_EQ(a.covariances[12], before.covariances[12]);
+}
+
+TEST(ExtrudeFaces, DiagonalFacesGetOneCopyPerFanAtTheirSharedVertex) {
+  const CovarianceMesh grid = make_sample("grid", 4);  // 2 × 2 quads around vertex 4
+  const Modelled m = extrude_faces(grid, {0, 3}, 0.1);
+  const Shape s = shape_of(m.mesh);
+  EXPECT_EQ(s.vertices, 9 + 8);
+  EXPECT_EQ(s.faces, 4 + 8);
+  EXPECT_TRUE(s.oriented);
+}
+
+TEST(ExtrudeFaces, DistanceZeroIsAllowed) {
+  const Modelled m = extrude_faces(make_sample("cube"), {1}, 0.0);
+  const MeshArrays a = arrays_of(m.mesh);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(a.means[size_t(8 + k)], a.means[size_t(4 + k)]);
+}
+
+TEST(ExtrudeFaces, RefusalsNameTheProblemAndChangeNothing) {
+  const CovarianceMesh cube = make_sample("cube");
+  const MeshArrays before = arrays_of(cube);
+  EXPECT_EQ(error_of([&] { extrude_faces(cube, {6}, 1.0); }), "face 6 is not in the mesh (6 faces)");
+  EXPECT_EQ(error_of([&] { extrude_faces(cube, {-1}, 1.0); }), "face -1 is not in the mesh (6 faces)");
+  EXPECT_EQ(error_of([&] { extrude_faces(cube, {}, 1.0); }), "no faces are selected");
+  EXPECT_EQ(error_of([&] {
+              extrude_faces(cube, {0, 1, 2, 3, 4, 5}, 1.0);
+            }),
+            "extruding every face of a closed part would leave nothing to join");
+  EXPECT_EQ(error_of([&] { extrude_faces(cube, {0}, std::nan("")); }), "distance nan is not finite");
+  EXPECT_EQ(error_of([&] {
+              extrude_faces(cube, {0, 1}, 1.0);
+            }),
+            "the faces' normals cancel out, so there is no direction to extrude along");
+  expect_same(arrays_of(cube), before);
+}
+
+// The grid's first row of vertices is 0..4, on its boundary; its faces run counter-clockwise.
+TEST(ExtrudeEdges, BoundaryEdgesOfAGridGetQuadsOrientedLikeTheirFaces) {
+  const CovarianceMesh grid = make_sample("grid", 16);
+  const MeshArrays before = arrays_of(grid);
+  const Vec3 offset(0, -0.5, 0.1);
+  const Modelled m = extrude_edges(grid, {{1, 0}, {1, 2}, {0, 1}}, offset);
+  const Shape s = shape_of(m.mesh), s0 = shape_of(grid);
+  EXPECT_EQ(s.vertices, 28);
+  EXPECT_EQ(s.faces, 18);
+  EXPECT_EQ(s.euler(), s0.euler());
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(s.boundary_edges, s0.boundary_edges + 2);
+  EXPECT_EQ(m.selection, (std::vector<int>{25, 26, 27}));
+  EXPECT_EQ(m.summary, "extruded 2 edges: 3 vertices, 2 faces added");
+  const MeshArrays a = arrays_of(m.mesh);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(a.means[size_t(25 + k)], before.means[size_t(k)] + offset);
+    EXPECT_EQ(a.covariances[size_t(25 + k)], before.covariances[size_t(k)]);
+  }
+  EXPECT_EQ(a.faces[16], (std::vector<int>{1, 0, 25, 26}));  // face 0 has 0 → 1
+}
+
+TEST(ExtrudeEdges, RefusesInteriorEdgesAndNonEdges) {
+  const CovarianceMesh grid = make_sample("grid", 16);
+  const MeshArrays before = arrays_of(grid);
+  EXPECT_EQ(error_of([&] { extrude_edges(grid, {{0, 1}, {6, 7}}, Vec3(0, 0, 1)); }), "edge 6–7 is not on a boundary");
+  EXPECT_EQ(error_of([&] { extrude_edges(grid, {{0, 6}}, Vec3(0, 0, 1)); }), "edge 0–6 is not in the mesh");
+  EXPECT_EQ(error_of([&] { extrude_edges(grid, {{0, 99}}, Vec3(0, 0, 1)); }), "edge 0–99 is not in the mesh");
+  EXPECT_EQ(error_of([&] { extrude_edges(grid, {{0, 1}}, Vec3(0, INFINITY, 1)); }), "offset (0, inf, 1) is not finite");
+  expect_same(arrays_of(grid), before);
+}
+
+TEST(ExtrudeVertices, SelectedFacesAreExtrudedAndMovedByTheOffset) {
+  const CovarianceMesh grid = make_sample("grid", 16);
+  const MeshArrays before = arrays_of(grid);
+  const Vec3 offset(0.1, 0.2, 0.3);
+  const Modelled m = extrude_vertices(grid, {0, 1, 5, 6}, offset);
+  EXPECT_EQ(int(m.mesh.n_vertices()), 29);
+  EXPECT_EQ(int(m.mesh.n_faces()), 20);
+  EXPECT_TRUE(shape_of(m.mesh).oriented);
+  EXPECT_EQ(m.selection, (std::vector<int>{25, 26, 27, 28}));
+  const MeshArrays a = arrays_of(m.mesh);
+  const std::vector<int> originals = {0, 1, 5, 6};
+  for (size_t k = 0; k < 4; ++k) EXPECT_EQ(a.means[25 + k], before.means[size_t(originals[k])] + offset);
+}
+
+TEST(ExtrudeVertices, WithoutFacesTheSelectedBoundaryEdgesAreExtruded) {
+  const CovarianceMesh grid = make_sample("grid", 16);
+  const Modelled m = extrude_vertices(grid, {2, 0, 1}, Vec3(0, -1, 0));
+  EXPECT_EQ(int(m.mesh.n_vertices()), 28);
+  EXPECT_EQ(int(m.mesh.n_faces()), 18);
+  EXPECT_TRUE(shape_of(m.mesh).oriented);
+  EXPECT_EQ(error_of([&] {
+              extrude_vertices(grid, {6, 12}, Vec3(0, 0, 1));
+            }),
+            "select faces or boundary edges to extrude");
+  EXPECT_EQ(error_of([&] { extrude_vertices(grid, {25}, Vec3(0, 0, 1)); }),
+            "vertex 25 is not in the mesh (25 vertices)");
+}
+
+}  // namespace
+}  // namespace gps
