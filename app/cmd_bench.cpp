@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/plan_arguments.h"
 #include "bench/edit_figures.h"
+#include "bench/modelling_figures.h"
 #include "bench/frame_figures.h"
 #include "bench/preprocess_figures.h"
 #include "core/io/atomic_file.h"
@@ -46,7 +47,7 @@ std::vector<std::pair<std::string, int>> sample_list(const std::vector<std::stri
 
 void add_bench_command(CLI::App& app) {
   struct Args {
-    bool preprocess = false, render = false, edit = false;
+    bool preprocess = false, render = false, edit = false, model = false;
     int size = 0;  // the mode's default
     PlanArguments plans;
     std::string json, plots, context = "auto", mesh;
@@ -60,6 +61,8 @@ void add_bench_command(CLI::App& app) {
   cmd->add_flag("--render", args->render,
                 "GPU frame times per mesh and tessellation level, against a static vertex buffer");
   cmd->add_flag("--edit", args->edit, "edit-to-frame and frame times on a large sphere (1280x720, adaptive 6 px)");
+  cmd->add_flag("--model", args->model,
+                "operation-to-frame times of the modelling operations on spheres of 10,000 and 100,000 faces");
   cmd->add_option("--context", args->context, "GL context for --render and --edit: auto, osmesa, egl")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   cmd->add_option("--size", args->size,
@@ -79,13 +82,34 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--json", args->json, "also write the figures as JSON");
   cmd->add_option("--plots", args->plots, "with --render: write PREFIX_frame_time.png and PREFIX_memory.png");
   cmd->callback([args] {
-    if (int(args->preprocess) + int(args->render) + int(args->edit) != 1)
-      throw usage_error("bench: choose one thing to measure (--preprocess, --render, --edit)");
+    if (int(args->preprocess) + int(args->render) + int(args->edit) + int(args->model) != 1)
+      throw usage_error("bench: choose one thing to measure (--preprocess, --render, --edit, --model)");
     const auto make_context = [&args] {
       return create_offscreen_context(args->context == "egl"      ? ContextKind::egl
                                       : args->context == "osmesa" ? ContextKind::osmesa
                                                                   : ContextKind::automatic);
     };
+    if (args->model) {
+      const auto context = make_context();
+      const std::string name = args->mesh.empty() ? "sphere" : args->mesh;
+      std::printf("device: %s, 1280x720, adaptive 6 px\n", context->description().c_str());
+      std::printf("%-22s %-18s %12s %14s %10s %10s\n", "mesh", "operation", "operation", "re-plan+upload", "frame",
+                  "total");
+      nlohmann::json all = nlohmann::json::array();
+      for (const int faces : args->size ? std::vector<int>{args->size} : std::vector<int>{10000, 100000}) {
+        const auto r = modelling_figures(name, faces, args->plans.options());
+        for (const auto& op : r["operations"])
+          std::printf("%-22s %-18s %9.2f ms %11.2f ms %7.2f ms %7.2f ms\n",
+                      (r["mesh"].get<std::string>() + " (" + std::to_string(r["faces"].get<int>()) + ")").c_str(),
+                      op["operation"].get<std::string>().c_str(), op["operation_ms"].get<double>(),
+                      op["replan_upload_ms"].get<double>(), op["frame_ms"].get<double>(), op["total_ms"].get<double>());
+        std::fflush(stdout);
+        all.push_back(r);
+      }
+      if (!args->json.empty())
+        write_file_atomically(args->json, [&](std::ostream& out) { out << all.dump(2) << "\n"; });
+      return;
+    }
     if (args->edit) {
       const auto context = make_context();
       const auto r = edit_figures(args->mesh.empty() ? "sphere" : args->mesh, args->size ? args->size : 100000,

@@ -1,0 +1,87 @@
+#include "bench/modelling_figures.h"
+
+#include <glad/gl.h>
+
+#include <chrono>
+#include <functional>
+
+#include "core/mesh/samples.h"
+#include "core/modelling/affine_transform.h"
+#include "core/modelling/delete_elements.h"
+#include "core/modelling/extrude.h"
+#include "core/modelling/inset.h"
+#include "core/modelling/loop_cut.h"
+#include "core/modelling/merge_vertices.h"
+#include "core/modelling/subdivide_mesh.h"
+#include "core/plans/patch_layout.h"
+#include "core/support/median.h"
+#include "render/gl/render_target.h"
+#include "render/pipeline/surface_renderer.h"
+#include "view/camera.h"
+
+namespace gps {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+}  // namespace
+
+nlohmann::json modelling_figures(const std::string& name, int faces, const PlanOptions& options) {
+  const CovarianceMesh mesh = make_sample(name, faces);
+  SurfaceRenderer renderer;
+  RenderTarget target(1280, 720);
+  DrawOptions draw;
+  draw.pixels = 6.0f;
+  const Camera camera = frame_mesh(mesh);
+  renderer.set_mesh(mesh, options);
+  renderer.draw(target, camera, draw);
+  glFinish();
+
+  // The operations, each on a face, edge or vertex in the middle of the mesh.
+  const int f = int(mesh.n_faces() / 2);
+  const std::vector<int> corners = face_vertices(mesh.mesh, PolyMesh::FaceHandle(f));
+  const std::vector<std::pair<std::string, std::function<Modelled(const CovarianceMesh&)>>> operations = {
+      {"extrude 1 face", [&](const CovarianceMesh& m) { return extrude_faces(m, {f}, 0.01); }},
+      {"inset 1 face", [&](const CovarianceMesh& m) { return inset_faces(m, {f}, 1e-3); }},
+      {"loop cut", [&](const CovarianceMesh& m) { return loop_cut(m, corners[0], corners[1], 1); }},
+      {"subdivide 1 face", [&](const CovarianceMesh& m) { return subdivide_faces(m, {f}); }},
+      {"delete 1 face", [&](const CovarianceMesh& m) { return delete_faces(m, {f}); }},
+      {"merge 2 vertices",
+       [&](const CovarianceMesh& m) {
+         return merge_vertices(m, {corners[0], corners[1]}, MergePoint::center);
+       }},
+      {"transform all", [&](const CovarianceMesh& m) {
+         return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), 1.01 * Mat3::Identity()));
+       }}};
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& [label, operation] : operations) {
+    std::vector<double> op_s, plan_s, frame_s, total_s;
+    for (int round = 0; round < 5; ++round) {
+      const Clock::time_point start = Clock::now();
+      const Modelled result = operation(mesh);
+      op_s.push_back(seconds_since(start));
+      const Clock::time_point planned = Clock::now();
+      renderer.set_mesh(result.mesh, options);
+      glFinish();
+      plan_s.push_back(seconds_since(planned));
+      const Clock::time_point drawn = Clock::now();
+      renderer.draw(target, camera, draw);
+      glFinish();
+      frame_s.push_back(seconds_since(drawn));
+      total_s.push_back(seconds_since(start));
+    }
+    rows.push_back({{"operation", label},
+                    {"operation_ms", median(op_s) * 1e3},
+                    {"replan_upload_ms", median(plan_s) * 1e3},
+                    {"frame_ms", median(frame_s) * 1e3},
+                    {"total_ms", median(total_s) * 1e3}});
+  }
+  return {{"mesh", name + "/" + std::to_string(faces)},
+          {"faces", mesh.n_faces()},
+          {"vertices", mesh.n_vertices()},
+          {"operations", rows}};
+}
+
+}  // namespace gps

@@ -1,0 +1,16 @@
+#pragma once
+// `gpsurf bench --model`: operation-to-frame time of the modelling operations on a large mesh: the
+// operation (core/modelling/), the re-plan and upload of the new topology, and the frame that shows
+// it. A current GL context needed.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/plans/planned_surface.h"
+
+namespace gps {
+
+/// On sample `name` at `faces` faces in a 1280×720 frame at adaptive 6-pixel edges: each operation
+/// applied to the same mesh, median wall times of its phases (each to after glFinish) and in total.
+nlohmann::json modelling_figures(const std::string& name, int faces, const PlanOptions& options);
+
+}  // namespace gps
