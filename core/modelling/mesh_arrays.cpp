@@ -69,6 +69,40 @@ Gaussian face_point(const MeshArrays& a, int f) {
   return blend_gaussians(a, w);
 }
 
+void DirectedEdges::reserve(size_t n) {
+  entries_.reserve(n);
+  size_t capacity = 16;
+  while (capacity < 2 * n) capacity *= 2;
+  if (capacity <= slots_.size()) return;
+  slots_.assign(capacity, -1);
+  for (size_t i = 0; i < entries_.size(); ++i) slots_[slot_of(entries_[i].first)] = int(i);
+}
+
+size_t DirectedEdges::slot_of(uint64_t key) const {
+  const size_t mask = slots_.size() - 1;
+  // A 64-bit mix (splitmix64's finaliser) so that keys of neighbouring vertices spread over the table.
+  uint64_t h = key;
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+  h ^= h >> 31;
+  for (size_t s = size_t(h) & mask;; s = (s + 1) & mask)
+    if (slots_[s] < 0 || entries_[size_t(slots_[s])].first == key) return s;
+}
+
+void DirectedEdges::emplace(uint64_t key, std::pair<int, int> place) {
+  if (2 * (entries_.size() + 1) > slots_.size()) reserve(std::max<size_t>(2 * entries_.size(), 8));
+  const size_t s = slot_of(key);
+  if (slots_[s] >= 0) return;
+  slots_[s] = int(entries_.size());
+  entries_.emplace_back(key, place);
+}
+
+DirectedEdges::const_iterator DirectedEdges::find(uint64_t key) const {
+  if (slots_.empty()) return end();
+  const int i = slots_[slot_of(key)];
+  return i < 0 ? end() : entries_.begin() + i;
+}
+
 DirectedEdges directed_edges(const MeshArrays& a) {
   DirectedEdges edges;
   size_t n = 0;

@@ -4,7 +4,6 @@
 // that an operation either yields a manifold mesh or throws and changes nothing.
 #include <cstdint>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -55,8 +54,28 @@ Gaussian face_point(const MeshArrays& arrays, int face);
 inline uint64_t directed_key(int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); }
 inline uint64_t edge_key(int a, int b) { return a < b ? directed_key(a, b) : directed_key(b, a); }
 
-/// Where each directed edge a → b of the faces lies: (face, corner of a in it).
-using DirectedEdges = std::unordered_map<uint64_t, std::pair<int, int>>;
+/// Where each directed edge a → b of the faces lies: (face, corner of a in it), looked up by
+/// directed_key(a, b). A flat open-addressing table: built once per operation over every corner of
+/// the mesh, where a node-based map's allocations would cost more than the operation.
+class DirectedEdges {
+public:
+  using Entry = std::pair<uint64_t, std::pair<int, int>>;
+  using const_iterator = std::vector<Entry>::const_iterator;
+
+  /// Adds the edge unless it is there already.
+  void emplace(uint64_t key, std::pair<int, int> place);
+  const_iterator find(uint64_t key) const;
+  size_t count(uint64_t key) const { return find(key) != end() ? 1 : 0; }
+  size_t size() const { return entries_.size(); }
+  void reserve(size_t n);
+  const_iterator begin() const { return entries_.begin(); }
+  const_iterator end() const { return entries_.end(); }
+
+private:
+  size_t slot_of(uint64_t key) const;  // the slot holding `key`, or the empty slot where it would go
+  std::vector<Entry> entries_;         // in insertion order
+  std::vector<int> slots_;             // index into entries_, −1 empty; a power of two, at most half full
+};
 DirectedEdges directed_edges(const MeshArrays& arrays);
 
 /// Whether {a, b} is an edge, and whether it is a boundary edge (one face only).
