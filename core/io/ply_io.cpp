@@ -212,7 +212,7 @@ CovarianceMesh parse_ply_mesh(const std::string& data, const std::string& source
       e.header_line = line;
       // Elements may come in any order, but the vertices and the faces once each.
       for (const Element& earlier : elements)
-        if (earlier.name == e.name && (e.name == "vertex" || e.name == "face"))
+        if (earlier.name == e.name && (e.name == "vertex" || e.name == "face" || e.name == "tristrips"))
           fail(at + "a second " + e.name + " element (the first is line " + std::to_string(earlier.header_line) + ")");
       unsigned long long count = 0;
       const auto [p, ec] = std::from_chars(words[2].data(), words[2].data() + words[2].size(), count);
@@ -339,6 +339,45 @@ CovarianceMesh parse_ply_mesh(const std::string& data, const std::string& source
           }
         }
         faces.offsets.push_back(int(faces.verts.size()));
+        body.end_record();
+      }
+    } else if (e.name == "tristrips") {
+      // Triangle strips (as Stanford's scanned models store their faces): an index list per record,
+      // −1 restarting the strip; triangle n of a strip is (s[n], s[n+1], s[n+2]), its first two
+      // corners swapped for odd n so that all keep one orientation (as GL_TRIANGLE_STRIP). Triangles
+      // with a repeated corner, which strips use to turn or to join runs, are left out.
+      int list = -1;
+      for (size_t i = 0; i < e.properties.size(); ++i)
+        if (e.properties[i].is_list &&
+            (e.properties[i].name == "vertex_indices" || e.properties[i].name == "vertex_index"))
+          list = int(i);
+      if (list < 0) fail("the tristrips element has no vertex_indices list");
+      std::vector<int> strip;
+      for (size_t r = 0; r < e.count; ++r) {
+        body.begin_record();
+        for (size_t k = 0; k < e.properties.size(); ++k) {
+          const Property& p = e.properties[k];
+          const size_t n = p.is_list ? body.read_count(p.count_type) : 1;
+          strip.clear();
+          for (size_t i = 0; i <= n; ++i) {
+            const double index = i < n ? body.read(p.type) : -1;  // the record's end closes the last run
+            if (int(k) != list) continue;
+            if (index == -1) {
+              for (size_t t = 0; t + 2 < strip.size(); ++t) {
+                const int a = strip[t + (t % 2)], b = strip[t + 1 - (t % 2)], c = strip[t + 2];
+                if (a == b || b == c || a == c) continue;
+                faces.verts.insert(faces.verts.end(), {a, b, c});
+                faces.offsets.push_back(int(faces.verts.size()));
+              }
+              strip.clear();
+              continue;
+            }
+            if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
+              fail(body.where() + "strip " + std::to_string(r) + " refers to vertex " +
+                   BodyReader::format_number(index) + ", but there are " + std::to_string(vertex_count) + " vertices");
+            strip.push_back(int(index));
+          }
+        }
         body.end_record();
       }
     } else {

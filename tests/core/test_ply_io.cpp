@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -63,6 +65,39 @@ TEST(PlyIo, ReadsFloatsAnyPropertyOrderAndExtraElements) {
   EXPECT_EQ(c.mesh.n_vertices(), 3u);
   EXPECT_EQ(c.mesh.covariance(1), Vec3(1, 2, 3).asDiagonal().toDenseMatrix());
   EXPECT_EQ(c.mesh.mean(1), Vec3(1, 0, 0));
+}
+
+TEST(PlyIo, ReadsTriangleStripsWithRestarts) {
+  // A 4×3 grid of vertices: one strip along each row of squares, separated by a restart, and a
+  // strip of one degenerate triangle (a repeated index), left out.
+  std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 12\nproperty float x\nproperty float y\nproperty float z\n"
+      "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 4; ++x) ply += std::to_string(x) + " " + std::to_string(y) + " 0\n";
+  ply += "21 0 4 1 5 2 6 3 7 -1 4 8 5 9 6 10 7 11 -1 1 1 2\n";
+  const CovarianceMesh m = parse_ply(ply, "strips.ply").mesh;
+  EXPECT_EQ(m.n_vertices(), 12u);
+  ASSERT_EQ(m.n_faces(), 6u + 6u);
+  // One orientation throughout: every triangle faces +z (or every one −z).
+  int up = 0;
+  for (const auto f : m.mesh.faces()) {
+    std::vector<Vec3> p;
+    for (const auto v : m.mesh.fv_range(f)) p.push_back(m.mean(size_t(v.idx())));
+    up += (p[1] - p[0]).cross(p[2] - p[0]).z() > 0 ? 1 : -1;
+  }
+  EXPECT_EQ(std::abs(up), 12);
+  const std::string bad =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n4 0 1 2 7\n";
+  try {
+    parse_ply(bad, "bad.ply");
+    FAIL() << "an index past the vertices was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("strip 0 refers to vertex 7, but there are 3 vertices"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(PlyIo, PlainPlyGetsInferredCovariances) {
