@@ -1,5 +1,9 @@
 #pragma once
-// Undo and redo for vertex edits: one step per drag, preset or numeric entry; exact restore.
+// Undo and redo: one step per drag, preset, numeric entry or modelling operation; exact restore.
+// A vertex edit keeps the Gaussians of the vertices it changed; a modelling operation, which may
+// change the topology, keeps the whole mesh before and after it (and the selections that go with them).
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
@@ -13,18 +17,40 @@ struct VertexEdit {
   std::vector<Mat3> covariances_before, covariances_after;
 };
 
+/// The whole mesh before and after a modelling operation, with the selected vertices of each.
+struct MeshReplacement {
+  std::shared_ptr<const CovarianceMesh> before, after;
+  std::vector<int> selection_before, selection_after;
+};
+
+/// What an undo or redo restored: the vertices whose Gaussians it set, or a whole mesh (with the
+/// selection that goes with it).
+struct Restored {
+  std::vector<int> vertices;
+  std::optional<std::vector<int>> replaced_selection;  // set: the mesh was replaced as a whole
+};
+
 class EditHistory {
 public:
   /// Records the state of `vertices` before an action (call before changing them).
   static VertexEdit begin(const CovarianceMesh& mesh, const std::vector<int>& vertices);
   /// Completes `edit` with the state after the action and pushes it (drops the redo steps).
   void commit(VertexEdit edit, const CovarianceMesh& mesh);
+  /// Pushes a replacement of the whole mesh (drops the redo steps).
+  void commit(MeshReplacement replacement);
+  /// Folds the last step, a vertex edit, into the replacement before it: the replacement's result
+  /// becomes `mesh` (e.g. an extrusion and the move that follows it undo as one). False when the last
+  /// two steps are not a replacement then a vertex edit.
+  bool fold_last_into_replacement(const CovarianceMesh& mesh, const std::vector<int>& selection);
+
+  /// Forgets the steps that redo would replay (a cancelled tool's undone step).
+  void drop_redo();
 
   bool can_undo() const { return position_ > 0; }
   bool can_redo() const { return position_ < steps_.size(); }
-  /// Restores the state before the last step; returns the vertices it changed.
-  std::vector<int> undo(CovarianceMesh& mesh);
-  std::vector<int> redo(CovarianceMesh& mesh);
+  /// Restores the state before the last step.
+  Restored undo(CovarianceMesh& mesh);
+  Restored redo(CovarianceMesh& mesh);
 
   /// Unsaved changes: the history is not where it was when mark_saved() was last called.
   bool dirty() const { return position_ != saved_; }
@@ -32,7 +58,12 @@ public:
   void clear() { steps_.clear(), position_ = 0, saved_ = 0; }
 
 private:
-  std::vector<VertexEdit> steps_;
+  struct Step {
+    VertexEdit edit;
+    std::optional<MeshReplacement> replacement;  // set: the step replaced the whole mesh
+  };
+  void push(Step step);
+  std::vector<Step> steps_;
   size_t position_ = 0;  // steps_[0, position_) are applied
   size_t saved_ = 0;     // never reachable again once a branch drops it: SIZE_MAX
 };

@@ -251,7 +251,7 @@ void EditorApp::draw_ui() {
   draw_help_overlay(&view_.show_help, commands_.key_bindings());
   draw_unsaved_prompt();
   handle_browser_result();
-  draw_status_bar(document_, selection_.vertices().size(), status_, status_error_);
+  draw_status_bar(document_, selection_summary(), status_, status_error_);
   note_free_region();
   update_title();
 }

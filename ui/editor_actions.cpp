@@ -116,11 +116,9 @@ void EditorApp::save_to(const std::string& path) {
 }
 
 void EditorApp::undo_redo(bool undo) {
-  if (mode_ == Mode::handle) return;  // not in the middle of a drag
-  if (undo)
-    document_.undo();
-  else
-    document_.redo();
+  if (mode_ == Mode::handle || modal_active()) return;  // not in the middle of a drag or a tool
+  // A modelling step replaced the whole mesh: the GPU rebuilds for it, the camera stays.
+  if (const auto selection = undo ? document_.undo() : document_.redo()) rebuild_after_undo(*selection);
 }
 
 void EditorApp::draw_unsaved_prompt() {

@@ -62,6 +62,14 @@ private:
   std::optional<HandleFrame> gizmo_frame(const Viewport& v) const;
   Viewport viewport() const;
   void draw_handles_and_box();
+  // Selecting in the vertex, edge and face modes (editor_selection_commands.cpp).
+  void build_selection_commands();
+  void set_select_mode(SelectMode mode);
+  void click_select(glm::vec2 pixel, bool toggle);
+  void loop_select(glm::vec2 pixel, bool toggle);
+  void box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract);
+  std::vector<int> vertices_under(glm::vec2 pixel) const;  // the element under the cursor, in the mode
+  std::string selection_summary() const;                    // for the status bar
   // Commands (editor_commands.cpp).
   void build_commands();
   void frame_vertices(const std::vector<int>& vertices);  // none: the whole mesh
@@ -123,6 +131,9 @@ private:
   glm::vec2 free_min_{0.0f}, free_max_{1.0f};  // the part of the window the panels leave free
   std::optional<ScreenBox> gizmo_box_;         // where the gizmo was drawn this frame (the statistics keep clear of it)
   std::vector<int> shown_ellipsoids_;          // the vertices whose ellipsoids are drawn, when not all
+  SelectMode select_mode_ = SelectMode::vertex;
+  bool select_through_ = false;  // box selection takes hidden vertices too (X-ray)
+  bool alt_press_ = false;       // the left press had Alt: a click selects a loop, a drag orbits
 
   Clock::time_point frame_input_time_{}, last_frame_time_ = Clock::now();
   Action pending_;

@@ -79,13 +79,13 @@ void EditorApp::build_commands() {
          true});
   t.add({"Edit",
          "Mirror editing",
-         {key(GLFW_KEY_M)},
+         {key(GLFW_KEY_M, false, true)},
          [this] { reach_options_.mirror = !reach_options_.mirror; },
          always,
          [this] { return reach_options_.mirror; }});
   // View
   t.add({"View", "Frame all", {key(GLFW_KEY_HOME)}, [this] { frame_vertices({}); }});
-  t.add({"View", "Frame selection (all when none)", {key(GLFW_KEY_F), key(GLFW_KEY_KP_DECIMAL)}, [this] {
+  t.add({"View", "Frame selection (all when none)", {key(GLFW_KEY_KP_DECIMAL)}, [this] {
            frame_vertices(selection_.vertices());
          }});
   t.add(
@@ -103,7 +103,7 @@ void EditorApp::build_commands() {
          [this] { return camera_.orthographic; }});
   t.add({"View",
          "Ellipsoids",
-         {key(GLFW_KEY_E)},
+         {key(GLFW_KEY_E, false, true)},
          [this] { view_.draw.ellipsoids = !view_.draw.ellipsoids; },
          always,
          [this] { return view_.draw.ellipsoids; },
@@ -129,6 +129,7 @@ void EditorApp::build_commands() {
          [this] { view_.show_statistics = !view_.show_statistics; },
          always,
          [this] { return view_.show_statistics; }});
+  build_modelling_commands();
   // Help
   t.add({"Help",
          "Mouse and keys",

@@ -122,16 +122,44 @@ void EditorDocument::cancel_edit() {
   edit_index_.clear();
 }
 
-void EditorDocument::undo() {
-  if (!can_undo()) return;
-  const std::vector<int> vertices = history_.undo(mesh_);
-  changed_.insert(changed_.end(), vertices.begin(), vertices.end());
+void EditorDocument::apply(const Modelled& result, const std::vector<int>& selection_before) {
+  if (edit_) commit_edit();
+  MeshReplacement step;
+  step.before = std::make_shared<const CovarianceMesh>(std::move(mesh_));
+  step.after = std::make_shared<const CovarianceMesh>(result.mesh);
+  step.selection_before = selection_before;
+  step.selection_after = result.selection;
+  mesh_ = result.mesh;
+  history_.commit(std::move(step));
+  changed_.clear();  // the vertices are new: the GPU rebuilds
 }
 
-void EditorDocument::redo() {
-  if (!can_redo()) return;
-  const std::vector<int> vertices = history_.redo(mesh_);
-  changed_.insert(changed_.end(), vertices.begin(), vertices.end());
+bool EditorDocument::commit_edit_into_last_operation(const std::vector<int>& selection) {
+  if (!commit_edit()) return false;
+  history_.fold_last_into_replacement(mesh_, selection);
+  return true;
+}
+
+std::optional<std::vector<int>> EditorDocument::undo() {
+  if (!can_undo()) return std::nullopt;
+  Restored restored = history_.undo(mesh_);
+  if (restored.replaced_selection) changed_.clear();
+  changed_.insert(changed_.end(), restored.vertices.begin(), restored.vertices.end());
+  return restored.replaced_selection;
+}
+
+std::optional<std::vector<int>> EditorDocument::redo() {
+  if (!can_redo()) return std::nullopt;
+  Restored restored = history_.redo(mesh_);
+  if (restored.replaced_selection) changed_.clear();
+  changed_.insert(changed_.end(), restored.vertices.begin(), restored.vertices.end());
+  return restored.replaced_selection;
+}
+
+std::optional<std::vector<int>> EditorDocument::discard_last_operation() {
+  std::optional<std::vector<int>> selection = undo();
+  history_.drop_redo();
+  return selection;
 }
 
 std::vector<int> EditorDocument::take_changed() {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "core/modelling/mesh_arrays.h"
 #include "ui/edit_history.h"
 
 namespace gps {
@@ -51,10 +52,25 @@ public:
   /// Closes the edit, restoring the start values; no undo step.
   void cancel_edit();
 
+  /// Replaces the mesh by a modelling operation's result as one undo step, which restores the mesh
+  /// exactly (vertices, faces, their order and values) and `selection_before` with it. Closes an open
+  /// edit first. The GPU must rebuild for the new mesh (take_changed() does not list it).
+  void apply(const Modelled& result, const std::vector<int>& selection_before);
+  /// Closes the open edit and folds it into the modelling step just applied, so that both undo as
+  /// one (an extrusion and its move); `selection` goes with the result. Without such a step it
+  /// commits the edit as its own step. Returns whether anything changed.
+  bool commit_edit_into_last_operation(const std::vector<int>& selection);
+
+  /// Undoes the last step and forgets it (no redo): a modal tool cancelled after its operation was
+  /// applied. Returns the selection before it when it replaced the mesh.
+  std::optional<std::vector<int>> discard_last_operation();
+
   bool can_undo() const { return !editing() && history_.can_undo(); }
   bool can_redo() const { return !editing() && history_.can_redo(); }
-  void undo();
-  void redo();
+  /// Undo and redo; when the step replaced the whole mesh they return the selection that goes with
+  /// the restored mesh (the GPU must rebuild), else nullopt (take_changed() lists the vertices).
+  std::optional<std::vector<int>> undo();
+  std::optional<std::vector<int>> redo();
 
   /// The vertices whose Gaussians changed since the last call (ascending, unique): what the GPU
   /// must re-read. A new mesh is not listed: whoever opens it rebuilds from scratch.

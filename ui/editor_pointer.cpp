@@ -56,6 +56,7 @@ int EditorApp::pick(glm::vec2 pixel) const {
 
 void EditorApp::handle_event(const InputEvent& e) {
   const ImGuiIO& io = ImGui::GetIO();
+  if (modal_event(e)) return;  // G / S / R, extrude, loop cut, inset (editor_modelling.cpp)
   switch (e.type) {
     case InputEvent::Type::press:
       if (!io.WantCaptureMouse && !prompt_unsaved_) press(e);

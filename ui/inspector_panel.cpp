@@ -97,6 +97,27 @@ std::optional<double> InspectorPanel::number_field(const char* label, double val
   return typed;
 }
 
+// The mirror partners of the selected vertices (matched at their start positions) take each one's
+// change mirrored across the plane: μ_p = μ_p⁰ + M(μ_s − μ_s⁰), and Σ_p = M Σ_s M once Σ_s changed.
+void InspectorPanel::mirror_change(EditorDocument& document, const std::vector<int>& vertices) const {
+  if (!reach_.mirror) return;
+  ReachOptions mirror_only = reach_;
+  mirror_only.proportional = false;
+  std::vector<Vec3> means(document.mesh().n_vertices());
+  for (size_t v = 0; v < means.size(); ++v) means[v] = document.start_mean(int(v));
+  Mat3 m = Mat3::Identity();
+  m(reach_.mirror_axis, reach_.mirror_axis) = -1.0;
+  for (const ReachedVertex& r : edit_reach(means, vertices, mirror_only)) {
+    if (!r.mirrored) continue;
+    const int s = vertices[r.source];
+    document.set_mean(r.vertex,
+                      document.start_mean(r.vertex) + m * (document.mesh().mean(size_t(s)) - document.start_mean(s)));
+    const Mat3& covariance = document.mesh().covariance(size_t(s));
+    document.set_covariance(r.vertex, covariance == document.start_covariance(s) ? document.start_covariance(r.vertex)
+                                                                                 : Mat3(m * covariance * m));
+  }
+}
+
 // Begins the document's edit when a field is activated and commits it when the user leaves it
 // (Escape: cancels it, the values as before the entry).
 void InspectorPanel::track_entry(EditorDocument& document) {
@@ -126,6 +147,7 @@ void InspectorPanel::draw_means(EditorDocument& document, const std::vector<int>
         m[k] = *typed;
         document.set_mean(v, m);
       }
+      mirror_change(document, vertices);
     }
     track_entry(document);
   }
@@ -153,6 +175,7 @@ void InspectorPanel::draw_sigmas(EditorDocument& document, const std::vector<int
         e.sigmas[k] = std::clamp(*typed, 1e-5, 1e5);
         document.set_covariance(v, covariance_from_axes(e.axes, e.sigmas));
       }
+      mirror_change(document, vertices);
     }
     if (ImGui::IsItemActivated()) entry_axes_ = axes;
     track_entry(document);
@@ -175,6 +198,7 @@ void InspectorPanel::draw_rotation(EditorDocument& document, const std::vector<i
       wanted[k] = *typed;
       const Mat3 turn = rotation_from_euler_degrees(wanted) * axes.axes.transpose();
       for (const int v : vertices) document.set_covariance(v, rotate_covariance(document.start_covariance(v), turn));
+      mirror_change(document, vertices);
     }
     track_entry(document);
   }
@@ -211,6 +235,7 @@ void InspectorPanel::draw_presets(EditorDocument& document, const std::vector<in
   document.begin_edit();
   for (size_t i = 0; i < vertices.size(); ++i)
     document.set_covariance(vertices[i], clamp_spd(covariances[i], document.mesh().covariance(size_t(vertices[i]))));
+  mirror_change(document, vertices);
   document.commit_edit();
 }
 
@@ -223,6 +248,13 @@ void InspectorPanel::draw(EditorDocument& document, const Selection& selection, 
   if (!ImGui::Begin("Inspector", open)) {
     ImGui::End();
     return;
+  }
+  reach_ = reach;
+  if (!note_.empty()) {
+    if (note_error_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
+    ImGui::TextWrapped("%s", note_.c_str());
+    if (note_error_) ImGui::PopStyleColor();
+    ImGui::Separator();
   }
   const int active = selection.active();
   if (active < 0) {
@@ -254,7 +286,7 @@ void InspectorPanel::draw(EditorDocument& document, const Selection& selection, 
     int falloff = int(reach.falloff);
     if (ImGui::Combo("falloff", &falloff, kFalloffNames)) reach.falloff = Falloff(falloff);
   }
-  ImGui::Checkbox("mirror (M)", &reach.mirror);
+  ImGui::Checkbox("mirror (Shift+M)", &reach.mirror);
   if (reach.mirror) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(60);

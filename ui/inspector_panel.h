@@ -3,7 +3,9 @@
 // gizmo's axes) and orientation, presets, and how far edits reach (proportional, mirror). Values
 // that differ across the selection show as "mixed"; a typed value applies to every selected vertex.
 // Fields show rounded values of a fixed width; a field being edited holds the full-precision value.
-// Every change is one undo step (one per preset, one per numeric entry).
+// Every change is one undo step (one per preset, one per numeric entry); with mirror editing on, the
+// mirror image of each selected vertex takes the mirrored change, as in a drag. The panel also says
+// what the last modelling operation did or why it was refused.
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +21,8 @@ class InspectorPanel {
 public:
   /// Draws the panel (between ImGui::NewFrame and ImGui::Render); edits go through the document.
   void draw(EditorDocument& document, const Selection& selection, ReachOptions& reach, bool* open);
+  /// What the last modelling operation did (or, `error`, why it was refused), shown at the top.
+  void set_note(const std::string& note, bool error) { note_ = note, note_error_ = error; }
 
 private:
   void draw_means(EditorDocument& document, const std::vector<int>& vertices);
@@ -26,6 +30,7 @@ private:
   void draw_rotation(EditorDocument& document, const std::vector<int>& vertices, int active);
   void draw_presets(EditorDocument& document, const std::vector<int>& vertices);
   void track_entry(EditorDocument& document);
+  void mirror_change(EditorDocument& document, const std::vector<int>& vertices) const;
   std::optional<double> number_field(const char* label, double value, bool mixed, int decimals, float width);
 
   bool entry_open_ = false;                  // a numeric entry in progress: committed when its field is left
@@ -33,6 +38,9 @@ private:
   double isotropic_sigma_ = 0.05;
   unsigned precise_id_ = 0;   // the field being edited (its ImGui id), which holds the full-precision value
   std::string precise_text_;  // that value's text as the entry began
+  ReachOptions reach_;        // as drawn: whether a change is mirrored, and across which plane
+  std::string note_;
+  bool note_error_ = false;
 };
 
 /// Euler angles (degrees, rotations about x then y then z: R = Rz·Ry·Rx) of a rotation matrix.

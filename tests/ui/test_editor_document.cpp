@@ -7,6 +7,8 @@
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
 #include "core/mesh/samples.h"
+#include "core/modelling/extrude.h"
+#include "core/modelling/loop_cut.h"
 
 namespace gps {
 namespace {
@@ -120,6 +122,87 @@ TEST(EditorDocument, AnEditIsOneTransaction) {
   EXPECT_EQ(doc.mesh().covariance(2), original.covariance(2));
   EXPECT_EQ(doc.take_changed(), std::vector<int>{2});
   EXPECT_FALSE(doc.dirty());
+}
+
+// Two meshes alike in everything the file keeps: vertices, faces (corner order), Gaussians.
+void expect_same_mesh(const CovarianceMesh& a, const CovarianceMesh& b) {
+  ASSERT_EQ(a.n_vertices(), b.n_vertices());
+  ASSERT_EQ(a.n_faces(), b.n_faces());
+  for (size_t v = 0; v < a.n_vertices(); ++v) {
+    EXPECT_EQ(a.mean(v), b.mean(v)) << v;
+    EXPECT_EQ(a.covariance(v), b.covariance(v)) << v;
+  }
+  for (size_t f = 0; f < a.n_faces(); ++f) {
+    std::vector<int> fa, fb;
+    for (const auto v : a.mesh.fv_range(a.mesh.face_handle(unsigned(f)))) fa.push_back(v.idx());
+    for (const auto v : b.mesh.fv_range(b.mesh.face_handle(unsigned(f)))) fb.push_back(v.idx());
+    EXPECT_EQ(fa, fb) << "face " << f;
+  }
+}
+
+// A modelling operation is one undo step that restores the mesh exactly, with the selection before
+// it; vertex edits before and after it undo and redo across it; the dirty state follows the history.
+TEST(EditorDocument, AModellingOperationIsOneExactUndoStep) {
+  test::TempDir dir;
+  EditorDocument doc;
+  doc.open_sample("cube");
+  doc.save(dir.file("cube.ply"));
+  const CovarianceMesh original = doc.mesh();
+  doc.begin_edit();
+  doc.set_mean(6, Vec3(1.5, 1, 1));
+  ASSERT_TRUE(doc.commit_edit());
+  const CovarianceMesh moved = doc.mesh();
+  const Modelled cut = loop_cut(doc.mesh(), 0, 4, 2);
+  doc.apply(cut, {6});
+  EXPECT_TRUE(doc.take_changed().empty()) << "a new topology is rebuilt, not updated";
+  expect_same_mesh(doc.mesh(), cut.mesh);
+  doc.begin_edit();
+  doc.set_mean(int(cut.mesh.n_vertices()) - 1, Vec3(0, 0, 3));
+  ASSERT_TRUE(doc.commit_edit());
+
+  EXPECT_FALSE(doc.undo().has_value()) << "a vertex edit restores vertices";
+  expect_same_mesh(doc.mesh(), cut.mesh);
+  const auto selection = doc.undo();
+  ASSERT_TRUE(selection.has_value());
+  EXPECT_EQ(*selection, std::vector<int>{6});
+  expect_same_mesh(doc.mesh(), moved);
+  doc.undo();
+  expect_same_mesh(doc.mesh(), original);
+  EXPECT_FALSE(doc.dirty());
+  doc.save(dir.file("again.ply"));
+  EXPECT_EQ(read_text_file(dir.file("again.ply")), read_text_file(dir.file("cube.ply")));
+
+  doc.redo();
+  const auto redone = doc.redo();
+  ASSERT_TRUE(redone.has_value());
+  EXPECT_EQ(*redone, cut.selection);
+  expect_same_mesh(doc.mesh(), cut.mesh);
+  EXPECT_TRUE(doc.dirty());
+}
+
+// An extrusion and the move that follows it undo as one step; a tool cancelled after its operation
+// leaves no step to redo.
+TEST(EditorDocument, AMoveFoldsIntoTheOperationBeforeIt) {
+  EditorDocument doc;
+  doc.open_sample("cube");
+  const CovarianceMesh original = doc.mesh();
+  const Modelled extruded = extrude_vertices(doc.mesh(), {4, 5, 6, 7}, Vec3::Zero());
+  doc.apply(extruded, {4, 5, 6, 7});
+  doc.begin_edit();
+  for (const int v : extruded.selection) doc.set_mean(v, doc.mesh().mean(size_t(v)) + Vec3(0, 0, 1));
+  EXPECT_TRUE(doc.commit_edit_into_last_operation(extruded.selection));
+  const CovarianceMesh result = doc.mesh();
+  doc.undo();
+  expect_same_mesh(doc.mesh(), original);
+  EXPECT_FALSE(doc.can_undo());
+  EXPECT_FALSE(doc.dirty());
+  doc.redo();
+  expect_same_mesh(doc.mesh(), result);
+
+  doc.apply(extruded, {});
+  doc.discard_last_operation();
+  expect_same_mesh(doc.mesh(), result);
+  EXPECT_FALSE(doc.can_redo());
 }
 
 }  // namespace

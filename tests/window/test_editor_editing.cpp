@@ -187,7 +187,7 @@ TEST_F(EditorEditing, AMirroredEditChangesTheMirrorVertexByTheMirroredAmount) {
       partner = int(v);
   ASSERT_GE(partner, 0);
   Events events;
-  events.key("m")
+  events.key("shift+m")
       .click(centre)
       .wait()
       .press(centre)
@@ -250,7 +250,7 @@ TEST_F(EditorEditing, AProportionalEditMovesTheVerticesInsideTheRadiusByTheFallo
 
 TEST_F(EditorEditing, SettingsAreKeptInTheConfigurationFolder) {
   Events toggle;
-  toggle.key("e").wait();
+  toggle.key("shift+e").wait();
   ASSERT_EQ(test::play_editor(dir_, dir_.file("original.ply"), toggle, kWidth, kHeight, "").exit_code, 0);
   ASSERT_EQ(test::play_editor(dir_, dir_.file("original.ply"), Events().wait(), kWidth, kHeight, "").exit_code, 0);
   const nlohmann::json settings = nlohmann::json::parse(read_text_file(dir_.file("gpsurf/settings.json")));

@@ -154,7 +154,7 @@ TEST_F(EditorViews, OnALargeMeshOnlyTheSelectionsNeighbourhoodHasEllipsoids) {
     if ((original_.mean(v) - eye).norm() < (original_.mean(size_t(vertex)) - eye).norm()) vertex = int(v);
   const glm::vec2 at = pixel_of(view, original_.mean(size_t(vertex)));
   Events events;
-  events.key("e").wait().click(at).wait(3);
+  events.key("shift+e").wait().click(at).wait(3);
   // Ellipsoid lines are drawn in one blue: the pixels of that blue, and the farthest from the vertex.
   const auto blue = [&](const std::string& name) {
     const Image shot = read_image(artefact(name));
