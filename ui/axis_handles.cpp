@@ -35,10 +35,17 @@ HandleFrame handle_frame(const CovarianceMesh& mesh, int vertex, double k_sigma,
 
 namespace {
 
-// Ends win over a centre as near (within a pixel): they overlap it when the axes are short.
-void consider(NearestProjected& nearest, std::vector<Handle>& handles, const HandleFrame& f, int vertex) {
+// Ends win over a centre as near (within a pixel): they overlap it when the axes are short. An end
+// drawn on the centre dot (its axis points at the viewer, as in an orthographic front view) is not
+// offered: its drag could neither scale nor turn, and the dot under it must stay grabbable.
+void consider(NearestProjected& nearest, std::vector<Handle>& handles, const HandleFrame& f, int vertex,
+              const Viewport& view) {
+  constexpr float kMinAxisPixels = 4.0f;
+  const auto centre = visible_pixel(view.camera, view.width, view.height, f.centre);
   for (int axis = 0; axis < 3; ++axis)
     for (const int side : {1, -1}) {
+      const auto end = visible_pixel(view.camera, view.width, view.height, f.end(axis, side));
+      if (centre && end && glm::length(glm::vec2(*end) - glm::vec2(*centre)) < kMinAxisPixels) continue;
       nearest.consider(int(handles.size()), f.end(axis, side), 1);
       handles.push_back(Handle{vertex, axis, side});
     }
@@ -52,7 +59,7 @@ std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const Co
                                  const std::vector<int>& vertices, double k_sigma, float radius) {
   NearestProjected nearest(view.camera, view.width, view.height, pixel, radius, 1.0f);
   std::vector<Handle> handles;
-  for (const int v : vertices) consider(nearest, handles, handle_frame(mesh, v, k_sigma, view), v);
+  for (const int v : vertices) consider(nearest, handles, handle_frame(mesh, v, k_sigma, view), v, view);
   if (nearest.best() < 0) return std::nullopt;
   return handles[size_t(nearest.best())];
 }
@@ -61,7 +68,7 @@ std::optional<Handle> hit_handle(const Viewport& view, glm::vec2 pixel, const Ha
                                  float radius) {
   NearestProjected nearest(view.camera, view.width, view.height, pixel, radius, 1.0f);
   std::vector<Handle> handles;
-  consider(nearest, handles, frame, vertex);
+  consider(nearest, handles, frame, vertex, view);
   if (nearest.best() < 0) return std::nullopt;
   return handles[size_t(nearest.best())];
 }
@@ -84,7 +91,9 @@ HandleDrag::HandleDrag(const CovarianceMesh& mesh, const std::vector<int>& verti
   if (grabbed.is_centre()) {
     kind_ = Kind::move;
     plane_origin_ = f.centre;
-    plane_normal_ = (eye - f.centre).normalized();
+    // Facing the camera: towards the eye, or in a parallel projection along the view direction.
+    plane_normal_ = view.camera.orthographic ? Vec3(eye - to_vec(view.camera.target)).normalized()
+                                             : Vec3(eye - f.centre).normalized();
   } else {
     axis_ = double(grabbed.side) * f.axes.axes.col(grabbed.axis);
     length_ = f.lengths[grabbed.axis];

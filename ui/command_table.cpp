@@ -13,6 +13,8 @@ std::string Shortcut::text() const {
   std::string name;
   if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) {
     name = "Numpad " + std::to_string(key - GLFW_KEY_KP_0);
+  } else if (key == GLFW_KEY_KP_ADD || key == GLFW_KEY_KP_SUBTRACT) {
+    name = key == GLFW_KEY_KP_ADD ? "Numpad +" : "Numpad -";
   } else {
     name = key_name(key);
     if (name.size() == 1)

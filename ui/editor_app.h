@@ -3,7 +3,9 @@
 // concept — editor.cpp (frames, drawing, output), editor_pointer.cpp (mouse and handle drags),
 // editor_actions.cpp (open, save, undo, the unsaved-changes prompt) and editor_commands.cpp
 // (the command table: keys, menus, help).
+#include <array>
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,6 +15,7 @@
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"
 #include "render/gl/window_context.h"
+#include "core/modelling/loop_cut.h"
 #include "ui/axis_handles.h"
 #include "ui/command_table.h"
 #include "ui/edit_reach.h"
@@ -26,6 +29,7 @@
 #include "ui/recent_files.h"
 #include "ui/selection.h"
 #include "ui/statistics_overlay.h"
+#include "ui/transform_mode.h"
 #include "ui/view_options.h"
 
 namespace gps {
@@ -75,6 +79,33 @@ private:
   void frame_vertices(const std::vector<int>& vertices);  // none: the whole mesh
   glm::vec2 viewport_size() const;
   void axis_view(float yaw, float pitch);
+  // Modelling (editor_modelling.cpp): the Mesh menu, G / S / R and the modal tools.
+  void build_modelling_commands();
+  bool run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run);
+  void install(const Modelled& result);  // throws gps::Error before anything changes
+  void topology_changed(const std::vector<int>& selection);
+  void rebuild_after_undo(const std::vector<int>& selection);
+  void operation_note(const std::string& message, bool error);
+  bool modal_active() const;
+  bool modal_event(const InputEvent& e);  // true: a modal tool took the event
+  void start_transform(TransformKind kind);
+  void update_transform();
+  void end_transform(bool keep);
+  void start_extrude();
+  std::optional<std::array<int, 2>> edge_under(glm::vec2 cursor) const;
+  void start_loop_cut();
+  void hover_loop_cut(glm::vec2 cursor);
+  void confirm_loop_cut();
+  void slide_loop_cut(glm::vec2 cursor);
+  void end_loop_cut(bool keep);
+  void start_inset();
+  void update_inset(double thickness);
+  void follow_inset(glm::vec2 cursor);
+  void end_inset(bool keep);
+  void draw_delete_items();
+  void draw_merge_items();
+  void draw_add_items();
+  void draw_modelling_overlay();
   // Actions (editor_actions.cpp).
   void request(Action action);
   void perform(const Action& action);
@@ -105,6 +136,7 @@ private:
   std::unique_ptr<GpuPassTimer> timer_;
   std::unique_ptr<RenderTarget> target_;
   EditorDocument document_;
+  std::string opened_name_;  // the display name of the mesh as opened (a save renames the document)
   Selection selection_;
   Camera camera_;
   ViewOptions view_;
@@ -134,6 +166,31 @@ private:
   SelectMode select_mode_ = SelectMode::vertex;
   bool select_through_ = false;  // box selection takes hidden vertices too (X-ray)
   bool alt_press_ = false;       // the left press had Alt: a click selects a loop, a drag orbits
+
+  // Modelling: the modal transform (an extrusion's move folds into the extrusion's undo step), the
+  // loop cut (hovering a ring, then sliding the new loops) and the inset (its thickness followed).
+  std::optional<TransformMode> transform_;
+  bool transform_folds_ = false;
+  TransformPivot transform_pivot_ = TransformPivot::median;
+  struct LoopCutTool {
+    EdgeRing ring;  // under the cursor (empty: none)
+    int cuts = 1;
+    bool sliding = false;
+    std::shared_ptr<const CovarianceMesh> base;  // the mesh before the cut
+    glm::vec2 start_cursor{0.0f};
+  };
+  std::optional<LoopCutTool> loop_cut_;
+  struct InsetTool {
+    std::shared_ptr<const CovarianceMesh> base;
+    std::vector<int> faces, selection_before;
+    Vec3 centre = Vec3::Zero();
+    glm::vec2 start_cursor{0.0f};
+    std::string typed;
+    bool applied = false;
+  };
+  std::optional<InsetTool> inset_;
+  std::string popup_request_;  // a popup menu (Delete, Merge, Add) a key asked for
+  std::string last_summary_;   // what the last operation did
 
   Clock::time_point frame_input_time_{}, last_frame_time_ = Clock::now();
   Action pending_;

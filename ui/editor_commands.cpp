@@ -59,17 +59,6 @@ void EditorApp::build_commands() {
          [this] { undo_redo(false); },
          [this] { return document_.can_redo(); }});
   t.add({"Edit",
-         "Select all",
-         {key(GLFW_KEY_A, true)},
-         [this] { selection_.select_all(document_.mesh().n_vertices()); },
-         always,
-         nullptr,
-         nullptr,
-         true});
-  t.add({"Edit", "Select none", {key(GLFW_KEY_ESCAPE), key(GLFW_KEY_A, false, false, true)}, [this] {
-           selection_.clear();
-         }});
-  t.add({"Edit",
          "Proportional editing",
          {key(GLFW_KEY_O)},
          [this] { reach_options_.proportional = !reach_options_.proportional; },
@@ -83,6 +72,7 @@ void EditorApp::build_commands() {
          [this] { reach_options_.mirror = !reach_options_.mirror; },
          always,
          [this] { return reach_options_.mirror; }});
+  build_selection_commands();
   // View
   t.add({"View", "Frame all", {key(GLFW_KEY_HOME)}, [this] { frame_vertices({}); }});
   t.add({"View", "Frame selection (all when none)", {key(GLFW_KEY_KP_DECIMAL)}, [this] {

@@ -10,6 +10,7 @@
 #include "ui/editor_app.h"
 #include "ui/ellipsoid_scope.h"
 #include "ui/handle_overlay.h"
+#include "ui/selection_overlay.h"
 #include "view/picking.h"
 
 namespace gps {
@@ -62,6 +63,7 @@ void EditorApp::handle_event(const InputEvent& e) {
       if (!io.WantCaptureMouse && !prompt_unsaved_) press(e);
       break;
     case InputEvent::Type::release:
+      follow_cursor();  // the motion that came in the release's frame, before the release ends the drag
       release(e);
       break;
     case InputEvent::Type::scroll:
@@ -99,6 +101,7 @@ void EditorApp::press(const InputEvent& e) {
   if (mode_ != Mode::none) return;
   mode_button_ = e.button;
   press_pixel_ = last_cursor_ = e.position;
+  alt_press_ = e.button == 0 && input_.alt();
   if (e.button == 0 && !input_.alt()) {
     const Viewport v = viewport();
     const auto gizmo = gizmo_frame(v);
@@ -119,12 +122,12 @@ void EditorApp::press(const InputEvent& e) {
 
 void EditorApp::release(const InputEvent& e) {
   if (mode_ == Mode::none || e.button != mode_button_) return;
-  const Viewport v = viewport();
   if (mode_ == Mode::click) {
-    selection_.click(pick(e.position), input_.shift());
+    click_select(e.position, input_.shift());
   } else if (mode_ == Mode::box) {
-    selection_.select(vertices_in_box(v.camera, v.width, v.height, press_pixel_, e.position, document_.mesh()),
-                      input_.shift());
+    box_select(press_pixel_, e.position, input_.shift(), input_.ctrl());
+  } else if (alt_press_ && mode_ == Mode::orbit && glm::length(e.position - press_pixel_) <= kBoxThreshold) {
+    loop_select(e.position, input_.shift());
   } else if (mode_ == Mode::handle) {
     end_drag(true);
   }
@@ -152,6 +155,8 @@ bool EditorApp::drag_key(int key) {
     end_drag(true);
     return true;
   }
+  // Digits are typed as text (drag_text): as keys they would reach the commands (1/2/3: select modes).
+  if ((key >= GLFW_KEY_0 && key <= GLFW_KEY_9) || (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9)) return true;
   if (!drag_->handle().is_centre()) return false;
   if (key == GLFW_KEY_X || key == GLFW_KEY_Y || key == GLFW_KEY_Z) {
     drag_->constrain(input_.shift() ? MoveConstraint::plane : MoveConstraint::axis, key - GLFW_KEY_X);
@@ -237,6 +242,7 @@ void EditorApp::draw_handles_and_box() {
     if (gizmo && mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
       lit = hit_handle(v, input_.cursor, *gizmo, selection_.active(), kPickRadius);
   }
+  draw_selection_overlay(*draw, v, document_.mesh(), selection_.vertices(), select_mode_);
   draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, lit);
   gizmo_box_.reset();
   if (gizmo) {  // the gizmo's extent on screen, its dots included

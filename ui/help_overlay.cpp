@@ -6,9 +6,10 @@ namespace gps {
 
 namespace {
 constexpr const char* kMouseBindings[][2] = {
-    {"Left click", "select a vertex or its ellipsoid (nothing: clear)"},
-    {"Shift + left click", "add or remove a vertex"},
-    {"Left drag on empty space", "box select (Shift: add)"},
+    {"Left click", "select a vertex or its ellipsoid / an edge / a face, by the mode (nothing: clear)"},
+    {"Shift + left click", "add or remove a vertex, edge or face"},
+    {"Alt + left click", "select the edge loop through the nearest edge (face mode: the face loop)"},
+    {"Left drag on empty space", "box select what the camera sees (Shift: add, Ctrl: remove; X-ray: hidden too)"},
     {"Left drag an axis end", "along the axis: scale that sigma; across: turn the frame (decided by the first pixels)"},
     {"  ... with Shift / Ctrl", "scale all three sigmas / snap ratios (0.1) and angles (5 deg)"},
     {"Left drag the centre dot", "move the mean(s) in the view plane"},

@@ -107,6 +107,8 @@ const std::vector<std::pair<std::string, int>>& named_keys() {
                                                   {"pagedown", GLFW_KEY_PAGE_DOWN},
                                                   {"period", GLFW_KEY_PERIOD},
                                                   {"minus", GLFW_KEY_MINUS},
+                                                  {"kpadd", GLFW_KEY_KP_ADD},
+                                                  {"kpsubtract", GLFW_KEY_KP_SUBTRACT},
                                                   {"right_ctrl", GLFW_KEY_RIGHT_CONTROL},
                                                   {"right_shift", GLFW_KEY_RIGHT_SHIFT},
                                                   {"right_alt", GLFW_KEY_RIGHT_ALT}};

@@ -1,10 +1,23 @@
 #include "ui/selection.h"
 
 #include <algorithm>
+#include <iterator>
 
 #include "view/projection.h"
 
 namespace gps {
+
+std::string select_mode_name(SelectMode mode) {
+  switch (mode) {
+    case SelectMode::vertex:
+      return "vertex";
+    case SelectMode::edge:
+      return "edge";
+    case SelectMode::face:
+      return "face";
+  }
+  return "";
+}
 
 bool Selection::contains(int vertex) const { return std::binary_search(vertices_.begin(), vertices_.end(), vertex); }
 
@@ -33,6 +46,39 @@ void Selection::select(const std::vector<int>& inside, bool additive) {
   vertices_.insert(vertices_.end(), inside.begin(), inside.end());
   std::sort(vertices_.begin(), vertices_.end());
   vertices_.erase(std::unique(vertices_.begin(), vertices_.end()), vertices_.end());
+}
+
+void Selection::click_group(const std::vector<int>& group, int active, bool toggle) {
+  if (group.empty()) {
+    if (!toggle) clear();
+    return;
+  }
+  const bool all_selected = std::all_of(group.begin(), group.end(), [this](int v) { return contains(v); });
+  if (toggle && all_selected) {
+    deselect(group);
+  } else {
+    select(group, toggle);
+  }
+  last_clicked_ = active;
+}
+
+void Selection::deselect(const std::vector<int>& outside) {
+  std::vector<int> removed = outside;
+  std::sort(removed.begin(), removed.end());
+  std::vector<int> kept;
+  std::set_difference(vertices_.begin(), vertices_.end(), removed.begin(), removed.end(), std::back_inserter(kept));
+  vertices_ = std::move(kept);
+}
+
+void Selection::invert(size_t n_vertices) {
+  std::vector<int> inverted;
+  size_t k = 0;
+  for (size_t i = 0; i < n_vertices; ++i) {
+    while (k < vertices_.size() && vertices_[k] < int(i)) ++k;
+    if (k < vertices_.size() && vertices_[k] == int(i)) continue;
+    inverted.push_back(int(i));
+  }
+  vertices_ = std::move(inverted);
 }
 
 void Selection::select_all(size_t n_vertices) {

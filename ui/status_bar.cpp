@@ -4,7 +4,8 @@
 
 namespace gps {
 
-void draw_status_bar(const EditorDocument& document, size_t selected, const std::string& message, bool error) {
+void draw_status_bar(const EditorDocument& document, const std::string& selection, const std::string& message,
+                     bool error) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float height = ImGui::GetFrameHeight() + 4.0f;
   ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x, vp->WorkPos.y + vp->WorkSize.y - height));
@@ -14,8 +15,8 @@ void draw_status_bar(const EditorDocument& document, size_t selected, const std:
                                  ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoBringToFrontOnFocus;
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 2));
   if (ImGui::Begin("##status", nullptr, flags)) {
-    ImGui::Text("%zu vertices, %zu faces, %zu selected%s", document.mesh().n_vertices(), document.mesh().n_faces(),
-                selected, document.dirty() ? "  (unsaved changes)" : "");
+    ImGui::Text("%zu vertices, %zu faces, %s%s", document.mesh().n_vertices(), document.mesh().n_faces(),
+                selection.c_str(), document.dirty() ? "  (unsaved changes)" : "");
     if (!message.empty()) {
       ImGui::SameLine(0, 24);
       if (error)

@@ -38,6 +38,41 @@ TEST(Selection, ClickShiftClickAllNone) {
   EXPECT_TRUE(s.empty());
 }
 
+TEST(Selection, AGroupClickSelectsAnEdgeOrFaceAndShiftTogglesIt) {
+  Selection s;
+  s.click_group({3, 1}, 3, false);
+  EXPECT_EQ(s.vertices(), (std::vector<int>{1, 3}));
+  EXPECT_EQ(s.active(), 3);
+  s.click_group({5, 6, 2, 1}, 6, true);  // not all selected: added
+  EXPECT_EQ(s.vertices(), (std::vector<int>{1, 2, 3, 5, 6}));
+  EXPECT_EQ(s.active(), 6);
+  s.click_group({6, 5, 2, 1}, 5, true);  // all selected: removed, the vertex only the edge had stays
+  EXPECT_EQ(s.vertices(), std::vector<int>{3});
+  s.click_group({}, -1, true);  // shift on nothing keeps it
+  EXPECT_EQ(s.vertices(), std::vector<int>{3});
+  s.click_group({0, 4}, 0, false);
+  EXPECT_EQ(s.vertices(), (std::vector<int>{0, 4}));
+  s.click_group({}, -1, false);  // a plain click on nothing clears it
+  EXPECT_TRUE(s.empty());
+}
+
+TEST(Selection, DeselectAndInvert) {
+  Selection s;
+  s.select({0, 2, 3, 5, 9}, false);
+  s.deselect({9, 3, 7});
+  EXPECT_EQ(s.vertices(), (std::vector<int>{0, 2, 5}));
+  s.invert(7);
+  EXPECT_EQ(s.vertices(), (std::vector<int>{1, 3, 4, 6}));
+  s.invert(7);
+  EXPECT_EQ(s.vertices(), (std::vector<int>{0, 2, 5}));
+  s.clear();
+  s.invert(3);
+  EXPECT_EQ(s.vertices(), (std::vector<int>{0, 1, 2}));
+  s.invert(3);
+  EXPECT_TRUE(s.empty());
+  EXPECT_EQ(select_mode_name(SelectMode::edge), "edge");
+}
+
 TEST(Selection, BoxSelectsExactlyTheVerticesProjectedInside) {
   const CovarianceMesh mesh = make_sample("grid", 256);
   const Camera camera = frame_mesh(mesh, 20.0f, 50.0f);

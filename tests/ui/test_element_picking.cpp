@@ -1,0 +1,63 @@
+// Picking edges and faces under the mouse (view/element_picking.h) on the cube.
+#include "view/element_picking.h"
+
+#include <gtest/gtest.h>
+
+#include "core/mesh/samples.h"
+#include "view/visible_vertices.h"
+
+namespace gps {
+namespace {
+
+glm::vec2 pixel_of(const Viewport& v, const Vec3& p) {
+  return glm::vec2(*project_to_pixel(v.camera, v.width, v.height, to_glm(p))) - glm::vec2(0.5f);
+}
+
+class ElementPicking : public ::testing::Test {
+protected:
+  void SetUp() override {
+    view_.camera = frame_mesh(mesh_);
+    view_.width = 640;
+    view_.height = 480;
+  }
+  CovarianceMesh mesh_ = make_sample("cube");
+  Viewport view_;
+};
+
+TEST_F(ElementPicking, AnEdgesMidpointPicksItAndTheFrontMostWins) {
+  const std::vector<char> visible = visible_vertices(view_, mesh_);
+  int picked = 0;
+  for (const auto e : mesh_.mesh.edges()) {
+    const int a = e.v0().idx(), b = e.v1().idx();
+    if (!visible[size_t(a)] || !visible[size_t(b)]) continue;  // edges of the hidden corner may lie behind others
+    const glm::vec2 mid = pixel_of(view_, 0.5 * (mesh_.mean(size_t(a)) + mesh_.mean(size_t(b))));
+    const auto edge = pick_edge(view_, mid + glm::vec2(2.0f, -1.0f), mesh_, 8.0f);
+    ASSERT_TRUE(edge.has_value()) << a << "-" << b;
+    EXPECT_EQ(*edge, (std::array<int, 2>{std::min(a, b), std::max(a, b)}));
+    ++picked;
+  }
+  EXPECT_EQ(picked, 9);  // the edges not at the hidden corner
+  EXPECT_FALSE(pick_edge(view_, glm::vec2(5.0f, 5.0f), mesh_, 8.0f).has_value());
+}
+
+TEST_F(ElementPicking, AFacesCentrePicksTheFrontFaceThere) {
+  const Vec3 eye = to_vec(view_.camera.eye());
+  int front_faces = 0;
+  for (const auto f : mesh_.mesh.faces()) {
+    Vec3 centre = Vec3::Zero();
+    for (const auto v : mesh_.mesh.fv_range(f)) centre += 0.25 * mesh_.mean(size_t(v.idx()));
+    const bool front = centre.dot(eye - centre) > 0;  // the cube's face normals point from its centre
+    const int picked = pick_face(view_, pixel_of(view_, centre), mesh_);
+    if (front) {
+      EXPECT_EQ(picked, f.idx());
+      ++front_faces;
+    } else {
+      EXPECT_NE(picked, f.idx()) << "a back face is behind a front one";
+    }
+  }
+  EXPECT_EQ(front_faces, 3);
+  EXPECT_EQ(pick_face(view_, glm::vec2(5.0f, 5.0f), mesh_), -1);
+}
+
+}  // namespace
+}  // namespace gps

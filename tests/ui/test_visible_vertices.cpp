@@ -1,0 +1,123 @@
+// Which control vertices the camera sees (view/visible_vertices.h): the software depth buffer of
+// the control mesh against the exact answers on convex meshes and an occluder.
+#include "view/visible_vertices.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "core/mesh/samples.h"
+
+namespace gps {
+namespace {
+
+Viewport view_of(const Camera& camera, int width = 640, int height = 480) {
+  Viewport v;
+  v.camera = camera;
+  v.width = width;
+  v.height = height;
+  return v;
+}
+
+// On a convex closed mesh a vertex is visible exactly when one of its faces faces the eye.
+// Orthographic (`parallel`): one of its faces faces the direction towards the eye.
+std::vector<char> convex_visible(const CovarianceMesh& mesh, const Vec3& eye, bool parallel = false) {
+  const PolyMesh& m = mesh.mesh;
+  std::vector<char> visible(mesh.n_vertices(), 0);
+  for (const auto f : m.faces()) {
+    std::vector<Vec3> p;
+    for (const auto v : m.fv_range(f)) p.push_back(mesh.mean(size_t(v.idx())));
+    const Vec3 normal = (p[1] - p[0]).cross(p[2] - p[0]);
+    if (normal.dot(parallel ? eye : Vec3(eye - p[0])) > 1e-9)
+      for (const auto v : m.fv_range(f)) visible[size_t(v.idx())] = 1;
+  }
+  return visible;
+}
+
+TEST(VisibleVertices, TheCubeShowsSevenCornersAndHidesTheFarOne) {
+  const CovarianceMesh mesh = make_sample("cube");
+  for (const bool orthographic : {false, true}) {
+    Camera camera = frame_mesh(mesh);
+    camera.orthographic = orthographic;
+    const std::vector<char> visible = visible_vertices(view_of(camera), mesh);
+    EXPECT_EQ(visible, convex_visible(mesh, to_vec(camera.eye()))) << "orthographic " << orthographic;
+    EXPECT_EQ(std::count(visible.begin(), visible.end(), 1), 7);
+    // The default camera looks from +x, +y, +z: the hidden corner is (−1, −1, −1), vertex 0.
+    EXPECT_FALSE(visible[0]);
+  }
+}
+
+// On the sphere, convex with nearly planar quads: a vertex one of whose faces clearly faces the eye
+// is visible, one all of whose faces clearly face away is not (at the silhouette either may be).
+TEST(VisibleVertices, TheSphereShowsItsFrontHalf) {
+  const CovarianceMesh mesh = make_sample("sphere", 384);
+  const PolyMesh& m = mesh.mesh;
+  for (const float yaw : {30.0f, 160.0f, -75.0f}) {
+    const Camera camera = frame_mesh(mesh, yaw, 20.0f);
+    const Vec3 eye = to_vec(camera.eye());
+    const std::vector<char> visible = visible_vertices(view_of(camera, 800, 600), mesh);
+    std::vector<double> facing(mesh.n_vertices(), -1.0);  // the best cosine of a face's normal towards the eye
+    for (const auto f : m.faces()) {
+      std::vector<Vec3> p;
+      for (const auto v : m.fv_range(f)) p.push_back(mesh.mean(size_t(v.idx())));
+      Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
+      for (size_t k = 0; k < p.size(); ++k) normal += p[k].cross(p[(k + 1) % p.size()]), centre += p[k];
+      centre /= double(p.size());
+      const double cosine = normal.normalized().dot((eye - centre).normalized());
+      for (const auto v : m.fv_range(f)) facing[size_t(v.idx())] = std::max(facing[size_t(v.idx())], cosine);
+    }
+    int shown = 0;
+    for (size_t v = 0; v < mesh.n_vertices(); ++v) {
+      if (facing[v] > 0.1) {
+        EXPECT_TRUE(visible[v]) << "yaw " << yaw << " vertex " << v;
+      }
+      if (facing[v] < -0.1) {
+        EXPECT_FALSE(visible[v]) << "yaw " << yaw << " vertex " << v;
+      }
+      shown += visible[v];
+    }
+    EXPECT_GT(shown, int(mesh.n_vertices()) / 4);
+    EXPECT_LT(shown, int(mesh.n_vertices()) * 3 / 4);
+  }
+}
+
+// A square in front of a small cube, looked at head on: the square's corners are seen, the cube
+// behind it is not, though its front face faces the camera; beside the square the corners of its
+// faces that face the camera are seen.
+TEST(VisibleVertices, AFaceInFrontHidesWhatIsBehindIt) {
+  const auto scene = [](double cube_x) {
+    std::vector<Vec3> p = {{-2, -2, 1}, {2, -2, 1}, {2, 2, 1}, {-2, 2, 1}};
+    std::vector<std::vector<int>> f = {{0, 1, 2, 3}};
+    const CovarianceMesh cube = make_sample("cube");
+    for (size_t i = 0; i < cube.n_vertices(); ++i) p.push_back(0.5 * cube.mean(i) + Vec3(cube_x, 0, -1));
+    for (const auto face : cube.mesh.faces()) {
+      std::vector<int> corners;
+      for (const auto v : cube.mesh.fv_range(face)) corners.push_back(4 + v.idx());
+      f.push_back(corners);
+    }
+    return make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.01 * Mat3::Identity()), f, "scene");
+  };
+  for (const bool orthographic : {false, true}) {
+    Camera camera;
+    camera.target = glm::vec3(0.0f);
+    camera.yaw_degrees = 0.0f;  // looking down −z
+    camera.pitch_degrees = 0.0f;
+    camera.distance = 12.0f;
+    camera.orthographic = orthographic;
+    const CovarianceMesh hidden = scene(0.0);
+    const std::vector<char> visible = visible_vertices(view_of(camera), hidden);
+    for (int v = 0; v < 4; ++v) EXPECT_TRUE(visible[size_t(v)]) << "square corner " << v;
+    for (int v = 4; v < 12; ++v) EXPECT_FALSE(visible[size_t(v)]) << "cube corner " << v - 4;
+
+    const CovarianceMesh beside = scene(4.0);
+    const std::vector<char> seen = visible_vertices(view_of(camera), beside);
+    // Orthographic: the cube's inner side is edge-on.
+    const Vec3 eye = to_vec(camera.eye());
+    const std::vector<char> facing =
+        convex_visible(beside, orthographic ? Vec3(eye - to_vec(camera.target)) : eye, orthographic);
+    for (int v = 4; v < 12; ++v) EXPECT_EQ(seen[size_t(v)], facing[size_t(v)]) << "cube corner " << v - 4;
+  }
+}
+
+}  // namespace
+}  // namespace gps

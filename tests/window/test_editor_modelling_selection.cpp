@@ -1,0 +1,301 @@
+// Blender's edit-mode selection in the editor, in a real window under Xvfb: boxes that take only the
+// vertices the camera sees (and all of them with X-ray), Ctrl+box subtracting; edge and face mode
+// clicks; an Alt+click edge loop; L and Ctrl+I; and two drags that used to be lost (a release in the
+// frame of the last motion, the centre dot in an orthographic axis view). Each selection is read
+// back by moving it: a typed move of 0.25 along y moves exactly the selected vertices.
+// Screenshots kept in build/test-artefacts/EditorModellingSelection/.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "../support/editor_driver.h"
+#include "core/io/mesh_io.h"
+#include "core/mesh/samples.h"
+#include "core/modelling/mesh_queries.h"
+#include "view/visible_vertices.h"
+
+namespace gps {
+namespace {
+
+using test::artefact;
+using test::editor_view;
+using test::Events;
+using test::pixel_of;
+
+constexpr int kWidth = test::kWindowWidth, kHeight = test::kWindowHeight;
+constexpr double kMove = 0.25;
+
+class EditorModellingSelection : public ::testing::Test {
+protected:
+  void use_mesh(const CovarianceMesh& mesh) {
+    write_mesh(dir_.file("original.ply"), mesh);
+    original_ = read_mesh(dir_.file("original.ply"));
+    view_ = editor_view(original_);
+  }
+  void SetUp() override {  // the gizmo at the selection's centroid
+    std::filesystem::create_directories(dir_.path() / "gpsurf");
+    dir_.write("gpsurf/settings.json", R"({"pivot": 1})");
+  }
+  // Grabs the gizmo's centre dot, at the centroid of `selected` (what the events should have
+  // selected), and types a move of kMove along y.
+  Events& move_selection(Events& events, const std::vector<int>& selected) const {
+    Vec3 centroid = Vec3::Zero();
+    for (const int v : selected) centroid += original_.mean(size_t(v)) / double(selected.size());
+    const glm::vec2 centre = pixel_of(view_, centroid);
+    return events.press(centre)
+        .move(centre + glm::vec2(5.0f, 5.0f))
+        .key("y")
+        .text("0.25")
+        .key("enter")
+        .release(centre + glm::vec2(5.0f, 5.0f))
+        .wait();
+  }
+  // Plays the events, saves (and keeps a screenshot when named); returns the saved mesh.
+  CovarianceMesh play(const Events& events, const std::string& screenshot = "") const {
+    const std::string extra =
+        "--save " + dir_.file("edited.ply") + (screenshot.empty() ? "" : " --screenshot " + artefact(screenshot));
+    const auto r = test::play_editor(dir_, dir_.file("original.ply"), events, kWidth, kHeight, extra);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return read_mesh(dir_.file("edited.ply"));
+  }
+  // The vertices the typed move moved; every other vertex must be unchanged.
+  std::vector<int> moved(const CovarianceMesh& edited) const {
+    std::vector<int> out;
+    for (size_t v = 0; v < edited.n_vertices(); ++v) {
+      const Vec3 d = edited.mean(v) - original_.mean(v);
+      if (d.norm() == 0.0) continue;
+      EXPECT_NEAR(d.y(), kMove, 1e-6) << "vertex " << v;
+      EXPECT_NEAR(d.x(), 0.0, 1e-6) << "vertex " << v;
+      EXPECT_NEAR(d.z(), 0.0, 1e-6) << "vertex " << v;
+      out.push_back(int(v));
+    }
+    return out;
+  }
+  // A box around the whole mesh on screen, `margin` pixels wider.
+  std::pair<glm::vec2, glm::vec2> box_around_mesh(float margin = 12.0f) const {
+    glm::vec2 lo(1e9f), hi(-1e9f);
+    for (size_t v = 0; v < original_.n_vertices(); ++v) {
+      lo = glm::min(lo, pixel_of(view_, original_.mean(v)));
+      hi = glm::max(hi, pixel_of(view_, original_.mean(v)));
+    }
+    return {lo - margin, hi + margin};
+  }
+  test::TempDir dir_;
+  CovarianceMesh original_;
+  Viewport view_;
+};
+
+std::vector<int> all_but(size_t n, int left_out) {
+  std::vector<int> out;
+  for (int v = 0; v < int(n); ++v)
+    if (v != left_out) out.push_back(v);
+  return out;
+}
+
+// The default camera looks at the cube from +x, +y, +z: a box around it selects the seven corners
+// it sees and not (−1, −1, −1) behind it; with Select through (Alt+Z) all eight.
+TEST_F(EditorModellingSelection, ABoxSelectsOnlyTheVerticesTheCameraSees) {
+  use_mesh(make_sample("cube"));
+  const auto [lo, hi] = box_around_mesh();
+  Events visible_only;
+  visible_only.drag(glm::vec2(lo.x, hi.y), glm::vec2(hi.x, lo.y), 8).wait();
+  Events shot = visible_only;
+  play(shot.wait(), "box_visible_only.png");
+  EXPECT_EQ(moved(play(move_selection(visible_only, all_but(8, 0)))), all_but(8, 0));
+
+  Events xray;
+  xray.key("alt+z").drag(glm::vec2(lo.x, hi.y), glm::vec2(hi.x, lo.y), 8).wait();
+  EXPECT_EQ(moved(play(move_selection(xray, all_but(8, -1)))), all_but(8, -1));
+}
+
+// On the sphere the box takes the front half: every vertex one of whose faces clearly faces the
+// camera, none all of whose faces clearly face away. Ctrl+box then removes the left half of it.
+TEST_F(EditorModellingSelection, OnTheSphereABoxTakesTheFrontHalfAndCtrlBoxSubtracts) {
+  use_mesh(make_sample("sphere", 384));
+  const auto [lo, hi] = box_around_mesh();
+  const std::vector<char> visible = visible_vertices(view_, original_);
+  std::vector<int> seen;
+  for (size_t v = 0; v < visible.size(); ++v)
+    if (visible[v]) seen.push_back(int(v));
+  Events box;
+  box.drag(glm::vec2(lo.x, hi.y), glm::vec2(hi.x, lo.y), 8).wait();
+  Events shot = box;
+  play(shot.key("3").wait(), "sphere_box_face_mode.png");
+  const std::vector<int> selected = moved(play(move_selection(box, seen)));
+
+  const PolyMesh& m = original_.mesh;
+  const Vec3 eye = to_vec(view_.camera.eye());
+  std::vector<double> facing(original_.n_vertices(), -1.0);
+  for (const auto f : m.faces()) {
+    std::vector<Vec3> p;
+    for (const auto v : m.fv_range(f)) p.push_back(original_.mean(size_t(v.idx())));
+    Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
+    for (size_t k = 0; k < p.size(); ++k) normal += p[k].cross(p[(k + 1) % p.size()]), centre += p[k];
+    const double cosine = normal.normalized().dot((eye - centre / double(p.size())).normalized());
+    for (const auto v : m.fv_range(f)) facing[size_t(v.idx())] = std::max(facing[size_t(v.idx())], cosine);
+  }
+  const std::set<int> in(selected.begin(), selected.end());
+  for (size_t v = 0; v < original_.n_vertices(); ++v) {
+    if (facing[v] > 0.1) {
+      EXPECT_TRUE(in.count(int(v))) << "front vertex " << v << " not selected";
+    }
+    if (facing[v] < -0.1) {
+      EXPECT_FALSE(in.count(int(v))) << "back vertex " << v << " selected";
+    }
+  }
+  EXPECT_GT(selected.size(), original_.n_vertices() / 4);
+  EXPECT_LT(selected.size(), original_.n_vertices() * 3 / 4);
+
+  // Ctrl+box over the left half of the sphere: the front vertices left of the middle leave the
+  // selection.
+  const float middle = 0.5f * (lo.x + hi.x);
+  Events subtract;
+  subtract.drag(glm::vec2(lo.x, hi.y), glm::vec2(hi.x, lo.y), 8)
+      .wait()
+      .drag(glm::vec2(lo.x, hi.y), glm::vec2(middle, lo.y), 8, "ctrl")
+      .wait();
+  std::vector<int> expected;
+  for (const int v : selected)
+    if (pixel_of(view_, original_.mean(size_t(v))).x > middle + 0.5f) expected.push_back(v);
+  ASSERT_FALSE(expected.empty());
+  Events subtracted = subtract;
+  play(subtracted.wait(), "sphere_ctrl_box.png");
+  EXPECT_EQ(moved(play(move_selection(subtract, expected))), expected);
+}
+
+// Edge mode (2): a click beside the middle of a front edge selects its two ends. Face mode (3): a
+// click inside a front face selects its four corners; Shift+click on a second face adds it.
+TEST_F(EditorModellingSelection, EdgeAndFaceModeClicks) {
+  use_mesh(make_sample("cube"));
+  // The edge 6–7 (top, front: +y, +z) and the faces +z {4, 5, 6, 7} and +y {2, 3, 7, 6} (+x lies
+  // under the Inspector).
+  const glm::vec2 edge_mid = pixel_of(view_, 0.5 * (original_.mean(6) + original_.mean(7)));
+  Events edge;
+  edge.key("2").click(edge_mid + glm::vec2(1.0f, 3.0f)).wait();
+  Events edge_shot = edge;
+  play(edge_shot.wait(), "edge_mode.png");
+  EXPECT_EQ(moved(play(move_selection(edge, {6, 7}))), (std::vector<int>{6, 7}));
+
+  const auto centre_of = [this](std::vector<int> corners) {
+    Vec3 c = Vec3::Zero();
+    for (const int v : corners) c += original_.mean(size_t(v)) / double(corners.size());
+    return pixel_of(view_, c);
+  };
+  Events face;
+  face.key("3").click(centre_of({4, 5, 6, 7})).wait();
+  Events one_face = face;
+  play(one_face.wait(), "face_mode.png");
+  EXPECT_EQ(moved(play(move_selection(one_face, {4, 5, 6, 7}))), (std::vector<int>{4, 5, 6, 7}));
+  face.click(centre_of({2, 3, 7, 6}), "shift").wait();
+  Events two_faces = face;
+  play(two_faces.wait(), "face_mode_two_faces.png");
+  const std::vector<int> both{2, 3, 4, 5, 6, 7};
+  EXPECT_EQ(moved(play(move_selection(face, both))), both);
+}
+
+// Alt+click on an edge of the sphere's front, away from its eight poles, selects the whole edge
+// loop through it (round the back too).
+TEST_F(EditorModellingSelection, AltClickSelectsTheEdgeLoop) {
+  use_mesh(make_sample("sphere", 384));
+  const std::vector<char> visible = visible_vertices(view_, original_);
+  const PolyMesh& m = original_.mesh;
+  // The visible edge nearest the window's centre whose ends both have valence 4.
+  std::array<int, 2> edge{-1, -1};
+  float best = 1e9f;
+  for (const auto e : m.edges()) {
+    const int a = e.v0().idx(), b = e.v1().idx();
+    if (!visible[size_t(a)] || !visible[size_t(b)] || m.valence(e.v0()) != 4 || m.valence(e.v1()) != 4) continue;
+    const glm::vec2 mid = pixel_of(view_, 0.5 * (original_.mean(size_t(a)) + original_.mean(size_t(b))));
+    if (const float d = glm::length(mid - glm::vec2(kWidth / 2, kHeight / 2)); d < best) best = d, edge = {a, b};
+  }
+  ASSERT_GE(edge[0], 0);
+  const std::vector<int> loop = edge_loop(original_, edge[0], edge[1]);
+  ASSERT_GT(loop.size(), 8u);
+  const glm::vec2 mid = pixel_of(view_, 0.5 * (original_.mean(size_t(edge[0])) + original_.mean(size_t(edge[1]))));
+  Events events;
+  events.click(mid, "alt").wait();
+  play(events, "edge_loop.png");
+  EXPECT_EQ(moved(play(move_selection(events, loop))), loop);
+}
+
+// Two cubes apart: L over one selects its eight corners only; Ctrl+I then selects the other's.
+TEST_F(EditorModellingSelection, LinkedUnderTheCursorAndInvert) {
+  const CovarianceMesh cube = make_sample("cube");
+  std::vector<Vec3> means;
+  std::vector<Mat3> covariances;
+  std::vector<std::vector<int>> faces;
+  for (const double y : {-1.6, 1.6}) {  // one above the other, clear of the panels at the sides
+    const int base = int(means.size());
+    for (size_t v = 0; v < cube.n_vertices(); ++v) {
+      means.push_back(0.6 * cube.mean(v) + Vec3(0, y, 0));
+      covariances.push_back(cube.covariance(v));
+    }
+    for (const auto f : cube.mesh.faces()) {
+      std::vector<int> corners;
+      for (const auto v : cube.mesh.fv_range(f)) corners.push_back(base + v.idx());
+      faces.push_back(corners);
+    }
+  }
+  use_mesh(make_covariance_mesh(means, covariances, faces, "two cubes"));
+  const auto face_centre = [this](int first) {  // the +z face of the cube whose vertices start at `first`
+    Vec3 c = Vec3::Zero();
+    for (const int v : {4, 5, 6, 7}) c += original_.mean(size_t(first + v)) / 4.0;
+    return pixel_of(view_, c);
+  };
+  std::vector<int> first(8), second(8);
+  for (int v = 0; v < 8; ++v) first[size_t(v)] = v, second[size_t(v)] = 8 + v;
+  Events linked;
+  linked.move(face_centre(0)).key("l").wait();
+  Events shot = linked;
+  play(shot.key("3").wait(), "linked.png");
+  Events linked_moved = linked;
+  EXPECT_EQ(moved(play(move_selection(linked_moved, first))), first);
+  linked.key("ctrl+i").wait();
+  EXPECT_EQ(moved(play(move_selection(linked, second))), second);
+  Events from_selection;  // Ctrl+L grows a clicked vertex to its cube
+  from_selection.click(pixel_of(view_, original_.mean(14))).wait().key("ctrl+l").wait();
+  EXPECT_EQ(moved(play(move_selection(from_selection, second))), second);
+}
+
+// A press, then the last motion and the release in one frame (as at a low frame rate): the drag
+// moves the vertex to where it was released (the centre dot moves it in the view plane).
+TEST_F(EditorModellingSelection, ADragWhoseReleaseComesWithItsLastMotionIsKept) {
+  use_mesh(make_sample("cube"));
+  const glm::vec2 start = pixel_of(view_, original_.mean(6)), end = start + glm::vec2(-30.0f, 20.0f);
+  Events events;
+  events.click(start).wait().press(start).move(end).release(end).wait();
+  const CovarianceMesh edited = play(events);
+  const Vec3 d = edited.mean(6) - original_.mean(6);
+  EXPECT_GT(d.norm(), 0.05) << "the drag was lost";
+  EXPECT_LT(glm::length(pixel_of(view_, edited.mean(6)) - end), 0.5f);
+  EXPECT_NEAR(d.dot((original_.mean(6) - to_vec(view_.camera.eye())).normalized()), 0.0, 1e-3)
+      << "the move is in the view plane";
+}
+
+// In the orthographic front view (Numpad 1, Numpad 5) the axis of the vertex's ellipsoid along z
+// points at the viewer and its ends lie on the centre dot: a drag there moves the vertex (the
+// bottom-left front corner, clear of the panels).
+TEST_F(EditorModellingSelection, TheCentreDotDragsInTheOrthographicFrontView) {
+  CovarianceMesh cube = make_sample("cube");
+  cube.covariances[4] = Vec3(0.004, 0.02, 0.06).asDiagonal();
+  use_mesh(cube);
+  view_.camera.yaw_degrees = 0.0f;
+  view_.camera.pitch_degrees = 0.0f;
+  view_.camera.orthographic = true;
+  const glm::vec2 start = pixel_of(view_, original_.mean(4)), end = start + glm::vec2(-40.0f, 30.0f);
+  Events events;
+  events.key("kp1").key("kp5").wait().click(start).wait().drag(start, end, 6).wait();
+  const CovarianceMesh edited = play(events, "ortho_front_drag.png");
+  const Vec3 d = edited.mean(4) - original_.mean(4);
+  EXPECT_GT(d.norm(), 0.1) << "the centre dot did not move the vertex";
+  EXPECT_NEAR(d.z(), 0.0, 1e-6);
+  EXPECT_LT(glm::length(pixel_of(view_, edited.mean(4)) - end), 0.5f);
+  EXPECT_EQ(edited.covariance(4), original_.covariance(4));
+}
+
+}  // namespace
+}  // namespace gps
