@@ -1,4 +1,4 @@
-// Tessellation levels: uniform, or adaptive from the projected length of each patch edge, computed
+// Tessellation levels: uniform, or adaptive from the projected size of each patch edge, computed
 // from that edge's two corner points alone so that both patches beside it agree (no cracks). The
 // tessellation control stages and the surface cache's level check (shaders/patch_level_check_comp.glsl)
 // both take a patch's outer levels from here; `precise` keeps them alike in both stages.
@@ -9,12 +9,23 @@ uniform float u_pixels;       // adaptive: target edge length in pixels
 uniform int u_debug_mismatch; // tests only: break edge agreement on purpose
 uniform int u_first_patch;    // patches are drawn in batches; gl_PrimitiveID restarts with each
 
+// An edge's size on screen: the projected diameter in pixels of the sphere centred at its midpoint
+// whose diameter is its length (OpenSubdiv's measure). The projected length would vanish for an edge
+// seen end-on, and give level 1 to the patches whose silhouette runs along it. A diameter d at clip
+// depth w spans d·|row|/w of normalised device coordinates, `row` the view-projection's x or y row
+// (a projection of a rigid view, scaled: both rows have the one scale for square pixels). The ends
+// are taken in index order so that both patches beside the edge compute the same level; an edge
+// with an end behind the eye gets 64 (surface_cache.cpp's hysteresis measures edges alike).
 float edge_level(int a, int b) {
   if (u_pixels <= 0.0) return u_level;
-  precise vec4 pa = u_view_projection * vec4(point_mean(a), 1.0);
-  precise vec4 pb = u_view_projection * vec4(point_mean(b), 1.0);
-  if (pa.w <= 0.0 || pb.w <= 0.0) return 64.0;
-  precise float pixels = length((pa.xy / pa.w - pb.xy / pb.w) * 0.5 * u_viewport);
+  precise vec3 first = point_mean(min(a, b));
+  precise vec3 second = point_mean(max(a, b));
+  mat4 rows = transpose(u_view_projection);
+  precise float w_first = dot(rows[3], vec4(first, 1.0));
+  precise float w_second = dot(rows[3], vec4(second, 1.0));
+  if (w_first <= 0.0 || w_second <= 0.0) return 64.0;
+  precise float scale = 0.5 * max(length(rows[0].xyz) * u_viewport.x, length(rows[1].xyz) * u_viewport.y);
+  precise float pixels = distance(first, second) * scale / (0.5 * (w_first + w_second));
   return clamp(ceil(pixels / u_pixels), 1.0, 64.0);
 }
 

@@ -202,16 +202,17 @@ void EditorApp::write_statistics(const std::string& path) {
   const DrawStatistics draw = renderer_->last_statistics();
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& [pass, ms] : timer_->latest()) passes[pass] = ms;
-  const nlohmann::json j = {{"mesh", document_.display_name()},
-                            {"faces", document_.mesh().n_faces()},
-                            {"patches", draw.patches},
-                            {"triangles", draw.triangles},
-                            {"gl", window_.description()},
-                            {"median_frame_ms", clock_.median_frame_ms()},
-                            {"median_edit_to_frame_ms", clock_.median_edit_ms()},
-                            {"edits", clock_.edit_count()},
-                            {"last_edit_vertices", reach_.size()},
-                            {"gpu_pass_ms", passes}};
+  nlohmann::json j = {{"mesh", opened_name_},
+                      {"faces", document_.mesh().n_faces()},
+                      {"patches", draw.patches},
+                      {"triangles", draw.triangles},
+                      {"gl", window_.description()},
+                      {"median_frame_ms", clock_.median_frame_ms()},
+                      {"median_edit_to_frame_ms", clock_.median_edit_ms()},
+                      {"edits", clock_.edit_count()},
+                      {"last_edit_vertices", reach_.size()},
+                      {"gpu_pass_ms", passes}};
+  if (!options_.save.empty()) j["saved"] = options_.save;
   write_file_atomically(path, [&j](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 

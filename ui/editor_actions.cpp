@@ -84,6 +84,7 @@ void EditorApp::mesh_replaced() {
   view_.draw.mesh_lines = document_.mesh().n_faces() <= kMaxFacesWithLines;
   reach_options_.radius = 0.1 * bounding_box_diagonal(document_.mesh());
   reach_options_.mirror_tolerance = 1e-6 * bounding_box_diagonal(document_.mesh());
+  opened_name_ = document_.display_name();
 }
 
 bool EditorApp::save() {

@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <glm/gtc/matrix_access.hpp>
 #include <iterator>
 
 #include "render/gl/device_memory.h"
@@ -77,30 +78,31 @@ bool SurfaceCache::can_refresh_to(const Key& key, const glm::mat4& view_projecti
   return matches(captured, view_projection, viewport);
 }
 
-// The adaptive rule (see the header): every base edge's projected length, floored at `pixels`,
-// within the hysteresis factor of its length under the captured camera; no edge end crossing the
-// eye plane (the shaders give such edges level 64).
+// The adaptive rule (see the header): every base edge's projected size (shaders/tess_levels.glsl:
+// the projected diameter of the sphere around it), floored at `pixels`, within the hysteresis factor
+// of its size under the captured camera; no edge end crossing the eye plane (the shaders give such
+// edges level 64).
 bool SurfaceCache::camera_close(const glm::mat4& view_projection, glm::vec2 viewport, float pixels) const {
   if (view_projection == view_projection_ && viewport == viewport_) return true;
   struct Projected {
-    glm::vec2 xy;
+    float pixels;
     bool behind;
   };
-  const auto project = [](const glm::mat4& m, glm::vec2 size, const glm::vec3& p) {
-    const glm::vec4 c = m * glm::vec4(p, 1.0f);
-    return Projected{glm::vec2(c) / c.w * 0.5f * size, c.w <= 0.0f};
+  const auto project = [](const glm::mat4& m, glm::vec2 size, const glm::vec3& a, const glm::vec3& b) {
+    const glm::vec4 w_row = glm::row(m, 3);
+    const float wa = glm::dot(w_row, glm::vec4(a, 1.0f)), wb = glm::dot(w_row, glm::vec4(b, 1.0f));
+    const float scale = 0.5f * std::max(glm::length(glm::vec3(glm::row(m, 0))) * size.x,
+                                        glm::length(glm::vec3(glm::row(m, 1))) * size.y);
+    return Projected{glm::distance(a, b) * scale / (0.5f * (wa + wb)), wa <= 0.0f || wb <= 0.0f};
   };
   const float low = 1.0f / hysteresis_, high = hysteresis_;
   for (size_t e = 0; e + 1 < cage_edges_.size(); e += 2) {
     const glm::vec3& a = cage_positions_[cage_edges_[e]];
     const glm::vec3& b = cage_positions_[cage_edges_[e + 1]];
-    const Projected a0 = project(view_projection_, viewport_, a), b0 = project(view_projection_, viewport_, b);
-    const Projected a1 = project(view_projection, viewport, a), b1 = project(view_projection, viewport, b);
-    const bool behind0 = a0.behind || b0.behind, behind1 = a1.behind || b1.behind;
-    if (behind0 != behind1) return false;
-    if (behind0) continue;
-    const float l0 = std::max(glm::length(a0.xy - b0.xy), pixels), l1 = std::max(glm::length(a1.xy - b1.xy), pixels);
-    const float ratio = l1 / l0;
+    const Projected before = project(view_projection_, viewport_, a, b), now = project(view_projection, viewport, a, b);
+    if (before.behind != now.behind) return false;
+    if (before.behind) continue;
+    const float ratio = std::max(now.pixels, pixels) / std::max(before.pixels, pixels);
     if (!(ratio >= low && ratio <= high)) return false;
   }
   return true;

@@ -6,8 +6,8 @@
 // the renderer bumps with every compute pass: set_mesh, update_vertices, recompute_all) and the
 // tessellation levels (uniform level, or adaptive target pixels; the debug mismatch). Adaptive
 // levels also depend on the camera; the cache keeps the camera of its capture and re-captures only
-// when some base mesh edge's projected length, counted as at least `pixels` (shorter edges get
-// level 1 either way), changed by more than the hysteresis factor (default 1.25) since then, or
+// when some base mesh edge's projected size (shaders/tess_levels.glsl: the projected diameter of the
+// sphere around it), counted as at least `pixels` (smaller edges get level 1 either way), changed by more than the hysteresis factor (default 1.25) since then, or
 // crossed the eye plane. Within that, the stored levels stay within the factor of what the live
 // pipeline would choose.
 //
@@ -162,7 +162,7 @@ public:
   /// software); a change drops the stored triangles.
   void set_weld(Weld weld);
   Weld weld_mode() const { return weld_mode_; }
-  /// The factor by which a base edge's projected length may change before adaptive levels capture
+  /// The factor by which a base edge's projected size may change before adaptive levels capture
   /// again (default 1.25).
   void set_hysteresis(float factor) { hysteresis_ = factor; }
 

@@ -27,7 +27,8 @@ struct TessellatedVertex {
 /// What the patch draws produced (pipeline-statistics queries; see SurfaceRenderer::set_collect_statistics).
 struct DrawStatistics {
   long long triangles = 0;  // primitives the tessellator generated
-  long long vertices = 0;   // tessellation evaluation shader invocations; -1 not counted (without
+  long long vertices = 0;   // tessellation evaluation shader invocations, or where `cached` the vertex shader
+                            // invocations of the stored vertices drawn; -1 not counted (without
                             // ARB_pipeline_statistics_query, or a frame drawn as the surface cache captured it)
   int patches = 0;          // patches of the plan
   bool cached = false;      // drawn from the surface cache: `triangles` are the stored ones, nothing was evaluated

@@ -118,12 +118,25 @@ void SurfaceRenderer::set_matcap(const Image& m) {
   check_gl_errors("uploading the MatCap");
 }
 
+void SurfaceRenderer::set_collect_statistics(bool collect) {
+  patches_.set_collect_statistics(collect);
+  if (!collect || !GLAD_GL_ARB_pipeline_statistics_query)
+    cached_statistics_.reset();
+  else if (!cached_statistics_)
+    cached_statistics_ = std::make_unique<QueryRing>(std::vector<unsigned>{GL_VERTEX_SHADER_INVOCATIONS_ARB}, 4);
+}
+
 DrawStatistics SurfaceRenderer::last_statistics() {
   last_statistics_.cached = last_cache_frame_ == CacheFrame::stored;
   if (last_cache_frame_ != CacheFrame::live) {
     last_statistics_.triangles = cache_.triangles();
     // A frame drawn as it was captured ran its evaluation block by block: not counted.
-    last_statistics_.vertices = last_statistics_.cached && GLAD_GL_ARB_pipeline_statistics_query ? 0 : -1;
+    last_statistics_.vertices = -1;
+    if (last_statistics_.cached && GLAD_GL_ARB_pipeline_statistics_query) {
+      last_statistics_.vertices = 0;  // none finished yet, or not collecting
+      if (cached_statistics_)
+        if (const auto& counts = cached_statistics_->latest()) last_statistics_.vertices = (long long)(*counts)[0];
+    }
   } else {
     patches_.latest_statistics(last_statistics_);
   }
@@ -173,7 +186,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
       if (o.static_triangles)
         static_triangles_.draw();
       else if (cached)
-        cache_.draw(grid);
+        draw_cache(grid);
       else
         patches_.draw(program, o, n_patches());
     }
@@ -188,6 +201,12 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   }
   glBindVertexArray(0);
   check_gl_errors("drawing");
+}
+
+void SurfaceRenderer::draw_cache(bool grid) {
+  const bool counted = cached_statistics_ && cached_statistics_->begin();
+  cache_.draw(grid);
+  if (counted) cached_statistics_->end();
 }
 
 SurfaceCache::Key SurfaceRenderer::cache_key(const DrawOptions& o) const {

@@ -22,6 +22,7 @@
 #include "render/overlays/ellipsoid_overlay.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/gpu_pass_timer.h"
+#include "render/gl/query_ring.h"
 #include "render/image/image.h"
 #include "render/pipeline/patch_draw.h"
 #include "render/pipeline/plan_buffers.h"
@@ -81,8 +82,9 @@ public:
   /// Times the compute passes ("9D + stencils") and each drawn layer ("surface", "ellipsoids",
   /// "mesh lines") into `timer`; nullptr (the default) times nothing.
   void set_pass_timer(GpuPassTimer* timer) { timer_ = timer; }
-  /// Counts triangles and vertices of each patch draw (off by default: headless renders pay nothing).
-  void set_collect_statistics(bool collect) { patches_.set_collect_statistics(collect); }
+  /// Counts triangles and vertices of each patch draw and the vertices of each draw from the surface
+  /// cache (off by default: headless renders pay nothing).
+  void set_collect_statistics(bool collect);
   /// The figures of the newest patch draw whose queries finished: drawing every frame, they lag a
   /// frame or two (the queries are never waited for). Zero counts before any finished.
   DrawStatistics last_statistics();
@@ -117,6 +119,8 @@ private:
   /// A capture of every patch (drawing the frame as it goes), where prepare_cache() left the cache
   /// not matching the frame.
   CacheFrame capture_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
+  /// The stored triangles with the bound program, counted while collecting statistics.
+  void draw_cache(bool grid);
   /// Whether a cached frame of these options draws the quads' wireframe: their tessellation grid,
   /// stored with the captured vertices (triangles' comes from a geometry stage).
   bool draws_grid(const DrawOptions& o) const { return o.wireframe && shape() == PatchShape::quad; }
@@ -147,6 +151,7 @@ private:
   long long storage_limit_ = 0;
   GpuPassTimer* timer_ = nullptr;
   DrawStatistics last_statistics_;
+  std::unique_ptr<QueryRing> cached_statistics_;  // while collecting statistics: a cached draw's vertices
   CacheFrame last_cache_frame_ = CacheFrame::live;
 };
 

@@ -259,7 +259,12 @@ TEST_P(SurfaceCacheTest, EditsEvaluatedAgainEqualACapture) {
   if (GetParam() == SurfaceCache::Weld::at_capture) settings.push_back(uniform(2));
   for (const DrawOptions& o : settings) {
     int evaluated = 0, captured_again = 0;  // patches, over the edits
-    for (const char* name : {"pawn", "icosphere", "cube"}) {
+    // At adaptive levels not the cube: both moved corners border most of its patches, so that an edit
+    // which changes the level of an edge there (every edge of the cube is as long) changes over half
+    // of them, which are captured again whole.
+    const std::vector<const char*> names = o.pixels > 0 ? std::vector<const char*>{"pawn", "icosphere"}
+                                                        : std::vector<const char*>{"pawn", "icosphere", "cube"};
+    for (const char* name : names) {
       CovarianceMesh mesh = make_sample(name);
       SurfaceRenderer renderer;
       renderer.surface_cache().set_weld(GetParam());

@@ -6,6 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
 
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
@@ -194,6 +195,18 @@ TEST_F(EditorTest, OpeningAnotherMeshWithUnsavedChangesAsksFirst) {
            "--save " + dir_.file("opened.ply"));
   ASSERT_EQ(clean.exit_code, 0) << clean.output;
   EXPECT_EQ(read_mesh(dir_.file("opened.ply")).n_vertices(), make_sample("torus").n_vertices());
+}
+
+// The statistics name the mesh the editor opened, and the file a scripted save wrote beside it (the
+// save makes that file the document's, but it is not what was measured).
+TEST_F(EditorTest, StatisticsNameTheOpenedMeshAndTheSavedFile) {
+  const auto r = play(R"({"type": "wait", "frames": 2})",
+                      "--save " + dir_.file("saved.ply") + " --stats " + dir_.file("stats.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json stats = nlohmann::json::parse(read_text_file(dir_.file("stats.json")));
+  EXPECT_EQ(stats.at("mesh").get<std::string>(), "original.ply");
+  EXPECT_EQ(stats.value("saved", ""), dir_.file("saved.ply"));
+  EXPECT_EQ(stats.at("faces").get<int>(), int(original_.n_faces()));
 }
 
 TEST(EditorCommandLine, BadInputIsOneLineAndNonZero) {
