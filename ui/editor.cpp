@@ -229,6 +229,7 @@ void EditorApp::write_screenshot(const std::string& path) {
 void EditorApp::draw_ui() {
   commands_.draw_menu_bar();
   draw_handles_and_box();
+  draw_modelling_overlay();
   if (view_.show_inspector) inspector_.draw(document_, selection_, reach_options_, &view_.show_inspector);
   if (view_.show_view) {
     const ViewPanelChanges c = draw_view_panel(view_, &view_.show_view);
