@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/repair_arguments.h"
 #include "core/io/mesh_io.h"
 #include "core/io/quoted_text.h"
 #include "core/io/text_file.h"
@@ -16,6 +17,7 @@ void add_edit_command(CLI::App& app) {
   struct Args {
     std::string input, output, ops;
     bool binary = false, quiet = false;
+    RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("edit", "Apply modelling operations (extrude, loop cut, merge, ...) to a mesh");
@@ -26,12 +28,14 @@ void add_edit_command(CLI::App& app) {
       ->required();
   cmd->add_flag("--binary", args->binary, "binary PLY");
   cmd->add_flag("-q,--quiet", args->quiet, "print only errors");
+  add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
     const bool from_file = !args->ops.empty() && args->ops[0] == '@';
     const std::string source = from_file ? args->ops.substr(1) : std::string("--ops");
     const OperationList ops = OperationList::parse(from_file ? read_text_file(source) : args->ops, source);
-    const CovarianceMesh mesh =
-        args->input.rfind("sample:", 0) == 0 ? make_sample(args->input.substr(7)) : read_mesh(args->input);
+    const CovarianceMesh mesh = args->input.rfind("sample:", 0) == 0
+                                    ? make_sample(args->input.substr(7))
+                                    : read_mesh_repairing(args->input, args->repair, {}, args->quiet);
     std::vector<std::string> summaries;
     const Modelled result = [&] {
       try {

@@ -3,6 +3,7 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
+#include "app/repair_arguments.h"
 #include "core/mesh/inference.h"
 #include "core/io/mesh_io.h"
 
@@ -13,6 +14,7 @@ void add_infer_command(CLI::App& app) {
     std::string input, output;
     double bias = 0.05, isotropic = 0;
     bool binary = false;
+    RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("infer", "Infer vertex covariances from the mesh (replaces any in the file)");
@@ -24,6 +26,7 @@ void add_infer_command(CLI::App& app) {
       ->check(positive_number())
       ->excludes(bias);
   cmd->add_flag("--binary", args->binary, "binary PLY");
+  add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
     ImportOptions options;  // a plain mesh gets the same kind of covariances on import
     options.bias = args->bias;
@@ -31,7 +34,7 @@ void add_infer_command(CLI::App& app) {
       options.covariance = ImportOptions::Covariance::isotropic;
       options.isotropic_scale = args->isotropic;
     }
-    CovarianceMesh m = read_mesh(args->input, options);
+    CovarianceMesh m = read_mesh_repairing(args->input, args->repair, options);
     if (args->isotropic > 0)
       isotropic_covariances(m, args->isotropic);
     else

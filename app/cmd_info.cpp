@@ -4,6 +4,8 @@
 #include <map>
 
 #include "app/commands.h"
+#include "app/repair_arguments.h"
+#include "core/mesh/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/io/mesh_io.h"
 #include "core/plans/planned_surface.h"
@@ -11,8 +13,41 @@
 namespace gps {
 
 namespace {
-void print_info(const std::string& path) {
-  const CovarianceMesh m = read_mesh(path);
+// A mesh read_mesh refuses: every problem class the repair finds in it (the same code, on a copy),
+// with examples numbered as the file numbers them, and the parts and boundary loops a repair would
+// leave; then the refusal itself (exit 1). A file the readers refuse is only refused.
+[[noreturn]] void print_problems(const std::string& path, const Error& refusal) {
+  bool has_covariances = false;
+  PolygonSoup soup;
+  try {
+    soup = read_polygon_soup(path, has_covariances);
+  } catch (const Error&) {
+    throw refusal;
+  }
+  if (soup.faces.n_faces() == 0) throw refusal;  // no surface to diagnose
+  const RepairReport report = diagnose_polygon_soup(soup, repair_options_for(path));
+  const auto problems = report.problems();
+  if (problems.empty()) throw refusal;
+  std::cout << "file: " << path << "\nvertices: " << soup.positions.size() << "\nfaces: " << soup.faces.n_faces()
+            << "\nproblems (vertices and faces numbered from " << repair_options_for(path).numbering_base
+            << " as the file numbers them):\n";
+  for (const std::string& line : problems) std::cout << "  " << line << "\n";
+  std::cout << "after --repair: " << report.parts << (report.parts == 1 ? " part" : " parts");
+  if (report.boundary_loops >= 0)
+    std::cout << ", " << report.boundary_loops << (report.boundary_loops == 1 ? " boundary loop" : " boundary loops");
+  std::cout << "\n" << std::flush;
+  throw refusal;
+}
+
+void print_info(const std::string& path, const RepairArguments& repair) {
+  const CovarianceMesh m = [&] {
+    try {
+      return read_mesh_repairing(path, repair);
+    } catch (const Error& e) {
+      if (repair.import_options().repair) throw;
+      print_problems(path, e);
+    }
+  }();
   const PolygonTopology t = topology_of(m.mesh);
   const MeshConnectivity c = connectivity_of(t);
   std::map<int, int> face_sizes, valences;
@@ -51,8 +86,10 @@ void print_info(const std::string& path) {
 void add_info_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("info", "Print counts, valences and covariance ranges of a mesh");
   auto path = std::make_shared<std::string>();
+  auto repair = std::make_shared<RepairArguments>();
   cmd->add_option("file", *path, "mesh file (.ply, .obj, .off, .stl)")->required();
-  cmd->callback([path] { print_info(*path); });
+  add_repair_arguments(cmd, *repair);
+  cmd->callback([path, repair] { print_info(*path, *repair); });
 }
 
 }  // namespace gps

@@ -7,6 +7,7 @@
 #include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/plan_arguments.h"
+#include "app/repair_arguments.h"
 #include "core/mesh/error.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
@@ -30,6 +31,7 @@ struct RenderArgs {
   std::vector<std::string> aovs;
   int level = 0, reference = -1;  // level 0: adaptive
   PlanArguments plans;
+  RepairArguments repair;
   float pixels = 0;  // 0: default_adaptive_pixels() of the output size
   std::string context = "auto";
   bool mesh_lines = false, wireframe = false, ellipsoids = false, no_cache = false, exact = false;
@@ -127,7 +129,7 @@ ContextKind context_kind(const std::string& name) {
 void render(const RenderArgs& a) {
   load_matcap(a.matcap);  // before any GL work: a bad name or size is a usage error
   parse_pixel_size(a.size);
-  const CovarianceMesh mesh = read_mesh(a.input);
+  const CovarianceMesh mesh = read_mesh_repairing(a.input, a.repair);
   const auto context = create_offscreen_context(context_kind(a.context));
   SurfaceRenderer renderer;
   render_one(renderer, context->description(), a, mesh);
@@ -165,6 +167,9 @@ void run_script(const std::string& path, const std::string& context_name) {
       a.plans.scheme = job.value("scheme", a.plans.scheme);
       a.plans.loop_beta = job.value("loop_beta", a.plans.loop_beta);
       a.plans.options();  // checks the names and the depth
+      a.repair.repair = job.value("repair", a.repair.repair);
+      a.repair.weld = job.value("weld", a.repair.weld);
+      if (job.contains("weld") && !(a.repair.weld >= 0)) throw usage_error("weld must be a number ≥ 0");
       a.matcap = job.value("matcap", a.matcap);
       a.mode = job.value("mode", a.mode);
       a.camera = job.value("camera", a.camera);
@@ -180,7 +185,8 @@ void run_script(const std::string& path, const std::string& context_name) {
       if (job.contains("level") && (a.level < 1 || a.level > 64)) throw usage_error("level must be 1..64");
       if (a.mode != "matcap" && a.mode != "normals" && a.mode != "flat")
         throw usage_error("mode must be matcap, normals or flat");
-      CovarianceMesh mesh = a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh(a.input);
+      CovarianceMesh mesh =
+          a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh_repairing(a.input, a.repair);
       if (job.contains("ops")) mesh = OperationList::parse(job["ops"].dump(), "").apply(mesh).mesh;
       for (const auto& edit : job.value("edits", nlohmann::json::array())) {
         const int v = edit.at("vertex").get<int>();
@@ -237,6 +243,7 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::Range(0.5f, 1000.0f))
       ->excludes(level);
   add_plan_arguments(cmd, a->plans);
+  add_repair_arguments(cmd, a->repair);
   cmd->add_option(
       "--matcap", a->matcap, "built-in MatCap (" + [] {
         std::string s;

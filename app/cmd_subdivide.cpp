@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/repair_arguments.h"
 #include "app/naming_input.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/mesh_connectivity.h"
@@ -15,6 +16,7 @@ void add_subdivide_command(CLI::App& app) {
     std::string input, output, scheme = "auto", beta = "loop";
     int levels = 1;
     bool limit = false, binary = false;
+    RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("subdivide", "Gaussian-product subdivision on the CPU (the reference)");
@@ -28,8 +30,9 @@ void add_subdivide_command(CLI::App& app) {
       ->check(CLI::IsMember({"loop", "warren"}));
   cmd->add_flag("--limit", args->limit, "move every vertex to its exact limit position");
   cmd->add_flag("--binary", args->binary, "binary PLY");
+  add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
-    const CovarianceMesh m = read_mesh(args->input);
+    const CovarianceMesh m = read_mesh_repairing(args->input, args->repair);
     const PlanOptions named = plan_options_named(args->scheme, args->beta);
     SubdivisionOptions o;
     o.scheme = scheme_for(topology_of(m.mesh), named);

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/repair_arguments.h"
 #include "app/naming_input.h"
 #include "app/plan_arguments.h"
 #include "core/io/mesh_io.h"
@@ -16,6 +17,7 @@ void add_tessellate_command(CLI::App& app) {
     int level = 8;
     PlanArguments plans;
     bool binary = false;
+    RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
   auto* cmd =
@@ -25,8 +27,9 @@ void add_tessellate_command(CLI::App& app) {
   add_plan_arguments(cmd, args->plans);
   cmd->add_option("--level", args->level, "tessellation level per patch edge")->check(CLI::Range(1, 64));
   cmd->add_flag("--binary", args->binary, "binary PLY");
+  add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
-    const CovarianceMesh m = read_mesh(args->input);
+    const CovarianceMesh m = read_mesh_repairing(args->input, args->repair);
     const PlannedSurface surface = naming_input(args->input, [&] { return PlannedSurface(m, args->plans.options()); });
     const TriangleMesh t =
         naming_input(args->input, [&] { return tessellate(surface.tables().plans, surface.points(), args->level); });

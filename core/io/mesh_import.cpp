@@ -19,20 +19,15 @@ namespace {
 
 // `source` is already as messages show it (escaped). A mesh of vertices only is refused before its
 // arrays are built, with read_mesh's message.
-CovarianceMesh plain_mesh(std::vector<Vec3>&& points, PolygonTopology&& faces, const std::string& source) {
+PolygonSoup plain_soup(std::vector<Vec3>&& points, PolygonTopology&& faces, const std::string& source) {
   for (size_t i = 0; i < points.size(); ++i)
     if (const std::string why = position_problem(points[i]); !why.empty())
       throw Error(source + ": vertex " + std::to_string(i) + " " + why);
   if (faces.n_faces() == 0) throw Error(source + ": the mesh has no faces");
-  return make_covariance_mesh(std::move(points), {}, std::move(faces), source);
-}
-
-CovarianceMesh plain_mesh(const std::vector<Vec3>& points, const std::vector<std::vector<int>>& faces,
-                          const std::string& source) {
-  for (size_t i = 0; i < points.size(); ++i)
-    if (const std::string why = position_problem(points[i]); !why.empty())
-      throw Error(source + ": vertex " + std::to_string(i) + " " + why);
-  return make_covariance_mesh(points, std::vector<Mat3>(points.size(), Mat3::Identity()), faces, source);
+  PolygonSoup soup;
+  soup.positions = std::move(points);
+  soup.faces = std::move(faces);
+  return soup;
 }
 
 bool parse_int(std::string_view s, long long& out) {
@@ -42,7 +37,19 @@ bool parse_int(std::string_view s, long long& out) {
 
 }  // namespace
 
-CovarianceMesh parse_obj(std::string data, const std::string& source_path) {
+CovarianceMesh parse_obj(std::string data, const std::string& source) {
+  return mesh_of_soup(parse_obj_soup(std::move(data), source), escaped(source));
+}
+
+CovarianceMesh parse_off(std::string data, const std::string& source) {
+  return mesh_of_soup(parse_off_soup(std::move(data), source), escaped(source));
+}
+
+CovarianceMesh parse_stl(std::string data, const std::string& source) {
+  return mesh_of_soup(parse_stl_soup(std::move(data), source), escaped(source));
+}
+
+PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   const std::string source = escaped(source_path);
   if (data.empty()) throw Error(source + ": the file is empty");
   // Two passes over the lines: the first counts the vertices and face corners, so that the arrays are
@@ -95,17 +102,17 @@ CovarianceMesh parse_obj(std::string data, const std::string& source_path) {
       if (double(faces.verts.size()) > n * (n - 1)) {
         faces.offsets.shrink_to_fit();
         faces.verts.shrink_to_fit();
-        plain_mesh(std::move(points), std::move(faces), source);
+        mesh_of_soup(plain_soup(std::move(points), std::move(faces), source), source);
         throw Error(source + ": the mesh is not manifold");  // not reached: the check above throws
       }
     }
   }
   if (points.empty()) throw Error(source + ": no vertices");
   std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built
-  return plain_mesh(std::move(points), std::move(faces), source);
+  return plain_soup(std::move(points), std::move(faces), source);
 }
 
-CovarianceMesh parse_off(std::string data, const std::string& source_path) {
+PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {
   const std::string source = escaped(source_path);
   if (data.empty()) throw Error(source + ": the file is empty");
   WordCursor t(data);
@@ -158,7 +165,7 @@ CovarianceMesh parse_off(std::string data, const std::string& source_path) {
     t.skip_line(line);  // colour values
   }
   std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built
-  return plain_mesh(std::move(points), std::move(faces), source);
+  return plain_soup(std::move(points), std::move(faces), source);
 }
 
 void check_text_head(std::string_view head, size_t size) {
@@ -178,7 +185,7 @@ void check_stl_head(std::string_view head, size_t size) {
                 " triangles (" + std::to_string(84 + size_t(declared) * 50) + " bytes)");
 }
 
-CovarianceMesh parse_stl(std::string data, const std::string& source_path) {
+PolygonSoup parse_stl_soup(std::string data, const std::string& source_path) {
   const std::string source = escaped(source_path);
   if (data.empty()) throw Error(source + ": the file is empty");
   std::vector<Vec3> corners;
@@ -259,7 +266,7 @@ CovarianceMesh parse_stl(std::string data, const std::string& source_path) {
     faces.offsets.push_back(int(faces.verts.size()));
   }
   std::vector<int>().swap(first);
-  return plain_mesh(std::move(points), std::move(faces), source);
+  return plain_soup(std::move(points), std::move(faces), source);
 }
 
 }  // namespace gps

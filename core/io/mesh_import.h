@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/io/polygon_soup.h"
 #include "core/mesh/covariance_mesh.h"
 
 namespace gps {
@@ -26,5 +27,11 @@ CovarianceMesh parse_off(std::string data, const std::string& source);
 /// Parses STL, ASCII or binary; triangle corners at identical positions are welded into one vertex.
 /// The data is taken over and freed once parsed, before the mesh is built (pass it moved).
 CovarianceMesh parse_stl(std::string data, const std::string& source);
+
+/// The same three readers stopping at the polygon soup (positions checked, face indices in range, the
+/// topology not checked), for read_mesh to repair or build (core/io/mesh_repair.h).
+PolygonSoup parse_obj_soup(std::string data, const std::string& source);
+PolygonSoup parse_off_soup(std::string data, const std::string& source);
+PolygonSoup parse_stl_soup(std::string data, const std::string& source);
 
 }  // namespace gps

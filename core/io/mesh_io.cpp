@@ -19,23 +19,58 @@ std::string extension_of(const std::string& path) {
   return ext;
 }
 
-CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options) {
+PolygonSoup read_polygon_soup(const std::string& path, bool& has_covariances) {
   const std::string ext = extension_of(path);
   if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".stl")
     throw Error(escaped(path) + ": unknown mesh format " + quoted_token(ext) + " (use .ply, .obj, .off or .stl)");
   std::string data = read_text_file(path, ext == ".ply"   ? HeadCheck(check_ply_head)
                                           : ext == ".stl" ? check_stl_head
                                                           : check_text_head);
+  has_covariances = false;
+  if (ext == ".ply") return parse_ply_soup(std::move(data), path, has_covariances);
+  if (ext == ".obj") return parse_obj_soup(std::move(data), path);
+  if (ext == ".off") return parse_off_soup(std::move(data), path);
+  return parse_stl_soup(std::move(data), path);
+}
+
+RepairOptions repair_options_for(const std::string& path, const ImportOptions& options) {
+  RepairOptions o;
+  o.weld_tolerance = options.weld_tolerance;
+  o.numbering_base = extension_of(path) == ".obj" ? 1 : 0;
+  return o;
+}
+
+CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options, RepairReport* report) {
   bool has_covariances = false;
+  PolygonSoup soup = read_polygon_soup(path, has_covariances);
+  // Every command and the editor draw or measure a surface: Gaussians without faces have none.
+  const auto no_faces = [&](const char* after) { return Error(escaped(path) + ": the mesh has no faces" + after); };
+  if (soup.faces.n_faces() == 0) throw no_faces("");
+  if (options.repair) {
+    const RepairReport done = repair_polygon_soup(soup, repair_options_for(path, options));
+    if (report) *report = done;
+    if (soup.faces.n_faces() == 0) throw no_faces(" left after repair");
+  }
+  // What the repair mends is named as such when it was not asked for: the classes a diagnosis of the
+  // file finds (read again: only a refused file pays for it) and the option.
+  const auto refused = [&](const std::string& message, Error::Kind kind) {
+    if (options.repair) return Error(message, kind);
+    std::string found;
+    try {
+      bool again = false;
+      found = diagnose_polygon_soup(read_polygon_soup(path, again), repair_options_for(path, options)).summary();
+    } catch (const Error&) {
+    }
+    return Error(message + (found.empty() ? "" : " (" + found + ")") + kRepairHint, kind);
+  };
   // Built in place: OpenMesh's meshes have no move, so an assignment would copy the whole mesh.
   CovarianceMesh mesh = [&]() -> CovarianceMesh {
-    if (ext == ".ply") return parse_ply(std::move(data), path, has_covariances);
-    if (ext == ".obj") return parse_obj(std::move(data), path);
-    if (ext == ".off") return parse_off(std::move(data), path);
-    return parse_stl(std::move(data), path);
+    try {
+      return mesh_of_soup(std::move(soup), escaped(path));
+    } catch (const Error& e) {
+      throw refused(e.what(), e.kind());
+    }
   }();
-  // Every command and the editor draw or measure a surface: Gaussians without faces have none.
-  if (mesh.n_faces() == 0) throw Error(escaped(path) + ": the mesh has no faces");
   if (has_covariances) return mesh;
   try {
     if (options.covariance == ImportOptions::Covariance::infer)
@@ -43,7 +78,7 @@ CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options) 
     else
       isotropic_covariances(mesh, options.isotropic_scale);
   } catch (const Error& e) {
-    throw Error(escaped(path) + ": " + e.what(), e.kind());
+    throw refused(escaped(path) + ": " + e.what(), e.kind());
   }
   validate_gaussians(mesh, escaped(path));
   return mesh;

@@ -2,6 +2,7 @@
 // Reading and writing meshes by file extension (docs/design.md §4).
 #include <string>
 
+#include "core/io/mesh_repair.h"
 #include "core/mesh/covariance_mesh.h"
 
 namespace gps {
@@ -10,12 +11,28 @@ struct ImportOptions {
   enum class Covariance { infer, isotropic } covariance = Covariance::infer;
   double bias = 0.05;            // for inference (GPS paper Eq. 16)
   double isotropic_scale = 0.5;  // σ = scale × mean edge length at the vertex
+  // Repair of the faces as read, before the mesh is built and covariances inferred (core/io/mesh_repair.h).
+  bool repair = false;
+  double weld_tolerance = 1e-6;  // as a fraction of the bounding-box diagonal
 };
+
+/// Appended to a refusal that a repair would mend (one line: "...; gpsurf can repair it: --repair").
+inline constexpr const char* kRepairHint = "; gpsurf can repair it: --repair";
 
 /// Reads .ply (a covariance PLY keeps its covariances; a plain one gets them from `options`),
 /// .obj, .off, .stl (covariances from `options`). Throws gps::Error naming the file, also for a mesh
-/// without faces (every use of a mesh needs its surface).
-CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options = {});
+/// without faces (every use of a mesh needs its surface). Without `options.repair`, a topology that
+/// repair would mend (not manifold, a face using a vertex twice or with all its corners at one point)
+/// is refused with kRepairHint appended; with it, `report` (where given) gets what the repair did.
+CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options = {}, RepairReport* report = nullptr);
+
+/// The polygon soup of a mesh file as read_mesh reads it before repairing or building it;
+/// `has_covariances` says whether the file gave them.
+PolygonSoup read_polygon_soup(const std::string& path, bool& has_covariances);
+
+/// The repair options read_mesh uses for a file: the tolerance of `options`, examples numbered as
+/// the format numbers vertices and faces (from 1 in OBJ, from 0 elsewhere).
+RepairOptions repair_options_for(const std::string& path, const ImportOptions& options = {});
 
 /// Writes .ply (covariances kept; ASCII or binary little endian) or .obj (positions and faces),
 /// atomically: a temporary file beside the target, then a rename.

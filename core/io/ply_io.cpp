@@ -164,10 +164,9 @@ private:
 
 namespace {
 
-// The mesh of PLY data, built in place; `release`, where given, is the string `data` views, freed
-// once parsed and before the mesh is built.
-CovarianceMesh parse_ply_mesh(const std::string& data, const std::string& source, bool& file_has_covariances,
-                              std::string* release) {
+// The polygon soup of PLY data; `release`, where given, is the string `data` views, freed once parsed.
+PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& file_has_covariances,
+                     std::string* release) {
   const std::string shown_source = escaped(source);
   const auto fail = [&](const std::string& what) -> void { throw Error(shown_source + ": " + what); };
   if (data.empty()) fail("the file is empty");
@@ -395,7 +394,17 @@ CovarianceMesh parse_ply_mesh(const std::string& data, const std::string& source
   body.check_end();
   file_has_covariances = has_covariances;
   if (release) std::string().swap(*release);
-  return make_covariance_mesh(std::move(means), std::move(covariances), std::move(faces), shown_source);
+  PolygonSoup soup;
+  soup.positions = std::move(means);
+  soup.covariances = std::move(covariances);
+  soup.faces = std::move(faces);
+  return soup;
+}
+
+// The mesh of PLY data, built in place; `release` as above, freed before the mesh is built.
+CovarianceMesh parse_ply_mesh(const std::string& data, const std::string& source, bool& file_has_covariances,
+                              std::string* release) {
+  return mesh_of_soup(ply_soup(data, source, file_has_covariances, release), escaped(source));
 }
 
 }  // namespace
@@ -409,6 +418,10 @@ PlyContents parse_ply(const std::string& data, const std::string& source) {
 
 CovarianceMesh parse_ply(std::string data, const std::string& source, bool& has_covariances) {
   return parse_ply_mesh(data, source, has_covariances, &data);
+}
+
+PolygonSoup parse_ply_soup(std::string data, const std::string& source, bool& has_covariances) {
+  return ply_soup(data, source, has_covariances, &data);
 }
 
 void check_ply_head(std::string_view head, size_t size) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/io/polygon_soup.h"
 #include "core/mesh/covariance_mesh.h"
 
 namespace gps {
@@ -27,6 +28,9 @@ PlyContents parse_ply(const std::string& data, const std::string& source);
 /// The same taking the data over, freed once parsed and before the mesh is built (pass it moved);
 /// `has_covariances` says whether the file gave them.
 CovarianceMesh parse_ply(std::string data, const std::string& source, bool& has_covariances);
+/// The same stopping at the polygon soup (face indices in range, the topology not checked), for
+/// read_mesh to repair or build (core/io/mesh_repair.h); covariances empty where the file has none.
+PolygonSoup parse_ply_soup(std::string data, const std::string& source, bool& has_covariances);
 
 /// Writes a covariance PLY (doubles, exact round trip), ASCII or binary little endian.
 void write_ply(std::ostream& out, const CovarianceMesh& mesh, bool binary);

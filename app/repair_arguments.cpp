@@ -1,0 +1,37 @@
+#include "app/repair_arguments.h"
+
+#include <iostream>
+
+#include "app/cli_checks.h"
+
+namespace gps {
+
+ImportOptions RepairArguments::import_options(ImportOptions options) const {
+  options.repair = repair || weld >= 0;
+  if (weld >= 0) options.weld_tolerance = weld;
+  return options;
+}
+
+void add_repair_arguments(CLI::App* cmd, RepairArguments& arguments) {
+  cmd->add_flag("--repair", arguments.repair,
+                "repair the mesh as read: weld, drop degenerate/duplicate faces, separate fins and pinch "
+                "vertices, orient, drop isolated vertices (the report is printed first)");
+  cmd->add_option("--weld", arguments.weld,
+                  "weld tolerance as a fraction of the bounding-box diagonal (default 1e-6); implies --repair")
+      ->check(non_negative_number());
+}
+
+CovarianceMesh read_mesh_repairing(const std::string& path, const RepairArguments& arguments,
+                                   const ImportOptions& options, bool quiet) {
+  const ImportOptions o = arguments.import_options(options);
+  RepairReport report;
+  CovarianceMesh mesh = read_mesh(path, o, &report);
+  if (o.repair && !quiet) {
+    const auto lines = report.lines();
+    if (lines.empty()) std::cout << "repair: nothing to repair\n";
+    for (const std::string& line : lines) std::cout << "repair: " << line << "\n";
+  }
+  return mesh;
+}
+
+}  // namespace gps

@@ -1,0 +1,529 @@
+#include "core/io/mesh_repair.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numeric>
+#include <unordered_map>
+
+#include <Eigen/Geometry>
+
+namespace gps {
+
+namespace {
+
+constexpr size_t kExamples = 3;
+
+std::string plural(int n, const std::string& one, const std::string& many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// Union-find whose root is the lowest index of each set.
+struct LowestRootSets {
+  std::vector<int> parent;
+  explicit LowestRootSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[size_t(std::max(a, b))] = std::min(a, b);
+  }
+};
+
+struct CellKey {
+  double x, y, z;
+  bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct CellHash {
+  size_t operator()(const CellKey& k) const {
+    const std::hash<double> h;
+    return h(k.x) ^ (h(k.y) * 0x9E3779B97F4A7C15ull) ^ (h(k.z) * 0xC2B2AE3D27D4EB4Full);
+  }
+};
+
+uint64_t edge_key(int a, int b) { return uint64_t(uint32_t(std::min(a, b))) << 32 | uint32_t(std::max(a, b)); }
+
+class Repair {
+public:
+  Repair(PolygonSoup& soup, const RepairOptions& options) : soup_(soup), options_(options) {}
+
+  RepairReport run() {
+    const int n = int(soup_.positions.size());
+    vertex_origin_.resize(size_t(n));
+    std::iota(vertex_origin_.begin(), vertex_origin_.end(), 0);
+    face_origin_.resize(size_t(soup_.faces.n_faces()));
+    std::iota(face_origin_.begin(), face_origin_.end(), 0);
+    weld();
+    mend_repeated_corners();
+    drop_zero_area_faces();
+    drop_duplicate_faces();
+    separate_fans();
+    orient();
+    drop_isolated_vertices();
+    return report_;
+  }
+
+private:
+  PolygonSoup& soup_;
+  const RepairOptions& options_;
+  RepairReport report_;
+  double tolerance_ = 0;            // the weld distance
+  std::vector<int> vertex_origin_;  // per vertex: the vertex of the file it is (a copy's original)
+  std::vector<int> face_origin_;    // per face: the face of the file it comes from
+  std::vector<char> welded_away_;   // per vertex of the file: merged into a lower one
+  std::vector<int> pair_;           // per corner: the corner across its edge (to the next corner), or −1
+  std::vector<char> flip_;          // per face: reversed by orient()
+
+  PolygonTopology& faces() { return soup_.faces; }
+  std::string vertex_name(int v) const { return "vertex " + std::to_string(v + options_.numbering_base); }
+  std::string face_name(int f) const {
+    return "face " + std::to_string(face_origin_[size_t(f)] + options_.numbering_base);
+  }
+  void example(Defect d, const std::string& text) {
+    auto& list = report_.examples[size_t(d)];
+    if (list.size() < kExamples) list.push_back(text);
+  }
+  void found(Defect d, const std::string& text) {
+    ++report_.counts[size_t(d)];
+    example(d, text);
+  }
+  int next_corner(int f, int k) const {
+    return k + 1 == soup_.faces.offsets[size_t(f) + 1] ? soup_.faces.offsets[size_t(f)] : k + 1;
+  }
+
+  // Rewrites the faces in order: `keep(f, corners, pieces)` puts in `pieces` the faces that take face
+  // f's place (none drops it); `corners` holds f's and may be moved there.
+  template <class Keep>
+  void filter_faces(Keep keep) {
+    PolygonTopology out;
+    out.offsets.reserve(soup_.faces.offsets.size());
+    out.verts.reserve(soup_.faces.verts.size());
+    std::vector<int> origin;
+    origin.reserve(face_origin_.size());
+    std::vector<int> corners;
+    std::vector<std::vector<int>> pieces;
+    for (int f = 0; f < soup_.faces.n_faces(); ++f) {
+      corners.assign(soup_.faces.verts.begin() + soup_.faces.offsets[size_t(f)],
+                     soup_.faces.verts.begin() + soup_.faces.offsets[size_t(f) + 1]);
+      pieces.clear();
+      keep(f, corners, pieces);
+      for (const auto& piece : pieces) {
+        out.verts.insert(out.verts.end(), piece.begin(), piece.end());
+        out.offsets.push_back(int(out.verts.size()));
+        origin.push_back(face_origin_[size_t(f)]);
+      }
+    }
+    soup_.faces = std::move(out);
+    face_origin_ = std::move(origin);
+  }
+
+  // Vertices within the tolerance of one another (through a uniform grid of cells of that size) are
+  // welded to the lowest index of their cluster.
+  void weld() {
+    const auto& p = soup_.positions;
+    welded_away_.assign(p.size(), 0);
+    if (p.empty()) return;
+    Vec3 lo = p[0], hi = p[0];
+    for (const Vec3& x : p) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    const double diagonal = (hi - lo).norm();
+    tolerance_ = std::max(0.0, options_.weld_tolerance) * diagonal;
+    const double cell = tolerance_ > 0 ? tolerance_ : diagonal > 0 ? 1e-6 * diagonal : 1.0;
+    const auto key_of = [&](const Vec3& x) {
+      const Vec3 c = ((x - lo) / cell).array().floor();
+      return CellKey{c.x(), c.y(), c.z()};
+    };
+    std::unordered_map<CellKey, int, CellHash> head;  // per cell: its last vertex; next_in_cell chains the rest
+    head.reserve(p.size());
+    std::vector<int> next_in_cell(p.size(), -1);
+    LowestRootSets sets(p.size());
+    const double tolerance2 = tolerance_ * tolerance_;
+    for (int v = 0; v < int(p.size()); ++v) {
+      const CellKey k = key_of(p[size_t(v)]);
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz) {
+            const auto it = head.find({k.x + dx, k.y + dy, k.z + dz});
+            if (it == head.end()) continue;
+            for (int u = it->second; u >= 0; u = next_in_cell[size_t(u)])
+              if ((p[size_t(u)] - p[size_t(v)]).squaredNorm() <= tolerance2) sets.unite(u, v);
+          }
+      auto [it, inserted] = head.try_emplace(k, v);
+      if (!inserted) {
+        next_in_cell[size_t(v)] = it->second;
+        it->second = v;
+      }
+    }
+    std::vector<int> group_size(p.size(), 0);
+    for (int v = 0; v < int(p.size()); ++v) ++group_size[size_t(sets.find(v))];
+    for (int v = 0; v < int(p.size()); ++v) {
+      const int root = sets.find(v);
+      if (group_size[size_t(root)] < 2) continue;
+      ++report_.counts[size_t(Defect::coincident_vertices)];
+      if (root == v) {
+        ++report_.welded_groups;
+      } else {
+        welded_away_[size_t(v)] = 1;
+        example(Defect::coincident_vertices, vertex_name(v) + " at " + vertex_name(root));
+      }
+    }
+    for (int& v : soup_.faces.verts) v = sets.find(v);
+  }
+
+  // Repeated consecutive corners are removed; a face that still lists a vertex twice is cut there into
+  // loops; loops of fewer than 3 corners are dropped, and a face with none left is degenerate.
+  void mend_repeated_corners() {
+    std::vector<int> position(soup_.positions.size(), -1);  // per vertex: its place on the path, or −1
+    std::vector<int> path;
+    filter_faces([&](int f, std::vector<int>& corners, std::vector<std::vector<int>>& pieces) {
+      const size_t size = corners.size();
+      corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+      while (corners.size() > 1 && corners.front() == corners.back()) corners.pop_back();
+      bool repeated = corners.size() != size;
+      path.clear();
+      std::vector<std::vector<int>> loops;
+      for (const int v : corners) {
+        if (position[size_t(v)] < 0) {
+          position[size_t(v)] = int(path.size());
+          path.push_back(v);
+          continue;
+        }
+        repeated = true;  // the loop from v's earlier place back to v is cut off
+        const size_t from = size_t(position[size_t(v)]);
+        if (path.size() - from >= 3) loops.emplace_back(path.begin() + long(from), path.end());
+        for (size_t i = from + 1; i < path.size(); ++i) position[size_t(path[i])] = -1;
+        path.resize(from + 1);
+      }
+      for (const int v : path) position[size_t(v)] = -1;
+      if (path.size() >= 3) loops.insert(loops.begin(), path);
+      if (!repeated) {
+        pieces.push_back(corners);
+        return;
+      }
+      found(loops.empty() ? Defect::degenerate_faces : Defect::repeated_corners, face_name(f));
+      if (loops.size() > 1) ++report_.split_faces;
+      pieces = std::move(loops);
+    });
+  }
+
+  // A face whose area is at most the weld tolerance times its longest edge (its height below the
+  // tolerance) has no surface to keep.
+  void drop_zero_area_faces() {
+    const auto& p = soup_.positions;
+    filter_faces([&](int f, std::vector<int>& corners, std::vector<std::vector<int>>& pieces) {
+      Vec3 normal = Vec3::Zero();  // Newell's: twice the vector area
+      double longest2 = 0;
+      for (size_t k = 0; k < corners.size(); ++k) {
+        const Vec3 &a = p[size_t(corners[k])], &b = p[size_t(corners[(k + 1) % corners.size()])];
+        normal += a.cross(b);
+        longest2 = std::max(longest2, (b - a).squaredNorm());
+      }
+      if (0.5 * normal.norm() <= tolerance_ * std::sqrt(longest2)) {
+        found(Defect::zero_area_faces, face_name(f));
+        return;
+      }
+      pieces.push_back(std::move(corners));
+    });
+  }
+
+  // Faces on the same vertex set as an earlier one, found by a hash of the sorted set.
+  void drop_duplicate_faces() {
+    std::unordered_multimap<uint64_t, std::pair<std::vector<int>, int>> seen;  // hash → (sorted set, face)
+    seen.reserve(size_t(soup_.faces.n_faces()));
+    filter_faces([&](int f, std::vector<int>& corners, std::vector<std::vector<int>>& pieces) {
+      std::vector<int> set = corners;
+      std::sort(set.begin(), set.end());
+      uint64_t hash = 1469598103934665603ull;
+      for (const int v : set) hash = (hash ^ uint64_t(uint32_t(v))) * 1099511628211ull;
+      const auto [begin, end] = seen.equal_range(hash);
+      for (auto it = begin; it != end; ++it)
+        if (it->second.first == set) {
+          found(Defect::duplicate_faces, face_name(f) + " (as " + face_name(it->second.second) + ")");
+          return;
+        }
+      seen.emplace(hash, std::make_pair(std::move(set), f));
+      pieces.push_back(std::move(corners));
+    });
+  }
+
+  // Pairs each edge's corners: two faces on an edge are paired; of more (a fin), the first face and the
+  // first later one that runs the edge the other way (else the second) are, the others left unpaired.
+  // Then each vertex's corners are grouped into fans (corners joined across paired edges), and every
+  // fan past the first gets its own copy of the vertex.
+  void separate_fans() {
+    PolygonTopology& t = faces();
+    const size_t n_corners = t.verts.size();
+    std::vector<int> corner_face(n_corners);
+    for (int f = 0; f < t.n_faces(); ++f)
+      for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) corner_face[size_t(k)] = f;
+    std::unordered_map<uint64_t, int> edge_of;
+    edge_of.reserve(n_corners);
+    std::vector<int> corner_edge(n_corners), edge_offsets{0};
+    for (size_t k = 0; k < n_corners; ++k) {
+      const int a = t.verts[k], b = t.verts[size_t(next_corner(corner_face[k], int(k)))];
+      const auto [it, inserted] = edge_of.try_emplace(edge_key(a, b), int(edge_offsets.size()) - 1);
+      if (inserted) edge_offsets.push_back(0);
+      corner_edge[k] = it->second;
+      ++edge_offsets[size_t(it->second) + 1];
+    }
+    edge_of = {};
+    const int n_edges = int(edge_offsets.size()) - 1;
+    for (int e = 0; e < n_edges; ++e) edge_offsets[size_t(e) + 1] += edge_offsets[size_t(e)];
+    std::vector<int> edge_corners(n_corners), fill(edge_offsets.begin(), edge_offsets.end() - 1);
+    for (size_t k = 0; k < n_corners; ++k) edge_corners[size_t(fill[size_t(corner_edge[k])]++)] = int(k);
+    pair_.assign(n_corners, -1);
+    std::vector<char> fin_vertex(soup_.positions.size(), 0);
+    for (int e = 0; e < n_edges; ++e) {
+      const int* c = edge_corners.data() + edge_offsets[size_t(e)];
+      const int m = edge_offsets[size_t(e) + 1] - edge_offsets[size_t(e)];
+      if (m < 2) continue;
+      int second = c[1];
+      if (m > 2) {
+        for (int i = 1; i < m; ++i)
+          if (t.verts[size_t(c[i])] != t.verts[size_t(c[0])]) {
+            second = c[i];
+            break;
+          }
+        const int a = t.verts[size_t(c[0])], b = t.verts[size_t(next_corner(corner_face[size_t(c[0])], c[0]))];
+        found(Defect::fin_edges, "edge " + std::to_string(std::min(a, b) + options_.numbering_base) + "–" +
+                                     std::to_string(std::max(a, b) + options_.numbering_base) + " (" +
+                                     std::to_string(m) + " faces)");
+        report_.fin_faces += m - 2;
+        fin_vertex[size_t(a)] = fin_vertex[size_t(b)] = 1;
+      }
+      pair_[size_t(c[0])] = second;
+      pair_[size_t(second)] = c[0];
+    }
+    // Corners at one vertex joined across the paired edges: corner k's edge runs from its vertex to the
+    // next corner's, so both ends join the paired face's corners at the same vertices.
+    LowestRootSets fans(n_corners);
+    for (size_t k = 0; k < n_corners; ++k) {
+      const int j = pair_[k];
+      if (j < 0) continue;
+      const int k_next = next_corner(corner_face[k], int(k)), j_next = next_corner(corner_face[size_t(j)], j);
+      const bool same_direction = t.verts[size_t(j)] == t.verts[k];
+      fans.unite(int(k), same_direction ? j : j_next);
+      fans.unite(k_next, same_direction ? j_next : j);
+    }
+    std::vector<int> fan_vertex(n_corners, -1);  // per fan (its root corner): the vertex it gets
+    std::vector<char> claimed(soup_.positions.size(), 0);
+    std::vector<int> copies(soup_.positions.size(), 0);
+    for (size_t k = 0; k < n_corners; ++k) {
+      const int root = fans.find(int(k));
+      int& vertex = fan_vertex[size_t(root)];
+      if (vertex < 0) {
+        const int v = t.verts[k];
+        if (!claimed[size_t(v)]) {
+          claimed[size_t(v)] = 1;
+          vertex = v;
+        } else {
+          ++copies[size_t(v)];
+          vertex = int(vertex_origin_.size());
+          vertex_origin_.push_back(vertex_origin_[size_t(v)]);
+        }
+      }
+      t.verts[k] = vertex;
+    }
+    for (size_t v = 0; v < copies.size(); ++v) {
+      if (copies[v] == 0) continue;
+      if (fin_vertex[v]) {
+        report_.fin_copies += copies[v];
+      } else {
+        found(Defect::pinch_vertices, vertex_name(int(v)) + " (" + std::to_string(copies[v] + 1) + " fans)");
+        report_.pinch_copies += copies[v];
+      }
+    }
+  }
+
+  // Breadth-first over the paired edges, each face oriented as the face it was reached from; in each
+  // part the orientation most of its faces have is kept. A paired edge that both faces run the same
+  // way once both are oriented makes the part unorientable: it is left as it is.
+  void orient() {
+    PolygonTopology& t = faces();
+    const int n_faces = t.n_faces();
+    flip_.assign(size_t(n_faces), 0);
+    std::vector<int> part(size_t(n_faces), -1), corner_face(t.verts.size());
+    for (int f = 0; f < n_faces; ++f)
+      for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) corner_face[size_t(k)] = f;
+    std::vector<int> queue;
+    int unorientable = 0;
+    for (int start = 0; start < n_faces; ++start) {
+      if (part[size_t(start)] >= 0) continue;
+      const int id = report_.parts++;
+      bool orientable = true;
+      queue.assign(1, start);
+      part[size_t(start)] = id;
+      for (size_t i = 0; i < queue.size(); ++i) {
+        const int f = queue[i];
+        for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
+          const int j = pair_[size_t(k)];
+          if (j < 0) continue;
+          const int g = corner_face[size_t(j)];
+          const char flip = char(flip_[size_t(f)] ^ (t.verts[size_t(j)] == t.verts[size_t(k)]));
+          if (part[size_t(g)] < 0) {
+            part[size_t(g)] = id;
+            flip_[size_t(g)] = flip;
+            queue.push_back(g);
+          } else if (flip_[size_t(g)] != flip) {
+            orientable = false;
+          }
+        }
+      }
+      if (!orientable) {
+        for (const int f : queue) flip_[size_t(f)] = 0;
+        found(Defect::unorientable_parts, "the part of " + face_name(start));
+        ++unorientable;
+        continue;
+      }
+      size_t flipped = 0;
+      for (const int f : queue) flipped += flip_[size_t(f)];
+      if (2 * flipped > queue.size())
+        for (const int f : queue) flip_[size_t(f)] ^= 1;
+    }
+    if (unorientable == 0) count_boundary_loops(corner_face);
+    for (int f = 0; f < n_faces; ++f) {
+      if (!flip_[size_t(f)]) continue;
+      found(Defect::flipped_faces, face_name(f));
+      std::reverse(t.verts.begin() + t.offsets[size_t(f)] + 1, t.verts.begin() + t.offsets[size_t(f) + 1]);
+    }
+  }
+
+  // Each boundary vertex of an oriented manifold has one boundary edge leaving it: the loops are the
+  // cycles of that successor map. Read before the flipped faces are reversed (their edges run back).
+  void count_boundary_loops(const std::vector<int>& corner_face) {
+    const PolygonTopology& t = faces();
+    std::vector<int> next(vertex_origin_.size(), -1);
+    for (size_t k = 0; k < t.verts.size(); ++k) {
+      if (pair_[k] >= 0) continue;
+      const int f = corner_face[k];
+      int a = t.verts[k], b = t.verts[size_t(next_corner(f, int(k)))];
+      if (flip_[size_t(f)]) std::swap(a, b);
+      next[size_t(a)] = b;
+    }
+    report_.boundary_loops = 0;
+    std::vector<char> seen(next.size(), 0);
+    for (size_t v = 0; v < next.size(); ++v) {
+      if (next[v] < 0 || seen[v]) continue;
+      ++report_.boundary_loops;
+      for (int w = int(v); w >= 0 && !seen[size_t(w)]; w = next[size_t(w)]) seen[size_t(w)] = 1;
+    }
+  }
+
+  // Vertices no face uses are dropped (welded ones are not counted again); the rest are compacted,
+  // copies after the vertices of the file, each with its original's position and covariance.
+  void drop_isolated_vertices() {
+    const size_t n = vertex_origin_.size(), n_file = soup_.positions.size();
+    std::vector<char> used(n, 0);
+    for (const int v : soup_.faces.verts) used[size_t(v)] = 1;
+    std::vector<int> index(n, -1);
+    std::vector<Vec3> positions;
+    std::vector<Mat3> covariances;
+    const bool has_covariances = !soup_.covariances.empty();
+    for (size_t v = 0; v < n; ++v) {
+      if (!used[v]) {
+        if (v < n_file && !welded_away_[v]) found(Defect::isolated_vertices, vertex_name(int(v)));
+        continue;
+      }
+      index[v] = int(positions.size());
+      positions.push_back(soup_.positions[size_t(vertex_origin_[v])]);
+      if (has_covariances) covariances.push_back(soup_.covariances[size_t(vertex_origin_[v])]);
+    }
+    for (int& v : soup_.faces.verts) v = index[size_t(v)];
+    soup_.positions = std::move(positions);
+    soup_.covariances = std::move(covariances);
+    soup_.faces.n_vertices = int(soup_.positions.size());
+  }
+};
+
+}  // namespace
+
+bool RepairReport::changed() const {
+  for (int d = 0; d < kDefectCount; ++d)
+    if (counts[size_t(d)] > 0 && Defect(d) != Defect::unorientable_parts) return true;
+  return false;
+}
+
+std::vector<std::string> RepairReport::lines() const {
+  std::vector<std::string> out;
+  const auto n = [&](Defect d) { return count(d); };
+  if (n(Defect::coincident_vertices))
+    out.push_back("welded " + plural(n(Defect::coincident_vertices), "coincident vertex", "coincident vertices") +
+                  " into " + std::to_string(welded_groups));
+  if (n(Defect::repeated_corners))
+    out.push_back("removed repeated corners from " + plural(n(Defect::repeated_corners), "face", "faces") +
+                  (split_faces ? " (" + std::to_string(split_faces) + " split into loops)" : ""));
+  if (n(Defect::degenerate_faces))
+    out.push_back("dropped " + plural(n(Defect::degenerate_faces), "degenerate face", "degenerate faces") +
+                  " (fewer than 3 distinct corners)");
+  if (n(Defect::zero_area_faces))
+    out.push_back("dropped " + plural(n(Defect::zero_area_faces), "zero-area face", "zero-area faces"));
+  if (n(Defect::duplicate_faces))
+    out.push_back("dropped " + plural(n(Defect::duplicate_faces), "duplicate face", "duplicate faces"));
+  if (n(Defect::fin_edges))
+    out.push_back("separated " + plural(fin_faces, "face", "faces") + " from " +
+                  plural(n(Defect::fin_edges), "edge", "edges") + " with more than two faces (" +
+                  plural(fin_copies, "vertex copy", "vertex copies") + ")");
+  if (n(Defect::pinch_vertices))
+    out.push_back("split " + plural(n(Defect::pinch_vertices), "pinch vertex", "pinch vertices") + " (" +
+                  plural(pinch_copies, "copy", "copies") + " added, one per extra fan)");
+  if (n(Defect::flipped_faces))
+    out.push_back("flipped " + plural(n(Defect::flipped_faces), "face", "faces") + " to orient each part consistently");
+  if (n(Defect::unorientable_parts))
+    out.push_back(plural(n(Defect::unorientable_parts), "part cannot", "parts cannot") +
+                  " be oriented (Möbius-like): " + examples[size_t(Defect::unorientable_parts)].front());
+  if (n(Defect::isolated_vertices))
+    out.push_back("dropped " + plural(n(Defect::isolated_vertices), "isolated vertex", "isolated vertices"));
+  return out;
+}
+
+std::vector<std::string> RepairReport::problems() const {
+  static const char* const names[kDefectCount] = {"coincident vertices",
+                                                  "faces with a repeated corner",
+                                                  "degenerate faces",
+                                                  "zero-area faces",
+                                                  "duplicate faces",
+                                                  "edges with more than two faces (fins)",
+                                                  "pinch vertices (several fans)",
+                                                  "faces oriented against their neighbours",
+                                                  "unorientable parts (Möbius-like)",
+                                                  "isolated vertices"};
+  std::vector<std::string> out;
+  for (int d = 0; d < kDefectCount; ++d) {
+    if (counts[size_t(d)] == 0) continue;
+    std::string line = std::string(names[d]) + ": " + std::to_string(counts[size_t(d)]);
+    const char* sep = " (";
+    for (const std::string& e : examples[size_t(d)]) line += std::exchange(sep, ", ") + e;
+    if (counts[size_t(d)] > int(examples[size_t(d)].size())) line += ", ...";
+    out.push_back(line + ")");
+  }
+  return out;
+}
+
+std::string RepairReport::summary() const {
+  static const char* const names[kDefectCount] = {"coincident vertices", "faces with a repeated corner",
+                                                  "degenerate faces",    "zero-area faces",
+                                                  "duplicate faces",     "fin edges (more than two faces)",
+                                                  "pinch vertices",      "flipped faces",
+                                                  "unorientable parts",  "isolated vertices"};
+  std::string out;
+  for (int d = 0; d < kDefectCount; ++d)
+    if (counts[size_t(d)] > 0)
+      out += (out.empty() ? "" : ", ") + std::string(names[d]) + ": " + std::to_string(counts[size_t(d)]);
+  return out;
+}
+
+RepairReport repair_polygon_soup(PolygonSoup& soup, const RepairOptions& options) {
+  return Repair(soup, options).run();
+}
+
+RepairReport diagnose_polygon_soup(const PolygonSoup& soup, const RepairOptions& options) {
+  PolygonSoup copy = soup;
+  return repair_polygon_soup(copy, options);
+}
+
+}  // namespace gps

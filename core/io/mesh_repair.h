@@ -1,0 +1,68 @@
+#pragma once
+// Repair of a mesh as people have them, on the polygon soup a reader produced and before it becomes a
+// CovarianceMesh: coincident vertices welded, degenerate, zero-area and duplicate faces dropped, fins
+// (edges with more than two faces) and pinch vertices (several fans at one vertex) separated, the
+// orientation made consistent per connected part and isolated vertices dropped. Each step is counted
+// in a report. The same code diagnoses a soup without changing it (gpsurf info).
+//
+// Vertices that stay keep their Gaussian; a welded vertex keeps the one of its group's lowest index; a
+// copy made by separating fans takes its original's. Vertices keep their order (welded and dropped ones
+// removed), copies come after them; faces keep their order (dropped ones removed, pieces of a face
+// that used a vertex twice in its place). Everything runs in time linear in the soup (hash tables),
+// except a weld cluster of many vertices within the tolerance of one another.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/io/polygon_soup.h"
+
+namespace gps {
+
+struct RepairOptions {
+  double weld_tolerance = 1e-6;  // vertices closer than this times the bounding-box diagonal are welded
+  int numbering_base = 0;        // examples number vertices and faces from this (1 as OBJ files do)
+};
+
+/// The defect classes, in the order the repair treats them.
+enum class Defect {
+  coincident_vertices,  // vertices within the weld tolerance of another (welded)
+  repeated_corners,     // faces that list a vertex twice (the repeats removed, or split into loops)
+  degenerate_faces,     // faces left with fewer than 3 distinct corners (dropped)
+  zero_area_faces,      // faces thinner than the weld tolerance (dropped)
+  duplicate_faces,      // faces on the same vertex set as an earlier face (dropped)
+  fin_edges,            // edges with more than two faces (faces past the first two get their own copies)
+  pinch_vertices,       // vertices where several fans of faces meet (one copy per fan)
+  flipped_faces,        // faces oriented against their part (flipped)
+  unorientable_parts,   // parts that no flipping can orient (Möbius-like; left as they are)
+  isolated_vertices,    // vertices without faces (dropped)
+};
+inline constexpr int kDefectCount = 10;
+
+struct RepairReport {
+  std::array<int, kDefectCount> counts{};                       // by Defect
+  std::array<std::vector<std::string>, kDefectCount> examples;  // the first few, as the file numbers them
+  int welded_groups = 0;                                        // the vertices the coincident ones became
+  int split_faces = 0;      // faces that used a vertex twice, split into several faces
+  int fin_faces = 0;        // faces separated from fin edges
+  int fin_copies = 0;       // vertex copies made for them
+  int pinch_copies = 0;     // vertex copies made for the extra fans of pinch vertices
+  int parts = 0;            // connected parts of the result
+  int boundary_loops = -1;  // of the result; −1 where a part cannot be oriented
+
+  int count(Defect d) const { return counts[size_t(d)]; }
+  bool changed() const;
+  /// One line per step that changed something ("welded 24 coincident vertices into 8").
+  std::vector<std::string> lines() const;
+  /// One line per defect class found: its name, count and first examples (gpsurf info).
+  std::vector<std::string> problems() const;
+  /// The classes found and their counts on one line ("duplicate faces: 1, pinch vertices: 1"), or "".
+  std::string summary() const;
+};
+
+/// Repairs the soup in place (its positions valid, its face indices in range).
+RepairReport repair_polygon_soup(PolygonSoup& soup, const RepairOptions& options = {});
+
+/// What repair_polygon_soup would do, leaving the soup as it is.
+RepairReport diagnose_polygon_soup(const PolygonSoup& soup, const RepairOptions& options = {});
+
+}  // namespace gps

@@ -1,0 +1,238 @@
+// --repair and --weld on the commands that read a mesh, the refusals that name the defect and the
+// option, and `gpsurf info` listing every problem class of a refused mesh. The meshes are OBJ files
+// written here, one per defect class.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/io/mesh_io.h"
+#include "core/mesh/mesh_connectivity.h"
+#include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+using test::gpsurf;
+using test::run_command;
+
+using Faces = std::vector<std::vector<int>>;  // numbered from 0 here, from 1 in the file
+
+void write_obj(const std::string& path, const std::vector<Vec3>& p, const Faces& faces) {
+  std::ofstream out(path);
+  for (const Vec3& x : p) out << "v " << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
+  for (const auto& face : faces) {
+    out << 'f';
+    for (const int v : face) out << ' ' << v + 1;
+    out << '\n';
+  }
+}
+
+Vec3 corner(int i) { return Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); }
+const Faces kCube = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+std::vector<Vec3> cube_positions() {
+  std::vector<Vec3> p;
+  for (int i = 0; i < 8; ++i) p.push_back(corner(i));
+  return p;
+}
+
+// A tetrahedron with its apex at vertex `apex` (new when −1), its other corners new, oriented outwards.
+void add_tetrahedron(std::vector<Vec3>& p, Faces& faces, const Vec3& at, int apex, double side) {
+  const int a = apex >= 0 ? apex : int(p.size());
+  if (apex < 0) p.push_back(at);
+  const int b = int(p.size());
+  p.insert(p.end(), {at + side * Vec3(1, 0, 0), at + side * Vec3(0, 1, 0), at + side * Vec3(0, 0, 1)});
+  if (side > 0)
+    faces.insert(faces.end(), {{a, b + 1, b}, {a, b, b + 2}, {a, b + 2, b + 1}, {b, b + 1, b + 2}});
+  else  // mirrored: the other winding faces outwards
+    faces.insert(faces.end(), {{a, b, b + 1}, {a, b + 2, b}, {a, b + 1, b + 2}, {b, b + 2, b + 1}});
+}
+
+// The mesh as read back: manifold (read_mesh builds it), every directed edge once; its boundary edges.
+int boundary_edges(const CovarianceMesh& m) {
+  const PolygonTopology t = topology_of(m.mesh);
+  std::map<std::pair<int, int>, int> directed;
+  for (int f = 0; f < t.n_faces(); ++f)
+    for (int k = 0; k < t.face_size(f); ++k)
+      ++directed[{t.verts[size_t(t.offsets[size_t(f)] + k)],
+                  t.verts[size_t(t.offsets[size_t(f)] + (k + 1) % t.face_size(f))]}];
+  int boundary = 0;
+  for (const auto& [edge, count] : directed) {
+    EXPECT_EQ(count, 1);
+    boundary += directed.count({edge.second, edge.first}) == 0;
+  }
+  return boundary;
+}
+
+struct Case {
+  std::string name;
+  std::vector<Vec3> positions;
+  Faces faces;
+  std::string refusal_names;  // what the refusal names ("" where the mesh loads as it is)
+  std::string report;         // the repair report's lines
+  size_t vertices, faces_after;
+  int boundary;
+};
+
+std::vector<Case> cases() {
+  std::vector<Case> out;
+  {
+    Case c{"pinch", {}, {}, "pinch vertices: 1", "repair: split 1 pinch vertex (1 copy added, one per extra fan)\n",
+           8,       8,  0};
+    add_tetrahedron(c.positions, c.faces, Vec3(0, 0, 0), -1, 1);
+    add_tetrahedron(c.positions, c.faces, Vec3(0, 0, 0), 0, -1);
+    out.push_back(c);
+  }
+  {
+    Case c{"unwelded", {}, {}, "", "repair: welded 24 coincident vertices into 8\n", 8, 6, 0};
+    for (const auto& face : kCube) {
+      c.faces.emplace_back();
+      for (const int v : face) {
+        c.faces.back().push_back(int(c.positions.size()));
+        c.positions.push_back(corner(v));
+      }
+    }
+    out.push_back(c);
+  }
+  {
+    Case c{"fin",
+           {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 0, 0), Vec3(-1, 0, 1), Vec3(-1, 0, 0), Vec3(0, 1, 1),
+            Vec3(0, 1, 0)},
+           {{0, 1, 2, 3}, {0, 1, 6, 7}, {1, 0, 5, 4}},
+           "fin edges (more than two faces): 1",
+           "repair: separated 1 face from 1 edge with more than two faces (2 vertex copies)\n",
+           10,
+           3,
+           10};
+    out.push_back(c);
+  }
+  {
+    Case c{
+        "dangling", {}, {}, "pinch vertices: 2", "repair: split 2 pinch vertices (2 copies added, one per extra fan)\n",
+        10,         6,  6};
+    add_tetrahedron(c.positions, c.faces, Vec3(0, 0, 0), -1, 1);
+    c.positions.insert(c.positions.end(), {Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(0, 2, 0), Vec3(1, 2, 0)});
+    c.faces.insert(c.faces.end(), {{1, 4, 5}, {2, 6, 7}});
+    out.push_back(c);
+  }
+  {
+    Case c{"faces",
+           {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0.5, 0, 0)},
+           {{0, 1, 2}, {0, 2, 3}, {2, 0, 1}, {0, 4, 1}, {3, 3, 0}},
+           "degenerate faces: 1, zero-area faces: 1, duplicate faces: 1, isolated vertices: 1",
+           "repair: dropped 1 degenerate face (fewer than 3 distinct corners)\nrepair: dropped 1 zero-area face\n"
+           "repair: dropped 1 duplicate face\nrepair: dropped 1 isolated vertex\n",
+           4,
+           2,
+           4};
+    out.push_back(c);
+  }
+  {
+    Case c{"isolated", cube_positions(), kCube, "", "repair: dropped 2 isolated vertices\n", 8, 6, 0};
+    c.positions.push_back(Vec3(5, 5, 5));
+    c.positions.push_back(Vec3(-5, 5, 5));
+    out.push_back(c);
+  }
+  {
+    Case c{"flipped",
+           cube_positions(),
+           kCube,
+           "flipped faces: 1",
+           "repair: flipped 1 face to orient each part consistently\n",
+           8,
+           6,
+           0};
+    std::reverse(c.faces[3].begin() + 1, c.faces[3].end());
+    out.push_back(c);
+  }
+  return out;
+}
+
+TEST(RepairCli, EachDefectIsRefusedNamedAndRepaired) {
+  test::TempDir dir;
+  for (const Case& c : cases()) {
+    SCOPED_TRACE(c.name);
+    const std::string in = dir.file(c.name + ".obj"), out = dir.file(c.name + ".ply");
+    write_obj(in, c.positions, c.faces);
+    const auto plain = run_command(gpsurf("infer " + in + " -o " + out));
+    if (c.refusal_names.empty()) {
+      EXPECT_EQ(plain.exit_code, 0) << plain.output;  // a manifold mesh as it is: read as now
+    } else {
+      EXPECT_EQ(plain.exit_code, 1) << plain.output;
+      EXPECT_NE(plain.output.find("(" + c.refusal_names + "); gpsurf can repair it: --repair\n"), std::string::npos)
+          << plain.output;
+      EXPECT_EQ(std::count(plain.output.begin(), plain.output.end(), '\n'), 1) << plain.output;
+    }
+    const auto repaired = run_command(gpsurf("infer " + in + " -o " + out + " --repair"));
+    ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
+    EXPECT_EQ(repaired.output, c.report + "wrote " + out + "\n");
+    const CovarianceMesh m = read_mesh(out);
+    EXPECT_EQ(m.n_vertices(), c.vertices);
+    EXPECT_EQ(m.n_faces(), c.faces_after);
+    EXPECT_EQ(boundary_edges(m), c.boundary);
+  }
+}
+
+TEST(RepairCli, EveryCommandThatReadsAMeshRepairs) {
+  test::TempDir dir;
+  const Case c = cases()[0];
+  const std::string in = dir.file("pinch.obj");
+  write_obj(in, c.positions, c.faces);
+  const std::string report = c.report;
+  for (const std::string& command :
+       {"info " + in, "subdivide " + in + " -o " + dir.file("s.ply"), "tessellate " + in + " -o " + dir.file("t.obj"),
+        "edit " + in + " -o " + dir.file("e.ply") + " --ops '[]'", "infer " + in + " -o " + dir.file("i.ply")}) {
+    SCOPED_TRACE(command);
+    EXPECT_EQ(run_command(gpsurf(command)).exit_code, 1);
+    const auto r = run_command(gpsurf(command + " --repair"));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(r.output.rfind(report, 0), 0u) << "the report comes first: " << r.output;
+  }
+  EXPECT_EQ(run_command(gpsurf("edit " + in + " -o " + dir.file("q.ply") + " --ops '[]' --repair -q")).output, "");
+}
+
+TEST(RepairCli, WeldToleranceImpliesRepair) {
+  test::TempDir dir;
+  // Two triangles whose shared corners lie 1e-3 apart (the diagonal is about 1.4).
+  const std::string in = dir.file("gap.obj");
+  write_obj(in, {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1.001, 0, 0), Vec3(0, 1.001, 0), Vec3(1, 1, 0)},
+            {{0, 1, 2}, {3, 5, 4}});
+  const auto tight = run_command(gpsurf("info " + in + " --repair"));
+  EXPECT_NE(tight.output.find("repair: nothing to repair\n"), std::string::npos) << tight.output;
+  EXPECT_NE(tight.output.find("boundary edges: 6\n"), std::string::npos) << tight.output;
+  const auto loose = run_command(gpsurf("info " + in + " --weld 0.01"));
+  EXPECT_EQ(loose.exit_code, 0) << loose.output;
+  EXPECT_NE(loose.output.find("repair: welded 4 coincident vertices into 2\n"), std::string::npos) << loose.output;
+  EXPECT_NE(loose.output.find("boundary edges: 4\n"), std::string::npos) << loose.output;
+  EXPECT_EQ(run_command(gpsurf("info " + in + " --weld -1")).exit_code, 2);
+}
+
+TEST(RepairCli, InfoListsEveryProblemAndExitsOne) {
+  test::TempDir dir;
+  // Two tetrahedra on one vertex, one face flipped, one duplicated, a fin quad and an isolated vertex.
+  std::vector<Vec3> p;
+  Faces faces;
+  add_tetrahedron(p, faces, Vec3(0, 0, 0), -1, 1);
+  add_tetrahedron(p, faces, Vec3(0, 0, 0), 0, -1);
+  std::reverse(faces[5].begin() + 1, faces[5].end());
+  faces.push_back(faces[7]);
+  p.insert(p.end(), {Vec3(3, 3, 3), Vec3(-2, 2, 0)});
+  faces.push_back({1, 2, 8});  // a third face on the edge 1–2
+  const std::string in = dir.file("many.obj");
+  write_obj(in, p, faces);
+  const auto r = run_command(gpsurf("info " + in));
+  EXPECT_EQ(r.exit_code, 1);
+  for (const char* line :
+       {"problems (vertices and faces numbered from 1 as the file numbers them):\n",
+        "  duplicate faces: 1 (face 9 (as face 8))\n",
+        "  edges with more than two faces (fins): 1 (edge 2–3 (3 faces))\n",
+        "  pinch vertices (several fans): 1 (vertex 1 (2 fans))\n",
+        "  faces oriented against their neighbours: 1 (face 6)\n", "  isolated vertices: 1 (vertex 8)\n",
+        "after --repair: 3 parts, 1 boundary loop\n", "; gpsurf can repair it: --repair\n"})
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << " in\n" << r.output;
+}
+
+}  // namespace
+}  // namespace gps

@@ -1,0 +1,302 @@
+// Repair of polygon soups (core/io/mesh_repair.h): one soup per defect class, built here, with the
+// counts of the report, and the result a manifold, consistently oriented mesh (every interior edge
+// once each way), closed where it should be.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+#include "core/io/mesh_repair.h"
+#include "core/mesh/error.h"
+
+namespace gps {
+namespace {
+
+PolygonSoup soup_of(const std::vector<Vec3>& positions, const std::vector<std::vector<int>>& faces) {
+  PolygonSoup s;
+  s.positions = positions;
+  for (const auto& face : faces) {
+    s.faces.verts.insert(s.faces.verts.end(), face.begin(), face.end());
+    s.faces.offsets.push_back(int(s.faces.verts.size()));
+  }
+  return s;
+}
+
+std::vector<std::vector<int>> faces_of(const PolygonSoup& s) {
+  std::vector<std::vector<int>> out;
+  for (int f = 0; f < s.faces.n_faces(); ++f)
+    out.emplace_back(s.faces.verts.begin() + s.faces.offsets[size_t(f)],
+                     s.faces.verts.begin() + s.faces.offsets[size_t(f) + 1]);
+  return out;
+}
+
+// Boundary edges of a repaired soup, after checking that it builds (manifold) and that each directed
+// edge is used once, an interior edge once each way.
+int boundary_edges(const PolygonSoup& s) {
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& face : faces_of(s))
+    for (size_t k = 0; k < face.size(); ++k) ++directed[{face[k], face[(k + 1) % face.size()]}];
+  int boundary = 0;
+  for (const auto& [edge, count] : directed) {
+    EXPECT_EQ(count, 1) << "edge " << edge.first << "-" << edge.second;
+    boundary += directed.count({edge.second, edge.first}) == 0;
+  }
+  PolygonSoup copy = s;
+  EXPECT_NO_THROW(mesh_of_soup(std::move(copy), "repaired"));
+  return boundary;
+}
+
+Vec3 corner(int i) { return Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); }
+const std::vector<std::vector<int>> kCubeFaces = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                                  {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+
+std::vector<Vec3> cube_positions() {
+  std::vector<Vec3> p;
+  for (int i = 0; i < 8; ++i) p.push_back(corner(i));
+  return p;
+}
+
+// A tetrahedron on vertices base .. base + 3, oriented outwards, placed at `offset`.
+void add_tetrahedron(std::vector<Vec3>& p, std::vector<std::vector<int>>& faces, const Vec3& offset, int apex = -1) {
+  const int base = int(p.size());
+  const int a = apex >= 0 ? apex : base;
+  if (apex < 0) p.push_back(offset);
+  const int b = int(p.size()), c = b + 1, d = b + 2;
+  p.push_back(offset + Vec3(1, 0, 0));
+  p.push_back(offset + Vec3(0, 1, 0));
+  p.push_back(offset + Vec3(0, 0, 1));
+  if (apex >= 0) {  // mirrored through the shared apex: the same orientation rule holds
+    p[size_t(b)] = p[size_t(a)] - Vec3(1, 0, 0);
+    p[size_t(c)] = p[size_t(a)] - Vec3(0, 1, 0);
+    p[size_t(d)] = p[size_t(a)] - Vec3(0, 0, 1);
+  }
+  faces.insert(faces.end(), {{a, c, b}, {a, b, d}, {a, d, c}, {b, c, d}});
+}
+
+TEST(MeshRepair, CleanMeshIsLeftAsItIs) {
+  PolygonSoup s = soup_of(cube_positions(), kCubeFaces);
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_FALSE(r.changed());
+  EXPECT_TRUE(r.lines().empty());
+  EXPECT_EQ(faces_of(s), kCubeFaces);
+  EXPECT_EQ(r.parts, 1);
+  EXPECT_EQ(r.boundary_loops, 0);
+}
+
+TEST(MeshRepair, UnweldedCubeIsWeldedClosed) {
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> faces;
+  for (const auto& face : kCubeFaces) {  // each face its own four vertices
+    std::vector<int> own;
+    for (const int v : face) {
+      own.push_back(int(p.size()));
+      p.push_back(corner(v) + Vec3(1e-9, 0, 0) * double(own.size()));  // within the tolerance
+    }
+    faces.push_back(own);
+  }
+  PolygonSoup s = soup_of(p, faces);
+  s.covariances.assign(24, Mat3::Identity());
+  for (int v = 0; v < 24; ++v) s.covariances[size_t(v)] *= double(v + 1);
+  EXPECT_EQ(diagnose_polygon_soup(s).count(Defect::coincident_vertices), 24);
+  EXPECT_EQ(s.positions.size(), 24u) << "diagnosis leaves the soup as it is";
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_EQ(r.count(Defect::coincident_vertices), 24);
+  EXPECT_EQ(r.welded_groups, 8);
+  ASSERT_EQ(r.lines().size(), 1u);
+  EXPECT_EQ(r.lines()[0], "welded 24 coincident vertices into 8");
+  EXPECT_EQ(s.positions.size(), 8u);
+  EXPECT_EQ(s.faces.n_faces(), 6);
+  EXPECT_EQ(boundary_edges(s), 0);
+  EXPECT_EQ(r.boundary_loops, 0);
+  EXPECT_EQ(r.parts, 1);
+  // The welded vertex keeps the Gaussian of its group's lowest index: vertex 0 (file vertex 0).
+  ASSERT_EQ(s.covariances.size(), 8u);
+  EXPECT_EQ(s.covariances[0](0, 0), 1.0);
+  EXPECT_EQ(s.positions[0], corner(0) + Vec3(1e-9, 0, 0));
+}
+
+TEST(MeshRepair, WeldToleranceIsSettable) {
+  std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 1e-3, 0), Vec3(-1, 1, 0)};
+  const PolygonSoup s = soup_of(p, {{0, 1, 2}, {0, 3, 4}});
+  EXPECT_EQ(diagnose_polygon_soup(s).count(Defect::coincident_vertices), 0);
+  RepairOptions o;
+  o.weld_tolerance = 1e-3;  // 1.4e-3 with the diagonal of 1.41
+  EXPECT_EQ(diagnose_polygon_soup(s, o).count(Defect::coincident_vertices), 2);
+}
+
+TEST(MeshRepair, PinchVertexOfTwoTetrahedraIsSplit) {
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> faces;
+  add_tetrahedron(p, faces, Vec3(0, 0, 0));
+  add_tetrahedron(p, faces, Vec3(0, 0, 0), 0);  // closed fans touching at vertex 0
+  ASSERT_EQ(p.size(), 7u);
+  {
+    PolygonSoup copy = soup_of(p, faces);
+    EXPECT_THROW(mesh_of_soup(std::move(copy), "pinch"), Error);
+  }
+  PolygonSoup s = soup_of(p, faces);
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_EQ(r.count(Defect::pinch_vertices), 1);
+  EXPECT_EQ(r.pinch_copies, 1);
+  EXPECT_EQ(r.examples[size_t(Defect::pinch_vertices)], std::vector<std::string>{"vertex 0 (2 fans)"});
+  EXPECT_EQ(r.lines(), std::vector<std::string>{"split 1 pinch vertex (1 copy added, one per extra fan)"});
+  EXPECT_EQ(s.positions.size(), 8u);
+  EXPECT_EQ(s.positions[7], p[0]) << "the copy comes last, at its original's position";
+  EXPECT_EQ(s.faces.n_faces(), 8);
+  EXPECT_EQ(boundary_edges(s), 0);
+  EXPECT_EQ(r.parts, 2);
+  EXPECT_EQ(r.boundary_loops, 0);
+}
+
+TEST(MeshRepair, DanglingTrianglesAreSeparated) {
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> faces;
+  add_tetrahedron(p, faces, Vec3(0, 0, 0));
+  // Two triangles hanging from the tetrahedron's vertex 1 by that vertex alone, and from vertex 2.
+  p.insert(p.end(), {Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(0, 2, 0), Vec3(1, 2, 0)});
+  faces.insert(faces.end(), {{1, 4, 5}, {2, 6, 7}});
+  PolygonSoup s = soup_of(p, faces);
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_EQ(r.count(Defect::pinch_vertices), 2);
+  EXPECT_EQ(r.pinch_copies, 2);
+  EXPECT_EQ(s.positions.size(), 10u);
+  EXPECT_EQ(boundary_edges(s), 6);
+  EXPECT_EQ(r.parts, 3);
+  EXPECT_EQ(r.boundary_loops, 2);
+}
+
+TEST(MeshRepair, FinFaceGetsItsOwnEdge) {
+  // Three quads on the edge 0–1: A runs it 0→1, C too, B the other way. A and B are kept, C is separated
+  // although it comes before B.
+  const std::vector<Vec3> p = {Vec3(0, 0, 0),  Vec3(0, 0, 1),  Vec3(1, 0, 1), Vec3(1, 0, 0),
+                               Vec3(-1, 0, 1), Vec3(-1, 0, 0), Vec3(0, 1, 1), Vec3(0, 1, 0)};
+  const std::vector<int> a = {0, 1, 2, 3}, b = {1, 0, 5, 4}, c = {0, 1, 6, 7};
+  PolygonSoup s = soup_of(p, {a, c, b});
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_EQ(r.count(Defect::fin_edges), 1);
+  EXPECT_EQ(r.fin_faces, 1);
+  EXPECT_EQ(r.fin_copies, 2);
+  EXPECT_EQ(r.count(Defect::pinch_vertices), 0);
+  EXPECT_EQ(r.examples[size_t(Defect::fin_edges)], std::vector<std::string>{"edge 0–1 (3 faces)"});
+  EXPECT_EQ(r.lines(),
+            std::vector<std::string>{"separated 1 face from 1 edge with more than two faces (2 vertex copies)"});
+  const auto f = faces_of(s);
+  EXPECT_EQ(f[0], a);
+  EXPECT_EQ(f[2], b);
+  EXPECT_EQ(f[1], (std::vector<int>{8, 9, 6, 7})) << "C on copies of 0 and 1";
+  EXPECT_EQ(s.positions[8], p[0]);
+  EXPECT_EQ(s.positions[9], p[1]);
+  EXPECT_EQ(boundary_edges(s), 10);
+  EXPECT_EQ(r.parts, 2);
+  EXPECT_EQ(r.boundary_loops, 2);
+}
+
+TEST(MeshRepair, ZeroAreaDuplicateAndDegenerateFacesAreDropped) {
+  // A square of two triangles; a duplicate of the first (rotated), a sliver on the edge 0–1 through
+  // vertex 4 (its midpoint), a face listing vertex 2 twice in a row (mended) and one on two vertices.
+  const std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 0, 0),   Vec3(1, 1, 0),
+                               Vec3(0, 1, 0), Vec3(0.5, 0, 0), Vec3(2, 1, 0)};
+  PolygonSoup s = soup_of(p, {{0, 1, 2}, {0, 2, 3}, {2, 0, 1}, {0, 4, 1}, {1, 5, 2, 2}, {3, 3, 0}});
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_EQ(r.count(Defect::duplicate_faces), 1);
+  EXPECT_EQ(r.examples[size_t(Defect::duplicate_faces)], std::vector<std::string>{"face 2 (as face 0)"});
+  EXPECT_EQ(r.count(Defect::zero_area_faces), 1);
+  EXPECT_EQ(r.examples[size_t(Defect::zero_area_faces)], std::vector<std::string>{"face 3"});
+  EXPECT_EQ(r.count(Defect::repeated_corners), 1);
+  EXPECT_EQ(r.count(Defect::degenerate_faces), 1);
+  EXPECT_EQ(r.count(Defect::isolated_vertices), 1) << "vertex 4, left by the sliver";
+  EXPECT_EQ(faces_of(s), (std::vector<std::vector<int>>{{0, 1, 2}, {0, 2, 3}, {1, 4, 2}}));
+  EXPECT_EQ(s.positions.size(), 5u);
+  EXPECT_EQ(s.positions[4], p[5]);
+  EXPECT_EQ(boundary_edges(s), 5);
+  EXPECT_EQ(r.boundary_loops, 1);
+}
+
+TEST(MeshRepair, FaceUsingAVertexTwiceIsSplitIntoLoops) {
+  // A bow tie through vertex 0: 0 1 2 0 3 4 → triangles 0 1 2 and 0 3 4.
+  const std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(-1, 0, 0), Vec3(-1, -1, 0)};
+  PolygonSoup s = soup_of(p, {{0, 1, 2, 0, 3, 4}});
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_EQ(r.count(Defect::repeated_corners), 1);
+  EXPECT_EQ(r.split_faces, 1);
+  EXPECT_EQ(r.count(Defect::pinch_vertices), 1) << "the two loops meet at vertex 0 only";
+  EXPECT_EQ(s.faces.n_faces(), 2);
+  EXPECT_EQ(boundary_edges(s), 6);
+}
+
+TEST(MeshRepair, IsolatedVerticesAreDropped) {
+  std::vector<Vec3> p = cube_positions();
+  p.insert(p.begin() + 3, Vec3(5, 5, 5));
+  p.push_back(Vec3(-5, 0, 0));
+  std::vector<std::vector<int>> faces = kCubeFaces;
+  for (auto& face : faces)
+    for (int& v : face) v += v >= 3;
+  PolygonSoup s = soup_of(p, faces);
+  s.covariances.assign(10, Mat3::Identity());
+  s.covariances[4] *= 4.0;  // cube vertex 3, vertex 3 after the repair
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_EQ(r.count(Defect::isolated_vertices), 2);
+  EXPECT_EQ(r.examples[size_t(Defect::isolated_vertices)], (std::vector<std::string>{"vertex 3", "vertex 9"}));
+  EXPECT_EQ(faces_of(s), kCubeFaces);
+  EXPECT_EQ(s.covariances[3](0, 0), 4.0);
+  EXPECT_EQ(boundary_edges(s), 0);
+}
+
+TEST(MeshRepair, FlippedFaceIsFlippedBack) {
+  std::vector<std::vector<int>> faces = kCubeFaces;
+  std::reverse(faces[0].begin() + 1, faces[0].end());
+  PolygonSoup s = soup_of(cube_positions(), faces);
+  RepairOptions o;
+  o.numbering_base = 1;
+  const RepairReport r = repair_polygon_soup(s, o);
+  EXPECT_EQ(r.count(Defect::flipped_faces), 1);
+  EXPECT_EQ(r.examples[size_t(Defect::flipped_faces)], std::vector<std::string>{"face 1"}) << "numbered from 1";
+  EXPECT_EQ(boundary_edges(s), 0);
+  EXPECT_EQ(faces_of(s)[0], kCubeFaces[0]);
+  EXPECT_EQ(faces_of(s)[1], kCubeFaces[1]);
+  EXPECT_EQ(r.boundary_loops, 0);
+}
+
+TEST(MeshRepair, MobiusStripIsNamedUnorientable) {
+  // Six quads around a band whose cross-section turns half a turn: the last quad joins the first
+  // edge backwards (A_6 = B_0, B_6 = A_0).
+  constexpr int n = 6;
+  std::vector<Vec3> p(2 * n);
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    const Vec3 radial(std::cos(a), std::sin(a), 0);
+    const Vec3 across = std::cos(a / 2) * radial + std::sin(a / 2) * Vec3(0, 0, 1);
+    p[size_t(2 * i)] = 3 * radial + across;      // A_i
+    p[size_t(2 * i + 1)] = 3 * radial - across;  // B_i
+  }
+  std::vector<std::vector<int>> faces;
+  for (int i = 0; i + 1 < n; ++i) faces.push_back({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
+  faces.push_back({2 * n - 2, 1, 0, 2 * n - 1});
+  PolygonSoup s = soup_of(p, faces);
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_EQ(r.count(Defect::unorientable_parts), 1);
+  EXPECT_EQ(r.boundary_loops, -1);
+  ASSERT_EQ(r.lines().size(), 1u);
+  EXPECT_NE(r.lines()[0].find("cannot be oriented"), std::string::npos) << r.lines()[0];
+  EXPECT_FALSE(r.changed());
+}
+
+TEST(MeshRepair, ProblemsListEveryClassWithExamples) {
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> faces;
+  add_tetrahedron(p, faces, Vec3(0, 0, 0));
+  add_tetrahedron(p, faces, Vec3(0, 0, 0), 0);
+  faces.push_back(faces[0]);  // a duplicate
+  std::reverse(faces[1].begin(), faces[1].end());
+  p.push_back(Vec3(9, 9, 9));  // isolated
+  const RepairReport r = diagnose_polygon_soup(soup_of(p, faces));
+  const auto problems = r.problems();
+  ASSERT_EQ(problems.size(), 4u) << ::testing::PrintToString(problems);
+  EXPECT_EQ(problems[0], "duplicate faces: 1 (face 8 (as face 0))");
+  EXPECT_EQ(problems[1], "pinch vertices (several fans): 1 (vertex 0 (2 fans))");
+  EXPECT_EQ(problems[2], "faces oriented against their neighbours: 1 (face 1)");
+  EXPECT_EQ(problems[3], "isolated vertices: 1 (vertex 7)");
+}
+
+}  // namespace
+}  // namespace gps
