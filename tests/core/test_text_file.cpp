@@ -90,14 +90,15 @@ TEST(TextFile, TheHeadCheckSeesTheFirstBytesThenTheWholeFileIsRead) {
             path + ": not this");
 }
 
-// Two faces on the same three vertices close up on their own: refused at load, naming both faces.
+// Two faces on the same three vertices close up on their own: refused at load, naming both faces
+// and the repair (one of them dropped as a duplicate).
 TEST(TextFile, AClosedPillowOfTwoFacesIsRefusedNamingThem) {
   const test::TempDir dir;
   const std::string path = dir.write("pillow.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n");
   EXPECT_EQ(error_of([&] { read_mesh(path); }),
             path +
                 ": faces 0 and 1 share all their edges (a closed pillow of two faces, which no subdivision can "
-                "refine)");
+                "refine) (duplicate faces: 1); gpsurf can repair it: --repair");
   const std::string quads = dir.write("quads.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 4 3 2 1\n");
   EXPECT_NE(error_of([&] { read_mesh(quads); }).find("faces 0 and 1 share all their edges"), std::string::npos);
 }
