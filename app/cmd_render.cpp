@@ -27,7 +27,7 @@ namespace gps {
 namespace {
 
 struct RenderArgs {
-  std::string input, output, size = "800x600", matcap = "clay", mode = "matcap", camera, background = "1,1,1";
+  std::string input, output, size = "800x600", matcap = "clay", mode = "matcap", camera, background = "1,1,1", up = "y";
   std::vector<std::string> aovs;
   int level = 0, reference = -1;  // level 0: adaptive
   PlanArguments plans;
@@ -85,8 +85,8 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   o.ellipsoids = a.ellipsoids;
   o.sigma_scale = a.sigma;
   o.background = {bg[0], bg[1], bg[2]};
-  const Camera camera =
-      frame_mesh(mesh, a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3));
+  Camera camera = frame_mesh(mesh, a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3));
+  camera.up_axis = up_axis_named(a.up);
   if (a.reference >= 1 && a.reference <= 6 &&
       scheme_for(topology_of(mesh.mesh), a.plans.options()) == Scheme::catmull_clark) {
     // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level
@@ -137,10 +137,11 @@ void render(const RenderArgs& a) {
 
 // --script FILE.json: {"renders": [{"mesh": FILE or "sample:NAME", "output": FILE.png, "size": "WxH",
 // "level": L, "pixels": P, "depth": D, "approximate": true|false, "scheme": "auto"|"loop"|"catmull-clark", "loop_beta":
-// "loop"|"warren", "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]", "mesh_lines": bool, "wireframe": bool,
-// "ellipsoids": bool, "sigma": k, "background": "r,g,b", "aov": ["position=FILE.exr", ...], "reference": N, "exact":
-// true|false, "ops": [modelling operations, as gpsurf edit --ops], "edits": [{"vertex": i, "mean": [x,y,z],
-// "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]} All renders share one process and one GL context.
+// "loop"|"warren", "matcap": M, "mode": M, "camera": "yaw,pitch[,distance]", "up": "x"|"y"|"z", "mesh_lines": bool,
+// "wireframe": bool, "ellipsoids": bool, "sigma": k, "background": "r,g,b", "aov": ["position=FILE.exr", ...],
+// "reference": N, "exact": true|false, "ops": [modelling operations, as gpsurf edit --ops], "edits": [{"vertex": i,
+// "mean": [x,y,z], "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]} All renders share one process and one GL
+// context.
 void run_script(const std::string& path, const std::string& context_name) {
   nlohmann::json script;
   try {
@@ -173,6 +174,7 @@ void run_script(const std::string& path, const std::string& context_name) {
       a.matcap = job.value("matcap", a.matcap);
       a.mode = job.value("mode", a.mode);
       a.camera = job.value("camera", a.camera);
+      a.up = job.value("up", a.up);
       a.mesh_lines = job.value("mesh_lines", a.mesh_lines);
       a.wireframe = job.value("wireframe", a.wireframe);
       a.ellipsoids = job.value("ellipsoids", a.ellipsoids);
@@ -252,6 +254,8 @@ void add_render_command(CLI::App& app) {
       }() + ") or an image file");
   cmd->add_option("--mode", a->mode, "shading")->check(CLI::IsMember({"matcap", "normals", "flat"}));
   cmd->add_option("--camera", a->camera, "orbit yaw,pitch[,distance] in degrees (default: auto-framed 30,20)");
+  cmd->add_option("--up", a->up, "the world axis drawn upward (z for most scans; default y)")
+      ->check(CLI::IsMember({"x", "y", "z"}));
   cmd->add_flag("--mesh", a->mesh_lines, "draw the base mesh as thin grey lines");
   cmd->add_flag("--wireframe", a->wireframe, "draw the tessellation wireframe over the shading");
   cmd->add_flag("--no-cache", a->no_cache,

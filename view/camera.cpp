@@ -5,15 +5,31 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/mesh/error.h"
+
 namespace gps {
+
+glm::dmat3 Camera::up_frame() const {
+  // Columns: the images of the y-up frame's x, y and z; each a proper rotation.
+  if (up_axis == 2) return glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1), glm::dvec3(0, -1, 0));
+  if (up_axis == 0) return glm::dmat3(glm::dvec3(0, 0, 1), glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0));
+  return glm::dmat3(1.0);
+}
+
+int up_axis_named(const std::string& name) {
+  if (name == "x") return 0;
+  if (name == "y") return 1;
+  if (name == "z") return 2;
+  throw usage_error("up axis must be x, y or z, not \"" + name + "\"");
+}
 
 glm::vec3 Camera::eye() const {
   const float yaw = glm::radians(yaw_degrees), pitch = glm::radians(pitch_degrees);
-  return target +
-         distance * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+  const glm::vec3 offset(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+  return target + distance * (up_axis == 1 ? offset : glm::mat3(up_frame()) * offset);
 }
 
-glm::mat4 Camera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 1, 0)); }
+glm::mat4 Camera::view() const { return glm::lookAt(eye(), target, glm::vec3(up_frame() * glm::dvec3(0, 1, 0))); }
 
 // The near plane follows the distance at any scale (a fixed floor would clip a tiny mesh).
 glm::mat4 Camera::projection(float aspect) const {
@@ -25,12 +41,15 @@ glm::mat4 Camera::projection(float aspect) const {
   return glm::perspective(glm::radians(fov_degrees), aspect, near_plane, far_plane);
 }
 
-glm::dmat4 Camera::view_double() const {
+glm::dvec3 Camera::eye_double() const {
   const double yaw = glm::radians(double(yaw_degrees)), pitch = glm::radians(double(pitch_degrees));
-  const glm::dvec3 centre(target);
-  const glm::dvec3 eye_d = centre + double(distance) * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                                                  std::cos(pitch) * std::cos(yaw));
-  return glm::lookAt(eye_d, centre, glm::dvec3(0, 1, 0));
+  return glm::dvec3(target) +
+         double(distance) * (up_frame() * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                                     std::cos(pitch) * std::cos(yaw)));
+}
+
+glm::dmat4 Camera::view_double() const {
+  return glm::lookAt(eye_double(), glm::dvec3(target), up_frame() * glm::dvec3(0, 1, 0));
 }
 
 glm::dmat4 Camera::view_projection_double(float aspect) const {

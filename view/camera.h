@@ -1,6 +1,8 @@
 #pragma once
-// An orbit camera: yaw and pitch around a target at a distance, perspective projection.
+// An orbit camera: yaw and pitch around a target at a distance, perspective projection, with the
+// world axis that shows upward chosen (y by default; scans often have z up).
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
@@ -10,13 +12,15 @@ namespace gps {
 
 struct Camera {
   glm::vec3 target{0.0f};
-  float yaw_degrees = 30.0f;    // around +y
-  float pitch_degrees = 20.0f;  // above the xz-plane
+  float yaw_degrees = 30.0f;    // around the up axis
+  float pitch_degrees = 20.0f;  // above the plane normal to it
+  int up_axis = 1;              // the world axis drawn upward: 0 x, 1 y, 2 z
   float distance = 5.0f;
   float fov_degrees = 35.0f;
   bool orthographic = false;  // parallel projection showing the height the perspective shows at the target
 
   glm::vec3 eye() const;
+  glm::dvec3 eye_double() const;
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
   glm::mat4 view_projection(float aspect) const { return projection(aspect) * view(); }
@@ -24,7 +28,15 @@ struct Camera {
   /// float (far from the origin, a float eye loses the view's direction).
   glm::dmat4 view_double() const;
   glm::dmat4 view_projection_double(float aspect) const;
+
+private:
+  /// The rotation from the y-up frame the angles are given in to the world: y to the up axis (z up:
+  /// the yaw-0 eye looks from −y, as a front view of a z-up model does).
+  glm::dmat3 up_frame() const;
 };
+
+/// The up axis named "x", "y" or "z"; throws a usage error otherwise.
+int up_axis_named(const std::string& name);
 
 /// The height of the view at the target's depth (world units).
 float view_height(const Camera& camera);

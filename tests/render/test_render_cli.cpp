@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -182,6 +183,36 @@ TEST(RenderCli, EglAndOsMesaContextsAgree) {
   const auto d =
       run_command(gpsurf("diff " + dir.file("egl.exr") + " " + dir.file("osmesa.exr") + " -o " + dir.file("d.png")));
   EXPECT_NE(d.output.find("max 0,"), std::string::npos) << d.output;
+}
+
+// A z-up mesh rendered with --up z is the picture of its y-up twin rendered as usual: the twin turned
+// by the rotation that takes y to z (x ↦ x, y ↦ z, z ↦ −y), which GPS follows exactly.
+TEST(RenderCli, UpAxisShowsAZUpMeshAsItsYUpTwin) {
+  test::TempDir dir;
+  const std::string rotate =
+      R"(--ops '[{"op":"transform","vertices":"all","matrix":[1,0,0,0, 0,0,-1,0, 0,1,0,0, 0,0,0,1]}]')";
+  ASSERT_EQ(run_command(gpsurf("edit sample:cone -o " + dir.file("z_up.ply") + " " + rotate)).exit_code, 0);
+  ASSERT_EQ(run_command(gpsurf("sample cone -o " + dir.file("y_up.ply"))).exit_code, 0);
+  const std::string options = " --size 160x120 --level 8";
+  ASSERT_EQ(run_command(gpsurf("render " + dir.file("y_up.ply") + " -o " + dir.file("y.png") + options)).exit_code, 0);
+  const auto r =
+      run_command(gpsurf("render " + dir.file("z_up.ply") + " -o " + dir.file("z.png") + options + " --up z"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_EQ(run_command(gpsurf("render " + dir.file("z_up.ply") + " -o " + dir.file("z_as_y.png") + options)).exit_code,
+            0);
+  const Image y = read_image(dir.file("y.png")), z = read_image(dir.file("z.png")),
+              z_as_y = read_image(dir.file("z_as_y.png"));
+  const auto differing = [](const Image& a, const Image& b) {
+    int n = 0;
+    for (int j = 0; j < a.height; ++j)
+      for (int i = 0; i < a.width; ++i)
+        for (int c = 0; c < 3; ++c) n += std::abs(a.at(i, j, c) - b.at(i, j, c)) > 0.1f;
+    return n;
+  };
+  EXPECT_LE(differing(y, z), 30);         // float rounding along the silhouette at most
+  EXPECT_GT(differing(y, z_as_y), 2000);  // seen with y up, the same mesh lies on its side
+  EXPECT_EQ(run_command(gpsurf("render " + dir.file("y_up.ply") + " -o " + dir.file("w.png") + " --up w")).exit_code,
+            2);
 }
 
 TEST(RenderCli, BadInputIsAUsageError) {
