@@ -31,7 +31,7 @@ void add_edit_command(CLI::App& app) {
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
     const bool from_file = !args->ops.empty() && args->ops[0] == '@';
-    const std::string source = from_file ? args->ops.substr(1) : std::string("--ops");
+    const std::string source = from_file ? args->ops.substr(1) : std::string();  // inline: named by ops[i] alone
     const OperationList ops = OperationList::parse(from_file ? read_text_file(source) : args->ops, source);
     const CovarianceMesh mesh = args->input.rfind("sample:", 0) == 0
                                     ? make_sample(args->input.substr(7))
