@@ -32,8 +32,9 @@ Gaussian AffineMap::apply(const Gaussian& g) const {
 
 Modelled transform_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, const AffineMap& map) {
   if (!map.linear.allFinite() || !map.translation.allFinite()) throw Error("the map has a number that is not finite");
+  // Singular relative to its own size (a huge or tiny uniform scale is not; its results are checked below).
   const double scale = map.linear.cwiseAbs().maxCoeff();
-  if (!(std::abs(map.linear.determinant()) > 1e-12 * scale * scale * scale))
+  if (!(scale > 0) || !(std::abs((map.linear / scale).determinant()) > 1e-12))
     throw Error("the map is singular (it would flatten the Gaussians)");
   MeshArrays a = arrays_of(mesh);
   std::vector<int> moved = vertices.empty() ? std::vector<int>() : sorted_vertices(a, vertices);

@@ -113,6 +113,12 @@ TEST(AffineTransform, RefusalsChangeNothing) {
   EXPECT_EQ(error_of([&] { transform_vertices(m, {}, AffineMap::from_rows(singular)); }),
             "the map is singular (it would flatten the Gaussians)");
   EXPECT_EQ(error_of([&] { transform_vertices(m, {2, 8}, skewed_map()); }), "vertex 8 is not in the mesh (8 vertices)");
+  // A huge uniform scale is not singular: its results are out of range, and that is what is said.
+  EXPECT_EQ(error_of([&] {
+              transform_vertices(m, {}, AffineMap{1e200 * Mat3::Identity(), Vec3::Zero()});
+            }),
+            "the result would not be a valid mesh: vertex 0 has a coordinate 1e+200 beyond ±1e+100 (its products "
+            "would overflow)");
   const CovarianceMesh fresh = make_sample("cube");
   for (size_t v = 0; v < m.n_vertices(); ++v) EXPECT_EQ(m.mean(v), fresh.mean(v));
 }
