@@ -1,8 +1,10 @@
 #pragma once
 // The editor's parts and their wiring (private to ui/): one class, its methods in one file per
 // concept — editor.cpp (frames, drawing, output), editor_pointer.cpp (mouse and handle drags),
-// editor_actions.cpp (open, save, undo, the unsaved-changes prompt) and editor_commands.cpp
-// (the command table: keys, menus, help).
+// editor_actions.cpp (open, save, undo, the unsaved-changes prompt), editor_commands.cpp (the
+// command table: keys, menus, help), editor_selection_commands.cpp (selection modes and tools),
+// editor_modelling.cpp (the Mesh menu's operations) and editor_modal_tools.cpp (G / S / R, extrude,
+// loop cut and inset following the mouse).
 #include <array>
 #include <chrono>
 #include <functional>
@@ -33,6 +35,9 @@
 #include "ui/view_options.h"
 
 namespace gps {
+
+/// The mean of the vertices' means (zero for none): where Shift+A adds and an inset moves towards.
+Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices);
 
 // What a confirmation about unsaved changes holds back.
 struct Action {
@@ -73,7 +78,7 @@ private:
   void loop_select(glm::vec2 pixel, bool toggle);
   void box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract);
   std::vector<int> vertices_under(glm::vec2 pixel) const;  // the element under the cursor, in the mode
-  std::string selection_summary() const;                    // for the status bar
+  std::string selection_summary() const;                   // for the status bar
   // Commands (editor_commands.cpp).
   void build_commands();
   void frame_vertices(const std::vector<int>& vertices);  // none: the whole mesh

@@ -1,7 +1,6 @@
-// The editor as a modeller: the Mesh menu's operations (each one undo step that replaces the mesh,
-// its summary or refusal in the status bar and the Inspector), Blender's modal G / S / R transforms
-// of the selected Gaussians, and the modal tools that follow the mouse: extrude (a move along the
-// extrusion's normal), loop cut (a ring previewed under the cursor, then a slide) and inset.
+// The editor as a modeller: the Mesh menu's operations, each one undo step that replaces the mesh,
+// with its summary or refusal in the status bar and the Inspector. The modal tools that follow the
+// mouse are in editor_modal_tools.cpp.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -30,46 +29,19 @@ namespace gps {
 
 namespace {
 
-constexpr float kEdgePickPixels = 40.0f;  // how near the cursor an edge must be for a loop cut
-
-bool is_enter(int key) { return key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER; }
-
-// A typed number's characters (digits, point, minus).
-bool is_number_char(unsigned c) { return (c >= '0' && c <= '9') || c == '.' || c == '-'; }
-
-// The area-weighted normal of faces (Newell's sums), zero when they have no area.
-Vec3 faces_normal(const CovarianceMesh& mesh, const std::vector<int>& faces) {
-  Vec3 sum = Vec3::Zero();
-  for (const int f : faces) {
-    std::vector<Vec3> corners;
-    for (const auto v : mesh.mesh.fv_range(mesh.mesh.face_handle(unsigned(f))))
-      corners.push_back(mesh.mean(size_t(v.idx())));
-    for (size_t i = 0; i < corners.size(); ++i) sum += corners[i].cross(corners[(i + 1) % corners.size()]);
-  }
-  return sum.norm() > 0 ? Vec3(sum.normalized()) : Vec3::Zero();
-}
-
-Vec3 centre_of(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
-  Vec3 sum = Vec3::Zero();
-  for (const int v : vertices) sum += mesh.mean(size_t(v));
-  return vertices.empty() ? sum : Vec3(sum / double(vertices.size()));
-}
-
 // The two selected vertices as an edge, for split and flip.
 std::array<int, 2> selected_edge(const std::vector<int>& selected) {
   if (selected.size() != 2) throw Error("select the two vertices of one edge");
   return {selected[0], selected[1]};
 }
 
-std::optional<double> parse_number(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (!end || *end != '\0' || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
 }  // namespace
+
+Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  Vec3 sum = Vec3::Zero();
+  for (const int v : vertices) sum += mesh.mean(size_t(v));
+  return vertices.empty() ? sum : Vec3(sum / double(vertices.size()));
+}
 
 void EditorApp::build_modelling_commands() {
   const auto key = [](int k, bool ctrl = false, bool shift = false, bool alt = false) {
@@ -210,7 +182,7 @@ void EditorApp::draw_add_items() {
   for (const std::string& name : primitive_names()) {
     if (!ImGui::MenuItem(name.c_str())) continue;
     const CovarianceMesh& mesh = document_.mesh();
-    const Vec3 at = centre_of(mesh, selection_.vertices());
+    const Vec3 at = centre_of_vertices(mesh, selection_.vertices());
     const double diagonal = bounding_box_diagonal(mesh);
     const double size = diagonal > 0 ? 0.25 * diagonal : 1.0;
     run_operation("add " + name,
@@ -262,337 +234,7 @@ void EditorApp::operation_note(const std::string& message, bool error) {
 
 bool EditorApp::modal_active() const { return transform_ || loop_cut_ || inset_; }
 
-// ---- G / S / R ----
-
-void EditorApp::start_transform(TransformKind kind) {
-  if (modal_active() || mode_ != Mode::none || selection_.empty()) return;
-  document_.begin_edit();
-  transform_.emplace(kind, document_.mesh(), selection_.vertices(), selection_.active(), transform_pivot_, viewport(),
-                     input_.cursor);
-  transform_folds_ = false;
-  std::vector<Vec3> means(document_.mesh().n_vertices());
-  for (size_t v = 0; v < means.size(); ++v) means[v] = document_.mesh().mean(v);
-  reach_ = edit_reach(means, transform_->vertices(), reach_options_);
-  update_transform();
-}
-
-void EditorApp::update_transform() {
-  for (const ReachedVertex& r : reach_) {
-    AffineMap map = transform_->map(r.source, r.weight);
-    if (r.mirrored) map = mirrored(map, reach_options_.mirror_axis);
-    const Vec3 mean = document_.start_mean(r.vertex);
-    const Mat3& start = document_.start_covariance(r.vertex);
-    document_.set_mean(r.vertex, map.apply(mean));
-    if (map.linear == Mat3::Identity()) {
-      document_.set_covariance(r.vertex, start);  // a move keeps Σ exactly
-    } else {
-      const Mat3 moved = map.apply(Gaussian{mean, start}).covariance;
-      document_.set_covariance(r.vertex, covariance_problem(moved).empty() ? moved : clamp_spd(moved, start));
-    }
-  }
-  status_ = transform_->describe() +
-            (reach_.size() > transform_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "");
-  status_error_ = false;
-}
-
-void EditorApp::end_transform(bool keep) {
-  if (!keep) {
-    document_.cancel_edit();
-    set_status(transform_folds_ ? "move cancelled (the extrusion stays; Ctrl+Z removes it)" : "transform cancelled",
-               false);
-  } else if (transform_folds_) {
-    document_.commit_edit_into_last_operation(selection_.vertices());
-    set_status("extrude: " + last_summary_, false);
-  } else {
-    document_.commit_edit();
-    set_status(transform_->describe().substr(0, transform_->describe().find("  (")), false);
-  }
-  transform_.reset();
-  transform_folds_ = false;
-}
-
-// ---- Extrude ----
-
-void EditorApp::start_extrude() {
-  const std::vector<int> selected = selection_.vertices();
-  if (!run_operation("extrude", [&](const CovarianceMesh& m) { return extrude_vertices(m, selected, Vec3::Zero()); }))
-    return;
-  // Then a move of the new vertices: along the normal of the extruded faces, free for edges and vertices.
-  const Vec3 normal = faces_normal(document_.mesh(), faces_within(document_.mesh(), selection_.vertices()));
-  document_.begin_edit();
-  transform_.emplace(TransformKind::grab, document_.mesh(), selection_.vertices(), selection_.active(),
-                     TransformPivot::median, viewport(), input_.cursor);
-  if (normal != Vec3::Zero()) transform_->constrain_direction(normal, "the normal");
-  transform_folds_ = true;
-  reach_.clear();  // the move is of the new vertices only (their copies lie under them)
-  for (size_t i = 0; i < transform_->vertices().size(); ++i)
-    reach_.push_back({transform_->vertices()[i], 1.0, i, false});
-  update_transform();
-}
-
-// ---- Loop cut ----
-
-std::optional<std::array<int, 2>> EditorApp::edge_under(glm::vec2 cursor) const {
-  const Viewport v = viewport();
-  const CovarianceMesh& mesh = document_.mesh();
-  const Vec3 eye = to_vec(v.camera.eye()), forward = to_vec(v.camera.target) - eye;
-  const auto faces_camera = [&](OpenMesh::FaceHandle f) {
-    if (!f.is_valid()) return false;
-    std::vector<int> corners;
-    for (const auto c : mesh.mesh.fv_range(f)) corners.push_back(c.idx());
-    std::vector<int> one = {f.idx()};
-    const Vec3 n = faces_normal(mesh, one), c = centre_of(mesh, corners);
-    return v.camera.orthographic ? n.dot(forward) < 0 : n.dot(eye - c) > 0;
-  };
-  std::optional<std::array<int, 2>> best;
-  float nearest = kEdgePickPixels;
-  for (const auto e : mesh.mesh.edges()) {
-    const auto h = mesh.mesh.halfedge_handle(e, 0);
-    if (!faces_camera(mesh.mesh.face_handle(h)) && !faces_camera(mesh.mesh.opposite_face_handle(h))) continue;
-    const int a = mesh.mesh.from_vertex_handle(h).idx(), b = mesh.mesh.to_vertex_handle(h).idx();
-    const auto pa = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(a)));
-    const auto pb = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(b)));
-    if (!pa || !pb) continue;
-    const glm::vec2 p(pa->x, pa->y), q(pb->x, pb->y), d = q - p;
-    const float t = glm::dot(d, d) > 0 ? std::clamp(glm::dot(cursor - p, d) / glm::dot(d, d), 0.0f, 1.0f) : 0.0f;
-    const float distance = glm::length(cursor - (p + t * d));
-    if (distance < nearest) nearest = distance, best = std::array<int, 2>{a, b};
-  }
-  return best;
-}
-
-void EditorApp::start_loop_cut() {
-  if (modal_active() || mode_ != Mode::none) return;
-  loop_cut_.emplace();
-  hover_loop_cut(input_.cursor);
-  status_ = "loop cut: point at an edge; the wheel sets the cuts, click to cut, Esc cancels";
-  status_error_ = false;
-}
-
-void EditorApp::hover_loop_cut(glm::vec2 cursor) {
-  LoopCutTool& tool = *loop_cut_;
-  tool.ring = {};
-  const auto edge = edge_under(cursor);
-  if (!edge) return;
-  try {
-    tool.ring = edge_ring(document_.mesh(), (*edge)[0], (*edge)[1]);
-  } catch (const Error&) {
-    return;
-  }
-}
-
-void EditorApp::confirm_loop_cut() {
-  LoopCutTool& tool = *loop_cut_;
-  if (tool.ring.edges.empty()) return;
-  const auto [a, b] = tool.ring.edges.front();
-  tool.base = std::make_shared<const CovarianceMesh>(document_.mesh());
-  try {
-    install(loop_cut(*tool.base, a, b, tool.cuts));
-  } catch (const Error& e) {  // refused: nothing changed
-    operation_note(std::string("loop cut refused: ") + e.what(), true);
-    loop_cut_.reset();
-    return;
-  }
-  tool.sliding = true;
-  tool.start_cursor = input_.cursor;
-  document_.begin_edit();
-  status_ = "loop cut: move to slide, click or Enter to confirm, Esc keeps it in the middle";
-}
-
-void EditorApp::slide_loop_cut(glm::vec2 cursor) {
-  LoopCutTool& tool = *loop_cut_;
-  const auto [a, b] = tool.ring.edges.front();
-  const Viewport v = viewport();
-  const auto pa = project_to_pixel(v.camera, v.width, v.height, to_glm(tool.base->mean(size_t(a))));
-  const auto pb = project_to_pixel(v.camera, v.width, v.height, to_glm(tool.base->mean(size_t(b))));
-  if (!pa || !pb) return;
-  const glm::vec2 d = glm::vec2(*pb) - glm::vec2(*pa);
-  if (glm::dot(d, d) < 1.0f) return;
-  const double slide = std::clamp(2.0 * double(glm::dot(cursor - tool.start_cursor, d) / glm::dot(d, d)), -0.95, 0.95);
-  try {
-    const Modelled slid = loop_cut(*tool.base, a, b, tool.cuts, slide);
-    const CovarianceMesh& mesh = document_.mesh();
-    if (slid.mesh.n_vertices() != mesh.n_vertices()) return;
-    for (size_t i = 0; i < mesh.n_vertices(); ++i) {
-      if (slid.mesh.mean(i) != document_.start_mean(int(i)) || mesh.mean(i) != slid.mesh.mean(i))
-        document_.set_mean(int(i), slid.mesh.mean(i));
-      if (slid.mesh.covariance(i) != document_.start_covariance(int(i)) ||
-          mesh.covariance(i) != slid.mesh.covariance(i))
-        document_.set_covariance(int(i), slid.mesh.covariance(i));
-    }
-    char text[96];
-    std::snprintf(text, sizeof text, "loop cut: slide %.3f (click or Enter confirms, Esc keeps it in the middle)",
-                  slide);
-    status_ = text;
-  } catch (const Error&) {
-  }
-}
-
-void EditorApp::end_loop_cut(bool keep) {
-  if (loop_cut_->sliding) {
-    if (keep)
-      document_.commit_edit_into_last_operation(selection_.vertices());
-    else
-      document_.cancel_edit();
-    operation_note("loop cut: " + last_summary_, false);
-  } else {
-    set_status("loop cut cancelled", false);
-  }
-  loop_cut_.reset();
-}
-
-// ---- Inset ----
-
-void EditorApp::start_inset() {
-  if (modal_active() || mode_ != Mode::none) return;
-  std::vector<int> faces = faces_within(document_.mesh(), selection_.vertices());
-  if (faces.empty()) {
-    operation_note("inset refused: select the corners of one face or more", true);
-    return;
-  }
-  InsetTool tool;
-  tool.base = std::make_shared<const CovarianceMesh>(document_.mesh());
-  tool.faces = std::move(faces);
-  tool.selection_before = selection_.vertices();
-  tool.centre = centre_of(document_.mesh(), selection_.vertices());
-  tool.start_cursor = input_.cursor;
-  inset_ = std::move(tool);
-  status_ = "inset: move toward the faces' centre (or type the thickness), click or Enter confirms, Esc cancels";
-  status_error_ = false;
-}
-
-void EditorApp::update_inset(double thickness) {
-  InsetTool& tool = *inset_;
-  if (!(thickness > 0)) return;
-  try {
-    const Modelled inset = inset_faces(*tool.base, tool.faces, thickness);
-    if (!tool.applied) {
-      install(inset);
-      tool.applied = true;
-      document_.begin_edit();
-    } else {
-      const CovarianceMesh& mesh = document_.mesh();
-      if (inset.mesh.n_vertices() != mesh.n_vertices()) return;
-      for (size_t i = 0; i < mesh.n_vertices(); ++i) {
-        if (mesh.mean(i) != inset.mesh.mean(i)) document_.set_mean(int(i), inset.mesh.mean(i));
-        if (mesh.covariance(i) != inset.mesh.covariance(i)) document_.set_covariance(int(i), inset.mesh.covariance(i));
-      }
-      last_summary_ = inset.summary;
-    }
-    char text[128];
-    std::snprintf(text, sizeof text, "inset: thickness %.4f%s (click or Enter confirms, Esc cancels)", thickness,
-                  tool.typed.empty() ? "" : ("  [" + tool.typed + "]").c_str());
-    status_ = text;
-    status_error_ = false;
-  } catch (const Error& e) {
-    status_ = std::string("inset: ") + e.what();
-    status_error_ = true;
-  }
-}
-
-void EditorApp::follow_inset(glm::vec2 cursor) {
-  const Viewport v = viewport();
-  const auto c = project_to_pixel(v.camera, v.width, v.height, to_glm(inset_->centre));
-  if (!c) return;
-  const glm::vec2 centre(*c);
-  const double pixels = double(glm::length(inset_->start_cursor - centre) - glm::length(cursor - centre));
-  update_inset(pixels * world_per_pixel(v.camera, v.height, inset_->centre));
-}
-
-void EditorApp::end_inset(bool keep) {
-  if (inset_->applied) {
-    if (keep) {
-      document_.commit_edit_into_last_operation(selection_.vertices());
-      operation_note("inset: " + last_summary_, false);
-    } else {
-      document_.cancel_edit();
-      document_.discard_last_operation();
-      rebuild_after_undo(inset_->selection_before);
-      set_status("inset cancelled", false);
-    }
-  } else {
-    set_status(keep ? "inset: nothing done (move toward the centre or type a thickness)" : "inset cancelled", false);
-  }
-  inset_.reset();
-}
-
-// ---- Events of the modal tools ----
-
-bool EditorApp::modal_event(const InputEvent& e) {
-  if (!modal_active()) return false;
-  const bool press_left = e.type == InputEvent::Type::press && e.button == 0;
-  const bool key = e.type == InputEvent::Type::key_press;
-  const bool confirm = press_left || (key && is_enter(e.key));
-  const bool cancel = (e.type == InputEvent::Type::press && e.button == 1) || (key && e.key == GLFW_KEY_ESCAPE);
-  if (transform_) {
-    if (confirm || cancel) {
-      end_transform(confirm);
-      return true;
-    }
-    if (e.type == InputEvent::Type::move) {
-      if (transform_->typed().empty()) transform_->move_cursor(e.position, viewport());
-    } else if (key && (e.key == GLFW_KEY_X || e.key == GLFW_KEY_Y || e.key == GLFW_KEY_Z)) {
-      transform_->constrain_axis(e.key - GLFW_KEY_X, input_.shift());
-      transform_->move_cursor(input_.cursor, viewport());
-    } else if (key && e.key == GLFW_KEY_BACKSPACE && !transform_->typed().empty()) {
-      std::string typed = transform_->typed();
-      typed.pop_back();
-      transform_->set_typed(typed);
-    } else if (e.type == InputEvent::Type::text && is_number_char(e.codepoint)) {
-      transform_->set_typed(transform_->typed() + char(e.codepoint));
-    } else if (e.type == InputEvent::Type::scroll && reach_options_.proportional && !transform_folds_) {
-      reach_options_.radius *= std::pow(1.15, double(e.steps));
-      std::vector<Vec3> means(document_.mesh().n_vertices());
-      for (size_t v = 0; v < means.size(); ++v) means[v] = document_.start_mean(int(v));
-      document_.revert_edit();
-      reach_ = edit_reach(means, transform_->vertices(), reach_options_);
-    } else if (e.type != InputEvent::Type::release) {
-      return e.type != InputEvent::Type::scroll;  // the wheel still zooms
-    }
-    update_transform();
-    return true;
-  }
-  if (loop_cut_) {
-    if (cancel) {
-      end_loop_cut(false);
-    } else if (confirm) {
-      if (loop_cut_->sliding)
-        end_loop_cut(true);
-      else
-        confirm_loop_cut();
-    } else if (e.type == InputEvent::Type::move) {
-      if (loop_cut_->sliding)
-        slide_loop_cut(e.position);
-      else
-        hover_loop_cut(e.position);
-    } else if (e.type == InputEvent::Type::scroll && !loop_cut_->sliding) {
-      loop_cut_->cuts = std::clamp(loop_cut_->cuts + (e.steps > 0 ? 1 : -1), 1, 64);
-      status_ = "loop cut: " + std::to_string(loop_cut_->cuts) + " cuts (wheel), click to cut, Esc cancels";
-    } else if (e.type == InputEvent::Type::scroll) {
-      return false;
-    }
-    return true;
-  }
-  if (inset_) {
-    if (confirm || cancel) {
-      end_inset(confirm);
-    } else if (e.type == InputEvent::Type::move && inset_->typed.empty()) {
-      follow_inset(e.position);
-    } else if (e.type == InputEvent::Type::text && is_number_char(e.codepoint)) {
-      inset_->typed += char(e.codepoint);
-      if (const auto t = parse_number(inset_->typed)) update_inset(*t);
-    } else if (key && e.key == GLFW_KEY_BACKSPACE && !inset_->typed.empty()) {
-      inset_->typed.pop_back();
-      if (const auto t = parse_number(inset_->typed)) update_inset(*t);
-    } else if (e.type == InputEvent::Type::scroll) {
-      return false;
-    }
-    return true;
-  }
-  return false;
-}
-
-// ---- Drawing: the loop cut's preview, the popup menus of X, M and Shift+A ----
+// The popup menus of X, M and Shift+A, and the loop cut's ring preview.
 
 void EditorApp::draw_modelling_overlay() {
   if (!popup_request_.empty()) {
