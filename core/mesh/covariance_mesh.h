@@ -6,6 +6,7 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
 #include "core/mesh/linalg.h"
+#include "core/mesh/sharpness.h"
 
 namespace gps {
 
@@ -22,6 +23,8 @@ using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
 struct CovarianceMesh {
   PolyMesh mesh;
   std::vector<Mat3> covariances;
+  /// Edge creases and vertex corners by vertex index; empty for a smooth mesh.
+  Sharpness sharpness;
 
   size_t n_vertices() const { return mesh.n_vertices(); }
   size_t n_faces() const { return mesh.n_faces(); }
