@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/sharpness.h"
 
 namespace gps {
 
@@ -17,7 +18,10 @@ namespace gps {
 PolygonTopology catmull_clark_topology(const PolygonTopology& t, const MeshConnectivity& c);
 
 /// The refined values of one Catmull-Clark step (face, edge and vertex rules; boundary curve rules).
+/// With `creases` (sharpness laid out on `c`), OpenSubdiv's crease rules (core/reference/crease_rules.h);
+/// without, or where it is empty, the smooth rules alone.
 template <class T>
-std::vector<T> catmull_clark_values(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values);
+std::vector<T> catmull_clark_values(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values,
+                                    const CreaseLevel* creases = nullptr);
 
 }  // namespace gps

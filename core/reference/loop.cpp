@@ -5,6 +5,7 @@
 
 #include "core/mesh/error.h"
 #include "core/mesh/linalg.h"
+#include "core/reference/crease_rules.h"
 #include "core/reference/vertex_mask.h"
 
 namespace gps {
@@ -53,33 +54,51 @@ int opposite_vertex(const PolygonTopology& t, const MeshConnectivity& c, int f, 
 
 template <class T>
 std::vector<T> loop_values(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p,
-                           LoopBeta kind) {
+                           LoopBeta kind, const CreaseLevel* creases) {
+  const bool creased = creases && !creases->empty();
   const int nv = t.n_vertices, ne = c.n_edges();
   std::vector<T> out(size_t(nv + ne));
   for (int e = 0; e < ne; ++e) {
     const T& a = p[size_t(c.edge_verts[2 * size_t(e)])];
     const T& b = p[size_t(c.edge_verts[2 * size_t(e) + 1])];
-    if (c.is_boundary_edge(e)) {
+    const double sharp = c.is_boundary_edge(e) ? 1.0 : creased ? edge_crease_weight(c, *creases, e) : 0.0;
+    if (sharp >= 1.0) {
       out[size_t(nv + e)] = 0.5 * (a + b);
-    } else {
-      const T& x = p[size_t(opposite_vertex(t, c, c.edge_faces[2 * size_t(e)], e))];
-      const T& y = p[size_t(opposite_vertex(t, c, c.edge_faces[2 * size_t(e) + 1], e))];
-      out[size_t(nv + e)] = 0.375 * (a + b) + 0.125 * (x + y);
+      continue;
     }
+    const T& x = p[size_t(opposite_vertex(t, c, c.edge_faces[2 * size_t(e)], e))];
+    const T& y = p[size_t(opposite_vertex(t, c, c.edge_faces[2 * size_t(e) + 1], e))];
+    out[size_t(nv + e)] = 0.375 * (a + b) + 0.125 * (x + y);
+    if (sharp > 0.0) out[size_t(nv + e)] = sharp * (0.5 * (a + b)) + (1.0 - sharp) * out[size_t(nv + e)];
   }
   VertexMask mask;
+  const auto point_by_rule = [&](int v, VertexRule rule, int a, int b) {
+    if (rule == VertexRule::smooth || rule == VertexRule::dart)
+      loop_smooth_vertex_mask(c, v, kind, mask);
+    else
+      sharp_vertex_mask(rule, v, a, b, BoundaryRule::step, mask);
+    return mask.apply(p);
+  };
   for (int v = 0; v < nv; ++v) {
-    loop_vertex_mask(c, v, kind, mask);
-    out[size_t(v)] = mask.apply(p);
+    if (creased) {
+      const VertexPointRule r = vertex_point_rule(c, *creases, v);
+      out[size_t(v)] = point_by_rule(v, r.parent, r.parent_a, r.parent_b);
+      if (r.child != r.parent)
+        out[size_t(v)] = r.parent_weight * out[size_t(v)] +
+                         (1.0 - r.parent_weight) * point_by_rule(v, r.child, r.child_a, r.child_b);
+    } else {
+      loop_vertex_mask(c, v, kind, mask);
+      out[size_t(v)] = mask.apply(p);
+    }
   }
   return out;
 }
 
 template std::vector<Vec3> loop_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&,
-                                       LoopBeta);
+                                       LoopBeta, const CreaseLevel*);
 template std::vector<Dual> loop_values(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&,
-                                       LoopBeta);
+                                       LoopBeta, const CreaseLevel*);
 template std::vector<Eigen::VectorXd> loop_values(const PolygonTopology&, const MeshConnectivity&,
-                                                  const std::vector<Eigen::VectorXd>&, LoopBeta);
+                                                  const std::vector<Eigen::VectorXd>&, LoopBeta, const CreaseLevel*);
 
 }  // namespace gps

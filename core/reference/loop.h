@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/sharpness.h"
 
 namespace gps {
 
@@ -16,8 +17,10 @@ double loop_beta(int valence, LoopBeta kind);
 PolygonTopology loop_topology(const PolygonTopology& t, const MeshConnectivity& c);
 
 /// The refined values of one Loop step: vertex (1 − nβ)v + βΣn_i, edge 3/8(a + b) + 1/8(c + d).
+/// With `creases` (sharpness laid out on `c`), OpenSubdiv's crease rules (core/reference/crease_rules.h);
+/// without, or where it is empty, the smooth rules alone.
 template <class T>
 std::vector<T> loop_values(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values,
-                           LoopBeta kind);
+                           LoopBeta kind, const CreaseLevel* creases = nullptr);
 
 }  // namespace gps

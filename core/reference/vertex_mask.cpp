@@ -55,7 +55,10 @@ void add_edge_neighbours(const MeshConnectivity& c, int v, double weight, Vertex
 }  // namespace
 
 void catmull_clark_limit_mask(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& mask) {
-  if (boundary_mask(c, v, BoundaryRule::limit, mask)) return;
+  if (!boundary_mask(c, v, BoundaryRule::limit, mask)) catmull_clark_smooth_limit_mask(t, c, v, mask);
+}
+
+void catmull_clark_smooth_limit_mask(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& mask) {
   const double n = c.valence(v);
   mask.reset(n * (n + 5.0));
   mask.add_group(n * n, v);
@@ -68,7 +71,10 @@ void catmull_clark_limit_mask(const PolygonTopology& t, const MeshConnectivity& 
 }
 
 void loop_vertex_mask(const MeshConnectivity& c, int v, LoopBeta kind, VertexMask& mask) {
-  if (boundary_mask(c, v, BoundaryRule::step, mask)) return;
+  if (!boundary_mask(c, v, BoundaryRule::step, mask)) loop_smooth_vertex_mask(c, v, kind, mask);
+}
+
+void loop_smooth_vertex_mask(const MeshConnectivity& c, int v, LoopBeta kind, VertexMask& mask) {
   const int n = c.valence(v);
   const double beta = loop_beta(n, kind);
   mask.reset(1.0);
@@ -77,7 +83,10 @@ void loop_vertex_mask(const MeshConnectivity& c, int v, LoopBeta kind, VertexMas
 }
 
 void loop_limit_mask(const MeshConnectivity& c, int v, LoopBeta kind, VertexMask& mask) {
-  if (boundary_mask(c, v, BoundaryRule::limit, mask)) return;
+  if (!boundary_mask(c, v, BoundaryRule::limit, mask)) loop_smooth_limit_mask(c, v, kind, mask);
+}
+
+void loop_smooth_limit_mask(const MeshConnectivity& c, int v, LoopBeta kind, VertexMask& mask) {
   const int n = c.valence(v);
   const double chi = 1.0 / (3.0 / (8.0 * loop_beta(n, kind)) + n);
   mask.reset(1.0);

@@ -67,11 +67,17 @@ bool boundary_mask(const MeshConnectivity& c, int v, BoundaryRule rule, VertexMa
 /// The Catmull-Clark limit position of vertex v of a mesh whose faces around v are quads: interior
 /// (n²v + 4Σe_i + Σf_i)/(n(n + 5)), e_i the edge neighbours and f_i the diagonals; else boundary_mask.
 void catmull_clark_limit_mask(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& mask);
+/// The interior (smooth) case of catmull_clark_limit_mask, whatever the vertex's boundary.
+void catmull_clark_smooth_limit_mask(const PolygonTopology& t, const MeshConnectivity& c, int v, VertexMask& mask);
 
 /// The Loop vertex point of one step: interior (1 − nβ)v + βΣn_i; else boundary_mask.
 void loop_vertex_mask(const MeshConnectivity& c, int v, LoopBeta kind, VertexMask& mask);
+/// The interior (smooth) case of loop_vertex_mask.
+void loop_smooth_vertex_mask(const MeshConnectivity& c, int v, LoopBeta kind, VertexMask& mask);
 
 /// The Loop limit position: interior (1 − nχ)v + χΣn_i with χ = 1/(3/(8β) + n); else boundary_mask.
 void loop_limit_mask(const MeshConnectivity& c, int v, LoopBeta kind, VertexMask& mask);
+/// The interior (smooth) case of loop_limit_mask.
+void loop_smooth_limit_mask(const MeshConnectivity& c, int v, LoopBeta kind, VertexMask& mask);
 
 }  // namespace gps
