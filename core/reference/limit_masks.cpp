@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/mesh/linalg.h"
+#include "core/reference/crease_rules.h"
 #include "core/reference/vertex_mask.h"
 
 namespace gps {
@@ -38,20 +39,48 @@ template <class T>
 PutLimit<T> store_in(std::vector<T>& out) {
   return [&out](int v, const T& limit) { out[size_t(v)] = limit; };
 }
+
+// The limit mask under the rule of v's remaining sharpness; false for a smooth or dart vertex,
+// whose scheme's smooth mask applies.
+bool sharp_limit_mask(const MeshConnectivity& c, const CreaseLevel& creases, int v, VertexMask& mask) {
+  int a = -1, b = -1;
+  const VertexRule rule = vertex_rule(c, creases, v, &a, &b);
+  if (rule == VertexRule::smooth || rule == VertexRule::dart) return false;
+  sharp_vertex_mask(rule, v, a, b, BoundaryRule::limit, mask);
+  return true;
+}
 }  // namespace
 
 template <class T>
 void catmull_clark_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p, int n,
-                         const PutLimit<T>& put) {
+                         const PutLimit<T>& put, const CreaseLevel* creases) {
+  if (!creases || creases->empty()) {
+    apply_masks(
+        n, p, [&](int v, VertexMask& mask) { catmull_clark_limit_mask(t, c, v, mask); }, put);
+    return;
+  }
   apply_masks(
-      n, p, [&](int v, VertexMask& mask) { catmull_clark_limit_mask(t, c, v, mask); }, put);
+      n, p,
+      [&](int v, VertexMask& mask) {
+        if (!sharp_limit_mask(c, *creases, v, mask)) catmull_clark_smooth_limit_mask(t, c, v, mask);
+      },
+      put);
 }
 
 template <class T>
 void loop_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p, LoopBeta kind,
-                const PutLimit<T>& put) {
+                const PutLimit<T>& put, const CreaseLevel* creases) {
+  if (!creases || creases->empty()) {
+    apply_masks(
+        t.n_vertices, p, [&](int v, VertexMask& mask) { loop_limit_mask(c, v, kind, mask); }, put);
+    return;
+  }
   apply_masks(
-      t.n_vertices, p, [&](int v, VertexMask& mask) { loop_limit_mask(c, v, kind, mask); }, put);
+      t.n_vertices, p,
+      [&](int v, VertexMask& mask) {
+        if (!sharp_limit_mask(c, *creases, v, mask)) loop_smooth_limit_mask(c, v, kind, mask);
+      },
+      put);
 }
 
 template <class T>
@@ -79,12 +108,12 @@ template std::vector<Dual> loop_limit(const PolygonTopology&, const MeshConnecti
 template std::vector<Eigen::VectorXd> loop_limit(const PolygonTopology&, const MeshConnectivity&,
                                                  const std::vector<Eigen::VectorXd>&, LoopBeta);
 template void catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&, int,
-                                  const PutLimit<Vec3>&);
+                                  const PutLimit<Vec3>&, const CreaseLevel*);
 template void catmull_clark_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&, int,
-                                  const PutLimit<Dual>&);
+                                  const PutLimit<Dual>&, const CreaseLevel*);
 template void loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Vec3>&, LoopBeta,
-                         const PutLimit<Vec3>&);
+                         const PutLimit<Vec3>&, const CreaseLevel*);
 template void loop_limit(const PolygonTopology&, const MeshConnectivity&, const std::vector<Dual>&, LoopBeta,
-                         const PutLimit<Dual>&);
+                         const PutLimit<Dual>&, const CreaseLevel*);
 
 }  // namespace gps

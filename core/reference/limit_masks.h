@@ -6,6 +6,7 @@
 
 #include "core/reference/loop.h"
 #include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/sharpness.h"
 
 namespace gps {
 
@@ -29,13 +30,16 @@ template <class T>
 using PutLimit = std::function<void(int, const T&)>;
 
 /// The Catmull-Clark limits of vertices 0 .. n − 1 (n ≤ t.n_vertices), as above, handed to put.
+/// With `creases` (the sharpness left on `c`), each vertex's rule under it picks the mask, as
+/// OpenSubdiv's Far::PrimvarRefiner::Limit does: a corner stays, a crease vertex goes to
+/// (a + 4v + b)/6 with its crease neighbours, smooth and dart vertices take the smooth mask.
 template <class T>
 void catmull_clark_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values, int n,
-                         const PutLimit<T>& put);
+                         const PutLimit<T>& put, const CreaseLevel* creases = nullptr);
 
-/// The Loop limits of all vertices, as above, handed to put.
+/// The Loop limits of all vertices, as above, handed to put; `creases` as for catmull_clark_limit.
 template <class T>
 void loop_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values, LoopBeta kind,
-                const PutLimit<T>& put);
+                const PutLimit<T>& put, const CreaseLevel* creases = nullptr);
 
 }  // namespace gps

@@ -4,6 +4,7 @@
 
 #include "core/reference/catmull_clark.h"
 #include "core/reference/catmull_clark_connectivity.h"
+#include "core/reference/crease_rules.h"
 #include "core/reference/loop_connectivity.h"
 #include "core/mesh/dual_map.h"
 #include "core/mesh/error.h"
@@ -120,40 +121,47 @@ void refine_params(const PolygonTopology& coarse, const PolygonTopology& fine, b
   if (last) vertex_params = vertex_params_of(fine, params);
 }
 
-// The mesh after N levels, and its values before any limit.
+// The mesh after N levels, its values before any limit, and the sharpness left on it.
 template <class T>
 struct Refined {
   PolygonTopology topology;
   MeshConnectivity connectivity;
   std::vector<T> values;
+  CreaseLevel creases;
 };
 
-// With `corner_params`, the finest corners' params go there too (patch marks undone).
+// With `corner_params`, the finest corners' params go there too (patch marks undone). The
+// sharpness applies level by level and decays as it goes (core/reference/crease_rules.h).
 template <class T>
-Refined<T> refine(const PolygonTopology& base, std::vector<T> p, const SubdivisionOptions& o,
-                  std::vector<PatchParam>* vertex_params, std::vector<PatchParam>* corner_params = nullptr) {
+Refined<T> refine(const PolygonTopology& base, std::vector<T> p, const Sharpness& sharpness,
+                  const SubdivisionOptions& o, std::vector<PatchParam>* vertex_params,
+                  std::vector<PatchParam>* corner_params = nullptr) {
   if (o.levels < 0 || o.levels > 8)
     throw usage_error("subdivision levels must be 0..8, got " + std::to_string(o.levels));
   PolygonTopology t = base;
   MeshConnectivity c = connectivity_of(t);
+  CreaseLevel creases;
+  if (!sharpness.empty()) creases = crease_level(sharpness, c, t.n_vertices);
   CornerParams params;
   if (vertex_params) params = o.scheme == Scheme::loop ? loop_base_corner_params(base) : base_corner_params(base);
   if (vertex_params && o.levels == 0) *vertex_params = vertex_params_of(t, params);
   for (int level = 0; level < o.levels; ++level) {
     const bool last = level + 1 == o.levels;
     if (o.scheme == Scheme::catmull_clark) {
-      p = catmull_clark_values(t, c, p);
+      p = catmull_clark_values(t, c, p, &creases);
       MeshConnectivity finer_connectivity = catmull_clark_connectivity(t, c);
       PolygonTopology finer = catmull_clark_topology(t, c);
+      creases = refined_crease_level(t, c, creases, finer_connectivity);
       if (vertex_params)
         refine_params(t, finer, last, corner_params, params, *vertex_params,
                       [](const auto&... a) { refine_corner_params(a...); });
       t = std::move(finer);
       c = std::move(finer_connectivity);
     } else {
-      p = loop_values(t, c, p, o.loop_beta);
+      p = loop_values(t, c, p, o.loop_beta, &creases);
       PolygonTopology finer = loop_topology(t, c);  // throws where a face is not a triangle
       MeshConnectivity finer_connectivity = loop_connectivity(t, c);
+      creases = refined_crease_level(t, c, creases, finer_connectivity);
       if (vertex_params)
         refine_params(t, finer, last, corner_params, params, *vertex_params,
                       [](const auto&... a) { refine_loop_corner_params(a...); });
@@ -166,7 +174,7 @@ Refined<T> refine(const PolygonTopology& base, std::vector<T> p, const Subdivisi
       if (q.patch < 0) q.patch = -1 - q.patch;
     *corner_params = std::move(params);
   }
-  return {std::move(t), std::move(c), std::move(p)};
+  return {std::move(t), std::move(c), std::move(p), std::move(creases)};
 }
 
 // Each vertex's final value, its limit position or its refined value, handed to put(v, value) as it
@@ -180,13 +188,30 @@ void put_final_values(const Refined<T>& r, const SubdivisionOptions& o, const Pu
     for (int v = 0; v < t.n_vertices; ++v) put(v, r.values[size_t(v)]);
   } else if (o.scheme == Scheme::loop) {
     if (o.levels == 0) loop_topology(t, c);  // refuses non-triangle meshes
-    loop_limit(t, c, r.values, o.loop_beta, put);
+    loop_limit(t, c, r.values, o.loop_beta, put, &r.creases);
   } else if (all_quads(t)) {
-    catmull_clark_limit(t, c, r.values, t.n_vertices, put);
+    catmull_clark_limit(t, c, r.values, t.n_vertices, put, &r.creases);
   } else {
     // A vertex's limit is that of its vertex point one level down, where every face is a quad.
-    catmull_clark_limit(catmull_clark_topology(t, c), catmull_clark_connectivity(t, c),
-                        catmull_clark_values(t, c, r.values), t.n_vertices, put);
+    const MeshConnectivity finer = catmull_clark_connectivity(t, c);
+    const CreaseLevel finer_creases = refined_crease_level(t, c, r.creases, finer);
+    catmull_clark_limit(catmull_clark_topology(t, c), finer, catmull_clark_values(t, c, r.values, &r.creases),
+                        t.n_vertices, put, &finer_creases);
+  }
+}
+
+// Zeroes the tangents of the vertices whose rule the sharpness changes: a crease or corner has a
+// tangent plane on each side of it (one-sided normals), which no single pair of masks gives.
+void drop_sharp_tangents(const MeshConnectivity& c, const CreaseLevel& creases, int n, std::vector<Dual>& first,
+                         std::vector<Dual>& second) {
+  if (creases.empty()) return;
+  const CreaseLevel none;
+  for (int v = 0; v < n; ++v) {
+    const VertexRule rule = vertex_rule(c, creases, v);
+    if ((rule == VertexRule::crease || rule == VertexRule::corner) && rule != vertex_rule(c, none, v)) {
+      first[size_t(v)].setZero();
+      second[size_t(v)].setZero();
+    }
   }
 }
 
@@ -199,10 +224,13 @@ void limit_tangents_of(const Refined<Dual>& r, const SubdivisionOptions& o, std:
   const MeshConnectivity& c = r.connectivity;
   if (o.scheme == Scheme::loop || all_quads(t)) {
     limit_tangents(t, c, r.values, o.scheme == Scheme::loop, first, second);
+    drop_sharp_tangents(c, r.creases, t.n_vertices, first, second);
     return;
   }
-  limit_tangents(catmull_clark_topology(t, c), catmull_clark_connectivity(t, c), catmull_clark_values(t, c, r.values),
-                 false, first, second);
+  const MeshConnectivity finer = catmull_clark_connectivity(t, c);
+  limit_tangents(catmull_clark_topology(t, c), finer, catmull_clark_values(t, c, r.values, &r.creases), false, first,
+                 second);
+  drop_sharp_tangents(finer, refined_crease_level(t, c, r.creases, finer), t.n_vertices, first, second);
   first.resize(size_t(t.n_vertices));
   second.resize(size_t(t.n_vertices));
 }
@@ -220,7 +248,8 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   SubdivisionResult result;
   const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
   const bool with_normals = options.normals && options.limit;
-  const Refined<Dual> r = refine(base, base_points(mesh), options, with_params ? &result.vertex_params : nullptr,
+  const Refined<Dual> r = refine(base, base_points(mesh), mesh.sharpness, options,
+                                 with_params ? &result.vertex_params : nullptr,
                                  with_normals ? &result.corner_params : nullptr);
   std::vector<Dual> first, second;  // limit tangents, with_normals
   if (with_normals) {
@@ -251,13 +280,14 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   if (first_invalid < n)
     throw Error("subdivided vertex " + std::to_string(first_invalid) + " left the cone of positive definite matrices");
   add_faces(out, r.topology, r.connectivity, "subdivided mesh");
+  result.mesh.sharpness = sharpness_of(r.connectivity, r.creases);
   return result;
 }
 
 std::vector<Vec3> subdivide_points(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
   std::vector<Vec3> points(mesh.n_vertices());
   for (size_t i = 0; i < points.size(); ++i) points[i] = mesh.mean(i);
-  const Refined<Vec3> r = refine(topology_of(mesh.mesh), points, options, nullptr);
+  const Refined<Vec3> r = refine(topology_of(mesh.mesh), points, mesh.sharpness, options, nullptr);
   points.resize(size_t(r.topology.n_vertices));
   put_final_values<Vec3>(r, options, [&](int v, const Vec3& p) { points[size_t(v)] = p; });
   return points;

@@ -27,11 +27,14 @@ struct SubdivisionResult {
   /// With options.normals, the same for each face corner, in face order: the corners of one face
   /// share its patch.
   std::vector<PatchParam> corner_params;
-  /// With options.normals: the unit limit normal at each vertex, zero where it has no tangent masks.
+  /// With options.normals: the unit limit normal at each vertex, zero where it has no tangent masks
+  /// and on creases and sharp corners, where the surface has a normal on each side.
   std::vector<Vec3> normals;
 };
 
 /// N levels of GPS subdivision (map to 9D, linear scheme, optional exact limit projection, map back).
+/// The mesh's sharpness applies by OpenSubdiv's crease rules (core/reference/crease_rules.h); the
+/// result carries what is left of it after the N levels.
 SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions& options);
 
 /// The same scheme applied to the means alone (the ordinary linear surface, for comparison).
