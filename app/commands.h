@@ -12,4 +12,6 @@ void add_bench_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_diff_command(CLI::App& app);
 void add_edit_command(CLI::App& app);
+void add_simplify_command(CLI::App& app);
+void add_compare_command(CLI::App& app);
 }  // namespace gps

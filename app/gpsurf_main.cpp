@@ -40,6 +40,8 @@ int main(int argc, char** argv) {
   gps::add_subdivide_command(app);
   gps::add_edit_command(app);
   gps::add_tessellate_command(app);
+  gps::add_simplify_command(app);
+  gps::add_compare_command(app);
 #ifdef GPSURF_WITH_GL
   gps::add_bench_command(app);
   gps::add_render_command(app);

@@ -7,6 +7,7 @@ packages=(
   libglfw3-dev libosmesa6-dev libegl-dev libgl-dev libimgui-dev
   libgl1-mesa-dri libglx-mesa0 libegl-mesa0
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libcgal-dev  # header-only: the AABB tree of surface distances (core/fitting/)
   libosd-dev  # OpenSubdiv: the peer benchmark only (bench/), never linked into core, render or app
   xvfb xauth fonts-dejavu-core
   clang libclang-rt-14-dev libomp-dev  # the fuzzers (clang, with OpenMP in core)

@@ -1,0 +1,56 @@
+// gpsurf compare A B: how far A's points lie from B's GPS limit surface (core/fitting/surface_distance.h).
+#include <iostream>
+
+#include "app/commands.h"
+#include "app/naming_input.h"
+#include "app/plan_arguments.h"
+#include "app/repair_arguments.h"
+#include "core/fitting/surface_distance.h"
+#include "core/io/mesh_io.h"
+
+namespace gps {
+
+void add_compare_command(CLI::App& app) {
+  struct Args {
+    std::string first, second;
+    int level = 8;
+    bool both = false, samples = false;
+    PlanArguments plans;
+    RepairArguments repair;
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = app.add_subcommand(
+      "compare",
+      "Distances from A's vertices to B's limit surface (tessellated densely): rms, 99th percentile and max, each also "
+      "over A's bounding-box diagonal");
+  cmd->add_option("A", args->first, "mesh whose points are measured")->required();
+  cmd->add_option("B", args->second, "mesh whose limit surface they are measured to")->required();
+  cmd->add_flag("--both", args->both, "also B's points to A's limit surface");
+  cmd->add_flag("--samples", args->samples,
+                "measure the points of the measured mesh's limit surface at --level instead of its vertices");
+  cmd->add_option("--level", args->level, "tessellation level of the limit surfaces")->check(CLI::Range(1, 64));
+  add_plan_arguments(cmd, args->plans);
+  add_repair_arguments(cmd, args->repair);
+  cmd->callback([args] {
+    const PlanOptions options = args->plans.options();
+    const CovarianceMesh a = read_mesh_repairing(args->first, args->repair);
+    const CovarianceMesh b = read_mesh_repairing(args->second, args->repair);
+    const auto limit_of = [&](const std::string& path, const CovarianceMesh& m) {
+      return naming_input(path, [&] { return limit_surface_triangles(m, args->level, options); });
+    };
+    const TriangleMesh limit_b = limit_of(args->second, b);
+    TriangleMesh limit_a;
+    if (args->both || args->samples) limit_a = limit_of(args->first, a);
+    const auto report = [&](const std::string& from, const CovarianceMesh& m, const TriangleMesh& own_limit,
+                            const std::string& to, const TriangleMesh& limit) {
+      const std::vector<Vec3> points = args->samples ? own_limit.positions : vertex_means(m);
+      std::cout << escaped(from) << " (" << points.size() << (args->samples ? " limit samples" : " vertices")
+                << ") to the limit surface of " << escaped(to) << ":\n"
+                << describe(distances_to_surface(points, limit));
+    };
+    report(args->first, a, limit_a, args->second, limit_b);
+    if (args->both) report(args->second, b, limit_b, args->first, limit_a);
+  });
+}
+
+}  // namespace gps

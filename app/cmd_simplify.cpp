@@ -1,0 +1,76 @@
+// gpsurf simplify IN -o OUT: a dense triangle mesh decimated into a coarse covariance mesh whose
+// Gaussians come from the input regions collapsed into each vertex (core/fitting/mesh_simplification.h).
+#include <cmath>
+#include <iostream>
+
+#include "app/cli_checks.h"
+#include "app/commands.h"
+#include "app/naming_input.h"
+#include "app/repair_arguments.h"
+#include "core/fitting/mesh_simplification.h"
+#include "core/fitting/surface_distance.h"
+#include "core/io/mesh_io.h"
+
+namespace gps {
+
+void add_simplify_command(CLI::App& app) {
+  struct Args {
+    std::string input, output;
+    size_t vertices = 0;
+    double ratio = 0, bias = 0.05, max_normal_deviation = 45;
+    int level = 8;
+    bool binary = false;
+    RepairArguments repair;
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = app.add_subcommand(
+      "simplify",
+      "Decimate a triangle mesh (faces of more sides are fanned into triangles first) by edge collapses that keep "
+      "its topology, each coarse vertex carrying the Gaussian of the input region collapsed into it; then report "
+      "the distances of the input's vertices to the result's limit surface");
+  cmd->add_option("input", args->input, "input mesh (its covariances, if any, are not used)")->required();
+  cmd->add_option("-o,--output", args->output, "output covariance PLY")->required();
+  auto* vertices = cmd->add_option("--vertices", args->vertices, "vertices to keep (at least 4)")
+                       ->check(CLI::Range(size_t(4), size_t(1) << 40));
+  auto* ratio = cmd->add_option("--ratio", args->ratio, "fraction of the input's vertices to keep, in (0, 1]")
+                    ->check(CLI::Range(0.0, 1.0));
+  vertices->excludes(ratio);
+  cmd->add_option("--bias", args->bias, "bias added to the input's face covariances, times λmax (Eq. 16)")
+      ->check(positive_number());
+  cmd->add_option("--max-normal-deviation", args->max_normal_deviation,
+                  "the most, in degrees, a collapse may turn a face's normal")
+      ->check(CLI::Range(1.0, 90.0));
+  cmd->add_option("--level", args->level, "tessellation level of the limit surface the report measures (0: no report)")
+      ->check(CLI::Range(0, 64));
+  cmd->add_flag("--binary", args->binary, "binary PLY");
+  add_repair_arguments(cmd, args->repair);
+  cmd->callback([args, vertices, ratio] {
+    if (vertices->count() == 0 && ratio->count() == 0) throw usage_error("simplify: give --vertices N or --ratio R");
+    if (ratio->count() > 0 && !(args->ratio > 0)) throw usage_error("--ratio must be in (0, 1], got 0");
+    const CovarianceMesh input = read_mesh_repairing(args->input, args->repair);
+    SimplifyOptions options;
+    options.bias = args->bias;
+    options.max_normal_deviation_degrees = args->max_normal_deviation;
+    options.target_vertices =
+        vertices->count() > 0 ? args->vertices : size_t(std::llround(args->ratio * double(input.n_vertices())));
+    if (options.target_vertices < 4)
+      throw usage_error(escaped(args->input) + ": --ratio " + std::to_string(args->ratio) + " keeps fewer than 4 of its " +
+                        std::to_string(input.n_vertices()) + " vertices");
+    const SimplifiedMesh s = naming_input(args->input, [&] { return simplify_mesh(input, options); });
+    write_mesh(args->output, s.mesh, args->binary);
+    if (s.triangulated) std::cout << "fanned the faces of more than 3 sides into triangles\n";
+    std::cout << "simplified " << s.input_vertices << " vertices, " << s.input_triangles << " triangles to "
+              << s.mesh.n_vertices() << " vertices, " << s.mesh.n_faces() << " triangles";
+    if (s.mesh.n_vertices() > options.target_vertices)
+      std::cout << " (asked " << options.target_vertices
+                << ": no further collapse keeps the topology, manifoldness and face orientations)";
+    std::cout << "\nwrote " << args->output << "\n";
+    if (args->level == 0) return;
+    const TriangleMesh limit =
+        naming_input(args->output, [&] { return limit_surface_triangles(s.mesh, args->level); });
+    std::cout << "input vertices to the simplified limit surface (level " << args->level << "):\n"
+              << describe(distances_to_surface(vertex_means(input), limit));
+  });
+}
+
+}  // namespace gps

@@ -1,0 +1,194 @@
+#include "core/fitting/mesh_simplification.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+#include <OpenMesh/Core/Geometry/QuadricT.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModBaseT.hh>
+#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
+
+#include "core/mesh/error.h"
+#include "core/mesh/inference.h"
+
+namespace gps {
+namespace {
+
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
+
+/// What a vertex of the decimated mesh has gathered from the input region collapsed into it: the
+/// error quadric of its planes, and the area-weighted moment of its faces' precisions.
+///
+/// The covariance of a region follows the GPS inference (Eq. 16–17) from a fan to a region: its
+/// precision sums the precisions of its input faces. Summed as they are, a region of many faces
+/// would get a precision that many times a fan's, and GPS is invariant under a global scale of the
+/// Σ but not under a scale per vertex: a coarse vertex that absorbed more faces would pull the
+/// surface harder. So each face's precision Σ_f⁻¹ (of the face's own size) is first made
+/// scale-free, a_f·Σ_f⁻¹ with a_f the face's area, then averaged over the region weighted by area,
+/// then scaled to the region's size: Σ_v⁻¹ = Σ a_f·(a_f·Σ_f⁻¹) / A_v², A_v the region's area. The
+/// shape of Σ_v is the region's (flat across a smooth patch, a needle along a sharp edge) and its size
+/// is the coarse mesh's, whatever the density of the input there. Each input face is shared by its
+/// corners, a third of its area each, so the moment and the area add up as regions merge.
+struct Region {
+  OpenMesh::Geometry::Quadricd quadric;
+  Mat3 precision_moment = Mat3::Zero();  // Σ over the region's faces of a_f · (a_f Σ_f⁻¹)
+  double area = 0;                       // A_v
+};
+
+const char* const kRegionProperty = "gps:region";
+
+/// The priority of a collapse is the quadric error at the position it keeps (ModQuadricT's); after a
+/// collapse v0 → v1, v1's region takes v0's.
+template <class MeshT>
+class ModRegionT : public OpenMesh::Decimater::ModBaseT<MeshT> {
+public:
+  DECIMATING_MODULE(ModRegionT, MeshT, Region);
+
+  explicit ModRegionT(MeshT& mesh) : Base(mesh, false) { mesh.get_property_handle(region_, kRegionProperty); }
+
+  float collapse_priority(const CollapseInfo& ci) override {
+    OpenMesh::Geometry::Quadricd q = Base::mesh().property(region_, ci.v0).quadric;
+    q += Base::mesh().property(region_, ci.v1).quadric;
+    return float(std::max(0.0, q(ci.p1)));
+  }
+
+  void postprocess_collapse(const CollapseInfo& ci) override {
+    const Region& from = Base::mesh().property(region_, ci.v0);
+    Region& into = Base::mesh().property(region_, ci.v1);
+    into.quadric += from.quadric;
+    into.precision_moment += from.precision_moment;
+    into.area += from.area;
+  }
+
+private:
+  OpenMesh::VPropHandleT<Region> region_;
+};
+
+/// Weight of a boundary edge's plane (perpendicular to its face through the edge) against the face
+/// planes, per squared edge length: large, so that collapses keep the boundary's shape.
+constexpr double kBoundaryPlaneWeight = 100;
+
+/// The input as triangles, faces of more sides fanned from their first corner.
+TriMesh triangles_of(const CovarianceMesh& input, bool& triangulated) {
+  TriMesh t;
+  t.reserve(input.n_vertices(), input.mesh.n_edges(), input.n_faces());
+  for (const auto v : input.mesh.vertices()) t.add_vertex(input.mesh.point(v));
+  triangulated = false;
+  std::vector<TriMesh::VertexHandle> corners;
+  for (const auto f : input.mesh.faces()) {
+    corners.clear();
+    for (const auto v : input.mesh.fv_range(f)) corners.push_back(TriMesh::VertexHandle(v.idx()));
+    triangulated = triangulated || corners.size() > 3;
+    for (size_t k = 1; k + 1 < corners.size(); ++k) t.add_face(corners[0], corners[k], corners[k + 1]);
+  }
+  return t;
+}
+
+/// Every vertex's region before any collapse: its quadric, and a third of each face around it.
+void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region, double bias) {
+  std::vector<Vec3> corners(3);
+  for (const auto f : t.faces()) {
+    int k = 0;
+    for (const auto v : t.fv_range(f)) corners[size_t(k++)] = to_vec3(t.point(v));
+    const Vec3 cross = (corners[1] - corners[0]).cross(corners[2] - corners[0]);
+    const double area = 0.5 * cross.norm();
+    if (!(area > 0)) continue;
+    const Vec3 n = cross.normalized();
+    OpenMesh::Geometry::Quadricd plane(n[0], n[1], n[2], -n.dot(corners[0]));
+    plane *= area;
+    Mat3 precision;
+    const bool has_precision = face_precision(corners, bias, precision);
+    for (const auto v : t.fv_range(f)) {
+      Region& r = t.property(region, v);
+      r.quadric += plane;
+      if (!has_precision) continue;
+      r.precision_moment += (area / 3) * area * precision;
+      r.area += area / 3;
+    }
+  }
+  for (const auto h : t.halfedges()) {
+    if (!t.is_boundary(h)) continue;
+    const auto face = t.face_handle(t.opposite_halfedge_handle(h));
+    const Vec3 a = to_vec3(t.point(t.from_vertex_handle(h))), b = to_vec3(t.point(t.to_vertex_handle(h)));
+    const Vec3 normal = to_vec3(t.calc_face_normal(face));
+    const Vec3 across = (b - a).cross(normal);
+    if (!(across.norm() > 0)) continue;
+    const Vec3 m = across.normalized();
+    OpenMesh::Geometry::Quadricd plane(m[0], m[1], m[2], -m.dot(a));
+    plane *= kBoundaryPlaneWeight * (b - a).squaredNorm();
+    t.property(region, t.from_vertex_handle(h)).quadric += plane;
+    t.property(region, t.to_vertex_handle(h)).quadric += plane;
+  }
+}
+
+/// The covariance of a region (see Region); where its faces gave no precision (all degenerate), an
+/// isotropic one with σ half the mean length of the vertex's edges.
+Mat3 region_covariance(const TriMesh& t, TriMesh::VertexHandle v, const Region& r) {
+  if (r.area > 0) {
+    const Eigen::LLT<Mat3> llt{Mat3(r.precision_moment / (r.area * r.area))};
+    if (llt.info() == Eigen::Success) {
+      const Mat3 covariance = llt.solve(Mat3::Identity());
+      return 0.5 * (covariance + covariance.transpose());
+    }
+  }
+  double length = 0;
+  int count = 0;
+  for (const auto e : t.ve_range(v)) length += t.calc_edge_length(e), ++count;
+  const double sigma = count && length > 0 ? 0.5 * length / count : 1.0;
+  return sigma * sigma * Mat3::Identity();
+}
+
+}  // namespace
+
+SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions& options) {
+  if (options.target_vertices < 4)
+    throw usage_error("the target vertex count must be at least 4, got " + std::to_string(options.target_vertices));
+  SimplifiedMesh result;
+  result.input_vertices = input.n_vertices();
+  TriMesh t = triangles_of(input, result.triangulated);
+  result.input_triangles = t.n_faces();
+
+  OpenMesh::VPropHandleT<Region> region;
+  t.add_property(region, kRegionProperty);
+  seed_regions(t, region, options.bias);
+
+  t.request_vertex_status();
+  t.request_edge_status();
+  t.request_face_status();
+  t.request_face_normals();
+  t.update_face_normals();
+  {
+    OpenMesh::Decimater::DecimaterT<TriMesh> decimater(t);
+    ModRegionT<TriMesh>::Handle priority;
+    OpenMesh::Decimater::ModNormalFlippingT<TriMesh>::Handle flipping;
+    decimater.add(priority);
+    decimater.add(flipping);
+    decimater.module(flipping).set_max_normal_deviation(options.max_normal_deviation_degrees);
+    decimater.initialize();
+    decimater.decimate_to(options.target_vertices);
+  }
+  t.garbage_collection();
+
+  std::vector<Vec3> means;
+  std::vector<Mat3> covariances;
+  means.reserve(t.n_vertices());
+  covariances.reserve(t.n_vertices());
+  for (const auto v : t.vertices()) {
+    means.push_back(to_vec3(t.point(v)));
+    covariances.push_back(region_covariance(t, v, t.property(region, v)));
+  }
+  std::vector<std::vector<int>> faces;
+  faces.reserve(t.n_faces());
+  for (const auto f : t.faces()) {
+    std::vector<int>& face = faces.emplace_back();
+    for (const auto v : t.fv_range(f)) face.push_back(v.idx());
+  }
+  result.mesh = make_covariance_mesh(means, covariances, faces, "the simplified mesh");
+  return result;
+}
+
+}  // namespace gps

@@ -1,0 +1,31 @@
+#pragma once
+// Simplifying a dense triangle mesh (a scan) into a coarse covariance mesh by edge collapses, each
+// coarse vertex carrying the Gaussian of the input region that collapsed into it.
+#include <cstddef>
+
+#include "core/mesh/covariance_mesh.h"
+
+namespace gps {
+
+struct SimplifyOptions {
+  size_t target_vertices = 0;  // the vertex count asked for
+  double bias = 0.05;          // of the input's face covariances (GPS paper Eq. 16)
+  double max_normal_deviation_degrees = 45;  // the most a collapse may turn a face's normal
+};
+
+struct SimplifiedMesh {
+  CovarianceMesh mesh;
+  size_t input_vertices = 0, input_triangles = 0;
+  bool triangulated = false;  // whether the input had faces of more than 3 sides, fanned into triangles
+};
+
+/// Collapses edges of `input` (faces of more than three sides fanned into triangles first) in order
+/// of quadric error (Garland and Heckbert 1997, with boundary planes that keep the boundary's shape)
+/// until `options.target_vertices` remain or no collapse may be done without changing the topology
+/// (genus, boundary loops), making a face non-manifold or turning a face's normal by more than
+/// the limit. A coarse vertex keeps the position of the input vertex it is; its covariance comes
+/// from the input faces of its region, the input vertices collapsed into it (see the .cpp).
+/// Throws gps::Error for a target below 4 vertices.
+SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions& options);
+
+}  // namespace gps

@@ -1,0 +1,105 @@
+#include "core/fitting/surface_distance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include "core/evaluation/tessellator.h"
+#include "core/mesh/error.h"
+
+namespace gps {
+
+TriangleMesh limit_surface_triangles(const CovarianceMesh& mesh, int level, const PlanOptions& options) {
+  const PlannedSurface surface(mesh, options);
+  return tessellate(surface.tables().plans, surface.points(), level);
+}
+
+struct SurfaceDistance::Tree {
+  using Kernel = CGAL::Simple_cartesian<double>;
+  using Triangle = Kernel::Triangle_3;
+  using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>;
+  using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+  std::vector<Triangle> triangles;
+  AabbTree tree;
+};
+
+SurfaceDistance::SurfaceDistance(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
+  if (surface.triangles.empty()) throw Error("the surface to measure distances to has no triangles");
+  const auto point = [&](int i) {
+    const Vec3& p = surface.positions[size_t(i)];
+    return Tree::Kernel::Point_3(p[0], p[1], p[2]);
+  };
+  tree_->triangles.reserve(surface.triangles.size());
+  for (const auto& t : surface.triangles) tree_->triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
+  tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
+  tree_->tree.build();
+  // The search tree of distance queries is built here, once, so that queries may run in parallel.
+  tree_->tree.accelerate_distance_queries();
+  distance(surface.positions.front());
+}
+
+SurfaceDistance::~SurfaceDistance() = default;
+
+double SurfaceDistance::distance(const Vec3& point) const {
+  return std::sqrt(tree_->tree.squared_distance(Tree::Kernel::Point_3(point[0], point[1], point[2])));
+}
+
+std::vector<double> SurfaceDistance::distances(const std::vector<Vec3>& points) const {
+  std::vector<double> d(points.size());
+  const long n = long(points.size());
+#pragma omp parallel for schedule(dynamic, 256)
+  for (long i = 0; i < n; ++i) d[size_t(i)] = distance(points[size_t(i)]);
+  return d;
+}
+
+DistanceSummary summarise_distances(std::vector<double> distances, double length) {
+  DistanceSummary s;
+  s.count = distances.size();
+  s.length = length;
+  if (distances.empty()) return s;
+  double sum = 0;
+  for (const double d : distances) sum += d * d;
+  s.rms = std::sqrt(sum / double(distances.size()));
+  // Nearest rank: the smallest distance that at least 99% of the distances do not exceed.
+  const size_t rank = size_t(std::ceil(0.99 * double(distances.size())));
+  std::nth_element(distances.begin(), distances.begin() + long(rank - 1), distances.end());
+  s.percentile_99 = distances[rank - 1];
+  s.max = *std::max_element(distances.begin() + long(rank - 1), distances.end());
+  return s;
+}
+
+std::string describe(const DistanceSummary& s) {
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "rms %.6g (%.3e of the diagonal)\n99th percentile %.6g (%.3e of the diagonal)\n"
+                "max %.6g (%.3e of the diagonal)\n",
+                s.rms, s.relative_rms(), s.percentile_99, s.relative_percentile_99(), s.max, s.relative_max());
+  return text;
+}
+
+double bounding_box_diagonal(const std::vector<Vec3>& points) {
+  if (points.empty()) return 0;
+  Vec3 lo = points.front(), hi = points.front();
+  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return (hi - lo).norm();
+}
+
+std::vector<Vec3> vertex_means(const CovarianceMesh& mesh) {
+  std::vector<Vec3> points;
+  points.reserve(mesh.n_vertices());
+  for (const auto v : mesh.mesh.vertices()) points.push_back(to_vec3(mesh.mesh.point(v)));
+  return points;
+}
+
+DistanceSummary distances_to_surface(const std::vector<Vec3>& points, const TriangleMesh& surface) {
+  const double diagonal = bounding_box_diagonal(points);
+  return summarise_distances(SurfaceDistance(surface).distances(points), diagonal > 0 ? diagonal : 1.0);
+}
+
+}  // namespace gps

@@ -1,0 +1,63 @@
+#pragma once
+// Distances from points to a surface: how far a mesh's points lie from another mesh's GPS limit
+// surface, summarised as rms, 99th percentile and maximum.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/evaluation/triangle_mesh.h"
+#include "core/mesh/covariance_mesh.h"
+#include "core/plans/planned_surface.h"
+
+namespace gps {
+
+/// The limit surface of `mesh` as a dense triangle mesh: every patch tessellated at `level`
+/// (core/evaluation/tessellator.h). Throws gps::Error if the surface cannot be evaluated.
+TriangleMesh limit_surface_triangles(const CovarianceMesh& mesh, int level, const PlanOptions& options = {});
+
+/// Exact distances from points to a triangle mesh, through an AABB tree of its triangles (CGAL).
+class SurfaceDistance {
+public:
+  /// Throws gps::Error if `surface` has no triangles.
+  explicit SurfaceDistance(const TriangleMesh& surface);
+  ~SurfaceDistance();
+  SurfaceDistance(const SurfaceDistance&) = delete;
+  SurfaceDistance& operator=(const SurfaceDistance&) = delete;
+
+  /// The distance from `point` to the nearest point of the surface.
+  double distance(const Vec3& point) const;
+  /// The distance of every point, in order (on all cores).
+  std::vector<double> distances(const std::vector<Vec3>& points) const;
+
+private:
+  struct Tree;
+  std::unique_ptr<Tree> tree_;
+};
+
+/// A set of distances in absolute units and relative to a length (the points' bounding-box diagonal).
+struct DistanceSummary {
+  size_t count = 0;
+  double rms = 0, percentile_99 = 0, max = 0;
+  double length = 1;  // what the relative figures divide by
+  double relative_rms() const { return rms / length; }
+  double relative_percentile_99() const { return percentile_99 / length; }
+  double relative_max() const { return max / length; }
+};
+
+/// Three lines (rms, 99th percentile, max), each the distance and its ratio to the length.
+std::string describe(const DistanceSummary& summary);
+
+/// rms, 99th percentile (nearest rank) and maximum of `distances`, relative to `length` (> 0).
+DistanceSummary summarise_distances(std::vector<double> distances, double length);
+
+/// Axis-aligned bounding-box diagonal of points (0 for none).
+double bounding_box_diagonal(const std::vector<Vec3>& points);
+
+/// The means of a covariance mesh, its points as a point set.
+std::vector<Vec3> vertex_means(const CovarianceMesh& mesh);
+
+/// Distances from `points` to `surface`, summarised relative to the points' bounding-box diagonal
+/// (or 1 where the points are one).
+DistanceSummary distances_to_surface(const std::vector<Vec3>& points, const TriangleMesh& surface);
+
+}  // namespace gps
