@@ -6,6 +6,7 @@
 #include <cstring>
 #include <numeric>
 #include <sstream>
+#include <unordered_set>
 
 #include "core/mesh/error.h"
 #include "core/mesh/mesh_connectivity.h"
@@ -33,6 +34,82 @@ PolygonSoup plain_soup(std::vector<Vec3>&& points, PolygonTopology&& faces, cons
 bool parse_int(std::string_view s, long long& out) {
   const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   return ec == std::errc() && p == s.data() + s.size();
+}
+
+// One crease (vertices a, b) or corner (vertex a) of an OBJ tag line, numbered from 0 as tags number them.
+struct SharpTag {
+  bool crease = false;
+  long long a = 0, b = 0;
+  double sharpness = 0.0;
+  int line = 0;
+};
+
+// Reads OpenSubdiv's tag line "t crease|corner nint/nfloat/nstring ints floats strings" (regression
+// shapes, Far tutorials): crease ints are pairs of vertices (a b a b ...), corner ints vertices, both
+// numbered from 0; one float for all or one per pair or vertex. Other tags (holes, boundary rules)
+// are skipped. `at` is "source: line N: ".
+void read_sharp_tag(std::string_view line, int number, const std::string& at, std::vector<SharpTag>& tags) {
+  const std::string_view name = next_word(line);
+  if (name != "crease" && name != "corner") return;
+  const std::string_view counts = next_word(line);
+  long long n[3] = {0, 0, 0};
+  std::string_view rest = counts;
+  for (int k = 0; k < 3; ++k) {
+    const size_t slash = k < 2 ? rest.find('/') : std::string_view::npos;
+    if ((k < 2 && slash == std::string_view::npos) || !parse_int(rest.substr(0, slash), n[k]) || n[k] < 0)
+      throw Error(at + "the " + std::string(name) + " tag's counts " + quoted_token(counts) +
+                  " are not nint/nfloat/nstring");
+    if (k < 2) rest.remove_prefix(slash + 1);
+  }
+  const bool crease = name == "crease";
+  const long long items = crease ? n[0] / 2 : n[0];
+  if (n[0] == 0 || (crease && n[0] % 2 != 0))
+    throw Error(at + "a crease tag needs pairs of vertices, a corner tag vertices (" + std::to_string(n[0]) +
+                " given)");
+  if (n[1] != 1 && n[1] != items)
+    throw Error(at + "the " + std::string(name) + " tag has " + std::to_string(n[1]) + " sharpness values for " +
+                std::to_string(items) + (crease ? " edges" : " vertices") + " (1 for all or 1 each)");
+  std::vector<long long> ints(static_cast<size_t>(n[0]));
+  for (long long& v : ints) {
+    const std::string_view word = next_word(line);
+    if (word.empty()) throw Error(at + "the " + std::string(name) + " tag has fewer values than its counts say");
+    if (!parse_int(word, v)) throw Error(at + quoted_token(word) + " is not a vertex index");
+  }
+  std::vector<double> values(static_cast<size_t>(n[1]));
+  for (double& x : values) {
+    const std::string_view word = next_word(line);
+    if (word.empty()) throw Error(at + "the " + std::string(name) + " tag has fewer values than its counts say");
+    if (const std::string why = parse_number(word, x); !why.empty()) throw Error(at + why);
+    if (const std::string why = sharpness_problem(x); !why.empty())
+      throw Error(at + std::string(name) + " sharpness " + std::string(word) + " " + why);
+  }
+  for (long long i = 0; i < items; ++i)
+    tags.push_back({crease, crease ? ints[size_t(2 * i)] : ints[size_t(i)], crease ? ints[size_t(2 * i + 1)] : 0,
+                    values[values.size() == 1 ? 0 : size_t(i)], number});
+}
+
+// The sharpness of the tags on the finished soup; a later tag on the same edge or vertex wins, as in
+// OpenSubdiv's readers.
+Sharpness sharpness_of_tags(const std::vector<SharpTag>& tags, const PolygonSoup& soup, const std::string& source) {
+  Sharpness out;
+  if (tags.empty()) return out;
+  const long long n = (long long)soup.positions.size();
+  const std::unordered_set<uint64_t> edges = soup_edge_keys(soup.faces);
+  const auto at = [&](const SharpTag& t) { return source + ": line " + std::to_string(t.line) + ": "; };
+  for (const SharpTag& t : tags) {
+    for (const long long v : {t.a, t.crease ? t.b : t.a})
+      if (!(v >= 0 && v < n))
+        throw Error(at(t) + (t.crease ? "crease" : "corner") + " tag names vertex " + std::to_string(v) +
+                    ", but there are " + std::to_string(n) + " vertices (tags number them from 0)");
+    if (!t.crease) {
+      out.set_corner(int(t.a), t.sharpness, int(n));
+      continue;
+    }
+    if (t.a == t.b || !edges.count(soup_edge_key(int(t.a), int(t.b))))
+      throw Error(at(t) + "crease " + std::to_string(t.a) + "-" + std::to_string(t.b) + " is not an edge of the mesh");
+    out.set_crease(int(t.a), int(t.b), t.sharpness);
+  }
+  return out;
 }
 
 }  // namespace
@@ -68,6 +145,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   PolygonTopology faces;
   faces.offsets.reserve(n_faces + 1);
   faces.verts.reserve(n_corners);
+  std::vector<SharpTag> tags;
   for (LineCursor lines(data); !lines.done(); lines.next()) {
     std::string_view line = lines.line();
     const auto at = [&] { return source + ": line " + std::to_string(lines.number()) + ": "; };
@@ -81,6 +159,8 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
       for (int k = 0; k < 3; ++k)
         if (const std::string why = parse_number(coordinates[k], p[k]); !why.empty()) throw Error(at() + why);
       points.push_back(p);
+    } else if (keyword == "t") {
+      read_sharp_tag(line, lines.number(), at(), tags);
     } else if (keyword == "f") {
       size_t size = 0;
       for (std::string_view word = next_word(line); !word.empty(); word = next_word(line), ++size) {
@@ -109,7 +189,9 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   }
   if (points.empty()) throw Error(source + ": no vertices");
   std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built
-  return plain_soup(std::move(points), std::move(faces), source);
+  PolygonSoup soup = plain_soup(std::move(points), std::move(faces), source);
+  soup.sharpness = sharpness_of_tags(tags, soup, source);
+  return soup;
 }
 
 PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {

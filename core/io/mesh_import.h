@@ -10,7 +10,9 @@
 
 namespace gps {
 
-/// Parses OBJ text (v and f records; f accepts v/vt/vn and negative indices; other records are skipped).
+/// Parses OBJ text (v and f records; f accepts v/vt/vn and negative indices; OpenSubdiv's tags
+/// "t crease 2/1/0 a b s" (pairs of vertices, numbered from 0) and "t corner 1/1/0 v s" give the
+/// sharpness; other records are skipped).
 /// The text is taken over and freed once parsed, before the mesh is built (pass it moved).
 CovarianceMesh parse_obj(std::string data, const std::string& source);
 

@@ -104,6 +104,11 @@ void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary
         for (const auto v : mesh.mesh.fv_range(f)) out << ' ' << v.idx() + 1;
         out << '\n';
       }
+      // OpenSubdiv's tags, vertices numbered from 0 (core/io/mesh_import.h).
+      for (const EdgeCrease& c : mesh.sharpness.creases)
+        out << "t crease 2/1/0 " << c.a << ' ' << c.b << ' ' << c.sharpness << '\n';
+      for (size_t v = 0; v < mesh.sharpness.corners.size(); ++v)
+        if (mesh.sharpness.corners[v] > 0.0) out << "t corner 1/1/0 " << v << ' ' << mesh.sharpness.corners[v] << '\n';
     });
   } else {
     throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) + " (use .ply or .obj)");

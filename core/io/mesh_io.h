@@ -34,7 +34,8 @@ PolygonSoup read_polygon_soup(const std::string& path, bool& has_covariances);
 /// the format numbers vertices and faces (from 1 in OBJ, from 0 elsewhere).
 RepairOptions repair_options_for(const std::string& path, const ImportOptions& options = {});
 
-/// Writes .ply (covariances kept; ASCII or binary little endian) or .obj (positions and faces),
+/// Writes .ply (covariances and sharpness kept; ASCII or binary little endian) or .obj (positions,
+/// faces, and creases and corners as OpenSubdiv's tags),
 /// atomically: a temporary file beside the target, then a rename.
 void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary = false);
 

@@ -5,6 +5,7 @@
 #include <functional>
 #include <numeric>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <Eigen/Geometry>
 
@@ -74,6 +75,7 @@ private:
   std::vector<int> vertex_origin_;  // per vertex: the vertex of the file it is (a copy's original)
   std::vector<int> face_origin_;    // per face: the face of the file it comes from
   std::vector<char> welded_away_;   // per vertex of the file: merged into a lower one
+  std::vector<int> weld_root_;      // per vertex of the file: the vertex it was welded to (itself if none)
   std::vector<int> pair_;           // per corner: the corner across its edge (to the next corner), or −1
   std::vector<char> flip_;          // per face: reversed by orient()
 
@@ -172,7 +174,9 @@ private:
         example(Defect::coincident_vertices, vertex_name(v) + " at " + vertex_name(root));
       }
     }
-    for (int& v : soup_.faces.verts) v = sets.find(v);
+    weld_root_.resize(p.size());
+    for (int v = 0; v < int(p.size()); ++v) weld_root_[size_t(v)] = sets.find(v);
+    for (int& v : soup_.faces.verts) v = weld_root_[size_t(v)];
   }
 
   // Repeated consecutive corners are removed; a face that still lists a vertex twice is cut there into
@@ -420,7 +424,7 @@ private:
     const size_t n = vertex_origin_.size(), n_file = soup_.positions.size();
     std::vector<char> used(n, 0);
     for (const int v : soup_.faces.verts) used[size_t(v)] = 1;
-    std::vector<int> index(n, -1);
+    std::vector<int> index(n, -1), origin;
     std::vector<Vec3> positions;
     std::vector<Mat3> covariances;
     const bool has_covariances = !soup_.covariances.empty();
@@ -430,6 +434,7 @@ private:
         continue;
       }
       index[v] = int(positions.size());
+      origin.push_back(vertex_origin_[v]);
       positions.push_back(soup_.positions[size_t(vertex_origin_[v])]);
       if (has_covariances) covariances.push_back(soup_.covariances[size_t(vertex_origin_[v])]);
     }
@@ -437,6 +442,42 @@ private:
     soup_.positions = std::move(positions);
     soup_.covariances = std::move(covariances);
     soup_.faces.n_vertices = int(soup_.positions.size());
+    carry_sharpness(origin);
+  }
+
+  // The soup's sharpness (by vertex of the file) on the result, whose vertex v is a copy of, or is,
+  // the welded vertex origin[v] of the file (see the header).
+  void carry_sharpness(const std::vector<int>& origin) {
+    const Sharpness& s = soup_.sharpness;
+    if (s.empty()) return;
+    const auto root = [&](int v) { return weld_root_.empty() ? v : weld_root_[size_t(v)]; };
+    std::unordered_map<uint64_t, double> crease_of;  // by the welded ends' pair
+    for (const EdgeCrease& c : s.creases) {
+      double& sharpness = crease_of[edge_key(root(c.a), root(c.b))];
+      sharpness = std::max(sharpness, c.sharpness);
+    }
+    Sharpness out;
+    std::unordered_set<uint64_t> done, kept;  // edges of the result; the file's pairs found on them
+    const PolygonTopology& t = soup_.faces;
+    for (int f = 0; f < t.n_faces(); ++f)
+      for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
+        const int u = t.verts[size_t(k)], w = t.verts[size_t(next_corner(f, k))];
+        const uint64_t pair = edge_key(origin[size_t(u)], origin[size_t(w)]);
+        const auto it = crease_of.find(pair);
+        if (it == crease_of.end() || !done.insert(edge_key(u, w)).second) continue;
+        kept.insert(pair);
+        out.creases.push_back({std::min(u, w), std::max(u, w), it->second});
+      }
+    for (const EdgeCrease& c : s.creases) report_.dropped_creases += !kept.count(edge_key(root(c.a), root(c.b)));
+    if (!s.corners.empty()) {
+      std::vector<double> group_corner(s.corners.size(), 0.0);
+      for (int v = 0; v < int(s.corners.size()); ++v)
+        group_corner[size_t(root(v))] = std::max(group_corner[size_t(root(v))], s.corners[size_t(v)]);
+      out.corners.resize(origin.size());
+      for (size_t v = 0; v < origin.size(); ++v) out.corners[v] = group_corner[size_t(origin[v])];
+    }
+    out.normalise();
+    soup_.sharpness = std::move(out);
   }
 };
 
@@ -478,6 +519,8 @@ std::vector<std::string> RepairReport::lines() const {
                   " be oriented (Möbius-like): " + examples[size_t(Defect::unorientable_parts)].front());
   if (n(Defect::isolated_vertices))
     out.push_back("dropped " + plural(n(Defect::isolated_vertices), "isolated vertex", "isolated vertices"));
+  if (dropped_creases)
+    out.push_back("dropped " + plural(dropped_creases, "crease", "creases") + " no longer on an edge");
   return out;
 }
 

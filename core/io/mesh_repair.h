@@ -8,7 +8,10 @@
 // Vertices that stay keep their Gaussian; a welded vertex keeps the one of its group's lowest index; a
 // copy made by separating fans takes its original's. Vertices keep their order (welded and dropped ones
 // removed), copies come after them; faces keep their order (dropped ones removed, pieces of a face
-// that used a vertex twice in its place). Everything runs in time linear in the soup (hash tables),
+// that used a vertex twice in its place). Creases follow their vertices: an edge of the result between
+// copies or welds of a creased edge's ends takes its sharpness (the largest where welded creases meet),
+// and a crease on no edge of the result is dropped and counted; a vertex takes its group's largest
+// corner. Everything runs in time linear in the soup (hash tables),
 // except a weld cluster of many vertices within the tolerance of one another.
 #include <array>
 #include <string>
@@ -48,6 +51,7 @@ struct RepairReport {
   int pinch_copies = 0;     // vertex copies made for the extra fans of pinch vertices
   int parts = 0;            // connected parts of the result
   int boundary_loops = -1;  // of the result; −1 where a part cannot be oriented
+  int dropped_creases = 0;  // creases of the file on no edge of the result (welded onto one vertex, say)
 
   int count(Defect d) const { return counts[size_t(d)]; }
   bool changed() const;

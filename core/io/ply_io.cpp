@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <unordered_map>
 
 #include "core/mesh/error.h"
 #include "core/mesh/mesh_connectivity.h"
@@ -160,6 +161,30 @@ private:
   size_t token_index_ = 0;
 };
 
+// One record of the edge element: its vertices as the file gives them, its crease and, for ASCII
+// data, "line N: " where it stands.
+struct CreaseRecord {
+  int a = 0, b = 0;
+  double sharpness = 0.0;
+  std::string where;
+};
+
+// The creases of the edge element's records (numbered as the file numbers them), each an edge of the faces.
+template <class Fail>
+Sharpness sharpness_of(const std::vector<CreaseRecord>& records, const PolygonTopology& faces, const Fail& fail) {
+  Sharpness out;
+  if (records.empty()) return out;
+  const std::unordered_set<uint64_t> edges = soup_edge_keys(faces);
+  for (size_t r = 0; r < records.size(); ++r) {
+    const CreaseRecord& c = records[r];
+    if (!edges.count(soup_edge_key(c.a, c.b)))
+      fail(c.where + "edge " + std::to_string(r) + " (vertices " + std::to_string(c.a) + "-" + std::to_string(c.b) +
+           ") is not an edge of the mesh");
+    if (c.sharpness > 0.0) out.creases.push_back({std::min(c.a, c.b), std::max(c.a, c.b), c.sharpness});
+  }
+  return out;
+}
+
 }  // namespace
 
 namespace {
@@ -211,7 +236,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       e.header_line = line;
       // Elements may come in any order, but the vertices and the faces once each.
       for (const Element& earlier : elements)
-        if (earlier.name == e.name && (e.name == "vertex" || e.name == "face" || e.name == "tristrips"))
+        if (earlier.name == e.name &&
+            (e.name == "vertex" || e.name == "face" || e.name == "tristrips" || e.name == "edge"))
           fail(at + "a second " + e.name + " element (the first is line " + std::to_string(earlier.header_line) + ")");
       unsigned long long count = 0;
       const auto [p, ec] = std::from_chars(words[2].data(), words[2].data() + words[2].size(), count);
@@ -258,6 +284,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
   std::vector<Mat3> covariances;
   PolygonTopology faces;
   bool has_covariances = false;
+  std::vector<double> corners;          // per vertex, where the vertex element has a corner property
+  std::vector<CreaseRecord> creases;    // the edge element's records, checked against the faces at the end
   for (const Element& e : elements) {
     // Each record needs at least one byte per value (binary) or two characters (ASCII).
     size_t min_record = 0;
@@ -280,6 +308,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       for (int k = 0; k < 6; ++k) found += (ic[k] = index_of(cov_names[k])) >= 0;
       if (found != 0 && found != 6) fail("the vertex element has only some of cxx cxy cxz cyy cyz czz");
       has_covariances = found == 6;
+      const int icorner = index_of("corner");
       // Arrays grow as records arrive (never sized from the header): memory follows what the file holds.
       means.reserve(std::min<size_t>(e.count, 1 << 16));
       if (has_covariances) covariances.reserve(means.capacity());  // else none: identity, made with the mesh
@@ -299,6 +328,13 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
         means.emplace_back(values[size_t(ix)], values[size_t(iy)], values[size_t(iz)]);
         if (const std::string why = position_problem(means[v]); !why.empty())
           fail("vertex " + std::to_string(v) + " " + why);
+        if (icorner >= 0) {
+          const double s = values[size_t(icorner)];
+          if (const std::string why = sharpness_problem(s); !why.empty())
+            fail(body.where() + "vertex " + std::to_string(v) + " corner sharpness " + BodyReader::format_number(s) +
+                 " " + why);
+          corners.push_back(s);
+        }
         if (has_covariances) {
           Mat3& m = covariances.emplace_back();
           double c[6];
@@ -339,6 +375,42 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
         }
         faces.offsets.push_back(int(faces.verts.size()));
         body.end_record();
+      }
+    } else if (e.name == "edge" && index_of("crease") >= 0) {
+      // Creases (docs/design.md §4): vertex1 vertex2 crease per record, in any property order.
+      const int i1 = index_of("vertex1"), i2 = index_of("vertex2"), is = index_of("crease");
+      if (i1 < 0 || i2 < 0) fail("the edge element has a crease but lacks vertex1 or vertex2");
+      std::unordered_map<uint64_t, size_t> seen;
+      std::vector<double> values(e.properties.size());
+      for (size_t r = 0; r < e.count; ++r) {
+        body.begin_record();
+        for (size_t k = 0; k < e.properties.size(); ++k) {
+          const Property& p = e.properties[k];
+          if (p.is_list) {
+            const size_t n = body.read_count(p.count_type);
+            for (size_t i = 0; i < n; ++i) body.read(p.type);
+          } else {
+            values[k] = body.read(p.type);
+          }
+        }
+        body.end_record();
+        const std::string edge = "edge " + std::to_string(r);
+        int ends[2];
+        for (int k = 0; k < 2; ++k) {
+          const double index = values[size_t(k == 0 ? i1 : i2)];
+          if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
+            fail(body.where() + edge + " refers to vertex " + BodyReader::format_number(index) + ", but there are " +
+                 std::to_string(vertex_count) + " vertices");
+          ends[k] = int(index);
+        }
+        const std::string named = edge + " (vertices " + std::to_string(ends[0]) + "-" + std::to_string(ends[1]) + ")";
+        const double sharpness = values[size_t(is)];
+        if (const std::string why = sharpness_problem(sharpness); !why.empty())
+          fail(body.where() + named + " crease " + BodyReader::format_number(sharpness) + " " + why);
+        if (ends[0] == ends[1]) fail(body.where() + named + " joins a vertex to itself");
+        if (const auto [it, inserted] = seen.try_emplace(soup_edge_key(ends[0], ends[1]), r); !inserted)
+          fail(body.where() + named + " repeats edge " + std::to_string(it->second));
+        creases.push_back({ends[0], ends[1], sharpness, body.where()});
       }
     } else if (e.name == "tristrips") {
       // Triangle strips (as Stanford's scanned models store their faces): an index list per record,
@@ -392,9 +464,13 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
     }
   }
   body.check_end();
+  Sharpness sharpness = sharpness_of(creases, faces, fail);
+  sharpness.corners = std::move(corners);
+  sharpness.normalise();
   file_has_covariances = has_covariances;
   if (release) std::string().swap(*release);
   PolygonSoup soup;
+  soup.sharpness = std::move(sharpness);
   soup.positions = std::move(means);
   soup.covariances = std::move(covariances);
   soup.faces = std::move(faces);
@@ -443,6 +519,26 @@ void put_little_endian(std::ostream& out, T value) {
   if constexpr (std::endian::native == std::endian::big) std::reverse(bytes.begin(), bytes.end());
   out.write(bytes.data(), sizeof(T));
 }
+
+// Whether every value is a float exactly, so that "float" keeps them.
+template <class Values, class Get>
+bool all_floats(const Values& values, Get get) {
+  return std::all_of(values.begin(), values.end(), [&](const auto& x) { return double(float(get(x))) == get(x); });
+}
+
+// Writes a value of a float or double property: ASCII as the double's shortest exact text.
+void put_real(std::ostream& out, double value, bool as_float, bool binary) {
+  if (binary) {
+    if (as_float)
+      put_little_endian(out, float(value));
+    else
+      put_little_endian(out, value);
+    return;
+  }
+  char buffer[32];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.write(buffer, r.ptr - buffer);
+}
 }  // namespace
 
 void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
@@ -451,11 +547,21 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
       << "element vertex " << m.n_vertices() << "\n";
   for (const char* name : {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz"})
     out << "property double " << name << "\n";
+  // Sharpness only where there is some, as float where every value is one (kept exactly either way).
+  const std::vector<double>& corners = m.sharpness.corners;
+  const bool has_corners = corners.size() == m.n_vertices();
+  const bool float_corners = all_floats(corners, [](double x) { return x; });
+  if (has_corners) out << "property " << (float_corners ? "float" : "double") << " corner\n";
   // Face sizes fit a uchar unless some face has more than 255 corners.
   bool wide = false;
   for (const auto f : m.mesh.faces()) wide = wide || m.mesh.valence(f) > 255;
-  out << "element face " << m.n_faces() << "\nproperty list " << (wide ? "int" : "uchar")
-      << " int vertex_indices\nend_header\n";
+  out << "element face " << m.n_faces() << "\nproperty list " << (wide ? "int" : "uchar") << " int vertex_indices\n";
+  const std::vector<EdgeCrease>& creases = m.sharpness.creases;
+  const bool float_creases = all_floats(creases, [](const EdgeCrease& c) { return c.sharpness; });
+  if (!creases.empty())
+    out << "element edge " << creases.size() << "\nproperty int vertex1\nproperty int vertex2\nproperty "
+        << (float_creases ? "float" : "double") << " crease\n";
+  out << "end_header\n";
   char buffer[32];
   for (size_t i = 0; i < m.n_vertices(); ++i) {
     const Vec3 p = m.mean(i);
@@ -467,8 +573,12 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
       } else {
         const auto r = std::to_chars(buffer, buffer + sizeof buffer, values[k]);
         out.write(buffer, r.ptr - buffer);
-        out.put(k == 8 ? '\n' : ' ');
+        out.put(k == 8 && !has_corners ? '\n' : ' ');
       }
+    }
+    if (has_corners) {
+      put_real(out, corners[i], float_corners, binary);
+      if (!binary) out.put('\n');
     }
   }
   for (const auto f : m.mesh.faces()) {
@@ -486,6 +596,16 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
       else
         out << ' ' << index;
     }
+    if (!binary) out << '\n';
+  }
+  for (const EdgeCrease& c : creases) {
+    if (binary) {
+      put_little_endian(out, int32_t(c.a));
+      put_little_endian(out, int32_t(c.b));
+    } else {
+      out << c.a << ' ' << c.b << ' ';
+    }
+    put_real(out, c.sharpness, float_creases, binary);
     if (!binary) out << '\n';
   }
 }

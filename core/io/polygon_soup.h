@@ -1,7 +1,9 @@
 #pragma once
 // A mesh as a reader produced it, before it becomes a CovarianceMesh: positions, optional
 // covariances and faces as vertex-index lists, with nothing yet checked about the topology.
+#include <cstdint>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -16,12 +18,32 @@ struct PolygonSoup {
   std::vector<Vec3> positions;
   std::vector<Mat3> covariances;  // one per position, or empty for a plain mesh (inferred later)
   PolygonTopology faces;          // its n_vertices is not kept: positions.size() is the count
+  Sharpness sharpness;            // creases on edges of the faces and corners, by vertex index
 };
+
+/// The undirected edges of the faces, each as (min << 32 | max) of its vertices (soup_edge_key), for a
+/// reader to check that its creases lie on edges.
+inline uint64_t soup_edge_key(int a, int b) {
+  return uint64_t(uint32_t(a < b ? a : b)) << 32 | uint32_t(a < b ? b : a);
+}
+inline std::unordered_set<uint64_t> soup_edge_keys(const PolygonTopology& faces) {
+  std::unordered_set<uint64_t> keys;
+  keys.reserve(faces.verts.size());
+  for (int f = 0; f < faces.n_faces(); ++f)
+    for (int k = faces.offsets[size_t(f)]; k < faces.offsets[size_t(f) + 1]; ++k) {
+      const int next = k + 1 == faces.offsets[size_t(f) + 1] ? faces.offsets[size_t(f)] : k + 1;
+      keys.insert(soup_edge_key(faces.verts[size_t(k)], faces.verts[size_t(next)]));
+    }
+  return keys;
+}
 
 /// The CovarianceMesh of a soup, its arrays taken over (make_covariance_mesh: throws gps::Error naming
 /// `source` and the face or vertex where the topology is not a manifold polygon mesh).
 inline CovarianceMesh mesh_of_soup(PolygonSoup&& soup, const std::string& source) {
-  return make_covariance_mesh(std::move(soup.positions), std::move(soup.covariances), std::move(soup.faces), source);
+  CovarianceMesh mesh =
+      make_covariance_mesh(std::move(soup.positions), std::move(soup.covariances), std::move(soup.faces), source);
+  mesh.sharpness = std::move(soup.sharpness);
+  return mesh;
 }
 
 }  // namespace gps
