@@ -37,6 +37,7 @@ Modelled split_edge(const CovarianceMesh& mesh, int a, int b, double t) {
     throw Error("the split fraction must be in (0, 1), got " + value.str());
   }
   const int m = arrays.add_vertex(blend_gaussians(arrays, {{a, 1 - t}, {b, t}}));
+  split_crease(arrays, a, b, m);
   std::vector<std::pair<int, int>> beside = {face_of(edges, a, b), face_of(edges, b, a)};
   std::sort(beside.begin(), beside.end());
   int added = 0;

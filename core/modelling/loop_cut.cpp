@@ -128,6 +128,9 @@ Modelled loop_cut(const CovarianceMesh& mesh, int a, int b, int cuts, double sli
       rail.push_back(arrays.add_vertex(blend_gaussians(arrays, {{x, 1 - t}, {y, t}})));
     }
     rail.push_back(y);
+    // A creased ring edge's pieces keep its sharpness (as Blender's loop cut does).
+    if (const double s = arrays.sharpness.crease(x, y); s > 0.0)
+      for (size_t k = 0; k + 1 < rail.size(); ++k) arrays.sharpness.set_crease(rail[k], rail[k + 1], s);
     rail_of[edge_key(x, y)] = rails.size();
     rails.push_back(std::move(rail));
   }

@@ -76,6 +76,9 @@ MergeResult merge_into(const MeshArrays& in, const std::vector<int>& target,
   a.covariances.resize(size_t(next));
   for (auto& face : a.faces)
     for (int& v : face) v = r.new_index[size_t(v)];
+  std::vector<int> merged_index(in.means.size());
+  for (size_t v = 0; v < merged_index.size(); ++v) merged_index[v] = r.new_index[size_t(target[v])];
+  a.sharpness = renumbered(in.sharpness, merged_index, next);
   return r;
 }
 

@@ -7,6 +7,23 @@
 
 namespace gps {
 
+namespace {
+
+// The sharpness of the arrays on their faces: creases on edges, corners on vertices.
+Sharpness sharpness_on_edges(const MeshArrays& a) {
+  if (a.sharpness.empty()) return {};
+  const DirectedEdges edges = directed_edges(a);
+  Sharpness out;
+  for (const EdgeCrease& c : a.sharpness.creases)
+    if (c.a >= 0 && c.b < a.n_vertices() && has_edge(edges, c.a, c.b)) out.creases.push_back(c);
+  out.corners = a.sharpness.corners;
+  if (!out.corners.empty()) out.corners.resize(size_t(a.n_vertices()), 0.0);
+  out.normalise();
+  return out;
+}
+
+}  // namespace
+
 int MeshArrays::add_vertex(const Gaussian& g) {
   means.push_back(g.mean);
   covariances.push_back(g.covariance);
@@ -18,6 +35,7 @@ MeshArrays arrays_of(const CovarianceMesh& m) {
   a.means.reserve(m.n_vertices());
   for (size_t i = 0; i < m.n_vertices(); ++i) a.means.push_back(m.mean(i));
   a.covariances = m.covariances;
+  a.sharpness = m.sharpness;
   const PolygonTopology t = topology_of(m.mesh);
   a.faces.resize(size_t(t.n_faces()));
   for (int f = 0; f < t.n_faces(); ++f)
@@ -30,6 +48,7 @@ CovarianceMesh build_mesh(const MeshArrays& a) {
   try {
     CovarianceMesh m = make_covariance_mesh(a.means, a.covariances, a.faces, "the result would not be a valid mesh");
     validate_gaussians(m, "the result would not be a valid mesh");
+    m.sharpness = sharpness_on_edges(a);
     return m;
   } catch (const Error& e) {
     throw Error(e.what());
@@ -51,7 +70,28 @@ std::vector<int> drop_unused_vertices(MeshArrays& a) {
   a.covariances.resize(size_t(next));
   for (auto& face : a.faces)
     for (int& v : face) v = map[size_t(v)];
+  a.sharpness = renumbered(a.sharpness, map, next);
   return map;
+}
+
+Sharpness renumbered(const Sharpness& s, const std::vector<int>& new_index, int n_vertices) {
+  Sharpness out;
+  const auto index = [&](int v) { return size_t(v) < new_index.size() ? new_index[size_t(v)] : -1; };
+  for (const EdgeCrease& c : s.creases) {
+    const int a = index(c.a), b = index(c.b);
+    if (a < 0 || b < 0 || a == b) continue;
+    out.set_crease(a, b, std::max(out.crease(a, b), c.sharpness));
+  }
+  for (size_t v = 0; v < s.corners.size(); ++v)
+    if (const int w = index(int(v)); w >= 0 && s.corners[v] > out.corner(w)) out.set_corner(w, s.corners[v], n_vertices);
+  return out;
+}
+
+void split_crease(MeshArrays& a, int u, int v, int m) {
+  const double s = a.sharpness.crease(u, v);
+  if (s <= 0.0) return;
+  a.sharpness.set_crease(u, m, s);
+  a.sharpness.set_crease(m, v, s);
 }
 
 Gaussian blend_gaussians(const MeshArrays& a, const std::vector<std::pair<int, double>>& weights) {

@@ -16,6 +16,8 @@ struct MeshArrays {
   std::vector<Vec3> means;
   std::vector<Mat3> covariances;
   std::vector<std::vector<int>> faces;
+  /// Creases and corners by vertex index; build_mesh keeps the creases that are edges of the faces.
+  Sharpness sharpness;
 
   int n_vertices() const { return int(means.size()); }
   int n_faces() const { return int(faces.size()); }
@@ -35,12 +37,22 @@ struct Modelled {
 /// The mesh as arrays; faces in the mesh's face order, corners in face_vertices() order.
 MeshArrays arrays_of(const CovarianceMesh& mesh);
 
-/// The arrays as a covariance mesh. Throws gps::Error ("the result would ...: <why>") when they do
-/// not make a manifold mesh of valid Gaussians.
+/// The arrays as a covariance mesh, with the creases of `arrays.sharpness` that are still edges of
+/// the faces and the corners of its vertices. Throws gps::Error ("the result would ...: <why>") when
+/// they do not make a manifold mesh of valid Gaussians.
 CovarianceMesh build_mesh(const MeshArrays& arrays);
 
-/// Removes the vertices no face uses, keeping the others in order; returns old index → new (−1 removed).
+/// Removes the vertices no face uses, keeping the others in order (their creases and corners too);
+/// returns old index → new (−1 removed).
 std::vector<int> drop_unused_vertices(MeshArrays& arrays);
+
+/// Sharpness renumbered by old index → new (−1 removed) onto `n_vertices` vertices: creases with a
+/// removed end, or whose ends become one vertex, are dropped; where several become one crease or
+/// corner (vertices merged), the largest sharpness stays.
+Sharpness renumbered(const Sharpness& sharpness, const std::vector<int>& new_index, int n_vertices);
+
+/// Gives both halves a–m and m–b of a split edge a–b the edge's sharpness (as Blender does).
+void split_crease(MeshArrays& arrays, int a, int b, int m);
 
 /// The Gaussian whose 9D point is Σ w_k q_k over (vertex, weight) pairs (weights ≥ 0, summing to 1):
 /// the normalised product of the Gaussians (docs/design.md §1), what a linear scheme gives a vertex

@@ -10,6 +10,7 @@
 #include "core/mesh/error.h"
 #include "core/modelling/affine_transform.h"
 #include "core/modelling/bridge.h"
+#include "core/modelling/crease_edges.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/edge_operations.h"
 #include "core/modelling/extrude.h"
@@ -269,6 +270,17 @@ Run parse_step(const std::string& op, Fields& f) {
     return [=](const CovarianceMesh& m) { return add_primitive(m, *primitive, center, size); };
   }
   if (op == "set") return set_gaussians(f);
+  if (op == "crease") {
+    const Edges edges = f.edges("edges");
+    const double sharpness = f.number("sharpness");
+    return [=](const CovarianceMesh& m) { return set_crease(m, edges, sharpness); };
+  }
+  if (op == "corner") {
+    const std::vector<int> vertices = f.indices("vertices");
+    if (vertices.empty()) throw usage_error("\"vertices\" is empty");
+    const double sharpness = f.number("sharpness");
+    return [=](const CovarianceMesh& m) { return set_corner(m, vertices, sharpness); };
+  }
   std::string names;
   for (const std::string& n : operation_names()) names += (names.empty() ? "" : ", ") + n;
   throw usage_error("unknown operation (known: " + names + ")");
@@ -283,7 +295,8 @@ std::string prefixed(const std::string& source, const std::string& message) {
 
 std::vector<std::string> operation_names() {
   return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude",   "inset", "delete", "dissolve",
-          "merge",     "weld",     "fill",       "bridge",    "transform", "add",   "set"};
+          "merge",     "weld",     "fill",       "bridge",    "transform", "add",   "set",    "crease",
+          "corner"};
 }
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {

@@ -107,5 +107,41 @@ TEST(OperationList, RefusalNamesTheOperationAndChangesNothing) {
   EXPECT_EQ(cube.n_faces(), 6u);
 }
 
+TEST(OperationList, CreaseAndCornerOperations) {
+  const CovarianceMesh cube = make_sample("cube");
+  std::vector<std::string> summaries;
+  const Modelled m = OperationList::parse(R"([{"op":"crease","edges":[[4,5],[6,5]],"sharpness":2.5},
+                                              {"op":"corner","vertices":[7],"sharpness":10},
+                                              {"op":"crease","edges":[[4,5]],"sharpness":0},
+                                              {"op":"split_edge","edge":[5,6]}])",
+                                          "ops.json")
+                         .apply(cube, &summaries);
+  Sharpness expected;
+  expected.creases = {{5, 8, 2.5}, {6, 8, 2.5}};  // 5–6 split at the new vertex 8: both halves keep it
+  expected.corners = {0, 0, 0, 0, 0, 0, 0, 10, 0};
+  EXPECT_EQ(m.mesh.sharpness, expected);
+  EXPECT_EQ(summaries[0], "set the crease of 2 edges to 2.5");
+  EXPECT_EQ(summaries[1], "set the corner of 1 vertex to 10 (infinitely sharp)");
+
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"([{"op":"crease","edges":[[4,5]]}])", R"(f: ops[0] (crease): "sharpness" is missing)"},
+           {R"([{"op":"crease","edges":[],"sharpness":1}])", R"(f: ops[0] (crease): "edges" must be a list of [a, b] edges)"},
+           {R"([{"op":"corner","vertices":[],"sharpness":1}])", R"(f: ops[0] (corner): "vertices" is empty)"},
+           {R"([{"op":"corner","vertices":[1],"sharpness":"high"}])",
+            R"(f: ops[0] (corner): "sharpness" must be a finite number)"}}) {
+    const std::string error = error_of([&, text = text] { OperationList::parse(text, "f"); });
+    EXPECT_EQ(error, message) << text;
+  }
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"([{"op":"corner","vertices":[1],"sharpness":1},{"op":"crease","edges":[[0,6]],"sharpness":1}])",
+            "f: ops[1] (crease): edge 0–6 is not in the mesh"},
+           {R"([{"op":"crease","edges":[[0,1]],"sharpness":-2}])", "f: ops[0] (crease): sharpness -2 is negative"},
+           {R"([{"op":"corner","vertices":[8],"sharpness":1}])",
+            "f: ops[0] (corner): vertex 8 is not in the mesh (8 vertices)"}}) {
+    const OperationList ops = OperationList::parse(text, "f");
+    EXPECT_EQ(error_of([&] { ops.apply(cube); }), message) << text;
+  }
+}
+
 }  // namespace
 }  // namespace gps

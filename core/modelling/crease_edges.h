@@ -1,0 +1,20 @@
+#pragma once
+// Marking edges as creases and vertices as corners (OpenSubdiv's semi-sharp sharpness, docs/design.md §1
+// "Creases and corners"), as Blender's Edge Crease and Vertex Crease do: the topology and the Gaussians
+// stay as they are.
+#include <array>
+#include <vector>
+
+#include "core/modelling/mesh_arrays.h"
+
+namespace gps {
+
+/// Gives every listed edge the sharpness (0 makes it smooth; kInfiniteSharpness and above sharp at
+/// every level). Selects the edges' vertices. Throws gps::Error for a sharpness that is negative or
+/// not finite, a vertex out of range or a pair that is not an edge ("edge 2–7 is not in the mesh").
+Modelled set_crease(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, double sharpness);
+
+/// Gives every listed vertex the corner sharpness (0 removes it); selects them. Throws as set_crease.
+Modelled set_corner(const CovarianceMesh& mesh, const std::vector<int>& vertices, double sharpness);
+
+}  // namespace gps
