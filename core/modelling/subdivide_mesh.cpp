@@ -27,7 +27,10 @@ struct Midpoints {
 
   int make(MeshArrays& a, int u, int v) {
     const auto [it, added] = of_edge.try_emplace(edge_key(u, v), 0);
-    if (added) it->second = a.add_vertex(blend_gaussians(a, {{u, 0.5}, {v, 0.5}}));
+    if (added) {
+      it->second = a.add_vertex(blend_gaussians(a, {{u, 0.5}, {v, 0.5}}));
+      split_crease(a, u, v, it->second);
+    }
     return it->second;
   }
   // The midpoint of {u, v}, or −1 when the edge is not split.

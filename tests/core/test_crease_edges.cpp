@@ -9,6 +9,7 @@
 #include "core/modelling/edge_operations.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/merge_vertices.h"
+#include "core/modelling/subdivide_mesh.h"
 
 namespace gps {
 namespace {
@@ -104,6 +105,17 @@ TEST(CreaseEdges, SplittingACreasedEdgeCreasesBothHalves) {
   EXPECT_EQ(pieces, 3);
   expect_creases_on_edges(cut.mesh);
   EXPECT_EQ(cut.mesh.sharpness.crease(4, 5), 0.0);
+}
+
+TEST(CreaseEdges, SubdividingFacesCreasesBothHalvesOfTheirCreasedEdges) {
+  const Modelled m = subdivide_faces(creased_cube(), {1});  // the top face 4 5 6 7
+  EXPECT_EQ(m.mesh.sharpness.creases.size(), 8u);
+  for (const EdgeCrease& c : m.mesh.sharpness.creases) {
+    EXPECT_EQ(c.sharpness, kInfiniteSharpness);
+    EXPECT_TRUE(c.a >= 4 && c.a < 8) << c.a << "-" << c.b;  // each half has one of the old top corners
+    EXPECT_GE(c.b, 8);
+  }
+  expect_creases_on_edges(m.mesh);
 }
 
 TEST(CreaseEdges, MergingDropsCollapsedCreasesAndKeepsTheOthers) {
