@@ -1,9 +1,13 @@
-// gpsurf infer IN -o OUT: covariances for a plain mesh (GPS paper Eq. 16–17, or isotropic).
+// gpsurf infer IN -o OUT: covariances for a plain mesh (GPS paper Eq. 16–17, or isotropic), and
+// optionally creases where the surface folds (--crease-angle).
 #include <iostream>
+#include <sstream>
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/repair_arguments.h"
+#include "core/mesh/crease_by_angle.h"
+#include "core/mesh/error.h"
 #include "core/mesh/inference.h"
 #include "core/io/mesh_io.h"
 
@@ -12,7 +16,7 @@ namespace gps {
 void add_infer_command(CLI::App& app) {
   struct Args {
     std::string input, output;
-    double bias = 0.05, isotropic = 0;
+    double bias = 0.05, isotropic = 0, crease_angle = -1;
     bool binary = false;
     RepairArguments repair;
   };
@@ -25,9 +29,18 @@ void add_infer_command(CLI::App& app) {
   cmd->add_option("--isotropic", args->isotropic, "isotropic covariances: σ = S × mean edge length")
       ->check(positive_number())
       ->excludes(bias);
+  cmd->add_option("--crease-angle", args->crease_angle,
+                  "make edges whose faces meet at more than DEGREES (0..180) infinitely sharp, as Blender's "
+                  "sharp by angle")
+      ->check(non_negative_number());
   cmd->add_flag("--binary", args->binary, "binary PLY");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
+    if (args->crease_angle > 180) {
+      std::ostringstream text;
+      text << "--crease-angle: at most 180 degrees, got " << args->crease_angle;
+      throw usage_error(text.str());
+    }
     ImportOptions options;  // a plain mesh gets the same kind of covariances on import
     options.bias = args->bias;
     if (args->isotropic > 0) {
@@ -39,6 +52,11 @@ void add_infer_command(CLI::App& app) {
       isotropic_covariances(m, args->isotropic);
     else
       infer_covariances(m, args->bias);
+    if (args->crease_angle >= 0) {
+      const int marked = crease_by_angle(m, args->crease_angle);
+      std::cout << "creased " << marked << (marked == 1 ? " edge" : " edges") << " folded by more than "
+                << args->crease_angle << " degrees (infinitely sharp)\n";
+    }
     write_mesh(args->output, m, args->binary);
     std::cout << "wrote " << args->output << "\n";
   });

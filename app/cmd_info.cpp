@@ -1,4 +1,4 @@
-// gpsurf info FILE: counts, valences and covariance ranges of a mesh.
+// gpsurf info FILE: counts, valences, creases and covariance ranges of a mesh.
 #include <Eigen/Eigenvalues>
 #include <iostream>
 #include <map>
@@ -80,11 +80,19 @@ void print_info(const std::string& path, const RepairArguments& repair) {
             << "\nextraordinary vertices: " << extraordinary << " (by "
             << (scheme == Scheme::loop ? "Loop" : "Catmull-Clark") << "'s rules)\n";
   std::cout << "covariance eigenvalues: " << lo << " .. " << hi << "\n";
+  // Creases and corners (docs/design.md §1): semi-sharp ones decay over levels, the others stay sharp.
+  int semi_sharp = 0, infinitely_sharp = 0, corners = 0, sharp_corners = 0;
+  for (const EdgeCrease& crease : m.sharpness.creases) ++(is_infinitely_sharp(crease.sharpness) ? infinitely_sharp : semi_sharp);
+  for (const double s : m.sharpness.corners)
+    if (s > 0.0) ++(is_infinitely_sharp(s) ? sharp_corners : corners);
+  std::cout << "creased edges: " << semi_sharp + infinitely_sharp << " (" << semi_sharp << " semi-sharp, "
+            << infinitely_sharp << " infinitely sharp)\ncorners: " << corners + sharp_corners << " (" << corners
+            << " semi-sharp, " << sharp_corners << " infinitely sharp)\n";
 }
 }  // namespace
 
 void add_info_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("info", "Print counts, valences and covariance ranges of a mesh");
+  auto* cmd = app.add_subcommand("info", "Print counts, valences, creases and covariance ranges of a mesh");
   auto path = std::make_shared<std::string>();
   auto repair = std::make_shared<RepairArguments>();
   cmd->add_option("file", *path, "mesh file (.ply, .obj, .off, .stl)")->required();
