@@ -13,7 +13,6 @@
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 
 #include "core/mesh/error.h"
-#include "core/mesh/inference.h"
 
 namespace gps {
 namespace {
@@ -21,27 +20,38 @@ namespace {
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
 
 /// What a vertex of the decimated mesh has gathered from the input region collapsed into it: the
-/// error quadric of its planes, and the area-weighted moment of its faces' precisions.
+/// error quadric of its planes, the region's area and the area-weighted tensor of its face normals.
 ///
-/// The covariance of a region follows the GPS inference (Eq. 16–17) from a fan to a region: its
-/// precision sums the precisions of its input faces. Summed as they are, a region of many faces
-/// would get a precision that many times a fan's, and GPS is invariant under a global scale of the
-/// Σ but not under a scale per vertex: a coarse vertex that absorbed more faces would pull the
-/// surface harder. So each face's precision Σ_f⁻¹ (of the face's own size) is first made
-/// scale-free, a_f·Σ_f⁻¹ with a_f the face's area, then averaged over the region weighted by area,
-/// then scaled to the region's size: Σ_v⁻¹ = Σ a_f·(a_f·Σ_f⁻¹) / A_v², A_v the region's area. The
-/// shape of Σ_v is the region's (flat across a smooth patch, a needle along a sharp edge) and its size
-/// is the coarse mesh's, whatever the density of the input there. Each input face is shared by its
-/// corners, a third of its area each, so the moment and the area add up as regions merge.
+/// The covariance of a region carries the GPS inference (Eq. 16–17) from a vertex's fan to its
+/// region: the precisions of the region's faces add up. Two things change with the scale. A fine
+/// face's own moment C_f describes the input's triangulation (a long thin triangle, a diagonal
+/// split), which means nothing at the coarse vertex; what the region knows is its faces' planes. So
+/// each face stands for a disc in its plane of the region's size, with Eq. 16's bias:
+/// Σ_f = s²[(1 + b)(I − n nᵀ) + b n nᵀ]. And summed as they are, a region of many faces would get
+/// that many times a fan's precision, while GPS is invariant under one scale of all Σ but not under a
+/// scale per vertex: a vertex that absorbed more faces would pull the surface harder. So the
+/// precisions are averaged by area, not summed, and the disc's size is the region's, s² = A_v (its
+/// area; a global factor GPS ignores):
+///     Σ_v⁻¹ = [(I − N_v)/(1 + b) + N_v/b] / A_v,   N_v = Σ a_f n_f n_fᵀ / A_v.
+/// The shape is the region's (a flat disc across a smooth patch, a needle along a sharp edge, the
+/// needle exactly along the edge, as every normal there is perpendicular to it) and the size the
+/// coarse mesh's, whatever the density of the input there. Each input face is shared by its corners,
+/// a third of its area each, so area and normal tensor add up as regions merge.
 struct Region {
   OpenMesh::Geometry::Quadricd quadric;
-  Mat3 precision_moment = Mat3::Zero();  // Σ over the region's faces of a_f · (a_f Σ_f⁻¹)
-  double area = 0;                       // A_v
+  double area = 0;                     // A_v
+  Mat3 normal_moment = Mat3::Zero();  // A_v N_v = Σ a_f n_f n_fᵀ
 };
 
 const char* const kRegionProperty = "gps:region";
 
-/// The priority of a collapse is the quadric error at the position it keeps (ModQuadricT's); after a
+/// Weight of the merged region's squared area in a collapse's priority: among collapses of (nearly)
+/// equal quadric error, as across a flat side where all are zero, the one that makes the smaller
+/// region goes first, so regions grow evenly and one on a sharp edge takes both sides of it alike.
+constexpr double kRegionAreaWeight = 1e-3;
+
+/// The priority of a collapse is the quadric error at the position it keeps (ModQuadricT's) plus the
+/// region term above; after a
 /// collapse v0 → v1, v1's region takes v0's.
 template <class MeshT>
 class ModRegionT : public OpenMesh::Decimater::ModBaseT<MeshT> {
@@ -51,17 +61,20 @@ public:
   explicit ModRegionT(MeshT& mesh) : Base(mesh, false) { mesh.get_property_handle(region_, kRegionProperty); }
 
   float collapse_priority(const CollapseInfo& ci) override {
-    OpenMesh::Geometry::Quadricd q = Base::mesh().property(region_, ci.v0).quadric;
-    q += Base::mesh().property(region_, ci.v1).quadric;
-    return float(std::max(0.0, q(ci.p1)));
+    const Region& from = Base::mesh().property(region_, ci.v0);
+    const Region& into = Base::mesh().property(region_, ci.v1);
+    OpenMesh::Geometry::Quadricd q = from.quadric;
+    q += into.quadric;
+    const double area = from.area + into.area;
+    return float(std::max(0.0, q(ci.p1)) + kRegionAreaWeight * area * area);
   }
 
   void postprocess_collapse(const CollapseInfo& ci) override {
     const Region& from = Base::mesh().property(region_, ci.v0);
     Region& into = Base::mesh().property(region_, ci.v1);
     into.quadric += from.quadric;
-    into.precision_moment += from.precision_moment;
     into.area += from.area;
+    into.normal_moment += from.normal_moment;
   }
 
 private:
@@ -89,7 +102,7 @@ TriMesh triangles_of(const CovarianceMesh& input, bool& triangulated) {
 }
 
 /// Every vertex's region before any collapse: its quadric, and a third of each face around it.
-void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region, double bias) {
+void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region) {
   std::vector<Vec3> corners(3);
   for (const auto f : t.faces()) {
     int k = 0;
@@ -100,14 +113,11 @@ void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region, double bias
     const Vec3 n = cross.normalized();
     OpenMesh::Geometry::Quadricd plane(n[0], n[1], n[2], -n.dot(corners[0]));
     plane *= area;
-    Mat3 precision;
-    const bool has_precision = face_precision(corners, bias, precision);
     for (const auto v : t.fv_range(f)) {
       Region& r = t.property(region, v);
       r.quadric += plane;
-      if (!has_precision) continue;
-      r.precision_moment += (area / 3) * area * precision;
       r.area += area / 3;
+      r.normal_moment += (area / 3) * n * n.transpose();
     }
   }
   for (const auto h : t.halfedges()) {
@@ -125,11 +135,13 @@ void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region, double bias
   }
 }
 
-/// The covariance of a region (see Region); where its faces gave no precision (all degenerate), an
+/// The covariance of a region (see Region); where its faces have no area (all degenerate), an
 /// isotropic one with σ half the mean length of the vertex's edges.
-Mat3 region_covariance(const TriMesh& t, TriMesh::VertexHandle v, const Region& r) {
+Mat3 region_covariance(const TriMesh& t, TriMesh::VertexHandle v, const Region& r, double bias) {
   if (r.area > 0) {
-    const Eigen::LLT<Mat3> llt{Mat3(r.precision_moment / (r.area * r.area))};
+    const Mat3 normals = r.normal_moment / r.area;
+    const Mat3 precision = ((Mat3::Identity() - normals) / (1 + bias) + normals / bias) / r.area;
+    const Eigen::LLT<Mat3> llt{precision};
     if (llt.info() == Eigen::Success) {
       const Mat3 covariance = llt.solve(Mat3::Identity());
       return 0.5 * (covariance + covariance.transpose());
@@ -154,7 +166,7 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
 
   OpenMesh::VPropHandleT<Region> region;
   t.add_property(region, kRegionProperty);
-  seed_regions(t, region, options.bias);
+  seed_regions(t, region);
 
   t.request_vertex_status();
   t.request_edge_status();
@@ -179,7 +191,7 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
   covariances.reserve(t.n_vertices());
   for (const auto v : t.vertices()) {
     means.push_back(to_vec3(t.point(v)));
-    covariances.push_back(region_covariance(t, v, t.property(region, v)));
+    covariances.push_back(region_covariance(t, v, t.property(region, v), options.bias));
   }
   std::vector<std::vector<int>> faces;
   faces.reserve(t.n_faces());

@@ -9,7 +9,7 @@ namespace gps {
 
 struct SimplifyOptions {
   size_t target_vertices = 0;  // the vertex count asked for
-  double bias = 0.05;          // of the input's face covariances (GPS paper Eq. 16)
+  double bias = 0.05;          // thickness of the face discs across their planes (GPS paper Eq. 16)
   double max_normal_deviation_degrees = 45;  // the most a collapse may turn a face's normal
 };
 

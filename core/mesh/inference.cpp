@@ -7,39 +7,37 @@
 
 namespace gps {
 
-bool face_precision(const std::vector<Vec3>& corners, double bias, Mat3& precision) {
-  Vec3 centre = Vec3::Zero();
-  for (const Vec3& x : corners) centre += x;
-  centre /= double(corners.size());
-  Mat3 c = Mat3::Zero();
-  for (const Vec3& x : corners) c += (x - centre) * (x - centre).transpose();
-  c /= double(corners.size());
-  const double lambda_max = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues()(2);
-  if (!(lambda_max > 0)) return false;
-  c += bias * lambda_max * Mat3::Identity();
-  precision = Eigen::LLT<Mat3>(c).solve(Mat3::Identity());
-  return true;
-}
-
 void infer_covariances(CovarianceMesh& m, double bias) {
   if (!(bias > 0)) throw usage_error("the inference bias must be positive, got " + std::to_string(bias));
   std::vector<Vec3> p;
   // The precision of face f's points, or false where the face is degenerate.
-  const auto face_precision_of = [&](PolyMesh::FaceHandle f, Mat3& inv) {
+  const auto face_precision = [&](PolyMesh::FaceHandle f, Mat3& inv) {
     p.clear();
-    for (const auto v : m.mesh.fv_range(f)) p.push_back(to_vec3(m.mesh.point(v)));
-    return face_precision(p, bias, inv);
+    Vec3 centre = Vec3::Zero();
+    for (const auto v : m.mesh.fv_range(f)) {
+      p.push_back(to_vec3(m.mesh.point(v)));
+      centre += p.back();
+    }
+    centre /= double(p.size());
+    Mat3 c = Mat3::Zero();
+    for (const Vec3& x : p) c += (x - centre) * (x - centre).transpose();
+    c /= double(p.size());
+    const double lambda_max = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues()(2);
+    if (!(lambda_max > 0)) return false;
+    c += bias * lambda_max * Mat3::Identity();
+    inv = Eigen::LLT<Mat3>(c).solve(Mat3::Identity());
+    return true;
   };
   // Every face is checked before the covariances change, which then hold the summed precisions: no
   // second array of a matrix per vertex, and the mesh is left as it was when a face is degenerate.
   Mat3 inv;
   for (const auto f : m.mesh.faces())
-    if (!face_precision_of(f, inv))
+    if (!face_precision(f, inv))
       throw Error("face " + std::to_string(f.idx()) + " is degenerate (all its vertices coincide)");
   std::vector<Mat3>& precision = m.covariances;
   precision.assign(m.n_vertices(), Mat3::Zero());
   for (const auto f : m.mesh.faces()) {
-    face_precision_of(f, inv);
+    face_precision(f, inv);
     for (const auto v : m.mesh.fv_range(f)) precision[size_t(v.idx())] += inv;
   }
   // An isolated vertex has no faces to infer from: σ = half the mesh's mean edge length.

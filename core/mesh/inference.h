@@ -1,14 +1,8 @@
 #pragma once
 // Covariances for a plain mesh (GPS paper Eq. 16–17, docs/design.md §1).
-#include <vector>
-
 #include "core/mesh/covariance_mesh.h"
 
 namespace gps {
-
-/// The precision Σ_f⁻¹ of one face's corners (Eq. 16: their second central moment C_f plus
-/// bias·λmax(C_f)·I), or false where the face is degenerate (all its corners coincide).
-bool face_precision(const std::vector<Vec3>& corners, double bias, Mat3& precision);
 
 /// Per face the second central moment of its vertices plus bias·λmax·I (Eq. 16); per vertex
 /// Σ⁻¹ = Σ_f Σ_f⁻¹ over its faces (Eq. 17). Replaces every covariance of `mesh`; a vertex in no

@@ -1,0 +1,68 @@
+// gpsurf compare as a user runs it: a known offset from a planar limit surface, --both, and errors.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <sstream>
+
+#include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+using test::gpsurf;
+using test::run_command;
+
+/// An n × n grid of squares of side `cell` from (origin, origin), split into triangles, in the plane z = height.
+std::string flat_grid_obj(int n, double cell, double origin, double height) {
+  std::ostringstream obj;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) obj << "v " << origin + cell * i << " " << origin + cell * j << " " << height << "\n";
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int a = i * (n + 1) + j + 1;
+      obj << "f " << a << " " << a + n + 1 << " " << a + n + 2 << "\nf " << a << " " << a + n + 2 << " " << a + 1 << "\n";
+    }
+  return obj.str();
+}
+
+TEST(CompareCli, PointsOffsetFromAFlatLimitSurfaceAreTheOffsetAway) {
+  test::TempDir dir;
+  // B's limit surface lies in z = 0 (flat Gaussians) and covers [0, 4]² but near its corners, which
+  // it rounds off; A's vertices lie over its middle [1, 3]² at height 0.25, A's diagonal 2√2.
+  const std::string a = dir.write("a.obj", flat_grid_obj(4, 0.5, 1, 0.25));
+  const std::string b = dir.write("b.obj", flat_grid_obj(4, 1, 0, 0));
+  const auto r = run_command(gpsurf("compare " + a + " " + b));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("(25 vertices) to the limit surface of"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\nrms 0.25 (8.839e-02 of the diagonal)\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\n99th percentile 0.25 (8.839e-02 of the diagonal)\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\nmax 0.25 (8.839e-02 of the diagonal)\n"), std::string::npos) << r.output;
+
+  const auto both = run_command(gpsurf("compare " + a + " " + b + " --both --level 4"));
+  ASSERT_EQ(both.exit_code, 0) << both.output;
+  EXPECT_EQ(std::count(both.output.begin(), both.output.end(), '\n'), 8) << both.output;
+  EXPECT_NE(both.output.find("b.obj (25 vertices) to the limit surface of"), std::string::npos) << both.output;
+
+  const auto samples = run_command(gpsurf("compare " + a + " " + b + " --samples --level 2"));
+  ASSERT_EQ(samples.exit_code, 0) << samples.output;
+  EXPECT_NE(samples.output.find("limit samples) to the limit surface of"), std::string::npos) << samples.output;
+  EXPECT_NE(samples.output.find("\nmax 0.25 "), std::string::npos) << samples.output;
+}
+
+TEST(CompareCli, UsageAndRuntimeErrorsAreOneLine) {
+  test::TempDir dir;
+  const std::string a = dir.write("a.obj", flat_grid_obj(2, 1, 0, 0));
+  for (const std::string& args : {a, a + " " + a + " --level 0", a + " " + a + " --scheme nonsense"}) {
+    const auto r = run_command(gpsurf("compare " + args));
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << ": " << r.output;
+  }
+  const auto missing = run_command(gpsurf("compare " + a + " " + dir.file("none.ply")));
+  EXPECT_EQ(missing.exit_code, 1) << missing.output;
+  EXPECT_EQ(std::count(missing.output.begin(), missing.output.end(), '\n'), 1) << missing.output;
+  EXPECT_NE(missing.output.find("none.ply"), std::string::npos) << missing.output;
+}
+
+}  // namespace
+}  // namespace gps
