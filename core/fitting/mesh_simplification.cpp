@@ -38,6 +38,7 @@ using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
 /// coarse mesh's, whatever the density of the input there. Each input face is shared by its corners,
 /// a third of its area each, so area and normal tensor add up as regions merge.
 struct Region {
+  int vertex = -1;  // the input vertex this one is
   OpenMesh::Geometry::Quadricd quadric;
   double area = 0;                     // A_v
   Mat3 normal_moment = Mat3::Zero();  // A_v N_v = Σ a_f n_f n_fᵀ
@@ -85,11 +86,17 @@ private:
 /// planes, per squared edge length: large, so that collapses keep the boundary's shape.
 constexpr double kBoundaryPlaneWeight = 100;
 
-/// The input as triangles, faces of more sides fanned from their first corner.
-TriMesh triangles_of(const CovarianceMesh& input, bool& triangulated) {
+/// The input as triangles, faces of more sides fanned from their first corner, in a frame where its
+/// bounding box is centred on the origin with a unit diagonal (`scale` its diagonal): the quadric
+/// errors and areas the priorities hold in single precision stay far from under- and overflow.
+TriMesh triangles_of(const CovarianceMesh& input, bool& triangulated, double& scale) {
+  Vec3 lo, hi;
+  bounding_box(input, lo, hi);
+  const Vec3 centre = 0.5 * (lo + hi);
+  scale = (hi - lo).norm() > 0 ? (hi - lo).norm() : 1.0;
   TriMesh t;
   t.reserve(input.n_vertices(), input.mesh.n_edges(), input.n_faces());
-  for (const auto v : input.mesh.vertices()) t.add_vertex(input.mesh.point(v));
+  for (const auto v : input.mesh.vertices()) t.add_vertex(to_point((to_vec3(input.mesh.point(v)) - centre) / scale));
   triangulated = false;
   std::vector<TriMesh::VertexHandle> corners;
   for (const auto f : input.mesh.faces()) {
@@ -103,6 +110,7 @@ TriMesh triangles_of(const CovarianceMesh& input, bool& triangulated) {
 
 /// Every vertex's region before any collapse: its quadric, and a third of each face around it.
 void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region) {
+  for (const auto v : t.vertices()) t.property(region, v).vertex = v.idx();
   std::vector<Vec3> corners(3);
   for (const auto f : t.faces()) {
     int k = 0;
@@ -161,7 +169,8 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
     throw usage_error("the target vertex count must be at least 4, got " + std::to_string(options.target_vertices));
   SimplifiedMesh result;
   result.input_vertices = input.n_vertices();
-  TriMesh t = triangles_of(input, result.triangulated);
+  double scale = 1;
+  TriMesh t = triangles_of(input, result.triangulated, scale);
   result.input_triangles = t.n_faces();
 
   OpenMesh::VPropHandleT<Region> region;
@@ -190,8 +199,9 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
   means.reserve(t.n_vertices());
   covariances.reserve(t.n_vertices());
   for (const auto v : t.vertices()) {
-    means.push_back(to_vec3(t.point(v)));
-    covariances.push_back(region_covariance(t, v, t.property(region, v), options.bias));
+    const Region& r = t.property(region, v);
+    means.push_back(input.mean(size_t(r.vertex)));
+    covariances.push_back(scale * scale * region_covariance(t, v, r, options.bias));
   }
   std::vector<std::vector<int>> faces;
   faces.reserve(t.n_faces());

@@ -127,6 +127,25 @@ TEST(Simplify, StopsWhereNoCollapseKeepsTheTopology) {
   expect_spd(o.mesh);
 }
 
+TEST(Simplify, CommutesWithScale) {
+  // Powers of two scale exactly, so the same collapses happen and Σ scales by s².
+  const CovarianceMesh input = make_sample("pawn");
+  const SimplifiedMesh reference = simplified(input, 120);
+  for (const double scale : {std::ldexp(1.0, 40), std::ldexp(1.0, -40)}) {
+    CovarianceMesh scaled = input;
+    for (size_t i = 0; i < scaled.n_vertices(); ++i) scaled.set_mean(i, scale * input.mean(i));
+    const SimplifiedMesh s = simplified(scaled, 120);
+    ASSERT_EQ(s.mesh.n_vertices(), reference.mesh.n_vertices());
+    ASSERT_EQ(s.mesh.n_faces(), reference.mesh.n_faces());
+    for (size_t i = 0; i < s.mesh.n_vertices(); ++i) {
+      EXPECT_EQ(s.mesh.mean(i), scale * reference.mesh.mean(i)) << "vertex " << i;
+      EXPECT_LT((s.mesh.covariance(i) / (scale * scale) - reference.mesh.covariance(i)).norm(),
+                1e-12 * reference.mesh.covariance(i).norm())
+          << "vertex " << i;
+    }
+  }
+}
+
 TEST(Simplify, RefusesATargetBelowFour) {
   EXPECT_THROW(simplified(make_sample("icosphere", 320), 3), Error);
 }
