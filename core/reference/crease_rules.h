@@ -23,8 +23,7 @@ double vertex_sharpness(const MeshConnectivity& c, const CreaseLevel& level, int
 
 /// The rule at v under `level`; for a crease, a and b get the other ends of its two sharp edges
 /// (in vertex_edges order). Boundary vertices are creases along their boundary or corners.
-VertexRule vertex_rule(const MeshConnectivity& c, const CreaseLevel& level, int v, int* a = nullptr,
-                       int* b = nullptr);
+VertexRule vertex_rule(const MeshConnectivity& c, const CreaseLevel& level, int v, int* a = nullptr, int* b = nullptr);
 
 /// How one subdivision step moves vertex v: the rule under the parent's sharpness, the rule under
 /// the sharpness one level finer, and where they differ the weight of the parent's rule

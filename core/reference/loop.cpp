@@ -53,8 +53,8 @@ int opposite_vertex(const PolygonTopology& t, const MeshConnectivity& c, int f, 
 }  // namespace
 
 template <class T>
-std::vector<T> loop_values(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p,
-                           LoopBeta kind, const CreaseLevel* creases) {
+std::vector<T> loop_values(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& p, LoopBeta kind,
+                           const CreaseLevel* creases) {
   const bool creased = creases && !creases->empty();
   const int nv = t.n_vertices, ne = c.n_edges();
   std::vector<T> out(size_t(nv + ne));

@@ -248,9 +248,9 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   SubdivisionResult result;
   const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
   const bool with_normals = options.normals && options.limit;
-  const Refined<Dual> r = refine(base, base_points(mesh), mesh.sharpness, options,
-                                 with_params ? &result.vertex_params : nullptr,
-                                 with_normals ? &result.corner_params : nullptr);
+  const Refined<Dual> r =
+      refine(base, base_points(mesh), mesh.sharpness, options, with_params ? &result.vertex_params : nullptr,
+             with_normals ? &result.corner_params : nullptr);
   std::vector<Dual> first, second;  // limit tangents, with_normals
   if (with_normals) {
     limit_tangents_of(r, options, first, second);

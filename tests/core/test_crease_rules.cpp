@@ -184,8 +184,8 @@ TEST(CreaseRules, InfinitelySharpCreaseIsTheCubicBSplineOfItsVertices) {
       const auto ring = [&](int k) { return first + (k + 4) % 4; };
       for (int k = 0; k < 4; ++k) {
         const Dual at_vertex = (q[size_t(ring(k - 1))] + 4.0 * q[size_t(ring(k))] + q[size_t(ring(k + 1))]) / 6.0;
-        const Dual at_midpoint = (q[size_t(ring(k - 1))] + 23.0 * q[size_t(ring(k))] +
-                                  23.0 * q[size_t(ring(k + 1))] + q[size_t(ring(k + 2))]) /
+        const Dual at_midpoint = (q[size_t(ring(k - 1))] + 23.0 * q[size_t(ring(k))] + 23.0 * q[size_t(ring(k + 1))] +
+                                  q[size_t(ring(k + 2))]) /
                                  48.0;
         const auto vertex = from_dual(at_vertex), midpoint = from_dual(at_midpoint);
         ASSERT_TRUE(vertex && midpoint);
@@ -195,9 +195,9 @@ TEST(CreaseRules, InfinitelySharpCreaseIsTheCubicBSplineOfItsVertices) {
         EXPECT_LT((r.mesh.mean(edge_point) - midpoint->mean).norm(), 1e-12);
         EXPECT_LT((r.mesh.covariance(edge_point) - midpoint->covariance).norm(), 1e-12);
         if (equal) {
-          const Vec3 p = (mesh.mean(size_t(ring(k - 1))) + 4.0 * mesh.mean(size_t(ring(k))) +
-                          mesh.mean(size_t(ring(k + 1)))) /
-                         6.0;
+          const Vec3 p =
+              (mesh.mean(size_t(ring(k - 1))) + 4.0 * mesh.mean(size_t(ring(k))) + mesh.mean(size_t(ring(k + 1)))) /
+              6.0;
           EXPECT_LT((r.mesh.mean(size_t(ring(k))) - p).norm(), 1e-12);
         }
       }
