@@ -8,6 +8,42 @@
 
 namespace gps {
 
+namespace {
+
+// Markers after the faces of a signature: an infinitely sharp edge (its two canonical vertices) and an
+// infinitely sharp vertex (its canonical number). Face entries start with a face size, never negative.
+constexpr int kSharpEdgeMark = -1, kSharpVertexMark = -2;
+
+// Appends the infinitely sharp edges and vertices of the walked faces to the signature; false where
+// one is semi-sharp (its sharpness decays, so the neighbourhood is not self-similar).
+bool append_sharpness(const LocalMesh& m, const std::vector<std::pair<int, int>>& walk,
+                      QuadExtraordinaryNeighbourhood& out) {
+  const auto canonical = [&](int v) { return int(std::find(out.points.begin(), out.points.end(), v) - out.points.begin()); };
+  std::vector<int> seen_edges;
+  for (const auto& [f, start] : walk) {
+    const int n = m.topology.face_size(f), offset = m.topology.offsets[size_t(f)];
+    for (int k = 0; k < n; ++k) {
+      const int e = m.connectivity.face_edges[size_t(offset + (start + k) % n)];
+      const double s = m.edge_sharpness(e);
+      if (s <= 0.0 || std::find(seen_edges.begin(), seen_edges.end(), e) != seen_edges.end()) continue;
+      if (!is_infinitely_sharp(s)) return false;
+      seen_edges.push_back(e);
+      const int a = canonical(m.connectivity.edge_verts[2 * size_t(e)]),
+                b = canonical(m.connectivity.edge_verts[2 * size_t(e) + 1]);
+      out.signature.insert(out.signature.end(), {kSharpEdgeMark, std::min(a, b), std::max(a, b)});
+    }
+  }
+  for (size_t i = 0; i < out.points.size(); ++i) {
+    const double s = m.vertex_sharpness(out.points[i]);
+    if (s <= 0.0) continue;
+    if (!is_infinitely_sharp(s)) return false;
+    out.signature.insert(out.signature.end(), {kSharpVertexMark, int(i)});
+  }
+  return true;
+}
+
+}  // namespace
+
 std::optional<QuadExtraordinaryNeighbourhood> quad_extraordinary_neighbourhood(const LocalMesh& m,
                                                                                const std::array<int, 4>& c) {
   const auto& conn = m.connectivity;
@@ -44,6 +80,7 @@ std::optional<QuadExtraordinaryNeighbourhood> quad_extraordinary_neighbourhood(c
     }
   }
   if (walk.size() != region.size()) return std::nullopt;
+  if (m.has_creases() && !append_sharpness(m, walk, out)) return std::nullopt;
   return out;
 }
 
@@ -53,9 +90,10 @@ namespace {
 // corners (0..3) complete.
 LocalMesh neighbourhood_mesh(const std::vector<int>& signature) {
   LocalMesh m;
-  for (size_t i = 0; i < signature.size(); i += size_t(signature[i]) + 1) {
-    m.topology.verts.insert(m.topology.verts.end(), signature.begin() + long(i) + 1,
-                            signature.begin() + long(i) + 1 + signature[i]);
+  size_t at = 0;
+  for (; at < signature.size() && signature[at] > 0; at += size_t(signature[at]) + 1) {
+    m.topology.verts.insert(m.topology.verts.end(), signature.begin() + long(at) + 1,
+                            signature.begin() + long(at) + 1 + signature[at]);
     m.topology.offsets.push_back(int(m.topology.verts.size()));
   }
   m.topology.n_vertices = *std::max_element(m.topology.verts.begin(), m.topology.verts.end()) + 1;
@@ -65,6 +103,19 @@ LocalMesh neighbourhood_mesh(const std::vector<int>& signature) {
     m.base_ids.push_back(i);
     m.points.push_back(Eigen::VectorXd::Unit(k, i));
     m.complete.push_back(i < 4);
+  }
+  if (at < signature.size()) {  // its infinitely sharp edges and vertices
+    m.creases.edges.assign(size_t(m.connectivity.n_edges()), 0.0);
+    m.creases.vertices.assign(size_t(k), 0.0);
+    while (at < signature.size()) {
+      if (signature[at] == kSharpEdgeMark) {
+        m.creases.edges[size_t(m.find_edge(signature[at + 1], signature[at + 2]))] = kInfiniteSharpness;
+        at += 3;
+      } else {
+        m.creases.vertices[size_t(signature[at + 1])] = kInfiniteSharpness;
+        at += 2;
+      }
+    }
   }
   return m;
 }
@@ -99,11 +150,11 @@ std::shared_ptr<const std::vector<double>> compute_table(const std::vector<int>&
       {e01, 1, e12, face_point}, {face_point, e12, 2, e23}, {e30, face_point, e23, 3}};
   Eigen::MatrixXd nets[3];
   for (int c = 0; c < 3; ++c) {
+    const int face = fine.find_face({children[c][0], children[c][1], children[c][2], children[c][3]});
     for (const int v : children[c])
-      if (!regular_vertex(fine, v)) return nullptr;
+      if (!regular_corner(fine, v, face)) return nullptr;
     std::array<LocalCombination, 16> net;
-    bspline_net(fine, fine.find_face({children[c][0], children[c][1], children[c][2], children[c][3]}), children[c],
-                net);
+    bspline_net(fine, face, children[c], net);
     nets[c] = rows_of(fine, {net.begin(), net.end()}, k);
   }
   auto table = std::make_shared<std::vector<double>>(quad_extraordinary_table_size(k), 0.0);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/reference/catmull_clark.h"
+#include "core/reference/crease_rules.h"
 
 namespace gps {
 
@@ -49,11 +50,15 @@ Stencil LocalMesh::combination(const std::vector<std::pair<int, double>>& terms)
   return Stencil::from_terms(std::move(sparse));
 }
 
-LocalMesh base_local_mesh(const PolygonTopology& topology) {
+LocalMesh base_local_mesh(const PolygonTopology& topology, const Sharpness& sharpness) {
   LocalMesh m;
   m.topology = topology;
   m.connectivity = connectivity_of(topology);
   m.complete.assign(size_t(topology.n_vertices), 1);
+  if (!sharpness.empty()) {
+    CreaseLevel level = crease_level(sharpness, m.connectivity, topology.n_vertices);
+    if (!level.empty()) m.creases = std::move(level);  // all zero: the smooth plans, bit for bit
+  }
   m.is_base = true;
   return m;
 }
@@ -99,6 +104,14 @@ LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corn
     const int v = old_index[i];
     out.complete[i] = m.complete[size_t(v)] && out.connectivity.n_vertex_faces(int(i)) == c.n_vertex_faces(v);
   }
+  if (m.has_creases()) {
+    const auto& oc = out.connectivity;
+    out.creases.edges.resize(size_t(oc.n_edges()));
+    for (int e = 0; e < oc.n_edges(); ++e)
+      out.creases.edges[size_t(e)] = m.creases.edges[size_t(
+          m.find_edge(old_index[size_t(oc.edge_verts[2 * size_t(e)])], old_index[size_t(oc.edge_verts[2 * size_t(e) + 1])]))];
+    for (const int v : old_index) out.creases.vertices.push_back(m.creases.vertices[size_t(v)]);
+  }
   return out;
 }
 
@@ -110,9 +123,10 @@ LocalMesh refine_local_mesh(const LocalMesh& m) {
   std::vector<Eigen::VectorXd> points = m.points;
   for (auto& p : points)
     if (p.size() == 0) p = Eigen::VectorXd::Zero(n_base);
-  out.points = catmull_clark_values(m.topology, m.connectivity, points);
+  out.points = catmull_clark_values(m.topology, m.connectivity, points, m.has_creases() ? &m.creases : nullptr);
   out.topology = catmull_clark_topology(m.topology, m.connectivity);
   out.connectivity = connectivity_of(out.topology);
+  if (m.has_creases()) out.creases = refined_crease_level(m.topology, m.connectivity, m.creases, out.connectivity);
   const auto& c = m.connectivity;
   const int nv = m.topology.n_vertices, ne = c.n_edges();
   out.complete.assign(out.points.size(), 1);

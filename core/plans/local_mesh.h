@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/sharpness.h"
 #include <Eigen/Core>
 
 #include "core/plans/stencil.h"
@@ -18,6 +19,7 @@ struct LocalMesh {
   std::vector<int> base_ids;            // the base vertices the stencils combine (empty when `is_base`)
   std::vector<Eigen::VectorXd> points;  // per vertex: weights over base_ids; empty when `is_base`
   std::vector<char> complete;
+  CreaseLevel creases;  // per edge and vertex; both empty where the mesh has no sharpness
   bool is_base = false;  // the whole base mesh: vertex i is base vertex i
 
   /// The stencil of vertex v over the global base vertices.
@@ -28,15 +30,24 @@ struct LocalMesh {
   int find_face(const std::vector<int>& corners) const;
   /// The edge joining a and b, or −1.
   int find_edge(int a, int b) const;
+  bool has_creases() const { return !creases.edges.empty(); }
+  double edge_sharpness(int e) const { return has_creases() ? creases.edges[size_t(e)] : 0.0; }
+  double vertex_sharpness(int v) const { return has_creases() ? creases.vertices[size_t(v)] : 0.0; }
+  /// Whether edge e acts as a boundary of the surface on each side: a boundary edge or an infinitely
+  /// sharp crease, across which the limit surface of either side reads nothing of the other.
+  bool is_cut_edge(int e) const {
+    return connectivity.is_boundary_edge(e) || is_infinitely_sharp(edge_sharpness(e));
+  }
 };
 
-/// The whole base mesh as a LocalMesh (every vertex complete, identity stencils).
-LocalMesh base_local_mesh(const PolygonTopology& topology);
+/// The whole base mesh as a LocalMesh (every vertex complete, identity stencils), with the mesh's
+/// sharpness laid out on it (none when `sharpness` is empty).
+LocalMesh base_local_mesh(const PolygonTopology& topology, const Sharpness& sharpness = {});
 
 /// The faces around the given vertices (their 1-ring), renumbered, with completeness carried over.
 LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corners, std::vector<int>& new_index);
 
-/// One Catmull-Clark step of the piece. Vertex points of complete vertices, edge points of edges
+/// One Catmull-Clark step of the piece, by OpenSubdiv's crease rules where it has sharpness. Vertex points of complete vertices, edge points of edges
 /// with all their faces present, and face points are exact; the others are marked incomplete and
 /// must not be read (plan_builder asserts it).
 LocalMesh refine_local_mesh(const LocalMesh& m);

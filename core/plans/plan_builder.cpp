@@ -9,6 +9,7 @@
 
 #include "core/mesh/error.h"
 #include "core/plans/local_mesh.h"
+#include "core/plans/plan_descent.h"
 #include "core/extraordinary/quad_extraordinary_tables.h"
 #include "core/plans/quad_nets.h"
 #include "core/plans/stencil_table.h"
@@ -19,7 +20,8 @@ namespace {
 
 using Combo = LocalCombination;
 
-// Exact plans refine past their depth only where a node is not yet self-similar; this bounds it.
+// Exact plans of a smooth mesh refine past their depth only where a node is not yet self-similar;
+// this bounds it (creased meshes go down to kMaxPlanDepth, core/plans/plan_descent.h).
 constexpr int kDeepestPlan = 8;
 
 // The plans of a range of faces; an extraordinary node's table field holds an index into `extraordinary_tables`
@@ -151,18 +153,19 @@ private:
   // The node of the quad with corners c of m (the face `face` of m where known).
   int build_node(const LocalMesh& m, const std::array<int, 4>& c, int depth, int face = -1) {
     deepest_ = std::max(deepest_, depth);
+    const int q = face >= 0 ? face : m.find_face({c[0], c[1], c[2], c[3]});
     int irregular = 0, corner = -1;
     for (int k = 0; k < 4; ++k)
-      if (!regular_vertex(m, c[size_t(k)])) ++irregular, corner = k;
+      if (!regular_corner(m, c[size_t(k)], q)) ++irregular, corner = k;
     if (irregular == 0 && bspline_leaves_) {
-      bspline_net(m, face >= 0 ? face : m.find_face({c[0], c[1], c[2], c[3]}), c, net_);
+      bspline_net(m, q, c, net_);
       const int boundary = take_in_phantoms(net_);
       return emit_leaf(NodeKind::regular, m, net_, boundary);
     }
     if (irregular == 0) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
     if (exact_ && irregular == 1 && depth >= max_depth_ && m.complete[size_t(c[size_t(corner)])])
       if (const int offset = emit_extraordinary(m, c, corner); offset >= 0) return offset;
-    if (depth == (exact_ ? kDeepestPlan : max_depth_)) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
+    if (depth == (exact_ ? deepest_allowed_ : max_depth_)) return emit_leaf(NodeKind::terminal, m, bezier_net(m, c));
 
     const int offset = int(plans_.nodes.size());
     plans_.nodes.insert(plans_.nodes.end(), {int32_t(NodeKind::internal), 0, 0, 0, 0});
@@ -194,6 +197,8 @@ private:
   bool bspline_leaves_;
   const LocalMesh& base_;
   QuadExtraordinaryTableCache& cache_;
+  // Semi-sharp creases refine their nodes until their sharpness has decayed, up to ten levels more.
+  int deepest_allowed_ = base_.has_creases() ? kMaxPlanDepth : kDeepestPlan;
   std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables_;
   std::array<Combo, 16> net_;  // the regular leaves' nets, reused (no allocation per leaf)
   StencilTableBuilder stencils_;
@@ -296,12 +301,12 @@ void check_plan_valences(const PolygonTopology& t) {
 }  // namespace
 
 SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary,
-                          bool bspline_leaves) {
+                          bool bspline_leaves, const Sharpness& sharpness) {
   const int shallowest = extraordinary == ExtraordinaryNodes::exact ? 0 : 1;
   if (max_depth < shallowest || max_depth > kDeepestPlan)
     throw usage_error("plan depth must be " + std::to_string(shallowest) + "..8, got " + std::to_string(max_depth));
   check_plan_valences(topology);
-  const LocalMesh base = base_local_mesh(topology);
+  const LocalMesh base = base_local_mesh(topology, sharpness);
   // Faces in ranges of a fixed size, built on all cores (OpenMP), merged in order.
   constexpr int kFacesPerRange = 1024;
   const int n_faces = topology.n_faces(), n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);

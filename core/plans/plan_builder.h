@@ -32,10 +32,13 @@ enum class ExtraordinaryNodes {
 /// extraordinary and irregular boundary vertices, regular nodes as bicubic B-splines (boundary
 /// phantoms p₋₁ = 2p₀ − p₁), the nodes at those vertices as `extraordinary` says down from
 /// `max_depth` (an exact node that is still not self-similar at depth 8 would become a Bézier
-/// patch; none is met in practice). Depends on topology only. `bspline_leaves` =
+/// patch; none is met in practice). Depends on topology and sharpness only: semi-sharp creases
+/// and corners refine their nodes until the sharpness has decayed, infinitely sharp ones are cut edges
+/// (core/plans/quad_nets.h, regular_corner) and part of the extraordinary tables' neighbourhoods. `bspline_leaves` =
 /// false makes every regular node a terminal Bézier node instead (tests: with n = 4 the Fig. 2.5
 /// rules are the B-spline's).
 SurfaceTables build_plans(const PolygonTopology& topology, int max_depth,
-                          ExtraordinaryNodes extraordinary = ExtraordinaryNodes::exact, bool bspline_leaves = true);
+                          ExtraordinaryNodes extraordinary = ExtraordinaryNodes::exact, bool bspline_leaves = true,
+                          const Sharpness& sharpness = {});
 
 }  // namespace gps

@@ -16,9 +16,10 @@ namespace gps {
 #define GPS_NODES_ARG
 #endif
 
-// No plan is deeper (core/plans/plan_builder.cpp): the descent is a bounded loop (after a divergent while
-// loop, Mesa's llvmpipe runs the extraordinary node's loops with wrong values).
-GPS_CONST int kMaxPlanDepth = 8;
+// No plan is deeper (core/plans/plan_builder.cpp; smooth meshes stop at 8, semi-sharp creases refine
+// further): the descent is a bounded loop (after a divergent while loop, Mesa's llvmpipe runs the
+// extraordinary node's loops with wrong values).
+GPS_CONST int kMaxPlanDepth = 12;
 
 /// One step down a quad node: child ubit + 2·vbit, ubit = (u ≥ ½), vbit = (v ≥ ½), with (u, v)
 /// mapped into the child's [0,1]²; d(child)/d(node) = 2.

@@ -40,11 +40,12 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
   return topology.n_faces() > 0 ? Scheme::loop : Scheme::catmull_clark;
 }
 
-SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options) {
+SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options,
+                                  const Sharpness& sharpness) {
   const ExtraordinaryNodes extraordinary = options.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier;
   SurfaceTables tables = scheme_for(topology, options) == Scheme::loop
                              ? build_loop_plans(topology, options.loop_beta)
-                             : build_plans(topology, options.depth, extraordinary);
+                             : build_plans(topology, options.depth, extraordinary, true, sharpness);
   add_patch_adjacency(tables.plans);
   return tables;
 }
@@ -52,7 +53,7 @@ SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOpt
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {
   const PolygonTopology topology = topology_of(mesh.mesh);
   scheme_ = scheme_for(topology, options);
-  tables_ = build_surface_plans(topology, options);
+  tables_ = build_surface_plans(topology, options, mesh.sharpness);
   dependents_ = stencil_dependents(tables_.stencils);
   points_ = apply_stencils(tables_.stencils, base_points(mesh));
 }

@@ -35,8 +35,10 @@ PlanOptions plan_options_named(const std::string& scheme, const std::string& loo
 /// The scheme `options` give for this mesh.
 Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options);
 
-/// Plans and stencils of the mesh under its scheme (core/plans/plan_builder.h, core/plans/loop_plan_builder.h).
-SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options);
+/// Plans and stencils of the mesh under its scheme (core/plans/plan_builder.h, core/plans/loop_plan_builder.h),
+/// with its creases and corners.
+SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options,
+                                  const Sharpness& sharpness = {});
 
 class PlannedSurface {
 public:

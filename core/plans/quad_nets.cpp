@@ -63,6 +63,49 @@ bool regular_vertex(const LocalMesh& m, int v) {
   return false;
 }
 
+namespace {
+
+// The faces of q's sector at v (see regular_corner), or −1 where one of them is not a quad.
+int quad_sector_size(const LocalMesh& m, int v, int q) {
+  if (m.topology.face_size(q) != 4) return -1;
+  int count = 1;
+  for (const int step : {1, -1}) {
+    int f = q;
+    for (;;) {
+      const int e = m.find_edge(v, face_vertex(m, f, corner_index(m, f, v) + step));
+      if (m.is_cut_edge(e)) break;
+      f = other_face(m, e, f);
+      if (f == q) return count;  // all the way round: no cut edge at v
+      if (m.topology.face_size(f) != 4) return -1;
+      ++count;
+    }
+  }
+  return count;
+}
+
+}  // namespace
+
+bool regular_corner(const LocalMesh& m, int v, int q) {
+  if (!m.has_creases()) return regular_vertex(m, v);
+  if (!m.complete[size_t(v)]) return false;
+  const double corner = m.vertex_sharpness(v);
+  if (corner > 0.0 && !is_infinitely_sharp(corner)) return false;
+  const auto& c = m.connectivity;
+  int cut = 0;
+  for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
+    const int e = c.vertex_edges[size_t(i)];
+    const double s = m.edge_sharpness(e);
+    if (s > 0.0 && !is_infinitely_sharp(s)) return false;
+    cut += m.is_cut_edge(e) ? 1 : 0;
+  }
+  const int sector = quad_sector_size(m, v, q);
+  if (cut == 0 && corner == 0.0) return sector == 4;
+  // Sdc's rules: a sharp vertex, more than two sharp edges, or a boundary vertex with one face is a corner.
+  const bool corner_rule = corner > 0.0 || cut > 2 || c.n_vertex_faces(v) == 1;
+  if (corner_rule) return sector == 1;
+  return cut == 2 && sector == 2;
+}
+
 void bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c, std::array<LocalCombination, 16>& net) {
   const auto at = [&](Grid2 g) -> Combo& { return net[size_t(g.i + 4 * g.j)]; };
   const auto set_vertex = [&](Grid2 g, int v) {
@@ -82,7 +125,7 @@ void bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c, std::ar
   for (int k = 0; k < 4; ++k) {
     const int a = c[size_t(k)], b = c[size_t((k + 1) % 4)];
     const int e = m.find_edge(a, b);
-    boundary_edge[k] = m.connectivity.is_boundary_edge(e);
+    boundary_edge[k] = m.is_cut_edge(e);
     if (boundary_edge[k]) {
       mirror(kCorner[k], kOut[k]);
       mirror(kCorner[(k + 1) % 4], kOut[k]);
@@ -95,7 +138,7 @@ void bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c, std::ar
   for (int k = 0; k < 4; ++k) {
     const Grid2 g = kCorner[k], o1 = kOut[k], o2 = kOut[(k + 3) % 4];
     const int v = c[size_t(k)];
-    if (vertex_role(m.connectivity, v) == VertexRole::interior) {
+    if (!boundary_edge[k] && !boundary_edge[(k + 3) % 4]) {  // a smooth corner: the face diagonally across
       const auto& conn = m.connectivity;
       for (int i = conn.vertex_face_offsets[size_t(v)]; i < conn.vertex_face_offsets[size_t(v) + 1]; ++i) {
         const int f = conn.vertex_faces[size_t(i)], kv = conn.vertex_face_corners[size_t(i)];

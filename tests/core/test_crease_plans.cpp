@@ -1,0 +1,141 @@
+// Plans of creased meshes evaluate the limit surface exactly: at every parameter the reference
+// (OpenSubdiv's crease rules in 9D, deep enough for every semi-sharp crease to have decayed, then the
+// limit) gives, inside patches as well as at their corners; along an infinitely sharp crease the two
+// sides meet in one curve with a normal of their own each.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/evaluation/patch_eval.h"
+#include "core/mesh/samples.h"
+#include "tests/support/plan_fixture.h"
+#include "tests/support/test_meshes.h"
+
+namespace gps {
+namespace {
+
+using test::PlannedMesh;
+using test::with_random_covariances;
+
+CovarianceMesh creased(CovarianceMesh m, const std::vector<EdgeCrease>& creases,
+                       const std::vector<std::pair<int, double>>& corners = {}) {
+  for (const EdgeCrease& c : creases) m.sharpness.set_crease(c.a, c.b, c.sharpness);
+  for (const auto& [v, s] : corners) m.sharpness.set_corner(v, s, int(m.n_vertices()));
+  return m;
+}
+
+// The cube with its top face's four edges infinitely sharp.
+CovarianceMesh cube_with_sharp_top() {
+  return creased(test::cube_mesh(), {{4, 5, 10}, {5, 6, 10}, {6, 7, 10}, {4, 7, 10}});
+}
+
+struct Case {
+  std::string name;
+  CovarianceMesh mesh;
+};
+
+std::vector<Case> creased_quad_cases() {
+  std::vector<Case> cases;
+  cases.push_back({"cube, sharp top", with_random_covariances(cube_with_sharp_top(), 1)});
+  cases.push_back({"cube, mixed", with_random_covariances(creased(test::cube_mesh(),
+                                                                  {{0, 1, 0.5}, {1, 2, 1.0}, {2, 3, 2.5}, {0, 3, 4.7},
+                                                                   {4, 5, 10}, {5, 6, 10}},
+                                                                  {{6, 10}, {7, 2.5}, {4, 10}}),
+                                                          2)});
+  std::vector<EdgeCrease> all;
+  for (const auto& [a, b] : std::vector<std::pair<int, int>>{
+           {0, 1}, {1, 2}, {2, 3}, {0, 3}, {4, 5}, {5, 6}, {6, 7}, {4, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}})
+    all.push_back({a, b, 10});
+  cases.push_back({"cube, all sharp", with_random_covariances(creased(test::cube_mesh(), all), 3)});
+  // A 6 × 5 grid: a sharp line across it from boundary to boundary (regular crease patches in
+  // between, corners where it meets the boundary), a semi-sharp line and a semi-sharp corner.
+  std::vector<EdgeCrease> grid;
+  for (int i = 0; i < 6; ++i) grid.push_back({2 * 7 + i, 2 * 7 + i + 1, 10});
+  for (int j = 0; j < 4; ++j) grid.push_back({j * 7 + 4, (j + 1) * 7 + 4, 2.5});
+  cases.push_back({"grid, lines", with_random_covariances(creased(test::grid_mesh(6, 5), grid, {{4 * 7 + 3, 4.7}}), 4)});
+  // The torus sample (24 × 12 quads) with its outer equator sharp (regular crease vertices all
+  // along) and a semi-sharp edge elsewhere.
+  std::vector<EdgeCrease> ring;
+  for (int i = 0; i < 24; ++i) ring.push_back({i * 12, (i + 1) % 24 * 12, 10});
+  ring.push_back({5 * 12 + 6, 5 * 12 + 7, 1.5});
+  cases.push_back({"torus, ring", with_random_covariances(creased(make_sample("torus"), ring), 5)});
+  return cases;
+}
+
+double error_against_reference(const CovarianceMesh& mesh, int levels) {
+  return test::error_against_reference(PlannedMesh(mesh, PlanOptions{Scheme::catmull_clark}),
+                                       {Scheme::catmull_clark, levels, true});
+}
+
+TEST(CreasePlans, EqualTheReferenceInsidePatches) {
+  for (const Case& c : creased_quad_cases()) {
+    const double error = error_against_reference(c.mesh, 5);
+    std::printf("%-17s: %.1e of the diagonal\n", c.name.c_str(), error);
+    EXPECT_LT(error, 1e-9) << c.name;
+    // The creases matter: the smooth surface is elsewhere.
+    CovarianceMesh smooth = c.mesh;
+    smooth.sharpness = {};
+    const PlannedMesh creased_plans(c.mesh, PlanOptions{Scheme::catmull_clark});
+    const auto ref = subdivide(smooth, {Scheme::catmull_clark, 3, true});
+    double moved = 0;
+    for (size_t k = 0; k < ref.mesh.n_vertices(); ++k) {
+      const PatchParam& pp = ref.vertex_params[k];
+      const auto s = evaluate_patch(creased_plans.tables.plans, creased_plans.points, pp.patch, pp.u, pp.v);
+      moved = std::max(moved, (s->position - ref.mesh.mean(k)).norm());
+    }
+    EXPECT_GT(moved / bounding_box_diagonal(c.mesh), 1e-3) << c.name;
+  }
+}
+
+// At a dart (a vertex with one sharp edge) the reference's limit step, Far's, takes the crease
+// curve's cubic B-spline mask at the crease vertices beside it, which is the limit only where the
+// whole curve around is a B-spline: the reference closes in on the plans level by level.
+TEST(CreasePlans, DartsAreApproachedByTheReference) {
+  const CovarianceMesh cube = with_random_covariances(creased(test::cube_mesh(), {{4, 5, 10}, {1, 5, 10}}), 2);
+  const CovarianceMesh torus = with_random_covariances(creased(make_sample("torus"), {{5 * 12 + 6, 5 * 12 + 7, 10}}), 5);
+  for (const CovarianceMesh* mesh : std::vector<const CovarianceMesh*>{&cube, &torus}) {
+    const double e4 = error_against_reference(*mesh, 4), e5 = error_against_reference(*mesh, 5),
+                 e6 = error_against_reference(*mesh, 6);
+    std::printf("darts: %.1e, %.1e, %.1e of the diagonal at levels 4, 5, 6\n", e4, e5, e6);
+    EXPECT_LT(e5, 0.6 * e4);
+    EXPECT_LT(e6, 0.6 * e5);
+    EXPECT_LT(e6, 2e-4);
+  }
+}
+
+TEST(CreasePlans, ZeroSharpnessGivesTheSmoothPlansBitForBit) {
+  CovarianceMesh smooth = with_random_covariances(make_sample("cube"), 6), zero = smooth;
+  zero.sharpness.corners.assign(zero.n_vertices(), 0.0);
+  const PlannedMesh a(smooth, PlanOptions{Scheme::catmull_clark}), b(zero, PlanOptions{Scheme::catmull_clark});
+  EXPECT_EQ(a.tables.plans.nodes, b.tables.plans.nodes);
+  EXPECT_EQ(a.tables.stencils.weights, b.tables.stencils.weights);
+  EXPECT_EQ(a.points.size(), b.points.size());
+}
+
+// Along the cube's sharp top rim the top patch and the side patch give the same point with
+// normals of their own; without the crease they give one normal.
+TEST(CreasePlans, NormalsAreOneSidedAlongASharpCrease) {
+  for (const bool sharp : {true, false}) {
+    const CovarianceMesh mesh = sharp ? cube_with_sharp_top() : test::cube_mesh();
+    const PlannedMesh p(mesh, PlanOptions{Scheme::catmull_clark});
+    // Face 1 = (4, 5, 6, 7): edge 4 → 5 at v = 0; face 2 = (0, 1, 5, 4): the same edge at v = 1.
+    double smallest_angle = M_PI, largest_angle = 0.0;
+    for (const double u : {0.1, 0.37, 0.5, 0.81}) {
+      const auto top = evaluate_patch(p.tables.plans, p.points, 1, u, 0.0);
+      const auto side = evaluate_patch(p.tables.plans, p.points, 2, u, 1.0);
+      ASSERT_TRUE(top && side);
+      EXPECT_LT((top->position - side->position).norm(), 1e-12);
+      const double angle = std::acos(std::clamp(top->normal.dot(side->normal), -1.0, 1.0));
+      smallest_angle = std::min(smallest_angle, angle);
+      largest_angle = std::max(largest_angle, angle);
+    }
+    if (sharp)
+      EXPECT_GT(smallest_angle, 0.5) << "the crease's two sides share a normal";
+    else
+      EXPECT_LT(largest_angle, 1e-6);
+  }
+}
+
+}  // namespace
+}  // namespace gps
