@@ -82,7 +82,8 @@ void print_info(const std::string& path, const RepairArguments& repair) {
   std::cout << "covariance eigenvalues: " << lo << " .. " << hi << "\n";
   // Creases and corners (docs/design.md §1): semi-sharp ones decay over levels, the others stay sharp.
   int semi_sharp = 0, infinitely_sharp = 0, corners = 0, sharp_corners = 0;
-  for (const EdgeCrease& crease : m.sharpness.creases) ++(is_infinitely_sharp(crease.sharpness) ? infinitely_sharp : semi_sharp);
+  for (const EdgeCrease& crease : m.sharpness.creases)
+    ++(is_infinitely_sharp(crease.sharpness) ? infinitely_sharp : semi_sharp);
   for (const double s : m.sharpness.corners)
     if (s > 0.0) ++(is_infinitely_sharp(s) ? sharp_corners : corners);
   std::cout << "creased edges: " << semi_sharp + infinitely_sharp << " (" << semi_sharp << " semi-sharp, "

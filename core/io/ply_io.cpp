@@ -162,12 +162,17 @@ private:
 };
 
 // One record of the edge element: its vertices as the file gives them, its crease and, for ASCII
-// data, "line N: " where it stands.
+// data, its line (0 in binary data).
 struct CreaseRecord {
   int a = 0, b = 0;
   double sharpness = 0.0;
-  std::string where;
+  int line = 0;
 };
+
+// "edge R (vertices A-B)", as messages name a record of the edge element.
+std::string edge_record_name(size_t r, int a, int b) {
+  return "edge " + std::to_string(r) + " (vertices " + std::to_string(a) + "-" + std::to_string(b) + ")";
+}
 
 // The creases of the edge element's records (numbered as the file numbers them), each an edge of the faces.
 template <class Fail>
@@ -178,8 +183,8 @@ Sharpness sharpness_of(const std::vector<CreaseRecord>& records, const PolygonTo
   for (size_t r = 0; r < records.size(); ++r) {
     const CreaseRecord& c = records[r];
     if (!edges.count(soup_edge_key(c.a, c.b)))
-      fail(c.where + "edge " + std::to_string(r) + " (vertices " + std::to_string(c.a) + "-" + std::to_string(c.b) +
-           ") is not an edge of the mesh");
+      fail((c.line > 0 ? "line " + std::to_string(c.line) + ": " : "") + edge_record_name(r, c.a, c.b) +
+           " is not an edge of the mesh");
     if (c.sharpness > 0.0) out.creases.push_back({std::min(c.a, c.b), std::max(c.a, c.b), c.sharpness});
   }
   return out;
@@ -284,8 +289,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
   std::vector<Mat3> covariances;
   PolygonTopology faces;
   bool has_covariances = false;
-  std::vector<double> corners;          // per vertex, where the vertex element has a corner property
-  std::vector<CreaseRecord> creases;    // the edge element's records, checked against the faces at the end
+  std::vector<double> corners;        // per vertex, where the vertex element has a corner property
+  std::vector<CreaseRecord> creases;  // the edge element's records, checked against the faces at the end
   for (const Element& e : elements) {
     // Each record needs at least one byte per value (binary) or two characters (ASCII).
     size_t min_record = 0;
@@ -394,23 +399,22 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
           }
         }
         body.end_record();
-        const std::string edge = "edge " + std::to_string(r);
         int ends[2];
         for (int k = 0; k < 2; ++k) {
           const double index = values[size_t(k == 0 ? i1 : i2)];
           if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
-            fail(body.where() + edge + " refers to vertex " + BodyReader::format_number(index) + ", but there are " +
-                 std::to_string(vertex_count) + " vertices");
+            fail(body.where() + "edge " + std::to_string(r) + " refers to vertex " + BodyReader::format_number(index) +
+                 ", but there are " + std::to_string(vertex_count) + " vertices");
           ends[k] = int(index);
         }
-        const std::string named = edge + " (vertices " + std::to_string(ends[0]) + "-" + std::to_string(ends[1]) + ")";
+        const auto named = [&] { return edge_record_name(r, ends[0], ends[1]); };
         const double sharpness = values[size_t(is)];
         if (const std::string why = sharpness_problem(sharpness); !why.empty())
-          fail(body.where() + named + " crease " + BodyReader::format_number(sharpness) + " " + why);
-        if (ends[0] == ends[1]) fail(body.where() + named + " joins a vertex to itself");
+          fail(body.where() + named() + " crease " + BodyReader::format_number(sharpness) + " " + why);
+        if (ends[0] == ends[1]) fail(body.where() + named() + " joins a vertex to itself");
         if (const auto [it, inserted] = seen.try_emplace(soup_edge_key(ends[0], ends[1]), r); !inserted)
-          fail(body.where() + named + " repeats edge " + std::to_string(it->second));
-        creases.push_back({ends[0], ends[1], sharpness, body.where()});
+          fail(body.where() + named() + " repeats edge " + std::to_string(it->second));
+        creases.push_back({ends[0], ends[1], sharpness, *format == Format::ascii ? body.line() : 0});
       }
     } else if (e.name == "tristrips") {
       // Triangle strips (as Stanford's scanned models store their faces): an index list per record,

@@ -15,7 +15,8 @@ Vec3 face_normal(const CovarianceMesh& m, PolyMesh::FaceHandle f) {
   const auto h0 = m.mesh.halfedge_handle(f);
   auto h = h0;
   do {
-    const Vec3 a = to_vec3(m.mesh.point(m.mesh.from_vertex_handle(h))), b = to_vec3(m.mesh.point(m.mesh.to_vertex_handle(h)));
+    const Vec3 a = to_vec3(m.mesh.point(m.mesh.from_vertex_handle(h))),
+               b = to_vec3(m.mesh.point(m.mesh.to_vertex_handle(h)));
     n += a.cross(b);
     h = m.mesh.next_halfedge_handle(h);
   } while (h != h0);

@@ -83,7 +83,8 @@ Sharpness renumbered(const Sharpness& s, const std::vector<int>& new_index, int 
     out.set_crease(a, b, std::max(out.crease(a, b), c.sharpness));
   }
   for (size_t v = 0; v < s.corners.size(); ++v)
-    if (const int w = index(int(v)); w >= 0 && s.corners[v] > out.corner(w)) out.set_corner(w, s.corners[v], n_vertices);
+    if (const int w = index(int(v)); w >= 0 && s.corners[v] > out.corner(w))
+      out.set_corner(w, s.corners[v], n_vertices);
   return out;
 }
 

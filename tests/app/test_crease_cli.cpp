@@ -80,9 +80,10 @@ TEST(CreaseCli, InferCreaseAngleMarksTheCubesEdges) {
 
 TEST(CreaseCli, EditSetsCreasesAndCorners) {
   test::TempDir dir;
-  const auto r = run_command(gpsurf("edit " + kData + "/creased_cube.ply -o " + dir.file("e.ply") +
-                                    R"( --ops '[{"op":"crease","edges":[[4,5]],"sharpness":0},)"
-                                    R"({"op":"crease","edges":[[0,1]],"sharpness":2.5},{"op":"corner","vertices":[3],"sharpness":1}]')"));
+  const auto r = run_command(
+      gpsurf("edit " + kData + "/creased_cube.ply -o " + dir.file("e.ply") +
+             R"( --ops '[{"op":"crease","edges":[[4,5]],"sharpness":0},)"
+             R"({"op":"crease","edges":[[0,1]],"sharpness":2.5},{"op":"corner","vertices":[3],"sharpness":1}]')"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("ops[1]: set the crease of 1 edge to 2.5"), std::string::npos) << r.output;
   const CovarianceMesh m = read_mesh(dir.file("e.ply"));

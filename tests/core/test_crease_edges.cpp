@@ -27,7 +27,8 @@ std::string error_of(const std::function<void()>& f) {
 void expect_creases_on_edges(const CovarianceMesh& m) {
   for (const EdgeCrease& c : m.sharpness.creases) {
     bool found = false;
-    for (const auto h : m.mesh.voh_range(PolyMesh::VertexHandle(c.a))) found = found || m.mesh.to_vertex_handle(h).idx() == c.b;
+    for (const auto h : m.mesh.voh_range(PolyMesh::VertexHandle(c.a)))
+      found = found || m.mesh.to_vertex_handle(h).idx() == c.b;
     EXPECT_TRUE(found) << "crease " << c.a << "-" << c.b;
   }
 }

@@ -63,7 +63,8 @@ TEST(ObjCreases, ErrorsNameTheFileAndLine) {
   EXPECT_EQ(message_of("t crease 4/3/0 4 5 5 6 1 2 3\n"),
             "x.obj: line 15: the crease tag has 3 sharpness values for 2 edges (1 for all or 1 each)");
   EXPECT_EQ(message_of("t crease 2/1/0 4 5\n"), "x.obj: line 15: the crease tag has fewer values than its counts say");
-  EXPECT_EQ(message_of("t crease 2/1 4 5 1\n"), "x.obj: line 15: the crease tag's counts '2/1' are not nint/nfloat/nstring");
+  EXPECT_EQ(message_of("t crease 2/1 4 5 1\n"),
+            "x.obj: line 15: the crease tag's counts '2/1' are not nint/nfloat/nstring");
   EXPECT_EQ(message_of("t corner 1/1/0 x 1\n"), "x.obj: line 15: 'x' is not a vertex index");
 }
 

@@ -30,9 +30,9 @@ const int kCubeFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6
 // A cube PLY with the given vertex and edge properties (type, name) in their order, ASCII or binary
 // little endian; vertex values by name (x y z from kCube, covariances 0.01 I, corner from `corners`).
 struct CubePly {
-  std::vector<std::pair<std::string, std::string>> vertex = {
-      {"double", "x"},   {"double", "y"},   {"double", "z"},   {"double", "cxx"}, {"double", "cxy"},
-      {"double", "cxz"}, {"double", "cyy"}, {"double", "cyz"}, {"double", "czz"}};
+  std::vector<std::pair<std::string, std::string>> vertex = {{"double", "x"},   {"double", "y"},   {"double", "z"},
+                                                             {"double", "cxx"}, {"double", "cxy"}, {"double", "cxz"},
+                                                             {"double", "cyy"}, {"double", "cyz"}, {"double", "czz"}};
   std::vector<std::pair<std::string, std::string>> edge = {{"int", "vertex1"}, {"int", "vertex2"}, {"float", "crease"}};
   std::vector<Crease> creases;
   std::vector<double> corners;  // per vertex where the vertex element has a corner property
@@ -69,8 +69,11 @@ struct CubePly {
     };
     for (int v = 0; v < 8; ++v) {
       const std::map<std::string, double> values = {
-          {"x", kCube[v][0]}, {"y", kCube[v][1]}, {"z", kCube[v][2]}, {"cxx", 0.01}, {"cxy", 0.0}, {"cxz", 0.0},
-          {"cyy", 0.01},      {"cyz", 0.0},       {"czz", 0.01},       {"corner", corners.empty() ? 0.0 : corners[size_t(v)]}};
+          {"x", kCube[v][0]}, {"y", kCube[v][1]},
+          {"z", kCube[v][2]}, {"cxx", 0.01},
+          {"cxy", 0.0},       {"cxz", 0.0},
+          {"cyy", 0.01},      {"cyz", 0.0},
+          {"czz", 0.01},      {"corner", corners.empty() ? 0.0 : corners[size_t(v)]}};
       for (size_t k = 0; k < vertex.size(); ++k)
         put(vertex[k].first, values.at(vertex[k].second), k + 1 == vertex.size());
     }
@@ -111,7 +114,8 @@ std::string message_of(const std::string& ply) {
 }
 
 TEST(PlyCreases, ReadsEveryPropertyOrderEncodingAndElementPlace) {
-  std::vector<std::pair<std::string, std::string>> edge = {{"int", "vertex1"}, {"uint", "vertex2"}, {"double", "crease"}};
+  std::vector<std::pair<std::string, std::string>> edge = {
+      {"int", "vertex1"}, {"uint", "vertex2"}, {"double", "crease"}};
   std::sort(edge.begin(), edge.end(), [](const auto& x, const auto& y) { return x.second < y.second; });
   int cases = 0;
   do {
@@ -231,9 +235,11 @@ TEST(PlyCreases, RepairCarriesCreasesThroughWeldsAndRenumbering) {
          "property float corner\nelement face 7\nproperty list uchar int vertex_indices\nelement edge 4\n"
          "property int vertex1\nproperty int vertex2\nproperty float crease\nend_header\n";
   ply << "5 5 5 0\n";
-  for (int v = 0; v < 8; ++v) ply << kCube[v][0] << ' ' << kCube[v][1] << ' ' << kCube[v][2] << (v == 2 ? " 3\n" : " 0\n");
+  for (int v = 0; v < 8; ++v)
+    ply << kCube[v][0] << ' ' << kCube[v][1] << ' ' << kCube[v][2] << (v == 2 ? " 3\n" : " 0\n");
   ply << "1 1 1.000000001 1.5\n";
-  for (const auto& f : kCubeFaces) ply << "4 " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << ' ' << f[3] + 1 << '\n';
+  for (const auto& f : kCubeFaces)
+    ply << "4 " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << ' ' << f[3] + 1 << '\n';
   ply << "3 7 9 8\n";
   ply << "5 6 10\n6 7 2.5\n7 9 4\n9 8 0.5\n";
   const std::string path = dir.write("r.ply", ply.str());
