@@ -1,7 +1,8 @@
 #pragma once
 // The covariance PLY of docs/design.md §4: vertex x y z and cxx cxy cxz cyy cyz czz (float or double),
 // faces as vertex_indices; ASCII or binary little/big endian. A PLY without the six covariance
-// properties is a plain mesh.
+// properties is a plain mesh. Sharpness: a vertex property `corner` and an element `edge` with
+// vertex1 vertex2 crease.
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -32,7 +33,8 @@ CovarianceMesh parse_ply(std::string data, const std::string& source, bool& has_
 /// read_mesh to repair or build (core/io/mesh_repair.h); covariances empty where the file has none.
 PolygonSoup parse_ply_soup(std::string data, const std::string& source, bool& has_covariances);
 
-/// Writes a covariance PLY (doubles, exact round trip), ASCII or binary little endian.
+/// Writes a covariance PLY (doubles, exact round trip), ASCII or binary little endian; a mesh with
+/// some sharpness also gets `corner` and the `edge` element, as float where exact, else double.
 void write_ply(std::ostream& out, const CovarianceMesh& mesh, bool binary);
 
 }  // namespace gps
