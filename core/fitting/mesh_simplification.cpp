@@ -103,7 +103,10 @@ TriMesh triangles_of(const CovarianceMesh& input, bool& triangulated, double& sc
     corners.clear();
     for (const auto v : input.mesh.fv_range(f)) corners.push_back(TriMesh::VertexHandle(v.idx()));
     triangulated = triangulated || corners.size() > 3;
-    for (size_t k = 1; k + 1 < corners.size(); ++k) t.add_face(corners[0], corners[k], corners[k + 1]);
+    for (size_t k = 1; k + 1 < corners.size(); ++k)
+      if (!t.add_face(corners[0], corners[k], corners[k + 1]).is_valid())
+        throw Error("face " + std::to_string(f.idx()) +
+                    ": fanning the faces of more than 3 sides into triangles makes an edge of it non-manifold");
   }
   return t;
 }

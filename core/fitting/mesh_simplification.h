@@ -20,12 +20,13 @@ struct SimplifiedMesh {
 };
 
 /// Collapses edges of `input` (faces of more than three sides fanned into triangles first) in order
-/// of quadric error (Garland and Heckbert 1997, with boundary planes that keep the boundary's shape)
-/// until `options.target_vertices` remain or no collapse may be done without changing the topology
+/// of quadric error (Garland and Heckbert 1997, with boundary planes that keep the boundary's shape;
+/// near-ties to the collapse that makes the smaller region) until `options.target_vertices` remain or no collapse may be done without changing the topology
 /// (genus, boundary loops), making a face non-manifold or turning a face's normal by more than
 /// the limit. A coarse vertex keeps the position of the input vertex it is; its covariance comes
 /// from the input faces of its region, the input vertices collapsed into it (see the .cpp).
-/// Throws gps::Error for a target below 4 vertices.
+/// Throws gps::Error for a target below 4 vertices, or where the fans of faces of
+/// more sides would make an edge non-manifold.
 SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions& options);
 
 }  // namespace gps
