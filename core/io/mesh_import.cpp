@@ -6,7 +6,6 @@
 #include <cstring>
 #include <numeric>
 #include <sstream>
-#include <unordered_set>
 
 #include "core/mesh/error.h"
 #include "core/mesh/mesh_connectivity.h"
@@ -94,7 +93,7 @@ Sharpness sharpness_of_tags(const std::vector<SharpTag>& tags, const PolygonSoup
   Sharpness out;
   if (tags.empty()) return out;
   const long long n = (long long)soup.positions.size();
-  const std::unordered_set<uint64_t> edges = soup_edge_keys(soup.faces);
+  const std::vector<uint64_t> edges = soup_edge_keys(soup.faces);
   const auto at = [&](const SharpTag& t) { return source + ": line " + std::to_string(t.line) + ": "; };
   for (const SharpTag& t : tags) {
     for (const long long v : {t.a, t.crease ? t.b : t.a})
@@ -105,7 +104,7 @@ Sharpness sharpness_of_tags(const std::vector<SharpTag>& tags, const PolygonSoup
       out.set_corner(int(t.a), t.sharpness, int(n));
       continue;
     }
-    if (t.a == t.b || !edges.count(soup_edge_key(int(t.a), int(t.b))))
+    if (t.a == t.b || !std::binary_search(edges.begin(), edges.end(), soup_edge_key(int(t.a), int(t.b))))
       throw Error(at(t) + "crease " + std::to_string(t.a) + "-" + std::to_string(t.b) + " is not an edge of the mesh");
     out.set_crease(int(t.a), int(t.b), t.sharpness);
   }

@@ -10,7 +10,6 @@
 #include <limits>
 #include <optional>
 #include <sstream>
-#include <unordered_map>
 
 #include "core/mesh/error.h"
 #include "core/mesh/mesh_connectivity.h"
@@ -174,17 +173,33 @@ std::string edge_record_name(size_t r, int a, int b) {
   return "edge " + std::to_string(r) + " (vertices " + std::to_string(a) + "-" + std::to_string(b) + ")";
 }
 
-// The creases of the edge element's records (numbered as the file numbers them), each an edge of the faces.
+// The creases of the edge element's records (numbered as the file numbers them): each on an edge of
+// the faces, and no edge twice (found by sorting the records by edge: no table per record).
 template <class Fail>
 Sharpness sharpness_of(const std::vector<CreaseRecord>& records, const PolygonTopology& faces, const Fail& fail) {
   Sharpness out;
   if (records.empty()) return out;
-  const std::unordered_set<uint64_t> edges = soup_edge_keys(faces);
+  const auto where = [&](size_t r) {
+    const CreaseRecord& c = records[r];
+    return (c.line > 0 ? "line " + std::to_string(c.line) + ": " : "") + edge_record_name(r, c.a, c.b);
+  };
+  {
+    std::vector<std::pair<uint64_t, uint32_t>> order(records.size());  // (edge, record)
+    for (size_t r = 0; r < records.size(); ++r) order[r] = {soup_edge_key(records[r].a, records[r].b), uint32_t(r)};
+    std::sort(order.begin(), order.end());
+    size_t repeat = records.size(), first = 0;  // the earliest record repeating an edge, and the edge's first
+    for (size_t i = 1; i < order.size(); ++i)
+      if (order[i].first == order[i - 1].first && order[i].second < repeat) {
+        repeat = order[i].second;
+        first = order[i - 1].second;
+      }
+    if (repeat < records.size()) fail(where(repeat) + " repeats edge " + std::to_string(first));
+  }
+  const std::vector<uint64_t> edges = soup_edge_keys(faces);
   for (size_t r = 0; r < records.size(); ++r) {
     const CreaseRecord& c = records[r];
-    if (!edges.count(soup_edge_key(c.a, c.b)))
-      fail((c.line > 0 ? "line " + std::to_string(c.line) + ": " : "") + edge_record_name(r, c.a, c.b) +
-           " is not an edge of the mesh");
+    if (!std::binary_search(edges.begin(), edges.end(), soup_edge_key(c.a, c.b)))
+      fail(where(r) + " is not an edge of the mesh");
     if (c.sharpness > 0.0) out.creases.push_back({std::min(c.a, c.b), std::max(c.a, c.b), c.sharpness});
   }
   return out;
@@ -385,7 +400,6 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       // Creases (docs/design.md §4): vertex1 vertex2 crease per record, in any property order.
       const int i1 = index_of("vertex1"), i2 = index_of("vertex2"), is = index_of("crease");
       if (i1 < 0 || i2 < 0) fail("the edge element has a crease but lacks vertex1 or vertex2");
-      std::unordered_map<uint64_t, size_t> seen;
       std::vector<double> values(e.properties.size());
       for (size_t r = 0; r < e.count; ++r) {
         body.begin_record();
@@ -412,8 +426,6 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
         if (const std::string why = sharpness_problem(sharpness); !why.empty())
           fail(body.where() + named() + " crease " + BodyReader::format_number(sharpness) + " " + why);
         if (ends[0] == ends[1]) fail(body.where() + named() + " joins a vertex to itself");
-        if (const auto [it, inserted] = seen.try_emplace(soup_edge_key(ends[0], ends[1]), r); !inserted)
-          fail(body.where() + named() + " repeats edge " + std::to_string(it->second));
         creases.push_back({ends[0], ends[1], sharpness, *format == Format::ascii ? body.line() : 0});
       }
     } else if (e.name == "tristrips") {
