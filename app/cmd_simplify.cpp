@@ -35,7 +35,7 @@ void add_simplify_command(CLI::App& app) {
   auto* ratio = cmd->add_option("--ratio", args->ratio, "fraction of the input's vertices to keep, in (0, 1]")
                     ->check(CLI::Range(0.0, 1.0));
   vertices->excludes(ratio);
-  cmd->add_option("--bias", args->bias, "bias added to the input's face covariances, times λmax (Eq. 16)")
+  cmd->add_option("--bias", args->bias, "thickness of the input's faces across their planes (as Eq. 16's bias)")
       ->check(positive_number());
   cmd->add_option("--max-normal-deviation", args->max_normal_deviation,
                   "the most, in degrees, a collapse may turn a face's normal")

@@ -107,6 +107,22 @@ TEST(Simplify, OpenGridKeepsItsOneBoundaryLoop) {
   EXPECT_EQ(t.euler, 1);
   EXPECT_EQ(t.boundary_loops, 1);
   expect_spd(s.mesh);
+  // The boundary keeps the grid's square outline over [−1, 1]²: its four corners, and no boundary
+  // edge cuts across a corner (both ends of each on one side of the square).
+  const auto on_side = [](const Vec3& p, int axis, double side) { return std::abs(p[axis] - side) < 1e-12; };
+  int corners = 0;
+  for (size_t i = 0; i < s.mesh.n_vertices(); ++i)
+    corners += std::abs(std::abs(s.mesh.mean(i)[0]) - 1) < 1e-12 && std::abs(std::abs(s.mesh.mean(i)[1]) - 1) < 1e-12;
+  EXPECT_EQ(corners, 4);
+  for (const auto h : s.mesh.mesh.halfedges()) {
+    if (!s.mesh.mesh.is_boundary(h)) continue;
+    const Vec3 a = s.mesh.mean(size_t(s.mesh.mesh.from_vertex_handle(h).idx()));
+    const Vec3 b = s.mesh.mean(size_t(s.mesh.mesh.to_vertex_handle(h).idx()));
+    bool one_side = false;
+    for (int axis = 0; axis < 2; ++axis)
+      for (const double side : {-1.0, 1.0}) one_side = one_side || (on_side(a, axis, side) && on_side(b, axis, side));
+    EXPECT_TRUE(one_side) << a.transpose() << " to " << b.transpose();
+  }
 }
 
 TEST(Simplify, StopsWhereNoCollapseKeepsTheTopology) {
@@ -225,8 +241,8 @@ TEST(Simplify, SharpEdgeVerticesGetNeedlesAlongTheEdge) {
     const Vec3 widest = eigen.eigenvectors().col(2);
     const double degrees = std::acos(std::min(1.0, std::abs(widest[along]))) * 180 / M_PI;
     EXPECT_LT(degrees, 2) << "vertex " << i << " at " << p.transpose();
-    // σ along the edge over the next largest σ: √(1 + (1/b − 1/(1 + b))·w) for the share w of its
-    // region's area on the smaller side, 3.3 where both sides share alike at the default bias b.
+    // σ along the edge over the next largest σ: √(1 + w/b) for the share w of its region's area on
+    // the smaller side, 3.3 where both sides share alike at the default bias b = 0.05.
     const double ratio = std::sqrt(eigen.eigenvalues()(2) / eigen.eigenvalues()(1));
     EXPECT_GT(ratio, 1.5) << "vertex " << i << " at " << p.transpose();
     ratios += ratio;
