@@ -160,12 +160,11 @@ private:
   size_t token_index_ = 0;
 };
 
-// One record of the edge element: its vertices as the file gives them, its crease and, for ASCII
-// data, its line (0 in binary data).
+// One record of the edge element: its vertices as the file gives them and its crease (16 bytes: a
+// file of short records costs a few times its size).
 struct CreaseRecord {
   int a = 0, b = 0;
   double sharpness = 0.0;
-  int line = 0;
 };
 
 // "edge R (vertices A-B)", as messages name a record of the edge element.
@@ -173,33 +172,32 @@ std::string edge_record_name(size_t r, int a, int b) {
   return "edge " + std::to_string(r) + " (vertices " + std::to_string(a) + "-" + std::to_string(b) + ")";
 }
 
-// The creases of the edge element's records (numbered as the file numbers them): each on an edge of
-// the faces, and no edge twice (found by sorting the records by edge: no table per record).
+// The creases of the edge element's records (numbered as the file numbers them): no edge twice (found
+// by sorting record numbers by edge, 4 bytes each) and each on an edge of the faces.
 template <class Fail>
 Sharpness sharpness_of(const std::vector<CreaseRecord>& records, const PolygonTopology& faces, const Fail& fail) {
   Sharpness out;
   if (records.empty()) return out;
-  const auto where = [&](size_t r) {
-    const CreaseRecord& c = records[r];
-    return (c.line > 0 ? "line " + std::to_string(c.line) + ": " : "") + edge_record_name(r, c.a, c.b);
-  };
+  const auto name = [&](size_t r) { return edge_record_name(r, records[r].a, records[r].b); };
+  const auto key = [&](uint32_t r) { return soup_edge_key(records[r].a, records[r].b); };
   {
-    std::vector<std::pair<uint64_t, uint32_t>> order(records.size());  // (edge, record)
-    for (size_t r = 0; r < records.size(); ++r) order[r] = {soup_edge_key(records[r].a, records[r].b), uint32_t(r)};
-    std::sort(order.begin(), order.end());
-    size_t repeat = records.size(), first = 0;  // the earliest record repeating an edge, and the edge's first
+    std::vector<uint32_t> order(records.size());
+    for (size_t r = 0; r < records.size(); ++r) order[r] = uint32_t(r);
+    std::sort(order.begin(), order.end(),
+              [&](uint32_t x, uint32_t y) { return key(x) != key(y) ? key(x) < key(y) : x < y; });
+    size_t repeat = records.size(), first = 0;  // the earliest record repeating an edge, and that edge's first
     for (size_t i = 1; i < order.size(); ++i)
-      if (order[i].first == order[i - 1].first && order[i].second < repeat) {
-        repeat = order[i].second;
-        first = order[i - 1].second;
+      if (key(order[i]) == key(order[i - 1]) && order[i] < repeat) {
+        repeat = order[i];
+        first = order[i - 1];
       }
-    if (repeat < records.size()) fail(where(repeat) + " repeats edge " + std::to_string(first));
+    if (repeat < records.size()) fail(name(repeat) + " repeats edge " + std::to_string(first));
   }
   const std::vector<uint64_t> edges = soup_edge_keys(faces);
   for (size_t r = 0; r < records.size(); ++r) {
     const CreaseRecord& c = records[r];
     if (!std::binary_search(edges.begin(), edges.end(), soup_edge_key(c.a, c.b)))
-      fail(where(r) + " is not an edge of the mesh");
+      fail(name(r) + " is not an edge of the mesh");
     if (c.sharpness > 0.0) out.creases.push_back({std::min(c.a, c.b), std::max(c.a, c.b), c.sharpness});
   }
   return out;
@@ -400,6 +398,9 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       // Creases (docs/design.md §4): vertex1 vertex2 crease per record, in any property order.
       const int i1 = index_of("vertex1"), i2 = index_of("vertex2"), is = index_of("crease");
       if (i1 < 0 || i2 < 0) fail("the edge element has a crease but lacks vertex1 or vertex2");
+      // Reserved at the declared count, which the size check above bounds by the bytes left: its
+      // pages are touched only as records arrive, and no doubling copies them.
+      creases.reserve(e.count);
       std::vector<double> values(e.properties.size());
       for (size_t r = 0; r < e.count; ++r) {
         body.begin_record();
@@ -426,7 +427,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
         if (const std::string why = sharpness_problem(sharpness); !why.empty())
           fail(body.where() + named() + " crease " + BodyReader::format_number(sharpness) + " " + why);
         if (ends[0] == ends[1]) fail(body.where() + named() + " joins a vertex to itself");
-        creases.push_back({ends[0], ends[1], sharpness, *format == Format::ascii ? body.line() : 0});
+        creases.push_back({ends[0], ends[1], sharpness});
       }
     } else if (e.name == "tristrips") {
       // Triangle strips (as Stanford's scanned models store their faces): an index list per record,
@@ -480,11 +481,12 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
     }
   }
   body.check_end();
+  if (release) std::string().swap(*release);
   Sharpness sharpness = sharpness_of(creases, faces, fail);
+  std::vector<CreaseRecord>().swap(creases);
   sharpness.corners = std::move(corners);
   sharpness.normalise();
   file_has_covariances = has_covariances;
-  if (release) std::string().swap(*release);
   PolygonSoup soup;
   soup.sharpness = std::move(sharpness);
   soup.positions = std::move(means);

