@@ -54,8 +54,8 @@ void add_simplify_command(CLI::App& app) {
     options.target_vertices =
         vertices->count() > 0 ? args->vertices : size_t(std::llround(args->ratio * double(input.n_vertices())));
     if (options.target_vertices < 4)
-      throw usage_error(escaped(args->input) + ": --ratio " + std::to_string(args->ratio) + " keeps fewer than 4 of its " +
-                        std::to_string(input.n_vertices()) + " vertices");
+      throw usage_error(escaped(args->input) + ": --ratio " + std::to_string(args->ratio) +
+                        " keeps fewer than 4 of its " + std::to_string(input.n_vertices()) + " vertices");
     const SimplifiedMesh s = naming_input(args->input, [&] { return simplify_mesh(input, options); });
     write_mesh(args->output, s.mesh, args->binary);
     if (s.triangulated) std::cout << "fanned the faces of more than 3 sides into triangles\n";
@@ -66,8 +66,7 @@ void add_simplify_command(CLI::App& app) {
                 << ": no further collapse keeps the topology, manifoldness and face orientations)";
     std::cout << "\nwrote " << args->output << "\n";
     if (args->level == 0) return;
-    const TriangleMesh limit =
-        naming_input(args->output, [&] { return limit_surface_triangles(s.mesh, args->level); });
+    const TriangleMesh limit = naming_input(args->output, [&] { return limit_surface_triangles(s.mesh, args->level); });
     std::cout << "input vertices to the simplified limit surface (level " << args->level << "):\n"
               << describe(distances_to_surface(vertex_means(input), limit));
   });

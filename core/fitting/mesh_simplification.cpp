@@ -40,7 +40,7 @@ using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
 struct Region {
   int vertex = -1;  // the input vertex this one is
   OpenMesh::Geometry::Quadricd quadric;
-  double area = 0;                     // A_v
+  double area = 0;                    // A_v
   Mat3 normal_moment = Mat3::Zero();  // A_v N_v = Σ a_f n_f n_fᵀ
 };
 

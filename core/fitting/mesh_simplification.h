@@ -8,8 +8,8 @@
 namespace gps {
 
 struct SimplifyOptions {
-  size_t target_vertices = 0;  // the vertex count asked for
-  double bias = 0.05;          // thickness of the face discs across their planes (GPS paper Eq. 16)
+  size_t target_vertices = 0;                // the vertex count asked for
+  double bias = 0.05;                        // thickness of the face discs across their planes (GPS paper Eq. 16)
   double max_normal_deviation_degrees = 45;  // the most a collapse may turn a face's normal
 };
 
@@ -21,12 +21,12 @@ struct SimplifiedMesh {
 
 /// Collapses edges of `input` (faces of more than three sides fanned into triangles first) in order
 /// of quadric error (Garland and Heckbert 1997, with boundary planes that keep the boundary's shape;
-/// near-ties to the collapse that makes the smaller region) until `options.target_vertices` remain or no collapse may be done without changing the topology
-/// (genus, boundary loops), making a face non-manifold or turning a face's normal by more than
-/// the limit. A coarse vertex keeps the position of the input vertex it is; its covariance comes
-/// from the input faces of its region, the input vertices collapsed into it (see the .cpp).
-/// Throws gps::Error for a target below 4 vertices, or where the fans of faces of
-/// more sides would make an edge non-manifold.
+/// near-ties to the collapse that makes the smaller region) until `options.target_vertices` remain
+/// or no collapse may be done without changing the topology (genus, boundary loops), making a face
+/// non-manifold or turning a face's normal by more than the limit. A coarse vertex keeps the position
+/// of the input vertex it is; its covariance comes from the input faces of its region, the input
+/// vertices collapsed into it (see the .cpp). Throws gps::Error for a target below 4 vertices, or
+/// where the fans of faces of more sides would make an edge non-manifold.
 SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions& options);
 
 }  // namespace gps

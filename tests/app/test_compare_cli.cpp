@@ -21,7 +21,8 @@ std::string flat_grid_obj(int n, double cell, double origin, double height) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const int a = i * (n + 1) + j + 1;
-      obj << "f " << a << " " << a + n + 1 << " " << a + n + 2 << "\nf " << a << " " << a + n + 2 << " " << a + 1 << "\n";
+      obj << "f " << a << " " << a + n + 1 << " " << a + n + 2 << "\nf " << a << " " << a + n + 2 << " " << a + 1
+          << "\n";
     }
   return obj.str();
 }

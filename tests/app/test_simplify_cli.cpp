@@ -18,9 +18,11 @@ int lines(const std::string& text) { return int(std::count(text.begin(), text.en
 TEST(SimplifyCli, KeepsTheVerticesAskedForAndReportsTheDistances) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample icosphere --size 1280 -o " + dir.file("ico.ply"))).exit_code, 0);
-  const auto r = run_command(gpsurf("simplify " + dir.file("ico.ply") + " -o " + dir.file("coarse.ply") + " --vertices 100"));
+  const auto r =
+      run_command(gpsurf("simplify " + dir.file("ico.ply") + " -o " + dir.file("coarse.ply") + " --vertices 100"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("simplified 642 vertices, 1280 triangles to 100 vertices, 196 triangles\n"), std::string::npos)
+  EXPECT_NE(r.output.find("simplified 642 vertices, 1280 triangles to 100 vertices, 196 triangles\n"),
+            std::string::npos)
       << r.output;
   EXPECT_EQ(r.output.find("asked"), std::string::npos) << r.output;
   for (const char* figure : {"\nrms ", "\n99th percentile ", "\nmax "})
@@ -29,8 +31,8 @@ TEST(SimplifyCli, KeepsTheVerticesAskedForAndReportsTheDistances) {
   EXPECT_EQ(coarse.n_vertices(), 100u);
   EXPECT_EQ(gaussians_problem(coarse), "");
 
-  const auto half = run_command(gpsurf("simplify " + dir.file("ico.ply") + " -o " + dir.file("half.ply") +
-                                       " --ratio 0.5 --level 0 --binary"));
+  const auto half = run_command(
+      gpsurf("simplify " + dir.file("ico.ply") + " -o " + dir.file("half.ply") + " --ratio 0.5 --level 0 --binary"));
   ASSERT_EQ(half.exit_code, 0) << half.output;
   EXPECT_NE(half.output.find("to 321 vertices"), std::string::npos) << half.output;
   EXPECT_EQ(half.output.find("rms"), std::string::npos) << half.output;  // --level 0: no report
@@ -40,13 +42,15 @@ TEST(SimplifyCli, KeepsTheVerticesAskedForAndReportsTheDistances) {
 TEST(SimplifyCli, FansQuadsIntoTrianglesAndSaysWhereItStopsShort) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample torus -o " + dir.file("torus.ply"))).exit_code, 0);
-  const auto torus = run_command(gpsurf("simplify " + dir.file("torus.ply") + " -o " + dir.file("t.ply") + " --vertices 50"));
+  const auto torus =
+      run_command(gpsurf("simplify " + dir.file("torus.ply") + " -o " + dir.file("t.ply") + " --vertices 50"));
   ASSERT_EQ(torus.exit_code, 0) << torus.output;
   EXPECT_EQ(torus.output.rfind("fanned the faces of more than 3 sides into triangles\n", 0), 0u) << torus.output;
   EXPECT_NE(torus.output.find("to 50 vertices"), std::string::npos) << torus.output;
 
   // A tetrahedron has no collapse that keeps its topology: it stays as it is, and says so.
-  const std::string tetrahedron = dir.write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  const std::string tetrahedron =
+      dir.write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
   const auto stuck = run_command(gpsurf("simplify " + tetrahedron + " -o " + dir.file("s.ply") + " --vertices 4"));
   ASSERT_EQ(stuck.exit_code, 0) << stuck.output;
   EXPECT_NE(stuck.output.find("to 4 vertices, 4 triangles\n"), std::string::npos) << stuck.output;
@@ -63,20 +67,21 @@ TEST(SimplifyCli, UsageAndRuntimeErrorsAreOneLine) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample icosphere --size 320 -o " + dir.file("ico.ply"))).exit_code, 0);
   const std::string base = "simplify " + dir.file("ico.ply") + " -o " + dir.file("x.ply");
-  for (const std::string& args : {std::string(""), std::string("--vertices 3"), std::string("--ratio 0"),
-                                  std::string("--ratio 1.5"), std::string("--vertices 10 --ratio 0.5"),
-                                  std::string("--ratio 0.01"), std::string("--vertices 10 --level 65"),
-                                  std::string("--vertices 10 --bias 0")}) {
+  for (const std::string& args :
+       {std::string(""), std::string("--vertices 3"), std::string("--ratio 0"), std::string("--ratio 1.5"),
+        std::string("--vertices 10 --ratio 0.5"), std::string("--ratio 0.01"), std::string("--vertices 10 --level 65"),
+        std::string("--vertices 10 --bias 0")}) {
     const auto r = run_command(gpsurf(base + " " + args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
     EXPECT_EQ(lines(r.output), 1) << args << ": " << r.output;
   }
-  const auto missing = run_command(gpsurf("simplify " + dir.file("none.obj") + " -o " + dir.file("x.ply") + " --vertices 10"));
+  const auto missing =
+      run_command(gpsurf("simplify " + dir.file("none.obj") + " -o " + dir.file("x.ply") + " --vertices 10"));
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
   EXPECT_EQ(lines(missing.output), 1) << missing.output;
   EXPECT_NE(missing.output.find("none.obj"), std::string::npos) << missing.output;
-  const auto unwritable = run_command(gpsurf("simplify " + dir.file("ico.ply") + " -o " + dir.file("no/such/x.ply") +
-                                             " --vertices 10"));
+  const auto unwritable =
+      run_command(gpsurf("simplify " + dir.file("ico.ply") + " -o " + dir.file("no/such/x.ply") + " --vertices 10"));
   EXPECT_EQ(unwritable.exit_code, 1) << unwritable.output;
   EXPECT_NE(unwritable.output.find("x.ply"), std::string::npos) << unwritable.output;
 }

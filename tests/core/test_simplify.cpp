@@ -127,9 +127,9 @@ TEST(Simplify, OpenGridKeepsItsOneBoundaryLoop) {
 
 TEST(Simplify, StopsWhereNoCollapseKeepsTheTopology) {
   // A tetrahedron has no collapse that keeps a closed genus-0 surface of triangles.
-  const CovarianceMesh tetrahedron = make_covariance_mesh(
-      {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, std::vector<Mat3>(4, Mat3::Identity()),
-      {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+  const CovarianceMesh tetrahedron =
+      make_covariance_mesh({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
+                           std::vector<Mat3>(4, Mat3::Identity()), {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
   const SimplifiedMesh s = simplified(tetrahedron, 4);
   EXPECT_EQ(s.mesh.n_vertices(), 4u);
   EXPECT_EQ(topology_of(s.mesh).euler, 2);
@@ -162,9 +162,7 @@ TEST(Simplify, CommutesWithScale) {
   }
 }
 
-TEST(Simplify, RefusesATargetBelowFour) {
-  EXPECT_THROW(simplified(make_sample("icosphere", 320), 3), Error);
-}
+TEST(Simplify, RefusesATargetBelowFour) { EXPECT_THROW(simplified(make_sample("icosphere", 320), 3), Error); }
 
 TEST(Simplify, RefusesAPolygonWhoseFanWouldNotBeManifold) {
   // A pillow: a quad on top, two triangles under it split along the diagonal 0–2 that the quad's fan
@@ -176,7 +174,10 @@ TEST(Simplify, RefusesAPolygonWhoseFanWouldNotBeManifold) {
     simplified(pillow, 4);
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("face 1: fanning the faces of more than 3 sides into triangles makes an edge of it non-manifold"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(
+                  "face 1: fanning the faces of more than 3 sides into triangles makes an edge of it non-manifold"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -17,11 +17,11 @@ TEST(SurfaceDistance, ExactToOneTriangleInEveryRegion) {
   t.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
   t.triangles = {{0, 1, 2}};
   const SurfaceDistance d(t);
-  EXPECT_NEAR(d.distance(Vec3(0.2, 0.2, 3)), 3, 1e-12);                    // above the face
-  EXPECT_NEAR(d.distance(Vec3(-1, -1, 0)), std::sqrt(2.0), 1e-12);         // nearest a corner
-  EXPECT_NEAR(d.distance(Vec3(0.5, -2, 1)), std::sqrt(5.0), 1e-12);        // nearest an edge
-  EXPECT_NEAR(d.distance(Vec3(1, 1, 0)), 1 / std::sqrt(2.0), 1e-12);       // nearest the hypotenuse
-  EXPECT_NEAR(d.distance(Vec3(0.25, 0.25, 0)), 0, 1e-12);                  // on it
+  EXPECT_NEAR(d.distance(Vec3(0.2, 0.2, 3)), 3, 1e-12);               // above the face
+  EXPECT_NEAR(d.distance(Vec3(-1, -1, 0)), std::sqrt(2.0), 1e-12);    // nearest a corner
+  EXPECT_NEAR(d.distance(Vec3(0.5, -2, 1)), std::sqrt(5.0), 1e-12);   // nearest an edge
+  EXPECT_NEAR(d.distance(Vec3(1, 1, 0)), 1 / std::sqrt(2.0), 1e-12);  // nearest the hypotenuse
+  EXPECT_NEAR(d.distance(Vec3(0.25, 0.25, 0)), 0, 1e-12);             // on it
 }
 
 TEST(SurfaceDistance, NearestOfManyTrianglesMatchesBruteForce) {
@@ -41,7 +41,8 @@ TEST(SurfaceDistance, NearestOfManyTrianglesMatchesBruteForce) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coordinate(-2, n + 2);
   std::vector<Vec3> points;
-  for (int k = 0; k < 200; ++k) points.emplace_back(coordinate(random), coordinate(random), coordinate(random) - n / 2.0);
+  for (int k = 0; k < 200; ++k)
+    points.emplace_back(coordinate(random), coordinate(random), coordinate(random) - n / 2.0);
   const std::vector<double> all = tree.distances(points);
   for (size_t k = 0; k < points.size(); ++k) {
     double nearest = INFINITY;
