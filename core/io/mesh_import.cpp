@@ -35,79 +35,114 @@ bool parse_int(std::string_view s, long long& out) {
   return ec == std::errc() && p == s.data() + s.size();
 }
 
-// One crease (vertices a, b) or corner (vertex a) of an OBJ tag line, numbered from 0 as tags number them.
-struct SharpTag {
-  bool crease = false;
-  long long a = 0, b = 0;
-  double sharpness = 0.0;
-  int line = 0;
+// The crease and corner tags of an OBJ file, stored flat as read (4 bytes per vertex index, 8 per
+// sharpness): applied once the faces are known, since tags may come before them.
+struct SharpTags {
+  struct Line {
+    int number = 0;
+    bool crease = false;
+    size_t first_int = 0, items = 0;  // crease: items pairs of ints; corner: items ints
+    size_t first_value = 0;
+    bool one_value = true;  // one sharpness for all items, else one each
+  };
+  std::vector<Line> lines;
+  std::vector<int32_t> ints;
+  std::vector<double> values;
 };
 
 // Reads OpenSubdiv's tag line "t crease|corner nint/nfloat/nstring ints floats strings" (regression
 // shapes, Far tutorials): crease ints are pairs of vertices (a b a b ...), corner ints vertices, both
 // numbered from 0; one float for all or one per pair or vertex. Other tags (holes, boundary rules)
-// are skipped. `at` is "source: line N: ".
-void read_sharp_tag(std::string_view line, int number, const std::string& at, std::vector<SharpTag>& tags) {
+// are skipped. `at` is "source: line N: ". Nothing is sized from the counts: the values are read
+// from the line until the counts are met.
+void read_sharp_tag(std::string_view line, int number, const std::string& at, SharpTags& tags) {
   const std::string_view name = next_word(line);
   if (name != "crease" && name != "corner") return;
+  const std::string what(name);
   const std::string_view counts = next_word(line);
   long long n[3] = {0, 0, 0};
   std::string_view rest = counts;
   for (int k = 0; k < 3; ++k) {
     const size_t slash = k < 2 ? rest.find('/') : std::string_view::npos;
     if ((k < 2 && slash == std::string_view::npos) || !parse_int(rest.substr(0, slash), n[k]) || n[k] < 0)
-      throw Error(at + "the " + std::string(name) + " tag's counts " + quoted_token(counts) +
-                  " are not nint/nfloat/nstring");
+      throw Error(at + "the " + what + " tag's counts " + quoted_token(counts) + " are not nint/nfloat/nstring");
     if (k < 2) rest.remove_prefix(slash + 1);
   }
-  const bool crease = name == "crease";
-  const long long items = crease ? n[0] / 2 : n[0];
-  if (n[0] == 0 || (crease && n[0] % 2 != 0))
+  SharpTags::Line tag;
+  tag.number = number;
+  tag.crease = name == "crease";
+  tag.items = size_t(tag.crease ? n[0] / 2 : n[0]);
+  if (n[0] == 0 || (tag.crease && n[0] % 2 != 0))
     throw Error(at + "a crease tag needs pairs of vertices, a corner tag vertices (" + std::to_string(n[0]) +
                 " given)");
-  if (n[1] != 1 && n[1] != items)
-    throw Error(at + "the " + std::string(name) + " tag has " + std::to_string(n[1]) + " sharpness values for " +
-                std::to_string(items) + (crease ? " edges" : " vertices") + " (1 for all or 1 each)");
-  std::vector<long long> ints(static_cast<size_t>(n[0]));
-  for (long long& v : ints) {
+  if (n[1] != 1 && n[1] != n[0] / (tag.crease ? 2 : 1))
+    throw Error(at + "the " + what + " tag has " + std::to_string(n[1]) + " sharpness values for " +
+                std::to_string(tag.items) + (tag.crease ? " edges" : " vertices") + " (1 for all or 1 each)");
+  tag.one_value = n[1] == 1;
+  tag.first_int = tags.ints.size();
+  tag.first_value = tags.values.size();
+  const auto next = [&] {
     const std::string_view word = next_word(line);
-    if (word.empty()) throw Error(at + "the " + std::string(name) + " tag has fewer values than its counts say");
+    if (word.empty()) throw Error(at + "the " + what + " tag has fewer values than its counts say");
+    return word;
+  };
+  for (long long k = 0; k < n[0]; ++k) {
+    const std::string_view word = next();
+    long long v = 0;
     if (!parse_int(word, v)) throw Error(at + quoted_token(word) + " is not a vertex index");
+    if (v < 0 || v > INT32_MAX)
+      throw Error(at + what + " tag names vertex " + std::to_string(v) + " (tags number vertices from 0)");
+    tags.ints.push_back(int32_t(v));
   }
-  std::vector<double> values(static_cast<size_t>(n[1]));
-  for (double& x : values) {
-    const std::string_view word = next_word(line);
-    if (word.empty()) throw Error(at + "the " + std::string(name) + " tag has fewer values than its counts say");
+  for (long long k = 0; k < n[1]; ++k) {
+    const std::string_view word = next();
+    double x = 0;
     if (const std::string why = parse_number(word, x); !why.empty()) throw Error(at + why);
     if (const std::string why = sharpness_problem(x); !why.empty())
-      throw Error(at + std::string(name) + " sharpness " + std::string(word) + " " + why);
+      throw Error(at + what + " sharpness " + std::string(word) + " " + why);
+    tags.values.push_back(x);
   }
-  for (long long i = 0; i < items; ++i)
-    tags.push_back({crease, crease ? ints[size_t(2 * i)] : ints[size_t(i)], crease ? ints[size_t(2 * i + 1)] : 0,
-                    values[values.size() == 1 ? 0 : size_t(i)], number});
+  tags.lines.push_back(tag);
 }
 
 // The sharpness of the tags on the finished soup; a later tag on the same edge or vertex wins, as in
 // OpenSubdiv's readers.
-Sharpness sharpness_of_tags(const std::vector<SharpTag>& tags, const PolygonSoup& soup, const std::string& source) {
+Sharpness sharpness_of_tags(const SharpTags& tags, const PolygonSoup& soup, const std::string& source) {
   Sharpness out;
-  if (tags.empty()) return out;
-  const long long n = (long long)soup.positions.size();
+  if (tags.lines.empty()) return out;
+  const int n = int(soup.positions.size());
   const std::vector<uint64_t> edges = soup_edge_keys(soup.faces);
-  const auto at = [&](const SharpTag& t) { return source + ": line " + std::to_string(t.line) + ": "; };
-  for (const SharpTag& t : tags) {
-    for (const long long v : {t.a, t.crease ? t.b : t.a})
-      if (!(v >= 0 && v < n))
-        throw Error(at(t) + (t.crease ? "crease" : "corner") + " tag names vertex " + std::to_string(v) +
-                    ", but there are " + std::to_string(n) + " vertices (tags number them from 0)");
-    if (!t.crease) {
-      out.set_corner(int(t.a), t.sharpness, int(n));
-      continue;
+  for (const SharpTags::Line& t : tags.lines) {
+    const std::string kind = t.crease ? "crease" : "corner";
+    const auto at = [&] { return source + ": line " + std::to_string(t.number) + ": "; };
+    for (size_t i = 0; i < t.items; ++i) {
+      const int a = tags.ints[t.first_int + (t.crease ? 2 * i : i)];
+      const int b = t.crease ? tags.ints[t.first_int + 2 * i + 1] : a;
+      const double s = tags.values[t.first_value + (t.one_value ? 0 : i)];
+      for (const int v : {a, b})
+        if (v >= n)
+          throw Error(at() + kind + " tag names vertex " + std::to_string(v) + ", but there are " + std::to_string(n) +
+                      " vertices (tags number them from 0)");
+      if (!t.crease) {
+        if (out.corners.empty()) out.corners.assign(size_t(n), 0.0);
+        out.corners[size_t(a)] = s;
+        continue;
+      }
+      if (a == b || !std::binary_search(edges.begin(), edges.end(), soup_edge_key(a, b)))
+        throw Error(at() + "crease " + std::to_string(a) + "-" + std::to_string(b) + " is not an edge of the mesh");
+      out.creases.push_back({std::min(a, b), std::max(a, b), s});
     }
-    if (t.a == t.b || !std::binary_search(edges.begin(), edges.end(), soup_edge_key(int(t.a), int(t.b))))
-      throw Error(at(t) + "crease " + std::to_string(t.a) + "-" + std::to_string(t.b) + " is not an edge of the mesh");
-    out.set_crease(int(t.a), int(t.b), t.sharpness);
   }
+  // In file order within each edge after a stable sort: the last one stays.
+  std::stable_sort(out.creases.begin(), out.creases.end(),
+                   [](const EdgeCrease& x, const EdgeCrease& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+  size_t kept = 0;
+  for (size_t i = 0; i < out.creases.size(); ++i) {
+    if (kept > 0 && out.creases[kept - 1].a == out.creases[i].a && out.creases[kept - 1].b == out.creases[i].b) --kept;
+    out.creases[kept++] = out.creases[i];
+  }
+  out.creases.resize(kept);
+  out.normalise();
   return out;
 }
 
@@ -144,7 +179,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   PolygonTopology faces;
   faces.offsets.reserve(n_faces + 1);
   faces.verts.reserve(n_corners);
-  std::vector<SharpTag> tags;
+  SharpTags tags;
   for (LineCursor lines(data); !lines.done(); lines.next()) {
     std::string_view line = lines.line();
     const auto at = [&] { return source + ": line " + std::to_string(lines.number()) + ": "; };

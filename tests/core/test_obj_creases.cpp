@@ -54,7 +54,10 @@ TEST(ObjCreases, ErrorsNameTheFileAndLine) {
   EXPECT_EQ(message_of("t crease 2/1/0 4 8 1\n"),
             "x.obj: line 15: crease tag names vertex 8, but there are 8 vertices (tags number them from 0)");
   EXPECT_EQ(message_of("t corner 1/1/0 -1 1\n"),
-            "x.obj: line 15: corner tag names vertex -1, but there are 8 vertices (tags number them from 0)");
+            "x.obj: line 15: corner tag names vertex -1 (tags number vertices from 0)");
+  // Counts are not trusted: a huge one is refused when the line runs out.
+  EXPECT_EQ(message_of("t corner 999999999999/1/0 0 1\n"),
+            "x.obj: line 15: the corner tag has fewer values than its counts say");
   EXPECT_EQ(message_of("t crease 2/1/0 0 6 1\n"), "x.obj: line 15: crease 0-6 is not an edge of the mesh");
   EXPECT_EQ(message_of("t crease 2/1/0 4 5 -2\n"), "x.obj: line 15: crease sharpness -2 is negative");
   EXPECT_EQ(message_of("t corner 1/1/0 4 inf\n"), "x.obj: line 15: corner sharpness inf is not finite");
