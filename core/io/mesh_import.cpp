@@ -86,6 +86,10 @@ void read_sharp_tag(std::string_view line, int number, const std::string& at, Sh
     if (word.empty()) throw Error(at + "the " + what + " tag has fewer values than its counts say");
     return word;
   };
+  // A long tag reserves what its line can hold (a word and a space each): no doubling copies it.
+  const size_t words_left = line.size() / 2 + 1;
+  if (n[0] > 4096) tags.ints.reserve(tags.ints.size() + std::min(size_t(n[0]), words_left));
+  if (n[1] > 4096) tags.values.reserve(tags.values.size() + std::min(size_t(n[1]), words_left));
   for (long long k = 0; k < n[0]; ++k) {
     const std::string_view word = next();
     long long v = 0;
