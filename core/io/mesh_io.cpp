@@ -84,10 +84,39 @@ CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options, 
   return mesh;
 }
 
+namespace {
+
+// Why the mesh's sharpness would be refused on reading ("crease 0-6 is not an edge of the mesh"), or "".
+std::string sharpness_write_problem(const CovarianceMesh& m) {
+  const int n = int(m.n_vertices());
+  for (const EdgeCrease& c : m.sharpness.creases) {
+    const std::string name = "crease " + std::to_string(c.a) + "-" + std::to_string(c.b);
+    if (const std::string why = sharpness_problem(c.sharpness); !why.empty()) return name + " " + why;
+    if (c.a < 0 || c.b < 0 || c.a >= n || c.b >= n) return name + " names a vertex outside the mesh";
+    if (!m.mesh.find_halfedge(PolyMesh::VertexHandle(c.a), PolyMesh::VertexHandle(c.b)).is_valid())
+      return name + " is not an edge of the mesh";
+  }
+  std::vector<std::pair<int, int>> ends;
+  for (const EdgeCrease& c : m.sharpness.creases) ends.emplace_back(std::min(c.a, c.b), std::max(c.a, c.b));
+  std::sort(ends.begin(), ends.end());
+  if (const auto twice = std::adjacent_find(ends.begin(), ends.end()); twice != ends.end())
+    return "crease " + std::to_string(twice->first) + "-" + std::to_string(twice->second) + " is named twice";
+  if (!m.sharpness.corners.empty() && m.sharpness.corners.size() != m.n_vertices())
+    return std::to_string(m.sharpness.corners.size()) + " corner values for " + std::to_string(n) + " vertices";
+  for (size_t v = 0; v < m.sharpness.corners.size(); ++v)
+    if (const std::string why = sharpness_problem(m.sharpness.corners[v]); !why.empty())
+      return "vertex " + std::to_string(v) + " corner sharpness " + why;
+  return "";
+}
+
+}  // namespace
+
 void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary) {
   const std::string ext = extension_of(path);
   // What gpsurf writes it must read back: refuse values the readers would refuse.
   if (const std::string why = gaussians_problem(mesh); !why.empty())
+    throw Error(escaped(path) + ": not written: " + why);
+  if (const std::string why = sharpness_write_problem(mesh); !why.empty())
     throw Error(escaped(path) + ": not written: " + why);
   if (ext == ".ply") {
     write_file_atomically(

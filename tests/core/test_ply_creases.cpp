@@ -7,6 +7,7 @@
 #include <array>
 #include <bit>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -180,6 +181,29 @@ TEST(PlyCreases, SmoothMeshWritesNeitherCornerNorEdge) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_EQ(text.find("corner"), std::string::npos);
   EXPECT_EQ(text.find("element edge"), std::string::npos);
+}
+
+TEST(PlyCreases, WritesNothingItWouldRefuse) {
+  test::TempDir dir;
+  const CovarianceMesh cube = parse_ply(CubePly().text(), "cube.ply").mesh;
+  const auto message = [&](const Sharpness& s) {
+    CovarianceMesh m = cube;
+    m.sharpness = s;
+    try {
+      write_mesh(dir.file("w.ply"), m);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(written)");
+  };
+  const std::string head = dir.file("w.ply") + ": not written: ";
+  EXPECT_EQ(message({{{0, 6, 1.0}}, {}}), head + "crease 0-6 is not an edge of the mesh");
+  EXPECT_EQ(message({{{4, 8, 1.0}}, {}}), head + "crease 4-8 names a vertex outside the mesh");
+  EXPECT_EQ(message({{{4, 5, std::nan("")}}, {}}), head + "crease 4-5 is not finite");
+  EXPECT_EQ(message({{{4, 5, 1.0}, {5, 4, 2.0}}, {}}), head + "crease 4-5 is named twice");
+  EXPECT_EQ(message({{}, {0, 0, 1}}), head + "3 corner values for 8 vertices");
+  EXPECT_EQ(message({{}, {0, 0, -1, 0, 0, 0, 0, 0}}), head + "vertex 2 corner sharpness is negative");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("w.ply")));
 }
 
 TEST(PlyCreases, EdgeElementWithoutCreaseIsSkipped) {
