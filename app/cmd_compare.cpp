@@ -28,25 +28,29 @@ void add_compare_command(CLI::App& app) {
   cmd->add_flag("--both", args->both, "also B's points to A's limit surface");
   cmd->add_flag("--samples", args->samples,
                 "measure the points of the measured mesh's limit surface at --level instead of its vertices");
-  cmd->add_option("--level", args->level, "tessellation level of the limit surfaces")->check(CLI::Range(1, 64));
+  auto* level = cmd->add_option("--level", args->level,
+                                "tessellation level of the limit surfaces (default 8, lower for a surface that would "
+                                "make more than 2 million triangles)")
+                    ->check(CLI::Range(1, 64));
   add_plan_arguments(cmd, args->plans);
   add_repair_arguments(cmd, args->repair);
-  cmd->callback([args] {
+  cmd->callback([args, level] {
     const PlanOptions options = args->plans.options();
     const CovarianceMesh a = read_mesh_repairing(args->first, args->repair);
     const CovarianceMesh b = read_mesh_repairing(args->second, args->repair);
+    const double max_triangles = level->count() > 0 ? INFINITY : kMeasuredTriangles;
     const auto limit_of = [&](const std::string& path, const CovarianceMesh& m) {
-      return naming_input(path, [&] { return limit_surface_triangles(m, args->level, options); });
+      return naming_input(path, [&] { return limit_surface_triangles(m, args->level, options, max_triangles); });
     };
-    const TriangleMesh limit_b = limit_of(args->second, b);
-    TriangleMesh limit_a;
+    const LimitTriangles limit_b = limit_of(args->second, b);
+    LimitTriangles limit_a;
     if (args->both || args->samples) limit_a = limit_of(args->first, a);
-    const auto report = [&](const std::string& from, const CovarianceMesh& m, const TriangleMesh& own_limit,
-                            const std::string& to, const TriangleMesh& limit) {
-      const std::vector<Vec3> points = args->samples ? own_limit.positions : vertex_means(m);
+    const auto report = [&](const std::string& from, const CovarianceMesh& m, const LimitTriangles& own_limit,
+                            const std::string& to, const LimitTriangles& limit) {
+      const std::vector<Vec3> points = args->samples ? own_limit.triangles.positions : vertex_means(m);
       std::cout << escaped(from) << " (" << points.size() << (args->samples ? " limit samples" : " vertices")
-                << ") to the limit surface of " << escaped(to) << ":\n"
-                << describe(distances_to_surface(points, limit));
+                << ") to the limit surface of " << escaped(to) << " (level " << limit.level << "):\n"
+                << describe(distances_to_surface(points, limit.triangles));
     };
     report(args->first, a, limit_a, args->second, limit_b);
     if (args->both) report(args->second, b, limit_b, args->first, limit_a);

@@ -40,11 +40,13 @@ void add_simplify_command(CLI::App& app) {
   cmd->add_option("--max-normal-deviation", args->max_normal_deviation,
                   "the most, in degrees, a collapse may turn a face's normal")
       ->check(CLI::Range(1.0, 90.0));
-  cmd->add_option("--level", args->level, "tessellation level of the limit surface the report measures (0: no report)")
-      ->check(CLI::Range(0, 64));
+  auto* level = cmd->add_option("--level", args->level,
+                                "tessellation level of the limit surface the report measures (0: no report; default 8, "
+                                "lower where that would make more than 2 million triangles)")
+                    ->check(CLI::Range(0, 64));
   cmd->add_flag("--binary", args->binary, "binary PLY");
   add_repair_arguments(cmd, args->repair);
-  cmd->callback([args, vertices, ratio] {
+  cmd->callback([args, vertices, ratio, level] {
     if (vertices->count() == 0 && ratio->count() == 0) throw usage_error("simplify: give --vertices N or --ratio R");
     if (ratio->count() > 0 && !(args->ratio > 0)) throw usage_error("--ratio must be in (0, 1], got 0");
     const CovarianceMesh input = read_mesh_repairing(args->input, args->repair);
@@ -66,9 +68,11 @@ void add_simplify_command(CLI::App& app) {
                 << ": no further collapse keeps the topology, manifoldness and face orientations)";
     std::cout << "\nwrote " << args->output << "\n";
     if (args->level == 0) return;
-    const TriangleMesh limit = naming_input(args->output, [&] { return limit_surface_triangles(s.mesh, args->level); });
-    std::cout << "input vertices to the simplified limit surface (level " << args->level << "):\n"
-              << describe(distances_to_surface(vertex_means(input), limit));
+    const LimitTriangles limit = naming_input(args->output, [&] {
+      return limit_surface_triangles(s.mesh, args->level, {}, level->count() > 0 ? INFINITY : kMeasuredTriangles);
+    });
+    std::cout << "input vertices to the simplified limit surface (level " << limit.level << "):\n"
+              << describe(distances_to_surface(vertex_means(input), limit.triangles));
   });
 }
 

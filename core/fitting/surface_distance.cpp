@@ -9,14 +9,18 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include "core/evaluation/tessellation_size.h"
 #include "core/evaluation/tessellator.h"
 #include "core/mesh/error.h"
 
 namespace gps {
 
-TriangleMesh limit_surface_triangles(const CovarianceMesh& mesh, int level, const PlanOptions& options) {
+LimitTriangles limit_surface_triangles(const CovarianceMesh& mesh, int level, const PlanOptions& options,
+                                       double max_triangles) {
   const PlannedSurface surface(mesh, options);
-  return tessellate(surface.tables().plans, surface.points(), level);
+  const PatchPlans& plans = surface.tables().plans;
+  while (level > 1 && tessellation_size(plans, level).faces > max_triangles) --level;
+  return {tessellate(plans, surface.points(), level), level};
 }
 
 struct SurfaceDistance::Tree {

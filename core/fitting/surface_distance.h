@@ -1,6 +1,7 @@
 #pragma once
 // Distances from points to a surface: how far a mesh's points lie from another mesh's GPS limit
 // surface, summarised as rms, 99th percentile and maximum.
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,9 +12,21 @@
 
 namespace gps {
 
+/// A limit surface as dense triangles, and the tessellation level that made them.
+struct LimitTriangles {
+  TriangleMesh triangles;
+  int level = 0;
+};
+
+/// Triangles a measured surface is kept to unless asked otherwise: with the AABB tree and its search
+/// tree over them, each holds a few hundred bytes.
+inline constexpr double kMeasuredTriangles = 2e6;
+
 /// The limit surface of `mesh` as a dense triangle mesh: every patch tessellated at `level`
-/// (core/evaluation/tessellator.h). Throws gps::Error if the surface cannot be evaluated.
-TriangleMesh limit_surface_triangles(const CovarianceMesh& mesh, int level, const PlanOptions& options = {});
+/// (core/evaluation/tessellator.h), or at the highest lower level (down to 1) whose tessellation
+/// has at most `max_triangles`. Throws gps::Error if the surface cannot be evaluated.
+LimitTriangles limit_surface_triangles(const CovarianceMesh& mesh, int level, const PlanOptions& options = {},
+                                       double max_triangles = INFINITY);
 
 /// Exact distances from points to a triangle mesh, through an AABB tree of its triangles (CGAL).
 class SurfaceDistance {

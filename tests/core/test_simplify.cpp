@@ -255,8 +255,8 @@ TEST(Simplify, SharpEdgeVerticesGetNeedlesAlongTheEdge) {
   CovarianceMesh isotropic = s.mesh;
   isotropic_covariances(isotropic, 0.5);
   const std::vector<Vec3> points = vertex_means(box);
-  const DistanceSummary region = distances_to_surface(points, limit_surface_triangles(s.mesh, 6));
-  const DistanceSummary plain = distances_to_surface(points, limit_surface_triangles(isotropic, 6));
+  const DistanceSummary region = distances_to_surface(points, limit_surface_triangles(s.mesh, 6).triangles);
+  const DistanceSummary plain = distances_to_surface(points, limit_surface_triangles(isotropic, 6).triangles);
   EXPECT_LT(region.rms, plain.rms);
   EXPECT_LT(region.max, plain.max);
 }

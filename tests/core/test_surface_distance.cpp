@@ -77,7 +77,7 @@ CovarianceMesh flat_grid(int n) {
 
 TEST(SurfaceDistance, PointsOffsetFromAPlanarLimitSurfaceAreTheirOffsetAway) {
   const CovarianceMesh grid = flat_grid(8);
-  const TriangleMesh limit = limit_surface_triangles(grid, 4);
+  const TriangleMesh limit = limit_surface_triangles(grid, 4).triangles;
   for (const Vec3& p : limit.positions) EXPECT_NEAR(p[2], 0, 1e-12);
   // Points above and below the grid's middle, well inside the limit surface's boundary.
   std::vector<Vec3> points;
@@ -93,6 +93,17 @@ TEST(SurfaceDistance, PointsOffsetFromAPlanarLimitSurfaceAreTheirOffsetAway) {
   EXPECT_NEAR(s.max, 0.5, 1e-12);
   EXPECT_NEAR(s.length, bounding_box_diagonal(points), 1e-15);
   EXPECT_NEAR(s.relative_max(), 0.5 / s.length, 1e-12);
+}
+
+TEST(SurfaceDistance, LimitTrianglesKeepToTheirCount) {
+  const CovarianceMesh grid = flat_grid(8);  // 128 triangle patches: L² triangles each at level L
+  const LimitTriangles full = limit_surface_triangles(grid, 8);
+  EXPECT_EQ(full.level, 8);
+  EXPECT_EQ(full.triangles.triangles.size(), 128u * 64);
+  const LimitTriangles kept = limit_surface_triangles(grid, 8, {}, 128 * 30);
+  EXPECT_EQ(kept.level, 5);
+  EXPECT_EQ(kept.triangles.triangles.size(), 128u * 25);
+  EXPECT_EQ(limit_surface_triangles(grid, 8, {}, 1).level, 1);
 }
 
 TEST(SurfaceDistance, SummaryIsRmsNearestRankPercentileAndMax) {
