@@ -111,6 +111,29 @@ TriMesh triangles_of(const CovarianceMesh& input, bool& triangulated, double& sc
   return t;
 }
 
+/// The input's creases and corners as OpenMesh features, which the decimater keeps: a vertex on a
+/// crease collapses only along it, and a corner or a vertex where creases meet or end (not two of
+/// them) does not move. Each crease edge keeps its sharpness in `crease`, carried by the edges that
+/// survive the collapses.
+void mark_sharpness(TriMesh& t, const Sharpness& sharpness, OpenMesh::EPropHandleT<double> crease) {
+  for (const auto e : t.edges()) t.property(crease, e) = 0;
+  for (const EdgeCrease& c : sharpness.creases) {
+    const auto h = t.find_halfedge(TriMesh::VertexHandle(c.a), TriMesh::VertexHandle(c.b));
+    if (!h.is_valid()) continue;
+    const auto e = t.edge_handle(h);
+    t.status(e).set_feature(true);
+    t.property(crease, e) = c.sharpness;
+    t.status(TriMesh::VertexHandle(c.a)).set_feature(true);
+    t.status(TriMesh::VertexHandle(c.b)).set_feature(true);
+  }
+  for (const auto v : t.vertices()) {
+    if (!t.status(v).feature() && sharpness.corner(v.idx()) == 0) continue;
+    int creases = 0;
+    for (const auto e : t.ve_range(v)) creases += t.status(e).feature();
+    if (creases != 2 || sharpness.corner(v.idx()) > 0) t.status(v).set_locked(true);
+  }
+}
+
 /// Every vertex's region before any collapse: its quadric, and a third of each face around it.
 void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region) {
   for (const auto v : t.vertices()) t.property(region, v).vertex = v.idx();
@@ -185,6 +208,9 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
   t.request_face_status();
   t.request_face_normals();
   t.update_face_normals();
+  OpenMesh::EPropHandleT<double> crease;
+  t.add_property(crease);
+  mark_sharpness(t, input.sharpness, crease);
   {
     OpenMesh::Decimater::DecimaterT<TriMesh> decimater(t);
     ModRegionT<TriMesh>::Handle priority;
@@ -213,6 +239,12 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
     for (const auto v : t.fv_range(f)) face.push_back(v.idx());
   }
   result.mesh = make_covariance_mesh(means, covariances, faces, "the simplified mesh");
+  for (const auto e : t.edges())
+    if (t.property(crease, e) > 0) result.mesh.sharpness.set_crease(e.v0().idx(), e.v1().idx(), t.property(crease, e));
+  for (const auto v : t.vertices())
+    if (const double corner = input.sharpness.corner(t.property(region, v).vertex); corner > 0)
+      result.mesh.sharpness.set_corner(v.idx(), corner, int(t.n_vertices()));
+  result.mesh.sharpness.normalise();
   return result;
 }
 

@@ -25,8 +25,10 @@ struct SimplifiedMesh {
 /// or no collapse may be done without changing the topology (genus, boundary loops), making a face
 /// non-manifold or turning a face's normal by more than the limit. A coarse vertex keeps the position
 /// of the input vertex it is; its covariance comes from the input faces of its region, the input
-/// vertices collapsed into it (see the .cpp). Throws gps::Error for a target below 4 vertices, or
-/// where the fans of faces of more sides would make an edge non-manifold.
+/// vertices collapsed into it (see the .cpp). The input's creases stay creases: a vertex on one
+/// collapses only along it, so the coarse creases follow the input's; its corners and the vertices
+/// where creases meet or end do not move. Throws gps::Error for a target below 4 vertices, or where
+/// the fans of faces of more sides would make an edge non-manifold.
 SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions& options);
 
 }  // namespace gps

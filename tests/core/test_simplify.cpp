@@ -217,6 +217,57 @@ CovarianceMesh finely_triangulated_box(int n) {
   return m;
 }
 
+TEST(Simplify, CreasesStayOnTheirChainsAndCornersStay) {
+  // The box's 12 edges creased (dihedral 90°), a corner sharpness on one vertex of a side's middle.
+  CovarianceMesh box = finely_triangulated_box(8);
+  for (const auto e : box.mesh.edges()) {
+    const Vec3 a = box.mean(size_t(e.v0().idx())), b = box.mean(size_t(e.v1().idx()));
+    int shared_sides = 0;
+    for (int k = 0; k < 3; ++k) shared_sides += std::abs(std::abs(a[k]) - 1) < 1e-12 && a[k] == b[k];
+    if (shared_sides == 2) box.sharpness.set_crease(e.v0().idx(), e.v1().idx(), 10);
+  }
+  int pinned = -1;
+  for (size_t i = 0; i < box.n_vertices(); ++i)
+    if ((box.mean(i) - Vec3(0, 0, 1)).norm() < 1e-12) pinned = int(i);
+  ASSERT_GE(pinned, 0);
+  box.sharpness.set_corner(pinned, 3, int(box.n_vertices()));
+  box.sharpness.normalise();
+  ASSERT_EQ(box.sharpness.creases.size(), 12u * 8);
+
+  const SimplifiedMesh s = simplified(box, 40);
+  EXPECT_EQ(topology_of(s.mesh).euler, 2);
+  const Sharpness& sharp = s.mesh.sharpness;
+  ASSERT_FALSE(sharp.creases.empty());
+  // Every crease edge runs along a box edge; they form 12 chains between the 8 corners: 3 creases
+  // at a corner, 2 at every other vertex on them.
+  std::map<int, int> creases_at;
+  for (const EdgeCrease& c : sharp.creases) {
+    EXPECT_EQ(c.sharpness, 10);
+    const Vec3 a = s.mesh.mean(size_t(c.a)), b = s.mesh.mean(size_t(c.b));
+    int shared_sides = 0;
+    for (int k = 0; k < 3; ++k) shared_sides += std::abs(std::abs(a[k]) - 1) < 1e-12 && a[k] == b[k];
+    EXPECT_EQ(shared_sides, 2) << a.transpose() << " to " << b.transpose();
+    ++creases_at[c.a], ++creases_at[c.b];
+  }
+  int corners = 0;
+  for (const auto& [v, n] : creases_at) {
+    const Vec3 p = s.mesh.mean(size_t(v));
+    const bool corner = (p.cwiseAbs() - Vec3::Ones()).norm() < 1e-12;
+    corners += corner;
+    EXPECT_EQ(n, corner ? 3 : 2) << "vertex " << v << " at " << p.transpose();
+  }
+  EXPECT_EQ(corners, 8);
+  // The corner sharpness stays on the vertex at (0, 0, 1), which did not move.
+  int kept = 0;
+  for (size_t i = 0; i < s.mesh.n_vertices(); ++i)
+    if (sharp.corner(int(i)) > 0) {
+      ++kept;
+      EXPECT_EQ(s.mesh.mean(i), Vec3(0, 0, 1));
+      EXPECT_EQ(sharp.corner(int(i)), 3);
+    }
+  EXPECT_EQ(kept, 1);
+}
+
 TEST(Simplify, SharpEdgeVerticesGetNeedlesAlongTheEdge) {
   const CovarianceMesh box = finely_triangulated_box(16);
   ASSERT_EQ(topology_of(box).euler, 2);
