@@ -26,9 +26,8 @@ void add_simplify_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "simplify",
       "Decimate a triangle mesh (faces of more sides are fanned into triangles first) by edge collapses that keep "
-      "its topology and creases, each coarse vertex carrying the Gaussian of the input region collapsed into it; then "
-      "report "
-      "the distances of the input's vertices to the result's limit surface");
+      "its topology and creases, each coarse vertex carrying the Gaussian of the input region collapsed into it; "
+      "then report the distances of the input's vertices to the result's limit surface");
   cmd->add_option("input", args->input, "input mesh (its covariances, if any, are not used)")->required();
   cmd->add_option("-o,--output", args->output, "output covariance PLY")->required();
   auto* vertices = cmd->add_option("--vertices", args->vertices, "vertices to keep (at least 4)")
