@@ -13,6 +13,7 @@
 #include "core/mesh/error.h"
 #include "core/evaluation/patch_eval.h"
 #include "core/reference/reference_subdivision.h"
+#include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
 #include "core/plans/stencil_table.h"
 #include "core/evaluation/tessellator.h"
@@ -121,6 +122,24 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
         EXPECT_LT(e.position, 5e-7) << name << " level " << level;
         EXPECT_LT(e.normal_degrees, 0.05) << name << " level " << level;
       }
+    }
+  }
+}
+
+// Creased meshes (semi-sharp and infinitely sharp edges and corners, random anisotropic covariances):
+// the same plans on the GPU, with one-sided normals along the creases, within the bounds above.
+TEST_F(GpuTest, CreasedPatchesMatchTheCpuEvaluator) {
+  for (const char* name : {"creased_cube", "creased_cylinder"}) {
+    const CovarianceMesh mesh =
+        test::with_random_covariances(read_mesh(std::string(GPS_TEST_DATA_DIR) + "/" + name + ".ply"), 11);
+    ASSERT_FALSE(mesh.sharpness.empty()) << name;
+    for (const float level : {1.0f, 7.0f, 64.0f}) {
+      const VertexErrors e = compare_vertices(mesh, PlanOptions{}, level);
+      std::printf("%-16s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.4f degrees, %zu vertices\n",
+                  name, level, e.position, e.normal_degrees, e.count);
+      EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
+      EXPECT_LT(e.position, 5e-7) << name << " level " << level;
+      EXPECT_LT(e.normal_degrees, 0.05) << name << " level " << level;
     }
   }
 }

@@ -9,6 +9,7 @@
 #include <map>
 #include <tuple>
 
+#include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
 #include "render/image/image_io.h"
 #include "render/gl/render_target.h"
@@ -109,7 +110,10 @@ DrawOptions flagging_options() {
 }
 
 CovarianceMesh crack_test_mesh(const std::string& name) {
-  return name == "open-cylinder" ? test::open_cylinder_mesh() : make_sample(name);
+  if (name == "open-cylinder") return test::open_cylinder_mesh();
+  // Creased meshes (tests/data): semi-sharp and infinitely sharp edges and corners.
+  if (name.rfind("creased", 0) == 0) return read_mesh(std::string(GPS_TEST_DATA_DIR) + "/" + name + ".ply");
+  return make_sample(name);
 }
 
 // A closed mesh seen from outside shows no back face unless the tessellation cracks; the check fails
@@ -124,7 +128,8 @@ TEST_F(GpuTest, TessellationIsCrackFree) {
     EXPECT_EQ(holes, 0) << what << " (see crack-" << what << ".png)";
     if (cracks || holes) write_image("crack-" + what + ".png", f.color);
   };
-  for (const char* name : {"cube", "wirecube", "cylinder", "pawn", "open-cylinder", "icosphere"}) {
+  for (const char* name :
+       {"cube", "wirecube", "cylinder", "pawn", "open-cylinder", "icosphere", "creased_cube", "creased_cylinder"}) {
     const CovarianceMesh mesh = crack_test_mesh(name);
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh);
@@ -215,9 +220,9 @@ TEST_F(GpuTest, PinholeDetectorFindsOnePunchedPixel) {
 
 INSTANTIATE_TEST_SUITE_P(
     Samples, PinholeTest,
-    ::testing::ValuesIn([] {  // every built-in sample, and the open cylinder of quads and triangles
+    ::testing::ValuesIn([] {  // every built-in sample, the open cylinder of quads and triangles, creased meshes
       std::vector<std::string> names = sample_names();
-      names.push_back("open-cylinder");
+      names.insert(names.end(), {"open-cylinder", "creased_cube", "creased_cylinder"});
       return names;
     }()),
     [](const auto& info) {
