@@ -1,0 +1,126 @@
+// Creases against the same mesh without them: per mesh and crease kind, the live frame (every
+// patch evaluated, surface cache off) at equal tessellation, the preprocessing (plans and stencils)
+// and the tables' memory. Crease kinds: none ("smooth"), the same edges infinitely sharp ("sharp"),
+// semi-sharp at 2.5 ("semi2.5"). The edges: those of the wirecube's square beams (sharp by angle,
+// every beam edge) and three great circles of the sphere and the torus (edges in a coordinate
+// plane). Run with --benchmark_enable_random_interleaving=true and --benchmark_repetitions=N so that
+// a changing machine load hits every kind alike.
+#include <benchmark/benchmark.h>
+#include <glad/gl.h>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "bench/gl_bench_cases.h"
+#include "bench/run_benchmarks.h"
+#include "core/mesh/crease_by_angle.h"
+#include "core/mesh/error.h"
+#include "core/mesh/samples.h"
+#include "core/plans/planned_surface.h"
+#include "render/gl/render_target.h"
+#include "render/pipeline/surface_renderer.h"
+#include "view/camera.h"
+
+namespace {
+
+using gps::bench::MeshCase;
+
+const std::vector<std::pair<const char*, double>>& crease_kinds() {
+  static const std::vector<std::pair<const char*, double>> kinds = {
+      {"smooth", 0.0}, {"sharp", gps::kInfiniteSharpness}, {"semi2.5", 2.5}};
+  return kinds;
+}
+
+// The mesh with its chosen edges at `sharpness` (none at 0).
+gps::CovarianceMesh creased_sample(const MeshCase& m, double sharpness) {
+  gps::CovarianceMesh mesh = gps::make_sample(m.name, m.faces);
+  if (sharpness == 0.0) return mesh;
+  if (m.name == "wirecube") {
+    gps::crease_by_angle(mesh, 30.0);
+    for (auto& c : mesh.sharpness.creases) c.sharpness = sharpness;
+    return mesh;
+  }
+  const double diag = gps::bounding_box_diagonal(mesh);
+  for (const auto& e : mesh.mesh.edges()) {
+    const gps::Vec3 a = gps::to_vec3(mesh.mesh.point(e.v0())), b = gps::to_vec3(mesh.mesh.point(e.v1()));
+    for (int axis = 0; axis < 3; ++axis)
+      if (std::abs(a[axis]) < 1e-9 * diag && std::abs(b[axis]) < 1e-9 * diag)
+        mesh.sharpness.set_crease(e.v0().idx(), e.v1().idx(), sharpness);
+  }
+  return mesh;
+}
+
+const gps::CovarianceMesh& sample(const MeshCase& m, int kind) {
+  static std::map<std::string, gps::CovarianceMesh> meshes;
+  const std::string key = m.id() + "/" + crease_kinds()[size_t(kind)].first;
+  auto it = meshes.find(key);
+  if (it == meshes.end()) it = meshes.emplace(key, creased_sample(m, crease_kinds()[size_t(kind)].second)).first;
+  return it->second;
+}
+
+// One live frame at a uniform level (level > 0) or adaptive 6-pixel edges (level 0), 512x512.
+void BM_Frame(benchmark::State& state, MeshCase m, int kind, int level) {
+  gps::bench::context().make_current();
+  const gps::CovarianceMesh& mesh = sample(m, kind);
+  gps::SurfaceRenderer renderer;
+  try {
+    renderer.set_mesh(mesh);
+  } catch (const gps::Error& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  const gps::Camera camera = gps::frame_mesh(mesh);
+  gps::RenderTarget target(512, 512);
+  gps::DrawOptions o;
+  o.surface_cache = false;
+  o.level = float(level > 0 ? level : 8);
+  o.pixels = level > 0 ? 0.0f : 6.0f;
+  renderer.draw(target, camera, o);
+  glFinish();
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    renderer.draw(target, camera, o);
+    glFinish();
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  state.counters["creased_edges"] = double(mesh.sharpness.creases.size());
+  state.counters["gpu_buffer_bytes"] = double(renderer.buffer_bytes());
+}
+
+// Plans and stencils of the mesh (CPU), with the tables' bytes.
+void BM_Preprocess(benchmark::State& state, MeshCase m, int kind) {
+  const gps::CovarianceMesh& mesh = sample(m, kind);
+  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  size_t bytes = 0, rows = 0, nodes = 0;
+  for (auto _ : state) {
+    const gps::SurfaceTables t = gps::build_surface_plans(topology, gps::PlanOptions{}, mesh.sharpness);
+    bytes = t.bytes();
+    rows = size_t(t.stencils.n_rows());
+    nodes = t.plans.nodes.size();
+  }
+  state.counters["creased_edges"] = double(mesh.sharpness.creases.size());
+  state.counters["table_bytes"] = double(bytes);
+  state.counters["stencil_rows"] = double(rows);
+  state.counters["node_ints"] = double(nodes);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<MeshCase> meshes = {{"wirecube", 0}, {"torus", 0}, {"sphere", 6144}};
+  for (const MeshCase& m : meshes)
+    for (size_t k = 0; k < crease_kinds().size(); ++k) {
+      const std::string id = m.id() + "/" + crease_kinds()[k].first;
+      benchmark::RegisterBenchmark(("Preprocess/" + id).c_str(), BM_Preprocess, m, int(k))
+          ->Unit(benchmark::kMillisecond);
+      for (const int level : {4, 16, 0})
+        benchmark::RegisterBenchmark(("Frame/" + id + "/" + gps::bench::setting_name(level)).c_str(), BM_Frame, m,
+                                     int(k), level)
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond);
+    }
+  return gps::bench::run_benchmarks(argc, argv);
+}
