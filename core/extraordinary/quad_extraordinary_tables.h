@@ -27,20 +27,15 @@
 #include <optional>
 #include <vector>
 
+#include "core/extraordinary/neighbourhood_signature.h"
 #include "core/plans/local_mesh.h"
 #include "core/plans/patch_basis.h"
 
 namespace gps {
 
-struct QuadExtraordinaryNeighbourhood {
-  std::vector<int> points;     // vertices of the LocalMesh, in canonical order; the corners first
-  std::vector<int> signature;  // per face in walk order: its size, then its vertices' canonical numbers
-};
-
-/// The neighbourhood of the quad with corners c (in its face's order, c[0] the irregular one);
-/// empty where the faces around the corners are not reached by walking across their edges.
-std::optional<QuadExtraordinaryNeighbourhood> quad_extraordinary_neighbourhood(const LocalMesh& m,
-                                                                               const std::array<int, 4>& c);
+/// The neighbourhood of the quad with corners c (in its face's order, c[0] the irregular one)
+/// (core/extraordinary/neighbourhood_signature.h).
+std::optional<NeighbourhoodSignature> quad_extraordinary_neighbourhood(const LocalMesh& m, const std::array<int, 4>& c);
 
 /// The tables of every signature met while building one set of plans, shared by the threads.
 class QuadExtraordinaryTableCache {

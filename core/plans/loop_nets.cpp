@@ -86,11 +86,11 @@ int net_index(int i, int j) {
   return -1;
 }
 
-// The six lattice neighbours of a regular vertex c, `first` lying in direction d0; a boundary
-// vertex's two missing ones are phantoms, reflections across its boundary edges.
-std::array<VertexCombination, 6> lattice_ring(const TriangleWalker& w, int c, int first, int d0) {
+// The six lattice neighbours of a regular vertex c with the counter-clockwise fan `fan` (a boundary
+// vertex's from its boundary start), `first` lying in direction d0; a boundary vertex's two missing
+// ones are phantoms, reflections across its boundary edges.
+std::array<VertexCombination, 6> lattice_ring(const std::vector<int>& fan, int c, int first, int d0) {
   std::array<VertexCombination, 6> ring;
-  const std::vector<int> fan(w.fan(c), w.fan(c) + w.fan_size(c));
   const int shift = int(std::find(fan.begin(), fan.end(), first) - fan.begin());
   for (size_t j = 0; j < fan.size(); ++j) ring[size_t((d0 + int(j) - shift + 12) % 6)] = {{fan[j], 1.0}};
   if (fan.size() == 4) {  // regular boundary: d(f3)+1 = f3 − f2 + c, d(f0)−1 = f0 − f1 + c
@@ -106,6 +106,11 @@ std::array<VertexCombination, 6> lattice_ring(const TriangleWalker& w, int c, in
 }  // namespace
 
 std::array<VertexCombination, 12> loop_regular_net(const TriangleWalker& w, int v0, int v1, int v2) {
+  const auto fan = [&](int v) { return std::vector<int>(w.fan(v), w.fan(v) + w.fan_size(v)); };
+  return loop_regular_net(v0, v1, v2, {fan(v0), fan(v1), fan(v2)});
+}
+
+std::array<VertexCombination, 12> loop_regular_net(int v0, int v1, int v2, const std::array<std::vector<int>, 3>& fans) {
   std::array<VertexCombination, 12> net;
   net[0] = {{v0, 1.0}};
   net[1] = {{v1, 1.0}};
@@ -113,7 +118,7 @@ std::array<VertexCombination, 12> loop_regular_net(const TriangleWalker& w, int 
   // Each corner: its lattice position and the direction of the next corner from it.
   const int corner[3] = {v0, v1, v2}, next[3] = {v1, v2, v0}, at[3][2] = {{0, 0}, {1, 0}, {0, 1}}, d0[3] = {0, 2, 4};
   for (int k = 0; k < 3; ++k) {
-    const auto ring = lattice_ring(w, corner[k], next[k], d0[k]);
+    const auto ring = lattice_ring(fans[size_t(k)], corner[k], next[k], d0[k]);
     for (int d = 0; d < 6; ++d) {
       const int n = net_index(at[k][0] + kDirection[d][0], at[k][1] + kDirection[d][1]);
       if (n < 0) continue;

@@ -62,6 +62,9 @@ private:
 /// of a triangle (a, b, c) the phantom point is a + b − c: Loop's rules on the extended net then
 /// give the boundary rules of core/reference/loop.h (edge midpoint, (a + 6v + b)/8).
 std::array<VertexCombination, 12> loop_regular_net(const TriangleWalker& walker, int v0, int v1, int v2);
+/// The same from the corners' counter-clockwise fans (a crease vertex's: its sector's, from the crease),
+/// six neighbours or four where the corner is on a boundary or an infinitely sharp crease.
+std::array<VertexCombination, 12> loop_regular_net(int v0, int v1, int v2, const std::array<std::vector<int>, 3>& fans);
 
 /// The points of the triangle (v, a, b) that Loop subdivision near v reads: v, the ring of v from
 /// a (TriangleWalker::ring_from), then the rings of a and b (from v) without repeats. With v
