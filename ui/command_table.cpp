@@ -28,12 +28,21 @@ std::string Shortcut::text() const {
 }
 
 bool CommandTable::handle_key(int key, bool ctrl, bool shift, bool alt) const {
+  const auto bound = [&](const Command& c) {
+    return c.action && std::any_of(c.shortcuts.begin(), c.shortcuts.end(),
+                                   [&](const Shortcut& s) { return s.matches(key, ctrl, shift, alt); });
+  };
+  // A command enabled only in some states takes a shared key first while it is enabled.
   for (const Command& c : commands_)
-    for (const Shortcut& s : c.shortcuts)
-      if (s.matches(key, ctrl, shift, alt) && c.action) {
-        if (is_enabled(c)) c.action();
-        return true;
-      }
+    if (bound(c) && c.enabled && c.enabled()) {
+      c.action();
+      return true;
+    }
+  for (const Command& c : commands_)
+    if (bound(c)) {
+      if (is_enabled(c)) c.action();
+      return true;
+    }
   return false;
 }
 

@@ -33,7 +33,9 @@ struct Command {
 class CommandTable {
 public:
   void add(Command command) { commands_.push_back(std::move(command)); }
-  /// Runs the enabled command bound to this key and these modifiers; false when there is none.
+  /// Runs the enabled command bound to this key and these modifiers; false when there is none. Where
+  /// a key is bound to several, one with an enabled() test that passes now comes first (Shift+E:
+  /// crease with edges selected, else the ellipsoids' toggle).
   bool handle_key(int key, bool ctrl, bool shift, bool alt) const;
   /// Runs the command with this label (menus and tests); false when there is none or it is disabled.
   bool run(const std::string& label) const;

@@ -231,6 +231,7 @@ void EditorApp::draw_ui() {
   draw_handles_and_box();
   draw_modelling_overlay();
   if (view_.show_inspector) inspector_.draw(document_, selection_, reach_options_, &view_.show_inspector);
+  if (const auto request = inspector_.take_sharpness_request()) apply_sharpness(request->corners, request->sharpness);
   if (view_.show_view) {
     const ViewPanelChanges c = draw_view_panel(view_, &view_.show_view);
     if (c.depth) try {

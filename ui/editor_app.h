@@ -4,7 +4,7 @@
 // editor_actions.cpp (open, save, undo, the unsaved-changes prompt), editor_commands.cpp (the
 // command table: keys, menus, help), editor_selection_commands.cpp (selection modes and tools),
 // editor_modelling.cpp (the Mesh menu's operations) and editor_modal_tools.cpp (G / S / R, extrude,
-// loop cut and inset following the mouse).
+// loop cut, inset and crease following the mouse).
 #include <array>
 #include <chrono>
 #include <functional>
@@ -107,6 +107,11 @@ private:
   void update_inset(double thickness);
   void follow_inset(glm::vec2 cursor);
   void end_inset(bool keep);
+  void start_crease(bool corners);
+  void preview_crease(double sharpness);
+  void end_crease(bool keep);
+  Modelled creased(const CovarianceMesh& mesh, bool corners, double sharpness) const;
+  void apply_sharpness(bool corners, double sharpness);
   void draw_delete_items();
   void draw_merge_items();
   void draw_add_items();
@@ -194,6 +199,16 @@ private:
     bool applied = false;
   };
   std::optional<InsetTool> inset_;
+  // The crease tool: the selected edges' sharpness (or the vertices' corner sharpness) followed
+  // until confirmed; the surface is re-planned for the value shown, the document changes on confirm.
+  struct CreaseTool {
+    bool corners = false;  // the vertices' corner sharpness, not the edges'
+    double start = 0.0, value = 0.0;
+    glm::vec2 start_cursor{0.0f};
+    std::string typed;
+    std::shared_ptr<const CovarianceMesh> shown;  // the mesh the surface was planned for
+  };
+  std::optional<CreaseTool> crease_;
   std::string popup_request_;  // a popup menu (Delete, Merge, Add) a key asked for
   std::string last_summary_;   // what the last operation did
 

@@ -1,6 +1,7 @@
 // The editor's modal tools: Blender's G / S / R transforms of the selected Gaussians, and the tools
 // that follow the mouse after a Mesh operation: extrude (a move along the extrusion's normal), loop
-// cut (a ring previewed under the cursor, then a slide) and inset; their events and drawing.
+// cut (a ring previewed under the cursor, then a slide), inset and crease (a sharpness followed);
+// their events and drawing.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -12,7 +13,9 @@
 #include "core/edit/covariance_edit.h"
 #include "core/mesh/error.h"
 #include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/sharpness.h"
 #include "core/modelling/bridge.h"
+#include "core/modelling/crease_edges.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/edge_operations.h"
 #include "core/modelling/extrude.h"
@@ -23,6 +26,7 @@
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/primitives.h"
 #include "core/modelling/subdivide_mesh.h"
+#include "ui/crease_tool.h"
 #include "ui/editor_app.h"
 
 namespace gps {
@@ -312,6 +316,79 @@ void EditorApp::end_inset(bool keep) {
   inset_.reset();
 }
 
+// ---- Crease ----
+
+Modelled EditorApp::creased(const CovarianceMesh& mesh, bool corners, double sharpness) const {
+  const std::vector<int>& selected = selection_.vertices();
+  if (corners) return set_corner(mesh, with_mirrored_vertices(mesh, selected, reach_options_), sharpness);
+  return set_crease(mesh, with_mirrored_edges(mesh, edges_within(mesh, selected), reach_options_), sharpness);
+}
+
+void EditorApp::apply_sharpness(bool corners, double sharpness) {
+  const std::vector<int> before = selection_.vertices();
+  const bool done = run_operation(corners ? "corner" : "crease",
+                                  [&](const CovarianceMesh& m) { return creased(m, corners, sharpness); });
+  if (done) selection_.select(before, false);  // the selection as it was (set_crease selects the edges' ends)
+}
+
+void EditorApp::start_crease(bool corners) {
+  if (modal_active() || mode_ != Mode::none || selection_.empty()) return;
+  const CovarianceMesh& mesh = document_.mesh();
+  const auto edges = edges_within(mesh, selection_.vertices());
+  if (!corners && edges.empty()) {
+    operation_note("crease refused: select an edge or more (both ends of each)", true);
+    return;
+  }
+  CreaseTool tool;
+  tool.corners = corners;
+  const double common = corners ? common_corner(mesh, selection_.vertices()) : common_crease(mesh, edges);
+  tool.start = std::isfinite(common) ? std::min(common, kInfiniteSharpness) : 0.0;
+  tool.value = tool.start;
+  tool.start_cursor = input_.cursor;
+  tool.shown = std::make_shared<const CovarianceMesh>(mesh);
+  crease_ = std::move(tool);
+  preview_crease(crease_->start);
+}
+
+// Re-plans the surface for the sharpness (a change of sharpness changes the plans, as a change of
+// topology does); the document keeps its mesh until the tool is confirmed.
+void EditorApp::preview_crease(double sharpness) {
+  CreaseTool& tool = *crease_;
+  const char* what = tool.corners ? "corner" : "crease";
+  const std::string typed = tool.typed.empty() ? "" : "  [" + tool.typed + "]";
+  try {
+    if (sharpness != tool.value) {
+      auto shown = std::make_shared<const CovarianceMesh>(creased(document_.mesh(), tool.corners, sharpness).mesh);
+      renderer_->set_mesh(*shown, view_.plans());
+      tool.shown = std::move(shown);
+      tool.value = sharpness;
+    }
+    status_ = std::string(what) + ": " + sharpness_text(sharpness) + typed +
+              "  (drag left/right or type 0-10, 10 = ∞; click or Enter confirms, Esc cancels)";
+    status_error_ = false;
+  } catch (const Error& e) {
+    status_ = std::string(what) + typed + ": " + e.what();
+    status_error_ = true;
+  }
+}
+
+void EditorApp::end_crease(bool keep) {
+  const CreaseTool tool = *crease_;
+  crease_.reset();
+  const char* what = tool.corners ? "corner" : "crease";
+  if (keep && tool.shown->sharpness != document_.mesh().sharpness) {
+    apply_sharpness(tool.corners, tool.value);  // one undo step; re-plans for the document's mesh
+    return;
+  }
+  try {  // the surface planned for the document's sharpness again
+    renderer_->set_mesh(document_.mesh(), view_.plans());
+  } catch (const Error& e) {
+    set_status(e.what(), true);
+    return;
+  }
+  set_status(keep ? std::string(what) + ": nothing changed" : std::string(what) + " cancelled", false);
+}
+
 // ---- Events of the modal tools ----
 
 bool EditorApp::modal_event(const InputEvent& e) {
@@ -380,6 +457,23 @@ bool EditorApp::modal_event(const InputEvent& e) {
     } else if (key && e.key == GLFW_KEY_BACKSPACE && !inset_->typed.empty()) {
       inset_->typed.pop_back();
       if (const auto t = parse_number(inset_->typed)) update_inset(*t);
+    } else if (e.type == InputEvent::Type::scroll) {
+      return false;
+    }
+    return true;
+  }
+  if (crease_) {
+    if (confirm || cancel) {
+      end_crease(confirm);
+    } else if (e.type == InputEvent::Type::move && crease_->typed.empty()) {
+      preview_crease(sharpness_after_drag(crease_->start, e.position.x - crease_->start_cursor.x, viewport().width));
+    } else if (e.type == InputEvent::Type::text && is_number_char(e.codepoint)) {
+      crease_->typed += char(e.codepoint);
+      if (const auto t = parse_number(crease_->typed)) preview_crease(*t);
+    } else if (key && e.key == GLFW_KEY_BACKSPACE && !crease_->typed.empty()) {
+      crease_->typed.pop_back();
+      const auto t = parse_number(crease_->typed);
+      preview_crease(t ? *t : crease_->start);
     } else if (e.type == InputEvent::Type::scroll) {
       return false;
     }

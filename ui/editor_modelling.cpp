@@ -90,6 +90,17 @@ void EditorApp::build_modelling_commands() {
            set_status(std::string("pivot: ") + pivot_name(transform_pivot_), false);
          }});
   t.add({"Mesh", "Extrude", {key(GLFW_KEY_E)}, [this] { start_extrude(); }, selected, nullptr, nullptr, true});
+  const auto has_edge = [this] { return !edges_within(document_.mesh(), selection_.vertices()).empty(); };
+  t.add({"Mesh",
+         "Crease (Shift+E; drag or type 0-10, 10 = ∞)",
+         {key(GLFW_KEY_E, false, true)},
+         [this] { start_crease(false); },
+         has_edge});
+  t.add({"Mesh",
+         "Corner sharpness (Ctrl+Shift+V)",
+         {key(GLFW_KEY_V, true, true)},
+         [this] { start_crease(true); },
+         selected});
   t.add({"Mesh", "Loop cut (then wheel: cuts)", {key(GLFW_KEY_R, true)}, [this] { start_loop_cut(); }});
   t.add({"Mesh", "Inset faces", {key(GLFW_KEY_I)}, [this] { start_inset(); }, selected});
   t.add({"Mesh",
@@ -211,7 +222,8 @@ void EditorApp::install(const Modelled& result) {
 }
 
 void EditorApp::topology_changed(const std::vector<int>& selection) {
-  view_.triangle_mesh = scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
+  view_.triangle_mesh =
+      scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}, document_.mesh().sharpness) == Scheme::loop;
   check_finite_ = true;
   drag_.reset();
   reach_.clear();
@@ -232,7 +244,7 @@ void EditorApp::operation_note(const std::string& message, bool error) {
   inspector_.set_note(message, error);
 }
 
-bool EditorApp::modal_active() const { return transform_ || loop_cut_ || inset_; }
+bool EditorApp::modal_active() const { return transform_ || loop_cut_ || inset_ || crease_; }
 
 // The popup menus of X, M and Shift+A, and the loop cut's ring preview.
 

@@ -7,6 +7,7 @@
 
 #include "render/pipeline/surface_point.h"
 #include "ui/camera_control.h"
+#include "ui/crease_overlay.h"
 #include "ui/editor_app.h"
 #include "ui/ellipsoid_scope.h"
 #include "ui/handle_overlay.h"
@@ -242,6 +243,7 @@ void EditorApp::draw_handles_and_box() {
     if (gizmo && mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
       lit = hit_handle(v, input_.cursor, *gizmo, selection_.active(), kPickRadius);
   }
+  if (view_.draw.mesh_lines) draw_crease_overlay(*draw, v, crease_ ? *crease_->shown : document_.mesh());
   draw_selection_overlay(*draw, v, document_.mesh(), selection_.vertices(), select_mode_);
   draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, lit);
   gizmo_box_.reset();

@@ -9,7 +9,10 @@
 #include <cstdlib>
 #include <string>
 
+#include "core/mesh/sharpness.h"
+#include "core/modelling/mesh_queries.h"
 #include "ui/covariance_presets.h"
+#include "ui/crease_tool.h"
 
 namespace gps {
 
@@ -239,6 +242,38 @@ void InspectorPanel::draw_presets(EditorDocument& document, const std::vector<in
   document.commit_edit();
 }
 
+// One sharpness field: typed (applied when the field is left, Escape cancels) or dragged on the
+// slider beside it (applied on release); "mixed" where the selection's values differ.
+void InspectorPanel::sharpness_field(const char* label, double value, bool corners) {
+  const bool mixed = !std::isfinite(value);
+  ImGui::PushID(label);
+  if (const auto typed = number_field("##typed", mixed ? 0.0 : value, mixed, 2, 80)) sharpness_typed_ = *typed;
+  if (ImGui::IsItemDeactivated()) {
+    if (sharpness_typed_ && !ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
+      sharpness_request_ = SharpnessRequest{corners, *sharpness_typed_};
+    sharpness_typed_.reset();
+  }
+  ImGui::SameLine();
+  float dragged = mixed ? 0.0f : float(std::min(value, kInfiniteSharpness));
+  ImGui::SetNextItemWidth(110);
+  ImGui::SliderFloat("##slider", &dragged, 0.0f, float(kInfiniteSharpness),
+                     !mixed && is_infinitely_sharp(value) ? "∞" : "%.1f");
+  if (ImGui::IsItemDeactivatedAfterEdit()) sharpness_request_ = SharpnessRequest{corners, double(dragged)};
+  ImGui::SameLine();
+  ImGui::TextUnformatted(label);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(corners ? "corner sharpness of the selected vertices: 0 smooth, 10 = ∞ (Ctrl+Shift+V)"
+                              : "crease sharpness of the selected edges: 0 smooth, 10 = ∞ (Shift+E)");
+  ImGui::PopID();
+}
+
+void InspectorPanel::draw_sharpness(const EditorDocument& document, const std::vector<int>& vertices) {
+  const CovarianceMesh& mesh = document.mesh();
+  const auto edges = edges_within(mesh, vertices);
+  if (!edges.empty()) sharpness_field("crease", common_crease(mesh, edges), false);
+  sharpness_field("corner", common_corner(mesh, vertices), true);
+}
+
 void InspectorPanel::draw(EditorDocument& document, const Selection& selection, ReachOptions& reach, bool* open) {
   if (precise_id_ != 0 && ImGui::GetActiveID() != precise_id_) precise_id_ = 0;  // its field went away while edited
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
@@ -272,6 +307,7 @@ void InspectorPanel::draw(EditorDocument& document, const Selection& selection, 
     draw_rotation(document, vertices, active);
     const Mat3& c = document.mesh().covariance(size_t(active));
     ImGui::TextDisabled("Σ = [%.4g %.4g %.4g; %.4g %.4g; %.4g]", c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2));
+    draw_sharpness(document, vertices);
     ImGui::Separator();
     draw_presets(document, vertices);
   }

@@ -5,9 +5,11 @@
 // Fields show rounded values of a fixed width; a field being edited holds the full-precision value.
 // Every change is one undo step (one per preset, one per numeric entry); with mirror editing on, the
 // mirror image of each selected vertex takes the mirrored change, as in a drag. The panel also says
-// what the last modelling operation did or why it was refused.
+// what the last modelling operation did or why it was refused, and the sharpness of the selected
+// edges (crease) and vertices (corner), which the editor applies as a modelling step.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/edit/covariance_edit.h"
@@ -21,6 +23,13 @@ class InspectorPanel {
 public:
   /// Draws the panel (between ImGui::NewFrame and ImGui::Render); edits go through the document.
   void draw(EditorDocument& document, const Selection& selection, ReachOptions& reach, bool* open);
+  /// A sharpness the user entered for the selected edges (corners: the selected vertices' corner
+  /// sharpness) once the entry is finished, which the editor applies as one undo step; taken once.
+  struct SharpnessRequest {
+    bool corners = false;
+    double sharpness = 0.0;
+  };
+  std::optional<SharpnessRequest> take_sharpness_request() { return std::exchange(sharpness_request_, std::nullopt); }
   /// What the last modelling operation did (or, `error`, why it was refused), shown at the top.
   void set_note(const std::string& note, bool error) { note_ = note, note_error_ = error; }
 
@@ -29,6 +38,8 @@ private:
   void draw_sigmas(EditorDocument& document, const std::vector<int>& vertices, int active);
   void draw_rotation(EditorDocument& document, const std::vector<int>& vertices, int active);
   void draw_presets(EditorDocument& document, const std::vector<int>& vertices);
+  void draw_sharpness(const EditorDocument& document, const std::vector<int>& vertices);
+  void sharpness_field(const char* label, double value, bool corners);
   void track_entry(EditorDocument& document);
   void mirror_change(EditorDocument& document, const std::vector<int>& vertices) const;
   std::optional<double> number_field(const char* label, double value, bool mixed, int decimals, float width);
@@ -41,6 +52,8 @@ private:
   ReachOptions reach_;        // as drawn: whether a change is mirrored, and across which plane
   std::string note_;
   bool note_error_ = false;
+  std::optional<double> sharpness_typed_;  // the sharpness field's text while it is being edited
+  std::optional<SharpnessRequest> sharpness_request_;
 };
 
 /// Euler angles (degrees, rotations about x then y then z: R = Rz·Ry·Rx) of a rotation matrix.
