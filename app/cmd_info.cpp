@@ -54,7 +54,7 @@ void print_info(const std::string& path, const RepairArguments& repair) {
   for (int f = 0; f < t.n_faces(); ++f) ++face_sizes[t.face_size(f)];
   // Extraordinary by the rules of the scheme the surface is drawn with: regular interior valence 4
   // and boundary 3 under Catmull-Clark, 6 and 4 under Loop.
-  const Scheme scheme = scheme_for(t, PlanOptions{}, m.sharpness);
+  const Scheme scheme = scheme_for(t, PlanOptions{});
   const int regular_interior = scheme == Scheme::loop ? 6 : 4, regular_boundary = scheme == Scheme::loop ? 4 : 3;
   int boundary_edges = 0, extraordinary = 0;
   for (int e = 0; e < c.n_edges(); ++e) boundary_edges += c.is_boundary_edge(e);

@@ -88,7 +88,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   Camera camera = frame_mesh(mesh, a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3));
   camera.up_axis = up_axis_named(a.up);
   if (a.reference >= 1 && a.reference <= 6 &&
-      scheme_for(topology_of(mesh.mesh), a.plans.options(), mesh.sharpness) == Scheme::catmull_clark) {
+      scheme_for(topology_of(mesh.mesh), a.plans.options()) == Scheme::catmull_clark) {
     // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level
     // then shows the two surfaces' values alone, not two draws' rounding (render/comparison/reference_triangles.h).
     DrawOptions at_level = o;

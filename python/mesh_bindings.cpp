@@ -136,7 +136,7 @@ void add_mesh_bindings(py::module_& m) {
         if (levels < 0 || levels > 8) throw py::value_error("levels: expected 0..8, got " + std::to_string(levels));
         const PlanOptions named = plan_options_named(scheme, loop_beta);
         SubdivisionOptions o;
-        o.scheme = scheme_for(topology_of(mesh.mesh), named, mesh.sharpness);
+        o.scheme = scheme_for(topology_of(mesh.mesh), named);
         o.levels = levels;
         o.limit = limit;
         o.loop_beta = named.loop_beta;

@@ -28,6 +28,37 @@ Eigen::MatrixXd restrict_rows(const std::vector<Eigen::VectorXd>& rows, const st
 
 }  // namespace
 
+void write_loop_extraordinary_table(const Eigen::MatrixXd (&nets)[3], const Eigen::MatrixXd& step, double* table) {
+  const int k = int(step.rows());
+  Eigen::MatrixXd power = Eigen::MatrixXd::Identity(k, k);
+  for (int level = 0; level < kExtraordinaryLevels; ++level) {
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::MatrixXd block = nets[c] * power;
+      for (int j = 0; j < 12; ++j)
+        for (int i = 0; i < k; ++i) table[size_t((3 * level + c) * 12 + j) * size_t(k) + size_t(i)] = block(j, i);
+    }
+    power = step * power;
+  }
+  // Limit masks at v (core/extraordinary/extraordinary_corner_masks.h), the tangents from child 1's patch at its
+  // corner.
+  double w[12], ws[12], wt[12];
+  loop_box_spline_basis(0.0, 0.0, w, ws, wt);
+  Eigen::RowVectorXd d_s = Eigen::RowVectorXd::Zero(k), d_t = Eigen::RowVectorXd::Zero(k);
+  for (int j = 0; j < 12; ++j) {
+    d_s += ws[j] * nets[0].row(j);
+    d_t += wt[j] * nets[0].row(j);
+  }
+  const CornerMasks corner = extraordinary_corner_masks(step, d_s, d_t);
+  double* masks = table + size_t(36 * kExtraordinaryLevels) * size_t(k);
+  for (int i = 0; i < k; ++i) {
+    masks[i] = corner.position(i);
+    masks[k + i] = corner.d_s(i);
+    masks[2 * k + i] = corner.d_t(i);
+  }
+  for (int r = 0; r < k; ++r)
+    for (int i = 0; i < k; ++i) masks[size_t(3 + r) * size_t(k) + size_t(i)] = step(r, i);
+}
+
 int LoopExtraordinaryTables::offset(const LoopExtraordinaryConfiguration& configuration, const PolygonTopology& mesh,
                                     const MeshConnectivity& connectivity, int v, int a, int b) {
   if (const auto it = offsets_.find(configuration); it != offsets_.end()) return it->second;
@@ -62,34 +93,7 @@ int LoopExtraordinaryTables::offset(const LoopExtraordinaryConfiguration& config
   }
   const int offset = int(tables_.size());
   tables_.resize(tables_.size() + loop_extraordinary_table_size(k), 0.0);
-  double* table = &tables_[size_t(offset)];
-  Eigen::MatrixXd power = Eigen::MatrixXd::Identity(k, k);
-  for (int level = 0; level < kExtraordinaryLevels; ++level) {
-    for (int c = 0; c < 3; ++c) {
-      const Eigen::MatrixXd block = nets[c] * power;
-      for (int j = 0; j < 12; ++j)
-        for (int i = 0; i < k; ++i) table[size_t((3 * level + c) * 12 + j) * size_t(k) + size_t(i)] = block(j, i);
-    }
-    power = step * power;
-  }
-  // Limit masks at v (core/extraordinary/extraordinary_corner_masks.h), the tangents from child 1's patch at its
-  // corner.
-  double w[12], ws[12], wt[12];
-  loop_box_spline_basis(0.0, 0.0, w, ws, wt);
-  Eigen::RowVectorXd d_s = Eigen::RowVectorXd::Zero(k), d_t = Eigen::RowVectorXd::Zero(k);
-  for (int j = 0; j < 12; ++j) {
-    d_s += ws[j] * nets[0].row(j);
-    d_t += wt[j] * nets[0].row(j);
-  }
-  const CornerMasks corner = extraordinary_corner_masks(step, d_s, d_t);
-  double* masks = table + size_t(36 * kExtraordinaryLevels) * size_t(k);
-  for (int i = 0; i < k; ++i) {
-    masks[i] = corner.position(i);
-    masks[k + i] = corner.d_s(i);
-    masks[2 * k + i] = corner.d_t(i);
-  }
-  for (int r = 0; r < k; ++r)
-    for (int i = 0; i < k; ++i) masks[size_t(3 + r) * size_t(k) + size_t(i)] = step(r, i);
+  write_loop_extraordinary_table(nets, step, &tables_[size_t(offset)]);
   offsets_.emplace(configuration, offset);
   return offset;
 }

@@ -14,6 +14,8 @@
 // K points in net point j), then three rows of K: limit position, tangent along s, tangent along t,
 // then A: K rows of K (row r: the weights of the K points in point r one level down).
 #include <compare>
+
+#include <Eigen/Core>
 #include <map>
 #include <vector>
 
@@ -47,6 +49,10 @@ private:
   std::map<LoopExtraordinaryConfiguration, int> offsets_;
   std::vector<double> tables_;
 };
+
+/// Writes the table of a node (layout above) from one step A (`step`, K×K) and the nets Ā_k of its three
+/// regular children (12×K each) into `table`, loop_extraordinary_table_size(K) doubles.
+void write_loop_extraordinary_table(const Eigen::MatrixXd (&nets)[3], const Eigen::MatrixXd& step, double* table);
 
 /// Doubles in the table of a node with K points.
 inline size_t loop_extraordinary_table_size(int k) { return size_t(36 * kExtraordinaryLevels + 3 + k) * size_t(k); }

@@ -5,6 +5,7 @@
 
 #include "core/reference/catmull_clark.h"
 #include "core/reference/crease_rules.h"
+#include "core/reference/loop.h"
 
 namespace gps {
 
@@ -115,7 +116,12 @@ LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corn
   return out;
 }
 
-LocalMesh refine_local_mesh(const LocalMesh& m) {
+namespace {
+
+// One step of either scheme: values by `refine_values`, topology by `refine_topology`; both number
+// vertex points as the input's vertices, then one edge point per edge.
+template <class Values, class Topology>
+LocalMesh refine_piece(const LocalMesh& m, Values refine_values, Topology refine_topology) {
   LocalMesh out;
   out.base_ids = m.base_ids;
   // Unknown points (size 0) stand in as zeros; what they spoil is marked incomplete below.
@@ -123,8 +129,8 @@ LocalMesh refine_local_mesh(const LocalMesh& m) {
   std::vector<Eigen::VectorXd> points = m.points;
   for (auto& p : points)
     if (p.size() == 0) p = Eigen::VectorXd::Zero(n_base);
-  out.points = catmull_clark_values(m.topology, m.connectivity, points, m.has_creases() ? &m.creases : nullptr);
-  out.topology = catmull_clark_topology(m.topology, m.connectivity);
+  out.points = refine_values(points, m.has_creases() ? &m.creases : nullptr);
+  out.topology = refine_topology();
   out.connectivity = connectivity_of(out.topology);
   if (m.has_creases()) out.creases = refined_crease_level(m.topology, m.connectivity, m.creases, out.connectivity);
   const auto& c = m.connectivity;
@@ -140,6 +146,26 @@ LocalMesh refine_local_mesh(const LocalMesh& m) {
   for (size_t i = 0; i < out.points.size(); ++i)
     if (!out.complete[i]) out.points[i].resize(0);  // never read: see refine_local_mesh()
   return out;
+}
+
+}  // namespace
+
+LocalMesh refine_local_mesh(const LocalMesh& m) {
+  return refine_piece(
+      m,
+      [&](const std::vector<Eigen::VectorXd>& points, const CreaseLevel* creases) {
+        return catmull_clark_values(m.topology, m.connectivity, points, creases);
+      },
+      [&] { return catmull_clark_topology(m.topology, m.connectivity); });
+}
+
+LocalMesh refine_local_mesh_loop(const LocalMesh& m, LoopBeta beta) {
+  return refine_piece(
+      m,
+      [&](const std::vector<Eigen::VectorXd>& points, const CreaseLevel* creases) {
+        return loop_values(m.topology, m.connectivity, points, beta, creases);
+      },
+      [&] { return loop_topology(m.topology, m.connectivity); });
 }
 
 }  // namespace gps

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "core/plans/stencil.h"
+#include "core/reference/loop.h"
 
 namespace gps {
 
@@ -51,5 +52,8 @@ LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corn
 /// with all their faces present, and face points are exact; the others are marked incomplete and
 /// must not be read (plan_builder asserts it).
 LocalMesh refine_local_mesh(const LocalMesh& m);
+
+/// The same with one Loop step (a piece of a triangle mesh).
+LocalMesh refine_local_mesh_loop(const LocalMesh& m, LoopBeta beta);
 
 }  // namespace gps

@@ -6,6 +6,7 @@
 
 #include "core/mesh/error.h"
 #include "core/extraordinary/loop_extraordinary_tables.h"
+#include "core/plans/loop_crease_plan_builder.h"
 #include "core/plans/loop_nets.h"
 #include "core/plans/stencil_table.h"
 
@@ -21,7 +22,8 @@ public:
     plans_.max_depth = 1;
   }
 
-  SurfaceTables build() {
+  // Throws gps::Error naming the first face that is not a triangle or vertex of too many faces.
+  void check() const {
     for (int f = 0; f < t_.n_faces(); ++f)
       if (t_.face_size(f) != 3)
         throw Error("Loop patches need a triangle mesh, but face " + std::to_string(f) + " has " +
@@ -31,6 +33,9 @@ public:
         throw Error("vertex " + std::to_string(v) + " has " + std::to_string(c_.n_vertex_faces(v)) +
                     " faces; Loop patches take at most " + std::to_string(kMaxLoopValence) +
                     " (use --scheme catmull-clark)");
+  }
+
+  SurfaceTables build() {
     plans_.patch_roots.reserve(size_t(t_.n_faces()));
     plans_.patch_corner_points = t_.verts;
     plans_.nodes.reserve(size_t(t_.n_faces()) * 13);
@@ -155,8 +160,12 @@ private:
 
 }  // namespace
 
-SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta) {
-  return LoopBuilder(topology, beta).build();
+SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness) {
+  LoopBuilder builder(topology, beta);
+  builder.check();
+  Sharpness sharp = sharpness;
+  sharp.normalise();
+  return sharp.empty() ? builder.build() : build_creased_loop_plans(topology, beta, sharp);
 }
 
 }  // namespace gps

@@ -11,7 +11,8 @@ namespace gps {
 /// child: that child is an extraordinary node, evaluated exactly (core/extraordinary/loop_extraordinary_tables.h), the
 /// others are box splines. Depth therefore does not trade accuracy: the plans are exact at depth 1. Throws gps::Error
 /// naming the first face that is not a triangle, or a vertex of more than kMaxLoopValence faces.
-SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta);
+/// With creases or corners, core/plans/loop_crease_plan_builder.h builds them.
+SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness = {});
 
 /// The largest valence the exact tables take (their size grows with it).
 inline constexpr int kMaxLoopValence = 64;

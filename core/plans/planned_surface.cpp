@@ -29,9 +29,8 @@ PlanOptions plan_options_named(const std::string& scheme, const std::string& loo
   return o;
 }
 
-Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options, const Sharpness& sharpness) {
+Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
   if (options.scheme) return *options.scheme;
-  if (!sharpness.empty()) return Scheme::catmull_clark;
   for (int f = 0; f < topology.n_faces(); ++f)
     if (topology.face_size(f) != 3) return Scheme::catmull_clark;
   // Loop's exact tables grow with the valence: past kMaxLoopValence faces at a vertex, Catmull-Clark.
@@ -44,18 +43,16 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options, c
 SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options,
                                   const Sharpness& sharpness) {
   const ExtraordinaryNodes extraordinary = options.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier;
-  const Scheme scheme = scheme_for(topology, options, sharpness);
-  if (scheme == Scheme::loop && !sharpness.empty())
-    throw Error("Loop patches do not take creases or corners yet; use --scheme catmull-clark (or auto)");
-  SurfaceTables tables = scheme == Scheme::loop ? build_loop_plans(topology, options.loop_beta)
-                                                : build_plans(topology, options.depth, extraordinary, true, sharpness);
+  SurfaceTables tables = scheme_for(topology, options) == Scheme::loop
+                             ? build_loop_plans(topology, options.loop_beta, sharpness)
+                             : build_plans(topology, options.depth, extraordinary, true, sharpness);
   add_patch_adjacency(tables.plans);
   return tables;
 }
 
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {
   const PolygonTopology topology = topology_of(mesh.mesh);
-  scheme_ = scheme_for(topology, options, mesh.sharpness);
+  scheme_ = scheme_for(topology, options);
   tables_ = build_surface_plans(topology, options, mesh.sharpness);
   dependents_ = stencil_dependents(tables_.stencils);
   points_ = apply_stencils(tables_.stencils, base_points(mesh));

@@ -32,9 +32,8 @@ struct PlanOptions {
 PlanOptions plan_options_named(const std::string& scheme, const std::string& loop_beta, int depth = -1,
                                bool approximate = false);
 
-/// The scheme `options` give for this mesh. A triangle mesh with creases or corners gets
-/// Catmull-Clark unless Loop is asked for: Loop's patch plans do not take sharpness.
-Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options, const Sharpness& sharpness = {});
+/// The scheme `options` give for this mesh.
+Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options);
 
 /// Plans and stencils of the mesh under its scheme (core/plans/plan_builder.h, core/plans/loop_plan_builder.h),
 /// with its creases and corners.

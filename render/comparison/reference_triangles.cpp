@@ -28,7 +28,7 @@ int corner_nearest_centre(const PatchParam* corners) {
 }
 
 SubdivisionResult reference(const CovarianceMesh& mesh, int levels, const PlanOptions& options) {
-  return subdivide(mesh, {scheme_for(topology_of(mesh.mesh), options, mesh.sharpness), levels, true, options.loop_beta, true});
+  return subdivide(mesh, {scheme_for(topology_of(mesh.mesh), options), levels, true, options.loop_beta, true});
 }
 }  // namespace
 

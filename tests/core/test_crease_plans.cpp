@@ -68,23 +68,60 @@ double error_against_reference(const CovarianceMesh& mesh, int levels) {
                                        {Scheme::catmull_clark, levels, true});
 }
 
+// How far the creased plans are from the smooth surface (the same mesh without sharpness), at most,
+// over the bounding-box diagonal: the creases must matter for a test of them to mean anything.
+double distance_from_smooth(const PlannedMesh& creased, Scheme scheme) {
+  CovarianceMesh smooth = creased.mesh;
+  smooth.sharpness = {};
+  const auto ref = subdivide(smooth, {scheme, 3, true});
+  double moved = 0;
+  for (size_t k = 0; k < ref.mesh.n_vertices(); ++k) {
+    const PatchParam& pp = ref.vertex_params[k];
+    const auto s = evaluate_patch(creased.tables.plans, creased.points, pp.patch, pp.u, pp.v);
+    moved = std::max(moved, (s->position - ref.mesh.mean(k)).norm());
+  }
+  return moved / bounding_box_diagonal(smooth);
+}
+
 TEST(CreasePlans, EqualTheReferenceInsidePatches) {
   for (const Case& c : creased_quad_cases()) {
     const double error = error_against_reference(c.mesh, 5);
     std::printf("%-17s: %.1e of the diagonal\n", c.name.c_str(), error);
     EXPECT_LT(error, 1e-9) << c.name;
-    // The creases matter: the smooth surface is elsewhere.
+    EXPECT_GT(distance_from_smooth(PlannedMesh(c.mesh, PlanOptions{Scheme::catmull_clark}), Scheme::catmull_clark),
+              1e-3)
+        << c.name << ": the creases change the surface";
+  }
+}
+
+// Loop: box splines folded along sharp lines of valence-6 vertices (three triangles a side), exact
+// tables at crease vertices with other sectors, at corners and darts, semi-sharp creases refined.
+std::vector<Case> creased_triangle_cases() {
+  std::vector<Case> cases;
+  std::vector<EdgeCrease> grid;
+  for (int i = 0; i < 8; ++i) grid.push_back({3 * 9 + i, 3 * 9 + i + 1, 10});
+  for (int j = 0; j < 3; ++j) grid.push_back({j * 9 + 5, (j + 1) * 9 + 5, 1.5});
+  cases.push_back({"triangle grid", with_random_covariances(creased(test::triangle_grid_mesh(8, 6), grid, {{5 * 9 + 3, 2.5}}), 7)});
+  cases.push_back({"icosahedron", with_random_covariances(creased(test::icosahedron_mesh(),
+                                                                  {{5, 11, 10}, {1, 5, 10}, {1, 7, 10}, {7, 10, 10},
+                                                                   {10, 11, 10}, {3, 9, 2.5}},
+                                                                  {{2, 10}, {6, 1.5}}),
+                                                          8)});
+  std::vector<EdgeCrease> equator;
+  for (int k = 0; k < 7; ++k) equator.push_back({2 + k, 2 + (k + 1) % 7, 10});
+  cases.push_back({"bipyramid", with_random_covariances(creased(test::bipyramid_mesh(7), equator, {{0, 4.7}}), 9)});
+  return cases;
+}
+
+TEST(CreasePlans, LoopEqualsTheReferenceInsidePatches) {
+  for (const Case& c : creased_triangle_cases()) {
+    const PlannedMesh p(c.mesh, PlanOptions{Scheme::loop});
+    const double error = test::error_against_reference(p, {Scheme::loop, 5, true});
+    std::printf("%-17s: %.1e of the diagonal\n", c.name.c_str(), error);
+    EXPECT_LT(error, 1e-9) << c.name;
     CovarianceMesh smooth = c.mesh;
     smooth.sharpness = {};
-    const PlannedMesh creased_plans(c.mesh, PlanOptions{Scheme::catmull_clark});
-    const auto ref = subdivide(smooth, {Scheme::catmull_clark, 3, true});
-    double moved = 0;
-    for (size_t k = 0; k < ref.mesh.n_vertices(); ++k) {
-      const PatchParam& pp = ref.vertex_params[k];
-      const auto s = evaluate_patch(creased_plans.tables.plans, creased_plans.points, pp.patch, pp.u, pp.v);
-      moved = std::max(moved, (s->position - ref.mesh.mean(k)).norm());
-    }
-    EXPECT_GT(moved / bounding_box_diagonal(c.mesh), 1e-3) << c.name;
+    EXPECT_GT(distance_from_smooth(p, Scheme::loop), 1e-3) << c.name << ": the creases change the surface";
   }
 }
 

@@ -1,0 +1,17 @@
+#pragma once
+// Subdivision plans of a triangle mesh with creases and corners under Loop GPS (docs/design.md §2
+// "Creases and corners in the plans"): the crease rules refine pieces of the mesh level by level.
+#include "core/mesh/sharpness.h"
+#include "core/plans/plan_builder.h"
+#include "core/reference/loop.h"
+
+namespace gps {
+
+/// One plan per triangle, as build_loop_plans lays them out: a triangle whose corners are regular
+/// (core/plans/triangle_sectors.h) is one box-spline node, folded beyond infinitely sharp creases as
+/// beyond a boundary; one with a single irregular corner whose neighbourhood is self-similar is an
+/// exact node (core/extraordinary/loop_crease_tables.h); any other is split, so semi-sharp creases
+/// refine until their sharpness has decayed. The topology must have passed build_loop_plans' checks.
+SurfaceTables build_creased_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness);
+
+}  // namespace gps
