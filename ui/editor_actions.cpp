@@ -72,7 +72,7 @@ void EditorApp::open_sample(const std::string& name) {
 void EditorApp::mesh_replaced() {
   ViewOptions view = view_;
   view.triangle_mesh =
-      scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}, document_.mesh().sharpness) == Scheme::loop;
+      scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
   renderer_->set_mesh(document_.mesh(), view.plans());  // first: it throws before anything changes
   check_finite_ = true;
   view_.triangle_mesh = view.triangle_mesh;

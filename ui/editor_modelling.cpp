@@ -223,7 +223,7 @@ void EditorApp::install(const Modelled& result) {
 
 void EditorApp::topology_changed(const std::vector<int>& selection) {
   view_.triangle_mesh =
-      scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}, document_.mesh().sharpness) == Scheme::loop;
+      scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
   check_finite_ = true;
   drag_.reset();
   reach_.clear();
