@@ -101,6 +101,16 @@ TEST_F(EditorCreases, EscapeAndRightClickChangeNothing) {
   EXPECT_EQ(read_text_file(dir_.file("saved.ply")), read_text_file(dir_.file("original.ply")));
 }
 
+// The Inspector's crease field (below the rotation row, its default place in a 1024 × 700 window):
+// a typed 2.5 and Enter sets the selected edges' sharpness.
+TEST_F(EditorCreases, TheInspectorsCreaseFieldSetsTheSharpness) {
+  const glm::vec2 crease_field(700.0f, 166.0f);
+  Events typed = top_face_selected();
+  typed.click(crease_field).wait().text("2.5").wait().key("enter").wait(3);
+  expect_top_creases(
+      play(typed, "--save " + dir_.file("saved.ply") + " --screenshot " + artefact("inspector_crease_2.5.png")), 2.5);
+}
+
 // Corner sharpness: the vertex nearest the camera, clicked in vertex mode, Ctrl+Shift+V, 3, Enter.
 TEST_F(EditorCreases, CtrlShiftVSetsTheVertexCornerSharpness) {
   int nearest = 0;
