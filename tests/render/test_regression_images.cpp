@@ -38,7 +38,8 @@ TEST_F(RegressionImages, SamplesRenderAsStored) {
   SurfaceRenderer renderer;
   const bool update = std::getenv("GPSURF_UPDATE_REGRESSION") != nullptr;
   for (const char* name : {"cube", "cone", "cone-pointy", "cone-concave", "cone-plateau", "cone-cylinder", "wirecube",
-                           "valence5", "valence8", "cylinder", "creased_cube", "creased_cylinder"}) {
+                           "valence5", "valence8", "cylinder", "creased_cube", "creased_cylinder",
+                           "creased_cone"}) {
     const Image actual = render_sample(renderer, name);
     const std::string stored = std::string(GPS_TEST_DATA_DIR) + "/regression/" + name + ".png";
     if (update) {

@@ -129,7 +129,7 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
 // Creased meshes (semi-sharp and infinitely sharp edges and corners, random anisotropic covariances):
 // the same plans on the GPU, with one-sided normals along the creases, within the bounds above.
 TEST_F(GpuTest, CreasedPatchesMatchTheCpuEvaluator) {
-  for (const char* name : {"creased_cube", "creased_cylinder"}) {
+  for (const char* name : {"creased_cube", "creased_cylinder", "creased_cone"}) {
     const CovarianceMesh mesh =
         test::with_random_covariances(read_mesh(std::string(GPS_TEST_DATA_DIR) + "/" + name + ".ply"), 11);
     ASSERT_FALSE(mesh.sharpness.empty()) << name;

@@ -129,7 +129,8 @@ TEST_F(GpuTest, TessellationIsCrackFree) {
     if (cracks || holes) write_image("crack-" + what + ".png", f.color);
   };
   for (const char* name :
-       {"cube", "wirecube", "cylinder", "pawn", "open-cylinder", "icosphere", "creased_cube", "creased_cylinder"}) {
+       {"cube", "wirecube", "cylinder", "pawn", "open-cylinder", "icosphere", "creased_cube", "creased_cylinder",
+        "creased_cone"}) {
     const CovarianceMesh mesh = crack_test_mesh(name);
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh);
@@ -222,7 +223,7 @@ INSTANTIATE_TEST_SUITE_P(
     Samples, PinholeTest,
     ::testing::ValuesIn([] {  // every built-in sample, the open cylinder of quads and triangles, creased meshes
       std::vector<std::string> names = sample_names();
-      names.insert(names.end(), {"open-cylinder", "creased_cube", "creased_cylinder"});
+      names.insert(names.end(), {"open-cylinder", "creased_cube", "creased_cylinder", "creased_cone"});
       return names;
     }()),
     [](const auto& info) {
