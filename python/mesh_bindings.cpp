@@ -7,6 +7,8 @@
 #include "core/mesh/inference.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/mesh/samples.h"
+#include "core/mesh/sharpness.h"
+#include "core/fitting/mesh_simplification.h"
 #include "core/modelling/operation_list.h"
 #include "core/plans/patch_layout.h"
 #include "core/reference/reference_subdivision.h"
@@ -81,6 +83,40 @@ void add_mesh_bindings(py::module_& m) {
           },
           "the covariances, an n x 3 x 3 array (a copy; assign an array to change them)")
       .def_property_readonly("faces", &faces_of, "the faces as lists of vertex indices (from 0)")
+      .def_property(
+          "creases",
+          [](const CovarianceMesh& c) {
+            std::vector<std::tuple<int, int, double>> out;
+            for (const EdgeCrease& e : c.sharpness.creases) out.emplace_back(e.a, e.b, e.sharpness);
+            return out;
+          },
+          [](CovarianceMesh& c, const std::vector<std::tuple<int, int, double>>& creases) {
+            Sharpness s = c.sharpness;
+            s.creases.clear();
+            for (const auto& [a, b, sharpness] : creases) {
+              if (const std::string problem = sharpness_problem(sharpness); !problem.empty())
+                throw py::value_error("creases: the sharpness of edge " + std::to_string(a) + "-" + std::to_string(b) +
+                                      " " + problem);
+              s.set_crease(a, b, sharpness);
+            }
+            const PolygonTopology t = topology_of(c.mesh);
+            crease_level(s, connectivity_of(t), t.n_vertices);  // throws for a pair that is not an edge
+            c.sharpness = std::move(s);
+          },
+          "the creased edges as (a, b, sharpness) with a < b: 0 smooth, 10 and above infinitely sharp (OpenSubdiv's "
+          "semi-sharp creases); assign a list of such tuples to set them all")
+      .def_property(
+          "corners", [](const CovarianceMesh& c) { return c.sharpness.corners; },
+          [](CovarianceMesh& c, const std::vector<double>& corners) {
+            if (!corners.empty() && corners.size() != c.n_vertices())
+              throw py::value_error("corners: expected " + std::to_string(c.n_vertices()) + " values or none");
+            for (size_t v = 0; v < corners.size(); ++v)
+              if (const std::string problem = sharpness_problem(corners[v]); !problem.empty())
+                throw py::value_error("corners: vertex " + std::to_string(v) + "'s sharpness " + problem);
+            c.sharpness.corners = corners;
+            c.sharpness.normalise();
+          },
+          "the corner sharpness of every vertex (an empty list where none is sharp)")
       .def(
           "write", [](const CovarianceMesh& c, const std::string& path, bool binary) { write_mesh(path, c, binary); },
           py::arg("path"), py::arg("binary") = false,
@@ -117,6 +153,17 @@ void add_mesh_bindings(py::module_& m) {
       py::arg("mesh"), py::arg("ops"),
       "A copy of the mesh changed by modelling operations, as gpsurf edit --ops takes them: a list such as "
       "[{'op': 'loop_cut', 'edge': [0, 1]}, {'op': 'extrude', 'faces': [4], 'distance': 0.5}] (or its JSON text)");
+  m.def(
+      "simplify",
+      [](const CovarianceMesh& mesh, size_t vertices, double bias) {
+        SimplifyOptions o;
+        o.target_vertices = vertices;
+        o.bias = bias;
+        return simplify_mesh(mesh, o).mesh;
+      },
+      py::arg("mesh"), py::arg("vertices"), py::arg("bias") = 0.05,
+      "A coarse copy of a triangle mesh with about `vertices` vertices (edge collapses that keep its topology), each "
+      "vertex's Gaussian from the input faces collapsed into it, as gpsurf simplify makes it");
   m.def("samples", &sample_names, "The names of the built-in meshes");
   m.def("sample_description", &sample_description, py::arg("name"));
   m.def("sample", &make_sample, py::arg("name"), py::arg("size") = 0,

@@ -174,3 +174,29 @@ def test_examples_run(tmp_path, example):
     result = subprocess.run([sys.executable, script], cwd=tmp_path, capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
     assert "ok" in result.stdout.splitlines()[-1]
+
+
+def test_creases_and_corners_round_trip_and_change_the_surface(tmp_path):
+    cube = gpsurf.sample("cube")
+    smooth = gpsurf.subdivide(cube, levels=2)
+    cube.creases = [(4, 5, 10.0), (5, 6, 10.0), (6, 7, 10.0), (4, 7, 10.0)]
+    cube.corners = [0.0] * 7 + [2.5]
+    assert cube.creases == [(4, 5, 10.0), (4, 7, 10.0), (5, 6, 10.0), (6, 7, 10.0)]
+    assert cube.corners[7] == 2.5
+    path = str(tmp_path / "creased.ply")
+    cube.write(path)
+    back = gpsurf.read(path)
+    assert back.creases == cube.creases and back.corners == cube.corners
+    creased = gpsurf.subdivide(cube, levels=2)
+    assert np.abs(creased.positions - smooth.positions).max() > 1e-2
+    with pytest.raises(Exception, match="not an edge"):
+        cube.creases = [(0, 6, 1.0)]
+    with pytest.raises(ValueError, match="negative"):
+        cube.creases = [(0, 1, -1.0)]
+
+
+def test_simplify_keeps_a_closed_mesh_closed():
+    sphere = gpsurf.sample("icosphere", 1280)
+    coarse = gpsurf.simplify(sphere, vertices=100)
+    assert coarse.n_vertices == 100
+    assert coarse.n_faces == 2 * 100 - 4  # Euler: a closed genus-0 triangle mesh
