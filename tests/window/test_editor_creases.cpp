@@ -1,6 +1,7 @@
 // The crease tool in a real window under Xvfb, as a designer uses it on a quad cube: the top face
 // selected (face mode, one click: its four edges), Shift+E, a typed 10 (∞) or a drag, Enter; the
-// saved file holds exactly those creases, Ctrl+Z gives the original file byte for byte, and Esc
+// saved file holds exactly those creases, Ctrl+Z gives the original file byte for byte (Ctrl+Shift+Z
+// the creases again), the Inspector's crease field sets them too, and Esc
 // changes nothing. Corners the same way with Ctrl+Shift+V. Screenshots kept in
 // build/test-artefacts/EditorCreases/.
 #include <gtest/gtest.h>
@@ -79,6 +80,11 @@ TEST_F(EditorCreases, TypedInfiniteSharpnessCreasesTheTopRimAndUndoesExactly) {
   play(undone, "--save " + dir_.file("saved.ply") + " --screenshot " + artefact("cube_undone.png"), "work.ply");
   expect_top_creases(read_mesh(dir_.file("work.ply")), kInfiniteSharpness);
   EXPECT_EQ(read_text_file(dir_.file("saved.ply")), read_text_file(dir_.file("original.ply")));
+
+  // Redone (Ctrl+Shift+Z): the creases again.
+  Events redone = crease;
+  redone.key("ctrl+z").wait().key("ctrl+shift+z").wait(3);
+  expect_top_creases(play(redone, "--save " + dir_.file("saved.ply")), kInfiniteSharpness);
 }
 
 // A horizontal drag of half the tool's span from smooth gives half the range: sharpness 5.
