@@ -29,6 +29,20 @@ int LocalMesh::find_face(const std::vector<int>& corners) const {
   return -1;
 }
 
+LocalMesh::VertexSharpness LocalMesh::sharpness_at(int v) const {
+  VertexSharpness out;
+  const double corner = vertex_sharpness(v);
+  out.sharp_corner = is_infinitely_sharp(corner);
+  out.semi_sharp = corner > 0.0 && !out.sharp_corner;
+  for (int i = connectivity.vertex_edge_offsets[size_t(v)]; i < connectivity.vertex_edge_offsets[size_t(v) + 1]; ++i) {
+    const int e = connectivity.vertex_edges[size_t(i)];
+    const double s = edge_sharpness(e);
+    out.semi_sharp = out.semi_sharp || (s > 0.0 && !is_infinitely_sharp(s));
+    out.cut_edges += is_cut_edge(e) ? 1 : 0;
+  }
+  return out;
+}
+
 Stencil LocalMesh::point(int v) const { return combination({{v, 1.0}}); }
 
 Stencil LocalMesh::combination(const std::vector<std::pair<int, double>>& terms) const {

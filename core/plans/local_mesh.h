@@ -39,6 +39,14 @@ struct LocalMesh {
   bool is_cut_edge(int e) const {
     return connectivity.is_boundary_edge(e) || is_infinitely_sharp(edge_sharpness(e));
   }
+  /// What the sharp rules see at vertex v: a semi-sharp edge or corner (sharpness that decays), the
+  /// number of cut edges, and whether v is an infinitely sharp corner.
+  struct VertexSharpness {
+    bool semi_sharp = false;
+    int cut_edges = 0;
+    bool sharp_corner = false;
+  };
+  VertexSharpness sharpness_at(int v) const;
 };
 
 /// The whole base mesh as a LocalMesh (every vertex complete, identity stencils), with the mesh's

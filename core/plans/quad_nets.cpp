@@ -88,20 +88,12 @@ int quad_sector_size(const LocalMesh& m, int v, int q) {
 bool regular_corner(const LocalMesh& m, int v, int q) {
   if (!m.has_creases()) return regular_vertex(m, v);
   if (!m.complete[size_t(v)]) return false;
-  const double corner = m.vertex_sharpness(v);
-  if (corner > 0.0 && !is_infinitely_sharp(corner)) return false;
-  const auto& c = m.connectivity;
-  int cut = 0;
-  for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
-    const int e = c.vertex_edges[size_t(i)];
-    const double s = m.edge_sharpness(e);
-    if (s > 0.0 && !is_infinitely_sharp(s)) return false;
-    cut += m.is_cut_edge(e) ? 1 : 0;
-  }
+  const auto [semi_sharp, cut, sharp_corner] = m.sharpness_at(v);
+  if (semi_sharp) return false;
   const int sector = quad_sector_size(m, v, q);
-  if (cut == 0 && corner == 0.0) return sector == 4;
+  if (cut == 0 && !sharp_corner) return sector == 4;
   // Sdc's rules: a sharp vertex, more than two sharp edges, or a boundary vertex with one face is a corner.
-  const bool corner_rule = corner > 0.0 || cut > 2 || c.n_vertex_faces(v) == 1;
+  const bool corner_rule = sharp_corner || cut > 2 || m.connectivity.n_vertex_faces(v) == 1;
   if (corner_rule) return sector == 1;
   return cut == 2 && sector == 2;
 }

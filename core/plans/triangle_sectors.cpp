@@ -28,19 +28,11 @@ std::vector<int> sector_fan(const LocalMesh& m, int v, int q) {
 
 bool regular_loop_corner(const LocalMesh& m, int v, int q) {
   if (!m.complete[size_t(v)]) return false;
-  const double corner = m.vertex_sharpness(v);
-  if (corner > 0.0 && !is_infinitely_sharp(corner)) return false;
-  const auto& c = m.connectivity;
-  int cut = 0;
-  for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
-    const int e = c.vertex_edges[size_t(i)];
-    const double s = m.edge_sharpness(e);
-    if (s > 0.0 && !is_infinitely_sharp(s)) return false;
-    cut += m.is_cut_edge(e) ? 1 : 0;
-  }
+  const auto [semi_sharp, cut, sharp_corner] = m.sharpness_at(v);
+  if (semi_sharp) return false;
   // Sdc's rules: a sharp vertex, more than two sharp edges, or a boundary vertex with one face is a
   // corner, which no box spline follows; one sharp edge is a dart.
-  if (corner > 0.0 || cut == 1 || cut > 2 || c.n_vertex_faces(v) == 1) return false;
+  if (sharp_corner || cut == 1 || cut > 2 || m.connectivity.n_vertex_faces(v) == 1) return false;
   const int faces = int(sector_fan(m, v, q).size()) - (cut == 2 ? 1 : 0);
   return cut == 0 ? faces == 6 : faces == 3;
 }
