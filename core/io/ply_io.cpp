@@ -160,6 +160,21 @@ private:
   size_t token_index_ = 0;
 };
 
+// One record of element e: its scalar properties into `values` (by property index), lists read past.
+void read_scalar_record(BodyReader& body, const Element& e, std::vector<double>& values) {
+  body.begin_record();
+  for (size_t k = 0; k < e.properties.size(); ++k) {
+    const Property& p = e.properties[k];
+    if (p.is_list) {
+      const size_t n = body.read_count(p.count_type);
+      for (size_t i = 0; i < n; ++i) body.read(p.type);
+    } else {
+      values[k] = body.read(p.type);
+    }
+  }
+  body.end_record();
+}
+
 // One record of the edge element: its vertices as the file gives them and its crease (16 bytes: a
 // file of short records costs a few times its size).
 struct CreaseRecord {
@@ -332,17 +347,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       if (has_covariances) covariances.reserve(means.capacity());  // else none: identity, made with the mesh
       std::vector<double> values(e.properties.size());
       for (size_t v = 0; v < e.count; ++v) {
-        body.begin_record();
-        for (size_t k = 0; k < e.properties.size(); ++k) {
-          const Property& p = e.properties[k];
-          if (p.is_list) {
-            const size_t n = body.read_count(p.count_type);
-            for (size_t i = 0; i < n; ++i) body.read(p.type);
-          } else {
-            values[k] = body.read(p.type);
-          }
-        }
-        body.end_record();
+        read_scalar_record(body, e, values);
         means.emplace_back(values[size_t(ix)], values[size_t(iy)], values[size_t(iz)]);
         if (const std::string why = position_problem(means[v]); !why.empty())
           fail("vertex " + std::to_string(v) + " " + why);
@@ -403,17 +408,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       creases.reserve(e.count);
       std::vector<double> values(e.properties.size());
       for (size_t r = 0; r < e.count; ++r) {
-        body.begin_record();
-        for (size_t k = 0; k < e.properties.size(); ++k) {
-          const Property& p = e.properties[k];
-          if (p.is_list) {
-            const size_t n = body.read_count(p.count_type);
-            for (size_t i = 0; i < n; ++i) body.read(p.type);
-          } else {
-            values[k] = body.read(p.type);
-          }
-        }
-        body.end_record();
+        read_scalar_record(body, e, values);
         int ends[2];
         for (int k = 0; k < 2; ++k) {
           const double index = values[size_t(k == 0 ? i1 : i2)];
