@@ -58,31 +58,8 @@ const gps::CovarianceMesh& sample(const MeshCase& m) {
 
 // One live frame at a uniform level (level > 0) or adaptive 6-pixel edges (level 0), 512x512.
 void BM_Frame(benchmark::State& state, MeshCase m, int kind, int level) {
-  gps::bench::context().make_current();
   const gps::CovarianceMesh& mesh = sample(m);
-  gps::SurfaceRenderer renderer;
-  try {
-    renderer.set_mesh(mesh, plan_kinds()[size_t(kind)].options);
-  } catch (const gps::Error& e) {  // e.g. plan buffers past the device's storage-block limit
-    state.SkipWithError(e.what());
-    return;
-  }
-  const gps::Camera camera = gps::frame_mesh(mesh);
-  gps::RenderTarget target(512, 512);
-  gps::DrawOptions o;
-  o.surface_cache = false;
-  o.level = float(level > 0 ? level : 8);
-  o.pixels = level > 0 ? 0.0f : 6.0f;
-  renderer.draw(target, camera, o);
-  glFinish();
-  for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
-    renderer.draw(target, camera, o);
-    glFinish();
-    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  state.counters["patches"] = double(renderer.tables().plans.n_patches());
-  state.counters["gpu_buffer_bytes"] = double(renderer.buffer_bytes());
+  gps::bench::time_live_frames(state, mesh, plan_kinds()[size_t(kind)].options, level);
 }
 
 // Plans and stencils of the mesh (CPU), with the tables' bytes per face.
