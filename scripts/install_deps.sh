@@ -8,7 +8,7 @@ packages=(
   libgl1-mesa-dri libglx-mesa0 libegl-mesa0
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   libcgal-dev  # header-only: the AABB tree of surface distances (core/fitting/)
-  libosd-dev  # OpenSubdiv: the peer benchmark only (bench/), never linked into core, render or app
+  libosd-dev  # OpenSubdiv: the peer benchmark (bench/) and the crease reference test, never linked into core, render or app
   xvfb xauth fonts-dejavu-core
   clang libclang-rt-14-dev libomp-dev  # the fuzzers (clang, with OpenMP in core)
   pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module and its tests
