@@ -1,7 +1,7 @@
 // The editor's modal tools: Blender's G / S / R transforms of the selected Gaussians, and the tools
 // that follow the mouse after a Mesh operation: extrude (a move along the extrusion's normal), loop
-// cut (a ring previewed under the cursor, then a slide), inset and crease (a sharpness followed);
-// their events and drawing.
+// cut (a ring previewed under the cursor, then a slide); the events of all of them, inset
+// (ui/editor_inset_tool.cpp) and crease (ui/editor_crease_tool.cpp) included, and their drawing.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -13,14 +13,11 @@
 #include "core/edit/covariance_edit.h"
 #include "core/mesh/error.h"
 #include "core/mesh/mesh_connectivity.h"
-#include "core/mesh/sharpness.h"
 #include "core/modelling/bridge.h"
-#include "core/modelling/crease_edges.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/edge_operations.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
-#include "core/modelling/inset.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/merge_vertices.h"
 #include "core/modelling/mesh_queries.h"
@@ -239,154 +236,6 @@ void EditorApp::end_loop_cut(bool keep) {
     set_status("loop cut cancelled", false);
   }
   loop_cut_.reset();
-}
-
-// ---- Inset ----
-
-void EditorApp::start_inset() {
-  if (modal_active() || mode_ != Mode::none) return;
-  std::vector<int> faces = faces_within(document_.mesh(), selection_.vertices());
-  if (faces.empty()) {
-    operation_note("inset refused: select the corners of one face or more", true);
-    return;
-  }
-  InsetTool tool;
-  tool.base = std::make_shared<const CovarianceMesh>(document_.mesh());
-  tool.faces = std::move(faces);
-  tool.selection_before = selection_.vertices();
-  tool.centre = centre_of_vertices(document_.mesh(), selection_.vertices());
-  tool.start_cursor = input_.cursor;
-  inset_ = std::move(tool);
-  status_ = "inset: move toward the faces' centre (or type the thickness), click or Enter confirms, Esc cancels";
-  status_error_ = false;
-}
-
-void EditorApp::update_inset(double thickness) {
-  InsetTool& tool = *inset_;
-  if (!(thickness > 0)) return;
-  try {
-    const Modelled inset = inset_faces(*tool.base, tool.faces, thickness);
-    if (!tool.applied) {
-      install(inset);
-      tool.applied = true;
-      document_.begin_edit();
-    } else {
-      const CovarianceMesh& mesh = document_.mesh();
-      if (inset.mesh.n_vertices() != mesh.n_vertices()) return;
-      for (size_t i = 0; i < mesh.n_vertices(); ++i) {
-        if (mesh.mean(i) != inset.mesh.mean(i)) document_.set_mean(int(i), inset.mesh.mean(i));
-        if (mesh.covariance(i) != inset.mesh.covariance(i)) document_.set_covariance(int(i), inset.mesh.covariance(i));
-      }
-      last_summary_ = inset.summary;
-    }
-    char text[128];
-    std::snprintf(text, sizeof text, "inset: thickness %.4f%s (click or Enter confirms, Esc cancels)", thickness,
-                  tool.typed.empty() ? "" : ("  [" + tool.typed + "]").c_str());
-    status_ = text;
-    status_error_ = false;
-  } catch (const Error& e) {
-    status_ = std::string("inset: ") + e.what();
-    status_error_ = true;
-  }
-}
-
-void EditorApp::follow_inset(glm::vec2 cursor) {
-  const Viewport v = viewport();
-  const auto c = project_to_pixel(v.camera, v.width, v.height, to_glm(inset_->centre));
-  if (!c) return;
-  const glm::vec2 centre(*c);
-  const double pixels = double(glm::length(inset_->start_cursor - centre) - glm::length(cursor - centre));
-  update_inset(pixels * world_per_pixel(v.camera, v.height, inset_->centre));
-}
-
-void EditorApp::end_inset(bool keep) {
-  if (inset_->applied) {
-    if (keep) {
-      document_.commit_edit_into_last_operation(selection_.vertices());
-      operation_note("inset: " + last_summary_, false);
-    } else {
-      document_.cancel_edit();
-      document_.discard_last_operation();
-      rebuild_after_undo(inset_->selection_before);
-      set_status("inset cancelled", false);
-    }
-  } else {
-    set_status(keep ? "inset: nothing done (move toward the centre or type a thickness)" : "inset cancelled", false);
-  }
-  inset_.reset();
-}
-
-// ---- Crease ----
-
-Modelled EditorApp::creased(const CovarianceMesh& mesh, bool corners, double sharpness) const {
-  const std::vector<int>& selected = selection_.vertices();
-  if (corners) return set_corner(mesh, with_mirrored_vertices(mesh, selected, reach_options_), sharpness);
-  return set_crease(mesh, with_mirrored_edges(mesh, edges_within(mesh, selected), reach_options_), sharpness);
-}
-
-void EditorApp::apply_sharpness(bool corners, double sharpness) {
-  const std::vector<int> before = selection_.vertices();
-  const bool done = run_operation(corners ? "corner" : "crease",
-                                  [&](const CovarianceMesh& m) { return creased(m, corners, sharpness); });
-  if (done) selection_.select(before, false);  // the selection as it was (set_crease selects the edges' ends)
-}
-
-void EditorApp::start_crease(bool corners) {
-  if (modal_active() || mode_ != Mode::none || selection_.empty()) return;
-  const CovarianceMesh& mesh = document_.mesh();
-  const auto edges = edges_within(mesh, selection_.vertices());
-  if (!corners && edges.empty()) {
-    operation_note("crease refused: select an edge or more (both ends of each)", true);
-    return;
-  }
-  CreaseTool tool;
-  tool.corners = corners;
-  const double common = corners ? common_corner(mesh, selection_.vertices()) : common_crease(mesh, edges);
-  tool.start = std::isfinite(common) ? std::min(common, kInfiniteSharpness) : 0.0;
-  tool.value = tool.start;
-  tool.start_cursor = input_.cursor;
-  tool.shown = std::make_shared<const CovarianceMesh>(mesh);
-  crease_ = std::move(tool);
-  preview_crease(crease_->start);
-}
-
-// Re-plans the surface for the sharpness (a change of sharpness changes the plans, as a change of
-// topology does); the document keeps its mesh until the tool is confirmed.
-void EditorApp::preview_crease(double sharpness) {
-  CreaseTool& tool = *crease_;
-  const char* what = tool.corners ? "corner" : "crease";
-  const std::string typed = tool.typed.empty() ? "" : "  [" + tool.typed + "]";
-  try {
-    if (sharpness != tool.value) {
-      auto shown = std::make_shared<const CovarianceMesh>(creased(document_.mesh(), tool.corners, sharpness).mesh);
-      renderer_->set_mesh(*shown, view_.plans());
-      tool.shown = std::move(shown);
-      tool.value = sharpness;
-    }
-    status_ = std::string(what) + ": " + sharpness_text(sharpness) + typed +
-              "  (drag left/right or type 0-10, 10 = ∞; click or Enter confirms, Esc cancels)";
-    status_error_ = false;
-  } catch (const Error& e) {
-    status_ = std::string(what) + typed + ": " + e.what();
-    status_error_ = true;
-  }
-}
-
-void EditorApp::end_crease(bool keep) {
-  const CreaseTool tool = *crease_;
-  crease_.reset();
-  const char* what = tool.corners ? "corner" : "crease";
-  if (keep && tool.shown->sharpness != document_.mesh().sharpness) {
-    apply_sharpness(tool.corners, tool.value);  // one undo step; re-plans for the document's mesh
-    return;
-  }
-  try {  // the surface planned for the document's sharpness again
-    renderer_->set_mesh(document_.mesh(), view_.plans());
-  } catch (const Error& e) {
-    set_status(e.what(), true);
-    return;
-  }
-  set_status(keep ? std::string(what) + ": nothing changed" : std::string(what) + " cancelled", false);
 }
 
 // ---- Events of the modal tools ----
