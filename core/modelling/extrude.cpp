@@ -167,10 +167,31 @@ std::vector<int> detach_region(MeshArrays& a, const FaceRegion& r, const std::ve
     const auto& face = a.faces[size_t(f)];
     outer.push_back({face[size_t(k)], face[(size_t(k) + 1) % face.size()]});
   }
+  // The region's creases travel with its faces onto the copies; the boundary edges keep theirs
+  // at the base too, and each copy takes its vertex's corner (as Blender's extrude copies them).
+  std::vector<std::array<int, 2>> region_edges;
+  for (int f : r.faces) {
+    const auto& face = a.faces[size_t(f)];
+    for (size_t k = 0; k < face.size(); ++k)
+      if (a.sharpness.crease(face[k], face[(k + 1) % face.size()]) > 0.0)
+        region_edges.push_back({f, int(k)});
+  }
+  std::vector<double> region_creases;
+  for (const auto& [f, k] : region_edges) {
+    const auto& face = a.faces[size_t(f)];
+    region_creases.push_back(a.sharpness.crease(face[size_t(k)], face[(size_t(k) + 1) % face.size()]));
+  }
   std::vector<int> added;
   for (size_t s = 0; s < r.sectors.size(); ++s) {
     added.push_back(a.add_vertex(copies[s]));
     for (const auto& [f, k] : r.sectors[s].corners) a.faces[size_t(f)][size_t(k)] = added.back();
+    if (const double corner = a.sharpness.corner(r.sectors[s].vertex); corner > 0.0)
+      a.sharpness.set_corner(added.back(), corner, a.n_vertices());
+  }
+  for (size_t i = 0; i < region_edges.size(); ++i) {
+    const auto& face = a.faces[size_t(region_edges[i][0])];
+    const size_t k = size_t(region_edges[i][1]);
+    a.sharpness.set_crease(face[k], face[(k + 1) % face.size()], region_creases[i]);
   }
   for (size_t i = 0; i < r.boundary.size(); ++i) {
     const auto& face = a.faces[size_t(r.boundary[i].first)];

@@ -27,6 +27,7 @@ Sharpness sharpness_on_edges(const MeshArrays& a) {
 int MeshArrays::add_vertex(const Gaussian& g) {
   means.push_back(g.mean);
   covariances.push_back(g.covariance);
+  if (!sharpness.corners.empty()) sharpness.corners.resize(means.size(), 0.0);
   return int(means.size()) - 1;
 }
 

@@ -93,6 +93,34 @@ TEST(ExtrudeFaces, TwoAdjacentCubeFacesMoveAlongTheirAverageNormal) {
     EXPECT_LT((a.means[8 + k] - before.means[size_t(originals[k])] - shift).norm(), 1e-15);
 }
 
+// Faces 3 and 4 of the 4 × 4 grid share edge 8–9 (inside the region) and have 3–4 on the border
+// of the region; both creased, with a corner at 9.
+TEST(ExtrudeFaces, CreasesAndCornersTravelWithTheRegionAndStayAtItsBase) {
+  CovarianceMesh grid = make_sample("grid", 16);
+  grid.sharpness.set_crease(8, 9, 10.0);
+  grid.sharpness.set_crease(3, 4, 2.5);
+  grid.sharpness.set_crease(0, 1, 1.0);  // outside the region
+  grid.sharpness.set_corner(9, 4.0, int(grid.n_vertices()));
+  const Modelled m = extrude_faces(grid, {3, 7}, 0.5);
+  const MeshArrays a = arrays_of(m.mesh);
+  ASSERT_EQ(a.sharpness.corners.size(), size_t(a.n_vertices()));
+  // The copy of each region vertex is the one the region's faces now use.
+  std::map<int, int> copy;
+  const MeshArrays before = arrays_of(grid);
+  for (int f : {3, 7})
+    for (size_t k = 0; k < before.faces[size_t(f)].size(); ++k)
+      copy[before.faces[size_t(f)][k]] = a.faces[size_t(f)][k];
+  EXPECT_NE(copy.at(8), 8);
+  EXPECT_EQ(a.sharpness.crease(copy.at(8), copy.at(9)), 10.0);  // on the cap
+  EXPECT_EQ(a.sharpness.crease(copy.at(3), copy.at(4)), 2.5);
+  EXPECT_EQ(a.sharpness.crease(3, 4), 2.5);  // and at the base, where the edge also stays
+  EXPECT_EQ(a.sharpness.crease(8, 9), 0.0);  // inside the region: no longer an edge at the base
+  EXPECT_EQ(a.sharpness.crease(0, 1), 1.0);
+  EXPECT_EQ(a.sharpness.corner(copy.at(9)), 4.0);
+  EXPECT_EQ(a.sharpness.corner(9), 4.0);
+  EXPECT_EQ(a.sharpness.corner(copy.at(8)), 0.0);
+}
+
 TEST(ExtrudeFaces, FaceOnAGridBorderKeepsTheBoundary) {
   const CovarianceMesh grid = make_sample("grid", 16);  // 4 × 4 quads, 25 vertices
   const Shape s0 = shape_of(grid);

@@ -115,6 +115,23 @@ TEST(InsetFaces, TwoAdjacentFacesAreInsetAsOneRegion) {
   EXPECT_EQ(a.faces[4], (std::vector<int>{17, 18, 21, 20}));
 }
 
+// An inset face's creased rim keeps its sharpness on the outer edges and gives it to the inner
+// ones, which now bound the face; a corner goes to the inner copy as well.
+TEST(InsetFaces, CreasesAndCornersOfTheFaceReachItsInnerCopy) {
+  CovarianceMesh grid = flat_grid(3, 3);  // face 4 is the middle quad 5, 6, 10, 9
+  grid.sharpness.set_crease(5, 6, 10.0);
+  grid.sharpness.set_corner(10, 3.0, int(grid.n_vertices()));
+  const Modelled m = inset_faces(grid, {4}, 0.2);
+  const MeshArrays a = arrays_of(m.mesh);
+  const std::vector<int>& face = a.faces[4];
+  ASSERT_EQ(face.size(), 4u);
+  EXPECT_EQ(a.sharpness.crease(face[0], face[1]), 10.0);
+  EXPECT_EQ(a.sharpness.crease(5, 6), 10.0);
+  EXPECT_EQ(a.sharpness.crease(face[1], face[2]), 0.0);
+  EXPECT_EQ(a.sharpness.corner(face[2]), 3.0);
+  EXPECT_EQ(a.sharpness.corner(10), 3.0);
+}
+
 TEST(InsetFaces, AFaceOnTheMeshBorderKeepsTheBoundary) {
   const CovarianceMesh grid = make_sample("grid", 16);
   const Modelled m = inset_faces(grid, {0}, 0.1);
