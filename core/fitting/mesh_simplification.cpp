@@ -1,5 +1,6 @@
 #include "core/fitting/mesh_simplification.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModBaseT.hh>
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
+#include <OpenMesh/Tools/Decimater/Observer.hh>
 
 #include "core/mesh/error.h"
 
@@ -134,6 +136,23 @@ void mark_sharpness(TriMesh& t, const Sharpness& sharpness, OpenMesh::EPropHandl
   }
 }
 
+/// Passes the decimater's progress on (a hundred reports over the collapses asked for) and its
+/// caller's wish to stop back to it.
+class ProgressObserver : public OpenMesh::Decimater::Observer {
+public:
+  ProgressObserver(const ProgressReport& report, size_t collapses)
+      : Observer(std::max<size_t>(1, collapses / 100)), report_(report), collapses_(std::max<size_t>(1, collapses)) {}
+  void notify(size_t step) override {
+    if (!stopped && !report_(std::min(1.0, double(step) / double(collapses_)))) stopped = true;
+  }
+  bool abort() const override { return stopped; }
+  bool stopped = false;
+
+private:
+  const ProgressReport& report_;
+  size_t collapses_;
+};
+
 /// Every vertex's region before any collapse: its quadric, and a third of each face around it.
 void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region) {
   for (const auto v : t.vertices()) t.property(region, v).vertex = v.idx();
@@ -219,7 +238,10 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
     decimater.add(flipping);
     decimater.module(flipping).set_max_normal_deviation(options.max_normal_deviation_degrees);
     decimater.initialize();
+    ProgressObserver observer(options.progress, t.n_vertices() - std::min(t.n_vertices(), options.target_vertices));
+    if (options.progress) decimater.set_observer(&observer);
     decimater.decimate_to(options.target_vertices);
+    if (observer.stopped) throw Cancelled();
   }
   t.garbage_collection();
 

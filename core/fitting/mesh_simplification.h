@@ -4,6 +4,7 @@
 #include <cstddef>
 
 #include "core/mesh/covariance_mesh.h"
+#include "core/support/progress.h"
 
 namespace gps {
 
@@ -11,6 +12,7 @@ struct SimplifyOptions {
   size_t target_vertices = 0;                // the vertex count asked for
   double bias = 0.05;                        // thickness of the face discs across their planes (GPS paper Eq. 16)
   double max_normal_deviation_degrees = 45;  // the most a collapse may turn a face's normal
+  ProgressReport progress;                   // the fraction of the collapses asked for that are done
 };
 
 struct SimplifiedMesh {
@@ -28,7 +30,8 @@ struct SimplifiedMesh {
 /// vertices collapsed into it (see the .cpp). The input's creases stay creases: a vertex on one
 /// collapses only along it, so the coarse creases follow the input's; its corners and the vertices
 /// where creases meet or end do not move. Throws gps::Error for a target below 4 vertices, or where
-/// the fans of faces of more sides would make an edge non-manifold.
+/// the fans of faces of more sides would make an edge non-manifold; Cancelled when the progress
+/// report asks it to stop.
 SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions& options);
 
 }  // namespace gps

@@ -86,6 +86,39 @@ TEST(Simplify, SphereKeepsGenusZeroAndOutwardFaces) {
   }
 }
 
+// Progress rises to the end and does not change the result; a report that asks to stop ends the
+// simplification with Cancelled, early.
+TEST(Simplify, ReportsProgressAndStopsWhenAsked) {
+  const CovarianceMesh input = make_sample("icosphere", 5120);
+  std::vector<double> seen;
+  SimplifyOptions options;
+  options.target_vertices = 200;
+  options.progress = [&](double fraction) {
+    seen.push_back(fraction);
+    return true;
+  };
+  const SimplifiedMesh reported = simplify_mesh(input, options);
+  ASSERT_GE(seen.size(), 50u);
+  for (size_t i = 1; i < seen.size(); ++i) EXPECT_GT(seen[i], seen[i - 1]);
+  EXPECT_GT(seen.front(), 0.0);
+  EXPECT_LE(seen.back(), 1.0);
+  EXPECT_GT(seen.back(), 0.95);
+  EXPECT_EQ(reported.mesh.n_vertices(), 200u);
+  const SimplifiedMesh plain = simplified(input, 200);
+  for (size_t v = 0; v < plain.mesh.n_vertices(); ++v) {
+    EXPECT_EQ(reported.mesh.mean(v), plain.mesh.mean(v));
+    EXPECT_EQ(reported.mesh.covariance(v), plain.mesh.covariance(v));
+  }
+
+  int calls = 0;
+  options.progress = [&](double fraction) {
+    ++calls;
+    return fraction < 0.3;
+  };
+  EXPECT_THROW(simplify_mesh(input, options), Cancelled);
+  EXPECT_LT(calls, 40);
+}
+
 TEST(Simplify, TorusOfQuadsIsTriangulatedAndKeepsGenusOne) {
   const CovarianceMesh input = make_sample("torus");
   const SimplifiedMesh s = simplified(input, 60);
