@@ -111,7 +111,7 @@ int EditorApp::run() {
 
 bool EditorApp::script_finished() {
   const bool scripted = script_ || !options_.screenshot.empty() || !options_.save.empty();
-  if (!scripted || (script_ && !script_->done())) return false;
+  if (!scripted || (script_ && !script_->done()) || job_dialog_.running()) return false;
   // Two more frames after the last event: auto-sized ImGui windows settle on their second frame.
   if (++finishing_frames_ < 3) return false;
   if (!options_.save.empty()) save_to(options_.save);
@@ -123,7 +123,9 @@ void EditorApp::frame() {
   const int swap_interval = view_.vsync && !script_ ? 1 : 0;  // replays run as fast as they can
   if (swap_interval != swap_interval_) glfwSwapInterval(swap_interval_ = swap_interval);
   frame_input_time_ = Clock::now();
-  const std::vector<InputEvent> events = script_ ? script_->next_frame() : queue_.take_frame();
+  // A replay waits for a background job (simplify, fit), so that it does not depend on its speed.
+  const std::vector<InputEvent> events =
+      script_ ? (job_dialog_.running() ? std::vector<InputEvent>{} : script_->next_frame()) : queue_.take_frame();
   if (recorder_) recorder_->record_frame(events);
   for (const InputEvent& e : events) input_.apply(e);
 
@@ -230,6 +232,7 @@ void EditorApp::draw_ui() {
   commands_.draw_menu_bar();
   draw_handles_and_box();
   draw_modelling_overlay();
+  draw_job_dialog();
   if (view_.show_inspector) inspector_.draw(document_, selection_, reach_options_, &view_.show_inspector);
   if (const auto request = inspector_.take_sharpness_request()) apply_sharpness(request->corners, request->sharpness);
   if (view_.show_view) {

@@ -3,8 +3,9 @@
 // concept — editor.cpp (frames, drawing, output), editor_pointer.cpp (mouse and handle drags),
 // editor_actions.cpp (open, save, undo, the unsaved-changes prompt), editor_commands.cpp (the
 // command table: keys, menus, help), editor_selection_commands.cpp (selection modes and tools),
-// editor_modelling.cpp (the Mesh menu's operations) and editor_modal_tools.cpp (G / S / R, extrude,
-// loop cut, inset and crease following the mouse).
+// editor_modelling.cpp (the Mesh menu's operations), editor_modal_tools.cpp (G / S / R, extrude,
+// loop cut, inset and crease following the mouse) and editor_mesh_jobs.cpp (File → Simplify… in
+// the background).
 #include <array>
 #include <chrono>
 #include <functional>
@@ -28,6 +29,7 @@
 #include "ui/glfw_input.h"
 #include "ui/input_events.h"
 #include "ui/inspector_panel.h"
+#include "ui/job_dialog.h"
 #include "ui/recent_files.h"
 #include "ui/selection.h"
 #include "ui/statistics_overlay.h"
@@ -116,6 +118,9 @@ private:
   void draw_merge_items();
   void draw_add_items();
   void draw_modelling_overlay();
+  // Long computations in the background (editor_mesh_jobs.cpp).
+  void open_simplify_dialog();
+  void draw_job_dialog();
   // Actions (editor_actions.cpp).
   void request(Action action);
   void perform(const Action& action);
@@ -209,6 +214,13 @@ private:
     std::shared_ptr<const CovarianceMesh> shown;  // the mesh the surface was planned for
   };
   std::optional<CreaseTool> crease_;
+  // File → Simplify…: the dialog, its job and the settings it last had.
+  struct SimplifySettings {
+    int vertices = 0;  // 0: a tenth of the mesh's
+    float bias = 0.05f;
+  };
+  SimplifySettings simplify_settings_;
+  JobDialog job_dialog_;
   std::string popup_request_;  // a popup menu (Delete, Merge, Add) a key asked for
   std::string last_summary_;   // what the last operation did
 

@@ -8,6 +8,7 @@
 #include <imgui_stdlib.h>
 
 #include "core/mesh/error.h"
+#include "ui/input_events.h"
 
 namespace gps {
 namespace fs = std::filesystem;
@@ -26,7 +27,6 @@ std::string size_text(std::uintmax_t bytes) {
   return text;
 }
 
-bool key_pressed(ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), false); }
 
 }  // namespace
 
@@ -118,7 +118,7 @@ std::optional<std::string> FileBrowser::draw() {
     open_ = false;
     return std::nullopt;
   }
-  bool cancel = !replace_ && key_pressed(ImGuiKey_Escape);  // with "Replace?" up, Escape answers that
+  bool cancel = !replace_ && imgui_key_pressed(ImGuiKey_Escape);  // with "Replace?" up, Escape answers that
 
   const ImGuiStyle& style = ImGui::GetStyle();
   if (ImGui::Button("Up")) navigate("..");
@@ -206,10 +206,10 @@ void FileBrowser::draw_replace_question() {
   const fs::path path = replace_.value_or("");
   ImGui::Text("Replace %s?", path.filename().c_str());
   ImGui::TextDisabled("It already exists in %s.", path.parent_path().c_str());
-  const bool enter = key_pressed(ImGuiKey_Enter) || key_pressed(ImGuiKey_KeyPadEnter);
+  const bool enter = imgui_key_pressed(ImGuiKey_Enter) || imgui_key_pressed(ImGuiKey_KeyPadEnter);
   if (ImGui::Button("Replace") || (enter && !appearing)) result_ = replace_;
   ImGui::SameLine();
-  if (ImGui::Button("Cancel") || key_pressed(ImGuiKey_Escape)) {
+  if (ImGui::Button("Cancel") || imgui_key_pressed(ImGuiKey_Escape)) {
     replace_.reset();
     focus_name_ = true;
     ImGui::CloseCurrentPopup();

@@ -137,4 +137,6 @@ std::string key_name(int code) {
   return "";
 }
 
+bool imgui_key_pressed(ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), false); }
+
 }  // namespace gps

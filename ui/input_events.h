@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 struct ImGuiIO;
+using ImGuiKey = int;  // imgui.h's enum type
 
 namespace gps {
 
@@ -54,6 +55,9 @@ struct InputState {
 /// Hands one frame's events to Dear ImGui (1.86 API: MousePos, MouseDown, KeysDown, modifiers,
 /// wheel, characters); `state` must already include them.
 void feed_imgui(ImGuiIO& io, const InputState& state, const std::vector<InputEvent>& events);
+
+/// Whether Dear ImGui saw `key` (an ImGuiKey_) go down this frame, through the key map.
+bool imgui_key_pressed(ImGuiKey key);
 
 /// Sets Dear ImGui's key map to GLFW key codes (1.86 looks keys up in KeysDown through it).
 void map_imgui_keys(ImGuiIO& io);

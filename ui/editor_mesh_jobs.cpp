@@ -1,0 +1,90 @@
+// File → Simplify…: the long mesh computations, each in a dialog whose job runs in the background
+// (ui/job_dialog.h) and whose result replaces the mesh as one undo step.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+#include "core/fitting/mesh_simplification.h"
+#include "core/fitting/surface_distance.h"
+#include "core/mesh/error.h"
+#include "ui/editor_app.h"
+
+namespace gps {
+
+namespace {
+
+/// The limit surface a preview measures: coarse enough to take a moment, fine enough to show the error.
+constexpr int kPreviewLevel = 6;
+constexpr double kPreviewTriangles = 4e5;
+
+/// "0.12 %" of a relative distance.
+std::string percent(double relative) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g %%", 100.0 * relative);
+  return text;
+}
+
+/// Throws Cancelled when the report asks to stop.
+void report_or_stop(const ProgressReport& report, double fraction) {
+  if (!report(fraction)) throw Cancelled();
+}
+
+}  // namespace
+
+void EditorApp::open_simplify_dialog() {
+  if (modal_active()) return;
+  const auto input = std::make_shared<const CovarianceMesh>(document_.mesh());
+  auto settings = std::make_shared<SimplifySettings>(simplify_settings_);
+  settings->vertices = std::clamp(settings->vertices, 4, std::max(4, int(input->n_vertices())));
+  if (settings->vertices >= int(input->n_vertices())) settings->vertices = std::max(4, int(input->n_vertices()) / 10);
+  JobDialog::Spec spec;
+  spec.title = "Simplify";
+  spec.settings = [this, settings, n = input->n_vertices()] {
+    ImGui::Text("%zu vertices now", n);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::InputInt("vertices to keep", &settings->vertices, 0);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+    ImGui::InputFloat("bias", &settings->bias, 0.0f, 0.0f, "%.3g");
+    simplify_settings_ = *settings;
+  };
+  spec.work = [input, settings]() -> BackgroundJob::Work {
+    if (settings->vertices < 4) throw Error("keep at least 4 vertices");
+    if (size_t(settings->vertices) >= input->n_vertices())
+      throw Error("keep fewer than the " + std::to_string(input->n_vertices()) + " vertices there are");
+    if (!(settings->bias > 0.0f)) throw Error("the bias must be positive");
+    SimplifyOptions options;
+    options.target_vertices = size_t(settings->vertices);
+    options.bias = double(settings->bias);
+    return [input, options](const ProgressReport& report) mutable {
+      options.progress = [&report](double fraction) { return report(0.8 * fraction); };
+      const SimplifiedMesh s = simplify_mesh(*input, options);
+      report_or_stop(report, 0.8);
+      const LimitTriangles limit = limit_surface_triangles(s.mesh, kPreviewLevel, {}, kPreviewTriangles);
+      report_or_stop(report, 0.9);
+      const DistanceSummary d = distances_to_surface(vertex_means(*input), limit.triangles);
+      Modelled m;
+      m.mesh = s.mesh;
+      m.summary = "simplified " + std::to_string(s.input_vertices) + " to " + std::to_string(s.mesh.n_vertices()) +
+                  " vertices; the input lies from the new surface within rms " + percent(d.relative_rms()) +
+                  ", max " + percent(d.relative_max()) + " of its size";
+      return m;
+    };
+  };
+  job_dialog_.open(std::move(spec));
+}
+
+void EditorApp::draw_job_dialog() {
+  std::optional<Modelled> result = job_dialog_.draw();
+  if (!result) return;
+  try {
+    install(*result);
+    operation_note(last_summary_, false);
+  } catch (const Error& e) {
+    operation_note(e.what(), true);
+  }
+}
+
+}  // namespace gps
