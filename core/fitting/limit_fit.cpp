@@ -1,0 +1,444 @@
+#include "core/fitting/limit_fit.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/SparseCholesky>
+
+#include "core/fitting/closest_points.h"
+#include "core/fitting/limit_weights.h"
+#include "core/mesh/dual_map.h"
+#include "core/mesh/error.h"
+#include "core/plans/stencil_table.h"
+
+namespace gps {
+
+namespace {
+
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Block = Eigen::Matrix<double, 9, 9>;
+
+// The lower-triangular entries (row, column) of L that the six precision parameters set, in order;
+// the diagonal ones through exp.
+constexpr int kFactorEntries[6][2] = {{0, 0}, {1, 0}, {1, 1}, {2, 0}, {2, 1}, {2, 2}};
+
+Mat3 cholesky_factor(const Vec6& t) {
+  Mat3 l = Mat3::Zero();
+  for (int c = 0; c < 6; ++c) {
+    const int a = kFactorEntries[c][0], b = kFactorEntries[c][1];
+    l(a, b) = a == b ? std::exp(t[c]) : t[c];
+  }
+  return l;
+}
+
+Vec6 factor_parameters(const Mat3& precision) {
+  const Mat3 l = Eigen::LLT<Mat3>(precision).matrixL();
+  Vec6 t;
+  for (int c = 0; c < 6; ++c) {
+    const int a = kFactorEntries[c][0], b = kFactorEntries[c][1];
+    t[c] = a == b ? std::log(l(a, b)) : l(a, b);
+  }
+  return t;
+}
+
+struct Parameters {
+  std::vector<Vec3> means;
+  std::vector<Vec6> factors;  // empty for a plain fit
+};
+
+// Per vertex: its precision K = LLᵀ and factor L.
+struct VertexState {
+  std::vector<Mat3> precision, factor;
+};
+
+// Per target, at the current parameters and correspondence: the limit point x, K(u, v)⁻¹ and x − p.
+struct PointState {
+  Vec3 x, residual;
+  Mat3 inverse;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The fit's problem: unknowns P per vertex (3 means, then 6 factor parameters unless plain), vertex-major.
+class FitProblem {
+public:
+  FitProblem(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options)
+      : options_(options),
+        targets_(targets),
+        surface_(options.plain ? with_isotropic_covariances(coarse) : coarse, options.plans),
+        n_(int(coarse.n_vertices())),
+        p_(options.plain ? 3 : 9) {
+    const CovarianceMesh start = options.plain ? with_isotropic_covariances(coarse) : coarse;
+    for (int i = 0; i < n_; ++i) {
+      start_.means.push_back(start.mean(size_t(i)));
+      if (!options.plain) start_.factors.push_back(factor_parameters(start.covariance(size_t(i)).inverse()));
+    }
+    plain_precision_ = start.covariance(0).inverse();
+    diagonal_ = bounding_box_diagonal(targets);
+    if (!(diagonal_ > 0)) diagonal_ = 1;
+    // The umbrella Laplacian, and its normal matrix LᵀL that the smoothness term's Hessian is.
+    std::vector<Eigen::Triplet<double>> lap;
+    double edge_sum = 0;
+    size_t edges = 0;
+    for (const auto v : coarse.mesh.vertices()) {
+      const int i = v.idx();
+      const double degree = double(coarse.mesh.valence(v));
+      lap.emplace_back(i, i, degree > 0 ? -1.0 : 0.0);
+      for (const auto w : coarse.mesh.vv_range(v)) {
+        lap.emplace_back(i, w.idx(), 1.0 / degree);
+        edge_sum += (start.mean(size_t(i)) - start.mean(size_t(w.idx()))).norm();
+        ++edges;
+      }
+    }
+    Eigen::SparseMatrix<double> l(n_, n_);
+    l.setFromTriplets(lap.begin(), lap.end());
+    laplacian_normal_ = Eigen::SparseMatrix<double>(l.transpose() * l);
+    length_ = edges > 0 ? edge_sum / double(edges) : diagonal_;
+    smoothness_ = options.smoothness * double(targets.size()) / double(std::max(n_, 1));
+  }
+
+  const Parameters& start() const { return start_; }
+  int unknowns() const { return n_ * p_; }
+
+  VertexState vertex_state(const Parameters& x) const {
+    VertexState s;
+    for (int i = 0; i < n_; ++i) {
+      if (p_ == 3) {
+        s.precision.push_back(plain_precision_);
+        s.factor.push_back(Mat3::Identity());
+      } else {
+        s.factor.push_back(cholesky_factor(x.factors[size_t(i)]));
+        s.precision.push_back(s.factor.back() * s.factor.back().transpose());
+      }
+    }
+    return s;
+  }
+
+  std::vector<Dual> base_points(const Parameters& x, const VertexState& s) const {
+    std::vector<Dual> q(static_cast<size_t>(n_));
+    for (size_t i = 0; i < size_t(n_); ++i) q[i] << vech(s.precision[i]), s.precision[i] * x.means[i];
+    return q;
+  }
+
+  // Closest points on the limit surface of `x`; each kept at the old one where that is closer.
+  void update_correspondences(const Parameters& x) {
+    const VertexState s = vertex_state(x);
+    const std::vector<Dual> base = base_points(x, s);
+    const std::vector<Dual> points = apply_stencils(surface_.tables().stencils, base);
+    std::vector<SurfacePoint> found =
+        closest_limit_points(surface_.tables().plans, points, targets_, options_.correspondence_level);
+    if (!correspondences_.empty()) {
+      const std::vector<PointState> old = point_states(s);
+      for (size_t j = 0; j < found.size(); ++j)
+        if (old[j].residual.norm() < found[j].distance) {
+          found[j] = correspondences_[j];
+          found[j].distance = old[j].residual.norm();
+        }
+    }
+    correspondences_ = std::move(found);
+    weights_.assign(targets_.size(), {});
+    const long m = long(targets_.size());
+#pragma omp parallel for schedule(dynamic, 256)
+    for (long j = 0; j < m; ++j) {
+      const SurfacePoint& c = correspondences_[size_t(j)];
+      weights_[size_t(j)] = limit_weights(surface_.tables().plans, surface_.tables().stencils, c.patch, c.u, c.v);
+    }
+    build_pattern();
+  }
+
+  std::vector<double> distances() const {
+    std::vector<double> d;
+    d.reserve(correspondences_.size());
+    for (const auto& c : correspondences_) d.push_back(c.distance);
+    return d;
+  }
+
+  DistanceSummary error() const { return summarise_distances(distances(), diagonal_); }
+
+  // Squared distances at the present correspondences plus the smoothness term.
+  double objective(const Parameters& x) const {
+    const std::vector<PointState> points = point_states(vertex_state(x));
+    double sum = 0;
+    for (const auto& p : points) sum += p.residual.squaredNorm();
+    return sum + smoothness_energy(x);
+  }
+
+  double objective_of_correspondences(const Parameters& x) const {
+    double sum = 0;
+    for (const auto& c : correspondences_) sum += c.distance * c.distance;
+    return sum + smoothness_energy(x);
+  }
+
+  // The Gauss-Newton normal equations at `x`: H (lower triangle) and g, H δ = −g.
+  void normal_equations(const Parameters& x, Eigen::SparseMatrix<double>& h, Eigen::VectorXd& g) const {
+    const VertexState s = vertex_state(x);
+    const std::vector<PointState> points = point_states(s);
+    std::vector<std::vector<double>> rows(static_cast<size_t>(n_));  // per vertex: its blocks (i, k ≥ i), p × p each
+    g = Eigen::VectorXd::Zero(unknowns());
+    const int pp = p_ * p_;
+#pragma omp parallel for schedule(dynamic, 16)
+    for (int i = 0; i < n_; ++i) {
+      std::vector<double>& row = rows[size_t(i)];
+      row.assign(size_t(pattern_offsets_[size_t(i) + 1] - pattern_offsets_[size_t(i)]) * size_t(pp), 0.0);
+      const int* cols = pattern_columns_.data() + pattern_offsets_[size_t(i)];
+      const int n_cols = pattern_offsets_[size_t(i) + 1] - pattern_offsets_[size_t(i)];
+      Eigen::Matrix<double, 9, 1> gi = Eigen::Matrix<double, 9, 1>::Zero();
+      for (int e = users_offsets_[size_t(i)]; e < users_offsets_[size_t(i) + 1]; ++e) {
+        const int j = users_[size_t(e)].first, a = users_[size_t(e)].second;
+        const LimitWeights& w = weights_[size_t(j)];
+        const PointState& pt = points[size_t(j)];
+        const Eigen::Matrix<double, 3, 9> ji = jacobian(s, x, pt, i, w.value[size_t(a)]);
+        gi += ji.transpose() * pt.residual;
+        for (size_t b = size_t(a); b < w.size(); ++b) {
+          const int k = w.vertex[b];
+          const Eigen::Matrix<double, 3, 9> jk = b == size_t(a) ? ji : jacobian(s, x, pt, k, w.value[b]);
+          const int slot = int(std::lower_bound(cols, cols + n_cols, k) - cols);
+          if (p_ == 9) {
+            Eigen::Map<Block> block(row.data() + size_t(slot) * size_t(pp));
+            block.noalias() += ji.transpose() * jk;
+          } else {
+            Eigen::Map<Eigen::Matrix3d> b3(row.data() + size_t(slot) * size_t(pp));
+            b3.noalias() += ji.leftCols<3>().transpose() * jk.leftCols<3>();
+          }
+        }
+      }
+      g.segment(p_ * i, p_) = gi.head(p_);
+    }
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < n_; ++i)
+      for (int e = pattern_offsets_[size_t(i)]; e < pattern_offsets_[size_t(i) + 1]; ++e) {
+        const int k = pattern_columns_[size_t(e)];
+        const double* block = rows[size_t(i)].data() + size_t(e - pattern_offsets_[size_t(i)]) * size_t(pp);
+        for (int c1 = 0; c1 < p_; ++c1)
+          for (int c2 = 0; c2 < p_; ++c2) {
+            const int row = p_ * k + c2, col = p_ * i + c1;  // block (i, k) transposed into the lower triangle
+            if (row >= col) entries.emplace_back(row, col, block[c1 + p_ * c2]);
+          }
+      }
+    // Smoothness: w · LᵀL on every component, the factors' weighted by the squared edge length.
+    const Eigen::MatrixXd d = changes(x);
+    for (int outer = 0; outer < laplacian_normal_.outerSize(); ++outer)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(laplacian_normal_, outer); it; ++it) {
+        const int r = int(it.row()), c = int(it.col());
+        for (int comp = 0; comp < p_; ++comp) {
+          const double w = smoothness_ * component_weight(comp) * it.value();
+          if (r >= c) entries.emplace_back(p_ * r + comp, p_ * c + comp, w);
+          g[p_ * r + comp] += w * d(c, comp);
+        }
+      }
+    for (int u = 0; u < unknowns(); ++u) entries.emplace_back(u, u, 0.0);
+    h.resize(unknowns(), unknowns());
+    h.setFromTriplets(entries.begin(), entries.end());
+  }
+
+  Parameters stepped(const Parameters& x, const Eigen::VectorXd& delta) const {
+    Parameters y = x;
+    for (int i = 0; i < n_; ++i) {
+      y.means[size_t(i)] += delta.segment<3>(p_ * i);
+      if (p_ == 9) y.factors[size_t(i)] += delta.segment<6>(p_ * i + 3);
+    }
+    return y;
+  }
+
+  CovarianceMesh mesh_of(const CovarianceMesh& coarse, const Parameters& x) const {
+    CovarianceMesh m = coarse;
+    const VertexState s = vertex_state(x);
+    for (int i = 0; i < n_; ++i) {
+      m.set_mean(size_t(i), x.means[size_t(i)]);
+      const Mat3 l_inverse = s.factor[size_t(i)].triangularView<Eigen::Lower>().solve(Mat3::Identity());
+      m.set_covariance(size_t(i), p_ == 3 ? Mat3(plain_precision_.inverse()) : Mat3(l_inverse.transpose() * l_inverse));
+    }
+    return m;
+  }
+
+private:
+  double component_weight(int comp) const { return comp < 3 ? 1.0 : length_ * length_; }
+
+  // Per vertex, per component: the change from the start (factor parameters scaled by the edge length).
+  Eigen::MatrixXd changes(const Parameters& x) const {
+    Eigen::MatrixXd d(n_, p_);
+    for (int i = 0; i < n_; ++i) {
+      d.block<1, 3>(i, 0) = (x.means[size_t(i)] - start_.means[size_t(i)]).transpose();
+      if (p_ == 9) d.block<1, 6>(i, 3) = (x.factors[size_t(i)] - start_.factors[size_t(i)]).transpose();
+    }
+    return d;
+  }
+
+  double smoothness_energy(const Parameters& x) const {
+    const Eigen::MatrixXd d = changes(x);
+    double sum = 0;
+    for (int comp = 0; comp < p_; ++comp)
+      sum += component_weight(comp) * d.col(comp).dot(laplacian_normal_ * d.col(comp));
+    return smoothness_ * sum;
+  }
+
+  std::vector<PointState> point_states(const VertexState& s) const {
+    std::vector<PointState> out(targets_.size());
+    const long m = long(targets_.size());
+    // The means as given by the state's precisions: h_k = K_k μ_k.
+#pragma omp parallel for schedule(dynamic, 256)
+    for (long j = 0; j < m; ++j) {
+      const LimitWeights& w = weights_[size_t(j)];
+      Mat3 k = Mat3::Zero();
+      Vec3 h = Vec3::Zero();
+      for (size_t a = 0; a < w.size(); ++a) {
+        const size_t i = size_t(w.vertex[a]);
+        k += w.value[a] * s.precision[i];
+        h += w.value[a] * (s.precision[i] * means_[i]);
+      }
+      const Eigen::LLT<Mat3> llt(k);
+      PointState& p = out[size_t(j)];
+      p.inverse = llt.solve(Mat3::Identity());
+      p.x = llt.solve(h);
+      p.residual = p.x - targets_[size_t(j)];
+    }
+    return out;
+  }
+
+  // dx/d(unknowns of vertex i) at a point whose weight of vertex i is w: w K⁻¹ [K_i | dK_i/dθ_c (μ_i − x)].
+  Eigen::Matrix<double, 3, 9> jacobian(const VertexState& s, const Parameters& x, const PointState& pt, int i,
+                                       double w) const {
+    Eigen::Matrix<double, 3, 9> b = Eigen::Matrix<double, 3, 9>::Zero();
+    b.leftCols<3>() = s.precision[size_t(i)];
+    if (p_ == 9) {
+      const Mat3& l = s.factor[size_t(i)];
+      const Vec3 d = x.means[size_t(i)] - pt.x;
+      const Vec3 ltd = l.transpose() * d;
+      for (int c = 0; c < 6; ++c) {
+        const int a = kFactorEntries[c][0], bb = kFactorEntries[c][1];
+        const double scale = a == bb ? l(a, a) : 1.0;
+        // dK = dL Lᵀ + L dLᵀ with dL = scale · e_a e_bᵀ: dK d = scale (e_a (Lᵀd)_b + L_{:,b} d_a).
+        Vec3 col = scale * d[a] * l.col(bb);
+        col[a] += scale * ltd[bb];
+        b.col(3 + c) = col;
+      }
+    }
+    return w * pt.inverse * b;
+  }
+
+  // Which blocks (i, k ≥ i) the normal matrix has (vertices sharing a point), and per vertex the
+  // points that read it with its position among their weights.
+  void build_pattern() {
+    users_offsets_.assign(size_t(n_) + 1, 0);
+    for (const auto& w : weights_)
+      for (const int i : w.vertex) ++users_offsets_[size_t(i) + 1];
+    for (int i = 0; i < n_; ++i) users_offsets_[size_t(i) + 1] += users_offsets_[size_t(i)];
+    users_.resize(size_t(users_offsets_.back()));
+    std::vector<int> fill(users_offsets_.begin(), users_offsets_.end() - 1);
+    for (size_t j = 0; j < weights_.size(); ++j)
+      for (size_t a = 0; a < weights_[j].size(); ++a)
+        users_[size_t(fill[size_t(weights_[j].vertex[a])]++)] = {int(j), int(a)};
+    pattern_offsets_.assign(1, 0);
+    pattern_columns_.clear();
+    std::vector<int> stamp(size_t(n_), -1), row;
+    for (int i = 0; i < n_; ++i) {
+      row.assign(1, i);
+      stamp[size_t(i)] = i;
+      for (int e = users_offsets_[size_t(i)]; e < users_offsets_[size_t(i) + 1]; ++e) {
+        const LimitWeights& w = weights_[size_t(users_[size_t(e)].first)];
+        for (size_t b = size_t(users_[size_t(e)].second); b < w.size(); ++b)
+          if (stamp[size_t(w.vertex[b])] != i) stamp[size_t(w.vertex[b])] = i, row.push_back(w.vertex[b]);
+      }
+      std::sort(row.begin(), row.end());
+      pattern_columns_.insert(pattern_columns_.end(), row.begin(), row.end());
+      pattern_offsets_.push_back(int(pattern_columns_.size()));
+    }
+  }
+
+public:
+  // The means the point states read: set before point_states (the parameters' means).
+  void set_means(const Parameters& x) { means_ = x.means; }
+
+private:
+  const FitOptions& options_;
+  const std::vector<Vec3>& targets_;
+  PlannedSurface surface_;
+  int n_, p_;
+  Parameters start_;
+  Mat3 plain_precision_;
+  double diagonal_ = 1, length_ = 1, smoothness_ = 0;
+  Eigen::SparseMatrix<double> laplacian_normal_;
+  std::vector<SurfacePoint> correspondences_;
+  std::vector<LimitWeights> weights_;
+  std::vector<int> users_offsets_, pattern_offsets_, pattern_columns_;
+  std::vector<std::pair<int, int>> users_;
+  std::vector<Vec3> means_;
+};
+
+}  // namespace
+
+CovarianceMesh with_isotropic_covariances(const CovarianceMesh& mesh) {
+  double sum = 0;
+  size_t count = 0;
+  for (const auto e : mesh.mesh.edges()) {
+    sum += mesh.mesh.calc_edge_length(e);
+    ++count;
+  }
+  const double sigma = count > 0 && sum > 0 ? 0.5 * sum / double(count) : 1.0;
+  CovarianceMesh out = mesh;
+  for (size_t i = 0; i < out.n_vertices(); ++i) out.set_covariance(i, sigma * sigma * Mat3::Identity());
+  return out;
+}
+
+FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options) {
+  if (targets.empty()) throw Error("there are no points to fit the surface to");
+  if (coarse.n_faces() == 0) throw Error("the mesh to fit has no faces");
+  validate_gaussians(coarse);
+  auto clock = std::chrono::steady_clock::now();
+  FitProblem problem(coarse, targets, options);
+  Parameters x = problem.start();
+  problem.set_means(x);
+  problem.update_correspondences(x);
+  FitResult result;
+  const auto report = [&](int iteration) {
+    FitIteration it{iteration, problem.error(), seconds_since(clock)};
+    result.iterations.push_back(it);
+    if (options.progress) options.progress(it);
+    clock = std::chrono::steady_clock::now();
+  };
+  report(0);
+  double energy = problem.objective_of_correspondences(x);
+  double damping = 1e-4;
+  for (int iteration = 1; iteration <= options.iterations; ++iteration) {
+    Eigen::SparseMatrix<double> h;
+    Eigen::VectorXd g;
+    problem.normal_equations(x, h, g);
+    const Eigen::VectorXd diagonal = h.diagonal();
+    const double floor = 1e-12 * std::max(diagonal.maxCoeff(), 1e-300);
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
+    solver.analyzePattern(h);
+    bool accepted = false;
+    // Levenberg-Marquardt: H + λ diag(H), λ raised until a step lowers the objective.
+    for (int attempt = 0; attempt < 12 && !accepted; ++attempt) {
+      Eigen::SparseMatrix<double> damped = h;
+      for (int u = 0; u < problem.unknowns(); ++u) damped.coeffRef(u, u) += damping * diagonal[u] + floor;
+      solver.factorize(damped);
+      if (solver.info() == Eigen::Success) {
+        const Eigen::VectorXd delta = -solver.solve(g);
+        const Parameters y = problem.stepped(x, delta);
+        problem.set_means(y);
+        const double e = delta.allFinite() ? problem.objective(y) : INFINITY;
+        if (e < energy) {
+          x = y;
+          accepted = true;
+          damping = std::max(damping / 3, 1e-9);
+          break;
+        }
+        problem.set_means(x);
+      }
+      damping *= 4;
+    }
+    if (!accepted) break;
+    problem.update_correspondences(x);
+    energy = problem.objective_of_correspondences(x);
+    report(iteration);
+  }
+  result.mesh = problem.mesh_of(coarse, x);
+  return result;
+}
+
+}  // namespace gps

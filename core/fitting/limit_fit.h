@@ -1,0 +1,53 @@
+#pragma once
+// Fitting a covariance mesh's GPS limit surface to points (a dense mesh's vertices): the means and
+// covariances move to minimise the squared distances from the points to the limit surface.
+#include <functional>
+#include <vector>
+
+#include "core/fitting/surface_distance.h"
+#include "core/mesh/covariance_mesh.h"
+#include "core/plans/planned_surface.h"
+
+namespace gps {
+
+/// One iteration of the fit: the distances from the points to their closest points on the limit surface.
+struct FitIteration {
+  int iteration = 0;     // 0: before the first step
+  DistanceSummary error;  // relative to the points' bounding-box diagonal
+  double seconds = 0;    // this iteration's time
+};
+
+struct FitOptions {
+  int iterations = 10;
+  /// Means only, every covariance the same isotropic one: the limit is the linear scheme's, linear in
+  /// the means (ordinary subdivision-surface fitting).
+  bool plain = false;
+  /// Weight of the smoothness term (the Laplacian of the vertices' changes) against the mean squared distance.
+  double smoothness = 1e-3;
+  /// Tessellation level of the limit surface that the closest points are first found on.
+  int correspondence_level = 6;
+  PlanOptions plans;
+  /// Called after every iteration, and once before the first.
+  std::function<void(const FitIteration&)> progress;
+};
+
+struct FitResult {
+  CovarianceMesh mesh;
+  std::vector<FitIteration> iterations;  // iteration 0 first
+};
+
+/// Fits the limit surface of `coarse` to `targets` by Levenberg-Marquardt on the squared distances
+/// from each target to its closest limit point (patch, u, v), found again after every accepted step
+/// and kept where the old one is closer (so the error never rises), plus a small smoothness term.
+/// Unknowns per vertex: its mean, and (unless plain) the Cholesky factor L of its precision Σ⁻¹ = LLᵀ
+/// with a logarithmic diagonal, positive definite by construction. The limit point is
+/// x = K⁻¹h with K = Σₖ wₖ Kₖ, h = Σₖ wₖ Kₖ μₖ over the control vertices (core/fitting/limit_weights.h),
+/// whose derivatives are dx = K⁻¹ (dh − dK x). The normal equations are solved by a sparse LDLᵀ (Eigen).
+/// On all cores, the same result on any number. Throws gps::Error for a mesh or points it cannot fit.
+FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options);
+
+/// The same mesh with every covariance the isotropic Σ = (σ² I), σ half the mean edge length: the
+/// starting point of a plain fit, whose limit surface is the linear scheme's.
+CovarianceMesh with_isotropic_covariances(const CovarianceMesh& mesh);
+
+}  // namespace gps
