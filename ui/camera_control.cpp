@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "view/projection.h"
+#include "view/silhouette_framing.h"
 
 namespace gps {
 
@@ -52,21 +53,28 @@ Camera frame_points(const Camera& camera, const CovarianceMesh& mesh, const std:
   return framed;
 }
 
-}  // namespace gps
-
-namespace gps {
-
 Camera frame_points_in_region(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices,
                               double min_radius, glm::vec2 window, glm::vec2 region_min, glm::vec2 region_max) {
-  Camera framed = frame_points(camera, mesh, vertices, min_radius);
-  framed.orthographic = camera.orthographic;
-  const glm::vec2 region = glm::max(region_max - region_min, glm::vec2(1.0f));
-  // The framed sphere fills the window's height; shrink it to fit the region's smaller side.
-  const float fit = std::min(region.x, region.y) / window.y;
-  framed.distance /= std::max(1e-3f, std::min(1.0f, fit));
-  // Slide the view so that the target shows at the region's centre.
-  pan(framed, (region_min + region_max) * 0.5f - window * 0.5f, int(window.y));
-  return framed;
+  if (vertices.empty()) return camera;
+  std::vector<glm::dvec3> points;
+  points.reserve(vertices.size() + 8);
+  Vec3 lo = mesh.mean(size_t(vertices[0])), hi = lo;
+  for (const int v : vertices) {
+    const Vec3& p = mesh.mean(size_t(v));
+    points.emplace_back(p.x(), p.y(), p.z());
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (min_radius > 0.0) {  // the corners of a cube of that circumradius around the points' centre
+    const Vec3 centre = 0.5 * (lo + hi);
+    const double half = min_radius / std::sqrt(3.0);
+    for (int c = 0; c < 8; ++c)
+      points.emplace_back(centre.x() + (c & 1 ? half : -half), centre.y() + (c & 2 ? half : -half),
+                          centre.z() + (c & 4 ? half : -half));
+  }
+  const double aspect = double(window.x) / double(std::max(window.y, 1.0f));
+  const NdcRect region = ndc_of_pixels(window, region_min, glm::max(region_max, region_min + 1.0f));
+  return frame_silhouette(camera, points, aspect, region);
 }
 
 }  // namespace gps

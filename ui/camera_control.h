@@ -28,8 +28,10 @@ void zoom_to_cursor(Camera& camera, float steps, int width, int height, glm::vec
 Camera frame_points(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices,
                     double min_radius);
 
-/// frame_points() fitted into the window-pixel rectangle [region_min, region_max] of a window of
-/// size `window` (the part the panels leave free): the points' centre shows at the region's centre.
+/// The camera at the same angles and projection whose view of the points (their projected bounds,
+/// view/silhouette_framing.h) fills the window-pixel rectangle [region_min, region_max] of a window of
+/// size `window` (the part the panels leave free), less a margin: the editor's first view and Home.
+/// Points closer than `min_radius` to their centre are framed at that radius.
 Camera frame_points_in_region(const Camera& camera, const CovarianceMesh& mesh, const std::vector<int>& vertices,
                               double min_radius, glm::vec2 window, glm::vec2 region_min, glm::vec2 region_max);
 
