@@ -20,6 +20,7 @@
 #include "render/image/matcap_file.h"
 #include "render/image/non_finite_pixels.h"
 #include "render/comparison/reference_triangles.h"
+#include "render/pipeline/render_framing.h"
 #include "render/pipeline/surface_renderer.h"
 
 namespace gps {
@@ -85,8 +86,9 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   o.ellipsoids = a.ellipsoids;
   o.sigma_scale = a.sigma;
   o.background = {bg[0], bg[1], bg[2]};
-  Camera camera = frame_mesh(mesh, a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3));
-  camera.up_axis = up_axis_named(a.up);
+  const Camera camera =
+      render_camera(renderer, mesh, a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3),
+                    up_axis_named(a.up), o, width, height);
   if (a.reference >= 1 && a.reference <= 6 &&
       scheme_for(topology_of(mesh.mesh), a.plans.options()) == Scheme::catmull_clark) {
     // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level

@@ -12,6 +12,7 @@
 #include "render/gl/render_target.h"
 #include "render/image/image_io.h"
 #include "render/image/matcap_file.h"
+#include "render/pipeline/render_framing.h"
 #include "render/pipeline/surface_renderer.h"
 #include "view/camera.h"
 
@@ -70,7 +71,6 @@ FloatImage render(const CovarianceMesh& mesh, int width, int height, int level, 
   o.sigma_scale = sigma;
   o.background = {background[0], background[1], background[2]};
   const Image matcap_image = load_matcap(matcap);
-  const Camera view = frame_mesh(mesh, camera.value_or(std::vector<float>{}));
   const ContextKind kind = context_named(context);
   Image color;
   {
@@ -80,7 +80,7 @@ FloatImage render(const CovarianceMesh& mesh, int width, int height, int level, 
     renderer.set_mesh(mesh, plans);
     renderer.set_matcap(matcap_image);
     RenderTarget target(width, height);
-    renderer.draw(target, view, o);
+    renderer.draw(target, render_camera(renderer, mesh, camera.value_or(std::vector<float>{}), 1, o, width, height), o);
     color = target.read(0);
   }
   return to_array(color);

@@ -9,6 +9,7 @@
 #include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
 #include "render/image/image_io.h"
+#include "render/pipeline/render_framing.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 
@@ -25,7 +26,7 @@ Image render_sample(SurfaceRenderer& renderer, const std::string& name) {
   DrawOptions o;
   o.level = 8;
   o.mesh_lines = true;
-  renderer.draw(target, frame_mesh(mesh, 35.0f, 25.0f), o);
+  renderer.draw(target, render_camera(renderer, mesh, {35.0f, 25.0f}, 1, o, 128, 128), o);
   Image rgba = target.read(0), rgb{rgba.width, rgba.height, 3, {}};
   for (size_t i = 0; i < rgba.pixels.size(); i += 4)
     rgb.pixels.insert(rgb.pixels.end(), rgba.pixels.begin() + long(i), rgba.pixels.begin() + long(i) + 3);

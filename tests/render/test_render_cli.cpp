@@ -37,6 +37,33 @@ TEST(RenderCli, DefaultsToAdaptiveLevelsForTheOutputSize) {
   EXPECT_GT(drawn, 500);
 }
 
+// The default camera frames the surface's silhouette, not a sphere around its bounding box: the drawn
+// pixels reach across the image less its margin (5 % of the half-extent at each side) along one axis,
+// fit along the other, and are centred, at either aspect and up axis.
+TEST(RenderCli, TheSilhouetteFillsTheImage) {
+  test::TempDir dir;
+  for (const char* sample : {"cone", "torus"}) {
+    ASSERT_EQ(run_command(gpsurf(std::string("sample ") + sample + " -o " + dir.file("m.ply"))).exit_code, 0);
+    for (const char* options : {" --size 200x150", " --size 120x200", " --size 200x150 --up z"}) {
+      const auto r = run_command(gpsurf("render " + dir.file("m.ply") + " -o " + dir.file("m.png") + options));
+      ASSERT_EQ(r.exit_code, 0) << r.output;
+      const Image png = read_image(dir.file("m.png"));
+      int lo_x = png.width, hi_x = -1, lo_y = png.height, hi_y = -1;
+      for (int y = 0; y < png.height; ++y)
+        for (int x = 0; x < png.width; ++x)
+          if (png.at(x, y, 0) < 0.97f || png.at(x, y, 1) < 0.97f || png.at(x, y, 2) < 0.97f)
+            lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x + 1), lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y + 1);
+      const std::string what = std::string(sample) + options;
+      ASSERT_GE(hi_x, 0) << what;
+      const double w = double(hi_x - lo_x) / png.width, h = double(hi_y - lo_y) / png.height;
+      EXPECT_LE(std::max(w, h), 0.96) << what;
+      EXPECT_GE(std::max(w, h), 0.93) << what;
+      EXPECT_LE(std::abs((lo_x + hi_x) - png.width), 3) << what << ": not centred across";
+      EXPECT_LE(std::abs((lo_y + hi_y) - png.height), 3) << what << ": not centred upward";
+    }
+  }
+}
+
 TEST(RenderCli, RendersAovsAndDifferenceImages) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample valence5 -o " + dir.file("v.ply"))).exit_code, 0);
