@@ -7,13 +7,14 @@
 #include "core/mesh/error.h"
 #include "core/support/freed_memory.h"
 #include "ui/editor.h"
+#include "view/camera.h"
 
 int main(int argc, char** argv) {
   gps::keep_freed_memory();
   gps::EditorOptions o;
   std::string size = "1280x800";
   bool no_vsync = false;
-  std::string scheme, loop_beta = "loop";
+  std::string scheme, loop_beta = "loop", up;
   CLI::App app{
       "gpsurf-editor: edit covariance meshes on their GPS limit surface (F1 in the window lists the bindings)"};
   app.add_option("file", o.file, "mesh to open (.ply, .obj, .off, .stl); default: a built-in sample")
@@ -27,6 +28,8 @@ int main(int argc, char** argv) {
   app.add_flag("--no-vsync", no_vsync, "draw as fast as possible");
   app.add_option("--scheme", scheme, "auto (Loop for a mesh of triangles only), loop or catmull-clark")
       ->check(CLI::IsMember({"auto", "loop", "catmull-clark"}));
+  app.add_option("--up", up, "the world axis drawn upward, kept for the file (default: as kept, else y)")
+      ->check(CLI::IsMember({"x", "y", "z"}));
   app.add_option("--loop-beta", loop_beta, "Loop vertex weight: Loop's original or Warren's 3/(8n)")
       ->check(CLI::IsMember({"loop", "warren"}));
   app.failure_message(
@@ -39,6 +42,7 @@ int main(int argc, char** argv) {
     o.vsync = !no_vsync;
     if (!scheme.empty()) o.scheme = scheme == "loop" ? 1 : scheme == "catmull-clark" ? 2 : 0;
     o.warren = loop_beta == "warren";
+    if (!up.empty()) o.up_axis = gps::up_axis_named(up);
     return gps::run_editor(o);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);

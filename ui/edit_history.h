@@ -2,6 +2,7 @@
 // Undo and redo: one step per drag, preset, numeric entry or modelling operation; exact restore.
 // A vertex edit keeps the Gaussians of the vertices it changed; a modelling operation, which may
 // change the topology, keeps the whole mesh before and after it (and the selections that go with them).
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -55,6 +56,8 @@ public:
   /// Unsaved changes: the history is not where it was when mark_saved() was last called.
   bool dirty() const { return position_ != saved_; }
   void mark_saved() { saved_ = position_; }
+  /// Unsaved with no step to undo: a mesh that differs from its file as opened (a repaired one).
+  void mark_unsaved() { saved_ = SIZE_MAX; }
   void clear() { steps_.clear(), position_ = 0, saved_ = 0; }
 
 private:

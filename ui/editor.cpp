@@ -82,8 +82,20 @@ EditorApp::EditorApp(const EditorOptions& options)
   if (!options.record.empty()) recorder_.emplace();
   if (options.file.empty()) {
     open_sample(kDefaultSample);
+    if (options.up_axis >= 0) view_.up_axis = options.up_axis;
   } else {  // no mesh to keep yet: a file that does not load ends the program (one line, exit 1)
-    document_.open(options.file);
+    if (options.up_axis >= 0)  // kept for the file, under the name the document gives it
+      view_.up_axes[std::filesystem::absolute(options.file).lexically_normal().string()] = options.up_axis;
+    try {
+      document_.open(options.file);
+    } catch (const Error& e) {  // unless a repair mends it: the default sample shows while the user is asked
+      RepairFindings findings = repair_findings(options.file);
+      if (findings.refused.empty()) throw;
+      open_sample(kDefaultSample);
+      repair_prompt_.open(options.file, std::move(findings));
+      set_status(e.what(), true);
+      return;
+    }
     if (!script_) recent_.add(document_.source_path());  // replays are not the user's own work
     mesh_replaced();
   }
@@ -111,7 +123,7 @@ int EditorApp::run() {
 
 bool EditorApp::script_finished() {
   const bool scripted = script_ || !options_.screenshot.empty() || !options_.save.empty();
-  if (!scripted || (script_ && !script_->done()) || job_dialog_.running()) return false;
+  if (!scripted || (script_ && !script_->done()) || job_dialog_.running() || layout_frames_ > 0) return false;
   // Two more frames after the last event: auto-sized ImGui windows settle on their second frame.
   if (++finishing_frames_ < 3) return false;
   if (!options_.save.empty()) save_to(options_.save);
@@ -124,9 +136,13 @@ void EditorApp::frame() {
   if (swap_interval != swap_interval_) glfwSwapInterval(swap_interval_ = swap_interval);
   frame_input_time_ = Clock::now();
   // A replay waits for a background job (simplify, fit), so that it does not depend on its speed.
+  // The first frames lay the panels out (the first view is framed beside them) and take no input.
+  const bool layout = layout_frames_ > 0;
   const std::vector<InputEvent> events =
-      script_ ? (job_dialog_.running() ? std::vector<InputEvent>{} : script_->next_frame()) : queue_.take_frame();
-  if (recorder_) recorder_->record_frame(events);
+      layout || (script_ && job_dialog_.running()) ? std::vector<InputEvent>{}
+      : script_                                    ? script_->next_frame()
+                                                   : queue_.take_frame();
+  if (recorder_ && !layout) recorder_->record_frame(events);
   for (const InputEvent& e : events) input_.apply(e);
 
   ImGuiIO& io = ImGui::GetIO();
@@ -213,8 +229,13 @@ void EditorApp::write_statistics(const std::string& path) {
                       {"median_edit_to_frame_ms", clock_.median_edit_ms()},
                       {"edits", clock_.edit_count()},
                       {"last_edit_vertices", reach_.size()},
-                      {"gpu_pass_ms", passes}};
+                      {"gpu_pass_ms", passes},
+                      {"free_region", {free_min_.x, free_min_.y, free_max_.x, free_max_.y}},
+                      {"unsaved", document_.dirty()}};
   if (!options_.save.empty()) j["saved"] = options_.save;
+  for (const char* name : {"Inspector", "View"})  // where the panels were last drawn: x, y, width, height
+    if (const ImGuiWindow* panel = ImGui::FindWindowByName(name); panel && panel->Active)
+      j["panels"][name] = {panel->Pos.x, panel->Pos.y, panel->Size.x, panel->Size.y};
   write_file_atomically(path, [&j](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 
@@ -243,6 +264,11 @@ void EditorApp::draw_ui() {
         set_status(e.what(), true);
       }
     if (c.matcap) renderer_->set_matcap(load_matcap(view_.matcap));
+    if (c.up_axis) {
+      if (!document_.source_path().empty()) view_.up_axes[document_.source_path()] = view_.up_axis;
+      camera_.up_axis = view_.up_axis;
+      frame_vertices({});
+    }
     if (c.load_matcap) {
       browser_purpose_ = BrowserPurpose::load_matcap;
       browser_.open(FileBrowser::Mode::open, "Load MatCap", std::filesystem::current_path().string(), kImageExtensions);
@@ -256,9 +282,14 @@ void EditorApp::draw_ui() {
   }
   draw_help_overlay(&view_.show_help, commands_.key_bindings());
   draw_unsaved_prompt();
+  draw_repair_prompt();
   handle_browser_result();
   draw_status_bar(document_, selection_summary(), status_, status_error_);
   note_free_region();
+  if (layout_frames_ > 0) {
+    --layout_frames_;
+    frame_first_view();
+  }
   update_title();
 }
 

@@ -15,6 +15,7 @@ struct EditorOptions {
   bool vsync = true;
   int scheme = -1;      // ViewOptions::scheme from the command line; −1: as kept in the settings
   bool warren = false;  // Loop with Warren's β
+  int up_axis = -1;     // the world axis drawn upward for `file` (0 x, 1 y, 2 z); −1: as kept for it
 };
 
 /// Opens the window and runs the editor until the user quits (or, with play/screenshot/save, until

@@ -57,10 +57,43 @@ void EditorApp::open_file(const std::string& path) {
   } catch (const Error& e) {  // the current mesh stays
     document_ = previous;
     set_status(e.what(), true);
+    // A topology that the repair mends: the user is shown what is wrong and asked.
+    if (RepairFindings findings = repair_findings(path); !findings.refused.empty())
+      repair_prompt_.open(path, std::move(findings));
     return;
   }
   if (!script_) recent_.add(document_.source_path());
   set_status("opened " + document_.source_path(), false);
+}
+
+void EditorApp::open_repaired(const std::string& path) {
+  const EditorDocument previous = document_;
+  RepairReport report;
+  try {
+    document_.open(path, true, &report);
+    mesh_replaced();
+  } catch (const Error& e) {
+    document_ = previous;
+    set_status(e.what(), true);
+    return;
+  }
+  if (!script_) recent_.add(document_.source_path());
+  std::string done;
+  for (const std::string& line : report.lines()) done += (done.empty() ? "" : "; ") + line;
+  set_status("opened " + document_.source_path() + " repaired (unsaved): " + done, false);
+}
+
+void EditorApp::draw_repair_prompt() {
+  switch (repair_prompt_.draw()) {
+    case RepairPrompt::Answer::repair:
+      open_repaired(repair_prompt_.path());
+      break;
+    case RepairPrompt::Answer::cancel:
+      set_status("not opened " + repair_prompt_.path() + "; kept " + document_.display_name(), false);
+      break;
+    case RepairPrompt::Answer::none:
+      break;
+  }
 }
 
 void EditorApp::open_sample(const std::string& name) {
@@ -80,7 +113,9 @@ void EditorApp::mesh_replaced() {
   drag_.reset();
   reach_.clear();
   selection_.clear();
-  camera_ = frame_mesh(document_.mesh());
+  const auto kept = view_.up_axes.find(document_.source_path());
+  view_.up_axis = kept != view_.up_axes.end() ? kept->second : 1;
+  frame_first_view();
   // Base-mesh lines are drawn over the surface: on a dense mesh they would hide it.
   view_.draw.mesh_lines = document_.mesh().n_faces() <= kMaxFacesWithLines;
   reach_options_.radius = 0.1 * bounding_box_diagonal(document_.mesh());

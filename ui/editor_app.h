@@ -31,6 +31,7 @@
 #include "ui/inspector_panel.h"
 #include "ui/job_dialog.h"
 #include "ui/recent_files.h"
+#include "ui/repair_prompt.h"
 #include "ui/selection.h"
 #include "ui/statistics_overlay.h"
 #include "ui/transform_mode.h"
@@ -125,6 +126,9 @@ private:
   void request(Action action);
   void perform(const Action& action);
   void open_file(const std::string& path);
+  void open_repaired(const std::string& path);
+  void draw_repair_prompt();
+  void frame_first_view();  // the default angles at the file's up axis, the mesh framed in the free region
   void open_sample(const std::string& name);
   bool save();  // false: a file name is being asked for
   void save_to(const std::string& path);
@@ -160,6 +164,7 @@ private:
   FileBrowser browser_;
   enum class BrowserPurpose { open_mesh, save_mesh, load_matcap } browser_purpose_ = BrowserPurpose::open_mesh;
   RecentFiles recent_;
+  RepairPrompt repair_prompt_;
   FrameClock clock_;
   CommandTable commands_;
 
@@ -176,6 +181,7 @@ private:
   std::vector<ReachedVertex> reach_;  // the vertices the drag changes, and how strongly
   std::vector<GaussianChange> drag_changes_;
   glm::vec2 free_min_{0.0f}, free_max_{1.0f};  // the part of the window the panels leave free
+  int layout_frames_ = 2;  // frames without input that lay the panels out before the first view is framed
   std::optional<ScreenBox> gizmo_box_;         // where the gizmo was drawn this frame (the statistics keep clear of it)
   std::vector<int> shown_ellipsoids_;          // the vertices whose ellipsoids are drawn, when not all
   SelectMode select_mode_ = SelectMode::vertex;

@@ -146,6 +146,12 @@ void EditorApp::frame_vertices(const std::vector<int>& vertices) {
   camera_ = frame_points_in_region(camera_, document_.mesh(), vertices, radius, viewport_size(), free_min_, free_max_);
 }
 
+void EditorApp::frame_first_view() {
+  camera_ = Camera{};
+  camera_.up_axis = view_.up_axis;
+  frame_vertices({});
+}
+
 void EditorApp::axis_view(float yaw, float pitch) {
   camera_.yaw_degrees = yaw;
   camera_.pitch_degrees = pitch;

@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/io/mesh_repair.h"
 #include "core/mesh/covariance_mesh.h"
 #include "core/modelling/mesh_arrays.h"
 #include "ui/edit_history.h"
@@ -17,7 +18,9 @@ class EditorDocument {
 public:
   /// Reads a mesh file (covariance PLY, or OBJ/OFF/STL/plain PLY with inferred covariances).
   /// On failure throws gps::Error (one line naming the file) and leaves the document as it was.
-  void open(const std::string& path);
+  /// With `repair` the mesh is read repaired (core/io/mesh_repair.h), what the repair did goes to
+  /// `report` where given, and the document is unsaved: the mesh is not its file's.
+  void open(const std::string& path, bool repair = false, RepairReport* report = nullptr);
   /// A built-in sample, untitled (saving asks for a file name).
   void open_sample(const std::string& name);
   /// Writes the mesh (atomically) to `path`, which becomes the document's file when it is a PLY;

@@ -59,7 +59,7 @@ int EditorApp::pick(glm::vec2 pixel) const {
 void EditorApp::handle_event(const InputEvent& e) {
   const ImGuiIO& io = ImGui::GetIO();
   if (modal_event(e)) return;  // G / S / R, extrude, loop cut, inset (editor_modelling.cpp)
-  if (job_dialog_.is_open()) {  // its keys are Dear ImGui's; a mesh dropped now waits for it to close
+  if (job_dialog_.is_open() || repair_prompt_.is_open()) {  // their keys are Dear ImGui's; a mesh dropped now waits
     if (e.type == InputEvent::Type::drop) set_status("close the dialog first", true);
     if (e.type == InputEvent::Type::key_press || e.type == InputEvent::Type::drop) return;
   }

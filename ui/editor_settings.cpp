@@ -36,6 +36,7 @@ void visit_settings(ViewOptions& view, ReachOptions& reach, Visit visit) {
   visit("show_inspector", view.show_inspector);
   visit("show_view", view.show_view);
   visit("show_statistics", view.show_statistics);
+  visit("up_axes", view.up_axes);
   visit("proportional", reach.proportional);
   visit("mirror", reach.mirror);
   visit("mirror_axis", reach.mirror_axis);
@@ -83,6 +84,7 @@ std::string load_settings(const std::string& folder, ViewOptions& view, ReachOpt
   reach.mirror_axis = std::clamp(reach.mirror_axis, 0, 2);
   view.pivot = std::clamp(view.pivot, 0, 1);
   view.ellipsoid_scope = std::clamp(view.ellipsoid_scope, 0, 2);
+  for (auto& [file, axis] : view.up_axes) axis = std::clamp(axis, 0, 2);
   return error;
 }
 

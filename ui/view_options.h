@@ -1,5 +1,6 @@
 #pragma once
 // What the editor's viewport shows and how (the View panel edits it).
+#include <map>
 #include <string>
 
 #include "render/pipeline/surface_renderer.h"
@@ -41,6 +42,8 @@ struct ViewOptions {
   int pivot = 0;  // where the gizmo of a multi-selection sits: 0 the active vertex, 1 the selection's centroid
   int ellipsoid_scope =
       0;  // whose ellipsoids: 0 automatic (ui/ellipsoid_scope.h), 1 the selection and its neighbours, 2 all
+  int up_axis = 1;  // the world axis drawn upward (0 x, 1 y, 2 z): the open file's, as kept in up_axes
+  std::map<std::string, int> up_axes;  // by mesh file (absolute path): the up axis last used for it
   bool show_inspector = true, show_view = true, show_statistics = true, show_help = false;
 };
 

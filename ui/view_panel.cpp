@@ -2,12 +2,17 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cfloat>
+
 #include "render/image/matcap.h"
 #include "ui/ellipsoid_scope.h"
 
 namespace gps {
 
 namespace {
+
+constexpr float kViewPanelWidth = 340.0f;
 
 // The panel is a list of sections, each a function of the options: a new setting goes in its
 // section, a new section (say, the subdivision scheme) in kSections.
@@ -53,6 +58,9 @@ void shading_section(ViewOptions& o, ViewPanelChanges& changes) {
   }
   int mode = int(o.draw.mode);
   if (ImGui::Combo("shading", &mode, "MatCap\0normals\0flat\0")) o.draw.mode = ShadingMode(mode);
+  if (ImGui::Combo("up axis", &o.up_axis, "x\0y\0z\0")) changes.up_axis = true;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the world axis drawn upward (kept for this file; --up on the command line)");
 }
 
 void overlay_section(ViewOptions& o, ViewPanelChanges&) {
@@ -101,14 +109,19 @@ ViewPanelChanges draw_view_panel(ViewOptions& o, bool* open) {
   ImGui::SetNextWindowPos(
       ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + viewport->WorkSize.y - 40),
       ImGuiCond_FirstUseEver, ImVec2(1, 1));
-  ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("View", open)) {
+  // As tall as its rows (a triangle mesh adds the scheme's), as wide as before: every row shows.
+  ImGui::SetNextWindowSizeConstraints(ImVec2(kViewPanelWidth, 0.0f), ImVec2(kViewPanelWidth, FLT_MAX));
+  if (!ImGui::Begin("View", open, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
     return changes;
   }
   ImGui::PushItemWidth(170);
   for (const Section section : kSections) section(o, changes);
   ImGui::PopItemWidth();
+  // Grown below the status bar: moved up until its last row shows.
+  const float bottom = viewport->WorkPos.y + viewport->WorkSize.y - ImGui::GetFrameHeight() - 4.0f;
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  if (pos.y + size.y > bottom) ImGui::SetWindowPos(ImVec2(pos.x, std::max(viewport->WorkPos.y, bottom - size.y)));
   ImGui::End();
   return changes;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The View panel: tessellation (uniform level or adaptive pixel size), plan depth, MatCap, shading,
-// overlays (base mesh, ellipsoids and their k-sigma scale, tessellation wireframe).
+// the up axis, overlays (base mesh, ellipsoids and their k-sigma scale, tessellation wireframe).
 #include "ui/view_options.h"
 
 namespace gps {
@@ -9,6 +9,7 @@ struct ViewPanelChanges {
   bool depth = false;        // the plans must be rebuilt
   bool matcap = false;       // options.matcap names another built-in
   bool load_matcap = false;  // the user asked to load a MatCap image
+  bool up_axis = false;      // options.up_axis changed: the view turns and frames the mesh again
 };
 
 ViewPanelChanges draw_view_panel(ViewOptions& options, bool* open);

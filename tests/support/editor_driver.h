@@ -3,11 +3,14 @@
 // that is also its configuration folder (XDG_CONFIG_HOME): recent files and settings stay there.
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
 #include "run_command.h"
 #include "temp_dir.h"
+#include "ui/camera_control.h"
 #include "ui/selection.h"
 #include "view/camera.h"
 #include "view/projection.h"
@@ -33,10 +36,25 @@ inline glm::vec2 pixel_of(const Viewport& v, const Vec3& p) {
 /// The window the editor tests open (--size 1024x700).
 constexpr int kWindowWidth = 1024, kWindowHeight = 700;
 
-/// What the editor shows on opening: its default camera framing `mesh`, in a width × height window.
-inline Viewport editor_view(const CovarianceMesh& mesh, int width = kWindowWidth, int height = kWindowHeight) {
+/// The part of a width × height window that the editor's panels leave free at their first-use places
+/// (ui/editor.cpp's note_free_region): below the menu bar and above the status bar (21 pixels each,
+/// the 15-pixel font with its padding, the status bar 4 more), left of the Inspector (360 wide, 10
+/// from the right edge) by 8 pixels.
+inline std::pair<glm::vec2, glm::vec2> editor_free_region(int width = kWindowWidth, int height = kWindowHeight) {
+  return {glm::vec2(0.0f, 21.0f), glm::vec2(float(width) - 378.0f, float(height) - 25.0f)};
+}
+
+/// What the editor shows on opening: its default angles with `up_axis` drawn upward, the mesh's
+/// vertices framed in the free region of a width × height window (ui/camera_control.h).
+inline Viewport editor_view(const CovarianceMesh& mesh, int width = kWindowWidth, int height = kWindowHeight,
+                            int up_axis = 1) {
   Viewport v;
-  v.camera = frame_mesh(mesh);
+  Camera start;
+  start.up_axis = up_axis;
+  std::vector<int> all(mesh.n_vertices());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = int(i);
+  const auto [free_min, free_max] = editor_free_region(width, height);
+  v.camera = frame_points_in_region(start, mesh, all, 0.0, glm::vec2(float(width), float(height)), free_min, free_max);
   v.width = width;
   v.height = height;
   return v;
