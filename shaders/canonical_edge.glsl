@@ -3,7 +3,9 @@
 // patches beside an edge or around a corner produce bit-identical positions there and no background
 // pixel shows through (core/plans/patch_adjacency.h has the tables and the rules). The canonical
 // point is found with integers only; the one float step, parameter = step / level, is the same on
-// every side.
+// every side. On an infinitely sharp crease the records carry flags (kNeighbourSharpEdge,
+// kOwnerSharpCorner): there the position is still the canonical patch's, the normal the patch's own
+// (limit_point.glsl).
 layout(std430, binding = kBindingPatchNeighbours) readonly buffer PatchNeighbours { int patch_neighbours[]; };
 layout(std430, binding = kBindingCornerOwners) readonly buffer CornerOwners { int corner_owners[]; };
 
@@ -25,16 +27,16 @@ EdgePoint canonical_edge_point(EdgePoint e, int corners) {
     bool first = e.i <= h;
     int q = patch_neighbours[r + (first ? 0 : 2)], code = patch_neighbours[r + (first ? 1 : 3)];
     if (q < 0 || 2 * h != e.n) return e;
-    bool reversed = code >= 4;
+    bool reversed = (code & kNeighbourReversed) != 0;
     int j = first ? (reversed ? h - e.i : e.i) : (reversed ? e.n - e.i : e.i - h);
-    return EdgePoint(q, code & 3, j, h);
+    return EdgePoint(q, code & kNeighbourEdgeMask, j, h);
   }
   int q = patch_neighbours[r], code = patch_neighbours[r + 1];
   if (q < 0) return e;  // a mesh boundary
-  int m = code & 3;
+  int m = code & kNeighbourEdgeMask;
   if (part >= kEdgeFirstHalf && patch_edges[kPatchEdgeStride * q + kPatchEdgeInts * m + 2] == kEdgeWholeBesideHalves) return e;  // a half beside a whole quad edge
   if (q > e.patch_id || (q == e.patch_id && m > e.edge)) return e;        // the lower patch evaluates
-  return EdgePoint(q, m, code >= 4 ? e.n - e.i : e.i, e.n);
+  return EdgePoint(q, m, (code & kNeighbourReversed) != 0 ? e.n - e.i : e.i, e.n);
 }
 
 // The canonical form of a boundary point: the canonical edge point, or for a corner its owner's
@@ -44,7 +46,21 @@ EdgePoint canonical_boundary_point(EdgePoint e, int corners) {
   if (e.i > 0 && e.i < e.n) return e;
   int c = e.i <= 0 ? e.edge : (e.edge + 1) % corners;
   int o = 2 * (corners * e.patch_id + c);
-  return EdgePoint(corner_owners[o], corner_owners[o + 1], 0, 1);
+  return EdgePoint(corner_owners[o], corner_owners[o + 1] & kOwnerCornerMask, 0, 1);
+}
+
+// The patch corner an edge point is at, or −1 inside its edge.
+int edge_point_corner(EdgePoint e, int corners) {
+  return e.i <= 0 ? e.edge : e.i >= e.n ? (e.edge + 1) % corners : -1;
+}
+
+// Whether a boundary point lies on an infinitely sharp crease of its patch, an edge or a corner
+// (core/plans/patch_adjacency.h): its normal is then the patch's own.
+bool sharp_boundary_point(EdgePoint e, int corners) {
+  int c = edge_point_corner(e, corners);
+  if (c >= 0) return (corner_owners[2 * (corners * e.patch_id + c) + 1] & kOwnerSharpCorner) != 0;
+  int r = 4 * (corners * e.patch_id + e.edge);
+  return patch_neighbours[r] >= 0 && (patch_neighbours[r + 1] & kNeighbourSharpEdge) != 0;
 }
 
 // i / n and (n − i) / n, the parameters of an edge point.
@@ -52,4 +68,21 @@ vec2 edge_fractions(EdgePoint e) {
   precise float a = float(e.i) / float(e.n);
   precise float b = float(e.n - e.i) / float(e.n);
   return vec2(a, b);
+}
+
+// (u, v) of an edge point. Quads: corners at (0,0), (1,0), (1,1), (0,1). Triangles: (u, v) are the
+// barycentrics of corners 1 and 2.
+vec2 edge_point_uv(EdgePoint e, int corners) {
+  vec2 f = edge_fractions(e);
+  if (corners == 3) {
+    if (e.edge == 0) return vec2(f.x, 0.0);
+    // Edge 1 (u + v = 1): the larger parameter is 1 − the smaller, exactly (Sterbenz), so that
+    // 1 − u − v is 0 and the exact extraordinary evaluation does not step outside the triangle.
+    if (e.edge == 1) return 2 * e.i >= e.n ? vec2(1.0 - f.x, f.x) : vec2(f.y, 1.0 - f.y);
+    return vec2(0.0, f.y);
+  }
+  if (e.edge == 0) return vec2(f.x, 0.0);
+  if (e.edge == 1) return vec2(1.0, f.x);
+  if (e.edge == 2) return vec2(f.y, 1.0);
+  return vec2(0.0, f.y);
 }

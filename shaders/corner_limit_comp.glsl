@@ -2,7 +2,9 @@
 // by the corner's owner (core/plans/patch_adjacency.h) and read by every tessellation vertex there
 // (limit_point_tese.glsl). A corner at an extraordinary vertex is its exact node's limit masks over
 // K points: evaluated in the tessellation stage, the SIMD batch around it would run that and the
-// regular leaf both. Preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
+// regular leaf both. A corner on an infinitely sharp crease (kOwnerSharpCorner) is evaluated by its
+// own patch too, whose normal there the patch's vertices at the corner take (limit_point.glsl).
+// Preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
 #include "shaders/compute_pass.glsl"
 layout(std430, binding = kBindingCornerOwners) readonly buffer CornerOwners { int corner_owners[]; };
 layout(std430, binding = kBindingCornerLimits) writeonly buffer CornerLimits { vec4 corner_limits[]; };
@@ -19,7 +21,9 @@ void main() {
   if (i < 0) return;
   int slot = u_use_list != 0 ? corner_list[i] : i;  // kCorners · patch + corner
   int patch_id = slot / kCorners, corner = slot - kCorners * patch_id;
-  if (corner_owners[2 * slot] != patch_id || corner_owners[2 * slot + 1] != corner) return;  // its owner's slot holds it
+  int owner_corner = corner_owners[2 * slot + 1];
+  bool owner = corner_owners[2 * slot] == patch_id && (owner_corner & kOwnerCornerMask) == corner;
+  if (!owner && (owner_corner & kOwnerSharpCorner) == 0) return;  // its owner's slot holds it
   vec3 mu, mu_u, mu_v;
   int kind;
   // The corner's parameters as the tessellation stages' edge_point_uv gives them.

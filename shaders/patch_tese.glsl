@@ -22,15 +22,6 @@ bool boundary_point(out EdgePoint e) {
   return true;
 }
 
-// (u, v) of an edge point; corners are (0,0), (1,0), (1,1), (0,1).
-vec2 edge_point_uv(EdgePoint e) {
-  vec2 f = edge_fractions(e);
-  if (e.edge == 0) return vec2(f.x, 0.0);
-  if (e.edge == 1) return vec2(1.0, f.x);
-  if (e.edge == 2) return vec2(f.y, 1.0);
-  return vec2(0.0, f.y);
-}
-
 vec2 tess_uv() { return gl_TessCoord.xy; }
 
 // Node kinds: regular (exact B-spline), terminal (Bézier approximation), extraordinary (exact).

@@ -1,7 +1,8 @@
 // Evaluates the surface cache's welded vertices again after an edit (render/cache/stored_vertex_evaluation.h),
 // as limit_point_tese.glsl evaluated them when they were captured: at the patch and (u, v) it
 // evaluated (the canonical patch on a patch edge, so that both sides stay bit for bit alike), a
-// patch corner from its owner's limit point; position and normal · 2^kind, the grid kept.
+// patch corner from its owner's limit point, a point on an infinitely sharp crease from the edge
+// point it keeps (limit_point.glsl, own_crease_normal); position and normal · 2^kind, the grid kept.
 // Preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
 // One indirect dispatch for all listed blocks: a work group finds its block by its first group
 // (shaders/evaluation_groups_comp.glsl).
@@ -43,11 +44,22 @@ void main() {
   if (i >= uint(blocks[3 * low + 2])) return;
   uint v = uint(blocks[3 * low + 1]) + i;
   if (floatBitsToUint(parameters[3u * v]) == ~0u) return;  // past the block's welded vertices
-  int patch_id = int(parameters[3u * v]);
-  vec2 uv = vec2(parameters[3u * v + 1u], parameters[3u * v + 2u]);
+  vec3 evaluated = vec3(parameters[3u * v], parameters[3u * v + 1u], parameters[3u * v + 2u]);
+  int patch_id = int(evaluated.x);
+  vec2 uv = evaluated.yz;
+  int corner = corner_at(uv);
+  EdgePoint e, c;
+  bool crease = crease_edge_point(evaluated, e);
+  if (crease) {  // as limit_point_tese.glsl evaluates it
+    c = canonical_boundary_point(e, kCorners);
+    patch_id = c.patch_id;
+    uv = edge_point_uv(c, kCorners);
+    corner = c.i == 0 ? c.edge : -1;
+  }
   vec3 mu, normal;
   int kind;
-  limit_point(patch_id, uv, corner_at(uv), mu, normal, kind);
+  limit_point(patch_id, uv, corner, mu, normal, kind);
+  if (crease) own_crease_normal(e, c, normal, evaluated);
   vec3 stored_normal = ldexp(normal, ivec3(kind));
   for (uint k = 0u; k < 3u; ++k) {
     welded[6u * v + k] = mu[k];

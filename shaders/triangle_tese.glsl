@@ -18,16 +18,6 @@ bool boundary_point(out EdgePoint e) {
   return true;
 }
 
-// Patch parameters (u, v) (barycentrics of corners 1 and 2) of an edge point.
-vec2 edge_point_uv(EdgePoint e) {
-  vec2 f = edge_fractions(e);
-  if (e.edge == 0) return vec2(f.x, 0.0);
-  // Edge 1 (u + v = 1): the larger parameter is 1 − the smaller, exactly (Sterbenz), so that
-  // 1 − u − v is 0 and the exact extraordinary evaluation does not step outside the triangle.
-  if (e.edge == 1) return 2 * e.i >= e.n ? vec2(1.0 - f.x, f.x) : vec2(f.y, 1.0 - f.y);
-  return vec2(0.0, f.y);
-}
-
 vec2 tess_uv() { return gl_TessCoord.yz; }
 
 // Node kinds: box spline, extraordinary (exact).

@@ -2,7 +2,8 @@
 // up in an open-addressing hash table by its position, normal · 2^kind and the patch and (u, v) it
 // was evaluated at (the canonical patch on a patch edge, a corner's owner: one surface point,
 // evaluated once), and takes as its index the vertex that is there first with the same words, else
-// inserts itself. Copies on the patches around a point so weld, across blocks too; their
+// inserts itself. Copies on the patches around a point so weld, across blocks too (on an infinitely
+// sharp crease only those of one patch: there each side keeps its own normal and edge point); their
 // tessellation grids differ, and a frame that draws the grid draws the vertices as captured. The
 // draw then fetches and shades each such vertex once, as a welded static buffer's are. Each vertex
 // also writes whether it is its own index, for the prefix sum that numbers the distinct vertices

@@ -68,9 +68,60 @@ void link_edge(PatchPlans& plans, const std::vector<const EdgeUse*>& uses) {
   }
 }
 
+bool has_infinite_sharpness(const Sharpness& sharpness) {
+  for (const EdgeCrease& c : sharpness.creases)
+    if (is_infinitely_sharp(c.sharpness)) return true;
+  for (const double s : sharpness.corners)
+    if (is_infinitely_sharp(s)) return true;
+  return false;
+}
+
+// Per base vertex: whether the surface has no one tangent plane there (patch_adjacency.h).
+std::vector<char> sharp_vertices(const PolygonTopology& topology, const Sharpness& sharpness) {
+  std::vector<char> sharp(size_t(topology.n_vertices), 0);
+  const MeshConnectivity c = connectivity_of(topology);
+  for (int v = 0; v < topology.n_vertices; ++v) {
+    int between_faces = 0, on_boundary = 0;
+    for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
+      const int e = c.vertex_edges[size_t(i)];
+      if (c.is_boundary_edge(e))
+        ++on_boundary;
+      else if (is_infinitely_sharp(sharpness.crease(v, c.other_vertex(e, v))))
+        ++between_faces;
+    }
+    sharp[size_t(v)] =
+        is_infinitely_sharp(sharpness.corner(v)) || (between_faces >= 1 && between_faces + on_boundary >= 2);
+  }
+  return sharp;
+}
+
+// Flags the linked patch edges on infinitely sharp edges and the patch corners where the patches
+// around have normals of their own (patch_adjacency.h).
+void add_sharp_flags(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness) {
+  const int n = plans.corners(), n_base = topology.n_vertices;
+  for (int p = 0; p < plans.n_patches(); ++p)
+    for (int k = 0; k < n; ++k) {
+      int32_t* r = &plans.patch_neighbours[size_t(4 * (n * p + k))];
+      const EdgeUse e = edge_use(plans, p, k);
+      if (r[0] < 0 || e.from >= n_base || e.to >= n_base || !is_infinitely_sharp(sharpness.crease(e.from, e.to)))
+        continue;
+      r[1] |= kNeighbourSharpEdge;
+      if (r[2] >= 0) r[3] |= kNeighbourSharpEdge;
+    }
+  const std::vector<char> sharp_vertex = sharp_vertices(topology, sharpness);
+  const auto sharp_edge = [&](int p, int k) { return edge_neighbour(plans, p, k).sharp; };
+  for (int p = 0; p < plans.n_patches(); ++p)
+    for (int c = 0; c < n; ++c) {
+      // A point past the base vertices is a split face's edge point or face point: sharp on a sharp edge.
+      const int32_t point = plans.patch_corner_points[size_t(n * p + c)];
+      if (point < n_base ? sharp_vertex[size_t(point)] != 0 : sharp_edge(p, c) || sharp_edge(p, (c + n - 1) % n))
+        plans.corner_owners[size_t(2 * (n * p + c)) + 1] |= kOwnerSharpCorner;
+    }
+}
+
 }  // namespace
 
-void add_patch_adjacency(PatchPlans& plans) {
+void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness) {
   const int n = plans.corners(), n_patches = plans.n_patches();
   plans.patch_neighbours.assign(size_t(4 * n * n_patches), -1);
   plans.corner_owners.assign(size_t(2 * n * n_patches), -1);
@@ -117,6 +168,7 @@ void add_patch_adjacency(PatchPlans& plans) {
       plans.corner_owners[size_t(2 * (n * p + c))] = first_use / n;
       plans.corner_owners[size_t(2 * (n * p + c)) + 1] = first_use % n;
     }
+  if (has_infinite_sharpness(sharpness)) add_sharp_flags(plans, topology, sharpness);
 }
 
 }  // namespace gps

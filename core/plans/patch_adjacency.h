@@ -8,35 +8,62 @@
 // from patch corner k to corner k+1 (quads: PatchPlans::patch_edges; triangles: the corner points).
 //   [0] the patch across the edge, or −1 (a mesh boundary); for a quad edge whole_beside_halves,
 //       the half-size patch at the edge's `from` end;
-//   [1] that patch's edge index m plus 4 if it runs the other way (4·reversed + m), or −1;
+//   [1] that patch's edge index m, plus kNeighbourReversed (4) if it runs the other way, plus
+//       kNeighbourSharpEdge (8) if the edge lies on an infinitely sharp crease; or −1;
 //   [2], [3] likewise for the half-size patch at the `to` end of a whole_beside_halves edge, else −1.
 // PatchPlans::corner_owners holds 2 ints per patch corner, at 2·(corners·patch + c): the lowest
-// patch with the same corner point (PatchPlans::patch_corner_points) and its corner index there.
+// patch with the same corner point (PatchPlans::patch_corner_points) and its corner index there,
+// plus kOwnerSharpCorner (4) where the patches around the corner have normals of their own there.
+// The flag constants are in core/plans/patch_basis.h (shared with the shaders); readers mask them.
 //
 // Canonical rules (the shader's, tested in tests/core/test_patch_adjacency.cpp): a point inside a
 // shared edge is evaluated by the lower-numbered patch of two whole (or two half) edges, and by the
-// half-size patch where a whole quad edge meets two halves; a corner by its owner.
+// half-size patch where a whole quad edge meets two halves; a corner by its owner. On an infinitely
+// sharp crease (docs/design.md, "Creases and corners in the plans") the surface is shared but each
+// side has its own normal: a point on a flagged edge or corner takes its position from the
+// canonical patch and its normal from the patch that draws it.
 #include <cstdint>
 #include <vector>
 
+#include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/sharpness.h"
 #include "core/plans/patch_plans.h"
 
 namespace gps {
 
-/// Fills plans.patch_neighbours and plans.corner_owners (see above). Linear in the number of patches.
-void add_patch_adjacency(PatchPlans& plans);
+/// Fills plans.patch_neighbours and plans.corner_owners (see above) for plans built from `topology`
+/// (whose vertices are the plans' first points) with `sharpness`. Linear in the number of patches.
+/// A patch edge is sharp where it lies on an infinitely sharp edge between two faces; a patch corner
+/// where the surface has no one tangent plane: at a base vertex with infinite corner sharpness, or
+/// with two infinitely sharp edges or more (a boundary's edges counted) of which one lies between
+/// two faces (a dart's single crease ends in a smooth point), and at a split face's edge point on a
+/// sharp edge.
+void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness);
 
 struct EdgeNeighbour {
   int patch = -1;  // −1: none
   int edge = -1;
   bool reversed = false;
+  bool sharp = false;  // the edge lies on an infinitely sharp crease
 };
 
 /// Entry `which` (0 or 1) of patch edge k's record.
 inline EdgeNeighbour edge_neighbour(const PatchPlans& plans, int patch, int k, int which = 0) {
   const int32_t* r = &plans.patch_neighbours[size_t(4 * (plans.corners() * patch + k) + 2 * which)];
   if (r[0] < 0) return {};
-  return {r[0], r[1] & 3, (r[1] & 4) != 0};
+  return {r[0], r[1] & kNeighbourEdgeMask, (r[1] & kNeighbourReversed) != 0, (r[1] & kNeighbourSharpEdge) != 0};
+}
+
+struct CornerOwner {
+  int patch = -1;
+  int corner = -1;
+  bool sharp = false;  // the patches around the corner have normals of their own there
+};
+
+/// Patch corner c's record.
+inline CornerOwner corner_owner(const PatchPlans& plans, int patch, int c) {
+  const int32_t* r = &plans.corner_owners[size_t(2 * (plans.corners() * patch + c))];
+  return {r[0], r[1] & kOwnerCornerMask, (r[1] & kOwnerSharpCorner) != 0};
 }
 
 }  // namespace gps

@@ -46,6 +46,14 @@ GPS_CONST int kEdgeSecondHalf = 3;        // the half at `to`
 /// Whether a patch whose edge 0 is this part is half-size: a patch of a split face (one Catmull-Clark
 /// step down), whose edge 0 is half of the face's edge.
 GPS_FN bool half_size_part(int edge0_part) { return edge0_part == kEdgeFirstHalf || edge0_part == kEdgeSecondHalf; }
+// Flags of the patch adjacency records (core/plans/patch_adjacency.h), on an infinitely sharp crease
+// of the surface, where each side has its own normal: in a patch edge's neighbour code (edge index
+// plus kNeighbourReversed) and in a patch corner's owner corner index.
+GPS_CONST int kNeighbourEdgeMask = 3;
+GPS_CONST int kNeighbourReversed = 4;
+GPS_CONST int kNeighbourSharpEdge = 8;   // the patch edge lies on an infinitely sharp crease
+GPS_CONST int kOwnerCornerMask = 3;
+GPS_CONST int kOwnerSharpCorner = 4;     // the normals of the patches around the corner differ
 // Levels of the extraordinary tables (core/extraordinary/loop_extraordinary_tables.h,
 // core/extraordinary/quad_extraordinary_tables.h). Tessellation at integer levels up to 64 puts no
 // point closer to a corner than 1/64 of its patch (s + t and max(s, t) ≥ 1/64 for Loop's and

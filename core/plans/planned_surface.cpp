@@ -46,7 +46,7 @@ SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOpt
   SurfaceTables tables = scheme_for(topology, options) == Scheme::loop
                              ? build_loop_plans(topology, options.loop_beta, sharpness)
                              : build_plans(topology, options.depth, extraordinary, true, sharpness);
-  add_patch_adjacency(tables.plans);
+  add_patch_adjacency(tables.plans, topology, sharpness);
   return tables;
 }
 

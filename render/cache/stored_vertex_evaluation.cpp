@@ -11,14 +11,13 @@
 namespace gps {
 
 StoredVertexEvaluation::StoredVertexEvaluation()
-    : quads_(
-          "stored_vertex_evaluation",
-          {{GL_COMPUTE_SHADER,
-            {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::stored_vertex_evaluation_comp}}}),
+    : quads_("stored_vertex_evaluation", {{GL_COMPUTE_SHADER,
+                                           {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
+                                            shaders::canonical_edge, shaders::stored_vertex_evaluation_comp}}}),
       triangles_("stored_vertex_evaluation_triangles",
                  {{GL_COMPUTE_SHADER,
                    {"#define GPS_TRIANGLE_PATCHES\n", shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                    shaders::loop_eval, shaders::stored_vertex_evaluation_comp}}}),
+                    shaders::loop_eval, shaders::canonical_edge, shaders::stored_vertex_evaluation_comp}}}),
       groups_program_("evaluation_groups",
                       {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {}
 

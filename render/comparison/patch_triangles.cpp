@@ -21,7 +21,9 @@ TriangleMesh patch_triangles(SurfaceRenderer& renderer, const Camera& camera, co
     std::memcpy(key.data(), v.evaluated, sizeof v.evaluated);
     auto [at, added] = index.try_emplace(std::move(key), int(out.positions.size()));
     if (added) {
-      const SurfaceValues s = surface_at(int(v.evaluated[0]), v.evaluated[1], v.evaluated[2]);
+      // On a crease the vertex's own side, whose position the CPU's doubles give to rounding.
+      const SurfaceValues s = v.on_crease() ? surface_at(int(v.patch), v.u, v.v)
+                                            : surface_at(int(v.evaluated[0]), v.evaluated[1], v.evaluated[2]);
       out.positions.push_back(s.position);
       out.normals.push_back(s.normal);
     }

@@ -21,9 +21,11 @@ using SurfaceAt = std::function<SurfaceValues(int patch, double u, double v)>;
 /// The triangles the renderer's patches tessellate into for `o` in a width × height view (captured
 /// by transform feedback), with the corners in the order the GPU drew them, each vertex at the
 /// values `surface_at` gives at its patch parameters: once per point, at the canonical patch of a
-/// point on a patch edge (shaders/canonical_edge.glsl). Drawn as static triangles they rasterise
-/// as the patches do, triangle for triangle and corner for corner: the images differ where the
-/// values do. A vertex `surface_at` gives no normal takes the area-weighted normal of its triangles.
+/// point on a patch edge (shaders/canonical_edge.glsl), at its own patch's on an infinitely sharp
+/// crease, where each side has its own normal (TessellatedVertex::on_crease). Drawn as static
+/// triangles they rasterise as the patches do, triangle for triangle and corner for corner: the
+/// images differ where the values do. A vertex `surface_at` gives no normal takes the
+/// area-weighted normal of its triangles.
 TriangleMesh patch_triangles(SurfaceRenderer& renderer, const Camera& camera, const DrawOptions& o, int width,
                              int height, const SurfaceAt& surface_at);
 

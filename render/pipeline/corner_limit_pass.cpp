@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "core/plans/patch_adjacency.h"
 #include "render/gl/compute_limits.h"
 #include "render/gl/gl_context.h"
 #include "shaders/embedded_shaders.h"
@@ -36,8 +37,9 @@ std::vector<int> CornerLimitPass::owner_slots(const PatchPlans& plans, const std
   slots.reserve(patches.size() * size_t(n));
   for (const int p : patches)
     for (int c = 0; c < n; ++c) {
-      const size_t o = size_t(2 * (n * p + c));
-      slots.push_back(n * plans.corner_owners[o] + plans.corner_owners[o + 1]);
+      const CornerOwner owner = corner_owner(plans, p, c);
+      slots.push_back(n * owner.patch + owner.corner);
+      if (owner.sharp) slots.push_back(n * p + c);  // its own normal on a crease
     }
   std::sort(slots.begin(), slots.end());
   slots.erase(std::unique(slots.begin(), slots.end()), slots.end());

@@ -1,7 +1,8 @@
 #pragma once
 // The corner pass (shaders/corner_limit_comp.glsl): after the stencils, the limit point, normal and
-// node kind at every patch corner its owner evaluates, which the tessellation stages then read
-// instead of evaluating a corner themselves; over every corner, or over an edit's list
+// node kind at every patch corner its owner evaluates (and at a corner on an infinitely sharp crease,
+// the normal of each patch there), which the tessellation stages then read instead of evaluating a
+// corner themselves; over every corner, or over an edit's list
 // (PlanBuffers::upload_corner_list). Dispatches split to the device's work-group count limit.
 #include <vector>
 
@@ -19,7 +20,8 @@ public:
   void run_all(const PatchPlans& plans, int group_limit) const;
   /// The `n_listed` slots of the corner list (buffers bound).
   void run_listed(const PatchPlans& plans, int n_listed, int group_limit) const;
-  /// The owner slots of the corners of `patches` (the slots whose values an edit of them can change).
+  /// The owner slots of the corners of `patches`, and their own slots on a crease (the slots whose
+  /// values an edit of them can change).
   static std::vector<int> owner_slots(const PatchPlans& plans, const std::vector<int>& patches);
 
 private:

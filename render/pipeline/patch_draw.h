@@ -22,6 +22,10 @@ struct TessellatedVertex {
   float position[3];
   float normal[3];
   float evaluated[3];
+  /// Whether the vertex lies on an infinitely sharp crease of its patch (core/plans/patch_adjacency.h):
+  /// its normal is then its own patch's at (patch, u, v), its position still the canonical patch's,
+  /// and `evaluated` names its edge point instead (shaders/limit_point.glsl, own_crease_normal).
+  bool on_crease() const { return evaluated[0] < 0.0f; }
 };
 
 /// What the patch draws produced (pipeline-statistics queries; see SurfaceRenderer::set_collect_statistics).

@@ -8,8 +8,10 @@
 #include <set>
 #include <utility>
 
+#include "core/io/mesh_io.h"
 #include "core/plans/planned_surface.h"
 #include "core/mesh/samples.h"
+#include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
 
 namespace gps {
@@ -93,10 +95,9 @@ void check_adjacency(const std::string& name, const CovarianceMesh& mesh) {
     for (int c = 0; c < n; ++c) {
       const int32_t point = plans.patch_corner_points[size_t(n * p + c)];
       first.try_emplace(point, p);
-      const int owner = plans.corner_owners[size_t(2 * (n * p + c))],
-                corner = plans.corner_owners[size_t(2 * (n * p + c) + 1)];
-      EXPECT_EQ(owner, first[point]) << name;
-      EXPECT_EQ(plans.patch_corner_points[size_t(n * owner + corner)], point) << name;
+      const CornerOwner owner = corner_owner(plans, p, c);
+      EXPECT_EQ(owner.patch, first[point]) << name;
+      EXPECT_EQ(plans.patch_corner_points[size_t(n * owner.patch + owner.corner)], point) << name;
     }
   EXPECT_GT(linked, 0) << name;
   std::printf("%-14s %5d patches: %5d linked edges, %3d whole quad edges beside halves\n", name.c_str(),
@@ -119,6 +120,116 @@ TEST(PatchAdjacency, CylinderCapsMeetTheSideQuadsHalfByHalf) {
   for (int p = 0; p < tables.plans.n_patches(); ++p)
     for (int k = 0; k < 4; ++k) beside += patch_edge(tables.plans, p, k).part == PatchEdgePart::whole_beside_halves;
   EXPECT_EQ(beside, 16);  // two octagons of 8 sides
+}
+
+// (u, v) of the point at fraction t along patch edge k, which runs from corner k to corner k + 1.
+std::pair<double, double> edge_point(PatchShape shape, int k, double t) {
+  if (shape == PatchShape::triangle)
+    return k == 0 ? std::pair{t, 0.0} : k == 1 ? std::pair{1 - t, t} : std::pair{0.0, 1 - t};
+  return k == 0   ? std::pair{t, 0.0}
+         : k == 1 ? std::pair{1.0, t}
+         : k == 2 ? std::pair{1 - t, 1.0}
+                  : std::pair{0.0, 1 - t};
+}
+
+Vec3 normal_at(const test::PlannedMesh& m, int patch, std::pair<double, double> uv) {
+  const auto s = evaluate_patch(m.tables.plans, m.points, patch, uv.first, uv.second);
+  EXPECT_TRUE(s.has_value()) << "patch " << patch;
+  return s ? s->normal : Vec3::Zero();
+}
+
+struct SharpFlags {
+  int edges = 0, corners = 0;              // flagged patch edges and corners
+  int edges_apart = 0, corners_apart = 0;  // of those, where the sides' normals differ
+};
+
+// The flags against the CPU evaluator's normals: where an edge or corner is not flagged, the patches
+// that meet there have one normal (so the canonical patch's serves all); where it is, they may differ.
+SharpFlags check_sharp_flags(const std::string& name, const CovarianceMesh& mesh) {
+  const test::PlannedMesh m(mesh, PlanOptions{});
+  const PatchPlans& plans = m.tables.plans;
+  const int n = plans.corners();
+  SharpFlags out;
+  for (int p = 0; p < plans.n_patches(); ++p)
+    for (int k = 0; k < n; ++k) {
+      const EdgeNeighbour a = edge_neighbour(plans, p, k);
+      if (a.patch < 0) continue;
+      // A half beside a whole quad edge is compared from the whole edge's side, where the point at
+      // fraction t lies on the half at its `from` end (t < ½) or `to` end at fraction 2t or 2t − 1.
+      const bool beside_halves =
+          plans.shape == PatchShape::quad && patch_edge(plans, p, k).part == PatchEdgePart::whole_beside_halves;
+      if (plans.shape == PatchShape::quad &&
+          patch_edge(plans, a.patch, a.edge).part == PatchEdgePart::whole_beside_halves)
+        continue;
+      out.edges += a.sharp;
+      double apart = 0;
+      for (const double t : {0.25, 0.5, 0.75}) {
+        const EdgeNeighbour b = beside_halves ? edge_neighbour(plans, p, k, t < 0.5 ? 0 : 1) : a;
+        const double along = beside_halves ? (t < 0.5 ? 2 * t : 2 * t - 1) : t;
+        EXPECT_EQ(b.sharp, a.sharp) << name;
+        EXPECT_EQ(edge_neighbour(plans, b.patch, b.edge).sharp, a.sharp) << name << ": the way back";
+        const Vec3 mine = normal_at(m, p, edge_point(plans.shape, k, t));
+        const Vec3 theirs = normal_at(m, b.patch, edge_point(plans.shape, b.edge, b.reversed ? 1 - along : along));
+        apart = std::max(apart, (mine - theirs).norm());
+      }
+      if (!a.sharp) {
+        EXPECT_LT(apart, 1e-6) << name << ": patch " << p << " edge " << k << " is not flagged";
+      }
+      out.edges_apart += a.sharp && apart > 1e-3;
+    }
+  std::map<int32_t, std::vector<std::pair<int, int>>> around;  // corner point -> (patch, corner)
+  for (int p = 0; p < plans.n_patches(); ++p)
+    for (int c = 0; c < n; ++c) around[plans.patch_corner_points[size_t(n * p + c)]].emplace_back(p, c);
+  const std::pair<double, double> corner_uv[4] = {
+      {0, 0}, {1, 0}, n == 4 ? std::pair{1.0, 1.0} : std::pair{0.0, 1.0}, {0, 1}};
+  for (const auto& [point, corners] : around) {
+    const bool sharp = corner_owner(plans, corners[0].first, corners[0].second).sharp;
+    double apart = 0;
+    const Vec3 first = normal_at(m, corners[0].first, corner_uv[corners[0].second]);
+    for (const auto& [p, c] : corners) {
+      EXPECT_EQ(corner_owner(plans, p, c).sharp, sharp) << name << ": point " << point << " patch " << p;
+      apart = std::max(apart, (normal_at(m, p, corner_uv[c]) - first).norm());
+    }
+    if (!sharp) {
+      EXPECT_LT(apart, 1e-6) << name << ": point " << point << " is not flagged";
+    }
+    out.corners += sharp ? int(corners.size()) : 0;
+    out.corners_apart += sharp && apart > 1e-3;
+  }
+  std::printf("%-16s %3d sharp patch edges (%3d with normals apart), %3d sharp patch corners (%2d points apart)\n",
+              name.c_str(), out.edges, out.edges_apart, out.corners, out.corners_apart);
+  return out;
+}
+
+TEST(PatchAdjacency, SharpFlagsMarkWhereTheSidesNormalsDiffer) {
+  const auto file = [](const std::string& name) {
+    return read_mesh(std::string(GPS_TEST_DATA_DIR) + "/" + name + ".ply");
+  };
+  // The cube's top rim: 4 edges, each on 2 patches; its 4 corners on 3 patches each.
+  const SharpFlags cube = check_sharp_flags("creased_cube", file("creased_cube"));
+  EXPECT_EQ(cube.edges, 8);
+  EXPECT_EQ(cube.corners, 12);
+  EXPECT_GT(cube.edges_apart, 0);
+  EXPECT_EQ(cube.corners_apart, 4);
+  // The top rim against the octagon's half-size patches: their edge points are sharp corners too.
+  const SharpFlags cylinder = check_sharp_flags("creased_cylinder", file("creased_cylinder"));
+  EXPECT_EQ(cylinder.edges, 8);  // counted on the side quads' whole edges
+  EXPECT_GT(cylinder.edges_apart, 0);
+  EXPECT_EQ(cylinder.corners_apart, 8);  // its rim vertices (an edge point has the top on both patches)
+  const SharpFlags cone = check_sharp_flags("creased_cone", file("creased_cone"));  // Loop
+  EXPECT_EQ(cone.edges, 4);
+  EXPECT_GT(cone.corners_apart, 0);
+  // A crease inside a grid that ends in two darts: its edges are flagged, the darts are not (the
+  // surface is smooth there), and a smooth mesh has no flag at all.
+  CovarianceMesh grid = test::grid_mesh(5, 5);
+  const int middle = 2 * 6 + 2;
+  grid.sharpness.set_crease(middle, middle + 1, kInfiniteSharpness);
+  grid.sharpness.set_crease(middle + 1, middle + 2, kInfiniteSharpness);
+  const SharpFlags darts = check_sharp_flags("grid with darts", grid);
+  EXPECT_EQ(darts.edges, 4);
+  EXPECT_EQ(darts.corners, 4);  // the crease vertex between them
+  const SharpFlags smooth = check_sharp_flags("cube", make_sample("cube"));
+  EXPECT_EQ(smooth.edges + smooth.corners, 0);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <unordered_map>
 
+#include "core/io/mesh_io.h"
 #include "core/plans/patch_adjacency.h"
 #include "core/mesh/samples.h"
 #include "render/pipeline/surface_renderer.h"
@@ -115,10 +116,12 @@ SharedEdgeCheck check_shared_edges(SurfaceRenderer& renderer, const CovarianceMe
   return check;
 }
 
-// Every sample (the sized ones small), and open and mixed meshes of the test set.
+// Every sample (the sized ones small), open and mixed meshes of the test set, and creased meshes
+// (tests/data), whose infinitely sharp creases share positions but not normals.
 std::vector<std::string> every_sample() {
   std::vector<std::string> names = sample_names();
-  names.insert(names.end(), {"open-cylinder", "triangle-grid", "prism"});
+  names.insert(names.end(),
+               {"open-cylinder", "triangle-grid", "prism", "creased_cube", "creased_cylinder", "creased_cone"});
   return names;
 }
 
@@ -126,6 +129,7 @@ CovarianceMesh mesh_named(const std::string& name) {
   if (name == "open-cylinder") return test::open_cylinder_mesh();
   if (name == "triangle-grid") return test::with_random_covariances(test::triangle_grid_mesh(5, 4), 5);
   if (name == "prism") return test::prism_mesh();
+  if (name.rfind("creased", 0) == 0) return read_mesh(std::string(GPS_TEST_DATA_DIR) + "/" + name + ".ply");
   if (name == "grid") return make_sample(name, 100);
   if (name == "sphere") return make_sample(name, 96);
   if (name == "icosphere") return make_sample(name, 320);

@@ -64,7 +64,10 @@ VertexErrors compare_vertices(const CovarianceMesh& mesh, const PlanOptions& opt
   const double diag = bounding_box_diagonal(mesh);
   VertexErrors e;
   for (const auto& v : vertices) {
-    const auto s = evaluate_patch(cpu.tables.plans, cpu.points, int(v.evaluated[0]), v.evaluated[1], v.evaluated[2]);
+    // On a crease the vertex's normal is its own patch's (TessellatedVertex::on_crease).
+    const auto s = v.on_crease() ? evaluate_patch(cpu.tables.plans, cpu.points, int(v.patch), v.u, v.v)
+                                 : evaluate_patch(cpu.tables.plans, cpu.points, int(v.evaluated[0]), v.evaluated[1],
+                                                  v.evaluated[2]);
     if (!s) continue;
     const double err = (s->position - Vec3(v.position[0], v.position[1], v.position[2])).norm() / diag;
     e.position = std::max(e.position, err);
