@@ -1,4 +1,5 @@
-// gpsurf info FILE: counts, valences, creases and covariance ranges of a mesh.
+// gpsurf info FILE: counts, valences, shape, scheme, creases and covariance ranges of a mesh, and
+// every defect the repair finds in it.
 #include <Eigen/Eigenvalues>
 #include <iostream>
 #include <map>
@@ -13,39 +14,63 @@
 namespace gps {
 
 namespace {
-// A mesh read_mesh refuses: every problem class the repair finds in it (the same code, on a copy),
-// with examples numbered as the file numbers them, and the parts and boundary loops a repair would
-// leave; then the refusal itself (exit 1). A file the readers refuse is only refused.
-[[noreturn]] void print_problems(const std::string& path, const Error& refusal) {
-  bool has_covariances = false;
-  PolygonSoup soup;
-  try {
-    soup = read_polygon_soup(path, has_covariances);
-  } catch (const Error&) {
-    throw refusal;
-  }
-  if (soup.faces.n_faces() == 0) throw refusal;  // no surface to diagnose
-  const RepairReport report = diagnose_polygon_soup(soup, repair_options_for(path));
-  const auto problems = report.problems();
-  if (problems.empty()) throw refusal;
-  std::cout << "file: " << path << "\nvertices: " << soup.positions.size() << "\nfaces: " << soup.faces.n_faces()
-            << "\nproblems (vertices and faces numbered from " << repair_options_for(path).numbering_base
-            << " as the file numbers them):\n";
-  for (const std::string& line : problems) std::cout << "  " << line << "\n";
-  std::cout << "after --repair: " << report.parts << (report.parts == 1 ? " part" : " parts");
-  if (report.boundary_loops >= 0)
-    std::cout << ", " << report.boundary_loops << (report.boundary_loops == 1 ? " boundary loop" : " boundary loops");
-  std::cout << "\n" << std::flush;
-  throw refusal;
+
+const char* scheme_name(Scheme scheme) { return scheme == Scheme::loop ? "Loop" : "Catmull-Clark"; }
+
+std::string plural(int n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
+
+// Parts, boundary loops and genus of a manifold topology, on one line.
+std::string surface_line(const PolygonTopology& t, const MeshConnectivity& c) {
+  const SurfaceCounts s = surface_counts(t, c);
+  return plural(s.parts, "part", "parts") + ", " + plural(s.boundary_loops, "boundary loop", "boundary loops") +
+         ", genus " + std::to_string(s.genus);
 }
 
+// What the mesh would be after --repair (the diagnosis's result): its shape and scheme, or why not.
+std::string after_repair(PolygonSoup& repaired, const RepairReport& diagnosis) {
+  if (diagnosis.count(Defect::unorientable_parts) > 0) return "still refused (a part cannot be oriented)";
+  if (repaired.faces.n_faces() == 0) return "no faces left";
+  repaired.faces.n_vertices = int(repaired.positions.size());
+  return surface_line(repaired.faces, connectivity_of(repaired.faces)) + ", scheme " +
+         scheme_name(scheme_for(repaired.faces, PlanOptions{}));
+}
+
+void print_problems(const std::vector<std::string>& lines, const std::string& heading) {
+  if (lines.empty()) return;
+  std::cout << heading << ":\n";
+  for (const std::string& line : lines) std::cout << "  " << line << "\n";
+}
+
+// Without --repair the file is diagnosed first (the repair's own detection, on a copy): a mesh
+// read_mesh refuses gets every problem class with its count and first examples, numbered as the file
+// numbers them, and what a repair would leave, then the refusal itself (exit 1); a mesh that is read
+// gets the classes it is read with (coincident, isolated vertices, zero-area faces) after its counts.
 void print_info(const std::string& path, const RepairArguments& repair) {
+  const ImportOptions options = repair.import_options();
+  RepairReport diagnosis;
+  std::string repaired_shape;
   const CovarianceMesh m = [&] {
+    if (options.repair) return read_mesh_repairing(path, repair);
+    bool has_covariances = false;
+    PolygonSoup soup = read_polygon_soup(path, has_covariances);
+    {
+      PolygonSoup repaired = soup;
+      diagnosis = repair_polygon_soup(repaired, repair_options_for(options));
+      if (diagnosis.changed()) repaired_shape = after_repair(repaired, diagnosis);
+    }
+    const size_t n_vertices = soup.positions.size();
+    const int n_faces = soup.faces.n_faces();
     try {
-      return read_mesh_repairing(path, repair);
-    } catch (const Error& e) {
-      if (repair.import_options().repair) throw;
-      print_problems(path, e);
+      return read_mesh_of_soup(std::move(soup), has_covariances, path, options, nullptr, &diagnosis);
+    } catch (const Error&) {
+      if (!diagnosis.changed() && diagnosis.count(Defect::unorientable_parts) == 0) throw;
+      const ElementNumbering numbering = element_numbering_for(path, diagnosis);
+      std::cout << "file: " << path << "\nvertices: " << n_vertices << "\nfaces: " << n_faces << "\n";
+      const std::string numbered = " (vertices and faces numbered from " + std::to_string(numbering.base) + ")";
+      print_problems(diagnosis.problems(numbering, true), "refused for" + numbered);
+      print_problems(diagnosis.problems(numbering, false), "also");
+      std::cout << "after --repair: " << repaired_shape << "\n" << std::flush;
+      throw;
     }
   }();
   const PolygonTopology t = topology_of(m.mesh);
@@ -76,9 +101,9 @@ void print_info(const std::string& path, const RepairArguments& repair) {
     std::cout << std::exchange(sep, ", ") << count << " with " << size << " sides";
   std::cout << ")\nedges: " << c.n_edges() << "\nboundary edges: " << boundary_edges << "\nvalences:";
   for (const auto& [valence, count] : valences) std::cout << ' ' << valence << ':' << count;
-  std::cout << "\nscheme: " << (scheme == Scheme::loop ? "Loop (a mesh of triangles)" : "Catmull-Clark")
-            << "\nextraordinary vertices: " << extraordinary << " (by "
-            << (scheme == Scheme::loop ? "Loop" : "Catmull-Clark") << "'s rules)\n";
+  std::cout << "\nsurface: " << surface_line(t, c)
+            << "\nscheme: " << (scheme == Scheme::loop ? "Loop (a mesh of triangles)" : "Catmull-Clark")
+            << "\nextraordinary vertices: " << extraordinary << " (by " << scheme_name(scheme) << "'s rules)\n";
   std::cout << "covariance eigenvalues: " << lo << " .. " << hi << "\n";
   // Creases and corners (docs/design.md §1): semi-sharp ones decay over levels, the others stay sharp.
   int semi_sharp = 0, infinitely_sharp = 0, corners = 0, sharp_corners = 0;
@@ -89,6 +114,13 @@ void print_info(const std::string& path, const RepairArguments& repair) {
   std::cout << "creased edges: " << semi_sharp + infinitely_sharp << " (" << semi_sharp << " semi-sharp, "
             << infinitely_sharp << " infinitely sharp)\ncorners: " << corners + sharp_corners << " (" << corners
             << " semi-sharp, " << sharp_corners << " infinitely sharp)\n";
+  if (diagnosis.changed()) {
+    const ElementNumbering numbering = element_numbering_for(path, diagnosis);
+    print_problems(diagnosis.problems(numbering, false),
+                   "read as they are (--repair mends them; vertices and faces numbered from " +
+                       std::to_string(numbering.base) + ")");
+    std::cout << "after --repair: " << repaired_shape << "\n";
+  }
 }
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <numeric>
 #include <sstream>
+#include <unordered_set>
 
 #include "core/mesh/error.h"
 #include "core/mesh/mesh_connectivity.h"
@@ -230,6 +231,20 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   PolygonSoup soup = plain_soup(std::move(points), std::move(faces), source);
   soup.sharpness = sharpness_of_tags(tags, soup, source);
   return soup;
+}
+
+void find_obj_lines(std::string_view data, const std::vector<int>& vertices, const std::vector<int>& faces,
+                    ElementNumbering& numbering) {
+  std::unordered_set<int> wanted_vertices(vertices.begin(), vertices.end()), wanted_faces(faces.begin(), faces.end());
+  const int last_vertex = vertices.empty() ? -1 : *std::max_element(vertices.begin(), vertices.end());
+  const int last_face = faces.empty() ? -1 : *std::max_element(faces.begin(), faces.end());
+  int n_vertices = 0, n_faces = 0;
+  for (LineCursor lines(data); !lines.done() && (n_vertices <= last_vertex || n_faces <= last_face); lines.next()) {
+    std::string_view line = lines.line();
+    const std::string_view keyword = next_word(line);
+    if (keyword == "v" && wanted_vertices.count(n_vertices++)) numbering.vertex_lines[n_vertices - 1] = lines.number();
+    if (keyword == "f" && wanted_faces.count(n_faces++)) numbering.face_lines[n_faces - 1] = lines.number();
+  }
 }
 
 PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/io/mesh_repair.h"
 #include "core/io/polygon_soup.h"
 #include "core/mesh/covariance_mesh.h"
 
@@ -15,6 +16,12 @@ namespace gps {
 /// sharpness; other records are skipped).
 /// The text is taken over and freed once parsed, before the mesh is built (pass it moved).
 CovarianceMesh parse_obj(std::string data, const std::string& source);
+
+/// Adds to `numbering` the lines of OBJ text on which the given vertices and faces (numbered from 0 in
+/// the order of their records, as parse_obj_soup reads them) are read: messages name a few elements,
+/// so their lines are looked up again rather than kept for every element.
+void find_obj_lines(std::string_view data, const std::vector<int>& vertices, const std::vector<int>& faces,
+                    ElementNumbering& numbering);
 
 /// The first bytes of an OBJ or OFF file (core/io/text_file.h): text, without NUL bytes.
 void check_text_head(std::string_view head, size_t size);

@@ -33,42 +33,76 @@ PolygonSoup read_polygon_soup(const std::string& path, bool& has_covariances) {
   return parse_stl_soup(std::move(data), path);
 }
 
-RepairOptions repair_options_for(const std::string& path, const ImportOptions& options) {
+RepairOptions repair_options_for(const ImportOptions& options) {
   RepairOptions o;
   o.weld_tolerance = options.weld_tolerance;
-  o.numbering_base = extension_of(path) == ".obj" ? 1 : 0;
   return o;
+}
+
+ElementNumbering element_numbering_for(const std::string& path, const RepairReport& report) {
+  ElementNumbering numbering;
+  if (extension_of(path) != ".obj") return numbering;
+  numbering.base = 1;
+  std::vector<int> vertices, faces;
+  report.named_elements(vertices, faces);
+  if (vertices.empty() && faces.empty()) return numbering;
+  try {
+    find_obj_lines(read_text_file(path, check_text_head), vertices, faces, numbering);
+  } catch (const Error&) {  // gone since it was read: the elements are named without their lines
+  }
+  return numbering;
 }
 
 CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options, RepairReport* report) {
   bool has_covariances = false;
   PolygonSoup soup = read_polygon_soup(path, has_covariances);
+  return read_mesh_of_soup(std::move(soup), has_covariances, path, options, report);
+}
+
+CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const std::string& path,
+                                 const ImportOptions& options, RepairReport* report, const RepairReport* diagnosis) {
   // Every command and the editor draw or measure a surface: Gaussians without faces have none.
   const auto no_faces = [&](const char* after) { return Error(escaped(path) + ": the mesh has no faces" + after); };
   if (soup.faces.n_faces() == 0) throw no_faces("");
+  RepairReport done;
   if (options.repair) {
-    const RepairReport done = repair_polygon_soup(soup, repair_options_for(path, options));
+    done = repair_polygon_soup(soup, repair_options_for(options));
     if (report) *report = done;
     if (soup.faces.n_faces() == 0) throw no_faces(" left after repair");
   }
-  // What the repair mends is named as such when it was not asked for: the classes a diagnosis of the
-  // file finds (read again: only a refused file pays for it) and the option.
-  const auto refused = [&](const std::string& message, Error::Kind kind) {
-    if (options.repair) return Error(message, kind);
-    std::string found;
-    try {
-      bool again = false;
-      found = diagnose_polygon_soup(read_polygon_soup(path, again), repair_options_for(path, options)).summary();
-    } catch (const Error&) {
+  // A refusal names the defect classes that cause it, as a diagnosis of the file finds them (read
+  // again where none was given: only a refused file pays for it), and what --repair does; after a
+  // repair, only what it could not mend. Where the faces were built (`built`), the Gaussians were
+  // refused: the message stays, followed by every class found.
+  const auto refused = [&](const Error& e, bool built) {
+    RepairReport found;
+    if (options.repair) {
+      const size_t d = size_t(Defect::unorientable_parts);
+      found.counts[d] = done.counts[d];
+      found.examples[d] = done.examples[d];
+    } else if (diagnosis) {
+      found = *diagnosis;
+    } else {
+      try {
+        bool again = false;
+        found = diagnose_polygon_soup(read_polygon_soup(path, again), repair_options_for(options));
+      } catch (const Error&) {
+        return e;
+      }
     }
-    return Error(message + (found.empty() ? "" : " (" + found + ")") + kRepairHint, kind);
+    if (!built && found.refuses())
+      return Error(escaped(path) + ": " + found.refusal(element_numbering_for(path, found)), e.kind());
+    if (!options.repair && found.changed())
+      return Error(e.what() + std::string(" (") + found.refusal(element_numbering_for(path, found), true) + ")",
+                   e.kind());
+    return e;
   };
   // Built in place: OpenMesh's meshes have no move, so an assignment would copy the whole mesh.
   CovarianceMesh mesh = [&]() -> CovarianceMesh {
     try {
       return mesh_of_soup(std::move(soup), escaped(path));
     } catch (const Error& e) {
-      throw refused(e.what(), e.kind());
+      throw refused(e, false);
     }
   }();
   if (has_covariances) return mesh;
@@ -78,7 +112,7 @@ CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options, 
     else
       isotropic_covariances(mesh, options.isotropic_scale);
   } catch (const Error& e) {
-    throw refused(escaped(path) + ": " + e.what(), e.kind());
+    throw refused(Error(escaped(path) + ": " + e.what(), e.kind()), true);
   }
   validate_gaussians(mesh, escaped(path));
   return mesh;

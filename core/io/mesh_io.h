@@ -16,23 +16,30 @@ struct ImportOptions {
   double weld_tolerance = 1e-6;  // as a fraction of the bounding-box diagonal
 };
 
-/// Appended to a refusal that a repair would mend (one line: "...; gpsurf can repair it: --repair").
-inline constexpr const char* kRepairHint = "; gpsurf can repair it: --repair";
-
 /// Reads .ply (a covariance PLY keeps its covariances; a plain one gets them from `options`),
 /// .obj, .off, .stl (covariances from `options`). Throws gps::Error naming the file, also for a mesh
 /// without faces (every use of a mesh needs its surface). Without `options.repair`, a topology that
 /// repair would mend (not manifold, a face using a vertex twice or with all its corners at one point)
-/// is refused with kRepairHint appended; with it, `report` (where given) gets what the repair did.
+/// is refused naming each class, its count, its first example as the file numbers it and what
+/// --repair does (RepairReport::refusal); with it, `report` (where given) gets what the repair did.
 CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options = {}, RepairReport* report = nullptr);
 
 /// The polygon soup of a mesh file as read_mesh reads it before repairing or building it;
 /// `has_covariances` says whether the file gave them.
 PolygonSoup read_polygon_soup(const std::string& path, bool& has_covariances);
 
-/// The repair options read_mesh uses for a file: the tolerance of `options`, examples numbered as
-/// the format numbers vertices and faces (from 1 in OBJ, from 0 elsewhere).
-RepairOptions repair_options_for(const std::string& path, const ImportOptions& options = {});
+/// read_mesh from the soup read_polygon_soup gave for `path`. `diagnosis`, where given, is
+/// diagnose_polygon_soup of that soup (gpsurf info has it); else a refused file is read again for one.
+CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const std::string& path,
+                                 const ImportOptions& options = {}, RepairReport* report = nullptr,
+                                 const RepairReport* diagnosis = nullptr);
+
+/// The repair options read_mesh uses: the tolerance of `options`.
+RepairOptions repair_options_for(const ImportOptions& options = {});
+
+/// How messages number the elements of the file at `path`: from 1 in OBJ (with the lines of the
+/// elements `report`'s examples name: the file is read again for them), from 0 elsewhere.
+ElementNumbering element_numbering_for(const std::string& path, const RepairReport& report);
 
 /// Writes .ply (covariances and sharpness kept; ASCII or binary little endian) or .obj (positions,
 /// faces, and creases and corners as OpenSubdiv's tags),

@@ -80,17 +80,14 @@ private:
   std::vector<char> flip_;          // per face: reversed by orient()
 
   PolygonTopology& faces() { return soup_.faces; }
-  std::string vertex_name(int v) const { return "vertex " + std::to_string(v + options_.numbering_base); }
-  std::string face_name(int f) const {
-    return "face " + std::to_string(face_origin_[size_t(f)] + options_.numbering_base);
-  }
-  void example(Defect d, const std::string& text) {
+  int file_face(int f) const { return face_origin_[size_t(f)]; }
+  void example(Defect d, const DefectExample& e) {
     auto& list = report_.examples[size_t(d)];
-    if (list.size() < kExamples) list.push_back(text);
+    if (list.size() < kExamples) list.push_back(e);
   }
-  void found(Defect d, const std::string& text) {
+  void found(Defect d, const DefectExample& e) {
     ++report_.counts[size_t(d)];
-    example(d, text);
+    example(d, e);
   }
   int next_corner(int f, int k) const {
     return k + 1 == soup_.faces.offsets[size_t(f) + 1] ? soup_.faces.offsets[size_t(f)] : k + 1;
@@ -171,7 +168,7 @@ private:
         ++report_.welded_groups;
       } else {
         welded_away_[size_t(v)] = 1;
-        example(Defect::coincident_vertices, vertex_name(v) + " at " + vertex_name(root));
+        example(Defect::coincident_vertices, {v, root});
       }
     }
     weld_root_.resize(p.size());
@@ -209,7 +206,7 @@ private:
         pieces.push_back(corners);
         return;
       }
-      found(loops.empty() ? Defect::degenerate_faces : Defect::repeated_corners, face_name(f));
+      found(loops.empty() ? Defect::degenerate_faces : Defect::repeated_corners, {file_face(f)});
       if (loops.size() > 1) ++report_.split_faces;
       pieces = std::move(loops);
     });
@@ -228,7 +225,7 @@ private:
         longest2 = std::max(longest2, (b - a).squaredNorm());
       }
       if (0.5 * normal.norm() <= tolerance_ * std::sqrt(longest2)) {
-        found(Defect::zero_area_faces, face_name(f));
+        found(Defect::zero_area_faces, {file_face(f)});
         return;
       }
       pieces.push_back(std::move(corners));
@@ -247,7 +244,7 @@ private:
       const auto [begin, end] = seen.equal_range(hash);
       for (auto it = begin; it != end; ++it)
         if (it->second.first == set) {
-          found(Defect::duplicate_faces, face_name(f) + " (as " + face_name(it->second.second) + ")");
+          found(Defect::duplicate_faces, {file_face(f), file_face(it->second.second)});
           return;
         }
       seen.emplace(hash, std::make_pair(std::move(set), f));
@@ -294,9 +291,7 @@ private:
             break;
           }
         const int a = t.verts[size_t(c[0])], b = t.verts[size_t(next_corner(corner_face[size_t(c[0])], c[0]))];
-        found(Defect::fin_edges, "edge " + std::to_string(std::min(a, b) + options_.numbering_base) + "–" +
-                                     std::to_string(std::max(a, b) + options_.numbering_base) + " (" +
-                                     std::to_string(m) + " faces)");
+        found(Defect::fin_edges, {std::min(a, b), std::max(a, b), m});
         report_.fin_faces += m - 2;
         fin_vertex[size_t(a)] = fin_vertex[size_t(b)] = 1;
       }
@@ -338,7 +333,7 @@ private:
       if (fin_vertex[v]) {
         report_.fin_copies += copies[v];
       } else {
-        found(Defect::pinch_vertices, vertex_name(int(v)) + " (" + std::to_string(copies[v] + 1) + " fans)");
+        found(Defect::pinch_vertices, {int(v), -1, copies[v] + 1});
         report_.pinch_copies += copies[v];
       }
     }
@@ -380,7 +375,7 @@ private:
       }
       if (!orientable) {
         for (const int f : queue) flip_[size_t(f)] = 0;
-        found(Defect::unorientable_parts, "the part of " + face_name(start));
+        found(Defect::unorientable_parts, {file_face(start)});
         ++unorientable;
         continue;
       }
@@ -392,7 +387,7 @@ private:
     if (unorientable == 0) count_boundary_loops(corner_face);
     for (int f = 0; f < n_faces; ++f) {
       if (!flip_[size_t(f)]) continue;
-      found(Defect::flipped_faces, face_name(f));
+      found(Defect::flipped_faces, {file_face(f)});
       std::reverse(t.verts.begin() + t.offsets[size_t(f)] + 1, t.verts.begin() + t.offsets[size_t(f) + 1]);
     }
   }
@@ -430,7 +425,7 @@ private:
     const bool has_covariances = !soup_.covariances.empty();
     for (size_t v = 0; v < n; ++v) {
       if (!used[v]) {
-        if (v < n_file && !welded_away_[v]) found(Defect::isolated_vertices, vertex_name(int(v)));
+        if (v < n_file && !welded_away_[v]) found(Defect::isolated_vertices, {int(v)});
         continue;
       }
       index[v] = int(positions.size());
@@ -515,8 +510,7 @@ std::vector<std::string> RepairReport::lines() const {
   if (n(Defect::flipped_faces))
     out.push_back("flipped " + plural(n(Defect::flipped_faces), "face", "faces") + " to orient each part consistently");
   if (n(Defect::unorientable_parts))
-    out.push_back(plural(n(Defect::unorientable_parts), "part cannot", "parts cannot") +
-                  " be oriented (Möbius-like): " + examples[size_t(Defect::unorientable_parts)].front());
+    out.push_back(plural(n(Defect::unorientable_parts), "part cannot", "parts cannot") + " be oriented (Möbius-like)");
   if (n(Defect::isolated_vertices))
     out.push_back("dropped " + plural(n(Defect::isolated_vertices), "isolated vertex", "isolated vertices"));
   if (dropped_creases)
@@ -524,40 +518,114 @@ std::vector<std::string> RepairReport::lines() const {
   return out;
 }
 
-std::vector<std::string> RepairReport::problems() const {
-  static const char* const names[kDefectCount] = {"coincident vertices",
-                                                  "faces with a repeated corner",
-                                                  "degenerate faces",
-                                                  "zero-area faces",
-                                                  "duplicate faces",
-                                                  "edges with more than two faces (fins)",
-                                                  "pinch vertices (several fans)",
-                                                  "faces oriented against their neighbours",
-                                                  "unorientable parts (Möbius-like)",
-                                                  "isolated vertices"};
+namespace {
+
+// Per class: its name for a count of one and of more, and what --repair does to one and to more.
+struct DefectWords {
+  const char *one, *many, *mend_one, *mend_many;
+};
+constexpr DefectWords kDefectWords[kDefectCount] = {
+    {"coincident vertex", "coincident vertices", "--repair welds it", "--repair welds them"},
+    {"face with a repeated corner", "faces with a repeated corner", "--repair removes the repeat",
+     "--repair removes the repeats"},
+    {"degenerate face (fewer than 3 distinct corners)", "degenerate faces (fewer than 3 distinct corners)",
+     "--repair drops it", "--repair drops them"},
+    {"zero-area face", "zero-area faces", "--repair drops it", "--repair drops them"},
+    {"duplicate face (on the vertices of an earlier one)", "duplicate faces (on the vertices of an earlier one)",
+     "--repair drops it", "--repair drops them"},
+    {"edge with more than two faces (a fin)", "edges with more than two faces (fins)",
+     "--repair gives the extra faces their own vertices", "--repair gives the extra faces their own vertices"},
+    {"non-manifold (pinch) vertex", "non-manifold (pinch) vertices", "--repair splits it", "--repair splits them"},
+    {"face oriented against its neighbours", "faces oriented against their neighbours", "--repair flips it",
+     "--repair flips them"},
+    {"part that cannot be oriented (Möbius-like)", "parts that cannot be oriented (Möbius-like)",
+     "no repair orients it", "no repair orients them"},
+    {"isolated vertex (in no face)", "isolated vertices (in no face)", "--repair drops it", "--repair drops them"},
+};
+
+std::string example_text(Defect d, const DefectExample& e, const ElementNumbering& n) {
+  switch (d) {
+    case Defect::coincident_vertices:
+      return n.vertex(e.element) + " at " + n.vertex(e.other);
+    case Defect::duplicate_faces:
+      return n.face(e.element) + " as " + n.face(e.other);
+    case Defect::fin_edges:
+      return "the edge of " + n.vertex(e.element) + " and " + n.vertex(e.other) + " with " +
+             std::to_string(e.count) + " faces";
+    case Defect::pinch_vertices:
+      return n.vertex(e.element) + " with " + std::to_string(e.count) + " fans";
+    case Defect::unorientable_parts:
+      return "the part of " + n.face(e.element);
+    case Defect::isolated_vertices:
+      return n.vertex(e.element);
+    default:
+      return n.face(e.element);
+  }
+}
+
+bool names_vertices(Defect d) {
+  return d == Defect::coincident_vertices || d == Defect::fin_edges || d == Defect::pinch_vertices ||
+         d == Defect::isolated_vertices;
+}
+
+std::string element_name(const char* kind, int index, const ElementNumbering& n,
+                         const std::unordered_map<int, int>& lines) {
+  const auto line = lines.find(index);
+  return std::string(kind) + " " + n.number(index) +
+         (line == lines.end() ? "" : " (line " + std::to_string(line->second) + ")");
+}
+
+}  // namespace
+
+std::string ElementNumbering::vertex(int v) const { return element_name("vertex", v, *this, vertex_lines); }
+std::string ElementNumbering::face(int f) const { return element_name("face", f, *this, face_lines); }
+
+bool is_refused(Defect d) {
+  return d != Defect::coincident_vertices && d != Defect::zero_area_faces && d != Defect::isolated_vertices;
+}
+
+bool RepairReport::refuses() const {
+  for (int d = 0; d < kDefectCount; ++d)
+    if (counts[size_t(d)] > 0 && is_refused(Defect(d))) return true;
+  return false;
+}
+
+std::vector<std::string> RepairReport::problems(const ElementNumbering& numbering, bool refused) const {
   std::vector<std::string> out;
   for (int d = 0; d < kDefectCount; ++d) {
-    if (counts[size_t(d)] == 0) continue;
-    std::string line = std::string(names[d]) + ": " + std::to_string(counts[size_t(d)]);
+    if (counts[size_t(d)] == 0 || is_refused(Defect(d)) != refused) continue;
+    std::string line = kDefectWords[d].many + std::string(": ") + std::to_string(counts[size_t(d)]);
     const char* sep = " (";
-    for (const std::string& e : examples[size_t(d)]) line += std::exchange(sep, ", ") + e;
-    if (counts[size_t(d)] > int(examples[size_t(d)].size())) line += ", ...";
+    for (const DefectExample& e : examples[size_t(d)])
+      line += std::exchange(sep, "; ") + example_text(Defect(d), e, numbering);
+    // Of a group of coincident vertices, the ones welded to its lowest are the examples.
+    const int instances = counts[size_t(d)] - (Defect(d) == Defect::coincident_vertices ? welded_groups : 0);
+    if (instances > int(examples[size_t(d)].size())) line += "; ...";
     out.push_back(line + ")");
   }
   return out;
 }
 
-std::string RepairReport::summary() const {
-  static const char* const names[kDefectCount] = {"coincident vertices", "faces with a repeated corner",
-                                                  "degenerate faces",    "zero-area faces",
-                                                  "duplicate faces",     "fin edges (more than two faces)",
-                                                  "pinch vertices",      "flipped faces",
-                                                  "unorientable parts",  "isolated vertices"};
+std::string RepairReport::refusal(const ElementNumbering& numbering, bool every_class) const {
   std::string out;
-  for (int d = 0; d < kDefectCount; ++d)
-    if (counts[size_t(d)] > 0)
-      out += (out.empty() ? "" : ", ") + std::string(names[d]) + ": " + std::to_string(counts[size_t(d)]);
+  for (int d = 0; d < kDefectCount; ++d) {
+    const int n = counts[size_t(d)];
+    if (n == 0 || !(every_class || is_refused(Defect(d)))) continue;
+    const DefectWords& w = kDefectWords[d];
+    out += (out.empty() ? "" : "; ") + std::to_string(n) + " " + (n == 1 ? w.one : w.many) + ", " +
+           (n == 1 ? "" : "the first ") + example_text(Defect(d), examples[size_t(d)].front(), numbering) + "; " +
+           (n == 1 ? w.mend_one : w.mend_many);
+  }
   return out;
+}
+
+void RepairReport::named_elements(std::vector<int>& vertices, std::vector<int>& faces) const {
+  for (int d = 0; d < kDefectCount; ++d)
+    for (const DefectExample& e : examples[size_t(d)]) {
+      auto& list = names_vertices(Defect(d)) ? vertices : faces;
+      list.push_back(e.element);
+      if (e.other >= 0) list.push_back(e.other);
+    }
 }
 
 RepairReport repair_polygon_soup(PolygonSoup& soup, const RepairOptions& options) {

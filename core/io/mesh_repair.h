@@ -15,6 +15,7 @@
 // except a weld cluster of many vertices within the tolerance of one another.
 #include <array>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/io/polygon_soup.h"
@@ -23,7 +24,16 @@ namespace gps {
 
 struct RepairOptions {
   double weld_tolerance = 1e-6;  // vertices closer than this times the bounding-box diagonal are welded
-  int numbering_base = 0;        // examples number vertices and faces from this (1 as OBJ files do)
+};
+
+/// How messages name a file's vertices and faces: numbered from `base` (1 in OBJ, 0 in PLY and OFF),
+/// with the line each was read on where known (OBJ: only the named elements' lines are looked up).
+struct ElementNumbering {
+  int base = 0;
+  std::unordered_map<int, int> vertex_lines, face_lines;  // by index from 0: the file's line
+  std::string vertex(int v) const;                       // "vertex 67 (line 70)"
+  std::string face(int f) const;
+  std::string number(int v) const { return std::to_string(v + base); }
 };
 
 /// The defect classes, in the order the repair treats them.
@@ -41,9 +51,20 @@ enum class Defect {
 };
 inline constexpr int kDefectCount = 10;
 
+/// Whether a mesh with the defect is refused as read (the others are read as they are: coincident,
+/// isolated vertices and zero-area faces).
+bool is_refused(Defect d);
+
+/// One instance of a defect, by the indices of the file's elements (from 0).
+struct DefectExample {
+  int element = -1;  // the vertex (coincident, fin, pinch, isolated) or face (the others)
+  int other = -1;    // coincident: the vertex it is welded to; duplicate: the earlier face; fin: the other end
+  int count = 0;     // fin: the faces on the edge; pinch: the fans
+};
+
 struct RepairReport {
-  std::array<int, kDefectCount> counts{};                       // by Defect
-  std::array<std::vector<std::string>, kDefectCount> examples;  // the first few, as the file numbers them
+  std::array<int, kDefectCount> counts{};                         // by Defect
+  std::array<std::vector<DefectExample>, kDefectCount> examples;  // the first few
   int welded_groups = 0;                                        // the vertices the coincident ones became
   int split_faces = 0;      // faces that used a vertex twice, split into several faces
   int fin_faces = 0;        // faces separated from fin edges
@@ -55,12 +76,19 @@ struct RepairReport {
 
   int count(Defect d) const { return counts[size_t(d)]; }
   bool changed() const;
+  /// Whether a class found makes the mesh refused as read (is_refused).
+  bool refuses() const;
   /// One line per step that changed something ("welded 24 coincident vertices into 8").
   std::vector<std::string> lines() const;
-  /// One line per defect class found: its name, count and first examples (gpsurf info).
-  std::vector<std::string> problems() const;
-  /// The classes found and their counts on one line ("duplicate faces: 1, pinch vertices: 1"), or "".
-  std::string summary() const;
+  /// One line per defect class found (`refused` ones or the others): its name, count and first
+  /// examples (gpsurf info).
+  std::vector<std::string> problems(const ElementNumbering& numbering, bool refused) const;
+  /// Why the mesh is refused, a phrase per refused class with its count, first example and what
+  /// --repair does ("2 pinch vertices (several fans of faces), the first vertex 1 (line 1); --repair
+  /// splits them"), joined by "; "; "" where none is. With `every_class`, the others too.
+  std::string refusal(const ElementNumbering& numbering, bool every_class = false) const;
+  /// The vertices and faces the examples name (for the lines of an ElementNumbering).
+  void named_elements(std::vector<int>& vertices, std::vector<int>& faces) const;
 };
 
 /// Repairs the soup in place (its positions valid, its face indices in range).

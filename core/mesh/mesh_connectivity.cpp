@@ -106,6 +106,37 @@ MeshConnectivity connectivity_of(const PolygonTopology& t, bool rows) {
 
 MeshConnectivity connectivity_of(const PolygonTopology& t) { return connectivity_of(t, true); }
 
+SurfaceCounts surface_counts(const PolygonTopology& t, const MeshConnectivity& c) {
+  // Two forests over the vertices: one joined along every edge (the parts), one along the boundary
+  // edges only (on a manifold each boundary vertex has two, so its trees are the loops).
+  std::vector<int> part(size_t(t.n_vertices)), loop(size_t(t.n_vertices));
+  for (int v = 0; v < t.n_vertices; ++v) part[size_t(v)] = loop[size_t(v)] = v;
+  const auto root = [](std::vector<int>& up, int x) {
+    while (up[size_t(x)] != x) x = up[size_t(x)] = up[size_t(up[size_t(x)])];
+    return x;
+  };
+  const auto unite = [&](std::vector<int>& up, int a, int b) { up[size_t(root(up, a))] = root(up, b); };
+  std::vector<char> on_boundary(size_t(t.n_vertices), 0);
+  for (int e = 0; e < c.n_edges(); ++e) {
+    const int a = c.edge_verts[2 * size_t(e)], b = c.edge_verts[2 * size_t(e) + 1];
+    unite(part, a, b);
+    if (!c.is_boundary_edge(e)) continue;
+    unite(loop, a, b);
+    on_boundary[size_t(a)] = on_boundary[size_t(b)] = 1;
+  }
+  SurfaceCounts out;
+  long long used = 0;
+  for (int v = 0; v < t.n_vertices; ++v) {
+    if (c.valence(v) == 0) continue;
+    ++used;
+    out.parts += root(part, v) == v;
+    out.boundary_loops += on_boundary[size_t(v)] && root(loop, v) == v;
+  }
+  const long long euler = used - c.n_edges() + t.n_faces();
+  out.genus = int((2 * out.parts - euler - out.boundary_loops) / 2);
+  return out;
+}
+
 VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
   const int n_faces = c.n_vertex_faces(v);
   if (n_faces == 0) return VertexRole::isolated;

@@ -52,6 +52,13 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& sour
 /// The same with the topology's connectivity already built (`c` = connectivity_of(t)).
 void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source);
 
+/// The shape of a manifold mesh as a surface: its connected parts (isolated vertices are in none), its
+/// boundary loops and its genus, summed over the parts, from Euler's V − E + F = 2P − 2g − b.
+struct SurfaceCounts {
+  int parts = 0, boundary_loops = 0, genus = 0;
+};
+SurfaceCounts surface_counts(const PolygonTopology& t, const MeshConnectivity& c);
+
 /// How a vertex behaves under the boundary rules: interior, on a boundary curve, or a corner (one face).
 enum class VertexRole { interior, boundary, corner, isolated };
 

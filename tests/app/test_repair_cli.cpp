@@ -3,6 +3,7 @@
 // written here, one per defect class.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -70,7 +71,7 @@ struct Case {
   std::string name;
   std::vector<Vec3> positions;
   Faces faces;
-  std::string refusal_names;  // what the refusal names ("" where the mesh loads as it is)
+  std::string refusal;        // the refusal after "FILE: " ("" where the mesh loads as it is)
   std::string report;         // the repair report's lines
   size_t vertices, faces_after;
   int boundary;
@@ -79,8 +80,14 @@ struct Case {
 std::vector<Case> cases() {
   std::vector<Case> out;
   {
-    Case c{"pinch", {}, {}, "pinch vertices: 1", "repair: split 1 pinch vertex (1 copy added, one per extra fan)\n",
-           8,       8,  0};
+    Case c{"pinch",
+           {},
+           {},
+           "1 non-manifold (pinch) vertex, vertex 1 (line 1) with 2 fans; --repair splits it",
+           "repair: split 1 pinch vertex (1 copy added, one per extra fan)\n",
+           8,
+           8,
+           0};
     add_tetrahedron(c.positions, c.faces, Vec3(0, 0, 0), -1, 1);
     add_tetrahedron(c.positions, c.faces, Vec3(0, 0, 0), 0, -1);
     out.push_back(c);
@@ -101,7 +108,8 @@ std::vector<Case> cases() {
            {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 0, 0), Vec3(-1, 0, 1), Vec3(-1, 0, 0), Vec3(0, 1, 1),
             Vec3(0, 1, 0)},
            {{0, 1, 2, 3}, {0, 1, 6, 7}, {1, 0, 5, 4}},
-           "fin edges (more than two faces): 1",
+           "1 edge with more than two faces (a fin), the edge of vertex 1 (line 1) and vertex 2 (line 2) with 3 "
+           "faces; --repair gives the extra faces their own vertices",
            "repair: separated 1 face from 1 edge with more than two faces (2 vertex copies)\n",
            10,
            3,
@@ -109,9 +117,14 @@ std::vector<Case> cases() {
     out.push_back(c);
   }
   {
-    Case c{
-        "dangling", {}, {}, "pinch vertices: 2", "repair: split 2 pinch vertices (2 copies added, one per extra fan)\n",
-        10,         6,  6};
+    Case c{"dangling",
+           {},
+           {},
+           "2 non-manifold (pinch) vertices, the first vertex 2 (line 2) with 2 fans; --repair splits them",
+           "repair: split 2 pinch vertices (2 copies added, one per extra fan)\n",
+           10,
+           6,
+           6};
     add_tetrahedron(c.positions, c.faces, Vec3(0, 0, 0), -1, 1);
     c.positions.insert(c.positions.end(), {Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(0, 2, 0), Vec3(1, 2, 0)});
     c.faces.insert(c.faces.end(), {{1, 4, 5}, {2, 6, 7}});
@@ -121,7 +134,8 @@ std::vector<Case> cases() {
     Case c{"faces",
            {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0.5, 0, 0)},
            {{0, 1, 2}, {0, 2, 3}, {2, 0, 1}, {0, 4, 1}, {3, 3, 0}},
-           "degenerate faces: 1, zero-area faces: 1, duplicate faces: 1, isolated vertices: 1",
+           "1 degenerate face (fewer than 3 distinct corners), face 5 (line 10); --repair drops it; 1 duplicate "
+           "face (on the vertices of an earlier one), face 3 (line 8) as face 1 (line 6); --repair drops it",
            "repair: dropped 1 degenerate face (fewer than 3 distinct corners)\nrepair: dropped 1 zero-area face\n"
            "repair: dropped 1 duplicate face\nrepair: dropped 1 isolated vertex\n",
            4,
@@ -139,12 +153,51 @@ std::vector<Case> cases() {
     Case c{"flipped",
            cube_positions(),
            kCube,
-           "flipped faces: 1",
+           "1 face oriented against its neighbours, face 4 (line 12); --repair flips it",
            "repair: flipped 1 face to orient each part consistently\n",
            8,
            6,
            0};
     std::reverse(c.faces[3].begin() + 1, c.faces[3].end());
+    out.push_back(c);
+  }
+  {
+    // A closed pillow of two triangles on the same vertices (no subdivision can refine it).
+    Case c{"pillow",
+           {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)},
+           {{0, 1, 2}, {0, 2, 1}},
+           "1 duplicate face (on the vertices of an earlier one), face 2 (line 5) as face 1 (line 4); --repair "
+           "drops it",
+           "repair: dropped 1 duplicate face\n",
+           3,
+           1,
+           3};
+    out.push_back(c);
+  }
+  {
+    // A bow tie: one face through vertex 1 twice, split into its two triangles, which then pinch there.
+    Case c{"bowtie",
+           {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(-1, 0, 0), Vec3(-1, -1, 0)},
+           {{0, 1, 2, 0, 3, 4}},
+           "1 face with a repeated corner, face 1 (line 6); --repair removes the repeat; 1 non-manifold (pinch) "
+           "vertex, vertex 1 (line 1) with 2 fans; --repair splits it",
+           "repair: removed repeated corners from 1 face (1 split into loops)\nrepair: split 1 pinch vertex (1 copy "
+           "added, one per extra fan)\n",
+           6,
+           2,
+           6};
+    out.push_back(c);
+  }
+  {
+    // A square of two triangles and a zero-area one along its edge 1–2 through vertex 5: read as it is.
+    Case c{"sliver",
+           {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0.5, 0, 0)},
+           {{0, 1, 2}, {0, 2, 3}, {0, 4, 1}},
+           "",
+           "repair: dropped 1 zero-area face\nrepair: dropped 1 isolated vertex\n",
+           4,
+           2,
+           4};
     out.push_back(c);
   }
   return out;
@@ -157,12 +210,11 @@ TEST(RepairCli, EachDefectIsRefusedNamedAndRepaired) {
     const std::string in = dir.file(c.name + ".obj"), out = dir.file(c.name + ".ply");
     write_obj(in, c.positions, c.faces);
     const auto plain = run_command(gpsurf("infer " + in + " -o " + out));
-    if (c.refusal_names.empty()) {
+    if (c.refusal.empty()) {
       EXPECT_EQ(plain.exit_code, 0) << plain.output;  // a manifold mesh as it is: read as now
     } else {
       EXPECT_EQ(plain.exit_code, 1) << plain.output;
-      EXPECT_NE(plain.output.find("(" + c.refusal_names + "); gpsurf can repair it: --repair\n"), std::string::npos)
-          << plain.output;
+      EXPECT_NE(plain.output.find(in + ": " + c.refusal + "\n"), std::string::npos) << plain.output;
       EXPECT_EQ(std::count(plain.output.begin(), plain.output.end(), '\n'), 1) << plain.output;
     }
     const auto repaired = run_command(gpsurf("infer " + in + " -o " + out + " --repair"));
@@ -225,13 +277,84 @@ TEST(RepairCli, InfoListsEveryProblemAndExitsOne) {
   const auto r = run_command(gpsurf("info " + in));
   EXPECT_EQ(r.exit_code, 1);
   for (const char* line :
-       {"problems (vertices and faces numbered from 1 as the file numbers them):\n",
-        "  duplicate faces: 1 (face 9 (as face 8))\n",
-        "  edges with more than two faces (fins): 1 (edge 2–3 (3 faces))\n",
-        "  pinch vertices (several fans): 1 (vertex 1 (2 fans))\n",
-        "  faces oriented against their neighbours: 1 (face 6)\n", "  isolated vertices: 1 (vertex 8)\n",
-        "after --repair: 3 parts, 1 boundary loop\n", "; gpsurf can repair it: --repair\n"})
+       {"refused for (vertices and faces numbered from 1):\n",
+        "  duplicate faces (on the vertices of an earlier one): 1 (face 9 (line 18) as face 8 (line 17))\n",
+        "  edges with more than two faces (fins): 1 (the edge of vertex 2 (line 2) and vertex 3 (line 3) with 3 "
+        "faces)\n",
+        "  non-manifold (pinch) vertices: 1 (vertex 1 (line 1) with 2 fans)\n",
+        "  faces oriented against their neighbours: 1 (face 6 (line 15))\n",
+        "also:\n  isolated vertices (in no face): 1 (vertex 8 (line 8))\n",
+        "after --repair: 3 parts, 1 boundary loop, genus 0, scheme Loop\n",
+        ": 1 duplicate face (on the vertices of an earlier one), face 9 (line 18) as face 8 (line 17); --repair "
+        "drops it; 1 edge with more than two faces (a fin), the edge of vertex 2 (line 2) and vertex 3 (line 3) "
+        "with 3 faces; --repair gives the extra faces their own vertices; 1 non-manifold (pinch) vertex, vertex 1 "
+        "(line 1) with 2 fans; --repair splits it; 1 face oriented against its neighbours, face 6 (line 15); "
+        "--repair flips it\n"})
     EXPECT_NE(r.output.find(line), std::string::npos) << line << " in\n" << r.output;
+}
+
+// A mesh read as it is: info says what it is read with (exit 0), numbered as the file numbers them,
+// and what a repair would leave; the counts are those the mesh was built with.
+TEST(RepairCli, InfoNamesWhatAReadMeshHasAndExitsZero) {
+  test::TempDir dir;
+  // The cube, its vertex 1 given again as vertex 9 (used by no face: coincident, then isolated once
+  // welded), vertex 10 in no face, and a zero-area triangle on the edge 1–2 through vertex 11.
+  std::vector<Vec3> p = cube_positions();
+  p.insert(p.end(), {corner(0), Vec3(5, 5, 5), Vec3(0.5, 0, 0)});
+  Faces faces = kCube;
+  faces[4] = {0, 2, 3, 1, 10};  // the bottom runs 1→0 back through vertex 11 on the edge 0–1
+  faces.push_back({0, 10, 1});
+  const std::string in = dir.file("warn.obj");
+  write_obj(in, p, faces);
+  const auto r = run_command(gpsurf("info " + in));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  for (const char* line :
+       {"vertices: 11\n", "surface: 1 part, 0 boundary loops, genus 0\n",
+        "read as they are (--repair mends them; vertices and faces numbered from 1):\n",
+        "  coincident vertices: 2 (vertex 9 (line 9) at vertex 1 (line 1))\n",
+        "  zero-area faces: 1 (face 7 (line 18))\n", "  isolated vertices (in no face): 1 (vertex 10 (line 10))\n",
+        // Dropping the zero-area face leaves the slit it covered open: a loop of zero area.
+        "after --repair: 1 part, 1 boundary loop, genus 0, scheme Catmull-Clark\n"})
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << " in\n" << r.output;
+}
+
+// Parts, boundary loops and genus against Euler's formula on meshes whose values are known: a torus
+// of 4 × 4 quads (genus 1), and a cube beside an open square of 2 × 2 quads (2 parts, 1 loop).
+TEST(RepairCli, InfoReportsPartsBoundaryLoopsGenusAndScheme) {
+  test::TempDir dir;
+  std::vector<Vec3> p;
+  Faces faces;
+  constexpr int n = 4;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / n;
+      p.push_back(Vec3((3 + std::cos(v)) * std::cos(u), (3 + std::cos(v)) * std::sin(u), std::sin(v)));
+    }
+  const auto at = [&](int i, int j) { return (i % n) * n + j % n; };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+  const std::string torus = dir.file("torus.obj");
+  write_obj(torus, p, faces);
+  const auto t = run_command(gpsurf("info " + torus));
+  EXPECT_EQ(t.exit_code, 0) << t.output;
+  EXPECT_NE(t.output.find("surface: 1 part, 0 boundary loops, genus 1\nscheme: Catmull-Clark\n"), std::string::npos)
+      << t.output;
+  EXPECT_EQ(t.output.find("read as they are"), std::string::npos) << "nothing to report: " << t.output;
+
+  std::vector<Vec3> q = cube_positions();
+  Faces g = kCube;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) q.push_back(Vec3(3 + i, j, 0));
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const int a = 8 + 3 * i + j;
+      g.push_back({a, a + 3, a + 4, a + 1});
+    }
+  const std::string two = dir.file("two.obj");
+  write_obj(two, q, g);
+  const auto s = run_command(gpsurf("info " + two));
+  EXPECT_EQ(s.exit_code, 0) << s.output;
+  EXPECT_NE(s.output.find("surface: 2 parts, 1 boundary loop, genus 0\n"), std::string::npos) << s.output;
 }
 
 }  // namespace

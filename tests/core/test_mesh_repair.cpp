@@ -138,7 +138,7 @@ TEST(MeshRepair, PinchVertexOfTwoTetrahedraIsSplit) {
   const RepairReport r = repair_polygon_soup(s);
   EXPECT_EQ(r.count(Defect::pinch_vertices), 1);
   EXPECT_EQ(r.pinch_copies, 1);
-  EXPECT_EQ(r.examples[size_t(Defect::pinch_vertices)], std::vector<std::string>{"vertex 0 (2 fans)"});
+  EXPECT_EQ(r.problems({}, true), std::vector<std::string>{"non-manifold (pinch) vertices: 1 (vertex 0 with 2 fans)"});
   EXPECT_EQ(r.lines(), std::vector<std::string>{"split 1 pinch vertex (1 copy added, one per extra fan)"});
   EXPECT_EQ(s.positions.size(), 8u);
   EXPECT_EQ(s.positions[7], p[0]) << "the copy comes last, at its original's position";
@@ -177,7 +177,8 @@ TEST(MeshRepair, FinFaceGetsItsOwnEdge) {
   EXPECT_EQ(r.fin_faces, 1);
   EXPECT_EQ(r.fin_copies, 2);
   EXPECT_EQ(r.count(Defect::pinch_vertices), 0);
-  EXPECT_EQ(r.examples[size_t(Defect::fin_edges)], std::vector<std::string>{"edge 0–1 (3 faces)"});
+  EXPECT_EQ(r.problems({}, true), std::vector<std::string>{"edges with more than two faces (fins): 1 (the edge of "
+                                                            "vertex 0 and vertex 1 with 3 faces)"});
   EXPECT_EQ(r.lines(),
             std::vector<std::string>{"separated 1 face from 1 edge with more than two faces (2 vertex copies)"});
   const auto f = faces_of(s);
@@ -199,9 +200,12 @@ TEST(MeshRepair, ZeroAreaDuplicateAndDegenerateFacesAreDropped) {
   PolygonSoup s = soup_of(p, {{0, 1, 2}, {0, 2, 3}, {2, 0, 1}, {0, 4, 1}, {1, 5, 2, 2}, {3, 3, 0}});
   const RepairReport r = repair_polygon_soup(s);
   EXPECT_EQ(r.count(Defect::duplicate_faces), 1);
-  EXPECT_EQ(r.examples[size_t(Defect::duplicate_faces)], std::vector<std::string>{"face 2 (as face 0)"});
   EXPECT_EQ(r.count(Defect::zero_area_faces), 1);
-  EXPECT_EQ(r.examples[size_t(Defect::zero_area_faces)], std::vector<std::string>{"face 3"});
+  EXPECT_EQ(r.problems({}, false), (std::vector<std::string>{"zero-area faces: 1 (face 3)",
+                                                             "isolated vertices (in no face): 1 (vertex 4)"}));
+  EXPECT_EQ(r.refusal({}), "1 face with a repeated corner, face 4; --repair removes the repeat; "
+                           "1 degenerate face (fewer than 3 distinct corners), face 5; --repair drops it; "
+                           "1 duplicate face (on the vertices of an earlier one), face 2 as face 0; --repair drops it");
   EXPECT_EQ(r.count(Defect::repeated_corners), 1);
   EXPECT_EQ(r.count(Defect::degenerate_faces), 1);
   EXPECT_EQ(r.count(Defect::isolated_vertices), 1) << "vertex 4, left by the sliver";
@@ -236,7 +240,9 @@ TEST(MeshRepair, IsolatedVerticesAreDropped) {
   s.covariances[4] *= 4.0;  // cube vertex 3, vertex 3 after the repair
   const RepairReport r = repair_polygon_soup(s);
   EXPECT_EQ(r.count(Defect::isolated_vertices), 2);
-  EXPECT_EQ(r.examples[size_t(Defect::isolated_vertices)], (std::vector<std::string>{"vertex 3", "vertex 9"}));
+  EXPECT_EQ(r.problems({}, false), std::vector<std::string>{"isolated vertices (in no face): 2 (vertex 3; vertex 9)"});
+  EXPECT_FALSE(r.refuses()) << "a mesh with isolated vertices is read as it is";
+  EXPECT_EQ(r.refusal({}), "");
   EXPECT_EQ(faces_of(s), kCubeFaces);
   EXPECT_EQ(s.covariances[3](0, 0), 4.0);
   EXPECT_EQ(boundary_edges(s), 0);
@@ -246,11 +252,13 @@ TEST(MeshRepair, FlippedFaceIsFlippedBack) {
   std::vector<std::vector<int>> faces = kCubeFaces;
   std::reverse(faces[0].begin() + 1, faces[0].end());
   PolygonSoup s = soup_of(cube_positions(), faces);
-  RepairOptions o;
-  o.numbering_base = 1;
-  const RepairReport r = repair_polygon_soup(s, o);
+  const RepairReport r = repair_polygon_soup(s);
   EXPECT_EQ(r.count(Defect::flipped_faces), 1);
-  EXPECT_EQ(r.examples[size_t(Defect::flipped_faces)], std::vector<std::string>{"face 1"}) << "numbered from 1";
+  ElementNumbering obj;
+  obj.base = 1;
+  obj.face_lines[0] = 9;
+  EXPECT_EQ(r.refusal(obj), "1 face oriented against its neighbours, face 1 (line 9); --repair flips it")
+      << "numbered from 1, with the line";
   EXPECT_EQ(boundary_edges(s), 0);
   EXPECT_EQ(faces_of(s)[0], kCubeFaces[0]);
   EXPECT_EQ(faces_of(s)[1], kCubeFaces[1]);
@@ -290,12 +298,16 @@ TEST(MeshRepair, ProblemsListEveryClassWithExamples) {
   std::reverse(faces[1].begin(), faces[1].end());
   p.push_back(Vec3(9, 9, 9));  // isolated
   const RepairReport r = diagnose_polygon_soup(soup_of(p, faces));
-  const auto problems = r.problems();
-  ASSERT_EQ(problems.size(), 4u) << ::testing::PrintToString(problems);
-  EXPECT_EQ(problems[0], "duplicate faces: 1 (face 8 (as face 0))");
-  EXPECT_EQ(problems[1], "pinch vertices (several fans): 1 (vertex 0 (2 fans))");
+  const auto problems = r.problems({}, true);
+  ASSERT_EQ(problems.size(), 3u) << ::testing::PrintToString(problems);
+  EXPECT_EQ(problems[0], "duplicate faces (on the vertices of an earlier one): 1 (face 8 as face 0)");
+  EXPECT_EQ(problems[1], "non-manifold (pinch) vertices: 1 (vertex 0 with 2 fans)");
   EXPECT_EQ(problems[2], "faces oriented against their neighbours: 1 (face 1)");
-  EXPECT_EQ(problems[3], "isolated vertices: 1 (vertex 7)");
+  EXPECT_EQ(r.problems({}, false), std::vector<std::string>{"isolated vertices (in no face): 1 (vertex 7)"});
+  std::vector<int> vertices, faces_named;
+  r.named_elements(vertices, faces_named);
+  EXPECT_EQ(vertices, (std::vector<int>{0, 7}));
+  EXPECT_EQ(faces_named, (std::vector<int>{8, 0, 1}));
 }
 
 }  // namespace

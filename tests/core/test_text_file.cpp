@@ -90,17 +90,24 @@ TEST(TextFile, TheHeadCheckSeesTheFirstBytesThenTheWholeFileIsRead) {
             path + ": not this");
 }
 
-// Two faces on the same three vertices close up on their own: refused at load, naming both faces
-// and the repair (one of them dropped as a duplicate).
+// Two faces on the same vertices close up on their own (a pillow, which no subdivision can refine):
+// refused at load, naming the second as a duplicate of the first, as the file numbers them, and the repair.
 TEST(TextFile, AClosedPillowOfTwoFacesIsRefusedNamingThem) {
   const test::TempDir dir;
   const std::string path = dir.write("pillow.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n");
   EXPECT_EQ(error_of([&] { read_mesh(path); }),
-            path +
-                ": faces 0 and 1 share all their edges (a closed pillow of two faces, which no subdivision can "
-                "refine) (duplicate faces: 1); gpsurf can repair it: --repair");
+            path + ": 1 duplicate face (on the vertices of an earlier one), face 2 (line 5) as face 1 (line 4); "
+                   "--repair drops it");
   const std::string quads = dir.write("quads.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 4 3 2 1\n");
-  EXPECT_NE(error_of([&] { read_mesh(quads); }).find("faces 0 and 1 share all their edges"), std::string::npos);
+  EXPECT_NE(error_of([&] { read_mesh(quads); }).find("face 2 (line 6) as face 1 (line 5); --repair drops it"),
+            std::string::npos);
+  const std::string ply = dir.write("pillow.ply",
+                                    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                    "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+                                    "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n");
+  EXPECT_EQ(error_of([&] { read_mesh(ply); }),
+            ply + ": 1 duplicate face (on the vertices of an earlier one), face 1 as face 0; --repair drops it")
+      << "PLY numbers its elements from 0, without lines";
 }
 
 }  // namespace
