@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <functional>
 #include <numeric>
 #include <unordered_map>
@@ -38,10 +40,18 @@ struct CellKey {
   double x, y, z;
   bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
 };
+// The cell indices' bits mixed as splitmix64 does: a few multiplications, no byte-wise hashing.
 struct CellHash {
+  static uint64_t bits(double x) {
+    uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  }
   size_t operator()(const CellKey& k) const {
-    const std::hash<double> h;
-    return h(k.x) ^ (h(k.y) * 0x9E3779B97F4A7C15ull) ^ (h(k.z) * 0xC2B2AE3D27D4EB4Full);
+    uint64_t h = bits(k.x) ^ (bits(k.y) * 0x9E3779B97F4A7C15ull) ^ (bits(k.z) * 0xC2B2AE3D27D4EB4Full);
+    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+    h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+    return size_t(h ^ (h >> 31));
   }
 };
 
@@ -119,8 +129,10 @@ private:
     face_origin_ = std::move(origin);
   }
 
-  // Vertices within the tolerance of one another (through a uniform grid of cells of that size) are
-  // welded to the lowest index of their cluster.
+  // Vertices within the tolerance of one another (through a uniform grid of cells of four times that
+  // size: a vertex looks into a neighbouring cell only along the axes where it lies within the
+  // tolerance of its cell's side, about 3 cells rather than 27) are welded to the lowest index of their
+  // cluster.
   void weld() {
     const auto& p = soup_.positions;
     welded_away_.assign(p.size(), 0);
@@ -132,7 +144,8 @@ private:
     }
     const double diagonal = (hi - lo).norm();
     tolerance_ = std::max(0.0, options_.weld_tolerance) * diagonal;
-    const double cell = tolerance_ > 0 ? tolerance_ : diagonal > 0 ? 1e-6 * diagonal : 1.0;
+    const double cell = tolerance_ > 0 ? 4 * tolerance_ : diagonal > 0 ? 1e-6 * diagonal : 1.0;
+    const double reach = tolerance_ > 0 ? 0.25 + 1e-6 : 0.0;  // the tolerance in cells, rounding allowed for
     const auto key_of = [&](const Vec3& x) {
       const Vec3 c = ((x - lo) / cell).array().floor();
       return CellKey{c.x(), c.y(), c.z()};
@@ -144,9 +157,15 @@ private:
     const double tolerance2 = tolerance_ * tolerance_;
     for (int v = 0; v < int(p.size()); ++v) {
       const CellKey k = key_of(p[size_t(v)]);
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
+      const Vec3 in_cell = (p[size_t(v)] - lo) / cell - Vec3(k.x, k.y, k.z);  // each in [0, 1)
+      int from[3], to[3];
+      for (int a = 0; a < 3; ++a) {
+        from[a] = in_cell[a] < reach ? -1 : 0;
+        to[a] = in_cell[a] > 1 - reach ? 1 : 0;
+      }
+      for (int dx = from[0]; dx <= to[0]; ++dx)
+        for (int dy = from[1]; dy <= to[1]; ++dy)
+          for (int dz = from[2]; dz <= to[2]; ++dz) {
             const auto it = head.find({k.x + dx, k.y + dy, k.z + dz});
             if (it == head.end()) continue;
             for (int u = it->second; u >= 0; u = next_in_cell[size_t(u)])
@@ -232,22 +251,47 @@ private:
     });
   }
 
-  // Faces on the same vertex set as an earlier one, found by a hash of the sorted set.
+  // Faces on the same vertex set as an earlier one.
   void drop_duplicate_faces() {
-    std::unordered_multimap<uint64_t, std::pair<std::vector<int>, int>> seen;  // hash → (sorted set, face)
-    seen.reserve(size_t(soup_.faces.n_faces()));
-    filter_faces([&](int f, std::vector<int>& corners, std::vector<std::vector<int>>& pieces) {
-      std::vector<int> set = corners;
-      std::sort(set.begin(), set.end());
-      uint64_t hash = 1469598103934665603ull;
-      for (const int v : set) hash = (hash ^ uint64_t(uint32_t(v))) * 1099511628211ull;
-      const auto [begin, end] = seen.equal_range(hash);
-      for (auto it = begin; it != end; ++it)
-        if (it->second.first == set) {
-          found(Defect::duplicate_faces, {file_face(f), file_face(it->second.second)});
-          return;
+    const PolygonTopology& t = soup_.faces;
+    const int n = t.n_faces();
+    std::vector<int> set, other;
+    const auto sorted_set = [&](int f, std::vector<int>& out) {
+      out.assign(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
+      std::sort(out.begin(), out.end());
+    };
+    // The faces sorted by a hash of their sorted vertex set (ties by index): equal sets fall in one run,
+    // where each face is compared with the earlier ones kept.
+    std::vector<uint64_t> hash(static_cast<size_t>(n));
+    for (int f = 0; f < n; ++f) {
+      sorted_set(f, set);
+      uint64_t h = 1469598103934665603ull;
+      for (const int v : set) h = (h ^ uint64_t(uint32_t(v))) * 1099511628211ull;
+      hash[size_t(f)] = h;
+    }
+    std::vector<int> order(static_cast<size_t>(n)), duplicate_of(static_cast<size_t>(n), -1);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      return hash[size_t(a)] != hash[size_t(b)] ? hash[size_t(a)] < hash[size_t(b)] : a < b;
+    });
+    for (size_t i = 0, j = 0; i < order.size(); i = j) {
+      for (j = i + 1; j < order.size() && hash[size_t(order[j])] == hash[size_t(order[i])];) ++j;
+      for (size_t k = i + 1; k < j; ++k) {
+        sorted_set(order[k], set);
+        for (size_t l = i; l < k; ++l) {
+          if (duplicate_of[size_t(order[l])] >= 0) continue;
+          sorted_set(order[l], other);
+          if (other != set) continue;
+          duplicate_of[size_t(order[k])] = order[l];
+          break;
         }
-      seen.emplace(hash, std::make_pair(std::move(set), f));
+      }
+    }
+    filter_faces([&](int f, std::vector<int>& corners, std::vector<std::vector<int>>& pieces) {
+      if (duplicate_of[size_t(f)] >= 0) {
+        found(Defect::duplicate_faces, {file_face(f), file_face(duplicate_of[size_t(f)])});
+        return;
+      }
       pieces.push_back(std::move(corners));
     });
   }
@@ -262,21 +306,33 @@ private:
     std::vector<int> corner_face(n_corners);
     for (int f = 0; f < t.n_faces(); ++f)
       for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) corner_face[size_t(k)] = f;
-    std::unordered_map<uint64_t, int> edge_of;
-    edge_of.reserve(n_corners);
-    std::vector<int> corner_edge(n_corners), edge_offsets{0};
+    // The corners sorted by their edge's (lower, higher) vertex, each edge's in corner order: two
+    // stable counting passes (by the higher vertex, then the lower), linear whatever the valence.
+    std::vector<int> low(n_corners), high(n_corners);
     for (size_t k = 0; k < n_corners; ++k) {
       const int a = t.verts[k], b = t.verts[size_t(next_corner(corner_face[k], int(k)))];
-      const auto [it, inserted] = edge_of.try_emplace(edge_key(a, b), int(edge_offsets.size()) - 1);
-      if (inserted) edge_offsets.push_back(0);
-      corner_edge[k] = it->second;
-      ++edge_offsets[size_t(it->second) + 1];
+      low[k] = std::min(a, b);
+      high[k] = std::max(a, b);
     }
-    edge_of = {};
+    std::vector<int> edge_corners(n_corners), by_high(n_corners);
+    const auto counting_sort = [&](const std::vector<int>& digit, const auto& in, std::vector<int>& out) {
+      std::vector<int> next(soup_.positions.size() + 1, 0);
+      for (size_t i = 0; i < n_corners; ++i) ++next[size_t(digit[size_t(in(i))]) + 1];
+      for (size_t v = 1; v < next.size(); ++v) next[v] += next[v - 1];
+      for (size_t i = 0; i < n_corners; ++i) out[size_t(next[size_t(digit[size_t(in(i))])]++)] = in(i);
+    };
+    counting_sort(high, [](size_t i) { return int(i); }, by_high);
+    counting_sort(low, [&](size_t i) { return by_high[i]; }, edge_corners);
+    by_high = {};
+    std::vector<int> edge_offsets{0};
+    for (size_t i = 1; i <= n_corners; ++i) {
+      const int k = edge_corners[i - 1];
+      if (i == n_corners || low[size_t(edge_corners[i])] != low[size_t(k)] || high[size_t(edge_corners[i])] != high[size_t(k)])
+        edge_offsets.push_back(int(i));
+    }
+    low = {};
+    high = {};
     const int n_edges = int(edge_offsets.size()) - 1;
-    for (int e = 0; e < n_edges; ++e) edge_offsets[size_t(e) + 1] += edge_offsets[size_t(e)];
-    std::vector<int> edge_corners(n_corners), fill(edge_offsets.begin(), edge_offsets.end() - 1);
-    for (size_t k = 0; k < n_corners; ++k) edge_corners[size_t(fill[size_t(corner_edge[k])]++)] = int(k);
     pair_.assign(n_corners, -1);
     std::vector<char> fin_vertex(soup_.positions.size(), 0);
     for (int e = 0; e < n_edges; ++e) {
