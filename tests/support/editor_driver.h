@@ -1,6 +1,7 @@
 #pragma once
 // Driving gpsurf-editor in a real window by an events file (ui/event_script.h), from a test folder
 // that is also its configuration folder (XDG_CONFIG_HOME): recent files and settings stay there.
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -68,6 +69,23 @@ inline float box_side_holding(const Viewport& view, glm::vec2 corner, const Cova
          vertices_in_box(view.camera, view.width, view.height, corner, corner + side, mesh).size() < count)
     side += 1.0f;
   return side;
+}
+
+/// A box corner near `near` (tried outward on a 4-pixel grid, up to 40 pixels away) and the side at
+/// which its square box first holds exactly `count` vertices: where several vertices enter a box at
+/// once, a neighbouring corner is taken.
+inline std::pair<glm::vec2, float> box_holding(const Viewport& view, glm::vec2 near, const CovarianceMesh& mesh,
+                                               size_t count) {
+  for (int ring = 0; ring <= 10; ++ring)
+    for (int dy = -ring; dy <= ring; ++dy)
+      for (int dx = -ring; dx <= ring; ++dx) {
+        if (std::max(std::abs(dx), std::abs(dy)) != ring) continue;
+        const glm::vec2 corner = near + 4.0f * glm::vec2(float(dx), float(dy));
+        const float side = box_side_holding(view, corner, mesh, count);
+        if (vertices_in_box(view.camera, view.width, view.height, corner, corner + side, mesh).size() == count)
+          return {corner, side};
+      }
+  return {near, box_side_holding(view, near, mesh, count)};
 }
 
 inline std::string point(glm::vec2 p) { return "[" + std::to_string(p.x) + ", " + std::to_string(p.y) + "]"; }

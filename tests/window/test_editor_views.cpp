@@ -111,8 +111,7 @@ TEST_F(EditorViews, TheStatisticsOverlayKeepsClearOfTheGizmo) {
 TEST_F(EditorViews, TheGizmoOfAMultiSelectionAtItsCentroid) {
   use_mesh(make_sample("torus"));
   const Viewport view = editor_view(original_);
-  const glm::vec2 corner(430.0f, 330.0f);
-  const float side = test::box_side_holding(view, corner, original_, 12);
+  const auto [corner, side] = test::box_holding(view, glm::vec2(205.0f, 318.0f), original_, 12);
   const std::vector<int> selected =
       vertices_in_box(view.camera, view.width, view.height, corner, corner + side, original_);
   ASSERT_EQ(selected.size(), 12u);
@@ -162,7 +161,7 @@ TEST_F(EditorViews, OnALargeMeshOnlyTheSelectionsNeighbourhoodHasEllipsoids) {
     int count = 0;
     float farthest = 0.0f;
     for (int y = 30; y < kHeight - 30; ++y)
-      for (int x = 300; x < 640; ++x) {  // the view between the statistics and the panels
+      for (int x = 0; x < int(test::editor_free_region().second.x); ++x) {  // the view left of the panels
         const glm::vec3 c = colour_at(shot, glm::vec2(x, y));
         if (glm::length(c - glm::vec3(0.15f, 0.35f, 0.85f)) > 0.06f) continue;
         ++count;
@@ -178,7 +177,9 @@ TEST_F(EditorViews, OnALargeMeshOnlyTheSelectionsNeighbourhoodHasEllipsoids) {
   const auto [few_count, few_reach] = blue("ellipsoids_neighbourhood.png");
   const auto [all_count, all_reach] = blue("ellipsoids_all.png");
   EXPECT_GT(few_count, 30);
-  EXPECT_LT(few_reach, 60.0f) << "an ellipsoid far from the selected vertex";
+  // Within about a third of the sphere's radius on screen (its poles' distance halved).
+  const float radius = 0.5f * glm::length(pixel_of(view, Vec3(0, 1, 0)) - pixel_of(view, Vec3(0, -1, 0)));
+  EXPECT_LT(few_reach, 0.35f * radius) << "an ellipsoid far from the selected vertex";
   EXPECT_GT(all_count, 10 * few_count);
   EXPECT_GT(all_reach, 120.0f);
 }
