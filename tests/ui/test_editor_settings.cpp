@@ -27,6 +27,28 @@ TEST(EditorSettings, ThePivotAndTheEllipsoidScopeAreKept) {
   EXPECT_TRUE(read.draw.ellipsoids);
 }
 
+// The up axis is kept per mesh file; one out of range is clamped, one of the wrong type reported.
+TEST(EditorSettings, TheUpAxisIsKeptPerFile) {
+  const test::TempDir dir;
+  ViewOptions view;
+  ReachOptions reach;
+  view.up_axes["/scans/a.ply"] = 2;
+  view.up_axes["/scans/b.obj"] = 0;
+  ASSERT_EQ(save_settings(dir.path().string(), view, reach), "");
+  ViewOptions read;
+  ASSERT_EQ(load_settings(dir.path().string(), read, reach), "");
+  EXPECT_EQ(read.up_axes, view.up_axes);
+  dir.write("settings.json", R"({"up_axes": {"/a.ply": 5, "/b.ply": -1}})");
+  ViewOptions clamped;
+  ASSERT_EQ(load_settings(dir.path().string(), clamped, reach), "");
+  EXPECT_EQ(clamped.up_axes.at("/a.ply"), 2);
+  EXPECT_EQ(clamped.up_axes.at("/b.ply"), 0);
+  dir.write("settings.json", R"({"up_axes": {"/a.ply": "z"}})");
+  ViewOptions typed;
+  EXPECT_NE(load_settings(dir.path().string(), typed, reach).find("'up_axes'"), std::string::npos);
+  EXPECT_TRUE(typed.up_axes.empty());
+}
+
 TEST(EditorSettings, OutOfRangeChoicesAreClampedAndAWrongTypeReported) {
   const test::TempDir dir;
   dir.write("settings.json", R"({"pivot": 7, "ellipsoid_scope": -3})");
