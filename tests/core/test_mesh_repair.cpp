@@ -3,7 +3,9 @@
 // once each way), closed where it should be.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
+#include <random>
 #include <set>
 
 #include "core/io/mesh_repair.h"
@@ -122,6 +124,26 @@ TEST(MeshRepair, WeldToleranceIsSettable) {
   RepairOptions o;
   o.weld_tolerance = 1e-3;  // 1.4e-3 with the diagonal of 1.41
   EXPECT_EQ(diagnose_polygon_soup(s, o).count(Defect::coincident_vertices), 2);
+}
+
+// Pairs of vertices within the tolerance of each other, in random directions and places (so that many
+// straddle the sides of the weld's grid cells), each pair far from the others: every pair is welded,
+// and no two pairs are.
+TEST(MeshRepair, WeldFindsEveryPairWithinTheToleranceWhereverItLies) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 1, 1)};  // the bounding box: the tolerance is 1e-6 √3
+  const double tolerance = 1e-6 * std::sqrt(3.0);
+  constexpr int n = 2000;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 at = Vec3(0.5, 0.5, 0.5) + 0.45 * Vec3(unit(random), unit(random), unit(random));
+    Vec3 direction(unit(random), unit(random), unit(random));
+    p.push_back(at);
+    p.push_back(at + 0.99 * tolerance * direction.normalized());
+  }
+  const RepairReport r = diagnose_polygon_soup(soup_of(p, {{0, 1, 2}}));
+  EXPECT_EQ(r.count(Defect::coincident_vertices), 2 * n);
+  EXPECT_EQ(r.welded_groups, n);
 }
 
 TEST(MeshRepair, PinchVertexOfTwoTetrahedraIsSplit) {
