@@ -266,8 +266,7 @@ void EditorApp::draw_ui() {
     if (c.matcap) renderer_->set_matcap(load_matcap(view_.matcap));
     if (c.up_axis) {
       if (!document_.source_path().empty()) view_.up_axes[document_.source_path()] = view_.up_axis;
-      camera_.up_axis = view_.up_axis;
-      frame_vertices({});
+      frame_first_view();
     }
     if (c.load_matcap) {
       browser_purpose_ = BrowserPurpose::load_matcap;
