@@ -116,9 +116,11 @@ void print_info(const std::string& path, const RepairArguments& repair) {
             << " semi-sharp, " << sharp_corners << " infinitely sharp)\n";
   if (diagnosis.changed()) {
     const ElementNumbering numbering = element_numbering_for(path, diagnosis);
-    print_problems(diagnosis.problems(numbering, false),
-                   "read as they are (--repair mends them; vertices and faces numbered from " +
-                       std::to_string(numbering.base) + ")");
+    // Classes that refuse a mesh can show up here where the weld makes them (an unwelded soup).
+    std::vector<std::string> lines = diagnosis.problems(numbering, true);
+    for (std::string& line : diagnosis.problems(numbering, false)) lines.push_back(std::move(line));
+    print_problems(lines, "read as they are (--repair mends them; vertices and faces numbered from " +
+                              std::to_string(numbering.base) + ")");
     std::cout << "after --repair: " << repaired_shape << "\n";
   }
 }
