@@ -11,9 +11,10 @@ namespace gps {
 namespace {
 glm::dvec3 as_dvec3(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
-// Patches captured at a time, and the level for a mesh of n patches: a few million vertices at most.
+// Patches captured at a time, and the level for a mesh of n patches: finer for the few large patches
+// of a small mesh (whose silhouette bulges between corners), the corners alone past 16,384 patches.
 constexpr int kPatchesPerCapture = 8192;
-float framing_level(int n_patches) { return n_patches <= 40000 ? 4.0f : n_patches <= 160000 ? 2.0f : 1.0f; }
+float framing_level(int n_patches) { return n_patches <= 4096 ? 4.0f : n_patches <= 16384 ? 2.0f : 1.0f; }
 }  // namespace
 
 std::vector<glm::dvec3> framing_points(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const DrawOptions& o) {
