@@ -25,10 +25,7 @@ inline std::string random_events(const CovarianceMesh& mesh, const SoakSettings&
   std::mt19937 rng(seed);
   const auto uniform = [&rng](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
   const auto pick = [&rng](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
-  Viewport view;
-  view.camera = frame_mesh(mesh);
-  view.width = s.width;
-  view.height = s.height;
+  const Viewport view = editor_view(mesh, s.width, s.height);  // the editor's first view, beside its panels
   // Anywhere in the window below the menu bar (a click on File > Quit would end the session early).
   const auto anywhere = [&] { return glm::vec2(float(uniform(0, s.width - 1)), float(uniform(24, s.height - 1))); };
   const auto jitter = [&](glm::vec2 p, float r) { return p + glm::vec2(float(uniform(-r, r)), float(uniform(-r, r))); };
