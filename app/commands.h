@@ -14,4 +14,5 @@ void add_diff_command(CLI::App& app);
 void add_edit_command(CLI::App& app);
 void add_simplify_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
+void add_fit_command(CLI::App& app);
 }  // namespace gps

@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   gps::add_tessellate_command(app);
   gps::add_simplify_command(app);
   gps::add_compare_command(app);
+  gps::add_fit_command(app);
 #ifdef GPSURF_WITH_GL
   gps::add_bench_command(app);
   gps::add_render_command(app);

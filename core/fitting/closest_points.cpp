@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>

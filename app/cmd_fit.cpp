@@ -1,0 +1,80 @@
+// gpsurf fit COARSE --target DENSE -o OUT: the coarse covariance mesh's means and covariances moved so
+// that its GPS limit surface fits the dense mesh's points (core/fitting/limit_fit.h).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "app/commands.h"
+#include "app/naming_input.h"
+#include "app/plan_arguments.h"
+#include "app/repair_arguments.h"
+#include "core/fitting/limit_fit.h"
+#include "core/fitting/surface_distance.h"
+#include "core/io/mesh_io.h"
+
+namespace gps {
+
+void add_fit_command(CLI::App& app) {
+  struct Args {
+    std::string coarse, target, output;
+    int iterations = 10, level = 8;
+    double smoothness = 1e-3;
+    bool plain = false, ascii = false;
+    PlanArguments plans;
+    RepairArguments repair;
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = app.add_subcommand(
+      "fit",
+      "Fit a coarse covariance mesh's limit surface to a dense mesh's vertices (or a point cloud's points): "
+      "Levenberg-Marquardt on the squared distances to their closest limit points, moving means and "
+      "covariances; then report the distances as compare does");
+  cmd->add_option("coarse", args->coarse, "covariance mesh to fit (its Gaussians are the start)")->required();
+  cmd->add_option("-t,--target", args->target, "mesh or point-cloud PLY whose vertices the surface is fitted to")
+      ->required();
+  cmd->add_option("-o,--output", args->output, "output covariance PLY")->required();
+  cmd->add_option("--iterations", args->iterations, "Levenberg-Marquardt iterations (default 10)")
+      ->check(CLI::Range(0, 1000));
+  cmd->add_flag("--plain", args->plain,
+                "fit the means only, every covariance the same isotropic one (ordinary subdivision-surface fitting)");
+  cmd->add_option("--smoothness", args->smoothness,
+                  "weight of the smoothness term against the mean squared distance (default 0.001)")
+      ->check(CLI::Range(0.0, 1e6));
+  auto* level = cmd->add_option("--level", args->level,
+                                "tessellation level of the limit surface the final report measures (0: no report; "
+                                "default 8, lower where that would make more than 2 million triangles)")
+                    ->check(CLI::Range(0, 64));
+  cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
+  add_plan_arguments(cmd, args->plans);
+  add_repair_arguments(cmd, args->repair);
+  cmd->callback([args, level] {
+    const CovarianceMesh coarse = read_mesh_repairing(args->coarse, args->repair);
+    bool has_covariances = false;
+    const std::vector<Vec3> targets = read_polygon_soup(args->target, has_covariances).positions;
+    if (targets.empty()) throw Error(escaped(args->target) + ": has no vertices to fit to");
+    FitOptions options;
+    options.iterations = args->iterations;
+    options.plain = args->plain;
+    options.smoothness = args->smoothness;
+    options.plans = args->plans.options();
+    options.progress = [](const FitIteration& it) {
+      std::printf("iteration %d: rms %.3e, max %.3e (of the diagonal), %.2f s\n", it.iteration,
+                  it.error.relative_rms(), it.error.relative_max(), it.seconds);
+      std::fflush(stdout);
+    };
+    std::cout << "fitting " << coarse.n_vertices() << " vertices" << (args->plain ? " (plain)" : "") << " to "
+              << targets.size() << " points\n";
+    const FitResult result = naming_input(args->coarse, [&] { return fit_limit_surface(coarse, targets, options); });
+    write_mesh(args->output, result.mesh, !args->ascii);
+    std::cout << "wrote " << args->output << "\n";
+    if (args->level == 0) return;
+    const LimitTriangles limit = naming_input(args->output, [&] {
+      return limit_surface_triangles(result.mesh, args->level, options.plans,
+                                     level->count() > 0 ? INFINITY : kMeasuredTriangles);
+    });
+    std::cout << "target points to the fitted limit surface (level " << limit.level << "):\n"
+              << describe(distances_to_surface(targets, limit.triangles));
+  });
+}
+
+}  // namespace gps
