@@ -53,10 +53,11 @@ void print_info(const std::string& path, const RepairArguments& repair) {
     if (options.repair) return read_mesh_repairing(path, repair);
     bool has_covariances = false;
     PolygonSoup soup = read_polygon_soup(path, has_covariances);
-    {
+    if (soup.faces.n_faces() > 0) {  // else refused as it is: no surface to diagnose
       PolygonSoup repaired = soup;
       diagnosis = repair_polygon_soup(repaired, repair_options_for(options));
-      if (diagnosis.changed()) repaired_shape = after_repair(repaired, diagnosis);
+      if (diagnosis.changed() || diagnosis.count(Defect::unorientable_parts) > 0)
+        repaired_shape = after_repair(repaired, diagnosis);
     }
     const size_t n_vertices = soup.positions.size();
     const int n_faces = soup.faces.n_faces();

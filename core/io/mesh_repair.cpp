@@ -67,6 +67,8 @@ public:
     std::iota(vertex_origin_.begin(), vertex_origin_.end(), 0);
     face_origin_.resize(size_t(soup_.faces.n_faces()));
     std::iota(face_origin_.begin(), face_origin_.end(), 0);
+    in_file_face_.assign(size_t(n), 0);
+    for (const int v : soup_.faces.verts) in_file_face_[size_t(v)] = 1;
     weld();
     mend_repeated_corners();
     drop_zero_area_faces();
@@ -85,6 +87,7 @@ private:
   std::vector<int> vertex_origin_;  // per vertex: the vertex of the file it is (a copy's original)
   std::vector<int> face_origin_;    // per face: the face of the file it comes from
   std::vector<char> welded_away_;   // per vertex of the file: merged into a lower one
+  std::vector<char> in_file_face_;  // per vertex of the file: used by a face of the file
   std::vector<int> weld_root_;      // per vertex of the file: the vertex it was welded to (itself if none)
   std::vector<int> pair_;           // per corner: the corner across its edge (to the next corner), or −1
   std::vector<char> flip_;          // per face: reversed by orient()
@@ -469,7 +472,8 @@ private:
     }
   }
 
-  // Vertices no face uses are dropped (welded ones are not counted again); the rest are compacted,
+  // Vertices no face uses are dropped, counted as isolated where no face of the file used them, else
+  // as left without faces by the repair (welded ones are not counted again); the rest are compacted,
   // copies after the vertices of the file, each with its original's position and covariance.
   void drop_isolated_vertices() {
     const size_t n = vertex_origin_.size(), n_file = soup_.positions.size();
@@ -481,7 +485,11 @@ private:
     const bool has_covariances = !soup_.covariances.empty();
     for (size_t v = 0; v < n; ++v) {
       if (!used[v]) {
-        if (v < n_file && !welded_away_[v]) found(Defect::isolated_vertices, {int(v)});
+        if (v >= n_file || welded_away_[v]) continue;
+        if (in_file_face_[v])
+          ++report_.orphaned_vertices;
+        else
+          found(Defect::isolated_vertices, {int(v)});
         continue;
       }
       index[v] = int(positions.size());
@@ -569,6 +577,8 @@ std::vector<std::string> RepairReport::lines() const {
     out.push_back(plural(n(Defect::unorientable_parts), "part cannot", "parts cannot") + " be oriented (Möbius-like)");
   if (n(Defect::isolated_vertices))
     out.push_back("dropped " + plural(n(Defect::isolated_vertices), "isolated vertex", "isolated vertices"));
+  if (orphaned_vertices)
+    out.push_back("dropped " + plural(orphaned_vertices, "vertex", "vertices") + " left in no face");
   if (dropped_creases)
     out.push_back("dropped " + plural(dropped_creases, "crease", "creases") + " no longer on an edge");
   return out;
@@ -589,7 +599,7 @@ constexpr DefectWords kDefectWords[kDefectCount] = {
     {"zero-area face", "zero-area faces", "--repair drops it", "--repair drops them"},
     {"duplicate face (on the vertices of an earlier one)", "duplicate faces (on the vertices of an earlier one)",
      "--repair drops it", "--repair drops them"},
-    {"edge with more than two faces (a fin)", "edges with more than two faces (fins)",
+    {"non-manifold edge (a fin: more than two faces)", "non-manifold edges (fins: more than two faces)",
      "--repair gives the extra faces their own vertices", "--repair gives the extra faces their own vertices"},
     {"non-manifold (pinch) vertex", "non-manifold (pinch) vertices", "--repair splits it", "--repair splits them"},
     {"face oriented against its neighbours", "faces oriented against their neighbours", "--repair flips it",

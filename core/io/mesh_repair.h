@@ -47,7 +47,7 @@ enum class Defect {
   pinch_vertices,       // vertices where several fans of faces meet (one copy per fan)
   flipped_faces,        // faces oriented against their part (flipped)
   unorientable_parts,   // parts that no flipping can orient (Möbius-like; left as they are)
-  isolated_vertices,    // vertices without faces (dropped)
+  isolated_vertices,    // vertices no face of the file uses (dropped)
 };
 inline constexpr int kDefectCount = 10;
 
@@ -72,6 +72,7 @@ struct RepairReport {
   int pinch_copies = 0;     // vertex copies made for the extra fans of pinch vertices
   int parts = 0;            // connected parts of the result
   int boundary_loops = -1;  // of the result; −1 where a part cannot be oriented
+  int orphaned_vertices = 0;  // vertices of faces the repair dropped, left in none (dropped)
   int dropped_creases = 0;  // creases of the file on no edge of the result (welded onto one vertex, say)
 
   int count(Defect d) const { return counts[size_t(d)]; }

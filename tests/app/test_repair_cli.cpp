@@ -108,8 +108,8 @@ std::vector<Case> cases() {
            {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 0, 0), Vec3(-1, 0, 1), Vec3(-1, 0, 0), Vec3(0, 1, 1),
             Vec3(0, 1, 0)},
            {{0, 1, 2, 3}, {0, 1, 6, 7}, {1, 0, 5, 4}},
-           "1 edge with more than two faces (a fin), the edge of vertex 1 (line 1) and vertex 2 (line 2) with 3 "
-           "faces; --repair gives the extra faces their own vertices",
+           "1 non-manifold edge (a fin: more than two faces), the edge of vertex 1 (line 1) and vertex 2 (line 2) "
+           "with 3 faces; --repair gives the extra faces their own vertices",
            "repair: separated 1 face from 1 edge with more than two faces (2 vertex copies)\n",
            10,
            3,
@@ -137,7 +137,7 @@ std::vector<Case> cases() {
            "1 degenerate face (fewer than 3 distinct corners), face 5 (line 10); --repair drops it; 1 duplicate "
            "face (on the vertices of an earlier one), face 3 (line 8) as face 1 (line 6); --repair drops it",
            "repair: dropped 1 degenerate face (fewer than 3 distinct corners)\nrepair: dropped 1 zero-area face\n"
-           "repair: dropped 1 duplicate face\nrepair: dropped 1 isolated vertex\n",
+           "repair: dropped 1 duplicate face\nrepair: dropped 1 vertex left in no face\n",
            4,
            2,
            4};
@@ -194,7 +194,7 @@ std::vector<Case> cases() {
            {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0.5, 0, 0)},
            {{0, 1, 2}, {0, 2, 3}, {0, 4, 1}},
            "",
-           "repair: dropped 1 zero-area face\nrepair: dropped 1 isolated vertex\n",
+           "repair: dropped 1 zero-area face\nrepair: dropped 1 vertex left in no face\n",
            4,
            2,
            4};
@@ -279,15 +279,15 @@ TEST(RepairCli, InfoListsEveryProblemAndExitsOne) {
   for (const char* line :
        {"refused for (vertices and faces numbered from 1):\n",
         "  duplicate faces (on the vertices of an earlier one): 1 (face 9 (line 18) as face 8 (line 17))\n",
-        "  edges with more than two faces (fins): 1 (the edge of vertex 2 (line 2) and vertex 3 (line 3) with 3 "
-        "faces)\n",
+        "  non-manifold edges (fins: more than two faces): 1 (the edge of vertex 2 (line 2) and vertex 3 (line 3) "
+        "with 3 faces)\n",
         "  non-manifold (pinch) vertices: 1 (vertex 1 (line 1) with 2 fans)\n",
         "  faces oriented against their neighbours: 1 (face 6 (line 15))\n",
         "also:\n  isolated vertices (in no face): 1 (vertex 8 (line 8))\n",
         "after --repair: 3 parts, 1 boundary loop, genus 0, scheme Loop\n",
         ": 1 duplicate face (on the vertices of an earlier one), face 9 (line 18) as face 8 (line 17); --repair "
-        "drops it; 1 edge with more than two faces (a fin), the edge of vertex 2 (line 2) and vertex 3 (line 3) "
-        "with 3 faces; --repair gives the extra faces their own vertices; 1 non-manifold (pinch) vertex, vertex 1 "
+        "drops it; 1 non-manifold edge (a fin: more than two faces), the edge of vertex 2 (line 2) and vertex 3 "
+        "(line 3) with 3 faces; --repair gives the extra faces their own vertices; 1 non-manifold (pinch) vertex, vertex 1 "
         "(line 1) with 2 fans; --repair splits it; 1 face oriented against its neighbours, face 6 (line 15); "
         "--repair flips it\n"})
     EXPECT_NE(r.output.find(line), std::string::npos) << line << " in\n" << r.output;
