@@ -18,7 +18,7 @@ void add_fit_command(CLI::App& app) {
   struct Args {
     std::string coarse, target, output;
     int iterations = 10, level = 8;
-    double smoothness = 1e-3;
+    double smoothness = 1e-5;
     bool plain = false, ascii = false;
     PlanArguments plans;
     RepairArguments repair;
@@ -38,7 +38,7 @@ void add_fit_command(CLI::App& app) {
   cmd->add_flag("--plain", args->plain,
                 "fit the means only, every covariance the same isotropic one (ordinary subdivision-surface fitting)");
   cmd->add_option("--smoothness", args->smoothness,
-                  "weight of the smoothness term against the mean squared distance (default 0.001)")
+                  "weight of the smoothness term against the mean squared distance (default 1e-5)")
       ->check(CLI::Range(0.0, 1e6));
   auto* level = cmd->add_option("--level", args->level,
                                 "tessellation level of the limit surface the final report measures (0: no report; "

@@ -23,7 +23,7 @@ struct FitOptions {
   /// the means (ordinary subdivision-surface fitting).
   bool plain = false;
   /// Weight of the smoothness term (the Laplacian of the vertices' changes) against the mean squared distance.
-  double smoothness = 1e-3;
+  double smoothness = 1e-5;
   /// Tessellation level of the limit surface that the closest points are first found on.
   int correspondence_level = 6;
   PlanOptions plans;

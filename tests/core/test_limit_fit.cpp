@@ -1,0 +1,211 @@
+// Fitting a GPS limit surface to points: the limit weights against the evaluator, and fits of a block
+// with sharp edges, a bumpy sphere and a noisy one, simplified and fitted (plain and GPS).
+#include <gtest/gtest.h>
+
+#include <omp.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "core/evaluation/patch_eval.h"
+#include "core/fitting/closest_points.h"
+#include "core/fitting/limit_fit.h"
+#include "core/fitting/limit_weights.h"
+#include "core/fitting/mesh_simplification.h"
+#include "core/fitting/surface_distance.h"
+#include "core/mesh/dual_map.h"
+#include "core/mesh/samples.h"
+#include "core/plans/stencil_table.h"
+
+namespace gps {
+namespace {
+
+/// A cube [−1, 1]³'s faces as n × n grids of triangles, welded; `shape` maps each point.
+template <class Shape>
+CovarianceMesh cube_surface(int n, Shape shape) {
+  std::map<std::array<int, 3>, int> index;
+  std::vector<Vec3> points;
+  std::vector<std::vector<int>> faces;
+  const auto vertex = [&](const std::array<int, 3>& key) {
+    const auto [it, added] = index.try_emplace(key, int(points.size()));
+    if (added) points.push_back(shape(Vec3(key[0], key[1], key[2]) / n - Vec3::Ones()));
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (const int side : {0, 2 * n})
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          int q[4];
+          const int corners[4][2] = {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}};
+          for (int c = 0; c < 4; ++c) {
+            std::array<int, 3> key;
+            key[size_t(axis)] = 2 * corners[c][0];
+            key[size_t((axis + 1) % 3)] = 2 * corners[c][1];
+            key[size_t((axis + 2) % 3)] = side;
+            q[c] = vertex(key);
+          }
+          if (side == 0) std::swap(q[1], q[3]);
+          faces.push_back({q[0], q[1], q[2]});
+          faces.push_back({q[0], q[2], q[3]});
+        }
+  return make_covariance_mesh(points, std::vector<Mat3>(points.size(), Mat3::Identity()), faces);
+}
+
+CovarianceMesh block(int n) {
+  return cube_surface(n, [](const Vec3& p) { return Vec3(p.cwiseProduct(Vec3(1.0, 0.6, 0.4))); });
+}
+
+CovarianceMesh bumpy_sphere(int n, double noise = 0) {
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal(0, noise > 0 ? noise : 1);
+  return cube_surface(n, [&](const Vec3& p) {
+    const Vec3 d = p.normalized();
+    const double r = 1 + 0.08 * std::sin(5 * d[0]) * std::sin(4 * d[1] + 1) + 0.05 * std::cos(6 * d[2]);
+    Vec3 x = r * d;
+    if (noise > 0) x += Vec3(normal(random), normal(random), normal(random)) * noise;
+    return x;
+  });
+}
+
+/// Random Gaussians on a mesh's vertices: means as they are, random SPD covariances.
+CovarianceMesh with_random_gaussians(CovarianceMesh m) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (size_t i = 0; i < m.n_vertices(); ++i) {
+    Mat3 a;
+    for (int k = 0; k < 9; ++k) a(k / 3, k % 3) = u(random);
+    m.set_covariance(i, 0.01 * (a * a.transpose() + 0.2 * Mat3::Identity()));
+  }
+  return m;
+}
+
+void expect_weights_match_evaluator(const CovarianceMesh& m) {
+  const PlannedSurface surface(m, {});
+  const PatchPlans& plans = surface.tables().plans;
+  const std::vector<Dual> base = base_points(m);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int trial = 0; trial < 400; ++trial) {
+    const int patch = int(random() % unsigned(plans.n_patches()));
+    // Half of the samples close to a corner, where extraordinary nodes step past their tables.
+    double u = unit(random), v = unit(random);
+    if (trial % 2) u *= 1e-3, v *= 1e-3;
+    clamp_to_patch(plans.shape, u, v);
+    Dual q, q_u, q_v, w, w_u, w_v;
+    evaluate_dual(plans, surface.points(), patch, u, v, q, q_u, q_v);
+    const LimitWeights weights = limit_weights(plans, surface.tables().stencils, patch, u, v);
+    apply_limit_weights(weights, base, w, w_u, w_v);
+    double sum = 0;
+    for (const double x : weights.value) sum += x;
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+    const double scale = q.cwiseAbs().maxCoeff();
+    EXPECT_LT((w - q).cwiseAbs().maxCoeff(), 1e-12 * scale) << "patch " << patch << " at " << u << ", " << v;
+    EXPECT_LT((w_u - q_u).cwiseAbs().maxCoeff(), 1e-10 * scale);
+    EXPECT_LT((w_v - q_v).cwiseAbs().maxCoeff(), 1e-10 * scale);
+  }
+}
+
+TEST(LimitWeights, LoopMatchesTheEvaluator) { expect_weights_match_evaluator(with_random_gaussians(make_sample("icosphere", 320))); }
+
+TEST(LimitWeights, CatmullClarkMatchesTheEvaluator) {
+  expect_weights_match_evaluator(with_random_gaussians(make_sample("valence5")));
+  expect_weights_match_evaluator(with_random_gaussians(make_sample("cylinder")));
+}
+
+/// The coarse mesh's own triangles (piecewise linear), for the distance of the simplified mesh itself.
+TriangleMesh flat_triangles(const CovarianceMesh& m) {
+  TriangleMesh t;
+  t.positions = vertex_means(m);
+  for (const auto f : m.mesh.faces()) {
+    std::vector<int> c;
+    for (const auto v : m.mesh.fv_range(f)) c.push_back(v.idx());
+    for (size_t k = 1; k + 1 < c.size(); ++k) t.triangles.push_back({c[0], c[k], c[k + 1]});
+  }
+  return t;
+}
+
+struct FitFigures {
+  double simplified = 0, plain = 0, gps = 0;  // rms over the diagonal
+};
+
+FitResult fit(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, bool plain) {
+  FitOptions options;
+  options.iterations = 8;
+  options.plain = plain;
+  FitResult r = fit_limit_surface(coarse, targets, options);
+  for (size_t k = 1; k < r.iterations.size(); ++k)
+    EXPECT_LE(r.iterations[k].error.rms, r.iterations[k - 1].error.rms * (1 + 1e-9)) << "iteration " << k;
+  EXPECT_LT(r.iterations.back().error.rms, r.iterations.front().error.rms);
+  for (size_t i = 0; i < r.mesh.n_vertices(); ++i) EXPECT_TRUE(is_spd(r.mesh.covariance(i))) << "vertex " << i;
+  return r;
+}
+
+FitFigures fit_figures(const CovarianceMesh& dense, size_t vertices) {
+  SimplifyOptions s;
+  s.target_vertices = vertices;
+  const CovarianceMesh coarse = simplify_mesh(dense, s).mesh;
+  const std::vector<Vec3> targets = vertex_means(dense);
+  const auto measured = [&](const CovarianceMesh& m) {
+    return distances_to_surface(targets, limit_surface_triangles(m, 6).triangles).relative_rms();
+  };
+  FitFigures f;
+  f.simplified = distances_to_surface(targets, flat_triangles(coarse)).relative_rms();
+  f.plain = measured(fit(coarse, targets, true).mesh);
+  f.gps = measured(fit(coarse, targets, false).mesh);
+  std::printf("simplified %.3e, plain fit %.3e, GPS fit %.3e (rms over the diagonal)\n", f.simplified, f.plain, f.gps);
+  return f;
+}
+
+TEST(LimitFit, BlockWithSharpEdges) {
+  // The block's faces are flat, so the simplified mesh itself is exact; a smooth limit surface rounds
+  // its edges, the GPS limit much less than the plain one.
+  const FitFigures f = fit_figures(block(16), 200);
+  EXPECT_LT(f.gps, 0.5 * f.plain);
+}
+
+TEST(LimitFit, BumpySphere) {
+  const FitFigures f = fit_figures(bumpy_sphere(16), 200);
+  EXPECT_LT(f.gps, 0.8 * f.plain);
+  EXPECT_LT(f.plain, f.simplified);
+  EXPECT_LT(f.gps, 0.5 * f.simplified);
+}
+
+TEST(LimitFit, NoisyScan) {
+  const FitFigures f = fit_figures(bumpy_sphere(16, 0.003), 200);
+  EXPECT_LT(f.gps, 0.8 * f.plain);
+  EXPECT_LT(f.gps, f.simplified);
+}
+
+TEST(LimitFit, SameResultOnOneAndTwoThreads) {
+  const CovarianceMesh dense = bumpy_sphere(10);
+  SimplifyOptions s;
+  s.target_vertices = 100;
+  const CovarianceMesh coarse = simplify_mesh(dense, s).mesh;
+  FitOptions options;
+  options.iterations = 3;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const FitResult one = fit_limit_surface(coarse, vertex_means(dense), options);
+  omp_set_num_threads(2);
+  const FitResult two = fit_limit_surface(coarse, vertex_means(dense), options);
+  omp_set_num_threads(threads);
+  for (size_t i = 0; i < coarse.n_vertices(); ++i) {
+    EXPECT_EQ(one.mesh.mean(i), two.mesh.mean(i)) << "vertex " << i;
+    EXPECT_EQ(one.mesh.covariance(i), two.mesh.covariance(i)) << "vertex " << i;
+  }
+}
+
+TEST(LimitFit, PointsOnTheStartingSurfaceStayPut) {
+  // Targets sampled from the coarse mesh's own limit surface: the start fits them already.
+  const CovarianceMesh coarse = with_random_gaussians(make_sample("icosphere", 80));
+  const std::vector<Vec3> targets = limit_surface_triangles(coarse, 4).triangles.positions;
+  FitOptions options;
+  options.iterations = 2;
+  const FitResult r = fit_limit_surface(coarse, targets, options);
+  EXPECT_LT(r.iterations.front().error.relative_max(), 1e-9);
+  EXPECT_LT(r.iterations.back().error.relative_max(), 1e-9);
+}
+
+}  // namespace
+}  // namespace gps
