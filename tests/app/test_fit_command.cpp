@@ -1,0 +1,84 @@
+// gpsurf fit as a user runs it: a progress line per iteration, the final report, a readable result,
+// --plain, and errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+using test::gpsurf;
+using test::run_command;
+
+/// A sphere of radius 1 as an (n × n)-per-face cube of triangles, pushed out to the sphere.
+std::string sphere_obj(int n) {
+  std::ostringstream obj;
+  int count = 0;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const int side : {-1, 1}) {
+      const int first = count + 1;
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) {
+          double p[3];
+          p[axis] = side;
+          p[(axis + 1) % 3] = -1 + 2.0 * i / n;
+          p[(axis + 2) % 3] = -1 + 2.0 * j / n;
+          const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+          obj << "v " << p[0] / r << " " << p[1] / r << " " << p[2] / r << "\n";
+          ++count;
+        }
+      // Faces of one cube side only (not welded to the others): a point set is all the fit reads.
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          const int a = first + i * (n + 1) + j;
+          if (side > 0)
+            obj << "f " << a << " " << a + n + 1 << " " << a + n + 2 << "\nf " << a << " " << a + n + 2 << " " << a + 1 << "\n";
+          else
+            obj << "f " << a << " " << a + n + 2 << " " << a + n + 1 << "\nf " << a << " " << a + 1 << " " << a + n + 2 << "\n";
+        }
+    }
+  return obj.str();
+}
+
+TEST(FitCli, FitsAnIcosphereToSpherePointsWithProgressAndReport) {
+  test::TempDir dir;
+  const std::string target = dir.write("target.obj", sphere_obj(8));
+  const std::string coarse = dir.file("coarse.ply"), out = dir.file("fitted.ply");
+  ASSERT_EQ(run_command(gpsurf("sample icosphere --size 80 -o " + coarse)).exit_code, 0);
+  for (const std::string mode : {"", " --plain"}) {
+    const auto r = run_command(gpsurf("fit " + coarse + " --target " + target + " -o " + out + " --iterations 3" + mode));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("fitting 42 vertices"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("\niteration 0: rms "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("\niteration 1: rms "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("target points to the fitted limit surface (level "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("\nmax "), std::string::npos) << r.output;
+    const auto info = run_command(gpsurf("info " + out));
+    EXPECT_EQ(info.exit_code, 0) << info.output;
+    // The icosphere's limit surface shrinks inside the unit sphere; the fit brings it to within 1%.
+    const auto compare = run_command(gpsurf("compare " + target + " " + out));
+    ASSERT_EQ(compare.exit_code, 0) << compare.output;
+    const size_t at = compare.output.find("\nmax ");
+    ASSERT_NE(at, std::string::npos);
+    EXPECT_LT(std::stod(compare.output.substr(at + 5)), 0.01) << compare.output;
+  }
+}
+
+TEST(FitCli, ErrorsNameTheFile) {
+  test::TempDir dir;
+  const std::string coarse = dir.file("coarse.ply");
+  ASSERT_EQ(run_command(gpsurf("sample icosphere --size 80 -o " + coarse)).exit_code, 0);
+  const auto missing = run_command(gpsurf("fit " + coarse + " --target " + dir.file("none.obj") + " -o " + dir.file("o.ply")));
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_NE(missing.output.find("none.obj"), std::string::npos) << missing.output;
+  const auto no_target = run_command(gpsurf("fit " + coarse + " -o " + dir.file("o.ply")));
+  EXPECT_NE(no_target.exit_code, 0);
+  EXPECT_NE(no_target.output.find("--target"), std::string::npos) << no_target.output;
+}
+
+}  // namespace
+}  // namespace gps
