@@ -20,6 +20,22 @@ namespace {
 
 using test::error_of;
 
+// The lines of OBJ elements named in messages, counted as the reader counts records: comments, blank
+// lines, texture coordinates, normals and tags are no vertices or faces.
+TEST(MeshImport, ObjLinesOfNamedElements) {
+  const std::string text =
+      "# a square\nv 0 0 0\n\nvt 0 0\nv 1 0 0\nvn 0 0 1\n  v 1 1 0\nv 0 1 0\nf 1 2 3\ng side\nt corner 1/1/0 0 2\n"
+      "f 1 3 4\n";
+  ElementNumbering numbering;
+  find_obj_lines(text, {1, 3}, {1}, numbering);
+  EXPECT_EQ(numbering.vertex_lines, (std::unordered_map<int, int>{{1, 5}, {3, 8}}));
+  EXPECT_EQ(numbering.face_lines, (std::unordered_map<int, int>{{1, 12}}));
+  numbering.base = 1;
+  EXPECT_EQ(numbering.vertex(3), "vertex 4 (line 8)");
+  EXPECT_EQ(numbering.vertex(2), "vertex 3") << "a line not looked up is not named";
+  EXPECT_EQ(numbering.face(1), "face 2 (line 12)");
+}
+
 TEST(MeshImport, ObjWithSlashesAndNegativeIndices) {
   const auto m = parse_obj("# square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1 -1/1\n", "a.obj");
   EXPECT_EQ(m.n_vertices(), 4u);
