@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/gl_commands.h"
 #include "app/plan_arguments.h"
 #include "bench/edit_figures.h"
 #include "bench/modelling_figures.h"
@@ -56,7 +57,7 @@ void add_bench_command(CLI::App& app) {
     float adaptive_pixels = 6.0f;
   };
   auto args = std::make_shared<Args>();
-  auto* cmd = app.add_subcommand("bench", "Benchmarks (figures for the closing notes; see also build/bench/)");
+  auto* cmd = app.add_subcommand("bench", gl_command_summary("bench"));
   cmd->add_flag("--preprocess", args->preprocess, "plan building and stencil application per mesh");
   cmd->add_flag("--render", args->render,
                 "GPU frame times per mesh and tessellation level, against a static vertex buffer");

@@ -3,6 +3,7 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
+#include "app/gl_commands.h"
 #include "core/mesh/error.h"
 #include "render/image/difference_image.h"
 
@@ -14,7 +15,7 @@ void add_diff_command(CLI::App& app) {
     double factor = 0, threshold = 1e-3;
   };
   auto args = std::make_shared<Args>();
-  auto* cmd = app.add_subcommand("diff", "Difference image of two AOV renders (render --aov), with statistics");
+  auto* cmd = app.add_subcommand("diff", gl_command_summary("diff"));
   cmd->add_option("a", args->a, "first AOV image (.exr)")->required()->check(CLI::ExistingFile);
   cmd->add_option("b", args->b, "second AOV image (.exr)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->output, "difference image (.png)")->required();

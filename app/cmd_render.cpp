@@ -6,6 +6,7 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
+#include "app/gl_commands.h"
 #include "app/plan_arguments.h"
 #include "app/repair_arguments.h"
 #include "core/mesh/error.h"
@@ -230,7 +231,7 @@ void run_script(const std::string& path, const std::string& context_name) {
 void add_render_command(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
   auto* cmd =
-      app.add_subcommand("render", "Render the limit surface without a display (OSMesa, or EGL with --context)");
+      app.add_subcommand("render", gl_command_summary("render"));
   auto script = std::make_shared<std::string>();
   auto* input = cmd->add_option("input", a->input, "input mesh")->check(CLI::ExistingFile);
   auto* output = cmd->add_option("-o,--output", a->output, "output image (.png)");

@@ -11,6 +11,8 @@ install(EXPORT gpsurfTargets NAMESPACE gpsurf:: DESTINATION ${GPSURF_CMAKE_DIR})
 install(TARGETS gpsurf RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 if(GPSURF_BUILD_GL)
   install(TARGETS gpsurf-editor RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  # Not a command of its own: gpsurf runs it for render, bench and diff (app/gl_commands.h).
+  install(TARGETS gpsurf-render RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/gpsurf)
 endif()
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/gpsurfConfig.cmake.in

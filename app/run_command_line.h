@@ -1,0 +1,12 @@
+#pragma once
+// What both gpsurf programs do with their command line: parse it, run the subcommand, and turn
+// every error into one line on stderr and an exit code (2 for usage, 1 otherwise).
+#include <CLI/CLI.hpp>
+
+namespace gps {
+
+/// Parses argv with `app` (its subcommands run from their callbacks) and returns the exit code;
+/// every message begins "gpsurf: ".
+int run_command_line(CLI::App& app, int argc, char** argv);
+
+}  // namespace gps
