@@ -16,7 +16,7 @@ namespace gps {
 void add_edit_command(CLI::App& app) {
   struct Args {
     std::string input, output, ops;
-    bool binary = false, quiet = false;
+    bool ascii = false, quiet = false;
     RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
@@ -26,7 +26,7 @@ void add_edit_command(CLI::App& app) {
   cmd->add_option("--ops", args->ops,
                   "the operations: a JSON array such as '[{\"op\":\"loop_cut\",\"edge\":[0,1]}]', or @FILE.json")
       ->required();
-  cmd->add_flag("--binary", args->binary, "binary PLY");
+  cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   cmd->add_flag("-q,--quiet", args->quiet, "print only errors");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
@@ -44,7 +44,7 @@ void add_edit_command(CLI::App& app) {
         throw Error(escaped(args->input) + ": " + e.what(), e.kind());
       }
     }();
-    write_mesh(args->output, result.mesh, args->binary);
+    write_mesh(args->output, result.mesh, !args->ascii);
     if (args->quiet) return;
     for (size_t i = 0; i < summaries.size(); ++i) std::cout << "ops[" << i << "]: " << summaries[i] << "\n";
     std::cout << "wrote " << args->output << " (" << result.mesh.n_vertices() << " vertices, " << result.mesh.n_faces()

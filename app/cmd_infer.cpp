@@ -17,7 +17,7 @@ void add_infer_command(CLI::App& app) {
   struct Args {
     std::string input, output;
     double bias = 0.05, isotropic = 0, crease_angle = -1;
-    bool binary = false;
+    bool ascii = false;
     RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
@@ -33,7 +33,7 @@ void add_infer_command(CLI::App& app) {
                   "make edges whose faces meet at more than DEGREES (0..180) infinitely sharp, as Blender's "
                   "sharp by angle")
       ->check(non_negative_number());
-  cmd->add_flag("--binary", args->binary, "binary PLY");
+  cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
     if (args->crease_angle > 180) {
@@ -57,7 +57,7 @@ void add_infer_command(CLI::App& app) {
       std::cout << "creased " << marked << (marked == 1 ? " edge" : " edges") << " folded by more than "
                 << args->crease_angle << " degrees (infinitely sharp)\n";
     }
-    write_mesh(args->output, m, args->binary);
+    write_mesh(args->output, m, !args->ascii);
     std::cout << "wrote " << args->output << "\n";
   });
 }

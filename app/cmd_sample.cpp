@@ -12,7 +12,7 @@ void add_sample_command(CLI::App& app) {
   struct Args {
     std::string name, output;
     int size = 0;
-    bool list = false, binary = false;
+    bool list = false, ascii = false;
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("sample", "Write a built-in sample mesh (--list names them)");
@@ -20,7 +20,7 @@ void add_sample_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "output file (.ply keeps covariances, .obj positions)");
   cmd->add_option("--size", args->size, "approximate face count for grid and sphere")->check(CLI::Range(1, 4000000));
   cmd->add_flag("--list", args->list, "list the samples");
-  cmd->add_flag("--binary", args->binary, "binary PLY");
+  cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   cmd->callback([args] {
     if (args->list) {
       for (const auto& name : sample_names()) std::cout << name << "  " << sample_description(name) << "\n";
@@ -30,7 +30,7 @@ void add_sample_command(CLI::App& app) {
     if (args->output.empty()) throw usage_error("sample: give an output file with -o");
     if (args->size != 0 && !sample_has_size(args->name))
       throw usage_error("sample: --size applies to grid, sphere and icosphere only, not '" + args->name + "'");
-    write_mesh(args->output, make_sample(args->name, args->size), args->binary);
+    write_mesh(args->output, make_sample(args->name, args->size), !args->ascii);
     std::cout << "wrote " << args->name << " to " << args->output << "\n";
   });
 }

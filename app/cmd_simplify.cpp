@@ -19,7 +19,7 @@ void add_simplify_command(CLI::App& app) {
     size_t vertices = 0;
     double ratio = 0, bias = 0.05, max_normal_deviation = 45;
     int level = 8;
-    bool binary = false;
+    bool ascii = false;
     RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
@@ -44,7 +44,7 @@ void add_simplify_command(CLI::App& app) {
                                 "tessellation level of the limit surface the report measures (0: no report; default 8, "
                                 "lower where that would make more than 2 million triangles)")
                     ->check(CLI::Range(0, 64));
-  cmd->add_flag("--binary", args->binary, "binary PLY");
+  cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args, vertices, ratio, level] {
     if (vertices->count() == 0 && ratio->count() == 0) throw usage_error("simplify: give --vertices N or --ratio R");
@@ -59,7 +59,7 @@ void add_simplify_command(CLI::App& app) {
       throw usage_error(escaped(args->input) + ": --ratio " + std::to_string(args->ratio) +
                         " keeps fewer than 4 of its " + std::to_string(input.n_vertices()) + " vertices");
     const SimplifiedMesh s = naming_input(args->input, [&] { return simplify_mesh(input, options); });
-    write_mesh(args->output, s.mesh, args->binary);
+    write_mesh(args->output, s.mesh, !args->ascii);
     if (s.triangulated) std::cout << "fanned the faces of more than 3 sides into triangles\n";
     std::cout << "simplified " << s.input_vertices << " vertices, " << s.input_triangles << " triangles to "
               << s.mesh.n_vertices() << " vertices, " << s.mesh.n_faces() << " triangles";

@@ -15,7 +15,7 @@ void add_subdivide_command(CLI::App& app) {
   struct Args {
     std::string input, output, scheme = "auto", beta = "loop";
     int levels = 1;
-    bool limit = false, binary = false;
+    bool limit = false, ascii = false;
     RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
@@ -29,7 +29,7 @@ void add_subdivide_command(CLI::App& app) {
   cmd->add_option("--loop-beta", args->beta, "Loop vertex weight: Loop's original or Warren's 3/(8n)")
       ->check(CLI::IsMember({"loop", "warren"}));
   cmd->add_flag("--limit", args->limit, "move every vertex to its exact limit position");
-  cmd->add_flag("--binary", args->binary, "binary PLY");
+  cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
     const CovarianceMesh m = read_mesh_repairing(args->input, args->repair);
@@ -40,7 +40,7 @@ void add_subdivide_command(CLI::App& app) {
     o.limit = args->limit;
     o.loop_beta = named.loop_beta;
     const SubdivisionResult r = naming_input(args->input, [&] { return subdivide(m, o); });
-    write_mesh(args->output, r.mesh, args->binary);
+    write_mesh(args->output, r.mesh, !args->ascii);
     std::cout << "wrote " << args->output << " (" << (o.scheme == Scheme::loop ? "Loop, " : "Catmull-Clark, ")
               << r.mesh.n_vertices() << " vertices, " << r.mesh.n_faces() << " faces)\n";
   });

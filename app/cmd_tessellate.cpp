@@ -16,7 +16,7 @@ void add_tessellate_command(CLI::App& app) {
     std::string input, output;
     int level = 8;
     PlanArguments plans;
-    bool binary = false;
+    bool ascii = false;
     RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
@@ -26,14 +26,14 @@ void add_tessellate_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "output .ply (x y z nx ny nz) or .obj")->required();
   add_plan_arguments(cmd, args->plans);
   cmd->add_option("--level", args->level, "tessellation level per patch edge")->check(CLI::Range(1, 64));
-  cmd->add_flag("--binary", args->binary, "binary PLY");
+  cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
     const CovarianceMesh m = read_mesh_repairing(args->input, args->repair);
     const PlannedSurface surface = naming_input(args->input, [&] { return PlannedSurface(m, args->plans.options()); });
     const TriangleMesh t =
         naming_input(args->input, [&] { return tessellate(surface.tables().plans, surface.points(), args->level); });
-    write_triangle_mesh(args->output, t, args->binary);
+    write_triangle_mesh(args->output, t, !args->ascii);
     std::cout << "wrote " << args->output << " (" << (surface.scheme() == Scheme::loop ? "Loop, " : "Catmull-Clark, ")
               << surface.tables().plans.n_patches() << " patches, " << t.positions.size() << " vertices, "
               << t.triangles.size() << " triangles)\n";

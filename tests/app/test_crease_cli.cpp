@@ -102,12 +102,12 @@ TEST(CreaseCli, SavingKeepsSharpnessByteExact) {
   test::TempDir dir;
   const std::string in = kData + "/creased_cylinder.ply";
   const std::string no_op = R"( --ops '[{"op":"corner","vertices":[5],"sharpness":0}]')";
-  for (const std::string binary : {"", " --binary"}) {
+  for (const std::string format : {"", " --ascii"}) {
     const std::string a = dir.file("a.ply"), b = dir.file("b.ply");
-    ASSERT_EQ(run_command(gpsurf("edit " + in + " -o " + a + no_op + binary)).exit_code, 0);
-    ASSERT_EQ(run_command(gpsurf("edit " + a + " -o " + b + no_op + binary)).exit_code, 0);
-    EXPECT_EQ(file_text(a), file_text(b)) << binary;
-    EXPECT_EQ(read_mesh(b).sharpness, read_mesh(in).sharpness) << binary;
+    ASSERT_EQ(run_command(gpsurf("edit " + in + " -o " + a + no_op + format)).exit_code, 0);
+    ASSERT_EQ(run_command(gpsurf("edit " + a + " -o " + b + no_op + format)).exit_code, 0);
+    EXPECT_EQ(file_text(a), file_text(b)) << format;
+    EXPECT_EQ(read_mesh(b).sharpness, read_mesh(in).sharpness) << format;
   }
 }
 

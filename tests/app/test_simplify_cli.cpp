@@ -32,7 +32,7 @@ TEST(SimplifyCli, KeepsTheVerticesAskedForAndReportsTheDistances) {
   EXPECT_EQ(gaussians_problem(coarse), "");
 
   const auto half = run_command(
-      gpsurf("simplify " + dir.file("ico.ply") + " -o " + dir.file("half.ply") + " --ratio 0.5 --level 0 --binary"));
+      gpsurf("simplify " + dir.file("ico.ply") + " -o " + dir.file("half.ply") + " --ratio 0.5 --level 0 --ascii"));
   ASSERT_EQ(half.exit_code, 0) << half.output;
   EXPECT_NE(half.output.find("to 321 vertices"), std::string::npos) << half.output;
   EXPECT_EQ(half.output.find("rms"), std::string::npos) << half.output;  // --level 0: no report
