@@ -10,7 +10,7 @@ namespace gps::gpu {
 #endif
 
 // Shader storage buffer bindings.
-GPS_LAYOUT_CONST int kBindingGaussians = 0;     // 9 floats per base vertex: μ, Σ xx xy xz yy yz zz
+GPS_LAYOUT_CONST int kBindingGaussians = 0;     // 9 floats per base vertex: μ, Σ⁻¹ xx xy xz yy yz zz
 GPS_LAYOUT_CONST int kBindingPoints = 1;        // the plan points, kVec4PerPoint vec4 each
 GPS_LAYOUT_CONST int kBindingOffsets = 2;       // stencil table (core/plans/patch_plans.h)
 GPS_LAYOUT_CONST int kBindingIndices = 3;

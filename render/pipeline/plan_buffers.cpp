@@ -2,6 +2,7 @@
 
 #include <glad/gl.h>
 
+#include <Eigen/LU>
 #include <algorithm>
 
 #include "render/gl/compute_limits.h"
@@ -54,11 +55,13 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables) {
   upload(kBindingCornerLimits, std::vector<float>(corner_limit_floats(p), 0.0f));
 }
 
-// μ, then Σ's xx xy xz yy yz zz (shaders/dual_map_comp.glsl).
+// μ, then Σ⁻¹'s xx xy xz yy yz zz (shaders/dual_map_comp.glsl). The inverse is taken in double and
+// rounded once: inverted in float, a thin Gaussian's Σ (condition κ) loses κ times float's precision in
+// Σ⁻¹, its thin directions' precision first, where the surface's shape is.
 static void gaussian_of(const CovarianceMesh& mesh, size_t v, float* out) {
   const Vec3 m = mesh.mean(v);
-  const Mat3& c = mesh.covariance(v);
-  const double values[9] = {m.x(), m.y(), m.z(), c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
+  const Mat3 p = mesh.covariance(v).inverse();
+  const double values[9] = {m.x(), m.y(), m.z(), p(0, 0), p(0, 1), p(0, 2), p(1, 1), p(1, 2), p(2, 2)};
   std::copy(values, values + 9, out);
 }
 
