@@ -223,7 +223,7 @@ private:
   // File → Simplify…: the dialog, its job and the settings it last had.
   struct SimplifySettings {
     int vertices = 0;  // 0: a tenth of the mesh's
-    float bias = 0.05f;
+    double bias = 0.05;
   };
   SimplifySettings simplify_settings_;
   JobDialog job_dialog_;

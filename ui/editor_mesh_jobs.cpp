@@ -47,17 +47,17 @@ void EditorApp::open_simplify_dialog() {
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::InputInt("vertices to keep", &settings->vertices, 0);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
-    ImGui::InputFloat("bias", &settings->bias, 0.0f, 0.0f, "%.3g");
+    ImGui::InputDouble("bias", &settings->bias, 0.0, 0.0, "%.3g");
     simplify_settings_ = *settings;
   };
   spec.work = [input, settings]() -> BackgroundJob::Work {
     if (settings->vertices < 4) throw Error("keep at least 4 vertices");
     if (size_t(settings->vertices) >= input->n_vertices())
       throw Error("keep fewer than the " + std::to_string(input->n_vertices()) + " vertices there are");
-    if (!(settings->bias > 0.0f)) throw Error("the bias must be positive");
+    if (!(settings->bias > 0.0)) throw Error("the bias must be positive");
     SimplifyOptions options;
     options.target_vertices = size_t(settings->vertices);
-    options.bias = double(settings->bias);
+    options.bias = settings->bias;
     return [input, options](const ProgressReport& report) mutable {
       options.progress = [&report](double fraction) { return report(0.8 * fraction); };
       const SimplifiedMesh s = simplify_mesh(*input, options);
