@@ -87,7 +87,7 @@ HandleDrag::HandleDrag(const CovarianceMesh& mesh, const std::vector<int>& verti
   centre_ = f.centre;
   normal_ = vertex_normal(mesh, grabbed.vertex);
   sigma_ = f.axes.sigmas.maxCoeff();
-  const Vec3 eye = to_vec(view.camera.eye());
+  const Vec3 eye = to_vec(view.camera.eye_double());
   if (grabbed.is_centre()) {
     kind_ = Kind::move;
     plane_origin_ = f.centre;

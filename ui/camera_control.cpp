@@ -14,26 +14,26 @@ void orbit(Camera& camera, glm::vec2 delta) {
 }
 
 void pan(Camera& camera, glm::vec2 delta, int height) {
-  const glm::mat4 view = camera.view();
-  const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
-  const float per_pixel = view_height(camera) / float(std::max(1, height));
-  camera.target += per_pixel * (-delta.x * right + delta.y * up);
+  const glm::dmat4 view = camera.view_double();
+  const glm::dvec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
+  const double per_pixel = double(view_height(camera)) / double(std::max(1, height));
+  camera.target += per_pixel * (-double(delta.x) * right + double(delta.y) * up);
 }
 
 void zoom_to_cursor(Camera& camera, float steps, int width, int height, glm::vec2 cursor,
-                    std::optional<glm::vec3> anchor) {
+                    std::optional<glm::dvec3> anchor) {
   const float scale = std::pow(0.85f, steps);
-  const glm::vec3 eye = camera.eye();
+  const glm::dvec3 eye = camera.eye_double();
   if (!anchor) {  // the cursor's point at the target's depth
     const Ray ray = pixel_ray(camera, width, height, cursor);
-    const glm::vec3 forward = glm::normalize(camera.target - eye);
-    const float t = glm::dot(camera.target - ray.origin, forward) / std::max(1e-6f, glm::dot(ray.direction, forward));
+    const glm::dvec3 forward = glm::normalize(camera.target - eye);
+    const double t = glm::dot(camera.target - ray.origin, forward) / std::max(1e-6, glm::dot(ray.direction, forward));
     anchor = ray.origin + t * ray.direction;
   }
   // Eye and target both move toward the anchor by the same factor: the view direction is kept and
   // the anchor stays on the same pixel. Never closer than a millionth of the old distance.
   const float new_distance = std::max(camera.distance * scale, 1e-6f);
-  const float s = new_distance / camera.distance;
+  const double s = double(new_distance) / double(camera.distance);
   camera.target = *anchor + (camera.target - *anchor) * s;
   camera.distance = new_distance;
 }

@@ -21,7 +21,7 @@ void pan(Camera& camera, glm::vec2 delta, int height);
 /// Zooms by 0.85^steps toward `anchor` (the surface point under the cursor; else the point at the
 /// target's depth): a homothety of the camera about the anchor, which stays under the cursor.
 void zoom_to_cursor(Camera& camera, float steps, int width, int height, glm::vec2 cursor,
-                    std::optional<glm::vec3> anchor);
+                    std::optional<glm::dvec3> anchor);
 
 /// The camera at the same angles framing the given points (all of them in view); `camera` unchanged
 /// when there are none. Points closer than `min_radius` to their centre are framed at that radius.

@@ -61,7 +61,7 @@ void EditorApp::update_inset(double thickness) {
 
 void EditorApp::follow_inset(glm::vec2 cursor) {
   const Viewport v = viewport();
-  const auto c = project_to_pixel(v.camera, v.width, v.height, to_glm(inset_->centre));
+  const auto c = project_to_pixel(v.camera, v.width, v.height, inset_->centre);
   if (!c) return;
   const glm::vec2 centre(*c);
   const double pixels = double(glm::length(inset_->start_cursor - centre) - glm::length(cursor - centre));

@@ -132,7 +132,7 @@ void EditorApp::start_extrude() {
 std::optional<std::array<int, 2>> EditorApp::edge_under(glm::vec2 cursor) const {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
-  const Vec3 eye = to_vec(v.camera.eye()), forward = to_vec(v.camera.target) - eye;
+  const Vec3 eye = to_vec(v.camera.eye_double()), forward = to_vec(v.camera.target) - eye;
   const auto faces_camera = [&](OpenMesh::FaceHandle f) {
     if (!f.is_valid()) return false;
     std::vector<int> corners;
@@ -200,8 +200,8 @@ void EditorApp::slide_loop_cut(glm::vec2 cursor) {
   LoopCutTool& tool = *loop_cut_;
   const auto [a, b] = tool.ring.edges.front();
   const Viewport v = viewport();
-  const auto pa = project_to_pixel(v.camera, v.width, v.height, to_glm(tool.base->mean(size_t(a))));
-  const auto pb = project_to_pixel(v.camera, v.width, v.height, to_glm(tool.base->mean(size_t(b))));
+  const auto pa = project_to_pixel(v.camera, v.width, v.height, tool.base->mean(size_t(a)));
+  const auto pb = project_to_pixel(v.camera, v.width, v.height, tool.base->mean(size_t(b)));
   if (!pa || !pb) return;
   const glm::vec2 d = glm::vec2(*pb) - glm::vec2(*pa);
   if (glm::dot(d, d) < 1.0f) return;

@@ -275,7 +275,7 @@ void EditorApp::draw_modelling_overlay() {
     std::vector<ImVec2> points;
     for (const auto& [a, b] : edges) {
       const Vec3 p = (1.0 - t) * mesh.mean(size_t(a)) + t * mesh.mean(size_t(b));
-      if (const auto q = project_to_pixel(v.camera, v.width, v.height, to_glm(p))) points.emplace_back(q->x, q->y);
+      if (const auto q = project_to_pixel(v.camera, v.width, v.height, p)) points.emplace_back(q->x, q->y);
     }
     draw->AddPolyline(points.data(), int(points.size()), IM_COL32(255, 210, 60, 255),
                       loop_cut_->ring.closed ? ImDrawFlags_Closed : ImDrawFlags_None, 2.0f);

@@ -78,7 +78,7 @@ void EditorApp::handle_event(const InputEvent& e) {
         update_drag();
       } else if (!io.WantCaptureMouse) {
         const Viewport v = viewport();
-        std::optional<glm::vec3> anchor;
+        std::optional<glm::dvec3> anchor;
         if (target_)
           anchor = surface_point(*target_, e.position * glm::vec2(float(target_->width()) / float(v.width),
                                                                   float(target_->height()) / float(v.height)));

@@ -44,7 +44,7 @@ TransformMode::TransformMode(TransformKind kind, const CovarianceMesh& mesh, std
   }
   if (!vertices_.empty()) centre_ /= double(vertices_.size());
   if (pivot_ == TransformPivot::active && active >= 0) centre_ = mesh.mean(size_t(active));
-  const Vec3 eye = to_vec(view.camera.eye()), target = to_vec(view.camera.target);
+  const Vec3 eye = to_vec(view.camera.eye_double()), target = to_vec(view.camera.target);
   view_axis_ = (view.camera.orthographic ? eye - target : eye - centre_).normalized();
   move_cursor(cursor, view);
 }
@@ -80,7 +80,7 @@ double TransformMode::typed_value() const {
 
 void TransformMode::move_cursor(glm::vec2 cursor, const Viewport& view) {
   const auto pixel = [&](const Vec3& p) {
-    const auto q = project_to_pixel(view.camera, view.width, view.height, to_glm(p));
+    const auto q = project_to_pixel(view.camera, view.width, view.height, p);
     return q ? glm::vec2(*q) : start_cursor_;
   };
   const glm::vec2 centre = pixel(centre_);

@@ -23,14 +23,6 @@ int up_axis_named(const std::string& name) {
   throw usage_error("up axis must be x, y or z, not \"" + name + "\"");
 }
 
-glm::vec3 Camera::eye() const {
-  const float yaw = glm::radians(yaw_degrees), pitch = glm::radians(pitch_degrees);
-  const glm::vec3 offset(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
-  return target + distance * (up_axis == 1 ? offset : glm::mat3(up_frame()) * offset);
-}
-
-glm::mat4 Camera::view() const { return glm::lookAt(eye(), target, glm::vec3(up_frame() * glm::dvec3(0, 1, 0))); }
-
 // The near plane follows the distance at any scale (a fixed floor would clip a tiny mesh).
 glm::mat4 Camera::projection(float aspect) const {
   const float near_plane = distance > 0.0f ? distance * 0.01f : 1e-4f, far_plane = distance * 100.0f;
@@ -43,13 +35,12 @@ glm::mat4 Camera::projection(float aspect) const {
 
 glm::dvec3 Camera::eye_double() const {
   const double yaw = glm::radians(double(yaw_degrees)), pitch = glm::radians(double(pitch_degrees));
-  return glm::dvec3(target) +
-         double(distance) * (up_frame() * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                                     std::cos(pitch) * std::cos(yaw)));
+  return target + double(distance) * (up_frame() * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                                              std::cos(pitch) * std::cos(yaw)));
 }
 
 glm::dmat4 Camera::view_double() const {
-  return glm::lookAt(eye_double(), glm::dvec3(target), up_frame() * glm::dvec3(0, 1, 0));
+  return glm::lookAt(eye_double(), target, up_frame() * glm::dvec3(0, 1, 0));
 }
 
 glm::dmat4 Camera::view_projection_double(float aspect) const {
@@ -72,7 +63,7 @@ float view_height(const Camera& camera) {
 Camera frame_box(const Vec3& lo, const Vec3& hi, float yaw_degrees, float pitch_degrees) {
   Camera c;
   const Vec3 centre = 0.5 * (lo + hi);
-  c.target = glm::vec3(float(centre.x()), float(centre.y()), float(centre.z()));
+  c.target = glm::dvec3(centre.x(), centre.y(), centre.z());
   const float radius = std::max(1e-6f, float(0.5 * (hi - lo).norm()));
   c.yaw_degrees = yaw_degrees;
   c.pitch_degrees = pitch_degrees;

@@ -11,7 +11,7 @@
 namespace gps {
 
 struct Camera {
-  glm::vec3 target{0.0f};
+  glm::dvec3 target{0.0};  // double: a float target far from the origin would be off by more than the mesh
   float yaw_degrees = 30.0f;    // around the up axis
   float pitch_degrees = 20.0f;  // above the plane normal to it
   int up_axis = 1;              // the world axis drawn upward: 0 x, 1 y, 2 z
@@ -19,9 +19,9 @@ struct Camera {
   float fov_degrees = 35.0f;
   bool orthographic = false;  // parallel projection showing the height the perspective shows at the target
 
-  glm::vec3 eye() const;
+  glm::vec3 eye() const { return glm::vec3(eye_double()); }
   glm::dvec3 eye_double() const;
-  glm::mat4 view() const;
+  glm::mat4 view() const { return glm::mat4(view_double()); }
   glm::mat4 projection(float aspect) const;
   glm::mat4 view_projection(float aspect) const { return projection(aspect) * view(); }
   /// view() and view_projection() in double, for combining with a model matrix before the cast to

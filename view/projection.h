@@ -1,6 +1,8 @@
 #pragma once
 // Between window pixels and the world: rays through pixels (inverse view-projection), points
-// projected to pixels, the world size of a pixel, and the candidate projected nearest a pixel.
+// projected to pixels, the world size of a pixel, and the candidate projected nearest a pixel. All in
+// double (the camera's view_projection_double): a mesh far from the origin, or of any scale, is
+// picked and overlaid as it is at the origin at unit size.
 #include <glm/glm.hpp>
 #include <optional>
 
@@ -16,8 +18,8 @@ struct Viewport {
 };
 
 struct Ray {
-  glm::vec3 origin;
-  glm::vec3 direction;  // unit length
+  glm::dvec3 origin;
+  glm::dvec3 direction;  // unit length
 };
 
 /// The ray from the eye through the centre of a pixel given in window coordinates (origin top-left,
@@ -25,7 +27,10 @@ struct Ray {
 Ray pixel_ray(const Camera& camera, int width, int height, glm::vec2 pixel);
 
 /// The window pixel (origin top-left) of a world point and its NDC depth in z; nullopt behind the eye.
-std::optional<glm::vec3> project_to_pixel(const Camera& camera, int width, int height, const glm::vec3& world);
+std::optional<glm::vec3> project_to_pixel(const Camera& camera, int width, int height, const Vec3& world);
+inline std::optional<glm::vec3> project_to_pixel(const Camera& camera, int width, int height, const glm::vec3& world) {
+  return project_to_pixel(camera, width, height, Vec3(world.x, world.y, world.z));
+}
 
 /// project_to_pixel() of a double-precision point, nullopt also outside the depth range [−1, 1].
 std::optional<glm::vec3> visible_pixel(const Camera& camera, int width, int height, const Vec3& world);
@@ -35,6 +40,7 @@ double world_per_pixel(const Camera& camera, int height, const Vec3& point);
 
 inline glm::vec3 to_glm(const Vec3& v) { return {float(v.x()), float(v.y()), float(v.z())}; }
 inline Vec3 to_vec(const glm::vec3& v) { return {double(v.x), double(v.y), double(v.z)}; }
+inline Vec3 to_vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
 /// Finds, among candidates offered one by one, the one projected nearest to a pixel within a radius.
 /// Candidates as near as the best (within `tolerance` pixels) win by a higher priority, then by

@@ -90,7 +90,7 @@ std::vector<char> visible_vertices(const Viewport& view, const CovarianceMesh& m
   }
 
   const double tolerance = 1e-3 * bounding_box_diagonal(mesh);
-  const Vec3 eye = to_vec(view.camera.eye()), target = to_vec(view.camera.target);
+  const Vec3 eye = to_vec(view.camera.eye_double()), target = to_vec(view.camera.target);
   const Vec3 forward = (target - eye).normalized();
   std::vector<char> visible(n, 0);
   for (size_t i = 0; i < n; ++i) {
@@ -105,7 +105,7 @@ std::vector<char> visible_vertices(const Viewport& view, const CovarianceMesh& m
         if (f.idx() == front_face) seen = true;
     if (!seen) {  // the vertex's depth moved towards the camera by the tolerance, against the buffer's
       const auto nearer =
-          project_to_pixel(view.camera, view.width, view.height, to_glm(mesh.mean(i) - tolerance * forward));
+          project_to_pixel(view.camera, view.width, view.height, Vec3(mesh.mean(i) - tolerance * forward));
       seen = nearer && nearer->z <= buffer.depth(x, y);
     }
     visible[i] = seen;

@@ -42,8 +42,8 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surfac
   cache_.set_frame(frame_);
   framed_ = frame_.to_frame(mesh);
   buffers_.upload_gaussians(framed_);
-  ellipsoids_.upload(mesh, nullptr);
-  cage_.set_mesh(mesh);
+  ellipsoids_.upload(framed_, nullptr);  // the overlays too are drawn in the frame
+  cage_.set_mesh(framed_);
   cache_.set_cage(framed_);  // projected with the frame's view-projection
   run_compute(nullptr);
 }
@@ -55,14 +55,14 @@ void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vec
   if (update_everything(changed.size(),
                         size_t(n_base_))) {  // most of the mesh (select all, drag): whole buffers, one call each
     buffers_.upload_gaussians(framed_);
-    ellipsoids_.upload(mesh, nullptr);
-    cage_.upload_positions(mesh);
+    ellipsoids_.upload(framed_, nullptr);
+    cage_.upload_positions(framed_);
     run_compute(nullptr, true);
     return;
   }
   buffers_.update_gaussians(framed_, changed);
-  cage_.update_positions(mesh, changed);
-  ellipsoids_.upload(mesh, &changed);
+  cage_.update_positions(framed_, changed);
+  ellipsoids_.upload(framed_, &changed);
   run_compute(&changed);
 }
 
@@ -193,11 +193,11 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   }
   if (o.ellipsoids && ellipsoids_.count() > 0) {
     const GpuPassScope pass(timer_, "ellipsoids");
-    ellipsoids_.draw(camera.view_projection(aspect), o.sigma_scale, o.ellipsoid_vertices);
+    ellipsoids_.draw(frame_view_projection(camera, aspect, frame_), o.sigma_scale, o.ellipsoid_vertices);
   }
   if (o.mesh_lines && !cage_.empty()) {
     const GpuPassScope pass(timer_, "mesh lines");
-    cage_.draw(target, camera.view_projection(aspect));
+    cage_.draw(target, frame_view_projection(camera, aspect, frame_));
   }
   glBindVertexArray(0);
   check_gl_errors("drawing");

@@ -34,7 +34,7 @@ CovarianceMesh mapped(const CovarianceMesh& mesh, double scale, const Vec3& offs
   return out;
 }
 
-Render render(const CovarianceMesh& mesh, bool cached) {
+Render render(const CovarianceMesh& mesh, bool cached, bool overlays) {
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh);
   RenderTarget target(kSize, kSize);
@@ -42,6 +42,7 @@ Render render(const CovarianceMesh& mesh, bool cached) {
   o.level = 12;
   o.pixels = 0;
   o.surface_cache = cached;
+  o.mesh_lines = o.ellipsoids = overlays;
   const Camera camera = frame_mesh(mesh);
   renderer.draw(target, camera, o);
   if (cached) renderer.draw(target, camera, o);  // the second frame draws the stored triangles
@@ -50,12 +51,12 @@ Render render(const CovarianceMesh& mesh, bool cached) {
 
 bool covered(const Image& position, int x, int y) { return position.at(x, y, 3) > 0.5f; }
 
-void expect_same_image(double scale, const Vec3& offset, bool cached) {
+void expect_same_image(double scale, const Vec3& offset, bool cached, bool overlays = false) {
   const CovarianceMesh torus = make_sample("torus");
   const CovarianceMesh moved = mapped(torus, scale, offset);
-  const Render a = render(torus, cached), b = render(moved, cached);
-  const std::string what =
-      "scale " + std::to_string(scale) + ", offset " + std::to_string(offset.x()) + (cached ? ", cached" : "");
+  const Render a = render(torus, cached, overlays), b = render(moved, cached, overlays);
+  const std::string what = "scale " + std::to_string(scale) + ", offset " + std::to_string(offset.x()) +
+                           (cached ? ", cached" : "") + (overlays ? ", overlays" : "");
   const double diagonal = bounding_box_diagonal(torus) * scale;
   // A float AOV holds a world position to its own precision only.
   const double position_tolerance = 1e-4 * diagonal + 4e-7 * offset.cwiseAbs().maxCoeff();
@@ -89,6 +90,7 @@ void expect_same_image(double scale, const Vec3& offset, bool cached) {
   // Only a silhouette pixel may flip where the frame's float rounding differs in the last bit.
   const long long allowed = std::max(2LL, covered_a / 500);
   EXPECT_LE(color_off, allowed) << what;
+  if (overlays) return;  // the ellipsoids' lines leave the AOVs under them undefined
   EXPECT_LE(coverage_off, allowed) << what;
   EXPECT_LE(position_off, allowed) << what;
   EXPECT_LE(normal_off, allowed) << what;
@@ -103,6 +105,13 @@ TEST_F(FrameScale, FarTorusRendersAsAtTheOrigin) { expect_same_image(1.0, Vec3(1
 TEST_F(FrameScale, CachedFramesFollowTheFrame) {
   expect_same_image(1e10, Vec3::Zero(), true);
   expect_same_image(1.0, Vec3(1e7, 1e7, 1e7), true);
+}
+
+// The cage lines and the covariance ellipsoids are drawn in the frame too.
+TEST_F(FrameScale, OverlaysFollowTheFrame) {
+  expect_same_image(1.0, Vec3(1e7, 1e7, 1e7), false, true);
+  expect_same_image(1e-6, Vec3::Zero(), false, true);
+  expect_same_image(1e10, Vec3::Zero(), false, true);
 }
 
 TEST_F(FrameScale, StoredTrianglesAreInWorldCoordinates) {

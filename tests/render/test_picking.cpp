@@ -28,10 +28,10 @@ TEST_F(Picking, RaysThroughAProjectedPointHitIt) {
     const auto p = project_to_pixel(camera, 200, 150, world);
     ASSERT_TRUE(p.has_value());
     const Ray ray = pixel_ray(camera, 200, 150, glm::vec2(*p) - glm::vec2(0.5f));
-    const glm::vec3 to_point = world - ray.origin;
-    const float off_ray = glm::length(to_point - glm::dot(to_point, ray.direction) * ray.direction);
-    EXPECT_LT(off_ray, 1e-4f * glm::length(to_point)) << "vertex " << i;
-    EXPECT_GT(glm::dot(to_point, ray.direction), 0.0f);
+    const glm::dvec3 to_point = glm::dvec3(world) - ray.origin;
+    const double off_ray = glm::length(to_point - glm::dot(to_point, ray.direction) * ray.direction);
+    EXPECT_LT(off_ray, 1e-4 * glm::length(to_point)) << "vertex " << i;
+    EXPECT_GT(glm::dot(to_point, ray.direction), 0.0);
   }
 }
 
@@ -75,14 +75,46 @@ TEST_F(Picking, SurfacePointUnderAPixelLiesOnTheRay) {
     // The point lies inside the cube's hull, on the ray through that pixel, in front of the eye.
     EXPECT_LE(glm::length(*point), std::sqrt(3.0f) + 1e-3f);
     const Ray ray = pixel_ray(camera, 96, 64, pixel);
-    const glm::vec3 to_point = *point - ray.origin;
-    const float along = glm::dot(to_point, ray.direction);
-    EXPECT_GT(along, 0.0f);
+    const glm::dvec3 to_point = glm::dvec3(*point) - ray.origin;
+    const double along = glm::dot(to_point, ray.direction);
+    EXPECT_GT(along, 0.0);
     // Within a pixel's footprint at that distance.
-    const float footprint = 2.0f * along * std::tan(glm::radians(camera.fov_degrees) * 0.5f) / 64.0f;
+    const double footprint = 2.0 * along * std::tan(glm::radians(double(camera.fov_degrees)) * 0.5) / 64.0;
     EXPECT_LT(glm::length(to_point - along * ray.direction), footprint);
   }
   EXPECT_EQ(hits, 3);
+}
+
+// Projection, rays and picking commute with moving the mesh and its framing camera: the torus moved
+// by 1e7 (where a float holds a coordinate to about one unit, a sixth of the torus) or scaled by 1e-6
+// or 1e10 projects, casts rays and picks as at the origin at unit scale.
+TEST_F(Picking, AFarOrScaledTorusIsPickedAsAtTheOrigin) {
+  const CovarianceMesh torus = make_sample("torus");
+  const Camera camera = frame_mesh(torus, 35.0f, 25.0f);
+  const int w = 320, h = 240;
+  for (const auto& [scale, offset] : {std::pair{1.0, Vec3(1e7, -3e7, 2e7)}, std::pair{1e-6, Vec3(1e-3, 0, 0)},
+                                      std::pair{1e10, Vec3(0, 0, 0)}}) {
+    CovarianceMesh moved = torus;
+    for (size_t i = 0; i < torus.n_vertices(); ++i) moved.set_mean(i, scale * torus.mean(i) + offset);
+    const Camera moved_camera = frame_mesh(moved, 35.0f, 25.0f);
+    const double diagonal = bounding_box_diagonal(moved);
+    int compared = 0;
+    for (size_t i = 0; i < torus.n_vertices(); i += 7) {
+      const auto p = visible_pixel(camera, w, h, torus.mean(i)), q = visible_pixel(moved_camera, w, h, moved.mean(i));
+      ASSERT_TRUE(p && q) << "scale " << scale << " vertex " << i;
+      EXPECT_LT(glm::length(glm::vec2(*p) - glm::vec2(*q)), 0.01f) << "scale " << scale << " vertex " << i;
+      const glm::vec2 pixel = glm::vec2(*q) - glm::vec2(0.5f);
+      EXPECT_EQ(pick_vertex(moved_camera, w, h, pixel, moved, 4.0f), pick_vertex(camera, w, h, pixel, torus, 4.0f))
+          << "scale " << scale << " vertex " << i;
+      // The ray through the vertex's pixel passes through it, to a pixel's fraction.
+      const Ray ray = pixel_ray(moved_camera, w, h, pixel);
+      const Vec3 to_point = moved.mean(i) - to_vec(ray.origin), direction = to_vec(ray.direction);
+      EXPECT_LT((to_point - to_point.dot(direction) * direction).norm(), 1e-4 * diagonal)
+          << "scale " << scale << " vertex " << i;
+      ++compared;
+    }
+    EXPECT_GT(compared, 30);
+  }
 }
 
 }  // namespace

@@ -8,15 +8,15 @@
 namespace gps {
 namespace {
 
-glm::vec2 pixel_of(const Camera& c, int w, int h, glm::vec3 p) {
-  const auto q = project_to_pixel(c, w, h, p);
+glm::vec2 pixel_of(const Camera& c, int w, int h, glm::dvec3 p) {
+  const auto q = project_to_pixel(c, w, h, Vec3(p.x, p.y, p.z));
   EXPECT_TRUE(q.has_value());
   return glm::vec2(*q);
 }
 
 TEST(CameraControl, ZoomKeepsTheAnchorUnderTheCursor) {
   Camera camera = frame_box(Vec3(-1, -1, -1), Vec3(1, 1, 1));
-  const glm::vec3 anchor(0.4f, 0.3f, -0.2f);
+  const glm::dvec3 anchor(0.4, 0.3, -0.2);
   const glm::vec2 cursor = pixel_of(camera, 800, 600, anchor);
   const float before = camera.distance;
   zoom_to_cursor(camera, 3.0f, 800, 600, cursor, anchor);
@@ -28,15 +28,15 @@ TEST(CameraControl, ZoomKeepsTheAnchorUnderTheCursor) {
   Camera plain = frame_box(Vec3(-1, -1, -1), Vec3(1, 1, 1));
   const glm::vec2 corner(100.0f, 80.0f);
   const Ray ray = pixel_ray(plain, 800, 600, corner);
-  const glm::vec3 forward = glm::normalize(plain.target - plain.eye());
-  const glm::vec3 point = ray.origin + ray.direction * (plain.distance / glm::dot(ray.direction, forward));
+  const glm::dvec3 forward = glm::normalize(plain.target - plain.eye_double());
+  const glm::dvec3 point = ray.origin + ray.direction * (double(plain.distance) / glm::dot(ray.direction, forward));
   zoom_to_cursor(plain, 2.0f, 800, 600, corner, std::nullopt);
   EXPECT_LT(glm::length(pixel_of(plain, 800, 600, point) - (corner + glm::vec2(0.5f))), 0.05f);
 }
 
 TEST(CameraControl, PanMovesThePointAtTheTargetDepthWithTheMouse) {
   Camera camera = frame_box(Vec3(-1, -1, -1), Vec3(1, 1, 1), 40.0f, 30.0f);
-  const glm::vec3 target = camera.target;
+  const glm::dvec3 target = camera.target;
   const glm::vec2 before = pixel_of(camera, 640, 480, target);
   pan(camera, glm::vec2(35.0f, -20.0f), 480);
   EXPECT_LT(glm::length(pixel_of(camera, 640, 480, target) - (before + glm::vec2(35.0f, -20.0f))), 0.05f);
@@ -44,7 +44,7 @@ TEST(CameraControl, PanMovesThePointAtTheTargetDepthWithTheMouse) {
 
 TEST(CameraControl, OrbitTurnsAroundTheTargetAndClampsPitch) {
   Camera camera;
-  const glm::vec3 target = camera.target;
+  const glm::dvec3 target = camera.target;
   orbit(camera, glm::vec2(50.0f, 0.0f));
   EXPECT_NEAR(camera.yaw_degrees, 30.0f - 20.0f, 1e-4f);
   EXPECT_EQ(camera.target, target);
