@@ -6,7 +6,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
-#include <Eigen/SparseCholesky>
+#include <Eigen/IterativeLinearSolvers>
 
 #include "core/fitting/closest_points.h"
 #include "core/fitting/limit_weights.h"
@@ -410,16 +410,19 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
     problem.normal_equations(x, h, g);
     const Eigen::VectorXd diagonal = h.diagonal();
     const double floor = 1e-12 * std::max(diagonal.maxCoeff(), 1e-300);
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
-    solver.analyzePattern(h);
+    // Conjugate gradients (the damped system is positive definite): a direct factorisation's fill-in
+    // grows too fast with the control vertices and the 9×9 blocks.
+    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
+    solver.setTolerance(1e-6);
+    solver.setMaxIterations(500);
     bool accepted = false;
     // Levenberg-Marquardt: H + λ diag(H), λ raised until a step lowers the objective.
     for (int attempt = 0; attempt < 12 && !accepted; ++attempt) {
       Eigen::SparseMatrix<double> damped = h;
       for (int u = 0; u < problem.unknowns(); ++u) damped.coeffRef(u, u) += damping * diagonal[u] + floor;
-      solver.factorize(damped);
-      if (solver.info() == Eigen::Success) {
-        const Eigen::VectorXd delta = -solver.solve(g);
+      solver.compute(damped);
+      const Eigen::VectorXd delta = -solver.solve(g);
+      {
         const Parameters y = problem.stepped(x, delta);
         problem.set_means(y);
         const double e = delta.allFinite() ? problem.objective(y) : INFINITY;

@@ -42,7 +42,7 @@ struct FitResult {
 /// Unknowns per vertex: its mean, and (unless plain) the Cholesky factor L of its precision Σ⁻¹ = LLᵀ
 /// with a logarithmic diagonal, positive definite by construction. The limit point is
 /// x = K⁻¹h with K = Σₖ wₖ Kₖ, h = Σₖ wₖ Kₖ μₖ over the control vertices (core/fitting/limit_weights.h),
-/// whose derivatives are dx = K⁻¹ (dh − dK x). The normal equations are solved by a sparse LDLᵀ (Eigen).
+/// whose derivatives are dx = K⁻¹ (dh − dK x). The normal equations are solved by conjugate gradients (Eigen).
 /// On all cores, the same result on any number. Throws gps::Error for a mesh or points it cannot fit.
 FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options);
 
