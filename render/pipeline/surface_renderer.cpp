@@ -48,6 +48,15 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surfac
   run_compute(nullptr);
 }
 
+// Kept in the mesh's frame, as the patches are: world coordinates far from the origin lose their
+// digits in float.
+void SurfaceRenderer::set_triangles(const TriangleMesh& triangles) {
+  TriangleMesh framed = triangles;
+  const Vec3 centre(frame_.centre.x, frame_.centre.y, frame_.centre.z);
+  for (Vec3& p : framed.positions) p = (p - centre) / frame_.unit;
+  static_triangles_.set(framed);
+}
+
 void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
   // The frame stays that of set_mesh, so that the vertices not uploaded again still fit.
   frame_.to_frame(mesh, changed, framed_);
@@ -180,8 +189,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
                                                                             : cached_)
                                      : !o.static_triangles ? patches_.frame_program(shape(), o)
                                                            : static_triangles_.program(o.wireframe);
-      set_frame_uniforms(program, camera, o, aspect, target.width(), target.height(),
-                         o.static_triangles ? NormalisedFrame{} : frame_);
+      set_frame_uniforms(program, camera, o, aspect, target.width(), target.height(), frame_);
       program.use();
       if (o.static_triangles)
         static_triangles_.draw();

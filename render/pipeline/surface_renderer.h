@@ -63,8 +63,9 @@ public:
   void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);
   /// The compute passes over every vertex and stencil row (as after set_mesh), for benchmarks.
   void recompute_all() { run_compute(nullptr); }
-  /// Triangles to draw with DrawOptions::static_triangles (CPU tessellation, reference subdivision).
-  void set_triangles(const TriangleMesh& triangles) { static_triangles_.set(triangles); }
+  /// Triangles to draw with DrawOptions::static_triangles (CPU tessellation, reference subdivision), in
+  /// world coordinates; kept in the frame of the last set_mesh, as the patches are.
+  void set_triangles(const TriangleMesh& triangles);
   void set_matcap(const Image& matcap);
 
   void draw(const RenderTarget& target, const Camera& camera, const DrawOptions& options);

@@ -10,7 +10,9 @@
 #include "core/mesh/samples.h"
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"
+#include "core/evaluation/tessellator.h"
 #include "tests/support/gl_fixture.h"
+#include "tests/support/plan_fixture.h"
 #include "view/camera.h"
 
 namespace gps {
@@ -34,15 +36,21 @@ CovarianceMesh mapped(const CovarianceMesh& mesh, double scale, const Vec3& offs
   return out;
 }
 
-Render render(const CovarianceMesh& mesh, bool cached, bool overlays) {
+// static_triangles: the CPU evaluator's tessellation drawn as triangles (render --exact, --reference).
+Render render(const CovarianceMesh& mesh, bool cached, bool overlays, bool static_triangles) {
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh);
+  if (static_triangles) {
+    const test::PlannedMesh cpu(mesh, PlanOptions{});
+    renderer.set_triangles(tessellate(cpu.tables.plans, cpu.points, 12));
+  }
   RenderTarget target(kSize, kSize);
   DrawOptions o;
   o.level = 12;
   o.pixels = 0;
   o.surface_cache = cached;
   o.mesh_lines = o.ellipsoids = overlays;
+  o.static_triangles = static_triangles;
   const Camera camera = frame_mesh(mesh);
   renderer.draw(target, camera, o);
   if (cached) renderer.draw(target, camera, o);  // the second frame draws the stored triangles
@@ -51,12 +59,15 @@ Render render(const CovarianceMesh& mesh, bool cached, bool overlays) {
 
 bool covered(const Image& position, int x, int y) { return position.at(x, y, 3) > 0.5f; }
 
-void expect_same_image(double scale, const Vec3& offset, bool cached, bool overlays = false) {
+void expect_same_image(double scale, const Vec3& offset, bool cached, bool overlays = false,
+                       bool static_triangles = false) {
   const CovarianceMesh torus = make_sample("torus");
   const CovarianceMesh moved = mapped(torus, scale, offset);
-  const Render a = render(torus, cached, overlays), b = render(moved, cached, overlays);
+  const Render a = render(torus, cached, overlays, static_triangles),
+               b = render(moved, cached, overlays, static_triangles);
   const std::string what = "scale " + std::to_string(scale) + ", offset " + std::to_string(offset.x()) +
-                           (cached ? ", cached" : "") + (overlays ? ", overlays" : "");
+                           (cached ? ", cached" : "") + (overlays ? ", overlays" : "") +
+                           (static_triangles ? ", static triangles" : "");
   const double diagonal = bounding_box_diagonal(torus) * scale;
   // A float AOV holds a world position to its own precision only.
   const double position_tolerance = 1e-4 * diagonal + 4e-7 * offset.cwiseAbs().maxCoeff();
@@ -112,6 +123,12 @@ TEST_F(FrameScale, OverlaysFollowTheFrame) {
   expect_same_image(1.0, Vec3(1e7, 1e7, 1e7), false, true);
   expect_same_image(1e-6, Vec3::Zero(), false, true);
   expect_same_image(1e10, Vec3::Zero(), false, true);
+}
+
+// The CPU's triangles (--exact, --reference) are kept in the frame too.
+TEST_F(FrameScale, StaticTrianglesFollowTheFrame) {
+  expect_same_image(1.0, Vec3(1e7, 1e7, 1e7), false, false, true);
+  expect_same_image(1e10, Vec3::Zero(), false, false, true);
 }
 
 TEST_F(FrameScale, StoredTrianglesAreInWorldCoordinates) {
