@@ -4,8 +4,8 @@
 // editor_actions.cpp (open, save, undo, the unsaved-changes prompt), editor_commands.cpp (the
 // command table: keys, menus, help), editor_selection_commands.cpp (selection modes and tools),
 // editor_modelling.cpp (the Mesh menu's operations), editor_modal_tools.cpp (G / S / R, extrude,
-// loop cut, inset and crease following the mouse) and editor_mesh_jobs.cpp (File → Simplify… in
-// the background).
+// loop cut, inset and crease following the mouse) and editor_mesh_jobs.cpp (File → Simplify… and
+// Fit to… in the background).
 #include <array>
 #include <chrono>
 #include <functional>
@@ -121,6 +121,7 @@ private:
   void draw_modelling_overlay();
   // Long computations in the background (editor_mesh_jobs.cpp).
   void open_simplify_dialog();
+  void open_fit_dialog();
   void draw_job_dialog();
   // Actions (editor_actions.cpp).
   void request(Action action);
@@ -220,12 +221,18 @@ private:
     std::shared_ptr<const CovarianceMesh> shown;  // the mesh the surface was planned for
   };
   std::optional<CreaseTool> crease_;
-  // File → Simplify…: the dialog, its job and the settings it last had.
+  // File → Simplify… and Fit to…: the dialog, its job and the settings each last had.
   struct SimplifySettings {
     int vertices = 0;  // 0: a tenth of the mesh's
     double bias = 0.05;
   };
   SimplifySettings simplify_settings_;
+  struct FitSettings {
+    std::string target;  // the dense mesh
+    int iterations = 10;
+    bool plain = false;
+  };
+  FitSettings fit_settings_;
   JobDialog job_dialog_;
   std::string popup_request_;  // a popup menu (Delete, Merge, Add) a key asked for
   std::string last_summary_;   // what the last operation did

@@ -1,13 +1,16 @@
-// File → Simplify…: the long mesh computations, each in a dialog whose job runs in the background
+// File → Simplify… and Fit to…: the long mesh computations, each in a dialog whose job runs in the background
 // (ui/job_dialog.h) and whose result replaces the mesh as one undo step.
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <memory>
 
+#include "core/fitting/limit_fit.h"
 #include "core/fitting/mesh_simplification.h"
 #include "core/fitting/surface_distance.h"
+#include "core/io/mesh_io.h"
 #include "core/mesh/error.h"
 #include "ui/editor_app.h"
 
@@ -70,6 +73,52 @@ void EditorApp::open_simplify_dialog() {
       m.summary = "simplified " + std::to_string(s.input_vertices) + " to " + std::to_string(s.mesh.n_vertices()) +
                   " vertices; the input lies from the new surface within rms " + percent(d.relative_rms()) +
                   ", max " + percent(d.relative_max()) + " of its size";
+      return m;
+    };
+  };
+  job_dialog_.open(std::move(spec));
+}
+
+void EditorApp::open_fit_dialog() {
+  if (modal_active()) return;
+  const auto coarse = std::make_shared<const CovarianceMesh>(document_.mesh());
+  auto settings = std::make_shared<FitSettings>(fit_settings_);
+  // At first the file the mesh came from: after Simplify… the dense mesh a fit most likely wants.
+  if (settings->target.empty()) settings->target = document_.source_path();
+  JobDialog::Spec spec;
+  spec.title = "Fit to";
+  spec.settings = [this, settings] {
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 24.0f);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::InputText("target mesh", &settings->target);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+    ImGui::InputInt("iterations", &settings->iterations, 0);
+    ImGui::Checkbox("positions only (plain subdivision fit)", &settings->plain);
+    fit_settings_ = *settings;
+  };
+  spec.work = [coarse, settings]() -> BackgroundJob::Work {
+    if (settings->target.empty()) throw Error("name the mesh to fit to");
+    if (settings->iterations < 1 || settings->iterations > 1000) throw Error("iterations must be 1 to 1000");
+    FitOptions options;
+    options.iterations = settings->iterations;
+    options.plain = settings->plain;
+    return [coarse, options, path = settings->target](const ProgressReport& report) mutable {
+      bool has_covariances = false;
+      const std::vector<Vec3> targets = read_polygon_soup(path, has_covariances).positions;
+      if (targets.empty()) throw Error(path + ": has no vertices to fit to");
+      report_or_stop(report, 0.05);
+      options.progress = [&report, n = options.iterations](const FitIteration& it) {
+        report_or_stop(report, 0.05 + 0.95 * double(it.iteration) / double(n));
+      };
+      const FitResult fit = fit_limit_surface(*coarse, targets, options);
+      const DistanceSummary& before = fit.iterations.front().error;
+      const DistanceSummary& after = fit.iterations.back().error;
+      Modelled m;
+      m.mesh = fit.mesh;
+      m.summary = "fitted to the " + std::to_string(targets.size()) + " points of " + path + " in " +
+                  std::to_string(fit.iterations.size() - 1) + " iterations: rms " + percent(before.relative_rms()) +
+                  " to " + percent(after.relative_rms()) + ", max " + percent(before.relative_max()) + " to " +
+                  percent(after.relative_max()) + " of their size";
       return m;
     };
   };

@@ -2,10 +2,12 @@
 // Ctrl+Shift+D, a typed vertex count, Enter to start (the replay waits for the background job),
 // the result and its distance shown, Enter to apply; the saved mesh is the simplification of the
 // input with that count, Ctrl+Z restores the input exactly, and Esc or Discard change nothing.
-// Screenshots kept in build/test-artefacts/EditorSimplify/.
+// Then File → Fit to… (Ctrl+Shift+F): the dense file is the target at first, Enter starts and Enter
+// applies; the result is the core fit's. Screenshots kept in build/test-artefacts/EditorSimplify/.
 #include <gtest/gtest.h>
 
 #include "../support/editor_driver.h"
+#include "core/fitting/limit_fit.h"
 #include "core/fitting/mesh_simplification.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
@@ -62,6 +64,20 @@ TEST_F(EditorSimplify, TypedCountStartedAppliedAndUndone) {
   Events undone = applied;
   undone.key("ctrl+z").wait(3);
   expect_same(play(undone, "simplify_undone.png"), dense_);
+}
+
+TEST_F(EditorSimplify, TheSimplifiedMeshFittedToTheDenseFile) {
+  Events fitted = simplified_to("100");
+  fitted.key("enter").wait(3).key("ctrl+shift+f").wait(2).key("enter").wait(3).key("enter").wait(3);
+  const CovarianceMesh saved = play(fitted, "fitted.png");
+  SimplifyOptions options;
+  options.target_vertices = 100;
+  const CovarianceMesh coarse = simplify_mesh(dense_, options).mesh;
+  std::vector<Vec3> targets;
+  for (size_t v = 0; v < dense_.n_vertices(); ++v) targets.push_back(dense_.mean(v));
+  const FitResult fit = fit_limit_surface(coarse, targets, FitOptions{});
+  EXPECT_LT(fit.iterations.back().error.rms, fit.iterations.front().error.rms);
+  expect_same(saved, fit.mesh);
 }
 
 TEST_F(EditorSimplify, EscapeAndDiscardChangeNothing) {
