@@ -28,14 +28,14 @@ void EditorDocument::open(const std::string& path, bool repair, RepairReport* re
   CovarianceMesh loaded = read_mesh(path, options, report);  // throws before anything changes
   const bool own_ply = extension_of(path) == ".ply";
   const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
-  binary_ = own_ply && is_binary_ply(path);
+  binary_ = !own_ply || is_binary_ply(path);
   replace(std::move(loaded), absolute, own_ply ? absolute : "", std::filesystem::path(path).filename().string());
   if (repair) history_.mark_unsaved();
 }
 
 void EditorDocument::open_sample(const std::string& name) {
   CovarianceMesh loaded = make_sample(name);
-  binary_ = false;
+  binary_ = true;
   replace(std::move(loaded), "", "", "sample " + name);
 }
 

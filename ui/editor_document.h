@@ -24,7 +24,8 @@ public:
   /// A built-in sample, untitled (saving asks for a file name).
   void open_sample(const std::string& name);
   /// Writes the mesh (atomically) to `path`, which becomes the document's file when it is a PLY;
-  /// keeps binary PLY binary. Throws gps::Error and keeps everything on failure.
+  /// binary little endian, unless the document was opened from an ASCII PLY (which stays text).
+  /// Throws gps::Error and keeps everything on failure.
   void save(const std::string& path);
 
   /// Whether Save can write back where the mesh came from (a covariance PLY of ours to keep); false
@@ -89,7 +90,7 @@ private:
   std::unordered_map<int, size_t> edit_index_;  // vertex → its slot in edit_
   std::vector<int> changed_;
   std::string source_path_, ply_path_, display_name_;
-  bool binary_ = false;
+  bool binary_ = true;
 };
 
 }  // namespace gps

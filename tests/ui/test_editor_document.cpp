@@ -70,6 +70,19 @@ TEST(EditorDocument, SamplesAndImportsAskWhereToSave) {
   EXPECT_TRUE(doc.can_save_in_place());
   EXPECT_EQ(doc.display_name(), "edited.ply");
   EXPECT_EQ(read_mesh(dir.file("edited.ply")).n_vertices(), 8u);
+  EXPECT_EQ(read_text_file(dir.file("edited.ply")).rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
+}
+
+TEST(EditorDocument, AnAsciiPlyStaysText) {
+  const test::TempDir dir;
+  write_mesh(dir.file("a.ply"), make_sample("cube"), false);
+  EditorDocument doc;
+  doc.open(dir.file("a.ply"));
+  doc.save(doc.ply_path());
+  EXPECT_EQ(read_text_file(dir.file("a.ply")).rfind("ply\nformat ascii 1.0\n", 0), 0u);
+  doc.open_sample("cube");
+  doc.save(dir.file("sample.ply"));
+  EXPECT_EQ(read_text_file(dir.file("sample.ply")).rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
 }
 
 TEST(EditorDocument, AFailedSaveKeepsTheFileAndTheState) {
