@@ -21,4 +21,15 @@ long long count_non_finite_pixels(const Image& position, const Image& normal) {
   return count;
 }
 
+long long count_covered_pixels(const Image& normal) {
+  long long count = 0;
+  for (int y = 0; y < normal.height; ++y)
+    for (int x = 0; x < normal.width; ++x) {
+      bool covered = false;
+      for (int c = 0; c < normal.channels; ++c) covered = covered || normal.at(x, y, c) != 0.0f;
+      count += covered;
+    }
+  return count;
+}
+
 }  // namespace gps

@@ -18,31 +18,13 @@
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/plan_fixture.h"
+#include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
 
 using NeedleCovariances = test::GlTest;
-
-// The torus turned about a generic axis, each vertex's Gaussian of mean σ s (its isotropic σ) made a
-// disc (σ along the vertex normal divided by `ratio`) or a needle (σ across the normal divided by it):
-// condition number ratio².
-CovarianceMesh thin_torus(double ratio, bool needle) {
-  CovarianceMesh mesh = make_sample("torus");
-  const Mat3 turn = Eigen::AngleAxisd(0.7, Vec3(0.3, 1.0, 0.5).normalized()).toRotationMatrix();
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) mesh.set_mean(i, turn * mesh.mean(i));
-  const Vec3 axis = turn * Vec3::UnitY();  // the torus' axis of revolution
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
-    // The normal of a torus point: from the nearest point of its core circle.
-    const Vec3 p = mesh.mean(i), flat = p - p.dot(axis) * axis;
-    const Vec3 n = (p - 2.0 * flat.normalized()).normalized();
-    const double s = std::cbrt(std::sqrt(mesh.covariance(i).determinant()));
-    const Mat3 along = n * n.transpose(), across = Mat3::Identity() - along;
-    const double thin = s / ratio;
-    mesh.set_covariance(i, needle ? Mat3(thin * thin * across + s * s * along) : Mat3(s * s * across + thin * thin * along));
-  }
-  return mesh;
-}
+using test::thin_torus;
 
 struct Errors {
   double position = 0, normal_degrees = 0;

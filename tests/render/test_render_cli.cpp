@@ -6,9 +6,13 @@
 #include <cstdlib>
 #include <string>
 
+#include <filesystem>
+
+#include "core/io/mesh_io.h"
 #include "render/image/image_io.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
@@ -116,6 +120,22 @@ double figure_after(const std::string& text, const std::string& label) {
 // --exact draws the patches' own triangles (at the default adaptive levels here) with the CPU's
 // exact values: its AOVs differ from the patches' by the GPU's float error alone, under Loop (whose
 // triangles no reference level has) and under Catmull-Clark on a mixed mesh.
+// Discs of condition 1e12 are beyond the float evaluation: the framed image would show none of the
+// surface, which is said (exit 1, nothing written), not written as an empty picture.
+TEST(RenderCli, AFramedImageWithoutTheSurfaceIsRefused) {
+  test::TempDir dir;
+  write_mesh(dir.file("thin.ply"), test::thin_torus(1e6, false));
+  const auto r = run_command(gpsurf("render " + dir.file("thin.ply") + " -o " + dir.file("thin.png") + " --size 96x96"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("thin.ply: the surface covers no pixel of the image framed on it"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("thin.png")));
+  write_mesh(dir.file("fine.ply"), test::thin_torus(1e2, false));
+  EXPECT_EQ(run_command(gpsurf("render " + dir.file("fine.ply") + " -o " + dir.file("fine.png") + " --size 96x96"))
+                .exit_code,
+            0);
+}
+
 TEST(RenderCli, ExactEvaluatorDrawsThePatchesOwnTriangles) {
   test::TempDir dir;
   for (const char* sample : {"icosphere", "pawn"}) {

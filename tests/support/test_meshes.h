@@ -1,10 +1,12 @@
 #pragma once
 // Small covariance meshes built inside the tests (no files).
+#include <Eigen/Geometry>
 #include <cmath>
 #include <random>
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "core/mesh/samples.h"
 #include "tests/support/random_spd.h"
 
 namespace gps::test {
@@ -115,6 +117,26 @@ inline CovarianceMesh open_cylinder_mesh(double sigma = 0.4) {
       faces.push_back({r * 8 + k, r * 8 + (k + 1) % 8, (r + 1) * 8 + (k + 1) % 8, (r + 1) * 8 + k});
   for (int k = 0; k < 8; ++k) faces.push_back({24, 16 + k, 16 + (k + 1) % 8});
   return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "open-cylinder");
+}
+
+/// The torus turned about a generic axis, each vertex's Gaussian of mean σ s (its isotropic σ) made a
+/// disc (σ along the vertex normal divided by `ratio`) or a needle (σ across the normal divided by it):
+/// condition number ratio².
+inline CovarianceMesh thin_torus(double ratio, bool needle) {
+  CovarianceMesh mesh = make_sample("torus");
+  const Mat3 turn = Eigen::AngleAxisd(0.7, Vec3(0.3, 1.0, 0.5).normalized()).toRotationMatrix();
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) mesh.set_mean(i, turn * mesh.mean(i));
+  const Vec3 axis = turn * Vec3::UnitY();  // the torus' axis of revolution
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+    // The normal of a torus point: from the nearest point of its core circle.
+    const Vec3 p = mesh.mean(i), flat = p - p.dot(axis) * axis;
+    const Vec3 n = (p - 2.0 * flat.normalized()).normalized();
+    const double s = std::cbrt(std::sqrt(mesh.covariance(i).determinant()));
+    const Mat3 along = n * n.transpose(), across = Mat3::Identity() - along;
+    const double thin = s / ratio;
+    mesh.set_covariance(i, needle ? Mat3(thin * thin * across + s * s * along) : Mat3(s * s * across + thin * thin * along));
+  }
+  return mesh;
 }
 
 }  // namespace gps::test
