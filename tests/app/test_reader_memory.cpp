@@ -18,34 +18,15 @@
 #include "core/io/mesh_io.h"
 #include "core/mesh/error.h"
 
+#include "tests/support/measured_run.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {
 namespace {
 
-struct MeasuredRun {
-  int exit_code = -1;
-  long peak_kb = 0;  // the child's maximum resident set size
-};
-
-MeasuredRun run_measured(const std::vector<std::string>& args) {
-  std::fflush(stdout);  // or the child would print what is buffered again
-  const pid_t child = ::fork();
-  if (child == 0) {
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::freopen("/dev/null", "w", stdout);
-    ::freopen("/dev/null", "w", stderr);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  ::wait4(child, &status, 0, &usage);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, usage.ru_maxrss};
-}
+using test::MeasuredRun;
+using test::run_measured;
 
 // The peak resident set of a forked child running `f` (its exit code: 0, or 1 where f throws
 // gps::Error). The child starts with this process's pages, so a child that does nothing is the baseline.

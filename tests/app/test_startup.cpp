@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/measured_run.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -34,32 +35,13 @@ namespace {
 using test::gpsurf;
 using test::run_command;
 
-struct MeasuredRun {
-  int exit_code = -1;
-  long peak_kb = 0;  // the child's maximum resident set size
-};
+using test::MeasuredRun;
 
-// Runs gpsurf with `args`, its output discarded; with `trace`, the dynamic loader writes every
-// library it loads (linked or opened later) to files named trace.PID (glibc's LD_DEBUG=files).
+// Runs gpsurf with `args`, its output discarded; with `trace`, the libraries it loads are written there.
 MeasuredRun run_gpsurf(const std::vector<std::string>& args, const std::string& trace = "") {
-  std::fflush(stdout);  // or the child would print what is buffered again
-  const pid_t child = ::fork();
-  if (child == 0) {
-    std::vector<char*> argv{const_cast<char*>(GPSURF_BINARY)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    if (!trace.empty()) {
-      ::setenv("LD_DEBUG", "files", 1);
-      ::setenv("LD_DEBUG_OUTPUT", trace.c_str(), 1);
-    }
-    if (!std::freopen("/dev/null", "w", stdout) || !std::freopen("/dev/null", "w", stderr)) ::_exit(126);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  ::wait4(child, &status, 0, &usage);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, usage.ru_maxrss};
+  std::vector<std::string> argv{GPSURF_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return test::run_measured(argv, trace);
 }
 
 // What the loader wrote for a run traced into `folder`/trace.
