@@ -113,7 +113,9 @@ DrawOptions flagging_options() {
 
 // Meshes as people have them, repaired as read (core/io/mesh_repair.h), each closed once repaired:
 // "repaired-soup", a cube whose quads each have their own corners, one of them flipped and one given
-// twice, and a vertex in no face; "repaired-pinch", two tetrahedra on one apex (split into two).
+// twice, and a vertex in no face; "repaired-pinch", two tetrahedra on one apex (split into two);
+// "repaired-fin", a tetrahedron with a third face on one edge (a fin, given its own corners);
+// "repaired-dangling", a tetrahedron with a triangle hanging off one corner (split off).
 CovarianceMesh repaired_mesh(const std::string& name) {
   PolygonSoup soup;
   const auto add_face = [&](std::initializer_list<int> face) {
@@ -132,6 +134,18 @@ CovarianceMesh repaired_mesh(const std::string& name) {
         add_face({base, base + 1, base + 2, base + 3});
     }
     soup.positions.emplace_back(3, 3, 3);
+  } else if (name == "repaired-fin" || name == "repaired-dangling") {
+    soup.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(-0.6, -0.6, 0.8)};
+    add_face({0, 2, 1});
+    add_face({0, 1, 3});
+    add_face({0, 3, 2});
+    add_face({1, 2, 3});
+    if (name == "repaired-fin") {
+      add_face({0, 1, 4});  // edge 0–1's third face
+    } else {
+      soup.positions.emplace_back(-0.9, 0.1, 0.5);
+      add_face({0, 4, 5});  // on vertex 0 alone
+    }
   } else {  // repaired-pinch
     soup.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
                       Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0, -1)};
@@ -177,6 +191,8 @@ TEST_F(GpuTest, TessellationIsCrackFree) {
     EXPECT_EQ(holes, 0) << what << " (see crack-" << what << ".png)";
     if (cracks || holes) write_image("crack-" + what + ".png", f.color);
   };
+  // Not the fin nor the dangling triangle: once split off each is a lone open triangle, seen here
+  // from behind, all back face (the pinhole test below takes them).
   for (const char* name :
        {"cube", "wirecube", "cylinder", "pawn", "open-cylinder", "icosphere", "creased_cube", "creased_cylinder",
         "creased_cone", "repaired-soup", "repaired-pinch"}) {
@@ -275,7 +291,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::ValuesIn([] {  // every built-in sample, the open cylinder of quads and triangles, creased and repaired meshes
       std::vector<std::string> names = sample_names();
       names.insert(names.end(), {"open-cylinder", "creased_cube", "creased_cylinder", "creased_cone", "repaired-soup",
-                                 "repaired-pinch"});
+                                 "repaired-pinch", "repaired-fin", "repaired-dangling"});
       return names;
     }()),
     [](const auto& info) {
