@@ -5,6 +5,7 @@
 #include "app/naming_input.h"
 #include "app/plan_arguments.h"
 #include "app/repair_arguments.h"
+#include "core/fitting/face_triangles.h"
 #include "core/fitting/surface_distance.h"
 #include "core/io/mesh_io.h"
 
@@ -14,7 +15,7 @@ void add_compare_command(CLI::App& app) {
   struct Args {
     std::string first, second;
     int level = 8;
-    bool both = false, samples = false;
+    bool both = false, samples = false, linear = false;
     PlanArguments plans;
     RepairArguments repair;
   };
@@ -26,8 +27,11 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("A", args->first, "mesh whose points are measured")->required();
   cmd->add_option("B", args->second, "mesh whose limit surface they are measured to")->required();
   cmd->add_flag("--both", args->both, "also B's points to A's limit surface");
-  cmd->add_flag("--samples", args->samples,
+  auto* samples = cmd->add_flag("--samples", args->samples,
                 "measure the points of the measured mesh's limit surface at --level instead of its vertices");
+  cmd->add_flag("--linear", args->linear,
+                "measure to the faces themselves (the piecewise-linear control mesh) instead of the limit surface")
+      ->excludes(samples);
   auto* level = cmd->add_option("--level", args->level,
                                 "tessellation level of the limit surfaces (default 8, lower for a surface that would "
                                 "make more than 2 million triangles)")
@@ -40,6 +44,7 @@ void add_compare_command(CLI::App& app) {
     const CovarianceMesh b = read_mesh_repairing(args->second, args->repair);
     const double max_triangles = level->count() > 0 ? INFINITY : kMeasuredTriangles;
     const auto limit_of = [&](const std::string& path, const CovarianceMesh& m) {
+      if (args->linear) return LimitTriangles{face_triangles(m), 0};
       return naming_input(path, [&] { return limit_surface_triangles(m, args->level, options, max_triangles); });
     };
     const LimitTriangles limit_b = limit_of(args->second, b);
@@ -49,8 +54,9 @@ void add_compare_command(CLI::App& app) {
                             const std::string& to, const LimitTriangles& limit) {
       const std::vector<Vec3> points = args->samples ? own_limit.triangles.positions : vertex_means(m);
       std::cout << escaped(from) << " (" << points.size() << (args->samples ? " limit samples" : " vertices")
-                << ") to the limit surface of " << escaped(to) << " (level " << limit.level << "):\n"
-                << describe(distances_to_surface(points, limit.triangles));
+                << ") to " << (args->linear ? "the faces of " : "the limit surface of ") << escaped(to);
+      if (!args->linear) std::cout << " (level " << limit.level << ")";
+      std::cout << ":\n" << describe(distances_to_surface(points, limit.triangles));
     };
     report(args->first, a, limit_a, args->second, limit_b);
     if (args->both) report(args->second, b, limit_b, args->first, limit_a);

@@ -51,6 +51,23 @@ TEST(CompareCli, PointsOffsetFromAFlatLimitSurfaceAreTheOffsetAway) {
   EXPECT_NE(samples.output.find("\nmax 0.25 "), std::string::npos) << samples.output;
 }
 
+TEST(CompareCli, LinearMeasuresToTheFacesThemselves) {
+  test::TempDir dir;
+  // An octahedron's vertices lie on its own faces, but off its limit surface, which subdivision
+  // shrinks towards the centre.
+  const std::string octahedron = dir.write("octahedron.obj",
+                                           "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n"
+                                           "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n");
+  const auto linear = run_command(gpsurf("compare " + octahedron + " " + octahedron + " --linear"));
+  ASSERT_EQ(linear.exit_code, 0) << linear.output;
+  EXPECT_NE(linear.output.find("(6 vertices) to the faces of"), std::string::npos) << linear.output;
+  EXPECT_NE(linear.output.find("\nmax 0 (0.000e+00 of the diagonal)\n"), std::string::npos) << linear.output;
+  const auto limit = run_command(gpsurf("compare " + octahedron + " " + octahedron));
+  ASSERT_EQ(limit.exit_code, 0) << limit.output;
+  EXPECT_EQ(limit.output.find("\nmax 0 "), std::string::npos) << limit.output;
+  EXPECT_EQ(run_command(gpsurf("compare " + octahedron + " " + octahedron + " --linear --samples")).exit_code, 2);
+}
+
 TEST(CompareCli, UsageAndRuntimeErrorsAreOneLine) {
   test::TempDir dir;
   const std::string a = dir.write("a.obj", flat_grid_obj(2, 1, 0, 0));

@@ -1,0 +1,19 @@
+#include "core/fitting/face_triangles.h"
+
+namespace gps {
+
+TriangleMesh face_triangles(const CovarianceMesh& mesh) {
+  TriangleMesh result;
+  result.positions.reserve(mesh.n_vertices());
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) result.positions.push_back(mesh.mean(i));
+  result.normals.assign(result.positions.size(), Vec3::Zero());
+  for (const auto face : mesh.mesh.faces()) {
+    std::vector<int> corners;
+    for (const auto v : mesh.mesh.fv_range(face)) corners.push_back(v.idx());
+    for (size_t k = 1; k + 1 < corners.size(); ++k) result.triangles.push_back({corners[0], corners[k], corners[k + 1]});
+  }
+  fill_missing_normals(result);
+  return result;
+}
+
+}  // namespace gps

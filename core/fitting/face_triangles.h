@@ -1,0 +1,14 @@
+#pragma once
+// A covariance mesh's faces themselves as triangles: the piecewise-linear control polygon that a
+// limit surface is compared against (how far a simplified mesh lies from its input before any
+// subdivision).
+#include "core/evaluation/triangle_mesh.h"
+#include "core/mesh/covariance_mesh.h"
+
+namespace gps {
+
+/// Every face of `mesh` split into a fan of triangles from its first corner, on the means, with
+/// each vertex's area-weighted normal.
+TriangleMesh face_triangles(const CovarianceMesh& mesh);
+
+}  // namespace gps
