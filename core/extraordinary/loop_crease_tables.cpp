@@ -8,16 +8,21 @@
 
 namespace gps {
 
-int LoopCreaseTables::offset(const LocalMesh& m, int v, int a, int b, std::vector<int>& points) {
+std::shared_ptr<const std::vector<double>> LoopCreaseTables::table(const LocalMesh& m, int v, int a, int b,
+                                                                  std::vector<int>& points) {
   const auto neighbourhood = neighbourhood_signature(m, {v, a, b});
-  if (!neighbourhood) return -1;
+  if (!neighbourhood) return nullptr;
   points = neighbourhood->points;
-  const auto [it, added] = offsets_.try_emplace(neighbourhood->signature, -1);
-  if (added) it->second = compute(neighbourhood->signature);
-  return it->second;
+  {
+    const std::lock_guard lock(mutex_);
+    if (const auto it = tables_.find(neighbourhood->signature); it != tables_.end()) return it->second;
+  }
+  auto computed = compute(neighbourhood->signature);  // outside the lock: threads meeting other signatures go on
+  const std::lock_guard lock(mutex_);
+  return tables_.try_emplace(neighbourhood->signature, std::move(computed)).first->second;
 }
 
-int LoopCreaseTables::compute(const std::vector<int>& signature) {
+std::shared_ptr<const std::vector<double>> LoopCreaseTables::compute(const std::vector<int>& signature) const {
   const LocalMesh coarse = neighbourhood_mesh(signature, 3);
   const LocalMesh fine = refine_local_mesh_loop(coarse, beta_);
   const int k = coarse.topology.n_vertices;
@@ -25,7 +30,7 @@ int LoopCreaseTables::compute(const std::vector<int>& signature) {
   const int ea = edge_point(0, 1), eb = edge_point(0, 2), eab = edge_point(1, 2);
   // A: the corner child (v', e_va, e_vb) must have the same neighbourhood, one level down.
   const auto child = neighbourhood_signature(fine, {0, ea, eb});
-  if (!child || child->signature != signature) return -1;
+  if (!child || child->signature != signature) return nullptr;
   std::vector<LocalCombination> step_rows;
   for (const int p : child->points) step_rows.push_back({{p, 1.0}});
   const Eigen::MatrixXd step = rows_over_neighbourhood(fine, step_rows, k);
@@ -36,17 +41,16 @@ int LoopCreaseTables::compute(const std::vector<int>& signature) {
     const auto& x = children[c];
     const int face = fine.find_face({x[0], x[1], x[2]});
     for (const int corner : x)
-      if (!regular_loop_corner(fine, corner, face)) return -1;
+      if (!regular_loop_corner(fine, corner, face)) return nullptr;
     const auto net = loop_regular_net(x[0], x[1], x[2],
                                       {sector_fan(fine, x[0], face), sector_fan(fine, x[1], face), sector_fan(fine, x[2], face)});
     std::vector<LocalCombination> rows;
     for (const auto& combination : net) rows.emplace_back(combination.begin(), combination.end());
     nets[c] = rows_over_neighbourhood(fine, rows, k);
   }
-  const int offset = int(tables_.size());
-  tables_.resize(tables_.size() + loop_extraordinary_table_size(k), 0.0);
-  write_loop_extraordinary_table(nets, step, &tables_[size_t(offset)]);
-  return offset;
+  auto table = std::make_shared<std::vector<double>>(loop_extraordinary_table_size(k), 0.0);
+  write_loop_extraordinary_table(nets, step, table->data());
+  return table;
 }
 
 }  // namespace gps

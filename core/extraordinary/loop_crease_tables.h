@@ -6,6 +6,8 @@
 // edges and vertices the crease rules read. Darts, crease vertices with other than three triangles on
 // a side, and corners all take such a table.
 #include <map>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "core/plans/local_mesh.h"
@@ -16,18 +18,17 @@ namespace gps {
 class LoopCreaseTables {
 public:
   explicit LoopCreaseTables(LoopBeta beta) : beta_(beta) {}
-  /// Offset of the table of triangle (v, a, b) of m (in face order, v its one irregular corner), and
-  /// its neighbourhood's points in table order in `points`; −1 where the neighbourhood is not
-  /// self-similar (one more level of plan is needed).
-  int offset(const LocalMesh& m, int v, int a, int b, std::vector<int>& points);
-  std::vector<double> take() { return std::move(tables_); }
+  /// The table of triangle (v, a, b) of m (in face order, v its one irregular corner), computed on first
+  /// use, and its neighbourhood's points in table order in `points`; null where the neighbourhood is not
+  /// self-similar (one more level of plan is needed). Safe to call from several threads.
+  std::shared_ptr<const std::vector<double>> table(const LocalMesh& m, int v, int a, int b, std::vector<int>& points);
 
 private:
-  int compute(const std::vector<int>& signature);
+  std::shared_ptr<const std::vector<double>> compute(const std::vector<int>& signature) const;
 
   LoopBeta beta_;
-  std::map<std::vector<int>, int> offsets_;
-  std::vector<double> tables_;
+  std::mutex mutex_;
+  std::map<std::vector<int>, std::shared_ptr<const std::vector<double>>> tables_;
 };
 
 }  // namespace gps

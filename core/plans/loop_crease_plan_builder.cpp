@@ -1,12 +1,15 @@
 #include "core/plans/loop_crease_plan_builder.h"
 
+#include <algorithm>
 #include <array>
+#include <exception>
 #include <stdexcept>
 
 #include "core/extraordinary/loop_crease_tables.h"
 #include "core/plans/local_mesh.h"
 #include "core/plans/loop_nets.h"
 #include "core/plans/plan_descent.h"
+#include "core/plans/range_plans.h"
 #include "core/plans/quad_nets.h"
 #include "core/plans/stencil_table.h"
 #include "core/plans/triangle_sectors.h"
@@ -17,21 +20,20 @@ namespace {
 
 class CreasedLoopBuilder {
 public:
-  CreasedLoopBuilder(const PolygonTopology& t, LoopBeta beta, const Sharpness& sharpness)
-      : beta_(beta), base_(base_local_mesh(t, sharpness)), tables_(beta), stencils_(t.n_vertices) {
+  CreasedLoopBuilder(const LocalMesh& base, LoopBeta beta, LoopCreaseTables& tables)
+      : beta_(beta), base_(base), tables_(tables), stencils_(base.topology.n_vertices) {
     plans_.shape = PatchShape::triangle;
   }
 
-  SurfaceTables build() {
+  RangePlans build(int first, int last) {
     const PolygonTopology& t = base_.topology;
-    plans_.patch_corner_points = t.verts;
-    for (int f = 0; f < t.n_faces(); ++f) {
+    plans_.patch_corner_points.assign(t.verts.begin() + 3 * first, t.verts.begin() + 3 * last);
+    for (int f = first; f < last; ++f) {
       const int* v = &t.verts[size_t(t.offsets[size_t(f)])];
       plans_.patch_roots.push_back(build_node(base_, {v[0], v[1], v[2]}, 0, f));
     }
     plans_.max_depth = deepest_;
-    plans_.extraordinary_tables = tables_.take();
-    return {std::move(plans_), stencils_.finish()};
+    return {{std::move(plans_), stencils_.finish()}, std::move(extraordinary_tables_)};
   }
 
 private:
@@ -57,10 +59,13 @@ private:
     }
     if (irregular == 1 && m.complete[size_t(x[size_t(corner)])]) {
       std::vector<int> points;
-      const int table = tables_.offset(m, x[size_t(corner)], x[size_t((corner + 1) % 3)], x[size_t((corner + 2) % 3)],
-                                       points);
-      if (table >= 0) {
-        plans_.nodes.insert(plans_.nodes.end(), {kNodeExtraordinary, corner, table, int(points.size())});
+      if (auto table = tables_.table(m, x[size_t(corner)], x[size_t((corner + 1) % 3)],
+                                     x[size_t((corner + 2) % 3)], points)) {
+        auto used = std::find(extraordinary_tables_.begin(), extraordinary_tables_.end(), table);
+        if (used == extraordinary_tables_.end())
+          used = extraordinary_tables_.insert(extraordinary_tables_.end(), std::move(table));
+        const int index = int(used - extraordinary_tables_.begin());
+        plans_.nodes.insert(plans_.nodes.end(), {kNodeExtraordinary, corner, index, int(points.size())});
         for (const int p : points) plans_.nodes.push_back(point(m, {{p, 1.0}}));
         return offset;
       }
@@ -83,8 +88,9 @@ private:
   }
 
   LoopBeta beta_;
-  LocalMesh base_;
-  LoopCreaseTables tables_;
+  const LocalMesh& base_;
+  LoopCreaseTables& tables_;
+  std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables_;
   StencilTableBuilder stencils_;
   PatchPlans plans_;
   int deepest_ = 0;
@@ -92,8 +98,30 @@ private:
 
 }  // namespace
 
+RangePlans build_creased_loop_range(const LocalMesh& base, int first, int last, LoopBeta beta,
+                                    LoopCreaseTables& tables) {
+  return CreasedLoopBuilder(base, beta, tables).build(first, last);
+}
+
 SurfaceTables build_creased_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness) {
-  return CreasedLoopBuilder(topology, beta, sharpness).build();
+  const LocalMesh base = base_local_mesh(topology, sharpness);
+  // Faces in ranges, built on all cores (OpenMP), merged in order (core/plans/range_plans.h).
+  const int n_faces = topology.n_faces(), n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);
+  std::vector<RangePlans> parts(static_cast<size_t>(n_ranges));
+  LoopCreaseTables tables(beta);
+  std::vector<std::exception_ptr> failures(parts.size());
+#pragma omp parallel for schedule(dynamic)
+  for (int r = 0; r < n_ranges; ++r) {
+    try {
+      parts[size_t(r)] =
+          build_creased_loop_range(base, r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange), beta, tables);
+    } catch (...) {
+      failures[size_t(r)] = std::current_exception();
+    }
+  }
+  for (const auto& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+  return merge_ranges(parts, topology.n_vertices, true);
 }
 
 }  // namespace gps

@@ -7,11 +7,20 @@
 
 namespace gps {
 
+struct LocalMesh;         // core/plans/local_mesh.h
+struct RangePlans;        // core/plans/range_plans.h
+class LoopCreaseTables;  // core/extraordinary/loop_crease_tables.h
+
 /// One plan per triangle, as build_loop_plans lays them out: a triangle whose corners are regular
 /// (core/plans/triangle_sectors.h) is one box-spline node, folded beyond infinitely sharp creases as
 /// beyond a boundary; one with a single irregular corner whose neighbourhood is self-similar is an
 /// exact node (core/extraordinary/loop_crease_tables.h); any other is split, so semi-sharp creases
 /// refine until their sharpness has decayed. The topology must have passed build_loop_plans' checks.
 SurfaceTables build_creased_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness);
+
+/// The plans of faces [first, last) of `base` (base_local_mesh of the topology and its sharpness), for
+/// merge_ranges (core/plans/range_plans.h); exact tables come from `tables`, which ranges may share.
+RangePlans build_creased_loop_range(const LocalMesh& base, int first, int last, LoopBeta beta,
+                                    LoopCreaseTables& tables);
 
 }  // namespace gps

@@ -160,6 +160,8 @@ private:
 
 }  // namespace
 
+void check_loop_plans(const PolygonTopology& topology) { LoopBuilder(topology, LoopBeta::loop).check(); }
+
 SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness) {
   LoopBuilder builder(topology, beta);
   builder.check();

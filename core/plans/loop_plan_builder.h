@@ -14,6 +14,9 @@ namespace gps {
 /// With creases or corners, core/plans/loop_crease_plan_builder.h builds them.
 SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness = {});
 
+/// build_loop_plans' checks of the topology; throws as it does.
+void check_loop_plans(const PolygonTopology& topology);
+
 /// The largest valence the exact tables take (their size grows with it).
 inline constexpr int kMaxLoopValence = 64;
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <exception>
-#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -12,6 +11,7 @@
 #include "core/plans/plan_descent.h"
 #include "core/extraordinary/quad_extraordinary_tables.h"
 #include "core/plans/quad_nets.h"
+#include "core/plans/range_plans.h"
 #include "core/plans/stencil_table.h"
 
 namespace gps {
@@ -23,13 +23,6 @@ using Combo = LocalCombination;
 // Exact plans of a smooth mesh refine past their depth only where a node is not yet self-similar;
 // this bounds it (creased meshes go down to kMaxPlanDepth, core/plans/plan_descent.h).
 constexpr int kDeepestPlan = 8;
-
-// The plans of a range of faces; an extraordinary node's table field holds an index into `extraordinary_tables`
-// until merge() lays the tables out.
-struct RangePlans {
-  SurfaceTables tables;
-  std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables;
-};
 
 // Builds the plans of the faces [first, last): patches in face order, stencil rows in the order of
 // their first use, point indices and node offsets local to this range (merge() renumbers them).
@@ -205,76 +198,6 @@ private:
   PatchPlans plans_;
 };
 
-// Appends the plans of consecutive face ranges in order. A row is added to the whole table where it
-// is first used, which is in the first range that uses it, in that range's order: so the result is
-// the table a single range over all faces gives, bit for bit, whatever the ranges. The rows are
-// merged in order, one range after the other; the renumbered nodes are then copied on all cores.
-// The extraordinary tables are laid out in the order of their first use, so the same.
-SurfaceTables merge(std::vector<RangePlans>& ranges, int n_base) {
-  StencilTableBuilder stencils(n_base);
-  PatchPlans plans;
-  std::vector<std::vector<int>> extraordinary_offset(ranges.size());  // per range: table index -> offset in the whole
-  std::map<const std::vector<double>*, int> laid_out;
-  for (size_t r = 0; r < ranges.size(); ++r)
-    for (const auto& table : ranges[r].extraordinary_tables) {
-      const auto [at, added] = laid_out.try_emplace(table.get(), int(plans.extraordinary_tables.size()));
-      if (added) plans.extraordinary_tables.insert(plans.extraordinary_tables.end(), table->begin(), table->end());
-      extraordinary_offset[r].push_back(at->second);
-    }
-  std::vector<SurfaceTables> parts(ranges.size());
-  for (size_t r = 0; r < ranges.size(); ++r) parts[r] = std::move(ranges[r].tables);
-  std::vector<std::vector<int>> rows(parts.size());  // per range: local row -> point in the whole table
-  for (size_t r = 0; r < parts.size(); ++r) {
-    const StencilTable& s = parts[r].stencils;
-    rows[r].resize(size_t(s.n_rows()));
-    for (int row = 0; row < s.n_rows(); ++row) rows[r][size_t(row)] = stencils.add_row(s, row);
-  }
-  // Where each range's records start in the whole table.
-  std::vector<size_t> node_base(parts.size() + 1, 0), patch_base(parts.size() + 1, 0);
-  for (size_t r = 0; r < parts.size(); ++r) {
-    plans.max_depth = std::max(plans.max_depth, parts[r].plans.max_depth);
-    node_base[r + 1] = node_base[r] + parts[r].plans.nodes.size();
-    patch_base[r + 1] = patch_base[r] + parts[r].plans.patch_roots.size();
-  }
-  plans.nodes.resize(node_base.back());
-  plans.patch_roots.resize(patch_base.back());
-  plans.patch_corner_points.resize(4 * patch_base.back());
-  plans.patch_edges.resize(kPatchEdgeStride * patch_base.back());
-#pragma omp parallel for schedule(dynamic)
-  for (size_t r = 0; r < parts.size(); ++r) {
-    const PatchPlans& p = parts[r].plans;
-    const auto point = [&row = rows[r], n_base](int p) { return p < n_base ? p : row[size_t(p - n_base)]; };
-    const int base = int(node_base[r]);
-    int32_t* nodes = plans.nodes.data() + node_base[r];
-    for (size_t o = 0; o < p.nodes.size();) {  // node records: kind, then children, points or a table
-      const auto kind = NodeKind(node_kind(p.nodes[o]));
-      nodes[o] = p.nodes[o];
-      if (kind == NodeKind::extraordinary) {  // corner, table, K, K points
-        const size_t k = size_t(p.nodes[o + 3]);
-        nodes[o + 1] = p.nodes[o + 1];
-        nodes[o + 2] = extraordinary_offset[r][size_t(p.nodes[o + 2])];
-        nodes[o + 3] = p.nodes[o + 3];
-        for (size_t i = o + 4; i < o + 4 + k; ++i) nodes[i] = point(p.nodes[i]);
-        o += 4 + k;
-        continue;
-      }
-      const size_t n = kind == NodeKind::internal ? 4 : 16;
-      for (size_t i = o + 1; i <= o + n; ++i)
-        nodes[i] = kind == NodeKind::internal ? base + p.nodes[i] : point(p.nodes[i]);
-      o += n + 1;
-    }
-    const size_t first = patch_base[r];
-    for (size_t i = 0; i < p.patch_roots.size(); ++i) plans.patch_roots[first + i] = base + p.patch_roots[i];
-    for (size_t i = 0; i < p.patch_corner_points.size(); ++i)
-      plans.patch_corner_points[4 * first + i] = point(p.patch_corner_points[i]);
-    for (size_t i = 0; i < p.patch_edges.size(); ++i)
-      plans.patch_edges[kPatchEdgeStride * first + i] =
-          i % kPatchEdgeInts == 2 ? p.patch_edges[i] : point(p.patch_edges[i]);
-    parts[r] = {};
-  }
-  return {std::move(plans), stencils.finish()};
-}
-
 }  // namespace
 
 namespace {
@@ -300,15 +223,24 @@ void check_plan_valences(const PolygonTopology& t) {
 }
 }  // namespace
 
-SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary,
-                          bool bspline_leaves, const Sharpness& sharpness) {
+void check_quad_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary) {
   const int shallowest = extraordinary == ExtraordinaryNodes::exact ? 0 : 1;
   if (max_depth < shallowest || max_depth > kDeepestPlan)
     throw usage_error("plan depth must be " + std::to_string(shallowest) + "..8, got " + std::to_string(max_depth));
   check_plan_valences(topology);
+}
+
+RangePlans build_quad_range(const LocalMesh& base, int first, int last, int max_depth,
+                            ExtraordinaryNodes extraordinary, bool bspline_leaves,
+                            QuadExtraordinaryTableCache& cache) {
+  return Builder(base, max_depth, extraordinary, bspline_leaves, cache).build(first, last);
+}
+
+SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary,
+                          bool bspline_leaves, const Sharpness& sharpness) {
+  check_quad_plans(topology, max_depth, extraordinary);
   const LocalMesh base = base_local_mesh(topology, sharpness);
   // Faces in ranges of a fixed size, built on all cores (OpenMP), merged in order.
-  constexpr int kFacesPerRange = 1024;
   const int n_faces = topology.n_faces(), n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);
   std::vector<RangePlans> parts(static_cast<size_t>(n_ranges));
   QuadExtraordinaryTableCache cache;
@@ -316,15 +248,15 @@ SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, Extrao
 #pragma omp parallel for schedule(dynamic)
   for (int r = 0; r < n_ranges; ++r) {
     try {
-      parts[size_t(r)] = Builder(base, max_depth, extraordinary, bspline_leaves, cache)
-                             .build(r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange));
+      parts[size_t(r)] = build_quad_range(base, r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange),
+                                          max_depth, extraordinary, bspline_leaves, cache);
     } catch (...) {
       failures[size_t(r)] = std::current_exception();
     }
   }
   for (const auto& failure : failures)
     if (failure) std::rethrow_exception(failure);
-  return merge(parts, topology.n_vertices);
+  return merge_ranges(parts, topology.n_vertices, true);
 }
 
 }  // namespace gps

@@ -5,6 +5,10 @@
 
 namespace gps {
 
+struct LocalMesh;                   // core/plans/local_mesh.h
+struct RangePlans;                  // core/plans/range_plans.h
+class QuadExtraordinaryTableCache;  // core/extraordinary/quad_extraordinary_tables.h
+
 struct SurfaceTables {
   PatchPlans plans;
   StencilTable stencils;
@@ -40,5 +44,16 @@ enum class ExtraordinaryNodes {
 SurfaceTables build_plans(const PolygonTopology& topology, int max_depth,
                           ExtraordinaryNodes extraordinary = ExtraordinaryNodes::exact, bool bspline_leaves = true,
                           const Sharpness& sharpness = {});
+
+/// The faces build_plans builds together (core/plans/range_plans.h; the tables do not depend on it).
+inline constexpr int kFacesPerRange = 1024;
+
+/// build_plans' checks of the depth and the valences; throws as it does.
+void check_quad_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary);
+
+/// The plans of faces [first, last) of `base` (base_local_mesh of the topology and its sharpness), for
+/// merge_ranges; extraordinary tables come from `cache`, which ranges built at once may share.
+RangePlans build_quad_range(const LocalMesh& base, int first, int last, int max_depth,
+                            ExtraordinaryNodes extraordinary, bool bspline_leaves, QuadExtraordinaryTableCache& cache);
 
 }  // namespace gps

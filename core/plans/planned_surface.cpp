@@ -58,6 +58,12 @@ PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& op
   points_ = apply_stencils(tables_.stencils, base_points(mesh));
 }
 
+PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, Scheme scheme, SurfaceTables tables)
+    : scheme_(scheme), tables_(std::move(tables)) {
+  dependents_ = stencil_dependents(tables_.stencils);
+  points_ = apply_stencils(tables_.stencils, base_points(mesh));
+}
+
 void PlannedSurface::update(const CovarianceMesh& mesh, const std::vector<int>& changed) {
   for (const int v : changed) points_[size_t(v)] = to_dual(mesh.mean(size_t(v)), mesh.covariance(size_t(v)));
   update_stencils(tables_.stencils, dependents_, changed, points_);

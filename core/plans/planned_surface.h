@@ -43,6 +43,8 @@ SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOpt
 class PlannedSurface {
 public:
   PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options);
+  /// The mesh with tables already planned for it under `scheme` (core/plans/sharpness_replanner.h).
+  PlannedSurface(const CovarianceMesh& mesh, Scheme scheme, SurfaceTables tables);
 
   Scheme scheme() const { return scheme_; }
   const SurfaceTables& tables() const { return tables_; }

@@ -1,0 +1,26 @@
+#pragma once
+// The plans of a range of consecutive faces, built apart and merged in face order (docs/design.md §2):
+// the whole tables are the same, bit for bit, however the faces are cut into ranges, so ranges build
+// on all cores, and a sharpness change rebuilds only the ranges of the faces it reaches
+// (core/plans/sharpness_replanner.h).
+#include <memory>
+#include <vector>
+
+#include "core/plans/plan_builder.h"
+
+namespace gps {
+
+/// A range's tables with point indices and node offsets local to it: points past n_base are rows of
+/// its own stencil table; an extraordinary node's table field indexes `extraordinary_tables`, shared
+/// (by pointer) by every range built from the same table cache.
+struct RangePlans {
+  SurfaceTables tables;
+  std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables;
+};
+
+/// The tables of all ranges in order, as a single range over all faces gives them: a row is added
+/// where it is first used, extraordinary tables are laid out in the order of first use. `release`
+/// frees each range's tables once merged (the whole build's peak memory); a replanner keeps them.
+SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release);
+
+}  // namespace gps
