@@ -6,9 +6,9 @@ void evaluate_triangle_plan(int patch_id, float patch_u, float patch_v, out vec3
   int kind, depth;
   int node = descend_plan(roots[patch_id], true, u, v, scale, kind, depth);
   leaf_kind = kind;
-  vec4 qa = vec4(0.0), qb = vec4(0.0), qc = vec4(0.0);
-  vec4 ua = vec4(0.0), ub = vec4(0.0), uc = vec4(0.0);
-  vec4 va = vec4(0.0), vb = vec4(0.0), vc = vec4(0.0);
+  point_vec4 qa = point_vec4(0.0), qb = point_vec4(0.0), qc = point_vec4(0.0);
+  point_vec4 ua = point_vec4(0.0), ub = point_vec4(0.0), uc = point_vec4(0.0);
+  point_vec4 va = point_vec4(0.0), vb = point_vec4(0.0), vc = point_vec4(0.0);
   float w[12], ws[12], wt[12];
   if (kind == kNodeRegular) {
     loop_box_spline_basis(u, v, w, ws, wt);

@@ -4,32 +4,35 @@
 // since q is linear. In float, q̄ = q̂ μ of a thin Gaussian (q̂ ~ 1e6) far from the origin keeps few
 // digits of the surface's shape near it; y about a nearby anchor keeps them (the pawn's thin poles
 // need them for their normals). Points that are not Gaussians (boundary rows with negative weights)
-// are kept the same way.
+// are kept the same way. Kept in double (point_real, gpu_layout.h), a needle of condition 1e12 still
+// needs the anchor: q̄ = q̂ μ rounds to κ times double's precision in its long direction.
 // The including shader declares the Points buffer.
-mat3 precision_of(vec4 a, vec4 b) { return mat3(a.x, a.y, a.z, a.y, a.w, b.x, a.z, b.x, b.y); }
-vec3 offset_part(vec4 b, vec4 c) { return vec3(b.z, b.w, c.x); }
+point_mat3 precision_of(point_vec4 a, point_vec4 b) {
+  return point_mat3(a.x, a.y, a.z, a.y, a.w, b.x, a.z, b.x, b.y);
+}
+point_vec3 offset_part(point_vec4 b, point_vec4 c) { return point_vec3(b.z, b.w, c.x); }
 
-vec3 point_anchor(int p) { return points[kVec4PerPoint * p + 2].yzw; }
+point_vec3 point_anchor(int p) { return points[kVec4PerPoint * p + 2].yzw; }
 
 // tr q̂ of plan point p: how heavily it weighs in a sum, for the choice of the sum's anchor.
 float point_precision_trace(int p) {
-  vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1];
-  return a.x + a.w + b.y;
+  point_vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1];
+  return float(a.x + a.w + b.y);
 }
 
 // μ of plan point p: a + [q̂]⁻¹ y (thesis Eq. 2.11 about the anchor).
 vec3 point_mean(int p) {
-  vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
-  return c.yzw + inverse(precision_of(a, b)) * offset_part(b, c);
+  point_vec4 a = points[kVec4PerPoint * p], b = points[kVec4PerPoint * p + 1], c = points[kVec4PerPoint * p + 2];
+  return vec3(c.yzw + inverse(precision_of(a, b)) * offset_part(b, c));
 }
 
 // Plan point p about `anchor`: (q̂, y + q̂ (a − anchor)) in the first nine floats; the tenth to twelfth
 // are zero, so that sums of them are sums of 9D points.
-void anchored_point(int p, vec3 anchor, out vec4 a, out vec4 b, out vec4 c) {
+void anchored_point(int p, point_vec3 anchor, out point_vec4 a, out point_vec4 b, out point_vec4 c) {
   a = points[kVec4PerPoint * p];
   b = points[kVec4PerPoint * p + 1];
   c = points[kVec4PerPoint * p + 2];
-  vec3 y = offset_part(b, c) + precision_of(a, b) * (c.yzw - anchor);
+  point_vec3 y = offset_part(b, c) + precision_of(a, b) * (c.yzw - anchor);
   b.zw = y.xy;
-  c = vec4(y.z, 0.0, 0.0, 0.0);
+  c = point_vec4(y.z, 0.0, 0.0, 0.0);
 }

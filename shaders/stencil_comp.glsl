@@ -1,7 +1,7 @@
 // Applies the stencil table: point n_base + r = Σ w · q[index] (one sparse matrix-vector product), the
 // sum taken about an anchor, the row's heaviest point's, which the row keeps (plan_point.glsl).
 #include "shaders/compute_pass.glsl"
-layout(std430, binding = kBindingPoints) buffer Points { vec4 points[]; };
+layout(std430, binding = kBindingPoints) buffer Points { point_vec4 points[]; };  // gpu_layout.h
 #include "shaders/plan_point.glsl"
 layout(std430, binding = kBindingOffsets) readonly buffer Offsets { int offsets[]; };
 layout(std430, binding = kBindingIndices) readonly buffer Indices { int indices[]; };
@@ -22,10 +22,10 @@ void main() {
     heaviest = weight > most ? k : heaviest;
     most = max(most, weight);
   }
-  vec3 anchor = point_anchor(indices[heaviest]);
-  vec4 a = vec4(0.0), b = vec4(0.0), c = vec4(0.0);
+  point_vec3 anchor = point_anchor(indices[heaviest]);
+  point_vec4 a = point_vec4(0.0), b = point_vec4(0.0), c = point_vec4(0.0);
   for (int k = begin; k < end; ++k) {
-    vec4 pa, pb, pc;
+    point_vec4 pa, pb, pc;
     anchored_point(indices[k], anchor, pa, pb, pc);
     float w = weights[k];
     a += w * pa;

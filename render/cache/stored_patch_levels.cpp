@@ -12,15 +12,25 @@
 namespace gps {
 
 namespace {
-ShaderProgram check_program(bool triangles) {
+ShaderProgram check_program(bool triangles, PointPrecision precision) {
   std::vector<const char*> pieces = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
                                      shaders::tess_levels, shaders::patch_level_check_comp};
   if (triangles) pieces.insert(pieces.begin(), "#define GPS_TRIANGLE_PATCHES\n");
-  return ShaderProgram(triangles ? "patch_level_check_triangles" : "patch_level_check", {{GL_COMPUTE_SHADER, pieces}});
+  return ShaderProgram(triangles ? "patch_level_check_triangles" : "patch_level_check",
+                       at_precision({{GL_COMPUTE_SHADER, pieces}}, precision));
 }
 }  // namespace
 
-StoredPatchLevels::StoredPatchLevels() : quads_(check_program(false)), triangles_(check_program(true)) {}
+StoredPatchLevels::StoredPatchLevels() { set_precision(PointPrecision::single_float); }
+
+void StoredPatchLevels::set_precision(PointPrecision precision) {
+  const int i = int(precision);
+  if (triangles_[i].id() == 0) {  // the last one built, before the switch
+    quads_[i] = check_program(false, precision);
+    triangles_[i] = check_program(true, precision);
+  }
+  precision_ = precision;
+}
 
 void StoredPatchLevels::reserve(int n_patches) {
   if (n_patches <= capacity_ && 4 * n_patches >= capacity_) return;

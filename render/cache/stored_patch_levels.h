@@ -12,6 +12,7 @@
 #include "core/plans/patch_plans.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
+#include "render/pipeline/point_precision.h"
 
 namespace gps {
 
@@ -26,8 +27,13 @@ public:
   StoredPatchLevels(const StoredPatchLevels&) = delete;
   StoredPatchLevels& operator=(const StoredPatchLevels&) = delete;
 
+  /// The programs for plan points of `precision` from now on (built at its first use).
+  void set_precision(PointPrecision precision);
   /// The program whose level uniforms the caller sets before record() or changed().
-  const ShaderProgram& program(PatchShape shape) const { return shape == PatchShape::triangle ? triangles_ : quads_; }
+  const ShaderProgram& program(PatchShape shape) const {
+    const int i = int(precision_);
+    return shape == PatchShape::triangle ? triangles_[i] : quads_[i];
+  }
   /// Keeps the levels of all `n_patches` (after a capture).
   void record(PatchShape shape, int n_patches, int group_limit);
   /// Per block of `blocks`: whether any of its patches' levels differ from those kept; then keeps
@@ -40,7 +46,8 @@ public:
 private:
   void reserve(int n_patches);
 
-  ShaderProgram quads_, triangles_;
+  ShaderProgram quads_[2], triangles_[2];  // by PointPrecision
+  PointPrecision precision_ = PointPrecision::single_float;
   GlBuffer levels_, patches_, changes_;
   int capacity_ = 0;  // patches the levels buffer holds
 };

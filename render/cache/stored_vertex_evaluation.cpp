@@ -11,15 +11,28 @@
 namespace gps {
 
 StoredVertexEvaluation::StoredVertexEvaluation()
-    : quads_("stored_vertex_evaluation", {{GL_COMPUTE_SHADER,
-                                           {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                                            shaders::canonical_edge, shaders::stored_vertex_evaluation_comp}}}),
-      triangles_("stored_vertex_evaluation_triangles",
-                 {{GL_COMPUTE_SHADER,
-                   {"#define GPS_TRIANGLE_PATCHES\n", shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                    shaders::loop_eval, shaders::canonical_edge, shaders::stored_vertex_evaluation_comp}}}),
-      groups_program_("evaluation_groups",
-                      {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {}
+    : groups_program_("evaluation_groups",
+                      {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {
+  set_precision(PointPrecision::single_float);
+}
+
+void StoredVertexEvaluation::set_precision(PointPrecision precision) {
+  const int i = int(precision);
+  if (triangles_[i].id() == 0) {  // the last one built, before the switch
+    quads_[i] = ShaderProgram("stored_vertex_evaluation",
+                              at_precision({{GL_COMPUTE_SHADER,
+                                             {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
+                                              shaders::canonical_edge, shaders::stored_vertex_evaluation_comp}}},
+                                           precision));
+    triangles_[i] = ShaderProgram(
+        "stored_vertex_evaluation_triangles",
+        at_precision({{GL_COMPUTE_SHADER,
+                       {"#define GPS_TRIANGLE_PATCHES\n", shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
+                        shaders::loop_eval, shaders::canonical_edge, shaders::stored_vertex_evaluation_comp}}},
+                     precision));
+  }
+  precision_ = precision;
+}
 
 void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches,
                                  int group_limit) {
@@ -57,7 +70,7 @@ void StoredVertexEvaluation::dispatch(PatchShape shape, const std::vector<Block>
   groups_program_.set("u_blocks", int(blocks.size()));
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  const ShaderProgram& program = shape == PatchShape::triangle ? triangles_ : quads_;
+  const ShaderProgram& program = shape == PatchShape::triangle ? triangles_[int(precision_)] : quads_[int(precision_)];
   program.use();
   program.set("u_blocks", int(blocks.size()));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, groups_);

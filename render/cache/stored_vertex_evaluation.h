@@ -10,6 +10,7 @@
 #include "core/plans/patch_plans.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
+#include "render/pipeline/point_precision.h"
 
 namespace gps {
 
@@ -24,6 +25,8 @@ public:
   StoredVertexEvaluation();
   StoredVertexEvaluation(const StoredVertexEvaluation&) = delete;
   StoredVertexEvaluation& operator=(const StoredVertexEvaluation&) = delete;
+  /// The programs for plan points of `precision` from now on (built at its first use).
+  void set_precision(PointPrecision precision);
   /// Evaluates the welded vertices of `blocks` (of the buffers bound at kBindingWeldedVertices and
   /// kBindingWeldedParameters), for patches of `shape`, in one indirect dispatch of the work groups
   /// that `dispatches` holds per block (render/cache/stored_vertex_weld.h), or as many as the device's
@@ -34,7 +37,9 @@ private:
   /// One indirect dispatch over `blocks`.
   void dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches);
 
-  ShaderProgram quads_, triangles_, groups_program_;
+  ShaderProgram quads_[2], triangles_[2];  // by PointPrecision
+  ShaderProgram groups_program_;
+  PointPrecision precision_ = PointPrecision::single_float;
   GlBuffer blocks_, groups_;
 };
 

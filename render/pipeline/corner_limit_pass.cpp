@@ -15,13 +15,24 @@ namespace {
 constexpr const char* kTrianglePatches = "#define GPS_TRIANGLE_PATCHES\n";
 }
 
-CornerLimitPass::CornerLimitPass()
-    : quads_("corner_limits",
-             {{GL_COMPUTE_SHADER,
-               {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::corner_limit_comp}}}),
-      triangles_("corner_limits_triangles", {{GL_COMPUTE_SHADER,
-                                              {kTrianglePatches, shaders::gpu_layout, shaders::patch_basis,
-                                               shaders::plan_eval, shaders::loop_eval, shaders::corner_limit_comp}}}) {}
+CornerLimitPass::CornerLimitPass() { set_precision(PointPrecision::single_float); }
+
+void CornerLimitPass::set_precision(PointPrecision precision) {
+  const int i = int(precision);
+  if (triangles_[i].id() == 0) {  // the last one built, before the switch
+    quads_[i] = ShaderProgram(
+        "corner_limits",
+        at_precision({{GL_COMPUTE_SHADER,
+                       {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::corner_limit_comp}}},
+                     precision));
+    triangles_[i] = ShaderProgram("corner_limits_triangles",
+                                  at_precision({{GL_COMPUTE_SHADER,
+                                                 {kTrianglePatches, shaders::gpu_layout, shaders::patch_basis,
+                                                  shaders::plan_eval, shaders::loop_eval, shaders::corner_limit_comp}}},
+                                               precision));
+  }
+  precision_ = precision;
+}
 
 void CornerLimitPass::run_all(const PatchPlans& plans, int group_limit) const {
   run(plans, plans.corners() * plans.n_patches(), false, group_limit);
@@ -48,7 +59,8 @@ std::vector<int> CornerLimitPass::owner_slots(const PatchPlans& plans, const std
 
 void CornerLimitPass::run(const PatchPlans& plans, int count, bool use_list, int group_limit) const {
   if (count <= 0) return;
-  run_compute_pass(plans.shape == PatchShape::triangle ? triangles_ : quads_, count, use_list, group_limit);
+  const int i = int(precision_);
+  run_compute_pass(plans.shape == PatchShape::triangle ? triangles_[i] : quads_[i], count, use_list, group_limit);
   check_gl_errors("the corner pass");
 }
 

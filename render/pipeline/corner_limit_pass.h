@@ -8,6 +8,7 @@
 
 #include "core/plans/patch_plans.h"
 #include "render/gl/shader_program.h"
+#include "render/pipeline/point_precision.h"
 
 namespace gps {
 
@@ -15,6 +16,9 @@ class CornerLimitPass {
 public:
   /// Needs a current GL 4.5 context.
   CornerLimitPass();
+
+  /// The pass for points of `precision` from now on (its programs built at the first use).
+  void set_precision(PointPrecision precision);
 
   /// Every corner slot of the plans' patches (buffers bound).
   void run_all(const PatchPlans& plans, int group_limit) const;
@@ -27,7 +31,8 @@ public:
 private:
   void run(const PatchPlans& plans, int count, bool use_list, int group_limit) const;
 
-  ShaderProgram quads_, triangles_;
+  ShaderProgram quads_[2], triangles_[2];  // by PointPrecision
+  PointPrecision precision_ = PointPrecision::single_float;
 };
 
 }  // namespace gps

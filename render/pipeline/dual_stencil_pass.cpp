@@ -8,15 +8,23 @@
 
 namespace gps {
 
-DualStencilPass::DualStencilPass()
-    : dual_map_("dual_map", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::dual_map_comp}}}),
-      stencil_("stencil", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::stencil_comp}}}) {}
+DualStencilPass::DualStencilPass() { set_precision(PointPrecision::single_float); }
+
+void DualStencilPass::set_precision(PointPrecision precision) {
+  const int i = int(precision);
+  if (stencil_[i].id() == 0) {  // the last one built, before the switch
+    dual_map_[i] = ShaderProgram("dual_map", at_precision({{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::dual_map_comp}}}, precision));
+    stencil_[i] = ShaderProgram("stencil", at_precision({{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::stencil_comp}}}, precision));
+  }
+  precision_ = precision;
+}
 
 void DualStencilPass::run(int n_base, int vertex_count, int row_count, bool use_list, int group_limit) const {
-  run_compute_pass(dual_map_, vertex_count, use_list, group_limit);
-  stencil_.use();
-  stencil_.set("u_n_base", n_base);
-  run_compute_pass(stencil_, row_count, use_list, group_limit);
+  const ShaderProgram &dual_map = dual_map_[int(precision_)], &stencil = stencil_[int(precision_)];
+  run_compute_pass(dual_map, vertex_count, use_list, group_limit);
+  stencil.use();
+  stencil.set("u_n_base", n_base);
+  run_compute_pass(stencil, row_count, use_list, group_limit);
   check_gl_errors("the compute passes");
 }
 

@@ -4,6 +4,7 @@
 // or over the lists PlanBuffers::upload_edit left; dispatches split to the device's work-group
 // count limit (render/gl/compute_limits.h).
 #include "render/pipeline/plan_buffers.h"
+#include "render/pipeline/point_precision.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {
@@ -12,6 +13,9 @@ class DualStencilPass {
 public:
   /// Needs a current GL 4.5 context.
   DualStencilPass();
+
+  /// The passes for points of `precision` from now on (its programs built at the first use).
+  void set_precision(PointPrecision precision);
 
   /// Every one of the `n_base` vertices and `n_rows` stencil rows (buffers bound).
   void run_all(int n_base, int n_rows, int group_limit) const { run(n_base, n_base, n_rows, false, group_limit); }
@@ -23,7 +27,8 @@ public:
 private:
   void run(int n_base, int vertex_count, int row_count, bool use_list, int group_limit) const;
 
-  ShaderProgram dual_map_, stencil_;
+  ShaderProgram dual_map_[2], stencil_[2];  // by PointPrecision
+  PointPrecision precision_ = PointPrecision::single_float;
 };
 
 }  // namespace gps

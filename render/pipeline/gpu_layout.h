@@ -10,7 +10,7 @@ namespace gps::gpu {
 #endif
 
 // Shader storage buffer bindings.
-GPS_LAYOUT_CONST int kBindingGaussians = 0;     // 9 floats per base vertex: μ, Σ⁻¹ xx xy xz yy yz zz
+GPS_LAYOUT_CONST int kBindingGaussians = 0;     // per base vertex μ, Σ⁻¹ xx xy xz yy yz zz (shaders/dual_map_comp.glsl)
 GPS_LAYOUT_CONST int kBindingPoints = 1;        // the plan points, kVec4PerPoint vec4 each
 GPS_LAYOUT_CONST int kBindingOffsets = 2;       // stencil table (core/plans/patch_plans.h)
 GPS_LAYOUT_CONST int kBindingIndices = 3;
@@ -45,9 +45,26 @@ GPS_LAYOUT_CONST int kBindingLevelChanges = 29;      // per listed block: whethe
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;
-// A plan point q = (q̂, q̄) about its anchor a is three vec4: (xx xy xz yy) (yz zz y0 y1) (y2 a0 a1 a2),
+// A plan point q = (q̂, q̄) about its anchor a is three vec4 (dvec4 in double): (xx xy xz yy) (yz zz y0 y1) (y2 a0 a1 a2),
 // y = q̄ − q̂ a (shaders/plan_point.glsl).
 GPS_LAYOUT_CONST int kVec4PerPoint = 3;
+
+#ifdef GPS_GLSL
+// The scalars of the plan points and base Gaussians, their sums and the back map: float, or double
+// where `#define GPS_DOUBLE` precedes the shader (render/pipeline/point_precision.h); the surface's
+// positions and normals leave the evaluation in float either way.
+#ifdef GPS_DOUBLE
+#define point_real double
+#define point_vec3 dvec3
+#define point_vec4 dvec4
+#define point_mat3 dmat3
+#else
+#define point_real float
+#define point_vec3 vec3
+#define point_vec4 vec4
+#define point_mat3 mat3
+#endif
+#endif
 
 #ifndef GPS_GLSL
 }  // namespace gps::gpu

@@ -13,7 +13,7 @@ namespace gps {
 
 namespace {
 
-ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
+ShaderProgram patch_program(PatchShape shape, PatchOutput output, PointPrecision precision) {
   const bool triangles = shape == PatchShape::triangle, feedback = output == PatchOutput::feedback;
   std::vector<const char*> control = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
                                       shaders::tess_levels};
@@ -23,9 +23,10 @@ ShaderProgram patch_program(PatchShape shape, PatchOutput output) {
   if (triangles) evaluation.push_back(shaders::loop_eval);
   evaluation.push_back(shaders::canonical_edge);
   evaluation.push_back(triangles ? shaders::triangle_tese : shaders::patch_tese);
-  std::vector<ShaderStage> stages = {{GL_VERTEX_SHADER, {shaders::patch_vert}},
-                                     {GL_TESS_CONTROL_SHADER, control},
-                                     {GL_TESS_EVALUATION_SHADER, evaluation}};
+  std::vector<ShaderStage> stages = at_precision({{GL_VERTEX_SHADER, {shaders::patch_vert}},
+                                                 {GL_TESS_CONTROL_SHADER, control},
+                                                 {GL_TESS_EVALUATION_SHADER, evaluation}},
+                                                precision);
   const std::string name = triangles ? "triangle_patch" : "patch";
   if (feedback)
     return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal", "v_evaluated"});
@@ -70,19 +71,24 @@ int quad_slot(PatchOutput output) {
 
 }  // namespace
 
-PatchDraw::PatchDraw()
-    : quad_{patch_program(PatchShape::quad, PatchOutput::shaded),
-            patch_program(PatchShape::quad, PatchOutput::feedback),
-            patch_program(PatchShape::quad, PatchOutput::capture),
-            patch_program(PatchShape::quad, PatchOutput::shaded_capture)},
-      triangle_{patch_program(PatchShape::triangle, PatchOutput::shaded),
-                patch_program(PatchShape::triangle, PatchOutput::feedback),
-                patch_program(PatchShape::triangle, PatchOutput::wireframe),
-                patch_program(PatchShape::triangle, PatchOutput::capture),
-                patch_program(PatchShape::triangle, PatchOutput::shaded_capture)} {}
+PatchDraw::PatchDraw() { set_precision(PointPrecision::single_float); }
+
+void PatchDraw::set_precision(PointPrecision precision) {
+  const int i = int(precision);
+  if (triangle_[i][4].id() == 0) {  // the last one built, before the switch
+    for (const PatchOutput output : {PatchOutput::shaded, PatchOutput::feedback, PatchOutput::capture,
+                                     PatchOutput::shaded_capture})
+      quad_[i][quad_slot(output)] = patch_program(PatchShape::quad, output, precision);
+    for (const PatchOutput output : {PatchOutput::shaded, PatchOutput::feedback, PatchOutput::wireframe,
+                                     PatchOutput::capture, PatchOutput::shaded_capture})
+      triangle_[i][int(output)] = patch_program(PatchShape::triangle, output, precision);
+  }
+  precision_ = precision;
+}
 
 const ShaderProgram& PatchDraw::program(PatchShape shape, PatchOutput output) const {
-  return shape == PatchShape::triangle ? triangle_[int(output)] : quad_[quad_slot(output)];
+  const int i = int(precision_);
+  return shape == PatchShape::triangle ? triangle_[i][int(output)] : quad_[i][quad_slot(output)];
 }
 
 void PatchDraw::draw(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,

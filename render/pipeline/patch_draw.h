@@ -8,6 +8,7 @@
 
 #include "core/plans/plan_builder.h"
 #include "render/pipeline/draw_options.h"
+#include "render/pipeline/point_precision.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/query_ring.h"
 #include "render/gl/shader_program.h"
@@ -51,6 +52,9 @@ public:
   PatchDraw(const PatchDraw&) = delete;
   PatchDraw& operator=(const PatchDraw&) = delete;
 
+  /// The programs for points of `precision` from now on (built at its first use).
+  void set_precision(PointPrecision precision);
+
   /// Quads have no wireframe program: their fragment shader draws it.
   const ShaderProgram& program(PatchShape shape, PatchOutput output) const;
   /// The program for a frame of `o`.
@@ -85,7 +89,9 @@ private:
   void draw_batches(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
                     int n_patches) const;
 
-  ShaderProgram quad_[4], triangle_[5];  // by PatchOutput (quads: shaded, feedback, capture, shaded_capture)
+  // By PointPrecision, then PatchOutput (quads: shaded, feedback, capture, shaded_capture).
+  ShaderProgram quad_[2][4], triangle_[2][5];
+  PointPrecision precision_ = PointPrecision::single_float;
   GlVertexArray empty_vao_;
   std::unique_ptr<QueryRing> statistics_;  // set while collecting statistics
   NormalisedFrame frame_;

@@ -7,6 +7,7 @@
 
 #include "render/gl/compute_limits.h"
 #include "render/gl/gl_context.h"
+#include "core/mesh/dual_map.h"
 
 namespace gps {
 
@@ -27,9 +28,15 @@ size_t PlanBuffers::corner_limit_floats(const PatchPlans& plans) {
   return size_t(plans.corners()) * size_t(plans.n_patches()) * 8;
 }
 
-void PlanBuffers::check_fits(const SurfaceTables& tables, int n_vertices, int n_faces, long long storage_limit) {
-  check_storage_fits("plan points", size_t(tables.stencils.n_points()) * kVec4PerPoint * 4 * sizeof(float), n_vertices,
-                     n_faces, storage_limit);
+// Bytes of a point's scalars.
+static size_t real_bytes(PointPrecision precision) {
+  return precision == PointPrecision::double_float ? sizeof(double) : sizeof(float);
+}
+
+void PlanBuffers::check_fits(const SurfaceTables& tables, int n_vertices, int n_faces, long long storage_limit,
+                             PointPrecision precision) {
+  check_storage_fits("plan points", size_t(tables.stencils.n_points()) * kVec4PerPoint * 4 * real_bytes(precision),
+                     n_vertices, n_faces, storage_limit);
   check_storage_fits("stencil weights", tables.stencils.weights.size() * sizeof(float), n_vertices, n_faces,
                      storage_limit);
   check_storage_fits("plan nodes", tables.plans.nodes.size() * sizeof(tables.plans.nodes[0]), n_vertices, n_faces,
@@ -51,13 +58,17 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables) {
   upload(kBindingPatchEdges, p.patch_edges);
   upload(kBindingPatchNeighbours, p.patch_neighbours);
   upload(kBindingCornerOwners, p.corner_owners);
-  upload(kBindingPoints, std::vector<float>(size_t(s.n_points()) * kVec4PerPoint * 4, 0.0f));
+  const size_t point_reals = size_t(s.n_points()) * kVec4PerPoint * 4;
+  if (precision_ == PointPrecision::double_float)
+    upload(kBindingPoints, std::vector<double>(point_reals, 0.0));
+  else
+    upload(kBindingPoints, std::vector<float>(point_reals, 0.0f));
   upload(kBindingCornerLimits, std::vector<float>(corner_limit_floats(p), 0.0f));
 }
 
-// μ, then Σ⁻¹'s xx xy xz yy yz zz (shaders/dual_map_comp.glsl). The inverse is taken in double and
-// rounded once: inverted in float, a thin Gaussian's Σ (condition κ) loses κ times float's precision in
-// Σ⁻¹, its thin directions' precision first, where the surface's shape is.
+// Float points: μ, then Σ⁻¹'s xx xy xz yy yz zz (shaders/dual_map_comp.glsl). The inverse is taken
+// in double and rounded once: inverted in float, a thin Gaussian's Σ (condition κ) loses κ times
+// float's precision in Σ⁻¹, its thin directions' precision first, where the surface's shape is.
 static void gaussian_of(const CovarianceMesh& mesh, size_t v, float* out) {
   const Vec3 m = mesh.mean(v);
   const Mat3 p = mesh.covariance(v).inverse();
@@ -65,21 +76,53 @@ static void gaussian_of(const CovarianceMesh& mesh, size_t v, float* out) {
   std::copy(values, values + 9, out);
 }
 
-void PlanBuffers::upload_gaussians(const CovarianceMesh& mesh) {
-  std::vector<float> g(mesh.n_vertices() * 9);
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) gaussian_of(mesh, i, &g[9 * i]);
-  if (sizes_[kBindingGaussians] == std::max<size_t>(sizeof(float), g.size() * sizeof(float)))
-    glNamedBufferSubData(buffers_[kBindingGaussians], 0, GLsizeiptr(g.size() * sizeof(float)), g.data());
+// Double points: core's own 9D point q = (Σ⁻¹, q̄) (core/mesh/dual_map.h), kept about μ: μ, Σ⁻¹'s six,
+// y = q̄ − Σ⁻¹ μ. Past condition 1e8 a needle's surface follows the rounding of Σ⁻¹ and q̄ (two
+// double inverses of one Σ put it apart by a thousandth of the mesh), so the GPU takes the very
+// doubles the CPU evaluator sums.
+static void gaussian_of(const CovarianceMesh& mesh, size_t v, double* out) {
+  const Vec3 m = mesh.mean(v);
+  const Dual q = to_dual(m, mesh.covariance(v));
+  const Vec3 y = Vec3(q.tail<3>()) - unvech(q) * m;
+  const double values[12] = {m.x(), m.y(), m.z(), q[0], q[1], q[2], q[3], q[4], q[5], y.x(), y.y(), y.z()};
+  std::copy(values, values + 12, out);
+}
+
+// Reals per base vertex (shaders/dual_map_comp.glsl, kGaussianReals).
+template <class Real>
+static constexpr size_t kGaussianReals = sizeof(Real) == sizeof(double) ? 12 : 9;
+
+template <class Real>
+void PlanBuffers::upload_gaussians_as(const CovarianceMesh& mesh) {
+  std::vector<Real> g(mesh.n_vertices() * kGaussianReals<Real>);
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) gaussian_of(mesh, i, &g[kGaussianReals<Real> * i]);
+  if (sizes_[kBindingGaussians] == std::max<size_t>(sizeof(Real), g.size() * sizeof(Real)))
+    glNamedBufferSubData(buffers_[kBindingGaussians], 0, GLsizeiptr(g.size() * sizeof(Real)), g.data());
   else
     upload(kBindingGaussians, g);
 }
 
-void PlanBuffers::update_gaussians(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+void PlanBuffers::upload_gaussians(const CovarianceMesh& mesh) {
+  if (precision_ == PointPrecision::double_float)
+    upload_gaussians_as<double>(mesh);
+  else
+    upload_gaussians_as<float>(mesh);
+}
+
+template <class Real>
+void PlanBuffers::update_gaussians_as(const CovarianceMesh& mesh, const std::vector<int>& changed) {
   for (const int v : changed) {
-    float values[9];
+    Real values[kGaussianReals<Real>];
     gaussian_of(mesh, size_t(v), values);
-    glNamedBufferSubData(buffers_[kBindingGaussians], GLintptr(9 * sizeof(float) * size_t(v)), sizeof values, values);
+    glNamedBufferSubData(buffers_[kBindingGaussians], GLintptr(sizeof values * size_t(v)), sizeof values, values);
   }
+}
+
+void PlanBuffers::update_gaussians(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  if (precision_ == PointPrecision::double_float)
+    update_gaussians_as<double>(mesh, changed);
+  else
+    update_gaussians_as<float>(mesh, changed);
 }
 
 void PlanBuffers::upload_edit(const std::vector<int>& changed, const std::vector<int>& rows) {
@@ -95,7 +138,13 @@ void PlanBuffers::bind() const {
 
 std::vector<float> PlanBuffers::read_points(int n_points) const {
   std::vector<float> points(size_t(n_points) * kVec4PerPoint * 4);
-  glGetNamedBufferSubData(buffers_[kBindingPoints], 0, GLsizeiptr(points.size() * sizeof(float)), points.data());
+  if (precision_ == PointPrecision::double_float) {
+    std::vector<double> stored(points.size());
+    glGetNamedBufferSubData(buffers_[kBindingPoints], 0, GLsizeiptr(stored.size() * sizeof(double)), stored.data());
+    std::copy(stored.begin(), stored.end(), points.begin());
+  } else {
+    glGetNamedBufferSubData(buffers_[kBindingPoints], 0, GLsizeiptr(points.size() * sizeof(float)), points.data());
+  }
   check_gl_errors("reading the plan points");
   return points;
 }

@@ -2,7 +2,8 @@
 // The GPU tables of a planned surface (docs/design.md §2): core's plan and stencil tables (built outside
 // the renderer, core/plans/planned_surface.h) as shader storage buffers at the bindings of
 // render/pipeline/gpu_layout.h, with the base Gaussians, the plan points the compute passes write and an
-// edit's lists of changed vertices and stencil rows.
+// edit's lists of changed vertices and stencil rows. The plan points and base Gaussians are float or
+// double (render/pipeline/point_precision.h).
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "core/plans/plan_builder.h"
 #include "render/gl/gl_object.h"
 #include "render/pipeline/gpu_layout.h"
+#include "render/pipeline/point_precision.h"
 
 namespace gps {
 
@@ -21,8 +23,13 @@ public:
   PlanBuffers(const PlanBuffers&) = delete;
   PlanBuffers& operator=(const PlanBuffers&) = delete;
 
-  /// Throws gps::Error if a table exceeds the device's storage block size (or `storage_limit` > 0).
-  static void check_fits(const SurfaceTables& tables, int n_vertices, int n_faces, long long storage_limit);
+  /// Throws gps::Error if a table exceeds the device's storage block size (or `storage_limit` > 0)
+  /// with points of `precision`.
+  static void check_fits(const SurfaceTables& tables, int n_vertices, int n_faces, long long storage_limit,
+                         PointPrecision precision);
+  /// The precision of the points and Gaussians that upload_tables and upload_gaussians upload next.
+  void set_precision(PointPrecision precision) { precision_ = precision; }
+  PointPrecision precision() const { return precision_; }
   /// The plan and stencil tables, and zeroed plan points.
   void upload_tables(const SurfaceTables& tables);
   /// Every base vertex's μ and Σ.
@@ -35,18 +42,24 @@ public:
   void upload_corner_list(const std::vector<int>& slots);
   /// Binds every buffer at its binding.
   void bind() const;
-  /// The plan points as the compute passes left them (gpu::kVec4PerPoint vec4 each).
+  /// The plan points as the compute passes left them (gpu::kVec4PerPoint vec4 each; double ones
+  /// rounded to float).
   std::vector<float> read_points(int n_points) const;
   /// GPU memory held, in bytes.
   size_t bytes() const;
 
 private:
   static size_t corner_limit_floats(const PatchPlans& plans);
+  template <class Real>
+  void upload_gaussians_as(const CovarianceMesh& mesh);
+  template <class Real>
+  void update_gaussians_as(const CovarianceMesh& mesh, const std::vector<int>& changed);
   template <class T>
   void upload(int binding, const std::vector<T>& data);
 
   std::array<GlBuffer, gpu::kBindingCount> buffers_;
   size_t sizes_[gpu::kBindingCount] = {};
+  PointPrecision precision_ = PointPrecision::single_float;
 };
 
 }  // namespace gps

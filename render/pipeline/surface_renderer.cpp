@@ -30,7 +30,11 @@ const SurfaceTables& SurfaceRenderer::tables() const {
 
 void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surface, const NormalisedFrame& frame) {
   // Refused before anything changes: the renderer keeps drawing the previous mesh.
-  PlanBuffers::check_fits(surface.tables(), int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_);
+  MeshPointPrecision point_precision(mesh);
+  PlanBuffers::check_fits(surface.tables(), int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_,
+                          point_precision.precision());
+  use_point_precision(point_precision.precision());
+  point_precision_ = std::move(point_precision);
   surface_ = std::make_unique<const PlannedSurface>(std::move(surface));
   readers_.reset();
   n_base_ = int(mesh.n_vertices());
@@ -57,12 +61,33 @@ void SurfaceRenderer::set_triangles(const TriangleMesh& triangles) {
   static_triangles_.set(framed);
 }
 
+void SurfaceRenderer::use_point_precision(PointPrecision precision) {
+  const PointPrecision previous = buffers_.precision();
+  try {
+    compute_.set_precision(precision);
+    corners_.set_precision(precision);
+    patches_.set_precision(precision);
+    stored_evaluation_.set_precision(precision);
+    stored_levels_.set_precision(precision);
+  } catch (...) {
+    use_point_precision(previous);  // built already: no refusal
+    throw;
+  }
+  buffers_.set_precision(precision);
+}
+
 void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
   // The frame stays that of set_mesh, so that the vertices not uploaded again still fit.
   frame_.to_frame(mesh, changed, framed_);
   cache_.update_cage(framed_, changed);
-  if (update_everything(changed.size(),
-                        size_t(n_base_))) {  // most of the mesh (select all, drag): whole buffers, one call each
+  point_precision_.update(framed_, changed);
+  const bool new_precision = point_precision_.precision() != buffers_.precision();
+  if (new_precision) {  // the points' buffer in the new precision
+    use_point_precision(point_precision_.precision());
+    buffers_.upload_tables(tables());
+  }
+  // Most of the mesh (select all, drag), or a new precision: whole buffers, one call each.
+  if (new_precision || update_everything(changed.size(), size_t(n_base_))) {
     buffers_.upload_gaussians(framed_);
     ellipsoids_.upload(framed_, nullptr);
     cage_.upload_positions(framed_);

@@ -26,6 +26,7 @@
 #include "render/image/image.h"
 #include "render/pipeline/patch_draw.h"
 #include "render/pipeline/plan_buffers.h"
+#include "render/pipeline/point_precision.h"
 #include "render/gl/render_target.h"
 #include "render/gl/shader_program.h"
 #include "render/comparison/static_triangles.h"
@@ -43,8 +44,10 @@ public:
   SurfaceRenderer& operator=(const SurfaceRenderer&) = delete;
 
   /// New topology: uploads the tables of `surface` (built by core for this mesh; the renderer keeps
-  /// it for its tables and rows_reading), then a full compute pass. Throws gps::Error, before
-  /// anything changes, where the tables exceed the device's storage block size.
+  /// it for its tables and rows_reading), then a full compute pass, with plan points in the precision
+  /// the mesh's Gaussians need (render/pipeline/point_precision.h). Throws gps::Error, before
+  /// anything changes, where the tables exceed the device's storage block size or the driver
+  /// refuses the double programs.
   void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface) {
     set_mesh(mesh, std::move(surface), NormalisedFrame::of(mesh));
   }
@@ -60,6 +63,7 @@ public:
   /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them
   /// (past core's update_everything share of the vertices: whole buffers and the full passes); the
   /// surface cache learns which patches changed (core/plans/patch_readers.h) and re-captures only those.
+  /// An edit that changes the precision the Gaussians need uploads and computes everything again.
   void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);
   /// The compute passes over every vertex and stencil row (as after set_mesh), for benchmarks.
   void recompute_all() { run_compute(nullptr); }
@@ -93,6 +97,8 @@ public:
   const SurfaceTables& tables() const;
   /// The frame the GPU evaluates the mesh in, fixed by set_mesh (render/pipeline/normalised_frame.h).
   const NormalisedFrame& frame() const { return frame_; }
+  /// The precision of the plan points, as the mesh's Gaussians need it.
+  PointPrecision point_precision() const { return buffers_.precision(); }
   /// The plan points as the compute passes left them (12 floats each: q in three vec4), of the mesh
   /// in frame() (frame().to_frame(mesh)).
   std::vector<float> read_points() const { return buffers_.read_points(tables().stencils.n_points()); }
@@ -106,6 +112,9 @@ private:
   /// The compute passes for `changed` base vertices, or all (nullptr; an `edit` of most of them
   /// where set, which the surface cache follows as such).
   void run_compute(const std::vector<int>* changed, bool edit = false);
+  /// The programs and buffers of every pass for points of `precision` (the buffers still to upload);
+  /// where the driver refuses a program, throws gps::Error with every pass as it was.
+  void use_point_precision(PointPrecision precision);
   /// The patches whose triangles an edit of `changed` vertices and the stencil `rows` reading them changes.
   std::vector<int> changed_patches(const std::vector<int>& changed, const std::vector<int>& rows);
   /// How a frame uses the surface cache: it draws the stored triangles, it was drawn while it was
@@ -131,6 +140,7 @@ private:
   std::unique_ptr<const PlannedSurface> surface_;
   std::unique_ptr<const PatchReaders> readers_;  // built at the first edit the cache can follow
   PlanBuffers buffers_;
+  MeshPointPrecision point_precision_;  // what the mesh's Gaussians need
   DualStencilPass compute_;
   CornerLimitPass corners_;
   PatchDraw patches_;

@@ -2,7 +2,8 @@
 // or needles (long along it), evaluated by the GPU at its tessellation vertices against the CPU
 // evaluator at the same (patch, u, v). Σ⁻¹ is inverted in double before its upload
 // (render/pipeline/plan_buffers.cpp): inverted in float, a needle of condition 1e5 lost its thin
-// directions and the surface spiked out of the frame.
+// directions and the surface spiked out of the frame. Past condition 1e6 the GPU keeps the mesh's
+// plan points in double (render/pipeline/point_precision.h).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -29,20 +30,25 @@ using test::thin_torus;
 struct Errors {
   double position = 0, normal_degrees = 0;
   size_t count = 0, degenerate = 0;
+  PointPrecision precision = PointPrecision::single_float;  // the renderer's
 };
 
-// Every GPU tessellation vertex against the CPU evaluator; positions relative to the diagonal. A
-// vertex where the CPU's own back map is degenerate (no positive definite q̂, or tangents nearly
-// parallel) is counted apart.
+// Every GPU tessellation vertex against the CPU evaluator given the mesh in the renderer's frame, as
+// the GPU is (render/pipeline/normalised_frame.h); positions relative to the diagonal. At condition
+// 1e12 the CPU's own surface moves with the frame it is given (by 3.5e-6 of the diagonal and 0.011°
+// between the world's and the normalised one): its doubles are the GPU's reference. A vertex where
+// the CPU's own back map is degenerate (no positive definite q̂, or tangents nearly parallel) is
+// counted apart.
 Errors compare(const CovarianceMesh& mesh, float level) {
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh);
   DrawOptions o;
   o.level = level;
   const auto vertices = renderer.capture_vertices(Camera{}, o, 512, 512);
-  const test::PlannedMesh cpu(mesh, PlanOptions{});
+  const test::PlannedMesh cpu(renderer.frame().to_frame(mesh), PlanOptions{});
   const double diag = bounding_box_diagonal(mesh);
   Errors e;
+  e.precision = renderer.point_precision();
   for (const auto& v : vertices) {
     const auto s = evaluate_patch(cpu.tables.plans, cpu.points, int(v.evaluated[0]), v.evaluated[1], v.evaluated[2]);
     if (!s || s->du.cross(s->dv).norm() < 1e-6 * s->du.norm() * s->dv.norm()) {
@@ -50,8 +56,9 @@ Errors compare(const CovarianceMesh& mesh, float level) {
       continue;
     }
     const Vec3 position(v.position[0], v.position[1], v.position[2]), normal(v.normal[0], v.normal[1], v.normal[2]);
+    const glm::dvec3 world = renderer.frame().to_world(glm::dvec3(s->position.x(), s->position.y(), s->position.z()));
     const bool finite = position.allFinite() && normal.allFinite();
-    e.position = std::max(e.position, finite ? (s->position - position).norm() / diag : 1.0);
+    e.position = std::max(e.position, finite ? (Vec3(world.x, world.y, world.z) - position).norm() / diag : 1.0);
     const double c = std::clamp(s->normal.dot(normal.normalized()), -1.0, 1.0);
     e.normal_degrees = std::max(e.normal_degrees, finite ? std::acos(c) * 180.0 / M_PI : 180.0);
     ++e.count;
@@ -59,23 +66,54 @@ Errors compare(const CovarianceMesh& mesh, float level) {
   return e;
 }
 
-// Condition numbers 1e4 and 1e5 (σ ratio 100 and 316) for discs and needles, 1e8 (σ ratio 1e4) for
-// discs: positions and normals within float precision of the CPU's. Beyond (needles of 1e8, any
-// Gaussian of 1e12) float sums of 9D points no longer hold Σ⁻¹'s thin directions (docs/design.md).
+// Condition numbers 1e4 and 1e5 (σ ratio 100 and 316) for discs and needles in float points; 1e8 (σ
+// ratio 1e4) and 1e12 (σ ratio 1e6) for both in double ones, where float sums of 9D points no longer
+// hold a needle's thin directions (docs/design.md): positions and normals within float precision of
+// the CPU's.
 TEST_F(NeedleCovariances, MatchTheCpuEvaluator) {
-  const std::vector<std::pair<double, bool>> cases = {{1e2, false}, {std::sqrt(1e5), false}, {1e4, false},
-                                                      {1e2, true},  {std::sqrt(1e5), true}};
+  const std::vector<std::pair<double, bool>> cases = {{1e2, false}, {std::sqrt(1e5), false}, {1e4, false}, {1e6, false},
+                                                      {1e2, true},  {std::sqrt(1e5), true},  {1e4, true},  {1e6, true}};
   for (const auto& [ratio, needle] : cases)
     for (const float level : {1.0f, 7.0f}) {
       const Errors e = compare(thin_torus(ratio, needle), level);
       std::printf("%-6s condition %.0e level %2.0f: position %.1e of the diagonal, normal %.4f degrees, %zu vertices, "
-                  "%zu degenerate\n",
+                  "%zu degenerate, %s points\n",
                   needle ? "needle" : "disc", ratio * ratio, level, e.position, e.normal_degrees, e.count,
-                  e.degenerate);
+                  e.degenerate, e.precision == PointPrecision::double_float ? "double" : "float");
       EXPECT_GT(e.count, size_t(1000));
+      EXPECT_EQ(e.precision, ratio * ratio > kDoublePointsCondition ? PointPrecision::double_float
+                                                                    : PointPrecision::single_float);
       EXPECT_LT(e.position, 5e-6) << (needle ? "needle" : "disc") << " condition " << ratio * ratio;
       EXPECT_LT(e.normal_degrees, 0.01) << (needle ? "needle" : "disc") << " condition " << ratio * ratio;
     }
+}
+
+// An edit that makes one Gaussian a needle of condition 1e12 takes the mesh to double points, and
+// one that makes it round again back to float: the surface as a renderer given the edited mesh
+// draws it, bit for bit.
+TEST_F(NeedleCovariances, AnEditChangesThePrecision) {
+  const CovarianceMesh round = thin_torus(10.0, true), needles = thin_torus(1e6, true);
+  CovarianceMesh edited = round;
+  edited.set_covariance(0, needles.covariance(0));
+  const auto draw = [](SurfaceRenderer& renderer) {
+    DrawOptions o;
+    o.level = 4.0f;
+    std::vector<float> values;
+    for (const auto& v : renderer.capture_vertices(Camera{}, o, 256, 256))
+      values.insert(values.end(), {v.position[0], v.position[1], v.position[2], v.normal[0], v.normal[1], v.normal[2]});
+    return values;
+  };
+  SurfaceRenderer renderer, fresh;
+  renderer.set_mesh(round);
+  ASSERT_EQ(renderer.point_precision(), PointPrecision::single_float);
+  renderer.update_vertices(edited, {0});
+  EXPECT_EQ(renderer.point_precision(), PointPrecision::double_float);
+  fresh.set_mesh(edited, PlannedSurface(edited, PlanOptions{}), renderer.frame());
+  EXPECT_EQ(draw(renderer), draw(fresh));
+  renderer.update_vertices(round, {0});
+  EXPECT_EQ(renderer.point_precision(), PointPrecision::single_float);
+  fresh.set_mesh(round, PlannedSurface(round, PlanOptions{}), renderer.frame());
+  EXPECT_EQ(draw(renderer), draw(fresh));
 }
 
 }  // namespace

@@ -1,0 +1,33 @@
+#include "render/pipeline/point_precision.h"
+
+#include <Eigen/Eigenvalues>
+
+namespace gps {
+
+bool needs_double_points(const Mat3& sigma) {
+  const Vec3 values = Eigen::SelfAdjointEigenSolver<Mat3>().computeDirect(sigma, Eigen::EigenvaluesOnly).eigenvalues();
+  return !(values.minCoeff() > 0.0) || values.maxCoeff() > kDoublePointsCondition * values.minCoeff();
+}
+
+MeshPointPrecision::MeshPointPrecision(const CovarianceMesh& mesh) : thin_(mesh.n_vertices(), 0) {
+  for (size_t v = 0; v < mesh.n_vertices(); ++v) {
+    thin_[v] = needs_double_points(mesh.covariance(v)) ? 1 : 0;
+    thin_count_ += size_t(thin_[v]);
+  }
+}
+
+void MeshPointPrecision::update(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  for (const int v : changed) {
+    const char thin = needs_double_points(mesh.covariance(size_t(v))) ? 1 : 0;
+    thin_count_ = thin_count_ - size_t(thin_[size_t(v)]) + size_t(thin);
+    thin_[size_t(v)] = thin;
+  }
+}
+
+std::vector<ShaderStage> at_precision(std::vector<ShaderStage> stages, PointPrecision precision) {
+  if (precision == PointPrecision::double_float)
+    for (ShaderStage& stage : stages) stage.sources.insert(stage.sources.begin(), "#define GPS_DOUBLE\n");
+  return stages;
+}
+
+}  // namespace gps
