@@ -49,7 +49,9 @@ void add_simplify_command(CLI::App& app) {
   cmd->callback([args, vertices, ratio, level] {
     if (vertices->count() == 0 && ratio->count() == 0) throw usage_error("simplify: give --vertices N or --ratio R");
     if (ratio->count() > 0 && !(args->ratio > 0)) throw usage_error("--ratio must be in (0, 1], got 0");
-    const CovarianceMesh input = read_mesh_repairing(args->input, args->repair);
+    // Simplifying uses the input's faces only: no covariances inferred for it.
+    const CovarianceMesh input = read_mesh_repairing(args->input, args->repair,
+                                                     ImportOptions{.covariance = ImportOptions::Covariance::isotropic});
     SimplifyOptions options;
     options.bias = args->bias;
     options.max_normal_deviation_degrees = args->max_normal_deviation;

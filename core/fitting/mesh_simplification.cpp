@@ -8,18 +8,14 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <OpenMesh/Core/Geometry/QuadricT.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
-#include <OpenMesh/Tools/Decimater/ModBaseT.hh>
-#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
-#include <OpenMesh/Tools/Decimater/Observer.hh>
 
+#include "core/fitting/halfedge_collapse.h"
 #include "core/mesh/error.h"
 
 namespace gps {
 namespace {
 
-using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
+using TriMesh = CollapseMesh;
 
 /// What a vertex of the decimated mesh has gathered from the input region collapsed into it: the
 /// error quadric of its planes, the region's area and the area-weighted tensor of its face normals.
@@ -46,43 +42,10 @@ struct Region {
   Mat3 normal_moment = Mat3::Zero();  // A_v N_v = Σ a_f n_f n_fᵀ
 };
 
-const char* const kRegionProperty = "gps:region";
-
 /// Weight of the merged region's squared area in a collapse's priority: among collapses of (nearly)
 /// equal quadric error, as across a flat side where all are zero, the one that makes the smaller
 /// region goes first, so regions grow evenly and one on a sharp edge takes both sides of it alike.
 constexpr double kRegionAreaWeight = 1e-3;
-
-/// The priority of a collapse is the quadric error at the position it keeps (ModQuadricT's) plus the
-/// region term above; after a
-/// collapse v0 → v1, v1's region takes v0's.
-template <class MeshT>
-class ModRegionT : public OpenMesh::Decimater::ModBaseT<MeshT> {
-public:
-  DECIMATING_MODULE(ModRegionT, MeshT, Region);
-
-  explicit ModRegionT(MeshT& mesh) : Base(mesh, false) { mesh.get_property_handle(region_, kRegionProperty); }
-
-  float collapse_priority(const CollapseInfo& ci) override {
-    const Region& from = Base::mesh().property(region_, ci.v0);
-    const Region& into = Base::mesh().property(region_, ci.v1);
-    OpenMesh::Geometry::Quadricd q = from.quadric;
-    q += into.quadric;
-    const double area = from.area + into.area;
-    return float(std::max(0.0, q(ci.p1)) + kRegionAreaWeight * area * area);
-  }
-
-  void postprocess_collapse(const CollapseInfo& ci) override {
-    const Region& from = Base::mesh().property(region_, ci.v0);
-    Region& into = Base::mesh().property(region_, ci.v1);
-    into.quadric += from.quadric;
-    into.area += from.area;
-    into.normal_moment += from.normal_moment;
-  }
-
-private:
-  OpenMesh::VPropHandleT<Region> region_;
-};
 
 /// Weight of a boundary edge's plane (perpendicular to its face through the edge) against the face
 /// planes, per squared edge length: large, so that collapses keep the boundary's shape.
@@ -135,23 +98,6 @@ void mark_sharpness(TriMesh& t, const Sharpness& sharpness, OpenMesh::EPropHandl
     if (creases != 2 || sharpness.corner(v.idx()) > 0) t.status(v).set_locked(true);
   }
 }
-
-/// Passes the decimater's progress on (a hundred reports over the collapses asked for) and its
-/// caller's wish to stop back to it.
-class ProgressObserver : public OpenMesh::Decimater::Observer {
-public:
-  ProgressObserver(const ProgressReport& report, size_t collapses)
-      : Observer(std::max<size_t>(1, collapses / 100)), report_(report), collapses_(std::max<size_t>(1, collapses)) {}
-  void notify(size_t step) override {
-    if (!stopped && !report_(std::min(1.0, double(step) / double(collapses_)))) stopped = true;
-  }
-  bool abort() const override { return stopped; }
-  bool stopped = false;
-
-private:
-  const ProgressReport& report_;
-  size_t collapses_;
-};
 
 /// Every vertex's region before any collapse: its quadric, and a third of each face around it.
 void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region) {
@@ -219,30 +165,36 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
   result.input_triangles = t.n_faces();
 
   OpenMesh::VPropHandleT<Region> region;
-  t.add_property(region, kRegionProperty);
+  t.add_property(region);
   seed_regions(t, region);
 
   t.request_vertex_status();
   t.request_edge_status();
   t.request_face_status();
-  t.request_face_normals();
-  t.update_face_normals();
   OpenMesh::EPropHandleT<double> crease;
   t.add_property(crease);
   mark_sharpness(t, input.sharpness, crease);
-  {
-    OpenMesh::Decimater::DecimaterT<TriMesh> decimater(t);
-    ModRegionT<TriMesh>::Handle priority;
-    OpenMesh::Decimater::ModNormalFlippingT<TriMesh>::Handle flipping;
-    decimater.add(priority);
-    decimater.add(flipping);
-    decimater.module(flipping).set_max_normal_deviation(options.max_normal_deviation_degrees);
-    decimater.initialize();
-    ProgressObserver observer(options.progress, t.n_vertices() - std::min(t.n_vertices(), options.target_vertices));
-    if (options.progress) decimater.set_observer(&observer);
-    decimater.decimate_to(options.target_vertices);
-    if (observer.stopped) throw Cancelled();
-  }
+  // A collapse's priority is the quadric error of the merged region at the position it keeps plus the
+  // region term; after a collapse from → into, into's region takes from's.
+  HalfedgeCollapses collapses;
+  collapses.priority = [&](TriMesh::VertexHandle from, TriMesh::VertexHandle into) {
+    const Region& a = t.property(region, from);
+    const Region& b = t.property(region, into);
+    OpenMesh::Geometry::Quadricd q = a.quadric;
+    q += b.quadric;
+    const double area = a.area + b.area;
+    return float(std::max(0.0, q(t.point(into))) + kRegionAreaWeight * area * area);
+  };
+  collapses.collapsed = [&](TriMesh::VertexHandle from, TriMesh::VertexHandle into) {
+    const Region& a = t.property(region, from);
+    Region& b = t.property(region, into);
+    b.quadric += a.quadric;
+    b.area += a.area;
+    b.normal_moment += a.normal_moment;
+  };
+  collapses.max_normal_deviation_degrees = options.max_normal_deviation_degrees;
+  collapses.progress = options.progress;
+  collapse_halfedges(t, options.target_vertices, collapses);
   t.garbage_collection();
 
   std::vector<Vec3> means;
