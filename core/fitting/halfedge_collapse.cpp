@@ -149,8 +149,8 @@ private:
     for (const auto w : mesh_.vv_range(v1)) mark_[size_t(w.idx())] = stamp_;
     for (const auto w : mesh_.vv_range(v0))
       if (mark_[size_t(w.idx())] == stamp_ && w != vl && w != vr) return false;
-    if (vl.is_valid() && vr.is_valid() && mesh_.find_halfedge(vl, vr).is_valid() && mesh_.valence(vl) == 3 &&
-        mesh_.valence(vr) == 3)
+    if (vl.is_valid() && vr.is_valid() && mesh_.valence(vl) == 3 && mesh_.valence(vr) == 3 &&
+        mesh_.find_halfedge(vl, vr).is_valid())
       return false;
     // At least two faces at v0.
     if (mesh_.cw_rotated_halfedge_handle(mesh_.cw_rotated_halfedge_handle(v0v1)) == v0v1) return false;

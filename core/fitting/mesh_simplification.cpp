@@ -180,10 +180,9 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
   collapses.priority = [&](TriMesh::VertexHandle from, TriMesh::VertexHandle into) {
     const Region& a = t.property(region, from);
     const Region& b = t.property(region, into);
-    OpenMesh::Geometry::Quadricd q = a.quadric;
-    q += b.quadric;
+    const auto p = t.point(into);
     const double area = a.area + b.area;
-    return float(std::max(0.0, q(t.point(into))) + kRegionAreaWeight * area * area);
+    return float(std::max(0.0, a.quadric(p) + b.quadric(p)) + kRegionAreaWeight * area * area);
   };
   collapses.collapsed = [&](TriMesh::VertexHandle from, TriMesh::VertexHandle into) {
     const Region& a = t.property(region, from);
