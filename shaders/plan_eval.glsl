@@ -12,7 +12,7 @@ layout(std430, binding = kBindingExtraordinaryTables) readonly buffer Extraordin
 
 #include "core/plans/plan_descent.h"
 
-point_vec3 g_anchor = point_vec3(0.0);  // what the sums are taken about: set before the first add_point of an evaluation
+point_vec3 g_anchor = point_vec3(0.0);  // what the sums are taken about: set before an evaluation's first add_point
 
 // The point of a leaf's net (n points from nodes[net]) weighing most in its sum at these weights,
 // |w| tr q̂: the sums' anchor. About it the heaviest term is its own small offset y, not q̂ times a

@@ -13,8 +13,10 @@ DualStencilPass::DualStencilPass() { set_precision(PointPrecision::single_float)
 void DualStencilPass::set_precision(PointPrecision precision) {
   const int i = int(precision);
   if (stencil_[i].id() == 0) {  // the last one built, before the switch
-    dual_map_[i] = ShaderProgram("dual_map", at_precision({{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::dual_map_comp}}}, precision));
-    stencil_[i] = ShaderProgram("stencil", at_precision({{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::stencil_comp}}}, precision));
+    dual_map_[i] = ShaderProgram(
+        "dual_map", at_precision({{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::dual_map_comp}}}, precision));
+    stencil_[i] = ShaderProgram(
+        "stencil", at_precision({{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::stencil_comp}}}, precision));
   }
   precision_ = precision;
 }

@@ -24,9 +24,9 @@ ShaderProgram patch_program(PatchShape shape, PatchOutput output, PointPrecision
   evaluation.push_back(shaders::canonical_edge);
   evaluation.push_back(triangles ? shaders::triangle_tese : shaders::patch_tese);
   std::vector<ShaderStage> stages = at_precision({{GL_VERTEX_SHADER, {shaders::patch_vert}},
-                                                 {GL_TESS_CONTROL_SHADER, control},
-                                                 {GL_TESS_EVALUATION_SHADER, evaluation}},
-                                                precision);
+                                                  {GL_TESS_CONTROL_SHADER, control},
+                                                  {GL_TESS_EVALUATION_SHADER, evaluation}},
+                                                 precision);
   const std::string name = triangles ? "triangle_patch" : "patch";
   if (feedback)
     return ShaderProgram(name + "_feedback", stages, {"v_patch_uv", "v_position", "v_normal", "v_evaluated"});
@@ -76,8 +76,8 @@ PatchDraw::PatchDraw() { set_precision(PointPrecision::single_float); }
 void PatchDraw::set_precision(PointPrecision precision) {
   const int i = int(precision);
   if (triangle_[i][4].id() == 0) {  // the last one built, before the switch
-    for (const PatchOutput output : {PatchOutput::shaded, PatchOutput::feedback, PatchOutput::capture,
-                                     PatchOutput::shaded_capture})
+    for (const PatchOutput output :
+         {PatchOutput::shaded, PatchOutput::feedback, PatchOutput::capture, PatchOutput::shaded_capture})
       quad_[i][quad_slot(output)] = patch_program(PatchShape::quad, output, precision);
     for (const PatchOutput output : {PatchOutput::shaded, PatchOutput::feedback, PatchOutput::wireframe,
                                      PatchOutput::capture, PatchOutput::shaded_capture})

@@ -76,13 +76,14 @@ TEST_F(NeedleCovariances, MatchTheCpuEvaluator) {
   for (const auto& [ratio, needle] : cases)
     for (const float level : {1.0f, 7.0f}) {
       const Errors e = compare(thin_torus(ratio, needle), level);
-      std::printf("%-6s condition %.0e level %2.0f: position %.1e of the diagonal, normal %.4f degrees, %zu vertices, "
-                  "%zu degenerate, %s points\n",
-                  needle ? "needle" : "disc", ratio * ratio, level, e.position, e.normal_degrees, e.count,
-                  e.degenerate, e.precision == PointPrecision::double_float ? "double" : "float");
+      std::printf(
+          "%-6s condition %.0e level %2.0f: position %.1e of the diagonal, normal %.4f degrees, %zu vertices, "
+          "%zu degenerate, %s points\n",
+          needle ? "needle" : "disc", ratio * ratio, level, e.position, e.normal_degrees, e.count, e.degenerate,
+          e.precision == PointPrecision::double_float ? "double" : "float");
       EXPECT_GT(e.count, size_t(1000));
-      EXPECT_EQ(e.precision, ratio * ratio > kDoublePointsCondition ? PointPrecision::double_float
-                                                                    : PointPrecision::single_float);
+      EXPECT_EQ(e.precision,
+                ratio * ratio > kDoublePointsCondition ? PointPrecision::double_float : PointPrecision::single_float);
       EXPECT_LT(e.position, 5e-6) << (needle ? "needle" : "disc") << " condition " << ratio * ratio;
       EXPECT_LT(e.normal_degrees, 0.01) << (needle ? "needle" : "disc") << " condition " << ratio * ratio;
     }

@@ -126,13 +126,14 @@ TEST(RenderCli, NeedlesOfCondition1e12RenderAsTheExactEvaluatorSays) {
   write_mesh(dir.file("thin.ply"), test::thin_torus(1e6, true));
   for (const bool exact : {false, true}) {
     const std::string name = exact ? "e" : "g";
-    const auto r = run_command(gpsurf("render " + dir.file("thin.ply") + " -o " + dir.file(name + ".png") +
-                                      " --size 96x96" + (exact ? " --exact" : "") + " --aov position=" +
-                                      dir.file(name + "p.exr")));
+    const auto r =
+        run_command(gpsurf("render " + dir.file("thin.ply") + " -o " + dir.file(name + ".png") + " --size 96x96" +
+                           (exact ? " --exact" : "") + " --aov position=" + dir.file(name + "p.exr")));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_TRUE(std::filesystem::exists(dir.file(name + ".png")));
   }
-  const auto p = run_command(gpsurf("diff " + dir.file("gp.exr") + " " + dir.file("ep.exr") + " -o " + dir.file("dp.png")));
+  const auto p =
+      run_command(gpsurf("diff " + dir.file("gp.exr") + " " + dir.file("ep.exr") + " -o " + dir.file("dp.png")));
   ASSERT_EQ(p.exit_code, 0) << p.output;
   EXPECT_LT(figure_after(p.output, "max "), 1e-4) << p.output;
 }
