@@ -1,6 +1,7 @@
 // Creases against the same mesh without them: per mesh and crease kind, the live frame (every
 // patch evaluated, surface cache off) at equal tessellation, the preprocessing (plans and stencils)
-// and the tables' memory. Crease kinds: none ("smooth"), the same edges infinitely sharp ("sharp"),
+// and the tables' memory; and a sharpness change on a large creased mesh, re-planned in full against
+// incrementally (core/plans/sharpness_replanner.h), both timed in the same run. Crease kinds: none ("smooth"), the same edges infinitely sharp ("sharp"),
 // semi-sharp at 2.5 ("semi2.5"). The edges: those of the wirecube's square beams (sharp by angle,
 // every beam edge) and three great circles of the sphere and the torus (edges in a coordinate
 // plane). Run with --benchmark_enable_random_interleaving=true and --benchmark_repetitions=N so that
@@ -20,6 +21,7 @@
 #include "core/mesh/error.h"
 #include "core/mesh/samples.h"
 #include "core/plans/planned_surface.h"
+#include "core/plans/sharpness_replanner.h"
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"
 #include "view/camera.h"
@@ -85,6 +87,53 @@ void BM_Preprocess(benchmark::State& state, MeshCase m, int kind) {
   state.counters["node_ints"] = double(nodes);
 }
 
+// One edge's sharpness changed (set to 2.5 or back to 0, a different edge each time) on the creased
+// mesh: the full re-plan (build_surface_plans, then the PlannedSurface the renderer takes) against the
+// replanner's (set_sharpness, then the PlannedSurface of its tables), timed alternately in one run.
+void BM_SharpnessChange(benchmark::State& state, MeshCase m) {
+  using Clock = std::chrono::steady_clock;
+  gps::CovarianceMesh mesh = sample(m, 2);
+  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  const gps::PlanOptions options;
+  gps::SharpnessReplanner replanner(topology, options, mesh.sharpness);
+  std::vector<std::pair<int, int>> edges;
+  for (const auto& e : mesh.mesh.edges()) edges.emplace_back(e.v0().idx(), e.v1().idx());
+  double full_plans = 0, incremental_plans = 0, full_surface = 0, incremental_surface = 0;
+  size_t changes = 0, faces = 0;
+  for (auto _ : state) {
+    const auto [a, b] = edges[(changes * 7919) % edges.size()];
+    mesh.sharpness.set_crease(a, b, mesh.sharpness.crease(a, b) > 0.0 ? 0.0 : 2.5);
+    const auto t0 = Clock::now();
+    const gps::SurfaceTables full = gps::build_surface_plans(topology, options, mesh.sharpness);
+    const auto t1 = Clock::now();
+    faces += replanner.set_sharpness(mesh.sharpness).size();
+    const auto t2 = Clock::now();
+    const gps::PlannedSurface full_surface_built(mesh, options);
+    const auto t3 = Clock::now();
+    const gps::PlannedSurface incremental_surface_built(mesh, replanner.scheme(), replanner.tables());
+    const auto t4 = Clock::now();
+    benchmark::DoNotOptimize(full.plans.nodes.data());
+    benchmark::DoNotOptimize(incremental_surface_built.points().data());
+    benchmark::DoNotOptimize(full_surface_built.points().data());
+    const auto ms = [](auto d) { return std::chrono::duration<double, std::milli>(d).count(); };
+    full_plans += ms(t1 - t0);
+    incremental_plans += ms(t2 - t1);
+    full_surface += ms(t3 - t2);
+    incremental_surface += ms(t2 - t1) + ms(t4 - t3);
+    state.SetIterationTime(std::chrono::duration<double>(t2 - t1).count());
+    ++changes;
+  }
+  const double n = double(changes);
+  state.counters["faces"] = double(topology.n_faces());
+  state.counters["replanned_faces"] = double(faces) / n;
+  state.counters["full_plans_ms"] = full_plans / n;
+  state.counters["incremental_plans_ms"] = incremental_plans / n;
+  state.counters["plans_speedup"] = full_plans / incremental_plans;
+  state.counters["full_surface_ms"] = full_surface / n;
+  state.counters["incremental_surface_ms"] = incremental_surface / n;
+  state.counters["surface_speedup"] = full_surface / incremental_surface;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -100,5 +149,10 @@ int main(int argc, char** argv) {
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
     }
+  for (const MeshCase& m : {MeshCase{"sphere", 98304}, MeshCase{"icosphere", 81920}})
+    benchmark::RegisterBenchmark(("SharpnessChange/" + m.id()).c_str(), BM_SharpnessChange, m)
+        ->UseManualTime()
+        ->Iterations(5)
+        ->Unit(benchmark::kMillisecond);
   return gps::bench::run_benchmarks(argc, argv);
 }

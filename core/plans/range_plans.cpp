@@ -20,11 +20,25 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
       if (added) plans.extraordinary_tables.insert(plans.extraordinary_tables.end(), table->begin(), table->end());
       extraordinary_offset[r].push_back(at->second);
     }
+  // The rows' keys on all cores (kept: a range merged again is not hashed again), then the rows in order.
+  size_t n_rows = 0;
+#pragma omp parallel for schedule(dynamic) reduction(+ : n_rows)
+  for (size_t r = 0; r < ranges.size(); ++r) {
+    const StencilTable& s = ranges[r].tables.stencils;
+    std::vector<size_t>& keys = ranges[r].row_keys;
+    if (keys.size() != size_t(s.n_rows())) {
+      keys.resize(size_t(s.n_rows()));
+      for (int row = 0; row < s.n_rows(); ++row) keys[size_t(row)] = StencilTableBuilder::row_key(s, row);
+    }
+    n_rows += size_t(s.n_rows());
+  }
+  stencils.reserve_lookup(n_rows);
   std::vector<std::vector<int>> rows(ranges.size());  // per range: local row -> point in the whole table
   for (size_t r = 0; r < ranges.size(); ++r) {
     const StencilTable& s = ranges[r].tables.stencils;
     rows[r].resize(size_t(s.n_rows()));
-    for (int row = 0; row < s.n_rows(); ++row) rows[r][size_t(row)] = stencils.add_row(s, row);
+    for (int row = 0; row < s.n_rows(); ++row)
+      rows[r][size_t(row)] = stencils.add_row(s, row, ranges[r].row_keys[size_t(row)]);
   }
   // Where each range's records start in the whole table.
   std::vector<size_t> node_base(ranges.size() + 1, 0), patch_base(ranges.size() + 1, 0);

@@ -16,6 +16,7 @@ namespace gps {
 struct RangePlans {
   SurfaceTables tables;
   std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables;
+  std::vector<size_t> row_keys;  // per row of its stencils: StencilTableBuilder::row_key, kept by merge_ranges
 };
 
 /// The tables of all ranges in order, as a single range over all faces gives them: a row is added

@@ -9,9 +9,47 @@
 
 namespace gps {
 
+namespace {
+constexpr int kEmptySlot = -2;
+// The slot a key starts at (splitmix64's finaliser: every bit of the key reaches the low ones).
+size_t slot_of(size_t key, size_t mask) {
+  key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ull;
+  key = (key ^ (key >> 27)) * 0x94d049bb133111ebull;
+  return (key ^ (key >> 31)) & mask;
+}
+}  // namespace
+
 StencilTableBuilder::StencilTableBuilder(int n_base) {
   table_.n_base = n_base;
   table_.offsets.push_back(0);
+  grow_lookup(64);
+}
+
+void StencilTableBuilder::grow_lookup(size_t slots) {
+  std::vector<size_t> keys(slots, 0);
+  std::vector<int> rows(slots, kEmptySlot);
+  for (size_t i = 0; i < slot_rows_.size(); ++i) {
+    if (slot_rows_[i] == kEmptySlot) continue;
+    size_t at = slot_of(slot_keys_[i], slots - 1);
+    while (rows[at] != kEmptySlot) at = (at + 1) & (slots - 1);
+    keys[at] = slot_keys_[i];
+    rows[at] = slot_rows_[i];
+  }
+  slot_keys_ = std::move(keys);
+  slot_rows_ = std::move(rows);
+}
+
+int& StencilTableBuilder::last_row_of(size_t key) {
+  if (2 * (used_slots_ + 1) > slot_rows_.size()) grow_lookup(2 * slot_rows_.size());
+  const size_t mask = slot_rows_.size() - 1;
+  size_t at = slot_of(key, mask);
+  while (slot_rows_[at] != kEmptySlot && slot_keys_[at] != key) at = (at + 1) & mask;
+  if (slot_rows_[at] == kEmptySlot) {
+    slot_keys_[at] = key;
+    slot_rows_[at] = -1;
+    ++used_slots_;
+  }
+  return slot_rows_[at];
 }
 
 namespace {
@@ -38,22 +76,41 @@ struct RowTerms {
 int StencilTableBuilder::add(const Stencil& s) {
   if (const int v = s.as_vertex(); v >= 0) return v;
   assert(!s.empty() && std::abs(s.weight_sum() - 1.0) < 1e-9);
-  return add_terms(s.terms());
+  return add_terms(s.terms(), key_of(s.terms()));
 }
 
-int StencilTableBuilder::add_row(const StencilTable& other, int row) { return add_terms(RowTerms{other, row}); }
+int StencilTableBuilder::add_row(const StencilTable& other, int row, size_t key) {
+  return add_terms(RowTerms{other, row}, key);
+}
 
+size_t StencilTableBuilder::row_key(const StencilTable& table, int row) { return key_of(RowTerms{table, row}); }
+
+void StencilTableBuilder::reserve_lookup(size_t rows) {
+  previous_same_hash_.reserve(previous_same_hash_.size() + rows);
+  size_t slots = slot_rows_.size();
+  while (slots < 2 * (used_slots_ + rows)) slots *= 2;
+  if (slots > slot_rows_.size()) grow_lookup(slots);
+}
+
+// A hash of the nonzero terms, and their number.
 template <class Terms>
-int StencilTableBuilder::add_terms(const Terms& terms) {
-  // Zero weights are skipped in the hash, the comparison and the row alike (no copy of the terms).
+size_t StencilTableBuilder::key_of(const Terms& terms) {
   size_t hash = 0, n_terms = 0;
   for (const auto& [index, weight] : terms)
     if (weight != 0.0) {
       hash = (hash * 0x9e3779b97f4a7c15ull) ^ (size_t(index) * 31 + std::bit_cast<size_t>(weight));
       ++n_terms;
     }
-  const auto chain = last_row_by_hash_.try_emplace(hash ^ n_terms, -1).first;
-  for (int row = chain->second; row >= 0; row = previous_same_hash_[size_t(row)]) {
+  return hash ^ n_terms;
+}
+
+template <class Terms>
+int StencilTableBuilder::add_terms(const Terms& terms, size_t key) {
+  // Zero weights are skipped in the key, the comparison and the row alike (no copy of the terms).
+  size_t n_terms = 0;
+  for (const auto& term : terms) n_terms += term.second != 0.0 ? 1 : 0;
+  int& last = last_row_of(key);
+  for (int row = last; row >= 0; row = previous_same_hash_[size_t(row)]) {
     const int b = table_.offsets[size_t(row)], e = table_.offsets[size_t(row) + 1];
     if (e - b != int(n_terms)) continue;
     bool same = true;
@@ -73,8 +130,8 @@ int StencilTableBuilder::add_terms(const Terms& terms) {
     table_.weights.push_back(weight);
   }
   table_.offsets.push_back(int(table_.indices.size()));
-  previous_same_hash_.push_back(chain->second);
-  chain->second = row;
+  previous_same_hash_.push_back(last);
+  last = row;
   return table_.n_base + row;
 }
 

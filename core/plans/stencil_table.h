@@ -1,6 +1,5 @@
 #pragma once
 // Building and applying the stencil table of core/plans/patch_plans.h (docs/design.md §2 steps 3–4).
-#include <unordered_map>
 #include <vector>
 
 #include "core/mesh/linalg.h"
@@ -17,16 +16,31 @@ public:
   /// The point index of `s` (a base vertex index, or n_base + row).
   int add(const Stencil& s);
   /// The point index of row `row` of another table over the same base vertices.
-  int add_row(const StencilTable& other, int row);
+  int add_row(const StencilTable& other, int row) { return add_row(other, row, row_key(other, row)); }
+  /// The same with the row's key (row_key) known, for tables merged again and again.
+  int add_row(const StencilTable& other, int row, size_t key);
+  /// The key a row of a builder's table (no zero weights) is found by.
+  static size_t row_key(const StencilTable& table, int row);
+  /// Room in the lookup for `rows` rows (the table itself grows as rows come, to its own size).
+  void reserve_lookup(size_t rows);
   StencilTable finish() { return std::move(table_); }
 
 private:
   template <class Terms>
-  int add_terms(const Terms& terms);
+  static size_t key_of(const Terms& terms);
+  template <class Terms>
+  int add_terms(const Terms& terms, size_t key);
+
+  // The newest row of `key` (−1: none yet), in an open-addressing table (no allocation per row).
+  int& last_row_of(size_t key);
+  void grow_lookup(size_t slots);
 
   StencilTable table_;
-  std::unordered_map<size_t, int> last_row_by_hash_;  // chains through previous_same_hash_
-  std::vector<int> previous_same_hash_;               // per row: the previous row of equal hash, or −1
+  std::vector<size_t> slot_keys_;       // per slot: its key
+  std::vector<int> slot_rows_;          // per slot: the newest row of that key, chaining through
+                                        // previous_same_hash_; kEmptySlot where the slot is free
+  size_t used_slots_ = 0;
+  std::vector<int> previous_same_hash_;  // per row: the previous row of equal key, or −1
 };
 
 /// All points: q of the base vertices, then every row (one sparse matrix-vector product over 9D).
