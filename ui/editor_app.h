@@ -19,6 +19,7 @@
 #include "render/pipeline/surface_renderer.h"
 #include "render/gl/window_context.h"
 #include "core/modelling/loop_cut.h"
+#include "core/plans/sharpness_replanner.h"
 #include "ui/axis_handles.h"
 #include "ui/command_table.h"
 #include "ui/edit_reach.h"
@@ -89,8 +90,11 @@ private:
   void axis_view(float yaw, float pitch);
   // Modelling (editor_modelling.cpp): the Mesh menu, G / S / R and the modal tools.
   void build_modelling_commands();
-  bool run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run);
-  void install(const Modelled& result);  // throws gps::Error before anything changes
+  bool run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
+                     SharpnessReplanner* replanner = nullptr);
+  // Throws gps::Error before anything changes. `replanner`: the plans of the document's topology,
+  // which re-plans a result of the same topology and other sharpness around the changes only.
+  void install(const Modelled& result, SharpnessReplanner* replanner = nullptr);
   void topology_changed(const std::vector<int>& selection);
   void rebuild_after_undo(const std::vector<int>& selection);
   void operation_note(const std::string& message, bool error);
@@ -114,7 +118,7 @@ private:
   void preview_crease(double sharpness);
   void end_crease(bool keep);
   Modelled creased(const CovarianceMesh& mesh, bool corners, double sharpness) const;
-  void apply_sharpness(bool corners, double sharpness);
+  void apply_sharpness(bool corners, double sharpness, SharpnessReplanner* replanner = nullptr);
   void draw_delete_items();
   void draw_merge_items();
   void draw_add_items();
@@ -219,8 +223,13 @@ private:
     glm::vec2 start_cursor{0.0f};
     std::string typed;
     std::shared_ptr<const CovarianceMesh> shown;  // the mesh the surface was planned for
+    // The plans of the document's topology, re-planned for each value only around the changed
+    // edges or corners (core/plans/sharpness_replanner.h); made at the first change.
+    std::shared_ptr<SharpnessReplanner> replanner;
   };
   std::optional<CreaseTool> crease_;
+  /// The surface of `mesh` (the document's topology, other sharpness) from the tool's replanner.
+  PlannedSurface crease_surface(CreaseTool& tool, const CovarianceMesh& mesh);
   // File → Simplify… and Fit to…: the dialog, its job and the settings each last had.
   struct SimplifySettings {
     int vertices = 0;  // 0: a tenth of the mesh's

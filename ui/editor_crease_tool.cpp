@@ -1,7 +1,7 @@
 // The editor's crease tool (Shift+E, Ctrl+Shift+V): the sharpness of the selected edges or the corner
 // sharpness of the selected vertices followed from the mouse or typed, the surface re-planned for
-// each value, one undo step when confirmed (docs/editor.md "Crease"). Its events are the modal
-// tools' (ui/editor_modal_tools.cpp).
+// each value (around the changed edges or corners only), one undo step when confirmed
+// (docs/editor.md "Crease"). Its events are the modal tools' (ui/editor_modal_tools.cpp).
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -21,10 +21,10 @@ Modelled EditorApp::creased(const CovarianceMesh& mesh, bool corners, double sha
   return set_crease(mesh, with_mirrored_edges(mesh, edges_within(mesh, selected), reach_options_), sharpness);
 }
 
-void EditorApp::apply_sharpness(bool corners, double sharpness) {
+void EditorApp::apply_sharpness(bool corners, double sharpness, SharpnessReplanner* replanner) {
   const std::vector<int> before = selection_.vertices();
-  const bool done = run_operation(corners ? "corner" : "crease",
-                                  [&](const CovarianceMesh& m) { return creased(m, corners, sharpness); });
+  const bool done = run_operation(
+      corners ? "corner" : "crease", [&](const CovarianceMesh& m) { return creased(m, corners, sharpness); }, replanner);
   if (done) selection_.select(before, false);  // the selection as it was (set_crease selects the edges' ends)
 }
 
@@ -47,8 +47,17 @@ void EditorApp::start_crease(bool corners) {
   preview_crease(crease_->start);
 }
 
+PlannedSurface EditorApp::crease_surface(CreaseTool& tool, const CovarianceMesh& mesh) {
+  if (tool.replanner)
+    tool.replanner->set_sharpness(mesh.sharpness);
+  else
+    tool.replanner = std::make_shared<SharpnessReplanner>(topology_of(mesh.mesh), view_.plans(), mesh.sharpness);
+  return PlannedSurface(mesh, tool.replanner->scheme(), tool.replanner->tables());
+}
+
 // Re-plans the surface for the sharpness (a change of sharpness changes the plans, as a change of
-// topology does); the document keeps its mesh until the tool is confirmed.
+// topology does; only those of the faces around the changed edges or corners after the first change);
+// the document keeps its mesh until the tool is confirmed.
 void EditorApp::preview_crease(double sharpness) {
   CreaseTool& tool = *crease_;
   const char* what = tool.corners ? "corner" : "crease";
@@ -56,7 +65,7 @@ void EditorApp::preview_crease(double sharpness) {
   try {
     if (sharpness != tool.value) {
       auto shown = std::make_shared<const CovarianceMesh>(creased(document_.mesh(), tool.corners, sharpness).mesh);
-      renderer_->set_mesh(*shown, view_.plans());
+      renderer_->set_mesh(*shown, crease_surface(tool, *shown));
       tool.shown = std::move(shown);
       tool.value = sharpness;
     }
@@ -70,15 +79,18 @@ void EditorApp::preview_crease(double sharpness) {
 }
 
 void EditorApp::end_crease(bool keep) {
-  const CreaseTool tool = *crease_;
+  CreaseTool tool = *crease_;
   crease_.reset();
   const char* what = tool.corners ? "corner" : "crease";
   if (keep && tool.shown->sharpness != document_.mesh().sharpness) {
-    apply_sharpness(tool.corners, tool.value);  // one undo step; re-plans for the document's mesh
+    apply_sharpness(tool.corners, tool.value, tool.replanner.get());  // one undo step
     return;
   }
   try {  // the surface planned for the document's sharpness again
-    renderer_->set_mesh(document_.mesh(), view_.plans());
+    if (tool.replanner)
+      renderer_->set_mesh(document_.mesh(), crease_surface(tool, document_.mesh()));
+    else
+      renderer_->set_mesh(document_.mesh(), view_.plans());
   } catch (const Error& e) {
     set_status(e.what(), true);
     return;

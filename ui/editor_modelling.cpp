@@ -201,10 +201,11 @@ void EditorApp::draw_add_items() {
   }
 }
 
-bool EditorApp::run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run) {
+bool EditorApp::run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
+                              SharpnessReplanner* replanner) {
   if (modal_active()) return false;
   try {
-    install(run(document_.mesh()));
+    install(run(document_.mesh()), replanner);
   } catch (const Error& e) {  // refused: nothing changed, no undo step
     operation_note(name + " refused: " + e.what(), true);
     return false;
@@ -213,9 +214,13 @@ bool EditorApp::run_operation(const std::string& name, const std::function<Model
   return true;
 }
 
-void EditorApp::install(const Modelled& result) {
-  PlanOptions plans = view_.plans();
-  renderer_->set_mesh(result.mesh, plans);  // first: it throws before anything changes
+void EditorApp::install(const Modelled& result, SharpnessReplanner* replanner) {
+  if (replanner) {  // first: it throws before anything changes
+    replanner->set_sharpness(result.mesh.sharpness);
+    renderer_->set_mesh(result.mesh, PlannedSurface(result.mesh, replanner->scheme(), replanner->tables()));
+  } else {
+    renderer_->set_mesh(result.mesh, view_.plans());
+  }
   document_.apply(result, selection_.vertices());
   last_summary_ = result.summary;
   topology_changed(result.selection);
