@@ -8,6 +8,7 @@
 #include <Eigen/LU>
 #include <Eigen/IterativeLinearSolvers>
 
+#include "core/fitting/block_jacobi_preconditioner.h"
 #include "core/fitting/closest_points.h"
 #include "core/fitting/limit_weights.h"
 #include "core/mesh/dual_map.h"
@@ -104,6 +105,7 @@ public:
 
   const Parameters& start() const { return start_; }
   int unknowns() const { return n_ * p_; }
+  int unknowns_per_vertex() const { return p_; }
 
   VertexState vertex_state(const Parameters& x) const {
     VertexState s;
@@ -411,10 +413,13 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
     const Eigen::VectorXd diagonal = h.diagonal();
     const double floor = 1e-12 * std::max(diagonal.maxCoeff(), 1e-300);
     // Conjugate gradients (the damped system is positive definite): a direct factorisation's fill-in
-    // grows too fast with the control vertices and the 9×9 blocks.
-    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
+    // grows too fast with the control vertices and the 9×9 blocks. The step is a truncated Newton
+    // step: a hundred iterations give the direction that many more would, and the damping loop
+    // below accepts only steps that lower the objective.
+    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower, BlockJacobiPreconditioner> solver;
+    solver.preconditioner().set_block_size(problem.unknowns_per_vertex());
     solver.setTolerance(1e-6);
-    solver.setMaxIterations(500);
+    solver.setMaxIterations(100);
     bool accepted = false;
     // Levenberg-Marquardt: H + λ diag(H), λ raised until a step lowers the objective.
     for (int attempt = 0; attempt < 12 && !accepted; ++attempt) {
