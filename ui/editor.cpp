@@ -62,6 +62,7 @@ EditorApp::EditorApp(const EditorOptions& options)
   ImGui::StyleColorsDark();
   ImGui_ImplOpenGL3_Init("#version 450 core");
   renderer_ = std::make_unique<SurfaceRenderer>();
+  point_overlay_ = std::make_unique<PointOverlay>();
   timer_ = std::make_unique<GpuPassTimer>();
   renderer_->set_pass_timer(timer_.get());
   renderer_->set_collect_statistics(true);
@@ -102,6 +103,7 @@ EditorApp::EditorApp(const EditorOptions& options)
 }
 
 EditorApp::~EditorApp() {
+  point_overlay_.reset();
   renderer_.reset();
   timer_.reset();
   target_.reset();
@@ -115,6 +117,7 @@ int EditorApp::run() {
     if (script_finished()) break;
   }
   if (recorder_) recorder_->save(options_.record);
+  remember_target_points();  // under the name a save gave the document
   if (const std::string error = save_settings(config_folder_, view_, reach_options_); !error.empty())
     set_status(error, true);
   if (!options_.stats.empty()) write_statistics(options_.stats);
@@ -124,6 +127,7 @@ int EditorApp::run() {
 bool EditorApp::script_finished() {
   const bool scripted = script_ || !options_.screenshot.empty() || !options_.save.empty();
   if (!scripted || (script_ && !script_->done()) || job_dialog_.running() || layout_frames_ > 0) return false;
+  if (view_.target.shown && target_points_.busy()) return false;  // the target's distances as they settle
   // Two more frames after the last event: auto-sized ImGui windows settle on their second frame.
   if (++finishing_frames_ < 3) return false;
   if (!options_.save.empty()) save_to(options_.save);
@@ -173,7 +177,11 @@ void EditorApp::render_and_present() {
   // The edit path: only the changed vertices' 9D values and the stencil rows reading them.
   const std::vector<int> changed = document_.take_changed();
   const bool edited = !changed.empty();
-  if (edited) renderer_->update_vertices(document_.mesh(), changed);
+  if (edited) {
+    renderer_->update_vertices(document_.mesh(), changed);
+    surface_changed();
+  }
+  update_target_points();
   if (fb_width > 0 && fb_height > 0) {
     if (!target_ || target_->width() != fb_width || target_->height() != fb_height) {
       target_.reset();
@@ -185,6 +193,7 @@ void EditorApp::render_and_present() {
       draw.ellipsoid_vertices = &shown_ellipsoids_;
     }
     renderer_->draw(*target_, camera_, draw);
+    draw_target_points();
     // Once the surface has settled after an edit or a new mesh (a read-back every frame of a drag
     // would cost too much): a frame the float evaluation could not represent is said, not just shown.
     if (edited) {
@@ -260,10 +269,12 @@ void EditorApp::draw_ui() {
     const ViewPanelChanges c = draw_view_panel(view_, &view_.show_view);
     if (c.depth) try {
         renderer_->set_mesh(document_.mesh(), view_.plans());
+        surface_changed();
       } catch (const Error& e) {  // too big for the GPU's buffers: the previous plans stay
         set_status(e.what(), true);
       }
     if (c.matcap) renderer_->set_matcap(load_matcap(view_.matcap));
+    if (c.target_shown) remember_target_points();
     if (c.up_axis) {
       if (!document_.source_path().empty()) view_.up_axes[document_.source_path()] = view_.up_axis;
       frame_first_view();

@@ -107,6 +107,7 @@ void EditorApp::mesh_replaced() {
   view.triangle_mesh =
       scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
   renderer_->set_mesh(document_.mesh(), view.plans());  // first: it throws before anything changes
+  surface_changed();
   check_finite_ = true;
   view_.triangle_mesh = view.triangle_mesh;
   mode_ = Mode::none;
@@ -121,6 +122,7 @@ void EditorApp::mesh_replaced() {
   reach_options_.radius = 0.1 * bounding_box_diagonal(document_.mesh());
   reach_options_.mirror_tolerance = 1e-6 * bounding_box_diagonal(document_.mesh());
   opened_name_ = document_.display_name();
+  reopen_target_points();
 }
 
 bool EditorApp::save() {
@@ -201,6 +203,9 @@ void EditorApp::handle_browser_result() {
     case BrowserPurpose::save_mesh:
       save_to(*chosen);
       if (after_save_perform_ && !document_.dirty()) perform(pending_);
+      break;
+    case BrowserPurpose::load_target:
+      show_target_points(*chosen);
       break;
     case BrowserPurpose::load_matcap:
       try {

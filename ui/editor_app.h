@@ -4,8 +4,8 @@
 // editor_actions.cpp (open, save, undo, the unsaved-changes prompt), editor_commands.cpp (the
 // command table: keys, menus, help), editor_selection_commands.cpp (selection modes and tools),
 // editor_modelling.cpp (the Mesh menu's operations), editor_modal_tools.cpp (G / S / R, extrude,
-// loop cut, inset and crease following the mouse) and editor_mesh_jobs.cpp (File → Simplify… and
-// Fit to… in the background).
+// loop cut, inset and crease following the mouse), editor_mesh_jobs.cpp (File → Simplify… and
+// Fit to… in the background) and editor_target_points.cpp (a fit's target as points over the surface).
 #include <array>
 #include <chrono>
 #include <functional>
@@ -16,6 +16,7 @@
 
 #include "render/gl/gpu_pass_timer.h"
 #include "render/gl/render_target.h"
+#include "render/overlays/point_overlay.h"
 #include "render/pipeline/surface_renderer.h"
 #include "render/gl/window_context.h"
 #include "core/modelling/loop_cut.h"
@@ -35,6 +36,7 @@
 #include "ui/repair_prompt.h"
 #include "ui/selection.h"
 #include "ui/statistics_overlay.h"
+#include "ui/target_points.h"
 #include "ui/transform_mode.h"
 #include "ui/view_options.h"
 
@@ -127,6 +129,14 @@ private:
   void open_simplify_dialog();
   void open_fit_dialog();
   void draw_job_dialog();
+  // The target points over the surface (editor_target_points.cpp).
+  void build_target_point_commands();
+  void show_target_points(const std::string& path);
+  void reopen_target_points();    // the target kept for the document's file, or none
+  void remember_target_points();  // kept for the document's file (the View settings)
+  void surface_changed();         // the limit surface shown changed: its distances are measured again
+  void update_target_points();    // once a frame, before drawing
+  void draw_target_points();
   // Actions (editor_actions.cpp).
   void request(Action action);
   void perform(const Action& action);
@@ -159,6 +169,7 @@ private:
   std::unique_ptr<SurfaceRenderer> renderer_;
   std::unique_ptr<GpuPassTimer> timer_;
   std::unique_ptr<RenderTarget> target_;
+  std::unique_ptr<PointOverlay> point_overlay_;
   EditorDocument document_;
   std::string opened_name_;  // the display name of the mesh as opened (a save renames the document)
   Selection selection_;
@@ -167,7 +178,7 @@ private:
   ReachOptions reach_options_;
   InspectorPanel inspector_;
   FileBrowser browser_;
-  enum class BrowserPurpose { open_mesh, save_mesh, load_matcap } browser_purpose_ = BrowserPurpose::open_mesh;
+  enum class BrowserPurpose { open_mesh, save_mesh, load_matcap, load_target } browser_purpose_ = BrowserPurpose::open_mesh;
   RecentFiles recent_;
   RepairPrompt repair_prompt_;
   FrameClock clock_;
@@ -243,6 +254,8 @@ private:
   };
   FitSettings fit_settings_;
   JobDialog job_dialog_;
+  bool job_is_fit_ = false;     // the dialog open is Fit to…: once applied, its target is shown
+  TargetPoints target_points_;  // the dense target shown as points, and their distances
   std::string popup_request_;  // a popup menu (Delete, Merge, Add) a key asked for
   std::string last_summary_;   // what the last operation did
 

@@ -121,6 +121,7 @@ void EditorApp::build_commands() {
          [this] { view_.show_statistics = !view_.show_statistics; },
          always,
          [this] { return view_.show_statistics; }});
+  build_target_point_commands();
   build_modelling_commands();
   // Help
   t.add({"Help",

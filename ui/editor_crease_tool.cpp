@@ -66,6 +66,7 @@ void EditorApp::preview_crease(double sharpness) {
     if (sharpness != tool.value) {
       auto shown = std::make_shared<const CovarianceMesh>(creased(document_.mesh(), tool.corners, sharpness).mesh);
       renderer_->set_mesh(*shown, crease_surface(tool, *shown));
+      surface_changed();
       tool.shown = std::move(shown);
       tool.value = sharpness;
     }
@@ -91,6 +92,7 @@ void EditorApp::end_crease(bool keep) {
       renderer_->set_mesh(document_.mesh(), crease_surface(tool, document_.mesh()));
     else
       renderer_->set_mesh(document_.mesh(), view_.plans());
+    surface_changed();
   } catch (const Error& e) {
     set_status(e.what(), true);
     return;

@@ -1,5 +1,6 @@
 // File → Simplify… and Fit to…: the long mesh computations, each in a dialog whose job runs in the background
-// (ui/job_dialog.h) and whose result replaces the mesh as one undo step.
+// (ui/job_dialog.h) and whose result replaces the mesh as one undo step; a fit's target is then shown
+// as points over the surface (ui/editor_target_points.cpp).
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -38,6 +39,7 @@ void report_or_stop(const ProgressReport& report, double fraction) {
 
 void EditorApp::open_simplify_dialog() {
   if (modal_active()) return;
+  job_is_fit_ = false;
   const auto input = std::make_shared<const CovarianceMesh>(document_.mesh());
   auto settings = std::make_shared<SimplifySettings>(simplify_settings_);
   settings->vertices = std::clamp(settings->vertices, 4, std::max(4, int(input->n_vertices())));
@@ -81,6 +83,7 @@ void EditorApp::open_simplify_dialog() {
 
 void EditorApp::open_fit_dialog() {
   if (modal_active()) return;
+  job_is_fit_ = true;
   const auto coarse = std::make_shared<const CovarianceMesh>(document_.mesh());
   auto settings = std::make_shared<FitSettings>(fit_settings_);
   // At first the file the mesh came from: after Simplify… the dense mesh a fit most likely wants.
@@ -131,6 +134,7 @@ void EditorApp::draw_job_dialog() {
   try {
     install(*result);
     operation_note(last_summary_, false);
+    if (job_is_fit_) show_target_points(fit_settings_.target);  // how far the fit came, point by point
   } catch (const Error& e) {
     operation_note(e.what(), true);
   }

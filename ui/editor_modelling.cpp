@@ -221,6 +221,7 @@ void EditorApp::install(const Modelled& result, SharpnessReplanner* replanner) {
   } else {
     renderer_->set_mesh(result.mesh, view_.plans());
   }
+  surface_changed();
   document_.apply(result, selection_.vertices());
   last_summary_ = result.summary;
   topology_changed(result.selection);
@@ -238,6 +239,7 @@ void EditorApp::topology_changed(const std::vector<int>& selection) {
 void EditorApp::rebuild_after_undo(const std::vector<int>& selection) {
   try {
     renderer_->set_mesh(document_.mesh(), view_.plans());
+    surface_changed();
   } catch (const Error& e) {
     set_status(e.what(), true);
   }

@@ -37,6 +37,8 @@ void visit_settings(ViewOptions& view, ReachOptions& reach, Visit visit) {
   visit("show_view", view.show_view);
   visit("show_statistics", view.show_statistics);
   visit("up_axes", view.up_axes);
+  visit("target_points", view.target_files);
+  visit("target_point_size", view.target.point_size);
   visit("proportional", reach.proportional);
   visit("mirror", reach.mirror);
   visit("mirror_axis", reach.mirror_axis);
@@ -85,6 +87,7 @@ std::string load_settings(const std::string& folder, ViewOptions& view, ReachOpt
   view.pivot = std::clamp(view.pivot, 0, 1);
   view.ellipsoid_scope = std::clamp(view.ellipsoid_scope, 0, 2);
   for (auto& [file, axis] : view.up_axes) axis = std::clamp(axis, 0, 2);
+  view.target.point_size = std::clamp(view.target.point_size, 1.0f, 16.0f);
   return error;
 }
 

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cstdio>
 
 #include "render/image/matcap.h"
+#include "render/overlays/distance_ramp.h"
 #include "ui/ellipsoid_scope.h"
 
 namespace gps {
@@ -80,6 +82,51 @@ void overlay_section(ViewOptions& o, ViewPanelChanges&) {
   }
 }
 
+// The target points (while a target is loaded): their toggle, the distance ramp as a legend from 0 to
+// its end (the 99th percentile unless the slider chose another), and the point size.
+void target_section(ViewOptions& o, ViewPanelChanges& changes) {
+  TargetPointsView& t = o.target;
+  if (t.name.empty()) return;
+  ImGui::Separator();
+  if (ImGui::Checkbox("target points", &t.shown)) changes.target_shown = true;
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu of %s%s", t.count, t.name.c_str(), t.measuring ? "  (measuring...)" : "");
+  if (!t.shown) return;
+  // The legend: the ramp, with 0 (on the surface) at its left and its end at its right.
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x, height = ImGui::GetFontSize() * 0.8f;
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  constexpr int kSegments = 32;
+  for (int i = 0; i < kSegments; ++i) {
+    const auto colour = [](float f) {
+      const glm::vec3 c = ramp_colour(f);
+      return ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1.0f));
+    };
+    const ImU32 left = colour(float(i) / kSegments), right = colour(float(i + 1) / kSegments);
+    draw->AddRectFilledMultiColor(ImVec2(at.x + width * float(i) / kSegments, at.y),
+                                  ImVec2(at.x + width * float(i + 1) / kSegments, at.y + height), left, right, right,
+                                  left);
+  }
+  ImGui::Dummy(ImVec2(width, height));
+  ImGui::TextUnformatted("0");
+  char end[64];
+  std::snprintf(end, sizeof end, "%s%.3g", t.automatic ? "99%: " : "", t.max_distance);
+  ImGui::SameLine(std::max(0.0f, width - ImGui::CalcTextSize(end).x));
+  ImGui::TextUnformatted(end);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("points this far from the surface or farther are red");
+  const float largest = float(std::max(t.largest, double(t.max_distance)));
+  if (largest > 0.0f && ImGui::SliderFloat("ramp end", &t.max_distance, 0.0f, largest, "%.3g",
+                                           ImGuiSliderFlags_Logarithmic))
+    t.automatic = false;
+  ImGui::SameLine();
+  ImGui::Checkbox("99%", &t.automatic);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the ramp ends at the distances' 99th percentile");
+  ImGui::SliderFloat("point size", &t.point_size, 1.0f, 16.0f, "%.0f px");
+  ImGui::TextDisabled("rms %.3g, max %.3g (%.3g %% of its size)", t.rms, t.largest,
+                      100.0 * t.largest / (t.length > 0.0 ? t.length : 1.0));
+  ImGui::Separator();
+}
+
 void editing_section(ViewOptions& o, ViewPanelChanges&) {
   ImGui::Checkbox("common frame", &o.common_frame);
   if (ImGui::IsItemHovered())
@@ -98,8 +145,8 @@ void window_section(ViewOptions& o, ViewPanelChanges&) {
 }
 
 using Section = void (*)(ViewOptions&, ViewPanelChanges&);
-constexpr Section kSections[] = {tessellation_section, shading_section, overlay_section, editing_section,
-                                 window_section};
+constexpr Section kSections[] = {tessellation_section, shading_section, overlay_section, target_section,
+                                 editing_section, window_section};
 
 }  // namespace
 
