@@ -35,7 +35,8 @@ public:
   BlockJacobiPreconditioner& factorize(const Matrix& matrix) {
     size_ = matrix.rows();
     const int blocks = int(size_ / block_);
-    factors_.assign(size_t(blocks), Eigen::LDLT<Eigen::MatrixXd>());
+    factors_.clear();
+    factors_.reserve(size_t(blocks));
     Eigen::MatrixXd block(block_, block_);
     for (int b = 0; b < blocks; ++b) {
       block.setZero();
@@ -45,7 +46,7 @@ public:
           if (r < c || r >= block_) continue;
           block(r, c) = block(c, r) = it.value();
         }
-      factors_[size_t(b)].compute(block);
+      factors_.emplace_back(block);
     }
     return *this;
   }
