@@ -15,8 +15,6 @@
 namespace gps {
 namespace {
 
-using TriMesh = CollapseMesh;
-
 /// What a vertex of the decimated mesh has gathered from the input region collapsed into it: the
 /// error quadric of its planes, the region's area and the area-weighted tensor of its face normals.
 ///
@@ -54,19 +52,19 @@ constexpr double kBoundaryPlaneWeight = 100;
 /// The input as triangles, faces of more sides fanned from their first corner, in a frame where its
 /// bounding box is centred on the origin with a unit diagonal (`scale` its diagonal): the quadric
 /// errors and areas the priorities hold in single precision stay far from under- and overflow.
-TriMesh triangles_of(const CovarianceMesh& input, bool& triangulated, double& scale) {
+CollapseMesh triangles_of(const CovarianceMesh& input, bool& triangulated, double& scale) {
   Vec3 lo, hi;
   bounding_box(input, lo, hi);
   const Vec3 centre = 0.5 * (lo + hi);
   scale = (hi - lo).norm() > 0 ? (hi - lo).norm() : 1.0;
-  TriMesh t;
+  CollapseMesh t;
   t.reserve(input.n_vertices(), input.mesh.n_edges(), input.n_faces());
   for (const auto v : input.mesh.vertices()) t.add_vertex(to_point((to_vec3(input.mesh.point(v)) - centre) / scale));
   triangulated = false;
-  std::vector<TriMesh::VertexHandle> corners;
+  std::vector<CollapseMesh::VertexHandle> corners;
   for (const auto f : input.mesh.faces()) {
     corners.clear();
-    for (const auto v : input.mesh.fv_range(f)) corners.push_back(TriMesh::VertexHandle(v.idx()));
+    for (const auto v : input.mesh.fv_range(f)) corners.push_back(CollapseMesh::VertexHandle(v.idx()));
     triangulated = triangulated || corners.size() > 3;
     for (size_t k = 1; k + 1 < corners.size(); ++k)
       if (!t.add_face(corners[0], corners[k], corners[k + 1]).is_valid())
@@ -80,16 +78,16 @@ TriMesh triangles_of(const CovarianceMesh& input, bool& triangulated, double& sc
 /// crease collapses only along it, and a corner or a vertex where creases meet or end (not two of
 /// them) does not move. Each crease edge keeps its sharpness in `crease`, carried by the edges that
 /// survive the collapses.
-void mark_sharpness(TriMesh& t, const Sharpness& sharpness, OpenMesh::EPropHandleT<double> crease) {
+void mark_sharpness(CollapseMesh& t, const Sharpness& sharpness, OpenMesh::EPropHandleT<double> crease) {
   for (const auto e : t.edges()) t.property(crease, e) = 0;
   for (const EdgeCrease& c : sharpness.creases) {
-    const auto h = t.find_halfedge(TriMesh::VertexHandle(c.a), TriMesh::VertexHandle(c.b));
+    const auto h = t.find_halfedge(CollapseMesh::VertexHandle(c.a), CollapseMesh::VertexHandle(c.b));
     if (!h.is_valid()) continue;
     const auto e = t.edge_handle(h);
     t.status(e).set_feature(true);
     t.property(crease, e) = c.sharpness;
-    t.status(TriMesh::VertexHandle(c.a)).set_feature(true);
-    t.status(TriMesh::VertexHandle(c.b)).set_feature(true);
+    t.status(CollapseMesh::VertexHandle(c.a)).set_feature(true);
+    t.status(CollapseMesh::VertexHandle(c.b)).set_feature(true);
   }
   for (const auto v : t.vertices()) {
     if (!t.status(v).feature() && sharpness.corner(v.idx()) == 0) continue;
@@ -100,7 +98,7 @@ void mark_sharpness(TriMesh& t, const Sharpness& sharpness, OpenMesh::EPropHandl
 }
 
 /// Every vertex's region before any collapse: its quadric, and a third of each face around it.
-void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region) {
+void seed_regions(CollapseMesh& t, OpenMesh::VPropHandleT<Region> region) {
   for (const auto v : t.vertices()) t.property(region, v).vertex = v.idx();
   std::vector<Vec3> corners(3);
   for (const auto f : t.faces()) {
@@ -136,7 +134,7 @@ void seed_regions(TriMesh& t, OpenMesh::VPropHandleT<Region> region) {
 
 /// The covariance of a region (see Region); where its faces have no area (all degenerate), an
 /// isotropic one with σ half the mean length of the vertex's edges.
-Mat3 region_covariance(const TriMesh& t, TriMesh::VertexHandle v, const Region& r, double bias) {
+Mat3 region_covariance(const CollapseMesh& t, CollapseMesh::VertexHandle v, const Region& r, double bias) {
   if (r.area > 0) {
     const Mat3 normals = r.normal_moment / r.area;
     const Mat3 precision = ((Mat3::Identity() - normals) / (1 + bias) + normals / bias) / r.area;
@@ -161,7 +159,7 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
   SimplifiedMesh result;
   result.input_vertices = input.n_vertices();
   double scale = 1;
-  TriMesh t = triangles_of(input, result.triangulated, scale);
+  CollapseMesh t = triangles_of(input, result.triangulated, scale);
   result.input_triangles = t.n_faces();
 
   OpenMesh::VPropHandleT<Region> region;
@@ -177,14 +175,14 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
   // A collapse's priority is the quadric error of the merged region at the position it keeps plus the
   // region term; after a collapse from → into, into's region takes from's.
   HalfedgeCollapses collapses;
-  collapses.priority = [&](TriMesh::VertexHandle from, TriMesh::VertexHandle into) {
+  collapses.priority = [&](CollapseMesh::VertexHandle from, CollapseMesh::VertexHandle into) {
     const Region& a = t.property(region, from);
     const Region& b = t.property(region, into);
     const auto p = t.point(into);
     const double area = a.area + b.area;
     return float(std::max(0.0, a.quadric(p) + b.quadric(p)) + kRegionAreaWeight * area * area);
   };
-  collapses.collapsed = [&](TriMesh::VertexHandle from, TriMesh::VertexHandle into) {
+  collapses.collapsed = [&](CollapseMesh::VertexHandle from, CollapseMesh::VertexHandle into) {
     const Region& a = t.property(region, from);
     Region& b = t.property(region, into);
     b.quadric += a.quadric;

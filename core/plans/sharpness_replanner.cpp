@@ -107,10 +107,6 @@ std::vector<int> SharpnessReplanner::set_sharpness(const Sharpness& sharpness) {
   std::vector<int> which;
   for (const int f : faces)
     if (which.empty() || which.back() != f / faces_per_range_) which.push_back(f / faces_per_range_);
-  if (faces.size() == size_t(t.n_faces())) {
-    which.resize(size_t(n_ranges()));
-    for (size_t r = 0; r < which.size(); ++r) which[r] = int(r);
-  }
   build(which, sharpness);
   return faces;
 }
