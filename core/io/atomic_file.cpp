@@ -1,11 +1,11 @@
 #include "core/io/atomic_file.h"
 
 #include <fcntl.h>
-#include <pthread.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -29,7 +29,17 @@ char g_temp_path[4096];
 volatile sig_atomic_t g_temp_active = 0;
 constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
 
+// While a hard-linked target is written in place, an ending signal is only noted here, whichever
+// thread it reaches: the copy stops, the old contents are put back, and then the signal is raised.
+std::atomic<bool> g_writing_in_place{false};
+std::atomic<int> g_pending_signal{0};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
+
 extern "C" void remove_temp_and_reraise(int sig) {
+  if (g_writing_in_place) {
+    g_pending_signal = sig;
+    return;
+  }
   if (g_temp_active) ::unlink(g_temp_path);
   ::signal(sig, SIG_DFL);
   ::raise(sig);
@@ -40,17 +50,17 @@ class TempFileSignalGuard {
 public:
   explicit TempFileSignalGuard(const fs::path& temp) {
     const std::string s = temp.string();
-    if (s.size() >= sizeof g_temp_path) return;  // no cleanup for absurdly long paths; the next save clears it
-    std::memcpy(g_temp_path, s.c_str(), s.size() + 1);
+    if (s.size() < sizeof g_temp_path) {  // else no cleanup for absurdly long paths; the next save clears it
+      std::memcpy(g_temp_path, s.c_str(), s.size() + 1);
+      g_temp_active = 1;
+    }
     struct sigaction action {};
     action.sa_handler = remove_temp_and_reraise;
+    action.sa_flags = SA_RESTART;
     sigemptyset(&action.sa_mask);
     for (size_t i = 0; i < std::size(kCleanupSignals); ++i) sigaction(kCleanupSignals[i], &action, &previous_[i]);
-    g_temp_active = 1;
-    installed_ = true;
   }
   ~TempFileSignalGuard() {
-    if (!installed_) return;
     g_temp_active = 0;
     for (size_t i = 0; i < std::size(kCleanupSignals); ++i) sigaction(kCleanupSignals[i], &previous_[i], nullptr);
   }
@@ -59,25 +69,22 @@ public:
 
 private:
   struct sigaction previous_[std::size(kCleanupSignals)]{};
-  bool installed_ = false;
 };
 
-// Holds the signals that would end the process (they arrive once it is released), so that a file
-// written in place is never left half old, half new by them.
-class HeldSignals {
+// While alive, the ending signals are noted instead of acted on (see g_writing_in_place); at its end
+// a noted one removes the temporary file and ends the process.
+class InPlaceWrite {
 public:
-  HeldSignals() {
-    sigset_t held;
-    sigemptyset(&held);
-    for (const int sig : kCleanupSignals) sigaddset(&held, sig);
-    ::pthread_sigmask(SIG_BLOCK, &held, &previous_);
+  InPlaceWrite() {
+    g_pending_signal = 0;
+    g_writing_in_place = true;
   }
-  ~HeldSignals() { ::pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
-  HeldSignals(const HeldSignals&) = delete;
-  HeldSignals& operator=(const HeldSignals&) = delete;
-
-private:
-  sigset_t previous_{};
+  ~InPlaceWrite() {
+    g_writing_in_place = false;
+    if (const int sig = g_pending_signal.exchange(0)) remove_temp_and_reraise(sig);
+  }
+  InPlaceWrite(const InPlaceWrite&) = delete;
+  InPlaceWrite& operator=(const InPlaceWrite&) = delete;
 };
 
 // Closes the descriptor however the save ends.
@@ -89,14 +96,16 @@ struct FileDescriptor {
 };
 
 // Copies every byte of the file `from` into the descriptor `to` from its start, cuts `to` to that
-// length and flushes it to disk; returns an empty string, or what failed.
-std::string copy_into(const fs::path& from, int to) {
+// length and flushes it to disk; returns an empty string, or what failed. With `stop`, a noted
+// signal ends the copy early as a failure.
+std::string copy_into(const fs::path& from, int to, const std::atomic<int>* stop = nullptr) {
   const FileDescriptor in{::open(from.c_str(), O_RDONLY | O_CLOEXEC)};
   if (in.fd < 0) return std::string("cannot open ") + escaped(from.string()) + " (" + std::strerror(errno) + ")";
   if (::lseek(to, 0, SEEK_SET) != 0) return std::strerror(errno);
   char buffer[1 << 16];
   off_t total = 0;
   for (;;) {
+    if (stop && *stop) return "interrupted by signal " + std::to_string(stop->load());
     const ssize_t n = ::read(in.fd, buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) return std::string("cannot read ") + escaped(from.string()) + " (" + std::strerror(errno) + ")";
@@ -144,8 +153,9 @@ void remove_stale_temps(const fs::path& dir, const std::string& name) {
 
 // A file with more than one name (hard links) is written in place, so that every name keeps seeing
 // it, as careful editors do: its old contents are first saved as NAME~ beside it (atomically, flushed),
-// then the complete new contents in `temp` are copied over it with the ending signals held. A failed
-// copy puts the old contents back; where even that fails, the message names the backup.
+// then the complete new contents in `temp` are copied over it. A failed copy, or one an ending signal
+// interrupts, puts the old contents back (the signal then ends the process); where even that fails,
+// the message names the backup.
 void write_in_place(const SaveTarget& target, const fs::path& temp, const std::string& name) {
   const fs::path backup = target.file.string() + "~";
   const std::string shown_backup = escaped(backup.string());
@@ -154,7 +164,7 @@ void write_in_place(const SaveTarget& target, const fs::path& temp, const std::s
     throw Error(name + ": has " + std::to_string(target.links) +
                 " hard links, so it is written in place after a backup to " + shown_backup + ", which is " +
                 file_kind(status.st_mode) + "; nothing written");
-  const HeldSignals held;
+  const InPlaceWrite in_place;
   const std::string backup_name = backup.filename().string();
   remove_stale_temps(target.folder, backup_name);
   const fs::path backup_temp = target.folder / ("." + backup_name + ".tmp" + std::to_string(::getpid()));
@@ -179,7 +189,7 @@ void write_in_place(const SaveTarget& target, const fs::path& temp, const std::s
   if (file.fd < 0 || ::fstat(file.fd, &now) != 0 || now.st_dev != target.device || now.st_ino != target.inode)
     throw Error(name + ": changed while it was being saved; not written (the old contents are also in " + shown_backup +
                 ")");
-  const std::string failed = copy_into(temp, file.fd);
+  const std::string failed = copy_into(temp, file.fd, &g_pending_signal);
   if (failed.empty()) return;
   if (copy_into(backup, file.fd).empty())
     throw Error(name + ": writing in place failed (" + failed + "); the old contents are back");

@@ -1,10 +1,11 @@
 // Saves (core/io/atomic_file.h): through symbolic links, signals in the middle of a save, stale
-// temporary files of earlier crashed saves, targets that are not regular files, hard-linked and
-// read-only targets.
+// temporary files of earlier crashed saves, targets that are not regular files, hard-linked targets
+// (and signals sent while they are written in place), read-only targets.
 #include "core/io/atomic_file.h"
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 #include <cstring>
 
 #include "core/mesh/error.h"
@@ -229,6 +231,42 @@ TEST(AtomicFile, WritesAHardLinkedFileInPlaceAfterABackup) {
   EXPECT_EQ(contents(path), "newer, and longer");
   EXPECT_EQ(contents(dir.file("other.ply~")), "new");
   EXPECT_TRUE(others(dir.path(), {"m.ply", "other.ply", "m.ply~", "other.ply~"}).empty());
+}
+
+// A child process with a second thread (as gpsurf's parallel loops leave) saves onto a hard-linked
+// file and is sent a signal from outside as soon as the copy in place has begun: it dies of that
+// signal, and both names see either the complete old or the complete new contents, never a mix.
+TEST(AtomicFile, ASignalDuringAnInPlaceCopyLeavesACompleteFile) {
+  const size_t size = size_t(24) << 20;
+  for (const int sig : {SIGTERM, SIGINT, SIGHUP}) {
+    test::TempDir dir;
+    const std::string path = dir.write("m.ply", std::string(size, 'o'));
+    fs::create_hard_link(path, dir.path() / "other.ply");
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      std::thread([] {
+        for (;;) ::pause();
+      }).detach();
+      write_text(path, std::string(size, 'n'));
+      for (;;) ::pause();  // the signal ends the child however far the save got
+    }
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    ASSERT_GE(fd, 0);
+    char first = 'o';
+    int status = 0;
+    while (first != 'n' && ::waitpid(child, &status, WNOHANG) == 0) ASSERT_GE(::pread(fd, &first, 1, 0), 0);
+    ::close(fd);
+    ::kill(child, sig);
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << "signal " << sig;
+    const std::string now = contents(path);
+    EXPECT_TRUE(now == std::string(size, 'o') || now == std::string(size, 'n'))
+        << "signal " << sig << ": " << now.size() << " bytes, " << std::count(now.begin(), now.end(), 'n')
+        << " of them new";
+    EXPECT_EQ(contents(dir.file("m.ply~")), std::string(size, 'o')) << "signal " << sig;
+    EXPECT_TRUE(others(dir.path(), {"m.ply", "other.ply", "m.ply~"}).empty()) << "signal " << sig;
+  }
 }
 
 TEST(AtomicFile, RefusesAHardLinkedFileWhoseBackupNameIsTaken) {
