@@ -50,6 +50,9 @@ CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>
     throw Error(source + ": " + std::to_string(means.size()) + " vertices but " + std::to_string(covariances.size()) +
                 " covariances");
   t.n_vertices = int(means.size());
+  for (size_t i = 0; i < means.size(); ++i)
+    if (!means[i].allFinite())
+      throw Error(source + ": vertex " + std::to_string(i) + " has a position that is not finite");
   {
     std::vector<size_t> last_face(means.size(), size_t(-1));  // the last face that used each vertex: repeats in O(1)
     for (int f = 0; f < t.n_faces(); ++f) {

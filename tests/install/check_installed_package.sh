@@ -22,6 +22,8 @@ cmake --build "$work/core-build" -j"$(nproc)" >"$work/build.log"
 cmake --install "$work/core-build" >"$work/install.log"
 test -f "$work/prefix/lib/cmake/gpsurf/gpsurfConfig.cmake"
 test -f "$work/prefix/include/gpsurf/core/plans/planned_surface.h"
+# The installed headers need C++20, which the exported target asks of whoever links it.
+grep -q "cxx_std_20" "$work/prefix/lib/cmake/gpsurf/gpsurfTargets.cmake"
 test -x "$work/prefix/bin/gpsurf"
 "$work/prefix/bin/gpsurf" --version | grep -q "^gpsurf [0-9]"
 
