@@ -5,6 +5,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/gl_commands.h"
 #include "app/plan_arguments.h"
@@ -68,7 +69,7 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   cmd->add_option("--size", args->size,
                   "--render: render size in pixels (square, default 512); --edit: faces (default 100000)")
-      ->check(CLI::Range(16, 4000000));
+      ->transform(integer_in(16, 4000000));
   add_plan_arguments(cmd, args->plans);
   cmd->add_option("--mesh", args->mesh, "--edit: the sample to edit (default: sphere; icosphere for triangles)");
   cmd->add_option("--meshes", args->meshes,
@@ -76,10 +77,10 @@ void add_bench_command(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--levels", args->levels, "--render: the uniform tessellation levels (default 1,4,16,64)")
       ->delimiter(',')
-      ->check(CLI::Range(1, 64));
+      ->transform(integer_in(1, 64));
   cmd->add_option("--adaptive", args->adaptive_pixels,
                   "--render: also a row at adaptive levels of this many pixels per segment (default 6; 0: none)")
-      ->check(CLI::Range(0.0f, 1000.0f));
+      ->check(number_in(0, 1000));
   cmd->add_option("--json", args->json, "also write the figures as JSON");
   cmd->add_option("--plots", args->plots, "with --render: write PREFIX_frame_time.png and PREFIX_memory.png");
   cmd->callback([args] {

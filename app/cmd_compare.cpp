@@ -1,6 +1,7 @@
 // gpsurf compare A B: how far A's points lie from B's GPS limit surface (core/fitting/surface_distance.h).
 #include <iostream>
 
+#include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/naming_input.h"
 #include "app/plan_arguments.h"
@@ -35,7 +36,7 @@ void add_compare_command(CLI::App& app) {
   auto* level = cmd->add_option("--level", args->level,
                                 "tessellation level of the limit surfaces (default 8, lower for a surface that would "
                                 "make more than 2 million triangles)")
-                    ->check(CLI::Range(1, 64));
+                    ->transform(integer_in(1, 64));
   add_plan_arguments(cmd, args->plans);
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args, level] {

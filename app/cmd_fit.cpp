@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/naming_input.h"
 #include "app/plan_arguments.h"
@@ -34,16 +35,16 @@ void add_fit_command(CLI::App& app) {
       ->required();
   cmd->add_option("-o,--output", args->output, "output covariance PLY")->required();
   cmd->add_option("--iterations", args->iterations, "Levenberg-Marquardt iterations (default 10)")
-      ->check(CLI::Range(0, 1000));
+      ->transform(integer_in(0, 1000));
   cmd->add_flag("--plain", args->plain,
                 "fit the means only, every covariance the same isotropic one (ordinary subdivision-surface fitting)");
   cmd->add_option("--smoothness", args->smoothness,
                   "weight of the smoothness term against the mean squared distance (default 1e-5)")
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(number_in(0, 1e6));
   auto* level = cmd->add_option("--level", args->level,
                                 "tessellation level of the limit surface the final report measures (0: no report; "
                                 "default 8, lower where that would make more than 2 million triangles)")
-                    ->check(CLI::Range(0, 64));
+                    ->transform(integer_in(0, 64));
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   add_plan_arguments(cmd, args->plans);
   add_repair_arguments(cmd, args->repair);

@@ -1,7 +1,6 @@
 // gpsurf infer IN -o OUT: covariances for a plain mesh (GPS paper Eq. 16–17, or isotropic), and
 // optionally creases where the surface folds (--crease-angle).
 #include <iostream>
-#include <sstream>
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
@@ -32,15 +31,10 @@ void add_infer_command(CLI::App& app) {
   cmd->add_option("--crease-angle", args->crease_angle,
                   "make edges whose faces meet at more than DEGREES (0..180) infinitely sharp, as Blender's "
                   "sharp by angle")
-      ->check(non_negative_number());
+      ->check(number_in(0, 180));
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
-    if (args->crease_angle > 180) {
-      std::ostringstream text;
-      text << "--crease-angle: at most 180 degrees, got " << args->crease_angle;
-      throw usage_error(text.str());
-    }
     ImportOptions options;  // a plain mesh gets the same kind of covariances on import
     options.bias = args->bias;
     if (args->isotropic > 0) {

@@ -1,6 +1,7 @@
 // gpsurf sample NAME -o FILE: writes a built-in covariance mesh.
 #include <iostream>
 
+#include "app/cli_checks.h"
 #include "app/commands.h"
 #include "core/mesh/error.h"
 #include "core/io/mesh_io.h"
@@ -18,7 +19,7 @@ void add_sample_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("sample", "Write a built-in sample mesh (--list names them)");
   cmd->add_option("name", args->name, "sample name");
   cmd->add_option("-o,--output", args->output, "output file (.ply keeps covariances, .obj positions)");
-  cmd->add_option("--size", args->size, "approximate face count for grid and sphere")->check(CLI::Range(1, 4000000));
+  cmd->add_option("--size", args->size, "approximate face count for grid and sphere")->transform(integer_in(1, 4000000));
   cmd->add_flag("--list", args->list, "list the samples");
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   cmd->callback([args] {

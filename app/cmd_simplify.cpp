@@ -31,24 +31,23 @@ void add_simplify_command(CLI::App& app) {
   cmd->add_option("input", args->input, "input mesh (its covariances, if any, are not used)")->required();
   cmd->add_option("-o,--output", args->output, "output covariance PLY")->required();
   auto* vertices = cmd->add_option("--vertices", args->vertices, "vertices to keep (at least 4)")
-                       ->check(CLI::Range(size_t(4), size_t(1) << 40));
+                       ->transform(integer_in(4, 1LL << 40));
   auto* ratio = cmd->add_option("--ratio", args->ratio, "fraction of the input's vertices to keep, in (0, 1]")
-                    ->check(CLI::Range(0.0, 1.0));
+                    ->check(positive_number(1));
   vertices->excludes(ratio);
   cmd->add_option("--bias", args->bias, "thickness of the input's faces across their planes (as Eq. 16's bias)")
       ->check(positive_number());
   cmd->add_option("--max-normal-deviation", args->max_normal_deviation,
                   "the most, in degrees, a collapse may turn a face's normal")
-      ->check(CLI::Range(1.0, 90.0));
+      ->check(number_in(1, 90));
   auto* level = cmd->add_option("--level", args->level,
                                 "tessellation level of the limit surface the report measures (0: no report; default 8, "
                                 "lower where that would make more than 2 million triangles)")
-                    ->check(CLI::Range(0, 64));
+                    ->transform(integer_in(0, 64));
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args, vertices, ratio, level] {
     if (vertices->count() == 0 && ratio->count() == 0) throw usage_error("simplify: give --vertices N or --ratio R");
-    if (ratio->count() > 0 && !(args->ratio > 0)) throw usage_error("--ratio must be in (0, 1], got 0");
     // Simplifying uses the input's faces only: no covariances inferred for it.
     const CovarianceMesh input = read_mesh_repairing(args->input, args->repair,
                                                      ImportOptions{.covariance = ImportOptions::Covariance::isotropic});

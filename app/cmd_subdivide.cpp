@@ -1,6 +1,7 @@
 // gpsurf subdivide IN -o OUT --levels N: the exact CPU reference GPS subdivision.
 #include <iostream>
 
+#include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/repair_arguments.h"
 #include "app/naming_input.h"
@@ -22,7 +23,7 @@ void add_subdivide_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("subdivide", "Gaussian-product subdivision on the CPU (the reference)");
   cmd->add_option("input", args->input, "input mesh")->required();
   cmd->add_option("-o,--output", args->output, "output (.ply keeps covariances, .obj positions)")->required();
-  cmd->add_option("--levels", args->levels, "subdivision levels")->check(CLI::Range(0, 8));
+  cmd->add_option("--levels", args->levels, "subdivision levels")->transform(integer_in(0, 8));
   cmd->add_option("--scheme", args->scheme,
                   "linear scheme: auto (Loop for a mesh of triangles only, else Catmull-Clark), loop, catmull-clark")
       ->check(CLI::IsMember({"auto", "catmull-clark", "loop"}));

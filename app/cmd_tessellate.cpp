@@ -1,6 +1,7 @@
 // gpsurf tessellate IN -o OUT: the limit surface from the plans, every patch at a uniform level.
 #include <iostream>
 
+#include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/repair_arguments.h"
 #include "app/naming_input.h"
@@ -25,7 +26,7 @@ void add_tessellate_command(CLI::App& app) {
   cmd->add_option("input", args->input, "input mesh")->required();
   cmd->add_option("-o,--output", args->output, "output .ply (x y z nx ny nz) or .obj")->required();
   add_plan_arguments(cmd, args->plans);
-  cmd->add_option("--level", args->level, "tessellation level per patch edge")->check(CLI::Range(1, 64));
+  cmd->add_option("--level", args->level, "tessellation level per patch edge")->transform(integer_in(1, 64));
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {

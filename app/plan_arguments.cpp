@@ -1,5 +1,7 @@
 #include "app/plan_arguments.h"
 
+#include "app/cli_checks.h"
+
 namespace gps {
 
 PlanOptions PlanArguments::options() const { return plan_options_named(scheme, loop_beta, depth, approximate); }
@@ -17,7 +19,7 @@ void add_plan_arguments(CLI::App* cmd, PlanArguments& a) {
                       "; deeper: more stencil rows, cheaper evaluation), or with --approximate the depth of the Bezier "
                       "patches, 1..8 "
                       "(default 3). Loop plans are always exact.")
-      ->check(CLI::Range(0, 8));
+      ->transform(integer_in(0, 8));
   cmd->add_flag("--approximate", a.approximate,
                 "Catmull-Clark: the thesis' plans, Bezier patches approximating the surface at extraordinary vertices");
 }

@@ -23,9 +23,15 @@ struct AffineMap {
   Gaussian apply(const Gaussian& g) const;
 };
 
-/// The vertices `vertices` (all of them when empty) carried by `map`. Refuses a map whose linear
-/// part is singular or not finite (it would flatten the Gaussians) and results outside the ranges
-/// a covariance mesh accepts.
+/// The vertices `vertices` (all of them when empty) carried by `map`. A map that mirrors (negative
+/// determinant) also reverses the faces of every connected part it moves whole, as Blender does, so
+/// that the surface stays outward (signed volume kept positive). Refuses a map whose linear part is
+/// not finite, singular or stretches one direction over 1e12 times another (it would flatten the
+/// Gaussians), and results outside the ranges a covariance mesh accepts.
 Modelled transform_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, const AffineMap& map);
+
+/// Reverses the corner order (keeping the first corner) of every face of each connected part whose
+/// vertices all lie in `moved`: the orientation a mirror of those parts needs.
+void reverse_parts_within(MeshArrays& arrays, const std::vector<int>& moved);
 
 }  // namespace gps

@@ -1,11 +1,14 @@
 #include "core/modelling/operation_list.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
 
 #include <nlohmann/json.hpp>
 
+#include "core/io/json_text.h"
+#include "core/io/quoted_text.h"
 #include "core/mesh/covariance_mesh.h"
 #include "core/mesh/error.h"
 #include "core/modelling/affine_transform.h"
@@ -28,6 +31,15 @@ using Json = nlohmann::json;
 using Run = std::function<Modelled(const CovarianceMesh&)>;
 using Edges = std::vector<std::array<int, 2>>;
 
+// Element `i` of the JSON list `list` (named `key`) as a vertex, edge or face index.
+int index_at(const Json& list, size_t i, const std::string& key) {
+  try {
+    return int(json_integer(list[i], 0, INT32_MAX));
+  } catch (const Error& e) {
+    throw usage_error("\"" + key + "\"[" + std::to_string(i) + "] " + e.what());
+  }
+}
+
 // The keys of one operation object, read with checks; every message names the key.
 class Fields {
 public:
@@ -48,12 +60,14 @@ public:
     return v.get<double>();
   }
   double number(const char* key, double otherwise) { return has(key) ? number(key) : otherwise; }
-  int integer(const char* key) {
-    const Json& v = at(key);
-    if (!v.is_number_integer()) throw usage_error("\"" + std::string(key) + "\" must be an integer");
-    return v.get<int>();
+  int integer(const char* key, int lo, int hi) {
+    try {
+      return int(json_integer(at(key), lo, hi));
+    } catch (const Error& e) {
+      throw usage_error("\"" + std::string(key) + "\" " + e.what());
+    }
   }
-  int integer(const char* key, int otherwise) { return has(key) ? integer(key) : otherwise; }
+  int integer(const char* key, int lo, int hi, int otherwise) { return has(key) ? integer(key, lo, hi) : otherwise; }
   std::string text(const char* key) {
     const Json& v = at(key);
     if (!v.is_string()) throw usage_error("\"" + std::string(key) + "\" must be a string");
@@ -86,7 +100,7 @@ public:
   /// Refuses keys the operation does not read (a misspelt key would otherwise be ignored).
   void check_all_used() const {
     for (const auto& [key, value] : object_.items())
-      if (key != "op" && !used_.count(key)) throw usage_error("unknown key \"" + key + "\"");
+      if (key != "op" && !used_.count(key)) throw usage_error("unknown key " + quoted_token(key));
   }
 
 private:
@@ -98,11 +112,7 @@ private:
   static std::vector<int> index_list(const Json& v, const std::string& key) {
     if (!v.is_array()) throw usage_error("\"" + key + "\" must be a list of indices");
     std::vector<int> out;
-    for (const Json& x : v) {
-      if (!x.is_number_integer() || x.get<long long>() < 0 || x.get<long long>() > INT32_MAX)
-        throw usage_error("\"" + key + "\" must be a list of indices (integers from 0)");
-      out.push_back(x.get<int>());
-    }
+    for (size_t i = 0; i < v.size(); ++i) out.push_back(index_at(v, i, key));
     return out;
   }
   static std::array<int, 2> edge_of(const Json& v, const std::string& key) {
@@ -156,7 +166,7 @@ Run set_gaussians(Fields& f) {
       if (covariance) a.covariances[size_t(v)] = *covariance;
       a.covariances[size_t(v)] *= scale;
       if (const std::string why = covariance_problem(a.covariances[size_t(v)]); !why.empty())
-        throw Error("vertex " + std::to_string(v) + " would get a covariance that " + why);
+        throw Error("vertex " + std::to_string(v) + " would have " + (why.rfind("has ", 0) == 0 ? why.substr(4) : why));
     }
     return Modelled{build_mesh(a), set,
                     "set " + std::to_string(set.size()) + (set.size() == 1 ? " Gaussian" : " Gaussians")};
@@ -193,7 +203,7 @@ Run parse_step(const std::string& op, Fields& f) {
   }
   if (op == "loop_cut") {
     const auto e = f.edge("edge");
-    const int cuts = f.integer("cuts", 1);
+    const int cuts = f.integer("cuts", 1, 64, 1);
     const double slide = f.number("slide", 0);
     return [=](const CovarianceMesh& m) { return loop_cut(m, e[0], e[1], cuts, slide); };
   }
@@ -262,7 +272,7 @@ Run parse_step(const std::string& op, Fields& f) {
     if (!primitive) {
       std::string names;
       for (const std::string& n : primitive_names()) names += (names.empty() ? "" : ", ") + n;
-      throw usage_error("unknown primitive \"" + name + "\" (known: " + names + ")");
+      throw usage_error("unknown primitive " + quoted_token(name) + " (known: " + names + ")");
     }
     const Vec3 center = f.has("center") ? f.vector3("center") : Vec3::Zero();
     const double size = f.number("size", 1.0);
@@ -286,6 +296,12 @@ Run parse_step(const std::string& op, Fields& f) {
   throw usage_error("unknown operation (known: " + names + ")");
 }
 
+// An operation's name as messages show it: a known one as it is, any other quoted and cut.
+std::string shown_name(const std::string& name) {
+  const std::vector<std::string> known = operation_names();
+  return std::find(known.begin(), known.end(), name) != known.end() ? name : quoted_token(name);
+}
+
 // "SOURCE: message", or the message alone for an unnamed source.
 std::string prefixed(const std::string& source, const std::string& message) {
   return source.empty() ? message : source + ": " + message;
@@ -299,12 +315,7 @@ std::vector<std::string> operation_names() {
 }
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {
-  Json ops;
-  try {
-    ops = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    throw usage_error(prefixed(source, "not valid JSON (byte " + std::to_string(e.byte) + ")"));
-  }
+  const Json ops = parse_json(text, source, "ops");
   if (!ops.is_array()) throw usage_error(prefixed(source, "expected a JSON array of operations [{\"op\": ...}, ...]"));
   OperationList list;
   list.source_ = source;
@@ -324,11 +335,8 @@ OperationList OperationList::parse(const std::string& text, const std::string& s
         std::array<std::vector<int>, 2> l;
         for (size_t k = 0; k < 2; ++k) {
           if (!loops[k].is_array()) throw usage_error("\"loops\" must be two lists of vertices");
-          for (const Json& x : loops[k]) {
-            if (!x.is_number_integer() || x.get<long long>() < 0 || x.get<long long>() > INT32_MAX)
-              throw usage_error("\"loops\" must be two lists of vertex indices (integers from 0)");
-            l[k].push_back(x.get<int>());
-          }
+          for (size_t i = 0; i < loops[k].size(); ++i)
+            l[k].push_back(index_at(loops[k], i, "loops[" + std::to_string(k) + "]"));
         }
         run = [l](const CovarianceMesh& m) { return bridge(m, l[0], l[1]); };
       } else {
@@ -337,7 +345,7 @@ OperationList OperationList::parse(const std::string& text, const std::string& s
       fields.check_all_used();
       list.steps_.push_back({name, std::move(run)});
     } catch (const Error& e) {
-      throw Error(where + " (" + name + "): " + e.what(), e.kind());
+      throw Error(where + " (" + shown_name(name) + "): " + e.what(), e.kind());
     }
   }
   return list;
@@ -355,7 +363,8 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
     try {
       current = steps_[i].run(current.mesh);
     } catch (const Error& e) {
-      throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + steps_[i].name + "): " + e.what()), e.kind());
+      throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + shown_name(steps_[i].name) + "): " + e.what()),
+                  e.kind());
     }
     if (summaries) summaries->push_back(current.summary);
   }

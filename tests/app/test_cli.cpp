@@ -144,6 +144,44 @@ TEST(Cli, IgnoredOptionsAndRangesAreShortErrors) {
       run_command(gpsurf("render " + dir.file("cube.ply") + " -o " + dir.file("r.png") + " --size 0x5")).exit_code, 2);
 }
 
+// Option values are read as written, in full and as the type they become: an empty text is not 0,
+// 0x10 not 16, 010 not 8, 180.0001 is not shown as 180, and the message is ours, quoting the text.
+TEST(Cli, OptionNumbersAreReadExactlyAsWritten) {
+  test::TempDir dir;
+  const std::string cube = dir.file("cube.ply"), out = dir.file("x.ply");
+  run_command(gpsurf("sample cube -o " + cube));
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"infer " + cube + " -o " + out + " --crease-angle ''",
+            "--crease-angle: expected a number from 0 to 180, got ''"},
+           {"infer " + cube + " -o " + out + " --crease-angle 180.0001",
+            "--crease-angle: expected a number from 0 to 180, got '180.0001'"},
+           {"infer " + cube + " -o " + out + " --crease-angle 0x10",
+            "--crease-angle: expected a number from 0 to 180, got '0x10'"},
+           {"info " + cube + " --weld ''", "--weld: expected a number >= 0, got ''"},
+           {"info " + cube + " --weld nan", "--weld: expected a number >= 0, got 'nan'"},
+           {"simplify " + cube + " -o " + out + " --ratio nan",
+            "--ratio: expected a number > 0 and at most 1, got 'nan'"},
+           {"simplify " + cube + " -o " + out + " --vertices abc",
+            "--vertices: expected an integer from 4 to 1099511627776, got 'abc'"},
+           {"simplify " + cube + " -o " + out + " --vertices 0x10",
+            "--vertices: expected an integer from 4 to 1099511627776, got '0x10'"},
+           {"subdivide " + cube + " -o " + out + " --levels 1.9",
+            "--levels: expected an integer from 0 to 8, got '1.9'"},
+           {"subdivide " + cube + " -o " + out + " --levels 4294967297",
+            "--levels: expected an integer from 0 to 8, got '4294967297'"},
+           {"tessellate " + cube + " -o " + out + " --level 1e18",
+            "--level: expected an integer from 1 to 64, got '1e18'"}}) {
+    const auto r = run_command(gpsurf(args));
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
+    EXPECT_EQ(r.output, "gpsurf: " + message + "\n") << args;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out));
+  // 010 is ten levels, not eight (CLI11 alone reads it as octal): refused as more than 8.
+  EXPECT_EQ(run_command(gpsurf("subdivide " + cube + " -o " + out + " --levels 010")).exit_code, 2);
+  const auto two = run_command(gpsurf("subdivide " + cube + " -o " + out + " --levels +02"));
+  EXPECT_EQ(two.exit_code, 0) << two.output;
+}
+
 TEST(Cli, RuntimeErrorsExitWithOneAndKeepFiles) {
   test::TempDir dir;
   const std::string bad =

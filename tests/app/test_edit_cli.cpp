@@ -72,8 +72,8 @@ TEST(EditCli, MalformedOperationsAreUsageErrors) {
   };
   for (const auto& [ops, message] : std::vector<std::pair<std::string, std::string>>{
            {R"([{"op":"extrude","faces":[1]}])", R"(ops[0] (extrude): "distance" is missing)"},
-           {R"([{"op":"loop_cut","edge":[0,1],"cutz":2}])", R"(ops[0] (loop_cut): unknown key "cutz")"},
-           {R"([{"op":"subdivide"},{"op":"twist"}])", "ops[1] (twist): unknown operation"},
+           {R"([{"op":"loop_cut","edge":[0,1],"cutz":2}])", R"(ops[0] (loop_cut): unknown key 'cutz')"},
+           {R"([{"op":"subdivide"},{"op":"twist"}])", "ops[1] ('twist'): unknown operation"},
            {R"([{"op":"transform","vertices":"all","matrix":[1,0,0]}])", "the matrix has 3 numbers"},
            {R"({"op":"subdivide"})", "expected a JSON array"},
            {R"([{"op":"subdivide")", "not valid JSON"}}) {

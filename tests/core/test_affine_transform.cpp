@@ -1,8 +1,10 @@
 // Affine transforms of vertices: GPS commutes with affine maps, so transforming every vertex moves
 // the exact limit surface with the map (means and covariances); a partial transform touches only its
-// vertices; malformed and singular maps are refused.
+// vertices; a mirror reverses the faces it moves whole so that they stay outward; malformed, singular
+// and flattening maps are refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -94,6 +96,59 @@ TEST(AffineTransform, AboutKeepsThePivotAndFromRowsReadsRowMajor) {
   EXPECT_EQ(rows.translation, Vec3(4, 8, 11));
 }
 
+// The volume the faces enclose, positive where they are oriented outward.
+double signed_volume(const MeshArrays& a) {
+  double six_volume = 0;
+  for (const std::vector<int>& face : a.faces)
+    for (size_t k = 1; k + 1 < face.size(); ++k)
+      six_volume += a.means[size_t(face[0])].dot(a.means[size_t(face[k])].cross(a.means[size_t(face[k + 1])]));
+  return six_volume / 6;
+}
+
+// A mirror (negative determinant) reverses the faces with the positions, as Blender does, so that
+// the surface stays outward: the signed volume keeps its sign, here its value too.
+TEST(AffineTransform, AMirrorKeepsTheSurfaceOutward) {
+  const CovarianceMesh cube = test::with_random_covariances(make_sample("cube"), 25);
+  const double volume = signed_volume(arrays_of(cube));
+  ASSERT_GT(volume, 0);
+  for (const Mat3& mirror : {Mat3(Vec3(-1, 1, 1).asDiagonal()), Mat3(-skewed_map().linear)}) {
+    const Modelled r = transform_vertices(cube, {}, AffineMap{mirror, Vec3(1, 2, 3)});
+    EXPECT_NEAR(signed_volume(arrays_of(r.mesh)), volume * std::abs(mirror.determinant()), 1e-12 * volume);
+    EXPECT_EQ(r.summary, "transformed 8 vertices (mirrored: their faces reversed to stay outward)");
+    const MeshArrays before = arrays_of(cube), after = arrays_of(r.mesh);
+    ASSERT_EQ(after.faces.size(), before.faces.size());
+    for (size_t f = 0; f < before.faces.size(); ++f) {
+      std::vector<int> reversed = before.faces[f];
+      std::reverse(reversed.begin() + 1, reversed.end());
+      EXPECT_EQ(after.faces[f], reversed) << "face " << f;
+    }
+  }
+}
+
+// Only the parts a mirror moves whole are reversed: the part it leaves keeps its faces as they were.
+TEST(AffineTransform, AMirrorReversesOnlyThePartsItMovesWhole) {
+  MeshArrays two = arrays_of(make_sample("cube"));
+  const MeshArrays one = two;
+  for (const std::vector<int>& face : one.faces) {
+    std::vector<int> shifted = face;
+    for (int& v : shifted) v += one.n_vertices();
+    two.faces.push_back(shifted);
+  }
+  for (int v = 0; v < one.n_vertices(); ++v)
+    two.add_vertex({one.means[size_t(v)] + Vec3(5, 0, 0), one.covariances[size_t(v)]});
+  const CovarianceMesh mesh = build_mesh(two);
+  std::vector<int> second;
+  for (int v = one.n_vertices(); v < two.n_vertices(); ++v) second.push_back(v);
+  const Modelled r = transform_vertices(mesh, second, AffineMap::about(Vec3(5, 0, 0), Vec3(1, -1, 1).asDiagonal()));
+  const MeshArrays after = arrays_of(r.mesh);
+  for (size_t f = 0; f < one.faces.size(); ++f) EXPECT_EQ(after.faces[f], two.faces[f]) << "face " << f;
+  MeshArrays first_part = after, second_part = after;
+  first_part.faces.resize(one.faces.size());
+  second_part.faces.erase(second_part.faces.begin(), second_part.faces.begin() + long(one.faces.size()));
+  EXPECT_NEAR(signed_volume(first_part), signed_volume(one), 1e-12);
+  EXPECT_NEAR(signed_volume(second_part), signed_volume(one), 1e-12);
+}
+
 TEST(AffineTransform, RefusalsChangeNothing) {
   const CovarianceMesh m = make_sample("cube");
   const std::vector<double> singular = {1, 0, 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 0, 1};
@@ -111,7 +166,13 @@ TEST(AffineTransform, RefusalsChangeNothing) {
       }),
       "the matrix has a number that is not finite");
   EXPECT_EQ(error_of([&] { transform_vertices(m, {}, AffineMap::from_rows(singular)); }),
-            "the map is singular (it would flatten the Gaussians)");
+            "the map is singular (determinant 0: it would flatten the Gaussians)");
+  // Determinant 1, but one direction squeezed 1e60 times against another: said so, not "singular".
+  EXPECT_EQ(error_of([&] {
+              transform_vertices(m, {}, AffineMap{Vec3(1e30, 1e-30, 1).asDiagonal(), Vec3::Zero()});
+            }),
+            "the map stretches one direction 1e+60 times as much as another (more than 1e12: it would flatten the "
+            "Gaussians)");
   EXPECT_EQ(error_of([&] { transform_vertices(m, {2, 8}, skewed_map()); }), "vertex 8 is not in the mesh (8 vertices)");
   // A huge uniform scale is not singular: its results are out of range, and that is what is said.
   EXPECT_EQ(error_of([&] {

@@ -83,10 +83,11 @@ TEST(OperationList, MalformedListsNameTheOperationBeforeApplyingAny) {
             R"(f: ops[0] (extrude): "distance" must be a finite number)"},
            {R"([{"op":"extrude","faces":[1],"edges":[[0,1]],"distance":1}])", R"(f: ops[0] (extrude): give one of)"},
            {R"([{"op":"loop_cut","edge":[0]}])", R"(f: ops[0] (loop_cut): "edge" must give an edge as [a, b])"},
-           {R"([{"op":"delete","faces":[-1]}])", R"(f: ops[0] (delete): "faces" must be a list of indices)"},
+           {R"([{"op":"delete","faces":[-1]}])",
+            R"(f: ops[0] (delete): "faces"[0] must be an integer from 0 to 2147483647, got -1)"},
            {R"([{"op":"merge","vertices":[0,1],"at":"middle"}])", R"(f: ops[0] (merge): "at" must be)"},
-           {R"([{"op":"add","primitive":"teapot"}])", R"(f: ops[0] (add): unknown primitive "teapot")"},
-           {R"([{"op":"subdivide","levels":2}])", R"(f: ops[0] (subdivide): unknown key "levels")"},
+           {R"([{"op":"add","primitive":"teapot"}])", R"(f: ops[0] (add): unknown primitive 'teapot')"},
+           {R"([{"op":"subdivide","levels":2}])", R"(f: ops[0] (subdivide): unknown key 'levels')"},
            {R"([{"op":"transform","vertices":"all","matrix":[1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,1]}])",
             "f: ops[0] (transform): the matrix's last row must be 0 0 0 1"},
            {R"([3])", R"(f: ops[0]: expected an object with "op")"},
@@ -95,6 +96,52 @@ TEST(OperationList, MalformedListsNameTheOperationBeforeApplyingAny) {
     const std::string error = error_of([&, text = text] { OperationList::parse(text, "f"); });
     EXPECT_EQ(error.rfind(message, 0), 0u) << text << " gave: " << error;
   }
+}
+
+// Numbers are taken only as the type they become: nothing wraps, truncates or stops early.
+TEST(OperationList, NumbersOutsideTheirTypeAreRefusedNamingTheElement) {
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"([{"op":"loop_cut","edge":[0,1],"cuts":4294967297}])",
+            R"(f: ops[0] (loop_cut): "cuts" must be an integer from 1 to 64, got 4294967297)"},
+           {R"([{"op":"loop_cut","edge":[0,1],"cuts":1000000000000000000}])",
+            R"(f: ops[0] (loop_cut): "cuts" must be an integer from 1 to 64, got 1000000000000000000)"},
+           {R"([{"op":"loop_cut","edge":[0,1],"cuts":1.9}])",
+            R"(f: ops[0] (loop_cut): "cuts" must be an integer from 1 to 64, got 1.9)"},
+           {R"([{"op":"delete","faces":[4294967296]}])",
+            R"(f: ops[0] (delete): "faces"[0] must be an integer from 0 to 2147483647, got 4294967296)"},
+           {R"([{"op":"bridge","loops":[[0,1],[2,1.5]]}])",
+            R"(f: ops[0] (bridge): "loops[1]"[1] must be an integer from 0 to 2147483647, got 1.5)"},
+           {R"([{"op":"subdivide"},{"op":"extrude","faces":[1],"distance":1e400}])",
+            "f: ops[1].distance: a number beyond the range of a double"},
+           {std::string("[]\0garbage", 10), "f: not valid JSON (a NUL byte at byte 3)"}}) {
+    try {
+      OperationList::parse(text, "f");
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), message) << text;
+      EXPECT_EQ(e.kind(), Error::Kind::usage) << text;
+    }
+  }
+}
+
+// Text from the list is cut in messages as core/io/quoted_text.h documents.
+TEST(OperationList, MessagesCutTheTextTheyQuote) {
+  const std::string long_name(100000, 'q');
+  for (const std::string& text :
+       {R"([{"op":")" + long_name + R"("}])", R"([{"op":"subdivide",")" + long_name + R"(":1}])",
+        R"([{"op":"add","primitive":")" + long_name + R"("}])"}) {
+    const std::string error = error_of([&] { OperationList::parse(text, "f"); });
+    EXPECT_LT(error.size(), 400u) << error.substr(0, 400);
+    EXPECT_NE(error.find("qqq…'"), std::string::npos) << error.substr(0, 400);
+  }
+}
+
+// A set that would make a Gaussian invalid says what the vertex would have, in one phrase.
+TEST(OperationList, AnInvalidSetSaysWhatTheVertexWouldHave) {
+  const std::string error = error_of(
+      [] { OperationList::parse(R"([{"op":"set","vertices":[0],"scale":1e-200}])", "f").apply(make_sample("cube")); });
+  EXPECT_EQ(error.rfind("f: ops[0] (set): vertex 0 would have a covariance eigenvalue ", 0), 0u) << error;
+  EXPECT_EQ(error.find("that has"), std::string::npos) << error;
 }
 
 TEST(OperationList, RefusalNamesTheOperationAndChangesNothing) {
@@ -125,7 +172,8 @@ TEST(OperationList, CreaseAndCornerOperations) {
 
   for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
            {R"([{"op":"crease","edges":[[4,5]]}])", R"(f: ops[0] (crease): "sharpness" is missing)"},
-           {R"([{"op":"crease","edges":[],"sharpness":1}])", R"(f: ops[0] (crease): "edges" must be a list of [a, b] edges)"},
+           {R"([{"op":"crease","edges":[],"sharpness":1}])",
+            R"(f: ops[0] (crease): "edges" must be a list of [a, b] edges)"},
            {R"([{"op":"corner","vertices":[],"sharpness":1}])", R"(f: ops[0] (corner): "vertices" is empty)"},
            {R"([{"op":"corner","vertices":[1],"sharpness":"high"}])",
             R"(f: ops[0] (corner): "sharpness" must be a finite number)"}}) {

@@ -1,0 +1,30 @@
+#pragma once
+// JSON from files and options (op lists, render and event scripts): the whole text or a one-line
+// usage error, and numbers taken only where they fit the type they become.
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace gps {
+
+/// Parses `text` as one JSON value. Throws a usage error "SOURCE: ..." (or without "SOURCE: " where
+/// it is empty) for a NUL byte or a syntax error, naming its byte, and for a number beyond a double's
+/// range, naming the element as a path from the top, e.g. "ops[3].cuts" with `top_name` "ops" for a
+/// top-level array, or "renders[0].level" for an object.
+nlohmann::json parse_json(const std::string& text, const std::string& source, const std::string& top_name = "");
+
+/// `value` as an integer from `lo` to `hi`; else throws a usage error "must be an integer from LO
+/// to HI, got X" (1.9, 4294967297 and "1" are refused, never truncated, wrapped or converted).
+long long json_integer(const nlohmann::json& value, long long lo, long long hi);
+
+/// `value` as a finite number; else throws a usage error "must be a finite number, got X".
+double json_number(const nlohmann::json& value);
+
+/// A JSON value as a message shows it: a number as written, anything else by its kind ("a string").
+std::string json_shown(const nlohmann::json& value);
+
+/// What a nlohmann::json exception says, in its words without its "[json.exception...]" tag, cut to
+/// one short line.
+std::string json_error_words(const nlohmann::json::exception& e);
+
+}  // namespace gps
