@@ -1,8 +1,17 @@
 #include "python/arrays.h"
 
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <limits>
 #include <string>
 
 namespace gps::python {
+namespace {
+
+std::string number(double v) { return py::str(py::float_(v)).cast<std::string>(); }
+
+}  // namespace
 
 DoubleArray rows_to_array(const std::vector<Vec3>& rows) {
   DoubleArray a({py::ssize_t(rows.size()), py::ssize_t(3)});
@@ -16,8 +25,11 @@ std::vector<Vec3> array_to_rows(const DoubleArray& array, const char* what) {
   if (array.ndim() != 2 || array.shape(1) != 3) throw py::value_error(std::string(what) + ": expected an n x 3 array");
   auto r = array.unchecked<2>();
   std::vector<Vec3> rows(size_t(array.shape(0)));
-  for (size_t i = 0; i < rows.size(); ++i)
+  for (size_t i = 0; i < rows.size(); ++i) {
     rows[i] = Vec3(r(py::ssize_t(i), 0), r(py::ssize_t(i), 1), r(py::ssize_t(i), 2));
+    if (!rows[i].allFinite())
+      throw py::value_error(std::string(what) + ": row " + std::to_string(i) + " is not finite");
+  }
   return rows;
 }
 
@@ -41,8 +53,8 @@ std::vector<Mat3> array_to_matrices(const DoubleArray& array, const char* what) 
   return matrices;
 }
 
-py::array_t<int> triangles_to_array(const std::vector<std::array<int, 3>>& triangles) {
-  py::array_t<int> a({py::ssize_t(triangles.size()), py::ssize_t(3)});
+IntArray triangles_to_array(const std::vector<std::array<int, 3>>& triangles) {
+  IntArray a({py::ssize_t(triangles.size()), py::ssize_t(3)});
   auto r = a.mutable_unchecked<2>();
   for (size_t i = 0; i < triangles.size(); ++i)
     for (int k = 0; k < 3; ++k) r(py::ssize_t(i), k) = triangles[i][size_t(k)];
@@ -54,6 +66,103 @@ std::vector<double> broadcast(const DoubleArray& values, size_t n, const char* w
   if (values.ndim() != 1 || size_t(values.shape(0)) != n)
     throw py::value_error(std::string(what) + ": expected a number or an array of " + std::to_string(n));
   return std::vector<double>(values.data(), values.data() + n);
+}
+
+IntArray int_array(const std::vector<int>& values) {
+  IntArray a(py::ssize_t(values.size()));
+  std::copy(values.begin(), values.end(), a.mutable_data());
+  return a;
+}
+
+DoubleArray double_array(const std::vector<double>& values) {
+  DoubleArray a(py::ssize_t(values.size()));
+  std::copy(values.begin(), values.end(), a.mutable_data());
+  return a;
+}
+
+std::vector<int> indices_of(const py::object& values, int end, const char* what) {
+  const py::array array = py::array::ensure(values);
+  if (!array) throw py::type_error(std::string(what) + ": expected an integer or an array of integers");
+  const char kind = array.dtype().kind();
+  if (kind != 'i' && kind != 'u')
+    throw py::type_error(std::string(what) + ": expected integers, got an array of " +
+                         py::str(array.dtype()).cast<std::string>());
+  if (array.ndim() > 1) throw py::value_error(std::string(what) + ": expected an integer or a 1D array");
+  // uint64 values above int64's range become negative here, and are then out of range too.
+  const auto wide = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
+  std::vector<int> out(size_t(wide.size()));
+  for (size_t i = 0; i < out.size(); ++i) {
+    const int64_t v = wide.data()[i];
+    if (v < 0 || v >= end)
+      throw py::index_error(std::string(what) + ": " + std::to_string(v) + " out of range 0.." +
+                            std::to_string(int64_t(end) - 1));
+    out[i] = int(v);
+  }
+  return out;
+}
+
+PolygonTopology faces_from(const py::object& faces) {
+  PolygonTopology t;
+  if (py::isinstance<py::array>(faces)) {
+    const py::array array = faces.cast<py::array>();
+    const char kind = array.dtype().kind();
+    if (array.ndim() != 2 || (kind != 'i' && kind != 'u'))
+      throw py::type_error("faces: expected an (n, k) integer array or a sequence of index sequences");
+    const auto wide = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
+    const auto r = wide.unchecked<2>();
+    for (py::ssize_t f = 0; f < r.shape(0); ++f) {
+      for (py::ssize_t k = 0; k < r.shape(1); ++k) {
+        const int64_t v = r(f, k);
+        // Out of int's range: kept out of range, so the mesh names the face.
+        t.verts.push_back(v < 0 || v > std::numeric_limits<int>::max() ? -1 : int(v));
+      }
+      t.offsets.push_back(int(t.verts.size()));
+    }
+    return t;
+  }
+  if (py::isinstance<py::str>(faces) || !py::isinstance<py::sequence>(faces))
+    throw py::type_error("faces: expected an (n, k) integer array or a sequence of index sequences");
+  std::vector<std::vector<int>> lists;
+  try {
+    lists = faces.cast<std::vector<std::vector<int>>>();
+  } catch (const py::cast_error&) {
+    throw py::type_error("faces: expected an (n, k) integer array or a sequence of index sequences");
+  }
+  for (const auto& face : lists) {
+    t.verts.insert(t.verts.end(), face.begin(), face.end());
+    t.offsets.push_back(int(t.verts.size()));
+  }
+  return t;
+}
+
+IntArray faces_to_array(const PolygonTopology& faces) {
+  const int k = faces.n_faces() == 0 ? 3 : faces.face_size(0);
+  for (int f = 1; f < faces.n_faces(); ++f)
+    if (faces.face_size(f) != k)
+      throw py::value_error("faces: the mesh has faces of " + std::to_string(k) + " and " +
+                            std::to_string(faces.face_size(f)) +
+                            " vertices, which no (n, k) array holds: read face_offsets and face_indices");
+  IntArray a({py::ssize_t(faces.n_faces()), py::ssize_t(k)});
+  std::copy(faces.verts.begin(), faces.verts.end(), a.mutable_data());
+  return a;
+}
+
+double positive_number(double value, const char* what) {
+  if (!(std::isfinite(value) && value > 0))
+    throw py::value_error(std::string(what) + ": expected a finite number above 0, got " + number(value));
+  return value;
+}
+
+double finite_number(double value, const char* what) {
+  if (!std::isfinite(value))
+    throw py::value_error(std::string(what) + ": expected a finite number, got " + number(value));
+  return value;
+}
+
+std::string path_of(const py::object& path) {
+  const py::object fspath = py::module_::import("os").attr("fspath");
+  const py::object text = fspath(path);  // TypeError for anything but str, bytes and os.PathLike
+  return text.cast<std::string>();
 }
 
 }  // namespace gps::python

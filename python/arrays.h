@@ -1,29 +1,61 @@
 #pragma once
-// Conversions between numpy arrays and the core's Eigen vectors and matrices (copies, float64).
+// Conversions between Python's arguments (numpy arrays, sequences, path-like objects) and the core's
+// types. Arrays handed out are fresh float64 or int32 copies, read-only: writing to one raises
+// instead of changing a copy nobody sees.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "core/mesh/linalg.h"
+#include "core/mesh/mesh_connectivity.h"
 
 namespace gps::python {
 
 namespace py = pybind11;
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using IntArray = py::array_t<int32_t, py::array::c_style>;
+
+/// `array`, made read-only.
+template <class Array>
+Array read_only(Array array) {
+  array.attr("setflags")(py::arg("write") = false);
+  return array;
+}
 
 /// An n x 3 array of rows (points or vectors).
 DoubleArray rows_to_array(const std::vector<Vec3>& rows);
-/// The rows of an n x 3 array; a ValueError naming `what` for any other shape.
+/// The rows of an n x 3 array of finite numbers; a ValueError naming `what` (and the row) otherwise.
 std::vector<Vec3> array_to_rows(const DoubleArray& array, const char* what);
-/// An n x 3 x 3 array of symmetric matrices.
+/// An n x 3 x 3 array of matrices.
 DoubleArray matrices_to_array(const std::vector<Mat3>& matrices);
 /// The matrices of an n x 3 x 3 array; a ValueError naming `what` for any other shape.
 std::vector<Mat3> array_to_matrices(const DoubleArray& array, const char* what);
 /// An m x 3 array of vertex indices.
-py::array_t<int> triangles_to_array(const std::vector<std::array<int, 3>>& triangles);
+IntArray triangles_to_array(const std::vector<std::array<int, 3>>& triangles);
 /// A 1D array of `n` values broadcast from a scalar or taken from an array of n (ValueError otherwise).
 std::vector<double> broadcast(const DoubleArray& values, size_t n, const char* what);
+/// A 1D int32 array of `values`.
+IntArray int_array(const std::vector<int>& values);
+/// A 1D float64 array of `values`.
+DoubleArray double_array(const std::vector<double>& values);
+
+/// The integers of a number or a 1D array of them: a TypeError for floats, booleans or other types,
+/// an IndexError naming `what` for a value outside [0, end).
+std::vector<int> indices_of(const py::object& values, int end, const char* what);
+/// Faces as the core takes them, from an (n, k) integer array or a sequence of index sequences
+/// (faces of several sizes); a TypeError for anything else.
+PolygonTopology faces_from(const py::object& faces);
+/// The faces as an (n, k) int32 array; a ValueError for a mesh with faces of several sizes.
+IntArray faces_to_array(const PolygonTopology& faces);
+
+/// `value` if finite and above 0, else a ValueError naming `what`.
+double positive_number(double value, const char* what);
+/// `value` if finite, else a ValueError naming `what`.
+double finite_number(double value, const char* what);
+/// The file system path of a str, bytes or os.PathLike.
+std::string path_of(const py::object& path);
 
 }  // namespace gps::python

@@ -1,4 +1,4 @@
-// gpsurf.Mesh and what makes or transforms one: read, sample, infer, subdivide, edit.
+// gpsurf.Mesh and what makes or transforms one: read, sample, infer, subdivide, edit, simplify.
 #include <pybind11/stl.h>
 
 #include "core/io/mesh_io.h"
@@ -10,21 +10,17 @@
 #include "core/mesh/sharpness.h"
 #include "core/fitting/mesh_simplification.h"
 #include "core/modelling/operation_list.h"
-#include "core/plans/patch_layout.h"
+#include "core/plans/planned_surface.h"
 #include "core/reference/reference_subdivision.h"
 #include "python/arrays.h"
+#include "python/background_call.h"
 #include "python/bindings.h"
-#include "core/plans/planned_surface.h"
+#include "python/handles.h"
 
 namespace gps::python {
 namespace {
 
-std::vector<std::vector<int>> faces_of(const CovarianceMesh& m) {
-  std::vector<std::vector<int>> faces;
-  faces.reserve(m.n_faces());
-  for (const auto f : m.mesh.faces()) faces.push_back(face_vertices(m.mesh, f));
-  return faces;
-}
+using Crease = std::tuple<int, int, double>;
 
 std::vector<Vec3> means_of(const CovarianceMesh& m) {
   std::vector<Vec3> means(m.n_vertices());
@@ -33,166 +29,322 @@ std::vector<Vec3> means_of(const CovarianceMesh& m) {
 }
 
 // A mesh from arrays; covariances inferred (GPS paper Eq. 16-17, bias 0.05) when not given.
-CovarianceMesh make_mesh(const DoubleArray& positions, const std::vector<std::vector<int>>& faces,
-                         const std::optional<DoubleArray>& covariances) {
-  const std::vector<Vec3> means = array_to_rows(positions, "positions");
-  std::vector<Mat3> sigmas(means.size(), Mat3::Identity());
+MeshHandle make_mesh(const DoubleArray& positions, const py::object& faces,
+                     const std::optional<DoubleArray>& covariances) {
+  std::vector<Vec3> means = array_to_rows(positions, "positions");
+  std::vector<Mat3> sigmas;
   if (covariances) {
     sigmas = array_to_matrices(*covariances, "covariances");
     if (sigmas.size() != means.size())
       throw py::value_error("covariances: " + std::to_string(sigmas.size()) + " matrices for " +
                             std::to_string(means.size()) + " positions");
   }
-  CovarianceMesh m = make_covariance_mesh(means, sigmas, faces);
-  if (!covariances) infer_covariances(m);
-  validate_gaussians(m);
-  return m;
+  PolygonTopology topology = faces_from(faces);
+  const bool infer = !covariances;
+  return call_in_background(
+      [means = std::move(means), sigmas = std::move(sigmas), topology = std::move(topology),
+       infer](CallControl&) mutable {
+        CovarianceMesh m = make_covariance_mesh(std::move(means), std::move(sigmas), std::move(topology));
+        if (infer) infer_covariances(m);
+        validate_gaussians(m);
+        return hold(std::move(m));
+      },
+      py::none(), false);
+}
+
+// A copy of `mesh` with `edit` applied, if its Gaussians and sharpness are still valid.
+template <class Edit>
+void replace(MeshHandle& handle, Edit edit) {
+  CovarianceMesh edited = *handle.mesh;
+  edit(edited);
+  validate_gaussians(edited);
+  handle.mesh = std::make_shared<const CovarianceMesh>(std::move(edited));
+}
+
+Sharpness with_creases(const CovarianceMesh& c, const std::vector<Crease>& creases) {
+  Sharpness s = c.sharpness;
+  s.creases.clear();
+  for (const auto& [a, b, sharpness] : creases) {
+    if (const std::string problem = sharpness_problem(sharpness); !problem.empty())
+      throw py::value_error("creases: the sharpness of edge " + std::to_string(a) + "-" + std::to_string(b) + " " +
+                            problem);
+    if (a < 0 || b < 0 || size_t(a) >= c.n_vertices() || size_t(b) >= c.n_vertices())
+      throw py::index_error("creases: edge " + std::to_string(a) + "-" + std::to_string(b) +
+                            " names a vertex out of range 0.." + std::to_string(c.n_vertices() - 1));
+    s.set_crease(a, b, sharpness);
+  }
+  const PolygonTopology t = topology_of(c.mesh);
+  crease_level(s, connectivity_of(t), t.n_vertices);  // throws for a pair that is not an edge
+  return s;
+}
+
+std::vector<Crease> creases_of(const CovarianceMesh& c) {
+  std::vector<Crease> out;
+  for (const EdgeCrease& e : c.sharpness.creases) out.emplace_back(e.a, e.b, e.sharpness);
+  return out;
+}
+
+std::vector<double> corners_from(const CovarianceMesh& c, const DoubleArray& corners) {
+  if (corners.ndim() != 1 || (corners.size() != 0 && size_t(corners.size()) != c.n_vertices()))
+    throw py::value_error("corners: expected " + std::to_string(c.n_vertices()) + " values or none");
+  std::vector<double> values(corners.data(), corners.data() + corners.size());
+  for (size_t v = 0; v < values.size(); ++v)
+    if (const std::string problem = sharpness_problem(values[v]); !problem.empty())
+      throw py::value_error("corners: vertex " + std::to_string(v) + "'s sharpness " + problem);
+  return values;
+}
+
+// What a pickled Mesh holds: positions, faces (offsets and indices), covariances, creases, corners.
+py::tuple state_of(const MeshHandle& h) {
+  const CovarianceMesh& c = *h.mesh;
+  const PolygonTopology t = topology_of(c.mesh);
+  return py::make_tuple(rows_to_array(means_of(c)), int_array(t.offsets), int_array(t.verts),
+                        matrices_to_array(c.covariances), creases_of(c), double_array(c.sharpness.corners));
+}
+
+MeshHandle from_state(const py::tuple& state) {
+  if (state.size() != 6) throw py::value_error("Mesh: a pickled state of 6 items expected");
+  PolygonTopology t;
+  t.offsets = state[1].cast<std::vector<int>>();
+  t.verts = state[2].cast<std::vector<int>>();
+  if (t.offsets.empty() || t.offsets.front() != 0 || size_t(t.offsets.back()) != t.verts.size())
+    throw py::value_error("Mesh: the pickled face offsets do not match the indices");
+  for (size_t f = 1; f < t.offsets.size(); ++f)
+    if (t.offsets[f] < t.offsets[f - 1]) throw py::value_error("Mesh: the pickled face offsets decrease");
+  CovarianceMesh m = make_covariance_mesh(array_to_rows(state[0].cast<DoubleArray>(), "positions"),
+                                          array_to_matrices(state[3].cast<DoubleArray>(), "covariances"), std::move(t),
+                                          "pickled mesh");
+  validate_gaussians(m, "pickled mesh");
+  m.sharpness = with_creases(m, state[4].cast<std::vector<Crease>>());
+  m.sharpness.corners = corners_from(m, state[5].cast<DoubleArray>());
+  m.sharpness.normalise();
+  return hold(std::move(m));
+}
+
+std::string describe(const MeshHandle& h) {
+  const CovarianceMesh& c = *h.mesh;
+  std::string text =
+      "<gpsurf.Mesh: " + std::to_string(c.n_vertices()) + " vertices, " + std::to_string(c.n_faces()) + " faces";
+  if (!c.sharpness.creases.empty()) text += ", " + std::to_string(c.sharpness.creases.size()) + " creases";
+  return text + ">";
 }
 
 }  // namespace
 
 void add_mesh_bindings(py::module_& m) {
-  py::class_<CovarianceMesh>(m, "Mesh", "A covariance mesh: a polygon mesh whose every vertex carries a 3D Gaussian")
+  py::class_<MeshHandle>(m, "Mesh",
+                         "A covariance mesh: a polygon mesh whose every vertex carries a 3D Gaussian.\n\n"
+                         "Its arrays are read-only copies: assign a whole array (mesh.positions = p) to change them, "
+                         "which checks it and replaces the mesh's state; a Surface made from the mesh is then brought "
+                         "up to date by surface.update(mesh).")
       .def(py::init(&make_mesh), py::arg("positions"), py::arg("faces"), py::arg("covariances") = py::none(),
-           "A mesh from an n x 3 array of positions, a list of faces (vertex index lists, counted from 0) and an "
-           "n x 3 x 3 array of covariances (inferred from the faces, GPS paper Eq. 16-17, when not given)")
-      .def_property_readonly("n_vertices", &CovarianceMesh::n_vertices)
-      .def_property_readonly("n_faces", &CovarianceMesh::n_faces)
+
+           "positions: (n, 3) float array; faces: (m, k) integer array, or a sequence of vertex index sequences for "
+           "faces of several sizes (counted from 0); covariances: (n, 3, 3) symmetric positive definite matrices, "
+           "inferred from the faces (GPS paper Eq. 16-17, bias 0.05) when None. Raises ValueError for a wrong shape "
+           "or a value that is not finite, gpsurf.Error for faces or Gaussians the mesh cannot have.")
+      .def_property_readonly(
+          "n_vertices", [](const MeshHandle& h) { return h.mesh->n_vertices(); }, "the number of vertices")
+      .def_property_readonly(
+          "n_faces", [](const MeshHandle& h) { return h.mesh->n_faces(); }, "the number of faces")
       .def_property(
-          "positions", [](const CovarianceMesh& c) { return rows_to_array(means_of(c)); },
-          [](CovarianceMesh& c, const DoubleArray& a) {
+          "positions", [](const MeshHandle& h) { return read_only(rows_to_array(means_of(*h.mesh))); },
+          [](MeshHandle& h, const DoubleArray& a) {
             const auto rows = array_to_rows(a, "positions");
-            if (rows.size() != c.n_vertices())
-              throw py::value_error("positions: expected " + std::to_string(c.n_vertices()) + " rows");
-            CovarianceMesh edited = c;
-            for (size_t i = 0; i < rows.size(); ++i) edited.set_mean(i, rows[i]);
-            validate_gaussians(edited);
-            c = std::move(edited);
+            if (rows.size() != h.mesh->n_vertices())
+              throw py::value_error("positions: expected " + std::to_string(h.mesh->n_vertices()) + " rows, got " +
+                                    std::to_string(rows.size()));
+            replace(h, [&](CovarianceMesh& c) {
+              for (size_t i = 0; i < rows.size(); ++i) c.set_mean(i, rows[i]);
+            });
           },
-          "the means, an n x 3 array (a copy; assign an array to change them)")
+          "the means, an (n, 3) read-only array; assign an (n, 3) array to change them")
       .def_property(
-          "covariances", [](const CovarianceMesh& c) { return matrices_to_array(c.covariances); },
-          [](CovarianceMesh& c, const DoubleArray& a) {
+          "covariances", [](const MeshHandle& h) { return read_only(matrices_to_array(h.mesh->covariances)); },
+          [](MeshHandle& h, const DoubleArray& a) {
             auto matrices = array_to_matrices(a, "covariances");
-            if (matrices.size() != c.n_vertices())
-              throw py::value_error("covariances: expected " + std::to_string(c.n_vertices()) + " matrices");
-            CovarianceMesh edited = c;
-            edited.covariances = std::move(matrices);
-            validate_gaussians(edited);
-            c = std::move(edited);
+            if (matrices.size() != h.mesh->n_vertices())
+              throw py::value_error("covariances: expected " + std::to_string(h.mesh->n_vertices()) +
+                                    " matrices, got " + std::to_string(matrices.size()));
+            replace(h, [&](CovarianceMesh& c) { c.covariances = std::move(matrices); });
           },
-          "the covariances, an n x 3 x 3 array (a copy; assign an array to change them)")
-      .def_property_readonly("faces", &faces_of, "the faces as lists of vertex indices (from 0)")
+          "the covariances, an (n, 3, 3) read-only array; assign an (n, 3, 3) array to change them")
+      .def_property_readonly(
+          "faces", [](const MeshHandle& h) { return read_only(faces_to_array(topology_of(h.mesh->mesh))); },
+          "the faces as an (m, k) read-only int32 array of vertex indices (from 0); ValueError for a mesh with faces "
+          "of several sizes, whose faces are face_offsets and face_indices")
+      .def_property_readonly(
+          "face_offsets", [](const MeshHandle& h) { return read_only(int_array(topology_of(h.mesh->mesh).offsets)); },
+          "face f's vertices are face_indices[face_offsets[f]:face_offsets[f + 1]] (m + 1 offsets, read-only)")
+      .def_property_readonly(
+          "face_indices", [](const MeshHandle& h) { return read_only(int_array(topology_of(h.mesh->mesh).verts)); },
+          "every face's vertex indices, one face after another (read-only int32)")
       .def_property(
-          "creases",
-          [](const CovarianceMesh& c) {
-            std::vector<std::tuple<int, int, double>> out;
-            for (const EdgeCrease& e : c.sharpness.creases) out.emplace_back(e.a, e.b, e.sharpness);
-            return out;
+          "creases", [](const MeshHandle& h) { return py::tuple(py::cast(creases_of(*h.mesh))); },
+          [](MeshHandle& h, const std::vector<Crease>& creases) {
+            Sharpness s = with_creases(*h.mesh, creases);
+            replace(h, [&](CovarianceMesh& c) { c.sharpness = std::move(s); });
           },
-          [](CovarianceMesh& c, const std::vector<std::tuple<int, int, double>>& creases) {
-            Sharpness s = c.sharpness;
-            s.creases.clear();
-            for (const auto& [a, b, sharpness] : creases) {
-              if (const std::string problem = sharpness_problem(sharpness); !problem.empty())
-                throw py::value_error("creases: the sharpness of edge " + std::to_string(a) + "-" + std::to_string(b) +
-                                      " " + problem);
-              s.set_crease(a, b, sharpness);
+          "the creased edges, a tuple of (a, b, sharpness) with a < b: 0 smooth, 10 and above infinitely sharp "
+          "(OpenSubdiv's semi-sharp creases); assign a sequence of such triples to set them all")
+      .def_property_readonly(
+          "crease_edges",
+          [](const MeshHandle& h) {
+            const auto& creases = h.mesh->sharpness.creases;
+            IntArray a({py::ssize_t(creases.size()), py::ssize_t(2)});
+            for (size_t i = 0; i < creases.size(); ++i) {
+              a.mutable_data()[2 * i] = creases[i].a;
+              a.mutable_data()[2 * i + 1] = creases[i].b;
             }
-            const PolygonTopology t = topology_of(c.mesh);
-            crease_level(s, connectivity_of(t), t.n_vertices);  // throws for a pair that is not an edge
-            c.sharpness = std::move(s);
+            return read_only(a);
           },
-          "the creased edges as (a, b, sharpness) with a < b: 0 smooth, 10 and above infinitely sharp (OpenSubdiv's "
-          "semi-sharp creases); assign a list of such tuples to set them all")
+          "the creased edges as a (c, 2) read-only int32 array, in the order of creases")
+      .def_property_readonly(
+          "crease_sharpness",
+          [](const MeshHandle& h) {
+            std::vector<double> s;
+            for (const EdgeCrease& e : h.mesh->sharpness.creases) s.push_back(e.sharpness);
+            return read_only(double_array(s));
+          },
+          "the creased edges' sharpness, a (c,) read-only array")
       .def_property(
-          "corners", [](const CovarianceMesh& c) { return c.sharpness.corners; },
-          [](CovarianceMesh& c, const std::vector<double>& corners) {
-            if (!corners.empty() && corners.size() != c.n_vertices())
-              throw py::value_error("corners: expected " + std::to_string(c.n_vertices()) + " values or none");
-            for (size_t v = 0; v < corners.size(); ++v)
-              if (const std::string problem = sharpness_problem(corners[v]); !problem.empty())
-                throw py::value_error("corners: vertex " + std::to_string(v) + "'s sharpness " + problem);
-            c.sharpness.corners = corners;
-            c.sharpness.normalise();
+          "corners", [](const MeshHandle& h) { return read_only(double_array(h.mesh->sharpness.corners)); },
+          [](MeshHandle& h, const DoubleArray& corners) {
+            std::vector<double> values = corners_from(*h.mesh, corners);
+            replace(h, [&](CovarianceMesh& c) {
+              c.sharpness.corners = std::move(values);
+              c.sharpness.normalise();
+            });
           },
-          "the corner sharpness of every vertex (an empty list where none is sharp)")
+          "the corner sharpness of every vertex, an (n,) read-only array (empty where no vertex is sharp); assign n "
+          "values (or none) to set them")
       .def(
-          "write", [](const CovarianceMesh& c, const std::string& path, bool binary) { write_mesh(path, c, binary); },
+          "write",
+          [](const MeshHandle& h, const py::object& path, bool binary) {
+            const std::string file = path_of(path);
+            const std::shared_ptr<const CovarianceMesh> mesh = h.mesh;
+            py::gil_scoped_release unlocked;
+            write_mesh(file, *mesh, binary);
+          },
           py::arg("path"), py::arg("binary") = false,
-          "Writes the mesh: .ply keeps the covariances exactly, .obj positions and faces only")
-      .def("copy", [](const CovarianceMesh& c) { return c; })
-      .def("__repr__", [](const CovarianceMesh& c) {
-        return "<gpsurf.Mesh: " + std::to_string(c.n_vertices()) + " vertices, " + std::to_string(c.n_faces()) +
-               " faces>";
-      });
+          "Writes the mesh (atomically) to a str or os.PathLike path: .ply keeps the "
+          "covariances, creases and corners exactly (binary: little-endian), .obj positions, faces and creases")
+      .def(
+          "copy", [](const MeshHandle& h) { return MeshHandle{h.mesh}; },
+          "A copy of the mesh (assigning to either leaves the other)")
+      .def("__copy__", [](const MeshHandle& h) { return MeshHandle{h.mesh}; })
+      .def(
+          "__deepcopy__", [](const MeshHandle& h, const py::object&) { return MeshHandle{h.mesh}; }, py::arg("memo"))
+      .def("__repr__", &describe)
+      .def(py::pickle(&state_of, &from_state));
 
   m.def(
       "read",
-      [](const std::string& path, const std::string& covariance, double bias, double isotropic) {
+      [](const py::object& path, const std::string& covariance, double bias, double isotropic, bool repair) {
         ImportOptions o;
         if (covariance != "infer" && covariance != "isotropic")
           throw py::value_error("covariance: expected 'infer' or 'isotropic', got '" + covariance + "'");
         o.covariance = covariance == "infer" ? ImportOptions::Covariance::infer : ImportOptions::Covariance::isotropic;
-        o.bias = bias;
-        o.isotropic_scale = isotropic;
-        return read_mesh(path, o);
+        o.bias = positive_number(bias, "bias");
+        o.isotropic_scale = positive_number(isotropic, "isotropic");
+        o.repair = repair;
+        return call_in_background([file = path_of(path), o](CallControl&) { return hold(read_mesh(file, o)); },
+                                  py::none(), false);
       },
       py::arg("path"), py::arg("covariance") = "infer", py::arg("bias") = 0.05, py::arg("isotropic") = 0.5,
-      "Reads a covariance PLY, or a plain PLY/OBJ/OFF/STL with covariances inferred (or isotropic: sigma = "
-      "isotropic x the mean edge length at the vertex)");
+      py::arg("repair") = false,
+
+      "Reads a covariance PLY, or a plain PLY/OBJ/OFF/STL with covariances inferred (covariance='infer', GPS paper "
+      "Eq. 16-17 with `bias`) or isotropic (sigma = `isotropic` x the mean edge length at the vertex). repair: weld, "
+      "split pinches and fins, drop degenerate faces and orient, as gpsurf --repair. path: str or os.PathLike. "
+      "Raises gpsurf.Error naming the file and line.");
   m.def(
       "edit",
-      [](const CovarianceMesh& mesh, const py::object& ops) {
+      [](const MeshHandle& mesh, const py::object& ops) {
         // A list of dicts as Python writes it, or the JSON text gpsurf edit --ops takes.
         const std::string text = py::isinstance<py::str>(ops)
                                      ? ops.cast<std::string>()
                                      : py::module_::import("json").attr("dumps")(ops).cast<std::string>();
-        return OperationList::parse(text, "ops").apply(mesh).mesh;
+        return call_in_background(
+            [text, source = mesh.mesh](CallControl&) {
+              return hold(OperationList::parse(text, "ops").apply(*source).mesh);
+            },
+            py::none(), false);
       },
       py::arg("mesh"), py::arg("ops"),
-      "A copy of the mesh changed by modelling operations, as gpsurf edit --ops takes them: a list such as "
-      "[{'op': 'loop_cut', 'edge': [0, 1]}, {'op': 'extrude', 'faces': [4], 'distance': 0.5}] (or its JSON text)");
+      "A copy of the mesh changed by modelling operations, as gpsurf edit --ops takes them: a list "
+      "such as [{'op': 'loop_cut', 'edge': [0, 1]}, {'op': 'extrude', 'faces': [4], 'distance': 0.5}] (or its JSON "
+      "text). Raises gpsurf.Error naming the operation (ops[i]) and what is wrong.");
   m.def(
       "simplify",
-      [](const CovarianceMesh& mesh, size_t vertices, double bias) {
+      [](const MeshHandle& mesh, size_t vertices, double bias, const py::object& progress) {
         SimplifyOptions o;
         o.target_vertices = vertices;
-        o.bias = bias;
-        return simplify_mesh(mesh, o).mesh;
+        o.bias = positive_number(bias, "bias");
+        return call_in_background(
+            [o, source = mesh.mesh](CallControl& control) mutable {
+              o.progress = control.progress_report();
+              return hold(simplify_mesh(*source, o).mesh);
+            },
+            progress, true);
       },
-      py::arg("mesh"), py::arg("vertices"), py::arg("bias") = 0.05,
+      py::arg("mesh"), py::arg("vertices"), py::arg("bias") = 0.05, py::arg("progress") = py::none(),
+
       "A coarse copy of a triangle mesh with about `vertices` vertices (edge collapses that keep its topology), each "
-      "vertex's Gaussian from the input faces collapsed into it, as gpsurf simplify makes it");
+      "vertex's Gaussian from the input faces collapsed into it (`bias`: their thickness across their planes), as "
+      "gpsurf simplify makes it. progress: called with the fraction done (0 to 1); returning False cancels "
+      "(gpsurf.Cancelled).");
   m.def("samples", &sample_names, "The names of the built-in meshes");
-  m.def("sample_description", &sample_description, py::arg("name"));
-  m.def("sample", &make_sample, py::arg("name"), py::arg("size") = 0,
-        "A built-in mesh (size: the face count of the sized samples, 0 for their default)");
+  m.def("sample_description", &sample_description, py::arg("name"),
+        "What the built-in mesh `name` is ('' for an unknown name)");
+  m.def(
+      "sample",
+      [](const std::string& name, int size) {
+        return call_in_background([name, size](CallControl&) { return hold(make_sample(name, size)); }, py::none(),
+                                  false);
+      },
+      py::arg("name"), py::arg("size") = 0,
+      "A built-in mesh (samples() names them). size: the face count of grid, sphere and "
+      "icosphere (1..4000000), 0 for their default");
   m.def(
       "infer",
-      [](const CovarianceMesh& mesh, double bias) {
-        CovarianceMesh out = mesh;
-        infer_covariances(out, bias);
-        return out;
+      [](const MeshHandle& mesh, double bias) {
+        positive_number(bias, "bias");
+        return call_in_background(
+            [bias, source = mesh.mesh](CallControl&) {
+              CovarianceMesh out = *source;
+              infer_covariances(out, bias);
+              validate_gaussians(out);
+              return hold(std::move(out));
+            },
+            py::none(), false);
       },
       py::arg("mesh"), py::arg("bias") = 0.05,
-      "A copy of the mesh with covariances inferred from its faces (GPS paper Eq. 16-17)");
+      "A copy of the mesh with covariances inferred from its faces (GPS paper Eq. 16-17): "
+      "per face the second moment of its vertices plus bias x its largest eigenvalue, per vertex the product of its "
+      "faces' Gaussians. bias: a finite number above 0.");
   m.def(
       "subdivide",
-      [](const CovarianceMesh& mesh, int levels, bool limit, const std::string& scheme, const std::string& loop_beta) {
+      [](const MeshHandle& mesh, int levels, bool limit, const std::string& scheme, const std::string& loop_beta) {
         if (levels < 0 || levels > 8) throw py::value_error("levels: expected 0..8, got " + std::to_string(levels));
         const PlanOptions named = plan_options_named(scheme, loop_beta);
-        SubdivisionOptions o;
-        o.scheme = scheme_for(topology_of(mesh.mesh), named);
-        o.levels = levels;
-        o.limit = limit;
-        o.loop_beta = named.loop_beta;
-        return subdivide(mesh, o).mesh;
+        return call_in_background(
+            [=, source = mesh.mesh](CallControl&) {
+              SubdivisionOptions o;
+              o.scheme = scheme_for(topology_of(source->mesh), named);
+              o.levels = levels;
+              o.limit = limit;
+              o.loop_beta = named.loop_beta;
+              return hold(subdivide(*source, o).mesh);
+            },
+            py::none(), false);
       },
       py::arg("mesh"), py::arg("levels") = 1, py::arg("limit") = true, py::arg("scheme") = "auto",
       py::arg("loop_beta") = "loop",
-      "The exact CPU reference: GPS subdivision in 9D, `levels` times, then (limit=True) every vertex at its exact "
-      "limit. scheme: 'auto' (Loop for a mesh of triangles, else Catmull-Clark), 'loop' or 'catmull-clark'");
+
+      "The exact CPU reference: GPS subdivision in 9D, `levels` (0..8) times, then (limit=True) every vertex at its "
+      "exact limit. scheme: 'auto' (Loop for a mesh of triangles, else Catmull-Clark), 'loop' or 'catmull-clark'; "
+      "loop_beta: 'loop' or 'warren'.");
 }
 
 }  // namespace gps::python

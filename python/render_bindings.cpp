@@ -2,12 +2,15 @@
 // float32 numpy arrays, and read_image / write_image through OpenImageIO.
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <optional>
 
 #include "core/mesh/covariance_mesh.h"
 #include "core/mesh/error.h"
 #include "python/arrays.h"
+#include "python/background_call.h"
 #include "python/bindings.h"
+#include "python/handles.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/render_target.h"
 #include "render/image/image_io.h"
@@ -49,60 +52,124 @@ ContextKind context_named(const std::string& name) {
   throw py::value_error("context: expected 'auto', 'osmesa' or 'egl', got '" + name + "'");
 }
 
-FloatImage render(const CovarianceMesh& mesh, int width, int height, int level, float pixels, const std::string& matcap,
-                  const std::string& mode, std::optional<std::vector<float>> camera, bool mesh_lines, bool wireframe,
-                  bool ellipsoids, float sigma, std::vector<float> background, const std::string& scheme,
-                  const std::string& loop_beta, const std::string& context) {
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw py::value_error("width and height: expected 1..16384, got " + std::to_string(width) + "x" +
-                          std::to_string(height));
-  if (level < 0 || level > 64)
-    throw py::value_error("level: expected 1..64 (0: adaptive), got " + std::to_string(level));
-  if (camera && camera->size() != 2 && camera->size() != 3)
+// What render() and Surface.render() take besides the surface.
+struct RenderSettings {
+  int width, height, level;
+  float pixels;
+  std::string matcap, mode;
+  std::optional<std::vector<float>> camera;
+  bool mesh_lines, wireframe, ellipsoids;
+  float sigma;
+  std::vector<float> background;
+  std::string context;
+};
+
+// The surface `plans` (planned for `mesh`, or planned here under `options` when empty) drawn off-screen.
+FloatImage render(std::shared_ptr<const CovarianceMesh> mesh, std::shared_ptr<const PlannedSurface> plans,
+                  const PlanOptions& options, const RenderSettings& r) {
+  if (r.width < 1 || r.height < 1 || r.width > 16384 || r.height > 16384)
+    throw py::value_error("width and height: expected 1..16384, got " + std::to_string(r.width) + "x" +
+                          std::to_string(r.height));
+  if (r.level < 0 || r.level > 64)
+    throw py::value_error("level: expected 1..64 (0: adaptive), got " + std::to_string(r.level));
+  if (!std::isfinite(r.pixels) || r.pixels < 0)
+    throw py::value_error("pixels: expected a finite number >= 0 (0: the default)");
+  if (r.camera && r.camera->size() != 2 && r.camera->size() != 3)
     throw py::value_error("camera: expected (yaw, pitch) or (yaw, pitch, distance) in degrees");
-  if (background.size() != 3) throw py::value_error("background: expected (r, g, b)");
-  const PlanOptions plans = plan_options_named(scheme, loop_beta);
+  if (r.camera)
+    for (const float c : *r.camera)
+      if (!std::isfinite(c)) throw py::value_error("camera: expected finite numbers");
+  if (r.camera && r.camera->size() == 3 && !((*r.camera)[2] > 0))
+    throw py::value_error("camera: the distance must be above 0");
+  if (r.background.size() != 3) throw py::value_error("background: expected (r, g, b)");
+  for (const float c : r.background)
+    if (!(c >= 0 && c <= 1)) throw py::value_error("background: expected (r, g, b) in [0, 1]");
+  if (!(std::isfinite(r.sigma) && r.sigma > 0)) throw py::value_error("sigma: expected a finite number above 0");
   DrawOptions o;
-  set_render_tessellation(o, level, pixels, width, height);
-  o.mode = shading_named(mode);
-  o.mesh_lines = mesh_lines;
-  o.wireframe = wireframe;
-  o.ellipsoids = ellipsoids;
-  o.sigma_scale = sigma;
-  o.background = {background[0], background[1], background[2]};
-  const Image matcap_image = load_matcap(matcap);
-  const ContextKind kind = context_named(context);
-  Image color;
-  {
-    py::gil_scoped_release unlocked;  // other Python threads run while the frame is drawn
-    const auto gl = create_offscreen_context(kind);
-    SurfaceRenderer renderer;
-    renderer.set_mesh(mesh, plans);
-    renderer.set_matcap(matcap_image);
-    RenderTarget target(width, height);
-    renderer.draw(target, render_camera(renderer, mesh, camera.value_or(std::vector<float>{}), 1, o, width, height), o);
-    color = target.read(0);
-  }
+  set_render_tessellation(o, r.level, r.pixels, r.width, r.height);
+  o.mode = shading_named(r.mode);
+  o.mesh_lines = r.mesh_lines;
+  o.wireframe = r.wireframe;
+  o.ellipsoids = r.ellipsoids;
+  o.sigma_scale = r.sigma;
+  o.background = {r.background[0], r.background[1], r.background[2]};
+  const ContextKind kind = context_named(r.context);
+  Image matcap_image = load_matcap(r.matcap);
+  const Image color = call_in_background(
+      [=, matcap_image = std::move(matcap_image)](CallControl&) {
+        const auto gl = create_offscreen_context(kind);
+        SurfaceRenderer renderer;
+        if (plans)
+          renderer.set_mesh(*mesh, *plans);
+        else
+          renderer.set_mesh(*mesh, options);
+        renderer.set_matcap(matcap_image);
+        RenderTarget target(r.width, r.height);
+        renderer.draw(target,
+                      render_camera(renderer, *mesh, r.camera.value_or(std::vector<float>{}), 1, o, r.width, r.height),
+                      o);
+        return target.read(0);
+      },
+      py::none(), false);
   return to_array(color);
 }
+
+constexpr const char* kRenderDoc =
+    "The limit surface drawn off-screen as `gpsurf render` draws it: a height x width x 4 float32 RGBA array in [0, "
+    "1], top row first. level 0: adaptive (pixels: target edge length, 0 for the default); camera: (yaw, pitch[, "
+    "distance]) in degrees, None to frame the mesh; matcap: clay, porcelain, jade, red-wax or an image file; mode: "
+    "matcap, normals or flat; mesh_lines, wireframe, ellipsoids (sigma: their scale) overlays; background: (r, g, "
+    "b) in [0, 1]; context: auto, osmesa or egl.";
 
 }  // namespace
 
 void add_render_bindings(py::module_& m) {
-  m.def("render", &render, py::arg("mesh"), py::arg("width") = 800, py::arg("height") = 600, py::arg("level") = 0,
-        py::arg("pixels") = 0.0f, py::arg("matcap") = "clay", py::arg("mode") = "matcap",
-        py::arg("camera") = py::none(), py::arg("mesh_lines") = false, py::arg("wireframe") = false,
-        py::arg("ellipsoids") = false, py::arg("sigma") = 1.0f, py::arg("background") = std::vector<float>{1, 1, 1},
-        py::arg("scheme") = "auto", py::arg("loop_beta") = "loop", py::arg("context") = "auto",
-        "The limit surface drawn off-screen as `gpsurf render` draws it: a height x width x 4 float32 RGBA array in "
-        "[0, 1], top row first. level 0: adaptive (pixels: target edge length, 0 for the default); camera: (yaw, "
-        "pitch[, distance]) in degrees, None to frame the mesh; matcap: clay, porcelain, jade, red-wax or an image "
-        "file");
   m.def(
-      "read_image", [](const std::string& path) { return to_array(read_image(path)); }, py::arg("path"),
-      "An image file (PNG, EXR, ...) as a height x width x channels float32 array");
+      "render",
+      [](const MeshHandle& mesh, int width, int height, int level, float pixels, const std::string& matcap,
+         const std::string& mode, std::optional<std::vector<float>> camera, bool mesh_lines, bool wireframe,
+         bool ellipsoids, float sigma, std::vector<float> background, const std::string& scheme,
+         const std::string& loop_beta, const std::string& context) {
+        return render(mesh.mesh, nullptr, plan_options_named(scheme, loop_beta),
+                      {width, height, level, pixels, matcap, mode, camera, mesh_lines, wireframe, ellipsoids, sigma,
+                       background, context});
+      },
+      py::arg("mesh"), py::arg("width") = 800, py::arg("height") = 600, py::arg("level") = 0, py::arg("pixels") = 0.0f,
+      py::arg("matcap") = "clay", py::arg("mode") = "matcap", py::arg("camera") = py::none(),
+      py::arg("mesh_lines") = false, py::arg("wireframe") = false, py::arg("ellipsoids") = false,
+      py::arg("sigma") = 1.0f, py::arg("background") = std::vector<float>{1, 1, 1}, py::arg("scheme") = "auto",
+      py::arg("loop_beta") = "loop", py::arg("context") = "auto", kRenderDoc);
+  const py::object surface_class = m.attr("Surface");
+  surface_class.attr("render") = py::cpp_function(
+      [](const SurfaceHandle& s, int width, int height, int level, float pixels, const std::string& matcap,
+         const std::string& mode, std::optional<std::vector<float>> camera, bool mesh_lines, bool wireframe,
+         bool ellipsoids, float sigma, std::vector<float> background, const std::string& context) {
+        return render(s.mesh, s.surface, s.options,
+                      {width, height, level, pixels, matcap, mode, camera, mesh_lines, wireframe, ellipsoids, sigma,
+                       background, context});
+      },
+      py::name("render"), py::is_method(surface_class), py::sibling(py::getattr(surface_class, "render", py::none())),
+      py::arg("width") = 800, py::arg("height") = 600, py::arg("level") = 0, py::arg("pixels") = 0.0f,
+      py::arg("matcap") = "clay", py::arg("mode") = "matcap", py::arg("camera") = py::none(),
+      py::arg("mesh_lines") = false, py::arg("wireframe") = false, py::arg("ellipsoids") = false,
+      py::arg("sigma") = 1.0f, py::arg("background") = std::vector<float>{1, 1, 1}, py::arg("context") = "auto",
+      "As gpsurf.render draws a mesh, from the surface's kept plans (its own scheme): a height x width x 4 float32 "
+      "RGBA array.");
   m.def(
-      "write_image", [](const std::string& path, const FloatImage& image) { write_image(path, to_image(image)); },
+      "read_image",
+      [](const py::object& path) {
+        const std::string file = path_of(path);
+        return to_array(call_in_background([file](CallControl&) { return read_image(file); }, py::none(), false));
+      },
+      py::arg("path"), "An image file (PNG, EXR, ...) as a height x width x channels float32 array");
+  m.def(
+      "write_image",
+      [](const py::object& path, const FloatImage& image) {
+        const std::string file = path_of(path);
+        Image pixels = to_image(image);
+        py::gil_scoped_release unlocked;
+        write_image(file, pixels);
+      },
       py::arg("path"), py::arg("image"), "Writes a height x width x channels float array (PNG: 8 bits, EXR: float)");
 }
 

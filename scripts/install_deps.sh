@@ -12,6 +12,7 @@ packages=(
   xvfb xauth fonts-dejavu-core
   clang libclang-rt-14-dev libomp-dev  # the fuzzers (clang, with OpenMP in core)
   pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module and its tests
+  python3-setuptools python3-wheel python3-pip python3-venv python3-mypy  # its wheel and stubs, tested
   ccache clang-format
 )
 missing=()

@@ -1,0 +1,136 @@
+#pragma once
+// A computing call run off the interpreter: the work runs on a thread of its own without the GIL,
+// while the calling thread wakes every few milliseconds to check for Ctrl-C and to pass the work's
+// progress to an optional Python callback. Other Python threads run meanwhile.
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+
+#include "core/support/progress.h"
+
+namespace gps::python {
+
+namespace py = pybind11;
+
+/// What a call's work and its caller share: the caller asks it to stop, the work reports how far it is.
+class CallControl {
+public:
+  /// Whether the caller asked the work to stop (Ctrl-C, or the progress callback returned False).
+  bool stop_requested() const { return stop_.load(std::memory_order_relaxed); }
+  /// The fraction done, 0 to 1.
+  void report(double fraction) { fraction_.store(fraction, std::memory_order_relaxed); }
+  /// A core ProgressReport that records the fraction and asks the computation to stop when the caller did.
+  ProgressReport progress_report() {
+    return [this](double fraction) {
+      report(fraction);
+      return !stop_requested();
+    };
+  }
+  /// Throws gps::Cancelled if the caller asked the work to stop.
+  void throw_if_stopped() const {
+    if (stop_requested()) throw Cancelled();
+  }
+
+  /// Asks the work to stop (the caller's side).
+  void request_stop() { stop_.store(true, std::memory_order_relaxed); }
+  /// The last fraction reported, or −1 before the first.
+  double fraction() const { return fraction_.load(std::memory_order_relaxed); }
+
+private:
+  std::atomic<bool> stop_{false};
+  std::atomic<double> fraction_{-1};
+};
+
+namespace detail {
+template <class Result>
+struct BackgroundJob {
+  CallControl control;
+  std::mutex mutex;
+  std::condition_variable finished;
+  bool done = false;
+  std::optional<Result> result;
+  std::exception_ptr error;
+};
+/// How often the calling thread checks for Ctrl-C and progress.
+inline constexpr std::chrono::milliseconds kPollInterval{20};
+}  // namespace detail
+
+/// Runs `work(CallControl&)` on a new thread with the GIL released and returns its result (or
+/// rethrows its exception) on the calling thread. Ctrl-C stops the call within kPollInterval plus the
+/// time the work takes to notice stop_requested(): when `stops_promptly`, the caller waits for it;
+/// otherwise it raises KeyboardInterrupt at once and the work, which owns everything it reads,
+/// finishes unseen. `progress`, if not None, is called with the fraction done whenever it changed; a
+/// False return stops the call with gpsurf.Error("cancelled"), an exception stops it and propagates.
+template <class Work>
+auto call_in_background(Work work, const py::object& progress, bool stops_promptly) {
+  using Result = decltype(work(std::declval<CallControl&>()));
+  auto job = std::make_shared<detail::BackgroundJob<Result>>();
+  std::thread([job, work = std::move(work)]() mutable {
+    try {
+      job->result.emplace(work(job->control));
+    } catch (...) {
+      job->error = std::current_exception();
+    }
+    std::lock_guard lock(job->mutex);
+    job->done = true;
+    job->finished.notify_all();
+  }).detach();
+  const auto wait = [&](std::optional<std::chrono::milliseconds> limit) {
+    py::gil_scoped_release unlocked;
+    std::unique_lock lock(job->mutex);
+    if (!limit) {
+      job->finished.wait(lock, [&] { return job->done; });
+      return true;
+    }
+    return job->finished.wait_for(lock, *limit, [&] { return job->done; });
+  };
+  double reported = -1;
+  const auto stop = [&] {
+    job->control.request_stop();
+    if (stops_promptly) wait(std::nullopt);
+  };
+  while (!wait(detail::kPollInterval)) {
+    if (PyErr_CheckSignals() != 0) {
+      stop();
+      throw py::error_already_set();
+    }
+    const double fraction = job->control.fraction();
+    if (!progress.is_none() && fraction != reported && fraction >= 0) {
+      reported = fraction;
+      bool go_on = true;
+      try {
+        const py::object answer = progress(fraction);
+        go_on = answer.is_none() || PyObject_IsTrue(answer.ptr()) == 1;
+      } catch (...) {
+        stop();
+        throw;
+      }
+      if (!go_on) {
+        stop();
+        throw Cancelled();
+      }
+    }
+  }
+  if (job->error) std::rethrow_exception(job->error);
+  if (!progress.is_none() && reported < 1) progress(1.0);
+  return std::move(*job->result);
+}
+
+/// Runs `work(CallControl&)` in the calling thread with the GIL released: for calls too short to be
+/// worth a thread of their own, which Ctrl-C then interrupts when they return.
+template <class Work>
+auto call_released(Work work) {
+  CallControl control;
+  py::gil_scoped_release unlocked;
+  return work(control);
+}
+
+}  // namespace gps::python

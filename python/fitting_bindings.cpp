@@ -1,0 +1,164 @@
+// gpsurf.fit, distance and compare: a limit surface fitted to points, and distances from points to
+// a limit surface (or to a mesh's faces).
+#include <pybind11/stl.h>
+
+#include <cmath>
+
+#include "core/evaluation/tessellation_size.h"
+#include "core/evaluation/tessellator.h"
+#include "core/fitting/face_triangles.h"
+#include "core/fitting/limit_fit.h"
+#include "core/fitting/surface_distance.h"
+#include "python/arrays.h"
+#include "python/background_call.h"
+#include "python/bindings.h"
+#include "python/handles.h"
+
+namespace gps::python {
+namespace {
+
+// The points of a Mesh (its vertices) or of an (n, 3) array.
+std::vector<Vec3> points_of(const py::object& points, const char* what) {
+  if (py::isinstance<MeshHandle>(points)) return vertex_means(*points.cast<const MeshHandle&>().mesh);
+  const DoubleArray array = DoubleArray::ensure(points);
+  if (!array) {
+    PyErr_Clear();
+    throw py::type_error(std::string(what) + ": expected a Mesh or an (n, 3) array of points");
+  }
+  return array_to_rows(array, what);
+}
+
+// Distances from points to a Surface's kept plans, a Mesh's limit surface, or (linear) its faces.
+struct Measurement {
+  std::vector<Vec3> points;
+  std::shared_ptr<const PlannedSurface> plans;  // empty for a Mesh
+  std::shared_ptr<const CovarianceMesh> mesh;
+  int level = 8;
+  bool level_given = false, linear = false;
+
+  // The triangles measured to: the faces where `linear`, else the limit surface at `level`, or
+  // lower where an unasked level would make more than kMeasuredTriangles.
+  TriangleMesh triangles() const {
+    if (linear) return face_triangles(*mesh);
+    const double max_triangles = level_given ? INFINITY : kMeasuredTriangles;
+    if (!plans) return limit_surface_triangles(*mesh, level, PlanOptions{}, max_triangles).triangles;
+    const PatchPlans& p = plans->tables().plans;
+    int used = level;
+    while (used > 1 && tessellation_size(p, used).faces > max_triangles) --used;
+    return tessellate(p, plans->points(), used);
+  }
+
+  // The distance of every point, a chunk at a time so that a stop is seen between chunks.
+  std::vector<double> distances(CallControl& control) const {
+    constexpr size_t kChunk = 1 << 16;
+    const SurfaceDistance measure(triangles());
+    std::vector<double> out;
+    out.reserve(points.size());
+    for (size_t first = 0; first < points.size(); first += kChunk) {
+      control.throw_if_stopped();
+      control.report(double(first) / double(points.size()));
+      const std::vector<Vec3> chunk(points.begin() + ptrdiff_t(first),
+                                    points.begin() + ptrdiff_t(std::min(points.size(), first + kChunk)));
+      const std::vector<double> d = measure.distances(chunk);
+      out.insert(out.end(), d.begin(), d.end());
+    }
+    return out;
+  }
+};
+
+// The arguments of distance() and compare(), checked (`what`: the points' parameter name).
+Measurement measurement(const py::object& points, const py::object& to, const std::optional<int>& level, bool linear,
+                        const char* what) {
+  Measurement m;
+  m.points = points_of(points, what);
+  if (py::isinstance<SurfaceHandle>(to)) {
+    const auto& s = to.cast<const SurfaceHandle&>();
+    m.plans = s.surface, m.mesh = s.mesh;
+  } else if (py::isinstance<MeshHandle>(to)) {
+    m.mesh = to.cast<const MeshHandle&>().mesh;
+  } else {
+    throw py::type_error("expected a gpsurf.Mesh or gpsurf.Surface to measure to");
+  }
+  if (level && (*level < 1 || *level > 64))
+    throw py::value_error("level: expected 1..64, got " + std::to_string(*level));
+  m.level = level.value_or(8);
+  m.level_given = level.has_value();
+  m.linear = linear;
+  return m;
+}
+
+}  // namespace
+
+void add_fitting_bindings(py::module_& m) {
+  m.def(
+      "fit",
+      [](const MeshHandle& coarse, const py::object& target, int iterations, bool plain, double smoothness,
+         const py::object& progress) {
+        if (iterations < 0 || iterations > 1000)
+          throw py::value_error("iterations: expected 0..1000, got " + std::to_string(iterations));
+        if (!(std::isfinite(smoothness) && smoothness >= 0 && smoothness <= 1e6))
+          throw py::value_error("smoothness: expected 0..1e6");
+        std::vector<Vec3> targets = points_of(target, "target");
+        if (targets.empty()) throw py::value_error("target: has no points to fit to");
+        return call_in_background(
+            [source = coarse.mesh, targets = std::move(targets), iterations, plain, smoothness](CallControl& control) {
+              FitOptions o;
+              o.iterations = iterations;
+              o.plain = plain;
+              o.smoothness = smoothness;
+              o.progress = [&control, iterations](const FitIteration& it) {
+                control.throw_if_stopped();
+                control.report(iterations == 0 ? 1.0 : double(it.iteration) / iterations);
+              };
+              return hold(fit_limit_surface(*source, targets, o).mesh);
+            },
+            progress, false);
+      },
+      py::arg("coarse"), py::arg("target"), py::arg("iterations") = 10, py::arg("plain") = false,
+      py::arg("smoothness") = 1e-5, py::arg("progress") = py::none(),
+      "The limit surface of `coarse` fitted to `target` (a Mesh's vertices or an (n, 3) array of points), as gpsurf "
+      "fit fits it: `iterations` (0..1000) Levenberg-Marquardt steps on the squared distances from the points to "
+      "their closest limit points, moving the means and (unless plain) the covariances; smoothness: the weight of "
+      "the smoothness term. progress: called with the fraction of iterations done; returning False cancels "
+      "(gpsurf.Cancelled). Returns the fitted Mesh.");
+  m.def(
+      "distance",
+      [](const py::object& points, const py::object& to, std::optional<int> level, bool linear) {
+        const Measurement m = measurement(points, to, level, linear, "points");
+        return read_only(double_array(
+            call_in_background([m](CallControl& control) { return m.distances(control); }, py::none(), false)));
+      },
+      py::arg("points"), py::arg("to"), py::arg("level") = py::none(), py::arg("linear") = false,
+      "The distance from each point (an (n, 3) array, or a Mesh's vertices) to the limit surface of `to` (a Mesh, "
+      "or a Surface whose kept plans are used), tessellated at `level` (1..64; None: 8, lower where that would make "
+      "more than 2 million triangles); linear=True: to the mesh's faces. An (n,) read-only array.");
+  m.def(
+      "compare",
+      [](const py::object& a, const py::object& b, std::optional<int> level, bool linear) {
+        const Measurement m = measurement(a, b, level, linear, "a");
+        if (m.points.empty()) throw py::value_error("a: has no points to measure");
+        const DistanceSummary s = call_in_background(
+            [m](CallControl& control) {
+              const double length = bounding_box_diagonal(m.points);
+              return summarise_distances(m.distances(control), length > 0 ? length : 1.0);
+            },
+            py::none(), false);
+        py::dict out;
+        out["count"] = s.count;
+        out["rms"] = s.rms;
+        out["percentile_99"] = s.percentile_99;
+        out["max"] = s.max;
+        out["length"] = s.length;
+        out["relative_rms"] = s.relative_rms();
+        out["relative_percentile_99"] = s.relative_percentile_99();
+        out["relative_max"] = s.relative_max();
+        return out;
+      },
+      py::arg("a"), py::arg("b"), py::arg("level") = py::none(), py::arg("linear") = false,
+      "As gpsurf compare: the distances from the points of `a` (a Mesh's vertices or an (n, 3) array) to the limit "
+      "surface of `b` (a Mesh or Surface; linear=True: its faces) summarised as a dict: count, rms, percentile_99, "
+      "max (absolute), length (the points' bounding-box diagonal) and relative_rms, relative_percentile_99, "
+      "relative_max (divided by it).");
+}
+
+}  // namespace gps::python

@@ -1,0 +1,181 @@
+"""Arguments checked against what they act on: every entry point raises gpsurf.Error, ValueError,
+TypeError or IndexError for wrong shapes, types, NaN, empty, huge, negative and out-of-range values,
+never crashes the interpreter, and never quietly does nothing or returns NaN."""
+import math
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import gpsurf
+
+REFUSALS = (gpsurf.Error, ValueError, TypeError, IndexError)
+
+
+def test_update_with_a_mesh_of_another_topology_raises_instead_of_crashing():
+    # Once a segfault: update checked the changed indices against the new mesh, not the surface's.
+    script = "import gpsurf; gpsurf.Surface(gpsurf.sample('cone')).update(gpsurf.sample('pawn'), None)"
+    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert result.returncode == 1, result.stderr
+    assert re.search(r"ValueError: update: the mesh has \d+ vertices, the surface's mesh 9;", result.stderr)
+
+
+def test_update_replans_a_mesh_of_another_topology_when_asked():
+    surface = gpsurf.Surface(gpsurf.sample("cone"))
+    pawn = gpsurf.sample("pawn")
+    surface.update(pawn, replan=True)
+    assert surface.n_patches == gpsurf.Surface(pawn).n_patches
+    assert np.array_equal(surface.tessellate(2)[0], gpsurf.tessellate(pawn, 2)[0])
+
+
+def test_update_refuses_a_changed_list_that_misses_an_edited_vertex():
+    mesh = gpsurf.sample("cone")
+    surface = gpsurf.Surface(mesh)
+    edited = mesh.positions.copy()
+    edited[0] += 0.1
+    edited[3] += 0.1
+    mesh.positions = edited
+    with pytest.raises(ValueError, match="vertex 3's Gaussian changed but is not in `changed`"):
+        surface.update(mesh, [0])
+    surface.update(mesh, [0, 3])
+    patches = np.arange(surface.n_patches)
+    assert np.array_equal(surface.evaluate(patches, 0.2, 0.2)[0], gpsurf.Surface(mesh).evaluate(patches, 0.2, 0.2)[0])
+
+
+def test_update_refuses_other_creases():
+    cube = gpsurf.sample("cube")
+    surface = gpsurf.Surface(cube)
+    cube.creases = [(0, 1, 2.0)]
+    with pytest.raises(ValueError, match="other creases or corners"):
+        surface.update(cube)
+
+
+def test_arrays_handed_out_refuse_writes():
+    mesh = gpsurf.sample("cube")
+    mesh.creases = [(0, 1, 2.0)]
+    for name in ("positions", "covariances", "faces", "face_offsets", "face_indices", "crease_edges",
+                 "crease_sharpness", "corners"):
+        array = getattr(mesh, name)
+        assert not array.flags.writeable, name
+        if array.size:
+            with pytest.raises(ValueError, match="read-only"):
+                array.flat[0] = 1
+    with pytest.raises(AttributeError):
+        mesh.creases.append((1, 2, 1.0))
+    with pytest.raises(ValueError, match="read-only"):
+        mesh.faces[0][0] = 5
+    surface = gpsurf.Surface(mesh)
+    for array in (*surface.evaluate(0, 0.5, 0.5, covariances=True), *surface.tessellate(2), surface.patch_faces):
+        assert not array.flags.writeable
+
+
+def test_assignments_reach_the_mesh_and_leave_copies():
+    mesh = gpsurf.sample("cube")
+    copy = mesh.copy()
+    positions = mesh.positions.copy()
+    positions[0] = (5, 6, 7)
+    mesh.positions = positions
+    assert np.array_equal(mesh.positions[0], (5, 6, 7))
+    assert np.array_equal(copy.positions[0], gpsurf.sample("cube").positions[0])
+
+
+def test_values_the_command_line_refuses_are_refused():
+    cone = gpsurf.sample("cone")
+    for bias in (-1.0, 0.0, math.nan, math.inf):
+        with pytest.raises(ValueError, match="bias"):
+            gpsurf.simplify(gpsurf.sample("icosphere", 320), 40, bias=bias)
+        with pytest.raises(ValueError, match="bias"):
+            gpsurf.infer(cone, bias=bias)
+    surface = gpsurf.Surface(cone)
+    with pytest.raises(IndexError, match="patches: 4294967296 out of range 0..7"):
+        surface.evaluate(2**32, 0.5, 0.25)
+    with pytest.raises(TypeError, match="patches"):
+        surface.evaluate(0.7, 0.5, 0.25)
+    with pytest.raises(TypeError, match="patches"):
+        surface.evaluate([True], 0.5, 0.25)
+    with pytest.raises(ValueError, match="domain"):
+        surface.evaluate(0, math.nan, 0.25)
+    if hasattr(gpsurf, "render"):
+        with pytest.raises(ValueError, match="camera"):
+            gpsurf.render(cone, 32, 32, camera=[math.nan, 0])
+
+
+def test_not_finite_values_in_a_mesh_are_named():
+    cone = gpsurf.sample("cone")
+    positions = cone.positions.copy()
+    positions[4, 1] = math.nan
+    with pytest.raises(ValueError, match="positions: row 4 is not finite"):
+        gpsurf.Mesh(positions, cone.faces)
+    with pytest.raises(ValueError, match="positions: row 4 is not finite"):
+        cone.positions = positions
+    covariances = cone.covariances.copy()
+    covariances[5, 0, 0] = math.inf
+    with pytest.raises(gpsurf.Error, match="vertex 5 has a covariance that is not finite"):
+        gpsurf.Mesh(cone.positions, cone.faces, covariances)
+
+
+# Every entry point with valid arguments; the fuzz replaces one argument at a time.
+def entry_points():
+    cone = gpsurf.sample("cone")
+    surface = gpsurf.Surface(cone)
+    points = cone.positions
+    calls = {
+        "Mesh": (gpsurf.Mesh, [cone.positions, cone.faces, cone.covariances]),
+        "read": (gpsurf.read, ["missing.obj", "infer", 0.05, 0.5]),
+        "sample": (gpsurf.sample, ["grid", 16]),
+        "infer": (gpsurf.infer, [cone, 0.05]),
+        "subdivide": (gpsurf.subdivide, [cone, 1, True, "auto", "loop"]),
+        "tessellate": (gpsurf.tessellate, [cone, 2, "auto", "loop", -1, False]),
+        "simplify": (gpsurf.simplify, [gpsurf.sample("icosphere", 80), 20, 0.05]),
+        "edit": (gpsurf.edit, [cone, [{"op": "extrude", "faces": [0], "distance": 0.1}]]),
+        "fit": (gpsurf.fit, [cone, points, 1]),
+        "distance": (gpsurf.distance, [points, cone, 2]),
+        "compare": (gpsurf.compare, [points, surface, 2]),
+        "Surface": (gpsurf.Surface, [cone, "auto", "loop", -1, False]),
+        "Surface.evaluate": (surface.evaluate, [[0, 1], [0.2, 0.3], 0.1]),
+        "Surface.update": (surface.update, [cone, [0]]),
+        "Surface.tessellate": (surface.tessellate, [2]),
+    }
+    if hasattr(gpsurf, "render"):
+        calls["render"] = (gpsurf.render, [cone, 16, 16, 2])
+        calls["Surface.render"] = (surface.render, [16, 16, 2])
+    return calls
+
+
+BAD_VALUES = [None, "", "x", b"\xff", -1, 0, 2**31, 2**63, -2**63, 2**64, 0.7, math.nan, math.inf, -math.inf, True,
+              [], [[]], [1, 2], np.zeros((0, 3)), np.zeros((5, 2)), np.full((9, 3), np.nan), np.zeros((9, 3, 3)),
+              np.zeros((3, 3), dtype=np.int8), np.array([2**63], dtype=np.uint64), np.array(["a"]), object(),
+              [{"op": "nonsense"}], [{"op": "merge", "vertices": [0, 2**40]}]]
+
+
+def fuzz():
+    """Calls every entry point with each bad value in place of each argument: anything but a
+    refusal or a valid result fails, and so does NaN in a result."""
+    for name, (function, arguments) in entry_points().items():
+        for position in range(len(arguments)):
+            for bad in BAD_VALUES:
+                args = list(arguments)
+                args[position] = bad
+                try:
+                    result = function(*args)
+                except REFUSALS:
+                    continue
+                except Exception as e:  # noqa: BLE001
+                    raise AssertionError(f"{name} argument {position} = {bad!r}: {type(e).__name__}: {e}") from e
+                for array in result if isinstance(result, tuple) else [result]:
+                    if isinstance(array, gpsurf.Mesh):
+                        array = array.covariances
+                    if isinstance(array, np.ndarray) and array.dtype.kind == "f" and name != "Surface.evaluate":
+                        assert np.isfinite(array).all(), f"{name} argument {position} = {bad!r}: not finite"
+    print("fuzz: ok")
+
+
+def test_fuzz_never_loses_the_interpreter(tmp_path):
+    here = os.path.dirname(os.path.abspath(__file__))
+    script = f"import sys; sys.path.insert(0, {here!r}); import test_safety; test_safety.fuzz()"
+    result = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr[-4000:]
+    assert "fuzz: ok" in result.stdout

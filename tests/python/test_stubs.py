@@ -1,0 +1,150 @@
+"""The type stubs (gpsurf/__init__.pyi, with py.typed) against the module: the same names, and for
+every function and method the parameters and defaults that pybind11's own signatures give; mypy
+accepts a script written against them."""
+import ast
+import importlib.util
+import os
+import subprocess
+import sys
+import textwrap
+
+import pytest
+
+import gpsurf
+
+PACKAGE_DIR = os.path.dirname(gpsurf.__file__)
+STUB = os.path.join(PACKAGE_DIR, "__init__.pyi")
+TYPE_ALIASES = {"PathLike", "FloatArray", "IntArray", "Progress"}
+
+
+def split_top_level(text):
+    """`text` split at commas outside brackets and quotes."""
+    parts, depth, quote, current = [], 0, None, ""
+    for c in text:
+        if quote:
+            quote = None if c == quote else quote
+        elif c in "'\"":
+            quote = c
+        elif c in "([{":
+            depth += 1
+        elif c in ")]}":
+            depth -= 1
+        elif c == "," and depth == 0:
+            parts.append(current.strip())
+            current = ""
+            continue
+        current += c
+    if current.strip():
+        parts.append(current.strip())
+    return parts
+
+
+def runtime_parameters(function):
+    """[(name, default or None)] from the first line of pybind11's docstring, `self` left out."""
+    line = function.__doc__.splitlines()[0]
+    inside = line[line.index("(") + 1:line.rindex(") ->")]
+    parameters = []
+    for part in split_top_level(inside):
+        name, _, rest = part.partition(":")
+        default = rest.partition(" = ")[2] or None
+        if name.strip() != "self":
+            parameters.append((name.strip(), default))
+    return parameters
+
+
+def stub_parameters(node):
+    """[(name, default or None)] of a stub's function, `self` left out; `...` stands for any default."""
+    args = node.args.args
+    defaults = [None] * (len(args) - len(node.args.defaults)) + list(node.args.defaults)
+    return [(a.arg, d) for a, d in zip(args, defaults) if a.arg != "self"]
+
+
+def same_default(runtime, stub):
+    if (runtime is None) != (stub is None):
+        return False
+    if stub is None or (isinstance(stub, ast.Constant) and stub.value is Ellipsis):
+        return True
+    return ast.literal_eval(runtime) == ast.literal_eval(stub)
+
+
+def stub_tree():
+    with open(STUB) as f:
+        return ast.parse(f.read())
+
+
+def test_stubs_are_installed_with_the_package():
+    assert os.path.isfile(STUB)
+    assert os.path.isfile(os.path.join(PACKAGE_DIR, "py.typed"))
+
+
+def compare(where, runtime_function, stub_node, problems):
+    """Appends to `problems` where the stub's parameters differ from the runtime's."""
+    runtime, stub = runtime_parameters(runtime_function), stub_parameters(stub_node)
+    if [n for n, _ in runtime] != [n for n, _ in stub] or not all(
+            same_default(r, s) for (_, r), (_, s) in zip(runtime, stub)):
+        problems.append(f"{where}: {runtime} against the stub's {[(n, d and ast.unparse(d)) for n, d in stub]}")
+
+
+def test_stubs_name_what_the_module_has_with_its_parameters():
+    stubbed = {}
+    for node in stub_tree().body:
+        if isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+            stubbed[node.name] = node
+        elif isinstance(node, (ast.AnnAssign, ast.Assign)):
+            target = node.target if isinstance(node, ast.AnnAssign) else node.targets[0]
+            stubbed[target.id] = node
+    public = {name for name in dir(gpsurf) if not name.startswith("_")} | {"__version__"}
+    assert set(stubbed) - TYPE_ALIASES == public | ({"render", "read_image", "write_image"} - public)
+    problems = []
+    for name, node in stubbed.items():
+        if name not in public:
+            continue
+        if isinstance(node, ast.FunctionDef):
+            compare(name, getattr(gpsurf, name), node, problems)
+        elif isinstance(node, ast.ClassDef) and node.name not in ("Error", "Cancelled"):
+            cls = getattr(gpsurf, name)
+            methods = [n for n in node.body if isinstance(n, ast.FunctionDef)]
+            setters = {n.name for n in methods
+                       if any(isinstance(d, ast.Attribute) and d.attr == "setter" for d in n.decorator_list)}
+            properties = {n.name for n in methods if any(isinstance(d, ast.Name) and d.id == "property"
+                                                         for d in n.decorator_list)}
+            functions = {n.name: n for n in methods if n.name not in properties}
+            runtime = {m for m in vars(cls) if not m.startswith("_") or m in ("__init__", "__copy__", "__deepcopy__")}
+            if not hasattr(gpsurf, "render"):
+                runtime.discard("render")
+                functions.pop("render", None)
+            assert properties | set(functions) == runtime, name
+            for member in properties:
+                value = vars(cls)[member]
+                if not isinstance(value, property) or (value.fset is not None) != (member in setters):
+                    problems.append(f"{name}.{member}: a property {'with' if value.fset else 'without'} a setter")
+            for member, function in functions.items():
+                compare(f"{name}.{member}", getattr(cls, member), function, problems)
+    assert not problems, problems
+
+
+@pytest.mark.skipif(importlib.util.find_spec("mypy") is None, reason="mypy is not installed (python3-mypy)")
+def test_mypy_accepts_a_script_against_the_stubs(tmp_path):
+    script = tmp_path / "uses_gpsurf.py"
+    script.write_text(textwrap.dedent("""
+        import numpy as np
+        import gpsurf
+
+        mesh: gpsurf.Mesh = gpsurf.sample("cone")
+        surface = gpsurf.Surface(mesh, scheme="loop")
+        positions, du, dv, normals = surface.evaluate(np.arange(3), 0.25, 0.25)
+        points, point_normals, triangles = surface.tessellate(4)
+        fitted = gpsurf.fit(mesh, points, iterations=1, progress=lambda f: None)
+        d: np.ndarray = gpsurf.distance(points, fitted)
+        mesh.positions = mesh.positions + 1.0
+        gpsurf.read("x.ply", bias=0.1).write("y.ply")
+    """))
+    bad = tmp_path / "misuses_gpsurf.py"
+    bad.write_text("import gpsurf\ngpsurf.tessellate(gpsurf.sample('cone'), level='8')\n")
+    env = dict(os.environ, MYPYPATH=os.path.dirname(PACKAGE_DIR))
+    ok = subprocess.run([sys.executable, "-m", "mypy", "--no-incremental", str(script)], capture_output=True,
+                        text=True, env=env, cwd=tmp_path)
+    assert ok.returncode == 0, ok.stdout + ok.stderr
+    refused = subprocess.run([sys.executable, "-m", "mypy", "--no-incremental", str(bad)], capture_output=True,
+                             text=True, env=env, cwd=tmp_path)
+    assert refused.returncode == 1 and "level" in refused.stdout, refused.stdout

@@ -1,0 +1,120 @@
+"""Calls that compute let other Python threads run, stop on Ctrl-C, and report progress to a callback
+that can cancel them. (The timings, two threads against one and Ctrl-C's latency, are measured by
+bench/bench_python.py.)"""
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import gpsurf
+
+
+def ticks_during(call):
+    """How often the calling thread got to run while `call` ran on another thread."""
+    done = threading.Event()
+    errors = []
+
+    def run():
+        try:
+            call()
+        except Exception as e:  # noqa: BLE001
+            errors.append(e)
+        done.set()
+
+    thread = threading.Thread(target=run)
+    ticks = 0
+    thread.start()
+    while not done.wait(0.001):
+        ticks += 1
+    thread.join()
+    assert not errors, errors
+    return ticks
+
+
+@pytest.fixture(scope="module")
+def sphere():
+    return gpsurf.sample("icosphere", 20480)
+
+
+def test_other_threads_run_while_a_call_computes(sphere, tmp_path):
+    # Each call takes a few hundred milliseconds; a call that held the GIL would leave the calling
+    # thread about one tick.
+    surface = gpsurf.Surface(sphere)
+    rng = np.random.default_rng(1)
+    n = 400_000
+    patches = rng.integers(0, surface.n_patches, n)
+    u = rng.uniform(0, 0.5, n)
+    path = tmp_path / "sphere.ply"
+    sphere.write(path)
+    calls = {
+        "Surface": lambda: gpsurf.Surface(sphere),
+        "evaluate": lambda: surface.evaluate(patches, u, u),
+        "tessellate": lambda: surface.tessellate(12),
+        "subdivide": lambda: gpsurf.subdivide(sphere, 2),
+        "simplify": lambda: gpsurf.simplify(sphere, 2000),
+        "read": lambda: [gpsurf.read(path) for _ in range(5)],
+    }
+    for name, call in calls.items():
+        assert ticks_during(call) >= 20, name
+
+
+def test_progress_is_reported_and_a_false_answer_cancels(sphere):
+    fractions = []
+    coarse = gpsurf.simplify(sphere, 500, progress=fractions.append)
+    assert coarse.n_vertices == 500
+    assert fractions[-1] == 1.0 and fractions == sorted(fractions)
+    with pytest.raises(gpsurf.Cancelled):
+        gpsurf.simplify(sphere, 500, progress=lambda fraction: False)
+
+    def failing(fraction):
+        raise ZeroDivisionError("from the callback")
+
+    with pytest.raises(ZeroDivisionError, match="from the callback"):
+        gpsurf.simplify(sphere, 500, progress=failing)
+    fitted = []
+    gpsurf.fit(gpsurf.sample("icosphere", 80), sphere, iterations=2, progress=fitted.append)
+    assert fitted[-1] == 1.0
+
+
+INTERRUPTED = textwrap.dedent("""
+    import sys, time
+    import gpsurf
+
+    def started(fraction=None):
+        if not started.said:
+            print("started", flush=True)
+            started.said = True
+
+    started.said = False
+
+    def simplify():  # interrupted once it reports progress, long before it ends
+        gpsurf.simplify(gpsurf.sample("icosphere", 327680), 100, progress=started)
+
+    def tessellate():  # about a minute
+        surface = gpsurf.Surface(gpsurf.sample("icosphere", 20480))
+        started()
+        for _ in range(200):
+            surface.tessellate(16)
+
+    try:
+        {"simplify": simplify, "tessellate": tessellate}[sys.argv[1]]()
+        print("finished")
+    except KeyboardInterrupt:
+        print("interrupted", time.monotonic())
+""")
+
+
+@pytest.mark.parametrize("call", ["simplify", "tessellate"])
+def test_ctrl_c_stops_a_long_call(call):
+    child = subprocess.Popen([sys.executable, "-c", INTERRUPTED, call], stdout=subprocess.PIPE, text=True)
+    assert child.stdout.readline().strip() == "started"
+    child.send_signal(signal.SIGINT)
+    out, _ = child.communicate(timeout=120)
+    assert child.returncode == 0
+    assert out.startswith("interrupted"), out
