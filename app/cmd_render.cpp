@@ -1,6 +1,8 @@
 // gpsurf render IN -o OUT.png: a headless render of the GPS limit surface (OSMesa, no display).
 #include <algorithm>
+#include <cmath>
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -13,6 +15,9 @@
 #include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
 #include "core/modelling/operation_list.h"
+#include "core/io/json_text.h"
+#include "core/io/number_text.h"
+#include "core/io/quoted_text.h"
 #include "core/io/text_file.h"
 #include "render/comparison/exact_triangles.h"
 #include "render/gl/gl_context.h"
@@ -44,17 +49,15 @@ std::vector<float> parse_floats(const std::string& text, const char* what, size_
   std::vector<float> values;
   std::stringstream in(text);
   for (std::string item; std::getline(in, item, ',');) {
-    try {
-      size_t used = 0;
-      values.push_back(std::stof(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw usage_error(std::string(what) + ": '" + text + "' is not a comma-separated list of numbers");
-    }
+    double value = 0;
+    if (!parse_number(item, value).empty() || !std::isfinite(value) ||
+        std::abs(value) > std::numeric_limits<float>::max())
+      throw usage_error(std::string(what) + ": " + quoted_token(text) + " is not a comma-separated list of numbers");
+    values.push_back(float(value));
   }
   if (values.size() < min_count || values.size() > max_count)
     throw usage_error(std::string(what) + ": expected " + std::to_string(min_count) + " to " +
-                      std::to_string(max_count) + " numbers, got '" + text + "'");
+                      std::to_string(max_count) + " numbers, got " + quoted_token(text));
   return values;
 }
 
@@ -150,12 +153,47 @@ void render(const RenderArgs& a) {
 // "reference": N, "exact": true|false, "ops": [modelling operations, as gpsurf edit --ops], "edits": [{"vertex": i,
 // "mean": [x,y,z], "covariance": [xx,xy,xz,yy,yz,zz], "scale": s}]}, ...]} All renders share one process and one GL
 // context.
+// A script's number at `key` of `object`, checked as the type it becomes; the message names the key.
+long long script_integer(const nlohmann::json& object, const char* key, long long lo, long long hi) {
+  try {
+    return json_integer(object.at(key), lo, hi);
+  } catch (const Error& e) {
+    throw usage_error(std::string(key) + " " + e.what());
+  }
+}
+double script_number(const nlohmann::json& object, const char* key, double lo, double hi) {
+  try {
+    const double value = json_number(object.at(key));
+    if (value < lo || value > hi)
+      throw usage_error("must be from " + json_shown(lo) + " to " + json_shown(hi) + ", got " +
+                        json_shown(object.at(key)));
+    return value;
+  } catch (const Error& e) {
+    throw usage_error(std::string(key) + " " + e.what());
+  }
+}
+// The numbers at `key` of an edit, exactly `count` of them.
+std::vector<double> script_numbers(const nlohmann::json& edit, const char* key, size_t count) {
+  const nlohmann::json& list = edit.at(key);
+  if (!list.is_array() || list.size() != count)
+    throw usage_error(std::string(key) + " needs " + std::to_string(count) + " numbers");
+  std::vector<double> out;
+  for (size_t i = 0; i < count; ++i) {
+    try {
+      out.push_back(json_number(list[i]));
+    } catch (const Error& e) {
+      throw usage_error(std::string(key) + "[" + std::to_string(i) + "] " + e.what());
+    }
+  }
+  return out;
+}
+
 void run_script(const std::string& path, const std::string& context_name) {
   nlohmann::json script;
   try {
-    script = nlohmann::json::parse(read_text_file(path));
-  } catch (const nlohmann::json::parse_error& e) {
-    throw usage_error(path + ": not valid JSON (byte " + std::to_string(e.byte) + ")");
+    script = parse_json(read_text_file(path), path);
+  } catch (const Error& e) {
+    throw usage_error(e.what());
   }
   if (!script.is_object() || !script.contains("renders") || !script["renders"].is_array())
     throw usage_error(path + ": expected {\"renders\": [ ... ]}");
@@ -169,16 +207,15 @@ void run_script(const std::string& path, const std::string& context_name) {
       a.input = job.at("mesh").get<std::string>();
       a.output = job.at("output").get<std::string>();
       a.size = job.value("size", a.size);
-      a.level = job.value("level", a.level);
-      a.pixels = job.value("pixels", a.pixels);
-      a.plans.depth = job.value("depth", a.plans.depth);
+      if (job.contains("level")) a.level = int(script_integer(job, "level", 1, 64));
+      if (job.contains("pixels")) a.pixels = float(script_number(job, "pixels", 0.5, 1000));
+      if (job.contains("depth")) a.plans.depth = int(script_integer(job, "depth", 0, 64));
       a.plans.approximate = job.value("approximate", a.plans.approximate);
       a.plans.scheme = job.value("scheme", a.plans.scheme);
       a.plans.loop_beta = job.value("loop_beta", a.plans.loop_beta);
       a.plans.options();  // checks the names and the depth
       a.repair.repair = job.value("repair", a.repair.repair);
-      a.repair.weld = job.value("weld", a.repair.weld);
-      if (job.contains("weld") && !(a.repair.weld >= 0)) throw usage_error("weld must be a number ≥ 0");
+      if (job.contains("weld")) a.repair.weld = script_number(job, "weld", 0, 1e100);
       a.matcap = job.value("matcap", a.matcap);
       a.mode = job.value("mode", a.mode);
       a.camera = job.value("camera", a.camera);
@@ -186,45 +223,41 @@ void run_script(const std::string& path, const std::string& context_name) {
       a.mesh_lines = job.value("mesh_lines", a.mesh_lines);
       a.wireframe = job.value("wireframe", a.wireframe);
       a.ellipsoids = job.value("ellipsoids", a.ellipsoids);
-      a.sigma = job.value("sigma", a.sigma);
+      if (job.contains("sigma")) a.sigma = float(script_number(job, "sigma", 0.01, 100));
       a.background = job.value("background", a.background);
       a.aovs = job.value("aov", a.aovs);
-      a.reference = job.value("reference", a.reference);
+      if (job.contains("reference")) a.reference = int(script_integer(job, "reference", 0, 7));
       a.exact = job.value("exact", a.exact);
       if (a.exact && a.reference >= 0) throw usage_error("exact and reference exclude each other");
-      if (job.contains("level") && (a.level < 1 || a.level > 64)) throw usage_error("level must be 1..64");
       if (a.mode != "matcap" && a.mode != "normals" && a.mode != "flat")
         throw usage_error("mode must be matcap, normals or flat");
       CovarianceMesh mesh =
           a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh_repairing(a.input, a.repair);
       if (job.contains("ops")) mesh = OperationList::parse(job["ops"].dump(), "").apply(mesh).mesh;
       for (const auto& edit : job.value("edits", nlohmann::json::array())) {
-        const int v = edit.at("vertex").get<int>();
-        if (v < 0 || size_t(v) >= mesh.n_vertices())
+        const long long v = script_integer(edit, "vertex", 0, std::numeric_limits<int>::max());
+        if (size_t(v) >= mesh.n_vertices())
           throw usage_error("edit of vertex " + std::to_string(v) + ", but the mesh has " +
                             std::to_string(mesh.n_vertices()));
         if (edit.contains("mean")) {
-          const auto m = edit["mean"].get<std::vector<double>>();
-          if (m.size() != 3) throw usage_error("edit of vertex " + std::to_string(v) + ": mean needs 3 numbers");
+          const std::vector<double> m = script_numbers(edit, "mean", 3);
           mesh.set_mean(size_t(v), Vec3(m[0], m[1], m[2]));
         }
         if (edit.contains("covariance")) {
-          const auto c = edit["covariance"].get<std::vector<double>>();
-          if (c.size() != 6)
-            throw usage_error("edit of vertex " + std::to_string(v) + ": covariance needs xx xy xz yy yz zz");
+          const std::vector<double> c = script_numbers(edit, "covariance", 6);
           Mat3 m;
           m << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
           mesh.set_covariance(size_t(v), m);
         }
         if (edit.contains("scale"))
-          mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * edit["scale"].get<double>());
+          mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * script_number(edit, "scale", 0, 1e100));
         if (!is_spd(mesh.covariance(size_t(v))))
           throw usage_error("edit of vertex " + std::to_string(v) +
                             " gives a covariance that is not positive definite");
       }
       render_one(renderer, context->description(), a, mesh);
     } catch (const nlohmann::json::exception& e) {
-      throw usage_error(where + ": " + std::string(e.what()).substr(0, 160));
+      throw usage_error(where + ": " + json_error_words(e));
     } catch (const Error& e) {
       throw Error(where + ": " + e.what(), e.kind());
     }
@@ -246,11 +279,11 @@ void add_render_command(CLI::App& app) {
       ->excludes(output);
   cmd->add_option("--size", a->size, "image size WxH");
   auto* level = cmd->add_option("--level", a->level, "uniform tessellation level (default: adaptive, see --pixels)")
-                    ->check(CLI::Range(1, 64));
+                    ->transform(integer_in(1, 64));
   cmd->add_option(
          "--pixels", a->pixels,
          "adaptive tessellation: target edge length in pixels (default: 1% of the smaller image side, at least 4)")
-      ->check(CLI::Range(0.5f, 1000.0f))
+      ->check(number_in(0.5, 1000))
       ->excludes(level);
   add_plan_arguments(cmd, a->plans);
   add_repair_arguments(cmd, a->repair);
@@ -271,8 +304,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--context", a->context, "GL context: auto (EGL on a GPU device, else OSMesa), osmesa, egl")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   cmd->add_flag("--ellipsoids", a->ellipsoids, "draw the covariance ellipsoids");
-  cmd->add_option("--sigma", a->sigma, "ellipsoid scale in standard deviations (k-sigma)")
-      ->check(CLI::Range(0.01f, 100.0f));
+  cmd->add_option("--sigma", a->sigma, "ellipsoid scale in standard deviations (k-sigma)")->check(number_in(0.01, 100));
   cmd->add_option("--background", a->background, "background colour r,g,b in [0,1]");
   cmd->add_option("--aov", a->aovs, "world-space float buffers: position=FILE.exr, normal=FILE.exr");
   auto* reference =
@@ -280,7 +312,7 @@ void add_render_command(CLI::App& app) {
                       "draw the CPU reference subdivision at level N instead of the patches: under Catmull-Clark "
                       "(N = 1..6) in the patches' own triangles at --level 2^N, so that diff against them shows the "
                       "surfaces alone; under Loop, whose triangles no reference level has, see --exact")
-          ->check(CLI::Range(0, 7));
+          ->transform(integer_in(0, 7));
   cmd->add_flag(
          "--exact", a->exact,
          "draw the patches' own triangles with the CPU's exact values at their vertices (double): diff against a "

@@ -104,9 +104,12 @@ void EditorApp::open_sample(const std::string& name) {
 
 void EditorApp::mesh_replaced() {
   ViewOptions view = view_;
-  view.triangle_mesh =
-      scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
-  renderer_->set_mesh(document_.mesh(), view.plans());  // first: it throws before anything changes
+  view.triangle_mesh = scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
+  try {  // first: it throws before anything changes
+    renderer_->set_mesh(document_.mesh(), view.plans());
+  } catch (const Error& e) {  // the plans' and the GPU's refusals name no file
+    throw Error(document_.display_name() + ": " + e.what(), e.kind());
+  }
   surface_changed();
   check_finite_ = true;
   view_.triangle_mesh = view.triangle_mesh;

@@ -13,6 +13,7 @@
 #include "core/edit/covariance_edit.h"
 #include "core/mesh/error.h"
 #include "core/mesh/mesh_connectivity.h"
+#include "core/modelling/affine_transform.h"
 #include "core/modelling/bridge.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/edge_operations.h"
@@ -99,10 +100,37 @@ void EditorApp::end_transform(bool keep) {
                false);
   } else if (transform_folds_) {
     document_.commit_edit_into_last_operation(selection_.vertices());
-    set_status("extrude: " + last_summary_, false);
+    status_ = "extrude: " + last_summary_;  // shown again, not printed again: run_operation printed it
+    status_error_ = false;
   } else {
-    document_.commit_edit();
-    set_status(transform_->describe().substr(0, transform_->describe().find("  (")), false);
+    const std::string done = transform_->describe().substr(0, transform_->describe().find("  ("));
+    // Vertices a mirror (negative determinant) carried: the parts they make up whole get their faces
+    // reversed with them, as Blender does, so that the surface stays outward.
+    std::vector<int> mirrored_vertices;
+    std::vector<std::pair<int, Gaussian>> moved;
+    for (const ReachedVertex& r : reach_) {
+      AffineMap map = transform_->map(r.source, r.weight);
+      if (r.mirrored) map = mirrored(map, reach_options_.mirror_axis);
+      if (map.linear.determinant() < 0) mirrored_vertices.push_back(r.vertex);
+      moved.push_back(
+          {r.vertex, {document_.mesh().mean(size_t(r.vertex)), document_.mesh().covariance(size_t(r.vertex))}});
+    }
+    if (mirrored_vertices.empty()) {
+      document_.commit_edit();
+      set_status(done, false);
+    } else {
+      // One undo step that replaces the mesh: the moved Gaussians and the reversed faces together.
+      std::sort(mirrored_vertices.begin(), mirrored_vertices.end());
+      document_.cancel_edit();
+      transform_.reset();
+      const std::vector<int> selected = selection_.vertices();
+      run_operation(done, [&](const CovarianceMesh& mesh) {
+        MeshArrays a = arrays_of(mesh);
+        for (const auto& [v, g] : moved) a.means[size_t(v)] = g.mean, a.covariances[size_t(v)] = g.covariance;
+        reverse_parts_within(a, mirrored_vertices);
+        return Modelled{build_mesh(a), selected, "mirrored: the faces it moved whole reversed to stay outward"};
+      });
+    }
   }
   transform_.reset();
   transform_folds_ = false;

@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "core/io/atomic_file.h"
+#include "core/io/json_text.h"
+#include "core/io/quoted_text.h"
 #include "core/mesh/error.h"
 #include "core/io/text_file.h"
 
@@ -13,12 +15,21 @@ namespace {
 
 using Json = nlohmann::json;
 
+// The integer at `key` of an event, from `lo` to `hi` (1.9 and 4294967297 are refused, not cut).
+int integer_of(const Json& e, const char* key, int lo, int hi) {
+  try {
+    return int(json_integer(e.at(key), lo, hi));
+  } catch (const Error& x) {
+    throw usage_error(std::string(key) + " " + x.what());
+  }
+}
+
 int button_of(const Json& e) {
   const std::string name = e.value("button", std::string("left"));
   if (name == "left") return 0;
   if (name == "right") return 1;
   if (name == "middle") return 2;
-  throw usage_error("unknown button '" + name + "' (left, right or middle)");
+  throw usage_error("unknown button " + quoted_token(name) + " (left, right or middle)");
 }
 
 std::string button_name(int button) { return button == 1 ? "right" : button == 2 ? "middle" : "left"; }
@@ -37,7 +48,7 @@ std::vector<int> chord_of(const std::string& chord) {
   std::stringstream in(chord);
   for (std::string name; std::getline(in, name, '+');) {
     const int code = key_code(name);
-    if (code < 0) throw usage_error("unknown key '" + name + "'");
+    if (code < 0) throw usage_error("unknown key " + quoted_token(name));
     keys.push_back(code);
   }
   if (keys.empty()) throw usage_error("empty key");
@@ -64,12 +75,7 @@ std::vector<unsigned> code_points(const std::string& text) {
 EventScript EventScript::load(const std::string& path) { return parse(read_text_file(path), path); }
 
 EventScript EventScript::parse(const std::string& text, const std::string& source) {
-  Json doc;
-  try {
-    doc = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    throw usage_error(source + ": not valid JSON (byte " + std::to_string(e.byte) + ")");
-  }
+  const Json doc = parse_json(text, source);
   if (!doc.is_object() || !doc.contains("events") || !doc["events"].is_array())
     throw usage_error(source + ": expected {\"events\": [ ... ]}");
   EventScript script;
@@ -104,8 +110,8 @@ EventScript EventScript::parse(const std::string& text, const std::string& sourc
         for (const int m : mods) add(key(InputEvent::Type::key_press, m));
         const glm::vec2 from = type == "click" ? xy_of(e) : point_of(e, "from");
         const glm::vec2 to = type == "click" ? from : point_of(e, "to");
-        const int button = button_of(e), n = type == "click" ? 0 : e.value("steps", 10);
-        if (n < 0 || n > 10000) throw usage_error("steps must be 0..10000");
+        const int button = button_of(e);
+        const int n = type == "click" ? 0 : e.contains("steps") ? integer_of(e, "steps", 0, 10000) : 10;
         add(mouse(InputEvent::Type::move, from));
         add(mouse(InputEvent::Type::press, from, button));
         for (int s = 1; s <= n; ++s) {
@@ -140,14 +146,13 @@ EventScript EventScript::parse(const std::string& text, const std::string& sourc
         d.paths = e.at("paths").get<std::vector<std::string>>();
         add(d);
       } else if (type == "wait") {
-        const int frames = e.at("frames").get<int>();
-        if (frames < 0 || frames > 1000000) throw usage_error("frames must be 0..1000000");
+        const int frames = integer_of(e, "frames", 0, 1000000);
         if (frames > 0) wait(frames);
       } else {
-        throw usage_error("unknown type '" + type + "'");
+        throw usage_error("unknown type " + quoted_token(type));
       }
     } catch (const Json::exception& x) {
-      throw usage_error(source + ": event " + std::to_string(index) + ": " + std::string(x.what()).substr(0, 160));
+      throw usage_error(source + ": event " + std::to_string(index) + ": " + json_error_words(x));
     } catch (const Error& x) {
       throw usage_error(source + ": event " + std::to_string(index) + ": " + x.what());
     }

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "core/io/mesh_io.h"
+#include "core/io/mesh_repair.h"
 #include "core/mesh/error.h"
 
 namespace gps {
@@ -19,7 +20,8 @@ RepairFindings repair_findings(const std::string& path) {
     bool has_covariances = false;
     const PolygonSoup soup = read_polygon_soup(path, has_covariances);
     const RepairReport report = diagnose_polygon_soup(soup, repair_options_for());
-    if (!report.refuses()) return findings;
+    // Offered only where the repair can mend it: no flipping orients a Möbius-like part.
+    if (!report.refuses() || report.count(Defect::unorientable_parts) > 0) return findings;
     const ElementNumbering numbering = element_numbering_for(path, report);
     findings.refused = report.problems(numbering, true);
     findings.others = report.problems(numbering, false);

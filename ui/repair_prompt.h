@@ -9,7 +9,8 @@ namespace gps {
 
 /// What the diagnosis of a mesh file finds: the classes that refuse it and those the repair also
 /// mends, one line each (RepairReport::problems). `refused` is empty where the file is not refused for
-/// its topology (it reads, or it fails for another reason).
+/// its topology (it reads, or it fails for another reason) and where the repair could not make it
+/// open (a part no flipping orients, as a Möbius strip): Repair is offered only for what it mends.
 struct RepairFindings {
   std::vector<std::string> refused, others;
 };

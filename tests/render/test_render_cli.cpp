@@ -222,6 +222,30 @@ TEST(RenderCli, ScriptedRendersWithEdits) {
   EXPECT_EQ(run_command(gpsurf("render --script " + dir.write("broken.json", "{\"renders\": ["))).exit_code, 2);
 }
 
+// A script's numbers are taken only as the type they become: a vertex 4294967297 or 1.9 does not
+// edit vertex 1, a level 2.5 is not level 2, and nothing is rendered.
+TEST(RenderCli, ScriptNumbersOutsideTheirTypeAreRefused) {
+  test::TempDir dir;
+  const std::string out = dir.file("x.png");
+  for (const auto& [job, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"("edits": [{"vertex": 4294967297, "scale": 2}])",
+            "render 0: vertex must be an integer from 0 to 2147483647, got 4294967297"},
+           {R"("edits": [{"vertex": 1.9, "scale": 2}])",
+            "render 0: vertex must be an integer from 0 to 2147483647, got 1.9"},
+           {R"("edits": [{"vertex": 1, "mean": [0, "1", 0]}])",
+            "render 0: mean[1] must be a finite number, got a string"},
+           {R"("level": 2.5)", "render 0: level must be an integer from 1 to 64, got 2.5"},
+           {R"("sigma": 1e400)", "renders[0].sigma: a number beyond the range of a double"}}) {
+    const std::string script = dir.write("s.json", R"({"renders": [{"mesh": "sample:cube", "output": ")" + out +
+                                                       R"(", "size": "16x16", )" + job + "}]}");
+    const auto r = run_command(gpsurf("render --script " + script));
+    EXPECT_EQ(r.exit_code, 2) << job << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("json.exception"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << job;
+  }
+}
+
 // The EGL context (surfaceless Mesa here, a GPU driver's device elsewhere) renders what OSMesa renders.
 TEST(RenderCli, EglAndOsMesaContextsAgree) {
   test::TempDir dir;

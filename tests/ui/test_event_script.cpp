@@ -77,6 +77,28 @@ TEST(EventScript, ErrorsNameTheFileAndTheEvent) {
   EXPECT_THROW(EventScript::load("/nonexistent/events.json"), Error);
 }
 
+// Counts are taken only as the integers they become: 4294967297 frames does not wrap to one, 2.9
+// is not cut to 2, and a number beyond a double is named, not reported by the JSON library.
+TEST(EventScript, CountsOutsideTheirRangeAreRefused) {
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"({"events": [{"type": "wait", "frames": 4294967297}]})",
+            "events.json: event 0: frames must be an integer from 0 to 1000000, got 4294967297"},
+           {R"({"events": [{"type": "wait", "frames": 2.9}]})",
+            "events.json: event 0: frames must be an integer from 0 to 1000000, got 2.9"},
+           {R"({"events": [{"type": "drag", "from": [0, 0], "to": [1, 1], "steps": 4294967306}]})",
+            "events.json: event 0: steps must be an integer from 0 to 10000, got 4294967306"},
+           {R"({"events": [{"type": "wait", "frames": 1e400}]})",
+            "events.json: events[0].frames: a number beyond the range of a double"}}) {
+    try {
+      EventScript::parse(text, "events.json");
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+      EXPECT_EQ(e.kind(), Error::Kind::usage);
+    }
+  }
+}
+
 TEST(EventScript, RecordedInputReplaysFrameByFrame) {
   std::vector<std::vector<InputEvent>> live(9);
   const auto mouse = [](Type t, float x, float y, int button = 0) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <cmath>
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
@@ -216,6 +217,18 @@ TEST(EditorCommandLine, BadInputIsOneLineAndNonZero) {
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("bad.ply"), std::string::npos);
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  // A mesh that reads but that the plans refuse (a face of more sides than they handle): the message
+  // names the file too.
+  std::string wide = "";
+  for (int k = 0; k < 300; ++k)
+    wide += "v " + std::to_string(std::cos(k * 2 * M_PI / 300)) + " " + std::to_string(std::sin(k * 2 * M_PI / 300)) +
+            " 0\n";
+  wide += "f";
+  for (int k = 1; k <= 300; ++k) wide += " " + std::to_string(k);
+  const auto sides =
+      test::run_command(editor(dir.write("wide.obj", wide + "\n") + " --screenshot " + dir.file("x.png")));
+  EXPECT_EQ(sides.exit_code, 1) << sides.output;
+  EXPECT_NE(sides.output.find("wide.obj: face 0 has 300 sides"), std::string::npos) << sides.output;
   const std::string events = dir.write("e.json", R"({"events": [{"type": "hop"}]})");
   const auto e = test::run_command(editor("--play " + events));
   EXPECT_EQ(e.exit_code, 2) << e.output;

@@ -13,6 +13,7 @@
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
+#include "core/modelling/mesh_arrays.h"
 #include "core/io/text_file.h"
 #include "render/image/image_io.h"
 #include "ui/axis_handles.h"
@@ -173,6 +174,30 @@ TEST_F(EditorEditing, AMoveAlongOneAxisChangesOneCoordinateAndATypedDistanceIsEx
   EXPECT_NEAR(exact.mean(kVertex).y() - original_.mean(kVertex).y(), -0.25, 1e-6);  // the file keeps floats
   EXPECT_EQ(exact.mean(kVertex).x(), original_.mean(kVertex).x());
   EXPECT_EQ(exact.mean(kVertex).z(), original_.mean(kVertex).z());
+}
+
+// A scale by -1 along x of the whole cube (A, S X -1 Enter) mirrors it and reverses its faces with
+// it, as Blender does: the surface stays outward (the signed volume stays positive), one undo step.
+TEST_F(EditorEditing, AMirrorScaleReversesTheFacesSoTheSurfaceStaysOutward) {
+  const auto signed_volume = [](const CovarianceMesh& m) {
+    const MeshArrays a = arrays_of(m);
+    double six_volume = 0;
+    for (const std::vector<int>& face : a.faces)
+      for (size_t k = 1; k + 1 < face.size(); ++k)
+        six_volume += a.means[size_t(face[0])].dot(a.means[size_t(face[k])].cross(a.means[size_t(face[k + 1])]));
+    return six_volume / 6;
+  };
+  Events mirror;
+  mirror.move(glm::vec2(kWidth / 2, kHeight / 2)).key("a").wait().key("s").key("x").text("-1").key("enter").wait();
+  const CovarianceMesh m = play_and_undo(mirror);
+  ASSERT_EQ(m.n_vertices(), original_.n_vertices());
+  double centre_x = 0;  // the pivot: the selection's median point
+  for (size_t v = 0; v < original_.n_vertices(); ++v)
+    centre_x += original_.mean(v).x() / double(original_.n_vertices());
+  for (size_t v = 0; v < m.n_vertices(); ++v) EXPECT_NEAR(m.mean(v).x(), 2 * centre_x - original_.mean(v).x(), 1e-6);
+  const double volume = signed_volume(original_);
+  ASSERT_GT(volume, 0);
+  EXPECT_NEAR(signed_volume(m), volume, 1e-5 * volume);
 }
 
 TEST_F(EditorEditing, AMirroredEditChangesTheMirrorVertexByTheMirroredAmount) {

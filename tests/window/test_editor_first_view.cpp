@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../support/editor_driver.h"
+#include "../support/pinched_mesh.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
 #include "core/mesh/samples.h"
@@ -20,13 +21,7 @@ using test::artefact;
 constexpr int kWidth = test::kWindowWidth, kHeight = test::kWindowHeight;
 const glm::vec3 kBackground(0.23f, 0.24f, 0.26f);  // ViewOptions' viewport colour
 
-// Two square pyramids whose apexes are one vertex (1): a pinch vertex, refused as read.
-constexpr const char* kPinchedObj =
-    "v 0 0 0\n"
-    "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\n"
-    "v -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
-    "f 1 3 2\nf 1 4 3\nf 1 5 4\nf 1 2 5\nf 2 3 4 5\n"
-    "f 1 6 7\nf 1 7 8\nf 1 8 9\nf 1 9 6\nf 6 9 8 7\n";
+using test::kPinchedObj;  // a pinch vertex, refused as read
 
 class EditorFirstView : public ::testing::Test {
 protected:
