@@ -75,6 +75,7 @@ private:
   int pick(glm::vec2 pixel) const;
   Vec3 gizmo_pivot() const;
   std::optional<HandleFrame> gizmo_frame(const Viewport& v) const;
+  bool vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const;
   Viewport viewport() const;
   void draw_handles_and_box();
   // Selecting in the vertex, edge and face modes (editor_selection_commands.cpp).
@@ -178,7 +179,12 @@ private:
   ReachOptions reach_options_;
   InspectorPanel inspector_;
   FileBrowser browser_;
-  enum class BrowserPurpose { open_mesh, save_mesh, load_matcap, load_target } browser_purpose_ = BrowserPurpose::open_mesh;
+  enum class BrowserPurpose {
+    open_mesh,
+    save_mesh,
+    load_matcap,
+    load_target
+  } browser_purpose_ = BrowserPurpose::open_mesh;
   RecentFiles recent_;
   RepairPrompt repair_prompt_;
   FrameClock clock_;
@@ -197,9 +203,9 @@ private:
   std::vector<ReachedVertex> reach_;  // the vertices the drag changes, and how strongly
   std::vector<GaussianChange> drag_changes_;
   glm::vec2 free_min_{0.0f}, free_max_{1.0f};  // the part of the window the panels leave free
-  int layout_frames_ = 2;  // frames without input that lay the panels out before the first view is framed
-  std::optional<ScreenBox> gizmo_box_;         // where the gizmo was drawn this frame (the statistics keep clear of it)
-  std::vector<int> shown_ellipsoids_;          // the vertices whose ellipsoids are drawn, when not all
+  int layout_frames_ = 2;               // frames without input that lay the panels out before the first view is framed
+  std::optional<ScreenBox> gizmo_box_;  // where the gizmo was drawn this frame (the statistics keep clear of it)
+  std::vector<int> shown_ellipsoids_;   // the vertices whose ellipsoids are drawn, when not all
   SelectMode select_mode_ = SelectMode::vertex;
   bool select_through_ = false;  // box selection takes hidden vertices too (X-ray)
   bool alt_press_ = false;       // the left press had Alt: a click selects a loop, a drag orbits
@@ -256,8 +262,8 @@ private:
   JobDialog job_dialog_;
   bool job_is_fit_ = false;     // the dialog open is Fit to…: once applied, its target is shown
   TargetPoints target_points_;  // the dense target shown as points, and their distances
-  std::string popup_request_;  // a popup menu (Delete, Merge, Add) a key asked for
-  std::string last_summary_;   // what the last operation did
+  std::string popup_request_;   // a popup menu (Delete, Merge, Add) a key asked for
+  std::string last_summary_;    // what the last operation did
 
   Clock::time_point frame_input_time_{}, last_frame_time_ = Clock::now();
   Action pending_;

@@ -192,12 +192,10 @@ void EditorApp::draw_merge_items() {
 void EditorApp::draw_add_items() {
   for (const std::string& name : primitive_names()) {
     if (!ImGui::MenuItem(name.c_str())) continue;
-    const CovarianceMesh& mesh = document_.mesh();
-    const Vec3 at = centre_of_vertices(mesh, selection_.vertices());
-    const double diagonal = bounding_box_diagonal(mesh);
-    const double size = diagonal > 0 ? 0.25 * diagonal : 1.0;
-    run_operation("add " + name,
-                  [&](const CovarianceMesh& m) { return add_primitive(m, *primitive_named(name), at, size); });
+    const PrimitivePlacement at = primitive_placement(document_.mesh(), selection_.vertices());
+    run_operation("add " + name, [&](const CovarianceMesh& m) {
+      return add_primitive(m, *primitive_named(name), at.center, at.size);
+    });
   }
 }
 
@@ -228,8 +226,7 @@ void EditorApp::install(const Modelled& result, SharpnessReplanner* replanner) {
 }
 
 void EditorApp::topology_changed(const std::vector<int>& selection) {
-  view_.triangle_mesh =
-      scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
+  view_.triangle_mesh = scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
   check_finite_ = true;
   drag_.reset();
   reach_.clear();

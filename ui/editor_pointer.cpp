@@ -56,6 +56,18 @@ int EditorApp::pick(glm::vec2 pixel) const {
                         all ? nullptr : &shown_ellipsoids_);
 }
 
+// Whether a click at `pixel` on the gizmo's axis end `handle` means an unselected vertex that lies as
+// near the click as the end (a neighbour the end sits on): the click then selects it.
+bool EditorApp::vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const {
+  const Viewport v = viewport();
+  const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius);
+  if (vertex < 0 || selection_.contains(vertex)) return false;
+  const auto at_vertex = visible_pixel(v.camera, v.width, v.height, document_.mesh().mean(size_t(vertex)));
+  const auto at_end = visible_pixel(v.camera, v.width, v.height, gizmo.end(handle.axis, handle.side));
+  return at_vertex &&
+         (!at_end || glm::length(glm::vec2(*at_vertex) - pixel) <= glm::length(glm::vec2(*at_end) - pixel));
+}
+
 void EditorApp::handle_event(const InputEvent& e) {
   const ImGuiIO& io = ImGui::GetIO();
   if (modal_event(e)) return;  // G / S / R, extrude, loop cut, inset (editor_modelling.cpp)
@@ -110,8 +122,9 @@ void EditorApp::press(const InputEvent& e) {
   if (e.button == 0 && !input_.alt()) {
     const Viewport v = viewport();
     const auto gizmo = gizmo_frame(v);
-    if (const auto handle =
-            gizmo ? hit_handle(v, e.position, *gizmo, selection_.active(), kPickRadius) : std::nullopt) {
+    auto handle = gizmo ? hit_handle(v, e.position, *gizmo, selection_.active(), kPickRadius) : std::nullopt;
+    if (handle && !handle->is_centre() && vertex_before_handle(e.position, *gizmo, *handle)) handle.reset();
+    if (handle) {
       document_.begin_edit();
       drag_.emplace(document_.mesh(), selection_.vertices(), *handle, view_.draw.sigma_scale, v, e.position,
                     view_.common_frame, gizmo->centre);
@@ -131,7 +144,8 @@ void EditorApp::release(const InputEvent& e) {
     click_select(e.position, input_.shift());
   } else if (mode_ == Mode::box) {
     box_select(press_pixel_, e.position, input_.shift(), input_.ctrl());
-  } else if (alt_press_ && mode_ == Mode::orbit && glm::length(e.position - press_pixel_) <= kBoxThreshold) {
+  } else if (alt_press_ && (mode_ == Mode::orbit || mode_ == Mode::pan) &&
+             glm::length(e.position - press_pixel_) <= kBoxThreshold) {  // Alt+click, Shift+Alt+click adds
     loop_select(e.position, input_.shift());
   } else if (mode_ == Mode::handle) {
     end_drag(true);

@@ -109,6 +109,11 @@ const std::vector<std::pair<std::string, int>>& named_keys() {
                                                   {"minus", GLFW_KEY_MINUS},
                                                   {"kpadd", GLFW_KEY_KP_ADD},
                                                   {"kpsubtract", GLFW_KEY_KP_SUBTRACT},
+                                                  {"kpmultiply", GLFW_KEY_KP_MULTIPLY},
+                                                  {"kpdivide", GLFW_KEY_KP_DIVIDE},
+                                                  {"kpdecimal", GLFW_KEY_KP_DECIMAL},
+                                                  {"kpenter", GLFW_KEY_KP_ENTER},
+                                                  {"comma", GLFW_KEY_COMMA},
                                                   {"right_ctrl", GLFW_KEY_RIGHT_CONTROL},
                                                   {"right_shift", GLFW_KEY_RIGHT_SHIFT},
                                                   {"right_alt", GLFW_KEY_RIGHT_ALT}};

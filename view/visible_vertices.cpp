@@ -94,21 +94,35 @@ std::vector<char> visible_vertices(const Viewport& view, const CovarianceMesh& m
   const Vec3 forward = (target - eye).normalized();
   std::vector<char> visible(n, 0);
   for (size_t i = 0; i < n; ++i) {
-    if (!projected[i].valid || (has_face[i] && !faces_camera[i])) continue;
+    if (!projected[i].valid) continue;
     const glm::vec3& p = projected[i].p;
     const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
     if (x < 0 || y < 0 || x >= view.width || y >= view.height) continue;
     const int front_face = buffer.face(x, y);
-    bool seen = front_face < 0;
-    if (!seen)
+    const auto own = [&](int face) {
       for (const auto f : m.vf_range(m.vertex_handle(int(i))))
-        if (f.idx() == front_face) seen = true;
-    if (!seen) {  // the vertex's depth moved towards the camera by the tolerance, against the buffer's
-      const auto nearer =
-          project_to_pixel(view.camera, view.width, view.height, Vec3(mesh.mean(i) - tolerance * forward));
-      seen = nearer && nearer->z <= buffer.depth(x, y);
+        if (f.idx() == face) return true;
+      return false;
+    };
+    // The vertex's depth moved towards the camera by the tolerance, against the buffer's.
+    const auto nearer =
+        project_to_pixel(view.camera, view.width, view.height, Vec3(mesh.mean(i) - tolerance * forward));
+    if (has_face[i] && !faces_camera[i]) {
+      // All of its faces turn away: seen only through an opening, where one of them is drawn and no
+      // other face lies in front of it in the pixels around it (a silhouette's far side has one).
+      bool drawn = false, covered = !nearer;
+      for (int dy = -1; dy <= 1 && !covered; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int px = x + dx, py = y + dy;
+          if (px < 0 || py < 0 || px >= view.width || py >= view.height) continue;
+          const bool mine = own(buffer.face(px, py));
+          drawn = drawn || mine;
+          covered = covered || (!mine && buffer.depth(px, py) < nearer->z);
+        }
+      visible[i] = drawn && !covered;
+      continue;
     }
-    visible[i] = seen;
+    visible[i] = front_face < 0 || own(front_face) || (nearer && nearer->z <= buffer.depth(x, y));
   }
   return visible;
 }

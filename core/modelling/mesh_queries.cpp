@@ -76,8 +76,10 @@ std::vector<int> edge_loop(const CovarianceMesh& mesh, int a, int b) {
     loop = {a};
     const bool closed = walk_loop(m, h, VH(a), loop);
     if (!closed && continues(m, VH(a))) walk_loop(m, straight_on(m, m.opposite_halfedge_handle(h)), VH(a), loop);
-    if (loop.size() == 2)
-      for (const VH v : m.fv_range(m.face_handle(h))) loop.push_back(v.idx());
+    if (loop.size() == 2) {  // a loop of one edge: the rim of its larger face (a cap's), as Blender does
+      const PolyMesh::FaceHandle face = m.face_handle(h), other = m.opposite_face_handle(h);
+      for (const VH v : m.fv_range(m.valence(other) > m.valence(face) ? other : face)) loop.push_back(v.idx());
+    }
   }
   std::sort(loop.begin(), loop.end());
   loop.erase(std::unique(loop.begin(), loop.end()), loop.end());

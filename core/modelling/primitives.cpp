@@ -189,4 +189,22 @@ Modelled add_primitive(const CovarianceMesh& mesh, Primitive primitive, const Ve
   return out;
 }
 
+PrimitivePlacement primitive_placement(const CovarianceMesh& mesh, const std::vector<int>& selected) {
+  if (mesh.n_vertices() == 0) return {Vec3::Zero(), 2.0};
+  Vec3 lo = mesh.mean(0), hi = lo;
+  for (size_t v = 1; v < mesh.n_vertices(); ++v) {
+    lo = lo.cwiseMin(mesh.mean(v));
+    hi = hi.cwiseMax(mesh.mean(v));
+  }
+  const double diagonal = (hi - lo).norm(), extent = (hi - lo).maxCoeff();
+  if (!(extent > 0)) return {lo, 2.0};  // a single point
+  if (!selected.empty()) {
+    Vec3 sum = Vec3::Zero();
+    for (const int v : selected) sum += mesh.mean(size_t(v));
+    return {sum / double(selected.size()), 0.25 * diagonal};
+  }
+  const double size = 0.5 * extent;
+  return {Vec3(hi.x() + 0.25 * extent + 0.5 * size, 0.5 * (lo.y() + hi.y()), 0.5 * (lo.z() + hi.z())), size};
+}
+
 }  // namespace gps

@@ -29,4 +29,15 @@ std::optional<Primitive> primitive_named(const std::string& name);
 /// Selection: the new vertices.
 Modelled add_primitive(const CovarianceMesh& mesh, Primitive primitive, const Vec3& center, double size);
 
+/// Where the editor's Add menu puts a primitive: its centre and its size (as add_primitive takes them).
+struct PrimitivePlacement {
+  Vec3 center;
+  double size = 1.0;
+};
+/// At the selected vertices' centre, a quarter of the mesh's bounding-box diagonal across. With
+/// nothing selected, beside the mesh, clear of its bounding box along +x and half its largest extent
+/// across, so that it is seen rather than hidden inside the surface. In an empty mesh: the origin, 2
+/// across (Blender's default cube).
+PrimitivePlacement primitive_placement(const CovarianceMesh& mesh, const std::vector<int>& selected);
+
 }  // namespace gps

@@ -50,6 +50,15 @@ TEST(MeshQueries, EdgeLoopClosesAroundTheTorusAndStopsAtPoles) {
   EXPECT_EQ(edge_loop(cylinder, 8, 16), (V{0, 8, 16}));
 }
 
+// An edge of a cap's rim, whose ends have valence 3, gives the whole rim (the octagon), from either
+// direction, not the corners of the side quad next to it.
+TEST(MeshQueries, EdgeLoopOnACapRimSelectsTheRim) {
+  const CovarianceMesh cylinder = make_sample("cylinder");
+  EXPECT_EQ(edge_loop(cylinder, 0, 1), range(0, 8));
+  EXPECT_EQ(edge_loop(cylinder, 1, 0), range(0, 8));
+  EXPECT_EQ(edge_loop(cylinder, 17, 16), range(16, 24));
+}
+
 TEST(MeshQueries, EdgeLoopRefusesWhatIsNotAnEdge) {
   const CovarianceMesh cube = make_sample("cube");
   EXPECT_EQ(error_of([&] { edge_loop(cube, 0, 6); }), "edge 0–6 is not in the mesh");

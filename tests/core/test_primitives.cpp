@@ -112,6 +112,29 @@ TEST(Primitives, AppendedAsANewPart) {
   EXPECT_EQ(boundary_edges_of_oriented(r.mesh), 0);
 }
 
+// With nothing selected the Add menu's primitive lands beside the mesh, clear of its bounding box and
+// of a size near the mesh's, never hidden inside its surface; with a selection, at its centre.
+TEST(Primitives, PlacedBesideTheMeshWhenNothingIsSelected) {
+  const CovarianceMesh sphere = make_sample("sphere", 96);
+  Vec3 lo = sphere.mean(0), hi = lo;
+  for (size_t v = 0; v < sphere.n_vertices(); ++v) lo = lo.cwiseMin(sphere.mean(v)), hi = hi.cwiseMax(sphere.mean(v));
+  const double extent = (hi - lo).maxCoeff();
+  const PrimitivePlacement beside = primitive_placement(sphere, {});
+  EXPECT_DOUBLE_EQ(beside.size, 0.5 * extent);
+  const Modelled added = add_primitive(sphere, Primitive::cube, beside.center, beside.size);
+  for (const int v : added.selection) {
+    EXPECT_GT(added.mesh.mean(size_t(v)).x(), hi.x() + 0.1 * extent) << "vertex " << v << " clear of the mesh";
+    EXPECT_GT(added.mesh.mean(size_t(v)).y(), lo.y() - 1e-12);
+    EXPECT_LT(added.mesh.mean(size_t(v)).y(), hi.y() + 1e-12);
+  }
+  const PrimitivePlacement at_selection = primitive_placement(sphere, {0, 1});
+  EXPECT_TRUE(at_selection.center.isApprox(0.5 * (sphere.mean(0) + sphere.mean(1)), 1e-15));
+  EXPECT_DOUBLE_EQ(at_selection.size, 0.25 * (hi - lo).norm());
+  const PrimitivePlacement empty = primitive_placement(CovarianceMesh{}, {});
+  EXPECT_EQ(empty.center, Vec3::Zero());
+  EXPECT_EQ(empty.size, 2.0);
+}
+
 TEST(Primitives, NamesAndRefusals) {
   const auto names = primitive_names();
   ASSERT_EQ(names.size(), 6u);

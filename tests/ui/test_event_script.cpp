@@ -54,6 +54,26 @@ TEST(EventScript, OneTransitionPerFrameAndDragsMoveFrameByFrame) {
   EXPECT_GE(empty, 3);
 }
 
+// The numpad's keys and the comma have names, as typed values and Blender's numpad views use them.
+TEST(EventScript, NumpadKeysAndTheCommaHaveNames) {
+  const std::pair<const char*, int> keys[] = {{"kpadd", GLFW_KEY_KP_ADD},
+                                              {"kpsubtract", GLFW_KEY_KP_SUBTRACT},
+                                              {"kpmultiply", GLFW_KEY_KP_MULTIPLY},
+                                              {"kpdivide", GLFW_KEY_KP_DIVIDE},
+                                              {"kpdecimal", GLFW_KEY_KP_DECIMAL},
+                                              {"kpenter", GLFW_KEY_KP_ENTER},
+                                              {"comma", GLFW_KEY_COMMA},
+                                              {"kp7", GLFW_KEY_KP_7}};
+  for (const auto& [name, code] : keys) {
+    const auto frames =
+        play_all(EventScript::parse(R"({"events": [{"type": "key", "key": ")" + std::string(name) + R"("}]})", "test"));
+    bool pressed = false;
+    for (const auto& f : frames)
+      for (const auto& e : f) pressed = pressed || (e.type == Type::key_press && e.key == code);
+    EXPECT_TRUE(pressed) << name;
+  }
+}
+
 TEST(EventScript, ErrorsNameTheFileAndTheEvent) {
   const auto message = [](const std::string& text) {
     try {

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "core/mesh/samples.h"
+#include "core/modelling/delete_elements.h"
 
 namespace gps {
 namespace {
@@ -44,6 +45,30 @@ TEST(VisibleVertices, TheCubeShowsSevenCornersAndHidesTheFarOne) {
     EXPECT_EQ(std::count(visible.begin(), visible.end(), 1), 7);
     // The default camera looks from +x, +y, +z: the hidden corner is (−1, −1, −1), vertex 0.
     EXPECT_FALSE(visible[0]);
+  }
+}
+
+// Looking into a tube's open end, the far half of its rim is seen through the opening although all
+// of its faces turn away from the camera; the closed bottom's rim is hidden behind the wall.
+TEST(VisibleVertices, TheFarRimIsSeenThroughAnOpening) {
+  const CovarianceMesh cylinder = make_sample("cylinder");  // y up; rings of 8 at y = -1, 0, 1; face 16 the top cap
+  const CovarianceMesh tube = delete_faces(cylinder, {16}).mesh;
+  ASSERT_EQ(tube.n_vertices(), 24u);
+  const Camera camera = frame_mesh(tube, 0.0f, 30.0f);  // from above the open top
+  const std::vector<char> visible = visible_vertices(view_of(camera), tube);
+  const Vec3 eye = to_vec(camera.eye());
+  int far_rim = 0;
+  for (int v = 16; v < 24; ++v) {
+    EXPECT_TRUE(visible[size_t(v)]) << "top rim vertex " << v;
+    const Vec3 outward(tube.mean(size_t(v)).x(), 0, tube.mean(size_t(v)).z());
+    far_rim += outward.dot(Vec3(eye.x(), 0, eye.z())) < -1e-9;
+  }
+  EXPECT_GE(far_rim, 3) << "the camera sees the far side of the rim";
+  for (int v = 0; v < 8; ++v) {
+    const Vec3 outward(tube.mean(size_t(v)).x(), 0, tube.mean(size_t(v)).z());
+    if (outward.dot(Vec3(eye.x(), 0, eye.z())) < -1e-9) {
+      EXPECT_FALSE(visible[size_t(v)]) << "bottom vertex " << v;
+    }
   }
 }
 

@@ -212,6 +212,17 @@ Events screwdriver_events(const CovarianceMesh& cylinder, int steps = 6) {
   return e;  // 7. save (--save)
 }
 
+// An extrusion and its move are one operation, printed once.
+TEST_F(EditorModelling, AnExtrudePrintsItsStatusOnce) {
+  use_sample("cylinder");
+  const auto r = play(screwdriver_events(original_, 3), "");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  size_t printed = 0;
+  for (size_t at = r.output.find("extrude:"); at != std::string::npos; at = r.output.find("extrude:", at + 1))
+    ++printed;
+  EXPECT_EQ(printed, 1u) << r.output;
+}
+
 TEST_F(EditorModelling, AScrewdriverFromTheCylinder) {
   use_sample("cylinder");
   Events events = screwdriver_events(original_);

@@ -222,6 +222,71 @@ TEST_F(EditorModellingSelection, AltClickSelectsTheEdgeLoop) {
   EXPECT_EQ(moved(play(move_selection(events, loop))), loop);
 }
 
+// On the cube the gizmo's axis ends sit on the selected corner's neighbours: a Shift+click on each
+// neighbour selects it, rather than grabbing the axis end under it.
+TEST_F(EditorModellingSelection, AClickOnANeighbourUnderAnAxisEndSelectsIt) {
+  use_mesh(make_sample("cube"));
+  const PolyMesh& m = original_.mesh;
+  int corner = 0;  // the corner nearest the camera, which looks from +x, +y, +z
+  for (size_t v = 0; v < original_.n_vertices(); ++v)
+    if (original_.mean(v).sum() > original_.mean(size_t(corner)).sum()) corner = int(v);
+  std::vector<int> expected{corner};
+  Events events;
+  events.click(pixel_of(view_, original_.mean(size_t(corner)))).wait();
+  for (const auto n : m.vv_range(PolyMesh::VertexHandle(corner))) {
+    events.click(pixel_of(view_, original_.mean(size_t(n.idx()))), "shift").wait();
+    expected.push_back(n.idx());
+  }
+  std::sort(expected.begin(), expected.end());
+  Events shot = events;
+  play(shot, "neighbours_under_axis_ends.png");
+  EXPECT_EQ(moved(play(move_selection(events, expected))), expected);
+}
+
+// Shift+Alt+click adds a second edge loop to the first (as for a bridge), where Shift alone pans.
+TEST_F(EditorModellingSelection, ShiftAltClickAddsASecondEdgeLoop) {
+  use_mesh(make_sample("sphere", 384));
+  const std::vector<char> visible = visible_vertices(view_, original_);
+  const PolyMesh& m = original_.mesh;
+  const glm::vec2 centre(kWidth / 2, kHeight / 2);
+  // Visible edges between vertices of valence 4, nearest the window's centre first.
+  std::vector<std::pair<float, std::array<int, 2>>> edges;
+  for (const auto e : m.edges()) {
+    const int a = e.v0().idx(), b = e.v1().idx();
+    if (!visible[size_t(a)] || !visible[size_t(b)] || m.valence(e.v0()) != 4 || m.valence(e.v1()) != 4) continue;
+    const glm::vec2 mid = pixel_of(view_, 0.5 * (original_.mean(size_t(a)) + original_.mean(size_t(b))));
+    edges.push_back({glm::length(mid - centre), {a, b}});
+  }
+  std::sort(edges.begin(), edges.end());
+  ASSERT_FALSE(edges.empty());
+  const auto midpoint = [&](const std::array<int, 2>& e) {
+    return pixel_of(view_, 0.5 * (original_.mean(size_t(e[0])) + original_.mean(size_t(e[1]))));
+  };
+  const std::array<int, 2> first = edges.front().second;
+  const std::vector<int> first_loop = edge_loop(original_, first[0], first[1]);
+  // The nearest edge whose loop shares no vertex with the first, clear of the first's midpoint.
+  std::array<int, 2> second{-1, -1};
+  std::vector<int> second_loop;
+  for (const auto& [distance, e] : edges) {
+    if (glm::length(midpoint(e) - midpoint(first)) < 40.0f) continue;
+    std::vector<int> loop = edge_loop(original_, e[0], e[1]), common;
+    std::set_intersection(loop.begin(), loop.end(), first_loop.begin(), first_loop.end(), std::back_inserter(common));
+    if (loop.size() > 8 && common.empty()) {
+      second = e, second_loop = std::move(loop);
+      break;
+    }
+  }
+  ASSERT_GE(second[0], 0);
+  std::vector<int> both;
+  std::set_union(first_loop.begin(), first_loop.end(), second_loop.begin(), second_loop.end(),
+                 std::back_inserter(both));
+  Events events;
+  events.click(midpoint(first), "alt").wait().click(midpoint(second), "shift+alt").wait();
+  Events shot = events;
+  play(shot, "two_edge_loops.png");
+  EXPECT_EQ(moved(play(move_selection(events, both))), both);
+}
+
 // Two cubes apart: L over one selects its eight corners only; Ctrl+I then selects the other's.
 TEST_F(EditorModellingSelection, LinkedUnderTheCursorAndInvert) {
   const CovarianceMesh cube = make_sample("cube");
