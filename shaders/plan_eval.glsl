@@ -40,11 +40,11 @@ int heaviest_point(int net, float w[12]) { GPS_HEAVIEST_POINT(12) }  // a box sp
 void dual_to_surface_in_double(point_vec4 qa, point_vec4 qb, point_vec4 qc, point_vec4 ua, point_vec4 ub,
                                point_vec4 uc, point_vec4 va, point_vec4 vb, point_vec4 vc, float scale, out vec3 mu,
                                out vec3 mu_u, out vec3 mu_v) {
-  dmat3 sigma = inverse(dmat3(precision_of(qa, qb)));
-  dvec3 offset = sigma * dvec3(offset_part(qb, qc));
+  dmat3 q_hat = dmat3(precision_of(qa, qb));
+  dvec3 offset = precision_solve(q_hat, dvec3(offset_part(qb, qc)));
   mu = vec3(g_anchor + point_vec3(offset));  // about the anchor in the sums' own precision
-  dvec3 tangent_u = sigma * (dvec3(offset_part(ub, uc)) - dmat3(precision_of(ua, ub)) * offset);
-  dvec3 tangent_v = sigma * (dvec3(offset_part(vb, vc)) - dmat3(precision_of(va, vb)) * offset);
+  dvec3 tangent_u = precision_solve(q_hat, dvec3(offset_part(ub, uc)) - dmat3(precision_of(ua, ub)) * offset);
+  dvec3 tangent_v = precision_solve(q_hat, dvec3(offset_part(vb, vc)) - dmat3(precision_of(va, vb)) * offset);
   tangent_v -= (dot(tangent_u, tangent_v) / dot(tangent_u, tangent_u)) * tangent_u;
   mu_u = scale * vec3(tangent_u);
   mu_v = scale * vec3(tangent_v);
@@ -59,11 +59,11 @@ void dual_to_surface(point_vec4 qa, point_vec4 qb, point_vec4 qc, point_vec4 ua,
 #ifdef GPS_DOUBLE
   dual_to_surface_in_double(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
 #else
-  mat3 sigma = inverse(precision_of(qa, qb));
-  vec3 offset = sigma * offset_part(qb, qc);
+  mat3 q_hat = precision_of(qa, qb);
+  vec3 offset = precision_solve(q_hat, offset_part(qb, qc));
   mu = g_anchor + offset;
-  mu_u = scale * (sigma * (offset_part(ub, uc) - precision_of(ua, ub) * offset));
-  mu_v = scale * (sigma * (offset_part(vb, vc) - precision_of(va, vb) * offset));
+  mu_u = scale * precision_solve(q_hat, offset_part(ub, uc) - precision_of(ua, ub) * offset);
+  mu_v = scale * precision_solve(q_hat, offset_part(vb, vc) - precision_of(va, vb) * offset);
 #endif
 }
 

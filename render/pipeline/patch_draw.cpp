@@ -135,6 +135,18 @@ long long PatchDraw::count_triangles(PatchShape shape, const Camera& camera, con
 std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o,
                                                            int width, int height, int n_total, int first_patch,
                                                            int n_patches) const {
+  std::vector<TessellatedVertex> out =
+      capture_frame_vertices(shape, camera, o, width, height, n_total, first_patch, n_patches);
+  for (TessellatedVertex& t : out) {
+    const glm::dvec3 world = frame_.to_world(glm::dvec3(t.position[0], t.position[1], t.position[2]));
+    for (int k = 0; k < 3; ++k) t.position[k] = float(world[k]);
+  }
+  return out;
+}
+
+std::vector<TessellatedVertex> PatchDraw::capture_frame_vertices(PatchShape shape, const Camera& camera,
+                                                                 const DrawOptions& o, int width, int height,
+                                                                 int n_total, int first_patch, int n_patches) const {
   first_patch = std::clamp(first_patch, 0, n_total);
   n_patches = n_patches < 0 ? n_total - first_patch : std::min(n_patches, n_total - first_patch);
   // Counted first, then captured into a buffer of that size (a bound from the largest level alone
@@ -154,10 +166,6 @@ std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, con
   }
   glGetNamedBufferSubData(buffer, 0, GLsizeiptr(out.size() * sizeof(TessellatedVertex)), out.data());
   check_gl_errors("capturing tessellated vertices");
-  for (TessellatedVertex& t : out) {
-    const glm::dvec3 world = frame_.to_world(glm::dvec3(t.position[0], t.position[1], t.position[2]));
-    for (int k = 0; k < 3; ++k) t.position[k] = float(world[k]);
-  }
   return out;
 }
 

@@ -74,6 +74,11 @@ public:
   std::vector<TessellatedVertex> capture_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o,
                                                   int width, int height, int n_total, int first_patch,
                                                   int n_patches) const;
+  /// The same with positions in frame() coordinates, as the GPU evaluates them (in float, world
+  /// coordinates far from the origin would round away the surface's shape).
+  std::vector<TessellatedVertex> capture_frame_vertices(PatchShape shape, const Camera& camera, const DrawOptions& o,
+                                                        int width, int height, int n_total, int first_patch,
+                                                        int n_patches) const;
 
   /// The frame the plan points lie in (SurfaceRenderer::set_mesh); count_triangles() and
   /// capture_vertices() draw in it.

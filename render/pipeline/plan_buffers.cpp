@@ -149,6 +149,13 @@ std::vector<float> PlanBuffers::read_points(int n_points) const {
   return points;
 }
 
+std::vector<float> PlanBuffers::read_corner_limits(const PatchPlans& plans) const {
+  std::vector<float> limits(corner_limit_floats(plans));
+  glGetNamedBufferSubData(buffers_[kBindingCornerLimits], 0, GLsizeiptr(limits.size() * sizeof(float)), limits.data());
+  check_gl_errors("reading the corner limits");
+  return limits;
+}
+
 size_t PlanBuffers::bytes() const {
   size_t total = 0;
   for (const size_t s : sizes_) total += s;

@@ -45,6 +45,9 @@ public:
   /// The plan points as the compute passes left them (gpu::kVec4PerPoint vec4 each; double ones
   /// rounded to float).
   std::vector<float> read_points(int n_points) const;
+  /// The corner pass's output (render/pipeline/corner_limit_pass.h): two vec4 per patch corner, the
+  /// limit point and node kind, then the normal; zero at a corner its owner's slot holds.
+  std::vector<float> read_corner_limits(const PatchPlans& plans) const;
   /// GPU memory held, in bytes.
   size_t bytes() const;
 

@@ -9,34 +9,46 @@
 namespace gps {
 
 namespace {
-glm::dvec3 as_dvec3(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
 // Patches captured at a time, and the level for a mesh of n patches: finer for the few large patches
-// of a small mesh (whose silhouette bulges between corners), the corners alone past 16,384 patches.
+// of a small mesh (whose silhouette bulges between corners); past 16,384 patches the corners alone,
+// which the compute passes evaluated already.
 constexpr int kPatchesPerCapture = 8192;
-float framing_level(int n_patches) { return n_patches <= 4096 ? 4.0f : n_patches <= 16384 ? 2.0f : 1.0f; }
+constexpr int kCornersOnlyPatches = 16384;
+float framing_level(int n_patches) { return n_patches <= 4096 ? 4.0f : 2.0f; }
+
+glm::dvec3 in_frame(const NormalisedFrame& frame, const Vec3& world) {
+  return (glm::dvec3(world.x(), world.y(), world.z()) - frame.centre) / frame.unit;
+}
 }  // namespace
 
 std::vector<glm::dvec3> framing_points(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const DrawOptions& o) {
-  std::vector<glm::dvec3> points;
-  DrawOptions uniform;
+  const NormalisedFrame& frame = renderer.frame();
   const int n_patches = renderer.tables().plans.n_patches();
-  uniform.level = framing_level(n_patches);
-  uniform.pixels = 0.0f;
-  const Camera any = frame_mesh(mesh);  // uniform levels do not depend on the camera
-  for (int first = 0; first < n_patches; first += kPatchesPerCapture)
-    for (const TessellatedVertex& v : renderer.capture_vertices(any, uniform, 64, 64, first, kPatchesPerCapture))
-      points.emplace_back(v.position[0], v.position[1], v.position[2]);
+  std::vector<glm::dvec3> points;
+  if (n_patches > kCornersOnlyPatches) {
+    points = renderer.corner_limit_points();
+  } else {
+    DrawOptions uniform;
+    uniform.level = framing_level(n_patches);
+    uniform.pixels = 0.0f;
+    const Camera any;  // uniform levels do not depend on the camera
+    for (int first = 0; first < n_patches; first += kPatchesPerCapture)
+      for (const TessellatedVertex& v :
+           renderer.capture_frame_vertices(any, uniform, 64, 64, first, kPatchesPerCapture))
+        points.emplace_back(v.position[0], v.position[1], v.position[2]);
+  }
+  // A point the float evaluation could not represent frames nothing (the draw refuses its pixels).
+  std::erase_if(points, [](const glm::dvec3& p) { return !std::isfinite(p.x + p.y + p.z); });
   if (o.mesh_lines)
-    for (size_t i = 0; i < mesh.n_vertices(); ++i) points.push_back(as_dvec3(mesh.mean(i)));
+    for (size_t i = 0; i < mesh.n_vertices(); ++i) points.push_back(in_frame(frame, mesh.mean(i)));
   if (o.ellipsoids)
     for (size_t i = 0; i < mesh.n_vertices(); ++i) {
       const Mat3& s = mesh.covariance(i);
-      const glm::dvec3 m = as_dvec3(mesh.mean(i));
+      const glm::dvec3 m = in_frame(frame, mesh.mean(i));
       // The ellipsoid's box: along axis k it reaches k-sigma · √Σkk from the mean.
-      const glm::dvec3 reach =
-          double(o.sigma_scale) * glm::dvec3(std::sqrt(std::max(0.0, s(0, 0))), std::sqrt(std::max(0.0, s(1, 1))),
-                                             std::sqrt(std::max(0.0, s(2, 2))));
+      const glm::dvec3 reach = double(o.sigma_scale) / frame.unit *
+                               glm::dvec3(std::sqrt(std::max(0.0, s(0, 0))), std::sqrt(std::max(0.0, s(1, 1))),
+                                          std::sqrt(std::max(0.0, s(2, 2))));
       for (int c = 0; c < 8; ++c)
         points.push_back(
             m + glm::dvec3(c & 1 ? reach.x : -reach.x, c & 2 ? reach.y : -reach.y, c & 4 ? reach.z : -reach.z));
@@ -47,10 +59,20 @@ std::vector<glm::dvec3> framing_points(SurfaceRenderer& renderer, const Covarian
 Camera render_camera(SurfaceRenderer& renderer, const CovarianceMesh& mesh,
                      const std::vector<float>& yaw_pitch_distance, int up_axis, const DrawOptions& o, int width,
                      int height) {
-  Camera camera =
-      yaw_pitch_distance.size() < 2 ? frame_mesh(mesh) : frame_mesh(mesh, yaw_pitch_distance[0], yaw_pitch_distance[1]);
+  // Framed in the renderer's frame, where the mesh's box is centred and of unit diagonal, then
+  // mapped to the world: the same picture wherever the mesh lies and at any scale.
+  const NormalisedFrame& frame = renderer.frame();
+  Vec3 lo, hi;
+  bounding_box(mesh, lo, hi);
+  const glm::dvec3 frame_lo = in_frame(frame, lo), frame_hi = in_frame(frame, hi);
+  const Vec3 box_lo(frame_lo.x, frame_lo.y, frame_lo.z), box_hi(frame_hi.x, frame_hi.y, frame_hi.z);
+  Camera camera = yaw_pitch_distance.size() < 2
+                      ? frame_box(box_lo, box_hi)
+                      : frame_box(box_lo, box_hi, yaw_pitch_distance[0], yaw_pitch_distance[1]);
   camera.up_axis = up_axis;
   camera = frame_silhouette(camera, framing_points(renderer, mesh, o), double(width) / double(std::max(1, height)));
+  camera.target = frame.to_world(camera.target);
+  camera.distance = float(double(camera.distance) * frame.unit);
   if (yaw_pitch_distance.size() > 2) camera.distance = yaw_pitch_distance[2];
   return camera;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/plans/patch_adjacency.h"
 #include "core/plans/stencil_table.h"
 #include "render/gl/gl_context.h"
 #include "render/image/matcap.h"
@@ -327,6 +328,28 @@ std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& c
                                                                  int height, int first_patch, int n_patches) {
   buffers_.bind();
   return patches_.capture_vertices(shape(), camera, o, width, height, this->n_patches(), first_patch, n_patches);
+}
+
+std::vector<TessellatedVertex> SurfaceRenderer::capture_frame_vertices(const Camera& camera, const DrawOptions& o,
+                                                                       int width, int height, int first_patch,
+                                                                       int n_patches) {
+  buffers_.bind();
+  return patches_.capture_frame_vertices(shape(), camera, o, width, height, this->n_patches(), first_patch, n_patches);
+}
+
+std::vector<glm::dvec3> SurfaceRenderer::corner_limit_points() const {
+  const PatchPlans& plans = tables().plans;
+  const std::vector<float> limits = buffers_.read_corner_limits(plans);
+  const int corners = plans.corners();
+  std::vector<glm::dvec3> points;
+  for (int p = 0; p < n_patches(); ++p)
+    for (int c = 0; c < corners; ++c) {
+      const CornerOwner owner = corner_owner(plans, p, c);
+      if (owner.patch != p || owner.corner != c) continue;  // its owner's slot holds it
+      const float* limit = &limits[size_t(8 * (corners * p + c))];
+      points.emplace_back(limit[0], limit[1], limit[2]);
+    }
+  return points;
 }
 
 }  // namespace gps

@@ -77,6 +77,12 @@ public:
   /// rasterisation), of the patches [first_patch, first_patch + n_patches) (n_patches < 0: to the last).
   std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, int width,
                                                   int height, int first_patch = 0, int n_patches = -1);
+  /// The same with positions in frame() coordinates.
+  std::vector<TessellatedVertex> capture_frame_vertices(const Camera& camera, const DrawOptions& options, int width,
+                                                        int height, int first_patch = 0, int n_patches = -1);
+  /// The limit point at every patch corner as the last compute pass left it, once per corner point,
+  /// in frame() coordinates: the surface evaluated already, read back without a draw.
+  std::vector<glm::dvec3> corner_limit_points() const;
 
   /// The stored triangles of DrawOptions::surface_cache (its capture count, hysteresis, limit).
   SurfaceCache& surface_cache() { return cache_; }
