@@ -197,6 +197,13 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
       if (coordinates[2].empty()) throw Error(at() + "a vertex needs three coordinates");
       for (int k = 0; k < 3; ++k)
         if (const std::string why = parse_number(coordinates[k], p[k]); !why.empty()) throw Error(at() + why);
+      // What may follow: a weight, or a colour as MeshLab writes it (numbers, ignored), or a comment.
+      for (std::string_view extra = next_word(line); !extra.empty() && extra[0] != '#'; extra = next_word(line)) {
+        double ignored = 0;
+        if (!parse_number(extra, ignored).empty())
+          throw Error(at() + quoted_token(extra) +
+                      " after the vertex's coordinates is not a number (a weight or a colour)");
+      }
       points.push_back(p);
     } else if (keyword == "t") {
       read_sharp_tag(line, lines.number(), at(), tags);

@@ -119,10 +119,10 @@ public:
   // "line N: " for ASCII data, "" for binary data (which has no lines).
   std::string where() const { return format_ == Format::ascii ? "line " + std::to_string(line_) + ": " : ""; }
 
+  // A value as the file holds it: an index 2147483648 in full, not 2.14748e+09.
   static std::string format_number(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
+    char text[32];
+    return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
   }
 
   // ASCII data ends with its last record: anything but white space after it is refused.

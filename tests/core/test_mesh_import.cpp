@@ -56,6 +56,16 @@ TEST(MeshImport, ObjWithSlashesAndNegativeIndices) {
   EXPECT_NE(error_of([] { parse_obj("", "e.obj"); }).find("e.obj: the file is empty"), std::string::npos);
 }
 
+// After a vertex's coordinates only numbers (a weight, a colour) or a comment may follow: a stray
+// word is refused naming the line, not ignored.
+TEST(MeshImport, ObjVertexTrailingWordsAreNumbersOrRefused) {
+  const auto m = parse_obj("v 0 0 0 1\nv 1 0 0 0.5 0.5 0.5\nv 0 1 0 # apex\nf 1 2 3\n", "a.obj");
+  EXPECT_EQ(m.n_vertices(), 3u);
+  EXPECT_EQ(m.mean(1), Vec3(1, 0, 0));
+  EXPECT_EQ(error_of([] { parse_obj("v 0 0 0\nv 1 0 0 xyz\nv 0 1 0\nf 1 2 3\n", "b.obj"); }),
+            "b.obj: line 2: 'xyz' after the vertex's coordinates is not a number (a weight or a colour)");
+}
+
 TEST(MeshImport, OffWithCommentsAndColours) {
   const auto m = parse_off(
       "OFF\n# tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 255 0 0\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", "t.off");

@@ -62,8 +62,10 @@ struct CubePly {
         out.write(std::bit_cast<std::array<char, 4>>(float(v)).data(), 4);
       } else if (type == "double") {
         out.write(std::bit_cast<std::array<char, 8>>(v).data(), 8);
-      } else if (type == "int" || type == "uint") {
+      } else if (type == "int") {
         out.write(std::bit_cast<std::array<char, 4>>(int32_t(v)).data(), 4);
+      } else if (type == "uint") {
+        out.write(std::bit_cast<std::array<char, 4>>(uint32_t(v)).data(), 4);
       } else {
         out.put(char(uint8_t(v)));
       }
@@ -211,6 +213,15 @@ TEST(PlyCreases, EdgeElementWithoutCreaseIsSkipped) {
   ply.edge = {{"int", "vertex1"}, {"int", "vertex2"}, {"uchar", "red"}};
   ply.creases = {{0, 6, 200}};  // not an edge, but no crease either: a wireframe's record
   EXPECT_TRUE(parse_ply(ply.text(), "x.ply").mesh.sharpness.empty());
+}
+
+// A binary edge index too large for the mesh is shown in full, as the file holds it.
+TEST(PlyCreases, ALargeBinaryEdgeIndexIsShownAsAnInteger) {
+  CubePly ply;
+  ply.edge = {{"uint", "vertex1"}, {"uint", "vertex2"}, {"float", "crease"}};
+  ply.creases = {{4, 2147483648.0, 1}};
+  ply.binary = true;
+  EXPECT_EQ(message_of(ply.text()), "x.ply: edge 0 refers to vertex 2147483648, but there are 8 vertices");
 }
 
 TEST(PlyCreases, ErrorsNameTheFileAndTheRecord) {
