@@ -6,6 +6,10 @@ computes runs without the GIL (other Python threads run meanwhile) and stops on 
 raise gpsurf.Error with the command line's one-line message, ValueError, TypeError or IndexError
 for arguments. help(gpsurf.Mesh), help(gpsurf.Surface) and the stubs (__init__.pyi) give the API.
 """
+import ast as _ast
+import functools as _functools
+import inspect as _inspect
+
 from ._gpsurf import *  # noqa: F401,F403
 from ._gpsurf import __version__  # noqa: F401
 from . import _gpsurf
@@ -18,3 +22,67 @@ for _name in dir(_gpsurf):
         except (AttributeError, TypeError):
             pass
 del _name
+
+
+def _split_parameters(text):
+    """The parameters of a signature's text, split at commas outside brackets and quotes."""
+    parts, depth, quote, current = [], 0, None, ""
+    for c in text:
+        if quote:
+            quote = None if c == quote else quote
+        elif c in "'\"":
+            quote = c
+        elif c in "([{":
+            depth += 1
+        elif c in ")]}":
+            depth -= 1
+        elif c == "," and depth == 0:
+            parts.append(current.strip())
+            current = ""
+            continue
+        current += c
+    return [p for p in (*parts, current.strip()) if p]
+
+
+def _signature(function):
+    """The inspect.Signature of a compiled function, from the first line of its docstring (as
+    pybind11 writes it: `name(a: type, b: type = default) -> type`)."""
+    line = function.__doc__.splitlines()[0]
+    parameters = []
+    for part in _split_parameters(line[line.index("(") + 1:line.rindex(") ->")]):
+        name, _, rest = part.partition(":")
+        default = rest.partition(" = ")[2]
+        try:
+            value = _ast.literal_eval(default) if default else _inspect.Parameter.empty
+        except ValueError:
+            value = default
+        parameters.append(_inspect.Parameter(name.strip(), _inspect.Parameter.POSITIONAL_OR_KEYWORD, default=value))
+    return _inspect.Signature(parameters)
+
+
+def _with_signature(function):
+    """`function` as a Python function that inspect.signature and help() read."""
+
+    @_functools.wraps(function)
+    def call(*args, **kwargs):
+        return function(*args, **kwargs)
+
+    call.__signature__ = _signature(function)
+    return call
+
+
+def _give_signatures():
+    names = globals()
+    for name, value in list(names.items()):
+        if name.startswith("_") or not callable(value):
+            continue
+        if isinstance(value, type):
+            if not issubclass(value, BaseException):
+                for member, method in list(vars(value).items()):
+                    if callable(method) and (not member.startswith("_") or member == "__init__"):
+                        setattr(value, member, _with_signature(method))
+        else:
+            names[name] = _with_signature(value)
+
+
+_give_signatures()

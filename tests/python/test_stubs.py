@@ -3,6 +3,7 @@ every function and method the parameters and defaults that pybind11's own signat
 accepts a script written against them."""
 import ast
 import importlib.util
+import inspect
 import os
 import subprocess
 import sys
@@ -150,3 +151,19 @@ def test_mypy_accepts_a_script_against_the_stubs(tmp_path):
     refused = subprocess.run([sys.executable, "-m", "mypy", "--no-incremental", str(bad)], capture_output=True,
                              text=True, env=env, cwd=tmp_path)
     assert refused.returncode == 1 and "level" in refused.stdout, refused.stdout
+
+
+def test_inspect_signature_gives_the_stubs_parameters():
+    for node in stub_tree().body:
+        if isinstance(node, ast.FunctionDef) and hasattr(gpsurf, node.name):
+            names = list(inspect.signature(getattr(gpsurf, node.name)).parameters)
+            assert names == [n for n, _ in stub_parameters(node)], node.name
+        elif isinstance(node, ast.ClassDef) and node.name in ("Mesh", "Surface"):
+            cls = getattr(gpsurf, node.name)
+            for method in node.body:
+                if isinstance(method, ast.FunctionDef) and not method.decorator_list and hasattr(cls, method.name) \
+                        and not method.name.startswith("__"):
+                    names = [n for n in inspect.signature(getattr(cls, method.name)).parameters if n != "self"]
+                    assert names == [n for n, _ in stub_parameters(method)], f"{node.name}.{method.name}"
+    assert list(inspect.signature(gpsurf.Mesh).parameters) == ["positions", "faces", "covariances"]
+    assert inspect.signature(gpsurf.read).parameters["bias"].default == 0.05
