@@ -4,6 +4,7 @@
 
 #include "core/mesh/linalg.h"
 #include "core/reference/crease_rules.h"
+#include "core/reference/dart_limit_mask.h"
 #include "core/reference/vertex_mask.h"
 
 namespace gps {
@@ -40,8 +41,8 @@ PutLimit<T> store_in(std::vector<T>& out) {
   return [&out](int v, const T& limit) { out[size_t(v)] = limit; };
 }
 
-// The limit mask under the rule of v's remaining sharpness; false for a smooth or dart vertex,
-// whose scheme's smooth mask applies.
+// The limit mask under the rule of v's remaining sharpness; false for a smooth or dart vertex
+// (dart_limit_mask, or the scheme's smooth mask).
 bool sharp_limit_mask(const MeshConnectivity& c, const CreaseLevel& creases, int v, VertexMask& mask) {
   int a = -1, b = -1;
   const VertexRule rule = vertex_rule(c, creases, v, &a, &b);
@@ -62,7 +63,8 @@ void catmull_clark_limit(const PolygonTopology& t, const MeshConnectivity& c, co
   apply_masks(
       n, p,
       [&](int v, VertexMask& mask) {
-        if (!sharp_limit_mask(c, *creases, v, mask)) catmull_clark_smooth_limit_mask(t, c, v, mask);
+        if (!sharp_limit_mask(c, *creases, v, mask) && !dart_limit_mask(t, c, *creases, v, true, LoopBeta::loop, mask))
+          catmull_clark_smooth_limit_mask(t, c, v, mask);
       },
       put);
 }
@@ -78,7 +80,8 @@ void loop_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::
   apply_masks(
       t.n_vertices, p,
       [&](int v, VertexMask& mask) {
-        if (!sharp_limit_mask(c, *creases, v, mask)) loop_smooth_limit_mask(c, v, kind, mask);
+        if (!sharp_limit_mask(c, *creases, v, mask) && !dart_limit_mask(t, c, *creases, v, false, kind, mask))
+          loop_smooth_limit_mask(c, v, kind, mask);
       },
       put);
 }

@@ -7,96 +7,23 @@
 #include <map>
 #include <mutex>
 
-#include "core/reference/catmull_clark.h"
 #include "core/mesh/dual_map.h"
 #include "core/reference/loop.h"
+#include "core/reference/vertex_ring.h"
 
 namespace gps {
 
 namespace {
 
-// The ring of v in counter-clockwise order (faces oriented counter-clockwise): edge neighbours
-// e_0 … e_m and, for quads, the corner f_i across face i (between e_i and e_{i+1}). For an interior
-// vertex m = n and e_n = e_0 is not repeated; on a boundary e_0 and e_k are the boundary neighbours.
-struct OrderedRing {
-  std::vector<int> edges, diagonals;
-  bool boundary = false;
-};
-
-bool ordered_ring(const PolygonTopology& t, const MeshConnectivity& c, int v, int face_size, OrderedRing& ring) {
-  struct Corner {
-    int next, diagonal, previous;
-  };
-  std::vector<Corner> corners;
-  for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i) {
-    const int f = c.vertex_faces[size_t(i)], k = c.vertex_face_corners[size_t(i)], n = t.face_size(f);
-    if (n != face_size) return false;
-    const int* corner = &t.verts[size_t(t.offsets[size_t(f)])];
-    corners.push_back({corner[(k + 1) % n], n == 4 ? corner[(k + 2) % n] : -1, corner[(k + n - 1) % n]});
-  }
-  if (corners.empty()) return false;
-  // Face i + 1 follows face i where its next neighbour is face i's previous one. A boundary fan
-  // starts at the face whose next neighbour follows no face.
-  const auto following = [&](int neighbour) {
-    return std::find_if(corners.begin(), corners.end(), [&](const Corner& x) { return x.next == neighbour; });
-  };
-  auto start = corners.begin();
-  for (auto it = corners.begin(); it != corners.end(); ++it)
-    if (std::none_of(corners.begin(), corners.end(), [&](const Corner& x) { return x.previous == it->next; })) {
-      start = it;
-      ring.boundary = true;
-    }
-  ring.edges.assign(1, start->next);
-  ring.diagonals.clear();
-  auto at = start;
-  for (size_t walked = 0; walked < corners.size(); ++walked) {
-    ring.diagonals.push_back(at->diagonal);
-    if (walked + 1 == corners.size()) break;
-    ring.edges.push_back(at->previous);
-    at = following(at->previous);
-    if (at == corners.end()) return false;  // not one fan
-  }
-  if (ring.boundary) {
-    ring.edges.push_back(at->previous);
-    return true;
-  }
-  return at->previous == start->next;  // the fan closes
-}
-
 // The subdominant left eigenvectors of the subdivision matrix of a boundary vertex's ring with k
 // faces: points (v, e_0 … e_k, f_0 … f_{k−1}) for quads, (v, e_0 … e_k) for triangles. The matrix
-// comes from our own rules (catmull_clark_values, loop_values) applied to unit vectors on the fan,
-// so it cannot drift from them. Empty when the eigenvalues after 1 are not real or the second and
+// comes from our own rules (ring_step_matrix), so it cannot drift from them. Empty when the eigenvalues after 1 are not real or the second and
 // third are not above all others: then the ring has no tangent plane of two modes to take.
 using TangentPair = std::vector<Eigen::VectorXd>;
 
 TangentPair boundary_eigenvectors(int k, bool quads) {
-  PolygonTopology fan;
   const int n_points = quads ? 2 * k + 2 : k + 2;
-  fan.n_vertices = n_points;
-  fan.offsets = {0};
-  for (int i = 0; i < k; ++i) {
-    if (quads)
-      fan.verts.insert(fan.verts.end(), {0, 1 + i, k + 2 + i, 2 + i});
-    else
-      fan.verts.insert(fan.verts.end(), {0, 1 + i, 2 + i});
-    fan.offsets.push_back(int(fan.verts.size()));
-  }
-  const MeshConnectivity c = connectivity_of(fan);
-  std::vector<Eigen::VectorXd> unit(static_cast<size_t>(n_points));
-  for (int i = 0; i < n_points; ++i) unit[size_t(i)] = Eigen::VectorXd::Unit(n_points, i);
-  const std::vector<Eigen::VectorXd> refined =
-      quads ? catmull_clark_values(fan, c, unit) : loop_values(fan, c, unit, LoopBeta::loop);
-  // The refined ring: v's vertex point, the edge points of (v, e_i), the face points.
-  Eigen::MatrixXd step(n_points, n_points);
-  step.row(0) = refined[0].transpose();
-  for (int e = 0; e < c.n_edges(); ++e) {
-    const int a = c.edge_verts[2 * size_t(e)], b = c.edge_verts[2 * size_t(e) + 1];
-    if (a == 0 || b == 0) step.row(a + b) = refined[size_t(n_points + e)].transpose();
-  }
-  if (quads)
-    for (int f = 0; f < k; ++f) step.row(k + 2 + f) = refined[size_t(n_points + c.n_edges() + f)].transpose();
-
+  const Eigen::MatrixXd step = ring_step_matrix(k, quads, true, LoopBeta::loop);
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(step.transpose());
   const Eigen::VectorXcd values = solver.eigenvalues();
   std::vector<int> order(static_cast<size_t>(n_points));

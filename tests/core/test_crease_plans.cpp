@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "core/evaluation/patch_eval.h"
+#include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
@@ -38,11 +39,12 @@ struct Case {
 std::vector<Case> creased_quad_cases() {
   std::vector<Case> cases;
   cases.push_back({"cube, sharp top", with_random_covariances(cube_with_sharp_top(), 1)});
-  cases.push_back({"cube, mixed", with_random_covariances(creased(test::cube_mesh(),
-                                                                  {{0, 1, 0.5}, {1, 2, 1.0}, {2, 3, 2.5}, {0, 3, 4.7},
-                                                                   {4, 5, 10}, {5, 6, 10}},
-                                                                  {{6, 10}, {7, 2.5}, {4, 10}}),
-                                                          2)});
+  cases.push_back(
+      {"cube, mixed",
+       with_random_covariances(
+           creased(test::cube_mesh(), {{0, 1, 0.5}, {1, 2, 1.0}, {2, 3, 2.5}, {0, 3, 4.7}, {4, 5, 10}, {5, 6, 10}},
+                   {{6, 10}, {7, 2.5}, {4, 10}}),
+           2)});
   std::vector<EdgeCrease> all;
   for (const auto& [a, b] : std::vector<std::pair<int, int>>{
            {0, 1}, {1, 2}, {2, 3}, {0, 3}, {4, 5}, {5, 6}, {6, 7}, {4, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}})
@@ -53,7 +55,8 @@ std::vector<Case> creased_quad_cases() {
   std::vector<EdgeCrease> grid;
   for (int i = 0; i < 6; ++i) grid.push_back({2 * 7 + i, 2 * 7 + i + 1, 10});
   for (int j = 0; j < 4; ++j) grid.push_back({j * 7 + 4, (j + 1) * 7 + 4, 2.5});
-  cases.push_back({"grid, lines", with_random_covariances(creased(test::grid_mesh(6, 5), grid, {{4 * 7 + 3, 4.7}}), 4)});
+  cases.push_back(
+      {"grid, lines", with_random_covariances(creased(test::grid_mesh(6, 5), grid, {{4 * 7 + 3, 4.7}}), 4)});
   // The torus sample (24 × 12 quads) with its outer equator sharp (regular crease vertices all
   // along) and a semi-sharp edge elsewhere.
   std::vector<EdgeCrease> ring;
@@ -101,15 +104,26 @@ std::vector<Case> creased_triangle_cases() {
   std::vector<EdgeCrease> grid;
   for (int i = 0; i < 8; ++i) grid.push_back({3 * 9 + i, 3 * 9 + i + 1, 10});
   for (int j = 0; j < 3; ++j) grid.push_back({j * 9 + 5, (j + 1) * 9 + 5, 1.5});
-  cases.push_back({"triangle grid", with_random_covariances(creased(test::triangle_grid_mesh(8, 6), grid, {{5 * 9 + 3, 2.5}}), 7)});
-  cases.push_back({"icosahedron", with_random_covariances(creased(test::icosahedron_mesh(),
-                                                                  {{5, 11, 10}, {1, 5, 10}, {1, 7, 10}, {7, 10, 10},
-                                                                   {10, 11, 10}, {3, 9, 2.5}},
-                                                                  {{2, 10}, {6, 1.5}}),
-                                                          8)});
+  cases.push_back(
+      {"triangle grid", with_random_covariances(creased(test::triangle_grid_mesh(8, 6), grid, {{5 * 9 + 3, 2.5}}), 7)});
+  cases.push_back(
+      {"icosahedron",
+       with_random_covariances(
+           creased(test::icosahedron_mesh(),
+                   {{5, 11, 10}, {1, 5, 10}, {1, 7, 10}, {7, 10, 10}, {10, 11, 10}, {3, 9, 2.5}}, {{2, 10}, {6, 1.5}}),
+           8)});
   std::vector<EdgeCrease> equator;
   for (int k = 0; k < 7; ++k) equator.push_back({2 + k, 2 + (k + 1) % 7, 10});
   cases.push_back({"bipyramid", with_random_covariances(creased(test::bipyramid_mesh(7), equator, {{0, 4.7}}), 9)});
+  // Crease ends: a line from the boundary ending inside the grid (a dart of valence 6), a lone sharp
+  // edge on the icosahedron (darts of valence 5).
+  cases.push_back({"grid, crease end",
+                   with_random_covariances(creased(test::triangle_grid_mesh(8, 6), {{2 * 9 + 4, 3 * 9 + 4, 10},
+                                                                                    {3 * 9 + 4, 4 * 9 + 4, 10},
+                                                                                    {0 * 9 + 4, 1 * 9 + 4, 10},
+                                                                                    {1 * 9 + 4, 2 * 9 + 4, 10}}),
+                                           10)});
+  cases.push_back({"icosahedron, dart", with_random_covariances(creased(test::icosahedron_mesh(), {{7, 10, 10}}), 11)});
   return cases;
 }
 
@@ -125,21 +139,42 @@ TEST(CreasePlans, LoopEqualsTheReferenceInsidePatches) {
   }
 }
 
-// At a dart (a vertex with one sharp edge) the reference's limit step, Far's, takes the crease
-// curve's cubic B-spline mask at the crease vertices beside it, which is the limit only where the
-// whole curve around is a B-spline: the reference closes in on the plans level by level.
-TEST(CreasePlans, DartsAreApproachedByTheReference) {
+// At a dart (a vertex with one sharp edge) the plans equal the reference, whose limit step takes
+// the dart's own mask there (core/reference/dart_limit_mask.h), from any level.
+TEST(CreasePlans, DartsEqualTheReference) {
   const CovarianceMesh cube = with_random_covariances(creased(test::cube_mesh(), {{4, 5, 10}, {1, 5, 10}}), 2);
-  const CovarianceMesh torus = with_random_covariances(creased(make_sample("torus"), {{5 * 12 + 6, 5 * 12 + 7, 10}}), 5);
-  for (const CovarianceMesh* mesh : std::vector<const CovarianceMesh*>{&cube, &torus}) {
-    const double e4 = error_against_reference(*mesh, 4), e5 = error_against_reference(*mesh, 5),
-                 e6 = error_against_reference(*mesh, 6);
-    std::printf("darts: %.1e, %.1e, %.1e of the diagonal at levels 4, 5, 6\n", e4, e5, e6);
-    EXPECT_LT(e5, 0.6 * e4);
-    EXPECT_LT(e6, 0.6 * e5);
-    EXPECT_LT(e6, 2e-4);
-  }
+  const CovarianceMesh torus =
+      with_random_covariances(creased(make_sample("torus"), {{5 * 12 + 6, 5 * 12 + 7, 10}}), 5);
+  for (const CovarianceMesh* mesh : std::vector<const CovarianceMesh*>{&cube, &torus})
+    for (const int levels : {2, 4}) {
+      const double error = error_against_reference(*mesh, levels);
+      std::printf("darts: %.1e of the diagonal at level %d\n", error, levels);
+      EXPECT_LT(error, 1e-9) << levels << " levels";
+    }
 }
+
+// Every configuration of infinitely sharp creases OpenSubdiv's rules give, one mesh each
+// (tests/data/infinite_creases, with random anisotropic Gaussians): the plans equal the reference's
+// limit at equal parameters, whether it projects after two levels or after five.
+void expect_plans_equal_reference(const std::string& name) {
+  const CovarianceMesh mesh =
+      with_random_covariances(read_mesh(std::string(GPS_TEST_DATA_DIR) + "/infinite_creases/" + name + ".obj"), 17);
+  for (const int levels : {2, 5}) {
+    const double error = error_against_reference(mesh, levels);
+    std::printf("%-15s: %.1e of the diagonal at level %d\n", name.c_str(), error, levels);
+    EXPECT_LT(error, 1e-9) << name << ", " << levels << " levels";
+  }
+  EXPECT_GT(distance_from_smooth(PlannedMesh(mesh, PlanOptions{Scheme::catmull_clark}), Scheme::catmull_clark), 1e-3)
+      << name << ": the creases change the surface";
+}
+
+TEST(CreasePlans, BoxWithSharpEdgesEqualsTheReference) { expect_plans_equal_reference("sharp_box"); }
+TEST(CreasePlans, CreaseLoopsEqualTheReference) { expect_plans_equal_reference("crease_loop"); }
+TEST(CreasePlans, CreaseEndsEqualTheReference) { expect_plans_equal_reference("dart_grid"); }
+TEST(CreasePlans, CornersOfSeveralCreasesEqualTheReference) { expect_plans_equal_reference("corner_creases"); }
+TEST(CreasePlans, DartsAtExtraordinaryVerticesEqualTheReference) { expect_plans_equal_reference("fan_darts"); }
+TEST(CreasePlans, CreasesThroughExtraordinaryVerticesEqualTheReference) { expect_plans_equal_reference("fan_creases"); }
+TEST(CreasePlans, CornersAtExtraordinaryVerticesEqualTheReference) { expect_plans_equal_reference("fan_corners"); }
 
 TEST(CreasePlans, ZeroSharpnessGivesTheSmoothPlansBitForBit) {
   for (const char* name : {"cube", "icosphere"}) {

@@ -9,6 +9,7 @@
 #include <opensubdiv/far/topologyDescriptor.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <memory>
 
@@ -176,8 +177,31 @@ double max_norm(const std::vector<Dual>& q) {
   return m;
 }
 
+// The reference's limits of a level's points.
+std::vector<Dual> reference_limit(const Level& level, Scheme scheme) {
+  std::vector<Dual> limit(level.values.size());
+  const PutLimit<Dual> put = [&](int v, const Dual& q) { limit[size_t(v)] = q; };
+  if (scheme == Scheme::catmull_clark)
+    catmull_clark_limit(level.topology, level.connectivity, level.values, level.topology.n_vertices, put,
+                        &level.creases);
+  else
+    loop_limit(level.topology, level.connectivity, level.values, LoopBeta::loop, put, &level.creases);
+  return limit;
+}
+
+// Whether vertex v of the level is a dart of an infinitely sharp edge: there Far's limit is the
+// smooth mask's and the reference's the dart's own (core/reference/dart_limit_mask.h).
+bool infinitely_sharp_dart(const Level& level, int v) {
+  if (vertex_rule(level.connectivity, level.creases, v) != VertexRule::dart) return false;
+  const MeshConnectivity& c = level.connectivity;
+  for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i)
+    if (is_infinitely_sharp(edge_sharpness(c, level.creases, c.vertex_edges[size_t(i)]))) return true;
+  return false;
+}
+
 // Far against the reference on one mesh: the 9D points after `levels` steps and their limits, and
-// the means of the reference's own result (subdivide) against Far's points mapped back.
+// the means of the reference's own result (subdivide) against Far's points mapped back; the limits
+// everywhere but at darts of infinitely sharp edges (FarsLimitAtDartsApproachesTheReference).
 void expect_matches_far(const CovarianceMesh& mesh, Scheme scheme, int levels) {
   SCOPED_TRACE(std::string(scheme == Scheme::loop ? "Loop" : "Catmull-Clark") + ", " + std::to_string(levels) +
                " levels");
@@ -185,12 +209,7 @@ void expect_matches_far(const CovarianceMesh& mesh, Scheme scheme, int levels) {
   const Level& last = ref.back();
   ASSERT_FALSE(ref[0].creases.empty());
   ASSERT_FALSE(last.creases.empty());  // some sharpness is left, so the limit takes its rules
-  std::vector<Dual> limit(last.values.size());
-  const PutLimit<Dual> put = [&](int v, const Dual& q) { limit[size_t(v)] = q; };
-  if (scheme == Scheme::catmull_clark)
-    catmull_clark_limit(last.topology, last.connectivity, last.values, last.topology.n_vertices, put, &last.creases);
-  else
-    loop_limit(last.topology, last.connectivity, last.values, LoopBeta::loop, put, &last.creases);
+  const std::vector<Dual> limit = reference_limit(last, scheme);
 
   const FarRefinement far = far_refinement(mesh, scheme, ref);
   ASSERT_EQ(far.refined.size(), last.values.size());
@@ -199,7 +218,7 @@ void expect_matches_far(const CovarianceMesh& mesh, Scheme scheme, int levels) {
   for (size_t i = 0; i < far.refined.size(); ++i) {
     const size_t r = size_t(far.reference_index[i]);
     refined_error = std::max(refined_error, (far.refined[i] - last.values[r]).norm());
-    limit_error = std::max(limit_error, (far.limit[i] - limit[r]).norm());
+    if (!infinitely_sharp_dart(last, int(r))) limit_error = std::max(limit_error, (far.limit[i] - limit[r]).norm());
   }
   EXPECT_LE(refined_error, 1e-12 * scale);
   EXPECT_LE(limit_error, 1e-12 * scale);
@@ -210,12 +229,47 @@ void expect_matches_far(const CovarianceMesh& mesh, Scheme scheme, int levels) {
     const std::vector<Dual>& q = with_limit ? far.limit : far.refined;
     double error = 0.0;
     for (size_t i = 0; i < q.size(); ++i) {
+      const int r = far.reference_index[i];
+      if (with_limit && infinitely_sharp_dart(last, r)) continue;
       const auto mean = mean_from_dual(q[i]);
       ASSERT_TRUE(mean);
-      error = std::max(error, (*mean - result.mesh.mean(size_t(far.reference_index[i]))).norm());
+      error = std::max(error, (*mean - result.mesh.mean(size_t(r))).norm());
     }
     EXPECT_LE(error, 1e-12 * diagonal) << (with_limit ? "limit" : "refined");
   }
+}
+
+// At a dart of an infinitely sharp edge Far's limit (the smooth mask) moves with the level it is
+// taken from, towards the reference's, which is the same from every level: the distance shrinks
+// by the ring's subdominant eigenvalue or faster at each level.
+void expect_far_approaches_at_darts(const CovarianceMesh& mesh, Scheme scheme) {
+  SCOPED_TRACE(scheme == Scheme::loop ? "Loop" : "Catmull-Clark");
+  const std::vector<Level> ref = reference_levels(mesh, scheme, 5);
+  const std::vector<Dual> exact = reference_limit(ref[1], scheme);
+  std::vector<int> darts;
+  for (int v = 0; v < ref[0].topology.n_vertices; ++v)
+    if (infinitely_sharp_dart(ref[0], v)) darts.push_back(v);
+  ASSERT_FALSE(darts.empty());
+  std::vector<double> distance;
+  for (int levels = 1; levels <= 5; ++levels) {
+    const std::vector<Level> to_level(ref.begin(), ref.begin() + levels + 1);
+    const FarRefinement far = far_refinement(mesh, scheme, to_level);
+    const std::vector<Dual> limit = reference_limit(to_level.back(), scheme);
+    double worst = 0.0;
+    for (size_t i = 0; i < far.limit.size(); ++i) {
+      const int r = far.reference_index[i];
+      if (std::find(darts.begin(), darts.end(), r) == darts.end()) continue;
+      EXPECT_LT((limit[size_t(r)] - exact[size_t(r)]).norm(), 1e-12 * max_norm(ref[0].values)) << "level " << levels;
+      worst = std::max(worst, (far.limit[i] - exact[size_t(r)]).norm());
+    }
+    distance.push_back(worst);
+  }
+  const double scale = max_norm(ref[0].values);
+  std::printf(
+      "Far's limit at darts from levels 1 to 5: %.1e %.1e %.1e %.1e %.1e of the points' size from the reference's\n",
+      distance[0] / scale, distance[1] / scale, distance[2] / scale, distance[3] / scale, distance[4] / scale);
+  EXPECT_GT(distance[0], 1e-4 * scale);
+  for (size_t l = 1; l < distance.size(); ++l) EXPECT_LT(distance[l], 0.7 * distance[l - 1]) << "level " << l + 1;
 }
 
 // Sharpness 0.5, 1, 2.5, 4.7 and ∞ mixed on one mesh. Where more than one sharpness decays to smooth
@@ -296,6 +350,18 @@ TEST(CreaseReferenceOsd, LoopOpenTriangleGridMatchesFar) {
   set_corner(m, id(1, 1), 1.0);
   set_corner(m, id(4, 3), 4.7);
   expect_matches_far(m, Scheme::loop, 3);
+}
+
+TEST(CreaseReferenceOsd, FarsLimitAtDartsApproachesTheReference) {
+  CovarianceMesh cube = test::with_random_covariances(test::cube_mesh(), 17);
+  set_crease(cube, 4, 5, 10.0);  // darts of valence 3
+  CovarianceMesh grid = test::with_random_covariances(test::grid_mesh(4, 4), 18);
+  set_crease(grid, 6, 7, 10.0);  // darts of valence 4
+  CovarianceMesh icosahedron = test::with_random_covariances(test::icosahedron_mesh(), 19);
+  set_crease(icosahedron, 7, 10, 10.0);  // darts of valence 5
+  expect_far_approaches_at_darts(cube, Scheme::catmull_clark);
+  expect_far_approaches_at_darts(grid, Scheme::catmull_clark);
+  expect_far_approaches_at_darts(icosahedron, Scheme::loop);
 }
 
 }  // namespace

@@ -219,6 +219,31 @@ TEST(CreaseRules, InfinitelySharpCornerStays) {
   }
 }
 
+// Where all sharpness is infinite the rules are the same at every level, so each vertex's limit is the
+// same whichever level projects it: at darts too, whose ring steps with the sharp edge's midpoint
+// (the smooth mask, which Far takes there, moves with the level).
+TEST(CreaseRules, LimitPositionsAtDartsAreFixedUnderFurtherSubdivision) {
+  CovarianceMesh cube = test::with_random_covariances(test::cube_mesh(), 25);
+  cube.sharpness.set_crease(4, 5, kInfiniteSharpness);  // darts of valence 3 at 4 and 5
+  cube.sharpness.set_crease(2, 6, kInfiniteSharpness);
+  cube.sharpness.set_crease(6, 7, kInfiniteSharpness);  // a crease vertex at 6, darts at 2 and 7
+  CovarianceMesh icosahedron = test::with_random_covariances(test::icosahedron_mesh(), 26);
+  icosahedron.sharpness.set_crease(7, 10, kInfiniteSharpness);  // darts of valence 5
+  CovarianceMesh grid = test::with_random_covariances(test::triangle_grid_mesh(4, 4), 27);
+  grid.sharpness.set_crease(2 * 5 + 1, 2 * 5 + 2, kInfiniteSharpness);  // darts of valence 6
+  const struct {
+    const CovarianceMesh& mesh;
+    Scheme scheme;
+  } cases[] = {{cube, Scheme::catmull_clark}, {icosahedron, Scheme::loop}, {grid, Scheme::loop}};
+  for (const auto& [mesh, scheme] : cases) {
+    const SubdivisionResult coarse = subdivide(mesh, SubdivisionOptions{scheme, 1, true});
+    const SubdivisionResult fine = subdivide(mesh, SubdivisionOptions{scheme, 4, true});
+    const double diagonal = bounding_box_diagonal(mesh);
+    for (size_t i = 0; i < coarse.mesh.n_vertices(); ++i)
+      EXPECT_LT((coarse.mesh.mean(i) - fine.mesh.mean(i)).norm(), 1e-12 * diagonal) << "vertex " << i;
+  }
+}
+
 TEST(CreaseRules, CreaseAndCornerVerticesHaveNoLimitNormal) {
   CovarianceMesh mesh = sharp_top_cube();
   mesh.sharpness.set_corner(0, kInfiniteSharpness, 8);

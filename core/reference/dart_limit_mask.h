@@ -1,0 +1,20 @@
+#pragma once
+// The exact limit position of a dart, an interior vertex with one infinitely sharp edge. The sharp
+// edge's point is its midpoint at every step, so the step of the dart's ring is not the smooth one
+// and neither is its limit: Far's Limit takes the smooth mask there, which the refined points only
+// approach level by level. The mask here is the left eigenvector for eigenvalue 1 of the ring's step
+// under our own rules (core/reference/vertex_ring.h), exact from any level.
+#include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/sharpness.h"
+#include "core/reference/loop.h"
+#include "core/reference/vertex_mask.h"
+
+namespace gps {
+
+/// The limit mask of v when v is a dart under `level` whose sharp edge is infinitely sharp and
+/// whose faces are all quads (`quads`, Catmull-Clark) or all triangles (Loop with β `kind`); false,
+/// leaving `mask` alone, otherwise (a semi-sharp dart's rules change as its edge decays).
+bool dart_limit_mask(const PolygonTopology& t, const MeshConnectivity& c, const CreaseLevel& level, int v, bool quads,
+                     LoopBeta kind, VertexMask& mask);
+
+}  // namespace gps
