@@ -108,12 +108,10 @@ void update(SurfaceHandle& h, const MeshHandle& mesh, const py::object& changed,
         throw py::value_error("update: vertex " + std::to_string(v) + "'s Gaussian changed but is not in `changed`");
   }
   if (edited.empty()) return;
-  // A surface still read by a call in the background is left to it; this one updates a copy.
+  // A surface still read by a call in the background is left to it; this one updates a copy. The
+  // GIL stays held, so that no other thread takes the surface while it changes (an update is short).
   if (h.surface.use_count() > 1) h.surface = std::make_shared<PlannedSurface>(*h.surface);
-  {
-    py::gil_scoped_release unlocked;
-    h.surface->update(*after, edited);
-  }
+  h.surface->update(*after, edited);
   h.mesh = after;
 }
 
