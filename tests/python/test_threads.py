@@ -118,3 +118,21 @@ def test_ctrl_c_stops_a_long_call(call):
     out, _ = child.communicate(timeout=120)
     assert child.returncode == 0
     assert out.startswith("interrupted"), out
+
+
+def test_a_call_keeps_the_surface_it_was_given_while_another_thread_updates_it(sphere):
+    surface = gpsurf.Surface(sphere)
+    scaled = sphere.copy()
+    scaled.positions = 2 * sphere.positions
+    before, after = gpsurf.tessellate(sphere, 6)[0], gpsurf.tessellate(scaled, 6)[0]
+    results = []
+    readers = [threading.Thread(target=lambda: results.append(surface.tessellate(6)[0])) for _ in range(4)]
+    for r in readers:
+        r.start()
+    for mesh in (scaled, sphere, scaled):
+        surface.update(mesh)  # between, during or after the readers' calls: each sees one whole state
+    for r in readers:
+        r.join()
+    assert len(results) == 4
+    assert all(np.array_equal(r, before) or np.array_equal(r, after) for r in results)
+    assert np.array_equal(surface.tessellate(6)[0], after)
