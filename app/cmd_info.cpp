@@ -19,9 +19,8 @@ const char* scheme_name(Scheme scheme) { return scheme == Scheme::loop ? "Loop" 
 
 std::string plural(int n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
 
-// Parts, boundary loops and genus of a manifold topology, on one line.
-std::string surface_line(const PolygonTopology& t, const MeshConnectivity& c) {
-  const SurfaceCounts s = surface_counts(t, c);
+// Parts, boundary loops and genus of a manifold surface, on one line.
+std::string surface_line(const SurfaceCounts& s) {
   return plural(s.parts, "part", "parts") + ", " + plural(s.boundary_loops, "boundary loop", "boundary loops") +
          ", genus " + std::to_string(s.genus);
 }
@@ -31,7 +30,7 @@ std::string after_repair(PolygonSoup& repaired, const RepairReport& diagnosis) {
   if (diagnosis.count(Defect::unorientable_parts) > 0) return "still refused (a part cannot be oriented)";
   if (repaired.faces.n_faces() == 0) return "no faces left";
   repaired.faces.n_vertices = int(repaired.positions.size());
-  return surface_line(repaired.faces, connectivity_of(repaired.faces)) + ", scheme " +
+  return surface_line(surface_counts(repaired.faces, connectivity_of(repaired.faces))) + ", scheme " +
          scheme_name(scheme_for(repaired.faces, PlanOptions{}));
 }
 
@@ -41,7 +40,7 @@ void print_problems(const std::vector<std::string>& lines, const std::string& he
   for (const std::string& line : lines) std::cout << "  " << line << "\n";
 }
 
-// Without --repair the file is diagnosed first (the repair's own detection, on a copy): a mesh
+// Without --repair the file is diagnosed first (the repair's own detection): a mesh
 // read_mesh refuses gets every problem class with its count and first examples, numbered as the file
 // numbers them, and what a repair would leave, then the refusal itself (exit 1); a mesh that is read
 // gets the classes it is read with (coincident, isolated vertices, zero-area faces) after its counts.
@@ -53,14 +52,18 @@ void print_info(const std::string& path, const RepairArguments& repair) {
     if (options.repair) return read_mesh_repairing(path, repair);
     bool has_covariances = false;
     PolygonSoup soup = read_polygon_soup(path, has_covariances);
-    if (soup.faces.n_faces() > 0) {  // else refused as it is: no surface to diagnose
-      PolygonSoup repaired = soup;
-      diagnosis = repair_polygon_soup(repaired, repair_options_for(options));
-      if (diagnosis.changed() || diagnosis.count(Defect::unorientable_parts) > 0)
-        repaired_shape = after_repair(repaired, diagnosis);
-    }
     const size_t n_vertices = soup.positions.size();
     const int n_faces = soup.faces.n_faces();
+    if (n_faces > 0) {  // else refused as it is: no surface to diagnose
+      // Diagnosed on the soup itself, not a copy (memory follows the file): a soup the repair changed
+      // is read again; one it left as it is is the file's.
+      diagnosis = repair_polygon_soup(soup, repair_options_for(options));
+      if (diagnosis.changed() || diagnosis.count(Defect::unorientable_parts) > 0) {
+        repaired_shape = after_repair(soup, diagnosis);
+        soup = PolygonSoup();
+        soup = read_polygon_soup(path, has_covariances);
+      }
+    }
     try {
       return read_mesh_of_soup(std::move(soup), has_covariances, path, options, nullptr, &diagnosis);
     } catch (const Error&) {
@@ -74,21 +77,22 @@ void print_info(const std::string& path, const RepairArguments& repair) {
       throw;
     }
   }();
-  const PolygonTopology t = topology_of(m.mesh);
-  const MeshConnectivity c = connectivity_of(t);
+  // The counts are read off the mesh's half-edges: no second adjacency of the size of the mesh.
+  const PolyMesh& mesh = m.mesh;
   std::map<int, int> face_sizes, valences;
-  for (int f = 0; f < t.n_faces(); ++f) ++face_sizes[t.face_size(f)];
+  for (const auto f : mesh.faces()) ++face_sizes[int(mesh.valence(f))];
   // Extraordinary by the rules of the scheme the surface is drawn with: regular interior valence 4
-  // and boundary 3 under Catmull-Clark, 6 and 4 under Loop.
-  const Scheme scheme = scheme_for(t, PlanOptions{});
+  // and boundary 3 under Catmull-Clark, 6 and 4 under Loop (a corner, of one face and two edges, is
+  // neither).
+  const Scheme scheme = scheme_for(topology_of(mesh), PlanOptions{});
   const int regular_interior = scheme == Scheme::loop ? 6 : 4, regular_boundary = scheme == Scheme::loop ? 4 : 3;
   int boundary_edges = 0, extraordinary = 0;
-  for (int e = 0; e < c.n_edges(); ++e) boundary_edges += c.is_boundary_edge(e);
-  for (int v = 0; v < t.n_vertices; ++v) {
-    ++valences[c.valence(v)];
-    const VertexRole role = vertex_role(c, v);
-    extraordinary += (role == VertexRole::interior && c.valence(v) != regular_interior) ||
-                     (role == VertexRole::boundary && c.valence(v) != regular_boundary);
+  for (const auto e : mesh.edges()) boundary_edges += mesh.is_boundary(e);
+  for (const auto v : mesh.vertices()) {
+    const int valence = int(mesh.valence(v));
+    ++valences[valence];
+    if (valence == 0) continue;
+    extraordinary += mesh.is_boundary(v) ? valence != 2 && valence != regular_boundary : valence != regular_interior;
   }
   double lo = std::numeric_limits<double>::infinity(), hi = 0;
   for (const Mat3& s : m.covariances) {
@@ -100,9 +104,9 @@ void print_info(const std::string& path, const RepairArguments& repair) {
   const char* sep = "";
   for (const auto& [size, count] : face_sizes)
     std::cout << std::exchange(sep, ", ") << count << " with " << size << " sides";
-  std::cout << ")\nedges: " << c.n_edges() << "\nboundary edges: " << boundary_edges << "\nvalences:";
+  std::cout << ")\nedges: " << mesh.n_edges() << "\nboundary edges: " << boundary_edges << "\nvalences:";
   for (const auto& [valence, count] : valences) std::cout << ' ' << valence << ':' << count;
-  std::cout << "\nsurface: " << surface_line(t, c)
+  std::cout << "\nsurface: " << surface_line(surface_counts(mesh))
             << "\nscheme: " << (scheme == Scheme::loop ? "Loop (a mesh of triangles)" : "Catmull-Clark")
             << "\nextraordinary vertices: " << extraordinary << " (by " << scheme_name(scheme) << "'s rules)\n";
   std::cout << "covariance eigenvalues: " << lo << " .. " << hi << "\n";

@@ -14,6 +14,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module and its tests
   python3-setuptools python3-wheel python3-pip python3-venv python3-mypy  # its wheel and stubs, tested
   ccache clang-format
+  time  # GNU time: the hostile-input soak measures gpsurf's peak memory with it (tests/render/)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -224,8 +224,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
       faces.offsets.push_back(int(faces.verts.size()));
       // Each edge of a manifold mesh borders at most two faces, so its corners are at most n(n − 1) for
       // n vertices; past that (one face repeated, say) the faces so far are refused as they stand.
-      const double n = double(points.size());
-      if (double(faces.verts.size()) > n * (n - 1)) {
+      if (exceeds_manifold_corners(faces.verts.size(), points.size())) {
         faces.offsets.shrink_to_fit();
         faces.verts.shrink_to_fit();
         mesh_of_soup(plain_soup(std::move(points), std::move(faces), source), source);
@@ -304,6 +303,12 @@ PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {
       faces.verts.push_back(int(index));
     }
     faces.offsets.push_back(int(faces.verts.size()));
+    if (exceeds_manifold_corners(faces.verts.size(), points.size())) {  // as in parse_obj_soup
+      faces.offsets.shrink_to_fit();
+      faces.verts.shrink_to_fit();
+      mesh_of_soup(plain_soup(std::move(points), std::move(faces), source), source);
+      throw Error(source + ": the mesh is not manifold");  // not reached: the check above throws
+    }
     t.skip_line(line);  // colour values
   }
   std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built

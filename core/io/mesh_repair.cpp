@@ -17,7 +17,6 @@ namespace {
 
 constexpr size_t kExamples = 3;
 
-
 // Union-find whose root is the lowest index of each set.
 struct LowestRootSets {
   std::vector<int> parent;
@@ -50,6 +49,36 @@ struct CellHash {
     h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
     return size_t(h ^ (h >> 31));
   }
+};
+
+// Indices into an array, found by the CellKey each has (key_of(index)): open addressing over a table of
+// ints at most half full, 8 bytes an index where a node-based map would take some 50.
+template <class KeyOf>
+class IndexTable {
+public:
+  IndexTable(size_t capacity, const KeyOf& key_of) : key_of_(key_of) {
+    size_t n = 16;
+    while (n < 2 * capacity) n *= 2;
+    slots_.assign(n, -1);
+  }
+  /// The index with key k, or −1 where there is none.
+  int find(const CellKey& k) const { return slots_[slot_of(k)]; }
+  /// The index with key k, or −1 after adding `index` (whose key is k) for it.
+  int find_or_add(const CellKey& k, int index) {
+    int& slot = slots_[slot_of(k)];
+    if (slot >= 0) return slot;
+    slot = index;
+    return -1;
+  }
+
+private:
+  size_t slot_of(const CellKey& k) const {
+    const size_t mask = slots_.size() - 1;
+    for (size_t s = CellHash()(k) & mask;; s = (s + 1) & mask)
+      if (slots_[s] < 0 || key_of_(slots_[s]) == k) return s;
+  }
+  const KeyOf& key_of_;
+  std::vector<int> slots_;
 };
 
 uint64_t edge_key(int a, int b) { return uint64_t(uint32_t(std::min(a, b))) << 32 | uint32_t(std::max(a, b)); }
@@ -129,10 +158,12 @@ private:
     face_origin_ = std::move(origin);
   }
 
-  // Vertices within the tolerance of one another (through a uniform grid of cells of four times that
-  // size: a vertex looks into a neighbouring cell only along the axes where it lies within the
-  // tolerance of its cell's side, about 3 cells rather than 27) are welded to the lowest index of their
-  // cluster.
+  // Vertices within the tolerance of one another are welded to the lowest index of their cluster,
+  // in time linear in the vertices however they crowd: vertices at one position are joined through a
+  // hash of positions, and the others are put in cells of half the tolerance (any two in one cell are
+  // within it, so joined unmeasured), grouped in blocks of four times the tolerance; a vertex looks into
+  // a neighbouring block only along the axes where it lies within the tolerance of its block's side
+  // (about 3 blocks rather than 27), and there measures only the cells not yet in its cluster.
   void weld() {
     const auto& p = soup_.positions;
     welded_away_.assign(p.size(), 0);
@@ -144,39 +175,22 @@ private:
     }
     const double diagonal = (hi - lo).norm();
     tolerance_ = std::max(0.0, options_.weld_tolerance) * diagonal;
-    const double cell = tolerance_ > 0 ? 4 * tolerance_ : diagonal > 0 ? 1e-6 * diagonal : 1.0;
-    const double reach = tolerance_ > 0 ? 0.25 + 1e-6 : 0.0;  // the tolerance in cells, rounding allowed for
-    const auto key_of = [&](const Vec3& x) {
-      const Vec3 c = ((x - lo) / cell).array().floor();
-      return CellKey{c.x(), c.y(), c.z()};
-    };
-    std::unordered_map<CellKey, int, CellHash> head;  // per cell: its last vertex; next_in_cell chains the rest
-    head.reserve(p.size());
-    std::vector<int> next_in_cell(p.size(), -1);
     LowestRootSets sets(p.size());
-    const double tolerance2 = tolerance_ * tolerance_;
-    for (int v = 0; v < int(p.size()); ++v) {
-      const CellKey k = key_of(p[size_t(v)]);
-      const Vec3 in_cell = (p[size_t(v)] - lo) / cell - Vec3(k.x, k.y, k.z);  // each in [0, 1)
-      int from[3], to[3];
-      for (int a = 0; a < 3; ++a) {
-        from[a] = in_cell[a] < reach ? -1 : 0;
-        to[a] = in_cell[a] > 1 - reach ? 1 : 0;
-      }
-      for (int dx = from[0]; dx <= to[0]; ++dx)
-        for (int dy = from[1]; dy <= to[1]; ++dy)
-          for (int dz = from[2]; dz <= to[2]; ++dz) {
-            const auto it = head.find({k.x + dx, k.y + dy, k.z + dz});
-            if (it == head.end()) continue;
-            for (int u = it->second; u >= 0; u = next_in_cell[size_t(u)])
-              if ((p[size_t(u)] - p[size_t(v)]).squaredNorm() <= tolerance2) sets.unite(u, v);
-          }
-      auto [it, inserted] = head.try_emplace(k, v);
-      if (!inserted) {
-        next_in_cell[size_t(v)] = it->second;
-        it->second = v;
+    std::vector<int> distinct;  // the first vertex at each position
+    {
+      const auto position = [&](int v) {
+        const Vec3& x = p[size_t(v)];
+        return CellKey{x.x() + 0.0, x.y() + 0.0, x.z() + 0.0};  // −0 as 0
+      };
+      IndexTable<decltype(position)> first_at(p.size(), position);
+      for (int v = 0; v < int(p.size()); ++v) {
+        if (const int first = first_at.find_or_add(position(v), v); first >= 0)
+          sets.unite(first, v);
+        else
+          distinct.push_back(v);
       }
     }
+    if (tolerance_ > 0) weld_within_tolerance(distinct, lo, sets);
     std::vector<int> group_size(p.size(), 0);
     for (int v = 0; v < int(p.size()); ++v) ++group_size[size_t(sets.find(v))];
     for (int v = 0; v < int(p.size()); ++v) {
@@ -193,6 +207,99 @@ private:
     weld_root_.resize(p.size());
     for (int v = 0; v < int(p.size()); ++v) weld_root_[size_t(v)] = sets.find(v);
     for (int& v : soup_.faces.verts) v = weld_root_[size_t(v)];
+  }
+
+  // Joins the `distinct` positions (ascending vertices) lying within the tolerance of one another.
+  void weld_within_tolerance(const std::vector<int>& distinct, const Vec3& lo, LowestRootSets& sets) {
+    const auto& p = soup_.positions;
+    const double cell = 0.5 * tolerance_, block = 4 * tolerance_;
+    const double reach = 0.25 + 1e-6;  // the tolerance in blocks, rounding allowed for
+    const double tolerance2 = tolerance_ * tolerance_;
+    const auto key_of = [&](const Vec3& x, double size) {
+      const Vec3 c = ((x - lo) / size).array().floor();
+      return CellKey{c.x(), c.y(), c.z()};
+    };
+    struct Cell {
+      int head = -1;           // its last vertex; next_in_cell chains the rest
+      int next_in_block = -1;  // the block's previous cell
+    };
+    struct Block {
+      int vertex = -1;  // one of its vertices
+      int last_cell = -1;
+      int n_cells = 0;
+    };
+    constexpr int kCellsAround = 125;  // the cells within the tolerance of a cell: ±2 along each axis
+    std::vector<Cell> cells;
+    std::vector<Block> blocks;
+    const auto cell_key = [&](int c) { return key_of(p[size_t(cells[size_t(c)].head)], cell); };
+    const auto block_key = [&](int b) { return key_of(p[size_t(blocks[size_t(b)].vertex)], block); };
+    IndexTable<decltype(cell_key)> cell_at(distinct.size(), cell_key);
+    IndexTable<decltype(block_key)> block_at(distinct.size(), block_key);
+    // The squared distance from x to a cell's box, in cells (computed as key_of places x): a cell
+    // farther than the tolerance is not measured.
+    const auto cells2_to = [&](const Vec3& x, int c) {
+      const CellKey k = cell_key(c);
+      const Vec3 d = (x - lo) / cell - Vec3(k.x, k.y, k.z);
+      return (-d).cwiseMax(d - Vec3::Ones()).cwiseMax(0.0).squaredNorm();
+    };
+    std::vector<int> next_in_cell(p.size(), -1);
+    for (const int v : distinct) {
+      const Vec3& x = p[size_t(v)];
+      const int own = cell_at.find_or_add(key_of(x, cell), int(cells.size()));
+      if (own >= 0)
+        sets.unite(cells[size_t(own)].head, v);
+      else
+        cells.push_back({v, -1});
+      // The cells not yet in v's cluster whose box lies within the tolerance: each measured until a
+      // vertex within it is found.
+      const auto measure = [&](int c) {
+        if (sets.find(cells[size_t(c)].head) == sets.find(v) || cells2_to(x, c) > 4 * (1 + 1e-6)) return;
+        for (int u = cells[size_t(c)].head; u >= 0; u = next_in_cell[size_t(u)])
+          if ((p[size_t(u)] - x).squaredNorm() <= tolerance2) {
+            sets.unite(u, v);
+            return;
+          }
+      };
+      const CellKey k = key_of(x, block);
+      const Vec3 in_block = (x - lo) / block - Vec3(k.x, k.y, k.z);  // each in [0, 1)
+      int from[3], to[3];
+      for (int a = 0; a < 3; ++a) {
+        from[a] = in_block[a] < reach ? -1 : 0;
+        to[a] = in_block[a] > 1 - reach ? 1 : 0;
+      }
+      int near[8], n_near = 0, near_cells = 0;
+      for (int dx = from[0]; dx <= to[0]; ++dx)
+        for (int dy = from[1]; dy <= to[1]; ++dy)
+          for (int dz = from[2]; dz <= to[2]; ++dz)
+            if (const int b = block_at.find({k.x + dx, k.y + dy, k.z + dz}); b >= 0) {
+              near[n_near++] = b;
+              near_cells += blocks[size_t(b)].n_cells;
+            }
+      if (near_cells <= kCellsAround) {
+        for (int i = 0; i < n_near; ++i)
+          for (int c = blocks[size_t(near[i])].last_cell; c >= 0; c = cells[size_t(c)].next_in_block) measure(c);
+      } else {  // crowded blocks: the cells within the tolerance looked up instead
+        const CellKey at = key_of(x, cell);
+        for (int dx = -2; dx <= 2; ++dx)
+          for (int dy = -2; dy <= 2; ++dy)
+            for (int dz = -2; dz <= 2; ++dz)
+              if (const int c = cell_at.find({at.x + dx, at.y + dy, at.z + dz}); c >= 0) measure(c);
+      }
+      if (own >= 0) {
+        next_in_cell[size_t(v)] = cells[size_t(own)].head;
+        cells[size_t(own)].head = v;
+        continue;
+      }
+      const int c = int(cells.size()) - 1;
+      const int b = block_at.find_or_add(k, int(blocks.size()));
+      if (b < 0) {
+        blocks.push_back({v, c, 1});
+      } else {
+        cells[size_t(c)].next_in_block = blocks[size_t(b)].last_cell;
+        blocks[size_t(b)].last_cell = c;
+        ++blocks[size_t(b)].n_cells;
+      }
+    }
   }
 
   // Repeated consecutive corners are removed; a face that still lists a vertex twice is cut there into
@@ -321,13 +428,16 @@ private:
       for (size_t v = 1; v < next.size(); ++v) next[v] += next[v - 1];
       for (size_t i = 0; i < n_corners; ++i) out[size_t(next[size_t(digit[size_t(in(i))])]++)] = in(i);
     };
-    counting_sort(high, [](size_t i) { return int(i); }, by_high);
-    counting_sort(low, [&](size_t i) { return by_high[i]; }, edge_corners);
+    counting_sort(
+        high, [](size_t i) { return int(i); }, by_high);
+    counting_sort(
+        low, [&](size_t i) { return by_high[i]; }, edge_corners);
     by_high = {};
     std::vector<int> edge_offsets{0};
     for (size_t i = 1; i <= n_corners; ++i) {
       const int k = edge_corners[i - 1];
-      if (i == n_corners || low[size_t(edge_corners[i])] != low[size_t(k)] || high[size_t(edge_corners[i])] != high[size_t(k)])
+      if (i == n_corners || low[size_t(edge_corners[i])] != low[size_t(k)] ||
+          high[size_t(edge_corners[i])] != high[size_t(k)])
         edge_offsets.push_back(int(i));
     }
     low = {};

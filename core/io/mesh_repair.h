@@ -11,8 +11,8 @@
 // that used a vertex twice in its place). Creases follow their vertices: an edge of the result between
 // copies or welds of a creased edge's ends takes its sharpness (the largest where welded creases meet),
 // and a crease on no edge of the result is dropped and counted; a vertex takes its group's largest
-// corner. Everything runs in time linear in the soup (hash tables),
-// except a weld cluster of many vertices within the tolerance of one another.
+// corner. Everything runs in time linear in the soup (hash tables), however many vertices crowd into
+// the weld tolerance, but for two crowds of vertices just over the tolerance apart.
 #include <array>
 #include <string>
 #include <unordered_map>
@@ -31,7 +31,7 @@ struct RepairOptions {
 struct ElementNumbering {
   int base = 0;
   std::unordered_map<int, int> vertex_lines, face_lines;  // by index from 0: the file's line
-  std::string vertex(int v) const;                       // "vertex 67 (line 70)"
+  std::string vertex(int v) const;                        // "vertex 67 (line 70)"
   std::string face(int f) const;
   std::string number(int v) const { return std::to_string(v + base); }
 };
@@ -65,15 +65,15 @@ struct DefectExample {
 struct RepairReport {
   std::array<int, kDefectCount> counts{};                         // by Defect
   std::array<std::vector<DefectExample>, kDefectCount> examples;  // the first few
-  int welded_groups = 0;                                        // the vertices the coincident ones became
-  int split_faces = 0;      // faces that used a vertex twice, split into several faces
-  int fin_faces = 0;        // faces separated from fin edges
-  int fin_copies = 0;       // vertex copies made for them
-  int pinch_copies = 0;     // vertex copies made for the extra fans of pinch vertices
-  int parts = 0;            // connected parts of the result
-  int boundary_loops = -1;  // of the result; −1 where a part cannot be oriented
+  int welded_groups = 0;                                          // the vertices the coincident ones became
+  int split_faces = 0;        // faces that used a vertex twice, split into several faces
+  int fin_faces = 0;          // faces separated from fin edges
+  int fin_copies = 0;         // vertex copies made for them
+  int pinch_copies = 0;       // vertex copies made for the extra fans of pinch vertices
+  int parts = 0;              // connected parts of the result
+  int boundary_loops = -1;    // of the result; −1 where a part cannot be oriented
   int orphaned_vertices = 0;  // vertices of faces the repair dropped, left in none (dropped)
-  int dropped_creases = 0;  // creases of the file on no edge of the result (welded onto one vertex, say)
+  int dropped_creases = 0;    // creases of the file on no edge of the result (welded onto one vertex, say)
 
   int count(Defect d) const { return counts[size_t(d)]; }
   bool changed() const;

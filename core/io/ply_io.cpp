@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <unordered_map>
 
 #include "core/mesh/error.h"
 #include "core/mesh/mesh_connectivity.h"
@@ -47,7 +48,6 @@ struct Property {
   ScalarType type;
   bool is_list = false;
   ScalarType count_type;
-  int header_line = 0;
 };
 
 struct Element {
@@ -234,6 +234,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
   std::optional<Format> format;
   int format_line = 0;
   std::vector<Element> elements;
+  std::unordered_map<std::string, int> read_once;       // the header lines of the elements read once
+  std::unordered_map<std::string, int> property_lines;  // the last element's properties' lines
   bool ended = false;
   while (!ended) {
     if (pos >= data.size()) fail("the header has no end_header line");
@@ -268,10 +270,10 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       e.name = words[1];
       e.header_line = line;
       // Elements may come in any order, but the vertices and the faces once each.
-      for (const Element& earlier : elements)
-        if (earlier.name == e.name &&
-            (e.name == "vertex" || e.name == "face" || e.name == "tristrips" || e.name == "edge"))
-          fail(at + "a second " + e.name + " element (the first is line " + std::to_string(earlier.header_line) + ")");
+      if (e.name == "vertex" || e.name == "face" || e.name == "tristrips" || e.name == "edge")
+        if (const auto [first, inserted] = read_once.try_emplace(e.name, line); !inserted)
+          fail(at + "a second " + e.name + " element (the first is line " + std::to_string(first->second) + ")");
+      property_lines.clear();
       unsigned long long count = 0;
       const auto [p, ec] = std::from_chars(words[2].data(), words[2].data() + words[2].size(), count);
       if (ec != std::errc() || p != words[2].data() + words[2].size())
@@ -284,19 +286,18 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       if (words.size() == 5 && words[1] == "list") {
         const auto ct = scalar_type(words[2]), it = scalar_type(words[3]);
         if (!ct || !it || ct->is_float) fail(at + "bad list property types");
-        prop = {std::string(words[4]), *it, true, *ct, line};
+        prop = {std::string(words[4]), *it, true, *ct};
       } else if (words.size() == 3) {
         const auto t = scalar_type(words[1]);
         if (!t) fail(at + "unknown property type " + quoted_token(words[1]));
-        prop = {std::string(words[2]), *t, false, {}, line};
+        prop = {std::string(words[2]), *t, false, {}};
       } else {
         fail(at + "malformed property line");
       }
       Element& owner = elements.back();
-      for (const Property& earlier : owner.properties)
-        if (earlier.name == prop.name)
-          fail(at + "property " + quoted_token(prop.name) + " of element " + quoted_token(owner.name) +
-               " appears twice (the first is line " + std::to_string(earlier.header_line) + ")");
+      if (const auto [first, inserted] = property_lines.try_emplace(prop.name, line); !inserted)
+        fail(at + "property " + quoted_token(prop.name) + " of element " + quoted_token(owner.name) +
+             " appears twice (the first is line " + std::to_string(first->second) + ")");
       owner.properties.push_back(prop);
     } else if (words[0] == "end_header") {
       ended = true;
@@ -319,6 +320,23 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
   bool has_covariances = false;
   std::vector<double> corners;        // per vertex, where the vertex element has a corner property
   std::vector<CreaseRecord> creases;  // the edge element's records, checked against the faces at the end
+  // More corners than a manifold mesh on the vertices has (one face repeated, say): the faces so far
+  // are refused as they stand (as parse_obj_soup does), not held to the end of the file.
+  const auto refuse_past_manifold = [&](const char* record, size_t index) {
+    if (!exceeds_manifold_corners(faces.verts.size(), vertex_count)) return;
+    if (means.size() < vertex_count)  // the faces come first
+      fail(body.where() + record + " " + std::to_string(index) +
+           " makes the mesh non-manifold (more face corners than " + std::to_string(vertex_count) +
+           " vertices can have)");
+    faces.offsets.shrink_to_fit();
+    faces.verts.shrink_to_fit();
+    PolygonSoup soup;
+    soup.positions = std::move(means);
+    soup.covariances = std::move(covariances);
+    soup.faces = std::move(faces);
+    mesh_of_soup(std::move(soup), shown_source);
+    fail("the mesh is not manifold");  // not reached: the check above throws
+  };
   for (const Element& e : elements) {
     // Each record needs at least one byte per value (binary) or two characters (ASCII).
     size_t min_record = 0;
@@ -397,6 +415,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
           }
         }
         faces.offsets.push_back(int(faces.verts.size()));
+        refuse_past_manifold("face", f);
         body.end_record();
       }
     } else if (e.name == "edge" && index_of("crease") >= 0) {
@@ -451,6 +470,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
                 if (a == b || b == c || a == c) continue;
                 faces.verts.insert(faces.verts.end(), {a, b, c});
                 faces.offsets.push_back(int(faces.verts.size()));
+                refuse_past_manifold("strip", r);
               }
               strip.clear();
               continue;

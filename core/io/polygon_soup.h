@@ -40,6 +40,14 @@ inline std::vector<uint64_t> soup_edge_keys(const PolygonTopology& faces) {
   return keys;
 }
 
+/// Whether `corners` face corners on `n_vertices` vertices are more than a manifold mesh can have
+/// (each directed edge in one face at most: n(n − 1)), as one face repeated makes them: a reader stops
+/// there rather than hold the rest.
+inline bool exceeds_manifold_corners(size_t corners, size_t n_vertices) {
+  const double n = double(n_vertices);
+  return double(corners) > n * (n - 1);
+}
+
 /// The CovarianceMesh of a soup, its arrays taken over (make_covariance_mesh: throws gps::Error naming
 /// `source` and the face or vertex where the topology is not a manifold polygon mesh).
 inline CovarianceMesh mesh_of_soup(PolygonSoup&& soup, const std::string& source) {

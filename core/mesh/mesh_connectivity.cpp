@@ -27,52 +27,52 @@ namespace {
 MeshConnectivity connectivity_of(const PolygonTopology& t, bool rows) {
   MeshConnectivity c;
   const size_t n_corners = t.verts.size();
-  // Half-edges keyed by (min, max) vertex pair, sorted to pair them into edges: a radix sort of two
-  // counting passes (by the larger vertex, then stably by the smaller) — linear whatever the valence.
-  struct HalfEdge {
-    int low, high;  // the smaller and the larger vertex
-    int face, corner;
+  // The corners keyed by their edge's (min, max) vertex pair, sorted to pair them into edges: a radix
+  // sort of corner indices in two counting passes (by the larger vertex, then stably by the smaller),
+  // linear whatever the valence, the keys read off the faces (12 bytes a corner held).
+  std::vector<int> corner_face(n_corners);
+  for (int f = 0; f < t.n_faces(); ++f)
+    std::fill(corner_face.begin() + t.offsets[size_t(f)], corner_face.begin() + t.offsets[size_t(f) + 1], f);
+  const auto ends = [&](int k) {
+    const int f = corner_face[size_t(k)];
+    const int a = t.verts[size_t(k)],
+              b = t.verts[size_t(k + 1 == t.offsets[size_t(f) + 1] ? t.offsets[size_t(f)] : k + 1)];
+    return std::pair<int, int>(std::min(a, b), std::max(a, b));
   };
-  std::vector<HalfEdge> by_high(n_corners), halves(n_corners);
-  const auto counting_sort = [&](const std::vector<HalfEdge>& in, std::vector<HalfEdge>& out, auto digit) {
+  std::vector<int> by_high(n_corners), order(n_corners);
+  const auto counting_sort = [&](const auto& in, std::vector<int>& out, auto digit) {
     std::vector<size_t> next(size_t(t.n_vertices) + 1, 0);
-    for (const HalfEdge& h : in) ++next[size_t(digit(h)) + 1];
+    for (size_t i = 0; i < n_corners; ++i) ++next[size_t(digit(in(i))) + 1];
     for (int v = 0; v < t.n_vertices; ++v) next[size_t(v) + 1] += next[size_t(v)];
-    for (const HalfEdge& h : in) out[next[size_t(digit(h))]++] = h;
+    for (size_t i = 0; i < n_corners; ++i) out[next[size_t(digit(in(i)))]++] = in(i);
   };
-  for (int f = 0; f < t.n_faces(); ++f) {
-    const int begin = t.offsets[size_t(f)], n = t.face_size(f);
-    for (int k = 0; k < n; ++k) {
-      const int a = t.verts[size_t(begin + k)], b = t.verts[size_t(begin + (k + 1 == n ? 0 : k + 1))];
-      halves[size_t(begin + k)] = {std::min(a, b), std::max(a, b), f, begin + k};
-    }
-  }
-  counting_sort(halves, by_high, [](const HalfEdge& h) { return h.high; });
-  counting_sort(by_high, halves, [](const HalfEdge& h) { return h.low; });
+  counting_sort([](size_t i) { return int(i); }, by_high, [&](int k) { return ends(k).second; });
+  counting_sort([&](size_t i) { return by_high[i]; }, order, [&](int k) { return ends(k).first; });
   by_high = {};
   c.face_edges.assign(n_corners, -1);
-  const auto same_edge = [](const HalfEdge& x, const HalfEdge& y) { return x.low == y.low && x.high == y.high; };
+  const auto same_edge = [&](size_t i, size_t j) { return ends(order[i]) == ends(order[j]); };
   size_t n_edges = 0;  // counted first: the edge arrays at their exact sizes
-  for (size_t i = 0; i < halves.size(); ++n_edges)
-    i += i + 1 < halves.size() && same_edge(halves[i + 1], halves[i]) ? 2 : 1;
+  for (size_t i = 0; i < n_corners; ++n_edges) i += i + 1 < n_corners && same_edge(i + 1, i) ? 2 : 1;
   c.edge_verts.reserve(2 * n_edges);
   c.edge_faces.reserve(2 * n_edges);
-  for (size_t i = 0; i < halves.size();) {
-    const int e = c.n_edges();
-    c.edge_verts.push_back(halves[i].low);
-    c.edge_verts.push_back(halves[i].high);
-    c.edge_faces.push_back(halves[i].face);
-    c.face_edges[size_t(halves[i].corner)] = e;
-    if (i + 1 < halves.size() && same_edge(halves[i + 1], halves[i])) {
-      c.edge_faces.push_back(halves[i + 1].face);
-      c.face_edges[size_t(halves[i + 1].corner)] = e;
+  for (size_t i = 0; i < n_corners;) {
+    const int e = c.n_edges(), k = order[i];
+    const auto [low, high] = ends(k);
+    c.edge_verts.push_back(low);
+    c.edge_verts.push_back(high);
+    c.edge_faces.push_back(corner_face[size_t(k)]);
+    c.face_edges[size_t(k)] = e;
+    if (i + 1 < n_corners && same_edge(i + 1, i)) {
+      c.edge_faces.push_back(corner_face[size_t(order[i + 1])]);
+      c.face_edges[size_t(order[i + 1])] = e;
       i += 2;
     } else {
       c.edge_faces.push_back(-1);
       i += 1;
     }
   }
-  halves = {};
+  order = {};
+  corner_face = {};
   // Compressed rows per vertex, each in the order its entries come (edges in edge order, faces in
   // face order): a count, a prefix sum, a fill.
   const auto prefix = [&](std::vector<int>& offsets) {
@@ -106,35 +106,62 @@ MeshConnectivity connectivity_of(const PolygonTopology& t, bool rows) {
 
 MeshConnectivity connectivity_of(const PolygonTopology& t) { return connectivity_of(t, true); }
 
-SurfaceCounts surface_counts(const PolygonTopology& t, const MeshConnectivity& c) {
+namespace {
+
+// The surface counts of a manifold mesh given by its edges: `edge(e, a, b)` sets edge e's ends and
+// says whether it is a boundary edge.
+template <class Edge>
+SurfaceCounts surface_counts_of_edges(int n_vertices, int n_edges, int n_faces, const Edge& edge) {
   // Two forests over the vertices: one joined along every edge (the parts), one along the boundary
   // edges only (on a manifold each boundary vertex has two, so its trees are the loops).
-  std::vector<int> part(size_t(t.n_vertices)), loop(size_t(t.n_vertices));
-  for (int v = 0; v < t.n_vertices; ++v) part[size_t(v)] = loop[size_t(v)] = v;
+  std::vector<int> part(static_cast<size_t>(n_vertices)), loop(static_cast<size_t>(n_vertices));
+  for (int v = 0; v < n_vertices; ++v) part[size_t(v)] = loop[size_t(v)] = v;
   const auto root = [](std::vector<int>& up, int x) {
     while (up[size_t(x)] != x) x = up[size_t(x)] = up[size_t(up[size_t(x)])];
     return x;
   };
   const auto unite = [&](std::vector<int>& up, int a, int b) { up[size_t(root(up, a))] = root(up, b); };
-  std::vector<char> on_boundary(size_t(t.n_vertices), 0);
-  for (int e = 0; e < c.n_edges(); ++e) {
-    const int a = c.edge_verts[2 * size_t(e)], b = c.edge_verts[2 * size_t(e) + 1];
+  std::vector<char> used(static_cast<size_t>(n_vertices), 0), on_boundary(static_cast<size_t>(n_vertices), 0);
+  for (int e = 0; e < n_edges; ++e) {
+    int a = 0, b = 0;
+    const bool boundary = edge(e, a, b);
     unite(part, a, b);
-    if (!c.is_boundary_edge(e)) continue;
+    used[size_t(a)] = used[size_t(b)] = 1;
+    if (!boundary) continue;
     unite(loop, a, b);
     on_boundary[size_t(a)] = on_boundary[size_t(b)] = 1;
   }
   SurfaceCounts out;
-  long long used = 0;
-  for (int v = 0; v < t.n_vertices; ++v) {
-    if (c.valence(v) == 0) continue;
-    ++used;
+  long long n_used = 0;
+  for (int v = 0; v < n_vertices; ++v) {
+    if (!used[size_t(v)]) continue;
+    ++n_used;
     out.parts += root(part, v) == v;
     out.boundary_loops += on_boundary[size_t(v)] && root(loop, v) == v;
   }
-  const long long euler = used - c.n_edges() + t.n_faces();
+  const long long euler = n_used - n_edges + n_faces;
   out.genus = int((2 * out.parts - euler - out.boundary_loops) / 2);
   return out;
+}
+
+}  // namespace
+
+SurfaceCounts surface_counts(const PolygonTopology& t, const MeshConnectivity& c) {
+  return surface_counts_of_edges(t.n_vertices, c.n_edges(), t.n_faces(), [&](int e, int& a, int& b) {
+    a = c.edge_verts[2 * size_t(e)];
+    b = c.edge_verts[2 * size_t(e) + 1];
+    return c.is_boundary_edge(e);
+  });
+}
+
+SurfaceCounts surface_counts(const PolyMesh& mesh) {
+  return surface_counts_of_edges(int(mesh.n_vertices()), int(mesh.n_edges()), int(mesh.n_faces()),
+                                 [&](int e, int& a, int& b) {
+                                   const PolyMesh::EdgeHandle eh(e);
+                                   a = mesh.from_vertex_handle(mesh.halfedge_handle(eh, 0)).idx();
+                                   b = mesh.to_vertex_handle(mesh.halfedge_handle(eh, 0)).idx();
+                                   return mesh.is_boundary(eh);
+                                 });
 }
 
 VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {

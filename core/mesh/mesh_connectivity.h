@@ -58,6 +58,8 @@ struct SurfaceCounts {
   int parts = 0, boundary_loops = 0, genus = 0;
 };
 SurfaceCounts surface_counts(const PolygonTopology& t, const MeshConnectivity& c);
+/// The same of an OpenMesh mesh, read off its half-edges (no connectivity built).
+SurfaceCounts surface_counts(const PolyMesh& mesh);
 
 /// How a vertex behaves under the boundary rules: interior, on a boundary curve, or a corner (one face).
 enum class VertexRole { interior, boundary, corner, isolated };

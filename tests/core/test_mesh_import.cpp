@@ -77,6 +77,15 @@ TEST(MeshImport, OffWithCommentsAndColours) {
   EXPECT_NE(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n", "y.off"); }).find("truncated"), std::string::npos);
 }
 
+// An OFF face repeated is refused where the corners pass what a manifold mesh on the vertices has
+// (3 vertices: 6), before the rest is held: a later face out of range is not reached.
+TEST(MeshImport, OffFaceRepeatedIsRefusedWhereTheCornersPassAManifoldsCount) {
+  const std::string message = error_of(
+      [] { parse_off("OFF\n3 5 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n3 0 1 2\n3 0 1 2\n3 0 1 7\n", "r.off"); });
+  EXPECT_NE(message.find("r.off: face "), std::string::npos) << message;
+  EXPECT_NE(message.find("non-manifold"), std::string::npos) << message;
+}
+
 // COFF/NOFF carry colours or normals after each vertex position: they are skipped.
 TEST(MeshImport, OffVariantsWithPerVertexValues) {
   const auto m = parse_off(

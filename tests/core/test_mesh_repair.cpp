@@ -146,6 +146,41 @@ TEST(MeshRepair, WeldFindsEveryPairWithinTheToleranceWhereverItLies) {
   EXPECT_EQ(r.welded_groups, n);
 }
 
+// Crowds of vertices a few tolerances across (some at one position, the others scattered so that
+// chains of close pairs join some crowds and not others): the weld's groups are those of every pair
+// measured.
+TEST(MeshRepair, WeldOfCrowdedVerticesGroupsAsEveryPairMeasured) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 1, 1)};
+  const double tolerance = 1e-6 * std::sqrt(3.0);
+  for (int crowd = 0; crowd < 12; ++crowd) {
+    const Vec3 at = Vec3(0.5, 0.5, 0.5) + 0.4 * Vec3(unit(random), unit(random), unit(random));
+    const double spread = (crowd % 4 == 3 ? 40 : crowd % 4 + 1) * tolerance;
+    for (int i = 0; i < 150; ++i)
+      p.push_back(i % 5 == 0 ? at : at + spread * Vec3(unit(random), unit(random), unit(random)));
+  }
+  std::vector<int> root(p.size());
+  for (size_t v = 0; v < p.size(); ++v) root[v] = int(v);
+  const auto find = [&](int v) {
+    while (root[size_t(v)] != v) v = root[size_t(v)];
+    return v;
+  };
+  for (size_t a = 0; a < p.size(); ++a)
+    for (size_t b = a + 1; b < p.size(); ++b)
+      if ((p[a] - p[b]).norm() <= tolerance)
+        root[size_t(std::max(find(int(a)), find(int(b))))] = std::min(find(int(a)), find(int(b)));
+  std::map<int, int> group_size;
+  for (size_t v = 0; v < p.size(); ++v) ++group_size[find(int(v))];
+  int welded = 0, groups = 0;
+  for (const auto& [group, size] : group_size)
+    if (size > 1) welded += size, ++groups;
+  ASSERT_GE(groups, 12);
+  const RepairReport r = diagnose_polygon_soup(soup_of(p, {{0, 1, 2}}));
+  EXPECT_EQ(r.count(Defect::coincident_vertices), welded);
+  EXPECT_EQ(r.welded_groups, groups);
+}
+
 TEST(MeshRepair, PinchVertexOfTwoTetrahedraIsSplit) {
   std::vector<Vec3> p;
   std::vector<std::vector<int>> faces;
@@ -200,7 +235,7 @@ TEST(MeshRepair, FinFaceGetsItsOwnEdge) {
   EXPECT_EQ(r.fin_copies, 2);
   EXPECT_EQ(r.count(Defect::pinch_vertices), 0);
   EXPECT_EQ(r.problems({}, true), std::vector<std::string>{"non-manifold edges (fins: more than two faces): 1 (the "
-                                                            "edge of vertex 0 and vertex 1 with 3 faces)"});
+                                                           "edge of vertex 0 and vertex 1 with 3 faces)"});
   EXPECT_EQ(r.lines(),
             std::vector<std::string>{"separated 1 face from 1 edge with more than two faces (2 vertex copies)"});
   const auto f = faces_of(s);
@@ -224,9 +259,10 @@ TEST(MeshRepair, ZeroAreaDuplicateAndDegenerateFacesAreDropped) {
   EXPECT_EQ(r.count(Defect::duplicate_faces), 1);
   EXPECT_EQ(r.count(Defect::zero_area_faces), 1);
   EXPECT_EQ(r.problems({}, false), std::vector<std::string>{"zero-area faces: 1 (face 3)"});
-  EXPECT_EQ(r.refusal({}), "1 face with a repeated corner, face 4; --repair removes the repeat; "
-                           "1 degenerate face (fewer than 3 distinct corners), face 5; --repair drops it; "
-                           "1 duplicate face (on the vertices of an earlier one), face 2 as face 0; --repair drops it");
+  EXPECT_EQ(r.refusal({}),
+            "1 face with a repeated corner, face 4; --repair removes the repeat; "
+            "1 degenerate face (fewer than 3 distinct corners), face 5; --repair drops it; "
+            "1 duplicate face (on the vertices of an earlier one), face 2 as face 0; --repair drops it");
   EXPECT_EQ(r.count(Defect::repeated_corners), 1);
   EXPECT_EQ(r.count(Defect::degenerate_faces), 1);
   EXPECT_EQ(r.count(Defect::isolated_vertices), 0) << "the file's faces use every vertex";

@@ -87,6 +87,25 @@ TEST(PlyStructure, DuplicatesInTheHeaderAreRefused) {
             "faces.ply: line 15: a second face element (the first is line 13)");
 }
 
+// More face corners than a manifold mesh on the vertices has (3 vertices: 6) are refused where they
+// pass that count, before the rest of the file is held (a later face out of range is not reached),
+// as faces, as a triangle strip, and with the faces before the vertices.
+TEST(PlyStructure, AFaceRepeatedIsRefusedWhereTheCornersPassAManifoldsCount) {
+  const std::string faces = "element face 5\nproperty list uchar int vertex_indices\n";
+  const std::string repeated = kFace + kFace + kFace + kFace + "3 0 1 7\n";
+  const std::string message =
+      error_of([&] { parse_ply(ascii_ply(kVertexElement + faces, kVertices + repeated), "r.ply"); });
+  EXPECT_NE(message.find("r.ply: face "), std::string::npos) << message;
+  EXPECT_NE(message.find("non-manifold"), std::string::npos) << message;
+  EXPECT_EQ(error_of([&] { parse_ply(ascii_ply(faces + kVertexElement, repeated + kVertices), "first.ply"); }),
+            "first.ply: line 18: face 2 makes the mesh non-manifold (more face corners than 3 vertices can have)");
+  const std::string strip = "element tristrips 2\nproperty list int int vertex_indices\n";
+  EXPECT_NE(error_of([&] {
+              parse_ply(ascii_ply(kVertexElement + strip, kVertices + "8 0 1 2 0 1 2 0 1\n3 0 1 7\n"), "s.ply");
+            }).find("non-manifold"),
+            std::string::npos);
+}
+
 // Gaussians without faces have no surface to draw: refused when read, as a plain mesh without faces is.
 TEST(PlyStructure, ACovarianceMeshWithoutFacesIsRefused) {
   test::TempDir dir;
