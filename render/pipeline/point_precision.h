@@ -13,8 +13,9 @@ namespace gps {
 
 enum class PointPrecision { single_float, double_float };
 
-/// Condition numbers of Σ past which a mesh's points are kept in double.
-inline constexpr double kDoublePointsCondition = 1e6;
+/// Condition numbers of Σ past which a mesh's points are kept in double: float's sums of Gaussians of
+/// one orientation, which keep that condition, hold their thin directions to about 1 % up to it.
+inline constexpr double kDoublePointsCondition = 2e5;
 
 /// Whether a Gaussian of covariance `sigma` needs double points (not positive definite included).
 bool needs_double_points(const Mat3& sigma);

@@ -5,10 +5,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <filesystem>
 
 #include "core/io/mesh_io.h"
+#include "core/mesh/samples.h"
 #include "render/image/image_io.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
@@ -56,7 +59,8 @@ TEST(RenderCli, TheSilhouetteFillsTheImage) {
       for (int y = 0; y < png.height; ++y)
         for (int x = 0; x < png.width; ++x)
           if (png.at(x, y, 0) < 0.97f || png.at(x, y, 1) < 0.97f || png.at(x, y, 2) < 0.97f)
-            lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x + 1), lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y + 1);
+            lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x + 1), lo_y = std::min(lo_y, y),
+            hi_y = std::max(hi_y, y + 1);
       const std::string what = std::string(sample) + options;
       ASSERT_GE(hi_x, 0) << what;
       const double w = double(hi_x - lo_x) / png.width, h = double(hi_y - lo_y) / png.height;
@@ -136,6 +140,106 @@ TEST(RenderCli, NeedlesOfCondition1e12RenderAsTheExactEvaluatorSays) {
       run_command(gpsurf("diff " + dir.file("gp.exr") + " " + dir.file("ep.exr") + " -o " + dir.file("dp.png")));
   ASSERT_EQ(p.exit_code, 0) << p.output;
   EXPECT_LT(figure_after(p.output, "max "), 1e-4) << p.output;
+}
+
+// Pixels of two pictures that differ in some channel by more than 0.1.
+int differing_pixels(const Image& a, const Image& b) {
+  int n = 0;
+  for (int j = 0; j < a.height; ++j)
+    for (int i = 0; i < a.width; ++i)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(a.at(i, j, c) - b.at(i, j, c)) > 0.1f) {
+          ++n;
+          break;
+        }
+  return n;
+}
+
+int drawn_pixels(const Image& png) {
+  int n = 0;
+  for (int j = 0; j < png.height; ++j)
+    for (int i = 0; i < png.width; ++i) n += png.at(i, j, 0) < 0.97f || png.at(i, j, 2) < 0.97f;
+  return n;
+}
+
+// Needles and discs of condition 1e5 to 1e7 and one orientation, turned off the coordinate axes, make
+// the torus sample's own surface (tests/support/test_meshes.h): from an explicit camera (the GPU, the
+// exact evaluator, the reference, the mesh lines), at a uniform level and auto-framed, they render the
+// torus sample's picture. The discs of 7e5 rendered blank from the camera (framed on the GPU's
+// spikes), spikes at uniform levels, and auto-framed were refused as covering no pixel, with the
+// surface right on the CPU.
+TEST(RenderCli, ThinGaussiansOfOneOrientationRenderAsTheTorusSample) {
+  test::TempDir dir;
+  write_mesh(dir.file("torus.ply"), make_sample("torus"));
+  const std::vector<std::string> options = {" --camera 30,20,12",
+                                            " --camera 30,20,12 --exact",
+                                            " --camera 30,20,12 --reference 3",
+                                            " --camera 30,20,12 --mesh",
+                                            " --level 2",
+                                            ""};
+  std::vector<Image> torus;
+  for (const std::string& o : options) {
+    const auto r =
+        run_command(gpsurf("render " + dir.file("torus.ply") + " -o " + dir.file("t.png") + " --size 120x90" + o));
+    ASSERT_EQ(r.exit_code, 0) << o << ": " << r.output;
+    torus.push_back(read_image(dir.file("t.png")));
+    ASSERT_GT(drawn_pixels(torus.back()), 1500) << o;
+  }
+  for (const bool needle : {true, false})
+    for (const double condition : {1e5, 7e5, 1e7}) {
+      const std::string what = std::string(needle ? "needles" : "discs") + " of condition " + std::to_string(condition);
+      write_mesh(dir.file("thin.ply"), test::one_orientation_torus(condition, needle));
+      for (size_t k = 0; k < options.size(); ++k) {
+        const auto r = run_command(
+            gpsurf("render " + dir.file("thin.ply") + " -o " + dir.file("n.png") + " --size 120x90" + options[k]));
+        EXPECT_EQ(r.exit_code, 0) << what << options[k] << ": " << r.output;
+        if (r.exit_code == 0)
+          EXPECT_LE(differing_pixels(torus[k], read_image(dir.file("n.png"))), 20) << what << options[k];
+      }
+    }
+}
+
+// Framing is computed in the renderer's normalised frame: the torus moved 1e7 away, or scaled by 1e-4
+// and moved, is framed as at the origin. Moved, it was framed smaller (its float world points rounded
+// to whole units).
+TEST(RenderCli, FramingIsTheSameWhereverTheMeshLiesAndAtAnyScale) {
+  test::TempDir dir;
+  const CovarianceMesh torus = make_sample("torus");
+  const auto mapped = [&](double scale, const Vec3& offset) {
+    CovarianceMesh out = torus;
+    for (size_t i = 0; i < torus.n_vertices(); ++i) {
+      out.set_mean(i, scale * torus.mean(i) + offset);
+      out.set_covariance(i, scale * scale * torus.covariance(i));
+    }
+    return out;
+  };
+  const std::vector<std::pair<std::string, CovarianceMesh>> cases = {
+      {"origin", torus}, {"moved", mapped(1.0, Vec3(1e7, -1e7, 1e7))}, {"small", mapped(1e-4, Vec3(3e3, 0.0, -2e3))}};
+  std::vector<Image> images;
+  for (const auto& [name, mesh] : cases) {
+    write_mesh(dir.file(name + ".ply"), mesh);
+    const auto r =
+        run_command(gpsurf("render " + dir.file(name + ".ply") + " -o " + dir.file(name + ".png") + " --size 160x120"));
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.output;
+    images.push_back(read_image(dir.file(name + ".png")));
+  }
+  EXPECT_GT(drawn_pixels(images[0]), 4000);
+  EXPECT_LE(differing_pixels(images[0], images[1]), 10) << "moved";
+  EXPECT_LE(differing_pixels(images[0], images[2]), 10) << "small";
+}
+
+// The refusal of an auto-framed image that shows nothing still fires for a surface that covers no
+// pixel: a quad whose corners lie on one line has a segment for its limit surface. Nothing is written.
+TEST(RenderCli, ASurfaceThatCoversNoPixelIsRefused) {
+  test::TempDir dir;
+  const std::vector<Vec3> corners = {{-1.0, 0.0, 0.0}, {-0.3, 0.0, 0.0}, {0.4, 0.0, 0.0}, {1.0, 0.0, 0.0}};
+  write_mesh(dir.file("segment.ply"),
+             make_covariance_mesh(corners, std::vector<Mat3>(4, 0.1 * Mat3::Identity()), {{0, 1, 2, 3}}, "segment"));
+  const auto r =
+      run_command(gpsurf("render " + dir.file("segment.ply") + " -o " + dir.file("s.png") + " --size 64x64"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("covers no pixel"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("s.png")));
 }
 
 // --exact draws the patches' own triangles (at the default adaptive levels here) with the CPU's

@@ -134,7 +134,25 @@ inline CovarianceMesh thin_torus(double ratio, bool needle) {
     const double s = std::cbrt(std::sqrt(mesh.covariance(i).determinant()));
     const Mat3 along = n * n.transpose(), across = Mat3::Identity() - along;
     const double thin = s / ratio;
-    mesh.set_covariance(i, needle ? Mat3(thin * thin * across + s * s * along) : Mat3(s * s * across + thin * thin * along));
+    mesh.set_covariance(
+        i, needle ? Mat3(thin * thin * across + s * s * along) : Mat3(s * s * across + thin * thin * along));
+  }
+  return mesh;
+}
+
+/// The torus sample with every Gaussian of condition number `condition` and one orientation, turned
+/// off the coordinate axes: a needle (long along one axis, σ along it the vertex's isotropic σ) or a
+/// disc (thin along it, σ across it the isotropic σ). Σ = σ² M with one M, so the products weigh the
+/// means as σ² I does and the limit surface is the torus sample's own (bounds ±2.64 across its axis);
+/// their sums keep the condition number, where Gaussians of varying orientation average it away.
+inline CovarianceMesh one_orientation_torus(double condition, bool needle) {
+  CovarianceMesh mesh = make_sample("torus");
+  const Vec3 axis = Eigen::AngleAxisd(0.7, Vec3(0.3, 1.0, 0.5).normalized()) * Vec3::UnitX();
+  const Mat3 along = axis * axis.transpose(), across = Mat3::Identity() - along;
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+    const double s2 = std::cbrt(mesh.covariance(i).determinant());
+    mesh.set_covariance(
+        i, needle ? Mat3(s2 * along + (s2 / condition) * across) : Mat3((s2 / condition) * along + s2 * across));
   }
   return mesh;
 }
