@@ -86,7 +86,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   o.mode = a.mode == "normals" ? ShadingMode::normals : a.mode == "flat" ? ShadingMode::flat : ShadingMode::matcap;
   o.mesh_lines = a.mesh_lines;
   o.wireframe = a.wireframe;
-  o.surface_cache = !a.no_cache;
+  o.surface_cache = false;  // one image: captured triangles would never be drawn again
   o.ellipsoids = a.ellipsoids;
   o.sigma_scale = a.sigma;
   o.background = {bg[0], bg[1], bg[2]};
@@ -300,7 +300,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--mesh", a->mesh_lines, "draw the base mesh as thin grey lines");
   cmd->add_flag("--wireframe", a->wireframe, "draw the tessellation wireframe over the shading");
   cmd->add_flag("--no-cache", a->no_cache,
-                "draw through the tessellation pipeline, not the surface cache's stored triangles (same image)");
+                "no effect, kept for old scripts: a render draws its one image through the tessellation pipeline, "
+                "without the surface cache");
   cmd->add_option("--context", a->context, "GL context: auto (EGL on a GPU device, else OSMesa), osmesa, egl")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   cmd->add_flag("--ellipsoids", a->ellipsoids, "draw the covariance ellipsoids");
