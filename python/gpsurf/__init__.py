@@ -71,6 +71,9 @@ def _with_signature(function):
     return call
 
 
+_WRAPPED_SPECIAL = ("__init__", "__copy__", "__deepcopy__")
+
+
 def _give_signatures():
     names = globals()
     for name, value in list(names.items()):
@@ -79,7 +82,7 @@ def _give_signatures():
         if isinstance(value, type):
             if not issubclass(value, BaseException):
                 for member, method in list(vars(value).items()):
-                    if callable(method) and (not member.startswith("_") or member == "__init__"):
+                    if callable(method) and (not member.startswith("_") or member in _WRAPPED_SPECIAL):
                         setattr(value, member, _with_signature(method))
         else:
             names[name] = _with_signature(value)

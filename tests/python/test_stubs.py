@@ -1,6 +1,6 @@
 """The type stubs (gpsurf/__init__.pyi, with py.typed) against the module: the same names, and for
-every function and method the parameters and defaults that pybind11's own signatures give; mypy
-accepts a script written against them."""
+every function and method the parameters and defaults that pybind11's own signatures give (as
+inspect.signature reads them); mypy accepts a script written against them."""
 import ast
 import importlib.util
 import inspect
@@ -18,39 +18,10 @@ STUB = os.path.join(PACKAGE_DIR, "__init__.pyi")
 TYPE_ALIASES = {"PathLike", "FloatArray", "IntArray", "Progress"}
 
 
-def split_top_level(text):
-    """`text` split at commas outside brackets and quotes."""
-    parts, depth, quote, current = [], 0, None, ""
-    for c in text:
-        if quote:
-            quote = None if c == quote else quote
-        elif c in "'\"":
-            quote = c
-        elif c in "([{":
-            depth += 1
-        elif c in ")]}":
-            depth -= 1
-        elif c == "," and depth == 0:
-            parts.append(current.strip())
-            current = ""
-            continue
-        current += c
-    if current.strip():
-        parts.append(current.strip())
-    return parts
-
-
 def runtime_parameters(function):
-    """[(name, default or None)] from the first line of pybind11's docstring, `self` left out."""
-    line = function.__doc__.splitlines()[0]
-    inside = line[line.index("(") + 1:line.rindex(") ->")]
-    parameters = []
-    for part in split_top_level(inside):
-        name, _, rest = part.partition(":")
-        default = rest.partition(" = ")[2] or None
-        if name.strip() != "self":
-            parameters.append((name.strip(), default))
-    return parameters
+    """[(name, default or inspect.Parameter.empty)] as inspect.signature gives them (the package
+    reads them from pybind11's own signature of the compiled function), `self` left out."""
+    return [(p.name, p.default) for p in inspect.signature(function).parameters.values() if p.name != "self"]
 
 
 def stub_parameters(node):
@@ -61,11 +32,11 @@ def stub_parameters(node):
 
 
 def same_default(runtime, stub):
-    if (runtime is None) != (stub is None):
+    if (runtime is inspect.Parameter.empty) != (stub is None):
         return False
     if stub is None or (isinstance(stub, ast.Constant) and stub.value is Ellipsis):
         return True
-    return ast.literal_eval(runtime) == ast.literal_eval(stub)
+    return ast.literal_eval(stub) == runtime
 
 
 def stub_tree():
