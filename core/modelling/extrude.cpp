@@ -42,6 +42,21 @@ struct Partition {
   void join(int i, int j) { parent[size_t(root(i))] = root(j); }
 };
 
+bool all_triangles(const MeshArrays& a) {
+  return std::all_of(a.faces.begin(), a.faces.end(), [](const auto& face) { return face.size() == 3; });
+}
+
+/// Splits the quads from `first` on into two triangles each, along the diagonal from their first
+/// corner, so that a mesh of triangles stays one (and Loop's).
+void split_new_quads(MeshArrays& a, int first) {
+  for (size_t f = size_t(first); f < a.faces.size(); ++f) {
+    std::vector<int>& quad = a.faces[f];
+    if (quad.size() != 4) continue;
+    a.faces.push_back({quad[0], quad[2], quad[3]});
+    a.faces[f].pop_back();  // quad[0], quad[1], quad[2]
+  }
+}
+
 /// Moves the region by `shift`: inner vertices moved, boundary vertices copied (same covariance).
 std::vector<int> move_region(MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
   std::vector<Gaussian> copies;
@@ -57,8 +72,10 @@ std::vector<int> move_region(MeshArrays& a, const FaceRegion& r, const Vec3& shi
 Modelled extruded_faces(MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
   if (r.has_closed_part) throw Error(kClosedPart);
   const int n_vertices = a.n_vertices(), n_faces = a.n_faces();
+  const bool triangles = all_triangles(a);
   Modelled out;
   out.selection = move_region(a, r, shift);
+  if (triangles) split_new_quads(a, n_faces);
   out.mesh = build_mesh(a);
   out.summary = "extruded " + count_of(r.faces.size(), "face", "faces") + ": " +
                 count_of(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
@@ -69,12 +86,14 @@ Modelled extruded_faces(MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
 /// Extrudes boundary edges given as directed edges of their faces (unique).
 Modelled extruded_edges(MeshArrays& a, const std::vector<std::pair<int, int>>& directed, const Vec3& offset) {
   const int n_faces = a.n_faces();
+  const bool triangles = all_triangles(a);
   std::set<int> ends;
   for (const auto& [x, y] : directed) ends.insert(x), ends.insert(y);
   std::map<int, int> copy;
   for (int v : ends) copy[v] = a.add_vertex({a.means[size_t(v)] + offset, a.covariances[size_t(v)]});
   // The face has x → y, so the quad runs y → x and its outer edge x′ → y′.
   for (const auto& [x, y] : directed) a.faces.push_back({y, x, copy[x], copy[y]});
+  if (triangles) split_new_quads(a, n_faces);
   Modelled out;
   for (const auto& [v, c] : copy) out.selection.push_back(c);
   out.mesh = build_mesh(a);
@@ -173,8 +192,7 @@ std::vector<int> detach_region(MeshArrays& a, const FaceRegion& r, const std::ve
   for (int f : r.faces) {
     const auto& face = a.faces[size_t(f)];
     for (size_t k = 0; k < face.size(); ++k)
-      if (a.sharpness.crease(face[k], face[(k + 1) % face.size()]) > 0.0)
-        region_edges.push_back({f, int(k)});
+      if (a.sharpness.crease(face[k], face[(k + 1) % face.size()]) > 0.0) region_edges.push_back({f, int(k)});
   }
   std::vector<double> region_creases;
   for (const auto& [f, k] : region_edges) {

@@ -3,7 +3,9 @@
 // to where it was by a band of quads oriented like their neighbours. Every operation follows the
 // modelling contract (core/modelling/mesh_arrays.h): the input is never changed, a refusal throws a
 // one-line gps::Error naming the element, existing vertices and faces keep their indices, new ones are
-// appended, and a vertex copied off the mesh keeps its covariance with the moved mean.
+// appended, and a vertex copied off the mesh keeps its covariance with the moved mean. On a mesh of
+// triangles only, each quad of the band is split into two triangles (the diagonal from its first
+// corner), so that the mesh stays a triangle mesh, subdivided by Loop as before.
 #include <array>
 #include <vector>
 

@@ -75,6 +75,32 @@ TEST(ExtrudeFaces, OneCubeFaceAddsFourVerticesAndFourQuads) {
   expect_same(arrays_of(cube), before);
 }
 
+// On a mesh of triangles the band is triangles too, so the mesh stays Loop's: one of the cone's
+// triangles adds 3 vertices and 6 triangles; its open bottom's 8 edges add 8 vertices and 16.
+TEST(ExtrudeFaces, ATriangleMeshStaysATriangleMesh) {
+  const CovarianceMesh cone = make_sample("cone");
+  const Shape s0 = shape_of(cone);
+  const Modelled face = extrude_faces(cone, {0}, 0.2);
+  const Shape s = shape_of(face.mesh);
+  EXPECT_EQ(s.vertices, s0.vertices + 3);
+  EXPECT_EQ(s.faces, s0.faces + 6);
+  EXPECT_EQ(s.euler(), s0.euler());
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(face.summary, "extruded 1 face: 3 vertices, 6 faces added");
+  for (const auto& f : arrays_of(face.mesh).faces) EXPECT_EQ(f.size(), 3u);
+
+  std::vector<int> rim;
+  for (size_t v = 0; v < cone.n_vertices(); ++v)
+    if (cone.mesh.is_boundary(cone.mesh.vertex_handle(int(v)))) rim.push_back(int(v));
+  ASSERT_EQ(rim.size(), 8u);
+  const Modelled edges = extrude_vertices(cone, rim, Vec3(0, 0, -0.5));
+  EXPECT_EQ(shape_of(edges.mesh).faces, s0.faces + 16);
+  EXPECT_TRUE(shape_of(edges.mesh).oriented);
+  for (const auto& f : arrays_of(edges.mesh).faces) EXPECT_EQ(f.size(), 3u);
+  // A mixed mesh keeps its quads: the cube's band is quads, as above.
+  for (const auto& f : arrays_of(extrude_faces(make_sample("cube"), {1}, 0.5).mesh).faces) EXPECT_EQ(f.size(), 4u);
+}
+
 TEST(ExtrudeFaces, TwoAdjacentCubeFacesMoveAlongTheirAverageNormal) {
   const CovarianceMesh cube = make_sample("cube");
   const MeshArrays before = arrays_of(cube);
