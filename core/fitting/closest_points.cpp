@@ -12,6 +12,9 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include "core/fitting/distance_tree_size.h"
+#include "core/support/memory_budget.h"
+
 #include "core/evaluation/patch_eval.h"
 #include "core/mesh/error.h"
 
@@ -82,6 +85,11 @@ std::vector<SurfacePoint> closest_limit_points(const PatchPlans& plans, const st
   const PatchGrid grid = patch_grid(plans.shape, level);
   const int n_patches = plans.n_patches();
   const size_t per_patch = grid.uv.size();
+  const double n_samples = double(per_patch) * n_patches, n_triangles = double(grid.triangles.size()) * n_patches;
+  check_output_size({n_samples, n_triangles, sizeof(Vec3) * n_samples + distance_tree_bytes(n_triangles)},
+                    "finding the closest points on " + std::to_string(n_patches) + " patches tessellated at level " +
+                        std::to_string(level),
+                    "triangles", "fit a coarser mesh");
   std::vector<Vec3> positions(per_patch * size_t(n_patches));
   bool outside_cone = false;
 #pragma omp parallel for schedule(dynamic, 16)

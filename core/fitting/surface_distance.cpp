@@ -10,6 +10,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include "core/evaluation/tessellation_size.h"
+#include "core/fitting/distance_tree_size.h"
 #include "core/evaluation/tessellator.h"
 #include "core/mesh/error.h"
 
@@ -20,6 +21,13 @@ LimitTriangles limit_surface_triangles(const CovarianceMesh& mesh, int level, co
   const PlannedSurface surface(mesh, options);
   const PatchPlans& plans = surface.tables().plans;
   while (level > 1 && tessellation_size(plans, level).faces > max_triangles) --level;
+  // What measuring to the triangles holds besides them is sized with them, before either is made.
+  OutputSize size = tessellation_size(plans, level);
+  size.bytes += distance_tree_bytes(size.faces);
+  check_output_size(size,
+                    "measuring distances to " + std::to_string(plans.n_patches()) + " patches tessellated at level " +
+                        std::to_string(level),
+                    "triangles", "use a lower level");
   return {tessellate(plans, surface.points(), level), level};
 }
 
