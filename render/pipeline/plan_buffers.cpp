@@ -8,6 +8,7 @@
 #include "render/gl/compute_limits.h"
 #include "render/gl/gl_context.h"
 #include "core/mesh/dual_map.h"
+#include "core/mesh/error.h"
 
 namespace gps {
 
@@ -21,6 +22,14 @@ void PlanBuffers::upload(int binding, const std::vector<T>& data) {
   sizes_[binding] = std::max<size_t>(sizeof(T), data.size() * sizeof(T));
   glNamedBufferData(buffers_[binding], GLsizeiptr(sizes_[binding]), data.empty() ? nullptr : data.data(),
                     GL_DYNAMIC_DRAW);
+}
+
+// Zeroed storage of `bytes` for the passes to write, cleared by the driver: no host copy of the
+// zeros (hundreds of MB for a mesh of a million faces).
+void PlanBuffers::allocate_zeroed(int binding, size_t bytes) {
+  sizes_[binding] = std::max<size_t>(sizeof(float), bytes);
+  glNamedBufferData(buffers_[binding], GLsizeiptr(sizes_[binding]), nullptr, GL_DYNAMIC_DRAW);
+  glClearNamedBufferData(buffers_[binding], GL_R32F, GL_RED, GL_FLOAT, nullptr);
 }
 
 // Two vec4 per patch corner: limit point and node kind, normal (shaders/corner_limit_comp.glsl).
@@ -58,12 +67,8 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables) {
   upload(kBindingPatchEdges, p.patch_edges);
   upload(kBindingPatchNeighbours, p.patch_neighbours);
   upload(kBindingCornerOwners, p.corner_owners);
-  const size_t point_reals = size_t(s.n_points()) * kVec4PerPoint * 4;
-  if (precision_ == PointPrecision::double_float)
-    upload(kBindingPoints, std::vector<double>(point_reals, 0.0));
-  else
-    upload(kBindingPoints, std::vector<float>(point_reals, 0.0f));
-  upload(kBindingCornerLimits, std::vector<float>(corner_limit_floats(p), 0.0f));
+  allocate_zeroed(kBindingPoints, size_t(s.n_points()) * kVec4PerPoint * 4 * real_bytes(precision_));
+  allocate_zeroed(kBindingCornerLimits, corner_limit_floats(p) * sizeof(float));
 }
 
 // Float points: μ, then Σ⁻¹'s xx xy xz yy yz zz (shaders/dual_map_comp.glsl). The inverse is taken
@@ -149,11 +154,13 @@ std::vector<float> PlanBuffers::read_points(int n_points) const {
   return points;
 }
 
-std::vector<float> PlanBuffers::read_corner_limits(const PatchPlans& plans) const {
-  std::vector<float> limits(corner_limit_floats(plans));
-  glGetNamedBufferSubData(buffers_[kBindingCornerLimits], 0, GLsizeiptr(limits.size() * sizeof(float)), limits.data());
-  check_gl_errors("reading the corner limits");
-  return limits;
+void PlanBuffers::read_corner_limits(const std::function<void(const float*)>& read) const {
+  // Mapped, not copied: a mesh of a million faces has 128 MB of them.
+  const auto* limits = static_cast<const float*>(glMapNamedBuffer(buffers_[kBindingCornerLimits], GL_READ_ONLY));
+  check_gl_errors("mapping the corner limits");
+  if (!limits) throw Error("the driver did not map the corner limits");
+  read(limits);
+  glUnmapNamedBuffer(buffers_[kBindingCornerLimits]);
 }
 
 size_t PlanBuffers::bytes() const {

@@ -6,6 +6,7 @@
 // double (render/pipeline/point_precision.h).
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
@@ -45,14 +46,16 @@ public:
   /// The plan points as the compute passes left them (gpu::kVec4PerPoint vec4 each; double ones
   /// rounded to float).
   std::vector<float> read_points(int n_points) const;
-  /// The corner pass's output (render/pipeline/corner_limit_pass.h): two vec4 per patch corner, the
-  /// limit point and node kind, then the normal; zero at a corner its owner's slot holds.
-  std::vector<float> read_corner_limits(const PatchPlans& plans) const;
+  /// `read` given the corner pass's output (render/pipeline/corner_limit_pass.h), mapped: two vec4
+  /// per patch corner, the limit point and node kind, then the normal; zero at a corner its owner's
+  /// slot holds.
+  void read_corner_limits(const std::function<void(const float*)>& read) const;
   /// GPU memory held, in bytes.
   size_t bytes() const;
 
 private:
   static size_t corner_limit_floats(const PatchPlans& plans);
+  void allocate_zeroed(int binding, size_t bytes);
   template <class Real>
   void upload_gaussians_as(const CovarianceMesh& mesh);
   template <class Real>

@@ -339,16 +339,17 @@ std::vector<TessellatedVertex> SurfaceRenderer::capture_frame_vertices(const Cam
 
 std::vector<glm::dvec3> SurfaceRenderer::corner_limit_points() const {
   const PatchPlans& plans = tables().plans;
-  const std::vector<float> limits = buffers_.read_corner_limits(plans);
   const int corners = plans.corners();
   std::vector<glm::dvec3> points;
-  for (int p = 0; p < n_patches(); ++p)
-    for (int c = 0; c < corners; ++c) {
-      const CornerOwner owner = corner_owner(plans, p, c);
-      if (owner.patch != p || owner.corner != c) continue;  // its owner's slot holds it
-      const float* limit = &limits[size_t(8 * (corners * p + c))];
-      points.emplace_back(limit[0], limit[1], limit[2]);
-    }
+  buffers_.read_corner_limits([&](const float* limits) {
+    for (int p = 0; p < n_patches(); ++p)
+      for (int c = 0; c < corners; ++c) {
+        const CornerOwner owner = corner_owner(plans, p, c);
+        if (owner.patch != p || owner.corner != c) continue;  // its owner's slot holds it
+        const float* limit = &limits[size_t(8 * (corners * p + c))];
+        points.emplace_back(limit[0], limit[1], limit[2]);
+      }
+  });
   return points;
 }
 
