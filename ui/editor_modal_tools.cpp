@@ -81,15 +81,17 @@ void EditorApp::update_transform() {
     const Vec3 mean = document_.start_mean(r.vertex);
     const Mat3& start = document_.start_covariance(r.vertex);
     document_.set_mean(r.vertex, map.apply(mean));
-    if (map.linear == Mat3::Identity()) {
-      document_.set_covariance(r.vertex, start);  // a move keeps Σ exactly
+    if (map.linear == Mat3::Identity() || !view_.transform_gaussians) {
+      document_.set_covariance(r.vertex, start);  // a move, or positions only, keeps Σ exactly
     } else {
       const Mat3 moved = map.apply(Gaussian{mean, start}).covariance;
       document_.set_covariance(r.vertex, covariance_problem(moved).empty() ? moved : clamp_spd(moved, start));
     }
   }
-  status_ = transform_->describe() +
-            (reach_.size() > transform_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "");
+  status_ =
+      transform_->describe() +
+      (reach_.size() > transform_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "") +
+      (view_.transform_gaussians ? "" : "  (positions only)");
   status_error_ = false;
 }
 
@@ -103,7 +105,8 @@ void EditorApp::end_transform(bool keep) {
     status_ = "extrude: " + last_summary_;  // shown again, not printed again: run_operation printed it
     status_error_ = false;
   } else {
-    const std::string done = transform_->describe().substr(0, transform_->describe().find("  ("));
+    const std::string done = transform_->describe().substr(0, transform_->describe().find("  (")) +
+                             (view_.transform_gaussians ? "" : "  (positions only)");
     // Vertices a mirror (negative determinant) carried: the parts they make up whole get their faces
     // reversed with them, as Blender does, so that the surface stays outward.
     std::vector<int> mirrored_vertices;

@@ -32,6 +32,7 @@ void visit_settings(ViewOptions& view, ReachOptions& reach, Visit visit) {
   visit("vsync", view.vsync);
   visit("common_frame", view.common_frame);
   visit("pivot", view.pivot);
+  visit("transform_gaussians", view.transform_gaussians);
   visit("ellipsoid_scope", view.ellipsoid_scope);
   visit("show_inspector", view.show_inspector);
   visit("show_view", view.show_view);

@@ -11,15 +11,15 @@ namespace gps {
 /// distance from it: what the View panel shows and edits while a target is loaded.
 struct TargetPointsView {
   bool shown = true;
-  float point_size = 5.0f;     // pixels
-  bool automatic = true;       // the ramp ends at the distances' 99th percentile
-  float max_distance = 0.0f;   // the ramp's red end (world units)
+  float point_size = 5.0f;    // pixels
+  bool automatic = true;      // the ramp ends at the distances' 99th percentile
+  float max_distance = 0.0f;  // the ramp's red end (world units)
   // What the editor reports to the panel each frame.
-  std::string name;            // the target's file name; "" while none is loaded
-  size_t count = 0;            // its points
-  bool measuring = false;      // the distances shown are of an earlier surface
+  std::string name;                                      // the target's file name; "" while none is loaded
+  size_t count = 0;                                      // its points
+  bool measuring = false;                                // the distances shown are of an earlier surface
   double rms = 0.0, percentile_99 = 0.0, largest = 0.0;  // of the distances shown
-  double length = 1.0;         // the points' bounding-box diagonal
+  double length = 1.0;                                   // the points' bounding-box diagonal
 };
 
 struct ViewOptions {
@@ -53,10 +53,11 @@ struct ViewOptions {
   }
   std::string matcap = "clay";
   bool vsync = true;
-  bool common_frame = false;  // a multi-selection drag: every Gaussian in the grabbed one's frame (else its own)
+  bool common_frame = false;        // a multi-selection drag: every Gaussian in the grabbed one's frame (else its own)
+  bool transform_gaussians = true;  // G / S / R carry the Gaussians (else they move the positions only)
   int pivot = 0;  // where the gizmo of a multi-selection sits: 0 the active vertex, 1 the selection's centroid
   int ellipsoid_scope =
-      0;  // whose ellipsoids: 0 automatic (ui/ellipsoid_scope.h), 1 the selection and its neighbours, 2 all
+      0;            // whose ellipsoids: 0 automatic (ui/ellipsoid_scope.h), 1 the selection and its neighbours, 2 all
   int up_axis = 1;  // the world axis drawn upward (0 x, 1 y, 2 z): the open file's, as kept in up_axes
   std::map<std::string, int> up_axes;  // by mesh file (absolute path): the up axis last used for it
   TargetPointsView target;

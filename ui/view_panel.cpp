@@ -115,8 +115,8 @@ void target_section(ViewOptions& o, ViewPanelChanges& changes) {
   ImGui::TextUnformatted(end);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("points this far from the surface or farther are red");
   const float largest = float(std::max(t.largest, double(t.max_distance)));
-  if (largest > 0.0f && ImGui::SliderFloat("ramp end", &t.max_distance, 0.0f, largest, "%.3g",
-                                           ImGuiSliderFlags_Logarithmic))
+  if (largest > 0.0f &&
+      ImGui::SliderFloat("ramp end", &t.max_distance, 0.0f, largest, "%.3g", ImGuiSliderFlags_Logarithmic))
     t.automatic = false;
   ImGui::SameLine();
   ImGui::Checkbox("99%", &t.automatic);
@@ -128,6 +128,11 @@ void target_section(ViewOptions& o, ViewPanelChanges& changes) {
 }
 
 void editing_section(ViewOptions& o, ViewPanelChanges&) {
+  ImGui::Checkbox("G/S/R carry the Gaussians", &o.transform_gaussians);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "a grab, scale or rotation maps the Gaussians with the positions (else it moves the positions "
+        "only, each Gaussian kept as it was)");
   ImGui::Checkbox("common frame", &o.common_frame);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("a multi-selection drag scales every Gaussian along the grabbed axis (else each along its own)");
@@ -145,8 +150,8 @@ void window_section(ViewOptions& o, ViewPanelChanges&) {
 }
 
 using Section = void (*)(ViewOptions&, ViewPanelChanges&);
-constexpr Section kSections[] = {tessellation_section, shading_section, overlay_section, target_section,
-                                 editing_section, window_section};
+constexpr Section kSections[] = {tessellation_section, shading_section, overlay_section,
+                                 target_section,       editing_section, window_section};
 
 }  // namespace
 

@@ -323,6 +323,32 @@ TEST_F(EditorModelling, GrabAndRotateByTypedValues) {
   EXPECT_EQ(read_text_file(dir_.file("undone.ply")), read_text_file(dir_.file("original.ply")));
 }
 
+// With "G/S/R carry the Gaussians" off (View panel, kept in the settings), S Z 0.5 on the whole cube
+// halves its height and keeps every Gaussian as it was; on, the Gaussians are flattened with it.
+TEST_F(EditorModelling, ScaleMovesThePositionsOnlyWhenTheGaussiansAreNotCarried) {
+  use_sample("cube");
+  for (const bool carried : {false, true}) {
+    std::filesystem::create_directories(dir_.path() / "gpsurf");
+    dir_.write("gpsurf/settings.json",
+               carried ? R"({"transform_gaussians": true})" : R"({"transform_gaussians": false})");
+    Events e;
+    e.key("a").wait();
+    transform(e, "s", "z", "0.5");
+    const auto r = play(e, "--save " + dir_.file("scaled.ply"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(r.output.find("positions only") != std::string::npos, !carried) << r.output;
+    const CovarianceMesh scaled = read_mesh(dir_.file("scaled.ply"));
+    for (size_t v = 0; v < scaled.n_vertices(); ++v) {
+      EXPECT_NEAR(scaled.mean(v).z(), 0.5 * original_.mean(v).z(), 1e-9) << v;
+      if (carried) {
+        EXPECT_NEAR(scaled.covariance(v)(2, 2), 0.25 * original_.covariance(v)(2, 2), 1e-9) << v;
+      } else {
+        EXPECT_EQ(scaled.covariance(v), original_.covariance(v)) << v;
+      }
+    }
+  }
+}
+
 // A value typed into the Inspector with mirror editing on moves the mirror vertex by the mirrored
 // amount, as a drag does.
 TEST_F(EditorModelling, TypedInspectorValuesMirrorLikeDrags) {
