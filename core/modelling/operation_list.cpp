@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
+#include <optional>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +25,8 @@
 #include "core/modelling/merge_vertices.h"
 #include "core/modelling/primitives.h"
 #include "core/modelling/subdivide_mesh.h"
+#include "core/plans/planned_surface.h"
+#include "core/reference/subdivision_size.h"
 
 namespace gps {
 namespace {
@@ -192,7 +196,10 @@ Run transform(Fields& f) {
   return [=](const CovarianceMesh& mesh) { return transform_vertices(mesh, vertices, map); };
 }
 
-Run parse_step(const std::string& op, Fields& f) {
+using Append = std::function<std::vector<int>(MeshArrays&, std::string&)>;
+
+// An operation's step: a function of the mesh, or (an addition) `append` set instead.
+Run parse_step(const std::string& op, Fields& f, Append& append) {
   if (op == "subdivide") {
     if (f.has("faces")) {
       const std::vector<int> faces = f.indices("faces");
@@ -277,7 +284,10 @@ Run parse_step(const std::string& op, Fields& f) {
     const Vec3 center = f.has("center") ? f.vector3("center") : Vec3::Zero();
     const double size = f.number("size", 1.0);
     if (!(size > 0)) throw usage_error("\"size\" must be positive");
-    return [=](const CovarianceMesh& m) { return add_primitive(m, *primitive, center, size); };
+    append = [=](MeshArrays& a, std::string& summary) {
+      return append_primitive(a, *primitive, center, size, summary);
+    };
+    return nullptr;
   }
   if (op == "set") return set_gaussians(f);
   if (op == "crease") {
@@ -328,6 +338,7 @@ OperationList OperationList::parse(const std::string& text, const std::string& s
     try {
       Fields fields(object);
       Run run;
+      Append append;
       if (name == "bridge") {
         if (!fields.has("loops")) throw usage_error("\"loops\" is missing (two lists of boundary vertices)");
         const Json& loops = object["loops"];
@@ -340,10 +351,11 @@ OperationList OperationList::parse(const std::string& text, const std::string& s
         }
         run = [l](const CovarianceMesh& m) { return bridge(m, l[0], l[1]); };
       } else {
-        run = parse_step(name, fields);
+        run = parse_step(name, fields, append);
       }
       fields.check_all_used();
-      list.steps_.push_back({name, std::move(run)});
+      list.steps_.push_back(
+          {name, std::move(run), std::move(append), name == "subdivide" && !object.contains("faces")});
     } catch (const Error& e) {
       throw Error(where + " (" + shown_name(name) + "): " + e.what(), e.kind());
     }
@@ -358,17 +370,52 @@ std::vector<std::string> OperationList::names() const {
 }
 
 Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::string>* summaries) const {
-  Modelled current{mesh, {}, ""};
+  // Each step's result is made in place (a mesh has no move, so an assignment would copy it); a run of
+  // additions appends to the arrays of the mesh and builds the mesh once after its last.
+  std::unique_ptr<Modelled> current;
+  std::optional<MeshArrays> arrays;
+  const auto mesh_now = [&]() -> const CovarianceMesh& { return current ? current->mesh : mesh; };
   for (size_t i = 0; i < steps_.size(); ++i) {
+    const Step& step = steps_[i];
     try {
-      current = steps_[i].run(current.mesh);
+      if (step.subdivides_whole_mesh && (i == 0 || !steps_[i - 1].subdivides_whole_mesh))
+        check_subdivisions(i, mesh_now());
+      if (step.append) {
+        if (!arrays) arrays = arrays_of(mesh_now());
+        std::string summary;
+        std::vector<int> selection = step.append(*arrays, summary);
+        if (summaries) summaries->push_back(summary);
+        if (i + 1 < steps_.size() && steps_[i + 1].append) continue;
+        current.reset(new Modelled{build_mesh(*arrays), std::move(selection), std::move(summary)});
+        arrays.reset();
+        continue;
+      }
+      current.reset(new Modelled(step.run(mesh_now())));
     } catch (const Error& e) {
-      throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + shown_name(steps_[i].name) + "): " + e.what()),
+      throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + shown_name(step.name) + "): " + e.what()),
                   e.kind());
     }
-    if (summaries) summaries->push_back(current.summary);
+    if (summaries) summaries->push_back(current->summary);
   }
-  return current;
+  if (!current) return {mesh, {}, ""};
+  return std::move(*current);
+}
+
+void OperationList::check_subdivisions(size_t first, const CovarianceMesh& mesh) const {
+  size_t last = first;
+  while (last + 1 < steps_.size() && steps_[last + 1].subdivides_whole_mesh) ++last;
+  SubdivisionOptions options;
+  options.scheme = scheme_for(topology_of(mesh.mesh), PlanOptions{});
+  options.levels = int(std::min<size_t>(last - first + 1, 1000));
+  // The last level's peak, with the mesh before it held.
+  OutputSize size = subdivision_size(mesh, options);
+  --options.levels;
+  size.bytes += subdivision_size(mesh, options).bytes;
+  const std::string count = std::to_string(last - first + 1);
+  check_output_size(
+      size,
+      count + " whole-mesh subdivisions (ops[" + std::to_string(first) + "] to ops[" + std::to_string(last) + "])",
+      "faces", "use fewer subdivisions");
 }
 
 }  // namespace gps

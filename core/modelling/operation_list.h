@@ -28,9 +28,17 @@ public:
   Modelled apply(const CovarianceMesh& mesh, std::vector<std::string>* summaries = nullptr) const;
 
 private:
+  /// Refuses, with its figures, the run of whole-mesh subdivisions starting at step `first` where its
+  /// result would not fit the memory budget (core/support/memory_budget.h), before any of them.
+  void check_subdivisions(size_t first, const CovarianceMesh& mesh) const;
+
   struct Step {
     std::string name;
     std::function<Modelled(const CovarianceMesh&)> run;
+    /// Instead of `run`, for an addition: appends to the arrays of a run of additions (which build
+    /// their mesh once, so that each costs what it adds); returns the selection and sets the summary.
+    std::function<std::vector<int>(MeshArrays&, std::string&)> append;
+    bool subdivides_whole_mesh = false;
   };
   std::vector<Step> steps_;
   std::string source_;

@@ -165,28 +165,40 @@ std::optional<Primitive> primitive_named(const std::string& name) {
   return std::nullopt;
 }
 
-Modelled add_primitive(const CovarianceMesh& mesh, Primitive primitive, const Vec3& center, double size) {
+std::vector<int> append_primitive(MeshArrays& a, Primitive primitive, const Vec3& center, double size,
+                                  std::string& summary) {
   if (!(size > 0) || !std::isfinite(size)) {
     std::ostringstream s;
     s << size;
     throw Error("the size must be positive and finite (got " + s.str() + ")");
   }
   if (!center.allFinite()) throw Error("the centre must be finite");
-  MeshArrays a = arrays_of(mesh);
   const Shape s = shape_of(primitive);
   const double sigma = 0.5 * size * mean_edge_length(s);
   const int offset = a.n_vertices();
-  Modelled out;
-  for (const Vec3& p : s.points)
-    out.selection.push_back(a.add_vertex({center + size * p, sigma * sigma * Mat3::Identity()}));
+  std::vector<int> added;
+  for (const Vec3& p : s.points) {
+    const int v = a.add_vertex({center + size * p, sigma * sigma * Mat3::Identity()});
+    // As build_mesh would name it: the first of the mesh's vertices with a problem is a new one.
+    std::string why = position_problem(a.means[size_t(v)]);
+    if (why.empty()) why = covariance_problem(a.covariances[size_t(v)]);
+    if (!why.empty()) throw Error("the result would not be a valid mesh: vertex " + std::to_string(v) + " " + why);
+    added.push_back(v);
+  }
   for (auto face : s.faces) {
     for (int& v : face) v += offset;
     a.faces.push_back(std::move(face));
   }
-  out.mesh = build_mesh(a);
-  out.summary = "added a " + primitive_names()[size_t(primitive)] + ": " + std::to_string(s.points.size()) +
-                " vertices, " + std::to_string(s.faces.size()) + " faces";
-  return out;
+  summary = "added a " + primitive_names()[size_t(primitive)] + ": " + std::to_string(s.points.size()) + " vertices, " +
+            std::to_string(s.faces.size()) + " faces";
+  return added;
+}
+
+Modelled add_primitive(const CovarianceMesh& mesh, Primitive primitive, const Vec3& center, double size) {
+  MeshArrays a = arrays_of(mesh);
+  std::string summary;
+  std::vector<int> selection = append_primitive(a, primitive, center, size, summary);
+  return {build_mesh(a), std::move(selection), std::move(summary)};
 }
 
 PrimitivePlacement primitive_placement(const CovarianceMesh& mesh, const std::vector<int>& selected) {

@@ -28,6 +28,11 @@ std::optional<Primitive> primitive_named(const std::string& name);
 /// (core/mesh/samples.h, isotropic_covariances). An empty input mesh (no vertices) is allowed.
 /// Selection: the new vertices.
 Modelled add_primitive(const CovarianceMesh& mesh, Primitive primitive, const Vec3& center, double size);
+/// The same on arrays, for a run of additions that builds its mesh once (OperationList): appends the
+/// primitive's vertices and faces, refusing its Gaussians as build_mesh would; returns the new
+/// vertices and sets `summary`.
+std::vector<int> append_primitive(MeshArrays& arrays, Primitive primitive, const Vec3& center, double size,
+                                  std::string& summary);
 
 /// Where the editor's Add menu puts a primitive: its centre and its size (as add_primitive takes them).
 struct PrimitivePlacement {

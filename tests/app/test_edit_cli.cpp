@@ -64,6 +64,23 @@ TEST(EditCli, RefusedOperationWritesNothing) {
   EXPECT_EQ(file_text(out), "precious");
 }
 
+// A run of whole-mesh subdivisions is sized before the first of them: beyond the memory budget it is
+// refused at once with its figures (exit 2), nothing written.
+TEST(EditCli, WholeMeshSubdivisionsBeyondTheBudgetAreRefusedBeforeAny) {
+  test::TempDir dir;
+  std::string ops = "[";
+  for (int i = 0; i < 12; ++i) ops += std::string(i ? "," : "") + "{\"op\":\"subdivide\"}";
+  dir.write("ops.json", ops + "]");
+  const auto r = run_command("GPSURF_MEMORY_LIMIT_BYTES=100000000 " +
+                             gpsurf("edit sample:cube -o " + dir.file("s.ply") + " --ops @" + dir.file("ops.json")));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("ops.json: ops[0] (subdivide): 12 whole-mesh subdivisions (ops[0] to ops[11]) would make "
+                          "about 100,663,298 vertices and 100,663,296 faces and hold about "),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("s.ply")));
+}
+
 TEST(EditCli, MalformedOperationsAreUsageErrors) {
   test::TempDir dir;
   const std::string out = dir.file("out.ply");

@@ -10,6 +10,7 @@
 #include "core/modelling/fill.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/operation_list.h"
+#include "core/modelling/primitives.h"
 #include "core/plans/patch_layout.h"
 
 namespace gps {
@@ -47,6 +48,35 @@ TEST(OperationList, SameAsTheCallsItNames) {
   const Modelled direct = extrude_faces(loop_cut(cube, 0, 1, 2).mesh, {1}, 0.25);
   expect_same_mesh(scripted.mesh, direct.mesh);
   EXPECT_EQ(scripted.selection, direct.selection);
+}
+
+// A run of additions builds its mesh once: the same mesh, selection and summaries as adding one at
+// a time, with the creases and corners kept, and a refusal naming the addition that fails.
+TEST(OperationList, ARunOfAdditionsIsTheSameAsOneAtATime) {
+  CovarianceMesh cube = make_sample("cube");
+  cube.sharpness.set_crease(0, 1, 2.0);
+  cube.sharpness.set_corner(2, 3.0, int(cube.n_vertices()));
+  const OperationList ops = OperationList::parse(
+      R"([{"op":"add","primitive":"torus","center":[3,0,0]},{"op":"add","primitive":"cone","size":2},
+          {"op":"extrude","faces":[0],"distance":0.5},{"op":"add","primitive":"plane","center":[0,4,0]}])",
+      "ops.json");
+  std::vector<std::string> summaries;
+  const Modelled scripted = ops.apply(cube, &summaries);
+  const Modelled torus = add_primitive(cube, Primitive::torus, Vec3(3, 0, 0), 1);
+  const Modelled cone = add_primitive(torus.mesh, Primitive::cone, Vec3::Zero(), 2);
+  const Modelled direct = add_primitive(extrude_faces(cone.mesh, {0}, 0.5).mesh, Primitive::plane, Vec3(0, 4, 0), 1);
+  expect_same_mesh(scripted.mesh, direct.mesh);
+  EXPECT_EQ(scripted.mesh.sharpness.creases.size(), direct.mesh.sharpness.creases.size());
+  EXPECT_EQ(scripted.mesh.sharpness.corners, direct.mesh.sharpness.corners);
+  EXPECT_EQ(scripted.selection, direct.selection);
+  ASSERT_EQ(summaries.size(), 4u);
+  EXPECT_EQ(summaries[1], cone.summary);
+  EXPECT_EQ(error_of([&] {
+              OperationList::parse(R"([{"op":"add","primitive":"cube"},{"op":"add","primitive":"cube","size":1e-200}])",
+                                   "f")
+                  .apply(cube);
+            }).rfind("f: ops[1] (add): the result would not be a valid mesh: vertex 16 ", 0),
+            0u);
 }
 
 TEST(OperationList, IndicesReferToTheMeshAsItStands) {
