@@ -19,7 +19,7 @@ void add_fit_command(CLI::App& app) {
   struct Args {
     std::string coarse, target, output;
     int iterations = 10, level = 8;
-    double smoothness = 1e-5;
+    double smoothness = 1e-5, tolerance = 0, time = INFINITY;
     bool plain = false, ascii = false;
     PlanArguments plans;
     RepairArguments repair;
@@ -36,6 +36,11 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "output covariance PLY")->required();
   cmd->add_option("--iterations", args->iterations, "Levenberg-Marquardt iterations (default 10)")
       ->transform(integer_in(0, 1000));
+  cmd->add_option("--tolerance", args->tolerance,
+                  "stop when an iteration lowers the rms distance by less than this fraction of it (default 0: never)")
+      ->check(number_in(0, 1));
+  cmd->add_option("--time", args->time, "stop after the iteration that passes this many seconds (default: never)")
+      ->check(positive_number(1e9));
   cmd->add_flag("--plain", args->plain,
                 "fit the means only, every covariance the same isotropic one (ordinary subdivision-surface fitting)");
   cmd->add_option("--smoothness", args->smoothness,
@@ -57,15 +62,18 @@ void add_fit_command(CLI::App& app) {
     options.iterations = args->iterations;
     options.plain = args->plain;
     options.smoothness = args->smoothness;
+    options.tolerance = args->tolerance;
+    options.time_budget = args->time;
     options.plans = args->plans.options();
     options.progress = [](const FitIteration& it) {
-      std::printf("iteration %d: rms %.3e, max %.3e (of the diagonal), %.2f s\n", it.iteration,
-                  it.error.relative_rms(), it.error.relative_max(), it.seconds);
+      std::printf("iteration %d: rms %.3e, max %.3e (of the diagonal), %.2f s\n", it.iteration, it.error.relative_rms(),
+                  it.error.relative_max(), it.seconds);
       std::fflush(stdout);
     };
     std::cout << "fitting " << coarse.n_vertices() << " vertices" << (args->plain ? " (plain)" : "") << " to "
               << targets.size() << " points\n";
     const FitResult result = naming_input(args->coarse, [&] { return fit_limit_surface(coarse, targets, options); });
+    std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop) << "\n";
     write_mesh(args->output, result.mesh, !args->ascii);
     std::cout << "wrote " << args->output << "\n";
     if (args->level == 0) return;

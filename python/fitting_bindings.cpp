@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <optional>
 
 #include "core/evaluation/tessellation_size.h"
 #include "core/evaluation/tessellator.h"
@@ -87,40 +88,76 @@ Measurement measurement(const py::object& points, const py::object& to, const st
   return m;
 }
 
+// The Python name of a stop reason.
+const char* fit_stop_name(FitStop stop) {
+  switch (stop) {
+    case FitStop::iterations:
+      return "iterations";
+    case FitStop::converged:
+      return "converged";
+    case FitStop::time:
+      return "time";
+    case FitStop::no_descent:
+      return "no_descent";
+  }
+  return "";
+}
+
 }  // namespace
 
 void add_fitting_bindings(py::module_& m) {
   m.def(
       "fit",
       [](const MeshHandle& coarse, const py::object& target, int iterations, bool plain, double smoothness,
-         const py::object& progress) {
+         double tolerance, std::optional<double> time, const py::object& progress, bool report) -> py::object {
         if (iterations < 0 || iterations > 1000)
           throw py::value_error("iterations: expected 0..1000, got " + std::to_string(iterations));
         if (!(std::isfinite(smoothness) && smoothness >= 0 && smoothness <= 1e6))
           throw py::value_error("smoothness: expected 0..1e6");
+        if (!(tolerance >= 0 && tolerance <= 1)) throw py::value_error("tolerance: expected a fraction 0..1");
+        if (time && !(std::isfinite(*time) && *time > 0))
+          throw py::value_error("time: expected a finite number of seconds above 0, or None");
         std::vector<Vec3> targets = points_of(target, "target");
         if (targets.empty()) throw py::value_error("target: has no points to fit to");
-        return call_in_background(
-            [source = coarse.mesh, targets = std::move(targets), iterations, plain, smoothness](CallControl& control) {
+        FitResult result = call_in_background(
+            [source = coarse.mesh, targets = std::move(targets), iterations, plain, smoothness, tolerance,
+             time](CallControl& control) {
               FitOptions o;
               o.iterations = iterations;
               o.plain = plain;
               o.smoothness = smoothness;
+              o.tolerance = tolerance;
+              o.time_budget = time.value_or(INFINITY);
               o.progress = [&control, iterations](const FitIteration& it) {
                 control.throw_if_stopped();
                 control.report(iterations == 0 ? 1.0 : double(it.iteration) / iterations);
               };
-              return hold(fit_limit_surface(*source, targets, o).mesh);
+              return fit_limit_surface(*source, targets, o);
             },
             progress, false);
+        py::object mesh = py::cast(hold(std::move(result.mesh)));
+        if (!report) return mesh;
+        std::vector<double> rms;
+        for (const FitIteration& it : result.iterations) rms.push_back(it.error.relative_rms());
+        py::dict details;
+        details["stop"] = fit_stop_name(result.stop);
+        details["reason"] = describe(result.stop);
+        details["iterations"] = int(result.iterations.size()) - 1;
+        details["relative_rms"] = rms;
+        return py::make_tuple(mesh, details);
       },
       py::arg("coarse"), py::arg("target"), py::arg("iterations") = 10, py::arg("plain") = false,
-      py::arg("smoothness") = 1e-5, py::arg("progress") = py::none(),
+      py::arg("smoothness") = 1e-5, py::arg("tolerance") = 0.0, py::arg("time") = py::none(),
+      py::arg("progress") = py::none(), py::arg("report") = false,
       "The limit surface of `coarse` fitted to `target` (a Mesh's vertices or an (n, 3) array of points), as gpsurf "
-      "fit fits it: `iterations` (0..1000) Levenberg-Marquardt steps on the squared distances from the points to "
-      "their closest limit points, moving the means and (unless plain) the covariances; smoothness: the weight of "
-      "the smoothness term. progress: called with the fraction of iterations done; returning False cancels "
-      "(gpsurf.Cancelled). Returns the fitted Mesh.");
+      "fit fits it: up to `iterations` (0..1000) Levenberg-Marquardt steps on the squared distances from the points "
+      "to their closest limit points, moving the means and (unless plain) the covariances; smoothness: the weight "
+      "of the smoothness term. tolerance: stop when an iteration lowers the rms distance by less than this fraction "
+      "of it (0: never); time: stop after the iteration that passes this many seconds (None: never). progress: "
+      "called with the fraction of iterations done; returning False cancels (gpsurf.Cancelled). Returns the fitted "
+      "Mesh; report=True: (Mesh, dict) with stop ('iterations', 'converged', 'time' or 'no_descent'), reason (in "
+      "words), iterations (the number run) and relative_rms (per iteration, the first before any step, divided by "
+      "the points' bounding-box diagonal).");
   m.def(
       "distance",
       [](const py::object& points, const py::object& to, std::optional<int> level, bool linear) {

@@ -387,11 +387,29 @@ CovarianceMesh with_isotropic_covariances(const CovarianceMesh& mesh) {
   return out;
 }
 
+const char* describe(FitStop stop) {
+  switch (stop) {
+    case FitStop::iterations:
+      return "ran its iterations";
+    case FitStop::converged:
+      return "converged (the rms distance fell by less than the tolerance)";
+    case FitStop::time:
+      return "ran out of time";
+    case FitStop::no_descent:
+      return "no step lowered the error";
+  }
+  return "";
+}
+
 FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options) {
   if (targets.empty()) throw Error("there are no points to fit the surface to");
   if (coarse.n_faces() == 0) throw Error("the mesh to fit has no faces");
+  if (!(options.tolerance >= 0 && options.tolerance <= 1))
+    throw Error("the fit's tolerance must be a fraction from 0 to 1");
+  if (!(options.time_budget > 0)) throw Error("the fit's time budget must be positive");
   validate_gaussians(coarse);
-  auto clock = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
+  auto clock = start;
   FitProblem problem(coarse, targets, options);
   Parameters x = problem.start();
   problem.set_means(x);
@@ -441,10 +459,23 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
       }
       damping *= 4;
     }
-    if (!accepted) break;
+    if (!accepted) {
+      result.stop = FitStop::no_descent;
+      break;
+    }
     problem.update_correspondences(x);
     energy = problem.objective_of_correspondences(x);
+    const double before = result.iterations.back().error.rms;
     report(iteration);
+    if (iteration == options.iterations) break;
+    if (options.tolerance > 0 && before - result.iterations.back().error.rms <= options.tolerance * before) {
+      result.stop = FitStop::converged;
+      break;
+    }
+    if (seconds_since(start) >= options.time_budget) {
+      result.stop = FitStop::time;
+      break;
+    }
   }
   result.mesh = problem.mesh_of(coarse, x);
   return result;

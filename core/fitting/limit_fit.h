@@ -1,6 +1,7 @@
 #pragma once
 // Fitting a covariance mesh's GPS limit surface to points (a dense mesh's vertices): the means and
 // covariances move to minimise the squared distances from the points to the limit surface.
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -12,9 +13,9 @@ namespace gps {
 
 /// One iteration of the fit: the distances from the points to their closest points on the limit surface.
 struct FitIteration {
-  int iteration = 0;     // 0: before the first step
+  int iteration = 0;      // 0: before the first step
   DistanceSummary error;  // relative to the points' bounding-box diagonal
-  double seconds = 0;    // this iteration's time
+  double seconds = 0;     // this iteration's time
 };
 
 struct FitOptions {
@@ -24,6 +25,10 @@ struct FitOptions {
   bool plain = false;
   /// Weight of the smoothness term (the Laplacian of the vertices' changes) against the mean squared distance.
   double smoothness = 1e-5;
+  /// Stop when an iteration lowers the rms distance by less than this fraction of it (0: never).
+  double tolerance = 0;
+  /// Stop when the fit has run this many seconds (checked after each iteration; infinity: never).
+  double time_budget = INFINITY;
   /// Tessellation level of the limit surface that the closest points are first found on.
   int correspondence_level = 6;
   PlanOptions plans;
@@ -31,9 +36,21 @@ struct FitOptions {
   std::function<void(const FitIteration&)> progress;
 };
 
+/// Why the fit stopped.
+enum class FitStop {
+  iterations,  // it ran the iterations asked for
+  converged,   // the rms distance fell by less than the tolerance
+  time,        // the time budget ran out
+  no_descent,  // no step lowered the objective
+};
+
+/// A few words for a stop reason ("converged", …).
+const char* describe(FitStop stop);
+
 struct FitResult {
   CovarianceMesh mesh;
   std::vector<FitIteration> iterations;  // iteration 0 first
+  FitStop stop = FitStop::iterations;
 };
 
 /// Fits the limit surface of `coarse` to `targets` by Levenberg-Marquardt on the squared distances
@@ -43,6 +60,7 @@ struct FitResult {
 /// with a logarithmic diagonal, positive definite by construction. The limit point is
 /// x = K⁻¹h with K = Σₖ wₖ Kₖ, h = Σₖ wₖ Kₖ μₖ over the control vertices (core/fitting/limit_weights.h),
 /// whose derivatives are dx = K⁻¹ (dh − dK x). The normal equations are solved by conjugate gradients (Eigen).
+/// It stops early where `options` asks (tolerance, time budget) or where no step lowers the objective.
 /// On all cores, the same result on any number. Throws gps::Error for a mesh or points it cannot fit.
 FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options);
 

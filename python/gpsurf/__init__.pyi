@@ -1,7 +1,7 @@
 # Type stubs of the package gpsurf (its extension module _gpsurf); tests/python/test_stubs.py checks
 # them against the module's own signatures.
 import os
-from typing import Any, Callable, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -111,13 +111,30 @@ def tessellate(
     depth: int = -1,
     approximate: bool = False,
 ) -> Tuple[FloatArray, FloatArray, IntArray]: ...
+@overload
 def fit(
     coarse: Mesh,
     target: Union[Mesh, npt.ArrayLike],
     iterations: int = 10,
     plain: bool = False,
     smoothness: float = 1e-05,
+    tolerance: float = 0.0,
+    time: Optional[float] = None,
     progress: Progress = None,
+    *,
+    report: Literal[True],
+) -> Tuple[Mesh, dict[str, Any]]: ...
+@overload
+def fit(
+    coarse: Mesh,
+    target: Union[Mesh, npt.ArrayLike],
+    iterations: int = 10,
+    plain: bool = False,
+    smoothness: float = 1e-05,
+    tolerance: float = 0.0,
+    time: Optional[float] = None,
+    progress: Progress = None,
+    report: Literal[False] = False,
 ) -> Mesh: ...
 def distance(
     points: Union[Mesh, npt.ArrayLike], to: Union[Mesh, Surface], level: Optional[int] = None, linear: bool = False

@@ -36,9 +36,11 @@ std::string sphere_obj(int n) {
         for (int j = 0; j < n; ++j) {
           const int a = first + i * (n + 1) + j;
           if (side > 0)
-            obj << "f " << a << " " << a + n + 1 << " " << a + n + 2 << "\nf " << a << " " << a + n + 2 << " " << a + 1 << "\n";
+            obj << "f " << a << " " << a + n + 1 << " " << a + n + 2 << "\nf " << a << " " << a + n + 2 << " " << a + 1
+                << "\n";
           else
-            obj << "f " << a << " " << a + n + 2 << " " << a + n + 1 << "\nf " << a << " " << a + 1 << " " << a + n + 2 << "\n";
+            obj << "f " << a << " " << a + n + 2 << " " << a + n + 1 << "\nf " << a << " " << a + 1 << " " << a + n + 2
+                << "\n";
         }
     }
   return obj.str();
@@ -50,7 +52,8 @@ TEST(FitCli, FitsAnIcosphereToSpherePointsWithProgressAndReport) {
   const std::string coarse = dir.file("coarse.ply"), out = dir.file("fitted.ply");
   ASSERT_EQ(run_command(gpsurf("sample icosphere --size 80 -o " + coarse)).exit_code, 0);
   for (const std::string mode : {"", " --plain"}) {
-    const auto r = run_command(gpsurf("fit " + coarse + " --target " + target + " -o " + out + " --iterations 3" + mode));
+    const auto r =
+        run_command(gpsurf("fit " + coarse + " --target " + target + " -o " + out + " --iterations 3" + mode));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("fitting 42 vertices"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("\niteration 0: rms "), std::string::npos) << r.output;
@@ -68,11 +71,37 @@ TEST(FitCli, FitsAnIcosphereToSpherePointsWithProgressAndReport) {
   }
 }
 
+TEST(FitCli, StopsAtTheToleranceOrTheTimeAndSaysWhy) {
+  test::TempDir dir;
+  const std::string target = dir.write("target.obj", sphere_obj(8));
+  const std::string coarse = dir.file("coarse.ply"), out = dir.file("fitted.ply");
+  ASSERT_EQ(run_command(gpsurf("sample icosphere --size 80 -o " + coarse)).exit_code, 0);
+  const std::string fit = "fit " + coarse + " --target " + target + " -o " + out + " --level 0 --iterations 50";
+  const auto converged = run_command(gpsurf(fit + " --tolerance 0.2"));
+  ASSERT_EQ(converged.exit_code, 0) << converged.output;
+  EXPECT_NE(converged.output.find(" iterations: converged (the rms distance fell by less than the tolerance)\n"),
+            std::string::npos)
+      << converged.output;
+  EXPECT_EQ(converged.output.find("\niteration 50: "), std::string::npos) << converged.output;
+  const auto timed = run_command(gpsurf(fit + " --time 1e-6"));
+  ASSERT_EQ(timed.exit_code, 0) << timed.output;
+  EXPECT_NE(timed.output.find("\nstopped after 1 iterations: ran out of time\n"), std::string::npos) << timed.output;
+  const auto all =
+      run_command(gpsurf("fit " + coarse + " --target " + target + " -o " + out + " --level 0 --iterations 2"));
+  EXPECT_NE(all.output.find("\nstopped after 2 iterations: ran its iterations\n"), std::string::npos) << all.output;
+  for (const std::string bad : {" --tolerance 1.5", " --tolerance -0.1", " --time 0", " --time nan"}) {
+    const auto refused = run_command(gpsurf(fit + bad));
+    EXPECT_EQ(refused.exit_code, 2) << bad << ": " << refused.output;
+    EXPECT_NE(refused.output.find(bad.substr(1, bad.find(' ', 1) - 1)), std::string::npos) << refused.output;
+  }
+}
+
 TEST(FitCli, ErrorsNameTheFile) {
   test::TempDir dir;
   const std::string coarse = dir.file("coarse.ply");
   ASSERT_EQ(run_command(gpsurf("sample icosphere --size 80 -o " + coarse)).exit_code, 0);
-  const auto missing = run_command(gpsurf("fit " + coarse + " --target " + dir.file("none.obj") + " -o " + dir.file("o.ply")));
+  const auto missing =
+      run_command(gpsurf("fit " + coarse + " --target " + dir.file("none.obj") + " -o " + dir.file("o.ply")));
   EXPECT_NE(missing.exit_code, 0);
   EXPECT_NE(missing.output.find("none.obj"), std::string::npos) << missing.output;
   const auto no_target = run_command(gpsurf("fit " + coarse + " -o " + dir.file("o.ply")));

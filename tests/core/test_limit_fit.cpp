@@ -106,7 +106,9 @@ void expect_weights_match_evaluator(const CovarianceMesh& m) {
   }
 }
 
-TEST(LimitWeights, LoopMatchesTheEvaluator) { expect_weights_match_evaluator(with_random_gaussians(make_sample("icosphere", 320))); }
+TEST(LimitWeights, LoopMatchesTheEvaluator) {
+  expect_weights_match_evaluator(with_random_gaussians(make_sample("icosphere", 320)));
+}
 
 TEST(LimitWeights, CatmullClarkMatchesTheEvaluator) {
   expect_weights_match_evaluator(with_random_gaussians(make_sample("valence5")));
@@ -205,6 +207,61 @@ TEST(LimitFit, PointsOnTheStartingSurfaceStayPut) {
   const FitResult r = fit_limit_surface(coarse, targets, options);
   EXPECT_LT(r.iterations.front().error.relative_max(), 1e-9);
   EXPECT_LT(r.iterations.back().error.relative_max(), 1e-9);
+}
+
+/// An icosphere fitted to a bumpy sphere's points: a fit whose error levels off within tens of iterations.
+FitResult fit_icosphere_to_bumps(int iterations, double tolerance, double time_budget = INFINITY) {
+  FitOptions options;
+  options.iterations = iterations;
+  options.tolerance = tolerance;
+  options.time_budget = time_budget;
+  return fit_limit_surface(make_sample("icosphere", 80), vertex_means(bumpy_sphere(8)), options);
+}
+
+void expect_same_mesh(const CovarianceMesh& a, const CovarianceMesh& b) {
+  ASSERT_EQ(a.n_vertices(), b.n_vertices());
+  for (size_t i = 0; i < a.n_vertices(); ++i) {
+    EXPECT_EQ(a.mean(i), b.mean(i)) << "vertex " << i;
+    EXPECT_EQ(a.covariance(i), b.covariance(i)) << "vertex " << i;
+  }
+}
+
+TEST(LimitFit, StopsWhenTheErrorFallsByLessThanTheTolerance) {
+  const double tolerance = 0.05;
+  const FitResult r = fit_icosphere_to_bumps(40, tolerance);
+  EXPECT_EQ(r.stop, FitStop::converged);
+  ASSERT_GE(r.iterations.size(), 3u);
+  ASSERT_LT(r.iterations.size(), 41u);
+  const auto fall = [&](size_t k) { return 1 - r.iterations[k].error.rms / r.iterations[k - 1].error.rms; };
+  EXPECT_LE(fall(r.iterations.size() - 1), tolerance);
+  for (size_t k = 1; k + 1 < r.iterations.size(); ++k) EXPECT_GT(fall(k), tolerance) << "iteration " << k;
+  // Stopping changes nothing of the iterations run: the same mesh as a fit asked for that many.
+  expect_same_mesh(r.mesh, fit_icosphere_to_bumps(int(r.iterations.size()) - 1, 0).mesh);
+}
+
+TEST(LimitFit, ToleranceZeroRunsEveryIteration) {
+  const FitResult converged = fit_icosphere_to_bumps(40, 0.05);
+  const int iterations = int(converged.iterations.size()) + 2;
+  const FitResult r = fit_icosphere_to_bumps(iterations, 0);
+  EXPECT_EQ(r.stop, FitStop::iterations);
+  EXPECT_EQ(r.iterations.size(), size_t(iterations) + 1);
+  // An unlimited time budget is the default's: bit for bit the same fit.
+  FitOptions options;
+  options.iterations = iterations;
+  expect_same_mesh(r.mesh,
+                   fit_limit_surface(make_sample("icosphere", 80), vertex_means(bumpy_sphere(8)), options).mesh);
+}
+
+TEST(LimitFit, StopsWhenTheTimeBudgetRunsOut) {
+  const FitResult r = fit_icosphere_to_bumps(10, 0, 1e-9);
+  EXPECT_EQ(r.stop, FitStop::time);
+  EXPECT_EQ(r.iterations.size(), 2u);  // the start and the one iteration before the budget is checked
+  expect_same_mesh(r.mesh, fit_icosphere_to_bumps(1, 0).mesh);
+}
+
+TEST(LimitFit, RefusesAToleranceOrTimeBudgetOutOfRange) {
+  for (const double tolerance : {-0.1, 1.5, double(NAN)}) EXPECT_THROW(fit_icosphere_to_bumps(2, tolerance), Error);
+  for (const double budget : {0.0, -1.0, double(NAN)}) EXPECT_THROW(fit_icosphere_to_bumps(2, 0, budget), Error);
 }
 
 }  // namespace

@@ -104,6 +104,31 @@ def test_fit_equals_the_command_line(tmp_path, cli):
     assert after["rms"] < before["rms"]
 
 
+def test_fit_stops_at_the_tolerance_or_the_time_as_the_command_line_does(tmp_path, cli):
+    cli("sample", "icosphere", "-o", "sphere.ply", "--size", 1280)
+    cli("sample", "icosphere", "-o", "coarse.ply", "--size", 80)
+    out = cli("fit", "coarse.ply", "--target", "sphere.ply", "-o", "fitted.ply", "--iterations", 50, "--level", 0,
+              "--tolerance", 0.2)
+    expected = gpsurf.read(tmp_path / "fitted.ply")
+    coarse, sphere = gpsurf.read(tmp_path / "coarse.ply"), gpsurf.read(tmp_path / "sphere.ply")
+    fitted, report = gpsurf.fit(coarse, sphere, iterations=50, tolerance=0.2, report=True)
+    assert report["stop"] == "converged" and report["iterations"] < 50
+    assert f"stopped after {report['iterations']} iterations: {report['reason']}" in out
+    assert np.array_equal(fitted.positions, expected.positions)
+    assert np.array_equal(fitted.covariances, expected.covariances)
+    rms = report["relative_rms"]
+    assert len(rms) == report["iterations"] + 1 and rms[-2] - rms[-1] <= 0.2 * rms[-2]
+    # Tolerance 0 runs every iteration; the default return is the Mesh alone.
+    assert gpsurf.fit(coarse, sphere, iterations=report["iterations"] + 1, report=True)[1]["stop"] == "iterations"
+    assert isinstance(gpsurf.fit(coarse, sphere, iterations=1, tolerance=0.2), gpsurf.Mesh)
+    timed, timed_report = gpsurf.fit(coarse, sphere, iterations=50, time=1e-6, report=True)
+    assert timed_report["stop"] == "time" and timed_report["iterations"] == 1
+    for bad in ({"tolerance": -0.1}, {"tolerance": 1.5}, {"tolerance": float("nan")}, {"time": 0.0},
+                {"time": float("inf")}, {"time": float("nan")}):
+        with pytest.raises(ValueError, match=next(iter(bad))):
+            gpsurf.fit(coarse, sphere, iterations=1, **bad)
+
+
 def test_paths_may_be_path_like(tmp_path):
     mesh = gpsurf.sample("cone")
     path = pathlib.Path(tmp_path) / "cone.ply"

@@ -25,9 +25,11 @@ def runtime_parameters(function):
 
 
 def stub_parameters(node):
-    """[(name, default or None)] of a stub's function, `self` left out; `...` stands for any default."""
-    args = node.args.args
-    defaults = [None] * (len(args) - len(node.args.defaults)) + list(node.args.defaults)
+    """[(name, default or None)] of a stub's function, keyword-only ones last, `self` left out; `...`
+    stands for any default. Of overloads, the last is compared with the runtime's defaults."""
+    args = node.args.args + node.args.kwonlyargs
+    defaults = [None] * (len(node.args.args) - len(node.args.defaults)) + list(node.args.defaults)
+    defaults += node.args.kw_defaults
     return [(a.arg, d) for a, d in zip(args, defaults) if a.arg != "self"]
 
 
@@ -107,6 +109,8 @@ def test_mypy_accepts_a_script_against_the_stubs(tmp_path):
         positions, du, dv, normals = surface.evaluate(np.arange(3), 0.25, 0.25)
         points, point_normals, triangles = surface.tessellate(4)
         fitted = gpsurf.fit(mesh, points, iterations=1, progress=lambda f: None)
+        refitted, report = gpsurf.fit(fitted, points, iterations=1, tolerance=0.1, time=5.0, report=True)
+        stop: str = report["stop"]
         d: np.ndarray = gpsurf.distance(points, fitted)
         mesh.positions = mesh.positions + 1.0
         gpsurf.read("x.ply", bias=0.1).write("y.ply")
