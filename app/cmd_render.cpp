@@ -115,7 +115,8 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   // Framed on the surface, an image without it means the evaluation lost it (Gaussians too thin
   // for the GPU's precision: render/pipeline/point_precision.h), not a view that looks away.
   if (a.camera.empty() && count_covered_pixels(normal) == 0)
-    throw Error(a.input + ": the surface covers no pixel of the image framed on it (Gaussians too thin for the "
+    throw Error(a.input +
+                ": the surface covers no pixel of the image framed on it (Gaussians too thin for the "
                 "GPU's evaluation?); nothing written");
   Image color = target.read(0);
   write_image(a.output, color);
@@ -268,8 +269,7 @@ void run_script(const std::string& path, const std::string& context_name) {
 
 void add_render_command(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
-  auto* cmd =
-      app.add_subcommand("render", gl_command_summary("render"));
+  auto* cmd = app.add_subcommand("render", gl_command_summary("render"));
   auto script = std::make_shared<std::string>();
   auto* input = cmd->add_option("input", a->input, "input mesh")->check(CLI::ExistingFile);
   auto* output = cmd->add_option("-o,--output", a->output, "output image (.png)");

@@ -300,9 +300,9 @@ TEST_F(EditorEditing, ScreenshotsOfAMultiSelectionAndOfFramingBesideThePanels) {
 
   Events home;
   home.wait(3).key("home").wait(3);
-  const auto framed = test::play_editor(dir_, dir_.file("original.ply"), home, 900, 600,
-                                        "--screenshot " + artefact("torus_framed.png") + " --stats " +
-                                            dir_.file("stats.json"));
+  const auto framed =
+      test::play_editor(dir_, dir_.file("original.ply"), home, 900, 600,
+                        "--screenshot " + artefact("torus_framed.png") + " --stats " + dir_.file("stats.json"));
   ASSERT_EQ(framed.exit_code, 0) << framed.output;
   // The surface (warm clay) lies left of the panels (where the layout kept from the 1024-pixel run
   // put them: the free region's right edge, 8 pixels before them).
