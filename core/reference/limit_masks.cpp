@@ -41,12 +41,15 @@ PutLimit<T> store_in(std::vector<T>& out) {
   return [&out](int v, const T& limit) { out[size_t(v)] = limit; };
 }
 
-// The limit mask under the rule of v's remaining sharpness; false for a smooth or dart vertex
-// (dart_limit_mask, or the scheme's smooth mask).
-bool sharp_limit_mask(const MeshConnectivity& c, const CreaseLevel& creases, int v, VertexMask& mask) {
+// The limit mask under the rule of v's remaining sharpness: a crease, a corner, or a dart of an
+// infinitely sharp edge (core/reference/dart_limit_mask.h, quads or triangles with β `kind`); false
+// for a smooth vertex or a semi-sharp dart, whose scheme's smooth mask applies.
+bool sharp_limit_mask(const PolygonTopology& t, const MeshConnectivity& c, const CreaseLevel& creases, int v,
+                      bool quads, LoopBeta kind, VertexMask& mask) {
   int a = -1, b = -1;
   const VertexRule rule = vertex_rule(c, creases, v, &a, &b);
-  if (rule == VertexRule::smooth || rule == VertexRule::dart) return false;
+  if (rule == VertexRule::smooth) return false;
+  if (rule == VertexRule::dart) return dart_limit_mask(t, c, creases, v, quads, kind, mask);
   sharp_vertex_mask(rule, v, a, b, BoundaryRule::limit, mask);
   return true;
 }
@@ -63,7 +66,7 @@ void catmull_clark_limit(const PolygonTopology& t, const MeshConnectivity& c, co
   apply_masks(
       n, p,
       [&](int v, VertexMask& mask) {
-        if (!sharp_limit_mask(c, *creases, v, mask) && !dart_limit_mask(t, c, *creases, v, true, LoopBeta::loop, mask))
+        if (!sharp_limit_mask(t, c, *creases, v, true, LoopBeta::loop, mask))
           catmull_clark_smooth_limit_mask(t, c, v, mask);
       },
       put);
@@ -80,8 +83,7 @@ void loop_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::
   apply_masks(
       t.n_vertices, p,
       [&](int v, VertexMask& mask) {
-        if (!sharp_limit_mask(c, *creases, v, mask) && !dart_limit_mask(t, c, *creases, v, false, kind, mask))
-          loop_smooth_limit_mask(c, v, kind, mask);
+        if (!sharp_limit_mask(t, c, *creases, v, false, kind, mask)) loop_smooth_limit_mask(c, v, kind, mask);
       },
       put);
 }
