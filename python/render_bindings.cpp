@@ -2,9 +2,12 @@
 // float32 numpy arrays, and read_image / write_image through OpenImageIO.
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
+#include "core/fitting/limit_scalars.h"
 #include "core/mesh/covariance_mesh.h"
 #include "core/mesh/error.h"
 #include "python/arrays.h"
@@ -15,6 +18,7 @@
 #include "render/gl/render_target.h"
 #include "render/image/image_io.h"
 #include "render/image/matcap_file.h"
+#include "render/image/scalar_colouring.h"
 #include "render/pipeline/render_framing.h"
 #include "render/pipeline/surface_renderer.h"
 #include "view/camera.h"
@@ -62,7 +66,36 @@ struct RenderSettings {
   float sigma;
   std::vector<float> background;
   std::string context;
+  std::optional<std::vector<double>> scalars;  // one per control vertex
+  std::string colormap;
+  std::optional<std::vector<double>> scalar_range;  // (low, high); None: the scalars' own
 };
+
+// The (low, high) the scalars are mapped over, checked with the scalars against `mesh`.
+std::array<double, 2> checked_scalar_range(const CovarianceMesh& mesh, const RenderSettings& r) {
+  if (!is_colormap(r.colormap))
+    throw py::value_error("colormap: expected 'viridis', 'coolwarm' or 'gray', got '" + r.colormap + "'");
+  if (!r.scalars) {
+    if (r.scalar_range) throw py::value_error("scalar_range: given without scalars");
+    return {0, 1};
+  }
+  const std::vector<double>& s = *r.scalars;
+  if (s.size() != mesh.n_vertices())
+    throw py::value_error("scalars: expected one per vertex (" + std::to_string(mesh.n_vertices()) + "), got " +
+                          std::to_string(s.size()));
+  for (size_t i = 0; i < s.size(); ++i)
+    if (!std::isfinite(s[i]))
+      throw py::value_error("scalars: the scalar of vertex " + std::to_string(i) + " is not finite");
+  if (r.scalar_range) {
+    const std::vector<double>& range = *r.scalar_range;
+    if (range.size() != 2 || !std::isfinite(range[0]) || !std::isfinite(range[1]) || !(range[0] < range[1]))
+      throw py::value_error("scalar_range: expected (low, high), finite, low < high");
+    return {range[0], range[1]};
+  }
+  if (s.empty()) return {0, 1};
+  const auto [low, high] = std::minmax_element(s.begin(), s.end());
+  return {*low, *high};
+}
 
 // The surface `plans` (planned for `mesh`, or planned here under `options` when empty) drawn off-screen.
 FloatImage render(std::shared_ptr<const CovarianceMesh> mesh, std::shared_ptr<const PlannedSurface> plans,
@@ -94,6 +127,7 @@ FloatImage render(std::shared_ptr<const CovarianceMesh> mesh, std::shared_ptr<co
   o.sigma_scale = r.sigma;
   o.background = {r.background[0], r.background[1], r.background[2]};
   const ContextKind kind = context_named(r.context);
+  const std::array<double, 2> range = checked_scalar_range(*mesh, r);
   Image matcap_image = load_matcap(r.matcap);
   const Image color = call_in_background(
       [=, matcap_image = std::move(matcap_image)](CallControl&) {
@@ -108,7 +142,14 @@ FloatImage render(std::shared_ptr<const CovarianceMesh> mesh, std::shared_ptr<co
         renderer.draw(target,
                       render_camera(renderer, *mesh, r.camera.value_or(std::vector<float>{}), 1, o, r.width, r.height),
                       o);
-        return target.read(0);
+        Image colour = target.read(0);
+        if (r.scalars) {
+          const std::shared_ptr<const PlannedSurface> surface =
+              plans ? plans : std::make_shared<const PlannedSurface>(*mesh, options);
+          colour_by_scalars(colour, target.read(1), r.colormap, range[0], range[1],
+                            [&](const std::vector<Vec3>& at) { return limit_scalars_at(*surface, *r.scalars, at); });
+        }
+        return colour;
       },
       py::none(), false);
   return to_array(color);
@@ -119,7 +160,10 @@ constexpr const char* kRenderDoc =
     "1], top row first. level 0: adaptive (pixels: target edge length, 0 for the default); camera: (yaw, pitch[, "
     "distance]) in degrees, None to frame the mesh; matcap: clay, porcelain, jade, red-wax or an image file; mode: "
     "matcap, normals or flat; mesh_lines, wireframe, ellipsoids (sigma: their scale) overlays; background: (r, g, "
-    "b) in [0, 1]; context: auto, osmesa or egl.";
+    "b) in [0, 1]; context: auto, osmesa or egl. scalars: one number per control vertex, carried to the limit "
+    "surface as a primvar (the same limit weights as the points) and drawn through colormap (viridis, coolwarm or "
+    "gray) over scalar_range (low, high; None: the scalars' least and greatest), shaded by the surface's "
+    "brightness.";
 
 }  // namespace
 
@@ -129,30 +173,35 @@ void add_render_bindings(py::module_& m) {
       [](const MeshHandle& mesh, int width, int height, int level, float pixels, const std::string& matcap,
          const std::string& mode, std::optional<std::vector<float>> camera, bool mesh_lines, bool wireframe,
          bool ellipsoids, float sigma, std::vector<float> background, const std::string& scheme,
-         const std::string& loop_beta, const std::string& context) {
+         const std::string& loop_beta, const std::string& context, std::optional<std::vector<double>> scalars,
+         const std::string& colormap, std::optional<std::vector<double>> scalar_range) {
         return render(mesh.mesh, nullptr, plan_options_named(scheme, loop_beta),
                       {width, height, level, pixels, matcap, mode, camera, mesh_lines, wireframe, ellipsoids, sigma,
-                       background, context});
+                       background, context, std::move(scalars), colormap, std::move(scalar_range)});
       },
       py::arg("mesh"), py::arg("width") = 800, py::arg("height") = 600, py::arg("level") = 0, py::arg("pixels") = 0.0f,
       py::arg("matcap") = "clay", py::arg("mode") = "matcap", py::arg("camera") = py::none(),
       py::arg("mesh_lines") = false, py::arg("wireframe") = false, py::arg("ellipsoids") = false,
       py::arg("sigma") = 1.0f, py::arg("background") = std::vector<float>{1, 1, 1}, py::arg("scheme") = "auto",
-      py::arg("loop_beta") = "loop", py::arg("context") = "auto", kRenderDoc);
+      py::arg("loop_beta") = "loop", py::arg("context") = "auto", py::arg("scalars") = py::none(),
+      py::arg("colormap") = "viridis", py::arg("scalar_range") = py::none(), kRenderDoc);
   const py::object surface_class = m.attr("Surface");
   surface_class.attr("render") = py::cpp_function(
       [](const SurfaceHandle& s, int width, int height, int level, float pixels, const std::string& matcap,
          const std::string& mode, std::optional<std::vector<float>> camera, bool mesh_lines, bool wireframe,
-         bool ellipsoids, float sigma, std::vector<float> background, const std::string& context) {
+         bool ellipsoids, float sigma, std::vector<float> background, const std::string& context,
+         std::optional<std::vector<double>> scalars, const std::string& colormap,
+         std::optional<std::vector<double>> scalar_range) {
         return render(s.mesh, s.surface, s.options,
                       {width, height, level, pixels, matcap, mode, camera, mesh_lines, wireframe, ellipsoids, sigma,
-                       background, context});
+                       background, context, std::move(scalars), colormap, std::move(scalar_range)});
       },
       py::name("render"), py::is_method(surface_class), py::sibling(py::getattr(surface_class, "render", py::none())),
       py::arg("width") = 800, py::arg("height") = 600, py::arg("level") = 0, py::arg("pixels") = 0.0f,
       py::arg("matcap") = "clay", py::arg("mode") = "matcap", py::arg("camera") = py::none(),
       py::arg("mesh_lines") = false, py::arg("wireframe") = false, py::arg("ellipsoids") = false,
       py::arg("sigma") = 1.0f, py::arg("background") = std::vector<float>{1, 1, 1}, py::arg("context") = "auto",
+      py::arg("scalars") = py::none(), py::arg("colormap") = "viridis", py::arg("scalar_range") = py::none(),
       "As gpsurf.render draws a mesh, from the surface's kept plans (its own scheme): a height x width x 4 float32 "
       "RGBA array.");
   m.def(

@@ -89,6 +89,9 @@ class Surface:
         sigma: float = 1.0,
         background: Sequence[float] = ...,
         context: str = "auto",
+        scalars: Optional[npt.ArrayLike] = None,
+        colormap: str = "viridis",
+        scalar_range: Optional[Sequence[float]] = None,
     ) -> npt.NDArray[np.float32]: ...
 
 def read(
@@ -159,6 +162,9 @@ def render(
     scheme: str = "auto",
     loop_beta: str = "loop",
     context: str = "auto",
+    scalars: Optional[npt.ArrayLike] = None,
+    colormap: str = "viridis",
+    scalar_range: Optional[Sequence[float]] = None,
 ) -> npt.NDArray[np.float32]: ...
 def read_image(path: PathLike) -> npt.NDArray[np.float32]: ...
 def write_image(path: PathLike, image: npt.ArrayLike) -> None: ...

@@ -165,3 +165,38 @@ def test_surface_render_equals_render():
     cone = gpsurf.sample("cone-pointy")
     image = gpsurf.render(cone, 64, 48, camera=(30, 20))
     assert np.array_equal(gpsurf.Surface(cone).render(64, 48, camera=(30, 20)), image)
+
+
+def square_grid(n):
+    """An n x n grid of quads over [-1, 1]² in the plane z = 0."""
+    xs = np.linspace(-1, 1, n + 1)
+    x, y = np.meshgrid(xs, xs)
+    positions = np.stack([x.ravel(), y.ravel(), np.zeros(x.size)], axis=1)
+    faces = [[j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i]
+             for j in range(n) for i in range(n)]
+    return gpsurf.Mesh(positions, np.array(faces))
+
+
+@pytest.mark.skipif(not hasattr(gpsurf, "render"), reason="built without GL")
+def test_render_colours_by_scalars_through_the_colormap():
+    grid = square_grid(12)
+    right = (grid.positions[:, 0] > 0).astype(float)
+    ends = {"viridis": ((0x44, 0x01, 0x54), (0xfd, 0xe7, 0x25)), "coolwarm": ((0x3b, 0x4c, 0xc0), (0xb4, 0x04, 0x26)),
+            "gray": ((0, 0, 0), (255, 255, 255))}
+    for colormap, (low, high) in ends.items():
+        image = gpsurf.render(grid, 200, 200, scalars=right, colormap=colormap)
+        # The scalar is 0 on the left half and 1 on the right; away from the middle its limit is too.
+        assert np.allclose(image[100, 30:60, :3], np.array(low) / 255, atol=1 / 255), colormap
+        assert np.allclose(image[100, 140:170, :3], np.array(high) / 255, atol=1 / 255), colormap
+        assert np.array_equal(gpsurf.Surface(grid).render(200, 200, scalars=right, colormap=colormap), image)
+    # A range past the scalars' own maps them inside it: 0 and 1 of [-1, 3] at a quarter and a half.
+    image = gpsurf.render(grid, 200, 200, scalars=right, colormap="gray", scalar_range=(-1, 3))
+    assert np.allclose(image[100, 30, :3], 0x40 / 255, atol=1 / 255)
+    assert np.allclose(image[100, 170, :3], 0x80 / 255, atol=1 / 255)
+    # Without scalars, the surface's own shading.
+    assert not np.allclose(gpsurf.render(grid, 200, 200)[100, 30, :3], np.array(ends["viridis"][0]) / 255, atol=0.05)
+    for bad in ({"scalars": right[:-1]}, {"scalars": np.where(right > 0, np.nan, 0)}, {"colormap": "jet"},
+                {"scalars": right, "scalar_range": (1, 1)}, {"scalars": right, "scalar_range": (0, np.inf)},
+                {"scalar_range": (0, 1)}):
+        with pytest.raises(ValueError, match=list(bad)[-1]):
+            gpsurf.render(grid, 32, 32, **bad)
