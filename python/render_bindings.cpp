@@ -126,6 +126,7 @@ FloatImage render(std::shared_ptr<const CovarianceMesh> mesh, std::shared_ptr<co
   o.ellipsoids = r.ellipsoids;
   o.sigma_scale = r.sigma;
   o.background = {r.background[0], r.background[1], r.background[2]};
+  o.surface_cache = false;  // one image: captured triangles would never be drawn again
   const ContextKind kind = context_named(r.context);
   const std::array<double, 2> range = checked_scalar_range(*mesh, r);
   Image matcap_image = load_matcap(r.matcap);
