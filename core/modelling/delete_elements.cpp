@@ -6,16 +6,12 @@
 #include <unordered_map>
 
 #include "core/mesh/error.h"
+#include "core/modelling/operation_words.h"
 
 namespace gps {
 
 namespace {
 
-std::string count_of(size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
-std::string edge_name(int a, int b) { return "edge " + std::to_string(a) + "–" + std::to_string(b); }
 
 /// "<head>: F faces, V vertices removed" (the faces left out when `count_faces` is false, the
 /// vertices when none were removed).

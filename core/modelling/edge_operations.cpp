@@ -6,12 +6,11 @@
 #include <string>
 
 #include "core/mesh/error.h"
+#include "core/modelling/operation_words.h"
 
 namespace gps {
 
 namespace {
-
-std::string edge_name(int a, int b) { return "edge " + std::to_string(a) + "–" + std::to_string(b); }
 
 void check_edge(const MeshArrays& arrays, const DirectedEdges& edges, int a, int b) {
   check_vertex(arrays, a);

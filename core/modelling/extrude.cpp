@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/mesh/error.h"
+#include "core/modelling/operation_words.h"
 
 namespace gps {
 
@@ -17,11 +18,7 @@ namespace {
 
 const char* const kClosedPart = "extruding every face of a closed part would leave nothing to join";
 
-std::string count_of(size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
 
-std::string edge_name(int a, int b) { return "edge " + std::to_string(a) + "–" + std::to_string(b); }
 
 void check_offset(const Vec3& offset) {
   if (!offset.allFinite()) {

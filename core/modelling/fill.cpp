@@ -7,12 +7,11 @@
 
 #include "core/mesh/error.h"
 #include "core/modelling/mesh_queries.h"
+#include "core/modelling/operation_words.h"
 
 namespace gps {
 
 namespace {
-
-std::string edge_name(int a, int b) { return "edge " + std::to_string(a) + "–" + std::to_string(b); }
 
 // Where each boundary vertex lies: (loop, position in it); (−1, −1) for a vertex on no boundary.
 struct BoundaryPlaces {

@@ -8,20 +8,12 @@
 
 #include "core/mesh/error.h"
 #include "core/modelling/extrude.h"
+#include "core/modelling/operation_words.h"
 
 namespace gps {
 
 namespace {
 
-std::string count_of(size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
-std::string number(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
 
 /// The inner copy of a sector's vertex: moved along the bisector of its boundary edges so that the
 /// inner edges lie `thickness` inside, with the covariance of the 9D blend towards the fan's face points.
@@ -56,7 +48,7 @@ Gaussian inner_copy(const MeshArrays& a, const FaceRegion::Sector& s, double thi
   const Vec3 centre = blend_gaussians(a, weights).mean;
   const double t = (moved - p).norm() / (centre - p).norm();
   if (!(t < 1))
-    throw Error("a thickness of " + number(thickness) + " would carry " + vertex + " past the centre of face " +
+    throw Error("a thickness of " + short_number(thickness) + " would carry " + vertex + " past the centre of face " +
                 std::to_string(*fan.begin()));
   for (auto& [v, w_v] : weights) w_v *= t;
   weights.emplace_back(s.vertex, 1 - t);
@@ -67,7 +59,7 @@ Gaussian inner_copy(const MeshArrays& a, const FaceRegion::Sector& s, double thi
 
 Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double thickness) {
   if (!(std::isfinite(thickness) && thickness > 0))
-    throw Error("thickness " + number(thickness) + " is not a positive number");
+    throw Error("thickness " + short_number(thickness) + " is not a positive number");
   MeshArrays a = arrays_of(mesh);
   const FaceRegion r = face_region(a, faces);
   if (r.has_closed_part) throw Error("insetting every face of a closed part would leave no border to inset from");
@@ -94,7 +86,7 @@ Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, 
       kept = now.dot(was) > 0;
     }
     if (!kept)
-      throw Error("a thickness of " + number(thickness) + " would turn face " + std::to_string(f) + " inside out");
+      throw Error("a thickness of " + short_number(thickness) + " would turn face " + std::to_string(f) + " inside out");
   }
   out.mesh = build_mesh(a);
   out.summary = "inset " + count_of(r.faces.size(), "face", "faces") + ": " +

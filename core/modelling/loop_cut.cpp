@@ -7,12 +7,11 @@
 #include <unordered_map>
 
 #include "core/mesh/error.h"
+#include "core/modelling/operation_words.h"
 
 namespace gps {
 
 namespace {
-
-std::string edge_name(int a, int b) { return "edge " + std::to_string(a) + "–" + std::to_string(b); }
 
 // The ring as edges and the quads between them: quads[i] lies between edges[i] and edges[i + 1]
 // (for a closed ring, the last between the last edge and the first).
@@ -91,11 +90,6 @@ double cut_fraction(int k, int cuts, double slide) {
   return slide <= 0 ? s * (1 + slide) : s + slide * (1 - s);
 }
 
-std::string number(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
 
 }  // namespace
 
@@ -106,7 +100,7 @@ EdgeRing edge_ring(const CovarianceMesh& mesh, int a, int b) {
 
 Modelled loop_cut(const CovarianceMesh& mesh, int a, int b, int cuts, double slide) {
   if (cuts < 1 || cuts > 64) throw Error("the number of cuts must be 1..64, got " + std::to_string(cuts));
-  if (!(std::abs(slide) < 1)) throw Error("the slide must be in (−1, 1), got " + number(slide));
+  if (!(std::abs(slide) < 1)) throw Error("the slide must be in (−1, 1), got " + short_number(slide));
   MeshArrays arrays = arrays_of(mesh);
   const DirectedEdges edges = directed_edges(arrays);
   const Ring r = ring_of(arrays, edges, a, b);
