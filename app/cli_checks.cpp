@@ -8,7 +8,7 @@
 
 #include "core/io/number_text.h"
 #include "core/io/quoted_text.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -14,7 +14,7 @@
 #include "bench/frame_figures.h"
 #include "bench/preprocess_figures.h"
 #include "core/io/atomic_file.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "render/gl/gl_context.h"
 #include "render/image/line_plot.h"

@@ -4,7 +4,7 @@
 #include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/gl_commands.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/image/difference_image.h"
 
 namespace gps {

@@ -7,7 +7,7 @@
 #include "core/io/mesh_io.h"
 #include "core/io/quoted_text.h"
 #include "core/io/text_file.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "core/modelling/operation_list.h"
 

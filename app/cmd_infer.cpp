@@ -6,7 +6,7 @@
 #include "app/commands.h"
 #include "app/repair_arguments.h"
 #include "core/mesh/crease_by_angle.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/inference.h"
 #include "core/io/mesh_io.h"
 

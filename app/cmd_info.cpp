@@ -6,7 +6,7 @@
 
 #include "app/commands.h"
 #include "app/repair_arguments.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/io/mesh_io.h"
 #include "core/plans/planned_surface.h"

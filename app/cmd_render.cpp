@@ -11,7 +11,7 @@
 #include "app/gl_commands.h"
 #include "app/plan_arguments.h"
 #include "app/repair_arguments.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
 #include "core/modelling/operation_list.h"

@@ -3,7 +3,7 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
 

@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "app/cli_checks.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/support/freed_memory.h"
 #include "ui/editor.h"
 #include "view/camera.h"

@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "core/io/quoted_text.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/io/quoted_text.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -18,7 +18,7 @@
 #include "bench/gl_bench_cases.h"
 #include "bench/run_benchmarks.h"
 #include "core/mesh/crease_by_angle.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "core/plans/planned_surface.h"
 #include "core/plans/sharpness_replanner.h"

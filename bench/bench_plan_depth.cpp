@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/plans/planned_surface.h"
 #include "core/mesh/samples.h"
 #include "bench/gl_bench_cases.h"

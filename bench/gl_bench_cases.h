@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/inference.h"
 #include "core/io/mesh_import.h"
 #include "core/io/ply_io.h"

@@ -3,7 +3,7 @@
 
 #include "core/io/mesh_io.h"
 #include "core/mesh/covariance_mesh.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/inference.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/mesh/samples.h"

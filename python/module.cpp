@@ -4,7 +4,7 @@
 // gpsurf.Error with the same one-line message; a cancelled call raises gpsurf.Cancelled.
 #include <pybind11/pybind11.h>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/support/progress.h"
 #include "core/version.h"
 #include "python/bindings.h"

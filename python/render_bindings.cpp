@@ -9,7 +9,7 @@
 
 #include "core/fitting/limit_scalars.h"
 #include "core/mesh/covariance_mesh.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "python/arrays.h"
 #include "python/background_call.h"
 #include "python/bindings.h"

@@ -6,7 +6,7 @@
 #include "core/evaluation/patch_eval.h"
 #include "core/evaluation/tessellator.h"
 #include "core/mesh/covariance_mesh.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/plans/patch_layout.h"
 #include "core/plans/planned_surface.h"

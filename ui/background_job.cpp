@@ -2,7 +2,7 @@
 
 #include <new>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -7,7 +7,7 @@
 #include <utility>
 #include <unistd.h>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 namespace {

@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/atomic_file.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/gl/gl_context.h"
 #include "render/image/image_io.h"
 #include "render/image/matcap.h"

@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "render/image/matcap_file.h"
 #include "ui/editor_app.h"

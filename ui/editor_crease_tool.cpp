@@ -6,7 +6,7 @@
 #include <cmath>
 #include <memory>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/sharpness.h"
 #include "core/modelling/crease_edges.h"
 #include "core/modelling/mesh_queries.h"

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/modelling/inset.h"
 #include "core/modelling/mesh_queries.h"
 #include "ui/editor_app.h"

@@ -12,7 +12,7 @@
 #include "core/fitting/mesh_simplification.h"
 #include "core/fitting/surface_distance.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "ui/editor_app.h"
 
 namespace gps {

@@ -11,7 +11,7 @@
 #include <cstdio>
 
 #include "core/edit/covariance_edit.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/modelling/affine_transform.h"
 #include "core/modelling/bridge.h"

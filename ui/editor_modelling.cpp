@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "core/edit/covariance_edit.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/modelling/bridge.h"
 #include "core/modelling/delete_elements.h"

@@ -6,7 +6,7 @@
 #include <array>
 #include <set>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/modelling/mesh_queries.h"
 #include "ui/editor_app.h"
 #include "view/element_picking.h"

@@ -8,7 +8,7 @@
 #include <type_traits>
 
 #include "core/io/atomic_file.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

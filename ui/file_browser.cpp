@@ -7,7 +7,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "ui/input_events.h"
 
 namespace gps {

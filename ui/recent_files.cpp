@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "core/io/atomic_file.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "ui/editor_settings.h"
 
 namespace gps {

@@ -6,7 +6,7 @@
 
 #include "core/io/mesh_io.h"
 #include "core/io/mesh_repair.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -3,7 +3,7 @@
 #include <new>
 
 #include "core/io/mesh_io.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

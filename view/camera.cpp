@@ -5,7 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

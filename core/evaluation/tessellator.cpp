@@ -4,7 +4,7 @@
 #include <map>
 #include <numeric>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/evaluation/patch_eval.h"
 #include "core/evaluation/tessellation_size.h"
 

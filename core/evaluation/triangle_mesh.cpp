@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "core/io/atomic_file.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/io/mesh_io.h"
 #include "core/io/quoted_text.h"
 

@@ -16,7 +16,7 @@
 #include "core/support/memory_budget.h"
 
 #include "core/evaluation/patch_eval.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

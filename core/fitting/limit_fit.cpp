@@ -12,7 +12,7 @@
 #include "core/fitting/closest_points.h"
 #include "core/fitting/limit_weights.h"
 #include "core/mesh/dual_map.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/plans/stencil_table.h"
 
 namespace gps {

@@ -5,7 +5,7 @@
 
 #include "core/fitting/closest_points.h"
 #include "core/fitting/limit_weights.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -10,7 +10,7 @@
 #include <OpenMesh/Core/Geometry/QuadricT.hh>
 
 #include "core/fitting/halfedge_collapse.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 namespace {

@@ -12,7 +12,7 @@
 #include "core/evaluation/tessellation_size.h"
 #include "core/fitting/distance_tree_size.h"
 #include "core/evaluation/tessellator.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -15,7 +15,7 @@
 #include "core/io/file_kind.h"
 #include "core/io/quoted_text.h"
 #include "core/io/save_target.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

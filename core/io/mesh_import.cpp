@@ -8,7 +8,7 @@
 #include <sstream>
 #include <unordered_set>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/io/number_text.h"
 #include "core/io/quoted_text.h"

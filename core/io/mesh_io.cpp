@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "core/io/atomic_file.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/inference.h"
 #include "core/io/mesh_import.h"
 #include "core/io/ply_io.h"

@@ -9,7 +9,7 @@
 
 #include "core/io/file_kind.h"
 #include "core/io/quoted_text.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 namespace {

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "core/mesh/dual_map.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 
 namespace gps {

@@ -3,7 +3,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

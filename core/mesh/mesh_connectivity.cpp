@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 #include "core/plans/patch_layout.h"
 

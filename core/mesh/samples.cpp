@@ -5,7 +5,7 @@
 #include <map>
 #include <numbers>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/inference.h"
 #include "core/reference/loop.h"
 

@@ -4,7 +4,7 @@
 #include <limits>
 #include <unordered_map>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -5,7 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/operation_words.h"
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/operation_words.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/modelling/operation_words.h"
 
 namespace gps {

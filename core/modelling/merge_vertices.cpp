@@ -7,7 +7,7 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -12,7 +12,7 @@
 #include "core/io/json_text.h"
 #include "core/io/quoted_text.h"
 #include "core/mesh/covariance_mesh.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/modelling/affine_transform.h"
 #include "core/modelling/bridge.h"
 #include "core/modelling/crease_edges.h"

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/plans/planned_surface.h"
 #include "core/reference/reference_subdivision.h"

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <map>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/extraordinary/loop_extraordinary_tables.h"
 #include "core/plans/loop_crease_plan_builder.h"
 #include "core/plans/loop_nets.h"

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/sparse_lists.h"
 
 namespace gps {

@@ -6,7 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/plans/local_mesh.h"
 #include "core/plans/plan_descent.h"
 #include "core/extraordinary/quad_extraordinary_tables.h"

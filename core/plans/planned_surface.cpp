@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "core/mesh/dual_map.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/plans/loop_plan_builder.h"
 #include "core/plans/patch_adjacency.h"
 #include "core/reference/reference_subdivision.h"

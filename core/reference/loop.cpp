@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/linalg.h"
 #include "core/reference/crease_rules.h"
 #include "core/reference/vertex_mask.h"

@@ -7,7 +7,7 @@
 #include "core/reference/crease_rules.h"
 #include "core/reference/loop_connectivity.h"
 #include "core/mesh/dual_map.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/reference/limit_masks.h"
 #include "core/reference/limit_tangents.h"
 #include "core/reference/subdivision_size.h"

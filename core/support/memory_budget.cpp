@@ -11,7 +11,7 @@
 #include <string_view>
 
 #include "core/io/quoted_text.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

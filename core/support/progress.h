@@ -3,7 +3,7 @@
 // caller stops it: the editor runs these in the background with a progress bar and a Cancel button.
 #include <functional>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

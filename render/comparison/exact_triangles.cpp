@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/evaluation/patch_eval.h"
 #include "core/plans/stencil_table.h"
 #include "render/comparison/patch_triangles.h"

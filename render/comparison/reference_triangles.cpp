@@ -5,7 +5,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/reference/reference_subdivision.h"
 #include "render/comparison/patch_triangles.h"
 

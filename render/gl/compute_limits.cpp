@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/pipeline/gpu_layout.h"
 
 namespace gps {

@@ -10,7 +10,7 @@
 #include <mutex>
 #include <vector>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/gl/driver_heap.h"
 
 namespace gps {

@@ -2,7 +2,7 @@
 
 #include <glad/gl.h>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/gl/gl_context.h"
 
 namespace gps {

@@ -4,7 +4,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

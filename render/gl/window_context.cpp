@@ -4,7 +4,7 @@
 
 #include <GLFW/glfw3.h>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/gl/driver_heap.h"
 
 namespace gps {

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <unistd.h>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/io/mesh_io.h"
 
 namespace gps {

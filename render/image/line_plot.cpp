@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

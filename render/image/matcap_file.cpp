@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/image/image_io.h"
 #include "render/image/matcap.h"
 

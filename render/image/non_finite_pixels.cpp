@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/gl/gl_context.h"
 #include "render/overlays/distance_ramp.h"
 #include "render/pipeline/draw_options.h"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/gl/gl_context.h"
 #include "shaders/embedded_shaders.h"
 

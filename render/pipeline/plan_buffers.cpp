@@ -8,7 +8,7 @@
 #include "render/gl/compute_limits.h"
 #include "render/gl/gl_context.h"
 #include "core/mesh/dual_map.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 

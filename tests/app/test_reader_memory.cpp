@@ -16,7 +16,7 @@
 #include <string>
 
 #include "core/io/mesh_io.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 #include "tests/support/measured_run.h"
 #include "tests/support/run_command.h"

@@ -20,7 +20,7 @@
 #include <thread>
 #include <cstring>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {

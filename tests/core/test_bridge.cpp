@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "core/modelling/mesh_queries.h"
 #include "tests/support/error_of.h"

@@ -5,7 +5,7 @@
 
 #include <limits>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 namespace {

@@ -2,7 +2,7 @@
 // operations keeping them: through renumbering, merges and split edges.
 #include <gtest/gtest.h>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "core/modelling/crease_edges.h"
 #include "core/modelling/delete_elements.h"

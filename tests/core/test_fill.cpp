@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/modelling/mesh_queries.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"

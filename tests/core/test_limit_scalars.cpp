@@ -4,7 +4,7 @@
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/limit_scalars.h"
 #include "core/fitting/surface_distance.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 
 namespace gps {

@@ -7,7 +7,7 @@
 #include <Eigen/Cholesky>
 #include <map>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/reference/limit_masks.h"
 #include "core/extraordinary/loop_extraordinary_tables.h"
 #include "core/plans/patch_basis.h"

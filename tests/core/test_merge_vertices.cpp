@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"

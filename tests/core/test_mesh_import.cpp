@@ -9,7 +9,7 @@
 #include <functional>
 #include <random>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/inference.h"
 #include "core/io/mesh_io.h"
 #include "tests/support/temp_dir.h"

@@ -4,7 +4,7 @@
 
 #include <set>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "core/modelling/mesh_arrays.h"
 #include "core/modelling/primitives.h"

@@ -9,7 +9,7 @@
 #include <set>
 
 #include "core/io/mesh_repair.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "core/io/mesh_import.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {

@@ -3,7 +3,7 @@
 // operation before anything is applied.
 #include <gtest/gtest.h>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"

@@ -10,7 +10,7 @@
 
 #include "core/evaluation/tessellation_size.h"
 #include "core/evaluation/tessellator.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/reference/subdivision_size.h"
 #include "core/support/memory_budget.h"
 #include "tests/support/plan_fixture.h"

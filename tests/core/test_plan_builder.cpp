@@ -9,7 +9,7 @@
 #include <random>
 #include <tuple>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/evaluation/patch_eval.h"
 #include "core/plans/patch_layout.h"
 #include "core/reference/reference_subdivision.h"

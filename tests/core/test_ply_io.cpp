@@ -10,7 +10,7 @@
 #include <sstream>
 #include <random>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
 #include "tests/support/random_spd.h"

@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "tests/support/error_of.h"
 

@@ -9,7 +9,7 @@
 #include "core/io/mesh_import.h"
 #include "core/io/mesh_io.h"
 #include "core/io/ply_io.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/error_of.h"
 

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "core/mesh/dual_map.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "tests/support/random_spd.h"
 #include "tests/support/test_meshes.h"

@@ -5,7 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <tuple>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/reference/reference_subdivision.h"
 

@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "core/plans/planned_surface.h"
 #include "core/plans/sharpness_replanner.h"

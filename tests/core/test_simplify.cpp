@@ -11,7 +11,7 @@
 
 #include "core/fitting/mesh_simplification.h"
 #include "core/fitting/surface_distance.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/inference.h"
 #include "core/mesh/samples.h"
 

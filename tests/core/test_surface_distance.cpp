@@ -6,7 +6,7 @@
 #include <random>
 
 #include "core/fitting/surface_distance.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/inference.h"
 
 namespace gps {

@@ -4,7 +4,7 @@
 
 #include <map>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "tests/support/plan_fixture.h"
 
 namespace gps {

@@ -12,7 +12,7 @@
 #include <functional>
 
 #include "core/io/mesh_io.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/error_of.h"
 

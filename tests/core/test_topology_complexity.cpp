@@ -9,7 +9,7 @@
 #include <functional>
 #include <random>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/inference.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/plans/plan_builder.h"

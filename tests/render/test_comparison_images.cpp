@@ -15,7 +15,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "render/image/difference_image.h"
 #include "render/comparison/exact_triangles.h"

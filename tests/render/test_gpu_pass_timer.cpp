@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "render/gl/render_target.h"
 #include "tests/support/gl_fixture.h"
 

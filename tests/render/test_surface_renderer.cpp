@@ -10,7 +10,7 @@
 #include <map>
 #include <tuple>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/evaluation/patch_eval.h"
 #include "core/reference/reference_subdivision.h"
 #include "core/io/mesh_io.h"

@@ -3,7 +3,7 @@
 #include <functional>
 #include <string>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps::test {
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <unistd.h>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/temp_dir.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
 #include "core/mesh/samples.h"

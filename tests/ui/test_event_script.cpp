@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/temp_dir.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 
 namespace gps {
 namespace {

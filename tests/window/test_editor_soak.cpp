@@ -11,7 +11,7 @@
 #include <fstream>
 
 #include "../support/random_events.h"
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/samples.h"
 #include "core/io/text_file.h"

@@ -6,7 +6,7 @@
 
 #include <cstdlib>
 
-#include "core/mesh/error.h"
+#include "core/support/error.h"
 #include "core/mesh/samples.h"
 #include "render/pipeline/surface_renderer.h"
 
