@@ -7,7 +7,7 @@
 #include <regex>
 
 #include "core/io/number_text.h"
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/support/error.h"
 
 namespace gps {

@@ -5,7 +5,7 @@
 #include "app/commands.h"
 #include "app/repair_arguments.h"
 #include "core/io/mesh_io.h"
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/io/text_file.h"
 #include "core/support/error.h"
 #include "core/mesh/samples.h"

@@ -17,7 +17,7 @@
 #include "core/modelling/operation_list.h"
 #include "core/io/json_text.h"
 #include "core/io/number_text.h"
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/io/text_file.h"
 #include "render/comparison/exact_triangles.h"
 #include "render/gl/gl_context.h"

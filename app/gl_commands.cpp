@@ -10,7 +10,7 @@
 #include <string>
 #include <system_error>
 
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 
 namespace gps {
 

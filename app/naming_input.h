@@ -3,7 +3,7 @@
 #include <string>
 #include <utility>
 
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/support/error.h"
 
 namespace gps {

@@ -4,7 +4,7 @@
 #include <new>
 #include <string>
 
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/support/error.h"
 
 namespace gps {

@@ -47,5 +47,5 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:detect_odr_violation=0:veri
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 cd build-asan
-# The installed-package check builds the library apart, without the sanitizers.
+# The installed-package check installs the plain build's package, not this one.
 ctest --output-on-failure -j"$(nproc)" --timeout 900 -LE install

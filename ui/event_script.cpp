@@ -5,7 +5,7 @@
 
 #include "core/io/atomic_file.h"
 #include "core/io/json_text.h"
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/support/error.h"
 #include "core/io/text_file.h"
 

@@ -7,7 +7,7 @@
 #include "core/io/atomic_file.h"
 #include "core/support/error.h"
 #include "core/io/mesh_io.h"
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 
 namespace gps {
 

@@ -13,7 +13,7 @@
 #include <fstream>
 
 #include "core/io/file_kind.h"
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/io/save_target.h"
 #include "core/support/error.h"
 

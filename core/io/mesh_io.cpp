@@ -8,7 +8,7 @@
 #include "core/mesh/inference.h"
 #include "core/io/mesh_import.h"
 #include "core/io/ply_io.h"
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/io/text_file.h"
 
 namespace gps {

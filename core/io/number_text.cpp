@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 
 namespace gps {
 

@@ -15,7 +15,7 @@
 #include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/io/number_text.h"
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/io/text_file.h"
 #include "core/io/text_words.h"
 

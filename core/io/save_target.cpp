@@ -8,7 +8,7 @@
 #include <cstring>
 
 #include "core/io/file_kind.h"
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/support/error.h"
 
 namespace gps {

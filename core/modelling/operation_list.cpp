@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/json_text.h"
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/mesh/covariance_mesh.h"
 #include "core/support/error.h"
 #include "core/modelling/affine_transform.h"

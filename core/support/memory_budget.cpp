@@ -10,7 +10,7 @@
 #include <limits>
 #include <string_view>
 
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 #include "core/support/error.h"
 
 namespace gps {

@@ -1,5 +1,5 @@
 // Text from files and paths in messages (core/io/quoted_text.h): escaped, quoted and cut.
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 
 #include <gtest/gtest.h>
 

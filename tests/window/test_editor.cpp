@@ -1,4 +1,4 @@
-// gpsurf-editor end to end, in a real window (ctest runs this under xvfb-run, on Mesa): replayed
+// gpsurf-editor end to end, in a real window (ctest runs this under Xvfb, on Mesa): replayed
 // input selects a vertex and drags one of its axis ends; the saved file shows exactly that change;
 // undo restores the original file byte for byte; the screenshot shows the surface and the UI; a
 // malformed file dropped on the window is reported and the mesh stays.

@@ -1,4 +1,4 @@
-// A random-input soak of gpsurf-editor, in a real window (ctest runs it under xvfb-run):
+// A random-input soak of gpsurf-editor, in a real window (ctest runs it under Xvfb):
 // random event scripts (tests/support/random_events.h) on several samples, each replayed to the end
 // without a crash or a hang, and every file the session saved (--save, Ctrl+S over the input) loads
 // with every covariance finite and positive definite. Small here (GPS_SOAK_EVENTS, default 30

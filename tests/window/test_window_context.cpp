@@ -1,4 +1,4 @@
-// A real GLFW window (run under xvfb-run by ctest): the pipeline draws and the frame reaches the window.
+// A real GLFW window (run under Xvfb by ctest): the pipeline draws and the frame reaches the window.
 #include "render/gl/window_context.h"
 
 #include <glad/gl.h>

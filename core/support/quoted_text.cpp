@@ -1,4 +1,4 @@
-#include "core/io/quoted_text.h"
+#include "core/support/quoted_text.h"
 
 namespace gps {
 
