@@ -15,7 +15,7 @@
 #include "bench/preprocess_figures.h"
 #include "core/io/atomic_file.h"
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/gl/gl_context.h"
 #include "render/image/line_plot.h"
 

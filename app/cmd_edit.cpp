@@ -8,7 +8,7 @@
 #include "core/support/quoted_text.h"
 #include "core/io/text_file.h"
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/operation_list.h"
 
 namespace gps {

@@ -13,7 +13,7 @@
 #include "app/repair_arguments.h"
 #include "core/support/error.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/operation_list.h"
 #include "core/io/json_text.h"
 #include "core/io/number_text.h"

@@ -5,7 +5,7 @@
 #include "app/commands.h"
 #include "core/support/error.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace gps {
 

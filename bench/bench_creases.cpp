@@ -19,7 +19,7 @@
 #include "bench/run_benchmarks.h"
 #include "core/mesh/crease_by_angle.h"
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/plans/planned_surface.h"
 #include "core/plans/sharpness_replanner.h"
 #include "render/gl/render_target.h"

@@ -8,7 +8,7 @@
 
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/mesh_simplification.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace {
 

@@ -19,7 +19,7 @@
 #include "core/mesh/mesh_connectivity.h"
 #include "core/plans/plan_builder.h"
 #include "core/reference/reference_subdivision.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace {
 

@@ -15,7 +15,7 @@
 
 #include "core/support/error.h"
 #include "core/plans/planned_surface.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "bench/gl_bench_cases.h"
 #include "bench/run_benchmarks.h"
 #include "render/gl/render_target.h"

@@ -6,7 +6,7 @@
 
 #include "core/mesh/dual_map.h"
 #include "core/plans/plan_builder.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/plans/stencil_table.h"
 
 namespace {

@@ -7,7 +7,7 @@
 
 #include "core/plans/planned_surface.h"
 #include "core/reference/reference_subdivision.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace {
 

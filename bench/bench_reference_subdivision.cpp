@@ -3,7 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "core/reference/reference_subdivision.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace {
 

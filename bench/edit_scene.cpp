@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace gps {
 

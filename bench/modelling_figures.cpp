@@ -5,7 +5,7 @@
 #include <chrono>
 #include <functional>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/affine_transform.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"

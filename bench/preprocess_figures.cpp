@@ -2,7 +2,7 @@
 
 #include "bench/median_timing.h"
 #include "core/mesh/dual_map.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/plans/stencil_table.h"
 
 namespace gps {

@@ -6,7 +6,7 @@
 #include "core/support/error.h"
 #include "core/mesh/inference.h"
 #include "core/mesh/mesh_connectivity.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/mesh/sharpness.h"
 #include "core/fitting/mesh_simplification.h"
 #include "core/modelling/operation_list.h"

@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/image/matcap_file.h"
 #include "ui/editor_app.h"
 

@@ -4,7 +4,7 @@
 
 #include <ctime>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "ui/camera_control.h"
 #include "ui/editor_app.h"
 

@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace gps {
 

@@ -1,25 +1,16 @@
 #include "core/modelling/primitives.h"
 
-#include <array>
 #include <cmath>
-#include <map>
-#include <numbers>
 #include <sstream>
 
+#include "core/modelling/shapes.h"
 #include "core/support/error.h"
 
 namespace gps {
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
-
-// A shape of extent 1 centred at the origin.
-struct Shape {
-  std::vector<Vec3> points;
-  std::vector<std::vector<int>> faces;
-};
-
+// A 2×2 grid of quads on y = 0, facing +y.
 Shape plane() {
   Shape s;
   for (int i = 0; i <= 2; ++i)
@@ -32,111 +23,31 @@ Shape plane() {
   return s;
 }
 
-Shape cube() {
-  Shape s;
-  s.points = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
-  for (Vec3& p : s.points) p *= 0.5;
-  s.faces = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
-  return s;
-}
-
-// A ring of n points of radius r at height y, counter-clockwise seen from +y.
-void add_ring(Shape& s, int n, double r, double y) {
-  for (int k = 0; k < n; ++k) s.points.emplace_back(r * std::cos(2 * pi * k / n), y, -r * std::sin(2 * pi * k / n));
-}
-
-Shape cylinder() {
-  const int n = 8;
-  Shape s;
-  add_ring(s, n, 0.5, -0.5);
-  add_ring(s, n, 0.5, 0.5);
-  std::vector<int> top, bottom;
-  for (int k = 0; k < n; ++k) {
-    s.faces.push_back({k, (k + 1) % n, n + (k + 1) % n, n + k});
-    top.push_back(n + k);
-    bottom.push_back(n - 1 - k);
-  }
-  s.faces.push_back(top);
-  s.faces.push_back(bottom);
-  return s;
-}
-
-Shape cone() {
-  const int n = 8;
-  Shape s;
-  s.points.emplace_back(0, 0.5, 0);
-  add_ring(s, n, 0.5, -0.5);
-  std::vector<int> base;
-  for (int k = 0; k < n; ++k) {
-    s.faces.push_back({0, 1 + k, 1 + (k + 1) % n});
-    base.push_back(n - k);
-  }
-  s.faces.push_back(base);
-  return s;
-}
-
-// A cube whose faces are 2×2 grids, projected to the sphere of radius 1/2.
-Shape sphere() {
-  const int m = 2;
-  Shape s;
-  std::map<std::array<int, 3>, int> index;
-  const auto vertex = [&](std::array<int, 3> g) {
-    const auto [it, added] = index.try_emplace(g, int(s.points.size()));
-    if (added) s.points.push_back(0.5 * Vec3(g[0], g[1], g[2]).normalized());
-    return it->second;
-  };
-  for (int axis = 0; axis < 3; ++axis)
-    for (const int side : {-1, 1}) {
-      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-      for (int i = 0; i < m; ++i)
-        for (int j = 0; j < m; ++j) {
-          std::vector<int> quad;
-          const int du[4] = {0, 1, 1, 0}, dw[4] = {0, 0, 1, 1};
-          for (int k = 0; k < 4; ++k) {
-            const int kk = side > 0 ? k : (4 - k) % 4;
-            std::array<int, 3> g{};
-            g[size_t(axis)] = side * m;
-            g[size_t(u)] = -m + 2 * (i + du[kk]);
-            g[size_t(w)] = -m + 2 * (j + dw[kk]);
-            quad.push_back(vertex(g));
-          }
-          s.faces.push_back(quad);
-        }
-    }
+// The shape scaled about the origin.
+Shape scaled(Shape s, double factor) {
+  for (Vec3& p : s.points) p *= factor;
   return s;
 }
 
 // Ring radius and tube radius in the ratio of the torus sample, outer diameter 1.
 Shape torus() {
-  const int nu = 8, nv = 6;
-  const double tube = 0.5 * 0.7 / 2.7, ring = 0.5 - tube;
-  Shape s;
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const double a = 2 * pi * i / nu, b = 2 * pi * j / nv;
-      s.points.emplace_back((ring + tube * std::cos(b)) * std::cos(a), tube * std::sin(b),
-                            (ring + tube * std::cos(b)) * std::sin(a));
-    }
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const int i1 = (i + 1) % nu, j1 = (j + 1) % nv;
-      s.faces.push_back({i * nv + j, i * nv + j1, i1 * nv + j1, i1 * nv + j});
-    }
-  return s;
+  const double tube = 0.5 * 0.7 / 2.7;
+  return torus_shape(8, 6, 0.5 - tube, tube);
 }
 
+// The primitive of extent 1, centred at the origin.
 Shape shape_of(Primitive p) {
   switch (p) {
     case Primitive::plane:
       return plane();
     case Primitive::cube:
-      return cube();
+      return scaled(cube_shape(), 0.5);
     case Primitive::cylinder:
-      return cylinder();
+      return cylinder_shape(8, 2, 0.5, -0.5, 1.0);
     case Primitive::cone:
-      return cone();
+      return cone_shape(8, 0.5, 0.5, -0.5, true);
     case Primitive::sphere:
-      return sphere();
+      return scaled(cube_sphere_shape(2), 0.5);
     case Primitive::torus:
       return torus();
   }

@@ -25,7 +25,7 @@ std::optional<Primitive> primitive_named(const std::string& name);
 /// octagon caps; cone: 8 triangles to the apex and an octagon base; sphere: a cube-sphere of 24 quads;
 /// torus: 8×6 quads. All but the plane are closed; every face is oriented outward. Every vertex gets
 /// the isotropic covariance σ²·I with σ half the primitive's mean edge length, as the built-in samples
-/// (core/mesh/samples.h, isotropic_covariances). An empty input mesh (no vertices) is allowed.
+/// (core/modelling/samples.h, isotropic_covariances). An empty input mesh (no vertices) is allowed.
 /// Selection: the new vertices.
 Modelled add_primitive(const CovarianceMesh& mesh, Primitive primitive, const Vec3& center, double size);
 /// The same on arrays, for a run of additions that builds its mesh once (OperationList): appends the

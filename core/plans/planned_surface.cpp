@@ -55,18 +55,28 @@ PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& op
   scheme_ = scheme_for(topology, options);
   tables_ = build_surface_plans(topology, options, mesh.sharpness);
   dependents_ = stencil_dependents(tables_.stencils);
-  points_ = apply_stencils(tables_.stencils, base_points(mesh));
+  points_ = base_points(mesh);
 }
 
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, Scheme scheme, SurfaceTables tables)
     : scheme_(scheme), tables_(std::move(tables)) {
   dependents_ = stencil_dependents(tables_.stencils);
-  points_ = apply_stencils(tables_.stencils, base_points(mesh));
+  points_ = base_points(mesh);
+}
+
+const std::vector<Dual>& PlannedSurface::points() const {
+  const std::lock_guard<std::mutex> hold(*points_lock_);
+  if (!rows_computed_) {
+    points_ = apply_stencils(tables_.stencils, points_);
+    rows_computed_ = true;
+  }
+  return points_;
 }
 
 void PlannedSurface::update(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  const std::lock_guard<std::mutex> hold(*points_lock_);
   for (const int v : changed) points_[size_t(v)] = to_dual(mesh.mean(size_t(v)), mesh.covariance(size_t(v)));
-  update_stencils(tables_.stencils, dependents_, changed, points_);
+  if (rows_computed_) update_stencils(tables_.stencils, dependents_, changed, points_);
 }
 
 std::vector<int> PlannedSurface::rows_reading(const std::vector<int>& vertices) const {

@@ -2,6 +2,8 @@
 // The planned surface of a covariance mesh (docs/design.md §2): its plan and stencil tables, built once
 // per topology by the scheme that fits the mesh, and the 9D plan points, kept up to date by edits.
 // The renderer uploads these tables as they are (as OpenSubdiv's Osd takes Far's tables).
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,9 +50,10 @@ public:
 
   Scheme scheme() const { return scheme_; }
   const SurfaceTables& tables() const { return tables_; }
-  /// Every plan point: the base vertices' q, then the stencil rows.
-  const std::vector<Dual>& points() const { return points_; }
-  /// After an edit of `changed` vertices of `mesh`: their q and the rows that read them.
+  /// Every plan point: the base vertices' q, then the stencil rows. The rows are computed on the first
+  /// call (the renderer, which computes its own on the GPU, never asks); safe from several threads.
+  const std::vector<Dual>& points() const;
+  /// After an edit of `changed` vertices of `mesh`: their q and, once computed, the rows that read them.
   void update(const CovarianceMesh& mesh, const std::vector<int>& changed);
   /// The stencil rows that read any of `vertices`, sorted, without repeats.
   std::vector<int> rows_reading(const std::vector<int>& vertices) const;
@@ -59,7 +62,11 @@ private:
   Scheme scheme_;
   SurfaceTables tables_;
   StencilDependents dependents_;
-  std::vector<Dual> points_;
+  /// The base vertices' q, followed by the stencil rows once `rows_computed_`.
+  mutable std::vector<Dual> points_;
+  mutable bool rows_computed_ = false;
+  /// Guards the rows' first computation; shared by copies, which is only coarser.
+  std::shared_ptr<std::mutex> points_lock_ = std::make_shared<std::mutex>();
 };
 
 }  // namespace gps

@@ -7,7 +7,7 @@
 #include "core/evaluation/patch_eval.h"
 #include "core/evaluation/tessellator.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/plans/planned_surface.h"
 #include "core/version.h"
 

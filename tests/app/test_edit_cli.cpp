@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 

@@ -10,7 +10,7 @@
 
 #include <Eigen/Geometry>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/affine_transform.h"
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/error_of.h"

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/mesh_queries.h"
 #include "tests/support/error_of.h"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/mesh/crease_by_angle.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace gps {
 namespace {

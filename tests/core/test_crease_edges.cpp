@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/crease_edges.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/edge_operations.h"

@@ -9,7 +9,7 @@
 
 #include "core/evaluation/patch_eval.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
 

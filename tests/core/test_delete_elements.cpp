@@ -6,7 +6,7 @@
 #include <map>
 #include <set>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/error_of.h"
 
 namespace gps {

@@ -8,7 +8,7 @@
 #include <limits>
 #include <map>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/edge_operations.h"
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/error_of.h"

@@ -7,7 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace gps {
 namespace {

@@ -15,7 +15,7 @@
 #include "core/fitting/mesh_simplification.h"
 #include "core/fitting/surface_distance.h"
 #include "core/mesh/dual_map.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/plans/stencil_table.h"
 
 namespace gps {

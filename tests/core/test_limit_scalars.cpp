@@ -5,7 +5,7 @@
 #include "core/fitting/limit_scalars.h"
 #include "core/fitting/surface_distance.h"
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace gps {
 namespace {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/reference/loop.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/connectivity_equal.h"
 
 namespace gps {

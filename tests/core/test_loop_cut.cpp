@@ -9,7 +9,7 @@
 #include <limits>
 #include <map>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/loop_cut.h"
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/error_of.h"

@@ -14,7 +14,7 @@
 #include "core/evaluation/patch_eval.h"
 #include "core/plans/planned_surface.h"
 #include "core/reference/reference_subdivision.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/evaluation/tessellator.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"

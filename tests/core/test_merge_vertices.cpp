@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
 

@@ -5,7 +5,7 @@
 #include <set>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/mesh_arrays.h"
 #include "core/modelling/primitives.h"
 #include "tests/support/error_of.h"

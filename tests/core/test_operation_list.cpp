@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"

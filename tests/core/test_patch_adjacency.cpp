@@ -10,7 +10,7 @@
 
 #include "core/io/mesh_io.h"
 #include "core/plans/planned_surface.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
 

@@ -9,7 +9,7 @@
 
 #include "core/evaluation/patch_eval.h"
 #include "core/plans/planned_surface.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace gps {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "core/support/error.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/random_spd.h"
 #include "tests/support/temp_dir.h"
 

@@ -9,7 +9,7 @@
 #include "core/io/mesh_io.h"
 #include "core/io/ply_io.h"
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/error_of.h"
 

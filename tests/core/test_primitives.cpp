@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/error_of.h"
 
 namespace gps {

@@ -8,7 +8,7 @@
 
 #include "core/mesh/dual_map.h"
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/random_spd.h"
 #include "tests/support/test_meshes.h"
 

@@ -1,4 +1,4 @@
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 #include <gtest/gtest.h>
 

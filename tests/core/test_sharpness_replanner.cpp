@@ -7,7 +7,7 @@
 #include <random>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/plans/planned_surface.h"
 #include "core/plans/sharpness_replanner.h"
 #include "tests/support/test_meshes.h"

@@ -13,7 +13,7 @@
 #include "core/fitting/surface_distance.h"
 #include "core/support/error.h"
 #include "core/mesh/inference.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace gps {
 namespace {

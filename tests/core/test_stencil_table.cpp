@@ -7,7 +7,7 @@
 
 #include "core/mesh/dual_map.h"
 #include "core/plans/planned_surface.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/plan_fixture.h"
 
 namespace gps {

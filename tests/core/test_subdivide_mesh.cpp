@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <map>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/error_of.h"

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/gl/render_target.h"
 #include "render/image/image_io.h"
 #include "render/pipeline/surface_renderer.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/image/image_io.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"

@@ -16,7 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/image/difference_image.h"
 #include "render/comparison/exact_triangles.h"
 #include "render/image/image_io.h"

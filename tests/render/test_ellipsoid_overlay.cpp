@@ -2,7 +2,7 @@
 // selection's and its neighbours').
 #include <gtest/gtest.h>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 #include "view/camera.h"

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"
 #include "core/evaluation/tessellator.h"

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/evaluation/patch_eval.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/plan_fixture.h"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/gl/render_target.h"
 #include "render/image/non_finite_pixels.h"
 #include "render/pipeline/surface_renderer.h"

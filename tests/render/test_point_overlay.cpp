@@ -7,7 +7,7 @@
 #include <cstdlib>
 
 #include "core/fitting/surface_distance.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/image/image_io.h"
 #include "render/overlays/distance_ramp.h"
 #include "render/overlays/point_overlay.h"

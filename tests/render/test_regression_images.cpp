@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/image/image_io.h"
 #include "render/pipeline/render_framing.h"
 #include "render/pipeline/surface_renderer.h"

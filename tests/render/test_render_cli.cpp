@@ -11,7 +11,7 @@
 #include <filesystem>
 
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/image/image_io.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"

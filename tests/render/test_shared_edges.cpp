@@ -13,7 +13,7 @@
 
 #include "core/io/mesh_io.h"
 #include "core/plans/patch_adjacency.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/test_meshes.h"

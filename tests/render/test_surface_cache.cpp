@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/gl/device_memory.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/render_target.h"

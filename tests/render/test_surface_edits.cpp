@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 

@@ -14,7 +14,7 @@
 #include "core/evaluation/patch_eval.h"
 #include "core/reference/reference_subdivision.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/plans/stencil_table.h"
 #include "core/evaluation/tessellator.h"
 #include "render/pipeline/surface_point.h"

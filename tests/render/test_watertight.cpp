@@ -12,7 +12,7 @@
 #include "core/io/mesh_io.h"
 #include "core/io/mesh_repair.h"
 #include "core/mesh/inference.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/image/image_io.h"
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"

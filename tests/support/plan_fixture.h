@@ -9,7 +9,7 @@
 #include "core/reference/reference_subdivision.h"
 #include "core/plans/plan_builder.h"
 #include "core/plans/planned_surface.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/plans/stencil_table.h"
 
 namespace gps::test {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/random_spd.h"
 
 namespace gps::test {

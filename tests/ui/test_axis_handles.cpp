@@ -6,7 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "view/picking.h"
 
 namespace gps {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "view/picking.h"
 
 namespace gps {

@@ -5,7 +5,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/mesh/inference.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/edit/covariance_edit.h"
 #include "ui/inspector_panel.h"
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/mesh/sharpness.h"
 
 namespace gps {

@@ -6,7 +6,7 @@
 
 #include <map>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace gps {
 namespace {

@@ -6,7 +6,7 @@
 #include "core/support/error.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/loop_cut.h"
 

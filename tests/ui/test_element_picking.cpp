@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "view/visible_vertices.h"
 
 namespace gps {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "ui/camera_control.h"
 
 namespace gps {

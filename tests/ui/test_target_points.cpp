@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {

@@ -6,7 +6,7 @@
 
 #include <Eigen/Geometry>
 
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/delete_elements.h"
 
 namespace gps {

@@ -12,7 +12,7 @@
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/image/image_io.h"
 #include "view/picking.h"
 #include "ui/axis_handles.h"

@@ -11,7 +11,7 @@
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/mesh/sharpness.h"
 #include "ui/crease_tool.h"
 

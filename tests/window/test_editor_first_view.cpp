@@ -11,7 +11,7 @@
 #include "../support/pinched_mesh.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/image/image_io.h"
 
 namespace gps {

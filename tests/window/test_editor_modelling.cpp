@@ -15,7 +15,7 @@
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/affine_transform.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/inset.h"

@@ -14,7 +14,7 @@
 
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/modelling/mesh_queries.h"
 #include "view/visible_vertices.h"
 

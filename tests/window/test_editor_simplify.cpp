@@ -10,7 +10,7 @@
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/mesh_simplification.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 namespace gps {
 namespace {

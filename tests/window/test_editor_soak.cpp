@@ -13,7 +13,7 @@
 #include "../support/random_events.h"
 #include "core/support/error.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/io/text_file.h"
 
 namespace gps {

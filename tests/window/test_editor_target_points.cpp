@@ -15,7 +15,7 @@
 #include "../support/editor_driver.h"
 #include "core/fitting/surface_distance.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/image/image_io.h"
 #include "render/overlays/distance_ramp.h"
 

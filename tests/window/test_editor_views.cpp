@@ -9,7 +9,7 @@
 
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "core/io/text_file.h"
 #include "render/image/image_io.h"
 #include "ui/axis_handles.h"

@@ -7,7 +7,7 @@
 #include <cstdlib>
 
 #include "core/support/error.h"
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 #include "render/pipeline/surface_renderer.h"
 
 namespace gps {

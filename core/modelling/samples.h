@@ -1,5 +1,6 @@
 #pragma once
-// Built-in covariance meshes, generated procedurally.
+// Built-in covariance meshes, generated procedurally (the cube, cones, cylinder, sphere and torus from
+// the shapes of core/modelling/shapes.h, as the primitives are).
 #include <string>
 #include <vector>
 

@@ -1,4 +1,4 @@
-#include "core/mesh/samples.h"
+#include "core/modelling/samples.h"
 
 #include <cmath>
 #include <functional>
@@ -7,6 +7,7 @@
 
 #include "core/support/error.h"
 #include "core/mesh/inference.h"
+#include "core/modelling/shapes.h"
 #include "core/reference/loop.h"
 
 namespace gps {
@@ -22,43 +23,20 @@ CovarianceMesh isotropic_mesh(const std::vector<Vec3>& points, const Faces& face
   return m;
 }
 
-CovarianceMesh cube() {
-  const std::vector<Vec3> p = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                               {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-  const Faces f = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
-  return isotropic_mesh(p, f, "cube");
+CovarianceMesh isotropic_mesh(const Shape& shape, const std::string& name) {
+  return isotropic_mesh(shape.points, shape.faces, name);
 }
 
 // Preiner's cone: apex (0, 1.5, 0), 8 vertices on a circle of radius 2 at y = −1.5, open bottom,
 // Σ = 0.01·I everywhere but at the apex.
 CovarianceMesh cone(const Mat3& apex) {
-  std::vector<Vec3> p = {{0, 1.5, 0}};
-  for (int k = 0; k < 8; ++k) p.emplace_back(2 * std::cos(k * pi / 4), -1.5, -2 * std::sin(k * pi / 4));
-  Faces f;
-  for (int k = 0; k < 8; ++k) f.push_back({0, 1 + k, 1 + (k + 1) % 8});
-  std::vector<Mat3> cov(p.size(), 0.01 * Mat3::Identity());
+  const Shape s = cone_shape(8, 2.0, 1.5, -1.5, false);
+  std::vector<Mat3> cov(s.points.size(), 0.01 * Mat3::Identity());
   cov[0] = apex;
-  return make_covariance_mesh(p, cov, f, "cone");
+  return make_covariance_mesh(s.points, cov, s.faces, "cone");
 }
 
 Mat3 diag(double x, double y, double z) { return Vec3(x, y, z).asDiagonal(); }
-
-// Capped cylinder: three rings of 8 quads' vertices, octagon caps.
-CovarianceMesh cylinder() {
-  std::vector<Vec3> p;
-  const int n = 8;
-  for (int r = 0; r < 3; ++r)
-    for (int k = 0; k < n; ++k) p.emplace_back(std::cos(2 * pi * k / n), -1.0 + r, -std::sin(2 * pi * k / n));
-  Faces f;
-  for (int r = 0; r < 2; ++r)
-    for (int k = 0; k < n; ++k)
-      f.push_back({r * n + k, r * n + (k + 1) % n, (r + 1) * n + (k + 1) % n, (r + 1) * n + k});
-  std::vector<int> top, bottom;
-  for (int k = 0; k < n; ++k) top.push_back(2 * n + k), bottom.push_back(n - 1 - k);
-  f.push_back(top);
-  f.push_back(bottom);
-  return isotropic_mesh(p, f, "cylinder");
-}
 
 // The boundary of a set of unit voxels on an integer lattice, as outward quads.
 CovarianceMesh voxel_surface(const std::function<bool(int, int, int)>& filled, int size, double scale,
@@ -148,23 +126,6 @@ CovarianceMesh valence(int n) {
   return isotropic_mesh(p, f, "valence" + std::to_string(n));
 }
 
-CovarianceMesh torus(int nu = 24, int nv = 12, double big = 2.0, double small = 0.7) {
-  std::vector<Vec3> p;
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const double a = 2 * pi * i / nu, b = 2 * pi * j / nv;
-      p.emplace_back((big + small * std::cos(b)) * std::cos(a), small * std::sin(b),
-                     (big + small * std::cos(b)) * std::sin(a));
-    }
-  Faces f;
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const int i1 = (i + 1) % nu, j1 = (j + 1) % nv;
-      f.push_back({i * nv + j, i * nv + j1, i1 * nv + j1, i1 * nv + j});
-    }
-  return isotropic_mesh(p, f, "torus");
-}
-
 // A bumpy n×n quad grid over [−1, 1]² with about `size` faces.
 CovarianceMesh grid(int size) {
   const int n = std::max(1, int(std::lround(std::sqrt(double(size)))));
@@ -188,34 +149,7 @@ CovarianceMesh grid(int size) {
 // A cube whose faces are m×m grids, projected to the unit sphere: about `size` quads, 8 valence-3 vertices.
 CovarianceMesh sphere(int size) {
   const int m = std::max(1, int(std::lround(std::sqrt(size / 6.0))));
-  std::map<std::array<int, 3>, int> index;
-  std::vector<Vec3> p;
-  const auto vertex = [&](std::array<int, 3> g) {
-    const auto [it, added] = index.try_emplace(g, int(p.size()));
-    if (added) p.push_back(Vec3(g[0], g[1], g[2]).normalized());
-    return it->second;
-  };
-  Faces f;
-  f.reserve(6 * size_t(m) * size_t(m));
-  for (int axis = 0; axis < 3; ++axis)
-    for (const int side : {-1, 1}) {
-      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-      for (int i = 0; i < m; ++i)
-        for (int j = 0; j < m; ++j) {
-          std::vector<int> quad;
-          const int du[4] = {0, 1, 1, 0}, dw[4] = {0, 0, 1, 1};
-          for (int k = 0; k < 4; ++k) {
-            const int kk = side > 0 ? k : (4 - k) % 4;
-            std::array<int, 3> g{};
-            g[size_t(axis)] = side * m;
-            g[size_t(u)] = -m + 2 * (i + du[kk]);
-            g[size_t(w)] = -m + 2 * (j + dw[kk]);
-            quad.push_back(vertex(g));
-          }
-          f.push_back(quad);
-        }
-    }
-  return isotropic_mesh(p, f, "sphere");
+  return isotropic_mesh(cube_sphere_shape(m), "sphere");
 }
 
 // An icosahedron refined by midpoint splits (Loop's topology) and projected to the unit sphere:
@@ -287,7 +221,7 @@ struct Sample {
 const std::vector<Sample>& samples() {
   static const std::vector<Sample> list = [] {
     std::vector<Sample> s = {
-        {"cube", "8 vertices, 6 quads, isotropic", [](int) { return cube(); }},
+        {"cube", "8 vertices, 6 quads, isotropic", [](int) { return isotropic_mesh(cube_shape(), "cube"); }},
         {"cone", "Preiner's cone: 8 triangles, open bottom, covariance 0.01 I",
          [](int) { return cone(0.01 * Mat3::Identity()); }},
         {"cone-pointy", "cone with apex covariance 1e-5 I: a sharp tip",
@@ -299,14 +233,15 @@ const std::vector<Sample>& samples() {
          [](int) { return cone(diag(1e-3, 1e-5, 1e-3)); }},
         {"cone-cylinder", "cone with apex covariance diag(0.1, 1e-5, 0.1), a disc wider than the base: a cylinder",
          [](int) { return cone(diag(0.1, 1e-5, 0.1)); }},
-        {"cylinder", "capped cylinder: 16 quads and two octagons", [](int) { return cylinder(); }},
+        {"cylinder", "capped cylinder: 16 quads and two octagons",
+         [](int) { return isotropic_mesh(cylinder_shape(8, 3, 1.0, -1.0, 1.0), "cylinder"); }},
         {"wirecube", "the edges of a cube as square beams: genus-5 quad mesh", [](int) { return wirecube(); }},
     };
     for (int n = 3; n <= 10; ++n)
       s.push_back({"valence" + std::to_string(n),
                    "quad mesh with one extraordinary vertex of valence " + std::to_string(n),
                    [n](int) { return valence(n); }});
-    s.push_back({"torus", "24 x 12 quads", [](int) { return torus(); }});
+    s.push_back({"torus", "24 x 12 quads", [](int) { return isotropic_mesh(torus_shape(24, 12, 2.0, 0.7), "torus"); }});
     s.push_back({"grid", "bumpy quad grid with boundary; --size sets the face count (default 1024)",
                  [](int size) { return grid(size > 0 ? size : 1024); }});
     s.push_back({"sphere", "cube-sphere of quads, 8 valence-3 vertices; --size sets the face count (default 1536)",
