@@ -24,6 +24,7 @@
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/merge_vertices.h"
 #include "core/modelling/primitives.h"
+#include "core/modelling/slide.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/plans/planned_surface.h"
 #include "core/reference/subdivision_size.h"
@@ -65,13 +66,19 @@ public:
   }
   double number(const char* key, double otherwise) { return has(key) ? number(key) : otherwise; }
   int integer(const char* key, int lo, int hi) {
+    const Json& v = at(key);
     try {
-      return int(json_integer(at(key), lo, hi));
+      return int(json_integer(v, lo, hi));
     } catch (const Error& e) {
       throw usage_error("\"" + std::string(key) + "\" " + e.what());
     }
   }
   int integer(const char* key, int lo, int hi, int otherwise) { return has(key) ? integer(key, lo, hi) : otherwise; }
+  bool boolean(const char* key) {
+    const Json& v = at(key);
+    if (!v.is_boolean()) throw usage_error("\"" + std::string(key) + "\" must be true or false");
+    return v.get<bool>();
+  }
   std::string text(const char* key) {
     const Json& v = at(key);
     if (!v.is_string()) throw usage_error("\"" + std::string(key) + "\" must be a string");
@@ -219,6 +226,17 @@ Run parse_step(const std::string& op, Fields& f, Append& append) {
     const double t = f.number("t", 0.5);
     return [=](const CovarianceMesh& m) { return split_edge(m, e[0], e[1], t); };
   }
+  if (op == "slide") {
+    const double factor = f.number("factor");
+    if (std::string(one_of(f, {"edges", "vertex"})) == "edges") {
+      const Edges edges = f.edges("edges");
+      const bool even = f.has("even") && f.boolean("even");
+      return [=](const CovarianceMesh& m) { return edge_slide(m, edges, factor, even); };
+    }
+    const int vertex = f.integer("vertex", 0, INT32_MAX);
+    const int toward = f.integer("toward", 0, INT32_MAX);
+    return [=](const CovarianceMesh& m) { return vertex_slide(m, vertex, toward, factor); };
+  }
   if (op == "flip_edge") {
     const auto e = f.edge("edge");
     return [=](const CovarianceMesh& m) { return flip_edge(m, e[0], e[1]); };
@@ -321,7 +339,7 @@ std::string prefixed(const std::string& source, const std::string& message) {
 
 std::vector<std::string> operation_names() {
   return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude", "inset", "delete", "dissolve", "merge",
-          "weld",      "fill",     "bridge",     "transform", "add",     "set",   "crease", "corner"};
+          "weld",      "fill",     "bridge",     "transform", "add",     "set",   "crease", "corner", "slide"};
 }
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {
