@@ -52,6 +52,7 @@ void print_info(const std::string& path, const RepairArguments& repair) {
     if (options.repair) return read_mesh_repairing(path, repair);
     bool has_covariances = false;
     PolygonSoup soup = read_polygon_soup(path, has_covariances);
+    print_reader_notes(soup.notes);
     const size_t n_vertices = soup.positions.size();
     const int n_faces = soup.faces.n_faces();
     if (n_faces > 0) {  // else refused as it is: no surface to diagnose

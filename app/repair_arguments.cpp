@@ -25,13 +25,19 @@ CovarianceMesh read_mesh_repairing(const std::string& path, const RepairArgument
                                    const ImportOptions& options, bool quiet) {
   const ImportOptions o = arguments.import_options(options);
   RepairReport report;
-  CovarianceMesh mesh = read_mesh(path, o, &report);
+  std::vector<std::string> notes;
+  CovarianceMesh mesh = read_mesh(path, o, &report, &notes);
+  print_reader_notes(notes);
   if (o.repair && !quiet) {
     const auto lines = report.lines();
     if (lines.empty()) std::cout << "repair: nothing to repair\n";
     for (const std::string& line : lines) std::cout << "repair: " << line << "\n";
   }
   return mesh;
+}
+
+void print_reader_notes(const std::vector<std::string>& notes) {
+  for (const std::string& note : notes) std::cerr << "note: " << note << "\n";
 }
 
 }  // namespace gps

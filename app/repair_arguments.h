@@ -3,6 +3,7 @@
 // --weld, shared by every command that reads a mesh.
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "core/io/mesh_io.h"
 
@@ -19,8 +20,12 @@ struct RepairArguments {
 void add_repair_arguments(CLI::App* cmd, RepairArguments& arguments);
 
 /// read_mesh with the repair asked for; when repairing and not `quiet`, the report goes to stdout first
-/// ("repair: " and a line per step that changed something, or that nothing needed it).
+/// ("repair: " and a line per step that changed something, or that nothing needed it). What the reader
+/// read leniently goes to stderr ("note: " and the note, which names the file).
 CovarianceMesh read_mesh_repairing(const std::string& path, const RepairArguments& arguments,
                                    const ImportOptions& options = {}, bool quiet = false);
+
+/// Prints the reader's notes to stderr, "note: " before each.
+void print_reader_notes(const std::vector<std::string>& notes);
 
 }  // namespace gps

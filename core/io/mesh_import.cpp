@@ -110,13 +110,45 @@ void read_sharp_tag(std::string_view line, int number, const std::string& at, Sh
   tags.lines.push_back(tag);
 }
 
+// One tag's sharpness of an edge or vertex as read, with its line: for a later tag to be compared with.
+struct TaggedSharpness {
+  int a = 0, b = 0;  // the edge's ends (a < b), or the vertex twice
+  double sharpness = 0.0;
+  int line = 0;
+};
+
+// The note on tags of one kind that repeat an earlier tag's edge or vertex with another value
+// (`repeats` in file order within each edge or vertex), the later kept as in OpenSubdiv's readers;
+// "" where none does. A tag repeating the value it repeats is read once, without a note.
+std::string repeated_tags_note(const std::vector<TaggedSharpness>& tagged, bool crease, const std::string& source) {
+  size_t changed = 0, first = 0;
+  for (size_t i = 1; i < tagged.size(); ++i) {
+    const bool repeats = tagged[i].a == tagged[i - 1].a && tagged[i].b == tagged[i - 1].b;
+    if (!repeats || tagged[i].sharpness == tagged[i - 1].sharpness) continue;
+    if (changed++ == 0 || tagged[i].line < tagged[first].line) first = i;
+  }
+  if (changed == 0) return "";
+  const TaggedSharpness &later = tagged[first], &earlier = tagged[first - 1];
+  const std::string kind = crease ? "crease" : "corner";
+  const std::string element =
+      crease ? std::to_string(later.a) + "-" + std::to_string(later.b) : std::to_string(later.a);
+  return source + ": line " + std::to_string(later.line) + ": " + kind + " " + element + " repeats line " +
+         std::to_string(earlier.line) + "'s with sharpness " + number_as_read(later.sharpness) + " (line " +
+         std::to_string(earlier.line) + " gives " + number_as_read(earlier.sharpness) + ")" +
+         (changed > 1 ? ", and " + std::to_string(changed - 1) + " more " + kind + " tags repeat one with another value"
+                      : std::string()) +
+         ": the later is kept";
+}
+
 // The sharpness of the tags on the finished soup; a later tag on the same edge or vertex wins, as in
-// OpenSubdiv's readers.
-Sharpness sharpness_of_tags(const SharpTags& tags, const PolygonSoup& soup, const std::string& source) {
+// OpenSubdiv's readers, with a note in `notes` where it changes the value.
+Sharpness sharpness_of_tags(const SharpTags& tags, const PolygonSoup& soup, const std::string& source,
+                            std::vector<std::string>& notes) {
   Sharpness out;
   if (tags.lines.empty()) return out;
   const int n = int(soup.positions.size());
   const std::vector<uint64_t> edges = soup_edge_keys(soup.faces);
+  std::vector<TaggedSharpness> creases, corners;
   for (const SharpTags::Line& t : tags.lines) {
     const std::string kind = t.crease ? "crease" : "corner";
     const auto at = [&] { return source + ": line " + std::to_string(t.number) + ": "; };
@@ -128,25 +160,24 @@ Sharpness sharpness_of_tags(const SharpTags& tags, const PolygonSoup& soup, cons
         if (v >= n)
           throw Error(at() + kind + " tag names vertex " + std::to_string(v) + ", but there are " + std::to_string(n) +
                       " vertices (tags number them from 0)");
-      if (!t.crease) {
-        if (out.corners.empty()) out.corners.assign(size_t(n), 0.0);
-        out.corners[size_t(a)] = s;
-        continue;
-      }
-      if (a == b || !std::binary_search(edges.begin(), edges.end(), soup_edge_key(a, b)))
+      if (t.crease && (a == b || !std::binary_search(edges.begin(), edges.end(), soup_edge_key(a, b))))
         throw Error(at() + "crease " + std::to_string(a) + "-" + std::to_string(b) + " is not an edge of the mesh");
-      out.creases.push_back({std::min(a, b), std::max(a, b), s});
+      (t.crease ? creases : corners).push_back({std::min(a, b), std::max(a, b), s, t.number});
     }
   }
-  // In file order within each edge after a stable sort: the last one stays.
-  std::stable_sort(out.creases.begin(), out.creases.end(),
-                   [](const EdgeCrease& x, const EdgeCrease& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-  size_t kept = 0;
-  for (size_t i = 0; i < out.creases.size(); ++i) {
-    if (kept > 0 && out.creases[kept - 1].a == out.creases[i].a && out.creases[kept - 1].b == out.creases[i].b) --kept;
-    out.creases[kept++] = out.creases[i];
+  // In file order within each edge or vertex after a stable sort: the last one stays.
+  for (std::vector<TaggedSharpness>* tagged : {&creases, &corners}) {
+    std::stable_sort(tagged->begin(), tagged->end(), [](const TaggedSharpness& x, const TaggedSharpness& y) {
+      return x.a != y.a ? x.a < y.a : x.b < y.b;
+    });
+    if (std::string note = repeated_tags_note(*tagged, tagged == &creases, source); !note.empty())
+      notes.push_back(std::move(note));
   }
-  out.creases.resize(kept);
+  for (size_t i = 0; i < creases.size(); ++i)
+    if (i + 1 == creases.size() || creases[i + 1].a != creases[i].a || creases[i + 1].b != creases[i].b)
+      out.creases.push_back({creases[i].a, creases[i].b, creases[i].sharpness});
+  if (!corners.empty()) out.corners.assign(size_t(n), 0.0);
+  for (const TaggedSharpness& c : corners) out.corners[size_t(c.a)] = c.sharpness;  // the later overwrites
   out.normalise();
   return out;
 }
@@ -235,7 +266,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   if (points.empty()) throw Error(source + ": no vertices");
   std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built
   PolygonSoup soup = plain_soup(std::move(points), std::move(faces), source);
-  soup.sharpness = sharpness_of_tags(tags, soup, source);
+  soup.sharpness = sharpness_of_tags(tags, soup, source, soup.notes);
   return soup;
 }
 

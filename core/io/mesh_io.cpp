@@ -53,9 +53,11 @@ ElementNumbering element_numbering_for(const std::string& path, const RepairRepo
   return numbering;
 }
 
-CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options, RepairReport* report) {
+CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options, RepairReport* report,
+                         std::vector<std::string>* notes) {
   bool has_covariances = false;
   PolygonSoup soup = read_polygon_soup(path, has_covariances);
+  if (notes) *notes = std::move(soup.notes);
   return read_mesh_of_soup(std::move(soup), has_covariances, path, options, report);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Reading and writing meshes by file extension (docs/design.md §4).
 #include <string>
+#include <vector>
 
 #include "core/io/mesh_repair.h"
 #include "core/mesh/covariance_mesh.h"
@@ -22,14 +23,16 @@ struct ImportOptions {
 /// repair would mend (not manifold, a face using a vertex twice or with all its corners at one point)
 /// is refused naming each class, its count, its first example as the file numbers it and what
 /// --repair does (RepairReport::refusal); with it, `report` (where given) gets what the repair did.
-CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options = {}, RepairReport* report = nullptr);
+/// `notes` (where given) gets what the reader read leniently (PolygonSoup::notes), for the caller to show.
+CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options = {}, RepairReport* report = nullptr,
+                         std::vector<std::string>* notes = nullptr);
 
 /// The polygon soup of a mesh file as read_mesh reads it before repairing or building it;
 /// `has_covariances` says whether the file gave them.
 PolygonSoup read_polygon_soup(const std::string& path, bool& has_covariances);
 
-/// read_mesh from the soup read_polygon_soup gave for `path`. `diagnosis`, where given, is
-/// diagnose_polygon_soup of that soup (gpsurf info has it); else a refused file is read again for one.
+/// read_mesh from the soup read_polygon_soup gave for `path` (its notes left to the caller). `diagnosis`, where given,
+/// is diagnose_polygon_soup of that soup (gpsurf info has it); else a refused file is read again for one.
 CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const std::string& path,
                                  const ImportOptions& options = {}, RepairReport* report = nullptr,
                                  const RepairReport* diagnosis = nullptr);

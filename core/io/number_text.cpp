@@ -21,4 +21,9 @@ std::string parse_number(std::string_view s, double& out) {
   return "";
 }
 
+std::string number_as_read(double v) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
+}
+
 }  // namespace gps

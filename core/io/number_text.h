@@ -1,5 +1,6 @@
 #pragma once
-// Reading one decimal number from text with a message that says what is wrong with it.
+// Reading one decimal number from text with a message that says what is wrong with it, and writing
+// one back as messages show it.
 #include <string>
 #include <string_view>
 
@@ -9,5 +10,9 @@ namespace gps {
 /// the token shown as core/io/quoted_text.h quotes it: "'x' is not a number", "'1e-400' underflows (too close to zero
 /// for a double)", "'1e400' overflows ...".
 std::string parse_number(std::string_view token, double& out);
+
+/// A value as a file holds it, in the fewest digits that read back as it: an index 2147483648 in
+/// full (not 2.14748e+09), a sharpness 0.1.
+std::string number_as_read(double v);
 
 }  // namespace gps

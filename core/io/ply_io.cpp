@@ -109,21 +109,15 @@ public:
   size_t read_count(const ScalarType& t) {
     const double n = read(t);
     const size_t limit = format_ == Format::ascii ? tokens_.size() - token_index_ : remaining();
-    if (!(n >= 0) || n != std::floor(n)) fail(where() + "list length " + format_number(n) + " is not a count");
+    if (!(n >= 0) || n != std::floor(n)) fail(where() + "list length " + number_as_read(n) + " is not a count");
     if (n > double(limit))
-      fail(where() + "list length " + format_number(n) +
+      fail(where() + "list length " + number_as_read(n) +
            (format_ == Format::ascii ? " exceeds the values on the line" : " exceeds the data left (truncated)"));
     return size_t(n);
   }
 
   // "line N: " for ASCII data, "" for binary data (which has no lines).
   std::string where() const { return format_ == Format::ascii ? "line " + std::to_string(line_) + ": " : ""; }
-
-  // A value as the file holds it: an index 2147483648 in full, not 2.14748e+09.
-  static std::string format_number(double v) {
-    char text[32];
-    return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
-  }
 
   // ASCII data ends with its last record: anything but white space after it is refused.
   void check_end() {
@@ -187,34 +181,48 @@ std::string edge_record_name(size_t r, int a, int b) {
   return "edge " + std::to_string(r) + " (vertices " + std::to_string(a) + "-" + std::to_string(b) + ")";
 }
 
-// The creases of the edge element's records (numbered as the file numbers them): no edge twice (found
-// by sorting record numbers by edge, 4 bytes each) and each on an edge of the faces.
-template <class Fail>
-Sharpness sharpness_of(const std::vector<CreaseRecord>& records, const PolygonTopology& faces, const Fail& fail) {
+// The creases of the edge element's records (numbered as the file numbers them), each on an edge of the
+// faces. An edge named again with the same crease is read once; with another crease the later record's
+// is kept, as OpenSubdiv's readers keep the later tag, and `note` gets one line naming the first such
+// record and how many there are (found by sorting record numbers by edge, 4 bytes each).
+template <class Fail, class Note>
+Sharpness sharpness_of(const std::vector<CreaseRecord>& records, const PolygonTopology& faces, const Fail& fail,
+                       const Note& note) {
   Sharpness out;
   if (records.empty()) return out;
   const auto name = [&](size_t r) { return edge_record_name(r, records[r].a, records[r].b); };
   const auto key = [&](uint32_t r) { return soup_edge_key(records[r].a, records[r].b); };
   {
-    std::vector<uint32_t> order(records.size());
-    for (size_t r = 0; r < records.size(); ++r) order[r] = uint32_t(r);
-    std::sort(order.begin(), order.end(),
-              [&](uint32_t x, uint32_t y) { return key(x) != key(y) ? key(x) < key(y) : x < y; });
-    size_t repeat = records.size(), first = 0;  // the earliest record repeating an edge, and that edge's first
-    for (size_t i = 1; i < order.size(); ++i)
-      if (key(order[i]) == key(order[i - 1]) && order[i] < repeat) {
-        repeat = order[i];
-        first = order[i - 1];
+    const std::vector<uint64_t> edges = soup_edge_keys(faces);
+    for (size_t r = 0; r < records.size(); ++r)
+      if (!std::binary_search(edges.begin(), edges.end(), key(uint32_t(r))))
+        fail(name(r) + " is not an edge of the mesh");
+  }
+  std::vector<uint32_t> order(records.size());
+  for (size_t r = 0; r < records.size(); ++r) order[r] = uint32_t(r);
+  std::sort(order.begin(), order.end(),
+            [&](uint32_t x, uint32_t y) { return key(x) != key(y) ? key(x) < key(y) : x < y; });
+  size_t changed = 0, first = records.size(), before = 0;  // records changing their edge's crease; the earliest
+  for (size_t i = 0; i < order.size(); ++i) {
+    const bool repeats = i > 0 && key(order[i]) == key(order[i - 1]);
+    if (repeats && records[order[i]].sharpness != records[order[i - 1]].sharpness) {
+      ++changed;
+      if (order[i] < first) {
+        first = order[i];
+        before = order[i - 1];
       }
-    if (repeat < records.size()) fail(name(repeat) + " repeats edge " + std::to_string(first));
+    }
+    const bool last = i + 1 == order.size() || key(order[i + 1]) != key(order[i]);
+    const CreaseRecord& c = records[order[i]];
+    if (last && c.sharpness > 0.0) out.creases.push_back({std::min(c.a, c.b), std::max(c.a, c.b), c.sharpness});
   }
-  const std::vector<uint64_t> edges = soup_edge_keys(faces);
-  for (size_t r = 0; r < records.size(); ++r) {
-    const CreaseRecord& c = records[r];
-    if (!std::binary_search(edges.begin(), edges.end(), soup_edge_key(c.a, c.b)))
-      fail(name(r) + " is not an edge of the mesh");
-    if (c.sharpness > 0.0) out.creases.push_back({std::min(c.a, c.b), std::max(c.a, c.b), c.sharpness});
-  }
+  if (changed > 0)
+    note(name(first) + " repeats edge " + std::to_string(before) + " with crease " +
+         number_as_read(records[first].sharpness) + " (edge " + std::to_string(before) + " has " +
+         number_as_read(records[before].sharpness) + ")" +
+         (changed > 1 ? ", and " + std::to_string(changed - 1) + " more records repeat an edge with another crease"
+                      : std::string()) +
+         ": the later is kept");
   return out;
 }
 
@@ -372,8 +380,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
         if (icorner >= 0) {
           const double s = values[size_t(icorner)];
           if (const std::string why = sharpness_problem(s); !why.empty())
-            fail(body.where() + "vertex " + std::to_string(v) + " corner sharpness " + BodyReader::format_number(s) +
-                 " " + why);
+            fail(body.where() + "vertex " + std::to_string(v) + " corner sharpness " + number_as_read(s) + " " + why);
           corners.push_back(s);
         }
         if (has_covariances) {
@@ -409,8 +416,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
             const double index = body.read(p.type);
             if (int(k) != list) continue;
             if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
-              fail(body.where() + "face " + std::to_string(f) + " refers to vertex " +
-                   BodyReader::format_number(index) + ", but there are " + std::to_string(vertex_count) + " vertices");
+              fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + number_as_read(index) +
+                   ", but there are " + std::to_string(vertex_count) + " vertices");
             faces.verts.push_back(int(index));
           }
         }
@@ -432,14 +439,14 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
         for (int k = 0; k < 2; ++k) {
           const double index = values[size_t(k == 0 ? i1 : i2)];
           if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
-            fail(body.where() + "edge " + std::to_string(r) + " refers to vertex " + BodyReader::format_number(index) +
+            fail(body.where() + "edge " + std::to_string(r) + " refers to vertex " + number_as_read(index) +
                  ", but there are " + std::to_string(vertex_count) + " vertices");
           ends[k] = int(index);
         }
         const auto named = [&] { return edge_record_name(r, ends[0], ends[1]); };
         const double sharpness = values[size_t(is)];
         if (const std::string why = sharpness_problem(sharpness); !why.empty())
-          fail(body.where() + named() + " crease " + BodyReader::format_number(sharpness) + " " + why);
+          fail(body.where() + named() + " crease " + number_as_read(sharpness) + " " + why);
         if (ends[0] == ends[1]) fail(body.where() + named() + " joins a vertex to itself");
         creases.push_back({ends[0], ends[1], sharpness});
       }
@@ -476,8 +483,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
               continue;
             }
             if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
-              fail(body.where() + "strip " + std::to_string(r) + " refers to vertex " +
-                   BodyReader::format_number(index) + ", but there are " + std::to_string(vertex_count) + " vertices");
+              fail(body.where() + "strip " + std::to_string(r) + " refers to vertex " + number_as_read(index) +
+                   ", but there are " + std::to_string(vertex_count) + " vertices");
             strip.push_back(int(index));
           }
         }
@@ -497,7 +504,9 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
   }
   body.check_end();
   if (release) std::string().swap(*release);
-  Sharpness sharpness = sharpness_of(creases, faces, fail);
+  std::vector<std::string> notes;
+  Sharpness sharpness =
+      sharpness_of(creases, faces, fail, [&](const std::string& what) { notes.push_back(shown_source + ": " + what); });
   std::vector<CreaseRecord>().swap(creases);
   sharpness.corners = std::move(corners);
   sharpness.normalise();
@@ -507,6 +516,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
   soup.positions = std::move(means);
   soup.covariances = std::move(covariances);
   soup.faces = std::move(faces);
+  soup.notes = std::move(notes);
   return soup;
 }
 

@@ -19,6 +19,9 @@ struct PolygonSoup {
   std::vector<Mat3> covariances;  // one per position, or empty for a plain mesh (inferred later)
   PolygonTopology faces;          // its n_vertices is not kept: positions.size() is the count
   Sharpness sharpness;            // creases on edges of the faces and corners, by vertex index
+  // What the reader read leniently, a line each naming the file (a tag repeated with another value,
+  // the later kept): for the caller to show, as warnings rather than refusals.
+  std::vector<std::string> notes;
 };
 
 /// The undirected edges of the faces, each as (min << 32 | max) of its vertices (soup_edge_key),

@@ -71,5 +71,41 @@ TEST(ObjCreases, ErrorsNameTheFileAndLine) {
   EXPECT_EQ(message_of("t corner 1/1/0 x 1\n"), "x.obj: line 15: 'x' is not a vertex index");
 }
 
+// A tag repeated (as OpenSubdiv's catmark_inf_crease0 repeats a crease): with the same value it is read
+// once, without a note; with another the later is kept, as OpenSubdiv's readers keep it, and one note per
+// kind names the first such tag, the tag it repeats and how many there are.
+TEST(ObjCreases, RepeatedTagsKeepTheLaterWithANote) {
+  const PolygonSoup same = parse_obj_soup(kCube +
+                                              "t crease 2/1/0 4 5 1\n"  // line 15
+                                              "t crease 4/1/0 5 4 6 7 1\n"
+                                              "t corner 2/1/0 2 2 3\n"
+                                              "t corner 1/1/0 2 3\n",
+                                          "x.obj");
+  Sharpness expected;
+  expected.creases = {{4, 5, 1.0}, {6, 7, 1.0}};
+  expected.corners = {0, 0, 3, 0, 0, 0, 0, 0};
+  EXPECT_EQ(same.sharpness, expected);
+  EXPECT_TRUE(same.notes.empty());
+
+  const PolygonSoup other = parse_obj_soup(kCube +
+                                               "t crease 2/1/0 4 5 1\n"  // line 15
+                                               "t corner 1/1/0 2 3\n"
+                                               "t crease 4/2/0 6 7 5 4 2 2.5\n"
+                                               "t crease 2/1/0 7 6 0\n"  // smooth again
+                                               "t corner 1/1/0 2 0.5\n",
+                                           "x.obj");
+  expected.creases = {{4, 5, 2.5}};
+  expected.corners = {0, 0, 0.5, 0, 0, 0, 0, 0};
+  EXPECT_EQ(other.sharpness, expected);
+  EXPECT_EQ(other.notes, (std::vector<std::string>{
+                             "x.obj: line 17: crease 4-5 repeats line 15's with sharpness 2.5 (line 15 gives 1), and 1 "
+                             "more crease tags repeat one with another value: the later is kept",
+                             "x.obj: line 19: corner 2 repeats line 16's with sharpness 0.5 (line 16 gives 3): the "
+                             "later is kept"}));
+  // What the tags name is still checked on every tag, repeated or not.
+  EXPECT_EQ(message_of("t crease 2/1/0 4 5 1\nt crease 2/1/0 4 5 2\nt crease 2/1/0 0 6 1\n"),
+            "x.obj: line 17: crease 0-6 is not an edge of the mesh");
+}
+
 }  // namespace
 }  // namespace gps

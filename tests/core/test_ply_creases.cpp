@@ -239,7 +239,6 @@ TEST(PlyCreases, ErrorsNameTheFileAndTheRecord) {
   EXPECT_EQ(with({{4, 5, std::numeric_limits<double>::infinity()}}, true),
             "x.ply: edge 0 (vertices 4-5) crease inf is not finite");
   EXPECT_EQ(with({{4, 5, std::nan("")}}, true), "x.ply: edge 0 (vertices 4-5) crease nan is not finite");
-  EXPECT_EQ(with({{4, 5, 1}, {5, 6, 1}, {5, 4, 2}}), "x.ply: edge 2 (vertices 5-4) repeats edge 0");
   EXPECT_EQ(with({{3, 3, 1}}), "x.ply: line 34: edge 0 (vertices 3-3) joins a vertex to itself");
   {
     CubePly ply;
@@ -258,6 +257,57 @@ TEST(PlyCreases, ErrorsNameTheFileAndTheRecord) {
     text.insert(text.find("end_header"), "element edge 0\nproperty int vertex1\n");
     EXPECT_EQ(message_of(text), "x.ply: line 19: a second edge element (the first is line 15)");
   }
+}
+
+// An edge named again (as OpenSubdiv's catmark_inf_crease0 names one): with the same crease it is read
+// once, without a note; with another the later record's crease is kept and one note names the first
+// such record and how many there are, in ASCII and binary alike; a record of the pair on no edge is
+// still refused.
+TEST(PlyCreases, RepeatedEdgesKeepTheLaterCreaseWithANote) {
+  const auto soup_of = [](std::vector<Crease> creases, bool binary) {
+    CubePly ply;
+    ply.creases = std::move(creases);
+    ply.binary = binary;
+    bool has_covariances = false;
+    return parse_ply_soup(ply.text(), "x.ply", has_covariances);
+  };
+  for (const bool binary : {false, true}) {
+    SCOPED_TRACE(binary ? "binary" : "ascii");
+    const PolygonSoup same = soup_of({{4, 5, 1}, {5, 6, 2}, {5, 4, 1}, {4, 5, 1}}, binary);
+    EXPECT_EQ(same.sharpness.creases, (std::vector<EdgeCrease>{{4, 5, 1.0}, {5, 6, 2.0}}));
+    EXPECT_TRUE(same.notes.empty());
+
+    const PolygonSoup one = soup_of({{6, 7, 3}, {4, 5, 1}, {5, 6, 2}, {5, 4, 2.5}}, binary);
+    EXPECT_EQ(one.sharpness.creases, (std::vector<EdgeCrease>{{4, 5, 2.5}, {5, 6, 2.0}, {6, 7, 3.0}}));
+    EXPECT_EQ(one.notes,
+              std::vector<std::string>{"x.ply: edge 3 (vertices 5-4) repeats edge 1 with crease 2.5 (edge 1 has 1): "
+                                       "the later is kept"});
+
+    // A later 0 makes the edge smooth again; the count covers every change, the example is the first.
+    const PolygonSoup many = soup_of({{5, 6, 2}, {4, 5, 1}, {5, 6, 0}, {4, 5, 0.5}, {4, 5, 1}}, binary);
+    EXPECT_EQ(many.sharpness.creases, (std::vector<EdgeCrease>{{4, 5, 1.0}}));
+    EXPECT_EQ(many.notes, std::vector<std::string>{"x.ply: edge 2 (vertices 5-6) repeats edge 0 with crease 0 (edge 0 "
+                                                   "has 2), and 2 more records repeat an edge with another crease: "
+                                                   "the later is kept"});
+  }
+  CubePly refused;
+  refused.creases = {{4, 5, 1}, {0, 6, 2}, {0, 6, 2}};
+  EXPECT_EQ(message_of(refused.text()), "x.ply: edge 1 (vertices 0-6) is not an edge of the mesh");
+}
+
+// read_mesh passes the notes to its caller and reads the mesh with the later crease.
+TEST(PlyCreases, ReadMeshGivesTheNotes) {
+  test::TempDir dir;
+  CubePly ply;
+  ply.creases = {{4, 5, 1}, {4, 5, 3}};
+  std::ofstream(dir.file("r.ply"), std::ios::binary) << ply.text();
+  std::vector<std::string> notes;
+  const CovarianceMesh m = read_mesh(dir.file("r.ply"), {}, nullptr, &notes);
+  EXPECT_EQ(m.sharpness.crease(4, 5), 3.0);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], dir.file("r.ply") +
+                          ": edge 1 (vertices 4-5) repeats edge 0 with crease 3 (edge 0 has 1): the "
+                          "later is kept");
 }
 
 TEST(PlyCreases, RepairCarriesCreasesThroughWeldsAndRenumbering) {
