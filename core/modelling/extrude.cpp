@@ -39,21 +39,6 @@ struct Partition {
   void join(int i, int j) { parent[size_t(root(i))] = root(j); }
 };
 
-bool all_triangles(const MeshArrays& a) {
-  return std::all_of(a.faces.begin(), a.faces.end(), [](const auto& face) { return face.size() == 3; });
-}
-
-/// Splits the quads from `first` on into two triangles each, along the diagonal from their first
-/// corner, so that a mesh of triangles stays one (and Loop's).
-void split_new_quads(MeshArrays& a, int first) {
-  for (size_t f = size_t(first); f < a.faces.size(); ++f) {
-    std::vector<int>& quad = a.faces[f];
-    if (quad.size() != 4) continue;
-    a.faces.push_back({quad[0], quad[2], quad[3]});
-    a.faces[f].pop_back();  // quad[0], quad[1], quad[2]
-  }
-}
-
 /// Moves the region by `shift`: inner vertices moved, boundary vertices copied (same covariance).
 std::vector<int> move_region(MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
   std::vector<Gaussian> copies;

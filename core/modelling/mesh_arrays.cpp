@@ -104,6 +104,19 @@ Gaussian blend_gaussians(const MeshArrays& a, const std::vector<std::pair<int, d
   return *g;
 }
 
+bool all_triangles(const MeshArrays& a) {
+  return std::all_of(a.faces.begin(), a.faces.end(), [](const auto& face) { return face.size() == 3; });
+}
+
+void split_new_quads(MeshArrays& a, int first) {
+  for (size_t f = size_t(first); f < a.faces.size(); ++f) {
+    std::vector<int>& quad = a.faces[f];
+    if (quad.size() != 4) continue;
+    a.faces.push_back({quad[0], quad[2], quad[3]});
+    a.faces[f].pop_back();  // quad[0], quad[1], quad[2]
+  }
+}
+
 Gaussian face_point(const MeshArrays& a, int f) {
   const auto& face = a.faces[size_t(f)];
   std::vector<std::pair<int, double>> w;

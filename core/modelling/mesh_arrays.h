@@ -59,6 +59,13 @@ void split_crease(MeshArrays& arrays, int a, int b, int m);
 /// it inserts with these weights.
 Gaussian blend_gaussians(const MeshArrays& arrays, const std::vector<std::pair<int, double>>& weights);
 
+/// Whether every face is a triangle (a mesh Loop's scheme subdivides).
+bool all_triangles(const MeshArrays& arrays);
+
+/// Splits the quads from face `first` on into two triangles each, along the diagonal from their first
+/// corner, so that a mesh of triangles that an operation added quads to stays one (and Loop's).
+void split_new_quads(MeshArrays& arrays, int first);
+
 /// The 9D average of a face's corners (the Catmull-Clark face point in 9D).
 Gaussian face_point(const MeshArrays& arrays, int face);
 

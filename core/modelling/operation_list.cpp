@@ -357,8 +357,14 @@ OperationList OperationList::parse(const std::string& text, const std::string& s
       Fields fields(object);
       Run run;
       Append append;
-      if (name == "bridge") {
-        if (!fields.has("loops")) throw usage_error("\"loops\" is missing (two lists of boundary vertices)");
+      if (name == "bridge" && fields.has("faces")) {
+        if (fields.has("loops")) throw usage_error("give one of \"loops\" or \"faces\"");
+        const std::vector<int> faces = fields.indices("faces");
+        if (faces.empty()) throw usage_error("\"faces\" is empty");
+        run = [faces](const CovarianceMesh& m) { return bridge_faces(m, faces); };
+      } else if (name == "bridge") {
+        if (!fields.has("loops"))
+          throw usage_error("\"loops\" is missing (two lists of boundary vertices, or \"faces\")");
         const Json& loops = object["loops"];
         if (!loops.is_array() || loops.size() != 2) throw usage_error("\"loops\" must be two lists of vertices");
         std::array<std::vector<int>, 2> l;

@@ -17,10 +17,6 @@ std::string counted(size_t n, const std::string& one, const std::string& many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-bool all_triangles(const MeshArrays& a) {
-  return std::all_of(a.faces.begin(), a.faces.end(), [](const auto& f) { return f.size() == 3; });
-}
-
 // The 9D midpoints of the chosen faces' edges, made once per undirected edge.
 struct Midpoints {
   std::unordered_map<uint64_t, int> of_edge;
