@@ -6,6 +6,7 @@
 #include <cstring>
 #include <functional>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -29,6 +30,45 @@ struct LowestRootSets {
     a = find(a);
     b = find(b);
     if (a != b) parent[size_t(std::max(a, b))] = std::min(a, b);
+  }
+};
+
+// Union-find over faces, each with its parity: whether it is flipped against its set's root for every
+// pair of faces joined so far to run their shared edge in opposite directions.
+struct ParitySets {
+  std::vector<int> parent;
+  std::vector<char> parity;  // against the parent
+  explicit ParitySets(size_t n) : parent(n), parity(n, 0) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x, char& parity_to_root) {
+    int root = x;
+    char p = 0;
+    while (parent[size_t(root)] != root) {
+      p ^= parity[size_t(root)];
+      root = parent[size_t(root)];
+    }
+    parity_to_root = p;
+    while (x != root) {  // the path compressed, each node's parity now against the root
+      const int up = parent[size_t(x)];
+      const char own = parity[size_t(x)];
+      parent[size_t(x)] = root;
+      parity[size_t(x)] = p;
+      p ^= own;
+      x = up;
+    }
+    return root;
+  }
+  int find(int x) {
+    char p;
+    return find(x, p);
+  }
+  /// Joins a and b so that one is flipped against the other exactly where `flipped`.
+  void unite(int a, int b, bool flipped) {
+    char pa = 0, pb = 0;
+    a = find(a, pa);
+    b = find(b, pb);
+    if (a == b) return;
+    parent[size_t(std::max(a, b))] = std::min(a, b);
+    parity[size_t(std::max(a, b))] = char(pa ^ pb ^ char(flipped));
   }
 };
 
@@ -116,6 +156,9 @@ private:
   std::vector<char> in_file_face_;  // per vertex of the file: used by a face of the file
   std::vector<int> weld_root_;      // per vertex of the file: the vertex it was welded to (itself if none)
   std::vector<int> pair_;           // per corner: the corner across its edge (to the next corner), or −1
+  std::vector<int> corner_face_;    // per corner: its face
+  std::vector<int> edge_corners_, edge_offsets_;  // the corners of each edge (separate_fans)
+  std::vector<int> fin_edges_;                    // the edges with more than two faces
   std::vector<char> flip_;          // per face: reversed by orient()
 
   PolygonTopology& faces() { return soup_.faces; }
@@ -403,25 +446,75 @@ private:
     });
   }
 
-  // Pairs each edge's corners: two faces on an edge are paired; of more (a fin), the first face and the
-  // first later one that runs the edge the other way (else the second) are, the others left unpaired.
-  // Then each vertex's corners are grouped into fans (corners joined across paired edges), and every
-  // fan past the first gets its own copy of the vertex.
+  // Pairs the corners of each edge (pair_), then groups each vertex's corners into fans (corners joined
+  // across paired edges) and gives every fan past the first its own copy of the vertex. Faces on an
+  // edge left unpaired (a fin's extra faces) are so cut apart from the others there.
   void separate_fans() {
     PolygonTopology& t = faces();
     const size_t n_corners = t.verts.size();
-    std::vector<int> corner_face(n_corners);
+    corner_face_.resize(n_corners);
     for (int f = 0; f < t.n_faces(); ++f)
-      for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) corner_face[size_t(k)] = f;
-    // The corners sorted by their edge's (lower, higher) vertex, each edge's in corner order: two
-    // stable counting passes (by the higher vertex, then the lower), linear whatever the valence.
+      for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) corner_face_[size_t(k)] = f;
+    group_corners_by_edge();
+    pair_edges();
+    LowestRootSets file_fan_sets = fans_joining_every_face();
+    const std::vector<int> file_fans = fans_per_vertex(file_fan_sets);
+    file_fan_sets = LowestRootSets(0);
+    LowestRootSets fans = fans_of_pairs();
+    while (cut_faces_meeting_again(fans)) fans = fans_of_pairs();
+    for (const int e : fin_edges_)
+      for (int i = edge_offsets_[size_t(e)]; i < edge_offsets_[size_t(e) + 1]; ++i)
+        report_.fin_faces += pair_[size_t(edge_corners_[size_t(i)])] < 0;
+    const std::vector<int> final_fans = fans_per_vertex(fans);
+    std::vector<int> fan_vertex(n_corners, -1);  // per fan (its root corner): the vertex it gets
+    std::vector<char> claimed(soup_.positions.size(), 0);
+    for (size_t k = 0; k < n_corners; ++k) {
+      int& vertex = fan_vertex[size_t(fans.find(int(k)))];
+      if (vertex < 0) {
+        const int v = t.verts[k];
+        if (!claimed[size_t(v)]) {
+          claimed[size_t(v)] = 1;
+          vertex = v;
+        } else {
+          vertex = int(vertex_origin_.size());
+          vertex_origin_.push_back(vertex_origin_[size_t(v)]);
+        }
+      }
+      t.verts[k] = vertex;
+    }
+    // A vertex the file's faces meet in several fans is a pinch, each fan past the first a copy; the
+    // fans the fins' cuts make past those are the fins' copies.
+    for (size_t v = 0; v < file_fans.size(); ++v) {
+      if (file_fans[v] > 1) {
+        found(Defect::pinch_vertices, {int(v), -1, file_fans[v]});
+        report_.pinch_copies += file_fans[v] - 1;
+      }
+      report_.fin_copies += final_fans[v] - file_fans[v];
+    }
+    edge_corners_ = {};
+    edge_offsets_ = {};
+    fin_edges_ = {};
+  }
+
+  int previous_corner(int f, int k) const {
+    return k == soup_.faces.offsets[size_t(f)] ? soup_.faces.offsets[size_t(f) + 1] - 1 : k - 1;
+  }
+  int next_corner(int k) const { return next_corner(corner_face_[size_t(k)], k); }
+  int lower_end(int k) const { return std::min(soup_.faces.verts[size_t(k)], soup_.faces.verts[size_t(next_corner(k))]); }
+
+  // The corners sorted by their edge's (lower, higher) vertex, each edge's in corner order: two stable
+  // counting passes (by the higher vertex, then the lower), linear whatever the valence.
+  void group_corners_by_edge() {
+    const PolygonTopology& t = soup_.faces;
+    const size_t n_corners = t.verts.size();
     std::vector<int> low(n_corners), high(n_corners);
     for (size_t k = 0; k < n_corners; ++k) {
-      const int a = t.verts[k], b = t.verts[size_t(next_corner(corner_face[k], int(k)))];
+      const int a = t.verts[k], b = t.verts[size_t(next_corner(int(k)))];
       low[k] = std::min(a, b);
       high[k] = std::max(a, b);
     }
-    std::vector<int> edge_corners(n_corners), by_high(n_corners);
+    std::vector<int> by_high(n_corners);
+    edge_corners_.resize(n_corners);
     const auto counting_sort = [&](const std::vector<int>& digit, const auto& in, std::vector<int>& out) {
       std::vector<int> next(soup_.positions.size() + 1, 0);
       for (size_t i = 0; i < n_corners; ++i) ++next[size_t(digit[size_t(in(i))]) + 1];
@@ -431,78 +524,153 @@ private:
     counting_sort(
         high, [](size_t i) { return int(i); }, by_high);
     counting_sort(
-        low, [&](size_t i) { return by_high[i]; }, edge_corners);
-    by_high = {};
-    std::vector<int> edge_offsets{0};
+        low, [&](size_t i) { return by_high[i]; }, edge_corners_);
+    edge_offsets_.assign(1, 0);
     for (size_t i = 1; i <= n_corners; ++i) {
-      const int k = edge_corners[i - 1];
-      if (i == n_corners || low[size_t(edge_corners[i])] != low[size_t(k)] ||
-          high[size_t(edge_corners[i])] != high[size_t(k)])
-        edge_offsets.push_back(int(i));
+      const int k = edge_corners_[i - 1];
+      if (i == n_corners || low[size_t(edge_corners_[i])] != low[size_t(k)] ||
+          high[size_t(edge_corners_[i])] != high[size_t(k)])
+        edge_offsets_.push_back(int(i));
     }
-    low = {};
-    high = {};
-    const int n_edges = int(edge_offsets.size()) - 1;
-    pair_.assign(n_corners, -1);
-    std::vector<char> fin_vertex(soup_.positions.size(), 0);
+  }
+
+  // Two faces on an edge are paired, whichever way they run it (orient() flips one where both run it
+  // the same way); these pairs join the faces into sheets, each face with its orientation relative to
+  // its sheet. On a fin (more than two faces) the faces of one sheet are paired off, each with one that
+  // runs the edge the other way once the sheet is oriented: a sheet closed across the fin stays closed
+  // however its faces were flipped and wherever the extra faces come in the file. Where no sheet has
+  // such two, the first face is paired with the first of another sheet that runs the edge the other
+  // way (else the first of another sheet). Every pair keeps the sheets orientable: only a sheet of
+  // two-face edges can be Möbius-like.
+  void pair_edges() {
+    const PolygonTopology& t = soup_.faces;
+    pair_.assign(t.verts.size(), -1);
+    ParitySets sheets(size_t(t.n_faces()));
+    const auto join = [&](int k, int j) {
+      pair_[size_t(k)] = j;
+      pair_[size_t(j)] = k;
+      sheets.unite(corner_face_[size_t(k)], corner_face_[size_t(j)], t.verts[size_t(k)] == t.verts[size_t(j)]);
+    };
+    const int n_edges = int(edge_offsets_.size()) - 1;
+    for (int e = 0; e < n_edges; ++e)
+      if (edge_offsets_[size_t(e) + 1] - edge_offsets_[size_t(e)] == 2)
+        join(edge_corners_[size_t(edge_offsets_[size_t(e)])], edge_corners_[size_t(edge_offsets_[size_t(e)] + 1)]);
+    struct Side {
+      int sheet, side, index;  // side: which way the face runs the edge once its sheet is oriented
+      bool operator<(const Side& o) const { return std::tie(sheet, side, index) < std::tie(o.sheet, o.side, o.index); }
+    };
+    std::vector<Side> sides;
     for (int e = 0; e < n_edges; ++e) {
-      const int* c = edge_corners.data() + edge_offsets[size_t(e)];
-      const int m = edge_offsets[size_t(e) + 1] - edge_offsets[size_t(e)];
-      if (m < 2) continue;
-      int second = c[1];
-      if (m > 2) {
-        for (int i = 1; i < m; ++i)
-          if (t.verts[size_t(c[i])] != t.verts[size_t(c[0])]) {
-            second = c[i];
-            break;
-          }
-        const int a = t.verts[size_t(c[0])], b = t.verts[size_t(next_corner(corner_face[size_t(c[0])], c[0]))];
-        found(Defect::fin_edges, {std::min(a, b), std::max(a, b), m});
-        report_.fin_faces += m - 2;
-        fin_vertex[size_t(a)] = fin_vertex[size_t(b)] = 1;
+      const int* c = edge_corners_.data() + edge_offsets_[size_t(e)];
+      const int m = edge_offsets_[size_t(e) + 1] - edge_offsets_[size_t(e)];
+      if (m <= 2) continue;
+      fin_edges_.push_back(e);
+      const int a = t.verts[size_t(c[0])], b = t.verts[size_t(next_corner(c[0]))];
+      found(Defect::fin_edges, {std::min(a, b), std::max(a, b), m});
+      sides.clear();
+      for (int i = 0; i < m; ++i) {
+        char parity = 0;
+        const int sheet = sheets.find(corner_face_[size_t(c[i])], parity);
+        sides.push_back({sheet, parity ^ (t.verts[size_t(c[i])] == a), i});
       }
-      pair_[size_t(c[0])] = second;
-      pair_[size_t(second)] = c[0];
-    }
-    // Corners at one vertex joined across the paired edges: corner k's edge runs from its vertex to the
-    // next corner's, so both ends join the paired face's corners at the same vertices.
-    LowestRootSets fans(n_corners);
-    for (size_t k = 0; k < n_corners; ++k) {
-      const int j = pair_[k];
-      if (j < 0) continue;
-      const int k_next = next_corner(corner_face[k], int(k)), j_next = next_corner(corner_face[size_t(j)], j);
-      const bool same_direction = t.verts[size_t(j)] == t.verts[k];
-      fans.unite(int(k), same_direction ? j : j_next);
-      fans.unite(k_next, same_direction ? j_next : j);
-    }
-    std::vector<int> fan_vertex(n_corners, -1);  // per fan (its root corner): the vertex it gets
-    std::vector<char> claimed(soup_.positions.size(), 0);
-    std::vector<int> copies(soup_.positions.size(), 0);
-    for (size_t k = 0; k < n_corners; ++k) {
-      const int root = fans.find(int(k));
-      int& vertex = fan_vertex[size_t(root)];
-      if (vertex < 0) {
-        const int v = t.verts[k];
-        if (!claimed[size_t(v)]) {
-          claimed[size_t(v)] = 1;
-          vertex = v;
-        } else {
-          ++copies[size_t(v)];
-          vertex = int(vertex_origin_.size());
-          vertex_origin_.push_back(vertex_origin_[size_t(v)]);
+      std::sort(sides.begin(), sides.end());
+      bool paired = false;
+      for (size_t i = 0, j = 0; i < sides.size(); i = j) {  // a sheet's faces: one side, then the other
+        size_t other = i;
+        for (j = i; j < sides.size() && sides[j].sheet == sides[i].sheet; ++j)
+          if (sides[j].side == 0) other = j + 1;
+        for (size_t q = i; q < other && other + (q - i) < j; ++q) {
+          join(c[sides[q].index], c[sides[other + (q - i)].index]);
+          paired = true;
         }
       }
-      t.verts[k] = vertex;
+      if (paired) continue;
+      int partner = -1;
+      const int sheet0 = sheets.find(corner_face_[size_t(c[0])]);
+      for (int i = 1; i < m; ++i) {
+        if (sheets.find(corner_face_[size_t(c[i])]) == sheet0) continue;
+        if (partner < 0) partner = i;
+        if (t.verts[size_t(c[i])] != a) {
+          partner = i;
+          break;
+        }
+      }
+      if (partner > 0) join(c[0], c[partner]);
     }
-    for (size_t v = 0; v < copies.size(); ++v) {
-      if (copies[v] == 0) continue;
-      if (fin_vertex[v]) {
-        report_.fin_copies += copies[v];
-      } else {
-        found(Defect::pinch_vertices, {int(v), -1, copies[v] + 1});
-        report_.pinch_copies += copies[v];
+  }
+
+  // Joins the fans of paired corners k and j at both ends of their edge.
+  void join_fans(LowestRootSets& fans, int k, int j) const {
+    const int k_next = next_corner(k), j_next = next_corner(j);
+    const bool same_direction = soup_.faces.verts[size_t(j)] == soup_.faces.verts[size_t(k)];
+    fans.unite(k, same_direction ? j : j_next);
+    fans.unite(k_next, same_direction ? j_next : j);
+  }
+
+  // The fans the file's faces make, every face on an edge joined across it (its pinches).
+  LowestRootSets fans_joining_every_face() const {
+    LowestRootSets fans(soup_.faces.verts.size());
+    for (size_t e = 0; e + 1 < edge_offsets_.size(); ++e)
+      for (int i = edge_offsets_[e] + 1; i < edge_offsets_[e + 1]; ++i)
+        join_fans(fans, edge_corners_[size_t(edge_offsets_[e])], edge_corners_[size_t(i)]);
+    return fans;
+  }
+
+  // The fans of the corners joined across paired edges.
+  LowestRootSets fans_of_pairs() const {
+    LowestRootSets fans(soup_.faces.verts.size());
+    for (size_t k = 0; k < pair_.size(); ++k)
+      if (pair_[k] > int(k)) join_fans(fans, int(k), pair_[k]);
+    return fans;
+  }
+
+  // Per vertex: how many fans its corners make.
+  std::vector<int> fans_per_vertex(LowestRootSets& fans) const {
+    std::vector<int> count(soup_.positions.size(), 0);
+    std::vector<char> counted(soup_.faces.verts.size(), 0);
+    for (size_t k = 0; k < soup_.faces.verts.size(); ++k)
+      if (char& seen = counted[size_t(fans.find(int(k)))]; !seen) {
+        seen = 1;
+        ++count[size_t(soup_.faces.verts[k])];
+      }
+    return count;
+  }
+
+  // Faces of a fin that are not paired with each other but still meet in the same fans at both of its
+  // ends (an extra face joined to the kept ones through its other edges) would put more than two faces
+  // on one edge again: all but one pair (else one face) of them are cut from the fan at their first
+  // end, their pair on the edge and on the edge before that corner undone. Whether any was.
+  bool cut_faces_meeting_again(LowestRootSets& fans) {
+    const auto unpair = [&](int k) {
+      if (pair_[size_t(k)] < 0) return false;
+      pair_[size_t(pair_[size_t(k)])] = -1;
+      pair_[size_t(k)] = -1;
+      return true;
+    };
+    bool cut = false;
+    std::vector<std::array<int, 3>> ends;  // per corner on the fin: its fans at the lower and higher end
+    for (const int e : fin_edges_) {
+      ends.clear();
+      for (int i = edge_offsets_[size_t(e)]; i < edge_offsets_[size_t(e) + 1]; ++i) {
+        const int k = edge_corners_[size_t(i)];
+        const int at_k = fans.find(k), at_next = fans.find(next_corner(k));
+        ends.push_back(soup_.faces.verts[size_t(k)] == lower_end(k) ? std::array{at_k, at_next, k}
+                                                                       : std::array{at_next, at_k, k});
+      }
+      std::sort(ends.begin(), ends.end());
+      for (size_t i = 0, j = 0; i < ends.size(); i = j) {
+        int keep = ends[i][2];
+        for (j = i; j < ends.size() && ends[j][0] == ends[i][0] && ends[j][1] == ends[i][1]; ++j)
+          if (pair_[size_t(ends[j][2])] >= 0) keep = ends[j][2];
+        for (size_t q = i; q < j; ++q) {
+          const int k = ends[q][2];
+          if (k == keep || k == pair_[size_t(keep)]) continue;
+          cut |= unpair(k);
+          cut |= unpair(previous_corner(corner_face_[size_t(k)], k));
+        }
       }
     }
+    return cut;
   }
 
   // Breadth-first over the paired edges, each face oriented as the face it was reached from; in each
@@ -512,9 +680,7 @@ private:
     PolygonTopology& t = faces();
     const int n_faces = t.n_faces();
     flip_.assign(size_t(n_faces), 0);
-    std::vector<int> part(size_t(n_faces), -1), corner_face(t.verts.size());
-    for (int f = 0; f < n_faces; ++f)
-      for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) corner_face[size_t(k)] = f;
+    std::vector<int> part(size_t(n_faces), -1);
     std::vector<int> queue;
     int unorientable = 0;
     for (int start = 0; start < n_faces; ++start) {
@@ -528,7 +694,7 @@ private:
         for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
           const int j = pair_[size_t(k)];
           if (j < 0) continue;
-          const int g = corner_face[size_t(j)];
+          const int g = corner_face_[size_t(j)];
           const char flip = char(flip_[size_t(f)] ^ (t.verts[size_t(j)] == t.verts[size_t(k)]));
           if (part[size_t(g)] < 0) {
             part[size_t(g)] = id;
@@ -550,7 +716,7 @@ private:
       if (2 * flipped > queue.size())
         for (const int f : queue) flip_[size_t(f)] ^= 1;
     }
-    if (unorientable == 0) count_boundary_loops(corner_face);
+    if (unorientable == 0) count_boundary_loops();
     for (int f = 0; f < n_faces; ++f) {
       if (!flip_[size_t(f)]) continue;
       found(Defect::flipped_faces, {file_face(f)});
@@ -560,12 +726,12 @@ private:
 
   // Each boundary vertex of an oriented manifold has one boundary edge leaving it: the loops are the
   // cycles of that successor map. Read before the flipped faces are reversed (their edges run back).
-  void count_boundary_loops(const std::vector<int>& corner_face) {
+  void count_boundary_loops() {
     const PolygonTopology& t = faces();
     std::vector<int> next(vertex_origin_.size(), -1);
     for (size_t k = 0; k < t.verts.size(); ++k) {
       if (pair_[k] >= 0) continue;
-      const int f = corner_face[k];
+      const int f = corner_face_[k];
       int a = t.verts[k], b = t.verts[size_t(next_corner(f, int(k)))];
       if (flip_[size_t(f)]) std::swap(a, b);
       next[size_t(a)] = b;

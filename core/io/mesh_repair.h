@@ -5,6 +5,12 @@
 // orientation made consistent per connected part and isolated vertices dropped. Each step is counted
 // in a report. The same code diagnoses a soup without changing it (gpsurf info).
 //
+// The result always makes a CovarianceMesh but for a part that no flipping orients (Möbius-like: its
+// faces joined through edges of two faces alone), which is left as it is, counted and named. On a fin
+// the faces of one sheet (faces joined through edges of two faces) that close it across the edge stay
+// paired, however its faces were flipped; an extra face still joined to the kept ones through its
+// other edges is cut from them at one end too, so that no edge of the result has more than two faces.
+//
 // Vertices that stay keep their Gaussian; a welded vertex keeps the one of its group's lowest index; a
 // copy made by separating fans takes its original's. Vertices keep their order (welded and dropped ones
 // removed), copies come after them; faces keep their order (dropped ones removed, pieces of a face
@@ -43,7 +49,7 @@ enum class Defect {
   degenerate_faces,     // faces left with fewer than 3 distinct corners (dropped)
   zero_area_faces,      // faces thinner than the weld tolerance (dropped)
   duplicate_faces,      // faces on the same vertex set as an earlier face (dropped)
-  fin_edges,            // edges with more than two faces (faces past the first two get their own copies)
+  fin_edges,            // edges with more than two faces (the faces left unpaired get their own copies)
   pinch_vertices,       // vertices where several fans of faces meet (one copy per fan)
   flipped_faces,        // faces oriented against their part (flipped)
   unorientable_parts,   // parts that no flipping can orient (Möbius-like; left as they are)
@@ -67,7 +73,7 @@ struct RepairReport {
   std::array<std::vector<DefectExample>, kDefectCount> examples;  // the first few
   int welded_groups = 0;                                          // the vertices the coincident ones became
   int split_faces = 0;        // faces that used a vertex twice, split into several faces
-  int fin_faces = 0;          // faces separated from fin edges
+  int fin_faces = 0;          // faces left unpaired on fin edges, separated from the others there
   int fin_copies = 0;         // vertex copies made for them
   int pinch_copies = 0;       // vertex copies made for the extra fans of pinch vertices
   int parts = 0;              // connected parts of the result

@@ -79,7 +79,8 @@ constexpr DefectWords kDefectWords[kDefectCount] = {
     {"face oriented against its neighbours", "faces oriented against their neighbours", "--repair flips it",
      "--repair flips them"},
     {"part that cannot be oriented (Möbius-like)", "parts that cannot be oriented (Möbius-like)",
-     "no repair orients it", "no repair orients them"},
+     "no repair orients it (delete faces across it to cut it open, then repair)",
+     "no repair orients them (delete faces across each to cut it open, then repair)"},
     {"isolated vertex (in no face)", "isolated vertices (in no face)", "--repair drops it", "--repair drops them"},
 };
 

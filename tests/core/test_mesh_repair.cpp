@@ -249,6 +249,38 @@ TEST(MeshRepair, FinFaceGetsItsOwnEdge) {
   EXPECT_EQ(r.boundary_loops, 2);
 }
 
+// A closed tetrahedron 0 1 2 3 and a triangle 0 1 4 hanging from its edge 0–1, written first: the
+// tetrahedron's faces on the fin close one sheet and stay paired, although the triangle comes before
+// them, and each of its other faces joins them at 0 and at 1; the tetrahedron's last face is flipped.
+TEST(MeshRepair, FinFaceConnectedThroughOtherEdgesIsSeparated) {
+  const std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1, 0), Vec3(0.5, 0.3, 1), Vec3(0.5, -1, 0)};
+  const std::vector<std::vector<int>> tetrahedron = {{1, 0, 2}, {0, 1, 3}, {3, 1, 2}, {2, 0, 3}};
+  std::vector<std::vector<int>> faces = {{0, 1, 4}};
+  faces.insert(faces.end(), tetrahedron.begin(), tetrahedron.end());
+  std::reverse(faces[4].begin() + 1, faces[4].end());
+  PolygonSoup s = soup_of(p, faces);
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_EQ(r.count(Defect::fin_edges), 1);
+  EXPECT_EQ(r.fin_faces, 1);
+  EXPECT_EQ(r.fin_copies, 2);
+  EXPECT_EQ(r.count(Defect::pinch_vertices), 0);
+  EXPECT_EQ(r.count(Defect::flipped_faces), 1);
+  EXPECT_EQ(r.examples[size_t(Defect::flipped_faces)][0].element, 4);
+  const auto f = faces_of(s);
+  ASSERT_EQ(f.size(), 5u);
+  EXPECT_EQ(f[0], faces[0]) << "the triangle's fans come first: it keeps vertices 0 and 1";
+  const std::map<int, int> copy = {{0, 6}, {1, 5}, {2, 2}, {3, 3}};  // the tetrahedron on their copies
+  for (size_t i = 0; i < tetrahedron.size(); ++i)
+    EXPECT_EQ(f[i + 1], (std::vector<int>{copy.at(tetrahedron[i][0]), copy.at(tetrahedron[i][1]),
+                                          copy.at(tetrahedron[i][2])}));
+  EXPECT_EQ(s.positions[5], p[1]);
+  EXPECT_EQ(s.positions[6], p[0]);
+  EXPECT_EQ(s.positions.size(), 7u);
+  EXPECT_EQ(boundary_edges(s), 3);
+  EXPECT_EQ(r.parts, 2);
+  EXPECT_EQ(r.boundary_loops, 1);
+}
+
 TEST(MeshRepair, ZeroAreaDuplicateAndDegenerateFacesAreDropped) {
   // A square of two triangles; a duplicate of the first (rotated), a sliver on the edge 0–1 through
   // vertex 4 (its midpoint), a face listing vertex 2 twice in a row (mended) and one on two vertices.
