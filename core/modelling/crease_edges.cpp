@@ -4,6 +4,8 @@
 #include <sstream>
 #include <string>
 
+#include "core/mesh/crease_by_angle.h"
+#include "core/modelling/operation_words.h"
 #include "core/support/error.h"
 
 namespace gps {
@@ -25,10 +27,6 @@ std::string sharpness_words(double s) {
   return text.str();
 }
 
-std::string counted(size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
 }  // namespace
 
 Modelled set_crease(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, double sharpness) {
@@ -46,7 +44,24 @@ Modelled set_crease(const CovarianceMesh& mesh, const std::vector<std::array<int
   }
   std::sort(out.selection.begin(), out.selection.end());
   out.selection.erase(std::unique(out.selection.begin(), out.selection.end()), out.selection.end());
-  out.summary = "set the crease of " + counted(edges.size(), "edge", "edges") + " to " + sharpness_words(sharpness);
+  out.summary = "set the crease of " + count_of(edges.size(), "edge", "edges") + " to " + sharpness_words(sharpness);
+  return out;
+}
+
+Modelled crease_sharp_edges(const CovarianceMesh& mesh, double degrees, double sharpness) {
+  if (!(degrees >= 0 && degrees < 180))
+    throw Error("the angle must be from 0 to less than 180 degrees, got " + short_number(degrees));
+  check_sharpness(sharpness);
+  const std::vector<double> angles = dihedral_angles(mesh);
+  std::vector<std::array<int, 2>> sharp;
+  for (const auto e : mesh.mesh.edges())
+    if (angles[size_t(e.idx())] > degrees) {
+      const auto h = mesh.mesh.halfedge_handle(e, 0);
+      sharp.push_back({mesh.mesh.from_vertex_handle(h).idx(), mesh.mesh.to_vertex_handle(h).idx()});
+    }
+  Modelled out = set_crease(mesh, sharp, sharpness);
+  out.summary = "set the crease of " + count_of(sharp.size(), "edge", "edges") + " sharper than " +
+                short_number(degrees) + "° to " + sharpness_words(sharpness);
   return out;
 }
 
@@ -56,7 +71,7 @@ Modelled set_corner(const CovarianceMesh& mesh, const std::vector<int>& vertices
   Modelled out{mesh, sorted_vertices(arrays, vertices), ""};
   for (const int v : out.selection) out.mesh.sharpness.set_corner(v, sharpness, int(mesh.n_vertices()));
   out.summary =
-      "set the corner of " + counted(out.selection.size(), "vertex", "vertices") + " to " + sharpness_words(sharpness);
+      "set the corner of " + count_of(out.selection.size(), "vertex", "vertices") + " to " + sharpness_words(sharpness);
   return out;
 }
 

@@ -14,6 +14,12 @@ namespace gps {
 /// not finite, a vertex out of range or a pair that is not an edge ("edge 2–7 is not in the mesh").
 Modelled set_crease(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, double sharpness);
 
+/// Gives every interior edge whose dihedral angle exceeds `degrees` (0 ≤ degrees < 180; the angle
+/// between its faces' normals, core/mesh/crease_by_angle.h) the sharpness, as Blender's Select Sharp
+/// Edges then Edge Crease: the Gaussians stay as they are. Selects the edges' vertices. Throws as
+/// set_crease, and for an angle outside that range.
+Modelled crease_sharp_edges(const CovarianceMesh& mesh, double degrees, double sharpness);
+
 /// Gives every listed vertex the corner sharpness (0 removes it); selects them. Throws as set_crease.
 Modelled set_corner(const CovarianceMesh& mesh, const std::vector<int>& vertices, double sharpness);
 

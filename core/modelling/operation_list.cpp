@@ -14,17 +14,21 @@
 #include "core/mesh/covariance_mesh.h"
 #include "core/support/error.h"
 #include "core/modelling/affine_transform.h"
+#include "core/modelling/bisect.h"
 #include "core/modelling/bridge.h"
 #include "core/modelling/crease_edges.h"
 #include "core/modelling/delete_elements.h"
+#include "core/modelling/duplicate.h"
 #include "core/modelling/edge_operations.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
 #include "core/modelling/inset.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/merge_vertices.h"
+#include "core/modelling/mirror.h"
 #include "core/modelling/primitives.h"
 #include "core/modelling/slide.h"
+#include "core/modelling/spin.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/plans/planned_surface.h"
 #include "core/reference/subdivision_size.h"
@@ -108,6 +112,8 @@ public:
     const std::vector<double> v = numbers(key, 3);
     return Vec3(v[0], v[1], v[2]);
   }
+  /// The value of a key as it is, for a nested object.
+  const Json& json(const char* key) { return at(key); }
   /// Refuses keys the operation does not read (a misspelt key would otherwise be ignored).
   void check_all_used() const {
     for (const auto& [key, value] : object_.items())
@@ -201,6 +207,61 @@ Run transform(Fields& f) {
     }
   }();
   return [=](const CovarianceMesh& mesh) { return transform_vertices(mesh, vertices, map); };
+}
+
+// {"op":"bisect","plane":{"point":[x,y,z],"normal":[x,y,z]}}: every face the plane crosses cut along it.
+Run bisect_step(Fields& f) {
+  const Json& object = f.json("plane");
+  if (!object.is_object()) throw usage_error("\"plane\" must be {\"point\": [x, y, z], \"normal\": [x, y, z]}");
+  Fields plane(object);
+  try {
+    const Vec3 point = plane.vector3("point"), normal = plane.vector3("normal");
+    plane.check_all_used();
+    if (!(normal.norm() > 0)) throw usage_error("\"normal\" must not be zero");
+    return [=](const CovarianceMesh& m) { return bisect(m, point, normal); };
+  } catch (const Error& e) {
+    throw usage_error("\"plane\": " + std::string(e.what()));
+  }
+}
+
+// {"op":"duplicate","faces":[…]|"all","offset":[x,y,z]}: a moved copy of the faces as a new part.
+Run duplicate_step(Fields& f) {
+  const Vec3 offset = f.has("offset") ? f.vector3("offset") : Vec3::Zero();
+  if (f.is_text("faces")) {
+    if (f.text("faces") != "all") throw usage_error("\"faces\" must be \"all\" or a non-empty list of indices");
+    return [=](const CovarianceMesh& m) {
+      std::vector<int> all(m.n_faces());
+      for (size_t i = 0; i < all.size(); ++i) all[i] = int(i);
+      return duplicate_faces(m, all, offset);
+    };
+  }
+  const std::vector<int> faces = f.indices("faces");
+  if (faces.empty()) throw usage_error("\"faces\" must be \"all\" or a non-empty list of indices");
+  return [=](const CovarianceMesh& m) { return duplicate_faces(m, faces, offset); };
+}
+
+// {"op":"spin","vertices":[…],"axis":[x,y,z],"center":[x,y,z],"angle":deg,"steps":n}: a lathe.
+Run spin_step(Fields& f) {
+  const std::vector<int> vertices = f.indices("vertices");
+  if (vertices.size() < 2) throw usage_error("\"vertices\" must be a chain of at least 2 vertices");
+  const Vec3 axis = f.vector3("axis");
+  if (!(axis.norm() > 0)) throw usage_error("\"axis\" must not be zero");
+  const Vec3 center = f.has("center") ? f.vector3("center") : Vec3::Zero();
+  const double angle = f.number("angle");
+  if (angle == 0 || std::abs(angle) > 360) throw usage_error("\"angle\" must be from -360 to 360 degrees and not 0");
+  const int steps = f.integer("steps", std::abs(angle) == 360 ? 3 : 1, 1000);
+  return [=](const CovarianceMesh& m) { return spin(m, vertices, axis, center, angle, steps); };
+}
+
+// {"op":"mirror","axis":"x"|"y"|"z","center":[x,y,z],"merge":true}: the mesh and its mirror image.
+Run mirror_step(Fields& f) {
+  const std::string name = f.text("axis");
+  const std::map<std::string, int> axes{{"x", 0}, {"y", 1}, {"z", 2}};
+  if (!axes.count(name)) throw usage_error("\"axis\" must be \"x\", \"y\" or \"z\"");
+  const int axis = axes.at(name);
+  const Vec3 center = f.has("center") ? f.vector3("center") : Vec3::Zero();
+  const bool merge = !f.has("merge") || f.boolean("merge");
+  return [=](const CovarianceMesh& m) { return mirror(m, axis, center, merge); };
 }
 
 using Append = std::function<std::vector<int>(MeshArrays&, std::string&)>;
@@ -309,10 +370,21 @@ Run parse_step(const std::string& op, Fields& f, Append& append) {
   }
   if (op == "set") return set_gaussians(f);
   if (op == "crease") {
+    if (f.is_text("edges")) {
+      if (f.text("edges") != "sharp") throw usage_error("\"edges\" must be \"sharp\" or a list of [a, b] edges");
+      const double angle = f.number("angle");
+      if (!(angle >= 0 && angle < 180)) throw usage_error("\"angle\" must be from 0 to less than 180 degrees");
+      const double sharpness = f.number("sharpness");
+      return [=](const CovarianceMesh& m) { return crease_sharp_edges(m, angle, sharpness); };
+    }
     const Edges edges = f.edges("edges");
     const double sharpness = f.number("sharpness");
     return [=](const CovarianceMesh& m) { return set_crease(m, edges, sharpness); };
   }
+  if (op == "bisect") return bisect_step(f);
+  if (op == "duplicate") return duplicate_step(f);
+  if (op == "spin") return spin_step(f);
+  if (op == "mirror") return mirror_step(f);
   if (op == "corner") {
     const std::vector<int> vertices = f.indices("vertices");
     if (vertices.empty()) throw usage_error("\"vertices\" is empty");
@@ -339,7 +411,8 @@ std::string prefixed(const std::string& source, const std::string& message) {
 
 std::vector<std::string> operation_names() {
   return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude", "inset", "delete", "dissolve", "merge",
-          "weld",      "fill",     "bridge",     "transform", "add",     "set",   "crease", "corner", "slide"};
+          "weld",      "fill",     "bridge",     "transform", "add",     "set",   "crease", "corner", "slide",
+          "bisect", "duplicate", "spin", "mirror"};
 }
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {

@@ -1,0 +1,19 @@
+#pragma once
+// Mirroring a mesh, as Blender's Mirror (modifier, applied) does: the mesh and its mirror image about
+// an axis-aligned plane, joined along the plane into one part when they meet there.
+#include "core/modelling/mesh_arrays.h"
+
+namespace gps {
+
+/// Appends the mirror image of the whole mesh about the plane through `center` perpendicular to axis
+/// `axis` (0 x, 1 y, 2 z): every vertex copied with μ′ = M(μ − c) + c and Σ′ = MΣMᵀ (M flips the
+/// axis), every face copied with its corners reversed (keeping the first) so that the copy stays
+/// outward; creases and corners are copied too. With `merge`, a vertex on the plane (within 1e-5 of
+/// the mesh's bounding-box diagonal) is not copied: it serves both halves, its Gaussian the 9D average
+/// of itself and its image (symmetric about the plane, so that the surface is). The seam must then be
+/// manifold: refuses an edge on the plane with faces on both sides, a face on the plane, and a vertex
+/// on the plane beside no boundary edge along it (the halves would meet at a point). Selection: the
+/// copies.
+Modelled mirror(const CovarianceMesh& mesh, int axis, const Vec3& center, bool merge);
+
+}  // namespace gps
