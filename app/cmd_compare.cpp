@@ -25,7 +25,8 @@ void add_compare_command(CLI::App& app) {
       "compare",
       "Distances from A's vertices to B's limit surface (tessellated densely): rms, 99th percentile and max, each also "
       "over A's bounding-box diagonal");
-  cmd->add_option("A", args->first, "mesh whose points are measured")->required();
+  cmd->add_option("A", args->first, "mesh whose points are measured (its vertices: any mesh file, manifold or not)")
+      ->required();
   cmd->add_option("B", args->second, "mesh whose limit surface they are measured to")->required();
   cmd->add_flag("--both", args->both, "also B's points to A's limit surface");
   auto* samples = cmd->add_flag("--samples", args->samples,
@@ -41,8 +42,13 @@ void add_compare_command(CLI::App& app) {
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args, level] {
     const PlanOptions options = args->plans.options();
-    const CovarianceMesh a = read_mesh_repairing(args->first, args->repair);
-    const CovarianceMesh b = read_mesh_repairing(args->second, args->repair);
+    // A's surface is needed only by --both and --samples; else its vertices are read as points, whatever
+    // its faces (a scan that is not a manifold, a point cloud), and --repair mends B alone.
+    const bool a_surface = args->both || args->samples;
+    const CovarianceMesh a =
+        a_surface ? read_mesh_repairing(args->first, args->repair, {}, false, true) : CovarianceMesh();
+    const std::vector<Vec3> a_points = a_surface ? std::vector<Vec3>() : read_points(args->first);
+    const CovarianceMesh b = read_mesh_repairing(args->second, args->repair, {}, false, true);
     const double max_triangles = level->count() > 0 ? INFINITY : kMeasuredTriangles;
     const auto limit_of = [&](const std::string& path, const CovarianceMesh& m) {
       if (args->linear) return LimitTriangles{face_triangles(m), 0};
@@ -50,17 +56,20 @@ void add_compare_command(CLI::App& app) {
     };
     const LimitTriangles limit_b = limit_of(args->second, b);
     LimitTriangles limit_a;
-    if (args->both || args->samples) limit_a = limit_of(args->first, a);
-    const auto report = [&](const std::string& from, const CovarianceMesh& m, const LimitTriangles& own_limit,
-                            const std::string& to, const LimitTriangles& limit) {
-      const std::vector<Vec3> points = args->samples ? own_limit.triangles.positions : vertex_means(m);
+    if (a_surface) limit_a = limit_of(args->first, a);
+    // The points measured: a mesh's limit samples (--samples) or its vertices.
+    const auto points_of = [&](const CovarianceMesh& m, const LimitTriangles& own_limit) {
+      return args->samples ? own_limit.triangles.positions : vertex_means(m);
+    };
+    const auto report = [&](const std::string& from, const std::vector<Vec3>& points, const std::string& to,
+                            const LimitTriangles& limit) {
       std::cout << escaped(from) << " (" << points.size() << (args->samples ? " limit samples" : " vertices")
                 << ") to " << (args->linear ? "the faces of " : "the limit surface of ") << escaped(to);
       if (!args->linear) std::cout << " (level " << limit.level << ")";
       std::cout << ":\n" << describe(distances_to_surface(points, limit.triangles));
     };
-    report(args->first, a, limit_a, args->second, limit_b);
-    if (args->both) report(args->second, b, limit_b, args->first, limit_a);
+    report(args->first, a_surface ? points_of(a, limit_a) : a_points, args->second, limit_b);
+    if (args->both) report(args->second, points_of(b, limit_b), args->first, limit_a);
   });
 }
 

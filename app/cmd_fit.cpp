@@ -54,10 +54,8 @@ void add_fit_command(CLI::App& app) {
   add_plan_arguments(cmd, args->plans);
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args, level] {
-    const CovarianceMesh coarse = read_mesh_repairing(args->coarse, args->repair);
-    bool has_covariances = false;
-    const std::vector<Vec3> targets = read_polygon_soup(args->target, has_covariances).positions;
-    if (targets.empty()) throw Error(escaped(args->target) + ": has no vertices to fit to");
+    const CovarianceMesh coarse = read_mesh_repairing(args->coarse, args->repair, {}, false, true);
+    const std::vector<Vec3> targets = read_points(args->target);  // whatever its faces
     FitOptions options;
     options.iterations = args->iterations;
     options.plain = args->plain;

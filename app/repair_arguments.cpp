@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "app/cli_checks.h"
+#include "core/support/quoted_text.h"
 
 namespace gps {
 
@@ -22,16 +23,17 @@ void add_repair_arguments(CLI::App* cmd, RepairArguments& arguments) {
 }
 
 CovarianceMesh read_mesh_repairing(const std::string& path, const RepairArguments& arguments,
-                                   const ImportOptions& options, bool quiet) {
+                                   const ImportOptions& options, bool quiet, bool name_file) {
   const ImportOptions o = arguments.import_options(options);
   RepairReport report;
   std::vector<std::string> notes;
   CovarianceMesh mesh = read_mesh(path, o, &report, &notes);
   print_reader_notes(notes);
   if (o.repair && !quiet) {
+    const std::string prefix = "repair: " + (name_file ? escaped(path) + ": " : std::string());
     const auto lines = report.lines();
-    if (lines.empty()) std::cout << "repair: nothing to repair\n";
-    for (const std::string& line : lines) std::cout << "repair: " << line << "\n";
+    if (lines.empty()) std::cout << prefix << "nothing to repair\n";
+    for (const std::string& line : lines) std::cout << prefix << line << "\n";
   }
   return mesh;
 }

@@ -20,10 +20,11 @@ struct RepairArguments {
 void add_repair_arguments(CLI::App* cmd, RepairArguments& arguments);
 
 /// read_mesh with the repair asked for; when repairing and not `quiet`, the report goes to stdout first
-/// ("repair: " and a line per step that changed something, or that nothing needed it). What the reader
-/// read leniently goes to stderr ("note: " and the note, which names the file).
+/// ("repair: " and a line per step that changed something, or that nothing needed it), each line
+/// naming the file where `name_file` (a command that reads two). What the reader read leniently goes
+/// to stderr ("note: " and the note, which names the file).
 CovarianceMesh read_mesh_repairing(const std::string& path, const RepairArguments& arguments,
-                                   const ImportOptions& options = {}, bool quiet = false);
+                                   const ImportOptions& options = {}, bool quiet = false, bool name_file = false);
 
 /// Prints the reader's notes to stderr, "note: " before each.
 void print_reader_notes(const std::vector<std::string>& notes);

@@ -33,6 +33,13 @@ PolygonSoup read_polygon_soup(const std::string& path, bool& has_covariances) {
   return parse_stl_soup(std::move(data), path);
 }
 
+std::vector<Vec3> read_points(const std::string& path) {
+  bool has_covariances = false;
+  std::vector<Vec3> points = read_polygon_soup(path, has_covariances).positions;
+  if (points.empty()) throw Error(escaped(path) + ": has no vertices");
+  return points;
+}
+
 RepairOptions repair_options_for(const ImportOptions& options) {
   RepairOptions o;
   o.weld_tolerance = options.weld_tolerance;

@@ -37,6 +37,11 @@ CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const
                                  const ImportOptions& options = {}, RepairReport* report = nullptr,
                                  const RepairReport* diagnosis = nullptr);
 
+/// The vertices of the mesh file at `path` as points, its faces not made into a mesh (it may have none,
+/// or not be a manifold, as scans are): for what measures points only (compare's A, fit's target).
+/// Throws gps::Error naming the file where it has no vertices.
+std::vector<Vec3> read_points(const std::string& path);
+
 /// The repair options read_mesh uses: the tolerance of `options`.
 RepairOptions repair_options_for(const ImportOptions& options = {});
 

@@ -4,7 +4,6 @@
 
 #include "core/support/error.h"
 
-#include "core/plans/patch_layout.h"
 
 namespace gps {
 

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <sstream>
 
 #include "tests/support/run_command.h"
@@ -66,6 +68,52 @@ TEST(CompareCli, LinearMeasuresToTheFacesThemselves) {
   ASSERT_EQ(limit.exit_code, 0) << limit.output;
   EXPECT_EQ(limit.output.find("\nmax 0 "), std::string::npos) << limit.output;
   EXPECT_EQ(run_command(gpsurf("compare " + octahedron + " " + octahedron + " --linear --samples")).exit_code, 2);
+}
+
+/// Two unit cubes over [1, 3]² from z = `bottom` to `bottom` + 0.25 sharing their vertical edge at (2, 2):
+/// 14 vertices, and the shared edge in four faces (a fin), so not a manifold.
+std::string cubes_sharing_an_edge_obj(double bottom) {
+  std::ostringstream obj;
+  const double top = bottom + 0.25;
+  for (const double z : {bottom, top})  // vertices 1-7 at the bottom, 8-14 at the top
+    obj << "v 1 1 " << z << "\nv 2 1 " << z << "\nv 2 2 " << z << "\nv 1 2 " << z << "\nv 3 2 " << z << "\nv 3 3 " << z
+        << "\nv 2 3 " << z << "\n";
+  for (const auto& q : {std::array<int, 4>{1, 4, 3, 2}, {3, 7, 6, 5}})  // each cube: bottom, top, four sides
+    obj << "f " << q[0] << " " << q[1] << " " << q[2] << " " << q[3] << "\nf " << q[0] + 7 << " " << q[3] + 7 << " "
+        << q[2] + 7 << " " << q[1] + 7 << "\n";
+  for (const auto& ring : {std::array<int, 4>{1, 2, 3, 4}, {3, 5, 6, 7}})
+    for (int k = 0; k < 4; ++k) {
+      const int a = ring[size_t(k)], b = ring[size_t((k + 1) % 4)];
+      obj << "f " << a << " " << b << " " << b + 7 << " " << a + 7 << "\n";
+    }
+  return obj.str();
+}
+
+// A first mesh that is not a manifold (a scan's fins) is measured as its points: its 14 vertices, 7 at
+// height 0.25 and 7 at 0.5 over B's flat limit surface. Where its surface is needed (--both) it is
+// refused naming the fin; --repair mends B, and its line names the file.
+TEST(CompareCli, ANonManifoldFirstMeshIsMeasuredAsItsPoints) {
+  test::TempDir dir;
+  const std::string a = dir.write("cubes.obj", cubes_sharing_an_edge_obj(0.25));
+  const std::string b = dir.write("b.obj", flat_grid_obj(4, 1, 0, 0));
+  const auto r = run_command(gpsurf("compare " + a + " " + b));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("cubes.obj (14 vertices) to the limit surface of"), std::string::npos) << r.output;
+  const double rms = std::sqrt((7 * 0.25 * 0.25 + 7 * 0.5 * 0.5) / 14);
+  std::ostringstream expected_rms;
+  expected_rms << "\nrms " << rms << " (";
+  EXPECT_NE(r.output.find(expected_rms.str()), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\nmax 0.5 ("), std::string::npos) << r.output;
+
+  const auto both = run_command(gpsurf("compare " + a + " " + b + " --both --level 2"));
+  EXPECT_EQ(both.exit_code, 1) << both.output;
+  EXPECT_EQ(std::count(both.output.begin(), both.output.end(), '\n'), 1) << both.output;
+  EXPECT_NE(both.output.find("cubes.obj: 1 non-manifold edge (a fin"), std::string::npos) << both.output;
+
+  const auto repaired = run_command(gpsurf("compare " + a + " " + b + " --repair"));
+  ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
+  EXPECT_EQ(repaired.output.rfind("repair: " + b + ": nothing to repair\n", 0), 0u) << repaired.output;
+  EXPECT_EQ(repaired.output.find("repair: " + a), std::string::npos) << repaired.output;
 }
 
 TEST(CompareCli, UsageAndRuntimeErrorsAreOneLine) {

@@ -2,9 +2,13 @@
 // --plain, and errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
+#include "core/io/text_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -94,6 +98,46 @@ TEST(FitCli, StopsAtTheToleranceOrTheTimeAndSaysWhy) {
     EXPECT_EQ(refused.exit_code, 2) << bad << ": " << refused.output;
     EXPECT_NE(refused.output.find(bad.substr(1, bad.find(' ', 1) - 1)), std::string::npos) << refused.output;
   }
+}
+
+// A target that is not a manifold (the sides of two cubes sharing an edge: a fin) is fitted to as its points; with two
+// files read, the repair's lines and the reader's notes name the file they are about.
+TEST(FitCli, ANonManifoldTargetIsFittedAsItsPoints) {
+  test::TempDir dir;
+  const std::string coarse = dir.file("coarse.obj");
+  ASSERT_EQ(run_command(gpsurf("sample cube -o " + coarse)).exit_code, 0);
+  // An edge of the cube's first face creased twice, with two values: the later is kept, with a note.
+  std::istringstream written(read_text_file(coarse));
+  std::string line;
+  while (std::getline(written, line) && line.rfind("f ", 0) != 0) {
+  }
+  int a = 0, b = 0;
+  std::istringstream(line.substr(2)) >> a >> b;  // from 1 in f records, from 0 in tags
+  const std::string edge = std::to_string(std::min(a, b) - 1) + " " + std::to_string(std::max(a, b) - 1);
+  std::ofstream(coarse, std::ios::app) << "t crease 2/1/0 " << edge << " 1\nt crease 2/1/0 " << edge << " 2\n";
+  std::ostringstream target;
+  for (const double z : {0.0, 1.0})
+    target << "v 0 0 " << z << "\nv 1 0 " << z << "\nv 1 1 " << z << "\nv 0 1 " << z << "\nv 2 1 " << z << "\nv 2 2 "
+           << z << "\nv 1 2 " << z << "\n";
+  for (const auto& ring : {std::array<int, 4>{1, 2, 3, 4}, {3, 5, 6, 7}})
+    for (int k = 0; k < 4; ++k) {  // the sides of two cubes meeting at the edge 3-10: four faces on it
+      const int a = ring[size_t(k)], b = ring[size_t((k + 1) % 4)];
+      target << "f " << a << " " << b << " " << b + 7 << " " << a + 7 << "\n";
+    }
+  const std::string cubes = dir.write("cubes.obj", target.str());
+  ASSERT_NE(run_command(gpsurf("info " + cubes)).exit_code, 0) << "the target should not be a manifold";
+  const std::string out = dir.file("fitted.ply");
+  const auto r =
+      run_command(gpsurf("fit " + coarse + " --target " + cubes + " -o " + out + " --iterations 1 --level 0 --repair"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find(" to 14 points\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("repair: " + coarse + ": "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("note: " + coarse + ": line "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(": crease " + std::to_string(std::min(a, b) - 1) + "-" + std::to_string(std::max(a, b) - 1) +
+                          " repeats line "),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(run_command(gpsurf("info " + out)).exit_code, 0);
 }
 
 TEST(FitCli, ErrorsNameTheFile) {
