@@ -14,6 +14,7 @@
 #include "core/mesh/covariance_mesh.h"
 #include "core/support/error.h"
 #include "core/modelling/affine_transform.h"
+#include "core/modelling/bevel.h"
 #include "core/modelling/bisect.h"
 #include "core/modelling/bridge.h"
 #include "core/modelling/crease_edges.h"
@@ -209,6 +210,28 @@ Run transform(Fields& f) {
   return [=](const CovarianceMesh& mesh) { return transform_vertices(mesh, vertices, map); };
 }
 
+// {"op":"bevel","edges":[[a,b],…] or "vertices":[…],"width":w}, optional "segments", "profile",
+// "clamp", "width_type" and (edges) "crease".
+Run bevel(Fields& f) {
+  const bool on_edges = std::string(one_of(f, {"edges", "vertices"})) == "edges";
+  BevelOptions o;
+  if (!((o.width = f.number("width")) > 0)) throw usage_error("\"width\" must be positive");
+  o.segments = f.integer("segments", 1, kMaxBevelSegments, 1);
+  if (!((o.profile = f.number("profile", 0.5)) > 0 && o.profile <= 1))
+    throw usage_error("\"profile\" must be a number in (0, 1]");
+  if (f.has("clamp")) o.clamp = f.boolean("clamp");
+  if (f.has("width_type") && !bevel_width_named(f.text("width_type"), o.width_type))
+    throw usage_error("\"width_type\" must be \"offset\", \"width\", \"depth\" or \"percent\"");
+  if (!on_edges) {
+    const std::vector<int> vertices = f.indices("vertices");
+    if (vertices.empty()) throw usage_error("\"vertices\" is empty");
+    return [=](const CovarianceMesh& m) { return bevel_vertices(m, vertices, o); };
+  }
+  const Edges edges = f.edges("edges");
+  if (!((o.crease = f.number("crease", 0)) >= 0)) throw usage_error("\"crease\" must be a sharpness (a number ≥ 0)");
+  return [=](const CovarianceMesh& m) { return bevel_edges(m, edges, o); };
+}
+
 // {"op":"bisect","plane":{"point":[x,y,z],"normal":[x,y,z]}}: every face the plane crosses cut along it.
 Run bisect_step(Fields& f) {
   const Json& object = f.json("plane");
@@ -317,6 +340,7 @@ Run parse_step(const std::string& op, Fields& f, Append& append) {
     const std::vector<int> vertices = f.indices("vertices");
     return [=](const CovarianceMesh& m) { return extrude_vertices(m, vertices, offset); };
   }
+  if (op == "bevel") return bevel(f);
   if (op == "inset") {
     const std::vector<int> faces = f.indices("faces");
     const double thickness = f.number("thickness");
@@ -412,7 +436,7 @@ std::string prefixed(const std::string& source, const std::string& message) {
 std::vector<std::string> operation_names() {
   return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude", "inset", "delete", "dissolve", "merge",
           "weld",      "fill",     "bridge",     "transform", "add",     "set",   "crease", "corner", "slide",
-          "bisect", "duplicate", "spin", "mirror"};
+          "bevel", "bisect", "duplicate", "spin", "mirror"};
 }
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {
