@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/edit/covariance_edit.h"
 #include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/modelling/affine_transform.h"
@@ -22,6 +21,7 @@
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/merge_vertices.h"
 #include "core/modelling/mesh_queries.h"
+#include "core/modelling/operation_words.h"
 #include "core/modelling/primitives.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "ui/crease_tool.h"
@@ -75,23 +75,13 @@ void EditorApp::start_transform(TransformKind kind) {
 }
 
 void EditorApp::update_transform() {
-  for (const ReachedVertex& r : reach_) {
-    AffineMap map = transform_->map(r.source, r.weight);
-    if (r.mirrored) map = mirrored(map, reach_options_.mirror_axis);
-    const Vec3 mean = document_.start_mean(r.vertex);
-    const Mat3& start = document_.start_covariance(r.vertex);
-    document_.set_mean(r.vertex, map.apply(mean));
-    if (map.linear == Mat3::Identity() || !view_.transform_gaussians) {
-      document_.set_covariance(r.vertex, start);  // a move, or positions only, keeps Σ exactly
-    } else {
-      const Mat3 moved = map.apply(Gaussian{mean, start}).covariance;
-      document_.set_covariance(r.vertex, covariance_problem(moved).empty() ? moved : clamp_spd(moved, start));
-    }
-  }
+  const size_t clamped =
+      apply_transform(document_, *transform_, reach_, reach_options_.mirror_axis, view_.transform_gaussians);
   status_ =
       transform_->describe() +
       (reach_.size() > transform_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "") +
-      (view_.transform_gaussians ? "" : "  (positions only)");
+      (view_.transform_gaussians ? "" : "  (positions only)") +
+      (clamped ? "  (" + count_of(clamped, "Gaussian", "Gaussians") + " held at the flatness floor)" : "");
   status_error_ = false;
 }
 

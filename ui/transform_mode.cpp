@@ -1,5 +1,7 @@
 #include "ui/transform_mode.h"
 
+#include "ui/editor_document.h"
+
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
@@ -196,6 +198,26 @@ AffineMap mirrored(const AffineMap& map, int axis) {
   out.linear = m * map.linear * m;
   out.translation = m * map.translation;
   return out;
+}
+
+size_t apply_transform(EditorDocument& document, const TransformMode& transform,
+                       const std::vector<ReachedVertex>& reach, int mirror_axis, bool carry_gaussians) {
+  size_t clamped = 0;
+  for (const ReachedVertex& r : reach) {
+    AffineMap map = transform.map(r.source, r.weight);
+    if (r.mirrored) map = mirrored(map, mirror_axis);
+    const Gaussian start{document.start_mean(r.vertex), document.start_covariance(r.vertex)};
+    if (map.linear == Mat3::Identity() || !carry_gaussians) {
+      document.set_mean(r.vertex, map.apply(start.mean));
+      document.set_covariance(r.vertex, start.covariance);  // a move, or positions only, keeps Σ exactly
+      continue;
+    }
+    const CarriedGaussian carried = carried_gaussian(map, start);
+    document.set_mean(r.vertex, carried.gaussian.mean);
+    document.set_covariance(r.vertex, carried.gaussian.covariance);
+    clamped += carried.clamped;
+  }
+  return clamped;
 }
 
 }  // namespace gps

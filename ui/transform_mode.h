@@ -12,9 +12,12 @@
 #include <glm/glm.hpp>
 
 #include "core/modelling/affine_transform.h"
+#include "ui/edit_reach.h"
 #include "view/projection.h"
 
 namespace gps {
+
+class EditorDocument;
 
 enum class TransformKind { grab, scale, rotate };
 
@@ -74,5 +77,12 @@ private:
 
 /// The map seen in the mirror across the plane x_axis = 0: x ↦ M f(M x).
 AffineMap mirrored(const AffineMap& map, int axis);
+
+/// Sets every reached vertex to its start Gaussian carried by its source's map at its weight
+/// (mirrored across `mirror_axis` where it is the mirror image) through carried_gaussian, as
+/// transform_vertices carries them; with `carry_gaussians` false, or a map that only moves, the
+/// covariance stays as it started. Returns how many covariances were held at the flatness floor.
+size_t apply_transform(EditorDocument& document, const TransformMode& transform,
+                       const std::vector<ReachedVertex>& reach, int mirror_axis, bool carry_gaussians);
 
 }  // namespace gps

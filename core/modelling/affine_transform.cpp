@@ -1,13 +1,13 @@
 #include "core/modelling/affine_transform.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <string>
 
+#include "core/modelling/operation_words.h"
 #include "core/support/error.h"
 
 namespace gps {
@@ -53,32 +53,42 @@ void reverse_parts_within(MeshArrays& arrays, const std::vector<int>& moved) {
     if (!face.empty() && !part_stays[size_t(root(face[0]))]) std::reverse(face.begin() + 1, face.end());
 }
 
+CarriedGaussian carried_gaussian(const AffineMap& map, const Gaussian& g) {
+  CarriedGaussian out{map.apply(g), false};
+  const Eigen::SelfAdjointEigenSolver<Mat3> carried(out.gaussian.covariance);
+  const double thinnest = Eigen::SelfAdjointEigenSolver<Mat3>(g.covariance, Eigen::EigenvaluesOnly).eigenvalues()[0];
+  const double strongest = Eigen::JacobiSVD<Mat3>(map.linear).singularValues()[0];
+  const double stretch = kFlattestStretch * (strongest > 0 ? strongest : 1.0);
+  const double floor = stretch * stretch * thinnest;
+  if (!(carried.eigenvalues()[0] < floor)) return out;
+  const Mat3 c = carried.eigenvectors() * carried.eigenvalues().cwiseMax(floor).asDiagonal() *
+                 carried.eigenvectors().transpose();
+  out.gaussian.covariance = 0.5 * (c + c.transpose());
+  out.clamped = true;
+  return out;
+}
+
 Modelled transform_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, const AffineMap& map) {
   if (!map.linear.allFinite() || !map.translation.allFinite()) throw Error("the map has a number that is not finite");
-  // Flattening relative to its own size (a huge or tiny uniform scale is not; its results are checked
-  // below): the ratio of its smallest to its largest singular value.
-  const Vec3 stretch = Eigen::JacobiSVD<Mat3>(map.linear).singularValues();
-  if (!(stretch[2] > 0)) throw Error("the map is singular (determinant 0: it would flatten the Gaussians)");
-  if (!(stretch[2] > 1e-12 * stretch[0])) {
-    std::ostringstream text;
-    text << "the map stretches one direction " << std::setprecision(3) << stretch[0] / stretch[2]
-         << " times as much as another (more than 1e12: it would flatten the Gaussians)";
-    throw Error(text.str());
-  }
   MeshArrays a = arrays_of(mesh);
   std::vector<int> moved = vertices.empty() ? std::vector<int>() : sorted_vertices(a, vertices);
   if (vertices.empty())
     for (int v = 0; v < a.n_vertices(); ++v) moved.push_back(v);
+  size_t clamped = 0;
   for (int v : moved) {
-    const Gaussian g = map.apply(a.gaussian(v));
-    a.means[size_t(v)] = g.mean;
-    a.covariances[size_t(v)] = g.covariance;
+    const CarriedGaussian g = carried_gaussian(map, a.gaussian(v));
+    a.means[size_t(v)] = g.gaussian.mean;
+    a.covariances[size_t(v)] = g.gaussian.covariance;
+    clamped += g.clamped;
   }
   const bool mirror = map.linear.determinant() < 0;
   if (mirror) reverse_parts_within(a, moved);
   Modelled out{build_mesh(a), moved, ""};
-  out.summary = "transformed " + std::to_string(moved.size()) + (moved.size() == 1 ? " vertex" : " vertices") +
-                (mirror ? " (mirrored: their faces reversed to stay outward)" : "");
+  out.summary = "transformed " + count_of(moved.size(), "vertex", "vertices") +
+                (mirror ? " (mirrored: their faces reversed to stay outward)" : "") +
+                (clamped ? ", " + count_of(clamped, "Gaussian", "Gaussians") + " held at the flatness floor (" +
+                               short_number(kFlattestStretch) + " of the map's strongest stretch)"
+                         : "");
   return out;
 }
 
