@@ -4,7 +4,6 @@
 
 #include "core/support/error.h"
 
-
 namespace gps {
 
 PolygonTopology topology_of(const PolyMesh& mesh) {
