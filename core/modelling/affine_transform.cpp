@@ -61,8 +61,8 @@ CarriedGaussian carried_gaussian(const AffineMap& map, const Gaussian& g) {
   const double stretch = kFlattestStretch * (strongest > 0 ? strongest : 1.0);
   const double floor = stretch * stretch * thinnest;
   if (!(carried.eigenvalues()[0] < floor)) return out;
-  const Mat3 c = carried.eigenvectors() * carried.eigenvalues().cwiseMax(floor).asDiagonal() *
-                 carried.eigenvectors().transpose();
+  const Mat3 c =
+      carried.eigenvectors() * carried.eigenvalues().cwiseMax(floor).asDiagonal() * carried.eigenvectors().transpose();
   out.gaussian.covariance = 0.5 * (c + c.transpose());
   out.clamped = true;
   return out;

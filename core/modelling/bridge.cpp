@@ -95,7 +95,8 @@ struct Band {
 // Twice the area vector of a face (Newell's sums).
 Vec3 area_vector(const MeshArrays& a, const std::vector<int>& face) {
   Vec3 sum = Vec3::Zero();
-  for (size_t k = 0; k < face.size(); ++k) sum += a.means[size_t(face[k])].cross(a.means[size_t(face[(k + 1) % face.size()])]);
+  for (size_t k = 0; k < face.size(); ++k)
+    sum += a.means[size_t(face[k])].cross(a.means[size_t(face[(k + 1) % face.size()])]);
   return sum;
 }
 
@@ -111,7 +112,8 @@ std::string vertex_list(const std::vector<int>& face, const std::vector<int>& in
 Modelled bridge_runs(MeshArrays a, const BoundaryRun& first, const BoundaryRun& second,
                      const std::vector<int>& input_index, const std::string& done_before) {
   if (first.closed != second.closed) throw Error("cannot bridge a closed boundary loop to an open chain");
-  if (first.vertices.size() < 2 || second.vertices.size() < 2) throw Error("a chain to bridge needs at least 2 vertices");
+  if (first.vertices.size() < 2 || second.vertices.size() < 2)
+    throw Error("a chain to bridge needs at least 2 vertices");
   const bool swap = first.vertices.size() < second.vertices.size();
   const std::vector<int>& p = swap ? second.vertices : first.vertices;
   const std::vector<int>& q = swap ? first.vertices : second.vertices;
@@ -167,9 +169,9 @@ Modelled bridge_runs(MeshArrays a, const BoundaryRun& first, const BoundaryRun& 
   std::vector<int> selection = p;
   selection.insert(selection.end(), q.begin(), q.end());
   std::sort(selection.begin(), selection.end());
-  const std::string lengths = n == m ? count_of(n, "vertex", "vertices")
-                                     : std::to_string(first.vertices.size()) + " and " +
-                                           count_of(second.vertices.size(), "vertex", "vertices");
+  const std::string lengths =
+      n == m ? count_of(n, "vertex", "vertices")
+             : std::to_string(first.vertices.size()) + " and " + count_of(second.vertices.size(), "vertex", "vertices");
   const size_t added = a.faces.size() - first_new;
   return {build_mesh(a), selection,
           done_before + "bridged two " + std::string(band.closed ? "loops" : "chains") + " of " + lengths + ": " +
@@ -209,7 +211,8 @@ Modelled bridge_faces(const CovarianceMesh& mesh, const std::vector<int>& faces)
   std::unordered_map<uint64_t, int> chosen_of_edge;  // directed edge → index in `chosen`
   for (size_t i = 0; i < chosen.size(); ++i) {
     const std::vector<int>& face = a.faces[size_t(chosen[i])];
-    for (size_t k = 0; k < face.size(); ++k) chosen_of_edge[directed_key(face[k], face[(k + 1) % face.size()])] = int(i);
+    for (size_t k = 0; k < face.size(); ++k)
+      chosen_of_edge[directed_key(face[k], face[(k + 1) % face.size()])] = int(i);
   }
   for (const auto& [key, i] : chosen_of_edge)
     if (const auto twin = chosen_of_edge.find((key << 32) | (key >> 32)); twin != chosen_of_edge.end())

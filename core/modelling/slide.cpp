@@ -97,8 +97,8 @@ std::vector<int> slide_targets(const MeshArrays& arrays, const DirectedEdges& ed
       throw Error(vertex + " has no edge leaving the selection on the side the factor picks (a boundary there)");
     if (found[i].size() > 1)
       throw Error(vertex + " has " + std::to_string(found[i].size()) +
-                  " edges leaving the selection on the side the factor picks (edges to " +
-                  std::to_string(found[i][0]) + " and " + std::to_string(found[i][1]) + "): slide needs one");
+                  " edges leaving the selection on the side the factor picks (edges to " + std::to_string(found[i][0]) +
+                  " and " + std::to_string(found[i][1]) + "): slide needs one");
     target[i] = found[i][0];
   }
   return target;
@@ -137,7 +137,9 @@ Modelled edge_slide(const CovarianceMesh& mesh, const std::vector<std::array<int
       length[i] = (original.means[size_t(target[i])] - original.means[size_t(p.path[i])]).norm();
     const double shortest = *std::min_element(length.begin(), length.end());
     for (size_t i = 0; i < p.path.size(); ++i) {
-      const double t = !even ? std::abs(factor) : shortest > 0 ? std::min(1.0, std::abs(factor) * shortest / length[i]) : 0.0;
+      const double t = !even          ? std::abs(factor)
+                       : shortest > 0 ? std::min(1.0, std::abs(factor) * shortest / length[i])
+                                      : 0.0;
       const Gaussian g = slid_gaussian(original, p.path[i], target[i], t);
       a.means[size_t(p.path[i])] = g.mean;
       a.covariances[size_t(p.path[i])] = g.covariance;

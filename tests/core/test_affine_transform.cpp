@@ -169,10 +169,11 @@ TEST(AffineTransform, RefusalsChangeNothing) {
         AffineMap::from_rows({1, 0, 0, std::numeric_limits<double>::infinity(), 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
       }),
       "the matrix has a number that is not finite");
-  EXPECT_EQ(error_of([&] {
-              transform_vertices(m, {}, AffineMap{Mat3::Constant(std::numeric_limits<double>::quiet_NaN()), Vec3::Zero()});
-            }),
-            "the map has a number that is not finite");
+  EXPECT_EQ(
+      error_of([&] {
+        transform_vertices(m, {}, AffineMap{Mat3::Constant(std::numeric_limits<double>::quiet_NaN()), Vec3::Zero()});
+      }),
+      "the map has a number that is not finite");
   EXPECT_EQ(error_of([&] { transform_vertices(m, {2, 8}, skewed_map()); }), "vertex 8 is not in the mesh (8 vertices)");
   // A huge uniform scale is not singular: its results are out of range, and that is what is said.
   EXPECT_EQ(error_of([&] {
@@ -211,8 +212,9 @@ TEST(AffineTransform, ScaleZeroFlattensThePositionsAndHoldsTheGaussiansAtTheFloo
   std::vector<std::string> summaries;
   const Modelled r = flatten_along_z(cube, top).apply(cube, &summaries);
   ASSERT_EQ(summaries.size(), 1u);
-  EXPECT_EQ(summaries[0], "transformed 4 vertices, 4 Gaussians held at the flatness floor (0.001 of the map's "
-                          "strongest stretch)");
+  EXPECT_EQ(summaries[0],
+            "transformed 4 vertices, 4 Gaussians held at the flatness floor (0.001 of the map's "
+            "strongest stretch)");
   for (int v : top) {
     EXPECT_EQ(r.mesh.mean(size_t(v)).z(), 1.125) << v;  // exactly on the median's plane
     EXPECT_EQ(r.mesh.mean(size_t(v)).head<2>(), cube.mean(size_t(v)).head<2>()) << v;

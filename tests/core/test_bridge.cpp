@@ -199,11 +199,13 @@ TEST(Bridge, LoopsOfEightAndSevenCloseADrum) {
     if (fans) {  // a mesh of triangles stays one: each of the 7 quads in two, and the 1 triangle
       EXPECT_EQ(quads, 0u);
       EXPECT_EQ(triangles, 15u);
-      EXPECT_EQ(r.summary, "bridged two loops of 8 and 7 vertices: 15 faces added (1 triangle spreading the difference)");
+      EXPECT_EQ(r.summary,
+                "bridged two loops of 8 and 7 vertices: 15 faces added (1 triangle spreading the difference)");
     } else {
       EXPECT_EQ(quads, 7u);
       EXPECT_EQ(triangles, 1u);
-      EXPECT_EQ(r.summary, "bridged two loops of 8 and 7 vertices: 8 faces added (1 triangle spreading the difference)");
+      EXPECT_EQ(r.summary,
+                "bridged two loops of 8 and 7 vertices: 8 faces added (1 triangle spreading the difference)");
     }
     // The band's edges between the loops go to the nearest part of the twisted upper loop: none
     // longer than the step between neighbouring angles allows.
@@ -215,7 +217,7 @@ TEST(Bridge, LoopsOfEightAndSevenCloseADrum) {
         ++across;
         if (!fans)  // the triangles' diagonals reach further
           EXPECT_LT((a.means[size_t(u)] - a.means[size_t(v)]).norm(), std::hypot(1.0, 2 * std::sin(M_PI / 8)))
-            << u << "–" << v;
+              << u << "–" << v;
       }
     }
     EXPECT_EQ(across, fans ? 15 : 8);  // the triangles' diagonals cross too
@@ -283,12 +285,18 @@ TEST(Bridge, FaceAndCoincidenceRefusals) {
   const CovarianceMesh cube = test::cube_mesh();
   const std::string joined = error_of([&] { bridge_faces(cube, {0, 1}); });
   EXPECT_NE(joined.find("already joins the loops: the bridge would give it a third face"), std::string::npos) << joined;
-  EXPECT_EQ(error_of([&] { bridge_faces(cube, {0}); }), "the faces make 1 region (faces joined by edges); bridge needs exactly 2");
-  EXPECT_EQ(error_of([&] { bridge_faces(cube, {0, 2, 1}); }), "the faces make 1 region (faces joined by edges); bridge needs exactly 2");
+  EXPECT_EQ(error_of([&] { bridge_faces(cube, {0}); }),
+            "the faces make 1 region (faces joined by edges); bridge needs exactly 2");
+  EXPECT_EQ(error_of([&] {
+              bridge_faces(cube, {0, 2, 1});
+            }),
+            "the faces make 1 region (faces joined by edges); bridge needs exactly 2");
   EXPECT_EQ(error_of([&] { bridge_faces(cube, {0, 6}); }), "face 6 is not in the mesh (6 faces)");
   const CovarianceMesh grid = test::grid_mesh(4, 4);
   EXPECT_EQ(error_of([&] { bridge_faces(grid, {5, 10}); }), "the regions of faces 5 and 10 touch at vertex 12");
-  EXPECT_EQ(error_of([&] { bridge_faces(grid, {0, 10}); }),
+  EXPECT_EQ(error_of([&] {
+              bridge_faces(grid, {0, 10});
+            }),
             "the region of face 0 reaches the mesh's boundary at edge 0–1: it leaves no loop to bridge");
   // Two quads on the same four points, facing apart: every face of a bridge would be flat.
   const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};

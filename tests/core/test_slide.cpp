@@ -154,17 +154,23 @@ TEST(Slide, RefusalsNameTheElement) {
   EXPECT_EQ(error_of([&] { edge_slide(cube, {{0, 6}}, 0.5); }), "edge 0–6 is not in the mesh");
   EXPECT_EQ(error_of([&] { edge_slide(cube, {{0, 9}}, 0.5); }), "vertex 9 is not in the mesh (8 vertices)");
   EXPECT_EQ(error_of([&] { edge_slide(cube, {}, 0.5); }), "no edges to slide");
-  EXPECT_EQ(error_of([&] { edge_slide(cube, {{0, 1}, {0, 3}, {0, 4}}, 0.5); }),
+  EXPECT_EQ(error_of([&] {
+              edge_slide(cube, {{0, 1}, {0, 3}, {0, 4}}, 0.5);
+            }),
             "vertex 0 is on 3 selected edges: slide needs loops or chains");
   // Around the cube's corner 1: the third edge there on one side, the face the chain bends round on
   // the other.
   EXPECT_NO_THROW(edge_slide(cube, {{0, 1}, {1, 2}}, 0.5));
-  EXPECT_EQ(error_of([&] { edge_slide(cube, {{0, 1}, {1, 2}}, -0.5); }),
+  EXPECT_EQ(error_of([&] {
+              edge_slide(cube, {{0, 1}, {1, 2}}, -0.5);
+            }),
             "vertex 1 has no edge leaving the selection on the side the factor picks (a boundary there)");
   // The grid's bottom row: faces above it only.
   const CovarianceMesh grid = test::grid_mesh(4, 2);
   EXPECT_NO_THROW(edge_slide(grid, {{0, 1}, {1, 2}}, 1.0));
-  EXPECT_EQ(error_of([&] { edge_slide(grid, {{0, 1}, {1, 2}}, -1.0); }),
+  EXPECT_EQ(error_of([&] {
+              edge_slide(grid, {{0, 1}, {1, 2}}, -1.0);
+            }),
             "vertex 0 has no edge leaving the selection on the side the factor picks (a boundary there)");
   // Two neighbours of a valence-5 vertex of the icosahedron, one apart around it: one edge leaves
   // on one side, two on the other.
@@ -195,20 +201,23 @@ TEST(Slide, AsOperationsInAList) {
   std::string edges_json;
   for (const auto& [a, b] : loop)
     edges_json += std::string(edges_json.empty() ? "" : ",") + "[" + std::to_string(a) + "," + std::to_string(b) + "]";
-  const OperationList list = OperationList::parse(
-      "[{\"op\":\"slide\",\"edges\":[" + edges_json + "],\"factor\":0.4,\"even\":true}," +
-          "{\"op\":\"slide\",\"vertex\":0,\"toward\":3,\"factor\":0.5}]",
-      "ops.json");
+  const OperationList list =
+      OperationList::parse("[{\"op\":\"slide\",\"edges\":[" + edges_json + "],\"factor\":0.4,\"even\":true}," +
+                               "{\"op\":\"slide\",\"vertex\":0,\"toward\":3,\"factor\":0.5}]",
+                           "ops.json");
   const Modelled r = list.apply(cut);
   const Modelled direct = vertex_slide(edge_slide(cut, loop, 0.4, true).mesh, 0, 3, 0.5);
   expect_same_arrays(arrays_of(r.mesh), arrays_of(direct.mesh));
-  EXPECT_EQ(error_of([] { OperationList::parse(R"([{"op":"slide","edges":[[0,1]],"factor":0.4,"even":1}])", "ops.json"); }),
-            "ops.json: ops[0] (slide): \"even\" must be true or false");
+  EXPECT_EQ(
+      error_of([] { OperationList::parse(R"([{"op":"slide","edges":[[0,1]],"factor":0.4,"even":1}])", "ops.json"); }),
+      "ops.json: ops[0] (slide): \"even\" must be true or false");
   EXPECT_EQ(error_of([] { OperationList::parse(R"([{"op":"slide","vertex":0,"factor":0.4}])", "ops.json"); }),
             "ops.json: ops[0] (slide): \"toward\" is missing");
   EXPECT_EQ(error_of([] { OperationList::parse(R"([{"op":"slide","factor":0.4}])", "ops.json"); }),
             "ops.json: ops[0] (slide): give \"edges\" or \"vertex\"");
-  EXPECT_EQ(error_of([&] { OperationList::parse(R"([{"op":"slide","vertex":0,"toward":6,"factor":0.4}])", "ops.json").apply(cut); }),
+  EXPECT_EQ(error_of([&] {
+              OperationList::parse(R"([{"op":"slide","vertex":0,"toward":6,"factor":0.4}])", "ops.json").apply(cut);
+            }),
             "ops.json: ops[0] (slide): edge 0–6 is not in the mesh");
 }
 

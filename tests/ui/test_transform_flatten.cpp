@@ -37,10 +37,10 @@ TEST(TransformFlatten, TheEditorsScaleZeroIsTheOperationListsTransform) {
 
   char matrix[160];
   std::snprintf(matrix, sizeof matrix, "[1,0,0,0, 0,1,0,0, 0,0,0,%.17g, 0,0,0,1]", scale.pivot(0).z());
-  const Modelled listed = OperationList::parse("[{\"op\":\"transform\",\"vertices\":[4,5,6,7],\"matrix\":" +
-                                                   std::string(matrix) + "}]",
-                                               "ops.json")
-                              .apply(cube);
+  const Modelled listed =
+      OperationList::parse("[{\"op\":\"transform\",\"vertices\":[4,5,6,7],\"matrix\":" + std::string(matrix) + "}]",
+                           "ops.json")
+          .apply(cube);
   const CovarianceMesh& edited = document.mesh();
   ASSERT_EQ(edited.n_vertices(), listed.mesh.n_vertices());
   for (size_t v = 0; v < edited.n_vertices(); ++v) {
