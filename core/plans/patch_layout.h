@@ -12,15 +12,9 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "core/reference/patch_param.h"
 
 namespace gps {
-
-/// A point on the limit surface named by patch and parameters in [0,1]².
-struct PatchParam {
-  int patch = -1;
-  double u = 0.0;
-  double v = 0.0;
-};
 
 /// The vertices of a face in the one order every part of gpsurf uses (OpenMesh's face-vertex order).
 std::vector<int> face_vertices(const PolyMesh& mesh, PolyMesh::FaceHandle f);

@@ -5,7 +5,7 @@
 
 #include "core/mesh/covariance_mesh.h"
 #include "core/reference/loop.h"
-#include "core/plans/patch_layout.h"
+#include "core/reference/patch_param.h"
 
 namespace gps {
 

@@ -9,6 +9,7 @@
 #include "core/mesh/dual_map.h"
 #include "core/support/error.h"
 #include "core/modelling/samples.h"
+#include "core/plans/patch_layout.h"
 #include "tests/support/random_spd.h"
 #include "tests/support/test_meshes.h"
 
