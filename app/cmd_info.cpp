@@ -25,19 +25,38 @@ std::string surface_line(const SurfaceCounts& s) {
          ", genus " + std::to_string(s.genus);
 }
 
-// What the mesh would be after --repair (the diagnosis's result): its shape and scheme, or why not.
-std::string after_repair(PolygonSoup& repaired, const RepairReport& diagnosis) {
-  if (diagnosis.count(Defect::unorientable_parts) > 0) return "still refused (a part cannot be oriented)";
-  if (repaired.faces.n_faces() == 0) return "no faces left";
-  repaired.faces.n_vertices = int(repaired.positions.size());
-  return surface_line(surface_counts(repaired.faces, connectivity_of(repaired.faces))) + ", scheme " +
-         scheme_name(scheme_for(repaired.faces, PlanOptions{}));
-}
-
 void print_problems(const std::vector<std::string>& lines, const std::string& heading) {
   if (lines.empty()) return;
   std::cout << heading << ":\n";
   for (const std::string& line : lines) std::cout << "  " << line << "\n";
+}
+
+// What --repair makes of the file, found by building the soup the repair changed (`done` says how) as
+// --repair builds it: the `after --repair:` line with the mesh's counts, shape and scheme, or, where it
+// is still refused, what the repair cannot mend (numbered as the file numbers it) or the refusal.
+std::string after_repair(PolygonSoup&& repaired, bool has_covariances, const std::string& path, ImportOptions options,
+                         const RepairReport& done) {
+  if (repaired.faces.n_faces() == 0) return "after --repair: no faces left\n";
+  // What read_mesh_of_soup names after a repair: the parts it cannot orient.
+  RepairReport unmended;
+  const size_t d = size_t(Defect::unorientable_parts);
+  unmended.counts[d] = done.counts[d];
+  unmended.examples[d] = done.examples[d];
+  options.repair = false;  // done
+  try {
+    const CovarianceMesh m = read_mesh_of_soup(std::move(repaired), has_covariances, path, options, nullptr, &unmended);
+    return "after --repair: " + plural(int(m.n_vertices()), "vertex", "vertices") + ", " +
+           plural(int(m.n_faces()), "face", "faces") + ", " + surface_line(surface_counts(m.mesh)) + ", scheme " +
+           scheme_name(scheme_for(topology_of(m.mesh), PlanOptions{})) + "\n";
+  } catch (const Error& e) {
+    const ElementNumbering numbering = element_numbering_for(path, unmended);
+    std::vector<std::string> lines = unmended.problems(numbering, true);
+    if (lines.empty()) lines.push_back(e.what());
+    std::string out = "after --repair: refused for (vertices and faces numbered from " +
+                      std::to_string(numbering.base) + "):\n";
+    for (const std::string& line : lines) out += "  " + line + "\n";
+    return out;
+  }
 }
 
 // Without --repair the file is diagnosed first (the repair's own detection): a mesh
@@ -47,7 +66,7 @@ void print_problems(const std::vector<std::string>& lines, const std::string& he
 void print_info(const std::string& path, const RepairArguments& repair) {
   const ImportOptions options = repair.import_options();
   RepairReport diagnosis;
-  std::string repaired_shape;
+  std::string repaired;  // the after --repair lines
   const CovarianceMesh m = [&] {
     if (options.repair) return read_mesh_repairing(path, repair);
     bool has_covariances = false;
@@ -56,11 +75,11 @@ void print_info(const std::string& path, const RepairArguments& repair) {
     const size_t n_vertices = soup.positions.size();
     const int n_faces = soup.faces.n_faces();
     if (n_faces > 0) {  // else refused as it is: no surface to diagnose
-      // Diagnosed on the soup itself, not a copy (memory follows the file): a soup the repair changed
-      // is read again; one it left as it is is the file's.
+      // Diagnosed by running the repair on the soup itself, not a copy (memory follows the file), and
+      // building what it made: a soup the repair changed is read again; one it left as it is is the file's.
       diagnosis = repair_polygon_soup(soup, repair_options_for(options));
       if (diagnosis.changed() || diagnosis.count(Defect::unorientable_parts) > 0) {
-        repaired_shape = after_repair(soup, diagnosis);
+        repaired = after_repair(std::move(soup), has_covariances, path, options, diagnosis);
         soup = PolygonSoup();
         soup = read_polygon_soup(path, has_covariances);
       }
@@ -74,7 +93,7 @@ void print_info(const std::string& path, const RepairArguments& repair) {
       const std::string numbered = " (vertices and faces numbered from " + std::to_string(numbering.base) + ")";
       print_problems(diagnosis.problems(numbering, true), "refused for" + numbered);
       print_problems(diagnosis.problems(numbering, false), "also");
-      std::cout << "after --repair: " << repaired_shape << "\n" << std::flush;
+      std::cout << repaired << std::flush;
       throw;
     }
   }();
@@ -127,7 +146,7 @@ void print_info(const std::string& path, const RepairArguments& repair) {
     for (std::string& line : diagnosis.problems(numbering, false)) lines.push_back(std::move(line));
     print_problems(lines, "read as they are (--repair mends them; vertices and faces numbered from " +
                               std::to_string(numbering.base) + ")");
-    std::cout << "after --repair: " << repaired_shape << "\n";
+    std::cout << repaired;
   }
 }
 }  // namespace

@@ -5,12 +5,12 @@ set(text "// Generated from shaders/*.glsl by cmake/embed_shaders.cmake; do not 
 foreach(source ${SOURCES})
   get_filename_component(name ${source} NAME_WE)
   file(READ ${source} body)
-  # A C++ header shared with GLSL (core/plans/patch_basis.h) is read as GLSL under GPS_GLSL.
+  # A C++ header shared with GLSL (core/patches/patch_basis.h) is read as GLSL under GPS_GLSL.
   if(source MATCHES "\\.h$")
     set(body "#define GPS_GLSL\n${body}")
   else()
     # A shader's #include "x.h" or "x.glsl" (GLSL has none) takes that file's text in its place: a
-    # shared C++ header is read as GLSL (GPS_GLSL is defined by core/plans/patch_basis.h, which comes
+    # shared C++ header is read as GLSL (GPS_GLSL is defined by core/patches/patch_basis.h, which comes
     # before such a shader); a .glsl file is a piece two shaders share (not itself embedded).
     # A .glsl piece may include pieces itself: replaced until none is left (a C++ header's own
     # includes stay, in its C++ part).

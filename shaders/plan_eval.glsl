@@ -17,7 +17,7 @@ point_vec3 g_anchor = point_vec3(0.0);  // what the sums are taken about: set be
 // The point of a leaf's net (n points from nodes[net]) weighing most in its sum at these weights,
 // |w| tr q̂: the sums' anchor. About it the heaviest term is its own small offset y, not q̂ times a
 // distance between anchors, which keeps too few digits in float where a needle's apex (q̂ ~ 1e5 I)
-// is in the net. In a quad leaf at a boundary, phantom points included (core/plans/patch_basis.h).
+// is in the net. In a quad leaf at a boundary, phantom points included (core/patches/patch_basis.h).
 // It costs one more pass over the net's weights per leaf.
 #define GPS_HEAVIEST_POINT(n)                                  \
   int heaviest = nodes[net];                                   \

@@ -2,9 +2,9 @@
 
 #include "core/extraordinary/loop_extraordinary_tables.h"
 #include "core/extraordinary/neighbourhood_signature.h"
-#include "core/plans/loop_nets.h"
-#include "core/plans/patch_basis.h"
-#include "core/plans/triangle_sectors.h"
+#include "core/patches/loop_nets.h"
+#include "core/patches/patch_basis.h"
+#include "core/patches/triangle_sectors.h"
 
 namespace gps {
 
@@ -34,7 +34,7 @@ std::shared_ptr<const std::vector<double>> LoopCreaseTables::compute(const std::
   std::vector<LocalCombination> step_rows;
   for (const int p : child->points) step_rows.push_back({{p, 1.0}});
   const Eigen::MatrixXd step = rows_over_neighbourhood(fine, step_rows, k);
-  // Ā_k: the nets of children 1..3 of triangle_child() (core/plans/patch_basis.h).
+  // Ā_k: the nets of children 1..3 of triangle_child() (core/patches/patch_basis.h).
   const std::array<int, 3> children[3] = {{ea, 1, eab}, {eb, eab, 2}, {eab, eb, ea}};
   Eigen::MatrixXd nets[3];
   for (int c = 0; c < 3; ++c) {

@@ -10,7 +10,7 @@
 #include <mutex>
 #include <vector>
 
-#include "core/plans/local_mesh.h"
+#include "core/patches/local_mesh.h"
 #include "core/reference/loop.h"
 
 namespace gps {

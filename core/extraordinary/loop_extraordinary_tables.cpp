@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "core/extraordinary/extraordinary_corner_masks.h"
-#include "core/plans/loop_nets.h"
+#include "core/patches/loop_nets.h"
 
 namespace gps {
 

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/reference/loop.h"
-#include "core/plans/patch_basis.h"
+#include "core/patches/patch_basis.h"
 #include "core/mesh/mesh_connectivity.h"
 
 namespace gps {

@@ -8,8 +8,8 @@
 
 #include <Eigen/Core>
 
-#include "core/plans/local_mesh.h"
-#include "core/plans/quad_nets.h"
+#include "core/patches/local_mesh.h"
+#include "core/patches/quad_nets.h"
 
 namespace gps {
 

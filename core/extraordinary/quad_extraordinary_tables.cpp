@@ -5,7 +5,7 @@
 
 #include "core/extraordinary/extraordinary_corner_masks.h"
 #include "core/extraordinary/neighbourhood_signature.h"
-#include "core/plans/quad_nets.h"
+#include "core/patches/quad_nets.h"
 
 namespace gps {
 

@@ -17,7 +17,7 @@
 // (self-similar): any node one level below an irregular vertex, and most base quads.
 //
 // Table layout (doubles from its offset): blocks b = 3n + c − 1 (quad_extraordinary_locate() in
-// core/plans/patch_basis.h), each 16×K (row j: the weights of the K points in net point j, j = i + 4·k as
+// core/patches/patch_basis.h), each 16×K (row j: the weights of the K points in net point j, j = i + 4·k as
 // in a regular node), then three rows of K: limit position, tangent along s, tangent along t, then
 // A: K rows of K (row r: the weights of the K points in point r one level down).
 #include <array>
@@ -28,8 +28,8 @@
 #include <vector>
 
 #include "core/extraordinary/neighbourhood_signature.h"
-#include "core/plans/local_mesh.h"
-#include "core/plans/patch_basis.h"
+#include "core/patches/local_mesh.h"
+#include "core/patches/patch_basis.h"
 
 namespace gps {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "core/plans/patch_basis.h"
+#include "core/patches/patch_basis.h"
 #include "core/plans/plan_descent.h"
 
 namespace gps {

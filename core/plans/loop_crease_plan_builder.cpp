@@ -6,13 +6,13 @@
 #include <stdexcept>
 
 #include "core/extraordinary/loop_crease_tables.h"
-#include "core/plans/local_mesh.h"
-#include "core/plans/loop_nets.h"
+#include "core/patches/local_mesh.h"
+#include "core/patches/loop_nets.h"
 #include "core/plans/plan_descent.h"
 #include "core/plans/range_plans.h"
-#include "core/plans/quad_nets.h"
+#include "core/patches/quad_nets.h"
 #include "core/plans/stencil_table.h"
-#include "core/plans/triangle_sectors.h"
+#include "core/patches/triangle_sectors.h"
 
 namespace gps {
 
@@ -78,7 +78,7 @@ private:
     const int nv = sub.topology.n_vertices;
     const int c0 = index[size_t(x[0])], c1 = index[size_t(x[1])], c2 = index[size_t(x[2])];
     const int e01 = nv + sub.find_edge(c0, c1), e12 = nv + sub.find_edge(c1, c2), e20 = nv + sub.find_edge(c2, c0);
-    // The children of triangle_child() (core/plans/patch_basis.h), each in its own parameter order.
+    // The children of triangle_child() (core/patches/patch_basis.h), each in its own parameter order.
     const std::array<int, 3> children[4] = {{c0, e01, e20}, {e01, c1, e12}, {e20, e12, c2}, {e12, e20, e01}};
     for (int k = 0; k < 4; ++k) {
       const int child = build_node(fine, children[k], depth + 1);

@@ -7,12 +7,12 @@
 
 namespace gps {
 
-struct LocalMesh;         // core/plans/local_mesh.h
+struct LocalMesh;         // core/patches/local_mesh.h
 struct RangePlans;        // core/plans/range_plans.h
 class LoopCreaseTables;  // core/extraordinary/loop_crease_tables.h
 
 /// One plan per triangle, as build_loop_plans lays them out: a triangle whose corners are regular
-/// (core/plans/triangle_sectors.h) is one box-spline node, folded beyond infinitely sharp creases as
+/// (core/patches/triangle_sectors.h) is one box-spline node, folded beyond infinitely sharp creases as
 /// beyond a boundary; one with a single irregular corner whose neighbourhood is self-similar is an
 /// exact node (core/extraordinary/loop_crease_tables.h); any other is split, so semi-sharp creases
 /// refine until their sharpness has decayed. The topology must have passed build_loop_plans' checks.

@@ -7,7 +7,7 @@
 #include "core/support/error.h"
 #include "core/extraordinary/loop_extraordinary_tables.h"
 #include "core/plans/loop_crease_plan_builder.h"
-#include "core/plans/loop_nets.h"
+#include "core/patches/loop_nets.h"
 #include "core/plans/stencil_table.h"
 
 namespace gps {

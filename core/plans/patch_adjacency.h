@@ -14,7 +14,7 @@
 // PatchPlans::corner_owners holds 2 ints per patch corner, at 2·(corners·patch + c): the lowest
 // patch with the same corner point (PatchPlans::patch_corner_points) and its corner index there,
 // plus kOwnerSharpCorner (4) where the patches around the corner have normals of their own there.
-// The flag constants are in core/plans/patch_basis.h (shared with the shaders); readers mask them.
+// The flag constants are in core/patches/patch_basis.h (shared with the shaders); readers mask them.
 //
 // Canonical rules (the shader's, tested in tests/core/test_patch_adjacency.cpp): a point inside a
 // shared edge is evaluated by the lower-numbered patch of two whole (or two half) edges, and by the

@@ -8,7 +8,7 @@
 // k in [offsets[r], offsets[r+1]).
 //
 // Nodes. nodes[] holds one record per quadtree node, addressed by its offset:
-//   nodes[o] = kind (NodeKind) | boundary << kNodeKindBits (core/plans/patch_basis.h: a regular quad
+//   nodes[o] = kind (NodeKind) | boundary << kNodeKindBits (core/patches/patch_basis.h: a regular quad
 //             leaf's boundary edges, whose phantom points its basis takes in; 0 for every other)
 //   internal: nodes[o+1 .. o+4] = offsets of the four children, child c = ubit + 2·vbit, where
 //             ubit = (u ≥ ½), vbit = (v ≥ ½) in the node's own [0,1]² domain;
@@ -22,7 +22,7 @@
 //
 // Triangle plans (Loop, core/plans/loop_plan_builder.h) use the same arrays with triangle nodes over
 // parameters (u, v), barycentrics (1−u−v, u, v):
-//   internal: nodes[o+1 .. o+4] = the four children of triangle_child() (core/plans/patch_basis.h);
+//   internal: nodes[o+1 .. o+4] = the four children of triangle_child() (core/patches/patch_basis.h);
 //   regular:  nodes[o+1 .. o+12] = the 12 control points of Loop's box-spline patch, in the
 //             order of loop_box_spline_basis();
 //   extraordinary: nodes[o+1] = r, the corner of the node at the extraordinary vertex;
@@ -32,7 +32,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/plans/patch_basis.h"
+#include "core/patches/patch_basis.h"
 
 namespace gps {
 

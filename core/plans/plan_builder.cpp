@@ -7,10 +7,10 @@
 #include <stdexcept>
 
 #include "core/support/error.h"
-#include "core/plans/local_mesh.h"
+#include "core/patches/local_mesh.h"
 #include "core/plans/plan_descent.h"
 #include "core/extraordinary/quad_extraordinary_tables.h"
-#include "core/plans/quad_nets.h"
+#include "core/patches/quad_nets.h"
 #include "core/plans/range_plans.h"
 #include "core/plans/stencil_table.h"
 
@@ -104,7 +104,7 @@ private:
   }
 
   // A regular leaf's phantom points (combinations p₋₁ = 2p₀ − p₁ beyond a boundary edge) replaced
-  // by the real point p₀ they mirror from; returns the boundary bits (core/plans/patch_basis.h,
+  // by the real point p₀ they mirror from; returns the boundary bits (core/patches/patch_basis.h,
   // kBoundaryV0 …), with which the basis takes them in, so the GPU sums no large differences.
   static int take_in_phantoms(std::array<Combo, 16>& net) {
     const auto phantom = [&](int i, int j) { return net[size_t(i + 4 * j)].size() != 1; };

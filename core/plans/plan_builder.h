@@ -5,7 +5,7 @@
 
 namespace gps {
 
-struct LocalMesh;                   // core/plans/local_mesh.h
+struct LocalMesh;                   // core/patches/local_mesh.h
 struct RangePlans;                  // core/plans/range_plans.h
 class QuadExtraordinaryTableCache;  // core/extraordinary/quad_extraordinary_tables.h
 
@@ -38,7 +38,7 @@ enum class ExtraordinaryNodes {
 /// `max_depth` (an exact node that is still not self-similar at depth 8 would become a Bézier
 /// patch; none is met in practice). Depends on topology and sharpness only: semi-sharp creases
 /// and corners refine their nodes until the sharpness has decayed, infinitely sharp ones are cut edges
-/// (core/plans/quad_nets.h, regular_corner) and part of the extraordinary tables' neighbourhoods. `bspline_leaves` =
+/// (core/patches/quad_nets.h, regular_corner) and part of the extraordinary tables' neighbourhoods. `bspline_leaves` =
 /// false makes every regular node a terminal Bézier node instead (tests: with n = 4 the Fig. 2.5
 /// rules are the B-spline's).
 SurfaceTables build_plans(const PolygonTopology& topology, int max_depth,

@@ -2,12 +2,12 @@
 // of an extraordinary leaf's table rows: ONE source for core/evaluation/patch_eval.cpp (C++, double) and
 // shaders/plan_eval.glsl (GLSL, float), which includes it after its node buffer; cmake/embed_shaders.cmake
 // puts the file in place of the #include there. In GLSL the nodes are that buffer, `nodes[]`; in C++
-// the first parameter. Uses the macros of core/plans/patch_basis.h, which comes first in both languages.
+// the first parameter. Uses the macros of core/patches/patch_basis.h, which comes first in both languages.
 #ifndef GPS_GLSL
 #pragma once
 #include <cstdint>
 
-#include "core/plans/patch_basis.h"
+#include "core/patches/patch_basis.h"
 namespace gps {
 #define GPS_NODES_PARAM const int32_t *nodes,
 #define GPS_NODES_ARG nodes,
@@ -66,7 +66,7 @@ GPS_FN int descend_plan(GPS_NODES_PARAM int node, bool triangle, GPS_INOUT_REF(G
 /// its s and t derivatives, and d/du = scale (d[0] ∂s + d[1] ∂t), d/dv = scale (d[2] ∂s + d[3] ∂t).
 /// Past the table's levels the rows apply to the node's points after `steps` steps of the table's
 /// matrix A, where `stepping` (the CPU); without it (the GPU, whose tessellations stay within the
-/// levels: core/plans/patch_basis.h, kExtraordinaryLevels) the limit masks stand in, steps = 0.
+/// levels: core/patches/patch_basis.h, kExtraordinaryLevels) the limit masks stand in, steps = 0.
 GPS_FN int extraordinary_rows(bool quad, int r, GPS_REAL u, GPS_REAL v, bool stepping, GPS_OUT_REF(int) first_row,
                               GPS_OUT_REF(int) steps, GPS_OUT GPS_REAL w[16], GPS_OUT GPS_REAL ws[16],
                               GPS_OUT GPS_REAL wt[16], GPS_OUT GPS_REAL d[4], GPS_OUT_REF(GPS_REAL) scale) {

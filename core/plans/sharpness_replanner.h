@@ -8,7 +8,7 @@
 
 #include "core/extraordinary/loop_crease_tables.h"
 #include "core/extraordinary/quad_extraordinary_tables.h"
-#include "core/plans/local_mesh.h"
+#include "core/patches/local_mesh.h"
 #include "core/plans/planned_surface.h"
 #include "core/plans/range_plans.h"
 

@@ -4,7 +4,7 @@
 
 #include "core/mesh/linalg.h"
 #include "core/plans/patch_plans.h"
-#include "core/plans/stencil.h"
+#include "core/patches/stencil.h"
 
 namespace gps {
 

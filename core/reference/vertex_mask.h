@@ -2,7 +2,7 @@
 // A vertex's rule as data (docs/design.md §1, §2 "limit projection"): the points a subdivision or
 // limit rule reads at one vertex and their weights, taken from the connectivity alone. The reference
 // applies a mask to values (core/reference/limit_masks.h, core/reference/catmull_clark.h,
-// core/reference/loop.h); the plan builders take its terms as a stencil (core/plans/quad_nets.h). One
+// core/reference/loop.h); the plan builders take its terms as a stencil (core/patches/quad_nets.h). One
 // source for both, so the two cannot drift apart.
 #include <utility>
 #include <vector>

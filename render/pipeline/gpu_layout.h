@@ -1,6 +1,6 @@
 // What the C++ pipeline and its shaders agree on: buffer bindings, the compute work-group size and
 // the layout of a 9D point. ONE source: compiled as C++ and embedded, with GPS_GLSL defined, ahead
-// of the shaders that use it (cmake/embed_shaders.cmake), like core/plans/patch_basis.h.
+// of the shaders that use it (cmake/embed_shaders.cmake), like core/patches/patch_basis.h.
 #ifndef GPS_GLSL
 #pragma once
 namespace gps::gpu {

@@ -284,7 +284,7 @@ TEST(RepairCli, InfoListsEveryProblemAndExitsOne) {
         "  non-manifold (pinch) vertices: 1 (vertex 1 (line 1) with 2 fans)\n",
         "  faces oriented against their neighbours: 1 (face 6 (line 15))\n",
         "also:\n  isolated vertices (in no face): 1 (vertex 8 (line 8))\n",
-        "after --repair: 3 parts, 1 boundary loop, genus 0, scheme Loop\n",
+        "after --repair: 11 vertices, 9 faces, 3 parts, 1 boundary loop, genus 0, scheme Loop\n",
         ": 1 duplicate face (on the vertices of an earlier one), face 9 (line 18) as face 8 (line 17); --repair "
         "drops it; 1 non-manifold edge (a fin: more than two faces), the edge of vertex 2 (line 2) and vertex 3 "
         "(line 3) with 3 faces; --repair gives the extra faces their own vertices; 1 non-manifold (pinch) vertex, vertex 1 "
@@ -314,7 +314,7 @@ TEST(RepairCli, InfoNamesWhatAReadMeshHasAndExitsZero) {
         "  coincident vertices: 2 (vertex 9 (line 9) at vertex 1 (line 1))\n",
         "  zero-area faces: 1 (face 7 (line 18))\n", "  isolated vertices (in no face): 1 (vertex 10 (line 10))\n",
         // Dropping the zero-area face leaves the slit it covered open: a loop of zero area.
-        "after --repair: 1 part, 1 boundary loop, genus 0, scheme Catmull-Clark\n"})
+        "after --repair: 9 vertices, 6 faces, 1 part, 1 boundary loop, genus 0, scheme Catmull-Clark\n"})
     EXPECT_NE(r.output.find(line), std::string::npos) << line << " in\n" << r.output;
 }
 
@@ -355,6 +355,108 @@ TEST(RepairCli, InfoReportsPartsBoundaryLoopsGenusAndScheme) {
   const auto s = run_command(gpsurf("info " + two));
   EXPECT_EQ(s.exit_code, 0) << s.output;
   EXPECT_NE(s.output.find("surface: 2 parts, 1 boundary loop, genus 0\n"), std::string::npos) << s.output;
+}
+
+// The text after `prefix` in `output`, to the end of its line ("" where it is not there).
+std::string line_after(const std::string& output, const std::string& prefix) {
+  const size_t at = output.find(prefix);
+  if (at == std::string::npos) return "";
+  const size_t from = at + prefix.size();
+  return output.substr(from, output.find('\n', from) - from);
+}
+
+// Fins whose extra faces stay joined to the kept ones through their other edges, with flipped faces: a
+// closed tetrahedron with a triangle hanging from one edge (written first) and a face flipped; a cube
+// with a cone over one face (a fin on each of its edges); a grid of quads with a tetrahedron on an
+// interior edge, one of its faces flipped. What info says --repair makes is what the commands that read
+// the file with --repair get: its counts (info --repair), its surface (tessellate --repair) and its faces
+// (subdivide --levels 0 --repair).
+TEST(RepairCli, InfoAfterRepairIsWhatRepairMakes) {
+  test::TempDir dir;
+  std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1, 0), Vec3(0.5, 0.3, 1), Vec3(0.5, -1, 0)};
+  Faces faces = {{0, 1, 4}, {1, 0, 2}, {0, 1, 3}, {3, 1, 2}, {3, 0, 2}};
+  const int cube = int(p.size());
+  for (int i = 0; i < 8; ++i) p.push_back(corner(i) + Vec3(3, 0, 0));
+  for (const auto& face : kCube) faces.push_back({cube + face[0], cube + face[1], cube + face[2], cube + face[3]});
+  p.push_back(Vec3(3.5, 0.5, -1));  // the cone's apex, below the bottom {0, 2, 3, 1}
+  const int apex = int(p.size()) - 1;
+  const std::vector<int> bottom = {cube + 0, cube + 2, cube + 3, cube + 1};
+  for (size_t k = 0; k < 4; ++k) faces.push_back({bottom[(k + 1) % 4], bottom[k], apex});
+  const int grid = int(p.size());
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) p.push_back(Vec3(6 + i, j, 0));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const int a = grid + 4 * i + j;
+      faces.push_back({a, a + 4, a + 5, a + 1});
+    }
+  const int a = grid + 5, b = grid + 9;  // an interior edge of the grid
+  p.insert(p.end(), {Vec3(7.5, 1.2, 1), Vec3(7.2, 0.8, -1)});
+  const int c = int(p.size()) - 2, d = c + 1;
+  faces.insert(faces.end(), {{b, a, c}, {a, b, d}, {d, b, c}, {d, a, c}});  // the last one flipped
+  const std::string in = dir.file("fins.obj");
+  write_obj(in, p, faces);
+
+  const auto info = run_command(gpsurf("info " + in));
+  EXPECT_EQ(info.exit_code, 1) << info.output;
+  const std::string after = line_after(info.output, "after --repair: ");
+  ASSERT_NE(after, "") << info.output;
+  const auto repaired = run_command(gpsurf("info " + in + " --repair"));
+  ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
+  const std::string vertices = line_after(repaired.output, "\nvertices: ");
+  const std::string faces_line = line_after(repaired.output, "\nfaces: ");
+  const std::string surface = line_after(repaired.output, "\nsurface: ");
+  const std::string scheme = line_after(repaired.output, "\nscheme: ");
+  EXPECT_EQ(after, vertices + " vertices, " + faces_line.substr(0, faces_line.find(' ')) + " faces, " + surface +
+                       ", scheme " + scheme.substr(0, scheme.find(" (")));
+  EXPECT_EQ(surface, "6 parts, 3 boundary loops, genus 0")
+      << "each tetrahedron closed and apart from the triangle or grid, the cube closed and apart from the cone";
+
+  const auto tessellated = run_command(gpsurf("tessellate " + in + " -o " + dir.file("t.obj") + " --level 2 --repair"));
+  ASSERT_EQ(tessellated.exit_code, 0) << tessellated.output;
+  EXPECT_EQ(line_after(run_command(gpsurf("info " + dir.file("t.obj"))).output, "\nsurface: "), surface);
+
+  const auto subdivided =
+      run_command(gpsurf("subdivide " + in + " -o " + dir.file("s.ply") + " --levels 0 --repair"));
+  ASSERT_EQ(subdivided.exit_code, 0) << subdivided.output;
+  const CovarianceMesh m = read_mesh(dir.file("s.ply"));
+  EXPECT_EQ(std::to_string(m.n_vertices()), vertices);
+  EXPECT_EQ(boundary_edges(m), 3 + 4 + 12) << "the triangle's, the cone's and the grid's";
+}
+
+// A Möbius strip of six quads beside a tetrahedron with a triangle hanging from one edge: info names
+// the fin it mends and, after --repair, the part it cannot orient, numbered as the file numbers it;
+// a command given --repair is refused with the same part and what to do.
+TEST(RepairCli, InfoNamesWhatRepairCannotMend) {
+  test::TempDir dir;
+  constexpr int n = 6;
+  std::vector<Vec3> p = {Vec3(0, 0, 5), Vec3(1, 0, 5), Vec3(0.5, 1, 5), Vec3(0.5, 0.3, 6), Vec3(0.5, -1, 5)};
+  Faces faces = {{0, 1, 4}, {1, 0, 2}, {0, 1, 3}, {3, 1, 2}, {2, 0, 3}};
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    const Vec3 radial(std::cos(a), std::sin(a), 0);
+    const Vec3 across = std::cos(a / 2) * radial + std::sin(a / 2) * Vec3(0, 0, 1);
+    p.push_back(3 * radial + across);
+    p.push_back(3 * radial - across);
+  }
+  for (int i = 0; i + 1 < n; ++i) faces.push_back({5 + 2 * i, 7 + 2 * i, 8 + 2 * i, 6 + 2 * i});
+  faces.push_back({5 + 2 * n - 2, 6, 5, 5 + 2 * n - 1});  // the last quad joins the first edge backwards
+  const std::string in = dir.file("mobius.obj");
+  write_obj(in, p, faces);
+  const auto info = run_command(gpsurf("info " + in));
+  EXPECT_EQ(info.exit_code, 1);
+  for (const char* line : {"  non-manifold edges (fins: more than two faces): 1 (the edge of vertex 1 (line 1) and "
+                           "vertex 2 (line 2) with 3 faces)\n",
+                           "after --repair: refused for (vertices and faces numbered from 1):\n"
+                           "  parts that cannot be oriented (Möbius-like): 1 (the part of face 6 (line 23))\n"})
+    EXPECT_NE(info.output.find(line), std::string::npos) << line << " in\n" << info.output;
+  const auto tessellated = run_command(gpsurf("tessellate " + in + " -o " + dir.file("t.obj") + " --repair"));
+  EXPECT_EQ(tessellated.exit_code, 1);
+  EXPECT_NE(tessellated.output.find(in + ": 1 part that cannot be oriented (Möbius-like), the part of face 6 (line "
+                                         "23); no repair orients it (delete faces across it to cut it open, then "
+                                         "repair)\n"),
+            std::string::npos)
+      << tessellated.output;
 }
 
 }  // namespace

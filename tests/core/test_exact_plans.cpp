@@ -10,7 +10,7 @@
 #include <random>
 
 #include "core/mesh/mesh_connectivity.h"
-#include "core/plans/patch_basis.h"
+#include "core/patches/patch_basis.h"
 #include "core/evaluation/patch_eval.h"
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/plan_fixture.h"

@@ -10,7 +10,7 @@
 #include "core/support/error.h"
 #include "core/reference/limit_masks.h"
 #include "core/extraordinary/loop_extraordinary_tables.h"
-#include "core/plans/patch_basis.h"
+#include "core/patches/patch_basis.h"
 #include "core/evaluation/patch_eval.h"
 #include "core/plans/planned_surface.h"
 #include "core/reference/reference_subdivision.h"
@@ -28,7 +28,7 @@ PlannedMesh loop_planned(CovarianceMesh m, LoopBeta beta = LoopBeta::loop) {
   return PlannedMesh(std::move(m), PlanOptions{Scheme::loop, 3, beta});
 }
 
-// The box spline of core/plans/patch_basis.h is the limit of Loop subdivision of its 12-point net: a
+// The box spline of core/patches/patch_basis.h is the limit of Loop subdivision of its 12-point net: a
 // regular lattice, one net point a unit vector, three Loop steps and limit projection.
 TEST(LoopPatchBasis, IsTheLimitOfLoopSubdivisionOfTheNet) {
   const int R = 5;

@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "core/plans/patch_basis.h"
+#include "core/patches/patch_basis.h"
 #include "tests/support/plan_fixture.h"
 
 namespace gps {

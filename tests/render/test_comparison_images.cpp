@@ -122,7 +122,7 @@ void expect_black(const char* name, const Aovs& gpu, const Aovs& reference, cons
 // 8/255, this image's sensitivity there more than the GPU's error (normals turned by as little as
 // 1e-6 light a few percent of its pixels). cone-pointy, with the same apex, stays within 1 % because
 // the GPU sums q̄ about nearby anchors (shaders/plan_point.glsl) and boundary leaves take their
-// phantom points into the basis (core/plans/patch_basis.h), so that no net point is a large
+// phantom points into the basis (core/patches/patch_basis.h), so that no net point is a large
 // difference in float.
 TEST_F(ComparisonImages, AreBlackOnTheValenceSamplesTheWirecubeAndTheCones) {
   const PlanOptions options{Scheme::catmull_clark};

@@ -1,4 +1,4 @@
-// core/plans/patch_basis.h, core/plans/plan_descent.h and render/pipeline/gpu_layout.h are one source for C++ and GLSL:
+// core/patches/patch_basis.h, core/plans/plan_descent.h and render/pipeline/gpu_layout.h are one source for C++ and GLSL:
 // compiled both ways, they must give the same results and constants (compute shaders against the
 // C++ functions and values), and the pipeline's shaders must take their bindings and work-group
 // size from them.
@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "core/plans/patch_basis.h"
+#include "core/patches/patch_basis.h"
 #include "core/plans/plan_descent.h"
 #include "core/plans/planned_surface.h"
 #include "render/gl/gl_context.h"

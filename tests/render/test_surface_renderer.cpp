@@ -101,7 +101,7 @@ TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
 // (shaders/plan_point.glsl) and takes each leaf's sums about its heaviest point's anchor
 // (shaders/plan_eval.glsl) instead of summing q̄ = q̂μ itself. cone-pointy as Catmull-Clark, whose
 // boundary rows weigh its apex (q̂ = 1e5 I) by −0.375, keeps within it because boundary phantoms are
-// folded into the basis (core/plans/patch_basis.h).
+// folded into the basis (core/patches/patch_basis.h).
 TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
   for (const std::string& name : sample_names()) {
     const CovarianceMesh mesh = make_sample(name, 300);
@@ -110,7 +110,7 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
       if (scheme && scheme_for(topology_of(mesh.mesh), {}) == Scheme::catmull_clark) continue;  // the same plans
       // Level 64 on valence10 with plans of depth 0 (extraordinary nodes as large as base faces):
       // the vertices closest to those corners (1/64 of a patch) are within the tables' levels
-      // (core/plans/patch_basis.h, kExtraordinaryLevels), where the GPU is exact too.
+      // (core/patches/patch_basis.h, kExtraordinaryLevels), where the GPU is exact too.
       std::vector<float> levels = {1.0f, large ? 3.0f : 7.0f};
       if (name == "valence10") levels.push_back(64.0f);
       for (const float level : levels) {
@@ -121,7 +121,7 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
             name.c_str(), scheme ? "cc" : "auto", level, e.position, e.normal_degrees, e.count);
         EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
         // 2e-6 is required; 5e-7 holds since boundary phantoms are folded into the basis
-        // (core/plans/patch_basis.h).
+        // (core/patches/patch_basis.h).
         EXPECT_LT(e.position, 5e-7) << name << " level " << level;
         EXPECT_LT(e.normal_degrees, 0.05) << name << " level " << level;
       }

@@ -1,6 +1,6 @@
-#include "core/plans/triangle_sectors.h"
+#include "core/patches/triangle_sectors.h"
 
-#include "core/plans/quad_nets.h"
+#include "core/patches/quad_nets.h"
 
 namespace gps {
 

@@ -1,11 +1,11 @@
 #pragma once
-// The control nets of Catmull-Clark patches over a piece of a subdivided mesh (core/plans/local_mesh.h):
+// The control nets of Catmull-Clark patches over a piece of a subdivided mesh (core/patches/local_mesh.h):
 // the 4×4 B-spline net of a regular quad and the Bézier net of a terminal node (thesis Fig. 2.5).
 #include <array>
 #include <utility>
 #include <vector>
 
-#include "core/plans/local_mesh.h"
+#include "core/patches/local_mesh.h"
 
 namespace gps {
 

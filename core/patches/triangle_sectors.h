@@ -1,11 +1,11 @@
 #pragma once
 // Where Loop's regular box-spline patches apply on a triangle mesh with creases: a vertex's sector
 // (the triangles reached from one of them around the vertex without crossing a boundary or an
-// infinitely sharp crease) and whether it is a regular corner of a patch, as core/plans/quad_nets.h
+// infinitely sharp crease) and whether it is a regular corner of a patch, as core/patches/quad_nets.h
 // decides for quads (docs/design.md §2 "Creases and corners in the plans").
 #include <vector>
 
-#include "core/plans/local_mesh.h"
+#include "core/patches/local_mesh.h"
 
 namespace gps {
 

@@ -1,4 +1,4 @@
-#include "core/plans/quad_nets.h"
+#include "core/patches/quad_nets.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "core/plans/stencil.h"
+#include "core/patches/stencil.h"
 
 #include <cstddef>
 

@@ -58,7 +58,7 @@ private:
 };
 
 /// The 12 control points of the box-spline patch of the triangle (v0, v1, v2), all three regular,
-/// in the order of loop_box_spline_basis() (core/plans/patch_basis.h). Beyond a boundary edge (a, b)
+/// in the order of loop_box_spline_basis() (core/patches/patch_basis.h). Beyond a boundary edge (a, b)
 /// of a triangle (a, b, c) the phantom point is a + b − c: Loop's rules on the extended net then
 /// give the boundary rules of core/reference/loop.h (edge midpoint, (a + 6v + b)/8).
 std::array<VertexCombination, 12> loop_regular_net(const TriangleWalker& walker, int v0, int v1, int v2);

@@ -1,4 +1,4 @@
-#include "core/plans/loop_nets.h"
+#include "core/patches/loop_nets.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -76,7 +76,7 @@ namespace {
 
 // Lattice directions counter-clockwise: (1,0) (0,1) (−1,1) (−1,0) (0,−1) (1,−1).
 constexpr int kDirection[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
-// Lattice positions of the 12 net points (core/plans/patch_basis.h order).
+// Lattice positions of the 12 net points (core/patches/patch_basis.h order).
 constexpr int kNet[12][2] = {{0, 0},  {1, 0},  {0, 1}, {-1, 0}, {0, -1}, {1, -1},
                              {-1, 1}, {2, -1}, {2, 0}, {1, 1},  {0, 2},  {-1, 2}};
 

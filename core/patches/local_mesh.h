@@ -9,7 +9,7 @@
 #include "core/mesh/sharpness.h"
 #include <Eigen/Core>
 
-#include "core/plans/stencil.h"
+#include "core/patches/stencil.h"
 #include "core/reference/loop.h"
 
 namespace gps {

@@ -1,4 +1,4 @@
-#include "core/plans/local_mesh.h"
+#include "core/patches/local_mesh.h"
 
 #include <algorithm>
 #include <stdexcept>
