@@ -110,9 +110,8 @@ Modelled bisect(const CovarianceMesh& mesh, const Vec3& point, const Vec3& norma
     std::vector<int> points;
     for (size_t k : at) points.push_back(cycle[k]);
     const Vec3 along = n.cross(newell_normal(a, f));
-    std::stable_sort(points.begin(), points.end(), [&](int x, int y) {
-      return along.dot(a.means[size_t(x)]) < along.dot(a.means[size_t(y)]);
-    });
+    std::stable_sort(points.begin(), points.end(),
+                     [&](int x, int y) { return along.dot(a.means[size_t(x)]) < along.dot(a.means[size_t(y)]); });
     std::vector<std::vector<int>> pieces = {cycle};
     for (size_t k = 0; k + 1 < points.size(); k += 2)
       if (!split_along(pieces, points[k], points[k + 1]))

@@ -39,6 +39,8 @@ Modelled mirror(const CovarianceMesh& mesh, int axis, const Vec3& center, bool m
     const std::vector<int>& face = a.faces[size_t(f)];
     if (std::all_of(face.begin(), face.end(), [&](int v) { return merged[size_t(v)] != 0; }))
       throw Error("face " + std::to_string(f) + " lies on the mirror plane (it would meet its own image)");
+  }
+  for (const std::vector<int>& face : a.faces)
     for (size_t k = 0; k < face.size(); ++k) {
       const int u = face[k], v = face[(k + 1) % face.size()];
       used[size_t(u)] = 1;
@@ -48,7 +50,6 @@ Modelled mirror(const CovarianceMesh& mesh, int axis, const Vec3& center, bool m
                     " lies on the mirror plane with faces on both sides (the seam would join four)");
       on_seam[size_t(u)] = on_seam[size_t(v)] = 1;
     }
-  }
   for (int v = 0; v < n_vertices; ++v)
     if (merged[size_t(v)] && used[size_t(v)] && !on_seam[size_t(v)])
       throw Error("vertex " + std::to_string(v) +
@@ -64,7 +65,9 @@ Modelled mirror(const CovarianceMesh& mesh, int axis, const Vec3& center, bool m
     }
     // The 9D average of a Gaussian and its image is its own image: the seam stays symmetric.
     const std::optional<Gaussian> symmetric = from_dual(0.5 * (to_dual(a.gaussian(v)) + to_dual(mirrored)));
-    if (!symmetric) throw Error("vertex " + std::to_string(v) + " on the mirror plane would get a covariance that is not positive definite");
+    if (!symmetric)
+      throw Error("vertex " + std::to_string(v) +
+                  " on the mirror plane would get a covariance that is not positive definite");
     a.means[size_t(v)] = symmetric->mean;
     a.covariances[size_t(v)] = symmetric->covariance;
     copy_of[size_t(v)] = v;
@@ -76,7 +79,8 @@ Modelled mirror(const CovarianceMesh& mesh, int axis, const Vec3& center, bool m
     a.faces.push_back(std::move(face));
   }
   const Sharpness before = a.sharpness;
-  for (const EdgeCrease& c : before.creases) a.sharpness.set_crease(copy_of[size_t(c.a)], copy_of[size_t(c.b)], c.sharpness);
+  for (const EdgeCrease& c : before.creases)
+    a.sharpness.set_crease(copy_of[size_t(c.a)], copy_of[size_t(c.b)], c.sharpness);
   for (int v = 0; v < n_vertices; ++v)
     if (const double corner = before.corner(v); corner > 0 && !merged[size_t(v)])
       a.sharpness.set_corner(copy_of[size_t(v)], corner, a.n_vertices());

@@ -32,7 +32,8 @@ Modelled spin(const CovarianceMesh& mesh, const std::vector<int>& vertices, cons
                 std::to_string(kMostSteps) + ", got " + std::to_string(steps));
   MeshArrays a = arrays_of(mesh);
   for (const int v : vertices) check_vertex(a, v);
-  if (vertices.size() < 2) throw Error("the profile has " + count_of(vertices.size(), "vertex", "vertices") + " (2 needed)");
+  if (vertices.size() < 2)
+    throw Error("the profile has " + count_of(vertices.size(), "vertex", "vertices") + " (2 needed)");
   const bool loop = vertices.size() > 2 && vertices.front() == vertices.back();
   const std::vector<int> profile(vertices.begin(), vertices.end() - (loop ? 1 : 0));
   if (loop && profile.size() < 3) throw Error("a loop needs 3 vertices");
@@ -50,7 +51,8 @@ Modelled spin(const CovarianceMesh& mesh, const std::vector<int>& vertices, cons
   for (const auto& [i, j] : edges) {
     const int u = profile[i], v = profile[j];
     const bool forward = directed.count(directed_key(u, v)) != 0, backward = directed.count(directed_key(v, u)) != 0;
-    if (forward && backward) throw Error(edge_name(u, v) + " has faces on both sides (a spin from it would join three)");
+    if (forward && backward)
+      throw Error(edge_name(u, v) + " has faces on both sides (a spin from it would join three)");
     if ((forward || backward) && full_turn)
       throw Error(edge_name(u, v) + " is an edge of the mesh (a full turn would close on it beside its face)");
     const int wanted = forward ? -1 : backward ? 1 : 0;

@@ -104,7 +104,8 @@ TEST(Bisect, AConcaveFaceCrossedFourTimesIsCutIntoThree) {
     double area = 0;  // the pieces tile the U: its area, 5
     for (int f = 0; f < a.n_faces(); ++f) {
       double lo = 9, hi = -9;
-      for (int v : a.faces[size_t(f)]) lo = std::min(lo, a.means[size_t(v)].y()), hi = std::max(hi, a.means[size_t(v)].y());
+      for (int v : a.faces[size_t(f)])
+        lo = std::min(lo, a.means[size_t(v)].y()), hi = std::max(hi, a.means[size_t(v)].y());
       EXPECT_TRUE(lo >= 1.5 - 1e-12 || hi <= 1.5 + 1e-12) << "a piece crosses the plane";
       area += 0.5 * newell_normal(a, f).z();
     }
@@ -171,11 +172,11 @@ TEST(Bisect, TheOperationList) {
             "ops.json: ops[0] (bisect): \"plane\": unknown key 'offset'");
   EXPECT_EQ(parse_error(R"([{"op":"bisect","plane":{"point":[0,0,1e999],"normal":[0,0,1]}}])").rfind("ops.json: ", 0),
             0u);
-  EXPECT_EQ(error_of([&] {
-              OperationList::parse(R"([{"op":"bisect","plane":{"point":[0,0,3],"normal":[0,0,1]}}])", "ops.json")
-                  .apply(cube);
-            }),
-            "ops.json: ops[0] (bisect): the plane crosses no face of the mesh");
+  EXPECT_EQ(
+      error_of([&] {
+        OperationList::parse(R"([{"op":"bisect","plane":{"point":[0,0,3],"normal":[0,0,1]}}])", "ops.json").apply(cube);
+      }),
+      "ops.json: ops[0] (bisect): the plane crosses no face of the mesh");
 }
 
 }  // namespace

@@ -25,7 +25,8 @@ using test::signed_volume;
 // axis: (0, 0, −1), (1, 0, −0.5), (1, 0, 0.5), (0, 0, 1); anisotropic covariances.
 CovarianceMesh profile_mesh() {
   const std::vector<Vec3> p = {{10, 0, 0}, {11, 0, 0}, {10, 1, 0}, {0, 0, -1}, {1, 0, -0.5}, {1, 0, 0.5}, {0, 0, 1}};
-  const CovarianceMesh m = make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.04 * Mat3::Identity()), {{0, 1, 2}}, "profile");
+  const CovarianceMesh m =
+      make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.04 * Mat3::Identity()), {{0, 1, 2}}, "profile");
   return test::with_random_covariances(m, 11);
 }
 
@@ -102,9 +103,13 @@ TEST(Spin, CreasesAndCornersGoToTheCopies) {
 TEST(Spin, RefusalsSayWhy) {
   const CovarianceMesh cube = make_sample("cube"), profile = profile_mesh(), quad = quad_mesh();
   const Vec3 z(0, 0, 1), o = Vec3::Zero();
-  EXPECT_EQ(error_of([&] { spin(cube, {0, 1}, z, o, 90, 4); }),
+  EXPECT_EQ(error_of([&] {
+              spin(cube, {0, 1}, z, o, 90, 4);
+            }),
             "edge 0–1 has faces on both sides (a spin from it would join three)");
-  EXPECT_EQ(error_of([&] { spin(quad, {0, 3}, z, o, 360, 8); }),
+  EXPECT_EQ(error_of([&] {
+              spin(quad, {0, 3}, z, o, 360, 8);
+            }),
             "edge 0–3 is an edge of the mesh (a full turn would close on it beside its face)");
   EXPECT_EQ(error_of([&] { spin(profile, {3, 4, 3, 5}, z, o, 90, 4); }), "vertex 3 is twice in the profile");
   EXPECT_EQ(error_of([&] { spin(profile, {3, 4, 3}, z, o, 90, 4); }), "a loop needs 3 vertices");
@@ -112,25 +117,33 @@ TEST(Spin, RefusalsSayWhy) {
   EXPECT_EQ(error_of([&] { spin(profile, {4, 9}, z, o, 90, 4); }), "vertex 9 is not in the mesh (7 vertices)");
   EXPECT_EQ(error_of([&] { spin(profile, {3, 6}, z, o, 90, 4); }), "the profile lies on the axis (nothing to spin)");
   EXPECT_EQ(error_of([&] { spin(profile, {4, 5}, o, o, 90, 4); }), "the spin's axis is zero");
-  EXPECT_EQ(error_of([&] { spin(profile, {4, 5}, z, o, 0, 4); }),
+  EXPECT_EQ(error_of([&] {
+              spin(profile, {4, 5}, z, o, 0, 4);
+            }),
             "the angle must be from -360 to 360 degrees and not 0, got 0");
-  EXPECT_EQ(error_of([&] { spin(profile, {4, 5}, z, o, -360, 2); }),
+  EXPECT_EQ(error_of([&] {
+              spin(profile, {4, 5}, z, o, -360, 2);
+            }),
             "the steps must be from 3 (a full turn) to 1000, got 2");
-  EXPECT_EQ(error_of([&] { spin(profile, {4, 5}, z, Vec3(NAN, 0, 0), 90, 2); }),
+  EXPECT_EQ(error_of([&] {
+              spin(profile, {4, 5}, z, Vec3(NAN, 0, 0), 90, 2);
+            }),
             "the spin has a number that is not finite");
   // Two quads of opposite orientation: the profile 1 → 0 → 5 → 4 runs against one and along the other.
   const std::vector<Vec3> p = {{1, 0, 0}, {2, 0, 0}, {2, 0, 1}, {1, 0, 1}, {1, 0, 3}, {2, 0, 3}, {2, 0, 4}, {1, 0, 4}};
-  const CovarianceMesh two =
-      make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.04 * Mat3::Identity()), {{0, 1, 2, 3}, {4, 7, 6, 5}}, "two");
-  EXPECT_EQ(error_of([&] { spin(two, {1, 0, 5, 4}, z, o, 90, 2); }),
+  const CovarianceMesh two = make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.04 * Mat3::Identity()),
+                                                  {{0, 1, 2, 3}, {4, 7, 6, 5}}, "two");
+  EXPECT_EQ(error_of([&] {
+              spin(two, {1, 0, 5, 4}, z, o, 90, 2);
+            }),
             "the profile runs along boundary edges of opposite directions (edge 5–4)");
 }
 
 TEST(Spin, TheOperationList) {
   const CovarianceMesh mesh = profile_mesh();
   const Modelled scripted =
-      OperationList::parse(R"([{"op":"spin","vertices":[3,4,5,6],"axis":[0,0,1],"center":[0,0,0],"angle":360,"steps":6}])",
-                           "o")
+      OperationList::parse(
+          R"([{"op":"spin","vertices":[3,4,5,6],"axis":[0,0,1],"center":[0,0,0],"angle":360,"steps":6}])", "o")
           .apply(mesh);
   EXPECT_TRUE(test::same_mesh(scripted.mesh, spin(mesh, {3, 4, 5, 6}, Vec3(0, 0, 1), Vec3::Zero(), 360, 6).mesh));
   const auto parse_error = [](const std::string& text) { return error_of([&] { OperationList::parse(text, "o"); }); };
