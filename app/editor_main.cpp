@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/cli_checks.h"
+#include "app/repair_arguments.h"
 #include "core/support/error.h"
 #include "core/support/freed_memory.h"
 #include "ui/editor.h"
@@ -32,6 +33,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"x", "y", "z"}));
   app.add_option("--loop-beta", loop_beta, "Loop vertex weight: Loop's original or Warren's 3/(8n)")
       ->check(CLI::IsMember({"loop", "warren"}));
+  gps::RepairArguments repair;  // as gpsurf's commands take them; the weld tolerance also for the repair dialog's
+  gps::add_repair_arguments(&app, repair);
   app.failure_message(
       [](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + std::string(e.what()) + "\n"; });
   try {
@@ -43,6 +46,7 @@ int main(int argc, char** argv) {
     if (!scheme.empty()) o.scheme = scheme == "loop" ? 1 : scheme == "catmull-clark" ? 2 : 0;
     o.warren = loop_beta == "warren";
     if (!up.empty()) o.up_axis = gps::up_axis_named(up);
+    o.import = repair.import_options();
     return gps::run_editor(o);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);

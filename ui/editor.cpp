@@ -84,21 +84,22 @@ EditorApp::EditorApp(const EditorOptions& options)
   if (options.file.empty()) {
     open_sample(kDefaultSample);
     if (options.up_axis >= 0) view_.up_axis = options.up_axis;
-  } else {  // no mesh to keep yet: a file that does not load ends the program (one line, exit 1)
+  } else {
     if (options.up_axis >= 0)  // kept for the file, under the name the document gives it
       view_.up_axes[std::filesystem::absolute(options.file).lexically_normal().string()] = options.up_axis;
-    try {
-      document_.open(options.file);
-    } catch (const Error& e) {  // unless a repair mends it: the default sample shows while the user is asked
-      RepairFindings findings = repair_findings(options.file);
-      if (findings.refused.empty()) throw;
+    std::string remarks;
+    if (const std::optional<Error> e = try_open(options.file, options.import.repair, remarks)) {
+      // No mesh to keep yet: the default sample shows under the error, and the repair dialog where the
+      // repair mends the file. A run that must write a screenshot or save of the file stops (exit 1).
+      RepairFindings findings;
+      if (!options.import.repair) findings = repair_findings(options.file, options.import);
+      if (!findings.offered() && (!options.screenshot.empty() || !options.save.empty())) throw *e;
       open_sample(kDefaultSample);
-      repair_prompt_.open(options.file, std::move(findings));
-      set_status(e.what(), true);
-      return;
+      set_status(e->what(), true);
+      if (findings.offered()) repair_prompt_.open(options.file, std::move(findings), e->what());
+    } else if (!remarks.empty()) {
+      set_status("opened " + document_.source_path() + remarks, false);
     }
-    if (!script_) recent_.add(document_.source_path());  // replays are not the user's own work
-    mesh_replaced();
   }
 }
 

@@ -2,6 +2,7 @@
 #include <imgui.h>
 
 #include <filesystem>
+#include <optional>
 
 #include "core/support/error.h"
 #include "core/modelling/samples.h"
@@ -49,38 +50,51 @@ void EditorApp::perform(const Action& action) {
   pending_ = {};
 }
 
-void EditorApp::open_file(const std::string& path) {
+std::optional<Error> EditorApp::try_open(const std::string& path, bool repair, std::string& remarks) {
   const EditorDocument previous = document_;
+  ImportOptions options = options_.import;
+  options.repair = repair;
+  RepairReport report;
+  std::vector<std::string> notes;
   try {
-    document_.open(path);
+    document_.open(path, options, &report, &notes);
     mesh_replaced();          // the renderer may refuse the mesh (valence, GPU limits): nothing changed then
   } catch (const Error& e) {  // the current mesh stays
     document_ = previous;
-    set_status(e.what(), true);
-    // A topology that the repair mends: the user is shown what is wrong and asked.
-    if (RepairFindings findings = repair_findings(path); !findings.refused.empty())
-      repair_prompt_.open(path, std::move(findings));
-    return;
+    return e;
   }
   if (!script_) recent_.add(document_.source_path());
-  set_status("opened " + document_.source_path(), false);
+  remarks.clear();
+  if (repair) {
+    std::string steps;
+    for (const std::string& line : report.lines()) steps += (steps.empty() ? "" : "; ") + line;
+    remarks = " repaired (unsaved): " + (steps.empty() ? "nothing to repair" : steps);
+  }
+  for (const std::string& note : notes) remarks += "; note: " + note;
+  return std::nullopt;
+}
+
+void EditorApp::report_unopened(const std::string& path, const Error& e) {
+  set_status(e.what(), true);
+  // What the repair mends (every class, the refused ones first): the user is shown it and asked.
+  if (RepairFindings findings = repair_findings(path, options_.import); findings.offered())
+    repair_prompt_.open(path, std::move(findings), e.what());
+}
+
+void EditorApp::open_file(const std::string& path) {
+  std::string remarks;
+  if (const std::optional<Error> e = try_open(path, false, remarks))
+    report_unopened(path, *e);
+  else
+    set_status("opened " + document_.source_path() + remarks, false);
 }
 
 void EditorApp::open_repaired(const std::string& path) {
-  const EditorDocument previous = document_;
-  RepairReport report;
-  try {
-    document_.open(path, true, &report);
-    mesh_replaced();
-  } catch (const Error& e) {
-    document_ = previous;
-    set_status(e.what(), true);
-    return;
-  }
-  if (!script_) recent_.add(document_.source_path());
-  std::string done;
-  for (const std::string& line : report.lines()) done += (done.empty() ? "" : "; ") + line;
-  set_status("opened " + document_.source_path() + " repaired (unsaved): " + done, false);
+  std::string remarks;
+  if (const std::optional<Error> e = try_open(path, true, remarks))
+    set_status(e->what(), true);
+  else
+    set_status("opened " + document_.source_path() + remarks, false);
 }
 
 void EditorApp::draw_repair_prompt() {

@@ -20,6 +20,7 @@
 #include "render/pipeline/surface_renderer.h"
 #include "render/gl/window_context.h"
 #include "core/modelling/loop_cut.h"
+#include "core/support/error.h"
 #include "core/plans/sharpness_replanner.h"
 #include "ui/axis_handles.h"
 #include "ui/command_table.h"
@@ -141,6 +142,12 @@ private:
   // Actions (editor_actions.cpp).
   void request(Action action);
   void perform(const Action& action);
+  // Opens a mesh file as the document, repaired where `repair` (with the command line's --weld); where
+  // it fails nothing changes and the error is returned, else `remarks` gets what the repair did and the
+  // reader's notes, for the status line ("" where there are none).
+  std::optional<Error> try_open(const std::string& path, bool repair, std::string& remarks);
+  // A file that did not open: the error in the status line and, where the repair mends it, the dialog.
+  void report_unopened(const std::string& path, const Error& e);
   void open_file(const std::string& path);
   void open_repaired(const std::string& path);
   void draw_repair_prompt();

@@ -22,15 +22,14 @@ bool is_binary_ply(const std::string& path) {
 
 }  // namespace
 
-void EditorDocument::open(const std::string& path, bool repair, RepairReport* report) {
-  ImportOptions options;
-  options.repair = repair;
-  CovarianceMesh loaded = read_mesh(path, options, report);  // throws before anything changes
+void EditorDocument::open(const std::string& path, const ImportOptions& options, RepairReport* report,
+                          std::vector<std::string>* notes) {
+  CovarianceMesh loaded = read_mesh(path, options, report, notes);  // throws before anything changes
   const bool own_ply = extension_of(path) == ".ply";
   const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
   binary_ = !own_ply || is_binary_ply(path);
   replace(std::move(loaded), absolute, own_ply ? absolute : "", std::filesystem::path(path).filename().string());
-  if (repair) history_.mark_unsaved();
+  if (options.repair) history_.mark_unsaved();
 }
 
 void EditorDocument::open_sample(const std::string& name) {

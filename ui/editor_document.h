@@ -7,7 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/io/mesh_repair.h"
+#include "core/io/mesh_io.h"
 #include "core/mesh/covariance_mesh.h"
 #include "core/modelling/mesh_arrays.h"
 #include "ui/edit_history.h"
@@ -18,9 +18,11 @@ class EditorDocument {
 public:
   /// Reads a mesh file (covariance PLY, or OBJ/OFF/STL/plain PLY with inferred covariances).
   /// On failure throws gps::Error (one line naming the file) and leaves the document as it was.
-  /// With `repair` the mesh is read repaired (core/io/mesh_repair.h), what the repair did goes to
-  /// `report` where given, and the document is unsaved: the mesh is not its file's.
-  void open(const std::string& path, bool repair = false, RepairReport* report = nullptr);
+  /// Read with `options` (core/io/mesh_io.h); with options.repair the mesh is read repaired
+  /// (core/io/mesh_repair.h), what the repair did goes to `report` where given, and the document is
+  /// unsaved: the mesh is not its file's. `notes` gets what the reader read leniently.
+  void open(const std::string& path, const ImportOptions& options = {}, RepairReport* report = nullptr,
+            std::vector<std::string>* notes = nullptr);
   /// A built-in sample, untitled (saving asks for a file name).
   void open_sample(const std::string& name);
   /// Writes the mesh (atomically) to `path`, which becomes the document's file when it is a PLY;

@@ -14,25 +14,30 @@ namespace {
 constexpr const char* kTitle = "Repair mesh?";
 }
 
-RepairFindings repair_findings(const std::string& path) {
+RepairFindings repair_findings(const std::string& path, const ImportOptions& options) {
   RepairFindings findings;
   try {
     bool has_covariances = false;
-    const PolygonSoup soup = read_polygon_soup(path, has_covariances);
-    const RepairReport report = diagnose_polygon_soup(soup, repair_options_for());
-    // Offered only where the repair can mend it: no flipping orients a Möbius-like part.
-    if (!report.refuses() || report.count(Defect::unorientable_parts) > 0) return findings;
+    PolygonSoup soup = read_polygon_soup(path, has_covariances);
+    const RepairReport report = diagnose_polygon_soup(soup, repair_options_for(options));
+    if (!report.changed()) return findings;
+    // Offered only where the repaired mesh opens: no flipping orients a Möbius-like part, and a
+    // Gaussian the file gives may be refused whatever the faces.
+    ImportOptions repairing = options;
+    repairing.repair = true;
+    read_mesh_of_soup(std::move(soup), has_covariances, path, repairing);
     const ElementNumbering numbering = element_numbering_for(path, report);
     findings.refused = report.problems(numbering, true);
     findings.others = report.problems(numbering, false);
-  } catch (const Error&) {  // not readable as a soup: the reader's own message says why
+  } catch (const Error&) {  // not readable, or not even once repaired: the reader's own message says why
   }
   return findings;
 }
 
-void RepairPrompt::open(const std::string& path, RepairFindings findings) {
+void RepairPrompt::open(const std::string& path, RepairFindings findings, const std::string& refusal) {
   path_ = path;
   findings_ = std::move(findings);
+  refusal_ = refusal;
   open_ = popup_requested_ = true;
 }
 
@@ -49,8 +54,9 @@ RepairPrompt::Answer RepairPrompt::draw() {
     return Answer::none;
   ImGui::Text("%s cannot be opened as it is:", std::filesystem::path(path_).filename().string().c_str());
   for (const std::string& line : findings_.refused) ImGui::BulletText("%s", line.c_str());
+  if (findings_.refused.empty()) ImGui::BulletText("%s", refusal_.c_str());
   if (!findings_.others.empty()) {
-    ImGui::Text("Repair also mends:");
+    ImGui::Text(findings_.refused.empty() ? "Repair mends:" : "Repair also mends:");
     for (const std::string& line : findings_.others) ImGui::BulletText("%s", line.c_str());
   }
   ImGui::Separator();

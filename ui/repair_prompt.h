@@ -1,26 +1,31 @@
 #pragma once
-// The dialog shown when a mesh opened or dropped on the editor would be refused as read (its topology
-// is one that core/io/mesh_repair.h mends): what is wrong with it, class by class with counts and
-// first examples, and Repair (the repaired mesh, unsaved) or Cancel (the current mesh stays).
+// The dialog shown when a mesh opened or dropped on the editor does not open as read but would once
+// repaired (core/io/mesh_repair.h): what is wrong with it, class by class with counts and first
+// examples, and Repair (the repaired mesh, unsaved) or Cancel (the current mesh stays).
 #include <string>
 #include <vector>
 
+#include "core/io/mesh_io.h"
+
 namespace gps {
 
-/// What the diagnosis of a mesh file finds: the classes that refuse it and those the repair also
-/// mends, one line each (RepairReport::problems). `refused` is empty where the file is not refused for
-/// its topology (it reads, or it fails for another reason) and where the repair could not make it
-/// open (a part no flipping orients, as a Möbius strip): Repair is offered only for what it mends.
+/// What the repair would mend in a mesh file that did not open: the classes that refuse it and the
+/// others it mends, one line each (RepairReport::problems), elements numbered as the file numbers them.
+/// Both are empty where the repair changes nothing or does not make the file open (a part no flipping
+/// orients, as a Möbius strip, or a reason no repair touches): Repair is offered only for what it mends.
+/// `options` are the editor's import options (--weld), the repair asked of them.
 struct RepairFindings {
   std::vector<std::string> refused, others;
+  bool offered() const { return !refused.empty() || !others.empty(); }
 };
-RepairFindings repair_findings(const std::string& path);
+RepairFindings repair_findings(const std::string& path, const ImportOptions& options = {});
 
 class RepairPrompt {
 public:
   enum class Answer { none, repair, cancel };
-  /// Asks about the mesh file at `path` (findings.refused not empty).
-  void open(const std::string& path, RepairFindings findings);
+  /// Asks about the mesh file at `path` (findings offered), which did not open for `refusal` (shown
+  /// where no class found refuses it, as a mesh whose Gaussians a zero-area face spoils).
+  void open(const std::string& path, RepairFindings findings, const std::string& refusal);
   bool is_open() const { return open_; }
   const std::string& path() const { return path_; }
   /// Draws the dialog (Enter repairs, Esc cancels); the user's answer, once.
@@ -29,6 +34,7 @@ public:
 private:
   std::string path_;
   RepairFindings findings_;
+  std::string refusal_;
   bool open_ = false, popup_requested_ = false;
 };
 

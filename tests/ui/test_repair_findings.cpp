@@ -34,7 +34,24 @@ TEST(RepairFindings, RepairIsOfferedOnlyForWhatItMends) {
   const RepairFindings pinched = repair_findings(dir.write("pinched.obj", test::kPinchedObj));
   ASSERT_EQ(pinched.refused.size(), 1u);
   EXPECT_NE(pinched.refused[0].find("pinch"), std::string::npos) << pinched.refused[0];
-  EXPECT_TRUE(repair_findings(dir.write("mobius.obj", mobius_obj())).refused.empty());
+  EXPECT_TRUE(pinched.offered());
+  EXPECT_FALSE(repair_findings(dir.write("mobius.obj", mobius_obj())).offered());
+  // A file no repair reads, and one that reads as it is: nothing offered.
+  EXPECT_FALSE(
+      repair_findings(dir.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nend_header\n")).offered());
+  EXPECT_FALSE(repair_findings(dir.write("clean.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).offered());
+}
+
+// Every class the repair mends is listed, the refused one (the pinch) first, elements numbered as the
+// OBJ file numbers them (from 1, with their lines).
+TEST(RepairFindings, EveryClassTheRepairMendsIsListed) {
+  test::TempDir dir;
+  const RepairFindings scan = repair_findings(dir.write("scan.obj", test::pinched_scan_obj()));
+  EXPECT_EQ(scan.refused, std::vector<std::string>{"non-manifold (pinch) vertices: 1 (vertex 1 (line 1) with 2 fans)"});
+  ASSERT_EQ(scan.others.size(), 2u);
+  EXPECT_EQ(scan.others[0].rfind("coincident vertices: 26 (vertex 10 (line 10) at vertex 2 (line 2); ", 0), 0u)
+      << scan.others[0];
+  EXPECT_EQ(scan.others[1].rfind("zero-area faces: 9 (face 11 (line 47); ", 0), 0u) << scan.others[1];
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // The editor's first view and its repair prompt, in a real window under Xvfb: the mesh framed in the
 // part of the window the panels leave free; the View panel's every row on screen for a triangle mesh;
 // --up kept for the file; a mesh with a pinch vertex, opened or dropped, shown with what is wrong and
-// opened repaired (unsaved) or not at all, the editor running on. Screenshots kept in
+// opened repaired (unsaved) or not at all, the editor running on; --repair and --weld on the command
+// line; a file that does not open leaving the default sample and its error. Screenshots kept in
 // build/test-artefacts/EditorFirstView/.
 #include <gtest/gtest.h>
 
@@ -138,6 +139,60 @@ TEST_F(EditorFirstView, APinchedMeshDroppedIsRepairedOrLeft) {
   EXPECT_EQ(stats()["mesh"], "pinched.obj");
   EXPECT_EQ(stats()["faces"], 10);
   EXPECT_EQ(stats()["unsaved"], true);
+}
+
+// A scan's faults (18 duplicate vertices in 9 zero-area faces, a pinch vertex): --repair on the command
+// line opens it repaired and unsaved, the status line saying what the repair did; --weld F the same.
+TEST_F(EditorFirstView, AMeshTheRepairMendsOpensWithRepair) {
+  const std::string scan = dir_.write("scan.obj", test::pinched_scan_obj());
+  for (const std::string& option : {std::string("--repair"), std::string("--weld 1e-6")}) {
+    SCOPED_TRACE(option);
+    const auto r =
+        run(scan, test::Events().wait(2), option + " --screenshot " + artefact("scan_repaired_on_start.png"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const nlohmann::json s = stats();
+    EXPECT_EQ(s["mesh"], "scan.obj");
+    EXPECT_EQ(s["faces"], 10);
+    EXPECT_EQ(s["unsaved"], true);
+    EXPECT_NE(r.output.find("repaired (unsaved): welded 26 coincident vertices into 8; dropped 9 zero-area faces; "
+                            "split 1 pinch vertex"),
+              std::string::npos)
+        << r.output;
+  }
+}
+
+// Without --repair the same scan is not refused: the default sample shows under the repair dialog,
+// which lists every class the repair mends (the pinch, the coincident vertices, the zero-area faces),
+// and Enter opens the repaired mesh.
+TEST_F(EditorFirstView, AMeshTheRepairMendsReachesTheRepairDialog) {
+  const std::string scan = dir_.write("scan.obj", test::pinched_scan_obj());
+  const auto asked = run(scan, test::Events().wait(2), "--screenshot " + artefact("scan_repair_dialog.png"));
+  ASSERT_EQ(asked.exit_code, 0) << asked.output;
+  EXPECT_EQ(stats()["mesh"], "sample cone-pointy");
+  EXPECT_NE(asked.output.find("scan.obj: 1 non-manifold (pinch) vertex, vertex 1 (line 1) with 2 fans"),
+            std::string::npos)
+      << asked.output;
+  const auto repaired = run(scan, test::Events().wait(2).key("enter").wait(3), "");
+  ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
+  EXPECT_EQ(stats()["mesh"], "scan.obj");
+  EXPECT_EQ(stats()["faces"], 10);
+  EXPECT_EQ(stats()["unsaved"], true);
+}
+
+// A file that does not open and that no repair mends does not end an interactive session: the default
+// sample shows with the error in the status line. A run that must write a screenshot of it still
+// fails (exit 1, one line).
+TEST_F(EditorFirstView, AMeshThatCannotOpenLeavesTheSampleAndItsError) {
+  const std::string bad = dir_.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nend_header\n");
+  const auto shown = run(bad, test::Events().wait(2), "");
+  ASSERT_EQ(shown.exit_code, 0) << shown.output;
+  EXPECT_EQ(stats()["mesh"], "sample cone-pointy");
+  EXPECT_NE(shown.output.find("bad.ply: "), std::string::npos) << shown.output;
+  const auto repaired = run(bad, test::Events().wait(2), "--repair");
+  ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
+  EXPECT_EQ(stats()["mesh"], "sample cone-pointy");
+  const auto scripted = run(bad, test::Events().wait(2), "--screenshot " + artefact("unused.png"));
+  EXPECT_EQ(scripted.exit_code, 1) << scripted.output;
 }
 
 }  // namespace
