@@ -113,7 +113,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
     throw Error(a.input + ": the GPU's evaluation is not finite at " + std::to_string(bad) +
                 " pixels; nothing written");
   // Framed on the surface, an image without it means the evaluation lost it (Gaussians too thin
-  // for the GPU's precision: render/pipeline/point_precision.h), not a view that looks away.
+  // for the GPU's precision: render/gl/point_precision.h), not a view that looks away.
   if (a.camera.empty() && count_covered_pixels(normal) == 0)
     throw Error(a.input +
                 ": the surface covers no pixel of the image framed on it (Gaussians too thin for the "

@@ -9,7 +9,7 @@ uniform mat4 u_view;
 uniform sampler2D u_matcap;
 uniform vec4 u_wire_color;  // alpha 0: no tessellation wireframe
 uniform int u_flag_back_faces;  // crack checks: back faces in pure magenta
-// The drawn points' frame (render/pipeline/normalised_frame.h): world = centre + unit · point.
+// The drawn points' frame (render/gl/normalised_frame.h): world = centre + unit · point.
 uniform vec3 u_frame_centre;
 uniform float u_frame_unit;
 

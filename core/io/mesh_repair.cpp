@@ -457,15 +457,18 @@ private:
       for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) corner_face_[size_t(k)] = f;
     group_corners_by_edge();
     pair_edges();
-    LowestRootSets file_fan_sets = fans_joining_every_face();
-    const std::vector<int> file_fans = fans_per_vertex(file_fan_sets);
-    file_fan_sets = LowestRootSets(0);
+    std::vector<int> file_fans;  // without fins, every edge's faces are paired: the file's fans are the final ones
+    if (!fin_edges_.empty()) {
+      LowestRootSets file_fan_sets = fans_joining_every_face();
+      file_fans = fans_per_vertex(file_fan_sets);
+    }
     LowestRootSets fans = fans_of_pairs();
     while (cut_faces_meeting_again(fans)) fans = fans_of_pairs();
     for (const int e : fin_edges_)
       for (int i = edge_offsets_[size_t(e)]; i < edge_offsets_[size_t(e) + 1]; ++i)
         report_.fin_faces += pair_[size_t(edge_corners_[size_t(i)])] < 0;
     const std::vector<int> final_fans = fans_per_vertex(fans);
+    if (fin_edges_.empty()) file_fans = final_fans;
     std::vector<int> fan_vertex(n_corners, -1);  // per fan (its root corner): the vertex it gets
     std::vector<char> claimed(soup_.positions.size(), 0);
     for (size_t k = 0; k < n_corners; ++k) {

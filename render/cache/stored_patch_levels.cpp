@@ -6,7 +6,7 @@
 
 #include "render/gl/compute_limits.h"
 #include "render/gl/gl_context.h"
-#include "render/pipeline/gpu_layout.h"
+#include "render/gl/gpu_layout.h"
 #include "shaders/embedded_shaders.h"
 
 namespace gps {

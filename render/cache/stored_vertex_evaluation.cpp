@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "render/gl/gl_context.h"
-#include "render/pipeline/gpu_layout.h"
+#include "render/gl/gpu_layout.h"
 #include "shaders/embedded_shaders.h"
 
 namespace gps {

@@ -7,7 +7,7 @@
 #include "render/gl/compute_limits.h"
 #include "shaders/embedded_shaders.h"
 #include "render/gl/gl_context.h"
-#include "render/pipeline/gpu_layout.h"
+#include "render/gl/gpu_layout.h"
 
 namespace gps {
 

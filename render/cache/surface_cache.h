@@ -42,7 +42,7 @@
 #include "render/cache/stored_vertex_evaluation.h"
 #include "render/cache/stored_vertex_weld.h"
 #include "render/cache/surface_blocks.h"
-#include "render/pipeline/normalised_frame.h"
+#include "render/gl/normalised_frame.h"
 #include "render/gl/gl_object.h"
 
 namespace gps {
@@ -150,7 +150,7 @@ public:
   /// Their captured copies, brought up to date first (copy_back_evaluated()). Positions in world
   /// coordinates: the stored ones lie in the frame of set_frame().
   TriangleMesh stored_triangles();
-  /// The frame the captured positions lie in (render/pipeline/normalised_frame.h).
+  /// The frame the captured positions lie in (render/gl/normalised_frame.h).
   void set_frame(const NormalisedFrame& frame) { frame_ = frame; }
   /// The distinct vertices a cached frame fetches (read back): where welded, the distinct indices;
   /// else three per triangle.

@@ -7,7 +7,7 @@
 #include <iterator>
 
 #include "render/gl/gl_context.h"
-#include "render/pipeline/gpu_layout.h"
+#include "render/gl/gpu_layout.h"
 #include "render/cache/surface_cache.h"
 
 namespace gps {

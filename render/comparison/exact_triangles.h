@@ -2,7 +2,7 @@
 // The GPU's own tessellation with the CPU's exact values (`gpsurf render --exact`).
 #include "core/mesh/covariance_mesh.h"
 #include "core/evaluation/triangle_mesh.h"
-#include "render/pipeline/draw_options.h"
+#include "render/gl/draw_options.h"
 #include "view/camera.h"
 
 namespace gps {

@@ -5,7 +5,7 @@
 
 #include "core/mesh/linalg.h"
 #include "core/evaluation/triangle_mesh.h"
-#include "render/pipeline/draw_options.h"
+#include "render/gl/draw_options.h"
 #include "view/camera.h"
 
 namespace gps {

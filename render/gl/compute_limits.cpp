@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/support/error.h"
-#include "render/pipeline/gpu_layout.h"
+#include "render/gl/gpu_layout.h"
 
 namespace gps {
 

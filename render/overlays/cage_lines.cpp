@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "render/pipeline/draw_options.h"
+#include "render/gl/draw_options.h"
 #include "render/gl/gl_context.h"
 #include "shaders/embedded_shaders.h"
 

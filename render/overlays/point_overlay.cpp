@@ -7,7 +7,7 @@
 #include "core/support/error.h"
 #include "render/gl/gl_context.h"
 #include "render/overlays/distance_ramp.h"
-#include "render/pipeline/draw_options.h"
+#include "render/gl/draw_options.h"
 #include "shaders/embedded_shaders.h"
 
 namespace gps {

@@ -9,7 +9,7 @@
 #include "render/gl/gl_object.h"
 #include "render/gl/render_target.h"
 #include "render/gl/shader_program.h"
-#include "render/pipeline/normalised_frame.h"
+#include "render/gl/normalised_frame.h"
 #include "view/camera.h"
 
 namespace gps {

@@ -8,7 +8,7 @@
 
 #include "core/plans/patch_plans.h"
 #include "render/gl/shader_program.h"
-#include "render/pipeline/point_precision.h"
+#include "render/gl/point_precision.h"
 
 namespace gps {
 

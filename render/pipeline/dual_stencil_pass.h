@@ -4,7 +4,7 @@
 // or over the lists PlanBuffers::upload_edit left; dispatches split to the device's work-group
 // count limit (render/gl/compute_limits.h).
 #include "render/pipeline/plan_buffers.h"
-#include "render/pipeline/point_precision.h"
+#include "render/gl/point_precision.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "core/plans/plan_builder.h"
-#include "render/pipeline/draw_options.h"
-#include "render/pipeline/point_precision.h"
+#include "render/gl/draw_options.h"
+#include "render/gl/point_precision.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/query_ring.h"
 #include "render/gl/shader_program.h"

@@ -1,9 +1,9 @@
 #pragma once
 // The GPU tables of a planned surface (docs/design.md §2): core's plan and stencil tables (built outside
 // the renderer, core/plans/planned_surface.h) as shader storage buffers at the bindings of
-// render/pipeline/gpu_layout.h, with the base Gaussians, the plan points the compute passes write and an
+// render/gl/gpu_layout.h, with the base Gaussians, the plan points the compute passes write and an
 // edit's lists of changed vertices and stencil rows. The plan points and base Gaussians are float or
-// double (render/pipeline/point_precision.h).
+// double (render/gl/point_precision.h).
 #include <array>
 #include <cstddef>
 #include <functional>
@@ -12,8 +12,8 @@
 #include "core/mesh/covariance_mesh.h"
 #include "core/plans/plan_builder.h"
 #include "render/gl/gl_object.h"
-#include "render/pipeline/gpu_layout.h"
-#include "render/pipeline/point_precision.h"
+#include "render/gl/gpu_layout.h"
+#include "render/gl/point_precision.h"
 
 namespace gps {
 

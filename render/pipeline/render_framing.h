@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
-#include "render/pipeline/draw_options.h"
+#include "render/gl/draw_options.h"
 #include "view/camera.h"
 
 namespace gps {

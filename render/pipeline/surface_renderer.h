@@ -4,7 +4,7 @@
 // and apply the stencils (render/pipeline/dual_stencil_pass.h); per frame GL_PATCHES with tessellation
 // shaders evaluate the limit surface (render/pipeline/patch_draw.h), or the surface cache redraws stored
 // triangles (render/cache/surface_cache.h), shaded by MatCap; overlays of ellipsoids and the base mesh
-// (render/overlays/cage_lines.h); static triangles as the benchmark floor (render/comparison/static_triangles.h).
+// (render/overlays/cage_lines.h); static triangles as the benchmark floor (render/pipeline/static_triangles.h).
 #include <glm/glm.hpp>
 #include <memory>
 #include <utility>
@@ -17,7 +17,7 @@
 #include "view/camera.h"
 #include "render/overlays/cage_lines.h"
 #include "render/pipeline/corner_limit_pass.h"
-#include "render/pipeline/draw_options.h"
+#include "render/gl/draw_options.h"
 #include "render/pipeline/dual_stencil_pass.h"
 #include "render/overlays/ellipsoid_overlay.h"
 #include "render/gl/gl_object.h"
@@ -26,10 +26,10 @@
 #include "render/image/image.h"
 #include "render/pipeline/patch_draw.h"
 #include "render/pipeline/plan_buffers.h"
-#include "render/pipeline/point_precision.h"
+#include "render/gl/point_precision.h"
 #include "render/gl/render_target.h"
 #include "render/gl/shader_program.h"
-#include "render/comparison/static_triangles.h"
+#include "render/pipeline/static_triangles.h"
 #include "render/cache/stored_patch_levels.h"
 #include "render/cache/stored_vertex_evaluation.h"
 #include "render/cache/surface_cache.h"
@@ -45,7 +45,7 @@ public:
 
   /// New topology: uploads the tables of `surface` (built by core for this mesh; the renderer keeps
   /// it for its tables and rows_reading), then a full compute pass, with plan points in the precision
-  /// the mesh's Gaussians need (render/pipeline/point_precision.h). Throws gps::Error, before
+  /// the mesh's Gaussians need (render/gl/point_precision.h). Throws gps::Error, before
   /// anything changes, where the tables exceed the device's storage block size or the driver
   /// refuses the double programs.
   void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface) {
@@ -101,7 +101,7 @@ public:
   DrawStatistics last_statistics();
 
   const SurfaceTables& tables() const;
-  /// The frame the GPU evaluates the mesh in, fixed by set_mesh (render/pipeline/normalised_frame.h).
+  /// The frame the GPU evaluates the mesh in, fixed by set_mesh (render/gl/normalised_frame.h).
   const NormalisedFrame& frame() const { return frame_; }
   /// The precision of the plan points, as the mesh's Gaussians need it.
   PointPrecision point_precision() const { return buffers_.precision(); }

@@ -1,4 +1,4 @@
-// The GPU draws a mesh in a normalised frame (render/pipeline/normalised_frame.h): the torus scaled
+// The GPU draws a mesh in a normalised frame (render/gl/normalised_frame.h): the torus scaled
 // far down or up, or moved far from the origin, renders the image it renders at scale 1, and its
 // position AOV is that render's mapped by the same affine map, within float precision.
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // evaluator at the same (patch, u, v). Σ⁻¹ is inverted in double before its upload
 // (render/pipeline/plan_buffers.cpp): inverted in float, a needle of condition 1e5 lost its thin
 // directions and the surface spiked out of the frame. Past condition 1e6 the GPU keeps the mesh's
-// plan points in double (render/pipeline/point_precision.h).
+// plan points in double (render/gl/point_precision.h).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -34,7 +34,7 @@ struct Errors {
 };
 
 // Every GPU tessellation vertex against the CPU evaluator given the mesh in the renderer's frame, as
-// the GPU is (render/pipeline/normalised_frame.h); positions relative to the diagonal. At condition
+// the GPU is (render/gl/normalised_frame.h); positions relative to the diagonal. At condition
 // 1e12 the CPU's own surface moves with the frame it is given (by 3.5e-6 of the diagonal and 0.011°
 // between the world's and the normalised one): its doubles are the GPU's reference. A vertex where
 // the CPU's own back map is degenerate (no positive definite q̂, or tangents nearly parallel) is

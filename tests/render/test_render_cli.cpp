@@ -122,7 +122,7 @@ double figure_after(const std::string& text, const std::string& label) {
 }
 
 // Needles of condition 1e12, past float sums of 9D points, render in double points
-// (render/pipeline/point_precision.h): a framed picture of the whole torus, whose position AOV is the
+// (render/gl/point_precision.h): a framed picture of the whole torus, whose position AOV is the
 // exact evaluator's (--exact) to the GPU's float output. They were a blank picture (exit 0), then
 // refused; no input framed on its surface is left that shows none of it.
 TEST(RenderCli, NeedlesOfCondition1e12RenderAsTheExactEvaluatorSays) {

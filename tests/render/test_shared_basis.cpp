@@ -1,4 +1,4 @@
-// core/patches/patch_basis.h, core/plans/plan_descent.h and render/pipeline/gpu_layout.h are one source for C++ and GLSL:
+// core/patches/patch_basis.h, core/plans/plan_descent.h and render/gl/gpu_layout.h are one source for C++ and GLSL:
 // compiled both ways, they must give the same results and constants (compute shaders against the
 // C++ functions and values), and the pipeline's shaders must take their bindings and work-group
 // size from them.
@@ -13,7 +13,7 @@
 #include "core/plans/planned_surface.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/gl_object.h"
-#include "render/pipeline/gpu_layout.h"
+#include "render/gl/gpu_layout.h"
 #include "render/gl/shader_program.h"
 #include "shaders/embedded_shaders.h"
 #include "tests/support/gl_fixture.h"

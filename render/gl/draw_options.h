@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "view/camera.h"
-#include "render/pipeline/normalised_frame.h"
+#include "render/gl/normalised_frame.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {

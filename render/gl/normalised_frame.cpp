@@ -1,4 +1,4 @@
-#include "render/pipeline/normalised_frame.h"
+#include "render/gl/normalised_frame.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "render/pipeline/draw_options.h"
+#include "render/gl/draw_options.h"
 
 namespace gps {
 

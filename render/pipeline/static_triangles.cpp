@@ -1,4 +1,4 @@
-#include "render/comparison/static_triangles.h"
+#include "render/pipeline/static_triangles.h"
 
 #include <glad/gl.h>
 

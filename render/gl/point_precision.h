@@ -1,5 +1,5 @@
 #pragma once
-// The precision the GPU keeps a mesh's plan points in (render/pipeline/gpu_layout.h, point_real): float,
+// The precision the GPU keeps a mesh's plan points in (render/gl/gpu_layout.h, point_real): float,
 // or double for a mesh with a Gaussian so thin (condition number of Σ past kDoublePointsCondition)
 // that float sums of 9D points no longer hold Σ⁻¹'s thin directions (docs/design.md §2). Double
 // points, sums and back map cost GPU time, and only such meshes pay it.

@@ -51,7 +51,7 @@ GPS_LAYOUT_CONST int kVec4PerPoint = 3;
 
 #ifdef GPS_GLSL
 // The scalars of the plan points and base Gaussians, their sums and the back map: float, or double
-// where `#define GPS_DOUBLE` precedes the shader (render/pipeline/point_precision.h); the surface's
+// where `#define GPS_DOUBLE` precedes the shader (render/gl/point_precision.h); the surface's
 // positions and normals leave the evaluation in float either way.
 #ifdef GPS_DOUBLE
 #define point_real double

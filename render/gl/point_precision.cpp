@@ -1,4 +1,4 @@
-#include "render/pipeline/point_precision.h"
+#include "render/gl/point_precision.h"
 
 #include <Eigen/Eigenvalues>
 
