@@ -52,8 +52,8 @@ std::string after_repair(PolygonSoup&& repaired, bool has_covariances, const std
     const ElementNumbering numbering = element_numbering_for(path, unmended);
     std::vector<std::string> lines = unmended.problems(numbering, true);
     if (lines.empty()) lines.push_back(e.what());
-    std::string out = "after --repair: refused for (vertices and faces numbered from " +
-                      std::to_string(numbering.base) + "):\n";
+    std::string out =
+        "after --repair: refused for (vertices and faces numbered from " + std::to_string(numbering.base) + "):\n";
     for (const std::string& line : lines) out += "  " + line + "\n";
     return out;
   }

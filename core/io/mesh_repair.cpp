@@ -159,7 +159,7 @@ private:
   std::vector<int> corner_face_;    // per corner: its face
   std::vector<int> edge_corners_, edge_offsets_;  // the corners of each edge (separate_fans)
   std::vector<int> fin_edges_;                    // the edges with more than two faces
-  std::vector<char> flip_;          // per face: reversed by orient()
+  std::vector<char> flip_;                        // per face: reversed by orient()
 
   PolygonTopology& faces() { return soup_.faces; }
   int file_face(int f) const { return face_origin_[size_t(f)]; }
@@ -503,7 +503,9 @@ private:
     return k == soup_.faces.offsets[size_t(f)] ? soup_.faces.offsets[size_t(f) + 1] - 1 : k - 1;
   }
   int next_corner(int k) const { return next_corner(corner_face_[size_t(k)], k); }
-  int lower_end(int k) const { return std::min(soup_.faces.verts[size_t(k)], soup_.faces.verts[size_t(next_corner(k))]); }
+  int lower_end(int k) const {
+    return std::min(soup_.faces.verts[size_t(k)], soup_.faces.verts[size_t(next_corner(k))]);
+  }
 
   // The corners sorted by their edge's (lower, higher) vertex, each edge's in corner order: two stable
   // counting passes (by the higher vertex, then the lower), linear whatever the valence.
@@ -658,7 +660,7 @@ private:
         const int k = edge_corners_[size_t(i)];
         const int at_k = fans.find(k), at_next = fans.find(next_corner(k));
         ends.push_back(soup_.faces.verts[size_t(k)] == lower_end(k) ? std::array{at_k, at_next, k}
-                                                                       : std::array{at_next, at_k, k});
+                                                                    : std::array{at_next, at_k, k});
       }
       std::sort(ends.begin(), ends.end());
       for (size_t i = 0, j = 0; i < ends.size(); i = j) {

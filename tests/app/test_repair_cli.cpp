@@ -416,8 +416,7 @@ TEST(RepairCli, InfoAfterRepairIsWhatRepairMakes) {
   ASSERT_EQ(tessellated.exit_code, 0) << tessellated.output;
   EXPECT_EQ(line_after(run_command(gpsurf("info " + dir.file("t.obj"))).output, "\nsurface: "), surface);
 
-  const auto subdivided =
-      run_command(gpsurf("subdivide " + in + " -o " + dir.file("s.ply") + " --levels 0 --repair"));
+  const auto subdivided = run_command(gpsurf("subdivide " + in + " -o " + dir.file("s.ply") + " --levels 0 --repair"));
   ASSERT_EQ(subdivided.exit_code, 0) << subdivided.output;
   const CovarianceMesh m = read_mesh(dir.file("s.ply"));
   EXPECT_EQ(std::to_string(m.n_vertices()), vertices);

@@ -271,8 +271,8 @@ TEST(MeshRepair, FinFaceConnectedThroughOtherEdgesIsSeparated) {
   EXPECT_EQ(f[0], faces[0]) << "the triangle's fans come first: it keeps vertices 0 and 1";
   const std::map<int, int> copy = {{0, 6}, {1, 5}, {2, 2}, {3, 3}};  // the tetrahedron on their copies
   for (size_t i = 0; i < tetrahedron.size(); ++i)
-    EXPECT_EQ(f[i + 1], (std::vector<int>{copy.at(tetrahedron[i][0]), copy.at(tetrahedron[i][1]),
-                                          copy.at(tetrahedron[i][2])}));
+    EXPECT_EQ(f[i + 1],
+              (std::vector<int>{copy.at(tetrahedron[i][0]), copy.at(tetrahedron[i][1]), copy.at(tetrahedron[i][2])}));
   EXPECT_EQ(s.positions[5], p[1]);
   EXPECT_EQ(s.positions[6], p[0]);
   EXPECT_EQ(s.positions.size(), 7u);
