@@ -7,6 +7,7 @@
 #include "app/commands.h"
 #include "app/naming_input.h"
 #include "app/repair_arguments.h"
+#include "app/terminal_progress.h"
 #include "core/fitting/mesh_simplification.h"
 #include "core/fitting/surface_distance.h"
 #include "core/io/mesh_io.h"
@@ -19,7 +20,7 @@ void add_simplify_command(CLI::App& app) {
     size_t vertices = 0;
     double ratio = 0, bias = 0.05, max_normal_deviation = 45;
     int level = 8;
-    bool ascii = false;
+    bool ascii = false, quiet = false;
     RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
@@ -45,12 +46,14 @@ void add_simplify_command(CLI::App& app) {
                                 "lower where that would make more than 2 million triangles)")
                     ->transform(integer_in(0, 64));
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
+  cmd->add_flag("-q,--quiet", args->quiet, "print only errors (no report, no progress bar)");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args, vertices, ratio, level] {
     if (vertices->count() == 0 && ratio->count() == 0) throw usage_error("simplify: give --vertices N or --ratio R");
     // Simplifying uses the input's faces only: no covariances inferred for it.
-    const CovarianceMesh input = read_mesh_repairing(args->input, args->repair,
-                                                     ImportOptions{.covariance = ImportOptions::Covariance::isotropic});
+    const CovarianceMesh input =
+        read_mesh_repairing(args->input, args->repair, ImportOptions{.covariance = ImportOptions::Covariance::isotropic},
+                            args->quiet);
     SimplifyOptions options;
     options.bias = args->bias;
     options.max_normal_deviation_degrees = args->max_normal_deviation;
@@ -59,8 +62,12 @@ void add_simplify_command(CLI::App& app) {
     if (options.target_vertices < 4)
       throw usage_error(escaped(args->input) + ": --ratio " + std::to_string(args->ratio) +
                         " keeps fewer than 4 of its " + std::to_string(input.n_vertices()) + " vertices");
+    TerminalProgress progress("simplifying", args->quiet);
+    options.progress = progress.report();
     const SimplifiedMesh s = naming_input(args->input, [&] { return simplify_mesh(input, options); });
+    progress.finish();
     write_mesh(args->output, s.mesh, !args->ascii);
+    if (args->quiet) return;
     if (s.triangulated) std::cout << "fanned the faces of more than 3 sides into triangles\n";
     std::cout << "simplified " << s.input_vertices << " vertices, " << s.input_triangles << " triangles to "
               << s.mesh.n_vertices() << " vertices, " << s.mesh.n_faces() << " triangles";

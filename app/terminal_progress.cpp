@@ -43,6 +43,12 @@ ProgressReport TerminalProgress::report() {
   };
 }
 
+void TerminalProgress::clear() {
+  if (!shown_ || last_drawn_ < 0) return;
+  out_ << "\r" << std::string(drawn_width_, ' ') << "\r" << std::flush;
+  last_drawn_ = -1;
+}
+
 void TerminalProgress::finish() {
   if (!shown_ || finished_) return;
   last_drawn_ = clock_();
@@ -56,8 +62,10 @@ void TerminalProgress::draw(double fraction) {
   const int filled = int(std::floor(fraction * kBarWidth));
   char numbers[64];
   std::snprintf(numbers, sizeof numbers, "] %3d%% %6.1f s", int(std::floor(fraction * 100)), last_drawn_ - start_);
-  out_ << "\r" << stage_ << " [" << std::string(size_t(filled), '#') << std::string(size_t(kBarWidth - filled), ' ')
-       << numbers << std::flush;
+  const std::string line = stage_ + " [" + std::string(size_t(filled), '#') +
+                           std::string(size_t(kBarWidth - filled), ' ') + numbers;
+  out_ << "\r" << line << std::flush;
+  drawn_width_ = line.size();
 }
 
 }  // namespace gps

@@ -29,6 +29,9 @@ public:
   void update(double fraction);
   /// A core ProgressReport that updates this bar and never asks the work to stop.
   ProgressReport report();
+  /// Blanks the bar's line, for a line of other output to take its place (a terminal shows stdout and
+  /// stderr together); the next update draws the bar again at once.
+  void clear();
   /// Draws the bar at 100% and ends its line; later calls do nothing.
   void finish();
 
@@ -39,7 +42,8 @@ private:
   std::ostream& out_;
   bool shown_;
   Clock clock_;
-  double start_, last_drawn_ = -1;  // seconds by clock_; −1: not drawn yet
+  double start_, last_drawn_ = -1;  // seconds by clock_; −1: not drawn yet (or cleared)
+  size_t drawn_width_ = 0;           // of the line last drawn
   bool finished_ = false;
 };
 

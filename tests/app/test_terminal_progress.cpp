@@ -53,6 +53,26 @@ TEST(TerminalProgress, EndsTheLineOfWorkThatStoppedShort) {
   EXPECT_EQ(never_drawn.str(), "");
 }
 
+TEST(TerminalProgress, ClearsItsLineForOtherOutputAndRedrawsAtOnce) {
+  std::ostringstream out;
+  double now = 0;
+  {
+    TerminalProgress bar("fitting", out, true, [&] { return now; });
+    bar.update(0.1);
+    const size_t width = out.str().size() - 1;  // less the '\r'
+    bar.clear();
+    EXPECT_EQ(out.str().substr(width + 1), "\r" + std::string(width, ' ') + "\r");
+    out.str("");
+    bar.clear();  // nothing drawn since
+    EXPECT_EQ(out.str(), "");
+    bar.update(0.2);  // at the same moment, yet drawn: the line was blank
+    EXPECT_EQ(out.str(), "\rfitting [######                        ]  20%    0.0 s");
+    out.str("");
+    bar.clear();
+  }  // a blank line needs no newline
+  EXPECT_EQ(out.str().find('\n'), std::string::npos);
+}
+
 TEST(TerminalProgress, WritesNothingWhereNotShown) {
   std::ostringstream out;
   double now = 0;
