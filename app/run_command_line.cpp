@@ -3,6 +3,7 @@
 #include <iostream>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "core/support/quoted_text.h"
 #include "core/support/error.h"
@@ -21,13 +22,45 @@ std::string input_of(const CLI::App& command) {
   return command.get_name();
 }
 
+// Whether `app` or one of its subcommands has the long option `name` ("--weld") taking a value.
+bool takes_value(const CLI::App& app, const std::string& name) {
+  if (const CLI::Option* option = app.get_option_no_throw(name); option && option->get_type_size_max() > 0)
+    return true;
+  for (const CLI::App* command : app.get_subcommands({}))
+    if (takes_value(*command, name)) return true;
+  return false;
+}
+
+// The arguments with "--name=" (an empty value) as "--name" "": CLI11 drops an empty value after '='
+// and reports the option's value as missing, in its own words; as two arguments the value reaches the
+// option's check, which names the option and what is wrong with the text.
+std::vector<std::string> empty_values_split(const CLI::App& app, int argc, char** argv) {
+  std::vector<std::string> args;
+  bool options_end = false;
+  for (int i = 0; i < argc; ++i) {
+    const std::string arg = argv[i];
+    options_end = options_end || arg == "--";
+    if (!options_end && i > 0 && arg.size() > 3 && arg.starts_with("--") && arg.ends_with("=") &&
+        takes_value(app, arg.substr(0, arg.size() - 1))) {
+      args.push_back(arg.substr(0, arg.size() - 1));
+      args.emplace_back();
+    } else {
+      args.push_back(arg);
+    }
+  }
+  return args;
+}
+
 }  // namespace
 
 int run_command_line(CLI::App& app, int argc, char** argv) {
   // Every message is escaped once more here, so that whatever it quotes it stays one harmless line.
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return "gpsurf: " + escaped(e.what()) + "\n"; });
   try {
-    app.parse(argc, argv);
+    std::vector<std::string> args = empty_values_split(app, argc, argv);
+    std::vector<char*> arg_pointers;
+    for (std::string& arg : args) arg_pointers.push_back(arg.data());
+    app.parse(int(arg_pointers.size()), arg_pointers.data());
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);  // prints help or the parse error
     return code == 0 ? 0 : 2;

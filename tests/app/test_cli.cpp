@@ -145,7 +145,8 @@ TEST(Cli, IgnoredOptionsAndRangesAreShortErrors) {
 }
 
 // Option values are read as written, in full and as the type they become: an empty text is not 0,
-// 0x10 not 16, 010 not 8, 180.0001 is not shown as 180, and the message is ours, quoting the text.
+// 0x10 not 16, 010 not 8, 180.0001 is not shown as 180, and the message is ours, quoting the text
+// (an empty value after '=' too, which CLI11 alone reports as a missing value).
 TEST(Cli, OptionNumbersAreReadExactlyAsWritten) {
   test::TempDir dir;
   const std::string cube = dir.file("cube.ply"), out = dir.file("x.ply");
@@ -153,6 +154,18 @@ TEST(Cli, OptionNumbersAreReadExactlyAsWritten) {
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
            {"infer " + cube + " -o " + out + " --crease-angle ''",
             "--crease-angle: expected a number from 0 to 180, got ''"},
+           {"infer " + cube + " -o " + out + " --crease-angle=",
+            "--crease-angle: expected a number from 0 to 180, got ''"},
+           {"infer " + cube + " -o " + out + " --crease-angle=abc",
+            "--crease-angle: expected a number from 0 to 180, got 'abc'"},
+           {"infer " + cube + " -o " + out + " --crease-angle=181",
+            "--crease-angle: expected a number from 0 to 180, got '181'"},
+           {"infer " + cube + " -o " + out + " --crease-angle=nan",
+            "--crease-angle: expected a number from 0 to 180, got 'nan'"},
+           {"info " + cube + " --weld=", "--weld: expected a number >= 0, got ''"},
+           {"simplify " + cube + " -o " + out + " --ratio=", "--ratio: expected a number > 0 and at most 1, got ''"},
+           {"simplify " + cube + " -o " + out + " --vertices=",
+            "--vertices: expected an integer from 4 to 1099511627776, got ''"},
            {"infer " + cube + " -o " + out + " --crease-angle 180.0001",
             "--crease-angle: expected a number from 0 to 180, got '180.0001'"},
            {"infer " + cube + " -o " + out + " --crease-angle 0x10",
