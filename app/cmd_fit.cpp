@@ -1,5 +1,6 @@
 // gpsurf fit COARSE --target DENSE -o OUT: the coarse covariance mesh's means and covariances moved so
 // that its GPS limit surface fits the dense mesh's points (core/fitting/limit_fit.h).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -9,6 +10,7 @@
 #include "app/naming_input.h"
 #include "app/plan_arguments.h"
 #include "app/repair_arguments.h"
+#include "app/terminal_progress.h"
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/surface_distance.h"
 #include "core/io/mesh_io.h"
@@ -20,7 +22,7 @@ void add_fit_command(CLI::App& app) {
     std::string coarse, target, output;
     int iterations = 10, level = 8;
     double smoothness = 1e-5, tolerance = 0, time = INFINITY;
-    bool plain = false, ascii = false;
+    bool plain = false, ascii = false, quiet = false;
     PlanArguments plans;
     RepairArguments repair;
   };
@@ -51,10 +53,11 @@ void add_fit_command(CLI::App& app) {
                                 "default 8, lower where that would make more than 2 million triangles)")
                     ->transform(integer_in(0, 64));
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
+  cmd->add_flag("-q,--quiet", args->quiet, "print only errors (no iterations, no report, no progress bar)");
   add_plan_arguments(cmd, args->plans);
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args, level] {
-    const CovarianceMesh coarse = read_mesh_repairing(args->coarse, args->repair, {}, false, true);
+    const CovarianceMesh coarse = read_mesh_repairing(args->coarse, args->repair, {}, args->quiet, true);
     const std::vector<Vec3> targets = read_points(args->target);  // whatever its faces
     FitOptions options;
     options.iterations = args->iterations;
@@ -63,16 +66,26 @@ void add_fit_command(CLI::App& app) {
     options.tolerance = args->tolerance;
     options.time_budget = args->time;
     options.plans = args->plans.options();
-    options.progress = [](const FitIteration& it) {
+    // The bar: the larger of the iterations and the time budget spent; it gives way to each iteration's line.
+    TerminalProgress bar("fitting", args->quiet);
+    options.progress = [&](const FitIteration& it) {
+      if (args->quiet) return;
+      bar.clear();
       std::printf("iteration %d: rms %.3e, max %.3e (of the diagonal), %.2f s\n", it.iteration, it.error.relative_rms(),
                   it.error.relative_max(), it.seconds);
       std::fflush(stdout);
+      const double iterations = args->iterations > 0 ? double(it.iteration) / args->iterations : 1.0;
+      bar.update(std::max(iterations, it.seconds / args->time));
     };
-    std::cout << "fitting " << coarse.n_vertices() << " vertices" << (args->plain ? " (plain)" : "") << " to "
-              << targets.size() << " points\n";
+    if (!args->quiet)
+      std::cout << "fitting " << coarse.n_vertices() << " vertices" << (args->plain ? " (plain)" : "") << " to "
+                << targets.size() << " points\n" << std::flush;
     const FitResult result = naming_input(args->coarse, [&] { return fit_limit_surface(coarse, targets, options); });
-    std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop) << "\n";
+    bar.finish();
+    if (!args->quiet)
+      std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop) << "\n";
     write_mesh(args->output, result.mesh, !args->ascii);
+    if (args->quiet) return;
     std::cout << "wrote " << args->output << "\n";
     if (args->level == 0) return;
     const LimitTriangles limit = naming_input(args->output, [&] {

@@ -65,5 +65,37 @@ TEST(ProgressCli, SimplifyDrawsABarOnATerminalOnly) {
   EXPECT_EQ(count(piped.output, "simplifying"), 0);
 }
 
+TEST(ProgressCli, FitDrawsABarBetweenItsIterationLines) {
+  if (!has_script()) GTEST_SKIP() << "no `script` to run a pseudo-terminal";
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample icosphere --size 1280 -o " + dir.file("ico.ply"))).exit_code, 0);
+  ASSERT_EQ(run_command(gpsurf("simplify " + dir.file("ico.ply") + " -o " + dir.file("c.ply") +
+                               " --vertices 100 --level 0"))
+                .exit_code,
+            0);
+  const std::string args =
+      "fit " + dir.file("c.ply") + " --target " + dir.file("ico.ply") + " -o " + dir.file("f.ply") + " --iterations 2";
+  const auto shown = on_terminal(args);
+  ASSERT_EQ(shown.exit_code, 0) << shown.output;
+  // Each iteration's line takes the bar's place, blanked, and the bar is drawn again below it.
+  EXPECT_NE(shown.output.find("\rfitting [                              ]   0%"), std::string::npos) << shown.output;
+  EXPECT_NE(shown.output.find("\rfitting [###############               ]  50%"), std::string::npos) << shown.output;
+  const size_t half = shown.output.find("]  50%");
+  EXPECT_LT(shown.output.find("iteration 1:"), half);
+  EXPECT_GT(shown.output.find("iteration 2:"), half);
+  EXPECT_GT(shown.output.find("] 100%"), shown.output.find("iteration 2:"));
+  EXPECT_EQ(count(shown.output, "iteration "), 3) << shown.output;
+
+  const auto quiet = on_terminal(args + " -q");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.output;
+  EXPECT_EQ(quiet.output, "");
+
+  std::string error;
+  const auto piped = with_stderr_to_file(dir, args, error);
+  ASSERT_EQ(piped.exit_code, 0) << piped.output;
+  EXPECT_EQ(error, "");
+  EXPECT_EQ(count(piped.output, "iteration "), 3) << piped.output;
+}
+
 }  // namespace
 }  // namespace gps
