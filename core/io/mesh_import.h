@@ -1,7 +1,7 @@
 #pragma once
 // Plain polygon meshes from OBJ, OFF and STL (ASCII or binary); covariances are left as identity
 // for the caller to infer (core/mesh/inference.h). Errors name `source` and show text from the file
-// as core/io/quoted_text.h does.
+// as core/support/quoted_text.h does.
 #include <string>
 #include <string_view>
 

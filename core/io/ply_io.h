@@ -24,7 +24,7 @@ PlyContents read_ply(const std::string& path);
 void check_ply_head(std::string_view head, size_t size);
 
 /// Parses PLY data already in memory; `source` names it in errors, which show text from the file as
-/// core/io/quoted_text.h does.
+/// core/support/quoted_text.h does.
 PlyContents parse_ply(const std::string& data, const std::string& source);
 /// The same taking the data over, freed once parsed and before the mesh is built (pass it moved);
 /// `has_covariances` says whether the file gave them.

@@ -154,7 +154,7 @@ TEST(OperationList, NumbersOutsideTheirTypeAreRefusedNamingTheElement) {
   }
 }
 
-// Text from the list is cut in messages as core/io/quoted_text.h documents.
+// Text from the list is cut in messages as core/support/quoted_text.h documents.
 TEST(OperationList, MessagesCutTheTextTheyQuote) {
   const std::string long_name(100000, 'q');
   for (const std::string& text :

@@ -1,4 +1,4 @@
-// Text from files and paths in messages (core/io/quoted_text.h): escaped, quoted and cut.
+// Text from files and paths in messages (core/support/quoted_text.h): escaped, quoted and cut.
 #include "core/support/quoted_text.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // What the readers put in their messages: bytes from the file escaped and long tokens cut
-// (core/io/quoted_text.h), the path as given but on one line, and the true cause of a refusal.
+// (core/support/quoted_text.h), the path as given but on one line, and the true cause of a refusal.
 #include <gtest/gtest.h>
 
 #include <filesystem>
