@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "app/cli_checks.h"
+#include "app/terminal_progress.h"
 #include "core/support/quoted_text.h"
 
 namespace gps {
@@ -24,10 +25,13 @@ void add_repair_arguments(CLI::App* cmd, RepairArguments& arguments) {
 
 CovarianceMesh read_mesh_repairing(const std::string& path, const RepairArguments& arguments,
                                    const ImportOptions& options, bool quiet, bool name_file) {
-  const ImportOptions o = arguments.import_options(options);
+  ImportOptions o = arguments.import_options(options);
+  TerminalProgress bar("repairing", quiet || !o.repair);
+  o.repair_progress = bar.report();
   RepairReport report;
   std::vector<std::string> notes;
   CovarianceMesh mesh = read_mesh(path, o, &report, &notes);
+  bar.finish();
   print_reader_notes(notes);
   if (o.repair && !quiet) {
     const std::string prefix = "repair: " + (name_file ? escaped(path) + ": " : std::string());

@@ -19,7 +19,8 @@ struct RepairArguments {
 /// Adds --repair and --weld TOLERANCE to `cmd`.
 void add_repair_arguments(CLI::App* cmd, RepairArguments& arguments);
 
-/// read_mesh with the repair asked for; when repairing and not `quiet`, the report goes to stdout first
+/// read_mesh with the repair asked for; when repairing and not `quiet`, a progress bar on a terminal
+/// (TerminalProgress) while it works, and the report goes to stdout first
 /// ("repair: " and a line per step that changed something, or that nothing needed it), each line
 /// naming the file where `name_file` (a command that reads two). What the reader read leniently goes
 /// to stderr ("note: " and the note, which names the file).

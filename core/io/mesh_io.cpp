@@ -43,6 +43,7 @@ std::vector<Vec3> read_points(const std::string& path) {
 RepairOptions repair_options_for(const ImportOptions& options) {
   RepairOptions o;
   o.weld_tolerance = options.weld_tolerance;
+  o.progress = options.repair_progress;
   return o;
 }
 

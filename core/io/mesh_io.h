@@ -15,6 +15,7 @@ struct ImportOptions {
   // Repair of the faces as read, before the mesh is built and covariances inferred (core/io/mesh_repair.h).
   bool repair = false;
   double weld_tolerance = 1e-6;  // as a fraction of the bounding-box diagonal
+  ProgressReport repair_progress;  // the repair's (RepairOptions::progress)
 };
 
 /// Reads .ply (a covariance PLY keeps its covariances; a plain one gets them from `options`),

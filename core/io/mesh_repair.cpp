@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <iterator>
 #include <numeric>
 #include <tuple>
 #include <unordered_map>
@@ -135,13 +136,15 @@ public:
     std::iota(face_origin_.begin(), face_origin_.end(), 0);
     in_file_face_.assign(size_t(n), 0);
     for (const int v : soup_.faces.verts) in_file_face_[size_t(v)] = 1;
-    weld();
-    mend_repeated_corners();
-    drop_zero_area_faces();
-    drop_duplicate_faces();
-    separate_fans();
-    orient();
-    drop_isolated_vertices();
+    using Step = void (Repair::*)();
+    constexpr Step steps[] = {&Repair::weld,          &Repair::mend_repeated_corners, &Repair::drop_zero_area_faces,
+                              &Repair::drop_duplicate_faces, &Repair::separate_fans, &Repair::orient,
+                              &Repair::drop_isolated_vertices};
+    constexpr size_t n_steps = std::size(steps);
+    for (size_t k = 0; k <= n_steps; ++k) {
+      if (options_.progress && !options_.progress(double(k) / double(n_steps))) throw Cancelled();
+      if (k < n_steps) (this->*steps[k])();
+    }
     return report_;
   }
 

@@ -25,11 +25,13 @@
 #include <vector>
 
 #include "core/io/polygon_soup.h"
+#include "core/support/progress.h"
 
 namespace gps {
 
 struct RepairOptions {
   double weld_tolerance = 1e-6;  // vertices closer than this times the bounding-box diagonal are welded
+  ProgressReport progress;        // at the start and after each step; Cancelled leaves the soup part-repaired
 };
 
 /// How messages name a file's vertices and faces: numbered from `base` (1 in OBJ, 0 in PLY and OFF),

@@ -97,5 +97,29 @@ TEST(ProgressCli, FitDrawsABarBetweenItsIterationLines) {
   EXPECT_EQ(count(piped.output, "iteration "), 3) << piped.output;
 }
 
+TEST(ProgressCli, RepairDrawsABarBeforeItsReport) {
+  if (!has_script()) GTEST_SKIP() << "no `script` to run a pseudo-terminal";
+  test::TempDir dir;
+  // Two triangles of a square, each with its own corners: --repair welds the diagonal's.
+  const std::string soup = dir.write("soup.obj",
+                                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 4 5 6\n");
+  const std::string args = "tessellate " + soup + " -o " + dir.file("t.ply") + " --level 2 --repair";
+  const auto shown = on_terminal(args);
+  ASSERT_EQ(shown.exit_code, 0) << shown.output;
+  EXPECT_NE(shown.output.find("\rrepairing [                              ]   0%"), std::string::npos) << shown.output;
+  const size_t done = shown.output.find("\rrepairing [##############################] 100%");
+  ASSERT_NE(done, std::string::npos) << shown.output;
+  const size_t report = shown.output.find("repair: welded 4 coincident vertices into 2");
+  ASSERT_NE(report, std::string::npos) << shown.output;
+  EXPECT_GT(report, done);
+
+  std::string error;
+  const auto piped = with_stderr_to_file(dir, args, error);
+  ASSERT_EQ(piped.exit_code, 0) << piped.output;
+  EXPECT_EQ(error, "");
+  EXPECT_EQ(count(piped.output, "repairing"), 0) << piped.output;
+  EXPECT_NE(piped.output.find("repair: welded 4 coincident vertices into 2\n"), std::string::npos) << piped.output;
+}
+
 }  // namespace
 }  // namespace gps

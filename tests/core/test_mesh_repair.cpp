@@ -117,6 +117,30 @@ TEST(MeshRepair, UnweldedCubeIsWeldedClosed) {
   EXPECT_EQ(s.positions[0], corner(0) + Vec3(1e-9, 0, 0));
 }
 
+TEST(MeshRepair, ReportsProgressAfterEachStepAndStopsWhenAsked) {
+  std::vector<std::vector<int>> faces(kCubeFaces.begin(), kCubeFaces.end());
+  faces.push_back(faces[0]);  // a duplicate face for the repair to drop
+  const PolygonSoup input = soup_of(cube_positions(), faces);
+  PolygonSoup plain = input, watched = input;
+  std::vector<double> fractions;
+  RepairOptions options;
+  options.progress = [&](double f) {
+    fractions.push_back(f);
+    return true;
+  };
+  const RepairReport r = repair_polygon_soup(watched, options);
+  EXPECT_EQ(r.lines(), repair_polygon_soup(plain).lines());
+  EXPECT_EQ(watched.faces.n_faces(), 6);
+  ASSERT_EQ(fractions.size(), 8u);  // at the start and after each of the seven steps
+  for (size_t k = 0; k < fractions.size(); ++k) EXPECT_DOUBLE_EQ(fractions[k], double(k) / 7) << k;
+
+  int calls = 0;
+  options.progress = [&](double) { return ++calls < 3; };
+  PolygonSoup stopped = input;
+  EXPECT_THROW(repair_polygon_soup(stopped, options), Cancelled);
+  EXPECT_EQ(calls, 3);
+}
+
 TEST(MeshRepair, WeldToleranceIsSettable) {
   std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 1e-3, 0), Vec3(-1, 1, 0)};
   const PolygonSoup s = soup_of(p, {{0, 1, 2}, {0, 3, 4}});
