@@ -33,6 +33,7 @@
 #include "ui/input_events.h"
 #include "ui/inspector_panel.h"
 #include "ui/job_dialog.h"
+#include "ui/merge_distance.h"
 #include "ui/recent_files.h"
 #include "ui/repair_prompt.h"
 #include "ui/selection.h"
@@ -270,6 +271,7 @@ private:
   bool job_is_fit_ = false;     // the dialog open is Fit to…: once applied, its target is shown
   TargetPoints target_points_;  // the dense target shown as points, and their distances
   std::string popup_request_;   // a popup menu (Delete, Merge, Add) a key asked for
+  double merge_distance_ = kDefaultMergeDistance;  // the Merge menu's By distance (of the diagonal)
   std::string last_summary_;    // what the last operation did
 
   Clock::time_point frame_input_time_{}, last_frame_time_ = Clock::now();

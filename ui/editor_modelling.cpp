@@ -184,9 +184,13 @@ void EditorApp::draw_merge_items() {
   for (const auto& [label, point] : points)
     if (ImGui::MenuItem(label))
       run_operation("merge", [&s, point = point](const CovarianceMesh& m) { return merge_vertices(m, s, point); });
+  ImGui::Separator();
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+  ImGui::InputDouble("distance (of the diagonal)", &merge_distance_, 0.0, 0.0, "%.3g");
   if (ImGui::MenuItem("By distance"))
-    run_operation("merge by distance",
-                  [&s](const CovarianceMesh& m) { return weld_by_distance(m, s, 1e-4 * bounding_box_diagonal(m)); });
+    run_operation("merge by distance", [&s, fraction = merge_distance_](const CovarianceMesh& m) {
+      return merge_by_distance(m, s, fraction);
+    });
 }
 
 void EditorApp::draw_add_items() {
