@@ -15,7 +15,6 @@ namespace gps {
 namespace {
 
 using Faces = std::vector<std::vector<int>>;
-constexpr double pi = std::numbers::pi;
 
 CovarianceMesh isotropic_mesh(const std::vector<Vec3>& points, const Faces& faces, const std::string& name) {
   CovarianceMesh m = make_covariance_mesh(points, std::vector<Mat3>(points.size(), Mat3::Identity()), faces, name);
@@ -91,7 +90,9 @@ CovarianceMesh valence(int n) {
   const int k = 3;
   std::vector<Vec3> p = {{0, 0, 0}};
   std::vector<std::vector<int>> spoke(size_t(n), std::vector<int>(size_t(k + 1), 0));
-  const auto dir = [&](int s) { return Vec3(std::cos(2 * pi * s / n), std::sin(2 * pi * s / n), 0); };
+  const auto dir = [&](int s) {
+    return Vec3(std::cos(2 * std::numbers::pi * s / n), std::sin(2 * std::numbers::pi * s / n), 0);
+  };
   const auto lift = [&](Vec3 x) {
     x.z() = 0.4 * (1.0 - x.squaredNorm() / (2.0 * k * k));
     return x;
@@ -114,7 +115,7 @@ CovarianceMesh valence(int n) {
         else {
           id[size_t(a)][size_t(b)] = int(p.size());
           // Polar layout: radius max(a, b), angle between the two spokes, so the mesh is a disc.
-          const double angle = 2 * pi * (s + double(b) / (a + b)) / n;
+          const double angle = 2 * std::numbers::pi * (s + double(b) / (a + b)) / n;
           p.push_back(lift(std::max(a, b) * Vec3(std::cos(angle), std::sin(angle), 0)));
         }
       }
@@ -193,7 +194,8 @@ CovarianceMesh pawn(bool quads_only) {
   std::vector<Vec3> p = {{0, 0, 0}};
   for (const auto& [r, y] : profile)
     for (int k = 0; k < sectors; ++k)
-      p.emplace_back(r * std::cos(2 * pi * k / sectors), y, -r * std::sin(2 * pi * k / sectors));
+      p.emplace_back(r * std::cos(2 * std::numbers::pi * k / sectors), y,
+                     -r * std::sin(2 * std::numbers::pi * k / sectors));
   p.emplace_back(0, 1.11, 0);
   const int top = int(p.size()) - 1;
   const auto at = [&](int ring, int k) { return 1 + ring * sectors + (k % sectors); };

@@ -9,11 +9,10 @@ namespace gps {
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
-
 // A ring of n points of radius r at height y, counter-clockwise seen from +y.
 void add_ring(Shape& s, int n, double r, double y) {
-  for (int k = 0; k < n; ++k) s.points.emplace_back(r * std::cos(2 * pi * k / n), y, -r * std::sin(2 * pi * k / n));
+  for (int k = 0; k < n; ++k)
+    s.points.emplace_back(r * std::cos(2 * std::numbers::pi * k / n), y, -r * std::sin(2 * std::numbers::pi * k / n));
 }
 
 }  // namespace
@@ -88,7 +87,7 @@ Shape torus_shape(int around, int across, double ring, double tube) {
   Shape s;
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
-      const double a = 2 * pi * i / nu, b = 2 * pi * j / nv;
+      const double a = 2 * std::numbers::pi * i / nu, b = 2 * std::numbers::pi * j / nv;
       s.points.emplace_back((ring + tube * std::cos(b)) * std::cos(a), tube * std::sin(b),
                             (ring + tube * std::cos(b)) * std::sin(a));
     }
