@@ -6,6 +6,7 @@
 #include "app/repair_arguments.h"
 #include "app/naming_input.h"
 #include "app/plan_arguments.h"
+#include "app/terminal_progress.h"
 #include "core/io/mesh_io.h"
 #include "core/plans/planned_surface.h"
 #include "core/evaluation/tessellator.h"
@@ -17,7 +18,7 @@ void add_tessellate_command(CLI::App& app) {
     std::string input, output;
     int level = 8;
     PlanArguments plans;
-    bool ascii = false;
+    bool ascii = false, quiet = false;
     RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
@@ -28,13 +29,17 @@ void add_tessellate_command(CLI::App& app) {
   add_plan_arguments(cmd, args->plans);
   cmd->add_option("--level", args->level, "tessellation level per patch edge")->transform(integer_in(1, 64));
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
+  cmd->add_flag("-q,--quiet", args->quiet, "print only errors (no summary, no progress bar)");
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
-    const CovarianceMesh m = read_mesh_repairing(args->input, args->repair);
+    const CovarianceMesh m = read_mesh_repairing(args->input, args->repair, {}, args->quiet);
     const PlannedSurface surface = naming_input(args->input, [&] { return PlannedSurface(m, args->plans.options()); });
-    const TriangleMesh t =
-        naming_input(args->input, [&] { return tessellate(surface.tables().plans, surface.points(), args->level); });
+    TerminalProgress bar("tessellating", args->quiet);
+    const TriangleMesh t = naming_input(
+        args->input, [&] { return tessellate(surface.tables().plans, surface.points(), args->level, bar.report()); });
+    bar.finish();
     write_triangle_mesh(args->output, t, !args->ascii);
+    if (args->quiet) return;
     std::cout << "wrote " << args->output << " (" << (surface.scheme() == Scheme::loop ? "Loop, " : "Catmull-Clark, ")
               << surface.tables().plans.n_patches() << " patches, " << t.positions.size() << " vertices, "
               << t.triangles.size() << " triangles)\n";

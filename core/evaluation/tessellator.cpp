@@ -1,5 +1,6 @@
 #include "core/evaluation/tessellator.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <numeric>
@@ -76,12 +77,19 @@ BoundaryKey boundary_key(const PatchEdge& e, int step, int steps) {
   return {a, b, num / g, den / g};
 }
 
+// Tells `progress` that `patch` patches of `patches` are done, on every hundredth of them.
+void report_patches(const ProgressReport& progress, int patch, int patches) {
+  if (progress && patch % std::max(1, patches / 100) == 0 && !progress(double(patch) / patches)) throw Cancelled();
+}
+
 // Triangle patches: the points (i, j)/L, i + j ≤ L, of each patch's (u, v) triangle.
-TriangleMesh tessellate_triangles(const PatchPlans& plans, const std::vector<Dual>& points, int L) {
+TriangleMesh tessellate_triangles(const PatchPlans& plans, const std::vector<Dual>& points, int L,
+                                  const ProgressReport& progress) {
   TriangleMesh out;
   SharedSamples shared;
   std::vector<int> grid(size_t(L + 1) * size_t(L + 1), -1);
   for (int patch = 0; patch < plans.n_patches(); ++patch) {
+    report_patches(progress, patch, plans.n_patches());
     const int* corner = &plans.patch_corner_points[size_t(3 * patch)];
     for (int j = 0; j <= L; ++j)
       for (int i = 0; i + j <= L; ++i) {
@@ -114,12 +122,13 @@ TriangleMesh tessellate_triangles(const PatchPlans& plans, const std::vector<Dua
 
 }  // namespace
 
-TriangleMesh tessellate(const PatchPlans& plans, const std::vector<Dual>& points, int level) {
+TriangleMesh tessellate(const PatchPlans& plans, const std::vector<Dual>& points, int level,
+                        const ProgressReport& progress) {
   if (level < 1 || level > 64) throw usage_error("tessellation level must be 1..64, got " + std::to_string(level));
   check_output_size(tessellation_size(plans, level),
                     "tessellating " + std::to_string(plans.n_patches()) + " patches at level " + std::to_string(level),
                     "triangles", "use a lower level");
-  if (plans.shape == PatchShape::triangle) return tessellate_triangles(plans, points, level);
+  if (plans.shape == PatchShape::triangle) return tessellate_triangles(plans, points, level, progress);
   TriangleMesh out;
   // Level L is L segments along an edge of the mesh, as on the GPU (shaders/patch_tesc.glsl): a
   // split face's half-size patches take L/2 and a quad's edge beside two of them L; for an odd L,
@@ -129,6 +138,7 @@ TriangleMesh tessellate(const PatchPlans& plans, const std::vector<Dual>& points
   std::map<BoundaryKey, int> shared;
   std::vector<int> grid;
   for (int patch = 0; patch < plans.n_patches(); ++patch) {
+    report_patches(progress, patch, plans.n_patches());
     const auto sample = [&](double u, double v) { return append_sample(out, plans, points, patch, u, v); };
     PatchEdge edges[4];
     for (int k = 0; k < 4; ++k) edges[k] = patch_edge(plans, patch, k);

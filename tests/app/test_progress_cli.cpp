@@ -97,7 +97,7 @@ TEST(ProgressCli, FitDrawsABarBetweenItsIterationLines) {
   EXPECT_EQ(count(piped.output, "iteration "), 3) << piped.output;
 }
 
-TEST(ProgressCli, RepairDrawsABarBeforeItsReport) {
+TEST(ProgressCli, RepairAndTessellateDrawTheirBars) {
   if (!has_script()) GTEST_SKIP() << "no `script` to run a pseudo-terminal";
   test::TempDir dir;
   // Two triangles of a square, each with its own corners: --repair welds the diagonal's.
@@ -112,12 +112,16 @@ TEST(ProgressCli, RepairDrawsABarBeforeItsReport) {
   const size_t report = shown.output.find("repair: welded 4 coincident vertices into 2");
   ASSERT_NE(report, std::string::npos) << shown.output;
   EXPECT_GT(report, done);
+  const size_t tessellated = shown.output.find("\rtessellating [##############################] 100%");
+  ASSERT_NE(tessellated, std::string::npos) << shown.output;
+  EXPECT_GT(tessellated, report);
+  EXPECT_EQ(on_terminal(args + " --quiet").output, "");
 
   std::string error;
   const auto piped = with_stderr_to_file(dir, args, error);
   ASSERT_EQ(piped.exit_code, 0) << piped.output;
   EXPECT_EQ(error, "");
-  EXPECT_EQ(count(piped.output, "repairing"), 0) << piped.output;
+  EXPECT_EQ(count(piped.output, "repairing") + count(piped.output, "tessellating"), 0) << piped.output;
   EXPECT_NE(piped.output.find("repair: welded 4 coincident vertices into 2\n"), std::string::npos) << piped.output;
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include "core/support/error.h"
@@ -44,6 +45,29 @@ TEST(Tessellator, OpenMeshKeepsItsBoundaryAndNormalsPointOutward) {
   for (size_t i = 0; i < c.positions.size(); ++i) EXPECT_GT(c.normals[i].dot(c.positions[i]), 0.0);
   EXPECT_THROW(tessellate(cube.tables.plans, cube.points, 0), Error);
   EXPECT_THROW(tessellate(cube.tables.plans, cube.points, 65), Error);
+}
+
+TEST(Tessellator, ReportsTheSharesOfPatchesDoneAndStopsWhenAsked) {
+  for (const char* name : {"torus", "icosphere"}) {  // quad and triangle patches
+    const test::PlannedMesh p(make_sample(name), 3);
+    const int patches = p.tables.plans.n_patches();
+    std::vector<double> fractions;
+    const TriangleMesh t = tessellate(p.tables.plans, p.points, 3, [&](double f) {
+      fractions.push_back(f);
+      return true;
+    });
+    EXPECT_EQ(t.triangles.size(), tessellate(p.tables.plans, p.points, 3).triangles.size()) << name;
+    ASSERT_FALSE(fractions.empty()) << name;
+    EXPECT_EQ(fractions[0], 0.0) << name;
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end())) << name;
+    EXPECT_LT(fractions.back(), 1.0) << name;
+    const int every = std::max(1, patches / 100);
+    EXPECT_EQ(int(fractions.size()), (patches + every - 1) / every) << name << ": " << patches << " patches";
+
+    int calls = 0;
+    EXPECT_THROW(tessellate(p.tables.plans, p.points, 3, [&](double) { return ++calls < 2; }), Cancelled) << name;
+    EXPECT_EQ(calls, 2) << name;
+  }
 }
 
 }  // namespace
