@@ -24,8 +24,7 @@ std::string input_of(const CLI::App& command) {
 
 // Whether `app` or one of its subcommands has the long option `name` ("--weld") taking a value.
 bool takes_value(const CLI::App& app, const std::string& name) {
-  if (const CLI::Option* option = app.get_option_no_throw(name); option && option->get_type_size_max() > 0)
-    return true;
+  if (const CLI::Option* option = app.get_option_no_throw(name); option && option->get_type_size_max() > 0) return true;
   for (const CLI::App* command : app.get_subcommands({}))
     if (takes_value(*command, name)) return true;
   return false;

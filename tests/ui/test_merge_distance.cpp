@@ -32,8 +32,8 @@ TEST(MergeDistance, TheFractionIsOfTheBoundingBoxDiagonal) {
 
 TEST(MergeDistance, AFractionOutsideZeroToOneIsRefusedByValue) {
   const CovarianceMesh square = square_with_close_pair();
-  for (const double fraction : {0.0, -0.5, 1.5, std::numeric_limits<double>::quiet_NaN(),
-                                std::numeric_limits<double>::infinity()}) {
+  for (const double fraction :
+       {0.0, -0.5, 1.5, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     const std::string message = test::error_of([&] { merge_by_distance(square, {}, fraction); });
     EXPECT_EQ(message.rfind("the merge distance must be more than 0 and at most 1", 0), 0u) << message;
   }
