@@ -1,20 +1,26 @@
 #!/usr/bin/env bash
 # The test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (gcc) into build-asan/ and
 # run under ctest, leak checking on; Mesa's own allocations are suppressed by scripts/lsan.supp (each
-# entry says why). By default every test of our code's logic (core, app, ui, the editor's windows)
-# and a fixed representative set of the GL tests (the pipeline, edits, picking, the render command,
-# the compute scan, the overlays, the cache); `sanitize.sh --all` builds and runs every GL test too.
+# entry says why). By default every test of our code's logic without a window (core, app, ui) and
+# fixed representative sets of the GL tests (the pipeline, edits, picking, the render command, the
+# compute scan, the overlays, the cache) and of the window tests; `sanitize.sh --all` runs them all.
 #   scripts/sanitize.sh [--all]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 gl_tests="surface_renderer;surface_edits;surface_cache;picking;render_cli;exclusive_scan;ellipsoid_overlay;shared_basis"
-[ "${1:-}" = "--all" ] && gl_tests=""
+# The editor's windows: the command line, first views and repair, creases, and the random-input soak
+# (the modelling replays, many minutes under ASan, run in the plain suite and with --all).
+window_tests="editor;editor_first_view;editor_creases;editor_soak;window_context"
+if [ "${1:-}" = "--all" ]; then
+  gl_tests=""
+  window_tests=""
+fi
 source scripts/compiler_cache.sh
 # Line tables only (-g1): a report still names functions, files and lines at a fraction of the disk.
 # -O1, ASan's usual level: a much shorter build for a slightly slower suite.
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DGPSURF_SANITIZE=ON -DGPSURF_BUILD_BENCH=OFF -DGPSURF_BUILD_PYTHON=OFF \
-  -DGPSURF_GL_TESTS="$gl_tests" "${launcher[@]}" >/dev/null
+  -DGPSURF_GL_TESTS="$gl_tests" -DGPSURF_WINDOW_TESTS="$window_tests" "${launcher[@]}" >/dev/null
 cmake --build build-asan -j"$(nproc)"
 # Libraries stay loaded until exit (scripts/no_dlclose.c), so leaks in them name their module.
 cc -shared -fPIC -O1 -o build-asan/no_dlclose.so scripts/no_dlclose.c
