@@ -185,7 +185,7 @@ Sharpness sharpness_of_tags(const SharpTags& tags, const PolygonSoup& soup, cons
 }  // namespace
 
 CovarianceMesh parse_obj(std::string data, const std::string& source) {
-  return mesh_of_soup(parse_obj_soup(std::move(data), source), escaped(source));
+  return mesh_of_soup(parse_obj_soup(std::move(data), source), escaped(source), obj_element_names(nullptr));
 }
 
 CovarianceMesh parse_off(std::string data, const std::string& source) {
@@ -228,6 +228,9 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
       if (coordinates[2].empty()) throw Error(at() + "a vertex needs three coordinates");
       for (int k = 0; k < 3; ++k)
         if (const std::string why = parse_number(coordinates[k], p[k]); !why.empty()) throw Error(at() + why);
+      if (const std::string why = position_problem(p); !why.empty())
+        throw Error(source + ": vertex " + std::to_string(points.size() + 1) + " (line " +
+                    std::to_string(lines.number()) + ") " + why);
       // What may follow: a weight, or a colour as MeshLab writes it (numbers, ignored), or a comment.
       for (std::string_view extra = next_word(line); !extra.empty() && extra[0] != '#'; extra = next_word(line)) {
         double ignored = 0;
@@ -258,7 +261,8 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
       if (exceeds_manifold_corners(faces.verts.size(), points.size())) {
         faces.offsets.shrink_to_fit();
         faces.verts.shrink_to_fit();
-        mesh_of_soup(plain_soup(std::move(points), std::move(faces), source), source);
+        mesh_of_soup(plain_soup(std::move(points), std::move(faces), source), source,
+                     obj_element_names([&data] { return data; }));
         throw Error(source + ": the mesh is not manifold");  // not reached: the check above throws
       }
     }
@@ -282,6 +286,21 @@ void find_obj_lines(std::string_view data, const std::vector<int>& vertices, con
     if (keyword == "v" && wanted_vertices.count(n_vertices++)) numbering.vertex_lines[n_vertices - 1] = lines.number();
     if (keyword == "f" && wanted_faces.count(n_faces++)) numbering.face_lines[n_faces - 1] = lines.number();
   }
+}
+
+ElementNames obj_element_names(std::function<std::string()> text) {
+  const auto name = [text](int index, bool vertex) {
+    ElementNumbering numbering;
+    numbering.base = 1;
+    try {
+      if (text)
+        find_obj_lines(text(), vertex ? std::vector<int>{index} : std::vector<int>{},
+                       vertex ? std::vector<int>{} : std::vector<int>{index}, numbering);
+    } catch (const Error&) {  // gone since it was read: named without its line
+    }
+    return vertex ? numbering.vertex(index) : numbering.face(index);
+  };
+  return {[name](int v) { return name(v, true); }, [name](int f) { return name(f, false); }};
 }
 
 PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {

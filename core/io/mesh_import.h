@@ -2,6 +2,7 @@
 // Plain polygon meshes from OBJ, OFF and STL (ASCII or binary); covariances are left as identity
 // for the caller to infer (core/mesh/inference.h). Errors name `source` and show text from the file
 // as core/support/quoted_text.h does.
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -13,7 +14,7 @@ namespace gps {
 
 /// Parses OBJ text (v and f records; f accepts v/vt/vn and negative indices; OpenSubdiv's tags
 /// "t crease 2/1/0 a b s" (pairs of vertices, numbered from 0) and "t corner 1/1/0 v s" give the
-/// sharpness; other records are skipped).
+/// sharpness; other records are skipped). Its messages number vertices and faces from 1, as the file does.
 /// The text is taken over and freed once parsed, before the mesh is built (pass it moved).
 CovarianceMesh parse_obj(std::string data, const std::string& source);
 
@@ -22,6 +23,11 @@ CovarianceMesh parse_obj(std::string data, const std::string& source);
 /// so their lines are looked up again rather than kept for every element.
 void find_obj_lines(std::string_view data, const std::vector<int>& vertices, const std::vector<int>& faces,
                     ElementNumbering& numbering);
+
+/// How messages name an OBJ file's vertices and faces: from 1, each with its line in the OBJ text
+/// `text` returns, called only when a message names one (without the line where it throws gps::Error,
+/// the file gone, or where `text` is empty: parse_obj has freed its text by then).
+ElementNames obj_element_names(std::function<std::string()> text);
 
 /// The first bytes of an OBJ or OFF file (core/io/text_file.h): text, without NUL bytes.
 void check_text_head(std::string_view head, size_t size);

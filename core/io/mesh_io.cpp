@@ -61,6 +61,17 @@ ElementNumbering element_numbering_for(const std::string& path, const RepairRepo
   return numbering;
 }
 
+namespace {
+
+// How messages name the elements of the file at `path` as read: an OBJ file's from 1 with their lines
+// (the file read again only when a message names one), the others' by index from 0.
+ElementNames element_names_for(const std::string& path) {
+  if (extension_of(path) != ".obj") return {};
+  return obj_element_names([path] { return read_text_file(path, check_text_head); });
+}
+
+}  // namespace
+
 CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options, RepairReport* report,
                          std::vector<std::string>* notes) {
   bool has_covariances = false;
@@ -75,6 +86,8 @@ CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const
   const auto no_faces = [&](const char* after) { return Error(escaped(path) + ": the mesh has no faces" + after); };
   if (soup.faces.n_faces() == 0) throw no_faces("");
   RepairReport done;
+  // A repaired soup's elements are no longer the file's: its messages number them from 0.
+  const ElementNames names = options.repair ? ElementNames{} : element_names_for(path);
   if (options.repair) {
     done = repair_polygon_soup(soup, repair_options_for(options));
     if (report) *report = done;
@@ -110,7 +123,7 @@ CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const
   // Built in place: OpenMesh's meshes have no move, so an assignment would copy the whole mesh.
   CovarianceMesh mesh = [&]() -> CovarianceMesh {
     try {
-      return mesh_of_soup(std::move(soup), escaped(path));
+      return mesh_of_soup(std::move(soup), escaped(path), names);
     } catch (const Error& e) {
       throw refused(e, false);
     }
@@ -118,13 +131,13 @@ CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const
   if (has_covariances) return mesh;
   try {
     if (options.covariance == ImportOptions::Covariance::infer)
-      infer_covariances(mesh, options.bias);
+      infer_covariances(mesh, options.bias, names);
     else
       isotropic_covariances(mesh, options.isotropic_scale);
   } catch (const Error& e) {
     throw refused(Error(escaped(path) + ": " + e.what(), e.kind()), true);
   }
-  validate_gaussians(mesh, escaped(path));
+  validate_gaussians(mesh, escaped(path), names);
   return mesh;
 }
 

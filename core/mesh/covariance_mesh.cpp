@@ -45,26 +45,25 @@ CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::v
 }
 
 CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
-                                    const std::string& source) {
+                                    const std::string& source, const ElementNames& names) {
   if (means.size() != covariances.size() && !covariances.empty())
     throw Error(source + ": " + std::to_string(means.size()) + " vertices but " + std::to_string(covariances.size()) +
                 " covariances");
   t.n_vertices = int(means.size());
   for (size_t i = 0; i < means.size(); ++i)
-    if (!means[i].allFinite())
-      throw Error(source + ": vertex " + std::to_string(i) + " has a position that is not finite");
+    if (!means[i].allFinite()) throw Error(source + ": " + names.vertex(int(i)) + " has a position that is not finite");
   {
     std::vector<size_t> last_face(means.size(), size_t(-1));  // the last face that used each vertex: repeats in O(1)
     for (int f = 0; f < t.n_faces(); ++f) {
-      const auto where = [&] { return source + ": face " + std::to_string(f); };
+      const auto where = [&] { return source + ": " + names.face(f); };
       if (t.face_size(f) < 3)
         throw Error(where() + " has " + std::to_string(t.face_size(f)) + " vertices (at least 3 needed)");
       for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
         const int i = t.verts[size_t(k)];
         if (i < 0 || size_t(i) >= means.size())
-          throw Error(where() + " refers to vertex " + std::to_string(i) + ", but there are only " +
+          throw Error(where() + " refers to " + names.vertex(i) + ", but there are only " +
                       std::to_string(means.size()) + " vertices");
-        if (last_face[size_t(i)] == size_t(f)) throw Error(where() + " uses vertex " + std::to_string(i) + " twice");
+        if (last_face[size_t(i)] == size_t(f)) throw Error(where() + " uses " + names.vertex(i) + " twice");
         last_face[size_t(i)] = size_t(f);
       }
     }
@@ -75,7 +74,7 @@ CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>
   for (const Vec3& p : means) m.mesh.add_vertex(to_point(p));
   const size_t n_vertices = means.size();
   std::vector<Vec3>().swap(means);
-  add_faces(m.mesh, t, source);
+  add_faces(m.mesh, t, source, names);
   t = {};
 #ifdef __GLIBC__
   // The temporaries above may lie below the top of the heap, which free() does not hand back:
@@ -123,17 +122,17 @@ std::string covariance_problem(const Mat3& c) {
   return "";
 }
 
-std::string gaussians_problem(const CovarianceMesh& m) {
+std::string gaussians_problem(const CovarianceMesh& m, const ElementNames& names) {
   for (size_t i = 0; i < m.n_vertices(); ++i) {
     std::string why = position_problem(m.mean(i));
     if (why.empty()) why = covariance_problem(m.covariances[i]);
-    if (!why.empty()) return "vertex " + std::to_string(i) + " " + why;
+    if (!why.empty()) return names.vertex(int(i)) + " " + why;
   }
   return "";
 }
 
-void validate_gaussians(const CovarianceMesh& m, const std::string& source) {
-  if (const std::string why = gaussians_problem(m); !why.empty()) throw Error(source + ": " + why);
+void validate_gaussians(const CovarianceMesh& m, const std::string& source, const ElementNames& names) {
+  if (const std::string why = gaussians_problem(m, names); !why.empty()) throw Error(source + ": " + why);
 }
 
 void bounding_box(const CovarianceMesh& m, Vec3& lo, Vec3& hi) {

@@ -5,6 +5,7 @@
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
+#include "core/mesh/element_names.h"
 #include "core/mesh/linalg.h"
 #include "core/mesh/sharpness.h"
 
@@ -41,8 +42,9 @@ CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::v
 /// The same with the faces in compressed form, taking its arrays over: nothing is copied, so a
 /// reader's memory is that of the arrays it filled. Empty `covariances` stand for the identity at
 /// every vertex, made after the faces are built (a plain mesh's placeholders, not held meanwhile).
+/// `names`: how its messages name the vertices and faces (as the file read numbers them).
 CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& faces,
-                                    const std::string& source = "mesh");
+                                    const std::string& source = "mesh", const ElementNames& names = {});
 
 /// Largest position coordinate magnitude accepted: squares and products of positions (and their
 /// products with inverse covariances) must stay far from double overflow.
@@ -57,9 +59,9 @@ std::string position_problem(const Vec3& mean);
 std::string covariance_problem(const Mat3& covariance);
 
 /// "vertex i <problem>" for the first vertex whose position or covariance has a problem above, or "".
-std::string gaussians_problem(const CovarianceMesh& m);
+std::string gaussians_problem(const CovarianceMesh& m, const ElementNames& names = {});
 /// Throws gps::Error naming `source` and the vertex if a position or covariance has a problem above.
-void validate_gaussians(const CovarianceMesh& m, const std::string& source = "mesh");
+void validate_gaussians(const CovarianceMesh& m, const std::string& source = "mesh", const ElementNames& names = {});
 
 /// Whether a covariance is symmetric (to relative 1e-9) and positive definite.
 bool is_spd(const Mat3& covariance);

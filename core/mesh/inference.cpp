@@ -7,7 +7,7 @@
 
 namespace gps {
 
-void infer_covariances(CovarianceMesh& m, double bias) {
+void infer_covariances(CovarianceMesh& m, double bias, const ElementNames& names) {
   if (!(bias > 0)) throw usage_error("the inference bias must be positive, got " + std::to_string(bias));
   std::vector<Vec3> p;
   // The precision of face f's points, or false where the face is degenerate.
@@ -33,7 +33,7 @@ void infer_covariances(CovarianceMesh& m, double bias) {
   Mat3 inv;
   for (const auto f : m.mesh.faces())
     if (!face_precision(f, inv))
-      throw Error("face " + std::to_string(f.idx()) + " is degenerate (all its vertices coincide)");
+      throw Error(names.face(f.idx()) + " is degenerate (all its vertices coincide)");
   std::vector<Mat3>& precision = m.covariances;
   precision.assign(m.n_vertices(), Mat3::Zero());
   for (const auto f : m.mesh.faces()) {

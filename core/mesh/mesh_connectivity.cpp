@@ -181,16 +181,17 @@ VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
   return n_faces == 1 ? VertexRole::corner : VertexRole::boundary;
 }
 
-void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source) {
-  add_faces(mesh, t, connectivity_of(t, false), source);
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source, const ElementNames& names) {
+  add_faces(mesh, t, connectivity_of(t, false), source, names);
 }
 
-void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source) {
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source,
+               const ElementNames& names) {
   using HH = PolyMesh::HalfedgeHandle;
   for (int e = 0; e + 1 < c.n_edges(); ++e)  // equal edges are neighbours in connectivity_of's order
     if (c.edge_verts[2 * size_t(e)] == c.edge_verts[2 * size_t(e) + 2] &&
         c.edge_verts[2 * size_t(e) + 1] == c.edge_verts[2 * size_t(e) + 3])
-      throw Error(source + ": face " + std::to_string(c.edge_faces[2 * size_t(e) + 2]) +
+      throw Error(source + ": " + names.face(c.edge_faces[2 * size_t(e) + 2]) +
                   " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
   // Every element's storage at its final size at once (growing by doubling would hold up to twice
   // it): resize() adds the default edges and faces that new_edge() and new_face() would, and resizes
@@ -211,7 +212,7 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity&
       const int e = c.face_edges[size_t(k)];
       const int h = 2 * e + (t.verts[size_t(k)] < t.verts[size_t(k + 1 < end ? k + 1 : begin)] ? 0 : 1);
       if (used[size_t(h)]++)
-        throw Error(source + ": face " + std::to_string(f) +
+        throw Error(source + ": " + names.face(f) +
                     " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
       halfedge.push_back(h);
     }
@@ -226,7 +227,7 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity&
   }
   // Boundary half-edges: each vertex has at most one going out (one fan), which is its outgoing half-edge.
   const auto non_manifold = [&](int v) {
-    return Error(source + ": vertex " + std::to_string(v) + " is non-manifold (its faces do not form one fan)");
+    return Error(source + ": " + names.vertex(v) + " is non-manifold (its faces do not form one fan)");
   };
   std::vector<int> boundary_out(size_t(t.n_vertices), -1);
   for (int h = 0; h < 2 * c.n_edges(); ++h) {
@@ -263,7 +264,7 @@ void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity&
     bool shares_all = true;
     for (int k = begin + 1; k < end && shares_all; ++k) shares_all = other_face(c.face_edges[size_t(k)]) == g;
     if (shares_all)
-      throw Error(source + ": faces " + std::to_string(f) + " and " + std::to_string(g) +
+      throw Error(source + ": " + names.face(f) + " and " + names.face(g) +
                   " share all their edges (a closed pillow of two faces, which no subdivision can refine)");
   }
 }

@@ -48,9 +48,10 @@ MeshConnectivity connectivity_of(const PolygonTopology& topology);
 /// half-edge structure directly in time linear in the mesh whatever the valence (OpenMesh's add_face
 /// searches the half-edges around each vertex: quadratic on a fan). Edges are paired by
 /// connectivity_of; throws gps::Error naming `source` and the face or vertex where the mesh is not manifold.
-void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source);
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source, const ElementNames& names = {});
 /// The same with the topology's connectivity already built (`c` = connectivity_of(t)).
-void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source);
+void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source,
+               const ElementNames& names = {});
 
 /// The shape of a manifold mesh as a surface: its connected parts (isolated vertices are in none), its
 /// boundary loops and its genus, summed over the parts, from Euler's V − E + F = 2P − 2g − b.

@@ -51,7 +51,7 @@ TEST(MeshImport, ObjWithSlashesAndNegativeIndices) {
             std::string::npos);
   EXPECT_NE(error_of([] {
               parse_obj("v 0 nan 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "d.obj");
-            }).find("vertex 0 has a position that is not finite"),
+            }).find("d.obj: vertex 1 (line 1) has a position that is not finite"),
             std::string::npos);
   EXPECT_NE(error_of([] { parse_obj("", "e.obj"); }).find("e.obj: the file is empty"), std::string::npos);
 }

@@ -84,6 +84,36 @@ TEST(ReaderMessages, APathWithControlBytesGivesOneLine) {
   expect_one_harmless_line(format, 1000);
 }
 
+// An OBJ file's messages number its vertices and faces from 1 with their lines, as its refusals by
+// the repair's classes do, where the builder, the inference and the position check said "face 1" for
+// the second face; OFF and PLY keep numbering from 0.
+TEST(ReaderMessages, AnObjFilesElementsAreNumberedAsTheFileNumbersThem) {
+  test::TempDir dir;
+  // Face 2 (line 8) has three coincident corners: the inference refuses it.
+  const std::string same =
+      dir.write("same.obj", "v 0 0 0\nv 0 0 0\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 4 5 6\nf 1 2 3\n");
+  const std::string degenerate = error_of([&] { read_mesh(same); });
+  EXPECT_EQ(degenerate.rfind(dir.file("same.obj") + ": face 2 (line 8) is degenerate", 0), 0u) << degenerate;
+  EXPECT_NE(degenerate.find("face 2 (line 8); --repair drops it"), std::string::npos) << degenerate;
+  EXPECT_EQ(degenerate.find("face 1 "), std::string::npos) << degenerate;
+  // Vertex 2 (line 3, after a comment) is out of range.
+  const std::string big = dir.write("big.obj", "v 0 0 0\n# far\nv 1e200 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_EQ(error_of([&] { read_mesh(big); }),
+            big + ": vertex 2 (line 3) has a coordinate 1e+200 beyond ±1e+100 (its products would overflow)");
+  // Two triangles meeting at vertex 1 alone, without the file to find lines in: from 1 still.
+  EXPECT_EQ(
+      error_of([&] { parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nf 1 2 3\nf 1 4 5\n", "bow.obj"); }),
+      "bow.obj: vertex 1 is non-manifold (its faces do not form one fan)");
+  // The same meshes as OFF: from 0.
+  EXPECT_EQ(
+      error_of([&] { parse_off("OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n", "bow.off"); }),
+      "bow.off: vertex 0 is non-manifold (its faces do not form one fan)");
+  const std::string off =
+      dir.write("same.off", "OFF\n6 2 0\n0 0 0\n0 0 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 3 4 5\n3 0 1 2\n");
+  const std::string off_message = error_of([&] { read_mesh(off); });
+  EXPECT_EQ(off_message.rfind(off + ": face 1 is degenerate", 0), 0u) << off_message;
+}
+
 // A covariance that passes a Cholesky factorisation but whose smallest eigenvalue rounds below zero
 // is named for what it is, not as an underflow.
 TEST(ReaderMessages, ANegativeEigenvalueIsNotPositiveDefinite) {
