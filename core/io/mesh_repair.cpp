@@ -136,15 +136,27 @@ public:
     std::iota(face_origin_.begin(), face_origin_.end(), 0);
     in_file_face_.assign(size_t(n), 0);
     for (const int v : soup_.faces.verts) in_file_face_[size_t(v)] = 1;
-    using Step = void (Repair::*)();
-    constexpr Step steps[] = {&Repair::weld,          &Repair::mend_repeated_corners, &Repair::drop_zero_area_faces,
-                              &Repair::drop_duplicate_faces, &Repair::separate_fans, &Repair::orient,
-                              &Repair::drop_isolated_vertices};
-    constexpr size_t n_steps = std::size(steps);
-    for (size_t k = 0; k <= n_steps; ++k) {
-      if (options_.progress && !options_.progress(double(k) / double(n_steps))) throw Cancelled();
-      if (k < n_steps) (this->*steps[k])();
-    }
+    // The progress after each of the seven steps: 0, 1/7, ..., 1.
+    constexpr int n_steps = 7;
+    int done = 0;
+    const auto step_done = [&] {
+      if (options_.progress && !options_.progress(double(done++) / n_steps)) throw Cancelled();
+    };
+    step_done();
+    weld();
+    step_done();
+    mend_repeated_corners();
+    step_done();
+    drop_zero_area_faces();
+    step_done();
+    drop_duplicate_faces();
+    step_done();
+    separate_fans();
+    step_done();
+    orient();
+    step_done();
+    drop_isolated_vertices();
+    step_done();
     return report_;
   }
 
