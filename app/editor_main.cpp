@@ -1,4 +1,4 @@
-// gpsurf-editor: the interactive editor (ui/editor.h); this file only parses the command line.
+// gpsurf-editor: the interactive editor (ui/editor/editor.h); this file only parses the command line.
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -7,7 +7,7 @@
 #include "app/repair_arguments.h"
 #include "core/support/error.h"
 #include "core/support/freed_memory.h"
-#include "ui/editor.h"
+#include "ui/editor/editor.h"
 #include "view/camera.h"
 
 int main(int argc, char** argv) {

@@ -1,5 +1,5 @@
 #pragma once
-// Driving gpsurf-editor in a real window by an events file (ui/event_script.h), from a test folder
+// Driving gpsurf-editor in a real window by an events file (ui/input/event_script.h), from a test folder
 // that is also its configuration folder (XDG_CONFIG_HOME): recent files and settings stay there.
 #include <cstdlib>
 #include <filesystem>
@@ -11,8 +11,8 @@
 
 #include "run_command.h"
 #include "temp_dir.h"
-#include "ui/camera_control.h"
-#include "ui/selection.h"
+#include "ui/input/camera_control.h"
+#include "ui/editing/selection.h"
 #include "view/camera.h"
 #include "view/projection.h"
 
@@ -38,7 +38,7 @@ inline glm::vec2 pixel_of(const Viewport& v, const Vec3& p) {
 constexpr int kWindowWidth = 1024, kWindowHeight = 700;
 
 /// The part of a width × height window that the editor's panels leave free at their first-use places
-/// (ui/editor.cpp's note_free_region): below the menu bar and above the status bar (21 pixels each,
+/// (ui/editor/editor.cpp's note_free_region): below the menu bar and above the status bar (21 pixels each,
 /// the 15-pixel font with its padding, the status bar 4 more), left of the Inspector (360 wide, 10
 /// from the right edge) by 8 pixels.
 inline std::pair<glm::vec2, glm::vec2> editor_free_region(int width = kWindowWidth, int height = kWindowHeight) {
@@ -46,7 +46,7 @@ inline std::pair<glm::vec2, glm::vec2> editor_free_region(int width = kWindowWid
 }
 
 /// What the editor shows on opening: its default angles with `up_axis` drawn upward, the mesh's
-/// vertices framed in the free region of a width × height window (ui/camera_control.h).
+/// vertices framed in the free region of a width × height window (ui/input/camera_control.h).
 inline Viewport editor_view(const CovarianceMesh& mesh, int width = kWindowWidth, int height = kWindowHeight,
                             int up_axis = 1) {
   Viewport v;

@@ -1,6 +1,6 @@
 #pragma once
 // Random editor sessions for the soak (tests/window/test_editor_soak.cpp, scripts/soak.sh): an events
-// file (ui/event_script.h) drawn from a seed: clicks and shift-clicks on vertices and anywhere,
+// file (ui/input/event_script.h) drawn from a seed: clicks and shift-clicks on vertices and anywhere,
 // drags of handle ends and centres, box selections, orbits and pans, keys during drags, undo and
 // redo, shortcuts, typed text, wheel steps, and drops of valid and broken files. The same seed gives
 // the same file.
@@ -10,7 +10,7 @@
 
 #include "core/mesh/covariance_mesh.h"
 #include "editor_driver.h"
-#include "ui/axis_handles.h"
+#include "ui/editing/axis_handles.h"
 
 namespace gps::test {
 

@@ -1,5 +1,5 @@
 // Handle hit-testing and drag math on a real camera, without a window.
-#include "ui/axis_handles.h"
+#include "ui/editing/axis_handles.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "ui/camera_control.h"
+#include "ui/input/camera_control.h"
 
 #include <gtest/gtest.h>
 

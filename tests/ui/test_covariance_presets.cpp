@@ -1,4 +1,4 @@
-#include "ui/covariance_presets.h"
+#include "ui/editing/covariance_presets.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include "core/mesh/inference.h"
 #include "core/modelling/samples.h"
 #include "core/edit/covariance_edit.h"
-#include "ui/inspector_panel.h"
+#include "ui/panels/inspector_panel.h"
 
 namespace gps {
 namespace {

@@ -1,6 +1,6 @@
 // The crease tool's values: a drag's span covering smooth to ∞, rounded to tenths and clamped; the
 // text and colour of a sharpness; "mixed" selections; the mirror images of edges and vertices.
-#include "ui/crease_tool.h"
+#include "ui/editing/crease_tool.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "ui/directory_listing.h"
+#include "ui/panels/directory_listing.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "ui/edit_history.h"
+#include "ui/document/edit_history.h"
 
 #include <gtest/gtest.h>
 

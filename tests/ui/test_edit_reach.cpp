@@ -1,6 +1,6 @@
 // The reach of an edit: the selection, the vertices within the proportional radius weighted by the
 // falloff of their distance to the nearest selected vertex, and the mirror partners.
-#include "ui/edit_reach.h"
+#include "ui/editing/edit_reach.h"
 
 #include <gtest/gtest.h>
 

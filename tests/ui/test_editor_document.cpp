@@ -1,4 +1,4 @@
-#include "ui/editor_document.h"
+#include "ui/document/editor_document.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The View settings kept between sessions (settings.json): the gizmo's pivot and whose ellipsoids
 // are drawn among them; out-of-range values are clamped, a wrong type is reported.
-#include "ui/editor_settings.h"
+#include "ui/settings/editor_settings.h"
 
 #include <gtest/gtest.h>
 

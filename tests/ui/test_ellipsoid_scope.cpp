@@ -1,6 +1,6 @@
 // Whose ellipsoids the editor draws: all of them on a small mesh, on a large one those
 // of the selection and its neighbours.
-#include "ui/ellipsoid_scope.h"
+#include "ui/overlays/ellipsoid_scope.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "ui/event_script.h"
+#include "ui/input/event_script.h"
 
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>

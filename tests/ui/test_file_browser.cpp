@@ -1,4 +1,4 @@
-#include "ui/file_browser.h"
+#include "ui/panels/file_browser.h"
 
 #include <gtest/gtest.h>
 

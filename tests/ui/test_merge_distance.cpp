@@ -1,5 +1,5 @@
 // The Merge menu's By distance: its field is a fraction of the bounding-box diagonal, range-checked.
-#include "ui/merge_distance.h"
+#include "ui/editing/merge_distance.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "ui/recent_files.h"
+#include "ui/settings/recent_files.h"
 
 #include <gtest/gtest.h>
 

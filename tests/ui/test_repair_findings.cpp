@@ -1,6 +1,6 @@
-// What the editor's repair prompt offers (ui/repair_prompt.h): a mesh the repair mends is offered,
+// What the editor's repair prompt offers (ui/panels/repair_prompt.h): a mesh the repair mends is offered,
 // one it cannot make open (a Möbius strip, which no flipping orients) is not.
-#include "ui/repair_prompt.h"
+#include "ui/panels/repair_prompt.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "ui/selection.h"
+#include "ui/editing/selection.h"
 
 #include <gtest/gtest.h>
 

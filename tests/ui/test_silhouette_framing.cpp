@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/modelling/samples.h"
-#include "ui/camera_control.h"
+#include "ui/input/camera_control.h"
 
 namespace gps {
 namespace {

@@ -1,5 +1,5 @@
 // The statistics overlay keeps clear of the gizmo: it takes the first free corner.
-#include "ui/statistics_overlay.h"
+#include "ui/panels/statistics_overlay.h"
 
 #include <gtest/gtest.h>
 

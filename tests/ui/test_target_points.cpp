@@ -1,7 +1,7 @@
-// The target points' file read and distances measured in the background (ui/target_points.h): they
+// The target points' file read and distances measured in the background (ui/overlays/target_points.h): they
 // are core's distances from the limit surface, measured again for a changed surface once it settles;
 // a file that does not read is reported naming it, the target shown kept.
-#include "ui/target_points.h"
+#include "ui/overlays/target_points.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The editor's S Z 0 (ui/transform_mode.h apply_transform) and `gpsurf edit`'s transform op carry the
+// The editor's S Z 0 (ui/editing/transform_mode.h apply_transform) and `gpsurf edit`'s transform op carry the
 // Gaussians by one rule (core/modelling/affine_transform.h carried_gaussian): the same mesh, byte for
 // byte, positions flattened and Gaussians held at the flatness floor.
 #include <gtest/gtest.h>
@@ -9,9 +9,9 @@
 #include "core/modelling/affine_transform.h"
 #include "core/modelling/operation_list.h"
 #include "tests/support/test_meshes.h"
-#include "ui/edit_reach.h"
-#include "ui/editor_document.h"
-#include "ui/transform_mode.h"
+#include "ui/editing/edit_reach.h"
+#include "ui/document/editor_document.h"
+#include "ui/editing/transform_mode.h"
 
 namespace gps {
 namespace {

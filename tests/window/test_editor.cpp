@@ -15,8 +15,8 @@
 #include "core/modelling/samples.h"
 #include "render/image/image_io.h"
 #include "view/picking.h"
-#include "ui/axis_handles.h"
-#include "ui/view_options.h"
+#include "ui/editing/axis_handles.h"
+#include "ui/panels/view_options.h"
 
 namespace gps {
 namespace {

@@ -13,7 +13,7 @@
 #include "core/io/text_file.h"
 #include "core/modelling/samples.h"
 #include "core/mesh/sharpness.h"
-#include "ui/crease_tool.h"
+#include "ui/editing/crease_tool.h"
 
 namespace gps {
 namespace {

@@ -16,10 +16,10 @@
 #include "core/modelling/mesh_arrays.h"
 #include "core/io/text_file.h"
 #include "render/image/image_io.h"
-#include "ui/axis_handles.h"
-#include "ui/edit_reach.h"
-#include "ui/selection.h"
-#include "ui/view_options.h"
+#include "ui/editing/axis_handles.h"
+#include "ui/editing/edit_reach.h"
+#include "ui/editing/selection.h"
+#include "ui/panels/view_options.h"
 #include "view/picking.h"
 
 namespace gps {

@@ -12,11 +12,11 @@
 #include "core/modelling/samples.h"
 #include "core/io/text_file.h"
 #include "render/image/image_io.h"
-#include "ui/axis_handles.h"
-#include "ui/camera_control.h"
-#include "ui/ellipsoid_scope.h"
-#include "ui/selection.h"
-#include "ui/view_options.h"
+#include "ui/editing/axis_handles.h"
+#include "ui/input/camera_control.h"
+#include "ui/overlays/ellipsoid_scope.h"
+#include "ui/editing/selection.h"
+#include "ui/panels/view_options.h"
 #include "view/picking.h"
 
 namespace gps {

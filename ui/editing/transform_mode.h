@@ -1,0 +1,88 @@
+#pragma once
+// Blender's modal transforms of the selected vertices: G grab, S scale, R rotate (about the view
+// axis). The mouse sets the amount from where it was when the transform began; X, Y, Z constrain it
+// to a world axis and Shift+X, Y, Z to the plane normal to one (pressed again: unconstrained); typed
+// digits replace the mouse ("S 0.5", "G Z 1", "R 90" degrees). Each vertex is carried by an affine
+// map about the pivot — μ′ = Aμ + t, Σ′ = AΣAᵀ (core/modelling/affine_transform.h) — weighted for
+// proportional editing and mirrored for mirror editing.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/modelling/affine_transform.h"
+#include "ui/editing/edit_reach.h"
+#include "view/projection.h"
+
+namespace gps {
+
+class EditorDocument;
+
+enum class TransformKind { grab, scale, rotate };
+
+/// What a transform turns or scales about: the selection's median point (the mean of its means),
+/// the active vertex, or each vertex about its own mean (which changes only its covariance under S and R).
+enum class TransformPivot { median, active, individual };
+/// "median point", "active vertex", "individual origins".
+const char* pivot_name(TransformPivot pivot);
+
+class TransformMode {
+public:
+  /// Begins a transform of `vertices` (their Gaussians as in `mesh` now), with the cursor at `cursor`.
+  TransformMode(TransformKind kind, const CovarianceMesh& mesh, std::vector<int> vertices, int active,
+                TransformPivot pivot, const Viewport& view, glm::vec2 cursor);
+
+  /// X, Y, Z (axis 0, 1, 2): along the world axis; `exclude`: in the plane normal to it. The same
+  /// constraint again removes it.
+  void constrain_axis(int axis, bool exclude);
+  /// Along a unit direction (the normal of an extrusion).
+  void constrain_direction(const Vec3& direction, const std::string& name);
+  /// The typed amount: a distance (G), factor (S) or angle in degrees (R); "" follows the mouse.
+  void set_typed(const std::string& typed) { typed_ = typed; }
+  const std::string& typed() const { return typed_; }
+  /// Follows the cursor (ignored while a value is typed).
+  void move_cursor(glm::vec2 cursor, const Viewport& view);
+
+  TransformKind kind() const { return kind_; }
+  const std::vector<int>& vertices() const { return vertices_; }
+  /// The map of the vertex vertices()[source], at weight w ∈ [0, 1] (1: the full transform).
+  AffineMap map(size_t source, double weight = 1.0) const;
+  /// The pivot of vertices()[source].
+  Vec3 pivot(size_t source) const;
+  /// "Scale 0.5000 along y (median point)": for the status bar.
+  std::string describe() const;
+
+private:
+  Vec3 axis_direction() const;  // the constraint's direction (axis or given); zero when none
+  double typed_value() const;   // NaN when nothing valid is typed
+
+  TransformKind kind_;
+  std::vector<int> vertices_;
+  std::vector<Vec3> start_means_;
+  TransformPivot pivot_;
+  Vec3 centre_ = Vec3::Zero();  // the median or active pivot
+  glm::vec2 start_cursor_{0.0f};
+  enum class Constraint { none, axis, plane, direction } constraint_ = Constraint::none;
+  int axis_ = 0;
+  Vec3 direction_ = Vec3::Zero();
+  std::string direction_name_;
+  std::string typed_;
+  // What the mouse set: a translation (G), a factor (S), an angle about an axis (R).
+  Vec3 translation_ = Vec3::Zero();
+  double factor_ = 1.0, angle_ = 0.0;
+  Vec3 rotation_axis_ = Vec3::UnitZ();
+  Vec3 view_axis_ = Vec3::UnitZ();  // from the pivot toward the eye
+};
+
+/// The map seen in the mirror across the plane x_axis = 0: x ↦ M f(M x).
+AffineMap mirrored(const AffineMap& map, int axis);
+
+/// Sets every reached vertex to its start Gaussian carried by its source's map at its weight
+/// (mirrored across `mirror_axis` where it is the mirror image) through carried_gaussian, as
+/// transform_vertices carries them; with `carry_gaussians` false, or a map that only moves, the
+/// covariance stays as it started. Returns how many covariances were held at the flatness floor.
+size_t apply_transform(EditorDocument& document, const TransformMode& transform,
+                       const std::vector<ReachedVertex>& reach, int mirror_axis, bool carry_gaussians);
+
+}  // namespace gps

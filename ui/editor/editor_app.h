@@ -1,0 +1,288 @@
+#pragma once
+// The editor's parts and their wiring (private to ui/): one class, its methods in one file per
+// concept — editor.cpp (frames, drawing, output), editor_pointer.cpp (mouse and handle drags),
+// editor_actions.cpp (open, save, undo, the unsaved-changes prompt), editor_commands.cpp (the
+// command table: keys, menus, help), editor_selection_commands.cpp (selection modes and tools),
+// editor_modelling.cpp (the Mesh menu's operations), editor_modal_tools.cpp (G / S / R, extrude,
+// loop cut, inset and crease following the mouse), editor_mesh_jobs.cpp (File → Simplify… and
+// Fit to… in the background) and editor_target_points.cpp (a fit's target as points over the surface).
+#include <array>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/gl/gpu_pass_timer.h"
+#include "render/gl/render_target.h"
+#include "render/overlays/point_overlay.h"
+#include "render/pipeline/surface_renderer.h"
+#include "render/gl/window_context.h"
+#include "core/modelling/loop_cut.h"
+#include "core/support/error.h"
+#include "core/plans/sharpness_replanner.h"
+#include "ui/editing/axis_handles.h"
+#include "ui/input/command_table.h"
+#include "ui/editing/edit_reach.h"
+#include "ui/editor/editor.h"
+#include "ui/document/editor_document.h"
+#include "ui/input/event_script.h"
+#include "ui/panels/file_browser.h"
+#include "ui/input/glfw_input.h"
+#include "ui/input/input_events.h"
+#include "ui/panels/inspector_panel.h"
+#include "ui/panels/job_dialog.h"
+#include "ui/editing/merge_distance.h"
+#include "ui/settings/recent_files.h"
+#include "ui/panels/repair_prompt.h"
+#include "ui/editing/selection.h"
+#include "ui/panels/statistics_overlay.h"
+#include "ui/overlays/target_points.h"
+#include "ui/editing/transform_mode.h"
+#include "ui/panels/view_options.h"
+
+namespace gps {
+
+/// The mean of the vertices' means (zero for none): where Shift+A adds and an inset moves towards.
+Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices);
+
+// What a confirmation about unsaved changes holds back.
+struct Action {
+  enum class Kind { none, quit, open_file, open_sample } kind = Kind::none;
+  std::string argument;
+};
+
+class EditorApp {
+public:
+  explicit EditorApp(const EditorOptions& options);
+  ~EditorApp();
+  EditorApp(const EditorApp&) = delete;
+  EditorApp& operator=(const EditorApp&) = delete;
+  int run();
+
+private:
+  using Clock = std::chrono::steady_clock;
+
+  // Pointer and handle drags (editor_pointer.cpp).
+  void handle_event(const InputEvent& e);
+  void press(const InputEvent& e);
+  void release(const InputEvent& e);
+  void follow_cursor();
+  bool drag_key(int key);
+  void drag_text(unsigned codepoint);
+  void update_drag();
+  void rebuild_reach();
+  void end_drag(bool keep);
+  int pick(glm::vec2 pixel) const;
+  Vec3 gizmo_pivot() const;
+  std::optional<HandleFrame> gizmo_frame(const Viewport& v) const;
+  bool vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const;
+  Viewport viewport() const;
+  void draw_handles_and_box();
+  // Selecting in the vertex, edge and face modes (editor_selection_commands.cpp).
+  void build_selection_commands();
+  void set_select_mode(SelectMode mode);
+  void click_select(glm::vec2 pixel, bool toggle);
+  void loop_select(glm::vec2 pixel, bool toggle);
+  void box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract);
+  std::vector<int> vertices_under(glm::vec2 pixel) const;  // the element under the cursor, in the mode
+  std::string selection_summary() const;                   // for the status bar
+  // Commands (editor_commands.cpp).
+  void build_commands();
+  void frame_vertices(const std::vector<int>& vertices);  // none: the whole mesh
+  glm::vec2 viewport_size() const;
+  void axis_view(float yaw, float pitch);
+  // Modelling (editor_modelling.cpp): the Mesh menu, G / S / R and the modal tools.
+  void build_modelling_commands();
+  bool run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
+                     SharpnessReplanner* replanner = nullptr);
+  // Throws gps::Error before anything changes. `replanner`: the plans of the document's topology,
+  // which re-plans a result of the same topology and other sharpness around the changes only.
+  void install(const Modelled& result, SharpnessReplanner* replanner = nullptr);
+  void topology_changed(const std::vector<int>& selection);
+  void rebuild_after_undo(const std::vector<int>& selection);
+  void operation_note(const std::string& message, bool error);
+  bool modal_active() const;
+  bool modal_event(const InputEvent& e);  // true: a modal tool took the event
+  void start_transform(TransformKind kind);
+  void update_transform();
+  void end_transform(bool keep);
+  void start_extrude();
+  std::optional<std::array<int, 2>> edge_under(glm::vec2 cursor) const;
+  void start_loop_cut();
+  void hover_loop_cut(glm::vec2 cursor);
+  void confirm_loop_cut();
+  void slide_loop_cut(glm::vec2 cursor);
+  void end_loop_cut(bool keep);
+  void start_inset();
+  void update_inset(double thickness);
+  void follow_inset(glm::vec2 cursor);
+  void end_inset(bool keep);
+  void start_crease(bool corners);
+  void preview_crease(double sharpness);
+  void end_crease(bool keep);
+  Modelled creased(const CovarianceMesh& mesh, bool corners, double sharpness) const;
+  void apply_sharpness(bool corners, double sharpness, SharpnessReplanner* replanner = nullptr);
+  void draw_delete_items();
+  void draw_merge_items();
+  void draw_add_items();
+  void draw_modelling_overlay();
+  // Long computations in the background (editor_mesh_jobs.cpp).
+  void open_simplify_dialog();
+  void open_fit_dialog();
+  void draw_job_dialog();
+  // The target points over the surface (editor_target_points.cpp).
+  void build_target_point_commands();
+  void show_target_points(const std::string& path);
+  void reopen_target_points();    // the target kept for the document's file, or none
+  void remember_target_points();  // kept for the document's file (the View settings)
+  void surface_changed();         // the limit surface shown changed: its distances are measured again
+  void update_target_points();    // once a frame, before drawing
+  void draw_target_points();
+  // Actions (editor_actions.cpp).
+  void request(Action action);
+  void perform(const Action& action);
+  // Opens a mesh file as the document, repaired where `repair` (with the command line's --weld); where
+  // it fails nothing changes and the error is returned, else `remarks` gets what the repair did and the
+  // reader's notes, for the status line ("" where there are none).
+  std::optional<Error> try_open(const std::string& path, bool repair, std::string& remarks);
+  // A file that did not open: the error in the status line and, where the repair mends it, the dialog.
+  void report_unopened(const std::string& path, const Error& e);
+  void open_file(const std::string& path);
+  void open_repaired(const std::string& path);
+  void draw_repair_prompt();
+  void frame_first_view();  // the default angles at the file's up axis, the mesh framed in the free region
+  void open_sample(const std::string& name);
+  bool save();  // false: a file name is being asked for
+  void save_to(const std::string& path);
+  void undo_redo(bool undo);
+  void mesh_replaced();
+  void draw_unsaved_prompt();
+  void handle_browser_result();
+  // Frames and output (editor.cpp).
+  void frame();
+  void draw_ui();
+  void render_and_present();
+  bool script_finished();
+  void write_screenshot(const std::string& path);
+  void write_statistics(const std::string& path);
+  void set_status(const std::string& message, bool error);
+  void update_title();
+  void note_free_region();
+
+  EditorOptions options_;
+  std::string config_folder_, layout_file_;  // where settings and the panel layout are kept
+  WindowContext window_;
+  GlfwInputForwarder input_forwarder_;
+  std::unique_ptr<SurfaceRenderer> renderer_;
+  std::unique_ptr<GpuPassTimer> timer_;
+  std::unique_ptr<RenderTarget> target_;
+  std::unique_ptr<PointOverlay> point_overlay_;
+  EditorDocument document_;
+  std::string opened_name_;  // the display name of the mesh as opened (a save renames the document)
+  Selection selection_;
+  Camera camera_;
+  ViewOptions view_;
+  ReachOptions reach_options_;
+  InspectorPanel inspector_;
+  FileBrowser browser_;
+  enum class BrowserPurpose {
+    open_mesh,
+    save_mesh,
+    load_matcap,
+    load_target
+  } browser_purpose_ = BrowserPurpose::open_mesh;
+  RecentFiles recent_;
+  RepairPrompt repair_prompt_;
+  FrameClock clock_;
+  CommandTable commands_;
+
+  InputQueue queue_;
+  InputState input_;
+  std::optional<EventScript> script_;
+  std::optional<EventRecorder> recorder_;
+  int finishing_frames_ = 0;
+
+  enum class Mode { none, click, box, orbit, pan, handle } mode_ = Mode::none;
+  int mode_button_ = 0;
+  glm::vec2 press_pixel_{0.0f}, last_cursor_{0.0f};
+  std::optional<HandleDrag> drag_;
+  std::vector<ReachedVertex> reach_;  // the vertices the drag changes, and how strongly
+  std::vector<GaussianChange> drag_changes_;
+  glm::vec2 free_min_{0.0f}, free_max_{1.0f};  // the part of the window the panels leave free
+  int layout_frames_ = 2;               // frames without input that lay the panels out before the first view is framed
+  std::optional<ScreenBox> gizmo_box_;  // where the gizmo was drawn this frame (the statistics keep clear of it)
+  std::vector<int> shown_ellipsoids_;   // the vertices whose ellipsoids are drawn, when not all
+  SelectMode select_mode_ = SelectMode::vertex;
+  bool select_through_ = false;  // box selection takes hidden vertices too (X-ray)
+  bool alt_press_ = false;       // the left press had Alt: a click selects a loop, a drag orbits
+
+  // Modelling: the modal transform (an extrusion's move folds into the extrusion's undo step), the
+  // loop cut (hovering a ring, then sliding the new loops) and the inset (its thickness followed).
+  std::optional<TransformMode> transform_;
+  bool transform_folds_ = false;
+  TransformPivot transform_pivot_ = TransformPivot::median;
+  struct LoopCutTool {
+    EdgeRing ring;  // under the cursor (empty: none)
+    int cuts = 1;
+    bool sliding = false;
+    std::shared_ptr<const CovarianceMesh> base;  // the mesh before the cut
+    glm::vec2 start_cursor{0.0f};
+  };
+  std::optional<LoopCutTool> loop_cut_;
+  struct InsetTool {
+    std::shared_ptr<const CovarianceMesh> base;
+    std::vector<int> faces, selection_before;
+    Vec3 centre = Vec3::Zero();
+    glm::vec2 start_cursor{0.0f};
+    std::string typed;
+    bool applied = false;
+  };
+  std::optional<InsetTool> inset_;
+  // The crease tool: the selected edges' sharpness (or the vertices' corner sharpness) followed
+  // until confirmed; the surface is re-planned for the value shown, the document changes on confirm.
+  struct CreaseTool {
+    bool corners = false;  // the vertices' corner sharpness, not the edges'
+    double start = 0.0, value = 0.0;
+    glm::vec2 start_cursor{0.0f};
+    std::string typed;
+    std::shared_ptr<const CovarianceMesh> shown;  // the mesh the surface was planned for
+    // The plans of the document's topology, re-planned for each value only around the changed
+    // edges or corners (core/plans/sharpness_replanner.h); made at the first change.
+    std::shared_ptr<SharpnessReplanner> replanner;
+  };
+  std::optional<CreaseTool> crease_;
+  /// The surface of `mesh` (the document's topology, other sharpness) from the tool's replanner.
+  PlannedSurface crease_surface(CreaseTool& tool, const CovarianceMesh& mesh);
+  // File → Simplify… and Fit to…: the dialog, its job and the settings each last had.
+  struct SimplifySettings {
+    int vertices = 0;  // 0: a tenth of the mesh's
+    double bias = 0.05;
+  };
+  SimplifySettings simplify_settings_;
+  struct FitSettings {
+    std::string target;  // the dense mesh
+    int iterations = 10;
+    bool plain = false;
+  };
+  FitSettings fit_settings_;
+  JobDialog job_dialog_;
+  bool job_is_fit_ = false;     // the dialog open is Fit to…: once applied, its target is shown
+  TargetPoints target_points_;  // the dense target shown as points, and their distances
+  std::string popup_request_;   // a popup menu (Delete, Merge, Add) a key asked for
+  double merge_distance_ = kDefaultMergeDistance;  // the Merge menu's By distance (of the diagonal)
+  std::string last_summary_;    // what the last operation did
+
+  Clock::time_point frame_input_time_{}, last_frame_time_ = Clock::now();
+  Action pending_;
+  bool prompt_unsaved_ = false, after_save_perform_ = false, quit_ = false;
+  std::string screenshot_request_;
+  std::string status_;
+  bool check_finite_ = true;  // the next frame without an edit reads its AOVs back for non-finite values
+  bool status_error_ = false;
+  std::string last_title_;
+  int swap_interval_ = -1;
+};
+
+}  // namespace gps

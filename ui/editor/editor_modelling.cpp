@@ -1,0 +1,293 @@
+// The editor as a modeller: the Mesh menu's operations, each one undo step that replaces the mesh,
+// with its summary or refusal in the status bar and the Inspector. The modal tools that follow the
+// mouse are in editor_modal_tools.cpp.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "core/edit/covariance_edit.h"
+#include "core/support/error.h"
+#include "core/mesh/mesh_connectivity.h"
+#include "core/modelling/bridge.h"
+#include "core/modelling/delete_elements.h"
+#include "core/modelling/edge_operations.h"
+#include "core/modelling/extrude.h"
+#include "core/modelling/fill.h"
+#include "core/modelling/inset.h"
+#include "core/modelling/loop_cut.h"
+#include "core/modelling/merge_vertices.h"
+#include "core/modelling/mesh_queries.h"
+#include "core/modelling/primitives.h"
+#include "core/modelling/subdivide_mesh.h"
+#include "ui/editor/editor_app.h"
+
+namespace gps {
+
+namespace {
+
+// The two selected vertices as an edge, for split and flip.
+std::array<int, 2> selected_edge(const std::vector<int>& selected) {
+  if (selected.size() != 2) throw Error("select the two vertices of one edge");
+  return {selected[0], selected[1]};
+}
+
+}  // namespace
+
+Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  Vec3 sum = Vec3::Zero();
+  for (const int v : vertices) sum += mesh.mean(size_t(v));
+  return vertices.empty() ? sum : Vec3(sum / double(vertices.size()));
+}
+
+void EditorApp::build_modelling_commands() {
+  const auto key = [](int k, bool ctrl = false, bool shift = false, bool alt = false) {
+    return Shortcut{k, ctrl, shift, alt};
+  };
+  const auto always = std::function<bool()>();
+  const auto selected = [this] { return !selection_.empty(); };
+  CommandTable& t = commands_;
+  const auto op = [this](const std::string& name, std::function<Modelled(const CovarianceMesh&)> run) {
+    return [this, name, run] { run_operation(name, run); };
+  };
+  t.add({"Mesh",
+         "Grab (G; then X Y Z, digits, Enter)",
+         {key(GLFW_KEY_G)},
+         [this] { start_transform(TransformKind::grab); },
+         selected});
+  t.add({"Mesh", "Scale (S)", {key(GLFW_KEY_S)}, [this] { start_transform(TransformKind::scale); }, selected});
+  t.add({"Mesh", "Rotate (R)", {key(GLFW_KEY_R)}, [this] { start_transform(TransformKind::rotate); }, selected});
+  const auto pivot = [this](TransformPivot p) {
+    return [this, p] {
+      transform_pivot_ = p;
+      set_status(std::string("pivot: ") + pivot_name(p), false);
+    };
+  };
+  const auto pivot_is = [this](TransformPivot p) { return [this, p] { return transform_pivot_ == p; }; };
+  t.add({"Mesh",
+         "Pivot: median point",
+         {key(GLFW_KEY_COMMA, true)},
+         pivot(TransformPivot::median),
+         always,
+         pivot_is(TransformPivot::median)});
+  t.add({"Mesh",
+         "Pivot: active vertex",
+         {key(GLFW_KEY_PERIOD, false, false, true)},
+         pivot(TransformPivot::active),
+         always,
+         pivot_is(TransformPivot::active)});
+  t.add({"Mesh",
+         "Pivot: individual origins",
+         {key(GLFW_KEY_PERIOD, true)},
+         pivot(TransformPivot::individual),
+         always,
+         pivot_is(TransformPivot::individual)});
+  t.add({"", "Pivot: the next one", {key(GLFW_KEY_PERIOD)}, [this] {
+           transform_pivot_ = TransformPivot((int(transform_pivot_) + 1) % 3);
+           set_status(std::string("pivot: ") + pivot_name(transform_pivot_), false);
+         }});
+  t.add({"Mesh", "Extrude", {key(GLFW_KEY_E)}, [this] { start_extrude(); }, selected, nullptr, nullptr, true});
+  const auto has_edge = [this] { return !edges_within(document_.mesh(), selection_.vertices()).empty(); };
+  t.add({"Mesh",
+         "Crease (Shift+E; drag or type 0-10, 10 = ∞)",
+         {key(GLFW_KEY_E, false, true)},
+         [this] { start_crease(false); },
+         has_edge});
+  t.add({"Mesh",
+         "Corner sharpness (Ctrl+Shift+V)",
+         {key(GLFW_KEY_V, true, true)},
+         [this] { start_crease(true); },
+         selected});
+  t.add({"Mesh", "Loop cut (then wheel: cuts)", {key(GLFW_KEY_R, true)}, [this] { start_loop_cut(); }});
+  t.add({"Mesh", "Inset faces", {key(GLFW_KEY_I)}, [this] { start_inset(); }, selected});
+  t.add({"Mesh",
+         "Fill",
+         {key(GLFW_KEY_F)},
+         op("fill", [this](const CovarianceMesh& m) { return fill_selected(m, selection_.vertices()); }),
+         selected});
+  t.add({"Mesh",
+         "Bridge edge loops",
+         {key(GLFW_KEY_E, true)},
+         op("bridge", [this](const CovarianceMesh& m) { return bridge_selected(m, selection_.vertices()); }),
+         selected});
+  t.add({"Mesh",
+         "Subdivide (the selected faces; all when none)",
+         {key(GLFW_KEY_W)},
+         op("subdivide", [this](const CovarianceMesh& m) {
+           const std::vector<int> faces = faces_within(m, selection_.vertices());
+           return faces.empty() ? subdivide_all(m) : subdivide_faces(m, faces);
+         })});
+  t.add({"Mesh",
+         "Split edge",
+         {},
+         op("split edge",
+            [this](const CovarianceMesh& m) {
+              const auto e = selected_edge(selection_.vertices());
+              return split_edge(m, e[0], e[1]);
+            }),
+         selected});
+  t.add({"Mesh",
+         "Flip edge",
+         {},
+         op("flip edge",
+            [this](const CovarianceMesh& m) {
+              const auto e = selected_edge(selection_.vertices());
+              return flip_edge(m, e[0], e[1]);
+            }),
+         selected});
+  t.add({"Mesh",
+         "Delete",
+         {key(GLFW_KEY_X), key(GLFW_KEY_DELETE)},
+         [this] { popup_request_ = "Delete"; },
+         selected,
+         nullptr,
+         [this] { draw_delete_items(); },
+         true});
+  t.add({"Mesh",
+         "Merge",
+         {key(GLFW_KEY_M)},
+         [this] { popup_request_ = "Merge"; },
+         selected,
+         nullptr,
+         [this] { draw_merge_items(); }});
+  t.add({"Mesh",
+         "Add",
+         {key(GLFW_KEY_A, false, true)},
+         [this] { popup_request_ = "Add"; },
+         always,
+         nullptr,
+         [this] { draw_add_items(); }});
+}
+
+void EditorApp::draw_delete_items() {
+  const std::vector<int>& s = selection_.vertices();
+  if (ImGui::MenuItem("Vertices"))
+    run_operation("delete vertices", [&s](const CovarianceMesh& m) { return delete_vertices(m, s); });
+  if (ImGui::MenuItem("Edges"))
+    run_operation("delete edges", [&s](const CovarianceMesh& m) { return delete_edges(m, edges_within(m, s)); });
+  if (ImGui::MenuItem("Faces"))
+    run_operation("delete faces", [&s](const CovarianceMesh& m) { return delete_faces(m, faces_within(m, s)); });
+  ImGui::Separator();
+  if (ImGui::MenuItem("Dissolve vertices"))
+    run_operation("dissolve vertices", [&s](const CovarianceMesh& m) { return dissolve_vertices(m, s); });
+  if (ImGui::MenuItem("Dissolve edges"))
+    run_operation("dissolve edges", [&s](const CovarianceMesh& m) { return dissolve_edges(m, edges_within(m, s)); });
+}
+
+void EditorApp::draw_merge_items() {
+  const std::vector<int>& s = selection_.vertices();
+  const std::pair<const char*, MergePoint> points[] = {
+      {"At center", MergePoint::center}, {"At first", MergePoint::first}, {"At last", MergePoint::last}};
+  for (const auto& [label, point] : points)
+    if (ImGui::MenuItem(label))
+      run_operation("merge", [&s, point = point](const CovarianceMesh& m) { return merge_vertices(m, s, point); });
+  ImGui::Separator();
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+  ImGui::InputDouble("distance (of the diagonal)", &merge_distance_, 0.0, 0.0, "%.3g");
+  if (ImGui::MenuItem("By distance"))
+    run_operation("merge by distance", [&s, fraction = merge_distance_](const CovarianceMesh& m) {
+      return merge_by_distance(m, s, fraction);
+    });
+}
+
+void EditorApp::draw_add_items() {
+  for (const std::string& name : primitive_names()) {
+    if (!ImGui::MenuItem(name.c_str())) continue;
+    const PrimitivePlacement at = primitive_placement(document_.mesh(), selection_.vertices());
+    run_operation("add " + name, [&](const CovarianceMesh& m) {
+      return add_primitive(m, *primitive_named(name), at.center, at.size);
+    });
+  }
+}
+
+bool EditorApp::run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
+                              SharpnessReplanner* replanner) {
+  if (modal_active()) return false;
+  try {
+    install(run(document_.mesh()), replanner);
+  } catch (const Error& e) {  // refused: nothing changed, no undo step
+    operation_note(name + " refused: " + e.what(), true);
+    return false;
+  }
+  operation_note(name + ": " + last_summary_, false);
+  return true;
+}
+
+void EditorApp::install(const Modelled& result, SharpnessReplanner* replanner) {
+  if (replanner) {  // first: it throws before anything changes
+    replanner->set_sharpness(result.mesh.sharpness);
+    renderer_->set_mesh(result.mesh, PlannedSurface(result.mesh, replanner->scheme(), replanner->tables()));
+  } else {
+    renderer_->set_mesh(result.mesh, view_.plans());
+  }
+  surface_changed();
+  document_.apply(result, selection_.vertices());
+  last_summary_ = result.summary;
+  topology_changed(result.selection);
+}
+
+void EditorApp::topology_changed(const std::vector<int>& selection) {
+  view_.triangle_mesh = scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
+  check_finite_ = true;
+  drag_.reset();
+  reach_.clear();
+  selection_.select(selection, false);
+}
+
+void EditorApp::rebuild_after_undo(const std::vector<int>& selection) {
+  try {
+    renderer_->set_mesh(document_.mesh(), view_.plans());
+    surface_changed();
+  } catch (const Error& e) {
+    set_status(e.what(), true);
+  }
+  topology_changed(selection);
+}
+
+void EditorApp::operation_note(const std::string& message, bool error) {
+  set_status(message, error);
+  inspector_.set_note(message, error);
+}
+
+bool EditorApp::modal_active() const { return transform_ || loop_cut_ || inset_ || crease_; }
+
+// The popup menus of X, M and Shift+A, and the loop cut's ring preview.
+
+void EditorApp::draw_modelling_overlay() {
+  if (!popup_request_.empty()) {
+    ImGui::OpenPopup(popup_request_.c_str());
+    popup_request_.clear();
+  }
+  if (ImGui::BeginPopup("Delete")) {
+    draw_delete_items();
+    ImGui::EndPopup();
+  }
+  if (ImGui::BeginPopup("Merge")) {
+    draw_merge_items();
+    ImGui::EndPopup();
+  }
+  if (ImGui::BeginPopup("Add")) {
+    draw_add_items();
+    ImGui::EndPopup();
+  }
+  if (!loop_cut_ || loop_cut_->sliding || loop_cut_->ring.edges.empty()) return;
+  const Viewport v = viewport();
+  const CovarianceMesh& mesh = document_.mesh();
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  const auto& edges = loop_cut_->ring.edges;
+  for (int k = 1; k <= loop_cut_->cuts; ++k) {
+    const double t = double(k) / double(loop_cut_->cuts + 1);
+    std::vector<ImVec2> points;
+    for (const auto& [a, b] : edges) {
+      const Vec3 p = (1.0 - t) * mesh.mean(size_t(a)) + t * mesh.mean(size_t(b));
+      if (const auto q = project_to_pixel(v.camera, v.width, v.height, p)) points.emplace_back(q->x, q->y);
+    }
+    draw->AddPolyline(points.data(), int(points.size()), IM_COL32(255, 210, 60, 255),
+                      loop_cut_->ring.closed ? ImDrawFlags_Closed : ImDrawFlags_None, 2.0f);
+  }
+}
+
+}  // namespace gps

@@ -1,0 +1,284 @@
+// The editor's pointer: clicks and boxes select, drags orbit and pan, the wheel zooms, and a drag
+// on the gizmo edits the selection (with its proportional and mirrored reach) as one undo step.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <cmath>
+
+#include "render/pipeline/surface_point.h"
+#include "ui/input/camera_control.h"
+#include "ui/overlays/crease_overlay.h"
+#include "ui/editor/editor_app.h"
+#include "ui/overlays/ellipsoid_scope.h"
+#include "ui/overlays/handle_overlay.h"
+#include "ui/overlays/selection_overlay.h"
+#include "view/picking.h"
+
+namespace gps {
+
+namespace {
+constexpr float kPickRadius = 8.0f;    // window pixels
+constexpr float kBoxThreshold = 4.0f;  // pixels a left press moves before it becomes a box
+}  // namespace
+
+Viewport EditorApp::viewport() const {
+  Viewport v;
+  v.camera = camera_;
+  glfwGetWindowSize(window_.window(), &v.width, &v.height);
+  v.width = std::max(1, v.width);
+  v.height = std::max(1, v.height);
+  return v;
+}
+
+// One gizmo for the selection, with the active vertex's axes, on that vertex or at the selected
+// vertices' centroid (View panel); its change applies to every selected vertex.
+Vec3 EditorApp::gizmo_pivot() const {
+  const CovarianceMesh& mesh = document_.mesh();
+  const std::vector<int>& selected = selection_.vertices();
+  if (view_.pivot == 0 || selected.size() < 2) return mesh.mean(size_t(selection_.active()));
+  Vec3 sum = Vec3::Zero();
+  for (const int v : selected) sum += mesh.mean(size_t(v));
+  return sum / double(selected.size());
+}
+
+std::optional<HandleFrame> EditorApp::gizmo_frame(const Viewport& v) const {
+  if (selection_.empty()) return std::nullopt;
+  const Mat3& covariance = document_.mesh().covariance(size_t(selection_.active()));
+  return handle_frame(gizmo_pivot(), ellipsoid_axes(covariance), view_.draw.sigma_scale, v);
+}
+
+int EditorApp::pick(glm::vec2 pixel) const {
+  const Viewport v = viewport();
+  const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius);
+  if (vertex >= 0 || !view_.draw.ellipsoids) return vertex;
+  const bool all = all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices());
+  return pick_ellipsoid(v.camera, v.width, v.height, pixel, document_.mesh(), view_.draw.sigma_scale,
+                        all ? nullptr : &shown_ellipsoids_);
+}
+
+// Whether a click at `pixel` on the gizmo's axis end `handle` means an unselected vertex that lies as
+// near the click as the end (a neighbour the end sits on): the click then selects it.
+bool EditorApp::vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const {
+  const Viewport v = viewport();
+  const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius);
+  if (vertex < 0 || selection_.contains(vertex)) return false;
+  const auto at_vertex = visible_pixel(v.camera, v.width, v.height, document_.mesh().mean(size_t(vertex)));
+  const auto at_end = visible_pixel(v.camera, v.width, v.height, gizmo.end(handle.axis, handle.side));
+  return at_vertex &&
+         (!at_end || glm::length(glm::vec2(*at_vertex) - pixel) <= glm::length(glm::vec2(*at_end) - pixel));
+}
+
+void EditorApp::handle_event(const InputEvent& e) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (modal_event(e)) return;  // G / S / R, extrude, loop cut, inset (editor_modelling.cpp)
+  if (job_dialog_.is_open() || repair_prompt_.is_open()) {  // their keys are Dear ImGui's; a mesh dropped now waits
+    if (e.type == InputEvent::Type::drop) set_status("close the dialog first", true);
+    if (e.type == InputEvent::Type::key_press || e.type == InputEvent::Type::drop) return;
+  }
+  switch (e.type) {
+    case InputEvent::Type::press:
+      if (!io.WantCaptureMouse && !prompt_unsaved_) press(e);
+      break;
+    case InputEvent::Type::release:
+      follow_cursor();  // the motion that came in the release's frame, before the release ends the drag
+      release(e);
+      break;
+    case InputEvent::Type::scroll:
+      if (mode_ == Mode::handle && reach_options_.proportional) {  // the wheel sets the radius while dragging
+        reach_options_.radius *= std::pow(1.15, double(e.steps));
+        rebuild_reach();
+        update_drag();
+      } else if (!io.WantCaptureMouse) {
+        const Viewport v = viewport();
+        std::optional<glm::dvec3> anchor;
+        if (target_)
+          anchor = surface_point(*target_, e.position * glm::vec2(float(target_->width()) / float(v.width),
+                                                                  float(target_->height()) / float(v.height)));
+        zoom_to_cursor(camera_, e.steps, v.width, v.height, e.position, anchor);
+      }
+      break;
+    case InputEvent::Type::key_press:
+      if (mode_ == Mode::handle && drag_key(e.key)) break;
+      if (!io.WantCaptureKeyboard && !browser_.is_open())
+        commands_.handle_key(e.key, input_.ctrl(), input_.shift(), input_.alt());
+      break;
+    case InputEvent::Type::text:
+      if (mode_ == Mode::handle) drag_text(e.codepoint);
+      break;
+    case InputEvent::Type::drop:
+      if (!e.paths.empty()) request({Action::Kind::open_file, e.paths.front()});
+      break;
+    case InputEvent::Type::move:
+    case InputEvent::Type::key_release:
+      break;
+  }
+}
+
+void EditorApp::press(const InputEvent& e) {
+  if (mode_ != Mode::none) return;
+  mode_button_ = e.button;
+  press_pixel_ = last_cursor_ = e.position;
+  alt_press_ = e.button == 0 && input_.alt();
+  if (e.button == 0 && !input_.alt()) {
+    const Viewport v = viewport();
+    const auto gizmo = gizmo_frame(v);
+    auto handle = gizmo ? hit_handle(v, e.position, *gizmo, selection_.active(), kPickRadius) : std::nullopt;
+    if (handle && !handle->is_centre() && vertex_before_handle(e.position, *gizmo, *handle)) handle.reset();
+    if (handle) {
+      document_.begin_edit();
+      drag_.emplace(document_.mesh(), selection_.vertices(), *handle, view_.draw.sigma_scale, v, e.position,
+                    view_.common_frame, gizmo->centre);
+      rebuild_reach();
+      mode_ = Mode::handle;
+    } else {
+      mode_ = Mode::click;
+    }
+    return;
+  }
+  mode_ = input_.shift() ? Mode::pan : Mode::orbit;
+}
+
+void EditorApp::release(const InputEvent& e) {
+  if (mode_ == Mode::none || e.button != mode_button_) return;
+  if (mode_ == Mode::click) {
+    click_select(e.position, input_.shift());
+  } else if (mode_ == Mode::box) {
+    box_select(press_pixel_, e.position, input_.shift(), input_.ctrl());
+  } else if (alt_press_ && (mode_ == Mode::orbit || mode_ == Mode::pan) &&
+             glm::length(e.position - press_pixel_) <= kBoxThreshold) {  // Alt+click, Shift+Alt+click adds
+    loop_select(e.position, input_.shift());
+  } else if (mode_ == Mode::handle) {
+    end_drag(true);
+  }
+  mode_ = Mode::none;
+}
+
+void EditorApp::end_drag(bool keep) {
+  if (keep)
+    document_.commit_edit();  // one undo step per drag, soft and mirrored vertices included
+  else
+    document_.cancel_edit();
+  drag_.reset();
+  mode_ = Mode::none;
+}
+
+// Keys during a drag: X/Y/Z (Shift: the plane normal to it) and N constrain a move, digits type
+// its distance, Enter finishes, Escape cancels. Returns whether the key was the drag's.
+bool EditorApp::drag_key(int key) {
+  if (key == GLFW_KEY_ESCAPE) {
+    end_drag(false);
+    set_status("drag cancelled", false);
+    return true;
+  }
+  if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) {
+    end_drag(true);
+    return true;
+  }
+  // Digits are typed as text (drag_text): as keys they would reach the commands (1/2/3: select modes).
+  if ((key >= GLFW_KEY_0 && key <= GLFW_KEY_9) || (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9)) return true;
+  if (!drag_->handle().is_centre()) return false;
+  if (key == GLFW_KEY_X || key == GLFW_KEY_Y || key == GLFW_KEY_Z) {
+    drag_->constrain(input_.shift() ? MoveConstraint::plane : MoveConstraint::axis, key - GLFW_KEY_X);
+  } else if (key == GLFW_KEY_N) {
+    drag_->constrain(MoveConstraint::normal);
+  } else if (key == GLFW_KEY_BACKSPACE) {
+    std::string typed = drag_->typed();
+    if (!typed.empty()) typed.pop_back();
+    drag_->set_typed(typed);
+  } else {
+    return false;
+  }
+  update_drag();
+  return true;
+}
+
+void EditorApp::drag_text(unsigned codepoint) {
+  if (!drag_->handle().is_centre()) return;
+  const char c = char(codepoint);
+  if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == 'e')) return;
+  drag_->set_typed(drag_->typed() + c);
+  update_drag();
+}
+
+// The proportional and mirrored reach of the drag, from the positions at its start.
+void EditorApp::rebuild_reach() {
+  std::vector<Vec3> means(document_.mesh().n_vertices());
+  for (size_t v = 0; v < means.size(); ++v) means[v] = document_.start_mean(int(v));
+  document_.revert_edit();  // vertices that leave the reach go back to their start
+  reach_ = edit_reach(means, drag_->vertices(), reach_options_);
+}
+
+void EditorApp::update_drag() {
+  const DragModifiers modifiers{input_.shift(), input_.ctrl()};
+  const auto changes = drag_->update(viewport(), input_.cursor, modifiers);
+  if (!changes) return;
+  drag_changes_ = *changes;
+  apply_reach(document_, reach_, drag_changes_, reach_options_.mirror_axis);
+  status_ = drag_->describe() +
+            (reach_.size() > drag_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "");
+  status_error_ = false;
+}
+
+void EditorApp::follow_cursor() {
+  const glm::vec2 cursor = input_.cursor, delta = cursor - last_cursor_;
+  switch (mode_) {
+    case Mode::orbit:
+      orbit(camera_, delta);
+      break;
+    case Mode::pan:
+      pan(camera_, delta, viewport().height);
+      break;
+    case Mode::click:
+      if (glm::length(cursor - press_pixel_) > kBoxThreshold) mode_ = Mode::box;
+      break;
+    case Mode::handle:
+      if (delta != glm::vec2(0.0f)) update_drag();
+      break;
+    case Mode::box:
+    case Mode::none:
+      break;
+  }
+  last_cursor_ = cursor;
+}
+
+void EditorApp::draw_handles_and_box() {
+  const Viewport v = viewport();
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the 3D view, under the panels
+  std::optional<HandleFrame> gizmo;
+  std::optional<Handle> lit;
+  if (mode_ == Mode::handle) {
+    gizmo = drag_->frame(v);
+    lit = drag_->handle();
+    if (reach_options_.proportional) {  // the radius, as a circle around where the grabbed vertex was
+      const Vec3 start = drag_->start_centre();
+      const double pixels = reach_options_.radius / world_per_pixel(v.camera, v.height, start);
+      if (const auto centre = visible_pixel(v.camera, v.width, v.height, start))
+        draw->AddCircle(ImVec2(centre->x, centre->y), float(std::min(pixels, 1e4)), IM_COL32(255, 255, 255, 160), 64,
+                        1.5f);
+    }
+  } else {
+    gizmo = gizmo_frame(v);
+    if (gizmo && mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
+      lit = hit_handle(v, input_.cursor, *gizmo, selection_.active(), kPickRadius);
+  }
+  if (view_.draw.mesh_lines) draw_crease_overlay(*draw, v, crease_ ? *crease_->shown : document_.mesh());
+  draw_selection_overlay(*draw, v, document_.mesh(), selection_.vertices(), select_mode_);
+  draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, lit);
+  gizmo_box_.reset();
+  if (gizmo) {  // the gizmo's extent on screen, its dots included
+    for (int k = -1; k < 6; ++k)
+      if (const auto p =
+              visible_pixel(v.camera, v.width, v.height, k < 0 ? gizmo->centre : gizmo->end(k / 2, k % 2 ? -1 : 1))) {
+        const ScreenBox dot{glm::vec2(*p) - glm::vec2(10.0f), glm::vec2(*p) + glm::vec2(10.0f)};
+        gizmo_box_ =
+            gizmo_box_ ? ScreenBox{glm::min(gizmo_box_->min, dot.min), glm::max(gizmo_box_->max, dot.max)} : dot;
+      }
+  }
+  if (mode_ == Mode::box) {
+    const ImVec2 a(press_pixel_.x, press_pixel_.y), b(input_.cursor.x, input_.cursor.y);
+    draw->AddRectFilled(a, b, IM_COL32(90, 150, 255, 40));
+    draw->AddRect(a, b, IM_COL32(90, 150, 255, 220));
+  }
+}
+
+}  // namespace gps

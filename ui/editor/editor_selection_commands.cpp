@@ -1,0 +1,211 @@
+// Selecting in Blender's three modes: a click picks a vertex, an edge (its ends) or a face (its
+// corners); Alt+click a loop; boxes take only what the camera sees unless selecting through; and
+// the Select menu's commands (modes, all, none, invert, linked, grow, shrink).
+#include <GLFW/glfw3.h>
+
+#include <array>
+#include <set>
+
+#include "core/support/error.h"
+#include "core/modelling/mesh_queries.h"
+#include "ui/editor/editor_app.h"
+#include "view/element_picking.h"
+#include "view/picking.h"
+#include "view/visible_vertices.h"
+
+namespace gps {
+
+namespace {
+
+constexpr float kClickRadius = 8.0f;  // window pixels from a vertex or an edge
+constexpr float kLoopRadius = 24.0f;  // an Alt+click takes the nearest edge this near
+
+std::vector<int> corners(const CovarianceMesh& mesh, int face) {
+  std::vector<int> out;
+  for (const auto v : mesh.mesh.fv_range(mesh.mesh.face_handle(face))) out.push_back(v.idx());
+  return out;
+}
+
+// The face loop across the edge {a, b}: the quads on either side of it, and on from each through
+// the edge opposite the one it was entered by, until a face that is not a quad, the boundary or the
+// start again. Returns the corners of its faces.
+std::vector<int> face_loop_vertices(const CovarianceMesh& mesh, int a, int b) {
+  const PolyMesh& m = mesh.mesh;
+  const auto start = m.find_halfedge(m.vertex_handle(a), m.vertex_handle(b));
+  if (!start.is_valid()) throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
+  std::set<int> faces, vertices;
+  const std::array<OpenMesh::HalfedgeHandle, 2> sides{start, m.opposite_halfedge_handle(start)};
+  for (const OpenMesh::HalfedgeHandle first : sides) {
+    OpenMesh::HalfedgeHandle h = first;
+    while (true) {
+      const auto f = m.face_handle(h);
+      if (!f.is_valid() || m.valence(f) != 4 || !faces.insert(f.idx()).second) break;
+      for (const auto v : m.fv_range(f)) vertices.insert(v.idx());
+      h = m.opposite_halfedge_handle(m.next_halfedge_handle(m.next_halfedge_handle(h)));
+    }
+  }
+  return {vertices.begin(), vertices.end()};
+}
+
+}  // namespace
+
+void EditorApp::set_select_mode(SelectMode mode) {
+  select_mode_ = mode;
+  set_status(select_mode_name(mode) + " select mode", false);
+}
+
+std::vector<int> EditorApp::vertices_under(glm::vec2 pixel) const {
+  const Viewport v = viewport();
+  const CovarianceMesh& mesh = document_.mesh();
+  if (select_mode_ == SelectMode::vertex) {
+    if (const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, mesh, kClickRadius); vertex >= 0)
+      return {vertex};
+  } else if (select_mode_ == SelectMode::edge) {
+    if (const auto edge = pick_edge(v, pixel, mesh, kClickRadius)) return {(*edge)[0], (*edge)[1]};
+  }
+  const int face = pick_face(v, pixel, mesh);
+  return face >= 0 ? corners(mesh, face) : std::vector<int>{};
+}
+
+void EditorApp::click_select(glm::vec2 pixel, bool toggle) {
+  if (select_mode_ == SelectMode::vertex) {
+    selection_.click(pick(pixel), toggle);
+    return;
+  }
+  const Viewport v = viewport();
+  const CovarianceMesh& mesh = document_.mesh();
+  std::vector<int> group;
+  if (select_mode_ == SelectMode::edge) {
+    if (const auto edge = pick_edge(v, pixel, mesh, kClickRadius)) group = {(*edge)[0], (*edge)[1]};
+  } else if (const int face = pick_face(v, pixel, mesh); face >= 0) {
+    group = corners(mesh, face);
+  }
+  // The active vertex: the group's vertex nearest the cursor.
+  int active = group.empty() ? -1 : group.front();
+  float nearest = 1e30f;
+  for (const int vertex : group)
+    if (const auto p = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(vertex))))
+      if (const float d = glm::length(glm::vec2(*p) - pixel); d < nearest) nearest = d, active = vertex;
+  selection_.click_group(group, active, toggle);
+}
+
+void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
+  const Viewport v = viewport();
+  const CovarianceMesh& mesh = document_.mesh();
+  const auto edge = pick_edge(v, pixel, mesh, kLoopRadius);
+  if (!edge) return;
+  const auto [a, b] = *edge;
+  try {
+    const std::vector<int> loop =
+        select_mode_ == SelectMode::face ? face_loop_vertices(mesh, a, b) : edge_loop(mesh, a, b);
+    selection_.click_group(loop, a, toggle);
+    set_status(std::string(select_mode_ == SelectMode::face ? "face" : "edge") +
+                   " loop: " + std::to_string(loop.size()) + " vertices",
+               false);
+  } catch (const Error& e) {
+    set_status(std::string("loop select: ") + e.what(), true);
+  }
+}
+
+void EditorApp::box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract) {
+  const Viewport v = viewport();
+  const CovarianceMesh& mesh = document_.mesh();
+  std::vector<int> inside = vertices_in_box(v.camera, v.width, v.height, a, b, mesh);
+  if (!select_through_ && !inside.empty()) {
+    const std::vector<char> visible = visible_vertices(v, mesh);
+    std::vector<int> seen;
+    for (const int vertex : inside)
+      if (visible[size_t(vertex)]) seen.push_back(vertex);
+    inside = std::move(seen);
+  }
+  if (subtract)
+    selection_.deselect(inside);
+  else
+    selection_.select(inside, add);
+}
+
+std::string EditorApp::selection_summary() const {
+  std::string text = std::to_string(selection_.vertices().size()) + " selected";
+  const CovarianceMesh& mesh = document_.mesh();
+  if (select_mode_ == SelectMode::edge) {
+    const size_t n = selection_.empty() ? 0 : edges_within(mesh, selection_.vertices()).size();
+    text += ", edge mode: " + std::to_string(n) + (n == 1 ? " edge" : " edges");
+  } else if (select_mode_ == SelectMode::face) {
+    const size_t n = selection_.empty() ? 0 : faces_within(mesh, selection_.vertices()).size();
+    text += ", face mode: " + std::to_string(n) + (n == 1 ? " face" : " faces");
+  } else {
+    text += ", vertex mode";
+  }
+  return text + (select_through_ ? ", X-ray" : "");
+}
+
+void EditorApp::build_selection_commands() {
+  const auto key = [](int k, bool ctrl = false, bool shift = false, bool alt = false) {
+    return Shortcut{k, ctrl, shift, alt};
+  };
+  const auto always = std::function<bool()>();
+  const auto has_selection = [this] { return !selection_.empty(); };
+  CommandTable& t = commands_;
+  const std::pair<SelectMode, int> modes[] = {
+      {SelectMode::vertex, GLFW_KEY_1}, {SelectMode::edge, GLFW_KEY_2}, {SelectMode::face, GLFW_KEY_3}};
+  for (const auto& [mode, digit] : modes) {
+    std::string label = select_mode_name(mode) + " select mode";
+    label[0] = char(std::toupper(static_cast<unsigned char>(label[0])));
+    t.add({"Select",
+           label,
+           {key(digit)},
+           [this, m = mode] { set_select_mode(m); },
+           always,
+           [this, m = mode] { return select_mode_ == m; }});
+  }
+  t.add({"Select",
+         "Select all",
+         {key(GLFW_KEY_A), key(GLFW_KEY_A, true)},
+         [this] { selection_.select_all(document_.mesh().n_vertices()); },
+         always,
+         nullptr,
+         nullptr,
+         true});
+  t.add({"Select", "Select none", {key(GLFW_KEY_A, false, false, true), key(GLFW_KEY_ESCAPE)}, [this] {
+           selection_.clear();
+         }});
+  t.add({"Select", "Invert selection", {key(GLFW_KEY_I, true)}, [this] {
+           selection_.invert(document_.mesh().n_vertices());
+         }});
+  t.add({"Select",
+         "Select linked (under the cursor)",
+         {key(GLFW_KEY_L)},
+         [this] {
+           const std::vector<int> seeds = vertices_under(input_.cursor);
+           if (!seeds.empty()) selection_.select(linked_vertices(document_.mesh(), seeds), true);
+         },
+         always,
+         nullptr,
+         nullptr,
+         true});
+  t.add({"Select",
+         "Select linked (from the selection)",
+         {key(GLFW_KEY_L, true)},
+         [this] { selection_.select(linked_vertices(document_.mesh(), selection_.vertices()), true); },
+         has_selection});
+  t.add({"Select",
+         "Grow selection",
+         {key(GLFW_KEY_KP_ADD, true)},
+         [this] { selection_.select(grow_selection(document_.mesh(), selection_.vertices()), false); },
+         has_selection});
+  t.add({"Select",
+         "Shrink selection",
+         {key(GLFW_KEY_KP_SUBTRACT, true)},
+         [this] { selection_.select(shrink_selection(document_.mesh(), selection_.vertices()), false); },
+         has_selection});
+  t.add({"Select",
+         "Select through (X-ray)",
+         {key(GLFW_KEY_Z, false, false, true)},
+         [this] { select_through_ = !select_through_; },
+         always,
+         [this] { return select_through_; },
+         nullptr,
+         true});
+}
+
+}  // namespace gps
