@@ -1,4 +1,4 @@
-#include "core/reference/dart_limit_mask.h"
+#include "core/reference/dart_masks.h"
 
 #include <Eigen/QR>
 

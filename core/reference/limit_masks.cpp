@@ -4,7 +4,7 @@
 
 #include "core/mesh/linalg.h"
 #include "core/reference/crease_rules.h"
-#include "core/reference/dart_limit_mask.h"
+#include "core/reference/dart_masks.h"
 #include "core/reference/vertex_mask.h"
 
 namespace gps {
@@ -42,7 +42,7 @@ PutLimit<T> store_in(std::vector<T>& out) {
 }
 
 // The limit mask under the rule of v's remaining sharpness: a crease, a corner, or a dart of an
-// infinitely sharp edge (core/reference/dart_limit_mask.h, quads or triangles with β `kind`); false
+// infinitely sharp edge (core/reference/dart_masks.h, quads or triangles with β `kind`); false
 // for a smooth vertex or a semi-sharp dart, whose scheme's smooth mask applies.
 bool sharp_limit_mask(const PolygonTopology& t, const MeshConnectivity& c, const CreaseLevel& creases, int v,
                       bool quads, LoopBeta kind, VertexMask& mask) {

@@ -33,7 +33,7 @@ using PutLimit = std::function<void(int, const T&)>;
 /// With `creases` (the sharpness left on `c`), each vertex's rule under it picks the mask, as
 /// OpenSubdiv's Far::PrimvarRefiner::Limit does: a corner stays, a crease vertex goes to
 /// (a + 4v + b)/6 with its crease neighbours, a smooth vertex takes the smooth mask. A dart of an
-/// infinitely sharp edge takes its exact mask (core/reference/dart_limit_mask.h), where Far takes
+/// infinitely sharp edge takes its exact mask (core/reference/dart_masks.h), where Far takes
 /// the smooth one; a semi-sharp dart the smooth one, as Far.
 template <class T>
 void catmull_clark_limit(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<T>& values, int n,

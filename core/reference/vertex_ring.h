@@ -1,6 +1,6 @@
 #pragma once
 // A vertex's ring in order and one subdivision step of it as a matrix, for the masks that are left
-// eigenvectors of that step (core/reference/limit_tangents.h, core/reference/dart_limit_mask.h).
+// eigenvectors of that step (core/reference/limit_tangents.h, core/reference/dart_masks.h).
 #include <Eigen/Core>
 
 #include <vector>

@@ -190,7 +190,7 @@ std::vector<Dual> reference_limit(const Level& level, Scheme scheme) {
 }
 
 // Whether vertex v of the level is a dart of an infinitely sharp edge: there Far's limit is the
-// smooth mask's and the reference's the dart's own (core/reference/dart_limit_mask.h).
+// smooth mask's and the reference's the dart's own (core/reference/dart_masks.h).
 bool infinitely_sharp_dart(const Level& level, int v) {
   if (vertex_rule(level.connectivity, level.creases, v) != VertexRule::dart) return false;
   const MeshConnectivity& c = level.connectivity;
