@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "core/support/quoted_text.h"
@@ -14,43 +15,59 @@ namespace {
 using Json = nlohmann::json;
 
 // nlohmann's DOM builder that also knows where in the document it is, so that an error names the
-// element it met (its own message names only the byte).
-class LocatingParser : public nlohmann::detail::json_sax_dom_parser<Json> {
+// element it met (its own message names only the byte). With a sink, a top-level array's elements are
+// built one at a time and handed over as each ends, so that the whole document is never held.
+class LocatingParser {
 public:
-  explicit LocatingParser(Json& result) : json_sax_dom_parser(result, true) {}
-
-  bool null() { return started() && json_sax_dom_parser::null(); }
-  bool boolean(bool v) { return started() && json_sax_dom_parser::boolean(v); }
-  bool number_integer(Json::number_integer_t v) { return started() && json_sax_dom_parser::number_integer(v); }
-  bool number_unsigned(Json::number_unsigned_t v) { return started() && json_sax_dom_parser::number_unsigned(v); }
-  bool number_float(Json::number_float_t v, const std::string& s) {
-    return started() && json_sax_dom_parser::number_float(v, s);
+  using Dom = nlohmann::detail::json_sax_dom_parser<Json>;
+  LocatingParser(Json& result, const JsonElementSink* sink) : result_(result), sink_(sink) {
+    if (!sink_) dom_ = std::make_unique<Dom>(result_, true);
   }
-  bool string(std::string& v) { return started() && json_sax_dom_parser::string(v); }
-  bool binary(Json::binary_t& v) { return started() && json_sax_dom_parser::binary(v); }
+
+  bool null() { return value() && dom_->null() && ended_value(); }
+  bool boolean(bool v) { return value() && dom_->boolean(v) && ended_value(); }
+  bool number_integer(Json::number_integer_t v) { return value() && dom_->number_integer(v) && ended_value(); }
+  bool number_unsigned(Json::number_unsigned_t v) { return value() && dom_->number_unsigned(v) && ended_value(); }
+  bool number_float(Json::number_float_t v, const std::string& s) {
+    return value() && dom_->number_float(v, s) && ended_value();
+  }
+  bool string(std::string& v) { return value() && dom_->string(v) && ended_value(); }
+  bool binary(Json::binary_t& v) { return value() && dom_->binary(v) && ended_value(); }
   bool start_object(size_t n) {
-    started();
+    if (!value()) return false;
     levels_.push_back({false, 0, {}});
-    return json_sax_dom_parser::start_object(n);
+    return dom_->start_object(n);
   }
   bool key(std::string& k) {
     levels_.back().key = k;
-    return json_sax_dom_parser::key(k);
+    return dom_->key(k);
   }
   bool end_object() {
     levels_.pop_back();
-    return json_sax_dom_parser::end_object();
+    return dom_->end_object() && ended_value();
   }
   bool start_array(size_t n) {
-    started();
+    if (sink_ && levels_.empty()) {  // the streamed array itself: its elements get a DOM each
+      levels_.push_back({true, 0, {}});
+      streaming_ = true;
+      return true;
+    }
+    if (!value()) return false;
     levels_.push_back({true, 0, {}});
-    return json_sax_dom_parser::start_array(n);
+    return dom_->start_array(n);
   }
   bool end_array() {
     levels_.pop_back();
-    return json_sax_dom_parser::end_array();
+    if (streaming_ && levels_.empty()) return true;
+    return dom_->end_array() && ended_value();
+  }
+  template <class Exception>
+  bool parse_error(std::size_t, const std::string&, const Exception& e) {
+    throw e;
   }
 
+  /// The top-level value was an array whose elements went to the sink.
+  bool streamed() const { return streaming_; }
   /// The element being read, as "[3].cuts" (the innermost level names the element not yet started).
   std::string where() const {
     std::string out;
@@ -70,22 +87,42 @@ private:
     size_t started;   // elements begun, for an array
     std::string key;  // the last key, for an object
   };
-  bool started() {
+  // A value begins: counted in its array; a streamed array's element gets a DOM of its own. False
+  // (parsing stops) where a sink was given and the top-level value is not an array.
+  bool value() {
     if (!levels_.empty() && levels_.back().array) ++levels_.back().started;
+    if (!sink_) return true;
+    if (!streaming_) return false;
+    if (levels_.size() == 1) {
+      element_ = Json();
+      dom_ = std::make_unique<Dom>(element_, true);
+    }
     return true;
   }
+  // A value ended: at the top of a streamed array, its element goes to the sink.
+  bool ended_value() {
+    if (streaming_ && levels_.size() == 1) {
+      (*sink_)(levels_.back().started - 1, std::move(element_));
+      element_ = Json();
+    }
+    return true;
+  }
+
+  Json& result_;
+  const JsonElementSink* sink_;
+  std::unique_ptr<Dom> dom_;
+  Json element_;
+  bool streaming_ = false;
   std::vector<Level> levels_;
 };
 
-}  // namespace
-
-Json parse_json(const std::string& text, const std::string& source, const std::string& top_name) {
+// Runs `parser` over `text`, turning nlohmann's errors into usage errors in our words.
+void run_parser(const std::string& text, const std::string& source, const std::string& top_name,
+                LocatingParser& parser) {
   const std::string prefix = source.empty() ? "" : source + ": ";
   if (const void* nul = std::memchr(text.data(), 0, text.size()))
     throw usage_error(prefix + "not valid JSON (a NUL byte at byte " +
                       std::to_string(static_cast<const char*>(nul) - text.data() + 1) + ")");
-  Json result;
-  LocatingParser parser(result);
   try {
     Json::sax_parse(text, &parser);
   } catch (const Json::parse_error& e) {
@@ -97,7 +134,25 @@ Json parse_json(const std::string& text, const std::string& source, const std::s
   } catch (const Json::exception& e) {
     throw usage_error(prefix + "not valid JSON");
   }
+}
+
+}  // namespace
+
+Json parse_json(const std::string& text, const std::string& source, const std::string& top_name) {
+  Json result;
+  LocatingParser parser(result, nullptr);
+  run_parser(text, source, top_name, parser);
   return result;
+}
+
+bool parse_json_array(const std::string& text, const std::string& source, const std::string& top_name,
+                      const JsonElementSink& sink) {
+  Json unused;
+  LocatingParser parser(unused, &sink);
+  run_parser(text, source, top_name, parser);
+  if (parser.streamed()) return true;
+  parse_json(text, source, top_name);  // not an array: its syntax errors as parse_json reports them
+  return false;
 }
 
 std::string json_shown(const Json& value) {

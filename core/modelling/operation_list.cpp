@@ -440,13 +440,11 @@ std::vector<std::string> operation_names() {
 }
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {
-  const Json ops = parse_json(text, source, "ops");
-  if (!ops.is_array()) throw usage_error(prefixed(source, "expected a JSON array of operations [{\"op\": ...}, ...]"));
   OperationList list;
   list.source_ = source;
-  for (size_t i = 0; i < ops.size(); ++i) {
+  // Op by op as the text is read: a long list is never held whole as JSON.
+  const bool array = parse_json_array(text, source, "ops", [&](size_t i, Json&& object) {
     const std::string where = prefixed(source, "ops[" + std::to_string(i) + "]");
-    const Json& object = ops[i];
     if (!object.is_object() || !object.contains("op") || !object["op"].is_string())
       throw usage_error(where + ": expected an object with \"op\"");
     const std::string name = object["op"].get<std::string>();
@@ -480,7 +478,8 @@ OperationList OperationList::parse(const std::string& text, const std::string& s
     } catch (const Error& e) {
       throw Error(where + " (" + shown_name(name) + "): " + e.what(), e.kind());
     }
-  }
+  });
+  if (!array) throw usage_error(prefixed(source, "expected a JSON array of operations [{\"op\": ...}, ...]"));
   return list;
 }
 

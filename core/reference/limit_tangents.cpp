@@ -1,6 +1,6 @@
 #include "core/reference/limit_tangents.h"
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "core/mesh/dual_map.h"
+#include "core/reference/dart_masks.h"
 #include "core/reference/loop.h"
 #include "core/reference/vertex_ring.h"
 
@@ -15,35 +16,18 @@ namespace gps {
 
 namespace {
 
-// The subdominant left eigenvectors of the subdivision matrix of a boundary vertex's ring with k
-// faces: points (v, e_0 … e_k, f_0 … f_{k−1}) for quads, (v, e_0 … e_k) for triangles. The matrix
-// comes from our own rules (ring_step_matrix), so it cannot drift from them. Empty when the eigenvalues after 1 are not real or the second and
-// third are not above all others: then the ring has no tangent plane of two modes to take.
+// The tangent masks' weights on the ring of a boundary vertex with k faces: points (v, e_0 … e_k,
+// f_0 … f_{k−1}) for quads, (v, e_0 … e_k) for triangles, laid flat as a fan (e_i at angle πi/(k + 1),
+// f_i at e_i + e_{i+1}).
 using TangentPair = std::vector<Eigen::VectorXd>;
 
 TangentPair boundary_eigenvectors(int k, bool quads) {
   const int n_points = quads ? 2 * k + 2 : k + 2;
-  const Eigen::MatrixXd step = ring_step_matrix(k, quads, true, LoopBeta::loop);
-  const Eigen::EigenSolver<Eigen::MatrixXd> solver(step.transpose());
-  const Eigen::VectorXcd values = solver.eigenvalues();
-  std::vector<int> order(static_cast<size_t>(n_points));
-  for (int i = 0; i < n_points; ++i) order[size_t(i)] = i;
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(values[a]) > std::abs(values[b]); });
-  const auto real = [&](int i) { return std::abs(values[order[size_t(i)]].imag()) < 1e-12; };
-  const bool separated = n_points == 3 || std::abs(values[order[2]]) > std::abs(values[order[3]]) + 1e-9;
-  if (!real(0) || !real(1) || !real(2) || std::abs(values[order[0]].real() - 1.0) > 1e-12 || !separated) return {};
-  TangentPair pair = {solver.eigenvectors().col(order[1]).real(), solver.eigenvectors().col(order[2]).real()};
-  // An eigenvector's sign is arbitrary: orient the pair on a flat fan (e_i at angle πi/(k + 1),
-  // f_i at e_i + e_{i+1}), so that first × second points to the side the faces' corners turn to.
   Eigen::MatrixXd flat = Eigen::MatrixXd::Zero(n_points, 2);
   for (int i = 0; i <= k; ++i) flat.row(1 + i) << std::cos(M_PI * i / (k + 1)), std::sin(M_PI * i / (k + 1));
   if (quads)
     for (int i = 0; i < k; ++i) flat.row(k + 2 + i) = flat.row(1 + i) + flat.row(2 + i);
-  const Eigen::Vector2d a = flat.transpose() * pair[0], b = flat.transpose() * pair[1];
-  const double turn = a.x() * b.y() - a.y() * b.x();
-  if (std::abs(turn) < 1e-9 * a.norm() * b.norm()) return {};
-  if (turn < 0) pair[1] = -pair[1];
-  return pair;
+  return tangent_eigenvectors(ring_step_matrix(k, quads, true, LoopBeta::loop), flat);
 }
 
 // Once per (number of faces, face size), for every thread.
@@ -111,7 +95,11 @@ bool loop_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int
 }
 
 void limit_tangents(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<Dual>& p, bool loop,
-                    std::vector<Dual>& first, std::vector<Dual>& second) {
+                    std::vector<Dual>& first, std::vector<Dual>& second, const CreaseLevel* creases, LoopBeta kind) {
+  const auto masks = [&](int v, VertexMask& a, VertexMask& b) {
+    if (creases && !creases->empty() && dart_tangent_masks(t, c, *creases, v, !loop, kind, a, b)) return true;
+    return loop ? loop_tangent_masks(t, c, v, a, b) : catmull_clark_tangent_masks(t, c, v, a, b);
+  };
   first.assign(size_t(t.n_vertices), Dual::Zero());
   second.assign(size_t(t.n_vertices), Dual::Zero());
 #pragma omp parallel if (t.n_vertices >= kParallelFaces)
@@ -119,7 +107,7 @@ void limit_tangents(const PolygonTopology& t, const MeshConnectivity& c, const s
     VertexMask a, b;
 #pragma omp for
     for (int v = 0; v < t.n_vertices; ++v)
-      if (loop ? loop_tangent_masks(t, c, v, a, b) : catmull_clark_tangent_masks(t, c, v, a, b)) {
+      if (masks(v, a, b)) {
         first[size_t(v)] = a.apply(p);
         second[size_t(v)] = b.apply(p);
       }

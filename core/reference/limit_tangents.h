@@ -8,6 +8,8 @@
 
 #include "core/mesh/linalg.h"
 #include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/sharpness.h"
+#include "core/reference/loop.h"
 #include "core/reference/vertex_mask.h"
 
 namespace gps {
@@ -29,9 +31,11 @@ bool loop_tangent_masks(const PolygonTopology& t, const MeshConnectivity& c, int
                         VertexMask& second);
 
 /// q_u and q_v (first and second mask applied to the 9D points p) at every vertex; zero where the
-/// vertex has no masks.
+/// vertex has no masks. Under `creases` a dart of an infinitely sharp edge takes its own masks
+/// (core/reference/dart_masks.h; Loop's with β `kind`); the other vertices the smooth ones.
 void limit_tangents(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<Dual>& p, bool loop,
-                    std::vector<Dual>& first, std::vector<Dual>& second);
+                    std::vector<Dual>& first, std::vector<Dual>& second, const CreaseLevel* creases = nullptr,
+                    LoopBeta kind = LoopBeta::loop);
 
 /// The unit limit normal μ_u × μ_v (thesis Eq. 3.12) at a vertex whose 9D limit is q, its mean
 /// `mean`, from its tangents; zero where they are missing or degenerate.

@@ -223,14 +223,15 @@ void limit_tangents_of(const Refined<Dual>& r, const SubdivisionOptions& o, std:
   const PolygonTopology& t = r.topology;
   const MeshConnectivity& c = r.connectivity;
   if (o.scheme == Scheme::loop || all_quads(t)) {
-    limit_tangents(t, c, r.values, o.scheme == Scheme::loop, first, second);
+    limit_tangents(t, c, r.values, o.scheme == Scheme::loop, first, second, &r.creases, o.loop_beta);
     drop_sharp_tangents(c, r.creases, t.n_vertices, first, second);
     return;
   }
   const MeshConnectivity finer = catmull_clark_connectivity(t, c);
+  const CreaseLevel finer_creases = refined_crease_level(t, c, r.creases, finer);
   limit_tangents(catmull_clark_topology(t, c), finer, catmull_clark_values(t, c, r.values, &r.creases), false, first,
-                 second);
-  drop_sharp_tangents(finer, refined_crease_level(t, c, r.creases, finer), t.n_vertices, first, second);
+                 second, &finer_creases);
+  drop_sharp_tangents(finer, finer_creases, t.n_vertices, first, second);
   first.resize(size_t(t.n_vertices));
   second.resize(size_t(t.n_vertices));
 }

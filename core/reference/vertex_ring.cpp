@@ -1,5 +1,7 @@
 #include "core/reference/vertex_ring.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 
 #include "core/reference/catmull_clark.h"
@@ -84,6 +86,26 @@ Eigen::MatrixXd ring_step_matrix(int k, bool quads, bool boundary, LoopBeta kind
   if (quads)
     for (int f = 0; f < k; ++f) step.row(1 + n_edges + f) = refined[size_t(n_points + c.n_edges() + f)].transpose();
   return step;
+}
+
+std::vector<Eigen::VectorXd> tangent_eigenvectors(const Eigen::MatrixXd& step, const Eigen::MatrixXd& flat) {
+  const long n = step.rows();
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(step.transpose());
+  const Eigen::VectorXcd values = solver.eigenvalues();
+  std::vector<long> order(static_cast<size_t>(n));
+  for (long i = 0; i < n; ++i) order[size_t(i)] = i;
+  std::sort(order.begin(), order.end(), [&](long a, long b) { return std::abs(values[a]) > std::abs(values[b]); });
+  const auto real = [&](int i) { return std::abs(values[order[size_t(i)]].imag()) < 1e-12; };
+  const bool separated = n == 3 || std::abs(values[order[2]]) > std::abs(values[order[3]]) + 1e-9;
+  if (!real(0) || !real(1) || !real(2) || std::abs(values[order[0]].real() - 1.0) > 1e-12 || !separated) return {};
+  std::vector<Eigen::VectorXd> pair = {solver.eigenvectors().col(order[1]).real(),
+                                       solver.eigenvectors().col(order[2]).real()};
+  // An eigenvector's sign is arbitrary: orient the pair by its turn on the flat ring.
+  const Eigen::Vector2d a = flat.transpose() * pair[0], b = flat.transpose() * pair[1];
+  const double turn = a.x() * b.y() - a.y() * b.x();
+  if (std::abs(turn) < 1e-9 * a.norm() * b.norm()) return {};
+  if (turn < 0) pair[1] = -pair[1];
+  return pair;
 }
 
 }  // namespace gps

@@ -29,4 +29,12 @@ bool ordered_ring(const PolygonTopology& t, const MeshConnectivity& c, int v, in
 /// is infinitely sharp.
 Eigen::MatrixXd ring_step_matrix(int k, bool quads, bool boundary, LoopBeta kind, int sharp_edge = -1);
 
+/// The left eigenvectors of `step` for its subdominant eigenvalues (second and third in magnitude),
+/// which applied to a ring at any level give its limit tangents. Signed so that on the ring laid flat
+/// (`flat`: a row (x, y) per point, the faces counter-clockwise) the first turns counter-clockwise into
+/// the second: first × second is then the normal on the side the faces' corners turn to. Empty where
+/// the largest eigenvalue is not 1, those three are not real, the third is not above all the others
+/// or the pair spans no plane: then the ring has no tangent plane of two modes to take.
+std::vector<Eigen::VectorXd> tangent_eigenvectors(const Eigen::MatrixXd& step, const Eigen::MatrixXd& flat);
+
 }  // namespace gps

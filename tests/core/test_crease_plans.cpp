@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <Eigen/Geometry>
+
 #include "core/evaluation/patch_eval.h"
 #include "core/io/mesh_io.h"
 #include "core/modelling/samples.h"
@@ -140,7 +142,7 @@ TEST(CreasePlans, LoopEqualsTheReferenceInsidePatches) {
 }
 
 // At a dart (a vertex with one sharp edge) the plans equal the reference, whose limit step takes
-// the dart's own mask there (core/reference/dart_limit_mask.h), from any level.
+// the dart's own mask there (core/reference/dart_masks.h), from any level.
 TEST(CreasePlans, DartsEqualTheReference) {
   const CovarianceMesh cube = with_random_covariances(creased(test::cube_mesh(), {{4, 5, 10}, {1, 5, 10}}), 2);
   const CovarianceMesh torus =
@@ -150,6 +152,57 @@ TEST(CreasePlans, DartsEqualTheReference) {
       const double error = error_against_reference(*mesh, levels);
       std::printf("darts: %.1e of the diagonal at level %d\n", error, levels);
       EXPECT_LT(error, 1e-9) << levels << " levels";
+    }
+}
+
+// The reference's limit normals equal the plans' wherever it gives one: at darts (core/reference/
+// dart_masks.h: the tangents of the dart's own step, not the smooth ones), at valences 3 to 6, on
+// quads and on triangles, from any level. The largest angle between the two, in radians.
+double normal_error_against_plans(const CovarianceMesh& mesh, Scheme scheme, int levels, int& compared) {
+  const PlannedMesh p(mesh, PlanOptions{scheme});
+  const SubdivisionResult ref = subdivide(mesh, {scheme, levels, true, LoopBeta::loop, true});
+  double largest = 0;
+  compared = 0;
+  for (size_t k = 0; k < ref.mesh.n_vertices(); ++k) {
+    if (ref.normals[k].isZero(0.0)) continue;
+    const PatchParam& pp = ref.vertex_params[k];
+    const auto s = evaluate_patch(p.tables.plans, p.points, pp.patch, pp.u, pp.v);
+    if (!s) continue;
+    largest = std::max(largest, std::atan2(s->normal.cross(ref.normals[k]).norm(), s->normal.dot(ref.normals[k])));
+    ++compared;
+  }
+  return largest;
+}
+
+TEST(CreasePlans, DartNormalsEqualThePlans) {
+  struct NormalCase {
+    std::string name;
+    CovarianceMesh mesh;
+    Scheme scheme;
+  };
+  const auto file = [](const std::string& name) {
+    return with_random_covariances(read_mesh(std::string(GPS_TEST_DATA_DIR) + "/infinite_creases/" + name + ".obj"),
+                                   17);
+  };
+  std::vector<NormalCase> cases = {
+      {"cube, darts", with_random_covariances(creased(test::cube_mesh(), {{4, 5, 10}, {1, 5, 10}}), 2),
+       Scheme::catmull_clark},
+      {"torus, one edge", with_random_covariances(creased(make_sample("torus"), {{5 * 12 + 6, 5 * 12 + 7, 10}}), 5),
+       Scheme::catmull_clark},
+      {"dart grid", file("dart_grid"), Scheme::catmull_clark},
+      {"fan darts", file("fan_darts"), Scheme::catmull_clark},
+      {"icosahedron, dart", with_random_covariances(creased(test::icosahedron_mesh(), {{7, 10, 10}}), 11),
+       Scheme::loop},
+  };
+  for (const auto& c : creased_triangle_cases())
+    if (c.name == "grid, crease end") cases.push_back({c.name, c.mesh, Scheme::loop});
+  for (const NormalCase& c : cases)
+    for (const int levels : {1, 3}) {
+      int compared = 0;
+      const double angle = normal_error_against_plans(c.mesh, c.scheme, levels, compared);
+      std::printf("%-18s level %d: %.1e rad over %d normals\n", c.name.c_str(), levels, angle, compared);
+      EXPECT_GT(compared, 0) << c.name;
+      EXPECT_LT(angle, 1e-9) << c.name << ", " << levels << " levels";
     }
 }
 
