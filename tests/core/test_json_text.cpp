@@ -1,0 +1,90 @@
+// JSON text (core/io/json_text.h): a top-level array read element by element hands over the same
+// elements a whole parse gives, in order, one at a time, with the same errors in the same words.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/io/json_text.h"
+#include "core/support/error.h"
+
+namespace gps {
+namespace {
+
+using Json = nlohmann::json;
+
+std::vector<Json> elements_of(const std::string& text, bool* array = nullptr) {
+  std::vector<Json> out;
+  std::vector<size_t> indices;
+  const bool is_array = parse_json_array(text, "ops.json", "ops", [&](size_t i, Json&& element) {
+    indices.push_back(i);
+    out.push_back(std::move(element));
+  });
+  for (size_t i = 0; i < indices.size(); ++i) EXPECT_EQ(indices[i], i);
+  if (array) *array = is_array;
+  return out;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    elements_of(text);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(JsonText, AnArraysElementsAreThoseOfAWholeParse) {
+  const std::string text =
+      R"([{"op": "add", "shape": "cube", "size": [1, 2.5, {"deep": [[], {}]}]}, 7, "text", null, true, [1, [2]], -3e5])";
+  bool array = false;
+  const std::vector<Json> elements = elements_of(text, &array);
+  EXPECT_TRUE(array);
+  const Json whole = parse_json(text, "ops.json", "ops");
+  ASSERT_EQ(elements.size(), whole.size());
+  for (size_t i = 0; i < elements.size(); ++i) EXPECT_EQ(elements[i], whole[i]) << i;
+  EXPECT_TRUE(elements_of(" [ ] ").empty());
+}
+
+TEST(JsonText, ValidJsonThatIsNotAnArrayGivesNoElements) {
+  for (const std::string text : {R"({"op": "add"})", "3", "\"ops\"", "null"}) {
+    bool array = true;
+    EXPECT_TRUE(elements_of(text, &array).empty()) << text;
+    EXPECT_FALSE(array) << text;
+  }
+}
+
+std::string whole_parse_error(const std::string& text) {
+  try {
+    parse_json(text, "ops.json", "ops");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(JsonText, ErrorsAreAWholeParses) {
+  for (const std::string text : {R"([{"op": "add"}, {"op": )", R"({"op": )", "[1, 2] 3", "[1, 2,]", "[[[1]]"}) {
+    EXPECT_EQ(error_of(text), whole_parse_error(text));
+    EXPECT_NE(error_of(text).find("ops.json: not valid JSON (byte "), std::string::npos) << text;
+  }
+  EXPECT_EQ(error_of(std::string("[1]\0x", 5)), "ops.json: not valid JSON (a NUL byte at byte 4)");
+  EXPECT_EQ(error_of(R"([{"op": "add"}, {"op": "extrude", "distance": 1e999}])"),
+            "ops.json: ops[1].distance: a number beyond the range of a double");
+  EXPECT_EQ(error_of(R"([1, [2, 3e999]])"), "ops.json: ops[1][1]: a number beyond the range of a double");
+}
+
+TEST(JsonText, WhatTheSinkThrowsStopsTheRead) {
+  size_t calls = 0;
+  EXPECT_THROW(parse_json_array("[1, 2, 3, 4]", "", "ops",
+                                [&](size_t i, Json&&) {
+                                  ++calls;
+                                  if (i == 1) throw usage_error("stop");
+                                }),
+               Error);
+  EXPECT_EQ(calls, 2u);
+}
+
+}  // namespace
+}  // namespace gps
