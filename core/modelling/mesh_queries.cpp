@@ -122,6 +122,12 @@ std::vector<int> shrink_selection(const CovarianceMesh& mesh, const std::vector<
   return masked(kept);
 }
 
+Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  Vec3 sum = Vec3::Zero();
+  for (const int v : vertices) sum += mesh.mean(size_t(v));
+  return vertices.empty() ? sum : Vec3(sum / double(vertices.size()));
+}
+
 std::vector<int> faces_within(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
   const PolyMesh& m = mesh.mesh;
   const std::vector<char> selected = vertex_mask(m, vertices);

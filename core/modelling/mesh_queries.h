@@ -29,6 +29,10 @@ std::vector<int> faces_within(const CovarianceMesh& mesh, const std::vector<int>
 /// The edges both of whose ends are selected, each once as (min, max), sorted.
 std::vector<std::array<int, 2>> edges_within(const CovarianceMesh& mesh, const std::vector<int>& vertices);
 
+/// The mean of the vertices' means (zero for none): where an inset moves towards and a bevel's width
+/// is measured from.
+Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices);
+
 /// Every boundary loop of the mesh, each as its vertices in the direction of its faces' boundary
 /// half-edges (a face's edge a → b on the boundary puts b after a), starting at its smallest vertex;
 /// loops ordered by that vertex.

@@ -27,7 +27,7 @@ TEST(TransformFlatten, TheEditorsScaleZeroIsTheOperationListsTransform) {
   TransformMode scale(TransformKind::scale, document.mesh(), top, top[0], TransformPivot::median, Viewport{},
                       glm::vec2(0.0f));
   scale.constrain_axis(2, false);
-  scale.set_typed("0");
+  scale.set_typed("0", 0.0);
   std::vector<Vec3> means;
   for (size_t v = 0; v < cube.n_vertices(); ++v) means.push_back(cube.mean(v));
   document.begin_edit();

@@ -85,6 +85,15 @@ void EditorDocument::set_covariance(int vertex, const Mat3& covariance) {
   mesh_.set_covariance(size_t(vertex), covariance);
 }
 
+bool EditorDocument::set_gaussians(const CovarianceMesh& mesh) {
+  if (mesh.n_vertices() != mesh_.n_vertices()) return false;
+  for (size_t v = 0; v < mesh.n_vertices(); ++v) {
+    if (mesh_.mean(v) != mesh.mean(v)) set_mean(int(v), mesh.mean(v));
+    if (mesh_.covariance(v) != mesh.covariance(v)) set_covariance(int(v), mesh.covariance(v));
+  }
+  return true;
+}
+
 Vec3 EditorDocument::start_mean(int vertex) const {
   const auto it = edit_ ? edit_index_.find(vertex) : edit_index_.end();
   return it != edit_index_.end() ? edit_->means_before[it->second] : mesh_.mean(size_t(vertex));

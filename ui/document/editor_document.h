@@ -48,6 +48,10 @@ public:
   bool editing() const { return edit_.has_value(); }
   void set_mean(int vertex, const Vec3& mean);
   void set_covariance(int vertex, const Mat3& covariance);
+  /// Sets every vertex whose Gaussian differs in `mesh` (a mesh of the same vertices: a tool's result
+  /// recomputed from the mesh before it) to that Gaussian. False, changing nothing, where the vertex
+  /// counts differ.
+  bool set_gaussians(const CovarianceMesh& mesh);
   /// The value a vertex had when the open edit began (its current value outside an edit).
   Vec3 start_mean(int vertex) const;
   const Mat3& start_covariance(int vertex) const;

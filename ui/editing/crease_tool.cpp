@@ -7,6 +7,8 @@
 #include <map>
 
 #include "core/mesh/sharpness.h"
+#include "core/modelling/crease_edges.h"
+#include "core/modelling/mesh_queries.h"
 
 namespace gps {
 
@@ -94,6 +96,12 @@ std::vector<int> with_mirrored_vertices(const CovarianceMesh& mesh, const std::v
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
+}
+
+Modelled sharpened_selection(const CovarianceMesh& mesh, const std::vector<int>& selected, bool corners,
+                             double sharpness, const ReachOptions& reach) {
+  if (corners) return set_corner(mesh, with_mirrored_vertices(mesh, selected, reach), sharpness);
+  return set_crease(mesh, with_mirrored_edges(mesh, edges_within(mesh, selected), reach), sharpness);
 }
 
 }  // namespace gps

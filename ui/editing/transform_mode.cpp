@@ -73,13 +73,6 @@ Vec3 TransformMode::axis_direction() const {
   return Vec3::Zero();
 }
 
-double TransformMode::typed_value() const {
-  if (typed_.empty() || typed_ == "-" || typed_ == ".") return std::numeric_limits<double>::quiet_NaN();
-  char* end = nullptr;
-  const double value = std::strtod(typed_.c_str(), &end);
-  return end && *end == '\0' && std::isfinite(value) ? value : std::numeric_limits<double>::quiet_NaN();
-}
-
 void TransformMode::move_cursor(glm::vec2 cursor, const Viewport& view) {
   const auto pixel = [&](const Vec3& p) {
     const auto q = project_to_pixel(view.camera, view.width, view.height, p);
@@ -128,7 +121,7 @@ Vec3 TransformMode::pivot(size_t source) const {
 }
 
 AffineMap TransformMode::map(size_t source, double weight) const {
-  const double typed = typed_value();
+  const double typed = typed_value_;
   const bool has_typed = std::isfinite(typed);
   const Vec3 along = axis_direction();
   switch (kind_) {
@@ -178,7 +171,7 @@ std::string TransformMode::describe() const {
                     m.translation.z());
       break;
     case TransformKind::scale: {
-      const double typed = typed_value();
+      const double typed = typed_value_;
       std::snprintf(amount, sizeof amount, "Scale %.4f", std::isfinite(typed) ? typed : factor_);
       break;
     }

@@ -5,6 +5,7 @@
 // digits replace the mouse ("S 0.5", "G Z 1", "R 90" degrees). Each vertex is carried by an affine
 // map about the pivot — μ′ = Aμ + t, Σ′ = AΣAᵀ (core/modelling/affine_transform.h) — weighted for
 // proportional editing and mirrored for mirror editing.
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,8 +39,9 @@ public:
   void constrain_axis(int axis, bool exclude);
   /// Along a unit direction (the normal of an extrusion).
   void constrain_direction(const Vec3& direction, const std::string& name);
-  /// The typed amount: a distance (G), factor (S) or angle in degrees (R); "" follows the mouse.
-  void set_typed(const std::string& typed) { typed_ = typed; }
+  /// The typed amount: a distance (G), factor (S) or angle in degrees (R), NaN while none is valid,
+  /// and its text as shown ("" follows the mouse).
+  void set_typed(const std::string& text, double value) { typed_ = text, typed_value_ = value; }
   const std::string& typed() const { return typed_; }
   /// Follows the cursor (ignored while a value is typed).
   void move_cursor(glm::vec2 cursor, const Viewport& view);
@@ -55,7 +57,6 @@ public:
 
 private:
   Vec3 axis_direction() const;  // the constraint's direction (axis or given); zero when none
-  double typed_value() const;   // NaN when nothing valid is typed
 
   TransformKind kind_;
   std::vector<int> vertices_;
@@ -68,6 +69,7 @@ private:
   Vec3 direction_ = Vec3::Zero();
   std::string direction_name_;
   std::string typed_;
+  double typed_value_ = std::numeric_limits<double>::quiet_NaN();
   // What the mouse set: a translation (G), a factor (S), an angle about an axis (R).
   Vec3 translation_ = Vec3::Zero();
   double factor_ = 1.0, angle_ = 0.0;

@@ -3,8 +3,8 @@
 // concept — editor.cpp (frames, drawing, output), editor_pointer.cpp (mouse and handle drags),
 // editor_actions.cpp (open, save, undo, the unsaved-changes prompt), editor_commands.cpp (the
 // command table: keys, menus, help), editor_selection_commands.cpp (selection modes and tools),
-// editor_modelling.cpp (the Mesh menu's operations), editor_modal_tools.cpp (G / S / R, extrude,
-// loop cut, inset and crease following the mouse), editor_mesh_jobs.cpp (File → Simplify… and
+// editor_modelling.cpp (the Mesh menu's operations), editor_modal_tools.cpp (the modal tools of
+// ui/tools/ started and handed the events), editor_mesh_jobs.cpp (File → Simplify… and
 // Fit to… in the background) and editor_target_points.cpp (a fit's target as points over the surface).
 #include <array>
 #include <chrono>
@@ -19,7 +19,6 @@
 #include "render/overlays/point_overlay.h"
 #include "render/pipeline/surface_renderer.h"
 #include "render/gl/window_context.h"
-#include "core/modelling/loop_cut.h"
 #include "core/support/error.h"
 #include "core/plans/sharpness_replanner.h"
 #include "ui/editing/axis_handles.h"
@@ -40,12 +39,10 @@
 #include "ui/panels/statistics_overlay.h"
 #include "ui/overlays/target_points.h"
 #include "ui/editing/transform_mode.h"
+#include "ui/tools/modal_tool.h"
 #include "ui/panels/view_options.h"
 
 namespace gps {
-
-/// The mean of the vertices' means (zero for none): where Shift+A adds and an inset moves towards.
-Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices);
 
 // What a confirmation about unsaved changes holds back.
 struct Action {
@@ -93,7 +90,7 @@ private:
   void frame_vertices(const std::vector<int>& vertices);  // none: the whole mesh
   glm::vec2 viewport_size() const;
   void axis_view(float yaw, float pitch);
-  // Modelling (editor_modelling.cpp): the Mesh menu, G / S / R and the modal tools.
+  // Modelling (editor_modelling.cpp): the Mesh menu and its operations.
   void build_modelling_commands();
   bool run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
                      SharpnessReplanner* replanner = nullptr);
@@ -103,27 +100,20 @@ private:
   void topology_changed(const std::vector<int>& selection);
   void rebuild_after_undo(const std::vector<int>& selection);
   void operation_note(const std::string& message, bool error);
-  bool modal_active() const;
-  bool modal_event(const InputEvent& e);  // true: a modal tool took the event
-  void start_transform(TransformKind kind);
-  void update_transform();
-  void end_transform(bool keep);
-  void start_extrude();
-  std::optional<std::array<int, 2>> edge_under(glm::vec2 cursor) const;
-  void start_loop_cut();
-  void hover_loop_cut(glm::vec2 cursor);
-  void confirm_loop_cut();
-  void slide_loop_cut(glm::vec2 cursor);
-  void end_loop_cut(bool keep);
-  void start_inset();
-  void update_inset(double thickness);
-  void follow_inset(glm::vec2 cursor);
-  void end_inset(bool keep);
-  void start_crease(bool corners);
-  void preview_crease(double sharpness);
-  void end_crease(bool keep);
-  Modelled creased(const CovarianceMesh& mesh, bool corners, double sharpness) const;
-  void apply_sharpness(bool corners, double sharpness, SharpnessReplanner* replanner = nullptr);
+  // The Inspector's crease or corner field: the selection's sharpness set as one undo step.
+  void apply_sharpness(bool corners, double sharpness);
+  bool modal_active() const { return tool_ != nullptr; }
+  // The modal tools (editor_modal_tools.cpp): one runs at a time and takes the events first.
+  ToolContext tool_context();
+  void start_tool(const std::function<std::unique_ptr<ModalTool>(ToolContext&)>& make);
+  bool modal_event(const InputEvent& e);  // true: the tool took the event
+  // run_operation without the check for a running tool (a tool's own operation).
+  bool operate(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
+               SharpnessReplanner* replanner);
+  void show_preview(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
+                    std::optional<PlannedSurface> surface);
+  void show_document(std::optional<PlannedSurface> surface);
+  const CovarianceMesh& shown_mesh() const { return preview_ ? *preview_ : document_.mesh(); }
   void draw_delete_items();
   void draw_merge_items();
   void draw_add_items();
@@ -218,43 +208,12 @@ private:
   bool select_through_ = false;  // box selection takes hidden vertices too (X-ray)
   bool alt_press_ = false;       // the left press had Alt: a click selects a loop, a drag orbits
 
-  // Modelling: the modal transform (an extrusion's move folds into the extrusion's undo step), the
-  // loop cut (hovering a ring, then sliding the new loops) and the inset (its thickness followed).
-  std::optional<TransformMode> transform_;
-  bool transform_folds_ = false;
+  // Modelling: the modal tool running (none: nullptr), the pivot of G / S / R, and the mesh a tool
+  // shows in place of the document's (a bevel's or a crease's preview; none: nullptr) with its selection.
+  std::unique_ptr<ModalTool> tool_;
   TransformPivot transform_pivot_ = TransformPivot::median;
-  struct LoopCutTool {
-    EdgeRing ring;  // under the cursor (empty: none)
-    int cuts = 1;
-    bool sliding = false;
-    std::shared_ptr<const CovarianceMesh> base;  // the mesh before the cut
-    glm::vec2 start_cursor{0.0f};
-  };
-  std::optional<LoopCutTool> loop_cut_;
-  struct InsetTool {
-    std::shared_ptr<const CovarianceMesh> base;
-    std::vector<int> faces, selection_before;
-    Vec3 centre = Vec3::Zero();
-    glm::vec2 start_cursor{0.0f};
-    std::string typed;
-    bool applied = false;
-  };
-  std::optional<InsetTool> inset_;
-  // The crease tool: the selected edges' sharpness (or the vertices' corner sharpness) followed
-  // until confirmed; the surface is re-planned for the value shown, the document changes on confirm.
-  struct CreaseTool {
-    bool corners = false;  // the vertices' corner sharpness, not the edges'
-    double start = 0.0, value = 0.0;
-    glm::vec2 start_cursor{0.0f};
-    std::string typed;
-    std::shared_ptr<const CovarianceMesh> shown;  // the mesh the surface was planned for
-    // The plans of the document's topology, re-planned for each value only around the changed
-    // edges or corners (core/plans/sharpness_replanner.h); made at the first change.
-    std::shared_ptr<SharpnessReplanner> replanner;
-  };
-  std::optional<CreaseTool> crease_;
-  /// The surface of `mesh` (the document's topology, other sharpness) from the tool's replanner.
-  PlannedSurface crease_surface(CreaseTool& tool, const CovarianceMesh& mesh);
+  std::shared_ptr<const CovarianceMesh> preview_;
+  std::vector<int> preview_selection_;
   // File → Simplify… and Fit to…: the dialog, its job and the settings each last had.
   struct SimplifySettings {
     int vertices = 0;  // 0: a tenth of the mesh's
@@ -268,11 +227,11 @@ private:
   };
   FitSettings fit_settings_;
   JobDialog job_dialog_;
-  bool job_is_fit_ = false;     // the dialog open is Fit to…: once applied, its target is shown
-  TargetPoints target_points_;  // the dense target shown as points, and their distances
-  std::string popup_request_;   // a popup menu (Delete, Merge, Add) a key asked for
+  bool job_is_fit_ = false;                        // the dialog open is Fit to…: once applied, its target is shown
+  TargetPoints target_points_;                     // the dense target shown as points, and their distances
+  std::string popup_request_;                      // a popup menu (Delete, Merge, Add) a key asked for
   double merge_distance_ = kDefaultMergeDistance;  // the Merge menu's By distance (of the diagonal)
-  std::string last_summary_;    // what the last operation did
+  std::string last_summary_;                       // what the last operation did
 
   Clock::time_point frame_input_time_{}, last_frame_time_ = Clock::now();
   Action pending_;

@@ -1,6 +1,6 @@
 // The editor as a modeller: the Mesh menu's operations, each one undo step that replaces the mesh,
 // with its summary or refusal in the status bar and the Inspector. The modal tools that follow the
-// mouse are in editor_modal_tools.cpp.
+// mouse are in ui/tools/, started here and run by editor_modal_tools.cpp.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -15,15 +15,18 @@
 #include "core/modelling/bridge.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/edge_operations.h"
-#include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
-#include "core/modelling/inset.h"
-#include "core/modelling/loop_cut.h"
 #include "core/modelling/merge_vertices.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/primitives.h"
 #include "core/modelling/subdivide_mesh.h"
+#include "ui/editing/crease_tool.h"
 #include "ui/editor/editor_app.h"
+#include "ui/tools/bevel_tool.h"
+#include "ui/tools/inset_tool.h"
+#include "ui/tools/loop_cut_tool.h"
+#include "ui/tools/sharpness_tool.h"
+#include "ui/tools/transform_tool.h"
 
 namespace gps {
 
@@ -37,12 +40,6 @@ std::array<int, 2> selected_edge(const std::vector<int>& selected) {
 
 }  // namespace
 
-Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
-  Vec3 sum = Vec3::Zero();
-  for (const int v : vertices) sum += mesh.mean(size_t(v));
-  return vertices.empty() ? sum : Vec3(sum / double(vertices.size()));
-}
-
 void EditorApp::build_modelling_commands() {
   const auto key = [](int k, bool ctrl = false, bool shift = false, bool alt = false) {
     return Shortcut{k, ctrl, shift, alt};
@@ -53,13 +50,19 @@ void EditorApp::build_modelling_commands() {
   const auto op = [this](const std::string& name, std::function<Modelled(const CovarianceMesh&)> run) {
     return [this, name, run] { run_operation(name, run); };
   };
+  const auto transform = [this](TransformKind kind) {
+    return [this, kind] {
+      if (selection_.empty()) return;
+      start_tool([&](ToolContext& ctx) { return std::make_unique<TransformTool>(kind, transform_pivot_, ctx); });
+    };
+  };
   t.add({"Mesh",
-         "Grab (G; then X Y Z, digits, Enter)",
+         "Grab (G; then X Y Z, digits, Enter; G again slides)",
          {key(GLFW_KEY_G)},
-         [this] { start_transform(TransformKind::grab); },
+         transform(TransformKind::grab),
          selected});
-  t.add({"Mesh", "Scale (S)", {key(GLFW_KEY_S)}, [this] { start_transform(TransformKind::scale); }, selected});
-  t.add({"Mesh", "Rotate (R)", {key(GLFW_KEY_R)}, [this] { start_transform(TransformKind::rotate); }, selected});
+  t.add({"Mesh", "Scale (S)", {key(GLFW_KEY_S)}, transform(TransformKind::scale), selected});
+  t.add({"Mesh", "Rotate (R)", {key(GLFW_KEY_R)}, transform(TransformKind::rotate), selected});
   const auto pivot = [this](TransformPivot p) {
     return [this, p] {
       transform_pivot_ = p;
@@ -89,20 +92,41 @@ void EditorApp::build_modelling_commands() {
            transform_pivot_ = TransformPivot((int(transform_pivot_) + 1) % 3);
            set_status(std::string("pivot: ") + pivot_name(transform_pivot_), false);
          }});
-  t.add({"Mesh", "Extrude", {key(GLFW_KEY_E)}, [this] { start_extrude(); }, selected, nullptr, nullptr, true});
+  t.add({"Mesh",
+         "Extrude",
+         {key(GLFW_KEY_E)},
+         [this] { start_tool(TransformTool::extrude); },
+         selected,
+         nullptr,
+         nullptr,
+         true});
   const auto has_edge = [this] { return !edges_within(document_.mesh(), selection_.vertices()).empty(); };
   t.add({"Mesh",
          "Crease (Shift+E; drag or type 0-10, 10 = ∞)",
          {key(GLFW_KEY_E, false, true)},
-         [this] { start_crease(false); },
+         [this] { start_tool([](ToolContext& ctx) { return SharpnessTool::start(ctx, false); }); },
          has_edge});
   t.add({"Mesh",
          "Corner sharpness (Ctrl+Shift+V)",
          {key(GLFW_KEY_V, true, true)},
-         [this] { start_crease(true); },
+         [this] {
+           if (!selection_.empty()) start_tool([](ToolContext& ctx) { return SharpnessTool::start(ctx, true); });
+         },
          selected});
-  t.add({"Mesh", "Loop cut (then wheel: cuts)", {key(GLFW_KEY_R, true)}, [this] { start_loop_cut(); }});
-  t.add({"Mesh", "Inset faces", {key(GLFW_KEY_I)}, [this] { start_inset(); }, selected});
+  t.add({"Mesh", "Loop cut (then wheel: cuts)", {key(GLFW_KEY_R, true)}, [this] {
+           start_tool([](ToolContext& ctx) { return std::make_unique<LoopCutTool>(ctx); });
+         }});
+  t.add({"Mesh", "Inset faces", {key(GLFW_KEY_I)}, [this] { start_tool(InsetTool::start); }, selected});
+  t.add({"Mesh",
+         "Bevel edges (Ctrl+B; then wheel: segments, P: profile)",
+         {key(GLFW_KEY_B, true)},
+         [this] { start_tool([](ToolContext& ctx) { return BevelTool::start(ctx, false); }); },
+         selected});
+  t.add({"Mesh",
+         "Bevel vertices (Ctrl+Shift+B)",
+         {key(GLFW_KEY_B, true, true)},
+         [this] { start_tool([](ToolContext& ctx) { return BevelTool::start(ctx, true); }); },
+         selected});
   t.add({"Mesh",
          "Fill",
          {key(GLFW_KEY_F)},
@@ -205,7 +229,11 @@ void EditorApp::draw_add_items() {
 
 bool EditorApp::run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
                               SharpnessReplanner* replanner) {
-  if (modal_active()) return false;
+  return !modal_active() && operate(name, run, replanner);
+}
+
+bool EditorApp::operate(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
+                        SharpnessReplanner* replanner) {
   try {
     install(run(document_.mesh()), replanner);
   } catch (const Error& e) {  // refused: nothing changed, no undo step
@@ -224,6 +252,8 @@ void EditorApp::install(const Modelled& result, SharpnessReplanner* replanner) {
     renderer_->set_mesh(result.mesh, view_.plans());
   }
   surface_changed();
+  preview_.reset();
+  preview_selection_.clear();
   document_.apply(result, selection_.vertices());
   last_summary_ = result.summary;
   topology_changed(result.selection);
@@ -247,14 +277,20 @@ void EditorApp::rebuild_after_undo(const std::vector<int>& selection) {
   topology_changed(selection);
 }
 
+void EditorApp::apply_sharpness(bool corners, double sharpness) {
+  const std::vector<int> before = selection_.vertices();
+  const bool done = run_operation(corners ? "corner" : "crease", [&](const CovarianceMesh& m) {
+    return sharpened_selection(m, before, corners, sharpness, reach_options_);
+  });
+  if (done) selection_.select(before, false);  // the selection as it was (set_crease selects the edges' ends)
+}
+
 void EditorApp::operation_note(const std::string& message, bool error) {
   set_status(message, error);
   inspector_.set_note(message, error);
 }
 
-bool EditorApp::modal_active() const { return transform_ || loop_cut_ || inset_ || crease_; }
-
-// The popup menus of X, M and Shift+A, and the loop cut's ring preview.
+// The popup menus of X, M and Shift+A, and what the modal tool draws (a loop cut's ring).
 
 void EditorApp::draw_modelling_overlay() {
   if (!popup_request_.empty()) {
@@ -273,21 +309,7 @@ void EditorApp::draw_modelling_overlay() {
     draw_add_items();
     ImGui::EndPopup();
   }
-  if (!loop_cut_ || loop_cut_->sliding || loop_cut_->ring.edges.empty()) return;
-  const Viewport v = viewport();
-  const CovarianceMesh& mesh = document_.mesh();
-  ImDrawList* draw = ImGui::GetBackgroundDrawList();
-  const auto& edges = loop_cut_->ring.edges;
-  for (int k = 1; k <= loop_cut_->cuts; ++k) {
-    const double t = double(k) / double(loop_cut_->cuts + 1);
-    std::vector<ImVec2> points;
-    for (const auto& [a, b] : edges) {
-      const Vec3 p = (1.0 - t) * mesh.mean(size_t(a)) + t * mesh.mean(size_t(b));
-      if (const auto q = project_to_pixel(v.camera, v.width, v.height, p)) points.emplace_back(q->x, q->y);
-    }
-    draw->AddPolyline(points.data(), int(points.size()), IM_COL32(255, 210, 60, 255),
-                      loop_cut_->ring.closed ? ImDrawFlags_Closed : ImDrawFlags_None, 2.0f);
-  }
+  if (tool_) tool_->draw_overlay(*ImGui::GetBackgroundDrawList(), tool_context());
 }
 
 }  // namespace gps

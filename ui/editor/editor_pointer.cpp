@@ -70,7 +70,7 @@ bool EditorApp::vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, 
 
 void EditorApp::handle_event(const InputEvent& e) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (modal_event(e)) return;  // G / S / R, extrude, loop cut, inset (editor_modelling.cpp)
+  if (modal_event(e)) return;  // the modal tool running takes it first
   if (job_dialog_.is_open() || repair_prompt_.is_open()) {  // their keys are Dear ImGui's; a mesh dropped now waits
     if (e.type == InputEvent::Type::drop) set_status("close the dialog first", true);
     if (e.type == InputEvent::Type::key_press || e.type == InputEvent::Type::drop) return;
@@ -261,8 +261,8 @@ void EditorApp::draw_handles_and_box() {
     if (gizmo && mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
       lit = hit_handle(v, input_.cursor, *gizmo, selection_.active(), kPickRadius);
   }
-  if (view_.draw.mesh_lines) draw_crease_overlay(*draw, v, crease_ ? *crease_->shown : document_.mesh());
-  draw_selection_overlay(*draw, v, document_.mesh(), selection_.vertices(), select_mode_);
+  if (view_.draw.mesh_lines) draw_crease_overlay(*draw, v, shown_mesh());
+  draw_selection_overlay(*draw, v, shown_mesh(), preview_ ? preview_selection_ : selection_.vertices(), select_mode_);
   draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, lit);
   gizmo_box_.reset();
   if (gizmo) {  // the gizmo's extent on screen, its dots included

@@ -86,7 +86,7 @@ void EditorApp::update_target_points() {
   const TargetPoints::Taken taken = !t.shown ? TargetPoints::Taken{} : target_points_.poll(
       Clock::now(),
       [this]() -> std::shared_ptr<const CovarianceMesh> {
-        if (crease_ && crease_->shown) return crease_->shown;  // the sharpness previewed
+        if (preview_) return preview_;  // a modal tool's preview (a crease's sharpness, a bevel)
         return std::make_shared<const CovarianceMesh>(document_.mesh());
       },
       view_.plans());

@@ -19,6 +19,8 @@ constexpr const char* kMouseBindings[][2] = {
     {"G / S / R, then X, Y, Z / Shift+X, Y, Z", "grab, scale, rotate; along that axis / in the plane normal to it"},
     {"  ... then digits, Enter / click", "type the amount (distance, factor, degrees); Escape / right click cancels"},
     {"Ctrl+R, wheel, click, move, click", "loop cut: cuts under the cursor, then slide"},
+    {"G G, move or digits, Enter / click", "slide the selected edges along their faces, or one vertex along an edge"},
+    {"Ctrl+B / Ctrl+Shift+B, move or digits", "bevel the selected edges / vertices; wheel: segments, P: profile"},
     {"Right / middle drag, Alt + left drag", "orbit"},
     {"Shift + right / middle drag", "pan"},
     {"Wheel", "zoom toward the cursor"},

@@ -1,0 +1,272 @@
+// The bevel and slide tools without a window, through a ToolContext over a document: a typed value
+// and Enter give exactly core's operation as one undo step (undone: the mesh before, exactly); Esc
+// leaves the document untouched with no undo step; a refusal changes nothing; G G hands a grab over
+// to the slide; the mouse's bevel width is the distance the cursor gains from the centre.
+#include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "../support/mesh_checks.h"
+#include "../support/temp_dir.h"
+#include "core/io/mesh_io.h"
+#include "core/modelling/bevel.h"
+#include "core/modelling/loop_cut.h"
+#include "core/modelling/mesh_queries.h"
+#include "core/modelling/samples.h"
+#include "core/modelling/slide.h"
+#include "ui/document/editor_document.h"
+#include "ui/editing/selection.h"
+#include "ui/tools/bevel_tool.h"
+#include "ui/tools/slide_tool.h"
+#include "ui/tools/transform_tool.h"
+
+namespace gps {
+namespace {
+
+InputEvent text(char c) {
+  InputEvent e;
+  e.type = InputEvent::Type::text;
+  e.codepoint = unsigned(c);
+  return e;
+}
+
+InputEvent key(int k) {
+  InputEvent e;
+  e.type = InputEvent::Type::key_press;
+  e.key = k;
+  return e;
+}
+
+// A document and selection with the editor's services as a ToolContext that records what it was asked.
+struct Editor {
+  test::TempDir dir;
+  EditorDocument document;
+  Selection selection;
+  ReachOptions reach;
+  std::shared_ptr<const CovarianceMesh> shown;  // the preview shown (nullptr: the document)
+  int installed = 0;
+  std::string said;  // the last report or note
+
+  explicit Editor(const CovarianceMesh& mesh, const std::vector<int>& selected) {
+    write_mesh(dir.file("mesh.ply"), mesh);
+    document.open(dir.file("mesh.ply"));
+    selection.select(selected, false);
+  }
+  ToolContext context() {
+    ToolContext c(document, selection, reach);
+    c.install = [this](const Modelled& result, SharpnessReplanner*) {
+      document.apply(result, selection.vertices());
+      selection.select(result.selection, false);
+      shown.reset();
+      ++installed;
+    };
+    c.operate = [this, install = c.install](const std::string& name,
+                                            const std::function<Modelled(const CovarianceMesh&)>& run,
+                                            SharpnessReplanner* replanner) {
+      try {
+        install(run(document.mesh()), replanner);
+      } catch (const Error& e) {
+        said = name + " refused: " + e.what();
+        return false;
+      }
+      said = name;
+      return true;
+    };
+    c.show_preview = [this](std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>&,
+                            std::optional<PlannedSurface>) { shown = std::move(mesh); };
+    c.show_document = [this](std::optional<PlannedSurface>) { shown.reset(); };
+    c.rebuild = [](const std::vector<int>&) {};
+    c.report = c.note = c.show_status = [this](const std::string& message, bool) { said = message; };
+    return c;
+  }
+  ToolResult send(ModalTool& tool, const InputEvent& e) {
+    ToolContext c = context();
+    return tool.handle(e, c);
+  }
+  void type(ModalTool& tool, const std::string& typed) {
+    for (const char ch : typed) EXPECT_EQ(send(tool, text(ch)), ToolResult::consumed);
+  }
+};
+
+CovarianceMesh cube() { return make_sample("cube"); }
+
+BevelOptions width(double w, int segments = 1) {
+  BevelOptions o;
+  o.width = w;
+  o.segments = segments;
+  return o;
+}
+
+TEST(BevelTool, TypedWidthAndEnterIsCoresBevelAsOneUndoStep) {
+  Editor editor(cube(), {6, 7});
+  ToolContext c = editor.context();
+  const auto tool = BevelTool::start(c, false);
+  ASSERT_TRUE(tool);
+  EXPECT_FALSE(editor.shown);  // width 0: the mesh before
+  editor.type(*tool, "0.25");
+  ASSERT_TRUE(editor.shown);
+  const Modelled expected = bevel_edges(cube(), {{6, 7}}, width(0.25));
+  EXPECT_TRUE(test::same_mesh(*editor.shown, expected.mesh));
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cube())) << "a preview leaves the document";
+  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_EQ(editor.installed, 1);
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), expected.mesh));
+  EXPECT_EQ(editor.selection.vertices(), expected.selection);
+  editor.document.undo();
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cube()));
+  EXPECT_FALSE(editor.document.can_undo());
+}
+
+TEST(BevelTool, TheWheelSetsTheSegmentsRecomputedFromTheMeshBefore) {
+  Editor editor(cube(), {6, 7});
+  ToolContext c = editor.context();
+  const auto tool = BevelTool::start(c, false);
+  editor.type(*tool, "0.25");
+  InputEvent wheel;
+  wheel.type = InputEvent::Type::scroll;
+  wheel.steps = 1.0f;
+  EXPECT_EQ(editor.send(*tool, wheel), ToolResult::consumed);
+  EXPECT_EQ(editor.send(*tool, wheel), ToolResult::consumed);
+  EXPECT_TRUE(test::same_mesh(*editor.shown, bevel_edges(cube(), {{6, 7}}, width(0.25, 3)).mesh));
+  wheel.steps = -1.0f;
+  EXPECT_EQ(editor.send(*tool, wheel), ToolResult::consumed);
+  EXPECT_TRUE(test::same_mesh(*editor.shown, bevel_edges(cube(), {{6, 7}}, width(0.25, 2)).mesh));
+}
+
+TEST(BevelTool, EscapeLeavesTheDocumentWithoutAnUndoStep) {
+  Editor editor(cube(), {6, 7});
+  ToolContext c = editor.context();
+  const auto tool = BevelTool::start(c, false);
+  editor.type(*tool, "0.25");
+  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ESCAPE)), ToolResult::cancelled);
+  EXPECT_FALSE(editor.shown);
+  EXPECT_EQ(editor.installed, 0);
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cube()));
+  EXPECT_FALSE(editor.document.can_undo());
+  EXPECT_FALSE(editor.document.dirty());
+}
+
+TEST(BevelTool, ARefusalIsShownAndConfirmingItChangesNothing) {
+  Editor editor(cube(), {6, 7});
+  ToolContext c = editor.context();
+  const auto tool = BevelTool::start(c, false);
+  editor.type(*tool, "0.25");
+  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_P)), ToolResult::consumed);  // the straight profile
+  BevelOptions straight = width(0.25);
+  straight.profile = 0.25;
+  EXPECT_TRUE(test::same_mesh(*editor.shown, bevel_edges(cube(), {{6, 7}}, straight).mesh));
+  // A vertex on the boundary (a grid's corner): core refuses it, whatever the width.
+  const CovarianceMesh plane = make_sample("grid", 16);
+  Editor flat(plane, {0});
+  ToolContext f = flat.context();
+  const auto refused = BevelTool::start(f, true);
+  ASSERT_TRUE(refused);
+  flat.type(*refused, "0.1");
+  EXPECT_TRUE(refused->error());
+  EXPECT_FALSE(flat.shown);
+  EXPECT_EQ(flat.send(*refused, key(GLFW_KEY_ENTER)), ToolResult::cancelled);
+  EXPECT_EQ(flat.installed, 0);
+  EXPECT_TRUE(test::same_mesh(flat.document.mesh(), plane));
+  EXPECT_NE(flat.said.find("nothing done"), std::string::npos) << flat.said;
+}
+
+TEST(BevelTool, NoEdgeSelectedIsRefusedAtOnce) {
+  Editor editor(cube(), {6});
+  ToolContext c = editor.context();
+  EXPECT_FALSE(BevelTool::start(c, false));
+  EXPECT_NE(editor.said.find("bevel refused"), std::string::npos) << editor.said;
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cube()));
+}
+
+TEST(BevelTool, TheMouseWidthIsTheDistanceGainedFromTheCentre) {
+  const glm::vec2 centre(100.0f, 100.0f), start(130.0f, 140.0f);  // 50 pixels from the centre
+  EXPECT_DOUBLE_EQ(BevelTool::width_from_cursor(start, glm::vec2(160.0f, 180.0f), centre, 0.01), 0.5);
+  EXPECT_EQ(BevelTool::width_from_cursor(start, glm::vec2(110.0f, 100.0f), centre, 0.01), 0.0);  // nearer: none
+  EXPECT_EQ(BevelTool::width_from_cursor(start, start, centre, 0.01), 0.0);
+}
+
+// A cube cut once across its vertical edges, and its middle loop.
+struct CutCube {
+  CovarianceMesh mesh;
+  std::vector<int> loop;
+  CutCube() {
+    const CovarianceMesh c = cube();
+    std::array<int, 2> vertical{-1, -1};
+    for (const auto e : c.mesh.edges())
+      if (c.mean(size_t(e.v0().idx())).y() != c.mean(size_t(e.v1().idx())).y()) vertical = {e.v0().idx(), e.v1().idx()};
+    const Modelled cut = loop_cut(c, vertical[0], vertical[1], 1);
+    mesh = cut.mesh;
+    loop = cut.selection;
+  }
+};
+
+TEST(SlideTool, TypedFactorIsCoresEdgeSlideAsOneUndoStep) {
+  const CutCube cut;
+  ASSERT_EQ(cut.loop.size(), 4u);
+  Editor editor(cut.mesh, cut.loop);
+  ToolContext c = editor.context();
+  const auto tool = SlideTool::start(c);
+  ASSERT_TRUE(tool);
+  editor.type(*tool, "-0.5");
+  EXPECT_FALSE(tool->error()) << tool->status();
+  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  const CovarianceMesh expected = edge_slide(cut.mesh, edges_within(cut.mesh, cut.loop), -0.5).mesh;
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), expected));
+  editor.document.undo();
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cut.mesh));
+  EXPECT_FALSE(editor.document.can_undo());
+}
+
+TEST(SlideTool, AFactorOutOfRangeIsShownAndEscapeRestores) {
+  const CutCube cut;
+  Editor editor(cut.mesh, cut.loop);
+  ToolContext c = editor.context();
+  const auto tool = SlideTool::start(c);
+  editor.type(*tool, "0.5");
+  EXPECT_FALSE(test::same_mesh(editor.document.mesh(), cut.mesh));
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_BACKSPACE)), ToolResult::consumed);
+  editor.type(*tool, "2");  // |factor| > 1: refused, the mesh before shown
+  EXPECT_TRUE(tool->error()) << tool->status();
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cut.mesh));
+  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ESCAPE)), ToolResult::cancelled);
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cut.mesh));
+  EXPECT_FALSE(editor.document.can_undo());
+}
+
+TEST(SlideTool, OneVertexSlidesAlongAnEdge) {
+  const CovarianceMesh before = cube();
+  Editor editor(before, {6});
+  ToolContext c = editor.context();
+  const auto tool = SlideTool::start(c);
+  ASSERT_TRUE(tool);
+  editor.type(*tool, "1");  // all the way: onto a neighbour's Gaussian
+  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  const CovarianceMesh& slid = editor.document.mesh();
+  int landed = -1;
+  for (const auto u : before.mesh.vv_range(before.mesh.vertex_handle(6u)))
+    if (slid.mean(6) == before.mean(size_t(u.idx()))) landed = u.idx();
+  EXPECT_GE(landed, 0);
+  for (size_t v = 0; v < slid.n_vertices(); ++v) {
+    if (v == 6) continue;
+    EXPECT_EQ(slid.mean(v), before.mean(v)) << v;
+  }
+}
+
+TEST(SlideTool, GPressedAgainDuringAGrabSlides) {
+  const CutCube cut;
+  Editor editor(cut.mesh, cut.loop);
+  ToolContext c = editor.context();
+  TransformTool grab(TransformKind::grab, TransformPivot::median, c);
+  ToolContext again = editor.context();
+  EXPECT_EQ(grab.handle(key(GLFW_KEY_G), again), ToolResult::replaced);
+  ASSERT_TRUE(again.next);
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cut.mesh)) << "the grab undone";
+  editor.type(*again.next, "0.5");
+  EXPECT_EQ(editor.send(*again.next, key(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_TRUE(
+      test::same_mesh(editor.document.mesh(), edge_slide(cut.mesh, edges_within(cut.mesh, cut.loop), 0.5).mesh));
+}
+
+}  // namespace
+}  // namespace gps

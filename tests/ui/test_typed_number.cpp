@@ -1,0 +1,70 @@
+// The number typed into a modal tool: digits, point and minus as text, Backspace, and its value or
+// NaN while it is not yet a number.
+#include "ui/tools/typed_number.h"
+
+#include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace gps {
+namespace {
+
+InputEvent text(char c) {
+  InputEvent e;
+  e.type = InputEvent::Type::text;
+  e.codepoint = unsigned(c);
+  return e;
+}
+
+InputEvent key(int k) {
+  InputEvent e;
+  e.type = InputEvent::Type::key_press;
+  e.key = k;
+  return e;
+}
+
+TEST(TypedNumber, DigitsPointAndMinusMakeTheValue) {
+  TypedNumber typed;
+  EXPECT_TRUE(typed.empty());
+  EXPECT_TRUE(std::isnan(typed.value()));
+  for (const char c : std::string("-0.25")) EXPECT_TRUE(typed.handle(text(c)));
+  EXPECT_EQ(typed.text(), "-0.25");
+  EXPECT_EQ(typed.value(), -0.25);
+  EXPECT_EQ(typed.shown(), "  [-0.25]");
+}
+
+TEST(TypedNumber, OtherCharactersAndKeysAreNotTaken) {
+  TypedNumber typed;
+  EXPECT_FALSE(typed.handle(text('x')));
+  EXPECT_FALSE(typed.handle(text('e')));  // no exponents: E is a command key
+  EXPECT_FALSE(typed.handle(key(GLFW_KEY_ENTER)));
+  EXPECT_FALSE(typed.handle(key(GLFW_KEY_BACKSPACE)));  // nothing to take back
+  EXPECT_TRUE(typed.empty());
+  EXPECT_EQ(typed.shown(), "");
+}
+
+TEST(TypedNumber, BackspaceTakesTheLastCharacterBack) {
+  TypedNumber typed;
+  for (const char c : std::string("12")) typed.handle(text(c));
+  EXPECT_TRUE(typed.handle(key(GLFW_KEY_BACKSPACE)));
+  EXPECT_EQ(typed.value(), 1.0);
+  EXPECT_TRUE(typed.handle(key(GLFW_KEY_BACKSPACE)));
+  EXPECT_TRUE(typed.empty());
+  EXPECT_TRUE(std::isnan(typed.value()));
+}
+
+TEST(TypedNumber, TextThatIsNotYetANumberIsNaN) {
+  for (const std::string partial : {"-", ".", "-.", "1-", "1.2.3", "--1"}) {
+    TypedNumber typed;
+    for (const char c : partial) typed.handle(text(c));
+    EXPECT_EQ(typed.text(), partial);
+    EXPECT_TRUE(std::isnan(typed.value())) << partial;
+  }
+  TypedNumber point_five;
+  for (const char c : std::string(".5")) point_five.handle(text(c));
+  EXPECT_EQ(point_five.value(), 0.5);
+}
+
+}  // namespace
+}  // namespace gps

@@ -1,0 +1,240 @@
+// The modal tools of ui/tools/ that bevel and slide, in a real window under Xvfb as a designer uses
+// them: Ctrl+B on one edge of the cube (edge mode, a click beside the edge), a typed width or the
+// mouse, the wheel for segments, Enter; Ctrl+Shift+B on a corner; Esc and a right click change
+// nothing; Ctrl+Z restores the file byte for byte. G G slides an edge loop (Alt+click selects it) by a
+// typed factor or the mouse, keeping the counts. Each saved result is checked against core's operation
+// on the file as opened. Screenshots kept in build/test-artefacts/EditorTools/.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "../support/editor_driver.h"
+#include "../support/mesh_checks.h"
+#include "core/io/mesh_io.h"
+#include "core/io/text_file.h"
+#include "core/modelling/bevel.h"
+#include "core/modelling/loop_cut.h"
+#include "core/modelling/mesh_queries.h"
+#include "core/modelling/samples.h"
+#include "core/modelling/slide.h"
+
+namespace gps {
+namespace {
+
+using test::artefact;
+using test::editor_view;
+using test::Events;
+using test::pixel_of;
+
+constexpr int kWidth = test::kWindowWidth, kHeight = test::kWindowHeight;
+
+class EditorTools : public ::testing::Test {
+protected:
+  void use_mesh(const CovarianceMesh& mesh) {
+    write_mesh(dir_.file("original.ply"), mesh);
+    original_ = read_mesh(dir_.file("original.ply"));
+    view_ = editor_view(original_);
+  }
+  void SetUp() override { use_mesh(make_sample("cube")); }
+  glm::vec2 pixel_at(const std::vector<int>& vertices) const {
+    return pixel_of(view_, centre_of_vertices(original_, vertices));
+  }
+  // The cube's edge 6–7 (top, front: +y, +z) selected in edge mode by a click beside its middle.
+  Events edge_selected() const {
+    Events e;
+    e.key("2").wait().click(pixel_at({6, 7}) + glm::vec2(1.0f, 3.0f)).wait();
+    return e;
+  }
+  // Plays the events on `mesh` (a file of the test folder), saves to saved.ply (and a screenshot when
+  // named); returns the saved mesh.
+  CovarianceMesh play(const Events& events, const std::string& screenshot = "",
+                      const std::string& mesh = "original.ply") const {
+    const std::string extra =
+        "--save " + dir_.file("saved.ply") + (screenshot.empty() ? "" : " --screenshot " + artefact(screenshot));
+    const auto r = test::play_editor(dir_, dir_.file(mesh), events, kWidth, kHeight, extra);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    output_ = r.output;
+    return read_mesh(dir_.file("saved.ply"));
+  }
+  bool saved_is_original() const {
+    return read_text_file(dir_.file("saved.ply")) == read_text_file(dir_.file("original.ply"));
+  }
+  static BevelOptions width(double w, int segments = 1) {
+    BevelOptions o;
+    o.width = w;
+    o.segments = segments;
+    return o;
+  }
+
+  test::TempDir dir_;
+  CovarianceMesh original_;
+  Viewport view_;
+  mutable std::string output_;
+};
+
+// One cube edge, 1 segment, a typed width: Blender's 10 vertices and 7 faces, closed and outward,
+// exactly core's bevel of that edge.
+TEST_F(EditorTools, BevelOfACubeEdgeMakesTheBand) {
+  Events bevel = edge_selected();
+  bevel.key("ctrl+b").wait().text("0.25").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(bevel, "cube_edge_bevelled.png");
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, 10);
+  EXPECT_EQ(shape.faces, 7);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_EQ(shape.euler(), 2);
+  EXPECT_GT(test::signed_volume(saved), 0.0);
+  EXPECT_TRUE(test::same_mesh(saved, bevel_edges(original_, {{6, 7}}, width(0.25)).mesh));
+  EXPECT_NE(output_.find("bevel: "), std::string::npos) << output_;
+}
+
+// The mouse moved away from the edge's middle sets a width: the band is made (a bevel of some width
+// > 0, the counts of one segment), and the summary printed.
+TEST_F(EditorTools, BevelWidthFollowsTheMouse) {
+  const glm::vec2 middle = pixel_at({6, 7}), start = middle + glm::vec2(20.0f, 20.0f);
+  Events bevel = edge_selected();
+  bevel.move(start).wait().key("ctrl+b").wait();
+  for (int k = 1; k <= 4; ++k) bevel.move(start + float(k) * glm::vec2(8.0f, 8.0f)).wait();
+  bevel.key("enter").wait(3);
+  const CovarianceMesh saved = play(bevel, "cube_edge_mouse_bevel.png");
+  EXPECT_EQ(saved.n_vertices(), 10u);
+  EXPECT_EQ(saved.mesh.n_faces(), 7u);
+  // The cube's corners 6 and 7 are gone (the bevel replaced them by the band's ends).
+  for (size_t v = 0; v < saved.n_vertices(); ++v) {
+    EXPECT_GT((saved.mean(v) - original_.mean(6)).norm(), 1e-3) << v;
+    EXPECT_GT((saved.mean(v) - original_.mean(7)).norm(), 1e-3) << v;
+  }
+}
+
+// The wheel adds segments (two steps: 3), each a row of quads across the band.
+TEST_F(EditorTools, BevelWheelSegmentsChangeTheCount) {
+  Events bevel = edge_selected();
+  bevel.key("ctrl+b").wait().scroll(pixel_at({6, 7}), 1.0f).wait().scroll(pixel_at({6, 7}), 1.0f).wait();
+  bevel.text("0.25").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(bevel, "cube_edge_3_segments.png");
+  const CovarianceMesh expected = bevel_edges(original_, {{6, 7}}, width(0.25, 3)).mesh;
+  EXPECT_GT(saved.n_vertices(), 10u);
+  EXPECT_EQ(saved.n_vertices(), expected.n_vertices());
+  EXPECT_EQ(saved.mesh.n_faces(), expected.mesh.n_faces());
+  EXPECT_TRUE(test::same_mesh(saved, expected));
+}
+
+// Ctrl+Shift+B on the corner nearest the camera: the corner cut off (10 vertices, 7 faces).
+TEST_F(EditorTools, BevelOfACubeVertexCutsTheCorner) {
+  int corner = 0;  // the camera looks from +x, +y, +z
+  for (size_t v = 0; v < original_.n_vertices(); ++v)
+    if (original_.mean(v).sum() > original_.mean(size_t(corner)).sum()) corner = int(v);
+  Events bevel;
+  bevel.key("1").wait().click(pixel_at({corner})).wait();
+  bevel.key("ctrl+shift+b").wait().text("0.5").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(bevel, "cube_corner_bevelled.png");
+  EXPECT_EQ(saved.n_vertices(), 10u);
+  EXPECT_EQ(saved.mesh.n_faces(), 7u);
+  EXPECT_TRUE(test::same_mesh(saved, bevel_vertices(original_, {corner}, width(0.5)).mesh));
+}
+
+// Esc after a typed width, and a right click after a mouse width: the file as it was, byte for byte.
+TEST_F(EditorTools, BevelCancelledLeavesTheFileByteIdentical) {
+  Events cancelled = edge_selected();
+  cancelled.key("ctrl+b").wait().text("0.25").wait().key("escape").wait();
+  const glm::vec2 start = pixel_at({6, 7}) + glm::vec2(20.0f, 20.0f);
+  cancelled.move(start).wait().key("ctrl+b").wait().move(start + glm::vec2(40.0f, 40.0f)).wait();
+  cancelled.add(R"({"type": "click", "button": "right", "x": )" + std::to_string(start.x + 40.0f) + R"(, "y": )" +
+                std::to_string(start.y + 40.0f) + "}");
+  cancelled.wait(3);
+  play(cancelled, "cube_bevel_cancelled.png");
+  EXPECT_TRUE(saved_is_original());
+}
+
+// A bevel confirmed, saved in place, then undone (Ctrl+Z) and saved again: the original file.
+TEST_F(EditorTools, BevelUndoneRestoresTheFile) {
+  std::filesystem::copy_file(dir_.file("original.ply"), dir_.file("work.ply"));
+  Events undone = edge_selected();
+  undone.key("ctrl+b").wait().text("0.25").wait().key("enter").wait();
+  undone.key("ctrl+s").wait().key("ctrl+z").wait(3);
+  play(undone, "", "work.ply");
+  EXPECT_EQ(read_mesh(dir_.file("work.ply")).n_vertices(), 10u);  // the bevel, saved in place
+  EXPECT_TRUE(saved_is_original());
+}
+
+// Bevel with no edge selected (one vertex): refused in the status line, nothing changed.
+TEST_F(EditorTools, BevelOfNoEdgeIsRefused) {
+  Events refused;
+  refused.key("1").wait().click(pixel_at({6})).wait().key("ctrl+b").wait().key("enter").wait(3);
+  play(refused);
+  EXPECT_TRUE(saved_is_original());
+  EXPECT_NE(output_.find("bevel refused"), std::string::npos) << output_;
+}
+
+class EditorToolsSlide : public EditorTools {
+protected:
+  // A cube with one loop cut across its vertical edges: the middle loop, its vertices and edges.
+  void SetUp() override {
+    const CovarianceMesh cube = make_sample("cube");
+    std::array<int, 2> vertical{-1, -1};
+    for (const auto e : cube.mesh.edges()) {
+      const int a = e.v0().idx(), b = e.v1().idx();
+      if (cube.mean(size_t(a)).y() != cube.mean(size_t(b)).y()) vertical = {a, b};
+    }
+    use_mesh(loop_cut(cube, vertical[0], vertical[1], 1).mesh);
+    for (size_t v = 0; v < original_.n_vertices(); ++v)
+      if (original_.mean(v).y() == 0.0) loop_.push_back(int(v));
+    ASSERT_EQ(loop_.size(), 4u);
+    loop_edges_ = edges_within(original_, loop_);
+    ASSERT_EQ(loop_edges_.size(), 4u);
+  }
+  // Alt+click on the loop's front edge (the one whose middle is nearest the camera) selects the loop.
+  Events loop_selected() const {
+    std::array<int, 2> front = loop_edges_.front();
+    const Vec3 eye = to_vec(view_.camera.eye());
+    const auto distance = [&](const std::array<int, 2>& e) {
+      return (0.5 * (original_.mean(size_t(e[0])) + original_.mean(size_t(e[1]))) - eye).norm();
+    };
+    for (const auto& e : loop_edges_)
+      if (distance(e) < distance(front)) front = e;
+    Events events;
+    events.click(pixel_at({front[0], front[1]}), "alt").wait();
+    return events;
+  }
+  std::vector<int> loop_;
+  std::vector<std::array<int, 2>> loop_edges_;
+};
+
+// G G and a typed 0.5: the loop halfway toward the side the first edge's faces lie on, exactly core's
+// edge slide; the counts kept.
+TEST_F(EditorToolsSlide, SlideGGSlidesAnEdgeLoop) {
+  Events slide = loop_selected();
+  slide.key("g").wait().key("g").wait().text("0.5").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(slide, "cube_loop_slid.png");
+  EXPECT_EQ(saved.n_vertices(), original_.n_vertices());
+  EXPECT_EQ(saved.mesh.n_faces(), original_.mesh.n_faces());
+  const CovarianceMesh expected = edge_slide(original_, loop_edges_, 0.5).mesh;
+  EXPECT_TRUE(test::same_mesh(saved, expected));
+  for (const int v : loop_) EXPECT_NEAR(std::abs(saved.mean(size_t(v)).y()), 0.5, 1e-6) << v;
+}
+
+// G G and the mouse moved up the screen: the loop slides up (toward the top face), all four
+// vertices the same height, the counts and the faces kept; Esc the second time leaves the file.
+TEST_F(EditorToolsSlide, SlideFollowsTheMouseAndEscRestores) {
+  const glm::vec2 start = pixel_at(loop_);
+  Events slide = loop_selected();
+  slide.move(start).wait().key("g").wait().key("g").wait();
+  for (int k = 1; k <= 4; ++k) slide.move(start - float(k) * glm::vec2(0.0f, 10.0f)).wait();
+  slide.key("enter").wait(3);
+  const CovarianceMesh saved = play(slide, "cube_loop_slid_up.png");
+  EXPECT_EQ(arrays_of(saved).faces, arrays_of(original_).faces);
+  const double height = saved.mean(size_t(loop_.front())).y();
+  EXPECT_GT(height, 0.05);
+  EXPECT_LT(height, 1.0);
+  for (const int v : loop_) EXPECT_NEAR(saved.mean(size_t(v)).y(), height, 1e-6) << v;
+
+  Events cancelled = loop_selected();
+  cancelled.move(start).wait().key("g").wait().key("g").wait().move(start - glm::vec2(0.0f, 30.0f)).wait();
+  cancelled.key("escape").wait(3);
+  play(cancelled);
+  EXPECT_TRUE(saved_is_original());
+}
+
+}  // namespace
+}  // namespace gps

@@ -1,0 +1,122 @@
+// Bevel as a modal tool.
+#include "ui/tools/bevel_tool.h"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/modelling/mesh_queries.h"
+#include "core/modelling/operation_words.h"
+#include "core/support/error.h"
+#include "ui/document/editor_document.h"
+#include "ui/editing/selection.h"
+
+namespace gps {
+
+double BevelTool::width_from_cursor(glm::vec2 start, glm::vec2 cursor, glm::vec2 centre, double world_per_pixel) {
+  return std::max(0.0, double(glm::length(cursor - centre) - glm::length(start - centre)) * world_per_pixel);
+}
+
+std::unique_ptr<ModalTool> BevelTool::start(ToolContext& ctx, bool vertices) {
+  const CovarianceMesh& mesh = ctx.document.mesh();
+  std::unique_ptr<BevelTool> tool(new BevelTool);
+  tool->vertices_ = vertices;
+  tool->selected_ = ctx.selection.vertices();
+  if (!vertices) {
+    tool->edges_ = edges_within(mesh, tool->selected_);
+    if (tool->edges_.empty()) {
+      ctx.note("bevel refused: select an edge or more (both ends of each)", true);
+      return nullptr;
+    }
+  } else if (tool->selected_.empty()) {
+    ctx.note("bevel vertices refused: select a vertex or more", true);
+    return nullptr;
+  }
+  tool->base_ = std::make_shared<const CovarianceMesh>(mesh);
+  tool->centre_ = centre_of_vertices(mesh, tool->selected_);
+  tool->start_cursor_ = ctx.cursor;
+  tool->options_.width = 0.0;
+  tool->update(ctx);
+  return tool;
+}
+
+void BevelTool::follow(glm::vec2 cursor, const ToolContext& ctx) {
+  const Viewport& v = ctx.viewport;
+  const auto c = project_to_pixel(v.camera, v.width, v.height, centre_);
+  if (!c) return;
+  options_.width =
+      width_from_cursor(start_cursor_, cursor, glm::vec2(*c), world_per_pixel(v.camera, v.height, centre_));
+}
+
+void BevelTool::update(ToolContext& ctx) {
+  char amount[128];
+  std::snprintf(amount, sizeof amount, "%s: width %.4f%s, %s, profile %s", what(), options_.width,
+                typed_.shown().c_str(), count_of(size_t(options_.segments), "segment", "segments").c_str(),
+                short_number(options_.profile).c_str());
+  const std::string keys =
+      "  (move away from the centre or type the width, wheel: segments, P: profile; "
+      "click or Enter confirms, Esc cancels)";
+  try {
+    if (options_.width > 0) {
+      Modelled bevelled =
+          vertices_ ? bevel_vertices(*base_, selected_, options_) : bevel_edges(*base_, edges_, options_);
+      auto shown = std::make_shared<const CovarianceMesh>(bevelled.mesh);
+      ctx.show_preview(shown, bevelled.selection, std::nullopt);
+      result_ = std::move(bevelled);
+    } else if (result_) {
+      ctx.show_document(std::nullopt);
+      result_.reset();
+    }
+    status_ = amount + keys;
+    error_ = false;
+  } catch (const Error& e) {  // refused: the mesh before
+    if (result_) {
+      result_.reset();
+      ctx.show_document(std::nullopt);
+    }
+    refusal_ = e.what();
+    status_ = std::string(amount) + ": " + refusal_;
+    error_ = true;
+  }
+}
+
+ToolResult BevelTool::handle(const InputEvent& e, ToolContext& ctx) {
+  if (cancels(e) || (confirms(e) && !result_)) {
+    if (result_) ctx.show_document(std::nullopt);
+    ctx.report(cancels(e) ? std::string(what()) + " cancelled"
+                          : std::string(what()) + ": nothing done (" + (error_ ? refusal_ : "width 0") + ")",
+               error_ && !cancels(e));
+    return ToolResult::cancelled;
+  }
+  if (confirms(e)) {  // one undo step: the bevel shown, made from the document's mesh as it is
+    const Modelled bevelled = *result_;
+    if (!ctx.operate(
+            what(), [&](const CovarianceMesh&) { return bevelled; }, nullptr))
+      ctx.show_document(std::nullopt);
+    return ToolResult::confirmed;
+  }
+  const bool key = e.type == InputEvent::Type::key_press;
+  if (e.type == InputEvent::Type::move) {
+    if (!typed_.empty()) return ToolResult::consumed;
+    follow(e.position, ctx);
+  } else if (typed_.handle(e)) {
+    const double typed = typed_.value();
+    if (!std::isfinite(typed) && !typed_.empty()) return ToolResult::consumed;
+    if (std::isfinite(typed))
+      options_.width = typed;
+    else
+      follow(ctx.cursor, ctx);  // nothing typed: the mouse's width again
+  } else if (e.type == InputEvent::Type::scroll) {
+    options_.segments = std::clamp(options_.segments + (e.steps > 0 ? 1 : -1), 1, kMaxBevelSegments);
+  } else if (key && e.key == GLFW_KEY_P) {
+    options_.profile = options_.profile == 0.5 ? 0.25 : 0.5;
+  } else {
+    return ToolResult::consumed;
+  }
+  update(ctx);
+  return ToolResult::consumed;
+}
+
+}  // namespace gps

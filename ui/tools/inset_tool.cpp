@@ -1,0 +1,94 @@
+// The inset as a modal tool.
+#include "ui/tools/inset_tool.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/modelling/inset.h"
+#include "core/modelling/mesh_queries.h"
+#include "core/support/error.h"
+#include "ui/document/editor_document.h"
+#include "ui/editing/selection.h"
+
+namespace gps {
+
+std::unique_ptr<ModalTool> InsetTool::start(ToolContext& ctx) {
+  const CovarianceMesh& mesh = ctx.document.mesh();
+  std::vector<int> faces = faces_within(mesh, ctx.selection.vertices());
+  if (faces.empty()) {
+    ctx.note("inset refused: select the corners of one face or more", true);
+    return nullptr;
+  }
+  std::unique_ptr<InsetTool> tool(new InsetTool);
+  tool->base_ = std::make_shared<const CovarianceMesh>(mesh);
+  tool->faces_ = std::move(faces);
+  tool->selection_before_ = ctx.selection.vertices();
+  tool->centre_ = centre_of_vertices(mesh, ctx.selection.vertices());
+  tool->start_cursor_ = ctx.cursor;
+  tool->status_ = "inset: move toward the faces' centre (or type the thickness), click or Enter confirms, Esc cancels";
+  return tool;
+}
+
+void InsetTool::update(double thickness, ToolContext& ctx) {
+  if (!(thickness > 0)) return;
+  try {
+    const Modelled inset = inset_faces(*base_, faces_, thickness);
+    if (!applied_) {
+      ctx.install(inset, nullptr);
+      applied_ = true;
+      ctx.document.begin_edit();
+    } else if (!ctx.document.set_gaussians(inset.mesh)) {
+      return;
+    }
+    summary_ = inset.summary;
+    char text[128];
+    std::snprintf(text, sizeof text, "inset: thickness %.4f%s (click or Enter confirms, Esc cancels)", thickness,
+                  typed_.shown().c_str());
+    status_ = text;
+    error_ = false;
+  } catch (const Error& e) {
+    status_ = std::string("inset: ") + e.what();
+    error_ = true;
+  }
+}
+
+void InsetTool::follow(glm::vec2 cursor, ToolContext& ctx) {
+  const Viewport& v = ctx.viewport;
+  const auto c = project_to_pixel(v.camera, v.width, v.height, centre_);
+  if (!c) return;
+  const glm::vec2 centre(*c);
+  const double pixels = double(glm::length(start_cursor_ - centre) - glm::length(cursor - centre));
+  update(pixels * world_per_pixel(v.camera, v.height, centre_), ctx);
+}
+
+void InsetTool::end(bool keep, ToolContext& ctx) {
+  if (!applied_) {
+    ctx.report(keep ? "inset: nothing done (move toward the centre or type a thickness)" : "inset cancelled", false);
+  } else if (keep) {
+    ctx.document.commit_edit_into_last_operation(ctx.selection.vertices());
+    ctx.note("inset: " + summary_, false);
+  } else {
+    ctx.document.cancel_edit();
+    ctx.document.discard_last_operation();
+    ctx.rebuild(selection_before_);
+    ctx.report("inset cancelled", false);
+  }
+}
+
+ToolResult InsetTool::handle(const InputEvent& e, ToolContext& ctx) {
+  if (confirms(e) || cancels(e)) {
+    const bool keep = confirms(e);
+    end(keep, ctx);
+    return keep ? ToolResult::confirmed : ToolResult::cancelled;
+  }
+  if (e.type == InputEvent::Type::move && typed_.empty()) {
+    follow(e.position, ctx);
+  } else if (typed_.handle(e)) {
+    if (std::isfinite(typed_.value())) update(typed_.value(), ctx);
+  } else if (e.type == InputEvent::Type::scroll) {
+    return ToolResult::passed_on;
+  }
+  return ToolResult::consumed;
+}
+
+}  // namespace gps

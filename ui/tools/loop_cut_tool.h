@@ -1,0 +1,42 @@
+#pragma once
+// The loop cut (Ctrl+R) as a modal tool: the edge ring under the cursor previewed with its cuts (the
+// wheel sets how many), a click cuts (core/modelling/loop_cut.h), then the new loops slide with the
+// mouse until a click or Enter; the cut and its slide are one undo step, Esc keeps the cut in the middle.
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/modelling/loop_cut.h"
+#include "ui/tools/modal_tool.h"
+
+namespace gps {
+
+/// The edge (its two vertices) under the cursor on a face turned toward the camera, within a pick
+/// distance in pixels; nullopt for none.
+std::optional<std::array<int, 2>> edge_under(const CovarianceMesh& mesh, const Viewport& view, glm::vec2 cursor);
+
+class LoopCutTool : public ModalTool {
+public:
+  explicit LoopCutTool(ToolContext& ctx);
+
+  ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
+  std::string status() const override { return status_; }
+  void draw_overlay(ImDrawList& draw, const ToolContext& ctx) const override;
+
+private:
+  void hover(glm::vec2 cursor, const ToolContext& ctx);
+  ToolResult cut(ToolContext& ctx);
+  void slide(glm::vec2 cursor, ToolContext& ctx);
+  void end(bool keep, ToolContext& ctx);
+
+  EdgeRing ring_;  // under the cursor (empty: none)
+  int cuts_ = 1;
+  bool sliding_ = false;
+  std::shared_ptr<const CovarianceMesh> base_;  // the mesh before the cut
+  std::string summary_;                         // the cut's
+  glm::vec2 start_cursor_{0.0f};
+  std::string status_;
+};
+
+}  // namespace gps

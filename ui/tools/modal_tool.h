@@ -1,0 +1,95 @@
+#pragma once
+// The editor's modal tools (G / S / R, loop cut, inset, crease, bevel, slide) behind one interface:
+// once started, a tool takes the events first until it is confirmed or cancelled. It sees the editor
+// only through a ToolContext, so that a new tool is one class and one command, and EditorApp holds
+// at most one tool and hands it each event.
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/mesh/covariance_mesh.h"
+#include "core/modelling/mesh_arrays.h"
+#include "core/plans/planned_surface.h"
+#include "ui/editing/edit_reach.h"
+#include "ui/input/input_events.h"
+#include "view/projection.h"
+
+struct ImDrawList;
+
+namespace gps {
+
+class EditorDocument;
+class Selection;
+class SharpnessReplanner;
+class ModalTool;
+
+/// What a tool did with an event. `confirmed` and `cancelled` end it (it has already changed or
+/// restored the document); `replaced` ends it in favour of ToolContext::next.
+enum class ToolResult { consumed, passed_on, confirmed, cancelled, replaced };
+
+/// What a tool may use of the editor: its document and selection, the view and the cursor, the
+/// reach of an edit, and the editor's ways to show a mesh, apply an operation and report.
+struct ToolContext {
+  ToolContext(EditorDocument& document, Selection& selection, ReachOptions& reach)
+      : document(document), selection(selection), reach(reach) {}
+
+  EditorDocument& document;
+  Selection& selection;
+  ReachOptions& reach;
+  Viewport viewport;
+  glm::vec2 cursor{0.0f};
+  bool shift = false;
+  bool transform_gaussians = true;  // G / S / R carry the Gaussians (else the positions only)
+
+  /// Replaces the document's mesh by `result` as one undo step; throws gps::Error before anything changes.
+  /// `replanner`: the plans of the document's topology with other sharpness (core/plans/sharpness_replanner.h).
+  std::function<void(const Modelled& result, SharpnessReplanner* replanner)> install;
+  /// run() on the document's mesh installed as one undo step, its summary or refusal reported as
+  /// "NAME: summary"; false when refused (nothing changed).
+  std::function<bool(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
+                     SharpnessReplanner* replanner)>
+      operate;
+  /// Shows `mesh` in place of the document's (its surface, cage and creases), `selected` drawn as the
+  /// selection; `surface`: its planned surface (else planned anew). Throws gps::Error where it cannot be planned.
+  std::function<void(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
+                     std::optional<PlannedSurface> surface)>
+      show_preview;
+  /// Shows the document's mesh again (`surface`: its planned surface, else planned anew); a failure is reported.
+  std::function<void(std::optional<PlannedSurface> surface)> show_document;
+  /// The document's mesh was replaced outside install (an undone step): rebuilds for it, with `selection`.
+  std::function<void(const std::vector<int>& selection)> rebuild;
+  /// A message in the status line, printed (and, with `note`, in the Inspector too); `show_status`
+  /// only shows it.
+  std::function<void(const std::string&message, bool error)> report, note, show_status;
+  /// The plans the view asks for (a tool's replanner is made with them).
+  PlanOptions plans;
+
+  /// A tool that ends with ToolResult::replaced sets the tool that takes over.
+  std::unique_ptr<ModalTool> next;
+};
+
+class ModalTool {
+public:
+  virtual ~ModalTool() = default;
+  /// Takes one event (ctx.cursor already where it leaves the pointer).
+  virtual ToolResult handle(const InputEvent& event, ToolContext& ctx) = 0;
+  /// What the tool is doing, for the status bar; an error where `error()`.
+  virtual std::string status() const = 0;
+  virtual bool error() const { return false; }
+  /// Draws over the surface (a loop cut's ring); nothing by default.
+  virtual void draw_overlay(ImDrawList& draw, const ToolContext& ctx) const {
+    (void)draw;
+    (void)ctx;
+  }
+};
+
+/// Enter (either one) or a left click: what confirms a tool.
+bool confirms(const InputEvent& event);
+/// Esc or a right click: what cancels a tool.
+bool cancels(const InputEvent& event);
+
+}  // namespace gps

@@ -1,0 +1,46 @@
+#pragma once
+// The crease tool (Shift+E) and the corner tool (Ctrl+Shift+V) as a modal tool: the sharpness of the
+// selected edges, or the corner sharpness of the selected vertices, followed from a horizontal drag
+// or typed (ui/editing/crease_tool.h's values); the surface is re-planned for each value shown, only
+// around the changed edges or corners (core/plans/sharpness_replanner.h), and the document changes
+// when confirmed, as one undo step.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/plans/sharpness_replanner.h"
+#include "ui/tools/modal_tool.h"
+#include "ui/tools/typed_number.h"
+
+namespace gps {
+
+class SharpnessTool : public ModalTool {
+public:
+  /// `corners`: the vertices' corner sharpness, else the edges'. nullptr (the refusal reported) for
+  /// edges where the selection holds none.
+  static std::unique_ptr<ModalTool> start(ToolContext& ctx, bool corners);
+
+  ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
+  std::string status() const override { return status_; }
+  bool error() const override { return error_; }
+
+private:
+  SharpnessTool() = default;
+  const char* what() const { return corners_ ? "corner" : "crease"; }
+  PlannedSurface surface(const CovarianceMesh& mesh, const ToolContext& ctx);
+  void preview(double sharpness, ToolContext& ctx);
+  void end(bool keep, ToolContext& ctx);
+
+  bool corners_ = false;
+  std::vector<int> selected_;
+  double start_ = 0.0, value_ = 0.0;
+  glm::vec2 start_cursor_{0.0f};
+  TypedNumber typed_;
+  std::shared_ptr<const CovarianceMesh> shown_;  // the mesh the surface was planned for
+  // The plans of the document's topology, re-planned for each value; made at the first change.
+  std::unique_ptr<SharpnessReplanner> replanner_;
+  std::string status_;
+  bool error_ = false;
+};
+
+}  // namespace gps

@@ -1,0 +1,154 @@
+// G / S / R and the move after an extrusion as a modal tool.
+#include "ui/tools/transform_tool.h"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/modelling/affine_transform.h"
+#include "core/modelling/extrude.h"
+#include "core/modelling/mesh_queries.h"
+#include "core/modelling/operation_words.h"
+#include "ui/document/editor_document.h"
+#include "ui/editing/selection.h"
+#include "ui/tools/slide_tool.h"
+
+namespace gps {
+
+namespace {
+
+std::vector<Vec3> start_means(const EditorDocument& document) {
+  std::vector<Vec3> means(document.mesh().n_vertices());
+  for (size_t v = 0; v < means.size(); ++v) means[v] = document.start_mean(int(v));
+  return means;
+}
+
+}  // namespace
+
+TransformTool::TransformTool(TransformKind kind, TransformPivot pivot, ToolContext& ctx) {
+  ctx.document.begin_edit();
+  transform_.emplace(kind, ctx.document.mesh(), ctx.selection.vertices(), ctx.selection.active(), pivot, ctx.viewport,
+                     ctx.cursor);
+  reach_ = edit_reach(start_means(ctx.document), transform_->vertices(), ctx.reach);
+  update(ctx);
+}
+
+TransformTool::TransformTool(ToolContext& ctx, const Vec3& normal, std::string extrusion_summary)
+    : folds_(true), extrusion_summary_(std::move(extrusion_summary)) {
+  ctx.document.begin_edit();
+  transform_.emplace(TransformKind::grab, ctx.document.mesh(), ctx.selection.vertices(), ctx.selection.active(),
+                     TransformPivot::median, ctx.viewport, ctx.cursor);
+  if (normal != Vec3::Zero()) transform_->constrain_direction(normal, "the normal");
+  // The move is of the new vertices only (their copies lie under them).
+  for (size_t i = 0; i < transform_->vertices().size(); ++i)
+    reach_.push_back({transform_->vertices()[i], 1.0, i, false});
+  update(ctx);
+}
+
+std::unique_ptr<ModalTool> TransformTool::extrude(ToolContext& ctx) {
+  const std::vector<int> selected = ctx.selection.vertices();
+  std::string summary;
+  const bool done = ctx.operate(
+      "extrude",
+      [&](const CovarianceMesh& m) {
+        Modelled r = extrude_vertices(m, selected, Vec3::Zero());
+        summary = r.summary;
+        return r;
+      },
+      nullptr);
+  if (!done) return nullptr;
+  // The area-weighted normal of the extruded faces (Newell's sums); zero for edges and vertices.
+  const MeshArrays arrays = arrays_of(ctx.document.mesh());
+  Vec3 normal = Vec3::Zero();
+  for (const int f : faces_within(ctx.document.mesh(), ctx.selection.vertices())) normal += newell_normal(arrays, f);
+  if (normal.norm() > 0) normal.normalize();
+  return std::unique_ptr<ModalTool>(new TransformTool(ctx, normal, summary));
+}
+
+void TransformTool::update(ToolContext& ctx) {
+  const size_t clamped =
+      apply_transform(ctx.document, *transform_, reach_, ctx.reach.mirror_axis, ctx.transform_gaussians);
+  status_ =
+      transform_->describe() +
+      (reach_.size() > transform_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "") +
+      (ctx.transform_gaussians ? "" : "  (positions only)") +
+      (clamped ? "  (" + count_of(clamped, "Gaussian", "Gaussians") + " held at the flatness floor)" : "");
+}
+
+ToolResult TransformTool::handle(const InputEvent& e, ToolContext& ctx) {
+  if (confirms(e) || cancels(e)) {
+    const bool keep = confirms(e);
+    end(keep, ctx);
+    return keep ? ToolResult::confirmed : ToolResult::cancelled;
+  }
+  const bool key = e.type == InputEvent::Type::key_press;
+  if (e.type == InputEvent::Type::move) {
+    if (typed_.empty()) transform_->move_cursor(e.position, ctx.viewport);
+  } else if (key && (e.key == GLFW_KEY_X || e.key == GLFW_KEY_Y || e.key == GLFW_KEY_Z)) {
+    transform_->constrain_axis(e.key - GLFW_KEY_X, ctx.shift);
+    transform_->move_cursor(ctx.cursor, ctx.viewport);
+  } else if (typed_.handle(e)) {
+    transform_->set_typed(typed_.text(), typed_.value());
+  } else if (e.type == InputEvent::Type::scroll && ctx.reach.proportional && !folds_) {
+    ctx.reach.radius *= std::pow(1.15, double(e.steps));
+    const std::vector<Vec3> means = start_means(ctx.document);
+    ctx.document.revert_edit();
+    reach_ = edit_reach(means, transform_->vertices(), ctx.reach);
+  } else if (key && e.key == GLFW_KEY_G && transform_->kind() == TransformKind::grab && !folds_) {
+    ctx.document.cancel_edit();  // G G: the grab becomes a slide of the same selection
+    ctx.next = SlideTool::start(ctx);
+    return ToolResult::replaced;
+  } else if (e.type != InputEvent::Type::release) {
+    return e.type == InputEvent::Type::scroll ? ToolResult::passed_on : ToolResult::consumed;  // the wheel zooms
+  }
+  update(ctx);
+  return ToolResult::consumed;
+}
+
+void TransformTool::end(bool keep, ToolContext& ctx) {
+  if (!keep) {
+    ctx.document.cancel_edit();
+    ctx.report(folds_ ? "move cancelled (the extrusion stays; Ctrl+Z removes it)" : "transform cancelled", false);
+    return;
+  }
+  if (folds_) {
+    ctx.document.commit_edit_into_last_operation(ctx.selection.vertices());
+    ctx.show_status("extrude: " + extrusion_summary_, false);  // shown again, not printed again
+    return;
+  }
+  const std::string described = transform_->describe();
+  const std::string done =
+      described.substr(0, described.find("  (")) + (ctx.transform_gaussians ? "" : "  (positions only)");
+  // Vertices a mirror (negative determinant) carried: the parts they make up whole get their faces
+  // reversed with them, as Blender does, so that the surface stays outward.
+  std::vector<int> mirrored_vertices;
+  std::vector<std::pair<int, Gaussian>> moved;
+  for (const ReachedVertex& r : reach_) {
+    AffineMap map = transform_->map(r.source, r.weight);
+    if (r.mirrored) map = mirrored(map, ctx.reach.mirror_axis);
+    if (map.linear.determinant() < 0) mirrored_vertices.push_back(r.vertex);
+    const CovarianceMesh& mesh = ctx.document.mesh();
+    moved.push_back({r.vertex, {mesh.mean(size_t(r.vertex)), mesh.covariance(size_t(r.vertex))}});
+  }
+  if (mirrored_vertices.empty()) {
+    ctx.document.commit_edit();
+    ctx.report(done, false);
+    return;
+  }
+  // One undo step that replaces the mesh: the moved Gaussians and the reversed faces together.
+  std::sort(mirrored_vertices.begin(), mirrored_vertices.end());
+  ctx.document.cancel_edit();
+  const std::vector<int> selected = ctx.selection.vertices();
+  ctx.operate(
+      done,
+      [&](const CovarianceMesh& mesh) {
+        MeshArrays a = arrays_of(mesh);
+        for (const auto& [v, g] : moved) a.means[size_t(v)] = g.mean, a.covariances[size_t(v)] = g.covariance;
+        reverse_parts_within(a, mirrored_vertices);
+        return Modelled{build_mesh(a), selected, "mirrored: the faces it moved whole reversed to stay outward"};
+      },
+      nullptr);
+}
+
+}  // namespace gps

@@ -1,0 +1,43 @@
+#pragma once
+// Blender's G / S / R as a modal tool (the math is ui/editing/transform_mode.h): the selected
+// Gaussians follow the mouse or a typed value, with the axis constraints, the proportional and
+// mirrored reach and the wheel setting the radius; one undo step when confirmed. The move after an
+// extrusion is the same tool along the extrusion's normal, folded into the extrusion's undo step.
+// G pressed again during a grab hands over to the slide (ui/tools/slide_tool.h), as Blender's G G.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ui/editing/edit_reach.h"
+#include "ui/editing/transform_mode.h"
+#include "ui/tools/modal_tool.h"
+#include "ui/tools/typed_number.h"
+
+namespace gps {
+
+class TransformTool : public ModalTool {
+public:
+  /// G / S / R of the selection about `pivot` (the selection must not be empty).
+  TransformTool(TransformKind kind, TransformPivot pivot, ToolContext& ctx);
+  /// Extrudes the selection (core/modelling/extrude.h) as one undo step, then moves the new vertices
+  /// along the extruded faces' normal (free for edges and vertices); nullptr where refused (reported).
+  static std::unique_ptr<ModalTool> extrude(ToolContext& ctx);
+
+  ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
+  std::string status() const override { return status_; }
+
+private:
+  TransformTool(ToolContext& ctx, const Vec3& normal, std::string extrusion_summary);
+  void update(ToolContext& ctx);
+  void end(bool keep, ToolContext& ctx);
+
+  std::optional<TransformMode> transform_;
+  std::vector<ReachedVertex> reach_;  // the vertices it changes, and how strongly
+  TypedNumber typed_;
+  bool folds_ = false;  // the move after an extrusion: confirmed into the extrusion's undo step
+  std::string extrusion_summary_;
+  std::string status_;
+};
+
+}  // namespace gps
