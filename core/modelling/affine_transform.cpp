@@ -68,27 +68,45 @@ CarriedGaussian carried_gaussian(const AffineMap& map, const Gaussian& g) {
   return out;
 }
 
-Modelled transform_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, const AffineMap& map) {
+std::vector<int> transform_vertices_in_place(CovarianceMesh& mesh, const std::vector<int>& vertices,
+                                             const AffineMap& map, std::string& summary) {
   if (!map.linear.allFinite() || !map.translation.allFinite()) throw Error("the map has a number that is not finite");
-  MeshArrays a = arrays_of(mesh);
-  std::vector<int> moved = vertices.empty() ? std::vector<int>() : sorted_vertices(a, vertices);
+  std::vector<int> moved = vertices.empty() ? std::vector<int>() : sorted_vertices(mesh.n_vertices(), vertices);
   if (vertices.empty())
-    for (int v = 0; v < a.n_vertices(); ++v) moved.push_back(v);
+    for (size_t v = 0; v < mesh.n_vertices(); ++v) moved.push_back(int(v));
+  std::vector<Gaussian> carried(moved.size());
   size_t clamped = 0;
-  for (int v : moved) {
-    const CarriedGaussian g = carried_gaussian(map, a.gaussian(v));
-    a.means[size_t(v)] = g.gaussian.mean;
-    a.covariances[size_t(v)] = g.gaussian.covariance;
+  for (size_t i = 0; i < moved.size(); ++i) {
+    const int v = moved[i];
+    const CarriedGaussian g = carried_gaussian(map, {mesh.mean(size_t(v)), mesh.covariances[size_t(v)]});
+    std::string why = position_problem(g.gaussian.mean);
+    if (why.empty()) why = covariance_problem(g.gaussian.covariance);
+    if (!why.empty())
+      throw Error("the result would not be a valid mesh: vertex " + std::to_string(v) + " " + why);
+    carried[i] = g.gaussian;
     clamped += g.clamped;
   }
+  for (size_t i = 0; i < moved.size(); ++i) {
+    mesh.set_mean(size_t(moved[i]), carried[i].mean);
+    mesh.covariances[size_t(moved[i])] = carried[i].covariance;
+  }
   const bool mirror = map.linear.determinant() < 0;
-  if (mirror) reverse_parts_within(a, moved);
-  Modelled out{build_mesh(a), moved, ""};
-  out.summary = "transformed " + count_of(moved.size(), "vertex", "vertices") +
-                (mirror ? " (mirrored: their faces reversed to stay outward)" : "") +
-                (clamped ? ", " + count_of(clamped, "Gaussian", "Gaussians") + " held at the flatness floor (" +
-                               short_number(kFlattestStretch) + " of the map's strongest stretch)"
-                         : "");
+  if (mirror) {
+    MeshArrays a = arrays_of(mesh);
+    reverse_parts_within(a, moved);
+    mesh = build_mesh(a);
+  }
+  summary = "transformed " + count_of(moved.size(), "vertex", "vertices") +
+            (mirror ? " (mirrored: their faces reversed to stay outward)" : "") +
+            (clamped ? ", " + count_of(clamped, "Gaussian", "Gaussians") + " held at the flatness floor (" +
+                           short_number(kFlattestStretch) + " of the map's strongest stretch)"
+                     : "");
+  return moved;
+}
+
+Modelled transform_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, const AffineMap& map) {
+  Modelled out{mesh, {}, ""};
+  out.selection = transform_vertices_in_place(out.mesh, vertices, map, out.summary);
   return out;
 }
 

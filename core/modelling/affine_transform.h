@@ -53,6 +53,12 @@ CarriedGaussian carried_gaussian(const AffineMap& map, const Gaussian& g);
 /// the ranges a covariance mesh accepts.
 Modelled transform_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, const AffineMap& map);
 
+/// The same on `mesh` itself, at the cost of the vertices moved where the map does not mirror (a
+/// mirror rebuilds the mesh with its parts' faces reversed): returns the selection and sets
+/// `summary`. Every moved Gaussian is checked before any changes, so a refusal changes nothing.
+std::vector<int> transform_vertices_in_place(CovarianceMesh& mesh, const std::vector<int>& vertices,
+                                             const AffineMap& map, std::string& summary);
+
 /// Reverses the corner order (keeping the first corner) of every face of each connected part whose
 /// vertices all lie in `moved`: the orientation a mirror of those parts needs.
 void reverse_parts_within(MeshArrays& arrays, const std::vector<int>& moved);

@@ -29,22 +29,27 @@ std::string sharpness_words(double s) {
 
 }  // namespace
 
-Modelled set_crease(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, double sharpness) {
+std::vector<int> set_crease_in_place(CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges,
+                                     double sharpness, std::string& summary) {
   check_sharpness(sharpness);
-  const MeshArrays arrays = arrays_of(mesh);
-  const DirectedEdges directed = directed_edges(arrays);
-  Modelled out{mesh, {}, ""};
+  std::vector<int> selection;
   for (const auto& [a, b] : edges) {
-    check_vertex(arrays, a);
-    check_vertex(arrays, b);
-    if (a == b || !has_edge(directed, a, b))
+    check_vertex(mesh.n_vertices(), a);
+    check_vertex(mesh.n_vertices(), b);
+    if (a == b || !mesh.mesh.find_halfedge(OpenMesh::VertexHandle(a), OpenMesh::VertexHandle(b)).is_valid())
       throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
-    out.mesh.sharpness.set_crease(a, b, sharpness);
-    out.selection.insert(out.selection.end(), {a, b});
+    selection.insert(selection.end(), {a, b});
   }
-  std::sort(out.selection.begin(), out.selection.end());
-  out.selection.erase(std::unique(out.selection.begin(), out.selection.end()), out.selection.end());
-  out.summary = "set the crease of " + count_of(edges.size(), "edge", "edges") + " to " + sharpness_words(sharpness);
+  for (const auto& [a, b] : edges) mesh.sharpness.set_crease(a, b, sharpness);
+  std::sort(selection.begin(), selection.end());
+  selection.erase(std::unique(selection.begin(), selection.end()), selection.end());
+  summary = "set the crease of " + count_of(edges.size(), "edge", "edges") + " to " + sharpness_words(sharpness);
+  return selection;
+}
+
+Modelled set_crease(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, double sharpness) {
+  Modelled out{mesh, {}, ""};
+  out.selection = set_crease_in_place(out.mesh, edges, sharpness, out.summary);
   return out;
 }
 
@@ -65,13 +70,18 @@ Modelled crease_sharp_edges(const CovarianceMesh& mesh, double degrees, double s
   return out;
 }
 
-Modelled set_corner(const CovarianceMesh& mesh, const std::vector<int>& vertices, double sharpness) {
+std::vector<int> set_corner_in_place(CovarianceMesh& mesh, const std::vector<int>& vertices, double sharpness,
+                                     std::string& summary) {
   check_sharpness(sharpness);
-  const MeshArrays arrays = arrays_of(mesh);
-  Modelled out{mesh, sorted_vertices(arrays, vertices), ""};
-  for (const int v : out.selection) out.mesh.sharpness.set_corner(v, sharpness, int(mesh.n_vertices()));
-  out.summary =
-      "set the corner of " + count_of(out.selection.size(), "vertex", "vertices") + " to " + sharpness_words(sharpness);
+  std::vector<int> selection = sorted_vertices(mesh.n_vertices(), vertices);
+  for (const int v : selection) mesh.sharpness.set_corner(v, sharpness, int(mesh.n_vertices()));
+  summary = "set the corner of " + count_of(selection.size(), "vertex", "vertices") + " to " + sharpness_words(sharpness);
+  return selection;
+}
+
+Modelled set_corner(const CovarianceMesh& mesh, const std::vector<int>& vertices, double sharpness) {
+  Modelled out{mesh, {}, ""};
+  out.selection = set_corner_in_place(out.mesh, vertices, sharpness, out.summary);
   return out;
 }
 

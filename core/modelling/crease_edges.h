@@ -3,6 +3,7 @@
 // "Creases and corners"), as Blender's Edge Crease and Vertex Crease do: the topology and the Gaussians
 // stay as they are.
 #include <array>
+#include <string>
 #include <vector>
 
 #include "core/modelling/mesh_arrays.h"
@@ -13,6 +14,10 @@ namespace gps {
 /// every level). Selects the edges' vertices. Throws gps::Error for a sharpness that is negative or
 /// not finite, a vertex out of range or a pair that is not an edge ("edge 2–7 is not in the mesh").
 Modelled set_crease(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, double sharpness);
+/// The same on `mesh` itself, at the cost of the edges (each found among its ends' edges): returns the
+/// selection and sets `summary`; a refusal changes nothing.
+std::vector<int> set_crease_in_place(CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges,
+                                     double sharpness, std::string& summary);
 
 /// Gives every interior edge whose dihedral angle exceeds `degrees` (0 ≤ degrees < 180; the angle
 /// between its faces' normals, core/mesh/crease_by_angle.h) the sharpness, as Blender's Select Sharp
@@ -22,5 +27,8 @@ Modelled crease_sharp_edges(const CovarianceMesh& mesh, double degrees, double s
 
 /// Gives every listed vertex the corner sharpness (0 removes it); selects them. Throws as set_crease.
 Modelled set_corner(const CovarianceMesh& mesh, const std::vector<int>& vertices, double sharpness);
+/// The same on `mesh` itself, at the cost of the vertices: returns the selection and sets `summary`.
+std::vector<int> set_corner_in_place(CovarianceMesh& mesh, const std::vector<int>& vertices, double sharpness,
+                                     std::string& summary);
 
 }  // namespace gps

@@ -179,11 +179,12 @@ bool is_boundary_edge(const DirectedEdges& e, int a, int b) {
   return (e.count(directed_key(a, b)) != 0) != (e.count(directed_key(b, a)) != 0);
 }
 
-void check_vertex(const MeshArrays& a, int v) {
-  if (v < 0 || v >= a.n_vertices())
-    throw Error("vertex " + std::to_string(v) + " is not in the mesh (" + std::to_string(a.n_vertices()) +
-                " vertices)");
+void check_vertex(size_t n_vertices, int v) {
+  if (v < 0 || size_t(v) >= n_vertices)
+    throw Error("vertex " + std::to_string(v) + " is not in the mesh (" + std::to_string(n_vertices) + " vertices)");
 }
+
+void check_vertex(const MeshArrays& a, int v) { check_vertex(size_t(a.n_vertices()), v); }
 
 void check_face(const MeshArrays& a, int f) {
   if (f < 0 || f >= a.n_faces())
@@ -191,7 +192,11 @@ void check_face(const MeshArrays& a, int f) {
 }
 
 std::vector<int> sorted_vertices(const MeshArrays& a, std::vector<int> vertices) {
-  for (int v : vertices) check_vertex(a, v);
+  return sorted_vertices(size_t(a.n_vertices()), std::move(vertices));
+}
+
+std::vector<int> sorted_vertices(size_t n_vertices, std::vector<int> vertices) {
+  for (int v : vertices) check_vertex(n_vertices, v);
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   return vertices;

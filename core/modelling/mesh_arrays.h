@@ -103,10 +103,12 @@ bool is_boundary_edge(const DirectedEdges& edges, int a, int b);
 
 /// Throws a gps::Error for an index outside the mesh ("vertex 12 is not in the mesh (8 vertices)").
 void check_vertex(const MeshArrays& arrays, int v);
+void check_vertex(size_t n_vertices, int v);
 void check_face(const MeshArrays& arrays, int f);
 
 /// The selection of vertices for an operation: sorted, unique, each checked.
 std::vector<int> sorted_vertices(const MeshArrays& arrays, std::vector<int> vertices);
+std::vector<int> sorted_vertices(size_t n_vertices, std::vector<int> vertices);
 std::vector<int> sorted_faces(const MeshArrays& arrays, std::vector<int> faces);
 
 }  // namespace gps

@@ -39,6 +39,9 @@ namespace {
 
 using Json = nlohmann::json;
 using Run = std::function<Modelled(const CovarianceMesh&)>;
+// An operation that changes Gaussians or sharpness only: on the mesh itself, returning the selection
+// and setting the summary.
+using InPlace = std::function<std::vector<int>(CovarianceMesh&, std::string&)>;
 using Edges = std::vector<std::array<int, 2>>;
 
 // Element `i` of the JSON list `list` (named `key`) as a vertex, edge or face index.
@@ -167,7 +170,7 @@ Mat3 covariance_of(const std::vector<double>& c) {
 
 // {"op":"set","vertices":[…],"mean":[x,y,z],"covariance":[xx,xy,xz,yy,yz,zz],"scale":s}: Gaussians set
 // directly (the mean, the covariance, then the covariance scaled).
-Run set_gaussians(Fields& f) {
+InPlace set_gaussians(Fields& f) {
   const std::vector<int> vertices = f.indices("vertices");
   std::optional<Vec3> mean;
   std::optional<Mat3> covariance;
@@ -176,22 +179,27 @@ Run set_gaussians(Fields& f) {
   if (f.has("covariance")) covariance = covariance_of(f.numbers("covariance", 6));
   if (f.has("scale") && !((scale = f.number("scale")) > 0)) throw usage_error("\"scale\" must be positive");
   if (!mean && !covariance && !f.has("scale")) throw usage_error("give \"mean\", \"covariance\" or \"scale\"");
-  return [=](const CovarianceMesh& mesh) {
-    MeshArrays a = arrays_of(mesh);
-    const std::vector<int> set = sorted_vertices(a, vertices);
-    for (int v : set) {
-      if (mean) a.means[size_t(v)] = *mean;
-      if (covariance) a.covariances[size_t(v)] = *covariance;
-      a.covariances[size_t(v)] *= scale;
-      if (const std::string why = covariance_problem(a.covariances[size_t(v)]); !why.empty())
+  return [=](CovarianceMesh& mesh, std::string& summary) {
+    const std::vector<int> set = sorted_vertices(mesh.n_vertices(), vertices);
+    std::vector<Mat3> covariances(set.size());
+    for (size_t i = 0; i < set.size(); ++i) {
+      const int v = set[i];
+      covariances[i] = (covariance ? *covariance : mesh.covariances[size_t(v)]) * scale;
+      std::string why = mean ? position_problem(*mean) : "";
+      if (why.empty()) why = covariance_problem(covariances[i]);
+      if (!why.empty())
         throw Error("vertex " + std::to_string(v) + " would have " + (why.rfind("has ", 0) == 0 ? why.substr(4) : why));
     }
-    return Modelled{build_mesh(a), set,
-                    "set " + std::to_string(set.size()) + (set.size() == 1 ? " Gaussian" : " Gaussians")};
+    for (size_t i = 0; i < set.size(); ++i) {
+      if (mean) mesh.set_mean(size_t(set[i]), *mean);
+      mesh.covariances[size_t(set[i])] = covariances[i];
+    }
+    summary = "set " + std::to_string(set.size()) + (set.size() == 1 ? " Gaussian" : " Gaussians");
+    return set;
   };
 }
 
-Run transform(Fields& f) {
+InPlace transform(Fields& f) {
   std::vector<int> vertices;  // empty: all
   if (!f.has("vertices")) throw usage_error("\"vertices\" is missing (a list of indices, or \"all\")");
   if (!f.is_text("vertices") || f.text("vertices") != "all") {
@@ -207,7 +215,9 @@ Run transform(Fields& f) {
       throw usage_error(e.what());
     }
   }();
-  return [=](const CovarianceMesh& mesh) { return transform_vertices(mesh, vertices, map); };
+  return [=](CovarianceMesh& mesh, std::string& summary) {
+    return transform_vertices_in_place(mesh, vertices, map, summary);
+  };
 }
 
 // {"op":"bevel","edges":[[a,b],…] or "vertices":[…],"width":w}, optional "segments", "profile",
@@ -289,8 +299,8 @@ Run mirror_step(Fields& f) {
 
 using Append = std::function<std::vector<int>(MeshArrays&, std::string&)>;
 
-// An operation's step: a function of the mesh, or (an addition) `append` set instead.
-Run parse_step(const std::string& op, Fields& f, Append& append) {
+// An operation's step: a function of the mesh, or `append` (an addition) or `in_place` set instead.
+Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_place) {
   if (op == "subdivide") {
     if (f.has("faces")) {
       const std::vector<int> faces = f.indices("faces");
@@ -375,7 +385,10 @@ Run parse_step(const std::string& op, Fields& f, Append& append) {
     const std::vector<int> vertices = f.indices("vertices");
     return [=](const CovarianceMesh& m) { return fill(m, vertices); };
   }
-  if (op == "transform") return transform(f);
+  if (op == "transform") {
+    in_place = transform(f);
+    return nullptr;
+  }
   if (op == "add") {
     const std::string name = f.text("primitive");
     const std::optional<Primitive> primitive = primitive_named(name);
@@ -392,7 +405,10 @@ Run parse_step(const std::string& op, Fields& f, Append& append) {
     };
     return nullptr;
   }
-  if (op == "set") return set_gaussians(f);
+  if (op == "set") {
+    in_place = set_gaussians(f);
+    return nullptr;
+  }
   if (op == "crease") {
     if (f.is_text("edges")) {
       if (f.text("edges") != "sharp") throw usage_error("\"edges\" must be \"sharp\" or a list of [a, b] edges");
@@ -403,7 +419,8 @@ Run parse_step(const std::string& op, Fields& f, Append& append) {
     }
     const Edges edges = f.edges("edges");
     const double sharpness = f.number("sharpness");
-    return [=](const CovarianceMesh& m) { return set_crease(m, edges, sharpness); };
+    in_place = [=](CovarianceMesh& m, std::string& summary) { return set_crease_in_place(m, edges, sharpness, summary); };
+    return nullptr;
   }
   if (op == "bisect") return bisect_step(f);
   if (op == "duplicate") return duplicate_step(f);
@@ -413,7 +430,10 @@ Run parse_step(const std::string& op, Fields& f, Append& append) {
     const std::vector<int> vertices = f.indices("vertices");
     if (vertices.empty()) throw usage_error("\"vertices\" is empty");
     const double sharpness = f.number("sharpness");
-    return [=](const CovarianceMesh& m) { return set_corner(m, vertices, sharpness); };
+    in_place = [=](CovarianceMesh& m, std::string& summary) {
+      return set_corner_in_place(m, vertices, sharpness, summary);
+    };
+    return nullptr;
   }
   std::string names;
   for (const std::string& n : operation_names()) names += (names.empty() ? "" : ", ") + n;
@@ -452,6 +472,7 @@ OperationList OperationList::parse(const std::string& text, const std::string& s
       Fields fields(object);
       Run run;
       Append append;
+      InPlace in_place;
       if (name == "bridge" && fields.has("faces")) {
         if (fields.has("loops")) throw usage_error("give one of \"loops\" or \"faces\"");
         const std::vector<int> faces = fields.indices("faces");
@@ -470,11 +491,11 @@ OperationList OperationList::parse(const std::string& text, const std::string& s
         }
         run = [l](const CovarianceMesh& m) { return bridge(m, l[0], l[1]); };
       } else {
-        run = parse_step(name, fields, append);
+        run = parse_step(name, fields, append, in_place);
       }
       fields.check_all_used();
-      list.steps_.push_back(
-          {name, std::move(run), std::move(append), name == "subdivide" && !object.contains("faces")});
+      list.steps_.push_back({name, std::move(run), std::move(append), std::move(in_place),
+                             name == "subdivide" && !object.contains("faces")});
     } catch (const Error& e) {
       throw Error(where + " (" + shown_name(name) + "): " + e.what(), e.kind());
     }
@@ -491,7 +512,8 @@ std::vector<std::string> OperationList::names() const {
 
 Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::string>* summaries) const {
   // Each step's result is made in place (a mesh has no move, so an assignment would copy it); a run of
-  // additions appends to the arrays of the mesh and builds the mesh once after its last.
+  // additions appends to the arrays of the mesh and builds the mesh once after its last; a step on
+  // Gaussians or sharpness changes the list's own copy of the mesh where it stands.
   std::unique_ptr<Modelled> current;
   std::optional<MeshArrays> arrays;
   const auto mesh_now = [&]() -> const CovarianceMesh& { return current ? current->mesh : mesh; };
@@ -510,7 +532,12 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
         arrays.reset();
         continue;
       }
-      current.reset(new Modelled(step.run(mesh_now())));
+      if (step.in_place) {
+        if (!current) current.reset(new Modelled{mesh, {}, ""});  // the list's one copy of its input
+        current->selection = step.in_place(current->mesh, current->summary);
+      } else {
+        current.reset(new Modelled(step.run(mesh_now())));
+      }
     } catch (const Error& e) {
       throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + shown_name(step.name) + "): " + e.what()),
                   e.kind());

@@ -38,6 +38,9 @@ private:
     /// Instead of `run`, for an addition: appends to the arrays of a run of additions (which build
     /// their mesh once, so that each costs what it adds); returns the selection and sets the summary.
     std::function<std::vector<int>(MeshArrays&, std::string&)> append;
+    /// Instead of `run`, for an operation on Gaussians or sharpness only: changes the list's own copy
+    /// of the mesh in place at the cost of what it changes; returns the selection, sets the summary.
+    std::function<std::vector<int>(CovarianceMesh&, std::string&)> in_place;
     bool subdivides_whole_mesh = false;
   };
   std::vector<Step> steps_;

@@ -5,6 +5,8 @@
 
 #include "core/support/error.h"
 #include "core/modelling/samples.h"
+#include "core/modelling/affine_transform.h"
+#include "core/modelling/crease_edges.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
@@ -104,6 +106,61 @@ TEST(OperationList, SetAndTransform) {
   EXPECT_TRUE(m.mesh.covariance(6).isApprox(Vec3(0.01, 0.16, 0.09).asDiagonal().toDenseMatrix(), 1e-15));
   EXPECT_EQ(m.mesh.mean(6), Vec3(2, 2, 1));
   EXPECT_EQ(m.mesh.mean(0), cube.mean(0));
+}
+
+// Steps on Gaussians and sharpness change the list's copy in place (at the cost of what they change):
+// the same mesh, sharpness, selection and summaries as the whole-mesh calls they name, between
+// topology steps, a mirror among them; the input untouched; a refusal names the step.
+TEST(OperationList, StepsInPlaceAreTheCallsTheyName) {
+  CovarianceMesh cube = make_sample("cube");
+  const CovarianceMesh before = cube;
+  const OperationList ops = OperationList::parse(
+      R"([{"op":"set","vertices":[6,7],"scale":0.5},{"op":"crease","edges":[[0,1],[1,2]],"sharpness":2.5},
+          {"op":"extrude","faces":[1],"distance":0.25},{"op":"corner","vertices":[3,9],"sharpness":10},
+          {"op":"transform","vertices":[8,9,10,11],"matrix":[1,0,0,0.5, 0,1,0,0, 0,0,2,0, 0,0,0,1]},
+          {"op":"set","vertices":[9],"mean":[0.25,0.5,3],"covariance":[0.01,0,0,0.04,0,0.09]},
+          {"op":"transform","vertices":"all","matrix":[-1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]},
+          {"op":"crease","edges":[[0,1]],"sharpness":0}])",
+      "ops.json");
+  std::vector<std::string> summaries;
+  const Modelled scripted = ops.apply(cube, &summaries);
+  expect_same_mesh(cube, before);
+  EXPECT_EQ(cube.sharpness, before.sharpness);
+
+  std::vector<std::string> direct_summaries;
+  const auto step = [&](const Modelled& m) {
+    direct_summaries.push_back(m.summary);
+    return m;
+  };
+  // "set" has no call of its own: its Gaussians set by hand.
+  Modelled m{cube, {6, 7}, "set 2 Gaussians"};
+  m.mesh.covariances[6] *= 0.5;
+  m.mesh.covariances[7] *= 0.5;
+  direct_summaries.push_back(m.summary);
+  m = step(set_crease(m.mesh, {{0, 1}, {1, 2}}, 2.5));
+  m = step(extrude_faces(m.mesh, {1}, 0.25));
+  m = step(set_corner(m.mesh, {3, 9}, 10));
+  Mat3 stretch = Mat3::Identity();
+  stretch(2, 2) = 2;
+  m = step(transform_vertices(m.mesh, {8, 9, 10, 11}, AffineMap{stretch, Vec3(0.5, 0, 0)}));
+  m.mesh.set_mean(9, Vec3(0.25, 0.5, 3));
+  m.mesh.covariances[9] = Vec3(0.01, 0.04, 0.09).asDiagonal();
+  direct_summaries.push_back("set 1 Gaussian");
+  Mat3 mirror = Mat3::Identity();
+  mirror(0, 0) = -1;
+  m = step(transform_vertices(m.mesh, {}, AffineMap{mirror, Vec3::Zero()}));
+  m = step(set_crease(m.mesh, {{0, 1}}, 0));
+
+  expect_same_mesh(scripted.mesh, m.mesh);
+  EXPECT_EQ(scripted.mesh.sharpness, m.mesh.sharpness);
+  EXPECT_EQ(scripted.selection, m.selection);
+  EXPECT_EQ(summaries, direct_summaries);
+  EXPECT_EQ(error_of([&] {
+              OperationList::parse(R"([{"op":"set","vertices":[1],"scale":2},{"op":"crease","edges":[[0,6]],"sharpness":1}])",
+                                   "f")
+                  .apply(cube);
+            }),
+            "f: ops[1] (crease): edge 0–6 is not in the mesh");
 }
 
 TEST(OperationList, MalformedListsNameTheOperationBeforeApplyingAny) {
