@@ -107,6 +107,15 @@ TEST_F(EditorTools, BevelWidthFollowsTheMouse) {
   }
 }
 
+// While the tool runs the bevel is only shown: the document saved then is the file as opened (the
+// screenshot shows the preview, the new vertices selected, two segments).
+TEST_F(EditorTools, BevelPreviewLeavesTheDocumentUntilConfirmed) {
+  Events previewed = edge_selected();
+  previewed.key("ctrl+b").wait().scroll(pixel_at({6, 7}), 1.0f).wait().text("0.3").wait(3);
+  play(previewed, "cube_edge_bevel_preview.png");
+  EXPECT_TRUE(saved_is_original());
+}
+
 // The wheel adds segments (two steps: 3), each a row of quads across the band.
 TEST_F(EditorTools, BevelWheelSegmentsChangeTheCount) {
   Events bevel = edge_selected();

@@ -70,7 +70,8 @@ bool EditorApp::vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, 
 
 void EditorApp::handle_event(const InputEvent& e) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (modal_event(e)) return;  // the modal tool running takes it first
+  // The modal tool running takes the events first (editor_modal_tools.cpp).
+  if (modal_event(e)) return;
   if (job_dialog_.is_open() || repair_prompt_.is_open()) {  // their keys are Dear ImGui's; a mesh dropped now waits
     if (e.type == InputEvent::Type::drop) set_status("close the dialog first", true);
     if (e.type == InputEvent::Type::key_press || e.type == InputEvent::Type::drop) return;
@@ -257,7 +258,7 @@ void EditorApp::draw_handles_and_box() {
                         1.5f);
     }
   } else {
-    gizmo = gizmo_frame(v);
+    if (!preview_) gizmo = gizmo_frame(v);  // none over a modal tool's preview: it is of the mesh before
     if (gizmo && mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
       lit = hit_handle(v, input_.cursor, *gizmo, selection_.active(), kPickRadius);
   }
