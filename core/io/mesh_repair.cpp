@@ -13,114 +13,14 @@
 
 #include <Eigen/Geometry>
 
+#include "core/io/position_weld.h"
+#include "core/support/disjoint_sets.h"
+
 namespace gps {
 
 namespace {
 
 constexpr size_t kExamples = 3;
-
-// Union-find whose root is the lowest index of each set.
-struct LowestRootSets {
-  std::vector<int> parent;
-  explicit LowestRootSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[size_t(x)] != x) x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
-    return x;
-  }
-  void unite(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[size_t(std::max(a, b))] = std::min(a, b);
-  }
-};
-
-// Union-find over faces, each with its parity: whether it is flipped against its set's root for every
-// pair of faces joined so far to run their shared edge in opposite directions.
-struct ParitySets {
-  std::vector<int> parent;
-  std::vector<char> parity;  // against the parent
-  explicit ParitySets(size_t n) : parent(n), parity(n, 0) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x, char& parity_to_root) {
-    int root = x;
-    char p = 0;
-    while (parent[size_t(root)] != root) {
-      p ^= parity[size_t(root)];
-      root = parent[size_t(root)];
-    }
-    parity_to_root = p;
-    while (x != root) {  // the path compressed, each node's parity now against the root
-      const int up = parent[size_t(x)];
-      const char own = parity[size_t(x)];
-      parent[size_t(x)] = root;
-      parity[size_t(x)] = p;
-      p ^= own;
-      x = up;
-    }
-    return root;
-  }
-  int find(int x) {
-    char p;
-    return find(x, p);
-  }
-  /// Joins a and b so that one is flipped against the other exactly where `flipped`.
-  void unite(int a, int b, bool flipped) {
-    char pa = 0, pb = 0;
-    a = find(a, pa);
-    b = find(b, pb);
-    if (a == b) return;
-    parent[size_t(std::max(a, b))] = std::min(a, b);
-    parity[size_t(std::max(a, b))] = char(pa ^ pb ^ char(flipped));
-  }
-};
-
-struct CellKey {
-  double x, y, z;
-  bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
-};
-// The cell indices' bits mixed as splitmix64 does: a few multiplications, no byte-wise hashing.
-struct CellHash {
-  static uint64_t bits(double x) {
-    uint64_t b;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
-  }
-  size_t operator()(const CellKey& k) const {
-    uint64_t h = bits(k.x) ^ (bits(k.y) * 0x9E3779B97F4A7C15ull) ^ (bits(k.z) * 0xC2B2AE3D27D4EB4Full);
-    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-    h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-    return size_t(h ^ (h >> 31));
-  }
-};
-
-// Indices into an array, found by the CellKey each has (key_of(index)): open addressing over a table of
-// ints at most half full, 8 bytes an index where a node-based map would take some 50.
-template <class KeyOf>
-class IndexTable {
-public:
-  IndexTable(size_t capacity, const KeyOf& key_of) : key_of_(key_of) {
-    size_t n = 16;
-    while (n < 2 * capacity) n *= 2;
-    slots_.assign(n, -1);
-  }
-  /// The index with key k, or −1 where there is none.
-  int find(const CellKey& k) const { return slots_[slot_of(k)]; }
-  /// The index with key k, or −1 after adding `index` (whose key is k) for it.
-  int find_or_add(const CellKey& k, int index) {
-    int& slot = slots_[slot_of(k)];
-    if (slot >= 0) return slot;
-    slot = index;
-    return -1;
-  }
-
-private:
-  size_t slot_of(const CellKey& k) const {
-    const size_t mask = slots_.size() - 1;
-    for (size_t s = CellHash()(k) & mask;; s = (s + 1) & mask)
-      if (slots_[s] < 0 || key_of_(slots_[s]) == k) return s;
-  }
-  const KeyOf& key_of_;
-  std::vector<int> slots_;
-};
 
 uint64_t edge_key(int a, int b) { return uint64_t(uint32_t(std::min(a, b))) << 32 | uint32_t(std::max(a, b)); }
 
@@ -216,12 +116,8 @@ private:
     face_origin_ = std::move(origin);
   }
 
-  // Vertices within the tolerance of one another are welded to the lowest index of their cluster,
-  // in time linear in the vertices however they crowd: vertices at one position are joined through a
-  // hash of positions, and the others are put in cells of half the tolerance (any two in one cell are
-  // within it, so joined unmeasured), grouped in blocks of four times the tolerance; a vertex looks into
-  // a neighbouring block only along the axes where it lies within the tolerance of its block's side
-  // (about 3 blocks rather than 27), and there measures only the cells not yet in its cluster.
+  // Vertices equal or within the tolerance of one another are welded to the lowest index of their
+  // cluster (core/io/position_weld.h).
   void weld() {
     const auto& p = soup_.positions;
     welded_away_.assign(p.size(), 0);
@@ -231,28 +127,12 @@ private:
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
     }
-    const double diagonal = (hi - lo).norm();
-    tolerance_ = std::max(0.0, options_.weld_tolerance) * diagonal;
-    LowestRootSets sets(p.size());
-    std::vector<int> distinct;  // the first vertex at each position
-    {
-      const auto position = [&](int v) {
-        const Vec3& x = p[size_t(v)];
-        return CellKey{x.x() + 0.0, x.y() + 0.0, x.z() + 0.0};  // −0 as 0
-      };
-      IndexTable<decltype(position)> first_at(p.size(), position);
-      for (int v = 0; v < int(p.size()); ++v) {
-        if (const int first = first_at.find_or_add(position(v), v); first >= 0)
-          sets.unite(first, v);
-        else
-          distinct.push_back(v);
-      }
-    }
-    if (tolerance_ > 0) weld_within_tolerance(distinct, lo, sets);
+    tolerance_ = std::max(0.0, options_.weld_tolerance) * (hi - lo).norm();
+    weld_root_ = weld_roots(p, tolerance_);
     std::vector<int> group_size(p.size(), 0);
-    for (int v = 0; v < int(p.size()); ++v) ++group_size[size_t(sets.find(v))];
+    for (int v = 0; v < int(p.size()); ++v) ++group_size[size_t(weld_root_[size_t(v)])];
     for (int v = 0; v < int(p.size()); ++v) {
-      const int root = sets.find(v);
+      const int root = weld_root_[size_t(v)];
       if (group_size[size_t(root)] < 2) continue;
       ++report_.counts[size_t(Defect::coincident_vertices)];
       if (root == v) {
@@ -262,102 +142,7 @@ private:
         example(Defect::coincident_vertices, {v, root});
       }
     }
-    weld_root_.resize(p.size());
-    for (int v = 0; v < int(p.size()); ++v) weld_root_[size_t(v)] = sets.find(v);
     for (int& v : soup_.faces.verts) v = weld_root_[size_t(v)];
-  }
-
-  // Joins the `distinct` positions (ascending vertices) lying within the tolerance of one another.
-  void weld_within_tolerance(const std::vector<int>& distinct, const Vec3& lo, LowestRootSets& sets) {
-    const auto& p = soup_.positions;
-    const double cell = 0.5 * tolerance_, block = 4 * tolerance_;
-    const double reach = 0.25 + 1e-6;  // the tolerance in blocks, rounding allowed for
-    const double tolerance2 = tolerance_ * tolerance_;
-    const auto key_of = [&](const Vec3& x, double size) {
-      const Vec3 c = ((x - lo) / size).array().floor();
-      return CellKey{c.x(), c.y(), c.z()};
-    };
-    struct Cell {
-      int head = -1;           // its last vertex; next_in_cell chains the rest
-      int next_in_block = -1;  // the block's previous cell
-    };
-    struct Block {
-      int vertex = -1;  // one of its vertices
-      int last_cell = -1;
-      int n_cells = 0;
-    };
-    constexpr int kCellsAround = 125;  // the cells within the tolerance of a cell: ±2 along each axis
-    std::vector<Cell> cells;
-    std::vector<Block> blocks;
-    const auto cell_key = [&](int c) { return key_of(p[size_t(cells[size_t(c)].head)], cell); };
-    const auto block_key = [&](int b) { return key_of(p[size_t(blocks[size_t(b)].vertex)], block); };
-    IndexTable<decltype(cell_key)> cell_at(distinct.size(), cell_key);
-    IndexTable<decltype(block_key)> block_at(distinct.size(), block_key);
-    // The squared distance from x to a cell's box, in cells (computed as key_of places x): a cell
-    // farther than the tolerance is not measured.
-    const auto cells2_to = [&](const Vec3& x, int c) {
-      const CellKey k = cell_key(c);
-      const Vec3 d = (x - lo) / cell - Vec3(k.x, k.y, k.z);
-      return (-d).cwiseMax(d - Vec3::Ones()).cwiseMax(0.0).squaredNorm();
-    };
-    std::vector<int> next_in_cell(p.size(), -1);
-    for (const int v : distinct) {
-      const Vec3& x = p[size_t(v)];
-      const int own = cell_at.find_or_add(key_of(x, cell), int(cells.size()));
-      if (own >= 0)
-        sets.unite(cells[size_t(own)].head, v);
-      else
-        cells.push_back({v, -1});
-      // The cells not yet in v's cluster whose box lies within the tolerance: each measured until a
-      // vertex within it is found.
-      const auto measure = [&](int c) {
-        if (sets.find(cells[size_t(c)].head) == sets.find(v) || cells2_to(x, c) > 4 * (1 + 1e-6)) return;
-        for (int u = cells[size_t(c)].head; u >= 0; u = next_in_cell[size_t(u)])
-          if ((p[size_t(u)] - x).squaredNorm() <= tolerance2) {
-            sets.unite(u, v);
-            return;
-          }
-      };
-      const CellKey k = key_of(x, block);
-      const Vec3 in_block = (x - lo) / block - Vec3(k.x, k.y, k.z);  // each in [0, 1)
-      int from[3], to[3];
-      for (int a = 0; a < 3; ++a) {
-        from[a] = in_block[a] < reach ? -1 : 0;
-        to[a] = in_block[a] > 1 - reach ? 1 : 0;
-      }
-      int near[8], n_near = 0, near_cells = 0;
-      for (int dx = from[0]; dx <= to[0]; ++dx)
-        for (int dy = from[1]; dy <= to[1]; ++dy)
-          for (int dz = from[2]; dz <= to[2]; ++dz)
-            if (const int b = block_at.find({k.x + dx, k.y + dy, k.z + dz}); b >= 0) {
-              near[n_near++] = b;
-              near_cells += blocks[size_t(b)].n_cells;
-            }
-      if (near_cells <= kCellsAround) {
-        for (int i = 0; i < n_near; ++i)
-          for (int c = blocks[size_t(near[i])].last_cell; c >= 0; c = cells[size_t(c)].next_in_block) measure(c);
-      } else {  // crowded blocks: the cells within the tolerance looked up instead
-        const CellKey at = key_of(x, cell);
-        for (int dx = -2; dx <= 2; ++dx)
-          for (int dy = -2; dy <= 2; ++dy)
-            for (int dz = -2; dz <= 2; ++dz)
-              if (const int c = cell_at.find({at.x + dx, at.y + dy, at.z + dz}); c >= 0) measure(c);
-      }
-      if (own >= 0) {
-        next_in_cell[size_t(v)] = cells[size_t(own)].head;
-        cells[size_t(own)].head = v;
-        continue;
-      }
-      const int c = int(cells.size()) - 1;
-      const int b = block_at.find_or_add(k, int(blocks.size()));
-      if (b < 0) {
-        blocks.push_back({v, c, 1});
-      } else {
-        cells[size_t(c)].next_in_block = blocks[size_t(b)].last_cell;
-        blocks[size_t(b)].last_cell = c;
-        ++blocks[size_t(b)].n_cells;
-      }
-    }
   }
 
   // Repeated consecutive corners are removed; a face that still lists a vertex twice is cut there into
