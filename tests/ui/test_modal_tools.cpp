@@ -253,6 +253,34 @@ TEST(SlideTool, OneVertexSlidesAlongAnEdge) {
   }
 }
 
+// The cursor moved halfway to a neighbour's pixel: the vertex halfway along that edge (the cube's
+// Gaussians are equal, so the 9D path is the straight edge).
+TEST(SlideTool, OneVertexFollowsTheMouseTowardTheNeighbourItMovesTo) {
+  const CovarianceMesh before = cube();
+  Viewport view;  // the default camera, which sees the whole cube
+  view.width = 800;
+  view.height = 600;
+  const auto pixel = [&](int v) {
+    return glm::vec2(*project_to_pixel(view.camera, view.width, view.height, before.mean(size_t(v))));
+  };
+  for (const auto u : before.mesh.vv_range(before.mesh.vertex_handle(6u))) {
+    Editor editor(before, {6});
+    ToolContext c = editor.context();
+    c.viewport = view;
+    c.cursor = pixel(6);
+    const auto tool = SlideTool::start(c);
+    ASSERT_TRUE(tool);
+    InputEvent move;
+    move.position = pixel(6) + 0.5f * (pixel(u.idx()) - pixel(6));
+    ToolContext m = editor.context();
+    m.viewport = view;
+    EXPECT_EQ(tool->handle(move, m), ToolResult::consumed);
+    EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ENTER)), ToolResult::confirmed);
+    const Vec3 midpoint = 0.5 * (before.mean(6) + before.mean(size_t(u.idx())));
+    EXPECT_NEAR((editor.document.mesh().mean(6) - midpoint).norm(), 0.0, 1e-3) << "toward " << u.idx();
+  }
+}
+
 TEST(SlideTool, GPressedAgainDuringAGrabSlides) {
   const CutCube cut;
   Editor editor(cut.mesh, cut.loop);
