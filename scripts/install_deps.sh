@@ -6,7 +6,7 @@ packages=(
   libopenmesh-dev libeigen3-dev libglm-dev libopenimageio-dev openimageio-tools
   libglfw3-dev libosmesa6-dev libegl-dev libgl-dev libimgui-dev
   libgl1-mesa-dri libglx-mesa0 libegl-mesa0
-  libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libcli11-dev nlohmann-json3-dev libtinygltf-dev libgtest-dev libgmock-dev libbenchmark-dev
   libcgal-dev  # header-only: the AABB tree of surface distances (core/fitting/)
   libosd-dev  # OpenSubdiv: the peer benchmark (bench/) and the crease reference test, never linked into core, render or app
   xvfb xauth fonts-dejavu-core

@@ -1,10 +1,12 @@
 #include "core/evaluation/triangle_mesh.h"
 
 #include <charconv>
+#include <sstream>
 
 #include <Eigen/Geometry>
 
 #include "core/io/atomic_file.h"
+#include "core/io/gltf_io.h"
 #include "core/support/error.h"
 #include "core/io/mesh_io.h"
 #include "core/support/quoted_text.h"
@@ -65,6 +67,20 @@ void write_obj(std::ostream& out, const TriangleMesh& m) {
         << t[2] + 1 << '\n';
 }
 
+// glTF: its positions and normals as they are (normals of the limit surface), without covariances.
+void write_gltf_triangles(const std::string& path, const TriangleMesh& m, bool binary) {
+  GltfTriangles triangles{m.positions, m.normals, {}, m.triangles};
+  for (Vec3& n : triangles.normals) n.normalize();
+  std::ostringstream gltf;
+  try {
+    write_gltf(gltf, triangles, binary);
+  } catch (const Error& e) {
+    throw Error(escaped(path) + ": " + e.what(), e.kind());
+  }
+  write_file_atomically(
+      path, [&](std::ostream& out) { out << gltf.view(); }, true);
+}
+
 }  // namespace
 
 void fill_missing_normals(TriangleMesh& mesh) {
@@ -90,8 +106,10 @@ void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, bool
         path, [&](std::ostream& out) { write_ply(out, mesh, binary); }, binary);
   else if (ext == ".obj")
     write_file_atomically(path, [&](std::ostream& out) { write_obj(out, mesh); });
+  else if (ext == ".gltf" || ext == ".glb")
+    write_gltf_triangles(path, mesh, ext == ".glb");
   else
-    throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) + " (use .ply or .obj)");
+    throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) + " (use .ply, .obj, .gltf or .glb)");
 }
 
 }  // namespace gps

@@ -16,7 +16,8 @@ struct TriangleMesh {
 /// Gives each vertex whose normal is zero (none known there) the area-weighted normal of its triangles.
 void fill_missing_normals(TriangleMesh& mesh);
 
-/// Writes .ply (x y z nx ny nz; ASCII or binary little endian) or .obj (v, vn, f v//vn), atomically.
+/// Writes .ply (x y z nx ny nz; ASCII or binary little endian), .obj (v, vn, f v//vn) or .gltf/.glb
+/// (POSITION and NORMAL, core/io/gltf_io.h), atomically.
 void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, bool binary = false);
 
 }  // namespace gps

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 
 #include "core/io/atomic_file.h"
 #include "core/support/error.h"
 #include "core/mesh/inference.h"
+#include "core/io/gltf_io.h"
 #include "core/io/mesh_import.h"
 #include "core/io/ply_io.h"
 #include "core/support/quoted_text.h"
@@ -21,23 +23,32 @@ std::string extension_of(const std::string& path) {
 
 PolygonSoup read_polygon_soup(const std::string& path, bool& has_covariances) {
   const std::string ext = extension_of(path);
-  if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".stl")
-    throw Error(escaped(path) + ": unknown mesh format " + quoted_token(ext) + " (use .ply, .obj, .off or .stl)");
+  const bool gltf = ext == ".gltf" || ext == ".glb";
+  if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".stl" && !gltf)
+    throw Error(escaped(path) + ": unknown mesh format " + quoted_token(ext) +
+                " (use .ply, .obj, .off, .stl, .gltf or .glb)");
   std::string data = read_text_file(path, ext == ".ply"   ? HeadCheck(check_ply_head)
                                           : ext == ".stl" ? check_stl_head
+                                          : gltf          ? check_gltf_head
                                                           : check_text_head);
   has_covariances = false;
+  if (gltf) {
+    // A .gltf's buffer files are named relative to its folder.
+    const std::string folder = std::filesystem::absolute(path).parent_path().string();
+    return parse_gltf_soup(data, path, folder, has_covariances);
+  }
   if (ext == ".ply") return parse_ply_soup(std::move(data), path, has_covariances);
   if (ext == ".obj") return parse_obj_soup(std::move(data), path);
   if (ext == ".off") return parse_off_soup(std::move(data), path);
   return parse_stl_soup(std::move(data), path);
 }
 
-std::vector<Vec3> read_points(const std::string& path) {
+std::vector<Vec3> read_points(const std::string& path, PolygonTopology* faces) {
   bool has_covariances = false;
-  std::vector<Vec3> points = read_polygon_soup(path, has_covariances).positions;
-  if (points.empty()) throw Error(escaped(path) + ": has no vertices");
-  return points;
+  PolygonSoup soup = read_polygon_soup(path, has_covariances);
+  if (soup.positions.empty()) throw Error(escaped(path) + ": has no vertices");
+  if (faces) *faces = std::move(soup.faces);
+  return std::move(soup.positions);
 }
 
 RepairOptions repair_options_for(const ImportOptions& options) {
@@ -196,8 +207,18 @@ void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary
       for (size_t v = 0; v < mesh.sharpness.corners.size(); ++v)
         if (mesh.sharpness.corners[v] > 0.0) out << "t corner 1/1/0 " << v << ' ' << mesh.sharpness.corners[v] << '\n';
     });
+  } else if (ext == ".gltf" || ext == ".glb") {
+    // Made whole before the file is opened: a refusal leaves nothing behind.
+    std::ostringstream gltf;
+    try {
+      write_gltf(gltf, gltf_triangles_of(mesh), ext == ".glb");
+    } catch (const Error& e) {
+      throw Error(escaped(path) + ": " + e.what(), e.kind());
+    }
+    write_file_atomically(
+        path, [&](std::ostream& out) { out << gltf.view(); }, true);
   } else {
-    throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) + " (use .ply or .obj)");
+    throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) + " (use .ply, .obj, .gltf or .glb)");
   }
 }
 

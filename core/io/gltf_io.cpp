@@ -1,0 +1,484 @@
+#include "core/io/gltf_io.h"
+
+#include <bit>
+#include <climits>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <unordered_map>
+
+#include <Eigen/Geometry>
+#include <tiny_gltf.h>
+
+#include "core/io/text_file.h"
+#include "core/support/error.h"
+#include "core/support/memory_budget.h"
+#include "core/support/quoted_text.h"
+
+namespace gps {
+
+namespace {
+
+constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+constexpr const char* kCovarianceAttribute = "_COVARIANCE";
+
+// The first line of a tinygltf message, without its trailing full stop or spaces.
+std::string first_line(const std::string& text) {
+  std::string line = text.substr(0, text.find('\n'));
+  while (!line.empty() && (line.back() == ' ' || line.back() == '.' || line.back() == '\r')) line.pop_back();
+  return escaped(line);
+}
+
+// tinygltf reads a .gltf's buffer files through these: only regular files (as every reader of gpsurf),
+// no "~" expansion, nothing at all where the data came without a folder.
+bool regular_file_exists(const std::string& path, void* folder) {
+  std::error_code error;
+  return folder != nullptr && std::filesystem::is_regular_file(path, error);
+}
+std::string path_as_given(const std::string& path, void*) { return path; }
+bool read_buffer_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* folder) {
+  if (folder == nullptr) return false;
+  try {
+    const std::string bytes = read_text_file(path);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const Error& e) {
+    if (err) *err += e.what();
+    return false;
+  }
+}
+bool write_nothing(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+
+// Images are not read: a mesh's surface needs none of them.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+// An accessor's elements as bytes in its buffer: `count` elements `stride` bytes apart.
+struct AccessorBytes {
+  const unsigned char* data = nullptr;
+  size_t count = 0, stride = 0;
+  int component_type = 0;
+};
+
+// The bytes of accessor `index` of the given type and one of the given component types, every element
+// checked to lie inside its buffer view and the view inside its buffer. `where` names the use
+// ("mesh 0 primitive 1"), `what` the attribute.
+AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, int type, std::initializer_list<int> components,
+                             const std::string& where, const std::string& what) {
+  const std::string name = where + ": " + what + " accessor " + std::to_string(index);
+  if (index < 0 || size_t(index) >= model.accessors.size())
+    throw Error(where + ": " + what + " names accessor " + std::to_string(index) + ", which is not in the file");
+  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  if (a.sparse.isSparse) throw Error(name + " is sparse, which is not read");
+  if (a.type != type) throw Error(name + " has the wrong type for " + what);
+  if (std::find(components.begin(), components.end(), a.componentType) == components.end())
+    throw Error(name + " has the wrong component type " + std::to_string(a.componentType) + " for " + what);
+  if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size())
+    throw Error(name + " has no buffer view in the file");
+  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
+    throw Error(name + ": buffer view " + std::to_string(a.bufferView) + " has no buffer in the file");
+  const std::vector<unsigned char>& buffer = model.buffers[size_t(view.buffer)].data;
+  if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
+    throw Error(name + ": buffer view " + std::to_string(a.bufferView) + " reads past its buffer");
+  const size_t element = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType))) *
+                         size_t(tinygltf::GetNumComponentsInType(uint32_t(a.type)));
+  const size_t stride = view.byteStride != 0 ? view.byteStride : element;
+  if (stride < element) throw Error(name + ": its byte stride " + std::to_string(stride) + " is shorter than an element");
+  AccessorBytes bytes{nullptr, a.count, stride, a.componentType};
+  if (a.count == 0) return bytes;
+  // The last element ends at offset + stride (count − 1) + element, compared without overflow.
+  const size_t room = view.byteLength;
+  if (a.byteOffset > room || element > room - a.byteOffset || (a.count - 1) > (room - a.byteOffset - element) / stride)
+    throw Error(name + " reads past its buffer view");
+  bytes.data = buffer.data() + view.byteOffset + a.byteOffset;
+  return bytes;
+}
+
+float float_at(const AccessorBytes& b, size_t i, int k) {
+  float value;
+  std::memcpy(&value, b.data + i * b.stride + size_t(k) * sizeof(float), sizeof value);
+  return value;
+}
+
+uint32_t index_at(const AccessorBytes& b, size_t i) {
+  const unsigned char* p = b.data + i * b.stride;
+  if (b.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) return *p;
+  if (b.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+    uint16_t v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  uint32_t v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+// A node's local transform: its matrix (column-major) or translation × rotation × scale.
+Eigen::Matrix4d local_transform(const tinygltf::Node& node, const std::string& name) {
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  if (!node.matrix.empty()) {
+    if (node.matrix.size() != 16) throw Error(name + ": its matrix has " + std::to_string(node.matrix.size()) + " numbers, not 16");
+    for (int k = 0; k < 16; ++k) m(k % 4, k / 4) = node.matrix[size_t(k)];
+    return m;
+  }
+  const auto sized = [&](const std::vector<double>& v, size_t n, const char* what) {
+    if (!v.empty() && v.size() != n)
+      throw Error(name + ": its " + what + " has " + std::to_string(v.size()) + " numbers, not " + std::to_string(n));
+    return !v.empty();
+  };
+  Eigen::Affine3d t = Eigen::Affine3d::Identity();
+  if (sized(node.translation, 3, "translation")) t.translate(Vec3(node.translation[0], node.translation[1], node.translation[2]));
+  if (sized(node.rotation, 4, "rotation")) {
+    const Eigen::Quaterniond q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+    if (!(q.norm() > 0.0)) throw Error(name + ": its rotation is not a rotation (zero or not finite)");
+    t.rotate(q.normalized());
+  }
+  if (sized(node.scale, 3, "scale")) t.scale(Vec3(node.scale[0], node.scale[1], node.scale[2]));
+  return t.matrix();
+}
+
+// A mesh placed by a node (or by none, where the file has no scene) at its world transform.
+struct MeshInstance {
+  int mesh = 0;
+  Eigen::Matrix4d transform;
+};
+
+std::vector<MeshInstance> mesh_instances(const tinygltf::Model& model) {
+  std::vector<MeshInstance> instances;
+  if (model.scenes.empty()) {
+    for (size_t m = 0; m < model.meshes.size(); ++m) instances.push_back({int(m), Eigen::Matrix4d::Identity()});
+    return instances;
+  }
+  const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+  if (size_t(scene) >= model.scenes.size())
+    throw Error("the default scene " + std::to_string(scene) + " is not in the file");
+  // Depth first through the node trees, each node at most once (the nodes of a scene form trees).
+  std::vector<char> reached(model.nodes.size(), 0);
+  std::vector<std::pair<int, Eigen::Matrix4d>> stack;
+  for (const int root : model.scenes[size_t(scene)].nodes) stack.emplace_back(root, Eigen::Matrix4d::Identity());
+  while (!stack.empty()) {
+    const auto [n, parent] = stack.back();
+    stack.pop_back();
+    const std::string name = "node " + std::to_string(n);
+    if (n < 0 || size_t(n) >= model.nodes.size()) throw Error(name + " is not in the file");
+    if (reached[size_t(n)]) throw Error(name + " is reached twice (the nodes of a scene must form trees)");
+    reached[size_t(n)] = 1;
+    const tinygltf::Node& node = model.nodes[size_t(n)];
+    const Eigen::Matrix4d world = parent * local_transform(node, name);
+    if (!world.allFinite()) throw Error(name + ": its world transform is not finite");
+    if (node.mesh >= 0) {
+      if (size_t(node.mesh) >= model.meshes.size())
+        throw Error(name + " names mesh " + std::to_string(node.mesh) + ", which is not in the file");
+      instances.push_back({node.mesh, world});
+    }
+    for (const int child : node.children) stack.emplace_back(child, world);
+  }
+  return instances;
+}
+
+bool is_triangles(const tinygltf::Primitive& p) {
+  return p.mode == -1 || p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+         p.mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
+
+// The corners of the triangles of a primitive's `n` indexed vertices (glTF 2.0 §3.7.2.1: a strip's
+// odd triangles reversed so that all turn the same way; a fan's around its first vertex).
+template <class Emit>
+void primitive_triangles(int mode, size_t n, const std::string& where, Emit&& emit) {
+  if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    for (size_t i = 0; i + 2 < n; ++i) emit(i, i + 1 + i % 2, i + 2 - i % 2, true);
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+    for (size_t i = 1; i + 1 < n; ++i) emit(i, i + 1, size_t(0), true);
+  } else {
+    if (n % 3 != 0) throw Error(where + ": " + std::to_string(n) + " vertices are not a whole number of triangles");
+    for (size_t i = 0; i < n; i += 3) emit(i, i + 1, i + 2, false);
+  }
+}
+
+// The bits of a position, +0 for −0, as the key of the weld.
+struct PositionBits {
+  std::array<uint64_t, 3> bits;
+  bool operator==(const PositionBits&) const = default;
+};
+struct PositionBitsHash {
+  size_t operator()(const PositionBits& p) const {
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (const uint64_t b : p.bits) h = (h ^ b) * 0x100000001b3ull + (h >> 29);
+    return size_t(h);
+  }
+};
+PositionBits bits_of(const Vec3& p) {
+  return {{std::bit_cast<uint64_t>(p.x() + 0.0), std::bit_cast<uint64_t>(p.y() + 0.0), std::bit_cast<uint64_t>(p.z() + 0.0)}};
+}
+
+// The file's model; tinygltf's warnings, a line each, in `warnings`.
+tinygltf::Model load_model(const std::string& data, const std::string& base_dir, std::vector<std::string>& warnings) {
+  if (data.size() > UINT_MAX) throw Error("is larger than tinygltf reads (4 GiB)");
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(skip_image, nullptr);
+  // The folder is passed as the callbacks' user data: none means no file is read.
+  loader.SetFsCallbacks({regular_file_exists, path_as_given, read_buffer_file, write_nothing,
+                         base_dir.empty() ? nullptr : const_cast<std::string*>(&base_dir)});
+  tinygltf::Model model;
+  std::string err, warn;
+  bool loaded = false;
+  try {
+    const bool binary = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
+    if (binary)
+      loaded = loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
+                                           unsigned(data.size()), base_dir);
+    else
+      loaded = loader.LoadASCIIFromString(&model, &err, &warn, data.data(), unsigned(data.size()), base_dir);
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(first_line(e.what()));
+  }
+  if (!loaded) throw Error(first_line(err.empty() ? warn : err));
+  for (size_t start = 0; start < warn.size();) {
+    const size_t end = std::min(warn.find('\n', start), warn.size());
+    if (end > start) warnings.push_back(first_line(warn.substr(start, end - start)));
+    start = end + 1;
+  }
+  return model;
+}
+
+}  // namespace
+
+void check_gltf_head(std::string_view head, size_t size) {
+  if (head.size() >= 4 && head.substr(0, 4) == "glTF") {
+    if (head.size() < 12) throw Error("is a truncated .glb (" + std::to_string(size) + " bytes, its header has 12)");
+    uint32_t version, length;
+    std::memcpy(&version, head.data() + 4, 4);
+    std::memcpy(&length, head.data() + 8, 4);
+    if (version != 2) throw Error("is a .glb of version " + std::to_string(version) + ", not 2");
+    if (length != size)
+      throw Error("is a truncated or padded .glb (its header gives " + std::to_string(length) + " bytes, the file has " +
+                  std::to_string(size) + ")");
+    return;
+  }
+  const size_t start = head.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+  if (start == std::string_view::npos || head[start] != '{')
+    throw Error("is neither a .glb (it does not begin with \"glTF\") nor glTF JSON (it does not begin with '{')");
+}
+
+PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, const std::string& base_dir,
+                            bool& has_covariances) {
+  has_covariances = false;
+  const auto named = [&](const std::string& what) { return escaped(source) + ": " + what; };
+  tinygltf::Model model;
+  std::vector<MeshInstance> instances;
+  std::vector<std::string> warnings;
+  try {
+    model = load_model(data, base_dir, warnings);
+    instances = mesh_instances(model);
+  } catch (const Error& e) {
+    throw Error(named(e.what()), e.kind());
+  }
+  PolygonSoup soup;
+  for (const std::string& line : warnings) soup.notes.push_back(named("(tinygltf) " + line));
+  // What the file would make, checked against the memory budget before it is read: each instance's
+  // positions and corners (a corner may be a triangle of its own in a strip or fan).
+  double positions = 0, corners = 0;
+  size_t primitives = 0, with_covariances = 0;
+  for (const MeshInstance& instance : instances)
+    for (const tinygltf::Primitive& p : model.meshes[size_t(instance.mesh)].primitives) {
+      if (!is_triangles(p)) continue;
+      ++primitives;
+      if (p.attributes.count(kCovarianceAttribute)) ++with_covariances;
+      const auto position = p.attributes.find("POSITION");
+      if (position != p.attributes.end() && position->second >= 0 && size_t(position->second) < model.accessors.size())
+        positions += double(model.accessors[size_t(position->second)].count);
+      if (p.indices >= 0 && size_t(p.indices) < model.accessors.size())
+        corners += double(model.accessors[size_t(p.indices)].count);
+      else if (position != p.attributes.end() && position->second >= 0 && size_t(position->second) < model.accessors.size())
+        corners += double(model.accessors[size_t(position->second)].count);
+    }
+  if (primitives == 0)
+    throw Error(named("has no triangles (no mesh primitive of mode TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN)"));
+  if (with_covariances != 0 && with_covariances != primitives)
+    throw Error(named(std::to_string(with_covariances) + " of " + std::to_string(primitives) +
+                      " triangle primitives have _COVARIANCE: all or none must"));
+  has_covariances = with_covariances != 0;
+  // Per position its vector, covariance and weld entry; per corner its index and a face offset.
+  check_output_size({positions, corners, positions * double(sizeof(Vec3) + (has_covariances ? sizeof(Mat3) : 0) + 48) +
+                                             corners * 16},
+                    escaped(source), "triangles", "the file is too large to read here");
+
+  std::unordered_map<PositionBits, int, PositionBitsHash> welded;
+  std::vector<int> vertex_of;  // the welded vertex of each position of the current primitive
+  std::vector<int> verts;
+  std::vector<int> offsets{0};
+  for (const MeshInstance& instance : instances) {
+    const tinygltf::Mesh& mesh = model.meshes[size_t(instance.mesh)];
+    const Eigen::Matrix3d linear = instance.transform.topLeftCorner<3, 3>();
+    const Vec3 shift = instance.transform.topRightCorner<3, 1>();
+    for (size_t pi = 0; pi < mesh.primitives.size(); ++pi) {
+      const tinygltf::Primitive& p = mesh.primitives[pi];
+      if (!is_triangles(p)) continue;
+      const std::string where = named("mesh " + std::to_string(instance.mesh) + " primitive " + std::to_string(pi));
+      const auto position = p.attributes.find("POSITION");
+      if (position == p.attributes.end()) throw Error(where + ": has no POSITION attribute");
+      const AccessorBytes points = accessor_bytes(model, position->second, TINYGLTF_TYPE_VEC3, {kFloat}, where, "POSITION");
+      AccessorBytes gaussians;
+      if (has_covariances)
+        gaussians = accessor_bytes(model, p.attributes.at(kCovarianceAttribute), TINYGLTF_TYPE_MAT3, {kFloat}, where,
+                                   kCovarianceAttribute);
+      if (has_covariances && gaussians.count != points.count)
+        throw Error(where + ": " + std::to_string(gaussians.count) + " covariances for " + std::to_string(points.count) +
+                    " positions");
+      vertex_of.assign(points.count, 0);
+      for (size_t i = 0; i < points.count; ++i) {
+        const Vec3 local(float_at(points, i, 0), float_at(points, i, 1), float_at(points, i, 2));
+        const Vec3 world = linear * local + shift;
+        if (const std::string why = position_problem(world); !why.empty())
+          throw Error(where + ": vertex " + std::to_string(i) + " " + why);
+        const auto [found, added] = welded.emplace(bits_of(world), int(soup.positions.size()));
+        vertex_of[i] = found->second;
+        if (!added) continue;
+        soup.positions.push_back(world);
+        if (!has_covariances) continue;
+        Mat3 sigma;
+        for (int k = 0; k < 9; ++k) sigma(k % 3, k / 3) = float_at(gaussians, i, k);
+        sigma = linear * sigma * linear.transpose();
+        if (const std::string why = covariance_problem(sigma); !why.empty())
+          throw Error(where + ": vertex " + std::to_string(i) + " _COVARIANCE " + why);
+        soup.covariances.push_back(sigma);
+      }
+      AccessorBytes indices;
+      size_t n = points.count;
+      if (p.indices >= 0) {
+        indices = accessor_bytes(model, p.indices, TINYGLTF_TYPE_SCALAR,
+                                 {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                                 where, "indices");
+        n = indices.count;
+      }
+      const auto vertex = [&](size_t k) {
+        const size_t i = indices.data ? index_at(indices, k) : k;
+        if (i >= points.count)
+          throw Error(where + ": index " + std::to_string(k) + " is " + std::to_string(i) + ", past its " +
+                      std::to_string(points.count) + " positions");
+        return vertex_of[i];
+      };
+      const int mode = p.mode == -1 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+      primitive_triangles(mode, n, where, [&](size_t a, size_t b, size_t c, bool skip_degenerate) {
+        const int t[3] = {vertex(a), vertex(b), vertex(c)};
+        // A strip or fan restarts through triangles with a repeated corner: they are not faces.
+        if (skip_degenerate && (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])) return;
+        verts.insert(verts.end(), t, t + 3);
+        offsets.push_back(int(verts.size()));
+      });
+    }
+  }
+  soup.faces.n_vertices = int(soup.positions.size());
+  soup.faces.verts = std::move(verts);
+  soup.faces.offsets = std::move(offsets);
+  return soup;
+}
+
+GltfTriangles gltf_triangles_of(const CovarianceMesh& mesh) {
+  GltfTriangles out;
+  out.positions.reserve(mesh.n_vertices());
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) out.positions.push_back(mesh.mean(i));
+  out.covariances = mesh.covariances;
+  out.normals.assign(mesh.n_vertices(), Vec3::Zero());
+  std::vector<int> corners;
+  for (const auto f : mesh.mesh.faces()) {
+    corners.clear();
+    for (const auto v : mesh.mesh.fv_range(f)) corners.push_back(v.idx());
+    // Newell's normal: its length is twice the face's area, so that the sum weighs faces by area.
+    Vec3 normal = Vec3::Zero();
+    for (size_t k = 0; k < corners.size(); ++k)
+      normal += out.positions[size_t(corners[k])].cross(out.positions[size_t(corners[(k + 1) % corners.size()])]);
+    for (const int v : corners) out.normals[size_t(v)] += normal;
+    for (size_t k = 1; k + 1 < corners.size(); ++k) out.triangles.push_back({corners[0], corners[k], corners[k + 1]});
+  }
+  // glTF's normals are unit vectors: a vertex whose faces have no area gets +z.
+  for (Vec3& n : out.normals) n = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::UnitZ();
+  return out;
+}
+
+namespace {
+
+// Appends `values` to the buffer as one buffer view (4-byte aligned, as every value written is 4 bytes)
+// and an accessor of `count` elements over it; returns the accessor's index.
+int add_accessor(tinygltf::Model& model, const std::vector<float>& floats, const std::vector<uint32_t>& indices,
+                 size_t count, int type, int target) {
+  std::vector<unsigned char>& buffer = model.buffers[0].data;
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = buffer.size();
+  const unsigned char* bytes = floats.empty() ? reinterpret_cast<const unsigned char*>(indices.data())
+                                              : reinterpret_cast<const unsigned char*>(floats.data());
+  view.byteLength = floats.empty() ? indices.size() * sizeof(uint32_t) : floats.size() * sizeof(float);
+  view.target = target;
+  buffer.insert(buffer.end(), bytes, bytes + view.byteLength);
+  model.bufferViews.push_back(view);
+  tinygltf::Accessor accessor;
+  accessor.bufferView = int(model.bufferViews.size()) - 1;
+  accessor.componentType = floats.empty() ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT : kFloat;
+  accessor.count = count;
+  accessor.type = type;
+  model.accessors.push_back(accessor);
+  return int(model.accessors.size()) - 1;
+}
+
+}  // namespace
+
+void write_gltf(std::ostream& out, const GltfTriangles& mesh, bool binary) {
+  const size_t n = mesh.positions.size();
+  if (n > size_t(std::numeric_limits<int>::max())) throw Error("not written: too many vertices for glTF");
+  std::vector<float> positions, normals, covariances;
+  positions.reserve(3 * n);
+  normals.reserve(3 * n);
+  std::vector<double> low(3, std::numeric_limits<double>::infinity()), high(3, -std::numeric_limits<double>::infinity());
+  for (size_t i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const float x = float(mesh.positions[i][k]);
+      if (!std::isfinite(x)) throw Error("not written: vertex " + std::to_string(i) + " position does not fit a float");
+      positions.push_back(x);
+      normals.push_back(float(mesh.normals[i][k]));
+      low[size_t(k)] = std::min(low[size_t(k)], double(x));
+      high[size_t(k)] = std::max(high[size_t(k)], double(x));
+    }
+  for (size_t i = 0; i < mesh.covariances.size(); ++i) {
+    const Mat3 in_float = mesh.covariances[i].cast<float>().cast<double>();
+    if (const std::string why = covariance_problem(in_float); !why.empty())
+      throw Error("not written: vertex " + std::to_string(i) + " covariance rounded to float " + why + " (write .ply)");
+    for (int k = 0; k < 9; ++k) covariances.push_back(float(in_float(k % 3, k / 3)));
+  }
+  std::vector<uint32_t> indices;
+  indices.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles) indices.insert(indices.end(), t.begin(), t.end());
+
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "gpsurf";
+  model.buffers.resize(1);
+  tinygltf::Primitive primitive;
+  primitive.mode = TINYGLTF_MODE_TRIANGLES;
+  primitive.attributes["POSITION"] = add_accessor(model, positions, {}, n, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
+  model.accessors.back().minValues = low;
+  model.accessors.back().maxValues = high;
+  primitive.attributes["NORMAL"] = add_accessor(model, normals, {}, n, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
+  if (!covariances.empty())
+    primitive.attributes[kCovarianceAttribute] =
+        add_accessor(model, covariances, {}, n, TINYGLTF_TYPE_MAT3, TINYGLTF_TARGET_ARRAY_BUFFER);
+  primitive.indices = add_accessor(model, {}, indices, indices.size(), TINYGLTF_TYPE_SCALAR,
+                                   TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  model.meshes.resize(1);
+  model.meshes[0].primitives.push_back(primitive);
+  model.nodes.resize(1);
+  model.nodes[0].mesh = 0;
+  model.scenes.resize(1);
+  model.scenes[0].nodes.push_back(0);
+  model.defaultScene = 0;
+  tinygltf::TinyGLTF writer;
+  if (!writer.WriteGltfSceneToStream(&model, out, !binary, binary)) throw Error("not written: tinygltf refused the mesh");
+}
+
+}  // namespace gps

@@ -1,0 +1,363 @@
+#include "core/io/gltf_io.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <set>
+
+#include "core/io/mesh_io.h"
+#include "core/modelling/samples.h"
+#include "core/support/error.h"
+#include "tests/support/random_spd.h"
+#include "tests/support/temp_dir.h"
+
+namespace gps {
+namespace {
+
+using nlohmann::json;
+
+// The corners of each face of a mesh as a set of sorted triples after fan triangulation, in positions
+// rounded to float: comparable between a mesh and its glTF copy whatever the vertex order.
+std::multiset<std::vector<float>> triangles_by_position(const CovarianceMesh& m) {
+  std::multiset<std::vector<float>> out;
+  for (const auto f : m.mesh.faces()) {
+    std::vector<Vec3> corners;
+    for (const auto v : m.mesh.fv_range(f)) corners.push_back(m.mean(size_t(v.idx())));
+    for (size_t k = 1; k + 1 < corners.size(); ++k) {
+      // Rotated so that the smallest corner leads: the same triangle, turning the same way, compares equal.
+      std::vector<std::vector<float>> t;
+      for (const Vec3& p : {corners[0], corners[k], corners[k + 1]}) t.push_back({float(p.x()), float(p.y()), float(p.z())});
+      std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+      std::vector<float> flat;
+      for (const auto& c : t) flat.insert(flat.end(), c.begin(), c.end());
+      out.insert(flat);
+    }
+  }
+  return out;
+}
+
+size_t n_triangles(const CovarianceMesh& m) {
+  size_t n = 0;
+  for (const auto f : m.mesh.faces()) n += m.mesh.valence(f) - 2;
+  return n;
+}
+
+CovarianceMesh torus_with_random_covariances() {
+  CovarianceMesh m = make_sample("torus");
+  std::mt19937 rng(7);
+  for (auto& c : m.covariances) c = test::random_spd(rng, 9e-3) / 9.0;
+  return m;
+}
+
+void expect_same_as_written(const CovarianceMesh& written, const CovarianceMesh& read) {
+  ASSERT_EQ(read.n_vertices(), written.n_vertices());
+  EXPECT_EQ(read.n_faces(), n_triangles(written));
+  EXPECT_EQ(triangles_by_position(read), triangles_by_position(written));
+  // The writer keeps the vertex order: each Gaussian to float precision.
+  for (size_t i = 0; i < written.n_vertices(); ++i) {
+    EXPECT_LE((read.mean(i) - written.mean(i)).cwiseAbs().maxCoeff(), 1e-7 * (1 + written.mean(i).norm())) << i;
+    const Mat3& a = written.covariance(i);
+    EXPECT_LE((read.covariance(i) - a).cwiseAbs().maxCoeff(), 1e-7 * a.cwiseAbs().maxCoeff()) << i;
+  }
+}
+
+TEST(GltfIo, CovarianceTorusRoundTripsThroughGlbAndGltf) {
+  test::TempDir dir;
+  const CovarianceMesh torus = torus_with_random_covariances();
+  for (const char* name : {"torus.glb", "torus.gltf"}) {
+    write_mesh(dir.file(name), torus);
+    std::vector<std::string> notes;
+    const CovarianceMesh read = read_mesh(dir.file(name), {}, nullptr, &notes);
+    expect_same_as_written(torus, read);
+    EXPECT_TRUE(notes.empty()) << notes.front();
+  }
+  std::ifstream in(dir.file("torus.gltf"));
+  const json j = json::parse(in);
+  EXPECT_EQ(j["buffers"][0]["uri"].get<std::string>().rfind("data:application/octet-stream;base64,", 0), 0u);
+}
+
+// What a viewer needs of the JSON (glTF 2.0 §3.6, §3.7): version, one triangle primitive, POSITION
+// with min and max, unit normals, the covariance as MAT3 float, buffer views with their targets.
+TEST(GltfIo, GlbJsonChunkIsWhatTheSpecificationAsks) {
+  test::TempDir dir;
+  const CovarianceMesh cube = make_sample("cube");
+  write_mesh(dir.file("cube.glb"), cube);
+  std::ifstream in(dir.file("cube.glb"), std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GE(bytes.size(), 20u);
+  uint32_t header[5];
+  std::memcpy(header, bytes.data(), sizeof header);
+  EXPECT_EQ(std::string(bytes.data(), 4), "glTF");
+  EXPECT_EQ(header[1], 2u);
+  EXPECT_EQ(header[2], bytes.size());
+  EXPECT_EQ(header[3] % 4, 0u);  // chunks are 4-byte aligned
+  EXPECT_EQ(std::string(bytes.data() + 16, 4), "JSON");
+  const json j = json::parse(bytes.substr(20, header[3]));
+  EXPECT_EQ(j["asset"]["version"], "2.0");
+  EXPECT_EQ(j["scene"], 0);
+  const json& primitive = j["meshes"][0]["primitives"][0];
+  EXPECT_EQ(primitive.value("mode", 4), 4);
+  const json& position = j["accessors"][primitive["attributes"]["POSITION"].get<int>()];
+  EXPECT_EQ(position["componentType"], 5126);
+  EXPECT_EQ(position["type"], "VEC3");
+  EXPECT_EQ(position["count"], 8);
+  EXPECT_EQ(position["min"], json::array({-1.0, -1.0, -1.0}));
+  EXPECT_EQ(position["max"], json::array({1.0, 1.0, 1.0}));
+  const json& covariance = j["accessors"][primitive["attributes"]["_COVARIANCE"].get<int>()];
+  EXPECT_EQ(covariance["type"], "MAT3");
+  EXPECT_EQ(covariance["componentType"], 5126);
+  const json& indices = j["accessors"][primitive["indices"].get<int>()];
+  EXPECT_EQ(indices["componentType"], 5125);
+  EXPECT_EQ(indices["count"], 36);  // 6 quads, 2 triangles each
+  EXPECT_EQ(j["bufferViews"][indices["bufferView"].get<int>()]["target"], 34963);
+  EXPECT_EQ(j["bufferViews"][position["bufferView"].get<int>()]["target"], 34962);
+  for (const json& view : j["bufferViews"]) EXPECT_EQ(view.value("byteOffset", 0) % 4, 0);
+  // Normals are unit vectors: at a cube's corner, along the diagonal.
+  const CovarianceMesh read = read_mesh(dir.file("cube.glb"));
+  const GltfTriangles t = gltf_triangles_of(cube);
+  for (const Vec3& n : t.normals) {
+    EXPECT_NEAR(n.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(std::abs(n.x()), 1 / std::sqrt(3.0), 1e-12);
+  }
+  EXPECT_EQ(read.n_vertices(), 8u);
+}
+
+// A hand-made file: a buffer of float positions and u16 indices, and the JSON naming them.
+struct HandMade {
+  std::string bin;
+  json j;
+
+  template <class T>
+  void append(const std::vector<T>& values) {
+    bin.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+    while (bin.size() % 4) bin.push_back('\0');
+  }
+
+  // The .glb of it: header, JSON chunk (padded with spaces), BIN chunk (padded with zeros).
+  std::string glb() const {
+    json with_buffer = j;
+    with_buffer["buffers"] = json::array({{{"byteLength", bin.size()}}});
+    std::string text = with_buffer.dump();
+    while (text.size() % 4) text.push_back(' ');
+    std::string out = "glTF";
+    const auto word = [&](uint32_t w) { out.append(reinterpret_cast<const char*>(&w), 4); };
+    word(2);
+    word(uint32_t(12 + 8 + text.size() + 8 + bin.size()));
+    word(uint32_t(text.size()));
+    out += "JSON" + text;
+    word(uint32_t(bin.size()));
+    out += std::string("BIN\0", 4) + bin;
+    return out;
+  }
+
+  // The .gltf of it, its buffer in `bin_name` beside it.
+  void write_gltf(const test::TempDir& dir, const std::string& name, const std::string& bin_name) const {
+    json with_buffer = j;
+    with_buffer["buffers"] = json::array({{{"byteLength", bin.size()}, {"uri", bin_name}}});
+    dir.write(bin_name, bin);
+    dir.write(name, with_buffer.dump(1));
+  }
+};
+
+// A cube as glTF exporters write it: each face its own 4 vertices (split at the normal seams), 24 in all.
+HandMade split_cube() {
+  HandMade h;
+  std::vector<float> positions;
+  std::vector<uint16_t> indices;
+  const int axes[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
+  for (const auto& a : axes)
+    for (const float side : {-1.0f, 1.0f}) {
+      const uint16_t first = uint16_t(positions.size() / 3);
+      const float square[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+      for (const auto& s : square) {
+        float p[3];
+        p[a[0]] = side;
+        p[a[1]] = s[0];
+        p[a[2]] = s[1];
+        positions.insert(positions.end(), p, p + 3);
+      }
+      // Counter-clockwise seen from outside: (u, v, n) is right-handed for each axis triple above.
+      if (side > 0)
+        indices.insert(indices.end(), {first, uint16_t(first + 1), uint16_t(first + 2), first, uint16_t(first + 2), uint16_t(first + 3)});
+      else
+        indices.insert(indices.end(), {first, uint16_t(first + 2), uint16_t(first + 1), first, uint16_t(first + 3), uint16_t(first + 2)});
+    }
+  h.append(positions);
+  const size_t index_offset = h.bin.size();
+  h.append(indices);
+  h.j = {{"asset", {{"version", "2.0"}}},
+         {"bufferViews",
+          {{{"buffer", 0}, {"byteLength", positions.size() * 4}, {"target", 34962}},
+           {{"buffer", 0}, {"byteOffset", index_offset}, {"byteLength", indices.size() * 2}, {"target", 34963}}}},
+         {"accessors",
+          {{{"bufferView", 0}, {"componentType", 5126}, {"count", 24}, {"type", "VEC3"},
+            {"min", {-1, -1, -1}}, {"max", {1, 1, 1}}},
+           {{"bufferView", 1}, {"componentType", 5123}, {"count", 36}, {"type", "SCALAR"}}}},
+         {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"mode", 4}}}}}}},
+         {"nodes", {{{"mesh", 0}}}},
+         {"scenes", {{{"nodes", {0}}}}},
+         {"scene", 0}};
+  return h;
+}
+
+TEST(GltfIo, SeamSplitCubeWeldsTo8VerticesInGlbAndGltfWithBinFile) {
+  test::TempDir dir;
+  const HandMade cube = split_cube();
+  dir.write("cube.glb", cube.glb());
+  cube.write_gltf(dir, "cube.gltf", "cube data.bin");
+  for (const char* name : {"cube.glb", "cube.gltf"}) {
+    const CovarianceMesh m = read_mesh(dir.file(name));
+    EXPECT_EQ(m.n_vertices(), 8u) << name;
+    EXPECT_EQ(m.n_faces(), 12u) << name;
+    // Closed: every edge has two faces, and the faces turn outward (positive volume).
+    for (const auto e : m.mesh.edges()) EXPECT_FALSE(m.mesh.is_boundary(e));
+    double volume = 0;
+    for (const auto f : m.mesh.faces()) {
+      std::vector<Vec3> c;
+      for (const auto v : m.mesh.fv_range(f)) c.push_back(m.mean(size_t(v.idx())));
+      volume += c[0].dot(c[1].cross(c[2])) / 6;
+    }
+    EXPECT_DOUBLE_EQ(volume, 8.0) << name;
+    // Inferred as for a plain mesh: the same Gaussians as the 8-vertex cube's triangles would get.
+    for (const Mat3& s : m.covariances) EXPECT_TRUE(is_spd(s));
+  }
+}
+
+TEST(GltfIo, NodeTransformsThroughTheHierarchyPlaceEachInstance) {
+  test::TempDir dir;
+  HandMade h = split_cube();
+  // Node 0: translation, rotation and scale, its child node 1 translated again; node 2 by a matrix.
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(0.5, Vec3(1, 2, 3).normalized()));
+  h.j["nodes"] = {{{"translation", {10, 0, 0}}, {"rotation", {q.x(), q.y(), q.z(), q.w()}}, {"scale", {2, 3, 4}},
+                   {"children", {1}}},
+                  {{"translation", {0, 5, 0}}, {"mesh", 0}},
+                  {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -20, 0, 0, 1}}, {"mesh", 0}}};
+  h.j["scenes"] = {{{"nodes", {0, 2}}}};
+  dir.write("two.glb", h.glb());
+  const CovarianceMesh m = read_mesh(dir.file("two.glb"));
+  ASSERT_EQ(m.n_vertices(), 16u);
+  EXPECT_EQ(m.n_faces(), 24u);
+  // World = T R S of node 0 times node 1's translation (glTF 2.0 §3.5.3).
+  const Eigen::Affine3d node0 =
+      Eigen::Translation3d(10, 0, 0) * q * Eigen::Scaling(Vec3(2, 3, 4));
+  const Eigen::Affine3d first = node0 * Eigen::Translation3d(0, 5, 0);
+  std::vector<Vec3> expected;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
+    expected.push_back(first * p);
+    expected.push_back(p + Vec3(-20, 0, 0));
+  }
+  for (const Vec3& e : expected) {
+    double nearest = 1e9;
+    for (size_t i = 0; i < m.n_vertices(); ++i) nearest = std::min(nearest, (m.mean(i) - e).norm());
+    EXPECT_LT(nearest, 1e-12) << e.transpose();
+  }
+}
+
+TEST(GltfIo, StripAndFanPrimitivesGiveTheirTriangles) {
+  test::TempDir dir;
+  HandMade h;
+  // A square as a fan of 2 triangles and, beside it, a strip of 2 triangles: 4 + 4 vertices.
+  h.append(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 5, 0, 0, 6, 0, 0, 5, 1, 0, 6, 1, 0});
+  h.j = {{"asset", {{"version", "2.0"}}},
+         {"bufferViews", {{{"buffer", 0}, {"byteLength", 96}}}},
+         {"accessors",
+          {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+           {{"bufferView", 0}, {"byteOffset", 48}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}}}},
+         {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"mode", 6}},
+                                      {{"attributes", {{"POSITION", 1}}}, {"mode", 5}}}}}}}};
+  dir.write("strips.glb", h.glb());
+  const CovarianceMesh m = read_mesh(dir.file("strips.glb"));
+  EXPECT_EQ(m.n_vertices(), 8u);
+  EXPECT_EQ(m.n_faces(), 4u);
+  // All four turn the same way (+z), the strip's second one reversed as the specification asks.
+  for (const auto f : m.mesh.faces()) {
+    std::vector<Vec3> c;
+    for (const auto v : m.mesh.fv_range(f)) c.push_back(m.mean(size_t(v.idx())));
+    EXPECT_GT((c[1] - c[0]).cross(c[2] - c[0]).z(), 0.0);
+  }
+}
+
+// The one-line message read_mesh gives for the file, or "" where it reads.
+std::string refusal(const std::string& path) {
+  try {
+    read_mesh(path);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_refused(const std::string& path, const std::string& words) {
+  const std::string why = refusal(path);
+  EXPECT_NE(why.find(path), std::string::npos) << why;
+  EXPECT_NE(why.find(words), std::string::npos) << why;
+  EXPECT_EQ(why.find('\n'), std::string::npos) << why;
+}
+
+TEST(GltfIo, MalformedFilesAreRefusedInOneLineNamingFileAndElement) {
+  test::TempDir dir;
+  const HandMade cube = split_cube();
+  const std::string glb = cube.glb();
+  expect_refused(dir.write("cut.glb", glb.substr(0, glb.size() - 10)), "truncated");
+  expect_refused(dir.write("head.glb", glb.substr(0, 7)), "truncated");
+  expect_refused(dir.write("junk.gltf", "not json"), "neither a .glb");
+  expect_refused(dir.write("bad.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [ }"), "bad.gltf: ");
+
+  HandMade past = cube;
+  past.j["accessors"][1]["count"] = 40;  // 80 bytes of a 72-byte view
+  expect_refused(dir.write("past.glb", past.glb()), "mesh 0 primitive 0: indices accessor 1 reads past its buffer view");
+
+  HandMade missing = cube;
+  missing.j["meshes"][0]["primitives"][0]["indices"] = 7;
+  expect_refused(dir.write("missing.glb", missing.glb()), "indices accessor out of bounds");  // tinygltf's words
+
+  HandMade bad_index = cube;
+  const uint16_t big = 24;  // the last index: the buffer's last 2 bytes (72 bytes of indices need no padding)
+  std::memcpy(bad_index.bin.data() + bad_index.bin.size() - 2, &big, 2);
+  expect_refused(dir.write("index.glb", bad_index.glb()), "mesh 0 primitive 0: index 35 is 24, past its 24 positions");
+
+  HandMade points = cube;
+  points.j["meshes"][0]["primitives"][0]["mode"] = 0;
+  expect_refused(dir.write("points.glb", points.glb()), "has no triangles");
+
+  HandMade no_position = cube;
+  no_position.j["meshes"][0]["primitives"][0]["attributes"] = {{"NORMAL", 0}};
+  expect_refused(dir.write("normal.glb", no_position.glb()), "mesh 0 primitive 0: has no POSITION attribute");
+
+  HandMade loop = cube;
+  loop.j["nodes"] = {{{"mesh", 0}, {"children", {1}}}, {{"children", {0}}}};
+  expect_refused(dir.write("loop.glb", loop.glb()), "node 0 is reached twice");
+
+  HandMade no_bin = cube;
+  no_bin.write_gltf(dir, "nobin.gltf", "nobin.bin");
+  std::filesystem::remove(dir.file("nobin.bin"));
+  expect_refused(dir.file("nobin.gltf"), "nobin.gltf: ");
+}
+
+TEST(GltfIo, UnwritableCovarianceLeavesTheFileAsItWas) {
+  test::TempDir dir;
+  CovarianceMesh cube = make_sample("cube");
+  const std::string path = dir.write("cube.glb", "old contents");
+  // Positive definite in double, singular once rounded to float.
+  cube.covariances[3] = Mat3::Identity();
+  cube.covariances[3](0, 1) = cube.covariances[3](1, 0) = 1 - 1e-10;
+  cube.covariances[3] *= 1e-2;
+  ASSERT_TRUE(is_spd(cube.covariances[3]));
+  try {
+    write_mesh(path, cube);
+    FAIL() << "written";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 3 covariance rounded to float"), std::string::npos) << e.what();
+  }
+  std::ifstream in(path);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), "old contents");
+}
+
+}  // namespace
+}  // namespace gps
