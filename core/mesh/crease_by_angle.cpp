@@ -41,18 +41,24 @@ std::vector<double> dihedral_angles(const CovarianceMesh& m) {
   return angles;
 }
 
-int crease_by_angle(CovarianceMesh& m, double degrees) {
+std::vector<std::array<int, 2>> edges_sharper_than(const CovarianceMesh& m, double degrees) {
   const std::vector<double> angles = dihedral_angles(m);
-  std::vector<EdgeCrease>& creases = m.sharpness.creases;
-  int marked = 0;
+  std::vector<std::array<int, 2>> sharp;
   for (const auto e : m.mesh.edges()) {
     const double angle = angles[size_t(e.idx())];
     if (angle < 0 || !(angle > degrees)) continue;
     const int a = m.mesh.from_vertex_handle(m.mesh.halfedge_handle(e, 0)).idx();
     const int b = m.mesh.to_vertex_handle(m.mesh.halfedge_handle(e, 0)).idx();
-    creases.push_back({std::min(a, b), std::max(a, b), kInfiniteSharpness});
-    ++marked;
+    sharp.push_back({std::min(a, b), std::max(a, b)});
   }
+  std::sort(sharp.begin(), sharp.end());
+  return sharp;
+}
+
+int crease_by_angle(CovarianceMesh& m, double degrees) {
+  const std::vector<std::array<int, 2>> sharp = edges_sharper_than(m, degrees);
+  std::vector<EdgeCrease>& creases = m.sharpness.creases;
+  for (const auto& [a, b] : sharp) creases.push_back({a, b, kInfiniteSharpness});
   // Sorted with the sharper of two on one edge first, the duplicates after it dropped.
   std::sort(creases.begin(), creases.end(), [](const EdgeCrease& x, const EdgeCrease& y) {
     return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.sharpness > y.sharpness;
@@ -60,7 +66,7 @@ int crease_by_angle(CovarianceMesh& m, double degrees) {
   creases.erase(std::unique(creases.begin(), creases.end(),
                             [](const EdgeCrease& x, const EdgeCrease& y) { return x.a == y.a && x.b == y.b; }),
                 creases.end());
-  return marked;
+  return int(sharp.size());
 }
 
 }  // namespace gps

@@ -58,29 +58,49 @@ bool walk_loop(const PolyMesh& m, HH h, VH start, std::vector<int>& loop) {
 
 }  // namespace
 
-std::vector<int> edge_loop(const CovarianceMesh& mesh, int a, int b) {
+std::vector<std::array<int, 2>> edge_loop_edges(const CovarianceMesh& mesh, int a, int b) {
   const PolyMesh& m = mesh.mesh;
   check_vertex(m, a);
   check_vertex(m, b);
   const HH h = m.find_halfedge(VH(a), VH(b));
   if (!h.is_valid()) throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
-  std::vector<int> loop;
+  std::vector<std::array<int, 2>> edges;
+  const auto add = [&edges](int u, int w) { edges.push_back({std::min(u, w), std::max(u, w)}); };
+  const auto add_path = [&add](const std::vector<int>& path) {
+    for (size_t k = 1; k < path.size(); ++k) add(path[k - 1], path[k]);
+  };
   if (m.is_boundary(m.edge_handle(h))) {
     const HH first = m.is_boundary(h) ? h : m.opposite_halfedge_handle(h);
     HH g = first;
     do {
-      loop.push_back(m.to_vertex_handle(g).idx());
+      add(m.from_vertex_handle(g).idx(), m.to_vertex_handle(g).idx());
       g = m.next_halfedge_handle(g);
     } while (g != first);
   } else {
-    loop = {a};
-    const bool closed = walk_loop(m, h, VH(a), loop);
-    if (!closed && continues(m, VH(a))) walk_loop(m, straight_on(m, m.opposite_halfedge_handle(h)), VH(a), loop);
-    if (loop.size() == 2) {  // a loop of one edge: the rim of its larger face (a cap's), as Blender does
+    std::vector<int> forward = {a};
+    const bool closed = walk_loop(m, h, VH(a), forward);
+    add_path(forward);
+    if (closed) {
+      add(forward.back(), a);
+    } else if (continues(m, VH(a))) {
+      std::vector<int> backward = {a};
+      walk_loop(m, straight_on(m, m.opposite_halfedge_handle(h)), VH(a), backward);
+      add_path(backward);
+    }
+    if (edges.size() == 1) {  // a loop of one edge: the rim of its larger face (a cap's), as Blender does
       const PolyMesh::FaceHandle face = m.face_handle(h), other = m.opposite_face_handle(h);
-      for (const VH v : m.fv_range(m.valence(other) > m.valence(face) ? other : face)) loop.push_back(v.idx());
+      for (const HH g : m.fh_range(m.valence(other) > m.valence(face) ? other : face))
+        add(m.from_vertex_handle(g).idx(), m.to_vertex_handle(g).idx());
     }
   }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+std::vector<int> edge_loop(const CovarianceMesh& mesh, int a, int b) {
+  std::vector<int> loop;
+  for (const auto& [u, w] : edge_loop_edges(mesh, a, b)) loop.insert(loop.end(), {u, w});
   std::sort(loop.begin(), loop.end());
   loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
   return loop;

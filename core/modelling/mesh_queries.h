@@ -15,6 +15,9 @@ namespace gps {
 /// boundary loop. When neither end continues (both are poles, as on a cube) the loop is the corners of
 /// the face on the left of a → b. Returns the loop's vertices.
 std::vector<int> edge_loop(const CovarianceMesh& mesh, int a, int b);
+/// The edges of that loop, each once as (min, max), sorted: the edges walked (and the face's rim
+/// where neither end continues), not every edge between its vertices.
+std::vector<std::array<int, 2>> edge_loop_edges(const CovarianceMesh& mesh, int a, int b);
 
 /// Every vertex connected to the seeds through edges.
 std::vector<int> linked_vertices(const CovarianceMesh& mesh, const std::vector<int>& seeds);

@@ -2,6 +2,7 @@
 // form: a cube's 90°, a regular tetrahedron's 180° − arccos(1/3), a flat grid's 0.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/mesh/crease_by_angle.h"
@@ -57,6 +58,23 @@ TEST(CreaseByAngle, MarksEdgesAboveTheThresholdAndKeepsSharperOnes) {
   EXPECT_EQ(crease_by_angle(tetra, 109.0), 6);
   tetra.sharpness = {};
   EXPECT_EQ(crease_by_angle(tetra, 110.0), 0);
+}
+
+// The edges over an angle: all 12 of the cube's over 30°, none over 90°; the tetrahedron's 6 just
+// below its dihedral angle, none just above.
+TEST(CreaseByAngle, EdgesSharperThanAnAngle) {
+  const CovarianceMesh cube = make_sample("cube");
+  const auto sharp = edges_sharper_than(cube, 30.0);
+  ASSERT_EQ(sharp.size(), 12u);  // every cube edge, each once, ascending
+  EXPECT_TRUE(std::is_sorted(sharp.begin(), sharp.end()));
+  for (const auto& [a, b] : sharp) {
+    EXPECT_LT(a, b);
+    EXPECT_TRUE(cube.mesh.find_halfedge(cube.mesh.vertex_handle(a), cube.mesh.vertex_handle(b)).is_valid());
+  }
+  EXPECT_TRUE(edges_sharper_than(cube, 90.0 + 1e-9).empty());
+  const double tetra = 180.0 - std::acos(1.0 / 3.0) * 180.0 / M_PI;
+  EXPECT_EQ(edges_sharper_than(tetrahedron(), tetra - 1e-9).size(), 6u);
+  EXPECT_TRUE(edges_sharper_than(tetrahedron(), tetra + 1e-9).empty());
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "core/support/error.h"
@@ -48,6 +49,27 @@ TEST(MeshQueries, EdgeLoopClosesAroundTheTorusAndStopsAtPoles) {
   EXPECT_EQ(edge_loop(cylinder, 9, 8), range(8, 16));
   // Up the side: ring 0 and ring 2 are on the caps' corners (valence 3), where the loop stops.
   EXPECT_EQ(edge_loop(cylinder, 8, 16), (V{0, 8, 16}));
+}
+
+// The loop's edges are the ones walked: on a grid's row only the row's edges, though the rows'
+// vertices are joined by nothing else; around the torus the ring closes; on the cube the face's rim.
+TEST(MeshQueries, EdgeLoopEdgesAreTheEdgesWalked) {
+  using E = std::vector<std::array<int, 2>>;
+  const CovarianceMesh grid = test::grid_mesh(4, 4);  // vertex j·5 + i
+  EXPECT_EQ(edge_loop_edges(grid, 13, 12), (E{{10, 11}, {11, 12}, {12, 13}, {13, 14}}));
+  EXPECT_EQ(edge_loop_edges(grid, 7, 12), (E{{2, 7}, {7, 12}, {12, 17}, {17, 22}}));
+  EXPECT_EQ(edge_loop_edges(grid, 0, 1).size(), 16u);  // the boundary
+  const CovarianceMesh torus = make_sample("torus");  // 24 × 12, vertex i·12 + j
+  E ring;
+  for (int j = 0; j < 12; ++j) ring.push_back({std::min(j, (j + 1) % 12), std::max(j, (j + 1) % 12)});
+  std::sort(ring.begin(), ring.end());
+  EXPECT_EQ(edge_loop_edges(torus, 0, 1), ring);
+  const CovarianceMesh cube = make_sample("cube");
+  EXPECT_EQ(edge_loop_edges(cube, 0, 1), (E{{0, 1}, {0, 4}, {1, 5}, {4, 5}}));  // face {0, 1, 5, 4}
+  const CovarianceMesh cylinder = make_sample("cylinder");
+  EXPECT_EQ(edge_loop_edges(cylinder, 8, 16), (E{{0, 8}, {8, 16}}));  // stops at the caps' corners
+  EXPECT_EQ(edge_loop_edges(cylinder, 1, 0).size(), 8u);               // a cap's rim
+  EXPECT_NE(error_of([&] { edge_loop_edges(cube, 0, 6); }).find("edge 0–6 is not in the mesh"), std::string::npos);
 }
 
 // An edge of a cap's rim, whose ends have valence 3, gives the whole rim (the octagon), from either
