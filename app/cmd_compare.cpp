@@ -1,4 +1,5 @@
-// gpsurf compare A B: how far A's points lie from B's GPS limit surface (core/fitting/surface_distance.h).
+// gpsurf compare A B: how far A's points lie from B's GPS limit surface, and how far their normals turn from
+// its normals there (core/fitting/surface_distance.h).
 #include <iostream>
 
 #include "app/cli_checks.h"
@@ -24,7 +25,7 @@ void add_compare_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "compare",
       "Distances from A's vertices to B's limit surface (tessellated densely): rms, 99th percentile and max, each also "
-      "over A's bounding-box diagonal");
+      "over A's bounding-box diagonal; and the rms angle between A's normals (of its faces) and the surface's");
   cmd->add_option("A", args->first, "mesh whose points are measured (its vertices: any mesh file, manifold or not)")
       ->required();
   cmd->add_option("B", args->second, "mesh whose limit surface they are measured to")->required();
@@ -47,7 +48,9 @@ void add_compare_command(CLI::App& app) {
     const bool a_surface = args->both || args->samples;
     const CovarianceMesh a =
         a_surface ? read_mesh_repairing(args->first, args->repair, {}, false, true) : CovarianceMesh();
-    const std::vector<Vec3> a_points = a_surface ? std::vector<Vec3>() : read_points(args->first);
+    // A's points as read, with the normals of the faces around them (none for a point cloud).
+    PolygonSoup a_soup;
+    if (!a_surface) a_soup.positions = read_points(args->first, &a_soup.faces);
     const CovarianceMesh b = read_mesh_repairing(args->second, args->repair, {}, false, true);
     const double max_triangles = level->count() > 0 ? INFINITY : kMeasuredTriangles;
     const auto limit_of = [&](const std::string& path, const CovarianceMesh& m) {
@@ -57,18 +60,23 @@ void add_compare_command(CLI::App& app) {
     const LimitTriangles limit_b = limit_of(args->second, b);
     LimitTriangles limit_a;
     if (a_surface) limit_a = limit_of(args->first, a);
-    // The points measured: a mesh's limit samples (--samples) or its vertices.
+    // The points measured, with their normals: a mesh's limit samples (--samples) or its vertices.
     const auto points_of = [&](const CovarianceMesh& m, const LimitTriangles& own_limit) {
-      return args->samples ? own_limit.triangles.positions : vertex_means(m);
+      return args->samples ? own_limit.triangles : face_triangles(m);
     };
-    const auto report = [&](const std::string& from, const std::vector<Vec3>& points, const std::string& to,
+    const auto report = [&](const std::string& from, const TriangleMesh& points, const std::string& to,
                             const LimitTriangles& limit) {
-      std::cout << escaped(from) << " (" << points.size() << (args->samples ? " limit samples" : " vertices")
-                << ") to " << (args->linear ? "the faces of " : "the limit surface of ") << escaped(to);
+      std::cout << escaped(from) << " (" << points.positions.size()
+                << (args->samples ? " limit samples" : " vertices") << ") to "
+                << (args->linear ? "the faces of " : "the limit surface of ") << escaped(to);
       if (!args->linear) std::cout << " (level " << limit.level << ")";
-      std::cout << ":\n" << describe(distances_to_surface(points, limit.triangles));
+      const SurfaceDistance surface(limit.triangles);
+      const double diagonal = bounding_box_diagonal(points.positions);
+      std::cout << ":\n"
+                << describe(summarise_distances(surface.distances(points.positions), diagonal > 0 ? diagonal : 1.0))
+                << describe(summarise_angles(surface.normal_angles(points.positions, points.normals)));
     };
-    report(args->first, a_surface ? points_of(a, limit_a) : a_points, args->second, limit_b);
+    report(args->first, a_surface ? points_of(a, limit_a) : face_triangles(a_soup), args->second, limit_b);
     if (args->both) report(args->second, points_of(b, limit_b), args->first, limit_a);
   });
 }

@@ -3,6 +3,7 @@
 // limit surface is compared against (how far a simplified mesh lies from its input before any
 // subdivision).
 #include "core/evaluation/triangle_mesh.h"
+#include "core/io/polygon_soup.h"
 #include "core/mesh/covariance_mesh.h"
 
 namespace gps {
@@ -10,5 +11,9 @@ namespace gps {
 /// Every face of `mesh` split into a fan of triangles from its first corner, on the means, with
 /// each vertex's area-weighted normal.
 TriangleMesh face_triangles(const CovarianceMesh& mesh);
+
+/// The same for a reader's soup, whatever its topology (a scan that is not a manifold): each face a
+/// fan from its first corner; a vertex on no face keeps a zero normal.
+TriangleMesh face_triangles(const PolygonSoup& soup);
 
 }  // namespace gps

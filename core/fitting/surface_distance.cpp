@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <Eigen/Geometry>
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -41,7 +43,7 @@ struct SurfaceDistance::Tree {
   AabbTree tree;
 };
 
-SurfaceDistance::SurfaceDistance(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
+SurfaceDistance::SurfaceDistance(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()), surface_(surface) {
   if (surface.triangles.empty()) throw Error("the surface to measure distances to has no triangles");
   const auto point = [&](int i) {
     const Vec3& p = surface.positions[size_t(i)];
@@ -68,6 +70,59 @@ std::vector<double> SurfaceDistance::distances(const std::vector<Vec3>& points) 
 #pragma omp parallel for schedule(dynamic, 256)
   for (long i = 0; i < n; ++i) d[size_t(i)] = distance(points[size_t(i)]);
   return d;
+}
+
+Vec3 SurfaceDistance::normal_nearest(const Vec3& point) const {
+  const auto [nearest, primitive] =
+      tree_->tree.closest_point_and_primitive(Tree::Kernel::Point_3(point[0], point[1], point[2]));
+  const auto& t = surface_.triangles[size_t(primitive - tree_->triangles.cbegin())];
+  const Vec3 a = surface_.positions[size_t(t[0])], b = surface_.positions[size_t(t[1])],
+             c = surface_.positions[size_t(t[2])];
+  const Vec3 own = (b - a).cross(c - a);
+  if (surface_.normals.size() != surface_.positions.size()) return own.normalized();
+  // Barycentric weights of the nearest point: the sub-triangles' areas over the whole's.
+  const Vec3 x(nearest.x(), nearest.y(), nearest.z());
+  const double area2 = own.squaredNorm();
+  if (!(area2 > 0)) return surface_.normals[size_t(t[0])];
+  const double wa = (b - x).cross(c - x).dot(own) / area2, wb = (c - x).cross(a - x).dot(own) / area2;
+  const Vec3 n = wa * surface_.normals[size_t(t[0])] + wb * surface_.normals[size_t(t[1])] +
+                 (1 - wa - wb) * surface_.normals[size_t(t[2])];
+  return n.isZero(0.0) ? own.normalized() : n.normalized();
+}
+
+std::vector<double> SurfaceDistance::normal_angles(const std::vector<Vec3>& points,
+                                                   const std::vector<Vec3>& normals) const {
+  std::vector<long> with_normal;
+  for (size_t i = 0; i < points.size() && i < normals.size(); ++i)
+    if (!normals[i].isZero(0.0) && normals[i].allFinite()) with_normal.push_back(long(i));
+  std::vector<double> angles(with_normal.size());
+  const long n = long(with_normal.size());
+#pragma omp parallel for schedule(dynamic, 256)
+  for (long j = 0; j < n; ++j) {
+    const size_t i = size_t(with_normal[size_t(j)]);
+    const Vec3 own = normals[i].normalized(), surface = normal_nearest(points[i]);
+    angles[size_t(j)] = std::atan2(own.cross(surface).norm(), std::abs(own.dot(surface))) * 180.0 / M_PI;
+  }
+  return angles;
+}
+
+AngleSummary summarise_angles(const std::vector<double>& degrees) {
+  AngleSummary s;
+  s.count = degrees.size();
+  double sum = 0;
+  for (const double d : degrees) {
+    sum += d * d;
+    s.max = std::max(s.max, d);
+  }
+  if (s.count) s.rms = std::sqrt(sum / double(s.count));
+  return s;
+}
+
+std::string describe(const AngleSummary& s) {
+  if (s.count == 0) return "normals: none to compare (the measured points lie on no face)\n";
+  char text[160];
+  std::snprintf(text, sizeof text, "normals: rms angle %.3g° (max %.3g°) over %zu points\n", s.rms, s.max, s.count);
+  return text;
 }
 
 DistanceSummary summarise_distances(std::vector<double> distances, double length) {

@@ -28,10 +28,12 @@ inline constexpr double kMeasuredTriangles = 2e6;
 LimitTriangles limit_surface_triangles(const CovarianceMesh& mesh, int level, const PlanOptions& options = {},
                                        double max_triangles = INFINITY);
 
-/// Exact distances from points to a triangle mesh, through an AABB tree of its triangles (CGAL).
+/// Exact distances from points to a triangle mesh, through an AABB tree of its triangles (CGAL), and
+/// the surface's normal at the nearest point.
 class SurfaceDistance {
 public:
-  /// Throws gps::Error if `surface` has no triangles.
+  /// Throws gps::Error if `surface` has no triangles. `surface` must outlive the object where
+  /// normal_angles is called.
   explicit SurfaceDistance(const TriangleMesh& surface);
   ~SurfaceDistance();
   SurfaceDistance(const SurfaceDistance&) = delete;
@@ -41,10 +43,17 @@ public:
   double distance(const Vec3& point) const;
   /// The distance of every point, in order (on all cores).
   std::vector<double> distances(const std::vector<Vec3>& points) const;
+  /// The surface's unit normal at the point nearest `point`: its vertex normals interpolated there
+  /// (barycentric), or the triangle's own where it has none.
+  Vec3 normal_nearest(const Vec3& point) const;
+  /// For each point with a non-zero normal, the angle in degrees between its normal and the surface's
+  /// at its nearest point, taken as lines (0° to 90°: a scan's faces may be turned either way).
+  std::vector<double> normal_angles(const std::vector<Vec3>& points, const std::vector<Vec3>& normals) const;
 
 private:
   struct Tree;
   std::unique_ptr<Tree> tree_;
+  const TriangleMesh& surface_;
 };
 
 /// A set of distances in absolute units and relative to a length (the points' bounding-box diagonal).
@@ -72,5 +81,14 @@ std::vector<Vec3> vertex_means(const CovarianceMesh& mesh);
 /// Distances from `points` to `surface`, summarised relative to the points' bounding-box diagonal
 /// (or 1 where the points are one).
 DistanceSummary distances_to_surface(const std::vector<Vec3>& points, const TriangleMesh& surface);
+
+/// Angles between normals (SurfaceDistance::normal_angles), summarised: how many, their rms and max.
+struct AngleSummary {
+  size_t count = 0;
+  double rms = 0, max = 0;  // degrees
+};
+AngleSummary summarise_angles(const std::vector<double>& degrees);
+/// "normals: rms angle 4.2° (max 31°) over 1200 points", or that no point has a normal.
+std::string describe(const AngleSummary& summary);
 
 }  // namespace gps

@@ -40,8 +40,9 @@ CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const
 
 /// The vertices of the mesh file at `path` as points, its faces not made into a mesh (it may have none,
 /// or not be a manifold, as scans are): for what measures points only (compare's A, fit's target).
-/// Throws gps::Error naming the file where it has no vertices.
-std::vector<Vec3> read_points(const std::string& path);
+/// Throws gps::Error naming the file where it has no vertices. `faces`, where given, gets its faces as
+/// read (for the points' normals).
+std::vector<Vec3> read_points(const std::string& path, PolygonTopology* faces = nullptr);
 
 /// The repair options read_mesh uses: the tolerance of `options`.
 RepairOptions repair_options_for(const ImportOptions& options = {});

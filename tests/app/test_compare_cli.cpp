@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 #include <sstream>
+#include <tuple>
+#include <vector>
 
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
@@ -41,16 +43,45 @@ TEST(CompareCli, PointsOffsetFromAFlatLimitSurfaceAreTheOffsetAway) {
   EXPECT_NE(r.output.find("\nrms 0.25 (8.839e-02 of the diagonal)\n"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("\n99th percentile 0.25 (8.839e-02 of the diagonal)\n"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("\nmax 0.25 (8.839e-02 of the diagonal)\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\nnormals: rms angle 0° (max 0°) over 25 points\n"), std::string::npos) << r.output;
 
   const auto both = run_command(gpsurf("compare " + a + " " + b + " --both --level 4"));
   ASSERT_EQ(both.exit_code, 0) << both.output;
-  EXPECT_EQ(std::count(both.output.begin(), both.output.end(), '\n'), 8) << both.output;
+  EXPECT_EQ(std::count(both.output.begin(), both.output.end(), '\n'), 10) << both.output;
   EXPECT_NE(both.output.find("b.obj (25 vertices) to the limit surface of"), std::string::npos) << both.output;
 
   const auto samples = run_command(gpsurf("compare " + a + " " + b + " --samples --level 2"));
   ASSERT_EQ(samples.exit_code, 0) << samples.output;
   EXPECT_NE(samples.output.find("limit samples) to the limit surface of"), std::string::npos) << samples.output;
   EXPECT_NE(samples.output.find("\nmax 0.25 "), std::string::npos) << samples.output;
+}
+
+// The rms angle between A's normals (of its faces, as lines) and B's limit normals at the nearest
+// points: a grid tilted by 30° about x over a flat surface turns 30°, whichever way its faces run; a
+// vertex on no face has no normal to compare.
+TEST(CompareCli, NormalsAreComparedAsLines) {
+  test::TempDir dir;
+  const std::string b = dir.write("b.obj", flat_grid_obj(4, 1, 0, 0));
+  std::ostringstream tilted, reversed;
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (int i = 0; i <= 2; ++i)
+    for (int j = 0; j <= 2; ++j) {
+      const double y = 0.5 * j - 0.5;
+      const std::string v = "v " + std::to_string(1.5 + 0.5 * i) + " " + std::to_string(2 + c * y) + " " +
+                            std::to_string(0.5 + s * y) + "\n";
+      tilted << v;
+      reversed << v;
+    }
+  tilted << "v 2 2 3\n";
+  tilted << "f 1 4 5 2\nf 2 5 6 3\nf 4 7 8 5\nf 5 8 9 6\n";
+  reversed << "f 1 2 5 4\nf 2 3 6 5\nf 4 5 8 7\nf 5 6 9 8\n";
+  for (const auto& [name, text, line] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"tilted.obj", tilted.str(), "\nnormals: rms angle 30° (max 30°) over 9 points\n"},
+           {"reversed.obj", reversed.str(), "\nnormals: rms angle 30° (max 30°) over 9 points\n"}}) {
+    const auto r = run_command(gpsurf("compare " + dir.write(name, text) + " " + b + " --level 4"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find(line), std::string::npos) << name << ": " << r.output;
+  }
 }
 
 TEST(CompareCli, LinearMeasuresToTheFacesThemselves) {
