@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/support/error.h"
+#include "core/support/disjoint_sets.h"
 #include "core/modelling/operation_words.h"
 
 namespace gps {
@@ -27,17 +28,6 @@ void check_offset(const Vec3& offset) {
     throw Error(s.str());
   }
 }
-
-/// Union-find over indices, for the region's corners and faces.
-struct Partition {
-  std::vector<int> parent;
-  explicit Partition(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int root(int i) {
-    while (parent[size_t(i)] != i) i = parent[size_t(i)] = parent[size_t(parent[size_t(i)])];
-    return i;
-  }
-  void join(int i, int j) { parent[size_t(root(i))] = root(j); }
-};
 
 /// Moves the region by `shift`: inner vertices moved, boundary vertices copied (same covariance).
 std::vector<int> move_region(MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
@@ -114,7 +104,7 @@ FaceRegion face_region(const MeshArrays& a, const std::vector<int>& faces) {
     const int n = int(a.faces[size_t(f)].size());
     return first_corner[size_t(slot[size_t(f)])] + ((k % n) + n) % n;
   };
-  Partition corners(size_t(first_corner.back())), pieces(r.faces.size());
+  LowestRootSets corners(size_t(first_corner.back())), pieces(r.faces.size());
   std::vector<char> on_boundary(size_t(first_corner.back()), 0);
   std::vector<char> boundary_vertex(size_t(a.n_vertices()), 0);
   for (int f : r.faces) {
@@ -128,15 +118,15 @@ FaceRegion face_region(const MeshArrays& a, const std::vector<int>& faces) {
         r.boundary.emplace_back(f, k);
       } else {
         const auto [g, j] = twin->second;  // g has w → v at corner j, so v is its corner j + 1
-        corners.join(corner_id(f, k), corner_id(g, j + 1));
-        pieces.join(slot[size_t(f)], slot[size_t(g)]);
+        corners.unite(corner_id(f, k), corner_id(g, j + 1));
+        pieces.unite(slot[size_t(f)], slot[size_t(g)]);
       }
     }
   }
   std::vector<char> piece_has_boundary(r.faces.size(), 0);
-  for (const auto& [f, k] : r.boundary) piece_has_boundary[size_t(pieces.root(slot[size_t(f)]))] = 1;
+  for (const auto& [f, k] : r.boundary) piece_has_boundary[size_t(pieces.find(slot[size_t(f)]))] = 1;
   for (size_t i = 0; i < r.faces.size(); ++i)
-    if (pieces.root(int(i)) == int(i) && !piece_has_boundary[i]) r.has_closed_part = true;
+    if (pieces.find(int(i)) == int(i) && !piece_has_boundary[i]) r.has_closed_part = true;
 
   std::map<int, size_t> sector_of_root;
   std::set<int> inner;
@@ -148,7 +138,7 @@ FaceRegion face_region(const MeshArrays& a, const std::vector<int>& faces) {
         inner.insert(v);
         continue;
       }
-      const auto [it, added] = sector_of_root.emplace(corners.root(corner_id(f, k)), r.sectors.size());
+      const auto [it, added] = sector_of_root.emplace(corners.find(corner_id(f, k)), r.sectors.size());
       if (added) r.sectors.emplace_back().vertex = v;
       FaceRegion::Sector& s = r.sectors[it->second];
       s.corners.emplace_back(f, k);

@@ -20,23 +20,13 @@
 #include "ui/tools/bevel_tool.h"
 #include "ui/tools/slide_tool.h"
 #include "ui/tools/transform_tool.h"
+#include "tests/support/typed_events.h"
 
 namespace gps {
 namespace {
 
-InputEvent text(char c) {
-  InputEvent e;
-  e.type = InputEvent::Type::text;
-  e.codepoint = unsigned(c);
-  return e;
-}
-
-InputEvent key(int k) {
-  InputEvent e;
-  e.type = InputEvent::Type::key_press;
-  e.key = k;
-  return e;
-}
+using test::key_event;
+using test::text_event;
 
 // A document and selection with the editor's services as a ToolContext that records what it was asked.
 struct Editor {
@@ -85,7 +75,7 @@ struct Editor {
     return tool.handle(e, c);
   }
   void type(ModalTool& tool, const std::string& typed) {
-    for (const char ch : typed) EXPECT_EQ(send(tool, text(ch)), ToolResult::consumed);
+    for (const char ch : typed) EXPECT_EQ(send(tool, text_event(ch)), ToolResult::consumed);
   }
 };
 
@@ -109,7 +99,7 @@ TEST(BevelTool, TypedWidthAndEnterIsCoresBevelAsOneUndoStep) {
   const Modelled expected = bevel_edges(cube(), {{6, 7}}, width(0.25));
   EXPECT_TRUE(test::same_mesh(*editor.shown, expected.mesh));
   EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cube())) << "a preview leaves the document";
-  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
   EXPECT_EQ(editor.installed, 1);
   EXPECT_TRUE(test::same_mesh(editor.document.mesh(), expected.mesh));
   EXPECT_EQ(editor.selection.vertices(), expected.selection);
@@ -139,7 +129,7 @@ TEST(BevelTool, EscapeLeavesTheDocumentWithoutAnUndoStep) {
   ToolContext c = editor.context();
   const auto tool = BevelTool::start(c, false);
   editor.type(*tool, "0.25");
-  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ESCAPE)), ToolResult::cancelled);
+  EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_ESCAPE)), ToolResult::cancelled);
   EXPECT_FALSE(editor.shown);
   EXPECT_EQ(editor.installed, 0);
   EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cube()));
@@ -152,7 +142,7 @@ TEST(BevelTool, ARefusalIsShownAndConfirmingItChangesNothing) {
   ToolContext c = editor.context();
   const auto tool = BevelTool::start(c, false);
   editor.type(*tool, "0.25");
-  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_P)), ToolResult::consumed);  // the straight profile
+  EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_P)), ToolResult::consumed);  // the straight profile
   BevelOptions straight = width(0.25);
   straight.profile = 0.25;
   EXPECT_TRUE(test::same_mesh(*editor.shown, bevel_edges(cube(), {{6, 7}}, straight).mesh));
@@ -165,7 +155,7 @@ TEST(BevelTool, ARefusalIsShownAndConfirmingItChangesNothing) {
   flat.type(*refused, "0.1");
   EXPECT_TRUE(refused->error());
   EXPECT_FALSE(flat.shown);
-  EXPECT_EQ(flat.send(*refused, key(GLFW_KEY_ENTER)), ToolResult::cancelled);
+  EXPECT_EQ(flat.send(*refused, key_event(GLFW_KEY_ENTER)), ToolResult::cancelled);
   EXPECT_EQ(flat.installed, 0);
   EXPECT_TRUE(test::same_mesh(flat.document.mesh(), plane));
   EXPECT_NE(flat.said.find("nothing done"), std::string::npos) << flat.said;
@@ -210,7 +200,7 @@ TEST(SlideTool, TypedFactorIsCoresEdgeSlideAsOneUndoStep) {
   ASSERT_TRUE(tool);
   editor.type(*tool, "-0.5");
   EXPECT_FALSE(tool->error()) << tool->status();
-  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
   const CovarianceMesh expected = edge_slide(cut.mesh, edges_within(cut.mesh, cut.loop), -0.5).mesh;
   EXPECT_TRUE(test::same_mesh(editor.document.mesh(), expected));
   editor.document.undo();
@@ -225,11 +215,11 @@ TEST(SlideTool, AFactorOutOfRangeIsShownAndEscapeRestores) {
   const auto tool = SlideTool::start(c);
   editor.type(*tool, "0.5");
   EXPECT_FALSE(test::same_mesh(editor.document.mesh(), cut.mesh));
-  for (int k = 0; k < 3; ++k) EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_BACKSPACE)), ToolResult::consumed);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_BACKSPACE)), ToolResult::consumed);
   editor.type(*tool, "2");  // |factor| > 1: refused, the mesh before shown
   EXPECT_TRUE(tool->error()) << tool->status();
   EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cut.mesh));
-  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ESCAPE)), ToolResult::cancelled);
+  EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_ESCAPE)), ToolResult::cancelled);
   EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cut.mesh));
   EXPECT_FALSE(editor.document.can_undo());
 }
@@ -241,7 +231,7 @@ TEST(SlideTool, OneVertexSlidesAlongAnEdge) {
   const auto tool = SlideTool::start(c);
   ASSERT_TRUE(tool);
   editor.type(*tool, "1");  // all the way: onto a neighbour's Gaussian
-  EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
   const CovarianceMesh& slid = editor.document.mesh();
   int landed = -1;
   for (const auto u : before.mesh.vv_range(before.mesh.vertex_handle(6u)))
@@ -275,7 +265,7 @@ TEST(SlideTool, OneVertexFollowsTheMouseTowardTheNeighbourItMovesTo) {
     ToolContext m = editor.context();
     m.viewport = view;
     EXPECT_EQ(tool->handle(move, m), ToolResult::consumed);
-    EXPECT_EQ(editor.send(*tool, key(GLFW_KEY_ENTER)), ToolResult::confirmed);
+    EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
     const Vec3 midpoint = 0.5 * (before.mean(6) + before.mean(size_t(u.idx())));
     EXPECT_NEAR((editor.document.mesh().mean(6) - midpoint).norm(), 0.0, 1e-3) << "toward " << u.idx();
   }
@@ -287,11 +277,11 @@ TEST(SlideTool, GPressedAgainDuringAGrabSlides) {
   ToolContext c = editor.context();
   TransformTool grab(TransformKind::grab, TransformPivot::median, c);
   ToolContext again = editor.context();
-  EXPECT_EQ(grab.handle(key(GLFW_KEY_G), again), ToolResult::replaced);
+  EXPECT_EQ(grab.handle(key_event(GLFW_KEY_G), again), ToolResult::replaced);
   ASSERT_TRUE(again.next);
   EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cut.mesh)) << "the grab undone";
   editor.type(*again.next, "0.5");
-  EXPECT_EQ(editor.send(*again.next, key(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_EQ(editor.send(*again.next, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
   EXPECT_TRUE(
       test::same_mesh(editor.document.mesh(), edge_slide(cut.mesh, edges_within(cut.mesh, cut.loop), 0.5).mesh));
 }

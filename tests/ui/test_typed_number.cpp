@@ -6,29 +6,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include "tests/support/typed_events.h"
 
 namespace gps {
 namespace {
 
-InputEvent text(char c) {
-  InputEvent e;
-  e.type = InputEvent::Type::text;
-  e.codepoint = unsigned(c);
-  return e;
-}
-
-InputEvent key(int k) {
-  InputEvent e;
-  e.type = InputEvent::Type::key_press;
-  e.key = k;
-  return e;
-}
+using test::key_event;
+using test::text_event;
 
 TEST(TypedNumber, DigitsPointAndMinusMakeTheValue) {
   TypedNumber typed;
   EXPECT_TRUE(typed.empty());
   EXPECT_TRUE(std::isnan(typed.value()));
-  for (const char c : std::string("-0.25")) EXPECT_TRUE(typed.handle(text(c)));
+  for (const char c : std::string("-0.25")) EXPECT_TRUE(typed.handle(text_event(c)));
   EXPECT_EQ(typed.text(), "-0.25");
   EXPECT_EQ(typed.value(), -0.25);
   EXPECT_EQ(typed.shown(), "  [-0.25]");
@@ -36,20 +26,20 @@ TEST(TypedNumber, DigitsPointAndMinusMakeTheValue) {
 
 TEST(TypedNumber, OtherCharactersAndKeysAreNotTaken) {
   TypedNumber typed;
-  EXPECT_FALSE(typed.handle(text('x')));
-  EXPECT_FALSE(typed.handle(text('e')));  // no exponents: E is a command key
-  EXPECT_FALSE(typed.handle(key(GLFW_KEY_ENTER)));
-  EXPECT_FALSE(typed.handle(key(GLFW_KEY_BACKSPACE)));  // nothing to take back
+  EXPECT_FALSE(typed.handle(text_event('x')));
+  EXPECT_FALSE(typed.handle(text_event('e')));  // no exponents: E is a command key
+  EXPECT_FALSE(typed.handle(key_event(GLFW_KEY_ENTER)));
+  EXPECT_FALSE(typed.handle(key_event(GLFW_KEY_BACKSPACE)));  // nothing to take back
   EXPECT_TRUE(typed.empty());
   EXPECT_EQ(typed.shown(), "");
 }
 
 TEST(TypedNumber, BackspaceTakesTheLastCharacterBack) {
   TypedNumber typed;
-  for (const char c : std::string("12")) typed.handle(text(c));
-  EXPECT_TRUE(typed.handle(key(GLFW_KEY_BACKSPACE)));
+  for (const char c : std::string("12")) typed.handle(text_event(c));
+  EXPECT_TRUE(typed.handle(key_event(GLFW_KEY_BACKSPACE)));
   EXPECT_EQ(typed.value(), 1.0);
-  EXPECT_TRUE(typed.handle(key(GLFW_KEY_BACKSPACE)));
+  EXPECT_TRUE(typed.handle(key_event(GLFW_KEY_BACKSPACE)));
   EXPECT_TRUE(typed.empty());
   EXPECT_TRUE(std::isnan(typed.value()));
 }
@@ -57,12 +47,12 @@ TEST(TypedNumber, BackspaceTakesTheLastCharacterBack) {
 TEST(TypedNumber, TextThatIsNotYetANumberIsNaN) {
   for (const std::string partial : {"-", ".", "-.", "1-", "1.2.3", "--1"}) {
     TypedNumber typed;
-    for (const char c : partial) typed.handle(text(c));
+    for (const char c : partial) typed.handle(text_event(c));
     EXPECT_EQ(typed.text(), partial);
     EXPECT_TRUE(std::isnan(typed.value())) << partial;
   }
   TypedNumber point_five;
-  for (const char c : std::string(".5")) point_five.handle(text(c));
+  for (const char c : std::string(".5")) point_five.handle(text_event(c));
   EXPECT_EQ(point_five.value(), 0.5);
 }
 
