@@ -22,7 +22,7 @@ void add_subdivide_command(CLI::App& app) {
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("subdivide", "Gaussian-product subdivision on the CPU (the reference)");
   cmd->add_option("input", args->input, "input mesh")->required();
-  cmd->add_option("-o,--output", args->output, "output (.ply keeps covariances, .obj positions)")->required();
+  cmd->add_option("-o,--output", args->output, "output (.ply keeps covariances and creases, .gltf/.glb covariances, .obj positions and creases)")->required();
   cmd->add_option("--levels", args->levels, "subdivision levels")->transform(integer_in(0, 8));
   cmd->add_option("--scheme", args->scheme,
                   "linear scheme: auto (Loop for a mesh of triangles only, else Catmull-Clark), loop, catmull-clark")

@@ -25,7 +25,7 @@ void add_tessellate_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("tessellate", "Evaluate the plans on the CPU into a watertight triangle mesh with normals");
   cmd->add_option("input", args->input, "input mesh")->required();
-  cmd->add_option("-o,--output", args->output, "output .ply (x y z nx ny nz) or .obj")->required();
+  cmd->add_option("-o,--output", args->output, "output .ply (x y z nx ny nz), .obj, .gltf or .glb")->required();
   add_plan_arguments(cmd, args->plans);
   cmd->add_option("--level", args->level, "tessellation level per patch edge")->transform(integer_in(1, 64));
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
