@@ -19,7 +19,7 @@ struct ImportOptions {
 };
 
 /// Reads .ply (a covariance PLY keeps its covariances; a plain one gets them from `options`),
-/// .obj, .off, .stl (covariances from `options`). Throws gps::Error naming the file, also for a mesh
+/// .obj, .off, .stl (covariances from `options`), .gltf and .glb (its "_COVARIANCE", else from `options`). Throws gps::Error naming the file, also for a mesh
 /// without faces (every use of a mesh needs its surface). Without `options.repair`, a topology that
 /// repair would mend (not manifold, a face using a vertex twice or with all its corners at one point)
 /// is refused naming each class, its count, its first example as the file numbers it and what
@@ -51,8 +51,9 @@ RepairOptions repair_options_for(const ImportOptions& options = {});
 /// elements `report`'s examples name: the file is read again for them), from 0 elsewhere.
 ElementNumbering element_numbering_for(const std::string& path, const RepairReport& report);
 
-/// Writes .ply (covariances and sharpness kept; ASCII or binary little endian) or .obj (positions,
-/// faces, and creases and corners as OpenSubdiv's tags),
+/// Writes .ply (covariances and sharpness kept; ASCII or binary little endian), .obj (positions,
+/// faces, and creases and corners as OpenSubdiv's tags) or .gltf/.glb (triangles, vertex normals and
+/// covariances in float; core/io/gltf_io.h),
 /// atomically: a temporary file beside the target, then a rename.
 void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary = false);
 
