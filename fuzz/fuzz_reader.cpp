@@ -8,6 +8,7 @@
 
 #include "core/support/error.h"
 #include "core/mesh/inference.h"
+#include "core/io/gltf_io.h"
 #include "core/io/mesh_import.h"
 #include "core/io/ply_io.h"
 
@@ -19,6 +20,9 @@ gps::CovarianceMesh parse(const std::string& data) {
   return gps::parse_obj(data, "fuzz.obj");
 #elif defined(GPS_FUZZ_READER_off)
   return gps::parse_off(data, "fuzz.off");
+#elif defined(GPS_FUZZ_READER_gltf)
+  bool has_covariances = false;  // no folder: a buffer file named in the input is never read
+  return gps::mesh_of_soup(gps::parse_gltf_soup(data, "fuzz.glb", "", has_covariances), "fuzz.glb");
 #else
   return gps::parse_stl(data, "fuzz.stl");
 #endif

@@ -3,12 +3,12 @@
 # each for SECONDS seconds (default 30) from the seeds in fuzz/corpus/READER. New inputs the fuzzer
 # finds go to build-fuzz/corpus/READER (not into the repository); a crash leaves its input in
 # build-fuzz/ and ends the script with a non-zero status.
-#   scripts/fuzz.sh [SECONDS] [READER...]     READER: ply obj off stl (default: all)
+#   scripts/fuzz.sh [SECONDS] [READER...]     READER: ply obj off stl gltf (default: all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-30}"
 shift || true
-readers=("${@:-ply obj off stl}")
+readers=("${@:-ply obj off stl gltf}")
 read -r -a readers <<< "${readers[*]}"
 source scripts/compiler_cache.sh
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGPSURF_BUILD_FUZZ=ON \
