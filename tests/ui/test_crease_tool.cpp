@@ -1,5 +1,6 @@
 // The crease tool's values: a drag's span covering smooth to ∞, rounded to tenths and clamped; the
-// text and colour of a sharpness; "mixed" selections; the mirror images of edges and vertices.
+// text and colour of a sharpness; "mixed" selections; the mirror images of edges and vertices; the
+// selection's edges, not the edges between their ends.
 #include "ui/editing/crease_tool.h"
 
 #include <gtest/gtest.h>
@@ -74,6 +75,24 @@ TEST(CreaseTool, MirrorEditingTakesTheMirroredEdgesAndVertices) {
   EXPECT_EQ(with_mirrored_vertices(cube, {0}, reach), (std::vector<int>{0, 3}));
   reach.mirror = false;
   EXPECT_EQ(with_mirrored_vertices(cube, {4}, reach), (std::vector<int>{4}));
+}
+
+// The crease takes the selection's edges: in edge mode the edges picked, not the edges between
+// their ends (two opposite edges of a cube's face crease, the face's other two sides stay smooth).
+TEST(CreaseTool, SharpensTheSelectedEdgesOnly) {
+  const CovarianceMesh cube = make_sample("cube");  // face {0, 1, 5, 4}
+  Selection edges;
+  edges.select_edges(cube, {{0, 1}, {4, 5}}, false);
+  const Modelled creased = sharpened_selection(cube, edges, false, 3.0, ReachOptions{});
+  ASSERT_EQ(creased.mesh.sharpness.creases.size(), 2u);
+  EXPECT_EQ(creased.mesh.sharpness.crease(0, 1), 3.0);
+  EXPECT_EQ(creased.mesh.sharpness.crease(4, 5), 3.0);
+  EXPECT_EQ(creased.mesh.sharpness.crease(0, 4), 0.0);
+  Selection vertices;  // the same four vertices as vertices: all four sides of the face
+  vertices.select({0, 1, 4, 5}, false);
+  EXPECT_EQ(sharpened_selection(cube, vertices, false, 3.0, ReachOptions{}).mesh.sharpness.creases.size(), 4u);
+  const Sharpness corners = sharpened_selection(cube, edges, true, 2.0, ReachOptions{}).mesh.sharpness;
+  for (int v = 0; v < 8; ++v) EXPECT_EQ(corners.corner(v), v == 0 || v == 1 || v == 4 || v == 5 ? 2.0 : 0.0) << v;
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // The bevel and slide tools without a window, through a ToolContext over a document: a typed value
 // and Enter give exactly core's operation as one undo step (undone: the mesh before, exactly); Esc
 // leaves the document untouched with no undo step; a refusal changes nothing; G G hands a grab over
-// to the slide; the mouse's bevel width is the distance the cursor gains from the centre.
+// to the slide; the mouse's bevel width is the distance the cursor gains from the centre; in edge
+// mode bevel and crease take the edges selected, not the edges between their ends.
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
@@ -18,6 +19,7 @@
 #include "ui/document/editor_document.h"
 #include "ui/editing/selection.h"
 #include "ui/tools/bevel_tool.h"
+#include "ui/tools/sharpness_tool.h"
 #include "ui/tools/slide_tool.h"
 #include "ui/tools/transform_tool.h"
 #include "tests/support/typed_events.h"
@@ -167,6 +169,35 @@ TEST(BevelTool, NoEdgeSelectedIsRefusedAtOnce) {
   EXPECT_FALSE(BevelTool::start(c, false));
   EXPECT_NE(editor.said.find("bevel refused"), std::string::npos) << editor.said;
   EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cube()));
+}
+
+// In edge mode the tools take the edges selected, not every edge between their ends: two opposite
+// edges of the cube's face {0, 1, 5, 4}, whose ends are the whole face.
+TEST(BevelTool, EdgeModeBevelsTheSelectedEdgesOnly) {
+  Editor editor(cube(), {});
+  editor.selection.select_edges(cube(), {{0, 1}, {4, 5}}, false);
+  ToolContext c = editor.context();
+  const auto tool = BevelTool::start(c, false);
+  ASSERT_TRUE(tool);
+  editor.type(*tool, "0.25");
+  EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), bevel_edges(cube(), {{0, 1}, {4, 5}}, width(0.25)).mesh));
+  EXPECT_FALSE(test::same_mesh(editor.document.mesh(),
+                               bevel_edges(cube(), edges_within(cube(), {0, 1, 4, 5}), width(0.25)).mesh));
+}
+
+TEST(SharpnessTool, EdgeModeCreasesTheSelectedEdgesOnlyAndKeepsThem) {
+  Editor editor(cube(), {});
+  editor.selection.select_edges(cube(), {{0, 1}, {4, 5}}, false);
+  ToolContext c = editor.context();
+  const auto tool = SharpnessTool::start(c, false);
+  ASSERT_TRUE(tool);
+  editor.type(*tool, "10");
+  EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  const std::vector<EdgeCrease> expected = {{0, 1, kInfiniteSharpness}, {4, 5, kInfiniteSharpness}};
+  EXPECT_EQ(editor.document.mesh().sharpness.creases, expected);
+  EXPECT_TRUE(editor.selection.holds_edges());  // the edges stay selected as edges
+  EXPECT_EQ(editor.selection.edges(editor.document.mesh()), (std::vector<EdgeEnds>{{0, 1}, {4, 5}}));
 }
 
 TEST(BevelTool, TheMouseWidthIsTheDistanceGainedFromTheCentre) {

@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "core/modelling/mesh_queries.h"
 #include "core/modelling/samples.h"
+#include "tests/support/test_meshes.h"
 #include "view/picking.h"
 
 namespace gps {
@@ -86,6 +90,104 @@ TEST(Selection, BoxSelectsExactlyTheVerticesProjectedInside) {
     const bool in = p && p->x >= a.x && p->x <= b.x + 1 && p->y >= a.y && p->y <= b.y + 1;
     EXPECT_EQ(in, std::find(inside.begin(), inside.end(), int(i)) != inside.end()) << "vertex " << i;
   }
+}
+
+// Edge mode on a 4 × 4 grid (vertex j·5 + i): two parallel edges of one quad, {6, 7} and {11, 12},
+// select those two edges only, not the quad's sides {6, 11} and {7, 12} that join their ends.
+using Edges = std::vector<EdgeEnds>;
+
+TEST(Selection, EdgeModeSelectsEdgesNotTheEdgesBetweenTheirEnds) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);
+  Selection s;
+  s.click_edges(grid, {{7, 6}}, 7, false);
+  s.click_edges(grid, {{12, 11}}, 12, true);  // shift-click adds
+  EXPECT_TRUE(s.holds_edges());
+  EXPECT_EQ(s.edges(grid), (Edges{{6, 7}, {11, 12}}));
+  EXPECT_EQ(s.vertices(), (std::vector<int>{6, 7, 11, 12}));  // their ends, for G / S / R
+  EXPECT_EQ(edges_within(grid, s.vertices()).size(), 4u);    // what the ends alone would select
+  EXPECT_EQ(s.active(), 12);
+  s.click_edges(grid, {{6, 7}}, 6, true);  // shift-click on a selected edge removes it
+  EXPECT_EQ(s.edges(grid), (Edges{{11, 12}}));
+  EXPECT_EQ(s.vertices(), (std::vector<int>{11, 12}));
+  s.click_edges(grid, {}, -1, true);  // shift-click on nothing keeps the selection
+  EXPECT_EQ(s.edges(grid), (Edges{{11, 12}}));
+  s.click_edges(grid, {{0, 1}}, 0, false);  // a plain click replaces it
+  EXPECT_EQ(s.edges(grid), (Edges{{0, 1}}));
+  s.click_edges(grid, {}, -1, false);  // a plain click on nothing clears it
+  EXPECT_TRUE(s.empty());
+  EXPECT_TRUE(s.edges(grid).empty());
+}
+
+TEST(Selection, EdgeLoopsTogglesAsAGroup) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);
+  Selection s;
+  const Edges row = edge_loop_edges(grid, 11, 12);  // the row 10 … 14
+  s.click_edges(grid, row, 11, false);
+  s.click_edges(grid, edge_loop_edges(grid, 16, 17), 16, true);  // and the row above
+  EXPECT_EQ(s.edges(grid).size(), 8u);  // not the 5 edges between the rows
+  EXPECT_EQ(s.vertices().size(), 10u);
+  s.click_edges(grid, row, 11, true);  // all of it selected: shift removes it
+  EXPECT_EQ(s.edges(grid), edge_loop_edges(grid, 16, 17));
+  s.click_edges(grid, {{10, 11}, {16, 17}}, 10, true);  // partly selected: shift adds the rest
+  EXPECT_EQ(s.edges(grid).size(), 5u);
+}
+
+TEST(Selection, EdgeBoxesAndInvert) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);  // 40 edges
+  Selection s;
+  s.select_edges(grid, {{6, 7}, {11, 12}}, false);
+  s.select_edges(grid, {{0, 1}}, true);  // additive
+  EXPECT_EQ(s.edges(grid), (Edges{{0, 1}, {6, 7}, {11, 12}}));
+  s.select_edges(grid, {{1, 2}}, false);  // replacing
+  EXPECT_EQ(s.edges(grid), (Edges{{1, 2}}));
+  s.select_edges(grid, {{6, 7}, {11, 12}}, true);
+  s.deselect_edges(grid, {{7, 6}, {3, 4}});  // one selected, one not
+  EXPECT_EQ(s.edges(grid), (Edges{{1, 2}, {11, 12}}));
+  s.invert_edges(grid);
+  const Edges inverted = s.edges(grid);
+  EXPECT_EQ(inverted.size(), 38u);
+  EXPECT_FALSE(std::binary_search(inverted.begin(), inverted.end(), EdgeEnds{1, 2}));
+  EXPECT_FALSE(std::binary_search(inverted.begin(), inverted.end(), EdgeEnds{11, 12}));
+  EXPECT_EQ(s.vertices().size(), 25u);  // every vertex is an end of an edge left
+  s.invert_edges(grid);
+  EXPECT_EQ(s.edges(grid), (Edges{{1, 2}, {11, 12}}));
+}
+
+// Switching modes as Blender does: vertex → edge holds the edges with both ends selected (a vertex
+// on none is let go); edge → vertex keeps the ends, whose edges are then all those between them.
+TEST(Selection, ModeSwitchesConvertAsBlenderDoes) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);
+  Selection s;
+  s.select({0, 6, 7, 11}, false);
+  EXPECT_FALSE(s.holds_edges());
+  EXPECT_EQ(s.edges(grid), (Edges{{6, 7}, {6, 11}}));
+  s.hold_edges(grid);  // into edge mode
+  EXPECT_TRUE(s.holds_edges());
+  EXPECT_EQ(s.edges(grid), (Edges{{6, 7}, {6, 11}}));
+  EXPECT_EQ(s.vertices(), (std::vector<int>{6, 7, 11}));  // vertex 0 had no selected edge
+  s.click_edges(grid, {{6, 7}}, 6, false);
+  s.click_edges(grid, {{11, 12}}, 11, true);
+  s.hold_edges(grid);  // already edges: nothing changes
+  EXPECT_EQ(s.edges(grid), (Edges{{6, 7}, {11, 12}}));
+  s.release_edges();  // out of edge mode
+  EXPECT_FALSE(s.holds_edges());
+  EXPECT_EQ(s.vertices(), (std::vector<int>{6, 7, 11, 12}));
+  EXPECT_EQ(s.edges(grid), (Edges{{6, 7}, {6, 11}, {7, 12}, {11, 12}}));
+  // A vertex selection (an operation's result, select all) lets the edges go too.
+  s.select_edges(grid, {{6, 7}}, false);
+  s.select_all(grid.n_vertices());
+  EXPECT_FALSE(s.holds_edges());
+  EXPECT_EQ(s.edges(grid).size(), 40u);
+}
+
+// Held edges name vertices of the mesh they were picked on; on another mesh only those that are
+// still its edges count.
+TEST(Selection, HeldEdgesNotInTheMeshAreLeftOut) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);
+  const CovarianceMesh cube = make_sample("cube");  // 8 vertices; 0–1 an edge, 0–5 a face's diagonal
+  Selection s;
+  s.select_edges(grid, {{0, 1}, {0, 5}, {5, 10}, {23, 24}}, false);
+  EXPECT_EQ(s.edges(cube), (Edges{{0, 1}}));
 }
 
 }  // namespace

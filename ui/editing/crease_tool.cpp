@@ -8,7 +8,6 @@
 
 #include "core/mesh/sharpness.h"
 #include "core/modelling/crease_edges.h"
-#include "core/modelling/mesh_queries.h"
 
 namespace gps {
 
@@ -98,10 +97,10 @@ std::vector<int> with_mirrored_vertices(const CovarianceMesh& mesh, const std::v
   return out;
 }
 
-Modelled sharpened_selection(const CovarianceMesh& mesh, const std::vector<int>& selected, bool corners,
+Modelled sharpened_selection(const CovarianceMesh& mesh, const Selection& selection, bool corners,
                              double sharpness, const ReachOptions& reach) {
-  if (corners) return set_corner(mesh, with_mirrored_vertices(mesh, selected, reach), sharpness);
-  return set_crease(mesh, with_mirrored_edges(mesh, edges_within(mesh, selected), reach), sharpness);
+  if (corners) return set_corner(mesh, with_mirrored_vertices(mesh, selection.vertices(), reach), sharpness);
+  return set_crease(mesh, with_mirrored_edges(mesh, selection.edges(mesh), reach), sharpness);
 }
 
 }  // namespace gps

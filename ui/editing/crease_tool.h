@@ -10,6 +10,7 @@
 #include "core/mesh/covariance_mesh.h"
 #include "core/modelling/mesh_arrays.h"
 #include "ui/editing/edit_reach.h"
+#include "ui/editing/selection.h"
 
 namespace gps {
 
@@ -42,10 +43,10 @@ std::vector<std::array<int, 2>> with_mirrored_edges(const CovarianceMesh& mesh,
 std::vector<int> with_mirrored_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices,
                                         const ReachOptions& reach);
 
-/// The mesh with the edges among `selected` (both ends selected) at `sharpness`, or with `corners` the
+/// The mesh with the selected edges (Selection::edges) at `sharpness`, or with `corners` the
 /// selected vertices' corner sharpness, their mirror images too where mirror editing is on
 /// (core/modelling/crease_edges.h's set_crease and set_corner, which refuse as they do).
-Modelled sharpened_selection(const CovarianceMesh& mesh, const std::vector<int>& selected, bool corners,
+Modelled sharpened_selection(const CovarianceMesh& mesh, const Selection& selection, bool corners,
                              double sharpness, const ReachOptions& reach);
 
 }  // namespace gps

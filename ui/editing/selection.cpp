@@ -3,9 +3,23 @@
 #include <algorithm>
 #include <iterator>
 
+#include "core/modelling/mesh_queries.h"
 #include "view/projection.h"
 
 namespace gps {
+
+namespace {
+
+// The edges as (min, max), ascending, each once.
+std::vector<EdgeEnds> normalized(std::vector<EdgeEnds> edges) {
+  for (auto& e : edges)
+    if (e[0] > e[1]) std::swap(e[0], e[1]);
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+}  // namespace
 
 std::string select_mode_name(SelectMode mode) {
   switch (mode) {
@@ -26,7 +40,18 @@ int Selection::active() const {
   return contains(last_clicked_) ? last_clicked_ : vertices_.front();
 }
 
+std::vector<EdgeEnds> Selection::edges(const CovarianceMesh& mesh) const {
+  if (!holds_edges_) return edges_within(mesh, vertices_);
+  const PolyMesh& m = mesh.mesh;
+  std::vector<EdgeEnds> out;
+  for (const auto& [a, b] : edges_)
+    if (b < int(m.n_vertices()) && m.find_halfedge(m.vertex_handle(a), m.vertex_handle(b)).is_valid())
+      out.push_back({a, b});
+  return out;
+}
+
 void Selection::click(int vertex, bool toggle) {
+  release_edges();
   if (vertex < 0) {
     if (!toggle) clear();
     return;
@@ -42,6 +67,7 @@ void Selection::click(int vertex, bool toggle) {
 }
 
 void Selection::select(const std::vector<int>& inside, bool additive) {
+  release_edges();
   if (!additive) vertices_.clear();
   vertices_.insert(vertices_.end(), inside.begin(), inside.end());
   std::sort(vertices_.begin(), vertices_.end());
@@ -63,6 +89,7 @@ void Selection::click_group(const std::vector<int>& group, int active, bool togg
 }
 
 void Selection::deselect(const std::vector<int>& outside) {
+  release_edges();
   std::vector<int> removed = outside;
   std::sort(removed.begin(), removed.end());
   std::vector<int> kept;
@@ -71,6 +98,7 @@ void Selection::deselect(const std::vector<int>& outside) {
 }
 
 void Selection::invert(size_t n_vertices) {
+  release_edges();
   std::vector<int> inverted;
   size_t k = 0;
   for (size_t i = 0; i < n_vertices; ++i) {
@@ -82,13 +110,68 @@ void Selection::invert(size_t n_vertices) {
 }
 
 void Selection::select_all(size_t n_vertices) {
+  release_edges();
   vertices_.resize(n_vertices);
   for (size_t i = 0; i < n_vertices; ++i) vertices_[i] = int(i);
 }
 
 void Selection::clear() {
+  release_edges();
   vertices_.clear();
   last_clicked_ = -1;
+}
+
+void Selection::set_edges(std::vector<EdgeEnds> edges) {
+  edges_ = normalized(std::move(edges));
+  holds_edges_ = true;
+  vertices_.clear();
+  for (const auto& [a, b] : edges_) vertices_.insert(vertices_.end(), {a, b});
+  std::sort(vertices_.begin(), vertices_.end());
+  vertices_.erase(std::unique(vertices_.begin(), vertices_.end()), vertices_.end());
+}
+
+void Selection::hold_edges(const CovarianceMesh& mesh) {
+  if (!holds_edges_) set_edges(edges_within(mesh, vertices_));
+}
+
+void Selection::click_edges(const CovarianceMesh& mesh, const std::vector<EdgeEnds>& group, int active,
+                            bool toggle) {
+  if (group.empty()) {
+    if (!toggle) clear();
+    return;
+  }
+  hold_edges(mesh);
+  const std::vector<EdgeEnds> picked = normalized(group);
+  if (toggle && std::includes(edges_.begin(), edges_.end(), picked.begin(), picked.end()))
+    deselect_edges(mesh, picked);
+  else
+    select_edges(mesh, picked, toggle);
+  last_clicked_ = active;
+}
+
+void Selection::select_edges(const CovarianceMesh& mesh, const std::vector<EdgeEnds>& inside, bool additive) {
+  hold_edges(mesh);
+  std::vector<EdgeEnds> edges = additive ? edges_ : std::vector<EdgeEnds>{};
+  edges.insert(edges.end(), inside.begin(), inside.end());
+  set_edges(std::move(edges));
+}
+
+void Selection::deselect_edges(const CovarianceMesh& mesh, const std::vector<EdgeEnds>& outside) {
+  hold_edges(mesh);
+  const std::vector<EdgeEnds> removed = normalized(outside);
+  std::vector<EdgeEnds> kept;
+  std::set_difference(edges_.begin(), edges_.end(), removed.begin(), removed.end(), std::back_inserter(kept));
+  set_edges(std::move(kept));
+}
+
+void Selection::invert_edges(const CovarianceMesh& mesh) {
+  hold_edges(mesh);
+  std::vector<EdgeEnds> all;
+  for (const auto e : mesh.mesh.edges()) all.push_back({e.v0().idx(), e.v1().idx()});
+  all = normalized(std::move(all));
+  std::vector<EdgeEnds> inverted;
+  std::set_difference(all.begin(), all.end(), edges_.begin(), edges_.end(), std::back_inserter(inverted));
+  set_edges(std::move(inverted));
 }
 
 std::vector<int> vertices_in_box(const Camera& camera, int width, int height, glm::vec2 a, glm::vec2 b,

@@ -100,7 +100,7 @@ void EditorApp::build_modelling_commands() {
          nullptr,
          nullptr,
          true});
-  const auto has_edge = [this] { return !edges_within(document_.mesh(), selection_.vertices()).empty(); };
+  const auto has_edge = [this] { return !selection_.edges(document_.mesh()).empty(); };
   t.add({"Mesh",
          "Crease (Shift+E; drag or type 0-10, 10 = ∞)",
          {key(GLFW_KEY_E, false, true)},
@@ -188,17 +188,18 @@ void EditorApp::build_modelling_commands() {
 
 void EditorApp::draw_delete_items() {
   const std::vector<int>& s = selection_.vertices();
+  const std::vector<EdgeEnds> edges = selection_.edges(document_.mesh());
   if (ImGui::MenuItem("Vertices"))
     run_operation("delete vertices", [&s](const CovarianceMesh& m) { return delete_vertices(m, s); });
   if (ImGui::MenuItem("Edges"))
-    run_operation("delete edges", [&s](const CovarianceMesh& m) { return delete_edges(m, edges_within(m, s)); });
+    run_operation("delete edges", [&edges](const CovarianceMesh& m) { return delete_edges(m, edges); });
   if (ImGui::MenuItem("Faces"))
     run_operation("delete faces", [&s](const CovarianceMesh& m) { return delete_faces(m, faces_within(m, s)); });
   ImGui::Separator();
   if (ImGui::MenuItem("Dissolve vertices"))
     run_operation("dissolve vertices", [&s](const CovarianceMesh& m) { return dissolve_vertices(m, s); });
   if (ImGui::MenuItem("Dissolve edges"))
-    run_operation("dissolve edges", [&s](const CovarianceMesh& m) { return dissolve_edges(m, edges_within(m, s)); });
+    run_operation("dissolve edges", [&edges](const CovarianceMesh& m) { return dissolve_edges(m, edges); });
 }
 
 void EditorApp::draw_merge_items() {
@@ -278,11 +279,11 @@ void EditorApp::rebuild_after_undo(const std::vector<int>& selection) {
 }
 
 void EditorApp::apply_sharpness(bool corners, double sharpness) {
-  const std::vector<int> before = selection_.vertices();
+  const Selection before = selection_;
   const bool done = run_operation(corners ? "corner" : "crease", [&](const CovarianceMesh& m) {
     return sharpened_selection(m, before, corners, sharpness, reach_options_);
   });
-  if (done) selection_.select(before, false);  // the selection as it was (set_crease selects the edges' ends)
+  if (done) selection_ = before;  // the selection as it was (set_crease selects the edges' ends)
 }
 
 void EditorApp::operation_note(const std::string& message, bool error) {

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/modelling/mesh_queries.h"
 #include "render/pipeline/surface_point.h"
 #include "ui/input/camera_control.h"
 #include "ui/overlays/crease_overlay.h"
@@ -263,7 +264,15 @@ void EditorApp::draw_handles_and_box() {
       lit = hit_handle(v, input_.cursor, *gizmo, selection_.active(), kPickRadius);
   }
   if (view_.draw.mesh_lines) draw_crease_overlay(*draw, v, shown_mesh());
-  draw_selection_overlay(*draw, v, shown_mesh(), preview_ ? preview_selection_ : selection_.vertices(), select_mode_);
+  if (select_mode_ != SelectMode::vertex) {
+    // A preview that keeps the document's selection (a crease's) shows its edges; one of its own (a
+    // bevel's new faces) is of vertices, its edges those with both ends selected.
+    const bool kept = !preview_ || preview_selection_ == selection_.vertices();
+    const std::vector<int>& selected = kept ? selection_.vertices() : preview_selection_;
+    const std::vector<EdgeEnds> edges =
+        kept ? selection_.edges(shown_mesh()) : edges_within(shown_mesh(), preview_selection_);
+    draw_selection_overlay(*draw, v, shown_mesh(), selected, edges, select_mode_);
+  }
   draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, lit);
   gizmo_box_.reset();
   if (gizmo) {  // the gizmo's extent on screen, its dots included

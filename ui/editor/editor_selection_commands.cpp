@@ -1,13 +1,17 @@
-// Selecting in Blender's three modes: a click picks a vertex, an edge (its ends) or a face (its
-// corners); Alt+click a loop; boxes take only what the camera sees unless selecting through; and
-// the Select menu's commands (modes, all, none, invert, linked, grow, shrink).
+// Selecting in Blender's three modes: a click picks a vertex, an edge or a face (its corners);
+// Alt+click a loop; boxes take only what the camera sees unless selecting through; and the Select
+// menu's commands (modes, all, none, invert, linked, grow, shrink, sharp edges).
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
+#include <algorithm>
 #include <array>
 #include <set>
 
-#include "core/support/error.h"
+#include "core/mesh/crease_by_angle.h"
 #include "core/modelling/mesh_queries.h"
+#include "core/modelling/operation_words.h"
+#include "core/support/error.h"
 #include "ui/editor/editor_app.h"
 #include "view/element_picking.h"
 #include "view/picking.h"
@@ -51,6 +55,10 @@ std::vector<int> face_loop_vertices(const CovarianceMesh& mesh, int a, int b) {
 
 void EditorApp::set_select_mode(SelectMode mode) {
   select_mode_ = mode;
+  if (mode == SelectMode::edge)
+    selection_.hold_edges(document_.mesh());
+  else
+    selection_.release_edges();
   set_status(select_mode_name(mode) + " select mode", false);
 }
 
@@ -75,9 +83,10 @@ void EditorApp::click_select(glm::vec2 pixel, bool toggle) {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
   std::vector<int> group;
-  if (select_mode_ == SelectMode::edge) {
-    if (const auto edge = pick_edge(v, pixel, mesh, kClickRadius)) group = {(*edge)[0], (*edge)[1]};
-  } else if (const int face = pick_face(v, pixel, mesh); face >= 0) {
+  const auto edge = select_mode_ == SelectMode::edge ? pick_edge(v, pixel, mesh, kClickRadius) : std::nullopt;
+  if (edge) {
+    group = {(*edge)[0], (*edge)[1]};
+  } else if (const int face = select_mode_ == SelectMode::face ? pick_face(v, pixel, mesh) : -1; face >= 0) {
     group = corners(mesh, face);
   }
   // The active vertex: the group's vertex nearest the cursor.
@@ -86,7 +95,10 @@ void EditorApp::click_select(glm::vec2 pixel, bool toggle) {
   for (const int vertex : group)
     if (const auto p = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(vertex))))
       if (const float d = glm::length(glm::vec2(*p) - pixel); d < nearest) nearest = d, active = vertex;
-  selection_.click_group(group, active, toggle);
+  if (select_mode_ == SelectMode::edge)
+    selection_.click_edges(mesh, edge ? std::vector<EdgeEnds>{*edge} : std::vector<EdgeEnds>{}, active, toggle);
+  else
+    selection_.click_group(group, active, toggle);
 }
 
 void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
@@ -96,6 +108,12 @@ void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
   if (!edge) return;
   const auto [a, b] = *edge;
   try {
+    if (select_mode_ == SelectMode::edge) {
+      const std::vector<EdgeEnds> loop = edge_loop_edges(mesh, a, b);
+      selection_.click_edges(mesh, loop, a, toggle);
+      set_status("edge loop: " + count_of(loop.size(), "edge", "edges"), false);
+      return;
+    }
     const std::vector<int> loop =
         select_mode_ == SelectMode::face ? face_loop_vertices(mesh, a, b) : edge_loop(mesh, a, b);
     selection_.click_group(loop, a, toggle);
@@ -118,18 +136,42 @@ void EditorApp::box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract) {
       if (visible[size_t(vertex)]) seen.push_back(vertex);
     inside = std::move(seen);
   }
+  if (select_mode_ == SelectMode::edge) {  // the edges with both ends inside
+    const std::vector<EdgeEnds> edges = edges_within(mesh, inside);
+    if (subtract)
+      selection_.deselect_edges(mesh, edges);
+    else
+      selection_.select_edges(mesh, edges, add);
+    return;
+  }
   if (subtract)
     selection_.deselect(inside);
   else
     selection_.select(inside, add);
 }
 
+void EditorApp::select_sharp_edges() {
+  const CovarianceMesh& mesh = document_.mesh();
+  const std::vector<EdgeEnds> sharp = edges_sharper_than(mesh, sharp_edge_angle_);
+  if (select_mode_ != SelectMode::edge) set_select_mode(SelectMode::edge);
+  selection_.select_edges(mesh, sharp, true);  // added to the selection, as Blender does
+  set_status("select sharp edges: " + count_of(sharp.size(), "edge", "edges") + " folded by more than " +
+                 short_number(sharp_edge_angle_) + "°",
+             false);
+}
+
+void EditorApp::draw_sharp_edges_items() {
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+  if (ImGui::InputDouble("angle (degrees)", &sharp_edge_angle_, 0.0, 0.0, "%.3g"))
+    sharp_edge_angle_ = std::clamp(sharp_edge_angle_, 0.0, 180.0);
+  if (ImGui::MenuItem("Select", "Ctrl+Shift+E")) select_sharp_edges();
+}
+
 std::string EditorApp::selection_summary() const {
   std::string text = std::to_string(selection_.vertices().size()) + " selected";
   const CovarianceMesh& mesh = document_.mesh();
   if (select_mode_ == SelectMode::edge) {
-    const size_t n = selection_.empty() ? 0 : edges_within(mesh, selection_.vertices()).size();
-    text += ", edge mode: " + std::to_string(n) + (n == 1 ? " edge" : " edges");
+    text += ", edge mode: " + count_of(selection_.empty() ? 0 : selection_.edges(mesh).size(), "edge", "edges");
   } else if (select_mode_ == SelectMode::face) {
     const size_t n = selection_.empty() ? 0 : faces_within(mesh, selection_.vertices()).size();
     text += ", face mode: " + std::to_string(n) + (n == 1 ? " face" : " faces");
@@ -161,7 +203,10 @@ void EditorApp::build_selection_commands() {
   t.add({"Select",
          "Select all",
          {key(GLFW_KEY_A), key(GLFW_KEY_A, true)},
-         [this] { selection_.select_all(document_.mesh().n_vertices()); },
+         [this] {
+           selection_.select_all(document_.mesh().n_vertices());
+           if (select_mode_ == SelectMode::edge) selection_.hold_edges(document_.mesh());
+         },
          always,
          nullptr,
          nullptr,
@@ -170,8 +215,18 @@ void EditorApp::build_selection_commands() {
            selection_.clear();
          }});
   t.add({"Select", "Invert selection", {key(GLFW_KEY_I, true)}, [this] {
-           selection_.invert(document_.mesh().n_vertices());
+           if (select_mode_ == SelectMode::edge)
+             selection_.invert_edges(document_.mesh());
+           else
+             selection_.invert(document_.mesh().n_vertices());
          }});
+  t.add({"Select",
+         "Select sharp edges",
+         {key(GLFW_KEY_E, true, true)},
+         [this] { select_sharp_edges(); },
+         always,
+         nullptr,
+         [this] { draw_sharp_edges_items(); }});
   t.add({"Select",
          "Select linked (under the cursor)",
          {key(GLFW_KEY_L)},

@@ -29,7 +29,8 @@ bool faces_camera(const PolyMesh& m, OpenMesh::SmartFaceHandle f, const std::vec
 }  // namespace
 
 void draw_selection_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMesh& mesh,
-                            const std::vector<int>& selected, SelectMode mode) {
+                            const std::vector<int>& selected, const std::vector<EdgeEnds>& edges,
+                            SelectMode mode) {
   if (mode == SelectMode::vertex || selected.empty()) return;
   const PolyMesh& m = mesh.mesh;
   std::vector<std::optional<ImVec2>> pixel(mesh.n_vertices());
@@ -56,7 +57,7 @@ void draw_selection_overlay(ImDrawList& draw, const Viewport& v, const Covarianc
         draw.AddTriangleFilled(corners[0], corners[k], corners[k + 1], kFaceFill);
       draw.AddPolyline(corners.data(), int(corners.size()), kFaceOutline, ImDrawFlags_Closed, 2.0f);
     }
-  for (const auto& [a, b] : edges_within(mesh, selected)) {
+  for (const auto& [a, b] : edges) {
     const auto h = m.find_halfedge(m.vertex_handle(a), m.vertex_handle(b));
     if (!h.is_valid()) continue;
     const auto f0 = h.face(), f1 = h.opp().face();

@@ -10,7 +10,6 @@
 #include <string>
 
 #include "core/mesh/sharpness.h"
-#include "core/modelling/mesh_queries.h"
 #include "ui/editing/covariance_presets.h"
 #include "ui/editing/crease_tool.h"
 
@@ -267,11 +266,11 @@ void InspectorPanel::sharpness_field(const char* label, double value, bool corne
   ImGui::PopID();
 }
 
-void InspectorPanel::draw_sharpness(const EditorDocument& document, const std::vector<int>& vertices) {
+void InspectorPanel::draw_sharpness(const EditorDocument& document, const Selection& selection) {
   const CovarianceMesh& mesh = document.mesh();
-  const auto edges = edges_within(mesh, vertices);
+  const auto edges = selection.edges(mesh);
   if (!edges.empty()) sharpness_field("crease", common_crease(mesh, edges), false);
-  sharpness_field("corner", common_corner(mesh, vertices), true);
+  sharpness_field("corner", common_corner(mesh, selection.vertices()), true);
 }
 
 void InspectorPanel::draw(EditorDocument& document, const Selection& selection, ReachOptions& reach, bool* open) {
@@ -307,7 +306,7 @@ void InspectorPanel::draw(EditorDocument& document, const Selection& selection, 
     draw_rotation(document, vertices, active);
     const Mat3& c = document.mesh().covariance(size_t(active));
     ImGui::TextDisabled("Σ = [%.4g %.4g %.4g; %.4g %.4g; %.4g]", c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2));
-    draw_sharpness(document, vertices);
+    draw_sharpness(document, selection);
     ImGui::Separator();
     draw_presets(document, vertices);
   }

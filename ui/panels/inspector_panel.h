@@ -38,7 +38,7 @@ private:
   void draw_sigmas(EditorDocument& document, const std::vector<int>& vertices, int active);
   void draw_rotation(EditorDocument& document, const std::vector<int>& vertices, int active);
   void draw_presets(EditorDocument& document, const std::vector<int>& vertices);
-  void draw_sharpness(const EditorDocument& document, const std::vector<int>& vertices);
+  void draw_sharpness(const EditorDocument& document, const Selection& selection);
   void sharpness_field(const char* label, double value, bool corners);
   void track_entry(EditorDocument& document);
   void mirror_change(EditorDocument& document, const std::vector<int>& vertices) const;

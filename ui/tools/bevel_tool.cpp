@@ -25,7 +25,7 @@ std::unique_ptr<ModalTool> BevelTool::start(ToolContext& ctx, bool vertices) {
   tool->vertices_ = vertices;
   tool->selected_ = ctx.selection.vertices();
   if (!vertices) {
-    tool->edges_ = edges_within(mesh, tool->selected_);
+    tool->edges_ = ctx.selection.edges(mesh);
     if (tool->edges_.empty()) {
       ctx.note("bevel refused: select an edge or more (both ends of each)", true);
       return nullptr;

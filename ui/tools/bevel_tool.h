@@ -19,7 +19,7 @@ namespace gps {
 
 class BevelTool : public ModalTool {
 public:
-  /// `vertices`: bevels the selected vertices, else the selected edges (both ends selected).
+  /// `vertices`: bevels the selected vertices, else the selected edges (Selection::edges).
   /// nullptr (the refusal reported) where the selection holds none.
   static std::unique_ptr<ModalTool> start(ToolContext& ctx, bool vertices);
 

@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "core/mesh/sharpness.h"
-#include "core/modelling/mesh_queries.h"
 #include "core/support/error.h"
 #include "ui/document/editor_document.h"
 #include "ui/editing/crease_tool.h"
@@ -16,14 +15,14 @@ namespace gps {
 std::unique_ptr<ModalTool> SharpnessTool::start(ToolContext& ctx, bool corners) {
   const CovarianceMesh& mesh = ctx.document.mesh();
   const std::vector<int>& selected = ctx.selection.vertices();
-  const auto edges = edges_within(mesh, selected);
+  const auto edges = ctx.selection.edges(mesh);
   if (!corners && edges.empty()) {
     ctx.note("crease refused: select an edge or more (both ends of each)", true);
     return nullptr;
   }
   std::unique_ptr<SharpnessTool> tool(new SharpnessTool);
   tool->corners_ = corners;
-  tool->selected_ = selected;
+  tool->selected_ = ctx.selection;
   const double common = corners ? common_corner(mesh, selected) : common_crease(mesh, edges);
   tool->start_ = std::isfinite(common) ? std::min(common, kInfiniteSharpness) : 0.0;
   tool->value_ = tool->start_;
@@ -48,7 +47,7 @@ void SharpnessTool::preview(double sharpness, ToolContext& ctx) {
     if (sharpness != value_) {
       auto shown = std::make_shared<const CovarianceMesh>(
           sharpened_selection(ctx.document.mesh(), selected_, corners_, sharpness, ctx.reach).mesh);
-      ctx.show_preview(shown, selected_, surface(*shown, ctx));
+      ctx.show_preview(shown, selected_.vertices(), surface(*shown, ctx));
       shown_ = std::move(shown);
       value_ = sharpness;
     }
@@ -63,13 +62,12 @@ void SharpnessTool::preview(double sharpness, ToolContext& ctx) {
 
 void SharpnessTool::end(bool keep, ToolContext& ctx) {
   if (keep && shown_->sharpness != ctx.document.mesh().sharpness) {  // one undo step
-    const std::vector<int> before = ctx.selection.vertices();
     const double value = value_;
     if (ctx.operate(
             what(),
             [&](const CovarianceMesh& m) { return sharpened_selection(m, selected_, corners_, value, ctx.reach); },
             replanner_.get()))
-      ctx.selection.select(before, false);  // the selection as it was (set_crease selects the edges' ends)
+      ctx.selection = selected_;  // the selection as it was (set_crease selects the edges' ends)
     return;
   }
   try {  // the surface planned for the document's sharpness again

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/plans/sharpness_replanner.h"
+#include "ui/editing/selection.h"
 #include "ui/tools/modal_tool.h"
 #include "ui/tools/typed_number.h"
 
@@ -16,7 +17,8 @@ namespace gps {
 
 class SharpnessTool : public ModalTool {
 public:
-  /// `corners`: the vertices' corner sharpness, else the edges'. nullptr (the refusal reported) for
+  /// `corners`: the vertices' corner sharpness, else the selected edges' (in edge mode those
+  /// selected as edges, else those with both ends selected). nullptr (the refusal reported) for
   /// edges where the selection holds none.
   static std::unique_ptr<ModalTool> start(ToolContext& ctx, bool corners);
 
@@ -32,7 +34,7 @@ private:
   void end(bool keep, ToolContext& ctx);
 
   bool corners_ = false;
-  std::vector<int> selected_;
+  Selection selected_;  // the selection it started with: its edges, or its vertices' corners
   double start_ = 0.0, value_ = 0.0;
   glm::vec2 start_cursor_{0.0f};
   TypedNumber typed_;

@@ -34,7 +34,7 @@ std::unique_ptr<ModalTool> SlideTool::start(ToolContext& ctx) {
   const std::vector<int> selected = ctx.selection.vertices();
   std::unique_ptr<SlideTool> tool(new SlideTool);
   tool->base_ = std::make_shared<const CovarianceMesh>(mesh);
-  tool->edges_ = edges_within(mesh, selected);
+  tool->edges_ = ctx.selection.edges(mesh);
   tool->start_cursor_ = ctx.cursor;
   if (!tool->edges_.empty()) {
     tool->centre_ = centre_of_vertices(mesh, selected);
