@@ -40,6 +40,12 @@ std::string path_as_given(const std::string& path, void*) { return path; }
 bool read_buffer_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* folder) {
   if (folder == nullptr) return false;
   try {
+    std::error_code error;
+    const uintmax_t size = std::filesystem::file_size(path, error);
+    if (!error && size > memory_limit_bytes() / 2) {
+      if (err) *err += escaped(path) + ": " + std::to_string(size) + " bytes, more than the memory budget lets a buffer hold";
+      return false;
+    }
     const std::string bytes = read_text_file(path);
     out->assign(bytes.begin(), bytes.end());
     return true;

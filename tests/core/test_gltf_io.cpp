@@ -259,6 +259,31 @@ TEST(GltfIo, NodeTransformsThroughTheHierarchyPlaceEachInstance) {
   }
 }
 
+TEST(GltfIo, CovariancesFollowTheNodeTransform) {
+  test::TempDir dir;
+  HandMade h = split_cube();
+  // Every corner's Gaussian 0.01 I with a correlation of x and z; the node rotates and scales it.
+  Mat3 sigma = 0.01 * Mat3::Identity();
+  sigma(0, 2) = sigma(2, 0) = 0.004;
+  std::vector<float> covariances;
+  for (int v = 0; v < 24; ++v)
+    for (int k = 0; k < 9; ++k) covariances.push_back(float(sigma(k % 3, k / 3)));
+  const size_t offset = h.bin.size();
+  h.append(covariances);
+  h.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", covariances.size() * 4}});
+  h.j["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 24}, {"type", "MAT3"}});
+  h.j["meshes"][0]["primitives"][0]["attributes"]["_COVARIANCE"] = 2;
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(1.0, Vec3(0, 1, 1).normalized()));
+  h.j["nodes"] = {{{"rotation", {q.x(), q.y(), q.z(), q.w()}}, {"scale", {2, 1, 0.5}}, {"mesh", 0}}};
+  dir.write("gauss.glb", h.glb());
+  const CovarianceMesh m = read_mesh(dir.file("gauss.glb"));
+  ASSERT_EQ(m.n_vertices(), 8u);
+  // A Σ Aᵀ with A = R S, Σ as the file's floats give it.
+  const Mat3 a = q.toRotationMatrix() * Vec3(2, 1, 0.5).asDiagonal();
+  const Mat3 expected = a * sigma.cast<float>().cast<double>() * a.transpose();
+  for (const Mat3& c : m.covariances) EXPECT_LT((c - expected).cwiseAbs().maxCoeff(), 1e-15) << c;
+}
+
 TEST(GltfIo, StripAndFanPrimitivesGiveTheirTriangles) {
   test::TempDir dir;
   HandMade h;
