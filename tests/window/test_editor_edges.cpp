@@ -1,0 +1,90 @@
+// Edges as elements in a real window under Xvfb, on the quad cube: in edge mode (2) a click and a
+// Shift+click select two opposite edges of the top face, and Shift+E creases those two only, not the
+// face's other two sides that join their ends (the trap of a vertex selection); back in vertex mode
+// (1) the same four vertices crease all four sides, as before. Select sharp edges (Ctrl+Shift+E,
+// 30°) takes the cube's 12 edges, which Shift+E then creases. Screenshots kept in
+// build/test-artefacts/EditorEdges/.
+#include <gtest/gtest.h>
+
+#include "../support/editor_driver.h"
+#include "core/io/mesh_io.h"
+#include "core/mesh/sharpness.h"
+#include "core/modelling/samples.h"
+
+namespace gps {
+namespace {
+
+using test::artefact;
+using test::editor_view;
+using test::Events;
+using test::pixel_of;
+
+constexpr int kWidth = test::kWindowWidth, kHeight = test::kWindowHeight;
+constexpr double kInf = kInfiniteSharpness;
+
+class EditorEdges : public ::testing::Test {
+protected:
+  void SetUp() override {
+    write_mesh(dir_.file("original.ply"), make_sample("cube"));
+    original_ = read_mesh(dir_.file("original.ply"));
+    view_ = editor_view(original_);
+  }
+  // The pixel a fraction t of the way from vertex a to vertex b.
+  glm::vec2 along(int a, int b, double t) const {
+    return pixel_of(view_, (1.0 - t) * original_.mean(size_t(a)) + t * original_.mean(size_t(b)));
+  }
+  // Edge mode; a click on the top face's front edge 6–7 near 7 (7 active: the gizmo there), then a
+  // Shift+click on its back edge 2–3 near 2, the end away from 7 on screen (clear of the gizmo).
+  Events two_top_edges_selected() const {
+    Events e;
+    e.key("2").wait().click(along(7, 6, 0.3)).wait().click(along(2, 3, 0.3), "shift").wait();
+    return e;
+  }
+  CovarianceMesh play(const Events& events, const std::string& screenshot) const {
+    const auto r = test::play_editor(dir_, dir_.file("original.ply"), events, kWidth, kHeight,
+                                     "--save " + dir_.file("saved.ply") + " --screenshot " + artefact(screenshot));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return read_mesh(dir_.file("saved.ply"));
+  }
+
+  test::TempDir dir_;
+  CovarianceMesh original_;
+  Viewport view_;
+};
+
+TEST_F(EditorEdges, ShiftECreasesTheSelectedEdgesNotTheEdgesBetweenTheirEnds) {
+  Events shown = two_top_edges_selected();
+  play(shown.wait(3), "two_edges_selected.png");
+
+  Events crease = two_top_edges_selected();
+  crease.key("shift+e").wait().text("10").wait().key("enter").wait(3);
+  const CovarianceMesh creased = play(crease, "two_edges_creased.png");
+  EXPECT_EQ(creased.sharpness.creases, (std::vector<EdgeCrease>{{2, 3, kInf}, {6, 7, kInf}}));
+  EXPECT_TRUE(creased.sharpness.corners.empty());
+  for (size_t v = 0; v < original_.n_vertices(); ++v) EXPECT_EQ(creased.mean(v), original_.mean(v));
+
+  // In vertex mode the edges' ends select every edge between them: the whole rim of the top face.
+  Events as_vertices = two_top_edges_selected();
+  as_vertices.key("1").wait().key("shift+e").wait().text("10").wait().key("enter").wait(3);
+  EXPECT_EQ(play(as_vertices, "as_vertices_creased.png").sharpness.creases,
+            (std::vector<EdgeCrease>{{2, 3, kInf}, {2, 6, kInf}, {3, 7, kInf}, {6, 7, kInf}}));
+}
+
+TEST_F(EditorEdges, SelectSharpEdgesTakesTheCubesTwelveEdges) {
+  Events sharp;
+  sharp.key("ctrl+shift+e").wait(3);
+  Events shown = sharp;
+  play(shown, "sharp_edges_selected.png");
+  sharp.key("shift+e").wait().text("10").wait().key("enter").wait(3);
+  const CovarianceMesh creased = play(sharp, "sharp_edges_creased.png");
+  ASSERT_EQ(creased.sharpness.creases.size(), 12u);
+  for (const EdgeCrease& c : creased.sharpness.creases) {
+    EXPECT_EQ(c.sharpness, kInf) << c.a << "-" << c.b;
+    EXPECT_TRUE(original_.mesh.find_halfedge(original_.mesh.vertex_handle(c.a), original_.mesh.vertex_handle(c.b))
+                    .is_valid())
+        << c.a << "-" << c.b;
+  }
+}
+
+}  // namespace
+}  // namespace gps
