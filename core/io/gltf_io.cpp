@@ -1,5 +1,6 @@
 #include "core/io/gltf_io.h"
 
+#include <algorithm>
 #include <bit>
 #include <climits>
 #include <cmath>
@@ -186,7 +187,7 @@ std::vector<MeshInstance> mesh_instances(const tinygltf::Model& model) {
 }
 
 bool is_triangles(const tinygltf::Primitive& p) {
-  return p.mode == -1 || p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+  return p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
          p.mode == TINYGLTF_MODE_TRIANGLE_FAN;
 }
 
@@ -370,8 +371,7 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
                       std::to_string(points.count) + " positions");
         return vertex_of[i];
       };
-      const int mode = p.mode == -1 ? TINYGLTF_MODE_TRIANGLES : p.mode;
-      primitive_triangles(mode, n, where, [&](size_t a, size_t b, size_t c, bool skip_degenerate) {
+      primitive_triangles(p.mode, n, where, [&](size_t a, size_t b, size_t c, bool skip_degenerate) {
         const int t[3] = {vertex(a), vertex(b), vertex(c)};
         // A strip or fan restarts through triangles with a repeated corner: they are not faces.
         if (skip_degenerate && (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])) return;
