@@ -18,7 +18,7 @@ void add_simplify_command(CLI::App& app) {
   struct Args {
     std::string input, output;
     size_t vertices = 0;
-    double ratio = 0, bias = 0.05, max_normal_deviation = 45;
+    double ratio = 0, bias = 0.05, max_normal_deviation = 45, error = 0;
     int level = 8;
     bool ascii = false, quiet = false;
     RepairArguments repair;
@@ -36,6 +36,10 @@ void add_simplify_command(CLI::App& app) {
   auto* ratio = cmd->add_option("--ratio", args->ratio, "fraction of the input's vertices to keep, in (0, 1]")
                     ->check(positive_number(1));
   vertices->excludes(ratio);
+  auto* error = cmd->add_option("--error", args->error,
+                                "stop short of a collapse that would move the surface further than this, over the "
+                                "input's bounding-box diagonal (the rms distance of the merged region's face planes)")
+                    ->check(positive_number(1));
   cmd->add_option("--bias", args->bias, "thickness of the input's faces across their planes (as Eq. 16's bias)")
       ->check(positive_number());
   cmd->add_option("--max-normal-deviation", args->max_normal_deviation,
@@ -48,8 +52,9 @@ void add_simplify_command(CLI::App& app) {
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   cmd->add_flag("-q,--quiet", args->quiet, "print only errors (no report, no progress bar)");
   add_repair_arguments(cmd, args->repair);
-  cmd->callback([args, vertices, ratio, level] {
-    if (vertices->count() == 0 && ratio->count() == 0) throw usage_error("simplify: give --vertices N or --ratio R");
+  cmd->callback([args, vertices, ratio, error, level] {
+    if (vertices->count() == 0 && ratio->count() == 0 && error->count() == 0)
+      throw usage_error("simplify: give --vertices N, --ratio R or --error E");
     // Simplifying uses the input's faces only: no covariances inferred for it.
     const CovarianceMesh input =
         read_mesh_repairing(args->input, args->repair, ImportOptions{.covariance = ImportOptions::Covariance::isotropic},
@@ -57,8 +62,11 @@ void add_simplify_command(CLI::App& app) {
     SimplifyOptions options;
     options.bias = args->bias;
     options.max_normal_deviation_degrees = args->max_normal_deviation;
-    options.target_vertices =
-        vertices->count() > 0 ? args->vertices : size_t(std::llround(args->ratio * double(input.n_vertices())));
+    options.max_error = args->error;
+    // --error alone: as few vertices as the error allows.
+    options.target_vertices = vertices->count() > 0 ? args->vertices
+                              : ratio->count() > 0  ? size_t(std::llround(args->ratio * double(input.n_vertices())))
+                                                    : 4;
     if (options.target_vertices < 4)
       throw usage_error(escaped(args->input) + ": --ratio " + std::to_string(args->ratio) +
                         " keeps fewer than 4 of its " + std::to_string(input.n_vertices()) + " vertices");
@@ -71,7 +79,10 @@ void add_simplify_command(CLI::App& app) {
     if (s.triangulated) std::cout << "fanned the faces of more than 3 sides into triangles\n";
     std::cout << "simplified " << s.input_vertices << " vertices, " << s.input_triangles << " triangles to "
               << s.mesh.n_vertices() << " vertices, " << s.mesh.n_faces() << " triangles";
-    if (s.mesh.n_vertices() > options.target_vertices)
+    if (error->count() > 0 && s.mesh.n_vertices() > options.target_vertices)
+      std::cout << " (no further collapse keeps within --error " << args->error
+                << ", the topology, manifoldness and face orientations)";
+    else if (s.mesh.n_vertices() > options.target_vertices)
       std::cout << " (asked " << options.target_vertices
                 << ": no further collapse keeps the topology, manifoldness and face orientations)";
     std::cout << "\nwrote " << args->output << "\n";

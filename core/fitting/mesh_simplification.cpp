@@ -179,8 +179,10 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
     const Region& a = t.property(region, from);
     const Region& b = t.property(region, into);
     const auto p = t.point(into);
-    const double area = a.area + b.area;
-    return float(std::max(0.0, a.quadric(p) + b.quadric(p)) + kRegionAreaWeight * area * area);
+    const double area = a.area + b.area, error = std::max(0.0, a.quadric(p) + b.quadric(p));
+    // The mesh is scaled to a unit diagonal: max_error compares as it is.
+    if (options.max_error > 0 && error > 3 * area * options.max_error * options.max_error) return -1.0f;
+    return float(error + kRegionAreaWeight * area * area);
   };
   collapses.collapsed = [&](CollapseMesh::VertexHandle from, CollapseMesh::VertexHandle into) {
     const Region& a = t.property(region, from);

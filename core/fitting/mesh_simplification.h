@@ -12,6 +12,10 @@ struct SimplifyOptions {
   size_t target_vertices = 0;                // the vertex count asked for
   double bias = 0.05;                        // thickness of the face discs across their planes (GPS paper Eq. 16)
   double max_normal_deviation_degrees = 45;  // the most a collapse may turn a face's normal
+  /// With > 0: no collapse whose merged region's faces would lie further than this from the position
+  /// kept, as the rms distance of their planes (the region's quadric error over three times its area:
+  /// each face's plane is in the quadrics of its three corners), over the input's bounding-box diagonal.
+  double max_error = 0;
   ProgressReport progress;                   // the fraction of the collapses asked for that are done
 };
 
@@ -25,7 +29,7 @@ struct SimplifiedMesh {
 /// of quadric error (Garland and Heckbert 1997, with boundary planes that keep the boundary's shape;
 /// near-ties to the collapse that makes the smaller region) until `options.target_vertices` remain
 /// or no collapse may be done without changing the topology (genus, boundary loops), making a face
-/// non-manifold or turning a face's normal by more than the limit. A coarse vertex keeps the position
+/// non-manifold, turning a face's normal by more than the limit or, with `max_error`, exceeding it. A coarse vertex keeps the position
 /// of the input vertex it is; its covariance comes from the input faces of its region, the input
 /// vertices collapsed into it (see the .cpp). The input's creases stay creases: a vertex on one
 /// collapses only along it, so the coarse creases follow the input's; its corners and the vertices

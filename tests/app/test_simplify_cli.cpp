@@ -63,6 +63,31 @@ TEST(SimplifyCli, FansQuadsIntoTrianglesAndSaysWhereItStopsShort) {
   if (kept > 4) EXPECT_NE(octa.output.find("(asked 4: no further collapse keeps"), std::string::npos) << octa.output;
 }
 
+// --error stops where a collapse would move the surface further than E of the diagonal: a larger E
+// keeps fewer vertices, and the input's rms distance to the result's faces is about E.
+TEST(SimplifyCli, ErrorStopsAtADistance) {
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample icosphere --size 5120 -o " + dir.file("ico.ply"))).exit_code, 0);
+  size_t previous = 2562;
+  for (const double error : {0.003, 0.01, 0.03}) {
+    const std::string out = dir.file("s" + std::to_string(error) + ".ply");
+    const auto r = run_command(
+        gpsurf("simplify " + dir.file("ico.ply") + " -o " + out + " --level 0 --error " + std::to_string(error)));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("(no further collapse keeps within --error"), std::string::npos) << r.output;
+    const size_t kept = read_mesh(out).n_vertices();
+    EXPECT_LT(kept, previous) << error;
+    previous = kept;
+    const auto d = run_command(gpsurf("compare " + dir.file("ico.ply") + " " + out + " --linear"));
+    ASSERT_EQ(d.exit_code, 0) << d.output;
+    const size_t at = d.output.find("\nrms ");
+    ASSERT_NE(at, std::string::npos) << d.output;
+    const double rms = std::stod(d.output.substr(d.output.find('(', at) + 1));
+    EXPECT_GT(rms, 0.3 * error) << d.output;
+    EXPECT_LT(rms, 1.5 * error) << d.output;
+  }
+}
+
 TEST(SimplifyCli, UsageAndRuntimeErrorsAreOneLine) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample icosphere --size 320 -o " + dir.file("ico.ply"))).exit_code, 0);
@@ -70,7 +95,8 @@ TEST(SimplifyCli, UsageAndRuntimeErrorsAreOneLine) {
   for (const std::string& args :
        {std::string(""), std::string("--vertices 3"), std::string("--ratio 0"), std::string("--ratio 1.5"),
         std::string("--vertices 10 --ratio 0.5"), std::string("--ratio 0.01"), std::string("--vertices 10 --level 65"),
-        std::string("--vertices 10 --bias 0")}) {
+        std::string("--vertices 10 --bias 0"), std::string("--error 0"), std::string("--error 2"),
+        std::string("--error nan")}) {
     const auto r = run_command(gpsurf(base + " " + args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
     EXPECT_EQ(lines(r.output), 1) << args << ": " << r.output;
