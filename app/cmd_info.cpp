@@ -155,7 +155,7 @@ void add_info_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("info", "Print counts, valences, creases and covariance ranges of a mesh");
   auto path = std::make_shared<std::string>();
   auto repair = std::make_shared<RepairArguments>();
-  cmd->add_option("file", *path, "mesh file (.ply, .obj, .off, .stl)")->required();
+  cmd->add_option("file", *path, "mesh file (.ply, .obj, .off, .stl, .gltf, .glb)")->required();
   add_repair_arguments(cmd, *repair);
   cmd->callback([path, repair] { print_info(*path, *repair); });
 }

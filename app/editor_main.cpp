@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   std::string scheme, loop_beta = "loop", up;
   CLI::App app{
       "gpsurf-editor: edit covariance meshes on their GPS limit surface (F1 in the window lists the bindings)"};
-  app.add_option("file", o.file, "mesh to open (.ply, .obj, .off, .stl); default: a built-in sample")
+  app.add_option("file", o.file, "mesh to open (.ply, .obj, .off, .stl, .gltf, .glb); default: a built-in sample")
       ->check(CLI::ExistingFile);
   app.add_option("--play", o.play, "replay recorded input (EVENTS.json), then exit")->check(CLI::ExistingFile);
   app.add_option("--record", o.record, "record the session's input to EVENTS.json (written on exit)");

@@ -19,7 +19,8 @@ struct ImportOptions {
 };
 
 /// Reads .ply (a covariance PLY keeps its covariances; a plain one gets them from `options`),
-/// .obj, .off, .stl (covariances from `options`), .gltf and .glb (its "_COVARIANCE", else from `options`). Throws gps::Error naming the file, also for a mesh
+/// .obj, .off, .stl (covariances from `options`), .gltf and .glb (its "_COVARIANCE", else from
+/// `options`). Throws gps::Error naming the file, also for a mesh
 /// without faces (every use of a mesh needs its surface). Without `options.repair`, a topology that
 /// repair would mend (not manifold, a face using a vertex twice or with all its corners at one point)
 /// is refused naming each class, its count, its first example as the file numbers it and what
