@@ -44,7 +44,8 @@ bool read_buffer_file(std::vector<unsigned char>* out, std::string* err, const s
     std::error_code error;
     const uintmax_t size = std::filesystem::file_size(path, error);
     if (!error && size > memory_limit_bytes() / 2) {
-      if (err) *err += escaped(path) + ": " + std::to_string(size) + " bytes, more than the memory budget lets a buffer hold";
+      if (err)
+        *err += escaped(path) + ": " + std::to_string(size) + " bytes, more than the memory budget lets a buffer hold";
       return false;
     }
     const std::string bytes = read_text_file(path);
@@ -93,7 +94,8 @@ AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, int type, 
   const size_t element = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType))) *
                          size_t(tinygltf::GetNumComponentsInType(uint32_t(a.type)));
   const size_t stride = view.byteStride != 0 ? view.byteStride : element;
-  if (stride < element) throw Error(name + ": its byte stride " + std::to_string(stride) + " is shorter than an element");
+  if (stride < element)
+    throw Error(name + ": its byte stride " + std::to_string(stride) + " is shorter than an element");
   AccessorBytes bytes{nullptr, a.count, stride, a.componentType};
   if (a.count == 0) return bytes;
   // The last element ends at offset + stride (count − 1) + element, compared without overflow.
@@ -127,7 +129,8 @@ uint32_t index_at(const AccessorBytes& b, size_t i) {
 Eigen::Matrix4d local_transform(const tinygltf::Node& node, const std::string& name) {
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   if (!node.matrix.empty()) {
-    if (node.matrix.size() != 16) throw Error(name + ": its matrix has " + std::to_string(node.matrix.size()) + " numbers, not 16");
+    if (node.matrix.size() != 16)
+      throw Error(name + ": its matrix has " + std::to_string(node.matrix.size()) + " numbers, not 16");
     for (int k = 0; k < 16; ++k) m(k % 4, k / 4) = node.matrix[size_t(k)];
     return m;
   }
@@ -137,7 +140,8 @@ Eigen::Matrix4d local_transform(const tinygltf::Node& node, const std::string& n
     return !v.empty();
   };
   Eigen::Affine3d t = Eigen::Affine3d::Identity();
-  if (sized(node.translation, 3, "translation")) t.translate(Vec3(node.translation[0], node.translation[1], node.translation[2]));
+  if (sized(node.translation, 3, "translation"))
+    t.translate(Vec3(node.translation[0], node.translation[1], node.translation[2]));
   if (sized(node.rotation, 4, "rotation")) {
     const Eigen::Quaterniond q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
     if (!(q.norm() > 0.0)) throw Error(name + ": its rotation is not a rotation (zero or not finite)");
@@ -218,7 +222,8 @@ struct PositionBitsHash {
   }
 };
 PositionBits bits_of(const Vec3& p) {
-  return {{std::bit_cast<uint64_t>(p.x() + 0.0), std::bit_cast<uint64_t>(p.y() + 0.0), std::bit_cast<uint64_t>(p.z() + 0.0)}};
+  return {{std::bit_cast<uint64_t>(p.x() + 0.0), std::bit_cast<uint64_t>(p.y() + 0.0),
+           std::bit_cast<uint64_t>(p.z() + 0.0)}};
 }
 
 // The file's model; tinygltf's warnings, a line each, in `warnings`.
@@ -263,8 +268,8 @@ void check_gltf_head(std::string_view head, size_t size) {
     std::memcpy(&length, head.data() + 8, 4);
     if (version != 2) throw Error("is a .glb of version " + std::to_string(version) + ", not 2");
     if (length != size)
-      throw Error("is a truncated or padded .glb (its header gives " + std::to_string(length) + " bytes, the file has " +
-                  std::to_string(size) + ")");
+      throw Error("is a truncated or padded .glb (its header gives " + std::to_string(length) +
+                  " bytes, the file has " + std::to_string(size) + ")");
     return;
   }
   const size_t start = head.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
@@ -301,7 +306,8 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
         positions += double(model.accessors[size_t(position->second)].count);
       if (p.indices >= 0 && size_t(p.indices) < model.accessors.size())
         corners += double(model.accessors[size_t(p.indices)].count);
-      else if (position != p.attributes.end() && position->second >= 0 && size_t(position->second) < model.accessors.size())
+      else if (position != p.attributes.end() && position->second >= 0 &&
+               size_t(position->second) < model.accessors.size())
         corners += double(model.accessors[size_t(position->second)].count);
     }
   if (primitives == 0)
@@ -311,9 +317,9 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
                       " triangle primitives have _COVARIANCE: all or none must"));
   has_covariances = with_covariances != 0;
   // Per position its vector, covariance and weld entry; per corner its index and a face offset.
-  check_output_size({positions, corners, positions * double(sizeof(Vec3) + (has_covariances ? sizeof(Mat3) : 0) + 48) +
-                                             corners * 16},
-                    escaped(source), "triangles", "the file is too large to read here");
+  check_output_size(
+      {positions, corners, positions * double(sizeof(Vec3) + (has_covariances ? sizeof(Mat3) : 0) + 48) + corners * 16},
+      escaped(source), "triangles", "the file is too large to read here");
 
   std::unordered_map<PositionBits, int, PositionBitsHash> welded;
   std::vector<int> vertex_of;  // the welded vertex of each position of the current primitive
@@ -329,14 +335,15 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
       const std::string where = named("mesh " + std::to_string(instance.mesh) + " primitive " + std::to_string(pi));
       const auto position = p.attributes.find("POSITION");
       if (position == p.attributes.end()) throw Error(where + ": has no POSITION attribute");
-      const AccessorBytes points = accessor_bytes(model, position->second, TINYGLTF_TYPE_VEC3, {kFloat}, where, "POSITION");
+      const AccessorBytes points =
+          accessor_bytes(model, position->second, TINYGLTF_TYPE_VEC3, {kFloat}, where, "POSITION");
       AccessorBytes gaussians;
       if (has_covariances)
         gaussians = accessor_bytes(model, p.attributes.at(kCovarianceAttribute), TINYGLTF_TYPE_MAT3, {kFloat}, where,
                                    kCovarianceAttribute);
       if (has_covariances && gaussians.count != points.count)
-        throw Error(where + ": " + std::to_string(gaussians.count) + " covariances for " + std::to_string(points.count) +
-                    " positions");
+        throw Error(where + ": " + std::to_string(gaussians.count) + " covariances for " +
+                    std::to_string(points.count) + " positions");
       vertex_of.assign(points.count, 0);
       for (size_t i = 0; i < points.count; ++i) {
         const Vec3 local(float_at(points, i, 0), float_at(points, i, 1), float_at(points, i, 2));
@@ -441,7 +448,8 @@ void write_gltf(std::ostream& out, const GltfTriangles& mesh, bool binary) {
   std::vector<float> positions, normals, covariances;
   positions.reserve(3 * n);
   normals.reserve(3 * n);
-  std::vector<double> low(3, std::numeric_limits<double>::infinity()), high(3, -std::numeric_limits<double>::infinity());
+  std::vector<double> low(3, std::numeric_limits<double>::infinity()),
+      high(3, -std::numeric_limits<double>::infinity());
   for (size_t i = 0; i < n; ++i)
     for (int k = 0; k < 3; ++k) {
       const float x = float(mesh.positions[i][k]);
@@ -467,15 +475,17 @@ void write_gltf(std::ostream& out, const GltfTriangles& mesh, bool binary) {
   model.buffers.resize(1);
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  primitive.attributes["POSITION"] = add_accessor(model, positions, {}, n, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
+  primitive.attributes["POSITION"] =
+      add_accessor(model, positions, {}, n, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
   model.accessors.back().minValues = low;
   model.accessors.back().maxValues = high;
-  primitive.attributes["NORMAL"] = add_accessor(model, normals, {}, n, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
+  primitive.attributes["NORMAL"] =
+      add_accessor(model, normals, {}, n, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
   if (!covariances.empty())
     primitive.attributes[kCovarianceAttribute] =
         add_accessor(model, covariances, {}, n, TINYGLTF_TYPE_MAT3, TINYGLTF_TARGET_ARRAY_BUFFER);
-  primitive.indices = add_accessor(model, {}, indices, indices.size(), TINYGLTF_TYPE_SCALAR,
-                                   TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  primitive.indices =
+      add_accessor(model, {}, indices, indices.size(), TINYGLTF_TYPE_SCALAR, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
   model.meshes.resize(1);
   model.meshes[0].primitives.push_back(primitive);
   model.nodes.resize(1);
@@ -484,7 +494,8 @@ void write_gltf(std::ostream& out, const GltfTriangles& mesh, bool binary) {
   model.scenes[0].nodes.push_back(0);
   model.defaultScene = 0;
   tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, out, !binary, binary)) throw Error("not written: tinygltf refused the mesh");
+  if (!writer.WriteGltfSceneToStream(&model, out, !binary, binary))
+    throw Error("not written: tinygltf refused the mesh");
 }
 
 }  // namespace gps

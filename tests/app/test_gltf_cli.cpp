@@ -34,8 +34,9 @@ TEST(GltfCli, InfoSubdivideAndTessellateReadAndWriteGlb) {
   ASSERT_EQ(tess.exit_code, 0) << tess.output;
   // The tessellation is watertight: read back, its welded vertices and triangles are the ones it reported.
   const CovarianceMesh t = read_mesh(dir.file("t.glb"));
-  EXPECT_NE(tess.output.find(std::to_string(t.n_vertices()) + " vertices, " + std::to_string(t.n_faces()) + " triangles"),
-            std::string::npos)
+  EXPECT_NE(
+      tess.output.find(std::to_string(t.n_vertices()) + " vertices, " + std::to_string(t.n_faces()) + " triangles"),
+      std::string::npos)
       << tess.output;
 }
 

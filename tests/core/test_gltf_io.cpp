@@ -31,7 +31,8 @@ std::multiset<std::vector<float>> triangles_by_position(const CovarianceMesh& m)
     for (size_t k = 1; k + 1 < corners.size(); ++k) {
       // Rotated so that the smallest corner leads: the same triangle, turning the same way, compares equal.
       std::vector<std::vector<float>> t;
-      for (const Vec3& p : {corners[0], corners[k], corners[k + 1]}) t.push_back({float(p.x()), float(p.y()), float(p.z())});
+      for (const Vec3& p : {corners[0], corners[k], corners[k + 1]})
+        t.push_back({float(p.x()), float(p.y()), float(p.z())});
       std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
       std::vector<float> flat;
       for (const auto& c : t) flat.insert(flat.end(), c.begin(), c.end());
@@ -183,9 +184,11 @@ HandMade split_cube() {
       }
       // Counter-clockwise seen from outside: (u, v, n) is right-handed for each axis triple above.
       if (side > 0)
-        indices.insert(indices.end(), {first, uint16_t(first + 1), uint16_t(first + 2), first, uint16_t(first + 2), uint16_t(first + 3)});
+        indices.insert(indices.end(), {first, uint16_t(first + 1), uint16_t(first + 2), first, uint16_t(first + 2),
+                                       uint16_t(first + 3)});
       else
-        indices.insert(indices.end(), {first, uint16_t(first + 2), uint16_t(first + 1), first, uint16_t(first + 3), uint16_t(first + 2)});
+        indices.insert(indices.end(), {first, uint16_t(first + 2), uint16_t(first + 1), first, uint16_t(first + 3),
+                                       uint16_t(first + 2)});
     }
   h.append(positions);
   const size_t index_offset = h.bin.size();
@@ -195,8 +198,12 @@ HandMade split_cube() {
           {{{"buffer", 0}, {"byteLength", positions.size() * 4}, {"target", 34962}},
            {{"buffer", 0}, {"byteOffset", index_offset}, {"byteLength", indices.size() * 2}, {"target", 34963}}}},
          {"accessors",
-          {{{"bufferView", 0}, {"componentType", 5126}, {"count", 24}, {"type", "VEC3"},
-            {"min", {-1, -1, -1}}, {"max", {1, 1, 1}}},
+          {{{"bufferView", 0},
+            {"componentType", 5126},
+            {"count", 24},
+            {"type", "VEC3"},
+            {"min", {-1, -1, -1}},
+            {"max", {1, 1, 1}}},
            {{"bufferView", 1}, {"componentType", 5123}, {"count", 36}, {"type", "SCALAR"}}}},
          {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"mode", 4}}}}}}},
          {"nodes", {{{"mesh", 0}}}},
@@ -233,7 +240,9 @@ TEST(GltfIo, NodeTransformsThroughTheHierarchyPlaceEachInstance) {
   HandMade h = split_cube();
   // Node 0: translation, rotation and scale, its child node 1 translated again; node 2 by a matrix.
   const Eigen::Quaterniond q(Eigen::AngleAxisd(0.5, Vec3(1, 2, 3).normalized()));
-  h.j["nodes"] = {{{"translation", {10, 0, 0}}, {"rotation", {q.x(), q.y(), q.z(), q.w()}}, {"scale", {2, 3, 4}},
+  h.j["nodes"] = {{{"translation", {10, 0, 0}},
+                   {"rotation", {q.x(), q.y(), q.z(), q.w()}},
+                   {"scale", {2, 3, 4}},
                    {"children", {1}}},
                   {{"translation", {0, 5, 0}}, {"mesh", 0}},
                   {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -20, 0, 0, 1}}, {"mesh", 0}}};
@@ -243,8 +252,7 @@ TEST(GltfIo, NodeTransformsThroughTheHierarchyPlaceEachInstance) {
   ASSERT_EQ(m.n_vertices(), 16u);
   EXPECT_EQ(m.n_faces(), 24u);
   // World = T R S of node 0 times node 1's translation (glTF 2.0 §3.5.3).
-  const Eigen::Affine3d node0 =
-      Eigen::Translation3d(10, 0, 0) * q * Eigen::Scaling(Vec3(2, 3, 4));
+  const Eigen::Affine3d node0 = Eigen::Translation3d(10, 0, 0) * q * Eigen::Scaling(Vec3(2, 3, 4));
   const Eigen::Affine3d first = node0 * Eigen::Translation3d(0, 5, 0);
   std::vector<Vec3> expected;
   for (int corner = 0; corner < 8; ++corner) {
@@ -294,8 +302,9 @@ TEST(GltfIo, StripAndFanPrimitivesGiveTheirTriangles) {
          {"accessors",
           {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
            {{"bufferView", 0}, {"byteOffset", 48}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}}}},
-         {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"mode", 6}},
-                                      {{"attributes", {{"POSITION", 1}}}, {"mode", 5}}}}}}}};
+         {"meshes",
+          {{{"primitives",
+             {{{"attributes", {{"POSITION", 0}}}, {"mode", 6}}, {{"attributes", {{"POSITION", 1}}}, {"mode", 5}}}}}}}};
   dir.write("strips.glb", h.glb());
   const CovarianceMesh m = read_mesh(dir.file("strips.glb"));
   EXPECT_EQ(m.n_vertices(), 8u);
@@ -336,7 +345,8 @@ TEST(GltfIo, MalformedFilesAreRefusedInOneLineNamingFileAndElement) {
 
   HandMade past = cube;
   past.j["accessors"][1]["count"] = 40;  // 80 bytes of a 72-byte view
-  expect_refused(dir.write("past.glb", past.glb()), "mesh 0 primitive 0: indices accessor 1 reads past its buffer view");
+  expect_refused(dir.write("past.glb", past.glb()),
+                 "mesh 0 primitive 0: indices accessor 1 reads past its buffer view");
 
   HandMade missing = cube;
   missing.j["meshes"][0]["primitives"][0]["indices"] = 7;
