@@ -20,7 +20,7 @@ void add_simplify_command(CLI::App& app) {
     size_t vertices = 0;
     double ratio = 0, bias = 0.05, max_normal_deviation = 45, error = 0;
     int level = 8;
-    bool ascii = false, quiet = false;
+    bool ascii = false, quiet = false, quads = false;
     RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
@@ -49,6 +49,9 @@ void add_simplify_command(CLI::App& app) {
                                 "tessellation level of the limit surface the report measures (0: no report; default 8, "
                                 "lower where that would make more than 2 million triangles)")
                     ->transform(integer_in(0, 64));
+  cmd->add_flag("--quads", args->quads,
+                "pair the result's triangles into quads where they make nearly square, flat ones (a quad-dominant mesh "
+                "for Catmull-Clark modelling)");
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   cmd->add_flag("-q,--quiet", args->quiet, "print only errors (no report, no progress bar)");
   add_repair_arguments(cmd, args->repair);
@@ -63,6 +66,7 @@ void add_simplify_command(CLI::App& app) {
     options.bias = args->bias;
     options.max_normal_deviation_degrees = args->max_normal_deviation;
     options.max_error = args->error;
+    options.quads = args->quads;
     // --error alone: as few vertices as the error allows.
     options.target_vertices = vertices->count() > 0 ? args->vertices
                               : ratio->count() > 0  ? size_t(std::llround(args->ratio * double(input.n_vertices())))
@@ -85,6 +89,8 @@ void add_simplify_command(CLI::App& app) {
     else if (s.mesh.n_vertices() > options.target_vertices)
       std::cout << " (asked " << options.target_vertices
                 << ": no further collapse keeps the topology, manifoldness and face orientations)";
+    if (args->quads)
+      std::cout << ", " << s.quads << " pairs of them joined into quads (" << s.mesh.n_faces() << " faces)";
     std::cout << "\nwrote " << args->output << "\n";
     if (args->level == 0) return;
     const LimitTriangles limit = naming_input(args->output, [&] {

@@ -10,6 +10,7 @@
 #include <OpenMesh/Core/Geometry/QuadricT.hh>
 
 #include "core/fitting/halfedge_collapse.h"
+#include "core/fitting/triangle_pairing.h"
 #include "core/support/error.h"
 
 namespace gps {
@@ -218,6 +219,7 @@ SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions&
     if (const double corner = input.sharpness.corner(t.property(region, v).vertex); corner > 0)
       result.mesh.sharpness.set_corner(v.idx(), corner, int(t.n_vertices()));
   result.mesh.sharpness.normalise();
+  if (options.quads) result.quads = pair_triangles(result.mesh);
   return result;
 }
 

@@ -16,6 +16,9 @@ struct SimplifyOptions {
   /// kept, as the rms distance of their planes (the region's quadric error over three times its area:
   /// each face's plane is in the quadrics of its three corners), over the input's bounding-box diagonal.
   double max_error = 0;
+  /// Pairs the result's triangles into quads where they make nearly square, flat ones
+  /// (core/fitting/triangle_pairing.h): a quad-dominant mesh for Catmull-Clark modelling.
+  bool quads = false;
   ProgressReport progress;                   // the fraction of the collapses asked for that are done
 };
 
@@ -23,6 +26,7 @@ struct SimplifiedMesh {
   CovarianceMesh mesh;
   size_t input_vertices = 0, input_triangles = 0;
   bool triangulated = false;  // whether the input had faces of more than 3 sides, fanned into triangles
+  size_t quads = 0;           // with options.quads, the quads made of pairs of triangles
 };
 
 /// Collapses edges of `input` (faces of more than three sides fanned into triangles first) in order
