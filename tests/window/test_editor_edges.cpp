@@ -2,14 +2,18 @@
 // Shift+click select two opposite edges of the top face, and Shift+E creases those two only, not the
 // face's other two sides that join their ends (the trap of a vertex selection); back in vertex mode
 // (1) the same four vertices crease all four sides, as before. Select sharp edges (Ctrl+Shift+E,
-// 30°) takes the cube's 12 edges, which Shift+E then creases. Screenshots kept in
+// 30°) takes the cube's 12 edges, which Shift+E then creases. Alt+click selects a loop's edges: two
+// neighbouring rows of a grid crease without the rungs between them. Screenshots kept in
 // build/test-artefacts/EditorEdges/.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/sharpness.h"
 #include "core/modelling/samples.h"
+#include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
@@ -84,6 +88,25 @@ TEST_F(EditorEdges, SelectSharpEdgesTakesTheCubesTwelveEdges) {
                     .is_valid())
         << c.a << "-" << c.b;
   }
+}
+
+// Alt+click in edge mode selects an edge loop's edges: two neighbouring rows of a 4 × 4 grid (vertex
+// j·5 + i), Shift+Alt+click adding the second, crease as their 8 edges, not the 5 rungs between them
+// (the trap of an inset's rim creased with its diagonals).
+TEST_F(EditorEdges, AltClickSelectsTheLoopsEdgesWhichShiftECreases) {
+  write_mesh(dir_.file("original.ply"), test::grid_mesh(4, 4));
+  original_ = read_mesh(dir_.file("original.ply"));
+  view_ = editor_view(original_);
+  Events loops;  // row 1 through its edge 6–7, then row 2 through 13–14, away from the gizmo on 6 or 7
+  loops.key("2").wait().click(along(6, 7, 0.5), "alt").wait().click(along(13, 14, 0.5), "shift+alt").wait();
+  Events shown = loops;
+  play(shown.wait(3), "grid_rows_selected.png");
+  loops.key("shift+e").wait().text("10").wait().key("enter").wait(3);
+  std::vector<EdgeCrease> rows;
+  for (const int j : {1, 2})
+    for (int i = 0; i < 4; ++i) rows.push_back({5 * j + i, 5 * j + i + 1, kInf});
+  std::sort(rows.begin(), rows.end(), [](const EdgeCrease& x, const EdgeCrease& y) { return x.a < y.a; });
+  EXPECT_EQ(play(loops, "grid_rows_creased.png").sharpness.creases, rows);
 }
 
 }  // namespace
