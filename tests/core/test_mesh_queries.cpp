@@ -59,7 +59,7 @@ TEST(MeshQueries, EdgeLoopEdgesAreTheEdgesWalked) {
   EXPECT_EQ(edge_loop_edges(grid, 13, 12), (E{{10, 11}, {11, 12}, {12, 13}, {13, 14}}));
   EXPECT_EQ(edge_loop_edges(grid, 7, 12), (E{{2, 7}, {7, 12}, {12, 17}, {17, 22}}));
   EXPECT_EQ(edge_loop_edges(grid, 0, 1).size(), 16u);  // the boundary
-  const CovarianceMesh torus = make_sample("torus");  // 24 × 12, vertex i·12 + j
+  const CovarianceMesh torus = make_sample("torus");   // 24 × 12, vertex i·12 + j
   E ring;
   for (int j = 0; j < 12; ++j) ring.push_back({std::min(j, (j + 1) % 12), std::max(j, (j + 1) % 12)});
   std::sort(ring.begin(), ring.end());
@@ -68,7 +68,7 @@ TEST(MeshQueries, EdgeLoopEdgesAreTheEdgesWalked) {
   EXPECT_EQ(edge_loop_edges(cube, 0, 1), (E{{0, 1}, {0, 4}, {1, 5}, {4, 5}}));  // face {0, 1, 5, 4}
   const CovarianceMesh cylinder = make_sample("cylinder");
   EXPECT_EQ(edge_loop_edges(cylinder, 8, 16), (E{{0, 8}, {8, 16}}));  // stops at the caps' corners
-  EXPECT_EQ(edge_loop_edges(cylinder, 1, 0).size(), 8u);               // a cap's rim
+  EXPECT_EQ(edge_loop_edges(cylinder, 1, 0).size(), 8u);              // a cap's rim
   EXPECT_NE(error_of([&] { edge_loop_edges(cube, 0, 6); }).find("edge 0–6 is not in the mesh"), std::string::npos);
 }
 

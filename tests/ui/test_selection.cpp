@@ -104,7 +104,7 @@ TEST(Selection, EdgeModeSelectsEdgesNotTheEdgesBetweenTheirEnds) {
   EXPECT_TRUE(s.holds_edges());
   EXPECT_EQ(s.edges(grid), (Edges{{6, 7}, {11, 12}}));
   EXPECT_EQ(s.vertices(), (std::vector<int>{6, 7, 11, 12}));  // their ends, for G / S / R
-  EXPECT_EQ(edges_within(grid, s.vertices()).size(), 4u);    // what the ends alone would select
+  EXPECT_EQ(edges_within(grid, s.vertices()).size(), 4u);     // what the ends alone would select
   EXPECT_EQ(s.active(), 12);
   s.click_edges(grid, {{6, 7}}, 6, true);  // shift-click on a selected edge removes it
   EXPECT_EQ(s.edges(grid), (Edges{{11, 12}}));
@@ -124,7 +124,7 @@ TEST(Selection, EdgeLoopsTogglesAsAGroup) {
   const Edges row = edge_loop_edges(grid, 11, 12);  // the row 10 … 14
   s.click_edges(grid, row, 11, false);
   s.click_edges(grid, edge_loop_edges(grid, 16, 17), 16, true);  // and the row above
-  EXPECT_EQ(s.edges(grid).size(), 8u);  // not the 5 edges between the rows
+  EXPECT_EQ(s.edges(grid).size(), 8u);                           // not the 5 edges between the rows
   EXPECT_EQ(s.vertices().size(), 10u);
   s.click_edges(grid, row, 11, true);  // all of it selected: shift removes it
   EXPECT_EQ(s.edges(grid), edge_loop_edges(grid, 16, 17));

@@ -84,8 +84,8 @@ TEST_F(EditorEdges, SelectSharpEdgesTakesTheCubesTwelveEdges) {
   ASSERT_EQ(creased.sharpness.creases.size(), 12u);
   for (const EdgeCrease& c : creased.sharpness.creases) {
     EXPECT_EQ(c.sharpness, kInf) << c.a << "-" << c.b;
-    EXPECT_TRUE(original_.mesh.find_halfedge(original_.mesh.vertex_handle(c.a), original_.mesh.vertex_handle(c.b))
-                    .is_valid())
+    EXPECT_TRUE(
+        original_.mesh.find_halfedge(original_.mesh.vertex_handle(c.a), original_.mesh.vertex_handle(c.b)).is_valid())
         << c.a << "-" << c.b;
   }
 }

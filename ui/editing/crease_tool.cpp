@@ -97,8 +97,8 @@ std::vector<int> with_mirrored_vertices(const CovarianceMesh& mesh, const std::v
   return out;
 }
 
-Modelled sharpened_selection(const CovarianceMesh& mesh, const Selection& selection, bool corners,
-                             double sharpness, const ReachOptions& reach) {
+Modelled sharpened_selection(const CovarianceMesh& mesh, const Selection& selection, bool corners, double sharpness,
+                             const ReachOptions& reach) {
   if (corners) return set_corner(mesh, with_mirrored_vertices(mesh, selection.vertices(), reach), sharpness);
   return set_crease(mesh, with_mirrored_edges(mesh, selection.edges(mesh), reach), sharpness);
 }

@@ -46,7 +46,7 @@ std::vector<int> with_mirrored_vertices(const CovarianceMesh& mesh, const std::v
 /// The mesh with the selected edges (Selection::edges) at `sharpness`, or with `corners` the
 /// selected vertices' corner sharpness, their mirror images too where mirror editing is on
 /// (core/modelling/crease_edges.h's set_crease and set_corner, which refuse as they do).
-Modelled sharpened_selection(const CovarianceMesh& mesh, const Selection& selection, bool corners,
-                             double sharpness, const ReachOptions& reach);
+Modelled sharpened_selection(const CovarianceMesh& mesh, const Selection& selection, bool corners, double sharpness,
+                             const ReachOptions& reach);
 
 }  // namespace gps

@@ -134,8 +134,7 @@ void Selection::hold_edges(const CovarianceMesh& mesh) {
   if (!holds_edges_) set_edges(edges_within(mesh, vertices_));
 }
 
-void Selection::click_edges(const CovarianceMesh& mesh, const std::vector<EdgeEnds>& group, int active,
-                            bool toggle) {
+void Selection::click_edges(const CovarianceMesh& mesh, const std::vector<EdgeEnds>& group, int active, bool toggle) {
   if (group.empty()) {
     if (!toggle) clear();
     return;

@@ -83,8 +83,8 @@ private:
   void click_select(glm::vec2 pixel, bool toggle);
   void loop_select(glm::vec2 pixel, bool toggle);
   void box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract);
-  void select_sharp_edges();       // adds the edges folded by more than sharp_edge_angle_, in edge mode
-  void draw_sharp_edges_items();   // the Select menu's angle field and its item
+  void select_sharp_edges();      // adds the edges folded by more than sharp_edge_angle_, in edge mode
+  void draw_sharp_edges_items();  // the Select menu's angle field and its item
   std::vector<int> vertices_under(glm::vec2 pixel) const;  // the element under the cursor, in the mode
   std::string selection_summary() const;                   // for the status bar
   // Commands (editor_commands.cpp).
@@ -207,9 +207,9 @@ private:
   std::optional<ScreenBox> gizmo_box_;  // where the gizmo was drawn this frame (the statistics keep clear of it)
   std::vector<int> shown_ellipsoids_;   // the vertices whose ellipsoids are drawn, when not all
   SelectMode select_mode_ = SelectMode::vertex;
-  bool select_through_ = false;  // box selection takes hidden vertices too (X-ray)
+  bool select_through_ = false;     // box selection takes hidden vertices too (X-ray)
   double sharp_edge_angle_ = 30.0;  // degrees: Select sharp edges takes the edges folded by more (Blender's default)
-  bool alt_press_ = false;       // the left press had Alt: a click selects a loop, a drag orbits
+  bool alt_press_ = false;          // the left press had Alt: a click selects a loop, a drag orbits
 
   // Modelling: the modal tool running (none: nullptr), the pivot of G / S / R, and the mesh a tool
   // shows in place of the document's (a bevel's or a crease's preview; none: nullptr) with its selection.

@@ -29,8 +29,7 @@ bool faces_camera(const PolyMesh& m, OpenMesh::SmartFaceHandle f, const std::vec
 }  // namespace
 
 void draw_selection_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMesh& mesh,
-                            const std::vector<int>& selected, const std::vector<EdgeEnds>& edges,
-                            SelectMode mode) {
+                            const std::vector<int>& selected, const std::vector<EdgeEnds>& edges, SelectMode mode) {
   if (mode == SelectMode::vertex || selected.empty()) return;
   const PolyMesh& m = mesh.mesh;
   std::vector<std::optional<ImVec2>> pixel(mesh.n_vertices());

@@ -16,7 +16,6 @@ namespace gps {
 /// camera is drawn: an edge of at least one camera-facing face, a camera-facing face (a boundary
 /// edge always). Nothing in vertex mode (the handle overlay dots the selected vertices).
 void draw_selection_overlay(ImDrawList& draw, const Viewport& view, const CovarianceMesh& mesh,
-                            const std::vector<int>& selected, const std::vector<EdgeEnds>& edges,
-                            SelectMode mode);
+                            const std::vector<int>& selected, const std::vector<EdgeEnds>& edges, SelectMode mode);
 
 }  // namespace gps
