@@ -18,12 +18,6 @@ void check_edge(const MeshArrays& arrays, const DirectedEdges& edges, int a, int
   if (!has_edge(edges, a, b)) throw Error(edge_name(a, b) + " is not in the mesh");
 }
 
-// The face holding the directed edge u → v and the corner of u in it, or (−1, −1).
-std::pair<int, int> face_of(const DirectedEdges& edges, int u, int v) {
-  const auto it = edges.find(directed_key(u, v));
-  return it == edges.end() ? std::pair<int, int>(-1, -1) : it->second;
-}
-
 }  // namespace
 
 Modelled split_edge(const CovarianceMesh& mesh, int a, int b, double t) {
@@ -37,7 +31,7 @@ Modelled split_edge(const CovarianceMesh& mesh, int a, int b, double t) {
   }
   const int m = arrays.add_vertex(blend_gaussians(arrays, {{a, 1 - t}, {b, t}}));
   split_crease(arrays, a, b, m);
-  std::vector<std::pair<int, int>> beside = {face_of(edges, a, b), face_of(edges, b, a)};
+  std::vector<std::pair<int, int>> beside = {face_of_edge(edges, a, b), face_of_edge(edges, b, a)};
   std::sort(beside.begin(), beside.end());
   int added = 0;
   for (const auto& [f, k] : beside) {
@@ -65,8 +59,8 @@ Modelled flip_edge(const CovarianceMesh& mesh, int a, int b) {
   const DirectedEdges edges = directed_edges(arrays);
   check_edge(arrays, edges, a, b);
   if (is_boundary_edge(edges, a, b)) throw Error(edge_name(a, b) + " is on the boundary");
-  const auto [f, k] = face_of(edges, a, b);  // [a, b, c]
-  const auto [g, l] = face_of(edges, b, a);  // [b, a, d]
+  const auto [f, k] = face_of_edge(edges, a, b);  // [a, b, c]
+  const auto [g, l] = face_of_edge(edges, b, a);  // [b, a, d]
   for (const int face : {std::min(f, g), std::max(f, g)})
     if (arrays.faces[size_t(face)].size() != 3)
       throw Error("face " + std::to_string(face) + " beside " + edge_name(a, b) + " is not a triangle");

@@ -56,11 +56,6 @@ void walk(const MeshArrays& arrays, const DirectedEdges& edges, std::array<int, 
   }
 }
 
-int face_of(const DirectedEdges& edges, int a, int b) {
-  const auto it = edges.find(directed_key(a, b));
-  return it == edges.end() ? -1 : it->second.first;
-}
-
 Ring ring_of(const MeshArrays& arrays, const DirectedEdges& edges, int a, int b) {
   check_vertex(arrays, a);
   check_vertex(arrays, b);
@@ -68,7 +63,7 @@ Ring ring_of(const MeshArrays& arrays, const DirectedEdges& edges, int a, int b)
   Ring r;
   std::vector<std::array<int, 2>> forward_edges, backward_edges;
   std::vector<int> forward_quads, backward_quads;
-  walk(arrays, edges, {a, b}, face_of(edges, a, b), forward_edges, forward_quads, r.ring.closed);
+  walk(arrays, edges, {a, b}, face_of_edge(edges, a, b).first, forward_edges, forward_quads, r.ring.closed);
   if (r.ring.closed) {
     r.ring.edges.push_back({a, b});
     r.ring.edges.insert(r.ring.edges.end(), forward_edges.begin(), forward_edges.end());
@@ -76,7 +71,7 @@ Ring ring_of(const MeshArrays& arrays, const DirectedEdges& edges, int a, int b)
     return r;
   }
   bool closed_backward = false;
-  walk(arrays, edges, {a, b}, face_of(edges, b, a), backward_edges, backward_quads, closed_backward);
+  walk(arrays, edges, {a, b}, face_of_edge(edges, b, a).first, backward_edges, backward_quads, closed_backward);
   r.ring.edges.assign(backward_edges.rbegin(), backward_edges.rend());
   r.ring.edges.push_back({a, b});
   r.ring.edges.insert(r.ring.edges.end(), forward_edges.begin(), forward_edges.end());
@@ -135,7 +130,7 @@ Modelled loop_cut(const CovarianceMesh& mesh, int a, int b, int cuts, double sli
     const int f = r.quads[i];
     const std::vector<int>& p = rails[i];
     const std::vector<int>& q = rails[(i + 1) % rails.size()];
-    const bool forward = face_of(edges, p.front(), p.back()) == f;
+    const bool forward = face_of_edge(edges, p.front(), p.back()).first == f;
     std::vector<std::vector<int>> strips;
     for (int j = 0; j <= cuts; ++j)
       strips.push_back(forward ? std::vector<int>{p[size_t(j)], p[size_t(j) + 1], q[size_t(j) + 1], q[size_t(j)]}

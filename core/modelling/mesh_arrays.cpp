@@ -171,6 +171,11 @@ DirectedEdges directed_edges(const MeshArrays& a) {
   return edges;
 }
 
+std::pair<int, int> face_of_edge(const DirectedEdges& edges, int u, int v) {
+  const auto it = edges.find(directed_key(u, v));
+  return it == edges.end() ? std::pair<int, int>(-1, -1) : it->second;
+}
+
 bool has_edge(const DirectedEdges& e, int a, int b) {
   return e.count(directed_key(a, b)) != 0 || e.count(directed_key(b, a)) != 0;
 }

@@ -100,6 +100,8 @@ DirectedEdges directed_edges(const MeshArrays& arrays);
 /// Whether {a, b} is an edge, and whether it is a boundary edge (one face only).
 bool has_edge(const DirectedEdges& edges, int a, int b);
 bool is_boundary_edge(const DirectedEdges& edges, int a, int b);
+/// The face holding the directed edge u → v and the corner of u in it, or (−1, −1).
+std::pair<int, int> face_of_edge(const DirectedEdges& edges, int u, int v);
 
 /// Throws a gps::Error for an index outside the mesh ("vertex 12 is not in the mesh (8 vertices)").
 void check_vertex(const MeshArrays& arrays, int v);
