@@ -30,8 +30,9 @@ void add_compare_command(CLI::App& app) {
       ->required();
   cmd->add_option("B", args->second, "mesh whose limit surface they are measured to")->required();
   cmd->add_flag("--both", args->both, "also B's points to A's limit surface");
-  auto* samples = cmd->add_flag("--samples", args->samples,
-                "measure the points of the measured mesh's limit surface at --level instead of its vertices");
+  auto* samples =
+      cmd->add_flag("--samples", args->samples,
+                    "measure the points of the measured mesh's limit surface at --level instead of its vertices");
   cmd->add_flag("--linear", args->linear,
                 "measure to the faces themselves (the piecewise-linear control mesh) instead of the limit surface")
       ->excludes(samples);
@@ -66,9 +67,8 @@ void add_compare_command(CLI::App& app) {
     };
     const auto report = [&](const std::string& from, const TriangleMesh& points, const std::string& to,
                             const LimitTriangles& limit) {
-      std::cout << escaped(from) << " (" << points.positions.size()
-                << (args->samples ? " limit samples" : " vertices") << ") to "
-                << (args->linear ? "the faces of " : "the limit surface of ") << escaped(to);
+      std::cout << escaped(from) << " (" << points.positions.size() << (args->samples ? " limit samples" : " vertices")
+                << ") to " << (args->linear ? "the faces of " : "the limit surface of ") << escaped(to);
       if (!args->linear) std::cout << " (level " << limit.level << ")";
       const SurfaceDistance surface(limit.triangles);
       const double diagonal = bounding_box_diagonal(points.positions);

@@ -10,7 +10,8 @@ TriangleMesh face_triangles(const CovarianceMesh& mesh) {
   for (const auto face : mesh.mesh.faces()) {
     std::vector<int> corners;
     for (const auto v : mesh.mesh.fv_range(face)) corners.push_back(v.idx());
-    for (size_t k = 1; k + 1 < corners.size(); ++k) result.triangles.push_back({corners[0], corners[k], corners[k + 1]});
+    for (size_t k = 1; k + 1 < corners.size(); ++k)
+      result.triangles.push_back({corners[0], corners[k], corners[k + 1]});
   }
   fill_missing_normals(result);
   return result;

@@ -11,14 +11,12 @@ namespace gps {
 
 namespace {
 
-double degrees_between(const Vec3& a, const Vec3& b) {
-  return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
-}
+double degrees_between(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI; }
 
 struct Candidate {
   double score;
-  int first, second;          // the two triangles, first < second
-  std::array<int, 4> corners; // the quad, in the triangles' orientation
+  int first, second;           // the two triangles, first < second
+  std::array<int, 4> corners;  // the quad, in the triangles' orientation
 };
 
 }  // namespace

@@ -60,8 +60,8 @@ private:
 };
 
 // Joins the `distinct` positions (ascending vertices) lying within the tolerance of one another.
-void weld_within_tolerance(const std::vector<Vec3>& p, const std::vector<int>& distinct, const Vec3& lo, double tolerance,
-                           LowestRootSets& sets) {
+void weld_within_tolerance(const std::vector<Vec3>& p, const std::vector<int>& distinct, const Vec3& lo,
+                           double tolerance, LowestRootSets& sets) {
   const double cell = 0.5 * tolerance, block = 4 * tolerance;
   const double reach = 0.25 + 1e-6;  // the tolerance in blocks, rounding allowed for
   const double tolerance2 = tolerance * tolerance;

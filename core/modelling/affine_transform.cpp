@@ -81,8 +81,7 @@ std::vector<int> transform_vertices_in_place(CovarianceMesh& mesh, const std::ve
     const CarriedGaussian g = carried_gaussian(map, {mesh.mean(size_t(v)), mesh.covariances[size_t(v)]});
     std::string why = position_problem(g.gaussian.mean);
     if (why.empty()) why = covariance_problem(g.gaussian.covariance);
-    if (!why.empty())
-      throw Error("the result would not be a valid mesh: vertex " + std::to_string(v) + " " + why);
+    if (!why.empty()) throw Error("the result would not be a valid mesh: vertex " + std::to_string(v) + " " + why);
     carried[i] = g.gaussian;
     clamped += g.clamped;
   }

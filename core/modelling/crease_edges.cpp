@@ -75,7 +75,8 @@ std::vector<int> set_corner_in_place(CovarianceMesh& mesh, const std::vector<int
   check_sharpness(sharpness);
   std::vector<int> selection = sorted_vertices(mesh.n_vertices(), vertices);
   for (const int v : selection) mesh.sharpness.set_corner(v, sharpness, int(mesh.n_vertices()));
-  summary = "set the corner of " + count_of(selection.size(), "vertex", "vertices") + " to " + sharpness_words(sharpness);
+  summary =
+      "set the corner of " + count_of(selection.size(), "vertex", "vertices") + " to " + sharpness_words(sharpness);
   return selection;
 }
 

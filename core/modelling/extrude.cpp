@@ -19,8 +19,6 @@ namespace {
 
 const char* const kClosedPart = "extruding every face of a closed part would leave nothing to join";
 
-
-
 void check_offset(const Vec3& offset) {
   if (!offset.allFinite()) {
     std::ostringstream s;

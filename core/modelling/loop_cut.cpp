@@ -85,7 +85,6 @@ double cut_fraction(int k, int cuts, double slide) {
   return slide <= 0 ? s * (1 + slide) : s + slide * (1 - s);
 }
 
-
 }  // namespace
 
 EdgeRing edge_ring(const CovarianceMesh& mesh, int a, int b) {

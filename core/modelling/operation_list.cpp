@@ -419,7 +419,9 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
     }
     const Edges edges = f.edges("edges");
     const double sharpness = f.number("sharpness");
-    in_place = [=](CovarianceMesh& m, std::string& summary) { return set_crease_in_place(m, edges, sharpness, summary); };
+    in_place = [=](CovarianceMesh& m, std::string& summary) {
+      return set_crease_in_place(m, edges, sharpness, summary);
+    };
     return nullptr;
   }
   if (op == "bisect") return bisect_step(f);
@@ -454,9 +456,9 @@ std::string prefixed(const std::string& source, const std::string& message) {
 }  // namespace
 
 std::vector<std::string> operation_names() {
-  return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude", "inset", "delete", "dissolve", "merge",
-          "weld",      "fill",     "bridge",     "transform", "add",     "set",   "crease", "corner", "slide",
-          "bevel", "bisect", "duplicate", "spin", "mirror"};
+  return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude",   "inset", "delete", "dissolve",
+          "merge",     "weld",     "fill",       "bridge",    "transform", "add",   "set",    "crease",
+          "corner",    "slide",    "bevel",      "bisect",    "duplicate", "spin",  "mirror"};
 }
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {

@@ -156,8 +156,8 @@ TEST(OperationList, StepsInPlaceAreTheCallsTheyName) {
   EXPECT_EQ(scripted.selection, m.selection);
   EXPECT_EQ(summaries, direct_summaries);
   EXPECT_EQ(error_of([&] {
-              OperationList::parse(R"([{"op":"set","vertices":[1],"scale":2},{"op":"crease","edges":[[0,6]],"sharpness":1}])",
-                                   "f")
+              OperationList::parse(
+                  R"([{"op":"set","vertices":[1],"scale":2},{"op":"crease","edges":[[0,6]],"sharpness":1}])", "f")
                   .apply(cube);
             }),
             "f: ops[1] (crease): edge 0–6 is not in the mesh");
