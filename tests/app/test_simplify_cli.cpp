@@ -88,6 +88,24 @@ TEST(SimplifyCli, ErrorStopsAtADistance) {
   }
 }
 
+// --quads pairs the result's triangles into quads: the report counts them and the file has them.
+TEST(SimplifyCli, QuadsPairTheTriangles) {
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample icosphere --size 5120 -o " + dir.file("ico.ply"))).exit_code, 0);
+  const auto r = run_command(
+      gpsurf("simplify " + dir.file("ico.ply") + " -o " + dir.file("q.ply") + " --vertices 300 --quads --level 0"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const CovarianceMesh m = read_mesh(dir.file("q.ply"));
+  size_t quads = 0;
+  for (const auto f : m.mesh.faces()) quads += m.mesh.valence(f) == 4;
+  EXPECT_GT(quads, 0u);
+  EXPECT_NE(r.output.find(", " + std::to_string(quads) + " pairs of them joined into quads (" +
+                          std::to_string(m.n_faces()) + " faces)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(m.n_vertices(), 300u);
+}
+
 TEST(SimplifyCli, UsageAndRuntimeErrorsAreOneLine) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample icosphere --size 320 -o " + dir.file("ico.ply"))).exit_code, 0);
