@@ -24,8 +24,6 @@ public:
   static std::unique_ptr<ModalTool> start(ToolContext& ctx, bool vertices);
 
   ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
-  std::string status() const override { return status_; }
-  bool error() const override { return error_; }
 
   /// The width after the cursor moved from `start` to `cursor`, the selection's centre at pixel
   /// `centre`, `world_per_pixel` there: the gain in distance from the centre, never below 0.
@@ -46,8 +44,7 @@ private:
   BevelOptions options_;
   TypedNumber typed_;
   std::optional<Modelled> result_;  // the bevel shown (nullopt: the mesh before)
-  std::string status_, refusal_;    // refusal_: why the values shown cannot bevel
-  bool error_ = false;
+  std::string refusal_;             // refusal_: why the values shown cannot bevel
 };
 
 }  // namespace gps

@@ -18,8 +18,6 @@ public:
   static std::unique_ptr<ModalTool> start(ToolContext& ctx);
 
   ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
-  std::string status() const override { return status_; }
-  bool error() const override { return error_; }
 
 private:
   InsetTool() = default;
@@ -33,8 +31,7 @@ private:
   glm::vec2 start_cursor_{0.0f};
   TypedNumber typed_;
   bool applied_ = false;
-  std::string summary_, status_;
-  bool error_ = false;
+  std::string summary_;
 };
 
 }  // namespace gps

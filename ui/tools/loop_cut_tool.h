@@ -21,7 +21,6 @@ public:
   explicit LoopCutTool(ToolContext& ctx);
 
   ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
-  std::string status() const override { return status_; }
   void draw_overlay(ImDrawList& draw, const ToolContext& ctx) const override;
 
 private:
@@ -36,7 +35,6 @@ private:
   std::shared_ptr<const CovarianceMesh> base_;  // the mesh before the cut
   std::string summary_;                         // the cut's
   glm::vec2 start_cursor_{0.0f};
-  std::string status_;
 };
 
 }  // namespace gps

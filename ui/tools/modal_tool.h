@@ -78,13 +78,17 @@ public:
   /// Takes one event (ctx.cursor already where it leaves the pointer).
   virtual ToolResult handle(const InputEvent& event, ToolContext& ctx) = 0;
   /// What the tool is doing, for the status bar; an error where `error()`.
-  virtual std::string status() const = 0;
-  virtual bool error() const { return false; }
+  const std::string& status() const { return status_; }
+  bool error() const { return error_; }
   /// Draws over the surface (a loop cut's ring); nothing by default.
   virtual void draw_overlay(ImDrawList& draw, const ToolContext& ctx) const {
     (void)draw;
     (void)ctx;
   }
+
+protected:
+  std::string status_;  // what status() shows, kept by each tool as it goes
+  bool error_ = false;
 };
 
 /// Enter (either one) or a left click: what confirms a tool.

@@ -23,8 +23,6 @@ public:
   static std::unique_ptr<ModalTool> start(ToolContext& ctx, bool corners);
 
   ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
-  std::string status() const override { return status_; }
-  bool error() const override { return error_; }
 
 private:
   SharpnessTool() = default;
@@ -41,8 +39,6 @@ private:
   std::shared_ptr<const CovarianceMesh> shown_;  // the mesh the surface was planned for
   // The plans of the document's topology, re-planned for each value; made at the first change.
   std::unique_ptr<SharpnessReplanner> replanner_;
-  std::string status_;
-  bool error_ = false;
 };
 
 }  // namespace gps

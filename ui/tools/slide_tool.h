@@ -22,8 +22,6 @@ public:
   static std::unique_ptr<ModalTool> start(ToolContext& ctx);
 
   ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
-  std::string status() const override { return status_; }
-  bool error() const override { return error_; }
 
 private:
   SlideTool() = default;
@@ -41,8 +39,7 @@ private:
   glm::vec2 start_cursor_{0.0f};
   TypedNumber typed_;
   double factor_ = 0.0;
-  std::string status_, refusal_;  // refusal_: why the value shown cannot slide
-  bool error_ = false;
+  std::string refusal_;  // refusal_: why the value shown cannot slide
 };
 
 }  // namespace gps

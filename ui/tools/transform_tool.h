@@ -25,7 +25,6 @@ public:
   static std::unique_ptr<ModalTool> extrude(ToolContext& ctx);
 
   ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
-  std::string status() const override { return status_; }
 
 private:
   TransformTool(ToolContext& ctx, const Vec3& normal, std::string extrusion_summary);
@@ -37,7 +36,6 @@ private:
   TypedNumber typed_;
   bool folds_ = false;  // the move after an extrusion: confirmed into the extrusion's undo step
   std::string extrusion_summary_;
-  std::string status_;
 };
 
 }  // namespace gps
