@@ -13,7 +13,19 @@ namespace gps {
 /// of itself and its image (symmetric about the plane, so that the surface is). The seam must then be
 /// manifold: refuses an edge on the plane with faces on both sides, a face on the plane, and a vertex
 /// on the plane beside no boundary edge along it (the halves would meet at a point). Selection: the
-/// copies.
+/// copies. The vertices and faces keep their indices (0 … n−1) and the copies follow in vertex order,
+/// so that an edit of the mesh can be shown on the result by index (mirror_images, update_mirrored).
 Modelled mirror(const CovarianceMesh& mesh, int axis, const Vec3& center, bool merge);
+
+/// The index each vertex's image has in mirror()'s result: the vertex itself where it is merged on
+/// the plane, else n + its rank among the vertices not merged.
+std::vector<int> mirror_images(const CovarianceMesh& mesh, int axis, const Vec3& center, bool merge);
+
+/// Sets in `mirrored` (mirror()'s result for a mesh of `mesh`'s faces, whose images were `images`)
+/// the Gaussians mirror() would give `vertices` of `mesh` and their images: the mesh's edit shown on
+/// both sides at the cost of the vertices changed. Returns the vertices of `mirrored` set, ascending.
+/// Throws gps::Error where a merged vertex's symmetric covariance is not positive definite.
+std::vector<int> update_mirrored(const CovarianceMesh& mesh, const std::vector<int>& vertices, int axis,
+                                 const Vec3& center, const std::vector<int>& images, CovarianceMesh& mirrored);
 
 }  // namespace gps

@@ -1,5 +1,5 @@
 // Mirroring (core/modelling/mirror.h): a half cube open at x = 0 mirrored into a closed box, the
-// copies' Gaussians mirrored exactly and the seam's made symmetric, a mirror without merging, about
+// copies' Gaussians mirrored exactly and the seam's made symmetric, an edit of the half shown by index, a mirror without merging, about
 // another plane, refusals of non-manifold seams, and the op list's "mirror".
 #include "core/modelling/mirror.h"
 
@@ -81,6 +81,30 @@ TEST(Mirror, GaussiansAreMirroredExactlyAndTheSeamMadeSymmetric) {
   }
   EXPECT_TRUE(shape_of(r.mesh).oriented);
   EXPECT_GT(signed_volume(r.mesh), 0.0);
+}
+
+// The vertices keep their indices and the copies follow in vertex order (mirror_images), so that an
+// edit of the half, set by update_mirrored on the vertices it changed, gives exactly mirror() of the
+// edited half: a vertex off the plane and one on it moved, with new covariances.
+TEST(Mirror, AnEditOfTheHalfIsShownByIndex) {
+  const CovarianceMesh half = half_cube(3);
+  const std::vector<int> images = mirror_images(half, 0, Vec3::Zero(), true);
+  EXPECT_EQ(images, (std::vector<int>{0, 8, 9, 3, 4, 10, 11, 7}));
+  EXPECT_EQ(mirror_images(half, 0, Vec3::Zero(), false), (std::vector<int>{8, 9, 10, 11, 12, 13, 14, 15}));
+  CovarianceMesh mirrored = mirror(half, 0, Vec3::Zero(), true).mesh;
+  const MeshArrays before = arrays_of(half), shown = arrays_of(mirrored);
+  for (int v = 0; v < 8; ++v) {
+    if (images[size_t(v)] != v) EXPECT_EQ(shown.means[size_t(v)], before.means[size_t(v)]) << v;
+  }
+  EXPECT_EQ(std::vector<std::vector<int>>(shown.faces.begin(), shown.faces.begin() + 5), before.faces);
+
+  CovarianceMesh edited = half;
+  edited.set_mean(2, Vec3(1.5, 1.25, -0.75));
+  edited.set_covariance(2, Mat3{{0.2, 0.05, 0.01}, {0.05, 0.1, 0.0}, {0.01, 0.0, 0.3}});
+  edited.set_mean(3, Vec3(0, 1.5, -1));
+  edited.set_covariance(3, Mat3{{0.1, 0.03, 0.0}, {0.03, 0.2, 0.0}, {0.0, 0.0, 0.1}});
+  EXPECT_EQ(update_mirrored(edited, {3, 2}, 0, Vec3::Zero(), images, mirrored), (std::vector<int>{2, 3, 9}));
+  EXPECT_TRUE(test::same_mesh(mirrored, mirror(edited, 0, Vec3::Zero(), true).mesh));
 }
 
 TEST(Mirror, WithoutMergingTheCopyIsASecondPart) {
