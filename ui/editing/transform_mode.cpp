@@ -33,12 +33,14 @@ const char* pivot_name(TransformPivot pivot) {
       return "active vertex";
     case TransformPivot::individual:
       return "individual origins";
+    case TransformPivot::cursor:
+      return "3D cursor";
   }
   return "";
 }
 
 TransformMode::TransformMode(TransformKind kind, const CovarianceMesh& mesh, std::vector<int> vertices, int active,
-                             TransformPivot pivot, const Viewport& view, glm::vec2 cursor)
+                             TransformPivot pivot, const Viewport& view, glm::vec2 cursor, const Vec3& cursor_point)
     : kind_(kind), vertices_(std::move(vertices)), pivot_(pivot), start_cursor_(cursor) {
   for (const int v : vertices_) {
     start_means_.push_back(mesh.mean(size_t(v)));
@@ -46,6 +48,7 @@ TransformMode::TransformMode(TransformKind kind, const CovarianceMesh& mesh, std
   }
   if (!vertices_.empty()) centre_ /= double(vertices_.size());
   if (pivot_ == TransformPivot::active && active >= 0) centre_ = mesh.mean(size_t(active));
+  if (pivot_ == TransformPivot::cursor) centre_ = cursor_point;
   const Vec3 eye = to_vec(view.camera.eye_double()), target = to_vec(view.camera.target);
   view_axis_ = (view.camera.orthographic ? eye - target : eye - centre_).normalized();
   move_cursor(cursor, view);
@@ -114,6 +117,35 @@ void TransformMode::move_cursor(glm::vec2 cursor, const Viewport& view) {
       break;
     }
   }
+}
+
+void TransformMode::snap_increment(double distance_step, double factor_step, double angle_step) {
+  const auto round_to = [](double value, double step) { return step > 0 ? std::round(value / step) * step : value; };
+  switch (kind_) {
+    case TransformKind::grab:
+      if (constraint_ == Constraint::axis || constraint_ == Constraint::direction) {
+        const Vec3 along = axis_direction();
+        translation_ = along * round_to(translation_.dot(along), distance_step);
+      } else {
+        for (int i = 0; i < 3; ++i) translation_[i] = round_to(translation_[i], distance_step);
+      }
+      break;
+    case TransformKind::scale:
+      factor_ = round_to(factor_, factor_step);
+      break;
+    case TransformKind::rotate:
+      angle_ = round_to(angle_ * 180.0 / M_PI, angle_step) * M_PI / 180.0;
+      break;
+  }
+}
+
+void TransformMode::snap_to(const Vec3& point) {
+  if (kind_ != TransformKind::grab) return;
+  const Vec3 along = axis_direction();
+  Vec3 t = point - centre_;
+  if (constraint_ == Constraint::axis || constraint_ == Constraint::direction) t = along * t.dot(along);
+  if (constraint_ == Constraint::plane) t -= along * t.dot(along);
+  translation_ = t;
 }
 
 Vec3 TransformMode::pivot(size_t source) const {

@@ -23,16 +23,19 @@ class EditorDocument;
 enum class TransformKind { grab, scale, rotate };
 
 /// What a transform turns or scales about: the selection's median point (the mean of its means),
-/// the active vertex, or each vertex about its own mean (which changes only its covariance under S and R).
-enum class TransformPivot { median, active, individual };
-/// "median point", "active vertex", "individual origins".
+/// the active vertex, each vertex about its own mean (which changes only its covariance under S and
+/// R), or the 3D cursor.
+enum class TransformPivot { median, active, individual, cursor };
+constexpr int kTransformPivots = 4;
+/// "median point", "active vertex", "individual origins", "3D cursor".
 const char* pivot_name(TransformPivot pivot);
 
 class TransformMode {
 public:
-  /// Begins a transform of `vertices` (their Gaussians as in `mesh` now), with the cursor at `cursor`.
+  /// Begins a transform of `vertices` (their Gaussians as in `mesh` now), with the mouse at `cursor`;
+  /// `cursor_point`: the 3D cursor, the pivot of TransformPivot::cursor.
   TransformMode(TransformKind kind, const CovarianceMesh& mesh, std::vector<int> vertices, int active,
-                TransformPivot pivot, const Viewport& view, glm::vec2 cursor);
+                TransformPivot pivot, const Viewport& view, glm::vec2 cursor, const Vec3& cursor_point = Vec3::Zero());
 
   /// X, Y, Z (axis 0, 1, 2): along the world axis; `exclude`: in the plane normal to it. The same
   /// constraint again removes it.
@@ -45,6 +48,14 @@ public:
   const std::string& typed() const { return typed_; }
   /// Follows the cursor (ignored while a value is typed).
   void move_cursor(glm::vec2 cursor, const Viewport& view);
+  /// Increment snapping: rounds what the mouse set to whole steps — a move's world components (or its
+  /// length along an axis or direction constraint), a scale factor, an angle in degrees.
+  void snap_increment(double distance_step, double factor_step, double angle_step);
+  /// Snapping to an element (a grab): the move takes the median or active pivot onto `point`, kept to
+  /// the constraint (the point's projection onto the axis line or into the plane).
+  void snap_to(const Vec3& point);
+  /// The median or active pivot: where a grab's snapping takes it from.
+  const Vec3& centre() const { return centre_; }
 
   TransformKind kind() const { return kind_; }
   const std::vector<int>& vertices() const { return vertices_; }

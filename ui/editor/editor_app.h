@@ -33,6 +33,7 @@
 #include "ui/panels/inspector_panel.h"
 #include "ui/panels/job_dialog.h"
 #include "ui/editing/merge_distance.h"
+#include "ui/editing/mirror_modifier.h"
 #include "ui/settings/recent_files.h"
 #include "ui/panels/repair_prompt.h"
 #include "ui/editing/selection.h"
@@ -120,6 +121,22 @@ private:
   void draw_merge_items();
   void draw_add_items();
   void draw_modelling_overlay();
+  // Snapping and the 3D cursor (editor_snapping.cpp).
+  void build_snapping_commands();
+  void place_cursor(glm::vec2 pixel);  // on the surface under the pixel, else at the cursor's depth
+  void set_cursor(const Vec3& point, const std::string& how);
+  // The mirror modifier (editor_mirror_modifier.cpp): the mesh shown through it, its commands.
+  void build_mirror_commands();
+  // Gives the renderer `mesh` (the document's or a tool's preview) as shown: with the modifier on, its
+  // mirror planned under `plans` (`surface`, planned for `mesh` itself, then unused). Throws gps::Error
+  // as set_mesh does, before anything changes.
+  void show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans,
+                 std::optional<PlannedSurface> surface = std::nullopt);
+  void show_edit(const std::vector<int>& changed);  // the document's Gaussians `changed`, on both sides
+  void set_mirror(const MirrorSettings& settings);  // shown at once and kept for the file
+  void remember_mirror();                           // kept for the document's file (the View settings)
+  void apply_mirror();                              // the document replaced by its mirror, one undo step
+  void draw_mirror_items();
   // Long computations in the background (editor_mesh_jobs.cpp).
   void open_simplify_dialog();
   void open_fit_dialog();
@@ -215,7 +232,11 @@ private:
   // shows in place of the document's (a bevel's or a crease's preview; none: nullptr) with its selection.
   std::unique_ptr<ModalTool> tool_;
   TransformPivot transform_pivot_ = TransformPivot::median;
+  // The 3D cursor: the pivot TransformPivot::cursor and, once placed, where new primitives go.
+  Vec3 cursor_point_ = Vec3::Zero();
+  bool cursor_placed_ = false;
   std::shared_ptr<const CovarianceMesh> preview_;
+  MirrorModifier mirror_;  // what the renderer shows of the document: it, or its mirror
   std::vector<int> preview_selection_;
   // File → Simplify… and Fit to…: the dialog, its job and the settings each last had.
   struct SimplifySettings {

@@ -123,6 +123,7 @@ void EditorApp::build_commands() {
          [this] { return view_.show_statistics; }});
   build_target_point_commands();
   build_modelling_commands();
+  build_snapping_commands();
   // Help
   t.add({"Help",
          "Mouse and keys",

@@ -12,6 +12,9 @@ ToolContext EditorApp::tool_context() {
   c.viewport = viewport();
   c.cursor = input_.cursor;
   c.shift = input_.shift();
+  c.ctrl = input_.ctrl();
+  c.snap = view_.snap;
+  c.cursor_point = cursor_point_;
   c.transform_gaussians = view_.transform_gaussians;
   c.plans = view_.plans();
   c.install = [this](const Modelled& result, SharpnessReplanner* replanner) { install(result, replanner); };

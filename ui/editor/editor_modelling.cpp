@@ -22,6 +22,7 @@
 #include "core/modelling/subdivide_mesh.h"
 #include "ui/editing/crease_tool.h"
 #include "ui/editor/editor_app.h"
+#include "ui/overlays/cursor_overlay.h"
 #include "ui/tools/bevel_tool.h"
 #include "ui/tools/inset_tool.h"
 #include "ui/tools/loop_cut_tool.h"
@@ -88,8 +89,9 @@ void EditorApp::build_modelling_commands() {
          pivot(TransformPivot::individual),
          always,
          pivot_is(TransformPivot::individual)});
+  t.add({"Mesh", "Pivot: 3D cursor", {}, pivot(TransformPivot::cursor), always, pivot_is(TransformPivot::cursor)});
   t.add({"", "Pivot: the next one", {key(GLFW_KEY_PERIOD)}, [this] {
-           transform_pivot_ = TransformPivot((int(transform_pivot_) + 1) % 3);
+           transform_pivot_ = TransformPivot((int(transform_pivot_) + 1) % kTransformPivots);
            set_status(std::string("pivot: ") + pivot_name(transform_pivot_), false);
          }});
   t.add({"Mesh",
@@ -221,7 +223,8 @@ void EditorApp::draw_merge_items() {
 void EditorApp::draw_add_items() {
   for (const std::string& name : primitive_names()) {
     if (!ImGui::MenuItem(name.c_str())) continue;
-    const PrimitivePlacement at = primitive_placement(document_.mesh(), selection_.vertices());
+    PrimitivePlacement at = primitive_placement(document_.mesh(), selection_.vertices());
+    if (cursor_placed_) at.center = cursor_point_;
     run_operation("add " + name, [&](const CovarianceMesh& m) {
       return add_primitive(m, *primitive_named(name), at.center, at.size);
     });
@@ -310,6 +313,7 @@ void EditorApp::draw_modelling_overlay() {
     draw_add_items();
     ImGui::EndPopup();
   }
+  if (cursor_placed_) draw_cursor_overlay(*ImGui::GetBackgroundDrawList(), viewport(), cursor_point_);
   if (tool_) tool_->draw_overlay(*ImGui::GetBackgroundDrawList(), tool_context());
 }
 

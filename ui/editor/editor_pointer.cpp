@@ -151,6 +151,8 @@ void EditorApp::release(const InputEvent& e) {
     loop_select(e.position, input_.shift());
   } else if (mode_ == Mode::handle) {
     end_drag(true);
+  } else if (mode_ == Mode::pan && e.button == 1 && glm::length(e.position - press_pixel_) <= kBoxThreshold) {
+    place_cursor(e.position);  // Shift+right click
   }
   mode_ = Mode::none;
 }

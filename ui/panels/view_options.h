@@ -4,6 +4,8 @@
 #include <string>
 
 #include "render/pipeline/surface_renderer.h"
+#include "ui/editing/mirror_modifier.h"
+#include "ui/editing/snap_options.h"
 
 namespace gps {
 
@@ -55,11 +57,13 @@ struct ViewOptions {
   bool vsync = true;
   bool common_frame = false;        // a multi-selection drag: every Gaussian in the grabbed one's frame (else its own)
   bool transform_gaussians = true;  // G / S / R carry the Gaussians (else they move the positions only)
+  SnapOptions snap;                 // while transforming
   int pivot = 0;  // where the gizmo of a multi-selection sits: 0 the active vertex, 1 the selection's centroid
   int ellipsoid_scope =
       0;            // whose ellipsoids: 0 automatic (ui/overlays/ellipsoid_scope.h), 1 the selection and its neighbours, 2 all
   int up_axis = 1;  // the world axis drawn upward (0 x, 1 y, 2 z): the open file's, as kept in up_axes
   std::map<std::string, int> up_axes;  // by mesh file (absolute path): the up axis last used for it
+  std::map<std::string, MirrorSettings> mirror_modifiers;  // by mesh file (absolute path): its mirror modifier
   TargetPointsView target;
   std::map<std::string, std::string> target_files;  // by mesh file (absolute path): the target shown over it
   bool show_inspector = true, show_view = true, show_statistics = true, show_help = false;

@@ -133,6 +133,19 @@ void editing_section(ViewOptions& o, ViewPanelChanges&) {
     ImGui::SetTooltip(
         "a grab, scale or rotation maps the Gaussians with the positions (else it moves the positions "
         "only, each Gaussian kept as it was)");
+  ImGui::Checkbox("snap", &o.snap.enabled);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("G / S / R snap (Shift+Tab); Ctrl held while transforming inverts it");
+  ImGui::SameLine();
+  int target = int(o.snap.target);
+  ImGui::SetNextItemWidth(90.0f);
+  if (ImGui::Combo("to", &target, "increments\0vertices\0edges\0faces\0")) o.snap.target = SnapTarget(target);
+  if (o.snap.target == SnapTarget::increment) {
+    float step = float(o.snap.distance_step);
+    if (ImGui::InputFloat("increment", &step, 0.0f, 0.0f, "%.4g") && step > 0.0f) o.snap.distance_step = step;
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("a grab moves in whole steps of this many units; a scale in steps of %.2g, a rotation of %.3g°",
+                        o.snap.factor_step, o.snap.angle_step);
+  }
   ImGui::Checkbox("common frame", &o.common_frame);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("a multi-selection drag scales every Gaussian along the grabbed axis (else each along its own)");

@@ -15,6 +15,7 @@
 #include "core/modelling/mesh_arrays.h"
 #include "core/plans/planned_surface.h"
 #include "ui/editing/edit_reach.h"
+#include "ui/editing/snap_options.h"
 #include "ui/input/input_events.h"
 #include "view/projection.h"
 
@@ -42,8 +43,10 @@ struct ToolContext {
   ReachOptions& reach;
   Viewport viewport;
   glm::vec2 cursor{0.0f};
-  bool shift = false;
+  bool shift = false, ctrl = false;
   bool transform_gaussians = true;  // G / S / R carry the Gaussians (else the positions only)
+  SnapOptions snap;
+  Vec3 cursor_point = Vec3::Zero();  // the 3D cursor
 
   /// Replaces the document's mesh by `result` as one undo step; throws gps::Error before anything changes.
   /// `replanner`: the plans of the document's topology with other sharpness (core/plans/sharpness_replanner.h).

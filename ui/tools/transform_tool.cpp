@@ -2,6 +2,7 @@
 #include "ui/tools/transform_tool.h"
 
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,7 @@ std::vector<Vec3> start_means(const EditorDocument& document) {
 TransformTool::TransformTool(TransformKind kind, TransformPivot pivot, ToolContext& ctx) {
   ctx.document.begin_edit();
   transform_.emplace(kind, ctx.document.mesh(), ctx.selection.vertices(), ctx.selection.active(), pivot, ctx.viewport,
-                     ctx.cursor);
+                     ctx.cursor, ctx.cursor_point);
   reach_ = edit_reach(start_means(ctx.document), transform_->vertices(), ctx.reach);
   update(ctx);
 }
@@ -66,11 +67,33 @@ std::unique_ptr<ModalTool> TransformTool::extrude(ToolContext& ctx) {
   return std::unique_ptr<ModalTool>(new TransformTool(ctx, normal, summary));
 }
 
+void TransformTool::follow(glm::vec2 cursor, ToolContext& ctx) {
+  snapped_.reset();
+  if (!typed_.empty()) return;
+  transform_->move_cursor(cursor, ctx.viewport);
+  if (!ctx.snap.active(ctx.ctrl)) return;
+  if (ctx.snap.target == SnapTarget::increment || transform_->kind() != TransformKind::grab) {
+    transform_->snap_increment(ctx.snap.distance_step, ctx.snap.factor_step, ctx.snap.angle_step);
+    return;
+  }
+  // Every vertex the transform reaches moves: none of them is a place to snap to.
+  std::vector<int> moving;
+  for (const ReachedVertex& r : reach_) moving.push_back(r.vertex);
+  constexpr float kSnapRadius = 16.0f;  // window pixels
+  snapped_ = find_snap_point(ctx.document.mesh(), ctx.viewport, cursor, ctx.snap.target, moving, kSnapRadius);
+  if (snapped_) transform_->snap_to(snapped_->point);
+}
+
 void TransformTool::update(ToolContext& ctx) {
   const size_t clamped =
       apply_transform(ctx.document, *transform_, reach_, ctx.reach.mirror_axis, ctx.transform_gaussians);
+  const bool snapping = ctx.snap.active(ctx.ctrl) && typed_.empty();
   status_ =
       transform_->describe() +
+      (snapping ? snapped_ ? "  (snapped to " + snapped_->element + ")"
+                           : std::string("  (snapping to ") + snap_target_name(ctx.snap.target) +
+                                 (ctx.snap.target == SnapTarget::increment ? "s" : "") + ")"
+                : "") +
       (reach_.size() > transform_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "") +
       (ctx.transform_gaussians ? "" : "  (positions only)") +
       (clamped ? "  (" + count_of(clamped, "Gaussian", "Gaussians") + " held at the flatness floor)" : "");
@@ -83,13 +106,16 @@ ToolResult TransformTool::handle(const InputEvent& e, ToolContext& ctx) {
     return keep ? ToolResult::confirmed : ToolResult::cancelled;
   }
   const bool key = e.type == InputEvent::Type::key_press;
-  if (e.type == InputEvent::Type::move) {
-    if (typed_.empty()) transform_->move_cursor(e.position, ctx.viewport);
+  const bool ctrl_key = (e.type == InputEvent::Type::key_press || e.type == InputEvent::Type::key_release) &&
+                        (e.key == GLFW_KEY_LEFT_CONTROL || e.key == GLFW_KEY_RIGHT_CONTROL);
+  if (e.type == InputEvent::Type::move || ctrl_key) {  // Ctrl held or let go: snapping turns over
+    follow(ctx.cursor, ctx);
   } else if (key && (e.key == GLFW_KEY_X || e.key == GLFW_KEY_Y || e.key == GLFW_KEY_Z)) {
     transform_->constrain_axis(e.key - GLFW_KEY_X, ctx.shift);
-    transform_->move_cursor(ctx.cursor, ctx.viewport);
+    follow(ctx.cursor, ctx);
   } else if (typed_.handle(e)) {
     transform_->set_typed(typed_.text(), typed_.value());
+    if (!typed_.empty()) snapped_.reset();
   } else if (e.type == InputEvent::Type::scroll && ctx.reach.proportional && !folds_) {
     ctx.reach.radius *= std::pow(1.15, double(e.steps));
     const std::vector<Vec3> means = start_means(ctx.document);
@@ -104,6 +130,15 @@ ToolResult TransformTool::handle(const InputEvent& e, ToolContext& ctx) {
   }
   update(ctx);
   return ToolResult::consumed;
+}
+
+void TransformTool::draw_overlay(ImDrawList& draw, const ToolContext& ctx) const {
+  if (!snapped_) return;
+  const auto at = project_to_pixel(ctx.viewport.camera, ctx.viewport.width, ctx.viewport.height, snapped_->point);
+  if (!at) return;
+  const ImVec2 centre(at->x, at->y);
+  draw.AddCircle(centre, 7.0f, IM_COL32(255, 255, 255, 255), 16, 2.0f);
+  draw.AddCircleFilled(centre, 2.5f, IM_COL32(255, 255, 255, 255));
 }
 
 void TransformTool::end(bool keep, ToolContext& ctx) {

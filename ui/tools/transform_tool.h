@@ -4,6 +4,8 @@
 // mirrored reach and the wheel setting the radius; one undo step when confirmed. The move after an
 // extrusion is the same tool along the extrusion's normal, folded into the extrusion's undo step.
 // G pressed again during a grab hands over to the slide (ui/tools/slide_tool.h), as Blender's G G.
+// Snapping (ui/editing/snap_options.h; held Ctrl inverts it) rounds the amount to increments or takes
+// the pivot onto the vertex, edge or face under the pointer, marked by a circle.
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,10 +27,12 @@ public:
   static std::unique_ptr<ModalTool> extrude(ToolContext& ctx);
 
   ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
+  void draw_overlay(ImDrawList& draw, const ToolContext& ctx) const override;
 
 private:
   TransformTool(ToolContext& ctx, const Vec3& normal, std::string extrusion_summary);
   void update(ToolContext& ctx);
+  void follow(glm::vec2 cursor, ToolContext& ctx);  // the mouse's amount, snapped where snapping is on
   void end(bool keep, ToolContext& ctx);
 
   std::optional<TransformMode> transform_;
@@ -36,6 +40,7 @@ private:
   TypedNumber typed_;
   bool folds_ = false;  // the move after an extrusion: confirmed into the extrusion's undo step
   std::string extrusion_summary_;
+  std::optional<SnapPoint> snapped_;  // the element a grab is snapped to
 };
 
 }  // namespace gps
