@@ -5,7 +5,9 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "core/modelling/edge_operations.h"
 #include "core/modelling/extrude.h"
+#include "core/modelling/face_pieces.h"
 #include "core/modelling/operation_words.h"
 #include "core/support/error.h"
 
@@ -33,24 +35,6 @@ std::vector<size_t> crossings(const std::vector<int>& sign) {
     before = sign[k % n];
   }
   return out;
-}
-
-// Splits the one piece holding both x and y, not as neighbours, along the chord x–y; false when none does.
-bool split_along(std::vector<std::vector<int>>& pieces, int x, int y) {
-  for (size_t p = 0; p < pieces.size(); ++p) {
-    std::vector<int>& piece = pieces[p];
-    const auto ix = std::find(piece.begin(), piece.end(), x), iy = std::find(piece.begin(), piece.end(), y);
-    if (ix == piece.end() || iy == piece.end()) continue;
-    size_t i = size_t(ix - piece.begin()), j = size_t(iy - piece.begin());
-    if (i > j) std::swap(i, j);
-    if (j - i < 2 || (i == 0 && j + 1 == piece.size())) continue;
-    std::vector<int> rest(piece.begin() + long(j), piece.end());
-    rest.insert(rest.end(), piece.begin(), piece.begin() + long(i) + 1);
-    piece = std::vector<int>(piece.begin() + long(i), piece.begin() + long(j) + 1);
-    pieces.push_back(std::move(rest));
-    return true;
-  }
-  return false;
 }
 
 }  // namespace
@@ -81,9 +65,8 @@ Modelled bisect(const CovarianceMesh& mesh, const Vec3& point, const Vec3& norma
       // From the edge's lower-numbered end, so that the blend does not depend on the face it is met in.
       const int lo = std::min(u, v), hi = std::max(u, v);
       const double t = distance[size_t(lo)] / (distance[size_t(lo)] - distance[size_t(hi)]);
-      const int m = a.add_vertex(blend_gaussians(a, {{lo, 1 - t}, {hi, t}}));
+      const int m = add_edge_vertex(a, lo, hi, t);
       side.push_back(0);
-      split_crease(a, u, v, m);
       cut_vertex.emplace(edge_key(u, v), m);
     }
   }
@@ -114,19 +97,10 @@ Modelled bisect(const CovarianceMesh& mesh, const Vec3& point, const Vec3& norma
                      [&](int x, int y) { return along.dot(a.means[size_t(x)]) < along.dot(a.means[size_t(y)]); });
     std::vector<std::vector<int>> pieces = {cycle};
     for (size_t k = 0; k + 1 < points.size(); k += 2)
-      if (!split_along(pieces, points[k], points[k + 1]))
+      if (!split_along(pieces, {points[k], points[k + 1]}))
         throw Error("face " + std::to_string(f) + " is crossed by the plane " + std::to_string(points.size()) +
                     " times in a way that does not cut it into pieces");
-    if (triangles_only)
-      for (size_t p = 0, count = pieces.size(); p < count; ++p)
-        if (std::vector<int>& q = pieces[p]; q.size() == 4) {
-          const bool first = (a.means[size_t(q[0])] - a.means[size_t(q[2])]).squaredNorm() <=
-                             (a.means[size_t(q[1])] - a.means[size_t(q[3])]).squaredNorm();
-          const std::vector<int> x = first ? std::vector<int>{q[0], q[1], q[2]} : std::vector<int>{q[1], q[2], q[3]};
-          const std::vector<int> y = first ? std::vector<int>{q[2], q[3], q[0]} : std::vector<int>{q[3], q[0], q[1]};
-          q = x;
-          pieces.push_back(y);
-        }
+    if (triangles_only) triangulate_pieces(pieces, a.means, newell_normal(a, f));
     a.faces[size_t(f)] = pieces[0];
     a.faces.insert(a.faces.end(), pieces.begin() + 1, pieces.end());
     on_cut.insert(on_cut.end(), points.begin(), points.end());

@@ -29,8 +29,7 @@ Modelled split_edge(const CovarianceMesh& mesh, int a, int b, double t) {
     value << t;
     throw Error("the split fraction must be in (0, 1), got " + value.str());
   }
-  const int m = arrays.add_vertex(blend_gaussians(arrays, {{a, 1 - t}, {b, t}}));
-  split_crease(arrays, a, b, m);
+  const int m = add_edge_vertex(arrays, a, b, t);
   std::vector<std::pair<int, int>> beside = {face_of_edge(edges, a, b), face_of_edge(edges, b, a)};
   std::sort(beside.begin(), beside.end());
   int added = 0;
@@ -52,6 +51,12 @@ Modelled split_edge(const CovarianceMesh& mesh, int a, int b, double t) {
   out.summary = "split " + edge_name(a, b) + ": 1 vertex, " + std::to_string(added) +
                 (added == 1 ? " face added" : " faces added");
   return out;
+}
+
+int add_edge_vertex(MeshArrays& arrays, int a, int b, double t) {
+  const int m = arrays.add_vertex(blend_gaussians(arrays, {{a, 1 - t}, {b, t}}));
+  split_crease(arrays, a, b, m);
+  return m;
 }
 
 Modelled flip_edge(const CovarianceMesh& mesh, int a, int b) {

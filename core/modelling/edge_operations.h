@@ -14,6 +14,11 @@ namespace gps {
 /// an extra corner. Selection: the new vertex. Refuses {a, b} not an edge and t outside (0, 1).
 Modelled split_edge(const CovarianceMesh& mesh, int a, int b, double t = 0.5);
 
+/// The vertex split_edge puts on edge {a, b} at fraction t from a, added to `arrays` for operations
+/// that cut edges (bisect, knife): the Gaussian blend_gaussians((1 − t) q_a + t q_b), the edge's
+/// crease on both halves; the faces are left to the caller. Returns its index.
+int add_edge_vertex(MeshArrays& arrays, int a, int b, double t);
+
 /// The edge {a, b} shared by two triangles replaced by the other diagonal of the quad they make
 /// (each triangle keeps its index). Selection: the new edge's two vertices. Refuses a boundary edge,
 /// a neighbour that is not a triangle, and a flip that would duplicate an existing edge.

@@ -24,6 +24,7 @@
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
 #include "core/modelling/inset.h"
+#include "core/modelling/knife.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/merge_vertices.h"
 #include "core/modelling/mirror.h"
@@ -297,6 +298,22 @@ Run mirror_step(Fields& f) {
   return [=](const CovarianceMesh& m) { return mirror(m, axis, center, merge); };
 }
 
+// {"op":"knife","points":[[x,y,z],…]}: the mesh cut along the path through points on its faces.
+Run knife_step(Fields& f) {
+  const Json& list = f.json("points");
+  if (!list.is_array() || list.size() < 2)
+    throw usage_error("\"points\" must be a list of at least 2 [x, y, z] points");
+  std::vector<Vec3> points;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const Json& p = list[i];
+    const auto finite = [](const Json& x) { return x.is_number() && std::isfinite(x.get<double>()); };
+    if (!p.is_array() || p.size() != 3 || !std::all_of(p.begin(), p.end(), finite))
+      throw usage_error("\"points\"[" + std::to_string(i) + "] must be 3 numbers");
+    points.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+  }
+  return [=](const CovarianceMesh& m) { return knife(m, points); };
+}
+
 using Append = std::function<std::vector<int>(MeshArrays&, std::string&)>;
 
 // An operation's step: a function of the mesh, or `append` (an addition) or `in_place` set instead.
@@ -425,6 +442,7 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
     return nullptr;
   }
   if (op == "bisect") return bisect_step(f);
+  if (op == "knife") return knife_step(f);
   if (op == "duplicate") return duplicate_step(f);
   if (op == "spin") return spin_step(f);
   if (op == "mirror") return mirror_step(f);
@@ -458,7 +476,7 @@ std::string prefixed(const std::string& source, const std::string& message) {
 std::vector<std::string> operation_names() {
   return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude",   "inset", "delete", "dissolve",
           "merge",     "weld",     "fill",       "bridge",    "transform", "add",   "set",    "crease",
-          "corner",    "slide",    "bevel",      "bisect",    "duplicate", "spin",  "mirror"};
+          "corner",    "slide",    "bevel",      "bisect",    "knife",     "duplicate", "spin",  "mirror"};
 }
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {

@@ -1,0 +1,351 @@
+#include "core/modelling/knife.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "core/modelling/edge_operations.h"
+#include "core/modelling/extrude.h"
+#include "core/modelling/face_pieces.h"
+#include "core/modelling/operation_words.h"
+#include "core/support/error.h"
+
+namespace gps {
+
+namespace {
+
+// A point this close to a face, relative to the mesh's bounding-box diagonal, is on it.
+constexpr double kPointOnMesh = 1e-4;
+// Vertices this close to a segment's plane, relative to the diagonal, lie on it (as bisect's).
+constexpr double kVertexOnCutPlane = 1e-9;
+// A crossing or a point this close to an edge's end, as a fraction of the edge, is at that end.
+constexpr double kSnapToEnd = 1e-3;
+
+// Where the cut passes: a vertex a, a point on the edge a–b (a < b) at fraction t from a, or a point
+// inside face `face`.
+struct Place {
+  enum Kind { vertex, edge, inside } kind = vertex;
+  int a = -1, b = -1;
+  double t = 0;
+  int face = -1;
+  Vec3 at = Vec3::Zero();
+};
+
+// A step of the cut: across `face` to `to`.
+struct Step {
+  int face;
+  Place to;
+};
+
+Place at_vertex(const MeshArrays& m, int v) { return {Place::vertex, v, -1, 0, -1, m.means[size_t(v)]}; }
+
+// The place at fraction t from u on the edge u–w: its end where within kSnapToEnd of one.
+Place on_edge(const MeshArrays& m, int u, int w, double t) {
+  if (t <= kSnapToEnd) return at_vertex(m, u);
+  if (t >= 1 - kSnapToEnd) return at_vertex(m, w);
+  if (u > w) std::swap(u, w), t = 1 - t;
+  return {Place::edge, u, w, t, -1, (1 - t) * m.means[size_t(u)] + t * m.means[size_t(w)]};
+}
+
+// Whether two places are on one element: the same vertex, edge or point inside a face.
+bool same_element(const Place& x, const Place& y) {
+  return x.kind == y.kind && (x.kind == Place::inside ? x.at == y.at : x.a == y.a && x.b == y.b);
+}
+
+Vec3 unit_normal(const MeshArrays& m, int f) { return newell_normal(m, f).normalized(); }
+
+// Whether p lies over face f (seen along its normal) within `tolerance` of its plane, allowing for
+// how far its corners are from flat.
+bool over_face(const MeshArrays& m, int f, const Vec3& p, double tolerance) {
+  const std::vector<int>& face = m.faces[size_t(f)];
+  const Vec3 n = unit_normal(m, f);
+  if (!n.allFinite()) return false;
+  Vec3 centre = Vec3::Zero();
+  for (int v : face) centre += m.means[size_t(v)];
+  centre /= double(face.size());
+  double flatness = 0;
+  for (int v : face) flatness = std::max(flatness, std::abs(n.dot(m.means[size_t(v)] - centre)));
+  if (std::abs(n.dot(p - centre)) > tolerance + flatness) return false;
+  // Crossing number of a ray in the face's plane.
+  const Vec3 x = n.unitOrthogonal(), y = n.cross(x);
+  bool in = false;
+  for (size_t k = 0; k < face.size(); ++k) {
+    const Vec3 u = m.means[size_t(face[k])] - p, w = m.means[size_t(face[(k + 1) % face.size()])] - p;
+    const double uy = y.dot(u), wy = y.dot(w);
+    if ((uy > 0) != (wy > 0) && x.dot(u) + (x.dot(w) - x.dot(u)) * uy / (uy - wy) > 0) in = !in;
+  }
+  return in;
+}
+
+// Where p lies on the mesh: on the nearest vertex or edge within `tolerance`, else inside a face.
+std::optional<Place> place_of(const MeshArrays& m, const Vec3& p, double tolerance) {
+  std::optional<Place> on_boundary, inside;
+  double nearest = tolerance;
+  for (int f = 0; f < m.n_faces(); ++f) {
+    const std::vector<int>& face = m.faces[size_t(f)];
+    for (size_t k = 0; k < face.size(); ++k) {
+      const int u = face[k], w = face[(k + 1) % face.size()];
+      const Vec3 x = m.means[size_t(u)], e = m.means[size_t(w)] - x;
+      const double t = std::clamp(e.dot(p - x) / e.squaredNorm(), 0.0, 1.0);
+      if (const double d = (x + t * e - p).norm(); d <= nearest) {
+        nearest = d;
+        on_boundary = on_edge(m, u, w, t);
+      }
+    }
+    if (!inside && over_face(m, f, p, tolerance)) inside = Place{Place::inside, -1, -1, 0, f, p};
+  }
+  return on_boundary ? on_boundary : inside;
+}
+
+// Whether face f holds the place (as a corner, on an edge, or inside).
+bool holds(const MeshArrays& m, int f, const Place& p) {
+  const std::vector<int>& face = m.faces[size_t(f)];
+  if (p.kind == Place::inside) return p.face == f;
+  for (size_t k = 0; k < face.size(); ++k) {
+    const int u = face[k], w = face[(k + 1) % face.size()];
+    if (p.kind == Place::vertex ? u == p.a : std::min(u, w) == p.a && std::max(u, w) == p.b) return true;
+  }
+  return false;
+}
+
+// The plane a segment of the path cuts along: through `origin` with normal `normal`; `forward` is
+// the segment's direction, the order of places along the cut.
+struct CutPlane {
+  Vec3 origin, normal, forward;
+  double along(const Place& p) const { return forward.dot(p.at - origin); }
+};
+
+// Where the plane crosses face f's boundary: its corners on the plane and its edges between corners
+// on opposite sides.
+std::vector<Place> plane_crossings(const MeshArrays& m, int f, const CutPlane& plane, double on_plane) {
+  const std::vector<int>& face = m.faces[size_t(f)];
+  std::vector<double> s;
+  for (int v : face) s.push_back(plane.normal.dot(m.means[size_t(v)] - plane.origin));
+  std::vector<Place> out;
+  for (size_t k = 0; k < face.size(); ++k) {
+    const size_t l = (k + 1) % face.size();
+    if (std::abs(s[k]) <= on_plane) {
+      out.push_back(at_vertex(m, face[k]));
+    } else if (std::abs(s[l]) > on_plane && (s[k] > 0) != (s[l] > 0)) {
+      // From the edge's lower-numbered end, as bisect does.
+      const bool low_first = face[k] < face[l];
+      const double su = low_first ? s[k] : s[l], sw = low_first ? s[l] : s[k];
+      out.push_back(on_edge(m, std::min(face[k], face[l]), std::max(face[k], face[l]), su / (su - sw)));
+    }
+  }
+  return out;
+}
+
+// The crossing of face f nearest to `from` ahead of it (behind it where `ahead` is false), or none.
+std::optional<Place> next_crossing(const MeshArrays& m, int f, const Place& from, const CutPlane& plane,
+                                   double on_plane, bool ahead) {
+  std::optional<Place> best;
+  const double sign = ahead ? 1 : -1, start = sign * plane.along(from);
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const Place& c : plane_crossings(m, f, plane, on_plane)) {
+    const double x = sign * plane.along(c);
+    if (!same_element(c, from) && x > start + on_plane && x < nearest) nearest = x, best = c;
+  }
+  return best;
+}
+
+// Where the segment's line through a place inside a face leaves the face, ahead or behind.
+Place face_exit(const MeshArrays& m, const Place& p, const CutPlane& plane, double on_plane, bool ahead, size_t i) {
+  const std::optional<Place> c = next_crossing(m, p.face, p, plane, on_plane, ahead);
+  if (!c)
+    throw Error("the cut from point " + std::to_string(i + 1) + " to point " + std::to_string(i + 2) +
+                " does not leave face " + std::to_string(p.face));
+  return *c;
+}
+
+// The faces the cut may go on into from a place.
+std::vector<int> faces_from(const Place& p, const std::vector<std::vector<int>>& faces_at, const DirectedEdges& edges) {
+  if (p.kind == Place::inside) return {p.face};
+  if (p.kind == Place::vertex) return faces_at[size_t(p.a)];
+  std::vector<int> out;
+  for (const int f : {face_of_edge(edges, p.a, p.b).first, face_of_edge(edges, p.b, p.a).first})
+    if (f >= 0) out.push_back(f);
+  return out;
+}
+
+// The normal of the surface at a place: the sum of the unit normals of the faces holding it.
+Vec3 normal_at(const MeshArrays& m, const Place& p, const std::vector<std::vector<int>>& faces_at,
+               const DirectedEdges& edges) {
+  Vec3 n = Vec3::Zero();
+  for (const int f : faces_from(p, faces_at, edges)) n += unit_normal(m, f);
+  return n.normalized();
+}
+
+std::string segment_name(size_t i) {
+  return "the cut from point " + std::to_string(i + 1) + " to point " + std::to_string(i + 2);
+}
+
+// The steps of the cut from one place to the next, face by face along the plane (segment i).
+std::vector<Step> walk_segment(const MeshArrays& m, const std::vector<std::vector<int>>& faces_at,
+                               const DirectedEdges& edges, Place from, const Place& to, const CutPlane& plane,
+                               double on_plane, size_t i) {
+  std::vector<Step> steps;
+  int came_from = -1;
+  for (size_t n = 0; n <= m.faces.size(); ++n) {
+    std::vector<int> ahead = faces_from(from, faces_at, edges);
+    ahead.erase(std::remove(ahead.begin(), ahead.end(), came_from), ahead.end());
+    if (ahead.empty()) throw Error(segment_name(i) + " leaves the mesh at its boundary");
+    for (const int f : ahead)
+      if (holds(m, f, to)) {
+        steps.push_back({f, to});
+        return steps;
+      }
+    // Into the face whose stretch of the cut heads most nearly along the segment.
+    std::optional<Step> best;
+    double best_heading = -1;
+    for (const int f : ahead)
+      if (const std::optional<Place> c = next_crossing(m, f, from, plane, on_plane, true))
+        if (const double heading = plane.forward.dot((c->at - from.at).normalized()); heading > best_heading)
+          best_heading = heading, best = Step{f, *c};
+    if (!best) break;
+    steps.push_back(*best);
+    came_from = best->face;
+    from = best->to;
+  }
+  throw Error(segment_name(i) + " does not reach it across the faces");
+}
+
+// The Gaussian at x inside face f: the 9D blend of its corners by mean value coordinates (Floater,
+// "Mean value coordinates", 2003, Eq. 3.1): w_k ∝ (tan(α_{k−1}/2) + tan(α_k/2)) / |v_k − x|, α_k the
+// angle at x from corner k to corner k + 1.
+Gaussian inside_blend(const MeshArrays& m, int f, const Vec3& x) {
+  const std::vector<int>& face = m.faces[size_t(f)];
+  const Vec3 n = unit_normal(m, f);
+  const size_t c = face.size();
+  std::vector<double> tan_half(c), weight(c);
+  for (size_t k = 0; k < c; ++k) {
+    const Vec3 e = m.means[size_t(face[k])] - x, g = m.means[size_t(face[(k + 1) % c])] - x;
+    tan_half[k] = e.cross(g).dot(n) / (e.norm() * g.norm() + e.dot(g));
+  }
+  double total = 0;
+  for (size_t k = 0; k < c; ++k)
+    total += weight[k] = (tan_half[(k + c - 1) % c] + tan_half[k]) / (m.means[size_t(face[k])] - x).norm();
+  std::vector<std::pair<int, double>> weights;
+  for (size_t k = 0; k < c; ++k) weights.emplace_back(face[k], weight[k] / total);
+  return blend_gaussians(m, weights);
+}
+
+// Whether x and y are neighbours in one of the pieces.
+bool neighbours(const std::vector<std::vector<int>>& pieces, int x, int y) {
+  for (const std::vector<int>& piece : pieces)
+    for (size_t k = 0; k < piece.size(); ++k) {
+      const int u = piece[k], w = piece[(k + 1) % piece.size()];
+      if ((u == x && w == y) || (u == y && w == x)) return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
+  if (points.size() < 2) throw Error("the knife needs at least 2 points, got " + std::to_string(points.size()));
+  MeshArrays a = arrays_of(mesh);
+  const double diagonal = bounding_box_diagonal(mesh);
+  const double tolerance = kPointOnMesh * diagonal, on_plane = kVertexOnCutPlane * diagonal;
+  std::vector<Place> places;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const std::string name = "point " + std::to_string(i + 1);
+    if (!points[i].allFinite()) throw Error(name + " has a number that is not finite");
+    const std::optional<Place> p = place_of(a, points[i], tolerance);
+    if (!p) throw Error(name + " is not on the mesh");
+    if (!places.empty() && (p->at - places.back().at).norm() <= tolerance)
+      throw Error(name + " is at point " + std::to_string(i));
+    places.push_back(*p);
+  }
+
+  // The cut as a start and steps, each segment along its own plane.
+  std::vector<std::vector<int>> faces_at(size_t(a.n_vertices()));
+  for (int f = 0; f < a.n_faces(); ++f)
+    for (int v : a.faces[size_t(f)]) faces_at[size_t(v)].push_back(f);
+  const DirectedEdges edges = directed_edges(a);
+  Place start = places[0];
+  std::vector<Step> steps;
+  for (size_t i = 0; i + 1 < places.size(); ++i) {
+    const Place &from = places[i], &to = places[i + 1];
+    const Vec3 forward = (to.at - from.at).normalized();
+    Vec3 normals = normal_at(a, from, faces_at, edges) + normal_at(a, to, faces_at, edges);
+    if (!(normals.norm() > 1e-6)) normals = normal_at(a, from, faces_at, edges);
+    const CutPlane plane{from.at, forward.cross(normals).normalized(), forward};
+    if (!plane.normal.allFinite() || !(plane.normal.norm() > 0))
+      throw Error(segment_name(i) + " runs along the surface's normal");
+    // A path end inside a face is moved to where its segment leaves the face.
+    if (i == 0 && start.kind == Place::inside) start = face_exit(a, start, plane, on_plane, false, i);
+    const std::vector<Step> more = walk_segment(a, faces_at, edges, from, to, plane, on_plane, i);
+    steps.insert(steps.end(), more.begin(), more.end());
+    if (i + 2 == places.size() && to.kind == Place::inside)
+      steps.back().to = face_exit(a, to, plane, on_plane, true, i);
+  }
+
+  // Vertices along the cut, in its order: new ones on edges (one per crossing place) and inside faces.
+  const int n_faces = a.n_faces(), n_vertices = a.n_vertices();
+  std::map<uint64_t, std::vector<std::pair<double, int>>> on_edges;  // by edge: (t from its lower end, vertex)
+  const auto vertex_of = [&](const Place& p) {
+    if (p.kind == Place::vertex) return p.a;
+    if (p.kind == Place::inside) return a.add_vertex(inside_blend(a, p.face, p.at));
+    std::vector<std::pair<double, int>>& cut = on_edges[edge_key(p.a, p.b)];
+    for (const auto& [t, v] : cut)
+      if (std::abs(t - p.t) <= 1e-12) return v;
+    cut.emplace_back(p.t, add_edge_vertex(a, p.a, p.b, p.t));
+    return cut.back().second;
+  };
+  // The cut's chords by face: from a vertex or edge place through places inside the face to the next.
+  std::map<int, std::vector<std::vector<int>>> chords;
+  std::vector<int> on_cut = {vertex_of(start)}, chord = on_cut;
+  for (const Step& s : steps) {
+    on_cut.push_back(vertex_of(s.to));
+    chord.push_back(on_cut.back());
+    if (s.to.kind == Place::inside) continue;
+    chords[s.face].push_back(chord);
+    chord = {on_cut.back()};
+  }
+  for (auto& [key, cut] : on_edges) std::sort(cut.begin(), cut.end());
+
+  const bool triangles = all_triangles(a);
+  size_t split_faces = 0;
+  for (int f = 0; f < n_faces; ++f) {
+    const std::vector<int>& face = a.faces[size_t(f)];
+    // The face with its edges' new vertices in order from each edge's start.
+    std::vector<int> cycle;
+    for (size_t k = 0; k < face.size(); ++k) {
+      const int u = face[k], w = face[(k + 1) % face.size()];
+      cycle.push_back(u);
+      if (const auto cut = on_edges.find(edge_key(u, w)); cut != on_edges.end()) {
+        std::vector<int> between;
+        for (const auto& [t, v] : cut->second) between.push_back(v);
+        if (u > w) std::reverse(between.begin(), between.end());
+        cycle.insert(cycle.end(), between.begin(), between.end());
+      }
+    }
+    std::vector<std::vector<int>> pieces = {cycle};
+    for (const std::vector<int>& c : chords[f]) {
+      if (c.size() == 2 && neighbours(pieces, c[0], c[1])) continue;  // along an edge already there
+      if (!split_along(pieces, c)) throw Error("the cut crosses itself in face " + std::to_string(f));
+    }
+    if (pieces.size() == 1 && cycle.size() == face.size()) continue;
+    split_faces += pieces.size() > 1;
+    if (triangles) triangulate_pieces(pieces, a.means, newell_normal(a, f));
+    a.faces[size_t(f)] = pieces[0];
+    a.faces.insert(a.faces.end(), pieces.begin() + 1, pieces.end());
+  }
+  if (split_faces == 0) throw Error("the cut runs along edges already there: no face is split");
+
+  std::sort(on_cut.begin(), on_cut.end());
+  on_cut.erase(std::unique(on_cut.begin(), on_cut.end()), on_cut.end());
+  Modelled out{build_mesh(a), on_cut, ""};
+  out.summary = "cut " + count_of(split_faces, "face", "faces") + " along " +
+                count_of(points.size(), "point", "points") + ": " +
+                count_of(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
+                count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
+  return out;
+}
+
+}  // namespace gps
