@@ -25,6 +25,7 @@
 #include "ui/overlays/cursor_overlay.h"
 #include "ui/tools/bevel_tool.h"
 #include "ui/tools/inset_tool.h"
+#include "ui/tools/knife_tool.h"
 #include "ui/tools/loop_cut_tool.h"
 #include "ui/tools/sharpness_tool.h"
 #include "ui/tools/transform_tool.h"
@@ -118,6 +119,10 @@ void EditorApp::build_modelling_commands() {
   t.add({"Mesh", "Loop cut (then wheel: cuts)", {key(GLFW_KEY_R, true)}, [this] {
            start_tool([](ToolContext& ctx) { return std::make_unique<LoopCutTool>(ctx); });
          }});
+  t.add({"Mesh",
+         "Knife (K; click points, Enter or Space cuts, Backspace takes one back)",
+         {key(GLFW_KEY_K)},
+         [this] { start_tool([](ToolContext& ctx) { return std::make_unique<KnifeTool>(ctx); }); }});
   t.add({"Mesh", "Inset faces", {key(GLFW_KEY_I)}, [this] { start_tool(InsetTool::start); }, selected});
   t.add({"Mesh",
          "Bevel edges (Ctrl+B; then wheel: segments, P: profile)",
