@@ -77,7 +77,7 @@ std::optional<SnapPoint> find_snap_point(const CovarianceMesh& mesh, const Viewp
         const Vec3 point = pa + closest_on_segment(pa, pb, o, d) * (pb - pa);
         const auto at = visible_pixel(view.camera, view.width, view.height, point);
         if (!at) continue;
-        const float distance = glm::length(glm::vec2(*at) - pixel);
+        const float distance = glm::length(glm::vec2(*at) - (pixel + glm::vec2(0.5f)));  // from the pixel's centre
         if (distance > best_distance) continue;
         best_distance = distance;
         best = SnapPoint{point, "edge " + std::to_string(std::min(a, b)) + "–" + std::to_string(std::max(a, b))};

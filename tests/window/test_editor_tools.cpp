@@ -15,6 +15,7 @@
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
 #include "core/modelling/bevel.h"
+#include "core/modelling/knife.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/samples.h"
@@ -358,6 +359,52 @@ TEST_F(EditorToolsSnap, ShiftRightClickPlacesThe3DCursorOnTheSurface) {
   const auto pixel = project_to_pixel(view_.camera, kWidth, kHeight, point);
   ASSERT_TRUE(pixel);
   EXPECT_LT(glm::length(glm::vec2(*pixel) - at), 1.5f) << pixel->x << ", " << pixel->y;
+}
+
+// The knife (K) on the cube's top face (4–5–6–7, z = 1, towards the camera), clicked 3 pixels inside
+// the face beside the middles of its edges 4–5 and 6–7, which the clicks snap to.
+class EditorToolsKnife : public EditorTools {
+protected:
+  glm::vec2 beside_middle(int a, int b) const {
+    const glm::vec2 middle = pixel_at({a, b}), centre = pixel_at({4, 5, 6, 7});
+    return middle + 3.0f * glm::normalize(centre - middle);
+  }
+  Vec3 middle(int a, int b) const { return (original_.mean(size_t(a)) + original_.mean(size_t(b))) / 2; }
+  Events two_points() const {
+    Events e;
+    e.move(pixel_at({4, 5, 6, 7})).wait().key("k").wait();
+    e.click(beside_middle(4, 5)).wait().click(beside_middle(6, 7)).wait();
+    return e;
+  }
+};
+
+// K, two clicks, Enter: exactly core's knife through the two middles (10 vertices, 7 faces, closed).
+TEST_F(EditorToolsKnife, KnifeAcrossTheCubeTopIsCoresKnife) {
+  Events cut = two_points();
+  cut.key("enter").wait(3);
+  const CovarianceMesh saved = play(cut, "cube_knife_cut.png");
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, 10);
+  EXPECT_EQ(shape.faces, 7);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_TRUE(test::same_mesh(saved, knife(original_, {middle(4, 5), middle(6, 7)}).mesh));
+  EXPECT_NE(output_.find("knife: cut 1 face along 2 points"), std::string::npos) << output_;
+}
+
+// Esc after two points cancels; two points taken back by Backspace leave nothing to cut on Enter; two
+// more points are only drawn (the screenshot shows the path on to the pointer): the document saved is
+// the file as opened.
+TEST_F(EditorToolsKnife, KnifeEscBackspaceAndThePathChangeNothing) {
+  Events events = two_points();
+  events.key("escape").wait();
+  events.key("k").wait().click(beside_middle(4, 5)).wait().click(beside_middle(6, 7)).wait();
+  events.key("backspace").wait().key("backspace").wait().key("enter").wait();
+  events.click(beside_middle(4, 5)).wait().click(beside_middle(6, 7)).wait();
+  events.move(pixel_at({4, 5, 6, 7}) + glm::vec2(30.0f, 10.0f)).wait(3);
+  play(events, "cube_knife_path.png");
+  EXPECT_TRUE(saved_is_original());
+  EXPECT_NE(output_.find("knife cancelled"), std::string::npos) << output_;
 }
 
 }  // namespace

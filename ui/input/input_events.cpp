@@ -47,6 +47,9 @@ void feed_imgui(ImGuiIO& io, const InputState& state, const std::vector<InputEve
   io.MousePos = ImVec2(state.cursor.x, state.cursor.y);
   for (int b = 0; b < 3; ++b) io.MouseDown[b] = state.buttons[size_t(b)];
   for (size_t k = 0; k < state.keys.size() && k < IM_ARRAYSIZE(io.KeysDown); ++k) io.KeysDown[k] = state.keys[k];
+  // Tab goes to Dear ImGui only while it has the keyboard (between text fields): otherwise Shift+Tab
+  // (snapping) would focus a panel's field and Ctrl+Tab open its window switcher, both taking the keys.
+  if (state.ctrl() || !io.WantCaptureKeyboard) io.KeysDown[GLFW_KEY_TAB] = false;
   io.KeyCtrl = state.ctrl();
   io.KeyShift = state.shift();
   io.KeyAlt = state.alt();

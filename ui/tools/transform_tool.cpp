@@ -153,8 +153,9 @@ void TransformTool::end(bool keep, ToolContext& ctx) {
     return;
   }
   const std::string described = transform_->describe();
-  const std::string done =
-      described.substr(0, described.find("  (")) + (ctx.transform_gaussians ? "" : "  (positions only)");
+  const std::string done = described.substr(0, described.find("  (")) +
+                           (snapped_ ? ", snapped to " + snapped_->element : "") +
+                           (ctx.transform_gaussians ? "" : "  (positions only)");
   // Vertices a mirror (negative determinant) carried: the parts they make up whole get their faces
   // reversed with them, as Blender does, so that the surface stays outward.
   std::vector<int> mirrored_vertices;
