@@ -1,5 +1,5 @@
 #pragma once
-// The editor's modal tools (G / S / R, loop cut, inset, crease, bevel, slide) behind one interface:
+// The editor's modal tools (G / S / R, loop cut, knife, inset, crease, bevel, slide) behind one interface:
 // once started, a tool takes the events first until it is confirmed or cancelled. It sees the editor
 // only through a ToolContext, so that a new tool is one class and one command, and EditorApp holds
 // at most one tool and hands it each event.
