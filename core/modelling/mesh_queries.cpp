@@ -1,6 +1,7 @@
 #include "core/modelling/mesh_queries.h"
 
 #include <algorithm>
+#include <map>
 #include <string>
 
 #include "core/support/error.h"
@@ -169,6 +170,34 @@ std::vector<std::array<int, 2>> edges_within(const CovarianceMesh& mesh, const s
       if (w.idx() > v && selected[size_t(w.idx())]) edges.push_back({v, w.idx()});
   std::sort(edges.begin(), edges.end());
   return edges;
+}
+
+std::vector<int> chain_of_edges(const std::vector<std::array<int, 2>>& edges) {
+  if (edges.empty()) throw Error("no edges: select a chain of edges (both ends of each)");
+  std::map<int, std::vector<int>> next;  // each vertex's neighbours along the edges
+  for (const auto& [a, b] : edges) {
+    if (a == b) throw Error("vertex " + std::to_string(a) + " is joined to itself");
+    next[a].push_back(b);
+    next[b].push_back(a);
+  }
+  int start = next.begin()->first, end = -1;  // a closed chain starts at its smallest vertex
+  for (const auto& [v, neighbours] : next) {
+    if (neighbours.size() > 2) throw Error("the edges branch at vertex " + std::to_string(v) + ": select one chain");
+    if (neighbours.size() == 1 && end < 0) end = v;  // the lower-numbered end of an open chain
+  }
+  if (end >= 0) start = end;
+  std::vector<int> chain{start};
+  int previous = -1, at = start;
+  for (size_t k = 0; k < edges.size(); ++k) {
+    const std::vector<int>& n = next[at];
+    const int step = n[0] != previous ? n[0] : n.size() > 1 ? n[1] : -1;
+    if (step < 0) break;
+    previous = at;
+    at = step;
+    chain.push_back(at);
+  }
+  if (chain.size() != edges.size() + 1) throw Error("the selected edges are not one connected chain");
+  return chain;
 }
 
 std::vector<std::vector<int>> boundary_loops(const CovarianceMesh& mesh) {

@@ -32,6 +32,12 @@ std::vector<int> faces_within(const CovarianceMesh& mesh, const std::vector<int>
 /// The edges both of whose ends are selected, each once as (min, max), sorted.
 std::vector<std::array<int, 2>> edges_within(const CovarianceMesh& mesh, const std::vector<int>& vertices);
 
+/// The vertices of `edges` in order along them, where they form one simple chain: an open one from its
+/// lower-numbered end, a closed one from its smallest vertex with that vertex again at the end (as
+/// spin takes a profile). Throws gps::Error naming a vertex where the edges branch, or saying they
+/// are not connected or there are none.
+std::vector<int> chain_of_edges(const std::vector<std::array<int, 2>>& edges);
+
 /// The mean of the vertices' means (zero for none): where an inset moves towards and a bevel's width
 /// is measured from.
 Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices);

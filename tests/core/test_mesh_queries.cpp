@@ -149,3 +149,22 @@ TEST(MeshQueries, LargeMeshesAnswerInOnePass) {
 
 }  // namespace
 }  // namespace gps
+
+namespace gps {
+namespace {
+
+TEST(MeshQueries, ChainOfEdgesOrdersAPathOrALoop) {
+  EXPECT_EQ(chain_of_edges({{5, 9}, {2, 5}, {9, 4}}), (std::vector<int>{2, 5, 9, 4}));  // from the lower end
+  EXPECT_EQ(chain_of_edges({{3, 1}}), (std::vector<int>{1, 3}));
+  EXPECT_EQ(chain_of_edges({{7, 3}, {1, 7}, {3, 1}}), (std::vector<int>{1, 7, 3, 1}));  // closed: 1 again
+  const auto refusal = [](const std::vector<std::array<int, 2>>& edges) {
+    return test::error_of([&] { chain_of_edges(edges); });
+  };
+  EXPECT_EQ(refusal({{0, 1}, {1, 2}, {1, 3}}), "the edges branch at vertex 1: select one chain");
+  EXPECT_EQ(refusal({{0, 1}, {2, 3}}), "the selected edges are not one connected chain");
+  EXPECT_EQ(refusal({{0, 1}, {1, 2}, {2, 0}, {4, 5}}), "the selected edges are not one connected chain");
+  EXPECT_NE(refusal({}), "");
+}
+
+}  // namespace
+}  // namespace gps

@@ -12,14 +12,20 @@
 
 #include "../support/editor_driver.h"
 #include "../support/mesh_checks.h"
+#include "../support/test_meshes.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
 #include "core/modelling/bevel.h"
+#include "core/modelling/bisect.h"
+#include "core/modelling/delete_elements.h"
 #include "core/modelling/knife.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/mesh_queries.h"
+#include "core/modelling/mirror.h"
 #include "core/modelling/samples.h"
 #include "core/modelling/slide.h"
+#include "core/modelling/spin.h"
+#include "render/image/image_io.h"
 
 namespace gps {
 namespace {
@@ -249,6 +255,30 @@ TEST_F(EditorToolsSlide, SlideFollowsTheMouseAndEscRestores) {
 }
 
 
+// Spin (Alt+R) of a grid's far boundary edge around the 3D cursor at the origin (Shift+C), about x,
+// typed 90°: exactly core's spin of that edge in Blender's 9 steps; the wheel adds a step; Esc leaves
+// the file.
+TEST_F(EditorTools, SpinTurnsAnEdgeAroundThe3DCursor) {
+  use_mesh(test::grid_mesh(2, 2));
+  const Events select = Events().click(pixel_at({6})).wait().click(pixel_at({7}), "shift").wait().key("shift+c").wait();
+  Events spun = select;
+  spun.key("alt+r").wait().key("x").wait().text("90").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(spun, "grid_edge_spun.png");
+  const Modelled expected = spin(original_, {6, 7}, Vec3::UnitX(), Vec3::Zero(), 90.0, 9);
+  EXPECT_TRUE(test::same_mesh(saved, expected.mesh));
+  EXPECT_EQ(saved.mesh.n_faces(), original_.mesh.n_faces() + 9);
+  EXPECT_NE(output_.find("spin: "), std::string::npos) << output_;
+
+  Events more = select;
+  more.key("alt+r").wait().key("x").wait().text("90").wait().scroll(pixel_at({4}), 1.0f).wait().key("enter").wait(3);
+  EXPECT_EQ(play(more).mesh.n_faces(), original_.mesh.n_faces() + 10);
+
+  Events cancelled = select;
+  cancelled.key("alt+r").wait().text("90").wait().key("escape").wait(3);
+  play(cancelled);
+  EXPECT_TRUE(saved_is_original());
+}
+
 // Snapping while transforming and the 3D cursor, on the cube.
 class EditorToolsSnap : public EditorTools {
 protected:
@@ -359,6 +389,116 @@ TEST_F(EditorToolsSnap, ShiftRightClickPlacesThe3DCursorOnTheSurface) {
   const auto pixel = project_to_pixel(view_.camera, kWidth, kHeight, point);
   ASSERT_TRUE(pixel);
   EXPECT_LT(glm::length(glm::vec2(*pixel) - at), 1.5f) << pixel->x << ", " << pixel->y;
+}
+
+// The mirror modifier (Ctrl+Alt+M) on the cube's x ≥ 0 half, cut at x = 0 by bisect: the editor
+// shows the half mirrored about x = 0 and merged at the seam while the file keeps the half.
+class EditorToolsMirror : public EditorTools {
+protected:
+  void SetUp() override {
+    const CovarianceMesh cut = bisect(make_sample("cube"), Vec3::Zero(), Vec3(1, 0, 0)).mesh;
+    std::vector<int> left;
+    for (size_t v = 0; v < cut.n_vertices(); ++v)
+      if (cut.mean(v).x() < 0) left.push_back(int(v));
+    use_mesh(delete_vertices(cut, left).mesh);
+    for (size_t v = 0; v < original_.n_vertices(); ++v) {
+      const Vec3 p = original_.mean(v);
+      if (p.x() == 0 && p.y() > 0 && p.z() > 0) seam_ = int(v);  // on the plane, top front
+      if (p.x() > 0 && p.y() > 0 && p.z() > 0) corner_ = int(v);  // the far corner, top front
+    }
+    ASSERT_EQ(original_.n_vertices(), 8u);
+    ASSERT_GE(seam_, 0);
+    ASSERT_GE(corner_, 0);
+  }
+  // A click on `vertex` (Shift: added to the selection), in the first view of the half, or with
+  // `mirrored` in that of its mirror (the file opened with the modifier on frames the whole).
+  Events& select(Events& e, int vertex, bool add = false, bool mirrored = false) const {
+    const Viewport view = mirrored ? editor_view(mirror(original_, 0, Vec3::Zero(), true).mesh) : view_;
+    return e.click(pixel_of(view, original_.mean(size_t(vertex))), add ? "shift" : "").wait();
+  }
+  int seam_ = -1, corner_ = -1;
+};
+
+// The far top corner raised by G Y 0.5 with the modifier on: the file keeps the half with that move
+// only, and the front view of the whole (Home, numpad 1; nothing selected) is the shape mirrored about
+// its centre column, as wide as high (the half alone is half as wide and its raised corner on one side).
+TEST_F(EditorToolsMirror, MirrorShowsTheEditOnBothSides) {
+  Events e;
+  select(e, corner_).key("ctrl+alt+m").wait().key("g").wait().key("y").wait().text("0.5").wait().key("enter").wait();
+  e.key("alt+a").wait().key("kp1").wait().key("home").wait(3);
+  const CovarianceMesh saved = play(e, "mirror_half_cube_front.png");
+  ASSERT_EQ(saved.n_vertices(), original_.n_vertices());
+  for (size_t v = 0; v < saved.n_vertices(); ++v)
+    EXPECT_EQ(saved.mean(v), original_.mean(v) + (int(v) == corner_ ? Vec3(0, 0.5, 0) : Vec3::Zero())) << v;
+  EXPECT_NE(output_.find("mirror modifier on: the plane x = 0, clipping on"), std::string::npos) << output_;
+
+  const Image shot = read_image(artefact("mirror_half_cube_front.png"));
+  const auto [free_min, free_max] = test::editor_free_region();
+  // The surface: the clay MatCap's reddish pixels (the background, the mesh lines and the panels are grey).
+  const auto surface = [&](int x, int y) { return shot.at(x, y, 0) - shot.at(x, y, 2) > 0.08f; };
+  int left = shot.width, right = -1, top = shot.height, bottom = -1;
+  for (int y = int(free_min.y) + 2; y < int(free_max.y) - 2; ++y)
+    for (int x = int(free_min.x) + 2; x < int(free_max.x) - 2; ++x)
+      if (surface(x, y)) left = std::min(left, x), right = std::max(right, x), top = std::min(top, y), bottom = std::max(bottom, y);
+  ASSERT_GT(right - left, 50) << "no surface in the screenshot";
+  const double aspect = double(right - left) / double(bottom - top);
+  EXPECT_GT(aspect, 0.75) << "the mirror side is missing";
+  long long on = 0, unlike = 0;
+  for (int y = top; y <= bottom; ++y)
+    for (int x = left; x <= right; ++x) {
+      on += surface(x, y);
+      unlike += surface(x, y) != surface(left + right - x, y);
+    }
+  EXPECT_LT(double(unlike), 0.01 * double(on)) << unlike << " of " << on << " surface pixels have no mirror image";
+}
+
+// Apply (Ctrl+Alt+Shift+M) after a seam vertex moved up: the file is core's mirror of the half as edited,
+// closed (12 vertices, 10 faces), as one undo step (Ctrl+Z gives the half back).
+TEST_F(EditorToolsMirror, MirrorApplyWritesCoresMirror) {
+  Events e;
+  select(e, seam_).key("ctrl+alt+m").wait().key("g").wait().key("z").wait().text("0.25").wait().key("enter").wait();
+  e.key("ctrl+alt+shift+m").wait(3);
+  const CovarianceMesh saved = play(e, "mirror_applied.png");
+  CovarianceMesh half = original_;
+  half.set_mean(size_t(seam_), original_.mean(size_t(seam_)) + Vec3(0, 0, 0.25));
+  EXPECT_TRUE(test::same_mesh(saved, mirror(half, 0, Vec3::Zero(), true).mesh));
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, 12);
+  EXPECT_EQ(shape.faces, 10);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_NE(output_.find("apply mirror modifier: mirrored 8 vertices and 5 faces in x, 4 vertices merged"),
+            std::string::npos)
+      << output_;
+
+  e.key("ctrl+z").wait(3);
+  const CovarianceMesh undone = play(e);
+  EXPECT_TRUE(test::same_mesh(undone, half));
+}
+
+// Clipping: G X 0.3 on a seam vertex and the far corner moves the corner by 0.3 and keeps the seam
+// vertex on the plane (x = 0 exactly; its y and z as they were). The modifier is kept for the file:
+// opened again it is on (the same move clipped) until Ctrl+Alt+M turns it off, and the seam vertex
+// then leaves the plane.
+TEST_F(EditorToolsMirror, MirrorClippingKeepsTheSeamOnThePlane) {
+  const auto moved = [&](const std::string& keys, bool mirrored, const std::string& screenshot = "") {
+    Events e;
+    select(e, seam_, false, mirrored);
+    select(e, corner_, true, mirrored);
+    if (!keys.empty()) e.key(keys).wait();
+    e.key("g").wait().key("x").wait().text("0.3").wait().key("enter").wait(3);
+    return play(e, screenshot);
+  };
+  const auto expect_clipped = [&](const CovarianceMesh& saved) {
+    EXPECT_EQ(saved.mean(size_t(seam_)), original_.mean(size_t(seam_)));
+    EXPECT_NEAR(saved.mean(size_t(corner_)).x(), original_.mean(size_t(corner_)).x() + 0.3, 1e-12);
+  };
+  expect_clipped(moved("ctrl+alt+m", false, "mirror_clipped.png"));
+  expect_clipped(moved("", true));
+  const CovarianceMesh unclipped = moved("ctrl+alt+m", true);
+  EXPECT_NEAR(unclipped.mean(size_t(seam_)).x(), 0.3, 1e-12);
+  EXPECT_NEAR(unclipped.mean(size_t(corner_)).x(), original_.mean(size_t(corner_)).x() + 0.3, 1e-12);
+  EXPECT_NE(output_.find("mirror modifier off"), std::string::npos) << output_;
 }
 
 // The knife (K) on the cube's top face (4–5–6–7, z = 1, towards the camera), clicked 3 pixels inside

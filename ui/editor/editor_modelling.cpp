@@ -28,6 +28,7 @@
 #include "ui/tools/knife_tool.h"
 #include "ui/tools/loop_cut_tool.h"
 #include "ui/tools/sharpness_tool.h"
+#include "ui/tools/spin_tool.h"
 #include "ui/tools/transform_tool.h"
 
 namespace gps {
@@ -124,6 +125,11 @@ void EditorApp::build_modelling_commands() {
          {key(GLFW_KEY_K)},
          [this] { start_tool([](ToolContext& ctx) { return std::make_unique<KnifeTool>(ctx); }); }});
   t.add({"Mesh", "Inset faces", {key(GLFW_KEY_I)}, [this] { start_tool(InsetTool::start); }, selected});
+  t.add({"Mesh",
+         "Spin around the 3D cursor (Alt+R; mouse or typed degrees, wheel: steps)",
+         {key(GLFW_KEY_R, false, false, true)},
+         [this] { start_tool(SpinTool::start); },
+         selected});
   t.add({"Mesh",
          "Bevel edges (Ctrl+B; then wheel: segments, P: profile)",
          {key(GLFW_KEY_B, true)},
@@ -254,12 +260,12 @@ bool EditorApp::operate(const std::string& name, const std::function<Modelled(co
 }
 
 void EditorApp::install(const Modelled& result, SharpnessReplanner* replanner) {
+  std::optional<PlannedSurface> surface;
   if (replanner) {  // first: it throws before anything changes
     replanner->set_sharpness(result.mesh.sharpness);
-    renderer_->set_mesh(result.mesh, PlannedSurface(result.mesh, replanner->scheme(), replanner->tables()));
-  } else {
-    renderer_->set_mesh(result.mesh, view_.plans());
+    if (!mirror_.settings.enabled) surface.emplace(result.mesh, replanner->scheme(), replanner->tables());
   }
+  show_mesh(result.mesh, view_.plans(), std::move(surface));
   surface_changed();
   preview_.reset();
   preview_selection_.clear();
@@ -278,7 +284,7 @@ void EditorApp::topology_changed(const std::vector<int>& selection) {
 
 void EditorApp::rebuild_after_undo(const std::vector<int>& selection) {
   try {
-    renderer_->set_mesh(document_.mesh(), view_.plans());
+    show_mesh(document_.mesh(), view_.plans());
     surface_changed();
   } catch (const Error& e) {
     set_status(e.what(), true);
