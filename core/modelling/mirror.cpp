@@ -38,9 +38,11 @@ void check_mirror_plane(int axis, const Vec3& center) {
 
 }  // namespace
 
+double mirror_merge_distance(const CovarianceMesh& mesh) { return kOnPlane * bounding_box_diagonal(mesh); }
+
 std::vector<int> mirror_images(const CovarianceMesh& mesh, int axis, const Vec3& center, bool merge) {
   check_mirror_plane(axis, center);
-  const double tolerance = kOnPlane * bounding_box_diagonal(mesh);
+  const double tolerance = mirror_merge_distance(mesh);
   const int n_vertices = int(mesh.n_vertices());
   std::vector<int> images(static_cast<size_t>(n_vertices));
   int next = n_vertices;

@@ -17,6 +17,9 @@ namespace gps {
 /// so that an edit of the mesh can be shown on the result by index (mirror_images, update_mirrored).
 Modelled mirror(const CovarianceMesh& mesh, int axis, const Vec3& center, bool merge);
 
+/// How near the plane a vertex lies that mirror() merges: 1e-5 of the mesh's bounding-box diagonal.
+double mirror_merge_distance(const CovarianceMesh& mesh);
+
 /// The index each vertex's image has in mirror()'s result: the vertex itself where it is merged on
 /// the plane, else n + its rank among the vertices not merged.
 std::vector<int> mirror_images(const CovarianceMesh& mesh, int axis, const Vec3& center, bool merge);

@@ -1,6 +1,7 @@
 #include "ui/document/editor_document.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -77,7 +78,9 @@ void EditorDocument::touch(int vertex) {
 
 void EditorDocument::set_mean(int vertex, const Vec3& mean) {
   touch(vertex);
-  mesh_.set_mean(size_t(vertex), mean);
+  Vec3 kept = mean;
+  if (clip_ && std::abs(start_mean(vertex)[clip_->axis]) <= clip_->tolerance) kept[clip_->axis] = 0.0;
+  mesh_.set_mean(size_t(vertex), kept);
 }
 
 void EditorDocument::set_covariance(int vertex, const Mat3& covariance) {

@@ -14,6 +14,13 @@
 
 namespace gps {
 
+/// A plane x, y or z = 0 that edits keep vertices on (the mirror modifier's clipping): a vertex that
+/// starts an edit within `tolerance` of it keeps its coordinate along `axis` at 0.
+struct PlaneClip {
+  int axis = 0;
+  double tolerance = 0.0;
+};
+
 class EditorDocument {
 public:
   /// Reads a mesh file (covariance PLY, or OBJ/OFF/STL/plain PLY with inferred covariances).
@@ -46,7 +53,7 @@ public:
   // change vertices; the first change of a vertex records its start value.
   void begin_edit();
   bool editing() const { return edit_.has_value(); }
-  void set_mean(int vertex, const Vec3& mean);
+  void set_mean(int vertex, const Vec3& mean);  // on the clip plane, where the vertex started there
   void set_covariance(int vertex, const Mat3& covariance);
   /// Sets every vertex whose Gaussian differs in `mesh` (a mesh of the same vertices: a tool's result
   /// recomputed from the mesh before it) to that Gaussian. False, changing nothing, where the vertex
@@ -82,6 +89,9 @@ public:
   std::optional<std::vector<int>> undo();
   std::optional<std::vector<int>> redo();
 
+  /// Keeps the vertices on the plane that start an edit on it (none: no clipping).
+  void set_clip(std::optional<PlaneClip> clip) { clip_ = clip; }
+
   /// The vertices whose Gaussians changed since the last call (ascending, unique): what the GPU
   /// must re-read. A new mesh is not listed: whoever opens it rebuilds from scratch.
   std::vector<int> take_changed();
@@ -95,6 +105,7 @@ private:
   std::optional<VertexEdit> edit_;
   std::unordered_map<int, size_t> edit_index_;  // vertex → its slot in edit_
   std::vector<int> changed_;
+  std::optional<PlaneClip> clip_;
   std::string source_path_, ply_path_, display_name_;
   bool binary_ = true;
 };

@@ -179,8 +179,7 @@ void EditorApp::render_and_present() {
   const std::vector<int> changed = document_.take_changed();
   const bool edited = !changed.empty();
   if (edited) {
-    renderer_->update_vertices(document_.mesh(), changed);
-    surface_changed();
+    show_edit(changed);
   }
   update_target_points();
   if (fb_width > 0 && fb_height > 0) {
@@ -269,7 +268,7 @@ void EditorApp::draw_ui() {
   if (view_.show_view) {
     const ViewPanelChanges c = draw_view_panel(view_, &view_.show_view);
     if (c.depth) try {
-        renderer_->set_mesh(document_.mesh(), view_.plans());
+        show_mesh(document_.mesh(), view_.plans());
         surface_changed();
       } catch (const Error& e) {  // too big for the GPU's buffers: the previous plans stay
         set_status(e.what(), true);

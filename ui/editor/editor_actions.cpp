@@ -119,8 +119,10 @@ void EditorApp::open_sample(const std::string& name) {
 void EditorApp::mesh_replaced() {
   ViewOptions view = view_;
   view.triangle_mesh = scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
+  const auto mirror = view_.mirror_modifiers.find(document_.source_path());
+  mirror_.settings = mirror != view_.mirror_modifiers.end() ? mirror->second : MirrorSettings{};
   try {  // first: it throws before anything changes
-    renderer_->set_mesh(document_.mesh(), view.plans());
+    show_mesh(document_.mesh(), view.plans());
   } catch (const Error& e) {  // the plans' and the GPU's refusals name no file
     throw Error(document_.display_name() + ": " + e.what(), e.kind());
   }
@@ -163,6 +165,7 @@ void EditorApp::save_to(const std::string& path) {
   }
   try {
     document_.save(path);
+    remember_mirror();  // under the file's new name too
     if (!script_) recent_.add(document_.source_path());
     set_status("saved " + path, false);
   } catch (const Error& e) {

@@ -123,6 +123,7 @@ void EditorApp::build_commands() {
          [this] { return view_.show_statistics; }});
   build_target_point_commands();
   build_modelling_commands();
+  build_mirror_commands();
   build_snapping_commands();
   // Help
   t.add({"Help",
@@ -139,10 +140,11 @@ glm::vec2 EditorApp::viewport_size() const {
 }
 
 void EditorApp::frame_vertices(const std::vector<int>& vertices) {
-  if (vertices.empty()) {  // the whole mesh
-    std::vector<int> all(document_.mesh().n_vertices());
+  if (vertices.empty()) {  // the whole mesh, as shown (with the mirror modifier's mirror)
+    const CovarianceMesh& shown = mirror_.mirroring() ? mirror_.mirrored() : document_.mesh();
+    std::vector<int> all(shown.n_vertices());
     for (size_t i = 0; i < all.size(); ++i) all[i] = int(i);
-    camera_ = frame_points_in_region(camera_, document_.mesh(), all, 0.0, viewport_size(), free_min_, free_max_);
+    camera_ = frame_points_in_region(camera_, shown, all, 0.0, viewport_size(), free_min_, free_max_);
     return;
   }
   const double radius = 0.05 * bounding_box_diagonal(document_.mesh());

@@ -65,10 +65,7 @@ bool EditorApp::modal_event(const InputEvent& e) {
 
 void EditorApp::show_preview(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
                              std::optional<PlannedSurface> surface) {
-  if (surface)
-    renderer_->set_mesh(*mesh, std::move(*surface));
-  else
-    renderer_->set_mesh(*mesh, view_.plans());
+  show_mesh(*mesh, view_.plans(), std::move(surface));
   surface_changed();
   check_finite_ = true;
   preview_ = std::move(mesh);
@@ -79,10 +76,7 @@ void EditorApp::show_document(std::optional<PlannedSurface> surface) {
   preview_.reset();
   preview_selection_.clear();
   try {
-    if (surface)
-      renderer_->set_mesh(document_.mesh(), std::move(*surface));
-    else
-      renderer_->set_mesh(document_.mesh(), view_.plans());
+    show_mesh(document_.mesh(), view_.plans(), std::move(surface));
     surface_changed();
     check_finite_ = true;
   } catch (const Error& e) {

@@ -1,0 +1,43 @@
+#include "ui/editing/mirror_modifier.h"
+
+#include "core/modelling/mirror.h"
+#include "core/support/error.h"
+
+namespace gps {
+
+const CovarianceMesh& MirrorModifier::shown(const CovarianceMesh& half, std::string& refusal) {
+  mirrored_.reset();
+  images_.clear();
+  refusal.clear();
+  if (!settings.enabled) return half;
+  try {
+    std::vector<int> images = mirror_images(half, settings.axis, Vec3::Zero(), true);
+    mirrored_ = mirror(half, settings.axis, Vec3::Zero(), true).mesh;
+    images_ = std::move(images);
+    return *mirrored_;
+  } catch (const Error& e) {
+    refusal = e.what();
+    return half;
+  }
+}
+
+std::optional<PlaneClip> MirrorModifier::clip(const CovarianceMesh& half) const {
+  if (!settings.enabled || !settings.clipping) return std::nullopt;
+  return PlaneClip{settings.axis, mirror_merge_distance(half)};
+}
+
+std::optional<std::vector<int>> MirrorModifier::update(const CovarianceMesh& half, const std::vector<int>& changed,
+                                                       std::string& refusal) {
+  if (!mirrored_) return changed;
+  try {
+    if (half.n_vertices() != images_.size()) throw Error("the mesh changed under the mirror");
+    return update_mirrored(half, changed, settings.axis, Vec3::Zero(), images_, *mirrored_);
+  } catch (const Error& e) {
+    refusal = e.what();
+    mirrored_.reset();
+    images_.clear();
+    return std::nullopt;
+  }
+}
+
+}  // namespace gps
