@@ -109,5 +109,20 @@ TEST_F(EditorEdges, AltClickSelectsTheLoopsEdgesWhichShiftECreases) {
   EXPECT_EQ(play(loops, "grid_rows_creased.png").sharpness.creases, rows);
 }
 
+// Ctrl+Alt+click in edge mode selects an edge ring: through the row edge 6–7 of a 4 × 4 grid, the
+// column of rungs a loop cut there would cross (x from 1 to 2 in every row of quads: 5 edges), which
+// Shift+E creases alone, not the rails beside them.
+TEST_F(EditorEdges, CtrlAltClickSelectsTheRingWhichShiftECreases) {
+  write_mesh(dir_.file("original.ply"), test::grid_mesh(4, 4));
+  original_ = read_mesh(dir_.file("original.ply"));
+  view_ = editor_view(original_);
+  Events ring;
+  ring.key("2").wait().click(along(6, 7, 0.5), "ctrl+alt").wait();
+  ring.key("shift+e").wait().text("10").wait().key("enter").wait(3);
+  std::vector<EdgeCrease> rungs;
+  for (int j = 0; j <= 4; ++j) rungs.push_back({5 * j + 1, 5 * j + 2, kInf});
+  EXPECT_EQ(play(ring, "grid_ring_creased.png").sharpness.creases, rungs);
+}
+
 }  // namespace
 }  // namespace gps

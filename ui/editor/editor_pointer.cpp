@@ -148,7 +148,10 @@ void EditorApp::release(const InputEvent& e) {
     box_select(press_pixel_, e.position, input_.shift(), input_.ctrl());
   } else if (alt_press_ && (mode_ == Mode::orbit || mode_ == Mode::pan) &&
              glm::length(e.position - press_pixel_) <= kBoxThreshold) {  // Alt+click, Shift+Alt+click adds
-    loop_select(e.position, input_.shift());
+    if (input_.ctrl())
+      ring_select(e.position, input_.shift());  // Ctrl+Alt+click
+    else
+      loop_select(e.position, input_.shift());
   } else if (mode_ == Mode::handle) {
     end_drag(true);
   } else if (mode_ == Mode::pan && e.button == 1 && glm::length(e.position - press_pixel_) <= kBoxThreshold) {

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/mesh/crease_by_angle.h"
+#include "core/modelling/loop_cut.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/operation_words.h"
 #include "core/support/error.h"
@@ -122,6 +123,31 @@ void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
                false);
   } catch (const Error& e) {
     set_status(std::string("loop select: ") + e.what(), true);
+  }
+}
+
+// The ring a loop cut through the edge under the pointer would cross (core's edge_ring): its edges in
+// edge mode, else their ends.
+void EditorApp::ring_select(glm::vec2 pixel, bool toggle) {
+  const CovarianceMesh& mesh = document_.mesh();
+  const auto edge = pick_edge(viewport(), pixel, mesh, kLoopRadius);
+  if (!edge) return;
+  const auto [a, b] = *edge;
+  try {
+    std::vector<EdgeEnds> ring;
+    for (const auto& [x, y] : edge_ring(mesh, a, b).edges) ring.push_back({std::min(x, y), std::max(x, y)});
+    if (select_mode_ == SelectMode::edge) {
+      selection_.click_edges(mesh, ring, a, toggle);
+    } else {
+      std::vector<int> ends;
+      for (const auto& [x, y] : ring) ends.insert(ends.end(), {x, y});
+      std::sort(ends.begin(), ends.end());
+      ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+      selection_.click_group(ends, a, toggle);
+    }
+    set_status("edge ring: " + count_of(ring.size(), "edge", "edges"), false);
+  } catch (const Error& e) {
+    set_status(std::string("ring select: ") + e.what(), true);
   }
 }
 
