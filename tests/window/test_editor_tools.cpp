@@ -18,6 +18,7 @@
 #include "core/modelling/bevel.h"
 #include "core/modelling/bisect.h"
 #include "core/modelling/delete_elements.h"
+#include "core/modelling/duplicate.h"
 #include "core/modelling/knife.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/mesh_queries.h"
@@ -277,6 +278,28 @@ TEST_F(EditorTools, SpinTurnsAnEdgeAroundThe3DCursor) {
   cancelled.key("alt+r").wait().text("90").wait().key("escape").wait(3);
   play(cancelled);
   EXPECT_TRUE(saved_is_original());
+}
+
+// Shift+D with everything selected (A) duplicates the cube and moves the copy, here Z 3: Blender's
+// 16 vertices and 12 faces, exactly core's duplicate with that offset, one undo step (Ctrl+Z: the
+// file again); Esc during the move keeps the copy in place.
+TEST_F(EditorTools, DuplicateCopiesTheSelectionAndMovesIt) {
+  Events duplicated;
+  duplicated.key("a").wait().key("shift+d").wait().key("z").wait().text("3").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(duplicated, "cube_duplicated.png");
+  const Modelled expected = duplicate_faces(original_, {0, 1, 2, 3, 4, 5}, Vec3(0.0, 0.0, 3.0));
+  EXPECT_EQ(saved.n_vertices(), 16u);
+  EXPECT_EQ(saved.mesh.n_faces(), 12u);
+  EXPECT_TRUE(test::same_mesh(saved, expected.mesh));
+
+  Events undone = duplicated;
+  undone.key("ctrl+z").wait(3);
+  play(undone);
+  EXPECT_TRUE(saved_is_original());
+
+  Events in_place;
+  in_place.key("a").wait().key("shift+d").wait().key("escape").wait(3);
+  EXPECT_TRUE(test::same_mesh(play(in_place), duplicate_faces(original_, {0, 1, 2, 3, 4, 5}, Vec3::Zero()).mesh));
 }
 
 // Snapping while transforming and the 3D cursor, on the cube.

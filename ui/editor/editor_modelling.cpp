@@ -104,6 +104,11 @@ void EditorApp::build_modelling_commands() {
          nullptr,
          nullptr,
          true});
+  t.add({"Mesh",
+         "Duplicate (Shift+D; then move)",
+         {key(GLFW_KEY_D, false, true)},
+         [this] { start_tool(TransformTool::duplicate); },
+         selected});
   const auto has_edge = [this] { return !selection_.edges(document_.mesh()).empty(); };
   t.add({"Mesh",
          "Crease (Shift+E; drag or type 0-10, 10 = ∞)",

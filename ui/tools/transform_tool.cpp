@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/modelling/affine_transform.h"
+#include "core/modelling/duplicate.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/operation_words.h"
@@ -35,8 +36,8 @@ TransformTool::TransformTool(TransformKind kind, TransformPivot pivot, ToolConte
   update(ctx);
 }
 
-TransformTool::TransformTool(ToolContext& ctx, const Vec3& normal, std::string extrusion_summary)
-    : folds_(true), extrusion_summary_(std::move(extrusion_summary)) {
+TransformTool::TransformTool(ToolContext& ctx, const Vec3& normal, std::string operation, std::string summary)
+    : folds_(true), operation_(std::move(operation)), operation_summary_(std::move(summary)) {
   ctx.document.begin_edit();
   transform_.emplace(TransformKind::grab, ctx.document.mesh(), ctx.selection.vertices(), ctx.selection.active(),
                      TransformPivot::median, ctx.viewport, ctx.cursor);
@@ -64,7 +65,26 @@ std::unique_ptr<ModalTool> TransformTool::extrude(ToolContext& ctx) {
   Vec3 normal = Vec3::Zero();
   for (const int f : faces_within(ctx.document.mesh(), ctx.selection.vertices())) normal += newell_normal(arrays, f);
   if (normal.norm() > 0) normal.normalize();
-  return std::unique_ptr<ModalTool>(new TransformTool(ctx, normal, summary));
+  return std::unique_ptr<ModalTool>(new TransformTool(ctx, normal, "extrude", summary));
+}
+
+std::unique_ptr<ModalTool> TransformTool::duplicate(ToolContext& ctx) {
+  const std::vector<int> faces = faces_within(ctx.document.mesh(), ctx.selection.vertices());
+  if (faces.empty()) {
+    ctx.note("duplicate refused: select a face or more (all its corners)", true);
+    return nullptr;
+  }
+  std::string summary;
+  const bool done = ctx.operate(
+      "duplicate",
+      [&](const CovarianceMesh& m) {
+        Modelled r = duplicate_faces(m, faces, Vec3::Zero());
+        summary = r.summary;
+        return r;
+      },
+      nullptr);
+  if (!done) return nullptr;
+  return std::unique_ptr<ModalTool>(new TransformTool(ctx, Vec3::Zero(), "duplicate", summary));
 }
 
 void TransformTool::follow(glm::vec2 cursor, ToolContext& ctx) {
@@ -144,12 +164,13 @@ void TransformTool::draw_overlay(ImDrawList& draw, const ToolContext& ctx) const
 void TransformTool::end(bool keep, ToolContext& ctx) {
   if (!keep) {
     ctx.document.cancel_edit();
-    ctx.report(folds_ ? "move cancelled (the extrusion stays; Ctrl+Z removes it)" : "transform cancelled", false);
+    ctx.report(folds_ ? "move cancelled (the " + operation_ + " stays; Ctrl+Z removes it)" : "transform cancelled",
+               false);
     return;
   }
   if (folds_) {
     ctx.document.commit_edit_into_last_operation(ctx.selection.vertices());
-    ctx.show_status("extrude: " + extrusion_summary_, false);  // shown again, not printed again
+    ctx.show_status(operation_ + ": " + operation_summary_, false);  // shown again, not printed again
     return;
   }
   const std::string described = transform_->describe();

@@ -2,7 +2,8 @@
 // Blender's G / S / R as a modal tool (the math is ui/editing/transform_mode.h): the selected
 // Gaussians follow the mouse or a typed value, with the axis constraints, the proportional and
 // mirrored reach and the wheel setting the radius; one undo step when confirmed. The move after an
-// extrusion is the same tool along the extrusion's normal, folded into the extrusion's undo step.
+// extrusion is the same tool along the extrusion's normal, folded into the extrusion's undo step, and
+// the move after a duplication (Shift+D) likewise, free.
 // G pressed again during a grab hands over to the slide (ui/tools/slide_tool.h), as Blender's G G.
 // Snapping (ui/editing/snap_options.h; held Ctrl inverts it) rounds the amount to increments or takes
 // the pivot onto the vertex, edge or face under the pointer, marked by a circle.
@@ -25,12 +26,16 @@ public:
   /// Extrudes the selection (core/modelling/extrude.h) as one undo step, then moves the new vertices
   /// along the extruded faces' normal (free for edges and vertices); nullptr where refused (reported).
   static std::unique_ptr<ModalTool> extrude(ToolContext& ctx);
+  /// Duplicates the selected faces (core/modelling/duplicate.h) as one undo step, then moves the copy
+  /// freely, as Blender's Shift+D; nullptr where refused (reported).
+  static std::unique_ptr<ModalTool> duplicate(ToolContext& ctx);
 
   ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
   void draw_overlay(ImDrawList& draw, const ToolContext& ctx) const override;
 
 private:
-  TransformTool(ToolContext& ctx, const Vec3& normal, std::string extrusion_summary);
+  // The move after `operation` ("extrude", "duplicate"), along `normal` (free where zero).
+  TransformTool(ToolContext& ctx, const Vec3& normal, std::string operation, std::string summary);
   void update(ToolContext& ctx);
   void follow(glm::vec2 cursor, ToolContext& ctx);  // the mouse's amount, snapped where snapping is on
   void end(bool keep, ToolContext& ctx);
@@ -38,8 +43,8 @@ private:
   std::optional<TransformMode> transform_;
   std::vector<ReachedVertex> reach_;  // the vertices it changes, and how strongly
   TypedNumber typed_;
-  bool folds_ = false;  // the move after an extrusion: confirmed into the extrusion's undo step
-  std::string extrusion_summary_;
+  bool folds_ = false;  // the move after an extrusion or a duplication: confirmed into its undo step
+  std::string operation_, operation_summary_;
   std::optional<SnapPoint> snapped_;  // the element a grab is snapped to
 };
 
