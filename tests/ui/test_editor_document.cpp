@@ -218,5 +218,28 @@ TEST(EditorDocument, AMoveFoldsIntoTheOperationBeforeIt) {
   EXPECT_FALSE(doc.can_redo());
 }
 
+// The mirror modifier's clipping: a vertex that starts an edit within the tolerance of the plane x = 0
+// keeps x = 0 (its y and z move), one off it moves freely; without the clip both move.
+TEST(EditorDocument, ClippingKeepsVerticesOnThePlane) {
+  EditorDocument doc;
+  doc.open_sample("cube");
+  const Vec3 on_plane(1e-9, 1, 1);
+  doc.begin_edit();
+  doc.set_mean(6, on_plane);
+  doc.commit_edit();
+  doc.set_clip(PlaneClip{0, 1e-6});
+  doc.begin_edit();
+  doc.set_mean(6, on_plane + Vec3(0.5, 0.25, 0));
+  doc.set_mean(0, doc.mesh().mean(0) + Vec3(0.5, 0, 0));
+  doc.commit_edit();
+  EXPECT_EQ(doc.mesh().mean(6), Vec3(0, 1.25, 1));
+  EXPECT_EQ(doc.mesh().mean(0).x(), -0.5);
+  doc.set_clip(std::nullopt);
+  doc.begin_edit();
+  doc.set_mean(6, Vec3(0.5, 1.25, 1));
+  doc.commit_edit();
+  EXPECT_EQ(doc.mesh().mean(6), Vec3(0.5, 1.25, 1));
+}
+
 }  // namespace
 }  // namespace gps

@@ -49,6 +49,27 @@ TEST(EditorSettings, TheUpAxisIsKeptPerFile) {
   EXPECT_TRUE(typed.up_axes.empty());
 }
 
+// The mirror modifier is kept per mesh file (on, axis, clipping); an axis out of range is clamped, an
+// entry missing a field reported and none kept.
+TEST(EditorSettings, TheMirrorModifierIsKeptPerFile) {
+  const test::TempDir dir;
+  ViewOptions view;
+  ReachOptions reach;
+  view.mirror_modifiers["/parts/a.ply"] = MirrorSettings{true, 2, false};
+  ASSERT_EQ(save_settings(dir.path().string(), view, reach), "");
+  ViewOptions read;
+  ASSERT_EQ(load_settings(dir.path().string(), read, reach), "");
+  EXPECT_EQ(read.mirror_modifiers, view.mirror_modifiers);
+  dir.write("settings.json", R"({"mirror_modifiers": {"/a.ply": {"enabled": true, "axis": 7, "clipping": true}}})");
+  ViewOptions clamped;
+  ASSERT_EQ(load_settings(dir.path().string(), clamped, reach), "");
+  EXPECT_EQ(clamped.mirror_modifiers.at("/a.ply").axis, 2);
+  dir.write("settings.json", R"({"mirror_modifiers": {"/a.ply": {"enabled": true}}})");
+  ViewOptions partial;
+  EXPECT_NE(load_settings(dir.path().string(), partial, reach).find("'mirror_modifiers'"), std::string::npos);
+  EXPECT_TRUE(partial.mirror_modifiers.empty());
+}
+
 TEST(EditorSettings, OutOfRangeChoicesAreClampedAndAWrongTypeReported) {
   const test::TempDir dir;
   dir.write("settings.json", R"({"pivot": 7, "ellipsoid_scope": -3})");
