@@ -113,10 +113,9 @@ bool holds(const MeshArrays& m, int f, const Place& p) {
 }
 
 // The plane a segment of the path cuts along: through `origin` with normal `normal`; `forward` is
-// the segment's direction, the order of places along the cut.
+// the segment's direction.
 struct CutPlane {
   Vec3 origin, normal, forward;
-  double along(const Place& p) const { return forward.dot(p.at - origin); }
 };
 
 // Where the plane crosses face f's boundary: its corners on the plane and its edges between corners
@@ -140,26 +139,19 @@ std::vector<Place> plane_crossings(const MeshArrays& m, int f, const CutPlane& p
   return out;
 }
 
-// The crossing of face f nearest to `from` ahead of it (behind it where `ahead` is false), or none.
-std::optional<Place> next_crossing(const MeshArrays& m, int f, const Place& from, const CutPlane& plane,
-                                   double on_plane, bool ahead) {
+// Where the cut running from `before` to a place inside a face, straight on along the plane, leaves the
+// face: the crossing of its boundary that goes on most nearly in that direction (segment i).
+Place run_on(const MeshArrays& m, const Place& inside, const Vec3& before, const CutPlane& plane, double on_plane,
+             size_t i) {
+  const Vec3 heading = (inside.at - before).normalized();
   std::optional<Place> best;
-  const double sign = ahead ? 1 : -1, start = sign * plane.along(from);
-  double nearest = std::numeric_limits<double>::infinity();
-  for (const Place& c : plane_crossings(m, f, plane, on_plane)) {
-    const double x = sign * plane.along(c);
-    if (!same_element(c, from) && x > start + on_plane && x < nearest) nearest = x, best = c;
-  }
-  return best;
-}
-
-// Where the segment's line through a place inside a face leaves the face, ahead or behind.
-Place face_exit(const MeshArrays& m, const Place& p, const CutPlane& plane, double on_plane, bool ahead, size_t i) {
-  const std::optional<Place> c = next_crossing(m, p.face, p, plane, on_plane, ahead);
-  if (!c)
+  double straightest = 0;
+  for (const Place& c : plane_crossings(m, inside.face, plane, on_plane))
+    if (const double h = heading.dot((c.at - inside.at).normalized()); h > straightest) straightest = h, best = c;
+  if (!best)
     throw Error("the cut from point " + std::to_string(i + 1) + " to point " + std::to_string(i + 2) +
-                " does not leave face " + std::to_string(p.face));
-  return *c;
+                " does not leave face " + std::to_string(inside.face));
+  return *best;
 }
 
 // The faces the cut may go on into from a place.
@@ -190,6 +182,7 @@ std::vector<Step> walk_segment(const MeshArrays& m, const std::vector<std::vecto
                                double on_plane, size_t i) {
   std::vector<Step> steps;
   int came_from = -1;
+  Vec3 previous = from.at;
   for (size_t n = 0; n <= m.faces.size(); ++n) {
     std::vector<int> ahead = faces_from(from, faces_at, edges);
     ahead.erase(std::remove(ahead.begin(), ahead.end(), came_from), ahead.end());
@@ -199,16 +192,19 @@ std::vector<Step> walk_segment(const MeshArrays& m, const std::vector<std::vecto
         steps.push_back({f, to});
         return steps;
       }
-    // Into the face whose stretch of the cut heads most nearly along the segment.
+    // On where the cut runs straightest: from the start along the segment, then on from the last step,
+    // following the plane's trace wherever the surface bends it.
+    const Vec3 heading = steps.empty() ? plane.forward : (from.at - previous).normalized();
     std::optional<Step> best;
-    double best_heading = -1;
+    double straightest = steps.empty() ? 0 : -2;
     for (const int f : ahead)
-      if (const std::optional<Place> c = next_crossing(m, f, from, plane, on_plane, true))
-        if (const double heading = plane.forward.dot((c->at - from.at).normalized()); heading > best_heading)
-          best_heading = heading, best = Step{f, *c};
+      for (const Place& c : plane_crossings(m, f, plane, on_plane))
+        if (const double h = heading.dot((c.at - from.at).normalized()); !same_element(c, from) && h > straightest)
+          straightest = h, best = Step{f, c};
     if (!best) break;
     steps.push_back(*best);
     came_from = best->face;
+    previous = from.at;
     from = best->to;
   }
   throw Error(segment_name(i) + " does not reach it across the faces");
@@ -277,12 +273,12 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
     const CutPlane plane{from.at, forward.cross(normals).normalized(), forward};
     if (!plane.normal.allFinite() || !(plane.normal.norm() > 0))
       throw Error(segment_name(i) + " runs along the surface's normal");
-    // A path end inside a face is moved to where its segment leaves the face.
-    if (i == 0 && start.kind == Place::inside) start = face_exit(a, start, plane, on_plane, false, i);
     const std::vector<Step> more = walk_segment(a, faces_at, edges, from, to, plane, on_plane, i);
     steps.insert(steps.end(), more.begin(), more.end());
+    // A path end inside a face is moved on along the cut, away from the rest of it, to the face's edge.
     if (i + 2 == places.size() && to.kind == Place::inside)
-      steps.back().to = face_exit(a, to, plane, on_plane, true, i);
+      steps.back().to = run_on(a, to, steps.size() > 1 ? steps[steps.size() - 2].to.at : from.at, plane, on_plane, i);
+    if (i == 0 && start.kind == Place::inside) start = run_on(a, start, steps.front().to.at, plane, on_plane, i);
   }
 
   // Vertices along the cut, in its order: new ones on edges (one per crossing place) and inside faces.

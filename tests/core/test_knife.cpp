@@ -147,6 +147,25 @@ TEST(Knife, ATriangleMeshStaysTriangles) {
   EXPECT_GT(signed_volume(a), 0);
 }
 
+// From the pawn's side down over the rim of its base to a point inside a triangle of the base's fan:
+// the end moves on across that triangle the way the cut came (inwards), though the segment itself
+// points outwards there.
+TEST(Knife, AnEndInsideAFaceMovesOnTheWayTheCutCame) {
+  const CovarianceMesh pawn = make_sample("pawn");
+  const Vec3 side(-0.23217042930202123, 0.19745612160652598, 0.3325029648892527), base(-0.328437, 0.0, 0.359893);
+  const Modelled r = knife(pawn, {side, base});
+  const test::Shape s = shape_of(r.mesh);
+  EXPECT_EQ(s.boundary_edges, 0);
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(s.euler(), shape_of(pawn).euler());
+  // One vertex on each of the 7 edges the cut crosses down the side and over the rim, and the last on
+  // an edge of the base's fan from its centre, vertex 0.
+  const MeshArrays a = arrays_of(r.mesh);
+  EXPECT_EQ(a.n_vertices(), int(pawn.n_vertices()) + 8);
+  EXPECT_EQ(r.selection.size(), 8u);
+  EXPECT_GE(faces_holding(a, {0, r.selection.back()}), 1);
+}
+
 TEST(Knife, ACreasedEdgeCutCreasesBothHalves) {
   MeshArrays a = arrays_of(make_sample("cube"));
   a.sharpness.set_crease(4, 5, 2.5);
