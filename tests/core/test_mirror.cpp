@@ -1,6 +1,6 @@
 // Mirroring (core/modelling/mirror.h): a half cube open at x = 0 mirrored into a closed box, the
-// copies' Gaussians mirrored exactly and the seam's made symmetric, an edit of the half shown by index, a mirror without merging, about
-// another plane, refusals of non-manifold seams, and the op list's "mirror".
+// copies' Gaussians mirrored exactly and the seam's made symmetric, an edit of the half shown by index, a mirror
+// without merging, about another plane, refusals of non-manifold seams, and the op list's "mirror".
 #include "core/modelling/mirror.h"
 
 #include <gtest/gtest.h>

@@ -426,7 +426,7 @@ protected:
     use_mesh(delete_vertices(cut, left).mesh);
     for (size_t v = 0; v < original_.n_vertices(); ++v) {
       const Vec3 p = original_.mean(v);
-      if (p.x() == 0 && p.y() > 0 && p.z() > 0) seam_ = int(v);  // on the plane, top front
+      if (p.x() == 0 && p.y() > 0 && p.z() > 0) seam_ = int(v);   // on the plane, top front
       if (p.x() > 0 && p.y() > 0 && p.z() > 0) corner_ = int(v);  // the far corner, top front
     }
     ASSERT_EQ(original_.n_vertices(), 8u);

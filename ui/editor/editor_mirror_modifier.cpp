@@ -115,9 +115,8 @@ void EditorApp::apply_mirror() {
   if (!mirror_.settings.enabled) return;
   const MirrorSettings before = mirror_.settings;
   mirror_.settings.enabled = false;  // the result is shown as it is
-  if (!run_operation("apply mirror modifier", [axis = before.axis](const CovarianceMesh& m) {
-        return mirror(m, axis, Vec3::Zero(), true);
-      })) {
+  if (!run_operation("apply mirror modifier",
+                     [axis = before.axis](const CovarianceMesh& m) { return mirror(m, axis, Vec3::Zero(), true); })) {
     mirror_.settings = before;
     return;
   }
