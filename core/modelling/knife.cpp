@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -58,18 +57,19 @@ bool same_element(const Place& x, const Place& y) {
 
 Vec3 unit_normal(const MeshArrays& m, int f) { return newell_normal(m, f).normalized(); }
 
-// Whether p lies over face f (seen along its normal) within `tolerance` of its plane, allowing for
-// how far its corners are from flat.
-bool over_face(const MeshArrays& m, int f, const Vec3& p, double tolerance) {
+// How far p is from face f's plane where it lies over the face (seen along its normal) within
+// `tolerance` of that plane, allowing for how far its corners are from flat; nullopt elsewhere.
+std::optional<double> over_face(const MeshArrays& m, int f, const Vec3& p, double tolerance) {
   const std::vector<int>& face = m.faces[size_t(f)];
   const Vec3 n = unit_normal(m, f);
-  if (!n.allFinite()) return false;
+  if (!n.allFinite()) return std::nullopt;
   Vec3 centre = Vec3::Zero();
   for (int v : face) centre += m.means[size_t(v)];
   centre /= double(face.size());
   double flatness = 0;
   for (int v : face) flatness = std::max(flatness, std::abs(n.dot(m.means[size_t(v)] - centre)));
-  if (std::abs(n.dot(p - centre)) > tolerance + flatness) return false;
+  const double height = std::abs(n.dot(p - centre));
+  if (height > tolerance + flatness) return std::nullopt;
   // Crossing number of a ray in the face's plane.
   const Vec3 x = n.unitOrthogonal(), y = n.cross(x);
   bool in = false;
@@ -78,13 +78,14 @@ bool over_face(const MeshArrays& m, int f, const Vec3& p, double tolerance) {
     const double uy = y.dot(u), wy = y.dot(w);
     if ((uy > 0) != (wy > 0) && x.dot(u) + (x.dot(w) - x.dot(u)) * uy / (uy - wy) > 0) in = !in;
   }
-  return in;
+  return in ? std::optional<double>(height) : std::nullopt;
 }
 
-// Where p lies on the mesh: on the nearest vertex or edge within `tolerance`, else inside a face.
+// Where p lies on the mesh: on the nearest vertex or edge within `tolerance`, else inside the face
+// whose plane is nearest.
 std::optional<Place> place_of(const MeshArrays& m, const Vec3& p, double tolerance) {
   std::optional<Place> on_boundary, inside;
-  double nearest = tolerance;
+  double nearest = tolerance, lowest = 0;
   for (int f = 0; f < m.n_faces(); ++f) {
     const std::vector<int>& face = m.faces[size_t(f)];
     for (size_t k = 0; k < face.size(); ++k) {
@@ -96,7 +97,10 @@ std::optional<Place> place_of(const MeshArrays& m, const Vec3& p, double toleran
         on_boundary = on_edge(m, u, w, t);
       }
     }
-    if (!inside && over_face(m, f, p, tolerance)) inside = Place{Place::inside, -1, -1, 0, f, p};
+    if (const std::optional<double> height = over_face(m, f, p, tolerance); height && (!inside || *height < lowest)) {
+      lowest = *height;
+      inside = Place{Place::inside, -1, -1, 0, f, p};
+    }
   }
   return on_boundary ? on_boundary : inside;
 }
