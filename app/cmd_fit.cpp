@@ -21,7 +21,8 @@ void add_fit_command(CLI::App& app) {
   struct Args {
     std::string coarse, target, output;
     int iterations = 10, level = 8;
-    double smoothness = 1e-5, tolerance = 0, time = INFINITY;
+    double smoothness = 1e-5, covariance_smoothness = FitOptions().covariance_smoothness, covariance_prior = FitOptions().covariance_prior,
+           min_sigma = FitOptions().min_sigma, max_sigma = FitOptions().max_sigma, tolerance = 0, time = INFINITY;
     bool plain = false, ascii = false, quiet = false;
     PlanArguments plans;
     RepairArguments repair;
@@ -48,6 +49,20 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--smoothness", args->smoothness,
                   "weight of the smoothness term against the mean squared distance (default 1e-5)")
       ->check(number_in(0, 1e6));
+  cmd->add_option("--covariance-smoothness", args->covariance_smoothness,
+                  "weight of the smoothness term on the covariances (the Laplacian of their changes) against the mean "
+                  "squared distance (default 1e-4)")
+      ->check(number_in(0, 1e6));
+  cmd->add_option("--covariance-prior", args->covariance_prior,
+                  "weight of the prior that keeps each covariance near its start, against the mean squared distance "
+                  "(default 0: none)")
+      ->check(number_in(0, 1e6));
+  cmd->add_option("--min-sigma", args->min_sigma,
+                  "least standard deviation of each Gaussian, over the mean length of its vertex's edges (default 0.35)")
+      ->check(number_in(0, 1e6));
+  cmd->add_option("--max-sigma", args->max_sigma,
+                  "greatest standard deviation of each Gaussian, over the mean length of its vertex's edges (default 1)")
+      ->check(positive_number(INFINITY));
   auto* level = cmd->add_option("--level", args->level,
                                 "tessellation level of the limit surface the final report measures (0: no report; "
                                 "default 8, lower where that would make more than 2 million triangles)")
@@ -63,6 +78,10 @@ void add_fit_command(CLI::App& app) {
     options.iterations = args->iterations;
     options.plain = args->plain;
     options.smoothness = args->smoothness;
+    options.covariance_smoothness = args->covariance_smoothness;
+    options.covariance_prior = args->covariance_prior;
+    options.min_sigma = args->min_sigma;
+    options.max_sigma = args->max_sigma;
     options.tolerance = args->tolerance;
     options.time_budget = args->time;
     options.plans = args->plans.options();

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <Eigen/IterativeLinearSolvers>
 
@@ -90,17 +91,28 @@ public:
       const int i = v.idx();
       const double degree = double(coarse.mesh.valence(v));
       lap.emplace_back(i, i, degree > 0 ? -1.0 : 0.0);
+      double own_sum = 0;
       for (const auto w : coarse.mesh.vv_range(v)) {
         lap.emplace_back(i, w.idx(), 1.0 / degree);
-        edge_sum += (start.mean(size_t(i)) - start.mean(size_t(w.idx()))).norm();
+        own_sum += (start.mean(size_t(i)) - start.mean(size_t(w.idx()))).norm();
         ++edges;
       }
+      edge_sum += own_sum;
+      edge_.push_back(degree > 0 ? own_sum / degree : 0.0);
     }
     Eigen::SparseMatrix<double> l(n_, n_);
     l.setFromTriplets(lap.begin(), lap.end());
     laplacian_normal_ = Eigen::SparseMatrix<double>(l.transpose() * l);
     length_ = edges > 0 ? edge_sum / double(edges) : diagonal_;
-    smoothness_ = options.smoothness * double(targets.size()) / double(std::max(n_, 1));
+    const double per_vertex = double(targets.size()) / double(std::max(n_, 1));
+    smoothness_ = options.smoothness * per_vertex;
+    covariance_smoothness_ = options.covariance_smoothness * per_vertex;
+    for (double& edge : edge_)
+      if (!(edge > 0)) edge = length_;
+    if (p_ == 9)
+      for (int i = 0; i < n_; ++i) bound(i, start_.factors[size_t(i)]);
+    if (p_ == 9 && options.covariance_prior > 0)
+      set_prior(options.covariance_prior * per_vertex);
   }
 
   const Parameters& start() const { return start_; }
@@ -167,13 +179,13 @@ public:
     const std::vector<PointState> points = point_states(vertex_state(x));
     double sum = 0;
     for (const auto& p : points) sum += p.residual.squaredNorm();
-    return sum + smoothness_energy(x);
+    return sum + smoothness_energy(x) + prior_energy(x);
   }
 
   double objective_of_correspondences(const Parameters& x) const {
     double sum = 0;
     for (const auto& c : correspondences_) sum += c.distance * c.distance;
-    return sum + smoothness_energy(x);
+    return sum + smoothness_energy(x) + prior_energy(x);
   }
 
   // The Gauss-Newton normal equations at `x`: H (lower triangle) and g, H δ = −g.
@@ -228,10 +240,18 @@ public:
       for (Eigen::SparseMatrix<double>::InnerIterator it(laplacian_normal_, outer); it; ++it) {
         const int r = int(it.row()), c = int(it.col());
         for (int comp = 0; comp < p_; ++comp) {
-          const double w = smoothness_ * component_weight(comp) * it.value();
+          const double w = component_weight(comp) * it.value();
           if (r >= c) entries.emplace_back(p_ * r + comp, p_ * c + comp, w);
           g[p_ * r + comp] += w * d(c, comp);
         }
+      }
+    // The covariance prior: a diagonal term per factor parameter.
+    for (size_t i = 0; i < prior_.size(); ++i)
+      for (int c = 0; c < 6; ++c) {
+        const int u = p_ * int(i) + 3 + c;
+        const double w = prior_[i][c];
+        entries.emplace_back(u, u, w);
+        g[u] += w * (x.factors[i][c] - start_.factors[i][c]);
       }
     for (int u = 0; u < unknowns(); ++u) entries.emplace_back(u, u, 0.0);
     h.resize(unknowns(), unknowns());
@@ -242,7 +262,7 @@ public:
     Parameters y = x;
     for (int i = 0; i < n_; ++i) {
       y.means[size_t(i)] += delta.segment<3>(p_ * i);
-      if (p_ == 9) y.factors[size_t(i)] += delta.segment<6>(p_ * i + 3);
+      if (p_ == 9) bound(i, y.factors[size_t(i)] += delta.segment<6>(p_ * i + 3));
     }
     return y;
   }
@@ -259,7 +279,8 @@ public:
   }
 
 private:
-  double component_weight(int comp) const { return comp < 3 ? 1.0 : length_ * length_; }
+  // The smoothness term's weight on a component: the means', or the factor parameters' times the squared edge length.
+  double component_weight(int comp) const { return comp < 3 ? smoothness_ : covariance_smoothness_ * length_ * length_; }
 
   // Per vertex, per component: the change from the start (factor parameters scaled by the edge length).
   Eigen::MatrixXd changes(const Parameters& x) const {
@@ -271,12 +292,50 @@ private:
     return d;
   }
 
+  // Per vertex i, the prior's weight on each factor parameter: w ℓᵢ² s_c², with ℓᵢ the mean length of
+  // the vertex's edges and s_c what makes the parameter's change dimensionless (1 for a logarithmic
+  // diagonal entry; for an entry below the diagonal, the start's diagonal entry of its column, that
+  // entry's scale). Its energy is scale-invariant like the squared distances it is weighed against.
+  void set_prior(double weight) {
+    constexpr int kDiagonalParameter[3] = {0, 2, 5};
+    prior_.assign(size_t(n_), Vec6::Zero());
+    for (size_t i = 0; i < size_t(n_); ++i) {
+      const double edge = edge_[i];
+      for (int c = 0; c < 6; ++c) {
+        const int a = kFactorEntries[c][0], b = kFactorEntries[c][1];
+        const double scale = a == b ? 1.0 : std::exp(-start_.factors[i][kDiagonalParameter[b]]);
+        prior_[i][c] = weight * edge * edge * scale * scale;
+      }
+    }
+  }
+
+  // Vertex i's factor parameters moved, where its standard deviations leave the bounds of
+  // FitOptions::min_sigma and max_sigma, to those of the covariance with its eigenvalues clamped.
+  void bound(int i, Vec6& factor) const {
+    const Mat3 l = cholesky_factor(factor);
+    const Mat3 l_inverse = l.triangularView<Eigen::Lower>().solve(Mat3::Identity());
+    const Eigen::SelfAdjointEigenSolver<Mat3> eigen(l_inverse.transpose() * l_inverse);
+    const double edge = edge_[size_t(i)];
+    const double low = options_.min_sigma * edge, high = options_.max_sigma * edge;
+    const Vec3 variances = eigen.eigenvalues().cwiseMax(low * low).cwiseMin(high * high);
+    if (variances == eigen.eigenvalues()) return;
+    const Mat3& v = eigen.eigenvectors();
+    factor = factor_parameters(v * variances.cwiseInverse().asDiagonal() * v.transpose());
+  }
+
+  double prior_energy(const Parameters& x) const {
+    double sum = 0;
+    for (size_t i = 0; i < prior_.size(); ++i)
+      sum += prior_[i].dot((x.factors[i] - start_.factors[i]).cwiseAbs2());
+    return sum;
+  }
+
   double smoothness_energy(const Parameters& x) const {
     const Eigen::MatrixXd d = changes(x);
     double sum = 0;
     for (int comp = 0; comp < p_; ++comp)
       sum += component_weight(comp) * d.col(comp).dot(laplacian_normal_ * d.col(comp));
-    return smoothness_ * sum;
+    return sum;
   }
 
   std::vector<PointState> point_states(const VertexState& s) const {
@@ -363,8 +422,10 @@ private:
   int n_, p_;
   Parameters start_;
   Mat3 plain_precision_;
-  double diagonal_ = 1, length_ = 1, smoothness_ = 0;
+  double diagonal_ = 1, length_ = 1, smoothness_ = 0, covariance_smoothness_ = 0;
   Eigen::SparseMatrix<double> laplacian_normal_;
+  std::vector<double> edge_;  // per vertex, the mean length of its edges at the start
+  std::vector<Vec6> prior_;  // per vertex, the covariance prior's weight on each factor parameter (empty: none)
   std::vector<SurfacePoint> correspondences_;
   std::vector<LimitWeights> weights_;
   std::vector<int> users_offsets_, pattern_offsets_, pattern_columns_;
@@ -407,6 +468,12 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   if (!(options.tolerance >= 0 && options.tolerance <= 1))
     throw Error("the fit's tolerance must be a fraction from 0 to 1");
   if (!(options.time_budget > 0)) throw Error("the fit's time budget must be positive");
+  if (!(options.min_sigma >= 0 && options.min_sigma < options.max_sigma))
+    throw Error("the fit's standard deviation bounds must be 0 or more, the lower below the upper");
+  if (!(options.covariance_smoothness >= 0 && std::isfinite(options.covariance_smoothness)))
+    throw Error("the fit's covariance smoothness must be a finite weight, 0 or more");
+  if (!(options.covariance_prior >= 0 && std::isfinite(options.covariance_prior)))
+    throw Error("the fit's covariance prior must be a finite weight, 0 or more");
   validate_gaussians(coarse);
   const auto start = std::chrono::steady_clock::now();
   auto clock = start;

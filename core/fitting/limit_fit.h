@@ -23,8 +23,21 @@ struct FitOptions {
   /// Means only, every covariance the same isotropic one: the limit is the linear scheme's, linear in
   /// the means (ordinary subdivision-surface fitting).
   bool plain = false;
-  /// Weight of the smoothness term (the Laplacian of the vertices' changes) against the mean squared distance.
+  /// Weight of the smoothness term (the Laplacian of the means' changes) against the mean squared distance.
   double smoothness = 1e-5;
+  /// The same for the covariances (the Laplacian of the changes of their log-Cholesky precision
+  /// parameters, times the squared mean edge length): neighbouring Gaussians change alike, so that a
+  /// smooth region stays smooth (ignored by a plain fit).
+  double covariance_smoothness = 1e-4;
+  /// Weight of the prior that keeps each covariance near its start (the Gaussians at the scale of the
+  /// features they model): per vertex, the squared change of its log-Cholesky precision parameters,
+  /// each made dimensionless, times the squared mean length of its edges, against the mean squared
+  /// distance (0: none; ignored by a plain fit).
+  double covariance_prior = 0;
+  /// Each covariance's standard deviations (the square roots of its eigenvalues) kept between these
+  /// multiples of the mean length of its vertex's edges, at the start and after every step (0 and
+  /// infinity: unbounded; ignored by a plain fit).
+  double min_sigma = 0.35, max_sigma = 1.0;
   /// Stop when an iteration lowers the rms distance by less than this fraction of it (0: never).
   double tolerance = 0;
   /// Stop when the fit has run this many seconds (checked after each iteration; infinity: never).

@@ -1,8 +1,11 @@
 // Fitting a GPS limit surface to points: the limit weights against the evaluator, and fits of a block
-// with sharp edges, a bumpy sphere and a noisy one, simplified and fitted (plain and GPS).
+// with sharp edges, a bumpy sphere and a noisy one, simplified and fitted (plain and GPS); a smooth
+// sphere's normals, the Gaussians' bounds and the covariance prior.
 #include <gtest/gtest.h>
 
 #include <omp.h>
+
+#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <map>
@@ -10,6 +13,7 @@
 
 #include "core/evaluation/patch_eval.h"
 #include "core/fitting/closest_points.h"
+#include "core/fitting/face_triangles.h"
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/limit_weights.h"
 #include "core/fitting/mesh_simplification.h"
@@ -204,6 +208,8 @@ TEST(LimitFit, PointsOnTheStartingSurfaceStayPut) {
   const std::vector<Vec3> targets = limit_surface_triangles(coarse, 4).triangles.positions;
   FitOptions options;
   options.iterations = 2;
+  options.min_sigma = 0;  // the random Gaussians as they are: bounds would move the start off the targets
+  options.max_sigma = INFINITY;
   const FitResult r = fit_limit_surface(coarse, targets, options);
   EXPECT_LT(r.iterations.front().error.relative_max(), 1e-9);
   EXPECT_LT(r.iterations.back().error.relative_max(), 1e-9);
@@ -262,6 +268,82 @@ TEST(LimitFit, StopsWhenTheTimeBudgetRunsOut) {
 TEST(LimitFit, RefusesAToleranceOrTimeBudgetOutOfRange) {
   for (const double tolerance : {-0.1, 1.5, double(NAN)}) EXPECT_THROW(fit_icosphere_to_bumps(2, tolerance), Error);
   for (const double budget : {0.0, -1.0, double(NAN)}) EXPECT_THROW(fit_icosphere_to_bumps(2, 0, budget), Error);
+}
+
+/// The mean length of each vertex's edges.
+std::vector<double> mean_edge_lengths(const CovarianceMesh& m) {
+  std::vector<double> out;
+  for (const auto v : m.mesh.vertices()) {
+    double sum = 0;
+    for (const auto w : m.mesh.vv_range(v)) sum += (m.mean(size_t(v.idx())) - m.mean(size_t(w.idx()))).norm();
+    out.push_back(sum / double(m.mesh.valence(v)));
+  }
+  return out;
+}
+
+TEST(LimitFit, SmoothSphereTurnsNoFurtherThanThePlainFitAndKeepsItsGaussiansToTheEdges) {
+  const CovarianceMesh dense = cube_surface(12, [](const Vec3& p) { return Vec3(p.normalized()); });
+  SimplifyOptions s;
+  s.target_vertices = 120;
+  const CovarianceMesh coarse = simplify_mesh(dense, s).mesh;
+  const TriangleMesh scan = face_triangles(dense);
+  const auto normals_rms = [&](const CovarianceMesh& m) {
+    const TriangleMesh limit = limit_surface_triangles(m, 6).triangles;
+    return summarise_angles(SurfaceDistance(limit).normal_angles(scan.positions, scan.normals)).rms;
+  };
+  const FitResult gps = fit(coarse, scan.positions, false);
+  const double plain = normals_rms(fit(coarse, scan.positions, true).mesh), turned = normals_rms(gps.mesh);
+  std::printf("normals' rms angle: plain fit %.3f°, GPS fit %.3f°\n", plain, turned);
+  EXPECT_LE(turned, plain);
+  // Every standard deviation within FitOptions' bounds times the mean length of its vertex's edges.
+  const FitOptions defaults;
+  const std::vector<double> edge = mean_edge_lengths(coarse);
+  for (size_t i = 0; i < coarse.n_vertices(); ++i) {
+    const Vec3 variances = Eigen::SelfAdjointEigenSolver<Mat3>(gps.mesh.covariance(i)).eigenvalues();
+    EXPECT_LE(std::sqrt(variances.maxCoeff()), defaults.max_sigma * edge[i] * (1 + 1e-9)) << "vertex " << i;
+    EXPECT_GE(std::sqrt(variances.minCoeff()), defaults.min_sigma * edge[i] * (1 - 1e-9)) << "vertex " << i;
+  }
+}
+
+TEST(LimitFit, TheCovariancePriorHoldsTheGaussiansToTheirStart) {
+  // Unbounded, the fit moves the covariances; a strong prior keeps them near the start, means free.
+  const CovarianceMesh coarse = make_sample("icosphere", 80);
+  const std::vector<Vec3> targets = vertex_means(bumpy_sphere(8));
+  const auto largest_change = [&](double prior) {
+    FitOptions options;
+    options.iterations = 4;
+    options.min_sigma = 0;
+    options.max_sigma = INFINITY;
+    options.covariance_prior = prior;
+    const FitResult r = fit_limit_surface(coarse, targets, options);
+    EXPECT_LT(r.iterations.back().error.rms, 0.9 * r.iterations.front().error.rms) << "prior " << prior;
+    double change = 0;
+    for (size_t i = 0; i < coarse.n_vertices(); ++i)
+      change = std::max(change, (r.mesh.covariance(i) - coarse.covariance(i)).norm() / coarse.covariance(i).norm());
+    return change;
+  };
+  const double free = largest_change(0), held = largest_change(1e4);
+  EXPECT_GT(free, 0.05);
+  EXPECT_LT(held, 0.01 * free);
+}
+
+TEST(LimitFit, RefusesABadCovarianceWeightOrSigmaBounds) {
+  const CovarianceMesh coarse = make_sample("icosphere", 80);
+  const std::vector<Vec3> targets = vertex_means(coarse);
+  for (const auto& [prior, low, high] : std::vector<std::array<double, 3>>{
+           {-1, 0.25, 1}, {double(NAN), 0.25, 1}, {INFINITY, 0.25, 1}, {0, -0.1, 1}, {0, 1, 1}, {0, 2, 1}}) {
+    FitOptions options;
+    options.iterations = 1;
+    options.covariance_prior = prior;
+    options.min_sigma = low;
+    options.max_sigma = high;
+    EXPECT_THROW(fit_limit_surface(coarse, targets, options), Error) << prior << " " << low << " " << high;
+  }
+  for (const double smoothness : {-1.0, double(NAN), double(INFINITY)}) {
+    FitOptions options;
+    options.covariance_smoothness = smoothness;
+    EXPECT_THROW(fit_limit_surface(coarse, targets, options), Error) << smoothness;
+  }
 }
 
 }  // namespace
