@@ -4,13 +4,10 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include <algorithm>
-#include <limits>
-
 #include "core/modelling/knife.h"
 #include "core/support/error.h"
 #include "ui/document/editor_document.h"
-#include "view/element_picking.h"
+#include "view/snap_point.h"
 
 namespace gps {
 
@@ -18,70 +15,35 @@ namespace {
 
 constexpr float kSnapPixels = 8.0f;  // how near a corner, edge middle or edge a click snaps to it
 
-// The corners of face f of `mesh`, in order.
-std::vector<int> corners_of(const CovarianceMesh& mesh, int f) {
-  std::vector<int> out;
-  for (const auto v : mesh.mesh.fv_range(mesh.mesh.face_handle(f))) out.push_back(v.idx());
-  return out;
-}
-
-// Newell's normal of a polygon's corners.
-Vec3 polygon_normal(const CovarianceMesh& mesh, const std::vector<int>& corners) {
-  Vec3 n = Vec3::Zero();
-  for (size_t k = 0; k < corners.size(); ++k)
-    n += mesh.mean(size_t(corners[k])).cross(mesh.mean(size_t(corners[(k + 1) % corners.size()])));
-  return n;
-}
-
-// The point of segment a–b nearest the ray (the closest points of two lines, clamped to the segment).
-Vec3 nearest_on_segment(const Vec3& a, const Vec3& b, const Ray& ray) {
-  const Vec3 o = to_vec(ray.origin), d = to_vec(ray.direction), e = b - a, w = a - o;
-  const double ee = e.dot(e), ed = e.dot(d), denominator = ee - ed * ed;  // |d| = 1
-  const double t = denominator > 0 ? (ed * d.dot(w) - e.dot(w)) / denominator : 0.0;
-  return a + std::clamp(t, 0.0, 1.0) * e;
+// Whether no face hides point p: none that the ray through p's pixel meets nearer than p.
+bool unhidden(const CovarianceMesh& mesh, const Viewport& view, const Vec3& p) {
+  const auto at = visible_pixel(view.camera, view.width, view.height, p);
+  if (!at) return false;
+  const glm::vec2 pixel = glm::vec2(*at) - glm::vec2(0.5f);  // the pixel whose centre p projects to
+  const Vec3 eye = to_vec(pixel_ray(view.camera, view.width, view.height, pixel).origin);
+  const auto face = find_snap_point(mesh, view, pixel, SnapTarget::face, {}, 0.0f);
+  return !face || (p - eye).norm() <= (face->point - eye).norm() + 1e-3 * bounding_box_diagonal(mesh);
 }
 
 }  // namespace
 
 std::optional<Vec3> knife_point_under(const CovarianceMesh& mesh, const Viewport& view, glm::vec2 pixel) {
-  const int face = pick_face(view, pixel, mesh);
-  const Ray ray = pixel_ray(view.camera, view.width, view.height, pixel);
-  std::vector<int> faces;
-  if (face >= 0) {
-    faces.push_back(face);
-  } else {
-    for (const auto f : mesh.mesh.faces())
-      if (polygon_normal(mesh, corners_of(mesh, f.idx())).dot(to_vec(ray.direction)) < 0) faces.push_back(f.idx());
+  if (const auto corner = find_snap_point(mesh, view, pixel, SnapTarget::vertex, {}, kSnapPixels);
+      corner && unhidden(mesh, view, corner->point))
+    return corner->point;
+  NearestProjected nearest(view.camera, view.width, view.height, pixel, kSnapPixels, 0.5f);
+  std::vector<Vec3> middles;
+  for (const auto e : mesh.mesh.edges()) {
+    middles.push_back((mesh.mean(size_t(e.v0().idx())) + mesh.mean(size_t(e.v1().idx()))) / 2);
+    nearest.consider(int(middles.size()) - 1, middles.back());
   }
-  const auto pixel_distance = [&](const Vec3& p) {
-    const auto q = visible_pixel(view.camera, view.width, view.height, p);
-    return q ? glm::length(glm::vec2(q->x, q->y) - pixel) : std::numeric_limits<float>::infinity();
-  };
-  // Corners first, then edge middles, then edges, each the nearest within the snap.
-  std::optional<Vec3> corner, middle, on_edge;
-  float corner_pixels = kSnapPixels, middle_pixels = kSnapPixels, edge_pixels = kSnapPixels;
-  for (const int f : faces) {
-    const std::vector<int> c = corners_of(mesh, f);
-    for (size_t k = 0; k < c.size(); ++k) {
-      const Vec3 a = mesh.mean(size_t(c[k])), b = mesh.mean(size_t(c[(k + 1) % c.size()]));
-      if (const float d = pixel_distance(a); d < corner_pixels) corner_pixels = d, corner = a;
-      if (const float d = pixel_distance((a + b) / 2); d < middle_pixels) middle_pixels = d, middle = (a + b) / 2;
-      const Vec3 p = nearest_on_segment(a, b, ray);
-      if (const float d = pixel_distance(p); d < edge_pixels) edge_pixels = d, on_edge = p;
-    }
-  }
-  if (corner) return corner;
-  if (middle) return middle;
-  if (on_edge) return on_edge;
-  if (face < 0) return std::nullopt;
-  // Where the ray meets the face's plane (Newell's normal through its centroid).
-  const std::vector<int> c = corners_of(mesh, face);
-  const Vec3 n = polygon_normal(mesh, c), o = to_vec(ray.origin), d = to_vec(ray.direction);
-  Vec3 centre = Vec3::Zero();
-  for (int v : c) centre += mesh.mean(size_t(v)) / double(c.size());
-  const double along = n.dot(d);
-  if (along == 0) return std::nullopt;
-  return o + (n.dot(centre - o) / along) * d;
+  if (nearest.best() >= 0 && unhidden(mesh, view, middles[size_t(nearest.best())]))
+    return middles[size_t(nearest.best())];
+  if (const auto edge = find_snap_point(mesh, view, pixel, SnapTarget::edge, {}, kSnapPixels);
+      edge && unhidden(mesh, view, edge->point))
+    return edge->point;
+  if (const auto face = find_snap_point(mesh, view, pixel, SnapTarget::face, {}, kSnapPixels)) return face->point;
+  return std::nullopt;
 }
 
 KnifeTool::KnifeTool(ToolContext&) { show_count(); }

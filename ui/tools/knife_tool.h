@@ -1,6 +1,6 @@
 #pragma once
 // The knife (K) as a modal tool, as Blender's: each left click adds a point where the pointer meets
-// the control mesh (snapped to a vertex or an edge's middle within a few pixels, else onto an edge
+// the control mesh (snapped to a corner or an edge's middle within a few pixels, else onto an edge
 // near it), the path drawn over the view with a line on to the pointer; Enter or Space cuts along it
 // (core/modelling/knife.h) as one undo step, Backspace takes back the last point, Esc or a right click
 // cancels.
@@ -11,10 +11,9 @@
 
 namespace gps {
 
-/// Where a click at `pixel` lands on the control mesh: the nearest corner or edge middle of the face
-/// under it (or, off the mesh, of a face turned to the camera) within a few pixels, else the point of
-/// an edge that the pixel's ray passes nearest within a few pixels, else where the ray meets the
-/// front-most face under the pixel; nullopt off the mesh.
+/// Where a click at `pixel` lands on the control mesh (view/snap_point.h's points): the corner, else
+/// the edge's middle, else the point of an edge projected nearest within a few pixels and hidden by
+/// no face, else where the pixel's ray first meets a face; nullopt off the mesh.
 std::optional<Vec3> knife_point_under(const CovarianceMesh& mesh, const Viewport& view, glm::vec2 pixel);
 
 class KnifeTool : public ModalTool {
