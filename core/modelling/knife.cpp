@@ -143,6 +143,11 @@ std::vector<Place> plane_crossings(const MeshArrays& m, int f, const CutPlane& p
   return out;
 }
 
+// How refusals name segment i of the path.
+std::string segment_name(size_t i) {
+  return "the cut from point " + std::to_string(i + 1) + " to point " + std::to_string(i + 2);
+}
+
 // Where the cut running from `before` to a place inside a face, straight on along the plane, leaves the
 // face: the crossing of its boundary that goes on most nearly in that direction (segment i).
 Place run_on(const MeshArrays& m, const Place& inside, const Vec3& before, const CutPlane& plane, double on_plane,
@@ -152,9 +157,7 @@ Place run_on(const MeshArrays& m, const Place& inside, const Vec3& before, const
   double straightest = 0;
   for (const Place& c : plane_crossings(m, inside.face, plane, on_plane))
     if (const double h = heading.dot((c.at - inside.at).normalized()); h > straightest) straightest = h, best = c;
-  if (!best)
-    throw Error("the cut from point " + std::to_string(i + 1) + " to point " + std::to_string(i + 2) +
-                " does not leave face " + std::to_string(inside.face));
+  if (!best) throw Error(segment_name(i) + " does not leave face " + std::to_string(inside.face));
   return *best;
 }
 
@@ -174,10 +177,6 @@ Vec3 normal_at(const MeshArrays& m, const Place& p, const std::vector<std::vecto
   Vec3 n = Vec3::Zero();
   for (const int f : faces_from(p, faces_at, edges)) n += unit_normal(m, f);
   return n.normalized();
-}
-
-std::string segment_name(size_t i) {
-  return "the cut from point " + std::to_string(i + 1) + " to point " + std::to_string(i + 2);
 }
 
 // The steps of the cut from one place to the next, face by face along the plane (segment i).
