@@ -27,6 +27,7 @@
 #include "core/modelling/slide.h"
 #include "core/modelling/spin.h"
 #include "render/image/image_io.h"
+#include "ui/editing/covariance_presets.h"
 
 namespace gps {
 namespace {
@@ -302,6 +303,36 @@ TEST_F(EditorTools, DuplicateCopiesTheSelectionAndMovesIt) {
   EXPECT_TRUE(test::same_mesh(play(in_place), duplicate_faces(original_, {0, 1, 2, 3, 4, 5}, Vec3::Zero()).mesh));
 }
 
+// The sharpen brush (Shift+P): a short stroke over the middle of a 4 × 4 grid flattens the middle
+// vertex's Gaussian along its normal (the radius is at first the mean edge length) and leaves the
+// vertices farther than 1.5 edges and every mean as they were; Enter keeps it, Esc takes it back.
+TEST_F(EditorTools, BrushSharpensTheGaussiansUnderTheStroke) {
+  use_mesh(test::grid_mesh(4, 4));
+  const int middle = 12;
+  const glm::vec2 at = pixel_at({middle});
+  Events stroke;
+  stroke.move(at).wait().key("shift+p").wait().drag(at, at + glm::vec2(6.0f, 0.0f), 4).wait();
+  Events kept = stroke;
+  kept.key("enter").wait(3);
+  const CovarianceMesh saved = play(kept, "grid_brushed.png");
+  for (size_t v = 0; v < saved.n_vertices(); ++v) EXPECT_EQ(saved.mean(v), original_.mean(v)) << v;
+  const Vec3 n = vertex_normal(original_, middle);
+  EXPECT_LT(n.dot(saved.covariance(middle) * n), 0.8 * n.dot(original_.covariance(middle) * n)) << output_;
+  int far = 0;
+  for (size_t v = 0; v < saved.n_vertices(); ++v)
+    if ((original_.mean(v) - original_.mean(middle)).norm() > 1.5) {
+      EXPECT_EQ(saved.covariance(v), original_.covariance(v)) << v;
+      ++far;
+    }
+  EXPECT_EQ(far, 16);
+  EXPECT_NE(output_.find("sharpen brush: 5 dabs changed"), std::string::npos) << output_;
+
+  Events taken_back = stroke;
+  taken_back.key("escape").wait(3);
+  play(taken_back);
+  EXPECT_TRUE(saved_is_original());
+}
+
 // Snapping while transforming and the 3D cursor, on the cube.
 class EditorToolsSnap : public EditorTools {
 protected:
@@ -502,6 +533,35 @@ TEST_F(EditorToolsMirror, MirrorApplyWritesCoresMirror) {
   e.key("ctrl+z").wait(3);
   const CovarianceMesh undone = play(e);
   EXPECT_TRUE(test::same_mesh(undone, half));
+}
+
+// Any operation shows on both sides: with the modifier on, the far face (x = 1) extruded by E 0.5 in
+// face mode and the modifier applied gives a closed, outward part symmetric about x = 0 reaching
+// x = ±1.5: the half's 12 vertices and 9 faces, mirrored with its 4 seam vertices merged.
+TEST_F(EditorToolsMirror, MirrorExtrudeShowsOnBothSides) {
+  std::vector<int> far;
+  for (size_t v = 0; v < original_.n_vertices(); ++v)
+    if (original_.mean(v).x() == 1) far.push_back(int(v));
+  ASSERT_EQ(far.size(), 4u);
+  Events e;
+  e.key("3").wait().click(pixel_at(far)).wait().key("ctrl+alt+m").wait();
+  e.key("e").wait().text("0.5").wait().key("enter").wait(3);
+  play(e, "mirror_extruded.png");
+  e.key("ctrl+alt+shift+m").wait(3);
+  const CovarianceMesh saved = play(e);
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, 20);
+  EXPECT_EQ(shape.faces, 18);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_GT(test::signed_volume(saved), 0.0);
+  for (size_t v = 0; v < saved.n_vertices(); ++v) {
+    const Vec3 image = saved.mean(v).cwiseProduct(Vec3(-1, 1, 1));
+    size_t found = 0;
+    for (size_t w = 0; w < saved.n_vertices(); ++w) found += (saved.mean(w) - image).norm() < 1e-12;
+    EXPECT_EQ(found, 1u) << v;
+    EXPECT_LE(std::abs(saved.mean(v).x()), 1.5 + 1e-12);
+  }
 }
 
 // Clipping: G X 0.3 on a seam vertex and the far corner moves the corner by 0.3 and keeps the seam

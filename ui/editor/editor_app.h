@@ -125,6 +125,7 @@ private:
   // Snapping and the 3D cursor (editor_snapping.cpp).
   void build_snapping_commands();
   void place_cursor(glm::vec2 pixel);  // on the surface under the pixel, else at the cursor's depth
+  std::optional<Vec3> surface_at(glm::vec2 pixel) const;  // read back from the last frame; none: background
   void set_cursor(const Vec3& point, const std::string& how);
   // The mirror modifier (editor_mirror_modifier.cpp): the mesh shown through it, its commands.
   void build_mirror_commands();

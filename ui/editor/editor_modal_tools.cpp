@@ -15,6 +15,7 @@ ToolContext EditorApp::tool_context() {
   c.ctrl = input_.ctrl();
   c.snap = view_.snap;
   c.cursor_point = cursor_point_;
+  c.surface_at = [this](glm::vec2 pixel) { return surface_at(pixel); };
   c.transform_gaussians = view_.transform_gaussians;
   c.plans = view_.plans();
   c.install = [this](const Modelled& result, SharpnessReplanner* replanner) { install(result, replanner); };

@@ -24,6 +24,7 @@
 #include "ui/editor/editor_app.h"
 #include "ui/overlays/cursor_overlay.h"
 #include "ui/tools/bevel_tool.h"
+#include "ui/tools/brush_tool.h"
 #include "ui/tools/inset_tool.h"
 #include "ui/tools/knife_tool.h"
 #include "ui/tools/loop_cut_tool.h"
@@ -104,6 +105,15 @@ void EditorApp::build_modelling_commands() {
          nullptr,
          nullptr,
          true});
+  t.add({"Mesh",
+         "Sharpen brush (Shift+P; paint: flatten the Gaussians along the normal, Shift: soften)",
+         {key(GLFW_KEY_P, false, true)},
+         [this] { start_tool([](ToolContext& ctx) { return BrushTool::start(ctx, BrushKind::sharpen); }); },
+         [this] { return document_.mesh().n_vertices() > 0; }});
+  t.add({"Mesh", "Soften brush (Alt+P; paint: make the Gaussians round, Shift: sharpen)",
+         {key(GLFW_KEY_P, false, false, true)},
+         [this] { start_tool([](ToolContext& ctx) { return BrushTool::start(ctx, BrushKind::soften); }); },
+         [this] { return document_.mesh().n_vertices() > 0; }});
   t.add({"Mesh",
          "Duplicate (Shift+D; then move)",
          {key(GLFW_KEY_D, false, true)},

@@ -58,15 +58,20 @@ void EditorApp::set_cursor(const Vec3& point, const std::string& how) {
   set_status(where, false);
 }
 
+std::optional<Vec3> EditorApp::surface_at(glm::vec2 pixel) const {
+  if (!target_) return std::nullopt;
+  const Viewport v = viewport();
+  const auto hit = surface_point(*target_, pixel * glm::vec2(float(target_->width()) / float(v.width),
+                                                             float(target_->height()) / float(v.height)));
+  if (!hit) return std::nullopt;
+  return to_vec(*hit);
+}
+
 // Where the pixel shows the surface, on it (read back from the last frame's position AOV); elsewhere
 // where its ray meets the plane through the cursor facing the view, as Blender keeps the cursor's depth.
 void EditorApp::place_cursor(glm::vec2 pixel) {
   const Viewport v = viewport();
-  if (target_) {
-    const auto hit = surface_point(*target_, pixel * glm::vec2(float(target_->width()) / float(v.width),
-                                                               float(target_->height()) / float(v.height)));
-    if (hit) return set_cursor(to_vec(*hit), "on the surface at");
-  }
+  if (const auto hit = surface_at(pixel)) return set_cursor(*hit, "on the surface at");
   const Ray ray = pixel_ray(v.camera, v.width, v.height, pixel);
   const Vec3 origin = to_vec(ray.origin), direction = to_vec(ray.direction);
   const Vec3 facing = (to_vec(v.camera.target) - to_vec(v.camera.eye_double())).normalized();

@@ -47,6 +47,8 @@ struct ToolContext {
   bool transform_gaussians = true;  // G / S / R carry the Gaussians (else the positions only)
   SnapOptions snap;
   Vec3 cursor_point = Vec3::Zero();  // the 3D cursor
+  /// The limit surface's point under a window pixel in the last frame drawn; nullopt on the background.
+  std::function<std::optional<Vec3>(glm::vec2 pixel)> surface_at;
 
   /// Replaces the document's mesh by `result` as one undo step; throws gps::Error before anything changes.
   /// `replanner`: the plans of the document's topology with other sharpness (core/plans/sharpness_replanner.h).
