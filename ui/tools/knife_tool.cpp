@@ -71,8 +71,10 @@ ToolResult KnifeTool::handle(const InputEvent& e, ToolContext& ctx) {
     }
     return ToolResult::consumed;
   }
-  if (e.type != InputEvent::Type::key_press)
-    return e.type == InputEvent::Type::scroll ? ToolResult::passed_on : ToolResult::consumed;
+  // The wheel, the middle button and the pointer's moves go on to the view (zoom, orbit, pan).
+  const bool middle = (e.type == InputEvent::Type::press || e.type == InputEvent::Type::release) && e.button == 2;
+  if (e.type == InputEvent::Type::scroll || e.type == InputEvent::Type::move || middle) return ToolResult::passed_on;
+  if (e.type != InputEvent::Type::key_press) return ToolResult::consumed;
   if (e.key == GLFW_KEY_BACKSPACE) {
     if (!points_.empty()) points_.pop_back();
     show_count();
