@@ -64,5 +64,33 @@ TEST(EditHistory, DirtyFlagFollowsTheSavedState) {
   EXPECT_TRUE(history.dirty());
 }
 
+// last_step names the step applied last: a new one for every step pushed, the earlier one after an
+// undo, the same again after a redo, and never a number a dropped branch had.
+TEST(EditHistory, TheLastStepHasANumberNoOtherStepGets) {
+  CovarianceMesh mesh = make_sample("cube");
+  EditHistory history;
+  EXPECT_EQ(history.last_step(), 0u);
+  const auto edit = [&](int v) {
+    VertexEdit e = EditHistory::begin(mesh, {v});
+    mesh.covariances[size_t(v)] *= 2.0;
+    history.commit(std::move(e), mesh);
+    return history.last_step();
+  };
+  const auto first = edit(0), second = edit(1);
+  EXPECT_NE(first, 0u);
+  EXPECT_NE(second, first);
+  history.undo(mesh);
+  EXPECT_EQ(history.last_step(), first);
+  history.redo(mesh);
+  EXPECT_EQ(history.last_step(), second);
+  history.undo(mesh);
+  const auto branch = edit(2);  // drops `second`
+  EXPECT_NE(branch, second);
+  EXPECT_NE(branch, first);
+  history.undo(mesh);
+  history.undo(mesh);
+  EXPECT_EQ(history.last_step(), 0u);
+}
+
 }  // namespace
 }  // namespace gps

@@ -333,6 +333,30 @@ TEST_F(EditorTools, BrushSharpensTheGaussiansUnderTheStroke) {
   EXPECT_TRUE(saved_is_original());
 }
 
+// F9 after a bevel: the panel's width typed 0.5 and Enter makes the bevel again from the cube as it
+// was, in place of the first (exactly core's bevel at 0.5); its segments typed 3 likewise; Ctrl+Z then
+// restores the file, the adjusted bevel being the one undo step.
+TEST_F(EditorTools, BevelAdjustedByF9ReplacesTheLastOperation) {
+  // The panel's fields (the panel sits at (10, 230); one row per number).
+  const glm::vec2 width_field(70.0f, 267.0f), segments_field(50.0f, 290.0f);
+  Events bevel = edge_selected();
+  bevel.key("ctrl+b").wait().text("0.25").wait().key("enter").wait().key("f9").wait(2);
+  bevel.click(width_field).wait().text("0.5").wait().key("enter").wait(2);
+  Events shown = bevel;
+  const CovarianceMesh wider = play(shown.wait(2), "cube_bevel_adjusted.png");
+  EXPECT_TRUE(test::same_mesh(wider, bevel_edges(original_, {{6, 7}}, width(0.5)).mesh)) << output_;
+
+  Events segments = bevel;
+  segments.click(segments_field).wait().text("3").wait().key("enter").wait(3);
+  const CovarianceMesh three = play(segments, "cube_bevel_adjusted_segments.png");
+  EXPECT_TRUE(test::same_mesh(three, bevel_edges(original_, {{6, 7}}, width(0.5, 3)).mesh)) << output_;
+
+  Events undone = segments;
+  undone.key("ctrl+z").wait(3);
+  play(undone);
+  EXPECT_TRUE(saved_is_original());
+}
+
 // Snapping while transforming and the 3D cursor, on the cube.
 class EditorToolsSnap : public EditorTools {
 protected:

@@ -17,6 +17,7 @@ VertexEdit EditHistory::begin(const CovarianceMesh& mesh, const std::vector<int>
 void EditHistory::push(Step step) {
   if (saved_ > position_) saved_ = std::numeric_limits<size_t>::max();  // the saved state is gone
   steps_.resize(position_);
+  step.serial = ++serials_;
   steps_.push_back(std::move(step));
   ++position_;
 }

@@ -59,16 +59,21 @@ public:
   /// Unsaved with no step to undo: a mesh that differs from its file as opened (a repaired one).
   void mark_unsaved() { saved_ = SIZE_MAX; }
   void clear() { steps_.clear(), position_ = 0, saved_ = 0; }
+  /// A number naming the last applied step, never given to another step of this history (0: none
+  /// applied): an adjustment of the last operation checks that it is still the last step.
+  std::uint64_t last_step() const { return position_ > 0 ? steps_[position_ - 1].serial : 0; }
 
 private:
   struct Step {
     VertexEdit edit;
     std::optional<MeshReplacement> replacement;  // set: the step replaced the whole mesh
+    std::uint64_t serial = 0;
   };
   void push(Step step);
   std::vector<Step> steps_;
   size_t position_ = 0;  // steps_[0, position_) are applied
   size_t saved_ = 0;     // never reachable again once a branch drops it: SIZE_MAX
+  std::uint64_t serials_ = 0;
 };
 
 }  // namespace gps

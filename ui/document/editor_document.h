@@ -82,6 +82,8 @@ public:
   /// applied. Returns the selection before it when it replaced the mesh.
   std::optional<std::vector<int>> discard_last_operation();
 
+  /// Names the last applied step (EditHistory::last_step).
+  std::uint64_t last_step() const { return history_.last_step(); }
   bool can_undo() const { return !editing() && history_.can_undo(); }
   bool can_redo() const { return !editing() && history_.can_redo(); }
   /// Undo and redo; when the step replaced the whole mesh they return the selection that goes with

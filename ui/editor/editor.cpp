@@ -262,6 +262,7 @@ void EditorApp::draw_ui() {
   commands_.draw_menu_bar();
   draw_handles_and_box();
   draw_modelling_overlay();
+  draw_adjust_last_panel();
   draw_job_dialog();
   if (view_.show_inspector) inspector_.draw(document_, selection_, reach_options_, &view_.show_inspector);
   if (const auto request = inspector_.take_sharpness_request()) apply_sharpness(request->corners, request->sharpness);

@@ -122,6 +122,9 @@ private:
   void draw_merge_items();
   void draw_add_items();
   void draw_modelling_overlay();
+  // Adjust last operation (editor_adjust_last.cpp): F9's panel over the last tool's operation.
+  void draw_adjust_last_panel();
+  void adjust_last(const std::vector<double>& values);
   // Snapping and the 3D cursor (editor_snapping.cpp).
   void build_snapping_commands();
   void place_cursor(glm::vec2 pixel);  // on the surface under the pixel, else at the cursor's depth
@@ -237,6 +240,9 @@ private:
   // The 3D cursor: the pivot TransformPivot::cursor and, once placed, where new primitives go.
   Vec3 cursor_point_ = Vec3::Zero();
   bool cursor_placed_ = false;
+  // The last operation a tool made that F9 can adjust, while its step is the document's last.
+  std::optional<AdjustableOperation> adjustable_;
+  bool show_adjust_last_ = false;
   std::shared_ptr<const CovarianceMesh> preview_;
   MirrorModifier mirror_;  // what the renderer shows of the document: it, or its mirror
   std::vector<int> preview_selection_;

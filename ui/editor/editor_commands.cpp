@@ -61,6 +61,12 @@ void EditorApp::build_commands() {
          [this] { undo_redo(false); },
          [this] { return document_.can_redo(); }});
   t.add({"Edit",
+         "Adjust last operation (F9)",
+         {key(GLFW_KEY_F9)},
+         [this] { show_adjust_last_ = !show_adjust_last_; },
+         always,
+         [this] { return show_adjust_last_; }});
+  t.add({"Edit",
          "Proportional editing",
          {key(GLFW_KEY_O)},
          [this] { reach_options_.proportional = !reach_options_.proportional; },

@@ -16,6 +16,10 @@ ToolContext EditorApp::tool_context() {
   c.snap = view_.snap;
   c.cursor_point = cursor_point_;
   c.surface_at = [this](glm::vec2 pixel) { return surface_at(pixel); };
+  c.adjustable = [this](AdjustableOperation operation) {
+    operation.step = document_.last_step();
+    adjustable_ = std::move(operation);
+  };
   c.transform_gaussians = view_.transform_gaussians;
   c.plans = view_.plans();
   c.install = [this](const Modelled& result, SharpnessReplanner* replanner) { install(result, replanner); };

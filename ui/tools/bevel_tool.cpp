@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/operation_words.h"
@@ -93,8 +94,25 @@ ToolResult BevelTool::handle(const InputEvent& e, ToolContext& ctx) {
   if (confirms(e)) {  // one undo step: the bevel shown, made from the document's mesh as it is
     const Modelled bevelled = *result_;
     if (!ctx.operate(
-            what(), [&](const CovarianceMesh&) { return bevelled; }, nullptr))
+            what(), [&](const CovarianceMesh&) { return bevelled; }, nullptr)) {
       ctx.show_document(std::nullopt);
+      return ToolResult::confirmed;
+    }
+    const bool vertices = vertices_;
+    const std::vector<int> selected = selected_;
+    const std::vector<std::array<int, 2>> edges = edges_;
+    ctx.adjustable({what(),
+                    {{"width", options_.width, 0.0, std::numeric_limits<double>::max()},
+                     {"segments", double(options_.segments), 1.0, double(kMaxBevelSegments), true},
+                     {"profile", options_.profile, 0.0, 1.0}},
+                    base_,
+                    [vertices, selected, edges](const CovarianceMesh& before, const std::vector<double>& v) {
+                      BevelOptions o;
+                      o.width = v[0];
+                      o.segments = int(v[1]);
+                      o.profile = v[2];
+                      return vertices ? bevel_vertices(before, selected, o) : bevel_edges(before, edges, o);
+                    }});
     return ToolResult::confirmed;
   }
   const bool key = e.type == InputEvent::Type::key_press;

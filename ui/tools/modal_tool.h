@@ -14,6 +14,7 @@
 #include "core/mesh/covariance_mesh.h"
 #include "core/modelling/mesh_arrays.h"
 #include "core/plans/planned_surface.h"
+#include "ui/editing/adjustable_operation.h"
 #include "ui/editing/edit_reach.h"
 #include "ui/editing/snap_options.h"
 #include "ui/input/input_events.h"
@@ -70,6 +71,8 @@ struct ToolContext {
   /// A message in the status line, printed (and, with `note`, in the Inspector too); `show_status`
   /// only shows it.
   std::function<void(const std::string&message, bool error)> report, note, show_status;
+  /// After a confirmed operation: what the Adjust last operation panel (F9) may make again.
+  std::function<void(AdjustableOperation operation)> adjustable;
   /// The plans the view asks for (a tool's replanner is made with them).
   PlanOptions plans;
 

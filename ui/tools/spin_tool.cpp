@@ -97,8 +97,18 @@ ToolResult SpinTool::handle(const InputEvent& e, ToolContext& ctx) {
   if (confirms(e)) {  // one undo step: the spin shown, made from the document's mesh as it is
     const Modelled spun = *result_;
     if (!ctx.operate(
-            "spin", [&](const CovarianceMesh&) { return spun; }, nullptr))
+            "spin", [&](const CovarianceMesh&) { return spun; }, nullptr)) {
       ctx.show_document(std::nullopt);
+      return ToolResult::confirmed;
+    }
+    const std::vector<int> profile = profile_;
+    const Vec3 axis = axis_ >= 0 ? Vec3(Vec3::Unit(axis_)) : view_axis_, centre = centre_;
+    ctx.adjustable({"spin",
+                    {{"angle", degrees_, -360.0, 360.0}, {"steps", double(steps_), 1.0, double(kMaxSpinSteps), true}},
+                    base_,
+                    [profile, axis, centre](const CovarianceMesh& before, const std::vector<double>& v) {
+                      return spin(before, profile, axis, centre, v[0], int(v[1]));
+                    }});
     return ToolResult::confirmed;
   }
   const bool key = e.type == InputEvent::Type::key_press;
