@@ -1,7 +1,10 @@
 #include "core/modelling/mesh_queries.h"
 
 #include <algorithm>
+#include <functional>
+#include <limits>
 #include <map>
+#include <queue>
 #include <string>
 
 #include "core/support/error.h"
@@ -198,6 +201,39 @@ std::vector<int> chain_of_edges(const std::vector<std::array<int, 2>>& edges) {
   }
   if (chain.size() != edges.size() + 1) throw Error("the selected edges are not one connected chain");
   return chain;
+}
+
+std::vector<int> shortest_path(const CovarianceMesh& mesh, int from, int to) {
+  const PolyMesh& m = mesh.mesh;
+  const int n = int(m.n_vertices());
+  for (const int v : {from, to})
+    if (v < 0 || v >= n) throw Error("vertex " + std::to_string(v) + " is not in the mesh");
+  std::vector<double> distance(size_t(n), std::numeric_limits<double>::infinity());
+  std::vector<int> previous(size_t(n), -1);
+  using Entry = std::pair<double, int>;  // (distance, vertex): the smallest first, then the lower vertex
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  distance[size_t(from)] = 0.0;
+  queue.push({0.0, from});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[size_t(v)]) continue;
+    if (v == to) break;
+    for (const VH w : m.vv_range(VH(v))) {
+      const double through = d + (mesh.mean(size_t(w.idx())) - mesh.mean(size_t(v))).norm();
+      if (through < distance[size_t(w.idx())]) {
+        distance[size_t(w.idx())] = through;
+        previous[size_t(w.idx())] = v;
+        queue.push({through, w.idx()});
+      }
+    }
+  }
+  if (from != to && previous[size_t(to)] < 0)
+    throw Error("no edges join vertex " + std::to_string(from) + " to vertex " + std::to_string(to));
+  std::vector<int> path{to};
+  while (path.back() != from) path.push_back(previous[size_t(path.back())]);
+  std::reverse(path.begin(), path.end());
+  return path;
 }
 
 std::vector<std::vector<int>> boundary_loops(const CovarianceMesh& mesh) {

@@ -38,6 +38,11 @@ std::vector<std::array<int, 2>> edges_within(const CovarianceMesh& mesh, const s
 /// are not connected or there are none.
 std::vector<int> chain_of_edges(const std::vector<std::array<int, 2>>& edges);
 
+/// The vertices of a shortest path along the mesh's edges from `from` to `to` (both included; the
+/// edges' lengths summed, Dijkstra's algorithm; of paths equally short, the one through lower-numbered
+/// vertices), as Blender's Select Shortest Path (Ctrl+click). Throws gps::Error where no edges join them.
+std::vector<int> shortest_path(const CovarianceMesh& mesh, int from, int to);
+
 /// The mean of the vertices' means (zero for none): where an inset moves towards and a bevel's width
 /// is measured from.
 Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices);

@@ -168,3 +168,32 @@ TEST(MeshQueries, ChainOfEdgesOrdersAPathOrALoop) {
 
 }  // namespace
 }  // namespace gps
+
+namespace gps {
+namespace {
+
+// On a 4 × 4 grid (vertex j·5 + i) from corner 0 to vertex 12 (i = 2, j = 2): a path of four edges,
+// each a step to a neighbour, as short as the grid allows; on the cube from a corner to the opposite
+// one, three edges; a vertex to itself is itself.
+TEST(MeshQueries, ShortestPathFollowsTheEdges) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);
+  const std::vector<int> path = shortest_path(grid, 0, 12);
+  ASSERT_EQ(path.size(), 5u);
+  EXPECT_EQ(path.front(), 0);
+  EXPECT_EQ(path.back(), 12);
+  const auto edges = edges_within(grid, path);
+  for (size_t k = 0; k + 1 < path.size(); ++k) {
+    const std::array<int, 2> e{std::min(path[k], path[k + 1]), std::max(path[k], path[k + 1])};
+    EXPECT_NE(std::find(edges.begin(), edges.end(), e), edges.end()) << path[k] << "-" << path[k + 1];
+  }
+  const CovarianceMesh cube = make_sample("cube");
+  int opposite = 0;
+  for (size_t v = 0; v < cube.n_vertices(); ++v)
+    if ((cube.mean(v) + cube.mean(0)).norm() < 1e-12) opposite = int(v);
+  EXPECT_EQ(shortest_path(cube, 0, opposite).size(), 4u);
+  EXPECT_EQ(shortest_path(cube, 3, 3), (std::vector<int>{3}));
+  EXPECT_EQ(test::error_of([&] { shortest_path(cube, 0, 8); }), "vertex 8 is not in the mesh");
+}
+
+}  // namespace
+}  // namespace gps

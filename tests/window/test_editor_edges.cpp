@@ -7,6 +7,8 @@
 // build/test-artefacts/EditorEdges/.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <algorithm>
 
 #include "../support/editor_driver.h"
@@ -122,6 +124,25 @@ TEST_F(EditorEdges, CtrlAltClickSelectsTheRingWhichShiftECreases) {
   std::vector<EdgeCrease> rungs;
   for (int j = 0; j <= 4; ++j) rungs.push_back({5 * j + 1, 5 * j + 2, kInf});
   EXPECT_EQ(play(ring, "grid_ring_creased.png").sharpness.creases, rungs);
+}
+
+// Ctrl+click selects the shortest path from the active vertex: corner 0 of a 4 × 4 grid clicked, then
+// vertex 12 (the middle) with Ctrl: Shift+E creases the path's four edges, a chain from 0 to 12.
+TEST_F(EditorEdges, CtrlClickSelectsTheShortestPath) {
+  write_mesh(dir_.file("original.ply"), test::grid_mesh(4, 4));
+  original_ = read_mesh(dir_.file("original.ply"));
+  view_ = editor_view(original_);
+  Events path;
+  path.click(along(0, 0, 0.0)).wait().click(along(12, 12, 0.0), "ctrl").wait();
+  path.key("shift+e").wait().text("10").wait().key("enter").wait(3);
+  const std::vector<EdgeCrease> creases = play(path, "grid_path_creased.png").sharpness.creases;
+  ASSERT_EQ(creases.size(), 4u);
+  std::map<int, int> ends;  // how many creased edges meet at each vertex
+  for (const EdgeCrease& c : creases) ++ends[c.a], ++ends[c.b];
+  EXPECT_EQ(ends[0], 1);
+  EXPECT_EQ(ends[12], 1);
+  for (const auto& [v, n] : ends)
+    if (v != 0 && v != 12) EXPECT_EQ(n, 2) << v;
 }
 
 }  // namespace

@@ -31,6 +31,10 @@ public:
   bool contains(int vertex) const;
   /// The vertex the inspector shows: the one last clicked if still selected, else the first; −1 if none.
   int active() const;
+  /// Makes a selected vertex the active one (nothing where it is not selected).
+  void set_active(int vertex) {
+    if (contains(vertex)) last_clicked_ = vertex;
+  }
 
   /// Whether it holds edges of its own (edge mode), else its edges are those with both ends selected.
   bool holds_edges() const { return holds_edges_; }

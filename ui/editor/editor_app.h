@@ -84,6 +84,7 @@ private:
   void click_select(glm::vec2 pixel, bool toggle);
   void loop_select(glm::vec2 pixel, bool toggle);
   void ring_select(glm::vec2 pixel, bool toggle);  // Ctrl+Alt+click: the edge ring across the quads
+  void path_select(glm::vec2 pixel);                // Ctrl+click: the shortest path from the active vertex
   void box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract);
   void select_sharp_edges();      // adds the edges folded by more than sharp_edge_angle_, in edge mode
   void draw_sharp_edges_items();  // the Select menu's angle field and its item

@@ -143,7 +143,10 @@ void EditorApp::press(const InputEvent& e) {
 void EditorApp::release(const InputEvent& e) {
   if (mode_ == Mode::none || e.button != mode_button_) return;
   if (mode_ == Mode::click) {
-    click_select(e.position, input_.shift());
+    if (input_.ctrl() && !input_.shift())
+      path_select(e.position);
+    else
+      click_select(e.position, input_.shift());
   } else if (mode_ == Mode::box) {
     box_select(press_pixel_, e.position, input_.shift(), input_.ctrl());
   } else if (alt_press_ && (mode_ == Mode::orbit || mode_ == Mode::pan) &&

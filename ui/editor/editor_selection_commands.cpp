@@ -151,6 +151,31 @@ void EditorApp::ring_select(glm::vec2 pixel, bool toggle) {
   }
 }
 
+// Adds the shortest path along the edges (core's shortest_path) from the active vertex to the vertex
+// under the pointer, which becomes the active one; in edge mode the path's edges. With nothing
+// selected it is a plain click.
+void EditorApp::path_select(glm::vec2 pixel) {
+  const int from = selection_.active(), to = pick(pixel);
+  if (from < 0 || to < 0) return click_select(pixel, false);
+  const CovarianceMesh& mesh = document_.mesh();
+  try {
+    const std::vector<int> path = shortest_path(mesh, from, to);
+    if (select_mode_ == SelectMode::edge) {
+      std::vector<EdgeEnds> edges;
+      for (size_t k = 0; k + 1 < path.size(); ++k)
+        edges.push_back({std::min(path[k], path[k + 1]), std::max(path[k], path[k + 1])});
+      selection_.hold_edges(mesh);
+      selection_.select_edges(mesh, edges, true);
+    } else {
+      selection_.select(path, true);
+    }
+    selection_.set_active(to);
+    set_status("shortest path: " + count_of(path.size() - 1, "edge", "edges"), false);
+  } catch (const Error& e) {
+    set_status(std::string("shortest path: ") + e.what(), true);
+  }
+}
+
 void EditorApp::box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract) {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
