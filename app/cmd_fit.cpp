@@ -21,8 +21,9 @@ void add_fit_command(CLI::App& app) {
   struct Args {
     std::string coarse, target, output;
     int iterations = 10, level = 8;
-    double smoothness = 1e-5, covariance_smoothness = FitOptions().covariance_smoothness, covariance_prior = FitOptions().covariance_prior,
-           min_sigma = FitOptions().min_sigma, max_sigma = FitOptions().max_sigma, tolerance = 0, time = INFINITY;
+    double smoothness = 1e-5, covariance_smoothness = FitOptions().covariance_smoothness,
+           covariance_prior = FitOptions().covariance_prior, min_sigma = FitOptions().min_sigma,
+           max_sigma = FitOptions().max_sigma, tolerance = 0, time = INFINITY;
     bool plain = false, ascii = false, quiet = false;
     PlanArguments plans;
     RepairArguments repair;
@@ -57,11 +58,13 @@ void add_fit_command(CLI::App& app) {
                   "weight of the prior that keeps each covariance near its start, against the mean squared distance "
                   "(default 0: none)")
       ->check(number_in(0, 1e6));
-  cmd->add_option("--min-sigma", args->min_sigma,
-                  "least standard deviation of each Gaussian, over the mean length of its vertex's edges (default 0.35)")
+  cmd->add_option(
+         "--min-sigma", args->min_sigma,
+         "least standard deviation of each Gaussian, over the mean length of its vertex's edges (default 0.35)")
       ->check(number_in(0, 1e6));
-  cmd->add_option("--max-sigma", args->max_sigma,
-                  "greatest standard deviation of each Gaussian, over the mean length of its vertex's edges (default 1)")
+  cmd->add_option(
+         "--max-sigma", args->max_sigma,
+         "greatest standard deviation of each Gaussian, over the mean length of its vertex's edges (default 1)")
       ->check(positive_number(INFINITY));
   auto* level = cmd->add_option("--level", args->level,
                                 "tessellation level of the limit surface the final report measures (0: no report; "
@@ -98,7 +101,8 @@ void add_fit_command(CLI::App& app) {
     };
     if (!args->quiet)
       std::cout << "fitting " << coarse.n_vertices() << " vertices" << (args->plain ? " (plain)" : "") << " to "
-                << targets.size() << " points\n" << std::flush;
+                << targets.size() << " points\n"
+                << std::flush;
     const FitResult result = naming_input(args->coarse, [&] { return fit_limit_surface(coarse, targets, options); });
     bar.finish();
     if (!args->quiet)

@@ -111,8 +111,7 @@ public:
       if (!(edge > 0)) edge = length_;
     if (p_ == 9)
       for (int i = 0; i < n_; ++i) bound(i, start_.factors[size_t(i)]);
-    if (p_ == 9 && options.covariance_prior > 0)
-      set_prior(options.covariance_prior * per_vertex);
+    if (p_ == 9 && options.covariance_prior > 0) set_prior(options.covariance_prior * per_vertex);
   }
 
   const Parameters& start() const { return start_; }
@@ -262,7 +261,10 @@ public:
     Parameters y = x;
     for (int i = 0; i < n_; ++i) {
       y.means[size_t(i)] += delta.segment<3>(p_ * i);
-      if (p_ == 9) bound(i, y.factors[size_t(i)] += delta.segment<6>(p_ * i + 3));
+      if (p_ == 9) {
+        y.factors[size_t(i)] += delta.segment<6>(p_ * i + 3);
+        bound(i, y.factors[size_t(i)]);
+      }
     }
     return y;
   }
@@ -280,7 +282,9 @@ public:
 
 private:
   // The smoothness term's weight on a component: the means', or the factor parameters' times the squared edge length.
-  double component_weight(int comp) const { return comp < 3 ? smoothness_ : covariance_smoothness_ * length_ * length_; }
+  double component_weight(int comp) const {
+    return comp < 3 ? smoothness_ : covariance_smoothness_ * length_ * length_;
+  }
 
   // Per vertex, per component: the change from the start (factor parameters scaled by the edge length).
   Eigen::MatrixXd changes(const Parameters& x) const {
@@ -325,8 +329,7 @@ private:
 
   double prior_energy(const Parameters& x) const {
     double sum = 0;
-    for (size_t i = 0; i < prior_.size(); ++i)
-      sum += prior_[i].dot((x.factors[i] - start_.factors[i]).cwiseAbs2());
+    for (size_t i = 0; i < prior_.size(); ++i) sum += prior_[i].dot((x.factors[i] - start_.factors[i]).cwiseAbs2());
     return sum;
   }
 
@@ -425,7 +428,7 @@ private:
   double diagonal_ = 1, length_ = 1, smoothness_ = 0, covariance_smoothness_ = 0;
   Eigen::SparseMatrix<double> laplacian_normal_;
   std::vector<double> edge_;  // per vertex, the mean length of its edges at the start
-  std::vector<Vec6> prior_;  // per vertex, the covariance prior's weight on each factor parameter (empty: none)
+  std::vector<Vec6> prior_;   // per vertex, the covariance prior's weight on each factor parameter (empty: none)
   std::vector<SurfacePoint> correspondences_;
   std::vector<LimitWeights> weights_;
   std::vector<int> users_offsets_, pattern_offsets_, pattern_columns_;
