@@ -19,10 +19,12 @@
 #include "ui/document/editor_document.h"
 #include "ui/editing/selection.h"
 #include "ui/tools/bevel_tool.h"
+#include "ui/tools/bisect_tool.h"
 #include "ui/tools/sharpness_tool.h"
 #include "ui/tools/slide_tool.h"
 #include "ui/tools/transform_tool.h"
 #include "tests/support/typed_events.h"
+#include "view/camera.h"
 
 namespace gps {
 namespace {
@@ -315,6 +317,48 @@ TEST(SlideTool, GPressedAgainDuringAGrabSlides) {
   EXPECT_EQ(editor.send(*again.next, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
   EXPECT_TRUE(
       test::same_mesh(editor.document.mesh(), edge_slide(cut.mesh, edges_within(cut.mesh, cut.loop), 0.5).mesh));
+}
+
+InputEvent mouse_event(InputEvent::Type type, glm::vec2 at) {
+  InputEvent e;
+  e.type = type;
+  e.position = at;
+  return e;
+}
+
+// A line dragged across the middle of the view bisects the cube by the plane through the eye and the
+// cube's centre (it crosses the four sides: Blender's 12 vertices and 10 faces) as one undo step; a
+// drag of a few pixels cuts nothing; Esc leaves the mesh.
+TEST(BisectTool, ALineAcrossTheViewCutsByThePlaneSeenAlongIt) {
+  Editor editor(cube(), {});
+  ToolContext c = editor.context();
+  c.viewport.camera = frame_mesh(cube(), 30.0f, 20.0f);
+  c.viewport.width = 640;
+  c.viewport.height = 480;
+  const auto plane = BisectTool::plane_through(c.viewport, {100.0f, 239.5f}, {540.0f, 239.5f});
+  ASSERT_TRUE(plane);
+  const Vec3 eye = to_vec(c.viewport.camera.eye_double()), target = to_vec(c.viewport.camera.target);
+  EXPECT_LT(std::abs(plane->normal.dot(eye - plane->point)), 1e-9);
+  EXPECT_LT(std::abs(plane->normal.dot(target - plane->point)), 1e-6);
+  EXPECT_FALSE(BisectTool::plane_through(c.viewport, {100.0f, 240.0f}, {102.0f, 240.0f}));
+
+  BisectTool tool(c);
+  EXPECT_EQ(tool.handle(mouse_event(InputEvent::Type::press, {320.0f, 240.0f}), c), ToolResult::consumed);
+  EXPECT_EQ(tool.handle(mouse_event(InputEvent::Type::release, {321.0f, 240.0f}), c), ToolResult::consumed);
+  EXPECT_EQ(editor.installed, 0);
+  EXPECT_EQ(tool.handle(mouse_event(InputEvent::Type::press, {100.0f, 239.5f}), c), ToolResult::consumed);
+  EXPECT_EQ(tool.handle(mouse_event(InputEvent::Type::move, {320.0f, 239.5f}), c), ToolResult::consumed);
+  EXPECT_EQ(tool.handle(mouse_event(InputEvent::Type::release, {540.0f, 239.5f}), c), ToolResult::confirmed);
+  EXPECT_EQ(editor.installed, 1);
+  const test::Shape shape = test::shape_of(editor.document.mesh());
+  EXPECT_EQ(shape.vertices, 12);
+  EXPECT_EQ(shape.faces, 10);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+
+  BisectTool cancelled(c);
+  EXPECT_EQ(cancelled.handle(key_event(GLFW_KEY_ESCAPE), c), ToolResult::cancelled);
+  EXPECT_EQ(editor.installed, 1);
 }
 
 }  // namespace

@@ -357,6 +357,22 @@ TEST_F(EditorTools, BevelAdjustedByF9ReplacesTheLastOperation) {
   EXPECT_TRUE(saved_is_original());
 }
 
+// Alt+K and a line dragged across the cube's middle on screen: bisected by the plane seen along the
+// line, crossing its four sides — Blender's 12 vertices and 10 faces, closed and outward.
+TEST_F(EditorTools, BisectByALineAcrossTheView) {
+  const glm::vec2 centre = pixel_of(view_, Vec3::Zero());
+  Events cut;
+  cut.key("alt+k").wait().drag(centre - glm::vec2(250.0f, 0.0f), centre + glm::vec2(250.0f, 0.0f), 6).wait(3);
+  const CovarianceMesh saved = play(cut, "cube_bisected.png");
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, 12);
+  EXPECT_EQ(shape.faces, 10);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_GT(test::signed_volume(saved), 0.0);
+  EXPECT_NE(output_.find("bisect: "), std::string::npos) << output_;
+}
+
 // Snapping while transforming and the 3D cursor, on the cube.
 class EditorToolsSnap : public EditorTools {
 protected:

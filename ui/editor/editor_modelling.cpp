@@ -24,6 +24,7 @@
 #include "ui/editor/editor_app.h"
 #include "ui/overlays/cursor_overlay.h"
 #include "ui/tools/bevel_tool.h"
+#include "ui/tools/bisect_tool.h"
 #include "ui/tools/brush_tool.h"
 #include "ui/tools/inset_tool.h"
 #include "ui/tools/knife_tool.h"
@@ -114,6 +115,9 @@ void EditorApp::build_modelling_commands() {
          {key(GLFW_KEY_P, false, false, true)},
          [this] { start_tool([](ToolContext& ctx) { return BrushTool::start(ctx, BrushKind::soften); }); },
          [this] { return document_.mesh().n_vertices() > 0; }});
+  t.add({"Mesh", "Bisect (Alt+K; drag a line: the cut is the plane seen along it)", {key(GLFW_KEY_K, false, false, true)},
+         [this] { start_tool([](ToolContext& ctx) { return std::make_unique<BisectTool>(ctx); }); },
+         [this] { return document_.mesh().mesh.n_faces() > 0; }});
   t.add({"Mesh",
          "Duplicate (Shift+D; then move)",
          {key(GLFW_KEY_D, false, true)},

@@ -101,7 +101,8 @@ ToolResult BevelTool::handle(const InputEvent& e, ToolContext& ctx) {
     const bool vertices = vertices_;
     const std::vector<int> selected = selected_;
     const std::vector<std::array<int, 2>> edges = edges_;
-    ctx.adjustable({what(),
+    if (ctx.adjustable)
+      ctx.adjustable({what(),
                     {{"width", options_.width, 0.0, std::numeric_limits<double>::max()},
                      {"segments", double(options_.segments), 1.0, double(kMaxBevelSegments), true},
                      {"profile", options_.profile, 0.0, 1.0}},

@@ -103,7 +103,8 @@ ToolResult SpinTool::handle(const InputEvent& e, ToolContext& ctx) {
     }
     const std::vector<int> profile = profile_;
     const Vec3 axis = axis_ >= 0 ? Vec3(Vec3::Unit(axis_)) : view_axis_, centre = centre_;
-    ctx.adjustable({"spin",
+    if (ctx.adjustable)
+      ctx.adjustable({"spin",
                     {{"angle", degrees_, -360.0, 360.0}, {"steps", double(steps_), 1.0, double(kMaxSpinSteps), true}},
                     base_,
                     [profile, axis, centre](const CovarianceMesh& before, const std::vector<double>& v) {
