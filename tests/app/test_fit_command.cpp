@@ -140,6 +140,33 @@ TEST(FitCli, ANonManifoldTargetIsFittedAsItsPoints) {
   EXPECT_EQ(run_command(gpsurf("info " + out)).exit_code, 0);
 }
 
+/// The largest covariance eigenvalue that `gpsurf info` reports for a file.
+double largest_eigenvalue(const std::string& path) {
+  const auto info = run_command(gpsurf("info " + path));
+  const size_t at = info.output.find("covariance eigenvalues: ");
+  if (info.exit_code != 0 || at == std::string::npos) return NAN;
+  const size_t dots = info.output.find(" .. ", at);
+  return dots == std::string::npos ? NAN : std::stod(info.output.substr(dots + 4));
+}
+
+TEST(FitCli, SigmaBoundsReachTheFitAndAnEmptyRangeIsRefused) {
+  test::TempDir dir;
+  const std::string target = dir.write("target.obj", sphere_obj(8));
+  const std::string coarse = dir.file("coarse.ply"), tight = dir.file("tight.ply"), loose = dir.file("loose.ply");
+  ASSERT_EQ(run_command(gpsurf("sample icosphere --size 80 -o " + coarse)).exit_code, 0);
+  const std::string fit = "fit " + coarse + " --target " + target + " --level 0 --iterations 2 -o ";
+  ASSERT_EQ(run_command(gpsurf(fit + tight + " --min-sigma 0.1 --max-sigma 0.2")).exit_code, 0);
+  ASSERT_EQ(run_command(gpsurf(fit + loose + " --min-sigma 1 --max-sigma 2")).exit_code, 0);
+  // Every standard deviation of the tight fit lies below every one of the loose fit (the icosphere's
+  // edges differ by far less than the factor of five between the bounds).
+  EXPECT_LT(largest_eigenvalue(tight), 0.25 * largest_eigenvalue(loose));
+  const std::string refused_file = dir.file("refused.ply");
+  const auto refused = run_command(gpsurf(fit + refused_file + " --min-sigma 2 --max-sigma 1"));
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.output.find("standard deviation bounds"), std::string::npos) << refused.output;
+  EXPECT_FALSE(std::ifstream(refused_file).good());
+}
+
 TEST(FitCli, ErrorsNameTheFile) {
   test::TempDir dir;
   const std::string coarse = dir.file("coarse.ply");
