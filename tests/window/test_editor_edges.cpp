@@ -145,5 +145,22 @@ TEST_F(EditorEdges, CtrlClickSelectsTheShortestPath) {
     if (v != 0 && v != 12) EXPECT_EQ(n, 2) << v;
 }
 
+// Shift+G in face mode after a click on one of the cube's faces: Select similar → Sides (the menu's
+// second item, where the popup opens at the pointer) adds every quad, so S 0.5 then scales all eight
+// vertices about their centre.
+TEST_F(EditorEdges, ShiftGSelectsSimilarFaces) {
+  const glm::vec2 face = pixel_of(view_, 0.25 * (original_.mean(4) + original_.mean(5) + original_.mean(6) + original_.mean(7)));
+  const glm::vec2 menu = face + glm::vec2(40.0f, 40.0f);
+  Events similar;
+  similar.key("3").wait().click(face).wait().move(menu).wait().key("shift+g").wait(2);
+  similar.click(menu + glm::vec2(28.0f, 31.5f)).wait(2);
+  similar.move(menu + glm::vec2(60.0f, 0.0f)).wait().key("s").wait().text("0.5").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(similar, "cube_similar_faces_scaled.png");
+  Vec3 centre = Vec3::Zero();
+  for (size_t v = 0; v < original_.n_vertices(); ++v) centre += original_.mean(v) / 8.0;
+  for (size_t v = 0; v < original_.n_vertices(); ++v)
+    EXPECT_LT((saved.mean(v) - (centre + 0.5 * (original_.mean(v) - centre))).norm(), 1e-12) << v;
+}
+
 }  // namespace
 }  // namespace gps

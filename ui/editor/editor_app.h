@@ -85,6 +85,7 @@ private:
   void loop_select(glm::vec2 pixel, bool toggle);
   void ring_select(glm::vec2 pixel, bool toggle);  // Ctrl+Alt+click: the edge ring across the quads
   void path_select(glm::vec2 pixel);                // Ctrl+click: the shortest path from the active vertex
+  void draw_similar_items();                        // Shift+G: select similar
   void box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract);
   void select_sharp_edges();      // adds the edges folded by more than sharp_edge_angle_, in edge mode
   void draw_sharp_edges_items();  // the Select menu's angle field and its item
@@ -231,6 +232,7 @@ private:
   std::vector<int> shown_ellipsoids_;   // the vertices whose ellipsoids are drawn, when not all
   SelectMode select_mode_ = SelectMode::vertex;
   bool select_through_ = false;     // box selection takes hidden vertices too (X-ray)
+  double similar_threshold_ = 0.0;  // Select similar's (Blender's default)
   double sharp_edge_angle_ = 30.0;  // degrees: Select sharp edges takes the edges folded by more (Blender's default)
   bool alt_press_ = false;          // the left press had Alt: a click selects a loop, a drag orbits
 

@@ -343,6 +343,10 @@ void EditorApp::draw_modelling_overlay() {
     draw_add_items();
     ImGui::EndPopup();
   }
+  if (ImGui::BeginPopup("Similar")) {
+    draw_similar_items();
+    ImGui::EndPopup();
+  }
   if (cursor_placed_) draw_cursor_overlay(*ImGui::GetBackgroundDrawList(), viewport(), cursor_point_);
   if (tool_) tool_->draw_overlay(*ImGui::GetBackgroundDrawList(), tool_context());
 }

@@ -11,6 +11,7 @@
 #include "core/mesh/crease_by_angle.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/mesh_queries.h"
+#include "core/modelling/select_similar.h"
 #include "core/modelling/operation_words.h"
 #include "core/support/error.h"
 #include "ui/editor/editor_app.h"
@@ -176,6 +177,55 @@ void EditorApp::path_select(glm::vec2 pixel) {
   }
 }
 
+// Select similar's items for the selection mode, and its threshold: each adds the elements like a
+// selected one (core/modelling/select_similar.h).
+void EditorApp::draw_similar_items() {
+  const CovarianceMesh& mesh = document_.mesh();
+  const auto add = [&](Similarity similarity) {
+    try {
+      size_t found = 0;
+      if (select_mode_ == SelectMode::edge) {
+        const std::vector<EdgeEnds> edges =
+            similar_edges(mesh, selection_.edges(mesh), similarity, similar_threshold_);
+        selection_.hold_edges(mesh);
+        selection_.select_edges(mesh, edges, true);
+        found = edges.size();
+      } else if (select_mode_ == SelectMode::face) {
+        const std::vector<int> faces = similar_faces(mesh, faces_within(mesh, selection_.vertices()), similarity,
+                                                     similar_threshold_);
+        std::vector<int> corners_of_faces;
+        for (const int f : faces)
+          for (const int v : corners(mesh, f)) corners_of_faces.push_back(v);
+        selection_.select(corners_of_faces, true);
+        found = faces.size();
+      } else {
+        const std::vector<int> vertices = similar_vertices(mesh, selection_.vertices(), similarity);
+        selection_.select(vertices, true);
+        found = vertices.size();
+      }
+      set_status(std::string("similar ") + similarity_name(similarity) + ": " + std::to_string(found) + " selected",
+                 false);
+    } catch (const Error& e) {
+      set_status(std::string("select similar: ") + e.what(), true);
+    }
+  };
+  const std::vector<std::pair<const char*, Similarity>> items =
+      select_mode_ == SelectMode::edge   ? std::vector<std::pair<const char*, Similarity>>{{"Length", Similarity::edge_length},
+                                                                                          {"Crease", Similarity::edge_crease}}
+      : select_mode_ == SelectMode::face ? std::vector<std::pair<const char*, Similarity>>{{"Area", Similarity::face_area},
+                                                                                          {"Sides", Similarity::face_sides},
+                                                                                          {"Normal", Similarity::face_normal}}
+                                         : std::vector<std::pair<const char*, Similarity>>{
+                                               {"Number of edges", Similarity::vertex_edges}};
+  for (const auto& [label, similarity] : items)
+    if (ImGui::MenuItem(label)) add(similarity);
+  ImGui::SetNextItemWidth(80.0f);
+  ImGui::InputDouble("threshold", &similar_threshold_, 0.0, 0.0, "%.3g");
+  similar_threshold_ = std::clamp(similar_threshold_, 0.0, 1.0);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("lengths and areas within this fraction, creases within this much, normals within this · 180°");
+}
+
 void EditorApp::box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract) {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
@@ -271,6 +321,13 @@ void EditorApp::build_selection_commands() {
            else
              selection_.invert(document_.mesh().n_vertices());
          }});
+  t.add({"Select",
+         "Select similar (Shift+G)",
+         {key(GLFW_KEY_G, false, true)},
+         [this] { popup_request_ = "Similar"; },
+         [this] { return !selection_.empty(); },
+         nullptr,
+         [this] { draw_similar_items(); }});
   t.add({"Select",
          "Select sharp edges",
          {key(GLFW_KEY_E, true, true)},
