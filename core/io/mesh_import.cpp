@@ -1,3 +1,4 @@
+#include "core/io/dropped_attributes.h"
 #include "core/io/mesh_import.h"
 
 #include <algorithm>
@@ -216,6 +217,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   faces.offsets.reserve(n_faces + 1);
   faces.verts.reserve(n_corners);
   SharpTags tags;
+  DroppedAttributes dropped;
   for (LineCursor lines(data); !lines.done(); lines.next()) {
     std::string_view line = lines.line();
     const auto at = [&] { return source + ": line " + std::to_string(lines.number()) + ": "; };
@@ -231,14 +233,21 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
       if (const std::string why = position_problem(p); !why.empty())
         throw Error(source + ": vertex " + std::to_string(points.size() + 1) + " (line " +
                     std::to_string(lines.number()) + ") " + why);
-      // What may follow: a weight, or a colour as MeshLab writes it (numbers, ignored), or a comment.
+      // What may follow: a weight, or a colour as MeshLab writes it (numbers, dropped), or a comment.
+      int extras = 0;
       for (std::string_view extra = next_word(line); !extra.empty() && extra[0] != '#'; extra = next_word(line)) {
         double ignored = 0;
         if (!parse_number(extra, ignored).empty())
           throw Error(at() + quoted_token(extra) +
                       " after the vertex's coordinates is not a number (a weight or a colour)");
+        ++extras;
       }
+      if (extras >= 3) ++dropped.colours;
       points.push_back(p);
+    } else if (keyword == "vt") {
+      ++dropped.texture_coordinates;
+    } else if (keyword == "vn") {
+      ++dropped.normals;
     } else if (keyword == "t") {
       read_sharp_tag(line, lines.number(), at(), tags);
     } else if (keyword == "f") {
@@ -271,6 +280,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built
   PolygonSoup soup = plain_soup(std::move(points), std::move(faces), source);
   soup.sharpness = sharpness_of_tags(tags, soup, source, soup.notes);
+  if (std::string note = dropped_attributes_note(source, dropped); !note.empty()) soup.notes.push_back(std::move(note));
   return soup;
 }
 

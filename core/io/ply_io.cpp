@@ -14,6 +14,7 @@
 
 #include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
+#include "core/io/dropped_attributes.h"
 #include "core/io/number_text.h"
 #include "core/support/quoted_text.h"
 #include "core/io/text_file.h"
@@ -324,6 +325,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
   BodyReader body(data, pos, *format, line, source);
   std::vector<Vec3> means;
   std::vector<Mat3> covariances;
+  DroppedAttributes dropped;  // what the vertex element holds that the mesh does not keep
   PolygonTopology faces;
   bool has_covariances = false;
   std::vector<double> corners;        // per vertex, where the vertex element has a corner property
@@ -367,6 +369,12 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       for (int k = 0; k < 6; ++k) found += (ic[k] = index_of(cov_names[k])) >= 0;
       if (found != 0 && found != 6) fail("the vertex element has only some of cxx cxy cxz cyy cyz czz");
       has_covariances = found == 6;
+      for (const Property& p : e.properties) {
+        const std::string& n = p.name;
+        if (n == "nx") dropped.normals += e.count;
+        if (n == "red" || n == "diffuse_red") dropped.colours += e.count;
+        if (n == "u" || n == "s" || n == "texture_u" || n == "texture_s") dropped.texture_coordinates += e.count;
+      }
       const int icorner = index_of("corner");
       // Arrays grow as records arrive (never sized from the header): memory follows what the file holds.
       means.reserve(std::min<size_t>(e.count, 1 << 16));
@@ -517,6 +525,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
   soup.covariances = std::move(covariances);
   soup.faces = std::move(faces);
   soup.notes = std::move(notes);
+  if (std::string note = dropped_attributes_note(shown_source, dropped); !note.empty())
+    soup.notes.push_back(std::move(note));
   return soup;
 }
 
