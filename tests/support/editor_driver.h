@@ -15,6 +15,7 @@
 #include "ui/editing/selection.h"
 #include "view/camera.h"
 #include "view/projection.h"
+#include "view_pixels.h"
 
 namespace gps::test {
 
@@ -29,10 +30,6 @@ inline std::string artefact(const std::string& name) {
 inline std::string editor_command(const std::string& args) { return std::string(GPSURF_EDITOR_BINARY) + " " + args; }
 
 /// The window pixel whose centre a world point projects to (pixel_ray's convention).
-inline glm::vec2 pixel_of(const Viewport& v, const Vec3& p) {
-  const auto q = project_to_pixel(v.camera, v.width, v.height, to_glm(p));
-  return q ? glm::vec2(*q) - glm::vec2(0.5f) : glm::vec2(-1.0f);
-}
 
 /// The window the editor tests open (--size 1024x700).
 constexpr int kWindowWidth = 1024, kWindowHeight = 700;

@@ -4,24 +4,18 @@
 #include <gtest/gtest.h>
 
 #include "core/modelling/samples.h"
+#include "tests/support/view_pixels.h"
 #include "view/visible_vertices.h"
 
 namespace gps {
 namespace {
 
-glm::vec2 pixel_of(const Viewport& v, const Vec3& p) {
-  return glm::vec2(*project_to_pixel(v.camera, v.width, v.height, to_glm(p))) - glm::vec2(0.5f);
-}
+using test::pixel_of;
 
 class ElementPicking : public ::testing::Test {
 protected:
-  void SetUp() override {
-    view_.camera = frame_mesh(mesh_);
-    view_.width = 640;
-    view_.height = 480;
-  }
   CovarianceMesh mesh_ = make_sample("cube");
-  Viewport view_;
+  Viewport view_ = test::framed_view(mesh_);
 };
 
 TEST_F(ElementPicking, AnEdgesMidpointPicksItAndTheFrontMostWins) {

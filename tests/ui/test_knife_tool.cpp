@@ -6,24 +6,20 @@
 #include <gtest/gtest.h>
 
 #include "core/modelling/samples.h"
+#include "tests/support/view_pixels.h"
 
 namespace gps {
 namespace {
 
 class KnifePoints : public ::testing::Test {
 protected:
-  void SetUp() override {
-    view_.camera = frame_mesh(mesh_);
-    view_.width = 640;
-    view_.height = 480;
-  }
   // The pixel whose centre p projects to, moved by `offset`.
   glm::vec2 pixel_of(const Vec3& p, glm::vec2 offset = glm::vec2(0.0f)) const {
-    return glm::vec2(*project_to_pixel(view_.camera, view_.width, view_.height, p)) - glm::vec2(0.5f) + offset;
+    return test::pixel_of(view_, p) + offset;
   }
   Vec3 mean(int v) const { return mesh_.mean(size_t(v)); }
   CovarianceMesh mesh_ = make_sample("cube");
-  Viewport view_;
+  Viewport view_ = test::framed_view(mesh_);
 };
 
 TEST_F(KnifePoints, CornersAndEdgeMiddlesNearThePointerAreTakenExactly) {

@@ -9,25 +9,18 @@
 
 #include "core/modelling/samples.h"
 #include "ui/editing/transform_mode.h"
+#include "tests/support/view_pixels.h"
 #include "view/picking.h"
 
 namespace gps {
 namespace {
 
-// The window pixel whose centre (pixel + 0.5, as pixel_ray takes it) a point projects to.
-glm::vec2 pixel_of(const Viewport& v, const Vec3& p) {
-  return glm::vec2(*project_to_pixel(v.camera, v.width, v.height, p)) - glm::vec2(0.5f);
-}
+using test::pixel_of;
 
 class Snapping : public ::testing::Test {
 protected:
-  void SetUp() override {
-    view_.camera = frame_mesh(mesh_);
-    view_.width = 640;
-    view_.height = 480;
-  }
   CovarianceMesh mesh_ = make_sample("cube");
-  Viewport view_;
+  Viewport view_ = test::framed_view(mesh_);
 };
 
 TEST_F(Snapping, AVertexNearThePointerIsFoundUnlessItMoves) {

@@ -3,17 +3,18 @@
 // face's other two sides that join their ends (the trap of a vertex selection); back in vertex mode
 // (1) the same four vertices crease all four sides, as before. Select sharp edges (Ctrl+Shift+E,
 // 30°) takes the cube's 12 edges, which Shift+E then creases. Alt+click selects a loop's edges: two
-// neighbouring rows of a grid crease without the rungs between them. Screenshots kept in
-// build/test-artefacts/EditorEdges/.
+// neighbouring rows of a grid crease without the rungs between them; Ctrl+Alt+click an edge ring,
+// Ctrl+click a shortest path, Shift+G similar faces and C a circle dragged along a row select what
+// Blender's do. Screenshots kept in build/test-artefacts/EditorEdges/.
 #include <gtest/gtest.h>
 
-#include <map>
-
 #include <algorithm>
+#include <map>
 
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/sharpness.h"
+#include "core/modelling/mesh_queries.h"
 #include "core/modelling/samples.h"
 #include "tests/support/test_meshes.h"
 
@@ -162,5 +163,35 @@ TEST_F(EditorEdges, ShiftGSelectsSimilarFaces) {
     EXPECT_LT((saved.mean(v) - (centre + 0.5 * (original_.mean(v) - centre))).norm(), 1e-12) << v;
 }
 
+// C, then a stroke through the grid's middle row (pressed on vertex 10, moved over 11, 12 and 13,
+// let go on 14): the circle (25 pixels) takes the vertices it passes over, so Shift+E after Enter
+// creases the row's four edges, and no edge with an end the circle never came near.
+TEST_F(EditorEdges, CircleSelectTakesWhatTheDragPassesOver) {
+  write_mesh(dir_.file("original.ply"), test::grid_mesh(4, 4));
+  original_ = read_mesh(dir_.file("original.ply"));
+  view_ = editor_view(original_);
+  std::vector<glm::vec2> stroke;
+  for (const int v : {10, 11, 12, 13, 14}) stroke.push_back(along(v, v, 0.0));
+  Events circle;
+  circle.move(stroke.front()).wait().key("c").wait().press(stroke.front()).wait();
+  for (size_t k = 1; k < stroke.size(); ++k) circle.move(stroke[k]).wait();
+  circle.release(stroke.back()).wait().key("enter").wait();
+  circle.key("shift+e").wait().text("10").wait().key("enter").wait(3);
+  const std::vector<EdgeCrease> creases = play(circle, "grid_circle_selected.png").sharpness.creases;
+  for (int i = 10; i < 14; ++i)
+    EXPECT_NE(std::find_if(creases.begin(), creases.end(),
+                           [i](const EdgeCrease& c) { return c.a == i && c.b == i + 1 && c.sharpness == kInf; }),
+              creases.end())
+        << i;
+  const auto near_stroke = [&](int v) {
+    float nearest = 1e9f;
+    for (const glm::vec2 p : stroke) nearest = std::min(nearest, glm::length(along(v, v, 0.0) - p));
+    return nearest;
+  };
+  for (const EdgeCrease& c : creases) {
+    EXPECT_LE(near_stroke(c.a), 26.0f) << c.a;
+    EXPECT_LE(near_stroke(c.b), 26.0f) << c.b;
+  }
+}
 }  // namespace
 }  // namespace gps

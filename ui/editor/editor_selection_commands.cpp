@@ -15,6 +15,7 @@
 #include "core/modelling/operation_words.h"
 #include "core/support/error.h"
 #include "ui/editor/editor_app.h"
+#include "ui/tools/circle_select_tool.h"
 #include "view/element_picking.h"
 #include "view/picking.h"
 #include "view/visible_vertices.h"
@@ -320,6 +321,14 @@ void EditorApp::build_selection_commands() {
              selection_.invert_edges(document_.mesh());
            else
              selection_.invert(document_.mesh().n_vertices());
+         }});
+  t.add({"Select",
+         "Circle select (C; drag to select, Shift+drag to deselect, wheel: radius)",
+         {key(GLFW_KEY_C)},
+         [this] {
+           start_tool([this](ToolContext& ctx) {
+             return std::make_unique<CircleSelectTool>(ctx, select_mode_, select_through_);
+           });
          }});
   t.add({"Select",
          "Select similar (Shift+G)",

@@ -59,45 +59,16 @@ void BevelTool::update(ToolContext& ctx) {
   const std::string keys =
       "  (move away from the centre or type the width, wheel: segments, P: profile; "
       "click or Enter confirms, Esc cancels)";
-  try {
-    if (options_.width > 0) {
-      Modelled bevelled =
-          vertices_ ? bevel_vertices(*base_, selected_, options_) : bevel_edges(*base_, edges_, options_);
-      auto shown = std::make_shared<const CovarianceMesh>(bevelled.mesh);
-      ctx.show_preview(shown, bevelled.selection, std::nullopt);
-      result_ = std::move(bevelled);
-    } else if (result_) {
-      ctx.show_document(std::nullopt);
-      result_.reset();
-    }
-    status_ = amount + keys;
-    error_ = false;
-  } catch (const Error& e) {  // refused: the mesh before
-    if (result_) {
-      result_.reset();
-      ctx.show_document(std::nullopt);
-    }
-    refusal_ = e.what();
-    status_ = std::string(amount) + ": " + refusal_;
-    error_ = true;
-  }
+  preview(
+      ctx, !(options_.width > 0),
+      [&] { return vertices_ ? bevel_vertices(*base_, selected_, options_) : bevel_edges(*base_, edges_, options_); },
+      amount, keys);
 }
 
 ToolResult BevelTool::handle(const InputEvent& e, ToolContext& ctx) {
-  if (cancels(e) || (confirms(e) && !result_)) {
-    if (result_) ctx.show_document(std::nullopt);
-    ctx.report(cancels(e) ? std::string(what()) + " cancelled"
-                          : std::string(what()) + ": nothing done (" + (error_ ? refusal_ : "width 0") + ")",
-               error_ && !cancels(e));
-    return ToolResult::cancelled;
-  }
-  if (confirms(e)) {  // one undo step: the bevel shown, made from the document's mesh as it is
-    const Modelled bevelled = *result_;
-    if (!ctx.operate(
-            what(), [&](const CovarianceMesh&) { return bevelled; }, nullptr)) {
-      ctx.show_document(std::nullopt);
-      return ToolResult::confirmed;
-    }
+  if (cancelled_by(e, ctx, what(), "width 0")) return ToolResult::cancelled;
+  if (confirms(e)) {  // one undo step: the bevel shown
+    if (!install_shown(ctx, what())) return ToolResult::confirmed;
     const bool vertices = vertices_;
     const std::vector<int> selected = selected_;
     const std::vector<std::array<int, 2>> edges = edges_;

@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "core/modelling/bevel.h"
-#include "ui/tools/modal_tool.h"
+#include "ui/tools/preview_tool.h"
 #include "ui/tools/typed_number.h"
 
 namespace gps {
 
-class BevelTool : public ModalTool {
+class BevelTool : public PreviewTool {
 public:
   /// `vertices`: bevels the selected vertices, else the selected edges (Selection::edges).
   /// nullptr (the refusal reported) where the selection holds none.
@@ -43,8 +43,6 @@ private:
   glm::vec2 start_cursor_{0.0f};
   BevelOptions options_;
   TypedNumber typed_;
-  std::optional<Modelled> result_;  // the bevel shown (nullopt: the mesh before)
-  std::string refusal_;             // refusal_: why the values shown cannot bevel
 };
 
 }  // namespace gps

@@ -64,43 +64,14 @@ void SpinTool::update(ToolContext& ctx) {
   const std::string keys =
       "  (turn the mouse around the 3D cursor or type degrees, wheel: steps, X Y Z: axis; "
       "click or Enter confirms, Esc cancels)";
-  try {
-    if (degrees_ != 0.0) {
-      Modelled spun = spin(*base_, profile_, axis, centre_, degrees_, steps_);
-      ctx.show_preview(std::make_shared<const CovarianceMesh>(spun.mesh), spun.selection, std::nullopt);
-      result_ = std::move(spun);
-    } else if (result_) {
-      ctx.show_document(std::nullopt);
-      result_.reset();
-    }
-    status_ = amount + keys;
-    error_ = false;
-  } catch (const Error& e) {  // refused: the mesh before
-    if (result_) {
-      result_.reset();
-      ctx.show_document(std::nullopt);
-    }
-    refusal_ = e.what();
-    status_ = std::string(amount) + ": " + refusal_;
-    error_ = true;
-  }
+  preview(
+      ctx, degrees_ == 0.0, [&] { return spin(*base_, profile_, axis, centre_, degrees_, steps_); }, amount, keys);
 }
 
 ToolResult SpinTool::handle(const InputEvent& e, ToolContext& ctx) {
-  if (cancels(e) || (confirms(e) && !result_)) {
-    if (result_) ctx.show_document(std::nullopt);
-    ctx.report(cancels(e) ? std::string("spin cancelled")
-                          : "spin: nothing done (" + (error_ ? refusal_ : std::string("angle 0")) + ")",
-               error_ && !cancels(e));
-    return ToolResult::cancelled;
-  }
-  if (confirms(e)) {  // one undo step: the spin shown, made from the document's mesh as it is
-    const Modelled spun = *result_;
-    if (!ctx.operate(
-            "spin", [&](const CovarianceMesh&) { return spun; }, nullptr)) {
-      ctx.show_document(std::nullopt);
-      return ToolResult::confirmed;
-    }
+  if (cancelled_by(e, ctx, "spin", "angle 0")) return ToolResult::cancelled;
+  if (confirms(e)) {  // one undo step: the spin shown
+    if (!install_shown(ctx, "spin")) return ToolResult::confirmed;
     const std::vector<int> profile = profile_;
     const Vec3 axis = axis_ >= 0 ? Vec3(Vec3::Unit(axis_)) : view_axis_, centre = centre_;
     if (ctx.adjustable)

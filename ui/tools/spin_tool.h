@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "ui/tools/modal_tool.h"
+#include "ui/tools/preview_tool.h"
 #include "ui/tools/typed_number.h"
 
 namespace gps {
 
-class SpinTool : public ModalTool {
+class SpinTool : public PreviewTool {
 public:
   /// nullptr (the refusal reported) where the selection's edges are not one chain (Selection::edges).
   static std::unique_ptr<ModalTool> start(ToolContext& ctx);
@@ -36,8 +36,6 @@ private:
   double degrees_ = 0.0;
   int steps_ = kDefaultSteps;
   TypedNumber typed_;
-  std::optional<Modelled> result_;  // the spin shown (nullopt: the mesh before)
-  std::string refusal_;             // why the values shown cannot spin
 };
 
 }  // namespace gps

@@ -48,24 +48,33 @@ TransformTool::TransformTool(ToolContext& ctx, const Vec3& normal, std::string o
   update(ctx);
 }
 
-std::unique_ptr<ModalTool> TransformTool::extrude(ToolContext& ctx) {
-  const std::vector<int> selected = ctx.selection.vertices();
+std::unique_ptr<ModalTool> TransformTool::move_after(ToolContext& ctx, const std::string& name,
+                                                     const std::function<Modelled(const CovarianceMesh&)>& run,
+                                                     bool along_normal) {
   std::string summary;
   const bool done = ctx.operate(
-      "extrude",
+      name,
       [&](const CovarianceMesh& m) {
-        Modelled r = extrude_vertices(m, selected, Vec3::Zero());
+        Modelled r = run(m);
         summary = r.summary;
         return r;
       },
       nullptr);
   if (!done) return nullptr;
-  // The area-weighted normal of the extruded faces (Newell's sums); zero for edges and vertices.
-  const MeshArrays arrays = arrays_of(ctx.document.mesh());
+  // The area-weighted normal of the faces made (Newell's sums); zero for edges and vertices.
   Vec3 normal = Vec3::Zero();
-  for (const int f : faces_within(ctx.document.mesh(), ctx.selection.vertices())) normal += newell_normal(arrays, f);
-  if (normal.norm() > 0) normal.normalize();
-  return std::unique_ptr<ModalTool>(new TransformTool(ctx, normal, "extrude", summary));
+  if (along_normal) {
+    const MeshArrays arrays = arrays_of(ctx.document.mesh());
+    for (const int f : faces_within(ctx.document.mesh(), ctx.selection.vertices())) normal += newell_normal(arrays, f);
+    if (normal.norm() > 0) normal.normalize();
+  }
+  return std::unique_ptr<ModalTool>(new TransformTool(ctx, normal, name, summary));
+}
+
+std::unique_ptr<ModalTool> TransformTool::extrude(ToolContext& ctx) {
+  const std::vector<int> selected = ctx.selection.vertices();
+  return move_after(
+      ctx, "extrude", [&](const CovarianceMesh& m) { return extrude_vertices(m, selected, Vec3::Zero()); }, true);
 }
 
 std::unique_ptr<ModalTool> TransformTool::duplicate(ToolContext& ctx) {
@@ -74,17 +83,8 @@ std::unique_ptr<ModalTool> TransformTool::duplicate(ToolContext& ctx) {
     ctx.note("duplicate refused: select a face or more (all its corners)", true);
     return nullptr;
   }
-  std::string summary;
-  const bool done = ctx.operate(
-      "duplicate",
-      [&](const CovarianceMesh& m) {
-        Modelled r = duplicate_faces(m, faces, Vec3::Zero());
-        summary = r.summary;
-        return r;
-      },
-      nullptr);
-  if (!done) return nullptr;
-  return std::unique_ptr<ModalTool>(new TransformTool(ctx, Vec3::Zero(), "duplicate", summary));
+  return move_after(
+      ctx, "duplicate", [&](const CovarianceMesh& m) { return duplicate_faces(m, faces, Vec3::Zero()); }, false);
 }
 
 void TransformTool::follow(glm::vec2 cursor, ToolContext& ctx) {

@@ -7,6 +7,7 @@
 // G pressed again during a grab hands over to the slide (ui/tools/slide_tool.h), as Blender's G G.
 // Snapping (ui/editing/snap_options.h; held Ctrl inverts it) rounds the amount to increments or takes
 // the pivot onto the vertex, edge or face under the pointer, marked by a circle.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,6 +37,11 @@ public:
 private:
   // The move after `operation` ("extrude", "duplicate"), along `normal` (free where zero).
   TransformTool(ToolContext& ctx, const Vec3& normal, std::string operation, std::string summary);
+  // run() as one undo step named `name`, then the move of the selection it leaves (along the normal
+  // of the faces within it where `along_normal`) folded into that step; nullptr where refused.
+  static std::unique_ptr<ModalTool> move_after(ToolContext& ctx, const std::string& name,
+                                               const std::function<Modelled(const CovarianceMesh&)>& run,
+                                               bool along_normal);
   void update(ToolContext& ctx);
   void follow(glm::vec2 cursor, ToolContext& ctx);  // the mouse's amount, snapped where snapping is on
   void end(bool keep, ToolContext& ctx);
