@@ -15,7 +15,7 @@ double closest_on_segment(const Vec3& a, const Vec3& b, const Vec3& o, const Vec
   const Vec3 e = b - a, w = a - o;
   const double ee = e.dot(e), ed = e.dot(d), ew = e.dot(w), dw = d.dot(w);
   const double denominator = ee - ed * ed;  // |e|² |d|² − (e·d)², |d| = 1
-  if (!(denominator > 1e-300)) return 0.0;   // parallel to the ray: either end is as near
+  if (!(denominator > 1e-300)) return 0.0;  // parallel to the ray: either end is as near
   return std::clamp((ed * dw - ew) / denominator, 0.0, 1.0);
 }
 

@@ -474,9 +474,9 @@ std::string prefixed(const std::string& source, const std::string& message) {
 }  // namespace
 
 std::vector<std::string> operation_names() {
-  return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude",   "inset", "delete", "dissolve",
-          "merge",     "weld",     "fill",       "bridge",    "transform", "add",   "set",    "crease",
-          "corner",    "slide",    "bevel",      "bisect",    "knife",     "duplicate", "spin",  "mirror"};
+  return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude",   "inset",     "delete", "dissolve",
+          "merge",     "weld",     "fill",       "bridge",    "transform", "add",       "set",    "crease",
+          "corner",    "slide",    "bevel",      "bisect",    "knife",     "duplicate", "spin",   "mirror"};
 }
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {

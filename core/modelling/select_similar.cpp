@@ -49,8 +49,9 @@ const char* similarity_name(Similarity similarity) {
   return "";
 }
 
-std::vector<std::array<int, 2>> similar_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& selected,
-                                              Similarity similarity, double tolerance) {
+std::vector<std::array<int, 2>> similar_edges(const CovarianceMesh& mesh,
+                                              const std::vector<std::array<int, 2>>& selected, Similarity similarity,
+                                              double tolerance) {
   if (similarity != Similarity::edge_length && similarity != Similarity::edge_crease)
     throw Error(std::string("edges have no ") + similarity_name(similarity) + " to compare");
   const auto value = [&](int a, int b) {
@@ -86,7 +87,8 @@ std::vector<int> similar_faces(const CovarianceMesh& mesh, const std::vector<int
     std::vector<double> wanted;
     for (const int f : selected) wanted.push_back(face_area_vector(mesh, PolyMesh::FaceHandle(f)).norm());
     for (const auto f : m.faces())
-      if (near_one(face_area_vector(mesh, f).norm(), wanted, tolerance, [](double w) { return w; })) similar.push_back(f.idx());
+      if (near_one(face_area_vector(mesh, f).norm(), wanted, tolerance, [](double w) { return w; }))
+        similar.push_back(f.idx());
     return similar;
   }
   if (similarity != Similarity::face_normal)

@@ -15,8 +15,9 @@ const char* similarity_name(Similarity similarity);
 
 /// The edges (a < b, ascending) whose length is within `tolerance` (a fraction of it) of a selected
 /// edge's, or whose crease is within `tolerance` of one's. The selected edges are among them.
-std::vector<std::array<int, 2>> similar_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& selected,
-                                              Similarity similarity, double tolerance);
+std::vector<std::array<int, 2>> similar_edges(const CovarianceMesh& mesh,
+                                              const std::vector<std::array<int, 2>>& selected, Similarity similarity,
+                                              double tolerance);
 /// The faces (ascending) whose area is within `tolerance` (a fraction) of a selected face's, whose
 /// number of sides equals one's, or whose normal turns from one's by at most `tolerance` · 180°.
 std::vector<int> similar_faces(const CovarianceMesh& mesh, const std::vector<int>& selected, Similarity similarity,

@@ -50,8 +50,8 @@ TEST(SelectSimilar, FacesByAreaSidesAndNormal) {
 TEST(SelectSimilar, VerticesWithAsManyEdges) {
   const CovarianceMesh grid = test::grid_mesh(4, 4);
   EXPECT_EQ(similar_vertices(grid, {0}, Similarity::vertex_edges), (std::vector<int>{0, 4, 20, 24}));  // corners
-  EXPECT_EQ(similar_vertices(grid, {12}, Similarity::vertex_edges).size(), 9u);                       // inside
-  EXPECT_EQ(similar_vertices(grid, {1}, Similarity::vertex_edges).size(), 12u);                       // sides
+  EXPECT_EQ(similar_vertices(grid, {12}, Similarity::vertex_edges).size(), 9u);                        // inside
+  EXPECT_EQ(similar_vertices(grid, {1}, Similarity::vertex_edges).size(), 12u);                        // sides
 }
 
 }  // namespace

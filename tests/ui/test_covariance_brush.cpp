@@ -47,7 +47,8 @@ TEST(CovarianceBrush, DabsNeverFlattenPastTheFloor) {
   Mat3 sigma = Mat3::Identity();
   for (int k = 0; k < 200; ++k) sigma = brushed_covariance(sigma, Vec3::UnitY(), 1.0, BrushKind::sharpen);
   const Eigen::SelfAdjointEigenSolver<Mat3> eigen(sigma);
-  EXPECT_GE(eigen.eigenvalues().minCoeff(), kFlattestStretch * kFlattestStretch * eigen.eigenvalues().maxCoeff() * 0.999);
+  EXPECT_GE(eigen.eigenvalues().minCoeff(),
+            kFlattestStretch * kFlattestStretch * eigen.eigenvalues().maxCoeff() * 0.999);
   EXPECT_GT(eigen.eigenvalues().minCoeff(), 0.0);
   EXPECT_NEAR(sigma(0, 0), 1.0, 1e-12);
 }

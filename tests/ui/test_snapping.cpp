@@ -56,7 +56,7 @@ TEST_F(Snapping, AnEdgePointLiesOnTheEdgeUnderThePointer) {
   const auto without =
       find_snap_point(mesh_, view_, pixel_of(view_, 0.5 * (a + b)), SnapTarget::edge, {e.v0().idx()}, 4.0f);
   EXPECT_TRUE(!without || without->element != "edge " + std::to_string(std::min(e.v0().idx(), e.v1().idx())) + "–" +
-                                                   std::to_string(std::max(e.v0().idx(), e.v1().idx())));
+                                                  std::to_string(std::max(e.v0().idx(), e.v1().idx())));
 }
 
 TEST_F(Snapping, AFacePointIsWhereThePointersRayMeetsTheFrontFace) {

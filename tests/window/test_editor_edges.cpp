@@ -150,7 +150,8 @@ TEST_F(EditorEdges, CtrlClickSelectsTheShortestPath) {
 // second item, where the popup opens at the pointer) adds every quad, so S 0.5 then scales all eight
 // vertices about their centre.
 TEST_F(EditorEdges, ShiftGSelectsSimilarFaces) {
-  const glm::vec2 face = pixel_of(view_, 0.25 * (original_.mean(4) + original_.mean(5) + original_.mean(6) + original_.mean(7)));
+  const glm::vec2 face =
+      pixel_of(view_, 0.25 * (original_.mean(4) + original_.mean(5) + original_.mean(6) + original_.mean(7)));
   const glm::vec2 menu = face + glm::vec2(40.0f, 40.0f);
   Events similar;
   similar.key("3").wait().click(face).wait().move(menu).wait().key("shift+g").wait(2);

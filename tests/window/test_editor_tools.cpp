@@ -256,7 +256,6 @@ TEST_F(EditorToolsSlide, SlideFollowsTheMouseAndEscRestores) {
   EXPECT_TRUE(saved_is_original());
 }
 
-
 // Spin (Alt+R) of a grid's far boundary edge around the 3D cursor at the origin (Shift+C), about x,
 // typed 90°: exactly core's spin of that edge in Blender's 9 steps; the wheel adds a step; Esc leaves
 // the file.
@@ -381,8 +380,7 @@ protected:
   }
   // Vertex 6 selected and grabbed (then `keys`: a constraint), the pointer moved in steps to `to`;
   // `ctrl`: held from the grab to after the Enter that confirms it.
-  Events grab_vertex_6(glm::vec2 to, const std::string& keys = "", bool ctrl = false,
-                       Events e = Events()) const {
+  Events grab_vertex_6(glm::vec2 to, const std::string& keys = "", bool ctrl = false, Events e = Events()) const {
     const glm::vec2 from = pixel_at({6}) + glm::vec2(0.0f, 2.0f);
     e.click(from).wait().move(from).wait().key("g").wait();
     if (!keys.empty()) e.key(keys).wait();
@@ -438,7 +436,8 @@ TEST_F(EditorToolsSnap, SnapToAnEdgeLandsOnIt) {
   for (const auto e : original_.mesh.edges()) {
     const int a = e.v0().idx(), b = e.v1().idx();
     if (a == 6 || b == 6 || a == 7 || b == 7) continue;
-    if (original_.mean(size_t(a)).y() == original_.mean(6).y() && original_.mean(size_t(b)).y() == original_.mean(6).y())
+    if (original_.mean(size_t(a)).y() == original_.mean(6).y() &&
+        original_.mean(size_t(b)).y() == original_.mean(6).y())
       edge = {a, b};
   }
   ASSERT_GE(edge[0], 0);

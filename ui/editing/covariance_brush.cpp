@@ -31,8 +31,7 @@ Mat3 brushed_covariance(const Mat3& covariance, const Vec3& normal, double weigh
   return eigen.eigenvectors() * values.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
-std::vector<BrushedVertex> brush_reach(const CovarianceMesh& mesh, const Vec3& centre, double radius,
-                                       double strength) {
+std::vector<BrushedVertex> brush_reach(const CovarianceMesh& mesh, const Vec3& centre, double radius, double strength) {
   std::vector<BrushedVertex> reached;
   for (size_t v = 0; v < mesh.n_vertices(); ++v) {
     const double w = brush_weight((mesh.mean(v) - centre).norm(), radius, strength);

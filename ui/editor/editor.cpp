@@ -143,10 +143,9 @@ void EditorApp::frame() {
   // A replay waits for a background job (simplify, fit), so that it does not depend on its speed.
   // The first frames lay the panels out (the first view is framed beside them) and take no input.
   const bool layout = layout_frames_ > 0;
-  const std::vector<InputEvent> events =
-      layout || (script_ && job_dialog_.running()) ? std::vector<InputEvent>{}
-      : script_                                    ? script_->next_frame()
-                                                   : queue_.take_frame();
+  const std::vector<InputEvent> events = layout || (script_ && job_dialog_.running()) ? std::vector<InputEvent>{}
+                                         : script_                                    ? script_->next_frame()
+                                                                                      : queue_.take_frame();
   if (recorder_ && !layout) recorder_->record_frame(events);
   for (const InputEvent& e : events) input_.apply(e);
 

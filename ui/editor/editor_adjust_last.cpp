@@ -29,7 +29,9 @@ void EditorApp::adjust_last(const std::vector<double>& values) {
   }
   // The mesh before it (whose copy `before` is) and its selection, which the new step restores on undo.
   if (const auto selection = document_.discard_last_operation()) selection_.select(*selection, false);
-  if (!operate(op.name, [&](const CovarianceMesh&) { return remade; }, nullptr)) return;
+  if (!operate(
+          op.name, [&](const CovarianceMesh&) { return remade; }, nullptr))
+    return;
   for (size_t k = 0; k < values.size(); ++k) op.parameters[k].value = values[k];
   op.step = document_.last_step();
 }

@@ -84,8 +84,8 @@ private:
   void click_select(glm::vec2 pixel, bool toggle);
   void loop_select(glm::vec2 pixel, bool toggle);
   void ring_select(glm::vec2 pixel, bool toggle);  // Ctrl+Alt+click: the edge ring across the quads
-  void path_select(glm::vec2 pixel);                // Ctrl+click: the shortest path from the active vertex
-  void draw_similar_items();                        // Shift+G: select similar
+  void path_select(glm::vec2 pixel);               // Ctrl+click: the shortest path from the active vertex
+  void draw_similar_items();                       // Shift+G: select similar
   void box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract);
   void select_sharp_edges();      // adds the edges folded by more than sharp_edge_angle_, in edge mode
   void draw_sharp_edges_items();  // the Select menu's angle field and its item
@@ -129,7 +129,7 @@ private:
   void adjust_last(const std::vector<double>& values);
   // Snapping and the 3D cursor (editor_snapping.cpp).
   void build_snapping_commands();
-  void place_cursor(glm::vec2 pixel);  // on the surface under the pixel, else at the cursor's depth
+  void place_cursor(glm::vec2 pixel);                     // on the surface under the pixel, else at the cursor's depth
   std::optional<Vec3> surface_at(glm::vec2 pixel) const;  // read back from the last frame; none: background
   void set_cursor(const Vec3& point, const std::string& how);
   // The mirror modifier (editor_mirror_modifier.cpp): the mesh shown through it, its commands.

@@ -111,11 +111,14 @@ void EditorApp::build_modelling_commands() {
          {key(GLFW_KEY_P, false, true)},
          [this] { start_tool([](ToolContext& ctx) { return BrushTool::start(ctx, BrushKind::sharpen); }); },
          [this] { return document_.mesh().n_vertices() > 0; }});
-  t.add({"Mesh", "Soften brush (Alt+P; paint: make the Gaussians round, Shift: sharpen)",
+  t.add({"Mesh",
+         "Soften brush (Alt+P; paint: make the Gaussians round, Shift: sharpen)",
          {key(GLFW_KEY_P, false, false, true)},
          [this] { start_tool([](ToolContext& ctx) { return BrushTool::start(ctx, BrushKind::soften); }); },
          [this] { return document_.mesh().n_vertices() > 0; }});
-  t.add({"Mesh", "Bisect (Alt+K; drag a line: the cut is the plane seen along it)", {key(GLFW_KEY_K, false, false, true)},
+  t.add({"Mesh",
+         "Bisect (Alt+K; drag a line: the cut is the plane seen along it)",
+         {key(GLFW_KEY_K, false, false, true)},
          [this] { start_tool([](ToolContext& ctx) { return std::make_unique<BisectTool>(ctx); }); },
          [this] { return document_.mesh().mesh.n_faces() > 0; }});
   t.add({"Mesh",
@@ -139,10 +142,9 @@ void EditorApp::build_modelling_commands() {
   t.add({"Mesh", "Loop cut (then wheel: cuts)", {key(GLFW_KEY_R, true)}, [this] {
            start_tool([](ToolContext& ctx) { return std::make_unique<LoopCutTool>(ctx); });
          }});
-  t.add({"Mesh",
-         "Knife (K; click points, Enter or Space cuts, Backspace takes one back)",
-         {key(GLFW_KEY_K)},
-         [this] { start_tool([](ToolContext& ctx) { return std::make_unique<KnifeTool>(ctx); }); }});
+  t.add({"Mesh", "Knife (K; click points, Enter or Space cuts, Backspace takes one back)", {key(GLFW_KEY_K)}, [this] {
+           start_tool([](ToolContext& ctx) { return std::make_unique<KnifeTool>(ctx); });
+         }});
   t.add({"Mesh", "Inset faces", {key(GLFW_KEY_I)}, [this] { start_tool(InsetTool::start); }, selected});
   t.add({"Mesh",
          "Spin around the 3D cursor (Alt+R; mouse or typed degrees, wheel: steps)",

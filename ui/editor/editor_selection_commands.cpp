@@ -186,14 +186,13 @@ void EditorApp::draw_similar_items() {
     try {
       size_t found = 0;
       if (select_mode_ == SelectMode::edge) {
-        const std::vector<EdgeEnds> edges =
-            similar_edges(mesh, selection_.edges(mesh), similarity, similar_threshold_);
+        const std::vector<EdgeEnds> edges = similar_edges(mesh, selection_.edges(mesh), similarity, similar_threshold_);
         selection_.hold_edges(mesh);
         selection_.select_edges(mesh, edges, true);
         found = edges.size();
       } else if (select_mode_ == SelectMode::face) {
-        const std::vector<int> faces = similar_faces(mesh, faces_within(mesh, selection_.vertices()), similarity,
-                                                     similar_threshold_);
+        const std::vector<int> faces =
+            similar_faces(mesh, faces_within(mesh, selection_.vertices()), similarity, similar_threshold_);
         std::vector<int> corners_of_faces;
         for (const int f : faces)
           for (const int v : corners(mesh, f)) corners_of_faces.push_back(v);
@@ -211,13 +210,14 @@ void EditorApp::draw_similar_items() {
     }
   };
   const std::vector<std::pair<const char*, Similarity>> items =
-      select_mode_ == SelectMode::edge   ? std::vector<std::pair<const char*, Similarity>>{{"Length", Similarity::edge_length},
-                                                                                          {"Crease", Similarity::edge_crease}}
-      : select_mode_ == SelectMode::face ? std::vector<std::pair<const char*, Similarity>>{{"Area", Similarity::face_area},
-                                                                                          {"Sides", Similarity::face_sides},
-                                                                                          {"Normal", Similarity::face_normal}}
-                                         : std::vector<std::pair<const char*, Similarity>>{
-                                               {"Number of edges", Similarity::vertex_edges}};
+      select_mode_ == SelectMode::edge
+          ? std::vector<std::pair<const char*, Similarity>>{{"Length", Similarity::edge_length},
+                                                            {"Crease", Similarity::edge_crease}}
+      : select_mode_ == SelectMode::face
+          ? std::vector<std::pair<const char*, Similarity>>{{"Area", Similarity::face_area},
+                                                            {"Sides", Similarity::face_sides},
+                                                            {"Normal", Similarity::face_normal}}
+          : std::vector<std::pair<const char*, Similarity>>{{"Number of edges", Similarity::vertex_edges}};
   for (const auto& [label, similarity] : items)
     if (ImGui::MenuItem(label)) add(similarity);
   ImGui::SetNextItemWidth(80.0f);
@@ -322,14 +322,12 @@ void EditorApp::build_selection_commands() {
            else
              selection_.invert(document_.mesh().n_vertices());
          }});
-  t.add({"Select",
-         "Circle select (C; drag to select, Shift+drag to deselect, wheel: radius)",
-         {key(GLFW_KEY_C)},
-         [this] {
-           start_tool([this](ToolContext& ctx) {
-             return std::make_unique<CircleSelectTool>(ctx, select_mode_, select_through_);
-           });
-         }});
+  t.add(
+      {"Select", "Circle select (C; drag to select, Shift+drag to deselect, wheel: radius)", {key(GLFW_KEY_C)}, [this] {
+         start_tool([this](ToolContext& ctx) {
+           return std::make_unique<CircleSelectTool>(ctx, select_mode_, select_through_);
+         });
+       }});
   t.add({"Select",
          "Select similar (Shift+G)",
          {key(GLFW_KEY_G, false, true)},

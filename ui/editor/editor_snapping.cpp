@@ -27,27 +27,36 @@ void EditorApp::build_snapping_commands() {
          nullptr,
          true});
   for (const SnapTarget target : {SnapTarget::increment, SnapTarget::vertex, SnapTarget::edge, SnapTarget::face}) {
-    t.add({"Mesh", std::string("Snap to: ") + snap_target_name(target), {},
+    t.add({"Mesh",
+           std::string("Snap to: ") + snap_target_name(target),
+           {},
            [this, target] {
              view_.snap.target = target;
              set_status(std::string("snap to: ") + snap_target_name(target), false);
            },
-           always, [this, target] { return view_.snap.target == target; }});
+           always,
+           [this, target] { return view_.snap.target == target; }});
   }
   t.add({"", "Snap to: the next target", {Shortcut{GLFW_KEY_TAB, true, true}}, [this] {
            view_.snap.target = SnapTarget((int(view_.snap.target) + 1) % 4);
            set_status(std::string("snap to: ") + snap_target_name(view_.snap.target), false);
          }});
-  t.add({"View", "3D cursor to selected (Shift+S)", {Shortcut{GLFW_KEY_S, false, true}},
+  t.add({"View",
+         "3D cursor to selected (Shift+S)",
+         {Shortcut{GLFW_KEY_S, false, true}},
          [this] {
            const std::vector<int>& selected = selection_.vertices();
            Vec3 sum = Vec3::Zero();
            for (const int v : selected) sum += document_.mesh().mean(size_t(v));
            set_cursor(sum / double(selected.size()), "at the selection's centre");
          },
-         [this] { return !selection_.empty(); }, nullptr, nullptr, true});
-  t.add({"View", "3D cursor to world origin (Shift+C)", {Shortcut{GLFW_KEY_C, false, true}},
-         [this] { set_cursor(Vec3::Zero(), "at the world origin"); }});
+         [this] { return !selection_.empty(); },
+         nullptr,
+         nullptr,
+         true});
+  t.add({"View", "3D cursor to world origin (Shift+C)", {Shortcut{GLFW_KEY_C, false, true}}, [this] {
+           set_cursor(Vec3::Zero(), "at the world origin");
+         }});
 }
 
 void EditorApp::set_cursor(const Vec3& point, const std::string& how) {

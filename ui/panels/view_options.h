@@ -60,9 +60,9 @@ struct ViewOptions {
   SnapOptions snap;                 // while transforming
   int pivot = 0;  // where the gizmo of a multi-selection sits: 0 the active vertex, 1 the selection's centroid
   int ellipsoid_scope =
-      0;            // whose ellipsoids: 0 automatic (ui/overlays/ellipsoid_scope.h), 1 the selection and its neighbours, 2 all
+      0;  // whose ellipsoids: 0 automatic (ui/overlays/ellipsoid_scope.h), 1 the selection and its neighbours, 2 all
   int up_axis = 1;  // the world axis drawn upward (0 x, 1 y, 2 z): the open file's, as kept in up_axes
-  std::map<std::string, int> up_axes;  // by mesh file (absolute path): the up axis last used for it
+  std::map<std::string, int> up_axes;                      // by mesh file (absolute path): the up axis last used for it
   std::map<std::string, MirrorSettings> mirror_modifiers;  // by mesh file (absolute path): its mirror modifier
   TargetPointsView target;
   std::map<std::string, std::string> target_files;  // by mesh file (absolute path): the target shown over it

@@ -74,17 +74,17 @@ ToolResult BevelTool::handle(const InputEvent& e, ToolContext& ctx) {
     const std::vector<std::array<int, 2>> edges = edges_;
     if (ctx.adjustable)
       ctx.adjustable({what(),
-                    {{"width", options_.width, 0.0, std::numeric_limits<double>::max()},
-                     {"segments", double(options_.segments), 1.0, double(kMaxBevelSegments), true},
-                     {"profile", options_.profile, 0.0, 1.0}},
-                    base_,
-                    [vertices, selected, edges](const CovarianceMesh& before, const std::vector<double>& v) {
-                      BevelOptions o;
-                      o.width = v[0];
-                      o.segments = int(v[1]);
-                      o.profile = v[2];
-                      return vertices ? bevel_vertices(before, selected, o) : bevel_edges(before, edges, o);
-                    }});
+                      {{"width", options_.width, 0.0, std::numeric_limits<double>::max()},
+                       {"segments", double(options_.segments), 1.0, double(kMaxBevelSegments), true},
+                       {"profile", options_.profile, 0.0, 1.0}},
+                      base_,
+                      [vertices, selected, edges](const CovarianceMesh& before, const std::vector<double>& v) {
+                        BevelOptions o;
+                        o.width = v[0];
+                        o.segments = int(v[1]);
+                        o.profile = v[2];
+                        return vertices ? bevel_vertices(before, selected, o) : bevel_edges(before, edges, o);
+                      }});
     return ToolResult::confirmed;
   }
   const bool key = e.type == InputEvent::Type::key_press;

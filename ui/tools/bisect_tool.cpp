@@ -52,7 +52,8 @@ ToolResult BisectTool::handle(const InputEvent& e, ToolContext& ctx) {
       return ToolResult::consumed;
     }
     const Plane p = *plane;
-    if (!ctx.operate("bisect", [&](const CovarianceMesh& mesh) { return bisect(mesh, p.point, p.normal); }, nullptr)) {
+    if (!ctx.operate(
+            "bisect", [&](const CovarianceMesh& mesh) { return bisect(mesh, p.point, p.normal); }, nullptr)) {
       status_ = "bisect: that line cuts no face; drag another, or Esc";
       error_ = true;
       return ToolResult::consumed;

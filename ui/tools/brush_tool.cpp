@@ -50,8 +50,8 @@ void BrushTool::dab(ToolContext& ctx) {
   const CovarianceMesh& mesh = ctx.document.mesh();
   const std::vector<BrushedVertex> reached = brush_reach(mesh, *hover_, radius_, strength_);
   for (const BrushedVertex& r : reached) {
-    const Mat3 brushed = brushed_covariance(mesh.covariance(size_t(r.vertex)), vertex_normal(mesh, r.vertex),
-                                            r.weight, kind);
+    const Mat3 brushed =
+        brushed_covariance(mesh.covariance(size_t(r.vertex)), vertex_normal(mesh, r.vertex), r.weight, kind);
     ctx.document.set_covariance(r.vertex, brushed);
     touched_.insert(r.vertex);
   }

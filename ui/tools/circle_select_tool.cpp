@@ -15,8 +15,9 @@
 namespace gps {
 
 CircleSelectTool::CircleSelectTool(ToolContext& ctx, SelectMode mode, bool through)
-    : mode_(mode), visible_(through ? std::vector<char>(ctx.document.mesh().n_vertices(), 1)
-                                    : visible_vertices(ctx.viewport, ctx.document.mesh())),
+    : mode_(mode),
+      visible_(through ? std::vector<char>(ctx.document.mesh().n_vertices(), 1)
+                       : visible_vertices(ctx.viewport, ctx.document.mesh())),
       at_(ctx.cursor) {
   describe();
 }
@@ -54,7 +55,8 @@ void CircleSelectTool::paint(glm::vec2 at, bool add, ToolContext& ctx) {
       std::vector<int> corners;
       bool seen = true;
       for (const auto c : mesh.mesh.fv_range(f)) corners.push_back(c.idx()), seen = seen && visible_[size_t(c.idx())];
-      if (seen && covered(centre_of_vertices(mesh, corners))) inside.insert(inside.end(), corners.begin(), corners.end());
+      if (seen && covered(centre_of_vertices(mesh, corners)))
+        inside.insert(inside.end(), corners.begin(), corners.end());
     }
   }
   if (add)

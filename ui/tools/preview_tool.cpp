@@ -6,8 +6,8 @@
 
 namespace gps {
 
-void PreviewTool::preview(ToolContext& ctx, bool none, const std::function<Modelled()>& make,
-                          const std::string& amount, const std::string& keys) {
+void PreviewTool::preview(ToolContext& ctx, bool none, const std::function<Modelled()>& make, const std::string& amount,
+                          const std::string& keys) {
   try {
     if (!none) {
       Modelled made = make();
@@ -41,7 +41,9 @@ bool PreviewTool::cancelled_by(const InputEvent& e, ToolContext& ctx, const std:
 
 bool PreviewTool::install_shown(ToolContext& ctx, const std::string& name) {
   const Modelled shown = *result_;  // made from the document's mesh as it is
-  if (ctx.operate(name, [&](const CovarianceMesh&) { return shown; }, nullptr)) return true;
+  if (ctx.operate(
+          name, [&](const CovarianceMesh&) { return shown; }, nullptr))
+    return true;
   ctx.show_document(std::nullopt);
   return false;
 }

@@ -76,11 +76,11 @@ ToolResult SpinTool::handle(const InputEvent& e, ToolContext& ctx) {
     const Vec3 axis = axis_ >= 0 ? Vec3(Vec3::Unit(axis_)) : view_axis_, centre = centre_;
     if (ctx.adjustable)
       ctx.adjustable({"spin",
-                    {{"angle", degrees_, -360.0, 360.0}, {"steps", double(steps_), 1.0, double(kMaxSpinSteps), true}},
-                    base_,
-                    [profile, axis, centre](const CovarianceMesh& before, const std::vector<double>& v) {
-                      return spin(before, profile, axis, centre, v[0], int(v[1]));
-                    }});
+                      {{"angle", degrees_, -360.0, 360.0}, {"steps", double(steps_), 1.0, double(kMaxSpinSteps), true}},
+                      base_,
+                      [profile, axis, centre](const CovarianceMesh& before, const std::vector<double>& v) {
+                        return spin(before, profile, axis, centre, v[0], int(v[1]));
+                      }});
     return ToolResult::confirmed;
   }
   const bool key = e.type == InputEvent::Type::key_press;
