@@ -94,7 +94,9 @@ TEST(Mirror, AnEditOfTheHalfIsShownByIndex) {
   CovarianceMesh mirrored = mirror(half, 0, Vec3::Zero(), true).mesh;
   const MeshArrays before = arrays_of(half), shown = arrays_of(mirrored);
   for (int v = 0; v < 8; ++v) {
-    if (images[size_t(v)] != v) EXPECT_EQ(shown.means[size_t(v)], before.means[size_t(v)]) << v;
+    if (images[size_t(v)] != v) {
+      EXPECT_EQ(shown.means[size_t(v)], before.means[size_t(v)]) << v;
+    }
   }
   EXPECT_EQ(std::vector<std::vector<int>>(shown.faces.begin(), shown.faces.begin() + 5), before.faces);
 

@@ -142,8 +142,11 @@ TEST_F(EditorEdges, CtrlClickSelectsTheShortestPath) {
   for (const EdgeCrease& c : creases) ++ends[c.a], ++ends[c.b];
   EXPECT_EQ(ends[0], 1);
   EXPECT_EQ(ends[12], 1);
-  for (const auto& [v, n] : ends)
-    if (v != 0 && v != 12) EXPECT_EQ(n, 2) << v;
+  for (const auto& [v, n] : ends) {
+    if (v != 0 && v != 12) {
+      EXPECT_EQ(n, 2) << v;
+    }
+  }
 }
 
 // Shift+G in face mode after a click on one of the cube's faces: Select similar → Sides (the menu's

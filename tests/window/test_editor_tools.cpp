@@ -400,8 +400,11 @@ TEST_F(EditorToolsSnap, SnapIncrementRoundsTheGrabWhileCtrlIsHeld) {
   const Vec3 moved = saved.mean(6) - original_.mean(6);
   EXPECT_GT(moved.norm(), 0.05);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(moved[i] / 0.1, std::round(moved[i] / 0.1), 1e-9) << i << ": " << moved[i];
-  for (size_t v = 0; v < saved.n_vertices(); ++v)
-    if (v != 6) EXPECT_EQ(saved.mean(v), original_.mean(v)) << v;
+  for (size_t v = 0; v < saved.n_vertices(); ++v) {
+    if (v != 6) {
+      EXPECT_EQ(saved.mean(v), original_.mean(v)) << v;
+    }
+  }
 
   const Vec3 unsnapped = play(grab_vertex_6(to)).mean(6) - original_.mean(6);
   bool off_the_grid = false;
