@@ -24,5 +24,5 @@ stage "build" scripts/build.sh
 stage "tests" bash -c 'cd build && ctest --output-on-failure -j"$(nproc)" --timeout 600'
 # Under ASan + UBSan, leaks checked (Mesa's own in scripts/lsan.supp), into build-asan/.
 stage "sanitizers" scripts/sanitize.sh
-# Every file reader under libFuzzer for 30 s each.
-stage "fuzzing" scripts/fuzz.sh 30
+# Every file reader under libFuzzer for 20 s each.
+stage "fuzzing" scripts/fuzz.sh 20
