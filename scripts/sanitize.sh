@@ -11,7 +11,7 @@ gl_tests="surface_renderer;surface_edits;surface_cache;picking;render_cli;exclus
 # The editor's windows: the command line, creases, and the random-input soak (first views and the
 # modelling replays, minutes under ASan, run in the plain suite and with --all).
 window_tests="editor;editor_creases;editor_soak;window_context"
-# The thin-Gaussian torus renders the same frames fourteen ways: minutes under ASan for a path the other
+# The thin-Gaussian torus test renders its tori many ways: minutes under ASan for a path the other
 # RenderCli tests take too (run in the plain suite and with --all).
 skipped=(-E 'RenderCli\.ThinGaussiansOfOneOrientation')
 if [ "${1:-}" = "--all" ]; then
