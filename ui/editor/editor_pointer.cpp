@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "core/modelling/mesh_queries.h"
-#include "render/pipeline/surface_point.h"
 #include "ui/input/camera_control.h"
 #include "ui/overlays/crease_overlay.h"
 #include "ui/editor/editor_app.h"
@@ -93,9 +92,7 @@ void EditorApp::handle_event(const InputEvent& e) {
       } else if (!io.WantCaptureMouse) {
         const Viewport v = viewport();
         std::optional<glm::dvec3> anchor;
-        if (target_)
-          anchor = surface_point(*target_, e.position * glm::vec2(float(target_->width()) / float(v.width),
-                                                                  float(target_->height()) / float(v.height)));
+        if (const auto hit = surface_at(e.position)) anchor = glm::dvec3(hit->x(), hit->y(), hit->z());
         zoom_to_cursor(camera_, e.steps, v.width, v.height, e.position, anchor);
       }
       break;
