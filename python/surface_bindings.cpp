@@ -1,14 +1,12 @@
 // gpsurf.Surface (a mesh's plans and their exact evaluation) and gpsurf.tessellate.
 #include <pybind11/stl.h>
 
-#include <numeric>
-
 #include "core/evaluation/patch_eval.h"
 #include "core/evaluation/tessellator.h"
 #include "core/mesh/covariance_mesh.h"
 #include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
-#include "core/plans/patch_layout.h"
+#include "core/plans/patch_faces.h"
 #include "core/plans/planned_surface.h"
 #include "python/arrays.h"
 #include "python/background_call.h"
@@ -115,20 +113,6 @@ void update(SurfaceHandle& h, const MeshHandle& mesh, const py::object& changed,
   h.mesh = after;
 }
 
-std::vector<int> patch_faces(const SurfaceHandle& h) {
-  const int n_patches = h.surface->tables().plans.n_patches();
-  std::vector<int> faces(static_cast<size_t>(n_patches));
-  if (h.surface->scheme() == Scheme::loop) {
-    std::iota(faces.begin(), faces.end(), 0);  // one patch per triangle
-    return faces;
-  }
-  const PatchLayout layout = make_patch_layout(h.mesh->mesh);
-  if (layout.n_patches() != n_patches) throw Error("the surface's patches do not follow its mesh's faces");
-  for (size_t f = 0; f + 1 < layout.first_patch.size(); ++f)
-    for (int p = layout.first_patch[f]; p < layout.first_patch[f + 1]; ++p) faces[size_t(p)] = int(f);
-  return faces;
-}
-
 py::tuple tessellation(std::shared_ptr<const PlannedSurface> surface, int level) {
   if (level < 1 || level > 64) throw py::value_error("level: expected 1..64, got " + std::to_string(level));
   const TriangleMesh t =
@@ -173,7 +157,8 @@ void add_surface_bindings(py::module_& m) {
           "patch_corners", [](const SurfaceHandle& h) { return h.surface->tables().plans.corners(); },
           "4 (quads, domain [0,1]^2) or 3 (triangles, u, v >= 0, u + v <= 1)")
       .def_property_readonly(
-          "patch_faces", [](const SurfaceHandle& h) { return read_only(int_array(patch_faces(h))); },
+          "patch_faces",
+          [](const SurfaceHandle& h) { return read_only(int_array(patch_faces(h.mesh->mesh, h.surface->tables().plans))); },
           "the face of the mesh each patch lies on, an (n_patches,) read-only int32 array: one patch per quad or "
           "triangle, a face of k != 4 sides under Catmull-Clark k patches")
       .def_property_readonly(
