@@ -20,7 +20,7 @@ float cross(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
 }  // namespace
 
 std::optional<std::array<int, 2>> pick_edge(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh,
-                                            float radius) {
+                                            float radius, const std::vector<char>* hidden) {
   const auto projected = project_vertices(view, mesh);
   const glm::vec2 centre = pixel + glm::vec2(0.5f);
   constexpr float kTie = 0.5f;
@@ -28,6 +28,7 @@ std::optional<std::array<int, 2>> pick_edge(const Viewport& view, glm::vec2 pixe
   float best_distance = radius, best_depth = std::numeric_limits<float>::infinity();
   const PolyMesh& m = mesh.mesh;
   for (const auto e : m.edges()) {
+    if (hidden && size_t(e.idx()) < hidden->size() && (*hidden)[size_t(e.idx())]) continue;
     const int a = e.v0().idx(), b = e.v1().idx();
     const auto& pa = projected[size_t(a)];
     const auto& pb = projected[size_t(b)];
@@ -49,7 +50,7 @@ std::optional<std::array<int, 2>> pick_edge(const Viewport& view, glm::vec2 pixe
   return best;
 }
 
-int pick_face(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh) {
+int pick_face(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh, const std::vector<char>* hidden) {
   const auto projected = project_vertices(view, mesh);
   const glm::vec2 s = pixel + glm::vec2(0.5f);
   int best = -1;
@@ -57,6 +58,7 @@ int pick_face(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh)
   const PolyMesh& m = mesh.mesh;
   std::vector<glm::vec3> corners;
   for (const auto f : m.faces()) {
+    if (hidden && size_t(f.idx()) < hidden->size() && (*hidden)[size_t(f.idx())]) continue;
     corners.clear();
     for (const auto v : m.fv_range(f)) {
       if (!projected[size_t(v.idx())]) break;

@@ -6,10 +6,11 @@
 
 namespace gps {
 
-int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh,
-                float radius) {
+int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, float radius,
+                const std::vector<char>* hidden) {
   NearestProjected nearest(camera, width, height, pixel, radius, 0.5f);
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) nearest.consider(int(i), mesh.mean(i));
+  for (size_t i = 0; i < mesh.n_vertices(); ++i)
+    if (!hidden || i >= hidden->size() || !(*hidden)[i]) nearest.consider(int(i), mesh.mean(i));
   return nearest.best();
 }
 

@@ -10,8 +10,10 @@
 namespace gps {
 
 /// The base vertex whose mean projects nearest to `pixel`, within `radius` pixels; of vertices
-/// equally near (within half a pixel) the front-most. -1 when none is that near.
-int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, float radius);
+/// equally near (within half a pixel) the front-most. -1 when none is that near. `hidden` (per
+/// vertex, 1: hidden) leaves vertices out.
+int pick_vertex(const Camera& camera, int width, int height, glm::vec2 pixel, const CovarianceMesh& mesh, float radius,
+                const std::vector<char>* hidden = nullptr);
 
 /// The vertex whose k-sigma ellipsoid {x : (x−μ)ᵀΣ⁻¹(x−μ) = k²} the pixel's ray meets first
 /// (nearest entry point in front of the eye), of every vertex or of `candidates`; −1 when the ray

@@ -5,6 +5,7 @@
 
 #include "core/modelling/samples.h"
 #include "tests/support/view_pixels.h"
+#include "view/picking.h"
 #include "view/visible_vertices.h"
 
 namespace gps {
@@ -51,6 +52,38 @@ TEST_F(ElementPicking, AFacesCentrePicksTheFrontFaceThere) {
   }
   EXPECT_EQ(front_faces, 3);
   EXPECT_EQ(pick_face(view_, glm::vec2(5.0f, 5.0f), mesh_), -1);
+}
+
+// Hidden elements are left out: a hidden front face lets the pick through to the face behind it; a
+// hidden edge or vertex is never picked, the nearest shown one is.
+TEST_F(ElementPicking, HiddenElementsAreNotPicked) {
+  const Vec3 eye = to_vec(view_.camera.eye());
+  for (const auto f : mesh_.mesh.faces()) {
+    Vec3 centre = Vec3::Zero();
+    for (const auto v : mesh_.mesh.fv_range(f)) centre += 0.25 * mesh_.mean(size_t(v.idx()));
+    if (centre.dot(eye - centre) <= 0) continue;
+    std::vector<char> hidden(mesh_.mesh.n_faces(), 0);
+    hidden[size_t(f.idx())] = 1;
+    const int behind = pick_face(view_, pixel_of(view_, centre), mesh_, &hidden);
+    EXPECT_NE(behind, f.idx());
+    EXPECT_GE(behind, 0) << "the cube's back faces lie behind each front face's centre";
+  }
+  const auto e = *mesh_.mesh.edges().begin();
+  const int a = e.v0().idx(), b = e.v1().idx();
+  const glm::vec2 mid = pixel_of(view_, 0.5 * (mesh_.mean(size_t(a)) + mesh_.mean(size_t(b))));
+  std::vector<char> hidden_edges(mesh_.mesh.n_edges(), 0);
+  hidden_edges[size_t(e.idx())] = 1;
+  const auto edge = pick_edge(view_, mid, mesh_, 8.0f, &hidden_edges);
+  EXPECT_TRUE(!edge || *edge != (std::array<int, 2>{std::min(a, b), std::max(a, b)}));
+  std::vector<char> all_edges(mesh_.mesh.n_edges(), 1);
+  EXPECT_FALSE(pick_edge(view_, mid, mesh_, 8.0f, &all_edges).has_value());
+
+  const glm::vec2 at_vertex = pixel_of(view_, mesh_.mean(size_t(a)));
+  const int shown = pick_vertex(view_.camera, view_.width, view_.height, at_vertex, mesh_, 8.0f);
+  ASSERT_GE(shown, 0);
+  std::vector<char> hidden_vertices(mesh_.n_vertices(), 0);
+  hidden_vertices[size_t(shown)] = 1;
+  EXPECT_NE(pick_vertex(view_.camera, view_.width, view_.height, at_vertex, mesh_, 8.0f, &hidden_vertices), shown);
 }
 
 }  // namespace
