@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "render/gl/draw_options.h"
 #include "render/gl/gl_context.h"
@@ -45,19 +46,38 @@ void CageLines::update_positions(const CovarianceMesh& mesh, const std::vector<i
   }
 }
 
-void CageLines::draw(const RenderTarget& target, const glm::mat4& view_projection) const {
+void CageLines::draw(const RenderTarget& target, const glm::mat4& view_projection,
+                     const std::vector<char>* hidden_edges) const {
   program_.set("u_view_projection", view_projection);
   program_.use();
   const GLenum only_colour[3] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE};
   glNamedFramebufferDrawBuffers(target.framebuffer(), 3, only_colour);
   glBindVertexArray(vao_);
+  // The runs [first, end) of edges shown (edge e is indices 2e, 2e + 1): all, or those not hidden.
+  const int n_edges = index_count_ / 2;
+  const auto is_hidden = [&](int e) {
+    return hidden_edges && size_t(e) < hidden_edges->size() && (*hidden_edges)[size_t(e)];
+  };
+  std::vector<std::pair<int, int>> runs;
+  for (int first = 0; first < n_edges;) {
+    if (is_hidden(first)) {
+      ++first;
+      continue;
+    }
+    int end = first;
+    while (end < n_edges && !is_hidden(end)) ++end;
+    runs.emplace_back(first, end);
+    first = end;
+  }
   glDepthMask(GL_FALSE);  // the cage with depth: its parts behind the surface faint, the others full
   glEnablei(GL_BLEND, 0);
   glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // the image's alpha kept
   for (const bool hidden : {true, false}) {
     glDepthFunc(hidden ? GL_GREATER : GL_LEQUAL);
     program_.set("u_color", glm::vec4(0.45f, 0.45f, 0.45f, hidden ? kHiddenCageAlpha : 1.0f));
-    glDrawElements(GL_LINES, index_count_, GL_UNSIGNED_INT, nullptr);
+    for (const auto& [first, end] : runs)
+      glDrawElements(GL_LINES, 2 * (end - first), GL_UNSIGNED_INT,
+                     reinterpret_cast<const void*>(2 * size_t(first) * sizeof(unsigned)));
   }
   glDisablei(GL_BLEND, 0);
   glDepthMask(GL_TRUE);

@@ -25,8 +25,10 @@ public:
   /// The `changed` vertices' positions.
   void update_positions(const CovarianceMesh& mesh, const std::vector<int>& changed);
   bool empty() const { return index_count_ == 0; }
-  /// Over the surface already drawn into `target` (its depth), into the colour attachment only.
-  void draw(const RenderTarget& target, const glm::mat4& view_projection) const;
+  /// Over the surface already drawn into `target` (its depth), into the colour attachment only;
+  /// without the edges `hidden_edges` marks 1 (by edge index) where given.
+  void draw(const RenderTarget& target, const glm::mat4& view_projection,
+            const std::vector<char>* hidden_edges = nullptr) const;
 
 private:
   ShaderProgram program_;

@@ -183,7 +183,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   const float aspect = float(target.width()) / float(target.height());
   {
     const GpuPassScope pass(timer_, "surface");
-    const bool use_cache = !o.static_triangles && o.surface_cache;
+    const bool use_cache = !o.static_triangles && o.surface_cache && !hides_patches(o);
     buffers_.bind();
     // The cache's compute passes before the clear: on llvmpipe one after it splits the frame in two
     // (the cleared target written out, then read back for the draw).
@@ -231,7 +231,7 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   }
   if (o.mesh_lines && !cage_.empty()) {
     const GpuPassScope pass(timer_, "mesh lines");
-    cage_.draw(target, frame_view_projection(camera, aspect, frame_));
+    cage_.draw(target, frame_view_projection(camera, aspect, frame_), o.hidden_edges);
   }
   glBindVertexArray(0);
   check_gl_errors("drawing");
