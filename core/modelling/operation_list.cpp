@@ -23,6 +23,7 @@
 #include "core/modelling/edge_operations.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
+#include "core/modelling/grid_fill.h"
 #include "core/modelling/inset.h"
 #include "core/modelling/knife.h"
 #include "core/modelling/loop_cut.h"
@@ -31,6 +32,7 @@
 #include "core/modelling/primitives.h"
 #include "core/modelling/slide.h"
 #include "core/modelling/spin.h"
+#include "core/modelling/split_faces.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/plans/planned_surface.h"
 #include "core/reference/subdivision_size.h"
@@ -402,6 +404,17 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
     const std::vector<int> vertices = f.indices("vertices");
     return [=](const CovarianceMesh& m) { return fill(m, vertices); };
   }
+  if (op == "grid_fill") {
+    const std::vector<int> vertices = f.indices("vertices");
+    const int span = f.integer("span", 1, INT32_MAX, 0);
+    const int offset = f.integer("offset", INT32_MIN + 1, INT32_MAX, 0);
+    return [=](const CovarianceMesh& m) { return grid_fill(m, vertices, span, offset); };
+  }
+  if (op == "split") {
+    const std::vector<int> faces = f.indices("faces");
+    if (faces.empty()) throw usage_error("\"faces\" is empty");
+    return [=](const CovarianceMesh& m) { return split_faces(m, faces); };
+  }
   if (op == "transform") {
     in_place = transform(f);
     return nullptr;
@@ -476,7 +489,8 @@ std::string prefixed(const std::string& source, const std::string& message) {
 std::vector<std::string> operation_names() {
   return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude",   "inset",     "delete", "dissolve",
           "merge",     "weld",     "fill",       "bridge",    "transform", "add",       "set",    "crease",
-          "corner",    "slide",    "bevel",      "bisect",    "knife",     "duplicate", "spin",   "mirror"};
+          "corner",    "slide",    "bevel",      "bisect",    "knife",     "duplicate", "spin",   "mirror",
+          "split",     "grid_fill"};
 }
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {

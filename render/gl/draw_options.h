@@ -33,6 +33,10 @@ struct DrawOptions {
   glm::vec3 background{1.0f, 1.0f, 1.0f};
   bool static_triangles = false;  // draw the triangles of set_triangles() instead of the patches
   bool surface_cache = true;      // redraw stored triangles while points and levels stay (render/cache/surface_cache.h)
+  // Hidden faces (the editor's H): set, these patches (ascending) are not drawn, and the frame is drawn
+  // live (the surface cache stores every patch); the others are drawn exactly as without it.
+  const std::vector<int>* hidden_patches = nullptr;
+  const std::vector<char>* hidden_edges = nullptr;  // set: the mesh lines leave out the edges marked 1 (by index)
   DrawDiagnostics diagnostics;    // off in every draw a user sees
 };
 
@@ -49,6 +53,9 @@ inline void set_render_tessellation(DrawOptions& o, int level, float pixels, int
   o.level = level > 0 ? float(level) : o.level;
   o.pixels = level > 0 ? 0.0f : pixels > 0 ? pixels : default_adaptive_pixels(width, height);
 }
+
+/// Whether a frame of `o` leaves patches out.
+inline bool hides_patches(const DrawOptions& o) { return o.hidden_patches && !o.hidden_patches->empty(); }
 
 /// The uniform level of `o`, clamped to 1..64.
 inline float uniform_level(const DrawOptions& o) { return std::clamp(o.level, 1.0f, 64.0f); }

@@ -10,9 +10,11 @@
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
+#include "core/modelling/grid_fill.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/operation_list.h"
 #include "core/modelling/primitives.h"
+#include "core/modelling/split_faces.h"
 #include "core/plans/patch_layout.h"
 
 namespace gps {
@@ -275,6 +277,40 @@ TEST(OperationList, CreaseAndCornerOperations) {
             "f: ops[0] (corner): vertex 8 is not in the mesh (8 vertices)"}}) {
     const OperationList ops = OperationList::parse(text, "f");
     EXPECT_EQ(error_of([&] { ops.apply(cube); }), message) << text;
+  }
+}
+
+// Split then grid fill: the cube's top split off, its hole in the open box filled again (the same
+// calls), and their keys checked before anything is applied.
+TEST(OperationList, SplitAndGridFill) {
+  const CovarianceMesh cube = make_sample("cube");
+  const OperationList ops = OperationList::parse(
+      R"([{"op":"split","faces":[1]},{"op":"grid_fill","vertices":[7,6,5,4],"span":1,"offset":2}])", "f");
+  std::vector<std::string> summaries;
+  const Modelled scripted = ops.apply(cube, &summaries);
+  const Modelled direct = grid_fill(split_faces(cube, {1}).mesh, {7, 6, 5, 4}, 1, 2);
+  expect_same_mesh(scripted.mesh, direct.mesh);
+  EXPECT_EQ(scripted.mesh.n_vertices(), 12u);
+  EXPECT_EQ(scripted.mesh.n_faces(), 7u);
+  EXPECT_EQ(summaries, (std::vector<std::string>{"split off 1 face: 4 vertices duplicated along the cut",
+                                                  "grid-filled a loop of 4 vertices with 1 × 1 quads: 0 vertices added"}));
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"([{"op":"split","faces":[]}])", R"(f: ops[0] (split): "faces" is empty)"},
+           {R"([{"op":"split"}])", R"(f: ops[0] (split): "faces" is missing)"},
+           {R"([{"op":"grid_fill","vertices":[4,5,6,7],"span":0}])",
+            R"(f: ops[0] (grid_fill): "span" must be an integer from 1 to 2147483647, got 0)"},
+           {R"([{"op":"grid_fill","vertices":[4,5,6,7],"rails":2}])", "f: ops[0] (grid_fill): unknown key 'rails'"}}) {
+    const std::string error = error_of([&, text = text] { OperationList::parse(text, "f"); });
+    EXPECT_EQ(error, message) << text;
+  }
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"([{"op":"split","faces":[0,1,2,3,4,5]}])",
+            "f: ops[0] (split): every face is selected: there is nothing to split them from"},
+           {R"([{"op":"split","faces":[6]}])", "f: ops[0] (split): face 6 is not in the mesh (6 faces)"},
+           {R"([{"op":"delete","faces":[1]},{"op":"grid_fill","vertices":[4,5,6]}])",
+            "f: ops[1] (grid_fill): a grid fill needs a loop of at least 4 vertices (3 given)"}}) {
+    const OperationList list = OperationList::parse(text, "f");
+    EXPECT_EQ(error_of([&] { list.apply(cube); }), message) << text;
   }
 }
 
