@@ -128,5 +128,24 @@ TEST(HiddenElements, SelectAllThenDeselectHiddenLeavesTheHiddenOut) {
   for (const EdgeEnds& e : selection.edges(cube)) EXPECT_FALSE(hidden.edge_hidden(cube, e[0], e[1]));
 }
 
+// What is hidden stays through a change that keeps the faces (a crease); another topology is
+// another mesh's indices.
+TEST(HiddenElements, FitsOnlyTheFacesItWasHiddenIn) {
+  CovarianceMesh cube = make_sample("cube");
+  Selection selection;
+  HiddenElements hidden;
+  EXPECT_TRUE(hidden.fits(make_sample("cylinder")));  // nothing hidden
+  selection.select({0, 1, 2, 3}, false);
+  hidden.hide(cube, selection, SelectMode::face, false);
+  cube.sharpness.creases.push_back({0, 1, 2.0});
+  EXPECT_TRUE(hidden.fits(cube));
+  EXPECT_FALSE(hidden.fits(make_sample("cylinder")));
+  const CovarianceMesh wire = make_sample("wirecube");  // another mesh
+  EXPECT_FALSE(hidden.fits(wire));
+  hidden.clear();
+  EXPECT_TRUE(hidden.empty());
+  EXPECT_TRUE(hidden.fits(wire));
+}
+
 }  // namespace
 }  // namespace gps

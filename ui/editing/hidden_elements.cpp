@@ -30,6 +30,16 @@ std::vector<int> complement(size_t n, const std::vector<int>& taken) {
   return out;
 }
 
+std::vector<int> topology_of_faces(const PolyMesh& m) {
+  std::vector<int> out;
+  for (const auto f : m.faces()) {
+    out.push_back(int(m.valence(f)));
+    for (const auto v : m.fv_range(f)) out.push_back(v.idx());
+  }
+  out.push_back(int(m.n_vertices()));
+  return out;
+}
+
 std::vector<int> corners_of(const PolyMesh& m, const std::vector<int>& faces) {
   std::vector<int> out;
   for (const int f : faces)
@@ -128,6 +138,7 @@ size_t HiddenElements::hide(const CovarianceMesh& mesh, Selection& selection, Se
     faces = unselected ? complement(m.n_faces(), selected) : selected;
   }
   const size_t before = faces_.size();
+  topology_ = topology_of_faces(m);
   faces_ = united(faces_, sorted(faces));
   vertices_ = united(vertices_, vertices);
   if (mode != SelectMode::vertex) {  // a vertex goes with its last face
@@ -156,6 +167,10 @@ size_t HiddenElements::reveal(const CovarianceMesh& mesh, Selection& selection, 
   }
   clear();
   return shown_faces;
+}
+
+bool HiddenElements::fits(const CovarianceMesh& mesh) const {
+  return empty() || topology_ == topology_of_faces(mesh.mesh);
 }
 
 void HiddenElements::deselect_hidden(const CovarianceMesh& mesh, Selection& selection, SelectMode mode) const {

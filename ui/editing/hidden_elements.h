@@ -40,14 +40,19 @@ public:
   size_t reveal(const CovarianceMesh& mesh, Selection& selection, SelectMode mode);
   /// Takes the hidden elements out of `selection` (after a command that selects, e.g. select all).
   void deselect_hidden(const CovarianceMesh& mesh, Selection& selection, SelectMode mode) const;
+  /// Whether the hidden indices are of `mesh`: nothing is hidden, or its faces have the corners they
+  /// had when hiding (an operation that kept the topology, as a crease, keeps what is hidden).
+  bool fits(const CovarianceMesh& mesh) const;
   /// Shows everything, selecting nothing (the topology changed: the indices are another mesh's).
   void clear() {
     faces_.clear();
     vertices_.clear();
+    topology_.clear();
   }
 
 private:
   std::vector<int> faces_, vertices_;
+  std::vector<int> topology_;  // of the mesh hidden in: each face's corner count, then its corners
 };
 
 }  // namespace gps
