@@ -18,7 +18,8 @@ ImU32 colour_of(double sharpness) {
 
 }  // namespace
 
-void draw_crease_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMesh& mesh) {
+void draw_crease_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMesh& mesh,
+                         const HiddenElements* hidden) {
   if (mesh.sharpness.empty()) return;
   const PolyMesh& m = mesh.mesh;
   std::vector<std::optional<ImVec2>> pixel(mesh.n_vertices());
@@ -45,7 +46,7 @@ void draw_crease_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMe
   };
   for (const EdgeCrease& c : mesh.sharpness.creases) {
     const auto h = m.find_halfedge(m.vertex_handle(unsigned(c.a)), m.vertex_handle(unsigned(c.b)));
-    if (!h.is_valid()) continue;
+    if (!h.is_valid() || (hidden && hidden->edge_hidden(mesh, c.a, c.b))) continue;
     const auto sh = OpenMesh::make_smart(h, &m);
     const bool boundary = !sh.face().is_valid() || !sh.opp().face().is_valid();
     if (!boundary && !front(sh.face()) && !front(sh.opp().face())) continue;
@@ -53,7 +54,7 @@ void draw_crease_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMe
   }
   for (size_t vertex = 0; vertex < mesh.sharpness.corners.size(); ++vertex) {
     const double s = mesh.sharpness.corners[vertex];
-    if (s <= 0.0) continue;
+    if (s <= 0.0 || (hidden && hidden->vertex_hidden(int(vertex)))) continue;
     bool shown = false;
     for (const auto f : m.vf_range(m.vertex_handle(unsigned(vertex)))) shown = shown || front(f);
     if (!shown || !at(int(vertex))) continue;
