@@ -167,6 +167,7 @@ void EditorApp::frame() {
   for (const InputEvent& e : events) handle_event(e);
   follow_cursor();
   draw_ui();
+  deselect_hidden();  // a menu's selection
   ImGui::Render();
   render_and_present();
 }
@@ -188,9 +189,17 @@ void EditorApp::render_and_present() {
     }
     DrawOptions draw = view_.draw;
     if (draw.ellipsoids && !all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices())) {
-      shown_ellipsoids_ = selection_neighbourhood(document_.mesh(), selection_.vertices());
+      shown_ellipsoids_ = hidden_.shown(selection_neighbourhood(document_.mesh(), selection_.vertices()));
+      draw.ellipsoid_vertices = &shown_ellipsoids_;
+    } else if (draw.ellipsoids && !hidden_.empty()) {
+      shown_ellipsoids_.clear();
+      for (size_t v = 0; v < document_.mesh().n_vertices(); ++v)
+        if (!hidden_.vertex_hidden(int(v))) shown_ellipsoids_.push_back(int(v));
       draw.ellipsoid_vertices = &shown_ellipsoids_;
     }
+    if (hidden_stale_) refresh_hidden();
+    if (!hidden_patches_.empty()) draw.hidden_patches = &hidden_patches_;
+    if (!hidden_cage_edges_.empty()) draw.hidden_edges = &hidden_cage_edges_;
     renderer_->draw(*target_, camera_, draw);
     draw_target_points();
     // Once the surface has settled after an edit or a new mesh (a read-back every frame of a drag

@@ -133,6 +133,8 @@ void EditorApp::mesh_replaced() {
   drag_.reset();
   reach_.clear();
   selection_.clear();
+  hidden_.clear();
+  refresh_hidden();
   const auto kept = view_.up_axes.find(document_.source_path());
   view_.up_axis = kept != view_.up_axes.end() ? kept->second : 1;
   frame_first_view();

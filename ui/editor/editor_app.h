@@ -3,6 +3,7 @@
 // concept — editor.cpp (frames, drawing, output), editor_pointer.cpp (mouse and handle drags),
 // editor_actions.cpp (open, save, undo, the unsaved-changes prompt), editor_commands.cpp (the
 // command table: keys, menus, help), editor_selection_commands.cpp (selection modes and tools),
+// editor_hide.cpp (hide and reveal),
 // editor_modelling.cpp (the Mesh menu's operations), editor_modal_tools.cpp (the modal tools of
 // ui/tools/ started and handed the events), editor_mesh_jobs.cpp (File → Simplify… and
 // Fit to… in the background) and editor_target_points.cpp (a fit's target as points over the surface).
@@ -24,6 +25,7 @@
 #include "ui/editing/axis_handles.h"
 #include "ui/input/command_table.h"
 #include "ui/editing/edit_reach.h"
+#include "ui/editing/hidden_elements.h"
 #include "ui/editor/editor.h"
 #include "ui/document/editor_document.h"
 #include "ui/input/event_script.h"
@@ -91,6 +93,12 @@ private:
   void draw_sharp_edges_items();  // the Select menu's angle field and its item
   std::vector<int> vertices_under(glm::vec2 pixel) const;  // the element under the cursor, in the mode
   std::string selection_summary() const;                   // for the status bar
+  // Hide and reveal (editor_hide.cpp).
+  void build_hide_commands();
+  void hide(bool unselected);  // H; Shift+H: what is not selected
+  void reveal();               // Alt+H
+  void deselect_hidden();      // after anything that selects: hidden elements are never selected
+  void refresh_hidden();       // the masks of picking and the patches and lines the frame leaves out
   // Commands (editor_commands.cpp).
   void build_commands();
   void frame_vertices(const std::vector<int>& vertices);  // none: the whole mesh
@@ -231,6 +239,12 @@ private:
   std::optional<ScreenBox> gizmo_box_;  // where the gizmo was drawn this frame (the statistics keep clear of it)
   std::vector<int> shown_ellipsoids_;   // the vertices whose ellipsoids are drawn, when not all
   SelectMode select_mode_ = SelectMode::vertex;
+  HiddenElements hidden_;
+  // Of hidden_: the document's vertices, edges and faces (picking; empty where nothing is hidden), the
+  // shown mesh's patches and edges the frame leaves out; stale after the renderer got a new mesh.
+  std::vector<char> hidden_vertex_mask_, hidden_edge_mask_, hidden_face_mask_, hidden_cage_edges_;
+  std::vector<int> hidden_patches_;
+  bool hidden_stale_ = false;
   bool select_through_ = false;     // box selection takes hidden vertices too (X-ray)
   double similar_threshold_ = 0.0;  // Select similar's (Blender's default)
   double sharp_edge_angle_ = 30.0;  // degrees: Select sharp edges takes the edges folded by more (Blender's default)

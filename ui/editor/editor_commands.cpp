@@ -81,6 +81,7 @@ void EditorApp::build_commands() {
          always,
          [this] { return reach_options_.mirror; }});
   build_selection_commands();
+  build_hide_commands();
   // View
   t.add({"View", "Frame all", {key(GLFW_KEY_HOME)}, [this] { frame_vertices({}); }});
   t.add({"View", "Frame selection (all when none)", {key(GLFW_KEY_KP_DECIMAL)}, [this] {

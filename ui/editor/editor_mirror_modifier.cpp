@@ -65,6 +65,7 @@ void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, 
   else
     renderer_->set_mesh(mesh, std::move(*surface));
   mirror_ = std::move(next);
+  hidden_stale_ = true;  // the patches and lines it leaves out, of the mesh now shown
   document_.set_clip(mirror_.clip(document_.mesh()));
   if (!refusal.empty()) set_status("mirror modifier: " + refusal + "; the half is shown", true);
 }
@@ -79,6 +80,7 @@ void EditorApp::show_edit(const std::vector<int>& changed) {
     set_status("mirror modifier: " + refusal + "; the half is shown", true);
     try {
       renderer_->set_mesh(document_.mesh(), view_.plans());
+      hidden_stale_ = true;
     } catch (const Error& e) {
       set_status(e.what(), true);
     }

@@ -301,6 +301,8 @@ void EditorApp::topology_changed(const std::vector<int>& selection) {
   drag_.reset();
   reach_.clear();
   selection_.select(selection, false);
+  if (!hidden_.fits(document_.mesh())) hidden_.clear();  // the indices are another mesh's: all shown
+  refresh_hidden();
 }
 
 void EditorApp::rebuild_after_undo(const std::vector<int>& selection) {

@@ -49,9 +49,11 @@ std::optional<HandleFrame> EditorApp::gizmo_frame(const Viewport& v) const {
 
 int EditorApp::pick(glm::vec2 pixel) const {
   const Viewport v = viewport();
-  const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius);
+  const int vertex =
+      pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &hidden_vertex_mask_);
   if (vertex >= 0 || !view_.draw.ellipsoids) return vertex;
-  const bool all = all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices());
+  const bool all =
+      hidden_.empty() && all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices());
   return pick_ellipsoid(v.camera, v.width, v.height, pixel, document_.mesh(), view_.draw.sigma_scale,
                         all ? nullptr : &shown_ellipsoids_);
 }
@@ -60,7 +62,8 @@ int EditorApp::pick(glm::vec2 pixel) const {
 // near the click as the end (a neighbour the end sits on): the click then selects it.
 bool EditorApp::vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const {
   const Viewport v = viewport();
-  const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius);
+  const int vertex =
+      pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &hidden_vertex_mask_);
   if (vertex < 0 || selection_.contains(vertex)) return false;
   const auto at_vertex = visible_pixel(v.camera, v.width, v.height, document_.mesh().mean(size_t(vertex)));
   const auto at_end = visible_pixel(v.camera, v.width, v.height, gizmo.end(handle.axis, handle.side));
@@ -70,6 +73,7 @@ bool EditorApp::vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, 
 
 void EditorApp::handle_event(const InputEvent& e) {
   const ImGuiIO& io = ImGui::GetIO();
+  deselect_hidden();  // what a tool or a menu selected last, before anything acts on the selection
   // The modal tool running takes the events first (editor_modal_tools.cpp).
   if (modal_event(e)) return;
   if (job_dialog_.is_open() || repair_prompt_.is_open()) {  // their keys are Dear ImGui's; a mesh dropped now waits
@@ -268,7 +272,7 @@ void EditorApp::draw_handles_and_box() {
     if (gizmo && mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
       lit = hit_handle(v, input_.cursor, *gizmo, selection_.active(), kPickRadius);
   }
-  if (view_.draw.mesh_lines) draw_crease_overlay(*draw, v, shown_mesh());
+  if (view_.draw.mesh_lines) draw_crease_overlay(*draw, v, shown_mesh(), preview_ ? nullptr : &hidden_);
   if (select_mode_ != SelectMode::vertex) {
     // A preview that keeps the document's selection (a crease's) shows its edges; one of its own (a
     // bevel's new faces) is of vertices, its edges those with both ends selected.

@@ -69,12 +69,15 @@ std::vector<int> EditorApp::vertices_under(glm::vec2 pixel) const {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
   if (select_mode_ == SelectMode::vertex) {
-    if (const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, mesh, kClickRadius); vertex >= 0)
+    if (const int vertex =
+            pick_vertex(v.camera, v.width, v.height, pixel, mesh, kClickRadius, &hidden_vertex_mask_);
+        vertex >= 0)
       return {vertex};
   } else if (select_mode_ == SelectMode::edge) {
-    if (const auto edge = pick_edge(v, pixel, mesh, kClickRadius)) return {(*edge)[0], (*edge)[1]};
+    if (const auto edge = pick_edge(v, pixel, mesh, kClickRadius, &hidden_edge_mask_))
+      return {(*edge)[0], (*edge)[1]};
   }
-  const int face = pick_face(v, pixel, mesh);
+  const int face = pick_face(v, pixel, mesh, &hidden_face_mask_);
   return face >= 0 ? corners(mesh, face) : std::vector<int>{};
 }
 
@@ -86,10 +89,12 @@ void EditorApp::click_select(glm::vec2 pixel, bool toggle) {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
   std::vector<int> group;
-  const auto edge = select_mode_ == SelectMode::edge ? pick_edge(v, pixel, mesh, kClickRadius) : std::nullopt;
+  const auto edge =
+      select_mode_ == SelectMode::edge ? pick_edge(v, pixel, mesh, kClickRadius, &hidden_edge_mask_) : std::nullopt;
   if (edge) {
     group = {(*edge)[0], (*edge)[1]};
-  } else if (const int face = select_mode_ == SelectMode::face ? pick_face(v, pixel, mesh) : -1; face >= 0) {
+  } else if (const int face = select_mode_ == SelectMode::face ? pick_face(v, pixel, mesh, &hidden_face_mask_) : -1;
+             face >= 0) {
     group = corners(mesh, face);
   }
   // The active vertex: the group's vertex nearest the cursor.
@@ -107,7 +112,7 @@ void EditorApp::click_select(glm::vec2 pixel, bool toggle) {
 void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
-  const auto edge = pick_edge(v, pixel, mesh, kLoopRadius);
+  const auto edge = pick_edge(v, pixel, mesh, kLoopRadius, &hidden_edge_mask_);
   if (!edge) return;
   const auto [a, b] = *edge;
   try {
@@ -132,7 +137,7 @@ void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
 // edge mode, else their ends.
 void EditorApp::ring_select(glm::vec2 pixel, bool toggle) {
   const CovarianceMesh& mesh = document_.mesh();
-  const auto edge = pick_edge(viewport(), pixel, mesh, kLoopRadius);
+  const auto edge = pick_edge(viewport(), pixel, mesh, kLoopRadius, &hidden_edge_mask_);
   if (!edge) return;
   const auto [a, b] = *edge;
   try {
@@ -230,7 +235,7 @@ void EditorApp::draw_similar_items() {
 void EditorApp::box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract) {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
-  std::vector<int> inside = vertices_in_box(v.camera, v.width, v.height, a, b, mesh);
+  std::vector<int> inside = hidden_.shown(vertices_in_box(v.camera, v.width, v.height, a, b, mesh));
   if (!select_through_ && !inside.empty()) {
     const std::vector<char> visible = visible_vertices(v, mesh);
     std::vector<int> seen;
