@@ -16,9 +16,11 @@
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/edge_operations.h"
 #include "core/modelling/fill.h"
+#include "core/modelling/grid_fill.h"
 #include "core/modelling/merge_vertices.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/primitives.h"
+#include "core/modelling/split_faces.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "ui/editing/crease_tool.h"
 #include "ui/editor/editor_app.h"
@@ -166,6 +168,18 @@ void EditorApp::build_modelling_commands() {
          {key(GLFW_KEY_F)},
          op("fill", [this](const CovarianceMesh& m) { return fill_selected(m, selection_.vertices()); }),
          selected});
+  t.add({"Mesh",
+         "Grid fill (Ctrl+F; a whole boundary loop of an even count)",
+         {key(GLFW_KEY_F, true)},
+         op("grid fill", [this](const CovarianceMesh& m) { return grid_fill_selected(m, selection_.vertices()); }),
+         selected});
+  // Blender's Y splits the faces off in the object, P separates them into a new one: with one mesh
+  // to a document both detach the faces as a part of their own (File > Save selection as... writes it).
+  const auto split = [this, op](const std::string& name) {
+    return op(name, [this](const CovarianceMesh& m) { return split_faces(m, faces_within(m, selection_.vertices())); });
+  };
+  t.add({"Mesh", "Split (Y; the selected faces become a part of their own)", {key(GLFW_KEY_Y)}, split("split"), selected});
+  t.add({"Mesh", "Separate selection (P; as Split)", {key(GLFW_KEY_P)}, split("separate"), selected});
   t.add({"Mesh",
          "Bridge edge loops",
          {key(GLFW_KEY_E, true)},
