@@ -68,7 +68,8 @@ Modelled grid_fill(const CovarianceMesh& mesh, const std::vector<int>& loop, int
                   ": a grid fill needs a boundary loop");
     along += forward;
   }
-  if (along != 0 && along != n) throw Error("the loop's edges are on faces that run both ways: it is not one hole's boundary");
+  if (along != 0 && along != n)
+    throw Error("the loop's edges are on faces that run both ways: it is not one hole's boundary");
   std::vector<int> ring = loop;
   if (along == 0) std::reverse(ring.begin(), ring.end());
 
@@ -118,9 +119,9 @@ Modelled grid_fill(const CovarianceMesh& mesh, const std::vector<int>& loop, int
   std::sort(selection.begin(), selection.end());
   const int added = (columns - 2) * (rows - 2);
   Modelled out{build_mesh(a), selection, ""};
-  out.summary = "grid-filled a loop of " + std::to_string(n) + " vertices with " + std::to_string(columns - 1) +
-                " × " + std::to_string(rows - 1) + " quads: " + count_of(size_t(added), "vertex", "vertices") +
-                " added" + (triangles ? " (split into triangles)" : "");
+  out.summary = "grid-filled a loop of " + std::to_string(n) + " vertices with " + std::to_string(columns - 1) + " × " +
+                std::to_string(rows - 1) + " quads: " + count_of(size_t(added), "vertex", "vertices") + " added" +
+                (triangles ? " (split into triangles)" : "");
   return out;
 }
 
@@ -131,8 +132,8 @@ Modelled grid_fill_selected(const CovarianceMesh& mesh, const std::vector<int>& 
     std::sort(members.begin(), members.end());
     if (members == selected) return grid_fill(mesh, loop);
   }
-  throw Error("select one whole boundary loop (the " + count_of(selected.size(), "selected vertex is", "selected vertices are") +
-              " not one)");
+  throw Error("select one whole boundary loop (the " +
+              count_of(selected.size(), "selected vertex is", "selected vertices are") + " not one)");
 }
 
 }  // namespace gps

@@ -37,7 +37,8 @@ Modelled split_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) 
   for (int f = 0; f < a.n_faces(); ++f) {
     const std::vector<int>& face = a.faces[size_t(f)];
     for (size_t k = 0; k < face.size(); ++k)
-      if (const double c = a.sharpness.crease(face[k], face[(k + 1) % face.size()]); c > 0) creased.emplace_back(f, k, c);
+      if (const double c = a.sharpness.crease(face[k], face[(k + 1) % face.size()]); c > 0)
+        creased.emplace_back(f, k, c);
   }
 
   std::vector<int> originals;  // of the copies, in order
@@ -65,13 +66,15 @@ Modelled split_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) 
       a.sharpness.set_corner(first_copy + int(i), corner, a.n_vertices());
 
   std::vector<int> selection;
-  for (const int f : split.faces) selection.insert(selection.end(), a.faces[size_t(f)].begin(), a.faces[size_t(f)].end());
+  for (const int f : split.faces)
+    selection.insert(selection.end(), a.faces[size_t(f)].begin(), a.faces[size_t(f)].end());
   std::sort(selection.begin(), selection.end());
   selection.erase(std::unique(selection.begin(), selection.end()), selection.end());
   std::string summary = "split off " + count_of(split.faces.size(), "face", "faces") + ": " +
                         count_of(split_copies, "vertex", "vertices") + " duplicated along the cut";
   if (originals.size() > split_copies)
-    summary += ", " + count_of(originals.size() - split_copies, "more", "more") + " where the other faces met only there";
+    summary +=
+        ", " + count_of(originals.size() - split_copies, "more", "more") + " where the other faces met only there";
   return {build_mesh(a), selection, summary};
 }
 

@@ -780,7 +780,7 @@ TEST_F(EditorTools, HideUnselectedKeepsTheSelectedFaceAlone) {
 
 // A hidden face is not picked: after H on the +z face a click at its centre picks the face behind
 // it (−z, corners 0–3), which G Z −0.5 moves.
-TEST_F(EditorTools, HiddenFaceClickPicksTheFaceBehind) {
+TEST_F(EditorTools, HideThenAClickPicksTheFaceBehind) {
   const glm::vec2 face = pixel_at({4, 5, 6, 7});
   Events events;
   events.key("3").wait().click(face).wait().key("h").wait().click(face).wait();
