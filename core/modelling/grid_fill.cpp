@@ -125,12 +125,12 @@ Modelled grid_fill(const CovarianceMesh& mesh, const std::vector<int>& loop, int
   return out;
 }
 
-Modelled grid_fill_selected(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+Modelled grid_fill_selected(const CovarianceMesh& mesh, const std::vector<int>& vertices, int span, int offset) {
   const std::vector<int> selected = sorted_vertices(size_t(mesh.n_vertices()), vertices);
   for (const std::vector<int>& loop : boundary_loops(mesh)) {
     std::vector<int> members = loop;
     std::sort(members.begin(), members.end());
-    if (members == selected) return grid_fill(mesh, loop);
+    if (members == selected) return grid_fill(mesh, loop, span, offset);
   }
   throw Error("select one whole boundary loop (the " +
               count_of(selected.size(), "selected vertex is", "selected vertices are") + " not one)");

@@ -25,8 +25,8 @@ namespace gps {
 /// edge and a span that leaves no room (from 1 to n/2 − 1). Selection: the grid's vertices.
 Modelled grid_fill(const CovarianceMesh& mesh, const std::vector<int>& loop, int span = 0, int offset = 0);
 
-/// The editor's grid fill: the selected vertices must be one whole boundary loop, filled with the
-/// calculated span.
-Modelled grid_fill_selected(const CovarianceMesh& mesh, const std::vector<int>& vertices);
+/// The editor's grid fill: the selected vertices must be one whole boundary loop, filled as grid_fill
+/// fills it in its faces' order.
+Modelled grid_fill_selected(const CovarianceMesh& mesh, const std::vector<int>& vertices, int span = 0, int offset = 0);
 
 }  // namespace gps

@@ -158,6 +158,8 @@ TEST(GridFill, TheEditorFillsTheSelectedLoop) {
   std::reverse(shuffled.begin(), shuffled.end());
   std::swap(shuffled[0], shuffled[3]);
   EXPECT_TRUE(test::same_mesh(grid_fill_selected(open.mesh, shuffled).mesh, grid_fill(open.mesh, open.loop).mesh));
+  EXPECT_TRUE(
+      test::same_mesh(grid_fill_selected(open.mesh, shuffled, 1, 2).mesh, grid_fill(open.mesh, open.loop, 1, 2).mesh));
   EXPECT_EQ(error_of([&] { grid_fill_selected(open.mesh, {open.loop[0], open.loop[1], open.loop[2]}); }),
             "select one whole boundary loop (the 3 selected vertices are not one)");
 }

@@ -1,7 +1,8 @@
 // Adjust last operation (F9, as Blender's): a panel with the numbers of the last operation a tool
-// made (a bevel's width, segments and profile; a spin's angle and steps). A number changed and
-// entered makes the operation again from the mesh before it and puts the result in place of the
-// old one, as the same single undo step; a refused value leaves the result as it was.
+// made (a bevel's width, segments and profile; a spin's angle and steps; a grid fill's span and
+// offset). A number changed and entered makes the operation again from the mesh before it and puts
+// the result in place of the old one, as the same single undo step; a refused value leaves the
+// result as it was.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -46,7 +47,7 @@ void EditorApp::draw_adjust_last_panel() {
     return;
   }
   if (!current) {
-    ImGui::TextDisabled("no operation to adjust: bevel or spin first");
+    ImGui::TextDisabled("no operation to adjust: bevel, spin or grid fill first");
     ImGui::End();
     return;
   }

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "core/edit/covariance_edit.h"
 #include "core/support/error.h"
@@ -168,17 +169,36 @@ void EditorApp::build_modelling_commands() {
          {key(GLFW_KEY_F)},
          op("fill", [this](const CovarianceMesh& m) { return fill_selected(m, selection_.vertices()); }),
          selected});
+  // Grid fill, its span and offset adjustable afterwards (F9) as in Blender's panel of the operation.
+  const auto grid_fill_selection = [this] {
+    const std::vector<int> loop = selection_.vertices();
+    const auto before = std::make_shared<const CovarianceMesh>(document_.mesh());
+    if (!run_operation("grid fill", [&](const CovarianceMesh& m) { return grid_fill_selected(m, loop); })) return;
+    const double n = double(loop.size());
+    adjustable_ =
+        AdjustableOperation{"grid fill",
+                            {{"span (0: calculated)", 0.0, 0.0, n / 2 - 1, true}, {"offset", 0.0, 1 - n, n - 1, true}},
+                            before,
+                            [loop](const CovarianceMesh& m, const std::vector<double>& v) {
+                              return grid_fill_selected(m, loop, int(v[0]), int(v[1]));
+                            },
+                            document_.last_step()};
+  };
   t.add({"Mesh",
-         "Grid fill (Ctrl+F; a whole boundary loop of an even count)",
+         "Grid fill (Ctrl+F; a whole boundary loop of an even count; F9: span, offset)",
          {key(GLFW_KEY_F, true)},
-         op("grid fill", [this](const CovarianceMesh& m) { return grid_fill_selected(m, selection_.vertices()); }),
+         grid_fill_selection,
          selected});
   // Blender's Y splits the faces off in the object, P separates them into a new one: with one mesh
   // to a document both detach the faces as a part of their own (File > Save selection as... writes it).
   const auto split = [this, op](const std::string& name) {
     return op(name, [this](const CovarianceMesh& m) { return split_faces(m, faces_within(m, selection_.vertices())); });
   };
-  t.add({"Mesh", "Split (Y; the selected faces become a part of their own)", {key(GLFW_KEY_Y)}, split("split"), selected});
+  t.add({"Mesh",
+         "Split (Y; the selected faces become a part of their own)",
+         {key(GLFW_KEY_Y)},
+         split("split"),
+         selected});
   t.add({"Mesh", "Separate selection (P; as Split)", {key(GLFW_KEY_P)}, split("separate"), selected});
   t.add({"Mesh",
          "Bridge edge loops",
