@@ -72,5 +72,38 @@ TEST(EditReach, MirrorPartnersAreMatchedByPosition) {
   EXPECT_EQ(edit_reach(means, {6, partner}, options).size(), 2u);
 }
 
+// Hidden vertices (the editor's H) are neither in the proportional reach nor mirror partners; the
+// others are reached as without them.
+TEST(EditReach, HiddenVerticesAreNeverReached) {
+  const CovarianceMesh mesh = make_sample("grid", 400);
+  std::vector<Vec3> means;
+  for (size_t v = 0; v < mesh.n_vertices(); ++v) means.push_back(mesh.mean(v));
+  ReachOptions options;
+  options.proportional = true;
+  options.radius = 0.2 * bounding_box_diagonal(mesh);
+  const std::vector<ReachedVertex> all = edit_reach(means, {10}, options);
+  ASSERT_GT(all.size(), 3u);
+  std::vector<char> hidden(means.size(), 0);
+  hidden[size_t(all[1].vertex)] = hidden[size_t(all[2].vertex)] = 1;
+  const std::vector<ReachedVertex> shown = edit_reach(means, {10}, options, &hidden);
+  ASSERT_EQ(shown.size(), all.size() - 2);
+  for (size_t k = 0, r = 0; k < all.size(); ++k) {
+    if (hidden[size_t(all[k].vertex)]) continue;
+    EXPECT_EQ(shown[r].vertex, all[k].vertex);
+    EXPECT_EQ(shown[r++].weight, all[k].weight);
+  }
+
+  const CovarianceMesh cube = make_sample("cube");
+  std::vector<Vec3> corners;
+  for (size_t v = 0; v < cube.n_vertices(); ++v) corners.push_back(cube.mean(v));
+  ReachOptions mirror;
+  mirror.mirror = true;
+  const std::vector<ReachedVertex> pair = edit_reach(corners, {6}, mirror);
+  ASSERT_EQ(pair.size(), 2u);
+  std::vector<char> partner_hidden(corners.size(), 0);
+  partner_hidden[size_t(pair[1].vertex)] = 1;
+  EXPECT_EQ(edit_reach(corners, {6}, mirror, &partner_hidden).size(), 1u);
+}
+
 }  // namespace
 }  // namespace gps

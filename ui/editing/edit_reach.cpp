@@ -57,9 +57,11 @@ double falloff_weight(Falloff falloff, double t) {
 }
 
 std::vector<ReachedVertex> edit_reach(const std::vector<Vec3>& means, const std::vector<int>& selected,
-                                      const ReachOptions& options) {
+                                      const ReachOptions& options, const std::vector<char>* hidden) {
   std::vector<ReachedVertex> reach;
-  std::vector<char> reached(means.size(), 0);
+  std::vector<char> reached(means.size(), 0);  // or hidden: never reached
+  if (hidden)
+    for (size_t v = 0; v < std::min(means.size(), hidden->size()); ++v) reached[v] = (*hidden)[v];
   for (size_t s = 0; s < selected.size(); ++s) {
     reach.push_back({selected[s], 1.0, s, false});
     reached[size_t(selected[s])] = 1;

@@ -35,9 +35,10 @@ struct ReachedVertex {
   bool mirrored = false;  // takes that change mirrored
 };
 
-/// The reach of an edit of `selected` (vertex indices into `means`, the start positions).
+/// The reach of an edit of `selected` (vertex indices into `means`, the start positions). The
+/// vertices `hidden` marks 1 (the editor's H) are never reached, nor taken as mirror partners.
 std::vector<ReachedVertex> edit_reach(const std::vector<Vec3>& means, const std::vector<int>& selected,
-                                      const ReachOptions& options);
+                                      const ReachOptions& options, const std::vector<char>* hidden = nullptr);
 
 /// Sets every reached vertex to its start value with its source's change applied at its weight
 /// (mirrored where it is the mirror image). Covariances stay SPD.

@@ -216,7 +216,7 @@ void EditorApp::rebuild_reach() {
   std::vector<Vec3> means(document_.mesh().n_vertices());
   for (size_t v = 0; v < means.size(); ++v) means[v] = document_.start_mean(int(v));
   document_.revert_edit();  // vertices that leave the reach go back to their start
-  reach_ = edit_reach(means, drag_->vertices(), reach_options_);
+  reach_ = edit_reach(means, drag_->vertices(), reach_options_, &hidden_vertex_mask_);
 }
 
 void EditorApp::update_drag() {

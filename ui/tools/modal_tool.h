@@ -42,6 +42,7 @@ struct ToolContext {
   EditorDocument& document;
   Selection& selection;
   ReachOptions& reach;
+  const std::vector<char>* hidden_vertices = nullptr;  // 1: hidden (H), never in an edit's reach
   Viewport viewport;
   glm::vec2 cursor{0.0f};
   bool shift = false, ctrl = false;

@@ -32,7 +32,7 @@ TransformTool::TransformTool(TransformKind kind, TransformPivot pivot, ToolConte
   ctx.document.begin_edit();
   transform_.emplace(kind, ctx.document.mesh(), ctx.selection.vertices(), ctx.selection.active(), pivot, ctx.viewport,
                      ctx.cursor, ctx.cursor_point);
-  reach_ = edit_reach(start_means(ctx.document), transform_->vertices(), ctx.reach);
+  reach_ = edit_reach(start_means(ctx.document), transform_->vertices(), ctx.reach, ctx.hidden_vertices);
   update(ctx);
 }
 
@@ -140,7 +140,7 @@ ToolResult TransformTool::handle(const InputEvent& e, ToolContext& ctx) {
     ctx.reach.radius *= std::pow(1.15, double(e.steps));
     const std::vector<Vec3> means = start_means(ctx.document);
     ctx.document.revert_edit();
-    reach_ = edit_reach(means, transform_->vertices(), ctx.reach);
+    reach_ = edit_reach(means, transform_->vertices(), ctx.reach, ctx.hidden_vertices);
   } else if (key && e.key == GLFW_KEY_G && transform_->kind() == TransformKind::grab && !folds_) {
     ctx.document.cancel_edit();  // G G: the grab becomes a slide of the same selection
     ctx.next = SlideTool::start(ctx);
