@@ -29,7 +29,9 @@
 #include "core/modelling/spin.h"
 #include "core/modelling/split_faces.h"
 #include "render/image/image_io.h"
+#include "ui/editing/axis_handles.h"
 #include "ui/editing/covariance_presets.h"
+#include "ui/panels/view_options.h"
 
 namespace gps {
 namespace {
@@ -725,6 +727,25 @@ TEST_F(EditorTools, GridFillClosesTheSelectedHole) {
   EXPECT_EQ(shape.boundary_edges, 0);
   EXPECT_TRUE(shape.oriented);
   EXPECT_TRUE(test::same_mesh(saved, grid_fill(original_, rim, 1).mesh)) << output_;
+}
+
+// A modelling key pressed while an axis end of the gizmo is dragged (W: subdivide, with nothing but
+// one vertex selected the whole mesh) does nothing: the drag goes on and ends as a drag alone.
+TEST_F(EditorTools, ModellingKeysWaitForTheGizmoDragToEnd) {
+  const HandleFrame f = handle_frame(original_, 6, ViewOptions{}.draw.sigma_scale, view_);
+  int axis = 0;  // the axis with the longest projection on screen
+  for (int a = 1; a < 3; ++a)
+    if (glm::length(pixel_of(view_, f.end(a, 1)) - pixel_of(view_, f.centre)) >
+        glm::length(pixel_of(view_, f.end(axis, 1)) - pixel_of(view_, f.centre)))
+      axis = a;
+  const glm::vec2 centre = pixel_of(view_, f.centre), end = pixel_of(view_, f.end(axis, 1));
+  Events events;
+  events.click(centre).wait().press(end).move(end + 0.2f * (centre - end)).wait().key("w").wait();
+  events.move(end + 0.4f * (centre - end)).wait().release(end + 0.4f * (centre - end)).wait(3);
+  const CovarianceMesh saved = play(events);
+  EXPECT_EQ(saved.n_vertices(), 8u);
+  EXPECT_EQ(saved.n_faces(), 6u);
+  EXPECT_NE(saved.covariance(6), original_.covariance(6));  // the drag scaled it
 }
 
 }  // namespace

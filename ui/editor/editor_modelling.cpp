@@ -299,7 +299,7 @@ void EditorApp::draw_add_items() {
 
 bool EditorApp::run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
                               SharpnessReplanner* replanner) {
-  return !modal_active() && operate(name, run, replanner);
+  return !modal_active() && mode_ != Mode::handle && operate(name, run, replanner);  // not during a drag
 }
 
 bool EditorApp::operate(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
