@@ -10,6 +10,7 @@
 #include <string>
 #include <system_error>
 
+#include "core/support/freed_memory.h"
 #include "core/support/quoted_text.h"
 
 namespace gps {
@@ -48,6 +49,8 @@ void run_gl_command_if_named(int argc, char** argv) {
   // In a build tree beside gpsurf; installed, in the libexec folder (GPSURF_RENDER_FOLDER, from bin/).
   const std::filesystem::path candidates[] = {folder / "gpsurf-render",
                                               (folder / GPSURF_RENDER_FOLDER / "gpsurf-render").lexically_normal()};
+  // Under a software driver the GL buffers are the process's heap: hundreds of MB for a large mesh.
+  huge_page_heap_for_next_program();
   for (const std::filesystem::path& program : candidates) {
     ::execv(program.c_str(), argv);  // returns only where it failed
     if (errno != ENOENT)

@@ -50,6 +50,8 @@ public:
 
   Scheme scheme() const { return scheme_; }
   const SurfaceTables& tables() const { return tables_; }
+  /// The tables, moved out (for a consumer that keeps them and computes its own points).
+  SurfaceTables release_tables() && { return std::move(tables_); }
   /// Every plan point: the base vertices' q, then the stencil rows. The rows are computed on the first
   /// call (the renderer, which computes its own on the GPU, never asks); safe from several threads.
   const std::vector<Dual>& points() const;

@@ -1,6 +1,8 @@
 #include "core/support/freed_memory.h"
 
 #include <climits>  // also defines __GLIBC__ where it is glibc
+#include <cstdlib>
+#include <string>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -12,6 +14,16 @@ void keep_freed_memory() {
 #if defined(__GLIBC__)
   mallopt(M_MMAP_MAX, 0);              // no block from its own mapping (glibc still maps one if the heap cannot grow)
   mallopt(M_TRIM_THRESHOLD, INT_MAX);  // the heap's free top goes back to the system past 2 GiB only
+#endif
+}
+
+void huge_page_heap_for_next_program() {
+#if defined(__GLIBC__)
+  const char* set = std::getenv("GLIBC_TUNABLES");
+  const std::string tunables = set ? set : "";
+  if (tunables.find("glibc.malloc.hugetlb") != std::string::npos) return;
+  const std::string wanted = (tunables.empty() ? "" : tunables + ":") + "glibc.malloc.hugetlb=1";
+  setenv("GLIBC_TUNABLES", wanted.c_str(), 1);
 #endif
 }
 

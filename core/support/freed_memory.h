@@ -12,4 +12,11 @@ namespace gps {
 /// thing in main(). Does nothing where the C library has no such settings.
 void keep_freed_memory();
 
+/// Asks the C library of the program this process runs next (execv) to back its heap with
+/// transparent huge pages (glibc's tunable glibc.malloc.hugetlb=1, read only when a program starts),
+/// unless the environment already sets that tunable. A program that fills and reads hundreds of MB
+/// (the GL commands under a software driver) then faults in and translates memory 2 MiB at a time;
+/// its heap's peak may round up to whole huge pages. Does nothing where the C library is not glibc.
+void huge_page_heap_for_next_program();
+
 }  // namespace gps

@@ -26,10 +26,10 @@ SurfaceCache::SurfaceCache()
   check_gl_errors("creating the surface cache");
 }
 
-void SurfaceCache::set_cage(const CovarianceMesh& mesh) {
-  cage_positions_.resize(mesh.n_vertices());
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
-    const Vec3 m = mesh.mean(i);
+void SurfaceCache::set_cage(const CovarianceMesh& mesh, const FramedGaussians& gaussians) {
+  cage_positions_.resize(gaussians.n_vertices());
+  for (size_t i = 0; i < gaussians.n_vertices(); ++i) {
+    const Vec3& m = gaussians.mean(i);
     cage_positions_[i] = glm::vec3(float(m.x()), float(m.y()), float(m.z()));
   }
   cage_edges_.clear();
@@ -40,9 +40,9 @@ void SurfaceCache::set_cage(const CovarianceMesh& mesh) {
   tracked_points_ = -1;
 }
 
-void SurfaceCache::update_cage(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+void SurfaceCache::update_cage(const FramedGaussians& gaussians, const std::vector<int>& changed) {
   for (const int v : changed) {
-    const Vec3 m = mesh.mean(size_t(v));
+    const Vec3& m = gaussians.mean(size_t(v));
     cage_positions_[size_t(v)] = glm::vec3(float(m.x()), float(m.y()), float(m.z()));
   }
 }

@@ -82,9 +82,9 @@ public:
   // What changed.
 
   /// The base mesh (vertex positions and edges) the adaptive hysteresis measures; drops the capture.
-  void set_cage(const CovarianceMesh& mesh);
+  void set_cage(const CovarianceMesh& mesh, const FramedGaussians& gaussians);
   /// Moved base vertices (for the hysteresis; points_changed says what the edit changed).
-  void update_cage(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  void update_cage(const FramedGaussians& gaussians, const std::vector<int>& changed);
   /// A compute pass made plan points of generation `points`, changing the triangles of `patches`
   /// (nullptr: of all patches, not followed as an edit: captured again). An edit is followed from a
   /// capture on, one compute pass after the other; any other change is captured again.

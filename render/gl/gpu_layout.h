@@ -42,6 +42,7 @@ GPS_LAYOUT_CONST int kBindingCopyRuns = 26;          // the runs of captured ver
 GPS_LAYOUT_CONST int kBindingPatchLevels = 27;       // per patch: its outer levels (render/cache/stored_patch_levels.h)
 GPS_LAYOUT_CONST int kBindingLevelPatches = 28;      // the patches a level check runs over, with their listed block
 GPS_LAYOUT_CONST int kBindingLevelChanges = 29;      // per listed block: whether a patch's levels changed
+GPS_LAYOUT_CONST int kBindingLevelBound = 30;        // the largest level of a range of patches (render/pipeline/patch_level_bound.h)
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;

@@ -16,6 +16,15 @@ NormalisedFrame NormalisedFrame::of(const CovarianceMesh& mesh) {
   return f;
 }
 
+Vec3 NormalisedFrame::mean_in_frame(const Vec3& mean) const {
+  return (mean - Vec3(centre.x, centre.y, centre.z)) * (1.0 / unit);
+}
+
+Mat3 NormalisedFrame::covariance_in_frame(const Mat3& covariance) const {
+  const double s = 1.0 / unit;
+  return covariance * (s * s);
+}
+
 CovarianceMesh NormalisedFrame::to_frame(const CovarianceMesh& mesh) const {
   CovarianceMesh out = mesh;
   std::vector<int> all(mesh.n_vertices());
@@ -26,12 +35,28 @@ CovarianceMesh NormalisedFrame::to_frame(const CovarianceMesh& mesh) const {
 
 void NormalisedFrame::to_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices,
                                CovarianceMesh& framed) const {
-  const Vec3 c(centre.x, centre.y, centre.z);
-  const double s = 1.0 / unit;
   for (const int v : vertices) {
-    const size_t i = size_t(v);
-    framed.set_mean(i, (mesh.mean(i) - c) * s);
-    framed.set_covariance(i, mesh.covariance(i) * (s * s));
+    framed.set_mean(size_t(v), mean_in_frame(mesh.mean(size_t(v))));
+    framed.set_covariance(size_t(v), covariance_in_frame(mesh.covariance(size_t(v))));
+  }
+}
+
+FramedGaussians NormalisedFrame::gaussians_in_frame(const CovarianceMesh& mesh) const {
+  FramedGaussians framed;
+  framed.means.reserve(mesh.n_vertices());
+  framed.covariances.reserve(mesh.n_vertices());
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+    framed.means.push_back(mean_in_frame(mesh.mean(i)));
+    framed.covariances.push_back(covariance_in_frame(mesh.covariance(i)));
+  }
+  return framed;
+}
+
+void NormalisedFrame::to_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices,
+                               FramedGaussians& framed) const {
+  for (const int v : vertices) {
+    framed.means[size_t(v)] = mean_in_frame(mesh.mean(size_t(v)));
+    framed.covariances[size_t(v)] = covariance_in_frame(mesh.covariance(size_t(v)));
   }
 }
 

@@ -9,6 +9,17 @@
 
 namespace gps {
 
+/// The means and covariances of a mesh's vertices in a frame, without its topology: what the GPU and
+/// the overlays take, kept without a copy of the mesh's connectivity.
+struct FramedGaussians {
+  std::vector<Vec3> means;
+  std::vector<Mat3> covariances;
+
+  size_t n_vertices() const { return means.size(); }
+  const Vec3& mean(size_t v) const { return means[v]; }
+  const Mat3& covariance(size_t v) const { return covariances[v]; }
+};
+
 struct NormalisedFrame {
   glm::dvec3 centre{0.0};
   double unit = 1.0;  // world length of one frame unit: the bounding box's diagonal
@@ -19,6 +30,13 @@ struct NormalisedFrame {
   CovarianceMesh to_frame(const CovarianceMesh& mesh) const;
   /// The same for the `vertices` of `mesh` only, written into `framed` (the same topology).
   void to_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices, CovarianceMesh& framed) const;
+  /// `mesh`'s Gaussians in the frame, as to_frame gives them.
+  FramedGaussians gaussians_in_frame(const CovarianceMesh& mesh) const;
+  /// The same for the `vertices` of `mesh` only, written into `framed` (of the same vertex count).
+  void to_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices, FramedGaussians& framed) const;
+  /// One mean or covariance in the frame.
+  Vec3 mean_in_frame(const Vec3& mean) const;
+  Mat3 covariance_in_frame(const Mat3& covariance) const;
   /// World from frame as a matrix: x = centre + unit · x'.
   glm::dmat4 world_from_frame() const;
   glm::dvec3 to_world(const glm::dvec3& p) const { return centre + unit * p; }

@@ -9,16 +9,16 @@ bool needs_double_points(const Mat3& sigma) {
   return !(values.minCoeff() > 0.0) || values.maxCoeff() > kDoublePointsCondition * values.minCoeff();
 }
 
-MeshPointPrecision::MeshPointPrecision(const CovarianceMesh& mesh) : thin_(mesh.n_vertices(), 0) {
-  for (size_t v = 0; v < mesh.n_vertices(); ++v) {
-    thin_[v] = needs_double_points(mesh.covariance(v)) ? 1 : 0;
+MeshPointPrecision::MeshPointPrecision(const FramedGaussians& gaussians) : thin_(gaussians.n_vertices(), 0) {
+  for (size_t v = 0; v < gaussians.n_vertices(); ++v) {
+    thin_[v] = needs_double_points(gaussians.covariance(v)) ? 1 : 0;
     thin_count_ += size_t(thin_[v]);
   }
 }
 
-void MeshPointPrecision::update(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+void MeshPointPrecision::update(const FramedGaussians& gaussians, const std::vector<int>& changed) {
   for (const int v : changed) {
-    const char thin = needs_double_points(mesh.covariance(size_t(v))) ? 1 : 0;
+    const char thin = needs_double_points(gaussians.covariance(size_t(v))) ? 1 : 0;
     thin_count_ = thin_count_ - size_t(thin_[size_t(v)]) + size_t(thin);
     thin_[size_t(v)] = thin;
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "render/gl/normalised_frame.h"
 #include "render/gl/shader_program.h"
 
 namespace gps {
@@ -24,9 +25,9 @@ bool needs_double_points(const Mat3& sigma);
 class MeshPointPrecision {
 public:
   MeshPointPrecision() = default;
-  explicit MeshPointPrecision(const CovarianceMesh& mesh);
+  explicit MeshPointPrecision(const FramedGaussians& gaussians);
   /// The `changed` vertices' Gaussians again.
-  void update(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  void update(const FramedGaussians& gaussians, const std::vector<int>& changed);
   PointPrecision precision() const {
     return thin_count_ > 0 ? PointPrecision::double_float : PointPrecision::single_float;
   }

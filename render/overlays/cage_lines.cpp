@@ -20,27 +20,27 @@ CageLines::CageLines()
   glVertexArrayAttribBinding(vao_, 0, 0);
 }
 
-void CageLines::set_mesh(const CovarianceMesh& mesh) {
+void CageLines::set_mesh(const CovarianceMesh& mesh, const FramedGaussians& gaussians) {
   std::vector<unsigned> edges;
   edges.reserve(2 * mesh.mesh.n_edges());
   for (const auto e : mesh.mesh.edges()) edges.insert(edges.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
   index_count_ = int(edges.size());
-  upload_positions(mesh);
+  upload_positions(gaussians);
   glNamedBufferData(ibo_, GLsizeiptr(std::max<size_t>(2, edges.size()) * sizeof(unsigned)), edges.data(),
                     GL_STATIC_DRAW);
 }
 
-void CageLines::upload_positions(const CovarianceMesh& mesh) {
-  std::vector<float> positions(3 * mesh.n_vertices());
-  for (size_t i = 0; i < mesh.n_vertices(); ++i)
-    for (int k = 0; k < 3; ++k) positions[3 * i + size_t(k)] = float(mesh.mean(i)[k]);
+void CageLines::upload_positions(const FramedGaussians& gaussians) {
+  std::vector<float> positions(3 * gaussians.n_vertices());
+  for (size_t i = 0; i < gaussians.n_vertices(); ++i)
+    for (int k = 0; k < 3; ++k) positions[3 * i + size_t(k)] = float(gaussians.mean(i)[k]);
   glNamedBufferData(vbo_, GLsizeiptr(std::max<size_t>(3, positions.size()) * sizeof(float)), positions.data(),
                     GL_DYNAMIC_DRAW);
 }
 
-void CageLines::update_positions(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+void CageLines::update_positions(const FramedGaussians& gaussians, const std::vector<int>& changed) {
   for (const int v : changed) {
-    const Vec3 m = mesh.mean(size_t(v));
+    const Vec3 m = gaussians.mean(size_t(v));
     const float position[3] = {float(m.x()), float(m.y()), float(m.z())};
     glNamedBufferSubData(vbo_, GLintptr(3 * sizeof(float) * size_t(v)), sizeof position, position);
   }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "render/gl/normalised_frame.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/render_target.h"
 #include "render/gl/shader_program.h"
@@ -18,12 +19,12 @@ public:
   CageLines(const CageLines&) = delete;
   CageLines& operator=(const CageLines&) = delete;
 
-  /// The mesh's edges and vertex positions.
-  void set_mesh(const CovarianceMesh& mesh);
+  /// The mesh's edges and its vertices' positions as `gaussians` has them.
+  void set_mesh(const CovarianceMesh& mesh, const FramedGaussians& gaussians);
   /// Every vertex position.
-  void upload_positions(const CovarianceMesh& mesh);
+  void upload_positions(const FramedGaussians& gaussians);
   /// The `changed` vertices' positions.
-  void update_positions(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  void update_positions(const FramedGaussians& gaussians, const std::vector<int>& changed);
   bool empty() const { return index_count_ == 0; }
   /// Over the surface already drawn into `target` (its depth), into the colour attachment only;
   /// without the edges `hidden_edges` marks 1 (by edge index) where given.

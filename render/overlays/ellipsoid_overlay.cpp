@@ -40,16 +40,16 @@ EllipsoidOverlay::EllipsoidOverlay()
   check_gl_errors("creating the ellipsoid overlay");
 }
 
-void EllipsoidOverlay::upload(const CovarianceMesh& mesh, const std::vector<int>* changed) {
+void EllipsoidOverlay::upload(const FramedGaussians& gaussians, const std::vector<int>* changed) {
   // Σ = V diag(σ²) Vᵀ; the unit sphere maps to the 1-σ ellipsoid by [V diag(σ) | μ] (column-major mat4).
-  const auto transform = [&mesh](size_t i, float* m) {
-    const EllipsoidAxes e = ellipsoid_axes(mesh.covariance(i));
+  const auto transform = [&gaussians](size_t i, float* m) {
+    const EllipsoidAxes e = ellipsoid_axes(gaussians.covariance(i));
     const Mat3 root = e.axes * e.sigmas.asDiagonal();
     for (int c = 0; c < 3; ++c) {
       for (int r = 0; r < 3; ++r) m[4 * c + r] = float(root(r, c));
       m[4 * c + 3] = 0.0f;
     }
-    const Vec3 mu = mesh.mean(i);
+    const Vec3 mu = gaussians.mean(i);
     m[12] = float(mu.x()), m[13] = float(mu.y()), m[14] = float(mu.z()), m[15] = 1.0f;
   };
   if (changed) {  // an edit: only the changed vertices' instances
@@ -60,11 +60,11 @@ void EllipsoidOverlay::upload(const CovarianceMesh& mesh, const std::vector<int>
     }
     return;
   }
-  std::vector<float> all(std::max<size_t>(1, mesh.n_vertices()) * 16, 0.0f);
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) transform(i, &all[16 * i]);
+  std::vector<float> all(std::max<size_t>(1, gaussians.n_vertices()) * 16, 0.0f);
+  for (size_t i = 0; i < gaussians.n_vertices(); ++i) transform(i, &all[16 * i]);
   glNamedBufferData(instance_vbo_, GLsizeiptr(all.size() * sizeof(float)), all.data(), GL_DYNAMIC_DRAW);
   glVertexArrayVertexBuffer(vao_, 1, instance_vbo_, 0, 16 * sizeof(float));
-  count_ = int(mesh.n_vertices());
+  count_ = int(gaussians.n_vertices());
 }
 
 void EllipsoidOverlay::draw(const glm::mat4& view_projection, float sigma, const std::vector<int>* only) {

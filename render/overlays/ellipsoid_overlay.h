@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "render/gl/normalised_frame.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
 
@@ -18,11 +19,10 @@ public:
   EllipsoidOverlay& operator=(const EllipsoidOverlay&) = delete;
 
   /// Every vertex's ellipsoid (`changed` null), or only those of `changed`.
-  void upload(const CovarianceMesh& mesh, const std::vector<int>* changed);
+  void upload(const FramedGaussians& gaussians, const std::vector<int>* changed);
   /// The k-σ ellipsoids as lines in the current framebuffer: every vertex's (`only` null) or
   /// those of the vertices in `only` (ascending; one indirect draw, a command per run of indices).
   void draw(const glm::mat4& view_projection, float sigma, const std::vector<int>* only = nullptr);
-  int count() const { return count_; }
 
 private:
   ShaderProgram program_;

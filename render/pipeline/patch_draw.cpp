@@ -83,6 +83,7 @@ void PatchDraw::set_precision(PointPrecision precision) {
                                      PatchOutput::capture, PatchOutput::shaded_capture})
       triangle_[i][int(output)] = patch_program(PatchShape::triangle, output, precision);
   }
+  level_bound_.set_precision(precision);
   precision_ = precision;
 }
 
@@ -91,23 +92,25 @@ const ShaderProgram& PatchDraw::program(PatchShape shape, PatchOutput output) co
   return shape == PatchShape::triangle ? triangle_[i][int(output)] : quad_[i][quad_slot(output)];
 }
 
-void PatchDraw::draw(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
+void PatchDraw::draw(PatchShape shape, const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
                      int n_patches) const {
   if (statistics_) statistics_->begin();
-  draw_batches(program, o, n_total, first_patch, n_patches);
+  draw_batches(shape, program, o, n_total, first_patch, n_patches);
   if (statistics_) statistics_->end();
 }
 
-void PatchDraw::draw_batches(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
-                             int n_patches) const {
-  // Mesa 22.3's llvmpipe drops whole patches from draws that generate some 10^5 vertices, so draw
-  // in batches of at most ~2^15 generated vertices at the chosen level (adaptive levels: the worst
-  // case, 64).
-  const int level = o.pixels > 0.0f ? 64 : std::clamp(int(std::ceil(o.level)), 1, 64);
-  const int batch = std::max(1, 32768 / ((level + 1) * (level + 1)));
+void PatchDraw::draw_batches(PatchShape shape, const ShaderProgram& program, const DrawOptions& o, int n_total,
+                             int first_patch, int n_patches) const {
+  const int end = n_patches < 0 ? n_total : std::min(n_total, first_patch + n_patches);
+  // Mesa 22.3's llvmpipe drops whole patches from draws of more than 4096 patches or that generate
+  // some 10^5 vertices, so draw in batches of at most 4096 patches and ~2^15 generated vertices at
+  // the largest level these patches get (adaptive levels: measured on the GPU first, with the draw's
+  // own uniforms).
+  const int level = o.pixels > 0.0f ? level_bound_.max_level(shape, program, first_patch, end - first_patch)
+                                    : std::clamp(int(std::ceil(o.level)), 1, 64);
+  const int batch = std::clamp(32768 / ((level + 1) * (level + 1)), 1, 4096);
   glBindVertexArray(empty_vao_);
   glPatchParameteri(GL_PATCH_VERTICES, 1);
-  const int end = n_patches < 0 ? n_total : std::min(n_total, first_patch + n_patches);
   // The runs of patches not hidden, each in batches.
   const std::vector<int> none;
   const std::vector<int>& hidden = o.hidden_patches ? *o.hidden_patches : none;
@@ -133,7 +136,7 @@ long long PatchDraw::count_triangles(PatchShape shape, const Camera& camera, con
   {
     const DiscardedRaster discarded;
     glBeginQuery(GL_PRIMITIVES_GENERATED, query);
-    draw_batches(feedback, o, n_total, first_patch, n_patches);
+    draw_batches(shape, feedback, o, n_total, first_patch, n_patches);
     glEndQuery(GL_PRIMITIVES_GENERATED);
   }
   GLuint64 primitives = 0;
@@ -171,7 +174,7 @@ std::vector<TessellatedVertex> PatchDraw::capture_frame_vertices(PatchShape shap
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
     glBeginTransformFeedback(GL_TRIANGLES);
     // The feedback program as count_triangles() left it: bound, with this frame's uniforms.
-    draw_batches(program(shape, PatchOutput::feedback), o, n_total, first_patch, n_patches);
+    draw_batches(shape, program(shape, PatchOutput::feedback), o, n_total, first_patch, n_patches);
     glEndTransformFeedback();
   }
   glGetNamedBufferSubData(buffer, 0, GLsizeiptr(out.size() * sizeof(TessellatedVertex)), out.data());

@@ -12,6 +12,7 @@
 #include "render/gl/gl_object.h"
 #include "render/gl/query_ring.h"
 #include "render/gl/shader_program.h"
+#include "render/pipeline/patch_level_bound.h"
 
 namespace gps {
 
@@ -62,8 +63,9 @@ public:
     return program(shape, shape == PatchShape::triangle && o.wireframe ? PatchOutput::wireframe : PatchOutput::shaded);
   }
   /// Draws patches [first_patch, first_patch + n_patches) of `n_total` (n_patches < 0: to the last)
-  /// with `program` (bound, with the plan buffers), counted by the statistics queries if collecting.
-  void draw(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch = 0,
+  /// with `program` (bound, with the plan buffers and its uniforms), a program of `shape`, counted
+  /// by the statistics queries if collecting.
+  void draw(PatchShape shape, const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch = 0,
             int n_patches = -1) const;
   /// The triangles the tessellator generates for `o` in a width × height viewport, of those
   /// patches (a draw with rasterisation discarded).
@@ -91,8 +93,8 @@ public:
   void latest_statistics(DrawStatistics& s) const;
 
 private:
-  void draw_batches(const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
-                    int n_patches) const;
+  void draw_batches(PatchShape shape, const ShaderProgram& program, const DrawOptions& o, int n_total,
+                    int first_patch, int n_patches) const;
 
   // By PointPrecision, then PatchOutput (quads: shaded, feedback, capture, shaded_capture).
   ShaderProgram quad_[2][4], triangle_[2][5];
@@ -100,6 +102,7 @@ private:
   GlVertexArray empty_vao_;
   std::unique_ptr<QueryRing> statistics_;  // set while collecting statistics
   NormalisedFrame frame_;
+  PatchLevelBound level_bound_;
 };
 
 }  // namespace gps

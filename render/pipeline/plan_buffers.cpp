@@ -74,9 +74,9 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables) {
 // Float points: μ, then Σ⁻¹'s xx xy xz yy yz zz (shaders/dual_map_comp.glsl). The inverse is taken
 // in double and rounded once: inverted in float, a thin Gaussian's Σ (condition κ) loses κ times
 // float's precision in Σ⁻¹, its thin directions' precision first, where the surface's shape is.
-static void gaussian_of(const CovarianceMesh& mesh, size_t v, float* out) {
-  const Vec3 m = mesh.mean(v);
-  const Mat3 p = mesh.covariance(v).inverse();
+static void gaussian_of(const FramedGaussians& gaussians, size_t v, float* out) {
+  const Vec3 m = gaussians.mean(v);
+  const Mat3 p = gaussians.covariance(v).inverse();
   const double values[9] = {m.x(), m.y(), m.z(), p(0, 0), p(0, 1), p(0, 2), p(1, 1), p(1, 2), p(2, 2)};
   std::copy(values, values + 9, out);
 }
@@ -85,9 +85,9 @@ static void gaussian_of(const CovarianceMesh& mesh, size_t v, float* out) {
 // y = q̄ − Σ⁻¹ μ. Past condition 1e8 a needle's surface follows the rounding of Σ⁻¹ and q̄ (two
 // double inverses of one Σ put it apart by a thousandth of the mesh), so the GPU takes the very
 // doubles the CPU evaluator sums.
-static void gaussian_of(const CovarianceMesh& mesh, size_t v, double* out) {
-  const Vec3 m = mesh.mean(v);
-  const Dual q = to_dual(m, mesh.covariance(v));
+static void gaussian_of(const FramedGaussians& gaussians, size_t v, double* out) {
+  const Vec3 m = gaussians.mean(v);
+  const Dual q = to_dual(m, gaussians.covariance(v));
   const Vec3 y = Vec3(q.tail<3>()) - unvech(q) * m;
   const double values[12] = {m.x(), m.y(), m.z(), q[0], q[1], q[2], q[3], q[4], q[5], y.x(), y.y(), y.z()};
   std::copy(values, values + 12, out);
@@ -98,36 +98,36 @@ template <class Real>
 static constexpr size_t kGaussianReals = sizeof(Real) == sizeof(double) ? 12 : 9;
 
 template <class Real>
-void PlanBuffers::upload_gaussians_as(const CovarianceMesh& mesh) {
-  std::vector<Real> g(mesh.n_vertices() * kGaussianReals<Real>);
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) gaussian_of(mesh, i, &g[kGaussianReals<Real> * i]);
+void PlanBuffers::upload_gaussians_as(const FramedGaussians& gaussians) {
+  std::vector<Real> g(gaussians.n_vertices() * kGaussianReals<Real>);
+  for (size_t i = 0; i < gaussians.n_vertices(); ++i) gaussian_of(gaussians, i, &g[kGaussianReals<Real> * i]);
   if (sizes_[kBindingGaussians] == std::max<size_t>(sizeof(Real), g.size() * sizeof(Real)))
     glNamedBufferSubData(buffers_[kBindingGaussians], 0, GLsizeiptr(g.size() * sizeof(Real)), g.data());
   else
     upload(kBindingGaussians, g);
 }
 
-void PlanBuffers::upload_gaussians(const CovarianceMesh& mesh) {
+void PlanBuffers::upload_gaussians(const FramedGaussians& gaussians) {
   if (precision_ == PointPrecision::double_float)
-    upload_gaussians_as<double>(mesh);
+    upload_gaussians_as<double>(gaussians);
   else
-    upload_gaussians_as<float>(mesh);
+    upload_gaussians_as<float>(gaussians);
 }
 
 template <class Real>
-void PlanBuffers::update_gaussians_as(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+void PlanBuffers::update_gaussians_as(const FramedGaussians& gaussians, const std::vector<int>& changed) {
   for (const int v : changed) {
     Real values[kGaussianReals<Real>];
-    gaussian_of(mesh, size_t(v), values);
+    gaussian_of(gaussians, size_t(v), values);
     glNamedBufferSubData(buffers_[kBindingGaussians], GLintptr(sizeof values * size_t(v)), sizeof values, values);
   }
 }
 
-void PlanBuffers::update_gaussians(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+void PlanBuffers::update_gaussians(const FramedGaussians& gaussians, const std::vector<int>& changed) {
   if (precision_ == PointPrecision::double_float)
-    update_gaussians_as<double>(mesh, changed);
+    update_gaussians_as<double>(gaussians, changed);
   else
-    update_gaussians_as<float>(mesh, changed);
+    update_gaussians_as<float>(gaussians, changed);
 }
 
 void PlanBuffers::upload_edit(const std::vector<int>& changed, const std::vector<int>& rows) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "render/gl/normalised_frame.h"
 #include "core/plans/plan_builder.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/gpu_layout.h"
@@ -34,9 +35,9 @@ public:
   /// The plan and stencil tables, and zeroed plan points.
   void upload_tables(const SurfaceTables& tables);
   /// Every base vertex's μ and Σ.
-  void upload_gaussians(const CovarianceMesh& mesh);
+  void upload_gaussians(const FramedGaussians& gaussians);
   /// The `changed` vertices' μ and Σ.
-  void update_gaussians(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  void update_gaussians(const FramedGaussians& gaussians, const std::vector<int>& changed);
   /// An edit's changed vertices and the stencil rows that read them, for the listed compute passes.
   void upload_edit(const std::vector<int>& changed, const std::vector<int>& rows);
   /// An edit's corner slots to evaluate again (render/pipeline/corner_limit_pass.h).
@@ -57,9 +58,9 @@ private:
   static size_t corner_limit_floats(const PatchPlans& plans);
   void allocate_zeroed(int binding, size_t bytes);
   template <class Real>
-  void upload_gaussians_as(const CovarianceMesh& mesh);
+  void upload_gaussians_as(const FramedGaussians& gaussians);
   template <class Real>
-  void update_gaussians_as(const CovarianceMesh& mesh, const std::vector<int>& changed);
+  void update_gaussians_as(const FramedGaussians& gaussians, const std::vector<int>& changed);
   template <class T>
   void upload(int binding, const std::vector<T>& data);
 

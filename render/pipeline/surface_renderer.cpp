@@ -24,32 +24,31 @@ SurfaceRenderer::SurfaceRenderer()
   check_gl_errors("creating the renderer");
 }
 
-const SurfaceTables& SurfaceRenderer::tables() const {
-  static const SurfaceTables none;
-  return surface_ ? surface_->tables() : none;
-}
+const SurfaceTables& SurfaceRenderer::tables() const { return tables_; }
 
-void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, PlannedSurface surface, const NormalisedFrame& frame) {
+void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame) {
   // Refused before anything changes: the renderer keeps drawing the previous mesh.
-  MeshPointPrecision point_precision(mesh);
-  PlanBuffers::check_fits(surface.tables(), int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_,
+  FramedGaussians framed = frame.gaussians_in_frame(mesh);
+  MeshPointPrecision point_precision(framed);
+  PlanBuffers::check_fits(surface_tables, int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_,
                           point_precision.precision());
   use_point_precision(point_precision.precision());
   point_precision_ = std::move(point_precision);
-  surface_ = std::make_unique<const PlannedSurface>(std::move(surface));
+  tables_ = std::move(surface_tables);
+  dependents_ = stencil_dependents(tables_.stencils);
   readers_.reset();
   n_base_ = int(mesh.n_vertices());
   half_size_patches_ = 0;
   for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
-  buffers_.upload_tables(surface_->tables());
+  buffers_.upload_tables(tables_);
   frame_ = frame;
   patches_.set_frame(frame_);
   cache_.set_frame(frame_);
-  framed_ = frame_.to_frame(mesh);
+  framed_ = std::move(framed);
   buffers_.upload_gaussians(framed_);
-  ellipsoids_.upload(framed_, nullptr);  // the overlays too are drawn in the frame
-  cage_.set_mesh(framed_);
-  cache_.set_cage(framed_);  // projected with the frame's view-projection
+  ellipsoids_current_ = false;     // uploaded when first drawn: most frames draw none
+  cage_.set_mesh(mesh, framed_);   // the overlays too are drawn in the frame
+  cache_.set_cage(mesh, framed_);  // projected with the frame's view-projection
   run_compute(nullptr);
 }
 
@@ -90,14 +89,14 @@ void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vec
   // Most of the mesh (select all, drag), or a new precision: whole buffers, one call each.
   if (new_precision || update_everything(changed.size(), size_t(n_base_))) {
     buffers_.upload_gaussians(framed_);
-    ellipsoids_.upload(framed_, nullptr);
+    ellipsoids_current_ = false;
     cage_.upload_positions(framed_);
     run_compute(nullptr, true);
     return;
   }
   buffers_.update_gaussians(framed_, changed);
   cage_.update_positions(framed_, changed);
-  ellipsoids_.upload(framed_, &changed);
+  if (ellipsoids_current_) ellipsoids_.upload(framed_, &changed);
   run_compute(&changed);
 }
 
@@ -107,7 +106,7 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
   const int n_rows = tables().stencils.n_rows();
   const PatchPlans& plans = tables().plans;
   if (changed) {
-    const std::vector<int> rows = surface_->rows_reading(*changed);
+    const std::vector<int> rows = rows_reading(dependents_, *changed);
     buffers_.upload_edit(*changed, rows);
     const std::vector<int> patches = changed_patches(*changed, rows);
     const std::vector<int> corners = CornerLimitPass::owner_slots(plans, patches);
@@ -222,11 +221,13 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
       else if (cached)
         draw_cache(grid);
       else
-        patches_.draw(program, o, n_patches());
+        patches_.draw(shape(), program, o, n_patches());
     }
   }
-  if (o.ellipsoids && ellipsoids_.count() > 0) {
+  if (o.ellipsoids && framed_.n_vertices() > 0) {
     const GpuPassScope pass(timer_, "ellipsoids");
+    if (!ellipsoids_current_) ellipsoids_.upload(framed_, nullptr);
+    ellipsoids_current_ = true;
     ellipsoids_.draw(frame_view_projection(camera, aspect, frame_), o.sigma_scale, o.ellipsoid_vertices);
   }
   if (o.mesh_lines && !cage_.empty()) {
@@ -268,7 +269,9 @@ bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, 
   set_frame_uniforms(capture, camera, o, aspect, width, height, frame_);
   capture.set("u_view_projection", cache_.captured_view_projection());
   capture.set("u_viewport", cache_.captured_viewport());
-  const auto draw_patches = [&](int first, int count) { patches_.draw(capture, o, n_patches(), first, count); };
+  const auto draw_patches = [&](int first, int count) {
+    patches_.draw(shape(), capture, o, n_patches(), first, count);
+  };
   const auto evaluate_welded = [&](const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches) {
     stored_evaluation_.run(shape(), blocks, dispatches, group_limit_);
   };
@@ -313,7 +316,7 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
       patches_.program(shape(), triangle_wire ? PatchOutput::capture : PatchOutput::shaded_capture);
   set_frame_uniforms(program, camera, o, aspect, width, height, frame_);
   program.use();
-  const auto draw = [&](int first, int count) { patches_.draw(program, o, n_patches(), first, count); };
+  const auto draw = [&](int first, int count) { patches_.draw(shape(), program, o, n_patches(), first, count); };
   if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire))
     return CacheFrame::live;
   if (key.pixels > 0.0f) {  // the levels an edit's refresh checks

@@ -43,20 +43,24 @@ public:
   SurfaceRenderer(const SurfaceRenderer&) = delete;
   SurfaceRenderer& operator=(const SurfaceRenderer&) = delete;
 
-  /// New topology: uploads the tables of `surface` (built by core for this mesh; the renderer keeps
-  /// it for its tables and rows_reading), then a full compute pass, with plan points in the precision
-  /// the mesh's Gaussians need (render/gl/point_precision.h). Throws gps::Error, before
-  /// anything changes, where the tables exceed the device's storage block size or the driver
-  /// refuses the double programs.
+  /// New topology: uploads `surface_tables` (built by core for this mesh; the renderer keeps them), then a
+  /// full compute pass in `frame`, with plan points in the precision the mesh's Gaussians need
+  /// (render/gl/point_precision.h). Throws gps::Error, before anything changes, where the tables
+  /// exceed the device's storage block size or the driver refuses the double programs.
+  void set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame);
+  /// The same with the tables of `surface`, in the mesh's own frame.
   void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface) {
     set_mesh(mesh, std::move(surface), NormalisedFrame::of(mesh));
   }
   /// The same, evaluated in `frame` instead of the mesh's own (a rebuild that must match edits made
   /// in an earlier frame).
-  void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface, const NormalisedFrame& frame);
-  /// The same with the surface core plans under `options` (Loop for triangles only, else Catmull-Clark).
+  void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface, const NormalisedFrame& frame) {
+    set_mesh(mesh, std::move(surface).release_tables(), frame);
+  }
+  /// The same with the tables core plans under `options` (Loop for triangles only, else
+  /// Catmull-Clark); no CPU plan points are computed, the GPU computes its own.
   void set_mesh(const CovarianceMesh& mesh, const PlanOptions& options) {
-    set_mesh(mesh, PlannedSurface(mesh, options));
+    set_mesh(mesh, build_surface_plans(topology_of(mesh.mesh), options, mesh.sharpness), NormalisedFrame::of(mesh));
   }
   /// The same with the default options: the scheme that fits the mesh, exact plans.
   void set_mesh(const CovarianceMesh& mesh) { set_mesh(mesh, PlanOptions{}); }
@@ -143,7 +147,8 @@ private:
   PatchShape shape() const { return tables().plans.shape; }
   int n_patches() const { return tables().plans.n_patches(); }
 
-  std::unique_ptr<const PlannedSurface> surface_;
+  SurfaceTables tables_;
+  StencilDependents dependents_;                 // of tables_'s stencils: the rows an edit reaches
   std::unique_ptr<const PatchReaders> readers_;  // built at the first edit the cache can follow
   PlanBuffers buffers_;
   MeshPointPrecision point_precision_;  // what the mesh's Gaussians need
@@ -151,10 +156,11 @@ private:
   CornerLimitPass corners_;
   PatchDraw patches_;
   NormalisedFrame frame_;
-  CovarianceMesh framed_;  // the mesh in frame_, as uploaded
+  FramedGaussians framed_;  // the mesh's Gaussians in frame_, as uploaded
   StaticTriangles static_triangles_;
   CageLines cage_;
   EllipsoidOverlay ellipsoids_;
+  bool ellipsoids_current_ = false;  // whether ellipsoids_ holds framed_
   ShaderProgram cached_, cached_grid_,
       cached_wire_;  // the surface cache's draw (plain, quads' wireframe, triangles' wireframe)
   SurfaceCache cache_;

@@ -40,6 +40,19 @@ TEST(FreedMemory, LargeBlocksComeFromTheHeapAndStayInTheProcess) {
   EXPECT_GE(mallinfo2().arena, kLarge);  // freed, still the process's
 }
 
+// The tunable glibc reads at a program's start, for the program run next.
+TEST(FreedMemory, TheNextProgramIsAskedForHugePages) {
+  unsetenv("GLIBC_TUNABLES");
+  huge_page_heap_for_next_program();
+  EXPECT_STREQ(std::getenv("GLIBC_TUNABLES"), "glibc.malloc.hugetlb=1");
+  setenv("GLIBC_TUNABLES", "glibc.malloc.check=0", 1);
+  huge_page_heap_for_next_program();
+  EXPECT_STREQ(std::getenv("GLIBC_TUNABLES"), "glibc.malloc.check=0:glibc.malloc.hugetlb=1");
+  setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=0", 1);  // the user's own choice stays
+  huge_page_heap_for_next_program();
+  EXPECT_STREQ(std::getenv("GLIBC_TUNABLES"), "glibc.malloc.hugetlb=0");
+}
+
 }  // namespace
 }  // namespace gps
 #else

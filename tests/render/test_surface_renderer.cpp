@@ -17,6 +17,7 @@
 #include "core/modelling/samples.h"
 #include "core/plans/stencil_table.h"
 #include "core/evaluation/tessellator.h"
+#include "render/image/non_finite_pixels.h"
 #include "render/pipeline/surface_point.h"
 #include "render/comparison/reference_triangles.h"
 #include "tests/support/device_limits.h"
@@ -138,8 +139,9 @@ TEST_F(GpuTest, CreasedPatchesMatchTheCpuEvaluator) {
     ASSERT_FALSE(mesh.sharpness.empty()) << name;
     for (const float level : {1.0f, 7.0f, 64.0f}) {
       const VertexErrors e = compare_vertices(mesh, PlanOptions{}, level);
-      std::printf("%-16s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.4f degrees, %zu vertices\n",
-                  name, level, e.position, e.normal_degrees, e.count);
+      std::printf(
+          "%-16s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.4f degrees, %zu vertices\n",
+          name, level, e.position, e.normal_degrees, e.count);
       EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
       EXPECT_LT(e.position, 5e-7) << name << " level " << level;
       EXPECT_LT(e.normal_degrees, 0.05) << name << " level " << level;
@@ -355,6 +357,31 @@ TEST_F(GpuTest, StatisticsCountTheTessellatedTriangles) {
     std::printf("%s from the surface cache: %lld triangles, %lld vertex shader invocations (%lld distinct vertices)\n",
                 name, c.triangles, c.vertices, renderer.surface_cache().distinct_vertices());
   }
+}
+
+// Every patch of a mesh larger than one draw batch is drawn, at uniform level 1 and at adaptive
+// levels that are 1 everywhere: the sphere covers the pixels the CPU reference's triangles cover.
+// llvmpipe leaves whole patches out of a draw of more than 4096 of them.
+TEST_F(GpuTest, EveryPatchOfALargeMeshIsDrawnAtLevelOne) {
+  const CovarianceMesh mesh = make_sample("sphere", 10000);
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh);
+  ASSERT_GT(renderer.tables().plans.n_patches(), 8192);
+  const auto covered = [&](float level, float pixels, bool reference = false) {
+    DrawOptions o;
+    o.surface_cache = false;
+    o.level = level;
+    o.pixels = pixels;
+    o.static_triangles = reference;
+    RenderTarget target(160, 160);
+    renderer.draw(target, frame_mesh(mesh, 35.0f, 25.0f), o);
+    return count_covered_pixels(target.read(2));
+  };
+  renderer.set_triangles(reference_triangles(mesh, 2, PlanOptions{}));
+  const long long reference = covered(1.0f, 0.0f, true);
+  EXPECT_GT(reference, 160 * 160 / 8);
+  EXPECT_NEAR(double(covered(1.0f, 0.0f)), double(reference), 0.01 * double(reference)) << "level 1";
+  EXPECT_NEAR(double(covered(1.0f, 1000.0f)), double(reference), 0.01 * double(reference)) << "adaptive";
 }
 
 // The base-mesh lines follow an edit that moves a vertex: the lines meet where the vertex now
