@@ -7,11 +7,8 @@
 #include <string>
 
 namespace gps::python {
-namespace {
 
-std::string number(double v) { return py::str(py::float_(v)).cast<std::string>(); }
-
-}  // namespace
+std::string shown_number(double v) { return py::str(py::float_(v)).cast<std::string>(); }
 
 DoubleArray rows_to_array(const std::vector<Vec3>& rows) {
   DoubleArray a({py::ssize_t(rows.size()), py::ssize_t(3)});
@@ -149,13 +146,20 @@ IntArray faces_to_array(const PolygonTopology& faces) {
 
 double positive_number(double value, const char* what) {
   if (!(std::isfinite(value) && value > 0))
-    throw py::value_error(std::string(what) + ": expected a finite number above 0, got " + number(value));
+    throw py::value_error(std::string(what) + ": expected a finite number above 0, got " + shown_number(value));
   return value;
 }
 
 double finite_number(double value, const char* what) {
   if (!std::isfinite(value))
-    throw py::value_error(std::string(what) + ": expected a finite number, got " + number(value));
+    throw py::value_error(std::string(what) + ": expected a finite number, got " + shown_number(value));
+  return value;
+}
+
+double number_in(double value, double lo, double hi, const char* what) {
+  if (!(value >= lo && value <= hi))
+    throw py::value_error(std::string(what) + ": expected a number from " + shown_number(lo) + " to " + shown_number(hi) +
+                          ", got " + shown_number(value));
   return value;
 }
 

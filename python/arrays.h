@@ -51,10 +51,14 @@ PolygonTopology faces_from(const py::object& faces);
 /// The faces as an (n, k) int32 array; a ValueError for a mesh with faces of several sizes.
 IntArray faces_to_array(const PolygonTopology& faces);
 
+/// A number as Python prints it, for messages.
+std::string shown_number(double value);
 /// `value` if finite and above 0, else a ValueError naming `what`.
 double positive_number(double value, const char* what);
 /// `value` if finite, else a ValueError naming `what`.
 double finite_number(double value, const char* what);
+/// `value` if from `lo` to `hi` (NaN refused), else a ValueError naming `what` and the range.
+double number_in(double value, double lo, double hi, const char* what);
 /// The file system path of a str, bytes or os.PathLike.
 std::string path_of(const py::object& path);
 

@@ -29,9 +29,16 @@ std::vector<Vec3> points_of(const py::object& points, const char* what) {
   return array_to_rows(array, what);
 }
 
+// What a measurement gives: every point's distance and, for each point with a normal, the angle
+// between it and the surface's normal at the nearest point (degrees, as lines).
+struct Measured {
+  std::vector<double> distances, normal_angles;
+};
+
 // Distances from points to a Surface's kept plans, a Mesh's limit surface, or (linear) its faces.
 struct Measurement {
   std::vector<Vec3> points;
+  std::shared_ptr<const CovarianceMesh> points_mesh;  // the Mesh whose vertices are the points, if one
   std::shared_ptr<const PlannedSurface> plans;  // empty for a Mesh
   std::shared_ptr<const CovarianceMesh> mesh;
   int level = 8;
@@ -49,19 +56,29 @@ struct Measurement {
     return tessellate(p, plans->points(), used);
   }
 
-  // The distance of every point, a chunk at a time so that a stop is seen between chunks.
-  std::vector<double> distances(CallControl& control) const {
+  // The distance of every point (and, with `angles`, the normals' angles), a chunk at a time so
+  // that a stop is seen between chunks.
+  Measured measure(CallControl& control, bool angles) const {
     constexpr size_t kChunk = 1 << 16;
-    const SurfaceDistance measure(triangles());
-    std::vector<double> out;
-    out.reserve(points.size());
+    const TriangleMesh surface = triangles();
+    const SurfaceDistance measure(surface);
+    // A Mesh's points have its faces' area-weighted normals; an array's have none.
+    const std::vector<Vec3> normals = angles && points_mesh ? face_triangles(*points_mesh).normals : std::vector<Vec3>();
+    Measured out;
+    out.distances.reserve(points.size());
+    const auto chunk_of = [](const std::vector<Vec3>& all, size_t first) {
+      return std::vector<Vec3>(all.begin() + ptrdiff_t(first),
+                               all.begin() + ptrdiff_t(std::min(all.size(), first + kChunk)));
+    };
     for (size_t first = 0; first < points.size(); first += kChunk) {
       control.throw_if_stopped();
       control.report(double(first) / double(points.size()));
-      const std::vector<Vec3> chunk(points.begin() + ptrdiff_t(first),
-                                    points.begin() + ptrdiff_t(std::min(points.size(), first + kChunk)));
+      const std::vector<Vec3> chunk = chunk_of(points, first);
       const std::vector<double> d = measure.distances(chunk);
-      out.insert(out.end(), d.begin(), d.end());
+      out.distances.insert(out.distances.end(), d.begin(), d.end());
+      if (normals.empty()) continue;
+      const std::vector<double> a = measure.normal_angles(chunk, chunk_of(normals, first));
+      out.normal_angles.insert(out.normal_angles.end(), a.begin(), a.end());
     }
     return out;
   }
@@ -72,6 +89,7 @@ Measurement measurement(const py::object& points, const py::object& to, const st
                         const char* what) {
   Measurement m;
   m.points = points_of(points, what);
+  if (py::isinstance<MeshHandle>(points)) m.points_mesh = points.cast<const MeshHandle&>().mesh;
   if (py::isinstance<SurfaceHandle>(to)) {
     const auto& s = to.cast<const SurfaceHandle&>();
     m.plans = s.surface, m.mesh = s.mesh;
@@ -109,26 +127,32 @@ void add_fitting_bindings(py::module_& m) {
   m.def(
       "fit",
       [](const MeshHandle& coarse, const py::object& target, int iterations, bool plain, double smoothness,
-         double tolerance, std::optional<double> time, const py::object& progress, bool report) -> py::object {
+         double tolerance, std::optional<double> time, const py::object& progress, bool report,
+         double covariance_smoothness, double covariance_prior, double min_sigma, double max_sigma) -> py::object {
         if (iterations < 0 || iterations > 1000)
           throw py::value_error("iterations: expected 0..1000, got " + std::to_string(iterations));
-        if (!(std::isfinite(smoothness) && smoothness >= 0 && smoothness <= 1e6))
-          throw py::value_error("smoothness: expected 0..1e6");
+        FitOptions o;
+        o.iterations = iterations;
+        o.plain = plain;
+        o.smoothness = number_in(smoothness, 0, 1e6, "smoothness");
+        o.covariance_smoothness = number_in(covariance_smoothness, 0, 1e6, "covariance_smoothness");
+        o.covariance_prior = number_in(covariance_prior, 0, 1e6, "covariance_prior");
+        // The bounds as gpsurf fit --min-sigma --max-sigma take them: the lower below the upper.
+        o.min_sigma = number_in(min_sigma, 0, 1e6, "min_sigma");
+        o.max_sigma = positive_number(max_sigma, "max_sigma");
+        if (!(o.min_sigma < o.max_sigma))
+          throw py::value_error("min_sigma: expected below max_sigma (" + shown_number(max_sigma) + "), got " +
+                                shown_number(min_sigma));
         if (!(tolerance >= 0 && tolerance <= 1)) throw py::value_error("tolerance: expected a fraction 0..1");
+        o.tolerance = tolerance;
         if (time && !(std::isfinite(*time) && *time > 0))
           throw py::value_error("time: expected a finite number of seconds above 0, or None");
+        o.time_budget = time.value_or(INFINITY);
         std::vector<Vec3> targets = points_of(target, "target");
         if (targets.empty()) throw py::value_error("target: has no points to fit to");
         FitResult result = call_in_background(
-            [source = coarse.mesh, targets = std::move(targets), iterations, plain, smoothness, tolerance,
-             time](CallControl& control) {
-              FitOptions o;
-              o.iterations = iterations;
-              o.plain = plain;
-              o.smoothness = smoothness;
-              o.tolerance = tolerance;
-              o.time_budget = time.value_or(INFINITY);
-              o.progress = [&control, iterations](const FitIteration& it) {
+            [source = coarse.mesh, targets = std::move(targets), o](CallControl& control) mutable {
+              o.progress = [&control, iterations = o.iterations](const FitIteration& it) {
                 control.throw_if_stopped();
                 control.report(iterations == 0 ? 1.0 : double(it.iteration) / iterations);
               };
@@ -148,12 +172,20 @@ void add_fitting_bindings(py::module_& m) {
       },
       py::arg("coarse"), py::arg("target"), py::arg("iterations") = 10, py::arg("plain") = false,
       py::arg("smoothness") = 1e-5, py::arg("tolerance") = 0.0, py::arg("time") = py::none(),
-      py::arg("progress") = py::none(), py::arg("report") = false,
+      py::arg("progress") = py::none(), py::arg("report") = false, py::kw_only(),
+      py::arg("covariance_smoothness") = FitOptions().covariance_smoothness,
+      py::arg("covariance_prior") = FitOptions().covariance_prior, py::arg("min_sigma") = FitOptions().min_sigma,
+      py::arg("max_sigma") = FitOptions().max_sigma,
       "The limit surface of `coarse` fitted to `target` (a Mesh's vertices or an (n, 3) array of points), as gpsurf "
       "fit fits it: up to `iterations` (0..1000) Levenberg-Marquardt steps on the squared distances from the points "
       "to their closest limit points, moving the means and (unless plain) the covariances; smoothness: the weight "
-      "of the smoothness term. tolerance: stop when an iteration lowers the rms distance by less than this fraction "
-      "of it (0: never); time: stop after the iteration that passes this many seconds (None: never). progress: "
+      "of the smoothness term on the means (0..1e6). Of the covariances (ignored when plain): "
+      "covariance_smoothness, the weight of the smoothness term on their changes (0..1e6); covariance_prior, the "
+      "weight of the prior that keeps each near its start (0..1e6, 0: none); min_sigma and max_sigma, the least "
+      "and greatest standard deviation of each Gaussian over the mean length of its vertex's edges (min_sigma "
+      "0..1e6 below max_sigma, a finite number above 0). tolerance: stop when an iteration lowers the rms distance "
+      "by less than this fraction of it (0: never); time: stop after the iteration that passes this many seconds "
+      "(None: never). progress: "
       "called with the fraction of iterations done; returning False cancels (gpsurf.Cancelled). Returns the fitted "
       "Mesh; report=True: (Mesh, dict) with stop ('iterations', 'converged', 'time' or 'no_descent'), reason (in "
       "words), iterations (the number run) and relative_rms (per iteration, the first before any step, divided by "
@@ -163,7 +195,8 @@ void add_fitting_bindings(py::module_& m) {
       [](const py::object& points, const py::object& to, std::optional<int> level, bool linear) {
         const Measurement m = measurement(points, to, level, linear, "points");
         return read_only(double_array(
-            call_in_background([m](CallControl& control) { return m.distances(control); }, py::none(), false)));
+            call_in_background([m](CallControl& control) { return m.measure(control, false).distances; }, py::none(),
+                               false)));
       },
       py::arg("points"), py::arg("to"), py::arg("level") = py::none(), py::arg("linear") = false,
       "The distance from each point (an (n, 3) array, or a Mesh's vertices) to the limit surface of `to` (a Mesh, "
@@ -174,10 +207,12 @@ void add_fitting_bindings(py::module_& m) {
       [](const py::object& a, const py::object& b, std::optional<int> level, bool linear) {
         const Measurement m = measurement(a, b, level, linear, "a");
         if (m.points.empty()) throw py::value_error("a: has no points to measure");
-        const DistanceSummary s = call_in_background(
+        const auto [s, angles] = call_in_background(
             [m](CallControl& control) {
+              const Measured measured = m.measure(control, true);
               const double length = bounding_box_diagonal(m.points);
-              return summarise_distances(m.distances(control), length > 0 ? length : 1.0);
+              return std::pair(summarise_distances(measured.distances, length > 0 ? length : 1.0),
+                               summarise_angles(measured.normal_angles));
             },
             py::none(), false);
         py::dict out;
@@ -189,13 +224,19 @@ void add_fitting_bindings(py::module_& m) {
         out["relative_rms"] = s.relative_rms();
         out["relative_percentile_99"] = s.relative_percentile_99();
         out["relative_max"] = s.relative_max();
+        out["normal_count"] = angles.count;
+        out["normal_rms_degrees"] = angles.count > 0 ? angles.rms : NAN;
+        out["normal_max_degrees"] = angles.count > 0 ? angles.max : NAN;
         return out;
       },
       py::arg("a"), py::arg("b"), py::arg("level") = py::none(), py::arg("linear") = false,
       "As gpsurf compare: the distances from the points of `a` (a Mesh's vertices or an (n, 3) array) to the limit "
       "surface of `b` (a Mesh or Surface; linear=True: its faces) summarised as a dict: count, rms, percentile_99, "
       "max (absolute), length (the points' bounding-box diagonal) and relative_rms, relative_percentile_99, "
-      "relative_max (divided by it).");
+      "relative_max (divided by it); and how far the normals turn: normal_count (the points with a normal: a Mesh's "
+      "vertices on a face, area-weighted over them; an array's points have none), normal_rms_degrees and "
+      "normal_max_degrees (the angles, as lines 0..90, between their normals and the surface's at the nearest point; "
+      "NaN where no point has a normal).");
 }
 
 }  // namespace gps::python

@@ -277,10 +277,17 @@ void add_mesh_bindings(py::module_& m) {
       "text). Raises gpsurf.Error naming the operation (ops[i]) and what is wrong.");
   m.def(
       "simplify",
-      [](const MeshHandle& mesh, size_t vertices, double bias, const py::object& progress) {
+      [](const MeshHandle& mesh, std::optional<size_t> vertices, double bias, const py::object& progress,
+         std::optional<double> error, bool quads) {
+        if (!vertices && !error) throw py::value_error("simplify: give vertices=N or error=E");
         SimplifyOptions o;
-        o.target_vertices = vertices;
+        // error alone: as few vertices as the error allows, as gpsurf simplify --error does.
+        o.target_vertices = vertices.value_or(4);
         o.bias = positive_number(bias, "bias");
+        if (error && !(*error > 0 && *error <= 1))
+          throw py::value_error("error: expected a number above 0 and at most 1, got " + shown_number(*error));
+        o.max_error = error.value_or(0);
+        o.quads = quads;
         return call_in_background(
             [o, source = mesh.mesh](CallControl& control) mutable {
               o.progress = control.progress_report();
@@ -288,12 +295,15 @@ void add_mesh_bindings(py::module_& m) {
             },
             progress, true);
       },
-      py::arg("mesh"), py::arg("vertices"), py::arg("bias") = 0.05, py::arg("progress") = py::none(),
+      py::arg("mesh"), py::arg("vertices") = py::none(), py::arg("bias") = 0.05, py::arg("progress") = py::none(),
+      py::kw_only(), py::arg("error") = py::none(), py::arg("quads") = false,
 
       "A coarse copy of a triangle mesh with about `vertices` vertices (edge collapses that keep its topology), each "
       "vertex's Gaussian from the input faces collapsed into it (`bias`: their thickness across their planes), as "
-      "gpsurf simplify makes it. progress: called with the fraction done (0 to 1); returning False cancels "
-      "(gpsurf.Cancelled).");
+      "gpsurf simplify makes it. error: stop short of a collapse that would move the surface further than this "
+      "fraction (0 to 1) of the input's bounding-box diagonal (with vertices=None: as few vertices as it allows). "
+      "quads: pair the result's triangles into quads where they make nearly square, flat ones. progress: called "
+      "with the fraction done (0 to 1); returning False cancels (gpsurf.Cancelled).");
   m.def("samples", &sample_names, "The names of the built-in meshes");
   m.def("sample_description", &sample_description, py::arg("name"),
         "What the built-in mesh `name` is ('' for an unknown name)");

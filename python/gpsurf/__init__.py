@@ -48,15 +48,18 @@ def _signature(function):
     """The inspect.Signature of a compiled function, from the first line of its docstring (as
     pybind11 writes it: `name(a: type, b: type = default) -> type`)."""
     line = function.__doc__.splitlines()[0]
-    parameters = []
+    parameters, kind = [], _inspect.Parameter.POSITIONAL_OR_KEYWORD
     for part in _split_parameters(line[line.index("(") + 1:line.rindex(") ->")]):
+        if part == "*":  # the keyword-only parameters follow
+            kind = _inspect.Parameter.KEYWORD_ONLY
+            continue
         name, _, rest = part.partition(":")
         default = rest.partition(" = ")[2]
         try:
             value = _ast.literal_eval(default) if default else _inspect.Parameter.empty
         except ValueError:
             value = default
-        parameters.append(_inspect.Parameter(name.strip(), _inspect.Parameter.POSITIONAL_OR_KEYWORD, default=value))
+        parameters.append(_inspect.Parameter(name.strip(), kind, default=value))
     return _inspect.Signature(parameters)
 
 

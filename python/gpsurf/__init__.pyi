@@ -98,7 +98,15 @@ def read(
     path: PathLike, covariance: str = "infer", bias: float = 0.05, isotropic: float = 0.5, repair: bool = False
 ) -> Mesh: ...
 def edit(mesh: Mesh, ops: Union[str, Sequence[dict]]) -> Mesh: ...
-def simplify(mesh: Mesh, vertices: int, bias: float = 0.05, progress: Progress = None) -> Mesh: ...
+def simplify(
+    mesh: Mesh,
+    vertices: Optional[int] = None,
+    bias: float = 0.05,
+    progress: Progress = None,
+    *,
+    error: Optional[float] = None,
+    quads: bool = False,
+) -> Mesh: ...
 def samples() -> list[str]: ...
 def sample_description(name: str) -> str: ...
 def sample(name: str, size: int = 0) -> Mesh: ...
@@ -126,6 +134,10 @@ def fit(
     progress: Progress = None,
     *,
     report: Literal[True],
+    covariance_smoothness: float = 0.0001,
+    covariance_prior: float = 0.0,
+    min_sigma: float = 0.35,
+    max_sigma: float = 1.0,
 ) -> Tuple[Mesh, dict[str, Any]]: ...
 @overload
 def fit(
@@ -138,6 +150,11 @@ def fit(
     time: Optional[float] = None,
     progress: Progress = None,
     report: Literal[False] = False,
+    *,
+    covariance_smoothness: float = 0.0001,
+    covariance_prior: float = 0.0,
+    min_sigma: float = 0.35,
+    max_sigma: float = 1.0,
 ) -> Mesh: ...
 def distance(
     points: Union[Mesh, npt.ArrayLike], to: Union[Mesh, Surface], level: Optional[int] = None, linear: bool = False
