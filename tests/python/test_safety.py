@@ -117,7 +117,8 @@ def test_not_finite_values_in_a_mesh_are_named():
         gpsurf.Mesh(cone.positions, cone.faces, covariances)
 
 
-# Every entry point with valid arguments; the fuzz replaces one argument at a time.
+# Every entry point with valid arguments (and keywords, where it has keyword-only ones); the fuzz
+# replaces one argument or keyword at a time.
 def entry_points():
     cone = gpsurf.sample("cone")
     surface = gpsurf.Surface(cone)
@@ -129,9 +130,10 @@ def entry_points():
         "infer": (gpsurf.infer, [cone, 0.05]),
         "subdivide": (gpsurf.subdivide, [cone, 1, True, "auto", "loop"]),
         "tessellate": (gpsurf.tessellate, [cone, 2, "auto", "loop", -1, False]),
-        "simplify": (gpsurf.simplify, [gpsurf.sample("icosphere", 80), 20, 0.05]),
+        "simplify": (gpsurf.simplify, [gpsurf.sample("icosphere", 80), 20, 0.05], {"error": 0.01, "quads": True}),
         "edit": (gpsurf.edit, [cone, [{"op": "extrude", "faces": [0], "distance": 0.1}]]),
-        "fit": (gpsurf.fit, [cone, points, 1]),
+        "fit": (gpsurf.fit, [cone, points, 1], {"covariance_smoothness": 1e-4, "covariance_prior": 0.1,
+                                                "min_sigma": 0.3, "max_sigma": 2.0}),
         "distance": (gpsurf.distance, [points, cone, 2]),
         "compare": (gpsurf.compare, [points, surface, 2]),
         "Surface": (gpsurf.Surface, [cone, "auto", "loop", -1, False]),
@@ -154,13 +156,17 @@ BAD_VALUES = [None, "", "x", b"\xff", -1, 0, 2**31, 2**63, -2**63, 2**64, 0.7, m
 def fuzz():
     """Calls every entry point with each bad value in place of each argument: anything but a
     refusal or a valid result fails, and so does NaN in a result."""
-    for name, (function, arguments) in entry_points().items():
-        for position in range(len(arguments)):
+    for name, (function, arguments, *keywords) in entry_points().items():
+        given = keywords[0] if keywords else {}
+        for position in [*range(len(arguments)), *given]:
             for bad in BAD_VALUES:
-                args = list(arguments)
-                args[position] = bad
+                args, kwargs = list(arguments), dict(given)
+                if isinstance(position, int):
+                    args[position] = bad
+                else:
+                    kwargs[position] = bad
                 try:
-                    result = function(*args)
+                    result = function(*args, **kwargs)
                 except REFUSALS:
                     continue
                 except Exception as e:  # noqa: BLE001
