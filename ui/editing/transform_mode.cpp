@@ -54,14 +54,27 @@ TransformMode::TransformMode(TransformKind kind, const CovarianceMesh& mesh, std
   move_cursor(cursor, view);
 }
 
+void TransformMode::set_orientations(TransformOrientation first, const Mat3& normal_frame) {
+  first_orientation_ = orientation_ = first;
+  normal_frame_ = normal_frame;
+}
+
 void TransformMode::constrain_axis(int axis, bool exclude) {
   const Constraint wanted = exclude ? Constraint::plane : Constraint::axis;
-  if (constraint_ == wanted && axis_ == axis) {
-    constraint_ = Constraint::none;
-  } else {
+  if (constraint_ != wanted || axis_ != axis) {
     constraint_ = wanted;
     axis_ = axis;
+    orientation_ = first_orientation_;
+  } else if (orientation_ == first_orientation_) {
+    orientation_ = first_orientation_ == TransformOrientation::global ? TransformOrientation::normal
+                                                                      : TransformOrientation::global;
+  } else {
+    constraint_ = Constraint::none;
   }
+}
+
+Mat3 TransformMode::frame() const {
+  return orientation_ == TransformOrientation::normal ? normal_frame_ : Mat3(Mat3::Identity());
 }
 
 void TransformMode::constrain_direction(const Vec3& direction, const std::string& name) {
@@ -72,7 +85,7 @@ void TransformMode::constrain_direction(const Vec3& direction, const std::string
 
 Vec3 TransformMode::axis_direction() const {
   if (constraint_ == Constraint::direction) return direction_;
-  if (constraint_ == Constraint::axis || constraint_ == Constraint::plane) return Vec3::Unit(axis_);
+  if (constraint_ == Constraint::axis || constraint_ == Constraint::plane) return frame().col(axis_);
   return Vec3::Zero();
 }
 
@@ -126,8 +139,11 @@ void TransformMode::snap_increment(double distance_step, double factor_step, dou
       if (constraint_ == Constraint::axis || constraint_ == Constraint::direction) {
         const Vec3 along = axis_direction();
         translation_ = along * round_to(translation_.dot(along), distance_step);
-      } else {
-        for (int i = 0; i < 3; ++i) translation_[i] = round_to(translation_[i], distance_step);
+      } else {  // whole steps along each axis of the orientation in use
+        const Mat3 f = frame();
+        Vec3 steps = f.transpose() * translation_;
+        for (int i = 0; i < 3; ++i) steps[i] = round_to(steps[i], distance_step);
+        translation_ = f * steps;
       }
       break;
     case TransformKind::scale:
@@ -161,7 +177,7 @@ AffineMap TransformMode::map(size_t source, double weight) const {
       Vec3 t = translation_;
       if (has_typed)
         t = typed * (constraint_ == Constraint::none    ? Vec3(Vec3::UnitX())
-                     : constraint_ == Constraint::plane ? Vec3(Vec3::Unit((axis_ + 1) % 3))
+                     : constraint_ == Constraint::plane ? Vec3(frame().col((axis_ + 1) % 3))
                                                         : along);
       AffineMap m;
       m.translation = weight * t;
@@ -192,8 +208,10 @@ AffineMap TransformMode::map(size_t source, double weight) const {
 
 std::string TransformMode::describe() const {
   std::string constraint;
-  if (constraint_ == Constraint::axis) constraint = std::string(" along ") + kAxisNames[axis_];
-  if (constraint_ == Constraint::plane) constraint = std::string(" in the plane normal to ") + kAxisNames[axis_];
+  const std::string axis =
+      (orientation_ == TransformOrientation::normal ? std::string("normal ") : std::string()) + kAxisNames[axis_];
+  if (constraint_ == Constraint::axis) constraint = " along " + axis;
+  if (constraint_ == Constraint::plane) constraint = " in the plane normal to " + axis;
   if (constraint_ == Constraint::direction) constraint = " along " + direction_name_;
   char amount[128];
   const AffineMap m = map(0);

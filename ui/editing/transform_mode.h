@@ -1,8 +1,10 @@
 #pragma once
 // Blender's modal transforms of the selected vertices: G grab, S scale, R rotate (about the view
 // axis). The mouse sets the amount from where it was when the transform began; X, Y, Z constrain it
-// to a world axis and Shift+X, Y, Z to the plane normal to one (pressed again: unconstrained); typed
-// digits replace the mouse ("S 0.5", "G Z 1", "R 90" degrees). Each vertex is carried by an affine
+// to an axis and Shift+X, Y, Z to the plane normal to one; typed
+// digits replace the mouse ("S 0.5", "G Z 1", "R 90" degrees). The axes are those of a transform
+// orientation (ui/editing/transform_orientation.h): the first press of a key takes the default one, the
+// second the other (Global ↔ Normal), the third removes the constraint, as Blender's. Each vertex is carried by an affine
 // map about the pivot — μ′ = Aμ + t, Σ′ = AΣAᵀ (core/modelling/affine_transform.h) — weighted for
 // proportional editing and mirrored for mirror editing.
 #include <limits>
@@ -14,6 +16,7 @@
 
 #include "core/modelling/affine_transform.h"
 #include "ui/editing/edit_reach.h"
+#include "ui/editing/transform_orientation.h"
 #include "view/projection.h"
 
 namespace gps {
@@ -37,8 +40,11 @@ public:
   TransformMode(TransformKind kind, const CovarianceMesh& mesh, std::vector<int> vertices, int active,
                 TransformPivot pivot, const Viewport& view, glm::vec2 cursor, const Vec3& cursor_point = Vec3::Zero());
 
-  /// X, Y, Z (axis 0, 1, 2): along the world axis; `exclude`: in the plane normal to it. The same
-  /// constraint again removes it.
+  /// The axes an axis key takes: `first` on its first press (Global: the world's), the other on the
+  /// second; `normal_frame`: the Normal orientation's axes as columns (normal_frame()).
+  void set_orientations(TransformOrientation first, const Mat3& normal_frame);
+  /// X, Y, Z (axis 0, 1, 2): along the axis of the first orientation; `exclude`: in the plane normal
+  /// to it. The same key again: the other orientation's axis; a third time: unconstrained.
   void constrain_axis(int axis, bool exclude);
   /// Along a unit direction (the normal of an extrusion).
   void constrain_direction(const Vec3& direction, const std::string& name);
@@ -68,6 +74,7 @@ public:
 
 private:
   Vec3 axis_direction() const;  // the constraint's direction (axis or given); zero when none
+  Mat3 frame() const;           // the axes of the orientation in use, as columns
 
   TransformKind kind_;
   std::vector<int> vertices_;
@@ -77,6 +84,8 @@ private:
   glm::vec2 start_cursor_{0.0f};
   enum class Constraint { none, axis, plane, direction } constraint_ = Constraint::none;
   int axis_ = 0;
+  TransformOrientation first_orientation_ = TransformOrientation::global, orientation_ = TransformOrientation::global;
+  Mat3 normal_frame_ = Mat3::Identity();
   Vec3 direction_ = Vec3::Zero();
   std::string direction_name_;
   std::string typed_;

@@ -58,6 +58,7 @@ struct ViewOptions {
   bool common_frame = false;        // a multi-selection drag: every Gaussian in the grabbed one's frame (else its own)
   bool transform_gaussians = true;  // G / S / R carry the Gaussians (else they move the positions only)
   SnapOptions snap;                 // while transforming
+  int transform_orientation = 0;    // the axes an axis key takes first in G / S / R: 0 Global, 1 Normal
   int pivot = 0;  // where the gizmo of a multi-selection sits: 0 the active vertex, 1 the selection's centroid
   int ellipsoid_scope =
       0;  // whose ellipsoids: 0 automatic (ui/overlays/ellipsoid_scope.h), 1 the selection and its neighbours, 2 all

@@ -133,6 +133,12 @@ void editing_section(ViewOptions& o, ViewPanelChanges&) {
     ImGui::SetTooltip(
         "a grab, scale or rotation maps the Gaussians with the positions (else it moves the positions "
         "only, each Gaussian kept as it was)");
+  ImGui::SetNextItemWidth(90.0f);
+  ImGui::Combo("transform orientation", &o.transform_orientation, "Global\0Normal\0");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "the axes X, Y, Z take first in G / S / R (pressed again: the other; a third time: free); Normal follows "
+        "the selection's surface");
   ImGui::Checkbox("snap", &o.snap.enabled);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("G / S / R snap (Shift+Tab); Ctrl held while transforming inverts it");
   ImGui::SameLine();

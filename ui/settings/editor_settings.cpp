@@ -44,6 +44,7 @@ void visit_settings(ViewOptions& view, ReachOptions& reach, Visit visit) {
   visit("common_frame", view.common_frame);
   visit("pivot", view.pivot);
   visit("transform_gaussians", view.transform_gaussians);
+  visit("transform_orientation", view.transform_orientation);
   visit("snap", view.snap.enabled);
   visit("snap_increment", view.snap.distance_step);
   visit("ellipsoid_scope", view.ellipsoid_scope);
@@ -104,6 +105,7 @@ std::string load_settings(const std::string& folder, ViewOptions& view, ReachOpt
   view.draw.pixels = view.adaptive ? view.adaptive_pixels : 0.0f;
   reach.mirror_axis = std::clamp(reach.mirror_axis, 0, 2);
   view.pivot = std::clamp(view.pivot, 0, 1);
+  view.transform_orientation = std::clamp(view.transform_orientation, 0, 1);
   view.ellipsoid_scope = std::clamp(view.ellipsoid_scope, 0, 2);
   for (auto& [file, axis] : view.up_axes) axis = std::clamp(axis, 0, 2);
   for (auto& [file, mirror] : view.mirror_modifiers) mirror.axis = std::clamp(mirror.axis, 0, 2);

@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
+#include "core/modelling/extrude.h"
 #include "core/modelling/inset.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/support/error.h"
@@ -11,6 +13,26 @@
 #include "ui/editing/selection.h"
 
 namespace gps {
+
+namespace {
+
+// The inset with its inner faces (its selection) moved `depth` along the region's area-weighted
+// normal (Newell's sums), as Blender's Inset Faces' depth.
+Modelled inset_with_depth(const CovarianceMesh& mesh, const std::vector<int>& faces, double thickness, double depth) {
+  Modelled inset = inset_faces(mesh, faces, thickness);
+  if (depth == 0.0) return inset;
+  if (!std::isfinite(depth)) throw Error("inset depth must be finite");
+  MeshArrays arrays = arrays_of(inset.mesh);
+  Vec3 normal = Vec3::Zero();
+  for (const int f : faces) normal += newell_normal(arrays, f);
+  if (!(normal.norm() > 0)) throw Error("inset depth refused: the faces have no normal");
+  normal.normalize();
+  for (const int v : inset.selection) arrays.means[size_t(v)] += depth * normal;
+  inset.mesh = build_mesh(arrays);
+  return inset;
+}
+
+}  // namespace
 
 std::unique_ptr<ModalTool> InsetTool::start(ToolContext& ctx) {
   const CovarianceMesh& mesh = ctx.document.mesh();
@@ -41,6 +63,7 @@ void InsetTool::update(double thickness, ToolContext& ctx) {
       return;
     }
     summary_ = inset.summary;
+    thickness_ = thickness;
     char text[128];
     std::snprintf(text, sizeof text, "inset: thickness %.4f%s (click or Enter confirms, Esc cancels)", thickness,
                   typed_.shown().c_str());
@@ -67,6 +90,16 @@ void InsetTool::end(bool keep, ToolContext& ctx) {
   } else if (keep) {
     ctx.document.commit_edit_into_last_operation(ctx.selection.vertices());
     ctx.note("inset: " + summary_, false);
+    if (ctx.adjustable) {
+      const std::vector<int> faces = faces_;
+      constexpr double kHuge = std::numeric_limits<double>::max();
+      ctx.adjustable({"inset",
+                      {{"thickness", thickness_, 0.0, kHuge}, {"depth", 0.0, -kHuge, kHuge}},
+                      base_,
+                      [faces](const CovarianceMesh& before, const std::vector<double>& v) {
+                        return inset_with_depth(before, faces, v[0], v[1]);
+                      }});
+    }
   } else {
     ctx.document.cancel_edit();
     ctx.document.discard_last_operation();

@@ -2,7 +2,8 @@
 // The inset (I) as a modal tool: the selected faces inset (core/modelling/inset.h) by a thickness
 // followed from the mouse (how much nearer the faces' centre it is than where it started) or typed;
 // the first thickness installs the inset, later ones change its Gaussians in place, all recomputed
-// from the mesh before it; one undo step when confirmed, Esc restores the mesh before.
+// from the mesh before it; one undo step when confirmed, Esc restores the mesh before. Once confirmed,
+// F9 adjusts its thickness and depth (the inner faces raised along the region's normal, as Blender's).
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@ private:
   glm::vec2 start_cursor_{0.0f};
   TypedNumber typed_;
   bool applied_ = false;
+  double thickness_ = 0.0;  // the inset shown
   std::string summary_;
 };
 

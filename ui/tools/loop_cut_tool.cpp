@@ -15,6 +15,8 @@ namespace gps {
 namespace {
 
 constexpr float kEdgePickPixels = 40.0f;  // how near the cursor an edge must be for a loop cut
+constexpr int kMaxLoopCuts = 64;          // what the wheel reaches
+constexpr double kMaxLoopSlide = 0.95;    // short of the ring's edges' ends
 
 // Whether face f of `mesh` faces the camera (Newell's normal of its means against the view).
 bool faces_the_camera(const CovarianceMesh& mesh, const Viewport& view, OpenMesh::FaceHandle f) {
@@ -94,10 +96,12 @@ void LoopCutTool::slide(glm::vec2 cursor, ToolContext& ctx) {
   if (!pa || !pb) return;
   const glm::vec2 d = glm::vec2(*pb) - glm::vec2(*pa);
   if (glm::dot(d, d) < 1.0f) return;
-  const double slide = std::clamp(2.0 * double(glm::dot(cursor - start_cursor_, d) / glm::dot(d, d)), -0.95, 0.95);
+  const double slide = std::clamp(2.0 * double(glm::dot(cursor - start_cursor_, d) / glm::dot(d, d)), -kMaxLoopSlide,
+                                  kMaxLoopSlide);
   try {
     const Modelled slid = loop_cut(*base_, a, b, cuts_, slide);
     if (!ctx.document.set_gaussians(slid.mesh)) return;
+    slide_ = slide;
     char text[96];
     std::snprintf(text, sizeof text, "loop cut: slide %.3f (click or Enter confirms, Esc keeps it in the middle)",
                   slide);
@@ -111,11 +115,23 @@ void LoopCutTool::end(bool keep, ToolContext& ctx) {
     ctx.report("loop cut cancelled", false);
     return;
   }
-  if (keep)
+  if (keep) {
     ctx.document.commit_edit_into_last_operation(ctx.selection.vertices());
-  else
+  } else {
     ctx.document.cancel_edit();
+    slide_ = 0.0;
+  }
   ctx.note("loop cut: " + summary_, false);
+  if (ctx.adjustable) {
+    const auto [a, b] = ring_.edges.front();
+    ctx.adjustable({"loop cut",
+                    {{"number of cuts", double(cuts_), 1.0, double(kMaxLoopCuts), true},
+                     {"slide", slide_, -kMaxLoopSlide, kMaxLoopSlide}},
+                    base_,
+                    [a, b](const CovarianceMesh& before, const std::vector<double>& v) {
+                      return loop_cut(before, a, b, int(v[0]), v[1]);
+                    }});
+  }
 }
 
 ToolResult LoopCutTool::handle(const InputEvent& e, ToolContext& ctx) {
@@ -135,7 +151,7 @@ ToolResult LoopCutTool::handle(const InputEvent& e, ToolContext& ctx) {
       hover(e.position, ctx);
   } else if (e.type == InputEvent::Type::scroll) {
     if (sliding_) return ToolResult::passed_on;
-    cuts_ = std::clamp(cuts_ + (e.steps > 0 ? 1 : -1), 1, 64);
+    cuts_ = std::clamp(cuts_ + (e.steps > 0 ? 1 : -1), 1, kMaxLoopCuts);
     status_ = "loop cut: " + std::to_string(cuts_) + " cuts (wheel), click to cut, Esc cancels";
   }
   return ToolResult::consumed;

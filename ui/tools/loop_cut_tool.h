@@ -2,6 +2,7 @@
 // The loop cut (Ctrl+R) as a modal tool: the edge ring under the cursor previewed with its cuts (the
 // wheel sets how many), a click cuts (core/modelling/loop_cut.h), then the new loops slide with the
 // mouse until a click or Enter; the cut and its slide are one undo step, Esc keeps the cut in the middle.
+// Once ended, F9 adjusts the number of cuts and the slide.
 #include <array>
 #include <memory>
 #include <optional>
@@ -31,6 +32,7 @@ private:
 
   EdgeRing ring_;  // under the cursor (empty: none)
   int cuts_ = 1;
+  double slide_ = 0.0;  // the slide shown
   bool sliding_ = false;
   std::shared_ptr<const CovarianceMesh> base_;  // the mesh before the cut
   std::string summary_;                         // the cut's

@@ -17,6 +17,7 @@
 #include "ui/editing/adjustable_operation.h"
 #include "ui/editing/edit_reach.h"
 #include "ui/editing/snap_options.h"
+#include "ui/editing/transform_orientation.h"
 #include "ui/input/input_events.h"
 #include "view/projection.h"
 
@@ -48,6 +49,7 @@ struct ToolContext {
   bool shift = false, ctrl = false;
   bool transform_gaussians = true;  // G / S / R carry the Gaussians (else the positions only)
   SnapOptions snap;
+  TransformOrientation orientation = TransformOrientation::global;  // what an axis key takes first in G / S / R
   Vec3 cursor_point = Vec3::Zero();  // the 3D cursor
   /// The limit surface's point under a window pixel in the last frame drawn; nullopt on the background.
   std::function<std::optional<Vec3>(glm::vec2 pixel)> surface_at;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/modelling/affine_transform.h"
 #include "core/modelling/duplicate.h"
@@ -32,6 +33,7 @@ TransformTool::TransformTool(TransformKind kind, TransformPivot pivot, ToolConte
   ctx.document.begin_edit();
   transform_.emplace(kind, ctx.document.mesh(), ctx.selection.vertices(), ctx.selection.active(), pivot, ctx.viewport,
                      ctx.cursor, ctx.cursor_point);
+  transform_->set_orientations(ctx.orientation, normal_frame(ctx.document.mesh(), ctx.selection.vertices()));
   reach_ = edit_reach(start_means(ctx.document), transform_->vertices(), ctx.reach, ctx.hidden_vertices);
   update(ctx);
 }
@@ -41,6 +43,7 @@ TransformTool::TransformTool(ToolContext& ctx, const Vec3& normal, std::string o
   ctx.document.begin_edit();
   transform_.emplace(TransformKind::grab, ctx.document.mesh(), ctx.selection.vertices(), ctx.selection.active(),
                      TransformPivot::median, ctx.viewport, ctx.cursor);
+  transform_->set_orientations(ctx.orientation, normal_frame(ctx.document.mesh(), ctx.selection.vertices()));
   if (normal != Vec3::Zero()) transform_->constrain_direction(normal, "the normal");
   // The move is of the new vertices only (their copies lie under them).
   for (size_t i = 0; i < transform_->vertices().size(); ++i)
@@ -48,14 +51,14 @@ TransformTool::TransformTool(ToolContext& ctx, const Vec3& normal, std::string o
   update(ctx);
 }
 
-std::unique_ptr<ModalTool> TransformTool::move_after(ToolContext& ctx, const std::string& name,
-                                                     const std::function<Modelled(const CovarianceMesh&)>& run,
+std::unique_ptr<ModalTool> TransformTool::move_after(ToolContext& ctx, const std::string& name, MadeWithOffset make,
                                                      bool along_normal) {
+  auto before = std::make_shared<const CovarianceMesh>(ctx.document.mesh());
   std::string summary;
   const bool done = ctx.operate(
       name,
       [&](const CovarianceMesh& m) {
-        Modelled r = run(m);
+        Modelled r = make(m, Vec3::Zero());
         summary = r.summary;
         return r;
       },
@@ -68,13 +71,18 @@ std::unique_ptr<ModalTool> TransformTool::move_after(ToolContext& ctx, const std
     for (const int f : faces_within(ctx.document.mesh(), ctx.selection.vertices())) normal += newell_normal(arrays, f);
     if (normal.norm() > 0) normal.normalize();
   }
-  return std::unique_ptr<ModalTool>(new TransformTool(ctx, normal, name, summary));
+  std::unique_ptr<TransformTool> tool(new TransformTool(ctx, normal, name, summary));
+  tool->normal_ = normal;
+  tool->before_ = std::move(before);
+  tool->make_ = std::move(make);
+  return tool;
 }
 
 std::unique_ptr<ModalTool> TransformTool::extrude(ToolContext& ctx) {
   const std::vector<int> selected = ctx.selection.vertices();
   return move_after(
-      ctx, "extrude", [&](const CovarianceMesh& m) { return extrude_vertices(m, selected, Vec3::Zero()); }, true);
+      ctx, "extrude",
+      [selected](const CovarianceMesh& m, const Vec3& offset) { return extrude_vertices(m, selected, offset); }, true);
 }
 
 std::unique_ptr<ModalTool> TransformTool::duplicate(ToolContext& ctx) {
@@ -84,7 +92,32 @@ std::unique_ptr<ModalTool> TransformTool::duplicate(ToolContext& ctx) {
     return nullptr;
   }
   return move_after(
-      ctx, "duplicate", [&](const CovarianceMesh& m) { return duplicate_faces(m, faces, Vec3::Zero()); }, false);
+      ctx, "duplicate",
+      [faces](const CovarianceMesh& m, const Vec3& offset) { return duplicate_faces(m, faces, offset); }, false);
+}
+
+void TransformTool::make_adjustable(const Vec3& moved, ToolContext& ctx) const {
+  if (!ctx.adjustable || !make_) return;
+  constexpr double kHuge = std::numeric_limits<double>::max();
+  const double along = moved.dot(normal_);
+  const MadeWithOffset make = make_;
+  if (normal_ != Vec3::Zero() && (moved - along * normal_).norm() <= 1e-12 * std::max(1.0, moved.norm())) {
+    const Vec3 normal = normal_;
+    ctx.adjustable({operation_,
+                    {{"offset along the normal", along, -kHuge, kHuge}},
+                    before_,
+                    [make, normal](const CovarianceMesh& before, const std::vector<double>& v) {
+                      return make(before, v[0] * normal);
+                    }});
+    return;
+  }
+  ctx.adjustable({operation_,
+                  {{"move x", moved.x(), -kHuge, kHuge}, {"move y", moved.y(), -kHuge, kHuge},
+                   {"move z", moved.z(), -kHuge, kHuge}},
+                  before_,
+                  [make](const CovarianceMesh& before, const std::vector<double>& v) {
+                    return make(before, Vec3(v[0], v[1], v[2]));
+                  }});
 }
 
 void TransformTool::follow(glm::vec2 cursor, ToolContext& ctx) {
@@ -166,10 +199,12 @@ void TransformTool::end(bool keep, ToolContext& ctx) {
     ctx.document.cancel_edit();
     ctx.report(folds_ ? "move cancelled (the " + operation_ + " stays; Ctrl+Z removes it)" : "transform cancelled",
                false);
+    if (folds_) make_adjustable(Vec3::Zero(), ctx);
     return;
   }
   if (folds_) {
     ctx.document.commit_edit_into_last_operation(ctx.selection.vertices());
+    make_adjustable(transform_->map(0).translation, ctx);
     ctx.show_status(operation_ + ": " + operation_summary_, false);  // shown again, not printed again
     return;
   }

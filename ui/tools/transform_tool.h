@@ -35,13 +35,17 @@ public:
   void draw_overlay(ImDrawList& draw, const ToolContext& ctx) const override;
 
 private:
+  // make(mesh, offset): the operation ("extrude", "duplicate") with its result moved by `offset`.
+  using MadeWithOffset = std::function<Modelled(const CovarianceMesh& mesh, const Vec3& offset)>;
   // The move after `operation` ("extrude", "duplicate"), along `normal` (free where zero).
   TransformTool(ToolContext& ctx, const Vec3& normal, std::string operation, std::string summary);
-  // run() as one undo step named `name`, then the move of the selection it leaves (along the normal
-  // of the faces within it where `along_normal`) folded into that step; nullptr where refused.
-  static std::unique_ptr<ModalTool> move_after(ToolContext& ctx, const std::string& name,
-                                               const std::function<Modelled(const CovarianceMesh&)>& run,
+  // make() unmoved as one undo step named `name`, then the move of the selection it leaves (along
+  // the normal of the faces within it where `along_normal`) folded into that step, adjustable by F9
+  // once ended; nullptr where refused.
+  static std::unique_ptr<ModalTool> move_after(ToolContext& ctx, const std::string& name, MadeWithOffset make,
                                                bool along_normal);
+  // After the move: the operation and its move adjustable by F9 (the offset along the normal, or the move).
+  void make_adjustable(const Vec3& moved, ToolContext& ctx) const;
   void update(ToolContext& ctx);
   void follow(glm::vec2 cursor, ToolContext& ctx);  // the mouse's amount, snapped where snapping is on
   void end(bool keep, ToolContext& ctx);
@@ -51,6 +55,9 @@ private:
   TypedNumber typed_;
   bool folds_ = false;  // the move after an extrusion or a duplication: confirmed into its undo step
   std::string operation_, operation_summary_;
+  Vec3 normal_ = Vec3::Zero();                    // the move's direction after an extrusion (zero: free)
+  std::shared_ptr<const CovarianceMesh> before_;  // the mesh before the operation the move follows
+  MadeWithOffset make_;                           // that operation, for F9
   std::optional<SnapPoint> snapped_;  // the element a grab is snapped to
 };
 
