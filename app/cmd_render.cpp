@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "app/gl_commands.h"
 #include "app/plan_arguments.h"
+#include "app/naming_input.h"
 #include "app/repair_arguments.h"
 #include "core/support/error.h"
 #include "core/io/mesh_io.h"
@@ -75,11 +76,8 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   }
   const auto bg = parse_floats(a.background, "--background", 3, 3);
   const Image matcap = load_matcap(a.matcap);
-  try {
-    renderer.set_mesh(mesh, a.plans.options());
-  } catch (const Error& e) {  // e.g. the storage limit: name the mesh it is about
-    throw Error(a.input + ": " + e.what(), e.kind());
-  }
+  // A refusal (a face or valence the plans do not take, the storage limit) names the mesh it is about.
+  naming_mesh_input(a.input, a.repair.import_options().repair, [&] { renderer.set_mesh(mesh, a.plans.options()); });
   renderer.set_matcap(matcap);
   DrawOptions o;
   set_render_tessellation(o, a.level, a.pixels, width, height);

@@ -33,7 +33,8 @@ void add_tessellate_command(CLI::App& app) {
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args] {
     const CovarianceMesh m = read_mesh_repairing(args->input, args->repair, {}, args->quiet);
-    const PlannedSurface surface = naming_input(args->input, [&] { return PlannedSurface(m, args->plans.options()); });
+    const PlannedSurface surface = naming_mesh_input(args->input, args->repair.import_options().repair,
+                                                     [&] { return PlannedSurface(m, args->plans.options()); });
     TerminalProgress bar("tessellating", args->quiet);
     const TriangleMesh t = naming_input(
         args->input, [&] { return tessellate(surface.tables().plans, surface.points(), args->level, bar.report()); });

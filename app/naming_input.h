@@ -3,6 +3,8 @@
 #include <string>
 #include <utility>
 
+#include "core/io/mesh_io.h"
+#include "core/mesh/element_names.h"
 #include "core/support/quoted_text.h"
 #include "core/support/error.h"
 
@@ -14,6 +16,19 @@ template <class Work>
 auto naming_input(const std::string& input, Work&& work) -> decltype(work()) {
   try {
     return std::forward<Work>(work)();
+  } catch (const Error& e) {
+    throw Error(escaped(input) + ": " + e.what(), e.kind());
+  }
+}
+
+/// The same for work on the mesh read from the file `input`: an error about one of its elements
+/// names it as the file numbers it, or where the mesh was `repaired` (renumbered) by index from 0.
+template <class Work>
+auto naming_mesh_input(const std::string& input, bool repaired, Work&& work) -> decltype(work()) {
+  try {
+    return std::forward<Work>(work)();
+  } catch (const ElementError& e) {
+    throw Error(escaped(input) + ": " + e.named(repaired ? ElementNames{} : file_element_names(input)), e.kind());
   } catch (const Error& e) {
     throw Error(escaped(input) + ": " + e.what(), e.kind());
   }

@@ -72,16 +72,10 @@ ElementNumbering element_numbering_for(const std::string& path, const RepairRepo
   return numbering;
 }
 
-namespace {
-
-// How messages name the elements of the file at `path` as read: an OBJ file's from 1 with their lines
-// (the file read again only when a message names one), the others' by index from 0.
-ElementNames element_names_for(const std::string& path) {
+ElementNames file_element_names(const std::string& path) {
   if (extension_of(path) != ".obj") return {};
   return obj_element_names([path] { return read_text_file(path, check_text_head); });
 }
-
-}  // namespace
 
 CovarianceMesh read_mesh(const std::string& path, const ImportOptions& options, RepairReport* report,
                          std::vector<std::string>* notes) {
@@ -98,7 +92,7 @@ CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const
   if (soup.faces.n_faces() == 0) throw no_faces("");
   RepairReport done;
   // A repaired soup's elements are no longer the file's: its messages number them from 0.
-  const ElementNames names = options.repair ? ElementNames{} : element_names_for(path);
+  const ElementNames names = options.repair ? ElementNames{} : file_element_names(path);
   if (options.repair) {
     done = repair_polygon_soup(soup, repair_options_for(options));
     if (report) *report = done;

@@ -52,6 +52,11 @@ RepairOptions repair_options_for(const ImportOptions& options = {});
 /// elements `report`'s examples name: the file is read again for them), from 0 elsewhere.
 ElementNumbering element_numbering_for(const std::string& path, const RepairReport& report);
 
+/// How messages name the elements of the mesh file at `path` as read_mesh builds it without a
+/// repair: an OBJ file's from 1 with their lines (the file read again only when a message names
+/// one), the others' by index from 0.
+ElementNames file_element_names(const std::string& path);
+
 /// Writes .ply (covariances and sharpness kept; ASCII or binary little endian), .obj (positions,
 /// faces, and creases and corners as OpenSubdiv's tags) or .gltf/.glb (triangles, vertex normals and
 /// covariances in float; core/io/gltf_io.h),

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <map>
 
+#include "core/mesh/element_names.h"
 #include "core/support/error.h"
 #include "core/extraordinary/loop_extraordinary_tables.h"
 #include "core/plans/loop_crease_plan_builder.h"
@@ -26,13 +27,13 @@ public:
   void check() const {
     for (int f = 0; f < t_.n_faces(); ++f)
       if (t_.face_size(f) != 3)
-        throw Error("Loop patches need a triangle mesh, but face " + std::to_string(f) + " has " +
-                    std::to_string(t_.face_size(f)) + " vertices");
+        throw ElementError(ElementError::Element::face, f, "Loop patches need a triangle mesh, but ",
+                           " has " + std::to_string(t_.face_size(f)) + " vertices");
     for (int v = 0; v < t_.n_vertices; ++v)
       if (c_.n_vertex_faces(v) > kMaxLoopValence)
-        throw Error("vertex " + std::to_string(v) + " has " + std::to_string(c_.n_vertex_faces(v)) +
-                    " faces; Loop patches take at most " + std::to_string(kMaxLoopValence) +
-                    " (use --scheme catmull-clark)");
+        throw ElementError(ElementError::Element::vertex, v, "",
+                           " has " + std::to_string(c_.n_vertex_faces(v)) + " faces; Loop patches take at most " +
+                               std::to_string(kMaxLoopValence) + " (use --scheme catmull-clark)");
   }
 
   SurfaceTables build() {

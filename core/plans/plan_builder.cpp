@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/mesh/element_names.h"
 #include "core/support/error.h"
 #include "core/patches/local_mesh.h"
 #include "core/plans/plan_descent.h"
@@ -211,14 +212,15 @@ void check_plan_valences(const PolygonTopology& t) {
   std::vector<int> faces_at(size_t(t.n_vertices), 0);
   for (int f = 0; f < t.n_faces(); ++f) {
     if (t.face_size(f) > kMaxPlanValence)
-      throw Error("face " + std::to_string(f) + " has " + std::to_string(t.face_size(f)) +
-                  " sides; patch plans handle up to " + std::to_string(kMaxPlanValence) +
-                  " (split the face, or use gpsurf subdivide)");
+      throw ElementError(ElementError::Element::face, f, "",
+                         " has " + std::to_string(t.face_size(f)) + " sides; patch plans handle up to " +
+                             std::to_string(kMaxPlanValence) + " (split the face, or use gpsurf subdivide)");
     for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k)
       if (++faces_at[size_t(t.verts[size_t(k)])] > kMaxPlanValence)
-        throw Error("vertex " + std::to_string(t.verts[size_t(k)]) + " has more than " +
-                    std::to_string(kMaxPlanValence) + " faces; patch plans handle valences up to " +
-                    std::to_string(kMaxPlanValence) + " (their stencils grow with its square; use gpsurf subdivide)");
+        throw ElementError(ElementError::Element::vertex, t.verts[size_t(k)], "",
+                           " has more than " + std::to_string(kMaxPlanValence) +
+                               " faces; patch plans handle valences up to " + std::to_string(kMaxPlanValence) +
+                               " (their stencils grow with its square; use gpsurf subdivide)");
   }
 }
 }  // namespace
@@ -230,9 +232,8 @@ void check_quad_plans(const PolygonTopology& topology, int max_depth, Extraordin
   check_plan_valences(topology);
 }
 
-RangePlans build_quad_range(const LocalMesh& base, int first, int last, int max_depth,
-                            ExtraordinaryNodes extraordinary, bool bspline_leaves,
-                            QuadExtraordinaryTableCache& cache) {
+RangePlans build_quad_range(const LocalMesh& base, int first, int last, int max_depth, ExtraordinaryNodes extraordinary,
+                            bool bspline_leaves, QuadExtraordinaryTableCache& cache) {
   return Builder(base, max_depth, extraordinary, bspline_leaves, cache).build(first, last);
 }
 

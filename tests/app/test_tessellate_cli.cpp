@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -50,6 +52,28 @@ TEST(TessellateCli, UsageAndRuntimeErrors) {
   const auto missing = run_command(gpsurf("tessellate " + dir.file("none.ply") + " -o " + dir.file("x.ply")));
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
   EXPECT_NE(missing.output.find("none.ply"), std::string::npos) << missing.output;
+}
+
+// A face the plans refuse is named as its file numbers it: an OBJ's from 1 with its line, a PLY's
+// from 0; after --repair (which renumbers) from 0.
+TEST(TessellateCli, AFaceThePlansRefuseIsNamedAsTheFileNumbersIt) {
+  test::TempDir dir;
+  std::string obj = "# one face of 300 sides\n";
+  for (int k = 0; k < 300; ++k)
+    obj += "v " + std::to_string(std::cos(k * 2 * M_PI / 300)) + " " + std::to_string(std::sin(k * 2 * M_PI / 300)) +
+           " 0\n";
+  obj += "f";
+  for (int k = 1; k <= 300; ++k) obj += " " + std::to_string(k);
+  const std::string path = dir.write("wide.obj", obj + "\n");
+  const auto r = run_command(gpsurf("tessellate " + path + " -o " + dir.file("t.ply")));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("wide.obj: face 1 (line 302) has 300 sides"), std::string::npos) << r.output;
+  ASSERT_EQ(run_command(gpsurf("edit " + path + " -o " + dir.file("wide.ply") + " --ops '[]'")).exit_code, 0);
+  const auto ply = run_command(gpsurf("tessellate " + dir.file("wide.ply") + " -o " + dir.file("t.ply")));
+  EXPECT_NE(ply.output.find("wide.ply: face 0 has 300 sides"), std::string::npos) << ply.output;
+  const auto repaired = run_command(gpsurf("tessellate " + path + " --repair -o " + dir.file("t.ply")));
+  EXPECT_NE(repaired.output.find("wide.obj: face 0 has 300 sides"), std::string::npos) << repaired.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("t.ply")));
 }
 
 }  // namespace

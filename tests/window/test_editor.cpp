@@ -218,7 +218,7 @@ TEST(EditorCommandLine, BadInputIsOneLineAndNonZero) {
   EXPECT_NE(r.output.find("bad.ply"), std::string::npos);
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
   // A mesh that reads but that the plans refuse (a face of more sides than they handle): the message
-  // names the file too.
+  // names the file too, and the face as the file numbers it.
   std::string wide = "";
   for (int k = 0; k < 300; ++k)
     wide += "v " + std::to_string(std::cos(k * 2 * M_PI / 300)) + " " + std::to_string(std::sin(k * 2 * M_PI / 300)) +
@@ -228,7 +228,7 @@ TEST(EditorCommandLine, BadInputIsOneLineAndNonZero) {
   const auto sides =
       test::run_command(editor(dir.write("wide.obj", wide + "\n") + " --screenshot " + dir.file("x.png")));
   EXPECT_EQ(sides.exit_code, 1) << sides.output;
-  EXPECT_NE(sides.output.find("wide.obj: face 0 has 300 sides"), std::string::npos) << sides.output;
+  EXPECT_NE(sides.output.find("wide.obj: face 1 (line 301) has 300 sides"), std::string::npos) << sides.output;
   const std::string events = dir.write("e.json", R"({"events": [{"type": "hop"}]})");
   const auto e = test::run_command(editor("--play " + events));
   EXPECT_EQ(e.exit_code, 2) << e.output;

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <optional>
 
+#include "core/io/mesh_io.h"
+#include "core/mesh/element_names.h"
 #include "core/support/error.h"
 #include "core/modelling/samples.h"
 #include "render/image/matcap_file.h"
@@ -123,6 +125,11 @@ void EditorApp::mesh_replaced() {
   mirror_.settings = mirror != view_.mirror_modifiers.end() ? mirror->second : MirrorSettings{};
   try {  // first: it throws before anything changes
     show_mesh(document_.mesh(), view.plans());
+  } catch (const ElementError& e) {  // the plans name an element as the file read unchanged numbers it
+    const bool as_read = !document_.dirty() && !document_.source_path().empty();
+    throw Error(document_.display_name() + ": " +
+                    e.named(as_read ? file_element_names(document_.source_path()) : ElementNames{}),
+                e.kind());
   } catch (const Error& e) {  // the plans' and the GPU's refusals name no file
     throw Error(document_.display_name() + ": " + e.what(), e.kind());
   }
