@@ -158,8 +158,8 @@ double finite_number(double value, const char* what) {
 
 double number_in(double value, double lo, double hi, const char* what) {
   if (!(value >= lo && value <= hi))
-    throw py::value_error(std::string(what) + ": expected a number from " + shown_number(lo) + " to " + shown_number(hi) +
-                          ", got " + shown_number(value));
+    throw py::value_error(std::string(what) + ": expected a number from " + shown_number(lo) + " to " +
+                          shown_number(hi) + ", got " + shown_number(value));
   return value;
 }
 

@@ -39,7 +39,7 @@ struct Measured {
 struct Measurement {
   std::vector<Vec3> points;
   std::shared_ptr<const CovarianceMesh> points_mesh;  // the Mesh whose vertices are the points, if one
-  std::shared_ptr<const PlannedSurface> plans;  // empty for a Mesh
+  std::shared_ptr<const PlannedSurface> plans;        // empty for a Mesh
   std::shared_ptr<const CovarianceMesh> mesh;
   int level = 8;
   bool level_given = false, linear = false;
@@ -63,7 +63,8 @@ struct Measurement {
     const TriangleMesh surface = triangles();
     const SurfaceDistance measure(surface);
     // A Mesh's points have its faces' area-weighted normals; an array's have none.
-    const std::vector<Vec3> normals = angles && points_mesh ? face_triangles(*points_mesh).normals : std::vector<Vec3>();
+    const std::vector<Vec3> normals =
+        angles && points_mesh ? face_triangles(*points_mesh).normals : std::vector<Vec3>();
     Measured out;
     out.distances.reserve(points.size());
     const auto chunk_of = [](const std::vector<Vec3>& all, size_t first) {
@@ -183,20 +184,18 @@ void add_fitting_bindings(py::module_& m) {
       "covariance_smoothness, the weight of the smoothness term on their changes (0..1e6); covariance_prior, the "
       "weight of the prior that keeps each near its start (0..1e6, 0: none); min_sigma and max_sigma, the least "
       "and greatest standard deviation of each Gaussian over the mean length of its vertex's edges (min_sigma "
-      "0..1e6 below max_sigma, a finite number above 0). tolerance: stop when an iteration lowers the rms distance "
-      "by less than this fraction of it (0: never); time: stop after the iteration that passes this many seconds "
-      "(None: never). progress: "
-      "called with the fraction of iterations done; returning False cancels (gpsurf.Cancelled). Returns the fitted "
-      "Mesh; report=True: (Mesh, dict) with stop ('iterations', 'converged', 'time' or 'no_descent'), reason (in "
-      "words), iterations (the number run) and relative_rms (per iteration, the first before any step, divided by "
-      "the points' bounding-box diagonal).");
+      "0..1e6, max_sigma finite and above it). tolerance: stop when an iteration lowers the rms distance by less "
+      "than this fraction of it (0: never); time: stop after the iteration that passes this many seconds (None: "
+      "never). progress: called with the fraction of iterations done; returning False cancels (gpsurf.Cancelled). "
+      "Returns the fitted Mesh; report=True: (Mesh, dict) with stop ('iterations', 'converged', 'time' or "
+      "'no_descent'), reason (in words), iterations (the number run) and relative_rms (per iteration, the first "
+      "before any step, divided by the points' bounding-box diagonal).");
   m.def(
       "distance",
       [](const py::object& points, const py::object& to, std::optional<int> level, bool linear) {
         const Measurement m = measurement(points, to, level, linear, "points");
-        return read_only(double_array(
-            call_in_background([m](CallControl& control) { return m.measure(control, false).distances; }, py::none(),
-                               false)));
+        return read_only(double_array(call_in_background(
+            [m](CallControl& control) { return m.measure(control, false).distances; }, py::none(), false)));
       },
       py::arg("points"), py::arg("to"), py::arg("level") = py::none(), py::arg("linear") = false,
       "The distance from each point (an (n, 3) array, or a Mesh's vertices) to the limit surface of `to` (a Mesh, "
