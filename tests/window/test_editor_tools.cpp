@@ -6,6 +6,7 @@
 // on the file as opened. Screenshots kept in build/test-artefacts/EditorTools/.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -19,7 +20,9 @@
 #include "core/modelling/bisect.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/duplicate.h"
+#include "core/modelling/extrude.h"
 #include "core/modelling/grid_fill.h"
+#include "core/modelling/inset.h"
 #include "core/modelling/knife.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/mesh_queries.h"
@@ -32,6 +35,7 @@
 #include "ui/editing/axis_handles.h"
 #include "ui/editing/covariance_presets.h"
 #include "ui/panels/view_options.h"
+#include "ui/tools/loop_cut_tool.h"
 
 namespace gps {
 namespace {
@@ -746,6 +750,93 @@ TEST_F(EditorTools, ModellingKeysWaitForTheGizmoDragToEnd) {
   EXPECT_EQ(saved.n_vertices(), 8u);
   EXPECT_EQ(saved.n_faces(), 6u);
   EXPECT_NE(saved.covariance(6), original_.covariance(6));  // the drag scaled it
+}
+
+// The cube's top face (2, 3, 7, 6: y = +1) selected in face mode, G Z Z and 0.5 typed: the second Z
+// takes the Normal orientation's z, the face's normal +y, so the face rises by 0.5 (not along the
+// world's z), and the status names it.
+TEST_F(EditorTools, OrientationNormalAxisMovesAFaceAlongItsNormal) {
+  const std::vector<int> top = {2, 3, 6, 7};
+  Events grab;
+  grab.key("3").wait().click(pixel_at(top)).wait();
+  grab.key("g").wait().key("z").wait().key("z").wait().text("0.5").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(grab, "cube_face_along_normal.png");
+  ASSERT_EQ(saved.n_vertices(), original_.n_vertices());
+  for (size_t v = 0; v < saved.n_vertices(); ++v) {
+    const bool moved = std::find(top.begin(), top.end(), int(v)) != top.end();
+    const Vec3 expected = original_.mean(v) + (moved ? Vec3(0.0, 0.5, 0.0) : Vec3::Zero());
+    EXPECT_LT((saved.mean(v) - expected).norm(), 1e-9) << v << "\n" << output_;
+  }
+  EXPECT_NE(output_.find("along normal z"), std::string::npos) << output_;
+}
+
+// The F9 panel's rows (the panel sits at (10, 230)): an integer field, a real field, a second row.
+const glm::vec2 kAdjustIntegerField(50.0f, 267.0f), kAdjustFirstField(70.0f, 267.0f),
+    kAdjustSecondField(70.0f, 290.0f);
+
+// E on the cube's top face, 0.5 along its normal; F9 and an offset of 1 typed make the extrusion
+// again from the cube as it was (exactly core's extrusion moved by 1 along +y); Ctrl+Z restores the
+// file byte for byte, Ctrl+Shift+Z the adjusted extrusion byte for byte.
+TEST_F(EditorTools, AdjustLastExtrudeOffset) {
+  const std::vector<int> top = {2, 3, 6, 7};
+  Events extrude;
+  extrude.key("3").wait().click(pixel_at(top)).wait().key("e").wait().text("0.5").wait().key("enter").wait();
+  extrude.key("f9").wait(2).click(kAdjustFirstField).wait().text("1").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(extrude, "cube_extrude_adjusted.png");
+  EXPECT_TRUE(test::same_mesh(saved, extrude_vertices(original_, top, Vec3(0.0, 1.0, 0.0)).mesh)) << output_;
+  const std::string adjusted = read_text_file(dir_.file("saved.ply"));
+
+  Events undone = extrude;
+  undone.key("ctrl+z").wait(3);
+  play(undone);
+  EXPECT_TRUE(saved_is_original());
+  Events redone = undone;
+  redone.key("ctrl+shift+z").wait(3);
+  play(redone);
+  EXPECT_EQ(read_text_file(dir_.file("saved.ply")), adjusted);
+}
+
+// I on the top face, 0.2 typed; F9 and a thickness of 0.3, then a depth of 0.25: core's inset at 0.3
+// with its inner face raised 0.25 along +y; Ctrl+Z restores the file byte for byte.
+TEST_F(EditorTools, AdjustLastInsetThicknessAndDepth) {
+  Events inset;
+  inset.key("3").wait().click(pixel_at({2, 3, 6, 7})).wait().key("i").wait().text("0.2").wait().key("enter").wait();
+  inset.key("f9").wait(2).click(kAdjustFirstField).wait().text("0.3").wait().key("enter").wait();
+  inset.click(kAdjustSecondField).wait().text("0.25").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(inset, "cube_inset_adjusted.png");
+  const Modelled thinner = inset_faces(original_, {3}, 0.3);
+  MeshArrays expected = arrays_of(thinner.mesh);
+  for (const int v : thinner.selection) expected.means[size_t(v)] += Vec3(0.0, 0.25, 0.0);
+  const MeshArrays got = arrays_of(saved);
+  EXPECT_EQ(got.faces, expected.faces) << output_;
+  ASSERT_EQ(got.means.size(), expected.means.size());
+  for (size_t v = 0; v < got.means.size(); ++v) EXPECT_LT((got.means[v] - expected.means[v]).norm(), 1e-9) << v;
+  EXPECT_EQ(got.covariances, expected.covariances);
+
+  Events undone = inset;
+  undone.key("ctrl+z").wait(3);
+  play(undone);
+  EXPECT_TRUE(saved_is_original());
+}
+
+// Ctrl+R on the front vertical edge, click, click: one loop; F9 and 3 cuts, then a slide of 0.5:
+// core's loop cut of that ring with 3 cuts slid by 0.5; Ctrl+Z restores the file byte for byte.
+TEST_F(EditorTools, AdjustLastLoopCutCutsAndSlide) {
+  const glm::vec2 edge = pixel_at({5, 6});
+  const auto under = edge_under(original_, view_, edge);
+  ASSERT_TRUE(under);
+  const auto [a, b] = edge_ring(original_, (*under)[0], (*under)[1]).edges.front();
+  Events cut;
+  cut.key("ctrl+r").move(edge).wait().click(edge).wait().click(edge).wait();
+  cut.key("f9").wait(2).click(kAdjustIntegerField).wait().text("3").wait().key("enter").wait();
+  cut.click(kAdjustSecondField).wait().text("0.5").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(cut, "cube_loop_cut_adjusted.png");
+  EXPECT_TRUE(test::same_mesh(saved, loop_cut(original_, a, b, 3, 0.5).mesh)) << output_;
+
+  Events undone = cut;
+  undone.key("ctrl+z").wait(3);
+  play(undone);
+  EXPECT_TRUE(saved_is_original());
 }
 
 }  // namespace
