@@ -3,10 +3,11 @@
 // axis). The mouse sets the amount from where it was when the transform began; X, Y, Z constrain it
 // to an axis and Shift+X, Y, Z to the plane normal to one; typed
 // digits replace the mouse ("S 0.5", "G Z 1", "R 90" degrees). The axes are those of a transform
-// orientation (ui/editing/transform_orientation.h): the first press of a key takes the default one, the
-// second the other (Global ↔ Normal), the third removes the constraint, as Blender's. Each vertex is carried by an affine
-// map about the pivot — μ′ = Aμ + t, Σ′ = AΣAᵀ (core/modelling/affine_transform.h) — weighted for
-// proportional editing and mirrored for mirror editing.
+// orientation (ui/editing/transform_orientation.h): the first press of a key takes the default one,
+// the second the other (Global ↔ Normal), the third removes the constraint, as Blender's. Each vertex
+// is carried by an affine map about the pivot — μ′ = Aμ + t, Σ′ = AΣAᵀ
+// (core/modelling/affine_transform.h) — weighted for proportional editing and mirrored for mirror
+// editing.
 #include <limits>
 #include <optional>
 #include <string>

@@ -1,9 +1,9 @@
 // Adjust last operation (F9, as Blender's): a panel with the numbers of the last operation a tool
 // made (a bevel's width, segments and profile; a spin's angle and steps; a grid fill's span and
-// offset; an extrusion's or duplication's move; an inset's thickness and depth; a loop cut's number of
-// cuts and slide). A number changed and entered makes the operation again from the mesh before it and puts
-// the result in place of the old one, as the same single undo step; a refused value leaves the
-// result as it was.
+// offset; an extrusion's or duplication's move; an inset's thickness and depth; a loop cut's number
+// of cuts and slide). A number changed and entered makes the operation again from the mesh before it
+// and puts the result in place of the old one, as the same single undo step; a refused value leaves
+// the result as it was.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 

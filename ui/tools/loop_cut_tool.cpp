@@ -96,8 +96,8 @@ void LoopCutTool::slide(glm::vec2 cursor, ToolContext& ctx) {
   if (!pa || !pb) return;
   const glm::vec2 d = glm::vec2(*pb) - glm::vec2(*pa);
   if (glm::dot(d, d) < 1.0f) return;
-  const double slide = std::clamp(2.0 * double(glm::dot(cursor - start_cursor_, d) / glm::dot(d, d)), -kMaxLoopSlide,
-                                  kMaxLoopSlide);
+  const double slide =
+      std::clamp(2.0 * double(glm::dot(cursor - start_cursor_, d) / glm::dot(d, d)), -kMaxLoopSlide, kMaxLoopSlide);
   try {
     const Modelled slid = loop_cut(*base_, a, b, cuts_, slide);
     if (!ctx.document.set_gaussians(slid.mesh)) return;

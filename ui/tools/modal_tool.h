@@ -49,7 +49,8 @@ struct ToolContext {
   bool shift = false, ctrl = false;
   bool transform_gaussians = true;  // G / S / R carry the Gaussians (else the positions only)
   SnapOptions snap;
-  TransformOrientation orientation = TransformOrientation::global;  // what an axis key takes first in G / S / R
+  /// What an axis key takes first in G / S / R (ui/editing/transform_orientation.h).
+  TransformOrientation orientation = TransformOrientation::global;
   Vec3 cursor_point = Vec3::Zero();  // the 3D cursor
   /// The limit surface's point under a window pixel in the last frame drawn; nullopt on the background.
   std::function<std::optional<Vec3>(glm::vec2 pixel)> surface_at;

@@ -112,7 +112,8 @@ void TransformTool::make_adjustable(const Vec3& moved, ToolContext& ctx) const {
     return;
   }
   ctx.adjustable({operation_,
-                  {{"move x", moved.x(), -kHuge, kHuge}, {"move y", moved.y(), -kHuge, kHuge},
+                  {{"move x", moved.x(), -kHuge, kHuge},
+                   {"move y", moved.y(), -kHuge, kHuge},
                    {"move z", moved.z(), -kHuge, kHuge}},
                   before_,
                   [make](const CovarianceMesh& before, const std::vector<double>& v) {

@@ -58,7 +58,7 @@ private:
   Vec3 normal_ = Vec3::Zero();                    // the move's direction after an extrusion (zero: free)
   std::shared_ptr<const CovarianceMesh> before_;  // the mesh before the operation the move follows
   MadeWithOffset make_;                           // that operation, for F9
-  std::optional<SnapPoint> snapped_;  // the element a grab is snapped to
+  std::optional<SnapPoint> snapped_;              // the element a grab is snapped to
 };
 
 }  // namespace gps
