@@ -86,8 +86,8 @@ TEST(GridFill, TheCylindersCapHoleIsATwoByTwoGrid) {
   for (int v : open.loop) centre += before.means[size_t(v)] / 8.0;
   EXPECT_LT((after.means[24] - centre).norm(), 1e-12);
   // Every corner turns alike: the sides start at the loop's first vertex and have 2 edges each.
-  const Gaussian expected = blend_gaussians(
-      before, {{open.loop[1], 0.25}, {open.loop[3], 0.25}, {open.loop[5], 0.25}, {open.loop[7], 0.25}});
+  const Gaussian expected =
+      blend_gaussians(before, {{open.loop[1], 0.25}, {open.loop[3], 0.25}, {open.loop[5], 0.25}, {open.loop[7], 0.25}});
   EXPECT_TRUE(after.covariances[24].isApprox(expected.covariance, 1e-12));
   EXPECT_EQ(r.selection.size(), 9u);
 }
@@ -160,7 +160,9 @@ TEST(GridFill, TheEditorFillsTheSelectedLoop) {
   EXPECT_TRUE(test::same_mesh(grid_fill_selected(open.mesh, shuffled).mesh, grid_fill(open.mesh, open.loop).mesh));
   EXPECT_TRUE(
       test::same_mesh(grid_fill_selected(open.mesh, shuffled, 1, 2).mesh, grid_fill(open.mesh, open.loop, 1, 2).mesh));
-  EXPECT_EQ(error_of([&] { grid_fill_selected(open.mesh, {open.loop[0], open.loop[1], open.loop[2]}); }),
+  EXPECT_EQ(error_of([&] {
+              grid_fill_selected(open.mesh, {open.loop[0], open.loop[1], open.loop[2]});
+            }),
             "select one whole boundary loop (the 3 selected vertices are not one)");
 }
 
@@ -168,19 +170,33 @@ TEST(GridFill, RefusalsChangeNothing) {
   const Holed open = with_hole(make_sample("cylinder"), {16});
   const CovarianceMesh copy = open.mesh;
   const std::vector<int>& l = open.loop;
-  EXPECT_EQ(error_of([&] { grid_fill(open.mesh, {l[0], l[1], l[2]}); }),
+  EXPECT_EQ(error_of([&] {
+              grid_fill(open.mesh, {l[0], l[1], l[2]});
+            }),
             "a grid fill needs a loop of at least 4 vertices (3 given)");
-  EXPECT_EQ(error_of([&] { grid_fill(open.mesh, {l[0], l[1], l[2], l[3], l[4], l[5], l[6]}); }),
+  EXPECT_EQ(error_of([&] {
+              grid_fill(open.mesh, {l[0], l[1], l[2], l[3], l[4], l[5], l[6]});
+            }),
             "a grid fill needs an even number of vertices around the loop (7 given)");
-  EXPECT_EQ(error_of([&] { grid_fill(open.mesh, {l[0], l[1], l[2], l[1]}); }),
+  EXPECT_EQ(error_of([&] {
+              grid_fill(open.mesh, {l[0], l[1], l[2], l[1]});
+            }),
             "vertex " + std::to_string(l[1]) + " is listed twice");
-  EXPECT_EQ(error_of([&] { grid_fill(open.mesh, {l[0], l[1], l[2], 99}); }), "vertex 99 is not in the mesh (24 vertices)");
-  EXPECT_EQ(error_of([&] { grid_fill(open.mesh, {l[0], l[1], l[2], l[3]}); }),
+  EXPECT_EQ(error_of([&] {
+              grid_fill(open.mesh, {l[0], l[1], l[2], 99});
+            }),
+            "vertex 99 is not in the mesh (24 vertices)");
+  EXPECT_EQ(error_of([&] {
+              grid_fill(open.mesh, {l[0], l[1], l[2], l[3]});
+            }),
             "edge " + std::to_string(l[3]) + "–" + std::to_string(l[0]) +
                 " is not an edge of the mesh: a grid fill needs a boundary loop");
-  EXPECT_EQ(error_of([&] { grid_fill(open.mesh, l, 4); }), "span 4 leaves no room in a loop of 8 vertices (from 1 to 3)");
+  EXPECT_EQ(error_of([&] { grid_fill(open.mesh, l, 4); }),
+            "span 4 leaves no room in a loop of 8 vertices (from 1 to 3)");
   const CovarianceMesh cube = make_sample("cube");
-  EXPECT_EQ(error_of([&] { grid_fill(cube, {4, 5, 6, 7}); }),
+  EXPECT_EQ(error_of([&] {
+              grid_fill(cube, {4, 5, 6, 7});
+            }),
             "edge 4–5 has a face on both sides: a grid fill needs a boundary loop");
   EXPECT_TRUE(test::same_mesh(open.mesh, copy));
 }

@@ -107,7 +107,9 @@ TEST(SplitFaces, RefusalsChangeNothing) {
   const CovarianceMesh cube = make_sample("cube");
   EXPECT_EQ(error_of([&] { split_faces(cube, {}); }), "no faces are selected");
   EXPECT_EQ(error_of([&] { split_faces(cube, {1, 6}); }), "face 6 is not in the mesh (6 faces)");
-  EXPECT_EQ(error_of([&] { split_faces(cube, {0, 1, 2, 3, 4, 5}); }),
+  EXPECT_EQ(error_of([&] {
+              split_faces(cube, {0, 1, 2, 3, 4, 5});
+            }),
             "every face is selected: there is nothing to split them from");
   const CovarianceMesh parted = split_faces(cube, {1}).mesh;
   const CovarianceMesh copy = parted;
