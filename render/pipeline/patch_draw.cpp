@@ -104,10 +104,12 @@ void PatchDraw::draw_batches(PatchShape shape, const ShaderProgram& program, con
   const int end = n_patches < 0 ? n_total : std::min(n_total, first_patch + n_patches);
   // Mesa 22.3's llvmpipe drops whole patches from draws of more than 4096 patches or that generate
   // some 10^5 vertices, so draw in batches of at most 4096 patches and ~2^15 generated vertices at
-  // the largest level these patches get (adaptive levels: measured on the GPU first, with the draw's
-  // own uniforms).
-  const int level = o.pixels > 0.0f ? level_bound_.max_level(shape, program, first_patch, end - first_patch)
-                                    : std::clamp(int(std::ceil(o.level)), 1, 64);
+  // the largest level these patches get. Adaptive levels: measured on the GPU first, with the draw's
+  // own uniforms, where the patches are more than one batch; a smaller draw (a surface cache block)
+  // takes the worst case, 64, rather than wait for the measure.
+  const int level = o.pixels <= 0.0f           ? std::clamp(int(std::ceil(o.level)), 1, 64)
+                    : end - first_patch > 4096 ? level_bound_.max_level(shape, program, first_patch, end - first_patch)
+                                               : 64;
   const int batch = std::clamp(32768 / ((level + 1) * (level + 1)), 1, 4096);
   glBindVertexArray(empty_vao_);
   glPatchParameteri(GL_PATCH_VERTICES, 1);
