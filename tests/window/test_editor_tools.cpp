@@ -1,9 +1,10 @@
-// The modal tools of ui/tools/ that bevel and slide, in a real window under Xvfb as a designer uses
-// them: Ctrl+B on one edge of the cube (edge mode, a click beside the edge), a typed width or the
-// mouse, the wheel for segments, Enter; Ctrl+Shift+B on a corner; Esc and a right click change
-// nothing; Ctrl+Z restores the file byte for byte. G G slides an edge loop (Alt+click selects it) by a
-// typed factor or the mouse, keeping the counts. Each saved result is checked against core's operation
-// on the file as opened. Screenshots kept in build/test-artefacts/EditorTools/.
+// The modal tools of ui/tools/ and the modelling keys in a real window under Xvfb as a designer uses
+// them: bevel (Ctrl+B on one edge of the cube, Ctrl+Shift+B on a corner; typed width or the mouse,
+// the wheel for segments), G G slide, spin, duplicate, the sharpen brush, bisect, knife, split, grid
+// fill, the normal orientation, and F9 on the last operation; Esc and a right click change nothing,
+// Ctrl+Z restores the file byte for byte. Each saved result is checked against core's operation on
+// the file as opened. Snapping and the mirror modifier: test_editor_snapping.cpp,
+// test_editor_mirror.cpp. Screenshots kept in build/test-artefacts/EditorTools/.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,9 +12,6 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "../support/editor_driver.h"
-#include "../support/mesh_checks.h"
-#include "../support/test_meshes.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
 #include "core/modelling/bevel.h"
@@ -35,6 +33,7 @@
 #include "ui/editing/axis_handles.h"
 #include "ui/editing/covariance_presets.h"
 #include "ui/panels/view_options.h"
+#include "tests/support/editor_tools_fixture.h"
 #include "ui/tools/loop_cut_tool.h"
 
 namespace gps {
@@ -45,51 +44,7 @@ using test::editor_view;
 using test::Events;
 using test::pixel_of;
 
-constexpr int kWidth = test::kWindowWidth, kHeight = test::kWindowHeight;
-
-class EditorTools : public ::testing::Test {
-protected:
-  void use_mesh(const CovarianceMesh& mesh) {
-    write_mesh(dir_.file("original.ply"), mesh);
-    original_ = read_mesh(dir_.file("original.ply"));
-    view_ = editor_view(original_);
-  }
-  void SetUp() override { use_mesh(make_sample("cube")); }
-  glm::vec2 pixel_at(const std::vector<int>& vertices) const {
-    return pixel_of(view_, centre_of_vertices(original_, vertices));
-  }
-  // The cube's edge 6–7 (top, front: +y, +z) selected in edge mode by a click beside its middle.
-  Events edge_selected() const {
-    Events e;
-    e.key("2").wait().click(pixel_at({6, 7}) + glm::vec2(1.0f, 3.0f)).wait();
-    return e;
-  }
-  // Plays the events on `mesh` (a file of the test folder), saves to saved.ply (and a screenshot when
-  // named); returns the saved mesh.
-  CovarianceMesh play(const Events& events, const std::string& screenshot = "",
-                      const std::string& mesh = "original.ply") const {
-    const std::string extra =
-        "--save " + dir_.file("saved.ply") + (screenshot.empty() ? "" : " --screenshot " + artefact(screenshot));
-    const auto r = test::play_editor(dir_, dir_.file(mesh), events, kWidth, kHeight, extra);
-    EXPECT_EQ(r.exit_code, 0) << r.output;
-    output_ = r.output;
-    return read_mesh(dir_.file("saved.ply"));
-  }
-  bool saved_is_original() const {
-    return read_text_file(dir_.file("saved.ply")) == read_text_file(dir_.file("original.ply"));
-  }
-  static BevelOptions width(double w, int segments = 1) {
-    BevelOptions o;
-    o.width = w;
-    o.segments = segments;
-    return o;
-  }
-
-  test::TempDir dir_;
-  CovarianceMesh original_;
-  Viewport view_;
-  mutable std::string output_;
-};
+using test::EditorTools;
 
 // One cube edge, 1 segment, a typed width: Blender's 10 vertices and 7 faces, closed and outward,
 // exactly core's bevel of that edge.
@@ -378,266 +333,6 @@ TEST_F(EditorTools, BisectByALineAcrossTheView) {
   EXPECT_TRUE(shape.oriented);
   EXPECT_GT(test::signed_volume(saved), 0.0);
   EXPECT_NE(output_.find("bisect: "), std::string::npos) << output_;
-}
-
-// Snapping while transforming and the 3D cursor, on the cube.
-class EditorToolsSnap : public EditorTools {
-protected:
-  static void hold_ctrl(Events& e, bool down) {
-    e.add(std::string(R"({"type": ")") + (down ? "key_press" : "key_release") + R"(", "key": "ctrl"})");
-  }
-  // Vertex 6 selected and grabbed (then `keys`: a constraint), the pointer moved in steps to `to`;
-  // `ctrl`: held from the grab to after the Enter that confirms it.
-  Events grab_vertex_6(glm::vec2 to, const std::string& keys = "", bool ctrl = false, Events e = Events()) const {
-    const glm::vec2 from = pixel_at({6}) + glm::vec2(0.0f, 2.0f);
-    e.click(from).wait().move(from).wait().key("g").wait();
-    if (!keys.empty()) e.key(keys).wait();
-    if (ctrl) hold_ctrl(e, true);
-    for (int k = 1; k <= 4; ++k) e.move(from + (to - from) * (float(k) / 4.0f)).wait();
-    e.key("enter").wait(3);
-    if (ctrl) hold_ctrl(e, false);
-    return e;
-  }
-};
-
-// Ctrl held during G: the move is whole steps of 0.1 along each axis (the default increment), and not
-// none; let go, the same pointer moves freely again.
-TEST_F(EditorToolsSnap, SnapIncrementRoundsTheGrabWhileCtrlIsHeld) {
-  const glm::vec2 to = pixel_at({6}) + glm::vec2(47.0f, -31.0f);
-  const CovarianceMesh saved = play(grab_vertex_6(to, "", true), "cube_grab_snapped_to_increments.png");
-  const Vec3 moved = saved.mean(6) - original_.mean(6);
-  EXPECT_GT(moved.norm(), 0.05);
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(moved[i] / 0.1, std::round(moved[i] / 0.1), 1e-9) << i << ": " << moved[i];
-  for (size_t v = 0; v < saved.n_vertices(); ++v) {
-    if (v != 6) {
-      EXPECT_EQ(saved.mean(v), original_.mean(v)) << v;
-    }
-  }
-
-  const Vec3 unsnapped = play(grab_vertex_6(to)).mean(6) - original_.mean(6);
-  bool off_the_grid = false;
-  for (int i = 0; i < 3; ++i) off_the_grid |= std::abs(unsnapped[i] / 0.1 - std::round(unsnapped[i] / 0.1)) > 1e-6;
-  EXPECT_TRUE(off_the_grid) << unsnapped.transpose();
-}
-
-// Snapping on (Shift+Tab) to vertices (Ctrl+Shift+Tab once) with G X: vertex 6 takes the x of the
-// vertex under the pointer and keeps its y and z.
-TEST_F(EditorToolsSnap, SnapToAVertexAlongTheConstraint) {
-  int target = -1;
-  for (size_t v = 0; v < original_.n_vertices(); ++v)
-    if (original_.mean(v).x() != original_.mean(6).x() && original_.mean(v).y() == original_.mean(6).y() &&
-        original_.mean(v).z() != original_.mean(6).z())
-      target = int(v);
-  ASSERT_GE(target, 0);
-  Events snapping;
-  snapping.key("shift+tab").wait().key("ctrl+shift+tab").wait();
-  const glm::vec2 to = pixel_at({target}) + glm::vec2(3.0f, 2.0f);
-  const CovarianceMesh saved = play(grab_vertex_6(to, "x", false, snapping), "cube_grab_snapped_to_vertex.png");
-  EXPECT_NEAR(saved.mean(6).x(), original_.mean(size_t(target)).x(), 1e-12);
-  EXPECT_EQ(saved.mean(6).y(), original_.mean(6).y());
-  EXPECT_EQ(saved.mean(6).z(), original_.mean(6).z());
-  EXPECT_NE(output_.find("snapped to vertex " + std::to_string(target)), std::string::npos) << output_;
-}
-
-// Snapping to edges: vertex 6 lands on the edge under the pointer (one that does not touch it), on
-// the segment between its ends.
-TEST_F(EditorToolsSnap, SnapToAnEdgeLandsOnIt) {
-  // The top face's far edge: the edge of the top face (the y of vertex 6) that does not touch 6 or 7.
-  std::array<int, 2> edge{-1, -1};
-  for (const auto e : original_.mesh.edges()) {
-    const int a = e.v0().idx(), b = e.v1().idx();
-    if (a == 6 || b == 6 || a == 7 || b == 7) continue;
-    if (original_.mean(size_t(a)).y() == original_.mean(6).y() &&
-        original_.mean(size_t(b)).y() == original_.mean(6).y())
-      edge = {a, b};
-  }
-  ASSERT_GE(edge[0], 0);
-  Events snapping;
-  snapping.key("shift+tab").wait().key("ctrl+shift+tab").wait().key("ctrl+shift+tab").wait();
-  const glm::vec2 to = pixel_at({edge[0], edge[1]}) + glm::vec2(0.0f, 4.0f);
-  const CovarianceMesh saved = play(grab_vertex_6(to, "", false, snapping), "cube_grab_snapped_to_edge.png");
-  const Vec3 a = original_.mean(size_t(edge[0])), b = original_.mean(size_t(edge[1])), p = saved.mean(6);
-  const double s = (p - a).dot(b - a) / (b - a).squaredNorm();
-  EXPECT_GT(s, 0.2);
-  EXPECT_LT(s, 0.8);
-  EXPECT_LT((a + s * (b - a) - p).norm(), 1e-9) << p.transpose();
-}
-
-// Shift+S puts the 3D cursor at vertex 0; with the pivot at the 3D cursor ("." three times from the
-// median point), S 2 scales vertex 6 about it: exactly 2 v6 − v0.
-TEST_F(EditorToolsSnap, ScaleAboutThe3DCursor) {
-  Events events;
-  events.click(pixel_at({0})).wait().key("shift+s").wait();
-  events.key("period").wait().key("period").wait().key("period").wait();
-  const glm::vec2 at6 = pixel_at({6}) + glm::vec2(0.0f, 2.0f);
-  events.click(at6).wait().move(at6).wait().key("s").wait().text("2").wait().key("enter").wait(3);
-  const CovarianceMesh saved = play(events, "cube_scaled_about_the_cursor.png");
-  const Vec3 expected = 2.0 * original_.mean(6) - original_.mean(0);
-  EXPECT_LT((saved.mean(6) - expected).norm(), 1e-12) << saved.mean(6).transpose();
-  EXPECT_NE(output_.find("pivot: 3D cursor"), std::string::npos) << output_;
-}
-
-// Shift+right click on the surface places the 3D cursor there (read back from the frame): the point
-// printed projects back onto the clicked pixel.
-TEST_F(EditorToolsSnap, ShiftRightClickPlacesThe3DCursorOnTheSurface) {
-  const glm::vec2 at = pixel_at({4, 5, 6, 7}) + glm::vec2(5.0f, 0.0f);
-  Events events;
-  events.add(R"({"type": "click", "button": "right", "mods": "shift", "x": )" + std::to_string(at.x) + R"(, "y": )" +
-             std::to_string(at.y) + "}");
-  events.wait(3);
-  play(events, "cube_cursor_placed.png");
-  const size_t found = output_.find("3D cursor on the surface at (");
-  ASSERT_NE(found, std::string::npos) << output_;
-  Vec3 point;
-  ASSERT_EQ(std::sscanf(output_.c_str() + found + 29, "%lf, %lf, %lf", &point.x(), &point.y(), &point.z()), 3);
-  const auto pixel = project_to_pixel(view_.camera, kWidth, kHeight, point);
-  ASSERT_TRUE(pixel);
-  EXPECT_LT(glm::length(glm::vec2(*pixel) - at), 1.5f) << pixel->x << ", " << pixel->y;
-}
-
-// The mirror modifier (Ctrl+Alt+M) on the cube's x ≥ 0 half, cut at x = 0 by bisect: the editor
-// shows the half mirrored about x = 0 and merged at the seam while the file keeps the half.
-class EditorToolsMirror : public EditorTools {
-protected:
-  void SetUp() override {
-    const CovarianceMesh cut = bisect(make_sample("cube"), Vec3::Zero(), Vec3(1, 0, 0)).mesh;
-    std::vector<int> left;
-    for (size_t v = 0; v < cut.n_vertices(); ++v)
-      if (cut.mean(v).x() < 0) left.push_back(int(v));
-    use_mesh(delete_vertices(cut, left).mesh);
-    for (size_t v = 0; v < original_.n_vertices(); ++v) {
-      const Vec3 p = original_.mean(v);
-      if (p.x() == 0 && p.y() > 0 && p.z() > 0) seam_ = int(v);   // on the plane, top front
-      if (p.x() > 0 && p.y() > 0 && p.z() > 0) corner_ = int(v);  // the far corner, top front
-    }
-    ASSERT_EQ(original_.n_vertices(), 8u);
-    ASSERT_GE(seam_, 0);
-    ASSERT_GE(corner_, 0);
-  }
-  // A click on `vertex` (Shift: added to the selection), in the first view of the half, or with
-  // `mirrored` in that of its mirror (the file opened with the modifier on frames the whole).
-  Events& select(Events& e, int vertex, bool add = false, bool mirrored = false) const {
-    const Viewport view = mirrored ? editor_view(mirror(original_, 0, Vec3::Zero(), true).mesh) : view_;
-    return e.click(pixel_of(view, original_.mean(size_t(vertex))), add ? "shift" : "").wait();
-  }
-  int seam_ = -1, corner_ = -1;
-};
-
-// The far top corner raised by G Y 0.5 with the modifier on: the file keeps the half with that move
-// only, and the orthographic front view of the whole (numpad 1, 5, Home; nothing selected; the
-// statistics hidden by the settings) has the outline of each row mirrored about the middle, as wide
-// as high: the half alone is half as wide, and a mirror side that missed the edit would lack the
-// raised corner, whose rows then stand out by tens of pixels.
-TEST_F(EditorToolsMirror, MirrorShowsTheEditOnBothSides) {
-  std::filesystem::create_directories(dir_.file("gpsurf"));
-  dir_.write("gpsurf/settings.json", R"({"show_statistics": false})");
-  Events e;
-  select(e, corner_).key("ctrl+alt+m").wait().key("g").wait().key("y").wait().text("0.5").wait().key("enter").wait();
-  e.key("alt+a").wait().key("kp1").wait().key("kp5").wait().key("home").wait(3);
-  const CovarianceMesh saved = play(e, "mirror_half_cube_front.png");
-  ASSERT_EQ(saved.n_vertices(), original_.n_vertices());
-  for (size_t v = 0; v < saved.n_vertices(); ++v)
-    EXPECT_EQ(saved.mean(v), original_.mean(v) + (int(v) == corner_ ? Vec3(0, 0.5, 0) : Vec3::Zero())) << v;
-  EXPECT_NE(output_.find("mirror modifier on: the plane x = 0, clipping on"), std::string::npos) << output_;
-
-  const Image shot = read_image(artefact("mirror_half_cube_front.png"));
-  const auto [free_min, free_max] = test::editor_free_region();
-  // The surface: the clay MatCap's reddish pixels (the background, the mesh lines and the panels are grey).
-  const auto surface = [&](int x, int y) { return shot.at(x, y, 0) - shot.at(x, y, 2) > 0.02f; };
-  struct Row {
-    int y, first, last;
-  };
-  std::vector<Row> rows;
-  for (int y = int(free_min.y) + 2; y < int(free_max.y) - 2; ++y) {
-    Row row{y, -1, -1};
-    for (int x = int(free_min.x); x < int(free_max.x); ++x)
-      if (surface(x, y)) row.first = row.first < 0 ? x : row.first, row.last = x;
-    if (row.first >= 0) rows.push_back(row);
-  }
-  ASSERT_GT(rows.size(), 50u) << "no surface in the screenshot";
-  int left = rows.front().first, right = rows.front().last;
-  for (const Row& r : rows) left = std::min(left, r.first), right = std::max(right, r.last);
-  EXPECT_GT(double(right - left) / double(rows.back().y - rows.front().y), 0.75) << "the mirror side is missing";
-  for (const Row& r : rows) EXPECT_LE(std::abs((r.first - left) - (right - r.last)), 2) << "row " << r.y;
-}
-
-// Apply (Ctrl+Alt+Shift+M) after a seam vertex moved up: the file is core's mirror of the half as edited,
-// closed (12 vertices, 10 faces), as one undo step (Ctrl+Z gives the half back).
-TEST_F(EditorToolsMirror, MirrorApplyWritesCoresMirror) {
-  Events e;
-  select(e, seam_).key("ctrl+alt+m").wait().key("g").wait().key("z").wait().text("0.25").wait().key("enter").wait();
-  e.key("ctrl+alt+shift+m").wait(3);
-  const CovarianceMesh saved = play(e, "mirror_applied.png");
-  CovarianceMesh half = original_;
-  half.set_mean(size_t(seam_), original_.mean(size_t(seam_)) + Vec3(0, 0, 0.25));
-  EXPECT_TRUE(test::same_mesh(saved, mirror(half, 0, Vec3::Zero(), true).mesh));
-  const test::Shape shape = test::shape_of(saved);
-  EXPECT_EQ(shape.vertices, 12);
-  EXPECT_EQ(shape.faces, 10);
-  EXPECT_EQ(shape.boundary_edges, 0);
-  EXPECT_TRUE(shape.oriented);
-  EXPECT_NE(output_.find("apply mirror modifier: mirrored 8 vertices and 5 faces in x, 4 vertices merged"),
-            std::string::npos)
-      << output_;
-
-  e.key("ctrl+z").wait(3);
-  const CovarianceMesh undone = play(e);
-  EXPECT_TRUE(test::same_mesh(undone, half));
-}
-
-// Any operation shows on both sides: with the modifier on, the far face (x = 1) extruded by E 0.5 in
-// face mode and the modifier applied gives a closed, outward part symmetric about x = 0 reaching
-// x = ±1.5: the half's 12 vertices and 9 faces, mirrored with its 4 seam vertices merged.
-TEST_F(EditorToolsMirror, MirrorExtrudeShowsOnBothSides) {
-  std::vector<int> far;
-  for (size_t v = 0; v < original_.n_vertices(); ++v)
-    if (original_.mean(v).x() == 1) far.push_back(int(v));
-  ASSERT_EQ(far.size(), 4u);
-  Events e;
-  e.key("3").wait().click(pixel_at(far)).wait().key("ctrl+alt+m").wait();
-  e.key("e").wait().text("0.5").wait().key("enter").wait().key("home").wait(3);
-  play(e, "mirror_extruded.png");
-  std::filesystem::remove(dir_.file("gpsurf/settings.json"));  // the modifier kept for the file: off again
-  e.key("ctrl+alt+shift+m").wait(3);
-  const CovarianceMesh saved = play(e);
-  const test::Shape shape = test::shape_of(saved);
-  EXPECT_EQ(shape.vertices, 20);
-  EXPECT_EQ(shape.faces, 18);
-  EXPECT_EQ(shape.boundary_edges, 0);
-  EXPECT_TRUE(shape.oriented);
-  EXPECT_GT(test::signed_volume(saved), 0.0);
-  for (size_t v = 0; v < saved.n_vertices(); ++v) {
-    const Vec3 image = saved.mean(v).cwiseProduct(Vec3(-1, 1, 1));
-    size_t found = 0;
-    for (size_t w = 0; w < saved.n_vertices(); ++w) found += (saved.mean(w) - image).norm() < 1e-12;
-    EXPECT_EQ(found, 1u) << v;
-    EXPECT_LE(std::abs(saved.mean(v).x()), 1.5 + 1e-12);
-  }
-}
-
-// Clipping: G X 0.3 on a seam vertex and the far corner moves the corner by 0.3 and keeps the seam
-// vertex on the plane (x = 0 exactly; its y and z as they were). The modifier is kept for the file:
-// opened again it is on (the same move clipped) until Ctrl+Alt+M turns it off, and the seam vertex
-// then leaves the plane.
-TEST_F(EditorToolsMirror, MirrorClippingKeepsTheSeamOnThePlane) {
-  const auto moved = [&](const std::string& keys, bool mirrored, const std::string& screenshot = "") {
-    Events e;
-    select(e, seam_, false, mirrored);
-    select(e, corner_, true, mirrored);
-    if (!keys.empty()) e.key(keys).wait();
-    e.key("g").wait().key("x").wait().text("0.3").wait().key("enter").wait(3);
-    return play(e, screenshot);
-  };
-  const auto expect_clipped = [&](const CovarianceMesh& saved) {
-    EXPECT_EQ(saved.mean(size_t(seam_)), original_.mean(size_t(seam_)));
-    EXPECT_NEAR(saved.mean(size_t(corner_)).x(), original_.mean(size_t(corner_)).x() + 0.3, 1e-12);
-  };
-  expect_clipped(moved("ctrl+alt+m", false, "mirror_clipped.png"));
-  expect_clipped(moved("", true));
-  const CovarianceMesh unclipped = moved("ctrl+alt+m", true);
-  EXPECT_NEAR(unclipped.mean(size_t(seam_)).x(), 0.3, 1e-12);
-  EXPECT_NEAR(unclipped.mean(size_t(corner_)).x(), original_.mean(size_t(corner_)).x() + 0.3, 1e-12);
-  EXPECT_NE(output_.find("mirror modifier off"), std::string::npos) << output_;
 }
 
 // The knife (K) on the cube's top face (4–5–6–7, z = 1, towards the camera), clicked 3 pixels inside
