@@ -27,18 +27,11 @@ Mat3 NormalisedFrame::covariance_in_frame(const Mat3& covariance) const {
 
 CovarianceMesh NormalisedFrame::to_frame(const CovarianceMesh& mesh) const {
   CovarianceMesh out = mesh;
-  std::vector<int> all(mesh.n_vertices());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = int(i);
-  to_frame(mesh, all, out);
-  return out;
-}
-
-void NormalisedFrame::to_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices,
-                               CovarianceMesh& framed) const {
-  for (const int v : vertices) {
-    framed.set_mean(size_t(v), mean_in_frame(mesh.mean(size_t(v))));
-    framed.set_covariance(size_t(v), covariance_in_frame(mesh.covariance(size_t(v))));
+  for (size_t i = 0; i < mesh.n_vertices(); ++i) {
+    out.set_mean(i, mean_in_frame(mesh.mean(i)));
+    out.set_covariance(i, covariance_in_frame(mesh.covariance(i)));
   }
+  return out;
 }
 
 FramedGaussians NormalisedFrame::gaussians_in_frame(const CovarianceMesh& mesh) const {

@@ -28,8 +28,6 @@ struct NormalisedFrame {
   static NormalisedFrame of(const CovarianceMesh& mesh);
   /// `mesh` in the frame: means (μ − centre) / unit, covariances Σ / unit², computed in double.
   CovarianceMesh to_frame(const CovarianceMesh& mesh) const;
-  /// The same for the `vertices` of `mesh` only, written into `framed` (the same topology).
-  void to_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices, CovarianceMesh& framed) const;
   /// `mesh`'s Gaussians in the frame, as to_frame gives them.
   FramedGaussians gaussians_in_frame(const CovarianceMesh& mesh) const;
   /// The same for the `vertices` of `mesh` only, written into `framed` (of the same vertex count).
