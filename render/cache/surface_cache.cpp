@@ -66,7 +66,12 @@ void SurfaceCache::all_points_changed(long long points) {
 }
 
 bool SurfaceCache::matches(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
-  if (!stored_ || !(key == key_)) return false;
+  if (!stored_) return false;
+  // A refusal outlasts edits: they leave a uniform level's count as it was, and move an adaptive one
+  // little (a capture tried after each would draw every edited frame twice).
+  Key compared = key;
+  if (refused_) compared.points = key_.points;
+  if (!(compared == key_)) return false;
   return key.pixels <= 0.0f || camera_close(view_projection, viewport, key.pixels);
 }
 

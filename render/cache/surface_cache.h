@@ -96,8 +96,9 @@ public:
   // What a frame asks.
 
   /// Whether the last capture, or its refusal past the memory limit, was made for these inputs: the
-  /// key, and at adaptive levels a camera within the hysteresis of the capture's. Such a frame
-  /// neither captures nor refreshes: it draws the stored triangles, or live where they were refused.
+  /// key (a refusal's but for the plan points: it stands for edits), and at adaptive levels a camera
+  /// within the hysteresis of the capture's. Such a frame neither captures nor refreshes: it draws
+  /// the stored triangles, or live where they were refused.
   bool matches(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const;
   /// Whether refresh() brings the stored triangles to these inputs: they differ from the capture's
   /// only by the plan points of edits followed since, and the camera matches as for matches().

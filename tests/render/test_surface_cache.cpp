@@ -462,6 +462,14 @@ TEST_P(SurfaceCacheTest, PastTheMemoryLimitFramesAreDrawnLive) {
   EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false)));
   draw(renderer, target, camera, o, true);  // refused inputs are not tried again every frame
   EXPECT_EQ(renderer.surface_cache().captures(), 1);
+  // Nor after an edit, which leaves the count the same: drawn live, the edit shown.
+  CovarianceMesh edited = mesh;
+  move_vertex(edited, 3, 0.2);
+  renderer.update_vertices(edited, {3});
+  const Frame after_edit = draw(renderer, target, camera, o, true);
+  EXPECT_EQ(renderer.surface_cache().captures(), 1);
+  EXPECT_FALSE(same_surface(after_edit, cached));
+  EXPECT_TRUE(same_surface(after_edit, draw(renderer, target, camera, o, false)));
   // Small enough (level 1: 2 triangles per patch, from an estimate past the limit) it fits.
   draw(renderer, target, camera, uniform(1), true);
   EXPECT_TRUE(renderer.surface_cache().has_stored_triangles());
