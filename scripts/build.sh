@@ -4,7 +4,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # Line tables only (-g1), as in scripts/sanitize.sh: a backtrace still names functions, files and
 # lines, at a fraction of the disk and compile time of full debug information. Arguments are passed
-# to cmake's configure (-DGPSURF_BUILD_GL=OFF, ...); a first argument --programs builds only what the
+# to cmake's configure (-DGPSURF_BUILD_GL=OFF, -DGPSURF_TEST_FOLDERS=..., ...; every test folder unless
+# they say otherwise); a first argument --programs builds only what the
 # install installs (the programs, the core library and the Python module), not the tests.
 target=()
 if [ "${1:-}" = --programs ]; then
@@ -12,6 +13,6 @@ if [ "${1:-}" = --programs ]; then
   shift
 fi
 source scripts/compiler_cache.sh
-cmake -S . -B build -G Ninja "${launcher[@]}" "$@" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
+cmake -S . -B build -G Ninja "${launcher[@]}" -DGPSURF_TEST_FOLDERS="core;app;render;ui;window" "$@" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" >/dev/null
 cmake --build build -j"$(nproc)" "${target[@]}"

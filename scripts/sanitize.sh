@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (gcc) into build-asan/ and
+# The test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (clang) into build-asan/ and
 # run under ctest, leak checking on; Mesa's own allocations are suppressed by scripts/lsan.supp (each
 # entry says why). By default every test of our code's logic without a window (core, app, ui) and
 # fixed representative sets of the GL tests (the pipeline, edits, picking, the render command, the
@@ -21,17 +21,22 @@ if [ "${1:-}" = "--all" ]; then
 fi
 source scripts/compiler_cache.sh
 # Line tables only (-g1): a report still names functions, files and lines at a fraction of the disk.
-# -O1, ASan's usual level: a much shorter build for a slightly slower suite.
-cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+# -O1, ASan's usual level: a much shorter build for a slightly slower suite. Clang, as the fuzzers: it
+# compiles the instrumented tests in about a third of gcc's time.
+if [ -f build-asan/CMakeCache.txt ] && ! grep -q "^CMAKE_CXX_COMPILER:FILEPATH=.*clang++" build-asan/CMakeCache.txt; then
+  rm -rf build-asan  # configured with another compiler, which a cache keeps
+fi
+CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DGPSURF_SANITIZE=ON -DGPSURF_BUILD_BENCH=OFF -DGPSURF_BUILD_PYTHON=OFF \
-  -DGPSURF_GL_TESTS="$gl_tests" -DGPSURF_WINDOW_TESTS="$window_tests" "${launcher[@]}" >/dev/null
+  -DGPSURF_TEST_FOLDERS="core;app;render;ui;window" -DGPSURF_GL_TESTS="$gl_tests" -DGPSURF_WINDOW_TESTS="$window_tests" "${launcher[@]}" >/dev/null
 cmake --build build-asan -j"$(nproc)"
 # Libraries stay loaded until exit (scripts/no_dlclose.c), so leaks in them name their module.
 cc -shared -fPIC -O1 -o build-asan/no_dlclose.so scripts/no_dlclose.c
 # C heap blocks over 128 KiB are reused, not mapped afresh on every draw (scripts/asan_block_reuse.c:
 # the GL tests are many times slower without it); first checked to keep ASan's findings.
 cc -shared -fPIC -O2 -fno-omit-frame-pointer -o build-asan/asan_block_reuse.so scripts/asan_block_reuse.c
-cc -fsanitize=address -O0 -g -o build-asan/asan_block_reuse_check scripts/asan_block_reuse_check.c
+clang -fsanitize=address,undefined -shared-libsan -Wl,-rpath,"$(clang -print-runtime-dir)" -O0 -g \
+  -o build-asan/asan_block_reuse_check scripts/asan_block_reuse_check.c
 reuse_check() {
   LD_PRELOAD=build-asan/asan_block_reuse.so ASAN_OPTIONS=verify_asan_link_order=0 build-asan/asan_block_reuse_check "$1" 2>&1
 }

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Fresh machine to a full test run: installs dependencies, builds, runs every test under ctest
-# (GoogleTest, pytest for the Python module, the installed package), runs the tests of our code's
-# logic and representative sets of GL and window tests again built with ASan + UBSan and leak
+# (the GL and window tests, pytest for the Python module, the installed package), runs the tests of
+# our code's logic and representative sets of GL and window tests built with ASan + UBSan and leak
 # checking (scripts/sanitize.sh; --all for all of them), and fuzzes the file readers briefly
-# (scripts/fuzz.sh). Each stage prints how long it took.
+# (scripts/fuzz.sh). Every test runs at least once. Each stage prints how long it took.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # The three builds below (plain, ASan, fuzz) take a few GB of disk together.
@@ -20,9 +20,12 @@ stage() {
   echo "== $name: $((SECONDS - from)) s (total $((SECONDS - started)) s)"
 }
 stage "dependencies" scripts/install_deps.sh
-stage "build" scripts/build.sh
+# Everything the user gets, with the tests that need GL, a display, Python or the installed package.
+# The tests of the logic (core, app, ui) are built and run in the sanitizer build alone.
+stage "build" scripts/build.sh -DGPSURF_TEST_FOLDERS="render;window"
 stage "tests" bash -c 'cd build && ctest --output-on-failure -j"$(nproc)" --timeout 600'
-# Under ASan + UBSan, leaks checked (Mesa's own in scripts/lsan.supp), into build-asan/.
+# Every test of core, app and ui and representative GL and window sets under ASan + UBSan, leaks
+# checked (Mesa's own in scripts/lsan.supp), into build-asan/.
 stage "sanitizers" scripts/sanitize.sh
 # Every file reader under libFuzzer for 20 s each.
 stage "fuzzing" scripts/fuzz.sh 20

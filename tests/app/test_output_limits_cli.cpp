@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "tests/support/run_command.h"
+#include "tests/support/sanitized_build.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {
@@ -87,7 +88,7 @@ TEST(OutputLimitsCli, CompareAndFitSizeTheirSearchTreesWithTheTriangles) {
   EXPECT_EQ(run_command(budget + gpsurf("compare " + cube + " " + cube + " --level 8")).exit_code, 0);
 }
 TEST(OutputLimitsCli, RunningOutOfMemoryNamesTheInput) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GPS_SANITIZED)
   GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit allows";
 #else
   test::TempDir dir;

@@ -20,6 +20,7 @@
 
 #include "tests/support/measured_run.h"
 #include "tests/support/run_command.h"
+#include "tests/support/sanitized_build.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {
@@ -102,7 +103,7 @@ TEST(ReaderMemory, AmplificationInputsAreRefusedWithinFourTimesTheFileSize) {
 }
 
 TEST(ReaderMemory, AmplificationInputsAreReadWithinEightTimesTheFileSize) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GPS_SANITIZED)
   GTEST_SKIP() << "AddressSanitizer's redzones and quarantine hold more than the readers do; the bound is the "
                   "plain build's";
 #endif

@@ -19,15 +19,8 @@
 
 #include "tests/support/measured_run.h"
 #include "tests/support/run_command.h"
+#include "tests/support/sanitized_build.h"
 #include "tests/support/temp_dir.h"
-
-#if defined(__SANITIZE_ADDRESS__)
-#define GPS_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define GPS_SANITIZED 1
-#endif
-#endif
 
 namespace gps {
 namespace {

@@ -181,7 +181,7 @@ TEST(CreaseRules, InfinitelySharpCreaseIsTheCubicBSplineOfItsVertices) {
       const int nv = int(mesh.n_vertices());
       const std::vector<Dual> q = base_points(mesh);
       const SubdivisionResult r = subdivide(mesh, SubdivisionOptions{scheme, 4, true});
-      const auto ring = [&](int k) { return first + (k + 4) % 4; };
+      const auto ring = [&, first = first](int k) { return first + (k + 4) % 4; };
       for (int k = 0; k < 4; ++k) {
         const Dual at_vertex = (q[size_t(ring(k - 1))] + 4.0 * q[size_t(ring(k))] + q[size_t(ring(k + 1))]) / 6.0;
         const Dual at_midpoint = (q[size_t(ring(k - 1))] + 23.0 * q[size_t(ring(k))] + 23.0 * q[size_t(ring(k + 1))] +

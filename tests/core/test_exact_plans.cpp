@@ -121,7 +121,7 @@ TEST(ExactPlans, PastTheTablesLevelsStepsContinueTheSurface) {
           const double cu[4] = {0, 1, 1, 0}, cv[4] = {0, 0, 1, 1}, su[4] = {1, -1, -1, 1}, sv[4] = {1, 1, -1, -1};
           return {cu[r] + su[r] * h * a, cv[r] + sv[r] * h * b};
         };
-        const auto at = [&](double h) {
+        const auto at = [&, &p = p](double h) {
           const auto [u, v] = uv(h);
           return evaluate_patch(p.tables.plans, p.points, patch, u, v);
         };

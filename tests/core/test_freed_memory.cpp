@@ -7,8 +7,9 @@
 #include <cstring>
 
 #include "core/support/freed_memory.h"
+#include "tests/support/sanitized_build.h"
 
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__GLIBC__) && !defined(GPS_SANITIZED)
 #include <malloc.h>
 
 namespace gps {

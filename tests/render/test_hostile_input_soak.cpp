@@ -17,6 +17,7 @@
 
 #include "render/image/image_io.h"
 #include "tests/support/run_command.h"
+#include "tests/support/sanitized_build.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {
@@ -152,7 +153,7 @@ std::vector<Probe> probes() {
 }
 
 TEST(HostileInputSoak, EveryInputIsReadOrRefusedWithinTwoSecondsAndItsMemoryBound) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GPS_SANITIZED)
   GTEST_SKIP() << "AddressSanitizer's redzones and quarantine hold more than gpsurf does; the bounds are the plain "
                   "build's";
 #endif

@@ -123,7 +123,7 @@ void LoopCutTool::end(bool keep, ToolContext& ctx) {
   }
   ctx.note("loop cut: " + summary_, false);
   if (ctx.adjustable) {
-    const auto [a, b] = ring_.edges.front();
+    const int a = ring_.edges.front()[0], b = ring_.edges.front()[1];
     ctx.adjustable({"loop cut",
                     {{"number of cuts", double(cuts_), 1.0, double(kMaxLoopCuts), true},
                      {"slide", slide_, -kMaxLoopSlide, kMaxLoopSlide}},
