@@ -54,4 +54,16 @@ inline bool same_mesh(const CovarianceMesh& x, const CovarianceMesh& y) {
   return a.means == b.means && a.covariances == b.covariances && a.faces == b.faces && a.sharpness == b.sharpness;
 }
 
+/// Whether two meshes have the same faces and sharpness, and Gaussians within `tolerance` of each
+/// other (each mean and covariance entry): the same operations reached by another rounding.
+inline bool nearly_same_mesh(const CovarianceMesh& x, const CovarianceMesh& y, double tolerance) {
+  const MeshArrays a = arrays_of(x), b = arrays_of(y);
+  if (a.faces != b.faces || !(a.sharpness == b.sharpness) || a.means.size() != b.means.size()) return false;
+  for (size_t v = 0; v < a.means.size(); ++v)
+    if ((a.means[v] - b.means[v]).cwiseAbs().maxCoeff() > tolerance ||
+        (a.covariances[v] - b.covariances[v]).cwiseAbs().maxCoeff() > tolerance)
+      return false;
+  return true;
+}
+
 }  // namespace gps::test

@@ -16,6 +16,7 @@
 #include "core/io/text_file.h"
 #include "core/modelling/bevel.h"
 #include "core/modelling/bisect.h"
+#include "core/modelling/crease_edges.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/duplicate.h"
 #include "core/modelling/extrude.h"
@@ -29,6 +30,7 @@
 #include "core/modelling/slide.h"
 #include "core/modelling/spin.h"
 #include "core/modelling/split_faces.h"
+#include "core/reference/reference_subdivision.h"
 #include "render/image/image_io.h"
 #include "ui/editing/axis_handles.h"
 #include "ui/editing/covariance_presets.h"
@@ -532,6 +534,94 @@ TEST_F(EditorTools, AdjustLastLoopCutCutsAndSlide) {
   undone.key("ctrl+z").wait(3);
   play(undone);
   EXPECT_TRUE(saved_is_original());
+}
+
+
+// The View panel's "G/S/R carry the Gaussians" checkbox at its first-use place.
+const glm::vec2 kCarryGaussiansBox(692.0f, 491.0f);
+
+// The points of a mesh's limit surface (three Catmull-Clark levels projected to the limit).
+std::vector<Vec3> limit_points(const CovarianceMesh& mesh) {
+  SubdivisionOptions options;
+  options.levels = 3;
+  options.limit = true;
+  const CovarianceMesh limit = subdivide(mesh, options).mesh;
+  std::vector<Vec3> points;
+  for (size_t v = 0; v < limit.n_vertices(); ++v) points.push_back(limit.mean(v));
+  return points;
+}
+
+// A designer's chisel from the cube in 18 actions: the View panel's "carry the Gaussians" unticked
+// (the wedge keeps round Gaussians), face mode, the top face clicked and S Z 0.2 Enter (a wedge);
+// Ctrl+Shift+E and Shift+E 10 Enter (its sharp edges creased); the tip's two edges clicked (the
+// second with Shift) and Ctrl+B, the wheel, 0.1, Enter (the working edges bevelled in 2 segments);
+// the save. The file is core's scale, crease and bevel of the cube: closed and outward, each band's
+// rims 0.1 inside the faces beside the tip edge and smooth, the other ten edges sharp; its limit
+// surface stands on the flat base and is thin at the rounded tip.
+TEST_F(EditorTools, DesignerReplayBevelledChisel) {
+  const std::vector<int> top = {2, 3, 6, 7};
+  CovarianceMesh wedge = original_;
+  for (const int v : top) wedge.set_mean(size_t(v), original_.mean(size_t(v)).cwiseProduct(Vec3(1, 1, 0.2)));
+  const auto edge_pixel = [&](int a, int b) {
+    return pixel_of(view_, 0.5 * (wedge.mean(size_t(a)) + wedge.mean(size_t(b))));
+  };
+  Events chisel;
+  chisel.click(kCarryGaussiansBox).wait();
+  chisel.key("3").wait().click(pixel_at(top)).wait();
+  chisel.key("s").wait().key("z").wait().text("0.2").wait().key("enter").wait();
+  chisel.key("ctrl+shift+e").wait().key("shift+e").wait().text("10").wait().key("enter").wait();
+  chisel.click(edge_pixel(6, 7)).wait().click(edge_pixel(2, 3), "shift").wait();
+  chisel.key("ctrl+b").wait().scroll(edge_pixel(6, 7), 1.0f).wait().text("0.1").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(chisel, "designer_chisel.png");
+
+  const CovarianceMesh creased = crease_sharp_edges(wedge, 30.0, kInfiniteSharpness).mesh;
+  EXPECT_TRUE(test::nearly_same_mesh(saved, bevel_edges(creased, {{2, 3}, {6, 7}}, width(0.1, 2)).mesh, 1e-12))
+      << output_;
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, 16);  // each tip edge's two ends replaced by three vertices each
+  EXPECT_EQ(shape.faces, 10);     // two quads across each band
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_EQ(shape.euler(), 2);
+  EXPECT_GT(test::signed_volume(saved), 0.0);
+
+  // The rims: on the top face 0.1 from each tip edge (z = ±0.1), on each slope 0.1 down it from the
+  // tip edge; the original tip edges' vertices are gone.
+  const Vec3 down_front = Vec3(0, -2, 0.8).normalized(), down_back = Vec3(0, -2, -0.8).normalized();
+  const std::vector<Vec3> rims = {Vec3(1, 1, 0.1), Vec3(-1, 1, 0.1), Vec3(1, 1, -0.1), Vec3(-1, 1, -0.1),
+                                  Vec3(1, 1, 0.2) + 0.1 * down_front, Vec3(-1, 1, 0.2) + 0.1 * down_front,
+                                  Vec3(1, 1, -0.2) + 0.1 * down_back, Vec3(-1, 1, -0.2) + 0.1 * down_back};
+  std::vector<int> rim_vertices;
+  for (const Vec3& r : rims) {
+    int found = -1;
+    for (size_t v = 0; v < saved.n_vertices(); ++v)
+      if ((saved.mean(v) - r).norm() < 1e-9) found = int(v);
+    EXPECT_GE(found, 0) << r.transpose();
+    rim_vertices.push_back(found);
+    EXPECT_LT((saved.covariance(size_t(std::max(found, 0))) - Mat3::Identity()).norm(), 1e-12) << "round Gaussians";
+  }
+  for (size_t v = 0; v < saved.n_vertices(); ++v)
+    for (const int t : top) EXPECT_GT((saved.mean(v) - wedge.mean(size_t(t))).norm(), 0.01) << v;
+  // The rims are smooth, the ten edges left of the wedge's twelve infinitely sharp.
+  for (size_t k = 0; k + 1 < rim_vertices.size(); k += 2)
+    EXPECT_EQ(saved.sharpness.crease(rim_vertices[k], rim_vertices[k + 1]), 0.0) << k;
+  ASSERT_EQ(saved.sharpness.creases.size(), 10u);
+  for (const EdgeCrease& c : saved.sharpness.creases) EXPECT_EQ(c.sharpness, kInfiniteSharpness);
+
+  // The limit surface: inside the wedge's box, its flat base at y = −1, its tip rounded below the
+  // control mesh's top and thin across z.
+  const std::vector<Vec3> limit = limit_points(saved);
+  double lowest = 1, highest = -1, tip_z = 0;
+  for (const Vec3& p : limit) {
+    EXPECT_LE(p.cwiseAbs().maxCoeff(), 1.0 + 1e-9) << p.transpose();
+    lowest = std::min(lowest, p.y()), highest = std::max(highest, p.y());
+  }
+  for (const Vec3& p : limit)
+    if (p.y() > highest - 0.05) tip_z = std::max(tip_z, std::abs(p.z()));
+  EXPECT_NEAR(lowest, -1.0, 1e-9);
+  EXPECT_LT(highest, 1.0);
+  EXPECT_GT(highest, 0.9);
+  EXPECT_LT(tip_z, 0.2);
 }
 
 }  // namespace
