@@ -9,6 +9,7 @@
 
 #include "core/support/error.h"
 #include "core/modelling/extrude.h"
+#include "core/modelling/face_pieces.h"
 #include "core/modelling/operation_words.h"
 
 namespace gps {
@@ -18,14 +19,36 @@ namespace {
 std::string vertex_name(int v) { return "vertex " + std::to_string(v); }
 
 /// The faces around a vertex v in order: face i has the corner around[i] → v → around[i + 1] (at
-/// corners[i]), and edge i, v–around[i], lies between faces i − 1 and i.
+/// corners[i]), and edge i, v–around[i], lies between faces i − 1 and i. Around a boundary vertex the
+/// last "face" is the gap outside the boundary (face −1), so that edges 0 and gap() are its two
+/// boundary edges.
 struct Fan {
   int v = -1;
   std::vector<int> around, faces, corners;
   int size() const { return int(faces.size()); }
   int at(int i) const { return ((i % size()) + size()) % size(); }
   int neighbour(int i) const { return around[size_t(at(i))]; }
+  bool open() const { return faces.back() < 0; }
+  int gap() const { return size() - 1; }
+  bool real(int i) const { return faces[size_t(at(i))] >= 0; }
+  bool on_boundary(int edge) const { return open() && (at(edge) == 0 || at(edge) == gap()); }
 };
+
+/// Where the fan faces from bevelled edge s to the next bevelled edge (m of them) take in the gap
+/// outside a boundary: `after_s` faces lie between s and the gap, `before_t` between the gap and t.
+struct GapInRange {
+  bool in = false;
+  int after_s = 0, before_t = 0;
+};
+
+GapInRange gap_in_range(const Fan& fan, int s, int m) {
+  GapInRange g;
+  if (!fan.open() || fan.at(fan.gap() - s) >= m) return g;
+  g.in = true;
+  g.after_s = fan.at(fan.gap() - s);
+  g.before_t = m - g.after_s - 1;
+  return g;
+}
 
 /// A new vertex before the width is known: its displacement from `v` per unit of width, moving along
 /// the edge to `along`, or else lying in the face whose corner at v is `in` → v → `out`.
@@ -33,34 +56,13 @@ struct Spot {
   int v = -1;
   Vec3 unit_shift = Vec3::Zero();
   int along = -1, in = -1, out = -1;
-  int vertex = -1;  // once made
+  bool keep = false;  // v itself: the outer corner of a band along a boundary edge
+  int vertex = -1;    // once made
 };
 
 /// The superellipse exponent of a Blender profile value (0.5 → 2, a circle; 1 → ∞, the sharp corner).
 double superellipse_exponent(double profile) {
   return profile >= 1 ? std::numeric_limits<double>::infinity() : -2 * std::log(2.0) / std::log(profile);
-}
-
-/// Splits a polygon into triangles by the fan from the corner whose smallest triangle (its area along
-/// the polygon's normal) is largest, so that a corner in line with its neighbours is not an apex.
-std::vector<std::vector<int>> fan_triangles(const MeshArrays& a, const std::vector<int>& p) {
-  Vec3 normal = Vec3::Zero();
-  for (size_t k = 0; k < p.size(); ++k) normal += a.means[size_t(p[k])].cross(a.means[size_t(p[(k + 1) % p.size()])]);
-  const size_t n = p.size();
-  size_t best = 0;
-  double best_area = -std::numeric_limits<double>::infinity();
-  for (size_t r = 0; r < n; ++r) {
-    double smallest = std::numeric_limits<double>::infinity();
-    const Vec3& apex = a.means[size_t(p[r])];
-    for (size_t j = 1; j + 1 < n; ++j)
-      smallest = std::min(
-          smallest,
-          (a.means[size_t(p[(r + j) % n])] - apex).cross(a.means[size_t(p[(r + j + 1) % n])] - apex).dot(normal));
-    if (smallest > best_area) best_area = smallest, best = r;
-  }
-  std::vector<std::vector<int>> out;
-  for (size_t j = 1; j + 1 < n; ++j) out.push_back({p[best], p[(best + j) % n], p[(best + j + 1) % n]});
-  return out;
 }
 
 class Bevel {
@@ -91,8 +93,6 @@ public:
     std::set<int> ends;
     for (const auto& [x, y] : list) {
       if (!has_edge(edges_, x, y)) throw Error(edge_name(x, y) + " is not in the mesh");
-      if (is_boundary_edge(edges_, x, y))
-        throw Error(edge_name(x, y) + " is on a boundary (a bevel needs a face on each side)");
       if (chosen_.insert(edge_key(x, y)).second) strips_.push_back({x, y});
       ends.insert(x), ends.insert(y);
     }
@@ -130,10 +130,19 @@ private:
 
   Fan fan_of(int v) const {
     if (corner_count_[size_t(v)] == 0) throw Error(vertex_name(v) + " is on no face");
+    const int count = corner_count_[size_t(v)];
+    // At a boundary vertex, start at the face after its incoming boundary edge.
+    auto [f, k] = first_corner_[size_t(v)];
+    for (int step = 0; step < count; ++step) {
+      const auto& face = a_.faces[size_t(f)];
+      const auto twin = edges_.find(directed_key(v, face[(size_t(k) + face.size() - 1) % face.size()]));
+      if (twin == edges_.end()) break;
+      f = twin->second.first;
+      k = twin->second.second;
+    }
+    const int f0 = f, k0 = k;
     Fan fan;
     fan.v = v;
-    const auto [f0, k0] = first_corner_[size_t(v)];
-    int f = f0, k = k0;
     do {
       const auto& face = a_.faces[size_t(f)];
       const size_t n = face.size();
@@ -141,14 +150,19 @@ private:
       fan.corners.push_back(k);
       fan.around.push_back(face[(size_t(k) + n - 1) % n]);
       const auto twin = edges_.find(directed_key(face[(size_t(k) + 1) % n], v));
-      if (twin == edges_.end()) throw Error(vertex_name(v) + " is on a boundary (a bevel needs faces all round it)");
+      if (twin == edges_.end()) {  // the outgoing boundary edge: the gap follows
+        fan.around.push_back(face[(size_t(k) + 1) % n]);
+        fan.faces.push_back(-1);
+        fan.corners.push_back(-1);
+        break;
+      }
       f = twin->second.first;
       k = int((size_t(twin->second.second) + 1) % a_.faces[size_t(f)].size());
-      if (fan.size() > corner_count_[size_t(v)]) break;
+      if (fan.size() > count) break;
     } while (f != f0 || k != k0);
-    if (fan.size() != corner_count_[size_t(v)])
+    if (fan.size() - (fan.open() ? 1 : 0) != count)
       throw Error(vertex_name(v) + " joins faces that meet only there (the mesh is not manifold at it)");
-    if (fan.size() < 3) throw Error(vertex_name(v) + " has fewer than three edges");
+    if (!fan.open() && fan.size() < 3) throw Error(vertex_name(v) + " has fewer than three edges");
     return fan;
   }
 
@@ -169,6 +183,8 @@ private:
       }
       case BevelWidth::width:
       case BevelWidth::depth: {
+        // A boundary edge's band lies in its one face, from the edge to the new edge: both are the offset.
+        if (fan.on_boundary(b)) return 1;
         // φ, the angle between the two faces at the edge, from their directions away from it: a band
         // across offsets o has the width 2 o sin(φ/2) and lies o cos(φ/2) from the edge.
         const Vec3 d = direction(v, x);
@@ -209,6 +225,13 @@ private:
       throw Error(edge_name(fan.v, fan.neighbour(e)) + " is in line with " + edge_name(fan.v, fan.neighbour(b)) +
                   ", so the bevel cannot meet it");
     return offset / sine;
+  }
+
+  int kept_spot(int v) {
+    Spot s;
+    s.v = v;
+    s.keep = true;
+    return add_spot(s);
   }
 
   int slide_spot(const Fan& fan, int e, double length) {
@@ -268,6 +291,19 @@ private:
       const double w_s = rail_offset(fan, s, fan.at(s)), w_t = rail_offset(fan, t, fan.at(t - 1));
       int& right = p.right[size_t(s)];
       int& left = p.left[size_t(t)];
+      if (const GapInRange gap = gap_in_range(fan, s, m); gap.in) {
+        // Across the gap outside a boundary: a side with faces slides along its edge next to the bevelled
+        // one; a side without keeps v as the band's outer corner, one spot for both where both do.
+        if (gap.after_s == 0 && gap.before_t == 0) {
+          right = left = kept_spot(v);
+          continue;
+        }
+        right = gap.after_s == 0 ? kept_spot(v) : slide_spot(fan, s + 1, meeting_length(fan, s, w_s, s + 1));
+        left = gap.before_t == 0 ? kept_spot(v) : slide_spot(fan, t - 1, meeting_length(fan, t, w_t, t - 1));
+        if (gap.after_s > 0) reaches(right, fan.neighbour(s + 1)), reaches(right, fan.neighbour(s));
+        if (gap.before_t > 0) reaches(left, fan.neighbour(t - 1)), reaches(left, fan.neighbour(t));
+        continue;
+      }
       if (m == 1) {
         right = left = face_spot(fan, s, w_s, w_t);
       } else if (m == 2) {
@@ -319,6 +355,10 @@ private:
   }
 
   void make_spot(Spot& s) {
+    if (s.keep) {
+      s.vertex = s.v;
+      return;
+    }
     const Vec3 at = mean(s.v) + width_ * s.unit_shift;
     std::vector<std::pair<int, double>> weights;
     if (s.along >= 0) {
@@ -358,7 +398,22 @@ private:
     return out;
   }
 
+  /// The straight profile from `left` to `right` (a band along a boundary edge ends on an edge or a
+  /// face beside it, not round a corner): vertex i of n at i/n of the way, with the profile's blend.
+  std::vector<int> chord(int left, int right) {
+    std::vector<int> out{left};
+    for (int i = 1; i < o_.segments; ++i) {
+      const double t = double(i) / o_.segments;
+      out.push_back(a_.add_vertex({(1 - t) * mean(left) + t * mean(right),
+                                   blend_gaussians(a_, {{left, 1 - t}, {right, t}}).covariance}));
+    }
+    out.push_back(right);
+    return out;
+  }
+
+  /// Puts `by` in place of v in fan face i (nothing in the gap outside a boundary).
   void replace(const Fan& fan, int i, std::vector<int> by) {
+    if (!fan.real(i)) return;
     replaced_[{fan.faces[size_t(fan.at(i))], fan.corners[size_t(fan.at(i))]}] = std::move(by);
   }
 
@@ -368,8 +423,9 @@ private:
     const std::vector<int> b = bevelled_edges(p);
     const size_t k = b.size();
     const auto vertex = [&](int spot) { return spots_[size_t(spot)].vertex; };
+    // Two bevelled edges whose ranges of faces each hold one spot share their profile.
     bool shared = k == 2;
-    for (size_t j = 0; j < k; ++j) shared = shared && faces_to_next(fan, b, j) <= 2;
+    for (size_t j = 0; j < k; ++j) shared = shared && p.right[size_t(b[j])] == p.left[size_t(b[(j + 1) % k])];
 
     std::map<int, std::vector<int>> profiles;
     for (size_t j = 0; j < k; ++j) {
@@ -379,60 +435,120 @@ private:
         continue;
       }
       // The corner the profile cuts: v where two bevelled edges meet (a mitre), else the point of the
-      // edge's line across from the profile's ends.
+      // edge's line across from the profile's ends; a boundary edge's band has no corner to round.
       const Vec3 d = direction(v, fan.neighbour(e));
       const Vec3 corner = shared ? mean(v) : mean(v) + ((mean(left) + mean(right)) / 2 - mean(v)).dot(d) * d;
-      profiles[e] = profile(left, right, corner);
+      profiles[e] = fan.on_boundary(e) ? chord(left, right) : profile(left, right, corner);
       profile_of_[directed_key(v, fan.neighbour(e))] = profiles[e];
     }
     if (shared) profile_of_[directed_key(v, fan.neighbour(b[1]))] = profiles[b[1]];
 
+    // The face beyond the first face after bevelled edge s keeps v; where s is a boundary edge its
+    // profile runs along the edge between them, and that face takes it.
+    const auto split_after = [&](int s, int right) {
+      if (fan.on_boundary(s)) {
+        const auto& pr = profiles[s];
+        replace(fan, s + 1, std::vector<int>(pr.rbegin(), pr.rend()));
+      } else {
+        replace(fan, s + 1, {right, v});
+      }
+    };
+    const auto split_before = [&](int t, int left) {
+      if (fan.on_boundary(t)) {
+        const auto& pr = profiles[t];
+        replace(fan, t - 2, std::vector<int>(pr.rbegin(), pr.rend()));
+      } else {
+        replace(fan, t - 2, {v, left});
+      }
+    };
     for (size_t j = 0; j < k; ++j) {
       const int s = b[j], t = b[(j + 1) % k], m = faces_to_next(fan, b, j);
       const int right = vertex(p.right[size_t(s)]), left = vertex(p.left[size_t(t)]);
       replace(fan, s, {right});
       replace(fan, t - 1, {left});
-      end_of_[directed_key(v, fan.neighbour(s + 1))] = right;
-      end_of_[directed_key(v, fan.neighbour(t - 1))] = left;
-      if (m == 3 && k == 1) {
+      if (right != v) end_of_[directed_key(v, fan.neighbour(s + 1))] = right;
+      if (left != v) end_of_[directed_key(v, fan.neighbour(t - 1))] = left;
+      if (const GapInRange gap = gap_in_range(fan, s, m); gap.in) {
+        if (gap.after_s >= 2) split_after(s, right);
+        if (gap.before_t >= 2) split_before(t, left);
+      } else if (m == 3 && k == 1) {
         const auto& pr = profiles[s];
         replace(fan, s + 1, std::vector<int>(pr.rbegin(), pr.rend()));
       } else if (m == 3) {
         replace(fan, s + 1, {right, left});
       } else if (m >= 4) {
-        replace(fan, s + 1, {right, v});
-        replace(fan, t - 2, {v, left});
+        split_after(s, right);
+        split_before(t, left);
       }
     }
-    if (shared || (k == 1 && faces_to_next(fan, b, 0) == 3)) return;
-    // The polygon closing the corner: the profiles backwards, with what lies between them.
+    if (shared || (!fan.open() && k == 1 && faces_to_next(fan, b, 0) == 3)) return;
+    // The polygon closing the corner: the profiles backwards, with what lies between them. Across the
+    // gap outside a boundary it runs through v where a face keeps v, and else stays open (no polygon).
     std::vector<int> polygon;
     for (size_t j = k; j-- > 0;) {
       const auto& pr = profiles[b[j]];
       polygon.insert(polygon.end(), pr.rbegin(), pr.rend() - 1);
-      if (const int m = faces_to_next(fan, b, (j + k - 1) % k); m >= 3) {
+      const size_t before = (j + k - 1) % k;
+      const int m = faces_to_next(fan, b, before);
+      if (const GapInRange gap = gap_in_range(fan, b[before], m); gap.in) {
+        if (gap.before_t == 1 && gap.after_s == 1) return;
+        if (gap.before_t >= 1) polygon.push_back(pr.front());
+        if (gap.after_s >= 1) polygon.push_back(v);
+      } else if (m >= 3) {
         polygon.push_back(pr.front());
         if (m >= 4) polygon.push_back(v);
       }
     }
-    a_.faces.push_back(polygon);
+    add_corner_polygon(fan, b, profiles, polygon);
+  }
+
+  /// Adds the corner's polygon less the loops through v that only follow a boundary edge's straight
+  /// profile (they lie along an edge: the face beyond took them, or they are on the boundary).
+  void add_corner_polygon(const Fan& fan, const std::vector<int>& b, std::map<int, std::vector<int>>& profiles,
+                          std::vector<int> polygon) {
+    const int v = fan.v;
+    const auto first_v = std::find(polygon.begin(), polygon.end(), v);
+    if (first_v != polygon.end()) {
+      std::rotate(polygon.begin(), first_v, polygon.end());
+      std::vector<int> kept;
+      for (size_t from = 0; from < polygon.size();) {
+        size_t to = from + 1;
+        while (to < polygon.size() && polygon[to] != v) ++to;
+        const std::vector<int> loop(polygon.begin() + long(from), polygon.begin() + long(to));
+        bool straight = false;
+        for (int e : b)
+          if (fan.on_boundary(e))
+            straight = straight || std::all_of(loop.begin(), loop.end(), [&](int x) {
+                         return std::find(profiles[e].begin(), profiles[e].end(), x) != profiles[e].end();
+                       });
+        if (!straight) kept.insert(kept.end(), loop.begin(), loop.end());
+        from = to;
+      }
+      polygon = kept;
+    }
+    if (polygon.size() >= 3) a_.faces.push_back(polygon);
   }
 
   void replace_vertex(const VertexPlan& p) {
     const Fan& fan = p.fan;
     const int n = fan.size();
+    // At a corner of one face (valence 2) its profile is the new boundary; elsewhere the gap outside a
+    // boundary gets a profile round v as a face would, the polygon's side on the boundary.
+    const bool polygon = !fan.open() || n > 2;
     std::vector<std::vector<int>> profiles;
     for (int i = 0; i < n; ++i) {
       const int from = spots_[size_t(p.left[size_t(i)])].vertex,
                 to = spots_[size_t(p.left[size_t(fan.at(i + 1))])].vertex;
+      end_of_[directed_key(fan.v, fan.neighbour(i))] = from;
+      if (!fan.real(i) && !polygon) continue;
       profiles.push_back(profile(from, to, mean(fan.v)));
       replace(fan, i, profiles.back());
-      end_of_[directed_key(fan.v, fan.neighbour(i))] = from;
     }
-    std::vector<int> polygon;
-    for (int i = n; i-- > 0;)
-      polygon.insert(polygon.end(), profiles[size_t(i)].rbegin(), profiles[size_t(i)].rend() - 1);
-    a_.faces.push_back(polygon);
+    if (!polygon) return;
+    std::vector<int> closing;
+    for (size_t i = profiles.size(); i-- > 0;)
+      closing.insert(closing.end(), profiles[i].rbegin(), profiles[i].rend() - 1);
+    a_.faces.push_back(closing);
   }
 
   /// The band of quads along bevelled edge x–y, between the profiles at its ends.
@@ -485,7 +601,8 @@ private:
     if (triangles_)
       for (int f = 0, n = a_.n_faces(); f < n; ++f) {
         if (a_.faces[size_t(f)].size() <= 3) continue;
-        std::vector<std::vector<int>> pieces = fan_triangles(a_, a_.faces[size_t(f)]);
+        std::vector<std::vector<int>> pieces{a_.faces[size_t(f)]};
+        triangulate_pieces(pieces, a_.means, newell_normal(a_, f));
         a_.faces[size_t(f)] = pieces[0];
         a_.faces.insert(a_.faces.end(), pieces.begin() + 1, pieces.end());
       }

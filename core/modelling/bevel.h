@@ -43,7 +43,7 @@ struct BevelOptions {
 
 constexpr int kMaxBevelSegments = 100;
 
-/// Bevels edges that have a face on each side. Each end vertex v of a bevelled edge is replaced by
+/// Bevels edges. Each end vertex v of a bevelled edge is replaced by
 /// new vertices in the faces around it: where two bevelled edges at v bound one face, one vertex in
 /// that face at the offsets from both; where they bound two faces, one on the edge between them;
 /// otherwise one on each edge beside a bevelled edge, the faces beyond keeping v where they have edges
@@ -51,22 +51,34 @@ constexpr int kMaxBevelSegments = 100;
 /// vertex with three or more bevelled edges, or with faces left between them, a polygon closes the
 /// corner (a valence-3 vertex at the end of one bevelled edge takes the profile into its third face
 /// instead, as Blender does: one edge of a cube with 1 segment gives 10 vertices and 7 faces).
+/// Open shells bevel as in Blender: an edge on a boundary gets its band in its one face, between the
+/// edge (which stays, its ends kept as the band's outer corners) and the new edge at the offset, the
+/// band's ends straight along the edges beside it (a face beyond takes their new vertices); an edge
+/// ending on a boundary vertex ends there open, the vertex replaced by new vertices slid along the
+/// boundary edges (kept where faces beside them still reach it, a polygon then closing the corner); the
+/// boundary loops stay closed and as many. A boundary edge's band lies in its face, so its "width" and
+/// "depth" are the offset.
 /// Gaussians: a vertex moved along an edge v→u by the fraction t gets the 9D blend (1 − t) q_v + t q_u;
 /// one inside a face the blend of the face's corner v, u, w with the barycentric weights of its
 /// position in the triangle (v, u, w) (clipped to it); profile vertex i of n the blend
 /// (1 − i/n) q_left + (i/n) q_right of the profile's ends. Means are the geometric positions. Creases
 /// on the edges that remain follow them; the bevelled edges' go with them. Refuses an edge that is not
-/// in the mesh or is on a boundary, an end vertex on a boundary or with fewer than three edges, options
-/// out of range, and a width that would turn a face inside out. Selection: the new vertices.
+/// in the mesh, an end vertex with fewer than three edges inside the mesh or where faces meet only at
+/// it, options out of range, and a width that would turn a face inside out. Selection: the new
+/// vertices.
 Modelled bevel_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges,
                      const BevelOptions& options);
 
 /// Bevels vertices: each selected vertex v is replaced by one new vertex on each of its edges (at
 /// `width` along it, or a percentage of its length; the width types "width" and "depth" are for edges),
 /// joined in each face around v by a profile of `segments` edges cutting the face's corner, and a
-/// polygon of those profiles closes the hole (one vertex of a cube: 10 vertices, 7 faces). Gaussians
-/// as bevel_edges gives them. Refuses a vertex not in the mesh, on a boundary or with fewer than three
-/// edges, the options bevel_edges refuses, and a crease (edges only). Selection: the new vertices.
+/// polygon of those profiles closes the hole (one vertex of a cube: 10 vertices, 7 faces). At a
+/// boundary vertex the gap outside the boundary gets a profile round the vertex too, which is the
+/// polygon's side on the boundary (a straight edge with 1 segment); a corner of one face (valence 2)
+/// has its corner cut off by its profile, which is the new boundary, as Blender does. Gaussians as
+/// bevel_edges gives them. Refuses a vertex not in the mesh, one with fewer than three edges inside the
+/// mesh or where faces meet only at it, the options bevel_edges refuses, and a crease (edges only).
+/// Selection: the new vertices.
 Modelled bevel_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, const BevelOptions& options);
 
 }  // namespace gps
