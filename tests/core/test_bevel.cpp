@@ -554,10 +554,11 @@ TEST(BevelAtBoundaries, AnySetOfEdgesOrVerticesOnOpenMeshesStaysManifoldWithItsB
         EXPECT_EQ(all_triangles(m.mesh), triangles) << name << " trial " << trial;
         if (flat) {  // the bands lie in the faces; an end on a bent boundary cuts its corner
           EXPECT_TRUE(all_face_up(m.mesh, true)) << name << " trial " << trial;
-          if (name == "flat grid")
+          if (name == "flat grid") {
             EXPECT_NEAR(area_facing_up(m.mesh), area_facing_up(mesh), 1e-9) << name << " trial " << trial;
-          else
+          } else {
             EXPECT_LT(area_facing_up(m.mesh), area_facing_up(mesh) + 1e-9) << name << " trial " << trial;
+          }
         }
       } catch (const Error& e) {
         ADD_FAILURE() << name << " trial " << trial << ": " << e.what();
@@ -567,7 +568,9 @@ TEST(BevelAtBoundaries, AnySetOfEdgesOrVerticesOnOpenMeshesStaysManifoldWithItsB
         const Modelled m = bevel_vertices(mesh, vertices, width(0.05, segments));
         EXPECT_TRUE(manifold_and_oriented(m.mesh)) << name << " vertices, trial " << trial;
         EXPECT_EQ(boundary_loops(m.mesh).size(), loops) << name << " vertices, trial " << trial;
-        if (flat) EXPECT_TRUE(all_face_up(m.mesh, true)) << name << " vertices, trial " << trial;
+        if (flat) {
+          EXPECT_TRUE(all_face_up(m.mesh, true)) << name << " vertices, trial " << trial;
+        }
       } catch (const Error& e) {
         ADD_FAILURE() << name << " vertices, trial " << trial << ": " << e.what();
       }
