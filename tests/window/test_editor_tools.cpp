@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -430,6 +431,31 @@ TEST_F(EditorTools, GridFillClosesTheSelectedHole) {
   EXPECT_TRUE(test::same_mesh(saved, grid_fill(original_, rim, 1).mesh)) << output_;
 }
 
+// The cylinder without its top: Ctrl+B on the rim's front edge (a boundary edge) makes core's band in
+// the face below it, the rim kept: one boundary loop of 8 edges still, oriented, 2 vertices and 1 face
+// more.
+TEST_F(EditorTools, BevelOfAnOpenRimKeepsItOpen) {
+  use_mesh(delete_faces(make_sample("cylinder"), {16}).mesh);
+  const std::vector<int> rim = boundary_loops(original_).at(0);
+  ASSERT_EQ(rim.size(), 8u);
+  size_t front = 0;  // the rim edge lowest on screen, nearest the camera looking down on the hole
+  for (size_t k = 0; k < rim.size(); ++k)
+    if (pixel_at({rim[k], rim[(k + 1) % 8]}).y > pixel_at({rim[front], rim[(front + 1) % 8]}).y) front = k;
+  const int a = std::min(rim[front], rim[(front + 1) % 8]), b = std::max(rim[front], rim[(front + 1) % 8]);
+  const glm::vec2 middle = pixel_at({a, b}), centre = pixel_at(rim);
+  Events bevel;
+  bevel.key("2").wait().click(middle + 2.0f * glm::normalize(centre - middle)).wait();
+  bevel.key("ctrl+b").wait().text("0.2").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(bevel, "open_rim_bevelled.png");
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, int(original_.n_vertices()) + 2);
+  EXPECT_EQ(shape.faces, int(original_.n_faces()) + 1);
+  EXPECT_EQ(shape.boundary_edges, 8);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_EQ(boundary_loops(saved).size(), 1u);
+  EXPECT_TRUE(test::same_mesh(saved, bevel_edges(original_, {{a, b}}, width(0.2)).mesh)) << output_;
+}
+
 // A modelling key pressed while an axis end of the gizmo is dragged (W: subdivide, with nothing but
 // one vertex selected the whole mesh) does nothing: the drag goes on and ends as a drag alone.
 TEST_F(EditorTools, ModellingKeysWaitForTheGizmoDragToEnd) {
@@ -537,8 +563,8 @@ TEST_F(EditorTools, AdjustLastLoopCutCutsAndSlide) {
 }
 
 
-// The View panel's "G/S/R carry the Gaussians" checkbox at its first-use place.
-const glm::vec2 kCarryGaussiansBox(692.0f, 491.0f);
+// The View panel's checkboxes "base mesh" and "G/S/R carry the Gaussians" at its first-use place.
+const glm::vec2 kBaseMeshBox(692.0f, 441.0f), kCarryGaussiansBox(692.0f, 491.0f);
 
 // The points of a mesh's limit surface (three Catmull-Clark levels projected to the limit).
 std::vector<Vec3> limit_points(const CovarianceMesh& mesh) {
@@ -622,6 +648,66 @@ TEST_F(EditorTools, DesignerReplayBevelledChisel) {
   EXPECT_LT(highest, 1.0);
   EXPECT_GT(highest, 0.9);
   EXPECT_LT(tip_z, 0.2);
+}
+
+
+// A designer's feature line on the cylinder in 17 actions: K, three clicks on the middles of the
+// side's vertical edges facing the camera (upper row, lower row, upper row: a V across four faces),
+// Enter; edge mode (2: the cut's edges), Shift+E 10 Enter (creased infinitely sharp); Ctrl+. and
+// S 0.3 Enter (the line's Gaussians sharpened about their own means); Alt+A and the View panel's
+// "base mesh" unticked to look at the surface; the save. The file is core's knife along those points,
+// the cut's edges creased and its Gaussians scaled: 5 new vertices where the path crosses edges (the
+// clicked middles and the middles of the ring edges between), 4 faces split, closed and outward, the
+// four edges of the line sharp and no other.
+TEST_F(EditorTools, DesignerReplayKnifeFeatureLine) {
+  use_mesh(make_sample("cylinder"));  // rings of 8 at y = −1, 0, 1 (vertices 0–7, 8–15, 16–23)
+  const Vec3 eye = to_vec(view_.camera.eye());
+  int front = 0;  // the vertical edges' column nearest the camera
+  for (int k = 1; k < 8; ++k)
+    if ((original_.mean(size_t(8 + k)) - eye).norm() < (original_.mean(size_t(8 + front)) - eye).norm()) front = k;
+  const auto middle = [&](int a, int b) { return 0.5 * (original_.mean(size_t(a)) + original_.mean(size_t(b))); };
+  const int left = (front + 7) % 8, right = (front + 1) % 8;
+  const std::vector<Vec3> path = {middle(8 + left, 16 + left), middle(front, 8 + front), middle(8 + right, 16 + right)};
+  Events line;
+  line.move(pixel_of(view_, path[1])).wait().key("k").wait();
+  for (const Vec3& p : path) line.click(pixel_of(view_, p)).wait();
+  line.key("enter").wait().key("2").wait().key("shift+e").wait().text("10").wait().key("enter").wait();
+  line.key("ctrl+period").wait().key("s").wait().text("0.3").wait().key("enter").wait();
+  line.key("alt+a").wait().click(kBaseMeshBox).wait(3);
+  const CovarianceMesh saved = play(line, "designer_knife_feature_line.png");
+  EXPECT_NE(output_.find("knife: cut 4 faces along 3 points"), std::string::npos) << output_;
+
+  const Modelled cut = knife(original_, path);
+  ASSERT_EQ(cut.selection, (std::vector<int>{24, 25, 26, 27, 28}));
+  const CovarianceMesh creased =
+      set_crease(cut.mesh, {{24, 25}, {25, 26}, {26, 27}, {27, 28}}, kInfiniteSharpness).mesh;
+  CovarianceMesh expected = creased;
+  for (const int v : cut.selection) expected.set_covariance(size_t(v), 0.09 * creased.covariance(size_t(v)));
+  EXPECT_TRUE(test::nearly_same_mesh(saved, expected, 1e-12)) << output_;
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, 24 + 5);
+  EXPECT_EQ(shape.faces, 18 + 4);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_GT(test::signed_volume(saved), 0.0);
+
+  // The new vertices in the path's order, one on each edge the path crosses at its middle (the three
+  // clicked, the two of the ring y = 0 between them): on the edge, at the 9D blend of its ends at
+  // t = 0.5 (the crossing itself on the ring, whose ends have equal Gaussians), its Σ scaled by 0.3².
+  const std::vector<std::array<int, 2>> crossed = {
+      {8 + left, 16 + left}, {8 + left, 8 + front}, {front, 8 + front}, {8 + front, 8 + right}, {8 + right, 16 + right}};
+  const MeshArrays arrays = arrays_of(original_);
+  for (size_t k = 0; k < crossed.size(); ++k) {
+    const auto [a, b] = crossed[k];
+    const Gaussian blend = blend_gaussians(arrays, {{a, 0.5}, {b, 0.5}});
+    const Vec3 p = saved.mean(24 + k), from = original_.mean(size_t(a)), along = original_.mean(size_t(b)) - from;
+    EXPECT_LT((p - blend.mean).norm(), 1e-12) << k;
+    EXPECT_LT((saved.covariance(24 + k) - 0.09 * blend.covariance).norm(), 1e-12) << k;
+    EXPECT_LT((p - from).cross(along).norm() / along.norm(), 1e-12) << k << ": off its edge";
+    if (k % 2 == 1) EXPECT_LT((p - middle(a, b)).norm(), 1e-12) << k;
+  }
+  ASSERT_EQ(saved.sharpness.creases.size(), 4u);
+  for (int v = 24; v < 28; ++v) EXPECT_EQ(saved.sharpness.crease(v, v + 1), kInfiniteSharpness) << v;
 }
 
 }  // namespace
