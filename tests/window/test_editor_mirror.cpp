@@ -8,7 +8,9 @@
 #include <filesystem>
 
 #include "core/modelling/bisect.h"
+#include "core/modelling/affine_transform.h"
 #include "core/modelling/delete_elements.h"
+#include "core/modelling/extrude.h"
 #include "core/modelling/mirror.h"
 #include "core/modelling/samples.h"
 #include "render/image/image_io.h"
@@ -166,6 +168,69 @@ TEST_F(EditorToolsMirror, MirrorClippingKeepsTheSeamOnThePlane) {
   EXPECT_NEAR(unclipped.mean(size_t(seam_)).x(), 0.3, 1e-12);
   EXPECT_NEAR(unclipped.mean(size_t(corner_)).x(), original_.mean(size_t(corner_)).x() + 0.3, 1e-12);
   EXPECT_NE(output_.find("mirror modifier off"), std::string::npos) << output_;
+}
+
+
+// A designer's U-bracket from the half in 19 actions, with the modifier on and clipping at the seam:
+// Ctrl+Alt+M; A, S Y 0.25 Enter (a plate); face mode, the far face clicked, E 1 Enter (the plate
+// lengthened); Home; the new part's top face clicked, E 1.5 Enter (an upright); Ctrl+Alt+Shift+M
+// (applied); Home; the save. The file is core's mirror of the half so made: exactly symmetric about
+// x = 0 (each vertex's image a vertex to 1e-12, with the mirrored Gaussian), the seam's four vertices
+// on the plane once each, closed and outward.
+TEST_F(EditorToolsMirror, DesignerReplayMirrorBracket) {
+  std::vector<int> all(original_.n_vertices()), far;
+  for (size_t v = 0; v < original_.n_vertices(); ++v) {
+    all[v] = int(v);
+    if (original_.mean(v).x() == 1) far.push_back(int(v));
+  }
+  ASSERT_EQ(far.size(), 4u);
+  const CovarianceMesh plate =
+      transform_vertices(original_, all, AffineMap::about(Vec3(0.5, 0, 0), Vec3(1, 0.25, 1).asDiagonal())).mesh;
+  const CovarianceMesh longer = extrude_vertices(plate, far, Vec3(1, 0, 0)).mesh;
+  std::vector<int> outer_top;  // the top face of the part the extrusion added
+  for (size_t v = 0; v < longer.n_vertices(); ++v)
+    if (longer.mean(v).x() >= 1 && std::abs(longer.mean(v).y() - 0.25) < 1e-12) outer_top.push_back(int(v));
+  ASSERT_EQ(outer_top.size(), 4u);
+  const CovarianceMesh half = extrude_vertices(longer, outer_top, Vec3(0, 1.5, 0)).mesh;
+  const Viewport framed = editor_view(mirror(longer, 0, Vec3::Zero(), true).mesh);
+
+  Events bracket;
+  bracket.key("ctrl+alt+m").wait().key("a").wait();
+  bracket.key("s").wait().key("y").wait().text("0.25").wait().key("enter").wait();
+  bracket.key("3").wait().click(pixel_of(view_, Vec3(1, 0, 0))).wait();
+  bracket.key("e").wait().text("1").wait().key("enter").wait().key("home").wait();
+  bracket.click(pixel_of(framed, Vec3(1.5, 0.25, 0))).wait();
+  bracket.key("e").wait().text("1.5").wait().key("enter").wait();
+  bracket.key("ctrl+alt+shift+m").wait().key("home").wait(3);
+  const CovarianceMesh saved = play(bracket, "designer_mirror_bracket.png");
+  EXPECT_NE(output_.find("mirror modifier on: the plane x = 0, clipping on"), std::string::npos) << output_;
+  EXPECT_TRUE(test::nearly_same_mesh(saved, mirror(half, 0, Vec3::Zero(), true).mesh, 1e-12)) << output_;
+
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, 2 * 16 - 4);  // the half's 16, mirrored, its 4 seam vertices shared
+  EXPECT_EQ(shape.faces, 2 * 13);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_EQ(shape.euler(), 2);
+  EXPECT_GT(test::signed_volume(saved), 0.0);
+  const Mat3 flip = Vec3(-1, 1, 1).asDiagonal();
+  int on_seam = 0;
+  for (size_t v = 0; v < saved.n_vertices(); ++v) {
+    const Vec3 image = flip * saved.mean(v);
+    int images = 0, near = 0;
+    for (size_t w = 0; w < saved.n_vertices(); ++w) {
+      near += w != v && (saved.mean(w) - saved.mean(v)).norm() < 1e-6;
+      if ((saved.mean(w) - image).norm() > 1e-12) continue;
+      ++images;
+      EXPECT_LT((saved.covariance(w) - flip * saved.covariance(v) * flip).norm(), 1e-12) << v << " and " << w;
+    }
+    EXPECT_EQ(images, 1) << v;
+    EXPECT_EQ(near, 0) << v << " has a duplicate";
+    on_seam += saved.mean(v).x() == 0;
+    EXPECT_LE(std::abs(saved.mean(v).x()), 2.0 + 1e-12);
+    EXPECT_LE(saved.mean(v).y(), 1.75 + 1e-12);
+  }
+  EXPECT_EQ(on_seam, 4);
 }
 
 }  // namespace
