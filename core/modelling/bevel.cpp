@@ -34,8 +34,8 @@ struct Fan {
   bool on_boundary(int edge) const { return open() && (at(edge) == 0 || at(edge) == gap()); }
 };
 
-/// Where the fan faces from bevelled edge s to the next bevelled edge (m of them) take in the gap
-/// outside a boundary: `after_s` faces lie between s and the gap, `before_t` between the gap and t.
+/// Whether the fan faces from bevelled edge s to the next one, t (m of them), take in the gap outside
+/// a boundary, and how many real faces lie between s and the gap (`after_s`) and between it and t.
 struct GapInRange {
   bool in = false;
   int after_s = 0, before_t = 0;
@@ -534,17 +534,17 @@ private:
     const int n = fan.size();
     // At a corner of one face (valence 2) its profile is the new boundary; elsewhere the gap outside a
     // boundary gets a profile round v as a face would, the polygon's side on the boundary.
-    const bool polygon = !fan.open() || n > 2;
+    const bool closed_by_polygon = !fan.open() || n > 2;
     std::vector<std::vector<int>> profiles;
     for (int i = 0; i < n; ++i) {
       const int from = spots_[size_t(p.left[size_t(i)])].vertex,
                 to = spots_[size_t(p.left[size_t(fan.at(i + 1))])].vertex;
       end_of_[directed_key(fan.v, fan.neighbour(i))] = from;
-      if (!fan.real(i) && !polygon) continue;
+      if (!fan.real(i) && !closed_by_polygon) continue;
       profiles.push_back(profile(from, to, mean(fan.v)));
       replace(fan, i, profiles.back());
     }
-    if (!polygon) return;
+    if (!closed_by_polygon) return;
     std::vector<int> closing;
     for (size_t i = profiles.size(); i-- > 0;)
       closing.insert(closing.end(), profiles[i].rbegin(), profiles[i].rend() - 1);
