@@ -476,6 +476,23 @@ TEST(BevelAtBoundaries, BoundaryVerticesAreCutByAPolygonOpenOnTheBoundarySide) {
   EXPECT_GE(vertex_at(round.mesh, Vec3(inward, inward, 0)), 15);
 }
 
+TEST(BevelAtBoundaries, CreasesFollowTheirEdgesAndTheOperationListGivesTheSameBevel) {
+  CovarianceMesh grid = flat_grid();
+  grid.sharpness.set_crease(0, 1, 2.0);  // on the boundary
+  grid.sharpness.set_crease(1, 5, 3.0);  // inner
+  const Modelled m = bevel_vertices(grid, {1}, width(0.25));
+  const int on_boundary = vertex_at(m.mesh, Vec3(0.75, 0, 0)), inner = vertex_at(m.mesh, Vec3(1, 0.25, 0));
+  EXPECT_EQ(m.mesh.sharpness.crease(0, on_boundary), 2.0);
+  EXPECT_EQ(m.mesh.sharpness.crease(inner, 4), 3.0);  // vertex 5 is 4 once 1 is gone
+  EXPECT_EQ(m.mesh.sharpness.creases.size(), 2u);
+
+  const Modelled listed =
+      OperationList::parse(R"([{"op":"bevel","edges":[[1,2]],"width":0.25,"segments":2}])", "ops.json").apply(grid);
+  const Modelled direct = bevel_edges(grid, {{1, 2}}, width(0.25, 2));
+  EXPECT_EQ(arrays_of(listed.mesh).faces, arrays_of(direct.mesh).faces);
+  EXPECT_EQ(arrays_of(listed.mesh).means, arrays_of(direct.mesh).means);
+}
+
 TEST(BevelAtBoundaries, NewVerticesGetTheNineDimensionalBlends) {
   const CovarianceMesh grid = with_random_covariances(flat_grid(), 5);
   const MeshArrays before = arrays_of(grid);
