@@ -1,6 +1,7 @@
 // The mirror modifier (Ctrl+Alt+M, applied with Ctrl+Alt+Shift+M) in a real window under Xvfb, on
 // the cube's x >= 0 half: the view shows both sides, the file keeps the half, apply writes core's
-// mirror. Screenshots kept in build/test-artefacts/EditorMirror/.
+// mirror; a designer's U-bracket made on the half and applied (DesignerReplayMirrorBracket). Screenshots
+// kept in build/test-artefacts/EditorMirror/.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -169,7 +170,6 @@ TEST_F(EditorToolsMirror, MirrorClippingKeepsTheSeamOnThePlane) {
   EXPECT_NEAR(unclipped.mean(size_t(corner_)).x(), original_.mean(size_t(corner_)).x() + 0.3, 1e-12);
   EXPECT_NE(output_.find("mirror modifier off"), std::string::npos) << output_;
 }
-
 
 // A designer's U-bracket from the half in 19 actions, with the modifier on and clipping at the seam:
 // Ctrl+Alt+M; A, S Y 0.25 Enter (a plate); face mode, the far face clicked, E 1 Enter (the plate

@@ -3,8 +3,9 @@
 // the wheel for segments), G G slide, spin, duplicate, the sharpen brush, bisect, knife, split, grid
 // fill, the normal orientation, and F9 on the last operation; Esc and a right click change nothing,
 // Ctrl+Z restores the file byte for byte. Each saved result is checked against core's operation on
-// the file as opened. Snapping and the mirror modifier: test_editor_snapping.cpp,
-// test_editor_mirror.cpp. Screenshots kept in build/test-artefacts/EditorTools/.
+// the file as opened. Two designer replays (DesignerReplay*) chain the tools into a part: a chisel
+// creased and bevelled, a knifed feature line creased. Snapping and the mirror modifier:
+// test_editor_snapping.cpp, test_editor_mirror.cpp. Screenshots kept in build/test-artefacts/EditorTools/.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -562,7 +563,6 @@ TEST_F(EditorTools, AdjustLastLoopCutCutsAndSlide) {
   EXPECT_TRUE(saved_is_original());
 }
 
-
 // The View panel's checkboxes "base mesh" and "G/S/R carry the Gaussians" at its first-use place.
 const glm::vec2 kBaseMeshBox(692.0f, 441.0f), kCarryGaussiansBox(692.0f, 491.0f);
 
@@ -614,9 +614,14 @@ TEST_F(EditorTools, DesignerReplayBevelledChisel) {
   // The rims: on the top face 0.1 from each tip edge (z = ±0.1), on each slope 0.1 down it from the
   // tip edge; the original tip edges' vertices are gone.
   const Vec3 down_front = Vec3(0, -2, 0.8).normalized(), down_back = Vec3(0, -2, -0.8).normalized();
-  const std::vector<Vec3> rims = {Vec3(1, 1, 0.1), Vec3(-1, 1, 0.1), Vec3(1, 1, -0.1), Vec3(-1, 1, -0.1),
-                                  Vec3(1, 1, 0.2) + 0.1 * down_front, Vec3(-1, 1, 0.2) + 0.1 * down_front,
-                                  Vec3(1, 1, -0.2) + 0.1 * down_back, Vec3(-1, 1, -0.2) + 0.1 * down_back};
+  const std::vector<Vec3> rims = {Vec3(1, 1, 0.1),
+                                  Vec3(-1, 1, 0.1),
+                                  Vec3(1, 1, -0.1),
+                                  Vec3(-1, 1, -0.1),
+                                  Vec3(1, 1, 0.2) + 0.1 * down_front,
+                                  Vec3(-1, 1, 0.2) + 0.1 * down_front,
+                                  Vec3(1, 1, -0.2) + 0.1 * down_back,
+                                  Vec3(-1, 1, -0.2) + 0.1 * down_back};
   std::vector<int> rim_vertices;
   for (const Vec3& r : rims) {
     int found = -1;
@@ -650,8 +655,7 @@ TEST_F(EditorTools, DesignerReplayBevelledChisel) {
   EXPECT_LT(tip_z, 0.2);
 }
 
-
-// A designer's feature line on the cylinder in 17 actions: K, three clicks on the middles of the
+// A designer's feature line on the cylinder in 16 actions: K, three clicks on the middles of the
 // side's vertical edges facing the camera (upper row, lower row, upper row: a V across four faces),
 // Enter; edge mode (2: the cut's edges), Shift+E 10 Enter (creased infinitely sharp); Ctrl+. and
 // S 0.3 Enter (the line's Gaussians sharpened about their own means); Alt+A and the View panel's
@@ -665,7 +669,9 @@ TEST_F(EditorTools, DesignerReplayKnifeFeatureLine) {
   int front = 0;  // the vertical edges' column nearest the camera
   for (int k = 1; k < 8; ++k)
     if ((original_.mean(size_t(8 + k)) - eye).norm() < (original_.mean(size_t(8 + front)) - eye).norm()) front = k;
-  const auto middle = [&](int a, int b) { return 0.5 * (original_.mean(size_t(a)) + original_.mean(size_t(b))); };
+  const auto middle = [&](int a, int b) -> Vec3 {
+    return 0.5 * (original_.mean(size_t(a)) + original_.mean(size_t(b)));
+  };
   const int left = (front + 7) % 8, right = (front + 1) % 8;
   const std::vector<Vec3> path = {middle(8 + left, 16 + left), middle(front, 8 + front), middle(8 + right, 16 + right)};
   Events line;
@@ -694,8 +700,11 @@ TEST_F(EditorTools, DesignerReplayKnifeFeatureLine) {
   // The new vertices in the path's order, one on each edge the path crosses at its middle (the three
   // clicked, the two of the ring y = 0 between them): on the edge, at the 9D blend of its ends at
   // t = 0.5 (the crossing itself on the ring, whose ends have equal Gaussians), its Σ scaled by 0.3².
-  const std::vector<std::array<int, 2>> crossed = {
-      {8 + left, 16 + left}, {8 + left, 8 + front}, {front, 8 + front}, {8 + front, 8 + right}, {8 + right, 16 + right}};
+  const std::vector<std::array<int, 2>> crossed = {{8 + left, 16 + left},
+                                                   {8 + left, 8 + front},
+                                                   {front, 8 + front},
+                                                   {8 + front, 8 + right},
+                                                   {8 + right, 16 + right}};
   const MeshArrays arrays = arrays_of(original_);
   for (size_t k = 0; k < crossed.size(); ++k) {
     const auto [a, b] = crossed[k];
@@ -704,7 +713,9 @@ TEST_F(EditorTools, DesignerReplayKnifeFeatureLine) {
     EXPECT_LT((p - blend.mean).norm(), 1e-12) << k;
     EXPECT_LT((saved.covariance(24 + k) - 0.09 * blend.covariance).norm(), 1e-12) << k;
     EXPECT_LT((p - from).cross(along).norm() / along.norm(), 1e-12) << k << ": off its edge";
-    if (k % 2 == 1) EXPECT_LT((p - middle(a, b)).norm(), 1e-12) << k;
+    if (k % 2 == 1) {
+      EXPECT_LT((p - middle(a, b)).norm(), 1e-12) << k;
+    }
   }
   ASSERT_EQ(saved.sharpness.creases.size(), 4u);
   for (int v = 24; v < 28; ++v) EXPECT_EQ(saved.sharpness.crease(v, v + 1), kInfiniteSharpness) << v;
