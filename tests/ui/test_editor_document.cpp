@@ -166,7 +166,7 @@ TEST(EditorDocument, AModellingOperationIsOneExactUndoStep) {
   ASSERT_TRUE(doc.commit_edit());
   const CovarianceMesh moved = doc.mesh();
   const Modelled cut = loop_cut(doc.mesh(), 0, 4, 2);
-  doc.apply(cut, {6});
+  doc.apply(cut, {{6}});
   EXPECT_TRUE(doc.take_changed().empty()) << "a new topology is rebuilt, not updated";
   expect_same_mesh(doc.mesh(), cut.mesh);
   doc.begin_edit();
@@ -177,7 +177,7 @@ TEST(EditorDocument, AModellingOperationIsOneExactUndoStep) {
   expect_same_mesh(doc.mesh(), cut.mesh);
   const auto selection = doc.undo();
   ASSERT_TRUE(selection.has_value());
-  EXPECT_EQ(*selection, std::vector<int>{6});
+  EXPECT_EQ(selection->vertices, std::vector<int>{6});
   expect_same_mesh(doc.mesh(), moved);
   doc.undo();
   expect_same_mesh(doc.mesh(), original);
@@ -188,9 +188,23 @@ TEST(EditorDocument, AModellingOperationIsOneExactUndoStep) {
   doc.redo();
   const auto redone = doc.redo();
   ASSERT_TRUE(redone.has_value());
-  EXPECT_EQ(*redone, cut.selection);
+  EXPECT_EQ(redone->vertices, cut.selection);
   expect_same_mesh(doc.mesh(), cut.mesh);
   EXPECT_TRUE(doc.dirty());
+}
+
+// The selection an operation started from comes back with its undo as it was: edges held in edge
+// mode stay edges (not every edge between their ends); the redo selects the result's vertices.
+TEST(EditorDocument, UndoGivesBackTheEdgesTheSelectionHeld) {
+  EditorDocument doc;
+  doc.open_sample("cube");
+  const SelectionRecord edges{{2, 3, 6, 7}, {{2, 3}, {6, 7}}, true};
+  const Modelled cut = loop_cut(doc.mesh(), 0, 4, 2);
+  doc.apply(cut, edges);
+  EXPECT_EQ(doc.undo(), edges);
+  const auto redone = doc.redo();
+  ASSERT_TRUE(redone.has_value());
+  EXPECT_EQ(*redone, SelectionRecord{cut.selection});
 }
 
 // An extrusion and the move that follows it undo as one step; a tool cancelled after its operation
@@ -200,10 +214,10 @@ TEST(EditorDocument, AMoveFoldsIntoTheOperationBeforeIt) {
   doc.open_sample("cube");
   const CovarianceMesh original = doc.mesh();
   const Modelled extruded = extrude_vertices(doc.mesh(), {4, 5, 6, 7}, Vec3::Zero());
-  doc.apply(extruded, {4, 5, 6, 7});
+  doc.apply(extruded, {{4, 5, 6, 7}});
   doc.begin_edit();
   for (const int v : extruded.selection) doc.set_mean(v, doc.mesh().mean(size_t(v)) + Vec3(0, 0, 1));
-  EXPECT_TRUE(doc.commit_edit_into_last_operation(extruded.selection));
+  EXPECT_TRUE(doc.commit_edit_into_last_operation({extruded.selection}));
   const CovarianceMesh result = doc.mesh();
   doc.undo();
   expect_same_mesh(doc.mesh(), original);

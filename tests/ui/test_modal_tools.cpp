@@ -13,6 +13,7 @@
 #include "core/io/mesh_io.h"
 #include "core/modelling/bevel.h"
 #include "core/modelling/loop_cut.h"
+#include "core/modelling/mesh_arrays.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/samples.h"
 #include "core/modelling/slide.h"
@@ -50,7 +51,7 @@ struct Editor {
   ToolContext context() {
     ToolContext c(document, selection, reach);
     c.install = [this](const Modelled& result, SharpnessReplanner*) {
-      document.apply(result, selection.vertices());
+      document.apply(result, selection.record());
       selection.select(result.selection, false);
       shown.reset();
       ++installed;
@@ -70,7 +71,7 @@ struct Editor {
     c.show_preview = [this](std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>&,
                             std::optional<PlannedSurface>) { shown = std::move(mesh); };
     c.show_document = [this](std::optional<PlannedSurface>) { shown.reset(); };
-    c.rebuild = [](const std::vector<int>&) {};
+    c.rebuild = [](const SelectionRecord&) {};
     c.report = c.note = c.show_status = [this](const std::string& message, bool) { said = message; };
     return c;
   }
@@ -150,9 +151,11 @@ TEST(BevelTool, ARefusalIsShownAndConfirmingItChangesNothing) {
   BevelOptions straight = width(0.25);
   straight.profile = 0.25;
   EXPECT_TRUE(test::same_mesh(*editor.shown, bevel_edges(cube(), {{6, 7}}, straight).mesh));
-  // A vertex on the boundary (a grid's corner): core refuses it, whatever the width.
-  const CovarianceMesh plane = make_sample("grid", 16);
-  Editor flat(plane, {0});
+  // A vertex on no face (added to a grid): core refuses it, whatever the width.
+  MeshArrays arrays = arrays_of(make_sample("grid", 16));
+  const int loose = arrays.add_vertex({Vec3(0, 0, 5), Mat3::Identity()});
+  const CovarianceMesh plane = build_mesh(arrays);
+  Editor flat(plane, {loose});
   ToolContext f = flat.context();
   const auto refused = BevelTool::start(f, true);
   ASSERT_TRUE(refused);

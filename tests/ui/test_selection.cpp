@@ -182,6 +182,25 @@ TEST(Selection, ModeSwitchesConvertAsBlenderDoes) {
 
 // Held edges name vertices of the mesh they were picked on; on another mesh only those that are
 // still its edges count.
+// What the undo history keeps gives back the held edges, not every edge between their ends; a record
+// of vertices alone selects vertices.
+TEST(Selection, ARecordRestoresTheEdgesItHeld) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4);
+  Selection s;
+  s.select_edges(grid, {{6, 7}, {11, 12}}, false);
+  const SelectionRecord record = s.record();
+  EXPECT_TRUE(record.holds_edges);
+  s.select({6, 7, 11, 12}, false);  // the ends alone: the quad's four sides
+  EXPECT_EQ(s.edges(grid).size(), 4u);
+  s.restore(record);
+  EXPECT_TRUE(s.holds_edges());
+  EXPECT_EQ(s.edges(grid), (Edges{{6, 7}, {11, 12}}));
+  EXPECT_EQ(s.vertices(), (std::vector<int>{6, 7, 11, 12}));
+  s.restore({{1, 2}});
+  EXPECT_FALSE(s.holds_edges());
+  EXPECT_EQ(s.vertices(), (std::vector<int>{1, 2}));
+}
+
 TEST(Selection, HeldEdgesNotInTheMeshAreLeftOut) {
   const CovarianceMesh grid = test::grid_mesh(4, 4);
   const CovarianceMesh cube = make_sample("cube");  // 8 vertices; 0–1 an edge, 0–5 a face's diagonal

@@ -14,8 +14,10 @@
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/sharpness.h"
+#include "core/modelling/bevel.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/samples.h"
+#include "tests/support/mesh_checks.h"
 #include "tests/support/test_meshes.h"
 
 namespace gps {
@@ -75,6 +77,20 @@ TEST_F(EditorEdges, ShiftECreasesTheSelectedEdgesNotTheEdgesBetweenTheirEnds) {
   as_vertices.key("1").wait().key("shift+e").wait().text("10").wait().key("enter").wait(3);
   EXPECT_EQ(play(as_vertices, "as_vertices_creased.png").sharpness.creases,
             (std::vector<EdgeCrease>{{2, 3, kInf}, {2, 6, kInf}, {3, 7, kInf}, {6, 7, kInf}}));
+}
+
+// Two edges bevelled (Ctrl+B), then undone (Ctrl+Z): the selection comes back as those two edges, not
+// the top face's four sides between their ends, so a second Ctrl+B bevels the same two edges.
+TEST_F(EditorEdges, UndoOfABevelGivesBackItsEdgesForTheNext) {
+  Events again = two_top_edges_selected();
+  again.key("ctrl+b").wait().text("0.25").wait().key("enter").wait();
+  again.key("ctrl+z").wait();
+  again.key("ctrl+b").wait().text("0.25").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(again, "bevel_undone_and_again.png");
+  BevelOptions o;
+  o.width = 0.25;
+  EXPECT_TRUE(test::same_mesh(saved, bevel_edges(original_, {{2, 3}, {6, 7}}, o).mesh));
+  EXPECT_EQ(saved.n_vertices(), 12u);
 }
 
 TEST_F(EditorEdges, SelectSharpEdgesTakesTheCubesTwelveEdges) {

@@ -34,7 +34,7 @@ void EditHistory::commit(VertexEdit edit, const CovarianceMesh& mesh) {
 
 void EditHistory::commit(MeshReplacement replacement) { push({VertexEdit{}, std::move(replacement)}); }
 
-bool EditHistory::fold_last_into_replacement(const CovarianceMesh& mesh, const std::vector<int>& selection) {
+bool EditHistory::fold_last_into_replacement(const CovarianceMesh& mesh, const SelectionRecord& selection) {
   if (position_ < 2 || position_ != steps_.size()) return false;
   Step& replaced = steps_[position_ - 2];
   if (!replaced.replacement || steps_[position_ - 1].replacement) return false;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "ui/document/selection_record.h"
 
 namespace gps {
 
@@ -18,17 +19,17 @@ struct VertexEdit {
   std::vector<Mat3> covariances_before, covariances_after;
 };
 
-/// The whole mesh before and after a modelling operation, with the selected vertices of each.
+/// The whole mesh before and after a modelling operation, with the selection of each.
 struct MeshReplacement {
   std::shared_ptr<const CovarianceMesh> before, after;
-  std::vector<int> selection_before, selection_after;
+  SelectionRecord selection_before, selection_after;
 };
 
 /// What an undo or redo restored: the vertices whose Gaussians it set, or a whole mesh (with the
 /// selection that goes with it).
 struct Restored {
   std::vector<int> vertices;
-  std::optional<std::vector<int>> replaced_selection;  // set: the mesh was replaced as a whole
+  std::optional<SelectionRecord> replaced_selection;  // set: the mesh was replaced as a whole
 };
 
 class EditHistory {
@@ -42,7 +43,7 @@ public:
   /// Folds the last step, a vertex edit, into the replacement before it: the replacement's result
   /// becomes `mesh` (e.g. an extrusion and the move that follows it undo as one). False when the last
   /// two steps are not a replacement then a vertex edit.
-  bool fold_last_into_replacement(const CovarianceMesh& mesh, const std::vector<int>& selection);
+  bool fold_last_into_replacement(const CovarianceMesh& mesh, const SelectionRecord& selection);
 
   /// Forgets the steps that redo would replay (a cancelled tool's undone step).
   void drop_redo();

@@ -136,25 +136,25 @@ void EditorDocument::cancel_edit() {
   edit_index_.clear();
 }
 
-void EditorDocument::apply(const Modelled& result, const std::vector<int>& selection_before) {
+void EditorDocument::apply(const Modelled& result, const SelectionRecord& selection_before) {
   if (edit_) commit_edit();
   MeshReplacement step;
   step.before = std::make_shared<const CovarianceMesh>(std::move(mesh_));
   step.after = std::make_shared<const CovarianceMesh>(result.mesh);
   step.selection_before = selection_before;
-  step.selection_after = result.selection;
+  step.selection_after.vertices = result.selection;
   mesh_ = result.mesh;
   history_.commit(std::move(step));
   changed_.clear();  // the vertices are new: the GPU rebuilds
 }
 
-bool EditorDocument::commit_edit_into_last_operation(const std::vector<int>& selection) {
+bool EditorDocument::commit_edit_into_last_operation(const SelectionRecord& selection) {
   if (!commit_edit()) return false;
   history_.fold_last_into_replacement(mesh_, selection);
   return true;
 }
 
-std::optional<std::vector<int>> EditorDocument::undo() {
+std::optional<SelectionRecord> EditorDocument::undo() {
   if (!can_undo()) return std::nullopt;
   Restored restored = history_.undo(mesh_);
   if (restored.replaced_selection) changed_.clear();
@@ -162,7 +162,7 @@ std::optional<std::vector<int>> EditorDocument::undo() {
   return restored.replaced_selection;
 }
 
-std::optional<std::vector<int>> EditorDocument::redo() {
+std::optional<SelectionRecord> EditorDocument::redo() {
   if (!can_redo()) return std::nullopt;
   Restored restored = history_.redo(mesh_);
   if (restored.replaced_selection) changed_.clear();
@@ -170,8 +170,8 @@ std::optional<std::vector<int>> EditorDocument::redo() {
   return restored.replaced_selection;
 }
 
-std::optional<std::vector<int>> EditorDocument::discard_last_operation() {
-  std::optional<std::vector<int>> selection = undo();
+std::optional<SelectionRecord> EditorDocument::discard_last_operation() {
+  std::optional<SelectionRecord> selection = undo();
   history_.drop_redo();
   return selection;
 }

@@ -70,17 +70,18 @@ public:
   void cancel_edit();
 
   /// Replaces the mesh by a modelling operation's result as one undo step, which restores the mesh
-  /// exactly (vertices, faces, their order and values) and `selection_before` with it. Closes an open
-  /// edit first. The GPU must rebuild for the new mesh (take_changed() does not list it).
-  void apply(const Modelled& result, const std::vector<int>& selection_before);
+  /// exactly (vertices, faces, their order and values) and `selection_before` with it; the redo
+  /// selects the result's vertices. Closes an open edit first. The GPU must rebuild for the new mesh
+  /// (take_changed() does not list it).
+  void apply(const Modelled& result, const SelectionRecord& selection_before);
   /// Closes the open edit and folds it into the modelling step just applied, so that both undo as
   /// one (an extrusion and its move); `selection` goes with the result. Without such a step it
   /// commits the edit as its own step. Returns whether anything changed.
-  bool commit_edit_into_last_operation(const std::vector<int>& selection);
+  bool commit_edit_into_last_operation(const SelectionRecord& selection);
 
   /// Undoes the last step and forgets it (no redo): a modal tool cancelled after its operation was
   /// applied. Returns the selection before it when it replaced the mesh.
-  std::optional<std::vector<int>> discard_last_operation();
+  std::optional<SelectionRecord> discard_last_operation();
 
   /// Names the last applied step (EditHistory::last_step).
   std::uint64_t last_step() const { return history_.last_step(); }
@@ -88,8 +89,8 @@ public:
   bool can_redo() const { return !editing() && history_.can_redo(); }
   /// Undo and redo; when the step replaced the whole mesh they return the selection that goes with
   /// the restored mesh (the GPU must rebuild), else nullopt (take_changed() lists the vertices).
-  std::optional<std::vector<int>> undo();
-  std::optional<std::vector<int>> redo();
+  std::optional<SelectionRecord> undo();
+  std::optional<SelectionRecord> redo();
 
   /// Keeps the vertices on the plane that start an edit on it (none: no clipping).
   void set_clip(std::optional<PlaneClip> clip) { clip_ = clip; }

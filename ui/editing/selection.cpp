@@ -121,6 +121,11 @@ void Selection::clear() {
   last_clicked_ = -1;
 }
 
+void Selection::restore(const SelectionRecord& record) {
+  select(record.vertices, false);
+  if (record.holds_edges) set_edges(record.edges);
+}
+
 void Selection::set_edges(std::vector<EdgeEnds> edges) {
   edges_ = normalized(std::move(edges));
   holds_edges_ = true;

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "core/mesh/covariance_mesh.h"
+#include "ui/document/selection_record.h"
 #include "view/camera.h"
 
 namespace gps {
@@ -80,6 +81,13 @@ public:
     edges_.clear();
     holds_edges_ = false;
   }
+
+  // As the undo history keeps it.
+
+  /// The vertices and the edges held, the active vertex left out.
+  SelectionRecord record() const { return {vertices_, edges_, holds_edges_}; }
+  /// Selects exactly what `record` holds (its edges held where it held them).
+  void restore(const SelectionRecord& record);
 
 private:
   void set_edges(std::vector<EdgeEnds> edges);

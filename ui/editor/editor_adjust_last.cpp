@@ -30,7 +30,7 @@ void EditorApp::adjust_last(const std::vector<double>& values) {
     return;
   }
   // The mesh before it (whose copy `before` is) and its selection, which the new step restores on undo.
-  if (const auto selection = document_.discard_last_operation()) selection_.select(*selection, false);
+  if (const auto selection = document_.discard_last_operation()) selection_.restore(*selection);
   if (!operate(
           op.name, [&](const CovarianceMesh&) { return remade; }, nullptr))
     return;

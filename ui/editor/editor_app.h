@@ -112,7 +112,7 @@ private:
   // which re-plans a result of the same topology and other sharpness around the changes only.
   void install(const Modelled& result, SharpnessReplanner* replanner = nullptr);
   void topology_changed(const std::vector<int>& selection);
-  void rebuild_after_undo(const std::vector<int>& selection);
+  void rebuild_after_undo(const SelectionRecord& selection);
   void operation_note(const std::string& message, bool error);
   // The Inspector's crease or corner field: the selection's sharpness set as one undo step.
   void apply_sharpness(bool corners, double sharpness);

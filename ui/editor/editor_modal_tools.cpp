@@ -32,7 +32,7 @@ ToolContext EditorApp::tool_context() {
     show_preview(std::move(mesh), selected, std::move(surface));
   };
   c.show_document = [this](std::optional<PlannedSurface> surface) { show_document(std::move(surface)); };
-  c.rebuild = [this](const std::vector<int>& selection) { rebuild_after_undo(selection); };
+  c.rebuild = [this](const SelectionRecord& selection) { rebuild_after_undo(selection); };
   c.report = [this](const std::string& message, bool error) { set_status(message, error); };
   c.note = [this](const std::string& message, bool error) { operation_note(message, error); };
   c.show_status = [this](const std::string& message, bool error) { status_ = message, status_error_ = error; };

@@ -324,7 +324,7 @@ void EditorApp::install(const Modelled& result, SharpnessReplanner* replanner) {
   surface_changed();
   preview_.reset();
   preview_selection_.clear();
-  document_.apply(result, selection_.vertices());
+  document_.apply(result, selection_.record());
   last_summary_ = result.summary;
   topology_changed(result.selection);
 }
@@ -339,14 +339,15 @@ void EditorApp::topology_changed(const std::vector<int>& selection) {
   refresh_hidden();
 }
 
-void EditorApp::rebuild_after_undo(const std::vector<int>& selection) {
+void EditorApp::rebuild_after_undo(const SelectionRecord& selection) {
   try {
     show_mesh(document_.mesh(), view_.plans());
     surface_changed();
   } catch (const Error& e) {
     set_status(e.what(), true);
   }
-  topology_changed(selection);
+  topology_changed(selection.vertices);
+  selection_.restore(selection);
 }
 
 void EditorApp::apply_sharpness(bool corners, double sharpness) {

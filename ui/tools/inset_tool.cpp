@@ -44,7 +44,7 @@ std::unique_ptr<ModalTool> InsetTool::start(ToolContext& ctx) {
   std::unique_ptr<InsetTool> tool(new InsetTool);
   tool->base_ = std::make_shared<const CovarianceMesh>(mesh);
   tool->faces_ = std::move(faces);
-  tool->selection_before_ = ctx.selection.vertices();
+  tool->selection_before_ = ctx.selection.record();
   tool->centre_ = centre_of_vertices(mesh, ctx.selection.vertices());
   tool->start_cursor_ = ctx.cursor;
   tool->status_ = "inset: move toward the faces' centre (or type the thickness), click or Enter confirms, Esc cancels";
@@ -88,7 +88,7 @@ void InsetTool::end(bool keep, ToolContext& ctx) {
   if (!applied_) {
     ctx.report(keep ? "inset: nothing done (move toward the centre or type a thickness)" : "inset cancelled", false);
   } else if (keep) {
-    ctx.document.commit_edit_into_last_operation(ctx.selection.vertices());
+    ctx.document.commit_edit_into_last_operation(ctx.selection.record());
     ctx.note("inset: " + summary_, false);
     if (ctx.adjustable) {
       const std::vector<int> faces = faces_;

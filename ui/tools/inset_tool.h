@@ -27,7 +27,8 @@ private:
   void end(bool keep, ToolContext& ctx);
 
   std::shared_ptr<const CovarianceMesh> base_;
-  std::vector<int> faces_, selection_before_;
+  std::vector<int> faces_;
+  SelectionRecord selection_before_;
   Vec3 centre_ = Vec3::Zero();
   glm::vec2 start_cursor_{0.0f};
   TypedNumber typed_;

@@ -116,7 +116,7 @@ void LoopCutTool::end(bool keep, ToolContext& ctx) {
     return;
   }
   if (keep) {
-    ctx.document.commit_edit_into_last_operation(ctx.selection.vertices());
+    ctx.document.commit_edit_into_last_operation(ctx.selection.record());
   } else {
     ctx.document.cancel_edit();
     slide_ = 0.0;

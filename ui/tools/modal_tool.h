@@ -14,6 +14,7 @@
 #include "core/mesh/covariance_mesh.h"
 #include "core/modelling/mesh_arrays.h"
 #include "core/plans/planned_surface.h"
+#include "ui/document/selection_record.h"
 #include "ui/editing/adjustable_operation.h"
 #include "ui/editing/edit_reach.h"
 #include "ui/editing/snap_options.h"
@@ -71,7 +72,7 @@ struct ToolContext {
   /// Shows the document's mesh again (`surface`: its planned surface, else planned anew); a failure is reported.
   std::function<void(std::optional<PlannedSurface> surface)> show_document;
   /// The document's mesh was replaced outside install (an undone step): rebuilds for it, with `selection`.
-  std::function<void(const std::vector<int>& selection)> rebuild;
+  std::function<void(const SelectionRecord& selection)> rebuild;
   /// A message in the status line, printed (and, with `note`, in the Inspector too); `show_status`
   /// only shows it.
   std::function<void(const std::string&message, bool error)> report, note, show_status;

@@ -204,7 +204,7 @@ void TransformTool::end(bool keep, ToolContext& ctx) {
     return;
   }
   if (folds_) {
-    ctx.document.commit_edit_into_last_operation(ctx.selection.vertices());
+    ctx.document.commit_edit_into_last_operation(ctx.selection.record());
     make_adjustable(transform_->map(0).translation, ctx);
     ctx.show_status(operation_ + ": " + operation_summary_, false);  // shown again, not printed again
     return;
