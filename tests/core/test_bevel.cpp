@@ -332,18 +332,7 @@ TEST(BevelEdges, ClampStopsNewVerticesWhereTheyMeet) {
 // Open meshes: a flat grid of 3 × 3 unit quads, vertex 4 j + i at (i, j, 0), its faces facing +z;
 // its boundary is one loop of 12 vertices (1 and 2 on the bottom side have valence 3, 0 is a corner
 // of valence 2).
-CovarianceMesh flat_grid(int n = 3, double sigma = 0.1) {
-  std::vector<Vec3> p;
-  std::vector<std::vector<int>> faces;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) p.emplace_back(i, j, 0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      faces.push_back({a, a + 1, a + n + 2, a + n + 1});
-    }
-  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "flat grid");
-}
+CovarianceMesh flat_grid(int n = 3, double sigma = 0.1) { return test::grid_mesh(n, n, sigma, true); }
 
 /// Whether every directed edge of the faces appears once (manifold along edges and consistently
 /// oriented) and no vertex is twice on the boundary loops (manifold at vertices).

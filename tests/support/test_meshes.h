@@ -11,12 +11,14 @@
 
 namespace gps::test {
 
-/// An (n × m)-quad grid in the xy-plane with a gentle bump in z; covariance sigma²·I everywhere.
-inline CovarianceMesh grid_mesh(int n, int m, double sigma = 0.3) {
+/// An (n × m)-quad grid of unit quads, vertex j (n + 1) + i at (i, j), with a gentle bump in z unless
+/// `flat`; faces facing +z; covariance sigma²·I everywhere.
+inline CovarianceMesh grid_mesh(int n, int m, double sigma = 0.3, bool flat = false) {
   std::vector<Vec3> p;
   std::vector<std::vector<int>> faces;
   for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= n; ++i) p.emplace_back(i, j, 0.3 * std::sin(0.7 * i) * std::cos(0.5 * j) + 0.05 * i * j);
+    for (int i = 0; i <= n; ++i)
+      p.emplace_back(i, j, flat ? 0.0 : 0.3 * std::sin(0.7 * i) * std::cos(0.5 * j) + 0.05 * i * j);
   for (int j = 0; j < m; ++j)
     for (int i = 0; i < n; ++i) {
       const int a = j * (n + 1) + i;

@@ -408,14 +408,27 @@ TEST_F(EditorTools, SplitDetachesTheSelectedFace) {
 // The cylinder without its top: Alt+click beside the rim's front edge selects the hole's boundary
 // loop, Ctrl+F fills it with core's 2 × 2 grid (its summary: 1 vertex added); F9 and a span of 1
 // typed in the panel make it again as a 3 × 1 grid: core's, closed and outward, one undo step.
-TEST_F(EditorTools, GridFillClosesTheSelectedHole) {
-  use_mesh(delete_faces(make_sample("cylinder"), {16}).mesh);
-  const std::vector<int> rim = boundary_loops(original_).at(0);
-  ASSERT_EQ(rim.size(), 8u);
-  size_t front = 0;  // the rim edge lowest on screen, nearest the camera looking down on the hole
-  for (size_t k = 0; k < rim.size(); ++k)
-    if (pixel_at({rim[k], rim[(k + 1) % 8]}).y > pixel_at({rim[front], rim[(front + 1) % 8]}).y) front = k;
-  const glm::vec2 middle = pixel_at({rim[front], rim[(front + 1) % 8]}), centre = pixel_at(rim);
+// The cylinder without its top as the mesh edited; its rim's edge lowest on screen, nearest the camera
+// looking down on the hole, (min, max).
+class EditorToolsOpenCylinder : public EditorTools {
+protected:
+  void SetUp() override {
+    EditorTools::SetUp();
+    use_mesh(delete_faces(make_sample("cylinder"), {16}).mesh);
+    rim_ = boundary_loops(original_).at(0);
+    ASSERT_EQ(rim_.size(), 8u);
+    size_t front = 0;
+    for (size_t k = 0; k < rim_.size(); ++k)
+      if (pixel_at({rim_[k], rim_[(k + 1) % 8]}).y > pixel_at({rim_[front], rim_[(front + 1) % 8]}).y) front = k;
+    front_ = {std::min(rim_[front], rim_[(front + 1) % 8]), std::max(rim_[front], rim_[(front + 1) % 8])};
+  }
+  std::vector<int> rim_;
+  std::array<int, 2> front_{};
+};
+
+TEST_F(EditorToolsOpenCylinder, GridFillClosesTheSelectedHole) {
+  const std::vector<int>& rim = rim_;
+  const glm::vec2 middle = pixel_at({front_[0], front_[1]}), centre = pixel_at(rim);
   const glm::vec2 span_field(70.0f, 267.0f);  // the F9 panel's first row (as the bevel's test)
   Events fill;
   fill.click(middle + 3.0f * glm::normalize(centre - middle), "alt").wait().key("ctrl+f").wait();
@@ -435,15 +448,9 @@ TEST_F(EditorTools, GridFillClosesTheSelectedHole) {
 // The cylinder without its top: Ctrl+B on the rim's front edge (a boundary edge) makes core's band in
 // the face below it, the rim kept: one boundary loop of 8 edges still, oriented, 2 vertices and 1 face
 // more.
-TEST_F(EditorTools, BevelOfAnOpenRimKeepsItOpen) {
-  use_mesh(delete_faces(make_sample("cylinder"), {16}).mesh);
-  const std::vector<int> rim = boundary_loops(original_).at(0);
-  ASSERT_EQ(rim.size(), 8u);
-  size_t front = 0;  // the rim edge lowest on screen, nearest the camera looking down on the hole
-  for (size_t k = 0; k < rim.size(); ++k)
-    if (pixel_at({rim[k], rim[(k + 1) % 8]}).y > pixel_at({rim[front], rim[(front + 1) % 8]}).y) front = k;
-  const int a = std::min(rim[front], rim[(front + 1) % 8]), b = std::max(rim[front], rim[(front + 1) % 8]);
-  const glm::vec2 middle = pixel_at({a, b}), centre = pixel_at(rim);
+TEST_F(EditorToolsOpenCylinder, BevelOfAnOpenRimKeepsItOpen) {
+  const int a = front_[0], b = front_[1];
+  const glm::vec2 middle = pixel_at({a, b}), centre = pixel_at(rim_);
   Events bevel;
   bevel.key("2").wait().click(middle + 2.0f * glm::normalize(centre - middle)).wait();
   bevel.key("ctrl+b").wait().text("0.2").wait().key("enter").wait(3);
