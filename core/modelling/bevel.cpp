@@ -404,8 +404,8 @@ private:
     std::vector<int> out{left};
     for (int i = 1; i < o_.segments; ++i) {
       const double t = double(i) / o_.segments;
-      out.push_back(a_.add_vertex({(1 - t) * mean(left) + t * mean(right),
-                                   blend_gaussians(a_, {{left, 1 - t}, {right, t}}).covariance}));
+      out.push_back(a_.add_vertex(
+          {(1 - t) * mean(left) + t * mean(right), blend_gaussians(a_, {{left, 1 - t}, {right, t}}).covariance}));
     }
     out.push_back(right);
     return out;

@@ -507,7 +507,9 @@ TEST(BevelAtBoundaries, ATooWideBevelWithoutClampIsRefusedAndChangesNothing) {
   const MeshArrays before = arrays_of(grid);
   BevelOptions o = width(1.5);
   o.clamp = false;
-  EXPECT_EQ(error_of([&] { bevel_edges(grid, {{1, 2}}, o); }),
+  EXPECT_EQ(error_of([&] {
+              bevel_edges(grid, {{1, 2}}, o);
+            }),
             "a width of 1.5 would carry new vertices past each other on edge 1–5 (at most 1; clamp limits it)");
   EXPECT_EQ(error_of([&] { bevel_vertices(grid, {0}, o); }),
             "a width of 1.5 would carry new vertices past each other on edge 0–1 (at most 1; clamp limits it)");
@@ -531,9 +533,9 @@ TEST(BevelAtBoundaries, AnySetOfEdgesOrVerticesOnOpenMeshesStaysManifoldWithItsB
   const CovarianceMesh wheel = make_covariance_mesh(
       wheel_points, std::vector<Mat3>(wheel_points.size(), 0.01 * Mat3::Identity()), spokes, "half wheel");
   const std::vector<std::pair<std::string, CovarianceMesh>> meshes = {
-      {"grid", grid_mesh(6, 5)},        {"flat grid", flat_grid(4)},
-      {"half wheel", wheel},            {"triangle grid", test::triangle_grid_mesh(5, 4)},
-      {"cone", make_sample("cone")},    {"open cylinder", delete_faces(cylinder, {cap[0]}).mesh}};
+      {"grid", grid_mesh(6, 5)},     {"flat grid", flat_grid(4)},
+      {"half wheel", wheel},         {"triangle grid", test::triangle_grid_mesh(5, 4)},
+      {"cone", make_sample("cone")}, {"open cylinder", delete_faces(cylinder, {cap[0]}).mesh}};
   for (const auto& [name, mesh] : meshes) {
     const bool flat = name == "flat grid" || name == "half wheel";
     const MeshArrays a = arrays_of(mesh);
@@ -550,7 +552,8 @@ TEST(BevelAtBoundaries, AnySetOfEdgesOrVerticesOnOpenMeshesStaysManifoldWithItsB
     for (int trial = 0; trial < 30; ++trial) {
       std::vector<std::array<int, 2>> chosen;
       const size_t count = 1 + rng() % 5;
-      for (size_t i = 0; i < count; ++i) chosen.push_back(rng() % 2 ? rim[rng() % rim.size()] : edges[rng() % edges.size()]);
+      for (size_t i = 0; i < count; ++i)
+        chosen.push_back(rng() % 2 ? rim[rng() % rim.size()] : edges[rng() % edges.size()]);
       if (trial % 5 == 0) chosen = rim;  // a whole rim
       const int segments = 1 + int(rng() % 3);
       try {
