@@ -18,11 +18,12 @@ checkout=$(sed -n 's/^# Checkout: //p' out/gpu-bundle/run.sh | head -1)
 if [ -n "$checkout" ] && [ ! -e "$checkout" ]; then mkdir -p "$(dirname "$checkout")" && ln -s "$PWD" "$checkout"; fi
 nvidia-smi --query-gpu=name,driver_version --format=csv,noheader || true
 results=$(mktemp -d)
-out/gpu-bundle/run.sh "$results" "${1:-all}" > "$results/run.txt" 2>&1
+# Bounded, so that what ran is packed even where the device session is short (GPSURF_GPU_SECONDS).
+timeout "${GPSURF_GPU_SECONDS:-420}" out/gpu-bundle/run.sh "$results" "${1:-all}" > "$results/run.txt" 2>&1
 echo "bundle built from ${built_in:-?}"
 cat "$results/tests.txt" 2>/dev/null
 grep -h "FAILED  \]\|Failure" "$results"/test_*.log 2>/dev/null | sort -u | head -40
 grep -h "x5000\|x200 " "$results/test_comparison_images.log" 2>/dev/null
-grep -h "^Frame\|^Preprocess" "$results/plan_depth.txt" 2>/dev/null
+grep -h "^Frame\|^Preprocess" "$results/plan_depth.txt" "$results/creases.txt" 2>/dev/null
 tar -czf "${OUT:-out}/gpu-results.tgz" -C "$results" .
 echo "logs: ${OUT:-out}/gpu-results.tgz"
