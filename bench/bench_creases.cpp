@@ -1,7 +1,7 @@
 // Creases against the same mesh without them: per mesh and crease kind, the live frame (every
 // patch evaluated, surface cache off) at equal tessellation, the preprocessing (plans and stencils)
 // and the tables' memory; and a sharpness change on a large creased mesh, re-planned in full against
-// incrementally (core/plans/sharpness_replanner.h), both timed in the same run. Crease kinds: none ("smooth"), the same edges infinitely sharp ("sharp"),
+// incrementally (core/plans/surface_replanner.h), both timed in the same run. Crease kinds: none ("smooth"), the same edges infinitely sharp ("sharp"),
 // semi-sharp at 2.5 ("semi2.5"). The edges: those of the wirecube's square beams (sharp by angle,
 // every beam edge) and three great circles of the sphere and the torus (edges in a coordinate
 // plane). Run with --benchmark_enable_random_interleaving=true and --benchmark_repetitions=N so that
@@ -21,7 +21,7 @@
 #include "core/support/error.h"
 #include "core/modelling/samples.h"
 #include "core/plans/planned_surface.h"
-#include "core/plans/sharpness_replanner.h"
+#include "core/plans/surface_replanner.h"
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"
 #include "view/camera.h"
@@ -95,7 +95,7 @@ void BM_SharpnessChange(benchmark::State& state, MeshCase m) {
   gps::CovarianceMesh mesh = sample(m, 2);
   const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
   const gps::PlanOptions options;
-  gps::SharpnessReplanner replanner(topology, options, mesh.sharpness);
+  gps::SurfaceReplanner replanner(topology, options, mesh.sharpness);
   std::vector<std::pair<int, int>> edges;
   for (const auto& e : mesh.mesh.edges()) edges.emplace_back(e.v0().idx(), e.v1().idx());
   double full_plans = 0, incremental_plans = 0, full_surface = 0, incremental_surface = 0;

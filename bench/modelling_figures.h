@@ -1,7 +1,7 @@
 #pragma once
 // `gpsurf bench --model`: operation-to-frame time of the modelling operations on a large mesh: the
-// operation (core/modelling/), the re-plan and upload of the new topology, and the frame that shows
-// it. A current GL context needed.
+// operation (core/modelling/), the incremental re-plan of the new topology beside a full one, the
+// upload, and the frame that shows it. A current GL context needed.
 #include <nlohmann/json.hpp>
 #include <string>
 

@@ -58,6 +58,7 @@ Modelled without_faces(MeshArrays a, const std::vector<char>& removed, const std
   drop_unused_vertices(a);
   Modelled out;
   out.mesh = build_mesh(a);
+  out.vertex_origin = vertex_origin(a);
   out.summary = summary(head, faces_removed, size_t(n_vertices - a.n_vertices()), count_faces);
   return out;
 }
@@ -178,6 +179,7 @@ Modelled merged(MeshArrays& a, FaceMerger& merger, const std::string& head) {
   drop_unused_vertices(a);
   Modelled out;
   out.mesh = build_mesh(a);
+  out.vertex_origin = vertex_origin(a);
   out.summary = summary(head, size_t(n_faces - a.n_faces()), size_t(n_vertices - a.n_vertices()), true);
   return out;
 }

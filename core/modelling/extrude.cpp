@@ -47,6 +47,7 @@ Modelled extruded_faces(MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
   out.selection = move_region(a, r, shift);
   if (triangles) split_new_quads(a, n_faces);
   out.mesh = build_mesh(a);
+  out.vertex_origin = vertex_origin(a);
   out.summary = "extruded " + count_of(r.faces.size(), "face", "faces") + ": " +
                 count_of(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
                 count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
@@ -67,6 +68,7 @@ Modelled extruded_edges(MeshArrays& a, const std::vector<std::pair<int, int>>& d
   Modelled out;
   for (const auto& [v, c] : copy) out.selection.push_back(c);
   out.mesh = build_mesh(a);
+  out.vertex_origin = vertex_origin(a);
   out.summary = "extruded " + count_of(directed.size(), "edge", "edges") + ": " +
                 count_of(copy.size(), "vertex", "vertices") + ", " +
                 count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";

@@ -77,9 +77,9 @@ Modelled fill(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
   std::vector<int> face = vertices;
   if (reversed) std::reverse(face.begin(), face.end());
   a.faces.push_back(face);
-  return {
-      build_mesh(a), sorted,
-      "filled a face of " + std::to_string(n) + " vertices" + (reversed ? " (reversed to fit its neighbours)" : "")};
+  return modelled(
+      a, sorted,
+      "filled a face of " + std::to_string(n) + " vertices" + (reversed ? " (reversed to fit its neighbours)" : ""));
 }
 
 Modelled fill_selected(const CovarianceMesh& mesh, const std::vector<int>& vertices) {

@@ -89,6 +89,7 @@ Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, 
       throw Error("a thickness of " + short_number(thickness) + " would turn face " + std::to_string(f) + " inside out");
   }
   out.mesh = build_mesh(a);
+  out.vertex_origin = vertex_origin(a);
   out.summary = "inset " + count_of(r.faces.size(), "face", "faces") + ": " +
                 count_of(out.selection.size(), "vertex", "vertices") + ", " +
                 count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";

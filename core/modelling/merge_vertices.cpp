@@ -65,15 +65,18 @@ MergeResult merge_into(const MeshArrays& in, const std::vector<int>& target,
   }
   a.faces = std::move(faces);
   r.new_index.assign(a.means.size(), -1);
+  const bool origins = a.origin.size() == a.means.size();
   int next = 0;
   for (size_t v = 0; v < a.means.size(); ++v)
     if (target[v] == int(v)) {
       a.means[size_t(next)] = a.means[v];
       a.covariances[size_t(next)] = a.covariances[v];
+      if (origins) a.origin[size_t(next)] = a.origin[v];
       r.new_index[v] = next++;
     }
   a.means.resize(size_t(next));
   a.covariances.resize(size_t(next));
+  a.origin.resize(origins ? size_t(next) : 0);
   for (auto& face : a.faces)
     for (int& v : face) v = r.new_index[size_t(v)];
   std::vector<int> merged_index(in.means.size());
@@ -128,7 +131,7 @@ Modelled merge_vertices(const CovarianceMesh& mesh, const std::vector<int>& vert
   std::iota(target.begin(), target.end(), 0);
   for (int v : group) target[size_t(v)] = group.front();
   const MergeResult r = merge_into(a, target, {{group.front(), g}});
-  Modelled out{build_mesh(r.arrays), {r.new_index[size_t(group.front())]}, ""};
+  Modelled out = modelled(r.arrays, {r.new_index[size_t(group.front())]});
   out.summary = "merged " + std::to_string(group.size()) + " vertices into vertex " +
                 std::to_string(out.selection.front()) + faces_removed_text(r.faces_removed);
   return out;
@@ -184,7 +187,7 @@ Modelled weld_by_distance(const CovarianceMesh& mesh, const std::vector<int>& ve
     removed += int(members.size()) - 1;
   }
   const MergeResult r = merge_into(a, target, gaussians);
-  Modelled out{build_mesh(r.arrays), {}, ""};
+  Modelled out = modelled(r.arrays, {});
   for (const auto& [root, members] : clusters) out.selection.push_back(r.new_index[size_t(root)]);
   std::sort(out.selection.begin(), out.selection.end());
   out.summary = "welded " + std::to_string(clusters.size()) + (clusters.size() == 1 ? " cluster" : " clusters") + ": " +

@@ -1,6 +1,7 @@
 #include "core/modelling/mesh_arrays.h"
 
 #include <algorithm>
+#include <numeric>
 
 #include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
@@ -25,6 +26,7 @@ Sharpness sharpness_on_edges(const MeshArrays& a) {
 }  // namespace
 
 int MeshArrays::add_vertex(const Gaussian& g) {
+  if (origin.size() == means.size()) origin.push_back(-1);
   means.push_back(g.mean);
   covariances.push_back(g.covariance);
   if (!sharpness.corners.empty()) sharpness.corners.resize(means.size(), 0.0);
@@ -37,6 +39,8 @@ MeshArrays arrays_of(const CovarianceMesh& m) {
   for (size_t i = 0; i < m.n_vertices(); ++i) a.means.push_back(m.mean(i));
   a.covariances = m.covariances;
   a.sharpness = m.sharpness;
+  a.origin.resize(m.n_vertices());
+  std::iota(a.origin.begin(), a.origin.end(), 0);
   const PolygonTopology t = topology_of(m.mesh);
   a.faces.resize(size_t(t.n_faces()));
   for (int f = 0; f < t.n_faces(); ++f)
@@ -56,19 +60,30 @@ CovarianceMesh build_mesh(const MeshArrays& a) {
   }
 }
 
+std::vector<int> vertex_origin(const MeshArrays& a) {
+  return a.origin.size() == a.means.size() ? a.origin : std::vector<int>{};
+}
+
+Modelled modelled(const MeshArrays& a, std::vector<int> selection, std::string summary) {
+  return {build_mesh(a), std::move(selection), std::move(summary), vertex_origin(a)};
+}
+
 std::vector<int> drop_unused_vertices(MeshArrays& a) {
   std::vector<int> map(a.means.size(), -1);
   for (const auto& face : a.faces)
     for (int v : face) map[size_t(v)] = 0;
+  const bool origins = a.origin.size() == a.means.size();
   int next = 0;
   for (size_t v = 0; v < map.size(); ++v)
     if (map[v] == 0) {
       a.means[size_t(next)] = a.means[v];
       a.covariances[size_t(next)] = a.covariances[v];
+      if (origins) a.origin[size_t(next)] = a.origin[v];
       map[v] = next++;
     }
   a.means.resize(size_t(next));
   a.covariances.resize(size_t(next));
+  a.origin.resize(origins ? size_t(next) : 0);
   for (auto& face : a.faces)
     for (int& v : face) v = map[size_t(v)];
   a.sharpness = renumbered(a.sharpness, map, next);

@@ -18,6 +18,10 @@ struct MeshArrays {
   std::vector<std::vector<int>> faces;
   /// Creases and corners by vertex index; build_mesh keeps the creases that are edges of the faces.
   Sharpness sharpness;
+  /// Per vertex: its index in the mesh the arrays were made from (arrays_of), −1 for one added since
+  /// (add_vertex); kept by drop_unused_vertices. Shorter than `means` where a vertex was added
+  /// otherwise: then unknown, and the plans are built again whole (core/plans/surface_replanner.h).
+  std::vector<int> origin;
 
   int n_vertices() const { return int(means.size()); }
   int n_faces() const { return int(faces.size()); }
@@ -32,7 +36,16 @@ struct Modelled {
   CovarianceMesh mesh;
   std::vector<int> selection;
   std::string summary;
+  /// Per vertex of `mesh`: its index before the operation, −1 for a new one (MeshArrays::origin);
+  /// empty where not known.
+  std::vector<int> vertex_origin;
 };
+
+/// The outcome of an operation from its arrays: build_mesh's mesh, with the vertices' origins where
+/// the arrays kept them.
+Modelled modelled(const MeshArrays& arrays, std::vector<int> selection, std::string summary = "");
+/// The arrays' origins where they are known (one per vertex), else empty.
+std::vector<int> vertex_origin(const MeshArrays& arrays);
 
 /// The mesh as arrays; faces in the mesh's face order, corners in face_vertices() order.
 MeshArrays arrays_of(const CovarianceMesh& mesh);

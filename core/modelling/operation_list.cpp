@@ -562,12 +562,12 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
         std::vector<int> selection = step.append(*arrays, summary);
         if (summaries) summaries->push_back(summary);
         if (i + 1 < steps_.size() && steps_[i + 1].append) continue;
-        current.reset(new Modelled{build_mesh(*arrays), std::move(selection), std::move(summary)});
+        current.reset(new Modelled(modelled(*arrays, std::move(selection), std::move(summary))));
         arrays.reset();
         continue;
       }
       if (step.in_place) {
-        if (!current) current.reset(new Modelled{mesh, {}, ""});  // the list's one copy of its input
+        if (!current) current.reset(new Modelled{mesh, {}, "", {}});  // the list's one copy of its input
         current->selection = step.in_place(current->mesh, current->summary);
       } else {
         current.reset(new Modelled(step.run(mesh_now())));
@@ -578,7 +578,7 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
     }
     if (summaries) summaries->push_back(current->summary);
   }
-  if (!current) return {mesh, {}, ""};
+  if (!current) return {mesh, {}, "", {}};
   return std::move(*current);
 }
 

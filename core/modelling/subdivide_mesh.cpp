@@ -74,7 +74,7 @@ Modelled subdivide_all(const CovarianceMesh& mesh) {
   options.scheme = scheme_for(topology_of(mesh.mesh), PlanOptions{});
   options.levels = 1;
   SubdivisionResult r = subdivide(mesh, options);
-  Modelled out{std::move(r.mesh), {}, ""};
+  Modelled out{std::move(r.mesh), {}, "", {}};
   out.summary = std::string("subdivided the whole mesh (") +
                 (options.scheme == Scheme::loop ? "Loop" : "Catmull-Clark") +
                 "): " + counted(out.mesh.n_vertices(), "vertex", "vertices") + ", " +
@@ -126,7 +126,7 @@ Modelled subdivide_faces(const CovarianceMesh& mesh, const std::vector<int>& fac
   std::sort(selection.begin(), selection.end());
   selection.erase(std::unique(selection.begin(), selection.end()), selection.end());
 
-  Modelled out{build_mesh(a), selection, ""};
+  Modelled out = modelled(a, selection);
   out.summary = "subdivided " + counted(chosen.size(), "face", "faces") + ": " +
                 counted(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
                 counted(appended.size(), "face", "faces") + " added";

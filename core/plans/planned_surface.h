@@ -26,6 +26,7 @@ struct PlanOptions {
   int depth = kExactPlanDepth;  // Catmull-Clark: where exact nodes take over (0..8), or the thesis' Bézier plans (1..8)
   LoopBeta loop_beta = LoopBeta::loop;
   bool exact = true;  // Catmull-Clark: extraordinary vertices evaluated exactly (Loop's always are)
+  bool operator==(const PlanOptions&) const = default;
 };
 
 /// The options the command line and Python name: scheme "auto" | "loop" | "catmull-clark", loop_beta
@@ -45,7 +46,7 @@ SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOpt
 class PlannedSurface {
 public:
   PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options);
-  /// The mesh with tables already planned for it under `scheme` (core/plans/sharpness_replanner.h).
+  /// The mesh with tables already planned for it under `scheme` (core/plans/surface_replanner.h).
   PlannedSurface(const CovarianceMesh& mesh, Scheme scheme, SurfaceTables tables);
 
   Scheme scheme() const { return scheme_; }

@@ -2,7 +2,7 @@
 // The plans of a range of consecutive faces, built apart and merged in face order (docs/design.md §2):
 // the whole tables are the same, bit for bit, however the faces are cut into ranges, so ranges build
 // on all cores, and a sharpness change rebuilds only the ranges of the faces it reaches
-// (core/plans/sharpness_replanner.h).
+// (core/plans/surface_replanner.h).
 #include <memory>
 #include <vector>
 

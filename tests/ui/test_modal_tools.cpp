@@ -50,7 +50,7 @@ struct Editor {
   }
   ToolContext context() {
     ToolContext c(document, selection, reach);
-    c.install = [this](const Modelled& result, SharpnessReplanner*) {
+    c.install = [this](const Modelled& result, SurfaceReplanner*) {
       document.apply(result, selection.record());
       selection.select(result.selection, false);
       shown.reset();
@@ -58,7 +58,7 @@ struct Editor {
     };
     c.operate = [this, install = c.install](const std::string& name,
                                             const std::function<Modelled(const CovarianceMesh&)>& run,
-                                            SharpnessReplanner* replanner) {
+                                            SurfaceReplanner* replanner) {
       try {
         install(run(document.mesh()), replanner);
       } catch (const Error& e) {

@@ -21,7 +21,7 @@
 #include "render/pipeline/surface_renderer.h"
 #include "render/gl/window_context.h"
 #include "core/support/error.h"
-#include "core/plans/sharpness_replanner.h"
+#include "core/plans/surface_replanner.h"
 #include "ui/editing/axis_handles.h"
 #include "ui/input/command_table.h"
 #include "ui/editing/edit_reach.h"
@@ -107,10 +107,10 @@ private:
   // Modelling (editor_modelling.cpp): the Mesh menu and its operations.
   void build_modelling_commands();
   bool run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
-                     SharpnessReplanner* replanner = nullptr);
+                     SurfaceReplanner* replanner = nullptr);
   // Throws gps::Error before anything changes. `replanner`: the plans of the document's topology,
   // which re-plans a result of the same topology and other sharpness around the changes only.
-  void install(const Modelled& result, SharpnessReplanner* replanner = nullptr);
+  void install(const Modelled& result, SurfaceReplanner* replanner = nullptr);
   void topology_changed(const std::vector<int>& selection);
   void rebuild_after_undo(const SelectionRecord& selection);
   void operation_note(const std::string& message, bool error);
@@ -123,7 +123,7 @@ private:
   bool modal_event(const InputEvent& e);  // true: the tool took the event
   // run_operation without the check for a running tool (a tool's own operation).
   bool operate(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
-               SharpnessReplanner* replanner);
+               SurfaceReplanner* replanner);
   void show_preview(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
                     std::optional<PlannedSurface> surface);
   void show_document(std::optional<PlannedSurface> surface);
@@ -143,10 +143,11 @@ private:
   // The mirror modifier (editor_mirror_modifier.cpp): the mesh shown through it, its commands.
   void build_mirror_commands();
   // Gives the renderer `mesh` (the document's or a tool's preview) as shown: with the modifier on, its
-  // mirror planned under `plans` (`surface`, planned for `mesh` itself, then unused). Throws gps::Error
-  // as set_mesh does, before anything changes.
+  // mirror planned under `plans` (`surface`, planned for `mesh` itself, then unused); else `surface`, or
+  // plans that follow the mesh shown before (`shown_plans_`; `origin`: each vertex's index in it, empty
+  // where kept). Throws gps::Error as set_mesh does, before the renderer changes.
   void show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans,
-                 std::optional<PlannedSurface> surface = std::nullopt);
+                 std::optional<PlannedSurface> surface = std::nullopt, const std::vector<int>& origin = {});
   void show_edit(const std::vector<int>& changed);  // the document's Gaussians `changed`, on both sides
   void set_mirror(const MirrorSettings& settings);  // shown at once and kept for the file
   void remember_mirror();                           // kept for the document's file (the View settings)
@@ -200,6 +201,8 @@ private:
   WindowContext window_;
   GlfwInputForwarder input_forwarder_;
   std::unique_ptr<SurfaceRenderer> renderer_;
+  std::optional<SurfaceReplanner> shown_plans_;  // the plans of the last mesh shown without a mirror
+  PlanOptions shown_plan_options_;               // the options they were made with
   std::unique_ptr<GpuPassTimer> timer_;
   std::unique_ptr<RenderTarget> target_;
   std::unique_ptr<PointOverlay> point_overlay_;

@@ -55,15 +55,26 @@ void EditorApp::draw_mirror_items() {
   if (ImGui::MenuItem("Apply", nullptr, false, mirror_.settings.enabled)) apply_mirror();
 }
 
-void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, std::optional<PlannedSurface> surface) {
+void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, std::optional<PlannedSurface> surface,
+                          const std::vector<int>& origin) {
   MirrorModifier next;
   next.settings = mirror_.settings;
   std::string refusal;
   const CovarianceMesh& shown = next.shown(mesh, refusal);
-  if (next.mirroring() || !surface)
+  if (next.mirroring()) {
     renderer_->set_mesh(shown, plans);
-  else
+  } else if (surface) {
     renderer_->set_mesh(mesh, std::move(*surface));
+  } else {  // re-planned where the mesh changed (a wrong origin costs time, never a wrong table)
+    const PolygonTopology topology = topology_of(mesh.mesh);
+    if (shown_plans_ && shown_plan_options_ == plans) {
+      shown_plans_->set_topology(topology, mesh.sharpness, origin);
+    } else {
+      shown_plans_.emplace(topology, plans, mesh.sharpness);
+      shown_plan_options_ = plans;
+    }
+    renderer_->set_mesh(mesh, shown_plans_->tables(), NormalisedFrame::of(mesh));
+  }
   mirror_ = std::move(next);
   hidden_stale_ = true;  // the patches and lines it leaves out, of the mesh now shown
   document_.set_clip(mirror_.clip(document_.mesh()));

@@ -24,9 +24,9 @@ ToolContext EditorApp::tool_context() {
   };
   c.transform_gaussians = view_.transform_gaussians;
   c.plans = view_.plans();
-  c.install = [this](const Modelled& result, SharpnessReplanner* replanner) { install(result, replanner); };
+  c.install = [this](const Modelled& result, SurfaceReplanner* replanner) { install(result, replanner); };
   c.operate = [this](const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
-                     SharpnessReplanner* replanner) { return operate(name, run, replanner); };
+                     SurfaceReplanner* replanner) { return operate(name, run, replanner); };
   c.show_preview = [this](std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
                           std::optional<PlannedSurface> surface) {
     show_preview(std::move(mesh), selected, std::move(surface));

@@ -298,12 +298,12 @@ void EditorApp::draw_add_items() {
 }
 
 bool EditorApp::run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
-                              SharpnessReplanner* replanner) {
+                              SurfaceReplanner* replanner) {
   return !modal_active() && mode_ != Mode::handle && operate(name, run, replanner);  // not during a drag
 }
 
 bool EditorApp::operate(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
-                        SharpnessReplanner* replanner) {
+                        SurfaceReplanner* replanner) {
   try {
     install(run(document_.mesh()), replanner);
   } catch (const Error& e) {  // refused: nothing changed, no undo step
@@ -314,13 +314,13 @@ bool EditorApp::operate(const std::string& name, const std::function<Modelled(co
   return true;
 }
 
-void EditorApp::install(const Modelled& result, SharpnessReplanner* replanner) {
+void EditorApp::install(const Modelled& result, SurfaceReplanner* replanner) {
   std::optional<PlannedSurface> surface;
   if (replanner) {  // first: it throws before anything changes
     replanner->set_sharpness(result.mesh.sharpness);
     if (!mirror_.settings.enabled) surface.emplace(result.mesh, replanner->scheme(), replanner->tables());
   }
-  show_mesh(result.mesh, view_.plans(), std::move(surface));
+  show_mesh(result.mesh, view_.plans(), std::move(surface), result.vertex_origin);
   surface_changed();
   preview_.reset();
   preview_selection_.clear();

@@ -28,7 +28,7 @@ namespace gps {
 
 class EditorDocument;
 class Selection;
-class SharpnessReplanner;
+class SurfaceReplanner;
 class ModalTool;
 
 /// What a tool did with an event. `confirmed` and `cancelled` end it (it has already changed or
@@ -57,12 +57,12 @@ struct ToolContext {
   std::function<std::optional<Vec3>(glm::vec2 pixel)> surface_at;
 
   /// Replaces the document's mesh by `result` as one undo step; throws gps::Error before anything changes.
-  /// `replanner`: the plans of the document's topology with other sharpness (core/plans/sharpness_replanner.h).
-  std::function<void(const Modelled& result, SharpnessReplanner* replanner)> install;
+  /// `replanner`: the plans of the document's topology with other sharpness (core/plans/surface_replanner.h).
+  std::function<void(const Modelled& result, SurfaceReplanner* replanner)> install;
   /// run() on the document's mesh installed as one undo step, its summary or refusal reported as
   /// "NAME: summary"; false when refused (nothing changed).
   std::function<bool(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
-                     SharpnessReplanner* replanner)>
+                     SurfaceReplanner* replanner)>
       operate;
   /// Shows `mesh` in place of the document's (its surface, cage and creases), `selected` drawn as the
   /// selection; `surface`: its planned surface (else planned anew). Throws gps::Error where it cannot be planned.

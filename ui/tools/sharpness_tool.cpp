@@ -36,7 +36,7 @@ PlannedSurface SharpnessTool::surface(const CovarianceMesh& mesh, const ToolCont
   if (replanner_)
     replanner_->set_sharpness(mesh.sharpness);
   else
-    replanner_ = std::make_unique<SharpnessReplanner>(topology_of(mesh.mesh), ctx.plans, mesh.sharpness);
+    replanner_ = std::make_unique<SurfaceReplanner>(topology_of(mesh.mesh), ctx.plans, mesh.sharpness);
   return PlannedSurface(mesh, replanner_->scheme(), replanner_->tables());
 }
 

@@ -2,13 +2,13 @@
 // The crease tool (Shift+E) and the corner tool (Ctrl+Shift+V) as a modal tool: the sharpness of the
 // selected edges, or the corner sharpness of the selected vertices, followed from a horizontal drag
 // or typed (ui/editing/crease_tool.h's values); the surface is re-planned for each value shown, only
-// around the changed edges or corners (core/plans/sharpness_replanner.h), and the document changes
+// around the changed edges or corners (core/plans/surface_replanner.h), and the document changes
 // when confirmed, as one undo step.
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "core/plans/sharpness_replanner.h"
+#include "core/plans/surface_replanner.h"
 #include "ui/editing/selection.h"
 #include "ui/tools/modal_tool.h"
 #include "ui/tools/typed_number.h"
@@ -38,7 +38,7 @@ private:
   TypedNumber typed_;
   std::shared_ptr<const CovarianceMesh> shown_;  // the mesh the surface was planned for
   // The plans of the document's topology, re-planned for each value; made at the first change.
-  std::unique_ptr<SharpnessReplanner> replanner_;
+  std::unique_ptr<SurfaceReplanner> replanner_;
 };
 
 }  // namespace gps

@@ -1,4 +1,4 @@
-// A sharpness change re-planned incrementally (core/plans/sharpness_replanner.h) gives the tables of a
+// A sharpness change re-planned incrementally (core/plans/surface_replanner.h) gives the tables of a
 // full re-plan bit for bit: random edges and corners of creased Catmull-Clark and Loop meshes, open and
 // closed, set semi-sharp, infinitely sharp and back to 0; and only the faces whose pieces hold a change
 // are built again.
@@ -9,7 +9,8 @@
 #include "core/support/error.h"
 #include "core/modelling/samples.h"
 #include "core/plans/planned_surface.h"
-#include "core/plans/sharpness_replanner.h"
+#include "core/plans/surface_replanner.h"
+#include "tests/support/plan_tables.h"
 #include "tests/support/test_meshes.h"
 
 namespace gps {
@@ -17,23 +18,6 @@ namespace {
 
 // Ranges of a few faces, so that a change leaves most of them as they were.
 constexpr int kSmallRanges = 8;
-
-void expect_same_tables(const SurfaceTables& a, const SurfaceTables& b, const std::string& where) {
-  const PatchPlans &p = a.plans, &q = b.plans;
-  EXPECT_EQ(p.shape, q.shape) << where;
-  EXPECT_EQ(p.max_depth, q.max_depth) << where;
-  EXPECT_EQ(p.nodes, q.nodes) << where;
-  EXPECT_EQ(p.patch_roots, q.patch_roots) << where;
-  EXPECT_EQ(p.patch_corner_points, q.patch_corner_points) << where;
-  EXPECT_EQ(p.patch_edges, q.patch_edges) << where;
-  EXPECT_EQ(p.patch_neighbours, q.patch_neighbours) << where;
-  EXPECT_EQ(p.corner_owners, q.corner_owners) << where;
-  EXPECT_EQ(p.extraordinary_tables, q.extraordinary_tables) << where;  // doubles compared exactly
-  EXPECT_EQ(a.stencils.n_base, b.stencils.n_base) << where;
-  EXPECT_EQ(a.stencils.offsets, b.stencils.offsets) << where;
-  EXPECT_EQ(a.stencils.indices, b.stencils.indices) << where;
-  EXPECT_EQ(a.stencils.weights, b.stencils.weights) << where;
-}
 
 struct Case {
   std::string name;
@@ -63,7 +47,7 @@ std::vector<Case> cases() {
 
 // Random edges and corners set to a random sharpness among semi-sharp, infinite and 0, keeping a few
 // creases throughout so that the changes stay incremental; each step against a full re-plan.
-TEST(SharpnessReplanner, RandomChangesMatchAFullReplan) {
+TEST(SurfaceReplanner, RandomChangesMatchAFullReplan) {
   const double values[] = {0.0, 0.0, 0.5, 1.0, 1.7, 2.5, 4.0, kInfiniteSharpness, 12.0};
   for (const Case& c : cases()) {
     const PolygonTopology topology = topology_of(c.mesh.mesh);
@@ -80,8 +64,8 @@ TEST(SharpnessReplanner, RandomChangesMatchAFullReplan) {
       sharpness.set_crease(a, b, i == 0 ? 2.0 : kInfiniteSharpness);
     }
     const PlanOptions options = c.options();
-    SharpnessReplanner replanner(topology, options, sharpness, kSmallRanges);
-    expect_same_tables(replanner.tables(), build_surface_plans(topology, options, sharpness), c.name + ", first plan");
+    SurfaceReplanner replanner(topology, options, sharpness, kSmallRanges);
+    test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, sharpness), c.name + ", first plan");
     int partial = 0;
     for (int step = 0; step < 12; ++step) {
       const int changes = std::uniform_int_distribution<int>(1, 3)(random);
@@ -102,7 +86,7 @@ TEST(SharpnessReplanner, RandomChangesMatchAFullReplan) {
       }
       const std::vector<int> faces = replanner.set_sharpness(sharpness);
       partial += faces.size() < size_t(topology.n_faces()) ? 1 : 0;
-      expect_same_tables(replanner.tables(), build_surface_plans(topology, options, sharpness),
+      test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, sharpness),
                          c.name + ", step " + std::to_string(step));
     }
     EXPECT_GT(partial, 6) << c.name << ": most steps re-plan only some faces";
@@ -111,26 +95,26 @@ TEST(SharpnessReplanner, RandomChangesMatchAFullReplan) {
 
 // The first crease of a smooth mesh and the removal of the last one re-plan everything (the plans'
 // depth bound, and Loop's smooth builder), and still match.
-TEST(SharpnessReplanner, FirstAndLastCrease) {
+TEST(SurfaceReplanner, FirstAndLastCrease) {
   for (const Case& c : cases()) {
     const PolygonTopology topology = topology_of(c.mesh.mesh);
     const PlanOptions options = c.options();
-    SharpnessReplanner replanner(topology, options, {}, kSmallRanges);
+    SurfaceReplanner replanner(topology, options, {}, kSmallRanges);
     const auto edge = c.mesh.mesh.edges().begin();
     Sharpness one;
     one.set_crease(edge->v0().idx(), edge->v1().idx(), 1.5);
     EXPECT_EQ(replanner.set_sharpness(one).size(), size_t(topology.n_faces())) << c.name;
-    expect_same_tables(replanner.tables(), build_surface_plans(topology, options, one), c.name + ", first crease");
+    test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, one), c.name + ", first crease");
     one.set_crease(edge->v0().idx(), edge->v1().idx(), 0.0);
     EXPECT_EQ(replanner.set_sharpness(one).size(), size_t(topology.n_faces())) << c.name;
-    expect_same_tables(replanner.tables(), build_surface_plans(topology, options, {}), c.name + ", last crease gone");
+    test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, {}), c.name + ", last crease gone");
     EXPECT_TRUE(replanner.set_sharpness(one).empty()) << c.name << ": nothing changed";
   }
 }
 
 // The faces that read an edge: those sharing a vertex with a face that holds it (the grid's interior
 // edge between faces 0 and 1 of a 4 × 1 strip reaches faces 0..2, not 3).
-TEST(SharpnessReplanner, FacesReadingAnEdge) {
+TEST(SurfaceReplanner, FacesReadingAnEdge) {
   const CovarianceMesh strip = test::grid_mesh(4, 1);
   const PolygonTopology t = topology_of(strip.mesh);
   const MeshConnectivity c = connectivity_of(t);
@@ -144,15 +128,15 @@ TEST(SharpnessReplanner, FacesReadingAnEdge) {
 }
 
 // A mesh with an unjoined crease is refused with the tables as they were.
-TEST(SharpnessReplanner, UnjoinedCreaseIsRefused) {
+TEST(SurfaceReplanner, UnjoinedCreaseIsRefused) {
   const CovarianceMesh grid = test::grid_mesh(3, 3);
   const PolygonTopology topology = topology_of(grid.mesh);
-  SharpnessReplanner replanner(topology, {}, {});
+  SurfaceReplanner replanner(topology, {}, {});
   const SurfaceTables before = replanner.tables();
   Sharpness bad;
   bad.set_crease(0, 15, 2.0);
   EXPECT_THROW(replanner.set_sharpness(bad), Error);
-  expect_same_tables(replanner.tables(), before, "after the refusal");
+  test::expect_same_tables(replanner.tables(), before, "after the refusal");
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 #pragma once
-// Plans that follow sharpness changes on one topology (a crease dragged in the editor): a changed edge
-// or vertex is read only by the plans of the faces whose piece holds it, so only their ranges are
-// built again (core/plans/range_plans.h), and the merged tables are those of a full re-plan, bit for bit.
+// Plans that follow changes of a mesh: a crease dragged in the editor, or a modelling operation that
+// changes the topology. A face's plan reads only its piece (the faces that share a vertex with it) and
+// the sharpness in it, so only the ranges of faces whose pieces a change reaches are built again
+// (core/plans/range_plans.h); the others are kept, renumbered, and the merged tables are those of a
+// full re-plan, bit for bit.
 #include <algorithm>
 #include <memory>
 #include <vector>
@@ -21,18 +23,19 @@ namespace gps {
 std::vector<int> faces_reading(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<int>& edges,
                                const std::vector<int>& vertices);
 
-class SharpnessReplanner {
+class SurfaceReplanner {
 public:
   /// The faces built together; a change builds again the ranges of the faces it reaches.
   static constexpr int kFacesPerRange = 256;
 
   /// The plans of `topology` with `sharpness` under `options`, as build_surface_plans makes them, in
   /// ranges of `faces_per_range` faces (which the tables do not depend on). Throws as it does.
-  SharpnessReplanner(const PolygonTopology& topology, const PlanOptions& options, const Sharpness& sharpness,
-                     int faces_per_range = kFacesPerRange);
+  SurfaceReplanner(const PolygonTopology& topology, const PlanOptions& options, const Sharpness& sharpness,
+                   int faces_per_range = kFacesPerRange);
 
   Scheme scheme() const { return scheme_; }
-  /// build_surface_plans(topology, options, sharpness) for the latest sharpness, bit for bit.
+  const PolygonTopology& topology() const { return base_.topology; }
+  /// build_surface_plans(topology, options, sharpness) for the latest topology and sharpness, bit for bit.
   const SurfaceTables& tables() const { return tables_; }
   /// Re-plans for new sharpness of the same topology: builds again only the ranges of the faces that
   /// read a changed edge or vertex (every face where the mesh gains its first sharpness or loses its
@@ -40,19 +43,32 @@ public:
   /// a change, sorted (empty: nothing changed). Throws gps::Error for a crease between unjoined
   /// vertices, the tables unchanged.
   std::vector<int> set_sharpness(const Sharpness& sharpness);
+  /// Re-plans for a new topology. `origin`: per new vertex, the index it had before (−1: new); empty
+  /// stands for "every vertex kept its index". A range is kept, renumbered, where its faces are all
+  /// still there, consecutive and in order, and no piece of theirs changed (a face added, removed or
+  /// changed around one of their vertices, or sharpness there); the others are built again. The
+  /// origin only says where to look: a wrong one costs time, never a wrong table. Everything is built
+  /// again when the scheme changes, when sharpness first comes or last goes, for Loop's smooth builder,
+  /// or when the origin is not increasing. Returns how many faces were planned. Throws as the
+  /// constructor does, the tables unchanged.
+  int set_topology(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin = {});
 
 private:
   // Builds the ranges `which` on all cores, then merges every range into tables_.
   void build(const std::vector<int>& which, const Sharpness& sharpness);
-  int n_ranges() const;
+  // Cuts the faces into even ranges and builds them all.
+  void build_all(const Sharpness& sharpness);
+  int range_of_face(int f) const;
 
   PlanOptions options_;
   Scheme scheme_;
   int faces_per_range_;
-  LocalMesh base_;  // the topology with the latest sharpness laid out on it
+  LocalMesh base_;       // the topology with the latest sharpness laid out on it
+  Sharpness sharpness_;  // as last given
   std::unique_ptr<QuadExtraordinaryTableCache> quad_tables_;
   std::unique_ptr<LoopCreaseTables> loop_tables_;
   std::vector<RangePlans> ranges_;  // empty for Loop without sharpness (its smooth builder)
+  std::vector<int> range_first_;    // range r holds faces [range_first_[r], range_first_[r + 1])
   SurfaceTables tables_;
 };
 

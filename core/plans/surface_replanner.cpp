@@ -1,0 +1,307 @@
+#include "core/plans/surface_replanner.h"
+
+#include <algorithm>
+#include <exception>
+#include <utility>
+
+#include "core/plans/loop_crease_plan_builder.h"
+#include "core/plans/loop_plan_builder.h"
+#include "core/plans/patch_adjacency.h"
+
+namespace gps {
+namespace {
+
+// Every old vertex's new index from the new vertices' origins (empty origin: the indices kept), or
+// false where they cannot serve: a kept range's rows list their terms in index order, which only an
+// increasing renumbering keeps.
+bool new_index_of(const std::vector<int>& origin, int n_old, int n_new, std::vector<int>& new_index) {
+  new_index.assign(size_t(n_old), -1);
+  if (origin.empty()) {
+    for (int v = 0; v < std::min(n_old, n_new); ++v) new_index[size_t(v)] = v;
+    return true;
+  }
+  if (origin.size() != size_t(n_new)) return false;
+  int last = -1;
+  for (int w = 0; w < n_new; ++w) {
+    const int o = origin[size_t(w)];
+    if (o < 0) continue;
+    if (o <= last || o >= n_old) return false;
+    new_index[size_t(o)] = w;
+    last = o;
+  }
+  return true;
+}
+
+// Renumbers a kept range's points onto the new mesh: base vertex p becomes new_index[p], the range's
+// own rows follow the new base. False if it reads a vertex that is gone (it must be built again).
+bool renumber_range(RangePlans& range, const std::vector<int>& new_index, int n_old, int n_new) {
+  PatchPlans& p = range.tables.plans;
+  StencilTable& s = range.tables.stencils;
+  bool gone = false, moved = false;
+  const auto point = [&](int32_t& q) {
+    if (q >= n_old) {
+      q = q - n_old + n_new;
+      return;
+    }
+    const int w = new_index[size_t(q)];
+    gone |= w < 0;
+    moved |= w != q;
+    q = w;
+  };
+  const size_t leaf_points = p.shape == PatchShape::quad ? 16 : 12;
+  for (size_t o = 0; o < p.nodes.size();) {  // node records as in merge_ranges
+    const auto kind = NodeKind(node_kind(p.nodes[o]));
+    if (kind == NodeKind::extraordinary) {
+      const size_t k = size_t(p.nodes[o + 3]);
+      for (size_t i = o + 4; i < o + 4 + k; ++i) point(p.nodes[i]);
+      o += 4 + k;
+      continue;
+    }
+    const size_t n = kind == NodeKind::internal ? 4 : leaf_points;
+    if (kind != NodeKind::internal)
+      for (size_t i = o + 1; i <= o + n; ++i) point(p.nodes[i]);
+    o += n + 1;
+  }
+  for (int32_t& q : p.patch_corner_points) point(q);
+  for (size_t i = 0; i < p.patch_edges.size(); ++i)
+    if (i % kPatchEdgeInts != 2) point(p.patch_edges[i]);
+  for (int32_t& q : s.indices) point(q);  // rows are over base vertices only
+  s.n_base = n_new;
+  if (moved) range.row_keys.clear();  // a row's key hashes its indices: merge_ranges hashes it again
+  return !gone;
+}
+
+}  // namespace
+
+std::vector<int> faces_reading(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<int>& edges,
+                               const std::vector<int>& vertices) {
+  std::vector<int> holders;  // the faces that hold a changed edge or vertex
+  for (const int e : edges)
+    for (int k = 0; k < 2; ++k)
+      if (const int f = c.edge_faces[2 * size_t(e) + size_t(k)]; f >= 0) holders.push_back(f);
+  for (const int v : vertices)
+    for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i)
+      holders.push_back(c.vertex_faces[size_t(i)]);
+  std::sort(holders.begin(), holders.end());
+  holders.erase(std::unique(holders.begin(), holders.end()), holders.end());
+  std::vector<int> faces;
+  for (const int g : holders)
+    for (int k = t.offsets[size_t(g)]; k < t.offsets[size_t(g) + 1]; ++k) {
+      const int w = t.verts[size_t(k)];
+      faces.insert(faces.end(), c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w)],
+                   c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w) + 1]);
+    }
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  return faces;
+}
+
+SurfaceReplanner::SurfaceReplanner(const PolygonTopology& topology, const PlanOptions& options,
+                                   const Sharpness& sharpness, int faces_per_range)
+    : options_(options),
+      scheme_(scheme_for(topology, options)),
+      faces_per_range_(std::max(1, faces_per_range)),
+      base_(base_local_mesh(topology, sharpness)),
+      sharpness_(sharpness) {
+  if (scheme_ == Scheme::loop)
+    check_loop_plans(topology);
+  else
+    check_quad_plans(topology, options.depth, options.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier);
+  build_all(sharpness);
+}
+
+int SurfaceReplanner::range_of_face(int f) const {
+  return int(std::upper_bound(range_first_.begin(), range_first_.end(), f) - range_first_.begin()) - 1;
+}
+
+void SurfaceReplanner::build_all(const Sharpness& sharpness) {
+  const int n_faces = base_.topology.n_faces();
+  range_first_.clear();
+  for (int f = 0; f < n_faces; f += faces_per_range_) range_first_.push_back(f);
+  if (range_first_.empty()) range_first_.push_back(0);
+  range_first_.push_back(n_faces);
+  ranges_.assign(range_first_.size() - 1, {});
+  std::vector<int> all(ranges_.size());
+  for (size_t r = 0; r < all.size(); ++r) all[r] = int(r);
+  build(all, sharpness);
+}
+
+void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sharpness) {
+  const PolygonTopology& t = base_.topology;
+  if (scheme_ == Scheme::loop && !base_.has_creases()) {  // Loop's smooth builder, as build_surface_plans
+    ranges_.clear();
+    range_first_.clear();
+    loop_tables_.reset();
+    tables_ = build_loop_plans(t, options_.loop_beta);
+    add_patch_adjacency(tables_.plans, t, sharpness);
+    return;
+  }
+  if (scheme_ == Scheme::loop && !loop_tables_) loop_tables_ = std::make_unique<LoopCreaseTables>(options_.loop_beta);
+  if (scheme_ == Scheme::catmull_clark && !quad_tables_) quad_tables_ = std::make_unique<QuadExtraordinaryTableCache>();
+  const ExtraordinaryNodes extraordinary = options_.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier;
+  std::vector<std::exception_ptr> failures(which.size());
+#pragma omp parallel for schedule(dynamic)
+  for (size_t i = 0; i < which.size(); ++i) {
+    const size_t r = size_t(which[i]);
+    const int first = range_first_[r], last = range_first_[r + 1];
+    try {
+      ranges_[r] = scheme_ == Scheme::loop
+                       ? build_creased_loop_range(base_, first, last, options_.loop_beta, *loop_tables_)
+                       : build_quad_range(base_, first, last, options_.depth, extraordinary, true, *quad_tables_);
+    } catch (...) {
+      failures[i] = std::current_exception();
+    }
+  }
+  for (const auto& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+  tables_ = merge_ranges(ranges_, t.n_vertices, false);
+  add_patch_adjacency(tables_.plans, t, sharpness);
+}
+
+std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
+  const PolygonTopology& t = base_.topology;
+  const MeshConnectivity& c = base_.connectivity;
+  CreaseLevel level = crease_level(sharpness, c, t.n_vertices);
+  if (level.empty()) level = {};
+  const CreaseLevel& old = base_.creases;
+  std::vector<int> faces;
+  sharpness_ = sharpness;
+  if (level.empty() != old.empty()) {  // the first sharpness or the last: every plan
+    base_.creases = std::move(level);
+    build_all(sharpness);
+    faces.resize(size_t(t.n_faces()));
+    for (size_t f = 0; f < faces.size(); ++f) faces[f] = int(f);
+    return faces;
+  }
+  if (!level.empty()) {
+    std::vector<int> edges, vertices;
+    for (size_t e = 0; e < level.edges.size(); ++e)
+      if (level.edges[e] != old.edges[e]) edges.push_back(int(e));
+    for (size_t v = 0; v < level.vertices.size(); ++v)
+      if (level.vertices[v] != old.vertices[v]) vertices.push_back(int(v));
+    faces = faces_reading(t, c, edges, vertices);
+  }
+  base_.creases = std::move(level);
+  if (faces.empty()) {  // the same plans; the patch adjacency reads the sharpness as given
+    add_patch_adjacency(tables_.plans, t, sharpness);
+    return faces;
+  }
+  std::vector<int> which;
+  for (const int f : faces)
+    if (const int r = range_of_face(f); which.empty() || which.back() != r) which.push_back(r);
+  build(which, sharpness);
+  return faces;
+}
+
+int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpness& sharpness,
+                                   const std::vector<int>& origin) {
+  // The checks first: a refusal changes nothing.
+  const Scheme scheme = scheme_for(topology, options_);
+  if (scheme == Scheme::loop)
+    check_loop_plans(topology);
+  else
+    check_quad_plans(topology, options_.depth, options_.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier);
+  LocalMesh base = base_local_mesh(topology, sharpness);
+  const bool same_builder = scheme == scheme_ && !ranges_.empty() && base.has_creases() == base_.has_creases();
+  const LocalMesh previous = std::exchange(base_, std::move(base));
+  const Sharpness old_sharpness = std::exchange(sharpness_, sharpness);
+  scheme_ = scheme;
+  const PolygonTopology& t = base_.topology;
+  const MeshConnectivity& c = base_.connectivity;
+  const PolygonTopology& old = previous.topology;
+  const int n_old = old.n_vertices, n_new = t.n_vertices, n_faces = t.n_faces();
+  std::vector<int> new_index;
+  if (!same_builder || !new_index_of(origin, n_old, n_new, new_index)) {
+    build_all(sharpness);
+    return n_faces;
+  }
+
+  // Faces that are still there, corner for corner: old face → new face and back.
+  std::vector<int> new_face(size_t(old.n_faces()), -1), old_face(size_t(n_faces), -1);
+  for (int f = 0; f < old.n_faces(); ++f) {
+    const int first = old.offsets[size_t(f)], size = old.face_size(f);
+    const int w = new_index[size_t(old.verts[size_t(first)])];
+    if (w < 0) continue;
+    for (int i = c.vertex_face_offsets[size_t(w)]; i < c.vertex_face_offsets[size_t(w) + 1]; ++i) {
+      const int g = c.vertex_faces[size_t(i)];
+      if (c.vertex_face_corners[size_t(i)] != 0 || t.face_size(g) != size || old_face[size_t(g)] >= 0) continue;
+      bool same = true;
+      for (int k = 1; k < size && same; ++k)
+        same = new_index[size_t(old.verts[size_t(first + k)])] == t.verts[size_t(t.offsets[size_t(g)] + k)];
+      if (same) {
+        new_face[size_t(f)] = g;
+        old_face[size_t(g)] = f;
+        break;
+      }
+    }
+  }
+  // Vertices whose pieces changed: corners of faces added or removed, ends of changed creases, changed corners.
+  std::vector<char> changed(size_t(n_new), 0);
+  const auto mark_old = [&](int v) {
+    if (const int w = new_index[size_t(v)]; w >= 0) changed[size_t(w)] = 1;
+  };
+  for (int g = 0; g < n_faces; ++g)
+    if (old_face[size_t(g)] < 0)
+      for (int k = t.offsets[size_t(g)]; k < t.offsets[size_t(g) + 1]; ++k) changed[size_t(t.verts[size_t(k)])] = 1;
+  for (int f = 0; f < old.n_faces(); ++f)
+    if (new_face[size_t(f)] < 0)
+      for (int k = old.offsets[size_t(f)]; k < old.offsets[size_t(f) + 1]; ++k) mark_old(old.verts[size_t(k)]);
+  std::vector<int> old_index(size_t(n_new), -1);
+  for (int v = 0; v < n_old; ++v)
+    if (const int w = new_index[size_t(v)]; w >= 0) old_index[size_t(w)] = v;
+  for (const EdgeCrease& e : old_sharpness.creases) {
+    const int a = new_index[size_t(e.a)], b = new_index[size_t(e.b)];
+    if (a < 0 || b < 0 || sharpness.crease(a, b) != e.sharpness) mark_old(e.a), mark_old(e.b);
+  }
+  for (const EdgeCrease& e : sharpness.creases) {
+    const int a = old_index[size_t(e.a)], b = old_index[size_t(e.b)];
+    if (a < 0 || b < 0 || old_sharpness.crease(a, b) != e.sharpness) changed[size_t(e.a)] = changed[size_t(e.b)] = 1;
+  }
+  for (int w = 0; w < n_new; ++w) {
+    const int v = old_index[size_t(w)];
+    if (sharpness.corner(w) != (v < 0 ? 0.0 : old_sharpness.corner(v))) changed[size_t(w)] = 1;
+  }
+  std::vector<int> changed_vertices;
+  for (int w = 0; w < n_new; ++w)
+    if (changed[size_t(w)]) changed_vertices.push_back(w);
+  std::vector<char> dirty(size_t(n_faces), 0);
+  for (const int g : faces_reading(t, c, {}, changed_vertices)) dirty[size_t(g)] = 1;
+
+  // The old ranges kept: all their faces there, clean, consecutive and in order; where each starts now.
+  std::vector<int> kept_at(size_t(n_faces), -1);
+  for (size_t r = 0; r + 1 < range_first_.size(); ++r) {
+    const int a = range_first_[r], b = range_first_[r + 1];
+    if (a == b) continue;
+    const int g0 = new_face[size_t(a)];
+    bool keep = g0 >= 0 && g0 + (b - a) <= n_faces;
+    for (int f = a; f < b && keep; ++f) keep = new_face[size_t(f)] == g0 + (f - a) && !dirty[size_t(g0 + (f - a))];
+    if (keep) kept_at[size_t(g0)] = int(r);
+  }
+  std::vector<RangePlans> ranges;
+  std::vector<int> firsts, fresh;
+  int planned = 0;
+  for (int g = 0; g < n_faces;) {
+    const int start = g;
+    if (const int r = kept_at[size_t(g)]; r >= 0) {
+      RangePlans& kept = ranges_[size_t(r)];
+      const int size = range_first_[size_t(r) + 1] - range_first_[size_t(r)];
+      if (!renumber_range(kept, new_index, n_old, n_new)) fresh.push_back(int(ranges.size())), planned += size;
+      ranges.push_back(std::move(kept));
+      g += size;
+    } else {
+      while (g < n_faces && kept_at[size_t(g)] < 0 && g - start < faces_per_range_) ++g;
+      fresh.push_back(int(ranges.size()));
+      ranges.emplace_back();
+      planned += g - start;
+    }
+    firsts.push_back(start);
+  }
+  if (firsts.empty()) firsts.push_back(0), fresh.push_back(0), ranges.emplace_back();
+  firsts.push_back(n_faces);
+  ranges_ = std::move(ranges);
+  range_first_ = std::move(firsts);
+  build(fresh, sharpness);
+  return planned;
+}
+
+}  // namespace gps

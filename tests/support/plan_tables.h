@@ -1,0 +1,28 @@
+#pragma once
+// Plan tables compared exactly: every array of two SurfaceTables, bit for bit (the re-planners' tests).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/plans/plan_builder.h"
+
+namespace gps::test {
+
+inline void expect_same_tables(const SurfaceTables& a, const SurfaceTables& b, const std::string& where) {
+  const PatchPlans &p = a.plans, &q = b.plans;
+  EXPECT_EQ(p.shape, q.shape) << where;
+  EXPECT_EQ(p.max_depth, q.max_depth) << where;
+  EXPECT_EQ(p.nodes, q.nodes) << where;
+  EXPECT_EQ(p.patch_roots, q.patch_roots) << where;
+  EXPECT_EQ(p.patch_corner_points, q.patch_corner_points) << where;
+  EXPECT_EQ(p.patch_edges, q.patch_edges) << where;
+  EXPECT_EQ(p.patch_neighbours, q.patch_neighbours) << where;
+  EXPECT_EQ(p.corner_owners, q.corner_owners) << where;
+  EXPECT_EQ(p.extraordinary_tables, q.extraordinary_tables) << where;  // doubles compared exactly
+  EXPECT_EQ(a.stencils.n_base, b.stencils.n_base) << where;
+  EXPECT_EQ(a.stencils.offsets, b.stencils.offsets) << where;
+  EXPECT_EQ(a.stencils.indices, b.stencils.indices) << where;
+  EXPECT_EQ(a.stencils.weights, b.stencils.weights) << where;
+}
+
+}  // namespace gps::test
