@@ -69,8 +69,8 @@ struct Editor {
       return true;
     };
     c.show_preview = [this](std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>&,
-                            std::optional<PlannedSurface>) { shown = std::move(mesh); };
-    c.show_document = [this](std::optional<PlannedSurface>) { shown.reset(); };
+                            std::optional<SurfaceTables>) { shown = std::move(mesh); };
+    c.show_document = [this](std::optional<SurfaceTables>) { shown.reset(); };
     c.rebuild = [](const SelectionRecord&) {};
     c.report = c.note = c.show_status = [this](const std::string& message, bool) { said = message; };
     return c;

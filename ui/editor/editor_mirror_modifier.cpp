@@ -55,7 +55,7 @@ void EditorApp::draw_mirror_items() {
   if (ImGui::MenuItem("Apply", nullptr, false, mirror_.settings.enabled)) apply_mirror();
 }
 
-void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, std::optional<PlannedSurface> surface,
+void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, std::optional<SurfaceTables> surface,
                           const std::vector<int>& origin) {
   MirrorModifier next;
   next.settings = mirror_.settings;
@@ -64,7 +64,7 @@ void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, 
   if (next.mirroring()) {
     renderer_->set_mesh(shown, plans);
   } else if (surface) {
-    renderer_->set_mesh(mesh, std::move(*surface));
+    renderer_->set_mesh(mesh, std::move(*surface), NormalisedFrame::of(mesh));
   } else {  // re-planned where the mesh changed (a wrong origin costs time, never a wrong table)
     const PolygonTopology topology = topology_of(mesh.mesh);
     if (shown_plans_ && shown_plan_options_ == plans) {

@@ -65,12 +65,12 @@ struct ToolContext {
                      SurfaceReplanner* replanner)>
       operate;
   /// Shows `mesh` in place of the document's (its surface, cage and creases), `selected` drawn as the
-  /// selection; `surface`: its planned surface (else planned anew). Throws gps::Error where it cannot be planned.
+  /// selection; `surface`: its plans (else planned anew). Throws gps::Error where it cannot be planned.
   std::function<void(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
-                     std::optional<PlannedSurface> surface)>
+                     std::optional<SurfaceTables> surface)>
       show_preview;
-  /// Shows the document's mesh again (`surface`: its planned surface, else planned anew); a failure is reported.
-  std::function<void(std::optional<PlannedSurface> surface)> show_document;
+  /// Shows the document's mesh again (`surface`: its plans, else planned anew); a failure is reported.
+  std::function<void(std::optional<SurfaceTables> surface)> show_document;
   /// The document's mesh was replaced outside install (an undone step): rebuilds for it, with `selection`.
   std::function<void(const SelectionRecord& selection)> rebuild;
   /// A message in the status line, printed (and, with `note`, in the Inspector too); `show_status`

@@ -32,12 +32,12 @@ std::unique_ptr<ModalTool> SharpnessTool::start(ToolContext& ctx, bool corners) 
   return tool;
 }
 
-PlannedSurface SharpnessTool::surface(const CovarianceMesh& mesh, const ToolContext& ctx) {
+SurfaceTables SharpnessTool::surface(const CovarianceMesh& mesh, const ToolContext& ctx) {
   if (replanner_)
     replanner_->set_sharpness(mesh.sharpness);
   else
     replanner_ = std::make_unique<SurfaceReplanner>(topology_of(mesh.mesh), ctx.plans, mesh.sharpness);
-  return PlannedSurface(mesh, replanner_->scheme(), replanner_->tables());
+  return replanner_->tables();
 }
 
 // Re-plans the surface for the sharpness (a change of sharpness changes the plans, as a change of
