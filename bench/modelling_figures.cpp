@@ -84,13 +84,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       const Clock::time_point full = Clock::now();
       const SurfaceTables whole = build_surface_plans(after, options, result.mesh.sharpness);
       full_s.push_back(seconds_since(full));
-      std::vector<int> back;  // the way back to `mesh`: the inverse of the result's origins
-      if (!result.vertex_origin.empty()) {
-        back.assign(mesh.n_vertices(), -1);
-        for (size_t w = 0; w < result.vertex_origin.size(); ++w)
-          if (result.vertex_origin[w] >= 0) back[size_t(result.vertex_origin[w])] = int(w);
-      }
-      replanner.set_topology(topology, mesh.sharpness, back);
+      replanner.set_topology(topology, mesh.sharpness, inverse_origin(result.vertex_origin, mesh.n_vertices()));
     }
     rows.push_back({{"operation", label},
                     {"operation_ms", median(op_s) * 1e3},

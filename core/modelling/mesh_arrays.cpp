@@ -64,6 +64,14 @@ std::vector<int> vertex_origin(const MeshArrays& a) {
   return a.origin.size() == a.means.size() ? a.origin : std::vector<int>{};
 }
 
+std::vector<int> inverse_origin(const std::vector<int>& origin, size_t n_before) {
+  if (origin.empty()) return {};
+  std::vector<int> back(n_before, -1);
+  for (size_t w = 0; w < origin.size(); ++w)
+    if (origin[w] >= 0 && size_t(origin[w]) < n_before) back[size_t(origin[w])] = int(w);
+  return back;
+}
+
 Modelled modelled(const MeshArrays& a, std::vector<int> selection, std::string summary) {
   return {build_mesh(a), std::move(selection), std::move(summary), vertex_origin(a)};
 }

@@ -46,6 +46,9 @@ struct Modelled {
 Modelled modelled(const MeshArrays& arrays, std::vector<int> selection, std::string summary = "");
 /// The arrays' origins where they are known (one per vertex), else empty.
 std::vector<int> vertex_origin(const MeshArrays& arrays);
+/// The way back: for each of the `n_before` vertices of the mesh before an operation, its index after
+/// it (−1 removed), from the result's `origin`; empty (indices kept) for an empty origin.
+std::vector<int> inverse_origin(const std::vector<int>& origin, size_t n_before);
 
 /// The mesh as arrays; faces in the mesh's face order, corners in face_vertices() order.
 MeshArrays arrays_of(const CovarianceMesh& mesh);

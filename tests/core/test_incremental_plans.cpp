@@ -54,14 +54,6 @@ std::vector<Case> cases() {
           {"icosphere (smooth triangles)", make_sample("icosphere", 200), Scheme::loop}};
 }
 
-// The old index of every vertex of `before` in `after`'s terms: the inverse of `after`'s origins.
-std::vector<int> inverse_origin(const std::vector<int>& origin, size_t n_before) {
-  std::vector<int> back(n_before, -1);
-  for (size_t w = 0; w < origin.size(); ++w)
-    if (origin[w] >= 0) back[size_t(origin[w])] = int(w);
-  return back;
-}
-
 // One random operation on `m`; throws gps::Error where the operation refuses.
 Modelled random_operation(const CovarianceMesh& m, std::mt19937& random) {
   const PolygonTopology t = topology_of(m.mesh);
@@ -138,8 +130,7 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
       faces += after.n_faces();
       test::expect_same_tables(replanner.tables(), full, where);
       const PolygonTopology before = topology_of(mesh.mesh);
-      const std::vector<int> back =
-          result.vertex_origin.empty() ? std::vector<int>{} : inverse_origin(result.vertex_origin, mesh.n_vertices());
+      const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
       replanner.set_topology(before, mesh.sharpness, back);
       test::expect_same_tables(replanner.tables(), build_surface_plans(before, options, mesh.sharpness),
                                where + ", undone");

@@ -7,6 +7,7 @@
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
 #include "core/modelling/samples.h"
+#include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/loop_cut.h"
 
@@ -205,6 +206,20 @@ TEST(EditorDocument, UndoGivesBackTheEdgesTheSelectionHeld) {
   const auto redone = doc.redo();
   ASSERT_TRUE(redone.has_value());
   EXPECT_EQ(*redone, SelectionRecord{cut.selection});
+}
+
+// Undo and redo of an operation say where the restored mesh's vertices were in the mesh they replace
+// (the plans follow the change): a delete's origins on redo, their inverse on undo.
+TEST(EditorDocument, UndoAndRedoGiveTheVerticesOrigins) {
+  EditorDocument doc;
+  doc.open_sample("cube");
+  const Modelled deleted = delete_vertices(doc.mesh(), {2});
+  ASSERT_EQ(deleted.vertex_origin, (std::vector<int>{0, 1, 3, 4, 5, 6, 7}));
+  doc.apply(deleted, {{2}});
+  ASSERT_TRUE(doc.undo().has_value());
+  EXPECT_EQ(doc.replaced_origin(), (std::vector<int>{0, 1, -1, 2, 3, 4, 5, 6}));
+  ASSERT_TRUE(doc.redo().has_value());
+  EXPECT_EQ(doc.replaced_origin(), deleted.vertex_origin);
 }
 
 // An extrusion and the move that follows it undo as one step; a tool cancelled after its operation

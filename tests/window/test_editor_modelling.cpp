@@ -15,6 +15,7 @@
 #include "../support/editor_driver.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
+#include "render/image/image_io.h"
 #include "core/modelling/samples.h"
 #include "core/modelling/affine_transform.h"
 #include "core/modelling/extrude.h"
@@ -249,6 +250,49 @@ TEST_F(EditorModelling, AScrewdriverFromTheCylinder) {
   const double blade_x = extent(limit, 0, height - 0.15, height), blade_z = extent(limit, 2, height - 0.15, height);
   EXPECT_LT(shaft, 0.6 * handle) << "shaft " << shaft << ", handle " << handle;
   EXPECT_LT(blade_x, 0.5 * blade_z) << "blade " << blade_x << " by " << blade_z;
+}
+
+// Operations, their undo and their redo re-plan only what they change (core/plans/surface_replanner.h):
+// the surface then shown is the one the saved result shows when opened afresh, the same pixels in the
+// view once Home frames both alike (the selection cleared). A sphere of some thousand faces, so that
+// most of its plans are kept through each operation. Uniform tessellation and no statistics in both
+// runs (the View panel's settings are kept): adaptive levels keep a hysteresis of earlier views.
+TEST_F(EditorModelling, AfterOperationsUndoAndRedoTheViewIsThatOfTheSavedMesh) {
+  write_mesh(dir_.file("original.ply"), make_sample("sphere", 2000));
+  original_ = read_mesh(dir_.file("original.ply"));
+  const Viewport view = editor_view(original_);
+  Vec3 low, high;
+  bounding_box(original_, low, high);
+  const glm::vec2 middle = pixel_of(view, 0.5 * (low + high));
+  const glm::vec2 adaptive_box(692.0f, 291.0f), statistics_box(767.0f, 641.0f);
+  Events e;
+  e.click(adaptive_box).wait().click(statistics_box).wait();
+  e.drag(middle - 40.0f, middle + 40.0f, 8).wait();         // the vertices in front
+  e.key("e").text("0.2").key("enter").wait();               // extruded
+  e.key("e").text("0.1").key("enter").wait();               // and its cap again
+  e.key("ctrl+z").wait().key("ctrl+z").wait();              // both undone
+  e.key("ctrl+shift+z").wait().key("ctrl+shift+z").wait();  // and redone
+  e.key("escape").key("home").wait(3);
+  const CovarianceMesh result = play_and_save(e, "result.ply", "--screenshot " + artefact("operations_redone.png"));
+  ASSERT_GT(result.n_faces(), original_.n_faces() + 16) << "both extrusions are in the result";
+  ASSERT_EQ(play(Events().key("home").wait(3), "--screenshot " + artefact("result_opened.png"), "result.ply").exit_code,
+            0);
+  const Image edited = read_image(artefact("operations_redone.png")),
+              opened = read_image(artefact("result_opened.png"));
+  ASSERT_EQ(edited.width, opened.width);
+  ASSERT_EQ(edited.height, opened.height);
+  const auto [lo, hi] = test::editor_free_region(kWidth, kHeight);
+  long long differing = 0, surface = 0;
+  for (int y = int(lo.y); y < int(hi.y); ++y)
+    for (int x = int(lo.x); x < int(hi.x); ++x) {
+      float most = 0.0f;
+      for (int c = 0; c < 3; ++c) most = std::max(most, std::abs(edited.at(x, y, c) - opened.at(x, y, c)));
+      differing += most > 2.0f / 255.0f;
+      surface += opened.at(x, y, 0) != opened.at(0, int(lo.y), 0);
+    }
+  std::printf("%lld pixels differ of %lld that differ from the background's corner\n", differing, surface);
+  EXPECT_GT(surface, 10000) << "the surface fills part of the view";
+  EXPECT_LE(differing, 20);
 }
 
 // Each operation undone (Ctrl+Z) gives exactly the mesh before it: the file saved after k operations

@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "core/modelling/mesh_arrays.h"
+
 namespace gps {
 
 VertexEdit EditHistory::begin(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
@@ -57,14 +59,14 @@ Restored EditHistory::undo(CovarianceMesh& mesh) {
   const Step& s = steps_[--position_];
   if (s.replacement) {
     mesh = *s.replacement->before;
-    return {{}, s.replacement->selection_before};
+    return {{}, s.replacement->selection_before, inverse_origin(s.replacement->origin, mesh.n_vertices())};
   }
   const VertexEdit& e = s.edit;
   for (size_t i = 0; i < e.vertices.size(); ++i) {
     mesh.set_mean(size_t(e.vertices[i]), e.means_before[i]);
     mesh.set_covariance(size_t(e.vertices[i]), e.covariances_before[i]);
   }
-  return {e.vertices, std::nullopt};
+  return {e.vertices, std::nullopt, {}};
 }
 
 Restored EditHistory::redo(CovarianceMesh& mesh) {
@@ -72,14 +74,14 @@ Restored EditHistory::redo(CovarianceMesh& mesh) {
   const Step& s = steps_[position_++];
   if (s.replacement) {
     mesh = *s.replacement->after;
-    return {{}, s.replacement->selection_after};
+    return {{}, s.replacement->selection_after, s.replacement->origin};
   }
   const VertexEdit& e = s.edit;
   for (size_t i = 0; i < e.vertices.size(); ++i) {
     mesh.set_mean(size_t(e.vertices[i]), e.means_after[i]);
     mesh.set_covariance(size_t(e.vertices[i]), e.covariances_after[i]);
   }
-  return {e.vertices, std::nullopt};
+  return {e.vertices, std::nullopt, {}};
 }
 
 }  // namespace gps

@@ -23,6 +23,7 @@ struct VertexEdit {
 struct MeshReplacement {
   std::shared_ptr<const CovarianceMesh> before, after;
   SelectionRecord selection_before, selection_after;
+  std::vector<int> origin;  // per vertex of `after`: its index in `before` (−1 new); empty: kept
 };
 
 /// What an undo or redo restored: the vertices whose Gaussians it set, or a whole mesh (with the
@@ -30,6 +31,7 @@ struct MeshReplacement {
 struct Restored {
   std::vector<int> vertices;
   std::optional<SelectionRecord> replaced_selection;  // set: the mesh was replaced as a whole
+  std::vector<int> origin;  // then: per vertex, its index in the mesh replaced (−1 new); empty: kept
 };
 
 class EditHistory {

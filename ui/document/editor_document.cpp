@@ -143,6 +143,7 @@ void EditorDocument::apply(const Modelled& result, const SelectionRecord& select
   step.after = std::make_shared<const CovarianceMesh>(result.mesh);
   step.selection_before = selection_before;
   step.selection_after.vertices = result.selection;
+  step.origin = result.vertex_origin;
   mesh_ = result.mesh;
   history_.commit(std::move(step));
   changed_.clear();  // the vertices are new: the GPU rebuilds
@@ -157,7 +158,10 @@ bool EditorDocument::commit_edit_into_last_operation(const SelectionRecord& sele
 std::optional<SelectionRecord> EditorDocument::undo() {
   if (!can_undo()) return std::nullopt;
   Restored restored = history_.undo(mesh_);
-  if (restored.replaced_selection) changed_.clear();
+  if (restored.replaced_selection) {
+    changed_.clear();
+    replaced_origin_ = std::move(restored.origin);
+  }
   changed_.insert(changed_.end(), restored.vertices.begin(), restored.vertices.end());
   return restored.replaced_selection;
 }
@@ -165,7 +169,10 @@ std::optional<SelectionRecord> EditorDocument::undo() {
 std::optional<SelectionRecord> EditorDocument::redo() {
   if (!can_redo()) return std::nullopt;
   Restored restored = history_.redo(mesh_);
-  if (restored.replaced_selection) changed_.clear();
+  if (restored.replaced_selection) {
+    changed_.clear();
+    replaced_origin_ = std::move(restored.origin);
+  }
   changed_.insert(changed_.end(), restored.vertices.begin(), restored.vertices.end());
   return restored.replaced_selection;
 }

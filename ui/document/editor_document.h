@@ -91,6 +91,9 @@ public:
   /// the restored mesh (the GPU must rebuild), else nullopt (take_changed() lists the vertices).
   std::optional<SelectionRecord> undo();
   std::optional<SelectionRecord> redo();
+  /// After an undo or redo that replaced the mesh: each vertex's index in the mesh it replaced (−1
+  /// new; empty: indices kept), for plans that follow the change (core/plans/surface_replanner.h).
+  const std::vector<int>& replaced_origin() const { return replaced_origin_; }
 
   /// Keeps the vertices on the plane that start an edit on it (none: no clipping).
   void set_clip(std::optional<PlaneClip> clip) { clip_ = clip; }
@@ -108,6 +111,7 @@ private:
   std::optional<VertexEdit> edit_;
   std::unordered_map<int, size_t> edit_index_;  // vertex → its slot in edit_
   std::vector<int> changed_;
+  std::vector<int> replaced_origin_;
   std::optional<PlaneClip> clip_;
   std::string source_path_, ply_path_, display_name_;
   bool binary_ = true;

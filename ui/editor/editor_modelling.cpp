@@ -341,7 +341,7 @@ void EditorApp::topology_changed(const std::vector<int>& selection) {
 
 void EditorApp::rebuild_after_undo(const SelectionRecord& selection) {
   try {
-    show_mesh(document_.mesh(), view_.plans());
+    show_mesh(document_.mesh(), view_.plans(), std::nullopt, document_.replaced_origin());
     surface_changed();
   } catch (const Error& e) {
     set_status(e.what(), true);
