@@ -39,6 +39,26 @@ EdgePoint canonical_edge_point(EdgePoint e, int corners) {
   return EdgePoint(q, m, (code & kNeighbourReversed) != 0 ? e.n - e.i : e.i, e.n);
 }
 
+// The patch edge that names the limit curve of the mesh edge that edge k of patch p lies on, for
+// both sides alike (tess_levels.glsl measures it, corner_limit_comp.glsl keeps its midpoint): of a
+// whole edge, the lower patch's; of an edge beside two half-size patches, that edge, and of each
+// half beside it, the same. (−1, −1) where no patch edge covers the whole mesh edge (a half beside
+// another half, or on the boundary). `part`: the patch edge's PatchEdgePart (whole for triangles).
+ivec2 curve_edge(int p, int k, int part, int corners) {
+  int r = 4 * (corners * p + k), q = patch_neighbours[r], m = patch_neighbours[r + 1] & kNeighbourEdgeMask;
+  if (part == kEdgeWholeBesideHalves) return ivec2(p, k);
+  if (part != kEdgeWhole) {
+    bool beside_whole = q >= 0 && patch_edges[kPatchEdgeStride * q + kPatchEdgeInts * m + 2] == kEdgeWholeBesideHalves;
+    return beside_whole ? ivec2(q, m) : ivec2(-1);
+  }
+  return q >= 0 && (q < p || (q == p && m < k)) ? ivec2(q, m) : ivec2(p, k);
+}
+
+// Where the corner pass keeps the limit point halfway along the edge that starts at corner slot
+// `slot` (corners · patch + corner), if that edge names its curve: after the two vec4 of every slot
+// (PlanBuffers::corner_limit_floats); `n_vec4`, the length of the corner limits.
+int curve_midpoint_index(int slot, int n_vec4) { return 2 * (n_vec4 / 3) + slot; }
+
 // The canonical form of a boundary point: the canonical edge point, or for a corner its owner's
 // corner as step 0 of the owner's edge that starts there.
 EdgePoint canonical_boundary_point(EdgePoint e, int corners) {

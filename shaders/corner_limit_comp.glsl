@@ -4,9 +4,10 @@
 // K points: evaluated in the tessellation stage, the SIMD batch around it would run that and the
 // regular leaf both. A corner on an infinitely sharp crease (kOwnerSharpCorner) is evaluated by its
 // own patch too, whose normal there the patch's vertices at the corner take (limit_point.glsl).
-// Preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
+// It also keeps the limit point halfway along each patch edge that names its edge's limit curve
+// (canonical_edge.glsl, curve_edge), which the adaptive levels measure (tess_levels.glsl).
+// Follows canonical_edge.glsl; preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
 #include "shaders/compute_pass.glsl"
-layout(std430, binding = kBindingCornerOwners) readonly buffer CornerOwners { int corner_owners[]; };
 layout(std430, binding = kBindingCornerLimits) writeonly buffer CornerLimits { vec4 corner_limits[]; };
 layout(std430, binding = kBindingCornerList) readonly buffer CornerList { int corner_list[]; };
 
@@ -23,17 +24,33 @@ void main() {
   int patch_id = slot / kCorners, corner = slot - kCorners * patch_id;
   int owner_corner = corner_owners[2 * slot + 1];
   bool owner = corner_owners[2 * slot] == patch_id && (owner_corner & kOwnerCornerMask) == corner;
-  if (!owner && (owner_corner & kOwnerSharpCorner) == 0) return;  // its owner's slot holds it
-  vec3 mu, mu_u, mu_v;
-  int kind;
+  bool evaluates_corner = owner || (owner_corner & kOwnerSharpCorner) != 0;  // else its owner's slot holds it
+  // The midpoint of the edge that starts at this corner, where that edge names its limit curve, for
+  // the adaptive levels (tess_levels.glsl).
+  int part = kCorners == 4 ? patch_edges[kPatchEdgeStride * patch_id + kPatchEdgeInts * corner + 2] : kEdgeWhole;
+  bool evaluates_midpoint = curve_edge(patch_id, corner, part, kCorners) == ivec2(patch_id, corner);
   // The corner's parameters as the tessellation stages' edge_point_uv gives them.
 #ifdef GPS_TRIANGLE_PATCHES
-  vec2 uv = corner == 0 ? vec2(0.0) : corner == 1 ? vec2(1.0, 0.0) : vec2(0.0, 1.0);
-  evaluate_triangle_plan(patch_id, uv.x, uv.y, mu, mu_u, mu_v, kind);
+  vec2 corner_uv = corner == 0 ? vec2(0.0) : corner == 1 ? vec2(1.0, 0.0) : vec2(0.0, 1.0);
 #else
-  vec2 uv = vec2(corner == 1 || corner == 2 ? 1.0 : 0.0, corner >= 2 ? 1.0 : 0.0);
-  evaluate_plan(patch_id, uv, mu, mu_u, mu_v, kind);
+  vec2 corner_uv = vec2(corner == 1 || corner == 2 ? 1.0 : 0.0, corner >= 2 ? 1.0 : 0.0);
 #endif
-  corner_limits[2 * slot] = vec4(mu, float(kind));
-  corner_limits[2 * slot + 1] = vec4(normalize(cross(mu_u, mu_v)), 0.0);
+  for (int evaluation = 0; evaluation < 2; ++evaluation) {  // one evaluation in the loop: the shader compiles it once
+    bool midpoint = evaluation == 0;
+    if (!(midpoint ? evaluates_midpoint : evaluates_corner)) continue;
+    vec2 uv = midpoint ? edge_point_uv(EdgePoint(patch_id, corner, 1, 2), kCorners) : corner_uv;
+    vec3 mu, mu_u, mu_v;
+    int kind;
+#ifdef GPS_TRIANGLE_PATCHES
+    evaluate_triangle_plan(patch_id, uv.x, uv.y, mu, mu_u, mu_v, kind);
+#else
+    evaluate_plan(patch_id, uv, mu, mu_u, mu_v, kind);
+#endif
+    if (midpoint) {
+      corner_limits[curve_midpoint_index(slot, corner_limits.length())] = vec4(mu, 0.0);
+    } else {
+      corner_limits[2 * slot] = vec4(mu, float(kind));
+      corner_limits[2 * slot + 1] = vec4(normalize(cross(mu_u, mu_v)), 0.0);
+    }
+  }
 }

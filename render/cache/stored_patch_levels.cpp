@@ -13,9 +13,9 @@ namespace gps {
 
 namespace {
 ShaderProgram check_program(bool triangles, PointPrecision precision) {
-  std::vector<const char*> pieces = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                                     shaders::tess_levels, shaders::patch_level_check_comp};
+  std::vector<const char*> pieces = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
   if (triangles) pieces.insert(pieces.begin(), "#define GPS_TRIANGLE_PATCHES\n");
+  pieces.insert(pieces.end(), {shaders::canonical_edge, shaders::tess_levels, shaders::patch_level_check_comp});
   return ShaderProgram(triangles ? "patch_level_check_triangles" : "patch_level_check",
                        at_precision({{GL_COMPUTE_SHADER, pieces}}, precision));
 }

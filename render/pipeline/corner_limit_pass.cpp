@@ -20,16 +20,17 @@ CornerLimitPass::CornerLimitPass() { set_precision(PointPrecision::single_float)
 void CornerLimitPass::set_precision(PointPrecision precision) {
   const int i = int(precision);
   if (triangles_[i].id() == 0) {  // the last one built, before the switch
-    quads_[i] = ShaderProgram(
-        "corner_limits",
-        at_precision({{GL_COMPUTE_SHADER,
-                       {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval, shaders::corner_limit_comp}}},
-                     precision));
-    triangles_[i] = ShaderProgram("corner_limits_triangles",
-                                  at_precision({{GL_COMPUTE_SHADER,
-                                                 {kTrianglePatches, shaders::gpu_layout, shaders::patch_basis,
-                                                  shaders::plan_eval, shaders::loop_eval, shaders::corner_limit_comp}}},
-                                               precision));
+    quads_[i] =
+        ShaderProgram("corner_limits", at_precision({{GL_COMPUTE_SHADER,
+                                                      {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
+                                                       shaders::canonical_edge, shaders::corner_limit_comp}}},
+                                                    precision));
+    triangles_[i] =
+        ShaderProgram("corner_limits_triangles",
+                      at_precision({{GL_COMPUTE_SHADER,
+                                     {kTrianglePatches, shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
+                                      shaders::loop_eval, shaders::canonical_edge, shaders::corner_limit_comp}}},
+                                   precision));
   }
   precision_ = precision;
 }
@@ -42,15 +43,15 @@ void CornerLimitPass::run_listed(const PatchPlans& plans, int n_listed, int grou
   run(plans, n_listed, true, group_limit);
 }
 
-std::vector<int> CornerLimitPass::owner_slots(const PatchPlans& plans, const std::vector<int>& patches) {
+std::vector<int> CornerLimitPass::edit_slots(const PatchPlans& plans, const std::vector<int>& patches) {
   const int n = plans.corners();
   std::vector<int> slots;
-  slots.reserve(patches.size() * size_t(n));
+  slots.reserve(2 * patches.size() * size_t(n));
   for (const int p : patches)
     for (int c = 0; c < n; ++c) {
       const CornerOwner owner = corner_owner(plans, p, c);
       slots.push_back(n * owner.patch + owner.corner);
-      if (owner.sharp) slots.push_back(n * p + c);  // its own normal on a crease
+      slots.push_back(n * p + c);  // its own normal on a crease; the midpoint of its edge
     }
   std::sort(slots.begin(), slots.end());
   slots.erase(std::unique(slots.begin(), slots.end()), slots.end());

@@ -15,8 +15,9 @@ namespace {
 
 ShaderProgram patch_program(PatchShape shape, PatchOutput output, PointPrecision precision) {
   const bool triangles = shape == PatchShape::triangle, feedback = output == PatchOutput::feedback;
-  std::vector<const char*> control = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                                      shaders::tess_levels};
+  std::vector<const char*> control = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
+  if (triangles) control.insert(control.begin(), "#define GPS_TRIANGLE_PATCHES\n");
+  control.insert(control.end(), {shaders::canonical_edge, shaders::tess_levels});
   std::vector<const char*> evaluation = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
   if (output == PatchOutput::wireframe) evaluation.insert(evaluation.begin(), shaders::geometry_next);
   control.push_back(triangles ? shaders::triangle_tesc : shaders::patch_tesc);

@@ -32,9 +32,10 @@ void PlanBuffers::allocate_zeroed(int binding, size_t bytes) {
   glClearNamedBufferData(buffers_[binding], GL_R32F, GL_RED, GL_FLOAT, nullptr);
 }
 
-// Two vec4 per patch corner: limit point and node kind, normal (shaders/corner_limit_comp.glsl).
+// Two vec4 per patch corner: limit point and node kind, normal; then one per patch corner: the limit
+// point halfway along the edge that starts there (shaders/corner_limit_comp.glsl).
 size_t PlanBuffers::corner_limit_floats(const PatchPlans& plans) {
-  return size_t(plans.corners()) * size_t(plans.n_patches()) * 8;
+  return size_t(plans.corners()) * size_t(plans.n_patches()) * 12;
 }
 
 // Bytes of a point's scalars.

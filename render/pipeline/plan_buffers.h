@@ -49,7 +49,7 @@ public:
   std::vector<float> read_points(int n_points) const;
   /// `read` given the corner pass's output (render/pipeline/corner_limit_pass.h), mapped: two vec4
   /// per patch corner, the limit point and node kind, then the normal; zero at a corner its owner's
-  /// slot holds.
+  /// slot holds. (Edge midpoints follow them, one vec4 per patch corner.)
   void read_corner_limits(const std::function<void(const float*)>& read) const;
   /// GPU memory held, in bytes.
   size_t bytes() const;

@@ -109,7 +109,7 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
     const std::vector<int> rows = rows_reading(dependents_, *changed);
     buffers_.upload_edit(*changed, rows);
     const std::vector<int> patches = changed_patches(*changed, rows);
-    const std::vector<int> corners = CornerLimitPass::owner_slots(plans, patches);
+    const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
     buffers_.upload_corner_list(corners);
     buffers_.bind();
     compute_.run_listed(n_base_, int(changed->size()), int(rows.size()), group_limit_);
