@@ -34,6 +34,7 @@ struct Case {
   std::string name;
   CovarianceMesh mesh;
   Scheme scheme;
+  int operations = 14;  // fewer for Loop, whose full re-plans build their exact tables afresh
 };
 
 CovarianceMesh creased(CovarianceMesh m, double sharpness) {
@@ -48,10 +49,10 @@ std::vector<Case> cases() {
           {"grid (open quads, creased)", creased(test::grid_mesh(8, 6), 2.0), Scheme::catmull_clark},
           {"cylinder (quads and octagons)", make_sample("cylinder"), Scheme::catmull_clark},
           {"cube (creased infinitely)", creased(test::cube_mesh(), kInfiniteSharpness), Scheme::catmull_clark},
-          {"icosphere (triangles, creased)", creased(make_sample("icosphere", 300), 1.5), Scheme::loop},
-          {"triangle grid (open triangles, creased)", creased(test::triangle_grid_mesh(7, 6), kInfiniteSharpness),
-           Scheme::loop},
-          {"icosphere (smooth triangles)", make_sample("icosphere", 200), Scheme::loop}};
+          {"icosphere (triangles, creased)", creased(make_sample("icosphere", 300), 1.5), Scheme::loop, 8},
+          {"triangle grid (open triangles, creased)", creased(test::triangle_grid_mesh(5, 4), kInfiniteSharpness),
+           Scheme::loop, 8},
+          {"icosphere (smooth triangles)", make_sample("icosphere", 80), Scheme::loop, 8}};
 }
 
 // One random operation on `m`; throws gps::Error where the operation refuses.
@@ -107,7 +108,7 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
     SurfaceReplanner replanner(topology_of(mesh.mesh), options, mesh.sharpness, kSmallRanges);
     std::mt19937 random(11);
     int applied = 0, planned = 0, faces = 0;
-    for (int step = 0; step < 40 && applied < 14; ++step) {
+    for (int step = 0; step < 40 && applied < c.operations; ++step) {
       Modelled result;
       try {
         result = random_operation(mesh, random);
@@ -139,7 +140,7 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
                                where + ", redone");
       mesh = std::move(result.mesh);
     }
-    EXPECT_GE(applied, 10) << c.name;
+    EXPECT_GE(applied, c.operations - 4) << c.name;
     // Loop's smooth builder plans the whole mesh; on a mesh of a few dozen faces every piece is most of it.
     if (c.name != "icosphere (smooth triangles)" && c.mesh.n_faces() > 200)
       EXPECT_LT(planned, faces / 2) << c.name << ": most faces kept their plans";
