@@ -54,11 +54,6 @@ ivec2 curve_edge(int p, int k, int part, int corners) {
   return q >= 0 && (q < p || (q == p && m < k)) ? ivec2(q, m) : ivec2(p, k);
 }
 
-// Where the corner pass keeps the limit point halfway along the edge that starts at corner slot
-// `slot` (corners · patch + corner), if that edge names its curve: after the two vec4 of every slot
-// (PlanBuffers::corner_limit_floats); `n_vec4`, the length of the corner limits.
-int curve_midpoint_index(int slot, int n_vec4) { return 2 * (n_vec4 / 3) + slot; }
-
 // The canonical form of a boundary point: the canonical edge point, or for a corner its owner's
 // corner as step 0 of the owner's edge that starts there.
 EdgePoint canonical_boundary_point(EdgePoint e, int corners) {

@@ -9,6 +9,8 @@
 // Follows canonical_edge.glsl; preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
 #include "shaders/compute_pass.glsl"
 layout(std430, binding = kBindingCornerLimits) writeonly buffer CornerLimits { vec4 corner_limits[]; };
+// Per corner slot: the limit point halfway along the edge that starts there, where that edge names its curve.
+layout(std430, binding = kBindingCurveMidpoints) writeonly buffer CurveMidpoints { vec4 curve_midpoints[]; };
 layout(std430, binding = kBindingCornerList) readonly buffer CornerList { int corner_list[]; };
 
 #ifdef GPS_TRIANGLE_PATCHES
@@ -47,7 +49,7 @@ void main() {
     evaluate_plan(patch_id, uv, mu, mu_u, mu_v, kind);
 #endif
     if (midpoint) {
-      corner_limits[curve_midpoint_index(slot, corner_limits.length())] = vec4(mu, 0.0);
+      curve_midpoints[slot] = vec4(mu, 0.0);
     } else {
       corner_limits[2 * slot] = vec4(mu, float(kind));
       corner_limits[2 * slot + 1] = vec4(normalize(cross(mu_u, mu_v)), 0.0);

@@ -12,6 +12,7 @@ uniform float u_pixels;       // adaptive: target edge length in pixels
 uniform int u_debug_mismatch; // tests only: break edge agreement on purpose
 uniform int u_first_patch;    // patches are drawn in batches; gl_PrimitiveID restarts with each
 layout(std430, binding = kBindingCornerLimits) readonly buffer CornerLimits { vec4 corner_limits[]; };
+layout(std430, binding = kBindingCurveMidpoints) readonly buffer CurveMidpoints { vec4 curve_midpoints[]; };
 
 #ifdef GPS_TRIANGLE_PATCHES
 const int kLevelCorners = 3;
@@ -52,7 +53,7 @@ vec3 corner_limit(int p, int c) {
 // bend the curve far from the chord, the chord alone gives too few segments.
 float curve_pixels(int p, int k) {
   vec3 first = corner_limit(p, k), second = corner_limit(p, (k + 1) % kLevelCorners);
-  vec3 middle = corner_limits[curve_midpoint_index(kLevelCorners * p + k, corner_limits.length())].xyz;
+  vec3 middle = curve_midpoints[kLevelCorners * p + k].xyz;
   float first_half = segment_pixels(first, middle), second_half = segment_pixels(middle, second);
   if (first_half < 0.0 || second_half < 0.0) return -1.0;
   precise float pixels = first_half + second_half;

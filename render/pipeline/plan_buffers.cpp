@@ -35,7 +35,11 @@ void PlanBuffers::allocate_zeroed(int binding, size_t bytes) {
 // Two vec4 per patch corner: limit point and node kind, normal; then one per patch corner: the limit
 // point halfway along the edge that starts there (shaders/corner_limit_comp.glsl).
 size_t PlanBuffers::corner_limit_floats(const PatchPlans& plans) {
-  return size_t(plans.corners()) * size_t(plans.n_patches()) * 12;
+  return size_t(plans.corners()) * size_t(plans.n_patches()) * 8;
+}
+
+size_t PlanBuffers::curve_midpoint_floats(const PatchPlans& plans) {
+  return size_t(plans.corners()) * size_t(plans.n_patches()) * 4;
 }
 
 // Bytes of a point's scalars.
@@ -52,6 +56,8 @@ void PlanBuffers::check_fits(const SurfaceTables& tables, int n_vertices, int n_
   check_storage_fits("plan nodes", tables.plans.nodes.size() * sizeof(tables.plans.nodes[0]), n_vertices, n_faces,
                      storage_limit);
   check_storage_fits("corner limits", corner_limit_floats(tables.plans) * sizeof(float), n_vertices, n_faces,
+                     storage_limit);
+  check_storage_fits("curve midpoints", curve_midpoint_floats(tables.plans) * sizeof(float), n_vertices, n_faces,
                      storage_limit);
 }
 
@@ -70,6 +76,7 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables) {
   upload(kBindingCornerOwners, p.corner_owners);
   allocate_zeroed(kBindingPoints, size_t(s.n_points()) * kVec4PerPoint * 4 * real_bytes(precision_));
   allocate_zeroed(kBindingCornerLimits, corner_limit_floats(p) * sizeof(float));
+  allocate_zeroed(kBindingCurveMidpoints, curve_midpoint_floats(p) * sizeof(float));
 }
 
 // Float points: μ, then Σ⁻¹'s xx xy xz yy yz zz (shaders/dual_map_comp.glsl). The inverse is taken

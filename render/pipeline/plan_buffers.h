@@ -49,13 +49,15 @@ public:
   std::vector<float> read_points(int n_points) const;
   /// `read` given the corner pass's output (render/pipeline/corner_limit_pass.h), mapped: two vec4
   /// per patch corner, the limit point and node kind, then the normal; zero at a corner its owner's
-  /// slot holds. (Edge midpoints follow them, one vec4 per patch corner.)
+  /// slot holds. (The edge midpoints are a buffer of their own, kBindingCurveMidpoints: within one,
+  /// a mesh of a million faces passed the largest storage block llvmpipe allows.)
   void read_corner_limits(const std::function<void(const float*)>& read) const;
   /// GPU memory held, in bytes.
   size_t bytes() const;
 
 private:
-  static size_t corner_limit_floats(const PatchPlans& plans);
+  static size_t corner_limit_floats(const PatchPlans& plans);    // two vec4 per patch corner
+  static size_t curve_midpoint_floats(const PatchPlans& plans);  // one vec4 per patch corner
   void allocate_zeroed(int binding, size_t bytes);
   template <class Real>
   void upload_gaussians_as(const FramedGaussians& gaussians);

@@ -226,13 +226,13 @@ constexpr const char* kConstantsProbe = R"glsl(
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) writeonly buffer Out { int outputs[]; };
 void main() {
-  int values[33] = int[33](kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
+  int values[34] = int[34](kBindingGaussians, kBindingPoints, kBindingOffsets, kBindingIndices, kBindingWeights,
                            kBindingNodes, kBindingRoots, kBindingCorners, kBindingChanged, kBindingRows, kBindingExtraordinaryTables,
-                           kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCornerLimits, kBindingCornerList, kBindingCount,
+                           kBindingPatchEdges, kBindingPatchNeighbours, kBindingCornerOwners, kBindingCornerLimits, kBindingCornerList, kBindingCurveMidpoints, kBindingCount,
                            kBindingStoredVertices, kBindingWeldTable, kBindingStoredIndices, kBindingBlockStarts,
                            kWorkGroupSize, kVec4PerPoint, kNodeInternal, kNodeRegular, kNodeTerminal, kNodeExtraordinary,
                            kPatchEdgeInts, kPatchEdgeStride, kEdgeWhole, kEdgeWholeBesideHalves, kEdgeFirstHalf, kEdgeSecondHalf);
-  for (int k = 0; k < 33; ++k) outputs[k] = values[k];
+  for (int k = 0; k < 34; ++k) outputs[k] = values[k];
 }
 )glsl";
 
@@ -256,6 +256,7 @@ TEST_F(SharedLayout, GlslAndCppAgreeOnEveryConstant) {
                                 kBindingCornerOwners,
                                 kBindingCornerLimits,
                                 kBindingCornerList,
+                                kBindingCurveMidpoints,
                                 kBindingCount,
                                 kBindingStoredVertices,
                                 kBindingWeldTable,
