@@ -18,6 +18,7 @@
 #include "core/plans/stencil_table.h"
 #include "core/evaluation/tessellator.h"
 #include "render/image/non_finite_pixels.h"
+#include "render/pipeline/plan_buffers.h"
 #include "render/pipeline/surface_point.h"
 #include "render/comparison/reference_triangles.h"
 #include "tests/support/device_limits.h"
@@ -505,6 +506,16 @@ TEST_F(GpuTest, AMeshBeyondTheStorageLimitIsRefusedWithItsFigures) {
   renderer.draw(target, frame_mesh(make_sample("cube"), 30.0f, 20.0f), DrawOptions{});
   const Image image = target.read(0);
   EXPECT_LT(image.at(16, 16, 0), 0.99f);
+}
+
+// The buffers kept per patch corner for a mesh of a million quads (four million corners) each fit a
+// storage block of 128 MiB, llvmpipe's largest: the corner limits (two vec4 each) and the edge
+// midpoints (one) are buffers of their own.
+TEST_F(GpuTest, TheCornerBuffersOfAMillionQuadsFitTheSmallestStorageBlock) {
+  SurfaceTables tables;
+  tables.plans.patch_roots.assign(1'000'000, 0);
+  tables.stencils.offsets = {0};
+  EXPECT_NO_THROW(PlanBuffers::check_fits(tables, 1'000'000, 1'000'000, 128ll << 20, PointPrecision::single_float));
 }
 
 }  // namespace
