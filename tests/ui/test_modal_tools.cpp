@@ -12,6 +12,7 @@
 #include "../support/temp_dir.h"
 #include "core/io/mesh_io.h"
 #include "core/modelling/bevel.h"
+#include "core/modelling/inset.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/mesh_arrays.h"
 #include "core/modelling/mesh_queries.h"
@@ -21,6 +22,7 @@
 #include "ui/editing/selection.h"
 #include "ui/tools/bevel_tool.h"
 #include "ui/tools/bisect_tool.h"
+#include "ui/tools/inset_tool.h"
 #include "ui/tools/sharpness_tool.h"
 #include "ui/tools/slide_tool.h"
 #include "ui/tools/transform_tool.h"
@@ -140,6 +142,29 @@ TEST(BevelTool, EscapeLeavesTheDocumentWithoutAnUndoStep) {
   EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cube()));
   EXPECT_FALSE(editor.document.can_undo());
   EXPECT_FALSE(editor.document.dirty());
+}
+
+// I with a typed thickness and Enter: core's inset of the selected face, one undo step; a thickness
+// core refuses is shown, and Enter then says why nothing was done.
+TEST(InsetTool, TypedThicknessAndEnterIsCoresInset) {
+  Editor editor(cube(), {4, 5, 6, 7});
+  ToolContext c = editor.context();
+  const std::vector<int> faces = faces_within(cube(), {4, 5, 6, 7});
+  ASSERT_EQ(faces.size(), 1u);
+  auto tool = InsetTool::start(c);
+  ASSERT_TRUE(tool);
+  editor.type(*tool, "0.02");
+  EXPECT_EQ(editor.send(*tool, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), inset_faces(cube(), faces, 0.02).mesh)) << editor.said;
+  Editor refused(cube(), {4, 5, 6, 7});
+  ToolContext r = refused.context();
+  tool = InsetTool::start(r);
+  refused.type(*tool, "5");
+  EXPECT_TRUE(tool->error());
+  EXPECT_EQ(refused.send(*tool, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_EQ(refused.installed, 0);
+  EXPECT_EQ(refused.said.find("move toward the centre"), std::string::npos) << refused.said;
+  EXPECT_NE(refused.said.find("inset"), std::string::npos) << refused.said;
 }
 
 TEST(BevelTool, ARefusalIsShownAndConfirmingItChangesNothing) {

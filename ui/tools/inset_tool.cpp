@@ -85,8 +85,10 @@ void InsetTool::follow(glm::vec2 cursor, ToolContext& ctx) {
 }
 
 void InsetTool::end(bool keep, ToolContext& ctx) {
-  if (!applied_) {
-    ctx.report(keep ? "inset: nothing done (move toward the centre or type a thickness)" : "inset cancelled", false);
+  if (!applied_) {  // a thickness core refused says why
+    const std::string why =
+        error_ ? status_ + ": nothing done" : "inset: nothing done (move toward the centre or type a thickness)";
+    ctx.report(keep ? why : "inset cancelled", keep && error_);
   } else if (keep) {
     ctx.document.commit_edit_into_last_operation(ctx.selection.record());
     ctx.note("inset: " + summary_, false);
