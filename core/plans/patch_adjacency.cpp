@@ -77,9 +77,11 @@ bool has_infinite_sharpness(const Sharpness& sharpness) {
 }
 
 // Per base vertex: whether the surface has no one tangent plane there (patch_adjacency.h).
-std::vector<char> sharp_vertices(const PolygonTopology& topology, const Sharpness& sharpness) {
+std::vector<char> sharp_vertices(const PolygonTopology& topology, const Sharpness& sharpness,
+                                 const MeshConnectivity* connectivity) {
   std::vector<char> sharp(size_t(topology.n_vertices), 0);
-  const MeshConnectivity c = connectivity_of(topology);
+  const MeshConnectivity built = connectivity ? MeshConnectivity{} : connectivity_of(topology);
+  const MeshConnectivity& c = connectivity ? *connectivity : built;
   for (int v = 0; v < topology.n_vertices; ++v) {
     int between_faces = 0, on_boundary = 0;
     for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
@@ -97,7 +99,8 @@ std::vector<char> sharp_vertices(const PolygonTopology& topology, const Sharpnes
 
 // Flags the linked patch edges on infinitely sharp edges and the patch corners where the patches
 // around have normals of their own (patch_adjacency.h).
-void add_sharp_flags(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness) {
+void add_sharp_flags(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness,
+                     const MeshConnectivity* connectivity) {
   const int n = plans.corners(), n_base = topology.n_vertices;
   for (int p = 0; p < plans.n_patches(); ++p)
     for (int k = 0; k < n; ++k) {
@@ -108,7 +111,7 @@ void add_sharp_flags(PatchPlans& plans, const PolygonTopology& topology, const S
       r[1] |= kNeighbourSharpEdge;
       if (r[2] >= 0) r[3] |= kNeighbourSharpEdge;
     }
-  const std::vector<char> sharp_vertex = sharp_vertices(topology, sharpness);
+  const std::vector<char> sharp_vertex = sharp_vertices(topology, sharpness, connectivity);
   const auto sharp_edge = [&](int p, int k) { return edge_neighbour(plans, p, k).sharp; };
   for (int p = 0; p < plans.n_patches(); ++p)
     for (int c = 0; c < n; ++c) {
@@ -121,7 +124,8 @@ void add_sharp_flags(PatchPlans& plans, const PolygonTopology& topology, const S
 
 }  // namespace
 
-void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness) {
+void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness,
+                         const MeshConnectivity* connectivity) {
   const int n = plans.corners(), n_patches = plans.n_patches();
   plans.patch_neighbours.assign(size_t(4 * n * n_patches), -1);
   plans.corner_owners.assign(size_t(2 * n * n_patches), -1);
@@ -168,7 +172,7 @@ void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, con
       plans.corner_owners[size_t(2 * (n * p + c))] = first_use / n;
       plans.corner_owners[size_t(2 * (n * p + c)) + 1] = first_use % n;
     }
-  if (has_infinite_sharpness(sharpness)) add_sharp_flags(plans, topology, sharpness);
+  if (has_infinite_sharpness(sharpness)) add_sharp_flags(plans, topology, sharpness, connectivity);
 }
 
 }  // namespace gps

@@ -38,7 +38,9 @@ namespace gps {
 /// with two infinitely sharp edges or more (a boundary's edges counted) of which one lies between
 /// two faces (a dart's single crease ends in a smooth point), and at a split face's edge point on a
 /// sharp edge.
-void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness);
+/// `connectivity`: the topology's where the caller keeps it (else built where the sharpness needs it).
+void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness,
+                         const MeshConnectivity* connectivity = nullptr);
 
 struct EdgeNeighbour {
   int patch = -1;  // −1: none

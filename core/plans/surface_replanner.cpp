@@ -133,7 +133,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     range_first_.clear();
     loop_tables_.reset();
     tables_ = build_loop_plans(t, options_.loop_beta);
-    add_patch_adjacency(tables_.plans, t, sharpness);
+    add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
     return;
   }
   if (scheme_ == Scheme::loop && !loop_tables_) loop_tables_ = std::make_unique<LoopCreaseTables>(options_.loop_beta);
@@ -155,7 +155,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   for (const auto& failure : failures)
     if (failure) std::rethrow_exception(failure);
   tables_ = merge_ranges(ranges_, t.n_vertices, false);
-  add_patch_adjacency(tables_.plans, t, sharpness);
+  add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
 }
 
 std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
@@ -183,7 +183,7 @@ std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
   }
   base_.creases = std::move(level);
   if (faces.empty()) {  // the same plans; the patch adjacency reads the sharpness as given
-    add_patch_adjacency(tables_.plans, t, sharpness);
+    add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
     return faces;
   }
   std::vector<int> which;
