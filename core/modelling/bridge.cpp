@@ -174,9 +174,9 @@ Modelled bridge_runs(MeshArrays a, const BoundaryRun& first, const BoundaryRun& 
              : std::to_string(first.vertices.size()) + " and " + count_of(second.vertices.size(), "vertex", "vertices");
   const size_t added = a.faces.size() - first_new;
   return modelled(a, selection,
-          done_before + "bridged two " + std::string(band.closed ? "loops" : "chains") + " of " + lengths + ": " +
-              count_of(added, "face", "faces") + " added" +
-              (n == m ? "" : " (" + count_of(n - m, "triangle", "triangles") + " spreading the difference)"));
+                  done_before + "bridged two " + std::string(band.closed ? "loops" : "chains") + " of " + lengths +
+                      ": " + count_of(added, "face", "faces") + " added" +
+                      (n == m ? "" : " (" + count_of(n - m, "triangle", "triangles") + " spreading the difference)"));
 }
 
 std::vector<int> identity_index(int n) {

@@ -65,7 +65,8 @@ TEST(SurfaceReplanner, RandomChangesMatchAFullReplan) {
     }
     const PlanOptions options = c.options();
     SurfaceReplanner replanner(topology, options, sharpness, kSmallRanges);
-    test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, sharpness), c.name + ", first plan");
+    test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, sharpness),
+                             c.name + ", first plan");
     int partial = 0;
     for (int step = 0; step < 12; ++step) {
       const int changes = std::uniform_int_distribution<int>(1, 3)(random);
@@ -87,7 +88,7 @@ TEST(SurfaceReplanner, RandomChangesMatchAFullReplan) {
       const std::vector<int> faces = replanner.set_sharpness(sharpness);
       partial += faces.size() < size_t(topology.n_faces()) ? 1 : 0;
       test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, sharpness),
-                         c.name + ", step " + std::to_string(step));
+                               c.name + ", step " + std::to_string(step));
     }
     EXPECT_GT(partial, 6) << c.name << ": most steps re-plan only some faces";
   }
@@ -104,10 +105,12 @@ TEST(SurfaceReplanner, FirstAndLastCrease) {
     Sharpness one;
     one.set_crease(edge->v0().idx(), edge->v1().idx(), 1.5);
     EXPECT_EQ(replanner.set_sharpness(one).size(), size_t(topology.n_faces())) << c.name;
-    test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, one), c.name + ", first crease");
+    test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, one),
+                             c.name + ", first crease");
     one.set_crease(edge->v0().idx(), edge->v1().idx(), 0.0);
     EXPECT_EQ(replanner.set_sharpness(one).size(), size_t(topology.n_faces())) << c.name;
-    test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, {}), c.name + ", last crease gone");
+    test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, {}),
+                             c.name + ", last crease gone");
     EXPECT_TRUE(replanner.set_sharpness(one).empty()) << c.name << ": nothing changed";
   }
 }
@@ -120,8 +123,7 @@ TEST(SurfaceReplanner, FacesReadingAnEdge) {
   const MeshConnectivity c = connectivity_of(t);
   int shared = -1;
   for (int e = 0; e < c.n_edges(); ++e)
-    if (!c.is_boundary_edge(e) &&
-        std::min(c.edge_faces[2 * size_t(e)], c.edge_faces[2 * size_t(e) + 1]) == 0)
+    if (!c.is_boundary_edge(e) && std::min(c.edge_faces[2 * size_t(e)], c.edge_faces[2 * size_t(e) + 1]) == 0)
       shared = e;
   ASSERT_GE(shared, 0);
   EXPECT_EQ(faces_reading(t, c, {shared}, {}), (std::vector<int>{0, 1, 2}));
