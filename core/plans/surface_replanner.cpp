@@ -103,11 +103,15 @@ SurfaceReplanner::SurfaceReplanner(const PolygonTopology& topology, const PlanOp
       faces_per_range_(std::max(1, faces_per_range)),
       base_(base_local_mesh(topology, sharpness)),
       sharpness_(sharpness) {
-  if (scheme_ == Scheme::loop)
+  check(topology, scheme_);
+  build_all(sharpness);
+}
+
+void SurfaceReplanner::check(const PolygonTopology& topology, Scheme scheme) const {
+  if (scheme == Scheme::loop)
     check_loop_plans(topology);
   else
-    check_quad_plans(topology, options.depth, options.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier);
-  build_all(sharpness);
+    check_quad_plans(topology, options_.depth, options_.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier);
 }
 
 int SurfaceReplanner::range_of_face(int f) const {
@@ -197,10 +201,7 @@ int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpn
                                    const std::vector<int>& origin) {
   // The checks first: a refusal changes nothing.
   const Scheme scheme = scheme_for(topology, options_);
-  if (scheme == Scheme::loop)
-    check_loop_plans(topology);
-  else
-    check_quad_plans(topology, options_.depth, options_.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier);
+  check(topology, scheme);
   LocalMesh base = base_local_mesh(topology, sharpness);
   const bool same_builder = scheme == scheme_ && !ranges_.empty() && base.has_creases() == base_.has_creases();
   const LocalMesh previous = std::exchange(base_, std::move(base));

@@ -34,6 +34,7 @@ public:
                    int faces_per_range = kFacesPerRange);
 
   Scheme scheme() const { return scheme_; }
+  const PlanOptions& options() const { return options_; }
   const PolygonTopology& topology() const { return base_.topology; }
   /// build_surface_plans(topology, options, sharpness) for the latest topology and sharpness, bit for bit.
   const SurfaceTables& tables() const { return tables_; }
@@ -54,6 +55,8 @@ public:
   int set_topology(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin = {});
 
 private:
+  // The plan builders' checks of a topology under `scheme` (valences, depth); throws as they do.
+  void check(const PolygonTopology& topology, Scheme scheme) const;
   // Builds the ranges `which` on all cores, then merges every range into tables_.
   void build(const std::vector<int>& which, const Sharpness& sharpness);
   // Cuts the faces into even ranges and builds them all.

@@ -27,9 +27,6 @@
 namespace gps {
 namespace {
 
-// Ranges of a few faces, so that an operation leaves most of them as they were.
-constexpr int kSmallRanges = 8;
-
 struct Case {
   std::string name;
   CovarianceMesh mesh;
@@ -105,7 +102,7 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
     PlanOptions options;
     options.scheme = c.scheme;
     CovarianceMesh mesh = c.mesh;
-    SurfaceReplanner replanner(topology_of(mesh.mesh), options, mesh.sharpness, kSmallRanges);
+    SurfaceReplanner replanner(topology_of(mesh.mesh), options, mesh.sharpness, test::kSmallRanges);
     std::mt19937 random(11);
     int applied = 0, planned = 0, faces = 0;
     for (int step = 0; step < 40 && applied < c.operations; ++step) {
@@ -157,7 +154,7 @@ TEST(IncrementalPlans, AnyOriginGivesTheTablesOfAFullReplan) {
   const std::vector<std::vector<int>> origins = {
       {}, std::vector<int>(removed.mesh.n_vertices(), -1), removed.vertex_origin, {0, 2, 1}};
   for (size_t i = 0; i < origins.size(); ++i) {
-    SurfaceReplanner replanner(topology_of(sphere.mesh), options, {}, kSmallRanges);
+    SurfaceReplanner replanner(topology_of(sphere.mesh), options, {}, test::kSmallRanges);
     replanner.set_topology(after, {}, origins[i]);
     test::expect_same_tables(replanner.tables(), build_surface_plans(after, options, {}),
                              "origin " + std::to_string(i));

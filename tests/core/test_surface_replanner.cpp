@@ -16,9 +16,6 @@
 namespace gps {
 namespace {
 
-// Ranges of a few faces, so that a change leaves most of them as they were.
-constexpr int kSmallRanges = 8;
-
 struct Case {
   std::string name;
   CovarianceMesh mesh;
@@ -64,7 +61,7 @@ TEST(SurfaceReplanner, RandomChangesMatchAFullReplan) {
       sharpness.set_crease(a, b, i == 0 ? 2.0 : kInfiniteSharpness);
     }
     const PlanOptions options = c.options();
-    SurfaceReplanner replanner(topology, options, sharpness, kSmallRanges);
+    SurfaceReplanner replanner(topology, options, sharpness, test::kSmallRanges);
     test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, sharpness),
                              c.name + ", first plan");
     int partial = 0;
@@ -100,7 +97,7 @@ TEST(SurfaceReplanner, FirstAndLastCrease) {
   for (const Case& c : cases()) {
     const PolygonTopology topology = topology_of(c.mesh.mesh);
     const PlanOptions options = c.options();
-    SurfaceReplanner replanner(topology, options, {}, kSmallRanges);
+    SurfaceReplanner replanner(topology, options, {}, test::kSmallRanges);
     const auto edge = c.mesh.mesh.edges().begin();
     Sharpness one;
     one.set_crease(edge->v0().idx(), edge->v1().idx(), 1.5);

@@ -8,6 +8,9 @@
 
 namespace gps::test {
 
+/// Re-planners' ranges of a few faces in tests, so that a change leaves most of them as they were.
+constexpr int kSmallRanges = 8;
+
 inline void expect_same_tables(const SurfaceTables& a, const SurfaceTables& b, const std::string& where) {
   const PatchPlans &p = a.plans, &q = b.plans;
   EXPECT_EQ(p.shape, q.shape) << where;

@@ -202,7 +202,6 @@ private:
   GlfwInputForwarder input_forwarder_;
   std::unique_ptr<SurfaceRenderer> renderer_;
   std::optional<SurfaceReplanner> shown_plans_;  // the plans of the last mesh shown without a mirror
-  PlanOptions shown_plan_options_;               // the options they were made with
   std::unique_ptr<GpuPassTimer> timer_;
   std::unique_ptr<RenderTarget> target_;
   std::unique_ptr<PointOverlay> point_overlay_;

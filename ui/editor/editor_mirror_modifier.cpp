@@ -67,12 +67,10 @@ void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, 
     renderer_->set_mesh(mesh, std::move(*surface), NormalisedFrame::of(mesh));
   } else {  // re-planned where the mesh changed (a wrong origin costs time, never a wrong table)
     const PolygonTopology topology = topology_of(mesh.mesh);
-    if (shown_plans_ && shown_plan_options_ == plans) {
+    if (shown_plans_ && shown_plans_->options() == plans)
       shown_plans_->set_topology(topology, mesh.sharpness, origin);
-    } else {
+    else
       shown_plans_.emplace(topology, plans, mesh.sharpness);
-      shown_plan_options_ = plans;
-    }
     renderer_->set_mesh(mesh, shown_plans_->tables(), NormalisedFrame::of(mesh));
   }
   mirror_ = std::move(next);
