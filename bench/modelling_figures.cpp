@@ -36,7 +36,9 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   DrawOptions draw;
   draw.pixels = 6.0f;
   const Camera camera = frame_mesh(mesh);
-  renderer.set_mesh(mesh, options);
+  const PolygonTopology topology = topology_of(mesh.mesh);
+  SurfaceReplanner replanner(topology, options, mesh.sharpness);
+  renderer.set_mesh(mesh, replanner.tables(), NormalisedFrame::of(mesh), replanner.last_change(), {});
   renderer.draw(target, camera, draw);
   glFinish();
 
@@ -56,10 +58,9 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       {"transform all", [&](const CovarianceMesh& m) {
          return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), 1.01 * Mat3::Identity()));
        }}};
-  // The plans follow each operation incrementally (core/plans/surface_replanner.h) and go back the same
-  // way before the next round; a full re-plan of the same result is timed beside them.
-  const PolygonTopology topology = topology_of(mesh.mesh);
-  SurfaceReplanner replanner(topology, options, mesh.sharpness);
+  // The plans and the renderer follow each operation incrementally (core/plans/surface_replanner.h) and
+  // go back the same way, as an undo, before the next round; a full re-plan of the same result is timed
+  // beside them.
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& [label, operation] : operations) {
     std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s;
@@ -73,7 +74,8 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       planned = replanner.set_topology(after, result.mesh.sharpness, result.vertex_origin);
       plan_s.push_back(seconds_since(planning));
       const Clock::time_point uploading = Clock::now();
-      renderer.set_mesh(result.mesh, replanner.tables(), NormalisedFrame::of(result.mesh));
+      renderer.set_mesh(result.mesh, replanner.tables(), NormalisedFrame::of(result.mesh), replanner.last_change(),
+                        result.vertex_origin);
       glFinish();
       upload_s.push_back(seconds_since(uploading));
       const Clock::time_point drawn = Clock::now();
@@ -84,7 +86,9 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       const Clock::time_point full = Clock::now();
       const SurfaceTables whole = build_surface_plans(after, options, result.mesh.sharpness);
       full_s.push_back(seconds_since(full));
-      replanner.set_topology(topology, mesh.sharpness, inverse_origin(result.vertex_origin, mesh.n_vertices()));
+      const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
+      replanner.set_topology(topology, mesh.sharpness, back);
+      renderer.set_mesh(mesh, replanner.tables(), NormalisedFrame::of(mesh), replanner.last_change(), back);
     }
     rows.push_back({{"operation", label},
                     {"operation_ms", median(op_s) * 1e3},

@@ -153,7 +153,12 @@ void DirectedEdges::reserve(size_t n) {
   while (capacity < 2 * n) capacity *= 2;
   if (capacity <= slots_.size()) return;
   slots_.assign(capacity, -1);
-  for (size_t i = 0; i < entries_.size(); ++i) slots_[slot_of(entries_[i].first)] = int(i);
+  slot_keys_.assign(capacity, 0);
+  for (size_t i = 0; i < entries_.size(); ++i) {
+    const size_t s = slot_of(entries_[i].first);
+    slots_[s] = int(i);
+    slot_keys_[s] = entries_[i].first;
+  }
 }
 
 size_t DirectedEdges::slot_of(uint64_t key) const {
@@ -164,7 +169,7 @@ size_t DirectedEdges::slot_of(uint64_t key) const {
   h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
   h ^= h >> 31;
   for (size_t s = size_t(h) & mask;; s = (s + 1) & mask)
-    if (slots_[s] < 0 || entries_[size_t(slots_[s])].first == key) return s;
+    if (slots_[s] < 0 || slot_keys_[s] == key) return s;
 }
 
 void DirectedEdges::emplace(uint64_t key, std::pair<int, int> place) {
@@ -172,6 +177,7 @@ void DirectedEdges::emplace(uint64_t key, std::pair<int, int> place) {
   const size_t s = slot_of(key);
   if (slots_[s] >= 0) return;
   slots_[s] = int(entries_.size());
+  slot_keys_[s] = key;
   entries_.emplace_back(key, place);
 }
 

@@ -110,6 +110,7 @@ private:
   size_t slot_of(uint64_t key) const;  // the slot holding `key`, or the empty slot where it would go
   std::vector<Entry> entries_;         // in insertion order
   std::vector<int> slots_;             // index into entries_, −1 empty; a power of two, at most half full
+  std::vector<uint64_t> slot_keys_;    // per slot, its entry's key: a probe reads one array, not two
 };
 DirectedEdges directed_edges(const MeshArrays& arrays);
 

@@ -25,20 +25,25 @@ void collect_node_points(const PatchPlans& plans, int node, std::vector<int>& ou
 
 }  // namespace
 
+void append_patch_points(const PatchPlans& plans, int p, std::vector<int>& out) {
+  const int corners = plans.corners();
+  collect_node_points(plans, plans.patch_roots[size_t(p)], out);
+  const auto corner = plans.patch_corner_points.begin() + ptrdiff_t(corners) * p;
+  out.insert(out.end(), corner, corner + corners);
+  if (!plans.patch_edges.empty())
+    for (int k = 0; k < corners; ++k) {
+      const PatchEdge e = patch_edge(plans, p, k);
+      out.insert(out.end(), {e.from, e.to});
+    }
+}
+
 PatchReaders::PatchReaders(const PatchPlans& plans, int n_points) : n_patches_(plans.n_patches()) {
   const int corners = plans.corners();
   // Per patch: the points it reads, and the patches it evaluates boundary points from.
   std::vector<int> read_offsets{0}, reads, source_offsets{0}, sources, points;
   for (int p = 0; p < n_patches_; ++p) {
     points.clear();
-    collect_node_points(plans, plans.patch_roots[size_t(p)], points);
-    const auto corner = plans.patch_corner_points.begin() + ptrdiff_t(corners) * p;
-    points.insert(points.end(), corner, corner + corners);
-    if (!plans.patch_edges.empty())
-      for (int k = 0; k < corners; ++k) {
-        const PatchEdge e = patch_edge(plans, p, k);
-        points.insert(points.end(), {e.from, e.to});
-      }
+    append_patch_points(plans, p, points);
     std::sort(points.begin(), points.end());
     points.erase(std::unique(points.begin(), points.end()), points.end());
     if (!points.empty() && (points.front() < 0 || points.back() >= n_points)) throw Error("plan point out of range");

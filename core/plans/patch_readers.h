@@ -10,6 +10,10 @@
 
 namespace gps {
 
+/// Appends the points patch `p` reads to `out` (its plan's nets, its corner points, its edges' ends),
+/// unsorted and with repeats.
+void append_patch_points(const PatchPlans& plans, int p, std::vector<int>& out);
+
 class PatchReaders {
 public:
   /// `n_points`: base vertices plus stencil rows (StencilTable::n_points()).

@@ -1,6 +1,7 @@
 #include "core/plans/surface_replanner.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <utility>
 
@@ -71,6 +72,12 @@ bool renumber_range(RangePlans& range, const std::vector<int>& new_index, int n_
   return !gone;
 }
 
+// A new id for a replanner's tables, unique in the process.
+long long next_tables_id() {
+  static std::atomic<long long> last{0};
+  return ++last;
+}
+
 }  // namespace
 
 std::vector<int> faces_reading(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<int>& edges,
@@ -130,11 +137,15 @@ void SurfaceReplanner::build_all(const Sharpness& sharpness) {
   build(all, sharpness);
 }
 
-void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sharpness) {
+void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sharpness,
+                             const std::vector<int>& old_patch_first) {
   const PolygonTopology& t = base_.topology;
+  change_ = {change_.to, next_tables_id(), {}};
+  std::vector<KeptPatches>& kept = change_.kept;
   if (scheme_ == Scheme::loop && !base_.has_creases()) {  // Loop's smooth builder, as build_surface_plans
     ranges_.clear();
     range_first_.clear();
+    patch_first_.clear();
     loop_tables_.reset();
     tables_ = build_loop_plans(t, options_.loop_beta);
     add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
@@ -160,6 +171,21 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     if (failure) std::rethrow_exception(failure);
   tables_ = merge_ranges(ranges_, t.n_vertices, false);
   add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
+  patch_first_.assign(ranges_.size(), 0);
+  int first = 0;
+  for (size_t r = 0; r < ranges_.size(); ++r) {
+    patch_first_[r] = first;
+    const int count = int(ranges_[r].tables.plans.patch_roots.size());
+    const int old_first = r < old_patch_first.size() ? old_patch_first[r] : -1;
+    if (old_first >= 0 && count > 0) {
+      KeptPatches* last = kept.empty() ? nullptr : &kept.back();
+      if (last && last->first + last->count == first && last->old_first + last->count == old_first)
+        last->count += count;
+      else
+        kept.push_back({first, old_first, count});
+    }
+    first += count;
+  }
 }
 
 std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
@@ -188,12 +214,16 @@ std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
   base_.creases = std::move(level);
   if (faces.empty()) {  // the same plans; the patch adjacency reads the sharpness as given
     add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
+    change_ = {change_.to, next_tables_id(), {}};
+    if (const int n = tables_.plans.n_patches(); n > 0) change_.kept.push_back({0, 0, n});
     return faces;
   }
   std::vector<int> which;
+  std::vector<int> old_patch_first = patch_first_;
   for (const int f : faces)
     if (const int r = range_of_face(f); which.empty() || which.back() != r) which.push_back(r);
-  build(which, sharpness);
+  for (const int r : which) old_patch_first[size_t(r)] = -1;
+  build(which, sharpness, old_patch_first);
   return faces;
 }
 
@@ -279,29 +309,36 @@ int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpn
     if (keep) kept_at[size_t(g0)] = int(r);
   }
   std::vector<RangePlans> ranges;
-  std::vector<int> firsts, fresh;
+  std::vector<int> firsts, fresh, old_patch_first;
   int planned = 0;
   for (int g = 0; g < n_faces;) {
     const int start = g;
     if (const int r = kept_at[size_t(g)]; r >= 0) {
       RangePlans& kept = ranges_[size_t(r)];
       const int size = range_first_[size_t(r) + 1] - range_first_[size_t(r)];
-      if (!renumber_range(kept, new_index, n_old, n_new)) fresh.push_back(int(ranges.size())), planned += size;
+      if (renumber_range(kept, new_index, n_old, n_new)) {
+        old_patch_first.push_back(patch_first_[size_t(r)]);
+      } else {
+        fresh.push_back(int(ranges.size()));
+        old_patch_first.push_back(-1);
+        planned += size;
+      }
       ranges.push_back(std::move(kept));
       g += size;
     } else {
       while (g < n_faces && kept_at[size_t(g)] < 0 && g - start < faces_per_range_) ++g;
       fresh.push_back(int(ranges.size()));
+      old_patch_first.push_back(-1);
       ranges.emplace_back();
       planned += g - start;
     }
     firsts.push_back(start);
   }
-  if (firsts.empty()) firsts.push_back(0), fresh.push_back(0), ranges.emplace_back();
+  if (firsts.empty()) firsts.push_back(0), fresh.push_back(0), old_patch_first.push_back(-1), ranges.emplace_back();
   firsts.push_back(n_faces);
   ranges_ = std::move(ranges);
   range_first_ = std::move(firsts);
-  build(fresh, sharpness);
+  build(fresh, sharpness, old_patch_first);
   return planned;
 }
 

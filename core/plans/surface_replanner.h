@@ -23,6 +23,21 @@ namespace gps {
 std::vector<int> faces_reading(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<int>& edges,
                                const std::vector<int>& vertices);
 
+/// Patches [first, first + count) of a replanner's tables are patches [old_first, old_first + count) of
+/// its tables before the last change, their plans kept and renumbered.
+struct KeptPatches {
+  int first = 0, old_first = 0, count = 0;
+  bool operator==(const KeptPatches&) const = default;
+};
+
+/// The last change of a replanner's tables: the tables it went from and to, named by ids unique in the
+/// process (0: none), and the patches whose plans it kept, in runs increasing in both numberings
+/// (empty after a full build).
+struct PlanChange {
+  long long from = 0, to = 0;
+  std::vector<KeptPatches> kept;
+};
+
 class SurfaceReplanner {
 public:
   /// The faces built together; a change builds again the ranges of the faces it reaches.
@@ -53,12 +68,16 @@ public:
   /// or when the origin is not increasing. Returns how many faces were planned. Throws as the
   /// constructor does, the tables unchanged.
   int set_topology(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin = {});
+  /// What the last set_sharpness or set_topology kept (after the constructor: from 0, nothing kept).
+  /// A renderer evaluates again only the other patches.
+  const PlanChange& last_change() const { return change_; }
 
 private:
   // The plan builders' checks of a topology under `scheme` (valences, depth); throws as they do.
   void check(const PolygonTopology& topology, Scheme scheme) const;
-  // Builds the ranges `which` on all cores, then merges every range into tables_.
-  void build(const std::vector<int>& which, const Sharpness& sharpness);
+  // Builds the ranges `which` on all cores, then merges every range into tables_. `old_patch_first`:
+  // per range, where its patches started before the change (−1: built now); empty: none kept.
+  void build(const std::vector<int>& which, const Sharpness& sharpness, const std::vector<int>& old_patch_first = {});
   // Cuts the faces into even ranges and builds them all.
   void build_all(const Sharpness& sharpness);
   int range_of_face(int f) const;
@@ -72,6 +91,8 @@ private:
   std::unique_ptr<LoopCreaseTables> loop_tables_;
   std::vector<RangePlans> ranges_;  // empty for Loop without sharpness (its smooth builder)
   std::vector<int> range_first_;    // range r holds faces [range_first_[r], range_first_[r + 1])
+  std::vector<int> patch_first_;    // range r's first patch in tables_
+  PlanChange change_;
   SurfaceTables tables_;
 };
 

@@ -24,6 +24,8 @@ struct NormalisedFrame {
   glm::dvec3 centre{0.0};
   double unit = 1.0;  // world length of one frame unit: the bounding box's diagonal
 
+  bool operator==(const NormalisedFrame&) const = default;
+
   /// The frame of `mesh`'s bounding box (the identity's scale for a mesh of one point).
   static NormalisedFrame of(const CovarianceMesh& mesh);
   /// `mesh` in the frame: means (μ − centre) / unit, covariances Σ / unit², computed in double.

@@ -93,8 +93,8 @@ public:
   void latest_statistics(DrawStatistics& s) const;
 
 private:
-  void draw_batches(PatchShape shape, const ShaderProgram& program, const DrawOptions& o, int n_total,
-                    int first_patch, int n_patches) const;
+  void draw_batches(PatchShape shape, const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
+                    int n_patches) const;
 
   // By PointPrecision, then PatchOutput (quads: shaded, feedback, capture, shaded_capture).
   ShaderProgram quad_[2][4], triangle_[2][5];

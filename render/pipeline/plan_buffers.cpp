@@ -4,6 +4,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <utility>
 
 #include "render/gl/compute_limits.h"
 #include "render/gl/gl_context.h"
@@ -61,7 +62,7 @@ void PlanBuffers::check_fits(const SurfaceTables& tables, int n_vertices, int n_
                      storage_limit);
 }
 
-void PlanBuffers::upload_tables(const SurfaceTables& tables) {
+void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept) {
   const StencilTable& s = tables.stencils;
   const PatchPlans& p = tables.plans;
   upload(kBindingOffsets, s.offsets);
@@ -75,8 +76,22 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables) {
   upload(kBindingPatchNeighbours, p.patch_neighbours);
   upload(kBindingCornerOwners, p.corner_owners);
   allocate_zeroed(kBindingPoints, size_t(s.n_points()) * kVec4PerPoint * 4 * real_bytes(precision_));
+  GlBuffer limits = GlBuffer::none(), midpoints = GlBuffer::none();
+  if (!kept.empty()) {  // the kept patches' output, copied from the previous buffers into new ones
+    limits = std::exchange(buffers_[kBindingCornerLimits], GlBuffer());
+    midpoints = std::exchange(buffers_[kBindingCurveMidpoints], GlBuffer());
+  }
   allocate_zeroed(kBindingCornerLimits, corner_limit_floats(p) * sizeof(float));
   allocate_zeroed(kBindingCurveMidpoints, curve_midpoint_floats(p) * sizeof(float));
+  const size_t limit_bytes = size_t(p.corners()) * 8 * sizeof(float),
+               midpoint_bytes = size_t(p.corners()) * 4 * sizeof(float);
+  for (const KeptPatches& run : kept) {
+    glCopyNamedBufferSubData(limits, buffers_[kBindingCornerLimits], GLintptr(limit_bytes * size_t(run.old_first)),
+                             GLintptr(limit_bytes * size_t(run.first)), GLsizeiptr(limit_bytes * size_t(run.count)));
+    glCopyNamedBufferSubData(
+        midpoints, buffers_[kBindingCurveMidpoints], GLintptr(midpoint_bytes * size_t(run.old_first)),
+        GLintptr(midpoint_bytes * size_t(run.first)), GLsizeiptr(midpoint_bytes * size_t(run.count)));
+  }
 }
 
 // Float points: μ, then Σ⁻¹'s xx xy xz yy yz zz (shaders/dual_map_comp.glsl). The inverse is taken
@@ -169,6 +184,17 @@ void PlanBuffers::read_corner_limits(const std::function<void(const float*)>& re
   if (!limits) throw Error("the driver did not map the corner limits");
   read(limits);
   glUnmapNamedBuffer(buffers_[kBindingCornerLimits]);
+}
+
+std::vector<float> PlanBuffers::read_corner_pass() const {
+  const size_t limits = sizes_[kBindingCornerLimits] / sizeof(float),
+               midpoints = sizes_[kBindingCurveMidpoints] / sizeof(float);
+  std::vector<float> out(limits + midpoints);
+  glGetNamedBufferSubData(buffers_[kBindingCornerLimits], 0, GLsizeiptr(limits * sizeof(float)), out.data());
+  glGetNamedBufferSubData(buffers_[kBindingCurveMidpoints], 0, GLsizeiptr(midpoints * sizeof(float)),
+                          out.data() + limits);
+  check_gl_errors("reading the corner pass's output");
+  return out;
 }
 
 size_t PlanBuffers::bytes() const {

@@ -12,6 +12,7 @@
 #include "core/mesh/covariance_mesh.h"
 #include "render/gl/normalised_frame.h"
 #include "core/plans/plan_builder.h"
+#include "core/plans/surface_replanner.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/gpu_layout.h"
 #include "render/gl/point_precision.h"
@@ -32,8 +33,10 @@ public:
   /// The precision of the points and Gaussians that upload_tables and upload_gaussians upload next.
   void set_precision(PointPrecision precision) { precision_ = precision; }
   PointPrecision precision() const { return precision_; }
-  /// The plan and stencil tables, and zeroed plan points.
-  void upload_tables(const SurfaceTables& tables);
+  /// The plan and stencil tables, and zeroed plan points and corner-pass output, but for the `kept`
+  /// runs of patches, whose corner-pass output is copied from the previous tables' (of the same patch
+  /// shape; kept_runs_fit, render/pipeline/kept_corner_output.h).
+  void upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept = {});
   /// Every base vertex's μ and Σ.
   void upload_gaussians(const FramedGaussians& gaussians);
   /// The `changed` vertices' μ and Σ.
@@ -52,6 +55,9 @@ public:
   /// slot holds. (The edge midpoints are a buffer of their own, kBindingCurveMidpoints: within one,
   /// a mesh of a million faces passed the largest storage block llvmpipe allows.)
   void read_corner_limits(const std::function<void(const float*)>& read) const;
+  /// The corner pass's output: the corner limits (as read_corner_limits gives them), then the curve
+  /// midpoints (one vec4 per patch corner).
+  std::vector<float> read_corner_pass() const;
   /// GPU memory held, in bytes.
   size_t bytes() const;
 

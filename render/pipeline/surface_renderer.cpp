@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/plans/patch_adjacency.h"
 #include "core/plans/stencil_table.h"
+#include "render/pipeline/kept_corner_output.h"
 #include "render/gl/gl_context.h"
 #include "render/image/matcap.h"
 #include "shaders/embedded_shaders.h"
@@ -27,29 +29,44 @@ SurfaceRenderer::SurfaceRenderer()
 const SurfaceTables& SurfaceRenderer::tables() const { return tables_; }
 
 void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame) {
+  set_mesh(mesh, std::move(surface_tables), frame, PlanChange{}, {});
+}
+
+void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame,
+                               const PlanChange& change, const std::vector<int>& origin) {
   // Refused before anything changes: the renderer keeps drawing the previous mesh.
   FramedGaussians framed = frame.gaussians_in_frame(mesh);
   MeshPointPrecision point_precision(framed);
   PlanBuffers::check_fits(surface_tables, int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_,
                           point_precision.precision());
+  // The corner pass's output of the kept patches holds where it was computed alike.
+  const std::vector<KeptPatches>& kept = change.kept;
+  const bool keep = change.from != 0 && change.from == tables_id_ && !kept.empty() && frame == frame_ &&
+                    point_precision.precision() == buffers_.precision() && surface_tables.plans.shape == shape() &&
+                    (origin.empty() || origin.size() == mesh.n_vertices()) &&
+                    kept_runs_fit(kept, n_patches(), surface_tables.plans.n_patches());
   use_point_precision(point_precision.precision());
   point_precision_ = std::move(point_precision);
-  tables_ = std::move(surface_tables);
+  const SurfaceTables before = std::exchange(tables_, std::move(surface_tables));
   dependents_ = stencil_dependents(tables_.stencils);
   readers_.reset();
   n_base_ = int(mesh.n_vertices());
   half_size_patches_ = 0;
   for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
-  buffers_.upload_tables(tables_);
+  buffers_.upload_tables(tables_, keep ? kept : std::vector<KeptPatches>{});
+  tables_id_ = change.to;
   frame_ = frame;
   patches_.set_frame(frame_);
   cache_.set_frame(frame_);
-  framed_ = std::move(framed);
+  const FramedGaussians before_framed = std::exchange(framed_, std::move(framed));
   buffers_.upload_gaussians(framed_);
   ellipsoids_current_ = false;     // uploaded when first drawn: most frames draw none
   cage_.set_mesh(mesh, framed_);   // the overlays too are drawn in the frame
   cache_.set_cage(mesh, framed_);  // projected with the frame's view-projection
-  run_compute(nullptr);
+  if (keep)
+    run_compute_kept(before, before_framed, kept, origin);
+  else
+    run_compute(nullptr);
 }
 
 // Kept in the mesh's frame, as the patches are: world coordinates far from the origin lose their
@@ -114,16 +131,34 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
     buffers_.bind();
     compute_.run_listed(n_base_, int(changed->size()), int(rows.size()), group_limit_);
     corners_.run_listed(plans, int(corners.size()), group_limit_);
+    last_corner_slots_ = int(corners.size());
     cache_.points_changed(points_generation_, &patches);
     return;
   }
   buffers_.bind();
   compute_.run_all(n_base_, n_rows, group_limit_);
   corners_.run_all(plans, group_limit_);
+  last_corner_slots_ = plans.corners() * plans.n_patches();
   if (edit)
     cache_.all_points_changed(points_generation_);
   else
     cache_.points_changed(points_generation_, nullptr);
+}
+
+void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const FramedGaussians& before_framed,
+                                       const std::vector<KeptPatches>& kept, const std::vector<int>& origin) {
+  const GpuPassScope pass(timer_, "9D + stencils");
+  ++points_generation_;
+  const PatchPlans& plans = tables().plans;
+  const std::vector<int> patches =
+      stale_corner_patches(before, tables(), dependents_, before_framed, framed_, kept, origin);
+  const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
+  buffers_.upload_corner_list(corners);
+  buffers_.bind();
+  compute_.run_all(n_base_, tables().stencils.n_rows(), group_limit_);
+  corners_.run_listed(plans, int(corners.size()), group_limit_);
+  last_corner_slots_ = int(corners.size());
+  cache_.points_changed(points_generation_, nullptr);
 }
 
 std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {

@@ -48,6 +48,13 @@ public:
   /// (render/gl/point_precision.h). Throws gps::Error, before anything changes, where the tables
   /// exceed the device's storage block size or the driver refuses the double programs.
   void set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame);
+  /// New topology, the tables of a replanner's `change` (SurfaceReplanner::last_change), with each
+  /// vertex's index in the previous mesh (`origin`, as the replanner took it; empty: the same index):
+  /// as set_mesh, bit for bit. Where this renderer shows the tables the change went from, in the same
+  /// frame and precision, the corner pass evaluates again only the patches whose plans, neighbours or
+  /// points changed, and copies the others' output; otherwise everything.
+  void set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame,
+                const PlanChange& change, const std::vector<int>& origin);
   /// The same with the tables of `surface`, in the mesh's own frame.
   void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface) {
     set_mesh(mesh, std::move(surface), NormalisedFrame::of(mesh));
@@ -112,6 +119,10 @@ public:
   /// The plan points as the compute passes left them (12 floats each: q in three vec4), of the mesh
   /// in frame() (frame().to_frame(mesh)).
   std::vector<float> read_points() const { return buffers_.read_points(tables().stencils.n_points()); }
+  /// The corner slots the last compute pass evaluated (every patch corner after a full pass).
+  int last_corner_slots() const { return last_corner_slots_; }
+  /// The corner pass's output as the last compute pass left it (PlanBuffers::read_corner_pass).
+  std::vector<float> read_corner_pass() const { return buffers_.read_corner_pass(); }
   /// GPU memory held by the pipeline's buffers, in bytes.
   size_t buffer_bytes() const { return buffers_.bytes(); }
 
@@ -122,6 +133,11 @@ private:
   /// The compute passes for `changed` base vertices, or all (nullptr; an `edit` of most of them
   /// where set, which the surface cache follows as such).
   void run_compute(const std::vector<int>* changed, bool edit = false);
+  /// The compute passes after a change of topology that kept `kept` patches of `before` (the previous
+  /// tables), whose Gaussians in the frame were `before_framed` (`origin`: as set_mesh takes it): every
+  /// point, and the corners of the patches whose output is not kept.
+  void run_compute_kept(const SurfaceTables& before, const FramedGaussians& before_framed,
+                        const std::vector<KeptPatches>& kept, const std::vector<int>& origin);
   /// The programs and buffers of every pass for points of `precision` (the buffers still to upload);
   /// where the driver refuses a program, throws gps::Error with every pass as it was.
   void use_point_precision(PointPrecision precision);
@@ -169,6 +185,8 @@ private:
   long long points_generation_ = 0;           // bumped by every compute pass: the cache's key
   GlTexture matcap_ = GlTexture::none();      // made by set_matcap()
   int n_base_ = 0;
+  long long tables_id_ = 0;
+  int last_corner_slots_ = 0;        // the replanner's id of tables_ (PlanChange), 0 where none gave one
   long long half_size_patches_ = 0;  // a split face's patches (quads): the cache's buffer estimate
   int group_limit_ = 0;              // lowered by tests only (DeviceLimitsForTests)
   long long storage_limit_ = 0;

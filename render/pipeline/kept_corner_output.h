@@ -1,0 +1,34 @@
+#pragma once
+// What of the corner pass's output (render/pipeline/corner_limit_pass.h) a change of topology leaves
+// as it was. A patch whose plan the replanner kept (SurfaceReplanner::kept_patches) evaluates the same
+// corners and midpoints again where it reads the same point values and its corner owners and edge
+// neighbours are the same patches as before: what a slot evaluates is decided by those records and by
+// patch order, which increasing kept runs preserve.
+#include <vector>
+
+#include "core/plans/patch_plans.h"
+#include "core/plans/stencil_table.h"
+#include "core/plans/surface_replanner.h"
+#include "render/gl/normalised_frame.h"
+
+namespace gps {
+
+/// Whether `kept` maps patches of tables of `n_before` patches onto tables of `n_after`: every run
+/// inside both, the runs increasing in both numberings.
+bool kept_runs_fit(const std::vector<KeptPatches>& kept, int n_before, int n_after);
+
+/// Per patch of `after`: true for a patch not kept, or a kept one whose owner or neighbour records
+/// name other patches (or say otherwise) than before. `kept` must fit (kept_runs_fit).
+std::vector<char> patches_not_kept_alike(const PatchPlans& before, const PatchPlans& after,
+                                         const std::vector<KeptPatches>& kept);
+
+/// The patches of `after` (sorted) whose corner-pass output must be evaluated again: those of
+/// patches_not_kept_alike, and the kept ones that read a vertex whose Gaussian changed (`after_framed`
+/// against `before_framed` at the vertex's `origin`, as SurfaceRenderer::set_mesh takes it) or a
+/// stencil row that reads one (`dependents`: of after's stencils). A new vertex no kept plan reads.
+std::vector<int> stale_corner_patches(const SurfaceTables& before, const SurfaceTables& after,
+                                      const StencilDependents& dependents, const FramedGaussians& before_framed,
+                                      const FramedGaussians& after_framed, const std::vector<KeptPatches>& kept,
+                                      const std::vector<int>& origin);
+
+}  // namespace gps

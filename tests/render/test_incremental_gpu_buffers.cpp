@@ -1,0 +1,157 @@
+// The renderer following a replanner through modelling operations (SurfaceRenderer::set_mesh with a
+// PlanChange): the corner pass evaluates only what a change reached and copies the rest, and its
+// output and the plan points equal those of a renderer set up anew for the same mesh, bit for bit,
+// after random operations of every kind, their undo and their redo, on quad, triangle, mixed, open and
+// creased meshes.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "core/modelling/extrude.h"
+#include "core/modelling/samples.h"
+#include "core/plans/patch_adjacency.h"
+#include "core/plans/surface_replanner.h"
+#include "core/support/error.h"
+#include "render/pipeline/kept_corner_output.h"
+#include "render/pipeline/surface_renderer.h"
+#include "tests/support/gl_fixture.h"
+#include "tests/support/plan_tables.h"
+#include "tests/support/random_operations.h"
+
+namespace gps {
+namespace {
+
+using IncrementalGpuBuffers = test::GlTest;
+
+// `renderer`'s corner-pass output and plan points against a renderer given the same tables anew.
+void expect_as_set_anew(const SurfaceRenderer& renderer, const CovarianceMesh& mesh, const NormalisedFrame& frame,
+                        const std::string& where) {
+  SurfaceRenderer fresh;
+  fresh.set_mesh(mesh, renderer.tables(), frame);
+  EXPECT_TRUE(renderer.read_corner_pass() == fresh.read_corner_pass()) << where << ": corner pass";
+  EXPECT_TRUE(renderer.read_points() == fresh.read_points()) << where << ": plan points";
+}
+
+TEST_F(IncrementalGpuBuffers, RandomOperationsMatchARendererSetAnew) {
+  for (const test::RandomOperationCase& c : test::random_operation_cases()) {
+    PlanOptions options;
+    options.scheme = c.scheme;
+    CovarianceMesh mesh = c.mesh;
+    // One frame throughout, as the bench's meshes keep theirs: the kept output is only for the same frame.
+    const NormalisedFrame frame = NormalisedFrame::of(mesh);
+    SurfaceReplanner replanner(topology_of(mesh.mesh), options, mesh.sharpness, test::kSmallRanges);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), {});
+    std::mt19937 random(5);
+    int applied = 0;
+    long long evaluated = 0, slots = 0;
+    for (int step = 0; step < 40 && applied < c.operations / 2; ++step) {
+      Modelled result;
+      try {
+        // First two vertices' Gaussians moved (the plans all kept), then operations of every kind.
+        result = step == 0 ? transform_vertices(mesh, {0, 1}, AffineMap::about(mesh.mean(0), 0.7 * Mat3::Identity()))
+                           : test::random_operation(mesh, random);
+        replanner.set_topology(topology_of(result.mesh.mesh), result.mesh.sharpness, result.vertex_origin);
+      } catch (const Error&) {
+        continue;  // refused by the operation or the scheme: nothing to show
+      }
+      ++applied;
+      const std::string where = c.name + ", step " + std::to_string(step) + " (" + result.summary + ")";
+      renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+      evaluated += renderer.last_corner_slots();
+      slots += renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
+      expect_as_set_anew(renderer, result.mesh, frame, where);
+      const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
+      replanner.set_topology(topology_of(mesh.mesh), mesh.sharpness, back);
+      renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), back);
+      expect_as_set_anew(renderer, mesh, frame, where + ", undone");
+      replanner.set_topology(topology_of(result.mesh.mesh), result.mesh.sharpness, result.vertex_origin);
+      renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+      expect_as_set_anew(renderer, result.mesh, frame, where + ", redone");
+      mesh = std::move(result.mesh);
+    }
+    EXPECT_GE(applied, c.operations / 2 - 2) << c.name;
+    // Loop's smooth builder plans the whole mesh, and keeps nothing; a few dozen faces are all reached.
+    if (c.name != "icosphere (smooth triangles)" && c.mesh.n_faces() > 200)
+      EXPECT_LT(evaluated, slots / 2) << c.name << ": most corners kept their output";
+  }
+}
+
+// The kept output is only for the tables the renderer shows: tables it was not given by the replanner
+// (a preview of other plans), another frame, or a change from other tables evaluate everything.
+TEST_F(IncrementalGpuBuffers, AChangeFromOtherTablesOrFrameEvaluatesEverything) {
+  const CovarianceMesh sphere = make_sample("sphere", 1500);
+  const NormalisedFrame frame = NormalisedFrame::of(sphere);
+  SurfaceReplanner replanner(topology_of(sphere.mesh), {}, {}, test::kSmallRanges);
+  SurfaceRenderer renderer;
+  renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
+  const int all = renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
+  EXPECT_EQ(renderer.last_corner_slots(), all);
+
+  const Modelled extruded = extrude_faces(sphere, {int(sphere.n_faces() / 2)}, 0.01);
+  replanner.set_topology(topology_of(extruded.mesh.mesh), {}, extruded.vertex_origin);
+  renderer.set_mesh(extruded.mesh, replanner.tables(), frame, replanner.last_change(), extruded.vertex_origin);
+  EXPECT_GT(renderer.last_corner_slots(), 0);
+  EXPECT_LT(renderer.last_corner_slots(), all / 4) << "an extrude of one face";
+  expect_as_set_anew(renderer, extruded.mesh, frame, "extruded");
+
+  // Back to the sphere, in another frame: everything.
+  const std::vector<int> back = inverse_origin(extruded.vertex_origin, sphere.n_vertices());
+  replanner.set_topology(topology_of(sphere.mesh), {}, back);
+  NormalisedFrame moved = frame;
+  moved.unit *= 2.0;
+  renderer.set_mesh(sphere, replanner.tables(), moved, replanner.last_change(), back);
+  EXPECT_EQ(renderer.last_corner_slots(), all);
+  expect_as_set_anew(renderer, sphere, moved, "another frame");
+
+  // Shown without the replanner, then a change from the replanner's tables: everything.
+  renderer.set_mesh(sphere, build_surface_plans(topology_of(sphere.mesh), {}, {}), moved);
+  replanner.set_topology(topology_of(extruded.mesh.mesh), {}, extruded.vertex_origin);
+  renderer.set_mesh(extruded.mesh, replanner.tables(), moved, replanner.last_change(), extruded.vertex_origin);
+  const int all_extruded = renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
+  EXPECT_EQ(renderer.last_corner_slots(), all_extruded);
+  expect_as_set_anew(renderer, extruded.mesh, moved, "from other tables");
+}
+
+// A kept patch whose corner another patch now owns is evaluated again, and its slot there, which it no
+// longer evaluates, holds zero as in a renderer set anew (not the value it kept). The tables are the
+// grid's with the owner of patch 0's corner 2 (a lowest index rule would give patch 0) moved to patch 4.
+TEST_F(IncrementalGpuBuffers, AKeptPatchWhoseCornerChangesOwnerIsEvaluatedAgain) {
+  const CovarianceMesh grid = test::grid_mesh(3, 3);
+  const SurfaceTables before = build_surface_plans(topology_of(grid.mesh), {}, {});
+  SurfaceTables after = before;
+  std::vector<int32_t>& owners = after.plans.corner_owners;
+  const int n = after.plans.corners();
+  int patch4_corner = -1;
+  for (int c = 0; c < n; ++c)
+    if (owners[size_t(2 * (n * 4 + c))] == 0 && (owners[size_t(2 * (n * 4 + c)) + 1] & kOwnerCornerMask) == 2)
+      patch4_corner = c;
+  ASSERT_GE(patch4_corner, 0) << "patch 4 shares patch 0's corner 2";
+  for (size_t slot = 0; 2 * slot < owners.size(); ++slot)
+    if (owners[2 * slot] == 0 && (owners[2 * slot + 1] & kOwnerCornerMask) == 2)
+      owners[2 * slot] = 4, owners[2 * slot + 1] = patch4_corner;
+  const std::vector<char> evaluate = patches_not_kept_alike(before.plans, after.plans, {{0, 0, 9}});
+  for (int p = 0; p < 9; ++p)
+    EXPECT_EQ(evaluate[size_t(p)] != 0, p == 0 || p == 1 || p == 3 || p == 4) << "patch " << p;
+
+  const NormalisedFrame frame = NormalisedFrame::of(grid);
+  constexpr long long kShown = 1LL << 60;  // ids no replanner gives in this test
+  SurfaceRenderer renderer;
+  renderer.set_mesh(grid, before, frame, {0, kShown, {}}, {});
+  renderer.set_mesh(grid, after, frame, {kShown, kShown + 1, {{0, 0, 9}}}, {});
+  EXPECT_LT(renderer.last_corner_slots(), 9 * n) << "patches 0, 1, 3 and 4 and their corners' owners";
+  expect_as_set_anew(renderer, grid, frame, "owner moved");
+}
+
+// Kept runs fit where they lie inside both tables and increase in both numberings.
+TEST(KeptCornerOutput, RunsFitInsideBothTablesInOrder) {
+  EXPECT_TRUE(kept_runs_fit({}, 0, 0));
+  EXPECT_TRUE(kept_runs_fit({{0, 0, 4}, {6, 4, 2}}, 6, 8));
+  EXPECT_FALSE(kept_runs_fit({{0, 0, 4}, {6, 4, 2}}, 5, 8)) << "past the previous tables";
+  EXPECT_FALSE(kept_runs_fit({{0, 0, 4}, {6, 4, 3}}, 8, 8)) << "past the new tables";
+  EXPECT_FALSE(kept_runs_fit({{4, 0, 2}, {0, 2, 2}}, 8, 8)) << "out of order";
+  EXPECT_FALSE(kept_runs_fit({{0, 0, 0}}, 8, 8)) << "an empty run";
+}
+
+}  // namespace
+}  // namespace gps
