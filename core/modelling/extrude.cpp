@@ -212,6 +212,12 @@ Modelled extrude_faces(const CovarianceMesh& mesh, const std::vector<int>& faces
   return extruded_faces(a, r, shift);
 }
 
+Modelled extrude_faces_by(const CovarianceMesh& mesh, const std::vector<int>& faces, const Vec3& offset) {
+  check_offset(offset);
+  MeshArrays a = arrays_of(mesh);
+  return extruded_faces(a, face_region(a, faces), offset);
+}
+
 Modelled extrude_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, const Vec3& offset) {
   check_offset(offset);
   if (edges.empty()) throw Error("no edges are selected");

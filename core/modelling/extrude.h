@@ -55,6 +55,11 @@ std::vector<int> detach_region(MeshArrays& arrays, const FaceRegion& region, con
 /// (nothing would be left to join to) and a non-finite distance. Selection: the region's vertices.
 Modelled extrude_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double distance);
 
+/// Extrudes the region of `faces` and moves it by `offset` (the editor's E in face mode): as
+/// extrude_faces with distance 0, then the region's vertices moved. Refuses as extrude_faces does and
+/// a non-finite offset.
+Modelled extrude_faces_by(const CovarianceMesh& mesh, const std::vector<int>& faces, const Vec3& offset);
+
 /// Extrudes mesh-boundary edges by `offset`: each edge gets a new quad whose outer edge is the edge's
 /// copy moved by `offset` (one copy per vertex, shared by the edges meeting there), oriented like the
 /// edge's face. Refuses an edge that is not in the mesh ("edge a–b is not in the mesh") or not on a

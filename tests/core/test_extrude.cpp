@@ -255,6 +255,34 @@ TEST(ExtrudeVertices, SelectedFacesAreExtrudedAndMovedByTheOffset) {
   for (size_t k = 0; k < 4; ++k) EXPECT_EQ(a.means[25 + k], before.means[size_t(originals[k])] + offset);
 }
 
+// The editor's E in face mode: exactly the faces given, here a ring of eight quads around the centre
+// one of a 3×3 grid (from its vertices the centre face would go with them): 16 side quads, the centre
+// face left where it was; the same as extrude_vertices where the faces are all that the corners hold.
+TEST(ExtrudeFacesBy, ExtrudesExactlyTheFacesGivenAndMovesThem) {
+  const CovarianceMesh grid = make_sample("grid", 9);
+  ASSERT_EQ(grid.n_faces(), 9u);
+  const Vec3 offset(0.0, 0.0, 0.5);
+  const Modelled ring = extrude_faces_by(grid, {0, 1, 2, 3, 5, 6, 7, 8}, offset);
+  const Shape s = shape_of(ring.mesh);
+  EXPECT_EQ(s.faces, 9 + 16);
+  EXPECT_TRUE(s.oriented);
+  EXPECT_EQ(s.euler(), shape_of(grid).euler());
+  const MeshArrays before = arrays_of(grid), after = arrays_of(ring.mesh);
+  EXPECT_EQ(after.faces[4], before.faces[4]) << "the centre face stays";
+  for (const int v : after.faces[4]) EXPECT_EQ(after.means[size_t(v)], before.means[size_t(v)]);
+  EXPECT_EQ(ring.selection.size(), 16u);
+  for (const int v : ring.selection) {  // each where a vertex of the grid was, moved by the offset
+    bool moved = false;
+    for (const Vec3& p : before.means) moved = moved || after.means[size_t(v)] == p + offset;
+    EXPECT_TRUE(moved) << "vertex " << v;
+  }
+
+  const Modelled one = extrude_faces_by(grid, {4}, offset);
+  expect_same(arrays_of(one.mesh), arrays_of(extrude_vertices(grid, before.faces[4], offset).mesh));
+  EXPECT_EQ(error_of([&] { extrude_faces_by(grid, {}, offset); }), "no faces are selected");
+  EXPECT_NE(error_of([&] { extrude_faces_by(grid, {4}, Vec3(0, NAN, 0)); }), "");
+}
+
 TEST(ExtrudeVertices, WithoutFacesTheSelectedBoundaryEdgesAreExtruded) {
   const CovarianceMesh grid = make_sample("grid", 16);
   const Modelled m = extrude_vertices(grid, {2, 0, 1}, Vec3(0, -1, 0));

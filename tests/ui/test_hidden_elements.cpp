@@ -95,10 +95,11 @@ TEST(HiddenElements, RevealShowsEverythingAndSelectsWhatWasHidden) {
   HiddenElements hidden;
   selection.select({0, 1, 2, 3}, false);
   hidden.hide(cube, selection, SelectMode::face, false);
-  selection.select({6}, false);
+  selection.select_faces(cube, {1}, false);  // face mode holds faces: {4, 5, 6, 7}
   EXPECT_EQ(hidden.reveal(cube, selection, SelectMode::face), 1u);
   EXPECT_TRUE(hidden.empty());
-  EXPECT_EQ(selection.vertices(), (V{0, 1, 2, 3, 6}));
+  EXPECT_EQ(selection.faces(cube), (V{0, 1}));  // the hidden face {0, 3, 2, 1} added
+  EXPECT_EQ(selection.vertices(), (V{0, 1, 2, 3, 4, 5, 6, 7}));
 
   Selection edges;
   HiddenElements by_edge;

@@ -211,3 +211,86 @@ TEST(Selection, HeldEdgesNotInTheMeshAreLeftOut) {
 
 }  // namespace
 }  // namespace gps
+
+namespace gps {
+namespace {
+
+// A 3×3 grid of quads: face f = 3j + i has corners (j, i), (j, i + 1), (j + 1, i + 1), (j + 1, i) of a
+// 4×4 grid of vertices; the ring is every face but the centre one, 4.
+const std::vector<int> kRing{0, 1, 2, 3, 5, 6, 7, 8};
+
+// In face mode the selection holds faces: a ring of eight faces around the centre one has every
+// vertex as a corner, but the centre face is not selected with them (as it is from vertices).
+TEST(Selection, AHeldRingOfFacesLeavesOutTheFaceInside) {
+  const CovarianceMesh grid = test::grid_mesh(3, 3);
+  Selection s;
+  s.click_faces(grid, {0}, 0, false);
+  for (size_t k = 1; k < kRing.size(); ++k) s.click_faces(grid, {kRing[k]}, 0, true);
+  EXPECT_TRUE(s.holds_faces());
+  EXPECT_EQ(s.faces(grid), kRing);
+  EXPECT_EQ(s.vertices().size(), 16u);
+  EXPECT_EQ(faces_within(grid, s.vertices()).size(), 9u) << "from vertices, the centre face is taken too";
+  s.click_faces(grid, {5}, 0, true);  // toggled off
+  EXPECT_EQ(s.faces(grid), (std::vector<int>{0, 1, 2, 3, 6, 7, 8}));
+  s.invert_faces(grid);
+  EXPECT_EQ(s.faces(grid), (std::vector<int>{4, 5}));
+  EXPECT_EQ(s.vertices(), (std::vector<int>{5, 6, 7, 9, 10, 11}));
+  s.deselect_faces(grid, {4});
+  EXPECT_EQ(s.faces(grid), std::vector<int>{5});
+  s.select_faces(grid, {0, 8}, true);
+  EXPECT_EQ(s.faces(grid), (std::vector<int>{0, 5, 8}));
+  s.click_faces(grid, {}, -1, false);  // a plain click on nothing clears it
+  EXPECT_TRUE(s.empty());
+}
+
+// Into face mode as Blender converts (the faces whose corners are all selected, and only their
+// corners); out of it the corners stay; a vertex selection lets the faces go; the undo record gives
+// the held faces back.
+TEST(Selection, FaceModeConvertsAndARecordRestoresTheFaces) {
+  const CovarianceMesh grid = test::grid_mesh(3, 3);
+  Selection s;
+  s.select({0, 1, 4, 5, 15}, false);
+  s.hold_faces(grid);
+  EXPECT_EQ(s.faces(grid), std::vector<int>{0});
+  EXPECT_EQ(s.vertices(), (std::vector<int>{0, 1, 4, 5}));  // vertex 15 is on no selected face
+  s.select_faces(grid, kRing, false);
+  const SelectionRecord record = s.record();
+  EXPECT_TRUE(record.holds_faces);
+  s.release_faces();
+  EXPECT_EQ(s.faces(grid).size(), 9u);
+  s.restore(record);
+  EXPECT_TRUE(s.holds_faces());
+  EXPECT_EQ(s.faces(grid), kRing);
+  s.hold_edges(grid);  // into edge mode: the faces go, their edges (and those among their corners) stay
+  EXPECT_FALSE(s.holds_faces());
+  EXPECT_EQ(s.edges(grid).size(), 24u);
+  s.select_faces(grid, {4}, false);
+  s.select_all(grid.n_vertices());
+  EXPECT_FALSE(s.holds_faces());
+  EXPECT_EQ(s.faces(grid).size(), 9u);
+}
+
+// Held faces are known by their corners: on another mesh only those that are still its faces count,
+// whatever their index there.
+TEST(Selection, HeldFacesAreFoundByTheirCorners) {
+  const CovarianceMesh grid = test::grid_mesh(3, 3);
+  Selection s;
+  s.select_faces(grid, {0, 4}, false);
+  std::vector<std::vector<int>> faces;
+  for (const auto f : grid.mesh.faces()) {
+    std::vector<int> corners;
+    for (const auto v : f.vertices()) corners.push_back(v.idx());
+    faces.insert(faces.begin(), corners);  // the faces in reverse order
+  }
+  faces.erase(faces.begin());  // face 8 gone
+  std::vector<Vec3> means;
+  for (size_t v = 0; v < grid.n_vertices(); ++v) means.push_back(grid.mean(v));
+  const CovarianceMesh reordered = make_covariance_mesh(means, grid.covariances, faces, "reordered");
+  EXPECT_EQ(s.faces(reordered), (std::vector<int>{3, 7}));  // faces 4 and 0, now 7 − 4 and 7 − 0
+  // On the cube, grid face 0's corners {0, 1, 4, 5} are those of its face 2; face 4's are not its vertices.
+  const CovarianceMesh cube = make_sample("cube");
+  EXPECT_EQ(s.faces(cube), std::vector<int>{2});
+}
+
+}  // namespace
+}  // namespace gps

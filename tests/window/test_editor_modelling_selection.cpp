@@ -16,6 +16,7 @@
 #include "core/io/mesh_io.h"
 #include "core/modelling/samples.h"
 #include "core/modelling/mesh_queries.h"
+#include "tests/support/test_meshes.h"
 #include "view/visible_vertices.h"
 
 namespace gps {
@@ -195,6 +196,30 @@ TEST_F(EditorModellingSelection, EdgeAndFaceModeClicks) {
   play(two_faces.wait(), "face_mode_two_faces.png");
   const std::vector<int> both{2, 3, 4, 5, 6, 7};
   EXPECT_EQ(moved(play(move_selection(face, both))), both);
+}
+
+// Face mode holds faces: clicking the eight faces around the centre of a 3×3 grid selects those eight,
+// not the centre face whose corners are all theirs. E then extrudes the ring alone (16 side quads; from
+// its vertices it would be all nine faces, 12 sides), and the centre face stays where it was.
+TEST_F(EditorModellingSelection, FaceModeSelectsTheFacesClickedNotTheFaceTheyEnclose) {
+  use_mesh(test::grid_mesh(3, 3, 0.3, true));
+  const auto centre_of = [this](int face) {
+    Vec3 c = Vec3::Zero();
+    const auto f = original_.mesh.face_handle(face);
+    int n = 0;
+    for (const auto v : original_.mesh.fv_range(f)) c += original_.mean(size_t(v.idx())), ++n;
+    return pixel_of(view_, c / double(n));
+  };
+  Events ring;
+  ring.key("3").click(centre_of(0)).wait();
+  for (const int f : {1, 2, 3, 5, 6, 7, 8}) ring.click(centre_of(f), "shift").wait();
+  Events selected = ring;
+  play(selected.wait(), "face_mode_ring.png");
+  ring.key("e").text("0.5").key("enter").wait();
+  const CovarianceMesh extruded = play(ring, "face_mode_ring_extruded.png");
+  EXPECT_EQ(extruded.n_faces(), 9u + 16u) << "the ring extruded alone";
+  const auto centre = extruded.mesh.face_handle(4);
+  for (const auto v : extruded.mesh.fv_range(centre)) EXPECT_EQ(extruded.mean(size_t(v.idx())).z(), 0.0);
 }
 
 // Alt+click on an edge of the sphere's front, away from its eight poles, selects the whole edge

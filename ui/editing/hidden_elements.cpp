@@ -40,13 +40,6 @@ std::vector<int> topology_of_faces(const PolyMesh& m) {
   return out;
 }
 
-std::vector<int> corners_of(const PolyMesh& m, const std::vector<int>& faces) {
-  std::vector<int> out;
-  for (const int f : faces)
-    for (const auto v : m.fv_range(m.face_handle(f))) out.push_back(v.idx());
-  return sorted(std::move(out));
-}
-
 }  // namespace
 
 bool HiddenElements::face_hidden(int face) const { return std::binary_search(faces_.begin(), faces_.end(), face); }
@@ -134,7 +127,7 @@ size_t HiddenElements::hide(const CovarianceMesh& mesh, Selection& selection, Se
         }
       }
   } else {
-    const std::vector<int> selected = faces_within(mesh, selection.vertices());
+    const std::vector<int> selected = selection.faces(mesh);
     faces = unselected ? complement(m.n_faces(), selected) : selected;
   }
   const size_t before = faces_.size();
@@ -150,8 +143,7 @@ size_t HiddenElements::hide(const CovarianceMesh& mesh, Selection& selection, Se
     }
     vertices_ = united(vertices_, last);
   }
-  if (mode == SelectMode::face && !unselected)
-    selection.deselect(corners_of(m, faces));  // the hidden faces' corners that stay shown too
+  if (mode == SelectMode::face && !unselected) selection.deselect_faces(mesh, faces);
   deselect_hidden(mesh, selection, mode);
   return faces_.size() - before;
 }
@@ -161,7 +153,7 @@ size_t HiddenElements::reveal(const CovarianceMesh& mesh, Selection& selection, 
   if (mode == SelectMode::edge) {
     selection.select_edges(mesh, edges(mesh), true);
   } else if (mode == SelectMode::face) {
-    selection.select(corners_of(mesh.mesh, faces_), true);
+    selection.select_faces(mesh, faces_, true);
   } else {
     selection.select(vertices_, true);
   }
@@ -180,6 +172,13 @@ void HiddenElements::deselect_hidden(const CovarianceMesh& mesh, Selection& sele
     for (const EdgeEnds& e : selection.edges(mesh))
       if (edge_hidden(mesh, e[0], e[1])) hidden.push_back(e);
     if (!hidden.empty()) selection.deselect_edges(mesh, hidden);
+    return;
+  }
+  if (mode == SelectMode::face) {
+    std::vector<int> hidden;
+    for (const int f : selection.faces(mesh))
+      if (face_hidden(f)) hidden.push_back(f);
+    if (!hidden.empty()) selection.deselect_faces(mesh, hidden);
     return;
   }
   std::vector<int> hidden;

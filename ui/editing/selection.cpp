@@ -51,7 +51,7 @@ std::vector<EdgeEnds> Selection::edges(const CovarianceMesh& mesh) const {
 }
 
 void Selection::click(int vertex, bool toggle) {
-  release_edges();
+  release();
   if (vertex < 0) {
     if (!toggle) clear();
     return;
@@ -67,7 +67,7 @@ void Selection::click(int vertex, bool toggle) {
 }
 
 void Selection::select(const std::vector<int>& inside, bool additive) {
-  release_edges();
+  release();
   if (!additive) vertices_.clear();
   vertices_.insert(vertices_.end(), inside.begin(), inside.end());
   std::sort(vertices_.begin(), vertices_.end());
@@ -89,7 +89,7 @@ void Selection::click_group(const std::vector<int>& group, int active, bool togg
 }
 
 void Selection::deselect(const std::vector<int>& outside) {
-  release_edges();
+  release();
   std::vector<int> removed = outside;
   std::sort(removed.begin(), removed.end());
   std::vector<int> kept;
@@ -98,7 +98,7 @@ void Selection::deselect(const std::vector<int>& outside) {
 }
 
 void Selection::invert(size_t n_vertices) {
-  release_edges();
+  release();
   std::vector<int> inverted;
   size_t k = 0;
   for (size_t i = 0; i < n_vertices; ++i) {
@@ -110,13 +110,13 @@ void Selection::invert(size_t n_vertices) {
 }
 
 void Selection::select_all(size_t n_vertices) {
-  release_edges();
+  release();
   vertices_.resize(n_vertices);
   for (size_t i = 0; i < n_vertices; ++i) vertices_[i] = int(i);
 }
 
 void Selection::clear() {
-  release_edges();
+  release();
   vertices_.clear();
   last_clicked_ = -1;
 }
@@ -124,9 +124,11 @@ void Selection::clear() {
 void Selection::restore(const SelectionRecord& record) {
   select(record.vertices, false);
   if (record.holds_edges) set_edges(record.edges);
+  if (record.holds_faces) set_faces(record.faces);
 }
 
 void Selection::set_edges(std::vector<EdgeEnds> edges) {
+  release_faces();
   edges_ = normalized(std::move(edges));
   holds_edges_ = true;
   vertices_.clear();
@@ -176,6 +178,98 @@ void Selection::invert_edges(const CovarianceMesh& mesh) {
   std::vector<EdgeEnds> inverted;
   std::set_difference(all.begin(), all.end(), edges_.begin(), edges_.end(), std::back_inserter(inverted));
   set_edges(std::move(inverted));
+}
+
+std::vector<int> Selection::faces(const CovarianceMesh& mesh) const {
+  if (!holds_faces_) return faces_within(mesh, vertices_);
+  const PolyMesh& m = mesh.mesh;
+  std::vector<int> out;
+  std::vector<int> corners;
+  for (const FaceCorners& held : faces_) {
+    if (held.empty() || held.back() >= int(m.n_vertices())) continue;
+    for (const auto f : m.vf_range(m.vertex_handle(held.front()))) {  // the faces around its lowest corner
+      corners.clear();
+      for (const auto v : f.vertices()) corners.push_back(v.idx());
+      std::sort(corners.begin(), corners.end());
+      if (corners == held) {
+        out.push_back(f.idx());
+        break;
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<FaceCorners> Selection::corner_sets(const CovarianceMesh& mesh, const std::vector<int>& faces) {
+  const PolyMesh& m = mesh.mesh;
+  std::vector<FaceCorners> out;
+  for (const int f : faces) {
+    if (f < 0 || f >= int(m.n_faces())) continue;
+    FaceCorners corners;
+    for (const auto v : m.fv_range(m.face_handle(f))) corners.push_back(v.idx());
+    std::sort(corners.begin(), corners.end());
+    out.push_back(std::move(corners));
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+void Selection::set_faces(std::vector<FaceCorners> faces) {
+  release_edges();
+  for (FaceCorners& corners : faces) std::sort(corners.begin(), corners.end());
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  faces_ = std::move(faces);
+  holds_faces_ = true;
+  vertices_.clear();
+  for (const FaceCorners& corners : faces_) vertices_.insert(vertices_.end(), corners.begin(), corners.end());
+  std::sort(vertices_.begin(), vertices_.end());
+  vertices_.erase(std::unique(vertices_.begin(), vertices_.end()), vertices_.end());
+}
+
+void Selection::hold_faces(const CovarianceMesh& mesh) {
+  if (!holds_faces_) set_faces(corner_sets(mesh, faces_within(mesh, vertices_)));
+}
+
+void Selection::click_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, int active, bool toggle) {
+  if (faces.empty()) {
+    if (!toggle) clear();
+    return;
+  }
+  hold_faces(mesh);
+  const std::vector<FaceCorners> picked = corner_sets(mesh, faces);
+  if (toggle && std::includes(faces_.begin(), faces_.end(), picked.begin(), picked.end()))
+    deselect_faces(mesh, faces);
+  else
+    select_faces(mesh, faces, toggle);
+  last_clicked_ = active;
+}
+
+void Selection::select_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, bool additive) {
+  hold_faces(mesh);
+  std::vector<FaceCorners> held = additive ? faces_ : std::vector<FaceCorners>{};
+  for (FaceCorners& corners : corner_sets(mesh, faces)) held.push_back(std::move(corners));
+  set_faces(std::move(held));
+}
+
+void Selection::deselect_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) {
+  hold_faces(mesh);
+  const std::vector<FaceCorners> removed = corner_sets(mesh, faces);
+  std::vector<FaceCorners> kept;
+  std::set_difference(faces_.begin(), faces_.end(), removed.begin(), removed.end(), std::back_inserter(kept));
+  set_faces(std::move(kept));
+}
+
+void Selection::invert_faces(const CovarianceMesh& mesh) {
+  hold_faces(mesh);
+  std::vector<int> all(mesh.mesh.n_faces());
+  for (size_t f = 0; f < all.size(); ++f) all[f] = int(f);
+  std::vector<FaceCorners> inverted;
+  const std::vector<FaceCorners> every = corner_sets(mesh, all);
+  std::set_difference(every.begin(), every.end(), faces_.begin(), faces_.end(), std::back_inserter(inverted));
+  set_faces(std::move(inverted));
 }
 
 std::vector<int> vertices_in_box(const Camera& camera, int width, int height, glm::vec2 a, glm::vec2 b,

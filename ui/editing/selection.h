@@ -1,8 +1,9 @@
 #pragma once
 // The editor's selection: click, shift-click to add or remove, box select, all, none. As in Blender's
-// edit mode it is a set of vertices, and in edge mode a set of edges as well: there a click, a box
-// or a loop selects edges (their ends too), so that the edges between two selected edges' ends are
-// not selected with them. Otherwise an edge is selected when both its ends are, a face when all its
+// edit mode it is a set of vertices, in edge mode a set of edges as well and in face mode a set of
+// faces: there a click, a box or a loop selects edges or faces (their vertices too), so that the edges
+// between two selected edges' ends, or a face whose corners all lie on selected faces, are not
+// selected with them. Otherwise an edge is selected when both its ends are, a face when all its
 // corners are.
 #include <array>
 #include <string>
@@ -23,6 +24,8 @@ std::string select_mode_name(SelectMode mode);
 
 /// An edge by its ends, (min, max).
 using EdgeEnds = std::array<int, 2>;
+/// A face by its corners, ascending (an index would not survive the renumbering of an undo).
+using FaceCorners = std::vector<int>;
 
 class Selection {
 public:
@@ -43,7 +46,14 @@ public:
   /// `mesh` with both ends selected.
   std::vector<EdgeEnds> edges(const CovarianceMesh& mesh) const;
 
-  // Selecting vertices (or a face's corners): the edges are again those with both ends selected.
+  /// Whether it holds faces of its own (face mode), else its faces are those with all corners selected.
+  bool holds_faces() const { return holds_faces_; }
+  /// The selected faces, ascending: those held that are still faces of `mesh`, else every face of
+  /// `mesh` whose corners are all selected.
+  std::vector<int> faces(const CovarianceMesh& mesh) const;
+
+  // Selecting vertices (or a face's corners): the edges are again those with both ends selected,
+  // the faces those with all corners selected.
 
   /// A click on `vertex` (−1: on nothing). Plain: select only it (nothing: clear). Toggle (shift):
   /// add it, or remove it if selected (nothing: keep the selection).
@@ -82,19 +92,49 @@ public:
     holds_edges_ = false;
   }
 
+  // Selecting faces (face mode): the selection holds faces of `mesh`, and the vertices are their corners.
+
+  /// A click on a face (`faces` of one) or a face loop, `active` the vertex the inspector shows. Plain:
+  /// select only them (none: clear); toggle: remove them when all are selected, else add them.
+  void click_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, int active, bool toggle);
+  /// Box select in face mode: replace the selection by `faces`, or add them (additive).
+  void select_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, bool additive);
+  /// Removes `faces` from the selected faces.
+  void deselect_faces(const CovarianceMesh& mesh, const std::vector<int>& faces);
+  /// Selects exactly the faces of `mesh` not selected now.
+  void invert_faces(const CovarianceMesh& mesh);
+  /// Into face mode, as Blender converts: holds the faces whose corners are all selected, and only
+  /// their corners. Nothing changes where it holds faces already.
+  void hold_faces(const CovarianceMesh& mesh);
+  /// Out of face mode: the vertices stay (the held faces' corners).
+  void release_faces() {
+    faces_.clear();
+    holds_faces_ = false;
+  }
+
   // As the undo history keeps it.
 
-  /// The vertices and the edges held, the active vertex left out.
-  SelectionRecord record() const { return {vertices_, edges_, holds_edges_}; }
-  /// Selects exactly what `record` holds (its edges held where it held them).
+  /// The vertices and the edges or faces held, the active vertex left out.
+  SelectionRecord record() const { return {vertices_, edges_, holds_edges_, faces_, holds_faces_}; }
+  /// Selects exactly what `record` holds (its edges or faces held where it held them).
   void restore(const SelectionRecord& record);
 
 private:
   void set_edges(std::vector<EdgeEnds> edges);
+  void set_faces(std::vector<FaceCorners> faces);
+  // The faces' corner sets, ascending.
+  static std::vector<FaceCorners> corner_sets(const CovarianceMesh& mesh, const std::vector<int>& faces);
+  // Vertices selected as vertices: neither edges nor faces held.
+  void release() {
+    release_edges();
+    release_faces();
+  }
 
   std::vector<int> vertices_;
   std::vector<EdgeEnds> edges_;  // ascending, where holds_edges_
   bool holds_edges_ = false;
+  std::vector<FaceCorners> faces_;  // ascending, where holds_faces_
+  bool holds_faces_ = false;
   int last_clicked_ = -1;
 };
 

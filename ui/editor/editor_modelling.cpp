@@ -192,7 +192,7 @@ void EditorApp::build_modelling_commands() {
   // Blender's Y splits the faces off in the object, P separates them into a new one: with one mesh
   // to a document both detach the faces as a part of their own (File > Save selection as... writes it).
   const auto split = [this, op](const std::string& name) {
-    return op(name, [this](const CovarianceMesh& m) { return split_faces(m, faces_within(m, selection_.vertices())); });
+    return op(name, [this](const CovarianceMesh& m) { return split_faces(m, selection_.faces(m)); });
   };
   t.add({"Mesh",
          "Split (Y; the selected faces become a part of their own)",
@@ -209,7 +209,7 @@ void EditorApp::build_modelling_commands() {
          "Subdivide (the selected faces; all when none)",
          {key(GLFW_KEY_W)},
          op("subdivide", [this](const CovarianceMesh& m) {
-           const std::vector<int> faces = faces_within(m, selection_.vertices());
+           const std::vector<int> faces = selection_.faces(m);
            return faces.empty() ? subdivide_all(m) : subdivide_faces(m, faces);
          })});
   t.add({"Mesh",
@@ -257,12 +257,13 @@ void EditorApp::build_modelling_commands() {
 void EditorApp::draw_delete_items() {
   const std::vector<int>& s = selection_.vertices();
   const std::vector<EdgeEnds> edges = selection_.edges(document_.mesh());
+  const std::vector<int> faces = selection_.faces(document_.mesh());
   if (ImGui::MenuItem("Vertices"))
     run_operation("delete vertices", [&s](const CovarianceMesh& m) { return delete_vertices(m, s); });
   if (ImGui::MenuItem("Edges"))
     run_operation("delete edges", [&edges](const CovarianceMesh& m) { return delete_edges(m, edges); });
   if (ImGui::MenuItem("Faces"))
-    run_operation("delete faces", [&s](const CovarianceMesh& m) { return delete_faces(m, faces_within(m, s)); });
+    run_operation("delete faces", [&faces](const CovarianceMesh& m) { return delete_faces(m, faces); });
   ImGui::Separator();
   if (ImGui::MenuItem("Dissolve vertices"))
     run_operation("dissolve vertices", [&s](const CovarianceMesh& m) { return dissolve_vertices(m, s); });
@@ -335,6 +336,7 @@ void EditorApp::topology_changed(const std::vector<int>& selection) {
   drag_.reset();
   reach_.clear();
   selection_.select(selection, false);
+  if (select_mode_ == SelectMode::face) selection_.hold_faces(document_.mesh());  // the result's faces
   if (!hidden_.fits(document_.mesh())) hidden_.clear();  // the indices are another mesh's: all shown
   refresh_hidden();
 }

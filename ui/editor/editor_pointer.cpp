@@ -276,11 +276,17 @@ void EditorApp::draw_handles_and_box() {
   if (select_mode_ != SelectMode::vertex) {
     // A preview that keeps the document's selection (a crease's) shows its edges; one of its own (a
     // bevel's new faces) is of vertices, its edges those with both ends selected.
+    // In face mode the faces' outlines stand for their edges.
     const bool kept = !preview_ || preview_selection_ == selection_.vertices();
-    const std::vector<int>& selected = kept ? selection_.vertices() : preview_selection_;
-    const std::vector<EdgeEnds> edges =
-        kept ? selection_.edges(shown_mesh()) : edges_within(shown_mesh(), preview_selection_);
-    draw_selection_overlay(*draw, v, shown_mesh(), selected, edges, select_mode_);
+    const CovarianceMesh& shown = shown_mesh();
+    const bool faces = select_mode_ == SelectMode::face;
+    const std::vector<EdgeEnds> edges = faces  ? std::vector<EdgeEnds>{}
+                                        : kept ? selection_.edges(shown)
+                                               : edges_within(shown, preview_selection_);
+    const std::vector<int> selected_faces = !faces ? std::vector<int>{}
+                                            : kept ? selection_.faces(shown)
+                                                   : faces_within(shown, preview_selection_);
+    draw_selection_overlay(*draw, v, shown, edges, selected_faces, select_mode_);
   }
   draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, lit);
   gizmo_box_.reset();

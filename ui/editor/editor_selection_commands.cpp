@@ -35,33 +35,36 @@ std::vector<int> corners(const CovarianceMesh& mesh, int face) {
 
 // The face loop across the edge {a, b}: the quads on either side of it, and on from each through
 // the edge opposite the one it was entered by, until a face that is not a quad, the boundary or the
-// start again. Returns the corners of its faces.
-std::vector<int> face_loop_vertices(const CovarianceMesh& mesh, int a, int b) {
+// start again. Returns its faces, ascending.
+std::vector<int> face_loop(const CovarianceMesh& mesh, int a, int b) {
   const PolyMesh& m = mesh.mesh;
   const auto start = m.find_halfedge(m.vertex_handle(a), m.vertex_handle(b));
   if (!start.is_valid()) throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
-  std::set<int> faces, vertices;
+  std::set<int> faces;
   const std::array<OpenMesh::HalfedgeHandle, 2> sides{start, m.opposite_halfedge_handle(start)};
   for (const OpenMesh::HalfedgeHandle first : sides) {
     OpenMesh::HalfedgeHandle h = first;
     while (true) {
       const auto f = m.face_handle(h);
       if (!f.is_valid() || m.valence(f) != 4 || !faces.insert(f.idx()).second) break;
-      for (const auto v : m.fv_range(f)) vertices.insert(v.idx());
       h = m.opposite_halfedge_handle(m.next_halfedge_handle(m.next_halfedge_handle(h)));
     }
   }
-  return {vertices.begin(), vertices.end()};
+  return {faces.begin(), faces.end()};
 }
 
 }  // namespace
 
 void EditorApp::set_select_mode(SelectMode mode) {
   select_mode_ = mode;
-  if (mode == SelectMode::edge)
+  if (mode == SelectMode::edge) {
     selection_.hold_edges(document_.mesh());
-  else
+  } else if (mode == SelectMode::face) {
+    selection_.hold_faces(document_.mesh());
+  } else {
     selection_.release_edges();
+    selection_.release_faces();
+  }
   set_status(select_mode_name(mode) + " select mode", false);
 }
 
@@ -69,13 +72,11 @@ std::vector<int> EditorApp::vertices_under(glm::vec2 pixel) const {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
   if (select_mode_ == SelectMode::vertex) {
-    if (const int vertex =
-            pick_vertex(v.camera, v.width, v.height, pixel, mesh, kClickRadius, &hidden_vertex_mask_);
+    if (const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, mesh, kClickRadius, &hidden_vertex_mask_);
         vertex >= 0)
       return {vertex};
   } else if (select_mode_ == SelectMode::edge) {
-    if (const auto edge = pick_edge(v, pixel, mesh, kClickRadius, &hidden_edge_mask_))
-      return {(*edge)[0], (*edge)[1]};
+    if (const auto edge = pick_edge(v, pixel, mesh, kClickRadius, &hidden_edge_mask_)) return {(*edge)[0], (*edge)[1]};
   }
   const int face = pick_face(v, pixel, mesh, &hidden_face_mask_);
   return face >= 0 ? corners(mesh, face) : std::vector<int>{};
@@ -91,12 +92,11 @@ void EditorApp::click_select(glm::vec2 pixel, bool toggle) {
   std::vector<int> group;
   const auto edge =
       select_mode_ == SelectMode::edge ? pick_edge(v, pixel, mesh, kClickRadius, &hidden_edge_mask_) : std::nullopt;
-  if (edge) {
+  const int face = select_mode_ == SelectMode::face ? pick_face(v, pixel, mesh, &hidden_face_mask_) : -1;
+  if (edge)
     group = {(*edge)[0], (*edge)[1]};
-  } else if (const int face = select_mode_ == SelectMode::face ? pick_face(v, pixel, mesh, &hidden_face_mask_) : -1;
-             face >= 0) {
+  else if (face >= 0)
     group = corners(mesh, face);
-  }
   // The active vertex: the group's vertex nearest the cursor.
   int active = group.empty() ? -1 : group.front();
   float nearest = 1e30f;
@@ -106,7 +106,7 @@ void EditorApp::click_select(glm::vec2 pixel, bool toggle) {
   if (select_mode_ == SelectMode::edge)
     selection_.click_edges(mesh, edge ? std::vector<EdgeEnds>{*edge} : std::vector<EdgeEnds>{}, active, toggle);
   else
-    selection_.click_group(group, active, toggle);
+    selection_.click_faces(mesh, face >= 0 ? std::vector<int>{face} : std::vector<int>{}, active, toggle);
 }
 
 void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
@@ -122,12 +122,15 @@ void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
       set_status("edge loop: " + count_of(loop.size(), "edge", "edges"), false);
       return;
     }
-    const std::vector<int> loop =
-        select_mode_ == SelectMode::face ? face_loop_vertices(mesh, a, b) : edge_loop(mesh, a, b);
+    if (select_mode_ == SelectMode::face) {
+      const std::vector<int> loop = face_loop(mesh, a, b);
+      selection_.click_faces(mesh, loop, a, toggle);
+      set_status("face loop: " + count_of(loop.size(), "face", "faces"), false);
+      return;
+    }
+    const std::vector<int> loop = edge_loop(mesh, a, b);
     selection_.click_group(loop, a, toggle);
-    set_status(std::string(select_mode_ == SelectMode::face ? "face" : "edge") +
-                   " loop: " + std::to_string(loop.size()) + " vertices",
-               false);
+    set_status("edge loop: " + std::to_string(loop.size()) + " vertices", false);
   } catch (const Error& e) {
     set_status(std::string("loop select: ") + e.what(), true);
   }
@@ -196,12 +199,8 @@ void EditorApp::draw_similar_items() {
         selection_.select_edges(mesh, edges, true);
         found = edges.size();
       } else if (select_mode_ == SelectMode::face) {
-        const std::vector<int> faces =
-            similar_faces(mesh, faces_within(mesh, selection_.vertices()), similarity, similar_threshold_);
-        std::vector<int> corners_of_faces;
-        for (const int f : faces)
-          for (const int v : corners(mesh, f)) corners_of_faces.push_back(v);
-        selection_.select(corners_of_faces, true);
+        const std::vector<int> faces = similar_faces(mesh, selection_.faces(mesh), similarity, similar_threshold_);
+        selection_.select_faces(mesh, faces, true);
         found = faces.size();
       } else {
         const std::vector<int> vertices = similar_vertices(mesh, selection_.vertices(), similarity);
@@ -251,6 +250,14 @@ void EditorApp::box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract) {
       selection_.select_edges(mesh, edges, add);
     return;
   }
+  if (select_mode_ == SelectMode::face) {  // the faces with all corners inside
+    const std::vector<int> faces = faces_within(mesh, inside);
+    if (subtract)
+      selection_.deselect_faces(mesh, faces);
+    else
+      selection_.select_faces(mesh, faces, add);
+    return;
+  }
   if (subtract)
     selection_.deselect(inside);
   else
@@ -280,7 +287,7 @@ std::string EditorApp::selection_summary() const {
   if (select_mode_ == SelectMode::edge) {
     text += ", edge mode: " + count_of(selection_.empty() ? 0 : selection_.edges(mesh).size(), "edge", "edges");
   } else if (select_mode_ == SelectMode::face) {
-    const size_t n = selection_.empty() ? 0 : faces_within(mesh, selection_.vertices()).size();
+    const size_t n = selection_.empty() ? 0 : selection_.faces(mesh).size();
     text += ", face mode: " + std::to_string(n) + (n == 1 ? " face" : " faces");
   } else {
     text += ", vertex mode";
@@ -294,6 +301,11 @@ void EditorApp::build_selection_commands() {
   };
   const auto always = std::function<bool()>();
   const auto has_selection = [this] { return !selection_.empty(); };
+  // After a command that selects vertices: the edges or faces among them held, as the mode selects.
+  const auto hold_for_mode = [this] {
+    if (select_mode_ == SelectMode::edge) selection_.hold_edges(document_.mesh());
+    if (select_mode_ == SelectMode::face) selection_.hold_faces(document_.mesh());
+  };
   CommandTable& t = commands_;
   const std::pair<SelectMode, int> modes[] = {
       {SelectMode::vertex, GLFW_KEY_1}, {SelectMode::edge, GLFW_KEY_2}, {SelectMode::face, GLFW_KEY_3}};
@@ -310,9 +322,9 @@ void EditorApp::build_selection_commands() {
   t.add({"Select",
          "Select all",
          {key(GLFW_KEY_A), key(GLFW_KEY_A, true)},
-         [this] {
+         [this, hold_for_mode] {
            selection_.select_all(document_.mesh().n_vertices());
-           if (select_mode_ == SelectMode::edge) selection_.hold_edges(document_.mesh());
+           hold_for_mode();
          },
          always,
          nullptr,
@@ -324,6 +336,8 @@ void EditorApp::build_selection_commands() {
   t.add({"Select", "Invert selection", {key(GLFW_KEY_I, true)}, [this] {
            if (select_mode_ == SelectMode::edge)
              selection_.invert_edges(document_.mesh());
+           else if (select_mode_ == SelectMode::face)
+             selection_.invert_faces(document_.mesh());
            else
              selection_.invert(document_.mesh().n_vertices());
          }});
@@ -350,9 +364,10 @@ void EditorApp::build_selection_commands() {
   t.add({"Select",
          "Select linked (under the cursor)",
          {key(GLFW_KEY_L)},
-         [this] {
+         [this, hold_for_mode] {
            const std::vector<int> seeds = vertices_under(input_.cursor);
            if (!seeds.empty()) selection_.select(linked_vertices(document_.mesh(), seeds), true);
+           hold_for_mode();
          },
          always,
          nullptr,
@@ -361,17 +376,26 @@ void EditorApp::build_selection_commands() {
   t.add({"Select",
          "Select linked (from the selection)",
          {key(GLFW_KEY_L, true)},
-         [this] { selection_.select(linked_vertices(document_.mesh(), selection_.vertices()), true); },
+         [this, hold_for_mode] {
+           selection_.select(linked_vertices(document_.mesh(), selection_.vertices()), true);
+           hold_for_mode();
+         },
          has_selection});
   t.add({"Select",
          "Grow selection",
          {key(GLFW_KEY_KP_ADD, true)},
-         [this] { selection_.select(grow_selection(document_.mesh(), selection_.vertices()), false); },
+         [this, hold_for_mode] {
+           selection_.select(grow_selection(document_.mesh(), selection_.vertices()), false);
+           hold_for_mode();
+         },
          has_selection});
   t.add({"Select",
          "Shrink selection",
          {key(GLFW_KEY_KP_SUBTRACT, true)},
-         [this] { selection_.select(shrink_selection(document_.mesh(), selection_.vertices()), false); },
+         [this, hold_for_mode] {
+           selection_.select(shrink_selection(document_.mesh(), selection_.vertices()), false);
+           hold_for_mode();
+         },
          has_selection});
   t.add({"Select",
          "Select through (X-ray)",

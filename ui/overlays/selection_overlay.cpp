@@ -29,25 +29,22 @@ bool faces_camera(const PolyMesh& m, OpenMesh::SmartFaceHandle f, const std::vec
 }  // namespace
 
 void draw_selection_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMesh& mesh,
-                            const std::vector<int>& selected, const std::vector<EdgeEnds>& edges, SelectMode mode) {
-  if (mode == SelectMode::vertex || selected.empty()) return;
+                            const std::vector<EdgeEnds>& edges, const std::vector<int>& faces, SelectMode mode) {
+  if (mode == SelectMode::vertex || (edges.empty() && faces.empty())) return;
   const PolyMesh& m = mesh.mesh;
-  std::vector<std::optional<ImVec2>> pixel(mesh.n_vertices());
-  for (const int vertex : selected)
-    if (const auto q = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(vertex))))
-      pixel[size_t(vertex)] = ImVec2(q->x, q->y);
+  std::vector<std::optional<ImVec2>> pixel(mesh.n_vertices());  // projected as needed
+  const auto project = [&](int vertex) -> const std::optional<ImVec2>& {
+    std::optional<ImVec2>& p = pixel[size_t(vertex)];
+    if (!p)
+      if (const auto q = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(vertex)))) p = ImVec2(q->x, q->y);
+    return p;
+  };
   const auto front = [&](OpenMesh::SmartFaceHandle f) {
-    for (const auto corner : m.fv_range(f))
-      if (!pixel[size_t(corner.idx())])
-        pixel[size_t(corner.idx())] = [&]() -> std::optional<ImVec2> {
-          const auto q = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(corner.idx())));
-          if (!q) return std::nullopt;
-          return ImVec2(q->x, q->y);
-        }();
+    for (const auto corner : m.fv_range(f)) project(corner.idx());
     return faces_camera(m, f, pixel);
   };
   if (mode == SelectMode::face)
-    for (const int face : faces_within(mesh, selected)) {
+    for (const int face : faces) {
       const auto f = OpenMesh::make_smart(m.face_handle(face), &m);
       if (!front(f)) continue;
       std::vector<ImVec2> corners;
@@ -61,8 +58,7 @@ void draw_selection_overlay(ImDrawList& draw, const Viewport& v, const Covarianc
     if (!h.is_valid()) continue;
     const auto f0 = h.face(), f1 = h.opp().face();
     const bool shown = !f0.is_valid() || !f1.is_valid() || front(f0) || front(f1);
-    if (shown && pixel[size_t(a)] && pixel[size_t(b)])
-      draw.AddLine(*pixel[size_t(a)], *pixel[size_t(b)], kEdgeColour, 2.5f);
+    if (shown && project(a) && project(b)) draw.AddLine(*pixel[size_t(a)], *pixel[size_t(b)], kEdgeColour, 2.5f);
   }
 }
 

@@ -11,11 +11,11 @@ struct ImDrawList;
 
 namespace gps {
 
-/// In edge and face mode: the selected `edges` as lines in the highlight colour, and (face mode)
-/// every face with all its `selected` vertices as corners shaded and outlined. Only what faces the
-/// camera is drawn: an edge of at least one camera-facing face, a camera-facing face (a boundary
-/// edge always). Nothing in vertex mode (the handle overlay dots the selected vertices).
+/// In edge and face mode: the selected `edges` as lines in the highlight colour, and (face mode) the
+/// selected `faces` shaded and outlined. Only what faces the camera is drawn: an edge of at least one
+/// camera-facing face, a camera-facing face (a boundary edge always). Nothing in vertex mode (the
+/// handle overlay dots the selected vertices).
 void draw_selection_overlay(ImDrawList& draw, const Viewport& view, const CovarianceMesh& mesh,
-                            const std::vector<int>& selected, const std::vector<EdgeEnds>& edges, SelectMode mode);
+                            const std::vector<EdgeEnds>& edges, const std::vector<int>& faces, SelectMode mode);
 
 }  // namespace gps

@@ -49,15 +49,19 @@ void CircleSelectTool::paint(glm::vec2 at, bool add, ToolContext& ctx) {
       ctx.selection.deselect_edges(mesh, edges);
     return;
   }
-  if (mode_ == SelectMode::face) {  // the faces whose centre is covered, by their corners
-    inside.clear();
+  if (mode_ == SelectMode::face) {  // the faces whose centre is covered
+    std::vector<int> faces;
     for (const auto f : mesh.mesh.faces()) {
       std::vector<int> corners;
       bool seen = true;
       for (const auto c : mesh.mesh.fv_range(f)) corners.push_back(c.idx()), seen = seen && visible_[size_t(c.idx())];
-      if (seen && covered(centre_of_vertices(mesh, corners)))
-        inside.insert(inside.end(), corners.begin(), corners.end());
+      if (seen && covered(centre_of_vertices(mesh, corners))) faces.push_back(f.idx());
     }
+    if (add)
+      ctx.selection.select_faces(mesh, faces, true);
+    else
+      ctx.selection.deselect_faces(mesh, faces);
+    return;
   }
   if (add)
     ctx.selection.select(inside, true);

@@ -36,7 +36,7 @@ Modelled inset_with_depth(const CovarianceMesh& mesh, const std::vector<int>& fa
 
 std::unique_ptr<ModalTool> InsetTool::start(ToolContext& ctx) {
   const CovarianceMesh& mesh = ctx.document.mesh();
-  std::vector<int> faces = faces_within(mesh, ctx.selection.vertices());
+  std::vector<int> faces = ctx.selection.faces(mesh);
   if (faces.empty()) {
     ctx.note("inset refused: select the corners of one face or more", true);
     return nullptr;

@@ -68,7 +68,7 @@ std::unique_ptr<ModalTool> TransformTool::move_after(ToolContext& ctx, const std
   Vec3 normal = Vec3::Zero();
   if (along_normal) {
     const MeshArrays arrays = arrays_of(ctx.document.mesh());
-    for (const int f : faces_within(ctx.document.mesh(), ctx.selection.vertices())) normal += newell_normal(arrays, f);
+    for (const int f : ctx.selection.faces(ctx.document.mesh())) normal += newell_normal(arrays, f);
     if (normal.norm() > 0) normal.normalize();
   }
   std::unique_ptr<TransformTool> tool(new TransformTool(ctx, normal, name, summary));
@@ -79,6 +79,12 @@ std::unique_ptr<ModalTool> TransformTool::move_after(ToolContext& ctx, const std
 }
 
 std::unique_ptr<ModalTool> TransformTool::extrude(ToolContext& ctx) {
+  if (ctx.selection.holds_faces()) {  // face mode: the faces selected, not every face among their corners
+    const std::vector<int> faces = ctx.selection.faces(ctx.document.mesh());
+    return move_after(
+        ctx, "extrude",
+        [faces](const CovarianceMesh& m, const Vec3& offset) { return extrude_faces_by(m, faces, offset); }, true);
+  }
   const std::vector<int> selected = ctx.selection.vertices();
   return move_after(
       ctx, "extrude",
@@ -86,7 +92,7 @@ std::unique_ptr<ModalTool> TransformTool::extrude(ToolContext& ctx) {
 }
 
 std::unique_ptr<ModalTool> TransformTool::duplicate(ToolContext& ctx) {
-  const std::vector<int> faces = faces_within(ctx.document.mesh(), ctx.selection.vertices());
+  const std::vector<int> faces = ctx.selection.faces(ctx.document.mesh());
   if (faces.empty()) {
     ctx.note("duplicate refused: select a face or more (all its corners)", true);
     return nullptr;
