@@ -39,18 +39,16 @@ EdgePoint canonical_edge_point(EdgePoint e, int corners) {
   return EdgePoint(q, m, (code & kNeighbourReversed) != 0 ? e.n - e.i : e.i, e.n);
 }
 
-// The patch edge that names the limit curve of the mesh edge that edge k of patch p lies on, for
-// both sides alike (tess_levels.glsl measures it, corner_limit_comp.glsl keeps its midpoint): of a
-// whole edge, the lower patch's; of an edge beside two half-size patches, that edge, and of each
-// half beside it, the same. (−1, −1) where no patch edge covers the whole mesh edge (a half beside
-// another half, or on the boundary). `part`: the patch edge's PatchEdgePart (whole for triangles).
+// The patch edge that names the limit curve edge k of patch p lies on, for both sides alike
+// (tess_levels.glsl measures it, corner_limit_comp.glsl keeps its midpoint): of an edge beside two
+// half-size patches, that edge, and of each half beside it, the same; of a whole edge, and of a half
+// beside another half or on the boundary (whose curve is then that half's own), the lower patch's.
+// `part`: the patch edge's PatchEdgePart (whole for triangles).
 ivec2 curve_edge(int p, int k, int part, int corners) {
   int r = 4 * (corners * p + k), q = patch_neighbours[r], m = patch_neighbours[r + 1] & kNeighbourEdgeMask;
   if (part == kEdgeWholeBesideHalves) return ivec2(p, k);
-  if (part != kEdgeWhole) {
-    bool beside_whole = q >= 0 && patch_edges[kPatchEdgeStride * q + kPatchEdgeInts * m + 2] == kEdgeWholeBesideHalves;
-    return beside_whole ? ivec2(q, m) : ivec2(-1);
-  }
+  if (part != kEdgeWhole && q >= 0 && patch_edges[kPatchEdgeStride * q + kPatchEdgeInts * m + 2] == kEdgeWholeBesideHalves)
+    return ivec2(q, m);
   return q >= 0 && (q < p || (q == p && m < k)) ? ivec2(q, m) : ivec2(p, k);
 }
 

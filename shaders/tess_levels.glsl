@@ -63,11 +63,15 @@ float curve_pixels(int p, int k) {
 // The level of the mesh edge that edge k of patch p lies on, from the end points a and b of its chord
 // and its limit curve (curve_edge; `part` the patch edge's PatchEdgePart): the larger size on
 // screen over the target, rounded up, clamped to 1–64; an edge with a point behind the eye gets 64.
+// Where the curve measured is a half's own (a half beside a half, or on the boundary), the mesh
+// edge's curve counts twice its size.
 float edge_level(int a, int b, int p, int k, int part) {
   if (u_pixels <= 0.0) return u_level;
   float chord = chord_pixels(a, b);
   ivec2 curve = curve_edge(p, k, part, kLevelCorners);
-  float along = curve.x >= 0 ? curve_pixels(curve.x, curve.y) : 0.0;
+  bool half_curve = part != kEdgeWhole && part != kEdgeWholeBesideHalves &&
+                    patch_edges[kPatchEdgeStride * curve.x + kPatchEdgeInts * curve.y + 2] != kEdgeWholeBesideHalves;
+  precise float along = half_curve ? 2.0 * curve_pixels(curve.x, curve.y) : curve_pixels(curve.x, curve.y);
   if (chord < 0.0 || along < 0.0) return 64.0;
   return clamp(ceil(max(chord, along) / u_pixels), 1.0, 64.0);
 }

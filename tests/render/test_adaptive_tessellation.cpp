@@ -121,6 +121,46 @@ TEST_F(GpuTest, FlattenedGaussiansKeepTheSilhouetteOfTheirCurvedEdges) {
   EXPECT_LE(d.differing, 200);
 }
 
+// The same flattened top on a cube whose faces but the bottom are each cut into two triangles: the
+// mesh is planned by Catmull-Clark (a quad remains), each triangle split into three quads, so every
+// edge but the bottom's is two halves beside two halves, and no patch edge covers a whole mesh edge.
+// Each half's own limit curve must then stand for it, or its chord alone notches the outline.
+TEST_F(GpuTest, FlattenedGaussiansKeepTheSilhouetteAlongSplitFacesHalfEdges) {
+  CovarianceMesh cube = make_sample("cube");
+  cube = transform_vertices(cube, {}, AffineMap{Vec3(1.0, 2.0, 1.0).asDiagonal(), Vec3::Zero()}).mesh;
+  std::vector<Vec3> means;
+  for (size_t v = 0; v < cube.n_vertices(); ++v) means.push_back(cube.mean(v));
+  std::vector<std::vector<int>> faces;
+  int triangulated = 0;
+  for (const auto f : cube.mesh.faces()) {
+    std::vector<int> c;
+    for (const auto v : f.vertices()) c.push_back(v.idx());
+    bool bottom = true;
+    for (const int v : c) bottom = bottom && means[size_t(v)].y() < -1.5;
+    if (bottom) {
+      faces.push_back(c);
+      continue;
+    }
+    faces.push_back({c[0], c[1], c[2]});
+    faces.push_back({c[0], c[2], c[3]});
+    ++triangulated;
+  }
+  ASSERT_EQ(triangulated, 5);
+  CovarianceMesh mesh = make_covariance_mesh(means, cube.covariances, faces, "triangulated cube");
+  std::vector<int> top;
+  Vec3 centre = Vec3::Zero();
+  for (int i = 0; i < int(mesh.n_vertices()); ++i)
+    if (mesh.mean(size_t(i)).y() > 1.5) {
+      top.push_back(i);
+      centre += mesh.mean(size_t(i)) / 4.0;
+    }
+  ASSERT_EQ(top.size(), 4u);
+  mesh = transform_vertices(mesh, top, AffineMap::about(centre, Vec3(1.0, 1.0, 0.05).asDiagonal())).mesh;
+  const MaskDifference d = front_silhouettes(mesh, "flattened_top_split_faces");
+  ASSERT_GT(d.covered, 1280 * 800 / 20) << "the stretched cube fills much of the view";
+  EXPECT_LE(d.differing, 200);
+}
+
 // A mug as a designer makes one: the cylinder sample's top inset, its inner face extruded down. The
 // rim's patch edges that run across it are short, while their limit curves round over the rim; from
 // their chords alone, adaptive levels gave them a few segments, and the normals interpolated across
