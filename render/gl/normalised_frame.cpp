@@ -16,6 +16,13 @@ NormalisedFrame NormalisedFrame::of(const CovarianceMesh& mesh) {
   return f;
 }
 
+NormalisedFrame NormalisedFrame::following(const CovarianceMesh& mesh) const {
+  const NormalisedFrame own = of(mesh);
+  const bool near =
+      glm::distance(own.centre, centre) <= 0.1 * unit && own.unit <= 1.25 * unit && unit <= 1.25 * own.unit;
+  return near ? *this : own;
+}
+
 Vec3 NormalisedFrame::mean_in_frame(const Vec3& mean) const {
   return (mean - Vec3(centre.x, centre.y, centre.z)) * (1.0 / unit);
 }

@@ -28,6 +28,12 @@ struct NormalisedFrame {
 
   /// The frame of `mesh`'s bounding box (the identity's scale for a mesh of one point).
   static NormalisedFrame of(const CovarianceMesh& mesh);
+  /// The frame to show `mesh` in after a change: this one while the mesh's own frame lies near it
+  /// (its centre within a tenth of this unit, its unit within a factor of 1.25), else the mesh's own.
+  /// A renderer that keeps its frame keeps its evaluated output where a change did not reach
+  /// (SurfaceRenderer::set_mesh with a PlanChange); an extrude past the bounding box would otherwise
+  /// change the frame, and everything would be evaluated again.
+  NormalisedFrame following(const CovarianceMesh& mesh) const;
   /// `mesh` in the frame: means (μ − centre) / unit, covariances Σ / unit², computed in double.
   CovarianceMesh to_frame(const CovarianceMesh& mesh) const;
   /// `mesh`'s Gaussians in the frame, as to_frame gives them.

@@ -113,6 +113,35 @@ TEST_F(IncrementalGpuBuffers, AChangeFromOtherTablesOrFrameEvaluatesEverything) 
   expect_as_set_anew(renderer, extruded.mesh, moved, "from other tables");
 }
 
+// An extrude past the bounding box moves the mesh's own frame a little; the renderer's frame, followed
+// (NormalisedFrame::following), stays, and so does the output the extrude did not reach. A mesh moved
+// far off gets its own frame.
+TEST_F(IncrementalGpuBuffers, AnExtrudePastTheBoundingBoxKeepsTheFrameAndTheOutput) {
+  const CovarianceMesh sphere = make_sample("sphere", 1500);
+  SurfaceReplanner replanner(topology_of(sphere.mesh), {}, {}, test::kSmallRanges);
+  SurfaceRenderer renderer;
+  renderer.set_mesh(sphere, replanner.tables(), NormalisedFrame::of(sphere), replanner.last_change(), {});
+  int top = 0;  // the face whose centre is highest
+  double highest = -1e9;
+  for (const auto f : sphere.mesh.faces()) {
+    double y = 0.0;
+    for (const auto v : f.vertices()) y += sphere.mean(size_t(v.idx())).y();
+    if (y > highest) highest = y, top = f.idx();
+  }
+  const Modelled extruded = extrude_faces(sphere, {top}, 0.1);
+  ASSERT_FALSE(NormalisedFrame::of(extruded.mesh) == renderer.frame()) << "the bounding box grew";
+  const NormalisedFrame frame = renderer.frame().following(extruded.mesh);
+  EXPECT_TRUE(frame == renderer.frame());
+  replanner.set_topology(topology_of(extruded.mesh.mesh), {}, extruded.vertex_origin);
+  renderer.set_mesh(extruded.mesh, replanner.tables(), frame, replanner.last_change(), extruded.vertex_origin);
+  const int all = renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
+  EXPECT_LT(renderer.last_corner_slots(), all / 4);
+  expect_as_set_anew(renderer, extruded.mesh, frame, "extruded past the box");
+
+  const Modelled moved = transform_vertices(sphere, {}, AffineMap{Mat3::Identity(), Vec3(5.0, 0.0, 0.0)});
+  EXPECT_TRUE(renderer.frame().following(moved.mesh) == NormalisedFrame::of(moved.mesh));
+}
+
 // A kept patch whose corner another patch now owns is evaluated again, and its slot there, which it no
 // longer evaluates, holds zero as in a renderer set anew (not the value it kept). The tables are the
 // grid's with the owner of patch 0's corner 2 (a lowest index rule would give patch 0) moved to patch 4.

@@ -71,7 +71,8 @@ void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, 
       shown_plans_->set_topology(topology, mesh.sharpness, origin);
     else
       shown_plans_.emplace(topology, plans, mesh.sharpness);
-    renderer_->set_mesh(mesh, shown_plans_->tables(), NormalisedFrame::of(mesh), shown_plans_->last_change(), origin);
+    renderer_->set_mesh(mesh, shown_plans_->tables(), renderer_->frame().following(mesh), shown_plans_->last_change(),
+                        origin);
   }
   mirror_ = std::move(next);
   hidden_stale_ = true;  // the patches and lines it leaves out, of the mesh now shown
