@@ -4,6 +4,7 @@
 // a high uniform level.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -86,6 +87,22 @@ MaskDifference front_silhouettes(const CovarianceMesh& mesh, const std::string& 
   return d;
 }
 
+// The cube stretched y×2, its top face's four vertices then scaled z×0.05 about their centre: their
+// Gaussians flatten into discs, and the limit curves along the top's short edges bend far from
+// their chords, up over the top and back.
+CovarianceMesh stretched_with_flat_top(const CovarianceMesh& cube) {
+  CovarianceMesh mesh = transform_vertices(cube, {}, AffineMap{Vec3(1.0, 2.0, 1.0).asDiagonal(), Vec3::Zero()}).mesh;
+  std::vector<int> top;
+  Vec3 centre = Vec3::Zero();
+  for (int i = 0; i < int(mesh.n_vertices()); ++i)
+    if (mesh.mean(size_t(i)).y() > 1.5) {
+      top.push_back(i);
+      centre += mesh.mean(size_t(i)) / 4.0;
+    }
+  EXPECT_EQ(top.size(), 4u);
+  return transform_vertices(mesh, top, AffineMap::about(centre, Vec3(1.0, 1.0, 0.05).asDiagonal())).mesh;
+}
+
 // The cube sample from the front in the orthographic axis view: the patch edges along the view
 // direction project to a point. Their level must still follow their size, or the side patches, whose
 // silhouette runs across them, are cut into a polygon of a few segments, with notches where the
@@ -97,24 +114,11 @@ TEST_F(GpuTest, EdgesSeenEndOnKeepTheSilhouetteOfAnOrthographicAxisView) {
   EXPECT_LE(d.differing, 40);
 }
 
-// The cube stretched y×2, its top face's four vertices then scaled z×0.05 about their centre: their
-// Gaussians flatten into discs, and the limit curves along the top patch's short edges bend far from
-// their chords, up over the top and back. From the front, orthographic, those chords alone would give
-// the top patch a few segments across its outline, a band lower than the uniform render's with
-// notches at its ends.
+// The cube with a flattened top (stretched_with_flat_top). From the front, orthographic, the chords of
+// the top patch's short edges alone would give it a few segments across its outline, a band lower
+// than the uniform render's with notches at its ends.
 TEST_F(GpuTest, FlattenedGaussiansKeepTheSilhouetteOfTheirCurvedEdges) {
-  CovarianceMesh mesh = make_sample("cube");
-  mesh = transform_vertices(mesh, {}, AffineMap{Vec3(1.0, 2.0, 1.0).asDiagonal(), Vec3::Zero()}).mesh;
-  std::vector<int> top;
-  Vec3 centre = Vec3::Zero();
-  for (int i = 0; i < int(mesh.n_vertices()); ++i)
-    if (mesh.mean(size_t(i)).y() > 1.5) {
-      top.push_back(i);
-      centre += mesh.mean(size_t(i)) / 4.0;
-    }
-  ASSERT_EQ(top.size(), 4u);
-  mesh = transform_vertices(mesh, top, AffineMap::about(centre, Vec3(1.0, 1.0, 0.05).asDiagonal())).mesh;
-  const MaskDifference d = front_silhouettes(mesh, "flattened_top");
+  const MaskDifference d = front_silhouettes(stretched_with_flat_top(make_sample("cube")), "flattened_top");
   ASSERT_GT(d.covered, 1280 * 800 / 20) << "the stretched cube fills much of the view";
   // Both outlines are round; where the top's is nearly level, a sub-pixel difference flips a run of
   // pixels (as between uniform levels 16 and 64), but no band is missing along the top patch.
@@ -126,36 +130,23 @@ TEST_F(GpuTest, FlattenedGaussiansKeepTheSilhouetteOfTheirCurvedEdges) {
 // edge but the bottom's is two halves beside two halves, and no patch edge covers a whole mesh edge.
 // Each half's own limit curve must then stand for it, or its chord alone notches the outline.
 TEST_F(GpuTest, FlattenedGaussiansKeepTheSilhouetteAlongSplitFacesHalfEdges) {
-  CovarianceMesh cube = make_sample("cube");
-  cube = transform_vertices(cube, {}, AffineMap{Vec3(1.0, 2.0, 1.0).asDiagonal(), Vec3::Zero()}).mesh;
+  const CovarianceMesh cube = make_sample("cube");
   std::vector<Vec3> means;
   for (size_t v = 0; v < cube.n_vertices(); ++v) means.push_back(cube.mean(v));
   std::vector<std::vector<int>> faces;
-  int triangulated = 0;
   for (const auto f : cube.mesh.faces()) {
     std::vector<int> c;
     for (const auto v : f.vertices()) c.push_back(v.idx());
-    bool bottom = true;
-    for (const int v : c) bottom = bottom && means[size_t(v)].y() < -1.5;
-    if (bottom) {
-      faces.push_back(c);
-      continue;
+    if (std::all_of(c.begin(), c.end(), [&](int v) { return means[size_t(v)].y() < -0.5; })) {
+      faces.push_back(c);  // the bottom
+    } else {
+      faces.push_back({c[0], c[1], c[2]});
+      faces.push_back({c[0], c[2], c[3]});
     }
-    faces.push_back({c[0], c[1], c[2]});
-    faces.push_back({c[0], c[2], c[3]});
-    ++triangulated;
   }
-  ASSERT_EQ(triangulated, 5);
-  CovarianceMesh mesh = make_covariance_mesh(means, cube.covariances, faces, "triangulated cube");
-  std::vector<int> top;
-  Vec3 centre = Vec3::Zero();
-  for (int i = 0; i < int(mesh.n_vertices()); ++i)
-    if (mesh.mean(size_t(i)).y() > 1.5) {
-      top.push_back(i);
-      centre += mesh.mean(size_t(i)) / 4.0;
-    }
-  ASSERT_EQ(top.size(), 4u);
-  mesh = transform_vertices(mesh, top, AffineMap::about(centre, Vec3(1.0, 1.0, 0.05).asDiagonal())).mesh;
+  ASSERT_EQ(faces.size(), 11u);
+  const CovarianceMesh mesh =
+      stretched_with_flat_top(make_covariance_mesh(means, cube.covariances, faces, "triangulated cube"));
   const MaskDifference d = front_silhouettes(mesh, "flattened_top_split_faces");
   ASSERT_GT(d.covered, 1280 * 800 / 20) << "the stretched cube fills much of the view";
   EXPECT_LE(d.differing, 200);
