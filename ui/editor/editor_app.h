@@ -2,11 +2,10 @@
 // The editor's parts and their wiring (private to ui/): one class, its methods in one file per
 // concept — editor.cpp (frames, drawing, output), editor_pointer.cpp (mouse and handle drags),
 // editor_actions.cpp (open, save, undo, the unsaved-changes prompt), editor_commands.cpp (the
-// command table: keys, menus, help), editor_selection_commands.cpp (selection modes and tools),
-// editor_hide.cpp (hide and reveal),
-// editor_modelling.cpp (the Mesh menu's operations), editor_modal_tools.cpp (the modal tools of
-// ui/tools/ started and handed the events), editor_mesh_jobs.cpp (File → Simplify… and
-// Fit to… in the background) and editor_target_points.cpp (a fit's target as points over the surface).
+// command table: keys, menus, help), editor_selection_commands.cpp (selecting with the pointer), editor_select_menu.cpp
+// (the Select menu), editor_hide.cpp (hide and reveal), editor_modelling.cpp (the Mesh menu's operations),
+// editor_modal_tools.cpp (the modal tools of ui/tools/ started and handed the events), editor_mesh_jobs.cpp (File →
+// Simplify… and Fit to… in the background) and editor_target_points.cpp (a fit's target as points over the surface).
 #include <array>
 #include <chrono>
 #include <functional>
@@ -80,7 +79,8 @@ private:
   bool vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const;
   Viewport viewport() const;
   void draw_handles_and_box();
-  // Selecting in the vertex, edge and face modes (editor_selection_commands.cpp).
+  // Selecting in the vertex, edge and face modes (editor_selection_commands.cpp; the Select menu:
+  // editor_select_menu.cpp).
   void build_selection_commands();
   void set_select_mode(SelectMode mode);
   void click_select(glm::vec2 pixel, bool toggle);

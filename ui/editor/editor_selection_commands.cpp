@@ -1,21 +1,16 @@
-// Selecting in Blender's three modes: a click picks a vertex, an edge or a face (its corners);
-// Alt+click a loop; boxes take only what the camera sees unless selecting through; and the Select
-// menu's commands (modes, all, none, invert, linked, grow, shrink, sharp edges).
-#include <GLFW/glfw3.h>
-#include <imgui.h>
+// Selecting in Blender's three modes: a click picks a vertex, an edge or a face; Alt+click a loop,
+// Ctrl+Alt+click a ring, Ctrl+click a path; boxes take only what the camera sees unless selecting
+// through. The Select menu's commands are in editor_select_menu.cpp.
 
 #include <algorithm>
 #include <array>
 #include <set>
 
-#include "core/mesh/crease_by_angle.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/mesh_queries.h"
-#include "core/modelling/select_similar.h"
 #include "core/modelling/operation_words.h"
 #include "core/support/error.h"
 #include "ui/editor/editor_app.h"
-#include "ui/tools/circle_select_tool.h"
 #include "view/element_picking.h"
 #include "view/picking.h"
 #include "view/visible_vertices.h"
@@ -186,51 +181,6 @@ void EditorApp::path_select(glm::vec2 pixel) {
   }
 }
 
-// Select similar's items for the selection mode, and its threshold: each adds the elements like a
-// selected one (core/modelling/select_similar.h).
-void EditorApp::draw_similar_items() {
-  const CovarianceMesh& mesh = document_.mesh();
-  const auto add = [&](Similarity similarity) {
-    try {
-      size_t found = 0;
-      if (select_mode_ == SelectMode::edge) {
-        const std::vector<EdgeEnds> edges = similar_edges(mesh, selection_.edges(mesh), similarity, similar_threshold_);
-        selection_.hold_edges(mesh);
-        selection_.select_edges(mesh, edges, true);
-        found = edges.size();
-      } else if (select_mode_ == SelectMode::face) {
-        const std::vector<int> faces = similar_faces(mesh, selection_.faces(mesh), similarity, similar_threshold_);
-        selection_.select_faces(mesh, faces, true);
-        found = faces.size();
-      } else {
-        const std::vector<int> vertices = similar_vertices(mesh, selection_.vertices(), similarity);
-        selection_.select(vertices, true);
-        found = vertices.size();
-      }
-      set_status(std::string("similar ") + similarity_name(similarity) + ": " + std::to_string(found) + " selected",
-                 false);
-    } catch (const Error& e) {
-      set_status(std::string("select similar: ") + e.what(), true);
-    }
-  };
-  const std::vector<std::pair<const char*, Similarity>> items =
-      select_mode_ == SelectMode::edge
-          ? std::vector<std::pair<const char*, Similarity>>{{"Length", Similarity::edge_length},
-                                                            {"Crease", Similarity::edge_crease}}
-      : select_mode_ == SelectMode::face
-          ? std::vector<std::pair<const char*, Similarity>>{{"Area", Similarity::face_area},
-                                                            {"Sides", Similarity::face_sides},
-                                                            {"Normal", Similarity::face_normal}}
-          : std::vector<std::pair<const char*, Similarity>>{{"Number of edges", Similarity::vertex_edges}};
-  for (const auto& [label, similarity] : items)
-    if (ImGui::MenuItem(label)) add(similarity);
-  ImGui::SetNextItemWidth(80.0f);
-  ImGui::InputDouble("threshold", &similar_threshold_, 0.0, 0.0, "%.3g");
-  similar_threshold_ = std::clamp(similar_threshold_, 0.0, 1.0);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("lengths and areas within this fraction, creases within this much, normals within this · 180°");
-}
-
 void EditorApp::box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract) {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
@@ -264,23 +214,6 @@ void EditorApp::box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract) {
     selection_.select(inside, add);
 }
 
-void EditorApp::select_sharp_edges() {
-  const CovarianceMesh& mesh = document_.mesh();
-  const std::vector<EdgeEnds> sharp = edges_sharper_than(mesh, sharp_edge_angle_);
-  if (select_mode_ != SelectMode::edge) set_select_mode(SelectMode::edge);
-  selection_.select_edges(mesh, sharp, true);  // added to the selection, as Blender does
-  set_status("select sharp edges: " + count_of(sharp.size(), "edge", "edges") + " folded by more than " +
-                 short_number(sharp_edge_angle_) + "°",
-             false);
-}
-
-void EditorApp::draw_sharp_edges_items() {
-  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
-  if (ImGui::InputDouble("angle (degrees)", &sharp_edge_angle_, 0.0, 0.0, "%.3g"))
-    sharp_edge_angle_ = std::clamp(sharp_edge_angle_, 0.0, 180.0);
-  if (ImGui::MenuItem("Select", "Ctrl+Shift+E")) select_sharp_edges();
-}
-
 std::string EditorApp::selection_summary() const {
   std::string text = std::to_string(selection_.vertices().size()) + " selected";
   const CovarianceMesh& mesh = document_.mesh();
@@ -293,118 +226,6 @@ std::string EditorApp::selection_summary() const {
     text += ", vertex mode";
   }
   return text + (select_through_ ? ", X-ray" : "");
-}
-
-void EditorApp::build_selection_commands() {
-  const auto key = [](int k, bool ctrl = false, bool shift = false, bool alt = false) {
-    return Shortcut{k, ctrl, shift, alt};
-  };
-  const auto always = std::function<bool()>();
-  const auto has_selection = [this] { return !selection_.empty(); };
-  // After a command that selects vertices: the edges or faces among them held, as the mode selects.
-  const auto hold_for_mode = [this] {
-    if (select_mode_ == SelectMode::edge) selection_.hold_edges(document_.mesh());
-    if (select_mode_ == SelectMode::face) selection_.hold_faces(document_.mesh());
-  };
-  CommandTable& t = commands_;
-  const std::pair<SelectMode, int> modes[] = {
-      {SelectMode::vertex, GLFW_KEY_1}, {SelectMode::edge, GLFW_KEY_2}, {SelectMode::face, GLFW_KEY_3}};
-  for (const auto& [mode, digit] : modes) {
-    std::string label = select_mode_name(mode) + " select mode";
-    label[0] = char(std::toupper(static_cast<unsigned char>(label[0])));
-    t.add({"Select",
-           label,
-           {key(digit)},
-           [this, m = mode] { set_select_mode(m); },
-           always,
-           [this, m = mode] { return select_mode_ == m; }});
-  }
-  t.add({"Select",
-         "Select all",
-         {key(GLFW_KEY_A), key(GLFW_KEY_A, true)},
-         [this, hold_for_mode] {
-           selection_.select_all(document_.mesh().n_vertices());
-           hold_for_mode();
-         },
-         always,
-         nullptr,
-         nullptr,
-         true});
-  t.add({"Select", "Select none", {key(GLFW_KEY_A, false, false, true), key(GLFW_KEY_ESCAPE)}, [this] {
-           selection_.clear();
-         }});
-  t.add({"Select", "Invert selection", {key(GLFW_KEY_I, true)}, [this] {
-           if (select_mode_ == SelectMode::edge)
-             selection_.invert_edges(document_.mesh());
-           else if (select_mode_ == SelectMode::face)
-             selection_.invert_faces(document_.mesh());
-           else
-             selection_.invert(document_.mesh().n_vertices());
-         }});
-  t.add(
-      {"Select", "Circle select (C; drag to select, Shift+drag to deselect, wheel: radius)", {key(GLFW_KEY_C)}, [this] {
-         start_tool([this](ToolContext& ctx) {
-           return std::make_unique<CircleSelectTool>(ctx, select_mode_, select_through_);
-         });
-       }});
-  t.add({"Select",
-         "Select similar (Shift+G)",
-         {key(GLFW_KEY_G, false, true)},
-         [this] { popup_request_ = "Similar"; },
-         [this] { return !selection_.empty(); },
-         nullptr,
-         [this] { draw_similar_items(); }});
-  t.add({"Select",
-         "Select sharp edges",
-         {key(GLFW_KEY_E, true, true)},
-         [this] { select_sharp_edges(); },
-         always,
-         nullptr,
-         [this] { draw_sharp_edges_items(); }});
-  t.add({"Select",
-         "Select linked (under the cursor)",
-         {key(GLFW_KEY_L)},
-         [this, hold_for_mode] {
-           const std::vector<int> seeds = vertices_under(input_.cursor);
-           if (!seeds.empty()) selection_.select(linked_vertices(document_.mesh(), seeds), true);
-           hold_for_mode();
-         },
-         always,
-         nullptr,
-         nullptr,
-         true});
-  t.add({"Select",
-         "Select linked (from the selection)",
-         {key(GLFW_KEY_L, true)},
-         [this, hold_for_mode] {
-           selection_.select(linked_vertices(document_.mesh(), selection_.vertices()), true);
-           hold_for_mode();
-         },
-         has_selection});
-  t.add({"Select",
-         "Grow selection",
-         {key(GLFW_KEY_KP_ADD, true)},
-         [this, hold_for_mode] {
-           selection_.select(grow_selection(document_.mesh(), selection_.vertices()), false);
-           hold_for_mode();
-         },
-         has_selection});
-  t.add({"Select",
-         "Shrink selection",
-         {key(GLFW_KEY_KP_SUBTRACT, true)},
-         [this, hold_for_mode] {
-           selection_.select(shrink_selection(document_.mesh(), selection_.vertices()), false);
-           hold_for_mode();
-         },
-         has_selection});
-  t.add({"Select",
-         "Select through (X-ray)",
-         {key(GLFW_KEY_Z, false, false, true)},
-         [this] { select_through_ = !select_through_; },
-         always,
-         [this] { return select_through_; },
-         nullptr,
-         true});
 }
 
 }  // namespace gps
