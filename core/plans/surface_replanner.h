@@ -31,8 +31,8 @@ struct KeptPatches {
 };
 
 /// The last change of a replanner's tables: the tables it went from and to, named by ids unique in the
-/// process (0: none), and the patches whose plans it kept, in runs increasing in both numberings
-/// (empty after a full build).
+/// process (0: none), and the patches whose plans it kept, in runs in the new tables' order (empty
+/// after a full build; where faces were reordered, the old numbering may not increase).
 struct PlanChange {
   long long from = 0, to = 0;
   std::vector<KeptPatches> kept;
