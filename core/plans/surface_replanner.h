@@ -38,6 +38,12 @@ struct PlanChange {
   std::vector<KeptPatches> kept;
 };
 
+/// A replanner's tables with the change that made them, as a renderer takes them.
+struct ReplannedTables {
+  SurfaceTables tables;
+  PlanChange change;
+};
+
 class SurfaceReplanner {
 public:
   /// The faces built together; a change builds again the ranges of the faces it reaches.
@@ -71,6 +77,8 @@ public:
   /// What the last set_sharpness or set_topology kept (after the constructor: from 0, nothing kept).
   /// A renderer evaluates again only the other patches.
   const PlanChange& last_change() const { return change_; }
+  /// The tables and the last change, copied.
+  ReplannedTables replanned() const { return {tables_, change_}; }
 
 private:
   // The plan builders' checks of a topology under `scheme` (valences, depth); throws as they do.

@@ -142,6 +142,32 @@ TEST_F(IncrementalGpuBuffers, AnExtrudePastTheBoundingBoxKeepsTheFrameAndTheOutp
   EXPECT_TRUE(renderer.frame().following(moved.mesh) == NormalisedFrame::of(moved.mesh));
 }
 
+// A crease dragged (SurfaceReplanner::set_sharpness, as the crease tool re-plans) evaluates only the
+// corners of the faces it reached, and matches a renderer set anew; the first crease of a mesh and the
+// removal of its last re-plan, and evaluate, everything.
+TEST_F(IncrementalGpuBuffers, ACreaseChangeEvaluatesOnlyTheFacesItReached) {
+  CovarianceMesh mesh = make_sample("sphere", 1500);
+  const NormalisedFrame frame = NormalisedFrame::of(mesh);
+  mesh.sharpness.set_crease(0, 1, 1.0);
+  SurfaceReplanner replanner(topology_of(mesh.mesh), {}, mesh.sharpness, test::kSmallRanges);
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), {});
+  const int all = renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
+  for (const double sharpness : {2.0, 3.5, kInfiniteSharpness, 0.5}) {
+    mesh.sharpness.set_crease(0, 1, sharpness);
+    replanner.set_sharpness(mesh.sharpness);
+    const ReplannedTables replanned = replanner.replanned();
+    renderer.set_mesh(mesh, replanned.tables, frame, replanned.change, {});
+    EXPECT_LT(renderer.last_corner_slots(), all / 4) << "sharpness " << sharpness;
+    expect_as_set_anew(renderer, mesh, frame, "sharpness " + std::to_string(sharpness));
+  }
+  mesh.sharpness = {};  // the last crease gone: every plan
+  replanner.set_sharpness(mesh.sharpness);
+  renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), {});
+  EXPECT_EQ(renderer.last_corner_slots(), all);
+  expect_as_set_anew(renderer, mesh, frame, "no crease");
+}
+
 // A kept patch whose corner another patch now owns is evaluated again, and its slot there, which it no
 // longer evaluates, holds zero as in a renderer set anew (not the value it kept). The tables are the
 // grid's with the owner of patch 0's corner 2 (a lowest index rule would give patch 0) moved to patch 4.

@@ -71,8 +71,8 @@ struct Editor {
       return true;
     };
     c.show_preview = [this](std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>&,
-                            std::optional<SurfaceTables>) { shown = std::move(mesh); };
-    c.show_document = [this](std::optional<SurfaceTables>) { shown.reset(); };
+                            std::optional<ReplannedTables>) { shown = std::move(mesh); };
+    c.show_document = [this](std::optional<ReplannedTables>) { shown.reset(); };
     c.rebuild = [](const SelectionRecord&) {};
     c.report = c.note = c.show_status = [this](const std::string& message, bool) { said = message; };
     return c;

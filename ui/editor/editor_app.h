@@ -125,8 +125,8 @@ private:
   bool operate(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
                SurfaceReplanner* replanner);
   void show_preview(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
-                    std::optional<SurfaceTables> surface);
-  void show_document(std::optional<SurfaceTables> surface);
+                    std::optional<ReplannedTables> surface);
+  void show_document(std::optional<ReplannedTables> surface);
   const CovarianceMesh& shown_mesh() const { return preview_ ? *preview_ : document_.mesh(); }
   void draw_delete_items();
   void draw_merge_items();
@@ -147,7 +147,7 @@ private:
   // plans that follow the mesh shown before (`shown_plans_`; `origin`: each vertex's index in it, empty
   // where kept). Throws gps::Error as set_mesh does, before the renderer changes.
   void show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans,
-                 std::optional<SurfaceTables> surface = std::nullopt, const std::vector<int>& origin = {});
+                 std::optional<ReplannedTables> surface = std::nullopt, const std::vector<int>& origin = {});
   void show_edit(const std::vector<int>& changed);  // the document's Gaussians `changed`, on both sides
   void set_mirror(const MirrorSettings& settings);  // shown at once and kept for the file
   void remember_mirror();                           // kept for the document's file (the View settings)

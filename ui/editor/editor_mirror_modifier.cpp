@@ -55,7 +55,7 @@ void EditorApp::draw_mirror_items() {
   if (ImGui::MenuItem("Apply", nullptr, false, mirror_.settings.enabled)) apply_mirror();
 }
 
-void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, std::optional<SurfaceTables> surface,
+void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, std::optional<ReplannedTables> surface,
                           const std::vector<int>& origin) {
   MirrorModifier next;
   next.settings = mirror_.settings;
@@ -63,8 +63,8 @@ void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, 
   const CovarianceMesh& shown = next.shown(mesh, refusal);
   if (next.mirroring()) {
     renderer_->set_mesh(shown, plans);
-  } else if (surface) {
-    renderer_->set_mesh(mesh, std::move(*surface), NormalisedFrame::of(mesh));
+  } else if (surface) {  // a sharpness change: the vertices keep their indices
+    renderer_->set_mesh(mesh, std::move(surface->tables), renderer_->frame().following(mesh), surface->change, {});
   } else {  // re-planned where the mesh changed (a wrong origin costs time, never a wrong table)
     const PolygonTopology topology = topology_of(mesh.mesh);
     if (shown_plans_ && shown_plans_->options() == plans)

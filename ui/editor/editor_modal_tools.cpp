@@ -28,10 +28,10 @@ ToolContext EditorApp::tool_context() {
   c.operate = [this](const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
                      SurfaceReplanner* replanner) { return operate(name, run, replanner); };
   c.show_preview = [this](std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
-                          std::optional<SurfaceTables> surface) {
+                          std::optional<ReplannedTables> surface) {
     show_preview(std::move(mesh), selected, std::move(surface));
   };
-  c.show_document = [this](std::optional<SurfaceTables> surface) { show_document(std::move(surface)); };
+  c.show_document = [this](std::optional<ReplannedTables> surface) { show_document(std::move(surface)); };
   c.rebuild = [this](const SelectionRecord& selection) { rebuild_after_undo(selection); };
   c.report = [this](const std::string& message, bool error) { set_status(message, error); };
   c.note = [this](const std::string& message, bool error) { operation_note(message, error); };
@@ -71,7 +71,7 @@ bool EditorApp::modal_event(const InputEvent& e) {
 }
 
 void EditorApp::show_preview(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
-                             std::optional<SurfaceTables> surface) {
+                             std::optional<ReplannedTables> surface) {
   show_mesh(*mesh, view_.plans(), std::move(surface));
   surface_changed();
   check_finite_ = true;
@@ -79,7 +79,7 @@ void EditorApp::show_preview(std::shared_ptr<const CovarianceMesh> mesh, const s
   preview_selection_ = selected;
 }
 
-void EditorApp::show_document(std::optional<SurfaceTables> surface) {
+void EditorApp::show_document(std::optional<ReplannedTables> surface) {
   preview_.reset();
   preview_selection_.clear();
   try {

@@ -316,10 +316,10 @@ bool EditorApp::operate(const std::string& name, const std::function<Modelled(co
 }
 
 void EditorApp::install(const Modelled& result, SurfaceReplanner* replanner) {
-  std::optional<SurfaceTables> surface;
+  std::optional<ReplannedTables> surface;
   if (replanner) {  // first: it throws before anything changes
     replanner->set_sharpness(result.mesh.sharpness);
-    if (!mirror_.settings.enabled) surface = replanner->tables();
+    if (!mirror_.settings.enabled) surface = replanner->replanned();
   }
   show_mesh(result.mesh, view_.plans(), std::move(surface), result.vertex_origin);
   surface_changed();

@@ -14,6 +14,7 @@
 #include "core/mesh/covariance_mesh.h"
 #include "core/modelling/mesh_arrays.h"
 #include "core/plans/planned_surface.h"
+#include "core/plans/surface_replanner.h"
 #include "ui/document/selection_record.h"
 #include "ui/editing/adjustable_operation.h"
 #include "ui/editing/edit_reach.h"
@@ -67,10 +68,10 @@ struct ToolContext {
   /// Shows `mesh` in place of the document's (its surface, cage and creases), `selected` drawn as the
   /// selection; `surface`: its plans (else planned anew). Throws gps::Error where it cannot be planned.
   std::function<void(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
-                     std::optional<SurfaceTables> surface)>
+                     std::optional<ReplannedTables> surface)>
       show_preview;
   /// Shows the document's mesh again (`surface`: its plans, else planned anew); a failure is reported.
-  std::function<void(std::optional<SurfaceTables> surface)> show_document;
+  std::function<void(std::optional<ReplannedTables> surface)> show_document;
   /// The document's mesh was replaced outside install (an undone step): rebuilds for it, with `selection`.
   std::function<void(const SelectionRecord& selection)> rebuild;
   /// A message in the status line, printed (and, with `note`, in the Inspector too); `show_status`

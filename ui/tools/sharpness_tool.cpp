@@ -32,12 +32,12 @@ std::unique_ptr<ModalTool> SharpnessTool::start(ToolContext& ctx, bool corners) 
   return tool;
 }
 
-SurfaceTables SharpnessTool::surface(const CovarianceMesh& mesh, const ToolContext& ctx) {
+ReplannedTables SharpnessTool::surface(const CovarianceMesh& mesh, const ToolContext& ctx) {
   if (replanner_)
     replanner_->set_sharpness(mesh.sharpness);
   else
     replanner_ = std::make_unique<SurfaceReplanner>(topology_of(mesh.mesh), ctx.plans, mesh.sharpness);
-  return replanner_->tables();
+  return replanner_->replanned();
 }
 
 // Re-plans the surface for the sharpness (a change of sharpness changes the plans, as a change of

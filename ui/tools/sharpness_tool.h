@@ -27,7 +27,7 @@ public:
 private:
   SharpnessTool() = default;
   const char* what() const { return corners_ ? "corner" : "crease"; }
-  SurfaceTables surface(const CovarianceMesh& mesh, const ToolContext& ctx);  // its plans
+  ReplannedTables surface(const CovarianceMesh& mesh, const ToolContext& ctx);  // its plans and their change
   void preview(double sharpness, ToolContext& ctx);
   void end(bool keep, ToolContext& ctx);
 
