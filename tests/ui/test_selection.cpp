@@ -268,6 +268,12 @@ TEST(Selection, FaceModeConvertsAndARecordRestoresTheFaces) {
   s.select_all(grid.n_vertices());
   EXPECT_FALSE(s.holds_faces());
   EXPECT_EQ(s.faces(grid).size(), 9u);
+  s.hold_for(SelectMode::face, grid);  // as the face mode holds them
+  EXPECT_TRUE(s.holds_faces());
+  s.select_faces(grid, {4}, false);
+  s.hold_for(SelectMode::vertex, grid);  // back to vertex mode: the corners stay
+  EXPECT_FALSE(s.holds_faces());
+  EXPECT_EQ(s.vertices(), (std::vector<int>{5, 6, 9, 10}));
 }
 
 // Held faces are known by their corners: on another mesh only those that are still its faces count,

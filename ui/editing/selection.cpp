@@ -218,7 +218,6 @@ std::vector<FaceCorners> Selection::corner_sets(const CovarianceMesh& mesh, cons
 
 void Selection::set_faces(std::vector<FaceCorners> faces) {
   release_edges();
-  for (FaceCorners& corners : faces) std::sort(corners.begin(), corners.end());
   std::sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   faces_ = std::move(faces);
@@ -227,6 +226,15 @@ void Selection::set_faces(std::vector<FaceCorners> faces) {
   for (const FaceCorners& corners : faces_) vertices_.insert(vertices_.end(), corners.begin(), corners.end());
   std::sort(vertices_.begin(), vertices_.end());
   vertices_.erase(std::unique(vertices_.begin(), vertices_.end()), vertices_.end());
+}
+
+void Selection::hold_for(SelectMode mode, const CovarianceMesh& mesh) {
+  if (mode == SelectMode::edge)
+    hold_edges(mesh);
+  else if (mode == SelectMode::face)
+    hold_faces(mesh);
+  else
+    release();
 }
 
 void Selection::hold_faces(const CovarianceMesh& mesh) {

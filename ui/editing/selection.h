@@ -106,6 +106,9 @@ public:
   /// Into face mode, as Blender converts: holds the faces whose corners are all selected, and only
   /// their corners. Nothing changes where it holds faces already.
   void hold_faces(const CovarianceMesh& mesh);
+  /// As `mode` selects: the edges (edge mode) or faces (face mode) among the selected vertices held
+  /// where none are held yet (hold_edges, hold_faces); in vertex mode neither held, the vertices kept.
+  void hold_for(SelectMode mode, const CovarianceMesh& mesh);
   /// Out of face mode: the vertices stay (the held faces' corners).
   void release_faces() {
     faces_.clear();
@@ -121,7 +124,7 @@ public:
 
 private:
   void set_edges(std::vector<EdgeEnds> edges);
-  void set_faces(std::vector<FaceCorners> faces);
+  void set_faces(std::vector<FaceCorners> faces);  // each face's corners ascending (corner_sets)
   // The faces' corner sets, ascending.
   static std::vector<FaceCorners> corner_sets(const CovarianceMesh& mesh, const std::vector<int>& faces);
   // Vertices selected as vertices: neither edges nor faces held.

@@ -85,10 +85,7 @@ void EditorApp::build_selection_commands() {
   const auto always = std::function<bool()>();
   const auto has_selection = [this] { return !selection_.empty(); };
   // After a command that selects vertices: the edges or faces among them held, as the mode selects.
-  const auto hold_for_mode = [this] {
-    if (select_mode_ == SelectMode::edge) selection_.hold_edges(document_.mesh());
-    if (select_mode_ == SelectMode::face) selection_.hold_faces(document_.mesh());
-  };
+  const auto hold_for_mode = [this] { selection_.hold_for(select_mode_, document_.mesh()); };
   CommandTable& t = commands_;
   const std::pair<SelectMode, int> modes[] = {
       {SelectMode::vertex, GLFW_KEY_1}, {SelectMode::edge, GLFW_KEY_2}, {SelectMode::face, GLFW_KEY_3}};

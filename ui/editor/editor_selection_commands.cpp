@@ -52,14 +52,7 @@ std::vector<int> face_loop(const CovarianceMesh& mesh, int a, int b) {
 
 void EditorApp::set_select_mode(SelectMode mode) {
   select_mode_ = mode;
-  if (mode == SelectMode::edge) {
-    selection_.hold_edges(document_.mesh());
-  } else if (mode == SelectMode::face) {
-    selection_.hold_faces(document_.mesh());
-  } else {
-    selection_.release_edges();
-    selection_.release_faces();
-  }
+  selection_.hold_for(mode, document_.mesh());
   set_status(select_mode_name(mode) + " select mode", false);
 }
 
