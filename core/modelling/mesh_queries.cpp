@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <queue>
+#include <set>
 #include <string>
 
 #include "core/support/error.h"
@@ -15,6 +16,7 @@ namespace {
 
 using VH = PolyMesh::VertexHandle;
 using HH = PolyMesh::HalfedgeHandle;
+using FH = PolyMesh::FaceHandle;
 
 void check_vertex(const PolyMesh& m, int v) {
   if (v < 0 || v >= int(m.n_vertices()))
@@ -234,6 +236,65 @@ std::vector<int> shortest_path(const CovarianceMesh& mesh, int from, int to) {
   while (path.back() != from) path.push_back(previous[size_t(path.back())]);
   std::reverse(path.begin(), path.end());
   return path;
+}
+
+std::vector<int> shortest_face_path(const CovarianceMesh& mesh, int from, int to, const std::vector<char>* hidden) {
+  const PolyMesh& m = mesh.mesh;
+  const int n = int(m.n_faces());
+  for (const int f : {from, to})
+    if (f < 0 || f >= n) throw Error("face " + std::to_string(f) + " is not in the mesh");
+  auto centre = [&](int f) {
+    Vec3 sum = Vec3::Zero();
+    int corners = 0;
+    for (const VH v : m.fv_range(FH(f))) sum += mesh.mean(size_t(v.idx())), ++corners;
+    return Vec3(sum / double(corners));
+  };
+  std::vector<double> distance(size_t(n), std::numeric_limits<double>::infinity());
+  std::vector<int> previous(size_t(n), -1);
+  using Entry = std::pair<double, int>;  // (distance, face): the smallest first, then the lower face
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  distance[size_t(from)] = 0.0;
+  queue.push({0.0, from});
+  while (!queue.empty()) {
+    const auto [d, f] = queue.top();
+    queue.pop();
+    if (d > distance[size_t(f)]) continue;
+    if (f == to) break;
+    const Vec3 here = centre(f);
+    for (const FH g : m.ff_range(FH(f))) {
+      if (hidden && size_t(g.idx()) < hidden->size() && (*hidden)[size_t(g.idx())]) continue;
+      const double through = d + (centre(g.idx()) - here).norm();
+      if (through < distance[size_t(g.idx())]) {
+        distance[size_t(g.idx())] = through;
+        previous[size_t(g.idx())] = f;
+        queue.push({through, g.idx()});
+      }
+    }
+  }
+  if (from != to && previous[size_t(to)] < 0)
+    throw Error("no edges join face " + std::to_string(from) + " to face " + std::to_string(to));
+  std::vector<int> path{to};
+  while (path.back() != from) path.push_back(previous[size_t(path.back())]);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+std::vector<int> face_loop(const CovarianceMesh& mesh, int a, int b) {
+  const PolyMesh& m = mesh.mesh;
+  check_vertex(m, a);
+  check_vertex(m, b);
+  const HH start = m.find_halfedge(VH(a), VH(b));
+  if (!start.is_valid()) throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
+  std::set<int> faces;
+  for (const HH first : {start, m.opposite_halfedge_handle(start)}) {
+    HH h = first;
+    while (true) {
+      const FH f = m.face_handle(h);
+      if (!f.is_valid() || m.valence(f) != 4 || !faces.insert(f.idx()).second) break;
+      h = m.opposite_halfedge_handle(m.next_halfedge_handle(m.next_halfedge_handle(h)));
+    }
+  }
+  return {faces.begin(), faces.end()};
 }
 
 std::vector<std::vector<int>> boundary_loops(const CovarianceMesh& mesh) {

@@ -42,6 +42,18 @@ std::vector<int> chain_of_edges(const std::vector<std::array<int, 2>>& edges);
 /// edges' lengths summed, Dijkstra's algorithm; of paths equally short, the one through lower-numbered
 /// vertices), as Blender's Select Shortest Path (Ctrl+click). Throws gps::Error where no edges join them.
 std::vector<int> shortest_path(const CovarianceMesh& mesh, int from, int to);
+/// The faces of a shortest path across the mesh's edges from face `from` to face `to` (both included;
+/// the distances between neighbouring faces' centres summed, Dijkstra's algorithm; of paths equally
+/// short, the one through lower-numbered faces), as Blender's Select Shortest Path in face mode. Faces
+/// flagged in `hidden` (one flag per face, where given) are not crossed. Throws gps::Error where no
+/// edges join them.
+std::vector<int> shortest_face_path(const CovarianceMesh& mesh, int from, int to,
+                                    const std::vector<char>* hidden = nullptr);
+
+/// The face loop across the edge {a, b}, as Blender's face loop (Alt+click in face mode): the quads on
+/// either side of it, and on from each through the edge opposite the one it was entered by, until a
+/// face that is not a quad, the boundary or the start again. Returns its faces, ascending.
+std::vector<int> face_loop(const CovarianceMesh& mesh, int a, int b);
 
 /// The mean of the vertices' means (zero for none): where an inset moves towards and a bevel's width
 /// is measured from.

@@ -195,5 +195,48 @@ TEST(MeshQueries, ShortestPathFollowsTheEdges) {
   EXPECT_EQ(test::error_of([&] { shortest_path(cube, 0, 8); }), "vertex 8 is not in the mesh");
 }
 
+// On a 4 × 4 grid of faces (face j·4 + i) from the corner face 0 to the opposite corner face 15: seven
+// faces, each sharing an edge with the next; hidden faces are gone round, or the path refused where
+// they cut the way; on the cube a face to the opposite one crosses one side.
+TEST(MeshQueries, ShortestFacePathCrossesNeighbouringFaces) {
+  const CovarianceMesh grid = test::grid_mesh(4, 4, 0.3, true);
+  const auto shares_an_edge = [&](int f, int g) {  // two quads sharing an edge have two corners alike
+    int alike = 0;
+    for (const auto v : grid.mesh.fv_range(grid.mesh.face_handle(f)))
+      for (const auto w : grid.mesh.fv_range(grid.mesh.face_handle(g))) alike += v == w;
+    return alike == 2;
+  };
+  const V path = shortest_face_path(grid, 0, 15);
+  ASSERT_EQ(path.size(), 7u);
+  EXPECT_EQ(path.front(), 0);
+  EXPECT_EQ(path.back(), 15);
+  for (size_t k = 0; k + 1 < path.size(); ++k) EXPECT_TRUE(shares_an_edge(path[k], path[k + 1])) << k;
+  // A wall of hidden faces along x = 1 but for the top row: the path goes round through face 13.
+  std::vector<char> hidden(16, 0);
+  for (const int f : {1, 5, 9}) hidden[size_t(f)] = 1;
+  const V round = shortest_face_path(grid, 0, 3, &hidden);
+  EXPECT_EQ(round.size(), 10u);
+  EXPECT_NE(std::find(round.begin(), round.end(), 13), round.end());
+  for (const int f : round) EXPECT_FALSE(hidden[size_t(f)]) << f;
+  hidden[13] = 1;
+  EXPECT_EQ(error_of([&] { shortest_face_path(grid, 0, 3, &hidden); }), "no edges join face 0 to face 3");
+  EXPECT_EQ(shortest_face_path(grid, 6, 6), V{6});
+  EXPECT_EQ(error_of([&] { shortest_face_path(grid, 0, 16); }), "face 16 is not in the mesh");
+  const CovarianceMesh cube = test::cube_mesh();
+  EXPECT_EQ(shortest_face_path(cube, 0, 1).size(), 3u);  // bottom to top
+}
+
+// Alt+click in face mode: the row of quads across the clicked edge, both ways, stopping at the
+// boundary; round the cube it closes after four faces; on a cone's side the triangles end it at once.
+TEST(MeshQueries, FaceLoopCrossesTheQuadsBesideTheEdge) {
+  const CovarianceMesh grid = test::grid_mesh(3, 3);
+  EXPECT_EQ(face_loop(grid, 1, 5), (V{0, 1, 2}));  // the edge x = 1 of the first row
+  EXPECT_EQ(face_loop(grid, 4, 5), (V{0, 3, 6}));  // the edge y = 1 of the first column
+  const CovarianceMesh cube = test::cube_mesh();
+  EXPECT_EQ(face_loop(cube, 0, 1), (V{0, 1, 2, 3}));  // the edge along x: round through bottom, −y, top, +y
+  EXPECT_TRUE(face_loop(test::cone_mesh(), 0, 1).empty());
+  EXPECT_EQ(error_of([&] { face_loop(grid, 0, 5); }), "edge 0–5 is not in the mesh");
+}
+
 }  // namespace
 }  // namespace gps

@@ -298,5 +298,28 @@ TEST(Selection, HeldFacesAreFoundByTheirCorners) {
   EXPECT_EQ(s.faces(cube), std::vector<int>{2});
 }
 
+// The active face, where Ctrl+click's path of faces starts: the face last clicked alone, while it is
+// held; a loop of faces or a vertex selection leaves none.
+TEST(Selection, AFaceClickedAloneIsTheActiveFace) {
+  const CovarianceMesh grid = test::grid_mesh(3, 3);
+  Selection s;
+  EXPECT_EQ(s.active_face(grid), -1);
+  s.click_faces(grid, {4}, 5, false);
+  EXPECT_EQ(s.active_face(grid), 4);
+  s.click_faces(grid, {7}, 9, true);
+  EXPECT_EQ(s.active_face(grid), 7);
+  s.click_faces(grid, {0, 1, 2}, 0, true);  // a loop: the active face stays
+  EXPECT_EQ(s.active_face(grid), 7);
+  s.set_active_face(grid, 8);  // not held: nothing changes
+  EXPECT_EQ(s.active_face(grid), 7);
+  s.set_active_face(grid, 1);
+  EXPECT_EQ(s.active_face(grid), 1);
+  s.deselect_faces(grid, {1});
+  EXPECT_EQ(s.active_face(grid), -1);
+  s.click_faces(grid, {4}, 5, false);
+  s.release_faces();
+  EXPECT_EQ(s.active_face(grid), -1);
+}
+
 }  // namespace
 }  // namespace gps

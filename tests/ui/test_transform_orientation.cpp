@@ -37,6 +37,18 @@ TEST(TransformOrientation, FacesAverageTheirNormalsByArea) {
   EXPECT_LT((frame.col(2) - Vec3(1, 0, 1).normalized()).norm(), kTolerance);
 }
 
+// In face mode the held faces give the normal, not every face among their corners: three sides of the
+// cube (+x, +y, −x) hold all eight vertices, whose six faces cancel out, but the three face +y.
+TEST(TransformOrientation, HeldFacesGiveTheNormalNotTheFacesAmongTheirCorners) {
+  const CovarianceMesh cube = test::cube_mesh();
+  const std::vector<int> all{0, 1, 2, 3, 4, 5, 6, 7};
+  EXPECT_EQ(normal_frame(cube, all), Mat3(Mat3::Identity()));
+  const Mat3 frame = normal_frame(cube, all, {3, 4, 5}, {{2, 3}, {6, 7}});
+  expect_rotation(frame);
+  EXPECT_LT((frame.col(2) - Vec3::UnitY()).norm(), kTolerance);
+  EXPECT_LT((frame.col(1).cwiseAbs() - Vec3::UnitX()).norm(), kTolerance);  // along the edges given
+}
+
 TEST(TransformOrientation, OneSphereVertexTakesTheRadialDirection) {
   const CovarianceMesh sphere = add_primitive(CovarianceMesh{}, Primitive::sphere, Vec3::Zero(), 2.0).mesh;
   ASSERT_GT(sphere.n_vertices(), 8u);

@@ -222,6 +222,50 @@ TEST_F(EditorModellingSelection, FaceModeSelectsTheFacesClickedNotTheFaceTheyEnc
   for (const auto v : extruded.mesh.fv_range(centre)) EXPECT_EQ(extruded.mean(size_t(v.idx())).z(), 0.0);
 }
 
+// In face mode Ctrl+click selects the shortest path of faces from the face clicked last, and
+// Ctrl+Alt+click on an edge the loop of faces across it (as Blender's edge ring selects there). E then
+// extrudes exactly the path's 7 faces; Y splits off exactly the cylinder's lower band of 8 quads, not
+// the bottom cap whose corners the band's edges hold all of (16 rim vertices are doubled, not 8).
+TEST_F(EditorModellingSelection, FaceModeCtrlClickSelectsAPathOfFacesAndCtrlAltClickABand) {
+  use_mesh(test::grid_mesh(4, 4, 0.3, true));
+  const auto centre_of = [this](int face) {
+    Vec3 c = Vec3::Zero();
+    int n = 0;
+    for (const auto v : original_.mesh.fv_range(original_.mesh.face_handle(face)))
+      c += original_.mean(size_t(v.idx())), ++n;
+    return pixel_of(view_, c / double(n));
+  };
+  int lifted = 0;  // faces whose corners all rose
+  Events path;
+  path.key("3").click(centre_of(0)).wait().click(centre_of(15), "ctrl").wait();
+  Events path_shot = path;
+  play(path_shot.wait(), "face_mode_path.png");
+  path.key("e").text("0.5").key("enter").wait();
+  const CovarianceMesh extruded = play(path, "face_mode_path_extruded.png");
+  for (const auto f : extruded.mesh.faces()) {
+    bool up = true;
+    for (const auto v : f.vertices()) up = up && extruded.mean(size_t(v.idx())).z() == 0.5;
+    lifted += up;
+  }
+  EXPECT_EQ(lifted, 7);
+
+  use_mesh(make_sample("cylinder"));  // rings of 8 at y = −1, 0, 1 (vertices 0–7, 8–15, 16–23), two octagons
+  int front = 0;  // the lower band's vertical edge nearest the camera
+  for (int v = 1; v < 8; ++v)
+    if ((original_.mean(size_t(v)) - to_vec(view_.camera.eye())).norm() <
+        (original_.mean(size_t(front)) - to_vec(view_.camera.eye())).norm())
+      front = v;
+  Events band;
+  band.key("3").click(pixel_of(view_, 0.5 * (original_.mean(size_t(front)) + original_.mean(size_t(front + 8)))),
+                      "ctrl+alt");
+  Events band_shot = band;
+  play(band_shot.wait(), "face_mode_band.png");
+  band.wait().key("y").wait();
+  const CovarianceMesh split = play(band, "face_mode_band_split.png");
+  EXPECT_EQ(split.n_faces(), original_.n_faces());
+  EXPECT_EQ(split.n_vertices(), original_.n_vertices() + 16);
+}
+
 // Alt+click on an edge of the sphere's front, away from its eight poles, selects the whole edge
 // loop through it (round the back too).
 TEST_F(EditorModellingSelection, AltClickSelectsTheEdgeLoop) {

@@ -182,23 +182,35 @@ void Selection::invert_edges(const CovarianceMesh& mesh) {
 
 std::vector<int> Selection::faces(const CovarianceMesh& mesh) const {
   if (!holds_faces_) return faces_within(mesh, vertices_);
-  const PolyMesh& m = mesh.mesh;
   std::vector<int> out;
-  std::vector<int> corners;
-  for (const FaceCorners& held : faces_) {
-    if (held.empty() || held.back() >= int(m.n_vertices())) continue;
-    for (const auto f : m.vf_range(m.vertex_handle(held.front()))) {  // the faces around its lowest corner
-      corners.clear();
-      for (const auto v : f.vertices()) corners.push_back(v.idx());
-      std::sort(corners.begin(), corners.end());
-      if (corners == held) {
-        out.push_back(f.idx());
-        break;
-      }
-    }
-  }
+  for (const FaceCorners& held : faces_)
+    if (const int f = face_with_corners(mesh, held); f >= 0) out.push_back(f);
   std::sort(out.begin(), out.end());
   return out;
+}
+
+int Selection::face_with_corners(const CovarianceMesh& mesh, const FaceCorners& held) {
+  const PolyMesh& m = mesh.mesh;
+  if (held.empty() || held.front() < 0 || held.back() >= int(m.n_vertices())) return -1;
+  std::vector<int> corners;
+  for (const auto f : m.vf_range(m.vertex_handle(held.front()))) {  // the faces around its lowest corner
+    corners.clear();
+    for (const auto v : f.vertices()) corners.push_back(v.idx());
+    std::sort(corners.begin(), corners.end());
+    if (corners == held) return f.idx();
+  }
+  return -1;
+}
+
+int Selection::active_face(const CovarianceMesh& mesh) const {
+  if (!holds_faces_ || !std::binary_search(faces_.begin(), faces_.end(), active_face_)) return -1;
+  return face_with_corners(mesh, active_face_);
+}
+
+void Selection::set_active_face(const CovarianceMesh& mesh, int face) {
+  const std::vector<FaceCorners> corners = corner_sets(mesh, {face});
+  if (holds_faces_ && !corners.empty() && std::binary_search(faces_.begin(), faces_.end(), corners.front()))
+    active_face_ = corners.front();
 }
 
 std::vector<FaceCorners> Selection::corner_sets(const CovarianceMesh& mesh, const std::vector<int>& faces) {
@@ -253,6 +265,7 @@ void Selection::click_faces(const CovarianceMesh& mesh, const std::vector<int>& 
   else
     select_faces(mesh, faces, toggle);
   last_clicked_ = active;
+  if (faces.size() == 1) set_active_face(mesh, faces.front());
 }
 
 void Selection::select_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, bool additive) {

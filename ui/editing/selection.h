@@ -48,6 +48,11 @@ public:
 
   /// Whether it holds faces of its own (face mode), else its faces are those with all corners selected.
   bool holds_faces() const { return holds_faces_; }
+  /// The face last clicked alone in face mode, where it is still held and a face of `mesh`; else −1.
+  /// Where a shortest path of faces starts (Ctrl+click).
+  int active_face(const CovarianceMesh& mesh) const;
+  /// Makes a held face the active one (nothing where it is not held).
+  void set_active_face(const CovarianceMesh& mesh, int face);
   /// The selected faces, ascending: those held that are still faces of `mesh`, else every face of
   /// `mesh` whose corners are all selected.
   std::vector<int> faces(const CovarianceMesh& mesh) const;
@@ -95,7 +100,8 @@ public:
   // Selecting faces (face mode): the selection holds faces of `mesh`, and the vertices are their corners.
 
   /// A click on a face (`faces` of one) or a face loop, `active` the vertex the inspector shows. Plain:
-  /// select only them (none: clear); toggle: remove them when all are selected, else add them.
+  /// select only them (none: clear); toggle: remove them when all are selected, else add them. A face
+  /// clicked alone becomes the active face.
   void click_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, int active, bool toggle);
   /// Box select in face mode: replace the selection by `faces`, or add them (additive).
   void select_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, bool additive);
@@ -127,6 +133,8 @@ private:
   void set_faces(std::vector<FaceCorners> faces);  // each face's corners ascending (corner_sets)
   // The faces' corner sets, ascending.
   static std::vector<FaceCorners> corner_sets(const CovarianceMesh& mesh, const std::vector<int>& faces);
+  // The face of `mesh` with these corners (ascending), or −1.
+  static int face_with_corners(const CovarianceMesh& mesh, const FaceCorners& corners);
   // Vertices selected as vertices: neither edges nor faces held.
   void release() {
     release_edges();
@@ -138,6 +146,7 @@ private:
   bool holds_edges_ = false;
   std::vector<FaceCorners> faces_;  // ascending, where holds_faces_
   bool holds_faces_ = false;
+  FaceCorners active_face_;  // the corners of the face last clicked alone
   int last_clicked_ = -1;
 };
 

@@ -24,10 +24,14 @@ const char* orientation_name(TransformOrientation orientation) {
 }
 
 Mat3 normal_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  return normal_frame(mesh, vertices, faces_within(mesh, vertices), edges_within(mesh, vertices));
+}
+
+Mat3 normal_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices, const std::vector<int>& faces,
+                  const std::vector<std::array<int, 2>>& selected_edges) {
   if (vertices.empty()) return Mat3::Identity();
   const MeshArrays arrays = arrays_of(mesh);
   Vec3 z = Vec3::Zero();
-  const std::vector<int> faces = faces_within(mesh, vertices);
   for (const int f : faces) z += newell_normal(arrays, f);
   if (faces.empty())
     for (const int v : vertices)
@@ -36,7 +40,7 @@ Mat3 normal_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices) 
   z.normalize();
 
   // The tangent: the longest selected edge (for one vertex, its longest edge) across the normal.
-  std::vector<std::array<int, 2>> edges = edges_within(mesh, vertices);
+  std::vector<std::array<int, 2>> edges = selected_edges;
   if (vertices.size() == 1)
     for (const auto w : mesh.mesh.vv_range(mesh.mesh.vertex_handle(unsigned(vertices[0]))))
       edges.push_back({vertices[0], w.idx()});

@@ -87,6 +87,7 @@ private:
   void loop_select(glm::vec2 pixel, bool toggle);
   void ring_select(glm::vec2 pixel, bool toggle);  // Ctrl+Alt+click: the edge ring across the quads
   void path_select(glm::vec2 pixel);               // Ctrl+click: the shortest path from the active vertex
+  void face_path_select(glm::vec2 pixel);          // the same in face mode: from the active face
   void draw_similar_items();                       // Shift+G: select similar
   void box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract);
   void select_sharp_edges();      // adds the edges folded by more than sharp_edge_angle_, in edge mode

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <set>
 
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/mesh_queries.h"
@@ -26,26 +25,6 @@ std::vector<int> corners(const CovarianceMesh& mesh, int face) {
   std::vector<int> out;
   for (const auto v : mesh.mesh.fv_range(mesh.mesh.face_handle(face))) out.push_back(v.idx());
   return out;
-}
-
-// The face loop across the edge {a, b}: the quads on either side of it, and on from each through
-// the edge opposite the one it was entered by, until a face that is not a quad, the boundary or the
-// start again. Returns its faces, ascending.
-std::vector<int> face_loop(const CovarianceMesh& mesh, int a, int b) {
-  const PolyMesh& m = mesh.mesh;
-  const auto start = m.find_halfedge(m.vertex_handle(a), m.vertex_handle(b));
-  if (!start.is_valid()) throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
-  std::set<int> faces;
-  const std::array<OpenMesh::HalfedgeHandle, 2> sides{start, m.opposite_halfedge_handle(start)};
-  for (const OpenMesh::HalfedgeHandle first : sides) {
-    OpenMesh::HalfedgeHandle h = first;
-    while (true) {
-      const auto f = m.face_handle(h);
-      if (!f.is_valid() || m.valence(f) != 4 || !faces.insert(f.idx()).second) break;
-      h = m.opposite_halfedge_handle(m.next_halfedge_handle(m.next_halfedge_handle(h)));
-    }
-  }
-  return {faces.begin(), faces.end()};
 }
 
 }  // namespace
@@ -125,13 +104,20 @@ void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
 }
 
 // The ring a loop cut through the edge under the pointer would cross (core's edge_ring): its edges in
-// edge mode, else their ends.
+// edge mode, their ends in vertex mode; in face mode the faces between them, as Blender's ring of
+// edges selects a loop of faces there.
 void EditorApp::ring_select(glm::vec2 pixel, bool toggle) {
   const CovarianceMesh& mesh = document_.mesh();
   const auto edge = pick_edge(viewport(), pixel, mesh, kLoopRadius, &hidden_edge_mask_);
   if (!edge) return;
   const auto [a, b] = *edge;
   try {
+    if (select_mode_ == SelectMode::face) {
+      const std::vector<int> loop = face_loop(mesh, a, b);
+      selection_.click_faces(mesh, loop, a, toggle);
+      set_status("face loop: " + count_of(loop.size(), "face", "faces"), false);
+      return;
+    }
     std::vector<EdgeEnds> ring;
     for (const auto& [x, y] : edge_ring(mesh, a, b).edges) ring.push_back({std::min(x, y), std::max(x, y)});
     if (select_mode_ == SelectMode::edge) {
@@ -150,9 +136,10 @@ void EditorApp::ring_select(glm::vec2 pixel, bool toggle) {
 }
 
 // Adds the shortest path along the edges (core's shortest_path) from the active vertex to the vertex
-// under the pointer, which becomes the active one; in edge mode the path's edges. With nothing
-// selected it is a plain click.
+// under the pointer, which becomes the active one; in edge mode the path's edges; in face mode the
+// faces from the active face to the face under the pointer. With nothing to start from it is a plain click.
 void EditorApp::path_select(glm::vec2 pixel) {
+  if (select_mode_ == SelectMode::face) return face_path_select(pixel);
   const int from = selection_.active(), to = pick(pixel);
   if (from < 0 || to < 0) return click_select(pixel, false);
   const CovarianceMesh& mesh = document_.mesh();
@@ -169,6 +156,20 @@ void EditorApp::path_select(glm::vec2 pixel) {
     }
     selection_.set_active(to);
     set_status("shortest path: " + count_of(path.size() - 1, "edge", "edges"), false);
+  } catch (const Error& e) {
+    set_status(std::string("shortest path: ") + e.what(), true);
+  }
+}
+
+void EditorApp::face_path_select(glm::vec2 pixel) {
+  const CovarianceMesh& mesh = document_.mesh();
+  const int from = selection_.active_face(mesh), to = pick_face(viewport(), pixel, mesh, &hidden_face_mask_);
+  if (from < 0 || to < 0) return click_select(pixel, false);
+  try {
+    const std::vector<int> path = shortest_face_path(mesh, from, to, &hidden_face_mask_);
+    selection_.select_faces(mesh, path, true);
+    selection_.set_active_face(mesh, to);
+    set_status("shortest path: " + count_of(path.size(), "face", "faces"), false);
   } catch (const Error& e) {
     set_status(std::string("shortest path: ") + e.what(), true);
   }

@@ -27,13 +27,19 @@ std::vector<Vec3> start_means(const EditorDocument& document) {
   return means;
 }
 
+// The Normal orientation of what is selected: in face mode the faces held, in edge mode the edges.
+Mat3 selection_normal_frame(const ToolContext& ctx) {
+  const CovarianceMesh& mesh = ctx.document.mesh();
+  return normal_frame(mesh, ctx.selection.vertices(), ctx.selection.faces(mesh), ctx.selection.edges(mesh));
+}
+
 }  // namespace
 
 TransformTool::TransformTool(TransformKind kind, TransformPivot pivot, ToolContext& ctx) {
   ctx.document.begin_edit();
   transform_.emplace(kind, ctx.document.mesh(), ctx.selection.vertices(), ctx.selection.active(), pivot, ctx.viewport,
                      ctx.cursor, ctx.cursor_point);
-  transform_->set_orientations(ctx.orientation, normal_frame(ctx.document.mesh(), ctx.selection.vertices()));
+  transform_->set_orientations(ctx.orientation, selection_normal_frame(ctx));
   reach_ = edit_reach(start_means(ctx.document), transform_->vertices(), ctx.reach, ctx.hidden_vertices);
   update(ctx);
 }
@@ -43,7 +49,7 @@ TransformTool::TransformTool(ToolContext& ctx, const Vec3& normal, std::string o
   ctx.document.begin_edit();
   transform_.emplace(TransformKind::grab, ctx.document.mesh(), ctx.selection.vertices(), ctx.selection.active(),
                      TransformPivot::median, ctx.viewport, ctx.cursor);
-  transform_->set_orientations(ctx.orientation, normal_frame(ctx.document.mesh(), ctx.selection.vertices()));
+  transform_->set_orientations(ctx.orientation, selection_normal_frame(ctx));
   if (normal != Vec3::Zero()) transform_->constrain_direction(normal, "the normal");
   // The move is of the new vertices only (their copies lie under them).
   for (size_t i = 0; i < transform_->vertices().size(); ++i)
