@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <cmath>
 #include <limits>
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -30,22 +31,13 @@ bool is_spd(const Mat3& c) {
   return llt.info() == Eigen::Success;
 }
 
-CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::vector<Mat3>& covariances,
-                                    const std::vector<std::vector<int>>& faces, const std::string& source) {
-  PolygonTopology t;
-  size_t n_corners = 0;
-  for (const auto& face : faces) n_corners += face.size();
-  t.offsets.reserve(faces.size() + 1);
-  t.verts.reserve(n_corners);
-  for (const auto& face : faces) {
-    t.verts.insert(t.verts.end(), face.begin(), face.end());
-    t.offsets.push_back(int(t.verts.size()));
-  }
-  return make_covariance_mesh(std::vector<Vec3>(means), std::vector<Mat3>(covariances), std::move(t), source);
-}
+namespace {
 
-CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
-                                    const std::string& source, const ElementNames& names) {
+// make_covariance_mesh's work. `return_pages`: hand the faces' temporary arrays back to the system
+// before the covariances are made, as a reader wants (its memory is that of the mesh it read); a
+// modelling operation's result, whose covariances are given, skips it and reuses the pages.
+CovarianceMesh assemble(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
+                        const std::string& source, const ElementNames& names, bool return_pages) {
   if (means.size() != covariances.size() && !covariances.empty())
     throw Error(source + ": " + std::to_string(means.size()) + " vertices but " + std::to_string(covariances.size()) +
                 " covariances");
@@ -79,11 +71,33 @@ CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>
 #ifdef __GLIBC__
   // The temporaries above may lie below the top of the heap, which free() does not hand back:
   // their pages are returned before the covariances are made.
-  malloc_trim(0);
+  if (return_pages) malloc_trim(0);
 #endif
   // Identity covariances are made once the faces' temporary arrays are gone.
   if (m.covariances.empty()) m.covariances.assign(n_vertices, Mat3::Identity());
   return m;
+}
+
+}  // namespace
+
+CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::vector<Mat3>& covariances,
+                                    const std::vector<std::vector<int>>& faces, const std::string& source) {
+  PolygonTopology t;
+  size_t n_corners = 0;
+  for (const auto& face : faces) n_corners += face.size();
+  t.offsets.reserve(faces.size() + 1);
+  t.verts.reserve(n_corners);
+  for (const auto& face : faces) {
+    t.verts.insert(t.verts.end(), face.begin(), face.end());
+    t.offsets.push_back(int(t.verts.size()));
+  }
+  return assemble(std::vector<Vec3>(means), std::vector<Mat3>(covariances), std::move(t), source, {},
+                  covariances.empty());
+}
+
+CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
+                                    const std::string& source, const ElementNames& names) {
+  return assemble(std::move(means), std::move(covariances), std::move(t), source, names, true);
 }
 
 namespace {
@@ -102,11 +116,31 @@ std::string position_problem(const Vec3& mean) {
   return "";
 }
 
+namespace {
+
+// A sufficient test that spares the eigen-solve: Gershgorin's discs of the lower triangle (what the
+// solver reads) lie inside the accepted range with a margin far above its rounding, so the
+// Cholesky factorisation and the eigenvalues below would accept the matrix too.
+bool clearly_acceptable(const Mat3& c, double scale) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    double radius = 0.0;
+    for (int j = 0; j < 3; ++j)
+      if (j != i) radius += std::abs(c(std::max(i, j), std::min(i, j)));
+    lo = std::min(lo, c(i, i) - radius);
+    hi = std::max(hi, c(i, i) + radius);
+  }
+  return lo >= 1e-6 * scale && lo >= 2.0 * kMinCovarianceEigenvalue && hi <= 0.5 * kMaxCovarianceEigenvalue;
+}
+
+}  // namespace
+
 std::string covariance_problem(const Mat3& c) {
   if (!c.allFinite()) return "has a covariance that is not finite";
   const double scale = c.cwiseAbs().maxCoeff();
   if (!(scale > 0)) return "has a covariance that is zero";
   if ((c - c.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) return "has a covariance that is not symmetric";
+  if (clearly_acceptable(c, scale)) return "";
   const Vec3 eigenvalues = Eigen::SelfAdjointEigenSolver<Mat3>(c, Eigen::EigenvaluesOnly).eigenvalues();
   // Named by its smallest eigenvalue: also where a Cholesky factorisation succeeds but rounding leaves
   // that eigenvalue at or below zero.

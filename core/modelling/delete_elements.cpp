@@ -42,7 +42,14 @@ Modelled without_faces(MeshArrays a, const std::vector<char>& removed, const std
 
   // Around a vertex that lost a face the remaining faces form open fans: one per corner there that
   // has no face across its outgoing edge. More than one fan makes the vertex non-manifold.
-  const DirectedEdges edges = directed_edges(a);
+  // Only the faces at such a vertex are looked up: the face across an edge out of it has it too.
+  DirectedEdges edges;
+  for (int f = 0; f < a.n_faces(); ++f) {
+    const auto& face = a.faces[size_t(f)];
+    if (std::none_of(face.begin(), face.end(), [&](int v) { return touched[size_t(v)] != 0; })) continue;
+    for (size_t k = 0; k < face.size(); ++k)
+      edges.emplace(directed_key(face[k], face[(k + 1) % face.size()]), std::pair<int, int>(f, int(k)));
+  }
   std::vector<int> fans(size_t(a.n_vertices()), 0);
   for (const auto& face : a.faces)
     for (size_t k = 0; k < face.size(); ++k) {

@@ -91,7 +91,14 @@ FaceRegion face_region(const MeshArrays& a, const std::vector<int>& faces) {
   r.faces = sorted_faces(a, faces);
   r.in_region.assign(size_t(a.n_faces()), 0);
   for (int f : r.faces) r.in_region[size_t(f)] = 1;
-  const DirectedEdges edges = directed_edges(a);
+  // The region's own directed edges: a twin outside the region counts as none (a boundary of the
+  // region), so the rest of the mesh is never looked at.
+  DirectedEdges edges;
+  for (int f : r.faces) {
+    const auto& face = a.faces[size_t(f)];
+    for (size_t k = 0; k < face.size(); ++k)
+      edges.emplace(directed_key(face[k], face[(k + 1) % face.size()]), std::pair<int, int>(f, int(k)));
+  }
 
   // Corners of region faces, numbered face by face; corners at a vertex joined across interior
   // region edges form its sectors, and faces joined across them form the region's pieces.
@@ -112,7 +119,7 @@ FaceRegion face_region(const MeshArrays& a, const std::vector<int>& faces) {
     for (int k = 0; k < int(face.size()); ++k) {
       const int v = face[size_t(k)], w = face[(size_t(k) + 1) % face.size()];
       const auto twin = edges.find(directed_key(w, v));
-      if (twin == edges.end() || !r.in_region[size_t(twin->second.first)]) {
+      if (twin == edges.end()) {
         on_boundary[size_t(corner_id(f, k))] = 1;
         boundary_vertex[size_t(v)] = boundary_vertex[size_t(w)] = 1;
         r.boundary.emplace_back(f, k);

@@ -68,21 +68,25 @@ Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, 
   for (const auto& s : r.sectors) copies.push_back(inner_copy(a, s, thickness));
 
   // Every region face must keep its orientation and the direction of each of its edges.
+  // (Detaching only adds vertices: the old corners' means stay where they are.)
   std::vector<Vec3> old_normals;
-  for (int f : r.faces) old_normals.push_back(newell_normal(a, f));
-  const MeshArrays before = a;
+  std::vector<std::vector<int>> old_faces;
+  for (int f : r.faces) {
+    old_normals.push_back(newell_normal(a, f));
+    old_faces.push_back(a.faces[size_t(f)]);
+  }
   const int n_faces = a.n_faces();
   Modelled out;
   out.selection = detach_region(a, r, copies);
   for (size_t i = 0; i < r.faces.size(); ++i) {
     const int f = r.faces[i];
-    const auto& old_face = before.faces[size_t(f)];
+    const auto& old_face = old_faces[i];
     const auto& face = a.faces[size_t(f)];
     bool kept = newell_normal(a, f).dot(old_normals[i]) > 0;
     for (size_t k = 0; k < face.size() && kept; ++k) {
       const size_t l = (k + 1) % face.size();
       const Vec3 now = a.means[size_t(face[l])] - a.means[size_t(face[k])];
-      const Vec3 was = before.means[size_t(old_face[l])] - before.means[size_t(old_face[k])];
+      const Vec3 was = a.means[size_t(old_face[l])] - a.means[size_t(old_face[k])];
       kept = now.dot(was) > 0;
     }
     if (!kept)
