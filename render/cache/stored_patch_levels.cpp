@@ -38,6 +38,17 @@ void StoredPatchLevels::reserve(int n_patches) {
   glNamedBufferData(levels_, GLsizeiptr(capacity_) * kBytesPerPatch, nullptr, GL_DYNAMIC_COPY);
 }
 
+void StoredPatchLevels::resize(int n_patches) {
+  if (n_patches <= capacity_) return;
+  const int kept = capacity_;
+  const int capacity = std::max(n_patches, capacity_ + capacity_ / 2);  // room to grow a little per change
+  glNamedBufferData(spare_, GLsizeiptr(capacity) * kBytesPerPatch, nullptr, GL_DYNAMIC_COPY);
+  if (kept > 0) glCopyNamedBufferSubData(levels_, spare_, 0, 0, GLsizeiptr(kept) * kBytesPerPatch);
+  std::swap(levels_, spare_);
+  glNamedBufferData(spare_, 0, nullptr, GL_DYNAMIC_COPY);
+  capacity_ = capacity;
+}
+
 void StoredPatchLevels::record(PatchShape shape, int n_patches, int group_limit) {
   reserve(n_patches);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingPatchLevels, levels_);

@@ -36,6 +36,9 @@ public:
   }
   /// Keeps the levels of all `n_patches` (after a capture).
   void record(PatchShape shape, int n_patches, int group_limit);
+  /// Room for `n_patches`, the levels kept of those below the old count (a change of topology that
+  /// kept the patches' numbers; the others are checked and kept again when their blocks are captured).
+  void resize(int n_patches);
   /// Per block of `blocks`: whether any of its patches' levels differ from those kept; then keeps
   /// the new ones (the blocks are brought to them: evaluated again where unchanged, else captured).
   std::vector<char> changed(PatchShape shape, const std::vector<Block>& blocks, int group_limit);
@@ -48,7 +51,7 @@ private:
 
   ShaderProgram quads_[2], triangles_[2];  // by PointPrecision
   PointPrecision precision_ = PointPrecision::single_float;
-  GlBuffer levels_, patches_, changes_;
+  GlBuffer levels_, patches_, changes_, spare_;
   int capacity_ = 0;  // patches the levels buffer holds
 };
 

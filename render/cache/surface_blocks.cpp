@@ -14,6 +14,26 @@ void SurfaceBlocks::reset(int n_patches, int per_block) {
   stale_patches_ = 0;
 }
 
+void SurfaceBlocks::resize(int n_patches) {
+  n_patches = std::max(n_patches, 0);
+  const int first_changed = std::min(n_patches_, n_patches) / per_block_;
+  std::vector<long long> counts(size_t((n_patches + per_block_ - 1) / per_block_), 0);
+  std::vector<char> stale(counts.size(), 0);
+  for (int b = 0; b < std::min(size(), int(counts.size())); ++b) {
+    counts[size_t(b)] = b < first_changed ? triangles(b) : 0;
+    stale[size_t(b)] = stale_[size_t(b)];
+  }
+  n_patches_ = n_patches;
+  first_triangle_.assign(counts.size() + 1, 0);
+  set_counts(counts);
+  stale_ = std::move(stale);
+  stale_patches_ = 0;
+  for (int b = 0; b < size(); ++b) {
+    if (b >= first_changed) stale_[size_t(b)] = 1;
+    if (stale_[size_t(b)]) stale_patches_ += patches_in(b);
+  }
+}
+
 int SurfaceBlocks::patches_in(int b) const { return std::min(per_block_, n_patches_ - first_patch(b)); }
 
 void SurfaceBlocks::set_counts(const std::vector<long long>& counts) {

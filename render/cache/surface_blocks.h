@@ -15,6 +15,10 @@ class SurfaceBlocks {
 public:
   /// `n_patches` in blocks of `per_block` (the last may be shorter): no triangles, nothing stale.
   void reset(int n_patches, int per_block);
+  /// `n_patches` in blocks of the same size, where patches were added or removed at the end: the
+  /// blocks whose patches stay keep their counts; those whose patches changed, from the first the
+  /// end reached, are stale, the new ones with no triangles yet.
+  void resize(int n_patches);
 
   int size() const { return int(first_triangle_.size()) - 1; }
   int n_patches() const { return n_patches_; }

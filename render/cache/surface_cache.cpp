@@ -26,7 +26,7 @@ SurfaceCache::SurfaceCache()
   check_gl_errors("creating the surface cache");
 }
 
-void SurfaceCache::set_cage(const CovarianceMesh& mesh, const FramedGaussians& gaussians) {
+void SurfaceCache::set_cage(const CovarianceMesh& mesh, const FramedGaussians& gaussians, bool follow) {
   cage_positions_.resize(gaussians.n_vertices());
   for (size_t i = 0; i < gaussians.n_vertices(); ++i) {
     const Vec3& m = gaussians.mean(i);
@@ -36,6 +36,7 @@ void SurfaceCache::set_cage(const CovarianceMesh& mesh, const FramedGaussians& g
   cage_edges_.reserve(2 * mesh.mesh.n_edges());
   for (const auto e : mesh.mesh.edges())
     cage_edges_.insert(cage_edges_.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
+  if (follow) return;
   stored_ = false;
   tracked_points_ = -1;
 }
@@ -63,6 +64,16 @@ void SurfaceCache::points_changed(long long points, const std::vector<int>* patc
 
 void SurfaceCache::all_points_changed(long long points) {
   if (follow_edit(points)) blocks_.mark_all_stale();
+}
+
+void SurfaceCache::topology_changed(long long points, int n_patches, const std::vector<int>& patches) {
+  if (!follow_edit(points)) return;
+  copy_back_evaluated();  // by the blocks as they were
+  blocks_.resize(n_patches);
+  blocks_.mark_stale(patches);
+  weld_all_pending_ = true;  // welded anew by the refresh
+  weld_pending_.clear();
+  topology_pending_ = true;
 }
 
 bool SurfaceCache::matches(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
@@ -182,6 +193,7 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
   stored_ = true;
   refused_ = false;
   tracked_points_ = key.points;
+  topology_pending_ = false;
   blocks_.reset(n_patches, patches_per_block(n_patches));
   copy_pending_.clear();      // all captured anew
   if (spare_capacity_ > 0) {  // edits start over from here

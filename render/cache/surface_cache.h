@@ -81,8 +81,9 @@ public:
 
   // What changed.
 
-  /// The base mesh (vertex positions and edges) the adaptive hysteresis measures; drops the capture.
-  void set_cage(const CovarianceMesh& mesh, const FramedGaussians& gaussians);
+  /// The base mesh (vertex positions and edges) the adaptive hysteresis measures; drops the capture,
+  /// unless `follow` (a change of topology that topology_changed() reports next).
+  void set_cage(const CovarianceMesh& mesh, const FramedGaussians& gaussians, bool follow = false);
   /// Moved base vertices (for the hysteresis; points_changed says what the edit changed).
   void update_cage(const FramedGaussians& gaussians, const std::vector<int>& changed);
   /// A compute pass made plan points of generation `points`, changing the triangles of `patches`
@@ -92,6 +93,12 @@ public:
   /// An edit's compute pass over everything (most of the mesh moved) made plan points of
   /// generation `points`: every block is stale, followed as an edit's.
   void all_points_changed(long long points);
+  /// A change of topology made plan points of generation `points` for `n_patches` patches, where every
+  /// patch but `patches` (sorted; new numbering) keeps its number and generates the triangles it did,
+  /// and patches were added or removed only past those: followed as an edit, the blocks of `patches`
+  /// and of the patches past the old end stale. The next refresh captures them again, whatever
+  /// their levels, and welds everything anew.
+  void topology_changed(long long points, int n_patches, const std::vector<int>& patches);
 
   // What a frame asks.
 
@@ -261,6 +268,7 @@ private:
   SurfaceBlocks blocks_;
   long long tracked_points_ = -1;  // the points the stale blocks lead to (−1: untracked)
   bool stored_ = false, refused_ = false;
+  bool topology_pending_ = false;  // the stale blocks follow a change of topology: captured again
   Key key_;
   glm::mat4 view_projection_{1.0f};
   glm::vec2 viewport_{0.0f};

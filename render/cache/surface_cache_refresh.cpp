@@ -20,12 +20,13 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   glGetIntegerv(GL_CURRENT_PROGRAM, &capture_program);
   // The stale blocks whose tessellation stays: all at uniform levels; at adaptive ones, those whose
   // patches keep their levels (the check also keeps the new levels of the others).
-  std::vector<char> kept(stale.size(), uniform ? 1 : 0);
+  // After a change of topology none do: their patches may be others (the check still keeps the levels).
+  std::vector<char> kept(stale.size(), uniform && !topology_pending_ ? 1 : 0);
   if (!uniform && levels_changed) {
     std::vector<StoredPatchLevels::Block> patches;
     for (const int b : stale) patches.push_back({blocks_.first_patch(b), blocks_.patches_in(b)});
     const std::vector<char> changed = levels_changed(patches);
-    for (size_t i = 0; i < stale.size(); ++i) kept[i] = !changed[i];
+    for (size_t i = 0; i < stale.size(); ++i) kept[i] = !changed[i] && !topology_pending_;
   }
   // Kept blocks with welded vertices are evaluated again where they are (render/cache/stored_vertex_evaluation.h)
   // from uniform level evaluated_from_level() on, and at adaptive levels; the others captured again.
@@ -115,6 +116,7 @@ bool SurfaceCache::capture_again(const std::vector<int>& blocks, const DrawPatch
 
 bool SurfaceCache::refreshed(const Key& key) {
   ++refreshes_;
+  topology_pending_ = false;
   refreshed_patches_ = blocks_.stale_patches();
   blocks_.clear_stale();
   key_ = key;

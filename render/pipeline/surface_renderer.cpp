@@ -9,6 +9,7 @@
 #include "core/plans/patch_adjacency.h"
 #include "core/plans/stencil_table.h"
 #include "render/pipeline/kept_corner_output.h"
+#include "render/pipeline/kept_surface_triangles.h"
 #include "render/gl/gl_context.h"
 #include "render/image/matcap.h"
 #include "shaders/embedded_shaders.h"
@@ -62,7 +63,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   buffers_.upload_gaussians(framed_);
   ellipsoids_current_ = false;     // uploaded when first drawn: most frames draw none
   cage_.set_mesh(mesh, framed_);   // the overlays too are drawn in the frame
-  cache_.set_cage(mesh, framed_);  // projected with the frame's view-projection
+  cache_.set_cage(mesh, framed_, keep);  // projected with the frame's view-projection
   if (keep)
     run_compute_kept(before, before_framed, kept, origin);
   else
@@ -158,7 +159,9 @@ void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const Framed
   compute_.run_all(n_base_, tables().stencils.n_rows(), group_limit_);
   corners_.run_listed(plans, int(corners.size()), group_limit_);
   last_corner_slots_ = int(corners.size());
-  cache_.points_changed(points_generation_, nullptr);
+  // The cache keeps the triangles of the patches that keep their number and all they read.
+  stored_levels_.resize(n_patches());
+  cache_.topology_changed(points_generation_, n_patches(), patches_whose_triangles_change(plans, kept, patches));
 }
 
 std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {

@@ -1,0 +1,144 @@
+// The surface cache following a change of topology (SurfaceCache::topology_changed): after random
+// operations of every kind, their undo and their redo, the stored triangles equal those of a renderer
+// set up anew and captured under the same camera, bit for bit; an operation that keeps the patches'
+// numbers (an extrude, an inset) captures only the blocks it reached, not the whole surface.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "core/modelling/extrude.h"
+#include "core/modelling/samples.h"
+#include "core/plans/surface_replanner.h"
+#include "core/support/error.h"
+#include "render/gl/render_target.h"
+#include "render/pipeline/surface_renderer.h"
+#include "tests/support/gl_fixture.h"
+#include "tests/support/plan_tables.h"
+#include "tests/support/random_operations.h"
+#include "view/camera.h"
+
+namespace gps {
+namespace {
+
+class IncrementalSurfaceCache : public test::GlTest, public ::testing::WithParamInterface<SurfaceCache::Weld> {};
+using IncrementalSurfaceCacheRandom = test::GlTest;
+
+constexpr int kSize = 128;
+
+DrawOptions cached(float pixels, float level) {
+  DrawOptions o;
+  o.surface_cache = true;
+  o.pixels = pixels;
+  o.level = level;
+  return o;
+}
+
+// `renderer`'s stored triangles after a frame against those of a renderer given the same tables anew
+// and drawn once with the same camera and options.
+void expect_as_captured_anew(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const NormalisedFrame& frame,
+                             const RenderTarget& target, const Camera& camera, const DrawOptions& o,
+                             const std::string& where) {
+  renderer.draw(target, camera, o);
+  SurfaceRenderer fresh;
+  fresh.surface_cache().set_weld(renderer.surface_cache().weld_mode());
+  fresh.set_mesh(mesh, renderer.tables(), frame);
+  fresh.draw(target, camera, o);
+  const TriangleMesh followed = renderer.surface_cache().stored_triangles(), anew = fresh.surface_cache().stored_triangles();
+  EXPECT_GT(anew.triangles.size(), 0u) << where;
+  EXPECT_TRUE(followed.positions == anew.positions && followed.normals == anew.normals &&
+              followed.triangles == anew.triangles)
+      << where << ": " << followed.triangles.size() << " triangles followed, " << anew.triangles.size() << " anew";
+}
+
+// Each mesh with another way of welding (at capture, when settled, never), in turn.
+TEST_F(IncrementalSurfaceCacheRandom, RandomOperationsMatchAFreshCapture) {
+  RenderTarget target(kSize, kSize);
+  const SurfaceCache::Weld welds[] = {SurfaceCache::Weld::at_capture, SurfaceCache::Weld::when_settled,
+                                      SurfaceCache::Weld::off};
+  int weld = 0, refreshes = 0;
+  for (const test::RandomOperationCase& c : test::random_operation_cases()) {
+    PlanOptions options;
+    options.scheme = c.scheme;
+    CovarianceMesh mesh = c.mesh;
+    const NormalisedFrame frame = NormalisedFrame::of(mesh);
+    const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
+    SurfaceReplanner replanner(topology_of(mesh.mesh), options, mesh.sharpness, test::kSmallRanges);
+    SurfaceRenderer renderer;
+    renderer.surface_cache().set_weld(welds[weld++ % 3]);
+    renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), {});
+    std::mt19937 random(11);
+    int applied = 0;
+    for (int step = 0; step < 30 && applied < c.operations / 3; ++step) {
+      // Adaptive levels, and a uniform level the welded vertices are evaluated at.
+      const DrawOptions o = step % 2 == 0 ? cached(6.0f, 0.0f) : cached(0.0f, 8.0f);
+      renderer.draw(target, camera, o);  // a capture (or a refresh) to follow from
+      Modelled result;
+      try {
+        result = test::random_operation(mesh, random);
+        replanner.set_topology(topology_of(result.mesh.mesh), result.mesh.sharpness, result.vertex_origin);
+      } catch (const Error&) {
+        continue;
+      }
+      ++applied;
+      const std::string where = c.name + ", step " + std::to_string(step) + " (" + result.summary + ")";
+      renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+      expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, where);
+      const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
+      replanner.set_topology(topology_of(mesh.mesh), mesh.sharpness, back);
+      renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), back);
+      expect_as_captured_anew(renderer, mesh, frame, target, camera, o, where + ", undone");
+      replanner.set_topology(topology_of(result.mesh.mesh), result.mesh.sharpness, result.vertex_origin);
+      renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+      expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, where + ", redone");
+      mesh = std::move(result.mesh);
+    }
+    EXPECT_GE(applied, c.operations / 3 - 1) << c.name;
+    refreshes += renderer.surface_cache().refreshes();
+  }
+  // The small meshes' changes reach over half their patches, which are captured again whole.
+  EXPECT_GE(refreshes, 6) << "changes followed, not only captured again";
+}
+
+// An extrude of one face of a sphere keeps every other patch's number: the frame after it refreshes
+// the blocks it reached instead of capturing the surface again, and its undo does the same. (Reached:
+// the patches of the faces the replanner planned again, here in small ranges, and their neighbours.)
+TEST_P(IncrementalSurfaceCache, AnExtrudeCapturesOnlyTheBlocksItReached) {
+  RenderTarget target(kSize, kSize);
+  const CovarianceMesh sphere = make_sample("sphere", 6000);
+  const NormalisedFrame frame = NormalisedFrame::of(sphere);
+  const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
+  SurfaceReplanner replanner(topology_of(sphere.mesh), {}, {}, test::kSmallRanges);
+  SurfaceRenderer renderer;
+  renderer.surface_cache().set_weld(GetParam());
+  renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
+  for (const DrawOptions& o : {cached(6.0f, 0.0f), cached(0.0f, 4.0f)}) {
+    renderer.draw(target, camera, o);
+    const SurfaceCache& cache = renderer.surface_cache();
+    const int captures = cache.captures(), refreshes = cache.refreshes();
+    const Modelled extruded = extrude_faces(sphere, {int(sphere.n_faces() / 3)}, 0.05);
+    replanner.set_topology(topology_of(extruded.mesh.mesh), {}, extruded.vertex_origin);
+    renderer.set_mesh(extruded.mesh, replanner.tables(), frame, replanner.last_change(), extruded.vertex_origin);
+    expect_as_captured_anew(renderer, extruded.mesh, frame, target, camera, o, "extruded");
+    EXPECT_EQ(cache.captures(), captures) << "no capture of the whole surface";
+    EXPECT_EQ(cache.refreshes(), refreshes + 1);
+    EXPECT_LT(cache.refreshed_patches(), renderer.tables().plans.n_patches() / 10);
+    const std::vector<int> back = inverse_origin(extruded.vertex_origin, sphere.n_vertices());
+    replanner.set_topology(topology_of(sphere.mesh), {}, back);
+    renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), back);
+    expect_as_captured_anew(renderer, sphere, frame, target, camera, o, "undone");
+    EXPECT_EQ(cache.captures(), captures);
+    EXPECT_EQ(cache.refreshes(), refreshes + 2);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Welds, IncrementalSurfaceCache,
+                         ::testing::Values(SurfaceCache::Weld::at_capture, SurfaceCache::Weld::when_settled,
+                                           SurfaceCache::Weld::off),
+                         [](const ::testing::TestParamInfo<SurfaceCache::Weld>& info) {
+                           return info.param == SurfaceCache::Weld::at_capture     ? std::string("AtCapture")
+                                  : info.param == SurfaceCache::Weld::when_settled ? std::string("WhenSettled")
+                                                                                   : std::string("Off");
+                         });
+
+}  // namespace
+}  // namespace gps
