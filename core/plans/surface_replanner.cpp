@@ -72,6 +72,12 @@ bool renumber_range(RangePlans& range, const std::vector<int>& new_index, int n_
   return !gone;
 }
 
+// How many patches face f has (core/plans/patch_layout.h): one per quad or triangle patch, n for an
+// n-gon split by Catmull-Clark.
+int patches_of_face(const PolygonTopology& t, int f, Scheme scheme) {
+  return scheme == Scheme::loop || t.face_size(f) == 4 ? 1 : t.face_size(f);
+}
+
 // A new id for a replanner's tables, unique in the process.
 long long next_tables_id() {
   static std::atomic<long long> last{0};
@@ -138,7 +144,7 @@ void SurfaceReplanner::build_all(const Sharpness& sharpness) {
 }
 
 void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sharpness,
-                             const std::vector<int>& old_patch_first) {
+                             const std::vector<int>& old_patch_first, const std::vector<int>& old_face_patch) {
   const PolygonTopology& t = base_.topology;
   change_ = {change_.to, next_tables_id(), {}};
   std::vector<KeptPatches>& kept = change_.kept;
@@ -172,17 +178,30 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   tables_ = merge_ranges(ranges_, t.n_vertices, false);
   add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
   patch_first_.assign(ranges_.size(), 0);
+  // The runs kept, in order in both numberings (a run that would go back in the old one is left out).
+  const auto keep = [&](int first, int old_first, int count) {
+    KeptPatches* last = kept.empty() ? nullptr : &kept.back();
+    if (count <= 0 || (last && last->old_first + last->count > old_first)) return;
+    if (last && last->first + last->count == first && last->old_first + last->count == old_first)
+      last->count += count;
+    else
+      kept.push_back({first, old_first, count});
+  };
   int first = 0;
   for (size_t r = 0; r < ranges_.size(); ++r) {
     patch_first_[r] = first;
     const int count = int(ranges_[r].tables.plans.patch_roots.size());
     const int old_first = r < old_patch_first.size() ? old_patch_first[r] : -1;
-    if (old_first >= 0 && count > 0) {
-      KeptPatches* last = kept.empty() ? nullptr : &kept.back();
-      if (last && last->first + last->count == first && last->old_first + last->count == old_first)
-        last->count += count;
-      else
-        kept.push_back({first, old_first, count});
+    if (old_first >= 0) {
+      keep(first, old_first, count);
+    } else if (!old_face_patch.empty()) {  // built again: its faces whose pieces stayed keep their plans
+      int patches = 0;
+      for (int f = range_first_[r]; f < range_first_[r + 1]; ++f) patches += patches_of_face(t, f, scheme_);
+      for (int f = range_first_[r], patch = first; f < range_first_[r + 1] && patches == count; ++f) {
+        const int n = patches_of_face(t, f, scheme_);
+        if (old_face_patch[size_t(f)] >= 0) keep(patch, old_face_patch[size_t(f)], n);
+        patch += n;
+      }
     }
     first += count;
   }
@@ -336,9 +355,15 @@ int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpn
   }
   if (firsts.empty()) firsts.push_back(0), fresh.push_back(0), old_patch_first.push_back(-1), ranges.emplace_back();
   firsts.push_back(n_faces);
+  // The faces built again whose pieces stayed: where their old patches started.
+  std::vector<int> old_first_patch(size_t(old.n_faces()) + 1, 0), old_face_patch(size_t(n_faces), -1);
+  for (int f = 0; f < old.n_faces(); ++f)
+    old_first_patch[size_t(f) + 1] = old_first_patch[size_t(f)] + patches_of_face(old, f, scheme_);
+  for (int g = 0; g < n_faces; ++g)
+    if (const int f = old_face[size_t(g)]; f >= 0 && !dirty[size_t(g)]) old_face_patch[size_t(g)] = old_first_patch[size_t(f)];
   ranges_ = std::move(ranges);
   range_first_ = std::move(firsts);
-  build(fresh, sharpness, old_patch_first);
+  build(fresh, sharpness, old_patch_first, old_face_patch);
   return planned;
 }
 

@@ -24,7 +24,8 @@ std::vector<int> faces_reading(const PolygonTopology& t, const MeshConnectivity&
                                const std::vector<int>& vertices);
 
 /// Patches [first, first + count) of a replanner's tables are patches [old_first, old_first + count) of
-/// its tables before the last change, their plans kept and renumbered.
+/// its tables before the last change, their plans kept and renumbered, or built again for faces whose
+/// pieces did not change (a plan is a function of its face's piece: the same plan, renumbered).
 struct KeptPatches {
   int first = 0, old_first = 0, count = 0;
   bool operator==(const KeptPatches&) const = default;
@@ -85,7 +86,11 @@ private:
   void check(const PolygonTopology& topology, Scheme scheme) const;
   // Builds the ranges `which` on all cores, then merges every range into tables_. `old_patch_first`:
   // per range, where its patches started before the change (−1: built now); empty: none kept.
-  void build(const std::vector<int>& which, const Sharpness& sharpness, const std::vector<int>& old_patch_first = {});
+  // `old_face_patch`: per face, where the patches of the face it was started before, where its plan is
+  // the same (its piece unchanged; −1 otherwise): a range built again keeps those patches' place in
+  // the change (PlanChange::kept). Empty: none.
+  void build(const std::vector<int>& which, const Sharpness& sharpness, const std::vector<int>& old_patch_first = {},
+             const std::vector<int>& old_face_patch = {});
   // Cuts the faces into even ranges and builds them all.
   void build_all(const Sharpness& sharpness);
   int range_of_face(int f) const;
