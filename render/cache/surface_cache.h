@@ -30,7 +30,8 @@
 // The other stale blocks are captured again, under the camera of the capture, into a scratch buffer,
 // and copied into place (or, where adaptive levels changed a block's count, the clean and the new
 // blocks are assembled in a spare buffer, which then becomes the stored one); where over half of the
-// patches would be captured so, the whole surface is captured again.
+// patches would be captured so, the whole surface is captured again. A change of topology whose
+// patches mostly keep their numbers is followed the same way (topology_changed; docs/surface_cache.md).
 #include <glm/glm.hpp>
 #include <functional>
 #include <memory>
