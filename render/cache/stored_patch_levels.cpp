@@ -38,12 +38,14 @@ void StoredPatchLevels::reserve(int n_patches) {
   glNamedBufferData(levels_, GLsizeiptr(capacity_) * kBytesPerPatch, nullptr, GL_DYNAMIC_COPY);
 }
 
-void StoredPatchLevels::resize(int n_patches) {
-  if (n_patches <= capacity_) return;
-  const int kept = capacity_;
-  const int capacity = std::max(n_patches, capacity_ + capacity_ / 2);  // room to grow a little per change
+void StoredPatchLevels::follow(int n_patches, const std::vector<SurfaceBlocks::Moved>& moved) {
+  if (moved.empty()) return;
+  const int capacity = std::max(n_patches, 1);
   glNamedBufferData(spare_, GLsizeiptr(capacity) * kBytesPerPatch, nullptr, GL_DYNAMIC_COPY);
-  if (kept > 0) glCopyNamedBufferSubData(levels_, spare_, 0, 0, GLsizeiptr(kept) * kBytesPerPatch);
+  for (const SurfaceBlocks::Moved& m : moved)
+    if (m.old_first_patch + m.patches <= capacity_ && m.first_patch + m.patches <= capacity)
+      glCopyNamedBufferSubData(levels_, spare_, GLintptr(m.old_first_patch) * kBytesPerPatch,
+                               GLintptr(m.first_patch) * kBytesPerPatch, GLsizeiptr(m.patches) * kBytesPerPatch);
   std::swap(levels_, spare_);
   glNamedBufferData(spare_, 0, nullptr, GL_DYNAMIC_COPY);
   capacity_ = capacity;

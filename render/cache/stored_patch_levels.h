@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/plans/patch_plans.h"
+#include "render/cache/surface_blocks.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
 #include "render/gl/point_precision.h"
@@ -36,9 +37,10 @@ public:
   }
   /// Keeps the levels of all `n_patches` (after a capture).
   void record(PatchShape shape, int n_patches, int group_limit);
-  /// Room for `n_patches`, the levels kept of those below the old count (a change of topology that
-  /// kept the patches' numbers; the others are checked and kept again when their blocks are captured).
-  void resize(int n_patches);
+  /// The levels of the patches of `moved` blocks (SurfaceCache::topology_changed) under their new
+  /// numbers, with room for `n_patches`; the others' are checked and kept when their blocks are
+  /// captured again.
+  void follow(int n_patches, const std::vector<SurfaceBlocks::Moved>& moved);
   /// Per block of `blocks`: whether any of its patches' levels differ from those kept; then keeps
   /// the new ones (the blocks are brought to them: evaluated again where unchanged, else captured).
   std::vector<char> changed(PatchShape shape, const std::vector<Block>& blocks, int group_limit);

@@ -7,34 +7,63 @@ namespace gps {
 int patches_per_block(int n_patches) { return std::clamp((n_patches + 511) / 512, 2, 256); }
 
 void SurfaceBlocks::reset(int n_patches, int per_block) {
-  n_patches_ = std::max(n_patches, 0);
+  n_patches = std::max(n_patches, 0);
   per_block_ = std::max(per_block, 1);
-  first_triangle_.assign(size_t((n_patches_ + per_block_ - 1) / per_block_) + 1, 0);
+  first_patch_.clear();
+  for (int p = 0; p < n_patches; p += per_block_) first_patch_.push_back(p);
+  first_patch_.push_back(n_patches);
+  first_triangle_.assign(first_patch_.size(), 0);
   stale_.assign(size_t(size()), 0);
   stale_patches_ = 0;
 }
 
-void SurfaceBlocks::resize(int n_patches) {
+std::vector<SurfaceBlocks::Moved> SurfaceBlocks::follow(int n_patches, const std::vector<int>& new_number,
+                                                        const std::vector<char>& changed) {
   n_patches = std::max(n_patches, 0);
-  const int first_changed = std::min(n_patches_, n_patches) / per_block_;
-  std::vector<long long> counts(size_t((n_patches + per_block_ - 1) / per_block_), 0);
-  std::vector<char> stale(counts.size(), 0);
-  for (int b = 0; b < std::min(size(), int(counts.size())); ++b) {
-    counts[size_t(b)] = b < first_changed ? triangles(b) : 0;
-    stale[size_t(b)] = stale_[size_t(b)];
+  // The blocks kept, in order: clean, every patch renumbered by one shift, none of them changed.
+  std::vector<int> kept;
+  int end = 0;  // new patches before it are taken
+  for (int b = 0; b < size(); ++b) {
+    const int first = first_patch(b), now = new_number[size_t(first)];
+    bool keep = !stale_[size_t(b)] && now >= end && now + patches_in(b) <= n_patches;
+    for (int i = 0; i < patches_in(b) && keep; ++i)
+      keep = new_number[size_t(first + i)] == now + i && !changed[size_t(now + i)];
+    if (keep) kept.push_back(b), end = now + patches_in(b);
   }
-  n_patches_ = n_patches;
-  first_triangle_.assign(counts.size() + 1, 0);
+  std::vector<int> first_patch;
+  std::vector<long long> counts;
+  std::vector<char> stale;
+  std::vector<Moved> moved;
+  long long triangle = 0;
+  const auto add_stale = [&](int from, int to) {  // new patches [from, to) in blocks of per_block_
+    for (int p = from; p < to; p += per_block_) first_patch.push_back(p), counts.push_back(0), stale.push_back(1);
+  };
+  int next = 0;
+  for (const int b : kept) {
+    const int now = new_number[size_t(first_patch_[size_t(b)])];
+    add_stale(next, now);
+    first_patch.push_back(now);
+    counts.push_back(triangles(b));
+    stale.push_back(0);
+    moved.push_back({first_patch_[size_t(b)], now, patches_in(b), first_triangle(b), triangle, triangles(b)});
+    triangle += triangles(b);
+    next = now + patches_in(b);
+  }
+  add_stale(next, n_patches);
+  first_patch.push_back(n_patches);
+  first_patch_ = std::move(first_patch);
+  first_triangle_.assign(first_patch_.size(), 0);
   set_counts(counts);
   stale_ = std::move(stale);
   stale_patches_ = 0;
-  for (int b = 0; b < size(); ++b) {
-    if (b >= first_changed) stale_[size_t(b)] = 1;
+  for (int b = 0; b < size(); ++b)
     if (stale_[size_t(b)]) stale_patches_ += patches_in(b);
-  }
+  return moved;
 }
 
-int SurfaceBlocks::patches_in(int b) const { return std::min(per_block_, n_patches_ - first_patch(b)); }
+int SurfaceBlocks::block_of(int patch) const {
+  return int(std::upper_bound(first_patch_.begin(), first_patch_.end(), patch) - first_patch_.begin()) - 1;
+}
 
 void SurfaceBlocks::set_counts(const std::vector<long long>& counts) {
   for (size_t b = 0; b < counts.size() && b < size_t(size()); ++b)
@@ -50,8 +79,9 @@ void SurfaceBlocks::replace_counts(const std::vector<int>& blocks, const std::ve
 
 void SurfaceBlocks::mark_stale(const std::vector<int>& patches) {
   for (const int p : patches) {
-    const int b = p / per_block_;
-    if (b < 0 || b >= size() || stale_[size_t(b)]) continue;
+    if (p < 0 || p >= n_patches()) continue;
+    const int b = block_of(p);
+    if (stale_[size_t(b)]) continue;
     stale_[size_t(b)] = 1;
     stale_patches_ += patches_in(b);
   }
@@ -59,7 +89,7 @@ void SurfaceBlocks::mark_stale(const std::vector<int>& patches) {
 
 void SurfaceBlocks::mark_all_stale() {
   std::fill(stale_.begin(), stale_.end(), 1);
-  stale_patches_ = n_patches_;
+  stale_patches_ = n_patches();
 }
 
 std::vector<int> SurfaceBlocks::stale() const {

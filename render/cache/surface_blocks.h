@@ -15,15 +15,25 @@ class SurfaceBlocks {
 public:
   /// `n_patches` in blocks of `per_block` (the last may be shorter): no triangles, nothing stale.
   void reset(int n_patches, int per_block);
-  /// `n_patches` in blocks of the same size, where patches were added or removed at the end: the
-  /// blocks whose patches stay keep their counts; those whose patches changed, from the first the
-  /// end reached, are stale, the new ones with no triangles yet.
-  void resize(int n_patches);
+
+  /// A block kept through a change of topology: its patches, numbered from `old_first_patch` before
+  /// and from `first_patch` now, and its triangles, which lay from `old_first_triangle` and now lie from
+  /// `first_triangle`.
+  struct Moved {
+    int old_first_patch, first_patch, patches;
+    long long old_first_triangle, first_triangle, triangles;
+  };
+  /// The blocks after a change of topology to `n_patches` patches: `new_number` gives each old patch's
+  /// number now (−1: none), `changed` flags the new patches whose triangles change. A clean block
+  /// whose patches all keep their order and their triangles stays a block of them, under their new
+  /// numbers, with its triangles; the new patches no such block holds form stale blocks of at most
+  /// the same size, with no triangles yet. Returns where the kept blocks' triangles move, in order.
+  std::vector<Moved> follow(int n_patches, const std::vector<int>& new_number, const std::vector<char>& changed);
 
   int size() const { return int(first_triangle_.size()) - 1; }
-  int n_patches() const { return n_patches_; }
-  int first_patch(int b) const { return b * per_block_; }
-  int patches_in(int b) const;
+  int n_patches() const { return first_patch_.back(); }
+  int first_patch(int b) const { return first_patch_[size_t(b)]; }
+  int patches_in(int b) const { return first_patch_[size_t(b) + 1] - first_patch_[size_t(b)]; }
   long long first_triangle(int b) const { return first_triangle_[size_t(b)]; }
   long long triangles(int b) const { return first_triangle_[size_t(b) + 1] - first_triangle_[size_t(b)]; }
   long long total() const { return first_triangle_.back(); }
@@ -43,7 +53,10 @@ public:
   void clear_stale();
 
 private:
-  int n_patches_ = 0, per_block_ = 1;
+  int block_of(int patch) const;
+
+  int per_block_ = 1;
+  std::vector<int> first_patch_{0};           // one more than blocks: the last is the patch count
   std::vector<long long> first_triangle_{0};  // one more than blocks
   std::vector<char> stale_;
   int stale_patches_ = 0;

@@ -66,14 +66,42 @@ void SurfaceCache::all_points_changed(long long points) {
   if (follow_edit(points)) blocks_.mark_all_stale();
 }
 
-void SurfaceCache::topology_changed(long long points, int n_patches, const std::vector<int>& patches) {
-  if (!follow_edit(points)) return;
+std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long points, int n_patches,
+                                                                const std::vector<int>& new_number,
+                                                                const std::vector<char>& changed) {
+  if (!follow_edit(points)) return {};
   copy_back_evaluated();  // by the blocks as they were
-  blocks_.resize(n_patches);
-  blocks_.mark_stale(patches);
+  const std::vector<SurfaceBlocks::Moved> moved = blocks_.follow(n_patches, new_number, changed);
+  // The kept blocks' triangles, packed in order in the spare buffer, which becomes the stored one;
+  // where they all stay where they were (patches added past them), as they are.
+  bool in_place = true, renumbered = false;
+  for (const SurfaceBlocks::Moved& m : moved) {
+    in_place = in_place && (m.old_first_triangle == m.first_triangle || m.triangles == 0);
+    renumbered = renumbered || m.old_first_patch != m.first_patch;
+  }
+  for (size_t p = 0; p < new_number.size() && !renumbered; ++p)  // their vertices may name moved neighbours
+    renumbered = new_number[p] >= 0 && new_number[p] != int(p);
+  if (!in_place) {
+    const long long total = blocks_.total();
+    reserve(spare_, spare_capacity_, total + total / 8 + 64);
+    for (const SurfaceBlocks::Moved& m : moved)
+      if (m.triangles > 0)
+        glCopyNamedBufferSubData(buffer_, spare_, GLintptr(m.old_first_triangle * 3 * kCapturedVertexBytes),
+                                 GLintptr(m.first_triangle * 3 * kCapturedVertexBytes),
+                                 GLsizeiptr(m.triangles * 3 * kCapturedVertexBytes));
+    std::swap(buffer_, spare_);
+    std::swap(capacity_, spare_capacity_);
+    glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kCapturedVertexBytes);
+  }
+  if (renumbered && blocks_.total() > 0) {
+    if (!renumbering_) renumbering_ = std::make_unique<StoredPatchRenumbering>();
+    renumbering_->run(buffer_, 3 * blocks_.total(), new_number);
+  }
   weld_all_pending_ = true;  // welded anew by the refresh
   weld_pending_.clear();
   topology_pending_ = true;
+  check_gl_errors("following a change of topology");
+  return moved;
 }
 
 bool SurfaceCache::matches(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {

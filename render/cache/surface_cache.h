@@ -40,6 +40,7 @@
 #include "core/mesh/covariance_mesh.h"
 #include "core/evaluation/triangle_mesh.h"
 #include "render/cache/stored_patch_levels.h"
+#include "render/cache/stored_patch_renumbering.h"
 #include "render/cache/stored_vertex_evaluation.h"
 #include "render/cache/stored_vertex_weld.h"
 #include "render/cache/surface_blocks.h"
@@ -94,12 +95,15 @@ public:
   /// An edit's compute pass over everything (most of the mesh moved) made plan points of
   /// generation `points`: every block is stale, followed as an edit's.
   void all_points_changed(long long points);
-  /// A change of topology made plan points of generation `points` for `n_patches` patches, where every
-  /// patch but `patches` (sorted; new numbering) keeps its number and generates the triangles it did,
-  /// and patches were added or removed only past those: followed as an edit, the blocks of `patches`
-  /// and of the patches past the old end stale. The next refresh captures them again, whatever
-  /// their levels, and welds everything anew.
-  void topology_changed(long long points, int n_patches, const std::vector<int>& patches);
+  /// A change of topology made plan points of generation `points` for `n_patches` patches: per patch
+  /// before, `new_number` gives its number now (−1: none), and `changed` flags the patches now whose
+  /// triangles change (render/pipeline/kept_surface_triangles.h). Followed as an edit: the blocks whose
+  /// patches all keep their triangles stay, renumbered (SurfaceBlocks::follow), the other patches
+  /// form stale blocks, which the next refresh captures whatever their levels, and everything is
+  /// welded anew. Returns the blocks kept (empty where the change is not followed: captured again).
+  std::vector<SurfaceBlocks::Moved> topology_changed(long long points, int n_patches,
+                                                     const std::vector<int>& new_number,
+                                                     const std::vector<char>& changed);
 
   // What a frame asks.
 
@@ -159,6 +163,9 @@ public:
   /// Their captured copies, brought up to date first (copy_back_evaluated()). Positions in world
   /// coordinates: the stored ones lie in the frame of set_frame().
   TriangleMesh stored_triangles();
+  /// The captured vertices as stored, 12 floats each (kCapturedVertexBytes), their copies of evaluated
+  /// vertices brought up to date first: what a capture of the same inputs stores, bit for bit.
+  std::vector<float> captured_vertices();
   /// The frame the captured positions lie in (render/gl/normalised_frame.h).
   void set_frame(const NormalisedFrame& frame) { frame_ = frame; }
   /// The distinct vertices a cached frame fetches (read back): where welded, the distinct indices;
@@ -259,6 +266,7 @@ private:
   GlVertexArray vao_, welded_vao_;
   long long index_capacity_ = 0;            // triangles the index, welded vertex and parameter buffers hold
   std::unique_ptr<StoredVertexWeld> weld_;  // made at the first weld
+  std::unique_ptr<StoredPatchRenumbering> renumbering_;  // made at the first change of topology that needs it
   Weld weld_mode_;
   bool weld_all_pending_ = true;   // when settled: every block to weld
   std::vector<int> weld_pending_;  // else these, in order

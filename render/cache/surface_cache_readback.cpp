@@ -23,14 +23,20 @@ long long SurfaceCache::distinct_vertices() const {
   return std::unique(indices.begin(), indices.end()) - indices.begin();
 }
 
+std::vector<float> SurfaceCache::captured_vertices() {
+  if (!has_stored_triangles()) return {};
+  copy_back_evaluated();
+  std::vector<float> vertices(size_t(3 * blocks_.total()) * (kCapturedVertexBytes / sizeof(float)));
+  glGetNamedBufferSubData(buffer_, 0, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data());
+  check_gl_errors("reading the surface cache");
+  return vertices;
+}
+
 TriangleMesh SurfaceCache::stored_triangles() {
   TriangleMesh mesh;
   if (!has_stored_triangles()) return mesh;
-  copy_back_evaluated();
   const size_t floats_per_vertex = kCapturedVertexBytes / sizeof(float);
-  std::vector<float> vertices(size_t(3 * blocks_.total()) * floats_per_vertex);
-  glGetNamedBufferSubData(buffer_, 0, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data());
-  check_gl_errors("reading the surface cache");
+  const std::vector<float> vertices = captured_vertices();
   using Bits = std::array<uint32_t, 6>;  // position and normal
   struct BitsHash {
     size_t operator()(const Bits& b) const {

@@ -43,6 +43,9 @@ GPS_LAYOUT_CONST int kBindingCopyRuns = 27;          // the runs of captured ver
 GPS_LAYOUT_CONST int kBindingPatchLevels = 28;       // per patch: its outer levels (render/cache/stored_patch_levels.h)
 GPS_LAYOUT_CONST int kBindingLevelPatches = 29;      // the patches a level check runs over, with their listed block
 GPS_LAYOUT_CONST int kBindingLevelChanges = 30;      // per listed block: whether a patch's levels changed
+// Per patch before a change of topology: its number after it (render/cache/stored_patch_renumbering.h).
+// It shares the level check's slot, never bound in the same pass: llvmpipe has 32 binding points.
+GPS_LAYOUT_CONST int kBindingPatchNumbers = kBindingLevelPatches;
 GPS_LAYOUT_CONST int kBindingLevelBound = 31;        // the largest level of a range of patches (render/pipeline/patch_level_bound.h)
 
 // Compute passes: invocations per work group.

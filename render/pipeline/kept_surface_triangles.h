@@ -1,8 +1,8 @@
 #pragma once
 // What of the surface cache's triangles (render/cache/surface_cache.h) a change of topology leaves as
-// they were: a patch generates the same triangles under the same number where it keeps its number,
-// its corner-pass output (render/pipeline/kept_corner_output.h) and the patches it evaluates boundary
-// points from (its edge neighbours and corner owners, core/plans/patch_adjacency.h).
+// they were: a patch kept by the change (render/pipeline/kept_corner_output.h) generates the same
+// triangles, under its new number, where its corner-pass output is kept and so are the patches it
+// evaluates boundary points from (its edge neighbours and corner owners, core/plans/patch_adjacency.h).
 #include <vector>
 
 #include "core/plans/patch_plans.h"
@@ -10,10 +10,16 @@
 
 namespace gps {
 
-/// The patches of `after` (sorted) whose triangles change: those not kept under their old number
-/// (patches not kept, kept runs that moved), those of `stale_corners` (sorted: stale_corner_patches),
-/// and those that evaluate a boundary point from one of these.
-std::vector<int> patches_whose_triangles_change(const PatchPlans& after, const std::vector<KeptPatches>& kept,
-                                                const std::vector<int>& stale_corners);
+struct KeptTriangles {
+  std::vector<int> new_number;  // per patch before the change: its number after it, −1 where not kept
+  std::vector<char> changed;    // per patch after it: whether its triangles change
+};
+
+/// For a change from tables of `n_before` patches to `after` (`kept`: its runs, which must fit,
+/// kept_runs_fit), with the patches whose corner-pass output is evaluated again `stale_corners`
+/// (stale_corner_patches): the patches whose triangles change are those not kept, those of
+/// `stale_corners`, and those that evaluate a boundary point from one of these.
+KeptTriangles kept_triangles(const PatchPlans& after, int n_before, const std::vector<KeptPatches>& kept,
+                             const std::vector<int>& stale_corners);
 
 }  // namespace gps

@@ -159,9 +159,10 @@ void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const Framed
   compute_.run_all(n_base_, tables().stencils.n_rows(), group_limit_);
   corners_.run_listed(plans, int(corners.size()), group_limit_);
   last_corner_slots_ = int(corners.size());
-  // The cache keeps the triangles of the patches that keep their number and all they read.
-  stored_levels_.resize(n_patches());
-  cache_.topology_changed(points_generation_, n_patches(), patches_whose_triangles_change(plans, kept, patches));
+  // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
+  const KeptTriangles triangles = kept_triangles(plans, before.plans.n_patches(), kept, patches);
+  stored_levels_.follow(n_patches(),
+                        cache_.topology_changed(points_generation_, n_patches(), triangles.new_number, triangles.changed));
 }
 
 std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {

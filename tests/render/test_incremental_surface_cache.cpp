@@ -1,11 +1,13 @@
 // The surface cache following a change of topology (SurfaceCache::topology_changed): after random
-// operations of every kind, their undo and their redo, the stored triangles equal those of a renderer
-// set up anew and captured under the same camera, bit for bit; an operation that keeps the patches'
-// numbers (an extrude, an inset) captures only the blocks it reached, not the whole surface.
+// operations of every kind, their undo and their redo, the captured vertices equal those of a renderer
+// set up anew and captured under the same camera, bit for bit; an operation that keeps most patches
+// (an extrude, a delete) captures only the blocks it reached, not the whole surface.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <random>
 
+#include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/samples.h"
 #include "core/plans/surface_replanner.h"
@@ -43,11 +45,14 @@ void expect_as_captured_anew(SurfaceRenderer& renderer, const CovarianceMesh& me
   fresh.surface_cache().set_weld(renderer.surface_cache().weld_mode());
   fresh.set_mesh(mesh, renderer.tables(), frame);
   fresh.draw(target, camera, o);
-  const TriangleMesh followed = renderer.surface_cache().stored_triangles(), anew = fresh.surface_cache().stored_triangles();
-  EXPECT_GT(anew.triangles.size(), 0u) << where;
-  EXPECT_TRUE(followed.positions == anew.positions && followed.normals == anew.normals &&
-              followed.triangles == anew.triangles)
-      << where << ": " << followed.triangles.size() << " triangles followed, " << anew.triangles.size() << " anew";
+  // Every float of every captured vertex: position, normal and kind, grid, and the patch it was
+  // evaluated at, which an edit evaluates it at again and the weld keys it by.
+  const std::vector<float> followed = renderer.surface_cache().captured_vertices(),
+                           anew = fresh.surface_cache().captured_vertices();
+  EXPECT_GT(anew.size(), 0u) << where;
+  EXPECT_TRUE(followed.size() == anew.size() &&
+              std::memcmp(followed.data(), anew.data(), anew.size() * sizeof(float)) == 0)
+      << where << ": " << followed.size() / 36 << " triangles followed, " << anew.size() / 36 << " anew";
 }
 
 // Each mesh with another way of welding (at capture, when settled, never), in turn.
@@ -99,10 +104,11 @@ TEST_F(IncrementalSurfaceCacheRandom, RandomOperationsMatchAFreshCapture) {
   EXPECT_GE(refreshes, 6) << "changes followed, not only captured again";
 }
 
-// An extrude of one face of a sphere keeps every other patch's number: the frame after it refreshes
-// the blocks it reached instead of capturing the surface again, and its undo does the same. (Reached:
-// the patches of the faces the replanner planned again, here in small ranges, and their neighbours.)
-TEST_P(IncrementalSurfaceCache, AnExtrudeCapturesOnlyTheBlocksItReached) {
+// An extrude of one face of a sphere keeps every other patch's number, and a delete of one face
+// renumbers the patches after it: the frame after either refreshes the blocks it reached instead of
+// capturing the surface again, and so does its undo. (Reached: the patches of the faces the
+// replanner planned again, here in small ranges, and their neighbours.)
+TEST_P(IncrementalSurfaceCache, AnExtrudeOrADeleteCapturesOnlyTheBlocksItReached) {
   RenderTarget target(kSize, kSize);
   const CovarianceMesh sphere = make_sample("sphere", 6000);
   const NormalisedFrame frame = NormalisedFrame::of(sphere);
@@ -111,24 +117,26 @@ TEST_P(IncrementalSurfaceCache, AnExtrudeCapturesOnlyTheBlocksItReached) {
   SurfaceRenderer renderer;
   renderer.surface_cache().set_weld(GetParam());
   renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
-  for (const DrawOptions& o : {cached(6.0f, 0.0f), cached(0.0f, 4.0f)}) {
-    renderer.draw(target, camera, o);
-    const SurfaceCache& cache = renderer.surface_cache();
-    const int captures = cache.captures(), refreshes = cache.refreshes();
-    const Modelled extruded = extrude_faces(sphere, {int(sphere.n_faces() / 3)}, 0.05);
-    replanner.set_topology(topology_of(extruded.mesh.mesh), {}, extruded.vertex_origin);
-    renderer.set_mesh(extruded.mesh, replanner.tables(), frame, replanner.last_change(), extruded.vertex_origin);
-    expect_as_captured_anew(renderer, extruded.mesh, frame, target, camera, o, "extruded");
-    EXPECT_EQ(cache.captures(), captures) << "no capture of the whole surface";
-    EXPECT_EQ(cache.refreshes(), refreshes + 1);
-    EXPECT_LT(cache.refreshed_patches(), renderer.tables().plans.n_patches() / 10);
-    const std::vector<int> back = inverse_origin(extruded.vertex_origin, sphere.n_vertices());
-    replanner.set_topology(topology_of(sphere.mesh), {}, back);
-    renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), back);
-    expect_as_captured_anew(renderer, sphere, frame, target, camera, o, "undone");
-    EXPECT_EQ(cache.captures(), captures);
-    EXPECT_EQ(cache.refreshes(), refreshes + 2);
-  }
+  const int f = int(sphere.n_faces() / 3);
+  const Modelled results[] = {extrude_faces(sphere, {f}, 0.05), delete_faces(sphere, {f})};
+  for (const DrawOptions& o : {cached(6.0f, 0.0f), cached(0.0f, 4.0f)})
+    for (const Modelled& result : results) {
+      renderer.draw(target, camera, o);
+      const SurfaceCache& cache = renderer.surface_cache();
+      const int captures = cache.captures(), refreshes = cache.refreshes();
+      replanner.set_topology(topology_of(result.mesh.mesh), {}, result.vertex_origin);
+      renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+      expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, result.summary);
+      EXPECT_EQ(cache.captures(), captures) << result.summary << ": no capture of the whole surface";
+      EXPECT_EQ(cache.refreshes(), refreshes + 1) << result.summary;
+      EXPECT_LT(cache.refreshed_patches(), renderer.tables().plans.n_patches() / 10) << result.summary;
+      const std::vector<int> back = inverse_origin(result.vertex_origin, sphere.n_vertices());
+      replanner.set_topology(topology_of(sphere.mesh), {}, back);
+      renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), back);
+      expect_as_captured_anew(renderer, sphere, frame, target, camera, o, result.summary + ", undone");
+      EXPECT_EQ(cache.captures(), captures) << result.summary;
+      EXPECT_EQ(cache.refreshes(), refreshes + 2) << result.summary;
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Welds, IncrementalSurfaceCache,
