@@ -70,8 +70,15 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
                                                                 const std::vector<int>& new_number,
                                                                 const std::vector<char>& changed) {
   if (!follow_edit(points)) return {};
+  // Where a quarter of the patches or more would be captured again, everything is, sooner (refresh()).
+  SurfaceBlocks followed = blocks_;
+  const std::vector<SurfaceBlocks::Moved> moved = followed.follow(n_patches, new_number, changed);
+  if (4 * followed.stale_patches() > n_patches) {
+    tracked_points_ = -1;
+    return {};
+  }
   copy_back_evaluated();  // by the blocks as they were
-  const std::vector<SurfaceBlocks::Moved> moved = blocks_.follow(n_patches, new_number, changed);
+  blocks_ = std::move(followed);
   // The kept blocks' triangles, packed in order in the spare buffer, which becomes the stored one;
   // where they all stay where they were (patches added past them), as they are.
   bool in_place = true, renumbered = false;

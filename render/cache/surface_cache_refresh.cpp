@@ -44,7 +44,8 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
       captured_patches += blocks_.patches_in(stale[i]);
     }
   }
-  // Captured again: past half of the patches, little less than capturing them all.
+  // Captured again: past half of the patches, little less than capturing them all (after a change of
+  // topology, past a quarter: topology_changed() gives such changes up).
   if (2 * captured_patches > blocks_.n_patches()) return false;
   // A welded vertex on a block's edge may stand for copies in the blocks beside it, which are stale
   // too where it changed (core/plans/patch_readers.h: an edit's patches and their neighbours). So with
