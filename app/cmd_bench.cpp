@@ -95,8 +95,8 @@ void add_bench_command(CLI::App& app) {
       const auto context = make_context();
       const std::string name = args->mesh.empty() ? "sphere" : args->mesh;
       std::printf("device: %s, 1280x720, adaptive 6 px\n", context->description().c_str());
-      std::printf("%-22s %-18s %10s %10s %8s %10s %10s %10s %10s %10s\n", "mesh", "operation", "operation",
-                  "re-plan", "faces", "full plan", "upload", "frame", "total", "still");
+      std::printf("%-22s %-18s %10s %10s %8s %10s %10s %10s %10s %10s\n", "mesh", "operation", "operation", "re-plan",
+                  "faces", "full plan", "upload", "frame", "total", "still");
       nlohmann::json all = nlohmann::json::array();
       for (const int faces : args->size ? std::vector<int>{args->size} : std::vector<int>{10000, 100000}) {
         const auto r = modelling_figures(name, faces, args->plans.options());

@@ -12,7 +12,6 @@ namespace gps {
 
 namespace {
 
-
 /// "<head>: F faces, V vertices removed" (the faces left out when `count_faces` is false, the
 /// vertices when none were removed).
 std::string summary(const std::string& head, size_t faces_removed, size_t vertices_removed, bool count_faces) {

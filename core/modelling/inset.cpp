@@ -14,7 +14,6 @@ namespace gps {
 
 namespace {
 
-
 /// The inner copy of a sector's vertex: moved along the bisector of its boundary edges so that the
 /// inner edges lie `thickness` inside, with the covariance of the 9D blend towards the fan's face points.
 Gaussian inner_copy(const MeshArrays& a, const FaceRegion::Sector& s, double thickness) {
@@ -90,7 +89,8 @@ Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, 
       kept = now.dot(was) > 0;
     }
     if (!kept)
-      throw Error("a thickness of " + short_number(thickness) + " would turn face " + std::to_string(f) + " inside out");
+      throw Error("a thickness of " + short_number(thickness) + " would turn face " + std::to_string(f) +
+                  " inside out");
   }
   out.mesh = build_mesh(a);
   out.vertex_origin = vertex_origin(a);

@@ -205,14 +205,16 @@ std::vector<int> chain_of_edges(const std::vector<std::array<int, 2>>& edges) {
   return chain;
 }
 
-std::vector<int> shortest_path(const CovarianceMesh& mesh, int from, int to) {
-  const PolyMesh& m = mesh.mesh;
-  const int n = int(m.n_vertices());
-  for (const int v : {from, to})
-    if (v < 0 || v >= n) throw Error("vertex " + std::to_string(v) + " is not in the mesh");
+namespace {
+
+// Dijkstra's shortest path over `n` nodes from `from` to `to`: `steps(node, step)` calls step(next,
+// length) for each node one step away. Of paths equally short, the one through lower-numbered nodes.
+// Empty where none joins them.
+template <class Steps>
+std::vector<int> dijkstra_path(int n, int from, int to, const Steps& steps) {
   std::vector<double> distance(size_t(n), std::numeric_limits<double>::infinity());
   std::vector<int> previous(size_t(n), -1);
-  using Entry = std::pair<double, int>;  // (distance, vertex): the smallest first, then the lower vertex
+  using Entry = std::pair<double, int>;  // (distance, node): the smallest first, then the lower node
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   distance[size_t(from)] = 0.0;
   queue.push({0.0, from});
@@ -221,20 +223,32 @@ std::vector<int> shortest_path(const CovarianceMesh& mesh, int from, int to) {
     queue.pop();
     if (d > distance[size_t(v)]) continue;
     if (v == to) break;
-    for (const VH w : m.vv_range(VH(v))) {
-      const double through = d + (mesh.mean(size_t(w.idx())) - mesh.mean(size_t(v))).norm();
-      if (through < distance[size_t(w.idx())]) {
-        distance[size_t(w.idx())] = through;
-        previous[size_t(w.idx())] = v;
-        queue.push({through, w.idx()});
+    steps(v, [&, d = d, v = v](int w, double length) {
+      if (d + length < distance[size_t(w)]) {
+        distance[size_t(w)] = d + length;
+        previous[size_t(w)] = v;
+        queue.push({d + length, w});
       }
-    }
+    });
   }
-  if (from != to && previous[size_t(to)] < 0)
-    throw Error("no edges join vertex " + std::to_string(from) + " to vertex " + std::to_string(to));
+  if (from != to && previous[size_t(to)] < 0) return {};
   std::vector<int> path{to};
   while (path.back() != from) path.push_back(previous[size_t(path.back())]);
   std::reverse(path.begin(), path.end());
+  return path;
+}
+
+}  // namespace
+
+std::vector<int> shortest_path(const CovarianceMesh& mesh, int from, int to) {
+  const PolyMesh& m = mesh.mesh;
+  const int n = int(m.n_vertices());
+  for (const int v : {from, to})
+    if (v < 0 || v >= n) throw Error("vertex " + std::to_string(v) + " is not in the mesh");
+  std::vector<int> path = dijkstra_path(n, from, to, [&](int v, const auto& step) {
+    for (const VH w : m.vv_range(VH(v))) step(w.idx(), (mesh.mean(size_t(w.idx())) - mesh.mean(size_t(v))).norm());
+  });
+  if (path.empty()) throw Error("no edges join vertex " + std::to_string(from) + " to vertex " + std::to_string(to));
   return path;
 }
 
@@ -243,39 +257,19 @@ std::vector<int> shortest_face_path(const CovarianceMesh& mesh, int from, int to
   const int n = int(m.n_faces());
   for (const int f : {from, to})
     if (f < 0 || f >= n) throw Error("face " + std::to_string(f) + " is not in the mesh");
-  auto centre = [&](int f) {
+  const auto centre = [&](int f) {
     Vec3 sum = Vec3::Zero();
     int corners = 0;
     for (const VH v : m.fv_range(FH(f))) sum += mesh.mean(size_t(v.idx())), ++corners;
     return Vec3(sum / double(corners));
   };
-  std::vector<double> distance(size_t(n), std::numeric_limits<double>::infinity());
-  std::vector<int> previous(size_t(n), -1);
-  using Entry = std::pair<double, int>;  // (distance, face): the smallest first, then the lower face
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  distance[size_t(from)] = 0.0;
-  queue.push({0.0, from});
-  while (!queue.empty()) {
-    const auto [d, f] = queue.top();
-    queue.pop();
-    if (d > distance[size_t(f)]) continue;
-    if (f == to) break;
+  std::vector<int> path = dijkstra_path(n, from, to, [&](int f, const auto& step) {
     const Vec3 here = centre(f);
-    for (const FH g : m.ff_range(FH(f))) {
-      if (hidden && size_t(g.idx()) < hidden->size() && (*hidden)[size_t(g.idx())]) continue;
-      const double through = d + (centre(g.idx()) - here).norm();
-      if (through < distance[size_t(g.idx())]) {
-        distance[size_t(g.idx())] = through;
-        previous[size_t(g.idx())] = f;
-        queue.push({through, g.idx()});
-      }
-    }
-  }
-  if (from != to && previous[size_t(to)] < 0)
-    throw Error("no edges join face " + std::to_string(from) + " to face " + std::to_string(to));
-  std::vector<int> path{to};
-  while (path.back() != from) path.push_back(previous[size_t(path.back())]);
-  std::reverse(path.begin(), path.end());
+    for (const FH g : m.ff_range(FH(f)))
+      if (!hidden || size_t(g.idx()) >= hidden->size() || !(*hidden)[size_t(g.idx())])
+        step(g.idx(), (centre(g.idx()) - here).norm());
+  });
+  if (path.empty()) throw Error("no edges join face " + std::to_string(from) + " to face " + std::to_string(to));
   return path;
 }
 

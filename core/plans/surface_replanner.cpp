@@ -360,7 +360,8 @@ int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpn
   for (int f = 0; f < old.n_faces(); ++f)
     old_first_patch[size_t(f) + 1] = old_first_patch[size_t(f)] + patches_of_face(old, f, scheme_);
   for (int g = 0; g < n_faces; ++g)
-    if (const int f = old_face[size_t(g)]; f >= 0 && !dirty[size_t(g)]) old_face_patch[size_t(g)] = old_first_patch[size_t(f)];
+    if (const int f = old_face[size_t(g)]; f >= 0 && !dirty[size_t(g)])
+      old_face_patch[size_t(g)] = old_first_patch[size_t(f)];
   ranges_ = std::move(ranges);
   range_first_ = std::move(firsts);
   build(fresh, sharpness, old_patch_first, old_face_patch);

@@ -67,8 +67,8 @@ void SurfaceCache::all_points_changed(long long points) {
 }
 
 std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long points, int n_patches,
-                                                                const std::vector<int>& new_number,
-                                                                const std::vector<char>& changed) {
+                                                                 const std::vector<int>& new_number,
+                                                                 const std::vector<char>& changed) {
   if (!follow_edit(points)) return {};
   // Where a quarter of the patches or more would be captured again, everything is, sooner (refresh()).
   SurfaceBlocks followed = blocks_;

@@ -7,9 +7,9 @@
 // tessellation levels (uniform level, or adaptive target pixels; the debug mismatch). Adaptive
 // levels also depend on the camera; the cache keeps the camera of its capture and re-captures only
 // when some base mesh edge's projected size (shaders/tess_levels.glsl: the projected diameter of the
-// sphere around it), counted as at least `pixels` (smaller edges get level 1 either way), changed by more than the hysteresis factor (default 1.25) since then, or
-// crossed the eye plane. Within that, the stored levels stay within the factor of what the live
-// pipeline would choose.
+// sphere around it), counted as at least `pixels` (smaller edges get level 1 either way), changed by more than the
+// hysteresis factor (default 1.25) since then, or crossed the eye plane. Within that, the stored levels stay within the
+// factor of what the live pipeline would choose.
 //
 // The stored vertices are welded (render/cache/stored_vertex_weld.h) and drawn by index, as a welded
 // static buffer is. On a GPU right after each capture or refresh (Weld::at_capture). On llvmpipe

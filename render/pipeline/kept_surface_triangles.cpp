@@ -17,8 +17,8 @@ KeptTriangles kept_triangles(const PatchPlans& after, int n_before, const std::v
     bool changed = evaluated[size_t(p)] != 0;
     for (int k = 0; k < corners && !changed; ++k) {
       const size_t slot = size_t(corners * p + k);
-      for (const int32_t q : {after.patch_neighbours[4 * slot], after.patch_neighbours[4 * slot + 2],
-                              after.corner_owners[2 * slot]})
+      for (const int32_t q :
+           {after.patch_neighbours[4 * slot], after.patch_neighbours[4 * slot + 2], after.corner_owners[2 * slot]})
         changed = changed || (q >= 0 && evaluated[size_t(q)] != 0);
     }
     out.changed[size_t(p)] = changed;

@@ -61,8 +61,8 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   cache_.set_frame(frame_);
   const FramedGaussians before_framed = std::exchange(framed_, std::move(framed));
   buffers_.upload_gaussians(framed_);
-  ellipsoids_current_ = false;     // uploaded when first drawn: most frames draw none
-  cage_.set_mesh(mesh, framed_);   // the overlays too are drawn in the frame
+  ellipsoids_current_ = false;           // uploaded when first drawn: most frames draw none
+  cage_.set_mesh(mesh, framed_);         // the overlays too are drawn in the frame
   cache_.set_cage(mesh, framed_, keep);  // projected with the frame's view-projection
   if (keep)
     run_compute_kept(before, before_framed, kept, origin);
@@ -161,8 +161,8 @@ void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const Framed
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
   const KeptTriangles triangles = kept_triangles(plans, before.plans.n_patches(), kept, patches);
-  stored_levels_.follow(n_patches(),
-                        cache_.topology_changed(points_generation_, n_patches(), triangles.new_number, triangles.changed));
+  stored_levels_.follow(
+      n_patches(), cache_.topology_changed(points_generation_, n_patches(), triangles.new_number, triangles.changed));
 }
 
 std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {

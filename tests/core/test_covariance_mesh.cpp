@@ -53,8 +53,9 @@ TEST(CovarianceMesh, CovarianceProblemAcceptsExactlyTheRange) {
         for (int j = 0; j < i; ++j) off(i, j) = off(j, i) = 0.6 * unit(random);
       c = scale * (Mat3::Identity() * (1.0 + unit(random) * 0.2) + off);
     } else {  // a rotated ellipsoid, axes up to 1e12 apart, sometimes with an axis of sign flipped
-      const Mat3 q = Eigen::Quaterniond(Eigen::Vector4d(unit(random), unit(random), unit(random), unit(random)).normalized())
-                         .toRotationMatrix();
+      const Mat3 q =
+          Eigen::Quaterniond(Eigen::Vector4d(unit(random), unit(random), unit(random), unit(random)).normalized())
+              .toRotationMatrix();
       Vec3 axes(1.0, std::pow(10.0, -6.0 * (unit(random) + 1.0)), std::pow(10.0, 6.0 * unit(random)));
       if (trial % 7 == 1) axes(1) = -axes(1);
       c = scale * q * axes.asDiagonal() * q.transpose();

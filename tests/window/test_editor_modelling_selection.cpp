@@ -250,7 +250,7 @@ TEST_F(EditorModellingSelection, FaceModeCtrlClickSelectsAPathOfFacesAndCtrlAltC
   EXPECT_EQ(lifted, 7);
 
   use_mesh(make_sample("cylinder"));  // rings of 8 at y = −1, 0, 1 (vertices 0–7, 8–15, 16–23), two octagons
-  int front = 0;  // the lower band's vertical edge nearest the camera
+  int front = 0;                      // the lower band's vertical edge nearest the camera
   for (int v = 1; v < 8; ++v)
     if ((original_.mean(size_t(v)) - to_vec(view_.camera.eye())).norm() <
         (original_.mean(size_t(front)) - to_vec(view_.camera.eye())).norm())
