@@ -39,7 +39,6 @@ void StoredPatchLevels::reserve(int n_patches) {
 }
 
 void StoredPatchLevels::follow(int n_patches, const std::vector<SurfaceBlocks::Moved>& moved) {
-  if (moved.empty()) return;
   const int capacity = std::max(n_patches, 1);
   glNamedBufferData(spare_, GLsizeiptr(capacity) * kBytesPerPatch, nullptr, GL_DYNAMIC_COPY);
   for (const SurfaceBlocks::Moved& m : moved)

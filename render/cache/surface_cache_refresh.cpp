@@ -62,6 +62,9 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   if (!captured.empty() && !capture_again(captured, draw_patches, captured_kept)) return false;
   // A drag that evaluates keeps its vertices welded for its next edit.
   if (!evaluated.empty()) weld_pending();
+  // A change of topology that left every block as it was (no patch added or changed): welded anew
+  // all the same, since its patches were renumbered.
+  if (topology_pending_ && captured.empty()) weld();
   check_gl_errors("refreshing the surface cache");
   return refreshed(key);
 }
