@@ -20,15 +20,34 @@ void SurfaceBlocks::reset(int n_patches, int per_block) {
 std::vector<SurfaceBlocks::Moved> SurfaceBlocks::follow(int n_patches, const std::vector<int>& new_number,
                                                         const std::vector<char>& changed) {
   n_patches = std::max(n_patches, 0);
-  // The blocks kept, in order: clean, every patch renumbered by one shift, none of them changed.
-  std::vector<int> kept;
+  // A block whose numbered patches all moved by one shift stays a block, of the patches at its old
+  // ones shifted, with its triangles where they lie: stale where one of those changes or its old
+  // patches include one without a number (captured again in place, most often to the same count).
+  struct Kept {
+    int block, first;
+    bool stale;
+  };
+  std::vector<Kept> kept;
   int end = 0;  // new patches before it are taken
   for (int b = 0; b < size(); ++b) {
-    const int first = first_patch(b), now = new_number[size_t(first)];
-    bool keep = !stale_[size_t(b)] && now >= end && now + patches_in(b) <= n_patches;
-    for (int i = 0; i < patches_in(b) && keep; ++i)
-      keep = new_number[size_t(first + i)] == now + i && !changed[size_t(now + i)];
-    if (keep) kept.push_back(b), end = now + patches_in(b);
+    const int first = first_patch(b);
+    bool numbered = false, one_shift = true, stale = stale_[size_t(b)] != 0;
+    int shift = 0;
+    for (int i = 0; i < patches_in(b); ++i) {
+      const int now = new_number[size_t(first + i)];
+      if (now < 0) {
+        stale = true;
+        continue;
+      }
+      one_shift = one_shift && (!numbered || now - (first + i) == shift);
+      shift = now - (first + i);
+      numbered = true;
+    }
+    const int now = first + shift;
+    if (!numbered || !one_shift || now < end || now + patches_in(b) > n_patches) continue;
+    for (int i = 0; i < patches_in(b); ++i) stale = stale || changed[size_t(now + i)];
+    kept.push_back({b, now, stale});
+    end = now + patches_in(b);
   }
   std::vector<int> first_patch;
   std::vector<long long> counts;
@@ -39,15 +58,15 @@ std::vector<SurfaceBlocks::Moved> SurfaceBlocks::follow(int n_patches, const std
     for (int p = from; p < to; p += per_block_) first_patch.push_back(p), counts.push_back(0), stale.push_back(1);
   };
   int next = 0;
-  for (const int b : kept) {
-    const int now = new_number[size_t(first_patch_[size_t(b)])];
-    add_stale(next, now);
-    first_patch.push_back(now);
-    counts.push_back(triangles(b));
-    stale.push_back(0);
-    moved.push_back({first_patch_[size_t(b)], now, patches_in(b), first_triangle(b), triangle, triangles(b)});
-    triangle += triangles(b);
-    next = now + patches_in(b);
+  for (const Kept& k : kept) {
+    add_stale(next, k.first);
+    first_patch.push_back(k.first);
+    counts.push_back(triangles(k.block));
+    stale.push_back(k.stale);
+    moved.push_back({first_patch_[size_t(k.block)], k.first, patches_in(k.block), first_triangle(k.block), triangle,
+                     triangles(k.block)});
+    triangle += triangles(k.block);
+    next = k.first + patches_in(k.block);
   }
   add_stale(next, n_patches);
   first_patch.push_back(n_patches);

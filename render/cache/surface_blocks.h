@@ -24,10 +24,11 @@ public:
     long long old_first_triangle, first_triangle, triangles;
   };
   /// The blocks after a change of topology to `n_patches` patches: `new_number` gives each old patch's
-  /// number now (−1: none), `changed` flags the new patches whose triangles change. A clean block
-  /// whose patches all keep their order and their triangles stays a block of them, under their new
-  /// numbers, with its triangles; the new patches no such block holds form stale blocks of at most
-  /// the same size, with no triangles yet. Returns where the kept blocks' triangles move, in order.
+  /// number now (−1: none), `changed` flags the new patches whose triangles change. A block whose
+  /// numbered patches all moved by one shift stays a block of its patches shifted, with its
+  /// triangles, stale where one of them changed or had no number; the new patches no such block
+  /// holds form stale blocks of at most the same size, with no triangles yet. Returns where the kept
+  /// blocks' triangles move, in order.
   std::vector<Moved> follow(int n_patches, const std::vector<int>& new_number, const std::vector<char>& changed);
 
   int size() const { return int(first_triangle_.size()) - 1; }

@@ -128,13 +128,33 @@ bool SurfaceCache::refreshed(const Key& key) {
 }
 
 // The spare buffer, made the stored one: the runs of clean blocks from the stored buffer, the new
-// blocks from the scratch buffer, in patch order. The spare is kept for the next edit (an adaptive
+// blocks from the scratch buffer, in patch order (or, where only the last blocks changed their counts,
+// the stored buffer itself). The spare is kept for the next edit (an adaptive
 // edit changes counts every time: no buffer of the whole surface created and deleted per edit; it
 // holds up to the memory limit too while edits go on) and released by the next full capture.
 bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<long long>& counts) {
   long long total = blocks_.total();
   for (size_t i = 0; i < blocks.size(); ++i) total += counts[i] - blocks_.triangles(blocks[i]);
   if (total >= most_triangles()) return false;
+  // Where every block from the first whose count changed on was captured again (patches added at the
+  // end), and the stored buffer holds them, the blocks before it stay where they are: written in place.
+  size_t first_changed = 0;
+  while (first_changed < blocks.size() && counts[first_changed] == blocks_.triangles(blocks[first_changed]))
+    ++first_changed;
+  if (first_changed < blocks.size() && total <= capacity_ &&
+      blocks.size() - first_changed == size_t(blocks_.size() - blocks[first_changed])) {
+    blocks_.replace_counts(blocks, counts);
+    long long from = 0;
+    for (size_t i = 0; i < blocks.size(); ++i) {
+      if (counts[i] > 0)
+        glCopyNamedBufferSubData(scratch_, buffer_, GLintptr(from * 3 * kCapturedVertexBytes),
+                                 GLintptr(blocks_.first_triangle(blocks[i]) * 3 * kCapturedVertexBytes),
+                                 GLsizeiptr(counts[i] * 3 * kCapturedVertexBytes));
+      from += counts[i];
+    }
+    weld();
+    return true;
+  }
   reserve(spare_, spare_capacity_, total + total / 8 + 64);
   const auto copy = [&](unsigned source, long long from, long long to, long long n) {
     if (n > 0)
