@@ -256,6 +256,9 @@ private:
   bool refreshed(const Key& key);
   /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.
   bool assemble(const std::vector<int>& blocks, const std::vector<long long>& counts);
+  /// The scratch buffer's `blocks`, captured one after the other with `counts`, copied to where the
+  /// blocks lie in the stored buffer.
+  void copy_into_place(const std::vector<int>& blocks, const std::vector<long long>& counts);
   /// The stored vertices of `blocks` changed, captured again in the tessellation they had (each keeps
   /// its welded vertex), or where empty all of them: welds them now or, when settled, later.
   void weld(const std::vector<int>& blocks = {});

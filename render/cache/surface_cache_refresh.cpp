@@ -101,6 +101,17 @@ bool SurfaceCache::capture_again(const std::vector<int>& blocks, const DrawPatch
   bool same_counts = true;
   for (size_t i = 0; i < blocks.size(); ++i) same_counts = same_counts && counts[i] == blocks_.triangles(blocks[i]);
   if (!same_counts) return assemble(blocks, counts);
+  copy_into_place(blocks, counts);
+  // Their tessellation kept: their vertices keep their welded ones; else (levels changed, the counts
+  // alike) welded anew.
+  if (kept)
+    weld(blocks);
+  else
+    weld();
+  return true;
+}
+
+void SurfaceCache::copy_into_place(const std::vector<int>& blocks, const std::vector<long long>& counts) {
   long long from = 0;
   for (size_t i = 0; i < blocks.size(); ++i) {
     if (counts[i] > 0)
@@ -109,13 +120,6 @@ bool SurfaceCache::capture_again(const std::vector<int>& blocks, const DrawPatch
                                GLsizeiptr(counts[i] * 3 * kCapturedVertexBytes));
     from += counts[i];
   }
-  // Their tessellation kept: their vertices keep their welded ones; else (levels changed, the counts
-  // alike) welded anew.
-  if (kept)
-    weld(blocks);
-  else
-    weld();
-  return true;
 }
 
 bool SurfaceCache::refreshed(const Key& key) {
@@ -144,14 +148,7 @@ bool SurfaceCache::assemble(const std::vector<int>& blocks, const std::vector<lo
   if (first_changed < blocks.size() && total <= capacity_ &&
       blocks.size() - first_changed == size_t(blocks_.size() - blocks[first_changed])) {
     blocks_.replace_counts(blocks, counts);
-    long long from = 0;
-    for (size_t i = 0; i < blocks.size(); ++i) {
-      if (counts[i] > 0)
-        glCopyNamedBufferSubData(scratch_, buffer_, GLintptr(from * 3 * kCapturedVertexBytes),
-                                 GLintptr(blocks_.first_triangle(blocks[i]) * 3 * kCapturedVertexBytes),
-                                 GLsizeiptr(counts[i] * 3 * kCapturedVertexBytes));
-      from += counts[i];
-    }
+    copy_into_place(blocks, counts);
     weld();
     return true;
   }
