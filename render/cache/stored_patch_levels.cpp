@@ -39,6 +39,7 @@ void StoredPatchLevels::reserve(int n_patches) {
 }
 
 void StoredPatchLevels::follow(int n_patches, const std::vector<SurfaceBlocks::Moved>& moved) {
+  if (moved.empty()) return;  // not followed: the next capture records every patch
   const int capacity = std::max(n_patches, 1);
   glNamedBufferData(spare_, GLsizeiptr(capacity) * kBytesPerPatch, nullptr, GL_DYNAMIC_COPY);
   for (const SurfaceBlocks::Moved& m : moved)

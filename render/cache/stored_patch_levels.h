@@ -39,7 +39,7 @@ public:
   void record(PatchShape shape, int n_patches, int group_limit);
   /// The levels of the patches of `moved` blocks (SurfaceCache::topology_changed) under their new
   /// numbers, with room for `n_patches`; the others' are checked and kept when their blocks are
-  /// captured again, or recorded by the next capture.
+  /// captured again. None moved (the change not followed): nothing, the next capture records all.
   void follow(int n_patches, const std::vector<SurfaceBlocks::Moved>& moved);
   /// Per block of `blocks`: whether any of its patches' levels differ from those kept; then keeps
   /// the new ones (the blocks are brought to them: evaluated again where unchanged, else captured).
