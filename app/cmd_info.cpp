@@ -46,8 +46,9 @@ std::string after_repair(PolygonSoup&& repaired, bool has_covariances, const std
   try {
     const CovarianceMesh m = read_mesh_of_soup(std::move(repaired), has_covariances, path, options, nullptr, &unmended);
     return "after --repair: " + plural(int(m.n_vertices()), "vertex", "vertices") + ", " +
-           plural(int(m.n_faces()), "face", "faces") + ", " + surface_line(surface_counts(m.mesh)) + ", scheme " +
-           scheme_name(scheme_for(topology_of(m.mesh), PlanOptions{})) + "\n";
+           plural(int(m.n_faces()), "face", "faces") + ", " +
+           surface_line(surface_counts(m.topology(), m.connectivity())) + ", scheme " +
+           scheme_name(scheme_for(m.topology(), PlanOptions{})) + "\n";
   } catch (const Error& e) {
     const ElementNumbering numbering = element_numbering_for(path, unmended);
     std::vector<std::string> lines = unmended.problems(numbering, true);
@@ -97,22 +98,22 @@ void print_info(const std::string& path, const RepairArguments& repair) {
       throw;
     }
   }();
-  // The counts are read off the mesh's half-edges: no second adjacency of the size of the mesh.
-  const PolyMesh& mesh = m.mesh;
+  // The counts are read off the mesh's own connectivity: no second adjacency of the size of the mesh.
   std::map<int, int> face_sizes, valences;
-  for (const auto f : mesh.faces()) ++face_sizes[int(mesh.valence(f))];
+  for (size_t f = 0; f < m.n_faces(); ++f) ++face_sizes[m.face_size(f)];
   // Extraordinary by the rules of the scheme the surface is drawn with: regular interior valence 4
   // and boundary 3 under Catmull-Clark, 6 and 4 under Loop (a corner, of one face and two edges, is
   // neither).
-  const Scheme scheme = scheme_for(topology_of(mesh), PlanOptions{});
+  const Scheme scheme = scheme_for(m.topology(), PlanOptions{});
   const int regular_interior = scheme == Scheme::loop ? 6 : 4, regular_boundary = scheme == Scheme::loop ? 4 : 3;
   int boundary_edges = 0, extraordinary = 0;
-  for (const auto e : mesh.edges()) boundary_edges += mesh.is_boundary(e);
-  for (const auto v : mesh.vertices()) {
-    const int valence = int(mesh.valence(v));
+  for (size_t e = 0; e < m.n_edges(); ++e) boundary_edges += m.is_boundary_edge(e);
+  for (size_t v = 0; v < m.n_vertices(); ++v) {
+    const int valence = m.valence(v);
     ++valences[valence];
     if (valence == 0) continue;
-    extraordinary += mesh.is_boundary(v) ? valence != 2 && valence != regular_boundary : valence != regular_interior;
+    extraordinary +=
+        m.is_boundary_vertex(v) ? valence != 2 && valence != regular_boundary : valence != regular_interior;
   }
   double lo = std::numeric_limits<double>::infinity(), hi = 0;
   for (const Mat3& s : m.covariances) {
@@ -124,9 +125,9 @@ void print_info(const std::string& path, const RepairArguments& repair) {
   const char* sep = "";
   for (const auto& [size, count] : face_sizes)
     std::cout << std::exchange(sep, ", ") << count << " with " << size << " sides";
-  std::cout << ")\nedges: " << mesh.n_edges() << "\nboundary edges: " << boundary_edges << "\nvalences:";
+  std::cout << ")\nedges: " << m.n_edges() << "\nboundary edges: " << boundary_edges << "\nvalences:";
   for (const auto& [valence, count] : valences) std::cout << ' ' << valence << ':' << count;
-  std::cout << "\nsurface: " << surface_line(surface_counts(mesh))
+  std::cout << "\nsurface: " << surface_line(surface_counts(m.topology(), m.connectivity()))
             << "\nscheme: " << (scheme == Scheme::loop ? "Loop (a mesh of triangles)" : "Catmull-Clark")
             << "\nextraordinary vertices: " << extraordinary << " (by " << scheme_name(scheme) << "'s rules)\n";
   std::cout << "covariance eigenvalues: " << lo << " .. " << hi << "\n";

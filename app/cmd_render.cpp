@@ -91,8 +91,7 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   const Camera camera =
       render_camera(renderer, mesh, a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3),
                     up_axis_named(a.up), o, width, height);
-  if (a.reference >= 1 && a.reference <= 6 &&
-      scheme_for(topology_of(mesh.mesh), a.plans.options()) == Scheme::catmull_clark) {
+  if (a.reference >= 1 && a.reference <= 6 && scheme_for(mesh.topology(), a.plans.options()) == Scheme::catmull_clark) {
     // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level
     // then shows the two surfaces' values alone, not two draws' rounding (render/comparison/reference_triangles.h).
     DrawOptions at_level = o;

@@ -59,8 +59,9 @@ void add_simplify_command(CLI::App& app) {
     if (vertices->count() == 0 && ratio->count() == 0 && error->count() == 0)
       throw usage_error("simplify: give --vertices N, --ratio R or --error E");
     // Simplifying uses the input's faces only: no covariances inferred for it.
-    const CovarianceMesh input = read_mesh_repairing(
-        args->input, args->repair, ImportOptions{.covariance = ImportOptions::Covariance::isotropic}, args->quiet);
+    ImportOptions import;
+    import.covariance = ImportOptions::Covariance::isotropic;
+    const CovarianceMesh input = read_mesh_repairing(args->input, args->repair, import, args->quiet);
     SimplifyOptions options;
     options.bias = args->bias;
     options.max_normal_deviation_degrees = args->max_normal_deviation;

@@ -36,7 +36,7 @@ void add_subdivide_command(CLI::App& app) {
     const CovarianceMesh m = read_mesh_repairing(args->input, args->repair);
     const PlanOptions named = plan_options_named(args->scheme, args->beta);
     SubdivisionOptions o;
-    o.scheme = scheme_for(topology_of(m.mesh), named);
+    o.scheme = scheme_for(m.topology(), named);
     o.levels = args->levels;
     o.limit = args->limit;
     o.loop_beta = named.loop_beta;

@@ -46,11 +46,12 @@ gps::CovarianceMesh creased_sample(const MeshCase& m, double sharpness) {
     return mesh;
   }
   const double diag = gps::bounding_box_diagonal(mesh);
-  for (const auto& e : mesh.mesh.edges()) {
-    const gps::Vec3 a = gps::to_vec3(mesh.mesh.point(e.v0())), b = gps::to_vec3(mesh.mesh.point(e.v1()));
+  for (size_t e = 0; e < mesh.n_edges(); ++e) {
+    const auto [v0, v1] = mesh.edge(e);
+    const gps::Vec3 &a = mesh.mean(size_t(v0)), &b = mesh.mean(size_t(v1));
     for (int axis = 0; axis < 3; ++axis)
       if (std::abs(a[axis]) < 1e-9 * diag && std::abs(b[axis]) < 1e-9 * diag)
-        mesh.sharpness.set_crease(e.v0().idx(), e.v1().idx(), sharpness);
+        mesh.sharpness.set_crease(v0, v1, sharpness);
   }
   return mesh;
 }
@@ -73,7 +74,7 @@ void BM_Frame(benchmark::State& state, MeshCase m, int kind, int level) {
 // Plans and stencils of the mesh (CPU), with the tables' bytes.
 void BM_Preprocess(benchmark::State& state, MeshCase m, int kind) {
   const gps::CovarianceMesh& mesh = sample(m, kind);
-  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  const gps::PolygonTopology& topology = mesh.topology();
   size_t bytes = 0, rows = 0, nodes = 0;
   for (auto _ : state) {
     const gps::SurfaceTables t = gps::build_surface_plans(topology, gps::PlanOptions{}, mesh.sharpness);
@@ -93,11 +94,11 @@ void BM_Preprocess(benchmark::State& state, MeshCase m, int kind) {
 void BM_SharpnessChange(benchmark::State& state, MeshCase m) {
   using Clock = std::chrono::steady_clock;
   gps::CovarianceMesh mesh = sample(m, 2);
-  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  const gps::PolygonTopology& topology = mesh.topology();
   const gps::PlanOptions options;
   gps::SurfaceReplanner replanner(topology, options, mesh.sharpness);
   std::vector<std::pair<int, int>> edges;
-  for (const auto& e : mesh.mesh.edges()) edges.emplace_back(e.v0().idx(), e.v1().idx());
+  for (size_t e = 0; e < mesh.n_edges(); ++e) edges.emplace_back(mesh.edge(e)[0], mesh.edge(e)[1]);
   double full_plans = 0, incremental_plans = 0, full_surface = 0, incremental_surface = 0;
   size_t changes = 0, faces = 0;
   for (auto _ : state) {

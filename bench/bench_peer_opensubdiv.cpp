@@ -67,7 +67,7 @@ void BM_ReferenceOurs(benchmark::State& state) {
 void BM_ReferenceOsd(benchmark::State& state) {
   const gps::CovarianceMesh mesh = gps::make_sample("sphere", int(state.range(0)));
   const int levels = int(state.range(1));
-  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  const gps::PolygonTopology& topology = mesh.topology();
   size_t n_out = 0;
   for (auto _ : state) {
     std::vector<int> sizes;
@@ -112,14 +112,14 @@ void BM_ReferenceOsd(benchmark::State& state) {
 
 void BM_PreprocessOurs(benchmark::State& state) {
   const gps::CovarianceMesh mesh = gps::make_sample("sphere", int(state.range(0)));
-  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  const gps::PolygonTopology& topology = mesh.topology();
   for (auto _ : state) benchmark::DoNotOptimize(gps::build_plans(topology, 3));
   counters(state, mesh);
 }
 
 void BM_PreprocessOsd(benchmark::State& state) {
   const gps::CovarianceMesh mesh = gps::make_sample("sphere", int(state.range(0)));
-  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  const gps::PolygonTopology& topology = mesh.topology();
   for (auto _ : state) {
     std::vector<int> sizes;
     const auto refiner = make_refiner(topology, sizes);

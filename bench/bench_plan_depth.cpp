@@ -65,7 +65,7 @@ void BM_Frame(benchmark::State& state, MeshCase m, int kind, int level) {
 // Plans and stencils of the mesh (CPU), with the tables' bytes per face.
 void BM_Preprocess(benchmark::State& state, MeshCase m, int kind) {
   const gps::CovarianceMesh& mesh = sample(m);
-  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  const gps::PolygonTopology& topology = mesh.topology();
   size_t bytes = 0, rows = 0;
   for (auto _ : state) {
     const gps::SurfaceTables t = gps::build_surface_plans(topology, plan_kinds()[size_t(kind)].options);

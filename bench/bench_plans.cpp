@@ -28,7 +28,7 @@ struct Prepared {
 
 Prepared prepare(const Case& c) {
   Prepared p{gps::make_sample(c.name, c.size), {}, {}};
-  p.tables = gps::build_plans(gps::topology_of(p.mesh.mesh), 3);
+  p.tables = gps::build_plans(p.mesh.topology(), 3);
   p.q = gps::base_points(p.mesh);
   return p;
 }
@@ -44,7 +44,7 @@ void label(benchmark::State& state, const Case& c, const Prepared& p) {
 void BM_BuildPlans(benchmark::State& state) {
   const Case& c = kCases[state.range(0)];
   const Prepared p = prepare(c);
-  const gps::PolygonTopology topology = gps::topology_of(p.mesh.mesh);
+  const gps::PolygonTopology& topology = p.mesh.topology();
   for (auto _ : state) benchmark::DoNotOptimize(gps::build_plans(topology, 3));
   label(state, c, p);
   state.counters["us_per_face"] = benchmark::Counter(

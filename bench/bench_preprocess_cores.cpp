@@ -24,7 +24,7 @@ double peak_rss_bytes() {
 
 void BM_BuildPlansOnCores(benchmark::State& state) {
   const gps::CovarianceMesh& mesh = sphere();
-  const gps::PolygonTopology topology = gps::topology_of(mesh.mesh);
+  const gps::PolygonTopology& topology = mesh.topology();
   omp_set_num_threads(int(state.range(0)));
   size_t table_bytes = 0;
   for (auto _ : state) {

@@ -62,7 +62,7 @@ nlohmann::json frame_figures(const std::string& name, int faces, const PlanOptio
     const double n = double(triangles.triangles.size());
     const double floor_ms = n > 0 ? floor.wall_ms : std::nan("");
     rows.push_back({{"mesh", name + (faces ? "/" + std::to_string(faces) : "")},
-                    {"faces", mesh.mesh.n_faces()},
+                    {"faces", mesh.n_faces()},
                     {"patches", renderer.tables().plans.n_patches()},
                     {"level", o.pixels > 0.0f ? 0 : int(o.level)},
                     {"adaptive_pixels", o.pixels},

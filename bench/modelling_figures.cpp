@@ -13,7 +13,6 @@
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/merge_vertices.h"
 #include "core/modelling/subdivide_mesh.h"
-#include "core/plans/patch_layout.h"
 #include "core/plans/surface_replanner.h"
 #include "core/support/median.h"
 #include "render/gl/render_target.h"
@@ -36,7 +35,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   DrawOptions draw;
   draw.pixels = 6.0f;
   const Camera camera = frame_mesh(mesh);
-  const PolygonTopology topology = topology_of(mesh.mesh);
+  const PolygonTopology& topology = mesh.topology();
   SurfaceReplanner replanner(topology, options, mesh.sharpness);
   renderer.set_mesh(mesh, replanner.tables(), NormalisedFrame::of(mesh), replanner.last_change(), {});
   renderer.draw(target, camera, draw);
@@ -44,7 +43,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
 
   // The operations, each on a face, edge or vertex in the middle of the mesh.
   const int f = int(mesh.n_faces() / 2);
-  const std::vector<int> corners = face_vertices(mesh.mesh, PolyMesh::FaceHandle(f));
+  const std::span<const int> corners = mesh.face(size_t(f));
   const std::vector<std::pair<std::string, std::function<Modelled(const CovarianceMesh&)>>> operations = {
       {"extrude 1 face", [&](const CovarianceMesh& m) { return extrude_faces(m, {f}, 0.01); }},
       {"inset 1 face", [&](const CovarianceMesh& m) { return inset_faces(m, {f}, 1e-3); }},
@@ -70,8 +69,8 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       const Modelled result = operation(mesh);
       op_s.push_back(seconds_since(start));
       const Clock::time_point planning = Clock::now();
-      const PolygonTopology after = topology_of(result.mesh.mesh);
-      planned = replanner.set_topology(after, result.mesh.sharpness, result.vertex_origin);
+      const PolygonTopology& after = result.mesh.topology();
+      planned = replanner.set_topology(result.mesh, result.vertex_origin);
       plan_s.push_back(seconds_since(planning));
       const Clock::time_point uploading = Clock::now();
       renderer.set_mesh(result.mesh, replanner.tables(), NormalisedFrame::of(result.mesh), replanner.last_change(),
@@ -95,7 +94,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       const SurfaceTables whole = build_surface_plans(after, options, result.mesh.sharpness);
       full_s.push_back(seconds_since(full));
       const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
-      replanner.set_topology(topology, mesh.sharpness, back);
+      replanner.set_topology(mesh, back);
       renderer.set_mesh(mesh, replanner.tables(), NormalisedFrame::of(mesh), replanner.last_change(), back);
     }
     rows.push_back({{"operation", label},

@@ -9,7 +9,7 @@ namespace gps {
 
 nlohmann::json preprocess_figures(const std::string& name, int size, const PlanOptions& options) {
   const CovarianceMesh mesh = make_sample(name, size);
-  const PolygonTopology topology = topology_of(mesh.mesh);
+  const PolygonTopology& topology = mesh.topology();
   SurfaceTables tables;
   const double preprocess = median_seconds([&] { tables = build_surface_plans(topology, options); });
   std::vector<Dual> q = base_points(mesh);

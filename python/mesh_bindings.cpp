@@ -73,8 +73,7 @@ Sharpness with_creases(const CovarianceMesh& c, const std::vector<Crease>& creas
                             " names a vertex out of range 0.." + std::to_string(c.n_vertices() - 1));
     s.set_crease(a, b, sharpness);
   }
-  const PolygonTopology t = topology_of(c.mesh);
-  crease_level(s, connectivity_of(t), t.n_vertices);  // throws for a pair that is not an edge
+  crease_level(s, c.connectivity(), int(c.n_vertices()));  // throws for a pair that is not an edge
   return s;
 }
 
@@ -97,7 +96,7 @@ std::vector<double> corners_from(const CovarianceMesh& c, const DoubleArray& cor
 // What a pickled Mesh holds: positions, faces (offsets and indices), covariances, creases, corners.
 py::tuple state_of(const MeshHandle& h) {
   const CovarianceMesh& c = *h.mesh;
-  const PolygonTopology t = topology_of(c.mesh);
+  const PolygonTopology& t = c.topology();
   return py::make_tuple(rows_to_array(means_of(c)), int_array(t.offsets), int_array(t.verts),
                         matrices_to_array(c.covariances), creases_of(c), double_array(c.sharpness.corners));
 }
@@ -170,14 +169,14 @@ void add_mesh_bindings(py::module_& m) {
           },
           "the covariances, an (n, 3, 3) read-only array; assign an (n, 3, 3) array to change them")
       .def_property_readonly(
-          "faces", [](const MeshHandle& h) { return read_only(faces_to_array(topology_of(h.mesh->mesh))); },
+          "faces", [](const MeshHandle& h) { return read_only(faces_to_array(h.mesh->topology())); },
           "the faces as an (m, k) read-only int32 array of vertex indices (from 0); ValueError for a mesh with faces "
           "of several sizes, whose faces are face_offsets and face_indices")
       .def_property_readonly(
-          "face_offsets", [](const MeshHandle& h) { return read_only(int_array(topology_of(h.mesh->mesh).offsets)); },
+          "face_offsets", [](const MeshHandle& h) { return read_only(int_array(h.mesh->topology().offsets)); },
           "face f's vertices are face_indices[face_offsets[f]:face_offsets[f + 1]] (m + 1 offsets, read-only)")
       .def_property_readonly(
-          "face_indices", [](const MeshHandle& h) { return read_only(int_array(topology_of(h.mesh->mesh).verts)); },
+          "face_indices", [](const MeshHandle& h) { return read_only(int_array(h.mesh->topology().verts)); },
           "every face's vertex indices, one face after another (read-only int32)")
       .def_property(
           "creases", [](const MeshHandle& h) { return py::tuple(py::cast(creases_of(*h.mesh))); },
@@ -341,7 +340,7 @@ void add_mesh_bindings(py::module_& m) {
         return call_in_background(
             [=, source = mesh.mesh](CallControl&) {
               SubdivisionOptions o;
-              o.scheme = scheme_for(topology_of(source->mesh), named);
+              o.scheme = scheme_for(source->topology(), named);
               o.levels = levels;
               o.limit = limit;
               o.loop_beta = named.loop_beta;

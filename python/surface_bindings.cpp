@@ -83,7 +83,7 @@ std::vector<int> changed_vertices(const CovarianceMesh& before, const Covariance
 std::string topology_change(const CovarianceMesh& before, const CovarianceMesh& after) {
   if (before.n_vertices() != after.n_vertices())
     return std::to_string(after.n_vertices()) + " vertices, the surface's mesh " + std::to_string(before.n_vertices());
-  const PolygonTopology a = topology_of(before.mesh), b = topology_of(after.mesh);
+  const PolygonTopology &a = before.topology(), &b = after.topology();
   if (a.offsets != b.offsets || a.verts != b.verts) return "other faces than the surface's mesh";
   if (!(before.sharpness == after.sharpness)) return "other creases or corners than the surface's mesh";
   return "";
@@ -158,7 +158,9 @@ void add_surface_bindings(py::module_& m) {
           "4 (quads, domain [0,1]^2) or 3 (triangles, u, v >= 0, u + v <= 1)")
       .def_property_readonly(
           "patch_faces",
-          [](const SurfaceHandle& h) { return read_only(int_array(patch_faces(h.mesh->mesh, h.surface->tables().plans))); },
+          [](const SurfaceHandle& h) {
+            return read_only(int_array(patch_faces(h.mesh->topology(), h.surface->tables().plans)));
+          },
           "the face of the mesh each patch lies on, an (n_patches,) read-only int32 array: one patch per quad or "
           "triangle, a face of k != 4 sides under Catmull-Clark k patches")
       .def_property_readonly(

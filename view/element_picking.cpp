@@ -26,10 +26,9 @@ std::optional<std::array<int, 2>> pick_edge(const Viewport& view, glm::vec2 pixe
   constexpr float kTie = 0.5f;
   std::optional<std::array<int, 2>> best;
   float best_distance = radius, best_depth = std::numeric_limits<float>::infinity();
-  const PolyMesh& m = mesh.mesh;
-  for (const auto e : m.edges()) {
-    if (hidden && size_t(e.idx()) < hidden->size() && (*hidden)[size_t(e.idx())]) continue;
-    const int a = e.v0().idx(), b = e.v1().idx();
+  for (size_t e = 0; e < mesh.n_edges(); ++e) {
+    if (hidden && e < hidden->size() && (*hidden)[e]) continue;
+    const auto [a, b] = mesh.edge(e);
     const auto& pa = projected[size_t(a)];
     const auto& pb = projected[size_t(b)];
     if (!pa || !pb) continue;
@@ -55,16 +54,15 @@ int pick_face(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh,
   const glm::vec2 s = pixel + glm::vec2(0.5f);
   int best = -1;
   float best_depth = std::numeric_limits<float>::infinity();
-  const PolyMesh& m = mesh.mesh;
   std::vector<glm::vec3> corners;
-  for (const auto f : m.faces()) {
-    if (hidden && size_t(f.idx()) < hidden->size() && (*hidden)[size_t(f.idx())]) continue;
+  for (size_t f = 0; f < mesh.n_faces(); ++f) {
+    if (hidden && f < hidden->size() && (*hidden)[f]) continue;
     corners.clear();
-    for (const auto v : m.fv_range(f)) {
-      if (!projected[size_t(v.idx())]) break;
-      corners.push_back(*projected[size_t(v.idx())]);
+    for (const int v : mesh.face(f)) {
+      if (!projected[size_t(v)]) break;
+      corners.push_back(*projected[size_t(v)]);
     }
-    if (corners.size() != m.valence(f)) continue;
+    if (corners.size() != size_t(mesh.face_size(f))) continue;
     for (size_t k = 1; k + 1 < corners.size(); ++k) {
       const glm::vec2 a(corners[0]), b(corners[k]), c(corners[k + 1]);
       const float area = cross(b - a, c - a);
@@ -72,7 +70,7 @@ int pick_face(const Viewport& view, glm::vec2 pixel, const CovarianceMesh& mesh,
       const float wa = cross(c - b, s - b) / area, wb = cross(a - c, s - c) / area, wc = cross(b - a, s - a) / area;
       if (wa < 0.0f || wb < 0.0f || wc < 0.0f) continue;
       const float depth = wa * corners[0].z + wb * corners[k].z + wc * corners[k + 1].z;
-      if (depth < best_depth) best_depth = depth, best = f.idx();
+      if (depth < best_depth) best_depth = depth, best = int(f);
     }
   }
   return best;

@@ -54,7 +54,6 @@ std::optional<SnapPoint> find_snap_point(const CovarianceMesh& mesh, const Viewp
   std::vector<bool> moves(mesh.n_vertices(), false);
   for (const int v : moving)
     if (v >= 0 && size_t(v) < moves.size()) moves[size_t(v)] = true;
-  const PolyMesh& m = mesh.mesh;
   switch (target) {
     case SnapTarget::increment:
       return std::nullopt;
@@ -70,8 +69,8 @@ std::optional<SnapPoint> find_snap_point(const CovarianceMesh& mesh, const Viewp
       const Vec3 o = to_vec(ray.origin), d = to_vec(ray.direction);
       std::optional<SnapPoint> best;
       float best_distance = radius;
-      for (const auto e : m.edges()) {
-        const int a = e.v0().idx(), b = e.v1().idx();
+      for (size_t e = 0; e < mesh.n_edges(); ++e) {
+        const auto [a, b] = mesh.edge(e);
         if (moves[size_t(a)] || moves[size_t(b)]) continue;
         const Vec3 pa = mesh.mean(size_t(a)), pb = mesh.mean(size_t(b));
         const Vec3 point = pa + closest_on_segment(pa, pb, o, d) * (pb - pa);
@@ -89,19 +88,13 @@ std::optional<SnapPoint> find_snap_point(const CovarianceMesh& mesh, const Viewp
       const Vec3 o = to_vec(ray.origin), d = to_vec(ray.direction);
       double best_t = std::numeric_limits<double>::infinity();
       int best_face = -1;
-      std::vector<int> corners;
-      for (const auto f : m.faces()) {
-        corners.clear();
-        bool touches = false;
-        for (const auto v : m.fv_range(f)) {
-          corners.push_back(v.idx());
-          touches = touches || moves[size_t(v.idx())];
-        }
-        if (touches) continue;
+      for (size_t f = 0; f < mesh.n_faces(); ++f) {
+        const std::span<const int> corners = mesh.face(f);
+        if (std::any_of(corners.begin(), corners.end(), [&](int v) { return moves[size_t(v)]; })) continue;
         for (size_t k = 1; k + 1 < corners.size(); ++k) {
           const double t = ray_triangle(o, d, mesh.mean(size_t(corners[0])), mesh.mean(size_t(corners[k])),
                                         mesh.mean(size_t(corners[k + 1])));
-          if (t < best_t) best_t = t, best_face = f.idx();
+          if (t < best_t) best_t = t, best_face = int(f);
         }
       }
       if (best_face < 0) return std::nullopt;

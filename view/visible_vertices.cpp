@@ -62,17 +62,12 @@ std::vector<char> visible_vertices(const Viewport& view, const CovarianceMesh& m
   for (size_t i = 0; i < n; ++i)
     if (const auto p = visible_pixel(view.camera, view.width, view.height, mesh.mean(i))) projected[i] = {*p, true};
 
-  const PolyMesh& m = mesh.mesh;
   DepthBuffer buffer(view.width, view.height);
   std::vector<char> has_face(n, 0), faces_camera(n, 0);
-  std::vector<int> corners;
-  for (const auto f : m.faces()) {
-    corners.clear();
+  for (size_t f = 0; f < mesh.n_faces(); ++f) {
+    const std::span<const int> corners = mesh.face(f);
     bool complete = true;
-    for (const auto v : m.fv_range(f)) {
-      corners.push_back(v.idx());
-      complete = complete && projected[size_t(v.idx())].valid;
-    }
+    for (const int v : corners) complete = complete && projected[size_t(v)].valid;
     for (const int v : corners) has_face[size_t(v)] = 1;
     if (!complete) continue;  // a face crossing the near or far plane hides nothing here
     // Shoelace area in window pixels (y down): a face that faces the camera winds clockwise there.
@@ -86,7 +81,7 @@ std::vector<char> visible_vertices(const Viewport& view, const CovarianceMesh& m
       for (const int v : corners) faces_camera[size_t(v)] = 1;
     for (size_t k = 1; k + 1 < corners.size(); ++k)
       buffer.draw(projected[size_t(corners[0])].p, projected[size_t(corners[k])].p, projected[size_t(corners[k + 1])].p,
-                  f.idx());
+                  int(f));
   }
 
   const double tolerance = 1e-3 * bounding_box_diagonal(mesh);
@@ -100,9 +95,10 @@ std::vector<char> visible_vertices(const Viewport& view, const CovarianceMesh& m
     if (x < 0 || y < 0 || x >= view.width || y >= view.height) continue;
     const int front_face = buffer.face(x, y);
     const auto own = [&](int face) {
-      for (const auto f : m.vf_range(m.vertex_handle(int(i))))
-        if (f.idx() == face) return true;
-      return false;
+      const MeshConnectivity& c = mesh.connectivity();
+      return std::find(c.vertex_faces.begin() + c.vertex_face_offsets[i],
+                       c.vertex_faces.begin() + c.vertex_face_offsets[i + 1],
+                       face) != c.vertex_faces.begin() + c.vertex_face_offsets[i + 1];
     };
     // The vertex's depth moved towards the camera by the tolerance, against the buffer's.
     const auto nearer =

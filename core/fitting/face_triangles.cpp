@@ -1,15 +1,15 @@
 #include "core/fitting/face_triangles.h"
 
+#include <span>
+
 namespace gps {
 
 TriangleMesh face_triangles(const CovarianceMesh& mesh) {
   TriangleMesh result;
-  result.positions.reserve(mesh.n_vertices());
-  for (size_t i = 0; i < mesh.n_vertices(); ++i) result.positions.push_back(mesh.mean(i));
+  result.positions = mesh.means();
   result.normals.assign(result.positions.size(), Vec3::Zero());
-  for (const auto face : mesh.mesh.faces()) {
-    std::vector<int> corners;
-    for (const auto v : mesh.mesh.fv_range(face)) corners.push_back(v.idx());
+  for (size_t f = 0; f < mesh.n_faces(); ++f) {
+    const std::span<const int> corners = mesh.face(f);
     for (size_t k = 1; k + 1 < corners.size(); ++k)
       result.triangles.push_back({corners[0], corners[k], corners[k + 1]});
   }

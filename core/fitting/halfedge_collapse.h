@@ -11,7 +11,15 @@
 
 namespace gps {
 
-using CollapseMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
+struct CollapseMeshTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+/// The decimation's own triangle mesh: OpenMesh's, with double-precision points.
+using CollapseMesh = OpenMesh::TriMesh_ArrayKernelT<CollapseMeshTraits>;
+
+inline Vec3 to_vec3(const OpenMesh::Vec3d& p) { return Vec3(p[0], p[1], p[2]); }
+inline OpenMesh::Vec3d to_point(const Vec3& v) { return OpenMesh::Vec3d(v[0], v[1], v[2]); }
 
 struct HalfedgeCollapses {
   /// The priority of collapsing `from` into `into` (which keeps its position), lower first; a

@@ -87,14 +87,15 @@ public:
     std::vector<Eigen::Triplet<double>> lap;
     double edge_sum = 0;
     size_t edges = 0;
-    for (const auto v : coarse.mesh.vertices()) {
-      const int i = v.idx();
-      const double degree = double(coarse.mesh.valence(v));
+    const MeshConnectivity& c = coarse.connectivity();
+    for (int i = 0; i < int(coarse.n_vertices()); ++i) {
+      const double degree = double(coarse.valence(size_t(i)));
       lap.emplace_back(i, i, degree > 0 ? -1.0 : 0.0);
       double own_sum = 0;
-      for (const auto w : coarse.mesh.vv_range(v)) {
-        lap.emplace_back(i, w.idx(), 1.0 / degree);
-        own_sum += (start.mean(size_t(i)) - start.mean(size_t(w.idx()))).norm();
+      for (int k = c.vertex_edge_offsets[size_t(i)]; k < c.vertex_edge_offsets[size_t(i) + 1]; ++k) {
+        const int w = c.other_vertex(c.vertex_edges[size_t(k)], i);
+        lap.emplace_back(i, w, 1.0 / degree);
+        own_sum += (start.mean(size_t(i)) - start.mean(size_t(w))).norm();
         ++edges;
       }
       edge_sum += own_sum;
@@ -441,8 +442,9 @@ private:
 CovarianceMesh with_isotropic_covariances(const CovarianceMesh& mesh) {
   double sum = 0;
   size_t count = 0;
-  for (const auto e : mesh.mesh.edges()) {
-    sum += mesh.mesh.calc_edge_length(e);
+  for (size_t e = 0; e < mesh.n_edges(); ++e) {
+    const auto [low, high] = mesh.edge(e);
+    sum += (mesh.mean(size_t(high)) - mesh.mean(size_t(low))).norm();
     ++count;
   }
   const double sigma = count > 0 && sum > 0 ? 0.5 * sum / double(count) : 1.0;

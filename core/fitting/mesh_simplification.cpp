@@ -7,6 +7,8 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
+// QuadricT.hh uses vector_traits without including it.
+#include <OpenMesh/Core/Utils/vector_traits.hh>
 #include <OpenMesh/Core/Geometry/QuadricT.hh>
 
 #include "core/fitting/halfedge_collapse.h"
@@ -59,17 +61,17 @@ CollapseMesh triangles_of(const CovarianceMesh& input, bool& triangulated, doubl
   const Vec3 centre = 0.5 * (lo + hi);
   scale = (hi - lo).norm() > 0 ? (hi - lo).norm() : 1.0;
   CollapseMesh t;
-  t.reserve(input.n_vertices(), input.mesh.n_edges(), input.n_faces());
-  for (const auto v : input.mesh.vertices()) t.add_vertex(to_point((to_vec3(input.mesh.point(v)) - centre) / scale));
+  t.reserve(input.n_vertices(), input.n_edges(), input.n_faces());
+  for (const Vec3& mean : input.means()) t.add_vertex(to_point((mean - centre) / scale));
   triangulated = false;
   std::vector<CollapseMesh::VertexHandle> corners;
-  for (const auto f : input.mesh.faces()) {
+  for (size_t f = 0; f < input.n_faces(); ++f) {
     corners.clear();
-    for (const auto v : input.mesh.fv_range(f)) corners.push_back(CollapseMesh::VertexHandle(v.idx()));
+    for (const int v : input.face(f)) corners.push_back(CollapseMesh::VertexHandle(v));
     triangulated = triangulated || corners.size() > 3;
     for (size_t k = 1; k + 1 < corners.size(); ++k)
       if (!t.add_face(corners[0], corners[k], corners[k + 1]).is_valid())
-        throw Error("face " + std::to_string(f.idx()) +
+        throw Error("face " + std::to_string(f) +
                     ": fanning the faces of more than 3 sides into triangles makes an edge of it non-manifold");
   }
   return t;

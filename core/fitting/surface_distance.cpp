@@ -157,12 +157,7 @@ double bounding_box_diagonal(const std::vector<Vec3>& points) {
   return (hi - lo).norm();
 }
 
-std::vector<Vec3> vertex_means(const CovarianceMesh& mesh) {
-  std::vector<Vec3> points;
-  points.reserve(mesh.n_vertices());
-  for (const auto v : mesh.mesh.vertices()) points.push_back(to_vec3(mesh.mesh.point(v)));
-  return points;
-}
+std::vector<Vec3> vertex_means(const CovarianceMesh& mesh) { return mesh.means(); }
 
 DistanceSummary distances_to_surface(const std::vector<Vec3>& points, const TriangleMesh& surface) {
   const double diagonal = bounding_box_diagonal(points);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <vector>
 
 namespace gps {
@@ -22,17 +23,26 @@ struct Candidate {
 }  // namespace
 
 size_t pair_triangles(CovarianceMesh& mesh, const TrianglePairing& limits) {
-  const PolyMesh& m = mesh.mesh;
+  const PolygonTopology& t = mesh.topology();
+  const MeshConnectivity& connectivity = mesh.connectivity();
+  const size_t n_faces = mesh.n_faces();
   std::vector<Candidate> candidates;
-  for (const auto e : m.edges()) {
-    if (m.is_boundary(e)) continue;
-    const auto h = m.halfedge_handle(e, 0), o = m.opposite_halfedge_handle(h);
-    const auto f0 = m.face_handle(h), f1 = m.face_handle(o);
-    if (m.valence(f0) != 3 || m.valence(f1) != 3) continue;
-    const int p1 = m.from_vertex_handle(h).idx(), p2 = m.to_vertex_handle(h).idx();
+  for (size_t e = 0; e < mesh.n_edges(); ++e) {
+    if (mesh.is_boundary_edge(e)) continue;
+    const int g0 = connectivity.edge_faces[2 * e], g1 = connectivity.edge_faces[2 * e + 1];
+    if (mesh.face_size(size_t(g0)) != 3 || mesh.face_size(size_t(g1)) != 3) continue;
+    const auto [p1, p2] = mesh.edge(e);
     if (mesh.sharpness.crease(p1, p2) > 0) continue;
-    const int p0 = m.to_vertex_handle(m.next_halfedge_handle(h)).idx();
-    const int q = m.to_vertex_handle(m.next_halfedge_handle(o)).idx();
+    // Each triangle's vertex off the edge, and whether the triangle runs the edge p1 → p2 (f0) or back (f1).
+    const auto off_edge = [&](int face) {
+      const int o = t.offsets[size_t(face)];
+      int k = 0;
+      while (connectivity.face_edges[size_t(o + k)] != int(e)) ++k;
+      return std::pair(t.verts[size_t(o + (k + 2) % 3)], t.verts[size_t(o + k)] == p1);
+    };
+    auto [p0, runs_up] = off_edge(g0);
+    int q = off_edge(g1).first, f0 = g0, f1 = g1;
+    if (!runs_up) std::swap(p0, q), std::swap(f0, f1);
     // f0 runs p1 → p2 → p0, f1 runs p2 → p1 → q: the quad p0 → p1 → q → p2 runs as both.
     const std::array<int, 4> quad = {p0, p1, q, p2};
     double worst = 0;
@@ -46,12 +56,12 @@ size_t pair_triangles(CovarianceMesh& mesh, const TrianglePairing& limits) {
                d = mesh.mean(size_t(q));
     const double fold = degrees_between((b - a).cross(c - a), (c - d).cross(b - d));
     if (!(worst <= limits.max_corner_deviation_degrees && fold <= limits.max_fold_degrees)) continue;
-    candidates.push_back({worst + fold, std::min(f0.idx(), f1.idx()), std::max(f0.idx(), f1.idx()), quad});
+    candidates.push_back({worst + fold, std::min(f0, f1), std::max(f0, f1), quad});
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& x, const Candidate& y) { return x.score < y.score; });
-  std::vector<int> partner(m.n_faces(), -1);
-  std::vector<const Candidate*> quad_of(m.n_faces(), nullptr);
+  std::vector<int> partner(n_faces, -1);
+  std::vector<const Candidate*> quad_of(n_faces, nullptr);
   size_t quads = 0;
   for (const Candidate& c : candidates) {
     if (partner[size_t(c.first)] >= 0 || partner[size_t(c.second)] >= 0) continue;
@@ -62,18 +72,16 @@ size_t pair_triangles(CovarianceMesh& mesh, const TrianglePairing& limits) {
   }
   if (quads == 0) return 0;
   std::vector<std::vector<int>> faces;
-  faces.reserve(m.n_faces() - quads);
-  for (const auto f : m.faces()) {
-    if (const Candidate* c = quad_of[size_t(f.idx())]) {
-      faces.emplace_back(c->corners.begin(), c->corners.end());
-    } else if (partner[size_t(f.idx())] < 0) {
-      std::vector<int>& face = faces.emplace_back();
-      for (const auto v : m.fv_range(f)) face.push_back(v.idx());
+  faces.reserve(n_faces - quads);
+  for (size_t f = 0; f < n_faces; ++f) {
+    if (const Candidate* pair = quad_of[f]) {
+      faces.emplace_back(pair->corners.begin(), pair->corners.end());
+    } else if (partner[f] < 0) {
+      const std::span<const int> face = mesh.face(f);
+      faces.emplace_back(face.begin(), face.end());
     }
   }
-  std::vector<Vec3> means(mesh.n_vertices());
-  for (size_t v = 0; v < means.size(); ++v) means[v] = mesh.mean(v);
-  CovarianceMesh paired = make_covariance_mesh(means, mesh.covariances, faces, "the paired mesh");
+  CovarianceMesh paired = make_covariance_mesh(mesh.means(), mesh.covariances, faces, "the paired mesh");
   paired.sharpness = mesh.sharpness;
   mesh = paired;
   return quads;

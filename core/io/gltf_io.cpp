@@ -399,10 +399,8 @@ GltfTriangles gltf_triangles_of(const CovarianceMesh& mesh) {
   for (size_t i = 0; i < mesh.n_vertices(); ++i) out.positions.push_back(mesh.mean(i));
   out.covariances = mesh.covariances;
   out.normals.assign(mesh.n_vertices(), Vec3::Zero());
-  std::vector<int> corners;
-  for (const auto f : mesh.mesh.faces()) {
-    corners.clear();
-    for (const auto v : mesh.mesh.fv_range(f)) corners.push_back(v.idx());
+  for (size_t f = 0; f < mesh.n_faces(); ++f) {
+    const std::span<const int> corners = mesh.face(f);
     // Newell's normal: its length is twice the face's area, so that the sum weighs faces by area.
     Vec3 normal = Vec3::Zero();
     for (size_t k = 0; k < corners.size(); ++k)

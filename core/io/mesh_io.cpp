@@ -155,8 +155,7 @@ std::string sharpness_write_problem(const CovarianceMesh& m) {
     const std::string name = "crease " + std::to_string(c.a) + "-" + std::to_string(c.b);
     if (const std::string why = sharpness_problem(c.sharpness); !why.empty()) return name + " " + why;
     if (c.a < 0 || c.b < 0 || c.a >= n || c.b >= n) return name + " names a vertex outside the mesh";
-    if (!m.mesh.find_halfedge(PolyMesh::VertexHandle(c.a), PolyMesh::VertexHandle(c.b)).is_valid())
-      return name + " is not an edge of the mesh";
+    if (m.find_edge(c.a, c.b) < 0) return name + " is not an edge of the mesh";
   }
   std::vector<std::pair<int, int>> ends;
   for (const EdgeCrease& c : m.sharpness.creases) ends.emplace_back(std::min(c.a, c.b), std::max(c.a, c.b));
@@ -190,9 +189,9 @@ void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary
         const Vec3 p = mesh.mean(i);
         out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
       }
-      for (const auto f : mesh.mesh.faces()) {
+      for (size_t f = 0; f < mesh.n_faces(); ++f) {
         out << 'f';
-        for (const auto v : mesh.mesh.fv_range(f)) out << ' ' << v.idx() + 1;
+        for (const int v : mesh.face(f)) out << ' ' << v + 1;
         out << '\n';
       }
       // OpenSubdiv's tags, vertices numbered from 0 (core/io/mesh_import.h).

@@ -607,7 +607,7 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
   if (has_corners) out << "property " << (float_corners ? "float" : "double") << " corner\n";
   // Face sizes fit a uchar unless some face has more than 255 corners.
   bool wide = false;
-  for (const auto f : m.mesh.faces()) wide = wide || m.mesh.valence(f) > 255;
+  for (size_t f = 0; f < m.n_faces(); ++f) wide = wide || m.face_size(f) > 255;
   out << "element face " << m.n_faces() << "\nproperty list " << (wide ? "int" : "uchar") << " int vertex_indices\n";
   const std::vector<EdgeCrease>& creases = m.sharpness.creases;
   const bool float_creases = all_floats(creases, [](const EdgeCrease& c) { return c.sharpness; });
@@ -634,16 +634,16 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
       if (!binary) out.put('\n');
     }
   }
-  for (const auto f : m.mesh.faces()) {
-    const int32_t n = static_cast<int32_t>(m.mesh.valence(f));
+  for (size_t f = 0; f < m.n_faces(); ++f) {
+    const int32_t n = static_cast<int32_t>(m.face_size(f));
     if (!binary)
       out << n;
     else if (wide)
       put_little_endian(out, n);
     else
       out.put(char(static_cast<unsigned char>(n)));
-    for (const auto v : m.mesh.fv_range(f)) {
-      const int32_t index = v.idx();
+    for (const int v : m.face(f)) {
+      const int32_t index = v;
       if (binary)
         put_little_endian(out, index);
       else

@@ -12,14 +12,11 @@
 
 #include "core/mesh/dual_map.h"
 #include "core/support/error.h"
-#include "core/mesh/mesh_connectivity.h"
 
 namespace gps {
 
-Vec3 CovarianceMesh::mean(size_t i) const { return to_vec3(mesh.point(PolyMesh::VertexHandle(int(i)))); }
-
-void CovarianceMesh::set_mean(size_t i, const Vec3& mean) {
-  mesh.set_point(PolyMesh::VertexHandle(int(i)), to_point(mean));
+bool CovarianceMesh::is_boundary_vertex(size_t v) const {
+  return connectivity_.valence(int(v)) != connectivity_.n_vertex_faces(int(v));
 }
 
 bool is_spd(const Mat3& c) {
@@ -31,54 +28,63 @@ bool is_spd(const Mat3& c) {
   return llt.info() == Eigen::Success;
 }
 
-namespace {
+// make_covariance_mesh's work, the one place a mesh's private parts are filled.
+class CovarianceMeshAssembly {
+public:
+  // `return_pages`: hand the faces' temporary arrays back to the system before the covariances are
+  // made, as a reader wants (its memory is that of the mesh it read); a modelling operation's result,
+  // whose covariances are given, skips it and reuses the pages. `c`: the connectivity of `t`, or null.
+  static CovarianceMesh assemble(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
+                                 MeshConnectivity* c, const std::string& source, const ElementNames& names,
+                                 bool return_pages) {
+    if (means.size() != covariances.size() && !covariances.empty())
+      throw Error(source + ": " + std::to_string(means.size()) + " vertices but " + std::to_string(covariances.size()) +
+                  " covariances");
+    t.n_vertices = int(means.size());
+    for (size_t i = 0; i < means.size(); ++i)
+      if (!means[i].allFinite())
+        throw Error(source + ": " + names.vertex(int(i)) + " has a position that is not finite");
+    check_faces(t, source, names);
+    // A reader's arrays grew by doubling: the mesh keeps them at their size, copied before the
+    // connectivity's larger temporaries exist.
+    means.shrink_to_fit();
+    t.offsets.shrink_to_fit();
+    t.verts.shrink_to_fit();
+    CovarianceMesh m;
+    m.connectivity_ = c ? std::move(*c) : connectivity_of(t);
+    check_manifold(t, m.connectivity_, source, names);
+#ifdef __GLIBC__
+    // connectivity_of's temporaries may lie below the top of the heap, which free() does not hand
+    // back: their pages are returned before the covariances are made.
+    if (return_pages) malloc_trim(0);
+#endif
+    m.means_ = std::move(means);
+    m.topology_ = std::move(t);
+    m.covariances = std::move(covariances);
+    // Identity covariances are made once the temporary arrays are gone.
+    if (m.covariances.empty()) m.covariances.assign(m.means_.size(), Mat3::Identity());
+    return m;
+  }
 
-// make_covariance_mesh's work. `return_pages`: hand the faces' temporary arrays back to the system
-// before the covariances are made, as a reader wants (its memory is that of the mesh it read); a
-// modelling operation's result, whose covariances are given, skips it and reuses the pages.
-CovarianceMesh assemble(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
-                        const std::string& source, const ElementNames& names, bool return_pages) {
-  if (means.size() != covariances.size() && !covariances.empty())
-    throw Error(source + ": " + std::to_string(means.size()) + " vertices but " + std::to_string(covariances.size()) +
-                " covariances");
-  t.n_vertices = int(means.size());
-  for (size_t i = 0; i < means.size(); ++i)
-    if (!means[i].allFinite()) throw Error(source + ": " + names.vertex(int(i)) + " has a position that is not finite");
-  {
-    std::vector<size_t> last_face(means.size(), size_t(-1));  // the last face that used each vertex: repeats in O(1)
+private:
+  // Every face has at least three corners, each a vertex of the mesh, none twice.
+  static void check_faces(const PolygonTopology& t, const std::string& source, const ElementNames& names) {
+    std::vector<size_t> last_face(size_t(t.n_vertices), size_t(-1));  // the last face that used each vertex
     for (int f = 0; f < t.n_faces(); ++f) {
       const auto where = [&] { return source + ": " + names.face(f); };
       if (t.face_size(f) < 3)
         throw Error(where() + " has " + std::to_string(t.face_size(f)) + " vertices (at least 3 needed)");
       for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
         const int i = t.verts[size_t(k)];
-        if (i < 0 || size_t(i) >= means.size())
+        if (i < 0 || i >= t.n_vertices)
           throw Error(where() + " refers to " + names.vertex(i) + ", but there are only " +
-                      std::to_string(means.size()) + " vertices");
+                      std::to_string(t.n_vertices) + " vertices");
         if (last_face[size_t(i)] == size_t(f)) throw Error(where() + " uses " + names.vertex(i) + " twice");
         last_face[size_t(i)] = size_t(f);
       }
     }
   }
-  CovarianceMesh m;
-  m.covariances = std::move(covariances);
-  m.mesh.reserve(means.size(), 0, 0);  // edges and faces: add_faces, at their exact counts
-  for (const Vec3& p : means) m.mesh.add_vertex(to_point(p));
-  const size_t n_vertices = means.size();
-  std::vector<Vec3>().swap(means);
-  add_faces(m.mesh, t, source, names);
-  t = {};
-#ifdef __GLIBC__
-  // The temporaries above may lie below the top of the heap, which free() does not hand back:
-  // their pages are returned before the covariances are made.
-  if (return_pages) malloc_trim(0);
-#endif
-  // Identity covariances are made once the faces' temporary arrays are gone.
-  if (m.covariances.empty()) m.covariances.assign(n_vertices, Mat3::Identity());
-  return m;
-}
-
-}  // namespace
+};
 
 CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::vector<Mat3>& covariances,
                                     const std::vector<std::vector<int>>& faces, const std::string& source) {
@@ -91,13 +97,20 @@ CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::v
     t.verts.insert(t.verts.end(), face.begin(), face.end());
     t.offsets.push_back(int(t.verts.size()));
   }
-  return assemble(std::vector<Vec3>(means), std::vector<Mat3>(covariances), std::move(t), source, {},
-                  covariances.empty());
+  return CovarianceMeshAssembly::assemble(std::vector<Vec3>(means), std::vector<Mat3>(covariances), std::move(t),
+                                          nullptr, source, {}, covariances.empty());
 }
 
 CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
                                     const std::string& source, const ElementNames& names) {
-  return assemble(std::move(means), std::move(covariances), std::move(t), source, names, true);
+  return CovarianceMeshAssembly::assemble(std::move(means), std::move(covariances), std::move(t), nullptr, source,
+                                          names, true);
+}
+
+CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
+                                    MeshConnectivity&& connectivity, const std::string& source) {
+  return CovarianceMeshAssembly::assemble(std::move(means), std::move(covariances), std::move(t), &connectivity, source,
+                                          {}, false);
 }
 
 namespace {

@@ -1,38 +1,62 @@
 #pragma once
 // A covariance mesh: a polygon mesh whose vertex i carries a Gaussian (μ_i, Σ_i) (docs/design.md §1).
+#include <array>
+#include <span>
 #include <string>
 #include <vector>
 
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
-
 #include "core/mesh/element_names.h"
 #include "core/mesh/linalg.h"
+#include "core/mesh/mesh_connectivity.h"
 #include "core/mesh/sharpness.h"
 
 namespace gps {
 
-struct PolygonTopology;  // core/mesh/mesh_connectivity.h
-
-struct MeshTraits : public OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-  using Normal = OpenMesh::Vec3d;
-};
-/// Topology and means: OpenMesh's polygon mesh with double-precision points.
-using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
-
-/// A polygon mesh whose points are the means μ_i, with one covariance Σ_i per vertex (by vertex index).
-struct CovarianceMesh {
-  PolyMesh mesh;
+/// A polygon mesh whose vertex i carries the Gaussian (μ_i, Σ_i): the means and faces are fixed when
+/// it is made (make_covariance_mesh checks them and builds the connectivity once), the means can be
+/// moved and the covariances and sharpness changed in place. Vertices, edges, faces and corners are
+/// numbered as in its topology and connectivity, which every part of gpsurf reads without converting.
+class CovarianceMesh {
+public:
   std::vector<Mat3> covariances;
   /// Edge creases and vertex corners by vertex index; empty for a smooth mesh.
   Sharpness sharpness;
 
-  size_t n_vertices() const { return mesh.n_vertices(); }
-  size_t n_faces() const { return mesh.n_faces(); }
-  Vec3 mean(size_t i) const;
-  void set_mean(size_t i, const Vec3& mean);
+  size_t n_vertices() const { return means_.size(); }
+  size_t n_faces() const { return size_t(topology_.n_faces()); }
+  size_t n_edges() const { return size_t(connectivity_.n_edges()); }
+  size_t n_corners() const { return topology_.verts.size(); }
+
+  const Vec3& mean(size_t i) const { return means_[i]; }
+  void set_mean(size_t i, const Vec3& mean) { means_[i] = mean; }
+  const std::vector<Vec3>& means() const { return means_; }
   const Mat3& covariance(size_t i) const { return covariances[i]; }
   void set_covariance(size_t i, const Mat3& covariance) { covariances[i] = covariance; }
+
+  /// The faces as corner lists, and their edges and incidences.
+  const PolygonTopology& topology() const { return topology_; }
+  const MeshConnectivity& connectivity() const { return connectivity_; }
+  /// The vertices of face f in order (its corners).
+  std::span<const int> face(size_t f) const {
+    return {topology_.verts.data() + topology_.offsets[f], size_t(topology_.face_size(int(f)))};
+  }
+  int face_size(size_t f) const { return topology_.face_size(int(f)); }
+  /// The ends of edge e, the lower index first.
+  std::array<int, 2> edge(size_t e) const {
+    return {connectivity_.edge_verts[2 * e], connectivity_.edge_verts[2 * e + 1]};
+  }
+  bool is_boundary_edge(size_t e) const { return connectivity_.is_boundary_edge(int(e)); }
+  /// The edge joining vertices a and b, or −1.
+  int find_edge(int a, int b) const { return connectivity_.find_edge(a, b); }
+  /// The number of edges at vertex v; whether it lies on a boundary (an isolated vertex does not).
+  int valence(size_t v) const { return connectivity_.valence(int(v)); }
+  bool is_boundary_vertex(size_t v) const;
+
+private:
+  friend class CovarianceMeshAssembly;
+  std::vector<Vec3> means_;
+  PolygonTopology topology_;
+  MeshConnectivity connectivity_;
 };
 
 /// Builds a covariance mesh from plain arrays; faces are vertex-index lists.
@@ -45,6 +69,9 @@ CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::v
 /// `names`: how its messages name the vertices and faces (as the file read numbers them).
 CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& faces,
                                     const std::string& source = "mesh", const ElementNames& names = {});
+/// The same with the faces' connectivity already built (`connectivity` = connectivity_of(faces)).
+CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& faces,
+                                    MeshConnectivity&& connectivity, const std::string& source = "mesh");
 
 /// Largest position coordinate magnitude accepted: squares and products of positions (and their
 /// products with inverse covariances) must stay far from double overflow.
@@ -75,8 +102,5 @@ double bounding_box_diagonal(const CovarianceMesh& m);
 /// The 9D point q = (vech(Σ⁻¹), Σ⁻¹μ) of every vertex (thesis Eq. 2.10), the base of the plans'
 /// points and of the reference subdivision.
 std::vector<Dual> base_points(const CovarianceMesh& mesh);
-
-inline Vec3 to_vec3(const OpenMesh::Vec3d& p) { return Vec3(p[0], p[1], p[2]); }
-inline OpenMesh::Vec3d to_point(const Vec3& v) { return OpenMesh::Vec3d(v[0], v[1], v[2]); }
 
 }  // namespace gps

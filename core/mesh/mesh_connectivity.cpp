@@ -6,23 +6,7 @@
 
 namespace gps {
 
-PolygonTopology topology_of(const PolyMesh& mesh) {
-  PolygonTopology t;
-  t.n_vertices = int(mesh.n_vertices());
-  t.offsets.reserve(mesh.n_faces() + 1);
-  t.verts.reserve(mesh.n_faces() * 4);
-  for (const auto f : mesh.faces()) {
-    for (const auto v : mesh.fv_range(f)) t.verts.push_back(v.idx());
-    t.offsets.push_back(int(t.verts.size()));
-  }
-  return t;
-}
-
-namespace {
-
-// The edges, their faces, each corner's edge and each vertex's valence; with `rows`, also the
-// vertices' edge and face rows (add_faces needs only the former).
-MeshConnectivity connectivity_of(const PolygonTopology& t, bool rows) {
+MeshConnectivity connectivity_of(const PolygonTopology& t) {
   MeshConnectivity c;
   const size_t n_corners = t.verts.size();
   // The corners keyed by their edge's (min, max) vertex pair, sorted to pair them into edges: a radix
@@ -79,10 +63,6 @@ MeshConnectivity connectivity_of(const PolygonTopology& t, bool rows) {
   };
   c.vertex_edge_offsets.assign(size_t(t.n_vertices) + 1, 0);
   for (const int v : c.edge_verts) ++c.vertex_edge_offsets[size_t(v) + 1];
-  if (!rows) {
-    prefix(c.vertex_edge_offsets);
-    return c;
-  }
   std::vector<int> next = prefix(c.vertex_edge_offsets);
   c.vertex_edges.resize(c.edge_verts.size());
   for (size_t i = 0; i < c.edge_verts.size(); ++i) c.vertex_edges[size_t(next[size_t(c.edge_verts[i])]++)] = int(i / 2);
@@ -99,10 +79,6 @@ MeshConnectivity connectivity_of(const PolygonTopology& t, bool rows) {
     }
   return c;
 }
-
-}  // namespace
-
-MeshConnectivity connectivity_of(const PolygonTopology& t) { return connectivity_of(t, true); }
 
 namespace {
 
@@ -152,14 +128,29 @@ SurfaceCounts surface_counts(const PolygonTopology& t, const MeshConnectivity& c
   });
 }
 
-SurfaceCounts surface_counts(const PolyMesh& mesh) {
-  return surface_counts_of_edges(int(mesh.n_vertices()), int(mesh.n_edges()), int(mesh.n_faces()),
-                                 [&](int e, int& a, int& b) {
-                                   const PolyMesh::EdgeHandle eh(e);
-                                   a = mesh.from_vertex_handle(mesh.halfedge_handle(eh, 0)).idx();
-                                   b = mesh.to_vertex_handle(mesh.halfedge_handle(eh, 0)).idx();
-                                   return mesh.is_boundary(eh);
-                                 });
+CornerLinks corner_links(const PolygonTopology& t, const MeshConnectivity& c) {
+  CornerLinks links;
+  links.faces.resize(t.verts.size());
+  for (int f = 0; f < t.n_faces(); ++f)
+    std::fill(links.faces.begin() + t.offsets[size_t(f)], links.faces.begin() + t.offsets[size_t(f) + 1], f);
+  links.twins.assign(t.verts.size(), -1);
+  std::vector<int> first(size_t(c.n_edges()), -1);  // per edge, the first corner met along it
+  for (int k = 0; k < int(t.verts.size()); ++k) {
+    int& other = first[size_t(c.face_edges[size_t(k)])];
+    if (other < 0) {
+      other = k;
+    } else {
+      links.twins[size_t(k)] = other;
+      links.twins[size_t(other)] = k;
+    }
+  }
+  return links;
+}
+
+int MeshConnectivity::find_edge(int a, int b) const {
+  for (int i = vertex_edge_offsets[size_t(a)]; i < vertex_edge_offsets[size_t(a) + 1]; ++i)
+    if (other_vertex(vertex_edges[size_t(i)], a) == b) return vertex_edges[size_t(i)];
+  return -1;
 }
 
 VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
@@ -181,75 +172,54 @@ VertexRole vertex_role(const MeshConnectivity& c, int v, int* a, int* b) {
   return n_faces == 1 ? VertexRole::corner : VertexRole::boundary;
 }
 
-void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source, const ElementNames& names) {
-  add_faces(mesh, t, connectivity_of(t, false), source, names);
-}
-
-void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source,
-               const ElementNames& names) {
-  using HH = PolyMesh::HalfedgeHandle;
+void check_manifold(const PolygonTopology& t, const MeshConnectivity& c, const std::string& source,
+                    const ElementNames& names) {
   for (int e = 0; e + 1 < c.n_edges(); ++e)  // equal edges are neighbours in connectivity_of's order
     if (c.edge_verts[2 * size_t(e)] == c.edge_verts[2 * size_t(e) + 2] &&
         c.edge_verts[2 * size_t(e) + 1] == c.edge_verts[2 * size_t(e) + 3])
       throw Error(source + ": " + names.face(c.edge_faces[2 * size_t(e) + 2]) +
                   " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
-  // Every element's storage at its final size at once (growing by doubling would hold up to twice
-  // it): resize() adds the default edges and faces that new_edge() and new_face() would, and resizes
-  // the properties once rather than per element.
-  mesh.resize(mesh.n_vertices(), size_t(c.n_edges()), size_t(t.n_faces()));
-  for (int e = 0; e < c.n_edges(); ++e) {  // as new_edge(edge_verts[2e], edge_verts[2e + 1])
-    mesh.set_vertex_handle(HH(2 * e), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e) + 1]));
-    mesh.set_vertex_handle(HH(2 * e + 1), PolyMesh::VertexHandle(c.edge_verts[2 * size_t(e)]));
+  // The two faces of an edge must run along it in opposite directions; the later one is named.
+  const CornerLinks links = corner_links(t, c);
+  const auto runs_up = [&](int k) { return t.verts[size_t(k)] < t.verts[size_t(links.next(t, k))]; };
+  int flipped = -1;
+  for (int k = 0; k < int(t.verts.size()); ++k) {
+    const int twin = links.twins[size_t(k)];
+    if (twin > k && runs_up(k) == runs_up(twin) && (flipped < 0 || links.faces[size_t(twin)] < flipped))
+      flipped = links.faces[size_t(twin)];
   }
-  // Corner k of a face owns the half-edge from its vertex to the next: 2e along the edge's order (from
-  // the lower vertex, as connectivity_of stores it; read off the face, not the edge) or 2e + 1.
-  std::vector<char> used(2 * size_t(c.n_edges()), 0);
-  std::vector<int> halfedge;  // those of one face
-  for (int f = 0; f < t.n_faces(); ++f) {
-    const int begin = t.offsets[size_t(f)], end = t.offsets[size_t(f) + 1];
-    halfedge.clear();
-    for (int k = begin; k < end; ++k) {
-      const int e = c.face_edges[size_t(k)];
-      const int h = 2 * e + (t.verts[size_t(k)] < t.verts[size_t(k + 1 < end ? k + 1 : begin)] ? 0 : 1);
-      if (used[size_t(h)]++)
-        throw Error(source + ": " + names.face(f) +
-                    " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
-      halfedge.push_back(h);
-    }
-    const PolyMesh::FaceHandle fh(f);
-    for (int k = 0; k < end - begin; ++k) {
-      const HH h(halfedge[size_t(k)]);
-      mesh.set_face_handle(h, fh);
-      mesh.set_next_halfedge_handle(h, HH(halfedge[size_t(k + 1 < end - begin ? k + 1 : 0)]));
-      mesh.set_halfedge_handle(PolyMesh::VertexHandle(t.verts[size_t(begin + k)]), h);
-    }
-    mesh.set_halfedge_handle(fh, HH(halfedge.back()));  // as add_face: fv_range starts at corner 0
-  }
-  // Boundary half-edges: each vertex has at most one going out (one fan), which is its outgoing half-edge.
+  if (flipped >= 0)
+    throw Error(source + ": " + names.face(flipped) +
+                " makes the mesh non-manifold (an edge with more than two faces or a flipped face)");
   const auto non_manifold = [&](int v) {
     return Error(source + ": " + names.vertex(v) + " is non-manifold (its faces do not form one fan)");
   };
-  std::vector<int> boundary_out(size_t(t.n_vertices), -1);
-  for (int h = 0; h < 2 * c.n_edges(); ++h) {
-    if (used[size_t(h)]) continue;
-    const int from = mesh.to_vertex_handle(HH(h ^ 1)).idx();
-    if (boundary_out[size_t(from)] >= 0) throw non_manifold(from);
-    boundary_out[size_t(from)] = h;
-    mesh.set_halfedge_handle(PolyMesh::VertexHandle(from), HH(h));
+  // One fan per vertex: at most one boundary edge comes into it along its face (the first such vertex in
+  // edge order is named), and circling its corners from there across their own edges meets every face at it.
+  std::vector<int> boundary_corner(size_t(c.n_edges()), -1);  // a boundary edge's one corner
+  for (int k = 0; k < int(t.verts.size()); ++k)
+    if (links.twins[size_t(k)] < 0) boundary_corner[size_t(c.face_edges[size_t(k)])] = k;
+  std::vector<int> fan_start(size_t(t.n_vertices), -1);  // the corner whose incoming edge is a boundary
+  for (int e = 0; e < c.n_edges(); ++e) {
+    const int k = boundary_corner[size_t(e)];
+    if (k < 0) continue;
+    const int to = t.verts[size_t(links.next(t, k))];
+    if (fan_start[size_t(to)] >= 0) throw non_manifold(to);
+    fan_start[size_t(to)] = links.next(t, k);
   }
-  for (int h = 0; h < 2 * c.n_edges(); ++h)
-    if (!used[size_t(h)])
-      mesh.set_next_halfedge_handle(HH(h), HH(boundary_out[size_t(mesh.to_vertex_handle(HH(h)).idx())]));
-  // One fan per vertex: circling the outgoing half-edges from one of them meets all of its edges.
   for (int v = 0; v < t.n_vertices; ++v) {
-    if (c.valence(v) == 0) continue;
-    const HH first = mesh.halfedge_handle(PolyMesh::VertexHandle(v));
-    int count = 0;
-    HH h = first;
-    do {
-      h = mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(h));
-    } while (++count <= c.valence(v) && h != first);
-    if (count != c.valence(v)) throw non_manifold(v);
+    const int n_faces = c.n_vertex_faces(v);
+    if (n_faces == 0) continue;
+    const int row = c.vertex_face_offsets[size_t(v)];
+    const int first = fan_start[size_t(v)] >= 0
+                          ? fan_start[size_t(v)]
+                          : t.offsets[size_t(c.vertex_faces[size_t(row)])] + c.vertex_face_corners[size_t(row)];
+    int count = 1;
+    for (int k = first; count <= n_faces; ++count) {  // across each corner's own edge to the next face at v
+      k = links.twins[size_t(k)];
+      if (k < 0 || (k = links.next(t, k)) == first) break;
+    }
+    if (count != n_faces) throw non_manifold(v);
   }
   // Two faces that share all their edges close up on their own (a pillow): manifold, but the first
   // refinement of Loop (and the plans) makes it non-manifold, so it is refused here, named.

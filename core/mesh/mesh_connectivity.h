@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh/covariance_mesh.h"
+#include "core/mesh/element_names.h"
 
 namespace gps {
 
@@ -20,17 +20,14 @@ struct PolygonTopology {
   int face_size(int f) const { return offsets[size_t(f) + 1] - offsets[size_t(f)]; }
 };
 
-/// The faces of an OpenMesh polygon mesh in face_vertices() order (core/plans/patch_layout.h).
-PolygonTopology topology_of(const PolyMesh& mesh);
-
-/// Edges and incidences of a PolygonTopology. Edge e joins edge_verts[2e], edge_verts[2e+1];
+/// Edges and incidences of a PolygonTopology. Edge e joins edge_verts[2e] < edge_verts[2e+1];
 /// edge_faces[2e+1] is −1 on a boundary edge. face_edges parallels verts: the edge from corner k to k+1.
 struct MeshConnectivity {
   std::vector<int> edge_verts;
   std::vector<int> edge_faces;
   std::vector<int> face_edges;
-  std::vector<int> vertex_edge_offsets, vertex_edges;  // edges around each vertex
-  std::vector<int> vertex_face_offsets, vertex_faces;  // faces around each vertex
+  std::vector<int> vertex_edge_offsets{0}, vertex_edges;  // edges around each vertex
+  std::vector<int> vertex_face_offsets{0}, vertex_faces;  // faces around each vertex
   std::vector<int> vertex_face_corners;  // parallel to vertex_faces: the vertex's corner index in that face
   int n_edges() const { return int(edge_verts.size() / 2); }
   bool is_boundary_edge(int e) const { return edge_faces[2 * size_t(e) + 1] < 0; }
@@ -39,19 +36,35 @@ struct MeshConnectivity {
   }
   int valence(int v) const { return vertex_edge_offsets[size_t(v) + 1] - vertex_edge_offsets[size_t(v)]; }
   int n_vertex_faces(int v) const { return vertex_face_offsets[size_t(v) + 1] - vertex_face_offsets[size_t(v)]; }
+  /// The edge joining vertices a and b, or −1.
+  int find_edge(int a, int b) const;
 };
 
 /// Builds the adjacency; the topology must be manifold (as CovarianceMesh guarantees).
 MeshConnectivity connectivity_of(const PolygonTopology& topology);
+/// Corners as half-edges, for walks across faces: corner k stands for the half-edge from its vertex
+/// to the next corner's; `twins[k]` is the corner of the other face that runs its edge the other way
+/// (−1 on a boundary). Built where walks need them (4 bytes a corner each), not kept with a mesh.
+struct CornerLinks {
+  std::vector<int> faces, twins;  // parallel to the topology's verts
+  /// The corners after and before corner k in its face (cyclically).
+  int next(const PolygonTopology& t, int k) const {
+    const size_t f = size_t(faces[size_t(k)]);
+    return k + 1 == t.offsets[f + 1] ? t.offsets[f] : k + 1;
+  }
+  int previous(const PolygonTopology& t, int k) const {
+    const size_t f = size_t(faces[size_t(k)]);
+    return k == t.offsets[f] ? t.offsets[f + 1] - 1 : k - 1;
+  }
+};
+CornerLinks corner_links(const PolygonTopology& topology, const MeshConnectivity& c);
 
-/// Adds the faces of `t` to `mesh`, whose vertices 0 .. t.n_vertices − 1 exist, building OpenMesh's
-/// half-edge structure directly in time linear in the mesh whatever the valence (OpenMesh's add_face
-/// searches the half-edges around each vertex: quadratic on a fan). Edges are paired by
-/// connectivity_of; throws gps::Error naming `source` and the face or vertex where the mesh is not manifold.
-void add_faces(PolyMesh& mesh, const PolygonTopology& t, const std::string& source, const ElementNames& names = {});
-/// The same with the topology's connectivity already built (`c` = connectivity_of(t)).
-void add_faces(PolyMesh& mesh, const PolygonTopology& t, const MeshConnectivity& c, const std::string& source,
-               const ElementNames& names = {});
+/// Throws gps::Error naming `source` and the first face or vertex where `t` (whose connectivity is
+/// `c`) is not a manifold surface: an edge with more than two faces, two faces running an edge the
+/// same way (one flipped), a vertex whose faces form more than one fan, or two faces sharing all
+/// their edges.
+void check_manifold(const PolygonTopology& t, const MeshConnectivity& c, const std::string& source,
+                    const ElementNames& names = {});
 
 /// The shape of a manifold mesh as a surface: its connected parts (isolated vertices are in none), its
 /// boundary loops and its genus, summed over the parts, from Euler's V − E + F = 2P − 2g − b.
@@ -59,8 +72,6 @@ struct SurfaceCounts {
   int parts = 0, boundary_loops = 0, genus = 0;
 };
 SurfaceCounts surface_counts(const PolygonTopology& t, const MeshConnectivity& c);
-/// The same of an OpenMesh mesh, read off its half-edges (no connectivity built).
-SurfaceCounts surface_counts(const PolyMesh& mesh);
 
 /// How a vertex behaves under the boundary rules: interior, on a boundary curve, or a corner (one face).
 enum class VertexRole { interior, boundary, corner, isolated };

@@ -36,7 +36,7 @@ std::vector<int> set_crease_in_place(CovarianceMesh& mesh, const std::vector<std
   for (const auto& [a, b] : edges) {
     check_vertex(mesh.n_vertices(), a);
     check_vertex(mesh.n_vertices(), b);
-    if (a == b || !mesh.mesh.find_halfedge(OpenMesh::VertexHandle(a), OpenMesh::VertexHandle(b)).is_valid())
+    if (a == b || mesh.find_edge(a, b) < 0)
       throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
     selection.insert(selection.end(), {a, b});
   }
@@ -59,11 +59,8 @@ Modelled crease_sharp_edges(const CovarianceMesh& mesh, double degrees, double s
   check_sharpness(sharpness);
   const std::vector<double> angles = dihedral_angles(mesh);
   std::vector<std::array<int, 2>> sharp;
-  for (const auto e : mesh.mesh.edges())
-    if (angles[size_t(e.idx())] > degrees) {
-      const auto h = mesh.mesh.halfedge_handle(e, 0);
-      sharp.push_back({mesh.mesh.from_vertex_handle(h).idx(), mesh.mesh.to_vertex_handle(h).idx()});
-    }
+  for (size_t e = 0; e < mesh.n_edges(); ++e)
+    if (angles[e] > degrees) sharp.push_back(mesh.edge(e));
   Modelled out = set_crease(mesh, sharp, sharpness);
   out.summary = "set the crease of " + count_of(sharp.size(), "edge", "edges") + " sharper than " +
                 short_number(degrees) + "° to " + sharpness_words(sharpness);

@@ -26,12 +26,8 @@ BoundaryPlaces boundary_places(const CovarianceMesh& mesh) {
   return b;
 }
 
-bool is_isolated(const CovarianceMesh& mesh, int v) {
-  return !mesh.mesh.halfedge_handle(PolyMesh::VertexHandle(v)).is_valid();
-}
-
 void check_open(const CovarianceMesh& mesh, const BoundaryPlaces& b, int v) {
-  if (b.place[size_t(v)].first < 0 && !is_isolated(mesh, v))
+  if (b.place[size_t(v)].first < 0 && mesh.valence(size_t(v)) != 0)
     throw Error("vertex " + std::to_string(v) + " is not on a boundary");
 }
 

@@ -35,13 +35,12 @@ int MeshArrays::add_vertex(const Gaussian& g) {
 
 MeshArrays arrays_of(const CovarianceMesh& m) {
   MeshArrays a;
-  a.means.reserve(m.n_vertices());
-  for (size_t i = 0; i < m.n_vertices(); ++i) a.means.push_back(m.mean(i));
+  a.means = m.means();
   a.covariances = m.covariances;
   a.sharpness = m.sharpness;
   a.origin.resize(m.n_vertices());
   std::iota(a.origin.begin(), a.origin.end(), 0);
-  const PolygonTopology t = topology_of(m.mesh);
+  const PolygonTopology& t = m.topology();
   a.faces.resize(size_t(t.n_faces()));
   for (int f = 0; f < t.n_faces(); ++f)
     a.faces[size_t(f)].assign(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);

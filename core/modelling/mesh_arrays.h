@@ -50,7 +50,7 @@ std::vector<int> vertex_origin(const MeshArrays& arrays);
 /// it (−1 removed), from the result's `origin`; empty (indices kept) for an empty origin.
 std::vector<int> inverse_origin(const std::vector<int>& origin, size_t n_before);
 
-/// The mesh as arrays; faces in the mesh's face order, corners in face_vertices() order.
+/// The mesh as arrays; faces in the mesh's face order, corners in the faces' order.
 MeshArrays arrays_of(const CovarianceMesh& mesh);
 
 /// The arrays as a covariance mesh, with the creases of `arrays.sharpness` that are still edges of

@@ -14,18 +14,14 @@ namespace gps {
 
 namespace {
 
-using VH = PolyMesh::VertexHandle;
-using HH = PolyMesh::HalfedgeHandle;
-using FH = PolyMesh::FaceHandle;
-
-void check_vertex(const PolyMesh& m, int v) {
+void check_vertex(const CovarianceMesh& m, int v) {
   if (v < 0 || v >= int(m.n_vertices()))
     throw Error("vertex " + std::to_string(v) + " is not in the mesh (" + std::to_string(m.n_vertices()) +
                 " vertices)");
 }
 
 // One flag per vertex, set for the given vertices (each checked).
-std::vector<char> vertex_mask(const PolyMesh& m, const std::vector<int>& vertices) {
+std::vector<char> vertex_mask(const CovarianceMesh& m, const std::vector<int>& vertices) {
   std::vector<char> mask(m.n_vertices(), 0);
   for (int v : vertices) {
     check_vertex(m, v);
@@ -41,62 +37,101 @@ std::vector<int> masked(const std::vector<char>& mask) {
   return out;
 }
 
-bool continues(const PolyMesh& m, VH v) { return !m.is_boundary(v) && m.valence(v) == 4; }
-
-// At an interior vertex of valence 4 reached by half-edge h, the half-edge out along the opposite edge.
-HH straight_on(const PolyMesh& m, HH h) {
-  HH out = m.opposite_halfedge_handle(h);
-  for (int k = 0; k < 2; ++k) out = m.next_halfedge_handle(m.opposite_halfedge_handle(out));
-  return out;
+// Calls visit(w) for each vertex w joined to v by an edge (in edge order).
+template <class Visit>
+void for_each_neighbour(const MeshConnectivity& c, int v, const Visit& visit) {
+  for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i)
+    visit(c.other_vertex(c.vertex_edges[size_t(i)], v));
 }
 
-// Walks the edge loop on from half-edge h, appending the vertices reached, until a vertex where it
-// cannot continue, or `start`; returns whether it came back to `start`.
-bool walk_loop(const PolyMesh& m, HH h, VH start, std::vector<int>& loop) {
+// Calls visit(f) for each face at v (in face order).
+template <class Visit>
+void for_each_face_at(const MeshConnectivity& c, int v, const Visit& visit) {
+  for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i)
+    visit(c.vertex_faces[size_t(i)]);
+}
+
+// The corner running the half-edge a → b (a's corner in the face that has b after a), or −1 where
+// no face runs the edge that way.
+int corner_from_to(const CovarianceMesh& m, const CornerLinks& links, int a, int b) {
+  const PolygonTopology& t = m.topology();
+  const MeshConnectivity& c = m.connectivity();
+  for (int i = c.vertex_face_offsets[size_t(a)]; i < c.vertex_face_offsets[size_t(a) + 1]; ++i) {
+    const int k = t.offsets[size_t(c.vertex_faces[size_t(i)])] + c.vertex_face_corners[size_t(i)];
+    if (t.verts[size_t(links.next(t, k))] == b) return k;
+  }
+  return -1;
+}
+
+bool continues(const CovarianceMesh& m, int v) { return !m.is_boundary_vertex(size_t(v)) && m.valence(size_t(v)) == 4; }
+
+// At an interior vertex of valence 4 reached by the half-edge of corner h, the corner running out
+// along the opposite edge (two faces on around the vertex).
+int straight_on(const CovarianceMesh& m, const CornerLinks& links, int h) {
+  const PolygonTopology& t = m.topology();
+  return links.next(t, links.twins[size_t(links.next(t, h))]);
+}
+
+// Walks the edge loop on from the half-edge of corner h, appending the vertices reached, until a
+// vertex where it cannot continue, or `start`; returns whether it came back to `start`.
+bool walk_loop(const CovarianceMesh& m, const CornerLinks& links, int h, int start, std::vector<int>& loop) {
+  const PolygonTopology& t = m.topology();
   while (true) {
-    const VH v = m.to_vertex_handle(h);
+    const int v = t.verts[size_t(links.next(t, h))];
     if (v == start) return true;
-    loop.push_back(v.idx());
+    loop.push_back(v);
     if (!continues(m, v)) return false;
-    h = straight_on(m, h);
+    h = straight_on(m, links, h);
   }
 }
 
 }  // namespace
 
 std::vector<std::array<int, 2>> edge_loop_edges(const CovarianceMesh& mesh, int a, int b) {
-  const PolyMesh& m = mesh.mesh;
-  check_vertex(m, a);
-  check_vertex(m, b);
-  const HH h = m.find_halfedge(VH(a), VH(b));
-  if (!h.is_valid()) throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
+  check_vertex(mesh, a);
+  check_vertex(mesh, b);
+  const int e = a == b ? -1 : mesh.find_edge(a, b);
+  if (e < 0) throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
+  const PolygonTopology& t = mesh.topology();
+  const MeshConnectivity& c = mesh.connectivity();
   std::vector<std::array<int, 2>> edges;
   const auto add = [&edges](int u, int w) { edges.push_back({std::min(u, w), std::max(u, w)}); };
   const auto add_path = [&add](const std::vector<int>& path) {
     for (size_t k = 1; k < path.size(); ++k) add(path[k - 1], path[k]);
   };
-  if (m.is_boundary(m.edge_handle(h))) {
-    const HH first = m.is_boundary(h) ? h : m.opposite_halfedge_handle(h);
-    HH g = first;
-    do {
-      add(m.from_vertex_handle(g).idx(), m.to_vertex_handle(g).idx());
-      g = m.next_halfedge_handle(g);
-    } while (g != first);
+  if (mesh.is_boundary_edge(size_t(e))) {
+    // On along the boundary: each boundary vertex has two boundary edges, so from b take the one not
+    // leading back, until a again.
+    int previous = a, at = b;
+    add(a, b);
+    while (at != a) {
+      int next = -1;
+      for (int i = c.vertex_edge_offsets[size_t(at)]; i < c.vertex_edge_offsets[size_t(at) + 1] && next < 0; ++i) {
+        const int edge = c.vertex_edges[size_t(i)];
+        if (c.is_boundary_edge(edge) && c.other_vertex(edge, at) != previous) next = c.other_vertex(edge, at);
+      }
+      add(at, next);
+      previous = at;
+      at = next;
+    }
   } else {
+    const CornerLinks links = corner_links(t, c);
+    const int h = corner_from_to(mesh, links, a, b);
     std::vector<int> forward = {a};
-    const bool closed = walk_loop(m, h, VH(a), forward);
+    const bool closed = walk_loop(mesh, links, h, a, forward);
     add_path(forward);
     if (closed) {
       add(forward.back(), a);
-    } else if (continues(m, VH(a))) {
+    } else if (continues(mesh, a)) {
       std::vector<int> backward = {a};
-      walk_loop(m, straight_on(m, m.opposite_halfedge_handle(h)), VH(a), backward);
+      walk_loop(mesh, links, straight_on(mesh, links, links.twins[size_t(h)]), a, backward);
       add_path(backward);
     }
     if (edges.size() == 1) {  // a loop of one edge: the rim of its larger face (a cap's), as Blender does
-      const PolyMesh::FaceHandle face = m.face_handle(h), other = m.opposite_face_handle(h);
-      for (const HH g : m.fh_range(m.valence(other) > m.valence(face) ? other : face))
-        add(m.from_vertex_handle(g).idx(), m.to_vertex_handle(g).idx());
+      const int face = links.faces[size_t(h)], other = links.faces[size_t(links.twins[size_t(h)])];
+      const int rim = mesh.face_size(size_t(other)) > mesh.face_size(size_t(face)) ? other : face;
+      for (int k = t.offsets[size_t(rim)]; k < t.offsets[size_t(rim) + 1]; ++k)
+        add(t.verts[size_t(k)], t.verts[size_t(links.next(t, k))]);
     }
   }
   std::sort(edges.begin(), edges.end());
@@ -113,38 +148,38 @@ std::vector<int> edge_loop(const CovarianceMesh& mesh, int a, int b) {
 }
 
 std::vector<int> linked_vertices(const CovarianceMesh& mesh, const std::vector<int>& seeds) {
-  const PolyMesh& m = mesh.mesh;
-  std::vector<char> seen = vertex_mask(m, seeds);
+  std::vector<char> seen = vertex_mask(mesh, seeds);
   std::vector<int> stack = masked(seen);
   while (!stack.empty()) {
-    const VH v(stack.back());
+    const int v = stack.back();
     stack.pop_back();
-    for (const VH w : m.vv_range(v))
-      if (!seen[size_t(w.idx())]) {
-        seen[size_t(w.idx())] = 1;
-        stack.push_back(w.idx());
+    for_each_neighbour(mesh.connectivity(), v, [&](int w) {
+      if (!seen[size_t(w)]) {
+        seen[size_t(w)] = 1;
+        stack.push_back(w);
       }
+    });
   }
   return masked(seen);
 }
 
 std::vector<int> grow_selection(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
-  const PolyMesh& m = mesh.mesh;
-  std::vector<char> grown = vertex_mask(m, vertices);
+  std::vector<char> grown = vertex_mask(mesh, vertices);
   for (int v : vertices)
-    for (const auto f : m.vf_range(VH(v)))
-      for (const VH w : m.fv_range(f)) grown[size_t(w.idx())] = 1;
+    for_each_face_at(mesh.connectivity(), v, [&](int f) {
+      for (const int w : mesh.face(size_t(f))) grown[size_t(w)] = 1;
+    });
   return masked(grown);
 }
 
 std::vector<int> shrink_selection(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
-  const PolyMesh& m = mesh.mesh;
-  const std::vector<char> selected = vertex_mask(m, vertices);
+  const std::vector<char> selected = vertex_mask(mesh, vertices);
   std::vector<char> kept = selected;
   for (int v : vertices)
-    for (const auto f : m.vf_range(VH(v)))
-      for (const VH w : m.fv_range(f))
-        if (!selected[size_t(w.idx())]) kept[size_t(v)] = 0;
+    for_each_face_at(mesh.connectivity(), v, [&](int f) {
+      for (const int w : mesh.face(size_t(f)))
+        if (!selected[size_t(w)]) kept[size_t(v)] = 0;
+    });
   return masked(kept);
 }
 
@@ -155,24 +190,23 @@ Vec3 centre_of_vertices(const CovarianceMesh& mesh, const std::vector<int>& vert
 }
 
 std::vector<int> faces_within(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
-  const PolyMesh& m = mesh.mesh;
-  const std::vector<char> selected = vertex_mask(m, vertices);
+  const std::vector<char> selected = vertex_mask(mesh, vertices);
   std::vector<int> faces;
-  for (const auto f : m.faces()) {
+  for (size_t f = 0; f < mesh.n_faces(); ++f) {
     bool all = true;
-    for (const VH v : m.fv_range(f)) all = all && selected[size_t(v.idx())];
-    if (all) faces.push_back(f.idx());
+    for (const int v : mesh.face(f)) all = all && selected[size_t(v)];
+    if (all) faces.push_back(int(f));
   }
   return faces;
 }
 
 std::vector<std::array<int, 2>> edges_within(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
-  const PolyMesh& m = mesh.mesh;
-  const std::vector<char> selected = vertex_mask(m, vertices);
+  const std::vector<char> selected = vertex_mask(mesh, vertices);
   std::vector<std::array<int, 2>> edges;
   for (int v : masked(selected))
-    for (const VH w : m.vv_range(VH(v)))
-      if (w.idx() > v && selected[size_t(w.idx())]) edges.push_back({v, w.idx()});
+    for_each_neighbour(mesh.connectivity(), v, [&](int w) {
+      if (w > v && selected[size_t(w)]) edges.push_back({v, w});
+    });
   std::sort(edges.begin(), edges.end());
   return edges;
 }
@@ -241,72 +275,84 @@ std::vector<int> dijkstra_path(int n, int from, int to, const Steps& steps) {
 }  // namespace
 
 std::vector<int> shortest_path(const CovarianceMesh& mesh, int from, int to) {
-  const PolyMesh& m = mesh.mesh;
-  const int n = int(m.n_vertices());
+  const int n = int(mesh.n_vertices());
   for (const int v : {from, to})
     if (v < 0 || v >= n) throw Error("vertex " + std::to_string(v) + " is not in the mesh");
   std::vector<int> path = dijkstra_path(n, from, to, [&](int v, const auto& step) {
-    for (const VH w : m.vv_range(VH(v))) step(w.idx(), (mesh.mean(size_t(w.idx())) - mesh.mean(size_t(v))).norm());
+    for_each_neighbour(mesh.connectivity(), v,
+                       [&](int w) { step(w, (mesh.mean(size_t(w)) - mesh.mean(size_t(v))).norm()); });
   });
   if (path.empty()) throw Error("no edges join vertex " + std::to_string(from) + " to vertex " + std::to_string(to));
   return path;
 }
 
 std::vector<int> shortest_face_path(const CovarianceMesh& mesh, int from, int to, const std::vector<char>* hidden) {
-  const PolyMesh& m = mesh.mesh;
-  const int n = int(m.n_faces());
+  const int n = int(mesh.n_faces());
   for (const int f : {from, to})
     if (f < 0 || f >= n) throw Error("face " + std::to_string(f) + " is not in the mesh");
+  const PolygonTopology& t = mesh.topology();
+  const MeshConnectivity& c = mesh.connectivity();
   const auto centre = [&](int f) {
     Vec3 sum = Vec3::Zero();
-    int corners = 0;
-    for (const VH v : m.fv_range(FH(f))) sum += mesh.mean(size_t(v.idx())), ++corners;
-    return Vec3(sum / double(corners));
+    for (const int v : mesh.face(size_t(f))) sum += mesh.mean(size_t(v));
+    return Vec3(sum / double(mesh.face_size(size_t(f))));
   };
   std::vector<int> path = dijkstra_path(n, from, to, [&](int f, const auto& step) {
     const Vec3 here = centre(f);
-    for (const FH g : m.ff_range(FH(f)))
-      if (!hidden || size_t(g.idx()) >= hidden->size() || !(*hidden)[size_t(g.idx())])
-        step(g.idx(), (centre(g.idx()) - here).norm());
+    for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
+      const size_t e = size_t(c.face_edges[size_t(k)]);
+      const int g = c.edge_faces[2 * e] == f ? c.edge_faces[2 * e + 1] : c.edge_faces[2 * e];
+      if (g < 0) continue;
+      if (!hidden || size_t(g) >= hidden->size() || !(*hidden)[size_t(g)]) step(g, (centre(g) - here).norm());
+    }
   });
   if (path.empty()) throw Error("no edges join face " + std::to_string(from) + " to face " + std::to_string(to));
   return path;
 }
 
 std::vector<int> face_loop(const CovarianceMesh& mesh, int a, int b) {
-  const PolyMesh& m = mesh.mesh;
-  check_vertex(m, a);
-  check_vertex(m, b);
-  const HH start = m.find_halfedge(VH(a), VH(b));
-  if (!start.is_valid()) throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
+  check_vertex(mesh, a);
+  check_vertex(mesh, b);
+  if (a == b || mesh.find_edge(a, b) < 0)
+    throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
+  const PolygonTopology& t = mesh.topology();
+  const CornerLinks links = corner_links(t, mesh.connectivity());
   std::set<int> faces;
-  for (const HH first : {start, m.opposite_halfedge_handle(start)}) {
-    HH h = first;
-    while (true) {
-      const FH f = m.face_handle(h);
-      if (!f.is_valid() || m.valence(f) != 4 || !faces.insert(f.idx()).second) break;
-      h = m.opposite_halfedge_handle(m.next_halfedge_handle(m.next_halfedge_handle(h)));
+  // From each face of the edge (the corners running it either way; none on the boundary side) across
+  // each quad to the face beyond the opposite edge.
+  for (int h : {corner_from_to(mesh, links, a, b), corner_from_to(mesh, links, b, a)})
+    while (h >= 0) {
+      const int f = links.faces[size_t(h)];
+      if (mesh.face_size(size_t(f)) != 4 || !faces.insert(f).second) break;
+      h = links.twins[size_t(links.next(t, links.next(t, h)))];
     }
-  }
   return {faces.begin(), faces.end()};
 }
 
 std::vector<std::vector<int>> boundary_loops(const CovarianceMesh& mesh) {
-  const PolyMesh& m = mesh.mesh;
-  std::vector<char> visited(m.n_halfedges(), 0);
+  const PolygonTopology& t = mesh.topology();
+  const MeshConnectivity& c = mesh.connectivity();
+  const CornerLinks links = corner_links(t, c);
+  // The corner at v whose half-edge lies on the boundary: on a manifold mesh a boundary vertex has one.
+  const auto boundary_corner = [&](int v) {
+    for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i) {
+      const int k = t.offsets[size_t(c.vertex_faces[size_t(i)])] + c.vertex_face_corners[size_t(i)];
+      if (links.twins[size_t(k)] < 0) return k;
+    }
+    return -1;
+  };
+  std::vector<char> visited(mesh.n_vertices(), 0);
   std::vector<std::vector<int>> loops;
-  for (const VH v : m.vertices()) {
-    const HH first = m.halfedge_handle(v);
-    if (!first.is_valid() || !m.is_boundary(first) || visited[size_t(first.idx())]) continue;
-    // The boundary half-edges (no face) run against the faces' edges: follow them, then reverse.
+  for (int v = 0; v < int(mesh.n_vertices()); ++v) {
+    if (visited[size_t(v)] || !mesh.is_boundary_vertex(size_t(v))) continue;
+    // Along the faces' boundary half-edges, each from its vertex to the next corner's.
     std::vector<int> loop;
-    HH h = first;
+    int at = v;
     do {
-      visited[size_t(h.idx())] = 1;
-      loop.push_back(m.from_vertex_handle(h).idx());
-      h = m.next_halfedge_handle(h);
-    } while (h != first);
-    std::reverse(loop.begin() + 1, loop.end());
+      visited[size_t(at)] = 1;
+      loop.push_back(at);
+      at = t.verts[size_t(links.next(t, boundary_corner(at)))];
+    } while (at != v);
     loops.push_back(std::move(loop));
   }
   return loops;

@@ -586,7 +586,7 @@ void OperationList::check_subdivisions(size_t first, const CovarianceMesh& mesh)
   size_t last = first;
   while (last + 1 < steps_.size() && steps_[last + 1].subdivides_whole_mesh) ++last;
   SubdivisionOptions options;
-  options.scheme = scheme_for(topology_of(mesh.mesh), PlanOptions{});
+  options.scheme = scheme_for(mesh.topology(), PlanOptions{});
   options.levels = int(std::min<size_t>(last - first + 1, 1000));
   // The last level's peak, with the mesh before it held.
   OutputSize size = subdivision_size(mesh, options);

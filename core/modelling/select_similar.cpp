@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <span>
 
 #include "core/modelling/mesh_arrays.h"
 #include "core/support/error.h"
@@ -21,11 +22,11 @@ bool near_one(double value, const std::vector<double>& wanted, double tolerance,
 }
 
 // A face's area vector: half the sum of its corners' cross products (Newell).
-Vec3 face_area_vector(const CovarianceMesh& mesh, PolyMesh::FaceHandle f) {
+Vec3 face_area_vector(const CovarianceMesh& mesh, int f) {
   Vec3 sum = Vec3::Zero();
-  const auto corners = mesh.mesh.fv_range(f).to_vector();
+  const std::span<const int> corners = mesh.face(size_t(f));
   for (size_t k = 0; k < corners.size(); ++k)
-    sum += mesh.mean(size_t(corners[k].idx())).cross(mesh.mean(size_t(corners[(k + 1) % corners.size()].idx())));
+    sum += mesh.mean(size_t(corners[k])).cross(mesh.mean(size_t(corners[(k + 1) % corners.size()])));
   return 0.5 * sum;
 }
 
@@ -61,8 +62,8 @@ std::vector<std::array<int, 2>> similar_edges(const CovarianceMesh& mesh,
   std::vector<double> wanted;
   for (const auto& [a, b] : selected) wanted.push_back(value(a, b));
   std::vector<std::array<int, 2>> similar;
-  for (const auto e : mesh.mesh.edges()) {
-    const int a = std::min(e.v0().idx(), e.v1().idx()), b = std::max(e.v0().idx(), e.v1().idx());
+  for (size_t e = 0; e < mesh.n_edges(); ++e) {
+    const auto [a, b] = mesh.edge(e);
     const bool like = similarity == Similarity::edge_length
                           ? near_one(value(a, b), wanted, tolerance, [](double w) { return w; })
                           : near_one(value(a, b), wanted, tolerance, [](double) { return 1.0; });
@@ -74,32 +75,32 @@ std::vector<std::array<int, 2>> similar_edges(const CovarianceMesh& mesh,
 
 std::vector<int> similar_faces(const CovarianceMesh& mesh, const std::vector<int>& selected, Similarity similarity,
                                double tolerance) {
-  const PolyMesh& m = mesh.mesh;
+  const int n_faces = int(mesh.n_faces());
   std::vector<int> similar;
   if (similarity == Similarity::face_sides) {
-    std::set<size_t> sides;
-    for (const int f : selected) sides.insert(m.valence(PolyMesh::FaceHandle(f)));
-    for (const auto f : m.faces())
-      if (sides.count(m.valence(f))) similar.push_back(f.idx());
+    std::set<int> sides;
+    for (const int f : selected) sides.insert(mesh.face_size(size_t(f)));
+    for (int f = 0; f < n_faces; ++f)
+      if (sides.count(mesh.face_size(size_t(f)))) similar.push_back(f);
     return similar;
   }
   if (similarity == Similarity::face_area) {
     std::vector<double> wanted;
-    for (const int f : selected) wanted.push_back(face_area_vector(mesh, PolyMesh::FaceHandle(f)).norm());
-    for (const auto f : m.faces())
+    for (const int f : selected) wanted.push_back(face_area_vector(mesh, f).norm());
+    for (int f = 0; f < n_faces; ++f)
       if (near_one(face_area_vector(mesh, f).norm(), wanted, tolerance, [](double w) { return w; }))
-        similar.push_back(f.idx());
+        similar.push_back(f);
     return similar;
   }
   if (similarity != Similarity::face_normal)
     throw Error(std::string("faces have no ") + similarity_name(similarity) + " to compare");
   std::vector<Vec3> normals;
-  for (const int f : selected) normals.push_back(face_area_vector(mesh, PolyMesh::FaceHandle(f)).normalized());
+  for (const int f : selected) normals.push_back(face_area_vector(mesh, f).normalized());
   const double cosine = std::cos(std::clamp(tolerance, 0.0, 1.0) * M_PI);
-  for (const auto f : m.faces()) {
+  for (int f = 0; f < n_faces; ++f) {
     const Vec3 n = face_area_vector(mesh, f).normalized();
     if (std::any_of(normals.begin(), normals.end(), [&](const Vec3& w) { return n.dot(w) >= cosine - 1e-12; }))
-      similar.push_back(f.idx());
+      similar.push_back(f);
   }
   return similar;
 }
@@ -107,12 +108,11 @@ std::vector<int> similar_faces(const CovarianceMesh& mesh, const std::vector<int
 std::vector<int> similar_vertices(const CovarianceMesh& mesh, const std::vector<int>& selected, Similarity similarity) {
   if (similarity != Similarity::vertex_edges)
     throw Error(std::string("vertices have no ") + similarity_name(similarity) + " to compare");
-  const PolyMesh& m = mesh.mesh;
-  std::set<size_t> valences;
-  for (const int v : selected) valences.insert(m.valence(PolyMesh::VertexHandle(v)));
+  std::set<int> valences;
+  for (const int v : selected) valences.insert(mesh.valence(size_t(v)));
   std::vector<int> similar;
-  for (const auto v : m.vertices())
-    if (valences.count(m.valence(v))) similar.push_back(v.idx());
+  for (int v = 0; v < int(mesh.n_vertices()); ++v)
+    if (valences.count(mesh.valence(size_t(v)))) similar.push_back(v);
   return similar;
 }
 

@@ -71,7 +71,7 @@ void put_corner_piece_first(std::vector<std::vector<int>>& pieces, int corner) {
 
 Modelled subdivide_all(const CovarianceMesh& mesh) {
   SubdivisionOptions options;
-  options.scheme = scheme_for(topology_of(mesh.mesh), PlanOptions{});
+  options.scheme = scheme_for(mesh.topology(), PlanOptions{});
   options.levels = 1;
   SubdivisionResult r = subdivide(mesh, options);
   Modelled out{std::move(r.mesh), {}, "", {}};

@@ -66,9 +66,14 @@ Stencil LocalMesh::combination(const std::vector<std::pair<int, double>>& terms)
 }
 
 LocalMesh base_local_mesh(const PolygonTopology& topology, const Sharpness& sharpness) {
+  return base_local_mesh(topology, connectivity_of(topology), sharpness);
+}
+
+LocalMesh base_local_mesh(const PolygonTopology& topology, const MeshConnectivity& connectivity,
+                          const Sharpness& sharpness) {
   LocalMesh m;
   m.topology = topology;
-  m.connectivity = connectivity_of(topology);
+  m.connectivity = connectivity;
   m.complete.assign(size_t(topology.n_vertices), 1);
   if (!sharpness.empty()) {
     CreaseLevel level = crease_level(sharpness, m.connectivity, topology.n_vertices);
@@ -123,8 +128,8 @@ LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corn
     const auto& oc = out.connectivity;
     out.creases.edges.resize(size_t(oc.n_edges()));
     for (int e = 0; e < oc.n_edges(); ++e)
-      out.creases.edges[size_t(e)] = m.creases.edges[size_t(
-          m.find_edge(old_index[size_t(oc.edge_verts[2 * size_t(e)])], old_index[size_t(oc.edge_verts[2 * size_t(e) + 1])]))];
+      out.creases.edges[size_t(e)] = m.creases.edges[size_t(m.find_edge(
+          old_index[size_t(oc.edge_verts[2 * size_t(e)])], old_index[size_t(oc.edge_verts[2 * size_t(e) + 1])]))];
     for (const int v : old_index) out.creases.vertices.push_back(m.creases.vertices[size_t(v)]);
   }
   return out;

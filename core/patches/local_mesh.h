@@ -52,6 +52,9 @@ struct LocalMesh {
 /// The whole base mesh as a LocalMesh (every vertex complete, identity stencils), with the mesh's
 /// sharpness laid out on it (none when `sharpness` is empty).
 LocalMesh base_local_mesh(const PolygonTopology& topology, const Sharpness& sharpness = {});
+/// The same with the topology's connectivity already built (a covariance mesh's own).
+LocalMesh base_local_mesh(const PolygonTopology& topology, const MeshConnectivity& connectivity,
+                          const Sharpness& sharpness = {});
 
 /// The faces around the given vertices (their 1-ring), renumbered, with completeness carried over.
 LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corners, std::vector<int>& new_index);

@@ -12,13 +12,13 @@ namespace gps {
 namespace {
 
 // The first patch of each face, and the total at the end.
-std::vector<int> first_patches(const PolyMesh& mesh, const PatchPlans& plans) {
+std::vector<int> first_patches(const PolygonTopology& topology, const PatchPlans& plans) {
   std::vector<int> first;
   if (plans.shape == PatchShape::triangle) {  // one patch per triangle
-    first.resize(mesh.n_faces() + 1);
+    first.resize(size_t(topology.n_faces()) + 1);
     std::iota(first.begin(), first.end(), 0);
   } else {
-    first = make_patch_layout(mesh).first_patch;
+    first = make_patch_layout(topology).first_patch;
   }
   if (first.empty() || first.back() != plans.n_patches())
     throw Error("the surface's patches do not follow its mesh's faces");
@@ -27,20 +27,22 @@ std::vector<int> first_patches(const PolyMesh& mesh, const PatchPlans& plans) {
 
 }  // namespace
 
-std::vector<int> patch_faces(const PolyMesh& mesh, const PatchPlans& plans) {
-  const std::vector<int> first = first_patches(mesh, plans);
+std::vector<int> patch_faces(const PolygonTopology& topology, const PatchPlans& plans) {
+  const std::vector<int> first = first_patches(topology, plans);
   std::vector<int> faces(size_t(plans.n_patches()));
   for (size_t f = 0; f + 1 < first.size(); ++f)
     for (int p = first[f]; p < first[f + 1]; ++p) faces[size_t(p)] = int(f);
   return faces;
 }
 
-std::vector<int> patches_of_faces(const PolyMesh& mesh, const PatchPlans& plans, const std::vector<int>& faces) {
-  const std::vector<int> first = first_patches(mesh, plans);
+std::vector<int> patches_of_faces(const PolygonTopology& topology, const PatchPlans& plans,
+                                  const std::vector<int>& faces) {
+  const std::vector<int> first = first_patches(topology, plans);
   std::vector<int> patches;
   for (const int f : faces) {
     if (f < 0 || size_t(f) + 1 >= first.size())
-      throw Error("face " + std::to_string(f) + " is not in the mesh (" + std::to_string(mesh.n_faces()) + " faces)");
+      throw Error("face " + std::to_string(f) + " is not in the mesh (" + std::to_string(topology.n_faces()) +
+                  " faces)");
     for (int p = first[size_t(f)]; p < first[size_t(f) + 1]; ++p) patches.push_back(p);
   }
   std::sort(patches.begin(), patches.end());

@@ -3,17 +3,18 @@
 // (patch numbering: core/plans/patch_layout.h for Catmull-Clark, one patch per triangle for Loop).
 #include <vector>
 
-#include "core/mesh/covariance_mesh.h"
+#include "core/mesh/mesh_connectivity.h"
 #include "core/plans/patch_plans.h"
 
 namespace gps {
 
-/// The base face of each patch of `plans`, planned for `mesh`. Throws gps::Error where the plans'
+/// The base face of each patch of `plans`, planned for a mesh of these faces. Throws gps::Error where the plans'
 /// patches do not follow the mesh's faces (plans of another mesh).
-std::vector<int> patch_faces(const PolyMesh& mesh, const PatchPlans& plans);
+std::vector<int> patch_faces(const PolygonTopology& topology, const PatchPlans& plans);
 
 /// The patches of `plans` that lie on `faces` (any order, repeats allowed), ascending. Throws
 /// gps::Error as patch_faces() does, or naming a face the mesh does not have.
-std::vector<int> patches_of_faces(const PolyMesh& mesh, const PatchPlans& plans, const std::vector<int>& faces);
+std::vector<int> patches_of_faces(const PolygonTopology& topology, const PatchPlans& plans,
+                                  const std::vector<int>& faces);
 
 }  // namespace gps

@@ -2,19 +2,13 @@
 
 namespace gps {
 
-std::vector<int> face_vertices(const PolyMesh& mesh, PolyMesh::FaceHandle f) {
-  std::vector<int> out;
-  for (const auto v : mesh.fv_range(f)) out.push_back(v.idx());
-  return out;
-}
-
-PatchLayout make_patch_layout(const PolyMesh& mesh) {
+PatchLayout make_patch_layout(const PolygonTopology& faces) {
   PatchLayout layout;
-  layout.first_patch.reserve(mesh.n_faces() + 1);
+  layout.first_patch.reserve(size_t(faces.n_faces()) + 1);
   int next = 0;
-  for (const auto f : mesh.faces()) {
+  for (int f = 0; f < faces.n_faces(); ++f) {
     layout.first_patch.push_back(next);
-    const int n = int(mesh.valence(f));
+    const int n = faces.face_size(f);
     next += n == 4 ? 1 : n;
   }
   layout.first_patch.push_back(next);

@@ -2,7 +2,7 @@
 // Which patches a polygon mesh has and how their (u, v) domains sit on its faces (docs/design.md §2 step 1).
 //
 // Patches are numbered in base-face order. A quad is one patch: its corners, in the order
-// face_vertices() returns them, sit at (u, v) = (0,0), (1,0), (1,1), (0,1). A face with n ≠ 4
+// the face lists them, sit at (u, v) = (0,0), (1,0), (1,1), (0,1). A face with n ≠ 4
 // vertices c_0..c_{n-1} is n patches, after one Catmull-Clark step: patch first_patch(f) + k is the
 // quad (c_k', e'(c_k, c_{k+1}), f', e'(c_{k-1}, c_k)) — vertex point, edge point, face point, edge
 // point — with the same corner placement. Where a quad meets such a face, one quad edge meets two
@@ -11,13 +11,10 @@
 // each half samples at all steps (the tessellation levels of core/plans/patch_plans.h's PatchEdgePart).
 #include <vector>
 
-#include "core/mesh/covariance_mesh.h"
+#include "core/mesh/mesh_connectivity.h"
 #include "core/reference/patch_param.h"
 
 namespace gps {
-
-/// The vertices of a face in the one order every part of gpsurf uses (OpenMesh's face-vertex order).
-std::vector<int> face_vertices(const PolyMesh& mesh, PolyMesh::FaceHandle f);
 
 /// Patch numbering of a mesh: first patch per face and the total.
 struct PatchLayout {
@@ -25,6 +22,6 @@ struct PatchLayout {
   int n_patches() const { return first_patch.empty() ? 0 : first_patch.back(); }
 };
 
-PatchLayout make_patch_layout(const PolyMesh& mesh);
+PatchLayout make_patch_layout(const PolygonTopology& faces);
 
 }  // namespace gps

@@ -1,6 +1,7 @@
 #pragma once
 // Subdivision plans and their stencil table from a mesh's topology (thesis 2.3, docs/design.md §2).
 #include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/sharpness.h"
 #include "core/plans/patch_plans.h"
 
 namespace gps {

@@ -51,7 +51,7 @@ SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOpt
 }
 
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {
-  const PolygonTopology topology = topology_of(mesh.mesh);
+  const PolygonTopology& topology = mesh.topology();
   scheme_ = scheme_for(topology, options);
   tables_ = build_surface_plans(topology, options, mesh.sharpness);
   dependents_ = stencil_dependents(tables_.stencils);

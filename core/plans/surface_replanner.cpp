@@ -251,7 +251,16 @@ int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpn
   // The checks first: a refusal changes nothing.
   const Scheme scheme = scheme_for(topology, options_);
   check(topology, scheme);
-  LocalMesh base = base_local_mesh(topology, sharpness);
+  return replan(base_local_mesh(topology, sharpness), sharpness, origin);
+}
+
+int SurfaceReplanner::set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin) {
+  check(mesh.topology(), scheme_for(mesh.topology(), options_));
+  return replan(base_local_mesh(mesh.topology(), mesh.connectivity(), mesh.sharpness), mesh.sharpness, origin);
+}
+
+int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const std::vector<int>& origin) {
+  const Scheme scheme = scheme_for(base.topology, options_);
   const bool same_builder = scheme == scheme_ && !ranges_.empty() && base.has_creases() == base_.has_creases();
   const LocalMesh previous = std::exchange(base_, std::move(base));
   const Sharpness old_sharpness = std::exchange(sharpness_, sharpness);

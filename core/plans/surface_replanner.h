@@ -75,6 +75,8 @@ public:
   /// or when the origin is not increasing. Returns how many faces were planned. Throws as the
   /// constructor does, the tables unchanged.
   int set_topology(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin = {});
+  /// The same for a mesh's faces and sharpness, reading the connectivity it holds.
+  int set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin = {});
   /// What the last set_sharpness or set_topology kept (after the constructor: from 0, nothing kept).
   /// A renderer evaluates again only the other patches.
   const PlanChange& last_change() const { return change_; }
@@ -84,6 +86,8 @@ public:
 private:
   // The plan builders' checks of a topology under `scheme` (valences, depth); throws as they do.
   void check(const PolygonTopology& topology, Scheme scheme) const;
+  // set_topology's work, the new mesh's base piece built.
+  int replan(LocalMesh&& base, const Sharpness& sharpness, const std::vector<int>& origin);
   // Builds the ranges `which` on all cores, then merges every range into tables_. `old_patch_first`:
   // per range, where its patches started before the change (−1: built now); empty: none kept.
   // `old_face_patch`: per face, where the patches of the face it was started before, where its plan is

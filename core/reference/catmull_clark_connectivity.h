@@ -8,7 +8,7 @@ namespace gps {
 /// Equals connectivity_of(catmull_clark_topology(t, c)) element for element (the same edge order,
 /// by lower then higher vertex; the same incidence order), in time linear in the refined mesh.
 /// `c` must be connectivity_of(t) or this function's own output, and no face may repeat a vertex
-/// (as OpenMesh guarantees).
+/// (as a covariance mesh guarantees).
 MeshConnectivity catmull_clark_connectivity(const PolygonTopology& t, const MeshConnectivity& c);
 
 }  // namespace gps

@@ -239,7 +239,7 @@ void limit_tangents_of(const Refined<Dual>& r, const SubdivisionOptions& o, std:
 }  // namespace
 
 SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
-  const PolygonTopology base = topology_of(mesh.mesh);
+  const PolygonTopology& base = mesh.topology();
   // Loop on a mesh that is not all triangles is refused below, naming the face.
   if (options.scheme != Scheme::loop || all_triangles(base))
     check_output_size(subdivision_size(mesh, options),
@@ -249,7 +249,7 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   SubdivisionResult result;
   const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
   const bool with_normals = options.normals && options.limit;
-  const Refined<Dual> r =
+  Refined<Dual> r =
       refine(base, base_points(mesh), mesh.sharpness, options, with_params ? &result.vertex_params : nullptr,
              with_normals ? &result.corner_params : nullptr);
   std::vector<Dual> first, second;  // limit tangents, with_normals
@@ -258,14 +258,11 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
     result.normals.resize(size_t(r.topology.n_vertices));
   }
 
-  // The vertices as add_vertex() adds them, with storage at its final size and the properties resized
-  // once; each Gaussian is mapped back as its value is made, its mean going straight to its point.
-  // Edges and faces: add_faces, at their exact counts.
+  // Each Gaussian is mapped back as its value is made; the refined faces and their connectivity
+  // become the mesh's own.
   const int n = r.topology.n_vertices;
-  PolyMesh& out = result.mesh.mesh;
-  out.resize(size_t(n), 0, 0);
-  std::vector<Mat3>& covariances = result.mesh.covariances;
-  covariances.resize(size_t(n));
+  std::vector<Vec3> means(static_cast<size_t>(n));
+  std::vector<Mat3> covariances(static_cast<size_t>(n));
   int first_invalid = n;
   put_final_values<Dual>(r, options, [&](int v, const Dual& q) {
     const auto g = from_dual(q);
@@ -274,21 +271,23 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
       first_invalid = std::min(first_invalid, v);
       return;
     }
-    out.set_point(PolyMesh::VertexHandle(v), to_point(g->mean));
+    means[size_t(v)] = g->mean;
     covariances[size_t(v)] = g->covariance;
     if (with_normals) result.normals[size_t(v)] = limit_normal(q, g->mean, first[size_t(v)], second[size_t(v)]);
   });
   if (first_invalid < n)
     throw Error("subdivided vertex " + std::to_string(first_invalid) + " left the cone of positive definite matrices");
-  add_faces(out, r.topology, r.connectivity, "subdivided mesh");
-  result.mesh.sharpness = sharpness_of(r.connectivity, r.creases);
+  Sharpness sharpness = sharpness_of(r.connectivity, r.creases);
+  result.mesh = make_covariance_mesh(std::move(means), std::move(covariances), std::move(r.topology),
+                                     std::move(r.connectivity), "subdivided mesh");
+  result.mesh.sharpness = std::move(sharpness);
   return result;
 }
 
 std::vector<Vec3> subdivide_points(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
   std::vector<Vec3> points(mesh.n_vertices());
   for (size_t i = 0; i < points.size(); ++i) points[i] = mesh.mean(i);
-  const Refined<Vec3> r = refine(topology_of(mesh.mesh), points, mesh.sharpness, options, nullptr);
+  const Refined<Vec3> r = refine(mesh.topology(), points, mesh.sharpness, options, nullptr);
   points.resize(size_t(r.topology.n_vertices));
   put_final_values<Vec3>(r, options, [&](int v, const Vec3& p) { points[size_t(v)] = p; });
   return points;

@@ -12,9 +12,8 @@ constexpr double kBytesPerVertex = 160, kBytesPerCorner = 80;
 }  // namespace
 
 OutputSize subdivision_size(const CovarianceMesh& mesh, const SubdivisionOptions& options) {
-  double vertices = double(mesh.mesh.n_vertices()), edges = double(mesh.mesh.n_edges()),
-         faces = double(mesh.mesh.n_faces()), corners = 0;
-  for (const auto f : mesh.mesh.faces()) corners += double(mesh.mesh.valence(f));
+  double vertices = double(mesh.n_vertices()), edges = double(mesh.n_edges()), faces = double(mesh.n_faces()),
+         corners = double(mesh.n_corners());
   for (int level = 0; level < options.levels; ++level) {
     if (options.scheme == Scheme::loop) {
       // A vertex per vertex and per edge; every edge in 2, three inner edges and 4 triangles per triangle.

@@ -32,10 +32,8 @@ void SurfaceCache::set_cage(const CovarianceMesh& mesh, const FramedGaussians& g
     const Vec3& m = gaussians.mean(i);
     cage_positions_[i] = glm::vec3(float(m.x()), float(m.y()), float(m.z()));
   }
-  cage_edges_.clear();
-  cage_edges_.reserve(2 * mesh.mesh.n_edges());
-  for (const auto e : mesh.mesh.edges())
-    cage_edges_.insert(cage_edges_.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
+  const std::vector<int>& ends = mesh.connectivity().edge_verts;
+  cage_edges_.assign(ends.begin(), ends.end());
   if (follow) return;
   stored_ = false;
   tracked_points_ = -1;

@@ -28,13 +28,13 @@ int corner_nearest_centre(const PatchParam* corners) {
 }
 
 SubdivisionResult reference(const CovarianceMesh& mesh, int levels, const PlanOptions& options) {
-  return subdivide(mesh, {scheme_for(topology_of(mesh.mesh), options), levels, true, options.loop_beta, true});
+  return subdivide(mesh, {scheme_for(mesh.topology(), options), levels, true, options.loop_beta, true});
 }
 }  // namespace
 
 TriangleMesh reference_triangles(const CovarianceMesh& mesh, int levels, const PlanOptions& options) {
   const SubdivisionResult r = reference(mesh, levels, options);
-  const PolygonTopology t = topology_of(r.mesh.mesh);
+  const PolygonTopology& t = r.mesh.topology();
   TriangleMesh out;
   out.positions.resize(r.mesh.n_vertices());
   for (size_t i = 0; i < out.positions.size(); ++i) out.positions[i] = r.mesh.mean(i);
@@ -53,7 +53,7 @@ TriangleMesh reference_triangles(const CovarianceMesh& mesh, int levels, const P
 TriangleMesh reference_in_patch_triangles(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const Camera& camera,
                                           const DrawOptions& o, int width, int height, int levels) {
   const SubdivisionResult r = reference(mesh, levels, {Scheme::catmull_clark});
-  const PolygonTopology t = topology_of(r.mesh.mesh);
+  const PolygonTopology& t = r.mesh.topology();
   const double steps = std::ldexp(1.0, levels);  // grid points per patch edge
   const auto key = [steps](int patch, double u, double v) {
     return (int64_t(patch) << 40) | (int64_t(std::lround(u * steps)) << 20) | int64_t(std::lround(v * steps));

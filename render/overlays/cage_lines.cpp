@@ -21,9 +21,8 @@ CageLines::CageLines()
 }
 
 void CageLines::set_mesh(const CovarianceMesh& mesh, const FramedGaussians& gaussians) {
-  std::vector<unsigned> edges;
-  edges.reserve(2 * mesh.mesh.n_edges());
-  for (const auto e : mesh.mesh.edges()) edges.insert(edges.end(), {unsigned(e.v0().idx()), unsigned(e.v1().idx())});
+  const std::vector<int>& ends = mesh.connectivity().edge_verts;
+  const std::vector<unsigned> edges(ends.begin(), ends.end());
   index_count_ = int(edges.size());
   upload_positions(gaussians);
   glNamedBufferData(ibo_, GLsizeiptr(std::max<size_t>(2, edges.size()) * sizeof(unsigned)), edges.data(),

@@ -53,7 +53,7 @@ void add_tetrahedron(std::vector<Vec3>& p, Faces& faces, const Vec3& at, int ape
 
 // The mesh as read back: manifold (read_mesh builds it), every directed edge once; its boundary edges.
 int boundary_edges(const CovarianceMesh& m) {
-  const PolygonTopology t = topology_of(m.mesh);
+  const PolygonTopology& t = m.topology();
   std::map<std::pair<int, int>, int> directed;
   for (int f = 0; f < t.n_faces(); ++f)
     for (int k = 0; k < t.face_size(f); ++k)

@@ -215,9 +215,10 @@ TEST(Bridge, LoopsOfEightAndSevenCloseADrum) {
       const int u = int(key >> 32), v = int(uint32_t(key));
       if (u < 8 && v >= 8 && v < 15) {
         ++across;
-        if (!fans)  // the triangles' diagonals reach further
+        if (!fans) {  // the triangles' diagonals reach further
           EXPECT_LT((a.means[size_t(u)] - a.means[size_t(v)]).norm(), std::hypot(1.0, 2 * std::sin(M_PI / 8)))
               << u << "–" << v;
+        }
       }
     }
     EXPECT_EQ(across, fans ? 15 : 8);  // the triangles' diagonals cross too

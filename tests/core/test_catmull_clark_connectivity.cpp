@@ -16,7 +16,7 @@ using test::expect_equal;
 TEST(CatmullClarkConnectivity, EqualsConnectivityOfTheRefinedTopology) {
   for (const std::string& name : sample_names()) {
     SCOPED_TRACE(name);
-    PolygonTopology t = topology_of(make_sample(name, 0).mesh);
+    PolygonTopology t = make_sample(name, 0).topology();
     MeshConnectivity c = connectivity_of(t);
     for (int level = 0; level < 2; ++level) {
       MeshConnectivity refined = catmull_clark_connectivity(t, c);
@@ -25,7 +25,7 @@ TEST(CatmullClarkConnectivity, EqualsConnectivityOfTheRefinedTopology) {
       c = std::move(refined);
     }
   }
-  const PolygonTopology t = topology_of(make_sample("grid", 3 * kParallelFaces).mesh);
+  const PolygonTopology t = make_sample("grid", 3 * kParallelFaces).topology();
   const MeshConnectivity c = connectivity_of(t);
   expect_equal(catmull_clark_connectivity(t, c), connectivity_of(catmull_clark_topology(t, c)));
 }

@@ -49,7 +49,7 @@ struct Level {
 
 std::vector<Level> reference_levels(const CovarianceMesh& mesh, Scheme scheme, int levels) {
   std::vector<Level> out(1);
-  out[0].topology = topology_of(mesh.mesh);
+  out[0].topology = mesh.topology();
   out[0].connectivity = connectivity_of(out[0].topology);
   out[0].values = base_points(mesh);
   out[0].creases = crease_level(mesh.sharpness, out[0].connectivity, out[0].topology.n_vertices);

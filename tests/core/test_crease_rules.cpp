@@ -48,8 +48,7 @@ TEST(CreaseRules, VertexRulesFollowSdc) {
   m.sharpness.set_crease(1, 2, 1.0);
   m.sharpness.set_crease(1, 5, 0.5);
   m.sharpness.set_corner(6, 0.5, 8);
-  const PolygonTopology t = topology_of(m.mesh);
-  const MeshConnectivity c = connectivity_of(t);
+  const MeshConnectivity& c = m.connectivity();
   const CreaseLevel level = crease_level(m.sharpness, c, 8);
   int a = -1, b = -1;
   EXPECT_EQ(vertex_rule(c, level, 0), VertexRule::dart);
@@ -69,8 +68,8 @@ TEST(CreaseRules, VertexRulesFollowSdc) {
   EXPECT_EQ(r.parent_weight, 1.0);
 
   // An open grid: boundary vertices are creases along the boundary, its corners corners.
-  const PolygonTopology g = topology_of(test::grid_mesh(3, 3).mesh);
-  const MeshConnectivity gc = connectivity_of(g);
+  const CovarianceMesh grid = test::grid_mesh(3, 3);
+  const MeshConnectivity& gc = grid.connectivity();
   EXPECT_EQ(vertex_rule(gc, CreaseLevel{}, 0), VertexRule::corner);
   EXPECT_EQ(vertex_rule(gc, CreaseLevel{}, 1, &a, &b), VertexRule::crease);
   EXPECT_EQ(std::min(a, b), 0);
@@ -83,8 +82,7 @@ TEST(CreaseRules, FractionalWeightIsTheMeanOfWhatDecays) {
   m.sharpness.set_crease(0, 1, 0.25);
   m.sharpness.set_crease(0, 3, 0.75);
   m.sharpness.set_crease(0, 4, 3.0);
-  const PolygonTopology t = topology_of(m.mesh);
-  const MeshConnectivity c = connectivity_of(t);
+  const MeshConnectivity& c = m.connectivity();
   const VertexPointRule r = vertex_point_rule(c, crease_level(m.sharpness, c, 8), 0);
   EXPECT_EQ(r.parent, VertexRule::corner);
   EXPECT_EQ(r.child, VertexRule::dart);
@@ -97,7 +95,7 @@ TEST(CreaseRules, SharpnessDecaysOneLevelAtATime) {
   m.sharpness.set_crease(0, 1, 2.5);
   m.sharpness.set_crease(4, 5, kInfiniteSharpness);
   m.sharpness.set_corner(7, 4.7, 8);
-  const int e01 = edge_of(connectivity_of(topology_of(m.mesh)), 0, 1);
+  const int e01 = edge_of(m.connectivity(), 0, 1);
   const SubdivisionResult one = subdivide(m, SubdivisionOptions{Scheme::catmull_clark, 1});
   EXPECT_EQ(one.mesh.sharpness.crease(0, 8 + e01), 1.5);
   EXPECT_EQ(one.mesh.sharpness.crease(1, 8 + e01), 1.5);
@@ -121,7 +119,7 @@ TEST(CreaseRules, SharpnessOnBoundaryEdgesChangesNothing) {
                {test::with_random_covariances(test::triangle_grid_mesh(4, 3), 22), Scheme::loop}};
   for (const auto& [mesh, scheme] : cases) {
     CovarianceMesh marked = mesh;
-    const MeshConnectivity c = connectivity_of(topology_of(mesh.mesh));
+    const MeshConnectivity& c = mesh.connectivity();
     for (int e = 0; e < c.n_edges(); ++e)
       if (c.is_boundary_edge(e))
         marked.sharpness.set_crease(c.edge_verts[2 * size_t(e)], c.edge_verts[2 * size_t(e) + 1], kInfiniteSharpness);
@@ -177,7 +175,7 @@ TEST(CreaseRules, InfinitelySharpCreaseIsTheCubicBSplineOfItsVertices) {
   for (const auto& [base, scheme, first] : cases) {
     for (const bool equal : {true, false}) {
       const CovarianceMesh mesh = equal ? base : test::with_random_covariances(base, 23);
-      const MeshConnectivity c = connectivity_of(topology_of(mesh.mesh));
+      const MeshConnectivity& c = mesh.connectivity();
       const int nv = int(mesh.n_vertices());
       const std::vector<Dual> q = base_points(mesh);
       const SubdivisionResult r = subdivide(mesh, SubdivisionOptions{scheme, 4, true});

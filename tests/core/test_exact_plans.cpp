@@ -165,7 +165,7 @@ TEST(ExactPlans, NormalsAreDefinedAtExtraordinaryVertices) {
     const CovarianceMesh mesh = with_random_covariances(quad_bipyramid(n), unsigned(n));
     const PlannedMesh p = exact_plans(mesh);
     const auto ref = subdivide(mesh, {Scheme::catmull_clark, 7, true});
-    const auto fine = connectivity_of(topology_of(ref.mesh.mesh));
+    const auto& fine = ref.mesh.connectivity();
     int checked = 0;
     for (size_t k = 0; k < ref.mesh.n_vertices(); ++k) {
       const PatchParam& pp = ref.vertex_params[k];
@@ -175,7 +175,7 @@ TEST(ExactPlans, NormalsAreDefinedAtExtraordinaryVertices) {
       if (s->kind != NodeKind::extraordinary || fine.valence(int(k)) == 4) continue;
       // The reference's normal: Σ (x_i − x) × (x_{i+1} − x) over the ring, in face order.
       Vec3 normal = Vec3::Zero();
-      const auto& t = topology_of(ref.mesh.mesh);
+      const auto& t = ref.mesh.topology();
       for (int i = fine.vertex_face_offsets[k]; i < fine.vertex_face_offsets[k + 1]; ++i) {
         const int f = fine.vertex_faces[size_t(i)], c = fine.vertex_face_corners[size_t(i)];
         const auto vertex = [&](int j) {
@@ -195,7 +195,7 @@ TEST(ExactPlans, NormalsAreDefinedAtExtraordinaryVertices) {
 // centre), whatever depth is asked for, and need far fewer stencil rows than the thesis' plans.
 TEST(ExactPlans, StopOneLevelBelowIrregularVertices) {
   for (const char* name : {"cube", "valence7", "wirecube", "cylinder", "cone-pointy", "pawn", "sphere"}) {
-    const PolygonTopology t = topology_of(make_sample(name).mesh);
+    const PolygonTopology t = make_sample(name).topology();
     const SurfaceTables exact = build_surface_plans(t, PlanOptions{Scheme::catmull_clark});
     const SurfaceTables thesis = build_surface_plans(t, PlanOptions{Scheme::catmull_clark, 3, LoopBeta::loop, false});
     std::printf("%-12s exact: depth %d, %d rows, %zu nodes; thesis depth 3: %d rows, %zu nodes\n", name,

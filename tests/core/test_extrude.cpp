@@ -91,7 +91,7 @@ TEST(ExtrudeFaces, ATriangleMeshStaysATriangleMesh) {
 
   std::vector<int> rim;
   for (size_t v = 0; v < cone.n_vertices(); ++v)
-    if (cone.mesh.is_boundary(cone.mesh.vertex_handle(int(v)))) rim.push_back(int(v));
+    if (cone.is_boundary_vertex(v)) rim.push_back(int(v));
   ASSERT_EQ(rim.size(), 8u);
   const Modelled edges = extrude_vertices(cone, rim, Vec3(0, 0, -0.5));
   EXPECT_EQ(shape_of(edges.mesh).faces, s0.faces + 16);

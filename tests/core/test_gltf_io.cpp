@@ -25,9 +25,9 @@ using nlohmann::json;
 // rounded to float: comparable between a mesh and its glTF copy whatever the vertex order.
 std::multiset<std::vector<float>> triangles_by_position(const CovarianceMesh& m) {
   std::multiset<std::vector<float>> out;
-  for (const auto f : m.mesh.faces()) {
+  for (size_t f = 0; f < m.n_faces(); ++f) {
     std::vector<Vec3> corners;
-    for (const auto v : m.mesh.fv_range(f)) corners.push_back(m.mean(size_t(v.idx())));
+    for (const int v : m.face(f)) corners.push_back(m.mean(size_t(v)));
     for (size_t k = 1; k + 1 < corners.size(); ++k) {
       // Rotated so that the smallest corner leads: the same triangle, turning the same way, compares equal.
       std::vector<std::vector<float>> t;
@@ -44,7 +44,7 @@ std::multiset<std::vector<float>> triangles_by_position(const CovarianceMesh& m)
 
 size_t n_triangles(const CovarianceMesh& m) {
   size_t n = 0;
-  for (const auto f : m.mesh.faces()) n += m.mesh.valence(f) - 2;
+  for (size_t f = 0; f < m.n_faces(); ++f) n += size_t(m.face_size(f) - 2);
   return n;
 }
 
@@ -222,11 +222,11 @@ TEST(GltfIo, SeamSplitCubeWeldsTo8VerticesInGlbAndGltfWithBinFile) {
     EXPECT_EQ(m.n_vertices(), 8u) << name;
     EXPECT_EQ(m.n_faces(), 12u) << name;
     // Closed: every edge has two faces, and the faces turn outward (positive volume).
-    for (const auto e : m.mesh.edges()) EXPECT_FALSE(m.mesh.is_boundary(e));
+    for (size_t e = 0; e < m.n_edges(); ++e) EXPECT_FALSE(m.is_boundary_edge(e));
     double volume = 0;
-    for (const auto f : m.mesh.faces()) {
+    for (size_t f = 0; f < m.n_faces(); ++f) {
       std::vector<Vec3> c;
-      for (const auto v : m.mesh.fv_range(f)) c.push_back(m.mean(size_t(v.idx())));
+      for (const int v : m.face(f)) c.push_back(m.mean(size_t(v)));
       volume += c[0].dot(c[1].cross(c[2])) / 6;
     }
     EXPECT_DOUBLE_EQ(volume, 8.0) << name;
@@ -310,9 +310,9 @@ TEST(GltfIo, StripAndFanPrimitivesGiveTheirTriangles) {
   EXPECT_EQ(m.n_vertices(), 8u);
   EXPECT_EQ(m.n_faces(), 4u);
   // All four turn the same way (+z), the strip's second one reversed as the specification asks.
-  for (const auto f : m.mesh.faces()) {
+  for (size_t f = 0; f < m.n_faces(); ++f) {
     std::vector<Vec3> c;
-    for (const auto v : m.mesh.fv_range(f)) c.push_back(m.mean(size_t(v.idx())));
+    for (const int v : m.face(f)) c.push_back(m.mean(size_t(v)));
     EXPECT_GT((c[1] - c[0]).cross(c[2] - c[0]).z(), 0.0);
   }
 }

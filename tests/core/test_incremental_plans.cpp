@@ -26,7 +26,7 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
     PlanOptions options;
     options.scheme = c.scheme;
     CovarianceMesh mesh = c.mesh;
-    SurfaceReplanner replanner(topology_of(mesh.mesh), options, mesh.sharpness, test::kSmallRanges);
+    SurfaceReplanner replanner(mesh.topology(), options, mesh.sharpness, test::kSmallRanges);
     std::mt19937 random(11);
     int applied = 0, planned = 0, faces = 0;
     for (int step = 0; step < 40 && applied < c.operations; ++step) {
@@ -37,7 +37,7 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
         continue;  // a refusal: nothing to re-plan
       }
       const std::string where = c.name + ", step " + std::to_string(step) + " (" + result.summary + ")";
-      const PolygonTopology after = topology_of(result.mesh.mesh);
+      const PolygonTopology& after = result.mesh.topology();
       SurfaceTables full;
       try {
         full = build_surface_plans(after, options, result.mesh.sharpness);
@@ -51,7 +51,7 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
       planned += replanner.set_topology(after, result.mesh.sharpness, result.vertex_origin);
       faces += after.n_faces();
       test::expect_same_tables(replanner.tables(), full, where);
-      const PolygonTopology before = topology_of(mesh.mesh);
+      const PolygonTopology& before = mesh.topology();
       const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
       replanner.set_topology(before, mesh.sharpness, back);
       test::expect_same_tables(replanner.tables(), build_surface_plans(before, options, mesh.sharpness),
@@ -63,8 +63,9 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
     }
     EXPECT_GE(applied, c.operations - 4) << c.name;
     // Loop's smooth builder plans the whole mesh; on a mesh of a few dozen faces every piece is most of it.
-    if (c.name != "icosphere (smooth triangles)" && c.mesh.n_faces() > 200)
+    if (c.name != "icosphere (smooth triangles)" && c.mesh.n_faces() > 200) {
       EXPECT_LT(planned, faces / 2) << c.name << ": most faces kept their plans";
+    }
   }
 }
 
@@ -74,11 +75,11 @@ TEST(IncrementalPlans, AnyOriginGivesTheTablesOfAFullReplan) {
   const CovarianceMesh sphere = make_sample("sphere", 300);
   PlanOptions options;
   const Modelled removed = delete_faces(sphere, {5, 40});
-  const PolygonTopology after = topology_of(removed.mesh.mesh);
+  const PolygonTopology& after = removed.mesh.topology();
   const std::vector<std::vector<int>> origins = {
       {}, std::vector<int>(removed.mesh.n_vertices(), -1), removed.vertex_origin, {0, 2, 1}};
   for (size_t i = 0; i < origins.size(); ++i) {
-    SurfaceReplanner replanner(topology_of(sphere.mesh), options, {}, test::kSmallRanges);
+    SurfaceReplanner replanner(sphere.topology(), options, {}, test::kSmallRanges);
     replanner.set_topology(after, {}, origins[i]);
     test::expect_same_tables(replanner.tables(), build_surface_plans(after, options, {}),
                              "origin " + std::to_string(i));
@@ -89,9 +90,9 @@ TEST(IncrementalPlans, AnyOriginGivesTheTablesOfAFullReplan) {
 TEST(IncrementalPlans, AnExtrudeBuildsAFewRangesAgain) {
   const CovarianceMesh sphere = make_sample("sphere", 6000);
   PlanOptions options;
-  SurfaceReplanner replanner(topology_of(sphere.mesh), options, {});
+  SurfaceReplanner replanner(sphere.topology(), options, {});
   const Modelled extruded = extrude_faces(sphere, {int(sphere.n_faces() / 2)}, 0.01);
-  const PolygonTopology after = topology_of(extruded.mesh.mesh);
+  const PolygonTopology& after = extruded.mesh.topology();
   const int planned = replanner.set_topology(after, {}, extruded.vertex_origin);
   EXPECT_LE(planned, 4 * SurfaceReplanner::kFacesPerRange);
   EXPECT_GT(planned, 0);
@@ -101,15 +102,15 @@ TEST(IncrementalPlans, AnExtrudeBuildsAFewRangesAgain) {
 // A topology the plans refuse (a crease between unjoined vertices) leaves the tables as they were.
 TEST(IncrementalPlans, ARefusedTopologyChangesNothing) {
   const CovarianceMesh grid = test::grid_mesh(3, 3);
-  SurfaceReplanner replanner(topology_of(grid.mesh), {}, {});
+  SurfaceReplanner replanner(grid.topology(), {}, {});
   const SurfaceTables before = replanner.tables();
   Sharpness bad;
   bad.set_crease(0, 15, 2.0);
-  EXPECT_THROW(replanner.set_topology(topology_of(grid.mesh), bad), Error);
+  EXPECT_THROW(replanner.set_topology(grid.topology(), bad), Error);
   test::expect_same_tables(replanner.tables(), before, "after the refusal");
   const Modelled extruded = extrude_faces(grid, {4}, 0.1);
-  replanner.set_topology(topology_of(extruded.mesh.mesh), {}, extruded.vertex_origin);
-  test::expect_same_tables(replanner.tables(), build_surface_plans(topology_of(extruded.mesh.mesh), {}, {}),
+  replanner.set_topology(extruded.mesh.topology(), {}, extruded.vertex_origin);
+  test::expect_same_tables(replanner.tables(), build_surface_plans(extruded.mesh.topology(), {}, {}),
                            "after the refusal, an extrude");
 }
 

@@ -123,9 +123,8 @@ TEST(LimitWeights, CatmullClarkMatchesTheEvaluator) {
 TriangleMesh flat_triangles(const CovarianceMesh& m) {
   TriangleMesh t;
   t.positions = vertex_means(m);
-  for (const auto f : m.mesh.faces()) {
-    std::vector<int> c;
-    for (const auto v : m.mesh.fv_range(f)) c.push_back(v.idx());
+  for (size_t f = 0; f < m.n_faces(); ++f) {
+    const std::span<const int> c = m.face(f);
     for (size_t k = 1; k + 1 < c.size(); ++k) t.triangles.push_back({c[0], c[k], c[k + 1]});
   }
   return t;
@@ -273,10 +272,12 @@ TEST(LimitFit, RefusesAToleranceOrTimeBudgetOutOfRange) {
 /// The mean length of each vertex's edges.
 std::vector<double> mean_edge_lengths(const CovarianceMesh& m) {
   std::vector<double> out;
-  for (const auto v : m.mesh.vertices()) {
+  const MeshConnectivity& c = m.connectivity();
+  for (int v = 0; v < int(m.n_vertices()); ++v) {
     double sum = 0;
-    for (const auto w : m.mesh.vv_range(v)) sum += (m.mean(size_t(v.idx())) - m.mean(size_t(w.idx()))).norm();
-    out.push_back(sum / double(m.mesh.valence(v)));
+    for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i)
+      sum += (m.mean(size_t(v)) - m.mean(size_t(c.other_vertex(c.vertex_edges[size_t(i)], v)))).norm();
+    out.push_back(sum / double(m.valence(size_t(v))));
   }
   return out;
 }

@@ -86,13 +86,13 @@ TEST(LimitNormals, AreTheNormalsOfTheRefinedSurface) {
   for (const Case& c : cases()) {
     if (c.name.find("concave") != std::string::npos || c.name.find("plateau") != std::string::npos) continue;
     const auto coarse = subdivide(c.mesh, {c.scheme, 2, true, LoopBeta::loop, true});
-    const PolygonTopology coarse_topology = topology_of(coarse.mesh.mesh);
-    const MeshConnectivity connectivity = connectivity_of(coarse_topology);
+    const PolygonTopology& coarse_topology = coarse.mesh.topology();
+    const MeshConnectivity& connectivity = coarse.mesh.connectivity();
     const int regular = c.scheme == Scheme::loop ? 6 : 4;
     double worst[2][2] = {{0, 0}, {0, 0}};  // [interior, boundary][2, 4 levels down]
     for (int extra = 0; extra < 2; ++extra) {
       const auto fine = subdivide(c.mesh, {c.scheme, 4 + 2 * extra, true});
-      const PolygonTopology t = topology_of(fine.mesh.mesh);
+      const PolygonTopology& t = fine.mesh.topology();
       std::vector<Vec3> fan(fine.mesh.n_vertices(), Vec3::Zero());
       for (int f = 0; f < t.n_faces(); ++f) {
         const int o = t.offsets[size_t(f)], n = t.face_size(f);

@@ -16,7 +16,7 @@ using test::expect_equal;
 TEST(LoopConnectivity, EqualsConnectivityOfTheRefinedTopology) {
   int meshes = 0;
   for (const std::string& name : sample_names()) {
-    PolygonTopology t = topology_of(make_sample(name, 0).mesh);
+    PolygonTopology t = make_sample(name, 0).topology();
     bool triangles = true;
     for (int f = 0; f < t.n_faces(); ++f) triangles = triangles && t.face_size(f) == 3;
     if (!triangles) continue;
@@ -31,7 +31,7 @@ TEST(LoopConnectivity, EqualsConnectivityOfTheRefinedTopology) {
     }
   }
   EXPECT_GE(meshes, 4);
-  const PolygonTopology t = topology_of(make_sample("icosphere", 3 * kParallelFaces).mesh);
+  const PolygonTopology t = make_sample("icosphere", 3 * kParallelFaces).topology();
   const MeshConnectivity c = connectivity_of(t);
   expect_equal(loop_connectivity(t, c), connectivity_of(loop_topology(t, c)));
 }

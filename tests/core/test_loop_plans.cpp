@@ -242,12 +242,12 @@ TEST(LoopPlans, StayInsideThePositiveDefiniteCone) {
 }
 
 TEST(LoopPlans, RefuseNonTrianglesAndHugeValences) {
-  EXPECT_THROW(build_loop_plans(topology_of(test::cube_mesh().mesh), LoopBeta::loop), Error);
-  const PolygonTopology fan = topology_of(test::bipyramid_mesh(kMaxLoopValence + 1).mesh);
+  EXPECT_THROW(build_loop_plans(test::cube_mesh().topology(), LoopBeta::loop), Error);
+  const PolygonTopology fan = test::bipyramid_mesh(kMaxLoopValence + 1).topology();
   EXPECT_THROW(build_loop_plans(fan, LoopBeta::loop), Error);
   // The automatic choice takes Catmull-Clark there, Loop for the same shape of lower valence.
   EXPECT_EQ(scheme_for(fan, PlanOptions{}), Scheme::catmull_clark);
-  EXPECT_EQ(scheme_for(topology_of(test::bipyramid_mesh(kMaxLoopValence).mesh), PlanOptions{}), Scheme::loop);
+  EXPECT_EQ(scheme_for(test::bipyramid_mesh(kMaxLoopValence).topology(), PlanOptions{}), Scheme::loop);
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ TEST(MeshImport, ObjWithSlashesAndNegativeIndices) {
   const auto m = parse_obj("# square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1 -1/1\n", "a.obj");
   EXPECT_EQ(m.n_vertices(), 4u);
   EXPECT_EQ(m.n_faces(), 1u);
-  EXPECT_EQ(m.mesh.valence(PolyMesh::FaceHandle(0)), 4u);
+  EXPECT_EQ(m.face_size(0), 4);
   EXPECT_NE(error_of([] {
               parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "b.obj");
             }).find("b.obj: line 4: vertex index 9 is out of range"),
@@ -111,8 +111,7 @@ TEST(MeshImport, ObjRoundTripKeepsPositionsExactly) {
   const CovarianceMesh r = read_mesh(dir.file("q.obj"), {ImportOptions::Covariance::isotropic});
   ASSERT_EQ(r.n_vertices(), 4u);
   for (size_t i = 0; i < 4; ++i) EXPECT_EQ(r.mean(i), m.mean(i));
-  std::vector<int> face;
-  for (const auto v : r.mesh.fv_range(PolyMesh::FaceHandle(0))) face.push_back(v.idx());
+  const std::vector<int> face(r.face(0).begin(), r.face(0).end());
   EXPECT_EQ(face, (std::vector<int>{0, 1, 2, 3}));
 }
 

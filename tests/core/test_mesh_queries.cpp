@@ -202,8 +202,8 @@ TEST(MeshQueries, ShortestFacePathCrossesNeighbouringFaces) {
   const CovarianceMesh grid = test::grid_mesh(4, 4, 0.3, true);
   const auto shares_an_edge = [&](int f, int g) {  // two quads sharing an edge have two corners alike
     int alike = 0;
-    for (const auto v : grid.mesh.fv_range(grid.mesh.face_handle(f)))
-      for (const auto w : grid.mesh.fv_range(grid.mesh.face_handle(g))) alike += v == w;
+    for (const int v : grid.face(size_t(f)))
+      for (const int w : grid.face(size_t(g))) alike += v == w;
     return alike == 2;
   };
   const V path = shortest_face_path(grid, 0, 15);

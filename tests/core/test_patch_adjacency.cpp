@@ -34,13 +34,13 @@ Ends ends(const PatchPlans& plans, int p, int k) {
 // The base edges of a mesh that have one face only.
 std::set<std::pair<int, int>> boundary_edges(const CovarianceMesh& mesh) {
   std::set<std::pair<int, int>> out;
-  for (const auto e : mesh.mesh.edges())
-    if (e.is_boundary()) out.insert(std::minmax(e.v0().idx(), e.v1().idx()));
+  for (size_t e = 0; e < mesh.n_edges(); ++e)
+    if (mesh.is_boundary_edge(e)) out.insert({mesh.edge(e)[0], mesh.edge(e)[1]});
   return out;
 }
 
 void check_adjacency(const std::string& name, const CovarianceMesh& mesh) {
-  const SurfaceTables tables = build_surface_plans(topology_of(mesh.mesh), PlanOptions{});
+  const SurfaceTables tables = build_surface_plans(mesh.topology(), PlanOptions{});
   const PatchPlans& plans = tables.plans;
   const int n = plans.corners();
   ASSERT_EQ(plans.patch_neighbours.size(), size_t(4 * n * plans.n_patches())) << name;
@@ -115,7 +115,7 @@ TEST(PatchAdjacency, EveryInnerEdgeHasItsNeighbourAndEveryCornerItsOwner) {
 // A T-junction of a quad and a split face: the quad's edge names both halves.
 TEST(PatchAdjacency, CylinderCapsMeetTheSideQuadsHalfByHalf) {
   const CovarianceMesh mesh = make_sample("cylinder");
-  const SurfaceTables tables = build_surface_plans(topology_of(mesh.mesh), PlanOptions{});
+  const SurfaceTables tables = build_surface_plans(mesh.topology(), PlanOptions{});
   int beside = 0;
   for (int p = 0; p < tables.plans.n_patches(); ++p)
     for (int k = 0; k < 4; ++k) beside += patch_edge(tables.plans, p, k).part == PatchEdgePart::whole_beside_halves;

@@ -46,7 +46,7 @@ TEST(PatchEval, RegularNodesAsBezierEqualTheBspline) {
   for (const char* name : {"grid", "valence5", "cylinder", "wirecube"}) {
     CovarianceMesh mesh = make_sample(name, 64);
     const test::PlannedMesh p(mesh, 2);
-    const SurfaceTables bezier = build_plans(topology_of(p.mesh.mesh), 2, ExtraordinaryNodes::bezier, false);
+    const SurfaceTables bezier = build_plans(p.mesh.topology(), 2, ExtraordinaryNodes::bezier, false);
     const auto points = apply_stencils(bezier.stencils, p.base);
     ASSERT_EQ(bezier.plans.n_patches(), p.tables.plans.n_patches());
     int terminal_instead_of_regular = 0;

@@ -151,9 +151,9 @@ TEST(PlanBuilder, MixedMeshesSplitOnlyWhatIsNotAQuad) {
   for (const char* name : {"pawn", "cylinder", "cone"}) {
     const CovarianceMesh mesh = make_sample(name);
     int expected = 0;
-    for (const auto f : mesh.mesh.faces()) expected += mesh.mesh.valence(f) == 4 ? 1 : int(mesh.mesh.valence(f));
+    for (size_t f = 0; f < mesh.n_faces(); ++f) expected += mesh.face_size(f) == 4 ? 1 : mesh.face_size(f);
     EXPECT_EQ(PlannedMesh(mesh, 3).tables.plans.n_patches(), expected) << name;
-    EXPECT_EQ(make_patch_layout(mesh.mesh).n_patches(), expected) << name;
+    EXPECT_EQ(make_patch_layout(mesh.topology()).n_patches(), expected) << name;
   }
   EXPECT_EQ(PlannedMesh(make_sample("pawn"), 2).tables.plans.n_patches(), 736 + 3 * 64);
 }
@@ -163,7 +163,7 @@ TEST(PlanBuilder, MixedMeshesSplitOnlyWhatIsNotAQuad) {
 TEST(PlanBuilder, AllCoresGiveTheOneCoreTablesBitForBit) {
   const CovarianceMesh triangles = subdivide(make_sample("cone"), {Scheme::loop, 4, false}).mesh;
   for (const CovarianceMesh& mesh : {make_sample("sphere", 20000), triangles}) {
-    const PolygonTopology topology = topology_of(mesh.mesh);
+    const PolygonTopology& topology = mesh.topology();
     omp_set_num_threads(1);
     const SurfaceTables one = build_plans(topology, 3);
     omp_set_num_threads(2);
@@ -184,7 +184,7 @@ TEST(PlanBuilder, AllCoresGiveTheOneCoreTablesBitForBit) {
   const auto limit = subdivide(p.mesh, {Scheme::catmull_clark, 0, true});
   const double diag = bounding_box_diagonal(p.mesh);
   for (int patch = 0; patch < p.tables.plans.n_patches(); patch += 97) {
-    const auto corners = face_vertices(p.mesh.mesh, p.mesh.mesh.face_handle(patch));
+    const auto corners = p.mesh.face(size_t(patch));
     for (const auto& [k, u, v] : {std::tuple{0, 0.0, 0.0}, std::tuple{2, 1.0, 1.0}}) {
       const auto s = evaluate_patch(p.tables.plans, p.points, patch, u, v);
       ASSERT_TRUE(s);
@@ -261,8 +261,8 @@ TEST(PlanBuilder, AnalyticNormalsMatchFiniteDifferences) {
     EXPECT_LT((c->du - du).norm(), 1e-5 * (1 + du.norm()));
     EXPECT_LT((c->dv - dv).norm(), 1e-5 * (1 + dv.norm()));
   }
-  EXPECT_THROW(build_plans(topology_of(p.mesh.mesh), 0, ExtraordinaryNodes::bezier), Error);
-  EXPECT_THROW(build_plans(topology_of(p.mesh.mesh), 9), Error);
+  EXPECT_THROW(build_plans(p.mesh.topology(), 0, ExtraordinaryNodes::bezier), Error);
+  EXPECT_THROW(build_plans(p.mesh.topology(), 9), Error);
 }
 
 }  // namespace

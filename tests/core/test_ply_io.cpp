@@ -35,11 +35,9 @@ void expect_identical(const CovarianceMesh& a, const CovarianceMesh& b) {
     EXPECT_EQ(a.mean(i), b.mean(i));
     EXPECT_EQ(a.covariance(i), b.covariance(i));
   }
-  for (const auto f : a.mesh.faces()) {
-    std::vector<int> va, vb;
-    for (const auto v : a.mesh.fv_range(f)) va.push_back(v.idx());
-    for (const auto v : b.mesh.fv_range(PolyMesh::FaceHandle(f.idx()))) vb.push_back(v.idx());
-    EXPECT_EQ(va, vb);
+  for (size_t f = 0; f < a.n_faces(); ++f) {
+    const std::span<const int> fa = a.face(f), fb = b.face(f);
+    EXPECT_EQ(std::vector<int>(fa.begin(), fa.end()), std::vector<int>(fb.begin(), fb.end()));
   }
 }
 
@@ -81,9 +79,9 @@ TEST(PlyIo, ReadsTriangleStripsWithRestarts) {
   ASSERT_EQ(m.n_faces(), 6u + 6u);
   // One orientation throughout: every triangle faces +z (or every one −z).
   int up = 0;
-  for (const auto f : m.mesh.faces()) {
+  for (size_t f = 0; f < m.n_faces(); ++f) {
     std::vector<Vec3> p;
-    for (const auto v : m.mesh.fv_range(f)) p.push_back(m.mean(size_t(v.idx())));
+    for (const int v : m.face(f)) p.push_back(m.mean(size_t(v)));
     up += (p[1] - p[0]).cross(p[2] - p[0]).z() > 0 ? 1 : -1;
   }
   EXPECT_EQ(std::abs(up), 12);

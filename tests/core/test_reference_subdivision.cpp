@@ -82,7 +82,7 @@ TEST(ReferenceSubdivision, RegularGridLimitIsTheBicubicBSpline) {
   int checked = 0;
   for (size_t k = 0; k < r.mesh.n_vertices(); ++k) {
     const PatchParam pp = r.vertex_params[k];
-    const auto corners = face_vertices(mesh.mesh, PolyMesh::FaceHandle(pp.patch));
+    const auto corners = mesh.face(size_t(pp.patch));
     const Eigen::Vector2i c0 = grid_pos(corners[0]);
     const Eigen::Vector2i du = grid_pos(corners[1]) - c0, dv = grid_pos(corners[3]) - c0;
     bool inside = true;
@@ -156,7 +156,7 @@ TEST(ReferenceSubdivision, VertexParamsNameAPatchOfTheInput) {
   const auto mesh = test::prism_mesh();
   const auto r = subdivide(mesh, {Scheme::catmull_clark, 2, false});
   ASSERT_EQ(r.vertex_params.size(), r.mesh.n_vertices());
-  const int n_patches = make_patch_layout(mesh.mesh).n_patches();
+  const int n_patches = make_patch_layout(mesh.topology()).n_patches();
   EXPECT_EQ(n_patches, 2 * 5 + 5);  // the pentagons are split, the quads are not
   for (const auto& p : r.vertex_params) {
     EXPECT_GE(p.patch, 0);

@@ -205,10 +205,10 @@ TEST(RepairProperty, RandomSoupsWithEveryDefectBuildWithTheCountsTheRepairReport
     EXPECT_EQ(read_report.counts, report.counts);
     EXPECT_EQ(int(m.n_faces()), repaired.faces.n_faces());
     EXPECT_EQ(m.n_vertices(), repaired.positions.size());
-    const SurfaceCounts counts = surface_counts(m.mesh);
+    const SurfaceCounts counts = surface_counts(m.topology(), m.connectivity());
     EXPECT_EQ(counts.parts, report.parts);
     EXPECT_EQ(counts.boundary_loops, report.boundary_loops);
-    EXPECT_EQ(topology_of(m.mesh).verts, repaired.faces.verts) << "the faces as the repair left them";
+    EXPECT_EQ(m.topology().verts, repaired.faces.verts) << "the faces as the repair left them";
   }
   // Every class but the unorientable parts came up in many soups; nearly all soups were built.
   for (int d = 0; d < kDefectCount; ++d)

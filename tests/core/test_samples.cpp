@@ -32,8 +32,8 @@ TEST(Samples, CountsAreAsDescribed) {
   EXPECT_DOUBLE_EQ(cone.mean(0).y(), 1.5);
   // The wirecube is closed and of genus 5: V − E + F = 2 − 2g = −8.
   const auto wire = make_sample("wirecube");
-  EXPECT_EQ(int(wire.mesh.n_vertices()) - int(wire.mesh.n_edges()) + int(wire.mesh.n_faces()), -8);
-  for (const auto e : wire.mesh.edges()) EXPECT_FALSE(wire.mesh.is_boundary(e));
+  EXPECT_EQ(int(wire.n_vertices()) - int(wire.n_edges()) + int(wire.n_faces()), -8);
+  for (size_t e = 0; e < wire.n_edges(); ++e) EXPECT_FALSE(wire.is_boundary_edge(e));
 }
 
 // The pawn: a closed lathe mesh of quads with triangle fans at its poles, covariances inferred
@@ -42,11 +42,11 @@ TEST(Samples, PawnIsAClosedMixedMeshAndItsTwinAllQuads) {
   for (const auto& [name, quads, triangles] : {std::tuple{"pawn", 736, 64}, std::tuple{"pawn-quads", 768, 0}}) {
     const auto m = make_sample(name);
     int n_quads = 0, n_triangles = 0;
-    for (const auto f : m.mesh.faces()) (m.mesh.valence(f) == 4 ? n_quads : n_triangles) += 1;
+    for (size_t f = 0; f < m.n_faces(); ++f) (m.face_size(f) == 4 ? n_quads : n_triangles) += 1;
     EXPECT_EQ(n_quads, quads) << name;
     EXPECT_EQ(n_triangles, triangles) << name;
-    EXPECT_EQ(int(m.mesh.n_vertices()) - int(m.mesh.n_edges()) + int(m.mesh.n_faces()), 2) << name;
-    for (const auto e : m.mesh.edges()) EXPECT_FALSE(m.mesh.is_boundary(e)) << name;
+    EXPECT_EQ(int(m.n_vertices()) - int(m.n_edges()) + int(m.n_faces()), 2) << name;
+    for (size_t e = 0; e < m.n_edges(); ++e) EXPECT_FALSE(m.is_boundary_edge(e)) << name;
     const Eigen::SelfAdjointEigenSolver<Mat3> eigen(m.covariance(100));
     EXPECT_GT(eigen.eigenvalues()[2], 2.0 * eigen.eigenvalues()[0]) << name << ": inferred, not isotropic";
   }
@@ -56,7 +56,7 @@ TEST(Samples, PawnIsAClosedMixedMeshAndItsTwinAllQuads) {
 TEST(Samples, ValenceSamplesHaveOneExtraordinaryVertex) {
   for (int n = 3; n <= 10; ++n) {
     const auto m = make_sample("valence" + std::to_string(n));
-    const MeshConnectivity c = connectivity_of(topology_of(m.mesh));
+    const MeshConnectivity& c = m.connectivity();
     int extraordinary = 0;
     for (int v = 0; v < int(m.n_vertices()); ++v) {
       const VertexRole role = vertex_role(c, v);

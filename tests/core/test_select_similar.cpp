@@ -20,7 +20,7 @@ TEST(SelectSimilar, EdgesOfTheSameLengthOrCrease) {
   BevelOptions o;
   o.width = 0.25;
   const CovarianceMesh bevelled = bevel_edges(cube, {{6, 7}}, o).mesh;
-  const size_t edges = bevelled.mesh.n_edges();
+  const size_t edges = bevelled.n_edges();
   const auto two_long = similar_edges(bevelled, {{0, 1}}, Similarity::edge_length, 0.0);
   EXPECT_LT(two_long.size(), edges);
   EXPECT_GE(two_long.size(), 8u);

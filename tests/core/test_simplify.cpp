@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <span>
 #include <utility>
 
 #include <Eigen/Eigenvalues>
@@ -27,9 +28,8 @@ struct Topology {
 /// directed edge appears twice (a non-manifold edge or inconsistent orientation).
 Topology topology_of(const CovarianceMesh& m) {
   std::set<std::pair<int, int>> directed;
-  for (const auto f : m.mesh.faces()) {
-    std::vector<int> corners;
-    for (const auto v : m.mesh.fv_range(f)) corners.push_back(v.idx());
+  for (size_t f = 0; f < m.n_faces(); ++f) {
+    const std::span<const int> corners = m.face(f);
     for (size_t k = 0; k < corners.size(); ++k) {
       const auto edge = std::make_pair(corners[k], corners[(k + 1) % corners.size()]);
       EXPECT_TRUE(directed.insert(edge).second) << "directed edge " << edge.first << "-" << edge.second << " twice";
@@ -78,11 +78,11 @@ TEST(Simplify, SphereKeepsGenusZeroAndOutwardFaces) {
   EXPECT_EQ(t.boundary_loops, 0);
   expect_spd(s.mesh);
   // No flipped face: every triangle of the coarse sphere still faces away from its centre.
-  for (const auto f : s.mesh.mesh.faces()) {
+  for (size_t f = 0; f < s.mesh.n_faces(); ++f) {
     std::vector<Vec3> p;
-    for (const auto v : s.mesh.mesh.fv_range(f)) p.push_back(s.mesh.mean(size_t(v.idx())));
+    for (const int v : s.mesh.face(f)) p.push_back(s.mesh.mean(size_t(v)));
     const Vec3 normal = (p[1] - p[0]).cross(p[2] - p[0]);
-    EXPECT_GT(normal.dot(p[0] + p[1] + p[2]), 0) << "face " << f.idx();
+    EXPECT_GT(normal.dot(p[0] + p[1] + p[2]), 0) << "face " << f;
   }
 }
 
@@ -147,10 +147,9 @@ TEST(Simplify, OpenGridKeepsItsOneBoundaryLoop) {
   for (size_t i = 0; i < s.mesh.n_vertices(); ++i)
     corners += std::abs(std::abs(s.mesh.mean(i)[0]) - 1) < 1e-12 && std::abs(std::abs(s.mesh.mean(i)[1]) - 1) < 1e-12;
   EXPECT_EQ(corners, 4);
-  for (const auto h : s.mesh.mesh.halfedges()) {
-    if (!s.mesh.mesh.is_boundary(h)) continue;
-    const Vec3 a = s.mesh.mean(size_t(s.mesh.mesh.from_vertex_handle(h).idx()));
-    const Vec3 b = s.mesh.mean(size_t(s.mesh.mesh.to_vertex_handle(h).idx()));
+  for (size_t e = 0; e < s.mesh.n_edges(); ++e) {
+    if (!s.mesh.is_boundary_edge(e)) continue;
+    const Vec3 a = s.mesh.mean(size_t(s.mesh.edge(e)[0])), b = s.mesh.mean(size_t(s.mesh.edge(e)[1]));
     bool one_side = false;
     for (int axis = 0; axis < 2; ++axis)
       for (const double side : {-1.0, 1.0}) one_side = one_side || (on_side(a, axis, side) && on_side(b, axis, side));
@@ -253,11 +252,12 @@ CovarianceMesh finely_triangulated_box(int n) {
 TEST(Simplify, CreasesStayOnTheirChainsAndCornersStay) {
   // The box's 12 edges creased (dihedral 90°), a corner sharpness on one vertex of a side's middle.
   CovarianceMesh box = finely_triangulated_box(8);
-  for (const auto e : box.mesh.edges()) {
-    const Vec3 a = box.mean(size_t(e.v0().idx())), b = box.mean(size_t(e.v1().idx()));
+  for (size_t e = 0; e < box.n_edges(); ++e) {
+    const auto [v0, v1] = box.edge(e);
+    const Vec3 a = box.mean(size_t(v0)), b = box.mean(size_t(v1));
     int shared_sides = 0;
     for (int k = 0; k < 3; ++k) shared_sides += std::abs(std::abs(a[k]) - 1) < 1e-12 && a[k] == b[k];
-    if (shared_sides == 2) box.sharpness.set_crease(e.v0().idx(), e.v1().idx(), 10);
+    if (shared_sides == 2) box.sharpness.set_crease(v0, v1, 10);
   }
   int pinned = -1;
   for (size_t i = 0; i < box.n_vertices(); ++i)

@@ -47,10 +47,9 @@ std::vector<Case> cases() {
 TEST(SurfaceReplanner, RandomChangesMatchAFullReplan) {
   const double values[] = {0.0, 0.0, 0.5, 1.0, 1.7, 2.5, 4.0, kInfiniteSharpness, 12.0};
   for (const Case& c : cases()) {
-    const PolygonTopology topology = topology_of(c.mesh.mesh);
-    const auto edges = c.mesh.mesh.edges();
+    const PolygonTopology& topology = c.mesh.topology();
     std::vector<std::pair<int, int>> ends;
-    for (const auto& e : edges) ends.emplace_back(e.v0().idx(), e.v1().idx());
+    for (size_t e = 0; e < c.mesh.n_edges(); ++e) ends.emplace_back(c.mesh.edge(e)[0], c.mesh.edge(e)[1]);
     const int n_vertices = int(c.mesh.n_vertices());
     std::mt19937 random(7);
     const auto any_edge = [&] { return ends[std::uniform_int_distribution<size_t>(0, ends.size() - 1)(random)]; };
@@ -95,16 +94,16 @@ TEST(SurfaceReplanner, RandomChangesMatchAFullReplan) {
 // depth bound, and Loop's smooth builder), and still match.
 TEST(SurfaceReplanner, FirstAndLastCrease) {
   for (const Case& c : cases()) {
-    const PolygonTopology topology = topology_of(c.mesh.mesh);
+    const PolygonTopology& topology = c.mesh.topology();
     const PlanOptions options = c.options();
     SurfaceReplanner replanner(topology, options, {}, test::kSmallRanges);
-    const auto edge = c.mesh.mesh.edges().begin();
+    const auto [a, b] = c.mesh.edge(0);
     Sharpness one;
-    one.set_crease(edge->v0().idx(), edge->v1().idx(), 1.5);
+    one.set_crease(a, b, 1.5);
     EXPECT_EQ(replanner.set_sharpness(one).size(), size_t(topology.n_faces())) << c.name;
     test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, one),
                              c.name + ", first crease");
-    one.set_crease(edge->v0().idx(), edge->v1().idx(), 0.0);
+    one.set_crease(a, b, 0.0);
     EXPECT_EQ(replanner.set_sharpness(one).size(), size_t(topology.n_faces())) << c.name;
     test::expect_same_tables(replanner.tables(), build_surface_plans(topology, options, {}),
                              c.name + ", last crease gone");
@@ -116,8 +115,8 @@ TEST(SurfaceReplanner, FirstAndLastCrease) {
 // edge between faces 0 and 1 of a 4 × 1 strip reaches faces 0..2, not 3).
 TEST(SurfaceReplanner, FacesReadingAnEdge) {
   const CovarianceMesh strip = test::grid_mesh(4, 1);
-  const PolygonTopology t = topology_of(strip.mesh);
-  const MeshConnectivity c = connectivity_of(t);
+  const PolygonTopology& t = strip.topology();
+  const MeshConnectivity& c = strip.connectivity();
   int shared = -1;
   for (int e = 0; e < c.n_edges(); ++e)
     if (!c.is_boundary_edge(e) && std::min(c.edge_faces[2 * size_t(e)], c.edge_faces[2 * size_t(e) + 1]) == 0)
@@ -129,7 +128,7 @@ TEST(SurfaceReplanner, FacesReadingAnEdge) {
 // A mesh with an unjoined crease is refused with the tables as they were.
 TEST(SurfaceReplanner, UnjoinedCreaseIsRefused) {
   const CovarianceMesh grid = test::grid_mesh(3, 3);
-  const PolygonTopology topology = topology_of(grid.mesh);
+  const PolygonTopology& topology = grid.topology();
   SurfaceReplanner replanner(topology, {}, {});
   const SurfaceTables before = replanner.tables();
   Sharpness bad;

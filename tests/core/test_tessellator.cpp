@@ -30,7 +30,7 @@ TEST(Tessellator, ClosedMeshesGiveClosedTriangleMeshes) {
       EXPECT_EQ(open_edges(t), 0) << name << " level " << level;
       // Same Euler characteristic as the base mesh: V − E + F with E = 3F/2.
       const int v = int(t.positions.size()), f = int(t.triangles.size());
-      const auto& m = p.mesh.mesh;
+      const CovarianceMesh& m = p.mesh;
       EXPECT_EQ(2 * v - f, 2 * (int(m.n_vertices()) - int(m.n_edges()) + int(m.n_faces()))) << name;
     }
   }

@@ -48,7 +48,7 @@ Shape polygon(int n) {  // one face of n sides
 void process(const Shape& s) {
   CovarianceMesh m = make_covariance_mesh(s.points, std::vector<Mat3>(s.points.size(), Mat3::Identity()), s.faces);
   infer_covariances(m);
-  const MeshConnectivity c = connectivity_of(topology_of(m.mesh));
+  const MeshConnectivity& c = m.connectivity();
   ASSERT_GT(c.n_edges(), 0);
   SubdivisionOptions o;
   o.levels = 1;
@@ -87,15 +87,14 @@ TEST(TopologyComplexity, PlansRefuseValencesBeyondTheirBoundAtOnce) {
     const CovarianceMesh m =
         make_covariance_mesh(shape.points, std::vector<Mat3>(shape.points.size(), Mat3::Identity()), shape.faces);
     try {
-      build_plans(topology_of(m.mesh), 2);
+      build_plans(m.topology(), 2);
       ADD_FAILURE() << "no error for " << what;
     } catch (const Error& e) {
       EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
     }
   }
   EXPECT_NO_THROW(build_plans(
-      topology_of(make_covariance_mesh(fan(64).points, std::vector<Mat3>(65, Mat3::Identity()), fan(64).faces).mesh),
-      2));
+      make_covariance_mesh(fan(64).points, std::vector<Mat3>(65, Mat3::Identity()), fan(64).faces).topology(), 2));
 }
 
 }  // namespace

@@ -134,9 +134,8 @@ TEST_F(GpuTest, FlattenedGaussiansKeepTheSilhouetteAlongSplitFacesHalfEdges) {
   std::vector<Vec3> means;
   for (size_t v = 0; v < cube.n_vertices(); ++v) means.push_back(cube.mean(v));
   std::vector<std::vector<int>> faces;
-  for (const auto f : cube.mesh.faces()) {
-    std::vector<int> c;
-    for (const auto v : f.vertices()) c.push_back(v.idx());
+  for (size_t f = 0; f < cube.n_faces(); ++f) {
+    const std::vector<int> c(cube.face(f).begin(), cube.face(f).end());
     if (std::all_of(c.begin(), c.end(), [&](int v) { return means[size_t(v)].y() < -0.5; })) {
       faces.push_back(c);  // the bottom
     } else {

@@ -50,11 +50,11 @@ int front_face(const CovarianceMesh& cube, const Camera& camera) {
   const glm::dvec3 eye(camera.eye());
   int best = -1;
   double nearest = 1e300;
-  for (const auto f : cube.mesh.faces()) {
+  for (int f = 0; f < int(cube.n_faces()); ++f) {
     Vec3 centre = Vec3::Zero();
-    for (const auto v : cube.mesh.fv_range(f)) centre += 0.25 * cube.mean(size_t(v.idx()));
+    for (const int v : cube.face(size_t(f))) centre += 0.25 * cube.mean(size_t(v));
     const double d = (centre - Vec3(eye.x, eye.y, eye.z)).norm();
-    if (d < nearest) nearest = d, best = f.idx();
+    if (d < nearest) nearest = d, best = f;
   }
   return best;
 }
@@ -67,8 +67,8 @@ TEST_F(HiddenPatches, HiddenPatchesAreNotTessellatedAndTheOthersAreUnchanged) {
   renderer.set_mesh(cylinder);
   const PatchPlans& plans = renderer.tables().plans;
   int octagon = -1, quad = -1;
-  for (const auto f : cylinder.mesh.faces()) (cylinder.mesh.valence(f) == 8 ? octagon : quad) = f.idx();
-  const std::vector<int> hidden = patches_of_faces(cylinder.mesh, plans, {octagon, quad});
+  for (int f = 0; f < int(cylinder.n_faces()); ++f) (cylinder.face_size(size_t(f)) == 8 ? octagon : quad) = f;
+  const std::vector<int> hidden = patches_of_faces(cylinder.topology(), plans, {octagon, quad});
   ASSERT_EQ(hidden.size(), 9u);
   DrawOptions o;
   o.level = 4.0f;
@@ -100,7 +100,7 @@ TEST_F(HiddenPatches, AHiddenFaceShowsWhatIsBehindItAndNothingElseChanges) {
   const RenderTarget target(kSize, kSize);
   const Camera camera = frame_mesh(cube, 0.0f, 0.0f);
   const int front = front_face(cube, camera);
-  const std::vector<int> hidden = patches_of_faces(cube.mesh, renderer.tables().plans, {front});
+  const std::vector<int> hidden = patches_of_faces(cube.topology(), renderer.tables().plans, {front});
   std::vector<int> others;
   for (int p = 0; p < renderer.tables().plans.n_patches(); ++p)
     if (!std::binary_search(hidden.begin(), hidden.end(), p)) others.push_back(p);
@@ -150,7 +150,7 @@ TEST_F(HiddenPatches, HiddenEdgesAreLeftOutOfTheMeshLines) {
   o.mesh_lines = true;
   const Frame lines = draw(renderer, target, camera, o);
   ASSERT_GT(differing_pixels(lines, plain), 0u);
-  const std::vector<char> all(cube.mesh.n_edges(), 1), none(cube.mesh.n_edges(), 0);
+  const std::vector<char> all(cube.n_edges(), 1), none(cube.n_edges(), 0);
   o.hidden_edges = &all;
   EXPECT_EQ(differing_pixels(draw(renderer, target, camera, o), plain), 0u);
   o.hidden_edges = &none;

@@ -39,7 +39,7 @@ TEST_F(IncrementalGpuBuffers, RandomOperationsMatchARendererSetAnew) {
     CovarianceMesh mesh = c.mesh;
     // One frame throughout, as the bench's meshes keep theirs: the kept output is only for the same frame.
     const NormalisedFrame frame = NormalisedFrame::of(mesh);
-    SurfaceReplanner replanner(topology_of(mesh.mesh), options, mesh.sharpness, test::kSmallRanges);
+    SurfaceReplanner replanner(mesh.topology(), options, mesh.sharpness, test::kSmallRanges);
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), {});
     std::mt19937 random(5);
@@ -51,7 +51,7 @@ TEST_F(IncrementalGpuBuffers, RandomOperationsMatchARendererSetAnew) {
         // First two vertices' Gaussians moved (the plans all kept), then operations of every kind.
         result = step == 0 ? transform_vertices(mesh, {0, 1}, AffineMap::about(mesh.mean(0), 0.7 * Mat3::Identity()))
                            : test::random_operation(mesh, random);
-        replanner.set_topology(topology_of(result.mesh.mesh), result.mesh.sharpness, result.vertex_origin);
+        replanner.set_topology(result.mesh.topology(), result.mesh.sharpness, result.vertex_origin);
       } catch (const Error&) {
         continue;  // refused by the operation or the scheme: nothing to show
       }
@@ -62,10 +62,10 @@ TEST_F(IncrementalGpuBuffers, RandomOperationsMatchARendererSetAnew) {
       slots += renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
       expect_as_set_anew(renderer, result.mesh, frame, where);
       const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
-      replanner.set_topology(topology_of(mesh.mesh), mesh.sharpness, back);
+      replanner.set_topology(mesh.topology(), mesh.sharpness, back);
       renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), back);
       expect_as_set_anew(renderer, mesh, frame, where + ", undone");
-      replanner.set_topology(topology_of(result.mesh.mesh), result.mesh.sharpness, result.vertex_origin);
+      replanner.set_topology(result.mesh.topology(), result.mesh.sharpness, result.vertex_origin);
       renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
       expect_as_set_anew(renderer, result.mesh, frame, where + ", redone");
       mesh = std::move(result.mesh);
@@ -82,14 +82,14 @@ TEST_F(IncrementalGpuBuffers, RandomOperationsMatchARendererSetAnew) {
 TEST_F(IncrementalGpuBuffers, AChangeFromOtherTablesOrFrameEvaluatesEverything) {
   const CovarianceMesh sphere = make_sample("sphere", 1500);
   const NormalisedFrame frame = NormalisedFrame::of(sphere);
-  SurfaceReplanner replanner(topology_of(sphere.mesh), {}, {}, test::kSmallRanges);
+  SurfaceReplanner replanner(sphere.topology(), {}, {}, test::kSmallRanges);
   SurfaceRenderer renderer;
   renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
   const int all = renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
   EXPECT_EQ(renderer.last_corner_slots(), all);
 
   const Modelled extruded = extrude_faces(sphere, {int(sphere.n_faces() / 2)}, 0.01);
-  replanner.set_topology(topology_of(extruded.mesh.mesh), {}, extruded.vertex_origin);
+  replanner.set_topology(extruded.mesh.topology(), {}, extruded.vertex_origin);
   renderer.set_mesh(extruded.mesh, replanner.tables(), frame, replanner.last_change(), extruded.vertex_origin);
   EXPECT_GT(renderer.last_corner_slots(), 0);
   EXPECT_LT(renderer.last_corner_slots(), all / 4) << "an extrude of one face";
@@ -97,7 +97,7 @@ TEST_F(IncrementalGpuBuffers, AChangeFromOtherTablesOrFrameEvaluatesEverything) 
 
   // Back to the sphere, in another frame: everything.
   const std::vector<int> back = inverse_origin(extruded.vertex_origin, sphere.n_vertices());
-  replanner.set_topology(topology_of(sphere.mesh), {}, back);
+  replanner.set_topology(sphere.topology(), {}, back);
   NormalisedFrame moved = frame;
   moved.unit *= 2.0;
   renderer.set_mesh(sphere, replanner.tables(), moved, replanner.last_change(), back);
@@ -105,8 +105,8 @@ TEST_F(IncrementalGpuBuffers, AChangeFromOtherTablesOrFrameEvaluatesEverything) 
   expect_as_set_anew(renderer, sphere, moved, "another frame");
 
   // Shown without the replanner, then a change from the replanner's tables: everything.
-  renderer.set_mesh(sphere, build_surface_plans(topology_of(sphere.mesh), {}, {}), moved);
-  replanner.set_topology(topology_of(extruded.mesh.mesh), {}, extruded.vertex_origin);
+  renderer.set_mesh(sphere, build_surface_plans(sphere.topology(), {}, {}), moved);
+  replanner.set_topology(extruded.mesh.topology(), {}, extruded.vertex_origin);
   renderer.set_mesh(extruded.mesh, replanner.tables(), moved, replanner.last_change(), extruded.vertex_origin);
   const int all_extruded = renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
   EXPECT_EQ(renderer.last_corner_slots(), all_extruded);
@@ -118,21 +118,21 @@ TEST_F(IncrementalGpuBuffers, AChangeFromOtherTablesOrFrameEvaluatesEverything) 
 // far off gets its own frame.
 TEST_F(IncrementalGpuBuffers, AnExtrudePastTheBoundingBoxKeepsTheFrameAndTheOutput) {
   const CovarianceMesh sphere = make_sample("sphere", 1500);
-  SurfaceReplanner replanner(topology_of(sphere.mesh), {}, {}, test::kSmallRanges);
+  SurfaceReplanner replanner(sphere.topology(), {}, {}, test::kSmallRanges);
   SurfaceRenderer renderer;
   renderer.set_mesh(sphere, replanner.tables(), NormalisedFrame::of(sphere), replanner.last_change(), {});
   int top = 0;  // the face whose centre is highest
   double highest = -1e9;
-  for (const auto f : sphere.mesh.faces()) {
+  for (int f = 0; f < int(sphere.n_faces()); ++f) {
     double y = 0.0;
-    for (const auto v : f.vertices()) y += sphere.mean(size_t(v.idx())).y();
-    if (y > highest) highest = y, top = f.idx();
+    for (const int v : sphere.face(size_t(f))) y += sphere.mean(size_t(v)).y();
+    if (y > highest) highest = y, top = f;
   }
   const Modelled extruded = extrude_faces(sphere, {top}, 0.1);
   ASSERT_FALSE(NormalisedFrame::of(extruded.mesh) == renderer.frame()) << "the bounding box grew";
   const NormalisedFrame frame = renderer.frame().following(extruded.mesh);
   EXPECT_TRUE(frame == renderer.frame());
-  replanner.set_topology(topology_of(extruded.mesh.mesh), {}, extruded.vertex_origin);
+  replanner.set_topology(extruded.mesh.topology(), {}, extruded.vertex_origin);
   renderer.set_mesh(extruded.mesh, replanner.tables(), frame, replanner.last_change(), extruded.vertex_origin);
   const int all = renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
   EXPECT_LT(renderer.last_corner_slots(), all / 4);
@@ -149,7 +149,7 @@ TEST_F(IncrementalGpuBuffers, ACreaseChangeEvaluatesOnlyTheFacesItReached) {
   CovarianceMesh mesh = make_sample("sphere", 1500);
   const NormalisedFrame frame = NormalisedFrame::of(mesh);
   mesh.sharpness.set_crease(0, 1, 1.0);
-  SurfaceReplanner replanner(topology_of(mesh.mesh), {}, mesh.sharpness, test::kSmallRanges);
+  SurfaceReplanner replanner(mesh.topology(), {}, mesh.sharpness, test::kSmallRanges);
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), {});
   const int all = renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
@@ -173,7 +173,7 @@ TEST_F(IncrementalGpuBuffers, ACreaseChangeEvaluatesOnlyTheFacesItReached) {
 // grid's with the owner of patch 0's corner 2 (a lowest index rule would give patch 0) moved to patch 4.
 TEST_F(IncrementalGpuBuffers, AKeptPatchWhoseCornerChangesOwnerIsEvaluatedAgain) {
   const CovarianceMesh grid = test::grid_mesh(3, 3);
-  const SurfaceTables before = build_surface_plans(topology_of(grid.mesh), {}, {});
+  const SurfaceTables before = build_surface_plans(grid.topology(), {}, {});
   SurfaceTables after = before;
   std::vector<int32_t>& owners = after.plans.corner_owners;
   const int n = after.plans.corners();

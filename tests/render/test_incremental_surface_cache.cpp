@@ -67,7 +67,7 @@ TEST_F(IncrementalSurfaceCacheRandom, RandomOperationsMatchAFreshCapture) {
     CovarianceMesh mesh = c.mesh;
     const NormalisedFrame frame = NormalisedFrame::of(mesh);
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
-    SurfaceReplanner replanner(topology_of(mesh.mesh), options, mesh.sharpness, test::kSmallRanges);
+    SurfaceReplanner replanner(mesh.topology(), options, mesh.sharpness, test::kSmallRanges);
     SurfaceRenderer renderer;
     renderer.surface_cache().set_weld(welds[weld++ % 3]);
     renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), {});
@@ -80,7 +80,7 @@ TEST_F(IncrementalSurfaceCacheRandom, RandomOperationsMatchAFreshCapture) {
       Modelled result;
       try {
         result = test::random_operation(mesh, random);
-        replanner.set_topology(topology_of(result.mesh.mesh), result.mesh.sharpness, result.vertex_origin);
+        replanner.set_topology(result.mesh.topology(), result.mesh.sharpness, result.vertex_origin);
       } catch (const Error&) {
         continue;
       }
@@ -89,10 +89,10 @@ TEST_F(IncrementalSurfaceCacheRandom, RandomOperationsMatchAFreshCapture) {
       renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
       expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, where);
       const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
-      replanner.set_topology(topology_of(mesh.mesh), mesh.sharpness, back);
+      replanner.set_topology(mesh.topology(), mesh.sharpness, back);
       renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), back);
       expect_as_captured_anew(renderer, mesh, frame, target, camera, o, where + ", undone");
-      replanner.set_topology(topology_of(result.mesh.mesh), result.mesh.sharpness, result.vertex_origin);
+      replanner.set_topology(result.mesh.topology(), result.mesh.sharpness, result.vertex_origin);
       renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
       expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, where + ", redone");
       mesh = std::move(result.mesh);
@@ -113,7 +113,7 @@ TEST_P(IncrementalSurfaceCache, AnExtrudeOrADeleteCapturesOnlyTheBlocksItReached
   const CovarianceMesh sphere = make_sample("sphere", 6000);
   const NormalisedFrame frame = NormalisedFrame::of(sphere);
   const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
-  SurfaceReplanner replanner(topology_of(sphere.mesh), {}, {}, test::kSmallRanges);
+  SurfaceReplanner replanner(sphere.topology(), {}, {}, test::kSmallRanges);
   SurfaceRenderer renderer;
   renderer.surface_cache().set_weld(GetParam());
   renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
@@ -124,14 +124,14 @@ TEST_P(IncrementalSurfaceCache, AnExtrudeOrADeleteCapturesOnlyTheBlocksItReached
       renderer.draw(target, camera, o);
       const SurfaceCache& cache = renderer.surface_cache();
       const int captures = cache.captures(), refreshes = cache.refreshes();
-      replanner.set_topology(topology_of(result.mesh.mesh), {}, result.vertex_origin);
+      replanner.set_topology(result.mesh.topology(), {}, result.vertex_origin);
       renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
       expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, result.summary);
       EXPECT_EQ(cache.captures(), captures) << result.summary << ": no capture of the whole surface";
       EXPECT_EQ(cache.refreshes(), refreshes + 1) << result.summary;
       EXPECT_LT(cache.refreshed_patches(), renderer.tables().plans.n_patches() / 10) << result.summary;
       const std::vector<int> back = inverse_origin(result.vertex_origin, sphere.n_vertices());
-      replanner.set_topology(topology_of(sphere.mesh), {}, back);
+      replanner.set_topology(sphere.topology(), {}, back);
       renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), back);
       expect_as_captured_anew(renderer, sphere, frame, target, camera, o, result.summary + ", undone");
       EXPECT_EQ(cache.captures(), captures) << result.summary;

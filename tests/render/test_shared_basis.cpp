@@ -176,7 +176,7 @@ std::vector<double> cpu_descent(const std::vector<int32_t>& nodes, int root, boo
 }
 
 void expect_same_descent(const char* name, const CovarianceMesh& mesh, const PlanOptions& options) {
-  const SurfaceTables tables = build_surface_plans(topology_of(mesh.mesh), options);
+  const SurfaceTables tables = build_surface_plans(mesh.topology(), options);
   const PatchPlans& plans = tables.plans;
   const bool triangle = plans.shape == PatchShape::triangle;
   const ShaderProgram probe(

@@ -107,9 +107,9 @@ TEST_F(GpuTest, ComputePassesMatchTheCpuStencils) {
 TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
   for (const std::string& name : sample_names()) {
     const CovarianceMesh mesh = make_sample(name, 300);
-    const bool large = mesh.mesh.n_faces() > 200;
+    const bool large = mesh.n_faces() > 200;
     for (const auto& scheme : {std::optional<Scheme>{}, std::optional<Scheme>{Scheme::catmull_clark}}) {
-      if (scheme && scheme_for(topology_of(mesh.mesh), {}) == Scheme::catmull_clark) continue;  // the same plans
+      if (scheme && scheme_for(mesh.topology(), {}) == Scheme::catmull_clark) continue;  // the same plans
       // Level 64 on valence10 with plans of depth 0 (extraordinary nodes as large as base faces):
       // the vertices closest to those corners (1/64 of a patch) are within the tables' levels
       // (core/patches/patch_basis.h, kExtraordinaryLevels), where the GPU is exact too.
@@ -121,7 +121,7 @@ TEST_F(GpuTest, TessellatedVerticesMatchTheCpuEvaluator) {
             "%-13s %-6s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.4f degrees, %zu "
             "vertices\n",
             name.c_str(), scheme ? "cc" : "auto", level, e.position, e.normal_degrees, e.count);
-        EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
+        EXPECT_GT(e.count, size_t(mesh.n_faces())) << name;
         // 2e-6 is required; 5e-7 holds since boundary phantoms are folded into the basis
         // (core/patches/patch_basis.h).
         EXPECT_LT(e.position, 5e-7) << name << " level " << level;
@@ -143,7 +143,7 @@ TEST_F(GpuTest, CreasedPatchesMatchTheCpuEvaluator) {
       std::printf(
           "%-16s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.4f degrees, %zu vertices\n",
           name, level, e.position, e.normal_degrees, e.count);
-      EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
+      EXPECT_GT(e.count, size_t(mesh.n_faces())) << name;
       EXPECT_LT(e.position, 5e-7) << name << " level " << level;
       EXPECT_LT(e.normal_degrees, 0.05) << name << " level " << level;
     }
@@ -165,7 +165,7 @@ TEST_F(GpuTest, LoopPatchesMatchTheCpuEvaluator) {
       std::printf(
           "%-14s level %2.0f: GPU against CPU: position %.1e of the diagonal, normal %.3f degrees, %zu vertices\n",
           name.c_str(), level, e.position, e.normal_degrees, e.count);
-      EXPECT_GT(e.count, size_t(mesh.mesh.n_faces())) << name;
+      EXPECT_GT(e.count, size_t(mesh.n_faces())) << name;
       // Float against double, the bounds of TessellatedVerticesMatchTheCpuEvaluator: the needle cones'
       // normals keep within them because each leaf's sums are taken about its heaviest point's anchor
       // (shaders/plan_eval.glsl).

@@ -20,7 +20,9 @@ struct PlannedMesh {
   std::vector<Dual> base, points;
 
   PlannedMesh(CovarianceMesh m, const PlanOptions& options)
-      : mesh(std::move(m)), tables(build_surface_plans(topology_of(mesh.mesh), options, mesh.sharpness)), base(base_points(mesh)) {
+      : mesh(std::move(m)),
+        tables(build_surface_plans(mesh.topology(), options, mesh.sharpness)),
+        base(base_points(mesh)) {
     points = apply_stencils(tables.stencils, base);
   }
   /// The thesis' approximate Catmull-Clark plans of the given depth (Bézier patches at extraordinary vertices).

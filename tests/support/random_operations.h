@@ -30,7 +30,7 @@ struct RandomOperationCase {
 };
 
 inline CovarianceMesh creased(CovarianceMesh m, double sharpness) {
-  const MeshConnectivity c = connectivity_of(topology_of(m.mesh));
+  const MeshConnectivity& c = m.connectivity();
   for (int e = 0; e < c.n_edges(); e += 7)
     m.sharpness.set_crease(c.edge_verts[2 * size_t(e)], c.edge_verts[2 * size_t(e) + 1], sharpness);
   return m;
@@ -51,8 +51,8 @@ inline std::vector<RandomOperationCase> random_operation_cases() {
 // split, bevel, dissolve, crease, corner, a primitive added, a transform of two vertices); throws gps::Error where the
 // operation refuses.
 inline Modelled random_operation(const CovarianceMesh& m, std::mt19937& random) {
-  const PolygonTopology t = topology_of(m.mesh);
-  const MeshConnectivity c = connectivity_of(t);
+  const PolygonTopology& t = m.topology();
+  const MeshConnectivity& c = m.connectivity();
   const auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(random); };
   const int f = pick(t.n_faces()), e = pick(c.n_edges()), v = pick(t.n_vertices);
   const int a = c.edge_verts[2 * size_t(e)], b = c.edge_verts[2 * size_t(e) + 1];

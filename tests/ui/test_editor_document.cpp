@@ -147,10 +147,8 @@ void expect_same_mesh(const CovarianceMesh& a, const CovarianceMesh& b) {
     EXPECT_EQ(a.covariance(v), b.covariance(v)) << v;
   }
   for (size_t f = 0; f < a.n_faces(); ++f) {
-    std::vector<int> fa, fb;
-    for (const auto v : a.mesh.fv_range(a.mesh.face_handle(unsigned(f)))) fa.push_back(v.idx());
-    for (const auto v : b.mesh.fv_range(b.mesh.face_handle(unsigned(f)))) fb.push_back(v.idx());
-    EXPECT_EQ(fa, fb) << "face " << f;
+    const std::span<const int> fa = a.face(f), fb = b.face(f);
+    EXPECT_EQ(std::vector<int>(fa.begin(), fa.end()), std::vector<int>(fb.begin(), fb.end())) << "face " << f;
   }
 }
 

@@ -24,7 +24,7 @@ TEST(MergeDistance, TheFractionIsOfTheBoundingBoxDiagonal) {
   const Modelled welded = merge_by_distance(square, {}, 0.01 / std::sqrt(2.0) * 1.01);
   EXPECT_EQ(welded.mesh.n_vertices(), 4u);
   EXPECT_EQ(welded.mesh.n_faces(), 1u);
-  EXPECT_EQ(welded.mesh.mesh.valence(PolyMesh::FaceHandle(0)), 4u);
+  EXPECT_EQ(welded.mesh.face_size(0), 4);
   const Modelled apart = merge_by_distance(square, {}, 0.01 / std::sqrt(2.0) * 0.99);
   EXPECT_EQ(apart.mesh.n_vertices(), 5u);
   EXPECT_EQ(merge_by_distance(square, {}, kDefaultMergeDistance).mesh.n_vertices(), 5u);

@@ -283,11 +283,8 @@ TEST(Selection, HeldFacesAreFoundByTheirCorners) {
   Selection s;
   s.select_faces(grid, {0, 4}, false);
   std::vector<std::vector<int>> faces;
-  for (const auto f : grid.mesh.faces()) {
-    std::vector<int> corners;
-    for (const auto v : f.vertices()) corners.push_back(v.idx());
-    faces.insert(faces.begin(), corners);  // the faces in reverse order
-  }
+  for (size_t f = 0; f < grid.n_faces(); ++f)
+    faces.insert(faces.begin(), std::vector<int>(grid.face(f).begin(), grid.face(f).end()));  // in reverse order
   faces.erase(faces.begin());  // face 8 gone
   std::vector<Vec3> means;
   for (size_t v = 0; v < grid.n_vertices(); ++v) means.push_back(grid.mean(v));

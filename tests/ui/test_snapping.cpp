@@ -40,8 +40,8 @@ TEST_F(Snapping, AVertexNearThePointerIsFoundUnlessItMoves) {
 
 TEST_F(Snapping, AnEdgePointLiesOnTheEdgeUnderThePointer) {
   int found = 0;
-  for (const auto e : mesh_.mesh.edges()) {
-    const Vec3 a = mesh_.mean(size_t(e.v0().idx())), b = mesh_.mean(size_t(e.v1().idx()));
+  for (size_t e = 0; e < mesh_.n_edges(); ++e) {
+    const Vec3 a = mesh_.mean(size_t(mesh_.edge(e)[0])), b = mesh_.mean(size_t(mesh_.edge(e)[1]));
     const Vec3 on = a + 0.3 * (b - a);
     const auto snapped = find_snap_point(mesh_, view_, pixel_of(view_, on), SnapTarget::edge, {}, 4.0f);
     ASSERT_TRUE(snapped);
@@ -51,24 +51,23 @@ TEST_F(Snapping, AnEdgePointLiesOnTheEdgeUnderThePointer) {
   }
   EXPECT_GE(found, 9);  // all but the hidden corner's edges, at least
   // An edge that touches a moving vertex is never taken.
-  const auto e = *mesh_.mesh.edges().begin();
-  const Vec3 a = mesh_.mean(size_t(e.v0().idx())), b = mesh_.mean(size_t(e.v1().idx()));
-  const auto without =
-      find_snap_point(mesh_, view_, pixel_of(view_, 0.5 * (a + b)), SnapTarget::edge, {e.v0().idx()}, 4.0f);
-  EXPECT_TRUE(!without || without->element != "edge " + std::to_string(std::min(e.v0().idx(), e.v1().idx())) + "–" +
-                                                  std::to_string(std::max(e.v0().idx(), e.v1().idx())));
+  const auto [v0, v1] = mesh_.edge(0);
+  const Vec3 a = mesh_.mean(size_t(v0)), b = mesh_.mean(size_t(v1));
+  const auto without = find_snap_point(mesh_, view_, pixel_of(view_, 0.5 * (a + b)), SnapTarget::edge, {v0}, 4.0f);
+  EXPECT_TRUE(!without ||
+              without->element != "edge " + std::to_string(std::min(v0, v1)) + "–" + std::to_string(std::max(v0, v1)));
 }
 
 TEST_F(Snapping, AFacePointIsWhereThePointersRayMeetsTheFrontFace) {
   const Vec3 eye = to_vec(view_.camera.eye_double());
-  for (const auto f : mesh_.mesh.faces()) {
+  for (size_t f = 0; f < mesh_.n_faces(); ++f) {
     Vec3 centre = Vec3::Zero();
-    for (const auto v : mesh_.mesh.fv_range(f)) centre += 0.25 * mesh_.mean(size_t(v.idx()));
+    for (const int v : mesh_.face(f)) centre += 0.25 * mesh_.mean(size_t(v));
     if (centre.dot(eye - centre) <= 0) continue;  // a back face
-    const Vec3 off_centre = centre + 0.2 * (mesh_.mean(size_t(mesh_.mesh.fv_range(f).begin()->idx())) - centre);
+    const Vec3 off_centre = centre + 0.2 * (mesh_.mean(size_t(mesh_.face(f)[0])) - centre);
     const auto snapped = find_snap_point(mesh_, view_, pixel_of(view_, off_centre), SnapTarget::face, {}, 16.0f);
     ASSERT_TRUE(snapped);
-    EXPECT_EQ(snapped->element, "face " + std::to_string(f.idx()));
+    EXPECT_EQ(snapped->element, "face " + std::to_string(f));
     EXPECT_LT((snapped->point - off_centre).norm(), 1e-4) << snapped->point.transpose();
   }
 }

@@ -23,14 +23,13 @@ Viewport view_of(const Camera& camera, int width = 640, int height = 480) {
 // On a convex closed mesh a vertex is visible exactly when one of its faces faces the eye.
 // Orthographic (`parallel`): one of its faces faces the direction towards the eye.
 std::vector<char> convex_visible(const CovarianceMesh& mesh, const Vec3& eye, bool parallel = false) {
-  const PolyMesh& m = mesh.mesh;
   std::vector<char> visible(mesh.n_vertices(), 0);
-  for (const auto f : m.faces()) {
+  for (size_t f = 0; f < mesh.n_faces(); ++f) {
     std::vector<Vec3> p;
-    for (const auto v : m.fv_range(f)) p.push_back(mesh.mean(size_t(v.idx())));
+    for (const int v : mesh.face(f)) p.push_back(mesh.mean(size_t(v)));
     const Vec3 normal = (p[1] - p[0]).cross(p[2] - p[0]);
     if (normal.dot(parallel ? eye : Vec3(eye - p[0])) > 1e-9)
-      for (const auto v : m.fv_range(f)) visible[size_t(v.idx())] = 1;
+      for (const int v : mesh.face(f)) visible[size_t(v)] = 1;
   }
   return visible;
 }
@@ -76,20 +75,19 @@ TEST(VisibleVertices, TheFarRimIsSeenThroughAnOpening) {
 // is visible, one all of whose faces clearly face away is not (at the silhouette either may be).
 TEST(VisibleVertices, TheSphereShowsItsFrontHalf) {
   const CovarianceMesh mesh = make_sample("sphere", 384);
-  const PolyMesh& m = mesh.mesh;
   for (const float yaw : {30.0f, 160.0f, -75.0f}) {
     const Camera camera = frame_mesh(mesh, yaw, 20.0f);
     const Vec3 eye = to_vec(camera.eye());
     const std::vector<char> visible = visible_vertices(view_of(camera, 800, 600), mesh);
     std::vector<double> facing(mesh.n_vertices(), -1.0);  // the best cosine of a face's normal towards the eye
-    for (const auto f : m.faces()) {
+    for (size_t f = 0; f < mesh.n_faces(); ++f) {
       std::vector<Vec3> p;
-      for (const auto v : m.fv_range(f)) p.push_back(mesh.mean(size_t(v.idx())));
+      for (const int v : mesh.face(f)) p.push_back(mesh.mean(size_t(v)));
       Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
       for (size_t k = 0; k < p.size(); ++k) normal += p[k].cross(p[(k + 1) % p.size()]), centre += p[k];
       centre /= double(p.size());
       const double cosine = normal.normalized().dot((eye - centre).normalized());
-      for (const auto v : m.fv_range(f)) facing[size_t(v.idx())] = std::max(facing[size_t(v.idx())], cosine);
+      for (const int v : mesh.face(f)) facing[size_t(v)] = std::max(facing[size_t(v)], cosine);
     }
     int shown = 0;
     for (size_t v = 0; v < mesh.n_vertices(); ++v) {
@@ -115,9 +113,9 @@ TEST(VisibleVertices, AFaceInFrontHidesWhatIsBehindIt) {
     std::vector<std::vector<int>> f = {{0, 1, 2, 3}};
     const CovarianceMesh cube = make_sample("cube");
     for (size_t i = 0; i < cube.n_vertices(); ++i) p.push_back(0.5 * cube.mean(i) + Vec3(cube_x, 0, -1));
-    for (const auto face : cube.mesh.faces()) {
+    for (size_t face = 0; face < cube.n_faces(); ++face) {
       std::vector<int> corners;
-      for (const auto v : cube.mesh.fv_range(face)) corners.push_back(4 + v.idx());
+      for (const int v : cube.face(face)) corners.push_back(4 + v);
       f.push_back(corners);
     }
     return make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.01 * Mat3::Identity()), f, "scene");

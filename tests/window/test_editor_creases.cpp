@@ -67,7 +67,7 @@ TEST_F(EditorCreases, TypedInfiniteSharpnessCreasesTheTopRimAndUndoesExactly) {
   const CovarianceMesh creased =
       play(shown, "--save " + dir_.file("saved.ply") + " --screenshot " + artefact("cube_top_rim_creased.png"));
   expect_top_creases(creased, kInfiniteSharpness);
-  EXPECT_EQ(creased.mesh.n_vertices(), original_.mesh.n_vertices());
+  EXPECT_EQ(creased.n_vertices(), original_.n_vertices());
   for (size_t v = 0; v < original_.n_vertices(); ++v) {
     EXPECT_EQ(creased.mean(v), original_.mean(v));
     EXPECT_EQ(creased.covariance(v), original_.covariance(v));

@@ -171,9 +171,8 @@ ShaftEdge front_shaft_edge(const CovarianceMesh& cylinder, const Viewport& view)
   ShaftEdge out{m.mesh};
   const Vec3 eye = to_vec(view.camera.eye());
   double nearest = std::numeric_limits<double>::max();
-  for (const auto e : out.mesh.mesh.edges()) {
-    const auto h = out.mesh.mesh.halfedge_handle(e, 0);
-    int a = out.mesh.mesh.from_vertex_handle(h).idx(), b = out.mesh.mesh.to_vertex_handle(h).idx();
+  for (size_t e = 0; e < out.mesh.n_edges(); ++e) {
+    auto [a, b] = out.mesh.edge(e);
     if (out.mesh.mean(size_t(a)).y() > out.mesh.mean(size_t(b)).y()) std::swap(a, b);
     const Vec3 p = out.mesh.mean(size_t(a)), q = out.mesh.mean(size_t(b));
     if (std::abs(p.y() - 1.0) > 1e-6 || std::abs(q.y() - 3.5) > 1e-6) continue;  // a shaft edge: base to tip

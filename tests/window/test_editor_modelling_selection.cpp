@@ -128,16 +128,15 @@ TEST_F(EditorModellingSelection, OnTheSphereABoxTakesTheFrontHalfAndCtrlBoxSubtr
   play(shot.key("3").wait(), "sphere_box_face_mode.png");
   const std::vector<int> selected = moved(play(move_selection(box, seen)));
 
-  const PolyMesh& m = original_.mesh;
   const Vec3 eye = to_vec(view_.camera.eye());
   std::vector<double> facing(original_.n_vertices(), -1.0);
-  for (const auto f : m.faces()) {
+  for (size_t f = 0; f < original_.n_faces(); ++f) {
     std::vector<Vec3> p;
-    for (const auto v : m.fv_range(f)) p.push_back(original_.mean(size_t(v.idx())));
+    for (const int v : original_.face(f)) p.push_back(original_.mean(size_t(v)));
     Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
     for (size_t k = 0; k < p.size(); ++k) normal += p[k].cross(p[(k + 1) % p.size()]), centre += p[k];
     const double cosine = normal.normalized().dot((eye - centre / double(p.size())).normalized());
-    for (const auto v : m.fv_range(f)) facing[size_t(v.idx())] = std::max(facing[size_t(v.idx())], cosine);
+    for (const int v : original_.face(f)) facing[size_t(v)] = std::max(facing[size_t(v)], cosine);
   }
   const std::set<int> in(selected.begin(), selected.end());
   for (size_t v = 0; v < original_.n_vertices(); ++v) {
@@ -205,9 +204,8 @@ TEST_F(EditorModellingSelection, FaceModeSelectsTheFacesClickedNotTheFaceTheyEnc
   use_mesh(test::grid_mesh(3, 3, 0.3, true));
   const auto centre_of = [this](int face) {
     Vec3 c = Vec3::Zero();
-    const auto f = original_.mesh.face_handle(face);
     int n = 0;
-    for (const auto v : original_.mesh.fv_range(f)) c += original_.mean(size_t(v.idx())), ++n;
+    for (const int v : original_.face(size_t(face))) c += original_.mean(size_t(v)), ++n;
     return pixel_of(view_, c / double(n));
   };
   Events ring;
@@ -218,8 +216,7 @@ TEST_F(EditorModellingSelection, FaceModeSelectsTheFacesClickedNotTheFaceTheyEnc
   ring.key("e").text("0.5").key("enter").wait();
   const CovarianceMesh extruded = play(ring, "face_mode_ring_extruded.png");
   EXPECT_EQ(extruded.n_faces(), 9u + 16u) << "the ring extruded alone";
-  const auto centre = extruded.mesh.face_handle(4);
-  for (const auto v : extruded.mesh.fv_range(centre)) EXPECT_EQ(extruded.mean(size_t(v.idx())).z(), 0.0);
+  for (const int v : extruded.face(4)) EXPECT_EQ(extruded.mean(size_t(v)).z(), 0.0);
 }
 
 // In face mode Ctrl+click selects the shortest path of faces from the face clicked last, and
@@ -231,8 +228,7 @@ TEST_F(EditorModellingSelection, FaceModeCtrlClickSelectsAPathOfFacesAndCtrlAltC
   const auto centre_of = [this](int face) {
     Vec3 c = Vec3::Zero();
     int n = 0;
-    for (const auto v : original_.mesh.fv_range(original_.mesh.face_handle(face)))
-      c += original_.mean(size_t(v.idx())), ++n;
+    for (const int v : original_.face(size_t(face))) c += original_.mean(size_t(v)), ++n;
     return pixel_of(view_, c / double(n));
   };
   int lifted = 0;  // faces whose corners all rose
@@ -242,9 +238,9 @@ TEST_F(EditorModellingSelection, FaceModeCtrlClickSelectsAPathOfFacesAndCtrlAltC
   play(path_shot.wait(), "face_mode_path.png");
   path.key("e").text("0.5").key("enter").wait();
   const CovarianceMesh extruded = play(path, "face_mode_path_extruded.png");
-  for (const auto f : extruded.mesh.faces()) {
+  for (size_t f = 0; f < extruded.n_faces(); ++f) {
     bool up = true;
-    for (const auto v : f.vertices()) up = up && extruded.mean(size_t(v.idx())).z() == 0.5;
+    for (const int v : extruded.face(f)) up = up && extruded.mean(size_t(v)).z() == 0.5;
     lifted += up;
   }
   EXPECT_EQ(lifted, 7);
@@ -271,13 +267,13 @@ TEST_F(EditorModellingSelection, FaceModeCtrlClickSelectsAPathOfFacesAndCtrlAltC
 TEST_F(EditorModellingSelection, AltClickSelectsTheEdgeLoop) {
   use_mesh(make_sample("sphere", 384));
   const std::vector<char> visible = visible_vertices(view_, original_);
-  const PolyMesh& m = original_.mesh;
   // The visible edge nearest the window's centre whose ends both have valence 4.
   std::array<int, 2> edge{-1, -1};
   float best = 1e9f;
-  for (const auto e : m.edges()) {
-    const int a = e.v0().idx(), b = e.v1().idx();
-    if (!visible[size_t(a)] || !visible[size_t(b)] || m.valence(e.v0()) != 4 || m.valence(e.v1()) != 4) continue;
+  for (size_t e = 0; e < original_.n_edges(); ++e) {
+    const auto [a, b] = original_.edge(e);
+    const bool regular = original_.valence(size_t(a)) == 4 && original_.valence(size_t(b)) == 4;
+    if (!visible[size_t(a)] || !visible[size_t(b)] || !regular) continue;
     const glm::vec2 mid = pixel_of(view_, 0.5 * (original_.mean(size_t(a)) + original_.mean(size_t(b))));
     if (const float d = glm::length(mid - glm::vec2(kWidth / 2, kHeight / 2)); d < best) best = d, edge = {a, b};
   }
@@ -295,16 +291,17 @@ TEST_F(EditorModellingSelection, AltClickSelectsTheEdgeLoop) {
 // neighbour selects it, rather than grabbing the axis end under it.
 TEST_F(EditorModellingSelection, AClickOnANeighbourUnderAnAxisEndSelectsIt) {
   use_mesh(make_sample("cube"));
-  const PolyMesh& m = original_.mesh;
+  const MeshConnectivity& c = original_.connectivity();
   int corner = 0;  // the corner nearest the camera, which looks from +x, +y, +z
   for (size_t v = 0; v < original_.n_vertices(); ++v)
     if (original_.mean(v).sum() > original_.mean(size_t(corner)).sum()) corner = int(v);
   std::vector<int> expected{corner};
   Events events;
   events.click(pixel_of(view_, original_.mean(size_t(corner)))).wait();
-  for (const auto n : m.vv_range(PolyMesh::VertexHandle(corner))) {
-    events.click(pixel_of(view_, original_.mean(size_t(n.idx()))), "shift").wait();
-    expected.push_back(n.idx());
+  for (int k = c.vertex_edge_offsets[size_t(corner)]; k < c.vertex_edge_offsets[size_t(corner) + 1]; ++k) {
+    const int n = c.other_vertex(c.vertex_edges[size_t(k)], corner);
+    events.click(pixel_of(view_, original_.mean(size_t(n))), "shift").wait();
+    expected.push_back(n);
   }
   std::sort(expected.begin(), expected.end());
   Events shot = events;
@@ -316,13 +313,13 @@ TEST_F(EditorModellingSelection, AClickOnANeighbourUnderAnAxisEndSelectsIt) {
 TEST_F(EditorModellingSelection, ShiftAltClickAddsASecondEdgeLoop) {
   use_mesh(make_sample("sphere", 384));
   const std::vector<char> visible = visible_vertices(view_, original_);
-  const PolyMesh& m = original_.mesh;
   const glm::vec2 centre(kWidth / 2, kHeight / 2);
   // Visible edges between vertices of valence 4, nearest the window's centre first.
   std::vector<std::pair<float, std::array<int, 2>>> edges;
-  for (const auto e : m.edges()) {
-    const int a = e.v0().idx(), b = e.v1().idx();
-    if (!visible[size_t(a)] || !visible[size_t(b)] || m.valence(e.v0()) != 4 || m.valence(e.v1()) != 4) continue;
+  for (size_t e = 0; e < original_.n_edges(); ++e) {
+    const auto [a, b] = original_.edge(e);
+    const bool regular = original_.valence(size_t(a)) == 4 && original_.valence(size_t(b)) == 4;
+    if (!visible[size_t(a)] || !visible[size_t(b)] || !regular) continue;
     const glm::vec2 mid = pixel_of(view_, 0.5 * (original_.mean(size_t(a)) + original_.mean(size_t(b))));
     edges.push_back({glm::length(mid - centre), {a, b}});
   }
@@ -368,9 +365,9 @@ TEST_F(EditorModellingSelection, LinkedUnderTheCursorAndInvert) {
       means.push_back(0.6 * cube.mean(v) + Vec3(0, y, 0));
       covariances.push_back(cube.covariance(v));
     }
-    for (const auto f : cube.mesh.faces()) {
+    for (size_t f = 0; f < cube.n_faces(); ++f) {
       std::vector<int> corners;
-      for (const auto v : cube.mesh.fv_range(f)) corners.push_back(base + v.idx());
+      for (const int v : cube.face(f)) corners.push_back(base + v);
       faces.push_back(corners);
     }
   }

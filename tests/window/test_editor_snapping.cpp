@@ -84,8 +84,8 @@ TEST_F(EditorToolsSnap, SnapToAVertexAlongTheConstraint) {
 TEST_F(EditorToolsSnap, SnapToAnEdgeLandsOnIt) {
   // The top face's far edge: the edge of the top face (the y of vertex 6) that does not touch 6 or 7.
   std::array<int, 2> edge{-1, -1};
-  for (const auto e : original_.mesh.edges()) {
-    const int a = e.v0().idx(), b = e.v1().idx();
+  for (size_t e = 0; e < original_.n_edges(); ++e) {
+    const auto [a, b] = original_.edge(e);
     if (a == 6 || b == 6 || a == 7 || b == 7) continue;
     if (original_.mean(size_t(a)).y() == original_.mean(6).y() &&
         original_.mean(size_t(b)).y() == original_.mean(6).y())

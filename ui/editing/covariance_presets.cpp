@@ -9,13 +9,13 @@
 namespace gps {
 
 Vec3 vertex_normal(const CovarianceMesh& mesh, int vertex) {
-  const PolyMesh& m = mesh.mesh;
+  const MeshConnectivity& c = mesh.connectivity();
   Vec3 sum = Vec3::Zero();
-  for (auto f = m.cvf_begin(PolyMesh::VertexHandle(vertex)); f.is_valid(); ++f) {
+  for (int k = c.vertex_face_offsets[size_t(vertex)]; k < c.vertex_face_offsets[size_t(vertex) + 1]; ++k) {
     Vec3 area = Vec3::Zero();  // Newell's method: twice the vector area of the polygon
-    std::vector<Vec3> corners;
-    for (auto v = m.cfv_begin(*f); v.is_valid(); ++v) corners.push_back(to_vec3(m.point(*v)));
-    for (size_t i = 0; i < corners.size(); ++i) area += corners[i].cross(corners[(i + 1) % corners.size()]);
+    const std::span<const int> corners = mesh.face(size_t(c.vertex_faces[size_t(k)]));
+    for (size_t i = 0; i < corners.size(); ++i)
+      area += mesh.mean(size_t(corners[i])).cross(mesh.mean(size_t(corners[(i + 1) % corners.size()])));
     sum += area;
   }
   return sum.norm() > 1e-300 ? Vec3(sum.normalized()) : Vec3::UnitZ();
@@ -27,9 +27,7 @@ std::vector<Mat3> preset_covariances(const CovarianceMesh& mesh, const std::vect
                                      CovariancePreset preset, double sigma) {
   std::vector<Mat3> out;
   if (preset == CovariancePreset::inferred) {
-    CovarianceMesh copy;
-    copy.mesh = mesh.mesh;
-    copy.covariances = mesh.covariances;
+    CovarianceMesh copy = mesh;
     infer_covariances(copy);
     for (const int v : vertices) out.push_back(copy.covariance(size_t(v)));
     return out;

@@ -79,9 +79,7 @@ std::vector<std::array<int, 2>> with_mirrored_edges(const CovarianceMesh& mesh,
     out.push_back({std::min(a, b), std::max(a, b)});
     const int pa = partner.at(a), pb = partner.at(b);
     if (pa == pb) continue;
-    const PolyMesh& m = mesh.mesh;
-    if (m.find_halfedge(m.vertex_handle(unsigned(pa)), m.vertex_handle(unsigned(pb))).is_valid())
-      out.push_back({std::min(pa, pb), std::max(pa, pb)});
+    if (mesh.find_edge(pa, pb) >= 0) out.push_back({std::min(pa, pb), std::max(pa, pb)});
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -30,11 +30,11 @@ std::vector<int> complement(size_t n, const std::vector<int>& taken) {
   return out;
 }
 
-std::vector<int> topology_of_faces(const PolyMesh& m) {
+std::vector<int> topology_of_faces(const CovarianceMesh& m) {
   std::vector<int> out;
-  for (const auto f : m.faces()) {
-    out.push_back(int(m.valence(f)));
-    for (const auto v : m.fv_range(f)) out.push_back(v.idx());
+  for (size_t f = 0; f < m.n_faces(); ++f) {
+    out.push_back(m.face_size(f));
+    for (const int v : m.face(f)) out.push_back(v);
   }
   out.push_back(int(m.n_vertices()));
   return out;
@@ -51,17 +51,10 @@ bool HiddenElements::vertex_hidden(int vertex) const {
 bool HiddenElements::edge_hidden(const CovarianceMesh& mesh, int a, int b) const {
   if (vertex_hidden(a) || vertex_hidden(b)) return true;
   if (faces_.empty()) return false;
-  const PolyMesh& m = mesh.mesh;
-  const auto h = m.find_halfedge(m.vertex_handle(a), m.vertex_handle(b));
-  if (!h.is_valid()) return false;
-  bool has_face = false;
-  for (const auto side : {h, m.opposite_halfedge_handle(h)}) {
-    const auto f = m.face_handle(side);
-    if (!f.is_valid()) continue;
-    if (!face_hidden(f.idx())) return false;
-    has_face = true;
-  }
-  return has_face;
+  const int e = mesh.find_edge(a, b);
+  if (e < 0) return false;
+  const std::vector<int>& sides = mesh.connectivity().edge_faces;  // the second is −1 on a boundary
+  return face_hidden(sides[2 * size_t(e)]) && (sides[2 * size_t(e) + 1] < 0 || face_hidden(sides[2 * size_t(e) + 1]));
 }
 
 std::vector<char> HiddenElements::vertex_mask(size_t n_vertices) const {
@@ -79,9 +72,9 @@ std::vector<char> HiddenElements::face_mask(size_t n_faces) const {
 }
 
 std::vector<char> HiddenElements::edge_mask(const CovarianceMesh& mesh) const {
-  std::vector<char> mask(mesh.mesh.n_edges(), 0);
+  std::vector<char> mask(mesh.n_edges(), 0);
   if (empty()) return mask;
-  for (const auto e : mesh.mesh.edges()) mask[size_t(e.idx())] = edge_hidden(mesh, e.v0().idx(), e.v1().idx());
+  for (size_t e = 0; e < mesh.n_edges(); ++e) mask[e] = edge_hidden(mesh, mesh.edge(e)[0], mesh.edge(e)[1]);
   return mask;
 }
 
@@ -95,51 +88,50 @@ std::vector<int> HiddenElements::shown(const std::vector<int>& vertices) const {
 std::vector<EdgeEnds> HiddenElements::edges(const CovarianceMesh& mesh) const {
   std::vector<EdgeEnds> out;
   if (empty()) return out;
-  for (const auto e : mesh.mesh.edges()) {
-    const int a = e.v0().idx(), b = e.v1().idx();
-    if (edge_hidden(mesh, a, b)) out.push_back({std::min(a, b), std::max(a, b)});
-  }
+  for (size_t e = 0; e < mesh.n_edges(); ++e)
+    if (edge_hidden(mesh, mesh.edge(e)[0], mesh.edge(e)[1])) out.push_back(mesh.edge(e));
   std::sort(out.begin(), out.end());
   return out;
 }
 
 size_t HiddenElements::hide(const CovarianceMesh& mesh, Selection& selection, SelectMode mode, bool unselected) {
-  const PolyMesh& m = mesh.mesh;
+  const PolygonTopology& t = mesh.topology();
+  const MeshConnectivity& c = mesh.connectivity();
   std::vector<int> faces, vertices;
   if (mode == SelectMode::vertex) {
-    vertices = unselected ? complement(m.n_vertices(), selection.vertices()) : selection.vertices();
-    for (const auto f : m.faces())
-      for (const auto v : m.fv_range(f))
-        if (std::binary_search(vertices.begin(), vertices.end(), v.idx())) {
-          faces.push_back(f.idx());
+    vertices = unselected ? complement(mesh.n_vertices(), selection.vertices()) : selection.vertices();
+    for (size_t f = 0; f < mesh.n_faces(); ++f)
+      for (const int v : mesh.face(f))
+        if (std::binary_search(vertices.begin(), vertices.end(), v)) {
+          faces.push_back(int(f));
           break;
         }
   } else if (mode == SelectMode::edge) {
     const std::vector<EdgeEnds> selected = selection.edges(mesh);
-    for (const auto f : m.faces())
-      for (const auto h : m.fh_range(f)) {
-        const int a = m.from_vertex_handle(h).idx(), b = m.to_vertex_handle(h).idx();
-        const bool is_selected =
-            std::binary_search(selected.begin(), selected.end(), EdgeEnds{std::min(a, b), std::max(a, b)});
+    for (int f = 0; f < t.n_faces(); ++f)
+      for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
+        const EdgeEnds ends = mesh.edge(size_t(c.face_edges[size_t(k)]));
+        const bool is_selected = std::binary_search(selected.begin(), selected.end(), ends);
         if (is_selected != unselected) {
-          faces.push_back(f.idx());
+          faces.push_back(f);
           break;
         }
       }
   } else {
     const std::vector<int> selected = selection.faces(mesh);
-    faces = unselected ? complement(m.n_faces(), selected) : selected;
+    faces = unselected ? complement(mesh.n_faces(), selected) : selected;
   }
   const size_t before = faces_.size();
-  topology_ = topology_of_faces(m);
+  topology_ = topology_of_faces(mesh);
   faces_ = united(faces_, sorted(faces));
   vertices_ = united(vertices_, vertices);
   if (mode != SelectMode::vertex) {  // a vertex goes with its last face
     std::vector<int> last;
-    for (const auto v : m.vertices()) {
-      bool any = false, all = true;
-      for (const auto f : m.vf_range(v)) any = true, all = all && face_hidden(f.idx());
-      if (any && all) last.push_back(v.idx());
+    for (int v = 0; v < int(mesh.n_vertices()); ++v) {
+      bool all = true;
+      for (int k = c.vertex_face_offsets[size_t(v)]; k < c.vertex_face_offsets[size_t(v) + 1]; ++k)
+        all = all && face_hidden(c.vertex_faces[size_t(k)]);
+      if (c.n_vertex_faces(v) > 0 && all) last.push_back(v);
     }
     vertices_ = united(vertices_, last);
   }
@@ -161,9 +153,7 @@ size_t HiddenElements::reveal(const CovarianceMesh& mesh, Selection& selection, 
   return shown_faces;
 }
 
-bool HiddenElements::fits(const CovarianceMesh& mesh) const {
-  return empty() || topology_ == topology_of_faces(mesh.mesh);
-}
+bool HiddenElements::fits(const CovarianceMesh& mesh) const { return empty() || topology_ == topology_of_faces(mesh); }
 
 void HiddenElements::deselect_hidden(const CovarianceMesh& mesh, Selection& selection, SelectMode mode) const {
   if (empty() || selection.empty()) return;

@@ -42,11 +42,9 @@ int Selection::active() const {
 
 std::vector<EdgeEnds> Selection::edges(const CovarianceMesh& mesh) const {
   if (!holds_edges_) return edges_within(mesh, vertices_);
-  const PolyMesh& m = mesh.mesh;
   std::vector<EdgeEnds> out;
   for (const auto& [a, b] : edges_)
-    if (b < int(m.n_vertices()) && m.find_halfedge(m.vertex_handle(a), m.vertex_handle(b)).is_valid())
-      out.push_back({a, b});
+    if (b < int(mesh.n_vertices()) && mesh.find_edge(a, b) >= 0) out.push_back({a, b});
   return out;
 }
 
@@ -173,7 +171,7 @@ void Selection::deselect_edges(const CovarianceMesh& mesh, const std::vector<Edg
 void Selection::invert_edges(const CovarianceMesh& mesh) {
   hold_edges(mesh);
   std::vector<EdgeEnds> all;
-  for (const auto e : mesh.mesh.edges()) all.push_back({e.v0().idx(), e.v1().idx()});
+  for (size_t e = 0; e < mesh.n_edges(); ++e) all.push_back(mesh.edge(e));
   all = normalized(std::move(all));
   std::vector<EdgeEnds> inverted;
   std::set_difference(all.begin(), all.end(), edges_.begin(), edges_.end(), std::back_inserter(inverted));
@@ -190,14 +188,15 @@ std::vector<int> Selection::faces(const CovarianceMesh& mesh) const {
 }
 
 int Selection::face_with_corners(const CovarianceMesh& mesh, const FaceCorners& held) {
-  const PolyMesh& m = mesh.mesh;
-  if (held.empty() || held.front() < 0 || held.back() >= int(m.n_vertices())) return -1;
+  if (held.empty() || held.front() < 0 || held.back() >= int(mesh.n_vertices())) return -1;
+  const MeshConnectivity& c = mesh.connectivity();
   std::vector<int> corners;
-  for (const auto f : m.vf_range(m.vertex_handle(held.front()))) {  // the faces around its lowest corner
-    corners.clear();
-    for (const auto v : f.vertices()) corners.push_back(v.idx());
+  // The faces around its lowest corner.
+  for (int k = c.vertex_face_offsets[size_t(held.front())]; k < c.vertex_face_offsets[size_t(held.front()) + 1]; ++k) {
+    const int f = c.vertex_faces[size_t(k)];
+    corners.assign(mesh.face(size_t(f)).begin(), mesh.face(size_t(f)).end());
     std::sort(corners.begin(), corners.end());
-    if (corners == held) return f.idx();
+    if (corners == held) return f;
   }
   return -1;
 }
@@ -214,12 +213,10 @@ void Selection::set_active_face(const CovarianceMesh& mesh, int face) {
 }
 
 std::vector<FaceCorners> Selection::corner_sets(const CovarianceMesh& mesh, const std::vector<int>& faces) {
-  const PolyMesh& m = mesh.mesh;
   std::vector<FaceCorners> out;
   for (const int f : faces) {
-    if (f < 0 || f >= int(m.n_faces())) continue;
-    FaceCorners corners;
-    for (const auto v : m.fv_range(m.face_handle(f))) corners.push_back(v.idx());
+    if (f < 0 || f >= int(mesh.n_faces())) continue;
+    FaceCorners corners(mesh.face(size_t(f)).begin(), mesh.face(size_t(f)).end());
     std::sort(corners.begin(), corners.end());
     out.push_back(std::move(corners));
   }
@@ -285,7 +282,7 @@ void Selection::deselect_faces(const CovarianceMesh& mesh, const std::vector<int
 
 void Selection::invert_faces(const CovarianceMesh& mesh) {
   hold_faces(mesh);
-  std::vector<int> all(mesh.mesh.n_faces());
+  std::vector<int> all(mesh.n_faces());
   for (size_t f = 0; f < all.size(); ++f) all[f] = int(f);
   std::vector<FaceCorners> inverted;
   const std::vector<FaceCorners> every = corner_sets(mesh, all);

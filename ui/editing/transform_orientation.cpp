@@ -33,17 +33,19 @@ Mat3 normal_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices, 
   const MeshArrays arrays = arrays_of(mesh);
   Vec3 z = Vec3::Zero();
   for (const int f : faces) z += newell_normal(arrays, f);
+  const MeshConnectivity& c = mesh.connectivity();
   if (faces.empty())
     for (const int v : vertices)
-      for (const auto f : mesh.mesh.vf_range(mesh.mesh.vertex_handle(unsigned(v)))) z += newell_normal(arrays, f.idx());
+      for (int k = c.vertex_face_offsets[size_t(v)]; k < c.vertex_face_offsets[size_t(v) + 1]; ++k)
+        z += newell_normal(arrays, c.vertex_faces[size_t(k)]);
   if (!(z.norm() > 0)) return Mat3::Identity();
   z.normalize();
 
   // The tangent: the longest selected edge (for one vertex, its longest edge) across the normal.
   std::vector<std::array<int, 2>> edges = selected_edges;
   if (vertices.size() == 1)
-    for (const auto w : mesh.mesh.vv_range(mesh.mesh.vertex_handle(unsigned(vertices[0]))))
-      edges.push_back({vertices[0], w.idx()});
+    for (int k = c.vertex_edge_offsets[size_t(vertices[0])]; k < c.vertex_edge_offsets[size_t(vertices[0]) + 1]; ++k)
+      edges.push_back({vertices[0], c.other_vertex(c.vertex_edges[size_t(k)], vertices[0])});
   Vec3 y = Vec3::Zero();
   double longest = -1.0;
   for (const auto& [a, b] : edges) {

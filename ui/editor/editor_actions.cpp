@@ -120,7 +120,7 @@ void EditorApp::open_sample(const std::string& name) {
 
 void EditorApp::mesh_replaced() {
   ViewOptions view = view_;
-  view.triangle_mesh = scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
+  view.triangle_mesh = scheme_for(document_.mesh().topology(), PlanOptions{}) == Scheme::loop;
   const auto mirror = view_.mirror_modifiers.find(document_.source_path());
   mirror_.settings = mirror != view_.mirror_modifiers.end() ? mirror->second : MirrorSettings{};
   try {  // first: it throws before anything changes

@@ -65,7 +65,7 @@ void EditorApp::refresh_hidden() {
   // (core/modelling/mirror.h): its mirror image stays drawn.
   const CovarianceMesh& shown = mirror_.mirroring() ? mirror_.mirrored() : mesh;
   try {
-    hidden_patches_ = patches_of_faces(shown.mesh, renderer_->tables().plans, hidden_.faces());
+    hidden_patches_ = patches_of_faces(shown.topology(), renderer_->tables().plans, hidden_.faces());
   } catch (const Error& e) {  // not the renderer's mesh: nothing is left out rather than the wrong patches
     set_status(std::string("hide: ") + e.what(), true);
   }

@@ -66,11 +66,10 @@ void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, 
   } else if (surface) {  // a sharpness change: the vertices keep their indices
     renderer_->set_mesh(mesh, std::move(surface->tables), renderer_->frame().following(mesh), surface->change, {});
   } else {  // re-planned where the mesh changed (a wrong origin costs time, never a wrong table)
-    const PolygonTopology topology = topology_of(mesh.mesh);
     if (shown_plans_ && shown_plans_->options() == plans)
-      shown_plans_->set_topology(topology, mesh.sharpness, origin);
+      shown_plans_->set_topology(mesh, origin);
     else
-      shown_plans_.emplace(topology, plans, mesh.sharpness);
+      shown_plans_.emplace(mesh.topology(), plans, mesh.sharpness);
     renderer_->set_mesh(mesh, shown_plans_->tables(), renderer_->frame().following(mesh), shown_plans_->last_change(),
                         origin);
   }

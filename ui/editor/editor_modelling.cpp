@@ -123,7 +123,7 @@ void EditorApp::build_modelling_commands() {
          "Bisect (Alt+K; drag a line: the cut is the plane seen along it)",
          {key(GLFW_KEY_K, false, false, true)},
          [this] { start_tool([](ToolContext& ctx) { return std::make_unique<BisectTool>(ctx); }); },
-         [this] { return document_.mesh().mesh.n_faces() > 0; }});
+         [this] { return document_.mesh().n_faces() > 0; }});
   t.add({"Mesh",
          "Duplicate (Shift+D; then move)",
          {key(GLFW_KEY_D, false, true)},
@@ -331,7 +331,7 @@ void EditorApp::install(const Modelled& result, SurfaceReplanner* replanner) {
 }
 
 void EditorApp::topology_changed(const std::vector<int>& selection) {
-  view_.triangle_mesh = scheme_for(topology_of(document_.mesh().mesh), PlanOptions{}) == Scheme::loop;
+  view_.triangle_mesh = scheme_for(document_.mesh().topology(), PlanOptions{}) == Scheme::loop;
   check_finite_ = true;
   drag_.reset();
   reach_.clear();

@@ -22,9 +22,8 @@ constexpr float kClickRadius = 8.0f;  // window pixels from a vertex or an edge
 constexpr float kLoopRadius = 24.0f;  // an Alt+click takes the nearest edge this near
 
 std::vector<int> corners(const CovarianceMesh& mesh, int face) {
-  std::vector<int> out;
-  for (const auto v : mesh.mesh.fv_range(mesh.mesh.face_handle(face))) out.push_back(v.idx());
-  return out;
+  const std::span<const int> face_corners = mesh.face(size_t(face));
+  return {face_corners.begin(), face_corners.end()};
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ ImU32 colour_of(double sharpness) {
 void draw_crease_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMesh& mesh,
                          const HiddenElements* hidden) {
   if (mesh.sharpness.empty()) return;
-  const PolyMesh& m = mesh.mesh;
+  const MeshConnectivity& c = mesh.connectivity();
   std::vector<std::optional<ImVec2>> pixel(mesh.n_vertices());
   std::vector<bool> projected(mesh.n_vertices(), false);
   const auto at = [&](int vertex) -> const std::optional<ImVec2>& {
@@ -33,30 +33,30 @@ void draw_crease_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMe
     return pixel[size_t(vertex)];
   };
   // Face f faces the camera where it winds clockwise in window pixels (y down).
-  const auto front = [&](OpenMesh::SmartFaceHandle f) {
-    if (!f.is_valid()) return false;
+  const auto front = [&](int f) {
+    const std::span<const int> corners = mesh.face(size_t(f));
     double area = 0.0;
-    for (const auto h : m.fh_range(f)) {
-      const auto& a = at(h.from().idx());
-      const auto& b = at(h.to().idx());
+    for (size_t k = 0; k < corners.size(); ++k) {
+      const auto& a = at(corners[k]);
+      const auto& b = at(corners[(k + 1) % corners.size()]);
       if (!a || !b) return false;
       area += double(a->x) * double(b->y) - double(b->x) * double(a->y);
     }
     return area < 0.0;
   };
-  for (const EdgeCrease& c : mesh.sharpness.creases) {
-    const auto h = m.find_halfedge(m.vertex_handle(unsigned(c.a)), m.vertex_handle(unsigned(c.b)));
-    if (!h.is_valid() || (hidden && hidden->edge_hidden(mesh, c.a, c.b))) continue;
-    const auto sh = OpenMesh::make_smart(h, &m);
-    const bool boundary = !sh.face().is_valid() || !sh.opp().face().is_valid();
-    if (!boundary && !front(sh.face()) && !front(sh.opp().face())) continue;
-    if (at(c.a) && at(c.b)) draw.AddLine(*at(c.a), *at(c.b), colour_of(c.sharpness), 3.0f);
+  for (const EdgeCrease& crease : mesh.sharpness.creases) {
+    const int e = mesh.find_edge(crease.a, crease.b);
+    if (e < 0 || (hidden && hidden->edge_hidden(mesh, crease.a, crease.b))) continue;
+    const int f0 = c.edge_faces[2 * size_t(e)], f1 = c.edge_faces[2 * size_t(e) + 1];
+    if (f1 >= 0 && !front(f0) && !front(f1)) continue;  // a boundary edge is always drawn
+    if (at(crease.a) && at(crease.b)) draw.AddLine(*at(crease.a), *at(crease.b), colour_of(crease.sharpness), 3.0f);
   }
   for (size_t vertex = 0; vertex < mesh.sharpness.corners.size(); ++vertex) {
     const double s = mesh.sharpness.corners[vertex];
     if (s <= 0.0 || (hidden && hidden->vertex_hidden(int(vertex)))) continue;
     bool shown = false;
-    for (const auto f : m.vf_range(m.vertex_handle(unsigned(vertex)))) shown = shown || front(f);
+    for (int k = c.vertex_face_offsets[vertex]; k < c.vertex_face_offsets[vertex + 1]; ++k)
+      shown = shown || front(c.vertex_faces[size_t(k)]);
     if (!shown || !at(int(vertex))) continue;
     const ImVec2 p = *at(int(vertex));
     draw.AddRectFilled(ImVec2(p.x - 5, p.y - 5), ImVec2(p.x + 5, p.y + 5), colour_of(s));

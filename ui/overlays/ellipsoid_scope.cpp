@@ -21,7 +21,9 @@ std::vector<int> selection_neighbourhood(const CovarianceMesh& mesh, const std::
   for (const int v : selected) {
     if (v < 0 || size_t(v) >= mesh.n_vertices()) continue;
     out.push_back(v);
-    for (const auto neighbour : mesh.mesh.vv_range(PolyMesh::VertexHandle(v))) out.push_back(neighbour.idx());
+    const MeshConnectivity& c = mesh.connectivity();
+    for (int k = c.vertex_edge_offsets[size_t(v)]; k < c.vertex_edge_offsets[size_t(v) + 1]; ++k)
+      out.push_back(c.other_vertex(c.vertex_edges[size_t(k)], v));
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

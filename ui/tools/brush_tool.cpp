@@ -30,9 +30,9 @@ std::unique_ptr<ModalTool> BrushTool::start(ToolContext& ctx, BrushKind kind) {
   tool->kind_ = kind;
   // At first the mean edge length: a dab reaches the corners of the faces under it.
   double length = 0.0;
-  for (const auto e : mesh.mesh.edges())
-    length += (mesh.mean(size_t(e.v0().idx())) - mesh.mean(size_t(e.v1().idx()))).norm();
-  tool->radius_ = mesh.mesh.n_edges() > 0 && length > 0 ? length / double(mesh.mesh.n_edges()) : 1.0;
+  for (size_t e = 0; e < mesh.n_edges(); ++e)
+    length += (mesh.mean(size_t(mesh.edge(e)[0])) - mesh.mean(size_t(mesh.edge(e)[1]))).norm();
+  tool->radius_ = mesh.n_edges() > 0 && length > 0 ? length / double(mesh.n_edges()) : 1.0;
   ctx.document.begin_edit();
   tool->hover_ = ctx.surface_at(ctx.cursor);
   tool->describe(ctx);

@@ -51,11 +51,10 @@ void CircleSelectTool::paint(glm::vec2 at, bool add, ToolContext& ctx) {
   }
   if (mode_ == SelectMode::face) {  // the faces whose centre is covered
     std::vector<int> faces;
-    for (const auto f : mesh.mesh.faces()) {
-      std::vector<int> corners;
-      bool seen = true;
-      for (const auto c : mesh.mesh.fv_range(f)) corners.push_back(c.idx()), seen = seen && visible_[size_t(c.idx())];
-      if (seen && covered(centre_of_vertices(mesh, corners))) faces.push_back(f.idx());
+    for (size_t f = 0; f < mesh.n_faces(); ++f) {
+      const std::span<const int> corners = mesh.face(f);
+      const bool seen = std::all_of(corners.begin(), corners.end(), [&](int c) { return visible_[size_t(c)]; });
+      if (seen && covered(centre_of_vertices(mesh, {corners.begin(), corners.end()}))) faces.push_back(int(f));
     }
     if (add)
       ctx.selection.select_faces(mesh, faces, true);

@@ -33,8 +33,8 @@ std::optional<Vec3> knife_point_under(const CovarianceMesh& mesh, const Viewport
     return corner->point;
   NearestProjected nearest(view.camera, view.width, view.height, pixel, kSnapPixels, 0.5f);
   std::vector<Vec3> middles;
-  for (const auto e : mesh.mesh.edges()) {
-    middles.push_back((mesh.mean(size_t(e.v0().idx())) + mesh.mean(size_t(e.v1().idx()))) / 2);
+  for (size_t e = 0; e < mesh.n_edges(); ++e) {
+    middles.push_back((mesh.mean(size_t(mesh.edge(e)[0])) + mesh.mean(size_t(mesh.edge(e)[1]))) / 2);
     nearest.consider(int(middles.size()) - 1, middles.back());
   }
   if (nearest.best() >= 0 && unhidden(mesh, view, middles[size_t(nearest.best())]))

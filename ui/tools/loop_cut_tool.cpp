@@ -18,12 +18,12 @@ constexpr float kEdgePickPixels = 40.0f;  // how near the cursor an edge must be
 constexpr int kMaxLoopCuts = 64;          // what the wheel reaches
 constexpr double kMaxLoopSlide = 0.95;    // short of the ring's edges' ends
 
-// Whether face f of `mesh` faces the camera (Newell's normal of its means against the view).
-bool faces_the_camera(const CovarianceMesh& mesh, const Viewport& view, OpenMesh::FaceHandle f) {
-  if (!f.is_valid()) return false;
+// Whether face f of `mesh` faces the camera (Newell's normal of its means against the view); no face (−1) does not.
+bool faces_the_camera(const CovarianceMesh& mesh, const Viewport& view, int f) {
+  if (f < 0) return false;
   Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
   std::vector<Vec3> corners;
-  for (const auto v : mesh.mesh.fv_range(f)) corners.push_back(mesh.mean(size_t(v.idx())));
+  for (const int v : mesh.face(size_t(f))) corners.push_back(mesh.mean(size_t(v)));
   for (size_t i = 0; i < corners.size(); ++i) {
     normal += corners[i].cross(corners[(i + 1) % corners.size()]);
     centre += corners[i] / double(corners.size());
@@ -37,12 +37,10 @@ bool faces_the_camera(const CovarianceMesh& mesh, const Viewport& view, OpenMesh
 std::optional<std::array<int, 2>> edge_under(const CovarianceMesh& mesh, const Viewport& v, glm::vec2 cursor) {
   std::optional<std::array<int, 2>> best;
   float nearest = kEdgePickPixels;
-  for (const auto e : mesh.mesh.edges()) {
-    const auto h = mesh.mesh.halfedge_handle(e, 0);
-    if (!faces_the_camera(mesh, v, mesh.mesh.face_handle(h)) &&
-        !faces_the_camera(mesh, v, mesh.mesh.opposite_face_handle(h)))
-      continue;
-    const int a = mesh.mesh.from_vertex_handle(h).idx(), b = mesh.mesh.to_vertex_handle(h).idx();
+  const std::vector<int>& sides = mesh.connectivity().edge_faces;
+  for (size_t e = 0; e < mesh.n_edges(); ++e) {
+    if (!faces_the_camera(mesh, v, sides[2 * e]) && !faces_the_camera(mesh, v, sides[2 * e + 1])) continue;
+    const auto [a, b] = mesh.edge(e);
     const auto pa = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(a)));
     const auto pb = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(b)));
     if (!pa || !pb) continue;

@@ -36,7 +36,7 @@ ReplannedTables SharpnessTool::surface(const CovarianceMesh& mesh, const ToolCon
   if (replanner_)
     replanner_->set_sharpness(mesh.sharpness);
   else
-    replanner_ = std::make_unique<SurfaceReplanner>(topology_of(mesh.mesh), ctx.plans, mesh.sharpness);
+    replanner_ = std::make_unique<SurfaceReplanner>(mesh.topology(), ctx.plans, mesh.sharpness);
   return replanner_->replanned();
 }
 

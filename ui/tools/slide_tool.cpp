@@ -53,8 +53,10 @@ std::unique_ptr<ModalTool> SlideTool::start(ToolContext& ctx) {
     }
   } else if (selected.size() == 1) {
     tool->vertex_ = selected.front();
-    for (const auto u : mesh.mesh.vv_range(mesh.mesh.vertex_handle(unsigned(tool->vertex_))))
-      tool->neighbours_.push_back(u.idx());
+    const MeshConnectivity& c = mesh.connectivity();
+    const int v = tool->vertex_;
+    for (int k = c.vertex_edge_offsets[size_t(v)]; k < c.vertex_edge_offsets[size_t(v) + 1]; ++k)
+      tool->neighbours_.push_back(c.other_vertex(c.vertex_edges[size_t(k)], v));
     if (tool->neighbours_.empty()) {
       ctx.note("vertex slide refused: vertex " + std::to_string(tool->vertex_) + " has no edge", true);
       return nullptr;
