@@ -20,6 +20,16 @@ fi
 cmake --install "$build_dir" --prefix "$work/prefix" >"$work/install.log"
 test -f "$work/prefix/lib/cmake/gpsurf/gpsurfConfig.cmake"
 test -f "$work/prefix/include/gpsurf/core/plans/planned_surface.h"
+# Only the public headers and what they include: not the decimation's OpenMesh mesh, nor the plan builders.
+test ! -e "$work/prefix/include/gpsurf/core/fitting/halfedge_collapse.h"
+test ! -e "$work/prefix/include/gpsurf/core/plans/loop_plan_builder.h"
+if grep -rl "#include <OpenMesh" "$work/prefix/include/gpsurf"; then
+  echo "an installed header includes OpenMesh" >&2
+  exit 1
+fi
+# Every installed header compiles from the prefix alone (nothing it includes was left out).
+find "$work/prefix/include/gpsurf" -name '*.h' | sed 's|.*/include/gpsurf/\(.*\)|#include "\1"|' >"$work/all_headers.cpp"
+c++ -std=c++20 -fsyntax-only -I"$work/prefix/include/gpsurf" -I/usr/include/eigen3 "$work/all_headers.cpp"
 # The installed headers need C++20, which the exported target asks of whoever links it.
 grep -q "cxx_std_20" "$work/prefix/lib/cmake/gpsurf/gpsurfTargets.cmake"
 test -x "$work/prefix/bin/gpsurf"
