@@ -103,8 +103,10 @@ RangePlans build_creased_loop_range(const LocalMesh& base, int first, int last, 
   return CreasedLoopBuilder(base, beta, tables).build(first, last);
 }
 
-SurfaceTables build_creased_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness) {
-  const LocalMesh base = base_local_mesh(topology, sharpness);
+SurfaceTables build_creased_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness,
+                                       const MeshConnectivity* connectivity) {
+  const LocalMesh base =
+      connectivity ? base_local_mesh(topology, *connectivity, sharpness) : base_local_mesh(topology, sharpness);
   // Faces in ranges, built on all cores (OpenMP), merged in order (core/plans/range_plans.h).
   const int n_faces = topology.n_faces(), n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);
   std::vector<RangePlans> parts(static_cast<size_t>(n_ranges));

@@ -16,7 +16,9 @@ class LoopCreaseTables;  // core/extraordinary/loop_crease_tables.h
 /// beyond a boundary; one with a single irregular corner whose neighbourhood is self-similar is an
 /// exact node (core/extraordinary/loop_crease_tables.h); any other is split, so semi-sharp creases
 /// refine until their sharpness has decayed. The topology must have passed build_loop_plans' checks.
-SurfaceTables build_creased_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness);
+/// `connectivity`: the topology's where the caller holds it; null: built here.
+SurfaceTables build_creased_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness,
+                                       const MeshConnectivity* connectivity = nullptr);
 
 /// The plans of faces [first, last) of `base` (base_local_mesh of the topology and its sharpness), for
 /// merge_ranges (core/plans/range_plans.h); exact tables come from `tables`, which ranges may share.

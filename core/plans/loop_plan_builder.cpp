@@ -17,8 +17,8 @@ namespace {
 
 class LoopBuilder {
 public:
-  LoopBuilder(const PolygonTopology& t, LoopBeta beta)
-      : t_(t), c_(connectivity_of(t)), walker_(t_, c_), beta_(beta), tables_(beta), stencils_(t.n_vertices) {
+  LoopBuilder(const PolygonTopology& t, LoopBeta beta, const MeshConnectivity* c = nullptr)
+      : t_(t), c_(c ? *c : connectivity_of(t)), walker_(t_, c_), beta_(beta), tables_(beta), stencils_(t.n_vertices) {
     plans_.shape = PatchShape::triangle;
     plans_.max_depth = 1;
   }
@@ -163,12 +163,13 @@ private:
 
 void check_loop_plans(const PolygonTopology& topology) { LoopBuilder(topology, LoopBeta::loop).check(); }
 
-SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness) {
-  LoopBuilder builder(topology, beta);
+SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness,
+                               const MeshConnectivity* connectivity) {
+  LoopBuilder builder(topology, beta, connectivity);
   builder.check();
   Sharpness sharp = sharpness;
   sharp.normalise();
-  return sharp.empty() ? builder.build() : build_creased_loop_plans(topology, beta, sharp);
+  return sharp.empty() ? builder.build() : build_creased_loop_plans(topology, beta, sharp, connectivity);
 }
 
 }  // namespace gps

@@ -11,8 +11,10 @@ namespace gps {
 /// child: that child is an extraordinary node, evaluated exactly (core/extraordinary/loop_extraordinary_tables.h), the
 /// others are box splines. Depth therefore does not trade accuracy: the plans are exact at depth 1. Throws gps::Error
 /// naming the first face that is not a triangle, or a vertex of more than kMaxLoopValence faces.
-/// With creases or corners, core/plans/loop_crease_plan_builder.h builds them.
-SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness = {});
+/// With creases or corners, core/plans/loop_crease_plan_builder.h builds them. `connectivity`: the
+/// topology's where the caller holds it; null: built here.
+SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness = {},
+                               const MeshConnectivity* connectivity = nullptr);
 
 /// build_loop_plans' checks of the topology; throws as it does.
 void check_loop_plans(const PolygonTopology& topology);

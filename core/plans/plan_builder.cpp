@@ -238,9 +238,10 @@ RangePlans build_quad_range(const LocalMesh& base, int first, int last, int max_
 }
 
 SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary,
-                          bool bspline_leaves, const Sharpness& sharpness) {
+                          bool bspline_leaves, const Sharpness& sharpness, const MeshConnectivity* connectivity) {
   check_quad_plans(topology, max_depth, extraordinary);
-  const LocalMesh base = base_local_mesh(topology, sharpness);
+  const LocalMesh base =
+      connectivity ? base_local_mesh(topology, *connectivity, sharpness) : base_local_mesh(topology, sharpness);
   // Faces in ranges of a fixed size, built on all cores (OpenMP), merged in order.
   const int n_faces = topology.n_faces(), n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);
   std::vector<RangePlans> parts(static_cast<size_t>(n_ranges));

@@ -41,10 +41,11 @@ enum class ExtraordinaryNodes {
 /// and corners refine their nodes until the sharpness has decayed, infinitely sharp ones are cut edges
 /// (core/patches/quad_nets.h, regular_corner) and part of the extraordinary tables' neighbourhoods. `bspline_leaves` =
 /// false makes every regular node a terminal Bézier node instead (tests: with n = 4 the Fig. 2.5
-/// rules are the B-spline's).
+/// rules are the B-spline's). `connectivity`: the topology's, where the caller holds it (a covariance
+/// mesh's); null: built here.
 SurfaceTables build_plans(const PolygonTopology& topology, int max_depth,
                           ExtraordinaryNodes extraordinary = ExtraordinaryNodes::exact, bool bspline_leaves = true,
-                          const Sharpness& sharpness = {});
+                          const Sharpness& sharpness = {}, const MeshConnectivity* connectivity = nullptr);
 
 /// The faces build_plans builds together (core/plans/range_plans.h; the tables do not depend on it).
 inline constexpr int kFacesPerRange = 1024;

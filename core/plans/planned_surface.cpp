@@ -40,20 +40,32 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
   return topology.n_faces() > 0 ? Scheme::loop : Scheme::catmull_clark;
 }
 
-SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options,
-                                  const Sharpness& sharpness) {
+namespace {
+
+SurfaceTables plans_of(const PolygonTopology& topology, const MeshConnectivity& connectivity,
+                       const PlanOptions& options, const Sharpness& sharpness) {
   const ExtraordinaryNodes extraordinary = options.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier;
   SurfaceTables tables = scheme_for(topology, options) == Scheme::loop
-                             ? build_loop_plans(topology, options.loop_beta, sharpness)
-                             : build_plans(topology, options.depth, extraordinary, true, sharpness);
-  add_patch_adjacency(tables.plans, topology, sharpness);
+                             ? build_loop_plans(topology, options.loop_beta, sharpness, &connectivity)
+                             : build_plans(topology, options.depth, extraordinary, true, sharpness, &connectivity);
+  add_patch_adjacency(tables.plans, topology, sharpness, &connectivity);
   return tables;
 }
 
+}  // namespace
+
+SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options,
+                                  const Sharpness& sharpness) {
+  return plans_of(topology, connectivity_of(topology), options, sharpness);
+}
+
+SurfaceTables build_surface_plans(const CovarianceMesh& mesh, const PlanOptions& options) {
+  return plans_of(mesh.topology(), mesh.connectivity(), options, mesh.sharpness);
+}
+
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {
-  const PolygonTopology& topology = mesh.topology();
-  scheme_ = scheme_for(topology, options);
-  tables_ = build_surface_plans(topology, options, mesh.sharpness);
+  scheme_ = scheme_for(mesh.topology(), options);
+  tables_ = build_surface_plans(mesh, options);
   dependents_ = stencil_dependents(tables_.stencils);
   points_ = base_points(mesh);
 }

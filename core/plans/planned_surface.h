@@ -42,6 +42,8 @@ Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options);
 /// with its creases and corners.
 SurfaceTables build_surface_plans(const PolygonTopology& topology, const PlanOptions& options,
                                   const Sharpness& sharpness = {});
+/// The same of a covariance mesh, reading the connectivity it holds.
+SurfaceTables build_surface_plans(const CovarianceMesh& mesh, const PlanOptions& options);
 
 class PlannedSurface {
 public:

@@ -111,12 +111,20 @@ std::vector<int> faces_reading(const PolygonTopology& t, const MeshConnectivity&
 
 SurfaceReplanner::SurfaceReplanner(const PolygonTopology& topology, const PlanOptions& options,
                                    const Sharpness& sharpness, int faces_per_range)
+    : SurfaceReplanner(base_local_mesh(topology, sharpness), options, sharpness, faces_per_range) {}
+
+SurfaceReplanner::SurfaceReplanner(const CovarianceMesh& mesh, const PlanOptions& options, int faces_per_range)
+    : SurfaceReplanner(base_local_mesh(mesh.topology(), mesh.connectivity(), mesh.sharpness), options, mesh.sharpness,
+                       faces_per_range) {}
+
+SurfaceReplanner::SurfaceReplanner(LocalMesh&& base, const PlanOptions& options, const Sharpness& sharpness,
+                                   int faces_per_range)
     : options_(options),
-      scheme_(scheme_for(topology, options)),
+      scheme_(scheme_for(base.topology, options)),
       faces_per_range_(std::max(1, faces_per_range)),
-      base_(base_local_mesh(topology, sharpness)),
+      base_(std::move(base)),
       sharpness_(sharpness) {
-  check(topology, scheme_);
+  check(base_.topology, scheme_);
   build_all(sharpness);
 }
 

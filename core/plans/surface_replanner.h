@@ -54,6 +54,8 @@ public:
   /// ranges of `faces_per_range` faces (which the tables do not depend on). Throws as it does.
   SurfaceReplanner(const PolygonTopology& topology, const PlanOptions& options, const Sharpness& sharpness,
                    int faces_per_range = kFacesPerRange);
+  /// The same for a mesh's faces and sharpness, reading the connectivity it holds.
+  SurfaceReplanner(const CovarianceMesh& mesh, const PlanOptions& options, int faces_per_range = kFacesPerRange);
 
   Scheme scheme() const { return scheme_; }
   const PlanOptions& options() const { return options_; }
@@ -84,6 +86,8 @@ public:
   ReplannedTables replanned() const { return {tables_, change_}; }
 
 private:
+  // The constructors' work, the base piece of the mesh built.
+  SurfaceReplanner(LocalMesh&& base, const PlanOptions& options, const Sharpness& sharpness, int faces_per_range);
   // The plan builders' checks of a topology under `scheme` (valences, depth); throws as they do.
   void check(const PolygonTopology& topology, Scheme scheme) const;
   // set_topology's work, the new mesh's base piece built.

@@ -67,7 +67,7 @@ public:
   /// The same with the tables core plans under `options` (Loop for triangles only, else
   /// Catmull-Clark); no CPU plan points are computed, the GPU computes its own.
   void set_mesh(const CovarianceMesh& mesh, const PlanOptions& options) {
-    set_mesh(mesh, build_surface_plans(mesh.topology(), options, mesh.sharpness), NormalisedFrame::of(mesh));
+    set_mesh(mesh, build_surface_plans(mesh, options), NormalisedFrame::of(mesh));
   }
   /// The same with the default options: the scheme that fits the mesh, exact plans.
   void set_mesh(const CovarianceMesh& mesh) { set_mesh(mesh, PlanOptions{}); }

@@ -69,7 +69,7 @@ void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, 
     if (shown_plans_ && shown_plans_->options() == plans)
       shown_plans_->set_topology(mesh, origin);
     else
-      shown_plans_.emplace(mesh.topology(), plans, mesh.sharpness);
+      shown_plans_.emplace(mesh, plans);
     renderer_->set_mesh(mesh, shown_plans_->tables(), renderer_->frame().following(mesh), shown_plans_->last_change(),
                         origin);
   }
