@@ -69,7 +69,6 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       const Modelled result = operation(mesh);
       op_s.push_back(seconds_since(start));
       const Clock::time_point planning = Clock::now();
-      const PolygonTopology& after = result.mesh.topology();
       planned = replanner.set_topology(result.mesh, result.vertex_origin);
       plan_s.push_back(seconds_since(planning));
       const Clock::time_point uploading = Clock::now();
@@ -91,7 +90,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       glFinish();
       still_s.push_back(seconds_since(still));
       const Clock::time_point full = Clock::now();
-      const SurfaceTables whole = build_surface_plans(after, options, result.mesh.sharpness);
+      const SurfaceTables whole = build_surface_plans(result.mesh, options);
       full_s.push_back(seconds_since(full));
       const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
       replanner.set_topology(mesh, back);

@@ -125,7 +125,6 @@ CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const
                    e.kind());
     return e;
   };
-  // Built in place: OpenMesh's meshes have no move, so an assignment would copy the whole mesh.
   CovarianceMesh mesh = [&]() -> CovarianceMesh {
     try {
       return mesh_of_soup(std::move(soup), escaped(path), names);

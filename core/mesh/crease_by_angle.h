@@ -8,7 +8,7 @@
 
 namespace gps {
 
-/// The dihedral angle of every edge of the mesh in degrees, in OpenMesh's edge order: the angle between
+/// The dihedral angle of every edge of the mesh in degrees, in the mesh's edge order: the angle between
 /// the normals (Newell's, of the means) of its two faces, 0 for a flat edge, 180 for one folded back
 /// on itself; −1 for a boundary edge or one beside a face without a normal (zero area).
 std::vector<double> dihedral_angles(const CovarianceMesh& mesh);

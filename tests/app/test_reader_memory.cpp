@@ -132,7 +132,7 @@ TEST(ReaderMemory, AmplificationInputsAreReadWithinEightTimesTheFileSize) {
     out << '\n';
   });
   // Disconnected triangles: three short vertex records and a face each. The mesh itself holds a
-  // covariance and OpenMesh's vertex, edge and face records per vertex, which files of much shorter
+  // covariance and the connectivity's vertex, edge and face records per vertex, which files of much shorter
   // vertex records than these would exceed 8 times over whatever the reader did.
   add("triangles.obj", 0, [](std::ostream& out) {
     const int n = 150000;
