@@ -31,7 +31,7 @@ size_t pair_triangles(CovarianceMesh& mesh, const TrianglePairing& limits) {
     if (mesh.is_boundary_edge(e)) continue;
     const int g0 = connectivity.edge_faces[2 * e], g1 = connectivity.edge_faces[2 * e + 1];
     if (mesh.face_size(size_t(g0)) != 3 || mesh.face_size(size_t(g1)) != 3) continue;
-    const auto [p1, p2] = mesh.edge(e);
+    const int p1 = mesh.edge(e)[0], p2 = mesh.edge(e)[1];
     if (mesh.sharpness.crease(p1, p2) > 0) continue;
     // Each triangle's vertex off the edge, and whether the triangle runs the edge p1 → p2 (f0) or back (f1).
     const auto off_edge = [&](int face) {

@@ -51,8 +51,10 @@ public:
     t.offsets.shrink_to_fit();
     t.verts.shrink_to_fit();
     CovarianceMesh m;
-    m.connectivity_ = c ? std::move(*c) : connectivity_of(t);
+    // The checks before the vertices' rows: their temporaries and the rows are not held at once.
+    m.connectivity_ = c ? std::move(*c) : edge_connectivity(t);
     check_manifold(t, m.connectivity_, source, names);
+    if (!c) add_vertex_rows(t, m.connectivity_);
 #ifdef __GLIBC__
     // connectivity_of's temporaries may lie below the top of the heap, which free() does not hand
     // back: their pages are returned before the covariances are made.

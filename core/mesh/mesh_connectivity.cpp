@@ -6,7 +6,7 @@
 
 namespace gps {
 
-MeshConnectivity connectivity_of(const PolygonTopology& t) {
+MeshConnectivity edge_connectivity(const PolygonTopology& t) {
   MeshConnectivity c;
   const size_t n_corners = t.verts.size();
   // The corners keyed by their edge's (min, max) vertex pair, sorted to pair them into edges: a radix
@@ -53,8 +53,11 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
       i += 1;
     }
   }
-  order = {};
-  corner_face = {};
+  return c;
+}
+
+void add_vertex_rows(const PolygonTopology& t, MeshConnectivity& c) {
+  const size_t n_corners = t.verts.size();
   // Compressed rows per vertex, each in the order its entries come (edges in edge order, faces in
   // face order): a count, a prefix sum, a fill.
   const auto prefix = [&](std::vector<int>& offsets) {
@@ -77,6 +80,11 @@ MeshConnectivity connectivity_of(const PolygonTopology& t) {
       c.vertex_faces[size_t(at)] = f;
       c.vertex_face_corners[size_t(at)] = k;
     }
+}
+
+MeshConnectivity connectivity_of(const PolygonTopology& t) {
+  MeshConnectivity c = edge_connectivity(t);
+  add_vertex_rows(t, c);
   return c;
 }
 
@@ -207,13 +215,16 @@ void check_manifold(const PolygonTopology& t, const MeshConnectivity& c, const s
     if (fan_start[size_t(to)] >= 0) throw non_manifold(to);
     fan_start[size_t(to)] = links.next(t, k);
   }
+  // Each vertex's faces (its corners) and one of its corners, without the vertices' rows.
+  std::vector<int> n_faces_at(size_t(t.n_vertices), 0), a_corner(size_t(t.n_vertices), -1);
+  for (int k = 0; k < int(t.verts.size()); ++k) {
+    const int v = t.verts[size_t(k)];
+    if (n_faces_at[size_t(v)]++ == 0) a_corner[size_t(v)] = k;
+  }
   for (int v = 0; v < t.n_vertices; ++v) {
-    const int n_faces = c.n_vertex_faces(v);
+    const int n_faces = n_faces_at[size_t(v)];
     if (n_faces == 0) continue;
-    const int row = c.vertex_face_offsets[size_t(v)];
-    const int first = fan_start[size_t(v)] >= 0
-                          ? fan_start[size_t(v)]
-                          : t.offsets[size_t(c.vertex_faces[size_t(row)])] + c.vertex_face_corners[size_t(row)];
+    const int first = fan_start[size_t(v)] >= 0 ? fan_start[size_t(v)] : a_corner[size_t(v)];
     int count = 1;
     for (int k = first; count <= n_faces; ++count) {  // across each corner's own edge to the next face at v
       k = links.twins[size_t(k)];

@@ -42,6 +42,10 @@ struct MeshConnectivity {
 
 /// Builds the adjacency; the topology must be manifold (as CovarianceMesh guarantees).
 MeshConnectivity connectivity_of(const PolygonTopology& topology);
+/// connectivity_of in two steps: the edges, their faces and each corner's edge (the vertices' rows
+/// empty), which check_manifold needs, then the rows.
+MeshConnectivity edge_connectivity(const PolygonTopology& topology);
+void add_vertex_rows(const PolygonTopology& topology, MeshConnectivity& c);
 /// Corners as half-edges, for walks across faces: corner k stands for the half-edge from its vertex
 /// to the next corner's; `twins[k]` is the corner of the other face that runs its edge the other way
 /// (−1 on a boundary). Built where walks need them (4 bytes a corner each), not kept with a mesh.
@@ -60,7 +64,7 @@ struct CornerLinks {
 CornerLinks corner_links(const PolygonTopology& topology, const MeshConnectivity& c);
 
 /// Throws gps::Error naming `source` and the first face or vertex where `t` (whose connectivity is
-/// `c`) is not a manifold surface: an edge with more than two faces, two faces running an edge the
+/// `c`, with or without the vertices' rows) is not a manifold surface: an edge with more than two faces, two faces running an edge the
 /// same way (one flipped), a vertex whose faces form more than one fan, or two faces sharing all
 /// their edges.
 void check_manifold(const PolygonTopology& t, const MeshConnectivity& c, const std::string& source,
