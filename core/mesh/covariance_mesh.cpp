@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/mesh/connectivity_update.h"
 #include "core/mesh/dual_map.h"
 #include "core/support/error.h"
 
@@ -33,10 +34,11 @@ class CovarianceMeshAssembly {
 public:
   // `return_pages`: hand the faces' temporary arrays back to the system before the covariances are
   // made, as a reader wants (its memory is that of the mesh it read); a modelling operation's result,
-  // whose covariances are given, skips it and reuses the pages. `c`: the connectivity of `t`, or null.
+  // whose covariances are given, skips it and reuses the pages. `c`: the connectivity of `t`, or null;
+  // `checked`: `t`'s faces and `c` are known to make a manifold (updated_connectivity vouched for them).
   static CovarianceMesh assemble(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
                                  MeshConnectivity* c, const std::string& source, const ElementNames& names,
-                                 bool return_pages) {
+                                 bool return_pages, bool checked = false) {
     if (means.size() != covariances.size() && !covariances.empty())
       throw Error(source + ": " + std::to_string(means.size()) + " vertices but " + std::to_string(covariances.size()) +
                   " covariances");
@@ -44,7 +46,7 @@ public:
     for (size_t i = 0; i < means.size(); ++i)
       if (!means[i].allFinite())
         throw Error(source + ": " + names.vertex(int(i)) + " has a position that is not finite");
-    check_faces(t, source, names);
+    if (!checked) check_faces(t, source, names);
     // A reader's arrays grew by doubling: the mesh keeps them at their size, copied before the
     // connectivity's larger temporaries exist.
     means.shrink_to_fit();
@@ -53,7 +55,7 @@ public:
     CovarianceMesh m;
     // The checks before the vertices' rows: their temporaries and the rows are not held at once.
     m.connectivity_ = c ? std::move(*c) : edge_connectivity(t);
-    check_manifold(t, m.connectivity_, source, names);
+    if (!checked) check_manifold(t, m.connectivity_, source, names);
     if (!c) add_vertex_rows(t, m.connectivity_);
 #ifdef __GLIBC__
     // connectivity_of's temporaries may lie below the top of the heap, which free() does not hand
@@ -113,6 +115,15 @@ CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>
                                     MeshConnectivity&& connectivity, const std::string& source) {
   return CovarianceMeshAssembly::assemble(std::move(means), std::move(covariances), std::move(t), &connectivity, source,
                                           {}, false);
+}
+
+CovarianceMesh make_covariance_mesh(const CovarianceMesh& before, std::vector<Vec3>&& means,
+                                    std::vector<Mat3>&& covariances, PolygonTopology&& faces,
+                                    const MeshOrigins& origins, const std::string& source) {
+  faces.n_vertices = int(means.size());
+  std::optional<MeshConnectivity> c = updated_connectivity(before.topology(), before.connectivity(), faces, origins);
+  return CovarianceMeshAssembly::assemble(std::move(means), std::move(covariances), std::move(faces),
+                                          c ? &*c : nullptr, source, {}, false, c.has_value());
 }
 
 namespace {

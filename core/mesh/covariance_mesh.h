@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh/connectivity_update.h"
 #include "core/mesh/element_names.h"
 #include "core/mesh/linalg.h"
 #include "core/mesh/mesh_connectivity.h"
@@ -72,6 +73,13 @@ CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>
 /// The same with the faces' connectivity already built (`connectivity` = connectivity_of(faces)).
 CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& faces,
                                     MeshConnectivity&& connectivity, const std::string& source = "mesh");
+/// A mesh made from `before` by a modelling operation, `origins` saying where its vertices and faces
+/// came from: its connectivity is carried over from before's where updated_connectivity can
+/// (core/mesh/connectivity_update.h), at the cost of what changed, else built and checked whole. The
+/// same mesh, or the same error, either way.
+CovarianceMesh make_covariance_mesh(const CovarianceMesh& before, std::vector<Vec3>&& means,
+                                    std::vector<Mat3>&& covariances, PolygonTopology&& faces,
+                                    const MeshOrigins& origins, const std::string& source = "mesh");
 
 /// Largest position coordinate magnitude accepted: squares and products of positions (and their
 /// products with inverse covariances) must stay far from double overflow.

@@ -93,7 +93,7 @@ std::vector<int> transform_vertices_in_place(CovarianceMesh& mesh, const std::ve
   if (mirror) {
     MeshArrays a = arrays_of(mesh);
     reverse_parts_within(a, moved);
-    mesh = build_mesh(a);
+    mesh = build_mesh(a, mesh);
   }
   summary = "transformed " + count_of(moved.size(), "vertex", "vertices") +
             (mirror ? " (mirrored: their faces reversed to stay outward)" : "") +

@@ -67,7 +67,7 @@ double superellipse_exponent(double profile) {
 
 class Bevel {
 public:
-  Bevel(const CovarianceMesh& mesh, const BevelOptions& options) : a_(arrays_of(mesh)), o_(options) {
+  Bevel(const CovarianceMesh& mesh, const BevelOptions& options) : mesh_(mesh), a_(arrays_of(mesh)), o_(options) {
     if (!(std::isfinite(o_.width) && o_.width > 0))
       throw Error("width " + short_number(o_.width) + " is not a positive number");
     if (o_.segments < 1 || o_.segments > kMaxBevelSegments)
@@ -613,7 +613,7 @@ private:
     for (int v = n_vertices_; v < n_before; ++v)
       if (new_index[size_t(v)] >= 0) out.selection.push_back(new_index[size_t(v)]);
     const size_t removed = size_t(n_vertices_ - (a_.n_vertices() - int(out.selection.size())));
-    out.mesh = build_mesh(a_);
+    out.mesh = build_mesh(a_, mesh_);
     out.vertex_origin = vertex_origin(a_);
     out.summary = summary + (o_.segments > 1 ? " (" + std::to_string(o_.segments) + " segments)" : "") + ": " +
                   count_of(out.selection.size(), "vertex", "vertices") + " in place of " + std::to_string(removed) +
@@ -623,6 +623,7 @@ private:
     return out;
   }
 
+  const CovarianceMesh& mesh_;  // the mesh the arrays were made from
   MeshArrays a_;
   const BevelOptions& o_;
   DirectedEdges edges_;

@@ -109,7 +109,7 @@ Modelled bisect(const CovarianceMesh& mesh, const Vec3& point, const Vec3& norma
   if (split_faces == 0) throw Error("the plane crosses no face of the mesh");
   std::sort(on_cut.begin(), on_cut.end());
   on_cut.erase(std::unique(on_cut.begin(), on_cut.end()), on_cut.end());
-  Modelled out = modelled(a, on_cut);
+  Modelled out = modelled(mesh, a, on_cut);
   out.summary = "bisected " + count_of(size_t(split_faces), "face", "faces") + ": " +
                 count_of(cut_vertex.size(), "vertex", "vertices") + ", " +
                 count_of(a.faces.size() - faces_before, "face", "faces") + " added";

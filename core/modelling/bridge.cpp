@@ -107,9 +107,9 @@ std::string vertex_list(const std::vector<int>& face, const std::vector<int>& in
   return out;
 }
 
-// Bridges two runs of `arrays`; `input_index` names its vertices in messages (their indices in the
+// Bridges two runs of `arrays` (made from `mesh`); `input_index` names its vertices in messages (their indices in the
 // mesh the caller was given).
-Modelled bridge_runs(MeshArrays a, const BoundaryRun& first, const BoundaryRun& second,
+Modelled bridge_runs(const CovarianceMesh& mesh, MeshArrays a, const BoundaryRun& first, const BoundaryRun& second,
                      const std::vector<int>& input_index, const std::string& done_before) {
   if (first.closed != second.closed) throw Error("cannot bridge a closed boundary loop to an open chain");
   if (first.vertices.size() < 2 || second.vertices.size() < 2)
@@ -173,7 +173,7 @@ Modelled bridge_runs(MeshArrays a, const BoundaryRun& first, const BoundaryRun& 
       n == m ? count_of(n, "vertex", "vertices")
              : std::to_string(first.vertices.size()) + " and " + count_of(second.vertices.size(), "vertex", "vertices");
   const size_t added = a.faces.size() - first_new;
-  return modelled(a, selection,
+  return modelled(mesh, a, selection,
                   done_before + "bridged two " + std::string(band.closed ? "loops" : "chains") + " of " + lengths +
                       ": " + count_of(added, "face", "faces") + " added" +
                       (n == m ? "" : " (" + count_of(n - m, "triangle", "triangles") + " spreading the difference)"));
@@ -195,7 +195,7 @@ Modelled bridge(const CovarianceMesh& mesh, const std::vector<int>& loop_a, cons
     if (std::binary_search(sb.begin(), sb.end(), v)) throw Error("vertex " + std::to_string(v) + " is in both loops");
   if (sa.size() < 2 || sb.size() < 2) throw Error("a chain to bridge needs at least 2 vertices");
   const BoundaryEdges b = boundary_edges(a, directed_edges(a));
-  return bridge_runs(a, one_run(b, sa), one_run(b, sb), identity_index(a.n_vertices()), "");
+  return bridge_runs(mesh, a, one_run(b, sa), one_run(b, sb), identity_index(a.n_vertices()), "");
 }
 
 Modelled bridge_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) {
@@ -247,10 +247,7 @@ Modelled bridge_faces(const CovarianceMesh& mesh, const std::vector<int>& faces)
   }
   std::vector<char> deleted(size_t(a.n_faces()), 0);
   for (int f : chosen) deleted[size_t(f)] = 1;
-  std::vector<std::vector<int>> kept;
-  for (int f = 0; f < a.n_faces(); ++f)
-    if (!deleted[size_t(f)]) kept.push_back(std::move(a.faces[size_t(f)]));
-  a.faces = std::move(kept);
+  remove_faces(a, deleted);
   const std::vector<int> new_index = drop_unused_vertices(a);
   std::vector<int> input_index(static_cast<size_t>(a.n_vertices()));
   for (size_t v = 0; v < new_index.size(); ++v)
@@ -267,7 +264,7 @@ Modelled bridge_faces(const CovarianceMesh& mesh, const std::vector<int>& faces)
                   " is not one loop: bridge needs one each");
     runs[r] = found[0];
   }
-  return bridge_runs(a, runs[0], runs[1], input_index, "deleted " + count_of(chosen.size(), "face", "faces") + ", ");
+  return bridge_runs(mesh, a, runs[0], runs[1], input_index, "deleted " + count_of(chosen.size(), "face", "faces") + ", ");
 }
 
 Modelled bridge_selected(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
@@ -286,7 +283,7 @@ Modelled bridge_selected(const CovarianceMesh& mesh, const std::vector<int>& ver
   if (runs.size() != 2)
     throw Error("the selection makes " + std::to_string(runs.size()) +
                 " boundary loops or chains; bridge needs exactly 2");
-  return bridge_runs(a, runs[0], runs[1], identity_index(a.n_vertices()), "");
+  return bridge_runs(mesh, a, runs[0], runs[1], identity_index(a.n_vertices()), "");
 }
 
 }  // namespace gps

@@ -25,19 +25,16 @@ std::string summary(const std::string& head, size_t faces_removed, size_t vertic
 
 /// The mesh without the faces marked in `removed` and the vertices left unused. Refuses an empty
 /// result and a vertex at which the remaining faces would form more than one fan.
-Modelled without_faces(MeshArrays a, const std::vector<char>& removed, const std::string& head, bool count_faces) {
+Modelled without_faces(const CovarianceMesh& mesh, MeshArrays a, const std::vector<char>& removed, const std::string& head, bool count_faces) {
   std::vector<char> touched(size_t(a.n_vertices()), 0);
-  std::vector<std::vector<int>> kept;
+  size_t faces_removed = 0;
   for (int f = 0; f < a.n_faces(); ++f) {
-    if (!removed[size_t(f)]) {
-      kept.push_back(std::move(a.faces[size_t(f)]));
-      continue;
-    }
+    if (!removed[size_t(f)]) continue;
+    ++faces_removed;
     for (int v : a.faces[size_t(f)]) touched[size_t(v)] = 1;
   }
-  if (kept.empty()) throw Error("the result would have no faces");
-  const size_t faces_removed = a.faces.size() - kept.size();
-  a.faces = std::move(kept);
+  if (faces_removed == a.faces.size()) throw Error("the result would have no faces");
+  remove_faces(a, removed);
 
   // Around a vertex that lost a face the remaining faces form open fans: one per corner there that
   // has no face across its outgoing edge. More than one fan makes the vertex non-manifold.
@@ -63,7 +60,7 @@ Modelled without_faces(MeshArrays a, const std::vector<char>& removed, const std
   const int n_vertices = a.n_vertices();
   drop_unused_vertices(a);
   Modelled out;
-  out.mesh = build_mesh(a);
+  out.mesh = build_mesh(a, mesh);
   out.vertex_origin = vertex_origin(a);
   out.summary = summary(head, faces_removed, size_t(n_vertices - a.n_vertices()), count_faces);
   return out;
@@ -143,10 +140,9 @@ public:
       if (twice != corners.end())
         throw Error("the merged face " + std::to_string(f) + " would have vertex " + std::to_string(*twice) + " twice");
     }
-    std::vector<std::vector<int>> kept;
-    for (int f = 0; f < a_.n_faces(); ++f)
-      if (alive_[size_t(f)]) kept.push_back(std::move(a_.faces[size_t(f)]));
-    a_.faces = std::move(kept);
+    std::vector<char> dead(alive_.size());
+    for (size_t f = 0; f < alive_.size(); ++f) dead[f] = !alive_[f];
+    remove_faces(a_, dead);
   }
 
 private:
@@ -179,12 +175,12 @@ private:
   std::unordered_map<uint64_t, int> face_of_;
 };
 
-Modelled merged(MeshArrays& a, FaceMerger& merger, const std::string& head) {
+Modelled merged(const CovarianceMesh& mesh, MeshArrays& a, FaceMerger& merger, const std::string& head) {
   const int n_faces = a.n_faces(), n_vertices = a.n_vertices();
   merger.finish();
   drop_unused_vertices(a);
   Modelled out;
-  out.mesh = build_mesh(a);
+  out.mesh = build_mesh(a, mesh);
   out.vertex_origin = vertex_origin(a);
   out.summary = summary(head, size_t(n_faces - a.n_faces()), size_t(n_vertices - a.n_vertices()), true);
   return out;
@@ -198,7 +194,7 @@ Modelled delete_faces(const CovarianceMesh& mesh, const std::vector<int>& faces)
   const std::vector<int> chosen = sorted_faces(a, faces);
   std::vector<char> removed(size_t(a.n_faces()), 0);
   for (int f : chosen) removed[size_t(f)] = 1;
-  return without_faces(a, removed, "deleted " + count_of(chosen.size(), "face", "faces"), false);
+  return without_faces(mesh, a, removed, "deleted " + count_of(chosen.size(), "face", "faces"), false);
 }
 
 Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
@@ -210,7 +206,7 @@ Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& ver
   std::vector<char> removed(size_t(a.n_faces()), 0);
   for (int f = 0; f < a.n_faces(); ++f)
     for (int v : a.faces[size_t(f)]) removed[size_t(f)] |= selected[size_t(v)];
-  return without_faces(a, removed, "deleted " + count_of(chosen.size(), "vertex", "vertices"), true);
+  return without_faces(mesh, a, removed, "deleted " + count_of(chosen.size(), "vertex", "vertices"), true);
 }
 
 Modelled delete_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
@@ -221,7 +217,7 @@ Modelled delete_edges(const CovarianceMesh& mesh, const std::vector<std::array<i
   for (const auto& [x, y] : chosen)
     for (const uint64_t key : {directed_key(x, y), directed_key(y, x)})
       if (const auto it = de.find(key); it != de.end()) removed[size_t(it->second.first)] = 1;
-  return without_faces(a, removed, "deleted " + count_of(chosen.size(), "edge", "edges"), true);
+  return without_faces(mesh, a, removed, "deleted " + count_of(chosen.size(), "edge", "edges"), true);
 }
 
 Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
@@ -258,7 +254,7 @@ Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& v
     for (int w : next[size_t(v)])
       if (merger.has(v, w)) merger.dissolve(v, w, what);
   }
-  return merged(a, merger, "dissolved " + count_of(chosen.size(), "vertex", "vertices"));
+  return merged(mesh, a, merger, "dissolved " + count_of(chosen.size(), "vertex", "vertices"));
 }
 
 Modelled dissolve_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
@@ -266,7 +262,7 @@ Modelled dissolve_edges(const CovarianceMesh& mesh, const std::vector<std::array
   const std::vector<std::array<int, 2>> chosen = checked_edges(directed_edges(a), edges, true);
   FaceMerger merger(a);
   for (const auto& [x, y] : chosen) merger.dissolve(x, y, edge_name(x, y));
-  return merged(a, merger, "dissolved " + count_of(chosen.size(), "edge", "edges"));
+  return merged(mesh, a, merger, "dissolved " + count_of(chosen.size(), "edge", "edges"));
 }
 
 }  // namespace gps

@@ -39,14 +39,14 @@ std::vector<int> move_region(MeshArrays& a, const FaceRegion& r, const Vec3& shi
   return selection;
 }
 
-Modelled extruded_faces(MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
+Modelled extruded_faces(const CovarianceMesh& mesh, MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
   if (r.has_closed_part) throw Error(kClosedPart);
   const int n_vertices = a.n_vertices(), n_faces = a.n_faces();
   const bool triangles = all_triangles(a);
   Modelled out;
   out.selection = move_region(a, r, shift);
   if (triangles) split_new_quads(a, n_faces);
-  out.mesh = build_mesh(a);
+  out.mesh = build_mesh(a, mesh);
   out.vertex_origin = vertex_origin(a);
   out.summary = "extruded " + count_of(r.faces.size(), "face", "faces") + ": " +
                 count_of(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
@@ -55,7 +55,7 @@ Modelled extruded_faces(MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
 }
 
 /// Extrudes boundary edges given as directed edges of their faces (unique).
-Modelled extruded_edges(MeshArrays& a, const std::vector<std::pair<int, int>>& directed, const Vec3& offset) {
+Modelled extruded_edges(const CovarianceMesh& mesh, MeshArrays& a, const std::vector<std::pair<int, int>>& directed, const Vec3& offset) {
   const int n_faces = a.n_faces();
   const bool triangles = all_triangles(a);
   std::set<int> ends;
@@ -67,7 +67,7 @@ Modelled extruded_edges(MeshArrays& a, const std::vector<std::pair<int, int>>& d
   if (triangles) split_new_quads(a, n_faces);
   Modelled out;
   for (const auto& [v, c] : copy) out.selection.push_back(c);
-  out.mesh = build_mesh(a);
+  out.mesh = build_mesh(a, mesh);
   out.vertex_origin = vertex_origin(a);
   out.summary = "extruded " + count_of(directed.size(), "edge", "edges") + ": " +
                 count_of(copy.size(), "vertex", "vertices") + ", " +
@@ -216,13 +216,13 @@ Modelled extrude_faces(const CovarianceMesh& mesh, const std::vector<int>& faces
       throw Error("the faces' normals cancel out, so there is no direction to extrude along");
     shift = distance * normal.normalized();
   }
-  return extruded_faces(a, r, shift);
+  return extruded_faces(mesh, a, r, shift);
 }
 
 Modelled extrude_faces_by(const CovarianceMesh& mesh, const std::vector<int>& faces, const Vec3& offset) {
   check_offset(offset);
   MeshArrays a = arrays_of(mesh);
-  return extruded_faces(a, face_region(a, faces), offset);
+  return extruded_faces(mesh, a, face_region(a, faces), offset);
 }
 
 Modelled extrude_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, const Vec3& offset) {
@@ -241,7 +241,7 @@ Modelled extrude_edges(const CovarianceMesh& mesh, const std::vector<std::array<
     else
       directed.emplace_back(y, x);
   }
-  return extruded_edges(a, directed, offset);
+  return extruded_edges(mesh, a, directed, offset);
 }
 
 Modelled extrude_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, const Vec3& offset) {
@@ -254,7 +254,7 @@ Modelled extrude_vertices(const CovarianceMesh& mesh, const std::vector<int>& ve
     const auto& face = a.faces[size_t(f)];
     if (std::all_of(face.begin(), face.end(), [&](int v) { return selected[size_t(v)]; })) region.push_back(f);
   }
-  if (!region.empty()) return extruded_faces(a, face_region(a, region), offset);
+  if (!region.empty()) return extruded_faces(mesh, a, face_region(a, region), offset);
 
   const DirectedEdges de = directed_edges(a);
   std::vector<std::pair<int, int>> directed;
@@ -264,7 +264,7 @@ Modelled extrude_vertices(const CovarianceMesh& mesh, const std::vector<int>& ve
       if (selected[size_t(x)] && selected[size_t(y)] && !de.count(directed_key(y, x))) directed.emplace_back(x, y);
     }
   if (directed.empty()) throw Error("select faces or boundary edges to extrude");
-  return extruded_edges(a, directed, offset);
+  return extruded_edges(mesh, a, directed, offset);
 }
 
 }  // namespace gps

@@ -74,7 +74,7 @@ Modelled fill(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
   if (reversed) std::reverse(face.begin(), face.end());
   a.faces.push_back(face);
   return modelled(
-      a, sorted,
+      mesh, a, sorted,
       "filled a face of " + std::to_string(n) + " vertices" + (reversed ? " (reversed to fit its neighbours)" : ""));
 }
 

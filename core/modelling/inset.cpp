@@ -92,7 +92,7 @@ Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, 
       throw Error("a thickness of " + short_number(thickness) + " would turn face " + std::to_string(f) +
                   " inside out");
   }
-  out.mesh = build_mesh(a);
+  out.mesh = build_mesh(a, mesh);
   out.vertex_origin = vertex_origin(a);
   out.summary = "inset " + count_of(r.faces.size(), "face", "faces") + ": " +
                 count_of(out.selection.size(), "vertex", "vertices") + ", " +

@@ -44,6 +44,7 @@ MergeResult merge_into(const MeshArrays& in, const std::vector<int>& target,
   }
   std::vector<std::vector<int>> faces;
   faces.reserve(a.faces.size());
+  a.face_origin.clear();
   std::vector<int> last_seen(a.means.size(), -1);
   for (int f = 0; f < in.n_faces(); ++f) {
     std::vector<int> face;
@@ -61,6 +62,7 @@ MergeResult merge_into(const MeshArrays& in, const std::vector<int>& target,
         throw Error("face " + std::to_string(f) + " would use vertex " + std::to_string(v) + " twice");
       last_seen[size_t(v)] = f;
     }
+    a.face_origin.push_back(size_t(f) < in.face_origin.size() ? in.face_origin[size_t(f)] : -1);
     faces.push_back(std::move(face));
   }
   a.faces = std::move(faces);
@@ -131,7 +133,7 @@ Modelled merge_vertices(const CovarianceMesh& mesh, const std::vector<int>& vert
   std::iota(target.begin(), target.end(), 0);
   for (int v : group) target[size_t(v)] = group.front();
   const MergeResult r = merge_into(a, target, {{group.front(), g}});
-  Modelled out = modelled(r.arrays, {r.new_index[size_t(group.front())]});
+  Modelled out = modelled(mesh, r.arrays, {r.new_index[size_t(group.front())]});
   out.summary = "merged " + std::to_string(group.size()) + " vertices into vertex " +
                 std::to_string(out.selection.front()) + faces_removed_text(r.faces_removed);
   return out;
@@ -187,7 +189,7 @@ Modelled weld_by_distance(const CovarianceMesh& mesh, const std::vector<int>& ve
     removed += int(members.size()) - 1;
   }
   const MergeResult r = merge_into(a, target, gaussians);
-  Modelled out = modelled(r.arrays, {});
+  Modelled out = modelled(mesh, r.arrays, {});
   for (const auto& [root, members] : clusters) out.selection.push_back(r.new_index[size_t(root)]);
   std::sort(out.selection.begin(), out.selection.end());
   out.summary = "welded " + std::to_string(clusters.size()) + (clusters.size() == 1 ? " cluster" : " clusters") + ": " +

@@ -10,17 +10,31 @@ namespace gps {
 
 namespace {
 
-// The sharpness of the arrays on their faces: creases on edges, corners on vertices.
-Sharpness sharpness_on_edges(const MeshArrays& a) {
+// The sharpness of the arrays on the faces of `mesh` (made from them): creases on edges, corners on vertices.
+Sharpness sharpness_on_edges(const MeshArrays& a, const CovarianceMesh& mesh) {
   if (a.sharpness.empty()) return {};
-  const DirectedEdges edges = directed_edges(a);
   Sharpness out;
   for (const EdgeCrease& c : a.sharpness.creases)
-    if (c.a >= 0 && c.b < a.n_vertices() && has_edge(edges, c.a, c.b)) out.creases.push_back(c);
+    if (c.a >= 0 && c.b < a.n_vertices() && mesh.find_edge(c.a, c.b) >= 0) out.creases.push_back(c);
   out.corners = a.sharpness.corners;
   if (!out.corners.empty()) out.corners.resize(size_t(a.n_vertices()), 0.0);
   out.normalise();
   return out;
+}
+
+// The faces as a compressed topology.
+PolygonTopology topology_of(const MeshArrays& a) {
+  PolygonTopology t;
+  t.n_vertices = a.n_vertices();
+  size_t n_corners = 0;
+  for (const auto& face : a.faces) n_corners += face.size();
+  t.offsets.reserve(a.faces.size() + 1);
+  t.verts.reserve(n_corners);
+  for (const auto& face : a.faces) {
+    t.verts.insert(t.verts.end(), face.begin(), face.end());
+    t.offsets.push_back(int(t.verts.size()));
+  }
+  return t;
 }
 
 }  // namespace
@@ -35,11 +49,17 @@ int MeshArrays::add_vertex(const Gaussian& g) {
 
 MeshArrays arrays_of(const CovarianceMesh& m) {
   MeshArrays a;
-  a.means = m.means();
-  a.covariances = m.covariances;
+  // Room for the vertices an operation adds, so that adding one does not copy every Gaussian.
+  const size_t room = m.n_vertices() + m.n_vertices() / 16 + 64;
+  a.means.reserve(room);
+  a.means.assign(m.means().begin(), m.means().end());
+  a.covariances.reserve(room);
+  a.covariances.assign(m.covariances.begin(), m.covariances.end());
   a.sharpness = m.sharpness;
   a.origin.resize(m.n_vertices());
   std::iota(a.origin.begin(), a.origin.end(), 0);
+  a.face_origin.resize(m.n_faces());
+  std::iota(a.face_origin.begin(), a.face_origin.end(), 0);
   const PolygonTopology& t = m.topology();
   a.faces.resize(size_t(t.n_faces()));
   for (int f = 0; f < t.n_faces(); ++f)
@@ -52,7 +72,30 @@ CovarianceMesh build_mesh(const MeshArrays& a) {
   try {
     CovarianceMesh m = make_covariance_mesh(a.means, a.covariances, a.faces, "the result would not be a valid mesh");
     validate_gaussians(m, "the result would not be a valid mesh");
-    m.sharpness = sharpness_on_edges(a);
+    m.sharpness = sharpness_on_edges(a, m);
+    return m;
+  } catch (const Error& e) {
+    throw Error(e.what());
+  }
+}
+
+CovarianceMesh build_mesh(const MeshArrays& a, const CovarianceMesh& before) {
+  if (a.faces.empty()) throw Error("the result would have no faces");
+  const std::vector<int> origin = vertex_origin(a);
+  if (origin.empty()) return build_mesh(a);
+  const char* const source = "the result would not be a valid mesh";
+  try {
+    CovarianceMesh m = make_covariance_mesh(before, std::vector<Vec3>(a.means), std::vector<Mat3>(a.covariances),
+                                            topology_of(a), {origin, a.face_origin}, source);
+    // The Gaussians that are new or changed; the others were checked when `before` was made.
+    for (size_t v = 0; v < m.n_vertices(); ++v) {
+      const int o = origin[v];
+      const bool same = o >= 0 && size_t(o) < before.n_vertices() && a.means[v] == before.mean(size_t(o)) &&
+                        a.covariances[v] == before.covariance(size_t(o));
+      if (!same && !(position_problem(a.means[v]).empty() && covariance_problem(a.covariances[v]).empty()))
+        validate_gaussians(m, source);  // names the first vertex with a problem, as build_mesh does
+    }
+    m.sharpness = sharpness_on_edges(a, m);
     return m;
   } catch (const Error& e) {
     throw Error(e.what());
@@ -73,6 +116,22 @@ std::vector<int> inverse_origin(const std::vector<int>& origin, size_t n_before)
 
 Modelled modelled(const MeshArrays& a, std::vector<int> selection, std::string summary) {
   return {build_mesh(a), std::move(selection), std::move(summary), vertex_origin(a)};
+}
+
+Modelled modelled(const CovarianceMesh& before, const MeshArrays& a, std::vector<int> selection, std::string summary) {
+  return {build_mesh(a, before), std::move(selection), std::move(summary), vertex_origin(a)};
+}
+
+void remove_faces(MeshArrays& a, const std::vector<char>& removed) {
+  size_t next = 0;
+  for (size_t f = 0; f < a.faces.size(); ++f) {
+    if (removed[f]) continue;
+    if (next < a.face_origin.size()) a.face_origin[next] = f < a.face_origin.size() ? a.face_origin[f] : -1;
+    if (next != f) a.faces[next] = std::move(a.faces[f]);  // a vector moved onto itself would empty
+    ++next;
+  }
+  a.face_origin.resize(std::min(a.face_origin.size(), next));
+  a.faces.resize(next);
 }
 
 std::vector<int> drop_unused_vertices(MeshArrays& a) {

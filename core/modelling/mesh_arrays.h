@@ -22,6 +22,10 @@ struct MeshArrays {
   /// (add_vertex); kept by drop_unused_vertices. Shorter than `means` where a vertex was added
   /// otherwise: then unknown, and the plans are built again whole (core/plans/surface_replanner.h).
   std::vector<int> origin;
+  /// Per face: its index in the mesh the arrays were made from (arrays_of); faces past its end are new.
+  /// Kept by the operations that remove faces, so that build_mesh can carry over the connectivity of
+  /// the faces that did not change (a face counts as unchanged only where its corners are the same).
+  std::vector<int> face_origin;
 
   int n_vertices() const { return int(means.size()); }
   int n_faces() const { return int(faces.size()); }
@@ -44,6 +48,9 @@ struct Modelled {
 /// The outcome of an operation from its arrays: build_mesh's mesh, with the vertices' origins where
 /// the arrays kept them.
 Modelled modelled(const MeshArrays& arrays, std::vector<int> selection, std::string summary = "");
+/// The same for arrays made from `before` (arrays_of(before), then changed), at the cost of what changed.
+Modelled modelled(const CovarianceMesh& before, const MeshArrays& arrays, std::vector<int> selection,
+                  std::string summary = "");
 /// The arrays' origins where they are known (one per vertex), else empty.
 std::vector<int> vertex_origin(const MeshArrays& arrays);
 /// The way back: for each of the `n_before` vertices of the mesh before an operation, its index after
@@ -57,6 +64,13 @@ MeshArrays arrays_of(const CovarianceMesh& mesh);
 /// the faces and the corners of its vertices. Throws gps::Error ("the result would ...: <why>") when
 /// they do not make a manifold mesh of valid Gaussians.
 CovarianceMesh build_mesh(const MeshArrays& arrays);
+/// build_mesh for arrays made from `before` (arrays_of(before), then changed): the connectivity of the
+/// faces that did not change is carried over and only new or changed Gaussians are checked
+/// (make_covariance_mesh's form for a changed mesh). The same mesh, or the same error, as build_mesh.
+CovarianceMesh build_mesh(const MeshArrays& arrays, const CovarianceMesh& before);
+
+/// Drops the faces marked in `removed` (a flag per face), keeping the others in order with their origins.
+void remove_faces(MeshArrays& arrays, const std::vector<char>& removed);
 
 /// Removes the vertices no face uses, keeping the others in order (their creases and corners too);
 /// returns old index → new (−1 removed).

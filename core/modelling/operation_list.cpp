@@ -562,7 +562,7 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
         std::vector<int> selection = step.append(*arrays, summary);
         if (summaries) summaries->push_back(summary);
         if (i + 1 < steps_.size() && steps_[i + 1].append) continue;
-        current.reset(new Modelled(modelled(*arrays, std::move(selection), std::move(summary))));
+        current.reset(new Modelled(modelled(mesh_now(), *arrays, std::move(selection), std::move(summary))));
         arrays.reset();
         continue;
       }

@@ -109,7 +109,7 @@ Modelled add_primitive(const CovarianceMesh& mesh, Primitive primitive, const Ve
   MeshArrays a = arrays_of(mesh);
   std::string summary;
   std::vector<int> selection = append_primitive(a, primitive, center, size, summary);
-  return modelled(a, std::move(selection), std::move(summary));
+  return modelled(mesh, a, std::move(selection), std::move(summary));
 }
 
 PrimitivePlacement primitive_placement(const CovarianceMesh& mesh, const std::vector<int>& selected) {

@@ -126,7 +126,7 @@ Modelled subdivide_faces(const CovarianceMesh& mesh, const std::vector<int>& fac
   std::sort(selection.begin(), selection.end());
   selection.erase(std::unique(selection.begin(), selection.end()), selection.end());
 
-  Modelled out = modelled(a, selection);
+  Modelled out = modelled(mesh, a, selection);
   out.summary = "subdivided " + counted(chosen.size(), "face", "faces") + ": " +
                 counted(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
                 counted(appended.size(), "face", "faces") + " added";

@@ -28,7 +28,7 @@ Modelled inset_with_depth(const CovarianceMesh& mesh, const std::vector<int>& fa
   if (!(normal.norm() > 0)) throw Error("inset depth refused: the faces have no normal");
   normal.normalize();
   for (const int v : inset.selection) arrays.means[size_t(v)] += depth * normal;
-  inset.mesh = build_mesh(arrays);
+  inset.mesh = build_mesh(arrays, inset.mesh);
   return inset;
 }
 

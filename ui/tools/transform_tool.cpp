@@ -251,7 +251,7 @@ void TransformTool::end(bool keep, ToolContext& ctx) {
         MeshArrays a = arrays_of(mesh);
         for (const auto& [v, g] : moved) a.means[size_t(v)] = g.mean, a.covariances[size_t(v)] = g.covariance;
         reverse_parts_within(a, mirrored_vertices);
-        return modelled(a, selected, "mirrored: the faces it moved whole reversed to stay outward");
+        return modelled(mesh, a, selected, "mirrored: the faces it moved whole reversed to stay outward");
       },
       nullptr);
 }

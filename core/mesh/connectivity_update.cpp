@@ -1,0 +1,269 @@
+#include "core/mesh/connectivity_update.h"
+
+#include <algorithm>
+#include <array>
+
+namespace gps {
+
+namespace {
+
+// A corner of a new face, standing for the edge from its vertex to the next corner's: the edge's ends
+// (new numbering, the lower first), its face, the corner's index in the topology's verts, and whether
+// the face runs the edge from its lower end.
+struct NewCorner {
+  int low, high, face, corner;
+  bool up;
+};
+
+bool before_key(const NewCorner& x, int low, int high) { return x.low < low || (x.low == low && x.high < high); }
+
+// The update's state: the old mesh, the new one, and what corresponds.
+class Update {
+public:
+  Update(const PolygonTopology& t0, const MeshConnectivity& c0, const PolygonTopology& t, const MeshOrigins& o)
+      : t0_(t0), c0_(c0), t_(t), o_(o) {}
+
+  std::optional<MeshConnectivity> run() {
+    if (o_.vertices.size() != size_t(t_.n_vertices) || o_.faces.empty()) return std::nullopt;
+    if (!map_vertices() || !match_faces() || !collect_new_corners() || !merge_edges()) return std::nullopt;
+    carry_kept_corners();
+    if (makes_pillow()) return std::nullopt;
+    add_vertex_rows(t_, c_);
+    if (!fans_hold()) return std::nullopt;
+    return std::move(c_);
+  }
+
+private:
+  int next_corner(const PolygonTopology& t, int f, int k) const {
+    return k + 1 == t.offsets[size_t(f) + 1] ? t.offsets[size_t(f)] : k + 1;
+  }
+  int previous_corner(const PolygonTopology& t, int f, int k) const {
+    return k == t.offsets[size_t(f)] ? t.offsets[size_t(f) + 1] - 1 : k - 1;
+  }
+
+  // Old vertex → new. The old vertices must keep their order: then edges ordered by their ends stay so.
+  bool map_vertices() {
+    vertex_new_.assign(size_t(t0_.n_vertices), -1);
+    int last = -1;
+    for (int v = 0; v < t_.n_vertices; ++v) {
+      const int w = o_.vertices[size_t(v)];
+      if (w < 0) continue;
+      if (w >= t0_.n_vertices || w <= last) return false;
+      vertex_new_[size_t(w)] = v;
+      last = w;
+    }
+    return true;
+  }
+
+  // The faces that continue an old one: the origin names it and the corners are its corners renumbered.
+  bool match_faces() {
+    face_new_.assign(size_t(t0_.n_faces()), -1);
+    face_old_.assign(size_t(t_.n_faces()), -1);
+    int kept = 0;
+    for (int f = 0; f < t_.n_faces() && size_t(f) < o_.faces.size(); ++f) {
+      const int g = o_.faces[size_t(f)];
+      if (g < 0 || g >= t0_.n_faces() || face_new_[size_t(g)] >= 0 || t0_.face_size(g) != t_.face_size(f)) continue;
+      const int* corners = t_.verts.data() + t_.offsets[size_t(f)];
+      const int* old_corners = t0_.verts.data() + t0_.offsets[size_t(g)];
+      bool same = true;
+      for (int k = 0; k < t_.face_size(f) && same; ++k) {
+        const int v = corners[k];
+        same = v >= 0 && v < t_.n_vertices && o_.vertices[size_t(v)] == old_corners[k];
+      }
+      if (!same) continue;
+      face_new_[size_t(g)] = f;
+      face_old_[size_t(f)] = g;
+      ++kept;
+    }
+    return 2 * kept >= t_.n_faces();  // mostly new: building the whole costs less
+  }
+
+  // The new faces' corners, each face checked as make_covariance_mesh checks it (three corners or
+  // more, each a vertex of the mesh, none twice), sorted by edge and then face.
+  bool collect_new_corners() {
+    std::vector<int> last_face(size_t(t_.n_vertices), -1);
+    for (int f = 0; f < t_.n_faces(); ++f) {
+      if (face_old_[size_t(f)] >= 0) continue;
+      if (t_.face_size(f) < 3) return false;
+      for (int k = t_.offsets[size_t(f)]; k < t_.offsets[size_t(f) + 1]; ++k) {
+        const int v = t_.verts[size_t(k)];
+        if (v < 0 || v >= t_.n_vertices || last_face[size_t(v)] == f) return false;
+        last_face[size_t(v)] = f;
+      }
+      for (int k = t_.offsets[size_t(f)]; k < t_.offsets[size_t(f) + 1]; ++k) {
+        const int a = t_.verts[size_t(k)], b = t_.verts[size_t(next_corner(t_, f, k))];
+        new_corners_.push_back({std::min(a, b), std::max(a, b), f, k, a < b});
+      }
+      touch_face(t_, f, [](int v) { return v; });
+    }
+    for (int g = 0; g < t0_.n_faces(); ++g)
+      if (face_new_[size_t(g)] < 0) touch_face(t0_, g, [&](int v) { return vertex_new_[size_t(v)]; });
+    std::sort(new_corners_.begin(), new_corners_.end(), [](const NewCorner& x, const NewCorner& y) {
+      return std::array<int, 3>{x.low, x.high, x.face} < std::array<int, 3>{y.low, y.high, y.face};
+    });
+    return true;
+  }
+
+  // Marks the (new) vertices of face f of `t` as ones whose fan the change reaches.
+  template <class ToNew>
+  void touch_face(const PolygonTopology& t, int f, const ToNew& to_new) {
+    if (touched_.empty()) touched_.assign(size_t(t_.n_vertices), 0);
+    for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
+      const int v = to_new(t.verts[size_t(k)]);
+      if (v >= 0 && !touched_[size_t(v)]) {
+        touched_[size_t(v)] = 1;
+        touched_list_.push_back(v);
+      }
+    }
+  }
+
+  // Whether the kept face f (old face g) runs old edge e from its lower end.
+  bool kept_runs_up(int g, int e) const {
+    for (int k = t0_.offsets[size_t(g)]; k < t0_.offsets[size_t(g) + 1]; ++k)
+      if (c0_.face_edges[size_t(k)] == e) return t0_.verts[size_t(k)] < t0_.verts[size_t(next_corner(t0_, g, k))];
+    return false;
+  }
+
+  // The edges in connectivity_of's order: the old edges that a kept face still has (in their order,
+  // which the vertices' order keeps) merged with the new faces' edges (sorted).
+  bool merge_edges() {
+    c_.face_edges.assign(t_.verts.size(), -1);
+    edge_new_.assign(size_t(c0_.n_edges()), -1);
+    c_.edge_verts.reserve(2 * (size_t(c0_.n_edges()) + new_corners_.size()));
+    c_.edge_faces.reserve(2 * (size_t(c0_.n_edges()) + new_corners_.size()));
+    size_t j = 0;
+    for (int e = 0; e <= c0_.n_edges(); ++e) {
+      int low = 0, high = 0, n_kept = 0;
+      std::array<int, 2> kept{-1, -1};
+      if (e < c0_.n_edges()) {
+        for (int s = 0; s < 2; ++s) {
+          const int g = c0_.edge_faces[2 * size_t(e) + size_t(s)];
+          if (g >= 0 && face_new_[size_t(g)] >= 0) kept[size_t(n_kept++)] = face_new_[size_t(g)];
+        }
+        if (n_kept == 0) continue;
+        low = vertex_new_[size_t(c0_.edge_verts[2 * size_t(e)])];
+        high = vertex_new_[size_t(c0_.edge_verts[2 * size_t(e) + 1])];
+      }
+      while (j < new_corners_.size() && (e == c0_.n_edges() || before_key(new_corners_[j], low, high)))
+        if (!add_edge(-1, {-1, -1}, 0, j)) return false;
+      if (e == c0_.n_edges()) break;
+      edge_new_[size_t(e)] = c_.n_edges();
+      if (!add_edge(e, kept, n_kept, j)) return false;
+    }
+    return true;
+  }
+
+  // Adds one edge: old edge `e` (−1 for none) with its kept faces, and the new corners from `j` on
+  // that run along the same edge (advancing j past them). False where it would not be manifold.
+  bool add_edge(int e, std::array<int, 2> kept, int n_kept, size_t& j) {
+    const int low = e >= 0 ? vertex_new_[size_t(c0_.edge_verts[2 * size_t(e)])] : new_corners_[j].low;
+    const int high = e >= 0 ? vertex_new_[size_t(c0_.edge_verts[2 * size_t(e) + 1])] : new_corners_[j].high;
+    std::array<int, 2> faces = kept;
+    std::array<bool, 2> up{false, false};
+    int n = n_kept;
+    const int edge = c_.n_edges();
+    for (; j < new_corners_.size() && new_corners_[j].low == low && new_corners_[j].high == high; ++j) {
+      if (n == 2) return false;  // a third face on the edge
+      faces[size_t(n)] = new_corners_[j].face;
+      up[size_t(n++)] = new_corners_[j].up;
+      c_.face_edges[size_t(new_corners_[j].corner)] = edge;
+    }
+    // Two faces run an edge in opposite directions (a flipped face otherwise); old pairs were checked.
+    if (n == 2 && n_kept < 2) {
+      if (n_kept == 1) up[0] = kept_runs_up(face_old_[size_t(kept[0])], e);
+      if (up[0] == up[1]) return false;
+    }
+    if (n == 2 && faces[0] > faces[1]) std::swap(faces[0], faces[1]);
+    c_.edge_verts.push_back(low);
+    c_.edge_verts.push_back(high);
+    c_.edge_faces.push_back(faces[0]);
+    c_.edge_faces.push_back(faces[1]);
+    return true;
+  }
+
+  // The kept faces' corners keep their old edges, renumbered.
+  void carry_kept_corners() {
+    for (int f = 0; f < t_.n_faces(); ++f) {
+      const int g = face_old_[size_t(f)];
+      if (g < 0) continue;
+      for (int k = 0; k < t_.face_size(f); ++k)
+        c_.face_edges[size_t(t_.offsets[size_t(f)] + k)] =
+            edge_new_[size_t(c0_.face_edges[size_t(t0_.offsets[size_t(g)] + k)])];
+    }
+  }
+
+  // Whether a new face shares all its edges with one other face of its size (check_manifold's pillow).
+  bool makes_pillow() const {
+    for (int f = 0; f < t_.n_faces(); ++f) {
+      if (face_old_[size_t(f)] >= 0) continue;
+      const auto other_face = [&](int k) {
+        const int e = c_.face_edges[size_t(k)];
+        const int a = c_.edge_faces[2 * size_t(e)], b = c_.edge_faces[2 * size_t(e) + 1];
+        return a == f ? b : a;
+      };
+      const int begin = t_.offsets[size_t(f)], end = t_.offsets[size_t(f) + 1];
+      const int g = other_face(begin);
+      if (g < 0 || t_.face_size(g) != end - begin) continue;
+      bool shares_all = true;
+      for (int k = begin + 1; k < end && shares_all; ++k) shares_all = other_face(k) == g;
+      if (shares_all) return true;
+    }
+    return false;
+  }
+
+  // The faces at each vertex the change reaches form one fan, as check_manifold walks it: at most one
+  // boundary edge comes into the vertex along its face, and circling from there across the corners'
+  // own edges meets every face at it.
+  bool fans_hold() const {
+    for (const int v : touched_list_) {
+      const int begin = c_.vertex_face_offsets[size_t(v)], end = c_.vertex_face_offsets[size_t(v) + 1];
+      const int n_faces = end - begin;
+      if (n_faces == 0) continue;
+      const auto corner_at = [&](int i) {
+        return t_.offsets[size_t(c_.vertex_faces[size_t(i)])] + c_.vertex_face_corners[size_t(i)];
+      };
+      int start = corner_at(begin), start_face = c_.vertex_faces[size_t(begin)], boundary_in = 0;
+      for (int i = begin; i < end; ++i) {
+        const int f = c_.vertex_faces[size_t(i)], k = corner_at(i);
+        if (!c_.is_boundary_edge(c_.face_edges[size_t(previous_corner(t_, f, k))])) continue;
+        if (++boundary_in > 1) return false;
+        start = k;
+        start_face = f;
+      }
+      int count = 1;
+      for (int k = start, f = start_face; count <= n_faces; ++count) {
+        const int e = c_.face_edges[size_t(k)];
+        const int a = c_.edge_faces[2 * size_t(e)], b = c_.edge_faces[2 * size_t(e) + 1];
+        const int g = a == f ? b : a;
+        if (g < 0) break;
+        int at = -1;
+        for (int i = t_.offsets[size_t(g)]; i < t_.offsets[size_t(g) + 1] && at < 0; ++i)
+          if (t_.verts[size_t(i)] == v) at = i;
+        if (at < 0 || at == start) break;
+        k = at;
+        f = g;
+      }
+      if (count != n_faces) return false;
+    }
+    return true;
+  }
+
+  const PolygonTopology& t0_;
+  const MeshConnectivity& c0_;
+  const PolygonTopology& t_;
+  const MeshOrigins& o_;
+  MeshConnectivity c_;
+  std::vector<int> vertex_new_, face_new_, face_old_, edge_new_;
+  std::vector<NewCorner> new_corners_;
+  std::vector<char> touched_;
+  std::vector<int> touched_list_;
+};
+
+}  // namespace
+
+std::optional<MeshConnectivity> updated_connectivity(const PolygonTopology& before, const MeshConnectivity& c,
+                                                     const PolygonTopology& after, const MeshOrigins& origins) {
+  return Update(before, c, after, origins).run();
+}
+
+}  // namespace gps

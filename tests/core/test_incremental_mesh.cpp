@@ -1,0 +1,327 @@
+// A changed mesh's connectivity carried over from the mesh it was made from (updated_connectivity)
+// against one built from scratch: equal array for array wherever the update vouches for it, and never
+// vouching for what a whole build refuses; and the modelling operations, whose results are made that
+// way, against whole builds of the same faces.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <cstdio>
+#include <random>
+
+#include "core/mesh/connectivity_update.h"
+#include "core/mesh/covariance_mesh.h"
+#include "core/modelling/delete_elements.h"
+#include "core/modelling/extrude.h"
+#include "core/modelling/inset.h"
+#include "core/modelling/loop_cut.h"
+#include "core/modelling/merge_vertices.h"
+#include "core/modelling/mesh_arrays.h"
+#include "core/modelling/samples.h"
+#include "core/modelling/subdivide_mesh.h"
+#include "core/support/error.h"
+#include "tests/support/connectivity_equal.h"
+
+namespace gps {
+namespace {
+
+using Faces = std::vector<std::vector<int>>;
+
+// A changed topology and where its elements came from.
+struct Changed {
+  Faces faces;
+  MeshOrigins origins;
+  int n_vertices = 0;
+};
+
+PolygonTopology topology_of(const Faces& faces, int n_vertices) {
+  PolygonTopology t;
+  t.n_vertices = n_vertices;
+  for (const auto& face : faces) {
+    t.verts.insert(t.verts.end(), face.begin(), face.end());
+    t.offsets.push_back(int(t.verts.size()));
+  }
+  return t;
+}
+
+Faces faces_of(const CovarianceMesh& m) {
+  Faces out;
+  for (size_t f = 0; f < m.n_faces(); ++f) out.emplace_back(m.face(f).begin(), m.face(f).end());
+  return out;
+}
+
+// One random edit of the kinds operations make, good and bad: a face deleted, reversed, split, a new
+// vertex's triangle on an edge (on a boundary edge good, elsewhere a third face), a face of random
+// vertices, two vertices made one, a face's reverse added (a pillow), the unused vertices dropped.
+void random_edit(Changed& c, std::mt19937& rng) {
+  const auto pick = [&](size_t n) { return size_t(std::uniform_int_distribution<size_t>(0, n - 1)(rng)); };
+  if (c.faces.size() < 2) return;
+  const size_t f = pick(c.faces.size());
+  const auto drop_face = [&](size_t g) {
+    c.faces.erase(c.faces.begin() + long(g));
+    if (g < c.origins.faces.size()) c.origins.faces.erase(c.origins.faces.begin() + long(g));
+  };
+  // Weighted toward the edits that keep a manifold: deletions, splits, triangles on edges, compaction.
+  constexpr int kKinds[] = {0, 0, 0, 0, 2, 3, 3, 4, 4, 5, 6, 7, 8, 8};
+  switch (kKinds[pick(std::size(kKinds))]) {
+    case 0:
+      drop_face(f);
+      break;
+    case 2:
+      std::reverse(c.faces[f].begin(), c.faces[f].end());
+      break;
+    case 3:
+      if (c.faces[f].size() >= 4) {
+        const std::vector<int> piece{c.faces[f][0], c.faces[f][2], c.faces[f][3]};
+        c.faces[f].erase(c.faces[f].begin() + 3);
+        c.faces.push_back(piece);
+      }
+      break;
+    case 4: {
+      const std::vector<int>& face = c.faces[f];
+      const size_t k = pick(face.size());
+      const int a = face[k], b = face[(k + 1) % face.size()];
+      c.origins.vertices.push_back(-1);
+      if (pick(4) == 0)  // flipped: running the edge the way its face does
+        c.faces.push_back({a, b, c.n_vertices++});
+      else
+        c.faces.push_back({b, a, c.n_vertices++});
+      break;
+    }
+    case 5:
+      c.faces.push_back(
+          {int(pick(size_t(c.n_vertices))), int(pick(size_t(c.n_vertices))), int(pick(size_t(c.n_vertices)))});
+      break;
+    case 6: {
+      const int u = int(pick(size_t(c.n_vertices))), w = int(pick(size_t(c.n_vertices)));
+      for (auto& face : c.faces) std::replace(face.begin(), face.end(), w, u);
+      break;
+    }
+    case 7:
+      c.faces.emplace_back(c.faces[f].rbegin(), c.faces[f].rend());
+      break;
+    case 8: {
+      std::vector<int> used(size_t(c.n_vertices), 0), new_index(size_t(c.n_vertices), -1);
+      for (const auto& face : c.faces)
+        for (int v : face)
+          if (v >= 0 && v < c.n_vertices) used[size_t(v)] = 1;
+      std::vector<int> origin;
+      for (int v = 0; v < c.n_vertices; ++v)
+        if (used[size_t(v)]) {
+          new_index[size_t(v)] = int(origin.size());
+          origin.push_back(c.origins.vertices[size_t(v)]);
+        }
+      for (auto& face : c.faces)
+        for (int& v : face)
+          if (v >= 0 && v < c.n_vertices) v = new_index[size_t(v)];
+      c.origins.vertices = origin;
+      c.n_vertices = int(origin.size());
+      break;
+    }
+  }
+}
+
+// Random edits of meshes of quads, triangles and both: wherever the update vouches for a topology
+// it equals connectivity_of's whole build, which accepts it; wherever the whole build refuses one,
+// the update does not vouch for it. Both kinds occur often.
+TEST(IncrementalConnectivity, RandomChangesGiveWhatAWholeBuildGivesAndNeverPassWhatItRefuses) {
+  std::mt19937 rng(46);
+  int vouched = 0, refused = 0, declined = 0;
+  for (const char* name : {"grid", "icosphere", "cylinder", "pawn-quads", "cone", "torus", "wirecube"}) {
+    SCOPED_TRACE(name);
+    const CovarianceMesh before = make_sample(name, 200);
+    for (int trial = 0; trial < 300; ++trial) {
+      Changed c{faces_of(before), {}, int(before.n_vertices())};
+      c.origins.vertices.resize(before.n_vertices());
+      std::iota(c.origins.vertices.begin(), c.origins.vertices.end(), 0);
+      c.origins.faces.resize(before.n_faces());
+      std::iota(c.origins.faces.begin(), c.origins.faces.end(), 0);
+      const int n_edits = 1 + trial % 4;
+      for (int i = 0; i < n_edits; ++i) random_edit(c, rng);
+      const PolygonTopology t = topology_of(c.faces, c.n_vertices);
+      const std::optional<MeshConnectivity> updated =
+          updated_connectivity(before.topology(), before.connectivity(), t, c.origins);
+      std::optional<CovarianceMesh> whole;
+      try {
+        whole = make_covariance_mesh(std::vector<Vec3>(size_t(c.n_vertices), Vec3::Zero()), {}, PolygonTopology(t),
+                                     "changed");
+      } catch (const Error&) {
+      }
+      if (!whole) {
+        ++refused;
+        EXPECT_FALSE(updated.has_value()) << "trial " << trial << ": vouched for a topology a whole build refuses";
+        continue;
+      }
+      if (!updated) {
+        ++declined;
+        continue;
+      }
+      ++vouched;
+      test::expect_equal(*updated, whole->connectivity());
+      if (HasFailure()) return;
+    }
+  }
+  std::printf("vouched %d refused %d declined %d\n", vouched, refused, declined);
+  EXPECT_GT(vouched, 500);
+  EXPECT_GT(refused, 500);
+  EXPECT_LT(declined, vouched / 4);
+}
+
+// Where the change cannot be followed the update declines, and the mesh is built whole: old vertices
+// in a new order, most faces new, no face origins.
+TEST(IncrementalConnectivity, DeclinesWhatItCannotFollow) {
+  const CovarianceMesh before = make_sample("grid", 64);
+  const int n = int(before.n_vertices());
+  MeshOrigins same;
+  same.vertices.resize(size_t(n));
+  std::iota(same.vertices.begin(), same.vertices.end(), 0);
+  same.faces.resize(before.n_faces());
+  std::iota(same.faces.begin(), same.faces.end(), 0);
+  const PolygonTopology& t = before.topology();
+  ASSERT_TRUE(updated_connectivity(t, before.connectivity(), t, same).has_value());
+  test::expect_equal(*updated_connectivity(t, before.connectivity(), t, same), before.connectivity());
+
+  MeshOrigins swapped = same;
+  std::swap(swapped.vertices[0], swapped.vertices[1]);
+  EXPECT_FALSE(updated_connectivity(t, before.connectivity(), t, swapped).has_value());
+  MeshOrigins no_faces = same;
+  no_faces.faces.clear();
+  EXPECT_FALSE(updated_connectivity(t, before.connectivity(), t, no_faces).has_value());
+  MeshOrigins shifted = same;
+  std::rotate(shifted.faces.begin(), shifted.faces.begin() + 1, shifted.faces.end());
+  EXPECT_FALSE(updated_connectivity(t, before.connectivity(), t, shifted).has_value());
+}
+
+// The mesh an operation gives, whose connectivity is carried over from its input's, against a whole
+// build of its faces, along random sequences of operations on meshes of quads, triangles, both, and
+// creases.
+TEST(IncrementalMesh, OperationSequencesGiveWhatWholeBuildsGive) {
+  std::mt19937 rng(4646);
+  int operations = 0;
+  for (const char* name : {"grid", "icosphere", "cylinder", "pawn-quads", "torus"}) {
+    SCOPED_TRACE(name);
+    CovarianceMesh mesh = make_sample(name, 300);
+    if (std::string(name) == "torus")  // creased here and there
+      for (size_t e = 0; e < mesh.n_edges(); e += 7) mesh.sharpness.set_crease(mesh.edge(e)[0], mesh.edge(e)[1], 2.0);
+    for (int step = 0; step < 40; ++step) {
+      const auto pick = [&](size_t k) { return int(std::uniform_int_distribution<size_t>(0, k - 1)(rng)); };
+      const int f = pick(mesh.n_faces());
+      const std::span<const int> corners = mesh.face(size_t(f));
+      std::optional<Modelled> r;
+      try {
+        switch (pick(7)) {
+          case 0:
+            r = extrude_faces(mesh, {f}, 0.05);
+            break;
+          case 1:
+            r = inset_faces(mesh, {f, pick(mesh.n_faces())}, 0.01);
+            break;
+          case 2:
+            r = loop_cut(mesh, corners[0], corners[1], 1);
+            break;
+          case 3:
+            r = subdivide_faces(mesh, {f});
+            break;
+          case 4:
+            r = delete_faces(mesh, {f});
+            break;
+          case 5:
+            r = merge_vertices(mesh, {corners[0], corners[1]}, MergePoint::center);
+            break;
+          case 6:
+            r = dissolve_edges(mesh, {{corners[0], corners[1]}});
+            break;
+        }
+      } catch (const Error&) {
+        continue;
+      }
+      ++operations;
+      const CovarianceMesh& m = r->mesh;
+      const CovarianceMesh whole = make_covariance_mesh(m.means(), m.covariances, faces_of(m), "whole");
+      test::expect_equal(m.connectivity(), whole.connectivity());
+      EXPECT_EQ(m.topology().offsets, whole.topology().offsets);
+      EXPECT_EQ(m.topology().verts, whole.topology().verts);
+      EXPECT_EQ(m.sharpness.creases, build_mesh(arrays_of(m)).sharpness.creases);
+      if (HasFailure()) return;
+      mesh = std::move(r->mesh);
+    }
+  }
+  EXPECT_GT(operations, 100);
+}
+
+// Arrays changed at random, faces and Gaussians (some of them no longer valid), built from the mesh
+// they were made from and built whole: the same mesh, array for array, or the same message.
+TEST(IncrementalMesh, ChangedArraysBuildAsAWholeBuildDoesOrFailWithItsMessage) {
+  std::mt19937 rng(146);
+  int built = 0, failed = 0;
+  for (const char* name : {"grid", "icosphere", "cylinder", "torus"}) {
+    SCOPED_TRACE(name);
+    CovarianceMesh before = make_sample(name, 150);
+    for (size_t e = 0; e < before.n_edges(); e += 5)
+      before.sharpness.set_crease(before.edge(e)[0], before.edge(e)[1], 1.5);
+    for (int trial = 0; trial < 200; ++trial) {
+      MeshArrays a = arrays_of(before);
+      Changed c{a.faces, {a.origin, a.face_origin}, a.n_vertices()};
+      for (int i = 0; i < 1 + trial % 3; ++i) random_edit(c, rng);
+      a.faces = c.faces;
+      a.face_origin = c.origins.faces;
+      // The arrays' vertices follow the edits' renumbering; new ones copy vertex 0's Gaussian.
+      std::vector<Vec3> means;
+      std::vector<Mat3> covariances;
+      for (int o : c.origins.vertices) {
+        means.push_back(before.mean(size_t(std::max(o, 0))));
+        covariances.push_back(before.covariance(size_t(std::max(o, 0))));
+      }
+      a.means = means;
+      a.covariances = covariances;
+      a.origin = c.origins.vertices;
+      const size_t v = size_t(rng() % a.means.size());
+      switch (rng() % 8) {
+        case 0:
+          a.means[v].x() += 0.01;
+          break;
+        case 1:
+          a.covariances[v] = -a.covariances[v];
+          break;
+        case 2:
+          a.means[v].y() = std::numeric_limits<double>::quiet_NaN();
+          break;
+        default:
+          break;
+      }
+      std::string incremental_error, whole_error;
+      std::optional<CovarianceMesh> incremental, whole;
+      try {
+        incremental = build_mesh(a, before);
+      } catch (const Error& e) {
+        incremental_error = e.what();
+      }
+      try {
+        whole = build_mesh(a);
+      } catch (const Error& e) {
+        whole_error = e.what();
+      }
+      ASSERT_EQ(incremental_error, whole_error) << "trial " << trial;
+      if (!whole) {
+        ++failed;
+        continue;
+      }
+      ++built;
+      test::expect_equal(incremental->connectivity(), whole->connectivity());
+      EXPECT_EQ(incremental->topology().verts, whole->topology().verts);
+      EXPECT_EQ(incremental->means(), whole->means());
+      EXPECT_EQ(incremental->covariances, whole->covariances);
+      EXPECT_EQ(incremental->sharpness.creases, whole->sharpness.creases);
+      EXPECT_EQ(incremental->sharpness.corners, whole->sharpness.corners);
+      if (HasFailure()) return;
+    }
+  }
+  std::printf("built %d failed %d\n", built, failed);
+  EXPECT_GT(built, 100);
+  EXPECT_GT(failed, 100);
+}
+
+}  // namespace
+}  // namespace gps
