@@ -264,7 +264,8 @@ Modelled bridge_faces(const CovarianceMesh& mesh, const std::vector<int>& faces)
                   " is not one loop: bridge needs one each");
     runs[r] = found[0];
   }
-  return bridge_runs(mesh, a, runs[0], runs[1], input_index, "deleted " + count_of(chosen.size(), "face", "faces") + ", ");
+  return bridge_runs(mesh, a, runs[0], runs[1], input_index,
+                     "deleted " + count_of(chosen.size(), "face", "faces") + ", ");
 }
 
 Modelled bridge_selected(const CovarianceMesh& mesh, const std::vector<int>& vertices) {

@@ -25,7 +25,8 @@ std::string summary(const std::string& head, size_t faces_removed, size_t vertic
 
 /// The mesh without the faces marked in `removed` and the vertices left unused. Refuses an empty
 /// result and a vertex at which the remaining faces would form more than one fan.
-Modelled without_faces(const CovarianceMesh& mesh, MeshArrays a, const std::vector<char>& removed, const std::string& head, bool count_faces) {
+Modelled without_faces(const CovarianceMesh& mesh, MeshArrays a, const std::vector<char>& removed,
+                       const std::string& head, bool count_faces) {
   std::vector<char> touched(size_t(a.n_vertices()), 0);
   size_t faces_removed = 0;
   for (int f = 0; f < a.n_faces(); ++f) {

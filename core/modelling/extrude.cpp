@@ -55,7 +55,8 @@ Modelled extruded_faces(const CovarianceMesh& mesh, MeshArrays& a, const FaceReg
 }
 
 /// Extrudes boundary edges given as directed edges of their faces (unique).
-Modelled extruded_edges(const CovarianceMesh& mesh, MeshArrays& a, const std::vector<std::pair<int, int>>& directed, const Vec3& offset) {
+Modelled extruded_edges(const CovarianceMesh& mesh, MeshArrays& a, const std::vector<std::pair<int, int>>& directed,
+                        const Vec3& offset) {
   const int n_faces = a.n_faces();
   const bool triangles = all_triangles(a);
   std::set<int> ends;
