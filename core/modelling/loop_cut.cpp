@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -21,49 +22,63 @@ struct Ring {
 };
 
 // Across quad `f` from its edge {x, y} to the opposite edge, directed with x's neighbour first.
-std::array<int, 2> opposite_edge(const MeshArrays& arrays, int f, int x, int y) {
-  const std::vector<int>& c = arrays.faces[size_t(f)];
+std::array<int, 2> opposite_edge(const CovarianceMesh& mesh, int f, int x, int y) {
+  const std::span<const int> c = mesh.face(size_t(f));
   const int k = int(std::find(c.begin(), c.end(), x) - c.begin());
   if (c[size_t(k + 1) % 4] == y) return {c[size_t(k + 3) % 4], c[size_t(k + 2) % 4]};  // x → y in the face
   return {c[size_t(k + 1) % 4], c[size_t(k + 2) % 4]};                                 // y → x in the face
 }
 
 // The face on the other side of {x, y} from `from`, or −1 at the boundary.
-int face_across(const DirectedEdges& edges, int x, int y, int from) {
-  for (const uint64_t key : {directed_key(x, y), directed_key(y, x)}) {
-    const auto it = edges.find(key);
-    if (it != edges.end() && it->second.first != from) return it->second.first;
+int face_across(const CovarianceMesh& mesh, int x, int y, int from) {
+  const int e = mesh.find_edge(x, y);
+  if (e < 0) return -1;
+  for (int s = 0; s < 2; ++s)
+    if (const int f = mesh.connectivity().edge_faces[2 * size_t(e) + size_t(s)]; f >= 0 && f != from) return f;
+  return -1;
+}
+
+// The face that runs along x → y, or −1.
+int face_running(const CovarianceMesh& mesh, int x, int y) {
+  const int e = mesh.find_edge(x, y);
+  if (e < 0) return -1;
+  for (int s = 0; s < 2; ++s) {
+    const int f = mesh.connectivity().edge_faces[2 * size_t(e) + size_t(s)];
+    if (f < 0) continue;
+    const std::span<const int> c = mesh.face(size_t(f));
+    for (size_t k = 0; k < c.size(); ++k)
+      if (c[k] == x && c[(k + 1) % c.size()] == y) return f;
   }
   return -1;
 }
 
 // From edge x → y, first into `face`, across quads: the edges and quads passed, until a face that is
 // not a quad, the boundary or the start edge again (then `closed`).
-void walk(const MeshArrays& arrays, const DirectedEdges& edges, std::array<int, 2> edge, int face,
-          std::vector<std::array<int, 2>>& passed_edges, std::vector<int>& passed_quads, bool& closed) {
+void walk(const CovarianceMesh& mesh, std::array<int, 2> edge, int face, std::vector<std::array<int, 2>>& passed_edges,
+          std::vector<int>& passed_quads, bool& closed) {
   const std::array<int, 2> start = edge;
-  const size_t limit = edges.size();
-  while (face >= 0 && arrays.faces[size_t(face)].size() == 4 && passed_edges.size() <= limit) {
-    const std::array<int, 2> next = opposite_edge(arrays, face, edge[0], edge[1]);
+  const size_t limit = mesh.n_corners();
+  while (face >= 0 && mesh.face_size(size_t(face)) == 4 && passed_edges.size() <= limit) {
+    const std::array<int, 2> next = opposite_edge(mesh, face, edge[0], edge[1]);
     passed_quads.push_back(face);
     if (edge_key(next[0], next[1]) == edge_key(start[0], start[1])) {
       closed = true;
       return;
     }
     passed_edges.push_back(next);
-    face = face_across(edges, next[0], next[1], face);
+    face = face_across(mesh, next[0], next[1], face);
     edge = next;
   }
 }
 
-Ring ring_of(const MeshArrays& arrays, const DirectedEdges& edges, int a, int b) {
-  check_vertex(arrays, a);
-  check_vertex(arrays, b);
-  if (!has_edge(edges, a, b)) throw Error(edge_name(a, b) + " is not in the mesh");
+Ring ring_of(const CovarianceMesh& mesh, int a, int b) {
+  check_vertex(mesh.n_vertices(), a);
+  check_vertex(mesh.n_vertices(), b);
+  if (mesh.find_edge(a, b) < 0) throw Error(edge_name(a, b) + " is not in the mesh");
   Ring r;
   std::vector<std::array<int, 2>> forward_edges, backward_edges;
   std::vector<int> forward_quads, backward_quads;
-  walk(arrays, edges, {a, b}, face_of_edge(edges, a, b).first, forward_edges, forward_quads, r.ring.closed);
+  walk(mesh, {a, b}, face_running(mesh, a, b), forward_edges, forward_quads, r.ring.closed);
   if (r.ring.closed) {
     r.ring.edges.push_back({a, b});
     r.ring.edges.insert(r.ring.edges.end(), forward_edges.begin(), forward_edges.end());
@@ -71,7 +86,7 @@ Ring ring_of(const MeshArrays& arrays, const DirectedEdges& edges, int a, int b)
     return r;
   }
   bool closed_backward = false;
-  walk(arrays, edges, {a, b}, face_of_edge(edges, b, a).first, backward_edges, backward_quads, closed_backward);
+  walk(mesh, {a, b}, face_running(mesh, b, a), backward_edges, backward_quads, closed_backward);
   r.ring.edges.assign(backward_edges.rbegin(), backward_edges.rend());
   r.ring.edges.push_back({a, b});
   r.ring.edges.insert(r.ring.edges.end(), forward_edges.begin(), forward_edges.end());
@@ -87,17 +102,13 @@ double cut_fraction(int k, int cuts, double slide) {
 
 }  // namespace
 
-EdgeRing edge_ring(const CovarianceMesh& mesh, int a, int b) {
-  const MeshArrays arrays = arrays_of(mesh);
-  return ring_of(arrays, directed_edges(arrays), a, b).ring;
-}
+EdgeRing edge_ring(const CovarianceMesh& mesh, int a, int b) { return ring_of(mesh, a, b).ring; }
 
 Modelled loop_cut(const CovarianceMesh& mesh, int a, int b, int cuts, double slide) {
   if (cuts < 1 || cuts > 64) throw Error("the number of cuts must be 1..64, got " + std::to_string(cuts));
   if (!(std::abs(slide) < 1)) throw Error("the slide must be in (−1, 1), got " + short_number(slide));
+  const Ring r = ring_of(mesh, a, b);
   MeshArrays arrays = arrays_of(mesh);
-  const DirectedEdges edges = directed_edges(arrays);
-  const Ring r = ring_of(arrays, edges, a, b);
   if (r.quads.empty()) throw Error(edge_name(a, b) + " has no quad beside it to cut across");
   std::vector<int> sorted_quads = r.quads;
   std::sort(sorted_quads.begin(), sorted_quads.end());
@@ -129,7 +140,7 @@ Modelled loop_cut(const CovarianceMesh& mesh, int a, int b, int cuts, double sli
     const int f = r.quads[i];
     const std::vector<int>& p = rails[i];
     const std::vector<int>& q = rails[(i + 1) % rails.size()];
-    const bool forward = face_of_edge(edges, p.front(), p.back()).first == f;
+    const bool forward = face_running(mesh, p.front(), p.back()) == f;
     std::vector<std::vector<int>> strips;
     for (int j = 0; j <= cuts; ++j)
       strips.push_back(forward ? std::vector<int>{p[size_t(j)], p[size_t(j) + 1], q[size_t(j) + 1], q[size_t(j)]}
@@ -139,8 +150,15 @@ Modelled loop_cut(const CovarianceMesh& mesh, int a, int b, int cuts, double sli
   }
 
   // Other faces on ring edges (the ends of an open ring) take the new vertices as extra corners.
-  for (int f = 0; f < int(mesh.n_faces()); ++f) {
-    if (std::binary_search(sorted_quads.begin(), sorted_quads.end(), f)) continue;
+  std::vector<int> ends;
+  for (const auto& [x, y] : r.ring.edges)
+    for (int s = 0; s < 2; ++s)
+      if (const int f = mesh.connectivity().edge_faces[2 * size_t(mesh.find_edge(x, y)) + size_t(s)];
+          f >= 0 && !std::binary_search(sorted_quads.begin(), sorted_quads.end(), f))
+        ends.push_back(f);
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  for (const int f : ends) {
     const std::vector<int> c = arrays.faces[size_t(f)];
     std::vector<int> corners;
     for (size_t k = 0; k < c.size(); ++k) {
