@@ -53,14 +53,21 @@ void reverse_parts_within(MeshArrays& arrays, const std::vector<int>& moved) {
     if (!face.empty() && !part_stays[size_t(root(face[0]))]) std::reverse(face.begin() + 1, face.end());
 }
 
+double strongest_stretch(const AffineMap& map) { return Eigen::JacobiSVD<Mat3>(map.linear).singularValues()[0]; }
+
 CarriedGaussian carried_gaussian(const AffineMap& map, const Gaussian& g) {
+  return carried_gaussian(map, g, strongest_stretch(map));
+}
+
+CarriedGaussian carried_gaussian(const AffineMap& map, const Gaussian& g, double strongest) {
   CarriedGaussian out{map.apply(g), false};
-  const Eigen::SelfAdjointEigenSolver<Mat3> carried(out.gaussian.covariance);
   const double thinnest = Eigen::SelfAdjointEigenSolver<Mat3>(g.covariance, Eigen::EigenvaluesOnly).eigenvalues()[0];
-  const double strongest = Eigen::JacobiSVD<Mat3>(map.linear).singularValues()[0];
   const double stretch = kFlattestStretch * (strongest > 0 ? strongest : 1.0);
   const double floor = stretch * stretch * thinnest;
-  if (!(carried.eigenvalues()[0] < floor)) return out;
+  // The eigenvectors only where the floor holds (the eigenvalues are the same either way).
+  const Eigen::SelfAdjointEigenSolver<Mat3> values(out.gaussian.covariance, Eigen::EigenvaluesOnly);
+  if (!(values.eigenvalues()[0] < floor)) return out;
+  const Eigen::SelfAdjointEigenSolver<Mat3> carried(out.gaussian.covariance);
   const Mat3 c =
       carried.eigenvectors() * carried.eigenvalues().cwiseMax(floor).asDiagonal() * carried.eigenvectors().transpose();
   out.gaussian.covariance = 0.5 * (c + c.transpose());
@@ -75,16 +82,23 @@ std::vector<int> transform_vertices_in_place(CovarianceMesh& mesh, const std::ve
   if (vertices.empty())
     for (size_t v = 0; v < mesh.n_vertices(); ++v) moved.push_back(int(v));
   std::vector<Gaussian> carried(moved.size());
-  size_t clamped = 0;
+  std::vector<char> clamped_at(moved.size(), 0), valid(moved.size(), 0);
+  const double strongest = strongest_stretch(map);
+#pragma omp parallel for if (moved.size() >= size_t(kParallelFaces))
   for (size_t i = 0; i < moved.size(); ++i) {
     const int v = moved[i];
-    const CarriedGaussian g = carried_gaussian(map, {mesh.mean(size_t(v)), mesh.covariances[size_t(v)]});
-    std::string why = position_problem(g.gaussian.mean);
-    if (why.empty()) why = covariance_problem(g.gaussian.covariance);
-    if (!why.empty()) throw Error("the result would not be a valid mesh: vertex " + std::to_string(v) + " " + why);
+    const CarriedGaussian g = carried_gaussian(map, {mesh.mean(size_t(v)), mesh.covariances[size_t(v)]}, strongest);
+    valid[i] = position_problem(g.gaussian.mean).empty() && covariance_problem(g.gaussian.covariance).empty();
     carried[i] = g.gaussian;
-    clamped += g.clamped;
+    clamped_at[i] = g.clamped;
   }
+  for (size_t i = 0; i < moved.size(); ++i) {  // the first vertex with a problem is named
+    if (valid[i]) continue;
+    std::string why = position_problem(carried[i].mean);
+    if (why.empty()) why = covariance_problem(carried[i].covariance);
+    throw Error("the result would not be a valid mesh: vertex " + std::to_string(moved[i]) + " " + why);
+  }
+  const size_t clamped = size_t(std::count(clamped_at.begin(), clamped_at.end(), 1));
   for (size_t i = 0; i < moved.size(); ++i) {
     mesh.set_mean(size_t(moved[i]), carried[i].mean);
     mesh.covariances[size_t(moved[i])] = carried[i].covariance;

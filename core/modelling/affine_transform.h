@@ -45,6 +45,9 @@ struct CarriedGaussian {
 /// without the collapse a covariance of eigenvalue ~0 gives (its inverse then dominates every 9D
 /// blend it enters, docs/design.md §1).
 CarriedGaussian carried_gaussian(const AffineMap& map, const Gaussian& g);
+/// The same with σ_max(A) given (strongest_stretch(map)), for many Gaussians under one map.
+CarriedGaussian carried_gaussian(const AffineMap& map, const Gaussian& g, double strongest_stretch);
+double strongest_stretch(const AffineMap& map);
 
 /// The vertices `vertices` (all of them when empty) carried by `map` (carried_gaussian; the summary
 /// says how many Gaussians were held at the floor). A map that mirrors (negative determinant) also

@@ -37,7 +37,10 @@ MergeResult merge_into(const MeshArrays& in, const std::vector<int>& target,
                        const std::unordered_map<int, Gaussian>& gaussians) {
   MergeResult r;
   MeshArrays& a = r.arrays;
-  a = in;
+  a.means = in.means;  // the faces are made anew below
+  a.covariances = in.covariances;
+  a.sharpness = in.sharpness;
+  a.origin = in.origin;
   for (const auto& [v, g] : gaussians) {
     a.means[size_t(v)] = g.mean;
     a.covariances[size_t(v)] = g.covariance;

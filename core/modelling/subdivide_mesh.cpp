@@ -97,9 +97,21 @@ Modelled subdivide_faces(const CovarianceMesh& mesh, const std::vector<int>& fac
     for (size_t k = 0; k < face.size(); ++k) midpoints.make(a, face[k], face[(k + 1) % face.size()]);
   }
 
+  // The faces that change: the chosen ones and those across their edges (the rest have no midpoint).
+  std::vector<int> changing;
+  const MeshConnectivity& connectivity = mesh.connectivity();
+  const PolygonTopology& topology = mesh.topology();
+  for (const int f : chosen)
+    for (int k = topology.offsets[size_t(f)]; k < topology.offsets[size_t(f) + 1]; ++k)
+      for (int s = 0; s < 2; ++s)
+        if (const int g = connectivity.edge_faces[2 * size_t(connectivity.face_edges[size_t(k)]) + size_t(s)]; g >= 0)
+          changing.push_back(g);
+  std::sort(changing.begin(), changing.end());
+  changing.erase(std::unique(changing.begin(), changing.end()), changing.end());
+
   std::vector<int> selection;
   std::vector<std::vector<int>> appended;
-  for (int f = 0; f < n_faces; ++f) {
+  for (const int f : changing) {
     const std::vector<int> c = a.faces[size_t(f)];
     const size_t n = c.size();
     std::vector<int> mid(n);
