@@ -190,16 +190,16 @@ Modelled merged(const CovarianceMesh& mesh, MeshArrays& a, FaceMerger& merger, c
 }  // namespace
 
 Modelled delete_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) {
-  const MeshArrays a = arrays_of(mesh);
+  MeshArrays a = arrays_of(mesh);
   if (faces.empty()) throw Error("no faces are selected");
   const std::vector<int> chosen = sorted_faces(a, faces);
   std::vector<char> removed(size_t(a.n_faces()), 0);
   for (int f : chosen) removed[size_t(f)] = 1;
-  return without_faces(mesh, a, removed, "deleted " + count_of(chosen.size(), "face", "faces"), false);
+  return without_faces(mesh, std::move(a), removed, "deleted " + count_of(chosen.size(), "face", "faces"), false);
 }
 
 Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
-  const MeshArrays a = arrays_of(mesh);
+  MeshArrays a = arrays_of(mesh);
   if (vertices.empty()) throw Error("no vertices are selected");
   const std::vector<int> chosen = sorted_vertices(a, vertices);
   std::vector<char> selected(size_t(a.n_vertices()), 0);
@@ -207,18 +207,18 @@ Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& ver
   std::vector<char> removed(size_t(a.n_faces()), 0);
   for (int f = 0; f < a.n_faces(); ++f)
     for (int v : a.faces[size_t(f)]) removed[size_t(f)] |= selected[size_t(v)];
-  return without_faces(mesh, a, removed, "deleted " + count_of(chosen.size(), "vertex", "vertices"), true);
+  return without_faces(mesh, std::move(a), removed, "deleted " + count_of(chosen.size(), "vertex", "vertices"), true);
 }
 
 Modelled delete_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
-  const MeshArrays a = arrays_of(mesh);
+  MeshArrays a = arrays_of(mesh);
   const DirectedEdges de = directed_edges(a);
   const std::vector<std::array<int, 2>> chosen = checked_edges(de, edges, false);
   std::vector<char> removed(size_t(a.n_faces()), 0);
   for (const auto& [x, y] : chosen)
     for (const uint64_t key : {directed_key(x, y), directed_key(y, x)})
       if (const auto it = de.find(key); it != de.end()) removed[size_t(it->second.first)] = 1;
-  return without_faces(mesh, a, removed, "deleted " + count_of(chosen.size(), "edge", "edges"), true);
+  return without_faces(mesh, std::move(a), removed, "deleted " + count_of(chosen.size(), "edge", "edges"), true);
 }
 
 Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {

@@ -33,25 +33,30 @@ struct MergeResult {
 // Replaces every vertex v by target[v] (target[v] ≤ v; target[t] == t for a kept vertex), whose
 // Gaussian becomes gaussians[t] where given, then drops repeated corners, degenerate faces and the
 // merged-away vertices.
-MergeResult merge_into(const MeshArrays& in, const std::vector<int>& target,
+MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
                        const std::unordered_map<int, Gaussian>& gaussians) {
   MergeResult r;
   MeshArrays& a = r.arrays;
-  a.means = in.means;  // the faces are made anew below
-  a.covariances = in.covariances;
-  a.sharpness = in.sharpness;
-  a.origin = in.origin;
+  a.means = std::move(in.means);
+  a.covariances = std::move(in.covariances);
+  a.origin = std::move(in.origin);
   for (const auto& [v, g] : gaussians) {
     a.means[size_t(v)] = g.mean;
     a.covariances[size_t(v)] = g.covariance;
   }
   std::vector<std::vector<int>> faces;
-  faces.reserve(a.faces.size());
-  a.face_origin.clear();
+  faces.reserve(in.faces.size());
   std::vector<int> last_seen(a.means.size(), -1);
   for (int f = 0; f < in.n_faces(); ++f) {
+    std::vector<int>& corners = in.faces[size_t(f)];
+    const int origin = size_t(f) < in.face_origin.size() ? in.face_origin[size_t(f)] : -1;
+    if (std::all_of(corners.begin(), corners.end(), [&](int v) { return target[size_t(v)] == v; })) {
+      a.face_origin.push_back(origin);  // no corner merged: the face as it was
+      faces.push_back(std::move(corners));
+      continue;
+    }
     std::vector<int> face;
-    for (int v : in.faces[size_t(f)]) {
+    for (int v : corners) {
       const int t = target[size_t(v)];
       if (face.empty() || face.back() != t) face.push_back(t);
     }
@@ -65,7 +70,7 @@ MergeResult merge_into(const MeshArrays& in, const std::vector<int>& target,
         throw Error("face " + std::to_string(f) + " would use vertex " + std::to_string(v) + " twice");
       last_seen[size_t(v)] = f;
     }
-    a.face_origin.push_back(size_t(f) < in.face_origin.size() ? in.face_origin[size_t(f)] : -1);
+    a.face_origin.push_back(origin);
     faces.push_back(std::move(face));
   }
   a.faces = std::move(faces);
@@ -84,7 +89,7 @@ MergeResult merge_into(const MeshArrays& in, const std::vector<int>& target,
   a.origin.resize(origins ? size_t(next) : 0);
   for (auto& face : a.faces)
     for (int& v : face) v = r.new_index[size_t(v)];
-  std::vector<int> merged_index(in.means.size());
+  std::vector<int> merged_index(target.size());
   for (size_t v = 0; v < merged_index.size(); ++v) merged_index[v] = r.new_index[size_t(target[v])];
   a.sharpness = renumbered(in.sharpness, merged_index, next);
   return r;
@@ -120,7 +125,7 @@ struct CellHash {
 }  // namespace
 
 Modelled merge_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, MergePoint at) {
-  const MeshArrays a = arrays_of(mesh);
+  MeshArrays a = arrays_of(mesh);
   const std::vector<int> group = sorted_vertices(a, vertices);
   if (group.size() != vertices.size()) {
     std::vector<int> listed = vertices;
@@ -135,7 +140,7 @@ Modelled merge_vertices(const CovarianceMesh& mesh, const std::vector<int>& vert
   std::vector<int> target(size_t(a.n_vertices()));
   std::iota(target.begin(), target.end(), 0);
   for (int v : group) target[size_t(v)] = group.front();
-  const MergeResult r = merge_into(a, target, {{group.front(), g}});
+  const MergeResult r = merge_into(std::move(a), target, {{group.front(), g}});
   Modelled out = modelled(mesh, r.arrays, {r.new_index[size_t(group.front())]});
   out.summary = "merged " + std::to_string(group.size()) + " vertices into vertex " +
                 std::to_string(out.selection.front()) + faces_removed_text(r.faces_removed);
@@ -143,7 +148,7 @@ Modelled merge_vertices(const CovarianceMesh& mesh, const std::vector<int>& vert
 }
 
 Modelled weld_by_distance(const CovarianceMesh& mesh, const std::vector<int>& vertices, double distance) {
-  const MeshArrays a = arrays_of(mesh);
+  MeshArrays a = arrays_of(mesh);
   std::ostringstream d;
   d << distance;
   if (!(distance > 0) || !std::isfinite(distance))
@@ -191,7 +196,7 @@ Modelled weld_by_distance(const CovarianceMesh& mesh, const std::vector<int>& ve
     gaussians[root] = group_center(a, members);
     removed += int(members.size()) - 1;
   }
-  const MergeResult r = merge_into(a, target, gaussians);
+  const MergeResult r = merge_into(std::move(a), target, gaussians);
   Modelled out = modelled(mesh, r.arrays, {});
   for (const auto& [root, members] : clusters) out.selection.push_back(r.new_index[size_t(root)]);
   std::sort(out.selection.begin(), out.selection.end());
