@@ -1,6 +1,7 @@
 #include "core/modelling/mesh_arrays.h"
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
 
 #include "core/support/error.h"
@@ -90,8 +91,9 @@ CovarianceMesh build_mesh(const MeshArrays& a, const CovarianceMesh& before) {
     // The Gaussians that are new or changed; the others were checked when `before` was made.
     for (size_t v = 0; v < m.n_vertices(); ++v) {
       const int o = origin[v];
-      const bool same = o >= 0 && size_t(o) < before.n_vertices() && a.means[v] == before.mean(size_t(o)) &&
-                        a.covariances[v] == before.covariance(size_t(o));
+      const bool same = o >= 0 && size_t(o) < before.n_vertices() &&
+                        std::memcmp(&a.means[v], &before.mean(size_t(o)), sizeof(Vec3)) == 0 &&
+                        std::memcmp(&a.covariances[v], &before.covariance(size_t(o)), sizeof(Mat3)) == 0;
       if (!same && !(position_problem(a.means[v]).empty() && covariance_problem(a.covariances[v]).empty()))
         validate_gaussians(m, source);  // names the first vertex with a problem, as build_mesh does
     }
