@@ -16,6 +16,14 @@ VertexEdit EditHistory::begin(const CovarianceMesh& mesh, const std::vector<int>
   return e;
 }
 
+MeshReplacement mesh_replacement(const CovarianceMesh& before, const CovarianceMesh& after,
+                                 const std::vector<int>& origin) {
+  MeshReplacement r;
+  r.forward = mesh_delta(before, after, origin);
+  r.back = mesh_delta(after, before, inverse_origin(origin, before.n_vertices()));
+  return r;
+}
+
 void EditHistory::push(Step step) {
   if (saved_ > position_) saved_ = std::numeric_limits<size_t>::max();  // the saved state is gone
   steps_.resize(position_);
@@ -40,8 +48,19 @@ bool EditHistory::fold_last_into_replacement(const CovarianceMesh& mesh, const S
   if (position_ < 2 || position_ != steps_.size()) return false;
   Step& replaced = steps_[position_ - 2];
   if (!replaced.replacement || steps_[position_ - 1].replacement) return false;
-  replaced.replacement->after = std::make_shared<const CovarianceMesh>(mesh);
-  replaced.replacement->selection_after = selection;
+  // The mesh the operation left (the edit undone on `mesh`), the mesh before it, and both told again
+  // against each other with the edit in.
+  MeshReplacement& r = *replaced.replacement;
+  const VertexEdit& edit = steps_[position_ - 1].edit;
+  CovarianceMesh left = mesh;
+  for (size_t i = 0; i < edit.vertices.size(); ++i) {
+    left.set_mean(size_t(edit.vertices[i]), edit.means_before[i]);
+    left.set_covariance(size_t(edit.vertices[i]), edit.covariances_before[i]);
+  }
+  const CovarianceMesh before = apply_delta(left, r.back);
+  r.forward = mesh_delta(before, mesh, vertex_sources(r.forward));
+  r.back = mesh_delta(mesh, before, vertex_sources(r.back));
+  r.selection_after = selection;
   steps_.pop_back();
   if (saved_ == position_ - 1) saved_ = std::numeric_limits<size_t>::max();  // between the two: gone
   if (saved_ == position_) saved_ = position_ - 1;
@@ -58,8 +77,8 @@ Restored EditHistory::undo(CovarianceMesh& mesh) {
   if (!can_undo()) return {};
   const Step& s = steps_[--position_];
   if (s.replacement) {
-    mesh = *s.replacement->before;
-    return {{}, s.replacement->selection_before, inverse_origin(s.replacement->origin, mesh.n_vertices())};
+    mesh = apply_delta(mesh, s.replacement->back);
+    return {{}, s.replacement->selection_before, vertex_sources(s.replacement->back)};
   }
   const VertexEdit& e = s.edit;
   for (size_t i = 0; i < e.vertices.size(); ++i) {
@@ -73,8 +92,8 @@ Restored EditHistory::redo(CovarianceMesh& mesh) {
   if (!can_redo()) return {};
   const Step& s = steps_[position_++];
   if (s.replacement) {
-    mesh = *s.replacement->after;
-    return {{}, s.replacement->selection_after, s.replacement->origin};
+    mesh = apply_delta(mesh, s.replacement->forward);
+    return {{}, s.replacement->selection_after, vertex_sources(s.replacement->forward)};
   }
   const VertexEdit& e = s.edit;
   for (size_t i = 0; i < e.vertices.size(); ++i) {

@@ -1,13 +1,15 @@
 #pragma once
 // Undo and redo: one step per drag, preset, numeric entry or modelling operation; exact restore.
 // A vertex edit keeps the Gaussians of the vertices it changed; a modelling operation, which may
-// change the topology, keeps the whole mesh before and after it (and the selections that go with them).
+// change the topology, keeps the mesh after it told as a change of the mesh before and the other way
+// round (core/mesh/mesh_delta.h), in memory proportional to what it changed, and the selections that
+// go with them.
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "core/mesh/mesh_delta.h"
 #include "ui/document/selection_record.h"
 
 namespace gps {
@@ -19,12 +21,17 @@ struct VertexEdit {
   std::vector<Mat3> covariances_before, covariances_after;
 };
 
-/// The whole mesh before and after a modelling operation, with the selection of each.
+/// A modelling operation: the mesh after it as a change of the mesh before (`forward`) and the mesh
+/// before as a change of the mesh after (`back`), with the selection of each.
 struct MeshReplacement {
-  std::shared_ptr<const CovarianceMesh> before, after;
+  MeshDelta forward, back;
   SelectionRecord selection_before, selection_after;
-  std::vector<int> origin;  // per vertex of `after`: its index in `before` (−1 new); empty: kept
 };
+
+/// The replacement of `before` by `after`; `origin`: per vertex of `after`, its index in `before` (−1
+/// new; empty: the indices kept).
+MeshReplacement mesh_replacement(const CovarianceMesh& before, const CovarianceMesh& after,
+                                 const std::vector<int>& origin);
 
 /// What an undo or redo restored: the vertices whose Gaussians it set, or a whole mesh (with the
 /// selection that goes with it).

@@ -138,12 +138,9 @@ void EditorDocument::cancel_edit() {
 
 void EditorDocument::apply(const Modelled& result, const SelectionRecord& selection_before) {
   if (edit_) commit_edit();
-  MeshReplacement step;
-  step.before = std::make_shared<const CovarianceMesh>(std::move(mesh_));
-  step.after = std::make_shared<const CovarianceMesh>(result.mesh);
+  MeshReplacement step = mesh_replacement(mesh_, result.mesh, result.vertex_origin);
   step.selection_before = selection_before;
   step.selection_after.vertices = result.selection;
-  step.origin = result.vertex_origin;
   mesh_ = result.mesh;
   history_.commit(std::move(step));
   changed_.clear();  // the vertices are new: the GPU rebuilds
