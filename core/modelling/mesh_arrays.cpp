@@ -116,10 +116,6 @@ std::vector<int> inverse_origin(const std::vector<int>& origin, size_t n_before)
   return back;
 }
 
-Modelled modelled(const MeshArrays& a, std::vector<int> selection, std::string summary) {
-  return {build_mesh(a), std::move(selection), std::move(summary), vertex_origin(a)};
-}
-
 Modelled modelled(const CovarianceMesh& before, const MeshArrays& a, std::vector<int> selection, std::string summary) {
   return {build_mesh(a, before), std::move(selection), std::move(summary), vertex_origin(a)};
 }

@@ -45,10 +45,8 @@ struct Modelled {
   std::vector<int> vertex_origin;
 };
 
-/// The outcome of an operation from its arrays: build_mesh's mesh, with the vertices' origins where
-/// the arrays kept them.
-Modelled modelled(const MeshArrays& arrays, std::vector<int> selection, std::string summary = "");
-/// The same for arrays made from `before` (arrays_of(before), then changed), at the cost of what changed.
+/// The outcome of an operation from its arrays, made from `before` (arrays_of(before), then changed):
+/// build_mesh's mesh, at the cost of what changed, with the vertices' origins where the arrays kept them.
 Modelled modelled(const CovarianceMesh& before, const MeshArrays& arrays, std::vector<int> selection,
                   std::string summary = "");
 /// The arrays' origins where they are known (one per vertex), else empty.

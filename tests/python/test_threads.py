@@ -52,13 +52,13 @@ def test_other_threads_run_while_a_call_computes(sphere, tmp_path):
     u = rng.uniform(0, 0.5, n)
     path = tmp_path / "sphere.ply"
     sphere.write(path)
-    finer = gpsurf.sample("icosphere", 81920)  # planning the sphere alone can take under 20 ms
+    finer = gpsurf.sample("icosphere", 81920)  # planning or simplifying the sphere alone can take under 20 ms
     calls = {
         "Surface": lambda: gpsurf.Surface(finer),
         "evaluate": lambda: surface.evaluate(patches, u, u),
         "tessellate": lambda: surface.tessellate(12),
         "subdivide": lambda: gpsurf.subdivide(sphere, 2),
-        "simplify": lambda: gpsurf.simplify(sphere, 2000),
+        "simplify": lambda: gpsurf.simplify(finer, 2000),
         "read": lambda: [gpsurf.read(path) for _ in range(5)],
     }
     for name, call in calls.items():
