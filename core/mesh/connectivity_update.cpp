@@ -117,11 +117,26 @@ private:
     }
   }
 
+  // The corner of vertex v in face g of topology t (rows of connectivity c): from the face's corners or
+  // from v's row, whichever is shorter, so that neither a face of many corners nor a vertex of many
+  // faces is read over and over.
+  static int corner_of(const PolygonTopology& t, const MeshConnectivity& c, int v, int g) {
+    const int row = c.vertex_face_offsets[size_t(v)], row_end = c.vertex_face_offsets[size_t(v) + 1];
+    if (t.face_size(g) <= row_end - row) {
+      for (int k = t.offsets[size_t(g)]; k < t.offsets[size_t(g) + 1]; ++k)
+        if (t.verts[size_t(k)] == v) return k;
+    } else {
+      for (int i = row; i < row_end; ++i)
+        if (c.vertex_faces[size_t(i)] == g) return t.offsets[size_t(g)] + c.vertex_face_corners[size_t(i)];
+    }
+    return -1;
+  }
+
   // Whether the kept face f (old face g) runs old edge e from its lower end.
   bool kept_runs_up(int g, int e) const {
-    for (int k = t0_.offsets[size_t(g)]; k < t0_.offsets[size_t(g) + 1]; ++k)
-      if (c0_.face_edges[size_t(k)] == e) return t0_.verts[size_t(k)] < t0_.verts[size_t(next_corner(t0_, g, k))];
-    return false;
+    const int low = c0_.edge_verts[2 * size_t(e)], high = c0_.edge_verts[2 * size_t(e) + 1];
+    const int k = corner_of(t0_, c0_, low, g);
+    return k >= 0 && t0_.verts[size_t(next_corner(t0_, g, k))] == high;
   }
 
   // The edges in connectivity_of's order: the old edges that a kept face still has (in their order,
@@ -236,9 +251,7 @@ private:
         const int a = c_.edge_faces[2 * size_t(e)], b = c_.edge_faces[2 * size_t(e) + 1];
         const int g = a == f ? b : a;
         if (g < 0) break;
-        int at = -1;
-        for (int i = t_.offsets[size_t(g)]; i < t_.offsets[size_t(g) + 1] && at < 0; ++i)
-          if (t_.verts[size_t(i)] == v) at = i;
+        const int at = corner_of(t_, c_, v, g);
         if (at < 0 || at == start) break;
         k = at;
         f = g;

@@ -79,12 +79,16 @@ MeshDelta mesh_delta(const CovarianceMesh& from, const CovarianceMesh& to, const
       if (from_of_to[size_t(a[k])] != b[k]) return false;
     return true;
   };
+  // The searches at first corners look at no more faces in all than a few per corner: around a vertex
+  // of very many faces, faces are stored rather than searched for.
+  size_t budget = 4 * to.n_corners() + 64;
   int next = 0;
   for (int f = 0; f < d.n_faces; ++f) {
     int g = -1;
     if (next < int(from.n_faces()) && same_face(f, next)) g = next;
     if (const int o = from_of_to[size_t(to.face(size_t(f))[0])]; g < 0 && o >= 0)
-      for (int i = c.vertex_face_offsets[size_t(o)]; i < c.vertex_face_offsets[size_t(o) + 1] && g < 0; ++i)
+      for (int i = c.vertex_face_offsets[size_t(o)]; i < c.vertex_face_offsets[size_t(o) + 1] && g < 0 && budget > 0;
+           ++i, --budget)
         if (c.vertex_face_corners[size_t(i)] == 0 && same_face(f, c.vertex_faces[size_t(i)]))
           g = c.vertex_faces[size_t(i)];
     if (g >= 0) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -192,6 +193,40 @@ TEST(IncrementalConnectivity, DeclinesWhatItCannotFollow) {
   MeshOrigins shifted = same;
   std::rotate(shifted.faces.begin(), shifted.faces.begin() + 1, shifted.faces.end());
   EXPECT_FALSE(updated_connectivity(t, before.connectivity(), t, shifted).has_value());
+}
+
+// A vertex of 100,000 faces and a face of 100,000 corners: an operation beside them reads each once
+// (a walk that looked through the whole face, or the vertex's whole row, at every step would not end).
+TEST(IncrementalConnectivity, AVertexOfManyFacesAndAFaceOfManyCornersAreNotReadOverAndOver) {
+  constexpr int n = 100000;
+  std::vector<Vec3> means{Vec3(0, 0, 1)};
+  Faces fan;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.141592653589793 * i / n;
+    means.emplace_back(std::cos(a), std::sin(a), 0.0);
+    fan.push_back({0, 1 + i, 1 + (i + 1) % n});
+  }
+  const CovarianceMesh cone = make_covariance_mesh(means, {}, fan, "cone");
+  // A disc of one face of n corners with a ring of quads around it.
+  std::vector<Vec3> ring;
+  Faces disc(1);
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.141592653589793 * i / n;
+    ring.emplace_back(std::cos(a), std::sin(a), 0.0);
+    disc[0].push_back(i);
+  }
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.141592653589793 * i / n;
+    ring.emplace_back(2 * std::cos(a), 2 * std::sin(a), 0.0);
+    disc.push_back({(i + 1) % n, i, n + i, n + (i + 1) % n});
+  }
+  const CovarianceMesh annulus = make_covariance_mesh(ring, {}, disc, "disc");
+  for (const Modelled& r : {delete_faces(cone, {0}), extrude_faces(cone, {n / 2}, 0.1), delete_faces(annulus, {5}),
+                            extrude_faces(annulus, {7}, 0.1)}) {
+    SCOPED_TRACE(r.summary);
+    const CovarianceMesh whole = make_covariance_mesh(r.mesh.means(), r.mesh.covariances, faces_of(r.mesh), "whole");
+    test::expect_equal(r.mesh.connectivity(), whole.connectivity());
+  }
 }
 
 // The mesh an operation gives, whose connectivity is carried over from its input's, against a whole
