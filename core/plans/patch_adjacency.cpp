@@ -1,6 +1,7 @@
 #include "core/plans/patch_adjacency.h"
 
 #include <algorithm>
+#include <unordered_set>
 
 namespace gps {
 
@@ -122,6 +123,28 @@ void add_sharp_flags(PatchPlans& plans, const PolygonTopology& topology, const S
     }
 }
 
+// Corner owners: the first (lowest) patch with each corner point.
+void add_corner_owners(PatchPlans& plans) {
+  const int n = plans.corners(), n_patches = plans.n_patches();
+  int32_t corner_points = 0;
+  for (const int32_t point : plans.patch_corner_points) corner_points = std::max(corner_points, point + 1);
+  std::vector<int32_t> owner(size_t(corner_points), -1);  // corner point -> n·patch + corner
+  for (int p = 0; p < n_patches; ++p)
+    for (int c = 0; c < n; ++c) {
+      const int32_t point = plans.patch_corner_points[size_t(n * p + c)];
+      int32_t& first_use = owner[size_t(point)];
+      if (first_use < 0) first_use = n * p + c;
+      plans.corner_owners[size_t(2 * (n * p + c))] = first_use / n;
+      plans.corner_owners[size_t(2 * (n * p + c)) + 1] = first_use % n;
+    }
+}
+
+// An edge use's key: its two end points, the lower first.
+uint64_t edge_key(const EdgeUse& e) {
+  const int32_t lo = std::min(e.from, e.to), hi = std::max(e.from, e.to);
+  return (uint64_t(uint32_t(lo)) << 32) | uint32_t(hi);
+}
+
 }  // namespace
 
 void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness,
@@ -160,19 +183,72 @@ void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, con
       run = run_end;
     }
   }
-  // Corner owners: the first (lowest) patch with each corner point.
-  int32_t corner_points = 0;
-  for (const int32_t point : plans.patch_corner_points) corner_points = std::max(corner_points, point + 1);
-  std::vector<int32_t> owner(size_t(corner_points), -1);  // corner point -> n·patch + corner
-  for (int p = 0; p < n_patches; ++p)
-    for (int c = 0; c < n; ++c) {
-      const int32_t point = plans.patch_corner_points[size_t(n * p + c)];
-      int32_t& first_use = owner[size_t(point)];
-      if (first_use < 0) first_use = n * p + c;
-      plans.corner_owners[size_t(2 * (n * p + c))] = first_use / n;
-      plans.corner_owners[size_t(2 * (n * p + c)) + 1] = first_use % n;
-    }
+  add_corner_owners(plans);
   if (has_infinite_sharpness(sharpness)) add_sharp_flags(plans, topology, sharpness, connectivity);
+}
+
+
+bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
+                            const std::vector<int>& new_of_old) {
+  const int n = plans.corners(), n_patches = plans.n_patches();
+  if (has_infinite_sharpness(sharpness) || old_neighbours.size() != size_t(4 * n) * new_of_old.size()) return false;
+  std::vector<int> old_of_new(size_t(n_patches), -1);
+  for (size_t q = 0; q < new_of_old.size(); ++q)
+    if (const int p = new_of_old[q]; p >= 0) {
+      if (p >= n_patches || old_of_new[size_t(p)] >= 0) return false;
+      old_of_new[size_t(p)] = int(q);
+    }
+  plans.patch_neighbours.assign(size_t(4 * n * n_patches), -1);
+  plans.corner_owners.assign(size_t(2 * n * n_patches), -1);
+  // The patch edges linked again: every edge of a new patch, and a kept patch's edge beside a patch
+  // that is gone, or on the boundary where a new patch now has the edge. The other uses of such an edge
+  // are among these: a face's patches are kept or built again together, and an edge of the mesh has
+  // two faces at most.
+  std::vector<EdgeUse> again;
+  const auto link_again = [&](int p, int k) {
+    if (const EdgeUse e = edge_use(plans, p, k); e.from != e.to) again.push_back(e);
+  };
+  std::unordered_set<uint64_t> new_keys;
+  for (int p = 0; p < n_patches; ++p)
+    if (old_of_new[size_t(p)] < 0)
+      for (int k = 0; k < n; ++k) {
+        new_keys.insert(edge_key(edge_use(plans, p, k)));
+        link_again(p, k);
+      }
+  for (int p = 0; p < n_patches; ++p) {
+    const int q = old_of_new[size_t(p)];
+    if (q < 0) continue;
+    for (int k = 0; k < n; ++k) {
+      const int32_t* r = &old_neighbours[size_t(4 * (n * q + k))];
+      bool kept = r[0] >= 0 || !new_keys.count(edge_key(edge_use(plans, p, k)));
+      for (int j = 0; j < 4 && kept; j += 2)  // (a sharp flag of creases that are gone: linked again)
+        kept = r[j] < 0 || (new_of_old[size_t(r[j])] >= 0 && !(r[j + 1] & kNeighbourSharpEdge));
+      if (!kept) {
+        link_again(p, k);
+        continue;
+      }
+      int32_t* out = &plans.patch_neighbours[size_t(4 * (n * p + k))];
+      for (int j = 0; j < 4; j += 2) {
+        out[j] = r[j] >= 0 ? new_of_old[size_t(r[j])] : -1;
+        out[j + 1] = r[j + 1];
+      }
+    }
+  }
+  // Linked in groups of one edge, in patch order within a group, as add_patch_adjacency links them.
+  std::sort(again.begin(), again.end(), [](const EdgeUse& a, const EdgeUse& b) {
+    const uint64_t ka = edge_key(a), kb = edge_key(b);
+    return ka != kb ? ka < kb : a.patch != b.patch ? a.patch < b.patch : a.k < b.k;
+  });
+  std::vector<const EdgeUse*> group;
+  for (size_t i = 0; i < again.size();) {
+    group.clear();
+    size_t j = i;
+    while (j < again.size() && edge_key(again[j]) == edge_key(again[i])) group.push_back(&again[j++]);
+    link_edge(plans, group);
+    i = j;
+  }
+  add_corner_owners(plans);
+  return true;
 }
 
 }  // namespace gps

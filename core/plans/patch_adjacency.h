@@ -42,6 +42,16 @@ namespace gps {
 void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness,
                          const MeshConnectivity* connectivity = nullptr);
 
+/// add_patch_adjacency for plans that keep most patches of plans whose patch_neighbours were
+/// `old_neighbours` (`new_of_old`: per old patch, its number now, −1 gone; the kept patches' edges
+/// and corner points renumbered alike): a kept patch edge keeps its record, renumbered, unless the
+/// patch beside it is gone or a new patch now has the edge; those and the new patches' edges are
+/// linked again. The same records as add_patch_adjacency, at the cost of the new patches and their
+/// neighbours (the corner owners are found again whole, in one pass). False, changing nothing, with
+/// infinitely sharp creases, whose flags it does not follow.
+bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
+                            const std::vector<int>& new_of_old);
+
 struct EdgeNeighbour {
   int patch = -1;  // −1: none
   int edge = -1;

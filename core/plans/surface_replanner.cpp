@@ -183,8 +183,10 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   }
   for (const auto& failure : failures)
     if (failure) std::rethrow_exception(failure);
+  const std::vector<int32_t> old_neighbours = std::move(tables_.plans.patch_neighbours);
+  const int old_patches = tables_.plans.n_patches();
+  const PatchShape old_shape = tables_.plans.shape;
   tables_ = merge_ranges(ranges_, t.n_vertices, false);
-  add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
   patch_first_.assign(ranges_.size(), 0);
   // The runs kept, in order in both numberings (a run that would go back in the old one is left out).
   const auto keep = [&](int first, int old_first, int count) {
@@ -213,6 +215,14 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     }
     first += count;
   }
+  // The patch adjacency follows the kept patches where it can, else is found again whole.
+  std::vector<int> new_of_old(size_t(old_patches), -1);
+  for (const KeptPatches& run : kept)
+    for (int i = 0; i < run.count && run.old_first + i < old_patches; ++i)
+      new_of_old[size_t(run.old_first + i)] = run.first + i;
+  if (kept.empty() || old_shape != tables_.plans.shape ||
+      !update_patch_adjacency(tables_.plans, sharpness, old_neighbours, new_of_old))
+    add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
 }
 
 std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {

@@ -9,6 +9,8 @@
 
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
+#include "core/modelling/fill.h"
+#include "core/modelling/subdivide_mesh.h"
 #include "core/modelling/samples.h"
 #include "core/plans/surface_replanner.h"
 #include "core/support/error.h"
@@ -97,6 +99,36 @@ TEST(IncrementalPlans, AnExtrudeBuildsAFewRangesAgain) {
   EXPECT_LE(planned, 4 * SurfaceReplanner::kFacesPerRange);
   EXPECT_GT(planned, 0);
   test::expect_same_tables(replanner.tables(), build_surface_plans(after, options, {}), "extruded");
+}
+
+// Next to the cylinder's octagons, split into quads whose edges meet the side quads as halves beside a
+// whole edge: every operation on every face, followed and undone, gives a full re-plan's tables (the
+// patch adjacency kept for the patches that stay, linked again beside the ones that change); and each
+// face deleted, then its hole filled.
+TEST(IncrementalPlans, OperationsBesideSplitFacesMatchAFullReplan) {
+  const CovarianceMesh cylinder = make_sample("cylinder");
+  PlanOptions options;
+  for (int f = 0; f < int(cylinder.n_faces()); ++f) {
+    const std::span<const int> c = cylinder.face(size_t(f));
+    for (const Modelled& result : {extrude_faces(cylinder, {f}, 0.1), delete_faces(cylinder, {f}),
+                                   subdivide_faces(cylinder, {f}), dissolve_edges(cylinder, {{c[0], c[1]}})}) {
+      const std::string where = "face " + std::to_string(f) + " (" + result.summary + ")";
+      SurfaceReplanner replanner(cylinder.topology(), options, {}, test::kSmallRanges);
+      replanner.set_topology(result.mesh.topology(), {}, result.vertex_origin);
+      test::expect_same_tables(replanner.tables(), build_surface_plans(result.mesh.topology(), options, {}), where);
+      replanner.set_topology(cylinder.topology(), {}, inverse_origin(result.vertex_origin, cylinder.n_vertices()));
+      test::expect_same_tables(replanner.tables(), build_surface_plans(cylinder.topology(), options, {}),
+                               where + ", undone");
+      if (HasFailure()) return;
+    }
+    // The face deleted, then its hole filled: the patches beside the hole gain a neighbour.
+    const CovarianceMesh hole = delete_faces(cylinder, {f}).mesh;
+    const Modelled filled = fill(hole, {c.begin(), c.end()});
+    SurfaceReplanner replanner(hole.topology(), options, {}, test::kSmallRanges);
+    replanner.set_topology(filled.mesh.topology(), {}, filled.vertex_origin);
+    test::expect_same_tables(replanner.tables(), build_surface_plans(filled.mesh.topology(), options, {}),
+                             "face " + std::to_string(f) + " deleted and filled");
+  }
 }
 
 // A topology the plans refuse (a crease between unjoined vertices) leaves the tables as they were.

@@ -10,6 +10,8 @@
 
 #include "core/io/mesh_io.h"
 #include "core/plans/planned_surface.h"
+#include "core/modelling/delete_elements.h"
+#include "core/modelling/fill.h"
 #include "core/modelling/samples.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
@@ -230,6 +232,33 @@ TEST(PatchAdjacency, SharpFlagsMarkWhereTheSidesNormalsDiffer) {
   EXPECT_EQ(darts.corners, 4);  // the crease vertex between them
   const SharpFlags smooth = check_sharp_flags("cube", make_sample("cube"));
   EXPECT_EQ(smooth.edges + smooth.corners, 0);
+}
+
+// Patches said to be kept beside a hole that a new face fills (and all others): the update links
+// their boundary edges to the new face's patches, as a whole build links them.
+TEST(PatchAdjacency, AnUpdateLinksKeptPatchesToNewOnesAsAWholeBuildDoes) {
+  const CovarianceMesh cylinder = make_sample("cylinder");
+  const auto first_patches = [](const PolygonTopology& t) {  // Catmull-Clark: one per quad, n per n-gon
+    std::vector<int> first{0};
+    for (int g = 0; g < t.n_faces(); ++g) first.push_back(first.back() + (t.face_size(g) == 4 ? 1 : t.face_size(g)));
+    return first;
+  };
+  for (int f = 0; f < int(cylinder.n_faces()); ++f) {
+    const std::span<const int> c = cylinder.face(size_t(f));
+    const CovarianceMesh hole = delete_faces(cylinder, {f}).mesh;
+    const Modelled filled = fill(hole, {c.begin(), c.end()});  // the hole's faces, then the new one
+    const SurfaceTables before = build_surface_plans(hole, {}), after = build_surface_plans(filled.mesh, {});
+    const std::vector<int> old_first = first_patches(hole.topology()),
+                           new_first = first_patches(filled.mesh.topology());
+    std::vector<int> new_of_old(size_t(before.plans.n_patches()), -1);
+    for (int g = 0; g < int(hole.n_faces()); ++g)
+      for (int i = old_first[size_t(g)]; i < old_first[size_t(g) + 1]; ++i)
+        new_of_old[size_t(i)] = new_first[size_t(g)] + i - old_first[size_t(g)];
+    PatchPlans updated = after.plans;
+    ASSERT_TRUE(update_patch_adjacency(updated, {}, before.plans.patch_neighbours, new_of_old));
+    EXPECT_EQ(updated.patch_neighbours, after.plans.patch_neighbours) << "face " << f;
+    EXPECT_EQ(updated.corner_owners, after.plans.corner_owners) << "face " << f;
+  }
 }
 
 }  // namespace
