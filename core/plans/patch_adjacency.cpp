@@ -187,7 +187,6 @@ void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, con
   if (has_infinite_sharpness(sharpness)) add_sharp_flags(plans, topology, sharpness, connectivity);
 }
 
-
 bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
                             const std::vector<int>& new_of_old) {
   const int n = plans.corners(), n_patches = plans.n_patches();
