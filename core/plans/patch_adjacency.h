@@ -2,7 +2,8 @@
 // Which patch lies across each patch edge, and which patch owns each patch corner: what the
 // tessellation evaluation shaders need to evaluate every point of a shared edge or corner from one
 // canonical patch at one parameter, so that neighbours generate bit-identical vertices there
-// (shaders/canonical_edge.glsl). Built once per topology from the plan table alone.
+// (shaders/canonical_edge.glsl). Built from the plan table alone, once per topology or, after a
+// change, for the patches it reached (update_patch_adjacency).
 //
 // PatchPlans::patch_neighbours holds 4 ints per patch edge, at 4·(corners·patch + k): edge k runs
 // from patch corner k to corner k+1 (quads: PatchPlans::patch_edges; triangles: the corner points).
