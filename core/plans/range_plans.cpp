@@ -55,7 +55,10 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
 #pragma omp parallel for schedule(dynamic)
   for (size_t r = 0; r < ranges.size(); ++r) {
     const PatchPlans& p = ranges[r].tables.plans;
-    const auto point = [&row = rows[r], n_base](int p) { return p < n_base ? p : row[size_t(p - n_base)]; };
+    // A range's own points follow its own base (a kept range's may be older than the mesh's: its base
+    // vertices kept their indices, core/plans/surface_replanner.cpp).
+    const int own = ranges[r].tables.stencils.n_base;
+    const auto point = [&row = rows[r], own](int p) { return p < own ? p : row[size_t(p - own)]; };
     const int base = int(node_base[r]);
     int32_t* nodes = plans.nodes.data() + node_base[r];
     for (size_t o = 0; o < p.nodes.size();) {  // node records: kind, then children, points or a table

@@ -34,14 +34,18 @@ bool new_index_of(const std::vector<int>& origin, int n_old, int n_new, std::vec
 }
 
 // Renumbers a kept range's points onto the new mesh: base vertex p becomes new_index[p], the range's
-// own rows follow the new base. False if it reads a vertex that is gone (it must be built again).
-bool renumber_range(RangePlans& range, const std::vector<int>& new_index, int n_old, int n_new) {
+// own rows follow the new base. False if it reads a vertex that is gone (it must be built again). Where
+// every old vertex keeps its index (`same_base`) nothing moves: the range's own rows stay after its own
+// n_base, which merge_ranges reads.
+bool renumber_range(RangePlans& range, const std::vector<int>& new_index, bool same_base, int n_new) {
+  if (same_base) return true;
   PatchPlans& p = range.tables.plans;
   StencilTable& s = range.tables.stencils;
+  const int n_own = s.n_base;  // the base the range's points are numbered on
   bool gone = false, moved = false;
   const auto point = [&](int32_t& q) {
-    if (q >= n_old) {
-      q = q - n_old + n_new;
+    if (q >= n_own) {
+      q = q - n_own + n_new;
       return;
     }
     const int w = new_index[size_t(q)];
@@ -293,6 +297,8 @@ int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const
     return n_faces;
   }
 
+  bool same_base = true;  // every old vertex keeps its index (an operation that only adds)
+  for (int v = 0; v < n_old && same_base; ++v) same_base = new_index[size_t(v)] == v;
   // Faces that are still there, corner for corner: old face → new face and back.
   std::vector<int> new_face(size_t(old.n_faces()), -1), old_face(size_t(n_faces), -1);
   for (int f = 0; f < old.n_faces(); ++f) {
@@ -362,7 +368,7 @@ int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const
     if (const int r = kept_at[size_t(g)]; r >= 0) {
       RangePlans& kept = ranges_[size_t(r)];
       const int size = range_first_[size_t(r) + 1] - range_first_[size_t(r)];
-      if (renumber_range(kept, new_index, n_old, n_new)) {
+      if (renumber_range(kept, new_index, same_base, n_new)) {
         old_patch_first.push_back(patch_first_[size_t(r)]);
       } else {
         fresh.push_back(int(ranges.size()));
