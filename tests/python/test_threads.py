@@ -70,8 +70,10 @@ def test_progress_is_reported_and_a_false_answer_cancels(sphere):
     coarse = gpsurf.simplify(sphere, 500, progress=fractions.append)
     assert coarse.n_vertices == 500
     assert fractions[-1] == 1.0 and fractions == sorted(fractions)
+    # Long enough to be asked (progress is polled every 20 ms; the small sphere may finish before).
+    finer = gpsurf.sample("icosphere", 81920)
     with pytest.raises(gpsurf.Cancelled):
-        gpsurf.simplify(sphere, 500, progress=lambda fraction: False)
+        gpsurf.simplify(finer, 500, progress=lambda fraction: False)
 
     def failing(fraction):
         raise ZeroDivisionError("from the callback")
