@@ -92,17 +92,8 @@ private:
 
 CovarianceMesh make_covariance_mesh(const std::vector<Vec3>& means, const std::vector<Mat3>& covariances,
                                     const std::vector<std::vector<int>>& faces, const std::string& source) {
-  PolygonTopology t;
-  size_t n_corners = 0;
-  for (const auto& face : faces) n_corners += face.size();
-  t.offsets.reserve(faces.size() + 1);
-  t.verts.reserve(n_corners);
-  for (const auto& face : faces) {
-    t.verts.insert(t.verts.end(), face.begin(), face.end());
-    t.offsets.push_back(int(t.verts.size()));
-  }
-  return CovarianceMeshAssembly::assemble(std::vector<Vec3>(means), std::vector<Mat3>(covariances), std::move(t),
-                                          nullptr, source, {}, covariances.empty());
+  return CovarianceMeshAssembly::assemble(std::vector<Vec3>(means), std::vector<Mat3>(covariances),
+                                          polygon_topology(faces), nullptr, source, {}, covariances.empty());
 }
 
 CovarianceMesh make_covariance_mesh(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,

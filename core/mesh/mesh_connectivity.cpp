@@ -6,6 +6,19 @@
 
 namespace gps {
 
+PolygonTopology polygon_topology(const std::vector<std::vector<int>>& faces) {
+  PolygonTopology t;
+  size_t n_corners = 0;
+  for (const auto& face : faces) n_corners += face.size();
+  t.offsets.reserve(faces.size() + 1);
+  t.verts.reserve(n_corners);
+  for (const auto& face : faces) {
+    t.verts.insert(t.verts.end(), face.begin(), face.end());
+    t.offsets.push_back(int(t.verts.size()));
+  }
+  return t;
+}
+
 MeshConnectivity edge_connectivity(const PolygonTopology& t) {
   MeshConnectivity c;
   const size_t n_corners = t.verts.size();

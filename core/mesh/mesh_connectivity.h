@@ -20,6 +20,9 @@ struct PolygonTopology {
   int face_size(int f) const { return offsets[size_t(f) + 1] - offsets[size_t(f)]; }
 };
 
+/// Faces given as vertex-index lists, in compressed form (n_vertices left 0 for the caller to set).
+PolygonTopology polygon_topology(const std::vector<std::vector<int>>& faces);
+
 /// Edges and incidences of a PolygonTopology. Edge e joins edge_verts[2e] < edge_verts[2e+1];
 /// edge_faces[2e+1] is −1 on a boundary edge. face_edges parallels verts: the edge from corner k to k+1.
 struct MeshConnectivity {

@@ -23,21 +23,6 @@ Sharpness sharpness_on_edges(const MeshArrays& a, const CovarianceMesh& mesh) {
   return out;
 }
 
-// The faces as a compressed topology.
-PolygonTopology topology_of(const MeshArrays& a) {
-  PolygonTopology t;
-  t.n_vertices = a.n_vertices();
-  size_t n_corners = 0;
-  for (const auto& face : a.faces) n_corners += face.size();
-  t.offsets.reserve(a.faces.size() + 1);
-  t.verts.reserve(n_corners);
-  for (const auto& face : a.faces) {
-    t.verts.insert(t.verts.end(), face.begin(), face.end());
-    t.offsets.push_back(int(t.verts.size()));
-  }
-  return t;
-}
-
 }  // namespace
 
 int MeshArrays::add_vertex(const Gaussian& g) {
@@ -87,7 +72,7 @@ CovarianceMesh build_mesh(const MeshArrays& a, const CovarianceMesh& before) {
   const char* const source = "the result would not be a valid mesh";
   try {
     CovarianceMesh m = make_covariance_mesh(before, std::vector<Vec3>(a.means), std::vector<Mat3>(a.covariances),
-                                            topology_of(a), {origin, a.face_origin}, source);
+                                            polygon_topology(a.faces), {origin, a.face_origin}, source);
     // The Gaussians that are new or changed; the others were checked when `before` was made.
     for (size_t v = 0; v < m.n_vertices(); ++v) {
       const int o = origin[v];

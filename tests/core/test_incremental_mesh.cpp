@@ -38,12 +38,8 @@ struct Changed {
 };
 
 PolygonTopology topology_of(const Faces& faces, int n_vertices) {
-  PolygonTopology t;
+  PolygonTopology t = polygon_topology(faces);
   t.n_vertices = n_vertices;
-  for (const auto& face : faces) {
-    t.verts.insert(t.verts.end(), face.begin(), face.end());
-    t.offsets.push_back(int(t.verts.size()));
-  }
   return t;
 }
 
