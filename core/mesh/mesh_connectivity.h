@@ -67,9 +67,9 @@ struct CornerLinks {
 CornerLinks corner_links(const PolygonTopology& topology, const MeshConnectivity& c);
 
 /// Throws gps::Error naming `source` and the first face or vertex where `t` (whose connectivity is
-/// `c`, with or without the vertices' rows) is not a manifold surface: an edge with more than two faces, two faces running an edge the
-/// same way (one flipped), a vertex whose faces form more than one fan, or two faces sharing all
-/// their edges.
+/// `c`, with or without the vertices' rows) is not a manifold surface: an edge with more than two
+/// faces, two faces running an edge the same way (one flipped), a vertex whose faces form more than
+/// one fan, or two faces sharing all their edges.
 void check_manifold(const PolygonTopology& t, const MeshConnectivity& c, const std::string& source,
                     const ElementNames& names = {});
 
