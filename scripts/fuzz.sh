@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of the file readers (clang, ASan + UBSan) into build-fuzz/ and runs
-# each for SECONDS seconds (default 30) from the seeds in fuzz/corpus/READER. New inputs the fuzzer
-# finds go to build-fuzz/corpus/READER (not into the repository); a crash leaves its input in
-# build-fuzz/ and ends the script with a non-zero status.
+# Builds the libFuzzer targets of the file readers (clang, ASan + UBSan) in the sanitizer build,
+# build-asan/ (scripts/configure_asan.sh; configured here unless scripts/sanitize.sh did), and runs
+# each for SECONDS seconds (default 30) from the seeds in fuzz/corpus/READER, two at a time. New inputs
+# the fuzzer finds go to build-asan/corpus/READER (not into the repository); a crash leaves its input
+# in build-asan/ and ends the script with a non-zero status.
 #   scripts/fuzz.sh [SECONDS] [READER...]     READER: ply obj off stl gltf (default: all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -10,22 +11,35 @@ seconds="${1:-30}"
 shift || true
 readers=("${@:-ply obj off stl gltf}")
 read -r -a readers <<< "${readers[*]}"
-source scripts/compiler_cache.sh
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGPSURF_BUILD_FUZZ=ON \
-  -DGPSURF_BUILD_TESTS=OFF -DGPSURF_BUILD_BENCH=OFF -DGPSURF_BUILD_GL=OFF -DGPSURF_BUILD_PYTHON=OFF "${launcher[@]}" >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target "${readers[@]/#/fuzz_}"
-for r in "${readers[@]}"; do
-  mkdir -p "build-fuzz/corpus/$r"
-  echo "fuzzing the $r reader for ${seconds} s"
-  # -rss_limit_mb: a reader must stay far below this on inputs of at most -max_len bytes.
-  log="build-fuzz/fuzz-$r.log"
-  if ! ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    "build-fuzz/fuzz/fuzz_$r" "build-fuzz/corpus/$r" "fuzz/corpus/$r" -max_total_time="$seconds" \
-    -max_len=65536 -rss_limit_mb=2048 -timeout=10 -artifact_prefix="build-fuzz/crash-$r-" -print_final_stats=1 >"$log" 2>&1; then
+if ! grep -qs "^GPSURF_BUILD_FUZZ:BOOL=ON" build-asan/CMakeCache.txt; then
+  source scripts/configure_asan.sh
+fi
+cmake --build build-asan -j"$(nproc)" --target "${readers[@]/#/fuzz_}"
+# One reader: runs it, then prints its figures or, on a failure, the end of its log.
+fuzz_one() {
+  local r=$1 log="build-asan/fuzz-$1.log"
+  mkdir -p "build-asan/corpus/$r"
+  # -rss_limit_mb: a reader must stay far below this on inputs of at most -max_len bytes. The ASan
+  # runtime is a shared library in this build, which libFuzzer's own objects come before.
+  if ! ASAN_OPTIONS=detect_leaks=1:verify_asan_link_order=0 UBSAN_OPTIONS=print_stacktrace=1 \
+    "build-asan/fuzz/fuzz_$r" "build-asan/corpus/$r" "fuzz/corpus/$r" -max_total_time="$seconds" \
+    -max_len=65536 -rss_limit_mb=2048 -timeout=10 -artifact_prefix="build-asan/crash-$r-" -print_final_stats=1 >"$log" 2>&1; then
     tail -n 40 "$log"
-    echo "the $r fuzzer found a failure (input in build-fuzz/crash-$r-*)"
-    exit 1
+    echo "the $r fuzzer found a failure (input in build-asan/crash-$r-*)"
+    return 1
   fi
-  grep -E "^stat::(number_of_executed_units|peak_rss_mb)" "$log" | tr '\n' ' '
-  echo
+  echo "fuzzed the $r reader for ${seconds} s: $(grep -E "^stat::(number_of_executed_units|peak_rss_mb)" "$log" | tr '\n' ' ')"
+}
+# As many readers at once as there are cores, each fuzzer being one process.
+status=0
+pids=()
+for r in "${readers[@]}"; do
+  fuzz_one "$r" &
+  pids+=($!)
+  if [ "${#pids[@]}" -ge "$(nproc)" ]; then
+    wait "${pids[0]}" || status=1
+    pids=("${pids[@]:1}")
+  fi
 done
+for pid in "${pids[@]}"; do wait "$pid" || status=1; done
+exit "$status"

@@ -7,10 +7,6 @@
 #   scripts/sanitize.sh [--all]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-gl_tests="surface_renderer;surface_edits;surface_cache;picking;render_cli;exclusive_scan;ellipsoid_overlay;shared_basis"
-# The editor's windows: the command line, creases, and the random-input soak (first views and the
-# modelling replays, minutes under ASan, run in the plain suite and with --all).
-window_tests="editor;editor_creases;editor_soak;window_context"
 # The thin-Gaussian torus test renders its tori many ways: minutes under ASan for a path the other
 # RenderCli tests take too (run in the plain suite and with --all).
 skipped=(-E 'RenderCli\.ThinGaussiansOfOneOrientation')
@@ -19,16 +15,7 @@ if [ "${1:-}" = "--all" ]; then
   window_tests=""
   skipped=()
 fi
-source scripts/compiler_cache.sh
-# Line tables only (-g1): a report still names functions, files and lines at a fraction of the disk.
-# -O1, ASan's usual level: a much shorter build for a slightly slower suite. Clang, as the fuzzers: it
-# compiles the instrumented tests in about a third of gcc's time.
-if [ -f build-asan/CMakeCache.txt ] && ! grep -q "^CMAKE_CXX_COMPILER:FILEPATH=.*clang++" build-asan/CMakeCache.txt; then
-  rm -rf build-asan  # configured with another compiler, which a cache keeps
-fi
-CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DGPSURF_SANITIZE=ON -DGPSURF_BUILD_BENCH=OFF -DGPSURF_BUILD_PYTHON=OFF \
-  -DGPSURF_TEST_FOLDERS="core;app;render;ui;window" -DGPSURF_GL_TESTS="$gl_tests" -DGPSURF_WINDOW_TESTS="$window_tests" "${launcher[@]}" >/dev/null
+source scripts/configure_asan.sh
 cmake --build build-asan -j"$(nproc)"
 # Libraries stay loaded until exit (scripts/no_dlclose.c), so leaks in them name their module.
 cc -shared -fPIC -O1 -o build-asan/no_dlclose.so scripts/no_dlclose.c

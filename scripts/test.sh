@@ -6,7 +6,7 @@
 # (scripts/fuzz.sh). Every test runs at least once. Each stage prints how long it took.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# The three builds below (plain, ASan, fuzz) take a few GB of disk together.
+# The two builds below (plain; ASan with the fuzzers) take a few GB of disk together.
 free_kb=$(df -Pk . | awk 'NR == 2 {print $4}')
 if [ "$free_kb" -lt $((2 * 1024 * 1024)) ]; then
   echo "warning: $((free_kb / 1024)) MB free in $PWD; a full test run's builds take a few GB" >&2
@@ -27,5 +27,5 @@ stage "tests" bash -c 'cd build && ctest --output-on-failure -j"$(nproc)" --time
 # Every test of core, app and ui and representative GL and window sets under ASan + UBSan, leaks
 # checked (Mesa's own in scripts/lsan.supp), into build-asan/.
 stage "sanitizers" scripts/sanitize.sh
-# Every file reader under libFuzzer for 20 s each.
+# Every file reader under libFuzzer for 20 s each, in the sanitizer build.
 stage "fuzzing" scripts/fuzz.sh 20
