@@ -211,8 +211,11 @@ TEST(RepairProperty, RandomSoupsWithEveryDefectBuildWithTheCountsTheRepairReport
     EXPECT_EQ(m.topology().verts, repaired.faces.verts) << "the faces as the repair left them";
   }
   // Every class but the unorientable parts came up in many soups; nearly all soups were built.
-  for (int d = 0; d < kDefectCount; ++d)
-    if (Defect(d) != Defect::unorientable_parts) EXPECT_GE(soups_with[size_t(d)], kSoups / 10) << "defect " << d;
+  for (int d = 0; d < kDefectCount; ++d) {
+    if (Defect(d) != Defect::unorientable_parts) {
+      EXPECT_GE(soups_with[size_t(d)], kSoups / 10) << "defect " << d;
+    }
+  }
   EXPECT_GE(built, kSoups * 3 / 4);
   EXPECT_EQ(built + unorientable, kSoups);
 }
