@@ -60,6 +60,17 @@ void NormalisedFrame::to_frame(const CovarianceMesh& mesh, const std::vector<int
   }
 }
 
+std::vector<int> changed_gaussians(const FramedGaussians& before, const FramedGaussians& after,
+                                   const std::vector<int>& origin) {
+  std::vector<int> changed;
+  for (size_t v = 0; v < after.n_vertices(); ++v) {
+    const size_t o = origin.empty() ? v : size_t(origin[v]);  // −1: past every vertex
+    if (o >= before.n_vertices() || after.means[v] != before.means[o] || after.covariances[v] != before.covariances[o])
+      changed.push_back(int(v));
+  }
+  return changed;
+}
+
 glm::dmat4 NormalisedFrame::world_from_frame() const {
   glm::dmat4 m(unit);
   m[3] = glm::dvec4(centre, 1.0);

@@ -20,6 +20,11 @@ struct FramedGaussians {
   const Mat3& covariance(size_t v) const { return covariances[v]; }
 };
 
+/// The vertices (increasing) of `after` whose Gaussian is not `before`'s at their `origin`: the
+/// changed and the new ones (origin −1). An empty `origin` keeps each vertex's number.
+std::vector<int> changed_gaussians(const FramedGaussians& before, const FramedGaussians& after,
+                                   const std::vector<int>& origin);
+
 struct NormalisedFrame {
   glm::dvec3 centre{0.0};
   double unit = 1.0;  // world length of one frame unit: the bounding box's diagonal

@@ -16,6 +16,17 @@ MeshPointPrecision::MeshPointPrecision(const FramedGaussians& gaussians) : thin_
   }
 }
 
+MeshPointPrecision::MeshPointPrecision(const MeshPointPrecision& before, const FramedGaussians& gaussians,
+                                       const std::vector<int>& origin, const std::vector<int>& changed)
+    : thin_(gaussians.n_vertices(), 0) {
+  for (size_t v = 0; v < thin_.size(); ++v) {
+    const size_t o = origin.empty() ? v : size_t(origin[v]);  // −1: a new vertex, among the changed
+    if (o < before.thin_.size()) thin_[v] = before.thin_[o];
+  }
+  for (const int v : changed) thin_[size_t(v)] = needs_double_points(gaussians.covariance(size_t(v))) ? 1 : 0;
+  for (const char thin : thin_) thin_count_ += size_t(thin);
+}
+
 void MeshPointPrecision::update(const FramedGaussians& gaussians, const std::vector<int>& changed) {
   for (const int v : changed) {
     const char thin = needs_double_points(gaussians.covariance(size_t(v))) ? 1 : 0;

@@ -46,17 +46,14 @@ std::vector<char> patches_not_kept_alike(const PatchPlans& before, const PatchPl
 }
 
 std::vector<int> stale_corner_patches(const SurfaceTables& before, const SurfaceTables& after,
-                                      const StencilDependents& dependents, const FramedGaussians& before_framed,
-                                      const FramedGaussians& after_framed, const std::vector<KeptPatches>& kept,
-                                      const std::vector<int>& origin) {
+                                      const StencilDependents& dependents, const std::vector<int>& changed_or_new,
+                                      const std::vector<KeptPatches>& kept, const std::vector<int>& origin) {
   std::vector<char> evaluate = patches_not_kept_alike(before.plans, after.plans, kept);
-  const int n_base = int(after_framed.n_vertices()), n_patches = after.plans.n_patches();
+  const int n_base = after.stencils.n_base, n_patches = after.plans.n_patches();
   std::vector<int> changed;
-  for (int v = 0; v < n_base; ++v) {
+  for (const int v : changed_or_new) {
     const size_t o = size_t(origin.empty() ? v : origin[size_t(v)]);  // −1: past every vertex
-    if (o < before_framed.n_vertices() && (after_framed.means[size_t(v)] != before_framed.means[o] ||
-                                           after_framed.covariances[size_t(v)] != before_framed.covariances[o]))
-      changed.push_back(v);
+    if (o < size_t(before.stencils.n_base)) changed.push_back(v);
   }
   if (update_everything(changed.size(), size_t(n_base))) {
     std::fill(evaluate.begin(), evaluate.end(), 1);

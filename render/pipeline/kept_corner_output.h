@@ -9,7 +9,6 @@
 #include "core/plans/patch_plans.h"
 #include "core/plans/stencil_table.h"
 #include "core/plans/surface_replanner.h"
-#include "render/gl/normalised_frame.h"
 
 namespace gps {
 
@@ -23,12 +22,11 @@ std::vector<char> patches_not_kept_alike(const PatchPlans& before, const PatchPl
                                          const std::vector<KeptPatches>& kept);
 
 /// The patches of `after` (sorted) whose corner-pass output must be evaluated again: those of
-/// patches_not_kept_alike, and the kept ones that read a vertex whose Gaussian changed (`after_framed`
-/// against `before_framed` at the vertex's `origin`, as SurfaceRenderer::set_mesh takes it) or a
-/// stencil row that reads one (`dependents`: of after's stencils). A new vertex no kept plan reads.
+/// patches_not_kept_alike, and the kept ones that read a vertex whose Gaussian changed (`changed`,
+/// as changed_gaussians gives it for the vertices' `origin`, as SurfaceRenderer::set_mesh takes it)
+/// or a stencil row that reads one (`dependents`: of after's stencils). A new vertex no kept plan reads.
 std::vector<int> stale_corner_patches(const SurfaceTables& before, const SurfaceTables& after,
-                                      const StencilDependents& dependents, const FramedGaussians& before_framed,
-                                      const FramedGaussians& after_framed, const std::vector<KeptPatches>& kept,
-                                      const std::vector<int>& origin);
+                                      const StencilDependents& dependents, const std::vector<int>& changed,
+                                      const std::vector<KeptPatches>& kept, const std::vector<int>& origin);
 
 }  // namespace gps

@@ -138,6 +138,50 @@ void PlanBuffers::upload_gaussians(const FramedGaussians& gaussians) {
 }
 
 template <class Real>
+void PlanBuffers::carry_gaussians_as(const FramedGaussians& gaussians, const std::vector<int>& origin,
+                                     const std::vector<int>& changed) {
+  constexpr size_t stride = kGaussianReals<Real> * sizeof(Real);
+  const size_t n = gaussians.n_vertices();
+  const GlBuffer before = std::exchange(buffers_[kBindingGaussians], GlBuffer());
+  sizes_[kBindingGaussians] = std::max<size_t>(sizeof(Real), n * stride);
+  glNamedBufferData(buffers_[kBindingGaussians], GLsizeiptr(sizes_[kBindingGaussians]), nullptr, GL_DYNAMIC_DRAW);
+  std::vector<char> is_changed(n, 0);
+  for (const int v : changed) is_changed[size_t(v)] = 1;
+  const auto origin_of = [&](size_t v) { return origin.empty() ? long(v) : long(origin[v]); };
+  // Runs of unchanged vertices whose origins are consecutive too.
+  for (size_t v = 0; v < n;) {
+    if (is_changed[v]) {
+      ++v;
+      continue;
+    }
+    size_t end = v + 1;
+    while (end < n && !is_changed[end] && origin_of(end) == origin_of(end - 1) + 1) ++end;
+    glCopyNamedBufferSubData(before, buffers_[kBindingGaussians], GLintptr(stride * size_t(origin_of(v))),
+                             GLintptr(stride * v), GLsizeiptr(stride * (end - v)));
+    v = end;
+  }
+  // The changed ones in runs of consecutive vertices, one upload each.
+  std::vector<Real> values;
+  for (size_t i = 0; i < changed.size();) {
+    size_t j = i + 1;
+    while (j < changed.size() && changed[j] == changed[j - 1] + 1) ++j;
+    values.resize((j - i) * kGaussianReals<Real>);
+    for (size_t k = i; k < j; ++k) gaussian_of(gaussians, size_t(changed[k]), &values[(k - i) * kGaussianReals<Real>]);
+    glNamedBufferSubData(buffers_[kBindingGaussians], GLintptr(stride * size_t(changed[i])),
+                         GLsizeiptr(values.size() * sizeof(Real)), values.data());
+    i = j;
+  }
+}
+
+void PlanBuffers::carry_gaussians(const FramedGaussians& gaussians, const std::vector<int>& origin,
+                                  const std::vector<int>& changed) {
+  if (precision_ == PointPrecision::double_float)
+    carry_gaussians_as<double>(gaussians, origin, changed);
+  else
+    carry_gaussians_as<float>(gaussians, origin, changed);
+}
+
+template <class Real>
 void PlanBuffers::update_gaussians_as(const FramedGaussians& gaussians, const std::vector<int>& changed) {
   for (const int v : changed) {
     Real values[kGaussianReals<Real>];

@@ -39,6 +39,11 @@ public:
   void upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept = {});
   /// Every base vertex's μ and Σ.
   void upload_gaussians(const FramedGaussians& gaussians);
+  /// Every base vertex's μ and Σ after a change of topology, in the precision of the buffer before:
+  /// a vertex not among the `changed` (changed_gaussians, which new vertices are among) takes its
+  /// `origin`'s values from that buffer, copied on the GPU in runs; the changed ones are uploaded.
+  void carry_gaussians(const FramedGaussians& gaussians, const std::vector<int>& origin,
+                       const std::vector<int>& changed);
   /// The `changed` vertices' μ and Σ.
   void update_gaussians(const FramedGaussians& gaussians, const std::vector<int>& changed);
   /// An edit's changed vertices and the stencil rows that read them, for the listed compute passes.
@@ -67,6 +72,9 @@ private:
   void allocate_zeroed(int binding, size_t bytes);
   template <class Real>
   void upload_gaussians_as(const FramedGaussians& gaussians);
+  template <class Real>
+  void carry_gaussians_as(const FramedGaussians& gaussians, const std::vector<int>& origin,
+                          const std::vector<int>& changed);
   template <class Real>
   void update_gaussians_as(const FramedGaussians& gaussians, const std::vector<int>& changed);
   template <class T>

@@ -37,14 +37,19 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
                                const PlanChange& change, const std::vector<int>& origin) {
   // Refused before anything changes: the renderer keeps drawing the previous mesh.
   FramedGaussians framed = frame.gaussians_in_frame(mesh);
-  MeshPointPrecision point_precision(framed);
+  // In the same frame, what the unchanged Gaussians gave is carried to where they went.
+  const bool carry =
+      frame == frame_ && framed_.n_vertices() > 0 && (origin.empty() || origin.size() == mesh.n_vertices());
+  const std::vector<int> changed = carry ? changed_gaussians(framed_, framed, origin) : std::vector<int>{};
+  MeshPointPrecision point_precision =
+      carry ? MeshPointPrecision(point_precision_, framed, origin, changed) : MeshPointPrecision(framed);
   PlanBuffers::check_fits(surface_tables, int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_,
                           point_precision.precision());
   // The corner pass's output of the kept patches holds where it was computed alike.
   const std::vector<KeptPatches>& kept = change.kept;
-  const bool keep = change.from != 0 && change.from == tables_id_ && !kept.empty() && frame == frame_ &&
-                    point_precision.precision() == buffers_.precision() && surface_tables.plans.shape == shape() &&
-                    (origin.empty() || origin.size() == mesh.n_vertices()) &&
+  const bool same_precision = point_precision.precision() == buffers_.precision();
+  const bool keep = change.from != 0 && change.from == tables_id_ && !kept.empty() && carry && same_precision &&
+                    surface_tables.plans.shape == shape() &&
                     kept_runs_fit(kept, n_patches(), surface_tables.plans.n_patches());
   use_point_precision(point_precision.precision());
   point_precision_ = std::move(point_precision);
@@ -59,13 +64,16 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   frame_ = frame;
   patches_.set_frame(frame_);
   cache_.set_frame(frame_);
-  const FramedGaussians before_framed = std::exchange(framed_, std::move(framed));
-  buffers_.upload_gaussians(framed_);
+  framed_ = std::move(framed);
+  if (carry && same_precision && !update_everything(changed.size(), framed_.n_vertices()))
+    buffers_.carry_gaussians(framed_, origin, changed);
+  else
+    buffers_.upload_gaussians(framed_);
   ellipsoids_current_ = false;           // uploaded when first drawn: most frames draw none
   cage_.set_mesh(mesh, framed_);         // the overlays too are drawn in the frame
   cache_.set_cage(mesh, framed_, keep);  // projected with the frame's view-projection
   if (keep)
-    run_compute_kept(before, before_framed, kept, origin);
+    run_compute_kept(before, changed, kept, origin);
   else
     run_compute(nullptr);
 }
@@ -146,13 +154,13 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
     cache_.points_changed(points_generation_, nullptr);
 }
 
-void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const FramedGaussians& before_framed,
+void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::vector<int>& changed,
                                        const std::vector<KeptPatches>& kept, const std::vector<int>& origin) {
   const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   const PatchPlans& plans = tables().plans;
   const std::vector<int> patches =
-      stale_corner_patches(before, tables(), dependents_, before_framed, framed_, kept, origin);
+      stale_corner_patches(before, tables(), dependents_, changed, kept, origin);
   const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
   buffers_.upload_corner_list(corners);
   buffers_.bind();

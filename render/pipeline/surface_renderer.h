@@ -52,7 +52,8 @@ public:
   /// vertex's index in the previous mesh (`origin`, as the replanner took it; empty: the same index):
   /// as set_mesh, bit for bit. Where this renderer shows the tables the change went from, in the same
   /// frame and precision, the corner pass evaluates again only the patches whose plans, neighbours or
-  /// points changed, and copies the others' output; otherwise everything.
+  /// points changed, and copies the others' output; otherwise everything. In the same frame and
+  /// precision, the base Gaussians that did not change are copied on the GPU, not uploaded again.
   void set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame,
                 const PlanChange& change, const std::vector<int>& origin);
   /// The same with the tables of `surface`, in the mesh's own frame.
@@ -134,9 +135,9 @@ private:
   /// where set, which the surface cache follows as such).
   void run_compute(const std::vector<int>* changed, bool edit = false);
   /// The compute passes after a change of topology that kept `kept` patches of `before` (the previous
-  /// tables), whose Gaussians in the frame were `before_framed` (`origin`: as set_mesh takes it): every
-  /// point, and the corners of the patches whose output is not kept.
-  void run_compute_kept(const SurfaceTables& before, const FramedGaussians& before_framed,
+  /// tables), where the `changed` vertices' Gaussians are new or changed (changed_gaussians; `origin`:
+  /// as set_mesh takes it): every point, and the corners of the patches whose output is not kept.
+  void run_compute_kept(const SurfaceTables& before, const std::vector<int>& changed,
                         const std::vector<KeptPatches>& kept, const std::vector<int>& origin);
   /// The programs and buffers of every pass for points of `precision` (the buffers still to upload);
   /// where the driver refuses a program, throws gps::Error with every pass as it was.

@@ -32,50 +32,79 @@ void expect_as_set_anew(const SurfaceRenderer& renderer, const CovarianceMesh& m
   EXPECT_TRUE(renderer.read_points() == fresh.read_points()) << where << ": plan points";
 }
 
+// Corner slots the corner pass evaluated, and all it had, over a run of operations.
+struct Evaluated {
+  long long evaluated = 0, slots = 0;
+};
+
+// Up to `operations` random operations on `mesh` (the first moves two vertices' Gaussians, which keeps
+// every plan), each followed, undone and redone by one renderer in one frame, as the bench's meshes
+// keep theirs, and checked against a renderer set anew after each. Returns how many applied.
+int follow_random_operations(CovarianceMesh mesh, Scheme scheme, int operations, const std::string& name,
+                             Evaluated& figures) {
+  PlanOptions options;
+  options.scheme = scheme;
+  const NormalisedFrame frame = NormalisedFrame::of(mesh);
+  SurfaceReplanner replanner(mesh.topology(), options, mesh.sharpness, test::kSmallRanges);
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), {});
+  std::mt19937 random(5);
+  int applied = 0;
+  for (int step = 0; step < 40 && applied < operations; ++step) {
+    Modelled result;
+    try {
+      result = step == 0 ? transform_vertices(mesh, {0, 1}, AffineMap::about(mesh.mean(0), 0.7 * Mat3::Identity()))
+                         : test::random_operation(mesh, random);
+      replanner.set_topology(result.mesh.topology(), result.mesh.sharpness, result.vertex_origin);
+    } catch (const Error&) {
+      continue;  // refused by the operation or the scheme: nothing to show
+    }
+    ++applied;
+    const std::string where = name + ", step " + std::to_string(step) + " (" + result.summary + ")";
+    renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+    figures.evaluated += renderer.last_corner_slots();
+    figures.slots += renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
+    expect_as_set_anew(renderer, result.mesh, frame, where);
+    const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
+    replanner.set_topology(mesh.topology(), mesh.sharpness, back);
+    renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), back);
+    expect_as_set_anew(renderer, mesh, frame, where + ", undone");
+    replanner.set_topology(result.mesh.topology(), result.mesh.sharpness, result.vertex_origin);
+    renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+    expect_as_set_anew(renderer, result.mesh, frame, where + ", redone");
+    mesh = std::move(result.mesh);
+  }
+  return applied;
+}
+
 TEST_F(IncrementalGpuBuffers, RandomOperationsMatchARendererSetAnew) {
   for (const test::RandomOperationCase& c : test::random_operation_cases()) {
-    PlanOptions options;
-    options.scheme = c.scheme;
-    CovarianceMesh mesh = c.mesh;
-    // One frame throughout, as the bench's meshes keep theirs: the kept output is only for the same frame.
-    const NormalisedFrame frame = NormalisedFrame::of(mesh);
-    SurfaceReplanner replanner(mesh.topology(), options, mesh.sharpness, test::kSmallRanges);
-    SurfaceRenderer renderer;
-    renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), {});
-    std::mt19937 random(5);
-    int applied = 0;
-    long long evaluated = 0, slots = 0;
-    for (int step = 0; step < 40 && applied < c.operations / 2; ++step) {
-      Modelled result;
-      try {
-        // First two vertices' Gaussians moved (the plans all kept), then operations of every kind.
-        result = step == 0 ? transform_vertices(mesh, {0, 1}, AffineMap::about(mesh.mean(0), 0.7 * Mat3::Identity()))
-                           : test::random_operation(mesh, random);
-        replanner.set_topology(result.mesh.topology(), result.mesh.sharpness, result.vertex_origin);
-      } catch (const Error&) {
-        continue;  // refused by the operation or the scheme: nothing to show
-      }
-      ++applied;
-      const std::string where = c.name + ", step " + std::to_string(step) + " (" + result.summary + ")";
-      renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
-      evaluated += renderer.last_corner_slots();
-      slots += renderer.tables().plans.corners() * renderer.tables().plans.n_patches();
-      expect_as_set_anew(renderer, result.mesh, frame, where);
-      const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
-      replanner.set_topology(mesh.topology(), mesh.sharpness, back);
-      renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), back);
-      expect_as_set_anew(renderer, mesh, frame, where + ", undone");
-      replanner.set_topology(result.mesh.topology(), result.mesh.sharpness, result.vertex_origin);
-      renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
-      expect_as_set_anew(renderer, result.mesh, frame, where + ", redone");
-      mesh = std::move(result.mesh);
-    }
-    EXPECT_GE(applied, c.operations / 2 - 2) << c.name;
+    Evaluated figures;
+    EXPECT_GE(follow_random_operations(c.mesh, c.scheme, c.operations / 2, c.name, figures), c.operations / 2 - 2)
+        << c.name;
     // Loop's smooth builder plans the whole mesh, and keeps nothing; a few dozen faces are all reached.
     if (c.name != "icosphere (smooth triangles)" && c.mesh.n_faces() > 200) {
-      EXPECT_LT(evaluated, slots / 2) << c.name << ": most corners kept their output";
+      EXPECT_LT(figures.evaluated, figures.slots / 2) << c.name << ": most corners kept their output";
     }
   }
+}
+
+// Gaussians thin enough for double points: the unchanged ones are carried in double, and where a
+// change makes the first thin Gaussian (or removes the last) everything is uploaded in the new precision.
+TEST_F(IncrementalGpuBuffers, ThinGaussiansAreCarriedInDoublePoints) {
+  const Mat3 flat = Vec3(1.0, 1.0, 1e-4).asDiagonal();  // condition 1e8 times the Gaussian's own
+  CovarianceMesh thin = make_sample("sphere", 400);
+  for (size_t v = 0; v < thin.n_vertices(); ++v) thin.set_covariance(v, flat * thin.covariance(v) * flat);
+  CovarianceMesh one_thin = make_sample("sphere", 400);
+  one_thin.set_covariance(7, flat * one_thin.covariance(7) * flat);
+  {
+    SurfaceRenderer renderer;
+    renderer.set_mesh(thin, build_surface_plans(thin, {}), NormalisedFrame::of(thin));
+    ASSERT_EQ(renderer.point_precision(), PointPrecision::double_float);
+  }
+  Evaluated figures;
+  EXPECT_GE(follow_random_operations(thin, Scheme::catmull_clark, 8, "thin sphere", figures), 6);
+  EXPECT_GE(follow_random_operations(one_thin, Scheme::catmull_clark, 8, "sphere with one thin Gaussian", figures), 6);
 }
 
 // The kept output is only for the tables the renderer shows: tables it was not given by the replanner
