@@ -11,6 +11,7 @@
 #include "render/pipeline/kept_corner_output.h"
 #include "render/pipeline/kept_surface_triangles.h"
 #include "render/gl/gl_context.h"
+#include "render/gl/image_texture.h"
 #include "render/image/matcap.h"
 #include "shaders/embedded_shaders.h"
 
@@ -159,8 +160,7 @@ void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::v
   const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   const PatchPlans& plans = tables().plans;
-  const std::vector<int> patches =
-      stale_corner_patches(before, tables(), dependents_, changed, kept, origin);
+  const std::vector<int> patches = stale_corner_patches(before, tables(), dependents_, changed, kept, origin);
   const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
   buffers_.upload_corner_list(corners);
   buffers_.bind();
@@ -183,21 +183,7 @@ std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& change
 }
 
 void SurfaceRenderer::set_matcap(const Image& m) {
-  matcap_ = GlTexture(GL_TEXTURE_2D);  // its storage is immutable: a new texture per MatCap
-  glTextureStorage2D(matcap_, 1, GL_RGBA32F, m.width, m.height);
-  // Image rows run top-down; texture rows bottom-up, so that v = 0.5·n.y + 0.5 points up.
-  std::vector<float> rgba(size_t(m.width) * size_t(m.height) * 4, 1.0f);
-  for (int y = 0; y < m.height; ++y)
-    for (int x = 0; x < m.width; ++x)
-      for (int c = 0; c < 3; ++c)
-        rgba[(size_t(m.height - 1 - y) * size_t(m.width) + size_t(x)) * 4 + size_t(c)] =
-            m.at(x, y, std::min(c, m.channels - 1));
-  glTextureSubImage2D(matcap_, 0, 0, 0, m.width, m.height, GL_RGBA, GL_FLOAT, rgba.data());
-  glTextureParameteri(matcap_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(matcap_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(matcap_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(matcap_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  check_gl_errors("uploading the MatCap");
+  matcap_ = image_texture(m);  // its storage is immutable: a new texture per MatCap
 }
 
 void SurfaceRenderer::set_collect_statistics(bool collect) {
