@@ -360,7 +360,9 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
         sigma = linear * sigma * linear.transpose();
         if (const std::string why = covariance_problem(sigma); !why.empty())
           throw Error(where + ": vertex " + std::to_string(i) + " _COVARIANCE " + why);
-        soup.covariances.push_back(sigma);
+        // Kept as the check read it, its lower triangle mirrored: a matrix symmetric only within
+        // rounding would otherwise be saved (upper triangle) as another, which the check may refuse.
+        soup.covariances.push_back(sigma.selfadjointView<Eigen::Lower>());
       }
       AccessorBytes indices;
       size_t n = points.count;

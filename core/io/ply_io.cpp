@@ -618,8 +618,10 @@ void write_ply(std::ostream& out, const CovarianceMesh& m, bool binary) {
   char buffer[32];
   for (size_t i = 0; i < m.n_vertices(); ++i) {
     const Vec3 p = m.mean(i);
+    // Σ's lower triangle, which the check of a covariance (covariance_problem) and the solvers read: a
+    // Σ symmetric only within rounding is saved as it was accepted.
     const Mat3& c = m.covariances[i];
-    const double values[9] = {p.x(), p.y(), p.z(), c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
+    const double values[9] = {p.x(), p.y(), p.z(), c(0, 0), c(1, 0), c(2, 0), c(1, 1), c(2, 1), c(2, 2)};
     for (int k = 0; k < 9; ++k) {
       if (binary) {
         put_little_endian(out, values[k]);

@@ -292,6 +292,33 @@ TEST(GltfIo, CovariancesFollowTheNodeTransform) {
   for (const Mat3& c : m.covariances) EXPECT_LT((c - expected).cwiseAbs().maxCoeff(), 1e-15) << c;
 }
 
+// A covariance symmetric only within rounding is kept as the check read it (its lower triangle), so
+// that a save writes what was accepted: here the upper triangle's tiny xz would make the saved Σ one
+// whose smallest eigenvalue (1e-38 of its largest) the check no longer resolves from zero.
+TEST(GltfIo, ANearlySymmetricCovarianceIsKeptAsCheckedAndSavesAsItLoads) {
+  test::TempDir dir;
+  HandMade h = split_cube();
+  std::vector<float> covariances;
+  for (int v = 0; v < 24; ++v) {
+    Mat3 sigma = Vec3(1.0, v == 5 ? 1.1754943508222875e-38 : 1.0, 1.0).asDiagonal();
+    if (v == 5) sigma(0, 2) = 8.8e-44;  // column-major: the upper triangle's xz
+    for (int k = 0; k < 9; ++k) covariances.push_back(float(sigma(k % 3, k / 3)));
+  }
+  const size_t offset = h.bin.size();
+  h.append(covariances);
+  h.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", covariances.size() * 4}});
+  h.j["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 24}, {"type", "MAT3"}});
+  h.j["meshes"][0]["primitives"][0]["attributes"]["_COVARIANCE"] = 2;
+  dir.write("near.glb", h.glb());
+  const CovarianceMesh m = read_mesh(dir.file("near.glb"));
+  for (const Mat3& c : m.covariances) EXPECT_EQ(c, c.transpose()) << c;
+  for (const auto& [name, binary] : {std::pair{"near.ply", true}, {"near_ascii.ply", false}, {"near.obj", false},
+                                     {"near_again.glb", false}}) {
+    write_mesh(dir.file(name), m, binary);
+    EXPECT_NO_THROW(read_mesh(dir.file(name))) << name;
+  }
+}
+
 TEST(GltfIo, StripAndFanPrimitivesGiveTheirTriangles) {
   test::TempDir dir;
   HandMade h;

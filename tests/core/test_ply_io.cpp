@@ -51,6 +51,24 @@ TEST(PlyIo, RoundTripIsExactInAsciiAndBinary) {
   }
 }
 
+// A Σ symmetric only within rounding (as Python or an edit may hand one over) is saved as its check read
+// it, its lower triangle: the upper one's tiny xz would make a Σ whose smallest eigenvalue, 1e-38 of
+// its largest, the check no longer tells from zero, and the file would not load.
+TEST(PlyIo, ANearlySymmetricCovarianceIsSavedAsItWasAccepted) {
+  test::TempDir dir;
+  CovarianceMesh m = make_sample("cube");
+  Mat3 sigma = Vec3(1.0, 1.1754943508222875e-38, 1.0).asDiagonal();
+  sigma(0, 2) = 8.8e-44;
+  m.set_covariance(5, sigma);
+  validate_gaussians(m, "cube");
+  for (const bool binary : {false, true}) {
+    const std::string path = dir.file(binary ? "b.ply" : "a.ply");
+    write_mesh(path, m, binary);
+    const CovarianceMesh read = read_mesh(path);
+    EXPECT_EQ(read.covariance(5), Mat3(sigma.selfadjointView<Eigen::Lower>()));
+  }
+}
+
 TEST(PlyIo, ReadsFloatsAnyPropertyOrderAndExtraElements) {
   const std::string ply =
       "ply\nformat ascii 1.0\ncomment made by hand\nelement vertex 3\nproperty float cyy\nproperty float x\n"
