@@ -25,11 +25,16 @@ void PlanBuffers::upload(int binding, const std::vector<T>& data) {
                     GL_DYNAMIC_DRAW);
 }
 
+// Storage of `bytes` for the passes to write, its contents undefined.
+void PlanBuffers::allocate(int binding, size_t bytes) {
+  sizes_[binding] = std::max<size_t>(sizeof(float), bytes);
+  glNamedBufferData(buffers_[binding], GLsizeiptr(sizes_[binding]), nullptr, GL_DYNAMIC_DRAW);
+}
+
 // Zeroed storage of `bytes` for the passes to write, cleared by the driver: no host copy of the
 // zeros (hundreds of MB for a mesh of a million faces).
 void PlanBuffers::allocate_zeroed(int binding, size_t bytes) {
-  sizes_[binding] = std::max<size_t>(sizeof(float), bytes);
-  glNamedBufferData(buffers_[binding], GLsizeiptr(sizes_[binding]), nullptr, GL_DYNAMIC_DRAW);
+  allocate(binding, bytes);
   glClearNamedBufferData(buffers_[binding], GL_R32F, GL_RED, GL_FLOAT, nullptr);
 }
 
@@ -75,7 +80,8 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<K
   upload(kBindingPatchEdges, p.patch_edges);
   upload(kBindingPatchNeighbours, p.patch_neighbours);
   upload(kBindingCornerOwners, p.corner_owners);
-  allocate_zeroed(kBindingPoints, size_t(s.n_points()) * kVec4PerPoint * 4 * real_bytes(precision_));
+  // Every point is written by the full compute pass that follows every upload of the tables.
+  allocate(kBindingPoints, size_t(s.n_points()) * kVec4PerPoint * 4 * real_bytes(precision_));
   GlBuffer limits = GlBuffer::none(), midpoints = GlBuffer::none();
   if (!kept.empty()) {  // the kept patches' output, copied from the previous buffers into new ones
     limits = std::exchange(buffers_[kBindingCornerLimits], GlBuffer());

@@ -33,9 +33,9 @@ public:
   /// The precision of the points and Gaussians that upload_tables and upload_gaussians upload next.
   void set_precision(PointPrecision precision) { precision_ = precision; }
   PointPrecision precision() const { return precision_; }
-  /// The plan and stencil tables, and zeroed plan points and corner-pass output, but for the `kept`
-  /// runs of patches, whose corner-pass output is copied from the previous tables' (of the same patch
-  /// shape; kept_runs_fit, render/pipeline/kept_corner_output.h).
+  /// The plan and stencil tables, storage for the plan points (for a full compute pass to write), and
+  /// zeroed corner-pass output, but for the `kept` runs of patches, whose corner-pass output is copied
+  /// from the previous tables' (of the same patch shape; kept_runs_fit, render/pipeline/kept_corner_output.h).
   void upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept = {});
   /// Every base vertex's μ and Σ.
   void upload_gaussians(const FramedGaussians& gaussians);
@@ -69,6 +69,7 @@ public:
 private:
   static size_t corner_limit_floats(const PatchPlans& plans);    // two vec4 per patch corner
   static size_t curve_midpoint_floats(const PatchPlans& plans);  // one vec4 per patch corner
+  void allocate(int binding, size_t bytes);
   void allocate_zeroed(int binding, size_t bytes);
   template <class Real>
   void upload_gaussians_as(const FramedGaussians& gaussians);
