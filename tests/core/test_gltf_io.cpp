@@ -139,6 +139,21 @@ struct HandMade {
     while (bin.size() % 4) bin.push_back('\0');
   }
 
+  // Per vertex of the first primitive its Σ (column-major floats), as the _COVARIANCE attribute.
+  void add_covariances(const std::vector<Mat3>& sigmas) {
+    std::vector<float> covariances;
+    for (const Mat3& sigma : sigmas)
+      for (int k = 0; k < 9; ++k) covariances.push_back(float(sigma(k % 3, k / 3)));
+    const size_t offset = bin.size();
+    append(covariances);
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", covariances.size() * 4}});
+    j["accessors"].push_back({{"bufferView", j["bufferViews"].size() - 1},
+                              {"componentType", 5126},
+                              {"count", sigmas.size()},
+                              {"type", "MAT3"}});
+    j["meshes"][0]["primitives"][0]["attributes"]["_COVARIANCE"] = j["accessors"].size() - 1;
+  }
+
   // The .glb of it: header, JSON chunk (padded with spaces), BIN chunk (padded with zeros).
   std::string glb() const {
     json with_buffer = j;
@@ -273,14 +288,7 @@ TEST(GltfIo, CovariancesFollowTheNodeTransform) {
   // Every corner's Gaussian 0.01 I with a correlation of x and z; the node rotates and scales it.
   Mat3 sigma = 0.01 * Mat3::Identity();
   sigma(0, 2) = sigma(2, 0) = 0.004;
-  std::vector<float> covariances;
-  for (int v = 0; v < 24; ++v)
-    for (int k = 0; k < 9; ++k) covariances.push_back(float(sigma(k % 3, k / 3)));
-  const size_t offset = h.bin.size();
-  h.append(covariances);
-  h.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", covariances.size() * 4}});
-  h.j["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 24}, {"type", "MAT3"}});
-  h.j["meshes"][0]["primitives"][0]["attributes"]["_COVARIANCE"] = 2;
+  h.add_covariances(std::vector<Mat3>(24, sigma));
   const Eigen::Quaterniond q(Eigen::AngleAxisd(1.0, Vec3(0, 1, 1).normalized()));
   h.j["nodes"] = {{{"rotation", {q.x(), q.y(), q.z(), q.w()}}, {"scale", {2, 1, 0.5}}, {"mesh", 0}}};
   dir.write("gauss.glb", h.glb());
@@ -298,22 +306,15 @@ TEST(GltfIo, CovariancesFollowTheNodeTransform) {
 TEST(GltfIo, ANearlySymmetricCovarianceIsKeptAsCheckedAndSavesAsItLoads) {
   test::TempDir dir;
   HandMade h = split_cube();
-  std::vector<float> covariances;
-  for (int v = 0; v < 24; ++v) {
-    Mat3 sigma = Vec3(1.0, v == 5 ? 1.1754943508222875e-38 : 1.0, 1.0).asDiagonal();
-    if (v == 5) sigma(0, 2) = 8.8e-44;  // column-major: the upper triangle's xz
-    for (int k = 0; k < 9; ++k) covariances.push_back(float(sigma(k % 3, k / 3)));
-  }
-  const size_t offset = h.bin.size();
-  h.append(covariances);
-  h.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", covariances.size() * 4}});
-  h.j["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 24}, {"type", "MAT3"}});
-  h.j["meshes"][0]["primitives"][0]["attributes"]["_COVARIANCE"] = 2;
+  std::vector<Mat3> sigmas(24, Mat3::Identity());
+  sigmas[5](1, 1) = 1.1754943508222875e-38;
+  sigmas[5](0, 2) = 8.8e-44;  // the upper triangle's xz
+  h.add_covariances(sigmas);
   dir.write("near.glb", h.glb());
   const CovarianceMesh m = read_mesh(dir.file("near.glb"));
   for (const Mat3& c : m.covariances) EXPECT_EQ(c, c.transpose()) << c;
-  for (const auto& [name, binary] : {std::pair{"near.ply", true}, {"near_ascii.ply", false}, {"near.obj", false},
-                                     {"near_again.glb", false}}) {
+  for (const auto& [name, binary] :
+       {std::pair{"near.ply", true}, {"near_ascii.ply", false}, {"near.obj", false}, {"near_again.glb", false}}) {
     write_mesh(dir.file(name), m, binary);
     EXPECT_NO_THROW(read_mesh(dir.file(name))) << name;
   }
