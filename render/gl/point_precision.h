@@ -28,8 +28,8 @@ public:
   explicit MeshPointPrecision(const FramedGaussians& gaussians);
   /// `before`'s after a change of topology: a vertex keeps its `origin`'s need unless it is among
   /// the `changed` (changed_gaussians, which new vertices are among; an empty `origin` keeps numbers).
-  MeshPointPrecision(const MeshPointPrecision& before, const FramedGaussians& gaussians,
-                     const std::vector<int>& origin, const std::vector<int>& changed);
+  MeshPointPrecision(const MeshPointPrecision& before, const FramedGaussians& gaussians, const std::vector<int>& origin,
+                     const std::vector<int>& changed);
   /// The `changed` vertices' Gaussians again.
   void update(const FramedGaussians& gaussians, const std::vector<int>& changed);
   PointPrecision precision() const {
