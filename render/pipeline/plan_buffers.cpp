@@ -166,17 +166,7 @@ void PlanBuffers::carry_gaussians_as(const FramedGaussians& gaussians, const std
                              GLintptr(stride * v), GLsizeiptr(stride * (end - v)));
     v = end;
   }
-  // The changed ones in runs of consecutive vertices, one upload each.
-  std::vector<Real> values;
-  for (size_t i = 0; i < changed.size();) {
-    size_t j = i + 1;
-    while (j < changed.size() && changed[j] == changed[j - 1] + 1) ++j;
-    values.resize((j - i) * kGaussianReals<Real>);
-    for (size_t k = i; k < j; ++k) gaussian_of(gaussians, size_t(changed[k]), &values[(k - i) * kGaussianReals<Real>]);
-    glNamedBufferSubData(buffers_[kBindingGaussians], GLintptr(stride * size_t(changed[i])),
-                         GLsizeiptr(values.size() * sizeof(Real)), values.data());
-    i = j;
-  }
+  update_gaussians_as<Real>(gaussians, changed);
 }
 
 void PlanBuffers::carry_gaussians(const FramedGaussians& gaussians, const std::vector<int>& origin,
@@ -189,10 +179,17 @@ void PlanBuffers::carry_gaussians(const FramedGaussians& gaussians, const std::v
 
 template <class Real>
 void PlanBuffers::update_gaussians_as(const FramedGaussians& gaussians, const std::vector<int>& changed) {
-  for (const int v : changed) {
-    Real values[kGaussianReals<Real>];
-    gaussian_of(gaussians, size_t(v), values);
-    glNamedBufferSubData(buffers_[kBindingGaussians], GLintptr(sizeof values * size_t(v)), sizeof values, values);
+  // Runs of consecutive vertices, one upload each.
+  std::vector<Real> values;
+  for (size_t i = 0; i < changed.size();) {
+    size_t j = i + 1;
+    while (j < changed.size() && changed[j] == changed[j - 1] + 1) ++j;
+    values.resize((j - i) * kGaussianReals<Real>);
+    for (size_t k = i; k < j; ++k) gaussian_of(gaussians, size_t(changed[k]), &values[(k - i) * kGaussianReals<Real>]);
+    glNamedBufferSubData(buffers_[kBindingGaussians],
+                         GLintptr(kGaussianReals<Real> * sizeof(Real) * size_t(changed[i])),
+                         GLsizeiptr(values.size() * sizeof(Real)), values.data());
+    i = j;
   }
 }
 
