@@ -19,10 +19,10 @@ for t in build/tests/test_*; do
     tests+=("$(basename "$t")")
   fi
 done
-for b in gpsurf_bench_frames gpsurf_bench_plan_depth gpsurf_bench_edit gpsurf_bench_creases; do strip -o "$dir/bin/$b" "build/bench/$b"; done
-# The command line, for its modelling benchmark (operation, re-plan, upload and frame per operation).
-strip -o "$dir/bin/gpsurf" build/app/gpsurf
-for l in $(ldd "$dir/bin/gpsurf_bench_frames" "$dir/bin/${tests[0]}" "$dir/bin/gpsurf" | awk '/=>/ {print $3}' | sort -u); do
+for b in gpsurf_bench_frames gpsurf_bench_plan_depth gpsurf_bench_edit gpsurf_bench_creases gpsurf_bench_model; do
+  strip -o "$dir/bin/$b" "build/bench/$b"
+done
+for l in $(ldd "$dir/bin/gpsurf_bench_frames" "$dir/bin/${tests[0]}" | awk '/=>/ {print $3}' | sort -u); do
   case "$(basename "$l")" in
     libc.so*|libm.so*|libstdc++*|libgcc_s*|libEGL*|libGLdispatch*|ld-linux*) ;;
     *) cp -L "$l" "$dir/lib/" ;;
@@ -54,11 +54,10 @@ if [ "\$mode" != tests ]; then
     --benchmark_filter='^Frame/(wirecube|sphere:6144)/(smooth|sharp|semi2.5)/adaptive6px' | tee "\$out/creases.txt"
   "\$here/bin/gpsurf_bench_edit" --benchmark_min_time=0.2 | tee "\$out/edit.txt"
   # Modelling operations to the frame after them, at 10k and 100k faces, then 1M.
-  "\$here/bin/gpsurf" bench --model --context egl --json "\$out/model.json" | tee "\$out/model.txt"
-  "\$here/bin/gpsurf" bench --model --context egl --size 1000000 --json "\$out/model_1m.json" | tee "\$out/model_1m.txt"
+  "\$here/bin/gpsurf_bench_model" --benchmark_out="\$out/model.json" --benchmark_out_format=json | tee "\$out/model.txt"
   # Exact plans (depth 2) against the thesis' depth 3, on the wirecube's many extraordinary nodes.
   "\$here/bin/gpsurf_bench_plan_depth" --benchmark_min_time=0.2 --benchmark_filter='wirecube/(approx3|exact2)' | tee "\$out/plan_depth.txt"
 fi
 RUN
 chmod +x "$dir/run.sh"
-echo "$dir: ${#tests[@]} GL tests, 4 benchmarks and the command line, $(du -sh "$dir" | cut -f1); run $dir/run.sh OUT on the GPU machine"
+echo "$dir: ${#tests[@]} GL tests and 5 benchmarks, $(du -sh "$dir" | cut -f1); run $dir/run.sh OUT on the GPU machine"

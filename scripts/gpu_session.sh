@@ -25,6 +25,6 @@ cat "$results/tests.txt" 2>/dev/null
 grep -h "FAILED  \]\|Failure" "$results"/test_*.log 2>/dev/null | sort -u | head -40
 grep -h "x5000\|x200 " "$results/test_comparison_images.log" 2>/dev/null
 grep -h "^Frame\|^Preprocess" "$results/plan_depth.txt" "$results/creases.txt" 2>/dev/null
-cat "$results/model.txt" "$results/model_1m.txt" 2>/dev/null
+grep -h "^BM_Model" "$results/model.txt" 2>/dev/null
 tar -czf "${OUT:-out}/gpu-results.tgz" -C "$results" .
 echo "logs: ${OUT:-out}/gpu-results.tgz"

@@ -40,7 +40,10 @@ void main() {
   // A slot its patch does not evaluate holds zero, as the buffer does after allocation: a slot listed
   // after a change of ownership (SurfaceRenderer's kept corner output) does not keep a stale value.
   if (!evaluates_midpoint) curve_midpoints[slot] = vec4(0.0);
-  if (!evaluates_corner) corner_limits[2 * slot] = corner_limits[2 * slot + 1] = vec4(0.0);
+  if (!evaluates_corner) {
+    corner_limits[2 * slot] = vec4(0.0);
+    corner_limits[2 * slot + 1] = vec4(0.0);
+  }
   for (int evaluation = 0; evaluation < 2; ++evaluation) {  // one evaluation in the loop: the shader compiles it once
     bool midpoint = evaluation == 0;
     if (!(midpoint ? evaluates_midpoint : evaluates_corner)) continue;

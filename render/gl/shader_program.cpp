@@ -2,11 +2,28 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/support/error.h"
 
 namespace gps {
+
+namespace {
+// The line of a driver's info log that says what is wrong: the first that names an error (NVIDIA's
+// logs open with a heading such as "Compute info"), else the first that is not empty.
+std::string first_error_line(const char* log) {
+  std::string text(log), first;
+  for (size_t start = 0; start < text.size();) {
+    const size_t end = std::min(text.find('\n', start), text.size());
+    const std::string line = text.substr(start, end - start);
+    if (line.find("error") != std::string::npos || line.find("ERROR") != std::string::npos) return line;
+    if (first.empty() && line.find_first_not_of(" \t\r-") != std::string::npos) first = line;
+    start = end + 1;
+  }
+  return first;
+}
+}  // namespace
 
 ShaderProgram::ShaderProgram(const std::string& name, const std::vector<ShaderStage>& stages,
                              const std::vector<const char*>& feedback)
@@ -23,9 +40,7 @@ ShaderProgram::ShaderProgram(const std::string& name, const std::vector<ShaderSt
     if (!ok) {
       char log[2048] = {};
       glGetShaderInfoLog(s, sizeof log - 1, nullptr, log);
-      std::string line(log);
-      line = line.substr(0, line.find('\n'));
-      throw Error("shader " + name + " does not compile: " + line);
+      throw Error("shader " + name + " does not compile: " + first_error_line(log));
     }
     glAttachShader(program_, s);
     shaders.push_back(std::move(s));
@@ -39,8 +54,7 @@ ShaderProgram::ShaderProgram(const std::string& name, const std::vector<ShaderSt
   if (!ok) {
     char log[2048] = {};
     glGetProgramInfoLog(program_, sizeof log - 1, nullptr, log);
-    std::string line(log);
-    throw Error("shader " + name + " does not link: " + line.substr(0, line.find('\n')));
+    throw Error("shader " + name + " does not link: " + first_error_line(log));
   }
 }
 
