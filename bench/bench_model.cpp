@@ -18,7 +18,8 @@ const nlohmann::json& figures(int faces) {
   static const std::unique_ptr<gps::GlContext> context = gps::create_offscreen_context(gps::ContextKind::automatic);
   static std::map<int, nlohmann::json> measured;
   auto it = measured.find(faces);
-  if (it == measured.end()) it = measured.emplace(faces, gps::modelling_figures("sphere", faces, gps::PlanOptions{})).first;
+  if (it == measured.end())
+    it = measured.emplace(faces, gps::modelling_figures("sphere", faces, gps::PlanOptions{})).first;
   return it->second;
 }
 
