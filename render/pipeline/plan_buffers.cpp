@@ -15,27 +15,66 @@ namespace gps {
 
 using namespace gpu;
 
+namespace {
+
+// A run of base vertices copied from one buffer to another: `count` from vertex `from` on to `to` on.
+struct CopyRun {
+  size_t from = 0, to = 0, count = 0;
+};
+
+// The runs of vertices not among `changed` whose origins are consecutive too: what a change of
+// topology carries over from the buffers before it.
+std::vector<CopyRun> carried_runs(size_t n, const std::vector<int>& origin, const std::vector<int>& changed) {
+  std::vector<char> is_changed(n, 0);
+  for (const int v : changed) is_changed[size_t(v)] = 1;
+  const auto origin_of = [&](size_t v) { return origin.empty() ? long(v) : long(origin[v]); };
+  std::vector<CopyRun> runs;
+  for (size_t v = 0; v < n;) {
+    if (is_changed[v]) {
+      ++v;
+      continue;
+    }
+    size_t end = v + 1;
+    while (end < n && !is_changed[end] && origin_of(end) == origin_of(end - 1) + 1) ++end;
+    runs.push_back({size_t(origin_of(v)), v, end - v});
+    v = end;
+  }
+  return runs;
+}
+
+void copy_runs(GLuint from, GLuint to, const std::vector<CopyRun>& runs, size_t stride) {
+  for (const CopyRun& run : runs)
+    glCopyNamedBufferSubData(from, to, GLintptr(stride * run.from), GLintptr(stride * run.to),
+                             GLsizeiptr(stride * run.count));
+}
+
+}  // namespace
+
 PlanBuffers::PlanBuffers() = default;
 
 template <class T>
 void PlanBuffers::upload(int binding, const std::vector<T>& data) {
   // Empty buffers still need storage to be bound.
-  sizes_[binding] = std::max<size_t>(sizeof(T), data.size() * sizeof(T));
-  glNamedBufferData(buffers_[binding], GLsizeiptr(sizes_[binding]), data.empty() ? nullptr : data.data(),
-                    GL_DYNAMIC_DRAW);
+  reserve(binding, std::max<size_t>(sizeof(T), data.size() * sizeof(T)));
+  if (!data.empty()) glNamedBufferSubData(buffers_[binding], 0, GLsizeiptr(data.size() * sizeof(T)), data.data());
 }
 
-// Storage of `bytes` for the passes to write, its contents undefined.
+// Storage of at least `bytes` at `binding`, its contents undefined. The storage there is kept where it
+// holds them and is not twice as large: tables of about the same size again, as after a modelling
+// operation, are written into it instead of a store the driver allocates again.
+void PlanBuffers::reserve(int binding, size_t bytes) {
+  sizes_[binding] = bytes;
+  size_t& capacity = capacities_[binding];
+  if (bytes <= capacity && capacity / 2 <= bytes) return;
+  capacity = bytes + bytes / 16;  // room for the tables an operation adds to
+  glNamedBufferData(buffers_[binding], GLsizeiptr(capacity), nullptr, GL_DYNAMIC_DRAW);
+}
+
+// Storage of `bytes` for the passes to write, its contents undefined, in a buffer of its own (the one
+// before, which the caller may have taken to copy from, is not written).
 void PlanBuffers::allocate(int binding, size_t bytes) {
-  sizes_[binding] = std::max<size_t>(sizeof(float), bytes);
+  sizes_[binding] = capacities_[binding] = std::max<size_t>(sizeof(float), bytes);
   glNamedBufferData(buffers_[binding], GLsizeiptr(sizes_[binding]), nullptr, GL_DYNAMIC_DRAW);
-}
-
-// Zeroed storage of `bytes` for the passes to write, cleared by the driver: no host copy of the
-// zeros (hundreds of MB for a mesh of a million faces).
-void PlanBuffers::allocate_zeroed(int binding, size_t bytes) {
-  allocate(binding, bytes);
-  glClearNamedBufferData(buffers_[binding], GL_R32F, GL_RED, GL_FLOAT, nullptr);
 }
 
 // Two vec4 per patch corner: limit point and node kind, normal; then one per patch corner: the limit
@@ -67,7 +106,8 @@ void PlanBuffers::check_fits(const SurfaceTables& tables, int n_vertices, int n_
                      storage_limit);
 }
 
-void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept) {
+void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept,
+                                const CarriedVertices* carried) {
   const StencilTable& s = tables.stencils;
   const PatchPlans& p = tables.plans;
   upload(kBindingOffsets, s.offsets);
@@ -80,15 +120,29 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<K
   upload(kBindingPatchEdges, p.patch_edges);
   upload(kBindingPatchNeighbours, p.patch_neighbours);
   upload(kBindingCornerOwners, p.corner_owners);
-  // Every point is written by the full compute pass that follows every upload of the tables.
-  allocate(kBindingPoints, size_t(s.n_points()) * kVec4PerPoint * 4 * real_bytes(precision_));
+  // Every point is written by the compute pass that follows every upload of the tables, but those carried.
+  const size_t point_bytes = kVec4PerPoint * 4 * real_bytes(precision_);
+  if (carried) {
+    const GlBuffer points = std::exchange(buffers_[kBindingPoints], GlBuffer());
+    allocate(kBindingPoints, size_t(s.n_points()) * point_bytes);
+    copy_runs(points, buffers_[kBindingPoints],
+              carried_runs(size_t(s.n_base), carried->origin, carried->changed), point_bytes);
+  } else {
+    reserve(kBindingPoints, size_t(s.n_points()) * point_bytes);
+  }
   GlBuffer limits = GlBuffer::none(), midpoints = GlBuffer::none();
   if (!kept.empty()) {  // the kept patches' output, copied from the previous buffers into new ones
     limits = std::exchange(buffers_[kBindingCornerLimits], GlBuffer());
     midpoints = std::exchange(buffers_[kBindingCurveMidpoints], GlBuffer());
   }
-  allocate_zeroed(kBindingCornerLimits, corner_limit_floats(p) * sizeof(float));
-  allocate_zeroed(kBindingCurveMidpoints, curve_midpoint_floats(p) * sizeof(float));
+  // Not cleared: the corner pass writes every slot it is run over, and that is every slot but those
+  // of the kept runs, copied below (zero where a patch does not evaluate it).
+  for (const auto& [binding, bytes] : {std::pair(kBindingCornerLimits, corner_limit_floats(p) * sizeof(float)),
+                                       std::pair(kBindingCurveMidpoints, curve_midpoint_floats(p) * sizeof(float))})
+    if (kept.empty())
+      reserve(binding, bytes);
+    else
+      allocate(binding, bytes);
   const size_t limit_bytes = size_t(p.corners()) * 8 * sizeof(float),
                midpoint_bytes = size_t(p.corners()) * 4 * sizeof(float);
   for (const KeptPatches& run : kept) {
@@ -130,10 +184,7 @@ template <class Real>
 void PlanBuffers::upload_gaussians_as(const FramedGaussians& gaussians) {
   std::vector<Real> g(gaussians.n_vertices() * kGaussianReals<Real>);
   for (size_t i = 0; i < gaussians.n_vertices(); ++i) gaussian_of(gaussians, i, &g[kGaussianReals<Real> * i]);
-  if (sizes_[kBindingGaussians] == std::max<size_t>(sizeof(Real), g.size() * sizeof(Real)))
-    glNamedBufferSubData(buffers_[kBindingGaussians], 0, GLsizeiptr(g.size() * sizeof(Real)), g.data());
-  else
-    upload(kBindingGaussians, g);
+  upload(kBindingGaussians, g);
 }
 
 void PlanBuffers::upload_gaussians(const FramedGaussians& gaussians) {
@@ -149,23 +200,8 @@ void PlanBuffers::carry_gaussians_as(const FramedGaussians& gaussians, const std
   constexpr size_t stride = kGaussianReals<Real> * sizeof(Real);
   const size_t n = gaussians.n_vertices();
   const GlBuffer before = std::exchange(buffers_[kBindingGaussians], GlBuffer());
-  sizes_[kBindingGaussians] = std::max<size_t>(sizeof(Real), n * stride);
-  glNamedBufferData(buffers_[kBindingGaussians], GLsizeiptr(sizes_[kBindingGaussians]), nullptr, GL_DYNAMIC_DRAW);
-  std::vector<char> is_changed(n, 0);
-  for (const int v : changed) is_changed[size_t(v)] = 1;
-  const auto origin_of = [&](size_t v) { return origin.empty() ? long(v) : long(origin[v]); };
-  // Runs of unchanged vertices whose origins are consecutive too.
-  for (size_t v = 0; v < n;) {
-    if (is_changed[v]) {
-      ++v;
-      continue;
-    }
-    size_t end = v + 1;
-    while (end < n && !is_changed[end] && origin_of(end) == origin_of(end - 1) + 1) ++end;
-    glCopyNamedBufferSubData(before, buffers_[kBindingGaussians], GLintptr(stride * size_t(origin_of(v))),
-                             GLintptr(stride * v), GLsizeiptr(stride * (end - v)));
-    v = end;
-  }
+  allocate(kBindingGaussians, n * stride);
+  copy_runs(before, buffers_[kBindingGaussians], carried_runs(n, origin, changed), stride);
   update_gaussians_as<Real>(gaussians, changed);
 }
 
@@ -246,7 +282,7 @@ std::vector<float> PlanBuffers::read_corner_pass() const {
 
 size_t PlanBuffers::bytes() const {
   size_t total = 0;
-  for (const size_t s : sizes_) total += s;
+  for (const size_t s : capacities_) total += s;
   return total;
 }
 

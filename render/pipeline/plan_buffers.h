@@ -33,10 +33,20 @@ public:
   /// The precision of the points and Gaussians that upload_tables and upload_gaussians upload next.
   void set_precision(PointPrecision precision) { precision_ = precision; }
   PointPrecision precision() const { return precision_; }
+  /// The base vertices a change of topology carries over: each vertex's index before it (`origin`,
+  /// empty: the same) and those whose Gaussians are new or changed (changed_gaussians).
+  struct CarriedVertices {
+    const std::vector<int>& origin;
+    const std::vector<int>& changed;
+  };
   /// The plan and stencil tables, storage for the plan points (for a full compute pass to write), and
-  /// zeroed corner-pass output, but for the `kept` runs of patches, whose corner-pass output is copied
+  /// for the corner pass's output, but for the `kept` runs of patches, whose corner-pass output is copied
   /// from the previous tables' (of the same patch shape; kept_runs_fit, render/pipeline/kept_corner_output.h).
-  void upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept = {});
+  /// With `carried` (points of the same precision and frame before), the points of the base vertices
+  /// not among its changed ones are copied from the previous points to where they went, in runs: the
+  /// compute pass then maps the changed vertices alone (DualStencilPass::run_listed_vertices).
+  void upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept = {},
+                     const CarriedVertices* carried = nullptr);
   /// Every base vertex's μ and Σ.
   void upload_gaussians(const FramedGaussians& gaussians);
   /// Every base vertex's μ and Σ after a change of topology, in the precision of the buffer before:
@@ -69,8 +79,8 @@ public:
 private:
   static size_t corner_limit_floats(const PatchPlans& plans);    // two vec4 per patch corner
   static size_t curve_midpoint_floats(const PatchPlans& plans);  // one vec4 per patch corner
+  void reserve(int binding, size_t bytes);
   void allocate(int binding, size_t bytes);
-  void allocate_zeroed(int binding, size_t bytes);
   template <class Real>
   void upload_gaussians_as(const FramedGaussians& gaussians);
   template <class Real>
@@ -82,7 +92,8 @@ private:
   void upload(int binding, const std::vector<T>& data);
 
   std::array<GlBuffer, gpu::kBindingCount> buffers_;
-  size_t sizes_[gpu::kBindingCount] = {};
+  size_t sizes_[gpu::kBindingCount] = {};       // bytes in use
+  size_t capacities_[gpu::kBindingCount] = {};  // bytes of storage held
   PointPrecision precision_ = PointPrecision::single_float;
 };
 

@@ -60,7 +60,10 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   n_base_ = int(mesh.n_vertices());
   half_size_patches_ = 0;
   for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
-  buffers_.upload_tables(tables_, keep ? kept : std::vector<KeptPatches>{});
+  // Kept tables keep the points of the base vertices that did not change, in this frame and precision.
+  const bool carry_points = keep && !update_everything(changed.size(), framed.n_vertices());
+  const PlanBuffers::CarriedVertices carried{origin, changed};
+  buffers_.upload_tables(tables_, keep ? kept : std::vector<KeptPatches>{}, carry_points ? &carried : nullptr);
   tables_id_ = change.to;
   frame_ = frame;
   patches_.set_frame(frame_);
@@ -74,7 +77,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   cage_.set_mesh(mesh, framed_);         // the overlays too are drawn in the frame
   cache_.set_cage(mesh, framed_, keep);  // projected with the frame's view-projection
   if (keep)
-    run_compute_kept(before, changed, kept, origin);
+    run_compute_kept(before, changed, kept, origin, carry_points);
   else
     run_compute(nullptr);
 }
@@ -156,15 +159,20 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
 }
 
 void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::vector<int>& changed,
-                                       const std::vector<KeptPatches>& kept, const std::vector<int>& origin) {
+                                       const std::vector<KeptPatches>& kept, const std::vector<int>& origin,
+                                       bool points_carried) {
   const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   const PatchPlans& plans = tables().plans;
   const std::vector<int> patches = stale_corner_patches(before, tables(), dependents_, changed, kept, origin);
   const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
   buffers_.upload_corner_list(corners);
+  if (points_carried) buffers_.upload_edit(changed, {});
   buffers_.bind();
-  compute_.run_all(n_base_, tables().stencils.n_rows(), group_limit_);
+  if (points_carried)
+    compute_.run_listed_vertices(n_base_, int(changed.size()), tables().stencils.n_rows(), group_limit_);
+  else
+    compute_.run_all(n_base_, tables().stencils.n_rows(), group_limit_);
   corners_.run_listed(plans, int(corners.size()), group_limit_);
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
