@@ -125,8 +125,8 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<K
   if (carried) {
     const GlBuffer points = std::exchange(buffers_[kBindingPoints], GlBuffer());
     allocate(kBindingPoints, size_t(s.n_points()) * point_bytes);
-    copy_runs(points, buffers_[kBindingPoints],
-              carried_runs(size_t(s.n_base), carried->origin, carried->changed), point_bytes);
+    copy_runs(points, buffers_[kBindingPoints], carried_runs(size_t(s.n_base), carried->origin, carried->changed),
+              point_bytes);
   } else {
     reserve(kBindingPoints, size_t(s.n_points()) * point_bytes);
   }
