@@ -8,7 +8,9 @@
 
 namespace gps {
 
-/// Patches per block for a surface of `n_patches`: at most some 512 blocks, of 8 to 256 patches.
+/// Patches per block for a surface of `n_patches`: at most some 2048 blocks, of 2 to 256 patches. Small
+/// enough that a change spread along the face numbering (a loop cut around the mesh: hundreds of kept
+/// runs, each boundary a block that cannot follow its patches) leaves most blocks kept.
 int patches_per_block(int n_patches);
 
 class SurfaceBlocks {

@@ -9,6 +9,7 @@
 
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
+#include "core/modelling/loop_cut.h"
 #include "core/modelling/samples.h"
 #include "core/plans/surface_replanner.h"
 #include "core/support/error.h"
@@ -137,6 +138,31 @@ TEST_P(IncrementalSurfaceCache, AnExtrudeOrADeleteCapturesOnlyTheBlocksItReached
       EXPECT_EQ(cache.captures(), captures) << result.summary;
       EXPECT_EQ(cache.refreshes(), refreshes + 2) << result.summary;
     }
+}
+
+// A loop cut around the sphere changes a ring of faces spread over the whole face numbering: the
+// kept patches come in hundreds of runs, and a block cannot follow patches that two runs move apart.
+TEST_P(IncrementalSurfaceCache, ALoopCutAroundTheMeshCapturesFewerThanHalfItsPatches) {
+  RenderTarget target(kSize, kSize);
+  const CovarianceMesh sphere = make_sample("sphere", 20000);
+  const NormalisedFrame frame = NormalisedFrame::of(sphere);
+  const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
+  SurfaceReplanner replanner(sphere.topology(), {}, {});
+  SurfaceRenderer renderer;
+  renderer.surface_cache().set_weld(GetParam());
+  renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
+  const std::span<const int> face = sphere.face(sphere.n_faces() / 2);
+  const Modelled result = loop_cut(sphere, face[0], face[1]);
+  const DrawOptions o = cached(6.0f, 0.0f);
+  renderer.draw(target, camera, o);
+  const SurfaceCache& cache = renderer.surface_cache();
+  const int captures = cache.captures();
+  replanner.set_topology(result.mesh.topology(), {}, result.vertex_origin);
+  ASSERT_GT(replanner.last_change().kept.size(), 20u) << "the ring's faces spread over the numbering";
+  renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+  expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, result.summary);
+  EXPECT_EQ(cache.captures(), captures) << result.summary << ": no capture of the whole surface";
+  EXPECT_LT(cache.refreshed_patches(), renderer.tables().plans.n_patches() / 2) << result.summary;
 }
 
 INSTANTIATE_TEST_SUITE_P(Welds, IncrementalSurfaceCache,
