@@ -52,6 +52,10 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   const bool keep = change.from != 0 && change.from == tables_id_ && !kept.empty() && carry && same_precision &&
                     surface_tables.plans.shape == shape() &&
                     kept_runs_fit(kept, n_patches(), surface_tables.plans.n_patches());
+  if (keep && same_plans(kept, surface_tables, origin)) {  // the Gaussians alone changed: followed as an edit
+    tables_id_ = change.to;
+    return update_vertices(mesh, changed);
+  }
   use_point_precision(point_precision.precision());
   point_precision_ = std::move(point_precision);
   const SurfaceTables before = std::exchange(tables_, std::move(surface_tables));
@@ -80,6 +84,17 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
     run_compute_kept(before, changed, kept, origin, carry_points);
   else
     run_compute(nullptr);
+}
+
+bool SurfaceRenderer::same_plans(const std::vector<KeptPatches>& kept, const SurfaceTables& tables,
+                                 const std::vector<int>& origin) const {
+  const int n = n_patches();
+  if (kept.size() != 1 || kept[0] != KeptPatches{0, 0, n} || tables.plans.n_patches() != n ||
+      tables.stencils.n_base != n_base_)
+    return false;
+  for (size_t v = 0; v < origin.size(); ++v)
+    if (origin[v] != int(v)) return false;
+  return true;
 }
 
 // Kept in the mesh's frame, as the patches are: world coordinates far from the origin lose their

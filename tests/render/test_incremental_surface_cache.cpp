@@ -7,6 +7,7 @@
 #include <cstring>
 #include <random>
 
+#include "core/modelling/affine_transform.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/loop_cut.h"
@@ -163,6 +164,39 @@ TEST_P(IncrementalSurfaceCache, ALoopCutAroundTheMeshCapturesFewerThanHalfItsPat
   expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, result.summary);
   EXPECT_EQ(cache.captures(), captures) << result.summary << ": no capture of the whole surface";
   EXPECT_LT(cache.refreshed_patches(), renderer.tables().plans.n_patches() / 2) << result.summary;
+}
+
+// An operation that moves every vertex and keeps the faces (a transform of the whole mesh) changes the
+// Gaussians alone: the renderer follows it as an edit of every vertex. Welded at capture (a GPU's
+// way), the welded vertices are evaluated again and nothing is captured again.
+TEST_P(IncrementalSurfaceCache, AnOperationOnTheGaussiansAloneIsFollowedAsAnEdit) {
+  const bool evaluated_again = GetParam() == SurfaceCache::Weld::at_capture;
+  RenderTarget target(kSize, kSize);
+  const CovarianceMesh sphere = make_sample("sphere", 6000);
+  const NormalisedFrame frame = NormalisedFrame::of(sphere);
+  const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
+  SurfaceReplanner replanner(sphere.topology(), {}, {}, test::kSmallRanges);
+  SurfaceRenderer renderer;
+  renderer.surface_cache().set_weld(GetParam());
+  renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
+  const Modelled results[] = {transform_vertices(sphere, {}, AffineMap::about(Vec3::Zero(), 0.98 * Mat3::Identity())),
+                              transform_vertices(sphere, {0, 1, 2}, AffineMap{Mat3::Identity(), Vec3(0.0, 0.0, 0.01)})};
+  const DrawOptions o = cached(0.0f, 4.0f);
+  for (const Modelled& result : results) {
+    renderer.draw(target, camera, o);
+    renderer.draw(target, camera, o);  // settled: welded on llvmpipe's terms too
+    const SurfaceCache& cache = renderer.surface_cache();
+    const int captures = cache.captures();
+    replanner.set_topology(result.mesh.topology(), {}, result.vertex_origin);
+    renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+    expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, result.summary);
+    if (evaluated_again) EXPECT_EQ(cache.captures(), captures) << result.summary << ": no capture of the whole surface";
+    replanner.set_topology(sphere.topology(), {}, {});
+    renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
+    renderer.draw(target, camera, o);
+    expect_as_captured_anew(renderer, sphere, frame, target, camera, o, result.summary + ", undone");
+    if (evaluated_again) EXPECT_EQ(cache.captures(), captures) << result.summary << ", undone";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Welds, IncrementalSurfaceCache,
