@@ -75,4 +75,15 @@ std::vector<int> stale_corner_patches(const SurfaceTables& before, const Surface
   return patches;
 }
 
+bool same_plans(const SurfaceTables& before, const SurfaceTables& after, const std::vector<KeptPatches>& kept,
+                const std::vector<int>& origin) {
+  const int n = before.plans.n_patches();
+  if (kept.size() != 1 || kept[0] != KeptPatches{0, 0, n} || after.plans.n_patches() != n ||
+      after.stencils.n_base != before.stencils.n_base)
+    return false;
+  for (size_t v = 0; v < origin.size(); ++v)
+    if (origin[v] != int(v)) return false;
+  return true;
+}
+
 }  // namespace gps

@@ -29,4 +29,10 @@ std::vector<int> stale_corner_patches(const SurfaceTables& before, const Surface
                                       const StencilDependents& dependents, const std::vector<int>& changed,
                                       const std::vector<KeptPatches>& kept, const std::vector<int>& origin);
 
+/// Whether `after`, the tables after a change from `before` whose plans kept `kept` and whose
+/// vertices came from `origin` (as set_mesh takes it), are `before` itself: every patch kept where
+/// it was and every vertex where it was (the replanner then keeps every range as it was, bit for bit).
+bool same_plans(const SurfaceTables& before, const SurfaceTables& after, const std::vector<KeptPatches>& kept,
+                const std::vector<int>& origin);
+
 }  // namespace gps

@@ -9,7 +9,6 @@
 #include "core/plans/patch_adjacency.h"
 #include "core/plans/stencil_table.h"
 #include "render/pipeline/kept_corner_output.h"
-#include "render/pipeline/kept_surface_triangles.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/image_texture.h"
 #include "render/image/matcap.h"
@@ -42,6 +41,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   const bool carry =
       frame == frame_ && framed_.n_vertices() > 0 && (origin.empty() || origin.size() == mesh.n_vertices());
   const std::vector<int> changed = carry ? changed_gaussians(framed_, framed, origin) : std::vector<int>{};
+  const bool few_changed = carry && !update_everything(changed.size(), framed.n_vertices());
   MeshPointPrecision point_precision =
       carry ? MeshPointPrecision(point_precision_, framed, origin, changed) : MeshPointPrecision(framed);
   PlanBuffers::check_fits(surface_tables, int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_,
@@ -52,7 +52,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   const bool keep = change.from != 0 && change.from == tables_id_ && !kept.empty() && carry && same_precision &&
                     surface_tables.plans.shape == shape() &&
                     kept_runs_fit(kept, n_patches(), surface_tables.plans.n_patches());
-  if (keep && same_plans(kept, surface_tables, origin)) {  // the Gaussians alone changed: followed as an edit
+  if (keep && same_plans(tables_, surface_tables, kept, origin)) {  // the Gaussians alone: followed as an edit
     tables_id_ = change.to;
     return update_vertices(mesh, changed);
   }
@@ -65,15 +65,14 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   half_size_patches_ = 0;
   for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
   // Kept tables keep the points of the base vertices that did not change, in this frame and precision.
-  const bool carry_points = keep && !update_everything(changed.size(), framed.n_vertices());
   const PlanBuffers::CarriedVertices carried{origin, changed};
-  buffers_.upload_tables(tables_, keep ? kept : std::vector<KeptPatches>{}, carry_points ? &carried : nullptr);
+  buffers_.upload_tables(tables_, keep ? kept : std::vector<KeptPatches>{}, keep && few_changed ? &carried : nullptr);
   tables_id_ = change.to;
   frame_ = frame;
   patches_.set_frame(frame_);
   cache_.set_frame(frame_);
   framed_ = std::move(framed);
-  if (carry && same_precision && !update_everything(changed.size(), framed_.n_vertices()))
+  if (few_changed && same_precision)
     buffers_.carry_gaussians(framed_, origin, changed);
   else
     buffers_.upload_gaussians(framed_);
@@ -81,20 +80,9 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   cage_.set_mesh(mesh, framed_);         // the overlays too are drawn in the frame
   cache_.set_cage(mesh, framed_, keep);  // projected with the frame's view-projection
   if (keep)
-    run_compute_kept(before, changed, kept, origin, carry_points);
+    run_compute_kept(before, changed, kept, origin, few_changed);
   else
     run_compute(nullptr);
-}
-
-bool SurfaceRenderer::same_plans(const std::vector<KeptPatches>& kept, const SurfaceTables& tables,
-                                 const std::vector<int>& origin) const {
-  const int n = n_patches();
-  if (kept.size() != 1 || kept[0] != KeptPatches{0, 0, n} || tables.plans.n_patches() != n ||
-      tables.stencils.n_base != n_base_)
-    return false;
-  for (size_t v = 0; v < origin.size(); ++v)
-    if (origin[v] != int(v)) return false;
-  return true;
 }
 
 // Kept in the mesh's frame, as the patches are: world coordinates far from the origin lose their
@@ -143,66 +131,6 @@ void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vec
   cage_.update_positions(framed_, changed);
   if (ellipsoids_current_) ellipsoids_.upload(framed_, &changed);
   run_compute(&changed);
-}
-
-void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
-  const GpuPassScope pass(timer_, "9D + stencils");
-  ++points_generation_;
-  const int n_rows = tables().stencils.n_rows();
-  const PatchPlans& plans = tables().plans;
-  if (changed) {
-    const std::vector<int> rows = rows_reading(dependents_, *changed);
-    buffers_.upload_edit(*changed, rows);
-    const std::vector<int> patches = changed_patches(*changed, rows);
-    const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
-    buffers_.upload_corner_list(corners);
-    buffers_.bind();
-    compute_.run_listed(n_base_, int(changed->size()), int(rows.size()), group_limit_);
-    corners_.run_listed(plans, int(corners.size()), group_limit_);
-    last_corner_slots_ = int(corners.size());
-    cache_.points_changed(points_generation_, &patches);
-    return;
-  }
-  buffers_.bind();
-  compute_.run_all(n_base_, n_rows, group_limit_);
-  corners_.run_all(plans, group_limit_);
-  last_corner_slots_ = plans.corners() * plans.n_patches();
-  if (edit)
-    cache_.all_points_changed(points_generation_);
-  else
-    cache_.points_changed(points_generation_, nullptr);
-}
-
-void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::vector<int>& changed,
-                                       const std::vector<KeptPatches>& kept, const std::vector<int>& origin,
-                                       bool points_carried) {
-  const GpuPassScope pass(timer_, "9D + stencils");
-  ++points_generation_;
-  const PatchPlans& plans = tables().plans;
-  const std::vector<int> patches = stale_corner_patches(before, tables(), dependents_, changed, kept, origin);
-  const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
-  buffers_.upload_corner_list(corners);
-  if (points_carried) buffers_.upload_edit(changed, {});
-  buffers_.bind();
-  if (points_carried)
-    compute_.run_listed_vertices(n_base_, int(changed.size()), tables().stencils.n_rows(), group_limit_);
-  else
-    compute_.run_all(n_base_, tables().stencils.n_rows(), group_limit_);
-  corners_.run_listed(plans, int(corners.size()), group_limit_);
-  last_corner_slots_ = int(corners.size());
-  // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
-  if (!cache_.has_stored_triangles()) return cache_.points_changed(points_generation_, nullptr);
-  const KeptTriangles triangles = kept_triangles(plans, before.plans.n_patches(), kept, patches);
-  stored_levels_.follow(
-      n_patches(), cache_.topology_changed(points_generation_, n_patches(), triangles.new_number, triangles.changed));
-}
-
-std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {
-  const StencilTable& stencils = tables().stencils;
-  if (!readers_) readers_ = std::make_unique<const PatchReaders>(tables().plans, stencils.n_points());
-  std::vector<int> points = changed;
-  for (const int r : rows) points.push_back(stencils.n_base + r);
-  return readers_->patches_changed_by(points);
 }
 
 void SurfaceRenderer::set_matcap(const Image& m) {

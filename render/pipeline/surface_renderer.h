@@ -131,11 +131,6 @@ private:
   // Tests lower the device's limits (tests/support/device_limits.h).
   friend struct DeviceLimitsForTests;
 
-  /// Whether tables after a change whose plans kept `kept` (of the tables drawn), its vertices' origins
-  /// `origin` (as set_mesh takes it), are the tables drawn: every patch kept where it was, every
-  /// vertex where it was (the replanner then keeps every range as it was, bit for bit).
-  bool same_plans(const std::vector<KeptPatches>& kept, const SurfaceTables& tables,
-                  const std::vector<int>& origin) const;
   /// The compute passes for `changed` base vertices, or all (nullptr; an `edit` of most of them
   /// where set, which the surface cache follows as such).
   void run_compute(const std::vector<int>* changed, bool edit = false);
