@@ -106,19 +106,38 @@ TEST_F(IncrementalSurfaceCacheRandom, RandomOperationsMatchAFreshCapture) {
   EXPECT_GE(refreshes, 6) << "changes followed, not only captured again";
 }
 
+// A sphere of `faces` faces drawn by a renderer that welds as `weld` says, its plans from a replanner
+// of ranges of `faces_per_range` faces, framed and seen as the tests below see it.
+struct SphereScene {
+  SphereScene(int faces, SurfaceCache::Weld weld, int faces_per_range = SurfaceReplanner::kFacesPerRange)
+      : sphere(make_sample("sphere", faces)),
+        frame(NormalisedFrame::of(sphere)),
+        camera(frame_mesh(sphere, 35.0f, 25.0f)),
+        replanner(sphere.topology(), {}, {}, faces_per_range) {
+    renderer.surface_cache().set_weld(weld);
+    renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
+  }
+  // The renderer and replanner follow `mesh`, whose vertices came from `origin`.
+  void follow(const CovarianceMesh& mesh, const std::vector<int>& origin) {
+    replanner.set_topology(mesh.topology(), {}, origin);
+    renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), origin);
+  }
+
+  const CovarianceMesh sphere;
+  const NormalisedFrame frame;
+  const Camera camera;
+  SurfaceReplanner replanner;
+  SurfaceRenderer renderer;
+};
+
 // An extrude of one face of a sphere keeps every other patch's number, and a delete of one face
 // renumbers the patches after it: the frame after either refreshes the blocks it reached instead of
 // capturing the surface again, and so does its undo. (Reached: the patches of the faces the
 // replanner planned again, here in small ranges, and their neighbours.)
 TEST_P(IncrementalSurfaceCache, AnExtrudeOrADeleteCapturesOnlyTheBlocksItReached) {
   RenderTarget target(kSize, kSize);
-  const CovarianceMesh sphere = make_sample("sphere", 6000);
-  const NormalisedFrame frame = NormalisedFrame::of(sphere);
-  const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
-  SurfaceReplanner replanner(sphere.topology(), {}, {}, test::kSmallRanges);
-  SurfaceRenderer renderer;
-  renderer.surface_cache().set_weld(GetParam());
-  renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
+  SphereScene scene(6000, GetParam(), test::kSmallRanges);
+  auto& [sphere, frame, camera, replanner, renderer] = scene;
   const int f = int(sphere.n_faces() / 3);
   const Modelled results[] = {extrude_faces(sphere, {f}, 0.05), delete_faces(sphere, {f})};
   for (const DrawOptions& o : {cached(6.0f, 0.0f), cached(0.0f, 4.0f)})
@@ -126,15 +145,13 @@ TEST_P(IncrementalSurfaceCache, AnExtrudeOrADeleteCapturesOnlyTheBlocksItReached
       renderer.draw(target, camera, o);
       const SurfaceCache& cache = renderer.surface_cache();
       const int captures = cache.captures(), refreshes = cache.refreshes();
-      replanner.set_topology(result.mesh.topology(), {}, result.vertex_origin);
-      renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+      scene.follow(result.mesh, result.vertex_origin);
       expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, result.summary);
       EXPECT_EQ(cache.captures(), captures) << result.summary << ": no capture of the whole surface";
       EXPECT_EQ(cache.refreshes(), refreshes + 1) << result.summary;
       EXPECT_LT(cache.refreshed_patches(), renderer.tables().plans.n_patches() / 10) << result.summary;
       const std::vector<int> back = inverse_origin(result.vertex_origin, sphere.n_vertices());
-      replanner.set_topology(sphere.topology(), {}, back);
-      renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), back);
+      scene.follow(sphere, back);
       expect_as_captured_anew(renderer, sphere, frame, target, camera, o, result.summary + ", undone");
       EXPECT_EQ(cache.captures(), captures) << result.summary;
       EXPECT_EQ(cache.refreshes(), refreshes + 2) << result.summary;
@@ -145,13 +162,8 @@ TEST_P(IncrementalSurfaceCache, AnExtrudeOrADeleteCapturesOnlyTheBlocksItReached
 // kept patches come in hundreds of runs, and a block cannot follow patches that two runs move apart.
 TEST_P(IncrementalSurfaceCache, ALoopCutAroundTheMeshCapturesFewerThanHalfItsPatches) {
   RenderTarget target(kSize, kSize);
-  const CovarianceMesh sphere = make_sample("sphere", 20000);
-  const NormalisedFrame frame = NormalisedFrame::of(sphere);
-  const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
-  SurfaceReplanner replanner(sphere.topology(), {}, {});
-  SurfaceRenderer renderer;
-  renderer.surface_cache().set_weld(GetParam());
-  renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
+  SphereScene scene(20000, GetParam());
+  auto& [sphere, frame, camera, replanner, renderer] = scene;
   const std::span<const int> face = sphere.face(sphere.n_faces() / 2);
   const Modelled result = loop_cut(sphere, face[0], face[1]);
   const DrawOptions o = cached(6.0f, 0.0f);
@@ -172,13 +184,8 @@ TEST_P(IncrementalSurfaceCache, ALoopCutAroundTheMeshCapturesFewerThanHalfItsPat
 TEST_P(IncrementalSurfaceCache, AnOperationOnTheGaussiansAloneIsFollowedAsAnEdit) {
   const bool evaluated_again = GetParam() == SurfaceCache::Weld::at_capture;
   RenderTarget target(kSize, kSize);
-  const CovarianceMesh sphere = make_sample("sphere", 6000);
-  const NormalisedFrame frame = NormalisedFrame::of(sphere);
-  const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
-  SurfaceReplanner replanner(sphere.topology(), {}, {}, test::kSmallRanges);
-  SurfaceRenderer renderer;
-  renderer.surface_cache().set_weld(GetParam());
-  renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
+  SphereScene scene(6000, GetParam(), test::kSmallRanges);
+  auto& [sphere, frame, camera, replanner, renderer] = scene;
   const Modelled results[] = {transform_vertices(sphere, {}, AffineMap::about(Vec3::Zero(), 0.98 * Mat3::Identity())),
                               transform_vertices(sphere, {0, 1, 2}, AffineMap{Mat3::Identity(), Vec3(0.0, 0.0, 0.01)})};
   const DrawOptions o = cached(0.0f, 4.0f);
@@ -187,15 +194,17 @@ TEST_P(IncrementalSurfaceCache, AnOperationOnTheGaussiansAloneIsFollowedAsAnEdit
     renderer.draw(target, camera, o);  // settled: welded on llvmpipe's terms too
     const SurfaceCache& cache = renderer.surface_cache();
     const int captures = cache.captures();
-    replanner.set_topology(result.mesh.topology(), {}, result.vertex_origin);
-    renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+    scene.follow(result.mesh, result.vertex_origin);
     expect_as_captured_anew(renderer, result.mesh, frame, target, camera, o, result.summary);
-    if (evaluated_again) EXPECT_EQ(cache.captures(), captures) << result.summary << ": no capture of the whole surface";
-    replanner.set_topology(sphere.topology(), {}, {});
-    renderer.set_mesh(sphere, replanner.tables(), frame, replanner.last_change(), {});
+    if (evaluated_again) {
+      EXPECT_EQ(cache.captures(), captures) << result.summary << ": no capture of the whole surface";
+    }
+    scene.follow(sphere, {});
     renderer.draw(target, camera, o);
     expect_as_captured_anew(renderer, sphere, frame, target, camera, o, result.summary + ", undone");
-    if (evaluated_again) EXPECT_EQ(cache.captures(), captures) << result.summary << ", undone";
+    if (evaluated_again) {
+      EXPECT_EQ(cache.captures(), captures) << result.summary << ", undone";
+    }
   }
 }
 
