@@ -50,7 +50,11 @@ void copy_runs(GLuint from, GLuint to, const std::vector<CopyRun>& runs, size_t 
 
 }  // namespace
 
-PlanBuffers::PlanBuffers() = default;
+PlanBuffers::PlanBuffers() {
+  GLint64 max_block = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+  max_block_ = size_t(std::max<GLint64>(max_block, 0));
+}
 
 template <class T>
 void PlanBuffers::upload(int binding, const std::vector<T>& data) {
@@ -66,7 +70,8 @@ void PlanBuffers::reserve(int binding, size_t bytes) {
   sizes_[binding] = bytes;
   size_t& capacity = capacities_[binding];
   if (bytes <= capacity && capacity / 2 <= bytes) return;
-  capacity = bytes + bytes / 16;  // room for the tables an operation adds to
+  // Room for the tables an operation adds to, within what a shader may see of a buffer bound whole.
+  capacity = std::max(bytes, std::min(bytes + bytes / 16, max_block_));
   glNamedBufferData(buffers_[binding], GLsizeiptr(capacity), nullptr, GL_DYNAMIC_DRAW);
 }
 

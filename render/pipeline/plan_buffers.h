@@ -94,6 +94,7 @@ private:
   std::array<GlBuffer, gpu::kBindingCount> buffers_;
   size_t sizes_[gpu::kBindingCount] = {};       // bytes in use
   size_t capacities_[gpu::kBindingCount] = {};  // bytes of storage held
+  size_t max_block_ = 0;                        // the device's largest storage block, in bytes
   PointPrecision precision_ = PointPrecision::single_float;
 };
 
