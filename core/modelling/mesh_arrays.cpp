@@ -23,7 +23,16 @@ Sharpness sharpness_on_edges(const MeshArrays& a, const CovarianceMesh& mesh) {
   return out;
 }
 
+// The face lists of the largest arrays destroyed last on this thread, for arrays_of to fill again;
+// those of a mesh past kSpareFaces faces are freed, so that what a thread holds stays bounded.
+thread_local std::vector<std::vector<int>> spare_faces;
+constexpr size_t kSpareFaces = size_t(1) << 21;
+
 }  // namespace
+
+MeshArrays::~MeshArrays() {
+  if (faces.size() > spare_faces.size() && faces.size() <= kSpareFaces) spare_faces = std::move(faces);
+}
 
 int MeshArrays::add_vertex(const Gaussian& g) {
   if (origin.size() == means.size()) origin.push_back(-1);
@@ -47,6 +56,7 @@ MeshArrays arrays_of(const CovarianceMesh& m) {
   a.face_origin.resize(m.n_faces());
   std::iota(a.face_origin.begin(), a.face_origin.end(), 0);
   const PolygonTopology& t = m.topology();
+  a.faces.swap(spare_faces);
   a.faces.resize(size_t(t.n_faces()));
   for (int f = 0; f < t.n_faces(); ++f)
     a.faces[size_t(f)].assign(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);

@@ -27,6 +27,15 @@ struct MeshArrays {
   /// the faces that did not change (a face counts as unchanged only where its corners are the same).
   std::vector<int> face_origin;
 
+  MeshArrays() = default;
+  MeshArrays(const MeshArrays&) = default;
+  MeshArrays(MeshArrays&&) = default;
+  MeshArrays& operator=(const MeshArrays&) = default;
+  MeshArrays& operator=(MeshArrays&&) = default;
+  /// Leaves its face lists to the next arrays_of on this thread, which fills them again: an operation
+  /// would otherwise allocate and free one list per face of the mesh.
+  ~MeshArrays();
+
   int n_vertices() const { return int(means.size()); }
   int n_faces() const { return int(faces.size()); }
   Gaussian gaussian(int v) const { return {means[size_t(v)], covariances[size_t(v)]}; }

@@ -354,5 +354,19 @@ TEST(IncrementalMesh, ChangedArraysBuildAsAWholeBuildDoesOrFailWithItsMessage) {
   EXPECT_GT(failed, 100);
 }
 
+// arrays_of fills the face lists that the last arrays destroyed on the thread leave, of other sizes
+// and more or fewer faces: each list holds its face's corners, no more.
+TEST(IncrementalMesh, ArraysOfRecycledListsHoldEachFaceExactly) {
+  for (const char* name : {"pawn", "icosphere", "cube", "torus", "pawn", "cube"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    const MeshArrays arrays = arrays_of(mesh);
+    ASSERT_EQ(arrays.faces.size(), mesh.n_faces()) << name;
+    for (size_t f = 0; f < mesh.n_faces(); ++f) {
+      const std::span<const int> face = mesh.face(f);
+      ASSERT_EQ(arrays.faces[f], std::vector<int>(face.begin(), face.end())) << name << ", face " << f;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gps
