@@ -54,7 +54,9 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
                     kept_runs_fit(kept, n_patches(), surface_tables.plans.n_patches());
   if (keep && same_plans(tables_, surface_tables, kept, origin)) {  // the Gaussians alone: followed as an edit
     tables_id_ = change.to;
-    return update_vertices(mesh, changed);
+    framed_ = std::move(framed);
+    point_precision_ = std::move(point_precision);
+    return follow_edit(changed);
   }
   use_point_precision(point_precision.precision());
   point_precision_ = std::move(point_precision);
@@ -112,8 +114,12 @@ void SurfaceRenderer::use_point_precision(PointPrecision precision) {
 void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
   // The frame stays that of set_mesh, so that the vertices not uploaded again still fit.
   frame_.to_frame(mesh, changed, framed_);
-  cache_.update_cage(framed_, changed);
   point_precision_.update(framed_, changed);
+  follow_edit(changed);
+}
+
+void SurfaceRenderer::follow_edit(const std::vector<int>& changed) {
+  cache_.update_cage(framed_, changed);
   const bool new_precision = point_precision_.precision() != buffers_.precision();
   if (new_precision) {  // the points' buffer in the new precision
     use_point_precision(point_precision_.precision());

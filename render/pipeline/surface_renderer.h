@@ -131,6 +131,9 @@ private:
   // Tests lower the device's limits (tests/support/device_limits.h).
   friend struct DeviceLimitsForTests;
 
+  /// The buffers, overlays, passes and surface cache after an edit of the `changed` vertices, whose
+  /// framed Gaussians and point precision are already those of the edited mesh (update_vertices).
+  void follow_edit(const std::vector<int>& changed);
   /// The compute passes for `changed` base vertices, or all (nullptr; an `edit` of most of them
   /// where set, which the surface cache follows as such).
   void run_compute(const std::vector<int>* changed, bool edit = false);
