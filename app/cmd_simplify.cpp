@@ -2,12 +2,14 @@
 // Gaussians come from the input regions collapsed into each vertex (core/fitting/mesh_simplification.h).
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
 #include "app/naming_input.h"
 #include "app/repair_arguments.h"
 #include "app/terminal_progress.h"
+#include "core/fitting/limit_placement.h"
 #include "core/fitting/mesh_simplification.h"
 #include "core/fitting/surface_distance.h"
 #include "core/io/mesh_io.h"
@@ -20,7 +22,7 @@ void add_simplify_command(CLI::App& app) {
     size_t vertices = 0;
     double ratio = 0, bias = 0.05, max_normal_deviation = 45, error = 0;
     int level = 8;
-    bool ascii = false, quiet = false, quads = false;
+    bool ascii = false, quiet = false, quads = false, limit = false;
     RepairArguments repair;
   };
   auto args = std::make_shared<Args>();
@@ -52,6 +54,9 @@ void add_simplify_command(CLI::App& app) {
   cmd->add_flag("--quads", args->quads,
                 "pair the result's triangles into quads where they make nearly square, flat ones (a quad-dominant mesh "
                 "for Catmull-Clark modelling)");
+  cmd->add_flag("--limit", args->limit,
+                "move each vertex out by how far its limit position falls short of it, so that the limit surface "
+                "lies near the positions kept, on the input, and not inside the triangles wherever they curve");
   cmd->add_flag("--ascii", args->ascii, "ASCII PLY (default: binary little endian)");
   cmd->add_flag("-q,--quiet", args->quiet, "print only errors (no report, no progress bar)");
   add_repair_arguments(cmd, args->repair);
@@ -76,8 +81,13 @@ void add_simplify_command(CLI::App& app) {
                         " keeps fewer than 4 of its " + std::to_string(input.n_vertices()) + " vertices");
     TerminalProgress progress("simplifying", args->quiet);
     options.progress = progress.report();
-    const SimplifiedMesh s = naming_input(args->input, [&] { return simplify_mesh(input, options); });
+    SimplifiedMesh s = naming_input(args->input, [&] { return simplify_mesh(input, options); });
     progress.finish();
+    std::optional<LimitPlacement> placed;
+    if (args->limit) {
+      placed = naming_input(args->input, [&] { return place_for_limit(s.mesh, PlanOptions{}); });
+      s.mesh = std::move(placed->mesh);
+    }
     write_mesh(args->output, s.mesh, !args->ascii);
     if (args->quiet) return;
     if (s.triangulated) std::cout << "fanned the faces of more than 3 sides into triangles\n";
@@ -91,6 +101,9 @@ void add_simplify_command(CLI::App& app) {
                 << ": no further collapse keeps the topology, manifoldness and face orientations)";
     if (args->quads)
       std::cout << ", " << s.quads << " pairs of them joined into quads (" << s.mesh.n_faces() << " faces)";
+    if (placed)
+      std::cout << "\nmoved the vertices out for the limit surface: its rms distance from the positions kept, "
+                << placed->gap_before << " → " << placed->gap_after << " of the diagonal";
     std::cout << "\nwrote " << args->output << "\n";
     if (args->level == 0) return;
     const LimitTriangles limit = naming_input(args->output, [&] {

@@ -15,7 +15,8 @@ set(GPSURF_PUBLIC_HEADERS
   core/evaluation/patch_eval.h core/evaluation/tessellator.h
   core/edit/covariance_edit.h core/edit/gaussian_change.h
   core/modelling/operation_list.h core/modelling/primitives.h core/modelling/samples.h
-  core/fitting/mesh_simplification.h core/fitting/surface_distance.h core/fitting/limit_fit.h
+  core/fitting/mesh_simplification.h core/fitting/limit_placement.h core/fitting/surface_distance.h
+  core/fitting/limit_fit.h
   core/support/error.h core/support/progress.h)
 set(installed "")
 set(pending ${GPSURF_PUBLIC_HEADERS})

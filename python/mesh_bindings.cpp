@@ -8,6 +8,7 @@
 #include "core/mesh/mesh_connectivity.h"
 #include "core/modelling/samples.h"
 #include "core/mesh/sharpness.h"
+#include "core/fitting/limit_placement.h"
 #include "core/fitting/mesh_simplification.h"
 #include "core/modelling/operation_list.h"
 #include "core/plans/planned_surface.h"
@@ -277,7 +278,7 @@ void add_mesh_bindings(py::module_& m) {
   m.def(
       "simplify",
       [](const MeshHandle& mesh, std::optional<size_t> vertices, double bias, const py::object& progress,
-         std::optional<double> error, bool quads) {
+         std::optional<double> error, bool quads, bool limit) {
         if (!vertices && !error) throw py::value_error("simplify: give vertices=N or error=E");
         SimplifyOptions o;
         // error alone: as few vertices as the error allows, as gpsurf simplify --error does.
@@ -288,20 +289,24 @@ void add_mesh_bindings(py::module_& m) {
         o.max_error = error.value_or(0);
         o.quads = quads;
         return call_in_background(
-            [o, source = mesh.mesh](CallControl& control) mutable {
+            [o, limit, source = mesh.mesh](CallControl& control) mutable {
               o.progress = control.progress_report();
-              return hold(simplify_mesh(*source, o).mesh);
+              SimplifiedMesh simplified = simplify_mesh(*source, o);
+              if (limit) simplified.mesh = place_for_limit(simplified.mesh, PlanOptions{}).mesh;
+              return hold(std::move(simplified.mesh));
             },
             progress, true);
       },
       py::arg("mesh"), py::arg("vertices") = py::none(), py::arg("bias") = 0.05, py::arg("progress") = py::none(),
-      py::kw_only(), py::arg("error") = py::none(), py::arg("quads") = false,
+      py::kw_only(), py::arg("error") = py::none(), py::arg("quads") = false, py::arg("limit") = false,
 
       "A coarse copy of a triangle mesh with about `vertices` vertices (edge collapses that keep its topology), each "
       "vertex's Gaussian from the input faces collapsed into it (`bias`: their thickness across their planes), as "
       "gpsurf simplify makes it. error: stop short of a collapse that would move the surface further than this "
       "fraction (0 to 1) of the input's bounding-box diagonal (with vertices=None: as few vertices as it allows). "
-      "quads: pair the result's triangles into quads where they make nearly square, flat ones. progress: called "
+      "quads: pair the result's triangles into quads where they make nearly square, flat ones. limit: move each "
+      "vertex out by how far its limit position falls short of it, so that the limit surface does not look shrunk. "
+      "progress: called "
       "with the fraction done (0 to 1); returning False cancels (gpsurf.Cancelled).");
   m.def("samples", &sample_names, "The names of the built-in meshes");
   m.def("sample_description", &sample_description, py::arg("name"),

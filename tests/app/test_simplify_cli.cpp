@@ -108,6 +108,37 @@ TEST(SimplifyCli, QuadsPairTheTriangles) {
   EXPECT_EQ(m.n_vertices(), 300u);
 }
 
+// --limit moves the vertices out for the limit surface: it says by how much, the report's distances
+// fall, and the faces and covariances are those of the simplification without it.
+TEST(SimplifyCli, LimitPlacesTheVerticesForTheLimitSurface) {
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample icosphere --size 5120 -o " + dir.file("ico.ply"))).exit_code, 0);
+  const std::string base = "simplify " + dir.file("ico.ply") + " --vertices 200 -o ";
+  const auto plain = run_command(gpsurf(base + dir.file("plain.ply")));
+  const auto placed = run_command(gpsurf(base + dir.file("placed.ply") + " --limit"));
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  ASSERT_EQ(placed.exit_code, 0) << placed.output;
+  EXPECT_NE(placed.output.find("\nmoved the vertices out for the limit surface: its rms distance from the positions "
+                               "kept, "),
+            std::string::npos)
+      << placed.output;
+  const auto rms = [](const std::string& output) {
+    const size_t at = output.find("\nrms ");
+    return at == std::string::npos ? -1.0 : std::stod(output.substr(at + 5));
+  };
+  EXPECT_GT(rms(plain.output), 0);
+  EXPECT_LT(rms(placed.output), 0.5 * rms(plain.output)) << plain.output << placed.output;
+  const CovarianceMesh a = read_mesh(dir.file("plain.ply")), b = read_mesh(dir.file("placed.ply"));
+  ASSERT_EQ(a.n_vertices(), b.n_vertices());
+  ASSERT_EQ(a.topology().verts, b.topology().verts);
+  int moved = 0;
+  for (size_t v = 0; v < a.n_vertices(); ++v) {
+    EXPECT_EQ(a.covariance(v), b.covariance(v));
+    moved += (a.mean(v) - b.mean(v)).norm() > 0;
+  }
+  EXPECT_EQ(moved, int(a.n_vertices()));
+}
+
 TEST(SimplifyCli, UsageAndRuntimeErrorsAreOneLine) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample icosphere --size 320 -o " + dir.file("ico.ply"))).exit_code, 0);

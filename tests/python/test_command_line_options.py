@@ -130,6 +130,11 @@ def test_simplify_error_and_quads_equal_the_command_line(tmp_path, cli):
     assert np.array_equal(quads.positions, triangles.positions)
     assert quads.n_faces == triangles.n_faces - np.count_nonzero(sizes == 4)
 
+    cli("simplify", "pawn.ply", "-o", "placed.ply", "--vertices", 300, "--limit", "--level", 0)
+    placed = gpsurf.simplify(pawn, 300, limit=True)
+    assert same_mesh(placed, gpsurf.read(tmp_path / "placed.ply"))
+    assert not np.array_equal(placed.positions, triangles.positions)
+
 
 @pytest.mark.parametrize("bad, words", [
     ({}, "simplify: give vertices=N or error=E"),
