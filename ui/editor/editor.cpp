@@ -278,7 +278,6 @@ void EditorApp::draw_ui() {
     const ViewPanelChanges c = draw_view_panel(view_, &view_.show_view);
     if (c.depth) try {
         show_mesh(document_.mesh(), view_.plans());
-        surface_changed();
       } catch (const Error& e) {  // too big for the GPU's buffers: the previous plans stay
         set_status(e.what(), true);
       }

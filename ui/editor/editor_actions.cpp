@@ -133,8 +133,6 @@ void EditorApp::mesh_replaced() {
   } catch (const Error& e) {  // the plans' and the GPU's refusals name no file
     throw Error(document_.display_name() + ": " + e.what(), e.kind());
   }
-  surface_changed();
-  check_finite_ = true;
   view_.triangle_mesh = view.triangle_mesh;
   mode_ = Mode::none;
   drag_.reset();

@@ -146,7 +146,8 @@ private:
   // Gives the renderer `mesh` (the document's or a tool's preview) as shown: with the modifier on, its
   // mirror planned under `plans` (`surface`, planned for `mesh` itself, then unused); else `surface`, or
   // plans that follow the mesh shown before (`shown_plans_`; `origin`: each vertex's index in it, empty
-  // where kept). Throws gps::Error as set_mesh does, before the renderer changes.
+  // where kept). Throws gps::Error as set_mesh does, before the renderer changes. With show_edit, the one
+  // way a new surface reaches the screen: both tell what follows it (surface_changed, the finite check).
   void show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans,
                  std::optional<ReplannedTables> surface = std::nullopt, const std::vector<int>& origin = {});
   void show_edit(const std::vector<int>& changed);  // the document's Gaussians `changed`, on both sides
@@ -164,6 +165,7 @@ private:
   void reopen_target_points();    // the target kept for the document's file, or none
   void remember_target_points();  // kept for the document's file (the View settings)
   void surface_changed();         // the limit surface shown changed: its distances are measured again
+                                  // (show_mesh and show_edit call it)
   void update_target_points();    // once a frame, before drawing
   void draw_target_points();
   // Actions (editor_actions.cpp).

@@ -77,6 +77,8 @@ void EditorApp::show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans, 
   hidden_stale_ = true;  // the patches and lines it leaves out, of the mesh now shown
   document_.set_clip(mirror_.clip(document_.mesh()));
   if (!refusal.empty()) set_status("mirror modifier: " + refusal + "; the half is shown", true);
+  surface_changed();
+  check_finite_ = true;
 }
 
 void EditorApp::show_edit(const std::vector<int>& changed) {
@@ -108,7 +110,6 @@ void EditorApp::set_mirror(const MirrorSettings& settings) {
     set_status(e.what(), true);
     return;
   }
-  check_finite_ = true;
   remember_mirror();
   if (settings.enabled && !mirror_.mirroring()) return;  // refused: show_mesh said why
   set_status(mirror_words(settings), false);

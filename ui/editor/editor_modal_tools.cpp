@@ -73,8 +73,6 @@ bool EditorApp::modal_event(const InputEvent& e) {
 void EditorApp::show_preview(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
                              std::optional<ReplannedTables> surface) {
   show_mesh(*mesh, view_.plans(), std::move(surface));
-  surface_changed();
-  check_finite_ = true;
   preview_ = std::move(mesh);
   preview_selection_ = selected;
 }
@@ -84,8 +82,6 @@ void EditorApp::show_document(std::optional<ReplannedTables> surface) {
   preview_selection_.clear();
   try {
     show_mesh(document_.mesh(), view_.plans(), std::move(surface));
-    surface_changed();
-    check_finite_ = true;
   } catch (const Error& e) {
     set_status(e.what(), true);
   }

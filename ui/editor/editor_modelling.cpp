@@ -322,7 +322,6 @@ void EditorApp::install(const Modelled& result, SurfaceReplanner* replanner) {
     if (!mirror_.settings.enabled) surface = replanner->replanned();
   }
   show_mesh(result.mesh, view_.plans(), std::move(surface), result.vertex_origin);
-  surface_changed();
   preview_.reset();
   preview_selection_.clear();
   document_.apply(result, selection_.record());
@@ -344,7 +343,6 @@ void EditorApp::topology_changed(const std::vector<int>& selection) {
 void EditorApp::rebuild_after_undo(const SelectionRecord& selection) {
   try {
     show_mesh(document_.mesh(), view_.plans(), std::nullopt, document_.replaced_origin());
-    surface_changed();
   } catch (const Error& e) {
     set_status(e.what(), true);
   }
