@@ -1,5 +1,5 @@
 #pragma once
-// A computing call run off the interpreter: the work runs on a thread of its own without the GIL,
+// A computing call run off the interpreter: the work runs on a worker thread without the GIL,
 // while the calling thread wakes every few milliseconds to check for Ctrl-C and to pass the work's
 // progress to an optional Python callback. Other Python threads run meanwhile.
 #include <pybind11/pybind11.h>
@@ -11,10 +11,10 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <thread>
 #include <utility>
 
 #include "core/support/progress.h"
+#include "python/worker_threads.h"
 
 namespace gps::python {
 
@@ -63,7 +63,7 @@ struct BackgroundJob {
 inline constexpr std::chrono::milliseconds kPollInterval{20};
 }  // namespace detail
 
-/// Runs `work(CallControl&)` on a new thread with the GIL released and returns its result (or
+/// Runs `work(CallControl&)` on a worker thread (python/worker_threads.h) with the GIL released and returns its result (or
 /// rethrows its exception) on the calling thread. Ctrl-C stops the call within kPollInterval plus the
 /// time the work takes to notice stop_requested(): when `stops_promptly`, the caller waits for it;
 /// otherwise it raises KeyboardInterrupt at once and the work, which owns everything it reads,
@@ -73,16 +73,19 @@ template <class Work>
 auto call_in_background(Work work, const py::object& progress, bool stops_promptly) {
   using Result = decltype(work(std::declval<CallControl&>()));
   auto job = std::make_shared<detail::BackgroundJob<Result>>();
-  std::thread([job, work = std::move(work)]() mutable {
-    try {
-      job->result.emplace(work(job->control));
-    } catch (...) {
-      job->error = std::current_exception();
-    }
-    std::lock_guard lock(job->mutex);
-    job->done = true;
-    job->finished.notify_all();
-  }).detach();
+  run_on_worker(
+      [job, work = std::make_shared<Work>(std::move(work))] {
+        try {
+          job->result.emplace((*work)(job->control));
+        } catch (...) {
+          job->error = std::current_exception();
+        }
+      },
+      [job] {
+        std::lock_guard lock(job->mutex);
+        job->done = true;
+        job->finished.notify_all();
+      });
   const auto wait = [&](std::optional<std::chrono::milliseconds> limit) {
     py::gil_scoped_release unlocked;
     std::unique_lock lock(job->mutex);

@@ -139,3 +139,52 @@ def test_a_call_keeps_the_surface_it_was_given_while_another_thread_updates_it(s
     assert len(results) == 4
     assert all(np.array_equal(r, before) or np.array_equal(r, after) for r in results)
     assert np.array_equal(surface.tessellate(6)[0], after)
+
+
+def thread_ids():
+    return set(os.listdir("/proc/self/task"))
+
+
+def test_calls_one_after_another_reuse_one_worker_thread():
+    # A thread per call would start OpenMP's team and core's per-thread caches again on every call.
+    sphere = gpsurf.sample("sphere", 20000)
+    extrude = [{"op": "extrude", "faces": [0], "distance": 0.5}]
+    gpsurf.edit(sphere, extrude)
+    known = thread_ids()
+    seen, stop = set(), threading.Event()
+
+    def watch():  # every thread that exists while the calls run, however briefly
+        seen.add(str(threading.get_native_id()))
+        while not stop.is_set():
+            seen.update(thread_ids())
+
+    watcher = threading.Thread(target=watch)
+    watcher.start()
+    for _ in range(20):
+        gpsurf.edit(sphere, extrude)
+    stop.set()
+    watcher.join()
+    assert seen - {str(watcher.native_id)} <= known
+
+
+def test_calls_from_several_threads_each_get_their_result_and_a_forked_child_still_computes():
+    sphere = gpsurf.sample("sphere", 2000)
+    started = threading.Barrier(3)
+    results = []
+
+    def call():
+        started.wait()
+        results.append(gpsurf.edit(sphere, [{"op": "subdivide"}]).n_faces)
+
+    callers = [threading.Thread(target=call) for _ in range(3)]
+    for t in callers:
+        t.start()
+    for t in callers:
+        t.join()
+    assert results == [4 * sphere.n_faces] * 3
+    # The child has none of the parent's worker threads: its calls make their own.
+    pid = os.fork()
+    if pid == 0:
+        os._exit(0 if gpsurf.edit(sphere, [{"op": "subdivide"}]).n_faces == 4 * sphere.n_faces else 1)
+    _, status = os.waitpid(pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 0
