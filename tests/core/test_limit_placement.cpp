@@ -11,6 +11,7 @@
 #include "core/fitting/surface_distance.h"
 #include "core/modelling/samples.h"
 #include "core/reference/reference_subdivision.h"
+#include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
@@ -18,18 +19,6 @@ namespace {
 CovarianceMesh with_covariance(CovarianceMesh mesh, const Mat3& covariance) {
   for (size_t v = 0; v < mesh.n_vertices(); ++v) mesh.set_covariance(v, covariance);
   return mesh;
-}
-
-// An n × n flat grid of unit quads in the plane z = 0, every Gaussian the same.
-CovarianceMesh flat_grid(int n) {
-  std::vector<Vec3> means;
-  std::vector<std::vector<int>> faces;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) means.emplace_back(i, j, 0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      faces.push_back({j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i});
-  return make_covariance_mesh(means, std::vector<Mat3>(means.size(), 0.1 * Mat3::Identity()), faces);
 }
 
 double max_offset(const CovarianceMesh& a, const CovarianceMesh& b) {
@@ -40,7 +29,7 @@ double max_offset(const CovarianceMesh& a, const CovarianceMesh& b) {
 
 TEST(LimitPlacement, AFlatRegularGridStaysWhereItIs) {
   // Its limit positions are its positions (interior, straight boundary and corners alike).
-  const CovarianceMesh grid = flat_grid(6);
+  const CovarianceMesh grid = test::grid_mesh(6, 6, 0.3, true);
   const LimitPlacement placed = place_for_limit(grid, PlanOptions{});
   EXPECT_LT(placed.gap_before, 1e-15);
   EXPECT_LT(max_offset(placed.mesh, grid), 1e-14);
