@@ -20,10 +20,10 @@ namespace gps {
 void add_fit_command(CLI::App& app) {
   struct Args {
     std::string coarse, target, output;
-    int iterations = 10, level = 8;
+    int iterations = FitOptions().iterations, level = 8;
     double smoothness = 1e-5, covariance_smoothness = FitOptions().covariance_smoothness,
            covariance_prior = FitOptions().covariance_prior, min_sigma = FitOptions().min_sigma,
-           max_sigma = FitOptions().max_sigma, tolerance = 0, time = INFINITY;
+           max_sigma = FitOptions().max_sigma, tolerance = FitOptions().tolerance, time = INFINITY;
     bool plain = false, ascii = false, quiet = false;
     PlanArguments plans;
     RepairArguments repair;
@@ -38,10 +38,10 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("-t,--target", args->target, "mesh or point-cloud PLY whose vertices the surface is fitted to")
       ->required();
   cmd->add_option("-o,--output", args->output, "output covariance PLY")->required();
-  cmd->add_option("--iterations", args->iterations, "Levenberg-Marquardt iterations (default 10)")
+  cmd->add_option("--iterations", args->iterations, "the most Levenberg-Marquardt iterations (default 100; the fit stops sooner once converged, --tolerance)")
       ->transform(integer_in(0, 1000));
   cmd->add_option("--tolerance", args->tolerance,
-                  "stop when an iteration lowers the rms distance by less than this fraction of it (default 0: never)")
+                  "stop when an iteration lowers the rms distance by less than this fraction of it (default 0.01; 0: never)")
       ->check(number_in(0, 1));
   cmd->add_option("--time", args->time, "stop after the iteration that passes this many seconds (default: never)")
       ->check(positive_number(1e9));

@@ -171,8 +171,8 @@ void add_fitting_bindings(py::module_& m) {
         details["relative_rms"] = rms;
         return py::make_tuple(mesh, details);
       },
-      py::arg("coarse"), py::arg("target"), py::arg("iterations") = 10, py::arg("plain") = false,
-      py::arg("smoothness") = 1e-5, py::arg("tolerance") = 0.0, py::arg("time") = py::none(),
+      py::arg("coarse"), py::arg("target"), py::arg("iterations") = FitOptions().iterations, py::arg("plain") = false,
+      py::arg("smoothness") = 1e-5, py::arg("tolerance") = FitOptions().tolerance, py::arg("time") = py::none(),
       py::arg("progress") = py::none(), py::arg("report") = false, py::kw_only(),
       py::arg("covariance_smoothness") = FitOptions().covariance_smoothness,
       py::arg("covariance_prior") = FitOptions().covariance_prior, py::arg("min_sigma") = FitOptions().min_sigma,

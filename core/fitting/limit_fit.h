@@ -19,7 +19,8 @@ struct FitIteration {
 };
 
 struct FitOptions {
-  int iterations = 10;
+  /// The most iterations; by default the fit stops sooner, once converged (`tolerance`).
+  int iterations = 100;
   /// Means only, every covariance the same isotropic one: the limit is the linear scheme's, linear in
   /// the means (ordinary subdivision-surface fitting).
   bool plain = false;
@@ -38,8 +39,9 @@ struct FitOptions {
   /// multiples of the mean length of its vertex's edges, at the start and after every step (0 and
   /// infinity: unbounded; ignored by a plain fit).
   double min_sigma = 0.35, max_sigma = 1.0;
-  /// Stop when an iteration lowers the rms distance by less than this fraction of it (0: never).
-  double tolerance = 0;
+  /// Stop when an iteration lowers the rms distance by less than this fraction of it (0: never):
+  /// by default at 1 %, where further iterations polish what is already fitted.
+  double tolerance = 0.01;
   /// Stop when the fit has run this many seconds (checked after each iteration; infinity: never).
   double time_budget = INFINITY;
   /// Tessellation level of the limit surface that the closest points are first found on.

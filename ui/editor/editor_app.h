@@ -20,6 +20,7 @@
 #include "render/pipeline/surface_renderer.h"
 #include "render/gl/window_context.h"
 #include "core/support/error.h"
+#include "core/fitting/limit_fit.h"
 #include "core/plans/surface_replanner.h"
 #include "ui/editing/axis_handles.h"
 #include "ui/input/command_table.h"
@@ -276,7 +277,7 @@ private:
   SimplifySettings simplify_settings_;
   struct FitSettings {
     std::string target;  // the dense mesh
-    int iterations = 10;
+    int iterations = FitOptions().iterations;
     bool plain = false;
   };
   FitSettings fit_settings_;
