@@ -38,10 +38,13 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("-t,--target", args->target, "mesh or point-cloud PLY whose vertices the surface is fitted to")
       ->required();
   cmd->add_option("-o,--output", args->output, "output covariance PLY")->required();
-  cmd->add_option("--iterations", args->iterations, "the most Levenberg-Marquardt iterations (default 100; the fit stops sooner once converged, --tolerance)")
+  cmd->add_option(
+         "--iterations", args->iterations,
+         "the most Levenberg-Marquardt iterations (default 100; the fit stops sooner once converged, --tolerance)")
       ->transform(integer_in(0, 1000));
-  cmd->add_option("--tolerance", args->tolerance,
-                  "stop when an iteration lowers the rms distance by less than this fraction of it (default 0.01; 0: never)")
+  cmd->add_option(
+         "--tolerance", args->tolerance,
+         "stop when an iteration lowers the rms distance by less than this fraction of it (default 0.01; 0: never)")
       ->check(number_in(0, 1));
   cmd->add_option("--time", args->time, "stop after the iteration that passes this many seconds (default: never)")
       ->check(positive_number(1e9));
