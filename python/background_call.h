@@ -64,10 +64,10 @@ inline constexpr std::chrono::milliseconds kPollInterval{20};
 }  // namespace detail
 
 /// Runs `work(CallControl&)` on a worker thread (python/worker_threads.h) with the GIL released and
-/// returns its result (or rethrows its exception) on the calling thread. Ctrl-C stops the call within kPollInterval plus the
-/// time the work takes to notice stop_requested(): when `stops_promptly`, the caller waits for it;
-/// otherwise it raises KeyboardInterrupt at once and the work, which owns everything it reads,
-/// finishes unseen. `progress`, if not None, is called with the fraction done whenever it changed; a
+/// returns its result (or rethrows its exception) on the calling thread. Ctrl-C stops the call within
+/// kPollInterval plus the time the work takes to notice stop_requested(): when `stops_promptly`, the
+/// caller waits for it; otherwise it raises KeyboardInterrupt at once and the work, which owns
+/// everything it reads, finishes unseen. `progress`, if not None, is called with the fraction done whenever it changed; a
 /// False return stops the call with gpsurf.Error("cancelled"), an exception stops it and propagates.
 template <class Work>
 auto call_in_background(Work work, const py::object& progress, bool stops_promptly) {
