@@ -11,6 +11,7 @@
 #include "app/plan_arguments.h"
 #include "app/repair_arguments.h"
 #include "app/terminal_progress.h"
+#include "core/fitting/fit_progress.h"
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/surface_distance.h"
 #include "core/io/mesh_io.h"
@@ -91,16 +92,16 @@ void add_fit_command(CLI::App& app) {
     options.tolerance = args->tolerance;
     options.time_budget = args->time;
     options.plans = args->plans.options();
-    // The bar: the larger of the iterations and the time budget spent; it gives way to each iteration's line.
+    // The bar (core/fitting/fit_progress.h) gives way to each iteration's line.
     TerminalProgress bar("fitting", args->quiet);
+    FitProgress done(options);
     options.progress = [&](const FitIteration& it) {
       if (args->quiet) return;
       bar.clear();
       std::printf("iteration %d: rms %.3e, max %.3e (of the diagonal), %.2f s\n", it.iteration, it.error.relative_rms(),
                   it.error.relative_max(), it.seconds);
       std::fflush(stdout);
-      const double iterations = args->iterations > 0 ? double(it.iteration) / args->iterations : 1.0;
-      bar.update(std::max(iterations, it.seconds / args->time));
+      bar.update(done.after(it));
     };
     if (!args->quiet)
       std::cout << "fitting " << coarse.n_vertices() << " vertices" << (args->plain ? " (plain)" : "") << " to "

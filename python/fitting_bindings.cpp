@@ -8,6 +8,7 @@
 #include "core/evaluation/tessellation_size.h"
 #include "core/evaluation/tessellator.h"
 #include "core/fitting/face_triangles.h"
+#include "core/fitting/fit_progress.h"
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/surface_distance.h"
 #include "python/arrays.h"
@@ -153,9 +154,9 @@ void add_fitting_bindings(py::module_& m) {
         if (targets.empty()) throw py::value_error("target: has no points to fit to");
         FitResult result = call_in_background(
             [source = coarse.mesh, targets = std::move(targets), o](CallControl& control) mutable {
-              o.progress = [&control, iterations = o.iterations](const FitIteration& it) {
+              o.progress = [&control, done = FitProgress(o)](const FitIteration& it) mutable {
                 control.throw_if_stopped();
-                control.report(iterations == 0 ? 1.0 : double(it.iteration) / iterations);
+                control.report(done.after(it));
               };
               return fit_limit_surface(*source, targets, o);
             },

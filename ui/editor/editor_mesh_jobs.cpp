@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "core/fitting/fit_progress.h"
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/mesh_simplification.h"
 #include "core/fitting/surface_distance.h"
@@ -110,8 +111,8 @@ void EditorApp::open_fit_dialog() {
       const std::vector<Vec3> targets = read_polygon_soup(path, has_covariances).positions;
       if (targets.empty()) throw Error(path + ": has no vertices to fit to");
       report_or_stop(report, 0.05);
-      options.progress = [&report, n = options.iterations](const FitIteration& it) {
-        report_or_stop(report, 0.05 + 0.95 * double(it.iteration) / double(n));
+      options.progress = [&report, done = FitProgress(options)](const FitIteration& it) mutable {
+        report_or_stop(report, 0.05 + 0.95 * done.after(it));
       };
       const FitResult fit = fit_limit_surface(*coarse, targets, options);
       const DistanceSummary& before = fit.iterations.front().error;

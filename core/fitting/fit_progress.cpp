@@ -1,0 +1,26 @@
+#include "core/fitting/fit_progress.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gps {
+
+double FitProgress::after(const FitIteration& it) {
+  seconds_ += it.seconds;
+  double fraction = options_.iterations > 0 ? double(it.iteration) / options_.iterations : 1.0;
+  if (std::isfinite(options_.time_budget)) fraction = std::max(fraction, seconds_ / options_.time_budget);
+  const double rms = it.error.rms;
+  if (options_.tolerance > 0 && last_rms_ > 0 && rms < last_rms_) {
+    const double fall = (last_rms_ - rms) / last_rms_;
+    if (first_fall_ < 0) first_fall_ = fall;
+    if (first_fall_ > options_.tolerance)
+      fraction = std::max(fraction, std::log(first_fall_ / std::max(fall, options_.tolerance)) /
+                                        std::log(first_fall_ / options_.tolerance));
+  }
+  last_rms_ = rms;
+  // Never back, and 1 only once the fit has returned.
+  fraction_ = std::max(fraction_, std::min(fraction, 0.99));
+  return fraction_;
+}
+
+}  // namespace gps
