@@ -41,9 +41,9 @@ TEST(FitProgress, IterationsAndTimeWithoutToleranceAndNeverBack) {
   options.time_budget = 1.0;
   FitProgress progress(options);
   progress.after(iteration(0, 1.0, 0.0));
-  EXPECT_DOUBLE_EQ(progress.after(iteration(1, 0.5, 0.6)), 0.6);   // the time budget's share
-  EXPECT_DOUBLE_EQ(progress.after(iteration(2, 0.4, 0.01)), 0.61);  // 0.61 s against 2 of 4 iterations
-  EXPECT_DOUBLE_EQ(progress.after(iteration(3, 0.45, 0.01)), 0.75); // an rms that rose does not count
+  EXPECT_DOUBLE_EQ(progress.after(iteration(1, 0.5, 0.6)), 0.6);     // the time budget's share
+  EXPECT_DOUBLE_EQ(progress.after(iteration(2, 0.4, 0.01)), 0.61);   // 0.61 s against 2 of 4 iterations
+  EXPECT_DOUBLE_EQ(progress.after(iteration(3, 0.45, 0.01)), 0.75);  // an rms that rose does not count
   EXPECT_DOUBLE_EQ(progress.after(iteration(4, 0.3, 0.0)), 0.99);
 }
 
