@@ -7,15 +7,15 @@ namespace gps {
 
 double FitProgress::after(const FitIteration& it) {
   seconds_ += it.seconds;
-  double fraction = options_.iterations > 0 ? double(it.iteration) / options_.iterations : 1.0;
-  if (std::isfinite(options_.time_budget)) fraction = std::max(fraction, seconds_ / options_.time_budget);
+  double fraction = iterations_ > 0 ? double(it.iteration) / iterations_ : 1.0;
+  if (std::isfinite(time_budget_)) fraction = std::max(fraction, seconds_ / time_budget_);
   const double rms = it.error.rms;
-  if (options_.tolerance > 0 && last_rms_ > 0 && rms < last_rms_) {
+  if (tolerance_ > 0 && last_rms_ > 0 && rms < last_rms_) {
     const double fall = (last_rms_ - rms) / last_rms_;
     if (first_fall_ < 0) first_fall_ = fall;
-    if (first_fall_ > options_.tolerance)
-      fraction = std::max(fraction, std::log(first_fall_ / std::max(fall, options_.tolerance)) /
-                                        std::log(first_fall_ / options_.tolerance));
+    if (first_fall_ > tolerance_)
+      fraction =
+          std::max(fraction, std::log(first_fall_ / std::max(fall, tolerance_)) / std::log(first_fall_ / tolerance_));
   }
   last_rms_ = rms;
   // Never back, and 1 only once the fit has returned.

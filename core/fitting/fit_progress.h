@@ -7,7 +7,8 @@ namespace gps {
 
 class FitProgress {
 public:
-  explicit FitProgress(const FitOptions& options) : options_(options) {}
+  explicit FitProgress(const FitOptions& options)
+      : iterations_(options.iterations), time_budget_(options.time_budget), tolerance_(options.tolerance) {}
   /// The fraction done, 0 to below 1, after iteration `it` (given in order, iteration 0 first): the
   /// largest of the iterations run over the cap, the seconds spent over the time budget and, with a
   /// tolerance, how far the rms distance's fall per iteration has shrunk toward it. The falls shrink
@@ -16,7 +17,8 @@ public:
   double after(const FitIteration& it);
 
 private:
-  FitOptions options_;
+  int iterations_;
+  double time_budget_, tolerance_;
   double seconds_ = 0, last_rms_ = -1, first_fall_ = -1;
   double fraction_ = 0;
 };
