@@ -61,11 +61,11 @@ EditorApp::EditorApp(const EditorOptions& options)
     io.Fonts->AddFontDefault();
   ImGui::StyleColorsDark();
   ImGui_ImplOpenGL3_Init("#version 450 core");
-  renderer_ = std::make_unique<SurfaceRenderer>();
+  shown_ = std::make_unique<ShownSurface>();
   point_overlay_ = std::make_unique<PointOverlay>();
   timer_ = std::make_unique<GpuPassTimer>();
-  renderer_->set_pass_timer(timer_.get());
-  renderer_->set_collect_statistics(true);
+  shown_->renderer().set_pass_timer(timer_.get());
+  shown_->renderer().set_collect_statistics(true);
   if (const std::string error = load_settings(config_folder_, view_, reach_options_); !error.empty())
     set_status(error, true);
   if (!options.vsync) view_.vsync = false;
@@ -73,7 +73,7 @@ EditorApp::EditorApp(const EditorOptions& options)
   if (options.warren) view_.warren = true;
   if (view_.matcap != "clay") {
     try {
-      renderer_->set_matcap(load_matcap(view_.matcap));
+      shown_->renderer().set_matcap(load_matcap(view_.matcap));
     } catch (const Error&) {
       view_.matcap = "clay";  // a MatCap image that is gone
     }
@@ -105,7 +105,7 @@ EditorApp::EditorApp(const EditorOptions& options)
 
 EditorApp::~EditorApp() {
   point_overlay_.reset();
-  renderer_.reset();
+  shown_.reset();
   timer_.reset();
   target_.reset();
   ImGui_ImplOpenGL3_Shutdown();
@@ -197,17 +197,14 @@ void EditorApp::render_and_present() {
         if (!hidden_.vertex_hidden(int(v))) shown_ellipsoids_.push_back(int(v));
       draw.ellipsoid_vertices = &shown_ellipsoids_;
     }
-    if (hidden_stale_) refresh_hidden();
+    if (shown_->topology_revision() != hidden_seen_) refresh_hidden();
     if (!hidden_patches_.empty()) draw.hidden_patches = &hidden_patches_;
     if (!hidden_cage_edges_.empty()) draw.hidden_edges = &hidden_cage_edges_;
-    renderer_->draw(*target_, camera_, draw);
+    shown_->renderer().draw(*target_, camera_, draw);
     draw_target_points();
     // Once the surface has settled after an edit or a new mesh (a read-back every frame of a drag
     // would cost too much): a frame the float evaluation could not represent is said, not just shown.
-    if (edited) {
-      check_finite_ = true;
-    } else if (check_finite_) {
-      check_finite_ = false;
+    if (!edited && shown_->changed_since(finite_seen_)) {
       if (const long long bad = count_non_finite_pixels(target_->read(1), target_->read(2)); bad > 0)
         set_status(
             document_.display_name() + ": the GPU's evaluation is not finite at " + std::to_string(bad) + " pixels",
@@ -234,7 +231,7 @@ void EditorApp::render_and_present() {
 }
 
 void EditorApp::write_statistics(const std::string& path) {
-  const DrawStatistics draw = renderer_->last_statistics();
+  const DrawStatistics draw = shown_->renderer().last_statistics();
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& [pass, ms] : timer_->latest()) passes[pass] = ms;
   nlohmann::json j = {{"mesh", opened_name_},
@@ -281,7 +278,7 @@ void EditorApp::draw_ui() {
       } catch (const Error& e) {  // too big for the GPU's buffers: the previous plans stay
         set_status(e.what(), true);
       }
-    if (c.matcap) renderer_->set_matcap(load_matcap(view_.matcap));
+    if (c.matcap) shown_->renderer().set_matcap(load_matcap(view_.matcap));
     if (c.target_shown) remember_target_points();
     if (c.up_axis) {
       if (!document_.source_path().empty()) view_.up_axes[document_.source_path()] = view_.up_axis;
@@ -295,8 +292,8 @@ void EditorApp::draw_ui() {
   if (view_.show_statistics) {
     std::vector<ScreenBox> keep_clear;
     if (gizmo_box_) keep_clear.push_back(*gizmo_box_);
-    draw_statistics_overlay(clock_, timer_->latest(), renderer_->last_statistics(), {free_min_, free_max_}, keep_clear,
-                            &view_.show_statistics);
+    draw_statistics_overlay(clock_, timer_->latest(), shown_->renderer().last_statistics(), {free_min_, free_max_},
+                            keep_clear, &view_.show_statistics);
   }
   draw_help_overlay(&view_.show_help, commands_.key_bindings());
   draw_unsaved_prompt();

@@ -122,7 +122,7 @@ void EditorApp::mesh_replaced() {
   ViewOptions view = view_;
   view.triangle_mesh = scheme_for(document_.mesh().topology(), PlanOptions{}) == Scheme::loop;
   const auto mirror = view_.mirror_modifiers.find(document_.source_path());
-  mirror_.settings = mirror != view_.mirror_modifiers.end() ? mirror->second : MirrorSettings{};
+  shown_->set_mirror_settings(mirror != view_.mirror_modifiers.end() ? mirror->second : MirrorSettings{});
   try {  // first: it throws before anything changes
     show_mesh(document_.mesh(), view.plans());
   } catch (const ElementError& e) {  // the plans name an element as the file read unchanged numbers it
@@ -236,7 +236,7 @@ void EditorApp::handle_browser_result() {
       break;
     case BrowserPurpose::load_matcap:
       try {
-        renderer_->set_matcap(load_matcap(*chosen));
+        shown_->renderer().set_matcap(load_matcap(*chosen));
         view_.matcap = std::filesystem::path(*chosen).filename().string();
       } catch (const Error& e) {
         set_status(e.what(), true);

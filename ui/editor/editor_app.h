@@ -8,6 +8,7 @@
 // Simplify… and Fit to… in the background) and editor_target_points.cpp (a fit's target as points over the surface).
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -17,7 +18,6 @@
 #include "render/gl/gpu_pass_timer.h"
 #include "render/gl/render_target.h"
 #include "render/overlays/point_overlay.h"
-#include "render/pipeline/surface_renderer.h"
 #include "render/gl/window_context.h"
 #include "core/support/error.h"
 #include "core/fitting/limit_fit.h"
@@ -35,7 +35,6 @@
 #include "ui/panels/inspector_panel.h"
 #include "ui/panels/job_dialog.h"
 #include "ui/editing/merge_distance.h"
-#include "ui/editing/mirror_modifier.h"
 #include "ui/settings/recent_files.h"
 #include "ui/panels/repair_prompt.h"
 #include "ui/editing/selection.h"
@@ -44,6 +43,7 @@
 #include "ui/editing/transform_mode.h"
 #include "ui/tools/modal_tool.h"
 #include "ui/panels/view_options.h"
+#include "ui/display/shown_surface.h"
 
 namespace gps {
 
@@ -129,7 +129,6 @@ private:
   void show_preview(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
                     std::optional<ReplannedTables> surface);
   void show_document(std::optional<ReplannedTables> surface);
-  const CovarianceMesh& shown_mesh() const { return preview_ ? *preview_ : document_.mesh(); }
   void draw_delete_items();
   void draw_merge_items();
   void draw_add_items();
@@ -144,11 +143,8 @@ private:
   void set_cursor(const Vec3& point, const std::string& how);
   // The mirror modifier (editor_mirror_modifier.cpp): the mesh shown through it, its commands.
   void build_mirror_commands();
-  // Gives the renderer `mesh` (the document's or a tool's preview) as shown: with the modifier on, its
-  // mirror planned under `plans` (`surface`, planned for `mesh` itself, then unused); else `surface`, or
-  // plans that follow the mesh shown before (`shown_plans_`; `origin`: each vertex's index in it, empty
-  // where kept). Throws gps::Error as set_mesh does, before the renderer changes. With show_edit, the one
-  // way a new surface reaches the screen: both tell what follows it (surface_changed, the finite check).
+  // ShownSurface::show, then the clipping the document's edits keep and the modifier's refusal said.
+  // Throws gps::Error as set_mesh does, before anything changes.
   void show_mesh(const CovarianceMesh& mesh, const PlanOptions& plans,
                  std::optional<ReplannedTables> surface = std::nullopt, const std::vector<int>& origin = {});
   void show_edit(const std::vector<int>& changed);  // the document's Gaussians `changed`, on both sides
@@ -165,8 +161,6 @@ private:
   void show_target_points(const std::string& path);
   void reopen_target_points();    // the target kept for the document's file, or none
   void remember_target_points();  // kept for the document's file (the View settings)
-  void surface_changed();         // the limit surface shown changed: its distances are measured again
-                                  // (show_mesh and show_edit call it)
   void update_target_points();    // once a frame, before drawing
   void draw_target_points();
   // Actions (editor_actions.cpp).
@@ -204,8 +198,10 @@ private:
   std::string config_folder_, layout_file_;  // where settings and the panel layout are kept
   WindowContext window_;
   GlfwInputForwarder input_forwarder_;
-  std::unique_ptr<SurfaceRenderer> renderer_;
-  std::optional<SurfaceReplanner> shown_plans_;  // the plans of the last mesh shown without a mirror
+  // What the window shows of the document, and its renderer. What follows it keeps the revision it
+  // last followed: the finite check, the target points' distances, the hidden patches and lines.
+  std::unique_ptr<ShownSurface> shown_;
+  std::uint64_t finite_seen_ = 0, target_seen_ = 0, hidden_seen_ = 0;
   std::unique_ptr<GpuPassTimer> timer_;
   std::unique_ptr<RenderTarget> target_;
   std::unique_ptr<PointOverlay> point_overlay_;
@@ -247,17 +243,16 @@ private:
   SelectMode select_mode_ = SelectMode::vertex;
   HiddenElements hidden_;
   // Of hidden_: the document's vertices, edges and faces (picking; empty where nothing is hidden), the
-  // shown mesh's patches and edges the frame leaves out; stale after the renderer got a new mesh.
+  // shown mesh's patches and edges the frame leaves out (of the shown surface's topology_revision()).
   std::vector<char> hidden_vertex_mask_, hidden_edge_mask_, hidden_face_mask_, hidden_cage_edges_;
   std::vector<int> hidden_patches_;
-  bool hidden_stale_ = false;
   bool select_through_ = false;     // box selection takes hidden vertices too (X-ray)
   double similar_threshold_ = 0.0;  // Select similar's (Blender's default)
   double sharp_edge_angle_ = 30.0;  // degrees: Select sharp edges takes the edges folded by more (Blender's default)
   bool alt_press_ = false;          // the left press had Alt: a click selects a loop, a drag orbits
 
-  // Modelling: the modal tool running (none: nullptr), the pivot of G / S / R, and the mesh a tool
-  // shows in place of the document's (a bevel's or a crease's preview; none: nullptr) with its selection.
+  // Modelling: the modal tool running (none: nullptr) and the pivot of G / S / R (a tool's preview is
+  // the shown surface's).
   std::unique_ptr<ModalTool> tool_;
   TransformPivot transform_pivot_ = TransformPivot::median;
   // The 3D cursor: the pivot TransformPivot::cursor and, once placed, where new primitives go.
@@ -266,9 +261,6 @@ private:
   // The last operation a tool made that F9 can adjust, while its step is the document's last.
   std::optional<AdjustableOperation> adjustable_;
   bool show_adjust_last_ = false;
-  std::shared_ptr<const CovarianceMesh> preview_;
-  MirrorModifier mirror_;  // what the renderer shows of the document: it, or its mirror
-  std::vector<int> preview_selection_;
   // File → Simplify… and Fit to…: the dialog, its job and the settings each last had.
   struct SimplifySettings {
     int vertices = 0;  // 0: a tenth of the mesh's
@@ -293,7 +285,6 @@ private:
   bool prompt_unsaved_ = false, after_save_perform_ = false, quit_ = false;
   std::string screenshot_request_;
   std::string status_;
-  bool check_finite_ = true;  // the next frame without an edit reads its AOVs back for non-finite values
   bool status_error_ = false;
   std::string last_title_;
   int swap_interval_ = -1;

@@ -148,7 +148,7 @@ glm::vec2 EditorApp::viewport_size() const {
 
 void EditorApp::frame_vertices(const std::vector<int>& vertices) {
   if (vertices.empty()) {  // the whole mesh, as shown (with the mirror modifier's mirror)
-    const CovarianceMesh& shown = mirror_.mirroring() ? mirror_.mirrored() : document_.mesh();
+    const CovarianceMesh& shown = shown_->drawn(document_.mesh());
     std::vector<int> all(shown.n_vertices());
     for (size_t i = 0; i < all.size(); ++i) all[i] = int(i);
     camera_ = frame_points_in_region(camera_, shown, all, 0.0, viewport_size(), free_min_, free_max_);

@@ -32,7 +32,7 @@ void EditorApp::build_hide_commands() {
 }
 
 void EditorApp::hide(bool unselected) {
-  if (preview_) return;  // a modal tool's preview is another mesh
+  if (shown_->preview()) return;  // a modal tool's preview is another mesh
   const size_t faces = hidden_.hide(document_.mesh(), selection_, select_mode_, unselected);
   refresh_hidden();
   set_status(std::string(unselected ? "hide unselected: " : "hide: ") + count_of(faces, "face", "faces") + " hidden (" +
@@ -49,7 +49,7 @@ void EditorApp::reveal() {
 void EditorApp::deselect_hidden() { hidden_.deselect_hidden(document_.mesh(), selection_, select_mode_); }
 
 void EditorApp::refresh_hidden() {
-  hidden_stale_ = false;
+  hidden_seen_ = shown_->topology_revision();
   hidden_patches_.clear();
   hidden_cage_edges_.clear();
   hidden_vertex_mask_.clear();
@@ -60,12 +60,12 @@ void EditorApp::refresh_hidden() {
   hidden_vertex_mask_ = hidden_.vertex_mask(mesh.n_vertices());
   hidden_edge_mask_ = hidden_.edge_mask(mesh);
   hidden_face_mask_ = hidden_.face_mask(mesh.n_faces());
-  if (preview_) return;  // a modal tool's preview, another mesh, is drawn whole
+  if (shown_->preview()) return;  // a modal tool's preview, another mesh, is drawn whole
   // With the mirror modifier, the half's faces and vertices keep their indices in the mesh shown
   // (core/modelling/mirror.h): its mirror image stays drawn.
-  const CovarianceMesh& shown = mirror_.mirroring() ? mirror_.mirrored() : mesh;
+  const CovarianceMesh& shown = shown_->drawn(mesh);
   try {
-    hidden_patches_ = patches_of_faces(shown.topology(), renderer_->tables().plans, hidden_.faces());
+    hidden_patches_ = patches_of_faces(shown.topology(), shown_->renderer().tables().plans, hidden_.faces());
   } catch (const Error& e) {  // not the renderer's mesh: nothing is left out rather than the wrong patches
     set_status(std::string("hide: ") + e.what(), true);
   }

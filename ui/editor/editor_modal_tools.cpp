@@ -73,13 +73,11 @@ bool EditorApp::modal_event(const InputEvent& e) {
 void EditorApp::show_preview(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
                              std::optional<ReplannedTables> surface) {
   show_mesh(*mesh, view_.plans(), std::move(surface));
-  preview_ = std::move(mesh);
-  preview_selection_ = selected;
+  shown_->set_preview(std::move(mesh), selected);
 }
 
 void EditorApp::show_document(std::optional<ReplannedTables> surface) {
-  preview_.reset();
-  preview_selection_.clear();
+  shown_->clear_preview();
   try {
     show_mesh(document_.mesh(), view_.plans(), std::move(surface));
   } catch (const Error& e) {

@@ -319,11 +319,10 @@ void EditorApp::install(const Modelled& result, SurfaceReplanner* replanner) {
   std::optional<ReplannedTables> surface;
   if (replanner) {  // first: it throws before anything changes
     replanner->set_sharpness(result.mesh.sharpness);
-    if (!mirror_.settings.enabled) surface = replanner->replanned();
+    if (!shown_->mirror().settings.enabled) surface = replanner->replanned();
   }
   show_mesh(result.mesh, view_.plans(), std::move(surface), result.vertex_origin);
-  preview_.reset();
-  preview_selection_.clear();
+  shown_->clear_preview();
   document_.apply(result, selection_.record());
   last_summary_ = result.summary;
   topology_changed(result.selection);
@@ -331,7 +330,6 @@ void EditorApp::install(const Modelled& result, SurfaceReplanner* replanner) {
 
 void EditorApp::topology_changed(const std::vector<int>& selection) {
   view_.triangle_mesh = scheme_for(document_.mesh().topology(), PlanOptions{}) == Scheme::loop;
-  check_finite_ = true;
   drag_.reset();
   reach_.clear();
   selection_.select(selection, false);

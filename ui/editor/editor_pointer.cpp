@@ -268,24 +268,25 @@ void EditorApp::draw_handles_and_box() {
                         1.5f);
     }
   } else {
-    if (!preview_) gizmo = gizmo_frame(v);  // none over a modal tool's preview: it is of the mesh before
+    if (!shown_->preview()) gizmo = gizmo_frame(v);  // none over a modal tool's preview: it is of the mesh before
     if (gizmo && mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)
       lit = hit_handle(v, input_.cursor, *gizmo, selection_.active(), kPickRadius);
   }
-  if (view_.draw.mesh_lines) draw_crease_overlay(*draw, v, shown_mesh(), preview_ ? nullptr : &hidden_);
+  if (view_.draw.mesh_lines)
+    draw_crease_overlay(*draw, v, shown_->edited(document_.mesh()), shown_->preview() ? nullptr : &hidden_);
   if (select_mode_ != SelectMode::vertex) {
     // A preview that keeps the document's selection (a crease's) shows its edges; one of its own (a
     // bevel's new faces) is of vertices, its edges those with both ends selected.
     // In face mode the faces' outlines stand for their edges.
-    const bool kept = !preview_ || preview_selection_ == selection_.vertices();
-    const CovarianceMesh& shown = shown_mesh();
+    const bool kept = !shown_->preview() || shown_->preview_selection() == selection_.vertices();
+    const CovarianceMesh& shown = shown_->edited(document_.mesh());
     const bool faces = select_mode_ == SelectMode::face;
     const std::vector<EdgeEnds> edges = faces  ? std::vector<EdgeEnds>{}
                                         : kept ? selection_.edges(shown)
-                                               : edges_within(shown, preview_selection_);
+                                               : edges_within(shown, shown_->preview_selection());
     const std::vector<int> selected_faces = !faces ? std::vector<int>{}
                                             : kept ? selection_.faces(shown)
-                                                   : faces_within(shown, preview_selection_);
+                                                   : faces_within(shown, shown_->preview_selection());
     draw_selection_overlay(*draw, v, shown, edges, selected_faces, select_mode_);
   }
   draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, lit);

@@ -78,30 +78,32 @@ void EditorApp::reopen_target_points() {
     target_points_.clear();
 }
 
-void EditorApp::surface_changed() { target_points_.surface_changed(Clock::now()); }
-
 void EditorApp::update_target_points() {
   TargetPointsView& t = view_.target;
+  if (shown_->changed_since(target_seen_)) target_points_.surface_changed(Clock::now());
   // Hidden, nothing is measured; shown again, the changes missed meanwhile are.
-  const TargetPoints::Taken taken = !t.shown ? TargetPoints::Taken{} : target_points_.poll(
-      Clock::now(),
-      [this]() -> std::shared_ptr<const CovarianceMesh> {
-        if (preview_) return preview_;  // a modal tool's preview (a crease's sharpness, a bevel)
-        return std::make_shared<const CovarianceMesh>(document_.mesh());
-      },
-      view_.plans());
+  const TargetPoints::Taken taken =
+      !t.shown ? TargetPoints::Taken{}
+               : target_points_.poll(
+                     Clock::now(),
+                     [this]() -> std::shared_ptr<const CovarianceMesh> {
+                       if (shown_->preview())
+                         return shown_->preview();  // a modal tool's preview (a crease's sharpness, a bevel)
+                       return std::make_shared<const CovarianceMesh>(document_.mesh());
+                     },
+                     view_.plans());
   if (!taken.error.empty()) set_status(taken.error, true);
   if (taken.points) {
-    point_overlay_->set_points(target_points_.points(), renderer_->frame());
+    point_overlay_->set_points(target_points_.points(), shown_->renderer().frame());
     remember_target_points();
     set_status("showing the " + std::to_string(target_points_.points().size()) + " points of " +
                    target_points_.path() + ", coloured by their distance from the surface",
                false);
   } else if (!target_points_.loaded()) {
-    if (point_overlay_->count() > 0) point_overlay_->set_points({}, renderer_->frame());  // forgotten
-  } else if (point_overlay_->frame().centre != renderer_->frame().centre ||
-             point_overlay_->frame().unit != renderer_->frame().unit) {
-    point_overlay_->set_frame(target_points_.points(), renderer_->frame());  // the overlays' frame moved
+    if (point_overlay_->count() > 0) point_overlay_->set_points({}, shown_->renderer().frame());  // forgotten
+  } else if (point_overlay_->frame().centre != shown_->renderer().frame().centre ||
+             point_overlay_->frame().unit != shown_->renderer().frame().unit) {
+    point_overlay_->set_frame(target_points_.points(), shown_->renderer().frame());  // the overlays' frame moved
   }
   if (taken.distances) point_overlay_->set_distances(target_points_.distances());
   t.name = target_points_.loaded() ? std::filesystem::path(target_points_.path()).filename().string() : "";
