@@ -1,0 +1,98 @@
+// The editor's shown surface (ui/display/shown_surface.h) on an OSMesa context: every change of what is
+// shown counts a revision, a new mesh a topology revision too, so that each follower sees each change
+// once; the mirror modifier shows the half with its image and an edit on both sides; a preview stands
+// in for the document until cleared.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <memory>
+
+#include "core/modelling/bisect.h"
+#include "core/modelling/delete_elements.h"
+#include "core/modelling/samples.h"
+#include "tests/support/gl_fixture.h"
+#include "ui/display/shown_surface.h"
+
+namespace gps {
+namespace {
+
+using ShownSurfaceTest = test::GlTest;
+
+// The cube's x ≥ 0 half, cut at x = 0: the mirror modifier's mesh.
+CovarianceMesh half_cube() {
+  const CovarianceMesh cut = bisect(make_sample("cube"), Vec3::Zero(), Vec3(1, 0, 0)).mesh;
+  std::vector<int> left;
+  for (size_t v = 0; v < cut.n_vertices(); ++v)
+    if (cut.mean(v).x() < 0) left.push_back(int(v));
+  return delete_vertices(cut, left).mesh;
+}
+
+TEST_F(ShownSurfaceTest, EachFollowerSeesEachChangeOnceAndANewMeshAsATopologyChange) {
+  ShownSurface shown;
+  std::uint64_t surface_seen = 0, topology_seen = 0, late_seen = 0;
+  EXPECT_FALSE(shown.changed_since(surface_seen));
+
+  CovarianceMesh mesh = make_sample("cube");
+  EXPECT_TRUE(shown.show(mesh, PlanOptions{}).empty());
+  EXPECT_EQ(shown.renderer().tables().plans.n_patches(), 6);
+  EXPECT_TRUE(shown.changed_since(surface_seen));
+  EXPECT_FALSE(shown.changed_since(surface_seen));  // seen once
+  EXPECT_TRUE(shown.topology_changed_since(topology_seen));
+
+  mesh.set_mean(0, mesh.mean(0) + Vec3(0.1, 0, 0));
+  EXPECT_TRUE(shown.show_edit(mesh, {0}, PlanOptions{}).empty());
+  EXPECT_TRUE(shown.changed_since(surface_seen));
+  EXPECT_FALSE(shown.topology_changed_since(topology_seen));  // the same mesh, its Gaussians edited
+
+  // A follower that looks after several changes sees them as one.
+  EXPECT_TRUE(shown.changed_since(late_seen));
+  EXPECT_FALSE(shown.changed_since(late_seen));
+}
+
+TEST_F(ShownSurfaceTest, TheMirrorModifierShowsTheHalfWithItsImageAndAnEditOnBothSides) {
+  ShownSurface shown;
+  CovarianceMesh half = half_cube();
+  MirrorSettings on;
+  on.enabled = true;
+  shown.set_mirror_settings(on);
+  EXPECT_TRUE(shown.show(half, PlanOptions{}).empty());
+  ASSERT_TRUE(shown.mirror().mirroring());
+  EXPECT_EQ(shown.drawn(half).n_faces(), 2 * half.n_faces());
+  EXPECT_EQ(shown.renderer().tables().plans.n_patches(), int(2 * half.n_faces()));
+
+  int off_plane = -1;
+  for (size_t v = 0; v < half.n_vertices() && off_plane < 0; ++v)
+    if (half.mean(v).x() > 0) off_plane = int(v);
+  ASSERT_GE(off_plane, 0);
+  half.set_mean(size_t(off_plane), half.mean(size_t(off_plane)) + Vec3(0, 0.25, 0));
+  std::uint64_t topology_seen = shown.topology_revision();
+  EXPECT_TRUE(shown.show_edit(half, {off_plane}, PlanOptions{}).empty());
+  EXPECT_FALSE(shown.topology_changed_since(topology_seen));
+  // The image of the moved vertex moved with it: some other vertex of the mirror lies at its mirror point.
+  const Vec3 moved = half.mean(size_t(off_plane)), image(-moved.x(), moved.y(), moved.z());
+  bool found = false;
+  for (size_t v = 0; v < shown.drawn(half).n_vertices(); ++v) found |= shown.drawn(half).mean(v) == image;
+  EXPECT_TRUE(found);
+
+  shown.set_mirror_settings(MirrorSettings{});
+  EXPECT_TRUE(shown.show(half, PlanOptions{}).empty());
+  EXPECT_FALSE(shown.mirror().mirroring());
+  EXPECT_EQ(&shown.drawn(half), &half);
+}
+
+TEST_F(ShownSurfaceTest, APreviewStandsInForTheDocumentUntilCleared) {
+  ShownSurface shown;
+  const CovarianceMesh document = make_sample("cube");
+  EXPECT_EQ(&shown.edited(document), &document);
+  auto preview = std::make_shared<const CovarianceMesh>(make_sample("cube"));
+  shown.show(*preview, PlanOptions{});
+  shown.set_preview(preview, {1, 2});
+  EXPECT_EQ(&shown.edited(document), preview.get());
+  EXPECT_EQ(shown.preview_selection(), (std::vector<int>{1, 2}));
+  shown.clear_preview();
+  EXPECT_EQ(&shown.edited(document), &document);
+  EXPECT_TRUE(shown.preview_selection().empty());
+}
+
+}  // namespace
+}  // namespace gps
