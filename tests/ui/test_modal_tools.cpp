@@ -22,12 +22,14 @@
 #include "ui/editing/selection.h"
 #include "ui/tools/bevel_tool.h"
 #include "ui/tools/bisect_tool.h"
+#include "ui/tools/handle_drag_tool.h"
 #include "ui/tools/inset_tool.h"
 #include "ui/tools/sharpness_tool.h"
 #include "ui/tools/slide_tool.h"
 #include "ui/tools/transform_tool.h"
 #include "tests/support/typed_events.h"
 #include "view/camera.h"
+#include "view/projection.h"
 
 namespace gps {
 namespace {
@@ -396,6 +398,65 @@ TEST(BisectTool, ALineAcrossTheViewCutsByThePlaneSeenAlongIt) {
   BisectTool cancelled(c);
   EXPECT_EQ(cancelled.handle(key_event(GLFW_KEY_ESCAPE), c), ToolResult::cancelled);
   EXPECT_EQ(editor.installed, 1);
+}
+
+// The gizmo's drag as a tool: on its centre, X and a typed 0.5 move the selected vertex along x by
+// exactly 0.5 (its covariance kept), Enter keeps it as one undo step; its gizmo is the drag's, the
+// centre lit.
+TEST(HandleDragTool, ATypedMoveAlongAnAxisIsOneUndoStep) {
+  Editor editor(cube(), {6});
+  ToolContext c = editor.context();
+  c.viewport.camera = frame_mesh(cube(), 30.0f, 20.0f);
+  c.viewport.width = 640;
+  c.viewport.height = 480;
+  const auto at = project_to_pixel(c.viewport.camera, 640, 480, cube().mean(6));
+  ASSERT_TRUE(at);
+  c.cursor = glm::vec2(*at);
+  const Handle centre{6, -1, 1};
+  const auto tool = HandleDragTool::start(c, centre, 2.0, c.cursor, false, cube().mean(6));
+  ASSERT_TRUE(tool);
+  EXPECT_EQ(tool->reached(), 1u);
+  const auto gizmo = tool->gizmo(c.viewport);
+  ASSERT_TRUE(gizmo);
+  EXPECT_TRUE(gizmo->lit.is_centre());
+  EXPECT_EQ(tool->handle(key_event(GLFW_KEY_X), c), ToolResult::consumed);
+  for (const char ch : std::string("0.5")) EXPECT_EQ(tool->handle(text_event(ch), c), ToolResult::consumed);
+  EXPECT_EQ(tool->handle(key_event(GLFW_KEY_ENTER), c), ToolResult::confirmed);
+  EXPECT_EQ(editor.document.mesh().mean(6), cube().mean(6) + Vec3(0.5, 0, 0));
+  EXPECT_EQ(editor.document.mesh().covariance(6), cube().covariance(6));
+  for (size_t v = 0; v < 6; ++v) EXPECT_EQ(editor.document.mesh().mean(v), cube().mean(v)) << v;
+  editor.document.undo();
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cube()));
+  EXPECT_FALSE(editor.document.can_undo());
+}
+
+// With proportional editing the wheel widens the reach from the drag's start; a key that is not the
+// drag's reaches the commands; Esc restores every vertex with no undo step.
+TEST(HandleDragTool, TheWheelWidensTheReachAndEscapeRestores) {
+  const CovarianceMesh grid = make_sample("grid");
+  Editor editor(grid, {0});
+  editor.reach.proportional = true;
+  editor.reach.radius = 1e-3;
+  ToolContext c = editor.context();
+  c.viewport.camera = frame_mesh(grid, 30.0f, 20.0f);
+  c.viewport.width = 640;
+  c.viewport.height = 480;
+  c.cursor = glm::vec2(*project_to_pixel(c.viewport.camera, 640, 480, grid.mean(0)));
+  const auto tool = HandleDragTool::start(c, Handle{0, -1, 1}, 2.0, c.cursor, false, grid.mean(0));
+  EXPECT_EQ(tool->reached(), 1u);
+  InputEvent wheel;
+  wheel.type = InputEvent::Type::scroll;
+  wheel.steps = 60.0f;  // 1.15^60: some thousand times wider
+  EXPECT_EQ(tool->handle(wheel, c), ToolResult::consumed);
+  EXPECT_GT(tool->reached(), 1u);
+  EXPECT_GT(editor.reach.radius, 1.0);
+  c.cursor += glm::vec2(0.0f, -40.0f);
+  EXPECT_EQ(tool->handle(mouse_event(InputEvent::Type::move, c.cursor), c), ToolResult::consumed);
+  EXPECT_NE(editor.document.mesh().mean(0), grid.mean(0));
+  EXPECT_EQ(tool->handle(key_event(GLFW_KEY_F), c), ToolResult::passed_on);
+  EXPECT_EQ(tool->handle(key_event(GLFW_KEY_ESCAPE), c), ToolResult::cancelled);
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), grid));
+  EXPECT_FALSE(editor.document.can_undo());
 }
 
 }  // namespace

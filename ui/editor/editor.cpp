@@ -242,7 +242,7 @@ void EditorApp::write_statistics(const std::string& path) {
                       {"median_frame_ms", clock_.median_frame_ms()},
                       {"median_edit_to_frame_ms", clock_.median_edit_ms()},
                       {"edits", clock_.edit_count()},
-                      {"last_edit_vertices", reach_.size()},
+                      {"last_edit_vertices", last_edit_vertices_},
                       {"gpu_pass_ms", passes},
                       {"free_region", {free_min_.x, free_min_.y, free_max_.x, free_max_.y}},
                       {"unsaved", document_.dirty()}};

@@ -135,8 +135,7 @@ void EditorApp::mesh_replaced() {
   }
   view_.triangle_mesh = view.triangle_mesh;
   mode_ = Mode::none;
-  drag_.reset();
-  reach_.clear();
+  tool_.reset();  // a tool's edit is of the mesh replaced
   selection_.clear();
   hidden_.clear();
   refresh_hidden();
@@ -182,7 +181,7 @@ void EditorApp::save_to(const std::string& path) {
 }
 
 void EditorApp::undo_redo(bool undo) {
-  if (mode_ == Mode::handle || modal_active()) return;  // not in the middle of a drag or a tool
+  if (modal_active()) return;  // not in the middle of a drag or a tool
   // A modelling step replaced the whole mesh: the GPU rebuilds for it, the camera stays.
   if (const auto selection = undo ? document_.undo() : document_.redo()) rebuild_after_undo(*selection);
 }

@@ -69,11 +69,6 @@ private:
   void press(const InputEvent& e);
   void release(const InputEvent& e);
   void follow_cursor();
-  bool drag_key(int key);
-  void drag_text(unsigned codepoint);
-  void update_drag();
-  void rebuild_reach();
-  void end_drag(bool keep);
   int pick(glm::vec2 pixel) const;
   Vec3 gizmo_pivot() const;
   std::optional<HandleFrame> gizmo_frame(const Viewport& v) const;
@@ -230,12 +225,10 @@ private:
   std::optional<EventRecorder> recorder_;
   int finishing_frames_ = 0;
 
-  enum class Mode { none, click, box, orbit, pan, handle } mode_ = Mode::none;
+  enum class Mode { none, click, box, orbit, pan } mode_ = Mode::none;  // a drag of the gizmo is a tool
   int mode_button_ = 0;
   glm::vec2 press_pixel_{0.0f}, last_cursor_{0.0f};
-  std::optional<HandleDrag> drag_;
-  std::vector<ReachedVertex> reach_;  // the vertices the drag changes, and how strongly
-  std::vector<GaussianChange> drag_changes_;
+  size_t last_edit_vertices_ = 0;              // the last tool's edit reached (the statistics)
   glm::vec2 free_min_{0.0f}, free_max_{1.0f};  // the part of the window the panels leave free
   int layout_frames_ = 2;               // frames without input that lay the panels out before the first view is framed
   std::optional<ScreenBox> gizmo_box_;  // where the gizmo was drawn this frame (the statistics keep clear of it)

@@ -72,7 +72,7 @@ void EditorApp::show_edit(const std::vector<int>& changed) {
 }
 
 void EditorApp::set_mirror(const MirrorSettings& settings) {
-  if (modal_active() || mode_ == Mode::handle) return;  // not in the middle of a drag or a tool
+  if (modal_active()) return;  // not in the middle of a drag or a tool
   const MirrorSettings before = shown_->mirror().settings;
   shown_->set_mirror_settings(settings);
   try {

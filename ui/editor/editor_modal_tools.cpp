@@ -44,6 +44,7 @@ void EditorApp::start_tool(const std::function<std::unique_ptr<ModalTool>(ToolCo
   ToolContext ctx = tool_context();
   tool_ = make(ctx);
   if (!tool_) return;  // refused, and reported
+  if (const size_t reached = tool_->reached(); reached > 0) last_edit_vertices_ = reached;
   status_ = tool_->status();
   status_error_ = tool_->error();
 }
@@ -51,7 +52,9 @@ void EditorApp::start_tool(const std::function<std::unique_ptr<ModalTool>(ToolCo
 bool EditorApp::modal_event(const InputEvent& e) {
   if (!tool_) return false;
   ToolContext ctx = tool_context();
-  switch (tool_->handle(e, ctx)) {
+  const ToolResult result = tool_->handle(e, ctx);
+  if (const size_t reached = tool_->reached(); reached > 0) last_edit_vertices_ = reached;
+  switch (result) {
     case ToolResult::passed_on:
       return false;
     case ToolResult::consumed:

@@ -300,7 +300,7 @@ void EditorApp::draw_add_items() {
 
 bool EditorApp::run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
                               SurfaceReplanner* replanner) {
-  return !modal_active() && mode_ != Mode::handle && operate(name, run, replanner);  // not during a drag
+  return !modal_active() && operate(name, run, replanner);  // not during a drag or a tool
 }
 
 bool EditorApp::operate(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
@@ -330,8 +330,6 @@ void EditorApp::install(const Modelled& result, SurfaceReplanner* replanner) {
 
 void EditorApp::topology_changed(const std::vector<int>& selection) {
   view_.triangle_mesh = scheme_for(document_.mesh().topology(), PlanOptions{}) == Scheme::loop;
-  drag_.reset();
-  reach_.clear();
   selection_.select(selection, false);
   if (select_mode_ == SelectMode::face) selection_.hold_faces(document_.mesh());  // the result's faces
   if (!hidden_.fits(document_.mesh())) hidden_.clear();  // the indices are another mesh's: all shown

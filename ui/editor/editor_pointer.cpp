@@ -12,6 +12,7 @@
 #include "ui/overlays/ellipsoid_scope.h"
 #include "ui/overlays/handle_overlay.h"
 #include "ui/overlays/selection_overlay.h"
+#include "ui/tools/handle_drag_tool.h"
 #include "view/picking.h"
 
 namespace gps {
@@ -89,11 +90,7 @@ void EditorApp::handle_event(const InputEvent& e) {
       release(e);
       break;
     case InputEvent::Type::scroll:
-      if (mode_ == Mode::handle && reach_options_.proportional) {  // the wheel sets the radius while dragging
-        reach_options_.radius *= std::pow(1.15, double(e.steps));
-        rebuild_reach();
-        update_drag();
-      } else if (!io.WantCaptureMouse) {
+      if (!io.WantCaptureMouse) {
         const Viewport v = viewport();
         std::optional<glm::dvec3> anchor;
         if (const auto hit = surface_at(e.position)) anchor = glm::dvec3(hit->x(), hit->y(), hit->z());
@@ -101,18 +98,15 @@ void EditorApp::handle_event(const InputEvent& e) {
       }
       break;
     case InputEvent::Type::key_press:
-      if (mode_ == Mode::handle && drag_key(e.key)) break;
       if (!io.WantCaptureKeyboard && !browser_.is_open())
         commands_.handle_key(e.key, input_.ctrl(), input_.shift(), input_.alt());
-      break;
-    case InputEvent::Type::text:
-      if (mode_ == Mode::handle) drag_text(e.codepoint);
       break;
     case InputEvent::Type::drop:
       if (!e.paths.empty()) request({Action::Kind::open_file, e.paths.front()});
       break;
     case InputEvent::Type::move:
     case InputEvent::Type::key_release:
+    case InputEvent::Type::text:
       break;
   }
 }
@@ -127,12 +121,11 @@ void EditorApp::press(const InputEvent& e) {
     const auto gizmo = gizmo_frame(v);
     auto handle = gizmo ? hit_handle(v, e.position, *gizmo, selection_.active(), kPickRadius) : std::nullopt;
     if (handle && !handle->is_centre() && vertex_before_handle(e.position, *gizmo, *handle)) handle.reset();
-    if (handle) {
-      document_.begin_edit();
-      drag_.emplace(document_.mesh(), selection_.vertices(), *handle, view_.draw.sigma_scale, v, e.position,
-                    view_.common_frame, gizmo->centre);
-      rebuild_reach();
-      mode_ = Mode::handle;
+    if (handle) {  // the drag takes the events until the button is released (ui/tools/handle_drag_tool.h)
+      start_tool([&](ToolContext& ctx) {
+        return HandleDragTool::start(ctx, *handle, view_.draw.sigma_scale, e.position, view_.common_frame,
+                                     gizmo->centre);
+      });
     } else {
       mode_ = Mode::click;
     }
@@ -156,78 +149,10 @@ void EditorApp::release(const InputEvent& e) {
       ring_select(e.position, input_.shift());  // Ctrl+Alt+click
     else
       loop_select(e.position, input_.shift());
-  } else if (mode_ == Mode::handle) {
-    end_drag(true);
   } else if (mode_ == Mode::pan && e.button == 1 && glm::length(e.position - press_pixel_) <= kBoxThreshold) {
     place_cursor(e.position);  // Shift+right click
   }
   mode_ = Mode::none;
-}
-
-void EditorApp::end_drag(bool keep) {
-  if (keep)
-    document_.commit_edit();  // one undo step per drag, soft and mirrored vertices included
-  else
-    document_.cancel_edit();
-  drag_.reset();
-  mode_ = Mode::none;
-}
-
-// Keys during a drag: X/Y/Z (Shift: the plane normal to it) and N constrain a move, digits type
-// its distance, Enter finishes, Escape cancels. Returns whether the key was the drag's.
-bool EditorApp::drag_key(int key) {
-  if (key == GLFW_KEY_ESCAPE) {
-    end_drag(false);
-    set_status("drag cancelled", false);
-    return true;
-  }
-  if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) {
-    end_drag(true);
-    return true;
-  }
-  // Digits are typed as text (drag_text): as keys they would reach the commands (1/2/3: select modes).
-  if ((key >= GLFW_KEY_0 && key <= GLFW_KEY_9) || (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9)) return true;
-  if (!drag_->handle().is_centre()) return false;
-  if (key == GLFW_KEY_X || key == GLFW_KEY_Y || key == GLFW_KEY_Z) {
-    drag_->constrain(input_.shift() ? MoveConstraint::plane : MoveConstraint::axis, key - GLFW_KEY_X);
-  } else if (key == GLFW_KEY_N) {
-    drag_->constrain(MoveConstraint::normal);
-  } else if (key == GLFW_KEY_BACKSPACE) {
-    std::string typed = drag_->typed();
-    if (!typed.empty()) typed.pop_back();
-    drag_->set_typed(typed);
-  } else {
-    return false;
-  }
-  update_drag();
-  return true;
-}
-
-void EditorApp::drag_text(unsigned codepoint) {
-  if (!drag_->handle().is_centre()) return;
-  const char c = char(codepoint);
-  if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == 'e')) return;
-  drag_->set_typed(drag_->typed() + c);
-  update_drag();
-}
-
-// The proportional and mirrored reach of the drag, from the positions at its start.
-void EditorApp::rebuild_reach() {
-  std::vector<Vec3> means(document_.mesh().n_vertices());
-  for (size_t v = 0; v < means.size(); ++v) means[v] = document_.start_mean(int(v));
-  document_.revert_edit();  // vertices that leave the reach go back to their start
-  reach_ = edit_reach(means, drag_->vertices(), reach_options_, &hidden_vertex_mask_);
-}
-
-void EditorApp::update_drag() {
-  const DragModifiers modifiers{input_.shift(), input_.ctrl()};
-  const auto changes = drag_->update(viewport(), input_.cursor, modifiers);
-  if (!changes) return;
-  drag_changes_ = *changes;
-  apply_reach(document_, reach_, drag_changes_, reach_options_.mirror_axis);
-  status_ = drag_->describe() +
-            (reach_.size() > drag_->vertices().size() ? "  (" + std::to_string(reach_.size()) + " vertices)" : "");
-  status_error_ = false;
 }
 
 void EditorApp::follow_cursor() {
@@ -242,9 +167,6 @@ void EditorApp::follow_cursor() {
     case Mode::click:
       if (glm::length(cursor - press_pixel_) > kBoxThreshold) mode_ = Mode::box;
       break;
-    case Mode::handle:
-      if (delta != glm::vec2(0.0f)) update_drag();
-      break;
     case Mode::box:
     case Mode::none:
       break;
@@ -257,16 +179,9 @@ void EditorApp::draw_handles_and_box() {
   ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the 3D view, under the panels
   std::optional<HandleFrame> gizmo;
   std::optional<Handle> lit;
-  if (mode_ == Mode::handle) {
-    gizmo = drag_->frame(v);
-    lit = drag_->handle();
-    if (reach_options_.proportional) {  // the radius, as a circle around where the grabbed vertex was
-      const Vec3 start = drag_->start_centre();
-      const double pixels = reach_options_.radius / world_per_pixel(v.camera, v.height, start);
-      if (const auto centre = visible_pixel(v.camera, v.width, v.height, start))
-        draw->AddCircle(ImVec2(centre->x, centre->y), float(std::min(pixels, 1e4)), IM_COL32(255, 255, 255, 160), 64,
-                        1.5f);
-    }
+  if (const auto held = tool_ ? tool_->gizmo(v) : std::nullopt) {  // a drag's, its handle lit
+    gizmo = held->frame;
+    lit = held->lit;
   } else {
     if (!shown_->preview()) gizmo = gizmo_frame(v);  // none over a modal tool's preview: it is of the mesh before
     if (gizmo && mode_ == Mode::none && !ImGui::GetIO().WantCaptureMouse)

@@ -1,8 +1,8 @@
 #pragma once
-// The editor's modal tools (G / S / R, loop cut, knife, inset, crease, bevel, slide) behind one interface:
-// once started, a tool takes the events first until it is confirmed or cancelled. It sees the editor
-// only through a ToolContext, so that a new tool is one class and one command, and EditorApp holds
-// at most one tool and hands it each event.
+// The editor's modal tools (G / S / R, loop cut, knife, inset, crease, bevel, slide, the gizmo's
+// drag) behind one interface: once started, a tool takes the events first until it is confirmed or
+// cancelled. It sees the editor only through a ToolContext, so that a new tool is one class and one
+// command, and EditorApp holds at most one tool and hands it each event.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -17,6 +17,7 @@
 #include "core/plans/surface_replanner.h"
 #include "ui/document/selection_record.h"
 #include "ui/editing/adjustable_operation.h"
+#include "ui/editing/axis_handles.h"
 #include "ui/editing/edit_reach.h"
 #include "ui/editing/snap_options.h"
 #include "ui/editing/transform_orientation.h"
@@ -31,6 +32,12 @@ class EditorDocument;
 class Selection;
 class SurfaceReplanner;
 class ModalTool;
+
+/// The gizmo a tool draws while it runs (a handle drag's), with the handle it holds lit.
+struct ToolGizmo {
+  HandleFrame frame;
+  Handle lit;
+};
 
 /// What a tool did with an event. `confirmed` and `cancelled` end it (it has already changed or
 /// restored the document); `replaced` ends it in favour of ToolContext::next.
@@ -99,6 +106,14 @@ public:
     (void)draw;
     (void)ctx;
   }
+  /// The gizmo to draw in `view` in place of the selection's; none by default.
+  virtual std::optional<ToolGizmo> gizmo(const Viewport& view) const {
+    (void)view;
+    return std::nullopt;
+  }
+  /// How many vertices the tool's edit reaches (its proportional reach included), for the
+  /// statistics; 0 for a tool that does not edit Gaussians.
+  virtual size_t reached() const { return 0; }
 
 protected:
   std::string status_;  // what status() shows, kept by each tool as it goes

@@ -33,6 +33,7 @@ public:
 
   ToolResult handle(const InputEvent& event, ToolContext& ctx) override;
   void draw_overlay(ImDrawList& draw, const ToolContext& ctx) const override;
+  size_t reached() const override { return reach_.size(); }
 
 private:
   // make(mesh, offset): the operation ("extrude", "duplicate") with its result moved by `offset`.
