@@ -1,17 +1,22 @@
 // The editor's shown surface (ui/display/shown_surface.h) on an OSMesa context: every change of what is
 // shown counts a revision, a new mesh a topology revision too, so that each follower sees each change
 // once; the mirror modifier shows the half with its image and an edit on both sides; a preview stands
-// in for the document until cleared.
+// in for the document until cleared; the target points' layer measures again after a change.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
+#include <thread>
 
+#include "core/io/mesh_io.h"
 #include "core/modelling/bisect.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/samples.h"
 #include "tests/support/gl_fixture.h"
+#include "tests/support/temp_dir.h"
 #include "ui/display/shown_surface.h"
+#include "ui/display/target_points_layer.h"
 
 namespace gps {
 namespace {
@@ -92,6 +97,45 @@ TEST_F(ShownSurfaceTest, APreviewStandsInForTheDocumentUntilCleared) {
   shown.clear_preview();
   EXPECT_EQ(&shown.edited(document), &document);
   EXPECT_TRUE(shown.preview_selection().empty());
+}
+
+// Updates the layer a frame at a time (the clock moving past the settle time) until its distances are
+// of the surface as it is, or 20 s went by.
+void settle(TargetPointsLayer& layer, const ShownSurface& shown, const CovarianceMesh& document, TargetPointsView& view,
+            TargetPointsLayer::Clock::time_point& now) {
+  for (int frame = 0; frame < 2000; ++frame) {
+    layer.update(shown, document, PlanOptions{}, view, now);
+    if (view.count > 0 && !view.measuring) return;
+    now += std::chrono::milliseconds(200);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  FAIL() << "the target points were not measured";
+}
+
+// The target points follow the shown surface's revisions: measured once loaded, and again after an
+// edit of the surface (not before the layer sees it).
+TEST_F(ShownSurfaceTest, TheTargetPointsAreMeasuredAgainAfterEachChangeOfTheSurface) {
+  const test::TempDir dir;
+  CovarianceMesh mesh = make_sample("cube");
+  write_mesh(dir.file("target.ply"), mesh);
+  ShownSurface shown;
+  shown.show(mesh, PlanOptions{});
+  TargetPointsLayer layer;
+  layer.points().load(dir.file("target.ply"));
+  TargetPointsView view;
+  auto now = TargetPointsLayer::Clock::now();
+  settle(layer, shown, mesh, view, now);
+  EXPECT_EQ(view.count, 8u);
+  EXPECT_EQ(view.name, "target.ply");
+  const double before = view.rms;
+  EXPECT_GT(before, 0.0);  // the limit surface lies inside the cube's corners
+
+  mesh.set_mean(0, 1.5 * mesh.mean(0));
+  shown.show_edit(mesh, {0}, PlanOptions{});
+  layer.update(shown, mesh, PlanOptions{}, view, now);
+  EXPECT_TRUE(view.measuring);
+  settle(layer, shown, mesh, view, now);
+  EXPECT_NE(view.rms, before);
 }
 
 }  // namespace

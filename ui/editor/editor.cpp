@@ -62,7 +62,7 @@ EditorApp::EditorApp(const EditorOptions& options)
   ImGui::StyleColorsDark();
   ImGui_ImplOpenGL3_Init("#version 450 core");
   shown_ = std::make_unique<ShownSurface>();
-  point_overlay_ = std::make_unique<PointOverlay>();
+  target_layer_ = std::make_unique<TargetPointsLayer>();
   timer_ = std::make_unique<GpuPassTimer>();
   shown_->renderer().set_pass_timer(timer_.get());
   shown_->renderer().set_collect_statistics(true);
@@ -104,7 +104,7 @@ EditorApp::EditorApp(const EditorOptions& options)
 }
 
 EditorApp::~EditorApp() {
-  point_overlay_.reset();
+  target_layer_.reset();
   shown_.reset();
   timer_.reset();
   target_.reset();
@@ -128,7 +128,7 @@ int EditorApp::run() {
 bool EditorApp::script_finished() {
   const bool scripted = script_ || !options_.screenshot.empty() || !options_.save.empty();
   if (!scripted || (script_ && !script_->done()) || job_dialog_.running() || layout_frames_ > 0) return false;
-  if (view_.target.shown && target_points_.busy()) return false;  // the target's distances as they settle
+  if (view_.target.shown && target_layer_->points().busy()) return false;  // the target's distances as they settle
   // Two more frames after the last event: auto-sized ImGui windows settle on their second frame.
   if (++finishing_frames_ < 3) return false;
   if (!options_.save.empty()) save_to(options_.save);
@@ -201,7 +201,7 @@ void EditorApp::render_and_present() {
     if (!hidden_patches_.empty()) draw.hidden_patches = &hidden_patches_;
     if (!hidden_cage_edges_.empty()) draw.hidden_edges = &hidden_cage_edges_;
     shown_->renderer().draw(*target_, camera_, draw);
-    draw_target_points();
+    target_layer_->draw(*target_, camera_, view_.target);
     // Once the surface has settled after an edit or a new mesh (a read-back every frame of a drag
     // would cost too much): a frame the float evaluation could not represent is said, not just shown.
     if (!edited && shown_->changed_since(finite_seen_)) {

@@ -17,7 +17,6 @@
 
 #include "render/gl/gpu_pass_timer.h"
 #include "render/gl/render_target.h"
-#include "render/overlays/point_overlay.h"
 #include "render/gl/window_context.h"
 #include "core/support/error.h"
 #include "core/fitting/limit_fit.h"
@@ -39,11 +38,11 @@
 #include "ui/panels/repair_prompt.h"
 #include "ui/editing/selection.h"
 #include "ui/panels/statistics_overlay.h"
-#include "ui/overlays/target_points.h"
 #include "ui/editing/transform_mode.h"
 #include "ui/tools/modal_tool.h"
 #include "ui/panels/view_options.h"
 #include "ui/display/shown_surface.h"
+#include "ui/display/target_points_layer.h"
 
 namespace gps {
 
@@ -157,7 +156,6 @@ private:
   void reopen_target_points();    // the target kept for the document's file, or none
   void remember_target_points();  // kept for the document's file (the View settings)
   void update_target_points();    // once a frame, before drawing
-  void draw_target_points();
   // Actions (editor_actions.cpp).
   void request(Action action);
   void perform(const Action& action);
@@ -194,12 +192,12 @@ private:
   WindowContext window_;
   GlfwInputForwarder input_forwarder_;
   // What the window shows of the document, and its renderer. What follows it keeps the revision it
-  // last followed: the finite check, the target points' distances, the hidden patches and lines.
+  // last followed: the finite check, the hidden patches and lines, and the target points' layer.
   std::unique_ptr<ShownSurface> shown_;
-  std::uint64_t finite_seen_ = 0, target_seen_ = 0, hidden_seen_ = 0;
+  std::uint64_t finite_seen_ = 0, hidden_seen_ = 0;
   std::unique_ptr<GpuPassTimer> timer_;
   std::unique_ptr<RenderTarget> target_;
-  std::unique_ptr<PointOverlay> point_overlay_;
+  std::unique_ptr<TargetPointsLayer> target_layer_;  // the dense target shown as points, and their distances
   EditorDocument document_;
   std::string opened_name_;  // the display name of the mesh as opened (a save renames the document)
   Selection selection_;
@@ -268,7 +266,6 @@ private:
   FitSettings fit_settings_;
   JobDialog job_dialog_;
   bool job_is_fit_ = false;                        // the dialog open is Fit to…: once applied, its target is shown
-  TargetPoints target_points_;                     // the dense target shown as points, and their distances
   std::string popup_request_;                      // a popup menu (Delete, Merge, Add) a key asked for
   double merge_distance_ = kDefaultMergeDistance;  // the Merge menu's By distance (of the diagonal)
   std::string last_summary_;                       // what the last operation did
