@@ -1,7 +1,8 @@
 // The editor's shown surface (ui/display/shown_surface.h) on an OSMesa context: every change of what is
 // shown counts a revision, a new mesh a topology revision too, so that each follower sees each change
 // once; the mirror modifier shows the half with its image and an edit on both sides; a preview stands
-// in for the document until cleared; the target points' layer measures again after a change.
+// in for the document until cleared; the target points' layer measures again after a change; the
+// hidden faces' patches are left out and follow a new mesh.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -15,6 +16,8 @@
 #include "core/modelling/samples.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/temp_dir.h"
+#include "ui/editing/selection.h"
+#include "ui/display/hidden_view.h"
 #include "ui/display/shown_surface.h"
 #include "ui/display/target_points_layer.h"
 
@@ -136,6 +139,55 @@ TEST_F(ShownSurfaceTest, TheTargetPointsAreMeasuredAgainAfterEachChangeOfTheSurf
   EXPECT_TRUE(view.measuring);
   settle(layer, shown, mesh, view, now);
   EXPECT_NE(view.rms, before);
+}
+
+// Hiding two neighbouring faces of the cube leaves their patches and the edge between them out of the
+// frame and their corners out of picking; a preview is drawn whole; a new mesh shown is followed by
+// its topology revision (the same hidden face, its patch numbered as the new mesh's plans number it).
+TEST_F(ShownSurfaceTest, TheHiddenViewLeavesOutTheHiddenFacesPatchesAndFollowsANewMesh) {
+  ShownSurface shown;
+  const CovarianceMesh cube = make_sample("cube");
+  shown.show(cube, PlanOptions{});
+  HiddenView hidden;
+  EXPECT_EQ(hidden.follow(cube, shown), "");
+  EXPECT_TRUE(hidden.patches().empty());
+  EXPECT_TRUE(hidden.vertex_mask().empty());
+
+  Selection selection;
+  std::vector<int> corners(cube.face(0).begin(), cube.face(0).end());
+  corners.insert(corners.end(), cube.face(2).begin(), cube.face(2).end());
+  selection.select(corners, false);
+  selection.hold_faces(cube);
+  EXPECT_EQ(hidden.elements().hide(cube, selection, SelectMode::face, false), 2u);
+  EXPECT_EQ(hidden.refresh(cube, shown), "");
+  EXPECT_EQ(hidden.patches(), (std::vector<int>{0, 2}));  // one patch per quad, in face order
+  EXPECT_EQ(hidden.face_mask(), (std::vector<char>{1, 0, 1, 0, 0, 0}));
+  int cage_edges = 0;
+  for (const char e : hidden.cage_edges()) cage_edges += e;
+  EXPECT_EQ(cage_edges, 1);                   // the edge between them; the others border faces still shown
+  EXPECT_EQ(hidden.follow(cube, shown), "");  // nothing new: kept
+  EXPECT_EQ(hidden.patches(), (std::vector<int>{0, 2}));
+
+  // The cube's faces in reverse order, shown anew: the hidden face's patch is now the last.
+  std::vector<std::vector<int>> reversed;
+  for (size_t f = cube.n_faces(); f-- > 0;) reversed.emplace_back(cube.face(f).begin(), cube.face(f).end());
+  std::vector<Vec3> means;
+  std::vector<Mat3> covariances;
+  for (size_t v = 0; v < cube.n_vertices(); ++v)
+    means.push_back(cube.mean(v)), covariances.push_back(cube.covariance(v));
+  const CovarianceMesh turned = make_covariance_mesh(means, covariances, reversed, "turned");
+  hidden.elements().clear();
+  selection.select(std::vector<int>(turned.face(5).begin(), turned.face(5).end()), false);
+  selection.hold_faces(turned);
+  hidden.elements().hide(turned, selection, SelectMode::face, false);
+  shown.show(turned, PlanOptions{});
+  EXPECT_EQ(hidden.follow(turned, shown), "");
+  EXPECT_EQ(hidden.patches(), std::vector<int>{5});
+
+  shown.set_preview(std::make_shared<const CovarianceMesh>(turned), {});
+  EXPECT_EQ(hidden.refresh(turned, shown), "");
+  EXPECT_TRUE(hidden.patches().empty());  // a preview is drawn whole
+  EXPECT_FALSE(hidden.vertex_mask().empty());
 }
 
 }  // namespace

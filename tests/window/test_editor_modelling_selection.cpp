@@ -16,6 +16,8 @@
 #include "core/io/mesh_io.h"
 #include "core/modelling/samples.h"
 #include "core/modelling/mesh_queries.h"
+#include "render/image/image_io.h"
+#include "tests/support/mesh_checks.h"
 #include "tests/support/test_meshes.h"
 #include "view/visible_vertices.h"
 
@@ -217,6 +219,39 @@ TEST_F(EditorModellingSelection, FaceModeSelectsTheFacesClickedNotTheFaceTheyEnc
   const CovarianceMesh extruded = play(ring, "face_mode_ring_extruded.png");
   EXPECT_EQ(extruded.n_faces(), 9u + 16u) << "the ring extruded alone";
   for (const int v : extruded.face(4)) EXPECT_EQ(extruded.mean(size_t(v)).z(), 0.0);
+}
+
+// H in face mode hides the face clicked: its patch leaves the frame, so the background shows through
+// the flat grid there; Alt+H shows it again. Hiding is a view state: the saved mesh is the file's.
+TEST_F(EditorModellingSelection, HHidesTheClickedFaceFromTheFrameAndAltHShowsItAgain) {
+  use_mesh(test::grid_mesh(3, 3, 0.3, true));
+  Vec3 c = Vec3::Zero();
+  for (const int v : original_.face(4)) c += original_.mean(size_t(v)) / 4.0;
+  const glm::vec2 centre = pixel_of(view_, c);
+  Events shown;
+  shown.key("3").wait();
+  play(shown, "hide_shown.png");
+  Events hidden = shown;
+  hidden.click(centre).wait().key("h").wait(3);
+  EXPECT_TRUE(test::same_mesh(play(hidden, "hide_hidden.png"), original_));
+  Events revealed = hidden;
+  revealed.key("alt+h").wait(3);
+  play(revealed, "hide_revealed.png");
+  // Pixels of a 15 × 15 box at the face's centre that differ between two screenshots.
+  const auto differing = [&](const std::string& a, const std::string& b) {
+    const Image x = read_image(artefact(a)), y = read_image(artefact(b));
+    int n = 0;
+    for (int dy = -7; dy <= 7; ++dy)
+      for (int dx = -7; dx <= 7; ++dx) {
+        const int px = int(centre.x) + dx, py = int(centre.y) + dy;
+        float d = 0.0f;
+        for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(x.at(px, py, k) - y.at(px, py, k)));
+        n += d > 0.1f;
+      }
+    return n;
+  };
+  EXPECT_GT(differing("hide_shown.png", "hide_hidden.png"), 200) << "the hidden face's patch is still drawn";
+  EXPECT_GT(differing("hide_hidden.png", "hide_revealed.png"), 200) << "Alt+H did not draw it again";
 }
 
 // In face mode Ctrl+click selects the shortest path of faces from the face clicked last, and

@@ -189,17 +189,18 @@ void EditorApp::render_and_present() {
     }
     DrawOptions draw = view_.draw;
     if (draw.ellipsoids && !all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices())) {
-      shown_ellipsoids_ = hidden_.shown(selection_neighbourhood(document_.mesh(), selection_.vertices()));
+      shown_ellipsoids_ = hidden_.elements().shown(selection_neighbourhood(document_.mesh(), selection_.vertices()));
       draw.ellipsoid_vertices = &shown_ellipsoids_;
-    } else if (draw.ellipsoids && !hidden_.empty()) {
+    } else if (draw.ellipsoids && !hidden_.elements().empty()) {
       shown_ellipsoids_.clear();
       for (size_t v = 0; v < document_.mesh().n_vertices(); ++v)
-        if (!hidden_.vertex_hidden(int(v))) shown_ellipsoids_.push_back(int(v));
+        if (!hidden_.elements().vertex_hidden(int(v))) shown_ellipsoids_.push_back(int(v));
       draw.ellipsoid_vertices = &shown_ellipsoids_;
     }
-    if (shown_->topology_revision() != hidden_seen_) refresh_hidden();
-    if (!hidden_patches_.empty()) draw.hidden_patches = &hidden_patches_;
-    if (!hidden_cage_edges_.empty()) draw.hidden_edges = &hidden_cage_edges_;
+    if (const std::string refusal = hidden_.follow(document_.mesh(), *shown_); !refusal.empty())
+      set_status("hide: " + refusal, true);
+    if (!hidden_.patches().empty()) draw.hidden_patches = &hidden_.patches();
+    if (!hidden_.cage_edges().empty()) draw.hidden_edges = &hidden_.cage_edges();
     shown_->renderer().draw(*target_, camera_, draw);
     target_layer_->draw(*target_, camera_, view_.target);
     // Once the surface has settled after an edit or a new mesh (a read-back every frame of a drag

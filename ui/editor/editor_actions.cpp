@@ -137,7 +137,7 @@ void EditorApp::mesh_replaced() {
   mode_ = Mode::none;
   tool_.reset();  // a tool's edit is of the mesh replaced
   selection_.clear();
-  hidden_.clear();
+  hidden_.elements().clear();
   refresh_hidden();
   const auto kept = view_.up_axes.find(document_.source_path());
   view_.up_axis = kept != view_.up_axes.end() ? kept->second : 1;

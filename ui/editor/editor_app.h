@@ -24,7 +24,6 @@
 #include "ui/editing/axis_handles.h"
 #include "ui/input/command_table.h"
 #include "ui/editing/edit_reach.h"
-#include "ui/editing/hidden_elements.h"
 #include "ui/editor/editor.h"
 #include "ui/document/editor_document.h"
 #include "ui/input/event_script.h"
@@ -43,6 +42,7 @@
 #include "ui/panels/view_options.h"
 #include "ui/display/shown_surface.h"
 #include "ui/display/target_points_layer.h"
+#include "ui/display/hidden_view.h"
 
 namespace gps {
 
@@ -194,7 +194,7 @@ private:
   // What the window shows of the document, and its renderer. What follows it keeps the revision it
   // last followed: the finite check, the hidden patches and lines, and the target points' layer.
   std::unique_ptr<ShownSurface> shown_;
-  std::uint64_t finite_seen_ = 0, hidden_seen_ = 0;
+  std::uint64_t finite_seen_ = 0;
   std::unique_ptr<GpuPassTimer> timer_;
   std::unique_ptr<RenderTarget> target_;
   std::unique_ptr<TargetPointsLayer> target_layer_;  // the dense target shown as points, and their distances
@@ -232,11 +232,7 @@ private:
   std::optional<ScreenBox> gizmo_box_;  // where the gizmo was drawn this frame (the statistics keep clear of it)
   std::vector<int> shown_ellipsoids_;   // the vertices whose ellipsoids are drawn, when not all
   SelectMode select_mode_ = SelectMode::vertex;
-  HiddenElements hidden_;
-  // Of hidden_: the document's vertices, edges and faces (picking; empty where nothing is hidden), the
-  // shown mesh's patches and edges the frame leaves out (of the shown surface's topology_revision()).
-  std::vector<char> hidden_vertex_mask_, hidden_edge_mask_, hidden_face_mask_, hidden_cage_edges_;
-  std::vector<int> hidden_patches_;
+  HiddenView hidden_;               // what is hidden, and what picking and the frame leave out for it
   bool select_through_ = false;     // box selection takes hidden vertices too (X-ray)
   double similar_threshold_ = 0.0;  // Select similar's (Blender's default)
   double sharp_edge_angle_ = 30.0;  // degrees: Select sharp edges takes the edges folded by more (Blender's default)

@@ -4,8 +4,6 @@
 #include <GLFW/glfw3.h>
 
 #include "core/modelling/operation_words.h"
-#include "core/plans/patch_faces.h"
-#include "core/support/error.h"
 #include "ui/editor/editor_app.h"
 
 namespace gps {
@@ -28,48 +26,29 @@ void EditorApp::build_hide_commands() {
          "Reveal hidden",
          {key(GLFW_KEY_H, false, false, true)},
          [this] { reveal(); },
-         [this] { return !hidden_.empty(); }});
+         [this] { return !hidden_.elements().empty(); }});
 }
 
 void EditorApp::hide(bool unselected) {
   if (shown_->preview()) return;  // a modal tool's preview is another mesh
-  const size_t faces = hidden_.hide(document_.mesh(), selection_, select_mode_, unselected);
+  const size_t faces = hidden_.elements().hide(document_.mesh(), selection_, select_mode_, unselected);
   refresh_hidden();
   set_status(std::string(unselected ? "hide unselected: " : "hide: ") + count_of(faces, "face", "faces") + " hidden (" +
-                 count_of(hidden_.faces().size(), "face", "faces") + " in all; Alt+H shows them)",
+                 count_of(hidden_.elements().faces().size(), "face", "faces") + " in all; Alt+H shows them)",
              false);
 }
 
 void EditorApp::reveal() {
-  const size_t faces = hidden_.reveal(document_.mesh(), selection_, select_mode_);
+  const size_t faces = hidden_.elements().reveal(document_.mesh(), selection_, select_mode_);
   refresh_hidden();
   set_status("reveal: " + count_of(faces, "face", "faces") + " shown and selected", false);
 }
 
-void EditorApp::deselect_hidden() { hidden_.deselect_hidden(document_.mesh(), selection_, select_mode_); }
+void EditorApp::deselect_hidden() { hidden_.elements().deselect_hidden(document_.mesh(), selection_, select_mode_); }
 
 void EditorApp::refresh_hidden() {
-  hidden_seen_ = shown_->topology_revision();
-  hidden_patches_.clear();
-  hidden_cage_edges_.clear();
-  hidden_vertex_mask_.clear();
-  hidden_edge_mask_.clear();
-  hidden_face_mask_.clear();
-  if (hidden_.empty()) return;
-  const CovarianceMesh& mesh = document_.mesh();
-  hidden_vertex_mask_ = hidden_.vertex_mask(mesh.n_vertices());
-  hidden_edge_mask_ = hidden_.edge_mask(mesh);
-  hidden_face_mask_ = hidden_.face_mask(mesh.n_faces());
-  if (shown_->preview()) return;  // a modal tool's preview, another mesh, is drawn whole
-  // With the mirror modifier, the half's faces and vertices keep their indices in the mesh shown
-  // (core/modelling/mirror.h): its mirror image stays drawn.
-  const CovarianceMesh& shown = shown_->drawn(mesh);
-  try {
-    hidden_patches_ = patches_of_faces(shown.topology(), shown_->renderer().tables().plans, hidden_.faces());
-  } catch (const Error& e) {  // not the renderer's mesh: nothing is left out rather than the wrong patches
-    set_status(std::string("hide: ") + e.what(), true);
-  }
-  hidden_cage_edges_ = hidden_.edge_mask(shown);
+  if (const std::string refusal = hidden_.refresh(document_.mesh(), *shown_); !refusal.empty())
+    set_status("hide: " + refusal, true);
 }
 
 }  // namespace gps

@@ -9,7 +9,7 @@ namespace gps {
 
 ToolContext EditorApp::tool_context() {
   ToolContext c(document_, selection_, reach_options_);
-  c.hidden_vertices = &hidden_vertex_mask_;
+  c.hidden_vertices = &hidden_.vertex_mask();
   c.viewport = viewport();
   c.cursor = input_.cursor;
   c.shift = input_.shift();

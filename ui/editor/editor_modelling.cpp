@@ -332,7 +332,8 @@ void EditorApp::topology_changed(const std::vector<int>& selection) {
   view_.triangle_mesh = scheme_for(document_.mesh().topology(), PlanOptions{}) == Scheme::loop;
   selection_.select(selection, false);
   if (select_mode_ == SelectMode::face) selection_.hold_faces(document_.mesh());  // the result's faces
-  if (!hidden_.fits(document_.mesh())) hidden_.clear();  // the indices are another mesh's: all shown
+  if (!hidden_.elements().fits(document_.mesh()))
+    hidden_.elements().clear();  // the indices are another mesh's: all shown
   refresh_hidden();
 }
 

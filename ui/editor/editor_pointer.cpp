@@ -51,10 +51,10 @@ std::optional<HandleFrame> EditorApp::gizmo_frame(const Viewport& v) const {
 int EditorApp::pick(glm::vec2 pixel) const {
   const Viewport v = viewport();
   const int vertex =
-      pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &hidden_vertex_mask_);
+      pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &hidden_.vertex_mask());
   if (vertex >= 0 || !view_.draw.ellipsoids) return vertex;
-  const bool all =
-      hidden_.empty() && all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices());
+  const bool all = hidden_.elements().empty() &&
+                   all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices());
   return pick_ellipsoid(v.camera, v.width, v.height, pixel, document_.mesh(), view_.draw.sigma_scale,
                         all ? nullptr : &shown_ellipsoids_);
 }
@@ -64,7 +64,7 @@ int EditorApp::pick(glm::vec2 pixel) const {
 bool EditorApp::vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const {
   const Viewport v = viewport();
   const int vertex =
-      pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &hidden_vertex_mask_);
+      pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &hidden_.vertex_mask());
   if (vertex < 0 || selection_.contains(vertex)) return false;
   const auto at_vertex = visible_pixel(v.camera, v.width, v.height, document_.mesh().mean(size_t(vertex)));
   const auto at_end = visible_pixel(v.camera, v.width, v.height, gizmo.end(handle.axis, handle.side));
@@ -188,7 +188,7 @@ void EditorApp::draw_handles_and_box() {
       lit = hit_handle(v, input_.cursor, *gizmo, selection_.active(), kPickRadius);
   }
   if (view_.draw.mesh_lines)
-    draw_crease_overlay(*draw, v, shown_->edited(document_.mesh()), shown_->preview() ? nullptr : &hidden_);
+    draw_crease_overlay(*draw, v, shown_->edited(document_.mesh()), shown_->preview() ? nullptr : &hidden_.elements());
   if (select_mode_ != SelectMode::vertex) {
     // A preview that keeps the document's selection (a crease's) shows its edges; one of its own (a
     // bevel's new faces) is of vertices, its edges those with both ends selected.

@@ -38,13 +38,14 @@ std::vector<int> EditorApp::vertices_under(glm::vec2 pixel) const {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
   if (select_mode_ == SelectMode::vertex) {
-    if (const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, mesh, kClickRadius, &hidden_vertex_mask_);
+    if (const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, mesh, kClickRadius, &hidden_.vertex_mask());
         vertex >= 0)
       return {vertex};
   } else if (select_mode_ == SelectMode::edge) {
-    if (const auto edge = pick_edge(v, pixel, mesh, kClickRadius, &hidden_edge_mask_)) return {(*edge)[0], (*edge)[1]};
+    if (const auto edge = pick_edge(v, pixel, mesh, kClickRadius, &hidden_.edge_mask()))
+      return {(*edge)[0], (*edge)[1]};
   }
-  const int face = pick_face(v, pixel, mesh, &hidden_face_mask_);
+  const int face = pick_face(v, pixel, mesh, &hidden_.face_mask());
   return face >= 0 ? corners(mesh, face) : std::vector<int>{};
 }
 
@@ -57,8 +58,8 @@ void EditorApp::click_select(glm::vec2 pixel, bool toggle) {
   const CovarianceMesh& mesh = document_.mesh();
   std::vector<int> group;
   const auto edge =
-      select_mode_ == SelectMode::edge ? pick_edge(v, pixel, mesh, kClickRadius, &hidden_edge_mask_) : std::nullopt;
-  const int face = select_mode_ == SelectMode::face ? pick_face(v, pixel, mesh, &hidden_face_mask_) : -1;
+      select_mode_ == SelectMode::edge ? pick_edge(v, pixel, mesh, kClickRadius, &hidden_.edge_mask()) : std::nullopt;
+  const int face = select_mode_ == SelectMode::face ? pick_face(v, pixel, mesh, &hidden_.face_mask()) : -1;
   if (edge)
     group = {(*edge)[0], (*edge)[1]};
   else if (face >= 0)
@@ -78,7 +79,7 @@ void EditorApp::click_select(glm::vec2 pixel, bool toggle) {
 void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
-  const auto edge = pick_edge(v, pixel, mesh, kLoopRadius, &hidden_edge_mask_);
+  const auto edge = pick_edge(v, pixel, mesh, kLoopRadius, &hidden_.edge_mask());
   if (!edge) return;
   const auto [a, b] = *edge;
   try {
@@ -107,7 +108,7 @@ void EditorApp::loop_select(glm::vec2 pixel, bool toggle) {
 // edges selects a loop of faces there.
 void EditorApp::ring_select(glm::vec2 pixel, bool toggle) {
   const CovarianceMesh& mesh = document_.mesh();
-  const auto edge = pick_edge(viewport(), pixel, mesh, kLoopRadius, &hidden_edge_mask_);
+  const auto edge = pick_edge(viewport(), pixel, mesh, kLoopRadius, &hidden_.edge_mask());
   if (!edge) return;
   const auto [a, b] = *edge;
   try {
@@ -162,10 +163,10 @@ void EditorApp::path_select(glm::vec2 pixel) {
 
 void EditorApp::face_path_select(glm::vec2 pixel) {
   const CovarianceMesh& mesh = document_.mesh();
-  const int from = selection_.active_face(mesh), to = pick_face(viewport(), pixel, mesh, &hidden_face_mask_);
+  const int from = selection_.active_face(mesh), to = pick_face(viewport(), pixel, mesh, &hidden_.face_mask());
   if (from < 0 || to < 0) return click_select(pixel, false);
   try {
-    const std::vector<int> path = shortest_face_path(mesh, from, to, &hidden_face_mask_);
+    const std::vector<int> path = shortest_face_path(mesh, from, to, &hidden_.face_mask());
     selection_.select_faces(mesh, path, true);
     selection_.set_active_face(mesh, to);
     set_status("shortest path: " + count_of(path.size(), "face", "faces"), false);
@@ -177,7 +178,7 @@ void EditorApp::face_path_select(glm::vec2 pixel) {
 void EditorApp::box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract) {
   const Viewport v = viewport();
   const CovarianceMesh& mesh = document_.mesh();
-  std::vector<int> inside = hidden_.shown(vertices_in_box(v.camera, v.width, v.height, a, b, mesh));
+  std::vector<int> inside = hidden_.elements().shown(vertices_in_box(v.camera, v.width, v.height, a, b, mesh));
   if (!select_through_ && !inside.empty()) {
     const std::vector<char> visible = visible_vertices(v, mesh);
     std::vector<int> seen;
