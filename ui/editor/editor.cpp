@@ -300,7 +300,8 @@ void EditorApp::draw_ui() {
   draw_unsaved_prompt();
   draw_repair_prompt();
   handle_browser_result();
-  draw_status_bar(document_, selection_summary(), status_, status_error_);
+  draw_status_bar(document_, selection_summary(selection_, document_.mesh(), select_mode_, select_through_), status_,
+                  status_error_);
   note_free_region();
   if (layout_frames_ > 0) {
     --layout_frames_;

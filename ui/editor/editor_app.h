@@ -1,11 +1,12 @@
 #pragma once
-// The editor's parts and their wiring (private to ui/): one class, its methods in one file per
-// concept — editor.cpp (frames, drawing, output), editor_pointer.cpp (mouse and handle drags),
-// editor_actions.cpp (open, save, undo, the unsaved-changes prompt), editor_commands.cpp (the
-// command table: keys, menus, help), editor_selection_commands.cpp (selecting with the pointer), editor_select_menu.cpp
-// (the Select menu), editor_hide.cpp (hide and reveal), editor_modelling.cpp (the Mesh menu's operations),
-// editor_modal_tools.cpp (the modal tools of ui/tools/ started and handed the events), editor_mesh_jobs.cpp (File →
-// Simplify… and Fit to… in the background) and editor_target_points.cpp (a fit's target as points over the surface).
+// The editor's parts and their wiring (private to ui/): the document, what shows it (ui/display/),
+// the tool running (ui/tools/), the selection and the commands; its methods in one file per concept:
+// editor.cpp (frames, drawing, output), editor_pointer.cpp (clicks, boxes, orbit and pan; a press on
+// the gizmo starts its drag), editor_actions.cpp (open, save, undo, the unsaved-changes prompt),
+// editor_commands.cpp (the command table: keys, menus, help), editor_select_menu.cpp (the Select
+// menu), editor_hide.cpp (hide and reveal), editor_modelling.cpp (the Mesh menu's operations),
+// editor_modal_tools.cpp (the modal tools started and handed the events), editor_mesh_jobs.cpp (File →
+// Simplify… and Fit to… in the background) and editor_target_points.cpp (a fit's target as points).
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -35,6 +36,7 @@
 #include "ui/editing/merge_distance.h"
 #include "ui/settings/recent_files.h"
 #include "ui/panels/repair_prompt.h"
+#include "ui/editing/pointer_selection.h"
 #include "ui/editing/selection.h"
 #include "ui/panels/statistics_overlay.h"
 #include "ui/editing/transform_mode.h"
@@ -74,21 +76,14 @@ private:
   bool vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const;
   Viewport viewport() const;
   void draw_handles_and_box();
-  // Selecting in the vertex, edge and face modes (editor_selection_commands.cpp; the Select menu:
-  // editor_select_menu.cpp).
+  // Selecting in the vertex, edge and face modes: the Select menu (editor_select_menu.cpp); the
+  // pointer's clicks and boxes (ui/editing/pointer_selection.h, from release()) select in pointer_scene.
   void build_selection_commands();
   void set_select_mode(SelectMode mode);
-  void click_select(glm::vec2 pixel, bool toggle);
-  void loop_select(glm::vec2 pixel, bool toggle);
-  void ring_select(glm::vec2 pixel, bool toggle);  // Ctrl+Alt+click: the edge ring across the quads
-  void path_select(glm::vec2 pixel);               // Ctrl+click: the shortest path from the active vertex
-  void face_path_select(glm::vec2 pixel);          // the same in face mode: from the active face
-  void draw_similar_items();                       // Shift+G: select similar
-  void box_select(glm::vec2 a, glm::vec2 b, bool add, bool subtract);
+  void draw_similar_items();      // Shift+G: select similar
   void select_sharp_edges();      // adds the edges folded by more than sharp_edge_angle_, in edge mode
   void draw_sharp_edges_items();  // the Select menu's angle field and its item
-  std::vector<int> vertices_under(glm::vec2 pixel) const;  // the element under the cursor, in the mode
-  std::string selection_summary() const;                   // for the status bar
+  PointerScene pointer_scene(const Viewport& v) const;
   // Hide and reveal (editor_hide.cpp).
   void build_hide_commands();
   void hide(bool unselected);  // H; Shift+H: what is not selected

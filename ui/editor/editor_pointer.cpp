@@ -12,6 +12,7 @@
 #include "ui/overlays/ellipsoid_scope.h"
 #include "ui/overlays/handle_overlay.h"
 #include "ui/overlays/selection_overlay.h"
+#include "ui/editing/pointer_selection.h"
 #include "ui/tools/handle_drag_tool.h"
 #include "view/picking.h"
 
@@ -21,6 +22,10 @@ namespace {
 constexpr float kPickRadius = 8.0f;    // window pixels
 constexpr float kBoxThreshold = 4.0f;  // pixels a left press moves before it becomes a box
 }  // namespace
+
+PointerScene EditorApp::pointer_scene(const Viewport& v) const {
+  return {v, document_.mesh(), select_mode_, hidden_.vertex_mask(), hidden_.edge_mask(), hidden_.face_mask()};
+}
 
 Viewport EditorApp::viewport() const {
   Viewport v;
@@ -136,19 +141,27 @@ void EditorApp::press(const InputEvent& e) {
 
 void EditorApp::release(const InputEvent& e) {
   if (mode_ == Mode::none || e.button != mode_button_) return;
+  // Selecting (ui/editing/pointer_selection.h): in vertex mode the vertex or ellipsoid picked.
+  const Viewport v = viewport();
+  const PointerScene scene = pointer_scene(v);
+  const auto say = [this](const SelectionNote& note) {
+    if (!note.text.empty()) set_status(note.text, note.error);
+  };
   if (mode_ == Mode::click) {
     if (input_.ctrl() && !input_.shift())
-      path_select(e.position);
+      say(path_select(selection_, scene, e.position, select_mode_ == SelectMode::face ? -1 : pick(e.position)));
     else
-      click_select(e.position, input_.shift());
+      click_select(selection_, scene, e.position, select_mode_ == SelectMode::vertex ? pick(e.position) : -1,
+                   input_.shift());
   } else if (mode_ == Mode::box) {
-    box_select(press_pixel_, e.position, input_.shift(), input_.ctrl());
+    box_select(selection_, scene, hidden_.elements(), press_pixel_, e.position, input_.shift(), input_.ctrl(),
+               select_through_);
   } else if (alt_press_ && (mode_ == Mode::orbit || mode_ == Mode::pan) &&
              glm::length(e.position - press_pixel_) <= kBoxThreshold) {  // Alt+click, Shift+Alt+click adds
     if (input_.ctrl())
-      ring_select(e.position, input_.shift());  // Ctrl+Alt+click
+      say(ring_select(selection_, scene, e.position, input_.shift()));  // Ctrl+Alt+click
     else
-      loop_select(e.position, input_.shift());
+      say(loop_select(selection_, scene, e.position, input_.shift()));
   } else if (mode_ == Mode::pan && e.button == 1 && glm::length(e.position - press_pixel_) <= kBoxThreshold) {
     place_cursor(e.position);  // Shift+right click
   }

@@ -1,5 +1,6 @@
 // The Select menu: the modes (1, 2, 3), all, none, invert, circle select, select similar, sharp
 // edges, linked, grow, shrink and X-ray; each keeps the edges or faces held as the mode selects.
+// Selecting with the pointer: ui/editing/pointer_selection.h, called from editor_pointer.cpp.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -12,9 +13,16 @@
 #include "core/modelling/select_similar.h"
 #include "core/support/error.h"
 #include "ui/editor/editor_app.h"
+#include "ui/editing/pointer_selection.h"
 #include "ui/tools/circle_select_tool.h"
 
 namespace gps {
+
+void EditorApp::set_select_mode(SelectMode mode) {
+  select_mode_ = mode;
+  selection_.hold_for(mode, document_.mesh());
+  set_status(select_mode_name(mode) + " select mode", false);
+}
 
 // Select similar's items for the selection mode, and its threshold: each adds the elements like a
 // selected one (core/modelling/select_similar.h).
@@ -145,7 +153,8 @@ void EditorApp::build_selection_commands() {
          "Select linked (under the cursor)",
          {key(GLFW_KEY_L)},
          [this, hold_for_mode] {
-           const std::vector<int> seeds = vertices_under(input_.cursor);
+           const Viewport v = viewport();
+           const std::vector<int> seeds = vertices_under(pointer_scene(v), input_.cursor);
            if (!seeds.empty()) selection_.select(linked_vertices(document_.mesh(), seeds), true);
            hold_for_mode();
          },
