@@ -23,6 +23,13 @@ std::vector<int> corners(const CovarianceMesh& mesh, int face) {
   return {face_corners.begin(), face_corners.end()};
 }
 
+// In face mode both an Alt+click and a Ctrl+Alt+click take the loop of faces across the edge a-b.
+SelectionNote click_face_loop(Selection& selection, const CovarianceMesh& mesh, int a, int b, bool toggle) {
+  const std::vector<int> loop = face_loop(mesh, a, b);
+  selection.click_faces(mesh, loop, a, toggle);
+  return {"face loop: " + count_of(loop.size(), "face", "faces")};
+}
+
 SelectionNote face_path_select(Selection& selection, const PointerScene& scene, glm::vec2 pixel) {
   const CovarianceMesh& mesh = scene.mesh;
   const int from = selection.active_face(mesh), to = pick_face(scene.view, pixel, mesh, &scene.hidden_faces);
@@ -94,11 +101,7 @@ SelectionNote loop_select(Selection& selection, const PointerScene& scene, glm::
       selection.click_edges(mesh, loop, a, toggle);
       return {"edge loop: " + count_of(loop.size(), "edge", "edges")};
     }
-    if (scene.mode == SelectMode::face) {
-      const std::vector<int> loop = face_loop(mesh, a, b);
-      selection.click_faces(mesh, loop, a, toggle);
-      return {"face loop: " + count_of(loop.size(), "face", "faces")};
-    }
+    if (scene.mode == SelectMode::face) return click_face_loop(selection, mesh, a, b, toggle);
     const std::vector<int> loop = edge_loop(mesh, a, b);
     selection.click_group(loop, a, toggle);
     return {"edge loop: " + std::to_string(loop.size()) + " vertices"};
@@ -113,11 +116,7 @@ SelectionNote ring_select(Selection& selection, const PointerScene& scene, glm::
   if (!edge) return {};
   const auto [a, b] = *edge;
   try {
-    if (scene.mode == SelectMode::face) {
-      const std::vector<int> loop = face_loop(mesh, a, b);
-      selection.click_faces(mesh, loop, a, toggle);
-      return {"face loop: " + count_of(loop.size(), "face", "faces")};
-    }
+    if (scene.mode == SelectMode::face) return click_face_loop(selection, mesh, a, b, toggle);
     std::vector<EdgeEnds> ring;
     for (const auto& [x, y] : edge_ring(mesh, a, b).edges) ring.push_back({std::min(x, y), std::max(x, y)});
     if (scene.mode == SelectMode::edge) {
