@@ -22,7 +22,7 @@ public:
   std::string refresh(const CovarianceMesh& document, const ShownSurface& shown);
   /// refresh() where the shown surface's topology changed since the last one, else nothing ("").
   std::string follow(const CovarianceMesh& document, const ShownSurface& shown) {
-    return shown.topology_revision() == seen_ ? std::string() : refresh(document, shown);
+    return shown.topology_changed_since(seen_) ? refresh(document, shown) : std::string();
   }
 
   /// 1 per hidden vertex, edge (in the mesh's edge order) and face of the document; empty where

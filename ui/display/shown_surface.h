@@ -55,11 +55,10 @@ public:
   /// The modifier's settings for the next show().
   void set_mirror_settings(const MirrorSettings& settings) { mirror_.settings = settings; }
 
-  /// Counts every change of the surface shown; topology_revision() only new meshes (show()).
-  std::uint64_t revision() const { return revision_; }
+  /// Counts the new meshes shown (show(), and the half shown where the mirror refused an edit).
   std::uint64_t topology_revision() const { return topology_revision_; }
-  /// For a follower that last followed revision `seen`: whether the surface changed since, `seen`
-  /// brought up to date.
+  /// For a follower that last followed revision `seen`: whether the surface changed since (any
+  /// change; topology_changed_since: a new mesh), `seen` brought up to date.
   bool changed_since(std::uint64_t& seen) const { return std::exchange(seen, revision_) != revision_; }
   bool topology_changed_since(std::uint64_t& seen) const {
     return std::exchange(seen, topology_revision_) != topology_revision_;
