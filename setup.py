@@ -44,6 +44,10 @@ class CMakeBuild(build_ext):
         target = Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[-1], target)
+        # OpenImageIO's formats (render/image/image_file_module.h), looked for beside the module.
+        image_module = Path(build_dir) / "lib" / "gpsurf" / "libgpsurf_openimageio.so"
+        if image_module.exists():
+            shutil.copyfile(image_module, target.parent / image_module.name)
 
 
 BUILD_BASE.mkdir(parents=True, exist_ok=True)

@@ -46,6 +46,8 @@ if(GPSURF_BUILD_GL)
   install(TARGETS gpsurf-editor RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
   # Not a command of its own: gpsurf runs it for render, bench and diff (app/gl_commands.h).
   install(TARGETS gpsurf-render RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/gpsurf)
+  # OpenImageIO's formats, opened when first needed (render/image/image_file_module.h).
+  install(TARGETS gpsurf_openimageio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/gpsurf)
 endif()
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/gpsurfConfig.cmake.in

@@ -1,5 +1,5 @@
 // gpsurf.render: the GPU renderer off-screen (OSMesa or EGL), as `gpsurf render` draws; images as
-// float32 numpy arrays, and read_image / write_image through OpenImageIO.
+// float32 numpy arrays, and read_image / write_image (render/image/image_io.h).
 #include <pybind11/stl.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Packs what checks gpsurf on another machine's GPU into DIR (default out/gpu-bundle, about 15 MB):
-# the GL tests that need no OpenImageIO and the frame benchmarks, stripped, with the three shared
+# the GL tests that need no OpenImageIO (no image format besides PNG) and the frame benchmarks, stripped, with the shared
 # libraries they need beyond glibc, libstdc++ and the GL loader (libEGL). On the GPU machine:
 #   DIR/run.sh OUT [tests|bench|all]
 # runs the GL tests on the GPU's EGL device (GPSURF_TEST_CONTEXT=egl) and the benchmarks, writing
@@ -13,8 +13,9 @@ scripts/build.sh
 rm -rf "$dir" && mkdir -p "$dir/bin" "$dir/lib"
 tests=()
 for t in build/tests/test_*; do
-  # Only tests whose libraries a GPU machine has: not those writing images (OpenImageIO).
-  if [ -x "$t" ] && grep -q "gl_fixture\|GlTest" "tests/render/$(basename "$t").cpp" 2>/dev/null && ! ldd "$t" | grep OpenImageIO > /dev/null; then  # not -q: under pipefail, ldd killed by SIGPIPE would pass
+  # Only tests whose libraries a GPU machine has: not those of EXR or other formats than PNG (OpenImageIO's module).
+  if [ -x "$t" ] && grep -q "gl_fixture\|GlTest" "tests/render/$(basename "$t").cpp" 2>/dev/null &&
+    ! grep -q '\.exr\|openimageio_files' "tests/render/$(basename "$t").cpp"; then
     strip -o "$dir/bin/$(basename "$t")" "$t"
     tests+=("$(basename "$t")")
   fi

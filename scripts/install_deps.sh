@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(
   cmake g++ ninja-build pkg-config python3-glad
-  libopenmesh-dev libeigen3-dev libglm-dev libopenimageio-dev openimageio-tools
+  libopenmesh-dev libeigen3-dev libglm-dev libopenimageio-dev openimageio-tools libpng-dev
   libglfw3-dev libosmesa6-dev libegl-dev libgl-dev libimgui-dev
   libgl1-mesa-dri libglx-mesa0 libegl-mesa0
   libcli11-dev nlohmann-json3-dev libtinygltf-dev libgtest-dev libgmock-dev libbenchmark-dev

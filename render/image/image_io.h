@@ -1,5 +1,6 @@
 #pragma once
-// Images in and out through OpenImageIO: PNG for colour, EXR for float buffers.
+// Images in and out: PNG for colour (libpng, png_file.h), EXR for float buffers and every other format
+// OpenImageIO knows (its module, image_file_module.h, opened on first use).
 #include <string>
 #include <vector>
 
@@ -7,7 +8,7 @@
 
 namespace gps {
 
-/// Reads any image OpenImageIO knows; throws gps::Error naming the file.
+/// Reads a PNG, or any image OpenImageIO knows; throws gps::Error naming the file.
 Image read_image(const std::string& path);
 
 /// Writes an image (8-bit for PNG/JPEG, float for EXR), atomically; throws gps::Error naming the file.

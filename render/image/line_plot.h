@@ -1,5 +1,6 @@
 #pragma once
-// Small line plots as PNG (benchmark figures like thesis Figs. 4.6 and 4.7), drawn with OpenImageIO.
+// Small line plots as PNG (benchmark figures like thesis Figs. 4.6 and 4.7), drawn with OpenImageIO in
+// the image module (image_file_module.h).
 #include <string>
 #include <utility>
 #include <vector>

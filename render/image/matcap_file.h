@@ -1,5 +1,5 @@
 #pragma once
-// A MatCap as users name it: a built-in one, or an image file read through OpenImageIO.
+// A MatCap as users name it: a built-in one, or an image file (image_io.h).
 #include <string>
 
 #include "render/image/image.h"

@@ -93,7 +93,22 @@ TEST_F(Startup, CpuCommandsLoadNeitherGlNorImages) {
 TEST_F(Startup, TheTraceSeesGlWhereARenderCommandLoadsIt) {
   if (!lists_gl_commands()) GTEST_SKIP() << "built without GL";
   const std::string libraries = traced({"render", "--help"}, "render");
-  EXPECT_NE(libraries.find("libOpenImageIO"), std::string::npos);
+  EXPECT_NE(libraries.find("libEGL"), std::string::npos);
+}
+
+// A render to PNG writes through libpng; OpenImageIO (some 260 libraries) is opened only for a
+// format besides PNG, here the position AOV's EXR, through gpsurf's image module.
+TEST_F(Startup, OpenImageIOIsLoadedOnlyForFormatsBesidesPng) {
+  if (!lists_gl_commands()) GTEST_SKIP() << "built without GL";
+  const std::string png = dir_.file("cone.png"), exr = dir_.file("cone.exr");
+  const std::string plain = traced({"render", mesh_, "-o", png, "--size", "64x48"}, "png");
+  EXPECT_NE(plain.find("libpng"), std::string::npos);
+  EXPECT_EQ(plain.find("libOpenImageIO"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(png));
+  const std::string aov = traced({"render", mesh_, "-o", png, "--size", "64x48", "--aov", "position=" + exr}, "exr");
+  EXPECT_NE(aov.find("libgpsurf_openimageio"), std::string::npos);
+  EXPECT_NE(aov.find("libOpenImageIO"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(exr));
 }
 
 TEST_F(Startup, InfoOfASmallMeshStaysWithinFortyMegabytes) {

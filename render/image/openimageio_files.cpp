@@ -1,0 +1,52 @@
+// The module libgpsurf_openimageio.so: images of every format OpenImageIO knows (image_file_module.h).
+#include <OpenImageIO/imageio.h>
+
+#include "render/image/image_file_module.h"
+#include "render/image/line_plot_drawing.h"
+
+namespace gps {
+namespace {
+
+std::string oiio_error() { return OIIO::geterror().substr(0, 120); }
+
+std::string read(const std::string& path, Image& image) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return path + ": cannot read the image (" + oiio_error() + ")";
+  const OIIO::ImageSpec& spec = in->spec();
+  image.width = spec.width;
+  image.height = spec.height;
+  image.channels = spec.nchannels;
+  image.pixels.resize(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    return path + ": cannot read the image data (truncated or corrupt)";
+  return "";
+}
+
+std::string channel_names(const std::string& path, std::vector<std::string>& names) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return path + ": cannot read the image (" + oiio_error() + ")";
+  names = in->spec().channelnames;
+  return "";
+}
+
+std::string write(const std::string& path, const std::string& shown_path, const std::string& ext, const Image& image,
+                  const std::vector<std::string>& channel_names) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return shown_path + ": cannot write images of type '" + ext + "'";
+  const bool is_float = ext == ".exr" || ext == ".hdr";
+  OIIO::ImageSpec spec(image.width, image.height, image.channels,
+                       is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  if (channel_names.size() == size_t(image.channels)) spec.channelnames = channel_names;
+  if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) || !out->close())
+    return shown_path + ": writing the image failed";
+  return "";
+}
+
+constexpr ImageFileFunctions kFunctions{read, channel_names, write, draw_line_plot};
+
+}  // namespace
+}  // namespace gps
+
+extern "C" __attribute__((visibility("default"))) const gps::ImageFileFunctions* gpsurf_image_file_functions() {
+  return &gps::kFunctions;
+}
