@@ -108,7 +108,9 @@ TEST(MeshImport, ObjRoundTripKeepsPositionsExactly) {
   CovarianceMesh m = make_covariance_mesh({{0.1, 1.0 / 3, -2e-7}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e30}},
                                           std::vector<Mat3>(4, Mat3::Identity()), {{0, 1, 2, 3}}, "q");
   write_mesh(dir.file("q.obj"), m);
-  const CovarianceMesh r = read_mesh(dir.file("q.obj"), {ImportOptions::Covariance::isotropic});
+  ImportOptions isotropic;
+  isotropic.covariance = ImportOptions::Covariance::isotropic;
+  const CovarianceMesh r = read_mesh(dir.file("q.obj"), isotropic);
   ASSERT_EQ(r.n_vertices(), 4u);
   for (size_t i = 0; i < 4; ++i) EXPECT_EQ(r.mean(i), m.mean(i));
   const std::vector<int> face(r.face(0).begin(), r.face(0).end());
