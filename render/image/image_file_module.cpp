@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <mutex>
 
@@ -12,18 +13,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The folders to look in: the caller's own (a wheel keeps the module beside the Python module), the
-// install's library folder as seen from the programs' folders, and this build's output folder.
+// The folders to look in: those of the caller's own file (a wheel keeps the module beside the Python
+// module) and of the running program (its loader knows the main program by the name it was started
+// as), each with the install's library folder as seen from the programs' folders; then this build's.
 std::vector<fs::path> module_folders() {
-  std::vector<fs::path> folders;
+  std::vector<fs::path> bases, folders;
+  std::error_code ec;
   Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&module_folders), &info) && info.dli_fname) {
-    std::error_code ec;
-    const fs::path caller = fs::weakly_canonical(fs::path(info.dli_fname), ec).parent_path();
-    folders.push_back(caller);
-    folders.push_back(caller / GPSURF_IMAGE_MODULE_FROM_BINDIR);
-    folders.push_back(caller / GPSURF_IMAGE_MODULE_FROM_LIBEXECDIR);
-  }
+  if (dladdr(reinterpret_cast<void*>(&module_folders), &info) && info.dli_fname)
+    bases.push_back(fs::weakly_canonical(fs::path(info.dli_fname), ec).parent_path());
+  if (const fs::path program = fs::read_symlink("/proc/self/exe", ec); !ec) bases.push_back(program.parent_path());
+  for (const fs::path& base : bases)
+    for (const fs::path& folder :
+         {base, base / GPSURF_IMAGE_MODULE_FROM_BINDIR, base / GPSURF_IMAGE_MODULE_FROM_LIBEXECDIR})
+      if (std::find(folders.begin(), folders.end(), folder.lexically_normal()) == folders.end())
+        folders.push_back(folder.lexically_normal());
   folders.emplace_back(GPSURF_IMAGE_MODULE_BUILD_DIR);
   return folders;
 }
@@ -34,7 +38,7 @@ const ImageFileFunctions* load(std::string& failure) {
     const fs::path file = folder / GPSURF_IMAGE_MODULE_FILE;
     std::error_code ec;
     if (!fs::exists(file, ec)) {
-      tried += (tried.empty() ? "" : ", ") + folder.lexically_normal().string();
+      tried += (tried.empty() ? "" : ", ") + folder.string();
       continue;
     }
     void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);

@@ -193,8 +193,9 @@ TEST(RenderCli, ThinGaussiansOfOneOrientationRenderAsTheTorusSample) {
         const auto r = run_command(
             gpsurf("render " + dir.file("thin.ply") + " -o " + dir.file("n.png") + " --size 120x90" + options[k]));
         EXPECT_EQ(r.exit_code, 0) << what << options[k] << ": " << r.output;
-        if (r.exit_code == 0)
+        if (r.exit_code == 0) {
           EXPECT_LE(differing_pixels(torus[k], read_image(dir.file("n.png"))), 20) << what << options[k];
+        }
       }
     }
 }
