@@ -13,22 +13,27 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The folders to look in: those of the caller's own file (a wheel keeps the module beside the Python
-// module) and of the running program (its loader knows the main program by the name it was started
-// as), each with the install's library folder as seen from the programs' folders; then this build's.
+// The folders to look in: that of the caller's own file (a wheel keeps the module beside the Python
+// module) with the install's library folder as seen from the programs' folders (bin/,
+// libexec/gpsurf/); this build's; then the same from the running program's folder (the loader knows a
+// main program by the name it was started as, which gpsurf-render, started as gpsurf, is not).
 std::vector<fs::path> module_folders() {
-  std::vector<fs::path> bases, folders;
+  std::vector<fs::path> folders;
+  const auto add = [&](const fs::path& folder) {
+    if (std::find(folders.begin(), folders.end(), folder.lexically_normal()) == folders.end())
+      folders.push_back(folder.lexically_normal());
+  };
+  const auto add_from = [&](const fs::path& base) {
+    for (const fs::path& folder :
+         {base, base / GPSURF_IMAGE_MODULE_FROM_BINDIR, base / GPSURF_IMAGE_MODULE_FROM_LIBEXECDIR})
+      add(folder);
+  };
   std::error_code ec;
   Dl_info info{};
   if (dladdr(reinterpret_cast<void*>(&module_folders), &info) && info.dli_fname)
-    bases.push_back(fs::weakly_canonical(fs::path(info.dli_fname), ec).parent_path());
-  if (const fs::path program = fs::read_symlink("/proc/self/exe", ec); !ec) bases.push_back(program.parent_path());
-  for (const fs::path& base : bases)
-    for (const fs::path& folder :
-         {base, base / GPSURF_IMAGE_MODULE_FROM_BINDIR, base / GPSURF_IMAGE_MODULE_FROM_LIBEXECDIR})
-      if (std::find(folders.begin(), folders.end(), folder.lexically_normal()) == folders.end())
-        folders.push_back(folder.lexically_normal());
-  folders.emplace_back(GPSURF_IMAGE_MODULE_BUILD_DIR);
+    add_from(fs::weakly_canonical(fs::path(info.dli_fname), ec).parent_path());
+  add(GPSURF_IMAGE_MODULE_BUILD_DIR);
+  if (const fs::path program = fs::read_symlink("/proc/self/exe", ec); !ec) add_from(program.parent_path());
   return folders;
 }
 
@@ -49,13 +54,14 @@ const ImageFileFunctions* load(std::string& failure) {
     }
     using Entry = const ImageFileFunctions* (*)();
     const auto entry = reinterpret_cast<Entry>(dlsym(handle, kImageFileEntry));
-    if (!entry) {
-      failure = file.string() + " is not gpsurf's image module";
-      return nullptr;
-    }
-    return entry();
+    const ImageFileFunctions* functions = entry ? entry() : nullptr;
+    if (functions && functions->layout == kImageFileLayout && functions->size == sizeof(ImageFileFunctions))
+      return functions;
+    dlclose(handle);
+    tried += (tried.empty() ? "" : ", ") + folder.string() + " (another build's)";
   }
-  failure = std::string(GPSURF_IMAGE_MODULE_FILE) + " (OpenImageIO's formats) is not installed: looked in " + tried;
+  failure =
+      "OpenImageIO's formats need " + std::string(GPSURF_IMAGE_MODULE_FILE) + " of this build, not found in " + tried;
   return nullptr;
 }
 

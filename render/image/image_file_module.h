@@ -2,6 +2,7 @@
 // The formats besides PNG (EXR for the AOVs, and whatever else OpenImageIO knows) go through a module
 // opened the first time one is needed (openimageio_files.cpp, built as libgpsurf_openimageio.so):
 // OpenImageIO links some 260 libraries, and loading them cost every program start 0.4 s.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -10,8 +11,13 @@
 
 namespace gps {
 
+/// The layout of ImageFileFunctions: a module of another layout (another build's) is not used.
+inline constexpr int kImageFileLayout = 1;
+
 /// The module's functions; each returns "" or, on failure, the whole one-line message naming the file.
 struct ImageFileFunctions {
+  int layout = kImageFileLayout;
+  size_t size = sizeof(ImageFileFunctions);
   std::string (*read)(const std::string& path, Image& image);
   std::string (*channel_names)(const std::string& path, std::vector<std::string>& names);
   /// Writes `path` itself in the format of `extension` (".exr"; 8 bits, or float for EXR and HDR);

@@ -42,7 +42,8 @@ std::string write(const std::string& path, const std::string& shown_path, const 
   return "";
 }
 
-constexpr ImageFileFunctions kFunctions{read, channel_names, write, draw_line_plot};
+constexpr ImageFileFunctions kFunctions{kImageFileLayout, sizeof(ImageFileFunctions), read, channel_names, write,
+                                        draw_line_plot};
 
 }  // namespace
 }  // namespace gps
