@@ -40,10 +40,17 @@ void ignore_warning(png_structp, png_const_charp) {}
 
 // Reads the rows into `rows` (bytes), sets the size, channels and bit depth; false on a libpng error.
 bool read_rows(PngRead& r, std::FILE* file, std::vector<uint8_t>& bytes, int& width, int& height, int& channels,
-               int& depth) {
+               int& depth, float& gamma) {
   if (setjmp(png_jmpbuf(r.png))) return false;
   png_init_io(r.png, file);
   png_read_info(r.png, r.info);
+  // The gamma alpha is associated under: a gAMA chunk's (1 / its value, to the hundredth) unless an
+  // sRGB chunk says sRGB.
+  int intent = 0;
+  double file_gamma = 0.0;
+  gamma = 1.0f;
+  if (!png_get_sRGB(r.png, r.info, &intent) && png_get_gAMA(r.png, r.info, &file_gamma) && file_gamma > 0.0)
+    gamma = std::round(100.0f * float(1.0 / file_gamma)) / 100.0f;
   png_set_expand(r.png);  // palette → RGB, grey below 8 bits → 8 bits, tRNS → alpha
   if (png_get_bit_depth(r.png, r.info) == 16) png_set_swap(r.png);
   png_set_interlace_handling(r.png);
@@ -84,11 +91,18 @@ bool write_rows(PngWrite& w, std::FILE* file, const std::vector<uint8_t>& bytes,
 
 // PNG stores colour unassociated with alpha, gpsurf's images associated (premultiplied): what
 // OpenImageIO converts, in integers, after quantising on write and before scaling on read.
+// Under a gamma g other than 1 the colour is associated in linear light: D · (alpha / max)^g.
 template <class T>
-void associate_alpha(T* samples, size_t pixels, int channels) {
+void associate_alpha(T* samples, size_t pixels, int channels, float gamma) {
   constexpr unsigned max = std::numeric_limits<T>::max();
-  for (size_t p = 0; p < pixels; ++p, samples += channels)
-    for (int c = 0; c + 1 < channels; ++c) samples[c] = T((unsigned(samples[c]) * samples[channels - 1]) / max);
+  for (size_t p = 0; p < pixels; ++p, samples += channels) {
+    if (gamma == 1.0f) {
+      for (int c = 0; c + 1 < channels; ++c) samples[c] = T((unsigned(samples[c]) * samples[channels - 1]) / max);
+      continue;
+    }
+    const float alpha = std::pow(float(samples[channels - 1]) * (1.0f / float(max)), gamma);
+    for (int c = 0; c + 1 < channels; ++c) samples[c] = T(float(samples[c]) * alpha);
+  }
 }
 void deassociate_alpha(uint8_t* samples, size_t pixels, int channels) {
   for (size_t p = 0; p < pixels; ++p, samples += channels)
@@ -118,7 +132,8 @@ Image read_png(const std::string& path) {
   if (!r.png || !r.info) throw Error(path + ": cannot read the image (out of memory)");
   std::vector<uint8_t> bytes;
   int width = 0, height = 0, channels = 0, depth = 0;
-  if (!read_rows(r, file.get(), bytes, width, height, channels, depth))
+  float gamma = 1.0f;
+  if (!read_rows(r, file.get(), bytes, width, height, channels, depth, gamma))
     throw Error(path + ": cannot read the image data (" + std::string(r.message) + ")");
   Image image;
   image.width = width;
@@ -131,10 +146,10 @@ Image read_png(const std::string& path) {
   if (depth == 16) {
     std::vector<uint16_t> samples(n);
     std::memcpy(samples.data(), bytes.data(), 2 * n);
-    if (alpha) associate_alpha(samples.data(), pixels, channels);
+    if (alpha) associate_alpha(samples.data(), pixels, channels, gamma);
     for (size_t i = 0; i < n; ++i) image.pixels[i] = float(samples[i]) * (1.0f / 65535.0f);
   } else {
-    if (alpha) associate_alpha(bytes.data(), pixels, channels);
+    if (alpha) associate_alpha(bytes.data(), pixels, channels, gamma);
     for (size_t i = 0; i < n; ++i) image.pixels[i] = float(bytes[i]) * (1.0f / 255.0f);
   }
   return image;

@@ -1,6 +1,7 @@
 // PNG files through libpng (render/image/png_file.h) against OpenImageIO (through gpsurf's image
 // module, render/image/image_file_module.h): the same pixels written and read, for every colour type
-// and bit depth, alpha included; and OpenImageIO loaded only for the other formats.
+// and bit depth, alpha included (in linear light where a gAMA chunk asks); and OpenImageIO loaded only for the other
+// formats.
 #include <gtest/gtest.h>
 #include <png.h>
 
@@ -76,6 +77,8 @@ struct PngSpec {
   bool interlaced = false;
   std::vector<png_color> palette;
   std::vector<png_byte> transparency;  // per palette entry
+  double file_gamma = 0.0;             // a gAMA chunk where positive
+  bool srgb = false;                   // an sRGB chunk
   std::vector<unsigned> samples;
 };
 
@@ -89,6 +92,8 @@ bool write_spec_rows(png_structp png, png_infop info, std::FILE* file, const Png
   if (!spec.palette.empty()) png_set_PLTE(png, info, spec.palette.data(), int(spec.palette.size()));
   if (!spec.transparency.empty())
     png_set_tRNS(png, info, spec.transparency.data(), int(spec.transparency.size()), nullptr);
+  if (spec.file_gamma > 0.0) png_set_gAMA(png, info, spec.file_gamma);
+  if (spec.srgb) png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   png_write_info(png, info);
   if (spec.depth < 8) png_set_packing(png);
   if (spec.depth == 16) png_set_swap(png);
@@ -169,8 +174,17 @@ TEST(PngFile, ReadsEveryColourTypeAndDepthAsOpenImageIOReadsIt) {
       {"rgba16", spec(PNG_COLOR_TYPE_RGB_ALPHA, 16, 4)},
       {"rgba8_interlaced", spec(PNG_COLOR_TYPE_RGB_ALPHA, 8, 4, true)},
       {"palette4", spec(PNG_COLOR_TYPE_PALETTE, 4, 1)},
-      {"palette8_transparent", spec(PNG_COLOR_TYPE_PALETTE, 8, 1)}};
+      {"palette8_transparent", spec(PNG_COLOR_TYPE_PALETTE, 8, 1)},
+      {"rgba8_gamma2.2", spec(PNG_COLOR_TYPE_RGB_ALPHA, 8, 4)},
+      {"rgba8_gamma0.6", spec(PNG_COLOR_TYPE_RGB_ALPHA, 8, 4)},
+      {"grey_alpha16_gamma1.8", spec(PNG_COLOR_TYPE_GRAY_ALPHA, 16, 2)},
+      {"rgba8_gamma_and_srgb", spec(PNG_COLOR_TYPE_RGB_ALPHA, 8, 4)}};
+  // Alpha is associated in linear light under a gAMA chunk, unless an sRGB chunk overrides it.
   for (auto& [name, s] : files) {
+    if (name.find("srgb") != std::string::npos)
+      s.file_gamma = 0.45455, s.srgb = true;
+    else if (const size_t at = name.find("gamma"); at != std::string::npos)
+      s.file_gamma = 1.0 / std::stod(name.substr(at + 5));
     if (s.colour_type != PNG_COLOR_TYPE_PALETTE) continue;
     for (int i = 0; i < (1 << s.depth); ++i)
       s.palette.push_back({png_byte(random() % 256), png_byte(random() % 256), png_byte(random() % 256)});
