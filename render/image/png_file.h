@@ -12,7 +12,8 @@ bool is_png_file(const std::string& path);
 
 /// Reads a PNG as OpenImageIO reads it: the channels the file stores (grey, grey and alpha, RGB,
 /// RGBA; a palette as RGB, or RGBA where it has transparency), each value over its bit depth's
-/// maximum, colour associated with alpha (in linear light where a gAMA chunk asks). Throws gps::Error naming the file.
+/// maximum, colour associated with alpha (in linear light where a gAMA chunk asks). Throws
+/// gps::Error naming the file.
 Image read_png(const std::string& path);
 
 /// Writes 1 to 4 channels as 8-bit PNG, each value v as round(255 · clamp(v, 0, 1)) (halves away
