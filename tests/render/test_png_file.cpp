@@ -202,6 +202,29 @@ TEST(PngFile, ReadsEveryColourTypeAndDepthAsOpenImageIOReadsIt) {
   }
 }
 
+// A PNG of its signature, header and an empty data chunk: `width` × `height` RGBA pixels of 16 bits.
+bool write_header_rows(png_structp png, png_infop info, std::FILE* file, int width, int height) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_init_io(png, file);
+  png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 16, PNG_COLOR_TYPE_RGB_ALPHA, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  // An empty data chunk, where a reader's look at the header ends.
+  png_write_chunk(png, reinterpret_cast<png_const_bytep>("IDAT"), nullptr, 0);
+  return true;
+}
+
+void write_header_only(const std::string& path, int width, int height) {
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(file, nullptr);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  const bool written = write_header_rows(png, info, file, width, height);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(file);
+  ASSERT_TRUE(written);
+}
+
 TEST(PngFile, ADamagedPngIsAnErrorNamingTheFile) {
   test::TempDir dir;
   const std::string whole = dir.file("whole.png"), cut = dir.file("cut.png");
@@ -215,6 +238,18 @@ TEST(PngFile, ADamagedPngIsAnErrorNamingTheFile) {
     FAIL() << "read a truncated PNG";
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()).rfind(cut + ": cannot read the image data (", 0), 0u) << e.what();
+  }
+  // A header that asks for 100,000 × 100,000 pixels is refused before anything is allocated for them.
+  const std::string huge = dir.file("huge.png");
+  write_header_only(huge, 100000, 100000);
+  try {
+    read_image(huge);
+    FAIL() << "read a PNG of 10^10 pixels";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              huge +
+                  ": cannot read the image data (100000 x 100000 pixels of 4 channels: more than the 2^30 "
+                  "values gpsurf reads)");
   }
   Image five;
   five.width = five.height = 1;
