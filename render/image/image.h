@@ -13,6 +13,10 @@ struct Image {
   }
 };
 
+/// The most values (pixels × channels) an image read may hold, 4 GiB as floats: a file's header cannot
+/// make a read take more.
+inline constexpr std::size_t kMaxImageValues = std::size_t(1) << 30;
+
 /// Reverses the order of the rows (GL reads rows bottom-up; images run top-down).
 void flip_rows(Image& image);
 

@@ -1,6 +1,9 @@
 // The module libgpsurf_openimageio.so: images of every format OpenImageIO knows (image_file_module.h).
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+#include <string>
+
 #include "render/image/image_file_module.h"
 #include "render/image/line_plot_drawing.h"
 
@@ -13,6 +16,10 @@ std::string read(const std::string& path, Image& image) {
   auto in = OIIO::ImageInput::open(path);
   if (!in) return path + ": cannot read the image (" + oiio_error() + ")";
   const OIIO::ImageSpec& spec = in->spec();
+  if (size_t(std::max(spec.width, 0)) * size_t(std::max(spec.height, 0)) * size_t(std::max(spec.nchannels, 0)) >
+      kMaxImageValues)
+    return path + ": cannot read the image data (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+           " pixels of " + std::to_string(spec.nchannels) + " channels: more than the 2^30 values gpsurf reads)";
   image.width = spec.width;
   image.height = spec.height;
   image.channels = spec.nchannels;

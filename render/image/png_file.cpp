@@ -22,9 +22,6 @@ struct FileCloser {
 };
 using File = std::unique_ptr<std::FILE, FileCloser>;
 
-// The most values an image read may hold (4 GiB as floats): a header cannot make a read take more.
-constexpr size_t kMaxValues = size_t(1) << 30;
-
 // libpng reports errors by longjmp to the setjmp of its caller: the functions that call it hold
 // only plain values and what they fill, so that nothing is skipped that needs destroying.
 struct PngRead {
@@ -62,7 +59,7 @@ bool read_rows(PngRead& r, std::FILE* file, std::vector<uint8_t>& bytes, int& wi
   height = int(png_get_image_height(r.png, r.info));
   channels = int(png_get_channels(r.png, r.info));
   depth = int(png_get_bit_depth(r.png, r.info));
-  if (size_t(width) * size_t(height) * size_t(channels) > kMaxValues) {
+  if (size_t(width) * size_t(height) * size_t(channels) > kMaxImageValues) {
     std::snprintf(r.message, sizeof r.message, "%d x %d pixels of %d channels: more than the 2^30 values gpsurf reads",
                   width, height, channels);
     return false;
