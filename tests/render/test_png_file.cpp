@@ -82,6 +82,19 @@ struct PngSpec {
   std::vector<unsigned> samples;
 };
 
+// Opens `path`, makes libpng's write structures, runs `write` on them (false: a libpng error), closes.
+template <class Write>
+void write_png_file(const std::string& path, Write write) {
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(file, nullptr);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  const bool written = write(png, info, file);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(file);
+  ASSERT_TRUE(written) << path;
+}
+
 bool write_spec_rows(png_structp png, png_infop info, std::FILE* file, const PngSpec& spec,
                      std::vector<png_bytep>& rows) {
   if (setjmp(png_jmpbuf(png))) return false;
@@ -121,14 +134,9 @@ void write_spec(const std::string& path, const PngSpec& spec) {
   }
   std::vector<png_bytep> rows(static_cast<size_t>(spec.height));
   for (int y = 0; y < spec.height; ++y) rows[size_t(y)] = data.data() + row_bytes * size_t(y);
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  ASSERT_NE(file, nullptr);
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png_create_info_struct(png);
-  const bool written = write_spec_rows(png, info, file, spec, rows);
-  png_destroy_write_struct(&png, &info);
-  std::fclose(file);
-  ASSERT_TRUE(written) << path;
+  write_png_file(path, [&](png_structp png, png_infop info, std::FILE* file) {
+    return write_spec_rows(png, info, file, spec, rows);
+  });
 }
 
 TEST(PngFile, WritesThePixelsOpenImageIOWrites) {
@@ -215,14 +223,9 @@ bool write_header_rows(png_structp png, png_infop info, std::FILE* file, int wid
 }
 
 void write_header_only(const std::string& path, int width, int height) {
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  ASSERT_NE(file, nullptr);
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png_create_info_struct(png);
-  const bool written = write_header_rows(png, info, file, width, height);
-  png_destroy_write_struct(&png, &info);
-  std::fclose(file);
-  ASSERT_TRUE(written);
+  write_png_file(path, [&](png_structp png, png_infop info, std::FILE* file) {
+    return write_header_rows(png, info, file, width, height);
+  });
 }
 
 TEST(PngFile, ADamagedPngIsAnErrorNamingTheFile) {
