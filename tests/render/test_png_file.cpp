@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <csetjmp>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
 #include <limits>
