@@ -29,7 +29,7 @@ std::vector<std::string> read_channel_names(const std::string& path) {
   if (is_png_file(path)) {
     static const std::vector<std::vector<std::string>> kPngChannels = {
         {"Y"}, {"Y", "A"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
-    return kPngChannels[size_t(read_png(path).channels - 1)];
+    return kPngChannels[size_t(png_channels(path) - 1)];
   }
   std::vector<std::string> names;
   if (const std::string failure = openimageio_files(path + ": cannot read the image").channel_names(path, names);

@@ -31,16 +31,17 @@ struct PngRead {
   ~PngRead() { png_destroy_read_struct(&png, &info, nullptr); }
 };
 
-void read_error(png_structp png, png_const_charp message) {
+void keep_error(png_structp png, png_const_charp message) {
   auto* state = static_cast<char*>(png_get_error_ptr(png));
   std::snprintf(state, 200, "%s", message);
   png_longjmp(png, 1);
 }
 void ignore_warning(png_structp, png_const_charp) {}
 
-// Reads the rows into `rows` (bytes), sets the size, channels and bit depth; false on a libpng error.
-bool read_rows(PngRead& r, std::FILE* file, std::vector<uint8_t>& bytes, int& width, int& height, int& channels,
-               int& depth, float& gamma) {
+// Sets the size, channels, bit depth and alpha's gamma, then (unless `header_only`) reads the rows
+// into `bytes`; false on a libpng error or an image too large.
+bool read_rows(PngRead& r, std::FILE* file, bool header_only, std::vector<uint8_t>& bytes, int& width, int& height,
+               int& channels, int& depth, float& gamma) {
   if (setjmp(png_jmpbuf(r.png))) return false;
   png_init_io(r.png, file);
   png_read_info(r.png, r.info);
@@ -59,6 +60,7 @@ bool read_rows(PngRead& r, std::FILE* file, std::vector<uint8_t>& bytes, int& wi
   height = int(png_get_image_height(r.png, r.info));
   channels = int(png_get_channels(r.png, r.info));
   depth = int(png_get_bit_depth(r.png, r.info));
+  if (header_only) return true;
   if (size_t(width) * size_t(height) * size_t(channels) > kMaxImageValues) {
     std::snprintf(r.message, sizeof r.message, "%d x %d pixels of %d channels: more than the 2^30 values gpsurf reads",
                   width, height, channels);
@@ -128,18 +130,37 @@ bool is_png_file(const std::string& path) {
   return file && std::fread(signature, 1, 8, file.get()) == 8 && png_sig_cmp(signature, 0, 8) == 0;
 }
 
-Image read_png(const std::string& path) {
+namespace {
+
+struct PngContents {
+  std::vector<uint8_t> bytes;  // empty where only the header was read
+  int width = 0, height = 0, channels = 0, depth = 0;
+  float gamma = 1.0f;
+};
+
+PngContents read_contents(const std::string& path, bool header_only) {
   const File file(std::fopen(path.c_str(), "rb"));
   if (!file) throw Error(path + ": cannot read the image (cannot open the file)");
   PngRead r;
-  r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, r.message, read_error, ignore_warning);
+  r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, r.message, keep_error, ignore_warning);
   if (r.png) r.info = png_create_info_struct(r.png);
   if (!r.png || !r.info) throw Error(path + ": cannot read the image (out of memory)");
-  std::vector<uint8_t> bytes;
-  int width = 0, height = 0, channels = 0, depth = 0;
-  float gamma = 1.0f;
-  if (!read_rows(r, file.get(), bytes, width, height, channels, depth, gamma))
+  PngContents c;
+  if (!read_rows(r, file.get(), header_only, c.bytes, c.width, c.height, c.channels, c.depth, c.gamma))
     throw Error(path + ": cannot read the image data (" + std::string(r.message) + ")");
+  return c;
+}
+
+}  // namespace
+
+int png_channels(const std::string& path) { return read_contents(path, true).channels; }
+
+Image read_png(const std::string& path) {
+  PngContents contents = read_contents(path, false);
+  std::vector<uint8_t>& bytes = contents.bytes;
+  const int width = contents.width, height = contents.height, channels = contents.channels;
+  const int depth = contents.depth;
+  const float gamma = contents.gamma;
   Image image;
   image.width = width;
   image.height = height;
@@ -170,7 +191,7 @@ void write_png(const std::string& path, const Image& image, const std::string& s
   const File file(std::fopen(path.c_str(), "wb"));
   if (!file) throw Error(shown_path + ": writing the image failed (cannot create the file)");
   PngWrite w;
-  w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, w.message, read_error, ignore_warning);
+  w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, w.message, keep_error, ignore_warning);
   if (w.png) w.info = png_create_info_struct(w.png);
   if (!w.png || !w.info) throw Error(shown_path + ": writing the image failed (out of memory)");
   if (!write_rows(w, file.get(), bytes, image.width, image.height, image.channels) || std::fflush(file.get()) != 0 ||

@@ -10,6 +10,9 @@ namespace gps {
 /// Whether the file starts with PNG's signature (false if it cannot be read).
 bool is_png_file(const std::string& path);
 
+/// The channels read_png gives for the file, from its header alone. Throws gps::Error naming the file.
+int png_channels(const std::string& path);
+
 /// Reads a PNG as OpenImageIO reads it: the channels the file stores (grey, grey and alpha, RGB,
 /// RGBA; a palette as RGB, or RGBA where it has transparency), each value over its bit depth's
 /// maximum, colour associated with alpha (in linear light where a gAMA chunk asks). Throws
