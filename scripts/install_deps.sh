@@ -13,7 +13,7 @@ packages=(
   clang libclang-rt-14-dev libomp-dev  # the fuzzers (clang, with OpenMP in core)
   pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module and its tests
   python3-setuptools python3-wheel python3-pip python3-venv python3-mypy  # its wheel and stubs, tested
-  ccache clang-format
+  ccache clang-format lld  # lld: the tests' links (CMakeLists.txt)
   time  # GNU time: the hostile-input soak measures gpsurf's peak memory with it (tests/render/)
 )
 missing=()
