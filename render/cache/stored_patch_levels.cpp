@@ -12,7 +12,8 @@
 namespace gps {
 
 namespace {
-ShaderProgram check_program(bool triangles, PointPrecision precision) {
+ShaderProgram check_program(PatchShape shape, PointPrecision precision) {
+  const bool triangles = shape == PatchShape::triangle;
   std::vector<const char*> pieces = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
   if (triangles) pieces.insert(pieces.begin(), "#define GPS_TRIANGLE_PATCHES\n");
   pieces.insert(pieces.end(), {shaders::canonical_edge, shaders::tess_levels, shaders::patch_level_check_comp});
@@ -21,16 +22,9 @@ ShaderProgram check_program(bool triangles, PointPrecision precision) {
 }
 }  // namespace
 
-StoredPatchLevels::StoredPatchLevels() { set_precision(PointPrecision::single_float); }
+StoredPatchLevels::StoredPatchLevels() : programs_(check_program) {}
 
-void StoredPatchLevels::set_precision(PointPrecision precision) {
-  const int i = int(precision);
-  if (triangles_[i].id() == 0) {  // the last one built, before the switch
-    quads_[i] = check_program(false, precision);
-    triangles_[i] = check_program(true, precision);
-  }
-  precision_ = precision;
-}
+void StoredPatchLevels::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
 
 void StoredPatchLevels::reserve(int n_patches) {
   if (n_patches <= capacity_ && 4 * n_patches >= capacity_) return;

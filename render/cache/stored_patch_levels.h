@@ -12,7 +12,7 @@
 #include "core/plans/patch_plans.h"
 #include "render/cache/surface_blocks.h"
 #include "render/gl/gl_object.h"
-#include "render/gl/shader_program.h"
+#include "render/gl/shape_programs.h"
 #include "render/gl/point_precision.h"
 
 namespace gps {
@@ -31,10 +31,7 @@ public:
   /// The programs for plan points of `precision` from now on (built at its first use).
   void set_precision(PointPrecision precision);
   /// The program whose level uniforms the caller sets before record() or changed().
-  const ShaderProgram& program(PatchShape shape) const {
-    const int i = int(precision_);
-    return shape == PatchShape::triangle ? triangles_[i] : quads_[i];
-  }
+  const ShaderProgram& program(PatchShape shape) const { return programs_(shape); }
   /// Keeps the levels of all `n_patches` (after a capture).
   void record(PatchShape shape, int n_patches, int group_limit);
   /// The levels of the patches of `moved` blocks (SurfaceCache::topology_changed) under their new
@@ -51,8 +48,7 @@ public:
 private:
   void reserve(int n_patches);
 
-  ShaderProgram quads_[2], triangles_[2];  // by PointPrecision
-  PointPrecision precision_ = PointPrecision::single_float;
+  ShapePrograms programs_;
   GlBuffer levels_, patches_, changes_, spare_;
   int capacity_ = 0;  // patches the levels buffer holds
 };

@@ -11,28 +11,19 @@
 namespace gps {
 
 StoredVertexEvaluation::StoredVertexEvaluation()
-    : groups_program_("evaluation_groups",
-                      {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {
-  set_precision(PointPrecision::single_float);
-}
+    : programs_([](PatchShape shape, PointPrecision precision) {
+        const bool triangles = shape == PatchShape::triangle;
+        std::vector<const char*> sources = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
+        if (triangles)
+          sources.insert(sources.begin(), "#define GPS_TRIANGLE_PATCHES\n"), sources.push_back(shaders::loop_eval);
+        sources.insert(sources.end(), {shaders::canonical_edge, shaders::stored_vertex_evaluation_comp});
+        return ShaderProgram(triangles ? "stored_vertex_evaluation_triangles" : "stored_vertex_evaluation",
+                             at_precision({{GL_COMPUTE_SHADER, sources}}, precision));
+      }),
+      groups_program_("evaluation_groups",
+                      {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {}
 
-void StoredVertexEvaluation::set_precision(PointPrecision precision) {
-  const int i = int(precision);
-  if (triangles_[i].id() == 0) {  // the last one built, before the switch
-    quads_[i] = ShaderProgram("stored_vertex_evaluation",
-                              at_precision({{GL_COMPUTE_SHADER,
-                                             {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                                              shaders::canonical_edge, shaders::stored_vertex_evaluation_comp}}},
-                                           precision));
-    triangles_[i] = ShaderProgram(
-        "stored_vertex_evaluation_triangles",
-        at_precision({{GL_COMPUTE_SHADER,
-                       {"#define GPS_TRIANGLE_PATCHES\n", shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                        shaders::loop_eval, shaders::canonical_edge, shaders::stored_vertex_evaluation_comp}}},
-                     precision));
-  }
-  precision_ = precision;
-}
+void StoredVertexEvaluation::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
 
 void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches,
                                  int group_limit) {
@@ -70,7 +61,7 @@ void StoredVertexEvaluation::dispatch(PatchShape shape, const std::vector<Block>
   groups_program_.set("u_blocks", int(blocks.size()));
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  const ShaderProgram& program = shape == PatchShape::triangle ? triangles_[int(precision_)] : quads_[int(precision_)];
+  const ShaderProgram& program = programs_(shape);
   program.use();
   program.set("u_blocks", int(blocks.size()));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, groups_);

@@ -10,6 +10,7 @@
 #include "core/plans/patch_plans.h"
 #include "render/gl/gl_object.h"
 #include "render/gl/shader_program.h"
+#include "render/gl/shape_programs.h"
 #include "render/gl/point_precision.h"
 
 namespace gps {
@@ -37,9 +38,8 @@ private:
   /// One indirect dispatch over `blocks`.
   void dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches);
 
-  ShaderProgram quads_[2], triangles_[2];  // by PointPrecision
+  ShapePrograms programs_;
   ShaderProgram groups_program_;
-  PointPrecision precision_ = PointPrecision::single_float;
   GlBuffer blocks_, groups_;
 };
 

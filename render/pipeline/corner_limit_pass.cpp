@@ -15,25 +15,17 @@ namespace {
 constexpr const char* kTrianglePatches = "#define GPS_TRIANGLE_PATCHES\n";
 }
 
-CornerLimitPass::CornerLimitPass() { set_precision(PointPrecision::single_float); }
+CornerLimitPass::CornerLimitPass()
+    : programs_([](PatchShape shape, PointPrecision precision) {
+        const bool triangles = shape == PatchShape::triangle;
+        std::vector<const char*> sources = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
+        if (triangles) sources.insert(sources.begin(), kTrianglePatches), sources.push_back(shaders::loop_eval);
+        sources.insert(sources.end(), {shaders::canonical_edge, shaders::corner_limit_comp});
+        return ShaderProgram(triangles ? "corner_limits_triangles" : "corner_limits",
+                             at_precision({{GL_COMPUTE_SHADER, sources}}, precision));
+      }) {}
 
-void CornerLimitPass::set_precision(PointPrecision precision) {
-  const int i = int(precision);
-  if (triangles_[i].id() == 0) {  // the last one built, before the switch
-    quads_[i] =
-        ShaderProgram("corner_limits", at_precision({{GL_COMPUTE_SHADER,
-                                                      {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                                                       shaders::canonical_edge, shaders::corner_limit_comp}}},
-                                                    precision));
-    triangles_[i] =
-        ShaderProgram("corner_limits_triangles",
-                      at_precision({{GL_COMPUTE_SHADER,
-                                     {kTrianglePatches, shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval,
-                                      shaders::loop_eval, shaders::canonical_edge, shaders::corner_limit_comp}}},
-                                   precision));
-  }
-  precision_ = precision;
-}
+void CornerLimitPass::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
 
 void CornerLimitPass::run_all(const PatchPlans& plans, int group_limit) const {
   run(plans, plans.corners() * plans.n_patches(), false, group_limit);
@@ -60,8 +52,7 @@ std::vector<int> CornerLimitPass::edit_slots(const PatchPlans& plans, const std:
 
 void CornerLimitPass::run(const PatchPlans& plans, int count, bool use_list, int group_limit) const {
   if (count <= 0) return;
-  const int i = int(precision_);
-  run_compute_pass(plans.shape == PatchShape::triangle ? triangles_[i] : quads_[i], count, use_list, group_limit);
+  run_compute_pass(programs_(plans.shape), count, use_list, group_limit);
   check_gl_errors("the corner pass");
 }
 

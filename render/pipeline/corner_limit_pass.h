@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/plans/patch_plans.h"
-#include "render/gl/shader_program.h"
+#include "render/gl/shape_programs.h"
 #include "render/gl/point_precision.h"
 
 namespace gps {
@@ -33,8 +33,7 @@ public:
 private:
   void run(const PatchPlans& plans, int count, bool use_list, int group_limit) const;
 
-  ShaderProgram quads_[2], triangles_[2];  // by PointPrecision
-  PointPrecision precision_ = PointPrecision::single_float;
+  ShapePrograms programs_;
 };
 
 }  // namespace gps

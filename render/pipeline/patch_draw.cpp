@@ -65,32 +65,30 @@ private:
   GlFramebuffer framebuffer_;
 };
 
-int quad_slot(PatchOutput output) {
-  if (output == PatchOutput::wireframe) throw Error("quad patches have no wireframe program");
-  return output == PatchOutput::capture ? 2 : output == PatchOutput::shaded_capture ? 3 : int(output);
+ShapePrograms::Build patch_programs(PatchOutput output) {
+  return [output](PatchShape shape, PointPrecision precision) {
+    if (shape == PatchShape::quad && output == PatchOutput::wireframe)
+      throw Error("quad patches have no wireframe program");
+    return patch_program(shape, output, precision);
+  };
 }
 
 }  // namespace
 
-PatchDraw::PatchDraw() { set_precision(PointPrecision::single_float); }
+PatchDraw::PatchDraw()
+    : programs_{
+          ShapePrograms(patch_programs(PatchOutput::shaded)), ShapePrograms(patch_programs(PatchOutput::feedback)),
+          ShapePrograms(patch_programs(PatchOutput::wireframe)), ShapePrograms(patch_programs(PatchOutput::capture)),
+          ShapePrograms(patch_programs(PatchOutput::shaded_capture))} {}
 
 void PatchDraw::set_precision(PointPrecision precision) {
-  const int i = int(precision);
-  if (triangle_[i][4].id() == 0) {  // the last one built, before the switch
-    for (const PatchOutput output :
-         {PatchOutput::shaded, PatchOutput::feedback, PatchOutput::capture, PatchOutput::shaded_capture})
-      quad_[i][quad_slot(output)] = patch_program(PatchShape::quad, output, precision);
-    for (const PatchOutput output : {PatchOutput::shaded, PatchOutput::feedback, PatchOutput::wireframe,
-                                     PatchOutput::capture, PatchOutput::shaded_capture})
-      triangle_[i][int(output)] = patch_program(PatchShape::triangle, output, precision);
-  }
+  // The shaded program checks the precision for all of them.
+  for (ShapePrograms& programs : programs_) programs.set_precision(precision, &programs == &programs_[0]);
   level_bound_.set_precision(precision);
-  precision_ = precision;
 }
 
 const ShaderProgram& PatchDraw::program(PatchShape shape, PatchOutput output) const {
-  const int i = int(precision_);
-  return shape == PatchShape::triangle ? triangle_[i][int(output)] : quad_[i][quad_slot(output)];
+  return programs_[size_t(output)](shape);
 }
 
 void PatchDraw::draw(PatchShape shape, const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,

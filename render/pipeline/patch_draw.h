@@ -3,6 +3,7 @@
 // programs of the plan's patch shape (quads: Catmull-Clark plans, triangles: Loop plans), drawn
 // shaded, as wireframe, under transform feedback for tests (TessellatedVertex) or for the surface
 // cache, with optional pipeline-statistics queries.
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "render/gl/gl_object.h"
 #include "render/gl/query_ring.h"
 #include "render/gl/shader_program.h"
+#include "render/gl/shape_programs.h"
 #include "render/pipeline/patch_level_bound.h"
 
 namespace gps {
@@ -53,7 +55,8 @@ public:
   PatchDraw(const PatchDraw&) = delete;
   PatchDraw& operator=(const PatchDraw&) = delete;
 
-  /// The programs for points of `precision` from now on (built at its first use).
+  /// The programs for points of `precision` from now on (each built at its first use; a precision
+  /// the driver cannot compile is refused here).
   void set_precision(PointPrecision precision);
 
   /// Quads have no wireframe program: their fragment shader draws it.
@@ -96,9 +99,8 @@ private:
   void draw_batches(PatchShape shape, const ShaderProgram& program, const DrawOptions& o, int n_total, int first_patch,
                     int n_patches) const;
 
-  // By PointPrecision, then PatchOutput (quads: shaded, feedback, capture, shaded_capture).
-  ShaderProgram quad_[2][4], triangle_[2][5];
-  PointPrecision precision_ = PointPrecision::single_float;
+  // By PatchOutput (quads have no wireframe program).
+  std::array<ShapePrograms, 5> programs_;
   GlVertexArray empty_vao_;
   std::unique_ptr<QueryRing> statistics_;  // set while collecting statistics
   NormalisedFrame frame_;

@@ -13,7 +13,8 @@ namespace gps {
 
 namespace {
 
-ShaderProgram bound_program(bool triangles, PointPrecision precision) {
+ShaderProgram bound_program(PatchShape shape, PointPrecision precision) {
+  const bool triangles = shape == PatchShape::triangle;
   std::vector<const char*> pieces = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
   if (triangles) pieces.insert(pieces.begin(), "#define GPS_TRIANGLE_PATCHES\n");
   pieces.insert(pieces.end(), {shaders::canonical_edge, shaders::tess_levels, shaders::patch_level_bound_comp});
@@ -36,19 +37,11 @@ void copy_uniform(unsigned from, unsigned to, const char* name, int count) {
 
 }  // namespace
 
-PatchLevelBound::PatchLevelBound() {
-  set_precision(PointPrecision::single_float);
+PatchLevelBound::PatchLevelBound() : programs_(bound_program) {
   glNamedBufferData(result_, sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
 }
 
-void PatchLevelBound::set_precision(PointPrecision precision) {
-  const int i = int(precision);
-  if (triangle_[i].id() == 0) {
-    quad_[i] = bound_program(false, precision);
-    triangle_[i] = bound_program(true, precision);
-  }
-  precision_ = precision;
-}
+void PatchLevelBound::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
 
 int PatchLevelBound::max_level(PatchShape shape, const ShaderProgram& draw_program, int first_patch,
                                int n_patches) const {
@@ -60,7 +53,7 @@ int PatchLevelBound::max_level(PatchShape shape, const ShaderProgram& draw_progr
   glGetBooleanv(GL_TRANSFORM_FEEDBACK_PAUSED, &paused);
   const bool pause = feedback && !paused;
   if (pause) glPauseTransformFeedback();
-  const ShaderProgram& program = (shape == PatchShape::triangle ? triangle_ : quad_)[int(precision_)];
+  const ShaderProgram& program = programs_(shape);
   const unsigned from = draw_program.id(), to = program.id();
   copy_uniform(from, to, "u_view_projection", 16);
   copy_uniform(from, to, "u_viewport", 2);

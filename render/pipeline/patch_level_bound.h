@@ -7,6 +7,7 @@
 #include "render/gl/gl_object.h"
 #include "render/gl/point_precision.h"
 #include "render/gl/shader_program.h"
+#include "render/gl/shape_programs.h"
 
 namespace gps {
 
@@ -26,8 +27,7 @@ public:
 
 private:
   // By PointPrecision: quad and triangle patches.
-  ShaderProgram quad_[2], triangle_[2];
-  PointPrecision precision_ = PointPrecision::single_float;
+  ShapePrograms programs_;
   GlBuffer result_;
 };
 
