@@ -21,6 +21,8 @@ public:
   /// Attachment 0 as RGBA in [0,1]; 1 (position) and 2 (normal) as xyz + coverage (w ≥ 1 where drawn;
   /// the normal's w is 2 where a regular plan node was evaluated, 3 where a terminal one).
   Image read(int attachment) const;
+  /// The texture of attachment 0, 1 or 2.
+  unsigned texture(int attachment) const { return textures_[size_t(attachment)]; }
 
 private:
   int width_, height_;

@@ -1,11 +1,14 @@
 // A frame with non-finite output is found (render/image/non_finite_pixels.h): `gpsurf render`
-// reports it instead of writing an image.
+// reports it instead of writing an image; the editor counts the same pixels on the GPU
+// (render/gl/frame_finite_check.h).
+#include <glad/gl.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
 #include "core/modelling/samples.h"
+#include "render/gl/frame_finite_check.h"
 #include "render/gl/render_target.h"
 #include "render/image/non_finite_pixels.h"
 #include "render/pipeline/surface_renderer.h"
@@ -37,6 +40,32 @@ TEST_F(NonFiniteFrame, CountsThePixelsWhoseAovsAreNotFinite) {
   EXPECT_EQ(count_non_finite_pixels(position, normal), 1);
   at(normal, 3, 60, 2) = std::numeric_limits<float>::infinity();
   EXPECT_EQ(count_non_finite_pixels(position, normal), 2);
+}
+
+// The GPU's count equals the count of the images read back, with a NaN position, an infinite normal
+// and a pixel with both (counted once).
+TEST_F(NonFiniteFrame, TheGpuCountsWhatTheReadBackImagesShow) {
+  const CovarianceMesh torus = make_sample("torus");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(torus);
+  RenderTarget target(70, 45);  // not a whole number of the count's 16 × 16 tiles
+  DrawOptions o;
+  o.level = 4;
+  o.pixels = 0;
+  renderer.draw(target, frame_mesh(torus), o);
+  const FrameFiniteCheck check;
+  EXPECT_EQ(check.non_finite_pixels(target), 0);
+  const auto set = [&](int attachment, int x, int y, float value) {
+    const float pixel[4] = {value, 0.0f, value, 1.0f};
+    glTextureSubImage2D(target.texture(attachment), 0, x, y, 1, 1, GL_RGBA, GL_FLOAT, pixel);
+  };
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  set(1, 35, 22, nan);
+  set(2, 69, 44, -inf);
+  set(1, 0, 0, inf);
+  set(2, 0, 0, nan);
+  EXPECT_EQ(check.non_finite_pixels(target), 3);
+  EXPECT_EQ(count_non_finite_pixels(target.read(1), target.read(2)), 3);
 }
 
 }  // namespace

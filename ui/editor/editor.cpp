@@ -12,6 +12,7 @@
 
 #include "core/io/atomic_file.h"
 #include "core/support/error.h"
+#include "render/gl/frame_finite_check.h"
 #include "render/gl/gl_context.h"
 #include "render/image/image_io.h"
 #include "render/image/matcap.h"
@@ -21,7 +22,6 @@
 #include "ui/overlays/ellipsoid_scope.h"
 #include "ui/panels/help_overlay.h"
 #include "ui/panels/status_bar.h"
-#include "render/image/non_finite_pixels.h"
 #include "ui/panels/view_panel.h"
 
 namespace gps {
@@ -64,6 +64,7 @@ EditorApp::EditorApp(const EditorOptions& options)
   shown_ = std::make_unique<ShownSurface>();
   target_layer_ = std::make_unique<TargetPointsLayer>();
   timer_ = std::make_unique<GpuPassTimer>();
+  finite_check_ = std::make_unique<FrameFiniteCheck>();
   shown_->renderer().set_pass_timer(timer_.get());
   shown_->renderer().set_collect_statistics(true);
   if (const std::string error = load_settings(config_folder_, view_, reach_options_); !error.empty())
@@ -107,6 +108,7 @@ EditorApp::~EditorApp() {
   target_layer_.reset();
   shown_.reset();
   timer_.reset();
+  finite_check_.reset();
   target_.reset();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui::DestroyContext();
@@ -203,10 +205,11 @@ void EditorApp::render_and_present() {
     if (!hidden_.cage_edges().empty()) draw.hidden_edges = &hidden_.cage_edges();
     shown_->renderer().draw(*target_, camera_, draw);
     target_layer_->draw(*target_, camera_, view_.target);
-    // Once the surface has settled after an edit or a new mesh (a read-back every frame of a drag
-    // would cost too much): a frame the float evaluation could not represent is said, not just shown.
+    // Once the surface has settled after an edit or a new mesh (the count's read-back waits for the
+    // GPU: not on every frame of a drag): a frame the float evaluation could not represent is said,
+    // not just shown.
     if (!edited && shown_->changed_since(finite_seen_)) {
-      if (const long long bad = count_non_finite_pixels(target_->read(1), target_->read(2)); bad > 0)
+      if (const long long bad = finite_check_->non_finite_pixels(*target_); bad > 0)
         set_status(
             document_.display_name() + ": the GPU's evaluation is not finite at " + std::to_string(bad) + " pixels",
             true);

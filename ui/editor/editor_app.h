@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "render/gl/frame_finite_check.h"
 #include "render/gl/gpu_pass_timer.h"
 #include "render/gl/render_target.h"
 #include "render/gl/window_context.h"
@@ -191,6 +192,7 @@ private:
   std::unique_ptr<ShownSurface> shown_;
   std::uint64_t finite_seen_ = 0;
   std::unique_ptr<GpuPassTimer> timer_;
+  std::unique_ptr<FrameFiniteCheck> finite_check_;  // the finite check of a settled frame
   std::unique_ptr<RenderTarget> target_;
   std::unique_ptr<TargetPointsLayer> target_layer_;  // the dense target shown as points, and their distances
   EditorDocument document_;
