@@ -19,6 +19,8 @@ struct Camera {
   float fov_degrees = 35.0f;
   bool orthographic = false;  // parallel projection showing the height the perspective shows at the target
 
+  bool operator==(const Camera&) const = default;
+
   glm::vec3 eye() const { return glm::vec3(eye_double()); }
   glm::dvec3 eye_double() const;
   glm::mat4 view() const { return glm::mat4(view_double()); }

@@ -148,6 +148,12 @@ public:
   /// For a frame that matches(): brings the captured copies of evaluated vertices up to date and
   /// welds what Weld::when_settled left unwelded.
   void settle();
+  /// Whether settle() has nothing left to do: a frame that matches() then draws what the last drew.
+  bool settled() const {
+    const bool weld_waits =
+        weld_mode_ == Weld::when_settled && has_stored_triangles() && (weld_all_pending_ || !weld_pending_.empty());
+    return copy_pending_.empty() && !weld_waits;
+  }
   /// Brings the captured copies of the vertices that edits evaluated again up to date (a compute
   /// pass: call before binding the frame's program), as a frame that draws the grid needs.
   void copy_back_evaluated();

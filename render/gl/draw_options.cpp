@@ -2,6 +2,39 @@
 
 namespace gps {
 
+namespace {
+
+// Points `kept` to `copy`, holding what `list` points to, or to nothing where `list` is unset.
+template <class T>
+void keep_list(const std::vector<T>* list, std::vector<T>& copy, const std::vector<T>*& kept) {
+  if (list) copy = *list;
+  kept = list ? &copy : nullptr;
+}
+
+// Whether `list` is set where `kept` is and holds the same; then `list` stands for `kept` in `o`.
+template <class T>
+bool same_list(const std::vector<T>* list, const std::vector<T>* kept, const std::vector<T>*& in_o) {
+  if ((list == nullptr) != (kept == nullptr) || (list && *list != *kept)) return false;
+  in_o = kept;
+  return true;
+}
+
+}  // namespace
+
+void DrawnOptions::record(const DrawOptions& o) {
+  values_ = o;
+  keep_list(o.ellipsoid_vertices, ellipsoid_vertices_, values_.ellipsoid_vertices);
+  keep_list(o.hidden_patches, hidden_patches_, values_.hidden_patches);
+  keep_list(o.hidden_edges, hidden_edges_, values_.hidden_edges);
+}
+
+bool DrawnOptions::same(const DrawOptions& o) const {
+  DrawOptions compared = o;
+  return same_list(o.ellipsoid_vertices, values_.ellipsoid_vertices, compared.ellipsoid_vertices) &&
+         same_list(o.hidden_patches, values_.hidden_patches, compared.hidden_patches) &&
+         same_list(o.hidden_edges, values_.hidden_edges, compared.hidden_edges) && compared == values_;
+}
+
 void set_level_uniforms(const ShaderProgram& p, const glm::mat4& view_projection, glm::vec2 viewport,
                         const DrawOptions& o) {
   p.set("u_view_projection", view_projection);

@@ -19,6 +19,7 @@ constexpr float kHiddenCageAlpha = 0.25f;
 struct DrawDiagnostics {
   bool back_faces_magenta = false;      // draw back faces in pure magenta: a crack shows them
   bool mismatched_edge_levels = false;  // give neighbouring patches different edge levels on purpose
+  bool operator==(const DrawDiagnostics&) const = default;
 };
 
 struct DrawOptions {
@@ -38,6 +39,28 @@ struct DrawOptions {
   const std::vector<int>* hidden_patches = nullptr;
   const std::vector<char>* hidden_edges = nullptr;  // set: the mesh lines leave out the edges marked 1 (by index)
   DrawDiagnostics diagnostics;    // off in every draw a user sees
+
+  /// The same values, the lists the same pointers (DrawnOptions compares what they hold).
+  bool operator==(const DrawOptions&) const = default;
+};
+
+/// A frame's options with copies of the lists they point to, to tell whether a later frame's are the
+/// same: every value equal, each list set or unset alike and holding the same elements. Kept in one
+/// place (it points into itself), so neither copied nor moved.
+class DrawnOptions {
+public:
+  DrawnOptions() = default;
+  DrawnOptions(const DrawnOptions&) = delete;
+  DrawnOptions& operator=(const DrawnOptions&) = delete;
+
+  /// Takes `o`'s values and copies of its lists.
+  void record(const DrawOptions& o);
+  bool same(const DrawOptions& o) const;
+
+private:
+  DrawOptions values_;  // the lists pointing to the copies below
+  std::vector<int> ellipsoid_vertices_, hidden_patches_;
+  std::vector<char> hidden_edges_;
 };
 
 /// The adaptive target edge length of a render when none is given: 4 pixels up to a 400-pixel image,

@@ -2,6 +2,8 @@
 
 #include <glad/gl.h>
 
+#include <atomic>
+
 #include "core/support/error.h"
 #include "render/gl/gl_context.h"
 
@@ -17,11 +19,17 @@ int checked_width(int width, int height) {
   return width;
 }
 
+std::uint64_t next_serial() {
+  static std::atomic<std::uint64_t> last{0};
+  return ++last;
+}
+
 }  // namespace
 
 RenderTarget::RenderTarget(int width, int height)
     : width_(checked_width(width, height)),
       height_(height),
+      serial_(next_serial()),
       textures_{GlTexture(GL_TEXTURE_2D), GlTexture(GL_TEXTURE_2D), GlTexture(GL_TEXTURE_2D)} {
   const GLenum formats[3] = {GL_RGBA8, GL_RGBA32F, GL_RGBA32F};
   for (int i = 0; i < 3; ++i) {

@@ -1,6 +1,7 @@
 #pragma once
 // An off-screen framebuffer: colour (RGBA8) plus world position and normal AOVs (RGBA32F) and depth.
 #include <array>
+#include <cstdint>
 
 #include "render/gl/gl_object.h"
 #include "render/image/image.h"
@@ -16,6 +17,8 @@ public:
   int width() const { return width_; }
   int height() const { return height_; }
   unsigned framebuffer() const { return fbo_; }
+  /// Unique in the process: a target made where another was is not taken for it.
+  std::uint64_t serial() const { return serial_; }
   /// Binds it for drawing, with all three outputs, and sets the viewport.
   void bind() const;
   /// Attachment 0 as RGBA in [0,1]; 1 (position) and 2 (normal) as xyz + coverage (w ≥ 1 where drawn;
@@ -26,6 +29,7 @@ public:
 
 private:
   int width_, height_;
+  std::uint64_t serial_;
   GlFramebuffer fbo_;
   std::array<GlTexture, 3> textures_;  // colour, position, normal
   GlRenderbuffer depth_;

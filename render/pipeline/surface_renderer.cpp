@@ -37,6 +37,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
                                const PlanChange& change, const std::vector<int>& origin) {
   // Refused before anything changes: the renderer keeps drawing the previous mesh.
   FramedGaussians framed = frame.gaussians_in_frame(mesh);
+  ++revision_;
   // In the same frame, what the unchanged Gaussians gave is carried to where they went.
   const bool carry =
       frame == frame_ && framed_.n_vertices() > 0 && (origin.empty() || origin.size() == mesh.n_vertices());
@@ -94,6 +95,7 @@ void SurfaceRenderer::set_triangles(const TriangleMesh& triangles) {
   const Vec3 centre(frame_.centre.x, frame_.centre.y, frame_.centre.z);
   for (Vec3& p : framed.positions) p = (p - centre) / frame_.unit;
   static_triangles_.set(framed);
+  ++revision_;
 }
 
 void SurfaceRenderer::use_point_precision(PointPrecision precision) {
@@ -114,6 +116,7 @@ void SurfaceRenderer::use_point_precision(PointPrecision precision) {
 void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
   // The frame stays that of set_mesh, so that the vertices not uploaded again still fit.
   frame_.to_frame(mesh, changed, framed_);
+  ++revision_;
   point_precision_.update(framed_, changed);
   follow_edit(changed);
 }
@@ -141,6 +144,7 @@ void SurfaceRenderer::follow_edit(const std::vector<int>& changed) {
 
 void SurfaceRenderer::set_matcap(const Image& m) {
   matcap_ = image_texture(m);  // its storage is immutable: a new texture per MatCap
+  ++revision_;
 }
 
 void SurfaceRenderer::set_collect_statistics(bool collect) {
@@ -171,6 +175,7 @@ DrawStatistics SurfaceRenderer::last_statistics() {
 
 void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, const DrawOptions& o) {
   const float aspect = float(target.width()) / float(target.height());
+  CacheFrame cache_frame = CacheFrame::live;
   {
     const GpuPassScope pass(timer_, "surface");
     const bool use_cache = !o.static_triangles && o.surface_cache && !hides_patches(o);
@@ -189,11 +194,10 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glBindTextureUnit(0, matcap_);
-    const CacheFrame cache_frame = !use_cache       ? CacheFrame::live
-                                   : !cache_matches ? capture_cache(camera, o, aspect, target.width(), target.height())
-                                   : cache_.has_stored_triangles()
-                                       ? CacheFrame::stored
-                                       : CacheFrame::live;  // refused: past the memory limit
+    cache_frame = !use_cache                      ? CacheFrame::live
+                  : !cache_matches                ? capture_cache(camera, o, aspect, target.width(), target.height())
+                  : cache_.has_stored_triangles() ? CacheFrame::stored
+                                                  : CacheFrame::live;  // refused: past the memory limit
     const bool cached = cache_frame == CacheFrame::stored;
     last_cache_frame_ = cache_frame;
     if (cache_frame != CacheFrame::drawn) {  // else drawn as it was captured
@@ -227,6 +231,17 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
   }
   glBindVertexArray(0);
   check_gl_errors("drawing");
+  last_draw_.target = target.serial();
+  last_draw_.revision = revision_;
+  last_draw_.camera = camera;
+  last_draw_.options.record(o);
+  // A frame drawn as it was captured is followed by one drawn from the cache.
+  last_draw_.repeatable = cache_frame == CacheFrame::live || (cache_frame == CacheFrame::stored && cache_.settled());
+}
+
+bool SurfaceRenderer::draws_as_last(const RenderTarget& target, const Camera& camera, const DrawOptions& o) const {
+  return last_draw_.repeatable && last_draw_.target == target.serial() && last_draw_.revision == revision_ &&
+         last_draw_.camera == camera && last_draw_.options.same(o);
 }
 
 void SurfaceRenderer::draw_cache(bool grid) {

@@ -6,6 +6,7 @@
 // triangles (render/cache/surface_cache.h), shaded by MatCap; overlays of ellipsoids and the base mesh
 // (render/overlays/cage_lines.h); static triangles as the benchmark floor (render/pipeline/static_triangles.h).
 #include <glm/glm.hpp>
+#include <cstdint>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -85,6 +86,11 @@ public:
   void set_matcap(const Image& matcap);
 
   void draw(const RenderTarget& target, const Camera& camera, const DrawOptions& options);
+  /// Whether draw(target, camera, options) would draw again what the last draw left in `target`: the
+  /// last draw was into it, with the same camera and options; nothing it draws has changed since (a
+  /// mesh, an edit, the MatCap, the static triangles); and the surface cache had nothing left to
+  /// settle. A caller that has drawn nothing over the target since may keep it as it is.
+  bool draws_as_last(const RenderTarget& target, const Camera& camera, const DrawOptions& options) const;
   /// The vertices the tessellator generates for `options` in a width × height viewport (no
   /// rasterisation), of the patches [first_patch, first_patch + n_patches) (n_patches < 0: to the last).
   std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, int width,
@@ -97,7 +103,10 @@ public:
   std::vector<glm::dvec3> corner_limit_points() const;
 
   /// The stored triangles of DrawOptions::surface_cache (its capture count, hysteresis, limit).
-  SurfaceCache& surface_cache() { return cache_; }
+  SurfaceCache& surface_cache() {
+    ++revision_;  // its settings may change what a draw draws
+    return cache_;
+  }
   const SurfaceCache& surface_cache() const { return cache_; }
   /// The surface cache's GPU buffers and the levels its adaptive capture recorded.
   size_t surface_cache_bytes() const { return cache_.buffer_bytes() + stored_levels_.bytes(); }
@@ -200,6 +209,15 @@ private:
   DrawStatistics last_statistics_;
   std::unique_ptr<QueryRing> cached_statistics_;  // while collecting statistics: a cached draw's vertices
   CacheFrame last_cache_frame_ = CacheFrame::live;
+  // What draws_as_last() compares: the revision counts every change of what a draw draws.
+  std::uint64_t revision_ = 0;
+  struct LastDraw {
+    std::uint64_t target = 0, revision = 0;  // the target's serial; 0: none yet
+    Camera camera;
+    DrawnOptions options;
+    bool repeatable = false;  // drawn live, or from a settled cache: the same inputs draw the same
+  };
+  LastDraw last_draw_;
 };
 
 }  // namespace gps

@@ -13,6 +13,7 @@ namespace gps {
 void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
   const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
+  ++revision_;
   const int n_rows = tables().stencils.n_rows();
   const PatchPlans& plans = tables().plans;
   if (changed) {

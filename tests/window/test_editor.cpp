@@ -6,6 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <filesystem>
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
@@ -208,6 +209,27 @@ TEST_F(EditorTest, StatisticsNameTheOpenedMeshAndTheSavedFile) {
   EXPECT_EQ(stats.at("mesh").get<std::string>(), "original.ply");
   EXPECT_EQ(stats.value("saved", ""), dir_.file("saved.ply"));
   EXPECT_EQ(stats.at("faces").get<int>(), int(original_.n_faces()));
+}
+
+// An idle window keeps the surface it drew and draws only its UI; a change of view after idling is
+// drawn at once: the window after it equals, pixel for pixel, one that changed the view first.
+TEST_F(EditorTest, AnIdleWindowKeepsItsSurfaceAndDrawsTheNextChange) {
+  std::filesystem::create_directories(dir_.path() / "gpsurf");
+  dir_.write("gpsurf/settings.json", R"({"show_statistics": false})");  // its figures differ run to run
+  const std::string idle = R"({"type": "wait", "frames": 30})";
+  const std::string front = R"({"type": "key", "key": "kp1"}, {"type": "wait", "frames": 1})";
+  const auto idled =
+      play(idle + ", " + front, "--screenshot " + dir_.file("idled.png") + " --stats " + dir_.file("s.json"));
+  ASSERT_EQ(idled.exit_code, 0) << idled.output;
+  const nlohmann::json stats = nlohmann::json::parse(read_text_file(dir_.file("s.json")));
+  EXPECT_GE(stats.at("kept_frames").get<int>(), 25) << "idle frames drew the surface again";
+  const auto direct = play(front, "--screenshot " + dir_.file("direct.png"));
+  ASSERT_EQ(direct.exit_code, 0) << direct.output;
+  const auto unturned = play(idle, "--screenshot " + dir_.file("unturned.png"));
+  ASSERT_EQ(unturned.exit_code, 0) << unturned.output;
+  const Image shot = read_image(dir_.file("idled.png"));
+  EXPECT_EQ(shot.pixels, read_image(dir_.file("direct.png")).pixels);
+  EXPECT_NE(shot.pixels, read_image(dir_.file("unturned.png")).pixels) << "the front view changed nothing";
 }
 
 TEST(EditorCommandLine, BadInputIsOneLineAndNonZero) {

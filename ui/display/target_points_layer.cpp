@@ -51,8 +51,10 @@ TargetPointsLayer::Report TargetPointsLayer::update(const ShownSurface& shown, c
   return {taken.points, taken.error};
 }
 
+bool TargetPointsLayer::draws(const TargetPointsView& view) const { return view.shown && overlay_->count() > 0; }
+
 void TargetPointsLayer::draw(const RenderTarget& target, const Camera& camera, const TargetPointsView& view) const {
-  if (!view.shown || overlay_->count() == 0) return;
+  if (!draws(view)) return;
   PointOverlay::Style style;
   style.max_distance = view.max_distance;
   style.point_size = view.point_size;

@@ -38,6 +38,8 @@ public:
                 TargetPointsView& view, Clock::time_point now);
   /// Over the surface already drawn into `target`, where shown.
   void draw(const RenderTarget& target, const Camera& camera, const TargetPointsView& view) const;
+  /// Whether draw() draws anything for `view`.
+  bool draws(const TargetPointsView& view) const;
 
 private:
   TargetPoints points_;

@@ -203,8 +203,15 @@ void EditorApp::render_and_present() {
       set_status("hide: " + refusal, true);
     if (!hidden_.patches().empty()) draw.hidden_patches = &hidden_.patches();
     if (!hidden_.cage_edges().empty()) draw.hidden_edges = &hidden_.cage_edges();
-    shown_->renderer().draw(*target_, camera_, draw);
-    target_layer_->draw(*target_, camera_, view_.target);
+    // A frame that would draw what the target holds keeps it: an idle editor draws the UI alone.
+    const bool target_points = target_layer_->draws(view_.target);
+    if (target_points || target_points_drawn_ || !shown_->renderer().draws_as_last(*target_, camera_, draw)) {
+      shown_->renderer().draw(*target_, camera_, draw);
+      target_layer_->draw(*target_, camera_, view_.target);
+    } else {
+      ++kept_frames_;
+    }
+    target_points_drawn_ = target_points;
     // Once the surface has settled after an edit or a new mesh (the count's read-back waits for the
     // GPU: not on every frame of a drag): a frame the float evaluation could not represent is said,
     // not just shown.
@@ -246,6 +253,7 @@ void EditorApp::write_statistics(const std::string& path) {
                       {"median_frame_ms", clock_.median_frame_ms()},
                       {"median_edit_to_frame_ms", clock_.median_edit_ms()},
                       {"edits", clock_.edit_count()},
+                      {"kept_frames", kept_frames_},
                       {"last_edit_vertices", last_edit_vertices_},
                       {"gpu_pass_ms", passes},
                       {"free_region", {free_min_.x, free_min_.y, free_max_.x, free_max_.y}},

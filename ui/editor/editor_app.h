@@ -191,6 +191,8 @@ private:
   // last followed: the finite check, the hidden patches and lines, and the target points' layer.
   std::unique_ptr<ShownSurface> shown_;
   std::uint64_t finite_seen_ = 0;
+  long long kept_frames_ = 0;         // frames whose surface was kept in the target, not drawn again
+  bool target_points_drawn_ = false;  // over the target's surface by the last frame
   std::unique_ptr<GpuPassTimer> timer_;
   std::unique_ptr<FrameFiniteCheck> finite_check_;  // the finite check of a settled frame
   std::unique_ptr<RenderTarget> target_;
