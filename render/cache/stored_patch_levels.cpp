@@ -11,18 +11,8 @@
 
 namespace gps {
 
-namespace {
-ShaderProgram check_program(PatchShape shape, PointPrecision precision) {
-  const bool triangles = shape == PatchShape::triangle;
-  std::vector<const char*> pieces = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
-  if (triangles) pieces.insert(pieces.begin(), "#define GPS_TRIANGLE_PATCHES\n");
-  pieces.insert(pieces.end(), {shaders::canonical_edge, shaders::tess_levels, shaders::patch_level_check_comp});
-  return ShaderProgram(triangles ? "patch_level_check_triangles" : "patch_level_check",
-                       at_precision({{GL_COMPUTE_SHADER, pieces}}, precision));
-}
-}  // namespace
-
-StoredPatchLevels::StoredPatchLevels() : programs_(check_program) {}
+StoredPatchLevels::StoredPatchLevels()
+    : programs_(plan_compute_programs("patch_level_check", false, {shaders::tess_levels, shaders::patch_level_check_comp})) {}
 
 void StoredPatchLevels::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
 

@@ -11,15 +11,7 @@
 namespace gps {
 
 StoredVertexEvaluation::StoredVertexEvaluation()
-    : programs_([](PatchShape shape, PointPrecision precision) {
-        const bool triangles = shape == PatchShape::triangle;
-        std::vector<const char*> sources = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
-        if (triangles)
-          sources.insert(sources.begin(), "#define GPS_TRIANGLE_PATCHES\n"), sources.push_back(shaders::loop_eval);
-        sources.insert(sources.end(), {shaders::canonical_edge, shaders::stored_vertex_evaluation_comp});
-        return ShaderProgram(triangles ? "stored_vertex_evaluation_triangles" : "stored_vertex_evaluation",
-                             at_precision({{GL_COMPUTE_SHADER, sources}}, precision));
-      }),
+    : programs_(plan_compute_programs("stored_vertex_evaluation", true, {shaders::stored_vertex_evaluation_comp})),
       groups_program_("evaluation_groups",
                       {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {}
 

@@ -1,6 +1,10 @@
 #include "render/gl/shape_programs.h"
 
+#include <glad/gl.h>
+
 #include <utility>
+
+#include "shaders/embedded_shaders.h"
 
 namespace gps {
 
@@ -24,5 +28,18 @@ const ShaderProgram& ShapePrograms::operator()(PatchShape shape) const {
 }
 
 bool ShapePrograms::built(PatchShape shape) const { return slot(shape, precision_).id() != 0; }
+
+ShapePrograms::Build plan_compute_programs(std::string name, bool loop_evaluation, std::vector<const char*> sources) {
+  return [name = std::move(name), loop_evaluation, sources = std::move(sources)](PatchShape shape,
+                                                                                   PointPrecision precision) {
+    const bool triangles = shape == PatchShape::triangle;
+    std::vector<const char*> all = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
+    if (triangles) all.insert(all.begin(), "#define GPS_TRIANGLE_PATCHES\n");
+    if (triangles && loop_evaluation) all.push_back(shaders::loop_eval);
+    all.push_back(shaders::canonical_edge);
+    all.insert(all.end(), sources.begin(), sources.end());
+    return ShaderProgram(triangles ? name + "_triangles" : name, at_precision({{GL_COMPUTE_SHADER, all}}, precision));
+  };
+}
 
 }  // namespace gps

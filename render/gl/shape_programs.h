@@ -3,6 +3,8 @@
 // used: a mesh of quads never compiles the triangles' programs, nor one of triangles the quads', and
 // double points compile theirs only once a mesh needs them.
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "core/plans/patch_plans.h"
 #include "render/gl/point_precision.h"
@@ -34,5 +36,10 @@ private:
   PointPrecision precision_ = PointPrecision::single_float;
   mutable ShaderProgram programs_[2][2];  // [precision][quads, triangles]
 };
+
+/// The Build of a compute pass over the plans' evaluation: `gpu_layout`, `patch_basis`, `plan_eval` and
+/// `canonical_edge`, then the pass's own `sources`; for triangles with their define, Loop's evaluation
+/// too where `loop_evaluation`, and named `name` + "_triangles".
+ShapePrograms::Build plan_compute_programs(std::string name, bool loop_evaluation, std::vector<const char*> sources);
 
 }  // namespace gps

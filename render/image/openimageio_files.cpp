@@ -16,10 +16,8 @@ std::string read(const std::string& path, Image& image) {
   auto in = OIIO::ImageInput::open(path);
   if (!in) return path + ": cannot read the image (" + oiio_error() + ")";
   const OIIO::ImageSpec& spec = in->spec();
-  if (size_t(std::max(spec.width, 0)) * size_t(std::max(spec.height, 0)) * size_t(std::max(spec.nchannels, 0)) >
-      kMaxImageValues)
-    return path + ": cannot read the image data (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
-           " pixels of " + std::to_string(spec.nchannels) + " channels: more than the 2^30 values gpsurf reads)";
+  if (const std::string problem = image_size_problem(spec.width, spec.height, spec.nchannels); !problem.empty())
+    return path + ": cannot read the image data (" + problem + ")";
   image.width = spec.width;
   image.height = spec.height;
   image.channels = spec.nchannels;

@@ -61,9 +61,8 @@ bool read_rows(PngRead& r, std::FILE* file, bool header_only, std::vector<uint8_
   channels = int(png_get_channels(r.png, r.info));
   depth = int(png_get_bit_depth(r.png, r.info));
   if (header_only) return true;
-  if (size_t(width) * size_t(height) * size_t(channels) > kMaxImageValues) {
-    std::snprintf(r.message, sizeof r.message, "%d x %d pixels of %d channels: more than the 2^30 values gpsurf reads",
-                  width, height, channels);
+  if (const std::string problem = image_size_problem(width, height, channels); !problem.empty()) {
+    std::snprintf(r.message, sizeof r.message, "%s", problem.c_str());
     return false;
   }
   const size_t row_bytes = png_get_rowbytes(r.png, r.info);

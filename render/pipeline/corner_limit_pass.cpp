@@ -11,19 +11,7 @@
 
 namespace gps {
 
-namespace {
-constexpr const char* kTrianglePatches = "#define GPS_TRIANGLE_PATCHES\n";
-}
-
-CornerLimitPass::CornerLimitPass()
-    : programs_([](PatchShape shape, PointPrecision precision) {
-        const bool triangles = shape == PatchShape::triangle;
-        std::vector<const char*> sources = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
-        if (triangles) sources.insert(sources.begin(), kTrianglePatches), sources.push_back(shaders::loop_eval);
-        sources.insert(sources.end(), {shaders::canonical_edge, shaders::corner_limit_comp});
-        return ShaderProgram(triangles ? "corner_limits_triangles" : "corner_limits",
-                             at_precision({{GL_COMPUTE_SHADER, sources}}, precision));
-      }) {}
+CornerLimitPass::CornerLimitPass() : programs_(plan_compute_programs("corner_limits", true, {shaders::corner_limit_comp})) {}
 
 void CornerLimitPass::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
 

@@ -13,15 +13,6 @@ namespace gps {
 
 namespace {
 
-ShaderProgram bound_program(PatchShape shape, PointPrecision precision) {
-  const bool triangles = shape == PatchShape::triangle;
-  std::vector<const char*> pieces = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
-  if (triangles) pieces.insert(pieces.begin(), "#define GPS_TRIANGLE_PATCHES\n");
-  pieces.insert(pieces.end(), {shaders::canonical_edge, shaders::tess_levels, shaders::patch_level_bound_comp});
-  return ShaderProgram(triangles ? "patch_level_bound_triangles" : "patch_level_bound",
-                       at_precision({{GL_COMPUTE_SHADER, pieces}}, precision));
-}
-
 // Copies the float uniforms `name` (of `count` floats) of program `from` into program `to`.
 void copy_uniform(unsigned from, unsigned to, const char* name, int count) {
   float values[16] = {};
@@ -37,7 +28,8 @@ void copy_uniform(unsigned from, unsigned to, const char* name, int count) {
 
 }  // namespace
 
-PatchLevelBound::PatchLevelBound() : programs_(bound_program) {
+PatchLevelBound::PatchLevelBound()
+    : programs_(plan_compute_programs("patch_level_bound", false, {shaders::tess_levels, shaders::patch_level_bound_comp})) {
   glNamedBufferData(result_, sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
 }
 
