@@ -64,7 +64,7 @@ EditorApp::EditorApp(const EditorOptions& options)
   shown_ = std::make_unique<ShownSurface>();
   target_layer_ = std::make_unique<TargetPointsLayer>();
   timer_ = std::make_unique<GpuPassTimer>();
-  finite_check_ = std::make_unique<FrameFiniteCheck>();
+  viewport_ = std::make_unique<ViewportFrame>();
   shown_->renderer().set_pass_timer(timer_.get());
   shown_->renderer().set_collect_statistics(true);
   if (const std::string error = load_settings(config_folder_, view_, reach_options_); !error.empty())
@@ -108,8 +108,7 @@ EditorApp::~EditorApp() {
   target_layer_.reset();
   shown_.reset();
   timer_.reset();
-  finite_check_.reset();
-  target_.reset();
+  viewport_.reset();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui::DestroyContext();
 }
@@ -185,10 +184,6 @@ void EditorApp::render_and_present() {
   }
   update_target_points();
   if (fb_width > 0 && fb_height > 0) {
-    if (!target_ || target_->width() != fb_width || target_->height() != fb_height) {
-      target_.reset();
-      target_ = std::make_unique<RenderTarget>(fb_width, fb_height);
-    }
     DrawOptions draw = view_.draw;
     if (draw.ellipsoids && !all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices())) {
       shown_ellipsoids_ = hidden_.elements().shown(selection_neighbourhood(document_.mesh(), selection_.vertices()));
@@ -203,25 +198,14 @@ void EditorApp::render_and_present() {
       set_status("hide: " + refusal, true);
     if (!hidden_.patches().empty()) draw.hidden_patches = &hidden_.patches();
     if (!hidden_.cage_edges().empty()) draw.hidden_edges = &hidden_.cage_edges();
-    // A frame that would draw what the target holds keeps it: an idle editor draws the UI alone.
-    const bool target_points = target_layer_->draws(view_.target);
-    if (target_points || target_points_drawn_ || !shown_->renderer().draws_as_last(*target_, camera_, draw)) {
-      shown_->renderer().draw(*target_, camera_, draw);
-      target_layer_->draw(*target_, camera_, view_.target);
-    } else {
-      ++kept_frames_;
-    }
-    target_points_drawn_ = target_points;
-    // Once the surface has settled after an edit or a new mesh (the count's read-back waits for the
-    // GPU: not on every frame of a drag): a frame the float evaluation could not represent is said,
-    // not just shown.
-    if (!edited && shown_->changed_since(finite_seen_)) {
-      if (const long long bad = finite_check_->non_finite_pixels(*target_); bad > 0)
-        set_status(
-            document_.display_name() + ": the GPU's evaluation is not finite at " + std::to_string(bad) + " pixels",
-            true);
-    }
-    window_.blit(*target_);
+    // Once the surface has settled after an edit or a new mesh, a frame the float evaluation could
+    // not represent is said, not just shown.
+    if (const long long bad = viewport_->draw(*shown_, *target_layer_, camera_, draw, view_.target, fb_width,
+                                              fb_height, !edited);
+        bad > 0)
+      set_status(
+          document_.display_name() + ": the GPU's evaluation is not finite at " + std::to_string(bad) + " pixels", true);
+    window_.blit(*viewport_->target());
   }
   window_.bind_default_framebuffer();
   timer_->begin("UI");
@@ -253,7 +237,7 @@ void EditorApp::write_statistics(const std::string& path) {
                       {"median_frame_ms", clock_.median_frame_ms()},
                       {"median_edit_to_frame_ms", clock_.median_edit_ms()},
                       {"edits", clock_.edit_count()},
-                      {"kept_frames", kept_frames_},
+                      {"kept_frames", viewport_->kept_frames()},
                       {"last_edit_vertices", last_edit_vertices_},
                       {"gpu_pass_ms", passes},
                       {"free_region", {free_min_.x, free_min_.y, free_max_.x, free_max_.y}},

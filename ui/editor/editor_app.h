@@ -16,9 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "render/gl/frame_finite_check.h"
 #include "render/gl/gpu_pass_timer.h"
-#include "render/gl/render_target.h"
 #include "render/gl/window_context.h"
 #include "core/support/error.h"
 #include "core/fitting/limit_fit.h"
@@ -46,6 +44,7 @@
 #include "ui/display/shown_surface.h"
 #include "ui/display/target_points_layer.h"
 #include "ui/display/hidden_view.h"
+#include "ui/display/viewport_frame.h"
 
 namespace gps {
 
@@ -190,12 +189,8 @@ private:
   // What the window shows of the document, and its renderer. What follows it keeps the revision it
   // last followed: the finite check, the hidden patches and lines, and the target points' layer.
   std::unique_ptr<ShownSurface> shown_;
-  std::uint64_t finite_seen_ = 0;
-  long long kept_frames_ = 0;         // frames whose surface was kept in the target, not drawn again
-  bool target_points_drawn_ = false;  // over the target's surface by the last frame
   std::unique_ptr<GpuPassTimer> timer_;
-  std::unique_ptr<FrameFiniteCheck> finite_check_;  // the finite check of a settled frame
-  std::unique_ptr<RenderTarget> target_;
+  std::unique_ptr<ViewportFrame> viewport_;  // the 3D view's target, kept while nothing in it changes
   std::unique_ptr<TargetPointsLayer> target_layer_;  // the dense target shown as points, and their distances
   EditorDocument document_;
   std::string opened_name_;  // the display name of the mesh as opened (a save renames the document)

@@ -68,10 +68,11 @@ void EditorApp::set_cursor(const Vec3& point, const std::string& how) {
 }
 
 std::optional<Vec3> EditorApp::surface_at(glm::vec2 pixel) const {
-  if (!target_) return std::nullopt;
+  const RenderTarget* target = viewport_->target();
+  if (!target) return std::nullopt;
   const Viewport v = viewport();
-  const auto hit = surface_point(*target_, pixel * glm::vec2(float(target_->width()) / float(v.width),
-                                                             float(target_->height()) / float(v.height)));
+  const auto hit = surface_point(*target, pixel * glm::vec2(float(target->width()) / float(v.width),
+                                                            float(target->height()) / float(v.height)));
   if (!hit) return std::nullopt;
   return to_vec(*hit);
 }
