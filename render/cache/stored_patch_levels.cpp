@@ -12,7 +12,8 @@
 namespace gps {
 
 StoredPatchLevels::StoredPatchLevels()
-    : programs_(plan_compute_programs("patch_level_check", false, {shaders::tess_levels, shaders::patch_level_check_comp})) {}
+    : programs_(
+          plan_compute_programs("patch_level_check", false, {shaders::tess_levels, shaders::patch_level_check_comp})) {}
 
 void StoredPatchLevels::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
 

@@ -31,7 +31,7 @@ bool ShapePrograms::built(PatchShape shape) const { return slot(shape, precision
 
 ShapePrograms::Build plan_compute_programs(std::string name, bool loop_evaluation, std::vector<const char*> sources) {
   return [name = std::move(name), loop_evaluation, sources = std::move(sources)](PatchShape shape,
-                                                                                   PointPrecision precision) {
+                                                                                 PointPrecision precision) {
     const bool triangles = shape == PatchShape::triangle;
     std::vector<const char*> all = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
     if (triangles) all.insert(all.begin(), "#define GPS_TRIANGLE_PATCHES\n");

@@ -11,7 +11,8 @@
 
 namespace gps {
 
-CornerLimitPass::CornerLimitPass() : programs_(plan_compute_programs("corner_limits", true, {shaders::corner_limit_comp})) {}
+CornerLimitPass::CornerLimitPass()
+    : programs_(plan_compute_programs("corner_limits", true, {shaders::corner_limit_comp})) {}
 
 void CornerLimitPass::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
 

@@ -29,7 +29,8 @@ void copy_uniform(unsigned from, unsigned to, const char* name, int count) {
 }  // namespace
 
 PatchLevelBound::PatchLevelBound()
-    : programs_(plan_compute_programs("patch_level_bound", false, {shaders::tess_levels, shaders::patch_level_bound_comp})) {
+    : programs_(
+          plan_compute_programs("patch_level_bound", false, {shaders::tess_levels, shaders::patch_level_bound_comp})) {
   glNamedBufferData(result_, sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
 }
 

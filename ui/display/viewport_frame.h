@@ -25,8 +25,8 @@ public:
   /// where it holds that frame already. `settled` (no edit this frame): where the shown surface
   /// changed since the last count, counts the frame's non-finite pixels. Returns that count (0 where
   /// none, or not counted).
-  long long draw(ShownSurface& shown, const TargetPointsLayer& points, const Camera& camera,
-                 const DrawOptions& options, const TargetPointsView& view, int width, int height, bool settled);
+  long long draw(ShownSurface& shown, const TargetPointsLayer& points, const Camera& camera, const DrawOptions& options,
+                 const TargetPointsView& view, int width, int height, bool settled);
 
   /// The target as the last draw left it; nullptr before the first.
   const RenderTarget* target() const { return target_.get(); }
@@ -36,7 +36,7 @@ public:
 private:
   std::unique_ptr<RenderTarget> target_;
   std::unique_ptr<FrameFiniteCheck> finite_check_;
-  std::uint64_t finite_seen_ = 0;     // the shown surface's revision last counted
+  std::uint64_t finite_seen_ = 0;  // the shown surface's revision last counted
   long long kept_frames_ = 0;
   bool target_points_drawn_ = false;  // over the target's surface by the last frame
 };

@@ -200,11 +200,12 @@ void EditorApp::render_and_present() {
     if (!hidden_.cage_edges().empty()) draw.hidden_edges = &hidden_.cage_edges();
     // Once the surface has settled after an edit or a new mesh, a frame the float evaluation could
     // not represent is said, not just shown.
-    if (const long long bad = viewport_->draw(*shown_, *target_layer_, camera_, draw, view_.target, fb_width,
-                                              fb_height, !edited);
+    if (const long long bad =
+            viewport_->draw(*shown_, *target_layer_, camera_, draw, view_.target, fb_width, fb_height, !edited);
         bad > 0)
       set_status(
-          document_.display_name() + ": the GPU's evaluation is not finite at " + std::to_string(bad) + " pixels", true);
+          document_.display_name() + ": the GPU's evaluation is not finite at " + std::to_string(bad) + " pixels",
+          true);
     window_.blit(*viewport_->target());
   }
   window_.bind_default_framebuffer();

@@ -190,7 +190,7 @@ private:
   // last followed: the finite check, the hidden patches and lines, and the target points' layer.
   std::unique_ptr<ShownSurface> shown_;
   std::unique_ptr<GpuPassTimer> timer_;
-  std::unique_ptr<ViewportFrame> viewport_;  // the 3D view's target, kept while nothing in it changes
+  std::unique_ptr<ViewportFrame> viewport_;          // the 3D view's target, kept while nothing in it changes
   std::unique_ptr<TargetPointsLayer> target_layer_;  // the dense target shown as points, and their distances
   EditorDocument document_;
   std::string opened_name_;  // the display name of the mesh as opened (a save renames the document)

@@ -71,8 +71,8 @@ std::optional<Vec3> EditorApp::surface_at(glm::vec2 pixel) const {
   const RenderTarget* target = viewport_->target();
   if (!target) return std::nullopt;
   const Viewport v = viewport();
-  const auto hit = surface_point(*target, pixel * glm::vec2(float(target->width()) / float(v.width),
-                                                            float(target->height()) / float(v.height)));
+  const auto hit = surface_point(
+      *target, pixel * glm::vec2(float(target->width()) / float(v.width), float(target->height()) / float(v.height)));
   if (!hit) return std::nullopt;
   return to_vec(*hit);
 }
