@@ -18,8 +18,6 @@ namespace {
 using test::gpsurf;
 using test::run_command;
 
-size_t lines(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
-
 TEST(Cli, SampleInfoSubdivideInfer) {
   test::TempDir dir;
   const auto list = run_command(gpsurf("sample --list"));
@@ -105,7 +103,7 @@ TEST(Cli, ValuesBeyondWhatTheMathCarriesAreRefusedAndNothingIsWritten) {
                                    "tessellate " + in + " -o " + dir.file("t.ply") + " --depth 2 --level 2"}) {
       const auto r = run_command(gpsurf(cmd));
       EXPECT_EQ(r.exit_code, 1) << cmd << ": " << r.output;
-      EXPECT_EQ(lines(r.output), 1u) << cmd << ": " << r.output;
+      EXPECT_EQ(test::line_count(r.output), 1u) << cmd << ": " << r.output;
       EXPECT_NE(r.output.find(expected), std::string::npos) << cmd << ": " << r.output;
     }
     EXPECT_FALSE(std::filesystem::exists(dir.file("s.ply")));
@@ -123,7 +121,7 @@ TEST(Cli, UsageErrorsExitWithTwo) {
            "infer " + dir.file("cube.ply") + " -o " + dir.file("x.ply") + " --bias -1", "sample cube"}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
-    EXPECT_EQ(lines(r.output), 1u) << args << ": " << r.output;
+    EXPECT_EQ(test::line_count(r.output), 1u) << args << ": " << r.output;
   }
 }
 
@@ -206,7 +204,7 @@ TEST(Cli, RuntimeErrorsExitWithOneAndKeepFiles) {
                                 "sample cube -o " + dir.file("no/folder/c.ply")}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 1) << args << ": " << r.output;
-    EXPECT_EQ(lines(r.output), 1u) << args << ": " << r.output;
+    EXPECT_EQ(test::line_count(r.output), 1u) << args << ": " << r.output;
     EXPECT_EQ(r.output.rfind("gpsurf: ", 0), 0u) << r.output;
   }
   std::ifstream in(keep);
@@ -252,7 +250,7 @@ TEST(Cli, SavesOntoSpecialOrReadOnlyTargetsAreRefused) {
   for (const std::string& target : {dir.file("pipe.ply"), read_only}) {
     const auto r = run_command(gpsurf("sample cube -o " + target));
     EXPECT_EQ(r.exit_code, 1) << r.output;
-    EXPECT_EQ(lines(r.output), 1u) << r.output;
+    EXPECT_EQ(test::line_count(r.output), 1u) << r.output;
     EXPECT_NE(r.output.find(target), std::string::npos) << r.output;
   }
   EXPECT_TRUE(std::filesystem::is_fifo(dir.file("pipe.ply")));
@@ -271,7 +269,7 @@ TEST(Cli, MessagesAreOneLineWithoutTheFilesControlBytes) {
   const std::string obj = dir.write("evil\nname.obj", "v 0 \x1b]0;owned\x07" + std::string(100000, '9') + " 0\n");
   const auto r = run_command(gpsurf("info '" + obj + "'"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_EQ(lines(r.output), 1u) << r.output;
+  EXPECT_EQ(test::line_count(r.output), 1u) << r.output;
   EXPECT_NE(r.output.find("evil\\x0Aname.obj: line 1: '\\x1B]0;owned\\x07999"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
   EXPECT_LT(r.output.size(), 400u) << r.output;

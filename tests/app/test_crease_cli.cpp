@@ -16,11 +16,6 @@ using test::run_command;
 
 const std::string kData = GPS_TEST_DATA_DIR;
 
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 // An axis-aligned unit cube as a plain OBJ: every edge has a dihedral angle of 90°.
 std::string write_cube(const test::TempDir& dir) {
   return dir.write("cube.obj",
@@ -71,7 +66,7 @@ TEST(CreaseCli, InferCreaseAngleMarksTheCubesEdges) {
   ASSERT_EQ(none.exit_code, 0) << none.output;
   EXPECT_NE(none.output.find("creased 0 edges"), std::string::npos) << none.output;
   EXPECT_TRUE(read_mesh(dir.file("none.ply")).sharpness.empty());
-  EXPECT_EQ(file_text(dir.file("none.ply")).find("element edge"), std::string::npos);
+  EXPECT_EQ(test::file_text(dir.file("none.ply")).find("element edge"), std::string::npos);
 
   const auto wide = run_command(gpsurf("infer " + cube + " -o " + dir.file("x.ply") + " --crease-angle 200"));
   EXPECT_EQ(wide.exit_code, 2);
@@ -107,7 +102,7 @@ TEST(CreaseCli, SavingKeepsSharpnessByteExact) {
     const std::string a = dir.file("a.ply"), b = dir.file("b.ply");
     ASSERT_EQ(run_command(gpsurf("edit " + in + " -o " + a + no_op + format)).exit_code, 0);
     ASSERT_EQ(run_command(gpsurf("edit " + a + " -o " + b + no_op + format)).exit_code, 0);
-    EXPECT_EQ(file_text(a), file_text(b)) << format;
+    EXPECT_EQ(test::file_text(a), test::file_text(b)) << format;
     EXPECT_EQ(read_mesh(b).sharpness, read_mesh(in).sharpness) << format;
   }
 }

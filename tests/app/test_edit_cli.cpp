@@ -17,13 +17,6 @@ namespace {
 using test::gpsurf;
 using test::run_command;
 
-size_t lines(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
-
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 TEST(EditCli, AppliesOperationsInOrder) {
   test::TempDir dir;
   const std::string ops = dir.file("ops.json");
@@ -59,9 +52,9 @@ TEST(EditCli, RefusedOperationWritesNothing) {
   const auto r = run_command(gpsurf("edit sample:cube -o " + out +
                                     R"( --ops '[{"op":"loop_cut","edge":[0,1]},{"op":"merge","vertices":[0,99]}]')"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_EQ(lines(r.output), 1u) << r.output;
+  EXPECT_EQ(test::line_count(r.output), 1u) << r.output;
   EXPECT_NE(r.output.find("ops[1] (merge): vertex 99 is not in the mesh (12 vertices)"), std::string::npos) << r.output;
-  EXPECT_EQ(file_text(out), "precious");
+  EXPECT_EQ(test::file_text(out), "precious");
 }
 
 // A run of whole-mesh subdivisions is sized before the first of them: beyond the memory budget it is
@@ -96,7 +89,7 @@ TEST(EditCli, MalformedOperationsAreUsageErrors) {
            {R"([{"op":"subdivide")", "not valid JSON"}}) {
     const auto r = run(ops);
     EXPECT_EQ(r.exit_code, 2) << ops << "\n" << r.output;
-    EXPECT_EQ(lines(r.output), 1u) << r.output;
+    EXPECT_EQ(test::line_count(r.output), 1u) << r.output;
     EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
   }
   EXPECT_FALSE(std::filesystem::exists(out));

@@ -16,12 +16,10 @@ namespace {
 using test::gpsurf;
 using test::run_command;
 
-size_t lines(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
-
 // A refusal before the work: a usage error (exit 2) of one line that gives `figures`.
 void expect_sized_refusal(const test::CommandResult& r, const std::string& figures) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_EQ(lines(r.output), 1u) << r.output;
+  EXPECT_EQ(test::line_count(r.output), 1u) << r.output;
   EXPECT_NE(r.output.find(figures), std::string::npos) << r.output;
 }
 
@@ -32,7 +30,7 @@ TEST(OutputLimitsCli, SubdivideAndTessellateRefuseWhatExceedsTheBudget) {
   const std::string tight = "GPSURF_MEMORY_LIMIT_BYTES=100000 ";
   const auto subdivided = run_command(tight + gpsurf("subdivide " + cube + " -o " + dir.file("s.ply") + " --levels 4"));
   EXPECT_EQ(subdivided.exit_code, 2) << subdivided.output;
-  EXPECT_EQ(lines(subdivided.output), 1u) << subdivided.output;
+  EXPECT_EQ(test::line_count(subdivided.output), 1u) << subdivided.output;
   EXPECT_EQ(subdivided.output.rfind("gpsurf: " + cube +
                                         ": 4 levels of Catmull-Clark subdivision would make about 1,538 vertices and "
                                         "1,536 faces and hold about ",

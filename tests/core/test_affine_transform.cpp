@@ -20,9 +20,12 @@
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
+
+using test::signed_volume;
 
 using test::error_of;
 
@@ -102,14 +105,6 @@ TEST(AffineTransform, AboutKeepsThePivotAndFromRowsReadsRowMajor) {
 }
 
 // The volume the faces enclose, positive where they are oriented outward.
-double signed_volume(const MeshArrays& a) {
-  double six_volume = 0;
-  for (const std::vector<int>& face : a.faces)
-    for (size_t k = 1; k + 1 < face.size(); ++k)
-      six_volume += a.means[size_t(face[0])].dot(a.means[size_t(face[k])].cross(a.means[size_t(face[k + 1])]));
-  return six_volume / 6;
-}
-
 // A mirror (negative determinant) reverses the faces with the positions, as Blender does, so that
 // the surface stays outward: the signed volume keeps its sign, here its value too.
 TEST(AffineTransform, AMirrorKeepsTheSurfaceOutward) {

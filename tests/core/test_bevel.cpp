@@ -14,9 +14,12 @@
 #include "core/modelling/operation_list.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
+
+using test::signed_volume;
 
 using test::error_of;
 using test::grid_mesh;
@@ -36,15 +39,6 @@ bool closed_and_oriented(const CovarianceMesh& mesh) {
 }
 
 /// The volume the faces enclose, positive where they are oriented outward.
-double signed_volume(const CovarianceMesh& mesh) {
-  const MeshArrays a = arrays_of(mesh);
-  double six_volume = 0;
-  for (const auto& face : a.faces)
-    for (size_t k = 1; k + 1 < face.size(); ++k)
-      six_volume += a.means[size_t(face[0])].dot(a.means[size_t(face[k])].cross(a.means[size_t(face[k + 1])]));
-  return six_volume / 6;
-}
-
 bool all_triangles(const CovarianceMesh& mesh) {
   for (const auto& face : arrays_of(mesh).faces)
     if (face.size() != 3) return false;

@@ -13,9 +13,12 @@
 #include "core/modelling/operation_list.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
+
+using test::signed_volume;
 
 using test::error_of;
 using V = std::vector<int>;
@@ -149,15 +152,6 @@ int euler_characteristic(const CovarianceMesh& m) {
 
 // The volume the faces enclose, fanned into triangles from each face's first corner (positive when
 // they face outward).
-double signed_volume(const CovarianceMesh& m) {
-  const MeshArrays a = arrays_of(m);
-  double six_v = 0;
-  for (const auto& f : a.faces)
-    for (size_t k = 1; k + 1 < f.size(); ++k)
-      six_v += a.means[size_t(f[0])].dot(a.means[size_t(f[k])].cross(a.means[size_t(f[k + 1])]));
-  return six_v / 6;
-}
-
 // Two polygons of n and m corners on circles of radius 1 at z = 0 (facing down) and z = 1 (facing
 // up; turned by `twist` radians); with `fans`, each a fan of triangles around a centre vertex
 // (the last two vertices). Vertices 0..n−1 are the lower rim, n..n+m−1 the upper.

@@ -10,18 +10,12 @@
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/merge_vertices.h"
 #include "core/modelling/subdivide_mesh.h"
+#include "tests/support/error_of.h"
 
 namespace gps {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::error_of;
 
 // Every crease of the mesh lies on one of its edges.
 void expect_creases_on_edges(const CovarianceMesh& m) {

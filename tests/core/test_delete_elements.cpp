@@ -8,6 +8,7 @@
 
 #include "core/modelling/samples.h"
 #include "tests/support/error_of.h"
+#include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
@@ -15,19 +16,19 @@ namespace {
 using test::error_of;
 
 /// Counts of a mesh, whether every directed edge appears once, and its boundary loops' lengths (sorted).
-struct Shape {
+struct LoopedShape {
   int vertices = 0, edges = 0, faces = 0;
   bool oriented = true;
   std::vector<int> boundary_loops;
   int euler() const { return vertices - edges + faces; }
 };
 
-Shape shape_of(const CovarianceMesh& mesh) {
+LoopedShape looped_shape_of(const CovarianceMesh& mesh) {
   const MeshArrays a = arrays_of(mesh);
   std::map<std::pair<int, int>, int> directed;
   for (const auto& face : a.faces)
     for (size_t k = 0; k < face.size(); ++k) ++directed[{face[k], face[(k + 1) % face.size()]}];
-  Shape s;
+  LoopedShape s;
   s.vertices = a.n_vertices();
   s.faces = a.n_faces();
   std::set<std::pair<int, int>> undirected;
@@ -50,19 +51,6 @@ Shape shape_of(const CovarianceMesh& mesh) {
 }
 
 /// A flat n × m grid of unit quads in the xy-plane (vertex j·(n+1) + i at (i, j)), covariance 0.01·I.
-CovarianceMesh flat_grid(int n, int m) {
-  std::vector<Vec3> p;
-  std::vector<std::vector<int>> faces;
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= n; ++i) p.emplace_back(i, j, 0);
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      faces.push_back({a, a + 1, a + n + 2, a + n + 1});
-    }
-  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.01 * Mat3::Identity()), faces);
-}
-
 void expect_unchanged(const CovarianceMesh& mesh, const MeshArrays& before) {
   const MeshArrays after = arrays_of(mesh);
   EXPECT_EQ(after.means, before.means);
@@ -73,7 +61,7 @@ void expect_unchanged(const CovarianceMesh& mesh, const MeshArrays& before) {
 TEST(DeleteFaces, ACubeFaceLeavesOneBoundaryLoopOfFourEdges) {
   const CovarianceMesh cube = make_sample("cube");
   const Modelled m = delete_faces(cube, {0});
-  const Shape s = shape_of(m.mesh);
+  const LoopedShape s = looped_shape_of(m.mesh);
   EXPECT_EQ(s.vertices, 8);
   EXPECT_EQ(s.faces, 5);
   EXPECT_TRUE(s.oriented);
@@ -88,7 +76,7 @@ TEST(DeleteFaces, FacesAroundACornerTakeTheCornerVertexWithThem) {
   const CovarianceMesh cube = make_sample("cube");
   const MeshArrays before = arrays_of(cube);
   const Modelled m = delete_faces(cube, {5, 0, 2});  // the three faces at vertex 0
-  const Shape s = shape_of(m.mesh);
+  const LoopedShape s = looped_shape_of(m.mesh);
   EXPECT_EQ(s.vertices, 7);
   EXPECT_EQ(s.faces, 3);
   EXPECT_EQ(s.boundary_loops, (std::vector<int>{6}));
@@ -99,7 +87,7 @@ TEST(DeleteFaces, FacesAroundACornerTakeTheCornerVertexWithThem) {
 }
 
 TEST(DeleteFaces, RefusesANonManifoldOrEmptyResult) {
-  const CovarianceMesh grid = flat_grid(2, 2);
+  const CovarianceMesh grid = test::flat_grid(2, 2, 0.01);
   const MeshArrays before = arrays_of(grid);
   EXPECT_EQ(error_of([&] {
               delete_faces(grid, {1, 2});
@@ -110,7 +98,7 @@ TEST(DeleteFaces, RefusesANonManifoldOrEmptyResult) {
   expect_unchanged(grid, before);
 
   // Vertex 3 goes with face 2, but the refusal names vertex 6 by its index in the input.
-  const CovarianceMesh big = flat_grid(3, 3);
+  const CovarianceMesh big = test::flat_grid(3, 3, 0.01);
   EXPECT_EQ(error_of([&] {
               delete_faces(big, {2, 4, 6});
             }),
@@ -118,9 +106,9 @@ TEST(DeleteFaces, RefusesANonManifoldOrEmptyResult) {
 }
 
 TEST(DeleteVertices, AVertexTakesItsFaces) {
-  const CovarianceMesh grid = flat_grid(4, 4);
+  const CovarianceMesh grid = test::flat_grid(4, 4, 0.01);
   const Modelled m = delete_vertices(grid, {12});  // the centre: a square hole
-  const Shape s = shape_of(m.mesh);
+  const LoopedShape s = looped_shape_of(m.mesh);
   EXPECT_EQ(s.vertices, 24);
   EXPECT_EQ(s.faces, 12);
   EXPECT_TRUE(s.oriented);
@@ -138,7 +126,7 @@ TEST(DeleteEdges, AnEdgeTakesTheFacesOnBothSides) {
   const CovarianceMesh cube = make_sample("cube");
   const MeshArrays before = arrays_of(cube);
   const Modelled m = delete_edges(cube, {{1, 0}});
-  const Shape s = shape_of(m.mesh);
+  const LoopedShape s = looped_shape_of(m.mesh);
   EXPECT_EQ(s.vertices, 8);
   EXPECT_EQ(s.faces, 4);
   EXPECT_EQ(s.boundary_loops, (std::vector<int>{6}));
@@ -151,7 +139,7 @@ TEST(DeleteEdges, AnEdgeTakesTheFacesOnBothSides) {
 TEST(DissolveEdges, TwoFacesMergeIntoOneWithCornersInOrder) {
   const CovarianceMesh cube = make_sample("cube");
   const Modelled m = dissolve_edges(cube, {{4, 5}});
-  const Shape s = shape_of(m.mesh);
+  const LoopedShape s = looped_shape_of(m.mesh);
   EXPECT_EQ(s.vertices, 8);
   EXPECT_EQ(s.faces, 5);
   EXPECT_EQ(s.euler(), 2);
@@ -164,16 +152,16 @@ TEST(DissolveEdges, TwoFacesMergeIntoOneWithCornersInOrder) {
 }
 
 TEST(DissolveEdges, AChainOfEdgesMergesARowOfFaces) {
-  const CovarianceMesh row = flat_grid(3, 1);  // vertices 0..3 below, 4..7 above
+  const CovarianceMesh row = test::flat_grid(3, 1, 0.01);  // vertices 0..3 below, 4..7 above
   const Modelled m = dissolve_edges(row, {{2, 6}, {1, 5}});
   EXPECT_EQ(arrays_of(m.mesh).faces, (std::vector<std::vector<int>>{{0, 1, 2, 3, 7, 6, 5, 4}}));
-  EXPECT_EQ(shape_of(m.mesh).boundary_loops, (std::vector<int>{8}));
+  EXPECT_EQ(looped_shape_of(m.mesh).boundary_loops, (std::vector<int>{8}));
 }
 
 TEST(DissolveEdges, EveryEdgeAroundAVertexLeavesOnePolygonWithoutIt) {
-  const CovarianceMesh grid = flat_grid(3, 3);
+  const CovarianceMesh grid = test::flat_grid(3, 3, 0.01);
   const Modelled m = dissolve_edges(grid, {{5, 1}, {5, 4}, {5, 6}, {5, 9}});
-  const Shape s = shape_of(m.mesh);
+  const LoopedShape s = looped_shape_of(m.mesh);
   EXPECT_EQ(s.vertices, 15);
   EXPECT_EQ(s.faces, 6);
   EXPECT_TRUE(s.oriented);
@@ -189,14 +177,14 @@ TEST(DissolveEdges, RefusesBoundaryEdgesAndRepeatedVertices) {
   EXPECT_EQ(error_of([&] { dissolve_edges(cube, {{4, 5}, {5, 6}}); }), "the merged face 1 would have vertex 1 twice");
   EXPECT_EQ(error_of([&] { dissolve_edges(cube, {{0, 7}}); }), "edge 0–7 is not in the mesh");
   expect_unchanged(cube, before);
-  const CovarianceMesh grid = flat_grid(2, 2);
+  const CovarianceMesh grid = test::flat_grid(2, 2, 0.01);
   EXPECT_EQ(error_of([&] { dissolve_edges(grid, {{0, 1}}); }), "edge 0–1 is on the boundary");
 }
 
 TEST(DissolveVertices, AnInteriorVertexMergesItsFacesInOrder) {
-  const CovarianceMesh grid = flat_grid(3, 3);
+  const CovarianceMesh grid = test::flat_grid(3, 3, 0.01);
   const Modelled m = dissolve_vertices(grid, {5});
-  const Shape s = shape_of(m.mesh);
+  const LoopedShape s = looped_shape_of(m.mesh);
   EXPECT_EQ(s.vertices, 15);
   EXPECT_EQ(s.faces, 6);
   EXPECT_TRUE(s.oriented);
@@ -207,7 +195,7 @@ TEST(DissolveVertices, AnInteriorVertexMergesItsFacesInOrder) {
   EXPECT_EQ(arrays_of(m.mesh).faces[0], (std::vector<int>{0, 1, 2, 5, 9, 8, 7, 4}));
 
   const Modelled corner = dissolve_vertices(make_sample("cube"), {0});
-  const Shape c = shape_of(corner.mesh);
+  const LoopedShape c = looped_shape_of(corner.mesh);
   EXPECT_EQ(c.vertices, 7);
   EXPECT_EQ(c.faces, 4);
   EXPECT_EQ(c.euler(), 2);
@@ -216,15 +204,15 @@ TEST(DissolveVertices, AnInteriorVertexMergesItsFacesInOrder) {
 }
 
 TEST(DissolveVertices, ABoundaryVertexOfOneFaceIsRemovedFromIt) {
-  const CovarianceMesh grid = flat_grid(2, 2);
+  const CovarianceMesh grid = test::flat_grid(2, 2, 0.01);
   const Modelled m = dissolve_vertices(grid, {0});
   EXPECT_EQ(m.mesh.n_vertices(), 8u);
   EXPECT_EQ(arrays_of(m.mesh).faces[0], (std::vector<int>{0, 3, 2}));  // input {1, 4, 3}
-  EXPECT_EQ(shape_of(m.mesh).boundary_loops, (std::vector<int>{7}));
+  EXPECT_EQ(looped_shape_of(m.mesh).boundary_loops, (std::vector<int>{7}));
 }
 
 TEST(DissolveVertices, Refusals) {
-  const CovarianceMesh grid = flat_grid(2, 2);
+  const CovarianceMesh grid = test::flat_grid(2, 2, 0.01);
   const MeshArrays before = arrays_of(grid);
   EXPECT_EQ(error_of([&] { dissolve_vertices(grid, {1}); }),
             "vertex 1 is on the boundary of 2 faces (only a boundary vertex of a single face can be dissolved)");

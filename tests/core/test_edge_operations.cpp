@@ -13,9 +13,12 @@
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
+
+using test::expect_same_arrays;
 
 using test::error_of;
 
@@ -32,13 +35,6 @@ int checked_boundary_edges(const CovarianceMesh& m) {
     if (!directed.count({e.second, e.first})) ++boundary;
   }
   return boundary;
-}
-
-void expect_same_arrays(const MeshArrays& a, const MeshArrays& b) {
-  EXPECT_EQ(a.faces, b.faces);
-  EXPECT_EQ(a.means, b.means);
-  ASSERT_EQ(a.covariances.size(), b.covariances.size());
-  for (size_t v = 0; v < a.covariances.size(); ++v) EXPECT_EQ(a.covariances[v], b.covariances[v]);
 }
 
 bool all_triangles(const CovarianceMesh& m) {

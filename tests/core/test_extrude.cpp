@@ -8,37 +8,17 @@
 
 #include "core/modelling/samples.h"
 #include "tests/support/error_of.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
 
+using test::Shape;
+using test::shape_of;
+
 using test::error_of;
 
 /// Counts of a mesh and whether its orientation is consistent (every directed edge once).
-struct Shape {
-  int vertices = 0, edges = 0, faces = 0, boundary_edges = 0;
-  bool oriented = true;
-  int euler() const { return vertices - edges + faces; }
-};
-
-Shape shape_of(const CovarianceMesh& mesh) {
-  const MeshArrays a = arrays_of(mesh);
-  std::map<std::pair<int, int>, int> directed;
-  for (const auto& face : a.faces)
-    for (size_t k = 0; k < face.size(); ++k) ++directed[{face[k], face[(k + 1) % face.size()]}];
-  Shape s;
-  s.vertices = a.n_vertices();
-  s.faces = a.n_faces();
-  std::set<std::pair<int, int>> undirected;
-  for (const auto& [e, n] : directed) {
-    s.oriented = s.oriented && n == 1;
-    undirected.insert({std::min(e.first, e.second), std::max(e.first, e.second)});
-    if (!directed.count({e.second, e.first})) ++s.boundary_edges;
-  }
-  s.edges = int(undirected.size());
-  return s;
-}
-
 void expect_same(const MeshArrays& x, const MeshArrays& y) {
   EXPECT_EQ(x.means, y.means);
   EXPECT_EQ(x.covariances, y.covariances);

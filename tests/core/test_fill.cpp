@@ -8,9 +8,12 @@
 #include "core/modelling/mesh_queries.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
+
+using test::signed_volume;
 
 using test::error_of;
 using V = std::vector<int>;
@@ -24,15 +27,6 @@ int boundary_edges_of_oriented(const CovarianceMesh& m) {
   int boundary = 0;
   for (const auto& [key, where] : edges) boundary += edges.count((key << 32) | (key >> 32)) == 0;
   return boundary;
-}
-
-double signed_volume(const CovarianceMesh& m) {
-  const MeshArrays a = arrays_of(m);
-  double v = 0;
-  for (const auto& f : a.faces)
-    for (size_t k = 1; k + 1 < f.size(); ++k)
-      v += a.means[size_t(f[0])].dot(a.means[size_t(f[k])].cross(a.means[size_t(f[k + 1])])) / 6;
-  return v;
 }
 
 // The cube of side 2 without its top face {4, 5, 6, 7}.

@@ -32,19 +32,6 @@ Holed with_hole(const CovarianceMesh& mesh, const std::vector<int>& faces) {
 }
 
 // A flat (n × m)-quad grid of unit squares in the xy-plane.
-CovarianceMesh flat_grid(int n, int m) {
-  std::vector<Vec3> p;
-  std::vector<std::vector<int>> faces;
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= n; ++i) p.emplace_back(i, j, 0);
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      faces.push_back({a, a + 1, a + n + 2, a + n + 1});
-    }
-  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.09 * Mat3::Identity()), faces, "flat grid");
-}
-
 TEST(GridFill, TheCubesTopIsOneQuadAgain) {
   const CovarianceMesh cube = make_sample("cube");
   const Holed open = with_hole(cube, {1});  // the +z face 4 5 6 7
@@ -95,7 +82,7 @@ TEST(GridFill, TheCylindersCapHoleIsATwoByTwoGrid) {
 // A rectangular hole of 4 × 2 unit squares: the corners of the rectangle are found, and the Coons
 // patch of its straight sides puts the inner vertices where the deleted grid had them.
 TEST(GridFill, ARectangularHoleGetsItsGridBack) {
-  const CovarianceMesh grid = flat_grid(6, 4);  // 7 × 5 vertices
+  const CovarianceMesh grid = test::flat_grid(6, 4, 0.09, "flat grid");  // 7 × 5 vertices
   std::vector<int> inner;
   for (int j = 1; j <= 2; ++j)
     for (int i = 1; i <= 4; ++i) inner.push_back(j * 6 + i);
@@ -124,7 +111,7 @@ TEST(GridFill, ARectangularHoleGetsItsGridBack) {
 // Blender's span walks the split: 2 → 8 quads, 3 → 9, 4 → 8 on a ring of 12; an offset moves the
 // first corner along the loop.
 TEST(GridFill, TheSpanAndOffsetChooseTheSides) {
-  const CovarianceMesh grid = flat_grid(6, 4);
+  const CovarianceMesh grid = test::flat_grid(6, 4, 0.09, "flat grid");
   std::vector<int> inner;
   for (int j = 1; j <= 2; ++j)
     for (int i = 1; i <= 4; ++i) inner.push_back(j * 6 + i);

@@ -9,6 +9,7 @@
 
 #include "core/modelling/samples.h"
 #include "tests/support/error_of.h"
+#include "tests/support/test_meshes.h"
 
 namespace gps {
 namespace {
@@ -31,19 +32,6 @@ std::pair<bool, int> orientation_and_boundary(const CovarianceMesh& mesh) {
 }
 
 /// A flat n × m grid of unit quads in the xy-plane (normal +z), covariance 0.01·I.
-CovarianceMesh flat_grid(int n, int m) {
-  std::vector<Vec3> p;
-  std::vector<std::vector<int>> faces;
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= n; ++i) p.emplace_back(i, j, 0);
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      faces.push_back({a, a + 1, a + n + 2, a + n + 1});
-    }
-  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.01 * Mat3::Identity()), faces);
-}
-
 /// Distance from point p to the line through a and b.
 double distance_to_line(const Vec3& p, const Vec3& a, const Vec3& b) {
   return (p - a).cross(b - a).norm() / (b - a).norm();
@@ -101,7 +89,7 @@ TEST(InsetFaces, InnerCovarianceIsTheBlendTowardsTheFacePointAtTheFractionMoved)
 
 // Faces 3 and 4 of a flat 3 × 3 grid: the 2 × 1 rectangle [0, 2] × [1, 2].
 TEST(InsetFaces, TwoAdjacentFacesAreInsetAsOneRegion) {
-  const CovarianceMesh grid = flat_grid(3, 3);
+  const CovarianceMesh grid = test::flat_grid(3, 3, 0.01);
   const Modelled m = inset_faces(grid, {3, 4}, 0.2);
   EXPECT_EQ(int(m.mesh.n_vertices()), 16 + 6);
   EXPECT_EQ(int(m.mesh.n_faces()), 9 + 6);
@@ -118,7 +106,7 @@ TEST(InsetFaces, TwoAdjacentFacesAreInsetAsOneRegion) {
 // An inset face's creased rim keeps its sharpness on the outer edges and gives it to the inner
 // ones, which now bound the face; a corner goes to the inner copy as well.
 TEST(InsetFaces, CreasesAndCornersOfTheFaceReachItsInnerCopy) {
-  CovarianceMesh grid = flat_grid(3, 3);  // face 4 is the middle quad 5, 6, 10, 9
+  CovarianceMesh grid = test::flat_grid(3, 3, 0.01);  // face 4 is the middle quad 5, 6, 10, 9
   grid.sharpness.set_crease(5, 6, 10.0);
   grid.sharpness.set_corner(10, 3.0, int(grid.n_vertices()));
   const Modelled m = inset_faces(grid, {4}, 0.2);

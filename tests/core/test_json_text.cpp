@@ -26,7 +26,7 @@ std::vector<Json> elements_of(const std::string& text, bool* array = nullptr) {
   return out;
 }
 
-std::string error_of(const std::string& text) {
+std::string parse_error(const std::string& text) {
   try {
     elements_of(text);
   } catch (const Error& e) {
@@ -66,13 +66,13 @@ std::string whole_parse_error(const std::string& text) {
 
 TEST(JsonText, ErrorsAreAWholeParses) {
   for (const std::string text : {R"([{"op": "add"}, {"op": )", R"({"op": )", "[1, 2] 3", "[1, 2,]", "[[[1]]"}) {
-    EXPECT_EQ(error_of(text), whole_parse_error(text));
-    EXPECT_NE(error_of(text).find("ops.json: not valid JSON (byte "), std::string::npos) << text;
+    EXPECT_EQ(parse_error(text), whole_parse_error(text));
+    EXPECT_NE(parse_error(text).find("ops.json: not valid JSON (byte "), std::string::npos) << text;
   }
-  EXPECT_EQ(error_of(std::string("[1]\0x", 5)), "ops.json: not valid JSON (a NUL byte at byte 4)");
-  EXPECT_EQ(error_of(R"([{"op": "add"}, {"op": "extrude", "distance": 1e999}])"),
+  EXPECT_EQ(parse_error(std::string("[1]\0x", 5)), "ops.json: not valid JSON (a NUL byte at byte 4)");
+  EXPECT_EQ(parse_error(R"([{"op": "add"}, {"op": "extrude", "distance": 1e999}])"),
             "ops.json: ops[1].distance: a number beyond the range of a double");
-  EXPECT_EQ(error_of(R"([1, [2, 3e999]])"), "ops.json: ops[1][1]: a number beyond the range of a double");
+  EXPECT_EQ(parse_error(R"([1, [2, 3e999]])"), "ops.json: ops[1][1]: a number beyond the range of a double");
 }
 
 TEST(JsonText, WhatTheSinkThrowsStopsTheRead) {

@@ -223,7 +223,7 @@ FitResult fit_icosphere_to_bumps(int iterations, double tolerance, double time_b
   return fit_limit_surface(make_sample("icosphere", 80), vertex_means(bumpy_sphere(8)), options);
 }
 
-void expect_same_mesh(const CovarianceMesh& a, const CovarianceMesh& b) {
+void expect_same_gaussians(const CovarianceMesh& a, const CovarianceMesh& b) {
   ASSERT_EQ(a.n_vertices(), b.n_vertices());
   for (size_t i = 0; i < a.n_vertices(); ++i) {
     EXPECT_EQ(a.mean(i), b.mean(i)) << "vertex " << i;
@@ -241,7 +241,7 @@ TEST(LimitFit, StopsWhenTheErrorFallsByLessThanTheTolerance) {
   EXPECT_LE(fall(r.iterations.size() - 1), tolerance);
   for (size_t k = 1; k + 1 < r.iterations.size(); ++k) EXPECT_GT(fall(k), tolerance) << "iteration " << k;
   // Stopping changes nothing of the iterations run: the same mesh as a fit asked for that many.
-  expect_same_mesh(r.mesh, fit_icosphere_to_bumps(int(r.iterations.size()) - 1, 0).mesh);
+  expect_same_gaussians(r.mesh, fit_icosphere_to_bumps(int(r.iterations.size()) - 1, 0).mesh);
 }
 
 TEST(LimitFit, ToleranceZeroRunsEveryIteration) {
@@ -253,15 +253,15 @@ TEST(LimitFit, ToleranceZeroRunsEveryIteration) {
   // An unlimited time budget is the default's: bit for bit the same fit.
   FitOptions options;
   options.iterations = iterations;
-  expect_same_mesh(r.mesh,
-                   fit_limit_surface(make_sample("icosphere", 80), vertex_means(bumpy_sphere(8)), options).mesh);
+  expect_same_gaussians(r.mesh,
+                        fit_limit_surface(make_sample("icosphere", 80), vertex_means(bumpy_sphere(8)), options).mesh);
 }
 
 TEST(LimitFit, StopsWhenTheTimeBudgetRunsOut) {
   const FitResult r = fit_icosphere_to_bumps(10, 0, 1e-9);
   EXPECT_EQ(r.stop, FitStop::time);
   EXPECT_EQ(r.iterations.size(), 2u);  // the start and the one iteration before the budget is checked
-  expect_same_mesh(r.mesh, fit_icosphere_to_bumps(1, 0).mesh);
+  expect_same_gaussians(r.mesh, fit_icosphere_to_bumps(1, 0).mesh);
 }
 
 TEST(LimitFit, RefusesAToleranceOrTimeBudgetOutOfRange) {

@@ -14,9 +14,12 @@
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
+
+using test::expect_same_arrays;
 
 using test::error_of;
 using Edge = std::array<int, 2>;
@@ -44,13 +47,6 @@ void expect_consistent(const CovarianceMesh& m, const EdgeRing& ring) {
     const Edge p = ring.edges[i], q = ring.edges[(i + 1) % n];
     EXPECT_TRUE(has_edge(edges, p[0], q[0]) && has_edge(edges, p[1], q[1])) << "ring edges " << i << ", " << i + 1;
   }
-}
-
-void expect_same_arrays(const MeshArrays& a, const MeshArrays& b) {
-  EXPECT_EQ(a.faces, b.faces);
-  EXPECT_EQ(a.means, b.means);
-  ASSERT_EQ(a.covariances.size(), b.covariances.size());
-  for (size_t v = 0; v < a.covariances.size(); ++v) EXPECT_EQ(a.covariances[v], b.covariances[v]);
 }
 
 std::vector<Vec3> limit_means(const CovarianceMesh& m, int levels) {

@@ -16,11 +16,14 @@
 #include "core/modelling/primitives.h"
 #include "core/modelling/split_faces.h"
 #include "core/plans/patch_layout.h"
+#include "tests/support/error_of.h"
 
 namespace gps {
 namespace {
 
-void expect_same_mesh(const CovarianceMesh& a, const CovarianceMesh& b) {
+using test::error_of;
+
+void expect_same_gaussians_and_faces(const CovarianceMesh& a, const CovarianceMesh& b) {
   ASSERT_EQ(a.n_vertices(), b.n_vertices());
   ASSERT_EQ(a.n_faces(), b.n_faces());
   for (size_t v = 0; v < a.n_vertices(); ++v) {
@@ -33,15 +36,6 @@ void expect_same_mesh(const CovarianceMesh& a, const CovarianceMesh& b) {
   }
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(OperationList, SameAsTheCallsItNames) {
   const CovarianceMesh cube = make_sample("cube");
   const OperationList ops = OperationList::parse(
@@ -51,7 +45,7 @@ TEST(OperationList, SameAsTheCallsItNames) {
   const Modelled scripted = ops.apply(cube, &summaries);
   EXPECT_EQ(summaries.size(), 2u);
   const Modelled direct = extrude_faces(loop_cut(cube, 0, 1, 2).mesh, {1}, 0.25);
-  expect_same_mesh(scripted.mesh, direct.mesh);
+  expect_same_gaussians_and_faces(scripted.mesh, direct.mesh);
   EXPECT_EQ(scripted.selection, direct.selection);
 }
 
@@ -70,7 +64,7 @@ TEST(OperationList, ARunOfAdditionsIsTheSameAsOneAtATime) {
   const Modelled torus = add_primitive(cube, Primitive::torus, Vec3(3, 0, 0), 1);
   const Modelled cone = add_primitive(torus.mesh, Primitive::cone, Vec3::Zero(), 2);
   const Modelled direct = add_primitive(extrude_faces(cone.mesh, {0}, 0.5).mesh, Primitive::plane, Vec3(0, 4, 0), 1);
-  expect_same_mesh(scripted.mesh, direct.mesh);
+  expect_same_gaussians_and_faces(scripted.mesh, direct.mesh);
   EXPECT_EQ(scripted.mesh.sharpness.creases.size(), direct.mesh.sharpness.creases.size());
   EXPECT_EQ(scripted.mesh.sharpness.corners, direct.mesh.sharpness.corners);
   EXPECT_EQ(scripted.selection, direct.selection);
@@ -94,7 +88,7 @@ TEST(OperationList, IndicesReferToTheMeshAsItStands) {
                          .apply(cube);
   EXPECT_EQ(m.mesh.n_faces(), 6u + 4u);
   const Modelled direct = extrude_faces(fill(delete_faces(cube, {0}).mesh, {0, 3, 2, 1}).mesh, {0}, 1.0);
-  expect_same_mesh(m.mesh, direct.mesh);
+  expect_same_gaussians_and_faces(m.mesh, direct.mesh);
   // Face 0 is now the old top face (z = 1): its vertices moved up by 1.
   for (const int v : m.mesh.face(0)) EXPECT_DOUBLE_EQ(m.mesh.mean(size_t(v)).z(), 2.0);
 }
@@ -127,7 +121,7 @@ TEST(OperationList, StepsInPlaceAreTheCallsTheyName) {
       "ops.json");
   std::vector<std::string> summaries;
   const Modelled scripted = ops.apply(cube, &summaries);
-  expect_same_mesh(cube, before);
+  expect_same_gaussians_and_faces(cube, before);
   EXPECT_EQ(cube.sharpness, before.sharpness);
 
   std::vector<std::string> direct_summaries;
@@ -154,7 +148,7 @@ TEST(OperationList, StepsInPlaceAreTheCallsTheyName) {
   m = step(transform_vertices(m.mesh, {}, AffineMap{mirror, Vec3::Zero()}));
   m = step(set_crease(m.mesh, {{0, 1}}, 0));
 
-  expect_same_mesh(scripted.mesh, m.mesh);
+  expect_same_gaussians_and_faces(scripted.mesh, m.mesh);
   EXPECT_EQ(scripted.mesh.sharpness, m.mesh.sharpness);
   EXPECT_EQ(scripted.selection, m.selection);
   EXPECT_EQ(summaries, direct_summaries);
@@ -290,7 +284,7 @@ TEST(OperationList, SplitAndGridFill) {
   std::vector<std::string> summaries;
   const Modelled scripted = ops.apply(cube, &summaries);
   const Modelled direct = grid_fill(split_faces(cube, {1}).mesh, {7, 6, 5, 4}, 1, 2);
-  expect_same_mesh(scripted.mesh, direct.mesh);
+  expect_same_gaussians_and_faces(scripted.mesh, direct.mesh);
   EXPECT_EQ(scripted.mesh.n_vertices(), 12u);
   EXPECT_EQ(scripted.mesh.n_faces(), 7u);
   EXPECT_EQ(summaries, (std::vector<std::string>{"split off 1 face: 4 vertices duplicated along the cut",

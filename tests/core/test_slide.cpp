@@ -14,21 +14,15 @@
 #include "core/modelling/operation_list.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
 
+using test::expect_same_arrays;
+
 using test::error_of;
 using Edges = std::vector<std::array<int, 2>>;
-
-void expect_same_arrays(const MeshArrays& a, const MeshArrays& b) {
-  EXPECT_EQ(a.faces, b.faces);
-  ASSERT_EQ(a.means.size(), b.means.size());
-  for (size_t v = 0; v < a.means.size(); ++v) {
-    EXPECT_EQ(a.means[v], b.means[v]) << "vertex " << v;
-    EXPECT_EQ(a.covariances[v], b.covariances[v]) << "vertex " << v;
-  }
-}
 
 // The cube cut once across the ring through edge 0–1 (x from −1 to 1): vertices 8..11 at x = 0.
 CovarianceMesh cut_cube() { return loop_cut(test::cube_mesh(), 0, 1).mesh; }

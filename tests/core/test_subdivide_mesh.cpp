@@ -11,9 +11,12 @@
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
+
+using test::expect_same_arrays;
 
 using test::error_of;
 
@@ -30,15 +33,6 @@ int checked_boundary_edges(const CovarianceMesh& m) {
     if (!directed.count({e.second, e.first})) ++boundary;
   }
   return boundary;
-}
-
-void expect_same_arrays(const MeshArrays& a, const MeshArrays& b) {
-  EXPECT_EQ(a.faces, b.faces);
-  ASSERT_EQ(a.n_vertices(), b.n_vertices());
-  for (int v = 0; v < a.n_vertices(); ++v) {
-    EXPECT_EQ(a.means[size_t(v)], b.means[size_t(v)]);
-    EXPECT_EQ(a.covariances[size_t(v)], b.covariances[size_t(v)]);
-  }
 }
 
 void expect_gaussian_near(const Gaussian& got, const Gaussian& want, double tol) {

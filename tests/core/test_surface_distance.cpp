@@ -59,7 +59,7 @@ TEST(SurfaceDistance, NearestOfManyTrianglesMatchesBruteForce) {
 
 /// A flat n × n grid of unit squares in the plane z = 0, split into triangles, with inferred covariances
 /// (flat discs in the plane): its limit surface lies in the plane.
-CovarianceMesh flat_grid(int n) {
+CovarianceMesh inferred_triangle_grid(int n) {
   std::vector<Vec3> points;
   std::vector<std::vector<int>> faces;
   for (int i = 0; i <= n; ++i)
@@ -76,7 +76,7 @@ CovarianceMesh flat_grid(int n) {
 }
 
 TEST(SurfaceDistance, PointsOffsetFromAPlanarLimitSurfaceAreTheirOffsetAway) {
-  const CovarianceMesh grid = flat_grid(8);
+  const CovarianceMesh grid = inferred_triangle_grid(8);
   const TriangleMesh limit = limit_surface_triangles(grid, 4).triangles;
   for (const Vec3& p : limit.positions) EXPECT_NEAR(p[2], 0, 1e-12);
   // Points above and below the grid's middle, well inside the limit surface's boundary.
@@ -96,7 +96,7 @@ TEST(SurfaceDistance, PointsOffsetFromAPlanarLimitSurfaceAreTheirOffsetAway) {
 }
 
 TEST(SurfaceDistance, LimitTrianglesKeepToTheirCount) {
-  const CovarianceMesh grid = flat_grid(8);  // 128 triangle patches: L² triangles each at level L
+  const CovarianceMesh grid = inferred_triangle_grid(8);  // 128 triangle patches: L² triangles each at level L
   const LimitTriangles full = limit_surface_triangles(grid, 8);
   EXPECT_EQ(full.level, 8);
   EXPECT_EQ(full.triangles.triangles.size(), 128u * 64);

@@ -1,6 +1,8 @@
 #pragma once
 // What the modelling tests check of a result: its counts, whether it is closed and consistently
 // oriented, and the volume it encloses.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -64,6 +66,18 @@ inline bool nearly_same_mesh(const CovarianceMesh& x, const CovarianceMesh& y, d
         (a.covariances[v] - b.covariances[v]).cwiseAbs().maxCoeff() > tolerance)
       return false;
   return true;
+}
+
+/// Expects two meshes' arrays to be the same, bit for bit: the faces, then each vertex's mean and
+/// covariance.
+inline void expect_same_arrays(const MeshArrays& a, const MeshArrays& b) {
+  EXPECT_EQ(a.faces, b.faces);
+  ASSERT_EQ(a.means.size(), b.means.size());
+  ASSERT_EQ(a.covariances.size(), b.covariances.size());
+  for (size_t v = 0; v < a.means.size(); ++v) {
+    EXPECT_EQ(a.means[v], b.means[v]) << "vertex " << v;
+    EXPECT_EQ(a.covariances[v], b.covariances[v]) << "vertex " << v;
+  }
 }
 
 }  // namespace gps::test

@@ -1,7 +1,10 @@
 #pragma once
 // Runs a command line in a shell and captures its exit code and output (stdout and stderr together).
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <sys/wait.h>
 
@@ -25,5 +28,14 @@ inline CommandResult run_command(const std::string& command) {
 }
 
 inline std::string gpsurf(const std::string& args) { return std::string(GPSURF_BINARY) + " " + args; }
+
+/// The number of lines of a command's output (its newlines).
+inline size_t line_count(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
+
+/// A file's bytes ("" where it cannot be read).
+inline std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
 
 }  // namespace gps::test

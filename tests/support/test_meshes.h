@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
@@ -10,6 +11,21 @@
 #include "tests/support/random_spd.h"
 
 namespace gps::test {
+
+/// An (n × m)-quad grid of unit quads in z = 0, vertex j (n + 1) + i at (i, j), faces facing +z, the
+/// covariance `variance`·I everywhere; messages name it `source`.
+inline CovarianceMesh flat_grid(int n, int m, double variance, const std::string& source = "mesh") {
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= n; ++i) p.emplace_back(i, j, 0);
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      faces.push_back({a, a + 1, a + n + 2, a + n + 1});
+    }
+  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), variance * Mat3::Identity()), faces, source);
+}
 
 /// An (n × m)-quad grid of unit quads, vertex j (n + 1) + i at (i, j), with a gentle bump in z unless
 /// `flat`; faces facing +z; covariance sigma²·I everywhere.
