@@ -15,6 +15,7 @@
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/samples.h"
 #include "tests/support/gl_fixture.h"
+#include "tests/support/settled_target_points.h"
 #include "tests/support/temp_dir.h"
 #include "ui/editing/selection.h"
 #include "ui/display/hidden_view.h"
@@ -25,6 +26,7 @@ namespace gps {
 namespace {
 
 using ShownSurfaceTest = test::GlTest;
+using test::settle;
 
 // The cube's x ≥ 0 half, cut at x = 0: the mirror modifier's mesh.
 CovarianceMesh half_cube() {
@@ -100,19 +102,6 @@ TEST_F(ShownSurfaceTest, APreviewStandsInForTheDocumentUntilCleared) {
   shown.clear_preview();
   EXPECT_EQ(&shown.edited(document), &document);
   EXPECT_TRUE(shown.preview_selection().empty());
-}
-
-// Updates the layer a frame at a time (the clock moving past the settle time) until its distances are
-// of the surface as it is, or 20 s went by.
-void settle(TargetPointsLayer& layer, const ShownSurface& shown, const CovarianceMesh& document, TargetPointsView& view,
-            TargetPointsLayer::Clock::time_point& now) {
-  for (int frame = 0; frame < 2000; ++frame) {
-    layer.update(shown, document, PlanOptions{}, view, now);
-    if (view.count > 0 && !view.measuring) return;
-    now += std::chrono::milliseconds(200);
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  FAIL() << "the target points were not measured";
 }
 
 // The target points follow the shown surface's revisions: measured once loaded, and again after an

@@ -4,12 +4,10 @@
 // they are hidden too.
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <thread>
-
 #include "core/io/mesh_io.h"
 #include "core/modelling/samples.h"
 #include "tests/support/gl_fixture.h"
+#include "tests/support/settled_target_points.h"
 #include "tests/support/temp_dir.h"
 #include "ui/display/viewport_frame.h"
 
@@ -63,25 +61,14 @@ TEST_F(ViewportFrameTest, AnUnchangedFrameKeepsItsTargetAndAChangeIsDrawn) {
   EXPECT_EQ(view.frame.target()->width(), kWidth + 1);
 }
 
-// Updates the layer until its distances are measured (as the editor's frames do), or fails.
-void measure(TargetPointsLayer& layer, const ShownSurface& shown, const CovarianceMesh& mesh, TargetPointsView& view) {
-  auto now = TargetPointsLayer::Clock::now();
-  for (int frame = 0; frame < 2000; ++frame) {
-    layer.update(shown, mesh, PlanOptions{}, view, now);
-    if (view.count > 0 && !view.measuring) return;
-    now += std::chrono::milliseconds(200);
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  FAIL() << "the target points were not measured";
-}
-
 TEST_F(ViewportFrameTest, TargetPointsAreDrawnEveryFrameAndOnceMoreWhenHidden) {
   const test::TempDir dir;
   const CovarianceMesh cube = make_sample("cube");
   write_mesh(dir.file("target.ply"), cube);
   View view(cube);
   view.points.points().load(dir.file("target.ply"));
-  measure(view.points, view.shown, cube, view.target_view);
+  auto now = TargetPointsLayer::Clock::now();
+  test::settle(view.points, view.shown, cube, view.target_view, now);
   ASSERT_TRUE(view.points.draws(view.target_view));
   EXPECT_EQ(view.frames(5), 0);
   const Image with_points = view.frame.target()->read(0);
