@@ -104,7 +104,6 @@ TEST(AffineTransform, AboutKeepsThePivotAndFromRowsReadsRowMajor) {
   EXPECT_EQ(rows.translation, Vec3(4, 8, 11));
 }
 
-// The volume the faces enclose, positive where they are oriented outward.
 // A mirror (negative determinant) reverses the faces with the positions, as Blender does, so that
 // the surface stays outward: the signed volume keeps its sign, here its value too.
 TEST(AffineTransform, AMirrorKeepsTheSurfaceOutward) {

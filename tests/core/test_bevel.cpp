@@ -38,7 +38,6 @@ bool closed_and_oriented(const CovarianceMesh& mesh) {
   return true;
 }
 
-/// The volume the faces enclose, positive where they are oriented outward.
 bool all_triangles(const CovarianceMesh& mesh) {
   for (const auto& face : arrays_of(mesh).faces)
     if (face.size() != 3) return false;

@@ -150,8 +150,6 @@ int euler_characteristic(const CovarianceMesh& m) {
   return a.n_vertices() - int(edges.size()) + a.n_faces();
 }
 
-// The volume the faces enclose, fanned into triangles from each face's first corner (positive when
-// they face outward).
 // Two polygons of n and m corners on circles of radius 1 at z = 0 (facing down) and z = 1 (facing
 // up; turned by `twist` radians); with `fans`, each a fan of triangles around a centre vertex
 // (the last two vertices). Vertices 0..n−1 are the lower rim, n..n+m−1 the upper.

@@ -50,7 +50,6 @@ LoopedShape looped_shape_of(const CovarianceMesh& mesh) {
   return s;
 }
 
-/// A flat n × m grid of unit quads in the xy-plane (vertex j·(n+1) + i at (i, j)), covariance 0.01·I.
 void expect_unchanged(const CovarianceMesh& mesh, const MeshArrays& before) {
   const MeshArrays after = arrays_of(mesh);
   EXPECT_EQ(after.means, before.means);

@@ -18,7 +18,6 @@ using test::shape_of;
 
 using test::error_of;
 
-/// Counts of a mesh and whether its orientation is consistent (every directed edge once).
 void expect_same(const MeshArrays& x, const MeshArrays& y) {
   EXPECT_EQ(x.means, y.means);
   EXPECT_EQ(x.covariances, y.covariances);

@@ -31,7 +31,6 @@ Holed with_hole(const CovarianceMesh& mesh, const std::vector<int>& faces) {
   return h;
 }
 
-// A flat (n × m)-quad grid of unit squares in the xy-plane.
 TEST(GridFill, TheCubesTopIsOneQuadAgain) {
   const CovarianceMesh cube = make_sample("cube");
   const Holed open = with_hole(cube, {1});  // the +z face 4 5 6 7

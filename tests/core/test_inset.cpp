@@ -31,7 +31,6 @@ std::pair<bool, int> orientation_and_boundary(const CovarianceMesh& mesh) {
   return {once, boundary};
 }
 
-/// A flat n × m grid of unit quads in the xy-plane (normal +z), covariance 0.01·I.
 /// Distance from point p to the line through a and b.
 double distance_to_line(const Vec3& p, const Vec3& a, const Vec3& b) {
   return (p - a).cross(b - a).norm() / (b - a).norm();
