@@ -30,17 +30,12 @@ inline CovarianceMesh flat_grid(int n, int m, double variance, const std::string
 /// An (n × m)-quad grid of unit quads, vertex j (n + 1) + i at (i, j), with a gentle bump in z unless
 /// `flat`; faces facing +z; covariance sigma²·I everywhere.
 inline CovarianceMesh grid_mesh(int n, int m, double sigma = 0.3, bool flat = false) {
-  std::vector<Vec3> p;
-  std::vector<std::vector<int>> faces;
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= n; ++i)
-      p.emplace_back(i, j, flat ? 0.0 : 0.3 * std::sin(0.7 * i) * std::cos(0.5 * j) + 0.05 * i * j);
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      faces.push_back({a, a + 1, a + n + 2, a + n + 1});
-    }
-  return make_covariance_mesh(p, std::vector<Mat3>(p.size(), sigma * sigma * Mat3::Identity()), faces, "grid");
+  CovarianceMesh mesh = flat_grid(n, m, sigma * sigma, "grid");
+  if (!flat)
+    for (int j = 0; j <= m; ++j)
+      for (int i = 0; i <= n; ++i)
+        mesh.set_mean(size_t(j * (n + 1) + i), Vec3(i, j, 0.3 * std::sin(0.7 * i) * std::cos(0.5 * j) + 0.05 * i * j));
+  return mesh;
 }
 
 /// The unit cube, 8 vertices and 6 outward quads.
