@@ -226,6 +226,30 @@ PositionBits bits_of(const Vec3& p) {
            std::bit_cast<uint64_t>(p.z() + 0.0)}};
 }
 
+// A .glb's chunks (glTF 2.0 §4.4): the JSON chunk, then at most a BIN chunk, each inside the file. tinygltf
+// checks the BIN chunk's length without its 8-byte header, so a chunk that claims those bytes is refused here.
+void check_glb_chunks(const std::string& data) {
+  const auto word = [&](size_t at) {
+    uint32_t w;
+    std::memcpy(&w, data.data() + at, 4);
+    return uint64_t(w);
+  };
+  if (data.size() < 20)
+    throw Error("is a truncated .glb (" + std::to_string(data.size()) + " bytes, with its JSON chunk's header 20)");
+  const uint64_t json_end = 20 + word(12);
+  if (json_end > data.size())
+    throw Error("is a truncated .glb (its JSON chunk ends at byte " + std::to_string(json_end) + " of " +
+                std::to_string(data.size()) + ")");
+  if (json_end == data.size()) return;
+  if (json_end + 8 > data.size())
+    throw Error("is a truncated .glb (" + std::to_string(data.size() - json_end) +
+                " bytes after its JSON chunk, too few for a chunk's header)");
+  const uint64_t bin_end = json_end + 8 + word(json_end);
+  if (bin_end > data.size())
+    throw Error("is a truncated .glb (its BIN chunk ends at byte " + std::to_string(bin_end) + " of " +
+                std::to_string(data.size()) + ")");
+}
+
 // The file's model; tinygltf's warnings, a line each, in `warnings`.
 tinygltf::Model load_model(const std::string& data, const std::string& base_dir, std::vector<std::string>& warnings) {
   if (data.size() > UINT_MAX) throw Error("is larger than tinygltf reads (4 GiB)");
@@ -239,11 +263,13 @@ tinygltf::Model load_model(const std::string& data, const std::string& base_dir,
   bool loaded = false;
   try {
     const bool binary = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
-    if (binary)
+    if (binary) {
+      check_glb_chunks(data);
       loaded = loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
                                            unsigned(data.size()), base_dir);
-    else
+    } else {
       loaded = loader.LoadASCIIFromString(&model, &err, &warn, data.data(), unsigned(data.size()), base_dir);
+    }
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {

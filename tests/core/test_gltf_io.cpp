@@ -154,10 +154,11 @@ struct HandMade {
     j["meshes"][0]["primitives"][0]["attributes"]["_COVARIANCE"] = j["accessors"].size() - 1;
   }
 
-  // The .glb of it: header, JSON chunk (padded with spaces), BIN chunk (padded with zeros).
-  std::string glb() const {
+  // The .glb of it: header, JSON chunk (padded with spaces), BIN chunk (padded with zeros). The BIN chunk and
+  // the buffer may claim `overclaimed` bytes more than the chunk holds.
+  std::string glb(uint32_t overclaimed = 0) const {
     json with_buffer = j;
-    with_buffer["buffers"] = json::array({{{"byteLength", bin.size()}}});
+    with_buffer["buffers"] = json::array({{{"byteLength", bin.size() + overclaimed}}});
     std::string text = with_buffer.dump();
     while (text.size() % 4) text.push_back(' ');
     std::string out = "glTF";
@@ -166,7 +167,7 @@ struct HandMade {
     word(uint32_t(12 + 8 + text.size() + 8 + bin.size()));
     word(uint32_t(text.size()));
     out += "JSON" + text;
-    word(uint32_t(bin.size()));
+    word(uint32_t(bin.size() + overclaimed));
     out += std::string("BIN\0", 4) + bin;
     return out;
   }
@@ -368,6 +369,16 @@ TEST(GltfIo, MalformedFilesAreRefusedInOneLineNamingFileAndElement) {
   const std::string glb = cube.glb();
   expect_refused(dir.write("cut.glb", glb.substr(0, glb.size() - 10)), "truncated");
   expect_refused(dir.write("head.glb", glb.substr(0, 7)), "truncated");
+  // A BIN chunk that claims its own header's bytes past the end of the file (as many as tinygltf would read).
+  for (const uint32_t over : {4u, 8u}) {
+    const std::string overclaiming = cube.glb(over);
+    expect_refused(dir.write("over.glb", overclaiming),
+                   "its BIN chunk ends at byte " + std::to_string(overclaiming.size() + over));
+  }
+  std::string no_room = glb.substr(0, glb.size() - cube.bin.size() - 4);
+  const uint32_t length = uint32_t(no_room.size());
+  std::memcpy(no_room.data() + 8, &length, 4);
+  expect_refused(dir.write("room.glb", no_room), "4 bytes after its JSON chunk, too few for a chunk's header");
   expect_refused(dir.write("junk.gltf", "not json"), "neither a .glb");
   expect_refused(dir.write("bad.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [ }"), "bad.gltf: ");
 
