@@ -52,6 +52,14 @@ Shape cone_shape(int sides, double radius, double apex, double base, bool closed
   return s;
 }
 
+Shape polygon_shape(int sides, double radius) {
+  Shape s;
+  add_ring(s, sides, radius, 0.0);
+  s.faces.emplace_back(size_t(sides));
+  for (int k = 0; k < sides; ++k) s.faces[0][size_t(k)] = k;
+  return s;
+}
+
 Shape cube_sphere_shape(int m) {
   Shape s;
   std::map<std::array<int, 3>, int> index;

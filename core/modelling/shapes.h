@@ -25,6 +25,9 @@ Shape cylinder_shape(int sides, int rings, double radius, double bottom, double 
 /// `sides`-gon base.
 Shape cone_shape(int sides, double radius, double apex, double base, bool closed);
 
+/// A regular `sides`-gon of radius `radius` around the y axis in the plane y = 0: one face.
+Shape polygon_shape(int sides, double radius);
+
 /// A cube whose faces are m×m grids of quads, projected to the unit sphere (8 valence-3 vertices).
 Shape cube_sphere_shape(int m);
 
