@@ -14,6 +14,7 @@
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/sanitized_build.h"
 
 namespace gps {
 namespace {
@@ -28,7 +29,7 @@ struct Case {
 
 std::vector<Case> cases() {
   std::vector<Case> out;
-  for (int n = 3; n <= 16; ++n) {
+  for (const int n : test::valences(3, 16)) {
     const CovarianceMesh bipyramid = with_random_covariances(test::bipyramid_mesh(n), unsigned(n));
     out.push_back({"bipyramid " + std::to_string(n) + " (Catmull-Clark)", bipyramid, Scheme::catmull_clark});
     out.push_back({"bipyramid " + std::to_string(n) + " (Loop)", bipyramid, Scheme::loop});
@@ -81,12 +82,13 @@ TEST(LimitNormals, EqualTheEvaluatorsAtEveryReferenceVertex) {
 // boundary (O(h): ÷4). Extraordinary vertices, whose fans converge only as fast as their
 // subdominant eigenvalues let them, are ExactPlans.NormalsAreDefinedAtExtraordinaryVertices'. The
 // needle and the disc of cone-concave and cone-plateau are narrower than a fan six levels down,
-// where these differences have not begun to converge; they are in the test above. Of the bipyramids,
-// whose regular vertices are alike six levels down, those of valences 3, 4, 5, 8, 12 and 16.
+// where these differences have not begun to converge; they are in the test above. The pawn, six levels
+// down, is most of this test's arithmetic: under ASan its regular vertices are left to the plain build.
 bool refined_here(const std::string& name) {
-  for (const char* left_out : {"concave", "plateau", "bipyramid 6 ", "bipyramid 7 ", "bipyramid 9 ", "bipyramid 10 ",
-                               "bipyramid 11 ", "bipyramid 13 ", "bipyramid 14 ", "bipyramid 15 "})
-    if (name.find(left_out) != std::string::npos) return false;
+  if (name.find("concave") != std::string::npos || name.find("plateau") != std::string::npos) return false;
+#ifdef GPS_SANITIZED
+  if (name == "pawn") return false;
+#endif
   return true;
 }
 
