@@ -128,7 +128,7 @@ int EditorApp::run() {
 
 bool EditorApp::script_finished() {
   const bool scripted = script_ || !options_.screenshot.empty() || !options_.save.empty();
-  if (!scripted || (script_ && !script_->done()) || job_dialog_.running() || layout_frames_ > 0) return false;
+  if (!scripted || (script_ && !script_->done()) || mesh_jobs_.running() || layout_frames_ > 0) return false;
   if (view_.target.shown && target_layer_->points().busy()) return false;  // the target's distances as they settle
   // Two more frames after the last event: auto-sized ImGui windows settle on their second frame.
   if (++finishing_frames_ < 3) return false;
@@ -144,9 +144,9 @@ void EditorApp::frame() {
   // A replay waits for a background job (simplify, fit), so that it does not depend on its speed.
   // The first frames lay the panels out (the first view is framed beside them) and take no input.
   const bool layout = layout_frames_ > 0;
-  const std::vector<InputEvent> events = layout || (script_ && job_dialog_.running()) ? std::vector<InputEvent>{}
-                                         : script_                                    ? script_->next_frame()
-                                                                                      : queue_.take_frame();
+  const std::vector<InputEvent> events = layout || (script_ && mesh_jobs_.running()) ? std::vector<InputEvent>{}
+                                         : script_                                   ? script_->next_frame()
+                                                                                     : queue_.take_frame();
   if (recorder_ && !layout) recorder_->record_frame(events);
   for (const InputEvent& e : events) input_.apply(e);
 

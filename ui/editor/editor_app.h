@@ -5,8 +5,8 @@
 // the gizmo starts its drag), editor_actions.cpp (open, save, undo, the unsaved-changes prompt),
 // editor_commands.cpp (the command table: keys, menus, help), editor_select_menu.cpp (the Select
 // menu), editor_hide.cpp (hide and reveal), editor_modelling.cpp (the Mesh menu's operations),
-// editor_modal_tools.cpp (the modal tools started and handed the events), editor_mesh_jobs.cpp (File →
-// Simplify… and Fit to… in the background) and editor_target_points.cpp (a fit's target as points).
+// editor_modal_tools.cpp (the modal tools started and handed the events) and editor_target_points.cpp
+// (a fit's target as points).
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -31,7 +31,7 @@
 #include "ui/input/glfw_input.h"
 #include "ui/input/input_events.h"
 #include "ui/panels/inspector_panel.h"
-#include "ui/panels/job_dialog.h"
+#include "ui/panels/mesh_jobs.h"
 #include "ui/editing/merge_distance.h"
 #include "ui/settings/recent_files.h"
 #include "ui/panels/repair_prompt.h"
@@ -141,9 +141,7 @@ private:
   void remember_mirror();                           // kept for the document's file (the View settings)
   void apply_mirror();                              // the document replaced by its mirror, one undo step
   void draw_mirror_items();
-  // Long computations in the background (editor_mesh_jobs.cpp).
-  void open_simplify_dialog();
-  void open_fit_dialog();
+  // File → Simplify… and Fit to…: a job's result applied as one undo step (editor_modelling.cpp).
   void draw_job_dialog();
   // The target points over the surface (editor_target_points.cpp).
   void build_target_point_commands();
@@ -242,20 +240,7 @@ private:
   // The last operation a tool made that F9 can adjust, while its step is the document's last.
   std::optional<AdjustableOperation> adjustable_;
   bool show_adjust_last_ = false;
-  // File → Simplify… and Fit to…: the dialog, its job and the settings each last had.
-  struct SimplifySettings {
-    int vertices = 0;  // 0: a tenth of the mesh's
-    double bias = 0.05;
-  };
-  SimplifySettings simplify_settings_;
-  struct FitSettings {
-    std::string target;  // the dense mesh
-    int iterations = FitOptions().iterations;
-    bool plain = false;
-  };
-  FitSettings fit_settings_;
-  JobDialog job_dialog_;
-  bool job_is_fit_ = false;                        // the dialog open is Fit to…: once applied, its target is shown
+  MeshJobs mesh_jobs_;                             // File → Simplify… and Fit to…
   std::string popup_request_;                      // a popup menu (Delete, Merge, Add) a key asked for
   double merge_distance_ = kDefaultMergeDistance;  // the Merge menu's By distance (of the diagonal)
   std::string last_summary_;                       // what the last operation did

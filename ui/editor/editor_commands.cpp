@@ -34,8 +34,13 @@ void EditorApp::build_commands() {
          }});
   t.add({"File", "Save", {key(GLFW_KEY_S, true)}, [this] { save(); }, always, nullptr, nullptr, true});
   t.add({"File", "Save As...", {key(GLFW_KEY_S, true, true)}, [this] { save_to(""); }});
-  t.add({"File", "Simplify...", {key(GLFW_KEY_D, true, true)}, [this] { open_simplify_dialog(); }});
-  t.add({"File", "Fit to...", {key(GLFW_KEY_F, true, true)}, [this] { open_fit_dialog(); }});
+  t.add({"File", "Simplify...", {key(GLFW_KEY_D, true, true)}, [this] {
+           if (!modal_active()) mesh_jobs_.open_simplify(std::make_shared<const CovarianceMesh>(document_.mesh()));
+         }});
+  t.add({"File", "Fit to...", {key(GLFW_KEY_F, true, true)}, [this] {
+           if (!modal_active())
+             mesh_jobs_.open_fit(std::make_shared<const CovarianceMesh>(document_.mesh()), document_.source_path());
+         }});
   t.add({"File", "Screenshot (PNG in the current folder)", {key(GLFW_KEY_F12)}, [this] {
            char name[64];
            const std::time_t now = std::time(nullptr);

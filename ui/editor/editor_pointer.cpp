@@ -82,7 +82,7 @@ void EditorApp::handle_event(const InputEvent& e) {
   deselect_hidden();  // what a tool or a menu selected last, before anything acts on the selection
   // The modal tool running takes the events first (editor_modal_tools.cpp).
   if (modal_event(e)) return;
-  if (job_dialog_.is_open() || repair_prompt_.is_open()) {  // their keys are Dear ImGui's; a mesh dropped now waits
+  if (mesh_jobs_.is_open() || repair_prompt_.is_open()) {  // their keys are Dear ImGui's; a mesh dropped now waits
     if (e.type == InputEvent::Type::drop) set_status("close the dialog first", true);
     if (e.type == InputEvent::Type::key_press || e.type == InputEvent::Type::drop) return;
   }
