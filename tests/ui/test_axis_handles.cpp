@@ -7,18 +7,13 @@
 #include <Eigen/Geometry>
 
 #include "core/modelling/samples.h"
+#include "tests/support/view_pixels.h"
 #include "view/picking.h"
 
 namespace gps {
 namespace {
 
-glm::vec3 to_glm(const Vec3& v) { return {float(v.x()), float(v.y()), float(v.z())}; }
-
-glm::vec2 pixel_of(const Viewport& view, const Vec3& world) {
-  const auto p = project_to_pixel(view.camera, view.width, view.height, to_glm(world));
-  EXPECT_TRUE(p.has_value());
-  return glm::vec2(*p) - glm::vec2(0.5f);  // the pixel whose centre it is (pixel_ray's convention)
-}
+using test::pixel_of;
 
 // A cube whose vertex 0 carries an anisotropic, rotated Gaussian large enough to see.
 CovarianceMesh test_mesh() {

@@ -22,6 +22,7 @@
 #include "core/fitting/limit_fit.h"
 #include "core/plans/surface_replanner.h"
 #include "ui/editing/axis_handles.h"
+#include "ui/editing/cursor_3d.h"
 #include "ui/input/command_table.h"
 #include "ui/editing/edit_reach.h"
 #include "ui/editor/editor.h"
@@ -234,9 +235,7 @@ private:
   // the shown surface's).
   std::unique_ptr<ModalTool> tool_;
   TransformPivot transform_pivot_ = TransformPivot::median;
-  // The 3D cursor: the pivot TransformPivot::cursor and, once placed, where new primitives go.
-  Vec3 cursor_point_ = Vec3::Zero();
-  bool cursor_placed_ = false;
+  Cursor3D cursor_;
   // The last operation a tool made that F9 can adjust, while its step is the document's last.
   std::optional<AdjustableOperation> adjustable_;
   bool show_adjust_last_ = false;

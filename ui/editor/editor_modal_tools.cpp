@@ -16,7 +16,7 @@ ToolContext EditorApp::tool_context() {
   c.ctrl = input_.ctrl();
   c.snap = view_.snap;
   c.orientation = view_.transform_orientation == 1 ? TransformOrientation::normal : TransformOrientation::global;
-  c.cursor_point = cursor_point_;
+  c.cursor_point = cursor_.point;
   c.surface_at = [this](glm::vec2 pixel) { return surface_at(pixel); };
   c.adjustable = [this](AdjustableOperation operation) {
     operation.step = document_.last_step();

@@ -292,7 +292,7 @@ void EditorApp::draw_add_items() {
   for (const std::string& name : primitive_names()) {
     if (!ImGui::MenuItem(name.c_str())) continue;
     PrimitivePlacement at = primitive_placement(document_.mesh(), selection_.vertices());
-    if (cursor_placed_) at.center = cursor_point_;
+    if (cursor_.placed) at.center = cursor_.point;
     run_operation("add " + name, [&](const CovarianceMesh& m) {
       return add_primitive(m, *primitive_named(name), at.center, at.size);
     });
@@ -384,7 +384,7 @@ void EditorApp::draw_modelling_overlay() {
     draw_similar_items();
     ImGui::EndPopup();
   }
-  if (cursor_placed_) draw_cursor_overlay(*ImGui::GetBackgroundDrawList(), viewport(), cursor_point_);
+  if (cursor_.placed) draw_cursor_overlay(*ImGui::GetBackgroundDrawList(), viewport(), cursor_.point);
   if (tool_) tool_->draw_overlay(*ImGui::GetBackgroundDrawList(), tool_context());
 }
 

@@ -2,9 +2,6 @@
 // (Shift+right click on the surface, to the selection, to the origin): the commands that set them.
 #include <GLFW/glfw3.h>
 
-#include <cmath>
-#include <cstdio>
-
 #include "render/pipeline/surface_point.h"
 #include "ui/editor/editor_app.h"
 
@@ -59,13 +56,7 @@ void EditorApp::build_snapping_commands() {
          }});
 }
 
-void EditorApp::set_cursor(const Vec3& point, const std::string& how) {
-  cursor_point_ = point;
-  cursor_placed_ = true;
-  char where[160];
-  std::snprintf(where, sizeof where, "3D cursor %s (%.4g, %.4g, %.4g)", how.c_str(), point.x(), point.y(), point.z());
-  set_status(where, false);
-}
+void EditorApp::set_cursor(const Vec3& point, const std::string& how) { set_status(cursor_.place(point, how), false); }
 
 std::optional<Vec3> EditorApp::surface_at(glm::vec2 pixel) const {
   const RenderTarget* target = viewport_->target();
@@ -78,16 +69,10 @@ std::optional<Vec3> EditorApp::surface_at(glm::vec2 pixel) const {
 }
 
 // Where the pixel shows the surface, on it (read back from the last frame's position AOV); elsewhere
-// where its ray meets the plane through the cursor facing the view, as Blender keeps the cursor's depth.
+// at the cursor's depth, as Blender keeps it.
 void EditorApp::place_cursor(glm::vec2 pixel) {
-  const Viewport v = viewport();
   if (const auto hit = surface_at(pixel)) return set_cursor(*hit, "on the surface at");
-  const Ray ray = pixel_ray(v.camera, v.width, v.height, pixel);
-  const Vec3 origin = to_vec(ray.origin), direction = to_vec(ray.direction);
-  const Vec3 facing = (to_vec(v.camera.target) - to_vec(v.camera.eye_double())).normalized();
-  const double along = direction.dot(facing);
-  if (!(std::abs(along) > 1e-9)) return;
-  set_cursor(origin + direction * ((cursor_point_ - origin).dot(facing) / along), "at");
+  if (const auto at = cursor_.at_its_depth(viewport(), pixel)) set_cursor(*at, "at");
 }
 
 }  // namespace gps
