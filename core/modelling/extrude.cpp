@@ -39,19 +39,24 @@ std::vector<int> move_region(MeshArrays& a, const FaceRegion& r, const Vec3& shi
   return selection;
 }
 
-Modelled extruded_faces(const CovarianceMesh& mesh, MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
+/// Moves the region by `shift` and joins it to where it was, in `a`: the selection, with `summary` saying
+/// what was added.
+std::vector<int> extrude_region(MeshArrays& a, const FaceRegion& r, const Vec3& shift, std::string& summary) {
   if (r.has_closed_part) throw Error(kClosedPart);
   const int n_vertices = a.n_vertices(), n_faces = a.n_faces();
   const bool triangles = all_triangles(a);
-  Modelled out;
-  out.selection = move_region(a, r, shift);
+  std::vector<int> selection = move_region(a, r, shift);
   if (triangles) split_new_quads(a, n_faces);
-  out.mesh = build_mesh(a, mesh);
-  out.vertex_origin = vertex_origin(a);
-  out.summary = "extruded " + count_of(r.faces.size(), "face", "faces") + ": " +
-                count_of(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
-                count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
-  return out;
+  summary = "extruded " + count_of(r.faces.size(), "face", "faces") + ": " +
+            count_of(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
+            count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
+  return selection;
+}
+
+Modelled extruded_faces(const CovarianceMesh& mesh, MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
+  std::string summary;
+  std::vector<int> selection = extrude_region(a, r, shift, summary);
+  return modelled(mesh, a, std::move(selection), std::move(summary));
 }
 
 /// Extrudes boundary edges given as directed edges of their faces (unique).
@@ -199,9 +204,8 @@ std::vector<int> detach_region(MeshArrays& a, const FaceRegion& r, const std::ve
   return added;
 }
 
-Modelled extrude_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double distance) {
+std::vector<int> extrude_faces_in(MeshArrays& a, const std::vector<int>& faces, double distance, std::string& summary) {
   if (!std::isfinite(distance)) throw Error("distance " + std::to_string(distance) + " is not finite");
-  MeshArrays a = arrays_of(mesh);
   const FaceRegion r = face_region(a, faces);
   if (r.has_closed_part) throw Error(kClosedPart);
   Vec3 normal = Vec3::Zero();
@@ -217,7 +221,14 @@ Modelled extrude_faces(const CovarianceMesh& mesh, const std::vector<int>& faces
       throw Error("the faces' normals cancel out, so there is no direction to extrude along");
     shift = distance * normal.normalized();
   }
-  return extruded_faces(mesh, a, r, shift);
+  return extrude_region(a, r, shift, summary);
+}
+
+Modelled extrude_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double distance) {
+  MeshArrays a = arrays_of(mesh);
+  std::string summary;
+  std::vector<int> selection = extrude_faces_in(a, faces, distance, summary);
+  return modelled(mesh, a, std::move(selection), std::move(summary));
 }
 
 Modelled extrude_faces_by(const CovarianceMesh& mesh, const std::vector<int>& faces, const Vec3& offset) {

@@ -7,6 +7,7 @@
 // triangles only, each quad of the band is split into two triangles (the diagonal from its first
 // corner), so that the mesh stays a triangle mesh, subdivided by Loop as before.
 #include <array>
+#include <string>
 #include <vector>
 
 #include "core/modelling/mesh_arrays.h"
@@ -54,6 +55,10 @@ std::vector<int> detach_region(MeshArrays& arrays, const FaceRegion& region, con
 /// is allowed (the editor extrudes, then drags). Refuses a region that is the whole of a closed part
 /// (nothing would be left to join to) and a non-finite distance. Selection: the region's vertices.
 Modelled extrude_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double distance);
+/// extrude_faces made in `arrays` (a run of steps on arrays, core/modelling/operation_list.h): the
+/// selection, with `summary` saying what was added.
+std::vector<int> extrude_faces_in(MeshArrays& arrays, const std::vector<int>& faces, double distance,
+                                  std::string& summary);
 
 /// Extrudes the region of `faces` and moves it by `offset` (the editor's E in face mode): as
 /// extrude_faces with distance 0, then the region's vertices moved. Refuses as extrude_faces does and

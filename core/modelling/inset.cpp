@@ -56,10 +56,9 @@ Gaussian inner_copy(const MeshArrays& a, const FaceRegion::Sector& s, double thi
 
 }  // namespace
 
-Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double thickness) {
+std::vector<int> inset_faces_in(MeshArrays& a, const std::vector<int>& faces, double thickness, std::string& summary) {
   if (!(std::isfinite(thickness) && thickness > 0))
     throw Error("thickness " + short_number(thickness) + " is not a positive number");
-  MeshArrays a = arrays_of(mesh);
   const FaceRegion r = face_region(a, faces);
   if (r.has_closed_part) throw Error("insetting every face of a closed part would leave no border to inset from");
 
@@ -75,8 +74,7 @@ Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, 
     old_faces.push_back(a.faces[size_t(f)]);
   }
   const int n_faces = a.n_faces();
-  Modelled out;
-  out.selection = detach_region(a, r, copies);
+  std::vector<int> selection = detach_region(a, r, copies);
   for (size_t i = 0; i < r.faces.size(); ++i) {
     const int f = r.faces[i];
     const auto& old_face = old_faces[i];
@@ -92,12 +90,17 @@ Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, 
       throw Error("a thickness of " + short_number(thickness) + " would turn face " + std::to_string(f) +
                   " inside out");
   }
-  out.mesh = build_mesh(a, mesh);
-  out.vertex_origin = vertex_origin(a);
-  out.summary = "inset " + count_of(r.faces.size(), "face", "faces") + ": " +
-                count_of(out.selection.size(), "vertex", "vertices") + ", " +
-                count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
-  return out;
+  summary = "inset " + count_of(r.faces.size(), "face", "faces") + ": " +
+            count_of(selection.size(), "vertex", "vertices") + ", " +
+            count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
+  return selection;
+}
+
+Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double thickness) {
+  MeshArrays a = arrays_of(mesh);
+  std::string summary;
+  std::vector<int> selection = inset_faces_in(a, faces, thickness, summary);
+  return modelled(mesh, a, std::move(selection), std::move(summary));
 }
 
 }  // namespace gps

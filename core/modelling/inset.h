@@ -21,5 +21,9 @@ namespace gps {
 /// positive and finite, one that would carry a vertex past its faces' centre or turn a face inside out,
 /// and a region that is the whole of a closed part (it has no border). Selection: the inner vertices.
 Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double thickness);
+/// inset_faces made in `arrays` (a run of steps on arrays, core/modelling/operation_list.h): the
+/// selection, with `summary` saying what was added.
+std::vector<int> inset_faces_in(MeshArrays& arrays, const std::vector<int>& faces, double thickness,
+                                std::string& summary);
 
 }  // namespace gps

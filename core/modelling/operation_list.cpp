@@ -359,7 +359,8 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
     if (std::string(what) == "faces") {
       const std::vector<int> faces = f.indices("faces");
       const double distance = f.number("distance");
-      return [=](const CovarianceMesh& m) { return extrude_faces(m, faces, distance); };
+      append = [=](MeshArrays& a, std::string& summary) { return extrude_faces_in(a, faces, distance, summary); };
+      return nullptr;
     }
     const Vec3 offset = f.vector3("offset");
     if (std::string(what) == "edges") {
@@ -373,7 +374,8 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
   if (op == "inset") {
     const std::vector<int> faces = f.indices("faces");
     const double thickness = f.number("thickness");
-    return [=](const CovarianceMesh& m) { return inset_faces(m, faces, thickness); };
+    append = [=](MeshArrays& a, std::string& summary) { return inset_faces_in(a, faces, thickness, summary); };
+    return nullptr;
   }
   if (op == "delete" || op == "dissolve") {
     const bool del = op == "delete";
@@ -546,8 +548,9 @@ std::vector<std::string> OperationList::names() const {
 
 Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::string>* summaries) const {
   // Each step's result is made in place (a mesh has no move, so an assignment would copy it); a run of
-  // additions appends to the arrays of the mesh and builds the mesh once after its last; a step on
-  // Gaussians or sharpness changes the list's own copy of the mesh where it stands.
+  // steps made on arrays (additions, extrusions and insets of faces) changes the arrays of the mesh and
+  // builds the mesh once after its last; a step on Gaussians or sharpness changes the list's own copy of
+  // the mesh where it stands.
   std::unique_ptr<Modelled> current;
   std::optional<MeshArrays> arrays;
   const auto mesh_now = [&]() -> const CovarianceMesh& { return current ? current->mesh : mesh; };

@@ -35,8 +35,9 @@ private:
   struct Step {
     std::string name;
     std::function<Modelled(const CovarianceMesh&)> run;
-    /// Instead of `run`, for an addition: appends to the arrays of a run of additions (which build
-    /// their mesh once, so that each costs what it adds); returns the selection and sets the summary.
+    /// Instead of `run`, for a step made on arrays (an addition, an extrusion or inset of faces):
+    /// changes the arrays of a run of such steps, which build their mesh and its connectivity once,
+    /// after the last; returns the selection and sets the summary.
     std::function<std::vector<int>(MeshArrays&, std::string&)> append;
     /// Instead of `run`, for an operation on Gaussians or sharpness only: changes the list's own copy
     /// of the mesh in place at the cost of what it changes; returns the selection, sets the summary.

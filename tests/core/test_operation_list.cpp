@@ -11,6 +11,7 @@
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
 #include "core/modelling/grid_fill.h"
+#include "core/modelling/inset.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/operation_list.h"
 #include "core/modelling/primitives.h"
@@ -49,8 +50,9 @@ TEST(OperationList, SameAsTheCallsItNames) {
   EXPECT_EQ(scripted.selection, direct.selection);
 }
 
-// A run of additions builds its mesh once: the same mesh, selection and summaries as adding one at
-// a time, with the creases and corners kept, and a refusal naming the addition that fails.
+// A run of steps made on arrays (additions, extrusions and insets of faces) builds its mesh once: the
+// same mesh, selection and summaries as one step at a time, with the creases and corners kept, and a
+// refusal naming the step that fails.
 TEST(OperationList, ARunOfAdditionsIsTheSameAsOneAtATime) {
   CovarianceMesh cube = make_sample("cube");
   cube.sharpness.set_crease(0, 1, 2.0);
@@ -76,6 +78,43 @@ TEST(OperationList, ARunOfAdditionsIsTheSameAsOneAtATime) {
                   .apply(cube);
             }).rfind("f: ops[1] (add): the result would not be a valid mesh: vertex 16 ", 0),
             0u);
+}
+
+// Extrusions and insets in one run, on quads and on triangles (whose bands are split into triangles),
+// each naming faces of the mesh as the steps before left it: the mesh, selection and summaries of the
+// calls one at a time; a refusal in the middle of the run names its step.
+TEST(OperationList, ARunOfExtrusionsAndInsetsIsTheSameAsOneAtATime) {
+  for (const char* name : {"sphere", "icosphere"}) {
+    const CovarianceMesh start = make_sample(name, 300);
+    const int last = int(start.n_faces()) - 1;
+    const OperationList ops = OperationList::parse(
+        R"([{"op":"extrude","faces":[3,4],"distance":0.1},{"op":"inset","faces":[4],"thickness":0.02},
+            {"op":"extrude","faces":[)" +
+            std::to_string(last + 2) + R"(],"distance":-0.05},{"op":"inset","faces":[0,1,2],"thickness":0.01},
+            {"op":"extrude","faces":[0],"distance":0}])",
+        "ops.json");
+    std::vector<std::string> summaries;
+    const Modelled scripted = ops.apply(start, &summaries);
+    std::vector<Modelled> direct;
+    direct.push_back(extrude_faces(start, {3, 4}, 0.1));
+    direct.push_back(inset_faces(direct.back().mesh, {4}, 0.02));
+    direct.push_back(extrude_faces(direct.back().mesh, {last + 2}, -0.05));
+    direct.push_back(inset_faces(direct.back().mesh, {0, 1, 2}, 0.01));
+    direct.push_back(extrude_faces(direct.back().mesh, {0}, 0.0));
+    expect_same_gaussians_and_faces(scripted.mesh, direct.back().mesh);
+    EXPECT_EQ(scripted.selection, direct.back().selection) << name;
+    ASSERT_EQ(summaries.size(), direct.size()) << name;
+    for (size_t i = 0; i < direct.size(); ++i) EXPECT_EQ(summaries[i], direct[i].summary) << name << " step " << i;
+  }
+  const CovarianceMesh cube = make_sample("cube");
+  EXPECT_EQ(
+      error_of([&] {
+        OperationList::parse(R"([{"op":"extrude","faces":[0],"distance":1},{"op":"inset","faces":[99],
+                                       "thickness":0.1},{"op":"extrude","faces":[1],"distance":1}])",
+                             "f")
+            .apply(cube);
+      }),
+      error_of([&] { inset_faces(extrude_faces(cube, {0}, 1.0).mesh, {99}, 0.1); }).insert(0, "f: ops[1] (inset): "));
 }
 
 TEST(OperationList, IndicesReferToTheMeshAsItStands) {
