@@ -46,6 +46,7 @@ std::vector<int> extrude_region(MeshArrays& a, const FaceRegion& r, const Vec3& 
   const int n_vertices = a.n_vertices(), n_faces = a.n_faces();
   const bool triangles = all_triangles(a);
   std::vector<int> selection = move_region(a, r, shift);
+  check_gaussians(a, selection);  // the vertices moved and copied: the others were checked before
   if (triangles) split_new_quads(a, n_faces);
   summary = "extruded " + count_of(r.faces.size(), "face", "faces") + ": " +
             count_of(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +

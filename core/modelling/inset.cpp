@@ -90,6 +90,7 @@ std::vector<int> inset_faces_in(MeshArrays& a, const std::vector<int>& faces, do
       throw Error("a thickness of " + short_number(thickness) + " would turn face " + std::to_string(f) +
                   " inside out");
   }
+  check_gaussians(a, selection);  // the inner copies: the others were checked before
   summary = "inset " + count_of(r.faces.size(), "face", "faces") + ": " +
             count_of(selection.size(), "vertex", "vertices") + ", " +
             count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";

@@ -99,6 +99,14 @@ CovarianceMesh build_mesh(const MeshArrays& a, const CovarianceMesh& before) {
   }
 }
 
+void check_gaussians(const MeshArrays& a, const std::vector<int>& vertices) {
+  for (const int v : vertices) {
+    std::string why = position_problem(a.means[size_t(v)]);
+    if (why.empty()) why = covariance_problem(a.covariances[size_t(v)]);
+    if (!why.empty()) throw Error("the result would not be a valid mesh: vertex " + std::to_string(v) + " " + why);
+  }
+}
+
 std::vector<int> vertex_origin(const MeshArrays& a) {
   return a.origin.size() == a.means.size() ? a.origin : std::vector<int>{};
 }

@@ -58,6 +58,10 @@ struct Modelled {
 /// build_mesh's mesh, at the cost of what changed, with the vertices' origins where the arrays kept them.
 Modelled modelled(const CovarianceMesh& before, const MeshArrays& arrays, std::vector<int> selection,
                   std::string summary = "");
+/// Throws gps::Error as build_mesh names a Gaussian it refuses ("the result would not be a valid mesh:
+/// vertex 8 has …") for the first of `vertices` (ascending) whose position or covariance has a problem:
+/// an operation that checks the vertices it made or moved is refused as its build would refuse it.
+void check_gaussians(const MeshArrays& arrays, const std::vector<int>& vertices);
 /// The arrays' origins where they are known (one per vertex), else empty.
 std::vector<int> vertex_origin(const MeshArrays& arrays);
 /// The way back: for each of the `n_before` vertices of the mesh before an operation, its index after

@@ -88,14 +88,8 @@ std::vector<int> append_primitive(MeshArrays& a, Primitive primitive, const Vec3
   const double sigma = 0.5 * size * mean_edge_length(s);
   const int offset = a.n_vertices();
   std::vector<int> added;
-  for (const Vec3& p : s.points) {
-    const int v = a.add_vertex({center + size * p, sigma * sigma * Mat3::Identity()});
-    // As build_mesh would name it: the first of the mesh's vertices with a problem is a new one.
-    std::string why = position_problem(a.means[size_t(v)]);
-    if (why.empty()) why = covariance_problem(a.covariances[size_t(v)]);
-    if (!why.empty()) throw Error("the result would not be a valid mesh: vertex " + std::to_string(v) + " " + why);
-    added.push_back(v);
-  }
+  for (const Vec3& p : s.points) added.push_back(a.add_vertex({center + size * p, sigma * sigma * Mat3::Identity()}));
+  check_gaussians(a, added);  // the first of the mesh's vertices with a problem is a new one
   for (auto face : s.faces) {
     for (int& v : face) v += offset;
     a.faces.push_back(std::move(face));

@@ -115,6 +115,17 @@ TEST(OperationList, ARunOfExtrusionsAndInsetsIsTheSameAsOneAtATime) {
             .apply(cube);
       }),
       error_of([&] { inset_faces(extrude_faces(cube, {0}, 1.0).mesh, {99}, 0.1); }).insert(0, "f: ops[1] (inset): "));
+  // A step whose vertices the mesh would refuse (moved past the largest position) is named by its own
+  // index, not by the run's last, with the words the step alone would get.
+  const std::string far = error_of([&] { extrude_faces(extrude_faces(cube, {0}, 1.0).mesh, {1}, 1e200); });
+  EXPECT_NE(far.find("the result would not be a valid mesh: vertex "), std::string::npos) << far;
+  EXPECT_EQ(error_of([&] {
+              OperationList::parse(R"([{"op":"extrude","faces":[0],"distance":1},{"op":"extrude","faces":[1],
+                                       "distance":1e200},{"op":"extrude","faces":[2],"distance":1}])",
+                                   "f")
+                  .apply(cube);
+            }),
+            "f: ops[1] (extrude): " + far);
 }
 
 TEST(OperationList, IndicesReferToTheMeshAsItStands) {
