@@ -1,4 +1,5 @@
-// The editor's actions on the document: open, save, undo and redo, the unsaved-changes prompt.
+// The editor's actions on the document: open, save, undo and redo, the unsaved-changes prompt, and the
+// result of File → Simplify… or Fit to… applied as one undo step.
 #include <imgui.h>
 
 #include <filesystem>
@@ -243,6 +244,18 @@ void EditorApp::handle_browser_result() {
       break;
   }
   after_save_perform_ = false;
+}
+
+void EditorApp::draw_job_dialog() {
+  std::optional<MeshJobs::Applied> applied = mesh_jobs_.draw();
+  if (!applied) return;
+  try {
+    install(applied->made);
+    operation_note(last_summary_, false);
+    if (applied->fit_target) show_target_points(*applied->fit_target);  // how far the fit came, point by point
+  } catch (const Error& e) {
+    operation_note(e.what(), true);
+  }
 }
 
 }  // namespace gps

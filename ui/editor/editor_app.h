@@ -2,11 +2,13 @@
 // The editor's parts and their wiring (private to ui/): the document, what shows it (ui/display/),
 // the tool running (ui/tools/), the selection and the commands; its methods in one file per concept:
 // editor.cpp (frames, drawing, output), editor_pointer.cpp (clicks, boxes, orbit and pan; a press on
-// the gizmo starts its drag), editor_actions.cpp (open, save, undo, the unsaved-changes prompt),
-// editor_commands.cpp (the command table: keys, menus, help), editor_select_menu.cpp (the Select
-// menu), editor_hide.cpp (hide and reveal), editor_modelling.cpp (the Mesh menu's operations),
-// editor_modal_tools.cpp (the modal tools started and handed the events) and editor_target_points.cpp
-// (a fit's target as points).
+// the gizmo starts its drag), editor_actions.cpp (open, save, undo, the unsaved-changes prompt, a
+// Simplify… or Fit to… result applied), editor_commands.cpp (the command table: keys, menus, help),
+// editor_select_menu.cpp (the Select menu), editor_hide.cpp (hide and reveal), editor_modelling.cpp
+// (the Mesh menu's operations), editor_modal_tools.cpp (the modal tools started and handed the
+// events), editor_adjust_last.cpp (F9), editor_snapping.cpp (snapping and the 3D cursor),
+// editor_mirror_modifier.cpp (the mirror modifier) and editor_target_points.cpp (a fit's target as
+// points).
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -142,8 +144,6 @@ private:
   void remember_mirror();                           // kept for the document's file (the View settings)
   void apply_mirror();                              // the document replaced by its mirror, one undo step
   void draw_mirror_items();
-  // File → Simplify… and Fit to…: a job's result applied as one undo step (editor_modelling.cpp).
-  void draw_job_dialog();
   // The target points over the surface (editor_target_points.cpp).
   void build_target_point_commands();
   void show_target_points(const std::string& path);
@@ -170,6 +170,7 @@ private:
   void mesh_replaced();
   void draw_unsaved_prompt();
   void handle_browser_result();
+  void draw_job_dialog();  // File → Simplify… and Fit to…: the result applied as one undo step
   // Frames and output (editor.cpp).
   void frame();
   void draw_ui();

@@ -1,7 +1,6 @@
 // The editor as a modeller: the Mesh menu's operations, each one undo step that replaces the mesh,
-// with its summary or refusal in the status bar and the Inspector, and the result of File → Simplify…
-// or Fit to… applied the same way. The modal tools that follow the mouse are in ui/tools/, started here
-// and run by editor_modal_tools.cpp.
+// with its summary or refusal in the status bar and the Inspector. The modal tools that follow the
+// mouse are in ui/tools/, started here and run by editor_modal_tools.cpp.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -386,18 +385,6 @@ void EditorApp::draw_modelling_overlay() {
   }
   if (cursor_.placed) draw_cursor_overlay(*ImGui::GetBackgroundDrawList(), viewport(), cursor_.point);
   if (tool_) tool_->draw_overlay(*ImGui::GetBackgroundDrawList(), tool_context());
-}
-
-void EditorApp::draw_job_dialog() {
-  std::optional<MeshJobs::Applied> applied = mesh_jobs_.draw();
-  if (!applied) return;
-  try {
-    install(applied->made);
-    operation_note(last_summary_, false);
-    if (applied->fit_target) show_target_points(*applied->fit_target);  // how far the fit came, point by point
-  } catch (const Error& e) {
-    operation_note(e.what(), true);
-  }
 }
 
 }  // namespace gps
