@@ -23,10 +23,10 @@ std::string summary(const std::string& head, size_t faces_removed, size_t vertic
   return parts.empty() ? s : s + " removed";
 }
 
-/// The mesh without the faces marked in `removed` and the vertices left unused. Refuses an empty
-/// result and a vertex at which the remaining faces would form more than one fan.
-Modelled without_faces(const CovarianceMesh& mesh, MeshArrays a, const std::vector<char>& removed,
-                       const std::string& head, bool count_faces) {
+/// Removes from `a` the faces marked in `removed` and the vertices left unused; returns the summary.
+/// Refuses an empty result and a vertex at which the remaining faces would form more than one fan, so
+/// that what it leaves is a mesh build_mesh takes.
+std::string without_faces(MeshArrays& a, const std::vector<char>& removed, const std::string& head, bool count_faces) {
   std::vector<char> touched(size_t(a.n_vertices()), 0);
   size_t faces_removed = 0;
   for (int f = 0; f < a.n_faces(); ++f) {
@@ -60,11 +60,7 @@ Modelled without_faces(const CovarianceMesh& mesh, MeshArrays a, const std::vect
 
   const int n_vertices = a.n_vertices();
   drop_unused_vertices(a);
-  Modelled out;
-  out.mesh = build_mesh(a, mesh);
-  out.vertex_origin = vertex_origin(a);
-  out.summary = summary(head, faces_removed, size_t(n_vertices - a.n_vertices()), count_faces);
-  return out;
+  return summary(head, faces_removed, size_t(n_vertices - a.n_vertices()), count_faces);
 }
 
 /// Checks the edges (in the mesh; interior when `interior`) and returns them once each.
@@ -189,17 +185,16 @@ Modelled merged(const CovarianceMesh& mesh, MeshArrays& a, FaceMerger& merger, c
 
 }  // namespace
 
-Modelled delete_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) {
-  MeshArrays a = arrays_of(mesh);
+std::vector<int> delete_faces_in(MeshArrays& a, const std::vector<int>& faces, std::string& summary) {
   if (faces.empty()) throw Error("no faces are selected");
   const std::vector<int> chosen = sorted_faces(a, faces);
   std::vector<char> removed(size_t(a.n_faces()), 0);
   for (int f : chosen) removed[size_t(f)] = 1;
-  return without_faces(mesh, std::move(a), removed, "deleted " + count_of(chosen.size(), "face", "faces"), false);
+  summary = without_faces(a, removed, "deleted " + count_of(chosen.size(), "face", "faces"), false);
+  return {};
 }
 
-Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
-  MeshArrays a = arrays_of(mesh);
+std::vector<int> delete_vertices_in(MeshArrays& a, const std::vector<int>& vertices, std::string& summary) {
   if (vertices.empty()) throw Error("no vertices are selected");
   const std::vector<int> chosen = sorted_vertices(a, vertices);
   std::vector<char> selected(size_t(a.n_vertices()), 0);
@@ -207,18 +202,45 @@ Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& ver
   std::vector<char> removed(size_t(a.n_faces()), 0);
   for (int f = 0; f < a.n_faces(); ++f)
     for (int v : a.faces[size_t(f)]) removed[size_t(f)] |= selected[size_t(v)];
-  return without_faces(mesh, std::move(a), removed, "deleted " + count_of(chosen.size(), "vertex", "vertices"), true);
+  summary = without_faces(a, removed, "deleted " + count_of(chosen.size(), "vertex", "vertices"), true);
+  return {};
 }
 
-Modelled delete_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
-  MeshArrays a = arrays_of(mesh);
+std::vector<int> delete_edges_in(MeshArrays& a, const std::vector<std::array<int, 2>>& edges, std::string& summary) {
   const DirectedEdges de = directed_edges(a);
   const std::vector<std::array<int, 2>> chosen = checked_edges(de, edges, false);
   std::vector<char> removed(size_t(a.n_faces()), 0);
   for (const auto& [x, y] : chosen)
     for (const uint64_t key : {directed_key(x, y), directed_key(y, x)})
       if (const auto it = de.find(key); it != de.end()) removed[size_t(it->second.first)] = 1;
-  return without_faces(mesh, std::move(a), removed, "deleted " + count_of(chosen.size(), "edge", "edges"), true);
+  summary = without_faces(a, removed, "deleted " + count_of(chosen.size(), "edge", "edges"), true);
+  return {};
+}
+
+namespace {
+
+// One of the deletions above made on the mesh's arrays and built.
+template <class Items>
+Modelled deleted(const CovarianceMesh& mesh, const Items& items,
+                 std::vector<int> (*delete_in)(MeshArrays&, const Items&, std::string&)) {
+  MeshArrays a = arrays_of(mesh);
+  std::string summary;
+  std::vector<int> selection = delete_in(a, items, summary);
+  return modelled(mesh, a, std::move(selection), std::move(summary));
+}
+
+}  // namespace
+
+Modelled delete_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) {
+  return deleted(mesh, faces, delete_faces_in);
+}
+
+Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
+  return deleted(mesh, vertices, delete_vertices_in);
+}
+
+Modelled delete_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
+  return deleted(mesh, edges, delete_edges_in);
 }
 
 Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {

@@ -5,6 +5,7 @@
 // changed, a refusal throws a one-line gps::Error naming the element (by its index in the input mesh),
 // and the remaining vertices and faces compact in order. Selection after each: empty.
 #include <array>
+#include <string>
 #include <vector>
 
 #include "core/modelling/mesh_arrays.h"
@@ -21,6 +22,13 @@ Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& ver
 /// Removes every face that has one of the edges (then the vertices left unused). Refuses an edge that
 /// is not in the mesh ("edge a–b is not in the mesh").
 Modelled delete_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges);
+
+/// The three deletions made in `arrays` (a run of steps on arrays, core/modelling/operation_list.h),
+/// each refusing what it refuses above: no selection, with `summary` saying what was removed.
+std::vector<int> delete_faces_in(MeshArrays& arrays, const std::vector<int>& faces, std::string& summary);
+std::vector<int> delete_vertices_in(MeshArrays& arrays, const std::vector<int>& vertices, std::string& summary);
+std::vector<int> delete_edges_in(MeshArrays& arrays, const std::vector<std::array<int, 2>>& edges,
+                                 std::string& summary);
 
 /// Dissolves vertices: the faces around an interior vertex merge into one polygon without it; a
 /// boundary vertex that lies in a single face is simply removed from that face. Refuses any other

@@ -377,16 +377,27 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
     append = [=](MeshArrays& a, std::string& summary) { return inset_faces_in(a, faces, thickness, summary); };
     return nullptr;
   }
-  if (op == "delete" || op == "dissolve") {
-    const bool del = op == "delete";
-    const char* what = del ? one_of(f, {"faces", "edges", "vertices"}) : one_of(f, {"edges", "vertices"});
+  if (op == "delete") {
+    const char* what = one_of(f, {"faces", "edges", "vertices"});
     if (std::string(what) == "edges") {
       const Edges edges = f.edges("edges");
-      return [=](const CovarianceMesh& m) { return del ? delete_edges(m, edges) : dissolve_edges(m, edges); };
+      append = [=](MeshArrays& a, std::string& summary) { return delete_edges_in(a, edges, summary); };
+    } else {
+      const std::vector<int> list = f.indices(what);
+      append = [=, faces = std::string(what) == "faces"](MeshArrays& a, std::string& summary) {
+        return faces ? delete_faces_in(a, list, summary) : delete_vertices_in(a, list, summary);
+      };
+    }
+    return nullptr;
+  }
+  if (op == "dissolve") {
+    const char* what = one_of(f, {"edges", "vertices"});
+    if (std::string(what) == "edges") {
+      const Edges edges = f.edges("edges");
+      return [=](const CovarianceMesh& m) { return dissolve_edges(m, edges); };
     }
     const std::vector<int> list = f.indices(what);
-    if (std::string(what) == "faces") return [=](const CovarianceMesh& m) { return delete_faces(m, list); };
-    return [=](const CovarianceMesh& m) { return del ? delete_vertices(m, list) : dissolve_vertices(m, list); };
+    return [=](const CovarianceMesh& m) { return dissolve_vertices(m, list); };
   }
   if (op == "merge") {
     const std::vector<int> vertices = f.indices("vertices");
@@ -548,7 +559,7 @@ std::vector<std::string> OperationList::names() const {
 
 Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::string>* summaries) const {
   // Each step's result is made in place (a mesh has no move, so an assignment would copy it); a run of
-  // steps made on arrays (additions, extrusions and insets of faces) changes the arrays of the mesh and
+  // steps made on arrays (additions, deletions, extrusions and insets of faces) changes the arrays and
   // builds the mesh once after its last; a step on Gaussians or sharpness changes the list's own copy of
   // the mesh where it stands.
   std::unique_ptr<Modelled> current;

@@ -35,9 +35,10 @@ private:
   struct Step {
     std::string name;
     std::function<Modelled(const CovarianceMesh&)> run;
-    /// Instead of `run`, for a step made on arrays (an addition, an extrusion or inset of faces):
-    /// changes the arrays of a run of such steps, which build their mesh and its connectivity once,
-    /// after the last; returns the selection and sets the summary.
+    /// Instead of `run`, for a step made on arrays (an addition, a deletion, an extrusion or inset of
+    /// faces) that checks what it makes as the mesh's build would: changes the arrays of a run of such
+    /// steps, which build their mesh and its connectivity once, after the last; returns the selection
+    /// and sets the summary.
     std::function<std::vector<int>(MeshArrays&, std::string&)> append;
     /// Instead of `run`, for an operation on Gaussians or sharpness only: changes the list's own copy
     /// of the mesh in place at the cost of what it changes; returns the selection, sets the summary.
