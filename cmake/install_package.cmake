@@ -17,7 +17,7 @@ set(GPSURF_PUBLIC_HEADERS
   core/modelling/operation_list.h core/modelling/primitives.h core/modelling/samples.h
   core/fitting/mesh_simplification.h core/fitting/limit_placement.h core/fitting/surface_distance.h
   core/fitting/limit_fit.h
-  core/support/error.h core/support/progress.h)
+  core/support/error.h core/support/progress.h core/support/freed_memory.h)
 set(installed "")
 set(pending ${GPSURF_PUBLIC_HEADERS})
 while(pending)

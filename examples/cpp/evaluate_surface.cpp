@@ -9,9 +9,11 @@
 #include "core/io/mesh_io.h"
 #include "core/modelling/samples.h"
 #include "core/plans/planned_surface.h"
+#include "core/support/freed_memory.h"
 #include "core/version.h"
 
 int main(int argc, char** argv) {
+  gps::keep_freed_memory();  // large meshes allocate and free large blocks: kept for reuse, not mapped afresh
   try {
     const gps::CovarianceMesh mesh = argc > 1 ? gps::read_mesh(argv[1]) : gps::make_sample("cone-pointy");
     const std::string output = argc > 2 ? argv[2] : "tessellation.obj";
