@@ -217,30 +217,17 @@ std::vector<int> delete_edges_in(MeshArrays& a, const std::vector<std::array<int
   return {};
 }
 
-namespace {
-
-// One of the deletions above made on the mesh's arrays and built.
-template <class Items>
-Modelled deleted(const CovarianceMesh& mesh, const Items& items,
-                 std::vector<int> (*delete_in)(MeshArrays&, const Items&, std::string&)) {
-  MeshArrays a = arrays_of(mesh);
-  std::string summary;
-  std::vector<int> selection = delete_in(a, items, summary);
-  return modelled(mesh, a, std::move(selection), std::move(summary));
-}
-
-}  // namespace
-
 Modelled delete_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) {
-  return deleted(mesh, faces, delete_faces_in);
+  return modelled_by(mesh, [&](MeshArrays& a, std::string& summary) { return delete_faces_in(a, faces, summary); });
 }
 
 Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
-  return deleted(mesh, vertices, delete_vertices_in);
+  return modelled_by(mesh,
+                     [&](MeshArrays& a, std::string& summary) { return delete_vertices_in(a, vertices, summary); });
 }
 
 Modelled delete_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
-  return deleted(mesh, edges, delete_edges_in);
+  return modelled_by(mesh, [&](MeshArrays& a, std::string& summary) { return delete_edges_in(a, edges, summary); });
 }
 
 Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {

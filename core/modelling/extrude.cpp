@@ -226,10 +226,8 @@ std::vector<int> extrude_faces_in(MeshArrays& a, const std::vector<int>& faces, 
 }
 
 Modelled extrude_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double distance) {
-  MeshArrays a = arrays_of(mesh);
-  std::string summary;
-  std::vector<int> selection = extrude_faces_in(a, faces, distance, summary);
-  return modelled(mesh, a, std::move(selection), std::move(summary));
+  return modelled_by(
+      mesh, [&](MeshArrays& a, std::string& summary) { return extrude_faces_in(a, faces, distance, summary); });
 }
 
 Modelled extrude_faces_by(const CovarianceMesh& mesh, const std::vector<int>& faces, const Vec3& offset) {

@@ -98,10 +98,8 @@ std::vector<int> inset_faces_in(MeshArrays& a, const std::vector<int>& faces, do
 }
 
 Modelled inset_faces(const CovarianceMesh& mesh, const std::vector<int>& faces, double thickness) {
-  MeshArrays a = arrays_of(mesh);
-  std::string summary;
-  std::vector<int> selection = inset_faces_in(a, faces, thickness, summary);
-  return modelled(mesh, a, std::move(selection), std::move(summary));
+  return modelled_by(mesh,
+                     [&](MeshArrays& a, std::string& summary) { return inset_faces_in(a, faces, thickness, summary); });
 }
 
 }  // namespace gps

@@ -70,6 +70,15 @@ std::vector<int> inverse_origin(const std::vector<int>& origin, size_t n_before)
 
 /// The mesh as arrays; faces in the mesh's face order, corners in the faces' order.
 MeshArrays arrays_of(const CovarianceMesh& mesh);
+/// An operation made on arrays (`change(arrays, summary)` changes them and returns the selection) on
+/// arrays_of(before), then built: modelled()'s outcome.
+template <class Change>
+Modelled modelled_by(const CovarianceMesh& before, Change&& change) {
+  MeshArrays a = arrays_of(before);
+  std::string summary;
+  std::vector<int> selection = change(a, summary);
+  return modelled(before, a, std::move(selection), std::move(summary));
+}
 
 /// The arrays as a covariance mesh, with the creases of `arrays.sharpness` that are still edges of
 /// the faces and the corners of its vertices. Throws gps::Error ("the result would ...: <why>") when

@@ -100,10 +100,8 @@ std::vector<int> append_primitive(MeshArrays& a, Primitive primitive, const Vec3
 }
 
 Modelled add_primitive(const CovarianceMesh& mesh, Primitive primitive, const Vec3& center, double size) {
-  MeshArrays a = arrays_of(mesh);
-  std::string summary;
-  std::vector<int> selection = append_primitive(a, primitive, center, size, summary);
-  return modelled(mesh, a, std::move(selection), std::move(summary));
+  return modelled_by(
+      mesh, [&](MeshArrays& a, std::string& summary) { return append_primitive(a, primitive, center, size, summary); });
 }
 
 PrimitivePlacement primitive_placement(const CovarianceMesh& mesh, const std::vector<int>& selected) {

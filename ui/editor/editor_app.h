@@ -21,7 +21,6 @@
 #include "render/gl/gpu_pass_timer.h"
 #include "render/gl/window_context.h"
 #include "core/support/error.h"
-#include "core/fitting/limit_fit.h"
 #include "core/plans/surface_replanner.h"
 #include "ui/editing/axis_handles.h"
 #include "ui/editing/cursor_3d.h"
