@@ -93,6 +93,12 @@ TEST(EditCli, MalformedOperationsAreUsageErrors) {
     EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
   }
   EXPECT_FALSE(std::filesystem::exists(out));
+  // A file given without its @: the refusal says how to read it.
+  dir.write("ops.json", R"([{"op":"subdivide"}])");
+  const auto no_at = run_command(gpsurf("edit sample:cube -o " + out + " --ops " + dir.file("ops.json")));
+  EXPECT_EQ(no_at.exit_code, 2) << no_at.output;
+  EXPECT_EQ(test::line_count(no_at.output), 1u) << no_at.output;
+  EXPECT_NE(no_at.output.find("write --ops @" + dir.file("ops.json")), std::string::npos) << no_at.output;
   const auto missing = run_command(gpsurf("edit sample:cube -o " + out + " --ops @" + dir.file("none.json")));
   EXPECT_NE(missing.exit_code, 0);
   EXPECT_NE(missing.output.find("none.json"), std::string::npos) << missing.output;
