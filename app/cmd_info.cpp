@@ -92,8 +92,12 @@ void print_info(const std::string& path, const RepairArguments& repair) {
       const ElementNumbering numbering = element_numbering_for(path, diagnosis);
       std::cout << "file: " << path << "\nvertices: " << n_vertices << "\nfaces: " << n_faces << "\n";
       const std::string numbered = " (vertices and faces numbered from " + std::to_string(numbering.base) + ")";
-      print_problems(diagnosis.problems(numbering, true), "refused for" + numbered);
-      print_problems(diagnosis.problems(numbering, false), "also");
+      std::vector<std::string> refused = diagnosis.problems(numbering, true), also = diagnosis.problems(numbering, false);
+      // A class read as it is can still be why (a zero-area face that puts a third face on an edge):
+      // where no class that refuses was found, those found are the reasons.
+      if (refused.empty()) std::swap(refused, also);
+      print_problems(refused, "refused for" + numbered);
+      print_problems(also, "also");
       std::cout << repaired << std::flush;
       throw;
     }

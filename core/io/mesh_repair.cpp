@@ -264,9 +264,14 @@ private:
     }
     LowestRootSets fans = fans_of_pairs();
     while (cut_faces_meeting_again(fans)) fans = fans_of_pairs();
+    std::vector<char> separated(size_t(t.n_faces()), 0);  // a face left unpaired on several fins counts once
     for (const int e : fin_edges_)
       for (int i = edge_offsets_[size_t(e)]; i < edge_offsets_[size_t(e) + 1]; ++i)
-        report_.fin_faces += pair_[size_t(edge_corners_[size_t(i)])] < 0;
+        if (const int k = edge_corners_[size_t(i)]; pair_[size_t(k)] < 0) {
+          char& counted = separated[size_t(corner_face_[size_t(k)])];
+          report_.fin_faces += !counted;
+          counted = 1;
+        }
     const std::vector<int> final_fans = fans_per_vertex(fans);
     if (fin_edges_.empty()) file_fans = final_fans;
     std::vector<int> fan_vertex(n_corners, -1);  // per fan (its root corner): the vertex it gets

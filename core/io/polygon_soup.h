@@ -43,12 +43,16 @@ inline std::vector<uint64_t> soup_edge_keys(const PolygonTopology& faces) {
   return keys;
 }
 
+/// Corners a reader holds whatever they are: a soup this small is read whole, so that the repair can
+/// mend the fins and duplicates that put more corners on its vertices than a manifold mesh has.
+inline constexpr size_t kCornersReadWhole = size_t(1) << 20;
+
 /// Whether `corners` face corners on `n_vertices` vertices are more than a manifold mesh can have
-/// (each directed edge in one face at most: n(n − 1)), as one face repeated makes them: a reader stops
-/// there rather than hold the rest.
+/// (each directed edge in one face at most: n(n − 1)), as one face repeated makes them, and past
+/// kCornersReadWhole: a reader stops there rather than hold the rest.
 inline bool exceeds_manifold_corners(size_t corners, size_t n_vertices) {
   const double n = double(n_vertices);
-  return double(corners) > n * (n - 1);
+  return corners > kCornersReadWhole && double(corners) > n * (n - 1);
 }
 
 /// The CovarianceMesh of a soup, its arrays taken over (make_covariance_mesh: throws gps::Error naming

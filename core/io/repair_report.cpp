@@ -38,8 +38,10 @@ std::vector<std::string> RepairReport::lines() const {
     out.push_back("dropped " + plural(n(Defect::zero_area_faces), "zero-area face", "zero-area faces"));
   if (n(Defect::duplicate_faces))
     out.push_back("dropped " + plural(n(Defect::duplicate_faces), "duplicate face", "duplicate faces"));
+  // Where every face on the fins found a partner, the fins are cut between their sheets, no face apart.
   if (n(Defect::fin_edges))
-    out.push_back("separated " + plural(fin_faces, "face", "faces") + " from " +
+    out.push_back((fin_faces > 0 ? "separated " + plural(fin_faces, "face", "faces") + " from "
+                                 : std::string("cut the sheets apart at ")) +
                   plural(n(Defect::fin_edges), "edge", "edges") + " with more than two faces (" +
                   plural(fin_copies, "vertex copy", "vertex copies") + ")");
   if (n(Defect::pinch_vertices))

@@ -423,6 +423,68 @@ TEST(RepairCli, InfoAfterRepairIsWhatRepairMakes) {
   EXPECT_EQ(boundary_edges(m), 3 + 4 + 12) << "the triangle's, the cone's and the grid's";
 }
 
+// Two tetrahedra on one triangle that is kept between them: each of its edges has three faces, and
+// the five vertices have more corners than a manifold mesh on them can. Every reader holds so small a
+// file whole, so info names the fins and --repair gives what info said, in OBJ, PLY and OFF alike; the
+// report counts the one face it separated once, though it lay on three fins.
+TEST(RepairCli, AFaceWhoseEveryEdgeIsAFinIsMendedInEveryFormat) {
+  test::TempDir dir;
+  const std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.3, 0.3, 1), Vec3(0.3, 0.3, -1)};
+  const Faces faces = {{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 4, 1}, {1, 4, 2}, {0, 2, 4}, {0, 2, 1}};
+  std::ostringstream ply, off;
+  ply << "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+         "element face 7\nproperty list uchar int vertex_indices\nend_header\n";
+  off << "OFF\n5 7 0\n";
+  for (const Vec3& x : p) {
+    ply << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
+    off << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
+  }
+  for (const auto& face : faces) {
+    ply << "3 " << face[0] << ' ' << face[1] << ' ' << face[2] << '\n';
+    off << "3 " << face[0] << ' ' << face[1] << ' ' << face[2] << '\n';
+  }
+  write_obj(dir.file("membrane.obj"), p, faces);
+  dir.write("membrane.ply", ply.str());
+  dir.write("membrane.off", off.str());
+  for (const std::string name : {"membrane.obj", "membrane.ply", "membrane.off"}) {
+    SCOPED_TRACE(name);
+    const std::string in = dir.file(name);
+    const auto info = run_command(gpsurf("info " + in));
+    EXPECT_EQ(info.exit_code, 1) << info.output;
+    EXPECT_NE(info.output.find("non-manifold edges (fins: more than two faces): 3"), std::string::npos) << info.output;
+    EXPECT_EQ(line_after(info.output, "after --repair: "), "8 vertices, 7 faces, 2 parts, 1 boundary loop, genus 0, scheme Loop")
+        << info.output;
+    const auto repaired = run_command(gpsurf("info " + in + " --repair"));
+    ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
+    EXPECT_EQ(repaired.output.rfind("repair: separated 1 face from 3 edges with more than two faces (3 vertex copies)\n", 0), 0u)
+        << repaired.output;
+    EXPECT_EQ(line_after(repaired.output, "\nsurface: "), "2 parts, 1 boundary loop, genus 0");
+    const auto tessellated = run_command(gpsurf("tessellate " + in + " -o " + dir.file("t.ply") + " --level 2 --repair"));
+    EXPECT_EQ(tessellated.exit_code, 0) << tessellated.output;
+    const auto compared = run_command(gpsurf("compare " + in + " " + dir.file("t.ply") + " --level 1"));
+    EXPECT_EQ(compared.exit_code, 0) << "compare reads only A's points: " << compared.output;
+  }
+}
+
+// A face of zero area whose third corner lies on an edge puts a third face on it: dropping it is what
+// --repair does, so info gives it as why the mesh is refused.
+TEST(RepairCli, InfoGivesAZeroAreaFinAsWhyTheMeshIsRefused) {
+  test::TempDir dir;
+  std::vector<Vec3> p = cube_positions();
+  Faces faces;
+  for (const auto& face : kCube) faces.push_back({face[0], face[1], face[2]}), faces.push_back({face[0], face[2], face[3]});
+  p.push_back(Vec3(0, 0.5, 0));  // the middle of edge 0–2
+  faces.push_back({0, 8, 2});
+  const std::string in = dir.file("zero.obj");
+  write_obj(in, p, faces);
+  const auto info = run_command(gpsurf("info " + in));
+  EXPECT_EQ(info.exit_code, 1) << info.output;
+  EXPECT_NE(info.output.find("refused for (vertices and faces numbered from 1):\n  zero-area faces: 1 (face 13 (line 22))"),
+            std::string::npos)
+      << info.output;
+  EXPECT_EQ(line_after(info.output, "after --repair: "), "8 vertices, 12 faces, 1 part, 0 boundary loops, genus 0, scheme Loop");
+}
+
 // A Möbius strip of six quads beside a tetrahedron with a triangle hanging from one edge: info names
 // the fin it mends and, after --repair, the part it cannot orient, numbered as the file numbers it;
 // a command given --repair is refused with the same part and what to do.
