@@ -75,6 +75,9 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
     (kind == "position" ? position_aov : normal_aov) = file;
   }
   const auto bg = parse_floats(a.background, "--background", 3, 3);
+  for (const float channel : bg)
+    if (!(channel >= 0.0f && channel <= 1.0f))
+      throw usage_error("--background: each of red, green and blue is from 0 to 1, got " + quoted_token(a.background));
   const Image matcap = load_matcap(a.matcap);
   // A refusal (a face or valence the plans do not take, the storage limit) names the mesh it is about.
   naming_mesh_input(a.input, a.repair.import_options().repair, [&] { renderer.set_mesh(mesh, a.plans.options()); });
@@ -88,9 +91,10 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   o.ellipsoids = a.ellipsoids;
   o.sigma_scale = a.sigma;
   o.background = {bg[0], bg[1], bg[2]};
-  const Camera camera =
-      render_camera(renderer, mesh, a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3),
-                    up_axis_named(a.up), o, width, height);
+  const std::vector<float> yaw_pitch_distance = a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3);
+  if (yaw_pitch_distance.size() > 2 && !(yaw_pitch_distance[2] > 0.0f))
+    throw usage_error("--camera: the distance must be positive (in the mesh's units), got " + quoted_token(a.camera));
+  const Camera camera = render_camera(renderer, mesh, yaw_pitch_distance, up_axis_named(a.up), o, width, height);
   if (a.reference >= 1 && a.reference <= 6 && scheme_for(mesh.topology(), a.plans.options()) == Scheme::catmull_clark) {
     // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level
     // then shows the two surfaces' values alone, not two draws' rounding (render/comparison/reference_triangles.h).
@@ -111,10 +115,19 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
                 " pixels; nothing written");
   // Framed on the surface, an image without it means the evaluation lost it (Gaussians too thin
   // for the GPU's precision: render/gl/point_precision.h), not a view that looks away.
-  if (a.camera.empty() && count_covered_pixels(normal) == 0)
-    throw Error(a.input +
-                ": the surface covers no pixel of the image framed on it (Gaussians too thin for the "
-                "GPU's evaluation?); nothing written");
+  // From a camera given, an image without it shows that camera's view of nothing: refused as well,
+  // with the mesh's size to place the camera by.
+  if (count_covered_pixels(normal) == 0) {
+    if (a.camera.empty())
+      throw Error(a.input +
+                  ": the surface covers no pixel of the image framed on it (Gaussians too thin for the "
+                  "GPU's evaluation?); nothing written");
+    std::ostringstream diagonal;
+    diagonal << bounding_box_diagonal(mesh);
+    throw Error(a.input + ": the surface covers no pixel of the image from the camera " + quoted_token(a.camera) +
+                " (its distance is in the mesh's units, whose bounding box has a diagonal of " + diagonal.str() +
+                "; leave the distance out to frame the surface); nothing written");
+  }
   Image color = target.read(0);
   write_image(a.output, color);
   if (!position_aov.empty()) write_image(position_aov, position, kPositionChannels);

@@ -1,9 +1,12 @@
 #include "render/image/image_io.h"
 
 #include <filesystem>
+#include <fstream>
 #include <unistd.h>
 
+#include "core/io/atomic_file.h"
 #include "core/io/mesh_io.h"
+#include "core/io/save_target.h"
 #include "core/support/error.h"
 #include "render/image/image_file_module.h"
 #include "render/image/png_file.h"
@@ -41,28 +44,33 @@ std::vector<std::string> read_channel_names(const std::string& path) {
 void write_image(const std::string& path, const Image& image, const std::vector<std::string>& channel_names) {
   namespace fs = std::filesystem;
   const std::string ext = extension_of(path);
+  inspect_save_target(path);  // a target a save refuses is refused before the image is encoded
   const fs::path dir = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+  // Encoded into a scratch file that keeps the extension (OpenImageIO picks the format from it), then
+  // saved as every file is (core/io/atomic_file.h): links, read-only targets and signals alike.
+  const fs::path scratch =
+      dir / ("." + fs::path(path).stem().string() + ".image" + std::to_string(::getpid()) + ext);
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw Error(path + ": cannot write, folder " + dir.string() + " does not exist");
-  // The temporary keeps the extension so that OpenImageIO picks the format from it.
-  const fs::path temp = dir / ("." + fs::path(path).stem().string() + ".tmp" + std::to_string(::getpid()) + ext);
   try {
     if (ext == ".png") {
-      write_png(temp.string(), image, path);
+      write_png(scratch.string(), image, path);
     } else if (const std::string failure = openimageio_files(path + ": cannot write the image")
-                                               .write(temp.string(), path, ext, image, channel_names);
+                                               .write(scratch.string(), path, ext, image, channel_names);
                !failure.empty()) {
       throw Error(failure);
     }
+    write_file_atomically(
+        path,
+        [&](std::ostream& out) {
+          std::ifstream in(scratch, std::ios::binary);
+          if (!(out << in.rdbuf())) throw Error(path + ": writing the image failed");
+        },
+        true);
   } catch (...) {
-    fs::remove(temp, ec);
+    fs::remove(scratch, ec);
     throw;
   }
-  fs::rename(temp, path, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    throw Error(path + ": cannot replace the file (" + ec.message() + ")");
-  }
+  fs::remove(scratch, ec);
 }
 
 }  // namespace gps

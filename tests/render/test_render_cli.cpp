@@ -396,6 +396,55 @@ TEST(RenderCli, UpAxisShowsAZUpMeshAsItsYUpTwin) {
             2);
 }
 
+// From a camera given, an image that shows none of the surface is refused too, naming the mesh's
+// size: a camera a million units from the unit cube, and one close to a mesh a millionth its size.
+TEST(RenderCli, AGivenCameraThatShowsNoneOfTheSurfaceIsRefused) {
+  test::TempDir dir;
+  CovarianceMesh tiny = make_sample("cube");
+  write_mesh(dir.file("c.ply"), tiny);
+  for (size_t i = 0; i < tiny.n_vertices(); ++i) {
+    tiny.set_mean(i, 1e-6 * tiny.mean(i));
+    tiny.set_covariance(i, 1e-12 * tiny.covariance(i));
+  }
+  write_mesh(dir.file("tiny.ply"), tiny);
+  for (const auto& [mesh, camera] : std::vector<std::pair<std::string, std::string>>{
+           {"c.ply", "30,20,1e6"}, {"tiny.ply", "30,20,10"}}) {
+    const auto r = run_command(gpsurf("render " + dir.file(mesh) + " -o " + dir.file("x.png") +
+                                      " --size 64x64 --camera " + camera));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find("covers no pixel of the image from the camera '" + camera + "'"), std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
+  }
+  const auto near = run_command(gpsurf("render " + dir.file("tiny.ply") + " -o " + dir.file("y.png") +
+                                       " --size 64x64 --camera 30,20,1e-5"));
+  EXPECT_EQ(near.exit_code, 0) << near.output;
+  EXPECT_GT(drawn_pixels(read_image(dir.file("y.png"))), 200);
+}
+
+// An image is saved as every file is (core/io/atomic_file.h): a read-only target is refused and kept,
+// a hard-linked one is written so that both names see the new image, a directory is refused by name.
+TEST(RenderCli, ImagesAreSavedAsEveryFileIs) {
+  test::TempDir dir;
+  run_command(gpsurf("sample cube -o " + dir.file("c.ply")));
+  const std::string render = "render " + dir.file("c.ply") + " --size 32x32 -o ";
+  dir.write("ro.png", "old");
+  std::filesystem::permissions(dir.file("ro.png"), std::filesystem::perms::owner_read);
+  const auto read_only = run_command(gpsurf(render + dir.file("ro.png")));
+  EXPECT_EQ(read_only.exit_code, 1) << read_only.output;
+  EXPECT_EQ(test::file_text(dir.file("ro.png")), "old");
+  dir.write("a.png", "old");
+  std::filesystem::create_hard_link(dir.file("a.png"), dir.file("b.png"));
+  const auto linked = run_command(gpsurf(render + dir.file("a.png")));
+  ASSERT_EQ(linked.exit_code, 0) << linked.output;
+  EXPECT_EQ(read_image(dir.file("b.png")).width, 32) << "the other name sees the new image";
+  std::filesystem::create_directory(dir.file("d.png"));
+  const auto folder = run_command(gpsurf(render + dir.file("d.png")));
+  EXPECT_EQ(folder.exit_code, 1) << folder.output;
+  EXPECT_EQ(folder.output.find("Success"), std::string::npos) << folder.output;
+}
+
 TEST(RenderCli, BadInputIsAUsageError) {
   test::TempDir dir;
   run_command(gpsurf("sample cube -o " + dir.file("c.ply")));
@@ -408,7 +457,9 @@ TEST(RenderCli, BadInputIsAUsageError) {
            "render " + dir.file("missing.ply") + out, "render " + mesh + out + " --matcap velvet",
            "render " + mesh + out + " --level 0", "render " + mesh + out + " --level 65",
            "render " + mesh + out + " --size 10by10", "render " + mesh + out + " --aov depth=" + dir.file("d.exr"),
-           "render " + mesh + out + " --mode toon", "diff " + dir.file("a.exr") + " " + dir.file("missing.exr") + out,
+           "render " + mesh + out + " --mode toon", "render " + mesh + out + " --background 2,0,0",
+           "render " + mesh + out + " --background 0,-1,0", "render " + mesh + out + " --camera 30,20,-1",
+           "render " + mesh + out + " --camera 30,20,0", "diff " + dir.file("a.exr") + " " + dir.file("missing.exr") + out,
            "diff " + dir.file("a.exr") + " " + dir.file("b.exr") + out}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
