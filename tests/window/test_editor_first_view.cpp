@@ -114,6 +114,11 @@ TEST_F(EditorFirstView, APinchedMeshOpenedIsOfferedRepaired) {
   const auto asked = run(pinched, test::Events().wait(2), "--screenshot " + artefact("repair_dialog.png"));
   ASSERT_EQ(asked.exit_code, 0) << asked.output;
   EXPECT_NE(stats()["mesh"].get<std::string>(), "pinched.obj");
+  // A save of it while the sample stands in its place is refused, nothing written.
+  const auto unsaved = run(pinched, test::Events().wait(2), "--save " + dir_.file("never.ply"));
+  EXPECT_EQ(unsaved.exit_code, 1) << unsaved.output;
+  EXPECT_NE(unsaved.output.find("pinch"), std::string::npos) << unsaved.output;
+  EXPECT_FALSE(std::filesystem::exists(dir_.file("never.ply")));
   const auto repaired =
       run(pinched, test::Events().wait(2).key("enter").wait(3), "--screenshot " + artefact("repaired.png"));
   ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
@@ -122,6 +127,13 @@ TEST_F(EditorFirstView, APinchedMeshOpenedIsOfferedRepaired) {
   EXPECT_EQ(s["faces"], 10);
   EXPECT_EQ(s["unsaved"], true);
   EXPECT_NE(repaired.output.find("repaired (unsaved)"), std::string::npos) << repaired.output;
+  const auto saved = run(pinched, test::Events().wait(2).key("enter").wait(3), "--save " + dir_.file("mended.ply"));
+  ASSERT_EQ(saved.exit_code, 0) << saved.output;
+  EXPECT_EQ(read_mesh(dir_.file("mended.ply")).n_vertices(), read_mesh(pinched, [] {
+    ImportOptions o;
+    o.repair = true;
+    return o;
+  }()).n_vertices());
 }
 
 // Dropped on the window, the same: Cancel keeps the mesh there was, Repair opens the repaired one.

@@ -96,6 +96,7 @@ EditorApp::EditorApp(const EditorOptions& options)
       if (!options.import.repair) findings = repair_findings(options.file, options.import);
       if (!findings.offered() && (!options.screenshot.empty() || !options.save.empty())) throw *e;
       open_sample(kDefaultSample);
+      file_not_opened_ = *e;
       set_status(e->what(), true);
       if (findings.offered()) repair_prompt_.open(options.file, std::move(findings), e->what());
     } else if (!remarks.empty()) {
@@ -132,6 +133,7 @@ bool EditorApp::script_finished() {
   if (view_.target.shown && target_layer_->points().busy()) return false;  // the target's distances as they settle
   // Two more frames after the last event: auto-sized ImGui windows settle on their second frame.
   if (++finishing_frames_ < 3) return false;
+  if (file_not_opened_ && !options_.save.empty()) throw *file_not_opened_;  // not the sample in its place
   if (!options_.save.empty()) save_to(options_.save);
   return true;
 }

@@ -67,6 +67,7 @@ std::optional<Error> EditorApp::try_open(const std::string& path, bool repair, s
     return e;
   }
   if (!script_) recent_.add(document_.source_path());
+  file_not_opened_.reset();
   remarks.clear();
   if (repair) {
     std::string steps;
@@ -116,6 +117,7 @@ void EditorApp::draw_repair_prompt() {
 void EditorApp::open_sample(const std::string& name) {
   document_.open_sample(name);
   mesh_replaced();
+  file_not_opened_.reset();
   set_status("opened the built-in sample '" + name + "': " + sample_description(name), false);
 }
 

@@ -215,6 +215,9 @@ private:
   std::optional<EventScript> script_;
   std::optional<EventRecorder> recorder_;
   int finishing_frames_ = 0;
+  // Why the file given on the command line did not open, while the sample shown in its place stays:
+  // a run that must save the file ends with it instead of saving the sample.
+  std::optional<Error> file_not_opened_;
 
   enum class Mode { none, click, box, orbit, pan } mode_ = Mode::none;  // a drag of the gizmo is a tool
   int mode_button_ = 0;
