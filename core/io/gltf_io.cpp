@@ -23,12 +23,29 @@ namespace {
 
 constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
 constexpr const char* kCovarianceAttribute = "_COVARIANCE";
+// The asset generator gpsurf writes, by which it knows its own files (their vertices are not welded).
+const std::string kGenerator = "gpsurf";
 
 // The first line of a tinygltf message, without its trailing full stop or spaces.
 std::string first_line(const std::string& text) {
   std::string line = text.substr(0, text.find('\n'));
   while (!line.empty() && (line.back() == ' ' || line.back() == '.' || line.back() == '\r')) line.pop_back();
   return escaped(line);
+}
+
+// tinygltf's and nlohmann's errors that a user meets, in our words; others as they come (first_line).
+std::string loader_error(const std::string& text) {
+  if (text.rfind("[json.exception.parse_error", 0) == 0) {
+    const size_t at = text.find(" at line ");
+    const size_t end = at == std::string::npos ? at : text.find(':', at);
+    return "is not valid glTF JSON" + (end == std::string::npos ? "" : " (" + text.substr(at + 4, end - at - 4) + ")");
+  }
+  if (text.rfind("Failed to decode 'uri'", 0) == 0)
+    return "has a buffer whose embedded data (its data: URI) is not base64 or is shorter than its byteLength";
+  if (const std::string missing = "File not found : "; text.rfind(missing, 0) == 0)
+    return "names a buffer file " + quoted_token(first_line(text.substr(missing.size()))) +
+           " that is not there (buffer files are read from the .gltf's folder)";
+  return first_line(text);
 }
 
 // tinygltf reads a .gltf's buffer files through these: only regular files (as every reader of gpsurf),
@@ -273,9 +290,9 @@ tinygltf::Model load_model(const std::string& data, const std::string& base_dir,
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {
-    throw Error(first_line(e.what()));
+    throw Error(loader_error(e.what()));
   }
-  if (!loaded) throw Error(first_line(err.empty() ? warn : err));
+  if (!loaded) throw Error(loader_error(err.empty() ? warn : err));
   for (size_t start = 0; start < warn.size();) {
     const size_t end = std::min(warn.find('\n', start), warn.size());
     if (end > start) warnings.push_back(first_line(warn.substr(start, end - start)));
@@ -348,6 +365,7 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
       escaped(source), "triangles", "the file is too large to read here");
 
   std::unordered_map<PositionBits, int, PositionBitsHash> welded;
+  const bool written_by_gpsurf = model.asset.generator == kGenerator;
   std::vector<int> vertex_of;  // the welded vertex of each position of the current primitive
   std::vector<int> verts;
   std::vector<int> offsets{0};
@@ -376,8 +394,11 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
         const Vec3 world = linear * local + shift;
         if (const std::string why = position_problem(world); !why.empty())
           throw Error(where + ": vertex " + std::to_string(i) + " " + why);
-        const auto [found, added] = welded.emplace(bits_of(world), int(soup.positions.size()));
-        vertex_of[i] = found->second;
+        // gpsurf writes a vertex per Gaussian, none split at a seam: its files' vertices stay apart,
+        // also those a repair or a split op left at one position.
+        const auto [found, added] = written_by_gpsurf ? std::pair{welded.end(), true}
+                                                      : welded.emplace(bits_of(world), int(soup.positions.size()));
+        vertex_of[i] = added ? int(soup.positions.size()) : found->second;
         if (!added) continue;
         soup.positions.push_back(world);
         if (!has_covariances) continue;
@@ -497,7 +518,7 @@ void write_gltf(std::ostream& out, const GltfTriangles& mesh, bool binary) {
 
   tinygltf::Model model;
   model.asset.version = "2.0";
-  model.asset.generator = "gpsurf";
+  model.asset.generator = kGenerator;
   model.buffers.resize(1);
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
