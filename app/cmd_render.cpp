@@ -5,6 +5,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <type_traits>
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
@@ -183,6 +184,20 @@ double script_number(const nlohmann::json& object, const char* key, double lo, d
     throw usage_error(std::string(key) + " " + e.what());
   }
 }
+// The value at `key` of a job as the type of `fallback` (absent: `fallback`); another type is refused
+// naming the key, as the numbers are.
+template <class T>
+T script_value(const nlohmann::json& job, const char* key, const T& fallback) {
+  if (!job.contains(key)) return fallback;
+  try {
+    return job.at(key).get<T>();
+  } catch (const nlohmann::json::type_error&) {
+    const char* kind = std::is_same_v<T, bool> ? "true or false"
+                       : std::is_same_v<T, std::string> ? "a string"
+                                                        : "a list of strings";
+    throw usage_error(std::string(key) + " must be " + kind + ", got " + json_shown(job.at(key)));
+  }
+}
 // The numbers at `key` of an edit, exactly `count` of them.
 std::vector<double> script_numbers(const nlohmann::json& edit, const char* key, size_t count) {
   const nlohmann::json& list = edit.at(key);
@@ -215,30 +230,32 @@ void run_script(const std::string& path, const std::string& context_name) {
     const std::string where = path + ": render " + std::to_string(index++);
     try {
       RenderArgs a;
-      a.input = job.at("mesh").get<std::string>();
-      a.output = job.at("output").get<std::string>();
-      a.size = job.value("size", a.size);
+      a.input = script_value(job, "mesh", std::string());
+      if (a.input.empty()) throw usage_error("mesh is missing");
+      a.output = script_value(job, "output", std::string());
+      if (a.output.empty()) throw usage_error("output is missing");
+      a.size = script_value(job, "size", a.size);
       if (job.contains("level")) a.level = int(script_integer(job, "level", 1, 64));
       if (job.contains("pixels")) a.pixels = float(script_number(job, "pixels", 0.5, 1000));
-      if (job.contains("depth")) a.plans.depth = int(script_integer(job, "depth", 0, 64));
-      a.plans.approximate = job.value("approximate", a.plans.approximate);
-      a.plans.scheme = job.value("scheme", a.plans.scheme);
-      a.plans.loop_beta = job.value("loop_beta", a.plans.loop_beta);
+      if (job.contains("depth")) a.plans.depth = int(script_integer(job, "depth", 0, 8));
+      a.plans.approximate = script_value(job, "approximate", a.plans.approximate);
+      a.plans.scheme = script_value(job, "scheme", a.plans.scheme);
+      a.plans.loop_beta = script_value(job, "loop_beta", a.plans.loop_beta);
       a.plans.options();  // checks the names and the depth
-      a.repair.repair = job.value("repair", a.repair.repair);
+      a.repair.repair = script_value(job, "repair", a.repair.repair);
       if (job.contains("weld")) a.repair.weld = script_number(job, "weld", 0, 1e100);
-      a.matcap = job.value("matcap", a.matcap);
-      a.mode = job.value("mode", a.mode);
-      a.camera = job.value("camera", a.camera);
-      a.up = job.value("up", a.up);
-      a.mesh_lines = job.value("mesh_lines", a.mesh_lines);
-      a.wireframe = job.value("wireframe", a.wireframe);
-      a.ellipsoids = job.value("ellipsoids", a.ellipsoids);
+      a.matcap = script_value(job, "matcap", a.matcap);
+      a.mode = script_value(job, "mode", a.mode);
+      a.camera = script_value(job, "camera", a.camera);
+      a.up = script_value(job, "up", a.up);
+      a.mesh_lines = script_value(job, "mesh_lines", a.mesh_lines);
+      a.wireframe = script_value(job, "wireframe", a.wireframe);
+      a.ellipsoids = script_value(job, "ellipsoids", a.ellipsoids);
       if (job.contains("sigma")) a.sigma = float(script_number(job, "sigma", 0.01, 100));
-      a.background = job.value("background", a.background);
-      a.aovs = job.value("aov", a.aovs);
+      a.background = script_value(job, "background", a.background);
+      a.aovs = script_value(job, "aov", a.aovs);
       if (job.contains("reference")) a.reference = int(script_integer(job, "reference", 0, 7));
-      a.exact = job.value("exact", a.exact);
+      a.exact = script_value(job, "exact", a.exact);
       if (a.exact && a.reference >= 0) throw usage_error("exact and reference exclude each other");
       if (a.mode != "matcap" && a.mode != "normals" && a.mode != "flat")
         throw usage_error("mode must be matcap, normals or flat");

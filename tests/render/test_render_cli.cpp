@@ -340,6 +340,9 @@ TEST(RenderCli, ScriptNumbersOutsideTheirTypeAreRefused) {
            {R"("edits": [{"vertex": 1, "mean": [0, "1", 0]}])",
             "render 0: mean[1] must be a finite number, got a string"},
            {R"("level": 2.5)", "render 0: level must be an integer from 1 to 64, got 2.5"},
+           {R"("exact": 1)", "render 0: exact must be true or false, got 1"},
+           {R"("camera": 30)", "render 0: camera must be a string, got 30"},
+           {R"("depth": 9)", "render 0: depth must be an integer from 0 to 8, got 9"},
            {R"("sigma": 1e400)", "renders[0].sigma: a number beyond the range of a double"}}) {
     const std::string script = dir.write("s.json", R"({"renders": [{"mesh": "sample:cube", "output": ")" + out +
                                                        R"(", "size": "16x16", )" + job + "}]}");

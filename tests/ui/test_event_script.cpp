@@ -98,7 +98,8 @@ TEST(EventScript, ErrorsNameTheFileAndTheEvent) {
 }
 
 // Counts are taken only as the integers they become: 4294967297 frames does not wrap to one, 2.9
-// is not cut to 2, and a number beyond a double is named, not reported by the JSON library.
+// is not cut to 2, and a number beyond a double is named, not reported by the JSON library. Other
+// numbers (a scroll's steps, positions) have their range, and a value of another type names its key.
 TEST(EventScript, CountsOutsideTheirRangeAreRefused) {
   for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
            {R"({"events": [{"type": "wait", "frames": 4294967297}]})",
@@ -107,6 +108,13 @@ TEST(EventScript, CountsOutsideTheirRangeAreRefused) {
             "events.json: event 0: frames must be an integer from 0 to 1000000, got 2.9"},
            {R"({"events": [{"type": "drag", "from": [0, 0], "to": [1, 1], "steps": 4294967306}]})",
             "events.json: event 0: steps must be an integer from 0 to 10000, got 4294967306"},
+           {R"({"events": [{"type": "scroll", "steps": 4294967297, "x": 1, "y": 1}]})",
+            "events.json: event 0: steps must be a number from -1000 to 1000, got 4294967297"},
+           {R"({"events": [{"type": "move", "x": "", "y": 1}]})",
+            "events.json: event 0: x must be a number from -1000000 to 1000000, got a string"},
+           {R"({"events": [{"type": "drag", "from": [0, true], "to": [1, 1]}]})",
+            "events.json: event 0: from: y must be a number from -1000000 to 1000000, got a boolean"},
+           {R"({"events": [{"type": "key", "key": 5}]})", "events.json: event 0: key must be a string, got 5"},
            {R"({"events": [{"type": "wait", "frames": 1e400}]})",
             "events.json: events[0].frames: a number beyond the range of a double"}}) {
     try {

@@ -1,5 +1,6 @@
 #include "ui/input/event_script.h"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -24,6 +25,24 @@ int integer_of(const Json& e, const char* key, int lo, int hi) {
   }
 }
 
+// The number at `key` of an event, from `lo` to `hi` (a scroll's steps may be fractional, as a
+// touchpad's are); another type, or one out of range, is refused naming the key.
+float number_of(const Json& e, const char* key, long long lo, long long hi) {
+  const Json& value = e.at(key);
+  const double x = value.is_number() ? value.get<double>() : std::nan("");
+  if (!(x >= double(lo) && x <= double(hi)))
+    throw usage_error(std::string(key) + " must be a number from " + json_shown(lo) + " to " + json_shown(hi) +
+                      ", got " + json_shown(value));
+  return float(x);
+}
+
+// The string at `key` of an event; another type is refused naming the key.
+std::string text_of(const Json& e, const char* key) {
+  const Json& value = e.at(key);
+  if (!value.is_string()) throw usage_error(std::string(key) + " must be a string, got " + json_shown(value));
+  return value.get<std::string>();
+}
+
 int button_of(const Json& e) {
   const std::string name = e.value("button", std::string("left"));
   if (name == "left") return 0;
@@ -34,13 +53,22 @@ int button_of(const Json& e) {
 
 std::string button_name(int button) { return button == 1 ? "right" : button == 2 ? "middle" : "left"; }
 
-glm::vec2 point_of(const Json& e, const char* key) {
-  const auto p = e.at(key).get<std::vector<float>>();
-  if (p.size() != 2) throw usage_error(std::string("'") + key + "' needs [x, y]");
-  return {p[0], p[1]};
+// Window positions: finite, within a generous margin of any window.
+constexpr long long kFarthestPixel = 1000000;
+
+glm::vec2 xy_of(const Json& e) {
+  return {number_of(e, "x", -kFarthestPixel, kFarthestPixel), number_of(e, "y", -kFarthestPixel, kFarthestPixel)};
 }
 
-glm::vec2 xy_of(const Json& e) { return {e.at("x").get<float>(), e.at("y").get<float>()}; }
+glm::vec2 point_of(const Json& e, const char* key) {
+  const Json& p = e.at(key);
+  if (!p.is_array() || p.size() != 2) throw usage_error(std::string("'") + key + "' needs [x, y]");
+  try {
+    return xy_of(Json{{"x", p[0]}, {"y", p[1]}});
+  } catch (const Error& x) {
+    throw usage_error(std::string(key) + ": " + x.what());
+  }
+}
 
 // "ctrl+shift+z" → the key codes, modifiers first.
 std::vector<int> chord_of(const std::string& chord) {
@@ -100,8 +128,8 @@ EventScript EventScript::parse(const std::string& text, const std::string& sourc
   for (const Json& e : doc["events"]) {
     try {
       if (!e.is_object()) throw usage_error("expected an object");
-      const std::string type = e.at("type").get<std::string>();
-      const std::vector<int> mods = e.contains("mods") ? chord_of(e["mods"].get<std::string>()) : std::vector<int>{};
+      const std::string type = text_of(e, "type");
+      const std::vector<int> mods = e.contains("mods") ? chord_of(text_of(e, "mods")) : std::vector<int>{};
       if (type == "move") {
         add(mouse(InputEvent::Type::move, xy_of(e)));
       } else if (type == "press" || type == "release") {
@@ -122,18 +150,18 @@ EventScript EventScript::parse(const std::string& text, const std::string& sourc
         for (auto m = mods.rbegin(); m != mods.rend(); ++m) add(key(InputEvent::Type::key_release, *m));
       } else if (type == "scroll") {
         InputEvent s = mouse(InputEvent::Type::scroll, xy_of(e));
-        s.steps = e.at("steps").get<float>();
+        s.steps = number_of(e, "steps", -1000, 1000);
         add(s);
         boundary();
       } else if (type == "key") {
-        const std::vector<int> chord = chord_of(e.at("key").get<std::string>());
+        const std::vector<int> chord = chord_of(text_of(e, "key"));
         for (const int k : chord) add(key(InputEvent::Type::key_press, k));
         for (auto k = chord.rbegin(); k != chord.rend(); ++k) add(key(InputEvent::Type::key_release, *k));
       } else if (type == "key_press" || type == "key_release") {
-        for (const int k : chord_of(e.at("key").get<std::string>()))
+        for (const int k : chord_of(text_of(e, "key")))
           add(key(type == "key_press" ? InputEvent::Type::key_press : InputEvent::Type::key_release, k));
       } else if (type == "text") {
-        for (const unsigned cp : code_points(e.at("text").get<std::string>())) {
+        for (const unsigned cp : code_points(text_of(e, "text"))) {
           InputEvent t;
           t.type = InputEvent::Type::text;
           t.codepoint = cp;
