@@ -34,7 +34,7 @@ Gaussian AffineMap::apply(const Gaussian& g) const {
   return {apply(g.mean), 0.5 * (c + c.transpose())};
 }
 
-void reverse_parts_within(MeshArrays& arrays, const std::vector<int>& moved) {
+int reverse_parts_within(MeshArrays& arrays, const std::vector<int>& moved) {
   // Parts by union-find over the faces' corners; a part is reversed when no vertex of it stays.
   std::vector<int> parent(size_t(arrays.n_vertices()));
   for (size_t v = 0; v < parent.size(); ++v) parent[v] = int(v);
@@ -49,8 +49,13 @@ void reverse_parts_within(MeshArrays& arrays, const std::vector<int>& moved) {
   for (const std::vector<int>& face : arrays.faces)
     for (const int v : face)
       if (!is_moved[size_t(v)]) part_stays[size_t(root(v))] = 1;
+  int reversed = 0;
   for (std::vector<int>& face : arrays.faces)
-    if (!face.empty() && !part_stays[size_t(root(face[0]))]) std::reverse(face.begin() + 1, face.end());
+    if (!face.empty() && !part_stays[size_t(root(face[0]))]) {
+      std::reverse(face.begin() + 1, face.end());
+      ++reversed;
+    }
+  return reversed;
 }
 
 double strongest_stretch(const AffineMap& map) { return Eigen::JacobiSVD<Mat3>(map.linear).singularValues()[0]; }
@@ -104,13 +109,17 @@ std::vector<int> transform_vertices_in_place(CovarianceMesh& mesh, const std::ve
     mesh.covariances[size_t(moved[i])] = carried[i].covariance;
   }
   const bool mirror = map.linear.determinant() < 0;
+  int reversed = 0;
   if (mirror) {
     MeshArrays a = arrays_of(mesh);
-    reverse_parts_within(a, moved);
-    mesh = build_mesh(a, mesh);
+    reversed = reverse_parts_within(a, moved);
+    if (reversed > 0) mesh = build_mesh(a, mesh);
   }
-  summary = "transformed " + count_of(moved.size(), "vertex", "vertices") +
-            (mirror ? " (mirrored: their faces reversed to stay outward)" : "") +
+  // Only a part moved whole turns inside out: one mirrored in part keeps its faces.
+  const std::string mirrored = reversed > 0 ? " (mirrored: " + count_of(size_t(reversed), "face", "faces") +
+                                                  " reversed to stay outward)"
+                                            : " (mirrored in part: no part moved whole, no face reversed)";
+  summary = "transformed " + count_of(moved.size(), "vertex", "vertices") + (mirror ? mirrored : "") +
             (clamped ? ", " + count_of(clamped, "Gaussian", "Gaussians") + " held at the flatness floor (" +
                            short_number(kFlattestStretch) + " of the map's strongest stretch)"
                      : "");

@@ -63,7 +63,7 @@ std::vector<int> transform_vertices_in_place(CovarianceMesh& mesh, const std::ve
                                              const AffineMap& map, std::string& summary);
 
 /// Reverses the corner order (keeping the first corner) of every face of each connected part whose
-/// vertices all lie in `moved`: the orientation a mirror of those parts needs.
-void reverse_parts_within(MeshArrays& arrays, const std::vector<int>& moved);
+/// vertices all lie in `moved`: the orientation a mirror of those parts needs. Returns how many faces.
+int reverse_parts_within(MeshArrays& arrays, const std::vector<int>& moved);
 
 }  // namespace gps

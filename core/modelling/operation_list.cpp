@@ -76,6 +76,12 @@ public:
     return v.get<double>();
   }
   double number(const char* key, double otherwise) { return has(key) ? number(key) : otherwise; }
+  // A crease's or corner's sharpness: 0 or more, as the file formats take it.
+  double sharpness(const char* key) {
+    const double s = number(key);
+    if (s < 0) throw usage_error("\"" + std::string(key) + "\" must be 0 or more, got " + json_shown(at(key)));
+    return s;
+  }
   int integer(const char* key, int lo, int hi) {
     const Json& v = at(key);
     try {
@@ -457,11 +463,11 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
       if (f.text("edges") != "sharp") throw usage_error("\"edges\" must be \"sharp\" or a list of [a, b] edges");
       const double angle = f.number("angle");
       if (!(angle >= 0 && angle < 180)) throw usage_error("\"angle\" must be from 0 to less than 180 degrees");
-      const double sharpness = f.number("sharpness");
+      const double sharpness = f.sharpness("sharpness");
       return [=](const CovarianceMesh& m) { return crease_sharp_edges(m, angle, sharpness); };
     }
     const Edges edges = f.edges("edges");
-    const double sharpness = f.number("sharpness");
+    const double sharpness = f.sharpness("sharpness");
     in_place = [=](CovarianceMesh& m, std::string& summary) {
       return set_crease_in_place(m, edges, sharpness, summary);
     };
@@ -475,7 +481,7 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
   if (op == "corner") {
     const std::vector<int> vertices = f.indices("vertices");
     if (vertices.empty()) throw usage_error("\"vertices\" is empty");
-    const double sharpness = f.number("sharpness");
+    const double sharpness = f.sharpness("sharpness");
     in_place = [=](CovarianceMesh& m, std::string& summary) {
       return set_corner_in_place(m, vertices, sharpness, summary);
     };

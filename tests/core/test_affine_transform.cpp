@@ -113,7 +113,7 @@ TEST(AffineTransform, AMirrorKeepsTheSurfaceOutward) {
   for (const Mat3& mirror : {Mat3(Vec3(-1, 1, 1).asDiagonal()), Mat3(-skewed_map().linear)}) {
     const Modelled r = transform_vertices(cube, {}, AffineMap{mirror, Vec3(1, 2, 3)});
     EXPECT_NEAR(signed_volume(arrays_of(r.mesh)), volume * std::abs(mirror.determinant()), 1e-12 * volume);
-    EXPECT_EQ(r.summary, "transformed 8 vertices (mirrored: their faces reversed to stay outward)");
+    EXPECT_EQ(r.summary, "transformed 8 vertices (mirrored: 6 faces reversed to stay outward)");
     const MeshArrays before = arrays_of(cube), after = arrays_of(r.mesh);
     ASSERT_EQ(after.faces.size(), before.faces.size());
     for (size_t f = 0; f < before.faces.size(); ++f) {
@@ -122,6 +122,15 @@ TEST(AffineTransform, AMirrorKeepsTheSurfaceOutward) {
       EXPECT_EQ(after.faces[f], reversed) << "face " << f;
     }
   }
+}
+
+// A mirror of some of a part's vertices turns no part inside out: nothing is reversed, and the
+// summary says so.
+TEST(AffineTransform, AMirrorOfPartOfAPartReversesNothingAndSaysSo) {
+  const CovarianceMesh cube = make_sample("cube");
+  const Modelled r = transform_vertices(cube, {0, 1, 2}, AffineMap{Mat3(Vec3(-1, 1, 1).asDiagonal()), Vec3(3, 0, 0)});
+  EXPECT_EQ(r.summary, "transformed 3 vertices (mirrored in part: no part moved whole, no face reversed)");
+  EXPECT_EQ(arrays_of(r.mesh).faces, arrays_of(cube).faces);
 }
 
 // Only the parts a mirror moves whole are reversed: the part it leaves keeps its faces as they were.
