@@ -337,14 +337,15 @@ TEST(OperationList, CreaseAndCornerOperations) {
             R"(f: ops[0] (crease): "edges" must be a list of [a, b] edges)"},
            {R"([{"op":"corner","vertices":[],"sharpness":1}])", R"(f: ops[0] (corner): "vertices" is empty)"},
            {R"([{"op":"corner","vertices":[1],"sharpness":"high"}])",
-            R"(f: ops[0] (corner): "sharpness" must be a finite number)"}}) {
+            R"(f: ops[0] (corner): "sharpness" must be a finite number)"},
+           {R"([{"op":"crease","edges":[[0,1]],"sharpness":-2}])",
+            R"(f: ops[0] (crease): "sharpness" must be 0 or more, got -2)"}}) {
     const std::string error = error_of([&, text = text] { OperationList::parse(text, "f"); });
     EXPECT_EQ(error, message) << text;
   }
   for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
            {R"([{"op":"corner","vertices":[1],"sharpness":1},{"op":"crease","edges":[[0,6]],"sharpness":1}])",
             "f: ops[1] (crease): edge 0–6 is not in the mesh"},
-           {R"([{"op":"crease","edges":[[0,1]],"sharpness":-2}])", "f: ops[0] (crease): sharpness -2 is negative"},
            {R"([{"op":"corner","vertices":[8],"sharpness":1}])",
             "f: ops[0] (corner): vertex 8 is not in the mesh (8 vertices)"}}) {
     const OperationList ops = OperationList::parse(text, "f");
