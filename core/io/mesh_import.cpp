@@ -67,7 +67,8 @@ void read_sharp_tag(std::string_view line, int number, const std::string& at, Sh
   for (int k = 0; k < 3; ++k) {
     const size_t slash = k < 2 ? rest.find('/') : std::string_view::npos;
     if ((k < 2 && slash == std::string_view::npos) || !parse_int(rest.substr(0, slash), n[k]) || n[k] < 0)
-      throw Error(at + "the " + what + " tag's counts " + quoted_token(counts) + " are not nint/nfloat/nstring");
+      throw Error(at + "the " + what + " tag's counts " + quoted_token(counts) +
+                  " are not nint/nfloat/nstring (three counts, such as 2/1/0 for a crease: its two vertices, one value)");
     if (k < 2) rest.remove_prefix(slash + 1);
   }
   SharpTags::Line tag;
@@ -162,7 +163,8 @@ Sharpness sharpness_of_tags(const SharpTags& tags, const PolygonSoup& soup, cons
           throw Error(at() + kind + " tag names vertex " + std::to_string(v) + ", but there are " + std::to_string(n) +
                       " vertices (tags number them from 0)");
       if (t.crease && (a == b || !std::binary_search(edges.begin(), edges.end(), soup_edge_key(a, b))))
-        throw Error(at() + "crease " + std::to_string(a) + "-" + std::to_string(b) + " is not an edge of the mesh");
+        throw Error(at() + "crease " + std::to_string(a) + "-" + std::to_string(b) +
+                    " is not an edge of the mesh (tags number vertices from 0; remove the tag or name an edge)");
       (t.crease ? creases : corners).push_back({std::min(a, b), std::max(a, b), s, t.number});
     }
   }
