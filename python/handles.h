@@ -13,6 +13,12 @@ namespace gps::python {
 /// gpsurf.Mesh.
 struct MeshHandle {
   std::shared_ptr<const CovarianceMesh> mesh;
+
+  // pybind11 gives an instance Python made without __init__ (Mesh.__new__(Mesh)) its storage from
+  // this operator new when a method first reads it: it then holds an empty mesh, not garbage. A
+  // construction writes over it; the empty mesh is not owned, so nothing is left behind.
+  static void* operator new(size_t size);
+  static void operator delete(void* storage) { ::operator delete(storage); }
 };
 
 /// A MeshHandle of `mesh`.
@@ -23,6 +29,10 @@ struct SurfaceHandle {
   std::shared_ptr<PlannedSurface> surface;
   std::shared_ptr<const CovarianceMesh> mesh;
   PlanOptions options;
+
+  // As MeshHandle's: made without __init__, it holds the plans of an empty mesh.
+  static void* operator new(size_t size);
+  static void operator delete(void* storage) { ::operator delete(storage); }
 };
 
 /// The surface of `mesh` planned under `options` (in the calling thread).

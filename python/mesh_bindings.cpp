@@ -102,8 +102,8 @@ py::tuple state_of(const MeshHandle& h) {
                         matrices_to_array(c.covariances), creases_of(c), double_array(c.sharpness.corners));
 }
 
-MeshHandle from_state(const py::tuple& state) {
-  if (state.size() != 6) throw py::value_error("Mesh: a pickled state of 6 items expected");
+// The mesh of a pickled state of 6 items (from_state).
+MeshHandle mesh_of_state(const py::tuple& state) {
   PolygonTopology t;
   t.offsets = state[1].cast<std::vector<int>>();
   t.verts = state[2].cast<std::vector<int>>();
@@ -119,6 +119,16 @@ MeshHandle from_state(const py::tuple& state) {
   m.sharpness.corners = corners_from(m, state[5].cast<DoubleArray>());
   m.sharpness.normalise();
   return hold(std::move(m));
+}
+
+MeshHandle from_state(const py::tuple& state) {
+  if (state.size() != 6) throw py::value_error("Mesh: a pickled state of 6 items expected");
+  try {
+    return mesh_of_state(state);
+  } catch (const py::cast_error&) {
+    throw py::type_error("Mesh: a pickled state holds positions, face offsets, face indices, covariances, creases "
+                         "and corners; an item is not of its type");
+  }
 }
 
 std::string describe(const MeshHandle& h) {
@@ -236,7 +246,14 @@ void add_mesh_bindings(py::module_& m) {
       .def(
           "__deepcopy__", [](const MeshHandle& h, const py::object&) { return MeshHandle{h.mesh}; }, py::arg("memo"))
       .def("__repr__", &describe)
-      .def(py::pickle(&state_of, &from_state));
+      .def(py::pickle(&state_of, &from_state))
+      // Every pickle protocol rebuilds the mesh through _mesh_from_state: protocols 0 and 1 would
+      // otherwise make the instance with object.__new__, which a compiled class refuses.
+      .def("__reduce__", [](const MeshHandle& h) {
+        return py::make_tuple(py::module_::import("gpsurf").attr("_mesh_from_state"),
+                              py::make_tuple(state_of(h)));
+      });
+  m.def("_mesh_from_state", &from_state, py::arg("state"), "A Mesh from its pickled state (gpsurf._mesh_from_state)");
 
   m.def(
       "read",

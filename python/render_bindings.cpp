@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <mutex>
 #include <optional>
 
 #include "core/fitting/limit_scalars.h"
@@ -132,6 +133,9 @@ FloatImage render(std::shared_ptr<const CovarianceMesh> mesh, std::shared_ptr<co
   Image matcap_image = load_matcap(r.matcap);
   const Image color = call_in_background(
       [=, matcap_image = std::move(matcap_image)](CallControl&) {
+        // One render at a time: Mesa's EGL and OSMesa do not make contexts from several threads at once.
+        static std::mutex one_context;
+        const std::lock_guard<std::mutex> only(one_context);
         const auto gl = create_offscreen_context(kind);
         SurfaceRenderer renderer;
         if (plans)

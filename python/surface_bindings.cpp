@@ -108,7 +108,7 @@ void update(SurfaceHandle& h, const MeshHandle& mesh, const py::object& changed,
   if (edited.empty()) return;
   // A surface still read by a call in the background is left to it; this one updates a copy. The
   // GIL stays held, so that no other thread takes the surface while it changes (an update is short).
-  if (h.surface.use_count() > 1) h.surface = std::make_shared<PlannedSurface>(*h.surface);
+  if (h.surface.use_count() != 1) h.surface = std::make_shared<PlannedSurface>(*h.surface);
   h.surface->update(*after, edited);
   h.mesh = after;
 }
@@ -183,7 +183,16 @@ void add_surface_bindings(py::module_& m) {
           py::arg("level") = 8,
           "Every patch evaluated at a uniform level (1..64) from the kept plans into a "
           "watertight triangle mesh: (points, normals, triangles), read-only arrays")
-      .def("__repr__", &describe);
+      .def("__repr__", &describe)
+      // Pickled as its mesh and options, planned again when loaded (every protocol: 0 and 1 would
+      // otherwise make the instance with object.__new__, which a compiled class refuses).
+      .def("__reduce__", [](const SurfaceHandle& h) {
+        const PlanOptions& o = h.options;
+        const char* scheme = !o.scheme ? "auto" : *o.scheme == Scheme::loop ? "loop" : "catmull-clark";
+        return py::make_tuple(py::module_::import("gpsurf").attr("Surface"),
+                              py::make_tuple(MeshHandle{h.mesh}, scheme, o.loop_beta == LoopBeta::warren ? "warren" : "loop",
+                                             o.depth, !o.exact));
+      });
 
   m.def(
       "tessellate",

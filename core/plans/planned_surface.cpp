@@ -23,6 +23,7 @@ PlanOptions plan_options_named(const std::string& scheme, const std::string& loo
   o.loop_beta = loop_beta == "warren" ? LoopBeta::warren : LoopBeta::loop;
   o.exact = !approximate;
   if (approximate) o.depth = 3;  // the thesis' plans
+  if (depth < -1) throw usage_error("depth must be 0..8, or -1 for the default, got " + std::to_string(depth));
   if (depth >= 0) o.depth = depth;
   if (o.depth < (approximate ? 1 : 0) || o.depth > 8)
     throw usage_error("depth must be " + std::string(approximate ? "1" : "0") + "..8, got " + std::to_string(depth));

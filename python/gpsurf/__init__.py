@@ -92,3 +92,8 @@ def _give_signatures():
 
 
 _give_signatures()
+
+
+def _mesh_from_state(state):
+    """A Mesh from its pickled state: what pickle calls to load one (Mesh.__reduce__ names it)."""
+    return _gpsurf._mesh_from_state(state)

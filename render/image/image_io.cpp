@@ -1,5 +1,6 @@
 #include "render/image/image_io.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -41,9 +42,21 @@ std::vector<std::string> read_channel_names(const std::string& path) {
   return names;
 }
 
+namespace {
+// libjpeg's largest image side (JPEG_MAX_DIMENSION): past it, its error handler ends the process.
+constexpr int kLargestJpegSide = 65500;
+}  // namespace
+
 void write_image(const std::string& path, const Image& image, const std::vector<std::string>& channel_names) {
   namespace fs = std::filesystem;
   const std::string ext = extension_of(path);
+  // The image libraries divide by the width or end the process past JPEG's size: checked first.
+  if (image.width < 1 || image.height < 1)
+    throw Error(path + ": an image needs at least one pixel, got " + std::to_string(image.width) + "x" +
+                std::to_string(image.height));
+  if ((ext == ".jpg" || ext == ".jpeg") && std::max(image.width, image.height) > kLargestJpegSide)
+    throw Error(path + ": a JPEG holds at most " + std::to_string(kLargestJpegSide) + " pixels a side, got " +
+                std::to_string(image.width) + "x" + std::to_string(image.height));
   inspect_save_target(path);  // a target a save refuses is refused before the image is encoded
   const fs::path dir = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
   // Encoded into a scratch file that keeps the extension (OpenImageIO picks the format from it), then

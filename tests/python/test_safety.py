@@ -185,3 +185,84 @@ def test_fuzz_never_loses_the_interpreter(tmp_path):
     result = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stderr[-4000:]
     assert "fuzz: ok" in result.stdout
+
+
+def run_script(script, timeout=120):
+    """`script` in a fresh interpreter: its exit status and output, a crash as a negative status."""
+    return subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=timeout)
+
+
+def test_two_threads_making_the_first_arrays_at_once_do_not_wait_on_each_other():
+    # numpy was imported by neither: the module set its C API up when it was imported.
+    script = """if True:
+        import threading, gpsurf
+        m = gpsurf.sample('cube')
+        threads = [threading.Thread(target=lambda: [m.positions for _ in range(50)]) for _ in range(4)]
+        for t in threads: t.start()
+        for t in threads: t.join()
+        print('ok')"""
+    result = run_script(script, timeout=60)
+    assert result.returncode == 0 and result.stdout == "ok\n", result.stderr
+
+
+@pytest.mark.skipif(not hasattr(gpsurf, "render"), reason="built without GL")
+def test_renders_from_several_threads_take_their_turns():
+    script = """if True:
+        import threading, gpsurf
+        m = gpsurf.sample('cube')
+        images, errors = [], []
+        def draw():
+            try:
+                images.append(gpsurf.render(m, width=48, height=32))
+            except Exception as e:
+                errors.append(repr(e))
+        threads = [threading.Thread(target=draw) for _ in range(6)]
+        for t in threads: t.start()
+        for t in threads: t.join()
+        print(len(images), errors, all((i == images[0]).all() for i in images))"""
+    result = run_script(script)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == "6 [] True\n", result.stdout + result.stderr
+
+
+def test_every_pickle_protocol_gives_the_mesh_and_the_surface_back():
+    import pickle
+
+    mesh = gpsurf.sample("cube")
+    mesh.creases = [(0, 1, 2.0)]
+    surface = gpsurf.Surface(mesh, depth=3)
+    for protocol in range(pickle.HIGHEST_PROTOCOL + 1):
+        copy = pickle.loads(pickle.dumps(mesh, protocol))
+        assert np.array_equal(copy.positions, mesh.positions) and copy.creases == mesh.creases
+        again = pickle.loads(pickle.dumps(surface, protocol))
+        assert again.n_patches == surface.n_patches
+        assert np.array_equal(again.tessellate(2)[0], surface.tessellate(2)[0])
+
+
+def test_instances_made_without_init_hold_an_empty_mesh():
+    script = """if True:
+        import gpsurf
+        m = gpsurf.Mesh.__new__(gpsurf.Mesh)
+        s = gpsurf.Surface.__new__(gpsurf.Surface)
+        print(repr(m), m.positions.shape, repr(s), s.tessellate(2)[0].shape)"""
+    result = run_script(script)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == (
+        "<gpsurf.Mesh: 0 vertices, 0 faces> (0, 3) "
+        "<gpsurf.Surface: catmull-clark, 0 patches of a mesh of 0 vertices> (0, 3)\n")
+
+
+def test_a_pickled_state_of_other_types_and_a_size_past_memory_are_refused_in_words():
+    with pytest.raises(TypeError, match="an item is not of its type"):
+        gpsurf.Mesh.__new__(gpsurf.Mesh).__setstate__((1, 2, 3, 4, 5, 6))
+    with pytest.raises(MemoryError, match="out of memory"):
+        gpsurf.Mesh(np.zeros((3, 3)), range(10**12))
+
+
+@pytest.mark.skipif(not hasattr(gpsurf, "write_image"), reason="built without GL")
+def test_images_without_pixels_or_past_jpegs_size_are_refused(tmp_path):
+    for name, shape in (("a.ppm", (0, 0, 3)), ("b.bmp", (4, 0, 3)), ("c.png", (0, 4, 3))):
+        with pytest.raises(gpsurf.Error, match="at least one pixel"):
+            gpsurf.write_image(tmp_path / name, np.zeros(shape, np.float32))
+    with pytest.raises(gpsurf.Error, match="at most 65500 pixels a side"):
+        gpsurf.write_image(tmp_path / "tall.jpg", np.zeros((70000, 1, 3), np.float32))
