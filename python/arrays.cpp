@@ -77,23 +77,44 @@ DoubleArray double_array(const std::vector<double>& values) {
   return a;
 }
 
+namespace {
+
+// The values of an integer array as int64, an unsigned one past int64's range refused with its own
+// value (it would wrap to a negative number).
+std::vector<int64_t> index_values(const py::array& array, const char* what) {
+  if (array.dtype().kind() == 'u') {
+    const auto values = py::array_t<uint64_t, py::array::c_style | py::array::forcecast>::ensure(array);
+    std::vector<int64_t> out(size_t(values.size()));
+    for (size_t i = 0; i < out.size(); ++i) {
+      const uint64_t v = values.data()[i];
+      if (v > uint64_t(std::numeric_limits<int64_t>::max()))
+        throw py::index_error(std::string(what) + ": " + std::to_string(v) + " out of range");
+      out[i] = int64_t(v);
+    }
+    return out;
+  }
+  const auto values = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
+  return std::vector<int64_t>(values.data(), values.data() + values.size());
+}
+
+}  // namespace
+
 std::vector<int> indices_of(const py::object& values, int end, const char* what) {
   const py::array array = py::array::ensure(values);
   if (!array) throw py::type_error(std::string(what) + ": expected an integer or an array of integers");
+  if (array.size() == 0 && array.ndim() == 1) return {};  // [] is an array of float64 to numpy
   const char kind = array.dtype().kind();
   if (kind != 'i' && kind != 'u')
     throw py::type_error(std::string(what) + ": expected integers, got an array of " +
                          py::str(array.dtype()).cast<std::string>());
   if (array.ndim() > 1) throw py::value_error(std::string(what) + ": expected an integer or a 1D array");
-  // uint64 values above int64's range become negative here, and are then out of range too.
-  const auto wide = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
-  std::vector<int> out(size_t(wide.size()));
+  const std::vector<int64_t> wide = index_values(array, what);
+  std::vector<int> out(wide.size());
   for (size_t i = 0; i < out.size(); ++i) {
-    const int64_t v = wide.data()[i];
-    if (v < 0 || v >= end)
-      throw py::index_error(std::string(what) + ": " + std::to_string(v) + " out of range 0.." +
+    if (wide[i] < 0 || wide[i] >= end)
+      throw py::index_error(std::string(what) + ": " + std::to_string(wide[i]) + " out of range 0.." +
                             std::to_string(int64_t(end) - 1));
-    out[i] = int(v);
+    out[i] = int(wide[i]);
   }
   return out;
 }
@@ -105,13 +126,16 @@ PolygonTopology faces_from(const py::object& faces) {
     const char kind = array.dtype().kind();
     if (array.ndim() != 2 || (kind != 'i' && kind != 'u'))
       throw py::type_error("faces: expected an (n, k) integer array or a sequence of index sequences");
-    const auto wide = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
-    const auto r = wide.unchecked<2>();
-    for (py::ssize_t f = 0; f < r.shape(0); ++f) {
-      for (py::ssize_t k = 0; k < r.shape(1); ++k) {
-        const int64_t v = r(f, k);
-        // Out of int's range: kept out of range, so the mesh names the face.
-        t.verts.push_back(v < 0 || v > std::numeric_limits<int>::max() ? -1 : int(v));
+    const std::vector<int64_t> wide = index_values(py::array::ensure(array, py::array::c_style), "faces");
+    const py::ssize_t rows = array.shape(0), columns = array.shape(1);
+    for (py::ssize_t f = 0; f < rows; ++f) {
+      for (py::ssize_t k = 0; k < columns; ++k) {
+        const int64_t v = wide[size_t(f * columns + k)];
+        if (v > std::numeric_limits<int>::max())
+          throw py::index_error("faces: face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+                                ", past the indices a mesh holds (up to " +
+                                std::to_string(std::numeric_limits<int>::max()) + ")");
+        t.verts.push_back(v < 0 ? -1 : int(v));  // negative: the mesh names the face
       }
       t.offsets.push_back(int(t.verts.size()));
     }

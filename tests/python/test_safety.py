@@ -266,3 +266,13 @@ def test_images_without_pixels_or_past_jpegs_size_are_refused(tmp_path):
             gpsurf.write_image(tmp_path / name, np.zeros(shape, np.float32))
     with pytest.raises(gpsurf.Error, match="at most 65500 pixels a side"):
         gpsurf.write_image(tmp_path / "tall.jpg", np.zeros((70000, 1, 3), np.float32))
+
+
+def test_indices_past_int64_or_int_are_named_as_given_and_an_empty_list_is_no_index():
+    mesh = gpsurf.sample("cube")
+    surface = gpsurf.Surface(mesh)
+    with pytest.raises(IndexError, match="patches: 18446744073709551615 out of range"):
+        surface.evaluate(np.array([2**64 - 1], np.uint64), 0.5, 0.5)
+    with pytest.raises(IndexError, match="face 0 refers to vertex 4294967298"):
+        gpsurf.Mesh(mesh.positions, np.array([[0, 1, 2**32 + 2]], np.int64))
+    surface.update(mesh, changed=[])  # nothing changed, nothing named
