@@ -111,7 +111,10 @@ auto call_in_background(Work work, const py::object& progress, bool stops_prompt
       bool go_on = true;
       try {
         const py::object answer = progress(fraction);
-        go_on = answer.is_none() || PyObject_IsTrue(answer.ptr()) == 1;
+        // An answer whose truth raises (a numpy array of several values) raises, not cancels.
+        const int truth = answer.is_none() ? 1 : PyObject_IsTrue(answer.ptr());
+        if (truth < 0) throw py::error_already_set();
+        go_on = truth == 1;
       } catch (...) {
         stop();
         throw;

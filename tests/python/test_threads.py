@@ -80,6 +80,9 @@ def test_progress_is_reported_and_a_false_answer_cancels(sphere):
 
     with pytest.raises(ZeroDivisionError, match="from the callback"):
         gpsurf.simplify(sphere, 500, progress=failing)
+    # An answer whose truth raises raises too (it once read as False, cancelling without a word).
+    with pytest.raises(ValueError, match="truth value"):
+        gpsurf.simplify(sphere, 500, progress=lambda fraction: np.array([True, False]))
     fitted = []
     gpsurf.fit(gpsurf.sample("icosphere", 80), sphere, iterations=2, progress=fitted.append)
     assert fitted[-1] == 1.0
