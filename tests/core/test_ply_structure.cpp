@@ -8,6 +8,7 @@
 
 #include "core/io/mesh_io.h"
 #include "core/io/ply_io.h"
+#include "core/io/polygon_soup.h"
 #include "core/support/error.h"
 #include "core/modelling/samples.h"
 #include "tests/support/temp_dir.h"
@@ -88,22 +89,35 @@ TEST(PlyStructure, DuplicatesInTheHeaderAreRefused) {
 }
 
 // More face corners than a manifold mesh on the vertices has (3 vertices: 6) are refused where they
-// pass that count, before the rest of the file is held (a later face out of range is not reached),
-// as faces, as a triangle strip, and with the faces before the vertices.
+// pass that count and kCornersReadWhole, before the rest of the file is held (a later face out of
+// range is not reached), as faces, as a triangle strip, and with the faces before the vertices. A
+// smaller file is read whole, for the repair to mend.
 TEST(PlyStructure, AFaceRepeatedIsRefusedWhereTheCornersPassAManifoldsCount) {
-  const std::string faces = "element face 5\nproperty list uchar int vertex_indices\n";
-  const std::string repeated = kFace + kFace + kFace + kFace + "3 0 1 7\n";
+  const size_t passing = kCornersReadWhole / 3;  // the face whose corners pass the count
+  std::string repeated;
+  for (size_t f = 0; f <= passing; ++f) repeated += kFace;
+  repeated += "3 0 1 7\n";
+  const std::string faces = "element face " + std::to_string(passing + 2) + "\nproperty list uchar int vertex_indices\n";
   const std::string message =
       error_of([&] { parse_ply(ascii_ply(kVertexElement + faces, kVertices + repeated), "r.ply"); });
   EXPECT_NE(message.find("r.ply: face "), std::string::npos) << message;
   EXPECT_NE(message.find("non-manifold"), std::string::npos) << message;
   EXPECT_EQ(error_of([&] { parse_ply(ascii_ply(faces + kVertexElement, repeated + kVertices), "first.ply"); }),
-            "first.ply: line 18: face 2 makes the mesh non-manifold (more face corners than 3 vertices can have)");
+            "first.ply: line " + std::to_string(16 + passing) + ": face " + std::to_string(passing) +
+                " makes the mesh non-manifold (more face corners than 3 vertices can have)");
   const std::string strip = "element tristrips 2\nproperty list int int vertex_indices\n";
+  std::string long_strip = std::to_string(passing + 3);
+  for (size_t i = 0; i < passing + 3; ++i) long_strip += " " + std::to_string(i % 3);
   EXPECT_NE(error_of([&] {
-              parse_ply(ascii_ply(kVertexElement + strip, kVertices + "8 0 1 2 0 1 2 0 1\n3 0 1 7\n"), "s.ply");
+              parse_ply(ascii_ply(kVertexElement + strip, kVertices + long_strip + "\n3 0 1 7\n"), "s.ply");
             }).find("non-manifold"),
             std::string::npos);
+  const std::string few = "element face 5\nproperty list uchar int vertex_indices\n";
+  EXPECT_EQ(error_of([&] {
+              parse_ply(ascii_ply(kVertexElement + few, kVertices + kFace + kFace + kFace + kFace + "3 0 1 7\n"), "f.ply");
+            }),
+            "f.ply: line 23: face 4 refers to vertex 7, but there are 3 vertices")
+      << "read whole, to the face out of range";
 }
 
 // Gaussians without faces have no surface to draw: refused when read, as a plain mesh without faces is.
