@@ -243,6 +243,34 @@ bool neighbours(const std::vector<std::vector<int>>& pieces, int x, int y) {
   return false;
 }
 
+// Whether two of the chords of face f cross (or one crosses itself) between their vertices, seen
+// along the face's normal: a cut so drawn would make pieces whose edges cross, which the split
+// along the chords' vertices alone does not see. Segments that share a vertex do not count.
+bool chords_cross(const MeshArrays& a, int f, const std::vector<std::vector<int>>& chords) {
+  const Vec3 n = newell_normal(a, f), x = n.unitOrthogonal(), y = n.cross(x);
+  struct Segment {
+    int u, w;
+    Eigen::Vector2d p, q;
+  };
+  std::vector<Segment> segments;
+  for (const std::vector<int>& chord : chords)
+    for (size_t k = 0; k + 1 < chord.size(); ++k) {
+      const Vec3 &p = a.means[size_t(chord[k])], &q = a.means[size_t(chord[k + 1])];
+      segments.push_back({chord[k], chord[k + 1], {p.dot(x), p.dot(y)}, {q.dot(x), q.dot(y)}});
+    }
+  const auto side = [](const Eigen::Vector2d& o, const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+    const double d = (p - o).x() * (q - o).y() - (p - o).y() * (q - o).x();
+    return (d > 0) - (d < 0);
+  };
+  for (size_t i = 0; i < segments.size(); ++i)
+    for (size_t j = i + 1; j < segments.size(); ++j) {
+      const Segment &s = segments[i], &t = segments[j];
+      if (s.u == t.u || s.u == t.w || s.w == t.u || s.w == t.w) continue;
+      if (side(s.p, s.q, t.p) * side(s.p, s.q, t.q) < 0 && side(t.p, t.q, s.p) * side(t.p, t.q, s.q) < 0) return true;
+    }
+  return false;
+}
+
 }  // namespace
 
 Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
@@ -325,6 +353,7 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
       }
     }
     std::vector<std::vector<int>> pieces = {cycle};
+    if (chords_cross(a, f, chords[f])) throw Error("the cut crosses itself in face " + std::to_string(f));
     for (const std::vector<int>& c : chords[f]) {
       if (c.size() == 2 && neighbours(pieces, c[0], c[1])) continue;  // along an edge already there
       if (!split_along(pieces, c)) throw Error("the cut crosses itself in face " + std::to_string(f));
