@@ -16,8 +16,8 @@ void add_diff_command(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("diff", gl_command_summary("diff"));
-  cmd->add_option("a", args->a, "first AOV image (.exr)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("b", args->b, "second AOV image (.exr)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("a", args->a, "first AOV image (.exr)")->required();
+  cmd->add_option("b", args->b, "second AOV image (.exr)")->required();
   cmd->add_option("-o,--output", args->output, "difference image (.png)")->required();
   cmd->add_option("--kind", args->kind, "what the AOVs hold (auto: from the channel names render --aov writes)")
       ->check(CLI::IsMember({"auto", "position", "normal"}));
@@ -26,13 +26,7 @@ void add_diff_command(CLI::App& app) {
   cmd->add_option("--threshold", args->threshold, "count pixels whose difference exceeds this (unscaled)")
       ->check(non_negative_number());
   cmd->callback([args] {
-    Image a, b;
-    try {
-      a = read_image(args->a);
-      b = read_image(args->b);
-    } catch (const Error& e) {
-      throw usage_error(e.what());
-    }
+    const Image a = read_image(args->a), b = read_image(args->b);
     if (args->kind == "auto") {
       const auto kind_of = [](const std::string& path) {
         const auto names = read_channel_names(path);
@@ -41,7 +35,12 @@ void add_diff_command(CLI::App& app) {
       const std::string ka = kind_of(args->a), kb = kind_of(args->b);
       if (!ka.empty() && !kb.empty() && ka != kb)
         throw usage_error(args->a + " holds " + ka + "s but " + args->b + " holds " + kb + "s");
-      args->kind = !ka.empty() ? ka : !kb.empty() ? kb : "position";
+      // An image that is no AOV of gpsurf render (a colour image, say) tells no kind: say which.
+      for (const auto& [path, kind] : {std::pair{args->a, ka}, std::pair{args->b, kb}})
+        if (kind.empty())
+          throw usage_error(path + " is not a position or normal AOV of gpsurf render (--aov); give --kind to compare "
+                                   "it as one");
+      args->kind = ka;
     }
     const AovKind kind = args->kind == "normal" ? AovKind::normal : AovKind::position;
     const double factor = args->factor > 0 ? args->factor : (kind == AovKind::normal ? 5000.0 : 200.0);

@@ -1,6 +1,7 @@
 // gpsurf render IN -o OUT.png: a headless render of the GPS limit surface (OSMesa, no display).
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -68,12 +69,20 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
                 const CovarianceMesh& mesh) {
   const auto [width, height] = parse_pixel_size(a.size);
   std::string position_aov, normal_aov;
+  // Each file written once: an AOV given twice, or two outputs at one path, would overwrite one another.
+  std::vector<std::filesystem::path> written = {std::filesystem::absolute(a.output).lexically_normal()};
   for (const auto& aov : a.aovs) {
     const auto eq = aov.find('=');
     const std::string kind = aov.substr(0, eq), file = eq == std::string::npos ? "" : aov.substr(eq + 1);
     if (file.empty() || (kind != "position" && kind != "normal"))
-      throw usage_error("--aov: expected position=FILE.exr or normal=FILE.exr, got '" + aov + "'");
-    (kind == "position" ? position_aov : normal_aov) = file;
+      throw usage_error("--aov: expected position=FILE.exr or normal=FILE.exr, got " + quoted_token(aov));
+    std::string& path = kind == "position" ? position_aov : normal_aov;
+    if (!path.empty()) throw usage_error("--aov: " + kind + " is given twice");
+    path = file;
+    const std::filesystem::path normal = std::filesystem::absolute(file).lexically_normal();
+    if (std::find(written.begin(), written.end(), normal) != written.end())
+      throw usage_error("--aov: " + quoted_token(file) + " is written twice (as the image or another AOV)");
+    written.push_back(normal);
   }
   const auto bg = parse_floats(a.background, "--background", 3, 3);
   for (const float channel : bg)
@@ -214,10 +223,18 @@ std::vector<double> script_numbers(const nlohmann::json& edit, const char* key, 
   return out;
 }
 
+// The keys a render script's job may have (run_script).
+constexpr const char* kScriptKeys[] = {"mesh",     "output",    "size",    "level",      "pixels",     "depth",
+                                       "approximate", "scheme", "loop_beta", "repair",  "weld",       "matcap",
+                                       "mode",     "camera",    "up",      "mesh_lines", "wireframe",  "ellipsoids",
+                                       "sigma",    "background", "aov",    "reference",  "exact",      "ops",
+                                       "edits"};
+
 void run_script(const std::string& path, const std::string& context_name) {
+  const std::string text = read_text_file(path);  // a file that cannot be read: exit 1, as for a mesh
   nlohmann::json script;
   try {
-    script = parse_json(read_text_file(path), path);
+    script = parse_json(text, path);
   } catch (const Error& e) {
     throw usage_error(e.what());
   }
@@ -230,6 +247,11 @@ void run_script(const std::string& path, const std::string& context_name) {
     const std::string where = path + ": render " + std::to_string(index++);
     try {
       RenderArgs a;
+      if (!job.is_object()) throw usage_error("expected an object");
+      for (const auto& [key, value] : job.items())
+        if (std::find(std::begin(kScriptKeys), std::end(kScriptKeys), key) == std::end(kScriptKeys))
+          throw usage_error("unknown key " + quoted_token(key));
+      if (job.contains("camera") && job["camera"] == "") throw usage_error("camera: give \"yaw,pitch[,distance]\", got \"\"");
       a.input = script_value(job, "mesh", std::string());
       if (a.input.empty()) throw usage_error("mesh is missing");
       a.output = script_value(job, "output", std::string());
@@ -298,10 +320,9 @@ void add_render_command(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
   auto* cmd = app.add_subcommand("render", gl_command_summary("render"));
   auto script = std::make_shared<std::string>();
-  auto* input = cmd->add_option("input", a->input, "input mesh")->check(CLI::ExistingFile);
+  auto* input = cmd->add_option("input", a->input, "input mesh");
   auto* output = cmd->add_option("-o,--output", a->output, "output image (.png)");
   cmd->add_option("--script", *script, "run the renders listed in a JSON file, in one process and one context")
-      ->check(CLI::ExistingFile)
       ->excludes(input)
       ->excludes(output);
   cmd->add_option("--size", a->size, "image size WxH");
@@ -321,7 +342,8 @@ void add_render_command(CLI::App& app) {
         return s;
       }() + ") or an image file");
   cmd->add_option("--mode", a->mode, "shading")->check(CLI::IsMember({"matcap", "normals", "flat"}));
-  cmd->add_option("--camera", a->camera, "orbit yaw,pitch[,distance] in degrees (default: auto-framed 30,20)");
+  auto* camera =
+      cmd->add_option("--camera", a->camera, "orbit yaw,pitch[,distance] in degrees (default: auto-framed 30,20)");
   cmd->add_option("--up", a->up, "the world axis drawn upward (z for most scans; default y)")
       ->check(CLI::IsMember({"x", "y", "z"}));
   cmd->add_flag("--mesh", a->mesh_lines, "draw the base mesh as thin grey lines");
@@ -346,7 +368,8 @@ void add_render_command(CLI::App& app) {
          "draw the patches' own triangles with the CPU's exact values at their vertices (double): diff against a "
          "render of the patches shows the GPU's error alone, at any level and under either scheme")
       ->excludes(reference);
-  cmd->callback([a, script] {
+  cmd->callback([a, script, camera] {
+    if (camera->count() > 0 && a->camera.empty()) throw usage_error("--camera: give yaw,pitch[,distance], got ''");
     if (!script->empty()) return run_script(*script, a->context);
     if (a->input.empty() || a->output.empty())
       throw usage_error("render: give an input mesh and -o OUTPUT.png (or --script FILE.json)");

@@ -457,16 +457,28 @@ TEST(RenderCli, BadInputIsAUsageError) {
                      " --size 24x16 --aov position=" + dir.file("b.exr")));
   const std::string mesh = dir.file("c.ply"), out = " -o " + dir.file("x.png");
   for (const std::string& args : std::vector<std::string>{
-           "render " + dir.file("missing.ply") + out, "render " + mesh + out + " --matcap velvet",
-           "render " + mesh + out + " --level 0", "render " + mesh + out + " --level 65",
-           "render " + mesh + out + " --size 10by10", "render " + mesh + out + " --aov depth=" + dir.file("d.exr"),
-           "render " + mesh + out + " --mode toon", "render " + mesh + out + " --background 2,0,0",
-           "render " + mesh + out + " --background 0,-1,0", "render " + mesh + out + " --camera 30,20,-1",
-           "render " + mesh + out + " --camera 30,20,0", "diff " + dir.file("a.exr") + " " + dir.file("missing.exr") + out,
+           "render " + mesh + out + " --matcap velvet", "render " + mesh + out + " --level 0",
+           "render " + mesh + out + " --level 65", "render " + mesh + out + " --size 10by10",
+           "render " + mesh + out + " --aov depth=" + dir.file("d.exr"), "render " + mesh + out + " --mode toon",
+           "render " + mesh + out + " --background 2,0,0", "render " + mesh + out + " --background 0,-1,0",
+           "render " + mesh + out + " --camera 30,20,-1", "render " + mesh + out + " --camera 30,20,0",
+           "render " + mesh + out + " --camera ''", "render " + mesh + out + " --aov position=" + dir.file("x.png"),
+           "render " + mesh + out + " --aov normal=" + dir.file("n.exr") + " --aov normal=" + dir.file("m.exr"),
+           "diff " + dir.file("a.exr") + " " + dir.file("a.png") + out,
            "diff " + dir.file("a.exr") + " " + dir.file("b.exr") + out}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << ": " << r.output;
+  }
+  // A file that is not there is a failure to read it, as in every command (exit 1).
+  for (const std::string& args :
+       std::vector<std::string>{"render " + dir.file("missing.ply") + out,
+                                "diff " + dir.file("a.exr") + " " + dir.file("missing.exr") + out,
+                                "render --script " + dir.file("missing.json")}) {
+    const auto r = run_command(gpsurf(args));
+    EXPECT_EQ(r.exit_code, 1) << args << ": " << r.output;
+    EXPECT_NE(r.output.find("missing."), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(": no such file"), std::string::npos) << r.output;
   }
 }
 
