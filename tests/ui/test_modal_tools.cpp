@@ -358,6 +358,26 @@ TEST(SlideTool, GPressedAgainDuringAGrabSlides) {
       test::same_mesh(editor.document.mesh(), edge_slide(cut.mesh, edges_within(cut.mesh, cut.loop), 0.5).mesh));
 }
 
+// A typed scale past what a covariance mesh holds (1e300: coordinates beyond ±1e100) is refused when
+// confirmed, saying why, the mesh as it was; a typed exponent is read as one (1e2 is 100, not 12).
+TEST(TransformTool, AScalePastTheMeshsRangeIsRefusedAndAnExponentIsRead) {
+  Editor editor(cube(), {0, 1, 2, 3, 4, 5, 6, 7});
+  {
+    ToolContext c = editor.context();
+    TransformTool scale(TransformKind::scale, TransformPivot::median, c);
+    editor.type(scale, "1e300");
+    EXPECT_EQ(editor.send(scale, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  }
+  EXPECT_EQ(editor.said.rfind("transform refused: vertex 0 would have a coordinate 1e+300 beyond ±1e+100", 0), 0u)
+      << editor.said;
+  EXPECT_TRUE(test::same_mesh(editor.document.mesh(), cube()));
+  ToolContext c = editor.context();
+  TransformTool scale(TransformKind::scale, TransformPivot::median, c);
+  editor.type(scale, "1e2");
+  EXPECT_EQ(editor.send(scale, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_NEAR(editor.document.mesh().mean(0).norm(), 100.0 * cube().mean(0).norm(), 1e-9);
+}
+
 InputEvent mouse_event(InputEvent::Type type, glm::vec2 at) {
   InputEvent e;
   e.type = type;

@@ -1,5 +1,5 @@
-// The number typed into a modal tool: digits, point and minus as text, Backspace, and its value or
-// NaN while it is not yet a number.
+// The number typed into a modal tool: digits, point, minus and exponent as text, Backspace, and its
+// value or NaN while it is not yet a number.
 #include "ui/tools/typed_number.h"
 
 #include <GLFW/glfw3.h>
@@ -27,11 +27,22 @@ TEST(TypedNumber, DigitsPointAndMinusMakeTheValue) {
 TEST(TypedNumber, OtherCharactersAndKeysAreNotTaken) {
   TypedNumber typed;
   EXPECT_FALSE(typed.handle(text_event('x')));
-  EXPECT_FALSE(typed.handle(text_event('e')));  // no exponents: E is a command key
+  EXPECT_FALSE(typed.handle(text_event('e')));  // an exponent needs a digit before it
   EXPECT_FALSE(typed.handle(key_event(GLFW_KEY_ENTER)));
   EXPECT_FALSE(typed.handle(key_event(GLFW_KEY_BACKSPACE)));  // nothing to take back
   EXPECT_TRUE(typed.empty());
   EXPECT_EQ(typed.shown(), "");
+}
+
+// "1e9" is a billion, not 19: the exponent once, after a digit (it was dropped, leaving "19").
+TEST(TypedNumber, AnExponentAfterADigitIsTaken) {
+  TypedNumber typed;
+  for (const char c : std::string("1e9")) EXPECT_TRUE(typed.handle(text_event(c)));
+  EXPECT_EQ(typed.value(), 1e9);
+  EXPECT_FALSE(typed.handle(text_event('e')));
+  TypedNumber small;
+  for (const char c : std::string("2.5e-3")) EXPECT_TRUE(small.handle(text_event(c)));
+  EXPECT_EQ(small.value(), 2.5e-3);
 }
 
 TEST(TypedNumber, BackspaceTakesTheLastCharacterBack) {

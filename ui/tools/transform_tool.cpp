@@ -215,6 +215,20 @@ void TransformTool::end(bool keep, ToolContext& ctx) {
     if (folds_) make_adjustable(Vec3::Zero(), ctx);
     return;
   }
+  // A typed amount can carry a vertex past what a covariance mesh holds (a scale of 1e300): refused as
+  // core's transform refuses it, nothing changed by the move.
+  for (const ReachedVertex& r : reach_) {
+    const CovarianceMesh& mesh = ctx.document.mesh();
+    std::string why = position_problem(mesh.mean(size_t(r.vertex)));
+    if (why.empty()) why = covariance_problem(mesh.covariance(size_t(r.vertex)));
+    if (why.empty()) continue;
+    ctx.document.cancel_edit();
+    ctx.report("transform refused: vertex " + std::to_string(r.vertex) + " would have " +
+                   (why.rfind("has ", 0) == 0 ? why.substr(4) : why) + "; nothing moved",
+               true);
+    if (folds_) make_adjustable(Vec3::Zero(), ctx);
+    return;
+  }
   if (folds_) {
     ctx.document.commit_edit_into_last_operation(ctx.selection.record());
     make_adjustable(transform_->map(0).translation, ctx);

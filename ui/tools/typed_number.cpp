@@ -12,7 +12,10 @@ namespace gps {
 bool TypedNumber::handle(const InputEvent& e) {
   if (e.type == InputEvent::Type::text) {
     const unsigned c = e.codepoint;
-    if (!((c >= '0' && c <= '9') || c == '.' || c == '-')) return false;
+    // An exponent after a digit ("1e9", "2.5e-3"), once: dropped, the text would read another number.
+    const bool exponent = (c == 'e' || c == 'E') && text_.find_first_of("0123456789") != std::string::npos &&
+                          text_.find_first_of("eE") == std::string::npos;
+    if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || exponent)) return false;
     text_ += char(c);
     return true;
   }

@@ -1,5 +1,5 @@
 #pragma once
-// A number typed into a modal tool, as Blender takes one: digits, a point and a minus arrive as text,
+// A number typed into a modal tool, as Blender takes one: digits, a point, a minus and an exponent arrive as text,
 // Backspace takes the last one back; the text is shown in the status bar and its value replaces the mouse's.
 #include <string>
 
@@ -9,7 +9,8 @@ namespace gps {
 
 class TypedNumber {
 public:
-  /// Takes a digit, '.' or '-' (text events) or Backspace (with something typed); false for any other event.
+  /// Takes a digit, '.', '-' or an exponent's 'e' after a digit (text events) or Backspace (with something
+  /// typed); false for any other event.
   bool handle(const InputEvent& event);
   const std::string& text() const { return text_; }
   bool empty() const { return text_.empty(); }
