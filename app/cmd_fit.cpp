@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
@@ -69,7 +70,7 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option(
          "--max-sigma", args->max_sigma,
          "greatest standard deviation of each Gaussian, over the mean length of its vertex's edges (default 1)")
-      ->check(positive_number(INFINITY));
+      ->check(number_in(1e-6, 1e6));
   auto* level = cmd->add_option("--level", args->level,
                                 "tessellation level of the limit surface the final report measures (0: no report; "
                                 "default 8, lower where that would make more than 2 million triangles)")
@@ -79,6 +80,12 @@ void add_fit_command(CLI::App& app) {
   add_plan_arguments(cmd, args->plans);
   add_repair_arguments(cmd, args->repair);
   cmd->callback([args, level] {
+    if (!(args->min_sigma < args->max_sigma)) {
+      std::ostringstream said;
+      said << "--min-sigma " << args->min_sigma << " must be below --max-sigma " << args->max_sigma
+           << " (defaults 0.35 and 1)";
+      throw usage_error(said.str());
+    }
     const CovarianceMesh coarse = read_mesh_repairing(args->coarse, args->repair, {}, args->quiet, true);
     const std::vector<Vec3> targets = read_points(args->target);  // whatever its faces
     FitOptions options;

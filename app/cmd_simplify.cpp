@@ -6,6 +6,7 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
+#include "core/support/quoted_text.h"
 #include "app/naming_input.h"
 #include "app/repair_arguments.h"
 #include "app/terminal_progress.h"
@@ -77,7 +78,7 @@ void add_simplify_command(CLI::App& app) {
                               : ratio->count() > 0  ? size_t(std::llround(args->ratio * double(input.n_vertices())))
                                                     : 4;
     if (options.target_vertices < 4)
-      throw usage_error(escaped(args->input) + ": --ratio " + std::to_string(args->ratio) +
+      throw usage_error(escaped(args->input) + ": --ratio " + quoted_token(ratio->as<std::string>()) +
                         " keeps fewer than 4 of its " + std::to_string(input.n_vertices()) + " vertices");
     TerminalProgress progress("simplifying", args->quiet);
     options.progress = progress.report();
@@ -92,7 +93,8 @@ void add_simplify_command(CLI::App& app) {
     if (args->quiet) return;
     if (s.triangulated) std::cout << "fanned the faces of more than 3 sides into triangles\n";
     std::cout << "simplified " << s.input_vertices << " vertices, " << s.input_triangles << " triangles to "
-              << s.mesh.n_vertices() << " vertices, " << s.mesh.n_faces() << " triangles";
+              << s.mesh.n_vertices() << " vertices, " << s.mesh.n_faces() + s.quads
+              << " triangles";  // before --quads joined pairs of them
     if (error->count() > 0 && s.mesh.n_vertices() > options.target_vertices)
       std::cout << " (no further collapse keeps within --error " << args->error
                 << ", the topology, manifoldness and face orientations)";

@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
   app.add_option("--play", o.play, "replay recorded input (EVENTS.json), then exit")->check(CLI::ExistingFile);
   app.add_option("--record", o.record, "record the session's input to EVENTS.json (written on exit)");
   app.add_option("--screenshot", o.screenshot, "after the events, write the window to this PNG and exit");
-  app.add_option("--save", o.save, "after the events, save the mesh here (.ply) and exit");
+  auto* save = app.add_option("--save", o.save, "after the events, save the mesh here (.ply) and exit");
   app.add_option("--stats", o.stats, "on exit, write frame time and edit-to-frame time (medians) to this JSON file");
   app.add_option("--size", size, "window size WxH in pixels");
   app.add_flag("--no-vsync", no_vsync, "draw as fast as possible");
@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
       [](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + std::string(e.what()) + "\n"; });
   try {
     app.parse(argc, argv);
+    if (save->count() > 0 && o.save.empty()) throw CLI::ValidationError("--save", "give a file to save to, got ''");
     const gps::PixelSize window = gps::parse_pixel_size(size);
     o.width = window.width;
     o.height = window.height;

@@ -1,10 +1,15 @@
 #include "app/plan_arguments.h"
 
 #include "app/cli_checks.h"
+#include "core/support/error.h"
 
 namespace gps {
 
-PlanOptions PlanArguments::options() const { return plan_options_named(scheme, loop_beta, depth, approximate); }
+PlanOptions PlanArguments::options() const {
+  // The options' own check, in the command line's words: --depth 0 is refused with --approximate alone.
+  if (approximate && depth == 0) throw usage_error("--depth: with --approximate the depth is 1..8, got '0'");
+  return plan_options_named(scheme, loop_beta, depth, approximate);
+}
 
 void add_plan_arguments(CLI::App* cmd, PlanArguments& a) {
   cmd->add_option(

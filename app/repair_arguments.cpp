@@ -32,7 +32,7 @@ CovarianceMesh read_mesh_repairing(const std::string& path, const RepairArgument
   std::vector<std::string> notes;
   CovarianceMesh mesh = read_mesh(path, o, &report, &notes);
   bar.finish();
-  print_reader_notes(notes);
+  if (!quiet) print_reader_notes(notes);  // --quiet prints only errors
   if (o.repair && !quiet) {
     const std::string prefix = "repair: " + (name_file ? escaped(path) + ": " : std::string());
     const auto lines = report.lines();

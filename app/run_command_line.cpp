@@ -50,13 +50,55 @@ std::vector<std::string> empty_values_split(const CLI::App& app, int argc, char*
   return args;
 }
 
+// Names a word CLI11 would report in its own terms or behind another fault first: a command that is
+// not one ("A subcommand is required"), an option the command does not know (after a missing input,
+// "file is required"). Values, negative numbers among them, follow the options that take them.
+void check_words(const CLI::App& app, const std::vector<std::string>& args) {
+  const CLI::App* command = nullptr;
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg == "--") return;
+    if (command == nullptr) {
+      if (arg.starts_with("-")) {
+        if (app.get_option_no_throw(arg.substr(0, arg.find('='))) != nullptr) return;  // --help, --version: CLI11's
+        throw usage_error("unknown option " + quoted_token(arg) + " (a command comes first: gpsurf --help lists them)");
+      }
+      try {
+        command = app.get_subcommand(arg);
+      } catch (const CLI::OptionNotFound&) {
+        throw usage_error(quoted_token(arg) + " is not a command of gpsurf (gpsurf --help lists them)");
+      }
+      continue;
+    }
+    if (arg.size() < 2 || arg[0] != '-' || (arg[1] >= '0' && arg[1] <= '9') || arg[1] == '.') continue;
+    const std::string name = arg.substr(0, arg.find('='));
+    const CLI::Option* option = command->get_option_no_throw(name);
+    if (option == nullptr) {
+      if (name == "-h" || name == "--help" || name == "--help-all") return;
+      throw usage_error("unknown option " + quoted_token(name) + " (gpsurf " + command->get_name() +
+                        " --help lists them)");
+    }
+    if (option->get_type_size_max() > 0 && name.size() == arg.size()) ++i;  // its value, whatever it looks like
+  }
+}
+
+// CLI11's message in ours where it has its own wording.
+std::string in_our_words(const std::string& message) {
+  const std::string at_most = ": At Most 1 required but received ";
+  if (const size_t at = message.find(at_most); at != std::string::npos)
+    return message.substr(0, at) + " is given " + message.substr(at + at_most.size()) + " times; give it once";
+  return message;
+}
+
 }  // namespace
 
 int run_command_line(CLI::App& app, int argc, char** argv) {
   // Every message is escaped once more here, so that whatever it quotes it stays one harmless line.
-  app.failure_message([](const CLI::App*, const CLI::Error& e) { return "gpsurf: " + escaped(e.what()) + "\n"; });
+  app.failure_message(
+      [](const CLI::App*, const CLI::Error& e) { return "gpsurf: " + escaped(in_our_words(e.what())) + "\n"; });
   try {
     std::vector<std::string> args = empty_values_split(app, argc, argv);
+    check_words(app, args);
     std::vector<char*> arg_pointers;
     for (std::string& arg : args) arg_pointers.push_back(arg.data());
     app.parse(int(arg_pointers.size()), arg_pointers.data());

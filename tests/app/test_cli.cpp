@@ -293,5 +293,24 @@ TEST(Cli, ACovarianceMeshWithoutFacesIsRefused) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("t.ply")));
 }
 
+// A word the command line does not know is named in our words before anything else is checked: a
+// command that is not one, an option before any command, an option the command does not have (not
+// "file is required"), and an option given twice. A value that looks like an option (a negative
+// number after an option that takes one) is still the option's value.
+TEST(Cli, UnknownWordsAreNamedFirst) {
+  test::TempDir dir;
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"bogus", "gpsurf: 'bogus' is not a command of gpsurf (gpsurf --help lists them)"},
+           {"-x", "gpsurf: unknown option '-x' (a command comes first: gpsurf --help lists them)"},
+           {"info --bogus", "gpsurf: unknown option '--bogus' (gpsurf info --help lists them)"},
+           {"sample cube -o " + dir.file("c.ply") + " --size 5 --size 6", "gpsurf: --size is given 2 times; give it once"},
+           {"sample cube -o " + dir.file("c.ply") + " --size -5", "gpsurf: --size: "}}) {
+    const auto r = run_command(gpsurf(args));
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
+    EXPECT_EQ(r.output.rfind(message, 0), 0u) << args << ": " << r.output;
+    EXPECT_EQ(test::line_count(r.output), 1u) << r.output;
+  }
+}
+
 }  // namespace
 }  // namespace gps
