@@ -53,14 +53,16 @@ std::vector<float> parse_floats(const std::string& text, const char* what, size_
   std::stringstream in(text);
   for (std::string item; std::getline(in, item, ',');) {
     double value = 0;
-    if (!parse_number(item, value).empty() || !std::isfinite(value) ||
-        std::abs(value) > std::numeric_limits<float>::max())
+    if (!parse_number(item, value).empty() || !std::isfinite(value))
       throw usage_error(std::string(what) + ": " + quoted_token(text) + " is not a comma-separated list of numbers");
+    if (std::abs(value) > std::numeric_limits<float>::max())
+      throw usage_error(std::string(what) + ": " + quoted_token(item) + " is beyond the range of a float");
     values.push_back(float(value));
   }
   if (values.size() < min_count || values.size() > max_count)
-    throw usage_error(std::string(what) + ": expected " + std::to_string(min_count) + " to " +
-                      std::to_string(max_count) + " numbers, got " + quoted_token(text));
+    throw usage_error(std::string(what) + ": expected " + std::to_string(min_count) +
+                      (max_count > min_count ? " to " + std::to_string(max_count) : std::string()) +
+                      " numbers, got " + quoted_token(text));
   return values;
 }
 

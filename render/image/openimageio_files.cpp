@@ -12,9 +12,17 @@ namespace {
 
 std::string oiio_error() { return OIIO::geterror().substr(0, 120); }
 
+// Why `path` did not open as an image, in our words where OpenImageIO's are about itself.
+std::string open_problem(const std::string& path) {
+  const std::string why = oiio_error();
+  if (why.find("could not find a format reader") != std::string::npos)
+    return path + ": cannot read the image (not an image format gpsurf reads: PNG, EXR, JPEG, TIFF, ...)";
+  return path + ": cannot read the image (" + why + ")";
+}
+
 std::string read(const std::string& path, Image& image) {
   auto in = OIIO::ImageInput::open(path);
-  if (!in) return path + ": cannot read the image (" + oiio_error() + ")";
+  if (!in) return open_problem(path);
   const OIIO::ImageSpec& spec = in->spec();
   if (const std::string problem = image_size_problem(spec.width, spec.height, spec.nchannels); !problem.empty())
     return path + ": cannot read the image data (" + problem + ")";
@@ -29,7 +37,7 @@ std::string read(const std::string& path, Image& image) {
 
 std::string channel_names(const std::string& path, std::vector<std::string>& names) {
   auto in = OIIO::ImageInput::open(path);
-  if (!in) return path + ": cannot read the image (" + oiio_error() + ")";
+  if (!in) return open_problem(path);
   names = in->spec().channelnames;
   return "";
 }
