@@ -1,8 +1,10 @@
 // gpsurf bench: the command line and the printed tables of the figures bench/ measures: --preprocess
 // (bench/preprocess_figures.h), --render (bench/frame_figures.h), --edit (bench/edit_figures.h).
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <map>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "app/cli_checks.h"
@@ -18,12 +20,14 @@
 #include "core/modelling/samples.h"
 #include "render/gl/gl_context.h"
 #include "render/image/line_plot.h"
+#include "core/io/save_target.h"
+#include "core/support/quoted_text.h"
 
 namespace gps {
 
 namespace {
 
-// "NAME" or "NAME:FACES" (FACES 0: the sample's default size), checked against the samples.
+// "NAME" or "NAME:FACES" (0 in the list: the sample's default size), checked against the samples.
 std::vector<std::pair<std::string, int>> sample_list(const std::vector<std::string>& specs) {
   std::vector<std::pair<std::string, int>> list;
   for (const std::string& spec : specs) {
@@ -35,6 +39,7 @@ std::vector<std::pair<std::string, int>> sample_list(const std::vector<std::stri
       if (count.empty() || count.size() > 8 || count.find_first_not_of("0123456789") != std::string::npos)
         throw usage_error("bench: '" + spec + "' is not NAME or NAME:FACES");
       faces = std::stoi(count);
+      if (faces < 1) throw usage_error("bench: " + quoted_token(spec) + " asks for no faces (NAME:FACES, FACES from 1)");
       if (!sample_has_size(name)) throw usage_error("bench: the sample '" + name + "' has no size to set");
     }
     const std::vector<std::string> known = sample_names();
@@ -55,6 +60,7 @@ void add_bench_command(CLI::App& app) {
     std::string json, plots, context = "auto", mesh;
     std::vector<std::string> meshes;
     std::vector<int> levels = {1, 4, 16, 64};
+    std::string levels_text;
     float adaptive_pixels = 6.0f;
   };
   auto args = std::make_shared<Args>();
@@ -75,9 +81,8 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--meshes", args->meshes,
                   "--render, --preprocess: these samples instead of the default list, each NAME or NAME:FACES")
       ->delimiter(',');
-  cmd->add_option("--levels", args->levels, "--render: the uniform tessellation levels (default 1,4,16,64)")
-      ->delimiter(',')
-      ->transform(integer_in(1, 64));
+  // Read whole and split here: CLI11 drops an empty item of a list ("1,,4") without a word.
+  cmd->add_option("--levels", args->levels_text, "--render: the uniform tessellation levels (default 1,4,16,64)");
   cmd->add_option("--adaptive", args->adaptive_pixels,
                   "--render: also a row at adaptive levels of this many pixels per segment (default 6; 0: none)")
       ->check(number_in(0, 1000));
@@ -86,6 +91,22 @@ void add_bench_command(CLI::App& app) {
   cmd->callback([args] {
     if (int(args->preprocess) + int(args->render) + int(args->edit) + int(args->model) != 1)
       throw usage_error("bench: choose one thing to measure (--preprocess, --render, --edit, --model)");
+    if (!args->levels_text.empty()) {
+      args->levels.clear();
+      std::stringstream items(args->levels_text + ",");
+      for (std::string item; std::getline(items, item, ',');) {
+        int level = 0;
+        const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), level);
+        if (item.empty() || ec != std::errc() || end != item.data() + item.size() || level < 1 || level > 64)
+          throw usage_error("--levels: " + quoted_token(args->levels_text) + " is not a list of levels 1..64 (" +
+                            quoted_token(item) + ")");
+        args->levels.push_back(level);
+      }
+    }
+    // Where the figures go is checked before the measuring, which takes minutes.
+    for (const std::string& path : {args->json, args->plots.empty() ? std::string() : args->plots + "_frame_time.png",
+                                    args->plots.empty() ? std::string() : args->plots + "_memory.png"})
+      if (!path.empty()) inspect_save_target(path);
     const auto make_context = [&args] {
       return create_offscreen_context(args->context == "egl"      ? ContextKind::egl
                                       : args->context == "osmesa" ? ContextKind::osmesa

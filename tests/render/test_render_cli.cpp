@@ -464,12 +464,17 @@ TEST(RenderCli, BadInputIsAUsageError) {
            "render " + mesh + out + " --camera 30,20,-1", "render " + mesh + out + " --camera 30,20,0",
            "render " + mesh + out + " --camera ''", "render " + mesh + out + " --aov position=" + dir.file("x.png"),
            "render " + mesh + out + " --aov normal=" + dir.file("n.exr") + " --aov normal=" + dir.file("m.exr"),
-           "diff " + dir.file("a.exr") + " " + dir.file("a.png") + out,
+           "diff " + dir.file("a.exr") + " " + dir.file("a.png") + out, "bench --render --levels 1,,4",
+           "bench --preprocess --meshes sphere:0",
            "diff " + dir.file("a.exr") + " " + dir.file("b.exr") + out}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << ": " << r.output;
   }
+  // Where a benchmark's figures go is checked before it measures for minutes.
+  const auto plots = run_command(gpsurf("bench --render --plots " + dir.file("none/p")));
+  EXPECT_EQ(plots.exit_code, 1) << plots.output;
+  EXPECT_NE(plots.output.find("does not exist"), std::string::npos) << plots.output;
   // A file that is not there is a failure to read it, as in every command (exit 1).
   for (const std::string& args :
        std::vector<std::string>{"render " + dir.file("missing.ply") + out,
