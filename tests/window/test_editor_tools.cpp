@@ -131,6 +131,15 @@ TEST_F(EditorTools, BevelCancelledLeavesTheFileByteIdentical) {
   EXPECT_TRUE(saved_is_original());
 }
 
+// Events that end inside a tool (a scale typed, never confirmed, which moves the vertices as it goes):
+// --save writes what was confirmed, the original file.
+TEST_F(EditorTools, AToolLeftOpenAtTheEndIsNotSaved) {
+  Events open = edge_selected();
+  open.key("s").wait().text("2").wait(2);
+  play(open, "");
+  EXPECT_TRUE(saved_is_original());
+}
+
 // A bevel confirmed, saved in place, then undone (Ctrl+Z) and saved again: the original file.
 TEST_F(EditorTools, BevelUndoneRestoresTheFile) {
   std::filesystem::copy_file(dir_.file("original.ply"), dir_.file("work.ply"));

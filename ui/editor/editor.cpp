@@ -134,6 +134,15 @@ bool EditorApp::script_finished() {
   // Two more frames after the last event: auto-sized ImGui windows settle on their second frame.
   if (++finishing_frames_ < 3) return false;
   if (file_not_opened_ && !options_.save.empty()) throw *file_not_opened_;  // not the sample in its place
+  if (tool_ && !options_.save.empty()) {
+    // A replay that ends inside a tool saves what was confirmed: the tool is cancelled, as by Esc.
+    InputEvent escape;
+    escape.type = InputEvent::Type::key_press;
+    escape.key = GLFW_KEY_ESCAPE;
+    modal_event(escape);
+    tool_.reset();
+    set_status("the events ended inside a tool: cancelled before saving", false);
+  }
   if (!options_.save.empty()) save_to(options_.save);
   return true;
 }
