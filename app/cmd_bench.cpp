@@ -39,7 +39,8 @@ std::vector<std::pair<std::string, int>> sample_list(const std::vector<std::stri
       if (count.empty() || count.size() > 8 || count.find_first_not_of("0123456789") != std::string::npos)
         throw usage_error("bench: '" + spec + "' is not NAME or NAME:FACES");
       faces = std::stoi(count);
-      if (faces < 1) throw usage_error("bench: " + quoted_token(spec) + " asks for no faces (NAME:FACES, FACES from 1)");
+      if (faces < 1)
+        throw usage_error("bench: " + quoted_token(spec) + " asks for no faces (NAME:FACES, FACES from 1)");
       if (!sample_has_size(name)) throw usage_error("bench: the sample '" + name + "' has no size to set");
     }
     const std::vector<std::string> known = sample_names();

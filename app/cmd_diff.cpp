@@ -38,8 +38,9 @@ void add_diff_command(CLI::App& app) {
       // An image that is no AOV of gpsurf render (a colour image, say) tells no kind: say which.
       for (const auto& [path, kind] : {std::pair{args->a, ka}, std::pair{args->b, kb}})
         if (kind.empty())
-          throw usage_error(path + " is not a position or normal AOV of gpsurf render (--aov); give --kind to compare "
-                                   "it as one");
+          throw usage_error(path +
+                            " is not a position or normal AOV of gpsurf render (--aov); give --kind to compare "
+                            "it as one");
       args->kind = ka;
     }
     const AovKind kind = args->kind == "normal" ? AovKind::normal : AovKind::position;

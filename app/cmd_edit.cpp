@@ -36,7 +36,8 @@ void add_edit_command(CLI::App& app) {
     // A file name given without its @ would be read as JSON: say how to read the file instead.
     if (const size_t first = args->ops.find_first_not_of(" \t\r\n");
         !from_file && first != std::string::npos && args->ops[first] != '[' && std::filesystem::exists(args->ops))
-      throw usage_error("--ops " + quoted_token(args->ops) + " is not a JSON array; to read the operations from that file, write --ops @" + args->ops);
+      throw usage_error("--ops " + quoted_token(args->ops) +
+                        " is not a JSON array; to read the operations from that file, write --ops @" + args->ops);
     const OperationList ops = OperationList::parse(from_file ? read_text_file(source) : args->ops, source);
     const CovarianceMesh mesh = args->input.rfind("sample:", 0) == 0
                                     ? make_sample(args->input.substr(7))

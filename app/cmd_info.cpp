@@ -92,7 +92,8 @@ void print_info(const std::string& path, const RepairArguments& repair) {
       const ElementNumbering numbering = element_numbering_for(path, diagnosis);
       std::cout << "file: " << path << "\nvertices: " << n_vertices << "\nfaces: " << n_faces << "\n";
       const std::string numbered = " (vertices and faces numbered from " + std::to_string(numbering.base) + ")";
-      std::vector<std::string> refused = diagnosis.problems(numbering, true), also = diagnosis.problems(numbering, false);
+      std::vector<std::string> refused = diagnosis.problems(numbering, true),
+                               also = diagnosis.problems(numbering, false);
       // A class read as it is can still be why (a zero-area face that puts a third face on an edge):
       // where no class that refuses was found, those found are the reasons.
       if (refused.empty()) std::swap(refused, also);

@@ -61,8 +61,8 @@ std::vector<float> parse_floats(const std::string& text, const char* what, size_
   }
   if (values.size() < min_count || values.size() > max_count)
     throw usage_error(std::string(what) + ": expected " + std::to_string(min_count) +
-                      (max_count > min_count ? " to " + std::to_string(max_count) : std::string()) +
-                      " numbers, got " + quoted_token(text));
+                      (max_count > min_count ? " to " + std::to_string(max_count) : std::string()) + " numbers, got " +
+                      quoted_token(text));
   return values;
 }
 
@@ -103,7 +103,8 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   o.ellipsoids = a.ellipsoids;
   o.sigma_scale = a.sigma;
   o.background = {bg[0], bg[1], bg[2]};
-  const std::vector<float> yaw_pitch_distance = a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3);
+  const std::vector<float> yaw_pitch_distance =
+      a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3);
   if (yaw_pitch_distance.size() > 2 && !(yaw_pitch_distance[2] > 0.0f))
     throw usage_error("--camera: the distance must be positive (in the mesh's units), got " + quoted_token(a.camera));
   const Camera camera = render_camera(renderer, mesh, yaw_pitch_distance, up_axis_named(a.up), o, width, height);
@@ -203,7 +204,7 @@ T script_value(const nlohmann::json& job, const char* key, const T& fallback) {
   try {
     return job.at(key).get<T>();
   } catch (const nlohmann::json::type_error&) {
-    const char* kind = std::is_same_v<T, bool> ? "true or false"
+    const char* kind = std::is_same_v<T, bool>          ? "true or false"
                        : std::is_same_v<T, std::string> ? "a string"
                                                         : "a list of strings";
     throw usage_error(std::string(key) + " must be " + kind + ", got " + json_shown(job.at(key)));
@@ -226,11 +227,10 @@ std::vector<double> script_numbers(const nlohmann::json& edit, const char* key, 
 }
 
 // The keys a render script's job may have (run_script).
-constexpr const char* kScriptKeys[] = {"mesh",     "output",    "size",    "level",      "pixels",     "depth",
-                                       "approximate", "scheme", "loop_beta", "repair",  "weld",       "matcap",
-                                       "mode",     "camera",    "up",      "mesh_lines", "wireframe",  "ellipsoids",
-                                       "sigma",    "background", "aov",    "reference",  "exact",      "ops",
-                                       "edits"};
+constexpr const char* kScriptKeys[] = {
+    "mesh",   "output",     "size",   "level",     "pixels", "depth", "approximate", "scheme",    "loop_beta",
+    "repair", "weld",       "matcap", "mode",      "camera", "up",    "mesh_lines",  "wireframe", "ellipsoids",
+    "sigma",  "background", "aov",    "reference", "exact",  "ops",   "edits"};
 
 void run_script(const std::string& path, const std::string& context_name) {
   const std::string text = read_text_file(path);  // a file that cannot be read: exit 1, as for a mesh
@@ -253,7 +253,8 @@ void run_script(const std::string& path, const std::string& context_name) {
       for (const auto& [key, value] : job.items())
         if (std::find(std::begin(kScriptKeys), std::end(kScriptKeys), key) == std::end(kScriptKeys))
           throw usage_error("unknown key " + quoted_token(key));
-      if (job.contains("camera") && job["camera"] == "") throw usage_error("camera: give \"yaw,pitch[,distance]\", got \"\"");
+      if (job.contains("camera") && job["camera"] == "")
+        throw usage_error("camera: give \"yaw,pitch[,distance]\", got \"\"");
       a.input = script_value(job, "mesh", std::string());
       if (a.input.empty()) throw usage_error("mesh is missing");
       a.output = script_value(job, "output", std::string());

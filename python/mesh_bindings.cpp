@@ -126,8 +126,9 @@ MeshHandle from_state(const py::tuple& state) {
   try {
     return mesh_of_state(state);
   } catch (const py::cast_error&) {
-    throw py::type_error("Mesh: a pickled state holds positions, face offsets, face indices, covariances, creases "
-                         "and corners; an item is not of its type");
+    throw py::type_error(
+        "Mesh: a pickled state holds positions, face offsets, face indices, covariances, creases "
+        "and corners; an item is not of its type");
   }
 }
 
@@ -250,8 +251,7 @@ void add_mesh_bindings(py::module_& m) {
       // Every pickle protocol rebuilds the mesh through _mesh_from_state: protocols 0 and 1 would
       // otherwise make the instance with object.__new__, which a compiled class refuses.
       .def("__reduce__", [](const MeshHandle& h) {
-        return py::make_tuple(py::module_::import("gpsurf").attr("_mesh_from_state"),
-                              py::make_tuple(state_of(h)));
+        return py::make_tuple(py::module_::import("gpsurf").attr("_mesh_from_state"), py::make_tuple(state_of(h)));
       });
   m.def("_mesh_from_state", &from_state, py::arg("state"), "A Mesh from its pickled state (gpsurf._mesh_from_state)");
 

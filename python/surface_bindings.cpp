@@ -190,8 +190,8 @@ void add_surface_bindings(py::module_& m) {
         const PlanOptions& o = h.options;
         const char* scheme = !o.scheme ? "auto" : *o.scheme == Scheme::loop ? "loop" : "catmull-clark";
         return py::make_tuple(py::module_::import("gpsurf").attr("Surface"),
-                              py::make_tuple(MeshHandle{h.mesh}, scheme, o.loop_beta == LoopBeta::warren ? "warren" : "loop",
-                                             o.depth, !o.exact));
+                              py::make_tuple(MeshHandle{h.mesh}, scheme,
+                                             o.loop_beta == LoopBeta::warren ? "warren" : "loop", o.depth, !o.exact));
       });
 
   m.def(

@@ -67,8 +67,9 @@ void read_sharp_tag(std::string_view line, int number, const std::string& at, Sh
   for (int k = 0; k < 3; ++k) {
     const size_t slash = k < 2 ? rest.find('/') : std::string_view::npos;
     if ((k < 2 && slash == std::string_view::npos) || !parse_int(rest.substr(0, slash), n[k]) || n[k] < 0)
-      throw Error(at + "the " + what + " tag's counts " + quoted_token(counts) +
-                  " are not nint/nfloat/nstring (three counts, such as 2/1/0 for a crease: its two vertices, one value)");
+      throw Error(
+          at + "the " + what + " tag's counts " + quoted_token(counts) +
+          " are not nint/nfloat/nstring (three counts, such as 2/1/0 for a crease: its two vertices, one value)");
     if (k < 2) rest.remove_prefix(slash + 1);
   }
   SharpTags::Line tag;

@@ -116,9 +116,9 @@ std::vector<int> transform_vertices_in_place(CovarianceMesh& mesh, const std::ve
     if (reversed > 0) mesh = build_mesh(a, mesh);
   }
   // Only a part moved whole turns inside out: one mirrored in part keeps its faces.
-  const std::string mirrored = reversed > 0 ? " (mirrored: " + count_of(size_t(reversed), "face", "faces") +
-                                                  " reversed to stay outward)"
-                                            : " (mirrored in part: no part moved whole, no face reversed)";
+  const std::string mirrored =
+      reversed > 0 ? " (mirrored: " + count_of(size_t(reversed), "face", "faces") + " reversed to stay outward)"
+                   : " (mirrored in part: no part moved whole, no face reversed)";
   summary = "transformed " + count_of(moved.size(), "vertex", "vertices") + (mirror ? mirrored : "") +
             (clamped ? ", " + count_of(clamped, "Gaussian", "Gaussians") + " held at the flatness floor (" +
                            short_number(kFlattestStretch) + " of the map's strongest stretch)"

@@ -61,8 +61,7 @@ void write_image(const std::string& path, const Image& image, const std::vector<
   const fs::path dir = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
   // Encoded into a scratch file that keeps the extension (OpenImageIO picks the format from it), then
   // saved as every file is (core/io/atomic_file.h): links, read-only targets and signals alike.
-  const fs::path scratch =
-      dir / ("." + fs::path(path).stem().string() + ".image" + std::to_string(::getpid()) + ext);
+  const fs::path scratch = dir / ("." + fs::path(path).stem().string() + ".image" + std::to_string(::getpid()) + ext);
   std::error_code ec;
   try {
     if (ext == ".png") {

@@ -303,7 +303,8 @@ TEST(Cli, UnknownWordsAreNamedFirst) {
            {"bogus", "gpsurf: 'bogus' is not a command of gpsurf (gpsurf --help lists them)"},
            {"-x", "gpsurf: unknown option '-x' (a command comes first: gpsurf --help lists them)"},
            {"info --bogus", "gpsurf: unknown option '--bogus' (gpsurf info --help lists them)"},
-           {"sample cube -o " + dir.file("c.ply") + " --size 5 --size 6", "gpsurf: --size is given 2 times; give it once"},
+           {"sample cube -o " + dir.file("c.ply") + " --size 5 --size 6",
+            "gpsurf: --size is given 2 times; give it once"},
            {"sample cube -o " + dir.file("c.ply") + " --size -5", "gpsurf: --size: "}}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;

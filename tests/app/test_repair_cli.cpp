@@ -452,14 +452,18 @@ TEST(RepairCli, AFaceWhoseEveryEdgeIsAFinIsMendedInEveryFormat) {
     const auto info = run_command(gpsurf("info " + in));
     EXPECT_EQ(info.exit_code, 1) << info.output;
     EXPECT_NE(info.output.find("non-manifold edges (fins: more than two faces): 3"), std::string::npos) << info.output;
-    EXPECT_EQ(line_after(info.output, "after --repair: "), "8 vertices, 7 faces, 2 parts, 1 boundary loop, genus 0, scheme Loop")
+    EXPECT_EQ(line_after(info.output, "after --repair: "),
+              "8 vertices, 7 faces, 2 parts, 1 boundary loop, genus 0, scheme Loop")
         << info.output;
     const auto repaired = run_command(gpsurf("info " + in + " --repair"));
     ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
-    EXPECT_EQ(repaired.output.rfind("repair: separated 1 face from 3 edges with more than two faces (3 vertex copies)\n", 0), 0u)
+    EXPECT_EQ(
+        repaired.output.rfind("repair: separated 1 face from 3 edges with more than two faces (3 vertex copies)\n", 0),
+        0u)
         << repaired.output;
     EXPECT_EQ(line_after(repaired.output, "\nsurface: "), "2 parts, 1 boundary loop, genus 0");
-    const auto tessellated = run_command(gpsurf("tessellate " + in + " -o " + dir.file("t.ply") + " --level 2 --repair"));
+    const auto tessellated =
+        run_command(gpsurf("tessellate " + in + " -o " + dir.file("t.ply") + " --level 2 --repair"));
     EXPECT_EQ(tessellated.exit_code, 0) << tessellated.output;
     const auto compared = run_command(gpsurf("compare " + in + " " + dir.file("t.ply") + " --level 1"));
     EXPECT_EQ(compared.exit_code, 0) << "compare reads only A's points: " << compared.output;
@@ -472,17 +476,20 @@ TEST(RepairCli, InfoGivesAZeroAreaFinAsWhyTheMeshIsRefused) {
   test::TempDir dir;
   std::vector<Vec3> p = cube_positions();
   Faces faces;
-  for (const auto& face : kCube) faces.push_back({face[0], face[1], face[2]}), faces.push_back({face[0], face[2], face[3]});
+  for (const auto& face : kCube)
+    faces.push_back({face[0], face[1], face[2]}), faces.push_back({face[0], face[2], face[3]});
   p.push_back(Vec3(0, 0.5, 0));  // the middle of edge 0–2
   faces.push_back({0, 8, 2});
   const std::string in = dir.file("zero.obj");
   write_obj(in, p, faces);
   const auto info = run_command(gpsurf("info " + in));
   EXPECT_EQ(info.exit_code, 1) << info.output;
-  EXPECT_NE(info.output.find("refused for (vertices and faces numbered from 1):\n  zero-area faces: 1 (face 13 (line 22))"),
-            std::string::npos)
+  EXPECT_NE(
+      info.output.find("refused for (vertices and faces numbered from 1):\n  zero-area faces: 1 (face 13 (line 22))"),
+      std::string::npos)
       << info.output;
-  EXPECT_EQ(line_after(info.output, "after --repair: "), "8 vertices, 12 faces, 1 part, 0 boundary loops, genus 0, scheme Loop");
+  EXPECT_EQ(line_after(info.output, "after --repair: "),
+            "8 vertices, 12 faces, 1 part, 0 boundary loops, genus 0, scheme Loop");
 }
 
 // A Möbius strip of six quads beside a tetrahedron with a triangle hanging from one edge: info names

@@ -87,11 +87,13 @@ TEST(GltfIo, CovarianceTorusRoundTripsThroughGlbAndGltf) {
 // refused as pinched).
 TEST(GltfIo, CovarianceVerticesAtOnePositionStayApart) {
   test::TempDir dir;
-  const std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+  const std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 0, 0),  Vec3(0, 1, 0),  Vec3(0, 0, 1),
                                Vec3(0, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, -1), Vec3(0, -1, 0)};
   std::vector<std::vector<int>> faces;
-  for (const int b : {0, 4}) faces.insert(faces.end(), {{b, b + 2, b + 1}, {b, b + 1, b + 3}, {b, b + 3, b + 2}, {b + 1, b + 2, b + 3}});
-  const CovarianceMesh pinched = make_covariance_mesh(p, std::vector<Mat3>(8, 0.01 * Mat3::Identity()), faces, "pinched");
+  for (const int b : {0, 4})
+    faces.insert(faces.end(), {{b, b + 2, b + 1}, {b, b + 1, b + 3}, {b, b + 3, b + 2}, {b + 1, b + 2, b + 3}});
+  const CovarianceMesh pinched =
+      make_covariance_mesh(p, std::vector<Mat3>(8, 0.01 * Mat3::Identity()), faces, "pinched");
   for (const char* name : {"pinched.glb", "pinched.gltf"}) {
     write_mesh(dir.file(name), pinched);
     expect_same_as_written(pinched, read_mesh(dir.file(name)));
@@ -399,10 +401,12 @@ TEST(GltfIo, MalformedFilesAreRefusedInOneLineNamingFileAndElement) {
   expect_refused(dir.write("bad.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [ }"),
                  "bad.gltf: is not valid glTF JSON (line 1, column 43)");
   const std::string buffers = "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"byteLength\": 12, \"uri\": ";
-  expect_refused(dir.write("short.gltf", buffers + "\"data:application/octet-stream;base64,AAAA\"}]}"),
-                 "short.gltf: has a buffer whose embedded data (its data: URI) is not base64 or is shorter than its byteLength");
-  expect_refused(dir.write("gone.gltf", buffers + "\"gone.bin\"}]}"),
-                 "gone.gltf: names a buffer file 'gone.bin' that is not there (buffer files are read from the .gltf's folder)");
+  expect_refused(
+      dir.write("short.gltf", buffers + "\"data:application/octet-stream;base64,AAAA\"}]}"),
+      "short.gltf: has a buffer whose embedded data (its data: URI) is not base64 or is shorter than its byteLength");
+  expect_refused(
+      dir.write("gone.gltf", buffers + "\"gone.bin\"}]}"),
+      "gone.gltf: names a buffer file 'gone.bin' that is not there (buffer files are read from the .gltf's folder)");
 
   HandMade past = cube;
   past.j["accessors"][1]["count"] = 40;  // 80 bytes of a 72-byte view

@@ -200,9 +200,9 @@ TEST(Knife, RefusalsNameThePointAndChangeNothing) {
             "the cut crosses itself in face 1");
   // Crossing itself between points inside one face, where no edge is crossed twice: seen in the
   // face's plane, not in the pieces' corners.
-  for (const std::vector<Vec3>& path : {std::vector<Vec3>{Vec3(-0.5, 0, 1), Vec3(0.5, 0, 1), Vec3(0, 0.5, 1), Vec3(0, -0.5, 1)},
-                                        std::vector<Vec3>{Vec3(-0.5, -0.5, 1), Vec3(0.5, 0.5, 1), Vec3(0.5, -0.5, 1),
-                                                          Vec3(-0.5, 0.5, 1)}})
+  for (const std::vector<Vec3>& path :
+       {std::vector<Vec3>{Vec3(-0.5, 0, 1), Vec3(0.5, 0, 1), Vec3(0, 0.5, 1), Vec3(0, -0.5, 1)},
+        std::vector<Vec3>{Vec3(-0.5, -0.5, 1), Vec3(0.5, 0.5, 1), Vec3(0.5, -0.5, 1), Vec3(-0.5, 0.5, 1)}})
     EXPECT_EQ(error_of([&] { knife(cube, path); }), "the cut crosses itself in face 1");
   EXPECT_TRUE(test::same_mesh(cube, copy));
 }

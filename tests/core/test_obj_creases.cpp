@@ -58,7 +58,9 @@ TEST(ObjCreases, ErrorsNameTheFileAndLine) {
   // Counts are not trusted: a huge one is refused when the line runs out.
   EXPECT_EQ(message_of("t corner 999999999999/1/0 0 1\n"),
             "x.obj: line 15: the corner tag has fewer values than its counts say");
-  EXPECT_EQ(message_of("t crease 2/1/0 0 6 1\n"), "x.obj: line 15: crease 0-6 is not an edge of the mesh (tags number vertices from 0; remove the tag or name an edge)");
+  EXPECT_EQ(message_of("t crease 2/1/0 0 6 1\n"),
+            "x.obj: line 15: crease 0-6 is not an edge of the mesh (tags number vertices from 0; remove the tag or "
+            "name an edge)");
   EXPECT_EQ(message_of("t crease 2/1/0 4 5 -2\n"), "x.obj: line 15: crease sharpness -2 is negative");
   EXPECT_EQ(message_of("t corner 1/1/0 4 inf\n"), "x.obj: line 15: corner sharpness inf is not finite");
   EXPECT_EQ(message_of("t crease 3/1/0 4 5 6 1\n"),
@@ -67,7 +69,8 @@ TEST(ObjCreases, ErrorsNameTheFileAndLine) {
             "x.obj: line 15: the crease tag has 3 sharpness values for 2 edges (1 for all or 1 each)");
   EXPECT_EQ(message_of("t crease 2/1/0 4 5\n"), "x.obj: line 15: the crease tag has fewer values than its counts say");
   EXPECT_EQ(message_of("t crease 2/1 4 5 1\n"),
-            "x.obj: line 15: the crease tag's counts '2/1' are not nint/nfloat/nstring (three counts, such as 2/1/0 for a crease: its two vertices, one value)");
+            "x.obj: line 15: the crease tag's counts '2/1' are not nint/nfloat/nstring (three counts, such as 2/1/0 "
+            "for a crease: its two vertices, one value)");
   EXPECT_EQ(message_of("t corner 1/1/0 x 1\n"), "x.obj: line 15: 'x' is not a vertex index");
 }
 
@@ -104,7 +107,8 @@ TEST(ObjCreases, RepeatedTagsKeepTheLaterWithANote) {
                              "later is kept"}));
   // What the tags name is still checked on every tag, repeated or not.
   EXPECT_EQ(message_of("t crease 2/1/0 4 5 1\nt crease 2/1/0 4 5 2\nt crease 2/1/0 0 6 1\n"),
-            "x.obj: line 17: crease 0-6 is not an edge of the mesh (tags number vertices from 0; remove the tag or name an edge)");
+            "x.obj: line 17: crease 0-6 is not an edge of the mesh (tags number vertices from 0; remove the tag or "
+            "name an edge)");
 }
 
 }  // namespace

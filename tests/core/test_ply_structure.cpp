@@ -97,7 +97,8 @@ TEST(PlyStructure, AFaceRepeatedIsRefusedWhereTheCornersPassAManifoldsCount) {
   std::string repeated;
   for (size_t f = 0; f <= passing; ++f) repeated += kFace;
   repeated += "3 0 1 7\n";
-  const std::string faces = "element face " + std::to_string(passing + 2) + "\nproperty list uchar int vertex_indices\n";
+  const std::string faces =
+      "element face " + std::to_string(passing + 2) + "\nproperty list uchar int vertex_indices\n";
   const std::string message =
       error_of([&] { parse_ply(ascii_ply(kVertexElement + faces, kVertices + repeated), "r.ply"); });
   EXPECT_NE(message.find("r.ply: face "), std::string::npos) << message;
@@ -114,7 +115,8 @@ TEST(PlyStructure, AFaceRepeatedIsRefusedWhereTheCornersPassAManifoldsCount) {
             std::string::npos);
   const std::string few = "element face 5\nproperty list uchar int vertex_indices\n";
   EXPECT_EQ(error_of([&] {
-              parse_ply(ascii_ply(kVertexElement + few, kVertices + kFace + kFace + kFace + kFace + "3 0 1 7\n"), "f.ply");
+              parse_ply(ascii_ply(kVertexElement + few, kVertices + kFace + kFace + kFace + kFace + "3 0 1 7\n"),
+                        "f.ply");
             }),
             "f.ply: line 23: face 4 refers to vertex 7, but there are 3 vertices")
       << "read whole, to the face out of range";

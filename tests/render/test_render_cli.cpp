@@ -410,18 +410,18 @@ TEST(RenderCli, AGivenCameraThatShowsNoneOfTheSurfaceIsRefused) {
     tiny.set_covariance(i, 1e-12 * tiny.covariance(i));
   }
   write_mesh(dir.file("tiny.ply"), tiny);
-  for (const auto& [mesh, camera] : std::vector<std::pair<std::string, std::string>>{
-           {"c.ply", "30,20,1e6"}, {"tiny.ply", "30,20,10"}}) {
-    const auto r = run_command(gpsurf("render " + dir.file(mesh) + " -o " + dir.file("x.png") +
-                                      " --size 64x64 --camera " + camera));
+  for (const auto& [mesh, camera] :
+       std::vector<std::pair<std::string, std::string>>{{"c.ply", "30,20,1e6"}, {"tiny.ply", "30,20,10"}}) {
+    const auto r = run_command(
+        gpsurf("render " + dir.file(mesh) + " -o " + dir.file("x.png") + " --size 64x64 --camera " + camera));
     EXPECT_EQ(r.exit_code, 1) << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     EXPECT_NE(r.output.find("covers no pixel of the image from the camera '" + camera + "'"), std::string::npos)
         << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
   }
-  const auto near = run_command(gpsurf("render " + dir.file("tiny.ply") + " -o " + dir.file("y.png") +
-                                       " --size 64x64 --camera 30,20,1e-5"));
+  const auto near = run_command(
+      gpsurf("render " + dir.file("tiny.ply") + " -o " + dir.file("y.png") + " --size 64x64 --camera 30,20,1e-5"));
   EXPECT_EQ(near.exit_code, 0) << near.output;
   EXPECT_GT(drawn_pixels(read_image(dir.file("y.png"))), 200);
 }
@@ -465,8 +465,7 @@ TEST(RenderCli, BadInputIsAUsageError) {
            "render " + mesh + out + " --camera ''", "render " + mesh + out + " --aov position=" + dir.file("x.png"),
            "render " + mesh + out + " --aov normal=" + dir.file("n.exr") + " --aov normal=" + dir.file("m.exr"),
            "diff " + dir.file("a.exr") + " " + dir.file("a.png") + out, "bench --render --levels 1,,4",
-           "bench --preprocess --meshes sphere:0",
-           "diff " + dir.file("a.exr") + " " + dir.file("b.exr") + out}) {
+           "bench --preprocess --meshes sphere:0", "diff " + dir.file("a.exr") + " " + dir.file("b.exr") + out}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << ": " << r.output;
@@ -476,10 +475,9 @@ TEST(RenderCli, BadInputIsAUsageError) {
   EXPECT_EQ(plots.exit_code, 1) << plots.output;
   EXPECT_NE(plots.output.find("does not exist"), std::string::npos) << plots.output;
   // A file that is not there is a failure to read it, as in every command (exit 1).
-  for (const std::string& args :
-       std::vector<std::string>{"render " + dir.file("missing.ply") + out,
-                                "diff " + dir.file("a.exr") + " " + dir.file("missing.exr") + out,
-                                "render --script " + dir.file("missing.json")}) {
+  for (const std::string& args : std::vector<std::string>{
+           "render " + dir.file("missing.ply") + out, "diff " + dir.file("a.exr") + " " + dir.file("missing.exr") + out,
+           "render --script " + dir.file("missing.json")}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 1) << args << ": " << r.output;
     EXPECT_NE(r.output.find("missing."), std::string::npos) << r.output;

@@ -129,11 +129,13 @@ TEST_F(EditorFirstView, APinchedMeshOpenedIsOfferedRepaired) {
   EXPECT_NE(repaired.output.find("repaired (unsaved)"), std::string::npos) << repaired.output;
   const auto saved = run(pinched, test::Events().wait(2).key("enter").wait(3), "--save " + dir_.file("mended.ply"));
   ASSERT_EQ(saved.exit_code, 0) << saved.output;
-  EXPECT_EQ(read_mesh(dir_.file("mended.ply")).n_vertices(), read_mesh(pinched, [] {
-    ImportOptions o;
-    o.repair = true;
-    return o;
-  }()).n_vertices());
+  EXPECT_EQ(read_mesh(dir_.file("mended.ply")).n_vertices(), read_mesh(pinched,
+                                                                       [] {
+                                                                         ImportOptions o;
+                                                                         o.repair = true;
+                                                                         return o;
+                                                                       }())
+                                                                 .n_vertices());
 }
 
 // Dropped on the window, the same: Cancel keeps the mesh there was, Repair opens the repaired one.
