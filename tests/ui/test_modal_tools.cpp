@@ -378,6 +378,18 @@ TEST(TransformTool, AScalePastTheMeshsRangeIsRefusedAndAnExponentIsRead) {
   EXPECT_NEAR(editor.document.mesh().mean(0).norm(), 100.0 * cube().mean(0).norm(), 1e-9);
 }
 
+// S Z 0 flattens the cube's vertices and holds their Gaussians at the flatness floor: what is reported
+// on Enter still counts them (it was cut off with the status line's other parts).
+TEST(TransformTool, AFlatteningScaleReportsTheGaussiansHeld) {
+  Editor editor(cube(), {0, 1, 2, 3, 4, 5, 6, 7});
+  ToolContext c = editor.context();
+  TransformTool scale(TransformKind::scale, TransformPivot::median, c);
+  editor.send(scale, key_event(GLFW_KEY_Z));
+  editor.type(scale, "0");
+  EXPECT_EQ(editor.send(scale, key_event(GLFW_KEY_ENTER)), ToolResult::confirmed);
+  EXPECT_NE(editor.said.find("(8 Gaussians held at the flatness floor)"), std::string::npos) << editor.said;
+}
+
 InputEvent mouse_event(InputEvent::Type type, glm::vec2 at) {
   InputEvent e;
   e.type = type;

@@ -236,9 +236,15 @@ void TransformTool::end(bool keep, ToolContext& ctx) {
     return;
   }
   const std::string described = transform_->describe();
+  // The count of Gaussians held at the flatness floor stays in what is reported (the status line's last part).
+  const size_t last_part = status_.rfind("  (");
+  const std::string held = last_part != std::string::npos &&
+                                   status_.find("held at the flatness floor", last_part) != std::string::npos
+                               ? status_.substr(last_part)
+                               : "";
   const std::string done = described.substr(0, described.find("  (")) +
                            (snapped_ ? ", snapped to " + snapped_->element : "") +
-                           (ctx.transform_gaussians ? "" : "  (positions only)");
+                           (ctx.transform_gaussians ? "" : "  (positions only)") + held;
   // Vertices a mirror (negative determinant) carried: the parts they make up whole get their faces
   // reversed with them, as Blender does, so that the surface stays outward.
   std::vector<int> mirrored_vertices;
