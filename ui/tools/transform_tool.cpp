@@ -238,10 +238,10 @@ void TransformTool::end(bool keep, ToolContext& ctx) {
   const std::string described = transform_->describe();
   // The count of Gaussians held at the flatness floor stays in what is reported (the status line's last part).
   const size_t last_part = status_.rfind("  (");
-  const std::string held = last_part != std::string::npos &&
-                                   status_.find("held at the flatness floor", last_part) != std::string::npos
-                               ? status_.substr(last_part)
-                               : "";
+  const std::string held =
+      last_part != std::string::npos && status_.find("held at the flatness floor", last_part) != std::string::npos
+          ? status_.substr(last_part)
+          : "";
   const std::string done = described.substr(0, described.find("  (")) +
                            (snapped_ ? ", snapped to " + snapped_->element : "") +
                            (ctx.transform_gaussians ? "" : "  (positions only)") + held;
