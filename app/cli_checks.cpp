@@ -12,15 +12,13 @@
 
 namespace gps {
 
-PixelSize parse_pixel_size(const std::string& text, const std::string& option) {
+PixelSize parse_pixel_size(const std::string& text, const std::string& option, int largest) {
   std::smatch m;
   if (!std::regex_match(text, m, std::regex(R"((\d{1,9})x(\d{1,9}))")))
     throw usage_error(option + ": expected WxH, got " + quoted_token(text));
   const PixelSize size{std::stoi(m[1]), std::stoi(m[2])};
-  // The largest a GL framebuffer of this kind takes (render/gl/render_target.cpp), checked as the option.
-  constexpr int kLargest = 16384;
-  if (size.width < 1 || size.height < 1 || size.width > kLargest || size.height > kLargest)
-    throw usage_error(option + ": width and height are 1.." + std::to_string(kLargest) + " pixels each, got " +
+  if (size.width < 1 || size.height < 1 || size.width > largest || size.height > largest)
+    throw usage_error(option + ": width and height are 1.." + std::to_string(largest) + " pixels each, got " +
                       quoted_token(text));
   return size;
 }

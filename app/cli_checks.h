@@ -13,8 +13,9 @@ struct PixelSize {
   int width = 0, height = 0;
 };
 
-/// "WxH" with W and H from 1 to 99999; throws a usage error naming `option` otherwise.
-PixelSize parse_pixel_size(const std::string& text, const std::string& option = "--size");
+/// "WxH" with W and H from 1 to `largest`; throws a usage error naming `option` otherwise.
+PixelSize parse_pixel_size(const std::string& text, const std::string& option = "--size",
+                           int largest = std::numeric_limits<int>::max());
 
 /// A decimal number from `lo` to `hi` (an optional leading '+'; no empty text, hexadecimal, NaN,
 /// infinity or trailing characters).

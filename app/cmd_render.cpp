@@ -22,6 +22,7 @@
 #include "core/io/number_text.h"
 #include "core/support/quoted_text.h"
 #include "core/io/text_file.h"
+#include "render/gl/render_target.h"
 #include "render/comparison/exact_triangles.h"
 #include "render/gl/gl_context.h"
 #include "render/image/image_io.h"
@@ -69,7 +70,7 @@ std::vector<float> parse_floats(const std::string& text, const char* what, size_
 // One render with the given renderer (its context current): mesh, options, outputs.
 void render_one(SurfaceRenderer& renderer, const std::string& description, const RenderArgs& a,
                 const CovarianceMesh& mesh) {
-  const auto [width, height] = parse_pixel_size(a.size);
+  const auto [width, height] = parse_pixel_size(a.size, "--size", RenderTarget::kLargestSide);
   std::string position_aov, normal_aov;
   // Each file written once: an AOV given twice, or two outputs at one path, would overwrite one another.
   std::vector<std::filesystem::path> written = {std::filesystem::absolute(a.output).lexically_normal()};
@@ -163,7 +164,7 @@ ContextKind context_kind(const std::string& name) {
 
 void render(const RenderArgs& a) {
   load_matcap(a.matcap);  // before any GL work: a bad name or size is a usage error
-  parse_pixel_size(a.size);
+  parse_pixel_size(a.size, "--size", RenderTarget::kLargestSide);
   const CovarianceMesh mesh = read_mesh_repairing(a.input, a.repair);
   const auto context = create_offscreen_context(context_kind(a.context));
   SurfaceRenderer renderer;

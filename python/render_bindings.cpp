@@ -101,8 +101,9 @@ std::array<double, 2> checked_scalar_range(const CovarianceMesh& mesh, const Ren
 // The surface `plans` (planned for `mesh`, or planned here under `options` when empty) drawn off-screen.
 FloatImage render(std::shared_ptr<const CovarianceMesh> mesh, std::shared_ptr<const PlannedSurface> plans,
                   const PlanOptions& options, const RenderSettings& r) {
-  if (r.width < 1 || r.height < 1 || r.width > 16384 || r.height > 16384)
-    throw py::value_error("width and height: expected 1..16384, got " + std::to_string(r.width) + "x" +
+  if (r.width < 1 || r.height < 1 || r.width > RenderTarget::kLargestSide || r.height > RenderTarget::kLargestSide)
+    throw py::value_error("width and height: expected 1.." + std::to_string(RenderTarget::kLargestSide) + ", got " +
+                          std::to_string(r.width) + "x" +
                           std::to_string(r.height));
   if (r.level < 0 || r.level > 64)
     throw py::value_error("level: expected 1..64 (0: adaptive), got " + std::to_string(r.level));

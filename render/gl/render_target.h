@@ -10,6 +10,9 @@ namespace gps {
 
 class RenderTarget {
 public:
+  /// The largest width and height a target is made with.
+  static constexpr int kLargestSide = 16384;
+
   RenderTarget(int width, int height);
   RenderTarget(const RenderTarget&) = delete;
   RenderTarget& operator=(const RenderTarget&) = delete;
