@@ -103,8 +103,7 @@ FloatImage render(std::shared_ptr<const CovarianceMesh> mesh, std::shared_ptr<co
                   const PlanOptions& options, const RenderSettings& r) {
   if (r.width < 1 || r.height < 1 || r.width > RenderTarget::kLargestSide || r.height > RenderTarget::kLargestSide)
     throw py::value_error("width and height: expected 1.." + std::to_string(RenderTarget::kLargestSide) + ", got " +
-                          std::to_string(r.width) + "x" +
-                          std::to_string(r.height));
+                          std::to_string(r.width) + "x" + std::to_string(r.height));
   if (r.level < 0 || r.level > 64)
     throw py::value_error("level: expected 1..64 (0: adaptive), got " + std::to_string(r.level));
   if (!std::isfinite(r.pixels) || r.pixels < 0)

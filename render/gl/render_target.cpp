@@ -14,9 +14,8 @@ namespace {
 // The width, once both sides are checked: before any GL object is made.
 int checked_width(int width, int height) {
   if (width < 1 || height < 1 || width > RenderTarget::kLargestSide || height > RenderTarget::kLargestSide)
-    throw usage_error("image size must be 1.." + std::to_string(RenderTarget::kLargestSide) +
-                      " pixels each way, got " + std::to_string(width) + "x" +
-                      std::to_string(height));
+    throw usage_error("image size must be 1.." + std::to_string(RenderTarget::kLargestSide) + " pixels each way, got " +
+                      std::to_string(width) + "x" + std::to_string(height));
   return width;
 }
 
