@@ -96,6 +96,14 @@ auto call_in_background(Work work, const py::object& progress, bool stops_prompt
     return job->finished.wait_for(lock, *limit, [&] { return job->done; });
   };
   double reported = -1;
+  // Whether the callback's answer says to go on. An answer whose truth raises (a numpy array of
+  // several values) raises, not cancels, at every call, the last included.
+  const auto answer_goes_on = [&](double fraction) {
+    const py::object answer = progress(fraction);
+    const int truth = answer.is_none() ? 1 : PyObject_IsTrue(answer.ptr());
+    if (truth < 0) throw py::error_already_set();
+    return truth == 1;
+  };
   const auto stop = [&] {
     job->control.request_stop();
     if (stops_promptly) wait(std::nullopt);
@@ -110,11 +118,7 @@ auto call_in_background(Work work, const py::object& progress, bool stops_prompt
       reported = fraction;
       bool go_on = true;
       try {
-        const py::object answer = progress(fraction);
-        // An answer whose truth raises (a numpy array of several values) raises, not cancels.
-        const int truth = answer.is_none() ? 1 : PyObject_IsTrue(answer.ptr());
-        if (truth < 0) throw py::error_already_set();
-        go_on = truth == 1;
+        go_on = answer_goes_on(fraction);
       } catch (...) {
         stop();
         throw;
@@ -126,7 +130,8 @@ auto call_in_background(Work work, const py::object& progress, bool stops_prompt
     }
   }
   if (job->error) std::rethrow_exception(job->error);
-  if (!progress.is_none() && reported < 1) progress(1.0);
+  // The work is done: a False answer now has nothing to cancel.
+  if (!progress.is_none() && reported < 1) answer_goes_on(1.0);
   return std::move(*job->result);
 }
 

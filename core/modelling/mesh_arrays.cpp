@@ -6,6 +6,7 @@
 
 #include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
+#include "core/plans/plan_builder.h"
 
 namespace gps {
 
@@ -119,8 +120,39 @@ std::vector<int> inverse_origin(const std::vector<int>& origin, size_t n_before)
   return back;
 }
 
+namespace {
+// Refuses a result with a face of more sides, or a vertex of more faces, than a surface's patch plans
+// take (core/plans/plan_builder.h), where the operation made it so: a mesh that came with such an
+// element can still be edited.
+void check_plan_limits(const CovarianceMesh& before, const MeshArrays& a, const CovarianceMesh& after,
+                       const std::vector<int>& origin) {
+  const std::string limit = std::to_string(kMaxPlanValence);
+  for (size_t f = 0; f < after.n_faces(); ++f) {
+    const int sides = after.face_size(f);
+    if (sides <= kMaxPlanValence) continue;
+    const int o = f < a.face_origin.size() ? a.face_origin[f] : -1;
+    if (o >= 0 && size_t(o) < before.n_faces() && before.face_size(size_t(o)) > kMaxPlanValence) continue;
+    throw Error("the result would have a face of " + std::to_string(sides) + " sides; a surface's patch plans take " +
+                "up to " + limit + " (their stencils grow with the square of it)");
+  }
+  const MeshConnectivity& c = after.connectivity();
+  for (size_t v = 0; v < after.n_vertices(); ++v) {
+    const int faces = c.n_vertex_faces(int(v));
+    if (faces <= kMaxPlanValence) continue;
+    const int o = v < origin.size() ? origin[v] : -1;
+    if (o >= 0 && size_t(o) < before.n_vertices() && before.connectivity().n_vertex_faces(o) > kMaxPlanValence)
+      continue;
+    throw Error((o >= 0 ? "vertex " + std::to_string(o) : std::string("a new vertex")) + " would have " +
+                std::to_string(faces) + " faces; a surface's patch plans take up to " + limit +
+                " at a vertex (their stencils grow with the square of it)");
+  }
+}
+}  // namespace
+
 Modelled modelled(const CovarianceMesh& before, const MeshArrays& a, std::vector<int> selection, std::string summary) {
-  return {build_mesh(a, before), std::move(selection), std::move(summary), vertex_origin(a)};
+  Modelled out{build_mesh(a, before), std::move(selection), std::move(summary), vertex_origin(a)};
+  check_plan_limits(before, a, out.mesh, out.vertex_origin);
+  return out;
 }
 
 void remove_faces(MeshArrays& a, const std::vector<char>& removed) {

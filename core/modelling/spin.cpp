@@ -7,6 +7,7 @@
 #include "core/modelling/affine_transform.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/operation_words.h"
+#include "core/plans/plan_builder.h"
 #include "core/support/error.h"
 
 namespace gps {
@@ -69,6 +70,21 @@ Modelled spin(const CovarianceMesh& mesh, const std::vector<int>& vertices, cons
   };
   std::vector<char> on_axis;
   for (const int v : profile) on_axis.push_back(from_axis(a.means[size_t(v)]).norm() <= tolerance);
+
+  // A vertex on the axis gets a triangle per step from each profile edge at it that leaves the axis.
+  for (size_t i = 0; i < profile.size(); ++i) {
+    if (!on_axis[i]) continue;
+    int leaving = 0;
+    for (const auto& [p, q] : edges) leaving += (p == i || q == i) && !(on_axis[p] && on_axis[q]);
+    if (leaving == 0) continue;
+    int faces = 0;
+    for (const auto& face : a.faces) faces += int(std::count(face.begin(), face.end(), profile[i]));
+    if (faces + leaving * steps > kMaxPlanValence)
+      throw Error("vertex " + std::to_string(profile[i]) + " lies on the axis, so " + std::to_string(steps) + " steps would give it " +
+                  std::to_string(faces + leaving * steps) + " faces; a surface's patch plans take up to " +
+                  std::to_string(kMaxPlanValence) + " (at most " +
+                  std::to_string(std::max(0, (kMaxPlanValence - faces) / leaving)) + " steps here)");
+  }
 
   // at[k][i]: profile vertex i after k steps; the last step of a full turn is the profile itself.
   const int last_copy = full_turn ? steps - 1 : steps;

@@ -202,12 +202,7 @@ private:
 }  // namespace
 
 namespace {
-// The plans read every neighbour of an extraordinary vertex from each patch at it (thesis Fig. 2.5
-// corner rule), so their stencils grow with the square of the valence (and of the face size, which
-// becomes the valence of the face's centre after the split): past this bound they would take
-// minutes and gigabytes, so such meshes are refused up front with a message.
-constexpr int kMaxPlanValence = 256;
-
+// Meshes past kMaxPlanValence are refused up front with a message.
 void check_plan_valences(const PolygonTopology& t) {
   std::vector<int> faces_at(size_t(t.n_vertices), 0);
   for (int f = 0; f < t.n_faces(); ++f) {

@@ -50,6 +50,12 @@ SurfaceTables build_plans(const PolygonTopology& topology, int max_depth,
 /// The faces build_plans builds together (core/plans/range_plans.h; the tables do not depend on it).
 inline constexpr int kFacesPerRange = 1024;
 
+/// The most faces at a vertex, and sides of a face, that patch plans take. The plans read every
+/// neighbour of an extraordinary vertex from each patch at it (thesis Fig. 2.5 corner rule), so their
+/// stencils grow with the square of the valence (and of the face size, which becomes the valence of the
+/// face's centre after the split): past this bound they would take minutes and gigabytes.
+inline constexpr int kMaxPlanValence = 256;
+
 /// build_plans' checks of the depth and the valences; throws as it does.
 void check_quad_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary);
 

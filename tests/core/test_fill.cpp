@@ -6,6 +6,7 @@
 
 #include "core/support/error.h"
 #include "core/modelling/mesh_queries.h"
+#include "core/plans/plan_builder.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
 #include "tests/support/mesh_checks.h"
@@ -97,6 +98,31 @@ TEST(Fill, RefusalsNameTheElement) {
       }),
       "the 5 selected vertices are not one whole boundary loop (select a whole loop, or 3 or 4 boundary vertices)");
   EXPECT_EQ(holed.n_faces(), 5u);
+}
+
+// A hole of more sides than a surface's patch plans take is not filled with one face; one of as
+// many as they take is.
+TEST(Fill, AFaceOfMoreSidesThanTheSurfaceTakesIsRefused) {
+  for (const int n : {kMaxPlanValence, kMaxPlanValence + 1}) {
+    std::vector<Vec3> p;
+    std::vector<std::vector<int>> faces;
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * i / n;
+      p.emplace_back(std::cos(a), std::sin(a), 0.0);
+      p.emplace_back(2 * std::cos(a), 2 * std::sin(a), 0.0);
+      faces.push_back({2 * i, 2 * i + 1, 2 * ((i + 1) % n) + 1, 2 * ((i + 1) % n)});
+    }
+    const CovarianceMesh ring = make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.01 * Mat3::Identity()), faces);
+    std::vector<int> hole;
+    for (int i = n - 1; i >= 0; --i) hole.push_back(2 * i);
+    if (n == kMaxPlanValence) {
+      EXPECT_EQ(fill(ring, hole).mesh.n_faces(), size_t(n + 1));
+    } else {
+      EXPECT_EQ(error_of([&] { fill(ring, hole); }),
+                "the result would have a face of 257 sides; a surface's patch plans take up to 256 (their stencils "
+                "grow with the square of it)");
+    }
+  }
 }
 
 }  // namespace

@@ -129,6 +129,13 @@ TEST(Spin, RefusalsSayWhy) {
               spin(profile, {4, 5}, z, Vec3(NAN, 0, 0), 90, 2);
             }),
             "the spin has a number that is not finite");
+  // Vertex 3, on the axis, gets a triangle per step: past what a surface's patch plans take at a vertex.
+  EXPECT_EQ(error_of([&] {
+              spin(profile, {3, 4}, z, o, 90, 300);
+            }),
+            "vertex 3 lies on the axis, so 300 steps would give it 300 faces; a surface's patch plans take up to "
+            "256 (at most 256 steps here)");
+  EXPECT_EQ(spin(profile, {3, 4}, z, o, 90, 256).mesh.n_faces(), 1u + 256u);
   // Two quads of opposite orientation: the profile 1 → 0 → 5 → 4 runs against one and along the other.
   const std::vector<Vec3> p = {{1, 0, 0}, {2, 0, 0}, {2, 0, 1}, {1, 0, 1}, {1, 0, 3}, {2, 0, 3}, {2, 0, 4}, {1, 0, 4}};
   const CovarianceMesh two = make_covariance_mesh(p, std::vector<Mat3>(p.size(), 0.04 * Mat3::Identity()),
