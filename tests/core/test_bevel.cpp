@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <random>
 
 #include "core/modelling/delete_elements.h"
@@ -309,9 +310,10 @@ TEST(BevelEdges, ClampStopsNewVerticesWhereTheyMeet) {
   const Modelled m = bevel_edges(cube, {{4, 5}, {7, 6}}, width(3));
   EXPECT_EQ(m.summary,
             "bevelled 2 edges: 8 vertices in place of 4, 2 faces added; width clamped to 1 so that new "
-            "vertices do not pass each other");
+            "vertices do not pass each other; 2 vertices that met merged");
   EXPECT_TRUE(closed_and_oriented(m.mesh));
   EXPECT_NEAR(signed_volume(m.mesh), 8 - 2 * 1.0 / 2 * 2, 1e-12);
+  EXPECT_EQ(m.mesh.n_vertices(), 8u - 4u + 8u - 2u);
   BevelOptions o = width(3);
   o.clamp = false;
   EXPECT_EQ(error_of([&] {
@@ -320,6 +322,41 @@ TEST(BevelEdges, ClampStopsNewVerticesWhereTheyMeet) {
             "a width of 3 would carry new vertices past each other on edge 4–7 (at most 1; clamp limits it)");
   o.width = 0.9;
   EXPECT_TRUE(closed_and_oriented(bevel_edges(cube, {{4, 5}, {7, 6}}, o).mesh));
+}
+
+// At the clamped width the vertices that meet are merged, and the faces left without area removed:
+// a cube bevelled on every edge becomes the octahedron of its faces' centres, on every vertex the
+// cuboctahedron of its edges' midpoints, with no two vertices at one point.
+TEST(BevelEdges, AClampedWidthLeavesNoCoincidentVerticesNorFacesWithoutArea) {
+  const CovarianceMesh cube = make_sample("cube");
+  std::vector<std::array<int, 2>> every_edge;
+  for (size_t e = 0; e < cube.n_edges(); ++e) every_edge.push_back({cube.edge(e)[0], cube.edge(e)[1]});
+  std::vector<int> every_vertex(8);
+  std::iota(every_vertex.begin(), every_vertex.end(), 0);
+  struct Case {
+    Modelled result;
+    size_t vertices, faces;
+  };
+  BevelOptions two = width(1.5, 2);
+  const Case cases[] = {{bevel_edges(cube, every_edge, width(1.5)), 6, 8},
+                        {bevel_edges(cube, every_edge, two), 18, 8},
+                        {bevel_vertices(cube, every_vertex, width(1.5)), 12, 14},
+                        {bevel_vertices(cube, every_vertex, two), 36, 14},
+                        {bevel_edges(cube, {{4, 5}}, width(5)), 6, 5}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.result.summary);
+    const CovarianceMesh& m = c.result.mesh;
+    EXPECT_EQ(m.n_vertices(), c.vertices);
+    EXPECT_EQ(m.n_faces(), c.faces);
+    EXPECT_TRUE(closed_and_oriented(m));
+    for (size_t v = 0; v < m.n_vertices(); ++v)
+      for (size_t w = v + 1; w < m.n_vertices(); ++w) EXPECT_GT((m.mean(v) - m.mean(w)).norm(), 1e-6) << v << " " << w;
+    const MeshArrays a = arrays_of(m);
+    for (int f = 0; f < a.n_faces(); ++f) EXPECT_GT(newell_normal(a, f).norm(), 1e-6) << "face " << f;
+    for (const int v : c.result.selection) EXPECT_LT(size_t(v), m.n_vertices());
+  }
+  // The octahedron's vertices are the centres of the cube's faces.
+  for (size_t v = 0; v < 6; ++v) EXPECT_NEAR(cases[0].result.mesh.mean(v).cwiseAbs().sum(), 1.0, 1e-12);
 }
 
 // Open meshes: a flat grid of 3 × 3 unit quads, vertex 4 j + i at (i, j, 0), its faces facing +z;
