@@ -64,6 +64,25 @@ TEST_F(EditorTools, BevelOfACubeEdgeMakesTheBand) {
   EXPECT_NE(output_.find("bevel: "), std::string::npos) << output_;
 }
 
+// Every edge of the cube bevelled past where the new vertices meet, as a designer drags too far: the
+// width is clamped and the vertices that meet merged, leaving the octahedron of the faces' centres
+// with no vertices at one point (core's clamped bevel, exactly).
+TEST_F(EditorTools, BevelPastWhereVerticesMeetIsClampedToAClosedSolid) {
+  Events bevel;
+  bevel.key("2").wait().key("a").wait().key("ctrl+b").wait().text("1.5").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(bevel, "cube_bevel_clamped.png");
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, 6);
+  EXPECT_EQ(shape.faces, 8);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_GT(test::signed_volume(saved), 0.0);
+  std::vector<std::array<int, 2>> every_edge;
+  for (size_t e = 0; e < original_.n_edges(); ++e) every_edge.push_back({original_.edge(e)[0], original_.edge(e)[1]});
+  EXPECT_TRUE(test::same_mesh(saved, bevel_edges(original_, every_edge, width(1.5)).mesh));
+  EXPECT_NE(output_.find("that met merged"), std::string::npos) << output_;
+}
+
 // The mouse moved away from the edge's middle sets a width: the band is made (a bevel of some width
 // > 0, the counts of one segment), and the summary printed.
 TEST_F(EditorTools, BevelWidthFollowsTheMouse) {
