@@ -129,10 +129,10 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
                 " pixels; nothing written");
   // Framed on the surface, an image without it means the evaluation lost it (Gaussians too thin
   // for the GPU's precision: render/gl/point_precision.h), not a view that looks away.
-  // From a camera given, an image without it shows that camera's view of nothing: refused as well,
+  // From a distance given, an image without it shows that camera's view of nothing: refused as well,
   // with the mesh's size to place the camera by.
   if (count_covered_pixels(normal) == 0) {
-    if (a.camera.empty())
+    if (yaw_pitch_distance.size() < 3)
       throw Error(a.input +
                   ": the surface covers no pixel of the image framed on it (Gaussians too thin for the "
                   "GPU's evaluation?); nothing written");

@@ -33,14 +33,20 @@ glm::mat4 Camera::projection(float aspect) const {
   return glm::perspective(glm::radians(fov_degrees), aspect, near_plane, far_plane);
 }
 
-glm::dvec3 Camera::eye_double() const {
+glm::dvec3 Camera::eye_offset() const {
   const double yaw = glm::radians(double(yaw_degrees)), pitch = glm::radians(double(pitch_degrees));
-  return target + double(distance) * (up_frame() * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                                              std::cos(pitch) * std::cos(yaw)));
+  return double(distance) *
+         (up_frame() * glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)));
 }
 
+glm::dvec3 Camera::eye_double() const { return target + eye_offset(); }
+
+// Looking from the eye's offset at the origin, then moved to the target: eye − target would lose the
+// offset's small components against a target far from the origin, and a view straight along the up
+// axis (pitch ±90°) would have no sideways axis left.
 glm::dmat4 Camera::view_double() const {
-  return glm::lookAt(eye_double(), target, up_frame() * glm::dvec3(0, 1, 0));
+  return glm::lookAt(eye_offset(), glm::dvec3(0.0), up_frame() * glm::dvec3(0, 1, 0)) *
+         glm::translate(glm::dmat4(1.0), -target);
 }
 
 glm::dmat4 Camera::view_projection_double(float aspect) const {

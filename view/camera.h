@@ -23,6 +23,8 @@ struct Camera {
 
   glm::vec3 eye() const { return glm::vec3(eye_double()); }
   glm::dvec3 eye_double() const;
+  /// The eye's place relative to the target.
+  glm::dvec3 eye_offset() const;
   glm::mat4 view() const { return glm::mat4(view_double()); }
   glm::mat4 projection(float aspect) const;
   glm::mat4 view_projection(float aspect) const { return projection(aspect) * view(); }

@@ -426,6 +426,27 @@ TEST(RenderCli, AGivenCameraThatShowsNoneOfTheSurfaceIsRefused) {
   EXPECT_GT(drawn_pixels(read_image(dir.file("y.png"))), 200);
 }
 
+// A view straight down or up the up axis (pitch ±90°) of a mesh away from the origin is the view of
+// the same mesh at the origin: the camera keeps its sideways axis wherever the target lies.
+TEST(RenderCli, AViewAlongTheUpAxisOfAMeshAwayFromTheOriginIsDrawn) {
+  test::TempDir dir;
+  CovarianceMesh moved = make_sample("cube");
+  write_mesh(dir.file("c.ply"), moved);
+  for (size_t i = 0; i < moved.n_vertices(); ++i) moved.set_mean(i, moved.mean(i) + Vec3(10, 10, 10));
+  write_mesh(dir.file("moved.ply"), moved);
+  for (const std::string camera : {"0,90", "45,-90", "0,90,6"}) {
+    int drawn[2];
+    for (int k = 0; k < 2; ++k) {
+      const std::string mesh = dir.file(k == 0 ? "c.ply" : "moved.ply"), image = dir.file("v" + std::to_string(k) + ".png");
+      const auto r = run_command(gpsurf("render " + mesh + " -o " + image + " --size 64x64 --camera " + camera));
+      ASSERT_EQ(r.exit_code, 0) << camera << ": " << r.output;
+      drawn[k] = drawn_pixels(read_image(image));
+    }
+    EXPECT_GT(drawn[0], 500) << camera;
+    EXPECT_NEAR(drawn[1], drawn[0], 0.02 * drawn[0]) << camera;
+  }
+}
+
 // An image is saved as every file is (core/io/atomic_file.h): a read-only target is refused and kept,
 // a hard-linked one is written so that both names see the new image, a directory is refused by name.
 TEST(RenderCli, ImagesAreSavedAsEveryFileIs) {

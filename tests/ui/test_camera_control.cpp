@@ -14,6 +14,26 @@ glm::vec2 pixel_of(const Camera& c, int w, int h, glm::dvec3 p) {
   return glm::vec2(*q);
 }
 
+// Straight down or up the up axis (pitch ±90°) at a target far from the origin, the view keeps its
+// sideways axis: the target maps to the middle of the view, at its distance straight ahead.
+TEST(CameraView, StraightAlongTheUpAxisAtAFarTargetIsAView) {
+  for (const float pitch : {90.0f, -90.0f})
+    for (const double far : {0.0, 10.0, 1e7}) {
+      Camera camera;
+      camera.target = glm::dvec3(far, far, -far);
+      camera.yaw_degrees = 45.0f;
+      camera.pitch_degrees = pitch;
+      camera.distance = 3.0f;
+      const glm::dmat4 view = camera.view_double();
+      const glm::dvec4 target = view * glm::dvec4(camera.target, 1.0);
+      EXPECT_NEAR(target.x, 0.0, 1e-9 * std::max(1.0, far)) << pitch << " " << far;
+      EXPECT_NEAR(target.y, 0.0, 1e-9 * std::max(1.0, far)) << pitch << " " << far;
+      EXPECT_NEAR(target.z, -3.0, 1e-9 * std::max(1.0, far)) << pitch << " " << far;
+      const glm::dvec4 above = view * glm::dvec4(camera.target + glm::dvec3(0, 1, 0), 1.0);
+      EXPECT_NEAR(above.z, pitch > 0 ? -2.0 : -4.0, 1e-6) << pitch << " " << far;
+    }
+}
+
 TEST(CameraControl, ZoomKeepsTheAnchorUnderTheCursor) {
   Camera camera = frame_box(Vec3(-1, -1, -1), Vec3(1, 1, 1));
   const glm::dvec3 anchor(0.4, 0.3, -0.2);
