@@ -61,8 +61,9 @@ struct Spot {
   int vertex = -1;    // once made
 };
 
-/// New vertices closer than this, relative to the bounding-box diagonal, have met at a clamped width.
-constexpr double kMet = 1e-9;
+/// Vertices closer than this, relative to the bounding-box diagonal, coincide: the repair's weld
+/// tolerance (core/io/mesh_repair.h), so that a bevel leaves nothing the repair would weld.
+constexpr double kMet = 1e-6;
 
 /// The superellipse exponent of a Blender profile value (0.5 → 2, a circle; 1 → ∞, the sharp corner).
 double superellipse_exponent(double profile) {
@@ -349,13 +350,25 @@ private:
       if (const double sum = r[0] + r[1]; sum > 0 && (mean(y) - mean(x)).norm() / sum < limit)
         limit = (mean(y) - mean(x)).norm() / sum, limiting = key;
     }
-    if (width_ <= limit) return;
-    if (!o_.clamp)
-      throw Error("a width of " + short_number(width_) + " would carry new vertices past each other on " +
-                  edge_name(int(limiting >> 32), int(limiting & 0xffffffffu)) + " (at most " + short_number(limit) +
-                  "; clamp limits it)");
-    width_ = limit;
-    clamped_ = true;
+    if (width_ > limit) {
+      if (!o_.clamp)
+        throw Error("a width of " + short_number(width_) + " would carry new vertices past each other on " +
+                    edge_name(int(limiting >> 32), int(limiting & 0xffffffffu)) + " (at most " + short_number(limit) +
+                    "; clamp limits it)");
+      width_ = limit;
+      clamped_ = true;
+    }
+    // New vertices within the tolerance of each other, or of the vertex their edge ends at, meet.
+    const double tolerance = kMet * bounding_box_diagonal(mesh_);
+    for (const auto& [key, r] : reach_) {
+      const int x = int(key >> 32), y = int(key & 0xffffffffu);
+      if ((mean(y) - mean(x)).norm() - width_ * (r[0] + r[1]) < tolerance) meet_ = true;
+    }
+    // A width so small that new vertices stay within the tolerance of where they start is refused.
+    for (const Spot& spot : spots_)
+      if (!spot.keep && width_ * spot.unit_shift.norm() < tolerance)
+        throw Error("a width of " + short_number(width_) + " would leave new vertices at " + vertex_name(spot.v) +
+                    " (closer than " + short_number(tolerance) + ", a millionth of the mesh's size)");
   }
 
   void make_spot(Spot& s) {
@@ -621,14 +634,13 @@ private:
     out.summary = summary + (o_.segments > 1 ? " (" + std::to_string(o_.segments) + " segments)" : "") + ": " +
                   count_of(out.selection.size(), "vertex", "vertices") + " in place of " + std::to_string(removed) +
                   ", " + count_of(size_t(a_.n_faces() - n_faces_), "face", "faces") + " added";
-    if (clamped_) {
+    if (clamped_)
       out.summary += "; width clamped to " + short_number(width_) + " so that new vertices do not pass each other";
-      merge_met_vertices(out);
-    }
+    if (meet_) merge_met_vertices(out);
     return out;
   }
 
-  /// At the clamped width new vertices meet one another or the vertex at the end of their edge (every
+  /// At the largest width new vertices meet one another or the vertex at the end of their edge (every
   /// face of a cube bevelled on all its edges shrinks to a point). Those that coincide are merged and
   /// the faces left without area removed (core/modelling/merge_vertices.h), so that the result has
   /// neither; the new vertices, as merged, stay the selection.
@@ -642,7 +654,7 @@ private:
     try {
       merged = weld_by_distance(out.mesh, {near.begin(), near.end()}, kMet * bounding_box_diagonal(out.mesh));
     } catch (const Error& e) {
-      throw Error("at the clamped width " + short_number(width_) + " new vertices meet, and merging them fails (" +
+      throw Error("at a width of " + short_number(width_) + " new vertices meet, and merging them fails (" +
                   e.what() + "); give a smaller width");
     }
     if (merged.mesh.n_vertices() == out.mesh.n_vertices()) return;
@@ -656,7 +668,8 @@ private:
       if (before >= 0 && size_t(before) < out.vertex_origin.size()) origin[w] = out.vertex_origin[size_t(before)];
     }
     out.summary += "; " + count_of(out.mesh.n_vertices() - merged.mesh.n_vertices(), "vertex", "vertices") +
-                   " that met merged";
+                   " that met merged, leaving " + count_of(merged.mesh.n_vertices(), "vertex", "vertices") + " and " +
+                   count_of(merged.mesh.n_faces(), "face", "faces");
     out.mesh = std::move(merged.mesh);
     out.selection = std::move(selection);
     out.vertex_origin = known && !out.vertex_origin.empty() ? std::move(origin) : std::vector<int>{};
@@ -677,6 +690,7 @@ private:
   std::map<uint64_t, std::array<double, 2>> reach_;  // by edge: reach per unit width from its lower, higher end
   double width_ = 0;
   bool clamped_ = false;
+  bool meet_ = false;  // new vertices meet at the width: merged once made
   std::map<std::pair<int, int>, std::vector<int>> replaced_;  // (face, corner) → the vertices in its place
   std::map<uint64_t, std::vector<int>> profile_of_;           // directed_key(v, x): bevelled edge's profile at v
   std::map<uint64_t, int> end_of_;                            // directed_key(v, x): what replaces v on edge v–x

@@ -362,13 +362,16 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
   }
   if (op == "extrude") {
     const char* what = one_of(f, {"faces", "edges", "vertices"});
+    // An extrusion by nothing would lay its new faces on the old ones (Blender leaves such doubles).
     if (std::string(what) == "faces") {
       const std::vector<int> faces = f.indices("faces");
       const double distance = f.number("distance");
+      if (distance == 0) throw usage_error("\"distance\" must not be 0 (the new faces would lie on the old ones)");
       append = [=](MeshArrays& a, std::string& summary) { return extrude_faces_in(a, faces, distance, summary); };
       return nullptr;
     }
     const Vec3 offset = f.vector3("offset");
+    if (offset.isZero(0)) throw usage_error("\"offset\" must not be [0, 0, 0] (the new faces would have no area)");
     if (std::string(what) == "edges") {
       const Edges edges = f.edges("edges");
       return [=](const CovarianceMesh& m) { return extrude_edges(m, edges, offset); };

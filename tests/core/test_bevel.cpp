@@ -310,7 +310,7 @@ TEST(BevelEdges, ClampStopsNewVerticesWhereTheyMeet) {
   const Modelled m = bevel_edges(cube, {{4, 5}, {7, 6}}, width(3));
   EXPECT_EQ(m.summary,
             "bevelled 2 edges: 8 vertices in place of 4, 2 faces added; width clamped to 1 so that new "
-            "vertices do not pass each other; 2 vertices that met merged");
+            "vertices do not pass each other; 2 vertices that met merged, leaving 10 vertices and 7 faces");
   EXPECT_TRUE(closed_and_oriented(m.mesh));
   EXPECT_NEAR(signed_volume(m.mesh), 8 - 2 * 1.0 / 2 * 2, 1e-12);
   EXPECT_EQ(m.mesh.n_vertices(), 8u - 4u + 8u - 2u);
@@ -342,7 +342,10 @@ TEST(BevelEdges, AClampedWidthLeavesNoCoincidentVerticesNorFacesWithoutArea) {
                         {bevel_edges(cube, every_edge, two), 18, 8},
                         {bevel_vertices(cube, every_vertex, width(1.5)), 12, 14},
                         {bevel_vertices(cube, every_vertex, two), 36, 14},
-                        {bevel_edges(cube, {{4, 5}}, width(5)), 6, 5}};
+                        {bevel_edges(cube, {{4, 5}}, width(5)), 6, 5},
+                        {bevel_edges(cube, {{4, 5}}, width(2)), 6, 5},                // at the limit, not clamped
+                        {bevel_edges(cube, every_edge, width(1 - 1e-7)), 6, 8},       // within the weld tolerance
+                        {bevel_vertices(cube, {0}, width(2)), 7, 7}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.result.summary);
     const CovarianceMesh& m = c.result.mesh;
@@ -355,6 +358,8 @@ TEST(BevelEdges, AClampedWidthLeavesNoCoincidentVerticesNorFacesWithoutArea) {
     for (int f = 0; f < a.n_faces(); ++f) EXPECT_GT(newell_normal(a, f).norm(), 1e-6) << "face " << f;
     for (const int v : c.result.selection) EXPECT_LT(size_t(v), m.n_vertices());
   }
+  // A width that leaves new vertices within a millionth of the mesh's size of where they start is refused.
+  EXPECT_EQ(error_of([&] { bevel_edges(cube, {{4, 5}}, width(1e-12)); }).find("a width of 1e-12 would leave new vertices at vertex "), 0u);
   // The octahedron's vertices are the centres of the cube's faces.
   for (size_t v = 0; v < 6; ++v) EXPECT_NEAR(cases[0].result.mesh.mean(v).cwiseAbs().sum(), 1.0, 1e-12);
 }

@@ -95,7 +95,7 @@ TEST(OperationList, ARunOfExtrusionsInsetsAndDeletionsIsTheSameAsOneAtATime) {
         R"([{"op":"extrude","faces":[3,4],"distance":0.1},{"op":"inset","faces":[4],"thickness":0.02},
             {"op":"delete","faces":[9]},{"op":"extrude","faces":[)" +
             std::to_string(last + 2) + R"(],"distance":-0.05},{"op":"inset","faces":[0,1,2],"thickness":0.01},
-            {"op":"delete","vertices":[40]},{"op":"extrude","faces":[0],"distance":0},
+            {"op":"delete","vertices":[40]},{"op":"extrude","faces":[0],"distance":0.03},
             {"op":"delete","edges":[[)" +
             std::to_string(edge[0]) + "," + std::to_string(edge[1]) + R"(]]}])",
         "ops.json");
@@ -108,7 +108,7 @@ TEST(OperationList, ARunOfExtrusionsInsetsAndDeletionsIsTheSameAsOneAtATime) {
     direct.push_back(extrude_faces(direct.back().mesh, {last + 2}, -0.05));
     direct.push_back(inset_faces(direct.back().mesh, {0, 1, 2}, 0.01));
     direct.push_back(delete_vertices(direct.back().mesh, {40}));
-    direct.push_back(extrude_faces(direct.back().mesh, {0}, 0.0));
+    direct.push_back(extrude_faces(direct.back().mesh, {0}, 0.03));
     direct.push_back(delete_edges(direct.back().mesh, {edge}));
     expect_same_gaussians_and_faces(scripted.mesh, direct.back().mesh);
     EXPECT_EQ(scripted.selection, direct.back().selection) << name;
@@ -124,6 +124,12 @@ TEST(OperationList, ARunOfExtrusionsInsetsAndDeletionsIsTheSameAsOneAtATime) {
             .apply(cube);
       }),
       error_of([&] { inset_faces(extrude_faces(cube, {0}, 1.0).mesh, {99}, 0.1); }).insert(0, "f: ops[1] (inset): "));
+  // An extrusion by nothing, which would lay new faces on the old ones, is a usage error as read.
+  for (const char* op : {R"({"op":"extrude","faces":[0],"distance":0})", R"({"op":"extrude","faces":[0],"distance":-0.0})"})
+    EXPECT_EQ(error_of([&] { OperationList::parse(std::string("[") + op + "]", "f"); }),
+              "f: ops[0] (extrude): \"distance\" must not be 0 (the new faces would lie on the old ones)");
+  EXPECT_EQ(error_of([&] { OperationList::parse(R"([{"op":"extrude","edges":[[0,1]],"offset":[0,0,0]}])", "f"); }),
+            "f: ops[0] (extrude): \"offset\" must not be [0, 0, 0] (the new faces would have no area)");
   // A step whose vertices the mesh would refuse (moved past the largest position) is named by its own
   // index, not by the run's last, with the words the step alone would get.
   const std::string far = error_of([&] { extrude_faces(extrude_faces(cube, {0}, 1.0).mesh, {1}, 1e200); });

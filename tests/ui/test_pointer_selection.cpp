@@ -73,6 +73,37 @@ TEST(PointerSelection, ABoxTakesWhatTheCameraSeesAndAllWithXRay) {
   EXPECT_EQ(all.vertices().size(), 1u);
 }
 
+// A click on the corner the cube hides, or on the middle of an edge at it, picks what is in front:
+// never the hidden corner or edge, which X-ray picks.
+TEST(PointerSelection, AClickPicksWhatTheCameraSeesAndAllWithXRay) {
+  const CovarianceMesh cube = make_sample("cube");
+  const Viewport view = test::framed_view(cube);
+  const std::vector<char> visible = visible_vertices(view, cube);
+  const int back = int(std::find(visible.begin(), visible.end(), 0) - visible.begin());
+  ASSERT_LT(back, 8);
+  PointerScene scene = scene_of(view, cube, SelectMode::vertex);
+  const glm::vec2 at_back = pixel_of(view, cube.mean(size_t(back)));
+  const std::vector<int> seen = vertices_under(scene, at_back);
+  EXPECT_TRUE(std::find(seen.begin(), seen.end(), back) == seen.end());
+  EXPECT_EQ(unpickable_vertices(scene)[size_t(back)], 1);
+  scene.through = true;
+  EXPECT_EQ(vertices_under(scene, at_back), std::vector<int>{back});
+  EXPECT_EQ(unpickable_vertices(scene)[size_t(back)], 0);
+
+  for (size_t e = 0; e < cube.n_edges(); ++e) {
+    const auto [a, b] = cube.edge(e);
+    if (a != back && b != back) continue;
+    const glm::vec2 middle = pixel_of(view, 0.5 * (cube.mean(size_t(a)) + cube.mean(size_t(b))));
+    PointerScene edges = scene_of(view, cube, SelectMode::edge);
+    Selection clicked, through;
+    click_select(clicked, edges, middle, -1, false);
+    for (const EdgeEnds& picked : clicked.edges(cube)) EXPECT_NE(picked, (EdgeEnds{a, b})) << a << "-" << b;
+    edges.through = true;
+    click_select(through, edges, middle, -1, false);
+    EXPECT_EQ(through.edges(cube), std::vector<EdgeEnds>{(EdgeEnds{a, b})}) << a << "-" << b;
+  }
+}
+
 TEST(PointerSelection, CtrlClickAddsTheShortestPathAndAltClickTheLoop) {
   const CovarianceMesh grid = test::grid_mesh(4, 4, 0.3, true);
   const Viewport view = test::framed_view(grid);

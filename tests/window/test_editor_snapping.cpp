@@ -103,11 +103,12 @@ TEST_F(EditorToolsSnap, SnapToAnEdgeLandsOnIt) {
   EXPECT_LT((a + s * (b - a) - p).norm(), 1e-9) << p.transpose();
 }
 
-// Shift+S puts the 3D cursor at vertex 0; with the pivot at the 3D cursor ("." three times from the
-// median point), S 2 scales vertex 6 about it: exactly 2 v6 − v0.
+// Shift+S puts the 3D cursor at vertex 0 (the corner the cube hides, picked with X-ray, Alt+Z); with
+// the pivot at the 3D cursor ("." three times from the median point), S 2 scales vertex 6 about it:
+// exactly 2 v6 − v0.
 TEST_F(EditorToolsSnap, ScaleAboutThe3DCursor) {
   Events events;
-  events.click(pixel_at({0})).wait().key("shift+s").wait();
+  events.key("alt+z").wait().click(pixel_at({0})).wait().key("alt+z").wait().key("shift+s").wait();
   events.key("period").wait().key("period").wait().key("period").wait();
   const glm::vec2 at6 = pixel_at({6}) + glm::vec2(0.0f, 2.0f);
   events.click(at6).wait().move(at6).wait().key("s").wait().text("2").wait().key("enter").wait(3);

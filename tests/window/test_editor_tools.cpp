@@ -110,17 +110,22 @@ TEST_F(EditorTools, BevelPreviewLeavesTheDocumentUntilConfirmed) {
   EXPECT_TRUE(saved_is_original());
 }
 
-// The wheel adds segments (two steps: 3), each a row of quads across the band.
+// The wheel adds segments, a notch each, each a row of quads across the band: two events of one step
+// give 3, as does one event of two steps (a fast wheel) or four of half a step (a smooth one).
 TEST_F(EditorTools, BevelWheelSegmentsChangeTheCount) {
-  Events bevel = edge_selected();
-  bevel.key("ctrl+b").wait().scroll(pixel_at({6, 7}), 1.0f).wait().scroll(pixel_at({6, 7}), 1.0f).wait();
-  bevel.text("0.25").wait().key("enter").wait(3);
-  const CovarianceMesh saved = play(bevel, "cube_edge_3_segments.png");
   const CovarianceMesh expected = bevel_edges(original_, {{6, 7}}, width(0.25, 3)).mesh;
-  EXPECT_GT(saved.n_vertices(), 10u);
-  EXPECT_EQ(saved.n_vertices(), expected.n_vertices());
-  EXPECT_EQ(saved.n_faces(), expected.n_faces());
-  EXPECT_TRUE(test::same_mesh(saved, expected));
+  for (const std::vector<float>& steps :
+       {std::vector<float>{1.0f, 1.0f}, std::vector<float>{2.0f}, std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f}}) {
+    Events bevel = edge_selected();
+    bevel.key("ctrl+b").wait();
+    for (const float step : steps) bevel.scroll(pixel_at({6, 7}), step).wait();
+    bevel.text("0.25").wait().key("enter").wait(3);
+    const CovarianceMesh saved = play(bevel, "cube_edge_3_segments.png");
+    EXPECT_GT(saved.n_vertices(), 10u);
+    EXPECT_EQ(saved.n_vertices(), expected.n_vertices()) << steps.size();
+    EXPECT_EQ(saved.n_faces(), expected.n_faces()) << steps.size();
+    EXPECT_TRUE(test::same_mesh(saved, expected)) << steps.size();
+  }
 }
 
 // Ctrl+Shift+B on the corner nearest the camera: the corner cut off (10 vertices, 7 faces).

@@ -47,17 +47,61 @@ SelectionNote face_path_select(Selection& selection, const PointerScene& scene, 
   }
 }
 
+// Whether the camera sees edge {a, b} where it passes nearest `pixel`: the front-most face there is
+// one of the edge's own (or, within a few pixels of an end, one of that end's), or no face is (its
+// silhouette).
+bool edge_seen_near(const PointerScene& scene, const std::array<int, 2>& edge, glm::vec2 pixel) {
+  const Viewport& v = scene.view;
+  const CovarianceMesh& mesh = scene.mesh;
+  const auto a = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(edge[0])));
+  const auto b = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(edge[1])));
+  if (!a || !b) return true;  // crossing the near plane: nothing is in front of it
+  const glm::vec2 from(*a), along = glm::vec2(*b) - from;
+  const float t = glm::dot(along, along) > 0.0f ? std::clamp(glm::dot(pixel - from, along) / glm::dot(along, along), 0.0f, 1.0f) : 0.0f;
+  const int front = pick_face(v, from + t * along, mesh, &scene.hidden_faces);
+  if (front < 0) return true;
+  const std::span<const int> corners = mesh.face(size_t(front));
+  const auto has = [&](int v) { return std::find(corners.begin(), corners.end(), v) != corners.end(); };
+  constexpr float kAtAnEnd = 3.0f;  // pixels: there the faces of the end vertex meet the edge
+  return (has(edge[0]) && has(edge[1])) || (has(edge[0]) && t * glm::length(along) <= kAtAnEnd) ||
+         (has(edge[1]) && (1.0f - t) * glm::length(along) <= kAtAnEnd);
+}
+
+// The edge nearest `pixel` within `radius` that is not hidden and, without X-ray, that the camera
+// sees there (Blender's solid mode); the next nearest where a face covers the nearest.
+std::optional<std::array<int, 2>> edge_under(const PointerScene& scene, glm::vec2 pixel, float radius) {
+  constexpr int kCoveredTries = 16;
+  std::vector<char> unpickable = scene.hidden_edges;
+  unpickable.resize(scene.mesh.n_edges(), 0);
+  for (int k = 0; k < kCoveredTries; ++k) {
+    const auto edge = pick_edge(scene.view, pixel, scene.mesh, radius, &unpickable);
+    if (!edge || scene.through || edge_seen_near(scene, *edge, pixel)) return edge;
+    unpickable[size_t(scene.mesh.find_edge((*edge)[0], (*edge)[1]))] = 1;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+std::vector<char> unpickable_vertices(const PointerScene& scene) {
+  std::vector<char> out = scene.hidden_vertices;
+  out.resize(scene.mesh.n_vertices(), 0);
+  if (scene.through) return out;
+  const std::vector<char> visible = visible_vertices(scene.view, scene.mesh);
+  for (size_t v = 0; v < out.size(); ++v) out[v] = out[v] || !visible[v];
+  return out;
+}
 
 std::vector<int> vertices_under(const PointerScene& scene, glm::vec2 pixel) {
   const Viewport& v = scene.view;
   const CovarianceMesh& mesh = scene.mesh;
   if (scene.mode == SelectMode::vertex) {
-    if (const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, mesh, kClickRadius, &scene.hidden_vertices);
+    const std::vector<char> unpickable = unpickable_vertices(scene);
+    if (const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, mesh, kClickRadius, &unpickable);
         vertex >= 0)
       return {vertex};
   } else if (scene.mode == SelectMode::edge) {
-    if (const auto edge = pick_edge(v, pixel, mesh, kClickRadius, &scene.hidden_edges)) return {(*edge)[0], (*edge)[1]};
+    if (const auto edge = edge_under(scene, pixel, kClickRadius)) return {(*edge)[0], (*edge)[1]};
   }
   const int face = pick_face(v, pixel, mesh, &scene.hidden_faces);
   return face >= 0 ? corners(mesh, face) : std::vector<int>{};
@@ -71,8 +115,7 @@ void click_select(Selection& selection, const PointerScene& scene, glm::vec2 pix
   const Viewport& v = scene.view;
   const CovarianceMesh& mesh = scene.mesh;
   std::vector<int> group;
-  const auto edge =
-      scene.mode == SelectMode::edge ? pick_edge(v, pixel, mesh, kClickRadius, &scene.hidden_edges) : std::nullopt;
+  const auto edge = scene.mode == SelectMode::edge ? edge_under(scene, pixel, kClickRadius) : std::nullopt;
   const int face = scene.mode == SelectMode::face ? pick_face(v, pixel, mesh, &scene.hidden_faces) : -1;
   if (edge)
     group = {(*edge)[0], (*edge)[1]};
@@ -92,7 +135,7 @@ void click_select(Selection& selection, const PointerScene& scene, glm::vec2 pix
 
 SelectionNote loop_select(Selection& selection, const PointerScene& scene, glm::vec2 pixel, bool toggle) {
   const CovarianceMesh& mesh = scene.mesh;
-  const auto edge = pick_edge(scene.view, pixel, mesh, kLoopRadius, &scene.hidden_edges);
+  const auto edge = edge_under(scene, pixel, kLoopRadius);
   if (!edge) return {};
   const auto [a, b] = *edge;
   try {
@@ -112,7 +155,7 @@ SelectionNote loop_select(Selection& selection, const PointerScene& scene, glm::
 
 SelectionNote ring_select(Selection& selection, const PointerScene& scene, glm::vec2 pixel, bool toggle) {
   const CovarianceMesh& mesh = scene.mesh;
-  const auto edge = pick_edge(scene.view, pixel, mesh, kLoopRadius, &scene.hidden_edges);
+  const auto edge = edge_under(scene, pixel, kLoopRadius);
   if (!edge) return {};
   const auto [a, b] = *edge;
   try {

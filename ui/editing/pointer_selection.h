@@ -16,7 +16,8 @@
 namespace gps {
 
 /// What the pointer selects in: the view, the mesh, the mode, and 1 per hidden vertex, edge (in the
-/// mesh's edge order) and face, or empty where nothing is hidden.
+/// mesh's edge order) and face, or empty where nothing is hidden; `through` (X-ray): elements the
+/// surface hides are picked too.
 struct PointerScene {
   const Viewport& view;
   const CovarianceMesh& mesh;
@@ -24,6 +25,7 @@ struct PointerScene {
   const std::vector<char>& hidden_vertices;
   const std::vector<char>& hidden_edges;
   const std::vector<char>& hidden_faces;
+  bool through = false;
 };
 
 /// A status line: what a selection did, or why it did nothing.
@@ -31,6 +33,10 @@ struct SelectionNote {
   std::string text;
   bool error = false;
 };
+
+/// 1 per vertex a click cannot pick: hidden, or (without X-ray) not seen by the camera
+/// (view/visible_vertices.h), as Blender's solid mode picks what is in front.
+std::vector<char> unpickable_vertices(const PointerScene& scene);
 
 /// The element under `pixel` in the mode, as its vertices (a face where no vertex or edge is near).
 std::vector<int> vertices_under(const PointerScene& scene, glm::vec2 pixel);

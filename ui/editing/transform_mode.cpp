@@ -215,14 +215,16 @@ std::string TransformMode::describe() const {
   if (constraint_ == Constraint::direction) constraint = " along " + direction_name_;
   char amount[128];
   const AffineMap m = map(0);
+  // What prints as zero at four decimals, shown without a sign ("-0.0000" from a rounding's −1e-17).
+  const auto shown = [](double x) { return std::abs(x) < 5e-5 ? 0.0 : x; };
   switch (kind_) {
     case TransformKind::grab:
-      std::snprintf(amount, sizeof amount, "Grab (%.4f, %.4f, %.4f)", m.translation.x(), m.translation.y(),
-                    m.translation.z());
+      std::snprintf(amount, sizeof amount, "Grab (%.4f, %.4f, %.4f)", shown(m.translation.x()),
+                    shown(m.translation.y()), shown(m.translation.z()));
       break;
     case TransformKind::scale: {
       const double typed = typed_value_;
-      std::snprintf(amount, sizeof amount, "Scale %.4f", std::isfinite(typed) ? typed : factor_);
+      std::snprintf(amount, sizeof amount, "Scale %.4f", shown(std::isfinite(typed) ? typed : factor_));
       break;
     }
     case TransformKind::rotate:

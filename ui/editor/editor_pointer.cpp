@@ -24,7 +24,8 @@ constexpr float kBoxThreshold = 4.0f;  // pixels a left press moves before it be
 }  // namespace
 
 PointerScene EditorApp::pointer_scene(const Viewport& v) const {
-  return {v, document_.mesh(), select_mode_, hidden_.vertex_mask(), hidden_.edge_mask(), hidden_.face_mask()};
+  return {v,        document_.mesh(), select_mode_, hidden_.vertex_mask(), hidden_.edge_mask(), hidden_.face_mask(),
+          select_through_};
 }
 
 Viewport EditorApp::viewport() const {
@@ -55,8 +56,8 @@ std::optional<HandleFrame> EditorApp::gizmo_frame(const Viewport& v) const {
 
 int EditorApp::pick(glm::vec2 pixel) const {
   const Viewport v = viewport();
-  const int vertex =
-      pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &hidden_.vertex_mask());
+  const std::vector<char> unpickable = unpickable_vertices(pointer_scene(v));
+  const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &unpickable);
   if (vertex >= 0 || !view_.draw.ellipsoids) return vertex;
   const bool all = hidden_.elements().empty() &&
                    all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices());
@@ -68,8 +69,8 @@ int EditorApp::pick(glm::vec2 pixel) const {
 // near the click as the end (a neighbour the end sits on): the click then selects it.
 bool EditorApp::vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const {
   const Viewport v = viewport();
-  const int vertex =
-      pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &hidden_.vertex_mask());
+  const std::vector<char> unpickable = unpickable_vertices(pointer_scene(v));
+  const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &unpickable);
   if (vertex < 0 || selection_.contains(vertex)) return false;
   const auto at_vertex = visible_pixel(v.camera, v.width, v.height, document_.mesh().mean(size_t(vertex)));
   const auto at_end = visible_pixel(v.camera, v.width, v.height, gizmo.end(handle.axis, handle.side));

@@ -99,7 +99,7 @@ ToolResult BevelTool::handle(const InputEvent& e, ToolContext& ctx) {
     else
       follow(ctx.cursor, ctx);  // nothing typed: the mouse's width again
   } else if (e.type == InputEvent::Type::scroll) {
-    options_.segments = std::clamp(options_.segments + (e.steps > 0 ? 1 : -1), 1, kMaxBevelSegments);
+    options_.segments = std::clamp(options_.segments + wheel_.take(e.steps), 1, kMaxBevelSegments);
   } else if (key && e.key == GLFW_KEY_P) {
     options_.profile = options_.profile == 0.5 ? 0.25 : 0.5;
   } else {

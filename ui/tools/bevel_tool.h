@@ -14,6 +14,7 @@
 #include "core/modelling/bevel.h"
 #include "ui/tools/preview_tool.h"
 #include "ui/tools/typed_number.h"
+#include "ui/input/wheel_notches.h"
 
 namespace gps {
 
@@ -43,6 +44,7 @@ private:
   glm::vec2 start_cursor_{0.0f};
   BevelOptions options_;
   TypedNumber typed_;
+  WheelNotches wheel_;
 };
 
 }  // namespace gps

@@ -149,7 +149,7 @@ ToolResult LoopCutTool::handle(const InputEvent& e, ToolContext& ctx) {
       hover(e.position, ctx);
   } else if (e.type == InputEvent::Type::scroll) {
     if (sliding_) return ToolResult::passed_on;
-    cuts_ = std::clamp(cuts_ + (e.steps > 0 ? 1 : -1), 1, kMaxLoopCuts);
+    cuts_ = std::clamp(cuts_ + wheel_.take(e.steps), 1, kMaxLoopCuts);
     status_ = "loop cut: " + std::to_string(cuts_) + " cuts (wheel), click to cut, Esc cancels";
   }
   return ToolResult::consumed;

@@ -10,6 +10,7 @@
 
 #include "core/modelling/loop_cut.h"
 #include "ui/tools/modal_tool.h"
+#include "ui/input/wheel_notches.h"
 
 namespace gps {
 
@@ -36,6 +37,7 @@ private:
   bool sliding_ = false;
   std::shared_ptr<const CovarianceMesh> base_;  // the mesh before the cut
   std::string summary_;                         // the cut's
+  WheelNotches wheel_;
   glm::vec2 start_cursor_{0.0f};
 };
 

@@ -99,7 +99,7 @@ ToolResult SpinTool::handle(const InputEvent& e, ToolContext& ctx) {
     else
       follow(ctx.cursor, ctx);  // nothing typed: the mouse's angle again
   } else if (e.type == InputEvent::Type::scroll) {
-    steps_ = std::clamp(steps_ + (e.steps > 0 ? 1 : -1), 1, kMaxSpinSteps);
+    steps_ = std::clamp(steps_ + wheel_.take(e.steps), 1, kMaxSpinSteps);
   } else {
     return ToolResult::consumed;
   }

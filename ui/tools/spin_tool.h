@@ -11,6 +11,7 @@
 
 #include "ui/tools/preview_tool.h"
 #include "ui/tools/typed_number.h"
+#include "ui/input/wheel_notches.h"
 
 namespace gps {
 
@@ -36,6 +37,7 @@ private:
   double degrees_ = 0.0;
   int steps_ = kDefaultSteps;
   TypedNumber typed_;
+  WheelNotches wheel_;
 };
 
 }  // namespace gps
