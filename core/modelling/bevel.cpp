@@ -654,8 +654,8 @@ private:
     try {
       merged = weld_by_distance(out.mesh, {near.begin(), near.end()}, kMet * bounding_box_diagonal(out.mesh));
     } catch (const Error& e) {
-      throw Error("at a width of " + short_number(width_) + " new vertices meet, and merging them fails (" +
-                  e.what() + "); give a smaller width");
+      throw Error("at a width of " + short_number(width_) + " new vertices meet, and merging them fails (" + e.what() +
+                  "); give a smaller width");
     }
     if (merged.mesh.n_vertices() == out.mesh.n_vertices()) return;
     // Each vertex of the merged mesh: a new one if it was one or is a merged group.
@@ -690,7 +690,7 @@ private:
   std::map<uint64_t, std::array<double, 2>> reach_;  // by edge: reach per unit width from its lower, higher end
   double width_ = 0;
   bool clamped_ = false;
-  bool meet_ = false;  // new vertices meet at the width: merged once made
+  bool meet_ = false;                                         // new vertices meet at the width: merged once made
   std::map<std::pair<int, int>, std::vector<int>> replaced_;  // (face, corner) → the vertices in its place
   std::map<uint64_t, std::vector<int>> profile_of_;           // directed_key(v, x): bevelled edge's profile at v
   std::map<uint64_t, int> end_of_;                            // directed_key(v, x): what replaces v on edge v–x

@@ -343,8 +343,8 @@ TEST(BevelEdges, AClampedWidthLeavesNoCoincidentVerticesNorFacesWithoutArea) {
                         {bevel_vertices(cube, every_vertex, width(1.5)), 12, 14},
                         {bevel_vertices(cube, every_vertex, two), 36, 14},
                         {bevel_edges(cube, {{4, 5}}, width(5)), 6, 5},
-                        {bevel_edges(cube, {{4, 5}}, width(2)), 6, 5},                // at the limit, not clamped
-                        {bevel_edges(cube, every_edge, width(1 - 1e-7)), 6, 8},       // within the weld tolerance
+                        {bevel_edges(cube, {{4, 5}}, width(2)), 6, 5},           // at the limit, not clamped
+                        {bevel_edges(cube, every_edge, width(1 - 1e-7)), 6, 8},  // within the weld tolerance
                         {bevel_vertices(cube, {0}, width(2)), 7, 7}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.result.summary);
@@ -359,7 +359,10 @@ TEST(BevelEdges, AClampedWidthLeavesNoCoincidentVerticesNorFacesWithoutArea) {
     for (const int v : c.result.selection) EXPECT_LT(size_t(v), m.n_vertices());
   }
   // A width that leaves new vertices within a millionth of the mesh's size of where they start is refused.
-  EXPECT_EQ(error_of([&] { bevel_edges(cube, {{4, 5}}, width(1e-12)); }).find("a width of 1e-12 would leave new vertices at vertex "), 0u);
+  EXPECT_EQ(error_of([&] {
+              bevel_edges(cube, {{4, 5}}, width(1e-12));
+            }).find("a width of 1e-12 would leave new vertices at vertex "),
+            0u);
   // The octahedron's vertices are the centres of the cube's faces.
   for (size_t v = 0; v < 6; ++v) EXPECT_NEAR(cases[0].result.mesh.mean(v).cwiseAbs().sum(), 1.0, 1e-12);
 }

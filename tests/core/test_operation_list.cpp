@@ -125,7 +125,8 @@ TEST(OperationList, ARunOfExtrusionsInsetsAndDeletionsIsTheSameAsOneAtATime) {
       }),
       error_of([&] { inset_faces(extrude_faces(cube, {0}, 1.0).mesh, {99}, 0.1); }).insert(0, "f: ops[1] (inset): "));
   // An extrusion by nothing, which would lay new faces on the old ones, is a usage error as read.
-  for (const char* op : {R"({"op":"extrude","faces":[0],"distance":0})", R"({"op":"extrude","faces":[0],"distance":-0.0})"})
+  for (const char* op :
+       {R"({"op":"extrude","faces":[0],"distance":0})", R"({"op":"extrude","faces":[0],"distance":-0.0})"})
     EXPECT_EQ(error_of([&] { OperationList::parse(std::string("[") + op + "]", "f"); }),
               "f: ops[0] (extrude): \"distance\" must not be 0 (the new faces would lie on the old ones)");
   EXPECT_EQ(error_of([&] { OperationList::parse(R"([{"op":"extrude","edges":[[0,1]],"offset":[0,0,0]}])", "f"); }),

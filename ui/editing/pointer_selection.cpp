@@ -57,7 +57,9 @@ bool edge_seen_near(const PointerScene& scene, const std::array<int, 2>& edge, g
   const auto b = visible_pixel(v.camera, v.width, v.height, mesh.mean(size_t(edge[1])));
   if (!a || !b) return true;  // crossing the near plane: nothing is in front of it
   const glm::vec2 from(*a), along = glm::vec2(*b) - from;
-  const float t = glm::dot(along, along) > 0.0f ? std::clamp(glm::dot(pixel - from, along) / glm::dot(along, along), 0.0f, 1.0f) : 0.0f;
+  const float t = glm::dot(along, along) > 0.0f
+                      ? std::clamp(glm::dot(pixel - from, along) / glm::dot(along, along), 0.0f, 1.0f)
+                      : 0.0f;
   const int front = pick_face(v, from + t * along, mesh, &scene.hidden_faces);
   if (front < 0) return true;
   const std::span<const int> corners = mesh.face(size_t(front));

@@ -24,7 +24,12 @@ constexpr float kBoxThreshold = 4.0f;  // pixels a left press moves before it be
 }  // namespace
 
 PointerScene EditorApp::pointer_scene(const Viewport& v) const {
-  return {v,        document_.mesh(), select_mode_, hidden_.vertex_mask(), hidden_.edge_mask(), hidden_.face_mask(),
+  return {v,
+          document_.mesh(),
+          select_mode_,
+          hidden_.vertex_mask(),
+          hidden_.edge_mask(),
+          hidden_.face_mask(),
           select_through_};
 }
 
