@@ -80,9 +80,9 @@ Modelled spin(const CovarianceMesh& mesh, const std::vector<int>& vertices, cons
     int faces = 0;
     for (const auto& face : a.faces) faces += int(std::count(face.begin(), face.end(), profile[i]));
     if (faces + leaving * steps > kMaxPlanValence)
-      throw Error("vertex " + std::to_string(profile[i]) + " lies on the axis, so " + std::to_string(steps) + " steps would give it " +
-                  std::to_string(faces + leaving * steps) + " faces; a surface's patch plans take up to " +
-                  std::to_string(kMaxPlanValence) + " (at most " +
+      throw Error("vertex " + std::to_string(profile[i]) + " lies on the axis, so " + std::to_string(steps) +
+                  " steps would give it " + std::to_string(faces + leaving * steps) +
+                  " faces; a surface's patch plans take up to " + std::to_string(kMaxPlanValence) + " (at most " +
                   std::to_string(std::max(0, (kMaxPlanValence - faces) / leaving)) + " steps here)");
   }
 

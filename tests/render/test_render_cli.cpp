@@ -437,7 +437,8 @@ TEST(RenderCli, AViewAlongTheUpAxisOfAMeshAwayFromTheOriginIsDrawn) {
   for (const std::string camera : {"0,90", "45,-90", "0,90,6"}) {
     int drawn[2];
     for (int k = 0; k < 2; ++k) {
-      const std::string mesh = dir.file(k == 0 ? "c.ply" : "moved.ply"), image = dir.file("v" + std::to_string(k) + ".png");
+      const std::string mesh = dir.file(k == 0 ? "c.ply" : "moved.ply"),
+                        image = dir.file("v" + std::to_string(k) + ".png");
       const auto r = run_command(gpsurf("render " + mesh + " -o " + image + " --size 64x64 --camera " + camera));
       ASSERT_EQ(r.exit_code, 0) << camera << ": " << r.output;
       drawn[k] = drawn_pixels(read_image(image));
