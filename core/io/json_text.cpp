@@ -14,6 +14,11 @@ namespace {
 
 using Json = nlohmann::json;
 
+// Deeper nesting is refused as it is read: none of gpsurf's documents nests more than a few levels,
+// and a DOM of a million empty arrays would take a hundred times the file's size.
+constexpr size_t kMaxJsonDepth = 64;
+struct TooDeep {};
+
 // nlohmann's DOM builder that also knows where in the document it is, so that an error names the
 // element it met (its own message names only the byte). With a sink, a top-level array's elements are
 // built one at a time and handed over as each ends, so that the whole document is never held.
@@ -35,6 +40,7 @@ public:
   bool binary(Json::binary_t& v) { return value() && dom_->binary(v) && ended_value(); }
   bool start_object(size_t n) {
     if (!value()) return false;
+    if (levels_.size() >= kMaxJsonDepth) throw TooDeep{};
     levels_.push_back({false, 0, {}});
     return dom_->start_object(n);
   }
@@ -53,6 +59,7 @@ public:
       return true;
     }
     if (!value()) return false;
+    if (levels_.size() >= kMaxJsonDepth) throw TooDeep{};
     levels_.push_back({true, 0, {}});
     return dom_->start_array(n);
   }
@@ -120,6 +127,12 @@ private:
 void run_parser(const std::string& text, const std::string& source, const std::string& top_name,
                 LocatingParser& parser) {
   const std::string prefix = source.empty() ? "" : source + ": ";
+  // Where the parser stopped, as "ops[3].cuts: " (nothing at the top).
+  const auto at = [&] {
+    std::string path = top_name + parser.where();
+    if (!path.empty() && path[0] == '.') path.erase(0, 1);
+    return path.empty() ? path : path + ": ";
+  };
   if (const void* nul = std::memchr(text.data(), 0, text.size()))
     throw usage_error(prefix + "not valid JSON (a NUL byte at byte " +
                       std::to_string(static_cast<const char*>(nul) - text.data() + 1) + ")");
@@ -128,9 +141,9 @@ void run_parser(const std::string& text, const std::string& source, const std::s
   } catch (const Json::parse_error& e) {
     throw usage_error(prefix + "not valid JSON (byte " + std::to_string(e.byte) + ")");
   } catch (const Json::out_of_range& e) {
-    std::string path = top_name + parser.where();
-    if (!path.empty() && path[0] == '.') path.erase(0, 1);
-    throw usage_error(prefix + (path.empty() ? "" : path + ": ") + "a number beyond the range of a double");
+    throw usage_error(prefix + at() + "a number beyond the range of a double");
+  } catch (const TooDeep&) {
+    throw usage_error(prefix + at() + "nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
   } catch (const Json::exception& e) {
     throw usage_error(prefix + "not valid JSON");
   }

@@ -8,6 +8,7 @@
 
 #include "core/io/json_text.h"
 #include "core/support/error.h"
+#include "tests/support/error_of.h"
 
 namespace gps {
 namespace {
@@ -73,6 +74,21 @@ TEST(JsonText, ErrorsAreAWholeParses) {
   EXPECT_EQ(parse_error(R"([{"op": "add"}, {"op": "extrude", "distance": 1e999}])"),
             "ops.json: ops[1].distance: a number beyond the range of a double");
   EXPECT_EQ(parse_error(R"([1, [2, 3e999]])"), "ops.json: ops[1][1]: a number beyond the range of a double");
+}
+
+// Nesting past 64 levels is refused as it is read, naming where (a DOM of a million empty arrays would
+// take a hundred times the file); 64 levels are read.
+TEST(JsonText, NestingPast64LevelsIsRefusedAsRead) {
+  const auto nested = [](size_t n) { return std::string(n, '[') + std::string(n, ']'); };
+  EXPECT_NO_THROW(parse_json(nested(64), "a.json"));
+  const std::string suffix = ": nested more than 64 levels deep";
+  const std::string deep = test::error_of([&] { parse_json(nested(65), "a.json", "ops"); });
+  EXPECT_EQ(deep.rfind("a.json: ops[0][0]", 0), 0u) << deep;
+  EXPECT_EQ(deep.substr(deep.size() - suffix.size()), suffix) << deep;
+  const std::string edits =
+      test::error_of([&] { parse_json(R"({"renders":[{"edits":)" + nested(1000000) + "}]}", "s.json"); });
+  EXPECT_EQ(edits.rfind("s.json: renders[0].edits[0]", 0), 0u) << edits.substr(0, 100);
+  EXPECT_LT(edits.size(), 400u);
 }
 
 TEST(JsonText, WhatTheSinkThrowsStopsTheRead) {
