@@ -288,10 +288,15 @@ void run_script(const std::string& path, const std::string& context_name) {
       CovarianceMesh mesh =
           a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh_repairing(a.input, a.repair);
       if (job.contains("ops")) mesh = OperationList::parse(job["ops"].dump(), "").apply(mesh).mesh;
-      for (const auto& edit : job.value("edits", nlohmann::json::array())) {
+      if (job.contains("edits") && !job["edits"].is_array())
+        throw usage_error("edits: give a list of {\"vertex\": i, ...}");
+      for (size_t e = 0; e < job.value("edits", nlohmann::json::array()).size(); ++e) {
+        const nlohmann::json& edit = job["edits"][e];
+        const std::string named = "edits[" + std::to_string(e) + "]";
+        if (!edit.is_object()) throw usage_error(named + ": give {\"vertex\": i, ...}");
         const long long v = script_integer(edit, "vertex", 0, std::numeric_limits<int>::max());
         if (size_t(v) >= mesh.n_vertices())
-          throw usage_error("edit of vertex " + std::to_string(v) + ", but the mesh has " +
+          throw usage_error(named + ": edit of vertex " + std::to_string(v) + ", but the mesh has " +
                             std::to_string(mesh.n_vertices()));
         if (edit.contains("mean")) {
           const std::vector<double> m = script_numbers(edit, "mean", 3);
@@ -305,9 +310,10 @@ void run_script(const std::string& path, const std::string& context_name) {
         }
         if (edit.contains("scale"))
           mesh.set_covariance(size_t(v), mesh.covariance(size_t(v)) * script_number(edit, "scale", 0, 1e100));
-        if (!is_spd(mesh.covariance(size_t(v))))
-          throw usage_error("edit of vertex " + std::to_string(v) +
-                            " gives a covariance that is not positive definite");
+        // The limits every mesh keeps (core/mesh/covariance_mesh.h), as gpsurf edit's "set" has them.
+        std::string why = position_problem(mesh.mean(size_t(v)));
+        if (why.empty()) why = covariance_problem(mesh.covariance(size_t(v)));
+        if (!why.empty()) throw usage_error(named + ": vertex " + std::to_string(v) + " " + why);
       }
       render_one(renderer, context->description(), a, mesh);
     } catch (const nlohmann::json::exception& e) {

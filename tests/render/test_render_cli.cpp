@@ -343,7 +343,14 @@ TEST(RenderCli, ScriptNumbersOutsideTheirTypeAreRefused) {
            {R"("exact": 1)", "render 0: exact must be true or false, got 1"},
            {R"("camera": 30)", "render 0: camera must be a string, got 30"},
            {R"("depth": 9)", "render 0: depth must be an integer from 0 to 8, got 9"},
-           {R"("sigma": 1e400)", "renders[0].sigma: a number beyond the range of a double"}}) {
+           {R"("sigma": 1e400)", "renders[0].sigma: a number beyond the range of a double"},
+           {R"("edits": {})", "render 0: edits: give a list of"},
+           {R"("edits": [3])", "render 0: edits[0]: give {\"vertex\": i, ...}"},
+           {R"("edits": [{"vertex": 0, "scale": 2}, {"vertex": 0, "scale": 1e-300}])",
+            "render 0: edits[1]: vertex 0 has a covariance"},
+           {R"("edits": [{"vertex": 0, "covariance": [1e-200, 0, 0, 1e-200, 0, 1e-200]}])",
+            "render 0: edits[0]: vertex 0 has a covariance"},
+           {R"("edits": [{"vertex": 0, "mean": [1e300, 0, 0]}])", "render 0: edits[0]: vertex 0 has a coordinate 1e+300 beyond"}}) {
     const std::string script = dir.write("s.json", R"({"renders": [{"mesh": "sample:cube", "output": ")" + out +
                                                        R"(", "size": "16x16", )" + job + "}]}");
     const auto r = run_command(gpsurf("render --script " + script));
