@@ -373,6 +373,9 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
     const tinygltf::Mesh& mesh = model.meshes[size_t(instance.mesh)];
     const Eigen::Matrix3d linear = instance.transform.topLeftCorner<3, 3>();
     const Vec3 shift = instance.transform.topRightCorner<3, 1>();
+    // A world transform that mirrors turns the triangles' winding around (glTF 2.0, "Transformations"):
+    // they are read reversed, so that the faces stay outward.
+    const bool mirrored = linear.determinant() < 0;
     for (size_t pi = 0; pi < mesh.primitives.size(); ++pi) {
       const tinygltf::Primitive& p = mesh.primitives[pi];
       if (!is_triangles(p)) continue;
@@ -428,9 +431,10 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
         return vertex_of[i];
       };
       primitive_triangles(p.mode, n, where, [&](size_t a, size_t b, size_t c, bool skip_degenerate) {
-        const int t[3] = {vertex(a), vertex(b), vertex(c)};
+        int t[3] = {vertex(a), vertex(b), vertex(c)};
         // A strip or fan restarts through triangles with a repeated corner: they are not faces.
         if (skip_degenerate && (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])) return;
+        if (mirrored) std::swap(t[1], t[2]);
         verts.insert(verts.end(), t, t + 3);
         offsets.push_back(int(verts.size()));
       });

@@ -15,6 +15,7 @@
 #include "core/support/error.h"
 #include "tests/support/random_spd.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
@@ -298,6 +299,22 @@ TEST(GltfIo, NodeTransformsThroughTheHierarchyPlaceEachInstance) {
     double nearest = 1e9;
     for (size_t i = 0; i < m.n_vertices(); ++i) nearest = std::min(nearest, (m.mean(i) - e).norm());
     EXPECT_LT(nearest, 1e-12) << e.transpose();
+  }
+}
+
+// A node that mirrors (a negative scale, or a matrix of negative determinant) turns the winding around,
+// as glTF 2.0 says: the faces are read reversed and the solid stays outward.
+TEST(GltfIo, AMirroringNodeKeepsTheFacesOutward) {
+  test::TempDir dir;
+  for (const nlohmann::json& node :
+       {nlohmann::json{{"mesh", 0}}, nlohmann::json{{"scale", {-1, 1, 1}}, {"mesh", 0}},
+        nlohmann::json{{"scale", {-1, -1, -1}}, {"mesh", 0}},
+        nlohmann::json{{"matrix", {1, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 5, 0, 0, 1}}, {"mesh", 0}}}) {
+    HandMade h = split_cube();
+    h.j["nodes"] = {node};
+    dir.write("m.glb", h.glb());
+    const CovarianceMesh m = read_mesh(dir.file("m.glb"));
+    EXPECT_NEAR(test::signed_volume(m), 8.0, 1e-12) << node.dump();
   }
 }
 
