@@ -247,12 +247,23 @@ void add_mesh_bindings(py::module_& m) {
       .def(
           "__deepcopy__", [](const MeshHandle& h, const py::object&) { return MeshHandle{h.mesh}; }, py::arg("memo"))
       .def("__repr__", &describe)
-      .def(py::pickle(&state_of, &from_state))
+      .def("__getstate__", &state_of)
+      // The state of a tuple of 6 items replaces the mesh; anything else is refused. Named
+      // __setstate__ below: pybind11 takes a method of that name for a constructor, which an instance
+      // made already skips, ignoring what it was given.
+      .def("_set_state",
+           [](MeshHandle& h, const py::object& state) {
+             if (!py::isinstance<py::tuple>(state))
+               throw py::type_error("Mesh: a pickled state is a tuple of 6 items, not " +
+                                    std::string(py::str(py::type::of(state).attr("__name__"))));
+             h.mesh = from_state(state.cast<py::tuple>()).mesh;
+           })
       // Every pickle protocol rebuilds the mesh through _mesh_from_state: protocols 0 and 1 would
       // otherwise make the instance with object.__new__, which a compiled class refuses.
       .def("__reduce__", [](const MeshHandle& h) {
         return py::make_tuple(py::module_::import("gpsurf").attr("_mesh_from_state"), py::make_tuple(state_of(h)));
       });
+  m.attr("Mesh").attr("__setstate__") = m.attr("Mesh").attr("_set_state");
   m.def("_mesh_from_state", &from_state, py::arg("state"), "A Mesh from its pickled state (gpsurf._mesh_from_state)");
 
   m.def(

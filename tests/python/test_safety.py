@@ -255,6 +255,17 @@ def test_instances_made_without_init_hold_an_empty_mesh():
 def test_a_pickled_state_of_other_types_and_a_size_past_memory_are_refused_in_words():
     with pytest.raises(TypeError, match="an item is not of its type"):
         gpsurf.Mesh.__new__(gpsurf.Mesh).__setstate__((1, 2, 3, 4, 5, 6))
+    # An existing mesh given a state that is not one is refused too, and left as it was.
+    mesh = gpsurf.sample("cube")
+    with pytest.raises(TypeError, match="a tuple of 6 items, not NoneType"):
+        mesh.__setstate__(None)
+    for state in ((1, 2, 3), ()):
+        with pytest.raises(ValueError, match="a pickled state of 6 items expected"):
+            mesh.__setstate__(state)
+    assert mesh.n_vertices == 8
+    copy = gpsurf.Mesh.__new__(gpsurf.Mesh)
+    copy.__setstate__(mesh.__getstate__())
+    assert copy.n_vertices == 8 and copy.n_faces == 6
     with pytest.raises(MemoryError, match="out of memory"):
         gpsurf.Mesh(np.zeros((3, 3)), range(10**12))
 
