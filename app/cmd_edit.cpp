@@ -51,6 +51,7 @@ void add_edit_command(CLI::App& app) {
       }
     }();
     write_mesh(args->output, result.mesh, !args->ascii);
+    if (!args->quiet) print_reader_notes({unsaved_sharpness_note(args->output, result.mesh)});
     if (args->quiet) return;
     for (size_t i = 0; i < summaries.size(); ++i) std::cout << "ops[" << i << "]: " << summaries[i] << "\n";
     std::cout << "wrote " << args->output << " (" << result.mesh.n_vertices() << " vertices, " << result.mesh.n_faces()

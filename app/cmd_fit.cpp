@@ -119,6 +119,7 @@ void add_fit_command(CLI::App& app) {
     if (!args->quiet)
       std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop) << "\n";
     write_mesh(args->output, result.mesh, !args->ascii);
+    if (!args->quiet) print_reader_notes({unsaved_sharpness_note(args->output, result.mesh)});
     if (args->quiet) return;
     std::cout << "wrote " << args->output << "\n";
     if (args->level == 0) return;

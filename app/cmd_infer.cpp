@@ -52,6 +52,7 @@ void add_infer_command(CLI::App& app) {
                 << args->crease_angle << " degrees (infinitely sharp)\n";
     }
     write_mesh(args->output, m, !args->ascii);
+    print_reader_notes({unsaved_sharpness_note(args->output, m)});
     std::cout << "wrote " << args->output << "\n";
   });
 }

@@ -90,6 +90,7 @@ void add_simplify_command(CLI::App& app) {
       s.mesh = std::move(placed->mesh);
     }
     write_mesh(args->output, s.mesh, !args->ascii);
+    if (!args->quiet) print_reader_notes({unsaved_sharpness_note(args->output, s.mesh)});
     if (args->quiet) return;
     if (s.triangulated) std::cout << "fanned the faces of more than 3 sides into triangles\n";
     std::cout << "simplified " << s.input_vertices << " vertices, " << s.input_triangles << " triangles to "

@@ -42,6 +42,7 @@ void add_subdivide_command(CLI::App& app) {
     o.loop_beta = named.loop_beta;
     const SubdivisionResult r = naming_input(args->input, [&] { return subdivide(m, o); });
     write_mesh(args->output, r.mesh, !args->ascii);
+    print_reader_notes({unsaved_sharpness_note(args->output, r.mesh)});
     std::cout << "wrote " << args->output << " (" << (o.scheme == Scheme::loop ? "Loop, " : "Catmull-Clark, ")
               << r.mesh.n_vertices() << " vertices, " << r.mesh.n_faces() << " faces)\n";
   });

@@ -174,6 +174,19 @@ std::string sharpness_write_problem(const CovarianceMesh& m) {
 
 }  // namespace
 
+std::string unsaved_sharpness_note(const std::string& path, const CovarianceMesh& mesh) {
+  const std::string ext = extension_of(path);
+  if (ext != ".gltf" && ext != ".glb") return "";
+  const size_t creases = mesh.sharpness.creases.size(),
+               corners = size_t(std::count_if(mesh.sharpness.corners.begin(), mesh.sharpness.corners.end(),
+                                              [](double s) { return s > 0.0; }));
+  if (creases + corners == 0) return "";
+  std::string dropped = creases > 0 ? std::to_string(creases) + (creases == 1 ? " crease" : " creases") : "";
+  if (corners > 0)
+    dropped += (dropped.empty() ? "" : " and ") + std::to_string(corners) + (corners == 1 ? " corner" : " corners");
+  return escaped(path) + ": " + dropped + " not saved (glTF has no place for them; .ply and .obj keep them)";
+}
+
 void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary) {
   const std::string ext = extension_of(path);
   // What gpsurf writes it must read back: refuse values the readers would refuse.

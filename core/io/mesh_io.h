@@ -63,6 +63,10 @@ ElementNames file_element_names(const std::string& path);
 /// atomically: a temporary file beside the target, then a rename.
 void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary = false);
 
+/// What a save of `mesh` to `path` cannot keep, as a note for the user ("" when it keeps it all):
+/// glTF has no place for creases and corners.
+std::string unsaved_sharpness_note(const std::string& path, const CovarianceMesh& mesh);
+
 /// The lower-case extension of a path, with the dot (".ply"), or "" when there is none.
 std::string extension_of(const std::string& path);
 

@@ -40,6 +40,27 @@ TEST(GltfCli, InfoSubdivideAndTessellateReadAndWriteGlb) {
       << tess.output;
 }
 
+// Creases and corners saved as glTF, which has no place for them, are named in a note (not with
+// --quiet); a mesh without them, or a save as .ply, gets none.
+TEST(GltfCli, CreasesAndCornersAGlbCannotKeepAreNoted) {
+  test::TempDir dir;
+  const std::string obj = dir.write("c.obj",
+                                    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                    "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n"
+                                    "t crease 2/1/0 1 2 2.0\nt corner 1/1/0 4 10\n");
+  const std::string note = "c.glb: 1 crease and 1 corner not saved (glTF has no place for them";
+  const auto glb = run_command(gpsurf("edit " + obj + " -o " + dir.file("c.glb") + " --ops []"));
+  ASSERT_EQ(glb.exit_code, 0) << glb.output;
+  EXPECT_NE(glb.output.find("note: " + dir.file(note)), std::string::npos) << glb.output;
+  const auto quiet = run_command(gpsurf("edit " + obj + " -o " + dir.file("c.glb") + " --ops [] -q"));
+  EXPECT_EQ(quiet.output, "");
+  const auto ply = run_command(gpsurf("edit " + obj + " -o " + dir.file("c.ply") + " --ops []"));
+  EXPECT_EQ(ply.output.find("note:"), std::string::npos) << ply.output;
+  const auto plain = run_command(gpsurf("sample cube -o " + dir.file("cube.ply")));
+  const auto none = run_command(gpsurf("infer " + dir.file("cube.ply") + " -o " + dir.file("cube.glb")));
+  EXPECT_EQ(none.output.find("note:"), std::string::npos) << none.output;
+}
+
 TEST(GltfCli, BrokenGlbIsOneLineAndExit1) {
   test::TempDir dir;
   const std::string cube = dir.file("cube.glb");
