@@ -4,6 +4,20 @@
 
 namespace gps {
 
+namespace {
+// "a", "a and b", "a, b and c".
+std::string listed(const std::vector<std::string>& parts) {
+  std::string out = parts.empty() ? "" : parts[0];
+  for (size_t k = 1; k < parts.size(); ++k) out += (k + 1 == parts.size() ? " and " : ", ") + parts[k];
+  return out;
+}
+}  // namespace
+
+std::string named_list(const std::string& one, const std::string& many, const std::vector<std::string>& names) {
+  if (names.empty()) return "";
+  return (names.size() == 1 ? one : many) + " " + listed(names);
+}
+
 std::string dropped_attributes_note(const std::string& source, const DroppedAttributes& dropped) {
   std::vector<std::string> parts;
   const auto count = [&](size_t n, const char* one, const char* many) {
@@ -12,10 +26,9 @@ std::string dropped_attributes_note(const std::string& source, const DroppedAttr
   count(dropped.texture_coordinates, "texture coordinate", "texture coordinates");
   count(dropped.normals, "normal", "normals");
   count(dropped.colours, "vertex colour", "vertex colours");
+  parts.insert(parts.end(), dropped.other.begin(), dropped.other.end());
   if (parts.empty()) return "";
-  std::string listed = parts[0];
-  for (size_t k = 1; k < parts.size(); ++k) listed += (k + 1 == parts.size() ? " and " : ", ") + parts[k];
-  return source + ": " + listed +
+  return source + ": " + listed(parts) +
          " dropped (a covariance mesh keeps positions, Gaussians and creases; normals come from the limit surface)";
 }
 

@@ -3,14 +3,20 @@
 // colours), counted by the readers so that dropping them is said, not silent.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace gps {
 
 struct DroppedAttributes {
   size_t texture_coordinates = 0, normals = 0, colours = 0;
+  /// Other properties not read, as "vertex property quality" or "face properties red, green and blue".
+  std::vector<std::string> other;
 
-  bool empty() const { return texture_coordinates == 0 && normals == 0 && colours == 0; }
+  bool empty() const { return texture_coordinates == 0 && normals == 0 && colours == 0 && other.empty(); }
 };
+
+/// "ONE A" or "MANY A, B and C" ("vertex property 'q'", "the tags 'holes' and 'x'"); "" for no names.
+std::string named_list(const std::string& one, const std::string& many, const std::vector<std::string>& names);
 
 /// "SOURCE: 4 texture coordinates, 1 normal and 4 vertex colours dropped (a covariance mesh keeps
 /// positions, Gaussians and creases; normals come from the limit surface)"; "" where none were.

@@ -50,6 +50,7 @@ struct SharpTags {
   std::vector<Line> lines;
   std::vector<int32_t> ints;
   std::vector<double> values;
+  std::vector<std::string> skipped;  // the other tags' names, each once, as first met
 };
 
 // Reads OpenSubdiv's tag line "t crease|corner nint/nfloat/nstring ints floats strings" (regression
@@ -59,7 +60,12 @@ struct SharpTags {
 // from the line until the counts are met.
 void read_sharp_tag(std::string_view line, int number, const std::string& at, SharpTags& tags) {
   const std::string_view name = next_word(line);
-  if (name != "crease" && name != "corner") return;
+  if (name != "crease" && name != "corner") {
+    if (const std::string shown = quoted_token(name);
+        std::find(tags.skipped.begin(), tags.skipped.end(), shown) == tags.skipped.end() && tags.skipped.size() < 8)
+      tags.skipped.push_back(shown);
+    return;
+  }
   const std::string what(name);
   const std::string_view counts = next_word(line);
   long long n[3] = {0, 0, 0};
@@ -283,6 +289,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built
   PolygonSoup soup = plain_soup(std::move(points), std::move(faces), source);
   soup.sharpness = sharpness_of_tags(tags, soup, source, soup.notes);
+  if (!tags.skipped.empty()) dropped.other.push_back(named_list("the tag", "the tags", tags.skipped));
   if (std::string note = dropped_attributes_note(source, dropped); !note.empty()) soup.notes.push_back(std::move(note));
   return soup;
 }
@@ -340,6 +347,13 @@ PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {
   // Every vertex takes at least 6 characters ("0 0 0\n"), every face at least 8 ("3 0 1 2\n").
   if (nv > (long long)data.size() / 6 || nf > (long long)data.size() / 8)
     throw Error(source + ": the header declares more vertices or faces than the file holds");
+  // Values after a vertex's position (a COFF's colour, an NOFF's normal) or a face's corners (its
+  // colour) are counted, to say they are dropped.
+  size_t vertices_with_more = 0, faces_with_more = 0;
+  const auto skip_rest = [&](int line, size_t& count) {
+    count += !t.done() && t.line() == line;
+    t.skip_line(line);
+  };
   // Arrays grow as records arrive (never sized from the header): memory follows what the file holds.
   std::vector<Vec3> points;
   for (long long v = 0; v < nv; ++v) {
@@ -351,7 +365,7 @@ PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {
       if (const std::string why = parse_number(t.word(), p[k]); !why.empty()) throw Error(at(line) + why);
       t.next();
     }
-    t.skip_line(line);  // normals, colours, texture coordinates
+    skip_rest(line, vertices_with_more);  // normals, colours, texture coordinates
   }
   PolygonTopology faces;
   for (long long f = 0; f < nf; ++f) {
@@ -372,10 +386,18 @@ PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {
       mesh_of_soup(plain_soup(std::move(points), std::move(faces), source), source);
       throw Error(source + ": the mesh is not manifold");  // not reached: the check above throws
     }
-    t.skip_line(line);  // colour values
+    skip_rest(line, faces_with_more);  // colour values
   }
   std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built
-  return plain_soup(std::move(points), std::move(faces), source);
+  PolygonSoup soup = plain_soup(std::move(points), std::move(faces), source);
+  DroppedAttributes dropped;
+  if (vertices_with_more > 0)
+    dropped.other.push_back("the values after the position of " + std::to_string(vertices_with_more) +
+                            (vertices_with_more == 1 ? " vertex" : " vertices") + " (colours, normals or texture coordinates)");
+  if (faces_with_more > 0)
+    dropped.other.push_back("the colours of " + std::to_string(faces_with_more) + (faces_with_more == 1 ? " face" : " faces"));
+  if (std::string note = dropped_attributes_note(source, dropped); !note.empty()) soup.notes.push_back(std::move(note));
+  return soup;
 }
 
 void check_text_head(std::string_view head, size_t size) {

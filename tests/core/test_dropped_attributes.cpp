@@ -1,4 +1,5 @@
-// What the readers drop (texture coordinates, normals, vertex colours) is said in one note.
+// What the readers drop (texture coordinates, normals, vertex colours, other properties and tags) is said
+// in one note.
 #include "core/io/dropped_attributes.h"
 
 #include <gtest/gtest.h>
@@ -42,6 +43,29 @@ TEST(DroppedAttributes, PlyNormalsColoursAndTextureCoordinatesAreNoted) {
   EXPECT_FALSE(has_covariances);
   EXPECT_EQ(soup.notes,
             (std::vector<std::string>{"tri.ply: 3 texture coordinates, 3 normals and 3 vertex colours" + kTail}));
+}
+
+// Whatever else a file holds is named: a PLY's other vertex and face properties, the colours and
+// normals of an OFF's variants (COFF, NOFF), an OBJ's tags other than crease and corner.
+TEST(DroppedAttributes, OtherPropertiesTagsAndOffValuesAreNamed) {
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "property float quality\nelement face 1\nproperty list uchar int vertex_indices\nproperty uchar red\n"
+      "property list uchar float texcoord\nend_header\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2 9 6 0 0 1 0 0 1\n";
+  bool has_covariances = true;
+  EXPECT_EQ(parse_ply_soup(ply, "q.ply", has_covariances).notes,
+            (std::vector<std::string>{"q.ply: vertex property 'quality' and face properties 'red' and 'texcoord'" +
+                                      kTail}));
+  const std::string coff = "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 255 0 0 255\n0 1 0\n3 0 1 2 255 0 0\n";
+  EXPECT_EQ(parse_off_soup(coff, "c.off").notes,
+            (std::vector<std::string>{"c.off: the values after the position of 2 vertices (colours, normals or "
+                                      "texture coordinates) and the colours of 1 face" +
+                                      kTail}));
+  EXPECT_TRUE(parse_off_soup("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "p.off").notes.empty());
+  const std::string tagged = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nt holes 1/0/0 0\n"
+                             "t interpolateboundary 1/0/0 2\nt holes 1/0/0 0\n";
+  EXPECT_EQ(parse_obj_soup(tagged, "h.obj").notes,
+            (std::vector<std::string>{"h.obj: the tags 'holes' and 'interpolateboundary'" + kTail}));
 }
 
 }  // namespace
