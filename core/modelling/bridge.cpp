@@ -190,7 +190,12 @@ std::vector<int> identity_index(int n) {
 Modelled bridge(const CovarianceMesh& mesh, const std::vector<int>& loop_a, const std::vector<int>& loop_b) {
   const MeshArrays a = arrays_of(mesh);
   const std::vector<int> sa = sorted_vertices(a, loop_a), sb = sorted_vertices(a, loop_b);
-  if (sa.size() != loop_a.size() || sb.size() != loop_b.size()) throw Error("a vertex is listed twice in a loop");
+  for (const std::vector<int>* loop : {&loop_a, &loop_b}) {
+    std::vector<int> listed = *loop;
+    std::sort(listed.begin(), listed.end());
+    if (const auto twice = std::adjacent_find(listed.begin(), listed.end()); twice != listed.end())
+      throw Error("vertex " + std::to_string(*twice) + " is listed twice in a loop");
+  }
   for (int v : sa)
     if (std::binary_search(sb.begin(), sb.end(), v)) throw Error("vertex " + std::to_string(v) + " is in both loops");
   if (sa.size() < 2 || sb.size() < 2) throw Error("a chain to bridge needs at least 2 vertices");

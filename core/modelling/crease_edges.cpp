@@ -40,10 +40,16 @@ std::vector<int> set_crease_in_place(CovarianceMesh& mesh, const std::vector<std
       throw Error("edge " + std::to_string(a) + "–" + std::to_string(b) + " is not in the mesh");
     selection.insert(selection.end(), {a, b});
   }
-  for (const auto& [a, b] : edges) mesh.sharpness.set_crease(a, b, sharpness);
+  std::vector<int> distinct;  // each edge once, however often and whichever way round it is listed
+  for (const auto& [a, b] : edges) {
+    mesh.sharpness.set_crease(a, b, sharpness);
+    distinct.push_back(mesh.find_edge(a, b));
+  }
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
   std::sort(selection.begin(), selection.end());
   selection.erase(std::unique(selection.begin(), selection.end()), selection.end());
-  summary = "set the crease of " + count_of(edges.size(), "edge", "edges") + " to " + sharpness_words(sharpness);
+  summary = "set the crease of " + count_of(distinct.size(), "edge", "edges") + " to " + sharpness_words(sharpness);
   return selection;
 }
 

@@ -52,7 +52,11 @@ Modelled fill(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
   MeshArrays a = arrays_of(mesh);
   if (vertices.size() < 3) throw Error("a face needs at least 3 vertices");
   const std::vector<int> sorted = sorted_vertices(a, vertices);
-  if (sorted.size() != vertices.size()) throw Error("a vertex is listed twice");
+  if (sorted.size() != vertices.size()) {
+    std::vector<int> listed = vertices;
+    std::sort(listed.begin(), listed.end());
+    throw Error("vertex " + std::to_string(*std::adjacent_find(listed.begin(), listed.end())) + " is listed twice");
+  }
   const BoundaryPlaces b = boundary_places(mesh);
   for (int v : vertices) check_open(mesh, b, v);
   const DirectedEdges edges = directed_edges(a);

@@ -112,6 +112,7 @@ TEST(Bridge, RefusalsNameTheProblemAndChangeNothing) {
   eight.resize(8);
   EXPECT_EQ(error_of([&] { bridge(cut, ring(0), eight); }), "cannot bridge a closed boundary loop to an open chain");
   EXPECT_EQ(error_of([&] { bridge(cut, ring(0), ring(0)); }), "vertex 0 is in both loops");
+  EXPECT_EQ(error_of([&] { bridge(cut, ring(0), {12, 13, 14, 13}); }), "vertex 13 is listed twice in a loop");
   EXPECT_EQ(error_of([&] { bridge(cut, {}, {}); }), "a chain to bridge needs at least 2 vertices");
   EXPECT_EQ(error_of([&] { bridge(cut, ring(0), ring(5)); }), "vertex 60 is not on a boundary");
   EXPECT_EQ(error_of([&] {

@@ -46,6 +46,8 @@ TEST(CreaseEdges, SetsCreasesLeavingTheMeshAsItIs) {
   const Modelled smooth = set_crease(m.mesh, {{4, 5}, {5, 6}, {6, 7}, {7, 4}}, 0.0);
   EXPECT_TRUE(smooth.mesh.sharpness.empty());
   EXPECT_EQ(smooth.summary, "set the crease of 4 edges to 0 (smooth)");
+  // An edge listed twice, either way round, is one edge.
+  EXPECT_EQ(set_crease(cube, {{0, 1}, {1, 0}, {0, 1}}, 1.0).summary, "set the crease of 1 edge to 1");
 }
 
 TEST(CreaseEdges, SetsAndRemovesCorners) {

@@ -81,7 +81,7 @@ TEST(Fill, FillSelectedTakesAWholeLoopOrThreeOrFourOfIt) {
 TEST(Fill, RefusalsNameTheElement) {
   const CovarianceMesh holed = holed_cube();
   EXPECT_EQ(error_of([&] { fill(holed, {4, 5}); }), "a face needs at least 3 vertices");
-  EXPECT_EQ(error_of([&] { fill(holed, {4, 5, 4}); }), "a vertex is listed twice");
+  EXPECT_EQ(error_of([&] { fill(holed, {4, 5, 4}); }), "vertex 4 is listed twice");
   EXPECT_EQ(error_of([&] { fill(holed, {4, 5, 9}); }), "vertex 9 is not in the mesh (8 vertices)");
   const CovarianceMesh cube = test::cube_mesh();
   EXPECT_EQ(error_of([&] { fill(cube, {4, 5, 6, 7}); }), "vertex 4 is not on a boundary");
