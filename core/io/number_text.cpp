@@ -1,5 +1,7 @@
 #include "core/io/number_text.h"
 
+#include <cmath>
+
 #include <charconv>
 
 #include "core/support/quoted_text.h"
@@ -22,6 +24,8 @@ std::string parse_number(std::string_view s, double& out) {
 }
 
 std::string number_as_read(double v) {
+  // A whole number as its digits ("4000000000", not "4e+09"), up to where a double holds every one.
+  if (v == std::floor(v) && std::abs(v) < 9007199254740992.0) return std::to_string((long long)v);
   char text[32];
   return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
 }

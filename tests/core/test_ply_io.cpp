@@ -271,6 +271,7 @@ TEST(PlyIo, CorruptListLengthsAndIndicesAreErrors) {
       {"neg_count.ply", h + "-3 0 1 2\n", "list length -3 is not a count"},
       {"long_count.ply", h + "4 0 1 2\n", "line 19: list length 4 exceeds the values on the line"},
       {"huge_count.ply", h + "1e300 0 1 2\n", "list length 1e+300 exceeds"},
+      {"big_count.ply", h + "4000000000 0 1 2\n", "list length 4000000000 exceeds"},
       {"nan_index.ply", h + "3 0 1 nan\n", "face 0 refers to vertex nan"},
       {"frac_index.ply", h + "3 0 1 1.5\n", "face 0 refers to vertex 1.5"},
       {"neg_index.ply", h + "3 0 -1 2\n", "face 0 refers to vertex -1"},
