@@ -38,7 +38,16 @@ void add_edit_command(CLI::App& app) {
         !from_file && first != std::string::npos && args->ops[first] != '[' && std::filesystem::exists(args->ops))
       throw usage_error("--ops " + quoted_token(args->ops) +
                         " is not a JSON array; to read the operations from that file, write --ops @" + args->ops);
-    const OperationList ops = OperationList::parse(from_file ? read_text_file(source) : args->ops, source);
+    const OperationList ops = [&] {
+      try {
+        return OperationList::parse(from_file ? read_text_file(source) : args->ops, source);
+      } catch (const Error& e) {
+        // Inline text that is not JSON at all is named by its option.
+        if (!from_file && std::string_view(e.what()).starts_with("not valid JSON"))
+          throw usage_error("--ops: " + std::string(e.what()));
+        throw;
+      }
+    }();
     const CovarianceMesh mesh = args->input.rfind("sample:", 0) == 0
                                     ? make_sample(args->input.substr(7))
                                     : read_mesh_repairing(args->input, args->repair, {}, args->quiet);

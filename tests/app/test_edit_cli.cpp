@@ -86,7 +86,9 @@ TEST(EditCli, MalformedOperationsAreUsageErrors) {
            {R"([{"op":"subdivide"},{"op":"twist"}])", "ops[1] ('twist'): unknown operation"},
            {R"([{"op":"transform","vertices":"all","matrix":[1,0,0]}])", "the matrix has 3 numbers"},
            {R"({"op":"subdivide"})", "expected a JSON array"},
-           {R"([{"op":"subdivide")", "not valid JSON"}}) {
+           {R"([{"op":"subdivide")", "gpsurf: --ops: not valid JSON"},
+           {R"([{"op":"extrude","faces":[0],"distance":NaN}])", "gpsurf: --ops: not valid JSON (byte 41)"},
+           {R"([{"op":"extrude","faces":[0],"distance":0}])", R"(ops[0] (extrude): "distance" must not be 0)"}}) {
     const auto r = run(ops);
     EXPECT_EQ(r.exit_code, 2) << ops << "\n" << r.output;
     EXPECT_EQ(test::line_count(r.output), 1u) << r.output;
