@@ -61,17 +61,31 @@ MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
       if (face.empty() || face.back() != t) face.push_back(t);
     }
     while (face.size() > 1 && face.front() == face.back()) face.pop_back();
-    if (face.size() < 3) {
-      ++r.faces_removed;
-      continue;
-    }
-    for (int v : face) {
-      if (last_seen[size_t(v)] == f)
-        throw Error("face " + std::to_string(f) + " would use vertex " + std::to_string(v) + " twice");
+    // A vertex the face now meets twice pinches it into loops (two opposite corners of a quad merged:
+    // two slivers of two corners): each loop of 3 or more corners is a face, as Blender splits it, the
+    // others are removed. Walked as a stack: a vertex met again closes the loop since its last visit.
+    std::vector<std::vector<int>> loops;
+    std::vector<int> stack;
+    for (const int v : face) {
+      if (last_seen[size_t(v)] == f) {
+        const auto at = std::find(stack.begin(), stack.end(), v);
+        loops.emplace_back(at, stack.end());
+        stack.erase(at + 1, stack.end());
+        continue;
+      }
       last_seen[size_t(v)] = f;
+      stack.push_back(v);
     }
-    a.face_origin.push_back(origin);
-    faces.push_back(std::move(face));
+    loops.push_back(std::move(stack));
+    const bool whole = loops.size() == 1;
+    bool kept = false;
+    for (std::vector<int>& loop : loops) {
+      if (loop.size() < 3) continue;
+      a.face_origin.push_back(whole ? origin : -1);
+      faces.push_back(std::move(loop));
+      kept = true;
+    }
+    r.faces_removed += kept ? 0 : 1;
   }
   a.faces = std::move(faces);
   r.new_index.assign(a.means.size(), -1);

@@ -6,8 +6,9 @@
 // one with a selection and a one-line summary, never changing their input; on refusal they throw
 // gps::Error with a one-line reason and nothing is changed. A merged vertex keeps the smallest index
 // of its group; the others are deleted and the remaining vertices compacted in order. Faces lose
-// repeated consecutive corners; faces left with fewer than 3 corners are deleted (the others
-// compacted in order).
+// repeated consecutive corners; a face that meets a merged vertex twice is split there into loops
+// (two opposite corners of a quad: two slivers); loops and faces left with fewer than 3 corners are
+// deleted (the others compacted in order).
 #include <vector>
 
 #include "core/modelling/mesh_arrays.h"
@@ -19,8 +20,8 @@ namespace gps {
 /// docs/design.md §1); `first`/`last` take the Gaussian of the first/last vertex listed.
 enum class MergePoint { center, first, last };
 
-/// Merges the vertices (2 or more, distinct) into one. Refuses a result that is not manifold, or a
-/// face that would use the merged vertex twice non-consecutively, naming it. Selection: the merged vertex.
+/// Merges the vertices (2 or more, distinct) into one. Refuses a result that is not manifold, naming
+/// the element. Selection: the merged vertex.
 Modelled merge_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, MergePoint at);
 
 /// Welds the vertices (all of them when `vertices` is empty) that lie closer than `distance` (> 0) to

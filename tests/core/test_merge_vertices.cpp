@@ -86,14 +86,28 @@ TEST(MergeVertices, RefusalsNameTheElementAndChangeNothing) {
               merge_vertices(m, {4, 9}, MergePoint::center);
             }),
             "vertex 9 is not in the mesh (9 vertices)");
-  // Opposite corners of a quad: the face would pass through the merged vertex twice.
-  EXPECT_EQ(error_of([&] { merge_vertices(m, {0, 4}, MergePoint::center); }), "face 0 would use vertex 0 twice");
+  // Opposite corners of a quad: the face pinches into two slivers and is removed, as Blender does.
+  const Modelled diagonal = merge_vertices(m, {0, 4}, MergePoint::center);
+  EXPECT_EQ(diagonal.mesh.n_vertices(), 8u);
+  EXPECT_EQ(diagonal.mesh.n_faces(), 3u);
+  EXPECT_EQ(diagonal.summary, "merged 2 vertices into vertex 0, 1 face removed");
   // Two far corners: their faces would meet at one vertex only (two fans).
   const std::string pinch = error_of([&] { merge_vertices(m, {0, 8}, MergePoint::center); });
   EXPECT_NE(pinch.find("vertex 0"), std::string::npos) << pinch;
   EXPECT_NE(pinch.find("non-manifold"), std::string::npos) << pinch;
   EXPECT_EQ(m.n_vertices(), 9u);
   EXPECT_EQ(m.n_faces(), 4u);
+}
+
+// Opposite corners of a cube's face merged: the face is removed and the cube stays closed (7 vertices,
+// 5 faces), as Blender's merge gives it.
+TEST(MergeVertices, OppositeCornersOfAFaceCloseItUp) {
+  const CovarianceMesh cube = make_sample("cube");
+  const std::span<const int> face = cube.face(0);
+  const Modelled r = merge_vertices(cube, {face[0], face[2]}, MergePoint::center);
+  EXPECT_EQ(r.mesh.n_vertices(), 7u);
+  EXPECT_EQ(r.mesh.n_faces(), 5u);
+  EXPECT_EQ(boundary_edges_of_oriented(r.mesh), 0);
 }
 
 // Two unit quads side by side, each with its own copy of the shared edge (vertices 1, 2 and 4, 7).
