@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -87,6 +88,29 @@ MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
     }
     r.faces_removed += kept ? 0 : 1;
   }
+  // A face that now coincides with an earlier one, corner for corner (a duplicate welded onto its
+  // original), is the same face: removed. Only faces at a vertex something merged into can.
+  std::vector<char> merged_into(a.means.size(), 0);
+  for (size_t v = 0; v < target.size(); ++v)
+    if (target[v] != int(v)) merged_into[size_t(target[v])] = 1;
+  std::set<std::vector<int>> seen;
+  size_t next_face = 0;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    std::vector<int>& face = faces[f];
+    if (std::any_of(face.begin(), face.end(), [&](int v) { return merged_into[size_t(v)] != 0; })) {
+      std::vector<int> key = face;
+      std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+      if (!seen.insert(std::move(key)).second) {
+        ++r.faces_removed;
+        continue;
+      }
+    }
+    a.face_origin[next_face] = a.face_origin[f];
+    if (next_face != f) faces[next_face] = std::move(face);  // a vector moved onto itself would empty
+    ++next_face;
+  }
+  faces.resize(next_face);
+  a.face_origin.resize(next_face);
   a.faces = std::move(faces);
   r.new_index.assign(a.means.size(), -1);
   const bool origins = a.origin.size() == a.means.size();
