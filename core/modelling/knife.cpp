@@ -288,6 +288,11 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
       throw Error(name + " is at point " + std::to_string(i));
     places.push_back(*p);
   }
+  // A path that ends where it began would cut a loop, which a knife's open path does not make here.
+  if (places.size() > 2 && (places.back().at - places.front().at).norm() <= tolerance)
+    throw Error("point " + std::to_string(places.size()) +
+                " closes the path on point 1; the knife cuts open paths (leave the last point out, or cut the "
+                "loop in two paths)");
 
   // The cut as a start and steps, each segment along its own plane.
   std::vector<std::vector<int>> faces_at(size_t(a.n_vertices()));

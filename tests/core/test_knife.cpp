@@ -184,6 +184,12 @@ TEST(Knife, RefusalsNameThePointAndChangeNothing) {
   EXPECT_EQ(error_of([&] { knife(cube, {Vec3(0, 0, 0), Vec3(0, 1, 1)}); }), "point 1 is not on the mesh");
   EXPECT_EQ(error_of([&] { knife(cube, {Vec3(0, -1, 1)}); }), "the knife needs at least 2 points, got 1");
   EXPECT_EQ(error_of([&] { knife(cube, {Vec3(0, -1, 1), Vec3(0, -1, 1), Vec3(0, 1, 1)}); }), "point 2 is at point 1");
+  // A path round a corner back to its start.
+  EXPECT_EQ(error_of([&] {
+              knife(cube, {Vec3(0.5, -1, 0.5), Vec3(1, -0.5, 0.5), Vec3(0.5, -0.5, 1), Vec3(0.5, -1, 0.5)});
+            }),
+            "point 4 closes the path on point 1; the knife cuts open paths (leave the last point out, or cut the "
+            "loop in two paths)");
   EXPECT_EQ(error_of([&] {
               knife(cube, {Vec3(0, -1, 1), Vec3(0, NAN, 1)});
             }),
