@@ -106,7 +106,7 @@ EdgeRing edge_ring(const CovarianceMesh& mesh, int a, int b) { return ring_of(me
 
 Modelled loop_cut(const CovarianceMesh& mesh, int a, int b, int cuts, double slide) {
   if (cuts < 1 || cuts > 64) throw Error("the number of cuts must be 1..64, got " + std::to_string(cuts));
-  if (!(std::abs(slide) < 1)) throw Error("the slide must be in (−1, 1), got " + short_number(slide));
+  if (!(std::abs(slide) < 1)) throw usage_error("the slide must be in (−1, 1), got " + short_number(slide));
   const Ring r = ring_of(mesh, a, b);
   MeshArrays arrays = arrays_of(mesh);
   if (r.quads.empty()) throw Error(edge_name(a, b) + " has no quad beside it to cut across");

@@ -111,7 +111,7 @@ Modelled edge_slide(const CovarianceMesh& mesh, const std::vector<std::array<int
   const MeshArrays original = arrays_of(mesh);
   const DirectedEdges directed = directed_edges(original);
   if (edges.empty()) throw Error("no edges to slide");
-  if (!(std::abs(factor) <= 1)) throw Error("the slide factor must be in [-1, 1], got " + short_number(factor));
+  if (!(std::abs(factor) <= 1)) throw usage_error("the slide factor must be in [-1, 1], got " + short_number(factor));
   std::unordered_set<uint64_t> selected;
   std::unordered_map<int, std::vector<int>> neighbours;
   for (const auto& [a, b] : edges) {
@@ -155,7 +155,7 @@ Modelled edge_slide(const CovarianceMesh& mesh, const std::vector<std::array<int
 Modelled vertex_slide(const CovarianceMesh& mesh, int vertex, int toward, double factor) {
   MeshArrays a = arrays_of(mesh);
   check_edge(a, directed_edges(a), vertex, toward);
-  if (!(factor >= 0 && factor <= 1)) throw Error("the slide factor must be in [0, 1], got " + short_number(factor));
+  if (!(factor >= 0 && factor <= 1)) throw usage_error("the slide factor must be in [0, 1], got " + short_number(factor));
   const Gaussian g = slid_gaussian(a, vertex, toward, factor);
   a.means[size_t(vertex)] = g.mean;
   a.covariances[size_t(vertex)] = g.covariance;

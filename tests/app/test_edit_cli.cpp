@@ -88,7 +88,10 @@ TEST(EditCli, MalformedOperationsAreUsageErrors) {
            {R"({"op":"subdivide"})", "expected a JSON array"},
            {R"([{"op":"subdivide")", "gpsurf: --ops: not valid JSON"},
            {R"([{"op":"extrude","faces":[0],"distance":NaN}])", "gpsurf: --ops: not valid JSON (byte 41)"},
-           {R"([{"op":"extrude","faces":[0],"distance":0}])", R"(ops[0] (extrude): "distance" must not be 0)"}}) {
+           {R"([{"op":"extrude","faces":[0],"distance":0}])", R"(ops[0] (extrude): "distance" must not be 0)"},
+           {R"([{"op":"loop_cut","edge":[0,1],"slide":1}])", "ops[0] (loop_cut): the slide must be in (−1, 1), got 1"},
+           {R"([{"op":"slide","vertex":0,"toward":1,"factor":1.5}])",
+            "ops[0] (slide): the slide factor must be in [0, 1], got 1.5"}}) {
     const auto r = run(ops);
     EXPECT_EQ(r.exit_code, 2) << ops << "\n" << r.output;
     EXPECT_EQ(test::line_count(r.output), 1u) << r.output;
