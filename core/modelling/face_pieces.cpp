@@ -61,6 +61,40 @@ size_t best_ear(const std::vector<int>& piece, const std::vector<Vec3>& means, c
   return best;
 }
 
+// A triangle whose corner b lies on the edge a–c opposite it (a corner of the polygon on the line of
+// its neighbours, which the last ear can leave) has no area: the diagonal a–c is flipped with the
+// triangle beyond it, (a, c, d) becoming (a, b, d) and (b, c, d), both with area where d is off the line.
+void flip_flat_triangles(std::vector<std::vector<int>>& triangles, const std::vector<Vec3>& means,
+                         const Vec3& normal) {
+  const auto flat = [&](const std::vector<int>& t) {
+    const Vec3 &a = means[size_t(t[0])], &b = means[size_t(t[1])], &c = means[size_t(t[2])];
+    const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+    return std::abs((b - a).cross(c - a).dot(normal)) <= 1e-12 * longest;
+  };
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    if (!flat(triangles[i])) continue;
+    // Rotate so that b is the corner on the line: the one opposite the longest edge.
+    std::vector<int> t = triangles[i];
+    for (int turn = 0; turn < 3; ++turn) {
+      const Vec3 &a = means[size_t(t[0])], &b = means[size_t(t[1])], &c = means[size_t(t[2])];
+      if ((c - a).squaredNorm() >= std::max((b - a).squaredNorm(), (c - b).squaredNorm())) break;
+      std::rotate(t.begin(), t.begin() + 1, t.end());
+    }
+    const int a = t[0], b = t[1], c = t[2];
+    for (size_t j = 0; j < triangles.size(); ++j) {
+      const std::vector<int>& o = triangles[j];
+      const auto at = std::find(o.begin(), o.end(), a);
+      if (j == i || at == o.end() || o[size_t((at - o.begin() + 1) % 3)] != c) continue;
+      const int d = o[size_t((at - o.begin() + 2) % 3)];
+      const std::vector<int> first{a, b, d}, second{b, c, d};
+      if (flat(first) || flat(second)) continue;
+      triangles[i] = first;
+      triangles[j] = second;
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 void triangulate_pieces(std::vector<std::vector<int>>& pieces, const std::vector<Vec3>& means, const Vec3& normal) {
@@ -78,6 +112,7 @@ void triangulate_pieces(std::vector<std::vector<int>>& pieces, const std::vector
     }
     if (triangles.empty()) continue;
     triangles.push_back(std::move(rest));
+    flip_flat_triangles(triangles, means, normal);
     pieces[p] = triangles[0];
     pieces.insert(pieces.end(), triangles.begin() + 1, triangles.end());
   }

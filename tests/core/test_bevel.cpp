@@ -367,6 +367,20 @@ TEST(BevelEdges, AClampedWidthLeavesNoCoincidentVerticesNorFacesWithoutArea) {
   for (size_t v = 0; v < 6; ++v) EXPECT_NEAR(cases[0].result.mesh.mean(v).cwiseAbs().sum(), 1.0, 1e-12);
 }
 
+// On a mesh of triangles the faces a bevel widens are split into triangles none of which is flat (a
+// corner on the line of its neighbours is joined across, not left as the tip of a sliver).
+TEST(BevelEdges, TheTrianglesOfAWidenedFaceAllHaveArea) {
+  const CovarianceMesh ico = make_sample("icosphere", 80);
+  for (const int segments : {1, 2, 3}) {
+    const Modelled r = bevel_edges(ico, {{12, 13}}, width(0.05, segments));
+    const MeshArrays a = arrays_of(r.mesh);
+    for (int f = 0; f < a.n_faces(); ++f) {
+      ASSERT_EQ(a.faces[size_t(f)].size(), 3u);
+      EXPECT_GT(newell_normal(a, f).norm(), 1e-6) << "face " << f << " of " << segments << " segments";
+    }
+  }
+}
+
 // Open meshes: a flat grid of 3 × 3 unit quads, vertex 4 j + i at (i, j, 0), its faces facing +z;
 // its boundary is one loop of 12 vertices (1 and 2 on the bottom side have valence 3, 0 is a corner
 // of valence 2).
