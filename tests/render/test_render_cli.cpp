@@ -323,7 +323,7 @@ TEST(RenderCli, ScriptedRendersWithEdits) {
       dir.write("bad.json", R"({"renders": [{"mesh": "sample:cube", "output": "x.png", "edits": [{"vertex": 99}]}]})");
   const auto e = run_command(gpsurf("render --script " + bad));
   EXPECT_EQ(e.exit_code, 2);
-  EXPECT_NE(e.output.find("render 0: edit of vertex 99"), std::string::npos) << e.output;
+  EXPECT_NE(e.output.find("render 0: edits[0]: edit of vertex 99"), std::string::npos) << e.output;
   EXPECT_EQ(run_command(gpsurf("render --script " + dir.write("broken.json", "{\"renders\": ["))).exit_code, 2);
 }
 
