@@ -229,7 +229,7 @@ private:
   std::vector<int> shown_ellipsoids_;   // the vertices whose ellipsoids are drawn, when not all
   SelectMode select_mode_ = SelectMode::vertex;
   HiddenView hidden_;               // what is hidden, and what picking and the frame leave out for it
-  bool select_through_ = false;     // box selection takes hidden vertices too (X-ray)
+  bool select_through_ = false;     // clicks and boxes take hidden elements too (X-ray)
   double similar_threshold_ = 0.0;  // Select similar's (Blender's default)
   double sharp_edge_angle_ = 30.0;  // degrees: Select sharp edges takes the edges folded by more (Blender's default)
   bool alt_press_ = false;          // the left press had Alt: a click selects a loop, a drag orbits
