@@ -393,9 +393,11 @@ PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {
   DroppedAttributes dropped;
   if (vertices_with_more > 0)
     dropped.other.push_back("the values after the position of " + std::to_string(vertices_with_more) +
-                            (vertices_with_more == 1 ? " vertex" : " vertices") + " (colours, normals or texture coordinates)");
+                            (vertices_with_more == 1 ? " vertex" : " vertices") +
+                            " (colours, normals or texture coordinates)");
   if (faces_with_more > 0)
-    dropped.other.push_back("the colours of " + std::to_string(faces_with_more) + (faces_with_more == 1 ? " face" : " faces"));
+    dropped.other.push_back("the colours of " + std::to_string(faces_with_more) +
+                            (faces_with_more == 1 ? " face" : " faces"));
   if (std::string note = dropped_attributes_note(source, dropped); !note.empty()) soup.notes.push_back(std::move(note));
   return soup;
 }

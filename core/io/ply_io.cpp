@@ -371,10 +371,34 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       if (found != 0 && found != 6) fail("the vertex element has only some of cxx cxy cxz cyy cyz czz");
       has_covariances = found == 6;
       // What is not read: normals, colours and texture coordinates counted, anything else named.
-      static const std::set<std::string> kKnown = {
-          "x",     "y",   "z",     "cxx",   "cxy",   "cxz",        "cyy",          "cyz",        "czz",
-          "corner", "nx", "ny",    "nz",    "red",   "green",      "blue",         "alpha",      "diffuse_red",
-          "diffuse_green", "diffuse_blue", "u", "v", "s", "t", "texture_u", "texture_v", "texture_s", "texture_t"};
+      static const std::set<std::string> kKnown = {"x",
+                                                   "y",
+                                                   "z",
+                                                   "cxx",
+                                                   "cxy",
+                                                   "cxz",
+                                                   "cyy",
+                                                   "cyz",
+                                                   "czz",
+                                                   "corner",
+                                                   "nx",
+                                                   "ny",
+                                                   "nz",
+                                                   "red",
+                                                   "green",
+                                                   "blue",
+                                                   "alpha",
+                                                   "diffuse_red",
+                                                   "diffuse_green",
+                                                   "diffuse_blue",
+                                                   "u",
+                                                   "v",
+                                                   "s",
+                                                   "t",
+                                                   "texture_u",
+                                                   "texture_v",
+                                                   "texture_s",
+                                                   "texture_t"};
       std::vector<std::string> unread;
       for (const Property& p : e.properties) {
         const std::string& n = p.name;
@@ -383,7 +407,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
         if (n == "u" || n == "s" || n == "texture_u" || n == "texture_s") dropped.texture_coordinates += e.count;
         if (!kKnown.count(n)) unread.push_back(quoted_token(n));
       }
-      if (!unread.empty() && e.count > 0) dropped.other.push_back(named_list("vertex property", "vertex properties", unread));
+      if (!unread.empty() && e.count > 0)
+        dropped.other.push_back(named_list("vertex property", "vertex properties", unread));
       const int icorner = index_of("corner");
       // Arrays grow as records arrive (never sized from the header): memory follows what the file holds.
       means.reserve(std::min<size_t>(e.count, 1 << 16));
@@ -419,7 +444,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       std::vector<std::string> unread;
       for (size_t i = 0; i < e.properties.size(); ++i)
         if (int(i) != list) unread.push_back(quoted_token(e.properties[i].name));
-      if (!unread.empty() && e.count > 0) dropped.other.push_back(named_list("face property", "face properties", unread));
+      if (!unread.empty() && e.count > 0)
+        dropped.other.push_back(named_list("face property", "face properties", unread));
       faces.offsets.reserve(std::min<size_t>(e.count, 1 << 16) + 1);
       for (size_t f = 0; f < e.count; ++f) {
         body.begin_record();

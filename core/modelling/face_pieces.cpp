@@ -64,8 +64,7 @@ size_t best_ear(const std::vector<int>& piece, const std::vector<Vec3>& means, c
 // A triangle whose corner b lies on the edge a–c opposite it (a corner of the polygon on the line of
 // its neighbours, which the last ear can leave) has no area: the diagonal a–c is flipped with the
 // triangle beyond it, (a, c, d) becoming (a, b, d) and (b, c, d), both with area where d is off the line.
-void flip_flat_triangles(std::vector<std::vector<int>>& triangles, const std::vector<Vec3>& means,
-                         const Vec3& normal) {
+void flip_flat_triangles(std::vector<std::vector<int>>& triangles, const std::vector<Vec3>& means, const Vec3& normal) {
   const auto flat = [&](const std::vector<int>& t) {
     const Vec3 &a = means[size_t(t[0])], &b = means[size_t(t[1])], &c = means[size_t(t[2])];
     const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});

@@ -155,7 +155,8 @@ Modelled edge_slide(const CovarianceMesh& mesh, const std::vector<std::array<int
 Modelled vertex_slide(const CovarianceMesh& mesh, int vertex, int toward, double factor) {
   MeshArrays a = arrays_of(mesh);
   check_edge(a, directed_edges(a), vertex, toward);
-  if (!(factor >= 0 && factor <= 1)) throw usage_error("the slide factor must be in [0, 1], got " + short_number(factor));
+  if (!(factor >= 0 && factor <= 1))
+    throw usage_error("the slide factor must be in [0, 1], got " + short_number(factor));
   const Gaussian g = slid_gaussian(a, vertex, toward, factor);
   a.means[size_t(vertex)] = g.mean;
   a.covariances[size_t(vertex)] = g.covariance;

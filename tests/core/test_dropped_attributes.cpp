@@ -53,17 +53,18 @@ TEST(DroppedAttributes, OtherPropertiesTagsAndOffValuesAreNamed) {
       "property float quality\nelement face 1\nproperty list uchar int vertex_indices\nproperty uchar red\n"
       "property list uchar float texcoord\nend_header\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2 9 6 0 0 1 0 0 1\n";
   bool has_covariances = true;
-  EXPECT_EQ(parse_ply_soup(ply, "q.ply", has_covariances).notes,
-            (std::vector<std::string>{"q.ply: vertex property 'quality' and face properties 'red' and 'texcoord'" +
-                                      kTail}));
+  EXPECT_EQ(
+      parse_ply_soup(ply, "q.ply", has_covariances).notes,
+      (std::vector<std::string>{"q.ply: vertex property 'quality' and face properties 'red' and 'texcoord'" + kTail}));
   const std::string coff = "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 255 0 0 255\n0 1 0\n3 0 1 2 255 0 0\n";
   EXPECT_EQ(parse_off_soup(coff, "c.off").notes,
             (std::vector<std::string>{"c.off: the values after the position of 2 vertices (colours, normals or "
                                       "texture coordinates) and the colours of 1 face" +
                                       kTail}));
   EXPECT_TRUE(parse_off_soup("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "p.off").notes.empty());
-  const std::string tagged = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nt holes 1/0/0 0\n"
-                             "t interpolateboundary 1/0/0 2\nt holes 1/0/0 0\n";
+  const std::string tagged =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nt holes 1/0/0 0\n"
+      "t interpolateboundary 1/0/0 2\nt holes 1/0/0 0\n";
   EXPECT_EQ(parse_obj_soup(tagged, "h.obj").notes,
             (std::vector<std::string>{"h.obj: the tags 'holes' and 'interpolateboundary'" + kTail}));
 }

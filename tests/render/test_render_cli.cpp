@@ -350,7 +350,8 @@ TEST(RenderCli, ScriptNumbersOutsideTheirTypeAreRefused) {
             "render 0: edits[1]: vertex 0 has a covariance"},
            {R"("edits": [{"vertex": 0, "covariance": [1e-200, 0, 0, 1e-200, 0, 1e-200]}])",
             "render 0: edits[0]: vertex 0 has a covariance"},
-           {R"("edits": [{"vertex": 0, "mean": [1e300, 0, 0]}])", "render 0: edits[0]: vertex 0 has a coordinate 1e+300 beyond"}}) {
+           {R"("edits": [{"vertex": 0, "mean": [1e300, 0, 0]}])",
+            "render 0: edits[0]: vertex 0 has a coordinate 1e+300 beyond"}}) {
     const std::string script = dir.write("s.json", R"({"renders": [{"mesh": "sample:cube", "output": ")" + out +
                                                        R"(", "size": "16x16", )" + job + "}]}");
     const auto r = run_command(gpsurf("render --script " + script));
