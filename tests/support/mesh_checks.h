@@ -50,6 +50,16 @@ inline double signed_volume(const MeshArrays& a, size_t first_face = 0) {
 }
 inline double signed_volume(const CovarianceMesh& mesh) { return signed_volume(arrays_of(mesh)); }
 
+/// Expects a closed solid of these counts, consistently oriented and facing outward.
+inline void expect_closed_outward(const CovarianceMesh& mesh, int vertices, int faces) {
+  const Shape shape = shape_of(mesh);
+  EXPECT_EQ(shape.vertices, vertices);
+  EXPECT_EQ(shape.faces, faces);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_GT(signed_volume(mesh), 0.0);
+}
+
 /// Whether two meshes have the same Gaussians, faces and sharpness, bit for bit.
 inline bool same_mesh(const CovarianceMesh& x, const CovarianceMesh& y) {
   const MeshArrays a = arrays_of(x), b = arrays_of(y);

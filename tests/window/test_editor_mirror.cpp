@@ -131,12 +131,7 @@ TEST_F(EditorToolsMirror, MirrorExtrudeShowsOnBothSides) {
   std::filesystem::remove(dir_.file("gpsurf/settings.json"));  // the modifier kept for the file: off again
   e.key("ctrl+alt+shift+m").wait(3);
   const CovarianceMesh saved = play(e);
-  const test::Shape shape = test::shape_of(saved);
-  EXPECT_EQ(shape.vertices, 20);
-  EXPECT_EQ(shape.faces, 18);
-  EXPECT_EQ(shape.boundary_edges, 0);
-  EXPECT_TRUE(shape.oriented);
-  EXPECT_GT(test::signed_volume(saved), 0.0);
+  test::expect_closed_outward(saved, 20, 18);
   for (size_t v = 0; v < saved.n_vertices(); ++v) {
     const Vec3 image = saved.mean(v).cwiseProduct(Vec3(-1, 1, 1));
     size_t found = 0;

@@ -71,12 +71,7 @@ TEST_F(EditorTools, BevelPastWhereVerticesMeetIsClampedToAClosedSolid) {
   Events bevel;
   bevel.key("2").wait().key("a").wait().key("ctrl+b").wait().text("1.5").wait().key("enter").wait(3);
   const CovarianceMesh saved = play(bevel, "cube_bevel_clamped.png");
-  const test::Shape shape = test::shape_of(saved);
-  EXPECT_EQ(shape.vertices, 6);
-  EXPECT_EQ(shape.faces, 8);
-  EXPECT_EQ(shape.boundary_edges, 0);
-  EXPECT_TRUE(shape.oriented);
-  EXPECT_GT(test::signed_volume(saved), 0.0);
+  test::expect_closed_outward(saved, 6, 8);
   std::vector<std::array<int, 2>> every_edge;
   for (size_t e = 0; e < original_.n_edges(); ++e) every_edge.push_back({original_.edge(e)[0], original_.edge(e)[1]});
   EXPECT_TRUE(test::same_mesh(saved, bevel_edges(original_, every_edge, width(1.5)).mesh));
@@ -360,12 +355,7 @@ TEST_F(EditorTools, BisectByALineAcrossTheView) {
   Events cut;
   cut.key("alt+k").wait().drag(centre - glm::vec2(250.0f, 0.0f), centre + glm::vec2(250.0f, 0.0f), 6).wait(3);
   const CovarianceMesh saved = play(cut, "cube_bisected.png");
-  const test::Shape shape = test::shape_of(saved);
-  EXPECT_EQ(shape.vertices, 12);
-  EXPECT_EQ(shape.faces, 10);
-  EXPECT_EQ(shape.boundary_edges, 0);
-  EXPECT_TRUE(shape.oriented);
-  EXPECT_GT(test::signed_volume(saved), 0.0);
+  test::expect_closed_outward(saved, 12, 10);
   EXPECT_NE(output_.find("bisect: "), std::string::npos) << output_;
 }
 
