@@ -1,6 +1,9 @@
 #include "core/io/dropped_attributes.h"
 
+#include <set>
 #include <vector>
+
+#include "core/support/quoted_text.h"
 
 namespace gps {
 
@@ -12,6 +15,22 @@ std::string listed(const std::vector<std::string>& parts) {
   return out;
 }
 }  // namespace
+
+void count_unread_vertex_properties(const std::vector<std::string>& names, size_t count, DroppedAttributes& dropped) {
+  static const std::set<std::string> kRead = {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz", "corner"};
+  static const std::set<std::string> kCounted = {"nx",        "ny",        "nz",        "red",          "green",
+                                                 "blue",      "alpha",     "diffuse_red", "diffuse_green", "diffuse_blue",
+                                                 "u",         "v",         "s",         "t",            "texture_u",
+                                                 "texture_v", "texture_s", "texture_t"};
+  std::vector<std::string> other;
+  for (const std::string& n : names) {
+    if (n == "nx") dropped.normals += count;
+    if (n == "red" || n == "diffuse_red") dropped.colours += count;
+    if (n == "u" || n == "s" || n == "texture_u" || n == "texture_s") dropped.texture_coordinates += count;
+    if (!kRead.count(n) && !kCounted.count(n)) other.push_back(quoted_token(n));
+  }
+  if (!other.empty() && count > 0) dropped.other.push_back(named_list("vertex property", "vertex properties", other));
+}
 
 std::string named_list(const std::string& one, const std::string& many, const std::vector<std::string>& names) {
   if (names.empty()) return "";

@@ -15,6 +15,10 @@ struct DroppedAttributes {
   bool empty() const { return texture_coordinates == 0 && normals == 0 && colours == 0 && other.empty(); }
 };
 
+/// A PLY vertex element's properties (`names`, `count` records) that the reader does not read, into
+/// `dropped`: normals, colours and texture coordinates counted, any other named.
+void count_unread_vertex_properties(const std::vector<std::string>& names, size_t count, DroppedAttributes& dropped);
+
 /// "ONE A" or "MANY A, B and C" ("vertex property 'q'", "the tags 'holes' and 'x'"); "" for no names.
 std::string named_list(const std::string& one, const std::string& many, const std::vector<std::string>& names);
 

@@ -9,7 +9,6 @@
 #include <cstring>
 #include <limits>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -370,45 +369,9 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       for (int k = 0; k < 6; ++k) found += (ic[k] = index_of(cov_names[k])) >= 0;
       if (found != 0 && found != 6) fail("the vertex element has only some of cxx cxy cxz cyy cyz czz");
       has_covariances = found == 6;
-      // What is not read: normals, colours and texture coordinates counted, anything else named.
-      static const std::set<std::string> kKnown = {"x",
-                                                   "y",
-                                                   "z",
-                                                   "cxx",
-                                                   "cxy",
-                                                   "cxz",
-                                                   "cyy",
-                                                   "cyz",
-                                                   "czz",
-                                                   "corner",
-                                                   "nx",
-                                                   "ny",
-                                                   "nz",
-                                                   "red",
-                                                   "green",
-                                                   "blue",
-                                                   "alpha",
-                                                   "diffuse_red",
-                                                   "diffuse_green",
-                                                   "diffuse_blue",
-                                                   "u",
-                                                   "v",
-                                                   "s",
-                                                   "t",
-                                                   "texture_u",
-                                                   "texture_v",
-                                                   "texture_s",
-                                                   "texture_t"};
-      std::vector<std::string> unread;
-      for (const Property& p : e.properties) {
-        const std::string& n = p.name;
-        if (n == "nx") dropped.normals += e.count;
-        if (n == "red" || n == "diffuse_red") dropped.colours += e.count;
-        if (n == "u" || n == "s" || n == "texture_u" || n == "texture_s") dropped.texture_coordinates += e.count;
-        if (!kKnown.count(n)) unread.push_back(quoted_token(n));
-      }
-      if (!unread.empty() && e.count > 0)
-        dropped.other.push_back(named_list("vertex property", "vertex properties", unread));
+      std::vector<std::string> names;
+      for (const Property& p : e.properties) names.push_back(p.name);
+      count_unread_vertex_properties(names, e.count, dropped);
       const int icorner = index_of("corner");
       // Arrays grow as records arrive (never sized from the header): memory follows what the file holds.
       means.reserve(std::min<size_t>(e.count, 1 << 16));

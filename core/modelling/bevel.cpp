@@ -636,43 +636,17 @@ private:
                   ", " + count_of(size_t(a_.n_faces() - n_faces_), "face", "faces") + " added";
     if (clamped_)
       out.summary += "; width clamped to " + short_number(width_) + " so that new vertices do not pass each other";
-    if (meet_) merge_met_vertices(out);
+    // At the largest width new vertices meet one another or the vertex at the end of their edge
+    // (every face of a cube bevelled on all its edges shrinks to a point): merged.
+    if (meet_) {
+      try {
+        out = merge_met_vertices(std::move(out), kMet * bounding_box_diagonal(mesh_));
+      } catch (const Error& e) {
+        throw Error("at a width of " + short_number(width_) + " new vertices meet, and merging them fails (" +
+                    e.what() + "); give a smaller width");
+      }
+    }
     return out;
-  }
-
-  /// At the largest width new vertices meet one another or the vertex at the end of their edge (every
-  /// face of a cube bevelled on all its edges shrinks to a point). Those that coincide are merged and
-  /// the faces left without area removed (core/modelling/merge_vertices.h), so that the result has
-  /// neither; the new vertices, as merged, stay the selection.
-  void merge_met_vertices(Modelled& out) const {
-    const std::set<int> made(out.selection.begin(), out.selection.end());
-    std::set<int> near;  // the new vertices and those on their faces
-    for (const auto& face : a_.faces)
-      if (std::any_of(face.begin(), face.end(), [&](int v) { return made.count(v) != 0; }))
-        near.insert(face.begin(), face.end());
-    Modelled merged;
-    try {
-      merged = weld_by_distance(out.mesh, {near.begin(), near.end()}, kMet * bounding_box_diagonal(out.mesh));
-    } catch (const Error& e) {
-      throw Error("at a width of " + short_number(width_) + " new vertices meet, and merging them fails (" + e.what() +
-                  "); give a smaller width");
-    }
-    if (merged.mesh.n_vertices() == out.mesh.n_vertices()) return;
-    // Each vertex of the merged mesh: a new one if it was one or is a merged group.
-    std::vector<int> selection, origin(merged.mesh.n_vertices(), -1);
-    const std::set<int> joined(merged.selection.begin(), merged.selection.end());
-    const bool known = merged.vertex_origin.size() == merged.mesh.n_vertices();
-    for (size_t w = 0; w < merged.mesh.n_vertices(); ++w) {
-      const int before = known ? merged.vertex_origin[w] : -1;
-      if (made.count(before) != 0 || joined.count(int(w)) != 0) selection.push_back(int(w));
-      if (before >= 0 && size_t(before) < out.vertex_origin.size()) origin[w] = out.vertex_origin[size_t(before)];
-    }
-    out.summary += "; " + count_of(out.mesh.n_vertices() - merged.mesh.n_vertices(), "vertex", "vertices") +
-                   " that met merged, leaving " + count_of(merged.mesh.n_vertices(), "vertex", "vertices") + " and " +
-                   count_of(merged.mesh.n_faces(), "face", "faces");
-    out.mesh = std::move(merged.mesh);
-    out.selection = std::move(selection);
-    out.vertex_origin = known && !out.vertex_origin.empty() ? std::move(origin) : std::vector<int>{};
   }
 
   const CovarianceMesh& mesh_;  // the mesh the arrays were made from

@@ -244,4 +244,33 @@ Modelled weld_by_distance(const CovarianceMesh& mesh, const std::vector<int>& ve
   return out;
 }
 
+Modelled merge_met_vertices(Modelled out, double distance) {
+  const std::set<int> made(out.selection.begin(), out.selection.end());
+  std::set<int> near;  // the new vertices and those on their faces
+  for (size_t f = 0; f < out.mesh.n_faces(); ++f) {
+    const std::span<const int> face = out.mesh.face(f);
+    if (std::any_of(face.begin(), face.end(), [&](int v) { return made.count(v) != 0; }))
+      near.insert(face.begin(), face.end());
+  }
+  Modelled merged = weld_by_distance(out.mesh, {near.begin(), near.end()}, distance);
+  if (merged.mesh.n_vertices() == out.mesh.n_vertices()) return out;
+  // Each vertex of the merged mesh: a new one if it was one or is a merged group.
+  std::vector<int> selection, origin(merged.mesh.n_vertices(), -1);
+  const std::set<int> joined(merged.selection.begin(), merged.selection.end());
+  const bool known = merged.vertex_origin.size() == merged.mesh.n_vertices();
+  for (size_t w = 0; w < merged.mesh.n_vertices(); ++w) {
+    const int before = known ? merged.vertex_origin[w] : -1;
+    if (made.count(before) != 0 || joined.count(int(w)) != 0) selection.push_back(int(w));
+    if (before >= 0 && size_t(before) < out.vertex_origin.size()) origin[w] = out.vertex_origin[size_t(before)];
+  }
+  out.summary += "; " + std::to_string(out.mesh.n_vertices() - merged.mesh.n_vertices()) +
+                 (out.mesh.n_vertices() - merged.mesh.n_vertices() == 1 ? " vertex" : " vertices") +
+                 " that met merged, leaving " + std::to_string(merged.mesh.n_vertices()) + " vertices and " +
+                 std::to_string(merged.mesh.n_faces()) + " faces";
+  merged.selection = std::move(selection);
+  merged.summary = std::move(out.summary);
+  merged.vertex_origin = known && !out.vertex_origin.empty() ? std::move(origin) : std::vector<int>{};
+  return merged;
+}
+
 }  // namespace gps

@@ -30,4 +30,10 @@ Modelled merge_vertices(const CovarianceMesh& mesh, const std::vector<int>& vert
 /// evenly spread points. The summary names how many vertices were removed. Selection: the merged vertices.
 Modelled weld_by_distance(const CovarianceMesh& mesh, const std::vector<int>& vertices, double distance);
 
+/// An operation's result whose new vertices (its selection) may have met one another or a vertex of
+/// their faces: those closer than `distance` are welded, the faces left without area removed, the
+/// selection kept as the new vertices (merged ones included) and the summary told what is left.
+/// Unchanged where none met; throws as weld_by_distance does.
+Modelled merge_met_vertices(Modelled out, double distance);
+
 }  // namespace gps
