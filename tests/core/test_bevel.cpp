@@ -15,6 +15,7 @@
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
 #include "tests/support/mesh_checks.h"
+#include "tests/support/bevel_width.h"
 
 namespace gps {
 namespace {
@@ -51,12 +52,7 @@ int vertex_at(const CovarianceMesh& mesh, const Vec3& p) {
   return -1;
 }
 
-BevelOptions width(double w, int segments = 1) {
-  BevelOptions o;
-  o.width = w;
-  o.segments = segments;
-  return o;
-}
+using test::width;
 
 // The cube sample: corners 0..7 at (±1, ±1, ±1), vertex 4 at (−1, −1, 1), 5 at (1, −1, 1), 7 at
 // (−1, 1, 1), 0 at (−1, −1, −1); edge 4–5 lies on the top (+z) and front (−y) faces.

@@ -7,6 +7,7 @@
 #include "core/modelling/bevel.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/samples.h"
+#include "tests/support/bevel_width.h"
 #include "tests/support/error_of.h"
 #include "tests/support/mesh_checks.h"
 
@@ -14,13 +15,8 @@ namespace gps {
 namespace {
 
 using test::error_of;
+using test::width;
 
-BevelOptions bevel_width(double w, int segments = 1) {
-  BevelOptions o;
-  o.width = w;
-  o.segments = segments;
-  return o;
-}
 
 // At the clamped width the vertices that meet are merged, and the faces left without area removed:
 // a cube bevelled on every edge becomes the octahedron of its faces' centres, on every vertex the
@@ -35,15 +31,15 @@ TEST(BevelEdges, AClampedWidthLeavesNoCoincidentVerticesNorFacesWithoutArea) {
     Modelled result;
     size_t vertices, faces;
   };
-  BevelOptions two = bevel_width(1.5, 2);
-  const Case cases[] = {{bevel_edges(cube, every_edge, bevel_width(1.5)), 6, 8},
+  BevelOptions two = width(1.5, 2);
+  const Case cases[] = {{bevel_edges(cube, every_edge, width(1.5)), 6, 8},
                         {bevel_edges(cube, every_edge, two), 18, 8},
-                        {bevel_vertices(cube, every_vertex, bevel_width(1.5)), 12, 14},
+                        {bevel_vertices(cube, every_vertex, width(1.5)), 12, 14},
                         {bevel_vertices(cube, every_vertex, two), 36, 14},
-                        {bevel_edges(cube, {{4, 5}}, bevel_width(5)), 6, 5},
-                        {bevel_edges(cube, {{4, 5}}, bevel_width(2)), 6, 5},           // at the limit, not clamped
-                        {bevel_edges(cube, every_edge, bevel_width(1 - 1e-7)), 6, 8},  // within the weld tolerance
-                        {bevel_vertices(cube, {0}, bevel_width(2)), 7, 7}};
+                        {bevel_edges(cube, {{4, 5}}, width(5)), 6, 5},
+                        {bevel_edges(cube, {{4, 5}}, width(2)), 6, 5},           // at the limit, not clamped
+                        {bevel_edges(cube, every_edge, width(1 - 1e-7)), 6, 8},  // within the weld tolerance
+                        {bevel_vertices(cube, {0}, width(2)), 7, 7}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.result.summary);
     const CovarianceMesh& m = c.result.mesh;
@@ -60,7 +56,7 @@ TEST(BevelEdges, AClampedWidthLeavesNoCoincidentVerticesNorFacesWithoutArea) {
   }
   // A width that leaves new vertices within a millionth of the mesh's size of where they start is refused.
   EXPECT_EQ(error_of([&] {
-              bevel_edges(cube, {{4, 5}}, bevel_width(1e-12));
+              bevel_edges(cube, {{4, 5}}, width(1e-12));
             }).find("a width of 1e-12 would leave new vertices at vertex "),
             0u);
   // The octahedron's vertices are the centres of the cube's faces.
@@ -72,7 +68,7 @@ TEST(BevelEdges, AClampedWidthLeavesNoCoincidentVerticesNorFacesWithoutArea) {
 TEST(BevelEdges, TheTrianglesOfAWidenedFaceAllHaveArea) {
   const CovarianceMesh ico = make_sample("icosphere", 80);
   for (const int segments : {1, 2, 3}) {
-    const Modelled r = bevel_edges(ico, {{12, 13}}, bevel_width(0.05, segments));
+    const Modelled r = bevel_edges(ico, {{12, 13}}, width(0.05, segments));
     const MeshArrays a = arrays_of(r.mesh);
     for (int f = 0; f < a.n_faces(); ++f) {
       ASSERT_EQ(a.faces[size_t(f)].size(), 3u);

@@ -16,6 +16,7 @@
 #include "tests/support/editor_driver.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/bevel_width.h"
 
 namespace gps::test {
 
@@ -52,12 +53,7 @@ protected:
   bool saved_is_original() const {
     return read_text_file(dir_.file("saved.ply")) == read_text_file(dir_.file("original.ply"));
   }
-  static BevelOptions width(double w, int segments = 1) {
-    BevelOptions o;
-    o.width = w;
-    o.segments = segments;
-    return o;
-  }
+  static BevelOptions width(double w, int segments = 1) { return test::width(w, segments); }
 
   test::TempDir dir_;
   CovarianceMesh original_;

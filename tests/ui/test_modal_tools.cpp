@@ -28,6 +28,7 @@
 #include "ui/tools/slide_tool.h"
 #include "ui/tools/transform_tool.h"
 #include "tests/support/typed_events.h"
+#include "tests/support/bevel_width.h"
 #include "view/camera.h"
 #include "view/projection.h"
 
@@ -99,12 +100,7 @@ std::vector<int> neighbours(const CovarianceMesh& m, int v) {
   return out;
 }
 
-BevelOptions width(double w, int segments = 1) {
-  BevelOptions o;
-  o.width = w;
-  o.segments = segments;
-  return o;
-}
+using test::width;
 
 TEST(BevelTool, TypedWidthAndEnterIsCoresBevelAsOneUndoStep) {
   Editor editor(cube(), {6, 7});
