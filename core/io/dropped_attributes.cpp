@@ -18,10 +18,9 @@ std::string listed(const std::vector<std::string>& parts) {
 
 void count_unread_vertex_properties(const std::vector<std::string>& names, size_t count, DroppedAttributes& dropped) {
   static const std::set<std::string> kRead = {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz", "corner"};
-  static const std::set<std::string> kCounted = {"nx",        "ny",        "nz",        "red",          "green",
-                                                 "blue",      "alpha",     "diffuse_red", "diffuse_green", "diffuse_blue",
-                                                 "u",         "v",         "s",         "t",            "texture_u",
-                                                 "texture_v", "texture_s", "texture_t"};
+  static const std::set<std::string> kCounted = {
+      "nx",           "ny", "nz", "red", "green", "blue",      "alpha",     "diffuse_red", "diffuse_green",
+      "diffuse_blue", "u",  "v",  "s",   "t",     "texture_u", "texture_v", "texture_s",   "texture_t"};
   std::vector<std::string> other;
   for (const std::string& n : names) {
     if (n == "nx") dropped.normals += count;

@@ -17,7 +17,6 @@ namespace {
 using test::error_of;
 using test::width;
 
-
 // At the clamped width the vertices that meet are merged, and the faces left without area removed:
 // a cube bevelled on every edge becomes the octahedron of its faces' centres, on every vertex the
 // cuboctahedron of its edges' midpoints, with no two vertices at one point.
