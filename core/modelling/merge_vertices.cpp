@@ -71,6 +71,7 @@ MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
       if (last_seen[size_t(v)] == f) {
         const auto at = std::find(stack.begin(), stack.end(), v);
         loops.emplace_back(at, stack.end());
+        for (auto closed = at + 1; closed != stack.end(); ++closed) last_seen[size_t(*closed)] = -1;  // may recur
         stack.erase(at + 1, stack.end());
         continue;
       }

@@ -110,6 +110,22 @@ TEST(MergeVertices, OppositeCornersOfAFaceCloseItUp) {
   EXPECT_EQ(boundary_edges_of_oriented(r.mesh), 0);
 }
 
+// A face met three times by the merged vertex is split into its loops; one met again after a loop
+// closed is read as a new corner (no read past the loops found).
+TEST(MergeVertices, AFaceMetManyTimesSplitsIntoItsLoops) {
+  std::vector<Vec3> p;
+  for (int i = 0; i < 8; ++i) p.emplace_back(std::cos(i * M_PI / 4), std::sin(i * M_PI / 4), 0.0);
+  const CovarianceMesh octagon =
+      make_covariance_mesh(p, std::vector<Mat3>(8, 0.01 * Mat3::Identity()), {{0, 1, 2, 3, 4, 5, 6, 7}});
+  for (const std::vector<int>& group : {std::vector<int>{1, 3, 5}, std::vector<int>{2, 6}, std::vector<int>{1, 3}}) {
+    const std::string what = error_of([&] {
+      const Modelled r = merge_vertices(octagon, group, MergePoint::center);
+      EXPECT_GE(r.mesh.n_faces(), 1u);
+    });
+    EXPECT_TRUE(what == "(accepted)" || what.find("vertex") != std::string::npos) << what;
+  }
+}
+
 // Two unit quads side by side, each with its own copy of the shared edge (vertices 1, 2 and 4, 7).
 CovarianceMesh two_quads(double gap) {
   const std::vector<Vec3> p = {{0, 0, 0},       {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
