@@ -63,7 +63,7 @@ bool edge_seen_near(const PointerScene& scene, const std::array<int, 2>& edge, g
   const int front = pick_face(v, from + t * along, mesh, &scene.hidden_faces);
   if (front < 0) return true;
   const std::span<const int> corners = mesh.face(size_t(front));
-  const auto has = [&](int v) { return std::find(corners.begin(), corners.end(), v) != corners.end(); };
+  const auto has = [&](int x) { return std::find(corners.begin(), corners.end(), x) != corners.end(); };
   constexpr float kAtAnEnd = 3.0f;  // pixels: there the faces of the end vertex meet the edge
   return (has(edge[0]) && has(edge[1])) || (has(edge[0]) && t * glm::length(along) <= kAtAnEnd) ||
          (has(edge[1]) && (1.0f - t) * glm::length(along) <= kAtAnEnd);
