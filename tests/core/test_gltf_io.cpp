@@ -311,7 +311,7 @@ TEST(GltfIo, AMirroringNodeKeepsTheFacesOutward) {
         nlohmann::json{{"scale", {-1, -1, -1}}, {"mesh", 0}},
         nlohmann::json{{"matrix", {1, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 5, 0, 0, 1}}, {"mesh", 0}}}) {
     HandMade h = split_cube();
-    h.j["nodes"] = {node};
+    h.j["nodes"] = nlohmann::json::array({node});
     dir.write("m.glb", h.glb());
     const CovarianceMesh m = read_mesh(dir.file("m.glb"));
     EXPECT_NEAR(test::signed_volume(m), 8.0, 1e-12) << node.dump();
