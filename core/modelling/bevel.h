@@ -35,7 +35,8 @@ struct BevelOptions {
   /// two ends and the corner it cuts, sampled at equal angles.
   double profile = 0.5;
   /// Where the width would carry new vertices past each other along an edge, the width is reduced to
-  /// where they meet (and the summary says so); without it such a width is refused.
+  /// where they meet (and the summary says so); without it such a width is refused. New vertices that
+  /// meet (within a millionth of the mesh's size) are merged, the faces left without area removed.
   bool clamp = true;
   /// The crease sharpness the band's two rim edges get (0: none). Edge bevels only.
   double crease = 0;
