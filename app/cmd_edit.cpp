@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/mesh_output.h"
 #include "app/repair_arguments.h"
 #include "core/io/mesh_io.h"
 #include "core/support/quoted_text.h"
@@ -59,8 +60,7 @@ void add_edit_command(CLI::App& app) {
         throw Error(escaped(args->input) + ": " + e.what(), e.kind());
       }
     }();
-    write_mesh(args->output, result.mesh, !args->ascii);
-    if (!args->quiet) print_reader_notes({unsaved_sharpness_note(args->output, result.mesh)});
+    write_mesh_noting(args->output, result.mesh, !args->ascii, args->quiet);
     if (args->quiet) return;
     for (size_t i = 0; i < summaries.size(); ++i) std::cout << "ops[" << i << "]: " << summaries[i] << "\n";
     std::cout << "wrote " << args->output << " (" << result.mesh.n_vertices() << " vertices, " << result.mesh.n_faces()

@@ -8,6 +8,7 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
+#include "app/mesh_output.h"
 #include "app/naming_input.h"
 #include "app/plan_arguments.h"
 #include "app/repair_arguments.h"
@@ -118,8 +119,7 @@ void add_fit_command(CLI::App& app) {
     bar.finish();
     if (!args->quiet)
       std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop) << "\n";
-    write_mesh(args->output, result.mesh, !args->ascii);
-    if (!args->quiet) print_reader_notes({unsaved_sharpness_note(args->output, result.mesh)});
+    write_mesh_noting(args->output, result.mesh, !args->ascii, args->quiet);
     if (args->quiet) return;
     std::cout << "wrote " << args->output << "\n";
     if (args->level == 0) return;

@@ -4,6 +4,7 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
+#include "app/mesh_output.h"
 #include "app/repair_arguments.h"
 #include "core/mesh/crease_by_angle.h"
 #include "core/support/error.h"
@@ -51,8 +52,7 @@ void add_infer_command(CLI::App& app) {
       std::cout << "creased " << marked << (marked == 1 ? " edge" : " edges") << " folded by more than "
                 << args->crease_angle << " degrees (infinitely sharp)\n";
     }
-    write_mesh(args->output, m, !args->ascii);
-    print_reader_notes({unsaved_sharpness_note(args->output, m)});
+    write_mesh_noting(args->output, m, !args->ascii);
     std::cout << "wrote " << args->output << "\n";
   });
 }

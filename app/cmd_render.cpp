@@ -288,10 +288,10 @@ void run_script(const std::string& path, const std::string& context_name) {
       CovarianceMesh mesh =
           a.input.rfind("sample:", 0) == 0 ? make_sample(a.input.substr(7)) : read_mesh_repairing(a.input, a.repair);
       if (job.contains("ops")) mesh = OperationList::parse(job["ops"].dump(), "").apply(mesh).mesh;
-      if (job.contains("edits") && !job["edits"].is_array())
-        throw usage_error("edits: give a list of {\"vertex\": i, ...}");
-      for (size_t e = 0; e < job.value("edits", nlohmann::json::array()).size(); ++e) {
-        const nlohmann::json& edit = job["edits"][e];
+      const nlohmann::json edits = job.value("edits", nlohmann::json::array());
+      if (!edits.is_array()) throw usage_error("edits: give a list of {\"vertex\": i, ...}");
+      for (size_t e = 0; e < edits.size(); ++e) {
+        const nlohmann::json& edit = edits[e];
         const std::string named = "edits[" + std::to_string(e) + "]";
         if (!edit.is_object()) throw usage_error(named + ": give {\"vertex\": i, ...}");
         const long long v = script_integer(edit, "vertex", 0, std::numeric_limits<int>::max());

@@ -6,6 +6,7 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
+#include "app/mesh_output.h"
 #include "core/support/quoted_text.h"
 #include "app/naming_input.h"
 #include "app/repair_arguments.h"
@@ -89,8 +90,7 @@ void add_simplify_command(CLI::App& app) {
       placed = naming_input(args->input, [&] { return place_for_limit(s.mesh, PlanOptions{}); });
       s.mesh = std::move(placed->mesh);
     }
-    write_mesh(args->output, s.mesh, !args->ascii);
-    if (!args->quiet) print_reader_notes({unsaved_sharpness_note(args->output, s.mesh)});
+    write_mesh_noting(args->output, s.mesh, !args->ascii, args->quiet);
     if (args->quiet) return;
     if (s.triangulated) std::cout << "fanned the faces of more than 3 sides into triangles\n";
     std::cout << "simplified " << s.input_vertices << " vertices, " << s.input_triangles << " triangles to "

@@ -3,6 +3,7 @@
 
 #include "app/cli_checks.h"
 #include "app/commands.h"
+#include "app/mesh_output.h"
 #include "app/repair_arguments.h"
 #include "app/naming_input.h"
 #include "core/io/mesh_io.h"
@@ -41,8 +42,7 @@ void add_subdivide_command(CLI::App& app) {
     o.limit = args->limit;
     o.loop_beta = named.loop_beta;
     const SubdivisionResult r = naming_input(args->input, [&] { return subdivide(m, o); });
-    write_mesh(args->output, r.mesh, !args->ascii);
-    print_reader_notes({unsaved_sharpness_note(args->output, r.mesh)});
+    write_mesh_noting(args->output, r.mesh, !args->ascii);
     std::cout << "wrote " << args->output << " (" << (o.scheme == Scheme::loop ? "Loop, " : "Catmull-Clark, ")
               << r.mesh.n_vertices() << " vertices, " << r.mesh.n_faces() << " faces)\n";
   });

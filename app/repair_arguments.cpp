@@ -43,8 +43,7 @@ CovarianceMesh read_mesh_repairing(const std::string& path, const RepairArgument
 }
 
 void print_reader_notes(const std::vector<std::string>& notes) {
-  for (const std::string& note : notes)
-    if (!note.empty()) std::cerr << "note: " << note << "\n";
+  for (const std::string& note : notes) std::cerr << "note: " << note << "\n";
 }
 
 }  // namespace gps

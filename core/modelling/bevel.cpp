@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "core/io/mesh_repair.h"
 #include "core/support/error.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/face_pieces.h"
@@ -60,10 +61,6 @@ struct Spot {
   bool keep = false;  // v itself: the outer corner of a band along a boundary edge
   int vertex = -1;    // once made
 };
-
-/// Vertices closer than this, relative to the bounding-box diagonal, coincide: the repair's weld
-/// tolerance (core/io/mesh_repair.h), so that a bevel leaves nothing the repair would weld.
-constexpr double kMet = 1e-6;
 
 /// The superellipse exponent of a Blender profile value (0.5 → 2, a circle; 1 → ∞, the sharp corner).
 double superellipse_exponent(double profile) {
@@ -358,17 +355,19 @@ private:
       width_ = limit;
       clamped_ = true;
     }
-    // New vertices within the tolerance of each other, or of the vertex their edge ends at, meet.
-    const double tolerance = kMet * bounding_box_diagonal(mesh_);
+    // Vertices closer than the repair's weld tolerance coincide (core/io/mesh_repair.h), so that a
+    // bevel leaves nothing the repair would weld: new vertices that near each other, or the vertex
+    // their edge ends at, meet.
+    met_ = RepairOptions().weld_tolerance * bounding_box_diagonal(mesh_);
     for (const auto& [key, r] : reach_) {
       const int x = int(key >> 32), y = int(key & 0xffffffffu);
-      if ((mean(y) - mean(x)).norm() - width_ * (r[0] + r[1]) < tolerance) meet_ = true;
+      if ((mean(y) - mean(x)).norm() - width_ * (r[0] + r[1]) < met_) meet_ = true;
     }
-    // A width so small that new vertices stay within the tolerance of where they start is refused.
+    // A width so small that new vertices stay that near where they start is refused.
     for (const Spot& spot : spots_)
-      if (!spot.keep && width_ * spot.unit_shift.norm() < tolerance)
+      if (!spot.keep && width_ * spot.unit_shift.norm() < met_)
         throw Error("a width of " + short_number(width_) + " would leave new vertices at " + vertex_name(spot.v) +
-                    " (closer than " + short_number(tolerance) + ", a millionth of the mesh's size)");
+                    " (closer than " + short_number(met_) + ", a millionth of the mesh's size)");
   }
 
   void make_spot(Spot& s) {
@@ -640,7 +639,7 @@ private:
     // (every face of a cube bevelled on all its edges shrinks to a point): merged.
     if (meet_) {
       try {
-        out = merge_met_vertices(std::move(out), kMet * bounding_box_diagonal(mesh_));
+        out = merge_met_vertices(std::move(out), met_);
       } catch (const Error& e) {
         throw Error("at a width of " + short_number(width_) + " new vertices meet, and merging them fails (" +
                     e.what() + "); give a smaller width");
@@ -665,6 +664,7 @@ private:
   double width_ = 0;
   bool clamped_ = false;
   bool meet_ = false;                                         // new vertices meet at the width: merged once made
+  double met_ = 0;                                            // how near vertices that meet are
   std::map<std::pair<int, int>, std::vector<int>> replaced_;  // (face, corner) → the vertices in its place
   std::map<uint64_t, std::vector<int>> profile_of_;           // directed_key(v, x): bevelled edge's profile at v
   std::map<uint64_t, int> end_of_;                            // directed_key(v, x): what replaces v on edge v–x

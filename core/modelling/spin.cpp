@@ -77,8 +77,7 @@ Modelled spin(const CovarianceMesh& mesh, const std::vector<int>& vertices, cons
     int leaving = 0;
     for (const auto& [p, q] : edges) leaving += (p == i || q == i) && !(on_axis[p] && on_axis[q]);
     if (leaving == 0) continue;
-    int faces = 0;
-    for (const auto& face : a.faces) faces += int(std::count(face.begin(), face.end(), profile[i]));
+    const int faces = mesh.connectivity().n_vertex_faces(profile[i]);
     if (faces + leaving * steps > kMaxPlanValence)
       throw Error("vertex " + std::to_string(profile[i]) + " lies on the axis, so " + std::to_string(steps) +
                   " steps would give it " + std::to_string(faces + leaving * steps) +

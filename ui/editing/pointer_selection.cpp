@@ -94,14 +94,17 @@ std::vector<char> unpickable_vertices(const PointerScene& scene) {
   return out;
 }
 
+int pick_visible_vertex(const PointerScene& scene, glm::vec2 pixel, float radius) {
+  const Viewport& v = scene.view;
+  const std::vector<char> unpickable = unpickable_vertices(scene);
+  return pick_vertex(v.camera, v.width, v.height, pixel, scene.mesh, radius, &unpickable);
+}
+
 std::vector<int> vertices_under(const PointerScene& scene, glm::vec2 pixel) {
   const Viewport& v = scene.view;
   const CovarianceMesh& mesh = scene.mesh;
   if (scene.mode == SelectMode::vertex) {
-    const std::vector<char> unpickable = unpickable_vertices(scene);
-    if (const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, mesh, kClickRadius, &unpickable);
-        vertex >= 0)
-      return {vertex};
+    if (const int vertex = pick_visible_vertex(scene, pixel, kClickRadius); vertex >= 0) return {vertex};
   } else if (scene.mode == SelectMode::edge) {
     if (const auto edge = edge_under(scene, pixel, kClickRadius)) return {(*edge)[0], (*edge)[1]};
   }

@@ -37,6 +37,9 @@ struct SelectionNote {
 /// 1 per vertex a click cannot pick: hidden, or (without X-ray) not seen by the camera
 /// (view/visible_vertices.h), as Blender's solid mode picks what is in front.
 std::vector<char> unpickable_vertices(const PointerScene& scene);
+/// The vertex nearest `pixel` within `radius` window pixels that a click can pick (not one of
+/// unpickable_vertices); −1 where none is.
+int pick_visible_vertex(const PointerScene& scene, glm::vec2 pixel, float radius);
 
 /// The element under `pixel` in the mode, as its vertices (a face where no vertex or edge is near).
 std::vector<int> vertices_under(const PointerScene& scene, glm::vec2 pixel);

@@ -61,8 +61,7 @@ std::optional<HandleFrame> EditorApp::gizmo_frame(const Viewport& v) const {
 
 int EditorApp::pick(glm::vec2 pixel) const {
   const Viewport v = viewport();
-  const std::vector<char> unpickable = unpickable_vertices(pointer_scene(v));
-  const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &unpickable);
+  const int vertex = pick_visible_vertex(pointer_scene(v), pixel, kPickRadius);
   if (vertex >= 0 || !view_.draw.ellipsoids) return vertex;
   const bool all = hidden_.elements().empty() &&
                    all_ellipsoids(EllipsoidScope(view_.ellipsoid_scope), document_.mesh().n_vertices());
@@ -74,8 +73,7 @@ int EditorApp::pick(glm::vec2 pixel) const {
 // near the click as the end (a neighbour the end sits on): the click then selects it.
 bool EditorApp::vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const {
   const Viewport v = viewport();
-  const std::vector<char> unpickable = unpickable_vertices(pointer_scene(v));
-  const int vertex = pick_vertex(v.camera, v.width, v.height, pixel, document_.mesh(), kPickRadius, &unpickable);
+  const int vertex = pick_visible_vertex(pointer_scene(v), pixel, kPickRadius);
   if (vertex < 0 || selection_.contains(vertex)) return false;
   const auto at_vertex = visible_pixel(v.camera, v.width, v.height, document_.mesh().mean(size_t(vertex)));
   const auto at_end = visible_pixel(v.camera, v.width, v.height, gizmo.end(handle.axis, handle.side));
