@@ -17,6 +17,7 @@ struct CornerMasks {
 /// invariant subspace of the rows d·stepⁿ with the position's part taken out (subspace iteration,
 /// Gram–Schmidt kept orientation-preserving), so d_s × d_t points the way the patch's normal does;
 /// their lengths are not derivatives (the vertex's own scale is λⁿ, not 2ⁿ), only their directions are.
-CornerMasks extraordinary_corner_masks(const Eigen::MatrixXd& step, Eigen::RowVectorXd d_s, Eigen::RowVectorXd d_t);
+CornerMasks extraordinary_corner_masks(const Eigen::MatrixXd& step, const Eigen::RowVectorXd& d_s,
+                                       const Eigen::RowVectorXd& d_t);
 
 }  // namespace gps

@@ -1,6 +1,7 @@
 #include "core/extraordinary/loop_extraordinary_tables.h"
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <stdexcept>
 
 #include "core/extraordinary/extraordinary_corner_masks.h"
@@ -31,13 +32,14 @@ Eigen::MatrixXd restrict_rows(const std::vector<Eigen::VectorXd>& rows, const st
 void write_loop_extraordinary_table(const Eigen::MatrixXd (&nets)[3], const Eigen::MatrixXd& step, double* table) {
   const int k = int(step.rows());
   Eigen::MatrixXd power = Eigen::MatrixXd::Identity(k, k);
+  const Eigen::SparseMatrix<double> sparse_step = step.sparseView();  // a rule reads a few points
   for (int level = 0; level < kExtraordinaryLevels; ++level) {
     for (int c = 0; c < 3; ++c) {
       const Eigen::MatrixXd block = nets[c] * power;
       for (int j = 0; j < 12; ++j)
         for (int i = 0; i < k; ++i) table[size_t((3 * level + c) * 12 + j) * size_t(k) + size_t(i)] = block(j, i);
     }
-    power = step * power;
+    power = sparse_step * power;
   }
   // Limit masks at v (core/extraordinary/extraordinary_corner_masks.h), the tangents from child 1's patch at its
   // corner.

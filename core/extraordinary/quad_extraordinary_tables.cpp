@@ -1,5 +1,6 @@
 #include "core/extraordinary/quad_extraordinary_tables.h"
 
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <stdexcept>
 
@@ -43,13 +44,14 @@ std::shared_ptr<const std::vector<double>> compute_table(const std::vector<int>&
   }
   auto table = std::make_shared<std::vector<double>>(quad_extraordinary_table_size(k), 0.0);
   Eigen::MatrixXd power = Eigen::MatrixXd::Identity(k, k);
+  const Eigen::SparseMatrix<double> sparse_step = step.sparseView();  // a rule reads a few points
   for (int level = 0; level < kExtraordinaryLevels; ++level) {
     for (int c = 0; c < 3; ++c) {
       const Eigen::MatrixXd block = nets[c] * power;
       for (int j = 0; j < 16; ++j)
         for (int i = 0; i < k; ++i) (*table)[size_t((3 * level + c) * 16 + j) * size_t(k) + size_t(i)] = block(j, i);
     }
-    power = step * power;
+    power = sparse_step * power;
   }
   // Tangents start from child 1's patch at its corner (½, 0), next to the vertex.
   double w[4], dw[4];
