@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 #include <tiny_gltf.h>
 
+#include "core/io/gltf_extensions.h"
 #include "core/io/text_file.h"
 #include "core/support/error.h"
 #include "core/support/memory_budget.h"
@@ -85,6 +86,7 @@ struct AccessorBytes {
   const unsigned char* data = nullptr;
   size_t count = 0, stride = 0;
   int component_type = 0;
+  bool normalized = false;
 };
 
 // The bytes of accessor `index` of the given type and one of the given component types, every element
@@ -113,7 +115,7 @@ AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, int type, 
   const size_t stride = view.byteStride != 0 ? view.byteStride : element;
   if (stride < element)
     throw Error(name + ": its byte stride " + std::to_string(stride) + " is shorter than an element");
-  AccessorBytes bytes{nullptr, a.count, stride, a.componentType};
+  AccessorBytes bytes{nullptr, a.count, stride, a.componentType, a.normalized};
   if (a.count == 0) return bytes;
   // The last element ends at offset + stride (count − 1) + element, compared without overflow.
   const size_t room = view.byteLength;
@@ -127,6 +129,29 @@ float float_at(const AccessorBytes& b, size_t i, int k) {
   float value;
   std::memcpy(&value, b.data + i * b.stride + size_t(k) * sizeof(float), sizeof value);
   return value;
+}
+
+// Component k of element i as a number: a float as it is, an integer (KHR_mesh_quantization's positions)
+// as its value, or where the accessor is normalised mapped to [0, 1] (unsigned) or [−1, 1] (signed).
+double number_at(const AccessorBytes& b, size_t i, int k) {
+  if (b.component_type == kFloat) return float_at(b, i, k);
+  const size_t size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(b.component_type)));
+  const unsigned char* p = b.data + i * b.stride + size_t(k) * size;
+  double value, largest;
+  if (b.component_type == TINYGLTF_COMPONENT_TYPE_BYTE) {
+    value = double(int8_t(*p)), largest = 127;
+  } else if (b.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+    value = double(*p), largest = 255;
+  } else if (b.component_type == TINYGLTF_COMPONENT_TYPE_SHORT) {
+    int16_t v;
+    std::memcpy(&v, p, sizeof v);
+    value = double(v), largest = 32767;
+  } else {
+    uint16_t v;
+    std::memcpy(&v, p, sizeof v);
+    value = double(v), largest = 65535;
+  }
+  return b.normalized ? std::max(value / largest, -1.0) : value;
 }
 
 uint32_t index_at(const AccessorBytes& b, size_t i) {
@@ -278,10 +303,17 @@ tinygltf::Model load_model(const std::string& data, const std::string& base_dir,
   tinygltf::Model model;
   std::string err, warn;
   bool loaded = false;
+  const bool binary = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
+  if (binary) {
+    check_glb_chunks(data);
+    uint32_t json_length;
+    std::memcpy(&json_length, data.data() + 12, 4);
+    check_required_gltf_extensions(std::string_view(data).substr(20, json_length));
+  } else {
+    check_required_gltf_extensions(data);
+  }
   try {
-    const bool binary = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
     if (binary) {
-      check_glb_chunks(data);
       loaded = loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
                                            unsigned(data.size()), base_dir);
     } else {
@@ -383,7 +415,10 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
       const auto position = p.attributes.find("POSITION");
       if (position == p.attributes.end()) throw Error(where + ": has no POSITION attribute");
       const AccessorBytes points =
-          accessor_bytes(model, position->second, TINYGLTF_TYPE_VEC3, {kFloat}, where, "POSITION");
+          accessor_bytes(model, position->second, TINYGLTF_TYPE_VEC3,
+                         {kFloat, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                          TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                         where, "POSITION");
       AccessorBytes gaussians;
       if (has_covariances)
         gaussians = accessor_bytes(model, p.attributes.at(kCovarianceAttribute), TINYGLTF_TYPE_MAT3, {kFloat}, where,
@@ -393,7 +428,7 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
                     std::to_string(points.count) + " positions");
       vertex_of.assign(points.count, 0);
       for (size_t i = 0; i < points.count; ++i) {
-        const Vec3 local(float_at(points, i, 0), float_at(points, i, 1), float_at(points, i, 2));
+        const Vec3 local(number_at(points, i, 0), number_at(points, i, 1), number_at(points, i, 2));
         const Vec3 world = linear * local + shift;
         if (const std::string why = position_problem(world); !why.empty())
           throw Error(where + ": vertex " + std::to_string(i) + " " + why);

@@ -478,3 +478,76 @@ TEST(GltfIo, UnwritableCovarianceLeavesTheFileAsItWas) {
 
 }  // namespace
 }  // namespace gps
+
+namespace gps {
+namespace {
+
+// The split cube with its positions as integers (KHR_mesh_quantization): each of ±1 written as `one` and
+// `minus_one`, each vertex padded to 4-byte alignment, as the extension asks.
+template <class T>
+HandMade quantized_cube(int component_type, bool normalized, T minus_one, T one) {
+  HandMade h = split_cube();
+  std::vector<float> floats(72);
+  std::memcpy(floats.data(), h.bin.data(), 72 * sizeof(float));
+  const size_t stride = (3 * sizeof(T) + 3) / 4 * 4;
+  std::string positions(24 * stride, '\0');
+  for (size_t i = 0; i < 72; ++i) {
+    const T value = floats[i] > 0 ? one : minus_one;
+    std::memcpy(positions.data() + (i / 3) * stride + (i % 3) * sizeof(T), &value, sizeof(T));
+  }
+  const size_t offset = h.bin.size();
+  h.bin += positions;
+  h.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", positions.size()},
+                                {"byteStride", stride}});
+  json& accessor = h.j["accessors"][0];
+  accessor["bufferView"] = h.j["bufferViews"].size() - 1;
+  accessor["componentType"] = component_type;
+  accessor["normalized"] = normalized;
+  accessor["min"] = {minus_one, minus_one, minus_one};
+  accessor["max"] = {one, one, one};
+  h.j["extensionsUsed"] = {"KHR_mesh_quantization"};
+  h.j["extensionsRequired"] = {"KHR_mesh_quantization"};
+  return h;
+}
+
+TEST(GltfIo, QuantizedPositionsAreReadAsTheirNodeScalesThem) {
+  test::TempDir dir;
+  // Normalised shorts: ±32767 is ±1. Unsigned bytes 0 and 2, placed by the node's translation by −1. Signed
+  // bytes ±1 as they are.
+  std::vector<HandMade> cubes = {quantized_cube<int16_t>(5122, true, -32767, 32767),
+                                 quantized_cube<uint8_t>(5121, false, 0, 2), quantized_cube<int8_t>(5120, false, -1, 1)};
+  cubes[1].j["nodes"][0]["translation"] = {-1, -1, -1};
+  for (size_t i = 0; i < cubes.size(); ++i) {
+    const std::string name = "q" + std::to_string(i) + ".glb";
+    const CovarianceMesh m = read_mesh(dir.write(name, cubes[i].glb()));
+    ASSERT_EQ(m.n_vertices(), 8u) << name;
+    EXPECT_EQ(m.n_faces(), 12u) << name;
+    for (size_t v = 0; v < m.n_vertices(); ++v)
+      EXPECT_EQ(m.mean(v).cwiseAbs(), Vec3::Ones()) << name << " vertex " << v;
+    test::expect_closed_outward(m, 8, 12);
+  }
+}
+
+TEST(GltfIo, RequiredExtensionsItDoesNotReadAreRefusedByName) {
+  test::TempDir dir;
+  HandMade h = split_cube();
+  // Materials and lights change only how a surface looks: a file that requires them is read.
+  h.j["extensionsRequired"] = {"KHR_materials_pbrSpecularGlossiness", "KHR_texture_transform", "KHR_lights_punctual"};
+  EXPECT_EQ(read_mesh(dir.write("looks.glb", h.glb())).n_vertices(), 8u);
+  // A compressed file's accessors have no buffer views of their own: refused by the extension, not by them.
+  h.j["extensionsRequired"] = {"KHR_texture_transform", "KHR_draco_mesh_compression"};
+  h.j["accessors"][0].erase("bufferView");
+  expect_refused(dir.write("draco.glb", h.glb()),
+                 "draco.glb: requires the glTF extension 'KHR_draco_mesh_compression', which gpsurf does not read "
+                 "(export the file without mesh compression)");
+  h.write_gltf(dir, "draco.gltf", "draco.bin");
+  expect_refused(dir.file("draco.gltf"), "draco.gltf: requires the glTF extension 'KHR_draco_mesh_compression'");
+  h.j["extensionsRequired"] = {"EXT_meshopt_compression"};
+  expect_refused(dir.write("meshopt.glb", h.glb()), "requires the glTF extension 'EXT_meshopt_compression'");
+  h.j["extensionsRequired"] = {"EXT_mesh_gpu_instancing"};
+  expect_refused(dir.write("instancing.glb", h.glb()),
+                 "instancing.glb: requires the glTF extension 'EXT_mesh_gpu_instancing', which gpsurf does not read");
+}
+
+}  // namespace
+}  // namespace gps
