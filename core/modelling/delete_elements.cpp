@@ -115,7 +115,7 @@ public:
   /// Removes the vertex v from the face that input face `f` is now part of: its edges u → v → w
   /// become u → w.
   void remove_from_face(int v, int f) {
-    while (!alive_[size_t(f)]) f = merged_into_[size_t(f)];
+    f = now(f);
     std::vector<int>& face = a_.faces[size_t(f)];
     const size_t c = size_t(std::find(face.begin(), face.end(), v) - face.begin()), n = face.size();
     const int u = face[(c + n - 1) % n], w = face[(c + 1) % n];
@@ -123,6 +123,33 @@ public:
     face_of_.erase(directed_key(u, v));
     face_of_.erase(directed_key(v, w));
     face_of_[directed_key(u, w)] = f;
+  }
+
+  /// The face input face `f` is now part of.
+  int now(int f) const {
+    while (!alive_[size_t(f)]) f = merged_into_[size_t(f)];
+    return f;
+  }
+
+  /// Where vertex v, whose input faces are `faces`, now lies in exactly two faces, once in each, between
+  /// the same two neighbours (two edges in a line, as a loop cut's vertex is once the edges along the
+  /// loop are gone): removes it from both, joining its two edges. False, changing nothing, otherwise.
+  bool join_edges_at(int v, const std::vector<int>& faces) {
+    std::vector<int> now_in;
+    for (const int f : faces)
+      if (const int g = now(f); std::find(now_in.begin(), now_in.end(), g) == now_in.end()) now_in.push_back(g);
+    if (now_in.size() != 2) return false;
+    std::array<std::array<int, 2>, 2> sides{};  // per face: the corners before and after v
+    for (size_t i = 0; i < 2; ++i) {
+      const std::vector<int>& face = a_.faces[size_t(now_in[i])];
+      if (std::count(face.begin(), face.end(), v) != 1) return false;
+      const size_t c = size_t(std::find(face.begin(), face.end(), v) - face.begin()), n = face.size();
+      sides[i] = {face[(c + n - 1) % n], face[(c + 1) % n]};
+    }
+    if (sides[0][0] != sides[1][1] || sides[0][1] != sides[1][0]) return false;
+    remove_from_face(v, now_in[0]);
+    remove_from_face(v, now_in[1]);
+    return true;
   }
 
   /// Refuses a face left with fewer than 3 corners or a vertex twice; then drops the merged-away faces.
@@ -234,8 +261,8 @@ Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& v
   MeshArrays a = arrays_of(mesh);
   if (vertices.empty()) throw Error("no vertices are selected");
   const std::vector<int> chosen = sorted_vertices(a, vertices);
-  // The vertices after each vertex in its faces, and its last face, in the input mesh.
-  std::vector<std::vector<int>> next(size_t(a.n_vertices()));
+  // The vertices after each vertex in its faces, its faces and its last face, in the input mesh.
+  std::vector<std::vector<int>> next(size_t(a.n_vertices())), faces_of(size_t(a.n_vertices()));
   std::vector<int> face_of_vertex(size_t(a.n_vertices()), -1);
   std::vector<char> on_boundary(size_t(a.n_vertices()), 0);
   const DirectedEdges de = directed_edges(a);
@@ -244,6 +271,7 @@ Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& v
     for (size_t k = 0; k < face.size(); ++k) {
       const int v = face[k], w = face[(k + 1) % face.size()];
       next[size_t(v)].push_back(w);
+      faces_of[size_t(v)].push_back(f);
       face_of_vertex[size_t(v)] = f;
       if (!de.count(directed_key(w, v))) on_boundary[size_t(v)] = on_boundary[size_t(w)] = 1;
     }
@@ -255,12 +283,22 @@ Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& v
                   " (only a boundary vertex of a single face can be dissolved)");
 
   FaceMerger merger(a);
+  // As Blender dissolves them: first the edges between two of the interior vertices, then each vertex
+  // left between two edges in a line joins them, and the faces around any other merge into one. So the
+  // vertices of a loop cut give back the faces it cut.
+  std::vector<char> interior_chosen(size_t(a.n_vertices()), 0);
+  for (int v : chosen) interior_chosen[size_t(v)] = !on_boundary[size_t(v)];
+  for (int v : chosen)
+    for (int w : next[size_t(v)])
+      if (interior_chosen[size_t(v)] && interior_chosen[size_t(w)] && merger.has(v, w))
+        merger.dissolve(v, w, "vertex " + std::to_string(v));
   for (int v : chosen) {
     const std::string what = "vertex " + std::to_string(v);
     if (on_boundary[size_t(v)]) {
       merger.remove_from_face(v, face_of_vertex[size_t(v)]);
       continue;
     }
+    if (merger.join_edges_at(v, faces_of[size_t(v)])) continue;
     for (int w : next[size_t(v)])
       if (merger.has(v, w)) merger.dissolve(v, w, what);
   }

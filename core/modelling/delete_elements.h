@@ -31,8 +31,11 @@ std::vector<int> delete_edges_in(MeshArrays& arrays, const std::vector<std::arra
                                  std::string& summary);
 
 /// Dissolves vertices: the faces around an interior vertex merge into one polygon without it; a
-/// boundary vertex that lies in a single face is simply removed from that face. Refuses any other
-/// boundary vertex, and a result with a polygon of fewer than 3 corners or with a vertex repeated.
+/// boundary vertex that lies in a single face is simply removed from that face. As Blender does, the
+/// edges between two interior vertices dissolve first, and a vertex then left between two edges in a
+/// line is removed from both faces, joining the edges (the vertices of a loop cut give back the faces
+/// it cut). Refuses any other boundary vertex, and a result with a polygon of fewer than 3 corners or
+/// with a vertex repeated.
 Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices);
 
 /// Dissolves interior edges: the two faces on each merge into one polygon (a chain of edges merges

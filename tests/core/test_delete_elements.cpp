@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 
+#include "core/modelling/loop_cut.h"
 #include "core/modelling/samples.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
@@ -220,6 +221,38 @@ TEST(DissolveVertices, Refusals) {
   const CovarianceMesh triangle =
       make_covariance_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, std::vector<Mat3>(3, Mat3::Identity()), {{0, 1, 2}});
   EXPECT_EQ(error_of([&] { dissolve_vertices(triangle, {0}); }), "face 0 would be left with 2 corners");
+}
+
+}  // namespace
+}  // namespace gps
+
+namespace gps {
+namespace {
+
+TEST(DissolveVertices, ALoopCutsVerticesGiveBackTheFacesItCut) {
+  // As in Blender: the edges along the loop go first, then each vertex left between two edges in a line.
+  const CovarianceMesh cube = make_sample("cube");
+  const std::span<const int> face = cube.face(0);
+  const Modelled cut = loop_cut(cube, face[0], face[1], 1);
+  ASSERT_EQ(cut.selection.size(), 4u);
+  const Modelled back = dissolve_vertices(cut.mesh, cut.selection);
+  const LoopedShape s = looped_shape_of(back.mesh);
+  EXPECT_EQ(s.vertices, 8);
+  EXPECT_EQ(s.faces, 6);
+  EXPECT_TRUE(s.oriented);
+  EXPECT_TRUE(s.boundary_loops.empty());
+  for (size_t f = 0; f < back.mesh.n_faces(); ++f) EXPECT_EQ(back.mesh.face(f).size(), 4u) << f;
+  for (size_t v = 0; v < 8; ++v) EXPECT_EQ(back.mesh.mean(v), cube.mean(v)) << v;
+  // One of them alone has four edges: its four faces merge.
+  const Modelled one = dissolve_vertices(cut.mesh, {cut.selection[0]});
+  EXPECT_EQ(looped_shape_of(one.mesh).faces, 7);
+  EXPECT_EQ(looped_shape_of(one.mesh).vertices, 11);
+  // A vertex between two edges in a line, alone: its two faces keep apart, without it.
+  const CovarianceMesh two = make_covariance_mesh(
+      {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {1, 0.5, 0}},
+      std::vector<Mat3>(7, 0.01 * Mat3::Identity()), {{0, 1, 6, 4, 3}, {1, 2, 5, 4, 6}});
+  const Modelled line = dissolve_vertices(two, {6});
+  EXPECT_EQ(arrays_of(line.mesh).faces, (std::vector<std::vector<int>>{{0, 1, 4, 3}, {1, 2, 5, 4}}));
 }
 
 }  // namespace

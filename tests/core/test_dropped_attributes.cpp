@@ -15,9 +15,9 @@ const std::string kTail =
 
 TEST(DroppedAttributes, TheNoteCountsEachKind) {
   EXPECT_EQ(dropped_attributes_note("m.obj", {}), "");
-  EXPECT_EQ(dropped_attributes_note("m.obj", {1, 0, 0}), "m.obj: 1 texture coordinate" + kTail);
-  EXPECT_EQ(dropped_attributes_note("m.obj", {4, 1, 0}), "m.obj: 4 texture coordinates and 1 normal" + kTail);
-  EXPECT_EQ(dropped_attributes_note("m.obj", {4, 2, 3}),
+  EXPECT_EQ(dropped_attributes_note("m.obj", {1, 0, 0, {}}), "m.obj: 1 texture coordinate" + kTail);
+  EXPECT_EQ(dropped_attributes_note("m.obj", {4, 1, 0, {}}), "m.obj: 4 texture coordinates and 1 normal" + kTail);
+  EXPECT_EQ(dropped_attributes_note("m.obj", {4, 2, 3, {}}),
             "m.obj: 4 texture coordinates, 2 normals and 3 vertex colours" + kTail);
 }
 
