@@ -1,7 +1,6 @@
 #include "render/cache/surface_cache.h"
 
 #include <glad/gl.h>
-#include <cstdio>
 
 #include <algorithm>
 #include <glm/gtc/matrix_access.hpp>
@@ -72,7 +71,6 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
   // Where a quarter of the patches or more would be captured again, everything is, sooner (refresh()).
   SurfaceBlocks followed = blocks_;
   const std::vector<SurfaceBlocks::Moved> moved = followed.follow(n_patches, new_number, changed);
-  fprintf(stderr, "DBG topology_changed: stale %d of %d patches, blocks %d\n", followed.stale_patches(), n_patches, followed.size());
   if (4 * followed.stale_patches() > n_patches) {
     tracked_points_ = -1;
     return {};

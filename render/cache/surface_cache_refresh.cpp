@@ -2,7 +2,6 @@
 // date, their welded vertices evaluated again where their tessellation stays, the others captured
 // again and copied into place or assembled with the clean blocks.
 #include <glad/gl.h>
-#include <cstdio>
 
 #include <algorithm>
 #include <iterator>
@@ -47,7 +46,6 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   }
   // Captured again: past half of the patches, little less than capturing them all (after a change of
   // topology, past a quarter: topology_changed() gives such changes up).
-  fprintf(stderr, "DBG refresh: stale blocks %zu captured %d evaluated %zu of %d\n", stale.size(), captured_patches, evaluated.size(), blocks_.n_patches());
   if (2 * captured_patches > blocks_.n_patches()) return false;
   // A welded vertex on a block's edge may stand for copies in the blocks beside it, which are stale
   // too where it changed (core/plans/patch_readers.h: an edit's patches and their neighbours). So with

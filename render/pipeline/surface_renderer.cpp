@@ -1,7 +1,6 @@
 #include "render/pipeline/surface_renderer.h"
 
 #include <glad/gl.h>
-#include <cstdio>
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +53,6 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   const bool keep = change.from != 0 && change.from == tables_id_ && !kept.empty() && carry && same_precision &&
                     surface_tables.plans.shape == shape() &&
                     kept_runs_fit(kept, n_patches(), surface_tables.plans.n_patches());
-  fprintf(stderr, "DBG set_mesh keep=%d from=%lld id=%lld kept=%zu carry=%d same_precision=%d\n", int(keep), change.from, tables_id_, kept.size(), int(carry), int(same_precision));
   if (keep && same_plans(tables_, surface_tables, kept, origin)) {  // the Gaussians alone: followed as an edit
     tables_id_ = change.to;
     framed_ = std::move(framed);

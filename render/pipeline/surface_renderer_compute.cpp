@@ -2,7 +2,6 @@
 // topology or a whole upload, the 9D points, the stencil rows and the corner pass, and what the
 // surface cache is told of them.
 #include <glad/gl.h>
-#include <cstdio>
 
 #include "core/plans/stencil_table.h"
 #include "render/pipeline/kept_corner_output.h"
@@ -58,7 +57,6 @@ void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::v
   corners_.run_listed(plans, int(corners.size()), group_limit_);
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
-  fprintf(stderr, "DBG kept: stored=%d\n", int(cache_.has_stored_triangles()));
   if (!cache_.has_stored_triangles()) return cache_.points_changed(points_generation_, nullptr);
   const KeptTriangles triangles = kept_triangles(plans, before.plans.n_patches(), kept, patches);
   stored_levels_.follow(
