@@ -128,6 +128,9 @@ private:
     Fan fan;
     std::vector<char> bevelled;
     std::vector<int> left, right;
+    /// The end of a single bevelled edge at a vertex of four or more edges inside the mesh: by fan
+    /// edge, the spot on each edge not beside it (−1 elsewhere).
+    std::vector<int> across;
   };
 
   Fan fan_of(int v) const {
@@ -317,6 +320,16 @@ private:
         left = slide_spot(fan, t - 1, meeting_length(fan, t, w_t, t - 1));
         reaches(right, fan.neighbour(s + 1));
         reaches(left, fan.neighbour(t - 1));
+        // The end of a single bevelled edge among four or more: as Blender's, v goes, and each edge
+        // not beside the bevelled one gets a vertex at the width along it (otherwise the corner
+        // polygon would be v and the two spots beside it, flat where the edges across run straight on).
+        if (b.size() == 1 && m >= 4) {
+          p.across.assign(size_t(n), -1);
+          for (int e = s + 2; e <= s + m - 2; ++e) {
+            p.across[size_t(fan.at(e))] = slide_spot(fan, e, w_s);
+            reaches(p.across[size_t(fan.at(e))], fan.neighbour(e));
+          }
+        }
       }
       reaches(right, fan.neighbour(s));
       reaches(left, fan.neighbour(t));
@@ -492,6 +505,13 @@ private:
         replace(fan, s + 1, std::vector<int>(pr.rbegin(), pr.rend()));
       } else if (m == 3) {
         replace(fan, s + 1, {right, left});
+      } else if (!p.across.empty()) {
+        // Faces s + 1 … t − 2 each take the spots on their two edges in place of v.
+        const auto at = [&](int e) {
+          return e == s + 1 ? right : e == s + m - 1 ? left : vertex(p.across[size_t(fan.at(e))]);
+        };
+        for (int i = s + 1; i <= s + m - 2; ++i) replace(fan, i, {at(i), at(i + 1)});
+        for (int e = s + 2; e <= s + m - 2; ++e) end_of_[directed_key(v, fan.neighbour(e))] = at(e);
       } else if (m >= 4) {
         split_after(s, right);
         split_before(t, left);
@@ -510,6 +530,9 @@ private:
         if (gap.before_t == 1 && gap.after_s == 1) return;
         if (gap.before_t >= 1) polygon.push_back(pr.front());
         if (gap.after_s >= 1) polygon.push_back(v);
+      } else if (!p.across.empty()) {
+        polygon.push_back(pr.front());
+        for (int e = b[before] + m - 2; e >= b[before] + 2; --e) polygon.push_back(vertex(p.across[size_t(fan.at(e))]));
       } else if (m >= 3) {
         polygon.push_back(pr.front());
         if (m >= 4) polygon.push_back(v);

@@ -194,10 +194,12 @@ TEST(BevelEdges, ThreeSegmentsOnATriangleMeshStayTriangles) {
   const Modelled m = bevel_edges(ico, {{0, 5}}, width(0.1, 3));
   EXPECT_TRUE(all_triangles(m.mesh));
   EXPECT_TRUE(closed_and_oriented(m.mesh));
-  // At each end (valence 5) two vertices on the edges beside it and two inside its profile, the end
-  // kept for its other edges; the band's 3 quads, the end's polygon and two widened faces as triangles.
-  EXPECT_EQ(m.mesh.n_vertices(), 12u + 2 * 4);
-  EXPECT_EQ(m.mesh.n_faces(), 20u + 6 + 2 * (3 + 2));
+  // At each end (valence 5), as Blender's: a vertex on each of its four other edges and two inside
+  // its profile, the end itself gone. As triangles: the 12 faces away from the edge, its 2 faces, the
+  // 3 faces at each end around the edges across (each widened into 2), the band's 3 quads (6) and
+  // each end's hexagon (4).
+  EXPECT_EQ(m.mesh.n_vertices(), 12u - 2 + 2 * 6);
+  EXPECT_EQ(m.mesh.n_faces(), 12u + 2 + 2 * 6 + 6 + 2 * 4);
   EXPECT_GT(signed_volume(m.mesh), 0.95 * volume);
   EXPECT_LT(signed_volume(m.mesh), volume);
 
@@ -391,19 +393,36 @@ TEST(BevelAtBoundaries, ABoundaryEdgeGetsABandInItsFaceBetweenItAndTheNewEdge) {
 TEST(BevelAtBoundaries, AnInnerEdgeEndingOnTheBoundarySplitsItsEndAlongTheBoundary) {
   const CovarianceMesh grid = flat_grid();
   // Edge 1–5: vertex 1 becomes (0.75, 0) and (1.25, 0) on the boundary, the band's end between them
-  // open; vertex 5 (valence 4) keeps its place for its other edges, a triangle closing its corner
-  // (flat here: its sides are in line).
+  // open; vertex 5 (valence 4) becomes, as in Blender, a vertex on each of its other three edges, a
+  // triangle closing its corner (with area: the one across lies 0.25 along the edge that runs on).
   const Modelled m = bevel_edges(grid, {{1, 5}}, width(0.25));
-  EXPECT_EQ(m.mesh.n_vertices(), 16u - 1 + 2 + 2);
+  EXPECT_EQ(m.mesh.n_vertices(), 16u - 2 + 2 + 3);
   EXPECT_EQ(m.mesh.n_faces(), 9u + 1 + 1);
   EXPECT_TRUE(manifold_and_oriented(m.mesh));
   EXPECT_EQ(boundary_loops(m.mesh).size(), 1u);
   EXPECT_EQ(boundary_vertices(m.mesh), 12u - 1 + 2);
-  EXPECT_TRUE(all_face_up(m.mesh, true));
+  EXPECT_TRUE(all_face_up(m.mesh));  // no face without area
   EXPECT_NEAR(area_facing_up(m.mesh), 9, 1e-12);
   EXPECT_EQ(vertex_at(m.mesh, Vec3(1, 0, 0)), -1);
-  for (const Vec3& p : {Vec3(0.75, 0, 0), Vec3(1.25, 0, 0), Vec3(0.75, 1, 0), Vec3(1.25, 1, 0)})
-    EXPECT_GE(vertex_at(m.mesh, p), 15) << p.transpose();
+  EXPECT_EQ(vertex_at(m.mesh, Vec3(1, 1, 0)), -1);
+  for (const Vec3& p :
+       {Vec3(0.75, 0, 0), Vec3(1.25, 0, 0), Vec3(0.75, 1, 0), Vec3(1.25, 1, 0), Vec3(1, 1.25, 0)})
+    EXPECT_GE(vertex_at(m.mesh, p), 14) << p.transpose();
+}
+
+TEST(BevelEdges, TheEndsOfOneEdgeAmongFourEdgesLeaveNoFaceWithoutArea) {
+  // Edge 6–7 inside a 4 × 4 grid, both ends of valence 4 with their other edges in line: each end gives
+  // way to a vertex on each of its three other edges (Blender's), so the triangle closing it has area.
+  const CovarianceMesh grid = flat_grid(4);
+  for (int segments : {1, 2}) {
+    const Modelled m = bevel_edges(grid, {{6, 7}}, width(0.2, segments));
+    EXPECT_EQ(m.mesh.n_vertices(), 25u - 2 + 2 * (3 + segments - 1)) << segments;
+    EXPECT_EQ(m.mesh.n_faces(), 16u + segments + 2) << segments;
+    EXPECT_TRUE(manifold_and_oriented(m.mesh));
+    EXPECT_TRUE(all_face_up(m.mesh)) << segments;
+    EXPECT_NEAR(area_facing_up(m.mesh), 16, 1e-12);
+    for (const Vec3& p : {Vec3(0.8, 1, 0), Vec3(2.2, 1, 0)}) EXPECT_GE(vertex_at(m.mesh, p), 23) << p.transpose();
+  }
 }
 
 TEST(BevelAtBoundaries, TheWholeRimOfASideBecomesABandAlongIt) {
