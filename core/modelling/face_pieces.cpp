@@ -40,12 +40,22 @@ bool in_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, con
          (a - c).cross(p - c).dot(normal) >= 0;
 }
 
+// Whether the triangle a, b, c has no area as seen along `normal`: its corners on one line, within
+// rounding of its size.
+bool flat_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& normal) {
+  const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+  return std::abs((b - a).cross(c - a).dot(normal)) <= 1e-12 * longest * normal.norm();
+}
+
 // The corner of `piece` whose ear (it and its two neighbours) has the shortest diagonal among the
-// convex ears holding no other corner, tried from corner 1 on; corner 1 where none is.
+// convex ears holding no other corner, tried from corner 1 on: an ear with area where there is one
+// (corners on one line, as a bevel's straight profile puts them, make ears without), else one
+// without; corner 1 where none is.
 size_t best_ear(const std::vector<int>& piece, const std::vector<Vec3>& means, const Vec3& normal) {
   const size_t n = piece.size();
   size_t best = 1;
   double shortest = std::numeric_limits<double>::infinity();
+  bool best_flat = true;
   for (size_t step = 1; step <= n; ++step) {
     const size_t k = step % n;
     const Vec3 &a = means[size_t(piece[(k + n - 1) % n])], &b = means[size_t(piece[k])],
@@ -55,63 +65,86 @@ size_t best_ear(const std::vector<int>& piece, const std::vector<Vec3>& means, c
     for (size_t other = 0; other < n && empty; ++other)
       if (other != k && other != (k + 1) % n && other != (k + n - 1) % n)
         empty = !in_triangle(means[size_t(piece[other])], a, b, c, normal);
+    if (!empty) continue;
+    const bool flat = flat_triangle(a, b, c, normal);
     const double diagonal = (c - a).squaredNorm();
-    if (empty && diagonal < shortest) shortest = diagonal, best = k;
+    if ((best_flat && !flat) || (flat == best_flat && diagonal < shortest))
+      shortest = diagonal, best = k, best_flat = flat;
   }
   return best;
 }
 
-// A triangle whose corner b lies on the edge a–c opposite it (a corner of the polygon on the line of
-// its neighbours, which the last ear can leave) has no area: the diagonal a–c is flipped with the
-// triangle beyond it, (a, c, d) becoming (a, b, d) and (b, c, d), both with area where d is off the line.
-void flip_flat_triangles(std::vector<std::vector<int>>& triangles, const std::vector<Vec3>& means, const Vec3& normal) {
-  const auto flat = [&](const std::vector<int>& t) {
-    const Vec3 &a = means[size_t(t[0])], &b = means[size_t(t[1])], &c = means[size_t(t[2])];
-    const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-    return std::abs((b - a).cross(c - a).dot(normal)) <= 1e-12 * longest;
-  };
-  for (size_t i = 0; i < triangles.size(); ++i) {
-    if (!flat(triangles[i])) continue;
-    // Rotate so that b is the corner on the line: the one opposite the longest edge.
-    std::vector<int> t = triangles[i];
-    for (int turn = 0; turn < 3; ++turn) {
-      const Vec3 &a = means[size_t(t[0])], &b = means[size_t(t[1])], &c = means[size_t(t[2])];
-      if ((c - a).squaredNorm() >= std::max((b - a).squaredNorm(), (c - b).squaredNorm())) break;
-      std::rotate(t.begin(), t.begin() + 1, t.end());
-    }
-    const int a = t[0], b = t[1], c = t[2];
-    for (size_t j = 0; j < triangles.size(); ++j) {
-      const std::vector<int>& o = triangles[j];
-      const auto at = std::find(o.begin(), o.end(), a);
-      if (j == i || at == o.end() || o[size_t((at - o.begin() + 1) % 3)] != c) continue;
-      const int d = o[size_t((at - o.begin() + 2) % 3)];
-      const std::vector<int> first{a, b, d}, second{b, c, d};
-      if (flat(first) || flat(second)) continue;
-      triangles[i] = first;
-      triangles[j] = second;
-      break;
-    }
+// Ear clipping of `piece` into `triangles`.
+void clip_ears(std::vector<int> rest, const std::vector<Vec3>& means, const Vec3& normal,
+               std::vector<std::vector<int>>& triangles) {
+  while (rest.size() > 3) {
+    const size_t n = rest.size(), k = best_ear(rest, means, normal);
+    const size_t before = (k + n - 1) % n, after = (k + 1) % n;
+    triangles.push_back({rest[before], rest[k], rest[after]});
+    // The rest from the ear's far corner round to its near one.
+    std::vector<int> next;
+    for (size_t i = 0; i + 1 < n; ++i) next.push_back(rest[(after + i) % n]);
+    rest = std::move(next);
   }
+  triangles.push_back(std::move(rest));
+}
+
+// Whether corner k of `piece` lies on the straight line between its neighbours (a bevel's straight
+// profile or a cut along an edge puts corners there): any triangle with it and its neighbours has no area.
+bool straight_corner(const std::vector<int>& piece, size_t k, const std::vector<Vec3>& means, const Vec3& normal) {
+  const size_t n = piece.size();
+  const Vec3 &a = means[size_t(piece[(k + n - 1) % n])], &b = means[size_t(piece[k])],
+             &c = means[size_t(piece[(k + 1) % n])];
+  return flat_triangle(a, b, c, normal) && (a - b).dot(c - b) < 0;
 }
 
 }  // namespace
 
 void triangulate_pieces(std::vector<std::vector<int>>& pieces, const std::vector<Vec3>& means, const Vec3& normal) {
   for (size_t p = 0, count = pieces.size(); p < count; ++p) {
-    std::vector<std::vector<int>> triangles;
-    std::vector<int> rest = pieces[p];
-    while (rest.size() > 3) {
-      const size_t n = rest.size(), k = best_ear(rest, means, normal);
-      const size_t before = (k + n - 1) % n, after = (k + 1) % n;
-      triangles.push_back({rest[before], rest[k], rest[after]});
-      // The rest from the ear's far corner round to its near one.
-      std::vector<int> next;
-      for (size_t i = 0; i + 1 < n; ++i) next.push_back(rest[(after + i) % n]);
-      rest = std::move(next);
+    const std::vector<int>& piece = pieces[p];
+    if (piece.size() <= 3) continue;
+    // The corners on straight lines set aside (every triangle through them and both their neighbours
+    // would have no area), the rest clipped, then each straight run fanned from the far corner of the
+    // triangle on its line: (a, c, d) with a, p₁ … p_k, c in line becomes (a, p₁, d) … (p_k, c, d).
+    std::vector<int> corners;
+    std::vector<std::vector<int>> runs;  // by corner kept: the straight corners after it
+    for (size_t k = 0; k < piece.size(); ++k) {
+      if (corners.empty() || !straight_corner(piece, k, means, normal)) {
+        corners.push_back(piece[k]);
+        runs.emplace_back();
+      } else {
+        runs.back().push_back(piece[k]);
+      }
     }
-    if (triangles.empty()) continue;
-    triangles.push_back(std::move(rest));
-    flip_flat_triangles(triangles, means, normal);
+    // Straight corners before the first kept one belong to the last kept one's run.
+    if (!runs.empty() && corners.size() > 1 && straight_corner(piece, 0, means, normal)) {
+      runs.back().push_back(corners.front());
+      runs.back().insert(runs.back().end(), runs.front().begin(), runs.front().end());
+      corners.erase(corners.begin());
+      runs.erase(runs.begin());
+    }
+    std::vector<std::vector<int>> triangles;
+    if (corners.size() < 3) {  // no area at all: clipped as it is
+      clip_ears(piece, means, normal, triangles);
+    } else {
+      clip_ears(corners, means, normal, triangles);
+      for (size_t i = 0; i < corners.size(); ++i) {
+        if (runs[i].empty()) continue;
+        const int a = corners[i], c = corners[(i + 1) % corners.size()];
+        for (std::vector<int>& t : triangles) {
+          const size_t at = size_t(std::find(t.begin(), t.end(), a) - t.begin());
+          if (at == 3 || t[(at + 1) % 3] != c) continue;
+          const int d = t[(at + 2) % 3];
+          std::vector<int> line{a};
+          line.insert(line.end(), runs[i].begin(), runs[i].end());
+          line.push_back(c);
+          t = {line[0], line[1], d};
+          for (size_t k = 1; k + 1 < line.size(); ++k) triangles.push_back({line[k], line[k + 1], d});
+          break;
+        }
+      }
+    }
     pieces[p] = triangles[0];
     pieces.insert(pieces.end(), triangles.begin() + 1, triangles.end());
   }

@@ -16,7 +16,9 @@ bool split_along(std::vector<std::vector<int>>& pieces, const std::vector<int>& 
 
 /// Each piece of more than three corners cut into triangles by ear clipping in the plane normal to
 /// `normal` (the face's orientation), the ear with the shortest diagonal first (a quad is split by its
-/// shorter diagonal): the first triangle takes the piece's place, the others are appended.
+/// shorter diagonal); corners on the straight line between their neighbours are left out of the
+/// clipping and fanned into the triangle on their line, so that no triangle is without area where the
+/// piece has any. The first triangle takes the piece's place, the others are appended.
 void triangulate_pieces(std::vector<std::vector<int>>& pieces, const std::vector<Vec3>& means, const Vec3& normal);
 
 }  // namespace gps
