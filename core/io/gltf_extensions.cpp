@@ -5,6 +5,7 @@
 #include <array>
 #include <string>
 
+#include "core/io/json_text.h"
 #include "core/support/error.h"
 #include "core/support/quoted_text.h"
 
@@ -25,6 +26,9 @@ void check_required_gltf_extensions(std::string_view json_text) {
   bool in_required = false;
   const nlohmann::json::parser_callback_t keep_required = [&](int depth, nlohmann::json::parse_event_t event,
                                                               nlohmann::json& parsed) {
+    // tinygltf reads "extras" recursively: text nested past its stack is refused here first.
+    if (size_t(depth) > kMaxJsonDepth)
+      throw Error("is glTF JSON nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
     if (depth == 1 && event == nlohmann::json::parse_event_t::key) {
       in_required = parsed == "extensionsRequired";
       return in_required;

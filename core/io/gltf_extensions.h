@@ -11,8 +11,9 @@ namespace gps {
 bool reads_gltf_extension(std::string_view name);
 
 /// Throws gps::Error, without the file's name, for the first extension that the glTF JSON `json_text`
-/// requires and gpsurf does not read, naming it (and what to do where it is a compression). Text that is
-/// not valid JSON passes: the reader refuses it with its own words.
+/// requires and gpsurf does not read, naming it (and what to do where it is a compression), and for
+/// JSON nested deeper than kMaxJsonDepth. Text that is not valid JSON passes: the reader refuses it
+/// with its own words.
 void check_required_gltf_extensions(std::string_view json_text);
 
 }  // namespace gps

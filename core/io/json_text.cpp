@@ -14,9 +14,8 @@ namespace {
 
 using Json = nlohmann::json;
 
-// Deeper nesting is refused as it is read: none of gpsurf's documents nests more than a few levels,
-// and a DOM of a million empty arrays would take a hundred times the file's size.
-constexpr size_t kMaxJsonDepth = 64;
+// Deeper nesting than kMaxJsonDepth is refused as it is read: none of gpsurf's documents nests more
+// than a few levels, and a DOM of a million empty arrays would take a hundred times the file's size.
 struct TooDeep {};
 
 // nlohmann's DOM builder that also knows where in the document it is, so that an error names the

@@ -3,10 +3,15 @@
 // usage error, and numbers taken only where they fit the type they become.
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
 #include <functional>
 #include <string>
 
 namespace gps {
+
+/// How deep JSON from a file may nest (arrays and objects within each other): deeper text is refused
+/// while it is read, before it costs memory or a reader's recursion.
+inline constexpr size_t kMaxJsonDepth = 64;
 
 /// Parses `text` as one JSON value. Throws a usage error "SOURCE: ..." (or without "SOURCE: " where
 /// it is empty) for a NUL byte or a syntax error, naming its byte, and for a number beyond a double's

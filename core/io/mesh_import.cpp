@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cstring>
 #include <numeric>
@@ -12,6 +13,7 @@
 #include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/io/number_text.h"
+#include "core/io/text_file.h"
 #include "core/support/quoted_text.h"
 #include "core/io/text_words.h"
 
@@ -408,9 +410,31 @@ void check_text_head(std::string_view head, size_t size) {
     throw Error("byte " + std::to_string(nul + 1) + " is a NUL: not a text file");
 }
 
+namespace {
+
+// Whether text begins as an ASCII STL does: "solid", in any case, after a UTF-8 byte order mark and
+// white space, as exporters write it.
+bool begins_ascii_stl(std::string_view text) {
+  if (text.starts_with(kUtf8ByteOrderMark)) text.remove_prefix(kUtf8ByteOrderMark.size());
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
+  if (text.size() < 5) return false;
+  for (size_t i = 0; i < 5; ++i)
+    if (std::tolower(static_cast<unsigned char>(text[i])) != "solid"[i]) return false;
+  return true;
+}
+
+// An ASCII STL keyword in lower case (exporters write some in capitals).
+std::string keyword_of(std::string_view word) {
+  std::string out(word);
+  for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+}  // namespace
+
 void check_stl_head(std::string_view head, size_t size) {
   if (size == 0) throw Error("the file is empty");
-  if (head.starts_with("solid") && head.find('\0') == std::string_view::npos) return;  // ASCII
+  if (begins_ascii_stl(head) && head.find('\0') == std::string_view::npos) return;  // ASCII
   if (size < 84) throw Error("binary STL shorter than its 84-byte header (truncated)");
   uint32_t declared = 0;
   std::memcpy(&declared, head.data() + 80, 4);
@@ -427,7 +451,7 @@ PolygonSoup parse_stl_soup(std::string data, const std::string& source_path) {
   uint32_t declared = 0;
   if (data.size() >= 84) std::memcpy(&declared, data.data() + 80, 4);
   const bool binary_size = data.size() >= 84 && data.size() == 84 + size_t(declared) * 50;
-  const bool looks_ascii = !binary_size && data.compare(0, 5, "solid") == 0 && data.find("facet") != std::string::npos;
+  const bool looks_ascii = !binary_size && begins_ascii_stl(data);
   if (!looks_ascii) {
     if (data.size() < 84) throw Error(source + ": binary STL shorter than its 84-byte header (truncated)");
     uint32_t n = 0;
@@ -443,20 +467,34 @@ PolygonSoup parse_stl_soup(std::string data, const std::string& source_path) {
       }
   } else {
     std::istringstream in(data);
-    int line_number = 0;
+    int line_number = 0, facet_line = 0, in_facet = 0;
+    bool ended = false;
     for (std::string line; std::getline(in, line);) {
       ++line_number;
       const auto words = words_of(line);
-      if (words.empty() || words[0] != "vertex") continue;
-      Vec3 p;
-      if (words.size() != 4)
-        throw Error(source + ": line " + std::to_string(line_number) + ": a vertex needs three coordinates");
-      for (int k = 0; k < 3; ++k)
-        if (const std::string why = parse_number(words[size_t(k + 1)], p[k]); !why.empty())
-          throw Error(source + ": line " + std::to_string(line_number) + ": " + why);
-      corners.push_back(p);
+      if (words.empty()) continue;
+      const std::string keyword = keyword_of(words[0]);
+      if (keyword == "facet") {
+        facet_line = line_number;
+        in_facet = 0;
+      } else if (keyword == "endfacet" && in_facet != 3) {
+        throw Error(source + ": line " + std::to_string(facet_line) + ": a facet with " + std::to_string(in_facet) +
+                    (in_facet == 1 ? " vertex" : " vertices") + " (an STL facet has 3)");
+      } else if (keyword == "endsolid") {
+        ended = true;
+      } else if (keyword == "vertex") {
+        Vec3 p;
+        if (words.size() != 4)
+          throw Error(source + ": line " + std::to_string(line_number) + ": a vertex needs three coordinates");
+        for (int k = 0; k < 3; ++k)
+          if (const std::string why = parse_number(words[size_t(k + 1)], p[k]); !why.empty())
+            throw Error(source + ": line " + std::to_string(line_number) + ": " + why);
+        corners.push_back(p);
+        ++in_facet;
+      }
     }
     if (corners.size() % 3 != 0) throw Error(source + ": a facet does not have three vertices");
+    if (!ended) throw Error(source + ": the file ends before its 'endsolid' (truncated)");
   }
   if (corners.empty()) throw Error(source + ": no triangles");
   for (size_t c = 0; c < corners.size(); ++c)  // before welding: NaN would break the sort by position

@@ -37,6 +37,7 @@ PolygonSoup read_polygon_soup(const std::string& path, bool& has_covariances) {
     const std::string folder = std::filesystem::absolute(path).parent_path().string();
     return parse_gltf_soup(data, path, folder, has_covariances);
   }
+  if (ext != ".stl") drop_byte_order_mark(data);  // a binary STL's header is any 80 bytes
   if (ext == ".ply") return parse_ply_soup(std::move(data), path, has_covariances);
   if (ext == ".obj") return parse_obj_soup(std::move(data), path);
   if (ext == ".off") return parse_off_soup(std::move(data), path);

@@ -558,13 +558,18 @@ PolygonSoup parse_ply_soup(std::string data, const std::string& source, bool& ha
 void check_ply_head(std::string_view head, size_t size) {
   if (size == 0) throw Error("the file is empty");
   std::string_view first = head.substr(0, head.find('\n'));
+  if (first.starts_with(kUtf8ByteOrderMark)) first.remove_prefix(kUtf8ByteOrderMark.size());
   while (!first.empty() && (first.front() == ' ' || first.front() == '\t')) first.remove_prefix(1);
   while (!first.empty() && (first.back() == '\r' || first.back() == ' ' || first.back() == '\t'))
     first.remove_suffix(1);
   if (first != "ply") throw Error("not a PLY file (the first line is not 'ply')");
 }
 
-PlyContents read_ply(const std::string& path) { return parse_ply(read_text_file(path, check_ply_head), path); }
+PlyContents read_ply(const std::string& path) {
+  std::string data = read_text_file(path, check_ply_head);
+  drop_byte_order_mark(data);
+  return parse_ply(data, path);
+}
 
 namespace {
 // Writes a scalar's bytes in little-endian order whatever the host's order.

@@ -66,4 +66,8 @@ std::string read_text_file(const std::string& path, const HeadCheck& check_head)
   return data;
 }
 
+void drop_byte_order_mark(std::string& text) {
+  if (text.starts_with(kUtf8ByteOrderMark)) text.erase(0, kUtf8ByteOrderMark.size());
+}
+
 }  // namespace gps

@@ -20,4 +20,10 @@ using HeadCheck = std::function<void(std::string_view head, size_t size)>;
 /// `check_head` refuses its first bytes.
 std::string read_text_file(const std::string& path, const HeadCheck& check_head = {});
 
+/// The UTF-8 byte order mark that some editors write at the start of a text file.
+inline constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
+
+/// `text` without a UTF-8 byte order mark at its start (as it is where there is none).
+void drop_byte_order_mark(std::string& text);
+
 }  // namespace gps

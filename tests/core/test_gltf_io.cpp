@@ -551,3 +551,25 @@ TEST(GltfIo, RequiredExtensionsItDoesNotReadAreRefusedByName) {
 
 }  // namespace
 }  // namespace gps
+
+namespace gps {
+namespace {
+
+TEST(GltfIo, DeeplyNestedJsonIsRefusedBeforeTinygltfRecursesIntoIt) {
+  // tinygltf reads "extras" recursively: 20,000 levels overflowed its stack.
+  test::TempDir dir;
+  HandMade h = split_cube();
+  const std::string deep = std::string(20000, '[') + std::string(20000, ']');
+  HandMade shallow = h;
+  shallow.j["extras"] = json::array({json::array({json::array()})});
+  EXPECT_EQ(read_mesh(dir.write("shallow.glb", shallow.glb())).n_vertices(), 8u);
+  json with_buffer = h.j;
+  with_buffer["buffers"] = json::array({{{"byteLength", h.bin.size()}, {"uri", "cube.bin"}}});
+  dir.write("cube.bin", h.bin);
+  std::string gltf = with_buffer.dump();
+  gltf.insert(gltf.size() - 1, ",\"extras\":" + deep);
+  expect_refused(dir.write("deep.gltf", gltf), "deep.gltf: is glTF JSON nested more than 64 levels deep");
+}
+
+}  // namespace
+}  // namespace gps
