@@ -7,7 +7,10 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <optional>
+#include <span>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <Eigen/Geometry>
 #include <tiny_gltf.h>
@@ -481,8 +484,42 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
   return soup;
 }
 
+namespace {
+
+uint64_t undirected_key(int a, int b) { return uint64_t(uint32_t(std::min(a, b))) << 32 | uint32_t(std::max(a, b)); }
+
+// The corner of a face to fan its triangles from: the first whose diagonals are neither edges of the
+// mesh nor diagonals of faces fanned before (either would put a third face on an edge, or a face on
+// another, in the file: a fold of a quad onto a triangle beside it) and whose triangles turn as the
+// face does; else the first with such diagonals; else corner 0.
+size_t fan_apex(const CovarianceMesh& mesh, std::span<const int> corners, const std::vector<Vec3>& positions,
+                const Vec3& normal, const std::unordered_set<uint64_t>& diagonals) {
+  const size_t n = corners.size();
+  const MeshConnectivity& c = mesh.connectivity();
+  std::optional<size_t> untwisted;
+  for (size_t apex = 0; apex < n; ++apex) {
+    bool free = true, turns = true;
+    for (size_t k = 2; k + 1 < n && free; ++k) {
+      const int a = corners[apex], b = corners[(apex + k) % n];
+      free = c.find_edge(a, b) < 0 && !diagonals.count(undirected_key(a, b));
+    }
+    for (size_t k = 1; k + 1 < n && free && turns; ++k) {
+      const Vec3& a = positions[size_t(corners[apex])];
+      turns = (positions[size_t(corners[(apex + k) % n])] - a)
+                  .cross(positions[size_t(corners[(apex + k + 1) % n])] - a)
+                  .dot(normal) > 0;
+    }
+    if (free && turns) return apex;
+    if (free && !untwisted) untwisted = apex;
+  }
+  return untwisted.value_or(0);
+}
+
+}  // namespace
+
 GltfTriangles gltf_triangles_of(const CovarianceMesh& mesh) {
   GltfTriangles out;
+  std::unordered_set<uint64_t> diagonals;
   out.positions.reserve(mesh.n_vertices());
   for (size_t i = 0; i < mesh.n_vertices(); ++i) out.positions.push_back(mesh.mean(i));
   out.covariances = mesh.covariances;
@@ -494,7 +531,10 @@ GltfTriangles gltf_triangles_of(const CovarianceMesh& mesh) {
     for (size_t k = 0; k < corners.size(); ++k)
       normal += out.positions[size_t(corners[k])].cross(out.positions[size_t(corners[(k + 1) % corners.size()])]);
     for (const int v : corners) out.normals[size_t(v)] += normal;
-    for (size_t k = 1; k + 1 < corners.size(); ++k) out.triangles.push_back({corners[0], corners[k], corners[k + 1]});
+    const size_t n = corners.size(), apex = n > 3 ? fan_apex(mesh, corners, out.positions, normal, diagonals) : 0;
+    for (size_t k = 1; k + 1 < n; ++k)
+      out.triangles.push_back({corners[apex], corners[(apex + k) % n], corners[(apex + k + 1) % n]});
+    for (size_t k = 2; k + 1 < n; ++k) diagonals.insert(undirected_key(corners[apex], corners[(apex + k) % n]));
   }
   // glTF's normals are unit vectors: a vertex whose faces have no area gets +z.
   for (Vec3& n : out.normals) n = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::UnitZ();

@@ -573,3 +573,23 @@ TEST(GltfIo, DeeplyNestedJsonIsRefusedBeforeTinygltfRecursesIntoIt) {
 
 }  // namespace
 }  // namespace gps
+
+namespace gps {
+namespace {
+
+TEST(GltfIo, AFaceIsFannedSoThatTheFileReadsBack) {
+  // A quad folded onto the triangle beside it: fanned from its first corner, its diagonal 0–2 was the
+  // triangle's edge, and the file read back with a duplicate face.
+  const CovarianceMesh fold = make_covariance_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.5}},
+                                                   std::vector<Mat3>(4, 0.01 * Mat3::Identity()), {{0, 1, 2, 3}, {0, 3, 2}});
+  test::TempDir dir;
+  for (const char* name : {"fold.glb", "fold.gltf"}) {
+    write_mesh(dir.file(name), fold);
+    const CovarianceMesh back = read_mesh(dir.file(name));
+    EXPECT_EQ(back.n_vertices(), 4u) << name;
+    EXPECT_EQ(back.n_faces(), 3u) << name;
+  }
+}
+
+}  // namespace
+}  // namespace gps
