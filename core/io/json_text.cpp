@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <unordered_set>
 #include <vector>
 
 #include "core/support/quoted_text.h"
@@ -17,6 +18,10 @@ using Json = nlohmann::json;
 // Deeper nesting than kMaxJsonDepth is refused as it is read: none of gpsurf's documents nests more
 // than a few levels, and a DOM of a million empty arrays would take a hundred times the file's size.
 struct TooDeep {};
+// A key given twice in one object (nlohmann keeps the last, silently).
+struct RepeatedKey {};
+// A number whose digits are not zero but that a double holds only as 0 (1e-400).
+struct Underflow {};
 
 // nlohmann's DOM builder that also knows where in the document it is, so that an error names the
 // element it met (its own message names only the byte). With a sink, a top-level array's elements are
@@ -33,6 +38,7 @@ public:
   bool number_integer(Json::number_integer_t v) { return value() && dom_->number_integer(v) && ended_value(); }
   bool number_unsigned(Json::number_unsigned_t v) { return value() && dom_->number_unsigned(v) && ended_value(); }
   bool number_float(Json::number_float_t v, const std::string& s) {
+    if (v == 0 && s.find_first_of("123456789") < s.find_first_of("eE")) throw Underflow{};
     return value() && dom_->number_float(v, s) && ended_value();
   }
   bool string(std::string& v) { return value() && dom_->string(v) && ended_value(); }
@@ -40,11 +46,12 @@ public:
   bool start_object(size_t n) {
     if (!value()) return false;
     if (levels_.size() >= kMaxJsonDepth) throw TooDeep{};
-    levels_.push_back({false, 0, {}});
+    levels_.push_back({false, 0, {}, {}});
     return dom_->start_object(n);
   }
   bool key(std::string& k) {
     levels_.back().key = k;
+    if (!levels_.back().keys.insert(k).second) throw RepeatedKey{};
     return dom_->key(k);
   }
   bool end_object() {
@@ -53,13 +60,13 @@ public:
   }
   bool start_array(size_t n) {
     if (sink_ && levels_.empty()) {  // the streamed array itself: its elements get a DOM each
-      levels_.push_back({true, 0, {}});
+      levels_.push_back({true, 0, {}, {}});
       streaming_ = true;
       return true;
     }
     if (!value()) return false;
     if (levels_.size() >= kMaxJsonDepth) throw TooDeep{};
-    levels_.push_back({true, 0, {}});
+    levels_.push_back({true, 0, {}, {}});
     return dom_->start_array(n);
   }
   bool end_array() {
@@ -91,7 +98,8 @@ private:
   struct Level {
     bool array;
     size_t started;   // elements begun, for an array
-    std::string key;  // the last key, for an object
+    std::string key;                      // the last key, for an object
+    std::unordered_set<std::string> keys;  // every key so far, for an object
   };
   // A value begins: counted in its array; a streamed array's element gets a DOM of its own. False
   // (parsing stops) where a sink was given and the top-level value is not an array.
@@ -141,6 +149,10 @@ void run_parser(const std::string& text, const std::string& source, const std::s
     throw usage_error(prefix + "not valid JSON (byte " + std::to_string(e.byte) + ")");
   } catch (const Json::out_of_range& e) {
     throw usage_error(prefix + at() + "a number beyond the range of a double");
+  } catch (const RepeatedKey&) {
+    throw usage_error(prefix + at() + "the key is given twice in its object");
+  } catch (const Underflow&) {
+    throw usage_error(prefix + at() + "a number too small for a double (it would be read as 0)");
   } catch (const TooDeep&) {
     throw usage_error(prefix + at() + "nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
   } catch (const Json::exception& e) {

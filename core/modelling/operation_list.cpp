@@ -343,6 +343,7 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
   if (op == "split_edge") {
     const auto e = f.edge("edge");
     const double t = f.number("t", 0.5);
+    if (!(t > 0 && t < 1)) throw usage_error("\"t\" must be between 0 and 1 (not either), got " + json_shown(f.json("t")));
     return [=](const CovarianceMesh& m) { return split_edge(m, e[0], e[1], t); };
   }
   if (op == "slide") {
@@ -383,6 +384,7 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
   if (op == "inset") {
     const std::vector<int> faces = f.indices("faces");
     const double thickness = f.number("thickness");
+    if (!(thickness > 0)) throw usage_error("\"thickness\" must be positive, got " + json_shown(f.json("thickness")));
     append = [=](MeshArrays& a, std::string& summary) { return inset_faces_in(a, faces, thickness, summary); };
     return nullptr;
   }
@@ -419,6 +421,7 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
   }
   if (op == "weld") {
     const double distance = f.number("distance");
+    if (!(distance > 0)) throw usage_error("\"distance\" must be positive, got " + json_shown(f.json("distance")));
     const std::vector<int> vertices = f.has("vertices") ? f.indices("vertices") : std::vector<int>();
     return [=](const CovarianceMesh& m) { return weld_by_distance(m, vertices, distance); };
   }

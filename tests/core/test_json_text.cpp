@@ -74,6 +74,14 @@ TEST(JsonText, ErrorsAreAWholeParses) {
   EXPECT_EQ(parse_error(R"([{"op": "add"}, {"op": "extrude", "distance": 1e999}])"),
             "ops.json: ops[1].distance: a number beyond the range of a double");
   EXPECT_EQ(parse_error(R"([1, [2, 3e999]])"), "ops.json: ops[1][1]: a number beyond the range of a double");
+  // A key given twice was the last one silently; a number that underflows was 0.
+  EXPECT_EQ(parse_error(R"([{"op": "bevel", "width": 0.2, "width": 0.3}])"),
+            "ops.json: ops[0].width: the key is given twice in its object");
+  EXPECT_EQ(parse_error(R"([{"op": "subdivide", "op": "merge"}])"),
+            "ops.json: ops[0].op: the key is given twice in its object");
+  EXPECT_EQ(parse_error(R"([{"op": "extrude", "distance": 1e-400}])"),
+            "ops.json: ops[0].distance: a number too small for a double (it would be read as 0)");
+  EXPECT_NO_THROW(parse_json(R"([0.0, 0e5, 0.000e-400, -0.0, 1e-300, {"a": {"a": 1}}])", "ok.json"));
 }
 
 // Nesting past 64 levels is refused as it is read, naming where (a DOM of a million empty arrays would

@@ -281,7 +281,12 @@ TEST(OperationList, NumbersOutsideTheirTypeAreRefusedNamingTheElement) {
             R"(f: ops[0] (bridge): "loops[1]"[1] must be an integer from 0 to 2147483647, got 1.5)"},
            {R"([{"op":"subdivide"},{"op":"extrude","faces":[1],"distance":1e400}])",
             "f: ops[1].distance: a number beyond the range of a double"},
-           {std::string("[]\0garbage", 10), "f: not valid JSON (a NUL byte at byte 3)"}}) {
+           {std::string("[]\0garbage", 10), "f: not valid JSON (a NUL byte at byte 3)"},
+           {R"([{"op":"split_edge","edge":[0,1],"t":1}])",
+            R"(f: ops[0] (split_edge): "t" must be between 0 and 1 (not either), got 1)"},
+           {R"([{"op":"inset","faces":[0],"thickness":-0.3}])",
+            R"(f: ops[0] (inset): "thickness" must be positive, got -0.3)"},
+           {R"([{"op":"weld","distance":0}])", R"(f: ops[0] (weld): "distance" must be positive, got 0)"}}) {
     try {
       OperationList::parse(text, "f");
       ADD_FAILURE() << text << " was accepted";
