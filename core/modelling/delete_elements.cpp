@@ -308,8 +308,19 @@ Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& v
 Modelled dissolve_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
   MeshArrays a = arrays_of(mesh);
   const std::vector<std::array<int, 2>> chosen = checked_edges(directed_edges(a), edges, true);
+  // The faces of the edges' ends, for the ends left between two edges in a line.
+  std::vector<std::vector<int>> faces_of(size_t(a.n_vertices()));
+  std::vector<char> end(size_t(a.n_vertices()), 0);
+  for (const auto& [x, y] : chosen) end[size_t(x)] = end[size_t(y)] = 1;
+  for (int f = 0; f < a.n_faces(); ++f)
+    for (const int v : a.faces[size_t(f)])
+      if (end[size_t(v)]) faces_of[size_t(v)].push_back(f);
   FaceMerger merger(a);
   for (const auto& [x, y] : chosen) merger.dissolve(x, y, edge_name(x, y));
+  // As Blender's Dissolve Edges (its Dissolve Vertices on): an end left between two edges in a line
+  // joins them, so that dissolving a loop cut's edges gives back the faces it cut.
+  for (int v = 0; v < a.n_vertices(); ++v)
+    if (end[size_t(v)]) merger.join_edges_at(v, faces_of[size_t(v)]);
   return merged(mesh, a, merger, "dissolved " + count_of(chosen.size(), "edge", "edges"));
 }
 

@@ -135,20 +135,22 @@ TEST(DeleteEdges, AnEdgeTakesTheFacesOnBothSides) {
   expect_unchanged(cube, before);
 }
 
-// Cube faces 1 {4, 5, 6, 7} and 2 {0, 1, 5, 4} share edge 4–5.
+// Cube faces 1 {4, 5, 6, 7} and 2 {0, 1, 5, 4} share edge 4–5. Its ends are then left between two
+// edges in a line, which Blender's Dissolve Edges joins: the cube becomes a prism of 6 vertices, its
+// two sides beside the edge triangles.
 TEST(DissolveEdges, TwoFacesMergeIntoOneWithCornersInOrder) {
   const CovarianceMesh cube = make_sample("cube");
   const Modelled m = dissolve_edges(cube, {{4, 5}});
   const LoopedShape s = looped_shape_of(m.mesh);
-  EXPECT_EQ(s.vertices, 8);
+  EXPECT_EQ(s.vertices, 6);
   EXPECT_EQ(s.faces, 5);
   EXPECT_EQ(s.euler(), 2);
   EXPECT_TRUE(s.oriented);
   EXPECT_TRUE(s.boundary_loops.empty());
-  EXPECT_EQ(m.summary, "dissolved 1 edge: 1 face removed");
-  const MeshArrays a = arrays_of(m.mesh);
-  EXPECT_EQ(a.faces, (std::vector<std::vector<int>>{
-                         {0, 3, 2, 1}, {4, 0, 1, 5, 6, 7}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}}));
+  EXPECT_EQ(m.summary, "dissolved 1 edge: 1 face, 2 vertices removed");
+  const MeshArrays a = arrays_of(m.mesh);  // vertices 6 and 7 are now 4 and 5
+  EXPECT_EQ(a.faces,
+            (std::vector<std::vector<int>>{{0, 3, 2, 1}, {0, 1, 4, 5}, {2, 3, 5, 4}, {1, 2, 4}, {0, 5, 3}}));
 }
 
 TEST(DissolveEdges, AChainOfEdgesMergesARowOfFaces) {
@@ -243,6 +245,22 @@ TEST(DissolveVertices, ALoopCutsVerticesGiveBackTheFacesItCut) {
   EXPECT_TRUE(s.boundary_loops.empty());
   for (size_t f = 0; f < back.mesh.n_faces(); ++f) EXPECT_EQ(back.mesh.face(f).size(), 4u) << f;
   for (size_t v = 0; v < 8; ++v) EXPECT_EQ(back.mesh.mean(v), cube.mean(v)) << v;
+  // Its edges dissolved instead: the same, as Blender's Dissolve Edges gives it.
+  std::vector<std::array<int, 2>> ring;
+  for (size_t i = 0; i < 4; ++i) ring.push_back({cut.selection[i], cut.selection[(i + 1) % 4]});
+  std::vector<std::array<int, 2>> along;  // the loop's edges: those joining two of its vertices
+  const MeshArrays cut_arrays = arrays_of(cut.mesh);
+  for (const auto& face : cut_arrays.faces)
+    for (size_t k = 0; k < face.size(); ++k) {
+      const int x = face[k], y = face[(k + 1) % face.size()];
+      const auto in_loop = [&](int v) { return std::count(cut.selection.begin(), cut.selection.end(), v) > 0; };
+      if (x < y && in_loop(x) && in_loop(y)) along.push_back({x, y});
+    }
+  ASSERT_EQ(along.size(), 4u);
+  const LoopedShape edges = looped_shape_of(dissolve_edges(cut.mesh, along).mesh);
+  EXPECT_EQ(edges.vertices, 8);
+  EXPECT_EQ(edges.faces, 6);
+  EXPECT_TRUE(edges.oriented);
   // One of them alone has four edges: its four faces merge.
   const Modelled one = dissolve_vertices(cut.mesh, {cut.selection[0]});
   EXPECT_EQ(looped_shape_of(one.mesh).faces, 7);
