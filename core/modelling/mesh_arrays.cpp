@@ -4,8 +4,10 @@
 #include <cstring>
 #include <numeric>
 
+#include "core/io/mesh_repair.h"
 #include "core/support/error.h"
 #include "core/mesh/mesh_connectivity.h"
+#include "core/modelling/operation_words.h"
 #include "core/plans/plan_builder.h"
 
 namespace gps {
@@ -153,6 +155,41 @@ Modelled modelled(const CovarianceMesh& before, const MeshArrays& a, std::vector
   Modelled out{build_mesh(a, before), std::move(selection), std::move(summary), vertex_origin(a)};
   check_plan_limits(before, a, out.mesh, out.vertex_origin);
   return out;
+}
+
+void check_new_geometry(const CovarianceMesh& before, const Modelled& result) {
+  const CovarianceMesh& after = result.mesh;
+  const std::vector<int>& origin = result.vertex_origin;
+  if (origin.size() != after.n_vertices()) return;  // which vertices are new is not known
+  std::vector<int> faces;
+  const MeshConnectivity& c = after.connectivity();
+  for (size_t v = 0; v < origin.size(); ++v)
+    if (origin[v] < 0)
+      faces.insert(faces.end(), c.vertex_faces.begin() + c.vertex_face_offsets[v],
+                   c.vertex_faces.begin() + c.vertex_face_offsets[v + 1]);
+  if (faces.empty()) return;
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  const double tolerance = RepairOptions().weld_tolerance * bounding_box_diagonal(before);
+  const auto name = [&](int v) {
+    return origin[size_t(v)] < 0 ? "new vertex " + std::to_string(v) : "vertex " + std::to_string(origin[size_t(v)]);
+  };
+  for (const int f : faces) {
+    const std::span<const int> corners = after.face(size_t(f));
+    Vec3 normal = Vec3::Zero();  // Newell's: twice the vector area
+    double longest = 0;
+    for (size_t k = 0; k < corners.size(); ++k) {
+      const int x = corners[k], y = corners[(k + 1) % corners.size()];
+      const Vec3 &p = after.mean(size_t(x)), &q = after.mean(size_t(y));
+      normal += p.cross(q);
+      longest = std::max(longest, (q - p).norm());
+      if ((q - p).norm() <= tolerance)
+        throw Error("the result would put " + name(x) + " within " + short_number(tolerance) + " of " + name(y) +
+                    " (a millionth of the mesh's size, which a repair welds)");
+    }
+    if (0.5 * normal.norm() <= tolerance * longest)
+      throw Error("the result would have a face without area, face " + std::to_string(f) + " (its corners in a line)");
+  }
 }
 
 void remove_faces(MeshArrays& a, const std::vector<char>& removed) {

@@ -56,8 +56,16 @@ struct Modelled {
 
 /// The outcome of an operation from its arrays, made from `before` (arrays_of(before), then changed):
 /// build_mesh's mesh, at the cost of what changed, with the vertices' origins where the arrays kept them.
+/// Throws gps::Error for a result past the patch plans' limits.
 Modelled modelled(const CovarianceMesh& before, const MeshArrays& arrays, std::vector<int> selection,
                   std::string summary = "");
+/// Throws gps::Error where the faces around `result`'s new vertices (made from `before`) have no
+/// surface: an edge no longer than the repair's weld tolerance (a millionth of the mesh's size) or no
+/// more area than that times their longest edge, which the next repair would mend away. A parameter
+/// next to nothing makes them (an extrusion by 1e-300, an inset of 0.9999999, a spin by a nanodegree).
+/// Operations run from a list are held to it; the editor's tools, which make such vertices and then
+/// move them (E makes its copies on the faces), are not.
+void check_new_geometry(const CovarianceMesh& before, const Modelled& result);
 /// Throws gps::Error as build_mesh names a Gaussian it refuses ("the result would not be a valid mesh:
 /// vertex 8 has …") for the first of `vertices` (ascending) whose position or covariance has a problem:
 /// an operation that checks the vertices it made or moved is refused as its build would refuse it.

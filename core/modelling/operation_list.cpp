@@ -588,7 +588,9 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
         std::vector<int> selection = step.append(*arrays, summary);
         if (summaries) summaries->push_back(summary);
         if (i + 1 < steps_.size() && steps_[i + 1].append) continue;
-        current.reset(new Modelled(modelled(mesh_now(), *arrays, std::move(selection), std::move(summary))));
+        auto made = std::make_unique<Modelled>(modelled(mesh_now(), *arrays, std::move(selection), std::move(summary)));
+        check_new_geometry(mesh_now(), *made);
+        current = std::move(made);
         arrays.reset();
         continue;
       }
@@ -596,7 +598,9 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
         if (!current) current.reset(new Modelled{mesh, {}, "", {}});  // the list's one copy of its input
         current->selection = step.in_place(current->mesh, current->summary);
       } else {
-        current.reset(new Modelled(step.run(mesh_now())));
+        auto made = std::make_unique<Modelled>(step.run(mesh_now()));
+        check_new_geometry(mesh_now(), *made);
+        current = std::move(made);
       }
     } catch (const Error& e) {
       throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + shown_name(step.name) + "): " + e.what()),

@@ -401,3 +401,29 @@ TEST(OperationList, SplitAndGridFill) {
 
 }  // namespace
 }  // namespace gps
+
+namespace gps {
+namespace {
+
+// A parameter next to nothing made vertices a repair would weld: a list refuses them, naming the step.
+TEST(OperationList, ResultsWithNewVerticesOnTheirNeighboursAreRefused) {
+  const CovarianceMesh cube = make_sample("cube");
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {R"([{"op":"inset","faces":[1],"thickness":1e-12}])",
+            "f: ops[0] (inset): the result would put vertex 5 within 3.4641e-06 of new vertex 9"},
+           {R"([{"op":"inset","faces":[1],"thickness":0.9999999}])",
+            "f: ops[0] (inset): the result would put new vertex 8 within 3.4641e-06 of new vertex 9"},
+           {R"([{"op":"split_edge","edge":[0,1],"t":1e-12}])",
+            "f: ops[0] (split_edge): the result would put new vertex 8 within 3.4641e-06 of vertex 0"},
+           {R"([{"op":"subdivide"},{"op":"loop_cut","edge":[0,8],"slide":0.9999999}])",
+            "f: ops[1] (loop_cut): the result would put new vertex "}}) {
+    const std::string why = test::error_of([&] { OperationList::parse(text, "f").apply(cube); });
+    EXPECT_EQ(why.rfind(message, 0), 0u) << text << "\n" << why;
+  }
+  // The same at sensible sizes are made.
+  EXPECT_NO_THROW(OperationList::parse(R"([{"op":"inset","faces":[1],"thickness":0.2}])", "f").apply(cube));
+  EXPECT_NO_THROW(OperationList::parse(R"([{"op":"split_edge","edge":[0,1],"t":0.01}])", "f").apply(cube));
+}
+
+}  // namespace
+}  // namespace gps
