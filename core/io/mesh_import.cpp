@@ -390,6 +390,10 @@ PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {
     }
     skip_rest(line, faces_with_more);  // colour values
   }
+  // The faces end the data: more after them means the header counts fewer than the file holds.
+  if (!t.done())
+    throw Error(at(t.line()) + quoted_token(t.word()) + " after the " + std::to_string(nf) +
+                (nf == 1 ? " face" : " faces") + " the header counts (it counts fewer than the file holds?)");
   std::string().swap(data);  // the text is parsed: its bytes are not held while the mesh is built
   PolygonSoup soup = plain_soup(std::move(points), std::move(faces), source);
   DroppedAttributes dropped;

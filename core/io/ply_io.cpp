@@ -120,9 +120,15 @@ public:
   // "line N: " for ASCII data, "" for binary data (which has no lines).
   std::string where() const { return format_ == Format::ascii ? "line " + std::to_string(line_) + ": " : ""; }
 
-  // ASCII data ends with its last record: anything but white space after it is refused.
+  // ASCII data ends with its last record: anything but white space after it is refused. Binary data
+  // ends with it too: bytes after it are records the header does not count (its counts short).
   void check_end() {
-    if (format_ != Format::ascii) return;
+    if (format_ != Format::ascii) {
+      if (pos_ < data_.size())
+        fail(std::to_string(data_.size() - pos_) + " bytes after the last element's records (the header counts " +
+             "fewer records than the file holds?)");
+      return;
+    }
     int line = line_ + 1;
     for (size_t i = pos_; i < data_.size(); ++i) {
       if (data_[i] == '\n') {

@@ -76,6 +76,8 @@ TEST(MeshImport, OffWithCommentsAndColours) {
       error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "x.off"); }).find("refers to vertex 5"),
       std::string::npos);
   EXPECT_NE(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n", "y.off"); }).find("truncated"), std::string::npos);
+  EXPECT_EQ(error_of([] { parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n", "z.off"); }),
+            "z.off: line 7: '3' after the 1 face the header counts (it counts fewer than the file holds?)");
 }
 
 // An OFF face repeated is refused where the corners pass what a manifold mesh on the vertices has

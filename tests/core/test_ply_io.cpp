@@ -187,6 +187,11 @@ TEST(PlyIo, MalformedFilesGiveOneLineErrors) {
       {"truncated_faces.ply",
        header("binary_little_endian", 3, 1) + binary_vertices(3) + std::string("\x03\x00\x00", 3), "truncated"},
       {"huge.ply", header("binary_little_endian", 2000000000, 1) + binary_vertices(3), "more than the file holds"},
+      // A second face the header does not count was dropped without a word.
+      {"short_count.ply",
+       header("binary_little_endian", 3, 1) + binary_vertices(3) + std::string("\x03\0\0\0\0\x01\0\0\0\x02\0\0\0", 13) +
+           std::string("\x03\0\0\0\0\x02\0\0\0\x01\0\0\0", 13),
+       "13 bytes after the last element's records (the header counts fewer records than the file holds?)"},
       {"nonmanifold.ply",
        header("ascii", 5, 3) + tri + "0 -1 0 1 0 0 1 0 1\n0 0 1 1 0 0 1 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n",
        "non-manifold"},
