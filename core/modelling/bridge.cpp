@@ -7,6 +7,7 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "core/modelling/delete_elements.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/operation_words.h"
 #include "core/support/error.h"
@@ -203,6 +204,30 @@ Modelled bridge(const CovarianceMesh& mesh, const std::vector<int>& loop_a, cons
   return bridge_runs(mesh, a, one_run(b, sa), one_run(b, sb), identity_index(a.n_vertices()), "");
 }
 
+namespace {
+
+// Two face regions whose borders are loops of the mesh's boundary: the loops bridged, then the regions'
+// faces deleted (and the vertices only they used), the selection and origins followed through both.
+Modelled bridged_then_deleted(const CovarianceMesh& mesh, const std::array<std::vector<int>, 2>& border,
+                              const std::vector<int>& chosen) {
+  const Modelled bridged = bridge(mesh, border[0], border[1]);
+  Modelled out = delete_faces(bridged.mesh, chosen);
+  std::vector<int> selection, origin;
+  const bool known = out.vertex_origin.size() == out.mesh.n_vertices() &&
+                     bridged.vertex_origin.size() == bridged.mesh.n_vertices();
+  for (size_t w = 0; w < out.mesh.n_vertices(); ++w) {
+    const int before = out.vertex_origin.empty() ? int(w) : out.vertex_origin[w];
+    if (std::binary_search(bridged.selection.begin(), bridged.selection.end(), before)) selection.push_back(int(w));
+    if (known) origin.push_back(before < 0 ? -1 : bridged.vertex_origin[size_t(before)]);
+  }
+  out.selection = std::move(selection);
+  out.vertex_origin = std::move(origin);
+  out.summary = "deleted " + count_of(chosen.size(), "face", "faces") + ", " + bridged.summary;
+  return out;
+}
+
+}  // namespace
+
 Modelled bridge_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) {
   MeshArrays a = arrays_of(mesh);
   const std::vector<int> chosen = sorted_faces(a, faces);
@@ -232,15 +257,22 @@ Modelled bridge_faces(const CovarianceMesh& mesh, const std::vector<int>& faces)
   const DirectedEdges edges = directed_edges(a);
   std::array<std::vector<int>, 2> border;
   std::vector<int> region_of_vertex(size_t(a.n_vertices()), -1);
+  // Per region: a face of it with a border edge on the mesh's boundary and one with a border edge
+  // inside the mesh (−1: none); a region's border must be all of one kind.
+  std::array<int, 2> on_boundary{-1, -1}, inside{-1, -1};
+  std::array<std::array<int, 2>, 2> boundary_edge{};
   for (size_t i = 0; i < chosen.size(); ++i) {
     const std::vector<int>& corners = a.faces[size_t(chosen[i])];
     const int region = root(int(i)) == region_roots[0] ? 0 : 1;
     for (size_t k = 0; k < corners.size(); ++k) {
       const int u = corners[k], v = corners[(k + 1) % corners.size()];
       if (chosen_of_edge.count(directed_key(v, u))) continue;
-      if (!edges.count(directed_key(v, u)))
-        throw Error("the region of face " + std::to_string(chosen[i]) + " reaches the mesh's boundary at " +
-                    edge_name(u, v) + ": it leaves no loop to bridge");
+      if (edges.count(directed_key(v, u))) {
+        inside[size_t(region)] = chosen[i];
+      } else if (on_boundary[size_t(region)] < 0) {  // the first, for the message
+        on_boundary[size_t(region)] = chosen[i];
+        boundary_edge[size_t(region)] = {u, v};
+      }
       for (int w : {u, v}) {
         if (region_of_vertex[size_t(w)] == 1 - region)
           throw Error("the regions of faces " + std::to_string(chosen[size_t(region_roots[0])]) + " and " +
@@ -250,6 +282,15 @@ Modelled bridge_faces(const CovarianceMesh& mesh, const std::vector<int>& faces)
       }
     }
   }
+  for (size_t r = 0; r < 2; ++r)
+    if (on_boundary[r] >= 0 && (inside[r] >= 0 || inside[1 - r] >= 0))
+      throw Error("the region of face " + std::to_string(on_boundary[r]) + " reaches the mesh's boundary at " +
+                  edge_name(boundary_edge[r][0], boundary_edge[r][1]) +
+                  (inside[r] >= 0 ? " and meets other faces too" : " and the other region does not") +
+                  ": their borders cannot both be bridged");
+  // Regions whose borders are the mesh's boundary (faces apart, or the caps of an open shell): as
+  // Blender, their borders are bridged and then they go, leaving the band.
+  if (on_boundary[0] >= 0) return bridged_then_deleted(mesh, border, chosen);
   std::vector<char> deleted(size_t(a.n_faces()), 0);
   for (int f : chosen) deleted[size_t(f)] = 1;
   remove_faces(a, deleted);

@@ -27,8 +27,11 @@ Modelled bridge(const CovarianceMesh& mesh, const std::vector<int>& loop_a, cons
 
 /// Deletes two face regions (faces joined by edges; a single face is one) and bridges the boundary
 /// loops they leave, as above; vertices inside a region go with its faces, the rest keep their order.
+/// Where both regions' borders are loops of the mesh's boundary (two faces apart, an open shell's
+/// caps), as in Blender the borders are bridged first and the regions then deleted: the band is left.
 /// Refuses faces that make other than two regions, a region whose border is not one loop of edges
-/// between it and other faces, and regions that touch. Selection: both loops' vertices.
+/// (all between it and other faces, or all on the boundary for both), and regions that touch.
+/// Selection: both loops' vertices.
 Modelled bridge_faces(const CovarianceMesh& mesh, const std::vector<int>& faces);
 
 /// The editor's bridge: the selected vertices, split by the boundary edges between them into exactly

@@ -291,7 +291,8 @@ TEST(Bridge, FaceAndCoincidenceRefusals) {
   EXPECT_EQ(error_of([&] {
               bridge_faces(grid, {0, 10});
             }),
-            "the region of face 0 reaches the mesh's boundary at edge 0–1: it leaves no loop to bridge");
+            "the region of face 0 reaches the mesh's boundary at edge 0–1 and meets other faces too: their borders "
+            "cannot both be bridged");
   // Two quads on the same four points, facing apart: every face of a bridge would be flat.
   const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   std::vector<Vec3> twice = p;
@@ -303,6 +304,31 @@ TEST(Bridge, FaceAndCoincidenceRefusals) {
   EXPECT_EQ(error_of([] { OperationList::parse(R"([{"op":"bridge","faces":[0],"loops":[[0],[1]]}])", "ops.json"); }),
             "ops.json: ops[0] (bridge): give one of \"loops\" or \"faces\"");
   EXPECT_EQ(cube.n_faces(), 6u);
+}
+
+// Two faces apart (a cube's top and bottom alone): their borders are the mesh's boundary; as in
+// Blender they are bridged and the faces go, leaving an open tube.
+TEST(Bridge, TwoFacesApartLeaveTheBandBetweenThem) {
+  const MeshArrays cube = arrays_of(test::cube_mesh());
+  const CovarianceMesh caps = make_covariance_mesh(cube.means, cube.covariances, {cube.faces[0], cube.faces[1]});
+  const Modelled r = bridge_faces(caps, {0, 1});
+  EXPECT_EQ(r.mesh.n_vertices(), 8u);
+  EXPECT_EQ(r.mesh.n_faces(), 4u);
+  const SurfaceCounts counts = surface_counts(r.mesh.topology(), r.mesh.connectivity());
+  EXPECT_EQ(counts.parts, 1);
+  EXPECT_EQ(counts.boundary_loops, 2);
+  EXPECT_EQ(r.selection, range(0, 8));
+  EXPECT_EQ(r.summary, "deleted 2 faces, bridged two loops of 4 vertices: 4 faces added");
+  // The band faces out, as the cube's sides do.
+  for (size_t f = 0; f < r.mesh.n_faces(); ++f) {
+    Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
+    const std::span<const int> c = r.mesh.face(f);
+    for (size_t k = 0; k < c.size(); ++k) {
+      normal += r.mesh.mean(size_t(c[k])).cross(r.mesh.mean(size_t(c[(k + 1) % c.size()])));
+      centre += r.mesh.mean(size_t(c[k])) / double(c.size());
+    }
+    EXPECT_GT(normal.dot(centre), 0) << f;
+  }
 }
 
 }  // namespace

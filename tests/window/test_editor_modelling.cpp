@@ -419,3 +419,55 @@ TEST_F(EditorModelling, TypedInspectorValuesMirrorLikeDrags) {
 
 }  // namespace
 }  // namespace gps
+
+namespace gps {
+namespace {
+
+// Ctrl+E with two faces held in face mode deletes them and bridges the loops they leave, as Blender
+// does: the cube's top and bottom faces alone give an open tube of four faces (the faces were kept,
+// their vertices' loops bridged into a closed box).
+TEST_F(EditorModelling, BridgeOfTwoFacesReplacesThemWithATube) {
+  use_sample("cube");
+  const MeshArrays cube = arrays_of(original_);
+  const CovarianceMesh caps = make_covariance_mesh(cube.means, cube.covariances, {cube.faces[0], cube.faces[1]});
+  write_mesh(dir_.file("caps.ply"), caps);
+  const Viewport view = editor_view(caps);
+  const auto centre = [&](int f) {
+    Vec3 c = Vec3::Zero();
+    for (const int v : cube.faces[size_t(f)]) c += cube.means[size_t(v)] / 4.0;
+    return pixel_of(view, c);
+  };
+  Events e;
+  e.key("3").wait().click(centre(1)).wait().click(centre(0), "shift").wait().key("ctrl+e").wait(2);
+  const auto r = play(e, "--save " + dir_.file("tube.ply"), "caps.ply");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const CovarianceMesh tube = read_mesh(dir_.file("tube.ply"));
+  EXPECT_EQ(tube.n_vertices(), 8u);
+  EXPECT_EQ(tube.n_faces(), 4u) << r.output;
+  const SurfaceCounts counts = surface_counts(tube.topology(), tube.connectivity());
+  EXPECT_EQ(counts.boundary_loops, 2);
+  EXPECT_EQ(counts.genus, 0);
+}
+
+// Ctrl+R takes typed numbers as Blender's loop cut does: the cuts before the click, the slide after it.
+TEST_F(EditorModelling, LoopCutTakesTypedCutsAndSlide) {
+  use_sample("cube");
+  const Viewport view = editor_view(original_);
+  const glm::vec2 edge = pixel_of(view, 0.5 * (original_.mean(5) + original_.mean(6)));
+  Events e;
+  e.key("ctrl+r").move(edge).wait().text("3").wait().click(edge).wait().text("0.5").wait().key("enter").wait(3);
+  const CovarianceMesh cut = play_and_save(e, "cut.ply");
+  ASSERT_EQ(cut.n_vertices(), 8u + 3 * 4);
+  // The loops as a cut of 3 slid by half, one way or the other along the ring's first edge.
+  bool matched = false;
+  for (const double slide : {0.5, -0.5}) {
+    const CovarianceMesh expected = loop_cut(original_, 5, 6, 3, slide).mesh;
+    bool same = expected.n_vertices() == cut.n_vertices();
+    for (size_t v = 0; v < cut.n_vertices() && same; ++v) same = (expected.mean(v) - cut.mean(v)).norm() < 1e-9;
+    matched = matched || same;
+  }
+  EXPECT_TRUE(matched);
+}
+
+}  // namespace
+}  // namespace gps

@@ -203,7 +203,13 @@ void EditorApp::build_modelling_commands() {
   t.add({"Mesh",
          "Bridge edge loops",
          {key(GLFW_KEY_E, true)},
-         op("bridge", [this](const CovarianceMesh& m) { return bridge_selected(m, selection_.vertices()); }),
+         op("bridge",
+            [this](const CovarianceMesh& m) {
+              // Faces held (face mode): those faces go and the loops they leave are bridged, as in Blender;
+              // else the selected vertices' loops or chains.
+              return selection_.holds_faces() ? bridge_faces(m, selection_.faces(m))
+                                              : bridge_selected(m, selection_.vertices());
+            }),
          selected});
   t.add({"Mesh",
          "Subdivide (the selected faces; all when none)",

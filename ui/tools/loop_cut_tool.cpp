@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "core/support/error.h"
@@ -80,6 +81,7 @@ ToolResult LoopCutTool::cut(ToolContext& ctx) {
     return ToolResult::cancelled;
   }
   sliding_ = true;
+  typed_ = {};  // the cuts' number was typed; the slide's may be
   start_cursor_ = ctx.cursor;
   ctx.document.begin_edit();
   status_ = "loop cut: move to slide, click or Enter to confirm, Esc keeps it in the middle";
@@ -94,15 +96,20 @@ void LoopCutTool::slide(glm::vec2 cursor, ToolContext& ctx) {
   if (!pa || !pb) return;
   const glm::vec2 d = glm::vec2(*pb) - glm::vec2(*pa);
   if (glm::dot(d, d) < 1.0f) return;
-  const double slide =
-      std::clamp(2.0 * double(glm::dot(cursor - start_cursor_, d) / glm::dot(d, d)), -kMaxLoopSlide, kMaxLoopSlide);
+  slide_to(std::clamp(2.0 * double(glm::dot(cursor - start_cursor_, d) / glm::dot(d, d)), -kMaxLoopSlide,
+                      kMaxLoopSlide),
+           ctx);
+}
+
+void LoopCutTool::slide_to(double slide, ToolContext& ctx) {
+  const auto [a, b] = ring_.edges.front();
   try {
     const Modelled slid = loop_cut(*base_, a, b, cuts_, slide);
     if (!ctx.document.set_gaussians(slid.mesh)) return;
     slide_ = slide;
     char text[96];
-    std::snprintf(text, sizeof text, "loop cut: slide %.3f (click or Enter confirms, Esc keeps it in the middle)",
-                  slide);
+    std::snprintf(text, sizeof text, "loop cut: slide %.3f%s (click or Enter confirms, Esc keeps it in the middle)",
+                  slide, typed_.shown().c_str());
     status_ = text;
   } catch (const Error&) {
   }
@@ -143,16 +150,32 @@ ToolResult LoopCutTool::handle(const InputEvent& e, ToolContext& ctx) {
     return ToolResult::confirmed;
   }
   if (e.type == InputEvent::Type::move) {
-    if (sliding_)
+    if (sliding_ && typed_.empty())
       slide(e.position, ctx);
-    else
+    else if (!sliding_)
       hover(e.position, ctx);
+  } else if (typed_.handle(e)) {
+    typed(ctx);
   } else if (e.type == InputEvent::Type::scroll) {
     if (sliding_) return ToolResult::passed_on;
     cuts_ = std::clamp(cuts_ + wheel_.take(e.steps), 1, kMaxLoopCuts);
     status_ = "loop cut: " + std::to_string(cuts_) + " cuts (wheel), click to cut, Esc cancels";
   }
   return ToolResult::consumed;
+}
+
+void LoopCutTool::typed(ToolContext& ctx) {
+  const double value = typed_.value();
+  if (sliding_) {
+    if (std::isfinite(value))
+      slide_to(std::clamp(value, -kMaxLoopSlide, kMaxLoopSlide), ctx);
+    else if (typed_.empty())
+      slide(ctx.cursor, ctx);  // nothing typed: the mouse's slide again
+    return;
+  }
+  // A whole number of cuts; anything else waits for more typing.
+  if (std::isfinite(value) && value >= 1 && value == std::floor(value)) cuts_ = int(std::min<double>(value, kMaxLoopCuts));
+  status_ = "loop cut: " + std::to_string(cuts_) + " cuts" + typed_.shown() + ", click to cut, Esc cancels";
 }
 
 // The ring's cuts as lines across its edges, before the cut.

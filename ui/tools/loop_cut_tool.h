@@ -1,8 +1,8 @@
 #pragma once
 // The loop cut (Ctrl+R) as a modal tool: the edge ring under the cursor previewed with its cuts (the
-// wheel sets how many), a click cuts (core/modelling/loop_cut.h), then the new loops slide with the
-// mouse until a click or Enter; the cut and its slide are one undo step, Esc keeps the cut in the middle.
-// Once ended, F9 adjusts the number of cuts and the slide.
+// wheel or a typed number sets how many), a click cuts (core/modelling/loop_cut.h), then the new loops
+// slide with the mouse, or by a typed factor, until a click or Enter; the cut and its slide are one
+// undo step, Esc keeps the cut in the middle. Once ended, F9 adjusts the number of cuts and the slide.
 #include <array>
 #include <memory>
 #include <optional>
@@ -10,6 +10,7 @@
 
 #include "core/modelling/loop_cut.h"
 #include "ui/tools/modal_tool.h"
+#include "ui/tools/typed_number.h"
 #include "ui/input/wheel_notches.h"
 
 namespace gps {
@@ -29,6 +30,8 @@ private:
   void hover(glm::vec2 cursor, const ToolContext& ctx);
   ToolResult cut(ToolContext& ctx);
   void slide(glm::vec2 cursor, ToolContext& ctx);
+  void slide_to(double slide, ToolContext& ctx);
+  void typed(ToolContext& ctx);  // what is typed: the cuts before the click, the slide after
   void end(bool keep, ToolContext& ctx);
 
   EdgeRing ring_;  // under the cursor (empty: none)
@@ -38,6 +41,7 @@ private:
   std::shared_ptr<const CovarianceMesh> base_;  // the mesh before the cut
   std::string summary_;                         // the cut's
   WheelNotches wheel_;
+  TypedNumber typed_;
   glm::vec2 start_cursor_{0.0f};
 };
 
