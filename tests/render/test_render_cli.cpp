@@ -515,5 +515,18 @@ TEST(RenderCli, BadInputIsAUsageError) {
   }
 }
 
+// The CPU reference is sized before it is made, for all it holds (its parameters, limit normals and
+// triangles: about three times what subdivide alone does), so that the budget refuses it up front.
+TEST(RenderCli, TheReferenceIsRefusedUpFrontWhereItWouldPassTheBudget) {
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample sphere --size 600 -o " + dir.file("s.ply"))).exit_code, 0);
+  const std::string base = gpsurf("render " + dir.file("s.ply") + " -o " + dir.file("r.png") + " --size 64x48");
+  // Level 4 makes 153,600 faces: subdivide's own estimate is about 38 MB, the reference's about 120 MB.
+  const auto refused = run_command("GPSURF_MEMORY_LIMIT_BYTES=80000000 " + base + " --reference 4");
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("the reference at level 4 would make about"), std::string::npos) << refused.output;
+  EXPECT_EQ(run_command("GPSURF_MEMORY_LIMIT_BYTES=80000000 " + base + " --reference 3").exit_code, 0);
+}
+
 }  // namespace
 }  // namespace gps
