@@ -127,7 +127,7 @@ std::vector<int> transform_vertices_in_place(CovarianceMesh& mesh, const std::ve
 }
 
 Modelled transform_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices, const AffineMap& map) {
-  Modelled out{mesh, {}, "", {}};
+  Modelled out{mesh, {}, "", {}, {}};
   out.selection = transform_vertices_in_place(out.mesh, vertices, map, out.summary);
   return out;
 }

@@ -653,6 +653,8 @@ private:
       if (new_index[size_t(v)] >= 0) out.selection.push_back(new_index[size_t(v)]);
     const size_t removed = size_t(n_vertices_ - (a_.n_vertices() - int(out.selection.size())));
     out = modelled(mesh_, a_, std::move(out.selection));
+    // The band and the corners' polygons, appended after the faces the mesh had (as Blender selects them).
+    for (int f = n_faces_; f < a_.n_faces(); ++f) out.selected_faces.push_back(f);
     out.summary = summary + (o_.segments > 1 ? " (" + std::to_string(o_.segments) + " segments)" : "") + ": " +
                   count_of(out.selection.size(), "vertex", "vertices") + " in place of " + std::to_string(removed) +
                   ", " + count_of(size_t(a_.n_faces() - n_faces_), "face", "faces") + " added";

@@ -54,7 +54,7 @@ std::vector<int> set_crease_in_place(CovarianceMesh& mesh, const std::vector<std
 }
 
 Modelled set_crease(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, double sharpness) {
-  Modelled out{mesh, {}, "", {}};
+  Modelled out{mesh, {}, "", {}, {}};
   out.selection = set_crease_in_place(out.mesh, edges, sharpness, out.summary);
   return out;
 }
@@ -84,7 +84,7 @@ std::vector<int> set_corner_in_place(CovarianceMesh& mesh, const std::vector<int
 }
 
 Modelled set_corner(const CovarianceMesh& mesh, const std::vector<int>& vertices, double sharpness) {
-  Modelled out{mesh, {}, "", {}};
+  Modelled out{mesh, {}, "", {}, {}};
   out.selection = set_corner_in_place(out.mesh, vertices, sharpness, out.summary);
   return out;
 }

@@ -152,7 +152,7 @@ void check_plan_limits(const CovarianceMesh& before, const MeshArrays& a, const 
 }  // namespace
 
 Modelled modelled(const CovarianceMesh& before, const MeshArrays& a, std::vector<int> selection, std::string summary) {
-  Modelled out{build_mesh(a, before), std::move(selection), std::move(summary), vertex_origin(a)};
+  Modelled out{build_mesh(a, before), std::move(selection), std::move(summary), vertex_origin(a), {}};
   check_plan_limits(before, a, out.mesh, out.vertex_origin);
   return out;
 }

@@ -52,6 +52,9 @@ struct Modelled {
   /// Per vertex of `mesh`: its index before the operation, −1 for a new one (MeshArrays::origin);
   /// empty where not known.
   std::vector<int> vertex_origin;
+  /// The faces an editor in face mode goes on working with (ascending), where they are not simply
+  /// those whose corners are all in `selection` (a bevel's band, not the face it shrank); empty: those.
+  std::vector<int> selected_faces;
 };
 
 /// The outcome of an operation from its arrays, made from `before` (arrays_of(before), then changed):

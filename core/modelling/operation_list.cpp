@@ -595,7 +595,7 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
         continue;
       }
       if (step.in_place) {
-        if (!current) current.reset(new Modelled{mesh, {}, "", {}});  // the list's one copy of its input
+        if (!current) current.reset(new Modelled{mesh, {}, "", {}, {}});  // the list's one copy of its input
         current->selection = step.in_place(current->mesh, current->summary);
       } else {
         auto made = std::make_unique<Modelled>(step.run(mesh_now()));
@@ -608,7 +608,7 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
     }
     if (summaries) summaries->push_back(current->summary);
   }
-  if (!current) return {mesh, {}, "", {}};
+  if (!current) return {mesh, {}, "", {}, {}};
   return std::move(*current);
 }
 

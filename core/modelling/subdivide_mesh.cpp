@@ -74,7 +74,7 @@ Modelled subdivide_all(const CovarianceMesh& mesh) {
   options.scheme = scheme_for(mesh.topology(), PlanOptions{});
   options.levels = 1;
   SubdivisionResult r = subdivide(mesh, options);
-  Modelled out{std::move(r.mesh), {}, "", {}};
+  Modelled out{std::move(r.mesh), {}, "", {}, {}};
   out.summary = std::string("subdivided the whole mesh (") +
                 (options.scheme == Scheme::loop ? "Loop" : "Catmull-Clark") +
                 "): " + counted(out.mesh.n_vertices(), "vertex", "vertices") + ", " +

@@ -673,5 +673,12 @@ TEST(BevelOperationList, EdgesAndVerticesAsTheCallsGiveThem) {
             "ops.json: ops[0] (bevel): edge 0–6 is not in the mesh");
 }
 
+// The faces a face-mode editor goes on with: the band, not the face it shrank (as Blender selects).
+TEST(BevelEdges, TheBandIsTheFacesSelected) {
+  const CovarianceMesh cube = make_sample("cube");
+  const Modelled m = bevel_edges(cube, {{4, 5}, {5, 6}, {6, 7}, {7, 4}}, width(0.2));
+  EXPECT_EQ(m.selected_faces, (std::vector<int>{6, 7, 8, 9}));
+}
+
 }  // namespace
 }  // namespace gps

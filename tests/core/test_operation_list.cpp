@@ -210,7 +210,7 @@ TEST(OperationList, StepsInPlaceAreTheCallsTheyName) {
     return m;
   };
   // "set" has no call of its own: its Gaussians set by hand.
-  Modelled m{cube, {6, 7}, "set 2 Gaussians", {}};
+  Modelled m{cube, {6, 7}, "set 2 Gaussians", {}, {}};
   m.mesh.covariances[6] *= 0.5;
   m.mesh.covariances[7] *= 0.5;
   direct_summaries.push_back(m.summary);

@@ -23,7 +23,7 @@ TEST(TransformFlatten, TheEditorsScaleZeroIsTheOperationListsTransform) {
   const std::vector<int> top = {4, 5, 6, 7};
 
   EditorDocument document;
-  document.apply(Modelled{cube, {}, ""}, {});
+  document.apply(Modelled{cube, {}, "", {}, {}}, {});
   TransformMode scale(TransformKind::scale, document.mesh(), top, top[0], TransformPivot::median, Viewport{},
                       glm::vec2(0.0f));
   scale.constrain_axis(2, false);

@@ -104,7 +104,9 @@ private:
   // Throws gps::Error before anything changes. `replanner`: the plans of the document's topology,
   // which re-plans a result of the same topology and other sharpness around the changes only.
   void install(const Modelled& result, SurfaceReplanner* replanner = nullptr);
-  void topology_changed(const std::vector<int>& selection);
+  // The selection after a change of topology: `selection`'s vertices; in face mode `faces` where given,
+  // else the faces whose corners they all are.
+  void topology_changed(const std::vector<int>& selection, const std::vector<int>& faces = {});
   void rebuild_after_undo(const SelectionRecord& selection);
   void operation_note(const std::string& message, bool error);
   // The Inspector's crease or corner field: the selection's sharpness set as one undo step.

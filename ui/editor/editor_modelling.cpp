@@ -331,13 +331,16 @@ void EditorApp::install(const Modelled& result, SurfaceReplanner* replanner) {
   shown_->clear_preview();
   document_.apply(result, selection_.record());
   last_summary_ = result.summary;
-  topology_changed(result.selection);
+  topology_changed(result.selection, result.selected_faces);
 }
 
-void EditorApp::topology_changed(const std::vector<int>& selection) {
+void EditorApp::topology_changed(const std::vector<int>& selection, const std::vector<int>& faces) {
   view_.triangle_mesh = scheme_for(document_.mesh().topology(), PlanOptions{}) == Scheme::loop;
   selection_.select(selection, false);
-  if (select_mode_ == SelectMode::face) selection_.hold_faces(document_.mesh());  // the result's faces
+  if (select_mode_ == SelectMode::face && !faces.empty())
+    selection_.select_faces(document_.mesh(), faces, false);  // the faces the operation names
+  else if (select_mode_ == SelectMode::face)
+    selection_.hold_faces(document_.mesh());  // the result's faces
   if (!hidden_.elements().fits(document_.mesh()))
     hidden_.elements().clear();  // the indices are another mesh's: all shown
   refresh_hidden();
