@@ -116,6 +116,22 @@ TEST_F(EditorToolsMirror, MirrorApplyWritesCoresMirror) {
   EXPECT_TRUE(test::same_mesh(undone, half));
 }
 
+// After the apply the selection is what it was with its images, as Blender mirrors its selection: G Y
+// 0.5 then moves the far corner and its image (it moved the four copies mirror() selects).
+TEST_F(EditorToolsMirror, MirrorApplyKeepsTheSelectionWithItsImages) {
+  Events e;
+  select(e, corner_).key("ctrl+alt+m").wait().key("ctrl+alt+shift+m").wait(3);
+  e.key("g").wait().key("y").wait().text("0.5").wait().key("enter").wait(3);
+  const CovarianceMesh saved = play(e, "mirror_applied_selection.png");
+  const CovarianceMesh whole = mirror(original_, 0, Vec3::Zero(), true).mesh;
+  const int image = mirror_images(original_, 0, Vec3::Zero(), true)[size_t(corner_)];
+  ASSERT_EQ(saved.n_vertices(), whole.n_vertices());
+  for (size_t v = 0; v < saved.n_vertices(); ++v) {
+    const bool moved = int(v) == corner_ || int(v) == image;
+    EXPECT_EQ(saved.mean(v), whole.mean(v) + (moved ? Vec3(0, 0.5, 0) : Vec3::Zero())) << v;
+  }
+}
+
 // Any operation shows on both sides: with the modifier on, the far face (x = 1) extruded by E 0.5 in
 // face mode and the modifier applied gives a closed, outward part symmetric about x = 0 reaching
 // x = ±1.5: the half's 12 vertices and 9 faces, mirrored with its 4 seam vertices merged.

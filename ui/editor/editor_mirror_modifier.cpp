@@ -6,6 +6,8 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "core/modelling/mirror.h"
 #include "core/support/error.h"
 #include "ui/editor/editor_app.h"
@@ -102,8 +104,20 @@ void EditorApp::apply_mirror() {
   MirrorSettings off = before;
   off.enabled = false;  // the result is shown as it is
   shown_->set_mirror_settings(off);
-  if (!run_operation("apply mirror modifier",
-                     [axis = before.axis](const CovarianceMesh& m) { return mirror(m, axis, Vec3::Zero(), true); })) {
+  // The selection stays, with its images (as Blender mirrors its selection into the new half), not the
+  // copies mirror() selects.
+  const std::vector<int> selected = selection_.vertices();
+  const auto apply = [axis = before.axis, selected](const CovarianceMesh& m) {
+    Modelled r = mirror(m, axis, Vec3::Zero(), true);
+    const std::vector<int> images = mirror_images(m, axis, Vec3::Zero(), true);
+    r.selection = selected;
+    for (const int v : selected)
+      if (v >= 0 && size_t(v) < images.size()) r.selection.push_back(images[size_t(v)]);
+    std::sort(r.selection.begin(), r.selection.end());
+    r.selection.erase(std::unique(r.selection.begin(), r.selection.end()), r.selection.end());
+    return r;
+  };
+  if (!run_operation("apply mirror modifier", apply)) {
     shown_->set_mirror_settings(before);
     return;
   }
