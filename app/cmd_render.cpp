@@ -37,6 +37,30 @@ namespace gps {
 
 namespace {
 
+// The largest connected part's bounding-box diagonal over the whole mesh's: framed on the whole, a
+// part is that share of the image across.
+double largest_part_share(const CovarianceMesh& mesh) {
+  std::vector<int> parent(mesh.n_vertices());
+  for (size_t v = 0; v < parent.size(); ++v) parent[v] = int(v);
+  const auto root = [&](int v) {
+    while (parent[size_t(v)] != v) v = parent[size_t(v)] = parent[size_t(parent[size_t(v)])];
+    return v;
+  };
+  for (size_t f = 0; f < mesh.n_faces(); ++f)
+    for (const int v : mesh.face(f)) parent[size_t(root(v))] = root(mesh.face(f)[0]);
+  std::vector<Vec3> lo(mesh.n_vertices(), Vec3::Constant(HUGE_VAL)), hi(mesh.n_vertices(), Vec3::Constant(-HUGE_VAL));
+  for (size_t v = 0; v < mesh.n_vertices(); ++v) {
+    const int r = root(int(v));
+    lo[size_t(r)] = lo[size_t(r)].cwiseMin(mesh.mean(v));
+    hi[size_t(r)] = hi[size_t(r)].cwiseMax(mesh.mean(v));
+  }
+  double largest = 0;
+  for (size_t v = 0; v < mesh.n_vertices(); ++v)
+    if (root(int(v)) == int(v)) largest = std::max(largest, (hi[v] - lo[v]).norm());
+  const double whole = bounding_box_diagonal(mesh);
+  return whole > 0 ? largest / whole : 1.0;
+}
+
 struct RenderArgs {
   std::string input, output, size = "800x600", matcap = "clay", mode = "matcap", camera, background = "1,1,1", up = "y";
   std::vector<std::string> aovs;
@@ -132,10 +156,21 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   // From a distance given, an image without it shows that camera's view of nothing: refused as well,
   // with the mesh's size to place the camera by.
   if (count_covered_pixels(normal) == 0) {
-    if (yaw_pitch_distance.size() < 3)
+    if (yaw_pitch_distance.size() < 3) {
+      // Parts far apart, each under a pixel of the image framed on them all, cover no pixel's centre.
+      const double across = largest_part_share(mesh) * double(std::min(width, height));
+      if (across < 2.0) {
+        std::ostringstream pixels;
+        pixels.precision(2);
+        pixels << across;
+        throw Error(a.input + ": the surface covers no pixel of the image framed on it: its parts lie so far " +
+                    "apart that the largest is " + pixels.str() + " pixels across (render the parts apart, or " +
+                    "a larger --size); nothing written");
+      }
       throw Error(a.input +
                   ": the surface covers no pixel of the image framed on it (Gaussians too thin for the "
                   "GPU's evaluation?); nothing written");
+    }
     std::ostringstream diagonal;
     diagonal << bounding_box_diagonal(mesh);
     throw Error(a.input + ": the surface covers no pixel of the image from the camera " + quoted_token(a.camera) +

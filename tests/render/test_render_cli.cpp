@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "core/io/mesh_io.h"
+#include "core/modelling/mesh_arrays.h"
 #include "core/modelling/samples.h"
 #include "render/image/image_io.h"
 #include "tests/support/run_command.h"
@@ -526,6 +527,33 @@ TEST(RenderCli, TheReferenceIsRefusedUpFrontWhereItWouldPassTheBudget) {
   EXPECT_EQ(refused.exit_code, 2) << refused.output;
   EXPECT_NE(refused.output.find("the reference at level 4 would make about"), std::string::npos) << refused.output;
   EXPECT_EQ(run_command("GPSURF_MEMORY_LIMIT_BYTES=80000000 " + base + " --reference 3").exit_code, 0);
+}
+
+// Parts so far apart that, framed together, each is under a pixel: the refusal says so (it blamed thin
+// Gaussians).
+TEST(RenderCli, PartsEachUnderAPixelAreNamedAsSuch) {
+  const MeshArrays cube = arrays_of(make_sample("cube"));
+  std::vector<Vec3> means;
+  std::vector<Mat3> covariances;
+  std::vector<std::vector<int>> faces;
+  for (const auto& [scale, shift] : std::vector<std::pair<double, Vec3>>{
+           {1.0, Vec3::Zero()}, {1e-3, Vec3(-1e5, 0, 0)}, {1e-5, Vec3(3, 0, 0)}}) {
+    const int first = int(means.size());
+    for (size_t v = 0; v < cube.means.size(); ++v) {
+      means.push_back(scale * cube.means[v] + shift);
+      covariances.push_back(scale * scale * cube.covariances[v]);
+    }
+    for (std::vector<int> face : cube.faces) {
+      for (int& c : face) c += first;
+      faces.push_back(face);
+    }
+  }
+  test::TempDir dir;
+  write_mesh(dir.file("apart.ply"), make_covariance_mesh(means, covariances, faces));
+  const auto r = run_command(gpsurf("render " + dir.file("apart.ply") + " -o " + dir.file("a.png") + " --size 320x240"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("its parts lie so far apart that the largest is 0.0083 pixels across"), std::string::npos)
+      << r.output;
 }
 
 }  // namespace
