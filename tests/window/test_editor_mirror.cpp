@@ -157,6 +157,26 @@ TEST_F(EditorToolsMirror, MirrorExtrudeShowsOnBothSides) {
   }
 }
 
+// A face on the seam extruded with clipping on: its side along the plane is not made (as Blender's
+// extrude leaves it out), so the seam stays open and the mirror goes on showing: applied, a closed part.
+TEST_F(EditorToolsMirror, MirrorExtrudeOfAFaceOnTheSeamKeepsTheSeamOpen) {
+  std::vector<int> top;
+  for (size_t v = 0; v < original_.n_vertices(); ++v)
+    if (original_.mean(v).y() == 1) top.push_back(int(v));
+  ASSERT_EQ(top.size(), 4u);
+  Events e;
+  e.key("3").wait().click(pixel_at(top)).wait().key("ctrl+alt+m").wait();
+  e.key("e").wait().text("0.5").wait().key("enter").wait().key("home").wait(3);
+  const CovarianceMesh half = play(e, "mirror_extruded_on_the_seam.png");
+  EXPECT_EQ(half.n_vertices(), 12u);
+  EXPECT_EQ(half.n_faces(), 8u);  // the half's 5, the cap and 2 sides of the 3 it would have had
+  EXPECT_NE(output_.find("1 face on the mirror plane left out (the seam stays open)"), std::string::npos) << output_;
+  EXPECT_EQ(output_.find("lies on the mirror plane"), std::string::npos) << output_;
+  std::filesystem::remove(dir_.file("gpsurf/settings.json"));
+  e.key("ctrl+alt+shift+m").wait(3);
+  test::expect_closed_outward(play(e), 18, 16);
+}
+
 // Clipping: G X 0.3 on a seam vertex and the far corner moves the corner by 0.3 and keeps the seam
 // vertex on the plane (x = 0 exactly; its y and z as they were). The modifier is kept for the file:
 // opened again it is on (the same move clipped) until Ctrl+Alt+M turns it off, and the seam vertex

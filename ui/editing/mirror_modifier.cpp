@@ -1,5 +1,9 @@
 #include "ui/editing/mirror_modifier.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "core/modelling/delete_elements.h"
 #include "core/modelling/mirror.h"
 #include "core/support/error.h"
 
@@ -24,6 +28,35 @@ const CovarianceMesh& MirrorModifier::shown(const CovarianceMesh& half, std::str
 std::optional<PlaneClip> MirrorModifier::clip(const CovarianceMesh& half) const {
   if (!settings.enabled || !settings.clipping) return std::nullopt;
   return PlaneClip{settings.axis, mirror_merge_distance(half)};
+}
+
+Modelled MirrorModifier::seam_kept_open(const CovarianceMesh& before, Modelled result) const {
+  const std::optional<PlaneClip> plane = clip(before);
+  if (!plane) return result;
+  std::vector<int> on_plane;
+  for (size_t f = 0; f < result.mesh.n_faces(); ++f) {
+    const std::span<const int> corners = result.mesh.face(f);
+    if (std::all_of(corners.begin(), corners.end(), [&](int v) {
+          return std::abs(result.mesh.mean(size_t(v))[plane->axis]) <= plane->tolerance;
+        }))
+      on_plane.push_back(int(f));
+  }
+  if (on_plane.empty()) return result;
+  Modelled out = delete_faces(result.mesh, on_plane);
+  // The selection and origins followed through both steps.
+  std::vector<int> selection, origin;
+  const bool known = out.vertex_origin.size() == out.mesh.n_vertices() &&
+                     result.vertex_origin.size() == result.mesh.n_vertices();
+  for (size_t w = 0; w < out.mesh.n_vertices(); ++w) {
+    const int made = out.vertex_origin.empty() ? int(w) : out.vertex_origin[w];
+    if (std::binary_search(result.selection.begin(), result.selection.end(), made)) selection.push_back(int(w));
+    if (known) origin.push_back(made < 0 ? -1 : result.vertex_origin[size_t(made)]);
+  }
+  out.selection = std::move(selection);
+  out.vertex_origin = std::move(origin);
+  out.summary = result.summary + "; " + std::to_string(on_plane.size()) +
+                (on_plane.size() == 1 ? " face" : " faces") + " on the mirror plane left out (the seam stays open)";
+  return out;
 }
 
 std::optional<std::vector<int>> MirrorModifier::update(const CovarianceMesh& half, const std::vector<int>& changed,

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "core/modelling/mesh_arrays.h"
 #include "ui/document/editor_document.h"
 
 namespace gps {
@@ -40,6 +41,11 @@ public:
   /// The clipping the document's edits of `half` keep (none where the modifier or clipping is off):
   /// the vertices within core's merge distance of the plane stay on it.
   std::optional<PlaneClip> clip(const CovarianceMesh& half) const;
+  /// With clipping, an operation's `result` (made from `before`) without the faces it laid on the plane
+  /// and the vertices only they used: the side of an extruded face's seam edge would close the seam the
+  /// mirror merges along, and Blender's extrude leaves it open. As it is where none lies there (or the
+  /// modifier or clipping is off). Throws as delete_faces does, before anything changes.
+  Modelled seam_kept_open(const CovarianceMesh& before, Modelled result) const;
   /// The shown mirror (mirroring() only).
   const CovarianceMesh& mirrored() const { return *mirrored_; }
 

@@ -27,6 +27,7 @@ ToolContext EditorApp::tool_context() {
   c.install = [this](const Modelled& result, SurfaceReplanner* replanner) { install(result, replanner); };
   c.operate = [this](const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
                      SurfaceReplanner* replanner) { return operate(name, run, replanner); };
+  c.last_summary = [this] { return last_summary_; };
   c.show_preview = [this](std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
                           std::optional<ReplannedTables> surface) {
     show_preview(std::move(mesh), selected, std::move(surface));

@@ -321,7 +321,9 @@ bool EditorApp::operate(const std::string& name, const std::function<Modelled(co
   return true;
 }
 
-void EditorApp::install(const Modelled& result, SurfaceReplanner* replanner) {
+void EditorApp::install(const Modelled& made, SurfaceReplanner* replanner) {
+  // With the mirror modifier clipping, what an operation lays on the plane is left out, as in Blender.
+  const Modelled result = shown_->mirror().seam_kept_open(document_.mesh(), made);
   std::optional<ReplannedTables> surface;
   if (replanner) {  // first: it throws before anything changes
     replanner->set_sharpness(result.mesh.sharpness);

@@ -72,6 +72,9 @@ struct ToolContext {
   std::function<bool(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
                      SurfaceReplanner* replanner)>
       operate;
+  /// The summary of the operation installed last, as installed (the mirror modifier may have left
+  /// faces out of it).
+  std::function<std::string()> last_summary;
   /// Shows `mesh` in place of the document's (its surface, cage and creases), `selected` drawn as the
   /// selection; `surface`: its plans (else planned anew). Throws gps::Error where it cannot be planned.
   std::function<void(std::shared_ptr<const CovarianceMesh> mesh, const std::vector<int>& selected,
