@@ -173,6 +173,19 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
     }
     std::ostringstream diagonal;
     diagonal << bounding_box_diagonal(mesh);
+    // A camera close to the mesh or inside it sees only up to 100 times its distance (the far plane,
+    // view/camera.h): the mesh beyond that is cut away.
+    const Vec3 eye(camera.eye_double().x, camera.eye_double().y, camera.eye_double().z);
+    double farthest = 0;
+    for (size_t v = 0; v < mesh.n_vertices(); ++v) farthest = std::max(farthest, (mesh.mean(v) - eye).norm());
+    if (farthest > 100.0 * double(camera.distance)) {
+      std::ostringstream reach;
+      reach << 100.0 * double(camera.distance);
+      throw Error(a.input + ": the surface covers no pixel of the image from the camera " + quoted_token(a.camera) +
+                  ": so near the mesh (whose bounding box has a diagonal of " + diagonal.str() +
+                  ") the view reaches only " + reach.str() + " beyond the camera, 100 times its distance; " +
+                  "give a larger distance; nothing written");
+    }
     throw Error(a.input + ": the surface covers no pixel of the image from the camera " + quoted_token(a.camera) +
                 " (its distance is in the mesh's units, whose bounding box has a diagonal of " + diagonal.str() +
                 "; leave the distance out to frame the surface); nothing written");

@@ -556,5 +556,19 @@ TEST(RenderCli, PartsEachUnderAPixelAreNamedAsSuch) {
       << r.output;
 }
 
+// A camera given so near the mesh that the view ends before the surface (inside the pawn): said so,
+// with how far the view reaches (it said only that the surface covered no pixel).
+TEST(RenderCli, ACameraSoNearThatTheViewEndsShortOfTheSurfaceSaysSo) {
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample pawn -o " + dir.file("p.ply"))).exit_code, 0);
+  const auto r = run_command(gpsurf("render " + dir.file("p.ply") + " -o " + dir.file("q.png") +
+                                    " --size 64x48 --camera 30,20,0.0001"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("the view reaches only 0.01 beyond the camera, 100 times its distance; give a larger "
+                          "distance"),
+            std::string::npos)
+      << r.output;
+}
+
 }  // namespace
 }  // namespace gps
