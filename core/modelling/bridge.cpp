@@ -211,17 +211,7 @@ namespace {
 Modelled bridged_then_deleted(const CovarianceMesh& mesh, const std::array<std::vector<int>, 2>& border,
                               const std::vector<int>& chosen) {
   const Modelled bridged = bridge(mesh, border[0], border[1]);
-  Modelled out = delete_faces(bridged.mesh, chosen);
-  std::vector<int> selection, origin;
-  const bool known = out.vertex_origin.size() == out.mesh.n_vertices() &&
-                     bridged.vertex_origin.size() == bridged.mesh.n_vertices();
-  for (size_t w = 0; w < out.mesh.n_vertices(); ++w) {
-    const int before = out.vertex_origin.empty() ? int(w) : out.vertex_origin[w];
-    if (std::binary_search(bridged.selection.begin(), bridged.selection.end(), before)) selection.push_back(int(w));
-    if (known) origin.push_back(before < 0 ? -1 : bridged.vertex_origin[size_t(before)]);
-  }
-  out.selection = std::move(selection);
-  out.vertex_origin = std::move(origin);
+  Modelled out = with_faces_deleted(bridged, chosen);
   out.summary = "deleted " + count_of(chosen.size(), "face", "faces") + ", " + bridged.summary;
   return out;
 }

@@ -16,6 +16,10 @@ namespace gps {
 /// be non-manifold (two fans of faces left touching at one vertex, named by its input index) or empty.
 Modelled delete_faces(const CovarianceMesh& mesh, const std::vector<int>& faces);
 
+/// An operation's `result` with its `faces` then deleted as delete_faces does, its selection and vertex
+/// origins (relative to the mesh before the operation) followed through both steps; the summary kept.
+Modelled with_faces_deleted(const Modelled& result, const std::vector<int>& faces);
+
 /// Removes the vertices and every face that uses one of them (then the vertices left unused).
 Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices);
 

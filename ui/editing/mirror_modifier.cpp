@@ -42,18 +42,7 @@ Modelled MirrorModifier::seam_kept_open(const CovarianceMesh& before, Modelled r
       on_plane.push_back(int(f));
   }
   if (on_plane.empty()) return result;
-  Modelled out = delete_faces(result.mesh, on_plane);
-  // The selection and origins followed through both steps.
-  std::vector<int> selection, origin;
-  const bool known = out.vertex_origin.size() == out.mesh.n_vertices() &&
-                     result.vertex_origin.size() == result.mesh.n_vertices();
-  for (size_t w = 0; w < out.mesh.n_vertices(); ++w) {
-    const int made = out.vertex_origin.empty() ? int(w) : out.vertex_origin[w];
-    if (std::binary_search(result.selection.begin(), result.selection.end(), made)) selection.push_back(int(w));
-    if (known) origin.push_back(made < 0 ? -1 : result.vertex_origin[size_t(made)]);
-  }
-  out.selection = std::move(selection);
-  out.vertex_origin = std::move(origin);
+  Modelled out = with_faces_deleted(result, on_plane);
   out.summary = result.summary + "; " + std::to_string(on_plane.size()) +
                 (on_plane.size() == 1 ? " face" : " faces") + " on the mirror plane left out (the seam stays open)";
   return out;
