@@ -9,6 +9,7 @@
 
 #include "core/io/mesh_repair.h"
 #include "core/support/error.h"
+#include "core/modelling/bevel_fan.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/face_pieces.h"
 #include "core/modelling/merge_vertices.h"
@@ -19,38 +20,6 @@ namespace gps {
 namespace {
 
 std::string vertex_name(int v) { return "vertex " + std::to_string(v); }
-
-/// The faces around a vertex v in order: face i has the corner around[i] → v → around[i + 1] (at
-/// corners[i]), and edge i, v–around[i], lies between faces i − 1 and i. Around a boundary vertex the
-/// last "face" is the gap outside the boundary (face −1), so that edges 0 and gap() are its two
-/// boundary edges.
-struct Fan {
-  int v = -1;
-  std::vector<int> around, faces, corners;
-  int size() const { return int(faces.size()); }
-  int at(int i) const { return ((i % size()) + size()) % size(); }
-  int neighbour(int i) const { return around[size_t(at(i))]; }
-  bool open() const { return faces.back() < 0; }
-  int gap() const { return size() - 1; }
-  bool real(int i) const { return faces[size_t(at(i))] >= 0; }
-  bool on_boundary(int edge) const { return open() && (at(edge) == 0 || at(edge) == gap()); }
-};
-
-/// Whether the fan faces from bevelled edge s to the next one, t (m of them), take in the gap outside
-/// a boundary, and how many real faces lie between s and the gap (`after_s`) and between it and t.
-struct GapInRange {
-  bool in = false;
-  int after_s = 0, before_t = 0;
-};
-
-GapInRange gap_in_range(const Fan& fan, int s, int m) {
-  GapInRange g;
-  if (!fan.open() || fan.at(fan.gap() - s) >= m) return g;
-  g.in = true;
-  g.after_s = fan.at(fan.gap() - s);
-  g.before_t = m - g.after_s - 1;
-  return g;
-}
 
 /// A new vertex before the width is known: its displacement from `v` per unit of width, moving along
 /// the edge to `along`, or else lying in the face whose corner at v is `in` → v → `out`.

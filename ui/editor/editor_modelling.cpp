@@ -205,8 +205,7 @@ void EditorApp::build_modelling_commands() {
          {key(GLFW_KEY_E, true)},
          op("bridge",
             [this](const CovarianceMesh& m) {
-              // Faces held (face mode): those faces go and the loops they leave are bridged, as in Blender;
-              // else the selected vertices' loops or chains.
+              // Faces held: they go and the loops they leave are bridged (Blender's); else the vertices' loops.
               return selection_.holds_faces() ? bridge_faces(m, selection_.faces(m))
                                               : bridge_selected(m, selection_.vertices());
             }),
