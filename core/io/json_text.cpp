@@ -98,7 +98,7 @@ private:
   struct Level {
     bool array;
     size_t started;   // elements begun, for an array
-    std::string key;                      // the last key, for an object
+    std::string key;  // the last key, for an object
     std::unordered_set<std::string> keys;  // every key so far, for an object
   };
   // A value begins: counted in its array; a streamed array's element gets a DOM of its own. False

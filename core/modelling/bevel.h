@@ -50,8 +50,8 @@ constexpr int kMaxBevelSegments = 100;
 /// otherwise one on each edge beside a bevelled edge, the faces beyond keeping v where they have edges
 /// of their own to it, but at the end of a single bevelled edge among four or more, where v goes and
 /// each of its other edges gets a vertex at the width along it (Blender's terminal edge: on a flat grid
-/// the polygon closing the end has area). Each bevelled edge becomes a band of `segments` quads across its profile; at a
-/// vertex with three or more bevelled edges, or with faces left between them, a polygon closes the
+/// the polygon closing the end has area). Each bevelled edge becomes a band of `segments` quads across
+/// its profile; at a vertex with three or more bevelled edges, or with faces left between them, a polygon closes the
 /// corner (a valence-3 vertex at the end of one bevelled edge takes the profile into its third face
 /// instead, as Blender does: one edge of a cube with 1 segment gives 10 vertices and 7 faces).
 /// Open shells bevel as in Blender: an edge on a boundary gets its band in its one face, between the

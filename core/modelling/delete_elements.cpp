@@ -251,8 +251,8 @@ Modelled delete_faces(const CovarianceMesh& mesh, const std::vector<int>& faces)
 Modelled with_faces_deleted(const Modelled& result, const std::vector<int>& faces) {
   Modelled out = delete_faces(result.mesh, faces);
   std::vector<int> selection, origin;
-  const bool known = out.vertex_origin.size() == out.mesh.n_vertices() &&
-                     result.vertex_origin.size() == result.mesh.n_vertices();
+  const bool known =
+      out.vertex_origin.size() == out.mesh.n_vertices() && result.vertex_origin.size() == result.mesh.n_vertices();
   for (size_t w = 0; w < out.mesh.n_vertices(); ++w) {
     const int made = out.vertex_origin.empty() ? int(w) : out.vertex_origin[w];
     if (std::binary_search(result.selection.begin(), result.selection.end(), made)) selection.push_back(int(w));

@@ -45,8 +45,8 @@ Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& v
 /// Dissolves interior edges: the two faces on each merge into one polygon (a chain of edges merges
 /// several faces; the merged polygon keeps the index of the first of them and starts at its first
 /// corner), and an end left between two edges in a line joins them, as Blender's Dissolve Edges does
-/// (one edge of a cube gives a prism of 6 vertices; a loop cut's edges give back the faces it cut). Refuses boundary edges, an edge whose removal would cut a hole into a face, and a result
-/// with a vertex repeated in a face.
+/// (one edge of a cube gives a prism of 6 vertices; a loop cut's edges give back the faces it cut). Refuses boundary
+/// edges, an edge whose removal would cut a hole into a face, and a result with a vertex repeated in a face.
 Modelled dissolve_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges);
 
 }  // namespace gps

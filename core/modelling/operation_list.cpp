@@ -343,7 +343,8 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
   if (op == "split_edge") {
     const auto e = f.edge("edge");
     const double t = f.number("t", 0.5);
-    if (!(t > 0 && t < 1)) throw usage_error("\"t\" must be between 0 and 1 (not either), got " + json_shown(f.json("t")));
+    if (!(t > 0 && t < 1))
+      throw usage_error("\"t\" must be between 0 and 1 (not either), got " + json_shown(f.json("t")));
     return [=](const CovarianceMesh& m) { return split_edge(m, e[0], e[1], t); };
   }
   if (op == "slide") {

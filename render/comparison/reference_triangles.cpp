@@ -71,7 +71,9 @@ TriangleMesh reference_in_patch_triangles(SurfaceRenderer& renderer, const Covar
   int patches = 0;
   for (const PatchParam& p : r.corner_params) patches = std::max(patches, p.patch + 1);
   std::vector<int> vertex_at(size_t(patches) * size_t(grid) * size_t(grid), -1);
-  const auto slot = [&](int patch, long i, long j) { return (size_t(patch) * size_t(grid) + size_t(i)) * size_t(grid) + size_t(j); };
+  const auto slot = [&](int patch, long i, long j) {
+    return (size_t(patch) * size_t(grid) + size_t(i)) * size_t(grid) + size_t(j);
+  };
   for (size_t c = 0; c < r.corner_params.size(); ++c) {
     const PatchParam& p = r.corner_params[c];
     const long i = std::lround(p.u * steps), j = std::lround(p.v * steps);

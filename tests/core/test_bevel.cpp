@@ -405,8 +405,7 @@ TEST(BevelAtBoundaries, AnInnerEdgeEndingOnTheBoundarySplitsItsEndAlongTheBounda
   EXPECT_NEAR(area_facing_up(m.mesh), 9, 1e-12);
   EXPECT_EQ(vertex_at(m.mesh, Vec3(1, 0, 0)), -1);
   EXPECT_EQ(vertex_at(m.mesh, Vec3(1, 1, 0)), -1);
-  for (const Vec3& p :
-       {Vec3(0.75, 0, 0), Vec3(1.25, 0, 0), Vec3(0.75, 1, 0), Vec3(1.25, 1, 0), Vec3(1, 1.25, 0)})
+  for (const Vec3& p : {Vec3(0.75, 0, 0), Vec3(1.25, 0, 0), Vec3(0.75, 1, 0), Vec3(1.25, 1, 0), Vec3(1, 1.25, 0)})
     EXPECT_GE(vertex_at(m.mesh, p), 14) << p.transpose();
 }
 

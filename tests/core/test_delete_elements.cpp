@@ -149,8 +149,7 @@ TEST(DissolveEdges, TwoFacesMergeIntoOneWithCornersInOrder) {
   EXPECT_TRUE(s.boundary_loops.empty());
   EXPECT_EQ(m.summary, "dissolved 1 edge: 1 face, 2 vertices removed");
   const MeshArrays a = arrays_of(m.mesh);  // vertices 6 and 7 are now 4 and 5
-  EXPECT_EQ(a.faces,
-            (std::vector<std::vector<int>>{{0, 3, 2, 1}, {0, 1, 4, 5}, {2, 3, 5, 4}, {1, 2, 4}, {0, 5, 3}}));
+  EXPECT_EQ(a.faces, (std::vector<std::vector<int>>{{0, 3, 2, 1}, {0, 1, 4, 5}, {2, 3, 5, 4}, {1, 2, 4}, {0, 5, 3}}));
 }
 
 TEST(DissolveEdges, AChainOfEdgesMergesARowOfFaces) {
@@ -266,9 +265,9 @@ TEST(DissolveVertices, ALoopCutsVerticesGiveBackTheFacesItCut) {
   EXPECT_EQ(looped_shape_of(one.mesh).faces, 7);
   EXPECT_EQ(looped_shape_of(one.mesh).vertices, 11);
   // A vertex between two edges in a line, alone: its two faces keep apart, without it.
-  const CovarianceMesh two = make_covariance_mesh(
-      {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {1, 0.5, 0}},
-      std::vector<Mat3>(7, 0.01 * Mat3::Identity()), {{0, 1, 6, 4, 3}, {1, 2, 5, 4, 6}});
+  const CovarianceMesh two =
+      make_covariance_mesh({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {1, 0.5, 0}},
+                           std::vector<Mat3>(7, 0.01 * Mat3::Identity()), {{0, 1, 6, 4, 3}, {1, 2, 5, 4, 6}});
   const Modelled line = dissolve_vertices(two, {6});
   EXPECT_EQ(arrays_of(line.mesh).faces, (std::vector<std::vector<int>>{{0, 1, 4, 3}, {1, 2, 5, 4}}));
 }

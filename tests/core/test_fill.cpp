@@ -93,7 +93,9 @@ TEST(Fill, RefusalsNameTheElement) {
   EXPECT_EQ(error_of([&] { fill_selected(holed, {4, 5}); }), "select at least 3 boundary vertices (2 selected)");
   const CovarianceMesh grid = test::grid_mesh(3, 3);  // 12 boundary vertices
   // Three vertices along one side: a face of no area.
-  EXPECT_EQ(error_of([&] { fill(test::grid_mesh(3, 3, 0.1, true), {0, 1, 2}); }),
+  EXPECT_EQ(error_of([&] {
+              fill(test::grid_mesh(3, 3, 0.1, true), {0, 1, 2});
+            }),
             "the vertices lie in a line: the face would have no area");
   EXPECT_EQ(
       error_of([&] {

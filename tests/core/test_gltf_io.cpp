@@ -497,8 +497,8 @@ HandMade quantized_cube(int component_type, bool normalized, T minus_one, T one)
   }
   const size_t offset = h.bin.size();
   h.bin += positions;
-  h.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", positions.size()},
-                                {"byteStride", stride}});
+  h.j["bufferViews"].push_back(
+      {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", positions.size()}, {"byteStride", stride}});
   json& accessor = h.j["accessors"][0];
   accessor["bufferView"] = h.j["bufferViews"].size() - 1;
   accessor["componentType"] = component_type;
@@ -515,7 +515,8 @@ TEST(GltfIo, QuantizedPositionsAreReadAsTheirNodeScalesThem) {
   // Normalised shorts: ±32767 is ±1. Unsigned bytes 0 and 2, placed by the node's translation by −1. Signed
   // bytes ±1 as they are.
   std::vector<HandMade> cubes = {quantized_cube<int16_t>(5122, true, -32767, 32767),
-                                 quantized_cube<uint8_t>(5121, false, 0, 2), quantized_cube<int8_t>(5120, false, -1, 1)};
+                                 quantized_cube<uint8_t>(5121, false, 0, 2),
+                                 quantized_cube<int8_t>(5120, false, -1, 1)};
   cubes[1].j["nodes"][0]["translation"] = {-1, -1, -1};
   for (size_t i = 0; i < cubes.size(); ++i) {
     const std::string name = "q" + std::to_string(i) + ".glb";
@@ -580,8 +581,9 @@ namespace {
 TEST(GltfIo, AFaceIsFannedSoThatTheFileReadsBack) {
   // A quad folded onto the triangle beside it: fanned from its first corner, its diagonal 0–2 was the
   // triangle's edge, and the file read back with a duplicate face.
-  const CovarianceMesh fold = make_covariance_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.5}},
-                                                   std::vector<Mat3>(4, 0.01 * Mat3::Identity()), {{0, 1, 2, 3}, {0, 3, 2}});
+  const CovarianceMesh fold =
+      make_covariance_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.5}},
+                           std::vector<Mat3>(4, 0.01 * Mat3::Identity()), {{0, 1, 2, 3}, {0, 3, 2}});
   test::TempDir dir;
   for (const char* name : {"fold.glb", "fold.gltf"}) {
     write_mesh(dir.file(name), fold);

@@ -245,25 +245,30 @@ TEST(MeshImport, AByteOrderMarkAndExportersSpellingsAreRead) {
       read_mesh(dir.write("b.obj", "\xEF\xBB\xBFv 9 9 9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n"));
   ASSERT_EQ(obj.n_vertices(), 4u);
   EXPECT_EQ(obj.mean(0), Vec3(9, 9, 9));
-  const CovarianceMesh ply = read_mesh(dir.write(
-      "b.ply", "\xEF\xBB\xBFply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-               "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  const CovarianceMesh ply =
+      read_mesh(dir.write("b.ply",
+                          "\xEF\xBB\xBFply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
   EXPECT_EQ(ply.n_faces(), 1u);
   // An ASCII STL in capitals, after the mark and spaces.
-  const std::string facet = "FACET NORMAL 0 0 1\n OUTER LOOP\n  VERTEX 0 0 0\n  VERTEX 1 0 0\n  VERTEX 0 1 0\n"
-                            " ENDLOOP\nENDFACET\n";
+  const std::string facet =
+      "FACET NORMAL 0 0 1\n OUTER LOOP\n  VERTEX 0 0 0\n  VERTEX 1 0 0\n  VERTEX 0 1 0\n"
+      " ENDLOOP\nENDFACET\n";
   EXPECT_EQ(read_mesh(dir.write("b.stl", "\xEF\xBB\xBF  SOLID x\n" + facet + "ENDSOLID x\n")).n_faces(), 1u);
 }
 
 TEST(MeshImport, AsciiStlFacetsOfOtherThanThreeVerticesAndTruncationAreRefused) {
-  const std::string facet = "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n"
-                            " endloop\nendfacet\n";
+  const std::string facet =
+      "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n"
+      " endloop\nendfacet\n";
   // A facet of 4 and one of 2 made two triangles across them.
-  const std::string four_two = "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
-                               "vertex 1 1 0\nendloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 0 0 1\n"
-                               "vertex 1 0 1\nendloop\nendfacet\nendsolid x\n";
-  EXPECT_EQ(error_of([&] { parse_stl(four_two, "f.stl"); }), "f.stl: line 2: a facet with 4 vertices (an STL facet has 3)");
+  const std::string four_two =
+      "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+      "vertex 1 1 0\nendloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 0 0 1\n"
+      "vertex 1 0 1\nendloop\nendfacet\nendsolid x\n";
+  EXPECT_EQ(error_of([&] { parse_stl(four_two, "f.stl"); }),
+            "f.stl: line 2: a facet with 4 vertices (an STL facet has 3)");
   EXPECT_EQ(error_of([&] { parse_stl("solid x\n" + facet, "t.stl"); }),
             "t.stl: the file ends before its 'endsolid' (truncated)");
   EXPECT_EQ(error_of([&] { parse_stl("solid x\nendsolid x\n", "e.stl"); }), "e.stl: no triangles");

@@ -536,8 +536,8 @@ TEST(RenderCli, PartsEachUnderAPixelAreNamedAsSuch) {
   std::vector<Vec3> means;
   std::vector<Mat3> covariances;
   std::vector<std::vector<int>> faces;
-  for (const auto& [scale, shift] : std::vector<std::pair<double, Vec3>>{
-           {1.0, Vec3::Zero()}, {1e-3, Vec3(-1e5, 0, 0)}, {1e-5, Vec3(3, 0, 0)}}) {
+  for (const auto& [scale, shift] :
+       std::vector<std::pair<double, Vec3>>{{1.0, Vec3::Zero()}, {1e-3, Vec3(-1e5, 0, 0)}, {1e-5, Vec3(3, 0, 0)}}) {
     const int first = int(means.size());
     for (size_t v = 0; v < cube.means.size(); ++v) {
       means.push_back(scale * cube.means[v] + shift);
@@ -550,7 +550,8 @@ TEST(RenderCli, PartsEachUnderAPixelAreNamedAsSuch) {
   }
   test::TempDir dir;
   write_mesh(dir.file("apart.ply"), make_covariance_mesh(means, covariances, faces));
-  const auto r = run_command(gpsurf("render " + dir.file("apart.ply") + " -o " + dir.file("a.png") + " --size 320x240"));
+  const auto r =
+      run_command(gpsurf("render " + dir.file("apart.ply") + " -o " + dir.file("a.png") + " --size 320x240"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("its parts lie so far apart that the largest is 0.0083 pixels across"), std::string::npos)
       << r.output;
@@ -561,8 +562,8 @@ TEST(RenderCli, PartsEachUnderAPixelAreNamedAsSuch) {
 TEST(RenderCli, ACameraSoNearThatTheViewEndsShortOfTheSurfaceSaysSo) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample pawn -o " + dir.file("p.ply"))).exit_code, 0);
-  const auto r = run_command(gpsurf("render " + dir.file("p.ply") + " -o " + dir.file("q.png") +
-                                    " --size 64x48 --camera 30,20,0.0001"));
+  const auto r = run_command(
+      gpsurf("render " + dir.file("p.ply") + " -o " + dir.file("q.png") + " --size 64x48 --camera 30,20,0.0001"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("the view reaches only 0.01 beyond the camera, 100 times its distance; give a larger "
                           "distance"),

@@ -36,15 +36,14 @@ Modelled MirrorModifier::seam_kept_open(const CovarianceMesh& before, Modelled r
   std::vector<int> on_plane;
   for (size_t f = 0; f < result.mesh.n_faces(); ++f) {
     const std::span<const int> corners = result.mesh.face(f);
-    if (std::all_of(corners.begin(), corners.end(), [&](int v) {
-          return std::abs(result.mesh.mean(size_t(v))[plane->axis]) <= plane->tolerance;
-        }))
+    if (std::all_of(corners.begin(), corners.end(),
+                    [&](int v) { return std::abs(result.mesh.mean(size_t(v))[plane->axis]) <= plane->tolerance; }))
       on_plane.push_back(int(f));
   }
   if (on_plane.empty()) return result;
   Modelled out = with_faces_deleted(result, on_plane);
-  out.summary = result.summary + "; " + std::to_string(on_plane.size()) +
-                (on_plane.size() == 1 ? " face" : " faces") + " on the mirror plane left out (the seam stays open)";
+  out.summary = result.summary + "; " + std::to_string(on_plane.size()) + (on_plane.size() == 1 ? " face" : " faces") +
+                " on the mirror plane left out (the seam stays open)";
   return out;
 }
 

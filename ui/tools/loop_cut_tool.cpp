@@ -96,9 +96,9 @@ void LoopCutTool::slide(glm::vec2 cursor, ToolContext& ctx) {
   if (!pa || !pb) return;
   const glm::vec2 d = glm::vec2(*pb) - glm::vec2(*pa);
   if (glm::dot(d, d) < 1.0f) return;
-  slide_to(std::clamp(2.0 * double(glm::dot(cursor - start_cursor_, d) / glm::dot(d, d)), -kMaxLoopSlide,
-                      kMaxLoopSlide),
-           ctx);
+  slide_to(
+      std::clamp(2.0 * double(glm::dot(cursor - start_cursor_, d) / glm::dot(d, d)), -kMaxLoopSlide, kMaxLoopSlide),
+      ctx);
 }
 
 void LoopCutTool::slide_to(double slide, ToolContext& ctx) {
@@ -174,7 +174,8 @@ void LoopCutTool::typed(ToolContext& ctx) {
     return;
   }
   // A whole number of cuts; anything else waits for more typing.
-  if (std::isfinite(value) && value >= 1 && value == std::floor(value)) cuts_ = int(std::min<double>(value, kMaxLoopCuts));
+  if (std::isfinite(value) && value >= 1 && value == std::floor(value))
+    cuts_ = int(std::min<double>(value, kMaxLoopCuts));
   status_ = "loop cut: " + std::to_string(cuts_) + " cuts" + typed_.shown() + ", click to cut, Esc cancels";
 }
 

@@ -60,8 +60,8 @@ TransformTool::TransformTool(ToolContext& ctx, const Vec3& normal, std::string o
 std::unique_ptr<ModalTool> TransformTool::move_after(ToolContext& ctx, const std::string& name, MadeWithOffset make,
                                                      bool along_normal) {
   auto before = std::make_shared<const CovarianceMesh>(ctx.document.mesh());
-  const bool done =
-      ctx.operate(name, [&](const CovarianceMesh& m) { return make(m, Vec3::Zero()); }, nullptr);
+  const bool done = ctx.operate(
+      name, [&](const CovarianceMesh& m) { return make(m, Vec3::Zero()); }, nullptr);
   if (!done) return nullptr;
   const std::string summary = ctx.last_summary ? ctx.last_summary() : std::string();
   // The area-weighted normal of the faces made (Newell's sums); zero for edges and vertices.
