@@ -13,7 +13,8 @@ struct CornerMasks {
 
 /// `step` (K×K) maps the K points around the vertex to those one subdivision level finer; `d_s`,
 /// `d_t` are the s and t derivative masks of a regular child's patch next to the vertex. The
-/// position is a row of stepⁿ as n → ∞ (repeated squaring). The tangents are the dominant
+/// position is a row of stepⁿ as n → ∞ (power iteration of one row, repeated squaring where that is
+/// slow). The tangents are the dominant
 /// invariant subspace of the rows d·stepⁿ with the position's part taken out (subspace iteration,
 /// Gram–Schmidt kept orientation-preserving), so d_s × d_t points the way the patch's normal does;
 /// their lengths are not derivatives (the vertex's own scale is λⁿ, not 2ⁿ), only their directions are.
