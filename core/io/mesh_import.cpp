@@ -298,6 +298,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
 
 void find_obj_lines(std::string_view data, const std::vector<int>& vertices, const std::vector<int>& faces,
                     ElementNumbering& numbering) {
+  if (data.starts_with(kUtf8ByteOrderMark)) data.remove_prefix(kUtf8ByteOrderMark.size());  // as read
   std::unordered_set<int> wanted_vertices(vertices.begin(), vertices.end()), wanted_faces(faces.begin(), faces.end());
   const int last_vertex = vertices.empty() ? -1 : *std::max_element(vertices.begin(), vertices.end());
   const int last_face = faces.empty() ? -1 : *std::max_element(faces.begin(), faces.end());

@@ -245,6 +245,9 @@ TEST(MeshImport, AByteOrderMarkAndExportersSpellingsAreRead) {
       read_mesh(dir.write("b.obj", "\xEF\xBB\xBFv 9 9 9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n"));
   ASSERT_EQ(obj.n_vertices(), 4u);
   EXPECT_EQ(obj.mean(0), Vec3(9, 9, 9));
+  ElementNumbering numbering;  // the lines that messages name count the same way
+  find_obj_lines("\xEF\xBB\xBFv 9 9 9\nv 0 0 0\n", {1}, {}, numbering);
+  EXPECT_EQ(numbering.vertex_lines, (std::unordered_map<int, int>{{1, 2}}));
   const CovarianceMesh ply =
       read_mesh(dir.write("b.ply",
                           "\xEF\xBB\xBFply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
