@@ -107,12 +107,14 @@ public:
 
   // A list length: a non-negative integer that fits in the data left (one byte per binary value,
   // two characters per ASCII value), so a corrupt count can neither overflow nor run for long.
-  size_t read_count(const ScalarType& t) {
+  // `element` and `record` name the record in a refusal ("face 3: list length -4 …").
+  size_t read_count(const ScalarType& t, const std::string& element, size_t record) {
     const double n = read(t);
     const size_t limit = format_ == Format::ascii ? tokens_.size() - token_index_ : remaining();
-    if (!(n >= 0) || n != std::floor(n)) fail(where() + "list length " + number_as_read(n) + " is not a count");
+    const auto at = [&] { return where() + element + " " + std::to_string(record) + ": list length "; };
+    if (!(n >= 0) || n != std::floor(n)) fail(at() + number_as_read(n) + " is not a count");
     if (n > double(limit))
-      fail(where() + "list length " + number_as_read(n) +
+      fail(at() + number_as_read(n) +
            (format_ == Format::ascii ? " exceeds the values on the line" : " exceeds the data left (truncated)"));
     return size_t(n);
   }
@@ -162,12 +164,12 @@ private:
 };
 
 // One record of element e: its scalar properties into `values` (by property index), lists read past.
-void read_scalar_record(BodyReader& body, const Element& e, std::vector<double>& values) {
+void read_scalar_record(BodyReader& body, const Element& e, size_t record, std::vector<double>& values) {
   body.begin_record();
   for (size_t k = 0; k < e.properties.size(); ++k) {
     const Property& p = e.properties[k];
     if (p.is_list) {
-      const size_t n = body.read_count(p.count_type);
+      const size_t n = body.read_count(p.count_type, e.name, record);
       for (size_t i = 0; i < n; ++i) body.read(p.type);
     } else {
       values[k] = body.read(p.type);
@@ -384,7 +386,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       if (has_covariances) covariances.reserve(means.capacity());  // else none: identity, made with the mesh
       std::vector<double> values(e.properties.size());
       for (size_t v = 0; v < e.count; ++v) {
-        read_scalar_record(body, e, values);
+        read_scalar_record(body, e, v, values);
         means.emplace_back(values[size_t(ix)], values[size_t(iy)], values[size_t(iz)]);
         if (const std::string why = position_problem(means[v]); !why.empty())
           fail("vertex " + std::to_string(v) + " " + why);
@@ -424,14 +426,17 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
             body.read(p.type);
             continue;
           }
-          const size_t n = body.read_count(p.count_type);
+          const size_t n = body.read_count(p.count_type, e.name, f);
           if (int(k) == list && n < 3)
             fail(body.where() + "face " + std::to_string(f) + " has " + std::to_string(n) +
                  " vertices (at least 3 needed)");
           for (size_t i = 0; i < n; ++i) {
             const double index = body.read(p.type);
             if (int(k) != list) continue;
-            if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
+            if (index != std::floor(index))
+              fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + number_as_read(index) +
+                   ", which is not a whole number");
+            if (!(index >= 0 && index < double(vertex_count)))
               fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + number_as_read(index) +
                    ", but there are " + std::to_string(vertex_count) + " vertices");
             faces.verts.push_back(int(index));
@@ -450,7 +455,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       creases.reserve(e.count);
       std::vector<double> values(e.properties.size());
       for (size_t r = 0; r < e.count; ++r) {
-        read_scalar_record(body, e, values);
+        read_scalar_record(body, e, r, values);
         int ends[2];
         for (int k = 0; k < 2; ++k) {
           const double index = values[size_t(k == 0 ? i1 : i2)];
@@ -482,7 +487,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
         body.begin_record();
         for (size_t k = 0; k < e.properties.size(); ++k) {
           const Property& p = e.properties[k];
-          const size_t n = p.is_list ? body.read_count(p.count_type) : 1;
+          const size_t n = p.is_list ? body.read_count(p.count_type, e.name, r) : 1;
           strip.clear();
           for (size_t i = 0; i <= n; ++i) {
             const double index = i < n ? body.read(p.type) : -1;  // the record's end closes the last run
@@ -511,7 +516,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       for (size_t r = 0; r < e.count; ++r) {
         body.begin_record();
         for (const Property& p : e.properties) {
-          const size_t n = p.is_list ? body.read_count(p.count_type) : 1;
+          const size_t n = p.is_list ? body.read_count(p.count_type, e.name, r) : 1;
           for (size_t i = 0; i < n; ++i) body.read(p.type);
         }
         body.end_record();

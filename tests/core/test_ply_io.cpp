@@ -271,14 +271,14 @@ TEST(PlyIo, CorruptListLengthsAndIndicesAreErrors) {
   const std::string v0 = "0 0 0 1 0 0 1 0 1\n", v1 = "1 0 0 1 0 0 1 0 1\n", v2 = "0 1 0 1 0 0 1 0 1\n";
   const std::string h = header("ascii", 3, 1) + v0 + v1 + v2;
   const std::vector<BadInput> cases = {
-      {"nan_count.ply", h + "nan 0 1 2\n", "line 19: list length nan is not a count"},
+      {"nan_count.ply", h + "nan 0 1 2\n", "line 19: face 0: list length nan is not a count"},
       {"frac_count.ply", h + "3.5 0 1 2\n", "list length 3.5 is not a count"},
       {"neg_count.ply", h + "-3 0 1 2\n", "list length -3 is not a count"},
-      {"long_count.ply", h + "4 0 1 2\n", "line 19: list length 4 exceeds the values on the line"},
+      {"long_count.ply", h + "4 0 1 2\n", "line 19: face 0: list length 4 exceeds the values on the line"},
       {"huge_count.ply", h + "1e300 0 1 2\n", "list length 1e+300 exceeds"},
       {"big_count.ply", h + "4000000000 0 1 2\n", "list length 4000000000 exceeds"},
       {"nan_index.ply", h + "3 0 1 nan\n", "face 0 refers to vertex nan"},
-      {"frac_index.ply", h + "3 0 1 1.5\n", "face 0 refers to vertex 1.5"},
+      {"frac_index.ply", h + "3 0 1 1.5\n", "face 0 refers to vertex 1.5, which is not a whole number"},
       {"neg_index.ply", h + "3 0 -1 2\n", "face 0 refers to vertex -1"},
       {"two_vertex.ply",
        "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
@@ -293,7 +293,7 @@ TEST(PlyIo, CorruptListLengthsAndIndicesAreErrors) {
       {"no_format.ply", "ply\nelement vertex 0\nend_header\n", "no format line"},
       {"huge_binary_list.ply",
        header("binary_little_endian", 3, 1) + binary_vertices(3) + std::string("\xff\x00\x00\x00\x00", 5),
-       "list length 255 exceeds the data left (truncated)"},
+       "face 0: list length 255 exceeds the data left (truncated)"},
   };
   for (const auto& c : cases) {
     try {
