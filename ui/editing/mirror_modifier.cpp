@@ -30,9 +30,9 @@ std::optional<PlaneClip> MirrorModifier::clip(const CovarianceMesh& half) const 
   return PlaneClip{settings.axis, mirror_merge_distance(half)};
 }
 
-Modelled MirrorModifier::seam_kept_open(const CovarianceMesh& before, Modelled result) const {
+std::optional<Modelled> MirrorModifier::seam_kept_open(const CovarianceMesh& before, const Modelled& result) const {
   const std::optional<PlaneClip> plane = clip(before);
-  if (!plane) return result;
+  if (!plane) return std::nullopt;
   std::vector<int> on_plane;
   for (size_t f = 0; f < result.mesh.n_faces(); ++f) {
     const std::span<const int> corners = result.mesh.face(f);
@@ -40,7 +40,7 @@ Modelled MirrorModifier::seam_kept_open(const CovarianceMesh& before, Modelled r
                     [&](int v) { return std::abs(result.mesh.mean(size_t(v))[plane->axis]) <= plane->tolerance; }))
       on_plane.push_back(int(f));
   }
-  if (on_plane.empty()) return result;
+  if (on_plane.empty()) return std::nullopt;
   Modelled out = with_faces_deleted(result, on_plane);
   out.summary = result.summary + "; " + std::to_string(on_plane.size()) + (on_plane.size() == 1 ? " face" : " faces") +
                 " on the mirror plane left out (the seam stays open)";

@@ -43,9 +43,9 @@ public:
   std::optional<PlaneClip> clip(const CovarianceMesh& half) const;
   /// With clipping, an operation's `result` (made from `before`) without the faces it laid on the plane
   /// and the vertices only they used: the side of an extruded face's seam edge would close the seam the
-  /// mirror merges along, and Blender's extrude leaves it open. As it is where none lies there (or the
+  /// mirror merges along, and Blender's extrude leaves it open. Nothing where none lies there (or the
   /// modifier or clipping is off). Throws as delete_faces does, before anything changes.
-  Modelled seam_kept_open(const CovarianceMesh& before, Modelled result) const;
+  std::optional<Modelled> seam_kept_open(const CovarianceMesh& before, const Modelled& result) const;
   /// The shown mirror (mirroring() only).
   const CovarianceMesh& mirrored() const { return *mirrored_; }
 

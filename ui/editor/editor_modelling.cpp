@@ -321,8 +321,8 @@ bool EditorApp::operate(const std::string& name, const std::function<Modelled(co
 }
 
 void EditorApp::install(const Modelled& made, SurfaceReplanner* replanner) {
-  // With the mirror modifier clipping, what an operation lays on the plane is left out, as in Blender.
-  const Modelled result = shown_->mirror().seam_kept_open(document_.mesh(), made);
+  const std::optional<Modelled> open = shown_->mirror().seam_kept_open(document_.mesh(), made);
+  const Modelled& result = open ? *open : made;
   std::optional<ReplannedTables> surface;
   if (replanner) {  // first: it throws before anything changes
     replanner->set_sharpness(result.mesh.sharpness);
