@@ -14,8 +14,8 @@ std::vector<std::string_view> words_of(std::string_view line);
 /// The first word of `line` (empty when there is none), which is then cut off `line`.
 std::string_view next_word(std::string_view& line);
 
-/// The lines of a text one at a time as views into it, split at '\n' as std::getline splits them,
-/// with their numbers from 1: no copy of a line, however long.
+/// The lines of a text one at a time as views into it, with their numbers from 1: no copy of a line,
+/// however long. A line ends at '\n', "\r\n" or a lone '\r' (old Mac files), the end not in the line.
 class LineCursor {
 public:
   explicit LineCursor(std::string_view text) : text_(text) { advance(); }
@@ -23,7 +23,7 @@ public:
   std::string_view line() const { return line_; }
   int number() const { return number_; }
   void next() {
-    begin_ = end_ + 1;
+    begin_ = next_begin_;
     advance();
   }
 
@@ -31,11 +31,14 @@ private:
   void advance() {
     ++number_;
     if (done()) return;
-    end_ = std::min(text_.find('\n', begin_), text_.size());
+    const size_t newline = std::min(text_.find('\n', begin_), text_.size());
+    const size_t cr = text_.substr(begin_, newline - begin_).find('\r');
+    end_ = cr == std::string_view::npos ? newline : begin_ + cr;
+    next_begin_ = end_ + (end_ + 1 == newline ? 2 : 1);  // "\r\n" is one end
     line_ = text_.substr(begin_, end_ - begin_);
   }
   std::string_view text_;
-  size_t begin_ = 0, end_ = 0;
+  size_t begin_ = 0, end_ = 0, next_begin_ = 0;
   int number_ = 0;
   std::string_view line_;
 };

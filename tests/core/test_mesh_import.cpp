@@ -248,6 +248,20 @@ TEST(MeshImport, AByteOrderMarkAndExportersSpellingsAreRead) {
   ElementNumbering numbering;  // the lines that messages name count the same way
   find_obj_lines("\xEF\xBB\xBFv 9 9 9\nv 0 0 0\n", {1}, {}, numbering);
   EXPECT_EQ(numbering.vertex_lines, (std::unordered_map<int, int>{{1, 2}}));
+  // Lines ended by "\r\n" or by a lone '\r' (old Mac files) as by '\n'; that one was refused at its line 1.
+  const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  for (const std::string end : {"\r\n", "\r"}) {
+    std::string text = square;
+    for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + end.size()))
+      text.replace(at, 1, end);
+    const CovarianceMesh m = read_mesh(dir.write("ends.obj", text));
+    EXPECT_EQ(m.n_vertices(), 4u);
+    EXPECT_EQ(m.n_faces(), 1u);
+    ElementNumbering lines;
+    find_obj_lines(text, {3}, {0}, lines);
+    EXPECT_EQ(lines.vertex_lines, (std::unordered_map<int, int>{{3, 4}}));
+    EXPECT_EQ(lines.face_lines, (std::unordered_map<int, int>{{0, 5}}));
+  }
   const CovarianceMesh ply =
       read_mesh(dir.write("b.ply",
                           "\xEF\xBB\xBFply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
