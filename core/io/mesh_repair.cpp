@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "core/io/position_weld.h"
+#include "core/mesh/face_area.h"
 #include "core/support/disjoint_sets.h"
 
 namespace gps {
@@ -186,14 +187,7 @@ private:
   void drop_zero_area_faces() {
     const auto& p = soup_.positions;
     filter_faces([&](int f, std::vector<int>& corners, std::vector<std::vector<int>>& pieces) {
-      Vec3 normal = Vec3::Zero();  // Newell's: twice the vector area
-      double longest2 = 0;
-      for (size_t k = 0; k < corners.size(); ++k) {
-        const Vec3 &a = p[size_t(corners[k])], &b = p[size_t(corners[(k + 1) % corners.size()])];
-        normal += a.cross(b);
-        longest2 = std::max(longest2, (b - a).squaredNorm());
-      }
-      if (0.5 * normal.norm() <= tolerance_ * std::sqrt(longest2)) {
+      if (without_area(corners, [&](int v) -> const Vec3& { return p[size_t(v)]; }, tolerance_)) {
         found(Defect::zero_area_faces, {file_face(f)});
         return;
       }

@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/io/mesh_repair.h"
+#include "core/mesh/face_area.h"
 #include "core/support/error.h"
 #include "core/modelling/mesh_queries.h"
 #include "core/modelling/operation_words.h"
@@ -77,15 +78,9 @@ Modelled fill(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
       reverse > 0 || (keep == 0 && b.place[size_t(vertices.front())].first >= 0 && loop_direction(b, vertices) > 0);
   std::vector<int> face = vertices;
   if (reversed) std::reverse(face.begin(), face.end());
-  // A face of no area (its vertices in a line) is one the repair would drop, as it does such faces.
-  Vec3 normal = Vec3::Zero();  // Newell's: twice the vector area
-  double longest = 0;
-  for (size_t k = 0; k < n; ++k) {
-    const Vec3 &p = a.means[size_t(face[k])], &q = a.means[size_t(face[(k + 1) % n])];
-    normal += p.cross(q);
-    longest = std::max(longest, (q - p).norm());
-  }
-  if (0.5 * normal.norm() <= RepairOptions().weld_tolerance * bounding_box_diagonal(mesh) * longest)
+  // A face of no area (its vertices in a line) is one the repair would drop.
+  if (without_area(face, [&](int v) -> const Vec3& { return a.means[size_t(v)]; },
+                   RepairOptions().weld_tolerance * bounding_box_diagonal(mesh)))
     throw Error("the vertices lie in a line: the face would have no area");
   a.faces.push_back(face);
   return modelled(

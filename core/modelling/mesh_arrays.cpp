@@ -6,6 +6,7 @@
 
 #include "core/io/mesh_repair.h"
 #include "core/support/error.h"
+#include "core/mesh/face_area.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/modelling/operation_words.h"
 #include "core/plans/plan_builder.h"
@@ -176,18 +177,14 @@ void check_new_geometry(const CovarianceMesh& before, const Modelled& result) {
   };
   for (const int f : faces) {
     const std::span<const int> corners = after.face(size_t(f));
-    Vec3 normal = Vec3::Zero();  // Newell's: twice the vector area
-    double longest = 0;
+    const auto mean = [&](int v) -> const Vec3& { return after.mean(size_t(v)); };
     for (size_t k = 0; k < corners.size(); ++k) {
       const int x = corners[k], y = corners[(k + 1) % corners.size()];
-      const Vec3 &p = after.mean(size_t(x)), &q = after.mean(size_t(y));
-      normal += p.cross(q);
-      longest = std::max(longest, (q - p).norm());
-      if ((q - p).norm() <= tolerance)
+      if ((mean(y) - mean(x)).norm() <= tolerance)
         throw Error("the result would put " + name(x) + " within " + short_number(tolerance) + " of " + name(y) +
                     " (a millionth of the mesh's size, which a repair welds)");
     }
-    if (0.5 * normal.norm() <= tolerance * longest)
+    if (without_area(corners, mean, tolerance))
       throw Error("the result would have a face without area, face " + std::to_string(f) + " (its corners in a line)");
   }
 }
