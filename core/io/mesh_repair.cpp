@@ -187,8 +187,8 @@ private:
   void drop_zero_area_faces() {
     const auto& p = soup_.positions;
     filter_faces([&](int f, std::vector<int>& corners, std::vector<std::vector<int>>& pieces) {
-      if (without_area(
-              corners, [&](int v) -> const Vec3& { return p[size_t(v)]; }, tolerance_)) {
+      const auto position = [&](int v) -> const Vec3& { return p[size_t(v)]; };
+      if (without_area(corners, position, tolerance_)) {
         found(Defect::zero_area_faces, {file_face(f)});
         return;
       }

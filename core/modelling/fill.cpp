@@ -79,9 +79,8 @@ Modelled fill(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
   std::vector<int> face = vertices;
   if (reversed) std::reverse(face.begin(), face.end());
   // A face of no area (its vertices in a line) is one the repair would drop.
-  if (without_area(
-          face, [&](int v) -> const Vec3& { return a.means[size_t(v)]; },
-          RepairOptions().weld_tolerance* bounding_box_diagonal(mesh)))
+  const auto mean = [&](int v) -> const Vec3& { return a.means[size_t(v)]; };
+  if (without_area(face, mean, RepairOptions().weld_tolerance * bounding_box_diagonal(mesh)))
     throw Error("the vertices lie in a line: the face would have no area");
   a.faces.push_back(face);
   return modelled(
