@@ -7,6 +7,7 @@
 #include "app/naming_input.h"
 #include "app/plan_arguments.h"
 #include "app/terminal_progress.h"
+#include "core/evaluation/surface_samples.h"
 #include "core/io/mesh_io.h"
 #include "core/plans/planned_surface.h"
 #include "core/evaluation/tessellator.h"
@@ -37,7 +38,7 @@ void add_tessellate_command(CLI::App& app) {
                                                      [&] { return PlannedSurface(m, args->plans.options()); });
     TerminalProgress bar("tessellating", args->quiet);
     const TriangleMesh t = naming_input(
-        args->input, [&] { return tessellate(surface.tables().plans, surface.points(), args->level, bar.report()); });
+        args->input, [&] { return tessellate(surface, args->level, bar.report()); });
     bar.finish();
     write_triangle_mesh(args->output, t, !args->ascii);
     if (args->quiet) return;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "core/evaluation/surface_samples.h"
 #include "core/evaluation/tessellation_size.h"
 #include "core/evaluation/tessellator.h"
 #include "core/fitting/face_triangles.h"
@@ -54,7 +55,7 @@ struct Measurement {
     const PatchPlans& p = plans->tables().plans;
     int used = level;
     while (used > 1 && tessellation_size(p, used).faces > max_triangles) --used;
-    return tessellate(p, plans->points(), used);
+    return tessellate(*plans, used);
   }
 
   // The distance of every point (and, with `angles`, the normals' angles), a chunk at a time so

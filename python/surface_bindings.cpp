@@ -1,6 +1,7 @@
 // gpsurf.Surface (a mesh's plans and their exact evaluation) and gpsurf.tessellate.
 #include <pybind11/stl.h>
 
+#include "core/evaluation/surface_samples.h"
 #include "core/evaluation/patch_eval.h"
 #include "core/evaluation/tessellator.h"
 #include "core/mesh/covariance_mesh.h"
@@ -57,7 +58,7 @@ py::tuple evaluate(const SurfaceHandle& h, const py::object& patches, const Doub
         control.throw_if_stopped();
         control.report(double(i) / double(p.size()));
       }
-      if (const auto sample = evaluate_patch(surface->tables().plans, surface->points(), p[i], us[i], vs[i])) {
+      if (const auto sample = evaluate_patch(*surface, p[i], us[i], vs[i])) {
         out.position[i] = sample->position, out.du[i] = sample->du, out.dv[i] = sample->dv;
         out.normal[i] = sample->normal, out.covariance[i] = sample->covariance;
       }
@@ -117,7 +118,7 @@ py::tuple tessellation(std::shared_ptr<const PlannedSurface> surface, int level)
   if (level < 1 || level > 64) throw py::value_error("level: expected 1..64, got " + std::to_string(level));
   const TriangleMesh t =
       call_in_background([surface = std::move(surface), level](
-                             CallControl&) { return tessellate(surface->tables().plans, surface->points(), level); },
+                             CallControl&) { return tessellate(*surface, level); },
                          py::none(), false);
   return py::make_tuple(read_only(rows_to_array(t.positions)), read_only(rows_to_array(t.normals)),
                         read_only(triangles_to_array(t.triangles)));

@@ -13,6 +13,13 @@ struct TriangleMesh {
   std::vector<std::array<int, 3>> triangles;
 };
 
+/// Triangles whose positions are about `origin`: a surface evaluated about its mesh's evaluation origin
+/// (core/mesh/covariance_mesh.h) and kept there, whose digits world coordinates far away would lose.
+struct PlacedTriangles {
+  TriangleMesh triangles;
+  Vec3 origin = Vec3::Zero();
+};
+
 /// Gives each vertex whose normal is zero (none known there) the area-weighted normal of its triangles.
 void fill_missing_normals(TriangleMesh& mesh);
 

@@ -19,7 +19,10 @@ std::vector<double> limit_scalars_at(const PlannedSurface& surface, const std::v
     if (!std::isfinite(scalars[i])) throw Error("the scalar of vertex " + std::to_string(i) + " is not finite");
   if (points.empty()) return {};
   const SurfaceTables& tables = surface.tables();
-  const std::vector<SurfacePoint> closest = closest_limit_points(tables.plans, surface.points(), points, level);
+  // The plans' points are about the surface's origin: so are the points looked up on it.
+  std::vector<Vec3> about_origin(points);
+  for (Vec3& p : about_origin) p -= surface.origin();
+  const std::vector<SurfacePoint> closest = closest_limit_points(tables.plans, surface.points(), about_origin, level);
   std::vector<double> out(points.size());
 #pragma omp parallel for schedule(static)
   for (ptrdiff_t i = 0; i < ptrdiff_t(points.size()); ++i) {

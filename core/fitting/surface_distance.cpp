@@ -1,3 +1,4 @@
+#include "core/evaluation/surface_samples.h"
 #include "core/fitting/surface_distance.h"
 
 #include <algorithm>
@@ -30,7 +31,7 @@ LimitTriangles limit_surface_triangles(const CovarianceMesh& mesh, int level, co
                     "measuring distances to " + std::to_string(plans.n_patches()) + " patches tessellated at level " +
                         std::to_string(level),
                     "triangles", "use a lower level");
-  return {tessellate(plans, surface.points(), level), level};
+  return {tessellate(surface, level), level};
 }
 
 struct SurfaceDistance::Tree {

@@ -200,10 +200,18 @@ double bounding_box_diagonal(const CovarianceMesh& m) {
   return (hi - lo).norm();
 }
 
-std::vector<Dual> base_points(const CovarianceMesh& mesh) {
+Vec3 evaluation_origin(const CovarianceMesh& mesh) {
+  if (mesh.n_vertices() == 0) return Vec3::Zero();
+  Vec3 lo, hi;
+  bounding_box(mesh, lo, hi);
+  const Vec3 centre = 0.5 * (lo + hi);
+  return centre.norm() > (hi - lo).norm() ? centre : Vec3::Zero();
+}
+
+std::vector<Dual> base_points(const CovarianceMesh& mesh, const Vec3& origin) {
   std::vector<Dual> q(mesh.n_vertices());
 #pragma omp parallel for if (q.size() >= 4096)
-  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i), mesh.covariance(i));
+  for (size_t i = 0; i < q.size(); ++i) q[i] = to_dual(mesh.mean(i) - origin, mesh.covariance(i));
   return q;
 }
 

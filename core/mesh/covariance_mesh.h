@@ -107,8 +107,15 @@ void bounding_box(const CovarianceMesh& m, Vec3& lo, Vec3& hi);
 /// Bounding-box diagonal length of the means.
 double bounding_box_diagonal(const CovarianceMesh& m);
 
-/// The 9D point q = (vech(Σ⁻¹), Σ⁻¹μ) of every vertex (thesis Eq. 2.10), the base of the plans'
-/// points and of the reference subdivision.
-std::vector<Dual> base_points(const CovarianceMesh& mesh);
+/// The point the CPU evaluates a mesh's limit surface about: its bounding box's centre where the mesh
+/// lies farther from the origin than its diagonal, else the origin. Σ⁻¹μ carries μ's distance from the
+/// origin, so the 9D points of a mesh far from it keep too few digits for its own size once combined;
+/// GPS commutes with translations (docs/design.md §1), so the surface evaluated about this point and
+/// moved back by it is the mesh's.
+Vec3 evaluation_origin(const CovarianceMesh& mesh);
+
+/// The 9D point q = (vech(Σ⁻¹), Σ⁻¹(μ − origin)) of every vertex (thesis Eq. 2.10), the base of the
+/// plans' points and of the reference subdivision: the mesh's, moved by −origin.
+std::vector<Dual> base_points(const CovarianceMesh& mesh, const Vec3& origin = Vec3::Zero());
 
 }  // namespace gps

@@ -68,13 +68,15 @@ PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& op
   scheme_ = scheme_for(mesh.topology(), options);
   tables_ = build_surface_plans(mesh, options);
   dependents_ = stencil_dependents(tables_.stencils);
-  points_ = base_points(mesh);
+  origin_ = evaluation_origin(mesh);
+  points_ = base_points(mesh, origin_);
 }
 
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, Scheme scheme, SurfaceTables tables)
     : scheme_(scheme), tables_(std::move(tables)) {
   dependents_ = stencil_dependents(tables_.stencils);
-  points_ = base_points(mesh);
+  origin_ = evaluation_origin(mesh);
+  points_ = base_points(mesh, origin_);
 }
 
 const std::vector<Dual>& PlannedSurface::points() const {
@@ -88,7 +90,7 @@ const std::vector<Dual>& PlannedSurface::points() const {
 
 void PlannedSurface::update(const CovarianceMesh& mesh, const std::vector<int>& changed) {
   const std::lock_guard<std::mutex> hold(*points_lock_);
-  for (const int v : changed) points_[size_t(v)] = to_dual(mesh.mean(size_t(v)), mesh.covariance(size_t(v)));
+  for (const int v : changed) points_[size_t(v)] = to_dual(mesh.mean(size_t(v)) - origin_, mesh.covariance(size_t(v)));
   if (rows_computed_) update_stencils(tables_.stencils, dependents_, changed, points_);
 }
 

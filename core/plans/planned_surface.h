@@ -55,9 +55,12 @@ public:
   const SurfaceTables& tables() const { return tables_; }
   /// The tables, moved out (for a consumer that keeps them and computes its own points).
   SurfaceTables release_tables() && { return std::move(tables_); }
-  /// Every plan point: the base vertices' q, then the stencil rows. The rows are computed on the first
-  /// call (the renderer, which computes its own on the GPU, never asks); safe from several threads.
+  /// Every plan point: the base vertices' q, then the stencil rows, of the mesh moved by −origin()
+  /// (core/evaluation/surface_samples.h moves what they evaluate to back). The rows are computed on the
+  /// first call (the renderer, which computes its own on the GPU, never asks); safe from several threads.
   const std::vector<Dual>& points() const;
+  /// The mesh's evaluation_origin when planned (core/mesh/covariance_mesh.h): the points are about it.
+  const Vec3& origin() const { return origin_; }
   /// After an edit of `changed` vertices of `mesh`: their q and, once computed, the rows that read them.
   void update(const CovarianceMesh& mesh, const std::vector<int>& changed);
   /// The stencil rows that read any of `vertices`, sorted, without repeats.
@@ -65,6 +68,7 @@ public:
 
 private:
   Scheme scheme_;
+  Vec3 origin_ = Vec3::Zero();
   SurfaceTables tables_;
   StencilDependents dependents_;
   /// The base vertices' q, followed by the stencil rows once `rows_computed_`.

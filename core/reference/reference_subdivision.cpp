@@ -249,8 +249,10 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   SubdivisionResult result;
   const bool with_params = options.scheme == Scheme::catmull_clark || all_triangles(base);
   const bool with_normals = options.normals && options.limit;
+  // Evaluated about the mesh's evaluation origin, each mean moved back as it is mapped back.
+  const Vec3 origin = evaluation_origin(mesh);
   Refined<Dual> r =
-      refine(base, base_points(mesh), mesh.sharpness, options, with_params ? &result.vertex_params : nullptr,
+      refine(base, base_points(mesh, origin), mesh.sharpness, options, with_params ? &result.vertex_params : nullptr,
              with_normals ? &result.corner_params : nullptr);
   std::vector<Dual> first, second;  // limit tangents, with_normals
   if (with_normals) {
@@ -271,7 +273,7 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
       first_invalid = std::min(first_invalid, v);
       return;
     }
-    means[size_t(v)] = g->mean;
+    means[size_t(v)] = g->mean + origin;
     covariances[size_t(v)] = g->covariance;
     if (with_normals) result.normals[size_t(v)] = limit_normal(q, g->mean, first[size_t(v)], second[size_t(v)]);
   });

@@ -15,8 +15,8 @@ class SurfaceRenderer;
 /// as static triangles, they rasterise as the patches do, so that the difference of their AOVs is
 /// the GPU's float error alone, at any level and under either scheme. (No reference level has the
 /// vertices of GL's triangle tessellation: its inner rings lie off the dyadic grid.) `mesh` is the
-/// renderer's mesh.
-TriangleMesh exact_triangles(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const Camera& camera,
+/// renderer's mesh; the positions are about its evaluation origin (core/mesh/covariance_mesh.h).
+PlacedTriangles exact_triangles(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const Camera& camera,
                              const DrawOptions& o, int width, int height);
 
 }  // namespace gps

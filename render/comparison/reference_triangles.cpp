@@ -34,17 +34,23 @@ int corner_nearest_centre(const PatchParam* corners) {
 // (measured: 2.5 to 2.9 times at levels 3 and 4 of a 9,600-face sphere).
 constexpr double kReferenceBytesOverSubdivision = 3.2;
 
-SubdivisionResult reference(const CovarianceMesh& mesh, int levels, const PlanOptions& options) {
+// The reference of the mesh moved by −origin, its evaluation origin: the refined means keep the
+// digits of the mesh's own size where world coordinates far away would lose them.
+SubdivisionResult reference(const CovarianceMesh& mesh, int levels, const PlanOptions& options, const Vec3& origin) {
   const SubdivisionOptions subdivision{scheme_for(mesh.topology(), options), levels, true, options.loop_beta, true};
   OutputSize size = subdivision_size(mesh, subdivision);
   size.bytes *= kReferenceBytesOverSubdivision;
   check_output_size(size, "the reference at level " + std::to_string(levels), "faces", "use a lower level");
-  return subdivide(mesh, subdivision);
+  if (origin.isZero()) return subdivide(mesh, subdivision);
+  CovarianceMesh about = mesh;
+  for (size_t v = 0; v < about.n_vertices(); ++v) about.set_mean(v, mesh.mean(v) - origin);
+  return subdivide(about, subdivision);
 }
 }  // namespace
 
-TriangleMesh reference_triangles(const CovarianceMesh& mesh, int levels, const PlanOptions& options) {
-  const SubdivisionResult r = reference(mesh, levels, options);
+PlacedTriangles reference_triangles(const CovarianceMesh& mesh, int levels, const PlanOptions& options) {
+  const Vec3 origin = evaluation_origin(mesh);
+  const SubdivisionResult r = reference(mesh, levels, options, origin);
   const PolygonTopology& t = r.mesh.topology();
   TriangleMesh out;
   out.positions.resize(r.mesh.n_vertices());
@@ -58,12 +64,14 @@ TriangleMesh reference_triangles(const CovarianceMesh& mesh, int levels, const P
     for (int k = 1; k + 1 < n; ++k) out.triangles.push_back({corner(0), corner(k), corner(k + 1)});
   }
   fill_missing_normals(out);
-  return out;
+  return {std::move(out), origin};
 }
 
-TriangleMesh reference_in_patch_triangles(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const Camera& camera,
-                                          const DrawOptions& o, int width, int height, int levels) {
-  const SubdivisionResult r = reference(mesh, levels, {Scheme::catmull_clark});
+PlacedTriangles reference_in_patch_triangles(SurfaceRenderer& renderer, const CovarianceMesh& mesh,
+                                             const Camera& camera, const DrawOptions& o, int width, int height,
+                                             int levels) {
+  const Vec3 origin = evaluation_origin(mesh);
+  const SubdivisionResult r = reference(mesh, levels, {Scheme::catmull_clark}, origin);
   const PolygonTopology& t = r.mesh.topology();
   const int steps = 1 << levels, grid = steps + 1;  // grid points per patch edge
   // Every grid point of a patch is a corner of one of the reference's faces in that patch: its vertex,
@@ -80,7 +88,7 @@ TriangleMesh reference_in_patch_triangles(SurfaceRenderer& renderer, const Covar
     if (p.patch < 0 || i < 0 || i > steps || j < 0 || j > steps) continue;
     if (int& at = vertex_at[slot(p.patch, i, j)]; at < 0) at = t.verts[c];
   }
-  return patch_triangles(renderer, camera, o, width, height, [&](int patch, double u, double v) {
+  return {patch_triangles(renderer, camera, o, width, height, [&](int patch, double u, double v) {
     const long i = std::lround(u * steps), j = std::lround(v * steps);
     const bool on_grid = std::abs(u * steps - double(i)) <= 1e-4 && std::abs(v * steps - double(j)) <= 1e-4 &&
                          patch >= 0 && patch < patches && i >= 0 && i <= steps && j >= 0 && j <= steps;
@@ -90,7 +98,8 @@ TriangleMesh reference_in_patch_triangles(SurfaceRenderer& renderer, const Covar
                   std::to_string(patch) + " (" + std::to_string(u) + ", " + std::to_string(v) +
                   "): draw the patches at level 2^" + std::to_string(levels));
     return SurfaceValues{r.mesh.mean(size_t(at)), r.normals[size_t(at)]};
-  });
+  }),
+          origin};
 }
 
 }  // namespace gps

@@ -90,9 +90,10 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
 
 // Kept in the mesh's frame, as the patches are: world coordinates far from the origin lose their
 // digits in float.
-void SurfaceRenderer::set_triangles(const TriangleMesh& triangles) {
+void SurfaceRenderer::set_triangles(const TriangleMesh& triangles, const Vec3& origin) {
   TriangleMesh framed = triangles;
-  const Vec3 centre(frame_.centre.x, frame_.centre.y, frame_.centre.z);
+  // The origin and the frame's centre lie near each other for a mesh far away: their difference first.
+  const Vec3 centre = Vec3(frame_.centre.x, frame_.centre.y, frame_.centre.z) - origin;
   for (Vec3& p : framed.positions) p = (p - centre) / frame_.unit;
   static_triangles_.set(framed);
   ++revision_;

@@ -81,8 +81,9 @@ public:
   /// The compute passes over every vertex and stencil row (as after set_mesh), for benchmarks.
   void recompute_all() { run_compute(nullptr); }
   /// Triangles to draw with DrawOptions::static_triangles (CPU tessellation, reference subdivision), in
-  /// world coordinates; kept in the frame of the last set_mesh, as the patches are.
-  void set_triangles(const TriangleMesh& triangles);
+  /// world coordinates less `origin`; kept in the frame of the last set_mesh, as the patches are.
+  void set_triangles(const TriangleMesh& triangles, const Vec3& origin = Vec3::Zero());
+  void set_triangles(const PlacedTriangles& placed) { set_triangles(placed.triangles, placed.origin); }
   void set_matcap(const Image& matcap);
 
   void draw(const RenderTarget& target, const Camera& camera, const DrawOptions& options);

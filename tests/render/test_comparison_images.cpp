@@ -154,9 +154,10 @@ TEST_F(ComparisonImages, ReferenceInThePatchesTrianglesHasTheirVertices) {
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh, options);
     const Camera camera = frame_mesh(mesh);
-    const TriangleMesh exact = exact_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize);
+    const TriangleMesh exact =
+        exact_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize).triangles;
     const TriangleMesh reference =
-        reference_in_patch_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize, 4);
+        reference_in_patch_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize, 4).triangles;
     ASSERT_EQ(reference.triangles, exact.triangles) << name;
     ASSERT_EQ(reference.positions.size(), exact.positions.size()) << name;
     double position = 0, normal = 0;

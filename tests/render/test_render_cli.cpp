@@ -571,5 +571,33 @@ TEST(RenderCli, ACameraSoNearThatTheViewEndsShortOfTheSurfaceSaysSo) {
       << r.output;
 }
 
+// A pawn a millionth the size, 1e8 away: the CPU's --exact and --reference images are the GPU's
+// (they spiked by a quarter of its size: the 9D points lost the digits of its size to its distance).
+TEST(RenderCli, TheCpusImagesOfAMeshFarFromTheOriginAreTheGpus) {
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample pawn -o " + dir.file("p.ply"))).exit_code, 0);
+  const auto moved = run_command(gpsurf("edit " + dir.file("p.ply") + " -o " + dir.file("far.ply") +
+                                        " --ops '[{\"op\":\"transform\",\"vertices\":\"all\",\"matrix\":"
+                                        "[1e-6,0,0,1e8, 0,1e-6,0,0, 0,0,1e-6,0, 0,0,0,1]}]'"));
+  ASSERT_EQ(moved.exit_code, 0) << moved.output;
+  const std::string base = "render " + dir.file("far.ply") + " --size 160x120 --level 8 -o ";
+  for (const char* cpu : {" --exact", " --reference 3"}) {
+    ASSERT_EQ(run_command(gpsurf(base + dir.file("gpu.png"))).exit_code, 0);
+    const auto r = run_command(gpsurf(base + dir.file("cpu.png") + cpu));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const Image gpu = read_image(dir.file("gpu.png")), image = read_image(dir.file("cpu.png"));
+    int drawn = 0, different = 0;
+    for (int y = 0; y < gpu.height; ++y)
+      for (int x = 0; x < gpu.width; ++x) {
+        drawn += gpu.at(x, y, 0) < 0.97f;
+        float d = 0;
+        for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(gpu.at(x, y, c) - image.at(x, y, c)));
+        different += d > 0.1f;
+      }
+    EXPECT_GT(drawn, 4000) << cpu;
+    EXPECT_LT(different, drawn / 100) << cpu << ": " << different << " of " << drawn << " pixels differ";
+  }
+}
+
 }  // namespace
 }  // namespace gps
