@@ -194,6 +194,49 @@ Sharpness sharpness_of_tags(const SharpTags& tags, const PolygonSoup& soup, cons
   return out;
 }
 
+// The lines of an OBJ text, a line ending in '\\' joined with the next by a space (the format's line
+// continuation), numbered by their first line as messages name them.
+class ObjLines {
+public:
+  explicit ObjLines(std::string_view text) : lines_(text) { join(); }
+  bool done() const { return done_; }
+  std::string_view line() const { return line_; }
+  int number() const { return number_; }
+  void next() {
+    lines_.next();
+    join();
+  }
+
+private:
+  static bool continued(std::string_view line) {
+    const size_t last = line.find_last_not_of(" \t");
+    return last != std::string_view::npos && line[last] == '\\';
+  }
+  void join() {
+    done_ = lines_.done();
+    number_ = lines_.number();
+    line_ = lines_.line();
+    if (done_ || !continued(line_)) return;
+    joined_.clear();
+    for (std::string_view part = line_;; part = lines_.line()) {
+      if (!continued(part)) {
+        joined_ += part;
+        break;
+      }
+      joined_ += part.substr(0, part.find_last_not_of(" \t"));
+      joined_ += ' ';
+      lines_.next();
+      if (lines_.done()) break;
+    }
+    line_ = joined_;
+  }
+  LineCursor lines_;
+  bool done_ = false;
+  int number_ = 0;
+  std::string_view line_;
+  std::string joined_;
+};
+
 }  // namespace
 
 CovarianceMesh parse_obj(std::string data, const std::string& source) {
@@ -214,7 +257,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   // Two passes over the lines: the first counts the vertices and face corners, so that the arrays are
   // reserved at their exact sizes and the faces are stored flat (an offset per face, an index per corner).
   size_t n_points = 0, n_faces = 0, n_corners = 0;
-  for (LineCursor lines(data); !lines.done(); lines.next()) {
+  for (ObjLines lines(data); !lines.done(); lines.next()) {
     std::string_view line = lines.line();
     const std::string_view keyword = next_word(line);
     if (keyword == "v") ++n_points;
@@ -229,7 +272,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   faces.verts.reserve(n_corners);
   SharpTags tags;
   DroppedAttributes dropped;
-  for (LineCursor lines(data); !lines.done(); lines.next()) {
+  for (ObjLines lines(data); !lines.done(); lines.next()) {
     std::string_view line = lines.line();
     const auto at = [&] { return source + ": line " + std::to_string(lines.number()) + ": "; };
     const std::string_view keyword = next_word(line);
@@ -303,7 +346,7 @@ void find_obj_lines(std::string_view data, const std::vector<int>& vertices, con
   const int last_vertex = vertices.empty() ? -1 : *std::max_element(vertices.begin(), vertices.end());
   const int last_face = faces.empty() ? -1 : *std::max_element(faces.begin(), faces.end());
   int n_vertices = 0, n_faces = 0;
-  for (LineCursor lines(data); !lines.done() && (n_vertices <= last_vertex || n_faces <= last_face); lines.next()) {
+  for (ObjLines lines(data); !lines.done() && (n_vertices <= last_vertex || n_faces <= last_face); lines.next()) {
     std::string_view line = lines.line();
     const std::string_view keyword = next_word(line);
     if (keyword == "v" && wanted_vertices.count(n_vertices++)) numbering.vertex_lines[n_vertices - 1] = lines.number();

@@ -275,6 +275,32 @@ TEST(MeshImport, AByteOrderMarkAndExportersSpellingsAreRead) {
   EXPECT_EQ(read_mesh(dir.write("b.stl", "\xEF\xBB\xBF  SOLID x\n" + facet + "ENDSOLID x\n")).n_faces(), 1u);
 }
 
+// A line ending in a backslash goes on in the next (the OBJ format's line continuation, which
+// exporters use for long faces); it was refused with a message that did not say why. Messages name
+// a continued line by its first line.
+TEST(MeshImport, ObjLinesContinuedByABackslashAreJoined) {
+  test::TempDir dir;
+  const std::string text = "v 0 0 \\\n  0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 \\\r\n 3 \\ \n4\nv 7 7 7\n";
+  const CovarianceMesh m = read_mesh(dir.write("c.obj", text));
+  ASSERT_EQ(m.n_vertices(), 5u);
+  ASSERT_EQ(m.n_faces(), 1u);
+  EXPECT_EQ(m.face_size(0), 4);
+  EXPECT_EQ(m.mean(0), Vec3(0, 0, 0));
+  EXPECT_EQ(m.mean(4), Vec3(7, 7, 7));
+  ElementNumbering lines;
+  find_obj_lines(text, {1, 4}, {0}, lines);
+  EXPECT_EQ(lines.vertex_lines, (std::unordered_map<int, int>{{1, 3}, {4, 9}}));
+  EXPECT_EQ(lines.face_lines, (std::unordered_map<int, int>{{0, 6}}));
+  try {
+    read_mesh(dir.write("bad.obj", "v 0 0 0\nv 1 \\\n0 x\n"));
+    FAIL() << "read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("line 2: "), std::string::npos) << e.what();
+  }
+  // A backslash on the last line continues nothing: the line as it stands.
+  EXPECT_THROW(read_mesh(dir.write("end.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\")), Error);
+}
+
 TEST(MeshImport, AsciiStlFacetsOfOtherThanThreeVerticesAndTruncationAreRefused) {
   const std::string facet =
       "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n"
