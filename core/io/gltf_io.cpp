@@ -49,6 +49,12 @@ std::string loader_error(const std::string& text) {
   if (const std::string missing = "File not found : "; text.rfind(missing, 0) == 0)
     return "names a buffer file " + quoted_token(first_line(text.substr(missing.size()))) +
            " that is not there (buffer files are read from the .gltf's folder)";
+  if (text.rfind("JSON string too short", 0) == 0) return "is too short to be a glTF file";
+  if (text.rfind("\"asset\" object not found", 0) == 0)
+    return "has no \"asset\" object (a glTF file names its version there: \"asset\": {\"version\": \"2.0\"})";
+  if (text.rfind("Invalid `byteStride' value", 0) == 0)
+    return "has a bufferView whose byteStride is not a multiple of 4 from 4 to 252 (glTF's rule), got" +
+           first_line(text.substr(text.rfind(':') + 1));
   return first_line(text);
 }
 

@@ -424,6 +424,14 @@ TEST(GltfIo, MalformedFilesAreRefusedInOneLineNamingFileAndElement) {
   expect_refused(
       dir.write("gone.gltf", buffers + "\"gone.bin\"}]}"),
       "gone.gltf: names a buffer file 'gone.bin' that is not there (buffer files are read from the .gltf's folder)");
+  // tinygltf's own words were shown for these.
+  expect_refused(dir.write("empty.gltf", "{}"), "empty.gltf: is too short to be a glTF file");
+  expect_refused(dir.write("unversioned.gltf", "{\"scenes\": []}"), "unversioned.gltf: has no \"asset\" object");
+  expect_refused(dir.write("stride.gltf", buffers + "\"data:application/octet-stream;base64,AAAAAAAAAAAAAAAA\"}], "
+                                                     "\"bufferViews\": [{\"buffer\": 0, \"byteLength\": 12, "
+                                                     "\"byteStride\": 256}]}"),
+                 "stride.gltf: has a bufferView whose byteStride is not a multiple of 4 from 4 to 252 (glTF's rule), "
+                 "got 256");
 
   HandMade past = cube;
   past.j["accessors"][1]["count"] = 40;  // 80 bytes of a 72-byte view
