@@ -1,6 +1,7 @@
 // Designer replays in a real window under Xvfb: the tools chained into a part as a designer makes it,
 // each saved file checked exactly against core's operations: a chisel from the cube, creased and
-// bevelled; a knifed feature line on the cylinder, creased and sharpened. (The mirrored bracket is in
+// bevelled; a knifed feature line on the cylinder, creased and sharpened; a mug with a bridged handle.
+// (The mirrored bracket is in
 // test_editor_mirror.cpp.) Screenshots kept in build/test-artefacts/EditorDesignerReplays/.
 #include <gtest/gtest.h>
 
@@ -9,8 +10,12 @@
 
 #include "core/io/mesh_io.h"
 #include "core/modelling/bevel.h"
+#include "core/modelling/bridge.h"
 #include "core/modelling/crease_edges.h"
+#include "core/modelling/extrude.h"
+#include "core/modelling/inset.h"
 #include "core/modelling/knife.h"
+#include "core/modelling/loop_cut.h"
 #include "core/modelling/samples.h"
 #include "core/reference/reference_subdivision.h"
 #include "tests/support/editor_tools_fixture.h"
@@ -178,6 +183,89 @@ TEST_F(EditorTools, DesignerReplayKnifeFeatureLine) {
   }
   ASSERT_EQ(saved.sharpness.creases.size(), 4u);
   for (int v = 24; v < 28; ++v) EXPECT_EQ(saved.sharpness.crease(v, v + 1), kInfiniteSharpness) << v;
+}
+
+
+// The centre of a face's corners.
+Vec3 face_centre(const CovarianceMesh& mesh, int f) {
+  Vec3 c = Vec3::Zero();
+  for (const int v : mesh.face(size_t(f))) c += mesh.mean(size_t(v)) / double(mesh.face_size(size_t(f)));
+  return c;
+}
+
+// Of the faces whose centres lie on the cylinder's outer wall (radius past 0.85) between heights lo
+// and hi, the one whose centre is nearest `near`.
+int wall_face_nearest(const CovarianceMesh& mesh, double lo, double hi, const Vec3& near) {
+  int best = -1;
+  for (int f = 0; f < int(mesh.n_faces()); ++f) {
+    const Vec3 c = face_centre(mesh, f);
+    if (c.y() < lo || c.y() > hi || Vec3(c.x(), 0, c.z()).norm() < 0.85) continue;
+    if (best < 0 || (c - near).norm() < (face_centre(mesh, best) - near).norm()) best = f;
+  }
+  return best;
+}
+
+// A designer's mug from the cylinder in 9 actions (Blender about 28): a box around the top cap,
+// I 0.2 Enter, E −1.5 Enter (the cup hollowed); face mode (3); Ctrl+R 2 on the upper row's front
+// vertical edge, its slide 0 (that row cut in three); the top strip's front face clicked, E 0.6 Enter
+// (the handle's upper stub); Shift+click on the lower row's face below it, Ctrl+E (the stub's end and
+// that face bridged and deleted: the handle); the save. (Alt+A, the View panel's "base mesh" and Home
+// only show it.) The file is core's operations in that order:
+// closed, outward, one part of genus 1, the handle standing out from the wall in front.
+TEST_F(EditorTools, DesignerReplayMugWithABridgedHandle) {
+  use_mesh(make_sample("cylinder"));  // rings of 8 at y = −1, 0, 1 (vertices 0–7, 8–15, 16–23); top cap 16
+  const Vec3 eye = to_vec(view_.camera.eye());
+  int front = 0;  // the vertical edges' column nearest the camera
+  for (int k = 1; k < 8; ++k)
+    if ((original_.mean(size_t(8 + k)) - eye).norm() < (original_.mean(size_t(8 + front)) - eye).norm()) front = k;
+  // The same operations in core, for the faces to click and the file to expect.
+  const Modelled inset = inset_faces(original_, {16}, 0.2);
+  const Modelled hollow = extrude_faces(inset.mesh, faces_within(inset.mesh, inset.selection), -1.5);
+  const Modelled rows = loop_cut(hollow.mesh, 8 + front, 16 + front, 2);
+  const int top = wall_face_nearest(rows.mesh, 0.67, 1.0, eye);
+  const Modelled stub = extrude_faces(rows.mesh, {top}, 0.6);
+  const std::vector<int> stub_end = faces_within(stub.mesh, stub.selection);
+  ASSERT_EQ(stub_end.size(), 1u);
+  const Vec3 above = face_centre(rows.mesh, top);
+  const int below = wall_face_nearest(stub.mesh, -1.0, 0.0, Vec3(above.x(), -0.5, above.z()));
+  const Modelled mug = bridge_faces(stub.mesh, {stub_end[0], below});
+
+  Events e;
+  glm::vec2 lo(1e9f), hi(-1e9f);
+  for (int v = 16; v < 24; ++v) {
+    lo = glm::min(lo, pixel_of(view_, original_.mean(size_t(v))));
+    hi = glm::max(hi, pixel_of(view_, original_.mean(size_t(v))));
+  }
+  e.drag(lo - 10.0f, hi + 10.0f, 8).wait();
+  e.key("i").wait().text("0.2").wait().key("enter").wait();
+  e.key("e").wait().text("-1.5").wait().key("enter").wait();
+  e.key("3").wait();
+  const glm::vec2 edge =
+      pixel_of(view_, 0.5 * (hollow.mesh.mean(size_t(8 + front)) + hollow.mesh.mean(size_t(16 + front))));
+  e.key("ctrl+r").move(edge).wait().text("2").wait().click(edge).wait().text("0").wait().key("enter").wait();
+  e.click(pixel_of(view_, above)).wait().key("e").wait().text("0.6").wait().key("enter").wait();
+  e.click(pixel_of(view_, face_centre(stub.mesh, below)), "shift").wait().key("ctrl+e").wait();
+  e.key("alt+a").wait().click(kBaseMeshBox).wait().key("home").wait(3);  // to look at it: the surface alone
+  const CovarianceMesh saved = play(e, "designer_mug.png");
+  EXPECT_NE(output_.find("bridged two loops of 4 vertices"), std::string::npos) << output_;
+
+  EXPECT_TRUE(test::nearly_same_mesh(saved, mug.mesh, 1e-9)) << output_;
+  const test::Shape shape = test::shape_of(saved);
+  EXPECT_EQ(shape.vertices, 24 + 8 + 8 + 16 + 4);
+  EXPECT_EQ(shape.faces, 18 + 8 + 8 + 16 + 4 - 2 + 4);
+  EXPECT_EQ(shape.boundary_edges, 0);
+  EXPECT_TRUE(shape.oriented);
+  EXPECT_EQ(shape.euler(), 0) << "genus 1: the handle";
+  EXPECT_GT(test::signed_volume(saved), 0.0);
+  // Hollow to 0.5 above the base; the handle stands out of the wall by the stub's 0.6.
+  double deepest = 1, farthest = 0;
+  for (size_t v = 0; v < saved.n_vertices(); ++v) {
+    const Vec3 p = saved.mean(v);
+    if (Vec3(p.x(), 0, p.z()).norm() < 0.9) deepest = std::min(deepest, p.y());
+    farthest = std::max(farthest, Vec3(p.x(), 0, p.z()).norm());
+  }
+  EXPECT_NEAR(deepest, -0.5, 1e-9);
+  EXPECT_GT(farthest, 1.4);
 }
 
 }  // namespace
