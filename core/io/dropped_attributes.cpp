@@ -33,7 +33,10 @@ void count_unread_vertex_properties(const std::vector<std::string>& names, size_
 
 std::string named_list(const std::string& one, const std::string& many, const std::vector<std::string>& names) {
   if (names.empty()) return "";
-  return (names.size() == 1 ? one : many) + " " + listed(names);
+  if (names.size() <= kNamesListed) return (names.size() == 1 ? one : many) + " " + listed(names);
+  std::vector<std::string> first(names.begin(), names.begin() + kNamesListed - 1);
+  first.push_back(std::to_string(names.size() - first.size()) + " more");
+  return many + " " + listed(first);
 }
 
 std::string dropped_attributes_note(const std::string& source, const DroppedAttributes& dropped) {

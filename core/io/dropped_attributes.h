@@ -19,7 +19,10 @@ struct DroppedAttributes {
 /// `dropped`: normals, colours and texture coordinates counted, any other named.
 void count_unread_vertex_properties(const std::vector<std::string>& names, size_t count, DroppedAttributes& dropped);
 
-/// "ONE A" or "MANY A, B and C" ("vertex property 'q'", "the tags 'holes' and 'x'"); "" for no names.
+/// How many names a note lists at most: a file's thousands of names would make a line of thousands.
+inline constexpr size_t kNamesListed = 8;
+/// "ONE A" or "MANY A, B and C" ("vertex property 'q'", "the tags 'holes' and 'x'"), past kNamesListed
+/// names the first ones and "and N more"; "" for no names.
 std::string named_list(const std::string& one, const std::string& many, const std::vector<std::string>& names);
 
 /// "SOURCE: 4 texture coordinates, 1 normal and 4 vertex colours dropped (a covariance mesh keeps
