@@ -2,6 +2,7 @@
 
 #include <iostream>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -82,11 +83,36 @@ void check_words(const CLI::App& app, const std::vector<std::string>& args) {
   }
 }
 
-// CLI11's message in ours where it has its own wording.
+// CLI11's message in ours where it has its own wording: an option given twice, a value missing, words
+// left over, options that exclude each other, a word not among the choices, something required.
 std::string in_our_words(const std::string& message) {
   const std::string at_most = ": At Most 1 required but received ";
   if (const size_t at = message.find(at_most); at != std::string::npos)
     return message.substr(0, at) + " is given " + message.substr(at + at_most.size()) + " times; give it once";
+  if (const size_t at = message.find(": 1 required "); at != std::string::npos && message.ends_with(" missing"))
+    return message.substr(0, at) + " needs a value after it";
+  for (const std::string extra : {"The following argument was not expected: ",
+                                  "The following arguments were not expected: "})
+    if (message.starts_with(extra)) {
+      std::string words;
+      std::istringstream rest(message.substr(extra.size()));
+      for (std::string word; rest >> word;) words = quoted_token(word) + (words.empty() ? "" : ", ") + words;  // CLI11 lists them last first
+      return "more words than the command takes: " + words + " (its --help lists what it takes)";
+    }
+  if (const size_t at = message.find(" excludes "); at != std::string::npos && message.starts_with("-"))
+    return message.substr(0, at) + " and " + message.substr(at + 10) + " exclude each other; give one of them";
+  if (const size_t at = message.find(" not in {"); at != std::string::npos && message.ends_with("}")) {
+    const size_t name_end = message.rfind(": ", at);
+    const std::string name = name_end == std::string::npos ? "" : message.substr(0, name_end) + ": ";
+    const size_t word = name_end == std::string::npos ? 0 : name_end + 2;
+    std::string choices = message.substr(at + 9, message.size() - at - 10);
+    for (size_t comma = choices.find(','); comma != std::string::npos; comma = choices.find(',', comma + 2))
+      choices.replace(comma, 1, ", ");
+    return name + "expected one of " + choices + ", got " + quoted_token(message.substr(word, at - word));
+  }
+  if (const std::string required = " is required"; message.ends_with(required) && message.find(' ') == message.size() - required.size())
+    return (message.starts_with("-") ? "" : "the ") + message.substr(0, message.size() - required.size()) +
+           " is missing (the command's --help says what to give)";
   return message;
 }
 

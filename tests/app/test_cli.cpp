@@ -305,7 +305,18 @@ TEST(Cli, UnknownWordsAreNamedFirst) {
            {"info --bogus", "gpsurf: unknown option '--bogus' (gpsurf info --help lists them)"},
            {"sample cube -o " + dir.file("c.ply") + " --size 5 --size 6",
             "gpsurf: --size is given 2 times; give it once"},
-           {"sample cube -o " + dir.file("c.ply") + " --size -5", "gpsurf: --size: "}}) {
+           {"sample cube -o " + dir.file("c.ply") + " --size -5", "gpsurf: --size: "},
+           // CLI11's own wording ("--level: 1 required INT:INTEGER:[1, 64] missing", "The following
+           // argument was not expected: b", "--level excludes --pixels", "foo not in {…}", "file is
+           // required") in ours.
+           {"tessellate " + dir.file("c.ply") + " -o " + dir.file("t.ply") + " --level",
+            "gpsurf: --level needs a value after it"},
+           {"info a.ply b.ply c.ply", "gpsurf: more words than the command takes: 'b.ply', 'c.ply'"},
+           {"render a.ply -o a.png --level 4 --pixels 5",
+            "gpsurf: --level and --pixels exclude each other; give one of them"},
+           {"tessellate a.ply -o t.ply --scheme foo",
+            "gpsurf: --scheme: expected one of auto, loop, catmull-clark, got 'foo'"},
+           {"info", "gpsurf: the file is missing (the command's --help says what to give)"}}) {
     const auto r = run_command(gpsurf(args));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
     EXPECT_EQ(r.output.rfind(message, 0), 0u) << args << ": " << r.output;
