@@ -5,6 +5,7 @@
 
 #include "app/cli_checks.h"
 #include "app/repair_arguments.h"
+#include "app/run_command_line.h"
 #include "core/support/error.h"
 #include "core/support/freed_memory.h"
 #include "ui/editor/editor.h"
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
   gps::RepairArguments repair;  // as gpsurf's commands take them; the weld tolerance also for the repair dialog's
   gps::add_repair_arguments(&app, repair);
   app.failure_message(
-      [](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + std::string(e.what()) + "\n"; });
+      [](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + gps::in_our_words(e.what()) + "\n"; });
   try {
     app.parse(argc, argv);
     if (save->count() > 0 && o.save.empty()) throw CLI::ValidationError("--save", "give a file to save to, got ''");
@@ -50,6 +51,10 @@ int main(int argc, char** argv) {
     o.import = repair.import_options();
     return gps::run_editor(o);
   } catch (const CLI::ParseError& e) {
+    if (std::string(e.what()).find(": File does not exist: ") != std::string::npos) {  // as gpsurf's commands: 1
+      std::cerr << "gpsurf-editor: " << gps::in_our_words(e.what()) << "\n";
+      return 1;
+    }
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   } catch (const gps::Error& e) {

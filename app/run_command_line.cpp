@@ -83,12 +83,16 @@ void check_words(const CLI::App& app, const std::vector<std::string>& args) {
   }
 }
 
-// CLI11's message in ours where it has its own wording: an option given twice, a value missing, words
-// left over, options that exclude each other, a word not among the choices, something required.
+}  // namespace
+
+// A file that is not there, an option given twice, a value missing, words left over, options that exclude each other, a word
+// not among the choices, something required.
 std::string in_our_words(const std::string& message) {
   const std::string at_most = ": At Most 1 required but received ";
   if (const size_t at = message.find(at_most); at != std::string::npos)
     return message.substr(0, at) + " is given " + message.substr(at + at_most.size()) + " times; give it once";
+  if (const std::string missing = ": File does not exist: "; message.find(missing) != std::string::npos)
+    return escaped(message.substr(message.find(missing) + missing.size())) + ": no such file";
   if (const size_t at = message.find(": 1 required "); at != std::string::npos && message.ends_with(" missing"))
     return message.substr(0, at) + " needs a value after it";
   for (const std::string extra : {"The following argument was not expected: ",
@@ -115,8 +119,6 @@ std::string in_our_words(const std::string& message) {
            " is missing (the command's --help says what to give)";
   return message;
 }
-
-}  // namespace
 
 int run_command_line(CLI::App& app, int argc, char** argv) {
   // Every message is escaped once more here, so that whatever it quotes it stays one harmless line.

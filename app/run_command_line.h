@@ -9,4 +9,8 @@ namespace gps {
 /// every message begins "gpsurf: ".
 int run_command_line(CLI::App& app, int argc, char** argv);
 
+/// CLI11's message in our words where it has its own wording ("--level excludes --pixels": "--level
+/// and --pixels exclude each other; give one of them"), else as it is.
+std::string in_our_words(const std::string& message);
+
 }  // namespace gps

@@ -256,6 +256,13 @@ TEST(EditorCommandLine, BadInputIsOneLineAndNonZero) {
   EXPECT_EQ(e.exit_code, 2) << e.output;
   EXPECT_NE(e.output.find("e.json: event 0: unknown type 'hop'"), std::string::npos) << e.output;
   EXPECT_EQ(test::run_command(editor("--size 12")).exit_code, 2);
+  // A file that is not there, and a choice not among the choices, in our words (CLI11's were shown).
+  const auto gone = test::run_command(editor(dir.file("gone.ply")));
+  EXPECT_EQ(gone.exit_code, 1) << gone.output;
+  EXPECT_EQ(gone.output, "gpsurf-editor: " + dir.file("gone.ply") + ": no such file\n");
+  const auto scheme = test::run_command(editor("--scheme foo"));
+  EXPECT_EQ(scheme.exit_code, 2) << scheme.output;
+  EXPECT_EQ(scheme.output, "gpsurf-editor: --scheme: expected one of auto, loop, catmull-clark, got 'foo'\n");
 }
 
 }  // namespace
