@@ -344,8 +344,8 @@ void run_script(const std::string& path, const std::string& context_name) {
         if (!edit.is_object()) throw usage_error(named + ": give {\"vertex\": i, ...}");
         const long long v = script_integer(edit, "vertex", 0, std::numeric_limits<int>::max());
         if (size_t(v) >= mesh.n_vertices())
-          throw usage_error(named + ": edit of vertex " + std::to_string(v) + ", but the mesh has " +
-                            std::to_string(mesh.n_vertices()));
+          throw Error(named + ": vertex " + std::to_string(v) + " is not in the mesh (" +
+                      std::to_string(mesh.n_vertices()) + " vertices)");  // as gpsurf edit says it, exit 1
         if (edit.contains("mean")) {
           const std::vector<double> m = script_numbers(edit, "mean", 3);
           mesh.set_mean(size_t(v), Vec3(m[0], m[1], m[2]));

@@ -361,6 +361,13 @@ TEST(RenderCli, ScriptNumbersOutsideTheirTypeAreRefused) {
     EXPECT_EQ(r.output.find("json.exception"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(out)) << job;
   }
+  // A vertex past the mesh is refused as gpsurf edit refuses it, in its words and with its exit 1.
+  const std::string script = dir.write("s.json", R"({"renders": [{"mesh": "sample:cube", "output": ")" + out +
+                                                     R"(", "edits": [{"vertex": 8, "scale": 2}]}]})");
+  const auto r = run_command(gpsurf("render --script " + script));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("render 0: edits[0]: vertex 8 is not in the mesh (8 vertices)"), std::string::npos)
+      << r.output;
 }
 
 // The EGL context (surfaceless Mesa here, a GPU driver's device elsewhere) renders what OSMesa renders.
