@@ -19,6 +19,25 @@
 #include "core/io/mesh_io.h"
 
 namespace gps {
+namespace {
+
+// Why a fit that found no step may have found none: a target lying apart from the mesh, farther than
+// the larger of the two is across (the fit pulls a surface onto points near it); "" otherwise.
+std::string target_apart(const CovarianceMesh& mesh, const std::vector<Vec3>& targets) {
+  if (targets.empty() || mesh.n_vertices() == 0) return "";
+  Vec3 lo, hi, target_lo = targets.front(), target_hi = targets.front();
+  bounding_box(mesh, lo, hi);
+  for (const Vec3& p : targets) target_lo = target_lo.cwiseMin(p), target_hi = target_hi.cwiseMax(p);
+  const Vec3 gap = (target_lo - hi).cwiseMax(lo - target_hi).cwiseMax(0.0);
+  const double size = std::max((hi - lo).norm(), (target_hi - target_lo).norm());
+  if (!(gap.norm() > size)) return "";
+  std::ostringstream said;
+  said << "; the target lies " << gap.norm() << " from the mesh, " << std::max(1.0, std::round(gap.norm() / size))
+       << " times their size: place the mesh over the target first";
+  return said.str();
+}
+
+}  // namespace
 
 void add_fit_command(CLI::App& app) {
   struct Args {
@@ -118,7 +137,8 @@ void add_fit_command(CLI::App& app) {
     const FitResult result = naming_input(args->coarse, [&] { return fit_limit_surface(coarse, targets, options); });
     bar.finish();
     if (!args->quiet)
-      std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop) << "\n";
+      std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop)
+                << (result.stop == FitStop::no_descent ? target_apart(coarse, targets) : "") << "\n";
     write_mesh_noting(args->output, result.mesh, !args->ascii, args->quiet);
     if (args->quiet) return;
     std::cout << "wrote " << args->output << "\n";
