@@ -37,12 +37,18 @@ std::vector<double> dihedral_angles(const CovarianceMesh& m) {
   return angles;
 }
 
+namespace {
+constexpr double kAngleRounding = 1e-11;  // degrees
+}  // namespace
+
 std::vector<std::array<int, 2>> edges_sharper_than(const CovarianceMesh& m, double degrees) {
   const std::vector<double> angles = dihedral_angles(m);
   std::vector<std::array<int, 2>> sharp;
   for (size_t e = 0; e < m.n_edges(); ++e) {
     const double angle = angles[e];
-    if (angle < 0 || !(angle > degrees)) continue;
+    // An angle the threshold's within the rounding of the faces' normals is the threshold: edges alike
+    // by symmetry get the same answer.
+    if (angle < 0 || !(angle > degrees + kAngleRounding)) continue;
     sharp.push_back(m.edge(e));
   }
   std::sort(sharp.begin(), sharp.end());

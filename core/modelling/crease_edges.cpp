@@ -63,10 +63,7 @@ Modelled crease_sharp_edges(const CovarianceMesh& mesh, double degrees, double s
   if (!(degrees >= 0 && degrees < 180))
     throw Error("the angle must be from 0 to less than 180 degrees, got " + short_number(degrees));
   check_sharpness(sharpness);
-  const std::vector<double> angles = dihedral_angles(mesh);
-  std::vector<std::array<int, 2>> sharp;
-  for (size_t e = 0; e < mesh.n_edges(); ++e)
-    if (angles[e] > degrees) sharp.push_back(mesh.edge(e));
+  const std::vector<std::array<int, 2>> sharp = edges_sharper_than(mesh, degrees);
   Modelled out = set_crease(mesh, sharp, sharpness);
   out.summary = "set the crease of " + count_of(sharp.size(), "edge", "edges") + " sharper than " +
                 short_number(degrees) + "° to " + sharpness_words(sharpness);

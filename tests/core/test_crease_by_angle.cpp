@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/mesh/crease_by_angle.h"
+#include "core/modelling/bevel.h"
 #include "core/modelling/samples.h"
 
 namespace gps {
@@ -75,6 +76,16 @@ TEST(CreaseByAngle, EdgesSharperThanAnAngle) {
   const double tetra = 180.0 - std::acos(1.0 / 3.0) * 180.0 / M_PI;
   EXPECT_EQ(edges_sharper_than(tetrahedron(), tetra - 1e-9).size(), 6u);
   EXPECT_TRUE(edges_sharper_than(tetrahedron(), tetra + 1e-9).empty());
+  // A cube's edge bevelled in 3 segments: its band's faces turn by 30° at each of their two edges
+  // between, alike by symmetry, which rounding put on either side of 30° (one edge was sharp, the
+  // other not). Both are at the threshold now, not sharper.
+  const CovarianceMesh bevelled = bevel_edges(cube, {{0, 1}}, BevelOptions{.width = 0.2, .segments = 3}).mesh;
+  const std::vector<double> angles = dihedral_angles(bevelled);
+  int at_threshold = 0;
+  for (const double a : angles) at_threshold += std::abs(a - 30.0) < 1e-9;
+  EXPECT_EQ(at_threshold, 2);
+  EXPECT_EQ(edges_sharper_than(bevelled, 30.0).size(), 17u);  // the 11 unbevelled edges and the band's 6 rims
+  EXPECT_EQ(edges_sharper_than(bevelled, 30.0 - 1e-9).size(), 19u);
 }
 
 }  // namespace
