@@ -335,7 +335,7 @@ private:
                     edge_name(int(limiting >> 32), int(limiting & 0xffffffffu)) + " (at most " + short_number(limit) +
                     "; clamp limits it)");
       width_ = limit;
-      clamped_ = true;
+      clamped_ = limit < o_.width * (1 - 1e-9);  // a width at its limit but for rounding is not reported
     }
     // Vertices closer than the repair's weld tolerance coincide (core/io/mesh_repair.h), so that a
     // bevel leaves nothing the repair would weld: new vertices that near each other, or the vertex

@@ -106,7 +106,10 @@ Modelled bisect(const CovarianceMesh& mesh, const Vec3& point, const Vec3& norma
     on_cut.insert(on_cut.end(), points.begin(), points.end());
     ++split_faces;
   }
-  if (split_faces == 0) throw Error("the plane crosses no face of the mesh");
+  if (split_faces == 0)
+    throw Error(std::count(side.begin(), side.end(), 1) > 0 && std::count(side.begin(), side.end(), -1) > 0
+                    ? "the plane runs along edges of the mesh, which cut it there already: nothing to cut"
+                    : "the plane crosses no face of the mesh");
   std::sort(on_cut.begin(), on_cut.end());
   on_cut.erase(std::unique(on_cut.begin(), on_cut.end()), on_cut.end());
   Modelled out = modelled(mesh, a, on_cut);

@@ -53,6 +53,12 @@ TEST(BevelEdges, AClampedWidthLeavesNoCoincidentVerticesNorFacesWithoutArea) {
     for (int f = 0; f < a.n_faces(); ++f) EXPECT_GT(newell_normal(a, f).norm(), 1e-6) << "face " << f;
     for (const int v : c.result.selection) EXPECT_LT(size_t(v), m.n_vertices());
   }
+  // A width at its limit but for rounding is not reported as clamped (50 % of a cylinder's edges at
+  // every vertex of a ring said "width clamped to 50").
+  BevelOptions half = width(50);
+  half.width_type = BevelWidth::percent;
+  const Modelled ring = bevel_vertices(make_sample("cylinder"), {0, 1, 2, 3, 4, 5, 6, 7}, half);
+  EXPECT_EQ(ring.summary.find("clamped"), std::string::npos) << ring.summary;
   // A width that leaves new vertices within a millionth of the mesh's size of where they start is refused.
   EXPECT_EQ(error_of([&] {
               bevel_edges(cube, {{4, 5}}, width(1e-12));

@@ -149,6 +149,10 @@ TEST(Bisect, RefusalsSayWhy) {
             "the plane has a number that is not finite");
   // A face of the cube lies in the plane z = 1: nothing is crossed.
   EXPECT_EQ(error_of([&] { bisect(cube, Vec3(0, 0, 1), Vec3(0, 0, 1)); }), "the plane crosses no face of the mesh");
+  // A plane through a loop of edges (a cylinder's middle ring) has the mesh on both sides: it was said
+  // to cross no face.
+  EXPECT_EQ(error_of([&] { bisect(make_sample("cylinder"), Vec3::Zero(), Vec3(0, 1, 0)); }),
+            "the plane runs along edges of the mesh, which cut it there already: nothing to cut");
 }
 
 TEST(Bisect, TheOperationList) {
