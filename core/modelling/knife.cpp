@@ -288,11 +288,13 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
       throw Error(name + " is at point " + std::to_string(i));
     places.push_back(*p);
   }
-  // A path that ends where it began would cut a loop, which a knife's open path does not make here.
-  if (places.size() > 2 && (places.back().at - places.front().at).norm() <= tolerance)
+  // A path that ends where it began cuts a loop (as Blender's knife closes one on its first point),
+  // round at least three points: its ends are one place.
+  const bool closed = places.size() > 2 && (places.back().at - places.front().at).norm() <= tolerance;
+  if (closed && places.size() < 4)
     throw Error("point " + std::to_string(places.size()) +
-                " closes the path on point 1; the knife cuts open paths (leave the last point out, or cut the "
-                "loop in two paths)");
+                " closes the path on point 1 after one other point; a loop needs three points or more");
+  if (closed) places.back() = places.front();
 
   // The cut as a start and steps, each segment along its own plane.
   std::vector<std::vector<int>> faces_at(size_t(a.n_vertices()));
@@ -312,9 +314,10 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
     const std::vector<Step> more = walk_segment(a, faces_at, edges, from, to, plane, on_plane, i);
     steps.insert(steps.end(), more.begin(), more.end());
     // A path end inside a face is moved on along the cut, away from the rest of it, to the face's edge.
-    if (i + 2 == places.size() && to.kind == Place::inside)
+    if (i + 2 == places.size() && to.kind == Place::inside && !closed)
       steps.back().to = run_on(a, to, steps.size() > 1 ? steps[steps.size() - 2].to.at : from.at, plane, on_plane, i);
-    if (i == 0 && start.kind == Place::inside) start = run_on(a, start, steps.front().to.at, plane, on_plane, i);
+    if (i == 0 && start.kind == Place::inside && !closed)
+      start = run_on(a, start, steps.front().to.at, plane, on_plane, i);
   }
 
   // Vertices along the cut, in its order: new ones on edges (one per crossing place) and inside faces.
@@ -332,13 +335,23 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
   // The cut's chords by face: from a vertex or edge place through places inside the face to the next.
   std::map<int, std::vector<std::vector<int>>> chords;
   std::vector<int> on_cut = {vertex_of(start)}, chord = on_cut;
-  for (const Step& s : steps) {
-    on_cut.push_back(vertex_of(s.to));
+  std::pair<int, size_t> first_chord{-1, 0};  // (face, index in chords[face]) of the cut's first chord
+  for (size_t k = 0; k < steps.size(); ++k) {
+    const Step& s = steps[k];
+    on_cut.push_back(closed && k + 1 == steps.size() ? on_cut.front() : vertex_of(s.to));
     chord.push_back(on_cut.back());
     if (s.to.kind == Place::inside) continue;
+    if (first_chord.first < 0) first_chord = {s.face, chords[s.face].size()};
     chords[s.face].push_back(chord);
     chord = {on_cut.back()};
   }
+  // A loop that closes inside a face: its last chord and its first are one, through the start.
+  if (closed && start.kind == Place::inside && chord.size() > 1 && first_chord.first >= 0) {
+    std::vector<int>& first = chords[first_chord.first][first_chord.second];
+    chord.insert(chord.end(), first.begin() + 1, first.end());
+    first = chord;
+  }
+  if (closed) on_cut.pop_back();
   for (auto& [key, cut] : on_edges) std::sort(cut.begin(), cut.end());
 
   const bool triangles = all_triangles(a);

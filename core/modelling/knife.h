@@ -20,7 +20,7 @@ namespace gps {
 /// the 9D blend of the face's corners by their mean value coordinates (Floater 2003). A mesh has no
 /// dangling edges, so the path's first and last point, when inside a face, are moved on along the cut
 /// (away from the rest of it) to where it leaves the face: every cut runs from an edge or vertex to
-/// an edge or vertex. On a mesh of triangles the pieces (and the faces beside the path's ends, which
+/// an edge or vertex. A path whose last point is its first (round three points or more) cuts a loop. On a mesh of triangles the pieces (and the faces beside the path's ends, which
 /// gain a corner) are triangulated, so that it stays Loop's. A split face keeps its index for its
 /// first piece; new vertices (in the path's order) and pieces are appended. Refuses fewer than two
 /// points, a point not on the mesh or not finite ("point 3 is not on the mesh", numbered from 1), two

@@ -147,6 +147,56 @@ TEST(Knife, ATriangleMeshStaysTriangles) {
   EXPECT_GT(signed_volume(a), 0);
 }
 
+// A path that ends on its first point cuts a loop, as Blender's knife closes one: round the cube's
+// side through its vertical edges (a ring of four new vertices, a loop cut's), round a corner through
+// points inside three faces (the start inside one: its first chord and its last are one), and round
+// an icosphere's vertex through the middles of its faces. It was refused.
+TEST(Knife, APathBackToItsStartCutsALoop) {
+  const CovarianceMesh cube = make_sample("cube");
+  const auto closed_and_outward = [](const CovarianceMesh& m) {
+    const test::Shape s = shape_of(arrays_of(m));
+    EXPECT_EQ(s.boundary_edges, 0);
+    EXPECT_TRUE(s.oriented);
+    EXPECT_EQ(s.euler(), 2);
+    EXPECT_GT(signed_volume(arrays_of(m)), 0);
+  };
+  const Modelled ring =
+      knife(cube, {Vec3(-1, -1, 0.5), Vec3(1, -1, 0.5), Vec3(1, 1, 0.5), Vec3(-1, 1, 0.5), Vec3(-1, -1, 0.5)});
+  EXPECT_EQ(ring.mesh.n_vertices(), 12u);
+  EXPECT_EQ(ring.mesh.n_faces(), 10u);
+  EXPECT_EQ(ring.selection, (std::vector<int>{8, 9, 10, 11}));
+  for (const int v : ring.selection) EXPECT_NEAR(ring.mesh.mean(size_t(v)).z(), 0.5, 1e-12);
+  closed_and_outward(ring.mesh);
+
+  const Modelled corner =
+      knife(cube, {Vec3(0.5, -1, 0.5), Vec3(1, -0.5, 0.5), Vec3(0.5, -0.5, 1), Vec3(0.5, -1, 0.5)});
+  closed_and_outward(corner.mesh);
+  EXPECT_EQ(corner.mesh.n_vertices(), 8u + 6u);  // three points inside faces, three crossings of edges
+  EXPECT_EQ(corner.mesh.n_faces(), 6u + 3u);     // each of the three faces cut in two
+  EXPECT_EQ(corner.selection.size(), 6u);
+
+  const CovarianceMesh ico = make_sample("icosphere", 80);
+  const MeshArrays before = arrays_of(ico);
+  std::vector<Vec3> path;
+  for (const auto& face : before.faces)
+    if (std::find(face.begin(), face.end(), 0) != face.end()) {
+      Vec3 c = Vec3::Zero();
+      for (const int v : face) c += before.means[size_t(v)] / 3;
+      path.push_back(c);
+    }
+  ASSERT_GE(path.size(), 5u);
+  // In order round vertex 0: by angle about its normal.
+  const Vec3 n = before.means[0].normalized(), u = n.unitOrthogonal(), w = n.cross(u);
+  std::sort(path.begin(), path.end(), [&](const Vec3& a, const Vec3& b) {
+    return std::atan2(a.dot(w), a.dot(u)) < std::atan2(b.dot(w), b.dot(u));
+  });
+  path.push_back(path.front());
+  const Modelled round = knife(ico, path);
+  EXPECT_TRUE(all_triangles(arrays_of(round.mesh)));
+  closed_and_outward(round.mesh);
+  EXPECT_EQ(round.selection.size(), 2 * (path.size() - 1));  // a point inside each face, a crossing of each edge
+}
+
 // From the pawn's side down over the rim of its base to a point inside a triangle of the base's fan:
 // the end moves on across that triangle the way the cut came (inwards), though the segment itself
 // points outwards there.
@@ -184,12 +234,9 @@ TEST(Knife, RefusalsNameThePointAndChangeNothing) {
   EXPECT_EQ(error_of([&] { knife(cube, {Vec3(0, 0, 0), Vec3(0, 1, 1)}); }), "point 1 is not on the mesh");
   EXPECT_EQ(error_of([&] { knife(cube, {Vec3(0, -1, 1)}); }), "the knife needs at least 2 points, got 1");
   EXPECT_EQ(error_of([&] { knife(cube, {Vec3(0, -1, 1), Vec3(0, -1, 1), Vec3(0, 1, 1)}); }), "point 2 is at point 1");
-  // A path round a corner back to its start.
-  EXPECT_EQ(error_of([&] {
-              knife(cube, {Vec3(0.5, -1, 0.5), Vec3(1, -0.5, 0.5), Vec3(0.5, -0.5, 1), Vec3(0.5, -1, 0.5)});
-            }),
-            "point 4 closes the path on point 1; the knife cuts open paths (leave the last point out, or cut the "
-            "loop in two paths)");
+  // A path back to its start round one other point (a loop needs three).
+  EXPECT_EQ(error_of([&] { knife(cube, {Vec3(0.5, -1, 0.5), Vec3(1, -0.5, 0.5), Vec3(0.5, -1, 0.5)}); }),
+            "point 3 closes the path on point 1 after one other point; a loop needs three points or more");
   EXPECT_EQ(error_of([&] {
               knife(cube, {Vec3(0, -1, 1), Vec3(0, NAN, 1)});
             }),
