@@ -390,6 +390,23 @@ TEST_F(EditorToolsKnife, KnifeAcrossTheCubeTopIsCoresKnife) {
   EXPECT_NE(output_.find("knife: cut 1 face along 2 points"), std::string::npos) << output_;
 }
 
+// K, clicks beside the middles of the top face's four edges and the first again, Enter: the loop
+// core's knife cuts for a path back to its start (a diamond in the face, its corners cut off).
+TEST_F(EditorToolsKnife, KnifeBackToTheFirstPointCutsALoop) {
+  Events loop;
+  loop.move(pixel_at({4, 5, 6, 7})).wait().key("k").wait();
+  for (const auto& [a, b] : std::vector<std::pair<int, int>>{{4, 5}, {5, 6}, {6, 7}, {7, 4}, {4, 5}})
+    loop.click(beside_middle(a, b)).wait();
+  loop.key("enter").wait(3);
+  const CovarianceMesh saved = play(loop, "cube_knife_loop.png");
+  EXPECT_TRUE(test::same_mesh(
+      saved, knife(original_, {middle(4, 5), middle(5, 6), middle(6, 7), middle(7, 4), middle(4, 5)}).mesh))
+      << output_;
+  EXPECT_EQ(saved.n_vertices(), 12u);
+  EXPECT_EQ(saved.n_faces(), 10u);
+  EXPECT_NE(output_.find("knife: cut 1 face along 5 points"), std::string::npos) << output_;
+}
+
 // Esc after two points cancels; two points taken back by Backspace leave nothing to cut on Enter; two
 // more points are only drawn (the screenshot shows the path on to the pointer): the document saved is
 // the file as opened.
