@@ -37,8 +37,7 @@ void add_tessellate_command(CLI::App& app) {
     const PlannedSurface surface = naming_mesh_input(args->input, args->repair.import_options().repair,
                                                      [&] { return PlannedSurface(m, args->plans.options()); });
     TerminalProgress bar("tessellating", args->quiet);
-    const TriangleMesh t = naming_input(
-        args->input, [&] { return tessellate(surface, args->level, bar.report()); });
+    const TriangleMesh t = naming_input(args->input, [&] { return tessellate(surface, args->level, bar.report()); });
     bar.finish();
     write_triangle_mesh(args->output, t, !args->ascii);
     if (args->quiet) return;

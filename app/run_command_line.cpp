@@ -85,8 +85,8 @@ void check_words(const CLI::App& app, const std::vector<std::string>& args) {
 
 }  // namespace
 
-// A file that is not there, an option given twice, a value missing, words left over, options that exclude each other, a word
-// not among the choices, something required.
+// A file that is not there, an option given twice, a value missing, words left over, options that
+// exclude each other, a word not among the choices, something required.
 std::string in_our_words(const std::string& message) {
   const std::string at_most = ": At Most 1 required but received ";
   if (const size_t at = message.find(at_most); at != std::string::npos)
@@ -95,12 +95,13 @@ std::string in_our_words(const std::string& message) {
     return escaped(message.substr(message.find(missing) + missing.size())) + ": no such file";
   if (const size_t at = message.find(": 1 required "); at != std::string::npos && message.ends_with(" missing"))
     return message.substr(0, at) + " needs a value after it";
-  for (const std::string extra : {"The following argument was not expected: ",
-                                  "The following arguments were not expected: "})
+  for (const std::string extra :
+       {"The following argument was not expected: ", "The following arguments were not expected: "})
     if (message.starts_with(extra)) {
       std::string words;
       std::istringstream rest(message.substr(extra.size()));
-      for (std::string word; rest >> word;) words = quoted_token(word) + (words.empty() ? "" : ", ") + words;  // CLI11 lists them last first
+      for (std::string word; rest >> word;)
+        words = quoted_token(word) + (words.empty() ? "" : ", ") + words;  // CLI11 lists them last first
       return "more words than the command takes: " + words + " (its --help lists what it takes)";
     }
   if (const size_t at = message.find(" excludes "); at != std::string::npos && message.starts_with("-"))
@@ -114,7 +115,8 @@ std::string in_our_words(const std::string& message) {
       choices.replace(comma, 1, ", ");
     return name + "expected one of " + choices + ", got " + quoted_token(message.substr(word, at - word));
   }
-  if (const std::string required = " is required"; message.ends_with(required) && message.find(' ') == message.size() - required.size())
+  if (const std::string required = " is required";
+      message.ends_with(required) && message.find(' ') == message.size() - required.size())
     return (message.starts_with("-") ? "" : "the ") + message.substr(0, message.size() - required.size()) +
            " is missing (the command's --help says what to give)";
   return message;

@@ -116,10 +116,8 @@ void update(SurfaceHandle& h, const MeshHandle& mesh, const py::object& changed,
 
 py::tuple tessellation(std::shared_ptr<const PlannedSurface> surface, int level) {
   if (level < 1 || level > 64) throw py::value_error("level: expected 1..64, got " + std::to_string(level));
-  const TriangleMesh t =
-      call_in_background([surface = std::move(surface), level](
-                             CallControl&) { return tessellate(*surface, level); },
-                         py::none(), false);
+  const TriangleMesh t = call_in_background(
+      [surface = std::move(surface), level](CallControl&) { return tessellate(*surface, level); }, py::none(), false);
   return py::make_tuple(read_only(rows_to_array(t.positions)), read_only(rows_to_array(t.normals)),
                         read_only(triangles_to_array(t.triangles)));
 }

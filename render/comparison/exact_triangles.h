@@ -17,6 +17,6 @@ class SurfaceRenderer;
 /// vertices of GL's triangle tessellation: its inner rings lie off the dyadic grid.) `mesh` is the
 /// renderer's mesh; the positions are about its evaluation origin (core/mesh/covariance_mesh.h).
 PlacedTriangles exact_triangles(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const Camera& camera,
-                             const DrawOptions& o, int width, int height);
+                                const DrawOptions& o, int width, int height);
 
 }  // namespace gps

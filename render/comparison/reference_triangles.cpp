@@ -88,7 +88,7 @@ PlacedTriangles reference_in_patch_triangles(SurfaceRenderer& renderer, const Co
     if (p.patch < 0 || i < 0 || i > steps || j < 0 || j > steps) continue;
     if (int& at = vertex_at[slot(p.patch, i, j)]; at < 0) at = t.verts[c];
   }
-  return {patch_triangles(renderer, camera, o, width, height, [&](int patch, double u, double v) {
+  const auto reference_at = [&](int patch, double u, double v) {
     const long i = std::lround(u * steps), j = std::lround(v * steps);
     const bool on_grid = std::abs(u * steps - double(i)) <= 1e-4 && std::abs(v * steps - double(j)) <= 1e-4 &&
                          patch >= 0 && patch < patches && i >= 0 && i <= steps && j >= 0 && j <= steps;
@@ -98,8 +98,8 @@ PlacedTriangles reference_in_patch_triangles(SurfaceRenderer& renderer, const Co
                   std::to_string(patch) + " (" + std::to_string(u) + ", " + std::to_string(v) +
                   "): draw the patches at level 2^" + std::to_string(levels));
     return SurfaceValues{r.mesh.mean(size_t(at)), r.normals[size_t(at)]};
-  }),
-          origin};
+  };
+  return {patch_triangles(renderer, camera, o, width, height, reference_at), origin};
 }
 
 }  // namespace gps

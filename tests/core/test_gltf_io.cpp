@@ -428,8 +428,8 @@ TEST(GltfIo, MalformedFilesAreRefusedInOneLineNamingFileAndElement) {
   expect_refused(dir.write("empty.gltf", "{}"), "empty.gltf: is too short to be a glTF file");
   expect_refused(dir.write("unversioned.gltf", "{\"scenes\": []}"), "unversioned.gltf: has no \"asset\" object");
   expect_refused(dir.write("stride.gltf", buffers + "\"data:application/octet-stream;base64,AAAAAAAAAAAAAAAA\"}], "
-                                                     "\"bufferViews\": [{\"buffer\": 0, \"byteLength\": 12, "
-                                                     "\"byteStride\": 256}]}"),
+                                                    "\"bufferViews\": [{\"buffer\": 0, \"byteLength\": 12, "
+                                                    "\"byteStride\": 256}]}"),
                  "stride.gltf: has a bufferView whose byteStride is not a multiple of 4 from 4 to 252 (glTF's rule), "
                  "got 256");
 

@@ -168,8 +168,7 @@ TEST(Knife, APathBackToItsStartCutsALoop) {
   for (const int v : ring.selection) EXPECT_NEAR(ring.mesh.mean(size_t(v)).z(), 0.5, 1e-12);
   closed_and_outward(ring.mesh);
 
-  const Modelled corner =
-      knife(cube, {Vec3(0.5, -1, 0.5), Vec3(1, -0.5, 0.5), Vec3(0.5, -0.5, 1), Vec3(0.5, -1, 0.5)});
+  const Modelled corner = knife(cube, {Vec3(0.5, -1, 0.5), Vec3(1, -0.5, 0.5), Vec3(0.5, -0.5, 1), Vec3(0.5, -1, 0.5)});
   closed_and_outward(corner.mesh);
   EXPECT_EQ(corner.mesh.n_vertices(), 8u + 6u);  // three points inside faces, three crossings of edges
   EXPECT_EQ(corner.mesh.n_faces(), 6u + 3u);     // each of the three faces cut in two
@@ -235,7 +234,9 @@ TEST(Knife, RefusalsNameThePointAndChangeNothing) {
   EXPECT_EQ(error_of([&] { knife(cube, {Vec3(0, -1, 1)}); }), "the knife needs at least 2 points, got 1");
   EXPECT_EQ(error_of([&] { knife(cube, {Vec3(0, -1, 1), Vec3(0, -1, 1), Vec3(0, 1, 1)}); }), "point 2 is at point 1");
   // A path back to its start round one other point (a loop needs three).
-  EXPECT_EQ(error_of([&] { knife(cube, {Vec3(0.5, -1, 0.5), Vec3(1, -0.5, 0.5), Vec3(0.5, -1, 0.5)}); }),
+  EXPECT_EQ(error_of([&] {
+              knife(cube, {Vec3(0.5, -1, 0.5), Vec3(1, -0.5, 0.5), Vec3(0.5, -1, 0.5)});
+            }),
             "point 3 closes the path on point 1 after one other point; a loop needs three points or more");
   EXPECT_EQ(error_of([&] {
               knife(cube, {Vec3(0, -1, 1), Vec3(0, NAN, 1)});

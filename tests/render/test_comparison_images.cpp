@@ -154,8 +154,7 @@ TEST_F(ComparisonImages, ReferenceInThePatchesTrianglesHasTheirVertices) {
     SurfaceRenderer renderer;
     renderer.set_mesh(mesh, options);
     const Camera camera = frame_mesh(mesh);
-    const TriangleMesh exact =
-        exact_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize).triangles;
+    const TriangleMesh exact = exact_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize).triangles;
     const TriangleMesh reference =
         reference_in_patch_triangles(renderer, mesh, camera, options_at_level(false), kSize, kSize, 4).triangles;
     ASSERT_EQ(reference.triangles, exact.triangles) << name;

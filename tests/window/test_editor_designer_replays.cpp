@@ -185,7 +185,6 @@ TEST_F(EditorTools, DesignerReplayKnifeFeatureLine) {
   for (int v = 24; v < 28; ++v) EXPECT_EQ(saved.sharpness.crease(v, v + 1), kInfiniteSharpness) << v;
 }
 
-
 // The centre of a face's corners.
 Vec3 face_centre(const CovarianceMesh& mesh, int f) {
   Vec3 c = Vec3::Zero();
