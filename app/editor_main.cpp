@@ -8,6 +8,7 @@
 #include "app/run_command_line.h"
 #include "core/support/error.h"
 #include "core/support/freed_memory.h"
+#include "core/support/quoted_text.h"
 #include "ui/editor/editor.h"
 #include "view/camera.h"
 
@@ -36,8 +37,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"loop", "warren"}));
   gps::RepairArguments repair;  // as gpsurf's commands take them; the weld tolerance also for the repair dialog's
   gps::add_repair_arguments(&app, repair);
-  app.failure_message(
-      [](const CLI::App*, const CLI::Error& e) { return "gpsurf-editor: " + gps::in_our_words(e.what()) + "\n"; });
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "gpsurf-editor: " + gps::escaped(gps::in_our_words(e.what())) + "\n";
+  });
   try {
     app.parse(argc, argv);
     if (save->count() > 0 && o.save.empty()) throw CLI::ValidationError("--save", "give a file to save to, got ''");
@@ -52,7 +54,7 @@ int main(int argc, char** argv) {
     return gps::run_editor(o);
   } catch (const CLI::ParseError& e) {
     if (std::string(e.what()).find(": File does not exist: ") != std::string::npos) {  // as gpsurf's commands: 1
-      std::cerr << "gpsurf-editor: " << gps::in_our_words(e.what()) << "\n";
+      std::cerr << "gpsurf-editor: " << gps::escaped(gps::in_our_words(e.what())) << "\n";
       return 1;
     }
     const int code = app.exit(e);

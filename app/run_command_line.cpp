@@ -92,7 +92,7 @@ std::string in_our_words(const std::string& message) {
   if (const size_t at = message.find(at_most); at != std::string::npos)
     return message.substr(0, at) + " is given " + message.substr(at + at_most.size()) + " times; give it once";
   if (const std::string missing = ": File does not exist: "; message.find(missing) != std::string::npos)
-    return escaped(message.substr(message.find(missing) + missing.size())) + ": no such file";
+    return message.substr(message.find(missing) + missing.size()) + ": no such file";
   if (const size_t at = message.find(": 1 required "); at != std::string::npos && message.ends_with(" missing"))
     return message.substr(0, at) + " needs a value after it";
   for (const std::string extra :
