@@ -182,10 +182,10 @@ Mat3 covariance_of(const std::vector<double>& c) {
 InPlace set_gaussians(Fields& f) {
   const std::vector<int> vertices = f.indices("vertices");
   std::optional<Vec3> mean;
-  std::optional<Mat3> covariance;
+  std::shared_ptr<const Mat3> covariance;  // held apart: a list of a million scales holds no room for one
   double scale = 1;
   if (f.has("mean")) mean = f.vector3("mean");
-  if (f.has("covariance")) covariance = covariance_of(f.numbers("covariance", 6));
+  if (f.has("covariance")) covariance = std::make_shared<const Mat3>(covariance_of(f.numbers("covariance", 6)));
   if (f.has("scale") && !((scale = f.number("scale")) > 0)) throw usage_error("\"scale\" must be positive");
   if (!mean && !covariance && !f.has("scale")) throw usage_error("give \"mean\", \"covariance\" or \"scale\"");
   return [=](CovarianceMesh& mesh, std::string& summary) {
@@ -519,6 +519,17 @@ std::vector<std::string> operation_names() {
           "split",     "grid_fill"};
 }
 
+namespace {
+
+// A known operation's name as a view of one made once, which a list's steps hold for the program's life.
+std::string_view lasting_name(const std::string& name) {
+  static const std::vector<std::string> names = operation_names();
+  const auto at = std::find(names.begin(), names.end(), name);
+  return at == names.end() ? std::string_view("?") : std::string_view(*at);
+}
+
+}  // namespace
+
 OperationList OperationList::parse(const std::string& text, const std::string& source) {
   OperationList list;
   list.source_ = source;
@@ -554,8 +565,14 @@ OperationList OperationList::parse(const std::string& text, const std::string& s
         run = parse_step(name, fields, append, in_place);
       }
       fields.check_all_used();
-      list.steps_.push_back({name, std::move(run), std::move(append), std::move(in_place),
-                             name == "subdivide" && !object.contains("faces")});
+      const bool whole = name == "subdivide" && !object.contains("faces");
+      const std::string_view kept = lasting_name(name);
+      if (append)
+        list.steps_.push_back({kept, std::move(append), whole});
+      else if (in_place)
+        list.steps_.push_back({kept, std::move(in_place), whole});
+      else
+        list.steps_.push_back({kept, std::move(run), whole});
     } catch (const Error& e) {
       throw Error(where + " (" + shown_name(name) + "): " + e.what(), e.kind());
     }
@@ -566,7 +583,7 @@ OperationList OperationList::parse(const std::string& text, const std::string& s
 
 std::vector<std::string> OperationList::names() const {
   std::vector<std::string> out;
-  for (const Step& s : steps_) out.push_back(s.name);
+  for (const Step& s : steps_) out.emplace_back(s.name);
   return out;
 }
 
@@ -583,28 +600,28 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
     try {
       if (step.subdivides_whole_mesh && (i == 0 || !steps_[i - 1].subdivides_whole_mesh))
         check_subdivisions(i, mesh_now());
-      if (step.append) {
+      if (const AppendStep* append = step.append()) {
         if (!arrays) arrays = arrays_of(mesh_now());
         std::string summary;
-        std::vector<int> selection = step.append(*arrays, summary);
+        std::vector<int> selection = (*append)(*arrays, summary);
         if (summaries) summaries->push_back(summary);
-        if (i + 1 < steps_.size() && steps_[i + 1].append) continue;
+        if (i + 1 < steps_.size() && steps_[i + 1].append()) continue;
         auto made = std::make_unique<Modelled>(modelled(mesh_now(), *arrays, std::move(selection), std::move(summary)));
         check_new_geometry(mesh_now(), *made);
         current = std::move(made);
         arrays.reset();
         continue;
       }
-      if (step.in_place) {
+      if (const InPlaceStep* in_place = step.in_place()) {
         if (!current) current.reset(new Modelled{mesh, {}, "", {}, {}});  // the list's one copy of its input
-        current->selection = step.in_place(current->mesh, current->summary);
+        current->selection = (*in_place)(current->mesh, current->summary);
       } else {
-        auto made = std::make_unique<Modelled>(step.run(mesh_now()));
+        auto made = std::make_unique<Modelled>(std::get<MakeStep>(step.action)(mesh_now()));
         check_new_geometry(mesh_now(), *made);
         current = std::move(made);
       }
     } catch (const Error& e) {
-      throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + shown_name(step.name) + "): " + e.what()),
+      throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + shown_name(std::string(step.name)) + "): " + e.what()),
                   e.kind());
     }
     if (summaries) summaries->push_back(current->summary);

@@ -3,8 +3,11 @@
 //   [{"op": "loop_cut", "edge": [0, 1], "cuts": 2}, {"op": "extrude", "faces": [4], "distance": 0.5}]
 // applied in order, every index referring to the mesh as it stands before that operation (file
 // order for the first). docs/command_line.md lists every operation and its keys.
+#include <deque>
 #include <functional>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 #include "core/modelling/mesh_arrays.h"
@@ -32,20 +35,23 @@ private:
   /// result would not fit the memory budget (core/support/memory_budget.h), before any of them.
   void check_subdivisions(size_t first, const CovarianceMesh& mesh) const;
 
+  /// What a step does: make its result from the mesh; or, for a step made on arrays (an addition, a
+  /// deletion, an extrusion or inset of faces) that checks what it makes as the mesh's build would,
+  /// change the arrays of a run of such steps, which build their mesh and its connectivity once, after
+  /// the last; or, for an operation on Gaussians or sharpness only, change the list's own copy of the
+  /// mesh in place at the cost of what it changes. The last two return the selection and set the
+  /// summary. One of them held: a list of a million steps holds no empty ones.
+  using MakeStep = std::function<Modelled(const CovarianceMesh&)>;
+  using AppendStep = std::function<std::vector<int>(MeshArrays&, std::string&)>;
+  using InPlaceStep = std::function<std::vector<int>(CovarianceMesh&, std::string&)>;
   struct Step {
-    std::string name;
-    std::function<Modelled(const CovarianceMesh&)> run;
-    /// Instead of `run`, for a step made on arrays (an addition, a deletion, an extrusion or inset of
-    /// faces) that checks what it makes as the mesh's build would: changes the arrays of a run of such
-    /// steps, which build their mesh and its connectivity once, after the last; returns the selection
-    /// and sets the summary.
-    std::function<std::vector<int>(MeshArrays&, std::string&)> append;
-    /// Instead of `run`, for an operation on Gaussians or sharpness only: changes the list's own copy
-    /// of the mesh in place at the cost of what it changes; returns the selection, sets the summary.
-    std::function<std::vector<int>(CovarianceMesh&, std::string&)> in_place;
+    std::string_view name;  // one of operation_names(), which live as long as the program
+    std::variant<MakeStep, AppendStep, InPlaceStep> action;
     bool subdivides_whole_mesh = false;
+    const AppendStep* append() const { return std::get_if<AppendStep>(&action); }
+    const InPlaceStep* in_place() const { return std::get_if<InPlaceStep>(&action); }
   };
-  std::vector<Step> steps_;
+  std::deque<Step> steps_;  // grown without copies or spare capacity
   std::string source_;
 };
 
