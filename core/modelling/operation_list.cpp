@@ -621,8 +621,9 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
         current = std::move(made);
       }
     } catch (const Error& e) {
-      throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + shown_name(std::string(step.name)) + "): " + e.what()),
-                  e.kind());
+      throw Error(
+          prefixed(source_, "ops[" + std::to_string(i) + "] (" + shown_name(std::string(step.name)) + "): " + e.what()),
+          e.kind());
     }
     if (summaries) summaries->push_back(current->summary);
   }
