@@ -53,9 +53,11 @@ protected:
     const auto r = test::play_editor(dir_, dir_.file("original.ply"), events, kWidth, kHeight,
                                      "--save " + dir_.file("saved.ply") + " --screenshot " + artefact(screenshot));
     EXPECT_EQ(r.exit_code, 0) << r.output;
+    output_ = r.output;
     return read_mesh(dir_.file("saved.ply"));
   }
 
+  mutable std::string output_;
   test::TempDir dir_;
   CovarianceMesh original_;
   Viewport view_;
@@ -105,6 +107,22 @@ TEST_F(EditorEdges, SelectSharpEdgesTakesTheCubesTwelveEdges) {
     EXPECT_EQ(c.sharpness, kInf) << c.a << "-" << c.b;
     EXPECT_GE(original_.find_edge(c.a, c.b), 0) << c.a << "-" << c.b;
   }
+}
+
+// With vertex 5 hidden (H), Ctrl+Shift+E selects the 9 sharp edges that are shown and says so; it
+// said 12. Ctrl+B and Ctrl+Shift+B with nothing selected say why nothing happens (they were silent).
+TEST_F(EditorEdges, SelectSharpEdgesCountsWhatItSelectedAndKeysWithoutASelectionSayWhy) {
+  Events hidden;
+  hidden.click(pixel_of(view_, original_.mean(5))).wait().key("h").wait().key("ctrl+shift+e").wait(3);
+  play(hidden, "sharp_edges_with_a_vertex_hidden.png");
+  EXPECT_NE(output_.find("select sharp edges: 9 edges folded by more than 30° (3 more hidden)"), std::string::npos)
+      << output_;
+  Events none;
+  none.key("ctrl+b").wait().key("ctrl+shift+b").wait(3);
+  play(none, "bevel_without_a_selection.png");
+  EXPECT_TRUE(test::same_mesh(read_mesh(dir_.file("saved.ply")), original_));
+  EXPECT_NE(output_.find("Bevel edges: nothing is selected for it to work on"), std::string::npos) << output_;
+  EXPECT_NE(output_.find("Bevel vertices: nothing is selected for it to work on"), std::string::npos) << output_;
 }
 
 // Alt+click in edge mode selects an edge loop's edges: two neighbouring rows of a 4 × 4 grid (vertex

@@ -135,6 +135,12 @@ void EditorApp::build_commands() {
          [this] { return view_.show_statistics; }});
   build_target_point_commands();
   build_modelling_commands();
+  // A key whose command waits for a selection says so, where Blender is silent (the tool's own
+  // refusal is never reached: the key does not start it).
+  t.on_disabled_key([this](const std::string& label) {
+    if (selection_.empty() && document_.mesh().n_faces() > 0)
+      set_status(label.substr(0, label.find(" (")) + ": nothing is selected for it to work on", true);
+  });
   build_mirror_commands();
   build_snapping_commands();
   // Help

@@ -74,8 +74,15 @@ void EditorApp::select_sharp_edges() {
   const std::vector<EdgeEnds> sharp = edges_sharper_than(mesh, sharp_edge_angle_);
   if (select_mode_ != SelectMode::edge) set_select_mode(SelectMode::edge);
   selection_.select_edges(mesh, sharp, true);  // added to the selection, as Blender does
-  set_status("select sharp edges: " + count_of(sharp.size(), "edge", "edges") + " folded by more than " +
-                 short_number(sharp_edge_angle_) + "°",
+  deselect_hidden();
+  // Those selected: a hidden one is not.
+  const std::vector<EdgeEnds> held = selection_.edges(mesh);
+  const size_t selected = size_t(std::count_if(sharp.begin(), sharp.end(), [&](const EdgeEnds& e) {
+    return std::binary_search(held.begin(), held.end(), e);
+  }));
+  set_status("select sharp edges: " + count_of(selected, "edge", "edges") + " folded by more than " +
+                 short_number(sharp_edge_angle_) + "°" +
+                 (selected < sharp.size() ? " (" + std::to_string(sharp.size() - selected) + " more hidden)" : ""),
              false);
 }
 

@@ -40,7 +40,10 @@ bool CommandTable::handle_key(int key, bool ctrl, bool shift, bool alt) const {
     }
   for (const Command& c : commands_)
     if (bound(c)) {
-      if (is_enabled(c)) c.action();
+      if (is_enabled(c))
+        c.action();
+      else if (disabled_key_)
+        disabled_key_(c.label);
       return true;
     }
   return false;

@@ -37,6 +37,8 @@ public:
   /// a key is bound to several, one with an enabled() test that passes now comes first (Shift+E:
   /// crease with edges selected, else the ellipsoids' toggle).
   bool handle_key(int key, bool ctrl, bool shift, bool alt) const;
+  /// Called with a command's label where its key is pressed while it is disabled (to say why).
+  void on_disabled_key(std::function<void(const std::string& label)> said) { disabled_key_ = std::move(said); }
   /// Runs the command with this label (menus and tests); false when there is none or it is disabled.
   bool run(const std::string& label) const;
   /// The menu names in first-use order.
@@ -49,6 +51,7 @@ public:
 private:
   static bool is_enabled(const Command& c) { return !c.enabled || c.enabled(); }
   std::vector<Command> commands_;
+  std::function<void(const std::string&)> disabled_key_;
 };
 
 }  // namespace gps
