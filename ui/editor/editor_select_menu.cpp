@@ -77,9 +77,8 @@ void EditorApp::select_sharp_edges() {
   deselect_hidden();
   // Those selected: a hidden one is not.
   const std::vector<EdgeEnds> held = selection_.edges(mesh);
-  const size_t selected = size_t(std::count_if(sharp.begin(), sharp.end(), [&](const EdgeEnds& e) {
-    return std::binary_search(held.begin(), held.end(), e);
-  }));
+  const size_t selected = size_t(std::count_if(
+      sharp.begin(), sharp.end(), [&](const EdgeEnds& e) { return std::binary_search(held.begin(), held.end(), e); }));
   set_status("select sharp edges: " + count_of(selected, "edge", "edges") + " folded by more than " +
                  short_number(sharp_edge_angle_) + "°" +
                  (selected < sharp.size() ? " (" + std::to_string(sharp.size() - selected) + " more hidden)" : ""),
