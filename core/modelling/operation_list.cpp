@@ -499,10 +499,23 @@ Run parse_step(const std::string& op, Fields& f, Append& append, InPlace& in_pla
   throw usage_error("unknown operation (known: " + names + ")");
 }
 
+// The operation names, made once.
+const std::vector<std::string>& known_names() {
+  static const std::vector<std::string> names = operation_names();
+  return names;
+}
+
 // An operation's name as messages show it: a known one as it is, any other quoted and cut.
 std::string shown_name(const std::string& name) {
-  const std::vector<std::string> known = operation_names();
+  const std::vector<std::string>& known = known_names();
   return std::find(known.begin(), known.end(), name) != known.end() ? name : quoted_token(name);
+}
+
+// A known operation's name as a view of known_names(), which a list's steps hold for the program's life.
+std::string_view lasting_name(const std::string& name) {
+  const std::vector<std::string>& known = known_names();
+  const auto at = std::find(known.begin(), known.end(), name);
+  return at == known.end() ? std::string_view("?") : std::string_view(*at);
 }
 
 // "SOURCE: message", or the message alone for an unnamed source.
@@ -513,22 +526,10 @@ std::string prefixed(const std::string& source, const std::string& message) {
 }  // namespace
 
 std::vector<std::string> operation_names() {
-  return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude",   "inset",     "delete", "dissolve",
-          "merge",     "weld",     "fill",       "bridge",    "transform", "add",       "set",    "crease",
-          "corner",    "slide",    "bevel",      "bisect",    "knife",     "duplicate", "spin",   "mirror",
-          "split",     "grid_fill"};
+  return {"subdivide", "loop_cut", "split_edge", "flip_edge", "extrude", "inset",  "delete", "dissolve", "merge",
+          "weld",      "fill",     "bridge",     "transform", "add",     "set",    "crease", "corner",   "slide",
+          "bevel",     "bisect",   "knife",      "duplicate", "spin",    "mirror", "split",  "grid_fill"};
 }
-
-namespace {
-
-// A known operation's name as a view of one made once, which a list's steps hold for the program's life.
-std::string_view lasting_name(const std::string& name) {
-  static const std::vector<std::string> names = operation_names();
-  const auto at = std::find(names.begin(), names.end(), name);
-  return at == names.end() ? std::string_view("?") : std::string_view(*at);
-}
-
-}  // namespace
 
 OperationList OperationList::parse(const std::string& text, const std::string& source) {
   OperationList list;
@@ -621,9 +622,8 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
         current = std::move(made);
       }
     } catch (const Error& e) {
-      throw Error(
-          prefixed(source_, "ops[" + std::to_string(i) + "] (" + shown_name(std::string(step.name)) + "): " + e.what()),
-          e.kind());
+      throw Error(prefixed(source_, "ops[" + std::to_string(i) + "] (" + std::string(step.name) + "): " + e.what()),
+                  e.kind());  // a step's name is a known one
     }
     if (summaries) summaries->push_back(current->summary);
   }
