@@ -13,6 +13,7 @@
 #include "app/plan_arguments.h"
 #include "app/repair_arguments.h"
 #include "app/terminal_progress.h"
+#include "core/fitting/face_triangles.h"
 #include "core/fitting/fit_progress.h"
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/surface_distance.h"
@@ -45,7 +46,8 @@ void add_fit_command(CLI::App& app) {
     int iterations = FitOptions().iterations, level = 8;
     double smoothness = 1e-5, covariance_smoothness = FitOptions().covariance_smoothness,
            covariance_prior = FitOptions().covariance_prior, min_sigma = FitOptions().min_sigma,
-           max_sigma = FitOptions().max_sigma, tolerance = FitOptions().tolerance, time = INFINITY;
+           max_sigma = FitOptions().max_sigma, tolerance = FitOptions().tolerance, time = INFINITY,
+           normal_weight = FitOptions().normal_weight;
     bool plain = false, ascii = false, quiet = false;
     PlanArguments plans;
     RepairArguments repair;
@@ -77,11 +79,15 @@ void add_fit_command(CLI::App& app) {
       ->check(number_in(0, 1e6));
   cmd->add_option("--covariance-smoothness", args->covariance_smoothness,
                   "weight of the smoothness term on the covariances (the Laplacian of their changes) against the mean "
-                  "squared distance (default 1e-4)")
+                  "squared distance (default 0)")
       ->check(number_in(0, 1e6));
   cmd->add_option("--covariance-prior", args->covariance_prior,
                   "weight of the prior that keeps each covariance near its start, against the mean squared distance "
                   "(default 0: none)")
+      ->check(number_in(0, 1e6));
+  cmd->add_option("--normal-weight", args->normal_weight,
+                  "weight of the term that turns the surface's normals toward those of the target's faces, against "
+                  "the squared distance (default 0.005; 0: none; a point cloud has no normals; ignored by --plain)")
       ->check(number_in(0, 1e6));
   cmd->add_option(
          "--min-sigma", args->min_sigma,
@@ -107,13 +113,19 @@ void add_fit_command(CLI::App& app) {
       throw usage_error(said.str());
     }
     const CovarianceMesh coarse = read_mesh_repairing(args->coarse, args->repair, {}, args->quiet, true);
-    const std::vector<Vec3> targets = read_points(args->target);  // whatever its faces
+    // The target's points whatever its faces (a scan that is not a manifold), with the normals of the
+    // faces around them (none for a point cloud).
+    PolygonSoup target;
+    target.positions = read_points(args->target, &target.faces);
+    const std::vector<Vec3>& targets = target.positions;
+    const std::vector<Vec3> normals = smooth_vertex_normals(face_triangles(target));
     FitOptions options;
     options.iterations = args->iterations;
     options.plain = args->plain;
     options.smoothness = args->smoothness;
     options.covariance_smoothness = args->covariance_smoothness;
     options.covariance_prior = args->covariance_prior;
+    options.normal_weight = args->normal_weight;
     options.min_sigma = args->min_sigma;
     options.max_sigma = args->max_sigma;
     options.tolerance = args->tolerance;
@@ -134,7 +146,7 @@ void add_fit_command(CLI::App& app) {
       std::cout << "fitting " << coarse.n_vertices() << " vertices" << (args->plain ? " (plain)" : "") << " to "
                 << targets.size() << " points\n"
                 << std::flush;
-    const FitResult result = naming_input(args->coarse, [&] { return fit_limit_surface(coarse, targets, options); });
+    const FitResult result = naming_input(args->coarse, [&] { return fit_limit_surface(coarse, targets, options, normals); });
     bar.finish();
     if (!args->quiet)
       std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop)

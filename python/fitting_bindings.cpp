@@ -131,7 +131,8 @@ void add_fitting_bindings(py::module_& m) {
       "fit",
       [](const MeshHandle& coarse, const py::object& target, int iterations, bool plain, double smoothness,
          double tolerance, std::optional<double> time, const py::object& progress, bool report,
-         double covariance_smoothness, double covariance_prior, double min_sigma, double max_sigma) -> py::object {
+         double covariance_smoothness, double covariance_prior, double min_sigma, double max_sigma,
+         double normal_weight) -> py::object {
         if (iterations < 0 || iterations > 1000)
           throw py::value_error("iterations: expected 0..1000, got " + std::to_string(iterations));
         FitOptions o;
@@ -140,6 +141,7 @@ void add_fitting_bindings(py::module_& m) {
         o.smoothness = number_in(smoothness, 0, 1e6, "smoothness");
         o.covariance_smoothness = number_in(covariance_smoothness, 0, 1e6, "covariance_smoothness");
         o.covariance_prior = number_in(covariance_prior, 0, 1e6, "covariance_prior");
+        o.normal_weight = number_in(normal_weight, 0, 1e6, "normal_weight");
         // The bounds as gpsurf fit --min-sigma --max-sigma take them: the lower below the upper.
         o.min_sigma = number_in(min_sigma, 0, 1e6, "min_sigma");
         o.max_sigma = positive_number(max_sigma, "max_sigma");
@@ -153,13 +155,18 @@ void add_fitting_bindings(py::module_& m) {
         o.time_budget = time.value_or(INFINITY);
         std::vector<Vec3> targets = points_of(target, "target");
         if (targets.empty()) throw py::value_error("target: has no points to fit to");
+        // A Mesh's normals as gpsurf fit takes them from its target's faces; an array has none.
+        std::shared_ptr<const CovarianceMesh> target_mesh;
+        if (py::isinstance<MeshHandle>(target)) target_mesh = target.cast<const MeshHandle&>().mesh;
         FitResult result = call_in_background(
-            [source = coarse.mesh, targets = std::move(targets), o](CallControl& control) mutable {
+            [source = coarse.mesh, targets = std::move(targets), target_mesh, o](CallControl& control) mutable {
               o.progress = [&control, done = FitProgress(o)](const FitIteration& it) mutable {
                 control.throw_if_stopped();
                 control.report(done.after(it));
               };
-              return fit_limit_surface(*source, targets, o);
+              const std::vector<Vec3> normals =
+                  target_mesh ? smooth_vertex_normals(face_triangles(*target_mesh)) : std::vector<Vec3>();
+              return fit_limit_surface(*source, targets, o, normals);
             },
             progress, false);
         py::object mesh = py::cast(hold(std::move(result.mesh)));
@@ -178,7 +185,7 @@ void add_fitting_bindings(py::module_& m) {
       py::arg("progress") = py::none(), py::arg("report") = false, py::kw_only(),
       py::arg("covariance_smoothness") = FitOptions().covariance_smoothness,
       py::arg("covariance_prior") = FitOptions().covariance_prior, py::arg("min_sigma") = FitOptions().min_sigma,
-      py::arg("max_sigma") = FitOptions().max_sigma,
+      py::arg("max_sigma") = FitOptions().max_sigma, py::arg("normal_weight") = FitOptions().normal_weight,
       "The limit surface of `coarse` fitted to `target` (a Mesh's vertices or an (n, 3) array of points), as gpsurf "
       "fit fits it: up to `iterations` (0..1000) Levenberg-Marquardt steps on the squared distances from the points "
       "to their closest limit points, moving the means and (unless plain) the covariances; smoothness: the weight "
@@ -186,8 +193,9 @@ void add_fitting_bindings(py::module_& m) {
       "covariance_smoothness, the weight of the smoothness term on their changes (0..1e6); covariance_prior, the "
       "weight of the prior that keeps each near its start (0..1e6, 0: none); min_sigma and max_sigma, the least "
       "and greatest standard deviation of each Gaussian over the mean length of its vertex's edges (min_sigma "
-      "0..1e6, max_sigma finite and above it). tolerance: stop when an iteration lowers the rms distance by less "
-      "than this fraction of it (0: never); time: stop after the iteration that passes this many seconds (None: "
+      "0..1e6, max_sigma finite and above it); normal_weight, the weight of the term that turns the surface's "
+      "normals toward those of a Mesh target's faces (0..1e6, 0: none; an array has no normals). tolerance: stop "
+      "when an iteration lowers the fit's objective by less than this fraction of it (0: never); time: stop after the iteration that passes this many seconds (None: "
       "never). progress: called with the fraction of iterations done; returning False cancels (gpsurf.Cancelled). "
       "Returns the fitted Mesh; report=True: (Mesh, dict) with stop ('iterations', 'converged', 'time' or "
       "'no_descent'), reason (in words), iterations (the number run) and relative_rms (per iteration, the first "

@@ -1,5 +1,7 @@
 #include "core/fitting/face_triangles.h"
 
+#include <cmath>
+#include <numbers>
 #include <span>
 
 namespace gps {
@@ -29,6 +31,23 @@ TriangleMesh face_triangles(const PolygonSoup& soup) {
   }
   fill_missing_normals(result);
   return result;
+}
+
+std::vector<Vec3> smooth_vertex_normals(const TriangleMesh& fans, double max_angle) {
+  std::vector<Vec3> normals = fans.normals;
+  const double least_cosine = std::cos(max_angle * std::numbers::pi / 180);
+  for (const auto& t : fans.triangles) {
+    const Vec3 n = (fans.positions[size_t(t[1])] - fans.positions[size_t(t[0])])
+                       .cross(fans.positions[size_t(t[2])] - fans.positions[size_t(t[0])]);
+    const double length = n.norm();
+    if (!(length > 0)) continue;
+    for (const int v : t)
+      if (normals[size_t(v)].dot(n) < least_cosine * length * normals[size_t(v)].norm())
+        normals[size_t(v)] = Vec3::Zero();
+  }
+  for (Vec3& n : normals)
+    if (n.norm() > 0) n.normalize();
+  return normals;
 }
 
 }  // namespace gps

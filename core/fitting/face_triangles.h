@@ -16,4 +16,10 @@ TriangleMesh face_triangles(const CovarianceMesh& mesh);
 /// fan from its first corner; a vertex on no face keeps a zero normal.
 TriangleMesh face_triangles(const PolygonSoup& soup);
 
+/// Per vertex of `fans` (face_triangles of a mesh or soup), the unit normal a fit turns its surface
+/// toward: the area-weighted normal of its faces where every one of them lies within `max_angle`
+/// degrees of it, else zero (a vertex on a sharp edge or corner, or on no face, whose faces give
+/// no one direction).
+std::vector<Vec3> smooth_vertex_normals(const TriangleMesh& fans, double max_angle = 30);
+
 }  // namespace gps

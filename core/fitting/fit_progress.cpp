@@ -9,7 +9,7 @@ double FitProgress::after(const FitIteration& it) {
   seconds_ += it.seconds;
   double fraction = iterations_ > 0 ? double(it.iteration) / iterations_ : 1.0;
   if (std::isfinite(time_budget_)) fraction = std::max(fraction, seconds_ / time_budget_);
-  const double rms = it.error.rms;
+  const double rms = it.objective;
   if (tolerance_ > 0 && last_rms_ > 0 && rms < last_rms_) {
     const double fall = (last_rms_ - rms) / last_rms_;
     if (first_fall_ < 0) first_fall_ = fall;

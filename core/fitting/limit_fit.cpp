@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -56,11 +57,46 @@ struct VertexState {
   std::vector<Mat3> precision, factor;
 };
 
-// Per target, at the current parameters and correspondence: the limit point x, K(u, v)⁻¹ and x − p.
+// Per target, at the current parameters and correspondence: the limit point x, K(u, v)⁻¹ and x − p;
+// with a normal term, the tangents x_u, x_v, the precision's derivatives K_u, K_v, the normal
+// residual (the surface's unit normal m less its component along the target's normal n, scaled:
+// its length is the sine of the angle between them) and its derivative by c = x_u × x_v.
 struct PointState {
   Vec3 x, residual;
   Mat3 inverse;
+  Vec3 tangent[2];
+  Mat3 precision_derivative[2];
+  Vec3 normal_residual = Vec3::Zero();
+  Mat3 normal_gradient = Mat3::Zero();
 };
+
+// How a point's limit position x and its normal residual change with one vertex's unknowns.
+struct PointJacobian {
+  Eigen::Matrix<double, 3, 9> position;
+  Eigen::Matrix<double, 3, 9> normal;
+};
+
+// The cross-product matrix [a]×: [a]× b = a × b.
+Mat3 cross_matrix(const Vec3& a) {
+  Mat3 m;
+  m << 0, -a[2], a[1], a[2], 0, -a[0], -a[1], a[0], 0;
+  return m;
+}
+
+// Column c: dK/dθ_c · d for the precision K = LLᵀ and its factor parameter θ_c.
+Eigen::Matrix<double, 3, 6> precision_derivatives_times(const Mat3& l, const Vec3& d) {
+  Eigen::Matrix<double, 3, 6> out;
+  const Vec3 ltd = l.transpose() * d;
+  for (int c = 0; c < 6; ++c) {
+    const int a = kFactorEntries[c][0], b = kFactorEntries[c][1];
+    const double scale = a == b ? l(a, a) : 1.0;
+    // dK = dL Lᵀ + L dLᵀ with dL = scale · e_a e_bᵀ: dK d = scale (e_a (Lᵀd)_b + L_{:,b} d_a).
+    Vec3 col = scale * d[a] * l.col(b);
+    col[a] += scale * ltd[b];
+    out.col(c) = col;
+  }
+  return out;
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -69,9 +105,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 // The fit's problem: unknowns P per vertex (3 means, then 6 factor parameters unless plain), vertex-major.
 class FitProblem {
 public:
-  FitProblem(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options)
+  FitProblem(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const std::vector<Vec3>& normals,
+             const FitOptions& options)
       : options_(options),
         targets_(targets),
+        normals_(normals),
         surface_(options.plain ? with_isotropic_covariances(coarse) : coarse, options.plans),
         n_(int(coarse.n_vertices())),
         p_(options.plain ? 3 : 9) {
@@ -105,6 +143,7 @@ public:
     l.setFromTriplets(lap.begin(), lap.end());
     laplacian_normal_ = Eigen::SparseMatrix<double>(l.transpose() * l);
     length_ = edges > 0 ? edge_sum / double(edges) : diagonal_;
+    if (!options.plain && options.normal_weight > 0 && !normals.empty()) normal_scale_ = std::sqrt(options.normal_weight) * length_;
     const double per_vertex = double(targets.size()) / double(std::max(n_, 1));
     smoothness_ = options.smoothness * per_vertex;
     covariance_smoothness_ = options.covariance_smoothness * per_vertex;
@@ -146,31 +185,40 @@ public:
     const std::vector<Dual> points = apply_stencils(surface_.tables().stencils, base);
     std::vector<SurfacePoint> found =
         closest_limit_points(surface_.tables().plans, points, targets_, options_.correspondence_level);
-    if (!correspondences_.empty()) {
-      const std::vector<PointState> old = point_states(s);
-      for (size_t j = 0; j < found.size(); ++j)
-        if (old[j].residual.norm() < found[j].distance) {
-          found[j] = correspondences_[j];
-          found[j].distance = old[j].residual.norm();
-        }
-    }
-    correspondences_ = std::move(found);
-    weights_.assign(targets_.size(), {});
+    std::vector<LimitWeights> weights(targets_.size());
     const long m = long(targets_.size());
 #pragma omp parallel for schedule(dynamic, 256)
     for (long j = 0; j < m; ++j) {
-      const SurfacePoint& c = correspondences_[size_t(j)];
-      weights_[size_t(j)] = limit_weights(surface_.tables().plans, surface_.tables().stencils, c.patch, c.u, c.v);
+      const SurfacePoint& c = found[size_t(j)];
+      weights[size_t(j)] = limit_weights(surface_.tables().plans, surface_.tables().stencils, c.patch, c.u, c.v);
     }
+    distances_.resize(found.size());
+    for (size_t j = 0; j < found.size(); ++j) distances_[j] = found[j].distance;
+    if (!correspondences_.empty()) {
+      // The old point is kept where it is closer; with a normal term, where its distance and normal
+      // residual together are smaller, so that the objective never rises as the points move.
+      const std::vector<PointState> old = point_states(s, weights_);
+      const std::vector<PointState> now = normal_scale_ > 0 ? point_states(s, weights) : std::vector<PointState>();
+      for (size_t j = 0; j < found.size(); ++j) {
+        const double old_distance = old[j].residual.norm();
+        distances_[j] = std::min(distances_[j], old_distance);
+        const bool keep = normal_scale_ > 0 ? point_energy(old[j]) < point_energy(now[j]) : old_distance < found[j].distance;
+        if (keep) {
+          found[j] = correspondences_[j];
+          found[j].distance = old_distance;
+          weights[j] = std::move(weights_[j]);
+        } else if (normal_scale_ > 0) {
+          found[j].distance = now[j].residual.norm();
+        }
+      }
+    }
+    correspondences_ = std::move(found);
+    weights_ = std::move(weights);
     build_pattern();
   }
 
-  std::vector<double> distances() const {
-    std::vector<double> d;
-    d.reserve(correspondences_.size());
-    for (const auto& c : correspondences_) d.push_back(c.distance);
-    return d;
-  }
+  // Each point's distance to the surface: to the closest point found, or its last one where nearer.
+  const std::vector<double>& distances() const { return distances_; }
 
   DistanceSummary error() const { return summarise_distances(distances(), diagonal_); }
 
@@ -179,12 +227,13 @@ public:
     const std::vector<PointState> points = point_states(vertex_state(x));
     double sum = 0;
     for (const auto& p : points) sum += p.residual.squaredNorm();
-    return sum + smoothness_energy(x) + prior_energy(x);
+    return sum + normal_energy(points) + smoothness_energy(x) + prior_energy(x);
   }
 
   double objective_of_correspondences(const Parameters& x) const {
     double sum = 0;
     for (const auto& c : correspondences_) sum += c.distance * c.distance;
+    if (normal_scale_ > 0) sum += normal_energy(point_states(vertex_state(x)));
     return sum + smoothness_energy(x) + prior_energy(x);
   }
 
@@ -202,22 +251,26 @@ public:
       const int* cols = pattern_columns_.data() + pattern_offsets_[size_t(i)];
       const int n_cols = pattern_offsets_[size_t(i) + 1] - pattern_offsets_[size_t(i)];
       Eigen::Matrix<double, 9, 1> gi = Eigen::Matrix<double, 9, 1>::Zero();
+      const bool normal = normal_scale_ > 0;
       for (int e = users_offsets_[size_t(i)]; e < users_offsets_[size_t(i) + 1]; ++e) {
         const int j = users_[size_t(e)].first, a = users_[size_t(e)].second;
         const LimitWeights& w = weights_[size_t(j)];
         const PointState& pt = points[size_t(j)];
-        const Eigen::Matrix<double, 3, 9> ji = jacobian(s, x, pt, i, w.value[size_t(a)]);
-        gi += ji.transpose() * pt.residual;
+        const PointJacobian ji = jacobian(s, x, pt, w, size_t(a));
+        gi += ji.position.transpose() * pt.residual;
+        if (normal) gi += ji.normal.transpose() * pt.normal_residual;
         for (size_t b = size_t(a); b < w.size(); ++b) {
           const int k = w.vertex[b];
-          const Eigen::Matrix<double, 3, 9> jk = b == size_t(a) ? ji : jacobian(s, x, pt, k, w.value[b]);
+          const PointJacobian jk = b == size_t(a) ? ji : jacobian(s, x, pt, w, b);
           const int slot = int(std::lower_bound(cols, cols + n_cols, k) - cols);
           if (p_ == 9) {
             Eigen::Map<Block> block(row.data() + size_t(slot) * size_t(pp));
-            block.noalias() += ji.transpose() * jk;
+            block.noalias() += ji.position.transpose() * jk.position;
+            if (normal) block.noalias() += ji.normal.transpose() * jk.normal;
           } else {
             Eigen::Map<Eigen::Matrix3d> b3(row.data() + size_t(slot) * size_t(pp));
-            b3.noalias() += ji.leftCols<3>().transpose() * jk.leftCols<3>();
+            b3.noalias() += ji.position.leftCols<3>().transpose() * jk.position.leftCols<3>();
+            if (normal) b3.noalias() += ji.normal.leftCols<3>().transpose() * jk.normal.leftCols<3>();
           }
         }
       }
@@ -334,6 +387,13 @@ private:
     return sum;
   }
 
+  // The normal term: the squared residuals of every point's tangents along its target's normal.
+  static double normal_energy(const std::vector<PointState>& points) {
+    double sum = 0;
+    for (const auto& p : points) sum += p.normal_residual.squaredNorm();
+    return sum;
+  }
+
   double smoothness_energy(const Parameters& x) const {
     const Eigen::MatrixXd d = changes(x);
     double sum = 0;
@@ -342,48 +402,84 @@ private:
     return sum;
   }
 
-  std::vector<PointState> point_states(const VertexState& s) const {
+  static double point_energy(const PointState& p) {
+    return p.residual.squaredNorm() + p.normal_residual.squaredNorm();
+  }
+
+  std::vector<PointState> point_states(const VertexState& s) const { return point_states(s, weights_); }
+
+  std::vector<PointState> point_states(const VertexState& s, const std::vector<LimitWeights>& weights) const {
     std::vector<PointState> out(targets_.size());
     const long m = long(targets_.size());
     // The means as given by the state's precisions: h_k = K_k μ_k.
 #pragma omp parallel for schedule(dynamic, 256)
     for (long j = 0; j < m; ++j) {
-      const LimitWeights& w = weights_[size_t(j)];
-      Mat3 k = Mat3::Zero();
-      Vec3 h = Vec3::Zero();
+      const LimitWeights& w = weights[size_t(j)];
+      Mat3 k = Mat3::Zero(), k_u = Mat3::Zero(), k_v = Mat3::Zero();
+      Vec3 h = Vec3::Zero(), h_u = Vec3::Zero(), h_v = Vec3::Zero();
       for (size_t a = 0; a < w.size(); ++a) {
         const size_t i = size_t(w.vertex[a]);
+        const Vec3 ki_mean = s.precision[i] * means_[i];
         k += w.value[a] * s.precision[i];
-        h += w.value[a] * (s.precision[i] * means_[i]);
+        h += w.value[a] * ki_mean;
+        if (normal_scale_ > 0) {
+          k_u += w.du[a] * s.precision[i];
+          k_v += w.dv[a] * s.precision[i];
+          h_u += w.du[a] * ki_mean;
+          h_v += w.dv[a] * ki_mean;
+        }
       }
       const Eigen::LLT<Mat3> llt(k);
       PointState& p = out[size_t(j)];
       p.inverse = llt.solve(Mat3::Identity());
       p.x = llt.solve(h);
       p.residual = p.x - targets_[size_t(j)];
+      if (normal_scale_ > 0) {
+        // x_u = K⁻¹ (h_u − K_u x); m = c/|c| with c = x_u × x_v; the residual ŝ (I − n nᵀ) m, whose
+        // derivative by c is ŝ (I − n nᵀ)(I − m mᵀ)/|c|.
+        p.precision_derivative[0] = k_u;
+        p.precision_derivative[1] = k_v;
+        p.tangent[0] = p.inverse * (h_u - k_u * p.x);
+        p.tangent[1] = p.inverse * (h_v - k_v * p.x);
+        const Vec3& n = normals_[size_t(j)];
+        const Vec3 c = p.tangent[0].cross(p.tangent[1]);
+        const double length = c.norm();
+        if (length > 0 && !n.isZero()) {
+          const Vec3 m = c / length;
+          const Mat3 across = Mat3::Identity() - n * n.transpose();
+          p.normal_residual = normal_scale_ * across * m;
+          p.normal_gradient = normal_scale_ / length * across * (Mat3::Identity() - m * m.transpose());
+        }
+      }
     }
     return out;
   }
 
-  // dx/d(unknowns of vertex i) at a point whose weight of vertex i is w: w K⁻¹ [K_i | dK_i/dθ_c (μ_i − x)].
-  Eigen::Matrix<double, 3, 9> jacobian(const VertexState& s, const Parameters& x, const PointState& pt, int i,
-                                       double w) const {
+  // The derivatives at a point by the unknowns of its weights' vertex `a` (i, with weights w, w_u, w_v):
+  // dx = w K⁻¹ B with B = [K_i | dK_i/dθ_c (μ_i − x)], and from x_u = K⁻¹ (h_u − K_u x),
+  // dx_u = K⁻¹ (w_u B − K_u dx − w [0 | dK_i/dθ_c x_u]); likewise for v.
+  PointJacobian jacobian(const VertexState& s, const Parameters& x, const PointState& pt, const LimitWeights& weights,
+                         size_t a) const {
+    const size_t i = size_t(weights.vertex[a]);
+    const double w = weights.value[a];
     Eigen::Matrix<double, 3, 9> b = Eigen::Matrix<double, 3, 9>::Zero();
-    b.leftCols<3>() = s.precision[size_t(i)];
-    if (p_ == 9) {
-      const Mat3& l = s.factor[size_t(i)];
-      const Vec3 d = x.means[size_t(i)] - pt.x;
-      const Vec3 ltd = l.transpose() * d;
-      for (int c = 0; c < 6; ++c) {
-        const int a = kFactorEntries[c][0], bb = kFactorEntries[c][1];
-        const double scale = a == bb ? l(a, a) : 1.0;
-        // dK = dL Lᵀ + L dLᵀ with dL = scale · e_a e_bᵀ: dK d = scale (e_a (Lᵀd)_b + L_{:,b} d_a).
-        Vec3 col = scale * d[a] * l.col(bb);
-        col[a] += scale * ltd[bb];
-        b.col(3 + c) = col;
-      }
+    b.leftCols<3>() = s.precision[i];
+    if (p_ == 9) b.rightCols<6>() = precision_derivatives_times(s.factor[i], x.means[i] - pt.x);
+    PointJacobian out;
+    out.position = w * pt.inverse * b;
+    out.normal.setZero();
+    if (!(normal_scale_ > 0)) return out;
+    if (pt.normal_gradient.isZero()) return out;
+    Eigen::Matrix<double, 3, 9> tangent[2];
+    for (int d = 0; d < 2; ++d) {
+      tangent[d] = (d == 0 ? weights.du[a] : weights.dv[a]) * b;
+      tangent[d].noalias() -= pt.precision_derivative[d] * out.position;
+      if (p_ == 9) tangent[d].rightCols<6>() -= w * precision_derivatives_times(s.factor[i], pt.tangent[d]);
+      tangent[d] = pt.inverse * tangent[d];
     }
-    return w * pt.inverse * b;
+    // dc = dx_u × x_v + x_u × dx_v.
+    out.normal = pt.normal_gradient * (cross_matrix(pt.tangent[0]) * tangent[1] - cross_matrix(pt.tangent[1]) * tangent[0]);
+    return out;
   }
 
   // Which blocks (i, k ≥ i) the normal matrix has (vertices sharing a point), and per vertex the
@@ -422,15 +518,18 @@ public:
 private:
   const FitOptions& options_;
   const std::vector<Vec3>& targets_;
+  const std::vector<Vec3>& normals_;
   PlannedSurface surface_;
   int n_, p_;
   Parameters start_;
   Mat3 plain_precision_;
   double diagonal_ = 1, length_ = 1, smoothness_ = 0, covariance_smoothness_ = 0;
+  double normal_scale_ = 0;  // the normal residuals' length scale (0: no normal term)
   Eigen::SparseMatrix<double> laplacian_normal_;
   std::vector<double> edge_;  // per vertex, the mean length of its edges at the start
   std::vector<Vec6> prior_;   // per vertex, the covariance prior's weight on each factor parameter (empty: none)
   std::vector<SurfacePoint> correspondences_;
+  std::vector<double> distances_;
   std::vector<LimitWeights> weights_;
   std::vector<int> users_offsets_, pattern_offsets_, pattern_columns_;
   std::vector<std::pair<int, int>> users_;
@@ -458,7 +557,7 @@ const char* describe(FitStop stop) {
     case FitStop::iterations:
       return "ran its iterations";
     case FitStop::converged:
-      return "converged (the rms distance fell by less than the tolerance)";
+      return "converged (the objective fell by less than the tolerance)";
     case FitStop::time:
       return "ran out of time";
     case FitStop::no_descent:
@@ -467,8 +566,14 @@ const char* describe(FitStop stop) {
   return "";
 }
 
-FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options) {
+FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options,
+                            const std::vector<Vec3>& normals) {
   if (targets.empty()) throw Error("there are no points to fit the surface to");
+  if (!normals.empty() && normals.size() != targets.size())
+    throw Error("the fit has " + std::to_string(normals.size()) + " normals for " + std::to_string(targets.size()) +
+                " points");
+  if (!(options.normal_weight >= 0 && std::isfinite(options.normal_weight)))
+    throw Error("the fit's normal weight must be a finite weight, 0 or more");
   if (coarse.n_faces() == 0) throw Error("the mesh to fit has no faces");
   if (!(options.tolerance >= 0 && options.tolerance <= 1))
     throw Error("the fit's tolerance must be a fraction from 0 to 1");
@@ -482,19 +587,19 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   validate_gaussians(coarse);
   const auto start = std::chrono::steady_clock::now();
   auto clock = start;
-  FitProblem problem(coarse, targets, options);
+  FitProblem problem(coarse, targets, normals, options);
   Parameters x = problem.start();
   problem.set_means(x);
   problem.update_correspondences(x);
   FitResult result;
+  double energy = problem.objective_of_correspondences(x);
   const auto report = [&](int iteration) {
-    FitIteration it{iteration, problem.error(), seconds_since(clock)};
+    FitIteration it{iteration, problem.error(), seconds_since(clock), std::sqrt(energy / double(targets.size()))};
     result.iterations.push_back(it);
     if (options.progress) options.progress(it);
     clock = std::chrono::steady_clock::now();
   };
   report(0);
-  double energy = problem.objective_of_correspondences(x);
   double damping = 1e-4;
   for (int iteration = 1; iteration <= options.iterations; ++iteration) {
     Eigen::SparseMatrix<double> h;
@@ -537,10 +642,12 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
     }
     problem.update_correspondences(x);
     energy = problem.objective_of_correspondences(x);
-    const double before = result.iterations.back().error.rms;
+    const FitIteration before = result.iterations.back();
     report(iteration);
     if (iteration == options.iterations) break;
-    if (options.tolerance > 0 && before - result.iterations.back().error.rms <= options.tolerance * before) {
+    const FitIteration& now = result.iterations.back();
+    if (options.tolerance > 0 && before.objective - now.objective <= options.tolerance * before.objective &&
+        before.error.rms - now.error.rms <= options.tolerance * before.error.rms) {
       result.stop = FitStop::converged;
       break;
     }

@@ -16,6 +16,9 @@ struct FitIteration {
   int iteration = 0;      // 0: before the first step
   DistanceSummary error;  // relative to the points' bounding-box diagonal
   double seconds = 0;     // this iteration's time
+  /// The fit's objective (the squared distances, the normal and smoothness terms) per point, square
+  /// rooted: a length like the rms distance, and what the tolerance measures.
+  double objective = 0;
 };
 
 struct FitOptions {
@@ -29,17 +32,24 @@ struct FitOptions {
   /// The same for the covariances (the Laplacian of the changes of their log-Cholesky precision
   /// parameters, times the squared mean edge length): neighbouring Gaussians change alike, so that a
   /// smooth region stays smooth (ignored by a plain fit).
-  double covariance_smoothness = 1e-4;
+  double covariance_smoothness = 0;
   /// Weight of the prior that keeps each covariance near its start (the Gaussians at the scale of the
   /// features they model): per vertex, the squared change of its log-Cholesky precision parameters,
   /// each made dimensionless, times the squared mean length of its edges, against the mean squared
   /// distance (0: none; ignored by a plain fit).
   double covariance_prior = 0;
+  /// Weight of the normal term: per point with a normal n, the squared sine of the angle between n
+  /// and the limit surface's normal m at its closest point (|(I − n nᵀ) m|²), times the squared mean
+  /// edge length, against its squared distance. The covariances' freedom then shapes the surface
+  /// as the points' surface turns, rather than into facets that pass near the points (0 or no
+  /// normals: none; ignored by a plain fit, whose surface is smooth everywhere).
+  double normal_weight = 0.005;
   /// Each covariance's standard deviations (the square roots of its eigenvalues) kept between these
   /// multiples of the mean length of its vertex's edges, at the start and after every step (0 and
   /// infinity: unbounded; ignored by a plain fit).
   double min_sigma = 0.35, max_sigma = 1.0;
-  /// Stop when an iteration lowers the rms distance by less than this fraction of it (0: never):
+  /// Stop when an iteration lowers the objective (FitIteration::objective) by less than this fraction
+  /// of it (0: never):
   /// by default at 1 %, where further iterations polish what is already fitted.
   double tolerance = 0.01;
   /// Stop when the fit has run this many seconds (checked after each iteration; infinity: never).
@@ -77,7 +87,10 @@ struct FitResult {
 /// whose derivatives are dx = K⁻¹ (dh − dK x). The normal equations are solved by conjugate gradients (Eigen).
 /// It stops early where `options` asks (tolerance, time budget) or where no step lowers the objective.
 /// On all cores, the same result on any number. Throws gps::Error for a mesh or points it cannot fit.
-FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options);
+/// `normals`: the targets' unit normals (empty: none; a zero normal: none at that point), for the
+/// normal term of FitOptions::normal_weight.
+FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options,
+                            const std::vector<Vec3>& normals = {});
 
 /// The same mesh with every covariance the isotropic Σ = (σ² I), σ half the mean edge length: the
 /// starting point of a plain fit, whose limit surface is the linear scheme's.

@@ -135,10 +135,11 @@ def fit(
     progress: Progress = None,
     *,
     report: Literal[True],
-    covariance_smoothness: float = 0.0001,
+    covariance_smoothness: float = 0.0,
     covariance_prior: float = 0.0,
     min_sigma: float = 0.35,
     max_sigma: float = 1.0,
+    normal_weight: float = 0.005,
 ) -> Tuple[Mesh, dict[str, Any]]: ...
 @overload
 def fit(
@@ -152,10 +153,11 @@ def fit(
     progress: Progress = None,
     report: Literal[False] = False,
     *,
-    covariance_smoothness: float = 0.0001,
+    covariance_smoothness: float = 0.0,
     covariance_prior: float = 0.0,
     min_sigma: float = 0.35,
     max_sigma: float = 1.0,
+    normal_weight: float = 0.005,
 ) -> Mesh: ...
 def distance(
     points: Union[Mesh, npt.ArrayLike], to: Union[Mesh, Surface], level: Optional[int] = None, linear: bool = False

@@ -1,5 +1,5 @@
 """The keywords that mirror the command line's options: fit's covariance_smoothness, covariance_prior,
-min_sigma and max_sigma (--covariance-smoothness ...), simplify's error and quads (--error, --quads),
+min_sigma, max_sigma and normal_weight (--covariance-smoothness ...), simplify's error and quads (--error, --quads),
 and compare's angles between normals; each gives what the command line gives and refuses what it
 refuses."""
 import inspect
@@ -53,8 +53,9 @@ def sigmas(mesh):
 def test_fit_defaults_are_the_command_lines():
     parameters = inspect.signature(gpsurf.fit).parameters
     assert {name: parameters[name].default for name in
-            ("covariance_smoothness", "covariance_prior", "min_sigma", "max_sigma")} == {
-        "covariance_smoothness": 1e-4, "covariance_prior": 0.0, "min_sigma": 0.35, "max_sigma": 1.0}
+            ("covariance_smoothness", "covariance_prior", "min_sigma", "max_sigma", "normal_weight")} == {
+        "covariance_smoothness": 0.0, "covariance_prior": 0.0, "min_sigma": 0.35, "max_sigma": 1.0,
+        "normal_weight": 0.005}
     with pytest.raises(TypeError):  # keywords only: no float taken for another by its place
         gpsurf.fit(gpsurf.sample("icosphere", 80), gpsurf.sample("icosphere", 80).positions, 1, False, 1e-5, 0.0,
                    None, None, False, 1e-4)
@@ -86,6 +87,12 @@ def test_fit_covariance_weights_act_as_the_command_lines(tmp_path, cli, spheres)
     # The prior keeps the covariances nearer their start than the fit without it.
     change = lambda fitted: np.abs(fitted.covariances - coarse.covariances).sum()  # noqa: E731
     assert change(held) < change(default)
+    turned = gpsurf.fit(coarse, sphere, iterations=2, normal_weight=0.5)
+    assert same_mesh(turned, fitted_by_command_line(tmp_path, cli, "--normal-weight", 0.5))
+    assert not same_mesh(turned, default)
+    # An array of points has no normals: the weight changes nothing.
+    assert same_mesh(gpsurf.fit(coarse, sphere.positions, iterations=2, normal_weight=0.5),
+                     gpsurf.fit(coarse, sphere.positions, iterations=2, normal_weight=0.0))
 
 
 @pytest.mark.parametrize("bad, words", [
@@ -97,6 +104,8 @@ def test_fit_covariance_weights_act_as_the_command_lines(tmp_path, cli, spheres)
     ({"max_sigma": math.inf}, "max_sigma: expected a finite number above 0"),
     ({"max_sigma": math.nan}, "max_sigma: expected a finite number above 0"),
     ({"covariance_smoothness": -1.0}, "covariance_smoothness: expected a number from 0"),
+    ({"normal_weight": -1.0}, "normal_weight: expected a number from 0"),
+    ({"normal_weight": math.nan}, "normal_weight: expected a number from 0"),
     ({"covariance_smoothness": math.inf}, "covariance_smoothness: expected a number from 0"),
     ({"covariance_prior": math.nan}, "covariance_prior: expected a number from 0"),
     ({"covariance_prior": 2e6}, "covariance_prior: expected a number from 0"),

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/fitting/face_triangles.h"
 #include "core/fitting/fit_progress.h"
 #include "core/fitting/mesh_simplification.h"
 #include "core/fitting/surface_distance.h"
@@ -67,13 +68,14 @@ BackgroundJob::Work MeshJobs::fit_work(std::shared_ptr<const CovarianceMesh> coa
   options.plain = settings.plain;
   return [coarse, options, path = settings.target](const ProgressReport& report) mutable {
     bool has_covariances = false;
-    const std::vector<Vec3> targets = read_polygon_soup(path, has_covariances).positions;
+    const PolygonSoup soup = read_polygon_soup(path, has_covariances);
+    const std::vector<Vec3>& targets = soup.positions;
     if (targets.empty()) throw Error(path + ": has no vertices to fit to");
     report_or_stop(report, 0.05);
     options.progress = [&report, done = FitProgress(options)](const FitIteration& it) mutable {
       report_or_stop(report, 0.05 + 0.95 * done.after(it));
     };
-    const FitResult fit = fit_limit_surface(*coarse, targets, options);
+    const FitResult fit = fit_limit_surface(*coarse, targets, options, smooth_vertex_normals(face_triangles(soup)));
     const DistanceSummary& before = fit.iterations.front().error;
     const DistanceSummary& after = fit.iterations.back().error;
     Modelled m;
