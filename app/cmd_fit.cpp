@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "app/cli_checks.h"
@@ -44,8 +45,8 @@ void add_fit_command(CLI::App& app) {
   struct Args {
     std::string coarse, target, output;
     int iterations = FitOptions().iterations, level = 8;
-    double smoothness = 1e-5, covariance_smoothness = FitOptions().covariance_smoothness,
-           covariance_prior = FitOptions().covariance_prior, min_sigma = FitOptions().min_sigma,
+    std::optional<double> covariance_smoothness;
+    double smoothness = 1e-5, covariance_prior = FitOptions().covariance_prior, min_sigma = FitOptions().min_sigma,
            max_sigma = FitOptions().max_sigma, tolerance = FitOptions().tolerance, time = INFINITY,
            normal_weight = FitOptions().normal_weight;
     bool plain = false, ascii = false, quiet = false;
@@ -79,7 +80,7 @@ void add_fit_command(CLI::App& app) {
       ->check(number_in(0, 1e6));
   cmd->add_option("--covariance-smoothness", args->covariance_smoothness,
                   "weight of the smoothness term on the covariances (the Laplacian of their changes) against the mean "
-                  "squared distance (default 0)")
+                  "squared distance (default: 0 with the target's normals, 1e-4 for a point cloud)")
       ->check(number_in(0, 1e6));
   cmd->add_option("--covariance-prior", args->covariance_prior,
                   "weight of the prior that keeps each covariance near its start, against the mean squared distance "

@@ -131,7 +131,7 @@ void add_fitting_bindings(py::module_& m) {
       "fit",
       [](const MeshHandle& coarse, const py::object& target, int iterations, bool plain, double smoothness,
          double tolerance, std::optional<double> time, const py::object& progress, bool report,
-         double covariance_smoothness, double covariance_prior, double min_sigma, double max_sigma,
+         std::optional<double> covariance_smoothness, double covariance_prior, double min_sigma, double max_sigma,
          double normal_weight) -> py::object {
         if (iterations < 0 || iterations > 1000)
           throw py::value_error("iterations: expected 0..1000, got " + std::to_string(iterations));
@@ -139,7 +139,8 @@ void add_fitting_bindings(py::module_& m) {
         o.iterations = iterations;
         o.plain = plain;
         o.smoothness = number_in(smoothness, 0, 1e6, "smoothness");
-        o.covariance_smoothness = number_in(covariance_smoothness, 0, 1e6, "covariance_smoothness");
+        if (covariance_smoothness)
+          o.covariance_smoothness = number_in(*covariance_smoothness, 0, 1e6, "covariance_smoothness");
         o.covariance_prior = number_in(covariance_prior, 0, 1e6, "covariance_prior");
         o.normal_weight = number_in(normal_weight, 0, 1e6, "normal_weight");
         // The bounds as gpsurf fit --min-sigma --max-sigma take them: the lower below the upper.
@@ -183,14 +184,15 @@ void add_fitting_bindings(py::module_& m) {
       py::arg("coarse"), py::arg("target"), py::arg("iterations") = FitOptions().iterations, py::arg("plain") = false,
       py::arg("smoothness") = 1e-5, py::arg("tolerance") = FitOptions().tolerance, py::arg("time") = py::none(),
       py::arg("progress") = py::none(), py::arg("report") = false, py::kw_only(),
-      py::arg("covariance_smoothness") = FitOptions().covariance_smoothness,
+      py::arg("covariance_smoothness") = py::none(),
       py::arg("covariance_prior") = FitOptions().covariance_prior, py::arg("min_sigma") = FitOptions().min_sigma,
       py::arg("max_sigma") = FitOptions().max_sigma, py::arg("normal_weight") = FitOptions().normal_weight,
       "The limit surface of `coarse` fitted to `target` (a Mesh's vertices or an (n, 3) array of points), as gpsurf "
       "fit fits it: up to `iterations` (0..1000) Levenberg-Marquardt steps on the squared distances from the points "
       "to their closest limit points, moving the means and (unless plain) the covariances; smoothness: the weight "
       "of the smoothness term on the means (0..1e6). Of the covariances (ignored when plain): "
-      "covariance_smoothness, the weight of the smoothness term on their changes (0..1e6); covariance_prior, the "
+      "covariance_smoothness, the weight of the smoothness term on their changes (0..1e6; None: 0 for a Mesh "
+      "target, whose normals keep the surface smooth, 1e-4 for an array); covariance_prior, the "
       "weight of the prior that keeps each near its start (0..1e6, 0: none); min_sigma and max_sigma, the least "
       "and greatest standard deviation of each Gaussian over the mean length of its vertex's edges (min_sigma "
       "0..1e6, max_sigma finite and above it); normal_weight, the weight of the term that turns the surface's "

@@ -9,15 +9,17 @@ double FitProgress::after(const FitIteration& it) {
   seconds_ += it.seconds;
   double fraction = iterations_ > 0 ? double(it.iteration) / iterations_ : 1.0;
   if (std::isfinite(time_budget_)) fraction = std::max(fraction, seconds_ / time_budget_);
-  const double rms = it.objective;
-  if (tolerance_ > 0 && last_rms_ > 0 && rms < last_rms_) {
-    const double fall = (last_rms_ - rms) / last_rms_;
+  // The fit waits on the larger of the two falls (FitOptions::tolerance).
+  const double fall = std::max(last_rms_ > 0 ? (last_rms_ - it.error.rms) / last_rms_ : 0.0,
+                               last_objective_ > 0 ? (last_objective_ - it.objective) / last_objective_ : 0.0);
+  if (tolerance_ > 0 && fall > 0) {
     if (first_fall_ < 0) first_fall_ = fall;
     if (first_fall_ > tolerance_)
       fraction =
           std::max(fraction, std::log(first_fall_ / std::max(fall, tolerance_)) / std::log(first_fall_ / tolerance_));
   }
-  last_rms_ = rms;
+  last_rms_ = it.error.rms;
+  last_objective_ = it.objective;
   // Never back, and 1 only once the fit has returned.
   fraction_ = std::max(fraction_, std::min(fraction, 0.99));
   return fraction_;

@@ -11,15 +11,15 @@ public:
       : iterations_(options.iterations), time_budget_(options.time_budget), tolerance_(options.tolerance) {}
   /// The fraction done, 0 to below 1, after iteration `it` (given in order, iteration 0 first): the
   /// largest of the iterations run over the cap, the seconds spent over the time budget and, with a
-  /// tolerance, how far the rms distance's fall per iteration has shrunk toward it. The falls shrink
-  /// about geometrically as a fit converges, so that share is measured on a log scale, from the first
-  /// iteration's fall down to the tolerance.
+  /// tolerance, how far the fall per iteration (the larger of the rms distance's and the
+  /// objective's) has shrunk toward it. The falls shrink about geometrically as a fit converges, so
+  /// that share is measured on a log scale, from the first iteration's fall down to the tolerance.
   double after(const FitIteration& it);
 
 private:
   int iterations_;
   double time_budget_, tolerance_;
-  double seconds_ = 0, last_rms_ = -1, first_fall_ = -1;
+  double seconds_ = 0, last_rms_ = -1, last_objective_ = -1, first_fall_ = -1;
   double fraction_ = 0;
 };
 

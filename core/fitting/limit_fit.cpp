@@ -146,7 +146,8 @@ public:
     if (!options.plain && options.normal_weight > 0 && !normals.empty()) normal_scale_ = std::sqrt(options.normal_weight) * length_;
     const double per_vertex = double(targets.size()) / double(std::max(n_, 1));
     smoothness_ = options.smoothness * per_vertex;
-    covariance_smoothness_ = options.covariance_smoothness * per_vertex;
+    covariance_smoothness_ =
+        options.covariance_smoothness.value_or(normal_scale_ > 0 ? 0.0 : kPointsCovarianceSmoothness) * per_vertex;
     for (double& edge : edge_)
       if (!(edge > 0)) edge = length_;
     if (p_ == 9)
@@ -557,7 +558,7 @@ const char* describe(FitStop stop) {
     case FitStop::iterations:
       return "ran its iterations";
     case FitStop::converged:
-      return "converged (the objective fell by less than the tolerance)";
+      return "converged (the rms distance and the objective fell by less than the tolerance)";
     case FitStop::time:
       return "ran out of time";
     case FitStop::no_descent:
@@ -580,7 +581,7 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   if (!(options.time_budget > 0)) throw Error("the fit's time budget must be positive");
   if (!(options.min_sigma >= 0 && options.min_sigma < options.max_sigma))
     throw Error("the fit's standard deviation bounds must be 0 or more, the lower below the upper");
-  if (!(options.covariance_smoothness >= 0 && std::isfinite(options.covariance_smoothness)))
+  if (options.covariance_smoothness && !(*options.covariance_smoothness >= 0 && std::isfinite(*options.covariance_smoothness)))
     throw Error("the fit's covariance smoothness must be a finite weight, 0 or more");
   if (!(options.covariance_prior >= 0 && std::isfinite(options.covariance_prior)))
     throw Error("the fit's covariance prior must be a finite weight, 0 or more");

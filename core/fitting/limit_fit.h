@@ -3,6 +3,7 @@
 // covariances move to minimise the squared distances from the points to the limit surface.
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "core/fitting/surface_distance.h"
@@ -21,6 +22,9 @@ struct FitIteration {
   double objective = 0;
 };
 
+/// The covariance smoothness of a fit to points without normals, unless FitOptions says otherwise.
+inline constexpr double kPointsCovarianceSmoothness = 1e-4;
+
 struct FitOptions {
   /// The most iterations; by default the fit stops sooner, once converged (`tolerance`).
   int iterations = 100;
@@ -31,8 +35,10 @@ struct FitOptions {
   double smoothness = 1e-5;
   /// The same for the covariances (the Laplacian of the changes of their log-Cholesky precision
   /// parameters, times the squared mean edge length): neighbouring Gaussians change alike, so that a
-  /// smooth region stays smooth (ignored by a plain fit).
-  double covariance_smoothness = 0;
+  /// smooth region stays smooth (ignored by a plain fit). Unset: 0 where the points have normals
+  /// (the normal term keeps the surface from facets, and the covariances free fit closer), else
+  /// kPointsCovarianceSmoothness.
+  std::optional<double> covariance_smoothness;
   /// Weight of the prior that keeps each covariance near its start (the Gaussians at the scale of the
   /// features they model): per vertex, the squared change of its log-Cholesky precision parameters,
   /// each made dimensionless, times the squared mean length of its edges, against the mean squared
@@ -64,7 +70,7 @@ struct FitOptions {
 /// Why the fit stopped.
 enum class FitStop {
   iterations,  // it ran the iterations asked for
-  converged,   // the rms distance fell by less than the tolerance
+  converged,   // the rms distance and the objective fell by less than the tolerance
   time,        // the time budget ran out
   no_descent,  // no step lowered the objective
 };

@@ -1,5 +1,6 @@
-// A fit's progress: the iterations' share, the time budget's, and with a tolerance how far the rms
-// distance's fall per iteration has shrunk toward it on a log scale; never back, never 1 before the end.
+// A fit's progress: the iterations' share, the time budget's, and with a tolerance how far the
+// larger of the rms distance's and the objective's fall per iteration has shrunk toward it on a log
+// scale; never back, never 1 before the end.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,11 +10,12 @@
 namespace gps {
 namespace {
 
-FitIteration iteration(int k, double rms, double seconds = 0.1) {
+FitIteration iteration(int k, double rms, double seconds = 0.1, double objective = -1) {
   FitIteration it;
   it.iteration = k;
   it.error.rms = rms;
   it.seconds = seconds;
+  it.objective = objective < 0 ? rms : objective;
   return it;
 }
 
@@ -32,6 +34,14 @@ TEST(FitProgress, ConvergingFallsCountOnALogScaleTowardTheTolerance) {
   // A fall under the tolerance: the fit stops now; the fraction stays below 1 until it returns.
   rms *= 1 - 0.005;
   EXPECT_EQ(progress.after(iteration(5, rms)), 0.99);
+}
+
+TEST(FitProgress, TheLargerOfTheTwoFallsCounts) {
+  FitProgress progress(FitOptions{});
+  progress.after(iteration(0, 1.0, 0.1, 2.0));
+  EXPECT_NEAR(progress.after(iteration(1, 0.9, 0.1, 1.0)), 0.01, 1e-12);  // falls of 10 % and 50 %: the first
+  // The rms rises while the objective falls by 5 % of the 50 % fall: log10(50 / 5) / log10(50 / 1).
+  EXPECT_NEAR(progress.after(iteration(2, 0.95, 0.1, 0.95)), 1 / std::log10(50.0), 1e-12);
 }
 
 TEST(FitProgress, IterationsAndTimeWithoutToleranceAndNeverBack) {

@@ -134,11 +134,12 @@ struct FitFigures {
   double simplified = 0, plain = 0, gps = 0;  // rms over the diagonal
 };
 
-FitResult fit(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, bool plain) {
+FitResult fit(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, bool plain,
+              const std::vector<Vec3>& normals = {}) {
   FitOptions options;
   options.iterations = 8;
   options.plain = plain;
-  FitResult r = fit_limit_surface(coarse, targets, options);
+  FitResult r = fit_limit_surface(coarse, targets, options, normals);
   for (size_t k = 1; k < r.iterations.size(); ++k)
     EXPECT_LE(r.iterations[k].error.rms, r.iterations[k - 1].error.rms * (1 + 1e-9)) << "iteration " << k;
   EXPECT_LT(r.iterations.back().error.rms, r.iterations.front().error.rms);
@@ -237,9 +238,13 @@ TEST(LimitFit, StopsWhenTheErrorFallsByLessThanTheTolerance) {
   EXPECT_EQ(r.stop, FitStop::converged);
   ASSERT_GE(r.iterations.size(), 3u);
   ASSERT_LT(r.iterations.size(), 41u);
-  const auto fall = [&](size_t k) { return 1 - r.iterations[k].error.rms / r.iterations[k - 1].error.rms; };
-  EXPECT_LE(fall(r.iterations.size() - 1), tolerance);
-  for (size_t k = 1; k + 1 < r.iterations.size(); ++k) EXPECT_GT(fall(k), tolerance) << "iteration " << k;
+  // It stops at the first iteration where both the rms distance and the objective fall by no more.
+  const auto falls = [&](size_t k) {
+    const FitIteration &before = r.iterations[k - 1], &now = r.iterations[k];
+    return std::max(1 - now.error.rms / before.error.rms, 1 - now.objective / before.objective);
+  };
+  EXPECT_LE(falls(r.iterations.size() - 1), tolerance);
+  for (size_t k = 1; k + 1 < r.iterations.size(); ++k) EXPECT_GT(falls(k), tolerance) << "iteration " << k;
   // Stopping changes nothing of the iterations run: the same mesh as a fit asked for that many.
   expect_same_gaussians(r.mesh, fit_icosphere_to_bumps(int(r.iterations.size()) - 1, 0).mesh);
 }
@@ -292,7 +297,7 @@ TEST(LimitFit, SmoothSphereTurnsNoFurtherThanThePlainFitAndKeepsItsGaussiansToTh
     const TriangleMesh limit = limit_surface_triangles(m, 6).triangles;
     return summarise_angles(SurfaceDistance(limit).normal_angles(scan.positions, scan.normals)).rms;
   };
-  const FitResult gps = fit(coarse, scan.positions, false);
+  const FitResult gps = fit(coarse, scan.positions, false, smooth_vertex_normals(scan));
   const double plain = normals_rms(fit(coarse, scan.positions, true).mesh), turned = normals_rms(gps.mesh);
   std::printf("normals' rms angle: plain fit %.3f°, GPS fit %.3f°\n", plain, turned);
   EXPECT_LE(turned, plain);
@@ -328,6 +333,100 @@ TEST(LimitFit, TheCovariancePriorHoldsTheGaussiansToTheirStart) {
   EXPECT_LT(held, 0.01 * free);
 }
 
+/// A bumpy sphere's vertices with their normals, and a simplified mesh to fit to them.
+struct ScanToFit {
+  std::vector<Vec3> points, normals;
+  CovarianceMesh coarse;
+};
+
+ScanToFit bumpy_scan() {
+  const CovarianceMesh dense = bumpy_sphere(16);
+  SimplifyOptions s;
+  s.target_vertices = 200;
+  const TriangleMesh scan = face_triangles(dense);
+  return {scan.positions, smooth_vertex_normals(scan), simplify_mesh(dense, s).mesh};
+}
+
+TEST(LimitFit, TheNormalTermTurnsTheSurfaceAsTheScanTurnsAndTheObjectiveNeverRises) {
+  const ScanToFit scan = bumpy_scan();
+  const auto fitted = [&](double normal_weight) {
+    FitOptions options;
+    options.iterations = 8;
+    options.tolerance = 0;
+    options.covariance_smoothness = 0;  // the same for both: only the normal term differs
+    options.normal_weight = normal_weight;
+    const FitResult r = fit_limit_surface(scan.coarse, scan.points, options, scan.normals);
+    // The old closest point is kept where its distance and normal residual are smaller, so no
+    // iteration raises the objective.
+    for (size_t k = 1; k < r.iterations.size(); ++k)
+      EXPECT_LE(r.iterations[k].objective, r.iterations[k - 1].objective * (1 + 1e-12)) << "iteration " << k;
+    const TriangleMesh limit = limit_surface_triangles(r.mesh, 6).triangles;
+    const SurfaceDistance surface(limit);
+    const double angle = summarise_angles(surface.normal_angles(scan.points, scan.normals)).rms;
+    const double rms = summarise_distances(surface.distances(scan.points), 1).rms;
+    std::printf("normal weight %g: rms %.3e, normals' rms angle %.3f°\n", normal_weight, rms, angle);
+    return std::pair(rms, angle);
+  };
+  const auto [free_rms, free_angle] = fitted(0);
+  const auto [turned_rms, turned_angle] = fitted(FitOptions().normal_weight);
+  const auto [strong_rms, strong_angle] = fitted(0.5);
+  EXPECT_LT(turned_angle, free_angle);
+  EXPECT_LT(strong_angle, turned_angle);
+  EXPECT_LT(turned_rms, 1.5 * free_rms);
+  EXPECT_GT(strong_rms, free_rms);  // a strong normal term trades distance for turning
+}
+
+TEST(LimitFit, NormalsChangeNothingWhereTheTermCannotUseThem) {
+  const ScanToFit scan = bumpy_scan();
+  FitOptions options;
+  options.iterations = 2;
+  options.covariance_smoothness = kPointsCovarianceSmoothness;
+  const FitResult without = fit_limit_surface(scan.coarse, scan.points, options);
+  // Zero normals, or a weight of 0, are no normals.
+  expect_same_gaussians(
+      without.mesh,
+      fit_limit_surface(scan.coarse, scan.points, options, std::vector<Vec3>(scan.points.size(), Vec3::Zero())).mesh);
+  FitOptions weightless = options;
+  weightless.normal_weight = 0;
+  expect_same_gaussians(without.mesh, fit_limit_surface(scan.coarse, scan.points, weightless, scan.normals).mesh);
+  EXPECT_FALSE(fit_limit_surface(scan.coarse, scan.points, options, scan.normals).mesh.means() == without.mesh.means());
+  // A plain fit's surface is smooth everywhere: it takes no normal term.
+  FitOptions plain = options;
+  plain.plain = true;
+  expect_same_gaussians(fit_limit_surface(scan.coarse, scan.points, plain).mesh,
+                        fit_limit_surface(scan.coarse, scan.points, plain, scan.normals).mesh);
+  // Unset, the covariance smoothness is 0 with normals and kPointsCovarianceSmoothness without.
+  FitOptions unset = options;
+  unset.covariance_smoothness.reset();
+  expect_same_gaussians(without.mesh, fit_limit_surface(scan.coarse, scan.points, unset).mesh);
+  FitOptions zero = options;
+  zero.covariance_smoothness = 0;
+  expect_same_gaussians(fit_limit_surface(scan.coarse, scan.points, zero, scan.normals).mesh,
+                        fit_limit_surface(scan.coarse, scan.points, unset, scan.normals).mesh);
+}
+
+TEST(SmoothVertexNormals, AVertexOnASharpEdgeOrCornerHasNone) {
+  const TriangleMesh box = face_triangles(block(2));
+  const std::vector<Vec3> normals = smooth_vertex_normals(box);
+  int interior = 0;
+  for (size_t v = 0; v < box.positions.size(); ++v) {
+    const Vec3 p = box.positions[v].cwiseQuotient(Vec3(1.0, 0.6, 0.4));
+    const int on_faces = int(std::abs(std::abs(p[0]) - 1) < 1e-12) + int(std::abs(std::abs(p[1]) - 1) < 1e-12) +
+                         int(std::abs(std::abs(p[2]) - 1) < 1e-12);
+    if (on_faces > 1) {
+      EXPECT_EQ(normals[v], Vec3::Zero()) << "vertex " << v << " on an edge";
+    } else {
+      ++interior;
+      Eigen::Index axis = 0;
+      Vec3(p.cwiseAbs()).maxCoeff(&axis);
+      EXPECT_NEAR(normals[v][axis], p[axis] > 0 ? 1.0 : -1.0, 1e-12) << "vertex " << v;
+    }
+  }
+  EXPECT_EQ(interior, 6);  // the middle of each face
+  // A wider angle takes the edges' normals too.
+  for (const Vec3& n : smooth_vertex_normals(box, 91)) EXPECT_NEAR(n.norm(), 1.0, 1e-12);
+}
+
 TEST(LimitFit, RefusesABadCovarianceWeightOrSigmaBounds) {
   const CovarianceMesh coarse = make_sample("icosphere", 80);
   const std::vector<Vec3> targets = vertex_means(coarse);
@@ -344,7 +443,12 @@ TEST(LimitFit, RefusesABadCovarianceWeightOrSigmaBounds) {
     FitOptions options;
     options.covariance_smoothness = smoothness;
     EXPECT_THROW(fit_limit_surface(coarse, targets, options), Error) << smoothness;
+    FitOptions normal;
+    normal.normal_weight = smoothness;
+    EXPECT_THROW(fit_limit_surface(coarse, targets, normal), Error) << smoothness;
   }
+  EXPECT_THROW(fit_limit_surface(coarse, targets, FitOptions(), std::vector<Vec3>(targets.size() + 1, Vec3::UnitX())),
+               Error);
 }
 
 }  // namespace

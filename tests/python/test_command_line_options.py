@@ -1,7 +1,7 @@
 """The keywords that mirror the command line's options: fit's covariance_smoothness, covariance_prior,
-min_sigma, max_sigma and normal_weight (--covariance-smoothness ...), simplify's error and quads (--error, --quads),
-and compare's angles between normals; each gives what the command line gives and refuses what it
-refuses."""
+min_sigma, max_sigma and normal_weight (--covariance-smoothness ...), simplify's error and quads
+(--error, --quads), and compare's angles between normals; each gives what the command line gives and
+refuses what it refuses."""
 import inspect
 import math
 import re
@@ -54,7 +54,7 @@ def test_fit_defaults_are_the_command_lines():
     parameters = inspect.signature(gpsurf.fit).parameters
     assert {name: parameters[name].default for name in
             ("covariance_smoothness", "covariance_prior", "min_sigma", "max_sigma", "normal_weight")} == {
-        "covariance_smoothness": 0.0, "covariance_prior": 0.0, "min_sigma": 0.35, "max_sigma": 1.0,
+        "covariance_smoothness": None, "covariance_prior": 0.0, "min_sigma": 0.35, "max_sigma": 1.0,
         "normal_weight": 0.005}
     with pytest.raises(TypeError):  # keywords only: no float taken for another by its place
         gpsurf.fit(gpsurf.sample("icosphere", 80), gpsurf.sample("icosphere", 80).positions, 1, False, 1e-5, 0.0,
