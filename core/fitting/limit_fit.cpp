@@ -388,7 +388,7 @@ private:
     return sum;
   }
 
-  // The normal term: the squared residuals of every point's tangents along its target's normal.
+  // The normal term: every point's squared normal residual (the squared sine of the angle, scaled).
   static double normal_energy(const std::vector<PointState>& points) {
     double sum = 0;
     for (const auto& p : points) sum += p.normal_residual.squaredNorm();
@@ -469,8 +469,7 @@ private:
     PointJacobian out;
     out.position = w * pt.inverse * b;
     out.normal.setZero();
-    if (!(normal_scale_ > 0)) return out;
-    if (pt.normal_gradient.isZero()) return out;
+    if (!(normal_scale_ > 0) || pt.normal_gradient.isZero()) return out;
     Eigen::Matrix<double, 3, 9> tangent[2];
     for (int d = 0; d < 2; ++d) {
       tangent[d] = (d == 0 ? weights.du[a] : weights.dv[a]) * b;
