@@ -147,7 +147,8 @@ void add_fit_command(CLI::App& app) {
       std::cout << "fitting " << coarse.n_vertices() << " vertices" << (args->plain ? " (plain)" : "") << " to "
                 << targets.size() << " points\n"
                 << std::flush;
-    const FitResult result = naming_input(args->coarse, [&] { return fit_limit_surface(coarse, targets, options, normals); });
+    const FitResult result =
+        naming_input(args->coarse, [&] { return fit_limit_surface(coarse, targets, options, normals); });
     bar.finish();
     if (!args->quiet)
       std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop)

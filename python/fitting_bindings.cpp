@@ -184,9 +184,9 @@ void add_fitting_bindings(py::module_& m) {
       py::arg("coarse"), py::arg("target"), py::arg("iterations") = FitOptions().iterations, py::arg("plain") = false,
       py::arg("smoothness") = 1e-5, py::arg("tolerance") = FitOptions().tolerance, py::arg("time") = py::none(),
       py::arg("progress") = py::none(), py::arg("report") = false, py::kw_only(),
-      py::arg("covariance_smoothness") = py::none(),
-      py::arg("covariance_prior") = FitOptions().covariance_prior, py::arg("min_sigma") = FitOptions().min_sigma,
-      py::arg("max_sigma") = FitOptions().max_sigma, py::arg("normal_weight") = FitOptions().normal_weight,
+      py::arg("covariance_smoothness") = py::none(), py::arg("covariance_prior") = FitOptions().covariance_prior,
+      py::arg("min_sigma") = FitOptions().min_sigma, py::arg("max_sigma") = FitOptions().max_sigma,
+      py::arg("normal_weight") = FitOptions().normal_weight,
       "The limit surface of `coarse` fitted to `target` (a Mesh's vertices or an (n, 3) array of points), as gpsurf "
       "fit fits it: up to `iterations` (0..1000) Levenberg-Marquardt steps on the squared distances from the points "
       "to their closest limit points, moving the means and (unless plain) the covariances; smoothness: the weight "
@@ -197,7 +197,8 @@ void add_fitting_bindings(py::module_& m) {
       "and greatest standard deviation of each Gaussian over the mean length of its vertex's edges (min_sigma "
       "0..1e6, max_sigma finite and above it); normal_weight, the weight of the term that turns the surface's "
       "normals toward those of a Mesh target's faces (0..1e6, 0: none; an array has no normals). tolerance: stop "
-      "when an iteration lowers the fit's objective by less than this fraction of it (0: never); time: stop after the iteration that passes this many seconds (None: "
+      "when an iteration lowers the fit's objective by less than this fraction of it (0: never); time: stop after the "
+      "iteration that passes this many seconds (None: "
       "never). progress: called with the fraction of iterations done; returning False cancels (gpsurf.Cancelled). "
       "Returns the fitted Mesh; report=True: (Mesh, dict) with stop ('iterations', 'converged', 'time' or "
       "'no_descent'), reason (in words), iterations (the number run) and relative_rms (per iteration, the first "

@@ -143,7 +143,8 @@ public:
     l.setFromTriplets(lap.begin(), lap.end());
     laplacian_normal_ = Eigen::SparseMatrix<double>(l.transpose() * l);
     length_ = edges > 0 ? edge_sum / double(edges) : diagonal_;
-    if (!options.plain && options.normal_weight > 0 && !normals.empty()) normal_scale_ = std::sqrt(options.normal_weight) * length_;
+    if (!options.plain && options.normal_weight > 0 && !normals.empty())
+      normal_scale_ = std::sqrt(options.normal_weight) * length_;
     const double per_vertex = double(targets.size()) / double(std::max(n_, 1));
     smoothness_ = options.smoothness * per_vertex;
     covariance_smoothness_ =
@@ -203,7 +204,8 @@ public:
       for (size_t j = 0; j < found.size(); ++j) {
         const double old_distance = old[j].residual.norm();
         distances_[j] = std::min(distances_[j], old_distance);
-        const bool keep = normal_scale_ > 0 ? point_energy(old[j]) < point_energy(now[j]) : old_distance < found[j].distance;
+        const bool keep =
+            normal_scale_ > 0 ? point_energy(old[j]) < point_energy(now[j]) : old_distance < found[j].distance;
         if (keep) {
           found[j] = correspondences_[j];
           found[j].distance = old_distance;
@@ -403,9 +405,7 @@ private:
     return sum;
   }
 
-  static double point_energy(const PointState& p) {
-    return p.residual.squaredNorm() + p.normal_residual.squaredNorm();
-  }
+  static double point_energy(const PointState& p) { return p.residual.squaredNorm() + p.normal_residual.squaredNorm(); }
 
   std::vector<PointState> point_states(const VertexState& s) const { return point_states(s, weights_); }
 
@@ -478,7 +478,8 @@ private:
       tangent[d] = pt.inverse * tangent[d];
     }
     // dc = dx_u × x_v + x_u × dx_v.
-    out.normal = pt.normal_gradient * (cross_matrix(pt.tangent[0]) * tangent[1] - cross_matrix(pt.tangent[1]) * tangent[0]);
+    out.normal =
+        pt.normal_gradient * (cross_matrix(pt.tangent[0]) * tangent[1] - cross_matrix(pt.tangent[1]) * tangent[0]);
     return out;
   }
 
@@ -580,7 +581,8 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   if (!(options.time_budget > 0)) throw Error("the fit's time budget must be positive");
   if (!(options.min_sigma >= 0 && options.min_sigma < options.max_sigma))
     throw Error("the fit's standard deviation bounds must be 0 or more, the lower below the upper");
-  if (options.covariance_smoothness && !(*options.covariance_smoothness >= 0 && std::isfinite(*options.covariance_smoothness)))
+  if (options.covariance_smoothness &&
+      !(*options.covariance_smoothness >= 0 && std::isfinite(*options.covariance_smoothness)))
     throw Error("the fit's covariance smoothness must be a finite weight, 0 or more");
   if (!(options.covariance_prior >= 0 && std::isfinite(options.covariance_prior)))
     throw Error("the fit's covariance prior must be a finite weight, 0 or more");

@@ -83,7 +83,8 @@ TEST(FitCli, StopsAtTheToleranceOrTheTimeAndSaysWhy) {
   const std::string fit = "fit " + coarse + " --target " + target + " -o " + out + " --level 0 --iterations 50";
   const auto converged = run_command(gpsurf(fit + " --tolerance 0.2"));
   ASSERT_EQ(converged.exit_code, 0) << converged.output;
-  EXPECT_NE(converged.output.find(" iterations: converged (the rms distance and the objective fell by less than the tolerance)\n"),
+  EXPECT_NE(converged.output.find(
+                " iterations: converged (the rms distance and the objective fell by less than the tolerance)\n"),
             std::string::npos)
       << converged.output;
   EXPECT_EQ(converged.output.find("\niteration 50: "), std::string::npos) << converged.output;

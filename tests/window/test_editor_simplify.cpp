@@ -77,8 +77,7 @@ TEST_F(EditorSimplify, TheSimplifiedMeshFittedToTheDenseFile) {
   std::vector<Vec3> targets;
   for (size_t v = 0; v < dense_.n_vertices(); ++v) targets.push_back(dense_.mean(v));
   // The fit turns the surface as the dense file's faces turn (core/fitting/face_triangles.h).
-  const FitResult fit =
-      fit_limit_surface(coarse, targets, FitOptions{}, smooth_vertex_normals(face_triangles(dense_)));
+  const FitResult fit = fit_limit_surface(coarse, targets, FitOptions{}, smooth_vertex_normals(face_triangles(dense_)));
   EXPECT_LT(fit.iterations.back().error.rms, fit.iterations.front().error.rms);
   expect_same(saved, fit.mesh);
 }
