@@ -595,8 +595,12 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   problem.update_correspondences(x);
   FitResult result;
   double energy = problem.objective_of_correspondences(x);
+  // A GPS fit moves its means alone first (FitOptions::means_first).
+  bool means_only = problem.unknowns_per_vertex() == 9 && options.means_first > 0;
+  const auto held = [&](int u) { return means_only && u % problem.unknowns_per_vertex() >= 3; };
   const auto report = [&](int iteration) {
-    FitIteration it{iteration, problem.error(), seconds_since(clock), std::sqrt(energy / double(targets.size()))};
+    FitIteration it{iteration, problem.error(), seconds_since(clock), std::sqrt(energy / double(targets.size())),
+                    means_only};
     result.iterations.push_back(it);
     if (options.progress) options.progress(it);
     clock = std::chrono::steady_clock::now();
@@ -621,9 +625,12 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
     // Levenberg-Marquardt: H + λ diag(H), λ raised until a step lowers the objective.
     for (int attempt = 0; attempt < 12 && !accepted; ++attempt) {
       Eigen::SparseMatrix<double> damped = h;
-      for (int u = 0; u < problem.unknowns(); ++u) damped.coeffRef(u, u) += damping * diagonal[u] + floor;
+      for (int u = 0; u < problem.unknowns(); ++u)
+        damped.coeffRef(u, u) += damping * diagonal[u] + floor + (held(u) ? 1e30 : 0.0);
       solver.compute(damped);
-      const Eigen::VectorXd delta = -solver.solve(g);
+      Eigen::VectorXd delta = -solver.solve(g);
+      for (int u = 0; u < problem.unknowns(); ++u)
+        if (held(u)) delta[u] = 0;
       {
         const Parameters y = problem.stepped(x, delta);
         problem.set_means(y);
@@ -638,6 +645,11 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
       }
       damping *= 4;
     }
+    if (!accepted && means_only) {
+      means_only = false;  // no step of the means alone: this iteration again, the covariances free
+      --iteration;
+      continue;
+    }
     if (!accepted) {
       result.stop = FitStop::no_descent;
       break;
@@ -648,8 +660,10 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
     report(iteration);
     if (iteration == options.iterations) break;
     const FitIteration& now = result.iterations.back();
-    if (options.tolerance > 0 && before.objective - now.objective <= options.tolerance * before.objective &&
-        before.error.rms - now.error.rms <= options.tolerance * before.error.rms) {
+    if (means_only) {
+      means_only = before.error.rms - now.error.rms > options.means_first * before.error.rms;
+    } else if (options.tolerance > 0 && before.objective - now.objective <= options.tolerance * before.objective &&
+               before.error.rms - now.error.rms <= options.tolerance * before.error.rms) {
       result.stop = FitStop::converged;
       break;
     }

@@ -20,6 +20,8 @@ struct FitIteration {
   /// The fit's objective (the squared distances, the normal and smoothness terms) per point, square
   /// rooted: a length like the rms distance, and what the tolerance measures.
   double objective = 0;
+  /// Whether this iteration moved the means alone (FitOptions::means_first).
+  bool means_only = false;
 };
 
 /// The covariance smoothness of a fit to points without normals, unless FitOptions says otherwise.
@@ -58,6 +60,11 @@ struct FitOptions {
   /// of it (0: never):
   /// by default at 1 %, where further iterations polish what is already fitted.
   double tolerance = 0.01;
+  /// A GPS fit moves the means alone, the covariances held, until an iteration lowers the rms
+  /// distance by no more than this fraction of it; then both (0: both from the start). From a start
+  /// far from the points, the covariances would otherwise bend toward the first, far closest points
+  /// (thin flaps where a plain fit recovers). The tolerance is not checked before both move.
+  double means_first = 0.3;
   /// Stop when the fit has run this many seconds (checked after each iteration; infinity: never).
   double time_budget = INFINITY;
   /// Tessellation level of the limit surface that the closest points are first found on.

@@ -269,6 +269,39 @@ TEST(LimitFit, StopsWhenTheTimeBudgetRunsOut) {
   expect_same_gaussians(r.mesh, fit_icosphere_to_bumps(1, 0).mesh);
 }
 
+TEST(LimitFit, AGpsFitMovesItsMeansAloneUntilTheirFallSlows) {
+  const CovarianceMesh coarse = make_sample("icosphere", 80);
+  const std::vector<Vec3> targets = vertex_means(bumpy_sphere(8));
+  const auto fitted = [&](int iterations, double means_first) {
+    FitOptions options;
+    options.iterations = iterations;
+    options.tolerance = 0;
+    options.means_first = means_first;
+    return fit_limit_surface(coarse, targets, options);
+  };
+  const FitResult start = fitted(0, 0.3), first = fitted(1, 0.3), free = fitted(1, 0);
+  ASSERT_EQ(first.iterations.size(), 2u);
+  EXPECT_TRUE(first.iterations[1].means_only);
+  EXPECT_FALSE(free.iterations[1].means_only);
+  for (size_t i = 0; i < coarse.n_vertices(); ++i) {
+    EXPECT_EQ(first.mesh.covariance(i), start.mesh.covariance(i)) << "vertex " << i;  // held (bounds applied)
+    EXPECT_NE(first.mesh.mean(i), start.mesh.mean(i)) << "vertex " << i;
+  }
+  bool moved = false;
+  for (size_t i = 0; i < coarse.n_vertices(); ++i) moved = moved || free.mesh.covariance(i) != start.mesh.covariance(i);
+  EXPECT_TRUE(moved);
+  // The covariances move once an iteration lowers the rms distance by no more than the fraction.
+  const FitResult r = fitted(12, 0.3);
+  size_t k = 1;
+  while (k < r.iterations.size() && r.iterations[k].means_only) ++k;
+  ASSERT_LT(k, r.iterations.size());
+  ASSERT_GE(k, 2u);
+  // Every means-only iteration but the last lowered the rms by more than the fraction.
+  for (size_t j = 1; j + 1 < k; ++j)
+    EXPECT_GT(1 - r.iterations[j].error.rms / r.iterations[j - 1].error.rms, 0.3) << "iteration " << j;
+  EXPECT_LE(1 - r.iterations[k - 1].error.rms / r.iterations[k - 2].error.rms, 0.3);
+}
+
 TEST(LimitFit, RefusesAToleranceOrTimeBudgetOutOfRange) {
   for (const double tolerance : {-0.1, 1.5, double(NAN)}) EXPECT_THROW(fit_icosphere_to_bumps(2, tolerance), Error);
   for (const double budget : {0.0, -1.0, double(NAN)}) EXPECT_THROW(fit_icosphere_to_bumps(2, 0, budget), Error);
