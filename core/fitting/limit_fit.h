@@ -18,7 +18,7 @@ struct FitIteration {
   DistanceSummary error;  // relative to the points' bounding-box diagonal
   double seconds = 0;     // this iteration's time
   /// The fit's objective (the squared distances, the normal and smoothness terms) per point, square
-  /// rooted: a length like the rms distance, and what the tolerance measures.
+  /// rooted: a length like the rms distance, which the tolerance measures with it.
   double objective = 0;
   /// Whether this iteration moved the means alone (FitOptions::means_first).
   bool means_only = false;
@@ -56,9 +56,9 @@ struct FitOptions {
   /// multiples of the mean length of its vertex's edges, at the start and after every step (0 and
   /// infinity: unbounded; ignored by a plain fit).
   double min_sigma = 0.35, max_sigma = 1.0;
-  /// Stop when an iteration lowers the objective (FitIteration::objective) by less than this fraction
-  /// of it (0: never):
-  /// by default at 1 %, where further iterations polish what is already fitted.
+  /// Stop when an iteration lowers both the rms distance and the objective (FitIteration::objective)
+  /// by less than this fraction of each (0: never): by default at 1 %, where further iterations
+  /// polish what is already fitted.
   double tolerance = 0.01;
   /// A GPS fit moves the means alone, the covariances held, until an iteration lowers the rms
   /// distance by no more than this fraction of it; then both (0: both from the start). From a start
@@ -93,11 +93,12 @@ struct FitResult {
 
 /// Fits the limit surface of `coarse` to `targets` by Levenberg-Marquardt on the squared distances
 /// from each target to its closest limit point (patch, u, v), found again after every accepted step
-/// and kept where the old one is closer (so the error never rises), plus a small smoothness term.
+/// and kept where the old one is closer (with normals, where its distance and normal residual are
+/// smaller: the objective never rises), plus the normal term and small smoothness terms.
 /// Unknowns per vertex: its mean, and (unless plain) the Cholesky factor L of its precision Σ⁻¹ = LLᵀ
 /// with a logarithmic diagonal, positive definite by construction. The limit point is
 /// x = K⁻¹h with K = Σₖ wₖ Kₖ, h = Σₖ wₖ Kₖ μₖ over the control vertices (core/fitting/limit_weights.h),
-/// whose derivatives are dx = K⁻¹ (dh − dK x). The normal equations are solved by conjugate gradients (Eigen).
+/// whose derivatives are dx = K⁻¹ (dh − dK x); the normal's come from x_u = K⁻¹ (h_u − K_u x). The normal equations are solved by conjugate gradients (Eigen).
 /// It stops early where `options` asks (tolerance, time budget) or where no step lowers the objective.
 /// On all cores, the same result on any number. Throws gps::Error for a mesh or points it cannot fit.
 /// `normals`: the targets' unit normals (empty: none; a zero normal: none at that point), for the
