@@ -98,7 +98,8 @@ struct FitResult {
 /// Unknowns per vertex: its mean, and (unless plain) the Cholesky factor L of its precision Σ⁻¹ = LLᵀ
 /// with a logarithmic diagonal, positive definite by construction. The limit point is
 /// x = K⁻¹h with K = Σₖ wₖ Kₖ, h = Σₖ wₖ Kₖ μₖ over the control vertices (core/fitting/limit_weights.h),
-/// whose derivatives are dx = K⁻¹ (dh − dK x); the normal's come from x_u = K⁻¹ (h_u − K_u x). The normal equations are solved by conjugate gradients (Eigen).
+/// whose derivatives are dx = K⁻¹ (dh − dK x); the normal's come from x_u = K⁻¹ (h_u − K_u x).
+/// The normal equations are solved by conjugate gradients (Eigen).
 /// It stops early where `options` asks (tolerance, time budget) or where no step lowers the objective.
 /// On all cores, the same result on any number. Throws gps::Error for a mesh or points it cannot fit.
 /// `normals`: the targets' unit normals (empty: none; a zero normal: none at that point), for the
