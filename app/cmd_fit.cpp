@@ -19,12 +19,15 @@
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/surface_distance.h"
 #include "core/io/mesh_io.h"
+#include "core/support/error.h"
+#include "core/support/quoted_text.h"
 
 namespace gps {
 namespace {
 
-// Why a fit that found no step may have found none: a target lying apart from the mesh, farther than
-// the larger of the two is across (the fit pulls a surface onto points near it); "" otherwise.
+// Why a fit cannot start: a target lying apart from the mesh, farther than the larger of the two is
+// across (the fit pulls a surface onto points near it, and from so far it would stretch the mesh
+// toward the points' nearest side); "" otherwise.
 std::string target_apart(const CovarianceMesh& mesh, const std::vector<Vec3>& targets) {
   if (targets.empty() || mesh.n_vertices() == 0) return "";
   Vec3 lo, hi, target_lo = targets.front(), target_hi = targets.front();
@@ -34,7 +37,7 @@ std::string target_apart(const CovarianceMesh& mesh, const std::vector<Vec3>& ta
   const double size = std::max((hi - lo).norm(), (target_hi - target_lo).norm());
   if (!(gap.norm() > size)) return "";
   std::ostringstream said;
-  said << "; the target lies " << gap.norm() << " from the mesh, " << std::max(1.0, std::round(gap.norm() / size))
+  said << "the target lies " << gap.norm() << " from the mesh, " << std::max(1.0, std::round(gap.norm() / size))
        << " times their size: place the mesh over the target first";
   return said.str();
 }
@@ -120,6 +123,8 @@ void add_fit_command(CLI::App& app) {
     target.positions = read_points(args->target, &target.faces);
     const std::vector<Vec3>& targets = target.positions;
     const std::vector<Vec3> normals = smooth_vertex_normals(face_triangles(target));
+    if (const std::string apart = target_apart(coarse, targets); !apart.empty())
+      throw Error(escaped(args->target) + ": " + apart);
     FitOptions options;
     options.iterations = args->iterations;
     options.plain = args->plain;
@@ -152,7 +157,7 @@ void add_fit_command(CLI::App& app) {
     bar.finish();
     if (!args->quiet)
       std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop)
-                << (result.stop == FitStop::no_descent ? target_apart(coarse, targets) : "") << "\n";
+                << "\n";
     write_mesh_noting(args->output, result.mesh, !args->ascii, args->quiet);
     if (args->quiet) return;
     std::cout << "wrote " << args->output << "\n";
