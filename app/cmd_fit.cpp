@@ -156,8 +156,7 @@ void add_fit_command(CLI::App& app) {
         naming_input(args->coarse, [&] { return fit_limit_surface(coarse, targets, options, normals); });
     bar.finish();
     if (!args->quiet)
-      std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop)
-                << "\n";
+      std::cout << "stopped after " << result.iterations.size() - 1 << " iterations: " << describe(result.stop) << "\n";
     write_mesh_noting(args->output, result.mesh, !args->ascii, args->quiet);
     if (args->quiet) return;
     std::cout << "wrote " << args->output << "\n";
