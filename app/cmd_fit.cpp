@@ -1,6 +1,5 @@
 // gpsurf fit COARSE --target DENSE -o OUT: the coarse covariance mesh's means and covariances moved so
 // that its GPS limit surface fits the dense mesh's points (core/fitting/limit_fit.h).
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -19,30 +18,8 @@
 #include "core/fitting/limit_fit.h"
 #include "core/fitting/surface_distance.h"
 #include "core/io/mesh_io.h"
-#include "core/support/error.h"
-#include "core/support/quoted_text.h"
 
 namespace gps {
-namespace {
-
-// Why a fit cannot start: a target lying apart from the mesh, farther than the larger of the two is
-// across (the fit pulls a surface onto points near it, and from so far it would stretch the mesh
-// toward the points' nearest side); "" otherwise.
-std::string target_apart(const CovarianceMesh& mesh, const std::vector<Vec3>& targets) {
-  if (targets.empty() || mesh.n_vertices() == 0) return "";
-  Vec3 lo, hi, target_lo = targets.front(), target_hi = targets.front();
-  bounding_box(mesh, lo, hi);
-  for (const Vec3& p : targets) target_lo = target_lo.cwiseMin(p), target_hi = target_hi.cwiseMax(p);
-  const Vec3 gap = (target_lo - hi).cwiseMax(lo - target_hi).cwiseMax(0.0);
-  const double size = std::max((hi - lo).norm(), (target_hi - target_lo).norm());
-  if (!(gap.norm() > size)) return "";
-  std::ostringstream said;
-  said << "the target lies " << gap.norm() << " from the mesh, " << std::max(1.0, std::round(gap.norm() / size))
-       << " times their size: place the mesh over the target first";
-  return said.str();
-}
-
-}  // namespace
 
 void add_fit_command(CLI::App& app) {
   struct Args {
@@ -123,8 +100,6 @@ void add_fit_command(CLI::App& app) {
     target.positions = read_points(args->target, &target.faces);
     const std::vector<Vec3>& targets = target.positions;
     const std::vector<Vec3> normals = smooth_vertex_normals(face_triangles(target));
-    if (const std::string apart = target_apart(coarse, targets); !apart.empty())
-      throw Error(escaped(args->target) + ": " + apart);
     FitOptions options;
     options.iterations = args->iterations;
     options.plain = args->plain;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include <Eigen/Cholesky>
@@ -96,6 +97,22 @@ Eigen::Matrix<double, 3, 6> precision_derivatives_times(const Mat3& l, const Vec
     out.col(c) = col;
   }
   return out;
+}
+
+// Throws where the points lie apart from the mesh, farther than the larger of the two is across: the
+// fit pulls a surface onto points near it, and from so far it would stretch the mesh toward the
+// points' near side, whose closest points all the points are.
+void refuse_points_apart(const CovarianceMesh& mesh, const std::vector<Vec3>& targets) {
+  Vec3 lo, hi, target_lo = targets.front(), target_hi = targets.front();
+  bounding_box(mesh, lo, hi);
+  for (const Vec3& p : targets) target_lo = target_lo.cwiseMin(p), target_hi = target_hi.cwiseMax(p);
+  const Vec3 gap = (target_lo - hi).cwiseMax(lo - target_hi).cwiseMax(0.0);
+  const double size = std::max((hi - lo).norm(), (target_hi - target_lo).norm());
+  if (!(gap.norm() > size)) return;
+  std::ostringstream said;
+  said << "the points to fit lie " << gap.norm() << " from the mesh, "
+       << std::max(1.0, std::round(gap.norm() / size)) << " times their size: place the mesh over them first";
+  throw Error(said.str());
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -587,6 +604,7 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   if (!(options.covariance_prior >= 0 && std::isfinite(options.covariance_prior)))
     throw Error("the fit's covariance prior must be a finite weight, 0 or more");
   validate_gaussians(coarse);
+  refuse_points_apart(coarse, targets);
   const auto start = std::chrono::steady_clock::now();
   auto clock = start;
   FitProblem problem(coarse, targets, normals, options);

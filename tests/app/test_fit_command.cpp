@@ -108,8 +108,8 @@ TEST(FitCli, StopsAtTheToleranceOrTheTimeAndSaysWhy) {
             0);
   const auto apart = run_command(gpsurf("fit " + coarse + " --target " + far + " -o " + dir.file("apart.ply")));
   EXPECT_EQ(apart.exit_code, 1) << apart.output;
-  EXPECT_NE(apart.output.find("the target lies 999998 from the mesh, "), std::string::npos) << apart.output;
-  EXPECT_NE(apart.output.find(" times their size: place the mesh over the target first\n"), std::string::npos)
+  EXPECT_NE(apart.output.find("the points to fit lie 999998 from the mesh, "), std::string::npos) << apart.output;
+  EXPECT_NE(apart.output.find(" times their size: place the mesh over them first\n"), std::string::npos)
       << apart.output;
   EXPECT_FALSE(std::ifstream(dir.file("apart.ply")).good());
 }

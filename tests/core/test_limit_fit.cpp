@@ -482,6 +482,17 @@ TEST(LimitFit, RefusesABadCovarianceWeightOrSigmaBounds) {
   }
   EXPECT_THROW(fit_limit_surface(coarse, targets, FitOptions(), std::vector<Vec3>(targets.size() + 1, Vec3::UnitX())),
                Error);
+  // Points farther from the mesh than either is across: a fit would stretch the mesh toward them.
+  std::vector<Vec3> far = targets;
+  for (Vec3& p : far) p.x() += 1e6;
+  try {
+    fit_limit_surface(coarse, far, FitOptions());
+    ADD_FAILURE() << "fitted to points 1e6 away";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("place the mesh over them first"), std::string::npos) << e.what();
+  }
+  for (Vec3& p : far) p.x() -= 1e6 - 3;  // moved by 3: a gap of 1 against a size of about 3.5, fitted
+  EXPECT_NO_THROW(fit_limit_surface(coarse, far, FitOptions()));
 }
 
 }  // namespace
