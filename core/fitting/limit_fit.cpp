@@ -110,8 +110,8 @@ void refuse_points_apart(const CovarianceMesh& mesh, const std::vector<Vec3>& ta
   const double size = std::max((hi - lo).norm(), (target_hi - target_lo).norm());
   if (!(gap.norm() > size)) return;
   std::ostringstream said;
-  said << "the points to fit lie " << gap.norm() << " from the mesh, "
-       << std::max(1.0, std::round(gap.norm() / size)) << " times their size: place the mesh over them first";
+  said << "the points to fit lie " << gap.norm() << " from the mesh, " << std::max(1.0, std::round(gap.norm() / size))
+       << " times their size: place the mesh over them first";
   throw Error(said.str());
 }
 
