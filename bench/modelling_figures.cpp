@@ -62,7 +62,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   // before the next round; a full re-plan of the same result is timed beside them.
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& [label, operation] : operations) {
-    std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, still_s;
+    std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, still_s, undo_s;
     int planned = 0;
     for (int round = 0; round < 6; ++round) {
       const Clock::time_point start = Clock::now();
@@ -92,13 +92,17 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       const Clock::time_point full = Clock::now();
       const SurfaceTables whole = build_surface_plans(result.mesh, options);
       full_s.push_back(seconds_since(full));
+      // The undo: the mesh before, re-planned and uploaded the same way.
+      const Clock::time_point undoing = Clock::now();
       const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
       replanner.set_topology(mesh, back);
       renderer.set_mesh(mesh, replanner.tables(), renderer.frame().following(mesh), replanner.last_change(), back);
+      glFinish();
+      undo_s.push_back(seconds_since(undoing));
     }
     // The first round of each operation warms the allocator and the driver's buffers up for its sizes
     // (the first operation timed paid twice the others' upload): not counted.
-    for (std::vector<double>* times : {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &still_s})
+    for (std::vector<double>* times : {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &still_s, &undo_s})
       times->erase(times->begin());
     rows.push_back({{"operation", label},
                     {"operation_ms", median(op_s) * 1e3},
@@ -108,7 +112,8 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
                     {"upload_ms", median(upload_s) * 1e3},
                     {"frame_ms", median(frame_s) * 1e3},
                     {"total_ms", median(total_s) * 1e3},
-                    {"still_frame_ms", median(still_s) * 1e3}});
+                    {"still_frame_ms", median(still_s) * 1e3},
+                    {"undo_ms", median(undo_s) * 1e3}});
   }
   return {{"mesh", name + "/" + std::to_string(faces)},
           {"faces", mesh.n_faces()},

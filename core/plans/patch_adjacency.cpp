@@ -1,6 +1,7 @@
 #include "core/plans/patch_adjacency.h"
 
 #include <algorithm>
+#include <array>
 #include <unordered_set>
 
 namespace gps {
@@ -128,14 +129,16 @@ void add_corner_owners(PatchPlans& plans) {
   const int n = plans.corners(), n_patches = plans.n_patches();
   int32_t corner_points = 0;
   for (const int32_t point : plans.patch_corner_points) corner_points = std::max(corner_points, point + 1);
-  std::vector<int32_t> owner(size_t(corner_points), -1);  // corner point -> n·patch + corner
+  // Corner point -> its first use's (patch, corner), as corner_owners holds it (no division per corner).
+  std::vector<std::array<int32_t, 2>> owner(size_t(corner_points), {-1, -1});
+  const int32_t* points = plans.patch_corner_points.data();
+  int32_t* owners = plans.corner_owners.data();
   for (int p = 0; p < n_patches; ++p)
-    for (int c = 0; c < n; ++c) {
-      const int32_t point = plans.patch_corner_points[size_t(n * p + c)];
-      int32_t& first_use = owner[size_t(point)];
-      if (first_use < 0) first_use = n * p + c;
-      plans.corner_owners[size_t(2 * (n * p + c))] = first_use / n;
-      plans.corner_owners[size_t(2 * (n * p + c)) + 1] = first_use % n;
+    for (int c = 0; c < n; ++c, ++points, owners += 2) {
+      std::array<int32_t, 2>& first_use = owner[size_t(*points)];
+      if (first_use[0] < 0) first_use = {p, c};
+      owners[0] = first_use[0];
+      owners[1] = first_use[1];
     }
 }
 

@@ -11,9 +11,9 @@
 namespace gps {
 
 /// A range's tables with point indices and node offsets local to it: points past its stencils' n_base
-/// are rows of its own stencil table (that n_base may be below the merged tables' where the base
-/// vertices after it were added since); an extraordinary node's table field indexes `extraordinary_tables`, shared
-/// (by pointer) by every range built from the same table cache.
+/// are rows of its own stencil table (that n_base may differ from the merged tables' where base
+/// vertices past those it reads were added or removed since); an extraordinary node's table field
+/// indexes `extraordinary_tables`, shared (by pointer) by every range built from the same table cache.
 struct RangePlans {
   SurfaceTables tables;
   std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables;

@@ -35,8 +35,8 @@ bool new_index_of(const std::vector<int>& origin, int n_old, int n_new, std::vec
 
 // Renumbers a kept range's points onto the new mesh: base vertex p becomes new_index[p], the range's
 // own rows follow the new base. False if it reads a vertex that is gone (it must be built again). Where
-// every old vertex keeps its index (`same_base`) nothing moves: the range's own rows stay after its own
-// n_base, which merge_ranges reads.
+// every old vertex that stays keeps its index (`same_base`) nothing moves: the range's own rows stay
+// after its own n_base, which merge_ranges reads.
 bool renumber_range(RangePlans& range, const std::vector<int>& new_index, bool same_base, int n_new) {
   if (same_base) return true;
   PatchPlans& p = range.tables.plans;
@@ -297,8 +297,11 @@ int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const
     return n_faces;
   }
 
-  bool same_base = true;  // every old vertex keeps its index (an operation that only adds)
-  for (int v = 0; v < n_old && same_base; ++v) same_base = new_index[size_t(v)] == v;
+  // Every old vertex that stays keeps its index (an operation that only adds vertices, or its undo):
+  // the kept ranges need no renumbering then, since none reads a vertex that is gone (its faces are
+  // gone, and every face that shares a vertex with them is built again).
+  bool same_base = true;
+  for (int v = 0; v < n_old && same_base; ++v) same_base = new_index[size_t(v)] < 0 || new_index[size_t(v)] == v;
   // Faces that are still there, corner for corner: old face → new face and back.
   std::vector<int> new_face(size_t(old.n_faces()), -1), old_face(size_t(n_faces), -1);
   for (int f = 0; f < old.n_faces(); ++f) {
