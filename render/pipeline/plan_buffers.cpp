@@ -4,6 +4,8 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <cstring>
+#include <type_traits>
 #include <utility>
 
 #include "render/gl/compute_limits.h"
@@ -56,30 +58,58 @@ PlanBuffers::PlanBuffers() {
   max_block_ = size_t(std::max<GLint64>(max_block, 0));
 }
 
+// The first index where `a` and `b` differ bit for bit (a weight of −0 is not +0's), or the shorter's size.
 template <class T>
-void PlanBuffers::upload(int binding, const std::vector<T>& data) {
+size_t first_difference(const std::vector<T>& a, const std::vector<T>& b) {
+  const size_t n = std::min(a.size(), b.size());
+  constexpr size_t kChunk = 4096;  // compared a chunk at a time, the chunk that differs element by element
+  size_t i = 0;
+  while (i + kChunk <= n && std::memcmp(a.data() + i, b.data() + i, kChunk * sizeof(T)) == 0) i += kChunk;
+  while (i < n && std::memcmp(a.data() + i, b.data() + i, sizeof(T)) == 0) ++i;
+  return i;
+}
+
+template <class T, class Source>
+void PlanBuffers::upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held) {
   // Empty buffers still need storage to be bound.
-  reserve(binding, std::max<size_t>(sizeof(T), data.size() * sizeof(T)));
-  if (!data.empty()) glNamedBufferSubData(buffers_[binding], 0, GLsizeiptr(data.size() * sizeof(T)), data.data());
+  const bool stays = reserve(binding, std::max<size_t>(sizeof(T), data.size() * sizeof(T)));
+  const size_t first = stays && held ? first_difference(data, *held) : 0;
+  if (first >= data.size()) return;
+  const size_t count = data.size() - first;
+  if constexpr (std::is_same_v<T, Source>) {
+    glNamedBufferSubData(buffers_[binding], GLintptr(first * sizeof(T)), GLsizeiptr(count * sizeof(T)),
+                         data.data() + first);
+  } else {
+    const std::vector<T> converted(data.begin() + ptrdiff_t(first), data.end());
+    glNamedBufferSubData(buffers_[binding], GLintptr(first * sizeof(T)), GLsizeiptr(count * sizeof(T)),
+                         converted.data());
+  }
 }
 
 // Storage of at least `bytes` at `binding`, its contents undefined. The storage there is kept where it
 // holds them and is not twice as large: tables of about the same size again, as after a modelling
-// operation, are written into it instead of a store the driver allocates again.
-void PlanBuffers::reserve(int binding, size_t bytes) {
+// operation, are written into it instead of a store the driver allocates again. False where new
+// storage was allocated.
+bool PlanBuffers::reserve(int binding, size_t bytes) {
   sizes_[binding] = bytes;
   size_t& capacity = capacities_[binding];
-  if (bytes <= capacity && capacity / 2 <= bytes) return;
+  if (bytes <= capacity && capacity / 2 <= bytes) return true;
   // Room for the tables an operation adds to, within what a shader may see of a buffer bound whole.
   capacity = std::max(bytes, std::min(bytes + bytes / 16, max_block_));
   glNamedBufferData(buffers_[binding], GLsizeiptr(capacity), nullptr, GL_DYNAMIC_DRAW);
+  return false;
 }
 
-// Storage of `bytes` for the passes to write, its contents undefined, in a buffer of its own (the one
-// before, which the caller may have taken to copy from, is not written).
-void PlanBuffers::allocate(int binding, size_t bytes) {
-  sizes_[binding] = capacities_[binding] = std::max<size_t>(sizeof(float), bytes);
-  glNamedBufferData(buffers_[binding], GLsizeiptr(sizes_[binding]), nullptr, GL_DYNAMIC_DRAW);
+// Gives `binding` the storage of its spare, at least `bytes`, its contents undefined, and keeps the
+// buffer it had as the spare; returns that buffer, whose contents the caller copies from. The two
+// storages take turns: a change of topology copies what it keeps from one into the other, where the
+// driver would otherwise allocate (and clear) a new one every time.
+GLuint PlanBuffers::swap_in_spare(int binding, size_t bytes) {
+  if (spares_[binding] == 0) spares_[binding] = GlBuffer();
+  std::swap(buffers_[binding], spares_[binding]);
+  std::swap(capacities_[binding], spare_capacities_[binding]);
+  reserve(binding, std::max<size_t>(sizeof(float), bytes));
+  return spares_[binding];
 }
 
 // Two vec4 per patch corner: limit point and node kind, normal; then one per patch corner: the limit
@@ -112,42 +142,40 @@ void PlanBuffers::check_fits(const SurfaceTables& tables, int n_vertices, int n_
 }
 
 void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept,
-                                const CarriedVertices* carried) {
+                                const CarriedVertices* carried, const SurfaceTables* held) {
   const StencilTable& s = tables.stencils;
   const PatchPlans& p = tables.plans;
-  upload(kBindingOffsets, s.offsets);
-  upload(kBindingIndices, s.indices);
-  upload(kBindingWeights, std::vector<float>(s.weights.begin(), s.weights.end()));
-  upload(kBindingNodes, p.nodes);
-  upload(kBindingRoots, p.patch_roots);
-  upload(kBindingCorners, p.patch_corner_points);
-  upload(kBindingExtraordinaryTables, std::vector<float>(p.extraordinary_tables.begin(), p.extraordinary_tables.end()));
-  upload(kBindingPatchEdges, p.patch_edges);
-  upload(kBindingPatchNeighbours, p.patch_neighbours);
-  upload(kBindingCornerOwners, p.corner_owners);
+  const StencilTable* hs = held ? &held->stencils : nullptr;
+  const PatchPlans* hp = held ? &held->plans : nullptr;
+  upload_as<int32_t>(kBindingOffsets, s.offsets, hs ? &hs->offsets : nullptr);
+  upload_as<int32_t>(kBindingIndices, s.indices, hs ? &hs->indices : nullptr);
+  upload_as<float>(kBindingWeights, s.weights, hs ? &hs->weights : nullptr);
+  upload_as<int32_t>(kBindingNodes, p.nodes, hp ? &hp->nodes : nullptr);
+  upload_as<int32_t>(kBindingRoots, p.patch_roots, hp ? &hp->patch_roots : nullptr);
+  upload_as<int32_t>(kBindingCorners, p.patch_corner_points, hp ? &hp->patch_corner_points : nullptr);
+  upload_as<float>(kBindingExtraordinaryTables, p.extraordinary_tables, hp ? &hp->extraordinary_tables : nullptr);
+  upload_as<int32_t>(kBindingPatchEdges, p.patch_edges, hp ? &hp->patch_edges : nullptr);
+  upload_as<int32_t>(kBindingPatchNeighbours, p.patch_neighbours, hp ? &hp->patch_neighbours : nullptr);
+  upload_as<int32_t>(kBindingCornerOwners, p.corner_owners, hp ? &hp->corner_owners : nullptr);
   // Every point is written by the compute pass that follows every upload of the tables, but those carried.
   const size_t point_bytes = kVec4PerPoint * 4 * real_bytes(precision_);
   if (carried) {
-    const GlBuffer points = std::exchange(buffers_[kBindingPoints], GlBuffer());
-    allocate(kBindingPoints, size_t(s.n_points()) * point_bytes);
+    const GLuint points = swap_in_spare(kBindingPoints, size_t(s.n_points()) * point_bytes);
     copy_runs(points, buffers_[kBindingPoints], carried_runs(size_t(s.n_base), carried->origin, carried->changed),
               point_bytes);
   } else {
     reserve(kBindingPoints, size_t(s.n_points()) * point_bytes);
   }
-  GlBuffer limits = GlBuffer::none(), midpoints = GlBuffer::none();
-  if (!kept.empty()) {  // the kept patches' output, copied from the previous buffers into new ones
-    limits = std::exchange(buffers_[kBindingCornerLimits], GlBuffer());
-    midpoints = std::exchange(buffers_[kBindingCurveMidpoints], GlBuffer());
-  }
   // Not cleared: the corner pass writes every slot it is run over, and that is every slot but those
-  // of the kept runs, copied below (zero where a patch does not evaluate it).
-  for (const auto& [binding, bytes] : {std::pair(kBindingCornerLimits, corner_limit_floats(p) * sizeof(float)),
-                                       std::pair(kBindingCurveMidpoints, curve_midpoint_floats(p) * sizeof(float))})
-    if (kept.empty())
-      reserve(binding, bytes);
-    else
-      allocate(binding, bytes);
+  // of the kept runs, copied below from the buffers before (zero where a patch does not evaluate it).
+  GLuint limits = 0, midpoints = 0;
+  if (kept.empty()) {
+    reserve(kBindingCornerLimits, corner_limit_floats(p) * sizeof(float));
+    reserve(kBindingCurveMidpoints, curve_midpoint_floats(p) * sizeof(float));
+  } else {
+    limits = swap_in_spare(kBindingCornerLimits, corner_limit_floats(p) * sizeof(float));
+    midpoints = swap_in_spare(kBindingCurveMidpoints, curve_midpoint_floats(p) * sizeof(float));
+  }
   const size_t limit_bytes = size_t(p.corners()) * 8 * sizeof(float),
                midpoint_bytes = size_t(p.corners()) * 4 * sizeof(float);
   for (const KeptPatches& run : kept) {
@@ -204,8 +232,7 @@ void PlanBuffers::carry_gaussians_as(const FramedGaussians& gaussians, const std
                                      const std::vector<int>& changed) {
   constexpr size_t stride = kGaussianReals<Real> * sizeof(Real);
   const size_t n = gaussians.n_vertices();
-  const GlBuffer before = std::exchange(buffers_[kBindingGaussians], GlBuffer());
-  allocate(kBindingGaussians, n * stride);
+  const GLuint before = swap_in_spare(kBindingGaussians, n * stride);
   copy_runs(before, buffers_[kBindingGaussians], carried_runs(n, origin, changed), stride);
   update_gaussians_as<Real>(gaussians, changed);
 }
@@ -288,6 +315,7 @@ std::vector<float> PlanBuffers::read_corner_pass() const {
 size_t PlanBuffers::bytes() const {
   size_t total = 0;
   for (const size_t s : capacities_) total += s;
+  for (const size_t s : spare_capacities_) total += s;
   return total;
 }
 

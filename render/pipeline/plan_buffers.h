@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
@@ -45,8 +46,11 @@ public:
   /// With `carried` (points of the same precision and frame before), the points of the base vertices
   /// not among its changed ones are copied from the previous points to where they went, in runs: the
   /// compute pass then maps the changed vertices alone (DualStencilPass::run_listed_vertices).
+  /// `held`: the tables the buffers hold now (the last uploaded), where known: a table whose storage
+  /// stays is written only from its first difference from them on (an operation's change leaves the
+  /// tables before its first changed range as they were).
   void upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept = {},
-                     const CarriedVertices* carried = nullptr);
+                     const CarriedVertices* carried = nullptr, const SurfaceTables* held = nullptr);
   /// Every base vertex's μ and Σ.
   void upload_gaussians(const FramedGaussians& gaussians);
   /// Every base vertex's μ and Σ after a change of topology, in the precision of the buffer before:
@@ -77,10 +81,15 @@ public:
   size_t bytes() const;
 
 private:
+  template <size_t... I>
+  static std::array<GlBuffer, sizeof...(I)> no_buffers(std::index_sequence<I...>) {
+    return {((void)I, GlBuffer::none())...};
+  }
   static size_t corner_limit_floats(const PatchPlans& plans);    // two vec4 per patch corner
   static size_t curve_midpoint_floats(const PatchPlans& plans);  // one vec4 per patch corner
-  void reserve(int binding, size_t bytes);
-  void allocate(int binding, size_t bytes);
+  /// False where it allocated new storage (the contents before are gone).
+  bool reserve(int binding, size_t bytes);
+  unsigned swap_in_spare(int binding, size_t bytes);
   template <class Real>
   void upload_gaussians_as(const FramedGaussians& gaussians);
   template <class Real>
@@ -88,12 +97,22 @@ private:
                           const std::vector<int>& changed);
   template <class Real>
   void update_gaussians_as(const FramedGaussians& gaussians, const std::vector<int>& changed);
+  /// `data` as type T; where `held` (what the buffer holds, as uploaded from it) is given and the
+  /// storage stays, only from the first element that differs from it (bit for bit).
+  template <class T, class Source>
+  void upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held = nullptr);
   template <class T>
-  void upload(int binding, const std::vector<T>& data);
+  void upload(int binding, const std::vector<T>& data) {
+    upload_as<T>(binding, data);
+  }
 
   std::array<GlBuffer, gpu::kBindingCount> buffers_;
   size_t sizes_[gpu::kBindingCount] = {};       // bytes in use
   size_t capacities_[gpu::kBindingCount] = {};  // bytes of storage held
+  // Per binding, the storage that takes turns with the one bound where a change of topology copies
+  // from one to the other (none until then), and its bytes.
+  std::array<GlBuffer, gpu::kBindingCount> spares_ = no_buffers(std::make_index_sequence<gpu::kBindingCount>());
+  size_t spare_capacities_[gpu::kBindingCount] = {};
   size_t max_block_ = 0;                        // the device's largest storage block, in bytes
   PointPrecision precision_ = PointPrecision::single_float;
 };

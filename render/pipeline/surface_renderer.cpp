@@ -69,7 +69,8 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
   // Kept tables keep the points of the base vertices that did not change, in this frame and precision.
   const PlanBuffers::CarriedVertices carried{origin, changed};
-  buffers_.upload_tables(tables_, keep ? kept : std::vector<KeptPatches>{}, keep && few_changed ? &carried : nullptr);
+  buffers_.upload_tables(tables_, keep ? kept : std::vector<KeptPatches>{}, keep && few_changed ? &carried : nullptr,
+                         &before);
   tables_id_ = change.to;
   frame_ = frame;
   patches_.set_frame(frame_);
