@@ -56,7 +56,7 @@ Modelled duplicate_faces(const CovarianceMesh& mesh, const std::vector<int>& fac
 
   std::vector<int> selection(originals.size());
   for (size_t i = 0; i < selection.size(); ++i) selection[i] = first_copy + int(i);
-  Modelled out = modelled(mesh, a, selection);
+  Modelled out = modelled(mesh, std::move(a), selection);
   out.summary = "duplicated " + count_of(region.faces.size(), "face", "faces") + ": " +
                 count_of(originals.size(), "vertex", "vertices") + " added";
   return out;

@@ -57,7 +57,7 @@ std::vector<int> extrude_region(MeshArrays& a, const FaceRegion& r, const Vec3& 
 Modelled extruded_faces(const CovarianceMesh& mesh, MeshArrays& a, const FaceRegion& r, const Vec3& shift) {
   std::string summary;
   std::vector<int> selection = extrude_region(a, r, shift, summary);
-  return modelled(mesh, a, std::move(selection), std::move(summary));
+  return modelled(mesh, std::move(a), std::move(selection), std::move(summary));
 }
 
 /// Extrudes boundary edges given as directed edges of their faces (unique).

@@ -118,7 +118,7 @@ Modelled grid_fill(const CovarianceMesh& mesh, const std::vector<int>& loop, int
   std::vector<int> selection = grid;
   std::sort(selection.begin(), selection.end());
   const int added = (columns - 2) * (rows - 2);
-  Modelled out = modelled(mesh, a, selection);
+  Modelled out = modelled(mesh, std::move(a), selection);
   out.summary = "grid-filled a loop of " + std::to_string(n) + " vertices with " + std::to_string(columns - 1) + " × " +
                 std::to_string(rows - 1) + " quads: " + count_of(size_t(added), "vertex", "vertices") + " added" +
                 (triangles ? " (split into triangles)" : "");

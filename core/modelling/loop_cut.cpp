@@ -178,7 +178,7 @@ Modelled loop_cut(const CovarianceMesh& mesh, int a, int b, int cuts, double sli
 
   std::vector<int> selection;
   for (int v = n_vertices; v < arrays.n_vertices(); ++v) selection.push_back(v);
-  Modelled out = modelled(mesh, arrays, selection);
+  Modelled out = modelled(mesh, std::move(arrays), selection);
   out.summary = "cut " + std::to_string(cuts) + (cuts == 1 ? " loop" : " loops") + " across " +
                 std::to_string(r.quads.size()) + (r.quads.size() == 1 ? " quad: " : " quads: ") +
                 std::to_string(selection.size()) + (selection.size() == 1 ? " vertex, " : " vertices, ") +

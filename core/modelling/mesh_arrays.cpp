@@ -20,9 +20,9 @@ Sharpness sharpness_on_edges(const MeshArrays& a, const CovarianceMesh& mesh) {
   if (a.sharpness.empty()) return {};
   Sharpness out;
   for (const EdgeCrease& c : a.sharpness.creases)
-    if (c.a >= 0 && c.b < a.n_vertices() && mesh.find_edge(c.a, c.b) >= 0) out.creases.push_back(c);
+    if (c.a >= 0 && size_t(c.b) < mesh.n_vertices() && mesh.find_edge(c.a, c.b) >= 0) out.creases.push_back(c);
   out.corners = a.sharpness.corners;
-  if (!out.corners.empty()) out.corners.resize(size_t(a.n_vertices()), 0.0);
+  if (!out.corners.empty()) out.corners.resize(mesh.n_vertices(), 0.0);
   out.normalise();
   return out;
 }
@@ -67,10 +67,13 @@ MeshArrays arrays_of(const CovarianceMesh& m) {
   return a;
 }
 
-CovarianceMesh build_mesh(const MeshArrays& a) {
+namespace {
+
+// The arrays' faces on these Gaussians, built and checked whole.
+CovarianceMesh built_whole(const MeshArrays& a, const std::vector<Vec3>& means, const std::vector<Mat3>& covariances) {
   if (a.faces.empty()) throw Error("the result would have no faces");
   try {
-    CovarianceMesh m = make_covariance_mesh(a.means, a.covariances, a.faces, "the result would not be a valid mesh");
+    CovarianceMesh m = make_covariance_mesh(means, covariances, a.faces, "the result would not be a valid mesh");
     validate_gaussians(m, "the result would not be a valid mesh");
     m.sharpness = sharpness_on_edges(a, m);
     return m;
@@ -79,21 +82,23 @@ CovarianceMesh build_mesh(const MeshArrays& a) {
   }
 }
 
-CovarianceMesh build_mesh(const MeshArrays& a, const CovarianceMesh& before) {
+// build_mesh for arrays made from `before`, their Gaussians given apart (copied, or taken over).
+CovarianceMesh built_from(const MeshArrays& a, std::vector<Vec3>&& means, std::vector<Mat3>&& covariances,
+                          const CovarianceMesh& before) {
   if (a.faces.empty()) throw Error("the result would have no faces");
-  const std::vector<int> origin = vertex_origin(a);
-  if (origin.empty()) return build_mesh(a);
+  const std::vector<int> origin = a.origin.size() == means.size() ? a.origin : std::vector<int>{};
+  if (origin.empty()) return built_whole(a, means, covariances);
   const char* const source = "the result would not be a valid mesh";
   try {
-    CovarianceMesh m = make_covariance_mesh(before, std::vector<Vec3>(a.means), std::vector<Mat3>(a.covariances),
-                                            polygon_topology(a.faces), {origin, a.face_origin}, source);
+    CovarianceMesh m = make_covariance_mesh(before, std::move(means), std::move(covariances), polygon_topology(a.faces),
+                                            {origin, a.face_origin}, source);
     // The Gaussians that are new or changed; the others were checked when `before` was made.
     for (size_t v = 0; v < m.n_vertices(); ++v) {
       const int o = origin[v];
       const bool same = o >= 0 && size_t(o) < before.n_vertices() &&
-                        std::memcmp(&a.means[v], &before.mean(size_t(o)), sizeof(Vec3)) == 0 &&
-                        std::memcmp(&a.covariances[v], &before.covariance(size_t(o)), sizeof(Mat3)) == 0;
-      if (!same && !(position_problem(a.means[v]).empty() && covariance_problem(a.covariances[v]).empty()))
+                        std::memcmp(&m.mean(v), &before.mean(size_t(o)), sizeof(Vec3)) == 0 &&
+                        std::memcmp(&m.covariance(v), &before.covariance(size_t(o)), sizeof(Mat3)) == 0;
+      if (!same && !(position_problem(m.mean(v)).empty() && covariance_problem(m.covariance(v)).empty()))
         validate_gaussians(m, source);  // names the first vertex with a problem, as build_mesh does
     }
     m.sharpness = sharpness_on_edges(a, m);
@@ -101,6 +106,14 @@ CovarianceMesh build_mesh(const MeshArrays& a, const CovarianceMesh& before) {
   } catch (const Error& e) {
     throw Error(e.what());
   }
+}
+
+}  // namespace
+
+CovarianceMesh build_mesh(const MeshArrays& a) { return built_whole(a, a.means, a.covariances); }
+
+CovarianceMesh build_mesh(const MeshArrays& a, const CovarianceMesh& before) {
+  return built_from(a, std::vector<Vec3>(a.means), std::vector<Mat3>(a.covariances), before);
 }
 
 void check_gaussians(const MeshArrays& a, const std::vector<int>& vertices) {
@@ -154,6 +167,14 @@ void check_plan_limits(const CovarianceMesh& before, const MeshArrays& a, const 
 
 Modelled modelled(const CovarianceMesh& before, const MeshArrays& a, std::vector<int> selection, std::string summary) {
   Modelled out{build_mesh(a, before), std::move(selection), std::move(summary), vertex_origin(a), {}};
+  check_plan_limits(before, a, out.mesh, out.vertex_origin);
+  return out;
+}
+
+Modelled modelled(const CovarianceMesh& before, MeshArrays&& a, std::vector<int> selection, std::string summary) {
+  std::vector<int> origin = vertex_origin(a);
+  Modelled out{built_from(a, std::move(a.means), std::move(a.covariances), before), std::move(selection),
+               std::move(summary), std::move(origin), {}};
   check_plan_limits(before, a, out.mesh, out.vertex_origin);
   return out;
 }

@@ -62,6 +62,10 @@ struct Modelled {
 /// Throws gps::Error for a result past the patch plans' limits.
 Modelled modelled(const CovarianceMesh& before, const MeshArrays& arrays, std::vector<int> selection,
                   std::string summary = "");
+/// The same, taking the arrays' Gaussians over instead of copying them (its means and covariances are
+/// left empty).
+Modelled modelled(const CovarianceMesh& before, MeshArrays&& arrays, std::vector<int> selection,
+                  std::string summary = "");
 /// Throws gps::Error where the faces around `result`'s new vertices (made from `before`) have no
 /// surface: an edge no longer than the repair's weld tolerance (a millionth of the mesh's size) or no
 /// more area than that times their longest edge, which the next repair would mend away. A parameter
@@ -88,7 +92,7 @@ Modelled modelled_by(const CovarianceMesh& before, Change&& change) {
   MeshArrays a = arrays_of(before);
   std::string summary;
   std::vector<int> selection = change(a, summary);
-  return modelled(before, a, std::move(selection), std::move(summary));
+  return modelled(before, std::move(a), std::move(selection), std::move(summary));
 }
 
 /// The arrays as a covariance mesh, with the creases of `arrays.sharpness` that are still edges of

@@ -134,7 +134,7 @@ Modelled spin(const CovarianceMesh& mesh, const std::vector<int>& vertices, cons
   std::vector<int> selection = at[size_t(steps)];
   std::sort(selection.begin(), selection.end());
   const size_t added_vertices = size_t(a.n_vertices()) - mesh.n_vertices();
-  Modelled out = modelled(mesh, a, selection);
+  Modelled out = modelled(mesh, std::move(a), selection);
   out.summary = "spun " + count_of(profile.size(), "vertex", "vertices") + " by " + short_number(degrees) + "° in " +
                 count_of(size_t(steps), "step", "steps") + ": " + count_of(added_vertices, "vertex", "vertices") +
                 ", " + count_of(a.faces.size() - first_face, "face", "faces") + " added";

@@ -75,7 +75,7 @@ Modelled split_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) 
   if (originals.size() > split_copies)
     summary +=
         ", " + count_of(originals.size() - split_copies, "more", "more") + " where the other faces met only there";
-  return modelled(mesh, a, selection, summary);
+  return modelled(mesh, std::move(a), selection, summary);
 }
 
 }  // namespace gps
