@@ -37,7 +37,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   const Camera camera = frame_mesh(mesh);
   const PolygonTopology& topology = mesh.topology();
   SurfaceReplanner replanner(topology, options, mesh.sharpness);
-  renderer.set_mesh(mesh, replanner.tables(), NormalisedFrame::of(mesh), replanner.last_change(), {});
+  renderer.set_mesh(mesh, replanner.shared_tables(), NormalisedFrame::of(mesh), replanner.last_change(), {});
   renderer.draw(target, camera, draw);
   glFinish();
 
@@ -72,7 +72,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       planned = replanner.set_topology(result.mesh, result.vertex_origin);
       plan_s.push_back(seconds_since(planning));
       const Clock::time_point uploading = Clock::now();
-      renderer.set_mesh(result.mesh, replanner.tables(), renderer.frame().following(result.mesh),
+      renderer.set_mesh(result.mesh, replanner.shared_tables(), renderer.frame().following(result.mesh),
                         replanner.last_change(), result.vertex_origin);
       glFinish();
       upload_s.push_back(seconds_since(uploading));
@@ -96,7 +96,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       const Clock::time_point undoing = Clock::now();
       const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
       replanner.set_topology(mesh, back);
-      renderer.set_mesh(mesh, replanner.tables(), renderer.frame().following(mesh), replanner.last_change(), back);
+      renderer.set_mesh(mesh, replanner.shared_tables(), renderer.frame().following(mesh), replanner.last_change(), back);
       glFinish();
       undo_s.push_back(seconds_since(undoing));
     }

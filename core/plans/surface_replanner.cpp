@@ -165,8 +165,9 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     range_first_.clear();
     patch_first_.clear();
     loop_tables_.reset();
-    tables_ = build_loop_plans(t, options_.loop_beta);
-    add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
+    SurfaceTables built = build_loop_plans(t, options_.loop_beta);
+    add_patch_adjacency(built.plans, t, sharpness, &base_.connectivity);
+    tables_ = std::make_shared<const SurfaceTables>(std::move(built));
     return;
   }
   if (scheme_ == Scheme::loop && !loop_tables_) loop_tables_ = std::make_unique<LoopCreaseTables>(options_.loop_beta);
@@ -187,10 +188,11 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   }
   for (const auto& failure : failures)
     if (failure) std::rethrow_exception(failure);
-  const std::vector<int32_t> old_neighbours = std::move(tables_.plans.patch_neighbours);
-  const int old_patches = tables_.plans.n_patches();
-  const PatchShape old_shape = tables_.plans.shape;
-  tables_ = merge_ranges(ranges_, t.n_vertices, false);
+  const std::shared_ptr<const SurfaceTables> old = tables_;
+  const std::vector<int32_t>& old_neighbours = old->plans.patch_neighbours;
+  const int old_patches = old->plans.n_patches();
+  const PatchShape old_shape = old->plans.shape;
+  SurfaceTables merged = merge_ranges(ranges_, t.n_vertices, false);
   patch_first_.assign(ranges_.size(), 0);
   // The runs kept, in order in both numberings (a run that would go back in the old one is left out).
   const auto keep = [&](int first, int old_first, int count) {
@@ -224,9 +226,10 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   for (const KeptPatches& run : kept)
     for (int i = 0; i < run.count && run.old_first + i < old_patches; ++i)
       new_of_old[size_t(run.old_first + i)] = run.first + i;
-  if (kept.empty() || old_shape != tables_.plans.shape ||
-      !update_patch_adjacency(tables_.plans, sharpness, old_neighbours, new_of_old))
-    add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
+  if (kept.empty() || old_shape != merged.plans.shape ||
+      !update_patch_adjacency(merged.plans, sharpness, old_neighbours, new_of_old))
+    add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity);
+  tables_ = std::make_shared<const SurfaceTables>(std::move(merged));
 }
 
 std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
@@ -254,9 +257,11 @@ std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
   }
   base_.creases = std::move(level);
   if (faces.empty()) {  // the same plans; the patch adjacency reads the sharpness as given
-    add_patch_adjacency(tables_.plans, t, sharpness, &base_.connectivity);
+    SurfaceTables same = *tables_;
+    add_patch_adjacency(same.plans, t, sharpness, &base_.connectivity);
+    tables_ = std::make_shared<const SurfaceTables>(std::move(same));
     change_ = {change_.to, next_tables_id(), {}};
-    if (const int n = tables_.plans.n_patches(); n > 0) change_.kept.push_back({0, 0, n});
+    if (const int n = tables_->plans.n_patches(); n > 0) change_.kept.push_back({0, 0, n});
     return faces;
   }
   std::vector<int> which;

@@ -39,9 +39,10 @@ struct PlanChange {
   std::vector<KeptPatches> kept;
 };
 
-/// A replanner's tables with the change that made them, as a renderer takes them.
+/// A replanner's tables with the change that made them, as a renderer takes them (shared: a
+/// replanner makes new tables for every change and never changes those it handed out).
 struct ReplannedTables {
-  SurfaceTables tables;
+  std::shared_ptr<const SurfaceTables> tables;
   PlanChange change;
 };
 
@@ -61,7 +62,9 @@ public:
   const PlanOptions& options() const { return options_; }
   const PolygonTopology& topology() const { return base_.topology; }
   /// build_surface_plans(topology, options, sharpness) for the latest topology and sharpness, bit for bit.
-  const SurfaceTables& tables() const { return tables_; }
+  const SurfaceTables& tables() const { return *tables_; }
+  /// The same tables, shared (a renderer keeps them without a copy).
+  std::shared_ptr<const SurfaceTables> shared_tables() const { return tables_; }
   /// Re-plans for new sharpness of the same topology: builds again only the ranges of the faces that
   /// read a changed edge or vertex (every face where the mesh gains its first sharpness or loses its
   /// last: the plans' depth bound and Loop's smooth builder change then). Returns the faces that read
@@ -82,7 +85,7 @@ public:
   /// What the last set_sharpness or set_topology kept (after the constructor: from 0, nothing kept).
   /// A renderer evaluates again only the other patches.
   const PlanChange& last_change() const { return change_; }
-  /// The tables and the last change, copied.
+  /// The tables and the last change.
   ReplannedTables replanned() const { return {tables_, change_}; }
 
 private:
@@ -114,7 +117,7 @@ private:
   std::vector<int> range_first_;    // range r holds faces [range_first_[r], range_first_[r + 1])
   std::vector<int> patch_first_;    // range r's first patch in tables_
   PlanChange change_;
-  SurfaceTables tables_;
+  std::shared_ptr<const SurfaceTables> tables_ = std::make_shared<const SurfaceTables>();
 };
 
 }  // namespace gps

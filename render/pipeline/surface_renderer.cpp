@@ -27,14 +27,14 @@ SurfaceRenderer::SurfaceRenderer()
   check_gl_errors("creating the renderer");
 }
 
-const SurfaceTables& SurfaceRenderer::tables() const { return tables_; }
+const SurfaceTables& SurfaceRenderer::tables() const { return *tables_; }
 
 void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame) {
   set_mesh(mesh, std::move(surface_tables), frame, PlanChange{}, {});
 }
 
-void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame,
-                               const PlanChange& change, const std::vector<int>& origin) {
+void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const SurfaceTables> surface_tables,
+                               const NormalisedFrame& frame, const PlanChange& change, const std::vector<int>& origin) {
   // Refused before anything changes: the renderer keeps drawing the previous mesh.
   FramedGaussians framed = frame.gaussians_in_frame(mesh);
   ++revision_;
@@ -45,15 +45,15 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   const bool few_changed = carry && !update_everything(changed.size(), framed.n_vertices());
   MeshPointPrecision point_precision =
       carry ? MeshPointPrecision(point_precision_, framed, origin, changed) : MeshPointPrecision(framed);
-  PlanBuffers::check_fits(surface_tables, int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_,
+  PlanBuffers::check_fits(*surface_tables, int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_,
                           point_precision.precision());
   // The corner pass's output of the kept patches holds where it was computed alike.
   const std::vector<KeptPatches>& kept = change.kept;
   const bool same_precision = point_precision.precision() == buffers_.precision();
   const bool keep = change.from != 0 && change.from == tables_id_ && !kept.empty() && carry && same_precision &&
-                    surface_tables.plans.shape == shape() &&
-                    kept_runs_fit(kept, n_patches(), surface_tables.plans.n_patches());
-  if (keep && same_plans(tables_, surface_tables, kept, origin)) {  // the Gaussians alone: followed as an edit
+                    surface_tables->plans.shape == shape() &&
+                    kept_runs_fit(kept, n_patches(), surface_tables->plans.n_patches());
+  if (keep && same_plans(*tables_, *surface_tables, kept, origin)) {  // the Gaussians alone: followed as an edit
     tables_id_ = change.to;
     framed_ = std::move(framed);
     point_precision_ = std::move(point_precision);
@@ -61,16 +61,16 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   }
   use_point_precision(point_precision.precision());
   point_precision_ = std::move(point_precision);
-  const SurfaceTables before = std::exchange(tables_, std::move(surface_tables));
-  dependents_ = stencil_dependents(tables_.stencils);
+  const std::shared_ptr<const SurfaceTables> before = std::exchange(tables_, std::move(surface_tables));
+  dependents_ = stencil_dependents(tables_->stencils);
   readers_.reset();
   n_base_ = int(mesh.n_vertices());
   half_size_patches_ = 0;
   for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
   // Kept tables keep the points of the base vertices that did not change, in this frame and precision.
   const PlanBuffers::CarriedVertices carried{origin, changed};
-  buffers_.upload_tables(tables_, keep ? kept : std::vector<KeptPatches>{}, keep && few_changed ? &carried : nullptr,
-                         &before);
+  buffers_.upload_tables(*tables_, keep ? kept : std::vector<KeptPatches>{}, keep && few_changed ? &carried : nullptr,
+                         before.get());
   tables_id_ = change.to;
   frame_ = frame;
   patches_.set_frame(frame_);
@@ -84,7 +84,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
   cage_.set_mesh(mesh, framed_);         // the overlays too are drawn in the frame
   cache_.set_cage(mesh, framed_, keep);  // projected with the frame's view-projection
   if (keep)
-    run_compute_kept(before, changed, kept, origin, few_changed);
+    run_compute_kept(*before, changed, kept, origin, few_changed);
   else
     run_compute(nullptr);
 }

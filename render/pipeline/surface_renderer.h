@@ -56,7 +56,12 @@ public:
   /// points changed, and copies the others' output; otherwise everything. In the same frame and
   /// precision, the base Gaussians that did not change are copied on the GPU, not uploaded again.
   void set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame,
-                const PlanChange& change, const std::vector<int>& origin);
+                const PlanChange& change, const std::vector<int>& origin) {
+    set_mesh(mesh, std::make_shared<const SurfaceTables>(std::move(surface_tables)), frame, change, origin);
+  }
+  /// The same with tables it shares (a replanner's, SurfaceReplanner::shared_tables): kept without a copy.
+  void set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const SurfaceTables> surface_tables,
+                const NormalisedFrame& frame, const PlanChange& change, const std::vector<int>& origin);
   /// The same with the tables of `surface`, in the mesh's own frame.
   void set_mesh(const CovarianceMesh& mesh, PlannedSurface surface) {
     set_mesh(mesh, std::move(surface), NormalisedFrame::of(mesh));
@@ -179,7 +184,7 @@ private:
   PatchShape shape() const { return tables().plans.shape; }
   int n_patches() const { return tables().plans.n_patches(); }
 
-  SurfaceTables tables_;
+  std::shared_ptr<const SurfaceTables> tables_ = std::make_shared<const SurfaceTables>();
   StencilDependents dependents_;                 // of tables_'s stencils: the rows an edit reaches
   std::unique_ptr<const PatchReaders> readers_;  // built at the first edit the cache can follow
   PlanBuffers buffers_;
