@@ -96,7 +96,8 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       const Clock::time_point undoing = Clock::now();
       const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
       replanner.set_topology(mesh, back);
-      renderer.set_mesh(mesh, replanner.shared_tables(), renderer.frame().following(mesh), replanner.last_change(), back);
+      renderer.set_mesh(mesh, replanner.shared_tables(), renderer.frame().following(mesh), replanner.last_change(),
+                        back);
       glFinish();
       undo_s.push_back(seconds_since(undoing));
     }

@@ -173,8 +173,11 @@ Modelled modelled(const CovarianceMesh& before, const MeshArrays& a, std::vector
 
 Modelled modelled(const CovarianceMesh& before, MeshArrays&& a, std::vector<int> selection, std::string summary) {
   std::vector<int> origin = vertex_origin(a);
-  Modelled out{built_from(a, std::move(a.means), std::move(a.covariances), before), std::move(selection),
-               std::move(summary), std::move(origin), {}};
+  Modelled out{built_from(a, std::move(a.means), std::move(a.covariances), before),
+               std::move(selection),
+               std::move(summary),
+               std::move(origin),
+               {}};
   check_plan_limits(before, a, out.mesh, out.vertex_origin);
   return out;
 }

@@ -21,7 +21,8 @@ std::string ShownSurface::show(const CovarianceMesh& mesh, const PlanOptions& pl
       plans_->set_topology(mesh, origin);
     else
       plans_.emplace(mesh, plans);
-    renderer_->set_mesh(mesh, plans_->shared_tables(), renderer_->frame().following(mesh), plans_->last_change(), origin);
+    renderer_->set_mesh(mesh, plans_->shared_tables(), renderer_->frame().following(mesh), plans_->last_change(),
+                        origin);
   }
   mirror_ = std::move(next);
   ++revision_, ++topology_revision_;
