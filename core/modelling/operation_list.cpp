@@ -607,7 +607,8 @@ Modelled OperationList::apply(const CovarianceMesh& mesh, std::vector<std::strin
         std::vector<int> selection = (*append)(*arrays, summary);
         if (summaries) summaries->push_back(summary);
         if (i + 1 < steps_.size() && steps_[i + 1].append()) continue;
-        auto made = std::make_unique<Modelled>(modelled(mesh_now(), *arrays, std::move(selection), std::move(summary)));
+        auto made =
+            std::make_unique<Modelled>(modelled(mesh_now(), std::move(*arrays), std::move(selection), std::move(summary)));
         check_new_geometry(mesh_now(), *made);
         current = std::move(made);
         arrays.reset();
