@@ -256,10 +256,7 @@ std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
     faces = faces_reading(t, c, edges, vertices);
   }
   base_.creases = std::move(level);
-  if (faces.empty()) {  // the same plans; the patch adjacency reads the sharpness as given
-    SurfaceTables same = *tables_;
-    add_patch_adjacency(same.plans, t, sharpness, &base_.connectivity);
-    tables_ = std::make_shared<const SurfaceTables>(std::move(same));
+  if (faces.empty()) {  // every edge and vertex as sharp as before: the same tables, adjacency included
     change_ = {change_.to, next_tables_id(), {}};
     if (const int n = tables_->plans.n_patches(); n > 0) change_.kept.push_back({0, 0, n});
     return faces;
