@@ -58,6 +58,8 @@ PlanBuffers::PlanBuffers() {
   max_block_ = size_t(std::max<GLint64>(max_block, 0));
 }
 
+namespace {
+
 // The first index where `a` and `b` differ bit for bit (a weight of −0 is not +0's), or the shorter's size.
 template <class T>
 size_t first_difference(const std::vector<T>& a, const std::vector<T>& b) {
@@ -68,6 +70,8 @@ size_t first_difference(const std::vector<T>& a, const std::vector<T>& b) {
   while (i < n && std::memcmp(a.data() + i, b.data() + i, sizeof(T)) == 0) ++i;
   return i;
 }
+
+}  // namespace
 
 template <class T, class Source>
 void PlanBuffers::upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held) {
