@@ -24,9 +24,17 @@ void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded
     slots_ = 2 * count;
     glNamedBufferData(table_, GLsizeiptr(slots_ * 4), nullptr, GL_DYNAMIC_COPY);
   }
+  // The blocks' first vertices, then per chunk of kBlockChunk vertices, and one past them, the block of
+  // its first (shaders/stored_blocks.glsl).
+  const long long blocks = (long long)block_starts.size();
   std::vector<GLuint> starts(block_starts.begin(), block_starts.end());
+  starts.reserve(size_t(blocks + count / gpu::kBlockChunk + 2));
+  GLuint block = 0;
+  for (long long first = 0; first < count + gpu::kBlockChunk; first += gpu::kBlockChunk) {
+    while (block + 1 < GLuint(blocks) && block_starts[block + 1] <= first) ++block;
+    starts.push_back(block);
+  }
   glNamedBufferData(block_starts_, GLsizeiptr(starts.size() * sizeof(GLuint)), starts.data(), GL_STREAM_DRAW);
-  const long long blocks = (long long)starts.size();
   if (blocks > dispatch_blocks_) {
     dispatch_blocks_ = blocks;
     glNamedBufferData(dispatches_, GLsizeiptr(3 * blocks * 4), nullptr, GL_DYNAMIC_COPY);
@@ -50,7 +58,7 @@ void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded
   run_compute_pass(weld_, int(count), false, 0);
   scan_.run(count);
   compact_.use();
-  compact_.set("u_blocks", int(starts.size()));
+  compact_.set("u_blocks", int(blocks));
   run_compute_pass(compact_, int(count), false, 0);
   glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   check_gl_errors("welding the surface cache");
