@@ -62,7 +62,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   // before the next round; a full re-plan of the same result is timed beside them.
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& [label, operation] : operations) {
-    std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, still_s, undo_s;
+    std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, next_s, still_s, undo_s;
     int planned = 0;
     for (int round = 0; round < 6; ++round) {
       const Clock::time_point start = Clock::now();
@@ -81,10 +81,12 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       glFinish();
       frame_s.push_back(seconds_since(drawn));
       total_s.push_back(seconds_since(start));
-      // The same mesh drawn again once settled (on llvmpipe the weld waits for a still frame): the frame
-      // of the mesh without an operation, which the operation's frame is held to.
+      // The next frame (on llvmpipe it welds what the operation's frame stored), then the same mesh drawn
+      // again once settled: the frame of the mesh without an operation, which both are held to.
+      const Clock::time_point next = Clock::now();
       renderer.draw(target, camera, draw);
       glFinish();
+      next_s.push_back(seconds_since(next));
       const Clock::time_point still = Clock::now();
       renderer.draw(target, camera, draw);
       glFinish();
@@ -103,7 +105,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
     }
     // The first round of each operation warms the allocator and the driver's buffers up for its sizes
     // (the first operation timed paid twice the others' upload): not counted.
-    for (std::vector<double>* times : {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &still_s, &undo_s})
+    for (std::vector<double>* times : {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &still_s, &undo_s})
       times->erase(times->begin());
     rows.push_back({{"operation", label},
                     {"operation_ms", median(op_s) * 1e3},
@@ -113,6 +115,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
                     {"upload_ms", median(upload_s) * 1e3},
                     {"frame_ms", median(frame_s) * 1e3},
                     {"total_ms", median(total_s) * 1e3},
+                    {"next_frame_ms", median(next_s) * 1e3},
                     {"still_frame_ms", median(still_s) * 1e3},
                     {"undo_ms", median(undo_s) * 1e3}});
   }
