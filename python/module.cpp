@@ -9,6 +9,7 @@
 #include <new>
 
 #include "core/support/error.h"
+#include "core/support/freed_memory.h"
 #include "core/support/progress.h"
 #include "core/version.h"
 #include "python/bindings.h"
@@ -18,6 +19,9 @@ PYBIND11_MODULE(_gpsurf, m) {
       "Gaussian-Product Subdivision surfaces: covariance meshes, exact subdivision and evaluation, fitting, "
       "rendering";
   m.attr("__version__") = gps::kVersion;
+  // As gpsurf's programs do: the large blocks a modelling operation or a plan frees are kept for the
+  // next call, where glibc would otherwise map and zero each one afresh (core/support/freed_memory.h).
+  gps::keep_freed_memory();
   // numpy's C API is set up here, with the GIL held once: two threads making the first array at once
   // would otherwise wait on each other (pybind11 sets it up on first use, under the GIL).
   pybind11::detail::npy_api::get();
