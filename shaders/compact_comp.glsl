@@ -12,7 +12,7 @@ layout(std430, binding = kBindingStoredIndices) buffer StoredIndices { uint indi
 layout(std430, binding = kBindingScanValues) readonly buffer DistinctBefore { uint distinct_before[]; };  // per vertex
 layout(std430, binding = kBindingWeldedVertices) writeonly buffer WeldedVertices { uint welded[]; };       // 6 words a vertex
 layout(std430, binding = kBindingWeldedParameters) writeonly buffer WeldedParameters { uint parameters[]; };  // 3 words a vertex
-layout(std430, binding = kBindingWeldedDispatches) writeonly buffer WeldedDispatches { uint dispatches[]; };  // 3 words a block
+layout(std430, binding = kBindingWeldedCounts) writeonly buffer WeldedCounts { uint welded_counts[]; };  // per block
 
 void main() {
   int i = compute_invocation();
@@ -26,13 +26,10 @@ void main() {
     for (uint k = 0u; k < 6u; ++k) welded[6u * number + k] = stored[12u * v + k];
     for (uint k = 0u; k < 3u; ++k) parameters[3u * number + k] = stored[12u * v + 9u + k];
   }
-  // The block's last vertex: the work groups that evaluate its welded vertices again
-  // (render/cache/stored_vertex_evaluation.h, an indirect dispatch).
+  // The block's last vertex: how many welded vertices the block has, which an evaluation of them
+  // again runs over (render/cache/stored_vertex_evaluation.h).
   uint end = block + 1 < u_blocks ? block_starts[block + 1] : uint(u_count);
   if (v + 1u == end) {
-    uint welded_vertices = distinct_before[v] + (representative == v ? 1u : 0u) - distinct_before[start];
-    dispatches[3 * block] = (welded_vertices + uint(kWorkGroupSize) - 1u) / uint(kWorkGroupSize);
-    dispatches[3 * block + 1] = 1u;
-    dispatches[3 * block + 2] = 1u;
+    welded_counts[block] = distinct_before[v] + (representative == v ? 1u : 0u) - distinct_before[start];
   }
 }

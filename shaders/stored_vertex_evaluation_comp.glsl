@@ -4,13 +4,13 @@
 // patch corner from its owner's limit point, a point on an infinitely sharp crease from the edge
 // point it keeps (limit_point.glsl, own_crease_normal); position and normal · 2^kind, the grid kept.
 // Preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
-// One indirect dispatch for all listed blocks: a work group finds its block by its first group
-// (shaders/evaluation_groups_comp.glsl).
+// One indirect dispatch for all listed blocks, their welded vertices one after the other: an invocation
+// finds its block by the blocks' first invocations (shaders/evaluation_groups_comp.glsl).
 layout(local_size_x = kWorkGroupSize) in;
 layout(std430, binding = kBindingWeldedVertices) buffer WeldedVertices { float welded[]; };                  // 6 floats a vertex
 layout(std430, binding = kBindingWeldedParameters) readonly buffer WeldedParameters { float parameters[]; };  // patch, u, v
 layout(std430, binding = kBindingEvaluationBlocks) readonly buffer EvaluationBlocks { int blocks[]; };  // block, first vertex, bound
-layout(std430, binding = kBindingEvaluationGroups) readonly buffer EvaluationGroups { uint groups[]; };  // dispatch, then first groups
+layout(std430, binding = kBindingEvaluationGroups) readonly buffer EvaluationGroups { uint groups[]; };  // dispatch, then first invocations
 uniform int u_blocks;
 
 // The corner whose (u, v) the tessellation stages' edge_point_uv gives, or −1: a boundary point
@@ -33,16 +33,15 @@ void evaluate_limit(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 
 #include "shaders/limit_point.glsl"
 
 void main() {
-  uint group = gl_WorkGroupID.x;
-  int low = 0, high = u_blocks - 1;  // the last listed block whose first group is at or before this one
+  uint invocation = gl_GlobalInvocationID.x;
+  if (invocation >= groups[3 + u_blocks]) return;
+  int low = 0, high = u_blocks - 1;  // the last listed block whose first invocation is at or before this one
   while (low < high) {
     int middle = (low + high + 1) / 2;
-    if (groups[3 + middle] <= group) low = middle;
+    if (groups[3 + middle] <= invocation) low = middle;
     else high = middle - 1;
   }
-  uint i = (group - groups[3 + low]) * uint(kWorkGroupSize) + gl_LocalInvocationID.x;
-  if (i >= uint(blocks[3 * low + 2])) return;
-  uint v = uint(blocks[3 * low + 1]) + i;
+  uint v = uint(blocks[3 * low + 1]) + (invocation - groups[3 + low]);
   if (floatBitsToUint(parameters[3u * v]) == ~0u) return;  // past the block's welded vertices
   vec3 evaluated = vec3(parameters[3u * v], parameters[3u * v + 1u], parameters[3u * v + 2u]);
   int patch_id = int(evaluated.x);

@@ -17,7 +17,7 @@ StoredVertexEvaluation::StoredVertexEvaluation()
 
 void StoredVertexEvaluation::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
 
-void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches,
+void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned welded_counts,
                                  int group_limit) {
   GLint max_groups = 0;
   glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups);
@@ -33,20 +33,20 @@ void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blo
       groups += most;
       ++end;
     }
-    dispatch(shape, std::vector<Block>(blocks.begin() + long(begin), blocks.begin() + long(end)), dispatches);
+    dispatch(shape, std::vector<Block>(blocks.begin() + long(begin), blocks.begin() + long(end)), welded_counts);
     begin = end;
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
   check_gl_errors("evaluating the stored vertices");
 }
 
-void StoredVertexEvaluation::dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches) {
+void StoredVertexEvaluation::dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned welded_counts) {
   std::vector<GLint> listed;
   listed.reserve(3 * blocks.size());
   for (const Block& b : blocks) listed.insert(listed.end(), {GLint(b.block), GLint(b.first), GLint(b.bound)});
   glNamedBufferData(blocks_, GLsizeiptr(listed.size() * sizeof(GLint)), listed.data(), GL_STREAM_DRAW);
-  glNamedBufferData(groups_, GLsizeiptr((3 + blocks.size()) * sizeof(GLuint)), nullptr, GL_STREAM_COPY);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedDispatches, dispatches);
+  glNamedBufferData(groups_, GLsizeiptr((4 + blocks.size()) * sizeof(GLuint)), nullptr, GL_STREAM_COPY);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedCounts, welded_counts);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingEvaluationBlocks, blocks_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingEvaluationGroups, groups_);
   groups_program_.use();

@@ -29,14 +29,15 @@ public:
   /// The programs for plan points of `precision` from now on (built at its first use).
   void set_precision(PointPrecision precision);
   /// Evaluates the welded vertices of `blocks` (of the buffers bound at kBindingWeldedVertices and
-  /// kBindingWeldedParameters), for patches of `shape`, in one indirect dispatch of the work groups
-  /// that `dispatches` holds per block (render/cache/stored_vertex_weld.h), or as many as the device's
-  /// work groups per dispatch (or a lower `group_limit` > 0) require; a storage barrier follows.
-  void run(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches, int group_limit);
+  /// kBindingWeldedParameters), for patches of `shape`, as many per block as `welded_counts` holds
+  /// (render/cache/stored_vertex_weld.h), in one indirect dispatch whose work groups run across the
+  /// blocks, or as many as the device's work groups per dispatch (or a lower `group_limit` > 0)
+  /// require; a storage barrier follows.
+  void run(PatchShape shape, const std::vector<Block>& blocks, unsigned welded_counts, int group_limit);
 
 private:
   /// One indirect dispatch over `blocks`.
-  void dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned dispatches);
+  void dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned welded_counts);
 
   ShapePrograms programs_;
   ShaderProgram groups_program_;

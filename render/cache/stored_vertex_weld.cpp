@@ -35,9 +35,9 @@ void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded
     starts.push_back(block);
   }
   glNamedBufferData(block_starts_, GLsizeiptr(starts.size() * sizeof(GLuint)), starts.data(), GL_STREAM_DRAW);
-  if (blocks > dispatch_blocks_) {
-    dispatch_blocks_ = blocks;
-    glNamedBufferData(dispatches_, GLsizeiptr(3 * blocks * 4), nullptr, GL_DYNAMIC_COPY);
+  if (blocks > counted_blocks_) {
+    counted_blocks_ = blocks;
+    glNamedBufferData(welded_counts_, GLsizeiptr(blocks * 4), nullptr, GL_DYNAMIC_COPY);
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingStoredVertices, vertices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldTable, table_);
@@ -45,13 +45,12 @@ void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingBlockStarts, block_starts_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_vertices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedParameters, parameters);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedDispatches, dispatches_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedCounts, welded_counts_);
   const GLuint zero = 0, none = ~0u;
   glClearNamedBufferSubData(table_, GL_R32UI, 0, GLsizeiptr(2 * count * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glClearNamedBufferSubData(parameters, GL_R32UI, 0, GLsizeiptr(3 * count * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
-  // No work groups for a block until its last vertex writes them (none for an empty block).
-  glClearNamedBufferSubData(dispatches_, GL_R32UI, 0, GLsizeiptr(3 * blocks * 4), GL_RED_INTEGER, GL_UNSIGNED_INT,
-                            &zero);
+  // No welded vertices in a block until its last vertex counts them (none in an empty block).
+  glClearNamedBufferSubData(welded_counts_, GL_R32UI, 0, GLsizeiptr(blocks * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   scan_.bind(count);
   weld_.use();
   weld_.set("u_slots", int(2 * count));

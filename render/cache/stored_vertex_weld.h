@@ -41,9 +41,9 @@ public:
   /// vertices keeps its index and writes its words to its welded vertex (shaders/reweld_comp.glsl).
   void weld_again(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters,
                   const std::vector<Range>& ranges);
-  /// Per block, three words: the work groups of kWorkGroupSize over its welded vertices, 1, 1
-  /// (written by a weld of the block): an indirect dispatch's (render/cache/stored_vertex_evaluation.h).
-  unsigned dispatches() const { return dispatches_; }
+  /// Per block, how many welded vertices it has (written by a weld of the block), which an evaluation
+  /// of them again runs over (render/cache/stored_vertex_evaluation.h).
+  unsigned welded_counts() const { return welded_counts_; }
   /// Copies the welded vertices' position and stored normal back to every vertex v of `ranges` of
   /// `vertices`, from welded vertex indices[v] (after the welded ones were evaluated again), in one pass.
   void copy_back(unsigned vertices, unsigned indices, unsigned welded_vertices, const std::vector<Range>& ranges);
@@ -58,8 +58,8 @@ private:
 
   ShaderProgram weld_, compact_, copy_back_, reweld_;
   ExclusiveScan scan_;
-  GlBuffer table_, block_starts_, dispatches_, runs_;
-  long long dispatch_blocks_ = 0;  // blocks the dispatches buffer holds
+  GlBuffer table_, block_starts_, welded_counts_, runs_;
+  long long counted_blocks_ = 0;  // blocks the welded counts buffer holds
   long long slots_ = 0;
 };
 

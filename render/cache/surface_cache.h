@@ -68,10 +68,10 @@ public:
   /// Issues the patch draws of patches [first, first + count) (the caller has bound a program with
   /// the feedback varyings).
   using DrawPatches = std::function<void(int first, int count)>;
-  /// Evaluates the welded vertices of blocks again (render/cache/stored_vertex_evaluation.h) in the work
-  /// groups that `dispatches` holds per block, with the welded vertex and parameter buffers bound.
+  /// Evaluates the welded vertices of blocks again (render/cache/stored_vertex_evaluation.h), as many per
+  /// block as the buffer `welded_counts` holds, with the welded vertex and parameter buffers bound.
   using EvaluateWelded =
-      std::function<void(const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned dispatches)>;
+      std::function<void(const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned welded_counts)>;
   /// At adaptive levels: per block (its patches listed), whether an edit changed any patch's levels
   /// under the capture's camera (render/cache/stored_patch_levels.h, recorded at each adaptive capture).
   using LevelsChanged = std::function<std::vector<char>(const std::vector<StoredPatchLevels::Block>& blocks)>;

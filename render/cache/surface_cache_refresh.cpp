@@ -80,7 +80,7 @@ void SurfaceCache::evaluate_again(const std::vector<int>& blocks, bool third, co
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedParameters, parameters_);
-  evaluate_welded(listed, weld_->dispatches());
+  evaluate_welded(listed, weld_->welded_counts());
   std::vector<int> both;
   std::set_union(copy_pending_.begin(), copy_pending_.end(), blocks.begin(), blocks.end(), std::back_inserter(both));
   copy_pending_ = std::move(both);
@@ -111,14 +111,18 @@ bool SurfaceCache::capture_again(const std::vector<int>& blocks, const DrawPatch
   return true;
 }
 
+// One copy per run of consecutive blocks (their counts are those stored: they lie together in both buffers).
 void SurfaceCache::copy_into_place(const std::vector<int>& blocks, const std::vector<long long>& counts) {
   long long from = 0;
-  for (size_t i = 0; i < blocks.size(); ++i) {
-    if (counts[i] > 0)
+  for (size_t i = 0; i < blocks.size();) {
+    const size_t first = i;
+    long long triangles = counts[i];
+    for (++i; i < blocks.size() && blocks[i] == blocks[i - 1] + 1; ++i) triangles += counts[i];
+    if (triangles > 0)
       glCopyNamedBufferSubData(scratch_, buffer_, GLintptr(from * 3 * kCapturedVertexBytes),
-                               GLintptr(blocks_.first_triangle(blocks[i]) * 3 * kCapturedVertexBytes),
-                               GLsizeiptr(counts[i] * 3 * kCapturedVertexBytes));
-    from += counts[i];
+                               GLintptr(blocks_.first_triangle(blocks[first]) * 3 * kCapturedVertexBytes),
+                               GLsizeiptr(triangles * 3 * kCapturedVertexBytes));
+    from += triangles;
   }
 }
 
