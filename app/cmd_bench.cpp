@@ -123,12 +123,13 @@ void add_bench_command(CLI::App& app) {
       for (const int faces : args->size ? std::vector<int>{args->size} : std::vector<int>{10000, 100000}) {
         const auto r = modelling_figures(name, faces, args->plans.options());
         for (const auto& op : r["operations"])
-          std::printf("%-22s %-18s %7.2f ms %7.2f ms %8d %7.2f ms %7.2f ms %7.2f ms %7.2f ms %7.2f ms %7.2f ms %7.2f ms\n",
-                      (r["mesh"].get<std::string>() + " (" + std::to_string(r["faces"].get<int>()) + ")").c_str(),
-                      op["operation"].get<std::string>().c_str(), op["operation_ms"].get<double>(),
-                      op["replan_ms"].get<double>(), op["faces_planned"].get<int>(), op["full_replan_ms"].get<double>(),
-                      op["upload_ms"].get<double>(), op["frame_ms"].get<double>(), op["total_ms"].get<double>(),
-                      op["next_frame_ms"].get<double>(), op["still_frame_ms"].get<double>(), op["undo_ms"].get<double>());
+          std::printf(
+              "%-22s %-18s %7.2f ms %7.2f ms %8d %7.2f ms %7.2f ms %7.2f ms %7.2f ms %7.2f ms %7.2f ms %7.2f ms\n",
+              (r["mesh"].get<std::string>() + " (" + std::to_string(r["faces"].get<int>()) + ")").c_str(),
+              op["operation"].get<std::string>().c_str(), op["operation_ms"].get<double>(),
+              op["replan_ms"].get<double>(), op["faces_planned"].get<int>(), op["full_replan_ms"].get<double>(),
+              op["upload_ms"].get<double>(), op["frame_ms"].get<double>(), op["total_ms"].get<double>(),
+              op["next_frame_ms"].get<double>(), op["still_frame_ms"].get<double>(), op["undo_ms"].get<double>());
         std::fflush(stdout);
         all.push_back(r);
       }

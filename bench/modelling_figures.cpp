@@ -105,7 +105,8 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
     }
     // The first round of each operation warms the allocator and the driver's buffers up for its sizes
     // (the first operation timed paid twice the others' upload): not counted.
-    for (std::vector<double>* times : {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &still_s, &undo_s})
+    for (std::vector<double>* times :
+         {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &still_s, &undo_s})
       times->erase(times->begin());
     rows.push_back({{"operation", label},
                     {"operation_ms", median(op_s) * 1e3},

@@ -50,7 +50,8 @@ void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded
   glClearNamedBufferSubData(table_, GL_R32UI, 0, GLsizeiptr(2 * count * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glClearNamedBufferSubData(parameters, GL_R32UI, 0, GLsizeiptr(3 * count * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
   // No welded vertices in a block until its last vertex counts them (none in an empty block).
-  glClearNamedBufferSubData(welded_counts_, GL_R32UI, 0, GLsizeiptr(blocks * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferSubData(welded_counts_, GL_R32UI, 0, GLsizeiptr(blocks * 4), GL_RED_INTEGER, GL_UNSIGNED_INT,
+                            &zero);
   scan_.bind(count);
   weld_.use();
   weld_.set("u_slots", int(2 * count));

@@ -50,7 +50,8 @@ GPS_LAYOUT_CONST int kBindingLevelBound = 31;        // the largest level of a r
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;
-// The surface cache's weld: stored vertices per entry of the table that finds a vertex's block (shaders/stored_blocks.glsl).
+// The surface cache's weld: stored vertices per entry of the table that finds a vertex's block
+// (shaders/stored_blocks.glsl).
 GPS_LAYOUT_CONST int kBlockChunk = 64;
 // A plan point q = (q̂, q̄) about its anchor a is three vec4 (dvec4 in double): (xx xy xz yy) (yz zz y0 y1) (y2 a0 a1 a2),
 // y = q̄ − q̂ a (shaders/plan_point.glsl).
