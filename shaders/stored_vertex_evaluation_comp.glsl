@@ -42,7 +42,6 @@ void main() {
     else high = middle - 1;
   }
   uint v = uint(blocks[3 * low + 1]) + (invocation - groups[3 + low]);
-  if (floatBitsToUint(parameters[3u * v]) == ~0u) return;  // past the block's welded vertices
   vec3 evaluated = vec3(parameters[3u * v], parameters[3u * v + 1u], parameters[3u * v + 2u]);
   int patch_id = int(evaluated.x);
   vec2 uv = evaluated.yz;

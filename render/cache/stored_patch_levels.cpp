@@ -27,17 +27,10 @@ void StoredPatchLevels::follow(int n_patches, const std::vector<SurfaceBlocks::M
   if (moved.empty()) return;  // not followed: the next capture records every patch
   const int capacity = std::max(n_patches, 1);
   glNamedBufferData(spare_, GLsizeiptr(capacity) * kBytesPerPatch, nullptr, GL_DYNAMIC_COPY);
-  for (size_t i = 0; i < moved.size();) {  // one copy per run of blocks whose patches stay together
-    const SurfaceBlocks::Moved& m = moved[i];
-    int patches = m.patches;
-    for (++i; i < moved.size() && moved[i].old_first_patch == m.old_first_patch + patches &&
-              moved[i].first_patch == m.first_patch + patches;
-         ++i)
-      patches += moved[i].patches;
-    if (m.old_first_patch + patches <= capacity_ && m.first_patch + patches <= capacity)
+  for (const SurfaceBlocks::Moved& m : joined_runs(moved))
+    if (m.old_first_patch + m.patches <= capacity_ && m.first_patch + m.patches <= capacity)
       glCopyNamedBufferSubData(levels_, spare_, GLintptr(m.old_first_patch) * kBytesPerPatch,
-                               GLintptr(m.first_patch) * kBytesPerPatch, GLsizeiptr(patches) * kBytesPerPatch);
-  }
+                               GLintptr(m.first_patch) * kBytesPerPatch, GLsizeiptr(m.patches) * kBytesPerPatch);
   std::swap(levels_, spare_);
   glNamedBufferData(spare_, 0, nullptr, GL_DYNAMIC_COPY);
   capacity_ = capacity;

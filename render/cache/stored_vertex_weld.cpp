@@ -27,8 +27,9 @@ void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded
   // The blocks' first vertices, then per chunk of kBlockChunk vertices, and one past them, the block of
   // its first (shaders/stored_blocks.glsl).
   const long long blocks = (long long)block_starts.size();
-  std::vector<GLuint> starts(block_starts.begin(), block_starts.end());
+  std::vector<GLuint> starts;
   starts.reserve(size_t(blocks + count / gpu::kBlockChunk + 2));
+  starts.assign(block_starts.begin(), block_starts.end());
   GLuint block = 0;
   for (long long first = 0; first < count + gpu::kBlockChunk; first += gpu::kBlockChunk) {
     while (block + 1 < GLuint(blocks) && block_starts[block + 1] <= first) ++block;
@@ -46,9 +47,8 @@ void StoredVertexWeld::weld(unsigned vertices, unsigned indices, unsigned welded
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_vertices);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedParameters, parameters);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedCounts, welded_counts_);
-  const GLuint zero = 0, none = ~0u;
+  const GLuint zero = 0;
   glClearNamedBufferSubData(table_, GL_R32UI, 0, GLsizeiptr(2 * count * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glClearNamedBufferSubData(parameters, GL_R32UI, 0, GLsizeiptr(3 * count * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
   // No welded vertices in a block until its last vertex counts them (none in an empty block).
   glClearNamedBufferSubData(welded_counts_, GL_R32UI, 0, GLsizeiptr(blocks * 4), GL_RED_INTEGER, GL_UNSIGNED_INT,
                             &zero);

@@ -32,9 +32,9 @@ public:
   /// For the first `count` vertices v of `vertices` (12 words each): writes indices[v], the number
   /// of v's welded vertex, and copies the welded vertices' first 9 words to `welded_vertices` and
   /// their last 3 (the parameters evaluated) to `parameters`, each block's from the block's first
-  /// vertex on (`block_starts`: each block's first vertex, ascending, the first 0); the rest of the
-  /// parameters are all ones bits (none). Copies of a point in different blocks weld too. A barrier
-  /// then makes the indices and vertices ready to draw.
+  /// vertex on (`block_starts`: each block's first vertex, ascending, the first 0), and counts each
+  /// block's welded vertices (welded_counts()). Copies of a point in different blocks weld too. A
+  /// barrier then makes the indices and vertices ready to draw.
   void weld(unsigned vertices, unsigned indices, unsigned welded_vertices, unsigned parameters, long long count,
             const std::vector<long long>& block_starts);
   /// After `ranges` (whole blocks) were captured again in the tessellation they had: each of their

@@ -123,4 +123,22 @@ void SurfaceBlocks::clear_stale() {
   stale_patches_ = 0;
 }
 
+std::vector<SurfaceBlocks::Moved> joined_runs(const std::vector<SurfaceBlocks::Moved>& moved) {
+  std::vector<SurfaceBlocks::Moved> runs;
+  for (const SurfaceBlocks::Moved& m : moved) {
+    if (!runs.empty()) {
+      SurfaceBlocks::Moved& r = runs.back();
+      if (m.old_first_patch == r.old_first_patch + r.patches && m.first_patch == r.first_patch + r.patches &&
+          m.old_first_triangle == r.old_first_triangle + r.triangles &&
+          m.first_triangle == r.first_triangle + r.triangles) {
+        r.patches += m.patches;
+        r.triangles += m.triangles;
+        continue;
+      }
+    }
+    runs.push_back(m);
+  }
+  return runs;
+}
+
 }  // namespace gps

@@ -66,4 +66,8 @@ private:
   int stale_patches_ = 0;
 };
 
+/// `moved` (in order) with each run of blocks that lie one after the other before and now, in their
+/// patches and their triangles, as one: what follows a change of topology copies a run at a time.
+std::vector<SurfaceBlocks::Moved> joined_runs(const std::vector<SurfaceBlocks::Moved>& moved);
+
 }  // namespace gps

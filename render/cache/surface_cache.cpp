@@ -89,19 +89,11 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
   if (!in_place) {
     const long long total = blocks_.total();
     reserve(spare_, spare_capacity_, total + total / 8 + 64);
-    // One copy per run of blocks that lie together both before and now.
-    for (size_t i = 0; i < moved.size();) {
-      const SurfaceBlocks::Moved& m = moved[i];
-      long long triangles = m.triangles;
-      for (++i; i < moved.size() && moved[i].old_first_triangle == m.old_first_triangle + triangles &&
-                moved[i].first_triangle == m.first_triangle + triangles;
-           ++i)
-        triangles += moved[i].triangles;
-      if (triangles > 0)
+    for (const SurfaceBlocks::Moved& m : joined_runs(moved))
+      if (m.triangles > 0)
         glCopyNamedBufferSubData(buffer_, spare_, GLintptr(m.old_first_triangle * 3 * kCapturedVertexBytes),
                                  GLintptr(m.first_triangle * 3 * kCapturedVertexBytes),
-                                 GLsizeiptr(triangles * 3 * kCapturedVertexBytes));
-    }
+                                 GLsizeiptr(m.triangles * 3 * kCapturedVertexBytes));
     std::swap(buffer_, spare_);
     std::swap(capacity_, spare_capacity_);
     glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kCapturedVertexBytes);
