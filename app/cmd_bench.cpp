@@ -117,19 +117,25 @@ void add_bench_command(CLI::App& app) {
       const auto context = make_context();
       const std::string name = args->mesh.empty() ? "sphere" : args->mesh;
       std::printf("device: %s, 1280x720, adaptive 6 px\n", context->description().c_str());
-      std::printf("%-22s %-18s %10s %10s %8s %10s %10s %10s %10s %10s %10s %10s\n", "mesh", "operation", "operation",
-                  "re-plan", "faces", "full plan", "upload", "frame", "total", "next", "still", "undo");
+      std::printf("%-22s %-18s %10s %10s %8s %10s %10s %10s %10s %10s %10s %10s %10s\n", "mesh", "operation",
+                  "operation", "re-plan", "faces", "full plan", "upload", "frame", "total", "next", "pause", "still",
+                  "undo");
       nlohmann::json all = nlohmann::json::array();
       for (const int faces : args->size ? std::vector<int>{args->size} : std::vector<int>{10000, 100000}) {
         const auto r = modelling_figures(name, faces, args->plans.options());
-        for (const auto& op : r["operations"])
-          std::printf(
-              "%-22s %-18s %7.2f ms %7.2f ms %8d %7.2f ms %7.2f ms %7.2f ms %7.2f ms %7.2f ms %7.2f ms %7.2f ms\n",
-              (r["mesh"].get<std::string>() + " (" + std::to_string(r["faces"].get<int>()) + ")").c_str(),
-              op["operation"].get<std::string>().c_str(), op["operation_ms"].get<double>(),
-              op["replan_ms"].get<double>(), op["faces_planned"].get<int>(), op["full_replan_ms"].get<double>(),
-              op["upload_ms"].get<double>(), op["frame_ms"].get<double>(), op["total_ms"].get<double>(),
-              op["next_frame_ms"].get<double>(), op["still_frame_ms"].get<double>(), op["undo_ms"].get<double>());
+        for (const auto& op : r["operations"]) {
+          std::printf("%-22s %-18s",
+                      (r["mesh"].get<std::string>() + " (" + std::to_string(r["faces"].get<int>()) + ")").c_str(),
+                      op["operation"].get<std::string>().c_str());
+          for (const char* key :
+               {"operation_ms", "replan_ms", "faces_planned", "full_replan_ms", "upload_ms", "frame_ms", "total_ms",
+                "next_frame_ms", "pause_frame_ms", "still_frame_ms", "undo_ms"})
+            if (op[key].is_number_integer())
+              std::printf(" %8d", op[key].get<int>());
+            else
+              std::printf(" %7.2f ms", op[key].get<double>());
+          std::printf("\n");
+        }
         std::fflush(stdout);
         all.push_back(r);
       }

@@ -27,8 +27,8 @@ void BM_Model(benchmark::State& state) {
   const nlohmann::json& operation = figures(int(state.range(0)))["operations"].at(size_t(state.range(1)));
   for (auto _ : state) state.SetIterationTime(operation["total_ms"].get<double>() * 1e-3);
   state.SetLabel(operation["operation"].get<std::string>());
-  for (const char* key :
-       {"operation_ms", "replan_ms", "upload_ms", "frame_ms", "next_frame_ms", "still_frame_ms", "undo_ms"})
+  for (const char* key : {"operation_ms", "replan_ms", "upload_ms", "frame_ms", "next_frame_ms", "pause_frame_ms",
+                          "still_frame_ms", "undo_ms"})
     state.counters[key] = operation[key].get<double>();
 }
 

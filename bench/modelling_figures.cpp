@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <functional>
+#include <thread>
 
 #include "core/modelling/samples.h"
 #include "core/modelling/affine_transform.h"
@@ -31,6 +32,7 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 nlohmann::json modelling_figures(const std::string& name, int faces, const PlanOptions& options) {
   const CovarianceMesh mesh = make_sample(name, faces);
   SurfaceRenderer renderer;
+  renderer.surface_cache().set_whole_weld_delay(SurfaceCache::kPauseWeldDelay);  // as the editor draws
   RenderTarget target(1280, 720);
   DrawOptions draw;
   draw.pixels = 6.0f;
@@ -62,7 +64,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   // before the next round; a full re-plan of the same result is timed beside them.
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& [label, operation] : operations) {
-    std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, next_s, still_s, undo_s;
+    std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, next_s, pause_s, still_s, undo_s;
     int planned = 0;
     for (int round = 0; round < 6; ++round) {
       const Clock::time_point start = Clock::now();
@@ -81,12 +83,18 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       glFinish();
       frame_s.push_back(seconds_since(drawn));
       total_s.push_back(seconds_since(start));
-      // The next frame (on llvmpipe it welds what the operation's frame stored), then the same mesh drawn
-      // again once settled: the frame of the mesh without an operation, which both are held to.
+      // The next frame; then, once a user would pause, the frame that welds what the operation's frame
+      // stored (on llvmpipe: surface_cache.h); then the same mesh drawn again once settled: the frame of
+      // the mesh without an operation, which the first two are held to.
       const Clock::time_point next = Clock::now();
       renderer.draw(target, camera, draw);
       glFinish();
       next_s.push_back(seconds_since(next));
+      std::this_thread::sleep_for(SurfaceCache::kPauseWeldDelay);
+      const Clock::time_point paused = Clock::now();
+      renderer.draw(target, camera, draw);
+      glFinish();
+      pause_s.push_back(seconds_since(paused));
       const Clock::time_point still = Clock::now();
       renderer.draw(target, camera, draw);
       glFinish();
@@ -106,7 +114,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
     // The first round of each operation warms the allocator and the driver's buffers up for its sizes
     // (the first operation timed paid twice the others' upload): not counted.
     for (std::vector<double>* times :
-         {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &still_s, &undo_s})
+         {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &pause_s, &still_s, &undo_s})
       times->erase(times->begin());
     rows.push_back({{"operation", label},
                     {"operation_ms", median(op_s) * 1e3},
@@ -117,6 +125,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
                     {"frame_ms", median(frame_s) * 1e3},
                     {"total_ms", median(total_s) * 1e3},
                     {"next_frame_ms", median(next_s) * 1e3},
+                    {"pause_frame_ms", median(pause_s) * 1e3},
                     {"still_frame_ms", median(still_s) * 1e3},
                     {"undo_ms", median(undo_s) * 1e3}});
   }

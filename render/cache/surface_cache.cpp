@@ -103,6 +103,7 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
     renumbering_->run(buffer_, 3 * blocks_.total(), new_number);
   }
   weld_all_pending_ = true;  // welded anew by the refresh
+  whole_weld_since_ = std::chrono::steady_clock::now();
   weld_pending_.clear();
   topology_pending_ = true;
   check_gl_errors("following a change of topology");
@@ -261,6 +262,7 @@ void SurfaceCache::weld(const std::vector<int>& blocks) {
     case Weld::when_settled:
       if (blocks.empty()) {
         weld_all_pending_ = true;
+        whole_weld_since_ = std::chrono::steady_clock::now();
         weld_pending_.clear();
       } else if (!weld_all_pending_) {
         std::vector<int> both;
@@ -274,6 +276,7 @@ void SurfaceCache::weld(const std::vector<int>& blocks) {
 
 void SurfaceCache::settle() {
   copy_back_evaluated();
+  if (weld_all_pending_ && std::chrono::steady_clock::now() - whole_weld_since_ < whole_weld_delay_) return;
   weld_pending();
 }
 

@@ -15,7 +15,9 @@
 // static buffer is. On a GPU right after each capture or refresh (Weld::at_capture). On llvmpipe
 // (Weld::when_settled) by the first frame whose inputs the stored triangles match (settle()): there
 // the weld costs an edit's frame more than it saves it, so the frames of a drag draw the triangles as
-// captured and the frames after it welded.
+// captured and the frames after it welded. A weld of every stored vertex (after a capture or a change
+// of topology) may further wait until the triangles have stayed as they are for a while
+// (set_whole_weld_delay): an editor then welds while its user pauses, not in the frame after an operation.
 //
 // Edits: triangles are captured in blocks of consecutive patches (render/cache/surface_blocks.h), each
 // counted by its own query. An edit reports the patches it changed (points_changed); the next frame
@@ -33,6 +35,7 @@
 // patches would be captured so, the whole surface is captured again. A change of topology whose
 // patches mostly keep their numbers is followed the same way (topology_changed; docs/surface_cache.md).
 #include <glm/glm.hpp>
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -146,9 +149,10 @@ public:
   /// transform feedback costs more than the compute passes).
   float evaluated_from_level() const { return weld_mode_ == Weld::when_settled ? kSettledEvaluatedFromLevel : 0.0f; }
   /// For a frame that matches(): brings the captured copies of evaluated vertices up to date and
-  /// welds what Weld::when_settled left unwelded.
+  /// welds what Weld::when_settled left unwelded (a weld of everything once the delay has passed).
   void settle();
-  /// Whether settle() has nothing left to do: a frame that matches() then draws what the last drew.
+  /// Whether settle() has nothing left to do: a frame that matches() then draws what the last drew
+  /// (false while a weld waits for its delay: the frames until then draw, and the last welds).
   bool settled() const {
     const bool weld_waits =
         weld_mode_ == Weld::when_settled && has_stored_triangles() && (weld_all_pending_ || !weld_pending_.empty());
@@ -184,6 +188,11 @@ public:
   /// software); a change drops the stored triangles.
   void set_weld(Weld weld);
   Weld weld_mode() const { return weld_mode_; }
+  /// When settled: how long the stored triangles stay unchanged before a weld of all of them (default
+  /// 0: the first frame that matches them welds). Partial welds of refreshed blocks do not wait.
+  void set_whole_weld_delay(std::chrono::duration<double> delay) { whole_weld_delay_ = delay; }
+  /// The delay an interactive program gives: a pause of its user.
+  static constexpr std::chrono::duration<double> kPauseWeldDelay{0.3};
   /// The factor by which a base edge's projected size may change before adaptive levels capture
   /// again (default 1.25).
   void set_hysteresis(float factor) { hysteresis_ = factor; }
@@ -278,6 +287,8 @@ private:
   std::unique_ptr<StoredPatchRenumbering> renumbering_;  // made at the first change of topology that needs it
   Weld weld_mode_;
   bool weld_all_pending_ = true;   // when settled: every block to weld
+  std::chrono::duration<double> whole_weld_delay_{0.0};
+  std::chrono::steady_clock::time_point whole_weld_since_{};  // when every block last became unwelded
   std::vector<int> weld_pending_;  // else these, in order
   std::vector<int>
       copy_pending_;  // blocks whose evaluated welded vertices are not yet copied to their captured ones, in order

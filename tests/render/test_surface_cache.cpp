@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/modelling/samples.h"
@@ -604,6 +605,54 @@ TEST_P(SurfaceCacheTest, AnEditAfterASmallCameraMoveKeepsTheLevelsOfTheCapture) 
   EXPECT_EQ(renderer.surface_cache().captures(), 1);
   EXPECT_EQ(renderer.surface_cache().refreshes(), 1);
   EXPECT_TRUE(same_surface(draw(renderer, target, camera, o, true), draw(renderer, target, camera, o, false)));
+}
+
+// Welded when settled with a delay (an editor's pause): the frames before it draw the stored triangles
+// as captured, repeat none, and equal the live ones; the first still frame past it welds them all. The
+// blocks an edit captures again are welded by its next still frame, the delay or not; a new mesh waits
+// again.
+class SurfaceCacheWeldDelay : public test::GlTest {};
+
+TEST_F(SurfaceCacheWeldDelay, AWholeWeldWaitsForThePauseAndAPartialOneDoesNot) {
+  RenderTarget target(kSize, kSize);
+  CovarianceMesh sphere = make_sample("sphere", 3000);
+  SurfaceRenderer renderer;
+  SurfaceCache& cache = renderer.surface_cache();
+  cache.set_weld(SurfaceCache::Weld::when_settled);
+  cache.set_whole_weld_delay(std::chrono::hours(1));
+  renderer.set_mesh(sphere);
+  const Camera camera = frame_mesh(sphere, 35.0f, 25.0f);
+  const DrawOptions o = uniform(4.0f);
+  for (int frame = 0; frame < 3; ++frame) {
+    const Frame cached = draw(renderer, target, camera, o, true);
+    EXPECT_FALSE(cache.stored_vertices_welded()) << frame;
+    EXPECT_FALSE(cache.settled()) << frame;
+    EXPECT_FALSE(renderer.draws_as_last(target, camera, o)) << frame << ": the frames go on until the weld";
+    EXPECT_TRUE(same_surface(cached, draw(renderer, target, camera, o, false))) << frame;
+  }
+  EXPECT_EQ(cache.distinct_vertices(), 3 * cache.triangles());
+  cache.set_whole_weld_delay(std::chrono::milliseconds(20));
+  std::this_thread::sleep_for(std::chrono::milliseconds(40));
+  draw(renderer, target, camera, o, true);
+  EXPECT_TRUE(cache.stored_vertices_welded());
+  EXPECT_TRUE(cache.settled());
+  const long long distinct = cache.distinct_vertices();
+  EXPECT_LT(distinct, 3 * cache.triangles());
+
+  cache.set_whole_weld_delay(std::chrono::hours(1));
+  const int v = int(sphere.n_vertices() / 2);
+  move_vertex(sphere, v, 0.05);
+  renderer.update_vertices(sphere, {v});
+  draw(renderer, target, camera, o, true);  // its blocks captured again, welded when settled
+  const Frame settled = draw(renderer, target, camera, o, true);
+  EXPECT_TRUE(cache.stored_vertices_welded());
+  EXPECT_EQ(cache.distinct_vertices(), distinct);
+  EXPECT_TRUE(same_surface(settled, draw(renderer, target, camera, o, false)));
+
+  renderer.set_mesh(make_sample("sphere", 2000));
+  draw(renderer, target, camera, o, true);
+  draw(renderer, target, camera, o, true);
+  EXPECT_FALSE(cache.stored_vertices_welded());
 }
 
 INSTANTIATE_TEST_SUITE_P(StoredVertices, SurfaceCacheTest,

@@ -81,6 +81,10 @@ EditorApp::EditorApp(const EditorOptions& options)
   }
   build_commands();
   if (!options.play.empty()) script_ = EventScript::load(options.play);
+  // Interactive: the weld of a whole new surface (llvmpipe's) waits for a pause, so that the frame after
+  // an operation costs no more than any other. A replay welds at its first still frame, as it always did.
+  if (!script_ && options.screenshot.empty() && options.save.empty())
+    shown_->renderer().surface_cache().set_whole_weld_delay(SurfaceCache::kPauseWeldDelay);
   if (!options.record.empty()) recorder_.emplace();
   if (options.file.empty()) {
     open_sample(kDefaultSample);
