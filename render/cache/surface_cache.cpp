@@ -104,6 +104,7 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
   }
   weld_all_pending_ = true;  // welded anew by the refresh
   whole_weld_since_ = std::chrono::steady_clock::now();
+  whole_weld_frames_ = 0;
   weld_pending_.clear();
   topology_pending_ = true;
   check_gl_errors("following a change of topology");
@@ -263,6 +264,8 @@ void SurfaceCache::weld(const std::vector<int>& blocks) {
       if (blocks.empty()) {
         weld_all_pending_ = true;
         whole_weld_since_ = std::chrono::steady_clock::now();
+        whole_weld_frames_ = 0;
+        whole_weld_frames_ = 0;
         weld_pending_.clear();
       } else if (!weld_all_pending_) {
         std::vector<int> both;
@@ -276,7 +279,10 @@ void SurfaceCache::weld(const std::vector<int>& blocks) {
 
 void SurfaceCache::settle() {
   copy_back_evaluated();
-  if (weld_all_pending_ && std::chrono::steady_clock::now() - whole_weld_since_ < whole_weld_delay_) return;
+  // With a delay, the first still frame never welds everything: a frame may outlast the delay.
+  if (weld_all_pending_ && whole_weld_delay_.count() > 0 &&
+      (whole_weld_frames_++ == 0 || std::chrono::steady_clock::now() - whole_weld_since_ < whole_weld_delay_))
+    return;
   weld_pending();
 }
 

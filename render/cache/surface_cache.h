@@ -188,8 +188,9 @@ public:
   /// software); a change drops the stored triangles.
   void set_weld(Weld weld);
   Weld weld_mode() const { return weld_mode_; }
-  /// When settled: how long the stored triangles stay unchanged before a weld of all of them (default
-  /// 0: the first frame that matches them welds). Partial welds of refreshed blocks do not wait.
+  /// When settled: how long the stored triangles stay unchanged before a weld of all of them, which
+  /// then also waits for the second frame that draws them unchanged (default 0: the first such frame
+  /// welds). Partial welds of refreshed blocks do not wait.
   void set_whole_weld_delay(std::chrono::duration<double> delay) { whole_weld_delay_ = delay; }
   /// The delay an interactive program gives: a pause of its user.
   static constexpr std::chrono::duration<double> kPauseWeldDelay{0.3};
@@ -289,6 +290,7 @@ private:
   bool weld_all_pending_ = true;   // when settled: every block to weld
   std::chrono::duration<double> whole_weld_delay_{0.0};
   std::chrono::steady_clock::time_point whole_weld_since_{};  // when every block last became unwelded
+  int whole_weld_frames_ = 0;                                 // the still frames since
   std::vector<int> weld_pending_;  // else these, in order
   std::vector<int>
       copy_pending_;  // blocks whose evaluated welded vertices are not yet copied to their captured ones, in order

@@ -608,7 +608,8 @@ TEST_P(SurfaceCacheTest, AnEditAfterASmallCameraMoveKeepsTheLevelsOfTheCapture) 
 }
 
 // Welded when settled with a delay (an editor's pause): the frames before it draw the stored triangles
-// as captured, repeat none, and equal the live ones; the first still frame past it welds them all. The
+// as captured, repeat none, and equal the live ones; the first still frame past it (and not the first
+// still frame) welds them all. The
 // blocks an edit captures again are welded by its next still frame, the delay or not; a new mesh waits
 // again.
 class SurfaceCacheWeldDelay : public test::GlTest {};
@@ -653,6 +654,16 @@ TEST_F(SurfaceCacheWeldDelay, AWholeWeldWaitsForThePauseAndAPartialOneDoesNot) {
   draw(renderer, target, camera, o, true);
   draw(renderer, target, camera, o, true);
   EXPECT_FALSE(cache.stored_vertices_welded());
+  // Past the delay, the first still frame still does not weld (a frame of a large mesh outlasts it);
+  // the second does.
+  cache.set_whole_weld_delay(std::chrono::milliseconds(1));
+  renderer.set_mesh(make_sample("sphere", 3000));
+  draw(renderer, target, camera, o, true);
+  std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  draw(renderer, target, camera, o, true);
+  EXPECT_FALSE(cache.stored_vertices_welded());
+  draw(renderer, target, camera, o, true);
+  EXPECT_TRUE(cache.stored_vertices_welded());
 }
 
 INSTANTIATE_TEST_SUITE_P(StoredVertices, SurfaceCacheTest,
