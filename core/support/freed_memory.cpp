@@ -1,5 +1,6 @@
 #include "core/support/freed_memory.h"
 
+#include <atomic>
 #include <climits>  // also defines __GLIBC__ where it is glibc
 #include <cstdlib>
 #include <string>
@@ -10,10 +11,22 @@
 
 namespace gps {
 
+namespace {
+std::atomic<int> kept_heap_top{0};  // the largest keep_freed_heap_top so far (0: glibc's own threshold)
+}  // namespace
+
 void keep_freed_memory() {
 #if defined(__GLIBC__)
-  mallopt(M_MMAP_MAX, 0);              // no block from its own mapping (glibc still maps one if the heap cannot grow)
-  mallopt(M_TRIM_THRESHOLD, INT_MAX);  // the heap's free top goes back to the system past 2 GiB only
+  mallopt(M_MMAP_MAX, 0);  // no block from its own mapping (glibc still maps one if the heap cannot grow)
+#endif
+  keep_freed_heap_top(INT_MAX);  // the heap's free top goes back to the system past 2 GiB only
+}
+
+void keep_freed_heap_top(int bytes) {
+  if (kept_heap_top.load() >= bytes) return;
+  kept_heap_top = bytes;
+#if defined(__GLIBC__)
+  mallopt(M_TRIM_THRESHOLD, bytes);
 #endif
 }
 

@@ -12,6 +12,11 @@ namespace gps {
 /// thing in main(). Does nothing where the C library has no such settings.
 void keep_freed_memory();
 
+/// Keeps up to `bytes` free at the heap's top mapped (glibc's trim threshold), unless an earlier call
+/// (keep_freed_memory's included) kept more: a library that wants some kept does not undo a program
+/// that keeps everything, which would have every large block of a million-face mesh faulted in again.
+void keep_freed_heap_top(int bytes);
+
 /// Asks the C library of the program this process runs next (execv) to back its heap with
 /// transparent huge pages (glibc's tunable glibc.malloc.hugetlb=1, read only when a program starts),
 /// unless the environment already sets that tunable. A program that fills and reads hundreds of MB

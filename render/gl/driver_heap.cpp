@@ -4,13 +4,15 @@
 
 #include <mutex>
 
+#include "core/support/freed_memory.h"
+
 namespace gps {
 
 void retain_freed_heap() {
   static std::once_flag once;
   std::call_once(once, [] {
-    // Up to 64 MiB free at the heap's top stays mapped; each growth asks for 16 MiB more than needed.
-    mallopt(M_TRIM_THRESHOLD, 64 << 20);
+    // At least 64 MiB free at the heap's top stays mapped; each growth asks for 16 MiB more than needed.
+    keep_freed_heap_top(64 << 20);
     mallopt(M_TOP_PAD, 16 << 20);
   });
 }

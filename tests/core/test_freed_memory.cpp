@@ -41,6 +41,18 @@ TEST(FreedMemory, LargeBlocksComeFromTheHeapAndStayInTheProcess) {
   EXPECT_GE(mallinfo2().arena, kLarge);  // freed, still the process's
 }
 
+// A library that asks to keep less (a GL context: 64 MiB for the driver's frames) after the program
+// kept everything leaves it so: a freed block of 256 MiB stays the process's.
+TEST(FreedMemory, ALaterSmallerKeptTopKeepsTheLarger) {
+  keep_freed_memory();
+  keep_freed_heap_top(64 << 20);
+  constexpr size_t kHuge = 4 * kLarge;
+  g_block = static_cast<char*>(std::malloc(kHuge));
+  std::memset(g_block, 1, kHuge);
+  std::free(g_block);
+  EXPECT_GE(mallinfo2().arena, kHuge);
+}
+
 // The tunable glibc reads at a program's start, for the program run next.
 TEST(FreedMemory, TheNextProgramIsAskedForHugePages) {
   unsetenv("GLIBC_TUNABLES");
