@@ -102,10 +102,7 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
     if (!renumbering_) renumbering_ = std::make_unique<StoredPatchRenumbering>();
     renumbering_->run(buffer_, 3 * blocks_.total(), new_number);
   }
-  weld_all_pending_ = true;  // welded anew by the refresh
-  whole_weld_since_ = std::chrono::steady_clock::now();
-  whole_weld_frames_ = 0;
-  weld_pending_.clear();
+  unweld_all();  // welded anew by the refresh
   topology_pending_ = true;
   check_gl_errors("following a change of topology");
   return moved;
@@ -262,11 +259,7 @@ void SurfaceCache::weld(const std::vector<int>& blocks) {
       return;
     case Weld::when_settled:
       if (blocks.empty()) {
-        weld_all_pending_ = true;
-        whole_weld_since_ = std::chrono::steady_clock::now();
-        whole_weld_frames_ = 0;
-        whole_weld_frames_ = 0;
-        weld_pending_.clear();
+        unweld_all();
       } else if (!weld_all_pending_) {
         std::vector<int> both;
         std::set_union(weld_pending_.begin(), weld_pending_.end(), blocks.begin(), blocks.end(),
@@ -275,6 +268,13 @@ void SurfaceCache::weld(const std::vector<int>& blocks) {
       }
       return;
   }
+}
+
+void SurfaceCache::unweld_all() {
+  weld_all_pending_ = true;
+  whole_weld_since_ = std::chrono::steady_clock::now();
+  whole_weld_frames_ = 0;
+  weld_pending_.clear();
 }
 
 void SurfaceCache::settle() {

@@ -267,6 +267,8 @@ private:
   void evaluate_again(const std::vector<int>& blocks, bool third, const EvaluateWelded& evaluate_welded);
   /// Welds now what Weld::when_settled left unwelded.
   void weld_pending();
+  /// Every block left to weld when settled, from now (the delay counts from here).
+  void unweld_all();
   bool capture_again(const std::vector<int>& blocks, const DrawPatches& draw_patches, bool kept);
   /// Counts a refresh: the stale blocks are fresh, the stored triangles those of `key`.
   bool refreshed(const Key& key);

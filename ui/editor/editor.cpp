@@ -83,8 +83,7 @@ EditorApp::EditorApp(const EditorOptions& options)
   if (!options.play.empty()) script_ = EventScript::load(options.play);
   // Interactive: the weld of a whole new surface (llvmpipe's) waits for a pause, so that the frame after
   // an operation costs no more than any other. A replay welds at its first still frame, as it always did.
-  if (!script_ && options.screenshot.empty() && options.save.empty())
-    shown_->renderer().surface_cache().set_whole_weld_delay(SurfaceCache::kPauseWeldDelay);
+  if (!scripted()) shown_->renderer().surface_cache().set_whole_weld_delay(SurfaceCache::kPauseWeldDelay);
   if (!options.record.empty()) recorder_.emplace();
   if (options.file.empty()) {
     open_sample(kDefaultSample);
@@ -131,9 +130,10 @@ int EditorApp::run() {
   return 0;
 }
 
+bool EditorApp::scripted() const { return script_ || !options_.screenshot.empty() || !options_.save.empty(); }
+
 bool EditorApp::script_finished() {
-  const bool scripted = script_ || !options_.screenshot.empty() || !options_.save.empty();
-  if (!scripted || (script_ && !script_->done()) || mesh_jobs_.running() || layout_frames_ > 0) return false;
+  if (!scripted() || (script_ && !script_->done()) || mesh_jobs_.running() || layout_frames_ > 0) return false;
   if (view_.target.shown && target_layer_->points().busy()) return false;  // the target's distances as they settle
   // Two more frames after the last event: auto-sized ImGui windows settle on their second frame.
   if (++finishing_frames_ < 3) return false;

@@ -177,6 +177,8 @@ private:
   void draw_ui();
   void render_and_present();
   bool script_finished();
+  // Driven by a replay, or run for a screenshot or a save (not by a user at the window).
+  bool scripted() const;
   void write_screenshot(const std::string& path);
   void write_statistics(const std::string& path);
   void set_status(const std::string& message, bool error);
