@@ -365,6 +365,16 @@ int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const
     for (int f = a; f < b && keep; ++f) keep = new_face[size_t(f)] == g0 + (f - a) && !dirty[size_t(g0 + (f - a))];
     if (keep) kept_at[size_t(g0)] = int(r);
   }
+  // The kept ranges renumbered onto the new mesh, on all cores (each its own tables).
+  std::vector<int> kept_ranges;
+  for (const int r : kept_at)
+    if (r >= 0) kept_ranges.push_back(r);
+  std::vector<char> renumbered(ranges_.size(), 0);
+#pragma omp parallel for schedule(dynamic)
+  for (size_t i = 0; i < kept_ranges.size(); ++i) {
+    const size_t r = size_t(kept_ranges[i]);
+    renumbered[r] = renumber_range(ranges_[r], new_index, same_base, n_new);
+  }
   std::vector<RangePlans> ranges;
   std::vector<int> firsts, fresh, old_patch_first;
   int planned = 0;
@@ -373,7 +383,7 @@ int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const
     if (const int r = kept_at[size_t(g)]; r >= 0) {
       RangePlans& kept = ranges_[size_t(r)];
       const int size = range_first_[size_t(r) + 1] - range_first_[size_t(r)];
-      if (renumber_range(kept, new_index, same_base, n_new)) {
+      if (renumbered[size_t(r)]) {
         old_patch_first.push_back(patch_first_[size_t(r)]);
       } else {
         fresh.push_back(int(ranges.size()));
