@@ -56,7 +56,8 @@ void add_compare_command(CLI::App& app) {
     const double max_triangles = level->count() > 0 ? INFINITY : kMeasuredTriangles;
     const auto limit_of = [&](const std::string& path, const CovarianceMesh& m) {
       if (args->linear) return LimitTriangles{face_triangles(m), 0};
-      return naming_input(path, [&] { return limit_surface_triangles(m, args->level, options, max_triangles); });
+      return naming_mesh_input(path, args->repair.import_options().repair,
+                               [&] { return limit_surface_triangles(m, args->level, options, max_triangles); });
     };
     const LimitTriangles limit_b = limit_of(args->second, b);
     LimitTriangles limit_a;
@@ -73,7 +74,7 @@ void add_compare_command(CLI::App& app) {
       const SurfaceDistance surface(limit.triangles);
       const double diagonal = bounding_box_diagonal(points.positions);
       std::cout << ":\n"
-                << describe(summarise_distances(surface.distances(points.positions), diagonal > 0 ? diagonal : 1.0))
+                << describe(summarise_distances(surface.distances(points.positions), diagonal))
                 << describe(summarise_angles(surface.normal_angles(points.positions, points.normals)));
     };
     report(args->first, a_surface ? points_of(a, limit_a) : face_triangles(a_soup), args->second, limit_b);

@@ -41,7 +41,8 @@ void add_subdivide_command(CLI::App& app) {
     o.levels = args->levels;
     o.limit = args->limit;
     o.loop_beta = named.loop_beta;
-    const SubdivisionResult r = naming_input(args->input, [&] { return subdivide(m, o); });
+    const SubdivisionResult r =
+        naming_mesh_input(args->input, args->repair.import_options().repair, [&] { return subdivide(m, o); });
     write_mesh_noting(args->output, r.mesh, !args->ascii);
     std::cout << "wrote " << args->output << " (" << (o.scheme == Scheme::loop ? "Loop, " : "Catmull-Clark, ")
               << r.mesh.n_vertices() << " vertices, " << r.mesh.n_faces() << " faces)\n";

@@ -223,7 +223,7 @@ void add_fitting_bindings(py::module_& m) {
             [m](CallControl& control) {
               const Measured measured = m.measure(control, true);
               const double length = bounding_box_diagonal(m.points);
-              return std::pair(summarise_distances(measured.distances, length > 0 ? length : 1.0),
+              return std::pair(summarise_distances(measured.distances, length),
                                summarise_angles(measured.normal_angles));
             },
             py::none(), false);

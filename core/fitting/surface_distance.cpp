@@ -143,12 +143,19 @@ DistanceSummary summarise_distances(std::vector<double> distances, double length
 }
 
 std::string describe(const DistanceSummary& s) {
-  char text[256];
-  std::snprintf(text, sizeof text,
-                "rms %.6g (%.3e of the diagonal)\n99th percentile %.6g (%.3e of the diagonal)\n"
-                "max %.6g (%.3e of the diagonal)\n",
-                s.rms, s.relative_rms(), s.percentile_99, s.relative_percentile_99(), s.max, s.relative_max());
-  return text;
+  std::string out;
+  const auto line = [&](const char* name, double distance) {
+    char text[96];
+    if (s.length > 0)
+      std::snprintf(text, sizeof text, "%s %.6g (%.3e of the diagonal)\n", name, distance, s.relative(distance));
+    else
+      std::snprintf(text, sizeof text, "%s %.6g (the points measured span no length)\n", name, distance);
+    out += text;
+  };
+  line("rms", s.rms);
+  line("99th percentile", s.percentile_99);
+  line("max", s.max);
+  return out;
 }
 
 double bounding_box_diagonal(const std::vector<Vec3>& points) {
@@ -162,7 +169,7 @@ std::vector<Vec3> vertex_means(const CovarianceMesh& mesh) { return mesh.means()
 
 DistanceSummary distances_to_surface(const std::vector<Vec3>& points, const TriangleMesh& surface) {
   const double diagonal = bounding_box_diagonal(points);
-  return summarise_distances(SurfaceDistance(surface).distances(points), diagonal > 0 ? diagonal : 1.0);
+  return summarise_distances(SurfaceDistance(surface).distances(points), diagonal);
 }
 
 }  // namespace gps

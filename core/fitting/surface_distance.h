@@ -60,16 +60,18 @@ private:
 struct DistanceSummary {
   size_t count = 0;
   double rms = 0, percentile_99 = 0, max = 0;
-  double length = 1;  // what the relative figures divide by
-  double relative_rms() const { return rms / length; }
-  double relative_percentile_99() const { return percentile_99 / length; }
-  double relative_max() const { return max / length; }
+  double length = 1;  // what the relative figures divide by; 0: points that span no length, NaN figures
+  double relative_rms() const { return relative(rms); }
+  double relative_percentile_99() const { return relative(percentile_99); }
+  double relative_max() const { return relative(max); }
+  double relative(double distance) const { return length > 0 ? distance / length : std::nan(""); }
 };
 
-/// Three lines (rms, 99th percentile, max), each the distance and its ratio to the length.
+/// Three lines (rms, 99th percentile, max), each the distance and its ratio to the length (none where
+/// the length is 0).
 std::string describe(const DistanceSummary& summary);
 
-/// rms, 99th percentile (nearest rank) and maximum of `distances`, relative to `length` (> 0).
+/// rms, 99th percentile (nearest rank) and maximum of `distances`, relative to `length` (0: none).
 DistanceSummary summarise_distances(std::vector<double> distances, double length);
 
 /// Axis-aligned bounding-box diagonal of points (0 for none).

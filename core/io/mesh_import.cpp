@@ -5,6 +5,8 @@
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <map>
 #include <cstring>
 #include <numeric>
 #include <sstream>
@@ -21,13 +23,12 @@ namespace gps {
 
 namespace {
 
-// `source` is already as messages show it (escaped). A mesh of vertices only is refused before its
-// arrays are built, with read_mesh's message.
+// `source` is already as messages show it (escaped). A soup of vertices only is a set of points
+// (compare and fit read one); a mesh refuses it (mesh_of_soup, read_mesh).
 PolygonSoup plain_soup(std::vector<Vec3>&& points, PolygonTopology&& faces, const std::string& source) {
   for (size_t i = 0; i < points.size(); ++i)
     if (const std::string why = position_problem(points[i]); !why.empty())
       throw Error(source + ": vertex " + std::to_string(i) + " " + why);
-  if (faces.n_faces() == 0) throw Error(source + ": the mesh has no faces");
   PolygonSoup soup;
   soup.positions = std::move(points);
   soup.faces = std::move(faces);
@@ -118,6 +119,9 @@ void read_sharp_tag(std::string_view line, int number, const std::string& at, Sh
       throw Error(at + what + " sharpness " + std::string(word) + " " + why);
     tags.values.push_back(x);
   }
+  for (long long k = 0; k < n[2]; ++k) next();  // a crease or corner has no strings: read past
+  if (const std::string_view extra = next_word(line); !extra.empty() && extra[0] != '#')
+    throw Error(at + "the " + what + " tag has more values than its counts say (" + quoted_token(extra) + ")");
   tags.lines.push_back(tag);
 }
 
@@ -251,6 +255,41 @@ CovarianceMesh parse_stl(std::string data, const std::string& source) {
   return mesh_of_soup(parse_stl_soup(std::move(data), source), escaped(source));
 }
 
+// Keywords that name groups, objects, smoothing groups and materials: how a surface is organised or
+// looks, nothing of its shape.
+bool is_obj_grouping_keyword(std::string_view keyword) {
+  static constexpr std::string_view kGrouping[] = {"o", "g", "s", "mg", "usemtl", "mtllib", "maplib", "usemap",
+                                                   "lod", "shadow_obj", "trace_obj", "bevel", "c_interp", "d_interp"};
+  return std::find(std::begin(kGrouping), std::end(kGrouping), keyword) != std::end(kGrouping);
+}
+
+// A face corner's texture coordinate and normal (v/vt, v//vn, v/vt/vn): each an index, from 1 or
+// negative from the last read, of those read so far, or left out; throws naming the corner otherwise.
+template <class At>
+void check_obj_corner_references(std::string_view corner, size_t n_texture, size_t n_normals, const At& at) {
+  const size_t first = corner.find('/');
+  if (first == std::string_view::npos) return;
+  std::string_view parts[2] = {corner.substr(first + 1), {}};
+  if (const size_t second = parts[0].find('/'); second != std::string_view::npos) {
+    parts[1] = parts[0].substr(second + 1);
+    parts[0] = parts[0].substr(0, second);
+    if (parts[1].find('/') != std::string_view::npos)
+      throw Error(at() + quoted_token(corner) + " is not a face corner (v, v/vt, v//vn or v/vt/vn)");
+  }
+  for (int k = 0; k < 2; ++k) {
+    if (parts[k].empty()) continue;
+    const char* what = k == 0 ? "texture coordinate" : "normal";
+    const size_t count = k == 0 ? n_texture : n_normals;
+    long long index = 0;
+    if (!parse_int(parts[k], index))
+      throw Error(at() + quoted_token(corner) + ": " + quoted_token(parts[k]) + " is not a " + what + " index");
+    const long long resolved = index < 0 ? index + (long long)count + 1 : index;
+    if (resolved < 1 || resolved > (long long)count)
+      throw Error(at() + quoted_token(corner) + ": " + what + " index " + std::to_string(index) + " is out of range (" +
+                  std::to_string(count) + " so far)");
+  }
+}
+
 PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   const std::string source = escaped(source_path);
   if (data.empty()) throw Error(source + ": the file is empty");
@@ -272,6 +311,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   faces.verts.reserve(n_corners);
   SharpTags tags;
   DroppedAttributes dropped;
+  std::map<std::string, size_t> unread;  // keyword -> records of a kind a covariance mesh does not hold
   for (ObjLines lines(data); !lines.done(); lines.next()) {
     std::string_view line = lines.line();
     const auto at = [&] { return source + ": line " + std::to_string(lines.number()) + ": "; };
@@ -290,18 +330,28 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
       // What may follow: a weight, or a colour as MeshLab writes it (numbers, dropped), or a comment.
       int extras = 0;
       for (std::string_view extra = next_word(line); !extra.empty() && extra[0] != '#'; extra = next_word(line)) {
-        double ignored = 0;
-        if (!parse_number(extra, ignored).empty())
-          throw Error(at() + quoted_token(extra) +
-                      " after the vertex's coordinates is not a number (a weight or a colour)");
+        double value = 0;
+        const std::string why = parse_number(extra, value);
+        if (!why.empty() || !std::isfinite(value))
+          throw Error(at() + (why.empty() ? quoted_token(extra) + " is not a finite number" : why) +
+                      " (after the vertex's coordinates: a weight or a colour)");
         ++extras;
       }
       if (extras >= 3) ++dropped.colours;
       points.push_back(p);
-    } else if (keyword == "vt") {
-      ++dropped.texture_coordinates;
-    } else if (keyword == "vn") {
-      ++dropped.normals;
+    } else if (keyword == "vt" || keyword == "vn") {
+      // Dropped, but read as the faces refer to them: u [v [w]] and x y z, numbers.
+      const bool texture = keyword == "vt";
+      int values = 0;
+      for (std::string_view word = next_word(line); !word.empty() && word[0] != '#'; word = next_word(line), ++values) {
+        double value = 0;
+        if (const std::string why = parse_number(word, value); !why.empty()) throw Error(at() + why);
+      }
+      if (texture ? values < 1 || values > 3 : values != 3)
+        throw Error(at() + (texture ? "a texture coordinate needs 1 to 3 numbers (u v w), got "
+                                    : "a normal needs 3 numbers (x y z), got ") +
+                    std::to_string(values));
+      ++(texture ? dropped.texture_coordinates : dropped.normals);
     } else if (keyword == "t") {
       read_sharp_tag(line, lines.number(), at(), tags);
     } else if (keyword == "f") {
@@ -310,6 +360,7 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
         long long index = 0;
         if (!parse_int(word.substr(0, word.find('/')), index))
           throw Error(at() + quoted_token(word) + " is not a vertex index");
+        check_obj_corner_references(word, dropped.texture_coordinates, dropped.normals, at);
         const long long written = index;
         if (index < 0) index += (long long)points.size() + 1;  // relative to the end
         if (index < 1 || index > (long long)points.size())
@@ -328,6 +379,11 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
                      obj_element_names([&data] { return data; }));
         throw Error(source + ": the mesh is not manifold");  // not reached: the check above throws
       }
+    } else if (!is_obj_grouping_keyword(keyword)) {
+      if (const auto it = unread.find(std::string(keyword)); it != unread.end())
+        ++it->second;
+      else if (unread.size() < kNamesListed)
+        unread.emplace(keyword, 1);
     }
   }
   if (points.empty()) throw Error(source + ": no vertices");
@@ -335,6 +391,8 @@ PolygonSoup parse_obj_soup(std::string data, const std::string& source_path) {
   PolygonSoup soup = plain_soup(std::move(points), std::move(faces), source);
   soup.sharpness = sharpness_of_tags(tags, soup, source, soup.notes);
   if (!tags.skipped.empty()) dropped.other.push_back(named_list("the tag", "the tags", tags.skipped));
+  for (const auto& [keyword, count] : unread)
+    dropped.other.push_back(std::to_string(count) + " " + quoted_token(keyword) + (count == 1 ? " record" : " records"));
   if (std::string note = dropped_attributes_note(source, dropped); !note.empty()) soup.notes.push_back(std::move(note));
   return soup;
 }
@@ -398,7 +456,11 @@ PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {
   size_t vertices_with_more = 0, faces_with_more = 0;
   const auto skip_rest = [&](int line, size_t& count) {
     count += !t.done() && t.line() == line;
-    t.skip_line(line);
+    for (; !t.done() && t.line() == line; t.next()) {
+      double value = 0;
+      if (const std::string why = parse_number(t.word(), value); !why.empty())
+        throw Error(at(line) + why + " (the values after a vertex's position or a face's corners are numbers)");
+    }
   };
   // Arrays grow as records arrive (never sized from the header): memory follows what the file holds.
   std::vector<Vec3> points;
@@ -422,7 +484,7 @@ PolygonSoup parse_off_soup(std::string data, const std::string& source_path) {
       const long long index = next_int("vertex index");
       if (index >= nv)
         throw Error(at(line) + "face " + std::to_string(f) + " refers to vertex " + std::to_string(index) +
-                    ", but there are " + std::to_string(nv));
+                    ", but there are " + std::to_string(nv) + " vertices");
       faces.verts.push_back(int(index));
     }
     faces.offsets.push_back(int(faces.verts.size()));

@@ -58,6 +58,14 @@ struct Element {
   int header_line = 0;
 };
 
+// What is wrong with a record's reference to vertex `index` (", which is not a whole number", ", but
+// there are N vertices"), or "".
+std::string vertex_reference_problem(double index, size_t vertex_count) {
+  if (index != std::floor(index)) return ", which is not a whole number";
+  if (!(index >= 0 && index < double(vertex_count))) return ", but there are " + std::to_string(vertex_count) + " vertices";
+  return "";
+}
+
 // Reads the body of the file, value by value, in either encoding.
 class BodyReader {
 public:
@@ -87,6 +95,14 @@ public:
       double value = 0;
       if (const std::string why = parse_number(tok, value); !why.empty())
         fail("line " + std::to_string(line_) + ": " + why);
+      if (!t.is_float) {  // an integer property holds what its binary form could
+        const double bits = 8.0 * t.size, low = t.is_signed ? -std::exp2(bits - 1) : 0.0;
+        const double high = (t.is_signed ? std::exp2(bits - 1) : std::exp2(bits)) - 1;
+        if (value != std::floor(value) || value < low || value > high)
+          fail("line " + std::to_string(line_) + ": " + quoted_token(tok) + " is not " +
+               (t.is_signed ? "an integer" : "a non-negative integer") + " of " + std::to_string(t.size * 8) +
+               " bits, as its property is declared");
+      }
       return value;
     }
     if (pos_ + size_t(t.size) > data_.size()) fail("the binary data ends early (truncated)");
@@ -334,6 +350,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
   std::vector<Vec3> means;
   std::vector<Mat3> covariances;
   DroppedAttributes dropped;  // what the vertex element holds that the mesh does not keep
+  std::vector<std::string> unread_elements;  // elements of other kinds, read past
   PolygonTopology faces;
   bool has_covariances = false;
   std::vector<double> corners;        // per vertex, where the vertex element has a corner property
@@ -433,12 +450,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
           for (size_t i = 0; i < n; ++i) {
             const double index = body.read(p.type);
             if (int(k) != list) continue;
-            if (index != std::floor(index))
-              fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + number_as_read(index) +
-                   ", which is not a whole number");
-            if (!(index >= 0 && index < double(vertex_count)))
-              fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + number_as_read(index) +
-                   ", but there are " + std::to_string(vertex_count) + " vertices");
+            if (const std::string why = vertex_reference_problem(index, vertex_count); !why.empty())
+              fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + number_as_read(index) + why);
             faces.verts.push_back(int(index));
           }
         }
@@ -459,9 +472,8 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
         int ends[2];
         for (int k = 0; k < 2; ++k) {
           const double index = values[size_t(k == 0 ? i1 : i2)];
-          if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
-            fail(body.where() + "edge " + std::to_string(r) + " refers to vertex " + number_as_read(index) +
-                 ", but there are " + std::to_string(vertex_count) + " vertices");
+          if (const std::string why = vertex_reference_problem(index, vertex_count); !why.empty())
+            fail(body.where() + "edge " + std::to_string(r) + " refers to vertex " + number_as_read(index) + why);
           ends[k] = int(index);
         }
         const auto named = [&] { return edge_record_name(r, ends[0], ends[1]); };
@@ -503,15 +515,17 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
               strip.clear();
               continue;
             }
-            if (!(index >= 0 && index < double(vertex_count)) || index != std::floor(index))
-              fail(body.where() + "strip " + std::to_string(r) + " refers to vertex " + number_as_read(index) +
-                   ", but there are " + std::to_string(vertex_count) + " vertices");
+            if (const std::string why = vertex_reference_problem(index, vertex_count); !why.empty())
+              fail(body.where() + "strip " + std::to_string(r) + " refers to vertex " + number_as_read(index) + why);
             strip.push_back(int(index));
           }
         }
         body.end_record();
       }
     } else {
+      if (e.count > 0)
+        unread_elements.push_back(quoted_token(e.name) + " (" + std::to_string(e.count) +
+                                  (e.count == 1 ? " record)" : " records)"));
       if (e.properties.empty() && *format != Format::ascii) continue;  // empty binary records: nothing to skip
       for (size_t r = 0; r < e.count; ++r) {
         body.begin_record();
@@ -525,6 +539,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
   }
   body.check_end();
   if (release) std::string().swap(*release);
+  if (!unread_elements.empty()) dropped.other.push_back(named_list("element", "elements", unread_elements));
   std::vector<std::string> notes;
   Sharpness sharpness =
       sharpness_of(creases, faces, fail, [&](const std::string& what) { notes.push_back(shown_source + ": " + what); });

@@ -58,6 +58,7 @@ inline bool exceeds_manifold_corners(size_t corners, size_t n_vertices) {
 /// The CovarianceMesh of a soup, its arrays taken over (make_covariance_mesh: throws gps::Error naming
 /// `source` and the face or vertex, as `names` names it, where the topology is not a manifold polygon mesh).
 inline CovarianceMesh mesh_of_soup(PolygonSoup&& soup, const std::string& source, const ElementNames& names = {}) {
+  if (soup.faces.n_faces() == 0) throw Error(source + ": the mesh has no faces");
   CovarianceMesh mesh = make_covariance_mesh(std::move(soup.positions), std::move(soup.covariances),
                                              std::move(soup.faces), source, names);
   mesh.sharpness = std::move(soup.sharpness);

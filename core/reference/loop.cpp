@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "core/support/error.h"
+#include "core/mesh/element_names.h"
 #include "core/mesh/linalg.h"
 #include "core/reference/crease_rules.h"
 #include "core/reference/vertex_mask.h"
@@ -23,8 +24,8 @@ PolygonTopology loop_topology(const PolygonTopology& t, const MeshConnectivity& 
   out.verts.reserve(12 * size_t(t.n_faces()));
   for (int f = 0; f < t.n_faces(); ++f) {
     if (t.face_size(f) != 3)
-      throw Error("Loop subdivision needs a triangle mesh, but face " + std::to_string(f) + " has " +
-                  std::to_string(t.face_size(f)) + " vertices");
+      throw ElementError(ElementError::Element::face, f, "Loop subdivision needs a triangle mesh, but ",
+                         " has " + std::to_string(t.face_size(f)) + " vertices");
     const int o = t.offsets[size_t(f)];
     const int e[3] = {t.n_vertices + c.face_edges[size_t(o)], t.n_vertices + c.face_edges[size_t(o + 1)],
                       t.n_vertices + c.face_edges[size_t(o + 2)]};
