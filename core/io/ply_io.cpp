@@ -88,14 +88,16 @@ public:
     }
   }
 
-  double read(const ScalarType& t) {
+  // One value; an ASCII integer held to its declared type unless the caller checks it (`by_caller`:
+  // a list length, a vertex index), naming it better.
+  double read(const ScalarType& t, bool by_caller = false) {
     if (format_ == Format::ascii) {
       if (token_index_ >= tokens_.size()) fail("line " + std::to_string(line_) + ": too few values");
       const std::string_view tok = tokens_[token_index_++];
       double value = 0;
       if (const std::string why = parse_number(tok, value); !why.empty())
         fail("line " + std::to_string(line_) + ": " + why);
-      if (!t.is_float) {  // an integer property holds what its binary form could
+      if (!t.is_float && !by_caller) {  // an integer property holds what its binary form could
         const double bits = 8.0 * t.size, low = t.is_signed ? -std::exp2(bits - 1) : 0.0;
         const double high = (t.is_signed ? std::exp2(bits - 1) : std::exp2(bits)) - 1;
         if (value != std::floor(value) || value < low || value > high)
@@ -125,10 +127,12 @@ public:
   // two characters per ASCII value), so a corrupt count can neither overflow nor run for long.
   // `element` and `record` name the record in a refusal ("face 3: list length -4 …").
   size_t read_count(const ScalarType& t, const std::string& element, size_t record) {
-    const double n = read(t);
+    const double n = read(t, true);
     const size_t limit = format_ == Format::ascii ? tokens_.size() - token_index_ : remaining();
     const auto at = [&] { return where() + element + " " + std::to_string(record) + ": list length "; };
     if (!(n >= 0) || n != std::floor(n)) fail(at() + number_as_read(n) + " is not a count");
+    if (!t.is_float && n >= std::exp2(8.0 * t.size - (t.is_signed ? 1 : 0)))
+      fail(at() + number_as_read(n) + " is more than its " + std::to_string(8 * t.size) + "-bit count type holds");
     if (n > double(limit))
       fail(at() + number_as_read(n) +
            (format_ == Format::ascii ? " exceeds the values on the line" : " exceeds the data left (truncated)"));
@@ -448,7 +452,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
             fail(body.where() + "face " + std::to_string(f) + " has " + std::to_string(n) +
                  " vertices (at least 3 needed)");
           for (size_t i = 0; i < n; ++i) {
-            const double index = body.read(p.type);
+            const double index = body.read(p.type, true);
             if (int(k) != list) continue;
             if (const std::string why = vertex_reference_problem(index, vertex_count); !why.empty())
               fail(body.where() + "face " + std::to_string(f) + " refers to vertex " + number_as_read(index) + why);
@@ -502,7 +506,7 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
           const size_t n = p.is_list ? body.read_count(p.count_type, e.name, r) : 1;
           strip.clear();
           for (size_t i = 0; i <= n; ++i) {
-            const double index = i < n ? body.read(p.type) : -1;  // the record's end closes the last run
+            const double index = i < n ? body.read(p.type, true) : -1;  // the record's end closes the last run
             if (int(k) != list) continue;
             if (index == -1) {
               for (size_t t = 0; t + 2 < strip.size(); ++t) {

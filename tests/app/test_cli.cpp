@@ -297,6 +297,16 @@ TEST(Cli, ACovarianceMeshWithoutFacesIsRefused) {
 // command that is not one, an option before any command, an option the command does not have (not
 // "file is required"), and an option given twice. A value that looks like an option (a negative
 // number after an option that takes one) is still the option's value.
+// Work on a mesh read from OBJ names its faces as the file does: from 1, with the line.
+TEST(Cli, ALoopSubdivisionOfQuadsNamesTheFaceAsTheFileNumbersIt) {
+  test::TempDir dir;
+  const std::string obj = dir.write("quad.obj", "# a quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  const auto r = run_command(gpsurf("subdivide " + obj + " -o " + dir.file("x.ply") + " --scheme loop"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.output,
+            "gpsurf: " + obj + ": Loop subdivision needs a triangle mesh, but face 1 (line 6) has 4 vertices\n");
+}
+
 TEST(Cli, UnknownWordsAreNamedFirst) {
   test::TempDir dir;
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{

@@ -147,6 +147,25 @@ TEST(CompareCli, ANonManifoldFirstMeshIsMeasuredAsItsPoints) {
   EXPECT_EQ(repaired.output.find("repair: " + a), std::string::npos) << repaired.output;
 }
 
+// A file of vertices alone, in any format, is points to measure; points at one place span no length,
+// so their distances have no figure relative to it.
+TEST(CompareCli, PointCloudsOfEveryFormatAreMeasured) {
+  test::TempDir dir;
+  const std::string b = dir.write("b.obj", flat_grid_obj(4, 1, 0, 0));
+  const std::string obj = dir.write("cloud.obj", "v 1 1 0.25\nv 2 2 0.25\nv 3 1 0.25\n");
+  const std::string off = dir.write("cloud.off", "OFF\n3 0 0\n1 1 0.25\n2 2 0.25\n3 1 0.25\n");
+  for (const std::string& a : {obj, off}) {
+    const auto r = run_command(gpsurf("compare " + a + " " + b));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("(3 vertices) to the limit surface of"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("\nrms 0.25 ("), std::string::npos) << r.output;
+  }
+  const std::string one = dir.write("one.obj", "v 2 2 0.25\nv 2 2 0.25\nv 2 2 0.25\nf 1 2 3\n");
+  const auto r = run_command(gpsurf("compare " + one + " " + b));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("\nrms 0.25 (the points measured span no length)\n"), std::string::npos) << r.output;
+}
+
 TEST(CompareCli, UsageAndRuntimeErrorsAreOneLine) {
   test::TempDir dir;
   const std::string a = dir.write("a.obj", flat_grid_obj(2, 1, 0, 0));

@@ -64,7 +64,7 @@ TEST(MeshImport, ObjVertexTrailingWordsAreNumbersOrRefused) {
   EXPECT_EQ(m.n_vertices(), 3u);
   EXPECT_EQ(m.mean(1), Vec3(1, 0, 0));
   EXPECT_EQ(error_of([] { parse_obj("v 0 0 0\nv 1 0 0 xyz\nv 0 1 0\nf 1 2 3\n", "b.obj"); }),
-            "b.obj: line 2: 'xyz' after the vertex's coordinates is not a number (a weight or a colour)");
+            "b.obj: line 2: 'xyz' is not a number (after the vertex's coordinates: a weight or a colour)");
 }
 
 TEST(MeshImport, OffWithCommentsAndColours) {

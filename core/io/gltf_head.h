@@ -1,0 +1,29 @@
+#pragma once
+// The top of a glTF file's JSON, read before tinygltf reads the file: its version, the extensions it
+// requires (its "extensionsRequired", glTF 2.0 §3.12: a reader must refuse a file that needs one it does
+// not know, rather than read it wrong) and the files its buffers name.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gps {
+
+/// Whether gpsurf's glTF reader reads files that require extension `name`: KHR_mesh_quantization (integer
+/// positions), and the extensions that change only how a surface looks (materials, textures, lights),
+/// which it does not read at all.
+bool reads_gltf_extension(std::string_view name);
+
+struct GltfHead {
+  std::vector<std::string> buffer_uris;  // the buffers' uris that name files (not data: URIs), as written
+};
+
+/// The head of the glTF JSON `json_text`. Throws gps::Error, without the file's name, for a version
+/// other than 2.x, for the first extension the file requires and gpsurf does not read (naming it, and
+/// what to do where it is a compression), and for JSON nested deeper than kMaxJsonDepth. Text that is
+/// not valid JSON passes: the reader refuses it with its own words.
+GltfHead read_gltf_head(std::string_view json_text);
+
+/// A uri's path as RFC 3986 decodes it: %XX escapes only ('+' stays a plus).
+std::string uri_decoded(std::string_view uri);
+
+}  // namespace gps
