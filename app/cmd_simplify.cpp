@@ -83,7 +83,8 @@ void add_simplify_command(CLI::App& app) {
                         " keeps fewer than 4 of its " + std::to_string(input.n_vertices()) + " vertices");
     TerminalProgress progress("simplifying", args->quiet);
     options.progress = progress.report();
-    SimplifiedMesh s = naming_input(args->input, [&] { return simplify_mesh(input, options); });
+    SimplifiedMesh s = naming_mesh_input(args->input, args->repair.import_options().repair,
+                                         [&] { return simplify_mesh(input, options); });
     progress.finish();
     std::optional<LimitPlacement> placed;
     if (args->limit) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <unordered_set>
 #include <string>
 #include <vector>
 
@@ -10,9 +12,11 @@
 // QuadricT.hh uses vector_traits without including it.
 #include <OpenMesh/Core/Utils/vector_traits.hh>
 #include <OpenMesh/Core/Geometry/QuadricT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 
 #include "core/fitting/halfedge_collapse.h"
 #include "core/fitting/triangle_pairing.h"
+#include "core/mesh/element_names.h"
 #include "core/support/error.h"
 
 namespace gps {
@@ -64,15 +68,39 @@ CollapseMesh triangles_of(const CovarianceMesh& input, bool& triangulated, doubl
   t.reserve(input.n_vertices(), input.n_edges(), input.n_faces());
   for (const Vec3& mean : input.means()) t.add_vertex(to_point((mean - centre) / scale));
   triangulated = false;
+  // OpenMesh writes a refused face to its error stream ("complex edge"): the refusal below says it.
+  static const bool quiet = (omerr().disable(), true);
+  (void)quiet;
   std::vector<CollapseMesh::VertexHandle> corners;
+  std::unordered_set<uint64_t> diagonals;  // the fans' diagonals so far, by their ends
+  const auto key = [](int a, int b) { return uint64_t(uint32_t(std::min(a, b))) << 32 | uint32_t(std::max(a, b)); };
   for (size_t f = 0; f < input.n_faces(); ++f) {
+    const std::span<const int> c = input.face(f);
+    const size_t n = c.size();
+    triangulated = triangulated || n > 3;
+    // The fan's apex: the first corner whose diagonals are neither edges of the mesh nor diagonals of
+    // faces fanned before (either would put a third triangle on an edge), as a triangle lying on two
+    // edges of a quad beside it asks.
+    size_t apex = 0;
+    const auto free = [&](size_t a) {
+      for (size_t k = 2; k + 1 < n; ++k) {
+        const int u = c[a], w = c[(a + k) % n];
+        if (input.find_edge(u, w) >= 0 || diagonals.count(key(u, w))) return false;
+      }
+      return true;
+    };
+    while (apex < n && !free(apex)) ++apex;
+    if (apex == n)
+      throw ElementError(ElementError::Element::face, int(f), "",
+                         ": no fan of it into triangles keeps every edge between two faces (its corners are joined "
+                         "by edges of the mesh across it); split it into triangles first");
     corners.clear();
-    for (const int v : input.face(f)) corners.push_back(CollapseMesh::VertexHandle(v));
-    triangulated = triangulated || corners.size() > 3;
-    for (size_t k = 1; k + 1 < corners.size(); ++k)
+    for (size_t k = 0; k < n; ++k) corners.push_back(CollapseMesh::VertexHandle(c[(apex + k) % n]));
+    for (size_t k = 2; k + 1 < n; ++k) diagonals.insert(key(c[apex], c[(apex + k) % n]));
+    for (size_t k = 1; k + 1 < n; ++k)
       if (!t.add_face(corners[0], corners[k], corners[k + 1]).is_valid())
-        throw Error("face " + std::to_string(f) +
-                    ": fanning the faces of more than 3 sides into triangles makes an edge of it non-manifold");
+        throw ElementError(ElementError::Element::face, int(f), "",
+                           ": fanning it into triangles makes an edge non-manifold; split it into triangles first");
   }
   return t;
 }

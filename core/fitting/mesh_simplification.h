@@ -33,12 +33,12 @@ struct SimplifiedMesh {
 /// of quadric error (Garland and Heckbert 1997, with boundary planes that keep the boundary's shape;
 /// near-ties to the collapse that makes the smaller region) until `options.target_vertices` remain
 /// or no collapse may be done without changing the topology (genus, boundary loops), making a face
-/// non-manifold, turning a face's normal by more than the limit or, with `max_error`, exceeding it. A coarse vertex keeps the position
-/// of the input vertex it is; its covariance comes from the input faces of its region, the input
+/// non-manifold, turning a face's normal by more than the limit or, with `max_error`, exceeding it. A coarse vertex
+/// keeps the position of the input vertex it is; its covariance comes from the input faces of its region, the input
 /// vertices collapsed into it (see the .cpp). The input's creases stay creases: a vertex on one
 /// collapses only along it, so the coarse creases follow the input's; its corners and the vertices
 /// where creases meet or end do not move. Throws gps::Error for a target below 4 vertices, or where
-/// the fans of faces of more sides would make an edge non-manifold; Cancelled when the progress
+/// a face of more sides has no corner to fan it from that keeps every edge manifold; Cancelled when the progress
 /// report asks it to stop.
 SimplifiedMesh simplify_mesh(const CovarianceMesh& input, const SimplifyOptions& options);
 

@@ -98,9 +98,10 @@ CovarianceMesh read_mesh_of_soup(PolygonSoup&& soup, bool has_covariances, const
     done = repair_polygon_soup(soup, repair_options_for(options));
     if (report) *report = done;
     if (soup.faces.n_faces() == 0)
-      throw no_faces(
-          " left after repair (each was degenerate, of zero area or a duplicate at this weld tolerance; "
-          "a smaller --weld keeps more)");
+      throw no_faces(options.weld_tolerance > 0
+                         ? " left after repair (each was degenerate, of zero area or a duplicate at this weld "
+                           "tolerance; a smaller --weld keeps more)"
+                         : " left after repair (each was degenerate, of zero area or a duplicate)");
   }
   // A refusal names the defect classes that cause it, as a diagnosis of the file finds them (read
   // again where none was given: only a refused file pays for it), and what --repair does; after a

@@ -193,6 +193,26 @@ TEST_F(EditorFirstView, AMeshTheRepairMendsReachesTheRepairDialog) {
   EXPECT_EQ(stats()["unsaved"], true);
 }
 
+// A cube torn open at a seam (vertex 9 repeats vertex 1; the top uses it) opens as read, and the same
+// dialog asks: Esc keeps it as read (9 vertices), Enter opens it repaired (8), as `info` promises.
+TEST_F(EditorFirstView, AMeshThatOpensTornIsOfferedRepaired) {
+  const std::string torn = dir_.write("torn.obj",
+                                      "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\n"
+                                      "v -1 1 1\nv -1 -1 -1\nf 1 4 3 2\nf 5 6 7 8\nf 9 2 6 5\nf 2 3 7 6\nf 3 4 8 7\n"
+                                      "f 4 1 5 8\n");
+  const auto kept = run(torn, test::Events().wait(2).key("escape").wait(2),
+                        "--screenshot " + artefact("torn_kept.png") + " --save " + dir_.file("kept.ply"));
+  ASSERT_EQ(kept.exit_code, 0) << kept.output;
+  EXPECT_EQ(stats()["mesh"], "torn.obj");
+  EXPECT_EQ(read_mesh(dir_.file("kept.ply")).n_vertices(), 9u);
+  const auto asked = run(torn, test::Events().wait(2), "--screenshot " + artefact("torn_dialog.png"));
+  ASSERT_EQ(asked.exit_code, 0) << asked.output;
+  const auto repaired = run(torn, test::Events().wait(2).key("enter").wait(3), "--save " + dir_.file("mended.ply"));
+  ASSERT_EQ(repaired.exit_code, 0) << repaired.output;
+  EXPECT_NE(repaired.output.find("repaired (unsaved)"), std::string::npos) << repaired.output;
+  EXPECT_EQ(read_mesh(dir_.file("mended.ply")).n_vertices(), 8u);
+}
+
 // A file that does not open and that no repair mends does not end an interactive session: the default
 // sample shows with the error in the status line. A run that must write a screenshot of it still
 // fails (exit 1, one line).

@@ -102,8 +102,9 @@ EditorApp::EditorApp(const EditorOptions& options)
       file_not_opened_ = *e;
       set_status(e->what(), true);
       if (findings.offered()) repair_prompt_.open(options.file, std::move(findings), e->what());
-    } else if (!remarks.empty()) {
-      set_status("opened " + document_.source_path() + remarks, false);
+    } else {
+      if (!remarks.empty()) set_status("opened " + document_.source_path() + remarks, false);
+      if (!options.import.repair) offer_repair_of_opened(options.file);
     }
   }
 }

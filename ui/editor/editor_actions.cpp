@@ -87,10 +87,18 @@ void EditorApp::report_unopened(const std::string& path, const Error& e) {
 
 void EditorApp::open_file(const std::string& path) {
   std::string remarks;
-  if (const std::optional<Error> e = try_open(path, false, remarks))
+  if (const std::optional<Error> e = try_open(path, false, remarks)) {
     report_unopened(path, *e);
-  else
-    set_status("opened " + document_.source_path() + remarks, false);
+    return;
+  }
+  set_status("opened " + document_.source_path() + remarks, false);
+  offer_repair_of_opened(path);
+}
+
+void EditorApp::offer_repair_of_opened(const std::string& path) {
+  // Opened as read, but torn apart by coincident vertices or spoilt by zero-area faces: asked too.
+  if (RepairFindings findings = repair_findings(path, options_.import); findings.offered())
+    repair_prompt_.open(path, std::move(findings), "", true);
 }
 
 void EditorApp::open_repaired(const std::string& path) {
@@ -107,7 +115,9 @@ void EditorApp::draw_repair_prompt() {
       open_repaired(repair_prompt_.path());
       break;
     case RepairPrompt::Answer::cancel:
-      set_status("not opened " + repair_prompt_.path() + "; kept " + document_.display_name(), false);
+      set_status(repair_prompt_.opened() ? "kept " + repair_prompt_.path() + " as read, unrepaired"
+                                         : "not opened " + repair_prompt_.path() + "; kept " + document_.display_name(),
+                 false);
       break;
     case RepairPrompt::Answer::none:
       break;

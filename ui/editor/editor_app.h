@@ -160,6 +160,8 @@ private:
   std::optional<Error> try_open(const std::string& path, bool repair, std::string& remarks);
   // A file that did not open: the error in the status line and, where the repair mends it, the dialog.
   void report_unopened(const std::string& path, const Error& e);
+  // A file that opened as read but holds what the repair mends: the dialog, Cancel keeping it as read.
+  void offer_repair_of_opened(const std::string& path);
   void open_file(const std::string& path);
   void open_repaired(const std::string& path);
   void draw_repair_prompt();

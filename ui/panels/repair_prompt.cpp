@@ -34,10 +34,11 @@ RepairFindings repair_findings(const std::string& path, const ImportOptions& opt
   return findings;
 }
 
-void RepairPrompt::open(const std::string& path, RepairFindings findings, const std::string& refusal) {
+void RepairPrompt::open(const std::string& path, RepairFindings findings, const std::string& refusal, bool opened) {
   path_ = path;
   findings_ = std::move(findings);
   refusal_ = refusal;
+  opened_ = opened;
   open_ = popup_requested_ = true;
 }
 
@@ -52,15 +53,21 @@ RepairPrompt::Answer RepairPrompt::draw() {
                           ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings))
     return Answer::none;
-  ImGui::Text("%s cannot be opened as it is:", std::filesystem::path(path_).filename().string().c_str());
-  for (const std::string& line : findings_.refused) ImGui::BulletText("%s", line.c_str());
-  if (findings_.refused.empty()) ImGui::BulletText("%s", refusal_.c_str());
+  const std::string name = std::filesystem::path(path_).filename().string();
+  if (opened_) {
+    ImGui::Text("%s opened as it is, but the repair would mend:", name.c_str());
+  } else {
+    ImGui::Text("%s cannot be opened as it is:", name.c_str());
+    for (const std::string& line : findings_.refused) ImGui::BulletText("%s", line.c_str());
+    if (findings_.refused.empty()) ImGui::BulletText("%s", refusal_.c_str());
+  }
   if (!findings_.others.empty()) {
-    ImGui::Text(findings_.refused.empty() ? "Repair mends:" : "Repair also mends:");
+    if (!opened_) ImGui::Text(findings_.refused.empty() ? "Repair mends:" : "Repair also mends:");
     for (const std::string& line : findings_.others) ImGui::BulletText("%s", line.c_str());
   }
   ImGui::Separator();
-  ImGui::Text("Repair opens the repaired mesh, unsaved; Cancel keeps the current mesh.");
+  ImGui::Text(opened_ ? "Repair opens the repaired mesh, unsaved; Cancel keeps the mesh as read."
+                      : "Repair opens the repaired mesh, unsaved; Cancel keeps the current mesh.");
   Answer answer = Answer::none;
   if (ImGui::Button("Repair") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) answer = Answer::repair;
   ImGui::SameLine();

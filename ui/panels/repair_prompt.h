@@ -1,7 +1,9 @@
 #pragma once
 // The dialog shown when a mesh opened or dropped on the editor does not open as read but would once
-// repaired (core/io/mesh_repair.h): what is wrong with it, class by class with counts and first
-// examples, and Repair (the repaired mesh, unsaved) or Cancel (the current mesh stays).
+// repaired (core/io/mesh_repair.h), or opens but holds what the repair mends (coincident vertices that
+// tear it apart, zero-area faces): what is wrong with it, class by class with counts and first
+// examples, and Repair (the repaired mesh, unsaved) or Cancel (the current mesh stays: the one before,
+// or the one just opened as read).
 #include <string>
 #include <vector>
 
@@ -24,9 +26,12 @@ class RepairPrompt {
 public:
   enum class Answer { none, repair, cancel };
   /// Asks about the mesh file at `path` (findings offered), which did not open for `refusal` (shown
-  /// where no class found refuses it, as a mesh whose Gaussians a zero-area face spoils).
-  void open(const std::string& path, RepairFindings findings, const std::string& refusal);
+  /// where no class found refuses it, as a mesh whose Gaussians a zero-area face spoils), or which
+  /// `opened` as read (refusal empty).
+  void open(const std::string& path, RepairFindings findings, const std::string& refusal, bool opened = false);
   bool is_open() const { return open_; }
+  /// Whether the mesh asked about opened as read (Cancel keeps it).
+  bool opened() const { return opened_; }
   const std::string& path() const { return path_; }
   /// Draws the dialog (Enter repairs, Esc cancels); the user's answer, once.
   Answer draw();
@@ -35,7 +40,7 @@ private:
   std::string path_;
   RepairFindings findings_;
   std::string refusal_;
-  bool open_ = false, popup_requested_ = false;
+  bool open_ = false, popup_requested_ = false, opened_ = false;
 };
 
 }  // namespace gps
