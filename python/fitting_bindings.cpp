@@ -245,7 +245,8 @@ void add_fitting_bindings(py::module_& m) {
       "As gpsurf compare: the distances from the points of `a` (a Mesh's vertices or an (n, 3) array) to the limit "
       "surface of `b` (a Mesh or Surface; linear=True: its faces) summarised as a dict: count, rms, percentile_99, "
       "max (absolute), length (the points' bounding-box diagonal) and relative_rms, relative_percentile_99, "
-      "relative_max (divided by it); and how far the normals turn: normal_count (the points with a normal: a Mesh's "
+      "relative_max (divided by it; NaN where the points lie at one place); and how far the normals turn: normal_count "
+      "(the points with a normal: a Mesh's "
       "vertices on a face, area-weighted over them; an array's points have none), normal_rms_degrees and "
       "normal_max_degrees (the angles, as lines 0..90, between their normals and the surface's at the nearest point; "
       "NaN where no point has a normal).");

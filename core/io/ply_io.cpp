@@ -1,4 +1,5 @@
 #include "core/io/ply_io.h"
+#include "core/io/ply_scalar_type.h"
 
 #include <algorithm>
 #include <array>
@@ -26,29 +27,11 @@ namespace {
 
 enum class Format { ascii, binary_le, binary_be };
 
-struct ScalarType {
-  int size = 0;
-  bool is_float = false;
-  bool is_signed = false;
-};
-
-std::optional<ScalarType> scalar_type(std::string_view name) {
-  if (name == "char" || name == "int8") return ScalarType{1, false, true};
-  if (name == "uchar" || name == "uint8") return ScalarType{1, false, false};
-  if (name == "short" || name == "int16") return ScalarType{2, false, true};
-  if (name == "ushort" || name == "uint16") return ScalarType{2, false, false};
-  if (name == "int" || name == "int32") return ScalarType{4, false, true};
-  if (name == "uint" || name == "uint32") return ScalarType{4, false, false};
-  if (name == "float" || name == "float32") return ScalarType{4, true, true};
-  if (name == "double" || name == "float64") return ScalarType{8, true, true};
-  return std::nullopt;
-}
-
 struct Property {
   std::string name;
-  ScalarType type;
+  PlyScalarType type;
   bool is_list = false;
-  ScalarType count_type;
+  PlyScalarType count_type;
 };
 
 struct Element {
@@ -90,21 +73,16 @@ public:
 
   // One value; an ASCII integer held to its declared type unless the caller checks it (`by_caller`:
   // a list length, a vertex index), naming it better.
-  double read(const ScalarType& t, bool by_caller = false) {
+  double read(const PlyScalarType& t, bool by_caller = false) {
     if (format_ == Format::ascii) {
       if (token_index_ >= tokens_.size()) fail("line " + std::to_string(line_) + ": too few values");
       const std::string_view tok = tokens_[token_index_++];
       double value = 0;
       if (const std::string why = parse_number(tok, value); !why.empty())
         fail("line " + std::to_string(line_) + ": " + why);
-      if (!t.is_float && !by_caller) {  // an integer property holds what its binary form could
-        const double bits = 8.0 * t.size, low = t.is_signed ? -std::exp2(bits - 1) : 0.0;
-        const double high = (t.is_signed ? std::exp2(bits - 1) : std::exp2(bits)) - 1;
-        if (value != std::floor(value) || value < low || value > high)
-          fail("line " + std::to_string(line_) + ": " + quoted_token(tok) + " is not " +
-               (t.is_signed ? "an integer" : "a non-negative integer") + " of " + std::to_string(t.size * 8) +
-               " bits, as its property is declared");
-      }
+      if (!by_caller && !t.holds(value))
+        fail("line " + std::to_string(line_) + ": " + quoted_token(tok) + " is not " + t.what_it_holds() +
+             ", as its property is declared");
       return value;
     }
     if (pos_ + size_t(t.size) > data_.size()) fail("the binary data ends early (truncated)");
@@ -126,13 +104,12 @@ public:
   // A list length: a non-negative integer that fits in the data left (one byte per binary value,
   // two characters per ASCII value), so a corrupt count can neither overflow nor run for long.
   // `element` and `record` name the record in a refusal ("face 3: list length -4 …").
-  size_t read_count(const ScalarType& t, const std::string& element, size_t record) {
+  size_t read_count(const PlyScalarType& t, const std::string& element, size_t record) {
     const double n = read(t, true);
     const size_t limit = format_ == Format::ascii ? tokens_.size() - token_index_ : remaining();
     const auto at = [&] { return where() + element + " " + std::to_string(record) + ": list length "; };
     if (!(n >= 0) || n != std::floor(n)) fail(at() + number_as_read(n) + " is not a count");
-    if (!t.is_float && n >= std::exp2(8.0 * t.size - (t.is_signed ? 1 : 0)))
-      fail(at() + number_as_read(n) + " is more than its " + std::to_string(8 * t.size) + "-bit count type holds");
+    if (!t.holds(n)) fail(at() + number_as_read(n) + " is more than its count type holds (" + t.what_it_holds() + ")");
     if (n > double(limit))
       fail(at() + number_as_read(n) +
            (format_ == Format::ascii ? " exceeds the values on the line" : " exceeds the data left (truncated)"));
@@ -321,11 +298,11 @@ PolygonSoup ply_soup(const std::string& data, const std::string& source, bool& f
       if (elements.empty()) fail(at + "property before any element");
       Property prop;
       if (words.size() == 5 && words[1] == "list") {
-        const auto ct = scalar_type(words[2]), it = scalar_type(words[3]);
+        const auto ct = ply_scalar_type(words[2]), it = ply_scalar_type(words[3]);
         if (!ct || !it || ct->is_float) fail(at + "bad list property types");
         prop = {std::string(words[4]), *it, true, *ct};
       } else if (words.size() == 3) {
-        const auto t = scalar_type(words[1]);
+        const auto t = ply_scalar_type(words[1]);
         if (!t) fail(at + "unknown property type " + quoted_token(words[1]));
         prop = {std::string(words[2]), *t, false, {}};
       } else {

@@ -94,7 +94,7 @@ TEST(ReaderRecords, PlyIntegersHoldWhatTheirTypeCanAndOffValuesAreNumbers) {
                   "declared");
   EXPECT_EQ(
       error_of([&] { parse_ply_soup(head + "0 0 0 1\n1 0 0 0\n0 1 0 0\n259 0 1 2\n", "c.ply", has_covariances); }),
-      "c.ply: line 14: face 0: list length 259 is more than its 8-bit count type holds");
+      "c.ply: line 14: face 0: list length 259 is more than its count type holds (a non-negative integer of 8 bits)");
   EXPECT_EQ(error_of([] { parse_off_soup("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 2 1 junk\n", "j.off"); }),
             "j.off: line 6: 'junk' is not a number (the values after a vertex's position or a face's corners are "
             "numbers)");
