@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -65,17 +66,38 @@ GltfHead read_gltf_head(std::string_view json_text) {
   return head;
 }
 
+namespace {
+
+// A hex digit's value, or −1.
+int hex_value(char c) {
+  return c >= '0' && c <= '9'   ? c - '0'
+         : c >= 'a' && c <= 'f' ? c - 'a' + 10
+         : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                : -1;
+}
+
+}  // namespace
+
 std::string uri_decoded(std::string_view uri) {
-  const auto hex = [](char c) {
-    return c >= '0' && c <= '9'   ? c - '0'
-           : c >= 'a' && c <= 'f' ? c - 'a' + 10
-           : c >= 'A' && c <= 'F' ? c - 'A' + 10
-                                  : -1;
-  };
   std::string out;
   for (size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
-      out += char(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
+    if (uri[i] == '%' && i + 2 < uri.size() && hex_value(uri[i + 1]) >= 0 && hex_value(uri[i + 2]) >= 0) {
+      out += char(hex_value(uri[i + 1]) * 16 + hex_value(uri[i + 2]));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+std::string uri_form_decoded(std::string_view uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '+') {
+      out += ' ';
+    } else if (uri[i] == '%' && i + 2 < uri.size()) {  // any two characters, a digit that is none as 0
+      out += char(std::max(hex_value(uri[i + 1]), 0) * 16 + std::max(hex_value(uri[i + 2]), 0));
       i += 2;
     } else {
       out += uri[i];

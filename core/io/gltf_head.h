@@ -25,5 +25,7 @@ GltfHead read_gltf_head(std::string_view json_text);
 
 /// A uri's path as RFC 3986 decodes it: %XX escapes only ('+' stays a plus).
 std::string uri_decoded(std::string_view uri);
+/// The same as a web form decodes it, as tinygltf does: '+' a space, '%' and any two characters a byte.
+std::string uri_form_decoded(std::string_view uri);
 
 }  // namespace gps

@@ -285,9 +285,10 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
       if (!is_triangles(p)) continue;
       ++primitives;
       if (p.attributes.count(kCovarianceAttribute)) ++with_covariances;
-      const size_t n = position_bytes(p, where_of(instance.mesh, pi)).count;
+      const std::string where = where_of(instance.mesh, pi);
+      const size_t n = position_bytes(p, where).count;
       positions += double(n);
-      corners += double(p.indices >= 0 ? index_bytes(p, where_of(instance.mesh, pi)).count : n);
+      corners += double(p.indices >= 0 ? index_bytes(p, where).count : n);
     }
   }
   if (primitives == 0)

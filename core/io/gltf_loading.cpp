@@ -90,28 +90,6 @@ struct BufferFolder {
   bool holds(const std::string& path) const { return path.size() > folder.size() && path.starts_with(folder + "/"); }
 };
 
-// What tinygltf asks for where a buffer's uri is `uri`: its decoding ('+' a space, "%XX" a byte).
-std::string form_decoded(std::string_view uri) {
-  const auto hex = [](char c) {
-    return c >= '0' && c <= '9'   ? c - '0'
-           : c >= 'a' && c <= 'f' ? c - 'a' + 10
-           : c >= 'A' && c <= 'F' ? c - 'A' + 10
-                                  : 0;
-  };
-  std::string out;
-  for (size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '+') {
-      out += ' ';
-    } else if (uri[i] == '%' && i + 2 < uri.size()) {
-      out += char(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
-      i += 2;
-    } else {
-      out += uri[i];
-    }
-  }
-  return out;
-}
-
 // tinygltf reads a .gltf's buffer files through these: only regular files in the .gltf's folder (never
 // the working folder, where tinygltf looks next), no "~" expansion, nothing at all where the data came
 // without a folder.
@@ -230,7 +208,7 @@ tinygltf::Model load_gltf_model(const std::string& data, const std::string& base
   // The folder is passed as the callbacks' user data: none means no file is read.
   BufferFolder folder{base_dir, {}};
   for (const std::string& uri : head.buffer_uris)
-    if (const std::string asked = form_decoded(uri), named = uri_decoded(uri); asked != named)
+    if (const std::string asked = uri_form_decoded(uri), named = uri_decoded(uri); asked != named)
       folder.renamed[base_dir + "/" + asked] = base_dir + "/" + named;
   const auto load = [&](const std::string& file, std::string& err, std::string& warn) {
     tinygltf::TinyGLTF loader;

@@ -53,6 +53,7 @@ TEST(GltfFilesFromElsewhere, BufferFilesAreReadFromTheGltfsFolderOnlyByTheirUris
   EXPECT_EQ(read_mesh(gltf_naming(dir, "plus.gltf", "mesh+v2.bin", "mesh+v2.bin")).n_vertices(), 8u);
   EXPECT_EQ(read_mesh(gltf_naming(dir, "space.gltf", "my%20cube+1.bin", "my cube+1.bin")).n_vertices(), 8u);
   EXPECT_EQ(uri_decoded("a%2Bb+c%20d%zz%4"), "a+b+c d%zz%4");
+  EXPECT_EQ(uri_form_decoded("a%2Bb+c%20d"), "a+b c d");
 }
 
 TEST(GltfFilesFromElsewhere, ImagesThatCannotBeReadAreReadPastWithOneNote) {
