@@ -8,6 +8,9 @@ namespace gps {
 
 namespace {
 
+// How far in front of the nearest point the eye stays at least, as a share of the points' extent.
+constexpr double kEyeClearance = 0.1;
+
 // The camera's orthonormal frame: right, up and forward (from the eye to the target), which depend
 // on its angles and up axis alone.
 struct ViewAxes {
@@ -105,6 +108,9 @@ Camera frame_silhouette(const Camera& camera, const std::vector<glm::dvec3>& poi
     }
     depth = std::min(depth, (bound_high[k] + bound_low[k]) / (high - low));
   }
+  // The eye stays in front of the nearest point by a share of the points' extent: a silhouette seen
+  // end on (a needle's tip) would otherwise draw the eye onto the surface, where the near plane cuts it.
+  depth = std::min(depth, lo.z - kEyeClearance * glm::length(hi - lo));
   glm::dvec3 eye(0.0, 0.0, depth);
   for (int k = 0; k < 2; ++k) {
     const double high = mid[k] + half[k], low = mid[k] - half[k];

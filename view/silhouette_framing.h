@@ -19,7 +19,9 @@ NdcRect ndc_of_pixels(glm::vec2 window, glm::vec2 pixel_min, glm::vec2 pixel_max
 /// `camera` moved along and across its view direction (its angles, up axis, field of view and
 /// projection kept) so that the projections of `points` fill `region` of an image of width / height
 /// `aspect`, less `margin` (a fraction of the region's half-extent) at each side: the points touch
-/// both sides of the region along one axis and are centred along the other. The target lies at the
+/// both sides of the region along one axis and are centred along the other, unless that would bring
+/// the eye nearer the nearest point than a tenth of the points' extent (a needle seen end on): then the
+/// eye stays that far and the points are centred along both. The target lies at the
 /// depth of the points' bounding-box centre. `camera` unchanged for no points; points that all
 /// coincide keep its distance.
 Camera frame_silhouette(const Camera& camera, const std::vector<glm::dvec3>& points, double aspect,

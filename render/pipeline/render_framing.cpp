@@ -15,6 +15,14 @@ namespace {
 constexpr int kPatchesPerCapture = 8192;
 constexpr int kCornersOnlyPatches = 16384;
 float framing_level(int n_patches) { return n_patches <= 4096 ? 4.0f : 2.0f; }
+// Under perspective the surface nearest the eye is magnified: between the uniform samples it may
+// bulge far past them in the image. So the framed view is tessellated again, adaptively at this edge
+// length in pixels, and framed on those vertices too, until they fit (at most this many rounds).
+constexpr float kViewedFramingPixels = 2.0f;
+constexpr int kViewedFramingRounds = 4;
+// How far into the margin (of 5 %) those vertices may reach before the view is framed again, in
+// normalised device coordinates.
+constexpr double kViewedFit = 0.97;
 
 glm::dvec3 in_frame(const NormalisedFrame& frame, const Vec3& world) {
   return (glm::dvec3(world.x(), world.y(), world.z()) - frame.centre) / frame.unit;
@@ -70,7 +78,27 @@ Camera render_camera(SurfaceRenderer& renderer, const CovarianceMesh& mesh,
                       ? frame_box(box_lo, box_hi)
                       : frame_box(box_lo, box_hi, yaw_pitch_distance[0], yaw_pitch_distance[1]);
   camera.up_axis = up_axis;
-  camera = frame_silhouette(camera, framing_points(renderer, mesh, o), double(width) / double(std::max(1, height)));
+  const double aspect = double(width) / double(std::max(1, height));
+  std::vector<glm::dvec3> points = framing_points(renderer, mesh, o);
+  const Camera unframed = camera;
+  camera = frame_silhouette(unframed, points, aspect);
+  const int n_patches = renderer.tables().plans.n_patches();
+  if (!camera.orthographic && n_patches <= kCornersOnlyPatches) {
+    DrawOptions viewed;
+    viewed.pixels = kViewedFramingPixels;
+    for (int round = 0; round < kViewedFramingRounds; ++round) {
+      std::vector<glm::dvec3> seen;
+      for (const TessellatedVertex& v : renderer.capture_frame_vertices(camera, viewed, width, height))
+        if (std::isfinite(v.position[0] + v.position[1] + v.position[2]))
+          seen.emplace_back(v.position[0], v.position[1], v.position[2]);
+      const NdcRect bounds = projected_bounds(camera, seen, aspect);
+      if (glm::all(glm::greaterThanEqual(bounds.lo, glm::dvec2(-kViewedFit))) &&
+          glm::all(glm::lessThanEqual(bounds.hi, glm::dvec2(kViewedFit))))
+        break;
+      points.insert(points.end(), seen.begin(), seen.end());
+      camera = frame_silhouette(unframed, points, aspect);
+    }
+  }
   camera.target = frame.to_world(camera.target);
   camera.distance = float(double(camera.distance) * frame.unit);
   if (yaw_pitch_distance.size() > 2) camera.distance = yaw_pitch_distance[2];

@@ -78,6 +78,30 @@ TEST(SilhouetteFraming, SpansMoreThanTheBoundingSphereAndDrivesTheEditorsFraming
   expect_framed(home, points, 800.0 / 600.0, ndc_of_pixels({800, 600}, {100, 50}, {500, 550}), 0.05, "region");
 }
 
+// A needle seen end on: framed to fill the image the eye would sit on its tip. It stays a tenth of the
+// needle's length in front of it instead, the needle centred along both axes and inside the image.
+TEST(SilhouetteFraming, TheEyeStaysClearOfANeedleSeenEndOn) {
+  Camera camera;
+  const glm::dvec3 forward = -glm::normalize(camera.eye_offset());
+  const glm::dvec3 side = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
+  const double length = 2.0;
+  std::vector<glm::dvec3> points;
+  for (int i = 0; i <= 100; ++i) {
+    const double t = i / 100.0, radius = 0.01 * std::sqrt(t);  // from its tip near the eye
+    for (const double s : {-1.0, 1.0}) points.push_back(t * length * forward + s * radius * side);
+  }
+  const Camera framed = frame_silhouette(camera, points, 4.0 / 3.0);
+  const glm::dvec3 eye = framed.eye_double(), view = glm::normalize(framed.target - eye);
+  double nearest = length;
+  for (const glm::dvec3& p : points) nearest = std::min(nearest, glm::dot(p - eye, view));
+  EXPECT_GT(nearest, 0.099 * length);
+  const NdcRect b = projected_bounds(framed, points, 4.0 / 3.0);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_NEAR(b.lo[k] + b.hi[k], 0.0, 1e-6) << "axis " << k << " not centred";
+    EXPECT_LT(b.hi[k], 0.95 + 1e-6) << "axis " << k << " outside";
+  }
+}
+
 TEST(SilhouetteFraming, OnePointKeepsTheDistanceAndNoPointsKeepTheCamera) {
   Camera camera;
   camera.distance = 3.0f;
