@@ -122,8 +122,10 @@ TriangleMesh tessellate_triangles(const PatchPlans& plans, const std::vector<Dua
 
 }  // namespace
 
-TriangleMesh tessellate(const PatchPlans& plans, const std::vector<Dual>& points, int level,
-                        const ProgressReport& progress) {
+namespace {
+
+TriangleMesh tessellate_patches(const PatchPlans& plans, const std::vector<Dual>& points, int level,
+                                const ProgressReport& progress) {
   if (level < 1 || level > 64) throw usage_error("tessellation level must be 1..64, got " + std::to_string(level));
   check_output_size(tessellation_size(plans, level),
                     "tessellating " + std::to_string(plans.n_patches()) + " patches at level " + std::to_string(level),
@@ -204,6 +206,15 @@ TriangleMesh tessellate(const PatchPlans& plans, const std::vector<Dual>& points
           out.triangles.push_back({centre, outline[m], outline[(m + 1) % outline.size()]});
       }
   }
+  return out;
+}
+
+}  // namespace
+
+TriangleMesh tessellate(const PatchPlans& plans, const std::vector<Dual>& points, int level,
+                        const ProgressReport& progress) {
+  TriangleMesh out = tessellate_patches(plans, points, level, progress);
+  fill_missing_normals(out);  // where the surface has no tangent plane (a degenerate point)
   return out;
 }
 

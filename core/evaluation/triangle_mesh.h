@@ -20,7 +20,8 @@ struct PlacedTriangles {
   Vec3 origin = Vec3::Zero();
 };
 
-/// Gives each vertex whose normal is zero (none known there) the area-weighted normal of its triangles.
+/// Gives each vertex whose normal is zero (none known there) the area-weighted normal of its triangles
+/// (where they cancel, its largest triangle's; where all are degenerate, +z): every normal a unit one.
 void fill_missing_normals(TriangleMesh& mesh);
 
 /// Writes .ply (x y z nx ny nz; ASCII or binary little endian), .obj (v, vn, f v//vn) or .gltf/.glb

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <map>
 
+#include "core/mesh/inference.h"
 #include "core/support/error.h"
 #include "tests/support/plan_fixture.h"
 
@@ -45,6 +46,23 @@ TEST(Tessellator, OpenMeshKeepsItsBoundaryAndNormalsPointOutward) {
   for (size_t i = 0; i < c.positions.size(); ++i) EXPECT_GT(c.normals[i].dot(c.positions[i]), 0.0);
   EXPECT_THROW(tessellate(cube.tables.plans, cube.points, 0), Error);
   EXPECT_THROW(tessellate(cube.tables.plans, cube.points, 65), Error);
+}
+
+// A flat square twice, back to back, its centres two vertices in one place: Loop's limit surface has no
+// tangent plane where the sheets meet, and the vertices there take their triangles' normal. Every
+// normal written is a unit vector (glTF requires it).
+TEST(Tessellator, EveryNormalIsAUnitVectorWhereTheSurfaceHasNoTangentPlane) {
+  const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0}, {0.5, 0.5, 0}};
+  const std::vector<std::vector<int>> faces = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4},
+                                               {1, 0, 5}, {2, 1, 5}, {3, 2, 5}, {0, 3, 5}};
+  CovarianceMesh mesh = make_covariance_mesh(p, std::vector<Mat3>(p.size(), Mat3::Identity()), faces, "two sheets");
+  infer_covariances(mesh);
+  const test::PlannedMesh planned(mesh, PlanOptions{Scheme::loop});
+  for (const int level : {2, 5}) {
+    const TriangleMesh t = tessellate(planned.tables.plans, planned.points, level);
+    for (size_t i = 0; i < t.normals.size(); ++i)
+      EXPECT_NEAR(t.normals[i].norm(), 1.0, 1e-12) << "level " << level << " vertex " << i;
+  }
 }
 
 TEST(Tessellator, ReportsTheSharesOfPatchesDoneAndStopsWhenAsked) {
