@@ -85,18 +85,20 @@ void write_gltf_triangles(const std::string& path, const TriangleMesh& m, bool b
 
 void fill_missing_normals(TriangleMesh& mesh) {
   std::vector<Vec3> around(mesh.positions.size(), Vec3::Zero()), largest(mesh.positions.size(), Vec3::Zero());
+  std::vector<char> in_triangle(mesh.positions.size(), 0);
   for (const auto& t : mesh.triangles) {
     const Vec3& a = mesh.positions[size_t(t[0])];
     const Vec3 normal = (mesh.positions[size_t(t[1])] - a).cross(mesh.positions[size_t(t[2])] - a);  // twice the area
     for (const int i : t) {
       around[size_t(i)] += normal;
+      in_triangle[size_t(i)] = 1;
       if (normal.squaredNorm() > largest[size_t(i)].squaredNorm()) largest[size_t(i)] = normal;
     }
   }
   // Where the triangles' normals cancel (two sheets back to back), the largest triangle's; where every
   // triangle is degenerate too, any unit normal: a file's normals are unit vectors.
   for (size_t i = 0; i < mesh.normals.size(); ++i) {
-    if (!mesh.normals[i].isZero(0.0)) continue;
+    if (!mesh.normals[i].isZero(0.0) || !in_triangle[i]) continue;
     const Vec3& n = !around[i].isZero(0.0) ? around[i] : largest[i];
     mesh.normals[i] = n.isZero(0.0) ? Vec3::UnitZ() : n.normalized();
   }

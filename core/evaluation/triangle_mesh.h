@@ -21,7 +21,8 @@ struct PlacedTriangles {
 };
 
 /// Gives each vertex whose normal is zero (none known there) the area-weighted normal of its triangles
-/// (where they cancel, its largest triangle's; where all are degenerate, +z): every normal a unit one.
+/// (where they cancel, its largest triangle's; where all are degenerate, +z): a unit normal for every
+/// vertex of a triangle; a vertex in none keeps its zero (no normal).
 void fill_missing_normals(TriangleMesh& mesh);
 
 /// Writes .ply (x y z nx ny nz; ASCII or binary little endian), .obj (v, vn, f v//vn) or .gltf/.glb

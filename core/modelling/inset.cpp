@@ -5,7 +5,9 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 
+#include "core/mesh/dual_map.h"
 #include "core/support/error.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/operation_words.h"
@@ -14,14 +16,35 @@ namespace gps {
 
 namespace {
 
+// Per face of the region, read once: its Newell normal and the 9D average of its corners (its face
+// point's q). Every sector of a face reads them, so a face of n corners costs O(n), not O(n²).
+class FaceSums {
+public:
+  explicit FaceSums(const MeshArrays& a) : a_(a) {}
+  const std::pair<Vec3, Dual>& of(int f) {
+    const auto [it, added] = sums_.try_emplace(f);
+    if (added) {
+      const auto& face = a_.faces[size_t(f)];
+      Dual q = Dual::Zero();
+      for (int v : face) q += to_dual(a_.means[size_t(v)], a_.covariances[size_t(v)]);
+      it->second = {newell_normal(a_, f), q / double(face.size())};
+    }
+    return it->second;
+  }
+
+private:
+  const MeshArrays& a_;
+  std::unordered_map<int, std::pair<Vec3, Dual>> sums_;
+};
+
 /// The inner copy of a sector's vertex: moved along the bisector of its boundary edges so that the
 /// inner edges lie `thickness` inside, with the covariance of the 9D blend towards the fan's face points.
-Gaussian inner_copy(const MeshArrays& a, const FaceRegion::Sector& s, double thickness) {
+Gaussian inner_copy(const MeshArrays& a, FaceSums& sums, const FaceRegion::Sector& s, double thickness) {
   const std::string vertex = "vertex " + std::to_string(s.vertex);
   std::set<int> fan;
   for (const auto& [f, k] : s.corners) fan.insert(f);
   Vec3 normal = Vec3::Zero();
-  for (int f : fan) normal += newell_normal(a, f);
+  for (int f : fan) normal += sums.of(f).first;
   if (!(normal.norm() > 0)) throw Error("the faces at " + vertex + " have no normal to inset along");
   normal.normalize();
 
@@ -39,19 +62,19 @@ Gaussian inner_copy(const MeshArrays& a, const FaceRegion::Sector& s, double thi
   const Vec3 moved = p + bisector * (thickness / cos_half);
 
   // The 9D average of the fan's face points, and the fraction of the way to it the vertex moved.
-  std::vector<std::pair<int, double>> weights;
-  for (int f : fan) {
-    const auto& face = a.faces[size_t(f)];
-    for (int v : face) weights.emplace_back(v, 1.0 / double(fan.size() * face.size()));
-  }
-  const Vec3 centre = blend_gaussians(a, weights).mean;
-  const double t = (moved - p).norm() / (centre - p).norm();
+  Dual centre = Dual::Zero();
+  for (int f : fan) centre += sums.of(f).second;
+  centre /= double(fan.size());
+  const std::optional<Vec3> centre_mean = mean_from_dual(centre);
+  if (!centre_mean) throw Error("a new vertex would get a covariance that is not positive definite");
+  const double t = (moved - p).norm() / (*centre_mean - p).norm();
   if (!(t < 1))
     throw Error("a thickness of " + short_number(thickness) + " would carry " + vertex + " past the centre of face " +
                 std::to_string(*fan.begin()));
-  for (auto& [v, w_v] : weights) w_v *= t;
-  weights.emplace_back(s.vertex, 1 - t);
-  return {moved, blend_gaussians(a, weights).covariance};
+  const std::optional<Gaussian> blend =
+      from_dual(t * centre + (1 - t) * to_dual(p, a.covariances[size_t(s.vertex)]));
+  if (!blend) throw Error("a new vertex would get a covariance that is not positive definite");
+  return {moved, blend->covariance};
 }
 
 }  // namespace
@@ -63,14 +86,15 @@ std::vector<int> inset_faces_in(MeshArrays& a, const std::vector<int>& faces, do
   if (r.has_closed_part) throw Error("insetting every face of a closed part would leave no border to inset from");
 
   std::vector<Gaussian> copies;
-  for (const auto& s : r.sectors) copies.push_back(inner_copy(a, s, thickness));
+  FaceSums sums(a);
+  for (const auto& s : r.sectors) copies.push_back(inner_copy(a, sums, s, thickness));
 
   // Every region face must keep its orientation and the direction of each of its edges.
   // (Detaching only adds vertices: the old corners' means stay where they are.)
   std::vector<Vec3> old_normals;
   std::vector<std::vector<int>> old_faces;
   for (int f : r.faces) {
-    old_normals.push_back(newell_normal(a, f));
+    old_normals.push_back(sums.of(f).first);
     old_faces.push_back(a.faces[size_t(f)]);
   }
   const int n_faces = a.n_faces();
