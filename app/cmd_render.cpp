@@ -157,12 +157,17 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   // with the mesh's size to place the camera by.
   if (count_covered_pixels(normal) == 0) {
     if (yaw_pitch_distance.size() < 3) {
-      // Parts far apart, each under a pixel of the image framed on them all, cover no pixel's centre.
-      const double across = largest_part_share(mesh) * double(std::min(width, height));
+      // An image a pixel or two across, or parts far apart, each under a pixel of the image framed on
+      // them all, cover no pixel's centre.
+      const double share = largest_part_share(mesh), across = share * double(std::min(width, height));
       if (across < 2.0) {
         std::ostringstream pixels;
         pixels.precision(2);
         pixels << across;
+        if (share == 1.0)
+          throw Error(a.input + ": the surface covers no pixel of the image framed on it: at " + a.size +
+                      " it is under 2 pixels across and falls between the pixels' centres (use a larger --size); " +
+                      "nothing written");
         throw Error(a.input + ": the surface covers no pixel of the image framed on it: its parts lie so far " +
                     "apart that the largest is " + pixels.str() + " pixels across (render the parts apart, or " +
                     "a larger --size); nothing written");

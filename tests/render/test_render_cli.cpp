@@ -558,6 +558,21 @@ TEST(RenderCli, PartsEachUnderAPixelAreNamedAsSuch) {
       << r.output;
 }
 
+// An image a pixel or two across: one part, framed, may fall between the pixels' centres; a refusal
+// then says so (it spoke of parts lying far apart), and nothing is written.
+TEST(RenderCli, AnImageTooSmallForTheSurfaceSaysSo) {
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample cube -o " + dir.file("cube.ply"))).exit_code, 0);
+  for (const char* size : {"1x2", "2x1", "1x16", "1x1000"}) {
+    const auto r = run_command(gpsurf("render " + dir.file("cube.ply") + " -o " + dir.file("a.png") + " --size " +
+                                      size));
+    EXPECT_EQ(r.exit_code, 1) << size << ": " << r.output;
+    EXPECT_NE(r.output.find("at " + std::string(size) + " it is under 2 pixels across"), std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("a.png"))) << size;
+  }
+}
+
 // A camera given so near the mesh that the view ends before the surface (inside the pawn): said so,
 // with how far the view reaches (it said only that the surface covered no pixel).
 TEST(RenderCli, ACameraSoNearThatTheViewEndsShortOfTheSurfaceSaysSo) {
