@@ -4,11 +4,27 @@
 
 #include <cmath>
 #include <limits>
+#include <new>
 #include <string>
+
+#include "core/mesh/covariance_mesh.h"
 
 namespace gps::python {
 
 std::string shown_number(double v) { return py::str(py::float_(v)).cast<std::string>(); }
+
+py::array contiguous_array(const py::handle& object, const py::handle& dtype) {
+  auto& api = py::detail::npy_api::get();
+  PyObject* array = api.PyArray_FromAny_(
+      object.ptr(), dtype.inc_ref().ptr(), 0, 0,  // takes the dtype's reference
+      int(py::detail::npy_api::NPY_ARRAY_ENSUREARRAY_) | py::array::c_style | py::array::forcecast, nullptr);
+  if (!array) {
+    const bool out_of_memory = PyErr_ExceptionMatches(PyExc_MemoryError);
+    PyErr_Clear();
+    if (out_of_memory) throw std::bad_alloc();
+  }
+  return py::reinterpret_steal<py::array>(array);
+}
 
 DoubleArray rows_to_array(const std::vector<Vec3>& rows) {
   DoubleArray a({py::ssize_t(rows.size()), py::ssize_t(3)});
@@ -18,7 +34,20 @@ DoubleArray rows_to_array(const std::vector<Vec3>& rows) {
   return a;
 }
 
-std::vector<Vec3> array_to_rows(const DoubleArray& array, const char* what) {
+namespace {
+
+// `values` as a float64 array; a TypeError naming `what` where numpy cannot make one of it (ragged
+// rows, text).
+DoubleArray numbers_of(const py::handle& values, const char* what) {
+  DoubleArray array = contiguous<double>(values);
+  if (!array) throw py::type_error(std::string(what) + ": expected an array of numbers");
+  return array;
+}
+
+}  // namespace
+
+std::vector<Vec3> array_to_rows(const py::handle& values, const char* what) {
+  const DoubleArray array = numbers_of(values, what);
   if (array.ndim() != 2 || array.shape(1) != 3) throw py::value_error(std::string(what) + ": expected an n x 3 array");
   auto r = array.unchecked<2>();
   std::vector<Vec3> rows(size_t(array.shape(0)));
@@ -26,6 +55,8 @@ std::vector<Vec3> array_to_rows(const DoubleArray& array, const char* what) {
     rows[i] = Vec3(r(py::ssize_t(i), 0), r(py::ssize_t(i), 1), r(py::ssize_t(i), 2));
     if (!rows[i].allFinite())
       throw py::value_error(std::string(what) + ": row " + std::to_string(i) + " is not finite");
+    if (const std::string problem = position_problem(rows[i]); !problem.empty())
+      throw py::value_error(std::string(what) + ": row " + std::to_string(i) + " " + problem);
   }
   return rows;
 }
@@ -39,7 +70,8 @@ DoubleArray matrices_to_array(const std::vector<Mat3>& matrices) {
   return a;
 }
 
-std::vector<Mat3> array_to_matrices(const DoubleArray& array, const char* what) {
+std::vector<Mat3> array_to_matrices(const py::handle& values, const char* what) {
+  const DoubleArray array = numbers_of(values, what);
   if (array.ndim() != 3 || array.shape(1) != 3 || array.shape(2) != 3)
     throw py::value_error(std::string(what) + ": expected an n x 3 x 3 array");
   auto r = array.unchecked<3>();
@@ -79,11 +111,11 @@ DoubleArray double_array(const std::vector<double>& values) {
 
 namespace {
 
-// The values of an integer array as int64, an unsigned one past int64's range refused with its own
-// value (it would wrap to a negative number).
+// The values of an integer array as int64 in C order, an unsigned one past int64's range refused with
+// its own value (it would wrap to a negative number).
 std::vector<int64_t> index_values(const py::array& array, const char* what) {
   if (array.dtype().kind() == 'u') {
-    const auto values = py::array_t<uint64_t, py::array::c_style | py::array::forcecast>::ensure(array);
+    const auto values = contiguous<uint64_t>(array);
     std::vector<int64_t> out(size_t(values.size()));
     for (size_t i = 0; i < out.size(); ++i) {
       const uint64_t v = values.data()[i];
@@ -93,14 +125,14 @@ std::vector<int64_t> index_values(const py::array& array, const char* what) {
     }
     return out;
   }
-  const auto values = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
+  const auto values = contiguous<int64_t>(array);
   return std::vector<int64_t>(values.data(), values.data() + values.size());
 }
 
 }  // namespace
 
 std::vector<int> indices_of(const py::object& values, int end, const char* what) {
-  const py::array array = py::array::ensure(values);
+  const py::array array = contiguous_array(values, py::handle());
   if (!array) throw py::type_error(std::string(what) + ": expected an integer or an array of integers");
   if (array.size() == 0 && array.ndim() == 1) return {};  // [] is an array of float64 to numpy
   const char kind = array.dtype().kind();
@@ -126,7 +158,7 @@ PolygonTopology faces_from(const py::object& faces) {
     const char kind = array.dtype().kind();
     if (array.ndim() != 2 || (kind != 'i' && kind != 'u'))
       throw py::type_error("faces: expected an (n, k) integer array or a sequence of index sequences");
-    const std::vector<int64_t> wide = index_values(py::array::ensure(array, py::array::c_style), "faces");
+    const std::vector<int64_t> wide = index_values(array, "faces");
     const py::ssize_t rows = array.shape(0), columns = array.shape(1);
     for (py::ssize_t f = 0; f < rows; ++f) {
       for (py::ssize_t k = 0; k < columns; ++k) {
@@ -187,10 +219,37 @@ double number_in(double value, double lo, double hi, const char* what) {
   return value;
 }
 
-std::string path_of(const py::object& path) {
-  const py::object fspath = py::module_::import("os").attr("fspath");
-  const py::object text = fspath(path);  // TypeError for anything but str, bytes and os.PathLike
-  return text.cast<std::string>();
+std::string path_of(const py::object& path, const char* what) {
+  const py::object fsencode = py::module_::import("os").attr("fsencode");
+  // TypeError for anything but str, bytes and os.PathLike.
+  const std::string bytes = fsencode(path).cast<std::string>();
+  if (bytes.find('\0') != std::string::npos) throw py::value_error(std::string(what) + ": embedded null byte");
+  return bytes;
+}
+
+std::string shown_integer(const Integer& n) { return py::repr(n.value).cast<std::string>(); }
+
+long long clamped(const Integer& n) {
+  int overflow = 0;
+  const long long value = PyLong_AsLongLongAndOverflow(n.value.ptr(), &overflow);
+  return overflow > 0   ? std::numeric_limits<long long>::max()
+         : overflow < 0 ? std::numeric_limits<long long>::min()
+                        : value;
+}
+
+int int_in(const Integer& n, int lo, int hi, const char* what) {
+  const long long value = clamped(n);
+  if (value < lo || value > hi)
+    throw py::value_error(std::string(what) + ": expected " + std::to_string(lo) + ".." + std::to_string(hi) +
+                          ", got " + shown_integer(n));
+  return int(value);
+}
+
+int to_int(const Integer& n, const char* what) {
+  const long long value = clamped(n);
+  if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
+    throw py::value_error(std::string(what) + ": " + shown_integer(n) + " out of range");
+  return int(value);
 }
 
 }  // namespace gps::python

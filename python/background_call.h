@@ -11,6 +11,8 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <thread>
+#include <type_traits>
 #include <utility>
 
 #include "core/support/progress.h"
@@ -48,6 +50,46 @@ private:
   std::atomic<bool> stop_{false};
   std::atomic<double> fraction_{-1};
 };
+
+/// Whether the interpreter is finalizing: Python then ends any other thread that takes the GIL.
+inline bool interpreter_finalizing() {
+#if PY_VERSION_HEX >= 0x030D0000
+  return Py_IsFinalizing();
+#else
+  return _Py_IsFinalizing();
+#endif
+}
+
+/// `work()` run with the GIL released; its result, or its exception, once the GIL is taken back.
+/// Taken back in plain code, not in a destructor as pybind11's gil_scoped_release does: while the
+/// interpreter finalizes, Python ends any other thread that takes the GIL with an unwind, which aborts
+/// the process where it meets a noexcept frame. Such a thread (a daemon thread at exit) waits for the
+/// process to end instead; the thread finalizing the interpreter (releasing the GIL in a finalizer)
+/// takes it back.
+template <class Work>
+auto without_gil(Work&& work) {
+  using Result = decltype(work());
+  if constexpr (std::is_void_v<Result>) {
+    without_gil([&] {
+      work();
+      return true;
+    });
+  } else {
+    const bool finalizing_thread = interpreter_finalizing();  // only it runs Python once finalizing
+    PyThreadState* const state = PyEval_SaveThread();
+    std::optional<Result> result;
+    std::exception_ptr error;
+    try {
+      result.emplace(work());
+    } catch (...) {
+      error = std::current_exception();
+    }
+    while (!finalizing_thread && interpreter_finalizing()) std::this_thread::sleep_for(std::chrono::hours(1));
+    PyEval_RestoreThread(state);
+    if (error) std::rethrow_exception(error);
+    return std::move(*result);
+  }
+}
 
 namespace detail {
 template <class Result>
@@ -87,13 +129,14 @@ auto call_in_background(Work work, const py::object& progress, bool stops_prompt
         job->finished.notify_all();
       });
   const auto wait = [&](std::optional<std::chrono::milliseconds> limit) {
-    py::gil_scoped_release unlocked;
-    std::unique_lock lock(job->mutex);
-    if (!limit) {
-      job->finished.wait(lock, [&] { return job->done; });
-      return true;
-    }
-    return job->finished.wait_for(lock, *limit, [&] { return job->done; });
+    return without_gil([&] {
+      std::unique_lock lock(job->mutex);
+      if (!limit) {
+        job->finished.wait(lock, [&] { return job->done; });
+        return true;
+      }
+      return job->finished.wait_for(lock, *limit, [&] { return job->done; });
+    });
   };
   double reported = -1;
   // Whether the callback's answer says to go on. An answer whose truth raises (a numpy array of
@@ -140,8 +183,7 @@ auto call_in_background(Work work, const py::object& progress, bool stops_prompt
 template <class Work>
 auto call_released(Work work) {
   CallControl control;
-  py::gil_scoped_release unlocked;
-  return work(control);
+  return without_gil([&] { return work(control); });
 }
 
 }  // namespace gps::python

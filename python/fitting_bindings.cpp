@@ -23,11 +23,8 @@ namespace {
 // The points of a Mesh (its vertices) or of an (n, 3) array.
 std::vector<Vec3> points_of(const py::object& points, const char* what) {
   if (py::isinstance<MeshHandle>(points)) return vertex_means(*points.cast<const MeshHandle&>().mesh);
-  const DoubleArray array = DoubleArray::ensure(points);
-  if (!array) {
-    PyErr_Clear();
-    throw py::type_error(std::string(what) + ": expected a Mesh or an (n, 3) array of points");
-  }
+  const DoubleArray array = contiguous<double>(points);
+  if (!array) throw py::type_error(std::string(what) + ": expected a Mesh or an (n, 3) array of points");
   return array_to_rows(array, what);
 }
 
@@ -88,8 +85,8 @@ struct Measurement {
 };
 
 // The arguments of distance() and compare(), checked (`what`: the points' parameter name).
-Measurement measurement(const py::object& points, const py::object& to, const std::optional<int>& level, bool linear,
-                        const char* what) {
+Measurement measurement(const py::object& points, const py::object& to, const std::optional<Integer>& level,
+                        bool linear, const char* what) {
   Measurement m;
   m.points = points_of(points, what);
   if (py::isinstance<MeshHandle>(points)) m.points_mesh = points.cast<const MeshHandle&>().mesh;
@@ -101,9 +98,7 @@ Measurement measurement(const py::object& points, const py::object& to, const st
   } else {
     throw py::type_error("expected a gpsurf.Mesh or gpsurf.Surface to measure to");
   }
-  if (level && (*level < 1 || *level > 64))
-    throw py::value_error("level: expected 1..64, got " + std::to_string(*level));
-  m.level = level.value_or(8);
+  m.level = level ? int_in(*level, 1, 64, "level") : 8;
   m.level_given = level.has_value();
   m.linear = linear;
   return m;
@@ -129,14 +124,12 @@ const char* fit_stop_name(FitStop stop) {
 void add_fitting_bindings(py::module_& m) {
   m.def(
       "fit",
-      [](const MeshHandle& coarse, const py::object& target, int iterations, bool plain, double smoothness,
+      [](const MeshHandle& coarse, const py::object& target, const Integer& iterations, bool plain, double smoothness,
          double tolerance, std::optional<double> time, const py::object& progress, bool report,
          std::optional<double> covariance_smoothness, double covariance_prior, double min_sigma, double max_sigma,
          double normal_weight) -> py::object {
-        if (iterations < 0 || iterations > 1000)
-          throw py::value_error("iterations: expected 0..1000, got " + std::to_string(iterations));
         FitOptions o;
-        o.iterations = iterations;
+        o.iterations = int_in(iterations, 0, 1000, "iterations");
         o.plain = plain;
         o.smoothness = number_in(smoothness, 0, 1e6, "smoothness");
         if (covariance_smoothness)
@@ -167,7 +160,10 @@ void add_fitting_bindings(py::module_& m) {
               };
               const std::vector<Vec3> normals =
                   target_mesh ? smooth_vertex_normals(face_triangles(*target_mesh)) : std::vector<Vec3>();
-              return fit_limit_surface(*source, targets, o, normals);
+              FitResult fitted = fit_limit_surface(*source, targets, o, normals);
+              // Targets near the positions' limit can draw the control points past it: refused as a Mesh would be.
+              validate_gaussians(fitted.mesh, "the fitted mesh");
+              return fitted;
             },
             progress, false);
         py::object mesh = py::cast(hold(std::move(result.mesh)));
@@ -205,7 +201,7 @@ void add_fitting_bindings(py::module_& m) {
       "before any step, divided by the points' bounding-box diagonal).");
   m.def(
       "distance",
-      [](const py::object& points, const py::object& to, std::optional<int> level, bool linear) {
+      [](const py::object& points, const py::object& to, const std::optional<Integer>& level, bool linear) {
         const Measurement m = measurement(points, to, level, linear, "points");
         return read_only(double_array(call_in_background(
             [m](CallControl& control) { return m.measure(control, false).distances; }, py::none(), false)));
@@ -216,7 +212,7 @@ void add_fitting_bindings(py::module_& m) {
       "more than 2 million triangles); linear=True: to the mesh's faces. An (n,) read-only array.");
   m.def(
       "compare",
-      [](const py::object& a, const py::object& b, std::optional<int> level, bool linear) {
+      [](const py::object& a, const py::object& b, const std::optional<Integer>& level, bool linear) {
         const Measurement m = measurement(a, b, level, linear, "a");
         if (m.points.empty()) throw py::value_error("a: has no points to measure");
         const auto [s, angles] = call_in_background(

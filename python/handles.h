@@ -21,6 +21,10 @@ struct MeshHandle {
   static void operator delete(void* storage) { ::operator delete(storage); }
 };
 
+/// Whether `handle` holds what a construction made, not the empty mesh of one made without __init__
+/// (held without ownership).
+inline bool initialised(const MeshHandle& handle) { return handle.mesh.use_count() > 0; }
+
 /// A MeshHandle of `mesh`.
 inline MeshHandle hold(CovarianceMesh&& mesh) { return {std::make_shared<const CovarianceMesh>(std::move(mesh))}; }
 
@@ -34,6 +38,9 @@ struct SurfaceHandle {
   static void* operator new(size_t size);
   static void operator delete(void* storage) { ::operator delete(storage); }
 };
+
+/// As initialised(MeshHandle).
+inline bool initialised(const SurfaceHandle& handle) { return handle.surface.use_count() > 0; }
 
 /// The surface of `mesh` planned under `options` (in the calling thread).
 SurfaceHandle plan_surface(std::shared_ptr<const CovarianceMesh> mesh, const PlanOptions& options);

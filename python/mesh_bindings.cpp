@@ -1,6 +1,9 @@
 // gpsurf.Mesh and what makes or transforms one: read, sample, infer, subdivide, edit, simplify.
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <optional>
+
 #include "core/io/mesh_io.h"
 #include "core/mesh/covariance_mesh.h"
 #include "core/support/error.h"
@@ -30,18 +33,17 @@ std::vector<Vec3> means_of(const CovarianceMesh& m) {
 }
 
 // A mesh from arrays; covariances inferred (GPS paper Eq. 16-17, bias 0.05) when not given.
-MeshHandle make_mesh(const DoubleArray& positions, const py::object& faces,
-                     const std::optional<DoubleArray>& covariances) {
+MeshHandle make_mesh(const py::object& positions, const py::object& faces, const py::object& covariances) {
   std::vector<Vec3> means = array_to_rows(positions, "positions");
   std::vector<Mat3> sigmas;
-  if (covariances) {
-    sigmas = array_to_matrices(*covariances, "covariances");
+  const bool infer = covariances.is_none();
+  if (!infer) {
+    sigmas = array_to_matrices(covariances, "covariances");
     if (sigmas.size() != means.size())
       throw py::value_error("covariances: " + std::to_string(sigmas.size()) + " matrices for " +
                             std::to_string(means.size()) + " positions");
   }
   PolygonTopology topology = faces_from(faces);
-  const bool infer = !covariances;
   return call_in_background(
       [means = std::move(means), sigmas = std::move(sigmas), topology = std::move(topology),
        infer](CallControl&) mutable {
@@ -111,9 +113,8 @@ MeshHandle mesh_of_state(const py::tuple& state) {
     throw py::value_error("Mesh: the pickled face offsets do not match the indices");
   for (size_t f = 1; f < t.offsets.size(); ++f)
     if (t.offsets[f] < t.offsets[f - 1]) throw py::value_error("Mesh: the pickled face offsets decrease");
-  CovarianceMesh m = make_covariance_mesh(array_to_rows(state[0].cast<DoubleArray>(), "positions"),
-                                          array_to_matrices(state[3].cast<DoubleArray>(), "covariances"), std::move(t),
-                                          "pickled mesh");
+  CovarianceMesh m = make_covariance_mesh(array_to_rows(state[0], "positions"),
+                                          array_to_matrices(state[3], "covariances"), std::move(t), "pickled mesh");
   validate_gaussians(m, "pickled mesh");
   m.sharpness = with_creases(m, state[4].cast<std::vector<Crease>>());
   m.sharpness.corners = corners_from(m, state[5].cast<DoubleArray>());
@@ -130,6 +131,65 @@ MeshHandle from_state(const py::tuple& state) {
         "Mesh: a pickled state holds positions, face offsets, face indices, covariances, creases "
         "and corners; an item is not of its type");
   }
+}
+
+// A str as UTF-8; a ValueError naming `where` for one with a lone surrogate (from os.listdir, or a
+// "\ud800" escape), which is not text.
+std::string text_of(const py::handle& text, const std::string& where) {
+  Py_ssize_t size = 0;
+  const char* data = PyUnicode_AsUTF8AndSize(text.ptr(), &size);
+  if (!data) {
+    PyErr_Clear();
+    throw py::value_error(where + " holds a lone surrogate, which is not text");
+  }
+  return std::string(data, size_t(size));
+}
+
+// `value` as json.dumps takes it: numpy's scalars and arrays as Python numbers and lists, in dicts and
+// sequences too. A number that is not finite, which JSON cannot hold, or a str that is not text is a
+// ValueError naming `where`.
+py::object json_ready(const py::handle& value, const std::string& where) {
+  static const py::handle numpy_scalar = py::object(py::module_::import("numpy").attr("generic")).release();
+  if (py::isinstance<py::array>(value) || py::isinstance(value, numpy_scalar))
+    return json_ready(value.attr("tolist")(), where);
+  if (PyFloat_Check(value.ptr()) && !std::isfinite(PyFloat_AsDouble(value.ptr())))
+    throw py::value_error(where + " is not finite");
+  if (py::isinstance<py::str>(value)) text_of(value, where);
+  if (py::isinstance<py::dict>(value)) {
+    py::dict out;
+    for (const auto& [key, item] : value.cast<py::dict>()) out[key] = json_ready(item, where);
+    return out;
+  }
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    py::list out;
+    for (const py::handle item : value) out.append(json_ready(item, where));
+    return out;
+  }
+  return py::reinterpret_borrow<py::object>(value);
+}
+
+// The JSON text of edit's `ops`: a str as it is, or a list of dicts as Python writes it, each number
+// that is not finite named by its op and key.
+std::string ops_text(const py::object& ops) {
+  if (py::isinstance<py::str>(ops)) return text_of(ops, "ops");
+  const py::object dumps = py::module_::import("json").attr("dumps");
+  if (!py::isinstance<py::list>(ops) && !py::isinstance<py::tuple>(ops))
+    return dumps(json_ready(ops, "ops")).cast<std::string>();
+  py::list list;
+  for (const py::handle item : ops) {
+    std::string where = "ops[" + std::to_string(list.size()) + "]";
+    if (!py::isinstance<py::dict>(item)) {
+      list.append(json_ready(item, where));
+      continue;
+    }
+    const py::dict op = item.cast<py::dict>();
+    if (op.contains("op") && py::isinstance<py::str>(op["op"]))
+      where += " (" + text_of(op["op"], where + ": \"op\"") + ")";
+    py::dict fields;
+    for (const auto& [key, value] : op) fields[key] = json_ready(value, where + ": " + dumps(key).cast<std::string>());
+    list.append(fields);
+  }
+  return dumps(list).cast<std::string>();
 }
 
 std::string describe(const MeshHandle& h) {
@@ -153,14 +213,17 @@ void add_mesh_bindings(py::module_& m) {
            "positions: (n, 3) float array; faces: (m, k) integer array, or a sequence of vertex index sequences for "
            "faces of several sizes (counted from 0); covariances: (n, 3, 3) symmetric positive definite matrices, "
            "inferred from the faces (GPS paper Eq. 16-17, bias 0.05) when None. Raises ValueError for a wrong shape "
-           "or a value that is not finite, gpsurf.Error for faces or Gaussians the mesh cannot have.")
+           "or a position that is not finite or lies beyond ±1e100, gpsurf.Error for faces or Gaussians the mesh "
+           "cannot have.")
+      // Read by the package's __init__, which refuses a second call: pybind11 would ignore it.
+      .def_property_readonly("_initialised", [](const MeshHandle& h) { return initialised(h); })
       .def_property_readonly(
           "n_vertices", [](const MeshHandle& h) { return h.mesh->n_vertices(); }, "the number of vertices")
       .def_property_readonly(
           "n_faces", [](const MeshHandle& h) { return h.mesh->n_faces(); }, "the number of faces")
       .def_property(
           "positions", [](const MeshHandle& h) { return read_only(rows_to_array(means_of(*h.mesh))); },
-          [](MeshHandle& h, const DoubleArray& a) {
+          [](MeshHandle& h, const py::object& a) {
             const auto rows = array_to_rows(a, "positions");
             if (rows.size() != h.mesh->n_vertices())
               throw py::value_error("positions: expected " + std::to_string(h.mesh->n_vertices()) + " rows, got " +
@@ -172,7 +235,7 @@ void add_mesh_bindings(py::module_& m) {
           "the means, an (n, 3) read-only array; assign an (n, 3) array to change them")
       .def_property(
           "covariances", [](const MeshHandle& h) { return read_only(matrices_to_array(h.mesh->covariances)); },
-          [](MeshHandle& h, const DoubleArray& a) {
+          [](MeshHandle& h, const py::object& a) {
             auto matrices = array_to_matrices(a, "covariances");
             if (matrices.size() != h.mesh->n_vertices())
               throw py::value_error("covariances: expected " + std::to_string(h.mesh->n_vertices()) +
@@ -192,7 +255,15 @@ void add_mesh_bindings(py::module_& m) {
           "every face's vertex indices, one face after another (read-only int32)")
       .def_property(
           "creases", [](const MeshHandle& h) { return py::tuple(py::cast(creases_of(*h.mesh))); },
-          [](MeshHandle& h, const std::vector<Crease>& creases) {
+          [](MeshHandle& h, const py::object& triples) {
+            std::vector<Crease> creases;
+            try {
+              creases = triples.cast<std::vector<Crease>>();
+            } catch (const py::cast_error&) {
+              throw py::type_error(
+                  "creases: expected a sequence of (a, b, sharpness) triples: an edge's two vertex indices and "
+                  "its sharpness");
+            }
             Sharpness s = with_creases(*h.mesh, creases);
             replace(h, [&](CovarianceMesh& c) { c.sharpness = std::move(s); });
           },
@@ -234,8 +305,7 @@ void add_mesh_bindings(py::module_& m) {
           [](const MeshHandle& h, const py::object& path, bool binary) {
             const std::string file = path_of(path);
             const std::shared_ptr<const CovarianceMesh> mesh = h.mesh;
-            py::gil_scoped_release unlocked;
-            write_mesh(file, *mesh, binary);
+            without_gil([&] { write_mesh(file, *mesh, binary); });
           },
           py::arg("path"), py::arg("binary") = false,
           "Writes the mesh (atomically) to a str or os.PathLike path: .ply keeps the "
@@ -289,12 +359,8 @@ void add_mesh_bindings(py::module_& m) {
   m.def(
       "edit",
       [](const MeshHandle& mesh, const py::object& ops) {
-        // A list of dicts as Python writes it, or the JSON text gpsurf edit --ops takes.
-        const std::string text = py::isinstance<py::str>(ops)
-                                     ? ops.cast<std::string>()
-                                     : py::module_::import("json").attr("dumps")(ops).cast<std::string>();
         return call_in_background(
-            [text, source = mesh.mesh](CallControl&) {
+            [text = ops_text(ops), source = mesh.mesh](CallControl&) {
               return hold(OperationList::parse(text, "ops").apply(*source).mesh);
             },
             py::none(), false);
@@ -302,15 +368,21 @@ void add_mesh_bindings(py::module_& m) {
       py::arg("mesh"), py::arg("ops"),
       "A copy of the mesh changed by modelling operations, as gpsurf edit --ops takes them: a list "
       "such as [{'op': 'loop_cut', 'edge': [0, 1]}, {'op': 'extrude', 'faces': [4], 'distance': 0.5}] (or its JSON "
-      "text). Raises gpsurf.Error naming the operation (ops[i]) and what is wrong.");
+      "text); numpy's numbers and arrays in it count as Python's. Raises gpsurf.Error naming the operation (ops[i]) "
+      "and what is wrong, ValueError for a number that is not finite.");
   m.def(
       "simplify",
-      [](const MeshHandle& mesh, std::optional<size_t> vertices, double bias, const py::object& progress,
+      [](const MeshHandle& mesh, std::optional<Integer> vertices, double bias, const py::object& progress,
          std::optional<double> error, bool quads, bool limit) {
         if (!vertices && !error) throw py::value_error("simplify: give vertices=N or error=E");
         SimplifyOptions o;
         // error alone: as few vertices as the error allows, as gpsurf simplify --error does.
-        o.target_vertices = vertices.value_or(4);
+        o.target_vertices = 4;
+        if (vertices) {
+          const long long count = clamped(*vertices);
+          if (count < 4) throw py::value_error("vertices: expected at least 4, got " + shown_integer(*vertices));
+          o.target_vertices = size_t(count);
+        }
         o.bias = positive_number(bias, "bias");
         if (error && !(*error > 0 && *error <= 1))
           throw py::value_error("error: expected a number above 0 and at most 1, got " + shown_number(*error));
@@ -341,9 +413,10 @@ void add_mesh_bindings(py::module_& m) {
         "What the built-in mesh `name` is ('' for an unknown name)");
   m.def(
       "sample",
-      [](const std::string& name, int size) {
-        return call_in_background([name, size](CallControl&) { return hold(make_sample(name, size)); }, py::none(),
-                                  false);
+      [](const std::string& name, const Integer& size) {
+        return call_in_background(
+            [name, faces = to_int(size, "size")](CallControl&) { return hold(make_sample(name, faces)); }, py::none(),
+            false);
       },
       py::arg("name"), py::arg("size") = 0,
       "A built-in mesh (samples() names them). size: the face count of grid, sphere and "
@@ -367,8 +440,9 @@ void add_mesh_bindings(py::module_& m) {
       "faces' Gaussians. bias: a finite number above 0.");
   m.def(
       "subdivide",
-      [](const MeshHandle& mesh, int levels, bool limit, const std::string& scheme, const std::string& loop_beta) {
-        if (levels < 0 || levels > 8) throw py::value_error("levels: expected 0..8, got " + std::to_string(levels));
+      [](const MeshHandle& mesh, const Integer& level_count, bool limit, const std::string& scheme,
+         const std::string& loop_beta) {
+        const int levels = int_in(level_count, 0, 8, "levels");
         const PlanOptions named = plan_options_named(scheme, loop_beta);
         return call_in_background(
             [=, source = mesh.mesh](CallControl&) {

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "core/fitting/limit_scalars.h"
+#include "core/io/mesh_io.h"
 #include "core/mesh/covariance_mesh.h"
 #include "core/support/error.h"
 #include "python/arrays.h"
@@ -43,6 +44,16 @@ Image to_image(const FloatImage& a) {
   return image;
 }
 
+// Refuses an image with a channel that is not finite, which every format but EXR (8 or 16 bits a
+// channel) would write as black.
+void refuse_non_finite(const Image& image) {
+  const auto bad = std::find_if(image.pixels.begin(), image.pixels.end(), [](float c) { return !std::isfinite(c); });
+  if (bad == image.pixels.end()) return;
+  const size_t pixel = size_t(bad - image.pixels.begin()) / size_t(image.channels);
+  throw py::value_error("image: pixel (" + std::to_string(pixel / size_t(image.width)) + ", " +
+                        std::to_string(pixel % size_t(image.width)) + ") is not finite, which only .exr holds");
+}
+
 ShadingMode shading_named(const std::string& mode) {
   if (mode == "matcap") return ShadingMode::matcap;
   if (mode == "normals") return ShadingMode::normals;
@@ -57,7 +68,11 @@ ContextKind context_named(const std::string& name) {
   throw py::value_error("context: expected 'auto', 'osmesa' or 'egl', got '" + name + "'");
 }
 
-// What render() and Surface.render() take besides the surface.
+// A render's width or height.
+int image_side(const Integer& side, const char* what) { return int_in(side, 1, RenderTarget::kLargestSide, what); }
+
+// What render() and Surface.render() take besides the surface: width, height (image_side) and level
+// (0..64, 0: adaptive) checked by the bindings, the rest by render().
 struct RenderSettings {
   int width, height, level;
   float pixels;
@@ -101,11 +116,6 @@ std::array<double, 2> checked_scalar_range(const CovarianceMesh& mesh, const Ren
 // The surface `plans` (planned for `mesh`, or planned here under `options` when empty) drawn off-screen.
 FloatImage render(std::shared_ptr<const CovarianceMesh> mesh, std::shared_ptr<const PlannedSurface> plans,
                   const PlanOptions& options, const RenderSettings& r) {
-  if (r.width < 1 || r.height < 1 || r.width > RenderTarget::kLargestSide || r.height > RenderTarget::kLargestSide)
-    throw py::value_error("width and height: expected 1.." + std::to_string(RenderTarget::kLargestSide) + ", got " +
-                          std::to_string(r.width) + "x" + std::to_string(r.height));
-  if (r.level < 0 || r.level > 64)
-    throw py::value_error("level: expected 1..64 (0: adaptive), got " + std::to_string(r.level));
   if (!std::isfinite(r.pixels) || r.pixels < 0)
     throw py::value_error("pixels: expected a finite number >= 0 (0: the default)");
   if (r.camera && r.camera->size() != 2 && r.camera->size() != 3)
@@ -163,11 +173,11 @@ FloatImage render(std::shared_ptr<const CovarianceMesh> mesh, std::shared_ptr<co
 constexpr const char* kRenderDoc =
     "The limit surface drawn off-screen as `gpsurf render` draws it: a height x width x 4 float32 RGBA array in [0, "
     "1], top row first. level 0: adaptive (pixels: target edge length, 0 for the default); camera: (yaw, pitch[, "
-    "distance]) in degrees, None to frame the mesh; matcap: clay, porcelain, jade, red-wax or an image file; mode: "
-    "matcap, normals or flat; mesh_lines, wireframe, ellipsoids (sigma: their scale) overlays; background: (r, g, "
-    "b) in [0, 1]; context: auto, osmesa or egl. scalars: one number per control vertex, carried to the limit "
-    "surface as a primvar (the same limit weights as the points) and drawn through colormap (viridis, coolwarm or "
-    "gray) over scalar_range (low, high; None: the scalars' least and greatest), shaded by the surface's "
+    "distance]) in degrees, None to frame the mesh; matcap: clay, porcelain, jade, red-wax or an image file (str or "
+    "os.PathLike); mode: matcap, normals or flat; mesh_lines, wireframe, ellipsoids (sigma: their scale) overlays; "
+    "background: (r, g, b) in [0, 1]; context: auto, osmesa or egl. scalars: one number per control vertex, carried "
+    "to the limit surface as a primvar (the same limit weights as the points) and drawn through colormap (viridis, "
+    "coolwarm or gray) over scalar_range (low, high; None: the scalars' least and greatest), shaded by the surface's "
     "brightness.";
 
 }  // namespace
@@ -175,14 +185,15 @@ constexpr const char* kRenderDoc =
 void add_render_bindings(py::module_& m) {
   m.def(
       "render",
-      [](const MeshHandle& mesh, int width, int height, int level, float pixels, const std::string& matcap,
-         const std::string& mode, std::optional<std::vector<float>> camera, bool mesh_lines, bool wireframe,
-         bool ellipsoids, float sigma, std::vector<float> background, const std::string& scheme,
+      [](const MeshHandle& mesh, const Integer& width, const Integer& height, const Integer& level, float pixels,
+         const py::object& matcap, const std::string& mode, std::optional<std::vector<float>> camera, bool mesh_lines,
+         bool wireframe, bool ellipsoids, float sigma, std::vector<float> background, const std::string& scheme,
          const std::string& loop_beta, const std::string& context, std::optional<std::vector<double>> scalars,
          const std::string& colormap, std::optional<std::vector<double>> scalar_range) {
         return render(mesh.mesh, nullptr, plan_options_named(scheme, loop_beta),
-                      {width, height, level, pixels, matcap, mode, camera, mesh_lines, wireframe, ellipsoids, sigma,
-                       background, context, std::move(scalars), colormap, std::move(scalar_range)});
+                      {image_side(width, "width"), image_side(height, "height"), int_in(level, 0, 64, "level"), pixels,
+                       path_of(matcap, "matcap"), mode, camera, mesh_lines, wireframe, ellipsoids, sigma, background,
+                       context, std::move(scalars), colormap, std::move(scalar_range)});
       },
       py::arg("mesh"), py::arg("width") = 800, py::arg("height") = 600, py::arg("level") = 0, py::arg("pixels") = 0.0f,
       py::arg("matcap") = "clay", py::arg("mode") = "matcap", py::arg("camera") = py::none(),
@@ -192,14 +203,15 @@ void add_render_bindings(py::module_& m) {
       py::arg("colormap") = "viridis", py::arg("scalar_range") = py::none(), kRenderDoc);
   const py::object surface_class = m.attr("Surface");
   surface_class.attr("render") = py::cpp_function(
-      [](const SurfaceHandle& s, int width, int height, int level, float pixels, const std::string& matcap,
-         const std::string& mode, std::optional<std::vector<float>> camera, bool mesh_lines, bool wireframe,
-         bool ellipsoids, float sigma, std::vector<float> background, const std::string& context,
+      [](const SurfaceHandle& s, const Integer& width, const Integer& height, const Integer& level, float pixels,
+         const py::object& matcap, const std::string& mode, std::optional<std::vector<float>> camera, bool mesh_lines,
+         bool wireframe, bool ellipsoids, float sigma, std::vector<float> background, const std::string& context,
          std::optional<std::vector<double>> scalars, const std::string& colormap,
          std::optional<std::vector<double>> scalar_range) {
         return render(s.mesh, s.surface, s.options,
-                      {width, height, level, pixels, matcap, mode, camera, mesh_lines, wireframe, ellipsoids, sigma,
-                       background, context, std::move(scalars), colormap, std::move(scalar_range)});
+                      {image_side(width, "width"), image_side(height, "height"), int_in(level, 0, 64, "level"), pixels,
+                       path_of(matcap, "matcap"), mode, camera, mesh_lines, wireframe, ellipsoids, sigma, background,
+                       context, std::move(scalars), colormap, std::move(scalar_range)});
       },
       py::name("render"), py::is_method(surface_class), py::sibling(py::getattr(surface_class, "render", py::none())),
       py::arg("width") = 800, py::arg("height") = 600, py::arg("level") = 0, py::arg("pixels") = 0.0f,
@@ -220,11 +232,13 @@ void add_render_bindings(py::module_& m) {
       "write_image",
       [](const py::object& path, const FloatImage& image) {
         const std::string file = path_of(path);
-        Image pixels = to_image(image);
-        py::gil_scoped_release unlocked;
-        write_image(file, pixels);
+        const Image pixels = to_image(image);
+        if (extension_of(file) != ".exr") refuse_non_finite(pixels);
+        without_gil([&] { write_image(file, pixels); });
       },
-      py::arg("path"), py::arg("image"), "Writes a height x width x channels float array (PNG: 8 bits, EXR: float)");
+      py::arg("path"), py::arg("image"),
+      "Writes a height x width x channels float array (PNG: 8 bits, EXR: float); a pixel that is not finite, which "
+      "only EXR holds, raises ValueError for the other formats");
 }
 
 }  // namespace gps::python

@@ -20,9 +20,9 @@ namespace {
 // How many points evaluate() computes between checks for a stop.
 constexpr size_t kPointsBetweenChecks = 4096;
 
-SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& scheme, const std::string& loop_beta, int depth,
-                           bool approximate) {
-  const PlanOptions options = plan_options_named(scheme, loop_beta, depth, approximate);
+SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& scheme, const std::string& loop_beta,
+                           const Integer& depth, bool approximate) {
+  const PlanOptions options = plan_options_named(scheme, loop_beta, to_int(depth, "depth"), approximate);
   return call_in_background([options, source = mesh.mesh](CallControl&) { return plan_surface(source, options); },
                             py::none(), false);
 }
@@ -114,8 +114,8 @@ void update(SurfaceHandle& h, const MeshHandle& mesh, const py::object& changed,
   h.mesh = after;
 }
 
+// The surface tessellated at `level` (checked by the caller).
 py::tuple tessellation(std::shared_ptr<const PlannedSurface> surface, int level) {
-  if (level < 1 || level > 64) throw py::value_error("level: expected 1..64, got " + std::to_string(level));
   const TriangleMesh t = call_in_background(
       [surface = std::move(surface), level](CallControl&) { return tessellate(*surface, level); }, py::none(), false);
   return py::make_tuple(read_only(rows_to_array(t.positions)), read_only(rows_to_array(t.normals)),
@@ -145,6 +145,8 @@ void add_surface_bindings(py::module_& m) {
                             "one Surface at once.")
       .def(py::init(&make_surface), py::arg("mesh"), py::arg("scheme") = "auto", py::arg("loop_beta") = "loop",
            py::arg("depth") = -1, py::arg("approximate") = false)
+      // Read by the package's __init__, which refuses a second call: pybind11 would ignore it.
+      .def_property_readonly("_initialised", [](const SurfaceHandle& h) { return initialised(h); })
       .def_property_readonly(
           "scheme",
           [](const SurfaceHandle& h) { return h.surface->scheme() == Scheme::loop ? "loop" : "catmull-clark"; },
@@ -178,7 +180,10 @@ void add_surface_bindings(py::module_& m) {
            "vertex that changed but is not named raises ValueError), None to find them. A mesh of another topology "
            "or sharpness raises ValueError unless replan=True, which plans the surface anew.")
       .def(
-          "tessellate", [](const SurfaceHandle& h, int level) { return tessellation(h.surface, level); },
+          "tessellate",
+          [](const SurfaceHandle& h, const Integer& level) {
+            return tessellation(h.surface, int_in(level, 1, 64, "level"));
+          },
           py::arg("level") = 8,
           "Every patch evaluated at a uniform level (1..64) from the kept plans into a "
           "watertight triangle mesh: (points, normals, triangles), read-only arrays")
@@ -195,10 +200,10 @@ void add_surface_bindings(py::module_& m) {
 
   m.def(
       "tessellate",
-      [](const MeshHandle& mesh, int level, const std::string& scheme, const std::string& loop_beta, int depth,
-         bool approximate) {
-        if (level < 1 || level > 64) throw py::value_error("level: expected 1..64, got " + std::to_string(level));
-        return tessellation(make_surface(mesh, scheme, loop_beta, depth, approximate).surface, level);
+      [](const MeshHandle& mesh, const Integer& level, const std::string& scheme, const std::string& loop_beta,
+         const Integer& depth, bool approximate) {
+        const int checked = int_in(level, 1, 64, "level");  // before the surface is planned
+        return tessellation(make_surface(mesh, scheme, loop_beta, depth, approximate).surface, checked);
       },
       py::arg("mesh"), py::arg("level") = 8, py::arg("scheme") = "auto", py::arg("loop_beta") = "loop",
       py::arg("depth") = -1, py::arg("approximate") = false,

@@ -74,6 +74,19 @@ def _with_signature(function):
     return call
 
 
+def _initialising_once(init):
+    """A compiled class's `init` refusing an instance initialised already, which pybind11 would leave
+    as it was without a word."""
+
+    @_functools.wraps(init)
+    def call(self, *args, **kwargs):
+        if getattr(self, "_initialised", False):
+            raise TypeError(f"{type(self).__name__}: already initialised; make a new one")
+        return init(self, *args, **kwargs)
+
+    return call
+
+
 _WRAPPED_SPECIAL = ("__init__", "__copy__", "__deepcopy__")
 
 
@@ -86,6 +99,8 @@ def _give_signatures():
             if not issubclass(value, BaseException):
                 for member, method in list(vars(value).items()):
                     if callable(method) and (not member.startswith("_") or member in _WRAPPED_SPECIAL):
+                        if member == "__init__":
+                            method = _initialising_once(method)
                         setattr(value, member, _with_signature(method))
         else:
             names[name] = _with_signature(value)

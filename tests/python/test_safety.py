@@ -287,3 +287,184 @@ def test_indices_past_int64_or_int_are_named_as_given_and_an_empty_list_is_no_in
     with pytest.raises(IndexError, match="face 0 refers to vertex 4294967298"):
         gpsurf.Mesh(mesh.positions, np.array([[0, 1, 2**32 + 2]], np.int64))
     surface.update(mesh, changed=[])  # nothing changed, nothing named
+
+
+def test_integer_arrays_too_large_to_copy_raise_memory_error():
+    # Once a segfault: the failed copy to int64 was read as an array.
+    script = """if True:
+        import numpy as np, gpsurf
+        mesh = gpsurf.sample('cone')
+        surface = gpsurf.Surface(mesh)
+        calls = (lambda: surface.evaluate(np.broadcast_to(np.int64(0), (2**40,)), 0.1, 0.1),
+                 lambda: gpsurf.Mesh(mesh.positions, np.broadcast_to(np.array([0, 1, 2]), (2**40, 3))),
+                 lambda: surface.update(mesh, changed=np.broadcast_to(np.int32(0), (2**40,))))
+        for call in calls:
+            try:
+                call()
+            except MemoryError as e:
+                print(e)"""
+    result = run_script(script)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == "out of memory: the arguments ask for more than this machine can hold\n" * 3
+
+
+def test_a_daemon_thread_in_a_call_when_the_interpreter_exits_lets_it_exit():
+    # Once an abort: the thread taking the GIL back at exit was ended by an unwind through a noexcept
+    # destructor. One thread is in a background call, the other in calls run in the calling thread.
+    script = """if True:
+        import threading, time, numpy as np, gpsurf
+        mesh = gpsurf.sample('icosphere', 327680)
+        surface = gpsurf.Surface(gpsurf.sample('cone'))
+        def evaluate():
+            while True:
+                surface.evaluate(np.zeros(4000, np.int64), 0.1, 0.1)
+        threading.Thread(target=lambda: gpsurf.simplify(mesh, 100), daemon=True).start()
+        threading.Thread(target=evaluate, daemon=True).start()
+        time.sleep(0.3)
+        print('exits')"""
+    result = run_script(script)
+    assert result.returncode == 0 and result.stdout == "exits\n", result.stderr
+    # The thread finalizing the interpreter still computes: a finalizer's calls return.
+    script = """if True:
+        import gc, gpsurf
+        gc.disable()  # the cycle below is collected as the interpreter finalizes, not before
+        class Computes:
+            def __del__(self):
+                surface = gpsurf.Surface(gpsurf.sample('cone'))
+                print(surface.evaluate(0, 0.1, 0.1)[0].shape)
+        kept = Computes()
+        kept.cycle = kept
+        del kept"""
+    result = run_script(script, timeout=60)
+    assert result.returncode == 0 and result.stdout == "(1, 3)\n", result.stderr
+
+
+def test_paths_with_a_null_byte_are_refused_as_open_refuses_them(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    cube = gpsurf.sample("cube")
+    cube.write("c.obj")
+    calls = [lambda: cube.write("a\0b.obj"), lambda: gpsurf.read("c.obj\0x.obj"),
+             lambda: gpsurf.read(b"c.obj\0x.obj")]
+    if hasattr(gpsurf, "write_image"):
+        calls += [lambda: gpsurf.write_image("a\0b.png", np.zeros((2, 2, 3), np.float32)),
+                  lambda: gpsurf.read_image("a\0b.png")]
+    for call in calls:
+        with pytest.raises(ValueError, match="path: embedded null byte"):
+            call()
+    if hasattr(gpsurf, "render"):
+        with pytest.raises(ValueError, match="matcap: embedded null byte"):
+            gpsurf.render(cube, 8, 8, matcap="clay\0.png")
+    assert sorted(os.listdir(tmp_path)) == ["c.obj"]
+
+
+def test_paths_are_encoded_as_os_fsencode_encodes_them(tmp_path, monkeypatch):
+    # A file name that is not UTF-8 comes from os.listdir as a str with a lone surrogate.
+    monkeypatch.chdir(tmp_path)
+    gpsurf.sample("cube").write(b"\xff.obj")
+    (name,) = os.listdir(".")
+    assert name == "\udcff.obj"
+    assert gpsurf.read(name).n_vertices == 8
+    gpsurf.sample("cone").write(name)
+    assert gpsurf.read(b"\xff.obj").n_vertices == gpsurf.sample("cone").n_vertices
+
+
+def test_points_beyond_the_positions_limit_are_refused_and_named():
+    cone = gpsurf.sample("cone")
+    points = gpsurf.tessellate(cone, 4)[0]
+    far = np.array([[0.0, 0, 0], [1e155, 0, 0]])
+    with pytest.raises(ValueError, match=r"points: row 1 has a coordinate 1e\+155 beyond ±1e\+100"):
+        gpsurf.distance(far, cone)
+    with pytest.raises(ValueError, match=r"a: row 1 has a coordinate 1e\+155 beyond ±1e\+100"):
+        gpsurf.compare(far, cone)
+    with pytest.raises(ValueError, match=r"target: row \d+ has a coordinate .* beyond ±1e\+100"):
+        gpsurf.fit(cone, points * 1e101, 3)
+    with pytest.raises(ValueError, match=r"positions: row 1 has a coordinate 1e\+160 beyond ±1e\+100"):
+        gpsurf.Mesh(np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.]]) * 1e160, [[0, 1, 2], [0, 2, 3]])
+    # Targets within the limit may still draw the fitted control points past it: refused, not handed
+    # out as a Mesh that could not be pickled.
+    try:
+        fitted = gpsurf.fit(cone, points / np.abs(points).max() * 9.9e99, 3)
+    except gpsurf.Error as e:
+        assert re.search(r"the fitted mesh: vertex \d+ has a coordinate .* beyond ±1e\+100", str(e))
+    else:
+        assert np.abs(fitted.positions).max() <= 1e100
+
+
+def test_edit_names_a_number_that_is_not_finite_and_takes_numpy_values():
+    cube = gpsurf.sample("cube")
+    with pytest.raises(ValueError, match=r'ops\[1\] \(extrude\): "distance" is not finite'):
+        gpsurf.edit(cube, [{"op": "extrude", "faces": [0], "distance": 0.1},
+                           {"op": "extrude", "faces": [1], "distance": math.nan}])
+    with pytest.raises(ValueError, match=r'ops\[0\] \(extrude\): "distance" is not finite'):
+        gpsurf.edit(cube, [{"op": "extrude", "faces": [0], "distance": np.float32(np.inf)}])
+    expected = gpsurf.edit(cube, [{"op": "extrude", "faces": [0, 2], "distance": 0.25}])
+    for faces, distance in (([np.int64(0), np.int32(2)], np.float64(0.25)), (np.array([0, 2]), np.float32(0.25))):
+        edited = gpsurf.edit(cube, ({"op": "extrude", "faces": faces, "distance": distance},))
+        assert np.array_equal(edited.positions, expected.positions)
+
+
+def test_text_that_is_not_unicode_is_refused_in_words():
+    cube = gpsurf.sample("cube")
+    with pytest.raises(ValueError, match="ops holds a lone surrogate, which is not text"):
+        gpsurf.edit(cube, '[{"op": "\ud800"}]')
+    with pytest.raises(ValueError, match=r'ops\[0\]: "op" holds a lone surrogate'):
+        gpsurf.edit(cube, [{"op": "\ud800"}])
+    with pytest.raises(ValueError, match=r'ops\[0\] \(transform\): "name" holds a lone surrogate'):
+        gpsurf.edit(cube, [{"op": "transform", "name": ["\udcff"]}])
+
+
+@pytest.mark.skipif(not hasattr(gpsurf, "write_image"), reason="built without GL")
+def test_pixels_that_are_not_finite_are_refused_where_the_format_cannot_hold_them(tmp_path):
+    image = np.zeros((3, 4, 3), np.float32)
+    image[1, 2, 1] = np.nan
+    for name in ("a.png", "b.jpg", "c.ppm", "d.bmp", "e.tif"):
+        with pytest.raises(ValueError, match=r"image: pixel \(1, 2\) is not finite"):
+            gpsurf.write_image(tmp_path / name, image)
+    assert os.listdir(tmp_path) == []
+    gpsurf.write_image(tmp_path / "f.exr", image)
+    assert np.isnan(gpsurf.read_image(tmp_path / "f.exr")[1, 2, 1])
+
+
+def test_a_second_init_is_refused_instead_of_ignored():
+    cube, cone = gpsurf.sample("cube"), gpsurf.sample("cone")
+    with pytest.raises(TypeError, match="Mesh: already initialised"):
+        cube.__init__(cone.positions, cone.faces)
+    assert cube.n_vertices == 8
+    surface = gpsurf.Surface(cube)
+    with pytest.raises(TypeError, match="Surface: already initialised"):
+        surface.__init__(cone)
+    assert surface.mesh.n_vertices == 8
+    # One made without __init__ takes it, even after a method read its empty state.
+    mesh = gpsurf.Mesh.__new__(gpsurf.Mesh)
+    assert mesh.n_vertices == 0
+    mesh.__init__(cone.positions, cone.faces)
+    assert mesh.n_vertices == cone.n_vertices
+
+
+def test_integers_out_of_range_and_wrong_creases_are_refused_in_words():
+    cube = gpsurf.sample("cube")
+    surface = gpsurf.Surface(cube)
+    refusals = [
+        (lambda: gpsurf.tessellate(cube, 2**31), "level: expected 1..64, got 2147483648"),
+        (lambda: surface.tessellate(-2**64), "level: expected 1..64, got -18446744073709551616"),
+        (lambda: gpsurf.tessellate(cube, 2, depth=2**31), "depth: 2147483648 out of range"),
+        (lambda: gpsurf.Surface(cube, depth=-2**40), "depth: -1099511627776 out of range"),
+        (lambda: gpsurf.fit(cube, cube, iterations=2**31), "iterations: expected 0..1000, got 2147483648"),
+        (lambda: gpsurf.distance(cube, cube, level=2**63), "level: expected 1..64, got 9223372036854775808"),
+        (lambda: gpsurf.subdivide(cube, 2**31), "levels: expected 0..8, got 2147483648"),
+        (lambda: gpsurf.sample("grid", 2**31), "size: 2147483648 out of range"),
+        (lambda: gpsurf.simplify(cube, -1), "vertices: expected at least 4, got -1"),
+    ]
+    if hasattr(gpsurf, "render"):
+        refusals += [(lambda: gpsurf.render(cube, width=2**31), "width: expected 1..[0-9]+, got 2147483648"),
+                     (lambda: surface.render(16, 16, level=-1), "level: expected 0..64, got -1")]
+    for call, message in refusals:
+        with pytest.raises(ValueError, match=message):
+            call()
+    for creases in ([(0, 1)], [(0.0, 1, 2.0)], [(0, None, 2.0)], None, 5):
+        with pytest.raises(TypeError, match=r"creases: expected a sequence of \(a, b, sharpness\) triples"):
+            cube.creases = creases
+    with pytest.raises(TypeError, match="positions: expected an array of numbers"):
+        gpsurf.Mesh([[0, 0, 0], [1, 0], [1, 1, 0]], [[0, 1, 2]])
+    # numpy's integers stand for ints.
+    assert len(gpsurf.tessellate(cube, np.int64(2))[2]) == len(gpsurf.tessellate(cube, 2)[2])
