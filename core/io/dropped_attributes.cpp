@@ -1,5 +1,6 @@
 #include "core/io/dropped_attributes.h"
 
+#include <algorithm>
 #include <set>
 #include <vector>
 
@@ -18,15 +19,32 @@ std::string listed(const std::vector<std::string>& parts) {
 
 void count_unread_vertex_properties(const std::vector<std::string>& names, size_t count, DroppedAttributes& dropped) {
   static const std::set<std::string> kRead = {"x", "y", "z", "cxx", "cxy", "cxz", "cyy", "cyz", "czz", "corner"};
-  static const std::set<std::string> kCounted = {
-      "nx",           "ny", "nz", "red", "green", "blue",      "alpha",     "diffuse_red", "diffuse_green",
-      "diffuse_blue", "u",  "v",  "s",   "t",     "texture_u", "texture_v", "texture_s",   "texture_t"};
+  // Each kind counted by the properties that lead one (a vertex's normal, colour or texture coordinate
+  // each), the rest of its properties dropped with it; a property whose kind no property leads is named.
+  struct Kind {
+    size_t DroppedAttributes::*counted;
+    std::set<std::string> leads, rest;
+  };
+  static const std::vector<Kind> kKinds = {{&DroppedAttributes::normals, {"nx"}, {"ny", "nz"}},
+                                           {&DroppedAttributes::colours,
+                                            {"red", "diffuse_red"},
+                                            {"green", "blue", "alpha", "diffuse_green", "diffuse_blue"}},
+                                           {&DroppedAttributes::texture_coordinates,
+                                            {"u", "s", "texture_u", "texture_s"},
+                                            {"v", "t", "texture_v", "texture_t"}}};
+  const std::set<std::string> present(names.begin(), names.end());
+  const auto led = [&](const Kind& kind) {
+    return std::any_of(kind.leads.begin(), kind.leads.end(), [&](const std::string& n) { return present.count(n); });
+  };
   std::vector<std::string> other;
   for (const std::string& n : names) {
-    if (n == "nx") dropped.normals += count;
-    if (n == "red" || n == "diffuse_red") dropped.colours += count;
-    if (n == "u" || n == "s" || n == "texture_u" || n == "texture_s") dropped.texture_coordinates += count;
-    if (!kRead.count(n) && !kCounted.count(n)) other.push_back(quoted_token(n));
+    if (kRead.count(n)) continue;
+    const auto kind = std::find_if(kKinds.begin(), kKinds.end(),
+                                   [&](const Kind& k) { return k.leads.count(n) || (k.rest.count(n) && led(k)); });
+    if (kind == kKinds.end())
+      other.push_back(quoted_token(n));
+    else if (kind->leads.count(n))
+      dropped.*kind->counted += count;
   }
   if (!other.empty() && count > 0) dropped.other.push_back(named_list("vertex property", "vertex properties", other));
 }

@@ -16,7 +16,9 @@ struct DroppedAttributes {
 };
 
 /// A PLY vertex element's properties (`names`, `count` records) that the reader does not read, into
-/// `dropped`: normals, colours and texture coordinates counted, any other named.
+/// `dropped`: normals, colours and texture coordinates counted by the property that leads each (nx;
+/// red, diffuse_red; u, s, texture_u, texture_s), any other named, also one of theirs without its lead
+/// (a lone v, alpha beside normals).
 void count_unread_vertex_properties(const std::vector<std::string>& names, size_t count, DroppedAttributes& dropped);
 
 /// How many names a note lists at most: a file's thousands of names would make a line of thousands.

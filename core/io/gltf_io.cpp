@@ -6,16 +6,16 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
-#include <optional>
+#include <map>
 #include <set>
 #include <span>
 #include <unordered_map>
-#include <unordered_set>
 
 #include <Eigen/Geometry>
 #include <tiny_gltf.h>
 
 #include "core/io/dropped_attributes.h"
+#include "core/io/face_triangulation.h"
 #include "core/io/gltf_loading.h"
 #include "core/io/text_file.h"
 #include "core/support/error.h"
@@ -31,7 +31,8 @@ constexpr const char* kCovarianceAttribute = "_COVARIANCE";
 // The asset generator gpsurf writes, by which it knows its own files (their vertices are not welded).
 const std::string kGenerator = "gpsurf";
 
-// An accessor's elements as bytes in its buffer: `count` elements `stride` bytes apart.
+// An accessor's elements as bytes in its buffer: `count` elements `stride` bytes apart (no data where
+// its values are not read and it has none in a buffer: a sparse accessor, or one of zeros).
 struct AccessorBytes {
   const unsigned char* data = nullptr;
   size_t count = 0, stride = 0;
@@ -39,19 +40,64 @@ struct AccessorBytes {
   bool normalized = false;
 };
 
-// The bytes of accessor `index` of the given type and one of the given component types, every element
-// checked to lie inside its buffer view and the view inside its buffer. `where` names the use
-// ("mesh 0 primitive 1"), `what` the attribute.
-AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, int type, std::initializer_list<int> components,
+// What an attribute's accessor may be (glTF 2.0 §3.7.2.1, and KHR_mesh_quantization's widening).
+struct AccessorRule {
+  std::vector<int> types, component_types;
+  bool integers_normalized = false;  // integer components must be normalized (mapped to [0, 1] or [−1, 1])
+  bool values_read = true;           // false: an attribute dropped unread, which may be sparse or all zeros
+};
+
+std::string type_name(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT2: return "MAT2";
+    case TINYGLTF_TYPE_MAT3: return "MAT3";
+    default: return "MAT4";
+  }
+}
+
+std::string component_type_name(int component_type) {
+  switch (component_type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
+    default: return "FLOAT";
+  }
+}
+
+// "A", "A or B", "A, B or C", each value named by `name`.
+std::string one_of(const std::vector<int>& values, std::string (*name)(int)) {
+  std::string out;
+  for (size_t k = 0; k < values.size(); ++k)
+    out += (k == 0 ? "" : k + 1 == values.size() ? " or " : ", ") + name(values[k]);
+  return out;
+}
+
+// The bytes of accessor `index` (read_gltf_head has checked that it is in the file, and that its type
+// and component type are glTF's), checked against `rule`, each element to lie inside its buffer view,
+// the view inside its buffer, and its start aligned to its component size (glTF 2.0 §3.6.2.4).
+// `where` names the use ("mesh 0 primitive 1"), `what` the attribute.
+AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, const AccessorRule& rule,
                              const std::string& where, const std::string& what) {
   const std::string name = where + ": " + what + " accessor " + std::to_string(index);
-  if (index < 0 || size_t(index) >= model.accessors.size())
-    throw Error(where + ": " + what + " names accessor " + std::to_string(index) + ", which is not in the file");
-  const tinygltf::Accessor& a = model.accessors[size_t(index)];
-  if (a.sparse.isSparse) throw Error(name + " is sparse, which is not read");
-  if (a.type != type) throw Error(name + " has the wrong type for " + what);
+  const tinygltf::Accessor& a = model.accessors.at(size_t(index));
+  if (std::find(rule.types.begin(), rule.types.end(), a.type) == rule.types.end())
+    throw Error(name + " is " + type_name(a.type) + ", not " + one_of(rule.types, type_name));
+  const auto& components = rule.component_types;
   if (std::find(components.begin(), components.end(), a.componentType) == components.end())
-    throw Error(name + " has the wrong component type " + std::to_string(a.componentType) + " for " + what);
+    throw Error(name + " has " + component_type_name(a.componentType) + " components, not " +
+                one_of(components, component_type_name));
+  if (rule.integers_normalized && a.componentType != kFloat && !a.normalized)
+    throw Error(name + " has " + component_type_name(a.componentType) + " components that are not normalized (" +
+                what + "'s integers must be)");
+  AccessorBytes bytes{nullptr, a.count, 0, a.componentType, a.normalized};
+  if (a.sparse.isSparse && rule.values_read) throw Error(name + " is sparse, which is not read");
+  if (a.bufferView < 0 && !rule.values_read) return bytes;
   if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size())
     throw Error(name + " has no buffer view in the file");
   const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
@@ -60,16 +106,18 @@ AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, int type, 
   const std::vector<unsigned char>& buffer = model.buffers[size_t(view.buffer)].data;
   if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
     throw Error(name + ": buffer view " + std::to_string(a.bufferView) + " reads past its buffer");
-  const size_t element = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType))) *
-                         size_t(tinygltf::GetNumComponentsInType(uint32_t(a.type)));
-  const size_t stride = view.byteStride != 0 ? view.byteStride : element;
-  if (stride < element)
-    throw Error(name + ": its byte stride " + std::to_string(stride) + " is shorter than an element");
-  AccessorBytes bytes{nullptr, a.count, stride, a.componentType, a.normalized};
-  if (a.count == 0) return bytes;
+  const size_t component = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType)));
+  const size_t element = component * size_t(tinygltf::GetNumComponentsInType(uint32_t(a.type)));
+  if ((view.byteOffset + a.byteOffset) % component != 0)
+    throw Error(name + " starts at byte " + std::to_string(view.byteOffset + a.byteOffset) +
+                " of its buffer, not a multiple of its components' " + std::to_string(component) + " bytes");
+  bytes.stride = view.byteStride != 0 ? view.byteStride : element;
+  if (bytes.stride < element)
+    throw Error(name + ": its byte stride " + std::to_string(bytes.stride) + " is shorter than an element");
   // The last element ends at offset + stride (count − 1) + element, compared without overflow.
   const size_t room = view.byteLength;
-  if (a.byteOffset > room || element > room - a.byteOffset || (a.count - 1) > (room - a.byteOffset - element) / stride)
+  if (a.byteOffset > room || element > room - a.byteOffset ||
+      (a.count - 1) > (room - a.byteOffset - element) / bytes.stride)
     throw Error(name + " reads past its buffer view");
   bytes.data = buffer.data() + view.byteOffset + a.byteOffset;
   return bytes;
@@ -184,6 +232,65 @@ std::vector<MeshInstance> mesh_instances(const tinygltf::Model& model) {
   return instances;
 }
 
+// The rules of the vertex attributes gpsurf drops (glTF 2.0 §3.7.2.1; KHR_mesh_quantization widens
+// NORMAL to normalized BYTE and SHORT, TEXCOORD_n to any BYTE or SHORT, normalized or not).
+struct DroppedAttributeRules {
+  AccessorRule normal, texture_coordinates, colours;
+};
+
+DroppedAttributeRules dropped_attribute_rules(const tinygltf::Model& model) {
+  const auto& used = model.extensionsUsed;
+  constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE, kUnsignedByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+  constexpr int kShort = TINYGLTF_COMPONENT_TYPE_SHORT, kUnsignedShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  const AccessorRule colours{
+      {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {kFloat, kUnsignedByte, kUnsignedShort}, true, false};
+  if (std::find(used.begin(), used.end(), "KHR_mesh_quantization") != used.end())
+    return {{{TINYGLTF_TYPE_VEC3}, {kFloat, kByte, kShort}, true, false},
+            {{TINYGLTF_TYPE_VEC2}, {kFloat, kByte, kUnsignedByte, kShort, kUnsignedShort}, false, false},
+            colours};
+  return {{{TINYGLTF_TYPE_VEC3}, {kFloat}, false, false},
+          {{TINYGLTF_TYPE_VEC2}, {kFloat, kUnsignedByte, kUnsignedShort}, true, false},
+          colours};
+}
+
+// Whether `name` is `prefix` and a set's index ("TEXCOORD_1"; up to 9 digits, so that it names itself safely).
+bool is_set(const std::string& name, std::string_view prefix) {
+  return name.size() > prefix.size() && name.size() <= prefix.size() + 9 && name.starts_with(prefix) &&
+         std::all_of(name.begin() + std::ptrdiff_t(prefix.size()), name.end(),
+                     [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// A primitive's vertex attributes that a covariance mesh does not hold, for the note: normals, every set
+// of texture coordinates and of colours counted (each checked to be what glTF allows, one per position,
+// as a reader of them would read it), others named.
+void count_dropped_attributes(const tinygltf::Model& model, const tinygltf::Primitive& p,
+                              const DroppedAttributeRules& rules, const std::string& where, size_t positions,
+                              bool written_by_gpsurf, DroppedAttributes& dropped, std::set<std::string>& other) {
+  for (const auto& [attribute, accessor] : p.attributes) {
+    if (attribute == "POSITION" || attribute == kCovarianceAttribute) continue;
+    const bool normal = attribute == "NORMAL", texture = is_set(attribute, "TEXCOORD_");
+    if (!normal && !texture && !is_set(attribute, "COLOR_")) {
+      other.insert(quoted_token(attribute));
+      continue;
+    }
+    const AccessorRule& rule = normal ? rules.normal : texture ? rules.texture_coordinates : rules.colours;
+    if (const size_t n = accessor_bytes(model, accessor, rule, where, attribute).count; n != positions)
+      throw Error(where + ": " + attribute + " accessor " + std::to_string(accessor) + " has " + std::to_string(n) +
+                  " elements for " + std::to_string(positions) + " positions");
+    if (normal)
+      dropped.normals += written_by_gpsurf ? 0 : positions;  // its own: the limit surface's again
+    else
+      (texture ? dropped.texture_coordinates : dropped.colours) += positions;
+  }
+}
+
+// A primitive mode's name in glTF 2.0 (read_gltf_head has checked it is one of them).
+std::string mode_name(int mode) {
+  constexpr std::array<const char*, 7> kNames = {"POINTS",    "LINES",          "LINE_LOOP",   "LINE_STRIP",
+                                                 "TRIANGLES", "TRIANGLE_STRIP", "TRIANGLE_FAN"};
+  return kNames.at(size_t(mode));
+}
+
 bool is_triangles(const tinygltf::Primitive& p) {
   return p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
          p.mode == TINYGLTF_MODE_TRIANGLE_FAN;
@@ -258,16 +365,18 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
   const auto position_bytes = [&](const tinygltf::Primitive& p, const std::string& where) {
     const auto position = p.attributes.find("POSITION");
     if (position == p.attributes.end()) throw Error(where + ": has no POSITION attribute");
-    return accessor_bytes(model, position->second, TINYGLTF_TYPE_VEC3,
-                          {kFloat, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                           TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+    return accessor_bytes(model, position->second,
+                          {{TINYGLTF_TYPE_VEC3},
+                           {kFloat, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                            TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}},
                           where, "POSITION");
   };
   const auto index_bytes = [&](const tinygltf::Primitive& p, const std::string& where) {
     if (p.indices < 0) return AccessorBytes{};
-    return accessor_bytes(model, p.indices, TINYGLTF_TYPE_SCALAR,
-                          {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+    return accessor_bytes(model, p.indices,
+                          {{TINYGLTF_TYPE_SCALAR},
+                           {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT}},
                           where, "indices");
   };
   const auto where_of = [&](int mesh, size_t primitive) {
@@ -304,8 +413,10 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
 
   DroppedAttributes dropped;
   std::set<std::string> other_attributes;
+  std::map<int, size_t> other_primitives;  // by mode, the primitives without triangles
   std::unordered_map<PositionBits, int, PositionBitsHash> welded;
   const bool written_by_gpsurf = model.asset.generator == kGenerator;
+  const DroppedAttributeRules rules = dropped_attribute_rules(model);
   std::vector<int> vertex_of;  // the welded vertex of each position of the current primitive
   std::vector<int> verts;
   std::vector<int> offsets{0};
@@ -318,25 +429,17 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
     const bool mirrored = linear.determinant() < 0;
     for (size_t pi = 0; pi < mesh.primitives.size(); ++pi) {
       const tinygltf::Primitive& p = mesh.primitives[pi];
-      if (!is_triangles(p)) continue;
+      if (!is_triangles(p)) {
+        ++other_primitives[p.mode];
+        continue;
+      }
       const std::string where = where_of(instance.mesh, pi);
       const AccessorBytes points = position_bytes(p, where);
-      // The vertex attributes a covariance mesh does not hold, counted or named for the note.
-      for (const auto& [attribute, accessor] : p.attributes) {
-        if (attribute == "POSITION" || attribute == kCovarianceAttribute) continue;
-        if (attribute == "NORMAL")
-          dropped.normals += written_by_gpsurf ? 0 : points.count;  // its own: the limit surface's again
-        else if (attribute.starts_with("TEXCOORD_"))
-          dropped.texture_coordinates += attribute == "TEXCOORD_0" ? points.count : 0;
-        else if (attribute.starts_with("COLOR_"))
-          dropped.colours += attribute == "COLOR_0" ? points.count : 0;
-        else
-          other_attributes.insert(quoted_token(attribute));
-      }
+      count_dropped_attributes(model, p, rules, where, points.count, written_by_gpsurf, dropped, other_attributes);
       AccessorBytes gaussians;
       if (has_covariances)
-        gaussians = accessor_bytes(model, p.attributes.at(kCovarianceAttribute), TINYGLTF_TYPE_MAT3, {kFloat}, where,
-                                   kCovarianceAttribute);
+        gaussians = accessor_bytes(model, p.attributes.at(kCovarianceAttribute), {{TINYGLTF_TYPE_MAT3}, {kFloat}},
+                                   where, kCovarianceAttribute);
       if (has_covariances && gaussians.count != points.count)
         throw Error(where + ": " + std::to_string(gaussians.count) + " covariances for " +
                     std::to_string(points.count) + " positions");
@@ -385,6 +488,9 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
   dropped.other.push_back(named_list("vertex attribute", "vertex attributes",
                                      std::vector<std::string>(other_attributes.begin(), other_attributes.end())));
   if (dropped.other.back().empty()) dropped.other.pop_back();
+  for (const auto& [mode, count] : other_primitives)
+    dropped.other.push_back(std::to_string(count) + " " + mode_name(mode) +
+                            (count == 1 ? " primitive" : " primitives"));
   if (std::string note = dropped_attributes_note(escaped(source), dropped); !note.empty())
     soup.notes.push_back(std::move(note));
   soup.faces.n_vertices = int(soup.positions.size());
@@ -393,42 +499,9 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
   return soup;
 }
 
-namespace {
-
-uint64_t undirected_key(int a, int b) { return uint64_t(uint32_t(std::min(a, b))) << 32 | uint32_t(std::max(a, b)); }
-
-// The corner of a face to fan its triangles from: the first whose diagonals are neither edges of the
-// mesh nor diagonals of faces fanned before (either would put a third face on an edge, or a face on
-// another, in the file: a fold of a quad onto a triangle beside it) and whose triangles turn as the
-// face does; else the first with such diagonals; else corner 0.
-size_t fan_apex(const CovarianceMesh& mesh, std::span<const int> corners, const std::vector<Vec3>& positions,
-                const Vec3& normal, const std::unordered_set<uint64_t>& diagonals) {
-  const size_t n = corners.size();
-  const MeshConnectivity& c = mesh.connectivity();
-  std::optional<size_t> untwisted;
-  for (size_t apex = 0; apex < n; ++apex) {
-    bool free = true, turns = true;
-    for (size_t k = 2; k + 1 < n && free; ++k) {
-      const int a = corners[apex], b = corners[(apex + k) % n];
-      free = c.find_edge(a, b) < 0 && !diagonals.count(undirected_key(a, b));
-    }
-    for (size_t k = 1; k + 1 < n && free && turns; ++k) {
-      const Vec3& a = positions[size_t(corners[apex])];
-      turns = (positions[size_t(corners[(apex + k) % n])] - a)
-                  .cross(positions[size_t(corners[(apex + k + 1) % n])] - a)
-                  .dot(normal) > 0;
-    }
-    if (free && turns) return apex;
-    if (free && !untwisted) untwisted = apex;
-  }
-  return untwisted.value_or(0);
-}
-
-}  // namespace
-
 GltfTriangles gltf_triangles_of(const CovarianceMesh& mesh) {
   GltfTriangles out;
-  std::unordered_set<uint64_t> diagonals;
+  Diagonals diagonals;
   out.positions.reserve(mesh.n_vertices());
   for (size_t i = 0; i < mesh.n_vertices(); ++i) out.positions.push_back(mesh.mean(i));
   out.covariances = mesh.covariances;
@@ -440,10 +513,7 @@ GltfTriangles gltf_triangles_of(const CovarianceMesh& mesh) {
     for (size_t k = 0; k < corners.size(); ++k)
       normal += out.positions[size_t(corners[k])].cross(out.positions[size_t(corners[(k + 1) % corners.size()])]);
     for (const int v : corners) out.normals[size_t(v)] += normal;
-    const size_t n = corners.size(), apex = n > 3 ? fan_apex(mesh, corners, out.positions, normal, diagonals) : 0;
-    for (size_t k = 1; k + 1 < n; ++k)
-      out.triangles.push_back({corners[apex], corners[(apex + k) % n], corners[(apex + k + 1) % n]});
-    for (size_t k = 2; k + 1 < n; ++k) diagonals.insert(undirected_key(corners[apex], corners[(apex + k) % n]));
+    triangulate_face(mesh, corners, out.positions, normal, diagonals, out.triangles);
   }
   // glTF's normals are unit vectors: a vertex whose faces have no area gets +z.
   for (Vec3& n : out.normals) n = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::UnitZ();

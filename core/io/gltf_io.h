@@ -36,9 +36,9 @@ struct GltfTriangles {
   std::vector<std::array<int, 3>> triangles;
 };
 
-/// The mesh's faces fan-triangulated, each from its first corner whose diagonals are no edges of the
-/// mesh nor diagonals made before and whose triangles turn as the face does (so that the file reads
-/// back as a manifold mesh), with its vertex normals (the area-weighted normals of their faces,
+/// The mesh's faces cut into triangles inside each face (triangulate_face: ear clipping in its plane,
+/// diagonals that are no edges of the mesh nor diagonals made before where it can, so that the file
+/// reads back as a manifold mesh), with its vertex normals (the area-weighted normals of their faces,
 /// by Newell's method) and its covariances.
 GltfTriangles gltf_triangles_of(const CovarianceMesh& mesh);
 

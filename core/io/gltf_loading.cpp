@@ -64,12 +64,8 @@ std::string loader_error(const std::string& text) {
            first_line(got == std::string::npos ? "" : text.substr(got + 10)) + " bytes where its byteLength is " +
            first_line(wanted);
   }
-  if (text.rfind("'uri' is missing from non binary glTF file buffer", 0) == 0)
-    return "has a buffer without a uri (only a .glb's first buffer may go without: it is the BIN chunk)";
   if (text.rfind("Invalid `byteLength'. Must be equal or less than binary size", 0) == 0)
     return "has a buffer whose byteLength is more than the .glb's BIN chunk holds";
-  if (text.rfind("primitive indices accessor out of bounds", 0) == 0)
-    return "has a mesh primitive whose indices name an accessor that is not in the file";
   if (const std::string accessor = between(text, "accessor[", "] invalid bufferView"); !accessor.empty())
     return "has accessor " + first_line(accessor) + " (a primitive's indices) without a buffer view in the file";
   if (text.rfind("JSON string too short", 0) == 0) return "is too short to be a glTF file";
@@ -130,9 +126,10 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;
 }
 
-// A .glb's chunks (glTF 2.0 §4.4): the JSON chunk, then at most a BIN chunk, each inside the file. tinygltf
-// checks the BIN chunk's length without its 8-byte header, so a chunk that claims those bytes is refused here.
-void check_glb_chunks(const std::string& data) {
+// A .glb's chunks (glTF 2.0 §4.4): the JSON chunk, then at most a BIN chunk, each inside the file; whether
+// the BIN chunk is there. tinygltf checks the BIN chunk's length without its 8-byte header, so a chunk that
+// claims those bytes is refused here.
+bool check_glb_chunks(const std::string& data) {
   const auto word = [&](size_t at) {
     uint32_t w;
     std::memcpy(&w, data.data() + at, 4);
@@ -153,7 +150,7 @@ void check_glb_chunks(const std::string& data) {
   if (word(16) != kJson)
     throw Error("is a .glb whose first chunk is not its JSON (its type is " + type_name(16) + ", JSON's 0x4E4F534A)");
   if (word(12) == 0) throw Error("is a .glb whose JSON chunk is empty");
-  if (json_end == data.size()) return;
+  if (json_end == data.size()) return false;
   if (json_end + 8 > data.size())
     throw Error("is a truncated .glb (" + std::to_string(data.size() - json_end) +
                 " bytes after its JSON chunk, too few for a chunk's header)");
@@ -167,6 +164,7 @@ void check_glb_chunks(const std::string& data) {
   if (word(json_end) < 4 || word(json_end) % 4 != 0)
     throw Error("is a .glb whose BIN chunk holds " + std::to_string(word(json_end)) +
                 " bytes: a multiple of 4, at least 4 (a .glb without binary data leaves the chunk out)");
+  return true;
 }
 
 // The JSON chunk of a .glb (check_glb_chunks has checked it lies in the file), or a .gltf's text.
@@ -203,8 +201,13 @@ tinygltf::Model load_gltf_model(const std::string& data, const std::string& base
                                 std::vector<std::string>& warnings) {
   if (data.size() > UINT_MAX) throw Error("is larger than tinygltf reads (4 GiB)");
   const bool binary = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
-  if (binary) check_glb_chunks(data);
+  const bool has_bin_chunk = binary && check_glb_chunks(data);
   const GltfHead head = read_gltf_head(json_of(data, binary));
+  // A buffer without a uri is a .glb's BIN chunk: a .gltf has none, a .glb may leave the chunk out.
+  if (head.buffer_without_uri && !has_bin_chunk)
+    throw Error(
+        "buffer " + std::to_string(*head.buffer_without_uri) + " has no uri" +
+        (binary ? ", and the .glb no BIN chunk to hold it" : " (only a .glb's buffer may go without: its BIN chunk)"));
   // The folder is passed as the callbacks' user data: none means no file is read.
   BufferFolder folder{base_dir, {}};
   for (const std::string& uri : head.buffer_uris)
@@ -227,6 +230,9 @@ tinygltf::Model load_gltf_model(const std::string& data, const std::string& base
     } catch (const std::exception& e) {
       throw Error(loader_error(e.what()));
     }
+    // tinygltf reads a .glb whose JSON chunk is not padded to 4 bytes, but starts its errors with saying so.
+    if (const std::string unpadded = "JSON Chunk end does not aligned to a 4-byte boundary."; err.starts_with(unpadded))
+      err.erase(0, unpadded.size());
     return loaded ? std::optional(std::move(model)) : std::nullopt;
   };
   std::string err, warn;

@@ -57,6 +57,31 @@ TEST(DroppedAttributes, PlyNormalsColoursAndTextureCoordinatesAreNoted) {
             (std::vector<std::string>{"tri.ply: 3 texture coordinates, 3 normals and 3 vertex colours" + kTail}));
 }
 
+// A normal, colour or texture coordinate is known by the property that leads it (nx, red, u …); its other
+// properties without it (a lone v, alpha beside normals) were dropped without a word: they are named.
+TEST(DroppedAttributes, PlyPropertiesWithoutTheirLeadAreNamed) {
+  const auto note_of = [](const std::string& properties, const std::string& values) {
+    std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    ply += properties + "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const char* position : {"0 0 0 ", "1 0 0 ", "0 1 0 "}) ply += position + values + "\n";
+    bool has_covariances = true;
+    const PolygonSoup soup = parse_ply_soup(ply + "3 0 1 2\n", "p.ply", has_covariances);
+    return soup.notes.empty() ? std::string() : soup.notes[0];
+  };
+  EXPECT_EQ(note_of("property float v\nproperty uchar alpha\n", "0 9"),
+            "p.ply: vertex properties 'v' and 'alpha'" + kTail);
+  EXPECT_EQ(note_of("property float nx\nproperty float ny\nproperty float nz\nproperty uchar alpha\n", "0 0 1 9"),
+            "p.ply: 3 normals and vertex property 'alpha'" + kTail);
+  EXPECT_EQ(note_of("property float ny\nproperty float nz\nproperty float texture_t\nproperty uchar green\n"
+                    "property uchar blue\n",
+                    "0 1 0 9 9"),
+            "p.ply: vertex properties 'ny', 'nz', 'texture_t', 'green' and 'blue'" + kTail);
+  EXPECT_EQ(note_of("property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+                    "property float texture_u\nproperty float texture_v\n",
+                    "1 2 3 4 0 1"),
+            "p.ply: 3 texture coordinates and 3 vertex colours" + kTail);
+}
+
 // Whatever else a file holds is named: a PLY's other vertex and face properties, the colours and
 // normals of an OFF's variants (COFF, NOFF), an OBJ's tags other than crease and corner.
 TEST(DroppedAttributes, OtherPropertiesTagsAndOffValuesAreNamed) {

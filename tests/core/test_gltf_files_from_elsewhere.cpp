@@ -1,11 +1,14 @@
 // glTF files as other tools and hands write them, read as the docs promise: buffer files from the
 // .gltf's folder only, by their uri's own decoding; images that cannot be read passed with one note;
-// attributes gpsurf drops noted; meshes in the scene's order; counts no buffer holds, other versions
-// and malformed .glb chunks refused in one line of gpsurf's words.
+// attributes and primitives gpsurf drops noted, and checked as glTF defines them; meshes in the scene's
+// order; counts no buffer holds, other versions, primitives and accessors glTF has not and malformed
+// .glb chunks refused in one line of gpsurf's words.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 
@@ -85,14 +88,179 @@ TEST(GltfFilesFromElsewhere, ImagesThatCannotBeReadAreReadPastWithOneNote) {
 TEST(GltfFilesFromElsewhere, AttributesThatAreDroppedAreNoted) {
   test::TempDir dir;
   test::HandMade cube = test::split_cube();
-  cube.j["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 0;  // any accessor: it is not read
-  cube.j["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 0;
-  cube.j["meshes"][0]["primitives"][0]["attributes"]["_BATCHID"] = 0;
+  json& attributes = cube.j["meshes"][0]["primitives"][0]["attributes"];
+  attributes["TEXCOORD_0"] = cube.add_accessor(std::vector<float>(48, 0.5f), 5126, "VEC2", 24);
+  attributes["COLOR_0"] = 0;  // the positions, VEC3 float: colours as glTF allows them
+  attributes["_BATCHID"] = 0;
   const std::vector<std::string> notes = notes_of(dir.write("attributes.glb", cube.glb()));
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_NE(notes[0].find("24 texture coordinates, 24 vertex colours and vertex attribute '_BATCHID' dropped"),
             std::string::npos)
       << notes[0];
+  // Every set is counted, not only the first (TEXCOORD_1 and COLOR_1 alone were dropped without a word).
+  attributes["TEXCOORD_1"] = attributes["TEXCOORD_0"];
+  attributes["COLOR_1"] = attributes["COLOR_0"];
+  attributes.erase("_BATCHID");
+  EXPECT_NE(notes_of(dir.write("sets.glb", cube.glb())).at(0).find("48 texture coordinates and 48 vertex colours"),
+            std::string::npos);
+  attributes.erase("TEXCOORD_0");
+  attributes.erase("COLOR_0");
+  EXPECT_NE(notes_of(dir.write("second.glb", cube.glb())).at(0).find("24 texture coordinates and 24 vertex colours"),
+            std::string::npos);
+}
+
+// A primitive of lines or points beside the triangles: the note says it is dropped, as an OBJ's `l`.
+TEST(GltfFilesFromElsewhere, PrimitivesWithoutTrianglesAreNoted) {
+  test::TempDir dir;
+  test::HandMade cube = test::split_cube();
+  json& primitives = cube.j["meshes"][0]["primitives"];
+  const json triangles = primitives[0];
+  for (const int mode : {1, 1, 3, 0}) {
+    primitives.push_back(triangles);
+    primitives.back()["mode"] = mode;
+  }
+  const std::string path = dir.write("lines.glb", cube.glb());
+  EXPECT_EQ(read_mesh(path).n_faces(), 12u);
+  EXPECT_EQ(notes_of(path), (std::vector<std::string>{path + ": 1 POINTS primitive, 2 LINES primitives and 1 "
+                                                             "LINE_STRIP primitive dropped (a covariance mesh keeps "
+                                                             "positions, Gaussians and creases; normals come from the "
+                                                             "limit surface)"}));
+}
+
+// The one-line refusal of the file, without its path, checked to be one line that begins with it.
+std::string refusal_of(const test::TempDir& dir, const std::string& name, const std::string& contents) {
+  const std::string path = dir.write(name, contents);
+  const std::string why = test::error_of([&] { read_mesh(path); });
+  EXPECT_EQ(why.find('\n'), std::string::npos) << why;
+  EXPECT_EQ(why.rfind(path + ": ", 0), 0u) << why;
+  return why.substr(std::min(why.size(), path.size() + 2));
+}
+
+// tinygltf dropped a primitive whose attributes it could not read (its triangles lost, exit 0) and
+// read a mode glTF has not as no triangles: refused, naming the mesh and the primitive.
+TEST(GltfFilesFromElsewhere, APrimitiveGltfHasNotIsRefusedNamingIt) {
+  test::TempDir dir;
+  for (const bool alone : {false, true}) {
+    test::HandMade cube = test::split_cube();
+    json& primitives = cube.j["meshes"][0]["primitives"];
+    if (!alone) primitives.push_back(primitives[0]);
+    json& bad = primitives.back();
+    const std::string where = alone ? "mesh 0 primitive 0" : "mesh 0 primitive 1";
+    const auto refused = [&] { return refusal_of(dir, "bad.glb", cube.glb()); };
+    bad["attributes"]["TEXCOORD_0"] = "x";
+    EXPECT_EQ(refused(), where + ": attribute 'TEXCOORD_0' is 'x', not an accessor's index");
+    bad["attributes"]["TEXCOORD_0"] = 1.5;
+    EXPECT_EQ(refused(), where + ": attribute 'TEXCOORD_0' is 1.5, not an accessor's index");
+    bad["attributes"]["TEXCOORD_0"] = nullptr;
+    EXPECT_EQ(refused(), where + ": attribute 'TEXCOORD_0' is a null, not an accessor's index");
+    bad["attributes"]["TEXCOORD_0"] = 99;
+    EXPECT_EQ(refused(), where + ": attribute 'TEXCOORD_0' names accessor 99, which is not in the file");
+    bad["attributes"].erase("TEXCOORD_0");
+    bad["indices"] = "1";
+    EXPECT_EQ(refused(), where + ": indices is '1', not an accessor's index");
+    bad["indices"] = 1;
+    bad["mode"] = 7;
+    EXPECT_EQ(refused(), where + ": mode 7 is none of glTF's (0 POINTS to 6 TRIANGLE_FAN)");
+    bad["mode"] = "4";
+    EXPECT_EQ(refused(), where + ": mode '4' is none of glTF's (0 POINTS to 6 TRIANGLE_FAN)");
+    bad.erase("mode");
+    bad.erase("attributes");
+    EXPECT_EQ(refused(), where + " has no attributes");
+  }
+}
+
+// Texture coordinates and colours are dropped, but read as glTF defines them: each accessor one of
+// the types glTF allows for its attribute, in its buffer, one element per position.
+TEST(GltfFilesFromElsewhere, DroppedAttributesAreCheckedAsGltfDefinesThem) {
+  test::TempDir dir;
+  const auto with = [](const std::string& attribute, auto values, int component_type, const std::string& type,
+                       size_t count) {
+    test::HandMade cube = test::split_cube();
+    cube.j["meshes"][0]["primitives"][0]["attributes"][attribute] =
+        cube.add_accessor(values, component_type, type, count);
+    return cube;
+  };
+  const std::vector<float> uv(48, 0.5f);
+  const auto refused = [&](const test::HandMade& h) { return refusal_of(dir, "uv.glb", h.glb()); };
+  const std::string uv_accessor = "mesh 0 primitive 0: TEXCOORD_0 accessor 2 ";
+  EXPECT_EQ(refused(with("TEXCOORD_0", std::vector<float>(72), 5126, "VEC3", 24)), uv_accessor + "is VEC3, not VEC2");
+  EXPECT_EQ(refused(with("TEXCOORD_0", uv, 5126, "VEC2", 2)), uv_accessor + "has 2 elements for 24 positions");
+  EXPECT_EQ(refused(with("TEXCOORD_0", std::vector<uint32_t>(48), 5125, "VEC2", 24)),
+            uv_accessor + "has UNSIGNED_INT components, not FLOAT, UNSIGNED_BYTE or UNSIGNED_SHORT");
+  EXPECT_EQ(refused(with("TEXCOORD_0", std::vector<uint8_t>(48), 5121, "VEC2", 24)),
+            uv_accessor + "has UNSIGNED_BYTE components that are not normalized (TEXCOORD_0's integers must be)");
+  EXPECT_EQ(refused(with("TEXCOORD_0", uv, 5126, "VEC2", 0)),
+            "accessor 2: count 0 is not a count of elements (1 or more)");
+  test::HandMade no_view = with("TEXCOORD_0", uv, 5126, "VEC2", 24);
+  no_view.j["accessors"][2]["bufferView"] = 99;
+  EXPECT_EQ(refused(no_view), uv_accessor + "has no buffer view in the file");
+  test::HandMade short_view = with("TEXCOORD_0", uv, 5126, "VEC2", 24);
+  short_view.j["bufferViews"][2]["byteLength"] = 100;
+  EXPECT_EQ(refused(short_view), uv_accessor + "reads past its buffer view");
+  test::HandMade misaligned = with("TEXCOORD_0", std::vector<float>(50), 5126, "VEC2", 24);
+  misaligned.j["accessors"][2]["byteOffset"] = 2;
+  EXPECT_EQ(refused(misaligned),
+            uv_accessor + "starts at byte 362 of its buffer, not a multiple of its components' 4 bytes");
+  const std::string colour_accessor = "mesh 0 primitive 0: COLOR_0 accessor 2 ";
+  EXPECT_EQ(refused(with("COLOR_0", uv, 5126, "VEC2", 24)), colour_accessor + "is VEC2, not VEC3 or VEC4");
+  EXPECT_EQ(refused(with("COLOR_0", std::vector<float>(384), 5126, "MAT4", 24)),
+            colour_accessor + "is MAT4, not VEC3 or VEC4");
+  EXPECT_EQ(refused(with("COLOR_0", std::vector<int8_t>(96), 5120, "VEC4", 24)),
+            colour_accessor + "has BYTE components, not FLOAT, UNSIGNED_BYTE or UNSIGNED_SHORT");
+
+  // What glTF allows reads: normalized integers; no buffer view (zeros); with KHR_mesh_quantization,
+  // integer texture coordinates that are not normalized.
+  test::HandMade bytes = with("TEXCOORD_0", std::vector<uint8_t>(48), 5121, "VEC2", 24);
+  bytes.j["accessors"][2]["normalized"] = true;
+  test::HandMade colours = with("COLOR_0", std::vector<uint16_t>(96), 5123, "VEC4", 24);
+  colours.j["accessors"][2]["normalized"] = true;
+  test::HandMade zeros = with("TEXCOORD_0", uv, 5126, "VEC2", 24);
+  zeros.j["accessors"][2].erase("bufferView");
+  test::HandMade quantized = with("TEXCOORD_0", std::vector<int16_t>(48), 5122, "VEC2", 24);
+  quantized.j["extensionsUsed"] = {"KHR_mesh_quantization"};
+  for (const test::HandMade* h : {&bytes, &colours, &zeros, &quantized})
+    EXPECT_EQ(read_mesh(dir.write("fine.glb", h->glb())).n_vertices(), 8u);
+  EXPECT_NE(refused(with("TEXCOORD_0", std::vector<int16_t>(48), 5122, "VEC2", 24)).find("has SHORT components"),
+            std::string::npos);
+}
+
+// tinygltf's words for an accessor glTF has not, for a JSON chunk that is not padded (glued to the
+// next message) and for a .glb without the BIN chunk its buffer needs: gpsurf's words, one reason.
+TEST(GltfFilesFromElsewhere, AccessorsAndChunksGltfHasNotAreRefusedInGpsurfsWords) {
+  test::TempDir dir;
+  test::HandMade cube = test::split_cube();
+  cube.j["accessors"][1]["componentType"] = 9999;
+  EXPECT_EQ(refusal_of(dir, "ct.glb", cube.glb()),
+            "accessor 1: componentType 9999 is none of glTF's (5120, 5121, 5122, 5123, 5125 and 5126)");
+  // The JSON chunk ending off a 4-byte boundary, the BIN chunk right after it.
+  std::string glb = cube.glb();
+  uint32_t json_length;
+  std::memcpy(&json_length, glb.data() + 12, 4);
+  std::string text = glb.substr(20, json_length), bin_chunk = glb.substr(20 + json_length);
+  while (text.back() == ' ') text.pop_back();
+  if (text.size() % 4 == 0) text += ' ';
+  std::string unpadded = glb.substr(0, 20);
+  const uint32_t unpadded_length = uint32_t(text.size()), total = uint32_t(20 + text.size() + bin_chunk.size());
+  std::memcpy(unpadded.data() + 12, &unpadded_length, 4);
+  std::memcpy(unpadded.data() + 8, &total, 4);
+  unpadded += text + bin_chunk;
+  EXPECT_EQ(refusal_of(dir, "unpadded.glb", unpadded),
+            "accessor 1: componentType 9999 is none of glTF's (5120, 5121, 5122, 5123, 5125 and 5126)");
+  cube.j["accessors"][1]["componentType"] = 5123;
+  cube.j["accessors"][1]["type"] = "VEC7";
+  EXPECT_EQ(refusal_of(dir, "type.glb", cube.glb()),
+            "accessor 1: type 'VEC7' is none of glTF's (SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3 and MAT4)");
+  cube.j["accessors"][1].erase("type");
+  EXPECT_EQ(refusal_of(dir, "no_type.glb", cube.glb()), "accessor 1 has no type");
+
+  // A .glb whose buffer has no uri and no BIN chunk to hold it.
+  const test::HandMade fine = test::split_cube();
+  std::string no_bin = fine.glb();
+  std::memcpy(&json_length, no_bin.data() + 12, 4);
+  no_bin.resize(20 + json_length);
+  const uint32_t length = uint32_t(no_bin.size());
+  std::memcpy(no_bin.data() + 8, &length, 4);
+  EXPECT_EQ(refusal_of(dir, "no_bin.glb", no_bin), "buffer 0 has no uri, and the .glb no BIN chunk to hold it");
 }
 
 TEST(GltfFilesFromElsewhere, MeshesComeInTheScenesOrder) {
@@ -148,7 +316,7 @@ TEST(GltfFilesFromElsewhere, WhatNoReaderCouldReadIsRefusedInGpsurfsWords) {
   json no_uri = cube.j;
   no_uri["buffers"] = json::array({{{"byteLength", 8}}});
   EXPECT_EQ(refusal("no_uri.gltf", no_uri.dump()),
-            ": has a buffer without a uri (only a .glb's first buffer may go without: it is the BIN chunk)");
+            ": buffer 0 has no uri (only a .glb's buffer may go without: its BIN chunk)");
   json too_long = cube.j;
   too_long["buffers"] = json::array({{{"byteLength", cube.bin.size() - 16}, {"uri", "long.bin"}}});
   dir.write("long.bin", cube.bin);

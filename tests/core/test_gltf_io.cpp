@@ -343,7 +343,8 @@ TEST(GltfIo, MalformedFilesAreRefusedInOneLineNamingFileAndElement) {
 
   HandMade missing = cube;
   missing.j["meshes"][0]["primitives"][0]["indices"] = 7;
-  expect_refused(dir.write("missing.glb", missing.glb()), "whose indices name an accessor that is not in the file");
+  expect_refused(dir.write("missing.glb", missing.glb()),
+                 "mesh 0 primitive 0: indices names accessor 7, which is not in the file");
 
   HandMade bad_index = cube;
   const uint16_t big = 24;  // the last index: the buffer's last 2 bytes (72 bytes of indices need no padding)
@@ -502,6 +503,27 @@ TEST(GltfIo, AFaceIsFannedSoThatTheFileReadsBack) {
     EXPECT_EQ(back.n_vertices(), 4u) << name;
     EXPECT_EQ(back.n_faces(), 3u) << name;
   }
+}
+
+// A U-shaped octagon: fanned from one corner, its triangles overlapped and some turned over.
+TEST(GltfIo, ANonConvexFaceIsCutIntoTrianglesInsideIt) {
+  const CovarianceMesh u = make_covariance_mesh(
+      {{0, 0, 0}, {3, 0, 0}, {3, 3, 0}, {2, 3, 0}, {2, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}},
+      std::vector<Mat3>(8, 0.01 * Mat3::Identity()), {{0, 1, 2, 3, 4, 5, 6, 7}});
+  test::TempDir dir;
+  write_mesh(dir.file("u.glb"), u);
+  const CovarianceMesh back = read_mesh(dir.file("u.glb"));
+  ASSERT_EQ(back.n_faces(), 6u);
+  double area = 0;
+  for (size_t f = 0; f < back.n_faces(); ++f) {
+    const auto t = back.face(f);
+    const double z = (back.mean(size_t(t[1])) - back.mean(size_t(t[0])))
+                         .cross(back.mean(size_t(t[2])) - back.mean(size_t(t[0])))
+                         .z();
+    EXPECT_GT(z, 0.0) << "triangle " << f << " turns over";
+    area += z / 2;
+  }
+  EXPECT_NEAR(area, 7.0, 1e-12);  // the U's area: no two triangles overlap
 }
 
 }  // namespace

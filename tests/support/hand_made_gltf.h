@@ -22,19 +22,27 @@ struct HandMade {
     while (bin.size() % 4) bin.push_back('\0');
   }
 
+  // `values` in a buffer view of their own and an accessor of `count` elements of `type` ("VEC2") and
+  // `component_type` (5126 float, 5121 unsigned byte …) over it; its index.
+  template <class T>
+  size_t add_accessor(const std::vector<T>& values, int component_type, const std::string& type, size_t count) {
+    const size_t offset = bin.size();
+    append(values);
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
+    j["accessors"].push_back({{"bufferView", j["bufferViews"].size() - 1},
+                              {"componentType", component_type},
+                              {"count", count},
+                              {"type", type}});
+    return j["accessors"].size() - 1;
+  }
+
   // Per vertex of the first primitive its Σ (column-major floats), as the _COVARIANCE attribute.
   void add_covariances(const std::vector<Mat3>& sigmas) {
     std::vector<float> covariances;
     for (const Mat3& sigma : sigmas)
       for (int k = 0; k < 9; ++k) covariances.push_back(float(sigma(k % 3, k / 3)));
-    const size_t offset = bin.size();
-    append(covariances);
-    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", covariances.size() * 4}});
-    j["accessors"].push_back({{"bufferView", j["bufferViews"].size() - 1},
-                              {"componentType", 5126},
-                              {"count", sigmas.size()},
-                              {"type", "MAT3"}});
-    j["meshes"][0]["primitives"][0]["attributes"]["_COVARIANCE"] = j["accessors"].size() - 1;
+    j["meshes"][0]["primitives"][0]["attributes"]["_COVARIANCE"] =
+        add_accessor(covariances, 5126, "MAT3", sigmas.size());
   }
 
   // The .glb of it: header, JSON chunk (padded with spaces), BIN chunk (padded with zeros). The BIN chunk and
