@@ -87,9 +87,8 @@ void check_accessors(const nlohmann::json& accessors) {
       return *it;
     };
     const nlohmann::json component_type = member("componentType");
-    if (!component_type.is_number_unsigned() ||
-        std::find(kComponentTypes.begin(), kComponentTypes.end(), component_type.get<uint64_t>()) ==
-            kComponentTypes.end())
+    if (!component_type.is_number_unsigned() || std::find(kComponentTypes.begin(), kComponentTypes.end(),
+                                                          component_type.get<uint64_t>()) == kComponentTypes.end())
       throw Error(name + ": componentType " + shown(component_type) +
                   " is none of glTF's (5120, 5121, 5122, 5123, 5125 and 5126)");
     const nlohmann::json type = member("type");

@@ -18,7 +18,7 @@ namespace gps {
 bool reads_gltf_extension(std::string_view name);
 
 struct GltfHead {
-  std::vector<std::string> buffer_uris;     // the buffers' uris that name files (not data: URIs), as written
+  std::vector<std::string> buffer_uris;      // the buffers' uris that name files (not data: URIs), as written
   std::optional<size_t> buffer_without_uri;  // the first buffer without a uri (a .glb's BIN chunk holds it)
 };
 

@@ -49,24 +49,37 @@ struct AccessorRule {
 
 std::string type_name(int type) {
   switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    default: return "MAT4";
+    case TINYGLTF_TYPE_SCALAR:
+      return "SCALAR";
+    case TINYGLTF_TYPE_VEC2:
+      return "VEC2";
+    case TINYGLTF_TYPE_VEC3:
+      return "VEC3";
+    case TINYGLTF_TYPE_VEC4:
+      return "VEC4";
+    case TINYGLTF_TYPE_MAT2:
+      return "MAT2";
+    case TINYGLTF_TYPE_MAT3:
+      return "MAT3";
+    default:
+      return "MAT4";
   }
 }
 
 std::string component_type_name(int component_type) {
   switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
-    default: return "FLOAT";
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+      return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+      return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      return "UNSIGNED_INT";
+    default:
+      return "FLOAT";
   }
 }
 
@@ -93,8 +106,8 @@ AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, const Acce
     throw Error(name + " has " + component_type_name(a.componentType) + " components, not " +
                 one_of(components, component_type_name));
   if (rule.integers_normalized && a.componentType != kFloat && !a.normalized)
-    throw Error(name + " has " + component_type_name(a.componentType) + " components that are not normalized (" +
-                what + "'s integers must be)");
+    throw Error(name + " has " + component_type_name(a.componentType) + " components that are not normalized (" + what +
+                "'s integers must be)");
   AccessorBytes bytes{nullptr, a.count, 0, a.componentType, a.normalized};
   if (a.sparse.isSparse && rule.values_read) throw Error(name + " is sparse, which is not read");
   if (a.bufferView < 0 && !rule.values_read) return bytes;

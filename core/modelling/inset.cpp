@@ -71,8 +71,7 @@ Gaussian inner_copy(const MeshArrays& a, FaceSums& sums, const FaceRegion::Secto
   if (!(t < 1))
     throw Error("a thickness of " + short_number(thickness) + " would carry " + vertex + " past the centre of face " +
                 std::to_string(*fan.begin()));
-  const std::optional<Gaussian> blend =
-      from_dual(t * centre + (1 - t) * to_dual(p, a.covariances[size_t(s.vertex)]));
+  const std::optional<Gaussian> blend = from_dual(t * centre + (1 - t) * to_dual(p, a.covariances[size_t(s.vertex)]));
   if (!blend) throw Error("a new vertex would get a covariance that is not positive definite");
   return {moved, blend->covariance};
 }

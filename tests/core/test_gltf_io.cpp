@@ -507,9 +507,9 @@ TEST(GltfIo, AFaceIsFannedSoThatTheFileReadsBack) {
 
 // A U-shaped octagon: fanned from one corner, its triangles overlapped and some turned over.
 TEST(GltfIo, ANonConvexFaceIsCutIntoTrianglesInsideIt) {
-  const CovarianceMesh u = make_covariance_mesh(
-      {{0, 0, 0}, {3, 0, 0}, {3, 3, 0}, {2, 3, 0}, {2, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}},
-      std::vector<Mat3>(8, 0.01 * Mat3::Identity()), {{0, 1, 2, 3, 4, 5, 6, 7}});
+  const CovarianceMesh u =
+      make_covariance_mesh({{0, 0, 0}, {3, 0, 0}, {3, 3, 0}, {2, 3, 0}, {2, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}},
+                           std::vector<Mat3>(8, 0.01 * Mat3::Identity()), {{0, 1, 2, 3, 4, 5, 6, 7}});
   test::TempDir dir;
   write_mesh(dir.file("u.glb"), u);
   const CovarianceMesh back = read_mesh(dir.file("u.glb"));

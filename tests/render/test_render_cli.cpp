@@ -564,11 +564,10 @@ TEST(RenderCli, AnImageTooSmallForTheSurfaceSaysSo) {
   test::TempDir dir;
   ASSERT_EQ(run_command(gpsurf("sample cube -o " + dir.file("cube.ply"))).exit_code, 0);
   for (const char* size : {"1x2", "2x1", "1x16", "1x1000"}) {
-    const auto r = run_command(gpsurf("render " + dir.file("cube.ply") + " -o " + dir.file("a.png") + " --size " +
-                                      size));
+    const auto r =
+        run_command(gpsurf("render " + dir.file("cube.ply") + " -o " + dir.file("a.png") + " --size " + size));
     EXPECT_EQ(r.exit_code, 1) << size << ": " << r.output;
-    EXPECT_NE(r.output.find("at " + std::string(size) + " it is under 2 pixels across"), std::string::npos)
-        << r.output;
+    EXPECT_NE(r.output.find("at " + std::string(size) + " it is under 2 pixels across"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("a.png"))) << size;
   }
 }

@@ -22,8 +22,8 @@ using RenderFraming = test::GlTest;
 TEST_F(RenderFraming, ASurfaceThatFacesTheEyeStaysWholeInTheImage) {
   for (const double sigma2 : {1e-2, 1e-3, 1e-6})
     for (const auto& [width, height] : {std::pair{800, 600}, std::pair{600, 800}}) {
-      const std::string what = "covariance " + std::to_string(sigma2) + ", " + std::to_string(width) + "x" +
-                               std::to_string(height);
+      const std::string what =
+          "covariance " + std::to_string(sigma2) + ", " + std::to_string(width) + "x" + std::to_string(height);
       CovarianceMesh mesh = make_sample("cube");
       mesh.set_covariance(0, sigma2 * Mat3::Identity());
       SurfaceRenderer renderer;
