@@ -20,9 +20,21 @@ float framing_level(int n_patches) { return n_patches <= 4096 ? 4.0f : 2.0f; }
 // length in pixels, and framed on those vertices too, until they fit (at most this many rounds).
 constexpr float kViewedFramingPixels = 2.0f;
 constexpr int kViewedFramingRounds = 4;
+// Only where the framed view brings a point nearer than this share of its distance: an ordinary view
+// is not tessellated twice.
+constexpr double kMagnifyingDepth = 0.5;
 // How far into the margin (of 5 %) those vertices may reach before the view is framed again, in
 // normalised device coordinates.
 constexpr double kViewedFit = 0.97;
+
+// Whether some of `points` lie so much nearer the eye than the target that perspective magnifies
+// them past what samples between them show: nearer than half the distance.
+bool magnifies_nearest(const Camera& camera, const std::vector<glm::dvec3>& points) {
+  const glm::dvec3 eye = camera.eye_double(), forward = glm::normalize(camera.target - eye);
+  return std::any_of(points.begin(), points.end(), [&](const glm::dvec3& p) {
+    return glm::dot(p - eye, forward) < kMagnifyingDepth * double(camera.distance);
+  });
+}
 
 glm::dvec3 in_frame(const NormalisedFrame& frame, const Vec3& world) {
   return (glm::dvec3(world.x(), world.y(), world.z()) - frame.centre) / frame.unit;
@@ -83,7 +95,7 @@ Camera render_camera(SurfaceRenderer& renderer, const CovarianceMesh& mesh,
   const Camera unframed = camera;
   camera = frame_silhouette(unframed, points, aspect);
   const int n_patches = renderer.tables().plans.n_patches();
-  if (!camera.orthographic && n_patches <= kCornersOnlyPatches) {
+  if (!camera.orthographic && n_patches <= kCornersOnlyPatches && magnifies_nearest(camera, points)) {
     DrawOptions viewed;
     viewed.pixels = kViewedFramingPixels;
     for (int round = 0; round < kViewedFramingRounds; ++round) {
