@@ -36,6 +36,14 @@ bool magnifies_nearest(const Camera& camera, const std::vector<glm::dvec3>& poin
   });
 }
 
+// The captured vertices' positions appended to `points`, those the float evaluation could not
+// represent left out: they frame nothing (the draw refuses their pixels).
+void append_finite_positions(const std::vector<TessellatedVertex>& vertices, std::vector<glm::dvec3>& points) {
+  for (const TessellatedVertex& v : vertices)
+    if (std::isfinite(v.position[0] + v.position[1] + v.position[2]))
+      points.emplace_back(v.position[0], v.position[1], v.position[2]);
+}
+
 glm::dvec3 in_frame(const NormalisedFrame& frame, const Vec3& world) {
   return (glm::dvec3(world.x(), world.y(), world.z()) - frame.centre) / frame.unit;
 }
@@ -47,18 +55,17 @@ std::vector<glm::dvec3> framing_points(SurfaceRenderer& renderer, const Covarian
   std::vector<glm::dvec3> points;
   if (n_patches > kCornersOnlyPatches) {
     points = renderer.corner_limit_points();
+    // A point the float evaluation could not represent frames nothing (the draw refuses its pixels).
+    std::erase_if(points, [](const glm::dvec3& p) { return !std::isfinite(p.x + p.y + p.z); });
   } else {
     DrawOptions uniform;
     uniform.level = framing_level(n_patches);
     uniform.pixels = 0.0f;
     const Camera any;  // uniform levels do not depend on the camera
     for (int first = 0; first < n_patches; first += kPatchesPerCapture)
-      for (const TessellatedVertex& v :
-           renderer.capture_frame_vertices(any, uniform, 64, 64, first, kPatchesPerCapture))
-        points.emplace_back(v.position[0], v.position[1], v.position[2]);
+      append_finite_positions(renderer.capture_frame_vertices(any, uniform, 64, 64, first, kPatchesPerCapture),
+                              points);
   }
-  // A point the float evaluation could not represent frames nothing (the draw refuses its pixels).
-  std::erase_if(points, [](const glm::dvec3& p) { return !std::isfinite(p.x + p.y + p.z); });
   if (o.mesh_lines)
     for (size_t i = 0; i < mesh.n_vertices(); ++i) points.push_back(in_frame(frame, mesh.mean(i)));
   if (o.ellipsoids)
@@ -100,9 +107,7 @@ Camera render_camera(SurfaceRenderer& renderer, const CovarianceMesh& mesh,
     viewed.pixels = kViewedFramingPixels;
     for (int round = 0; round < kViewedFramingRounds; ++round) {
       std::vector<glm::dvec3> seen;
-      for (const TessellatedVertex& v : renderer.capture_frame_vertices(camera, viewed, width, height))
-        if (std::isfinite(v.position[0] + v.position[1] + v.position[2]))
-          seen.emplace_back(v.position[0], v.position[1], v.position[2]);
+      append_finite_positions(renderer.capture_frame_vertices(camera, viewed, width, height), seen);
       const NdcRect bounds = projected_bounds(camera, seen, aspect);
       if (glm::all(glm::greaterThanEqual(bounds.lo, glm::dvec2(-kViewedFit))) &&
           glm::all(glm::lessThanEqual(bounds.hi, glm::dvec2(kViewedFit))))
