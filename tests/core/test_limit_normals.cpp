@@ -81,10 +81,13 @@ TEST(LimitNormals, EqualTheEvaluatorsAtEveryReferenceVertex) {
 // boundary (O(h): ÷4). Extraordinary vertices, whose fans converge only as fast as their
 // subdominant eigenvalues let them, are ExactPlans.NormalsAreDefinedAtExtraordinaryVertices'. The
 // needle and the disc of cone-concave and cone-plateau are narrower than a fan six levels down,
-// where these differences have not begun to converge; they are in the test above.
+// where these differences have not begun to converge; they are in the test above. So is the pawn, of
+// three million faces six levels down: its vertices are regular or extraordinary as the others' are.
 TEST(LimitNormals, AreTheNormalsOfTheRefinedSurface) {
   for (const Case& c : cases()) {
-    if (c.name.find("concave") != std::string::npos || c.name.find("plateau") != std::string::npos) continue;
+    if (c.name.find("concave") != std::string::npos || c.name.find("plateau") != std::string::npos ||
+        c.name == "pawn")
+      continue;
     const auto coarse = subdivide(c.mesh, {c.scheme, 2, true, LoopBeta::loop, true});
     const PolygonTopology& coarse_topology = coarse.mesh.topology();
     const MeshConnectivity& connectivity = coarse.mesh.connectivity();
