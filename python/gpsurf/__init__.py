@@ -54,23 +54,73 @@ def _signature(function):
             kind = _inspect.Parameter.KEYWORD_ONLY
             continue
         name, _, rest = part.partition(":")
-        default = rest.partition(" = ")[2]
+        annotation, _, default = rest.partition(" = ")
         try:
             value = _ast.literal_eval(default) if default else _inspect.Parameter.empty
         except ValueError:
             value = default
-        parameters.append(_inspect.Parameter(name.strip(), kind, default=value))
+        parameters.append(_inspect.Parameter(name.strip(), kind, default=value, annotation=annotation.strip()))
     return _inspect.Signature(parameters)
 
 
-def _with_signature(function):
-    """`function` as a Python function that inspect.signature and help() read."""
+def _shown_type(annotation):
+    """A parameter's type as a user reads it: `int or None`, `gpsurf.Mesh`."""
+    if annotation.startswith("Optional[") and annotation.endswith("]"):
+        return _shown_type(annotation[len("Optional["):-1]) + " or None"
+    return annotation.replace("gpsurf._gpsurf.", "gpsurf.")
+
+
+def _takes(annotation, value):
+    """Whether a value can be what a parameter of this type takes; True where the type is not one
+    of the plain ones told apart here (arrays, sequences, callables)."""
+    if annotation.startswith("Optional[") and annotation.endswith("]"):
+        return value is None or _takes(annotation[len("Optional["):-1], value)
+    if annotation == "str":
+        return isinstance(value, str)
+    if annotation == "bool":
+        return isinstance(value, bool) or type(value).__name__ == "bool_"
+    if annotation == "int":
+        return not isinstance(value, (str, bytes, float)) and hasattr(value, "__index__")
+    if annotation == "float":
+        return not isinstance(value, (str, bytes)) and (hasattr(value, "__float__") or hasattr(value, "__index__"))
+    if annotation.startswith("gpsurf._gpsurf."):
+        cls = getattr(_gpsurf, annotation.rpartition(".")[2], None)
+        return not isinstance(cls, type) or isinstance(value, cls)
+    return True
+
+
+def _refusal(name, signature, args, kwargs):
+    """The TypeError for a call whose arguments pybind11 found incompatible, in Python's words:
+    the argument that is not of its parameter's type, or the name or count that does not fit."""
+    try:
+        bound = signature.bind(*args, **kwargs)
+    except TypeError as error:
+        return TypeError(f"{name}(): {error}")
+    for parameter, value in bound.arguments.items():
+        annotation = signature.parameters[parameter].annotation
+        if isinstance(annotation, str) and not _takes(annotation, value):
+            return TypeError(f"{name}(): {parameter} must be {_shown_type(annotation)}, not {type(value).__name__}")
+    shown = ", ".join(f"{p.name}: {_shown_type(p.annotation)}" for p in signature.parameters.values())
+    return TypeError(f"{name}(): the arguments do not fit ({shown})")
+
+
+def _with_signature(function, name=None):
+    """`function` as a Python function that inspect.signature and help() read, whose wrong arguments
+    are named as Python names them under `name` (pybind11 lists every overload and the arguments' reprs)."""
+    signature = _signature(function)
+    name = name or function.__name__
 
     @_functools.wraps(function)
     def call(*args, **kwargs):
-        return function(*args, **kwargs)
+        try:
+            return function(*args, **kwargs)
+        except TypeError as error:
+            if "incompatible function arguments" not in str(error) and "incompatible constructor" not in str(error):
+                raise
+            raise _refusal(name, signature, args, kwargs) from None
 
-    call.__signature__ = _signature(function)
+    call.__signature__ = signature.replace(
+        parameters=[p.replace(annotation=_inspect.Parameter.empty) for p in signature.parameters.values()])
     return call
 
 
@@ -101,7 +151,8 @@ def _give_signatures():
                     if callable(method) and (not member.startswith("_") or member in _WRAPPED_SPECIAL):
                         if member == "__init__":
                             method = _initialising_once(method)
-                        setattr(value, member, _with_signature(method))
+                        shown = value.__name__ if member == "__init__" else f"{value.__name__}.{member}"
+                        setattr(value, member, _with_signature(method, shown))
         else:
             names[name] = _with_signature(value)
 

@@ -468,3 +468,24 @@ def test_integers_out_of_range_and_wrong_creases_are_refused_in_words():
         gpsurf.Mesh([[0, 0, 0], [1, 0], [1, 1, 0]], [[0, 1, 2]])
     # numpy's integers stand for ints.
     assert len(gpsurf.tessellate(cube, np.int64(2))[2]) == len(gpsurf.tessellate(cube, 2)[2])
+
+
+def test_arguments_of_the_wrong_type_or_name_are_named_as_python_names_them():
+    # pybind11 answered each with its list of overloads and the arguments' reprs.
+    cube = gpsurf.sample("cube")
+    cases = [
+        (lambda: gpsurf.subdivide(cube, scheme=None), r"^subdivide\(\): scheme must be str, not NoneType$"),
+        (lambda: gpsurf.subdivide(cube, report="yes"), r"^subdivide\(\): got an unexpected keyword argument 'report'$"),
+        (lambda: gpsurf.tessellate(cube, "8"), r"^tessellate\(\): level must be int, not str$"),
+        (lambda: gpsurf.simplify(cube, vertices=1.5), r"^simplify\(\): vertices must be int or None, not float$"),
+        (lambda: gpsurf.subdivide("cube.obj"), r"^subdivide\(\): mesh must be gpsurf.Mesh, not str$"),
+        (lambda: gpsurf.subdivide(), r"^subdivide\(\): missing a required argument: 'mesh'$"),
+        (lambda: gpsurf.Surface(None), r"^Surface\(\): mesh must be gpsurf.Mesh, not NoneType$"),
+        (lambda: cube.copy(3), r"^Mesh.copy\(\): too many positional arguments$"),
+    ]
+    for call, message in cases:
+        with pytest.raises(TypeError, match=message) as raised:
+            call()
+        assert "incompatible" not in str(raised.value) and "_gpsurf" not in str(raised.value)
+    # The right types still go through, numpy's integers among them.
+    assert gpsurf.subdivide(cube, levels=np.int64(1), scheme="auto").n_faces == 24
