@@ -132,7 +132,10 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
       a.camera.empty() ? std::vector<float>{} : parse_floats(a.camera, "--camera", 2, 3);
   if (yaw_pitch_distance.size() > 2 && !(yaw_pitch_distance[2] > 0.0f))
     throw usage_error("--camera: the distance must be positive (in the mesh's units), got " + quoted_token(a.camera));
-  const Camera camera = render_camera(renderer, mesh, yaw_pitch_distance, up_axis_named(a.up), o, width, height);
+  const int up_axis = up_axis_named(a.up);
+  const Camera camera = naming_mesh_input(a.input, a.repair.import_options().repair, [&] {
+    return render_camera(renderer, mesh, yaw_pitch_distance, up_axis, o, width, height);
+  });
   if (a.reference >= 1 && a.reference <= 6 && scheme_for(mesh.topology(), a.plans.options()) == Scheme::catmull_clark) {
     // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level
     // then shows the two surfaces' values alone, not two draws' rounding (render/comparison/reference_triangles.h).

@@ -2,6 +2,10 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
 
 #include "core/support/error.h"
 
@@ -13,6 +17,34 @@ namespace {
 double edge_length(const CovarianceMesh& m, size_t e) {
   const auto [a, b] = m.edge(e);
   return (m.mean(size_t(b)) - m.mean(size_t(a))).norm();
+}
+
+// The mean length of the mesh's edges (0 without edges).
+double mean_edge_length(const CovarianceMesh& m) {
+  double total = 0;
+  for (size_t e = 0; e < m.n_edges(); ++e) total += edge_length(m, e);
+  return m.n_edges() ? total / double(m.n_edges()) : 0.0;
+}
+
+// Throws gps::Error naming the first vertex whose inferred covariance cannot be used, with `before`
+// (the covariances the mesh had) put back. Inferred covariances scale with the square of the mesh's
+// edges, so a mesh far smaller or larger than covariance_problem's range is named as such.
+void check_inferred(CovarianceMesh& m, std::vector<Mat3>&& before, const ElementNames& names) {
+  for (size_t i = 0; i < m.n_vertices(); ++i) {
+    const std::string why = covariance_problem(m.covariances[i]);
+    if (why.empty()) continue;
+    const double length = mean_edge_length(m);
+    m.covariances = std::move(before);
+    const std::string scale = length < std::sqrt(kMinCovarianceEigenvalue) * 1e5   ? "small"
+                              : length > std::sqrt(kMaxCovarianceEigenvalue) * 1e-5 ? "large"
+                                                                                     : "";
+    if (scale.empty()) throw Error(names.vertex(int(i)) + " " + why + " (inferred from its faces)");
+    char shown[32];
+    std::snprintf(shown, sizeof shown, "%.3g", length);
+    throw Error(names.vertex(int(i)) + " " + why + ": the mesh is too " + scale +
+                " for covariances inferred from its edges (" + shown +
+                " long on average); scale it to edges between 1e-45 and 1e45");
+  }
 }
 
 }  // namespace
@@ -43,6 +75,7 @@ void infer_covariances(CovarianceMesh& m, double bias, const ElementNames& names
   Mat3 inv;
   for (size_t f = 0; f < m.n_faces(); ++f)
     if (!face_precision(f, inv)) throw Error(names.face(int(f)) + " is degenerate (all its vertices coincide)");
+  std::vector<Mat3> before = std::move(m.covariances);
   std::vector<Mat3>& precision = m.covariances;
   precision.assign(m.n_vertices(), Mat3::Zero());
   for (size_t f = 0; f < m.n_faces(); ++f) {
@@ -50,9 +83,8 @@ void infer_covariances(CovarianceMesh& m, double bias, const ElementNames& names
     for (const int v : m.face(f)) precision[size_t(v)] += inv;
   }
   // An isolated vertex has no faces to infer from: σ = half the mesh's mean edge length.
-  double total = 0;
-  for (size_t e = 0; e < m.n_edges(); ++e) total += edge_length(m, e);
-  const double sigma = m.n_edges() && total > 0 ? 0.5 * total / double(m.n_edges()) : 1.0;
+  const double length = mean_edge_length(m);
+  const double sigma = length > 0 ? 0.5 * length : 1.0;
   for (size_t i = 0; i < m.n_vertices(); ++i) {
     const Eigen::LLT<Mat3> llt{Mat3(precision[i])};
     if (llt.info() != Eigen::Success) {
@@ -62,6 +94,7 @@ void infer_covariances(CovarianceMesh& m, double bias, const ElementNames& names
     const Mat3 cov = llt.solve(Mat3::Identity());
     m.covariances[i] = 0.5 * (cov + cov.transpose());
   }
+  check_inferred(m, std::move(before), names);
 }
 
 void isotropic_covariances(CovarianceMesh& m, double s) {
@@ -77,10 +110,12 @@ void isotropic_covariances(CovarianceMesh& m, double s) {
     total += l;
   }
   const double fallback = m.n_edges() ? total / double(m.n_edges()) : 1.0;
+  std::vector<Mat3> before = m.covariances;
   for (size_t i = 0; i < m.n_vertices(); ++i) {
     const double l = count[i] && sum[i] > 0 ? sum[i] / count[i] : fallback;
     m.covariances[i] = (s * l) * (s * l) * Mat3::Identity();
   }
+  check_inferred(m, std::move(before), {});
 }
 
 }  // namespace gps

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
+#include "core/support/error.h"
 #include "render/pipeline/surface_renderer.h"
 #include "view/silhouette_framing.h"
 
@@ -91,6 +94,13 @@ Camera render_camera(SurfaceRenderer& renderer, const CovarianceMesh& mesh,
   const NormalisedFrame& frame = renderer.frame();
   Vec3 lo, hi;
   bounding_box(mesh, lo, hi);
+  // The camera's distance and clipping planes are floats (view/camera.h), as the GPU takes them.
+  if (const double across = (hi - lo).norm(); across > 0 && (across < 1e-30 || across > 1e30)) {
+    char shown[32];
+    std::snprintf(shown, sizeof shown, "%.3g", across);
+    throw Error(std::string("the mesh spans ") + shown +
+                ", beyond the sizes a view frames (1e-30 to 1e30 across: its camera is in float); scale it first");
+  }
   const glm::dvec3 frame_lo = in_frame(frame, lo), frame_hi = in_frame(frame, hi);
   const Vec3 box_lo(frame_lo.x, frame_lo.y, frame_lo.z), box_hi(frame_hi.x, frame_hi.y, frame_hi.z);
   Camera camera = yaw_pitch_distance.size() < 2

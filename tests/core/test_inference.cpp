@@ -103,6 +103,34 @@ TEST(Inference, DegenerateFaceAndBadBiasAreErrors) {
   }
 }
 
+// Inferred covariances scale as the square of the edges: a mesh whose edges are far under or over the
+// covariances' range is named as too small or too large, with its covariances left as they were.
+TEST(Inference, AMeshTooSmallOrTooLargeForItsCovariancesIsNamedSo) {
+  for (const double scale : {1e-60, 1e-160, 1e60}) {
+    std::vector<Vec3> corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    for (Vec3& p : corners) p *= scale;
+    for (const bool isotropic : {false, true}) {
+      CovarianceMesh m = plain(corners, {{0, 1, 2, 3}});
+      const std::vector<Mat3> before = m.covariances;
+      try {
+        isotropic ? isotropic_covariances(m) : infer_covariances(m);
+        ADD_FAILURE() << scale;
+      } catch (const Error& e) {
+        const std::string expected = scale < 1 ? "the mesh is too small" : "the mesh is too large";
+        EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        EXPECT_EQ(std::string(e.what()).rfind("vertex 0 has a covariance", 0), 0u) << e.what();
+      }
+      EXPECT_EQ(m.covariances, before) << scale;
+    }
+  }
+  // Within the range, at either end: accepted.
+  for (const double scale : {1e-40, 1e40}) {
+    CovarianceMesh m = plain({{0, 0, 0}, {scale, 0, 0}, {scale, scale, 0}, {0, scale, 0}}, {{0, 1, 2, 3}});
+    EXPECT_NO_THROW(infer_covariances(m)) << scale;
+    EXPECT_EQ(gaussians_problem(m), "") << scale;
+  }
+}
+
 // Isotropic: σ_i = s × the mean length of the edges at vertex i.
 TEST(Inference, IsotropicVarianceFollowsLocalEdgeLength) {
   // A strip of two quads, the second twice as long: edge lengths 1 and 2.

@@ -572,6 +572,33 @@ TEST(RenderCli, AnImageTooSmallForTheSurfaceSaysSo) {
   }
 }
 
+// A mesh too small or too large for the float camera was drawn as nothing and blamed on thin
+// Gaussians: refused by its size; within the range it is drawn.
+TEST(RenderCli, AMeshBeyondTheCamerasSizesIsRefusedBySize) {
+  test::TempDir dir;
+  for (const double scale : {1e-31, 1e-29, 1e29, 1e31}) {
+    // The unit cube with every coordinate written times the scale.
+    const std::string e = "e" + std::to_string(int(std::lround(std::log10(scale))));
+    std::string scaled;
+    for (int c = 0; c < 8; ++c)
+      scaled += "v " + std::to_string(c & 1) + e + " " + std::to_string((c >> 1) & 1) + e + " " +
+                std::to_string(c >> 2) + e + "\n";
+    scaled += "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+    const std::string mesh = dir.write("cube.obj", scaled), image = dir.file("a.png");
+    const auto r = run_command(gpsurf("render " + mesh + " -o " + image + " --size 64x48"));
+    if (scale > 1e-30 && scale < 1e30) {
+      EXPECT_EQ(r.exit_code, 0) << scale << ": " << r.output;
+      EXPECT_TRUE(std::filesystem::exists(image)) << scale;
+    } else {
+      EXPECT_EQ(r.exit_code, 1) << scale << ": " << r.output;
+      EXPECT_NE(r.output.find("cube.obj: the mesh spans "), std::string::npos) << r.output;
+      EXPECT_NE(r.output.find("beyond the sizes a view frames (1e-30 to 1e30 across"), std::string::npos) << r.output;
+      EXPECT_FALSE(std::filesystem::exists(image)) << scale;
+    }
+    std::filesystem::remove(image);
+  }
+}
+
 // A camera given so near the mesh that the view ends before the surface (inside the pawn): said so,
 // with how far the view reaches (it said only that the surface covered no pixel).
 TEST(RenderCli, ACameraSoNearThatTheViewEndsShortOfTheSurfaceSaysSo) {
