@@ -26,31 +26,23 @@ double mean_edge_length(const CovarianceMesh& m) {
   return m.n_edges() ? total / double(m.n_edges()) : 0.0;
 }
 
-// Throws gps::Error naming the first vertex whose inferred covariance cannot be used, with `before`
-// (the covariances the mesh had) put back. Inferred covariances scale with the square of the mesh's
-// edges, so a mesh far smaller or larger than covariance_problem's range is named as such.
-void check_inferred(CovarianceMesh& m, std::vector<Mat3>&& before, const ElementNames& names) {
-  for (size_t i = 0; i < m.n_vertices(); ++i) {
-    const std::string why = covariance_problem(m.covariances[i]);
-    if (why.empty()) continue;
-    const double length = mean_edge_length(m);
-    m.covariances = std::move(before);
-    const std::string scale = length < std::sqrt(kMinCovarianceEigenvalue) * 1e5   ? "small"
-                              : length > std::sqrt(kMaxCovarianceEigenvalue) * 1e-5 ? "large"
-                                                                                     : "";
-    if (scale.empty()) throw Error(names.vertex(int(i)) + " " + why + " (inferred from its faces)");
-    char shown[32];
-    std::snprintf(shown, sizeof shown, "%.3g", length);
-    throw Error(names.vertex(int(i)) + " " + why + ": the mesh is too " + scale +
-                " for covariances inferred from its edges (" + shown +
-                " long on average); scale it to edges between 1e-45 and 1e45");
-  }
+// Inferred covariances scale as the square of the edges: throws gps::Error, with the mesh unchanged,
+// where the mean edge length would put them beyond covariance_problem's range [1e-100, 1e100].
+void check_scale(const CovarianceMesh& m) {
+  const double length = mean_edge_length(m);
+  if (length == 0 || (length >= 1e-45 && length <= 1e45)) return;
+  char shown[32];
+  std::snprintf(shown, sizeof shown, "%.3g", length);
+  throw Error(std::string("the mesh is too ") + (length < 1 ? "small" : "large") +
+              " for covariances inferred from its edges (" + shown + " long on average; its covariances would be " +
+              (length < 1 ? "under 1e-100" : "over 1e100") + "): scale it to edges between 1e-45 and 1e45");
 }
 
 }  // namespace
 
 void infer_covariances(CovarianceMesh& m, double bias, const ElementNames& names) {
   if (!(bias > 0)) throw usage_error("the inference bias must be positive, got " + std::to_string(bias));
+  check_scale(m);
   std::vector<Vec3> p;
   // The precision of face f's points, or false where the face is degenerate.
   const auto face_precision = [&](size_t f, Mat3& inv) {
@@ -75,7 +67,6 @@ void infer_covariances(CovarianceMesh& m, double bias, const ElementNames& names
   Mat3 inv;
   for (size_t f = 0; f < m.n_faces(); ++f)
     if (!face_precision(f, inv)) throw Error(names.face(int(f)) + " is degenerate (all its vertices coincide)");
-  std::vector<Mat3> before = std::move(m.covariances);
   std::vector<Mat3>& precision = m.covariances;
   precision.assign(m.n_vertices(), Mat3::Zero());
   for (size_t f = 0; f < m.n_faces(); ++f) {
@@ -94,11 +85,11 @@ void infer_covariances(CovarianceMesh& m, double bias, const ElementNames& names
     const Mat3 cov = llt.solve(Mat3::Identity());
     m.covariances[i] = 0.5 * (cov + cov.transpose());
   }
-  check_inferred(m, std::move(before), names);
 }
 
 void isotropic_covariances(CovarianceMesh& m, double s) {
   if (!(s > 0)) throw usage_error("the isotropic scale must be positive, got " + std::to_string(s));
+  check_scale(m);
   std::vector<double> sum(m.n_vertices(), 0.0);
   std::vector<int> count(m.n_vertices(), 0);
   double total = 0;
@@ -110,12 +101,10 @@ void isotropic_covariances(CovarianceMesh& m, double s) {
     total += l;
   }
   const double fallback = m.n_edges() ? total / double(m.n_edges()) : 1.0;
-  std::vector<Mat3> before = m.covariances;
   for (size_t i = 0; i < m.n_vertices(); ++i) {
     const double l = count[i] && sum[i] > 0 ? sum[i] / count[i] : fallback;
     m.covariances[i] = (s * l) * (s * l) * Mat3::Identity();
   }
-  check_inferred(m, std::move(before), {});
 }
 
 }  // namespace gps
