@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "core/io/json_text.h"
 #include "core/io/mesh_io.h"
 #include "core/mesh/covariance_mesh.h"
 #include "core/support/error.h"
@@ -147,22 +148,26 @@ std::string text_of(const py::handle& text, const std::string& where) {
 
 // `value` as json.dumps takes it: numpy's scalars and arrays as Python numbers and lists, in dicts and
 // sequences too. A number that is not finite, which JSON cannot hold, or a str that is not text is a
-// ValueError naming `where`.
-py::object json_ready(const py::handle& value, const std::string& where) {
+// ValueError naming `where`; so is nesting deeper than the command line's JSON reader takes (a dict
+// or list that holds itself among them), walked here before the stack would overflow.
+py::object json_ready(const py::handle& value, const std::string& where, int depth = 0) {
   static const py::handle numpy_scalar = py::object(py::module_::import("numpy").attr("generic")).release();
+  if (size_t(depth) > kMaxJsonDepth)
+    throw py::value_error(where + " is nested more than " + std::to_string(kMaxJsonDepth) +
+                          " levels deep (or holds itself)");
   if (py::isinstance<py::array>(value) || py::isinstance(value, numpy_scalar))
-    return json_ready(value.attr("tolist")(), where);
+    return json_ready(value.attr("tolist")(), where, depth + 1);
   if (PyFloat_Check(value.ptr()) && !std::isfinite(PyFloat_AsDouble(value.ptr())))
     throw py::value_error(where + " is not finite");
   if (py::isinstance<py::str>(value)) text_of(value, where);
   if (py::isinstance<py::dict>(value)) {
     py::dict out;
-    for (const auto& [key, item] : value.cast<py::dict>()) out[key] = json_ready(item, where);
+    for (const auto& [key, item] : value.cast<py::dict>()) out[key] = json_ready(item, where, depth + 1);
     return out;
   }
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     py::list out;
-    for (const py::handle item : value) out.append(json_ready(item, where));
+    for (const py::handle item : value) out.append(json_ready(item, where, depth + 1));
     return out;
   }
   return py::reinterpret_borrow<py::object>(value);

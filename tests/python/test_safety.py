@@ -489,3 +489,28 @@ def test_arguments_of_the_wrong_type_or_name_are_named_as_python_names_them():
         assert "incompatible" not in str(raised.value) and "_gpsurf" not in str(raised.value)
     # The right types still go through, numpy's integers among them.
     assert gpsurf.subdivide(cube, levels=np.int64(1), scheme="auto").n_faces == 24
+
+
+def test_ops_that_hold_themselves_or_nest_too_deep_are_refused_instead_of_crashing():
+    # Once a segfault: the ops were walked into JSON by recursion without a bound.
+    script = (
+        "import gpsurf\n"
+        "op = {'op': 'extrude', 'faces': [0], 'distance': 0.5}\n"
+        "op['self'] = op\n"
+        "faces = [0]\n"
+        "faces.append(faces)\n"
+        "deep = [0]\n"
+        "for _ in range(100000): deep = [deep]\n"
+        "for ops in ([op], [{'op': 'extrude', 'faces': faces}], [{'op': 'extrude', 'faces': deep}]):\n"
+        "    try:\n"
+        "        gpsurf.edit(gpsurf.sample('cube'), ops)\n"
+        "    except ValueError as e:\n"
+        "        print(e)\n"
+    )
+    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines() == [
+        'ops[0] (extrude): "self" is nested more than 64 levels deep (or holds itself)',
+        'ops[0] (extrude): "faces" is nested more than 64 levels deep (or holds itself)',
+        'ops[0] (extrude): "faces" is nested more than 64 levels deep (or holds itself)',
+    ]
