@@ -61,6 +61,21 @@ double largest_part_share(const CovarianceMesh& mesh) {
   return whole > 0 ? largest / whole : 1.0;
 }
 
+// How many pixels across the mesh's bounding box shows in the width × height image of `camera`.
+double pixels_across(const CovarianceMesh& mesh, const Camera& camera, int width, int height) {
+  Vec3 lo, hi;
+  bounding_box(mesh, lo, hi);
+  const glm::dmat4 view_projection = camera.view_projection_double(float(width) / float(height));
+  glm::dvec2 min(HUGE_VAL), max(-HUGE_VAL);
+  for (int c = 0; c < 8; ++c) {
+    const glm::dvec4 p = view_projection * glm::dvec4(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(),
+                                                      c & 4 ? hi.z() : lo.z(), 1.0);
+    const glm::dvec2 pixel = (glm::dvec2(p) / p.w * 0.5 + 0.5) * glm::dvec2(width, height);
+    min = glm::min(min, pixel), max = glm::max(max, pixel);
+  }
+  return std::max(max.x - min.x, max.y - min.y);
+}
+
 struct RenderArgs {
   std::string input, output, size = "800x600", matcap = "clay", mode = "matcap", camera, background = "1,1,1", up = "y";
   std::vector<std::string> aovs;
@@ -159,6 +174,13 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   // From a distance given, an image without it shows that camera's view of nothing: refused as well,
   // with the mesh's size to place the camera by.
   if (count_covered_pixels(normal) == 0) {
+    if (yaw_pitch_distance.size() < 3 && a.ellipsoids && pixels_across(mesh, camera, width, height) < 2.0) {
+      std::ostringstream sigma;
+      sigma << a.sigma;
+      throw Error(a.input + ": the surface covers no pixel of the image framed on it: the ellipsoids at sigma " +
+                  sigma.str() + " frame an image in which it is under 2 pixels across (use a smaller sigma or a " +
+                  "larger size); nothing written");
+    }
     if (yaw_pitch_distance.size() < 3) {
       // An image a pixel or two across, or parts far apart, each under a pixel of the image framed on
       // them all, cover no pixel's centre.

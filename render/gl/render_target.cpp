@@ -38,8 +38,7 @@ RenderTarget::RenderTarget(int width, int height)
   }
   glNamedRenderbufferStorage(depth_, GL_DEPTH_COMPONENT32F, width, height);
   glNamedFramebufferRenderbuffer(fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-  const GLenum draw[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glNamedFramebufferDrawBuffers(fbo_, 3, draw);
+  set_colour_only(false);
   if (glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw Error("the off-screen framebuffer is incomplete");
   check_gl_errors("creating the render target");
@@ -48,6 +47,12 @@ RenderTarget::RenderTarget(int width, int height)
 void RenderTarget::bind() const {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glViewport(0, 0, width_, height_);
+}
+
+void RenderTarget::set_colour_only(bool colour_only) const {
+  const GLenum colour[3] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE},
+               all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(fbo_, 3, colour_only ? colour : all);
 }
 
 Image RenderTarget::read(int attachment) const {

@@ -24,6 +24,9 @@ public:
   std::uint64_t serial() const { return serial_; }
   /// Binds it for drawing, with all three outputs, and sets the viewport.
   void bind() const;
+  /// Whether draws write the colour alone (overlays: their shaders leave the position and normal
+  /// outputs undefined, which would then read as surface) or all three outputs.
+  void set_colour_only(bool colour_only) const;
   /// Attachment 0 as RGBA in [0,1]; 1 (position) and 2 (normal) as xyz + coverage (w ≥ 1 where drawn;
   /// the normal's w is 2 where a regular plan node was evaluated, 3 where a terminal one).
   Image read(int attachment) const;

@@ -49,8 +49,7 @@ void CageLines::draw(const RenderTarget& target, const glm::mat4& view_projectio
                      const std::vector<char>* hidden_edges) const {
   program_.set("u_view_projection", view_projection);
   program_.use();
-  const GLenum only_colour[3] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE};
-  glNamedFramebufferDrawBuffers(target.framebuffer(), 3, only_colour);
+  target.set_colour_only(true);
   glBindVertexArray(vao_);
   // The runs [first, end) of edges shown (edge e is indices 2e, 2e + 1): all, or those not hidden.
   const int n_edges = index_count_ / 2;
@@ -81,8 +80,7 @@ void CageLines::draw(const RenderTarget& target, const glm::mat4& view_projectio
   glDisablei(GL_BLEND, 0);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LEQUAL);
-  const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glNamedFramebufferDrawBuffers(target.framebuffer(), 3, all);
+  target.set_colour_only(false);
 }
 
 }  // namespace gps

@@ -87,8 +87,7 @@ void PointOverlay::draw(const RenderTarget& target, const Camera& camera, const 
   program_.set("u_measured", measured_ ? 1 : 0);
   program_.use();
   target.bind();
-  const GLenum only_colour[3] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE};
-  glNamedFramebufferDrawBuffers(target.framebuffer(), 3, only_colour);
+  target.set_colour_only(true);
   glBindTextureUnit(0, ramp_);
   glBindVertexArray(vao_);
   glEnable(GL_DEPTH_TEST);
@@ -97,8 +96,7 @@ void PointOverlay::draw(const RenderTarget& target, const Camera& camera, const 
   glDrawArrays(GL_POINTS, 0, GLsizei(count_));
   glDisable(GL_PROGRAM_POINT_SIZE);
   glBindVertexArray(0);
-  const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glNamedFramebufferDrawBuffers(target.framebuffer(), 3, all);
+  target.set_colour_only(false);
   check_gl_errors("drawing the target points");
 }
 

@@ -225,7 +225,9 @@ void SurfaceRenderer::draw(const RenderTarget& target, const Camera& camera, con
     const GpuPassScope pass(timer_, "ellipsoids");
     if (!ellipsoids_current_) ellipsoids_.upload(framed_, nullptr);
     ellipsoids_current_ = true;
+    target.set_colour_only(true);
     ellipsoids_.draw(frame_view_projection(camera, aspect, frame_), o.sigma_scale, o.ellipsoid_vertices);
+    target.set_colour_only(false);
   }
   if (o.mesh_lines && !cage_.empty()) {
     const GpuPassScope pass(timer_, "mesh lines");

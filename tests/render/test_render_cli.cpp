@@ -599,6 +599,41 @@ TEST(RenderCli, AMeshBeyondTheCamerasSizesIsRefusedBySize) {
   }
 }
 
+// The ellipsoids are an overlay: they leave the AOVs to the surface (their shader's undefined position
+// and normal outputs read as surface at random pixels, and a surface under a pixel passed or failed
+// the coverage check from one run to the next), and a surface they frame too small is said so.
+TEST(RenderCli, EllipsoidsLeaveTheAovsToTheSurface) {
+  test::TempDir dir;
+  ASSERT_EQ(run_command(gpsurf("sample cube -o " + dir.file("cube.ply"))).exit_code, 0);
+  const auto r = run_command(gpsurf("render " + dir.file("cube.ply") + " -o " + dir.file("c.png") +
+                                    " --size 64x48 --sigma 3 --ellipsoids --aov normal=" + dir.file("n.exr") +
+                                    " --aov position=" + dir.file("p.exr")));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // Where the surface is, a unit normal and a point on the cube's rounded limit surface; elsewhere zero.
+  const Image normal = read_image(dir.file("n.exr")), position = read_image(dir.file("p.exr"));
+  int surface = 0, other = 0;
+  for (int y = 0; y < normal.height; ++y)
+    for (int x = 0; x < normal.width; ++x) {
+      const Vec3 n(normal.at(x, y, 0), normal.at(x, y, 1), normal.at(x, y, 2)),
+          p(position.at(x, y, 0), position.at(x, y, 1), position.at(x, y, 2));
+      if (normal.at(x, y, 3) == 0 && position.at(x, y, 3) == 0 && n.isZero(0) && p.isZero(0))
+        continue;
+      const bool on_surface = normal.at(x, y, 3) >= 1 && normal.at(x, y, 3) <= 4 && position.at(x, y, 3) >= 1 &&
+                              std::abs(n.norm() - 1) < 1e-3 && p.cwiseAbs().maxCoeff() <= 1.0001;
+      (on_surface ? surface : other) += 1;
+    }
+  EXPECT_GT(surface, 20);
+  EXPECT_EQ(other, 0);
+  for (int run = 0; run < 3; ++run) {
+    const auto r = run_command(gpsurf("render " + dir.file("cube.ply") + " -o " + dir.file("f.png") +
+                                      " --size 80x80 --ellipsoids --sigma 50"));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("the ellipsoids at sigma 50 frame an image in which it is under 2 pixels across"),
+              std::string::npos)
+        << r.output;
+  }
+}
+
 // A camera given so near the mesh that the view ends before the surface (inside the pawn): said so,
 // with how far the view reaches (it said only that the surface covered no pixel).
 TEST(RenderCli, ACameraSoNearThatTheViewEndsShortOfTheSurfaceSaysSo) {
