@@ -71,6 +71,7 @@ private:
   std::vector<char> welded_away_;   // per vertex of the file: merged into a lower one
   std::vector<char> in_file_face_;  // per vertex of the file: used by a face of the file
   std::vector<int> weld_root_;      // per vertex of the file: the vertex it was welded to (itself if none)
+  std::vector<char> weld_joined_;   // per vertex of the file: others were welded to it
   std::vector<int> pair_;           // per corner: the corner across its edge (to the next corner), or −1
   std::vector<int> corner_face_;    // per corner: its face
   std::vector<int> edge_corners_, edge_offsets_;  // the corners of each edge (separate_fans)
@@ -83,6 +84,9 @@ private:
     auto& list = report_.examples[size_t(d)];
     if (list.size() < kExamples) list.push_back(e);
   }
+  // Whether other vertices of the file were welded to vertex v.
+  bool joined(int v) const { return size_t(v) < weld_joined_.size() && weld_joined_[size_t(v)]; }
+
   void found(Defect d, const DefectExample& e) {
     ++report_.counts[size_t(d)];
     example(d, e);
@@ -132,6 +136,8 @@ private:
     weld_root_ = weld_roots(p, tolerance_);
     std::vector<int> group_size(p.size(), 0);
     for (int v = 0; v < int(p.size()); ++v) ++group_size[size_t(weld_root_[size_t(v)])];
+    weld_joined_.assign(p.size(), 0);
+    for (size_t v = 0; v < p.size(); ++v) weld_joined_[v] = group_size[v] > 1;
     for (int v = 0; v < int(p.size()); ++v) {
       const int root = weld_root_[size_t(v)];
       if (group_size[size_t(root)] < 2) continue;
@@ -289,7 +295,7 @@ private:
     // fans the fins' cuts make past those are the fins' copies.
     for (size_t v = 0; v < file_fans.size(); ++v) {
       if (file_fans[v] > 1) {
-        found(Defect::pinch_vertices, {int(v), -1, file_fans[v]});
+        found(Defect::pinch_vertices, {int(v), -1, file_fans[v], joined(int(v))});
         report_.pinch_copies += file_fans[v] - 1;
       }
       report_.fin_copies += final_fans[v] - file_fans[v];
@@ -371,7 +377,7 @@ private:
       if (m <= 2) continue;
       fin_edges_.push_back(e);
       const int a = t.verts[size_t(c[0])], b = t.verts[size_t(next_corner(c[0]))];
-      found(Defect::fin_edges, {std::min(a, b), std::max(a, b), m});
+      found(Defect::fin_edges, {std::min(a, b), std::max(a, b), m, joined(a) || joined(b)});
       sides.clear();
       for (int i = 0; i < m; ++i) {
         char parity = 0;

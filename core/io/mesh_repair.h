@@ -68,6 +68,7 @@ struct DefectExample {
   int element = -1;  // the vertex (coincident, fin, pinch, isolated) or face (the others)
   int other = -1;    // coincident: the vertex it is welded to; duplicate: the earlier face; fin: the other end
   int count = 0;     // fin: the faces on the edge; pinch: the fans
+  bool welded = false;  // fin, pinch: at a vertex coincident vertices were welded into (not so as read)
 };
 
 struct RepairReport {

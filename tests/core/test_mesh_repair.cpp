@@ -229,6 +229,27 @@ TEST(MeshRepair, PinchVertexOfTwoTetrahedraIsSplit) {
   EXPECT_EQ(r.boundary_loops, 0);
 }
 
+// Two tetrahedra touching at a point that the file holds twice are a pinch only once the copies are
+// welded: named so among the defects of the file as read (the repair gives the same mesh back).
+TEST(MeshRepair, APinchMadeByTheWeldIsNamedAsSuch) {
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> faces;
+  add_tetrahedron(p, faces, Vec3(0, 0, 0));
+  add_tetrahedron(p, faces, Vec3(0, 0, 0), 0);
+  p.push_back(p[0]);  // the second tetrahedron's apex as a vertex of its own
+  for (size_t f = 4; f < faces.size(); ++f)
+    for (int& v : faces[f])
+      if (v == 0) v = 7;
+  PolygonSoup s = soup_of(p, faces);
+  const RepairReport r = repair_polygon_soup(s);
+  EXPECT_EQ(r.count(Defect::coincident_vertices), 2);
+  EXPECT_EQ(r.count(Defect::pinch_vertices), 1);
+  EXPECT_EQ(r.problems({}, true), std::vector<std::string>{"non-manifold (pinch) vertices: 1 (vertex 0 with 2 "
+                                                           "fans once coincident vertices are welded)"});
+  EXPECT_EQ(s.positions.size(), 8u);
+  EXPECT_EQ(r.parts, 2);
+}
+
 TEST(MeshRepair, DanglingTrianglesAreSeparated) {
   std::vector<Vec3> p;
   std::vector<std::vector<int>> faces;
