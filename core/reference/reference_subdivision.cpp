@@ -279,6 +279,10 @@ SubdivisionResult subdivide(const CovarianceMesh& mesh, const SubdivisionOptions
   });
   if (first_invalid < n)
     throw Error("subdivided vertex " + std::to_string(first_invalid) + " left the cone of positive definite matrices");
+  if (options.levels == 0 && !options.limit) {  // the mesh's own Gaussians, not their round trip through 9D
+    means = mesh.means();
+    covariances = mesh.covariances;
+  }
   Sharpness sharpness = sharpness_of(r.connectivity, r.creases);
   result.mesh = make_covariance_mesh(std::move(means), std::move(covariances), std::move(r.topology),
                                      std::move(r.connectivity), "subdivided mesh");

@@ -42,6 +42,21 @@ TEST(ReferenceSubdivision, EqualIsotropicCovariancesGiveTheLinearScheme) {
   }
 }
 
+// No level and no limit: the mesh itself, its Gaussians bit for bit (their round trip through the
+// 9D points moved a triangle's corners by a few units in the last place).
+TEST(ReferenceSubdivision, NoLevelGivesTheMeshsOwnGaussians) {
+  CovarianceMesh pawn = make_sample("pawn");
+  randomize_covariances(pawn, 3);
+  for (const auto& [mesh, scheme] : {std::pair{test::icosahedron_mesh(), Scheme::loop},
+                                     std::pair{test::icosahedron_mesh(), Scheme::catmull_clark},
+                                     std::pair{pawn, Scheme::catmull_clark}}) {
+    const CovarianceMesh out = subdivide(mesh, {scheme, 0, false}).mesh;
+    EXPECT_EQ(out.means(), mesh.means());
+    EXPECT_EQ(out.covariances, mesh.covariances);
+    EXPECT_EQ(out.topology().verts, mesh.topology().verts);
+  }
+}
+
 TEST(ReferenceSubdivision, ScalingEveryCovarianceChangesNothing) {
   for (const Scheme scheme : {Scheme::catmull_clark, Scheme::loop}) {
     CovarianceMesh mesh = scheme == Scheme::loop ? test::cone_mesh() : test::prism_mesh();
