@@ -345,6 +345,10 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
     chords[s.face].push_back(chord);
     chord = {on_cut.back()};
   }
+  // A loop that meets no edge would cut a hole in its face, which the knife does not.
+  if (closed && first_chord.first < 0 && !steps.empty())
+    throw Error("the closed path lies inside face " + std::to_string(steps.front().face) +
+                " and would cut a hole in it; a loop must cross the face's edges");
   // A loop that closes inside a face: its last chord and its first are one, through the start.
   if (closed && start.kind == Place::inside && chord.size() > 1 && first_chord.first >= 0) {
     std::vector<int>& first = chords[first_chord.first][first_chord.second];

@@ -258,6 +258,11 @@ TEST(Knife, RefusalsNameThePointAndChangeNothing) {
        {std::vector<Vec3>{Vec3(-0.5, 0, 1), Vec3(0.5, 0, 1), Vec3(0, 0.5, 1), Vec3(0, -0.5, 1)},
         std::vector<Vec3>{Vec3(-0.5, -0.5, 1), Vec3(0.5, 0.5, 1), Vec3(0.5, -0.5, 1), Vec3(-0.5, 0.5, 1)}})
     EXPECT_EQ(error_of([&] { knife(cube, path); }), "the cut crosses itself in face 1");
+  // A loop inside the top face that meets none of its edges: a hole, not a cut.
+  EXPECT_EQ(error_of([&] {
+              knife(cube, {Vec3(-0.5, -0.5, 1), Vec3(0.5, -0.5, 1), Vec3(0, 0.5, 1), Vec3(-0.5, -0.5, 1)});
+            }),
+            "the closed path lies inside face 1 and would cut a hole in it; a loop must cross the face's edges");
   EXPECT_TRUE(test::same_mesh(cube, copy));
 }
 
