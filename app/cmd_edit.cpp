@@ -41,7 +41,14 @@ void add_edit_command(CLI::App& app) {
                         " is not a JSON array; to read the operations from that file, write --ops @" + args->ops);
     const OperationList ops = [&] {
       try {
-        return OperationList::parse(from_file ? read_text_file(source) : args->ops, source);
+        if (!from_file) return OperationList::parse(args->ops, source);
+        std::string text;
+        try {
+          text = read_text_file(source);
+        } catch (const Error& e) {  // named by its option, as the mesh's file is by its own message
+          throw Error("--ops: " + std::string(e.what()), e.kind());
+        }
+        return OperationList::parse(text, source);
       } catch (const Error& e) {
         // Inline text that is not JSON at all is named by its option.
         if (!from_file && std::string_view(e.what()).starts_with("not valid JSON"))

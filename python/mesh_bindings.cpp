@@ -366,7 +366,7 @@ void add_mesh_bindings(py::module_& m) {
       [](const MeshHandle& mesh, const py::object& ops) {
         return call_in_background(
             [text = ops_text(ops), source = mesh.mesh](CallControl&) {
-              return hold(OperationList::parse(text, "ops").apply(*source).mesh);
+              return hold(OperationList::parse(text, std::string()).apply(*source).mesh);  // named ops[i]
             },
             py::none(), false);
       },
