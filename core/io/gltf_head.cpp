@@ -46,13 +46,26 @@ void check_accessor_reference(const nlohmann::json& value, size_t accessors, con
     throw Error(where + ": " + what + " names accessor " + value.dump() + ", which is not in the file");
 }
 
+// The morph target weights of a mesh or node (`name`: "node 2"), which must be numbers: tinygltf reads
+// them only up to the first that is not, and weights that are no array as none.
+void check_weights(const nlohmann::json& element, const std::string& name) {
+  const auto weights = element.find("weights");
+  if (weights == element.end()) return;
+  if (!weights->is_array()) throw Error(name + ": weights is " + shown(*weights) + ", not an array");
+  for (size_t k = 0; k < weights->size(); ++k)
+    if (!(*weights)[k].is_number())
+      throw Error(name + ": weight " + std::to_string(k) + " is " + shown((*weights)[k]) + ", not a number");
+}
+
 // Each mesh's primitives as glTF 2.0 defines them: tinygltf drops a primitive whose attributes it cannot
 // read (its geometry lost without a word), reads indices or a mode that are not integers as absent, and
-// keeps a mode glTF has not.
+// keeps a mode glTF has not; it drops a morph target that is not an object, renumbering those after it,
+// and an attribute of one that is not an integer.
 void check_primitives(const nlohmann::json& meshes, size_t accessors) {
   for (size_t m = 0; m < meshes.size(); ++m) {
     const std::string mesh_name = "mesh " + std::to_string(m);
     const nlohmann::json& mesh = object_at(meshes, m, mesh_name);
+    check_weights(mesh, mesh_name);
     const auto primitives = mesh.find("primitives");
     if (primitives == mesh.end()) throw Error(mesh_name + " has no primitives");
     if (!primitives->is_array()) throw Error(mesh_name + ": primitives is " + shown(*primitives) + ", not an array");
@@ -66,6 +79,14 @@ void check_primitives(const nlohmann::json& meshes, size_t accessors) {
         check_accessor_reference(accessor, accessors, where, "attribute " + quoted_token(name));
       if (const auto indices = primitive.find("indices"); indices != primitive.end())
         check_accessor_reference(*indices, accessors, where, "indices");
+      if (const auto targets = primitive.find("targets"); targets != primitive.end()) {
+        if (!targets->is_array()) throw Error(where + ": targets is " + shown(*targets) + ", not an array");
+        for (size_t t = 0; t < targets->size(); ++t) {
+          const std::string target = "target " + std::to_string(t);
+          for (const auto& [name, accessor] : object_at(*targets, t, where + " " + target).items())
+            check_accessor_reference(accessor, accessors, where, target + " attribute " + quoted_token(name));
+        }
+      }
       if (const auto mode = primitive.find("mode");
           mode != primitive.end() && !(mode->is_number_unsigned() && mode->get<uint64_t>() <= 6))
         throw Error(where + ": mode " + shown(*mode) + " is none of glTF's (0 POINTS to 6 TRIANGLE_FAN)");
@@ -113,9 +134,10 @@ const nlohmann::json& array_of(const nlohmann::json& top, const char* key) {
 }  // namespace
 
 GltfHead read_gltf_head(std::string_view json_text) {
-  // Only the top level's "asset", "extensionsRequired", the buffers' file uris, the meshes and the
-  // accessors are kept while parsing: the rest (base64 buffers among it) is read past, not held.
-  constexpr std::array<std::string_view, 5> kKept = {"asset", "extensionsRequired", "buffers", "meshes", "accessors"};
+  // Only the top level's "asset", "extensionsRequired", the buffers' file uris, the meshes, the nodes and
+  // the accessors are kept while parsing: the rest (base64 buffers among it) is read past, not held.
+  constexpr std::array<std::string_view, 6> kKept = {"asset", "extensionsRequired", "buffers", "meshes",
+                                                     "nodes", "accessors"};
   std::string section;  // the top-level member being parsed
   const nlohmann::json::parser_callback_t keep_head = [&](int depth, nlohmann::json::parse_event_t event,
                                                           nlohmann::json& parsed) {
@@ -162,6 +184,9 @@ GltfHead read_gltf_head(std::string_view json_text) {
   const nlohmann::json& accessors = array_of(top, "accessors");
   check_accessors(accessors);
   check_primitives(array_of(top, "meshes"), accessors.size());
+  const nlohmann::json& nodes = array_of(top, "nodes");
+  for (size_t n = 0; n < nodes.size(); ++n)
+    if (nodes[n].is_object()) check_weights(nodes[n], "node " + std::to_string(n));
   return head;
 }
 

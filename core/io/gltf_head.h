@@ -1,8 +1,8 @@
 #pragma once
 // The top of a glTF file's JSON, read before tinygltf reads the file: its version, the extensions it
 // requires (its "extensionsRequired", glTF 2.0 §3.12: a reader must refuse a file that needs one it does
-// not know, rather than read it wrong), the files its buffers name, and its meshes' primitives and
-// accessors checked as glTF defines them (tinygltf drops a primitive it cannot read without a word,
+// not know, rather than read it wrong), the files its buffers name, and its meshes' primitives, morph
+// weights and accessors checked as glTF defines them (tinygltf drops a primitive it cannot read without a word,
 // and refuses an accessor in its own words).
 #include <cstddef>
 #include <optional>
@@ -26,9 +26,10 @@ struct GltfHead {
 /// other than 2.x, for the first extension the file requires and gpsurf does not read (naming it, and
 /// what to do where it is a compression), for JSON nested deeper than kMaxJsonDepth, for an accessor
 /// whose componentType, type or count glTF has not ("accessor 2: componentType 9999 is none of
-/// glTF's …"), and for a primitive without attributes, with an attribute or indices that name no
-/// accessor of the file, or with a mode glTF has not ("mesh 0 primitive 1: mode 7 is none of glTF's
-/// …"). Text that is not valid JSON passes: the reader refuses it with its own words.
+/// glTF's …"), for a primitive without attributes, with an attribute, indices or a morph target's
+/// attribute that name no accessor of the file, or with a mode glTF has not ("mesh 0 primitive 1: mode
+/// 7 is none of glTF's …"), and for a mesh's or node's morph weights that are not numbers. Text that is
+/// not valid JSON passes: the reader refuses it with its own words.
 GltfHead read_gltf_head(std::string_view json_text);
 
 /// A uri's path as RFC 3986 decodes it: %XX escapes only ('+' stays a plus).

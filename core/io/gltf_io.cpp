@@ -44,43 +44,21 @@ struct AccessorBytes {
 struct AccessorRule {
   std::vector<int> types, component_types;
   bool integers_normalized = false;  // integer components must be normalized (mapped to [0, 1] or [−1, 1])
-  bool values_read = true;           // false: an attribute dropped unread, which may be sparse or all zeros
+  // false: an accessor that may be sparse or all zeros (no buffer view): an attribute dropped unread, or
+  // one read by vec3_values
+  bool values_read = true;
 };
 
+// A type's name (tinygltf numbers SCALAR 65, VECn n and MATn 32 + n).
 std::string type_name(int type) {
-  switch (type) {
-    case TINYGLTF_TYPE_SCALAR:
-      return "SCALAR";
-    case TINYGLTF_TYPE_VEC2:
-      return "VEC2";
-    case TINYGLTF_TYPE_VEC3:
-      return "VEC3";
-    case TINYGLTF_TYPE_VEC4:
-      return "VEC4";
-    case TINYGLTF_TYPE_MAT2:
-      return "MAT2";
-    case TINYGLTF_TYPE_MAT3:
-      return "MAT3";
-    default:
-      return "MAT4";
-  }
+  return type == TINYGLTF_TYPE_SCALAR ? "SCALAR" : (type & 32 ? "MAT" : "VEC") + std::to_string(type & 31);
 }
 
+// A componentType's name (read_gltf_head has checked it is one of glTF's, which 5124, INT, is not).
 std::string component_type_name(int component_type) {
-  switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-      return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-      return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-      return "UNSIGNED_INT";
-    default:
-      return "FLOAT";
-  }
+  constexpr std::array<const char*, 6> kNames = {"BYTE",           "UNSIGNED_BYTE", "SHORT",
+                                                 "UNSIGNED_SHORT", "INT",           "UNSIGNED_INT"};
+  return component_type >= 5120 && component_type <= 5125 ? kNames[size_t(component_type - 5120)] : "FLOAT";
 }
 
 // "A", "A or B", "A, B or C", each value named by `name`.
@@ -91,26 +69,10 @@ std::string one_of(const std::vector<int>& values, std::string (*name)(int)) {
   return out;
 }
 
-// The bytes of accessor `index` (read_gltf_head has checked that it is in the file, and that its type
-// and component type are glTF's), checked against `rule`, each element to lie inside its buffer view,
-// the view inside its buffer, and its start aligned to its component size (glTF 2.0 §3.6.2.4).
-// `where` names the use ("mesh 0 primitive 1"), `what` the attribute.
-AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, const AccessorRule& rule,
-                             const std::string& where, const std::string& what) {
-  const std::string name = where + ": " + what + " accessor " + std::to_string(index);
-  const tinygltf::Accessor& a = model.accessors.at(size_t(index));
-  if (std::find(rule.types.begin(), rule.types.end(), a.type) == rule.types.end())
-    throw Error(name + " is " + type_name(a.type) + ", not " + one_of(rule.types, type_name));
-  const auto& components = rule.component_types;
-  if (std::find(components.begin(), components.end(), a.componentType) == components.end())
-    throw Error(name + " has " + component_type_name(a.componentType) + " components, not " +
-                one_of(components, component_type_name));
-  if (rule.integers_normalized && a.componentType != kFloat && !a.normalized)
-    throw Error(name + " has " + component_type_name(a.componentType) + " components that are not normalized (" + what +
-                "'s integers must be)");
+// The bytes of accessor `a`'s elements, `name` naming it in messages: each element inside its buffer
+// view, the view inside its buffer, and its start aligned to its component size (glTF 2.0 §3.6.2.4).
+AccessorBytes bytes_in_view(const tinygltf::Model& model, const tinygltf::Accessor& a, const std::string& name) {
   AccessorBytes bytes{nullptr, a.count, 0, a.componentType, a.normalized};
-  if (a.sparse.isSparse && rule.values_read) throw Error(name + " is sparse, which is not read");
-  if (a.bufferView < 0 && !rule.values_read) return bytes;
   if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size())
     throw Error(name + " has no buffer view in the file");
   const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
@@ -134,6 +96,27 @@ AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, const Acce
     throw Error(name + " reads past its buffer view");
   bytes.data = buffer.data() + view.byteOffset + a.byteOffset;
   return bytes;
+}
+
+// The bytes of accessor `index` (read_gltf_head has checked that it is in the file, and that its type
+// and component type are glTF's), checked against `rule` and to lie in its buffer (bytes_in_view).
+// `where` names the use ("mesh 0 primitive 1"), `what` the attribute.
+AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, const AccessorRule& rule,
+                             const std::string& where, const std::string& what) {
+  const std::string name = where + ": " + what + " accessor " + std::to_string(index);
+  const tinygltf::Accessor& a = model.accessors.at(size_t(index));
+  if (std::find(rule.types.begin(), rule.types.end(), a.type) == rule.types.end())
+    throw Error(name + " is " + type_name(a.type) + ", not " + one_of(rule.types, type_name));
+  const auto& components = rule.component_types;
+  if (std::find(components.begin(), components.end(), a.componentType) == components.end())
+    throw Error(name + " has " + component_type_name(a.componentType) + " components, not " +
+                one_of(components, component_type_name));
+  if (rule.integers_normalized && a.componentType != kFloat && !a.normalized)
+    throw Error(name + " has " + component_type_name(a.componentType) + " components that are not normalized (" + what +
+                "'s integers must be)");
+  if (a.sparse.isSparse && rule.values_read) throw Error(name + " is sparse, which is not read");
+  if (a.bufferView < 0 && !rule.values_read) return AccessorBytes{nullptr, a.count, 0, a.componentType, a.normalized};
+  return bytes_in_view(model, a, name);
 }
 
 float float_at(const AccessorBytes& b, size_t i, int k) {
@@ -178,6 +161,50 @@ uint32_t index_at(const AccessorBytes& b, size_t i) {
   return v;
 }
 
+// The elements of VEC3 accessor `index` (`rule` allows it to be sparse or without a buffer view, whose
+// elements are zeros), its sparse values put in at their indices (glTF 2.0 §3.6.2.3).
+std::vector<Vec3> vec3_values(const tinygltf::Model& model, int index, const AccessorRule& rule,
+                              const std::string& where, const std::string& what) {
+  const AccessorBytes dense = accessor_bytes(model, index, rule, where, what);
+  const auto vec3_at = [](const AccessorBytes& b, size_t i) {
+    return Vec3(number_at(b, i, 0), number_at(b, i, 1), number_at(b, i, 2));
+  };
+  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  const std::string name = where + ": " + what + " accessor " + std::to_string(index) + " sparse";
+  if (a.sparse.isSparse && (a.sparse.count < 1 || size_t(a.sparse.count) > a.count))
+    throw Error(name + " count " + std::to_string(a.sparse.count) + " is not from 1 to its " + std::to_string(a.count) +
+                " elements");
+  std::vector<Vec3> out(dense.count, Vec3::Zero());
+  for (size_t i = 0; dense.data && i < dense.count; ++i) out[i] = vec3_at(dense, i);
+  if (!a.sparse.isSparse) return out;
+  // The indices and the values, each read as an accessor of its own over its buffer view.
+  tinygltf::Accessor part;
+  part.count = size_t(a.sparse.count);
+  part.type = TINYGLTF_TYPE_SCALAR;
+  part.componentType = a.sparse.indices.componentType;
+  part.bufferView = a.sparse.indices.bufferView;
+  part.byteOffset = size_t(a.sparse.indices.byteOffset);  // a negative one reads past its view
+  if (part.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+      part.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      part.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    throw Error(name + " indices have componentType " + std::to_string(part.componentType) +
+                ", not UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+  const AccessorBytes indices = bytes_in_view(model, part, name + " indices");
+  part.type = a.type, part.componentType = a.componentType, part.normalized = a.normalized;
+  part.bufferView = a.sparse.values.bufferView;
+  part.byteOffset = size_t(a.sparse.values.byteOffset);
+  const AccessorBytes values = bytes_in_view(model, part, name + " values");
+  for (size_t k = 0; k < indices.count; ++k) {
+    const size_t i = index_at(indices, k);
+    if (i >= out.size() || (k > 0 && i <= index_at(indices, k - 1)))
+      throw Error(name + " index " + std::to_string(k) + " is " + std::to_string(i) +
+                  (i >= out.size() ? ", past its " + std::to_string(out.size()) + " elements"
+                                   : ", not above the index before it"));
+    out[i] = vec3_at(values, k);
+  }
+  return out;
+}
+
 // A node's local transform: its matrix (column-major) or translation × rotation × scale.
 Eigen::Matrix4d local_transform(const tinygltf::Node& node, const std::string& name) {
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
@@ -204,16 +231,26 @@ Eigen::Matrix4d local_transform(const tinygltf::Node& node, const std::string& n
   return t.matrix();
 }
 
-// A mesh placed by a node (or by none, where the file has no scene) at its world transform.
+// A mesh placed by a node (or by none, where the file has no scene) at its world transform, with the
+// weights of its morph targets: the node's where it gives them, else the mesh's (glTF 2.0 §3.7.2.2).
 struct MeshInstance {
   int mesh = 0;
   Eigen::Matrix4d transform;
+  std::vector<double> weights;
+  std::string weights_of;  // whose weights they are, for messages ("node 1")
 };
+
+MeshInstance mesh_instance(const tinygltf::Model& model, int mesh, const Eigen::Matrix4d& transform, int node) {
+  if (node >= 0 && !model.nodes[size_t(node)].weights.empty())
+    return {mesh, transform, model.nodes[size_t(node)].weights, "node " + std::to_string(node)};
+  return {mesh, transform, model.meshes[size_t(mesh)].weights, "mesh " + std::to_string(mesh)};
+}
 
 std::vector<MeshInstance> mesh_instances(const tinygltf::Model& model) {
   std::vector<MeshInstance> instances;
   if (model.scenes.empty()) {
-    for (size_t m = 0; m < model.meshes.size(); ++m) instances.push_back({int(m), Eigen::Matrix4d::Identity()});
+    for (size_t m = 0; m < model.meshes.size(); ++m)
+      instances.push_back(mesh_instance(model, int(m), Eigen::Matrix4d::Identity(), -1));
     return instances;
   }
   const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
@@ -238,7 +275,7 @@ std::vector<MeshInstance> mesh_instances(const tinygltf::Model& model) {
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model.meshes.size())
         throw Error(name + " names mesh " + std::to_string(node.mesh) + ", which is not in the file");
-      instances.push_back({node.mesh, world});
+      instances.push_back(mesh_instance(model, node.mesh, world, n));
     }
     for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.emplace_back(*child, world);
   }
@@ -307,6 +344,38 @@ std::string mode_name(int mode) {
 bool is_triangles(const tinygltf::Primitive& p) {
   return p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
          p.mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
+
+// How far the instance's morph targets move each of primitive `p`'s `n` positions: Σ w_k times target
+// k's POSITION (glTF 2.0 §3.7.2.2; float, or with KHR_mesh_quantization BYTE or SHORT), or nothing where
+// no target with a nonzero weight has one. Targets of normals and tangents only move no position.
+std::vector<Vec3> morph_displacements(const tinygltf::Model& model, const tinygltf::Primitive& p,
+                                      const MeshInstance& instance, const std::string& where, size_t n) {
+  const std::vector<double>& weights = instance.weights;
+  if (!weights.empty() && !p.targets.empty() && weights.size() != p.targets.size())
+    throw Error(where + ": " + std::to_string(p.targets.size()) + " morph targets for the " +
+                std::to_string(weights.size()) + " weights of " + instance.weights_of);
+  const auto& used = model.extensionsUsed;
+  std::vector<int> components{kFloat};
+  if (std::find(used.begin(), used.end(), "KHR_mesh_quantization") != used.end())
+    components.insert(components.end(), {TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
+  const AccessorRule rule{{TINYGLTF_TYPE_VEC3}, components, false, false};
+  std::vector<Vec3> moved;
+  for (size_t t = 0; t < p.targets.size(); ++t) {
+    const auto position = p.targets[t].find("POSITION");
+    if (position == p.targets[t].end()) continue;
+    const std::string what = "target " + std::to_string(t) + " POSITION";
+    // Its count checked first: an accessor without a buffer view may claim any.
+    if (const size_t count = model.accessors.at(size_t(position->second)).count; count != n)
+      throw Error(where + ": " + what + " accessor " + std::to_string(position->second) + " has " +
+                  std::to_string(count) + " elements for " + std::to_string(n) + " positions");
+    const std::vector<Vec3> target = vec3_values(model, position->second, rule, where, what);
+    const double w = t < weights.size() ? weights[t] : 0.0;
+    if (w == 0.0) continue;
+    moved.resize(n, Vec3::Zero());
+    for (size_t i = 0; i < n; ++i) moved[i] += w * target[i];
+  }
+  return moved;
 }
 
 // The corners of the triangles of a primitive's `n` indexed vertices (glTF 2.0 §3.7.2.1: a strip's
@@ -427,6 +496,9 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
   DroppedAttributes dropped;
   std::set<std::string> other_attributes;
   std::map<int, size_t> other_primitives;  // by mode, the primitives without triangles
+  // The vertex at each position of the current mesh instance: glTF splits a corner at its seams, and
+  // exporters split a mesh into primitives by material, their borders' corners in each; the weld stays
+  // within the instance (other nodes place vertex sets of their own, as OBJ objects are).
   std::unordered_map<PositionBits, int, PositionBitsHash> welded;
   const bool written_by_gpsurf = model.asset.generator == kGenerator;
   const DroppedAttributeRules rules = dropped_attribute_rules(model);
@@ -440,6 +512,7 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
     // A world transform that mirrors turns the triangles' winding around (glTF 2.0, "Transformations"):
     // they are read reversed, so that the faces stay outward.
     const bool mirrored = linear.determinant() < 0;
+    welded.clear();
     for (size_t pi = 0; pi < mesh.primitives.size(); ++pi) {
       const tinygltf::Primitive& p = mesh.primitives[pi];
       if (!is_triangles(p)) {
@@ -456,9 +529,11 @@ PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, 
       if (has_covariances && gaussians.count != points.count)
         throw Error(where + ": " + std::to_string(gaussians.count) + " covariances for " +
                     std::to_string(points.count) + " positions");
+      const std::vector<Vec3> moved = morph_displacements(model, p, instance, where, points.count);
       vertex_of.assign(points.count, 0);
       for (size_t i = 0; i < points.count; ++i) {
-        const Vec3 local(number_at(points, i, 0), number_at(points, i, 1), number_at(points, i, 2));
+        Vec3 local(number_at(points, i, 0), number_at(points, i, 1), number_at(points, i, 2));
+        if (!moved.empty()) local += moved[i];
         const Vec3 world = linear * local + shift;
         if (const std::string why = position_problem(world); !why.empty())
           throw Error(where + ": vertex " + std::to_string(i) + " " + why);

@@ -18,11 +18,14 @@ namespace gps {
 void check_gltf_head(std::string_view head, size_t size);
 
 /// The triangle primitives (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN) of every mesh the default scene's
-/// node trees place (every mesh once where the file has no scene), each at its node's world transform,
-/// as one soup: corners at bit-identical positions are welded into one vertex, as glTF splits a vertex
-/// at a seam of its normals or texture coordinates. `has_covariances` says whether every primitive gave
-/// "_COVARIANCE" (transformed as A Σ Aᵀ by the linear part A of its node's transform). `data` is .glb
-/// or .gltf bytes; buffers in files are read from `base_dir` (none where it is empty). Throws gps::Error
+/// node trees place (every mesh once where the file has no scene), each morphed by its default weights
+/// (the node's, else the mesh's: Σ w_k times target k's POSITION) and placed at its node's world
+/// transform, as one soup: corners of one primitive of one instance at bit-identical positions are
+/// welded into one vertex, as glTF splits a vertex at a seam of its normals or texture coordinates;
+/// each primitive of each instance has vertices of its own. `has_covariances` says whether every
+/// primitive gave "_COVARIANCE" (transformed as A Σ Aᵀ by the linear part A of its node's transform).
+/// `data` is .glb or .gltf bytes; buffers in files are read from `base_dir` (none where it is empty).
+/// Throws gps::Error
 /// naming `source` and the element as the file numbers it ("mesh 0 primitive 1: accessor 3 reads past
 /// its buffer view"); tinygltf's warnings become the soup's notes.
 PolygonSoup parse_gltf_soup(const std::string& data, const std::string& source, const std::string& base_dir,

@@ -1,22 +1,26 @@
 // glTF files as other tools and hands write them, read as the docs promise: buffer files from the
 // .gltf's folder only, by their uri's own decoding; images that cannot be read passed with one note;
 // attributes and primitives gpsurf drops noted, and checked as glTF defines them; meshes in the scene's
-// order; counts no buffer holds, other versions, primitives and accessors glTF has not and malformed
-// .glb chunks refused in one line of gpsurf's words.
+// order; morph targets applied by the default weights; counts no buffer holds, other versions,
+// primitives, accessors and morph targets glTF has not and malformed .glb chunks refused in one line of
+// gpsurf's words.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 
 #include "core/io/gltf_head.h"
 #include "core/io/mesh_io.h"
 #include "core/support/error.h"
 #include "tests/support/error_of.h"
 #include "tests/support/hand_made_gltf.h"
+#include "tests/support/mesh_checks.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {
@@ -323,6 +327,146 @@ TEST(GltfFilesFromElsewhere, WhatNoReaderCouldReadIsRefusedInGpsurfsWords) {
   EXPECT_EQ(refusal("long.gltf", too_long.dump()),
             ": names a buffer file 'long.bin' of " + std::to_string(cube.bin.size()) +
                 " bytes where its byteLength is " + std::to_string(cube.bin.size() - 16));
+}
+
+}  // namespace
+}  // namespace gps
+
+namespace gps {
+namespace {
+
+// The split cube with two morph targets, as Blender writes shape keys: target 0 moves its +x side by
+// (1, 0, 0), target 1 its +y side by (0, 2, 0); the mesh's default weights `weights`.
+test::HandMade morphing_cube(const json& weights) {
+  test::HandMade h = test::split_cube();
+  std::vector<float> positions(72), right(72, 0.0f), up(72, 0.0f);
+  std::memcpy(positions.data(), h.bin.data(), 72 * sizeof(float));
+  for (size_t v = 0; v < 24; ++v) {
+    if (positions[3 * v] > 0) right[3 * v] = 1;
+    if (positions[3 * v + 1] > 0) up[3 * v + 1] = 2;
+  }
+  h.j["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", h.add_accessor(right, 5126, "VEC3", 24)}},
+                                                  {{"POSITION", h.add_accessor(up, 5126, "VEC3", 24)}}};
+  if (!weights.is_null()) h.j["meshes"][0]["weights"] = weights;
+  return h;
+}
+
+// The cube's corners as read, sorted: the morph moves its sides, the weld still makes 8 of the 24.
+std::vector<std::array<double, 3>> corners_of(const CovarianceMesh& m) {
+  std::vector<std::array<double, 3>> corners;
+  for (size_t v = 0; v < m.n_vertices(); ++v) corners.push_back({m.mean(v).x(), m.mean(v).y(), m.mean(v).z()});
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+// The corners of the box [−1, right] × [−1, up] × [−1, 1], scaled by `scale`.
+std::vector<std::array<double, 3>> box(double right, double up, double scale = 1) {
+  std::vector<std::array<double, 3>> corners;
+  for (const double x : {-1.0, right})
+    for (const double y : {-1.0, up})
+      for (const double z : {-1.0, 1.0}) corners.push_back({scale * x, scale * y, scale * z});
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+// A viewer shows a mesh morphed by its default weights (the node's where it gives them, else the
+// mesh's): read so, its targets' POSITION sparse or not, and all-zero weights give the base as it is.
+TEST(GltfFilesFromElsewhere, MorphTargetsMoveThePositionsByTheDefaultWeights) {
+  test::TempDir dir;
+  const auto read = [&](const test::HandMade& h, const std::string& name) {
+    const CovarianceMesh m = read_mesh(dir.write(name, h.glb()));
+    EXPECT_EQ(test::shape_of(m).boundary_edges, 0) << name;
+    return corners_of(m);
+  };
+  const test::HandMade mesh_weights = morphing_cube(json::array({0.5, 0.25}));
+  EXPECT_EQ(read(mesh_weights, "mesh.glb"), box(1.5, 1.5));
+  mesh_weights.write_gltf(dir, "mesh.gltf", "mesh.bin");
+  EXPECT_EQ(corners_of(read_mesh(dir.file("mesh.gltf"))), box(1.5, 1.5));
+  // The node's weights override the mesh's; the morph comes before the node's transform.
+  test::HandMade node_weights = mesh_weights;
+  node_weights.j["nodes"][0] = {{"mesh", 0}, {"weights", {1, 0}}, {"scale", {2, 2, 2}}};
+  EXPECT_EQ(read(node_weights, "node.glb"), box(2, 1, 2));
+
+  // Target 0 sparse, as Blender writes a shape key that moves few vertices: no buffer view (zeros),
+  // the 12 moved positions' indices and displacements.
+  test::HandMade sparse = mesh_weights;
+  std::vector<float> positions(72), displacements;
+  std::memcpy(positions.data(), sparse.bin.data(), 72 * sizeof(float));
+  std::vector<uint16_t> moved;
+  for (uint16_t v = 0; v < 24; ++v)
+    if (positions[3 * v] > 0) {
+      moved.push_back(v);
+      displacements.insert(displacements.end(), {1, 0, 0});
+    }
+  json& target = sparse.j["accessors"][sparse.j["meshes"][0]["primitives"][0]["targets"][0]["POSITION"].get<size_t>()];
+  target.erase("bufferView");
+  const size_t indices = sparse.add_accessor(moved, 5123, "SCALAR", moved.size());
+  const size_t values = sparse.add_accessor(displacements, 5126, "VEC3", moved.size());
+  target["sparse"] = {
+      {"count", moved.size()},
+      {"indices", {{"bufferView", sparse.j["accessors"][indices]["bufferView"]}, {"componentType", 5123}}},
+      {"values", {{"bufferView", sparse.j["accessors"][values]["bufferView"]}}}};
+  EXPECT_EQ(read(sparse, "sparse.glb"), box(1.5, 1.5));
+  // With KHR_mesh_quantization, a target of normalized shorts (32767 is 1).
+  test::HandMade quantized = mesh_weights;
+  std::vector<int16_t> shorts(72, 0);
+  for (const uint16_t v : moved) shorts[3 * v] = 32767;
+  const size_t right = quantized.add_accessor(shorts, 5122, "VEC3", 24);
+  quantized.j["accessors"][right]["normalized"] = true;
+  quantized.j["meshes"][0]["primitives"][0]["targets"][0]["POSITION"] = right;
+  quantized.j["extensionsUsed"] = {"KHR_mesh_quantization"};
+  EXPECT_EQ(read(quantized, "quantized.glb"), box(1.5, 1.5));
+
+  // All-zero weights, no weights, or targets of normals only: the base, bit for bit.
+  const CovarianceMesh base = read_mesh(dir.write("base.glb", test::split_cube().glb()));
+  test::HandMade normals = morphing_cube(json::array({1}));
+  normals.j["meshes"][0]["primitives"][0]["targets"] = {{{"NORMAL", 2}}};
+  for (const auto& [name, h] : {std::pair{"zero.glb", morphing_cube(json::array({0, 0}))},
+                                {"none.glb", morphing_cube(json())},
+                                {"normals.glb", normals}})
+    EXPECT_TRUE(test::same_mesh(read_mesh(dir.write(name, h.glb())), base)) << name;
+}
+
+// Targets and weights are read as glTF 2.0 defines them (§3.7.2.2): a POSITION displacement per position,
+// VEC3 float, weights as many as the targets, numbers; refused in one line naming the element.
+TEST(GltfFilesFromElsewhere, MorphTargetsGltfHasNotAreRefusedNamingThem) {
+  test::TempDir dir;
+  const auto refused = [&](const test::HandMade& h) { return refusal_of(dir, "morph.glb", h.glb()); };
+  test::HandMade few = morphing_cube(json::array({0.5, 0.5}));
+  few.j["accessors"][2]["count"] = 4;
+  EXPECT_EQ(refused(few), "mesh 0 primitive 0: target 0 POSITION accessor 2 has 4 elements for 24 positions");
+  test::HandMade flat = morphing_cube(json::array({0.5, 0.5}));
+  flat.j["accessors"][3]["type"] = "VEC2";
+  flat.j["accessors"][3]["count"] = 24;
+  EXPECT_EQ(refused(flat), "mesh 0 primitive 0: target 1 POSITION accessor 3 is VEC2, not VEC3");
+  test::HandMade shorts = morphing_cube(json::array({0.5, 0.5}));
+  shorts.j["accessors"][3]["componentType"] = 5123;
+  EXPECT_EQ(refused(shorts),
+            "mesh 0 primitive 0: target 1 POSITION accessor 3 has UNSIGNED_SHORT components, not FLOAT");
+  test::HandMade weights = morphing_cube(json::array({0.5, 0.5}));
+  weights.j["nodes"][0]["weights"] = {1, 0, 0};
+  EXPECT_EQ(refused(weights), "mesh 0 primitive 0: 2 morph targets for the 3 weights of node 0");
+  weights.j["nodes"][0]["weights"] = {1, "0"};
+  EXPECT_EQ(refused(weights), "node 0: weight 1 is '0', not a number");
+  weights.j["nodes"][0].erase("weights");
+  weights.j["meshes"][0]["weights"] = 0.5;
+  EXPECT_EQ(refused(weights), "mesh 0: weights is 0.5, not an array");
+  test::HandMade missing = morphing_cube(json::array({0.5, 0.5}));
+  missing.j["meshes"][0]["primitives"][0]["targets"][1]["POSITION"] = 9;
+  EXPECT_EQ(refused(missing),
+            "mesh 0 primitive 0: target 1 attribute 'POSITION' names accessor 9, which is not in the file");
+  missing.j["meshes"][0]["primitives"][0]["targets"][1] = 3;
+  EXPECT_EQ(refused(missing), "mesh 0 primitive 0 target 1 is 3, not an object");
+  // A sparse index past the positions.
+  test::HandMade past = morphing_cube(json::array({0.5, 0.5}));
+  const size_t index = past.add_accessor(std::vector<uint16_t>{30}, 5123, "SCALAR", 1);
+  const size_t value = past.add_accessor(std::vector<float>{1, 0, 0}, 5126, "VEC3", 1);
+  past.j["accessors"][2]["sparse"] = {
+      {"count", 1},
+      {"indices", {{"bufferView", past.j["accessors"][index]["bufferView"]}, {"componentType", 5123}}},
+      {"values", {{"bufferView", past.j["accessors"][value]["bufferView"]}}}};
+  EXPECT_EQ(refused(past),
+            "mesh 0 primitive 0: target 0 POSITION accessor 2 sparse index 0 is 30, past its 24 elements");
 }
 
 }  // namespace

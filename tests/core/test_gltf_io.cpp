@@ -388,11 +388,6 @@ TEST(GltfIo, UnwritableCovarianceLeavesTheFileAsItWas) {
   EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), "old contents");
 }
 
-}  // namespace
-}  // namespace gps
-
-namespace gps {
-namespace {
 
 // The split cube with its positions as integers (KHR_mesh_quantization): each of ±1 written as `one` and
 // `minus_one`, each vertex padded to 4-byte alignment, as the extension asks.
@@ -524,6 +519,45 @@ TEST(GltfIo, ANonConvexFaceIsCutIntoTrianglesInsideIt) {
     area += z / 2;
   }
   EXPECT_NEAR(area, 7.0, 1e-12);  // the U's area: no two triangles overlap
+}
+
+}  // namespace
+}  // namespace gps
+
+namespace gps {
+namespace {
+
+// Two closed cubes side by side, sharing the plane x = 1, placed by two nodes: each has vertices of its
+// own, as two OBJ objects with their own vertex lists, and each is still welded at its seams (8
+// vertices, not 24). Welded across them, the face between them read twice and its edges as fins.
+TEST(GltfIo, TouchingInstancesStayApartEachWeldedAtItsSeams) {
+  test::TempDir dir;
+  HandMade nodes = split_cube();
+  nodes.j["nodes"] = {{{"mesh", 0}}, {{"mesh", 0}, {"translation", {2, 0, 0}}}};
+  nodes.j["scenes"] = {{{"nodes", {0, 1}}}};
+  const CovarianceMesh m = read_mesh(dir.write("nodes.glb", nodes.glb()));
+  test::expect_closed_outward(m, 16, 24);
+  EXPECT_EQ(test::shape_of(m).euler(), 4);  // two spheres
+  EXPECT_NEAR(test::signed_volume(m), 16.0, 1e-12);
+  size_t on_the_plane = 0;
+  for (size_t v = 0; v < m.n_vertices(); ++v) on_the_plane += m.mean(v).x() == 1.0;
+  EXPECT_EQ(on_the_plane, 8u);  // the 4 corners there once for each cube
+}
+
+// One cube as two primitives of its mesh (as exporters split one by material), three faces each: their
+// borders' corners are welded, and it reads as the closed cube.
+TEST(GltfIo, PrimitivesOfOneMeshAreWeldedAtTheirBorders) {
+  test::TempDir dir;
+  HandMade h = split_cube();
+  std::vector<uint16_t> indices(36);
+  std::memcpy(indices.data(), h.bin.data() + 24 * 3 * sizeof(float), indices.size() * sizeof(uint16_t));
+  json first = h.j["meshes"][0]["primitives"][0], second = first;
+  first["indices"] = h.add_accessor(std::vector<uint16_t>(indices.begin(), indices.begin() + 18), 5123, "SCALAR", 18);
+  second["indices"] = h.add_accessor(std::vector<uint16_t>(indices.begin() + 18, indices.end()), 5123, "SCALAR", 18);
+  h.j["meshes"][0]["primitives"] = {first, second};
+  const CovarianceMesh m = read_mesh(dir.write("cube.glb", h.glb()));
+  test::expect_closed_outward(m, 8, 12);
+  EXPECT_NEAR(test::signed_volume(m), 8.0, 1e-12);
 }
 
 }  // namespace
