@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
+#include <map>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -116,42 +118,95 @@ std::vector<SurfacePoint> closest_limit_points(const PatchPlans& plans, const st
   tree.accelerate_distance_queries();
   std::vector<SurfacePoint> out(targets.size());
   if (!targets.empty()) tree.closest_point(Kernel::Point_3(0, 0, 0));  // builds the search tree before the threads
-  const long n = long(targets.size());
-#pragma omp parallel for schedule(dynamic, 256)
-  for (long i = 0; i < n; ++i) {
-    const Vec3& p = targets[size_t(i)];
-    const auto [foot, id] = tree.closest_point_and_primitive(Kernel::Point_3(p[0], p[1], p[2]));
-    const size_t t = size_t(id - triangles.cbegin());
+  // The point of triangle t's patch nearest p: its parameters interpolated at the triangle's point
+  // nearest p, then Gauss-Newton on |x(u, v) − p|², (JᵀJ) δ = −Jᵀ(x − p) with J = [x_u x_v]; near an
+  // extraordinary or crease corner, where the parametrisation degenerates, a step is halved until it
+  // comes nearer.
+  const auto project = [&](const Vec3& p, size_t t) {
     const int patch = int(t / grid.triangles.size());
     const auto& corners = grid.triangles[t % grid.triangles.size()];
     const size_t base = size_t(patch) * per_patch;
-    const auto b = barycentric(Vec3(foot.x(), foot.y(), foot.z()), positions[base + size_t(corners[0])],
-                               positions[base + size_t(corners[1])], positions[base + size_t(corners[2])]);
+    const Kernel::Point_3 nearest = Kernel().construct_projected_point_3_object()(triangles[t], Kernel::Point_3(p[0], p[1], p[2]));
+    auto b = barycentric(Vec3(nearest.x(), nearest.y(), nearest.z()), positions[base + size_t(corners[0])],
+                         positions[base + size_t(corners[1])], positions[base + size_t(corners[2])]);
+    for (double& w : b) w = std::max(w, 0.0);
+    const double sum = b[0] + b[1] + b[2];
     SurfacePoint sp;
     sp.patch = patch;
     for (int c = 0; c < 3; ++c) {
-      sp.u += b[size_t(c)] * grid.uv[size_t(corners[size_t(c)])][0];
-      sp.v += b[size_t(c)] * grid.uv[size_t(corners[size_t(c)])][1];
+      sp.u += b[size_t(c)] / sum * grid.uv[size_t(corners[size_t(c)])][0];
+      sp.v += b[size_t(c)] / sum * grid.uv[size_t(corners[size_t(c)])][1];
     }
     clamp_to_patch(plans.shape, sp.u, sp.v);
     PatchSample s = sample_at(plans, points, patch, sp.u, sp.v);
     sp.distance = (s.position - p).norm();
+    // Where the parameters do not map linearly onto the triangle (a thin or folded one, at a degenerate
+    // corner), a corner of it, a point of the surface, may lie nearer.
+    for (const int c : corners)
+      if (const double d = (positions[base + size_t(c)] - p).norm(); d < sp.distance) {
+        sp.u = grid.uv[size_t(c)][0], sp.v = grid.uv[size_t(c)][1], sp.distance = d;
+        s = sample_at(plans, points, patch, sp.u, sp.v);
+      }
     for (int step = 0; step < projection_steps; ++step) {
-      // Gauss-Newton on |x(u, v) − p|²: (JᵀJ) δ = −Jᵀ(x − p), J = [x_u x_v].
       const Vec3 d = s.position - p;
       Eigen::Matrix2d jtj;
       jtj << s.du.dot(s.du), s.du.dot(s.dv), s.du.dot(s.dv), s.dv.dot(s.dv);
       const Eigen::Vector2d jtd(s.du.dot(d), s.dv.dot(d));
+      jtj.diagonal().array() += 1e-12 * jtj.trace();
       if (!(jtj.determinant() > 1e-300)) break;
       const Eigen::Vector2d delta = -jtj.ldlt().solve(jtd);
-      double u = sp.u + delta[0], v = sp.v + delta[1];
-      clamp_to_patch(plans.shape, u, v);
-      const PatchSample next = sample_at(plans, points, patch, u, v);
-      const double distance = (next.position - p).norm();
-      if (!(distance < sp.distance)) break;
-      sp.u = u, sp.v = v, sp.distance = distance, s = next;
+      bool nearer = false;
+      for (double share = 1.0; share >= 1.0 / 16 && !nearer; share *= 0.5) {
+        double u = sp.u + share * delta[0], v = sp.v + share * delta[1];
+        clamp_to_patch(plans.shape, u, v);
+        const PatchSample next = sample_at(plans, points, patch, u, v);
+        const double distance = (next.position - p).norm();
+        if (!(distance < sp.distance)) continue;
+        sp.u = u, sp.v = v, sp.distance = distance, s = next;
+        nearer = true;
+      }
+      if (!nearer) break;
     }
-    out[size_t(i)] = sp;
+    return sp;
+  };
+  Vec3 lo = positions.empty() ? Vec3::Zero() : positions[0], hi = lo;
+  for (const Vec3& x : positions) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  const double diagonal = (hi - lo).norm();
+
+  const long n = long(targets.size());
+#pragma omp parallel for schedule(dynamic, 256)
+  for (long i = 0; i < n; ++i) {
+    const Vec3& p = targets[size_t(i)];
+    const Kernel::Point_3 q(p[0], p[1], p[2]);
+    const auto [foot, id] = tree.closest_point_and_primitive(q);
+    SurfacePoint best = project(p, size_t(id - triangles.cbegin()));
+    // Twice as far as the tessellation lies: the point may lie on a patch beside it (across a crease,
+    // or beyond a corner where the parameters stretch), tried each from its triangle nearest p among
+    // those near enough.
+    if (best.distance > 2 * std::sqrt(CGAL::squared_distance(q, foot)) + 1e-9 * diagonal) {
+      // Its triangle's size on top: p may lie between a chord of the border and the border itself.
+      const Triangle& t = *id;
+      const double r = best.distance + std::sqrt(std::max({CGAL::squared_distance(t[0], t[1]),
+                                                          CGAL::squared_distance(t[1], t[2]),
+                                                          CGAL::squared_distance(t[2], t[0])}));
+      std::vector<Primitive::Id> near;
+      tree.all_intersected_primitives(CGAL::Bbox_3(p[0] - r, p[1] - r, p[2] - r, p[0] + r, p[1] + r, p[2] + r),
+                                      std::back_inserter(near));
+      std::map<int, std::pair<double, size_t>> nearest_of_patch;  // by patch: (squared distance, triangle)
+      for (const Primitive::Id& other : near) {
+        const size_t t = size_t(other - triangles.cbegin());
+        const int patch = int(t / grid.triangles.size());
+        if (patch == best.patch) continue;
+        const double d2 = CGAL::squared_distance(q, *other);
+        auto [it, added] = nearest_of_patch.try_emplace(patch, d2, t);
+        if (!added && d2 < it->second.first) it->second = {d2, t};
+      }
+      for (const auto& [patch, candidate] : nearest_of_patch) {
+        const SurfacePoint sp = project(p, candidate.second);
+        if (sp.distance < best.distance) best = sp;
+      }
+    }
+    out[size_t(i)] = best;
   }
   return out;
 }
