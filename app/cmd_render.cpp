@@ -68,8 +68,8 @@ double pixels_across(const CovarianceMesh& mesh, const Camera& camera, int width
   const glm::dmat4 view_projection = camera.view_projection_double(float(width) / float(height));
   glm::dvec2 min(HUGE_VAL), max(-HUGE_VAL);
   for (int c = 0; c < 8; ++c) {
-    const glm::dvec4 p = view_projection * glm::dvec4(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(),
-                                                      c & 4 ? hi.z() : lo.z(), 1.0);
+    const glm::dvec4 p =
+        view_projection * glm::dvec4(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(), c & 4 ? hi.z() : lo.z(), 1.0);
     const glm::dvec2 pixel = (glm::dvec2(p) / p.w * 0.5 + 0.5) * glm::dvec2(width, height);
     min = glm::min(min, pixel), max = glm::max(max, pixel);
   }

@@ -126,7 +126,8 @@ std::vector<SurfacePoint> closest_limit_points(const PatchPlans& plans, const st
     const int patch = int(t / grid.triangles.size());
     const auto& corners = grid.triangles[t % grid.triangles.size()];
     const size_t base = size_t(patch) * per_patch;
-    const Kernel::Point_3 nearest = Kernel().construct_projected_point_3_object()(triangles[t], Kernel::Point_3(p[0], p[1], p[2]));
+    const Kernel::Point_3 nearest =
+        Kernel().construct_projected_point_3_object()(triangles[t], Kernel::Point_3(p[0], p[1], p[2]));
     auto b = barycentric(Vec3(nearest.x(), nearest.y(), nearest.z()), positions[base + size_t(corners[0])],
                          positions[base + size_t(corners[1])], positions[base + size_t(corners[2])]);
     for (double& w : b) w = std::max(w, 0.0);
@@ -186,9 +187,9 @@ std::vector<SurfacePoint> closest_limit_points(const PatchPlans& plans, const st
     if (best.distance > 2 * std::sqrt(CGAL::squared_distance(q, foot)) + 1e-9 * diagonal) {
       // Its triangle's size on top: p may lie between a chord of the border and the border itself.
       const Triangle& t = *id;
-      const double r = best.distance + std::sqrt(std::max({CGAL::squared_distance(t[0], t[1]),
-                                                          CGAL::squared_distance(t[1], t[2]),
-                                                          CGAL::squared_distance(t[2], t[0])}));
+      const double r =
+          best.distance + std::sqrt(std::max({CGAL::squared_distance(t[0], t[1]), CGAL::squared_distance(t[1], t[2]),
+                                              CGAL::squared_distance(t[2], t[0])}));
       std::vector<Primitive::Id> near;
       tree.all_intersected_primitives(CGAL::Bbox_3(p[0] - r, p[1] - r, p[2] - r, p[0] + r, p[1] + r, p[2] + r),
                                       std::back_inserter(near));

@@ -93,8 +93,8 @@ std::string example_text(Defect d, const DefectExample& e, const ElementNumberin
     case Defect::duplicate_faces:
       return n.face(e.element) + " as " + n.face(e.other);
     case Defect::fin_edges:
-      return "the edge of " + n.vertex(e.element) + " and " + n.vertex(e.other) + " with " +
-             std::to_string(e.count) + " faces" + (e.welded ? " once coincident vertices are welded" : "");
+      return "the edge of " + n.vertex(e.element) + " and " + n.vertex(e.other) + " with " + std::to_string(e.count) +
+             " faces" + (e.welded ? " once coincident vertices are welded" : "");
     case Defect::pinch_vertices:
       return n.vertex(e.element) + " with " + std::to_string(e.count) + " fans" +
              (e.welded ? " once coincident vertices are welded" : "");

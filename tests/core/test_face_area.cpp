@@ -12,7 +12,8 @@ namespace {
 bool thin(const std::vector<Vec3>& corners, double tolerance) {
   std::vector<int> order(corners.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = int(k);
-  return without_area(std::span<const int>(order), [&](int k) { return corners[size_t(k)]; }, tolerance);
+  return without_area(
+      std::span<const int>(order), [&](int k) { return corners[size_t(k)]; }, tolerance);
 }
 
 TEST(FaceArea, ATriangleOrAStripIsThinWhereItsHeightIsUnderTheTolerance) {
@@ -21,7 +22,7 @@ TEST(FaceArea, ATriangleOrAStripIsThinWhereItsHeightIsUnderTheTolerance) {
     EXPECT_EQ(thin({{0, 0, 0}, {10, 0, 0}, {10, height, 0}, {0, height, 0}}, 1.0), height < 1) << height;
   }
   EXPECT_TRUE(thin({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}}, 1e-12));  // corners in a line
-  EXPECT_TRUE(thin({{1, 2, 3}, {1, 2, 3}, {1, 2, 3}}, 1e-12));              // corners together
+  EXPECT_TRUE(thin({{1, 2, 3}, {1, 2, 3}, {1, 2, 3}}, 1e-12));             // corners together
   // Folded onto itself: a bow tie whose halves cancel, its corners well off any line.
   EXPECT_TRUE(thin({{0, 0, 0}, {2, 2, 0}, {2, 0, 0}, {0, 2, 0}}, 1e-3));
 }

@@ -388,7 +388,6 @@ TEST(GltfIo, UnwritableCovarianceLeavesTheFileAsItWas) {
   EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), "old contents");
 }
 
-
 // The split cube with its positions as integers (KHR_mesh_quantization): each of ±1 written as `one` and
 // `minus_one`, each vertex padded to 4-byte alignment, as the extension asks.
 template <class T>

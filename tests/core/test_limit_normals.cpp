@@ -85,8 +85,7 @@ TEST(LimitNormals, EqualTheEvaluatorsAtEveryReferenceVertex) {
 // three million faces six levels down: its vertices are regular or extraordinary as the others' are.
 TEST(LimitNormals, AreTheNormalsOfTheRefinedSurface) {
   for (const Case& c : cases()) {
-    if (c.name.find("concave") != std::string::npos || c.name.find("plateau") != std::string::npos ||
-        c.name == "pawn")
+    if (c.name.find("concave") != std::string::npos || c.name.find("plateau") != std::string::npos || c.name == "pawn")
       continue;
     const auto coarse = subdivide(c.mesh, {c.scheme, 2, true, LoopBeta::loop, true});
     const PolygonTopology& coarse_topology = coarse.mesh.topology();

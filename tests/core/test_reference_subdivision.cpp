@@ -47,9 +47,9 @@ TEST(ReferenceSubdivision, EqualIsotropicCovariancesGiveTheLinearScheme) {
 TEST(ReferenceSubdivision, NoLevelGivesTheMeshsOwnGaussians) {
   CovarianceMesh pawn = make_sample("pawn");
   randomize_covariances(pawn, 3);
-  for (const auto& [mesh, scheme] : {std::pair{test::icosahedron_mesh(), Scheme::loop},
-                                     std::pair{test::icosahedron_mesh(), Scheme::catmull_clark},
-                                     std::pair{pawn, Scheme::catmull_clark}}) {
+  for (const auto& [mesh, scheme] :
+       {std::pair{test::icosahedron_mesh(), Scheme::loop}, std::pair{test::icosahedron_mesh(), Scheme::catmull_clark},
+        std::pair{pawn, Scheme::catmull_clark}}) {
     const CovarianceMesh out = subdivide(mesh, {scheme, 0, false}).mesh;
     EXPECT_EQ(out.means(), mesh.means());
     EXPECT_EQ(out.covariances, mesh.covariances);

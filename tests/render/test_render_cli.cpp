@@ -616,8 +616,7 @@ TEST(RenderCli, EllipsoidsLeaveTheAovsToTheSurface) {
     for (int x = 0; x < normal.width; ++x) {
       const Vec3 n(normal.at(x, y, 0), normal.at(x, y, 1), normal.at(x, y, 2)),
           p(position.at(x, y, 0), position.at(x, y, 1), position.at(x, y, 2));
-      if (normal.at(x, y, 3) == 0 && position.at(x, y, 3) == 0 && n.isZero(0) && p.isZero(0))
-        continue;
+      if (normal.at(x, y, 3) == 0 && position.at(x, y, 3) == 0 && n.isZero(0) && p.isZero(0)) continue;
       const bool on_surface = normal.at(x, y, 3) >= 1 && normal.at(x, y, 3) <= 4 && position.at(x, y, 3) >= 1 &&
                               std::abs(n.norm() - 1) < 1e-3 && p.cwiseAbs().maxCoeff() <= 1.0001;
       (on_surface ? surface : other) += 1;
