@@ -73,12 +73,6 @@ std::vector<double> SurfaceDistance::distances(const std::vector<Vec3>& points) 
   return d;
 }
 
-namespace {
-// The cosine past which a vertex normal is taken for one across a crease from a triangle (45°): the
-// triangles are far finer than the surface's turns elsewhere.
-constexpr double kCreaseCosine = 0.7071067811865476;
-}  // namespace
-
 Vec3 SurfaceDistance::normal_nearest(const Vec3& point) const {
   const auto [nearest, primitive] =
       tree_->tree.closest_point_and_primitive(Tree::Kernel::Point_3(point[0], point[1], point[2]));
@@ -92,15 +86,9 @@ Vec3 SurfaceDistance::normal_nearest(const Vec3& point) const {
   const double area2 = own.squaredNorm();
   if (!(area2 > 0)) return surface_.normals[size_t(t[0])];
   const double wa = (b - x).cross(c - x).dot(own) / area2, wb = (c - x).cross(a - x).dot(own) / area2;
-  // A corner shared across a crease has the normal of a face on the other side (one per vertex): there
-  // the triangle's own normal stands for it.
-  const Vec3 face = own.normalized();
-  const auto corner = [&](int v) {
-    const Vec3& n = surface_.normals[size_t(v)];
-    return n.dot(face) >= kCreaseCosine * n.norm() ? n : face;
-  };
-  const Vec3 n = wa * corner(t[0]) + wb * corner(t[1]) + (1 - wa - wb) * corner(t[2]);
-  return n.isZero(0.0) ? face : n.normalized();
+  const Vec3 n = wa * surface_.normals[size_t(t[0])] + wb * surface_.normals[size_t(t[1])] +
+                 (1 - wa - wb) * surface_.normals[size_t(t[2])];
+  return n.isZero(0.0) ? own.normalized() : n.normalized();
 }
 
 std::vector<double> SurfaceDistance::normal_angles(const std::vector<Vec3>& points,

@@ -44,8 +44,7 @@ public:
   /// The distance of every point, in order (on all cores).
   std::vector<double> distances(const std::vector<Vec3>& points) const;
   /// The surface's unit normal at the point nearest `point`: its vertex normals interpolated there
-  /// (barycentric), the triangle's own standing for one more than 45° from it (a vertex on a crease
-  /// has the normal of one side), or the triangle's own where it has none.
+  /// (barycentric), or the triangle's own where it has none.
   Vec3 normal_nearest(const Vec3& point) const;
   /// For each point with a non-zero normal, the angle in degrees between its normal and the surface's
   /// at its nearest point, taken as lines (0° to 90°: a scan's faces may be turned either way).

@@ -8,8 +8,6 @@
 #include "core/fitting/surface_distance.h"
 #include "core/support/error.h"
 #include "core/mesh/inference.h"
-#include "core/modelling/crease_edges.h"
-#include "core/modelling/samples.h"
 
 namespace gps {
 namespace {
@@ -95,31 +93,6 @@ TEST(SurfaceDistance, PointsOffsetFromAPlanarLimitSurfaceAreTheirOffsetAway) {
   EXPECT_NEAR(s.max, 0.5, 1e-12);
   EXPECT_NEAR(s.length, bounding_box_diagonal(points), 1e-15);
   EXPECT_NEAR(s.relative_max(), 0.5 / s.length, 1e-12);
-}
-
-// A cube creased sharp along every edge has the cube for its limit surface. The tessellation shares one
-// vertex, with one normal, across each crease: points on the faces, near the creases too, still find
-// their face's normal (a vertex normal from across the crease was interpolated in, 31° rms).
-TEST(SurfaceDistance, NormalsNearACreaseAreTheirFacesOwn) {
-  const CovarianceMesh cube = make_sample("cube");
-  std::vector<std::array<int, 2>> edges;
-  for (size_t e = 0; e < cube.n_edges(); ++e) edges.push_back(cube.edge(e));
-  const CovarianceMesh creased = set_crease(cube, edges, 10).mesh;
-  const TriangleMesh limit = limit_surface_triangles(creased, 8).triangles;
-  std::vector<Vec3> points, normals;
-  for (int axis = 0; axis < 3; ++axis)
-    for (const double side : {-1.0, 1.0})
-      for (int i = 0; i <= 20; ++i)
-        for (int j = 0; j <= 20; ++j) {
-          Vec3 p, n = Vec3::Zero();
-          p[axis] = side, p[(axis + 1) % 3] = -0.99 + 0.099 * i, p[(axis + 2) % 3] = -0.99 + 0.099 * j;
-          n[axis] = side;
-          points.push_back(p);
-          normals.push_back(n);
-        }
-  const AngleSummary angles = summarise_angles(SurfaceDistance(limit).normal_angles(points, normals));
-  EXPECT_EQ(angles.count, points.size());
-  EXPECT_LT(angles.max, 1e-9);
 }
 
 TEST(SurfaceDistance, LimitTrianglesKeepToTheirCount) {
