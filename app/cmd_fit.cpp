@@ -93,6 +93,7 @@ void add_fit_command(CLI::App& app) {
            << " (defaults 0.35 and 1)";
       throw usage_error(said.str());
     }
+    check_mesh_output(args->output);  // before the fit, which may take minutes
     const CovarianceMesh coarse = read_mesh_repairing(args->coarse, args->repair, {}, args->quiet, true);
     // The target's points whatever its faces (a scan that is not a manifold), with the normals of the
     // faces around them (none for a point cloud).

@@ -10,6 +10,7 @@
 #include "core/io/gltf_io.h"
 #include "core/io/mesh_import.h"
 #include "core/io/ply_io.h"
+#include "core/io/save_target.h"
 #include "core/support/quoted_text.h"
 #include "core/io/text_file.h"
 
@@ -189,8 +190,24 @@ std::string unsaved_sharpness_note(const std::string& path, const CovarianceMesh
   return escaped(path) + ": " + dropped + " not saved (glTF has no place for them; .ply and .obj keep them)";
 }
 
+namespace {
+
+// The usage error of a file name whose format write_mesh does not write, or none.
+void check_mesh_format(const std::string& path, const std::string& ext) {
+  if (ext != ".ply" && ext != ".obj" && ext != ".gltf" && ext != ".glb")
+    throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) + " (use .ply, .obj, .gltf or .glb)");
+}
+
+}  // namespace
+
+void check_mesh_output(const std::string& path) {
+  inspect_save_target(path);
+  check_mesh_format(path, extension_of(path));
+}
+
 void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary) {
   const std::string ext = extension_of(path);
+  check_mesh_format(path, ext);
   // What gpsurf writes it must read back: refuse values the readers would refuse.
   if (const std::string why = gaussians_problem(mesh); !why.empty())
     throw Error(escaped(path) + ": not written: " + why);
@@ -227,8 +244,6 @@ void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary
     }
     write_file_atomically(
         path, [&](std::ostream& out) { out << gltf.view(); }, true);
-  } else {
-    throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) + " (use .ply, .obj, .gltf or .glb)");
   }
 }
 

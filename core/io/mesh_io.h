@@ -62,6 +62,10 @@ ElementNames file_element_names(const std::string& path);
 /// covariances in float; core/io/gltf_io.h),
 /// atomically: a temporary file beside the target, then a rename.
 void write_mesh(const std::string& path, const CovarianceMesh& mesh, bool binary = false);
+/// What write_mesh would refuse of `path` whatever the mesh, checked before the work that makes one: a
+/// format it does not write (a usage error), a target inspect_save_target refuses (a folder, a
+/// read-only file, a folder that does not exist).
+void check_mesh_output(const std::string& path);
 
 /// What a save of `mesh` to `path` cannot keep, as a note for the user ("" when it keeps it all):
 /// glTF has no place for creases and corners.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "core/io/text_file.h"
 #include "tests/support/run_command.h"
@@ -192,6 +193,25 @@ TEST(FitCli, ErrorsNameTheFile) {
   const auto no_target = run_command(gpsurf("fit " + coarse + " -o " + dir.file("o.ply")));
   EXPECT_NE(no_target.exit_code, 0);
   EXPECT_NE(no_target.output.find("--target"), std::string::npos) << no_target.output;
+}
+
+// An output the fit could not write is refused before it fits (it was after every iteration).
+TEST(FitCli, AnOutputItCannotWriteIsRefusedBeforeTheFit) {
+  test::TempDir dir;
+  const std::string coarse = dir.file("coarse.ply"), dense = dir.file("dense.ply");
+  ASSERT_EQ(run_command(gpsurf("sample icosphere --size 80 -o " + coarse)).exit_code, 0);
+  ASSERT_EQ(run_command(gpsurf("sample sphere --size 2000 -o " + dense)).exit_code, 0);
+  const std::string fit = "fit " + coarse + " --target " + dense + " -o ";
+  const std::vector<std::tuple<std::string, int, std::string>> cases = {
+      {dir.file("out.xyz"), 2, "out.xyz: cannot write format '.xyz'"},
+      {dir.file("none/out.ply"), 1, "none/out.ply"},
+      {dir.path().string(), 1, "directory"}};
+  for (const auto& [output, code, said] : cases) {
+    const auto r = run_command(gpsurf(fit + output));
+    EXPECT_EQ(r.exit_code, code) << r.output;
+    EXPECT_NE(r.output.find(said), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("iteration"), std::string::npos) << r.output;
+  }
 }
 
 }  // namespace

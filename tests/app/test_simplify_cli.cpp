@@ -77,6 +77,7 @@ TEST(SimplifyCli, ErrorStopsAtADistance) {
         gpsurf("simplify " + dir.file("ico.ply") + " -o " + out + " --level 0 --error " + std::to_string(error)));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("(no further collapse keeps within --error"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("faces' normals within 45° (--max-normal-deviation))"), std::string::npos) << r.output;
     const size_t kept = read_mesh(out).n_vertices();
     EXPECT_LT(kept, previous) << error;
     previous = kept;
