@@ -101,8 +101,8 @@ void add_simplify_command(CLI::App& app) {
     // What held the collapses back, the normals' bound by its option (its default too: 45°).
     const auto kept = [&] {
       std::ostringstream said;
-      said << "the topology, manifoldness, face orientations and faces' normals within "
-           << args->max_normal_deviation << "° (--max-normal-deviation)";
+      said << "the topology, manifoldness, face orientations and faces' normals within " << args->max_normal_deviation
+           << "° (--max-normal-deviation)";
       return said.str();
     };
     if (error->count() > 0 && s.mesh.n_vertices() > options.target_vertices)

@@ -195,7 +195,8 @@ namespace {
 // The usage error of a file name whose format write_mesh does not write, or none.
 void check_mesh_format(const std::string& path, const std::string& ext) {
   if (ext != ".ply" && ext != ".obj" && ext != ".gltf" && ext != ".glb")
-    throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) + " (use .ply, .obj, .gltf or .glb)");
+    throw usage_error(escaped(path) + ": cannot write format " + quoted_token(ext) +
+                      " (use .ply, .obj, .gltf or .glb)");
 }
 
 }  // namespace
