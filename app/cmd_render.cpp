@@ -148,8 +148,9 @@ void render_one(SurfaceRenderer& renderer, const std::string& description, const
   if (yaw_pitch_distance.size() > 2 && !(yaw_pitch_distance[2] > 0.0f))
     throw usage_error("--camera: the distance must be positive (in the mesh's units), got " + quoted_token(a.camera));
   const int up_axis = up_axis_named(a.up);
-  const Camera camera = naming_mesh_input(a.input, a.repair.import_options().repair, [&] {
-    return render_camera(renderer, mesh, yaw_pitch_distance, up_axis, o, width, height);
+  // The image's size by value: clang's lambdas do not capture structured bindings.
+  const Camera camera = naming_mesh_input(a.input, a.repair.import_options().repair, [&, w = width, h = height] {
+    return render_camera(renderer, mesh, yaw_pitch_distance, up_axis, o, w, h);
   });
   if (a.reference >= 1 && a.reference <= 6 && scheme_for(mesh.topology(), a.plans.options()) == Scheme::catmull_clark) {
     // In the patches' own triangles at level 2^N: `diff` against the patches drawn at that level
