@@ -398,10 +398,12 @@ TEST(GltfFilesFromElsewhere, MorphTargetsMoveThePositionsByTheDefaultWeights) {
       moved.push_back(v);
       displacements.insert(displacements.end(), {1, 0, 0});
     }
-  json& target = sparse.j["accessors"][sparse.j["meshes"][0]["primitives"][0]["targets"][0]["POSITION"].get<size_t>()];
-  target.erase("bufferView");
+  const size_t position = sparse.j["meshes"][0]["primitives"][0]["targets"][0]["POSITION"].get<size_t>();
+  sparse.j["accessors"][position].erase("bufferView");
   const size_t indices = sparse.add_accessor(moved, 5123, "SCALAR", moved.size());
   const size_t values = sparse.add_accessor(displacements, 5126, "VEC3", moved.size());
+  // Taken after the accessors are added: adding them may move the array's elements.
+  json& target = sparse.j["accessors"][position];
   target["sparse"] = {
       {"count", moved.size()},
       {"indices", {{"bufferView", sparse.j["accessors"][indices]["bufferView"]}, {"componentType", 5123}}},
