@@ -15,6 +15,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include "core/fitting/distance_tree_size.h"
+#include "core/fitting/surface_distance.h"
 #include "core/support/memory_budget.h"
 
 #include "core/evaluation/patch_eval.h"
@@ -170,9 +171,7 @@ std::vector<SurfacePoint> closest_limit_points(const PatchPlans& plans, const st
     }
     return sp;
   };
-  Vec3 lo = positions.empty() ? Vec3::Zero() : positions[0], hi = lo;
-  for (const Vec3& x : positions) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-  const double diagonal = (hi - lo).norm();
+  const double diagonal = bounding_box_diagonal(positions);
 
   const long n = long(targets.size());
 #pragma omp parallel for schedule(dynamic, 256)

@@ -26,11 +26,11 @@ double mean_edge_length(const CovarianceMesh& m) {
   return m.n_edges() ? total / double(m.n_edges()) : 0.0;
 }
 
-// Inferred covariances scale as the square of the edges: throws gps::Error, with the mesh unchanged,
-// where the mean edge length would put them beyond covariance_problem's range [1e-100, 1e100].
-void check_scale(const CovarianceMesh& m) {
+// The mean edge length, checked: inferred covariances scale as its square, so where it would put them
+// beyond covariance_problem's range [1e-100, 1e100] this throws gps::Error, with the mesh unchanged.
+double checked_edge_length(const CovarianceMesh& m) {
   const double length = mean_edge_length(m);
-  if (length == 0 || (length >= 1e-45 && length <= 1e45)) return;
+  if (length == 0 || (length >= 1e-45 && length <= 1e45)) return length;
   char shown[32];
   std::snprintf(shown, sizeof shown, "%.3g", length);
   throw Error(std::string("the mesh is too ") + (length < 1 ? "small" : "large") +
@@ -42,7 +42,7 @@ void check_scale(const CovarianceMesh& m) {
 
 void infer_covariances(CovarianceMesh& m, double bias, const ElementNames& names) {
   if (!(bias > 0)) throw usage_error("the inference bias must be positive, got " + std::to_string(bias));
-  check_scale(m);
+  const double length = checked_edge_length(m);
   std::vector<Vec3> p;
   // The precision of face f's points, or false where the face is degenerate.
   const auto face_precision = [&](size_t f, Mat3& inv) {
@@ -74,7 +74,6 @@ void infer_covariances(CovarianceMesh& m, double bias, const ElementNames& names
     for (const int v : m.face(f)) precision[size_t(v)] += inv;
   }
   // An isolated vertex has no faces to infer from: σ = half the mesh's mean edge length.
-  const double length = mean_edge_length(m);
   const double sigma = length > 0 ? 0.5 * length : 1.0;
   for (size_t i = 0; i < m.n_vertices(); ++i) {
     const Eigen::LLT<Mat3> llt{Mat3(precision[i])};
@@ -89,7 +88,7 @@ void infer_covariances(CovarianceMesh& m, double bias, const ElementNames& names
 
 void isotropic_covariances(CovarianceMesh& m, double s) {
   if (!(s > 0)) throw usage_error("the isotropic scale must be positive, got " + std::to_string(s));
-  check_scale(m);
+  checked_edge_length(m);
   std::vector<double> sum(m.n_vertices(), 0.0);
   std::vector<int> count(m.n_vertices(), 0);
   double total = 0;
