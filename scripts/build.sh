@@ -13,6 +13,6 @@ if [ "${1:-}" = --programs ]; then
   shift
 fi
 source scripts/compiler_cache.sh
-cmake -S . -B build -G Ninja "${launcher[@]}" -DGPSURF_TEST_FOLDERS="core;app;render;ui;window" "$@" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
+cmake -S . -B build -G Ninja "${launcher[@]}" -DGPSURF_TEST_FOLDERS="core;numeric;app;render;ui;window" "$@" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" >/dev/null
 cmake --build build -j"$(nproc)" "${target[@]}"

@@ -3,7 +3,8 @@
 # run under ctest, leak checking on; Mesa's own allocations are suppressed by scripts/lsan.supp (each
 # entry says why). By default every test of our code's logic without a window (core, app, ui) and
 # fixed representative sets of the GL tests (the pipeline, edits, picking, the render command, the
-# compute scan, the overlays, the cache) and of the window tests; `sanitize.sh --all` runs them all.
+# compute scan, the overlays, the cache) and of the window tests; `sanitize.sh --all` runs them all,
+# and the numeric tests too (tests/numeric: the plain suite's alone by default).
 #   scripts/sanitize.sh [--all]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,6 +15,7 @@ cd "$(dirname "$0")/.."
 # suite, and here with --all).
 skipped=(-E 'RenderCli\.ThinGaussiansOfOneOrientation|GpuTest\.TessellatedVerticesMatchTheCpuEvaluator|RenderCli\.ExactEvaluatorDrawsThePatchesOwnTriangles|RenderCli\.TheCpusImagesOfAMeshFarFromTheOriginAreTheGpus|StoredVertices/.*/WeldedWhenSettled')
 if [ "${1:-}" = "--all" ]; then
+  test_folders="core;numeric;app;render;ui;window"
   gl_tests=""
   window_tests=""
   skipped=()

@@ -21,8 +21,10 @@ stage() {
 }
 stage "dependencies" scripts/install_deps.sh
 # Everything the user gets, with the tests that need GL, a display, Python or the installed package.
-# The tests of the logic (core, app, ui) are built and run in the sanitizer build alone.
-stage "build" scripts/build.sh -DGPSURF_TEST_FOLDERS="render;window"
+# The tests of the logic (core, app, ui) are built and run in the sanitizer build alone; the numeric
+# ones (plans, normals and fits measured against the reference: arithmetic, which runs tens of times
+# slower instrumented, on paths the logic tests take too) in this one alone.
+stage "build" scripts/build.sh -DGPSURF_TEST_FOLDERS="numeric;render;window"
 stage "tests" bash -c 'cd build && ctest --output-on-failure -j"$(nproc)" --timeout 600'
 # Every test of core, app and ui and representative GL and window sets under ASan + UBSan, leaks
 # checked (Mesa's own in scripts/lsan.supp), into build-asan/.

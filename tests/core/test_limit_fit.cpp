@@ -1,14 +1,11 @@
-// Fitting a GPS limit surface to points: the limit weights against the evaluator, and fits of a block
-// with sharp edges, a bumpy sphere and a noisy one, simplified and fitted (plain and GPS); a smooth
-// sphere's normals, the Gaussians' bounds and the covariance prior.
+// Fitting a GPS limit surface to points: the limit weights against the evaluator, and how a fit runs:
+// the same on any number of threads, its stops (tolerance, time budget), the means moved first, the
+// covariance prior and the refusals. How well fits fit is tests/numeric/test_limit_fit_quality.cpp's.
 #include <gtest/gtest.h>
 
 #include <omp.h>
 
-#include <Eigen/Eigenvalues>
-
 #include <cmath>
-#include <map>
 #include <random>
 
 #include "core/evaluation/patch_eval.h"
@@ -21,56 +18,14 @@
 #include "core/mesh/dual_map.h"
 #include "core/modelling/samples.h"
 #include "core/plans/stencil_table.h"
+#include "tests/support/fit_cases.h"
 
 namespace gps {
 namespace {
 
-/// A cube [−1, 1]³'s faces as n × n grids of triangles, welded; `shape` maps each point.
-template <class Shape>
-CovarianceMesh cube_surface(int n, Shape shape) {
-  std::map<std::array<int, 3>, int> index;
-  std::vector<Vec3> points;
-  std::vector<std::vector<int>> faces;
-  const auto vertex = [&](const std::array<int, 3>& key) {
-    const auto [it, added] = index.try_emplace(key, int(points.size()));
-    if (added) points.push_back(shape(Vec3(key[0], key[1], key[2]) / n - Vec3::Ones()));
-    return it->second;
-  };
-  for (int axis = 0; axis < 3; ++axis)
-    for (const int side : {0, 2 * n})
-      for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-          int q[4];
-          const int corners[4][2] = {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}};
-          for (int c = 0; c < 4; ++c) {
-            std::array<int, 3> key;
-            key[size_t(axis)] = 2 * corners[c][0];
-            key[size_t((axis + 1) % 3)] = 2 * corners[c][1];
-            key[size_t((axis + 2) % 3)] = side;
-            q[c] = vertex(key);
-          }
-          if (side == 0) std::swap(q[1], q[3]);
-          faces.push_back({q[0], q[1], q[2]});
-          faces.push_back({q[0], q[2], q[3]});
-        }
-  return make_covariance_mesh(points, std::vector<Mat3>(points.size(), Mat3::Identity()), faces);
-}
-
-CovarianceMesh block(int n) {
-  return cube_surface(n, [](const Vec3& p) { return Vec3(p.cwiseProduct(Vec3(1.0, 0.6, 0.4))); });
-}
-
-CovarianceMesh bumpy_sphere(int n, double noise = 0) {
-  std::mt19937 random(7);
-  std::normal_distribution<double> normal(0, noise > 0 ? noise : 1);
-  return cube_surface(n, [&](const Vec3& p) {
-    const Vec3 d = p.normalized();
-    const double r = 1 + 0.08 * std::sin(5 * d[0]) * std::sin(4 * d[1] + 1) + 0.05 * std::cos(6 * d[2]);
-    Vec3 x = r * d;
-    if (noise > 0) x += Vec3(normal(random), normal(random), normal(random)) * noise;
-    return x;
-  });
-}
+using test::block;
+using test::bumpy_sphere;
+using test::expect_same_gaussians;
 
 /// Random Gaussians on a mesh's vertices: means as they are, random SPD covariances.
 CovarianceMesh with_random_gaussians(CovarianceMesh m) {
@@ -119,70 +74,6 @@ TEST(LimitWeights, CatmullClarkMatchesTheEvaluator) {
   expect_weights_match_evaluator(with_random_gaussians(make_sample("cylinder")));
 }
 
-/// The coarse mesh's own triangles (piecewise linear), for the distance of the simplified mesh itself.
-TriangleMesh flat_triangles(const CovarianceMesh& m) {
-  TriangleMesh t;
-  t.positions = vertex_means(m);
-  for (size_t f = 0; f < m.n_faces(); ++f) {
-    const std::span<const int> c = m.face(f);
-    for (size_t k = 1; k + 1 < c.size(); ++k) t.triangles.push_back({c[0], c[k], c[k + 1]});
-  }
-  return t;
-}
-
-struct FitFigures {
-  double simplified = 0, plain = 0, gps = 0;  // rms over the diagonal
-};
-
-FitResult fit(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, bool plain,
-              const std::vector<Vec3>& normals = {}) {
-  FitOptions options;
-  options.iterations = 8;
-  options.plain = plain;
-  FitResult r = fit_limit_surface(coarse, targets, options, normals);
-  for (size_t k = 1; k < r.iterations.size(); ++k)
-    EXPECT_LE(r.iterations[k].error.rms, r.iterations[k - 1].error.rms * (1 + 1e-9)) << "iteration " << k;
-  EXPECT_LT(r.iterations.back().error.rms, r.iterations.front().error.rms);
-  for (size_t i = 0; i < r.mesh.n_vertices(); ++i) EXPECT_TRUE(is_spd(r.mesh.covariance(i))) << "vertex " << i;
-  return r;
-}
-
-FitFigures fit_figures(const CovarianceMesh& dense, size_t vertices) {
-  SimplifyOptions s;
-  s.target_vertices = vertices;
-  const CovarianceMesh coarse = simplify_mesh(dense, s).mesh;
-  const std::vector<Vec3> targets = vertex_means(dense);
-  const auto measured = [&](const CovarianceMesh& m) {
-    return distances_to_surface(targets, limit_surface_triangles(m, 6).triangles).relative_rms();
-  };
-  FitFigures f;
-  f.simplified = distances_to_surface(targets, flat_triangles(coarse)).relative_rms();
-  f.plain = measured(fit(coarse, targets, true).mesh);
-  f.gps = measured(fit(coarse, targets, false).mesh);
-  std::printf("simplified %.3e, plain fit %.3e, GPS fit %.3e (rms over the diagonal)\n", f.simplified, f.plain, f.gps);
-  return f;
-}
-
-TEST(LimitFit, BlockWithSharpEdges) {
-  // The block's faces are flat, so the simplified mesh itself is exact; a smooth limit surface rounds
-  // its edges, the GPS limit much less than the plain one.
-  const FitFigures f = fit_figures(block(16), 200);
-  EXPECT_LT(f.gps, 0.5 * f.plain);
-}
-
-TEST(LimitFit, BumpySphere) {
-  const FitFigures f = fit_figures(bumpy_sphere(16), 200);
-  EXPECT_LT(f.gps, 0.8 * f.plain);
-  EXPECT_LT(f.plain, f.simplified);
-  EXPECT_LT(f.gps, 0.5 * f.simplified);
-}
-
-TEST(LimitFit, NoisyScan) {
-  const FitFigures f = fit_figures(bumpy_sphere(16, 0.003), 200);
-  EXPECT_LT(f.gps, 0.8 * f.plain);
-  EXPECT_LT(f.gps, f.simplified);
-}
-
 TEST(LimitFit, SameResultOnOneAndTwoThreads) {
   const CovarianceMesh dense = bumpy_sphere(10);
   SimplifyOptions s;
@@ -222,14 +113,6 @@ FitResult fit_icosphere_to_bumps(int iterations, double tolerance, double time_b
   options.tolerance = tolerance;
   options.time_budget = time_budget;
   return fit_limit_surface(make_sample("icosphere", 80), vertex_means(bumpy_sphere(8)), options);
-}
-
-void expect_same_gaussians(const CovarianceMesh& a, const CovarianceMesh& b) {
-  ASSERT_EQ(a.n_vertices(), b.n_vertices());
-  for (size_t i = 0; i < a.n_vertices(); ++i) {
-    EXPECT_EQ(a.mean(i), b.mean(i)) << "vertex " << i;
-    EXPECT_EQ(a.covariance(i), b.covariance(i)) << "vertex " << i;
-  }
 }
 
 TEST(LimitFit, StopsWhenTheErrorFallsByLessThanTheTolerance) {
@@ -307,43 +190,6 @@ TEST(LimitFit, RefusesAToleranceOrTimeBudgetOutOfRange) {
   for (const double budget : {0.0, -1.0, double(NAN)}) EXPECT_THROW(fit_icosphere_to_bumps(2, 0, budget), Error);
 }
 
-/// The mean length of each vertex's edges.
-std::vector<double> mean_edge_lengths(const CovarianceMesh& m) {
-  std::vector<double> out;
-  const MeshConnectivity& c = m.connectivity();
-  for (int v = 0; v < int(m.n_vertices()); ++v) {
-    double sum = 0;
-    for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i)
-      sum += (m.mean(size_t(v)) - m.mean(size_t(c.other_vertex(c.vertex_edges[size_t(i)], v)))).norm();
-    out.push_back(sum / double(m.valence(size_t(v))));
-  }
-  return out;
-}
-
-TEST(LimitFit, SmoothSphereTurnsNoFurtherThanThePlainFitAndKeepsItsGaussiansToTheEdges) {
-  const CovarianceMesh dense = cube_surface(12, [](const Vec3& p) { return Vec3(p.normalized()); });
-  SimplifyOptions s;
-  s.target_vertices = 120;
-  const CovarianceMesh coarse = simplify_mesh(dense, s).mesh;
-  const TriangleMesh scan = face_triangles(dense);
-  const auto normals_rms = [&](const CovarianceMesh& m) {
-    const TriangleMesh limit = limit_surface_triangles(m, 6).triangles;
-    return summarise_angles(SurfaceDistance(limit).normal_angles(scan.positions, scan.normals)).rms;
-  };
-  const FitResult gps = fit(coarse, scan.positions, false, smooth_vertex_normals(scan));
-  const double plain = normals_rms(fit(coarse, scan.positions, true).mesh), turned = normals_rms(gps.mesh);
-  std::printf("normals' rms angle: plain fit %.3f°, GPS fit %.3f°\n", plain, turned);
-  EXPECT_LE(turned, plain);
-  // Every standard deviation within FitOptions' bounds times the mean length of its vertex's edges.
-  const FitOptions defaults;
-  const std::vector<double> edge = mean_edge_lengths(coarse);
-  for (size_t i = 0; i < coarse.n_vertices(); ++i) {
-    const Vec3 variances = Eigen::SelfAdjointEigenSolver<Mat3>(gps.mesh.covariance(i)).eigenvalues();
-    EXPECT_LE(std::sqrt(variances.maxCoeff()), defaults.max_sigma * edge[i] * (1 + 1e-9)) << "vertex " << i;
-    EXPECT_GE(std::sqrt(variances.minCoeff()), defaults.min_sigma * edge[i] * (1 - 1e-9)) << "vertex " << i;
-  }
-}
-
 TEST(LimitFit, TheCovariancePriorHoldsTheGaussiansToTheirStart) {
   // Unbounded, the fit moves the covariances; a strong prior keeps them near the start, means free.
   const CovarianceMesh coarse = make_sample("icosphere", 80);
@@ -364,78 +210,6 @@ TEST(LimitFit, TheCovariancePriorHoldsTheGaussiansToTheirStart) {
   const double free = largest_change(0), held = largest_change(1e4);
   EXPECT_GT(free, 0.05);
   EXPECT_LT(held, 0.01 * free);
-}
-
-/// A bumpy sphere's vertices with their normals, and a simplified mesh to fit to them.
-struct ScanToFit {
-  std::vector<Vec3> points, normals;
-  CovarianceMesh coarse;
-};
-
-ScanToFit bumpy_scan() {
-  const CovarianceMesh dense = bumpy_sphere(16);
-  SimplifyOptions s;
-  s.target_vertices = 200;
-  const TriangleMesh scan = face_triangles(dense);
-  return {scan.positions, smooth_vertex_normals(scan), simplify_mesh(dense, s).mesh};
-}
-
-TEST(LimitFit, TheNormalTermTurnsTheSurfaceAsTheScanTurnsAndTheObjectiveNeverRises) {
-  const ScanToFit scan = bumpy_scan();
-  const auto fitted = [&](double normal_weight) {
-    FitOptions options;
-    options.iterations = 8;
-    options.tolerance = 0;
-    options.covariance_smoothness = 0;  // the same for both: only the normal term differs
-    options.normal_weight = normal_weight;
-    const FitResult r = fit_limit_surface(scan.coarse, scan.points, options, scan.normals);
-    // The old closest point is kept where its distance and normal residual are smaller, so no
-    // iteration raises the objective.
-    for (size_t k = 1; k < r.iterations.size(); ++k)
-      EXPECT_LE(r.iterations[k].objective, r.iterations[k - 1].objective * (1 + 1e-12)) << "iteration " << k;
-    const TriangleMesh limit = limit_surface_triangles(r.mesh, 6).triangles;
-    const SurfaceDistance surface(limit);
-    const double angle = summarise_angles(surface.normal_angles(scan.points, scan.normals)).rms;
-    const double rms = summarise_distances(surface.distances(scan.points), 1).rms;
-    std::printf("normal weight %g: rms %.3e, normals' rms angle %.3f°\n", normal_weight, rms, angle);
-    return std::pair(rms, angle);
-  };
-  const auto [free_rms, free_angle] = fitted(0);
-  const auto [turned_rms, turned_angle] = fitted(FitOptions().normal_weight);
-  const auto [strong_rms, strong_angle] = fitted(0.5);
-  EXPECT_LT(turned_angle, free_angle);
-  EXPECT_LT(strong_angle, turned_angle);
-  EXPECT_LT(turned_rms, 1.5 * free_rms);
-  EXPECT_GT(strong_rms, free_rms);  // a strong normal term trades distance for turning
-}
-
-TEST(LimitFit, NormalsChangeNothingWhereTheTermCannotUseThem) {
-  const ScanToFit scan = bumpy_scan();
-  FitOptions options;
-  options.iterations = 2;
-  options.covariance_smoothness = kPointsCovarianceSmoothness;
-  const FitResult without = fit_limit_surface(scan.coarse, scan.points, options);
-  // Zero normals, or a weight of 0, are no normals.
-  expect_same_gaussians(
-      without.mesh,
-      fit_limit_surface(scan.coarse, scan.points, options, std::vector<Vec3>(scan.points.size(), Vec3::Zero())).mesh);
-  FitOptions weightless = options;
-  weightless.normal_weight = 0;
-  expect_same_gaussians(without.mesh, fit_limit_surface(scan.coarse, scan.points, weightless, scan.normals).mesh);
-  EXPECT_FALSE(fit_limit_surface(scan.coarse, scan.points, options, scan.normals).mesh.means() == without.mesh.means());
-  // A plain fit's surface is smooth everywhere: it takes no normal term.
-  FitOptions plain = options;
-  plain.plain = true;
-  expect_same_gaussians(fit_limit_surface(scan.coarse, scan.points, plain).mesh,
-                        fit_limit_surface(scan.coarse, scan.points, plain, scan.normals).mesh);
-  // Unset, the covariance smoothness is 0 with normals and kPointsCovarianceSmoothness without.
-  FitOptions unset = options;
-  unset.covariance_smoothness.reset();
-  expect_same_gaussians(without.mesh, fit_limit_surface(scan.coarse, scan.points, unset).mesh);
-  FitOptions zero = options;
-  zero.covariance_smoothness = 0;
-  expect_same_gaussians(fit_limit_surface(scan.coarse, scan.points, zero, scan.normals).mesh,
-                        fit_limit_surface(scan.coarse, scan.points, unset, scan.normals).mesh);
 }
 
 TEST(SmoothVertexNormals, AVertexOnASharpEdgeOrCornerHasNone) {
