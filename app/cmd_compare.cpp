@@ -25,7 +25,8 @@ void add_compare_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "compare",
       "Distances from A's vertices to B's limit surface (tessellated densely): rms, 99th percentile and max, each also "
-      "over A's bounding-box diagonal; and the rms angle between A's normals (of its faces) and the surface's");
+      "over A's bounding-box diagonal; and the rms angle between A's normals (of its faces, where they meet at no "
+      "sharp edge or corner) and the surface's");
   cmd->add_option("A", args->first, "mesh whose points are measured (its vertices: any mesh file, manifold or not)")
       ->required();
   cmd->add_option("B", args->second, "mesh whose limit surface they are measured to")->required();
@@ -63,8 +64,14 @@ void add_compare_command(CLI::App& app) {
     LimitTriangles limit_a;
     if (a_surface) limit_a = limit_of(args->first, a);
     // The points measured, with their normals: a mesh's limit samples (--samples) or its vertices.
+    // A vertex on a sharp edge or corner has no one normal (its faces' average is neither side's):
+    // it is left out of the angles (core/fitting/face_triangles.h).
+    const auto with_smooth_normals = [](TriangleMesh points) {
+      points.normals = smooth_vertex_normals(points);
+      return points;
+    };
     const auto points_of = [&](const CovarianceMesh& m, const LimitTriangles& own_limit) {
-      return args->samples ? own_limit.triangles : face_triangles(m);
+      return with_smooth_normals(args->samples ? own_limit.triangles : face_triangles(m));
     };
     const auto report = [&](const std::string& from, const TriangleMesh& points, const std::string& to,
                             const LimitTriangles& limit) {
@@ -75,9 +82,11 @@ void add_compare_command(CLI::App& app) {
       const double diagonal = bounding_box_diagonal(points.positions);
       std::cout << ":\n"
                 << describe(summarise_distances(surface.distances(points.positions), diagonal))
-                << describe(summarise_angles(surface.normal_angles(points.positions, points.normals)));
+                << describe(summarise_angles(surface.normal_angles(points.positions, points.normals),
+                                             points.positions.size()));
     };
-    report(args->first, a_surface ? points_of(a, limit_a) : face_triangles(a_soup), args->second, limit_b);
+    report(args->first, a_surface ? points_of(a, limit_a) : with_smooth_normals(face_triangles(a_soup)), args->second,
+           limit_b);
     if (args->both) report(args->second, points_of(b, limit_b), args->first, limit_a);
   });
 }

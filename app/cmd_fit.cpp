@@ -68,7 +68,7 @@ void add_fit_command(CLI::App& app) {
       ->check(number_in(0, 1e6));
   cmd->add_option("--normal-weight", args->normal_weight,
                   "weight of the term that turns the surface's normals toward those of the target's faces, against "
-                  "the squared distance (default 0.005; 0: none; a point cloud has no normals; ignored by --plain)")
+                  "the squared distance (default 0.001; 0: none; a point cloud has no normals; ignored by --plain)")
       ->check(number_in(0, 1e6));
   cmd->add_option(
          "--min-sigma", args->min_sigma,

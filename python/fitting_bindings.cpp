@@ -61,9 +61,10 @@ struct Measurement {
     constexpr size_t kChunk = 1 << 16;
     const TriangleMesh surface = triangles();
     const SurfaceDistance measure(surface);
-    // A Mesh's points have its faces' area-weighted normals; an array's have none.
+    // A Mesh's points have its faces' area-weighted normals, but none on a sharp edge or corner
+    // (gpsurf compare's); an array's have none.
     const std::vector<Vec3> normals =
-        angles && points_mesh ? face_triangles(*points_mesh).normals : std::vector<Vec3>();
+        angles && points_mesh ? smooth_vertex_normals(face_triangles(*points_mesh)) : std::vector<Vec3>();
     Measured out;
     out.distances.reserve(points.size());
     const auto chunk_of = [](const std::vector<Vec3>& all, size_t first) {
@@ -220,7 +221,7 @@ void add_fitting_bindings(py::module_& m) {
               const Measured measured = m.measure(control, true);
               const double length = bounding_box_diagonal(m.points);
               return std::pair(summarise_distances(measured.distances, length),
-                               summarise_angles(measured.normal_angles));
+                               summarise_angles(measured.normal_angles, m.points.size()));
             },
             py::none(), false);
         py::dict out;
@@ -243,7 +244,8 @@ void add_fitting_bindings(py::module_& m) {
       "max (absolute), length (the points' bounding-box diagonal) and relative_rms, relative_percentile_99, "
       "relative_max (divided by it; NaN where the points lie at one place); and how far the normals turn: normal_count "
       "(the points with a normal: a Mesh's "
-      "vertices on a face, area-weighted over them; an array's points have none), normal_rms_degrees and "
+      "vertices on a face, area-weighted over them, but none where its faces meet at a sharp edge or corner; an "
+      "array's points have none), normal_rms_degrees and "
       "normal_max_degrees (the angles, as lines 0..90, between their normals and the surface's at the nearest point; "
       "NaN where no point has a normal).");
 }

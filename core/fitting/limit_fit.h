@@ -51,7 +51,7 @@ struct FitOptions {
   /// edge length, against its squared distance. The covariances' freedom then shapes the surface
   /// as the points' surface turns, rather than into facets that pass near the points (0 or no
   /// normals: none; ignored by a plain fit, whose surface is smooth everywhere).
-  double normal_weight = 0.005;
+  double normal_weight = 0.001;
   /// Each covariance's standard deviations (the square roots of its eigenvalues) kept between these
   /// multiples of the mean length of its vertex's edges, at the start and after every step (0 and
   /// infinity: unbounded; ignored by a plain fit).

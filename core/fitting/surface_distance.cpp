@@ -107,9 +107,10 @@ std::vector<double> SurfaceDistance::normal_angles(const std::vector<Vec3>& poin
   return angles;
 }
 
-AngleSummary summarise_angles(const std::vector<double>& degrees) {
+AngleSummary summarise_angles(const std::vector<double>& degrees, size_t points) {
   AngleSummary s;
   s.count = degrees.size();
+  s.left_out = points > s.count ? points - s.count : 0;
   double sum = 0;
   for (const double d : degrees) {
     sum += d * d;
@@ -120,10 +121,15 @@ AngleSummary summarise_angles(const std::vector<double>& degrees) {
 }
 
 std::string describe(const AngleSummary& s) {
-  if (s.count == 0) return "normals: none to compare (the measured points lie on no face)\n";
-  char text[160];
-  std::snprintf(text, sizeof text, "normals: rms angle %.3g° (max %.3g°) over %zu points\n", s.rms, s.max, s.count);
-  return text;
+  if (s.count == 0)
+    return "normals: none to compare (no measured point has one: each lies on no face, or on a sharp edge or corner)\n";
+  char text[240];
+  const int n =
+      std::snprintf(text, sizeof text, "normals: rms angle %.3g° (max %.3g°) over %zu points", s.rms, s.max, s.count);
+  if (s.left_out > 0)
+    std::snprintf(text + n, sizeof text - size_t(n),
+                  " (%zu without a normal left out: on a sharp edge or corner, or on no face)", s.left_out);
+  return std::string(text) + "\n";
 }
 
 DistanceSummary summarise_distances(std::vector<double> distances, double length) {

@@ -87,10 +87,13 @@ DistanceSummary distances_to_surface(const std::vector<Vec3>& points, const Tria
 /// Angles between normals (SurfaceDistance::normal_angles), summarised: how many, their rms and max.
 struct AngleSummary {
   size_t count = 0;
+  size_t left_out = 0;      // points measured without a normal (on a sharp edge or corner, or on no face)
   double rms = 0, max = 0;  // degrees
 };
-AngleSummary summarise_angles(const std::vector<double>& degrees);
-/// "normals: rms angle 4.2° (max 31°) over 1200 points", or that no point has a normal.
+/// `points`: how many points were measured in all (0: as many as have an angle).
+AngleSummary summarise_angles(const std::vector<double>& degrees, size_t points = 0);
+/// "normals: rms angle 4.2° (max 31°) over 1200 points", with how many were left out, or that no
+/// point has a normal.
 std::string describe(const AngleSummary& summary);
 
 }  // namespace gps

@@ -139,7 +139,7 @@ def fit(
     covariance_prior: float = 0.0,
     min_sigma: float = 0.35,
     max_sigma: float = 1.0,
-    normal_weight: float = 0.005,
+    normal_weight: float = 0.001,
 ) -> Tuple[Mesh, dict[str, Any]]: ...
 @overload
 def fit(
@@ -157,7 +157,7 @@ def fit(
     covariance_prior: float = 0.0,
     min_sigma: float = 0.35,
     max_sigma: float = 1.0,
-    normal_weight: float = 0.005,
+    normal_weight: float = 0.001,
 ) -> Mesh: ...
 def distance(
     points: Union[Mesh, npt.ArrayLike], to: Union[Mesh, Surface], level: Optional[int] = None, linear: bool = False
