@@ -202,6 +202,9 @@ TEST_F(GpuTest, TessellationIsCrackFree) {
     DrawOptions o = flagging_options();
     const Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
     for (int level = 1; level <= 64; level += level < 8 ? 1 : level < 32 ? 7 : 8) {  // 1..8, 15, 22, 29, 36, ..., 64
+      // The pawn's 928 patches are a few pixels each here: past level 16 their triangles are far below
+      // a pixel and show no more (its shared edges at level 64 are SharedEdges' to check, bit for bit).
+      if (level > 16 && std::string(name) == "pawn") break;
       o.level = float(level);
       expect_no_crack(render_frame(renderer, camera, o, 160), mesh, 160,
                       std::string(name) + "-level" + std::to_string(level));
