@@ -7,7 +7,7 @@
 set -euo pipefail
 gpsurf=$1 out=$2 vertices=${3:-1500}
 shift $(($# < 3 ? $# : 3))
-[ $# -gt 0 ] && meshes=("$@") || meshes=(cow camel elephant bunny00 armadillo fandisk anchor_dense blade)
+[ $# -gt 0 ] && meshes=("$@") || meshes=(bunny00 armadillo camel cow turbine fandisk fandisk_large anchor_dense blade cheese)
 data=/usr/share/doc/libcgal-dev/data.tar.gz
 [ -f "$data" ] || { echo "fit_table.sh: $data is missing (apt-get install libcgal-demo)" >&2; exit 1; }
 mkdir -p "$out"
