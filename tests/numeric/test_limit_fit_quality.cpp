@@ -22,17 +22,6 @@ using test::bumpy_sphere;
 using test::cube_surface;
 using test::expect_same_gaussians;
 
-/// The coarse mesh's own triangles (piecewise linear), for the distance of the simplified mesh itself.
-TriangleMesh flat_triangles(const CovarianceMesh& m) {
-  TriangleMesh t;
-  t.positions = vertex_means(m);
-  for (size_t f = 0; f < m.n_faces(); ++f) {
-    const std::span<const int> c = m.face(f);
-    for (size_t k = 1; k + 1 < c.size(); ++k) t.triangles.push_back({c[0], c[k], c[k + 1]});
-  }
-  return t;
-}
-
 struct FitFigures {
   double simplified = 0, plain = 0, gps = 0;  // rms over the diagonal
 };
@@ -59,7 +48,7 @@ FitFigures fit_figures(const CovarianceMesh& dense, size_t vertices) {
     return distances_to_surface(targets, limit_surface_triangles(m, 6).triangles).relative_rms();
   };
   FitFigures f;
-  f.simplified = distances_to_surface(targets, flat_triangles(coarse)).relative_rms();
+  f.simplified = distances_to_surface(targets, face_triangles(coarse)).relative_rms();
   f.plain = measured(fit(coarse, targets, true).mesh);
   f.gps = measured(fit(coarse, targets, false).mesh);
   std::printf("simplified %.3e, plain fit %.3e, GPS fit %.3e (rms over the diagonal)\n", f.simplified, f.plain, f.gps);
