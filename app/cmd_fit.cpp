@@ -27,7 +27,7 @@ void add_fit_command(CLI::App& app) {
     int iterations = FitOptions().iterations, level = 8;
     std::optional<double> covariance_smoothness;
     double smoothness = 1e-5, covariance_prior = FitOptions().covariance_prior, min_sigma = FitOptions().min_sigma,
-           max_sigma = FitOptions().max_sigma, tolerance = FitOptions().tolerance, time = INFINITY,
+           relaxed_min_sigma = FitOptions().relaxed_min_sigma, max_sigma = FitOptions().max_sigma, tolerance = FitOptions().tolerance, time = INFINITY,
            normal_weight = FitOptions().normal_weight;
     bool plain = false, ascii = false, quiet = false;
     PlanArguments plans;
@@ -74,6 +74,11 @@ void add_fit_command(CLI::App& app) {
          "--min-sigma", args->min_sigma,
          "least standard deviation of each Gaussian, over the mean length of its vertex's edges (default 0.35)")
       ->check(number_in(0, 1e6));
+  cmd->add_option("--relaxed-min-sigma", args->relaxed_min_sigma,
+                  "least standard deviation once the fit has converged at --min-sigma, over the same length: the fit "
+                  "goes on at this bound until it converges again (default 0.1; at or above --min-sigma: no second "
+                  "stage)")
+      ->check(number_in(0, 1e6));
   cmd->add_option(
          "--max-sigma", args->max_sigma,
          "greatest standard deviation of each Gaussian, over the mean length of its vertex's edges (default 1)")
@@ -109,6 +114,7 @@ void add_fit_command(CLI::App& app) {
     options.covariance_prior = args->covariance_prior;
     options.normal_weight = args->normal_weight;
     options.min_sigma = args->min_sigma;
+    options.relaxed_min_sigma = args->relaxed_min_sigma;
     options.max_sigma = args->max_sigma;
     options.tolerance = args->tolerance;
     options.time_budget = args->time;
@@ -116,9 +122,15 @@ void add_fit_command(CLI::App& app) {
     // The bar (core/fitting/fit_progress.h) gives way to each iteration's line.
     TerminalProgress bar("fitting", args->quiet);
     FitProgress done(options);
+    bool relaxed_shown = false;
     options.progress = [&](const FitIteration& it) {
       if (args->quiet) return;
       bar.clear();
+      if (it.relaxed && !relaxed_shown) {
+        std::printf("the standard deviations' lower bound relaxed from %g to %g of their vertex's mean edge length\n",
+                    options.min_sigma, options.relaxed_min_sigma);
+        relaxed_shown = true;
+      }
       std::printf("iteration %d: rms %.3e, max %.3e (of the diagonal), %.2f s\n", it.iteration, it.error.relative_rms(),
                   it.error.relative_max(), it.seconds);
       std::fflush(stdout);

@@ -12,11 +12,16 @@ double FitProgress::after(const FitIteration& it) {
   // The fit waits on the larger of the two falls (FitOptions::tolerance).
   const double fall = std::max(last_rms_ > 0 ? (last_rms_ - it.error.rms) / last_rms_ : 0.0,
                                last_objective_ > 0 ? (last_objective_ - it.objective) / last_objective_ : 0.0);
+  if (it.relaxed && stage_ == 0) {
+    stage_ = 1;  // the second stage measures its falls from its own first one
+    first_fall_ = -1;
+  }
   if (tolerance_ > 0 && fall > 0) {
     if (first_fall_ < 0) first_fall_ = fall;
-    if (first_fall_ > tolerance_)
-      fraction =
-          std::max(fraction, std::log(first_fall_ / std::max(fall, tolerance_)) / std::log(first_fall_ / tolerance_));
+    if (first_fall_ > tolerance_) {
+      const double converged = std::log(first_fall_ / std::max(fall, tolerance_)) / std::log(first_fall_ / tolerance_);
+      fraction = std::max(fraction, (std::min(stage_, stages_ - 1) + converged) / stages_);
+    }
   }
   last_rms_ = it.error.rms;
   last_objective_ = it.objective;

@@ -176,6 +176,13 @@ public:
   const Parameters& start() const { return start_; }
   int unknowns() const { return n_ * p_; }
   int unknowns_per_vertex() const { return p_; }
+  /// Lowers the bound on the standard deviations to FitOptions::relaxed_min_sigma; false where it is
+  /// already there or below (or the fit is plain), so there is no second stage.
+  bool relax_lower_bound() {
+    if (p_ != 9 || !(options_.relaxed_min_sigma < min_sigma_)) return false;
+    min_sigma_ = options_.relaxed_min_sigma;
+    return true;
+  }
 
   VertexState vertex_state(const Parameters& x) const {
     VertexState s;
@@ -394,7 +401,7 @@ private:
     const Mat3 l_inverse = l.triangularView<Eigen::Lower>().solve(Mat3::Identity());
     const Eigen::SelfAdjointEigenSolver<Mat3> eigen(l_inverse.transpose() * l_inverse);
     const double edge = edge_[size_t(i)];
-    const double low = options_.min_sigma * edge, high = options_.max_sigma * edge;
+    const double low = min_sigma_ * edge, high = options_.max_sigma * edge;
     const Vec3 variances = eigen.eigenvalues().cwiseMax(low * low).cwiseMin(high * high);
     if (variances == eigen.eigenvalues()) return;
     const Mat3& v = eigen.eigenvectors();
@@ -535,6 +542,7 @@ public:
 
 private:
   const FitOptions& options_;
+  double min_sigma_ = options_.min_sigma;  // the lower bound in force (FitOptions::relaxed_min_sigma)
   const std::vector<Vec3>& targets_;
   const std::vector<Vec3>& normals_;
   PlannedSurface surface_;
@@ -598,6 +606,8 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   if (!(options.time_budget > 0)) throw Error("the fit's time budget must be positive");
   if (!(options.min_sigma >= 0 && options.min_sigma < options.max_sigma))
     throw Error("the fit's standard deviation bounds must be 0 or more, the lower below the upper");
+  if (!(options.relaxed_min_sigma >= 0 && std::isfinite(options.relaxed_min_sigma)))
+    throw Error("the fit's relaxed lower bound on the standard deviations must be finite, 0 or more");
   if (options.covariance_smoothness &&
       !(*options.covariance_smoothness >= 0 && std::isfinite(*options.covariance_smoothness)))
     throw Error("the fit's covariance smoothness must be a finite weight, 0 or more");
@@ -615,10 +625,11 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   double energy = problem.objective_of_correspondences(x);
   // A GPS fit moves its means alone first (FitOptions::means_first).
   bool means_only = problem.unknowns_per_vertex() == 9 && options.means_first > 0;
+  bool relaxed = false;  // the second stage (FitOptions::relaxed_min_sigma)
   const auto held = [&](int u) { return means_only && u % problem.unknowns_per_vertex() >= 3; };
   const auto report = [&](int iteration) {
     FitIteration it{iteration, problem.error(), seconds_since(clock), std::sqrt(energy / double(targets.size())),
-                    means_only};
+                    means_only, relaxed};
     result.iterations.push_back(it);
     if (options.progress) options.progress(it);
     clock = std::chrono::steady_clock::now();
@@ -668,6 +679,11 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
       --iteration;
       continue;
     }
+    if (!accepted && !relaxed && problem.relax_lower_bound()) {
+      relaxed = true;  // no step within the first bound: this iteration again, at the relaxed one
+      --iteration;
+      continue;
+    }
     if (!accepted) {
       result.stop = FitStop::no_descent;
       break;
@@ -682,8 +698,11 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
       means_only = before.error.rms - now.error.rms > options.means_first * before.error.rms;
     } else if (options.tolerance > 0 && before.objective - now.objective <= options.tolerance * before.objective &&
                before.error.rms - now.error.rms <= options.tolerance * before.error.rms) {
-      result.stop = FitStop::converged;
-      break;
+      if (relaxed || !problem.relax_lower_bound()) {
+        result.stop = FitStop::converged;
+        break;
+      }
+      relaxed = true;  // converged at the first bound: on at the relaxed one
     }
     if (seconds_since(start) >= options.time_budget) {
       result.stop = FitStop::time;

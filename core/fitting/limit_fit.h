@@ -22,6 +22,8 @@ struct FitIteration {
   double objective = 0;
   /// Whether this iteration moved the means alone (FitOptions::means_first).
   bool means_only = false;
+  /// Whether it ran with the relaxed lower bound on the standard deviations (FitOptions::relaxed_min_sigma).
+  bool relaxed = false;
 };
 
 /// The covariance smoothness of a fit to points without normals, unless FitOptions says otherwise.
@@ -56,6 +58,12 @@ struct FitOptions {
   /// multiples of the mean length of its vertex's edges, at the start and after every step (0 and
   /// infinity: unbounded; ignored by a plain fit).
   double min_sigma = 0.35, max_sigma = 1.0;
+  /// Once the fit converges with the lower bound at min_sigma, the bound drops to this multiple and the
+  /// fit goes on until it converges again (at or above min_sigma: no second stage). The Gaussians first
+  /// settle at the scale of their edges, then narrow only where the points ask for it (a thin part's
+  /// rims, a machined part's edges); narrowed from the start, they sharpen toward the first, far
+  /// closest points and settle in a worse fit.
+  double relaxed_min_sigma = 0.1;
   /// Stop when an iteration lowers both the rms distance and the objective (FitIteration::objective)
   /// by less than this fraction of each (0: never): by default at 1 %, where further iterations
   /// polish what is already fitted.

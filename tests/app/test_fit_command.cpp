@@ -20,7 +20,7 @@ using test::gpsurf;
 using test::run_command;
 
 /// A sphere of radius 1 as an (n × n)-per-face cube of triangles, pushed out to the sphere.
-std::string sphere_obj(int n) {
+std::string sphere_obj(int n, double flatten = 1) {
   std::ostringstream obj;
   int count = 0;
   for (int axis = 0; axis < 3; ++axis)
@@ -33,7 +33,7 @@ std::string sphere_obj(int n) {
           p[(axis + 1) % 3] = -1 + 2.0 * i / n;
           p[(axis + 2) % 3] = -1 + 2.0 * j / n;
           const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-          obj << "v " << p[0] / r << " " << p[1] / r << " " << p[2] / r << "\n";
+          obj << "v " << p[0] / r << " " << p[1] / r << " " << flatten * p[2] / r << "\n";
           ++count;
         }
       // Faces of one cube side only (not welded to the others): a point set is all the fit reads.
@@ -180,6 +180,27 @@ TEST(FitCli, SigmaBoundsReachTheFitAndAnEmptyRangeIsRefused) {
   EXPECT_EQ(refused.exit_code, 2) << "a usage error, naming both options";
   EXPECT_NE(refused.output.find("--min-sigma 2 must be below --max-sigma 1"), std::string::npos) << refused.output;
   EXPECT_FALSE(std::ifstream(refused_file).good());
+}
+
+TEST(FitCli, SaysWhenItRelaxesTheLowerBoundAndOneStageIsAsked) {
+  test::TempDir dir;
+  const std::string target = dir.write("target.obj", sphere_obj(8, 0.3));  // an ellipsoid 0.3 as thick as wide
+  const std::string coarse = dir.file("coarse.ply"), two = dir.file("two.ply"), one = dir.file("one.ply");
+  ASSERT_EQ(run_command(gpsurf("sample icosphere --size 80 -o " + coarse)).exit_code, 0);
+  const std::string fit = "fit " + coarse + " --target " + target + " --level 0 -o ";
+  const auto relaxed = run_command(gpsurf(fit + two));
+  ASSERT_EQ(relaxed.exit_code, 0) << relaxed.output;
+  EXPECT_NE(relaxed.output.find("the standard deviations' lower bound relaxed from 0.35 to 0.1 of their vertex's mean "
+                                "edge length\niteration "),
+            std::string::npos)
+      << relaxed.output;
+  const auto once = run_command(gpsurf(fit + one + " --relaxed-min-sigma 0.35"));
+  ASSERT_EQ(once.exit_code, 0) << once.output;
+  EXPECT_EQ(once.output.find("relaxed"), std::string::npos) << once.output;
+  EXPECT_NE(read_text_file(one), read_text_file(two));
+  const auto refused = run_command(gpsurf(fit + dir.file("refused.ply") + " --relaxed-min-sigma -1"));
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("--relaxed-min-sigma"), std::string::npos) << refused.output;
 }
 
 TEST(FitCli, ErrorsNameTheFile) {

@@ -1,6 +1,6 @@
 // A fit's progress: the iterations' share, the time budget's, and with a tolerance how far the
 // larger of the rms distance's and the objective's fall per iteration has shrunk toward it on a log
-// scale; never back, never 1 before the end.
+// scale, each of a two-stage fit's stages half of it; never back, never 1 before the end.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,9 +19,15 @@ FitIteration iteration(int k, double rms, double seconds = 0.1, double objective
   return it;
 }
 
-TEST(FitProgress, ConvergingFallsCountOnALogScaleTowardTheTolerance) {
+/// A fit that converges once: its bound on the standard deviations is never relaxed.
+FitOptions one_stage() {
   FitOptions options;  // at most 100 iterations, tolerance 1 %
-  FitProgress progress(options);
+  options.relaxed_min_sigma = options.min_sigma;
+  return options;
+}
+
+TEST(FitProgress, ConvergingFallsCountOnALogScaleTowardTheTolerance) {
+  FitProgress progress(one_stage());
   EXPECT_EQ(progress.after(iteration(0, 1.0)), 0.0);
   // Falls of 10 %, then 5 %, 2.5 %, 1.25 %: log10(10 / fall) of the way from 10 % to 1 %.
   double rms = 0.9;
@@ -36,8 +42,29 @@ TEST(FitProgress, ConvergingFallsCountOnALogScaleTowardTheTolerance) {
   EXPECT_EQ(progress.after(iteration(5, rms)), 0.99);
 }
 
+TEST(FitProgress, TwoStagesEachTakeHalfOfTheConvergence) {
+  FitOptions options;  // the bound relaxed once the fit converges (FitOptions::relaxed_min_sigma)
+  FitProgress progress(options);
+  progress.after(iteration(0, 1.0));
+  progress.after(iteration(1, 0.9));  // a fall of 10 %
+  EXPECT_NEAR(progress.after(iteration(2, 0.9 * 0.99)), 0.5, 1e-12);  // converged at the first bound
+  // The second stage measures from its own first fall, 10 % again, toward the tolerance.
+  FitIteration relaxed = iteration(3, 0.9 * 0.99 * 0.9);
+  relaxed.relaxed = true;
+  EXPECT_NEAR(progress.after(relaxed), 0.5, 1e-12);
+  relaxed = iteration(4, relaxed.error.rms * (1 - 0.05 / 2));
+  relaxed.relaxed = true;
+  EXPECT_NEAR(progress.after(relaxed), 0.5 + 0.5 * std::log10(0.1 / 0.025), 1e-12);
+  // A plain fit has one stage whatever the bounds.
+  options.plain = true;
+  FitProgress plain(options);
+  plain.after(iteration(0, 1.0));
+  plain.after(iteration(1, 0.9));
+  EXPECT_NEAR(plain.after(iteration(2, 0.9 * 0.95)), std::log10(2.0), 1e-12);
+}
+
 TEST(FitProgress, TheLargerOfTheTwoFallsCounts) {
-  FitProgress progress(FitOptions{});
+  FitProgress progress(one_stage());
   progress.after(iteration(0, 1.0, 0.1, 2.0));
   EXPECT_NEAR(progress.after(iteration(1, 0.9, 0.1, 1.0)), 0.01, 1e-12);  // falls of 10 % and 50 %: the first
   // The rms rises while the objective falls by 5 % of the 50 % fall: log10(50 / 5) / log10(50 / 1).

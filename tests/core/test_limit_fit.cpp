@@ -1,9 +1,12 @@
 // Fitting a GPS limit surface to points: the limit weights against the evaluator, and how a fit runs:
-// the same on any number of threads, its stops (tolerance, time budget), the means moved first, the
-// covariance prior and the refusals. How well fits fit is tests/numeric/test_limit_fit_quality.cpp's.
+// the same on any number of threads, its stops (tolerance, time budget), the lower bound relaxed once
+// converged, the means moved first, the covariance prior and the refusals. How well fits fit is
+// tests/numeric/test_limit_fit_quality.cpp's.
 #include <gtest/gtest.h>
 
 #include <omp.h>
+
+#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <random>
@@ -26,6 +29,7 @@ namespace {
 using test::block;
 using test::bumpy_sphere;
 using test::expect_same_gaussians;
+using test::mean_edge_lengths;
 
 /// Random Gaussians on a mesh's vertices: means as they are, random SPD covariances.
 CovarianceMesh with_random_gaussians(CovarianceMesh m) {
@@ -106,13 +110,21 @@ TEST(LimitFit, PointsOnTheStartingSurfaceStayPut) {
   EXPECT_LT(r.iterations.back().error.relative_max(), 1e-9);
 }
 
-/// An icosphere fitted to a bumpy sphere's points: a fit whose error levels off within tens of iterations.
+/// An icosphere fitted to a bumpy sphere's points: a fit whose error levels off within tens of
+/// iterations, in one stage (its lower bound never relaxed: FitOptions::relaxed_min_sigma).
 FitResult fit_icosphere_to_bumps(int iterations, double tolerance, double time_budget = INFINITY) {
   FitOptions options;
   options.iterations = iterations;
   options.tolerance = tolerance;
   options.time_budget = time_budget;
+  options.relaxed_min_sigma = options.min_sigma;
   return fit_limit_surface(make_sample("icosphere", 80), vertex_means(bumpy_sphere(8)), options);
+}
+
+/// The larger of the rms distance's and the objective's fall at iteration k, a fraction of each.
+double fall_at(const FitResult& r, size_t k) {
+  const FitIteration &before = r.iterations[k - 1], &now = r.iterations[k];
+  return std::max(1 - now.error.rms / before.error.rms, 1 - now.objective / before.objective);
 }
 
 TEST(LimitFit, StopsWhenTheErrorFallsByLessThanTheTolerance) {
@@ -122,14 +134,51 @@ TEST(LimitFit, StopsWhenTheErrorFallsByLessThanTheTolerance) {
   ASSERT_GE(r.iterations.size(), 3u);
   ASSERT_LT(r.iterations.size(), 41u);
   // It stops at the first iteration where both the rms distance and the objective fall by no more.
-  const auto falls = [&](size_t k) {
-    const FitIteration &before = r.iterations[k - 1], &now = r.iterations[k];
-    return std::max(1 - now.error.rms / before.error.rms, 1 - now.objective / before.objective);
-  };
-  EXPECT_LE(falls(r.iterations.size() - 1), tolerance);
-  for (size_t k = 1; k + 1 < r.iterations.size(); ++k) EXPECT_GT(falls(k), tolerance) << "iteration " << k;
+  EXPECT_LE(fall_at(r, r.iterations.size() - 1), tolerance);
+  for (size_t k = 1; k + 1 < r.iterations.size(); ++k) EXPECT_GT(fall_at(r, k), tolerance) << "iteration " << k;
+  for (const FitIteration& it : r.iterations) EXPECT_FALSE(it.relaxed);
   // Stopping changes nothing of the iterations run: the same mesh as a fit asked for that many.
   expect_same_gaussians(r.mesh, fit_icosphere_to_bumps(int(r.iterations.size()) - 1, 0).mesh);
+}
+
+TEST(LimitFit, OnceConvergedItRelaxesTheLowerBoundAndGoesOnUntilItConvergesAgain) {
+  // An icosphere fitted to an ellipsoid 0.3 as thick as it is wide, whose rims want narrower Gaussians.
+  const CovarianceMesh coarse = make_sample("icosphere", 80);
+  const std::vector<Vec3> targets =
+      vertex_means(test::cube_surface(8, [](const Vec3& p) { return Vec3(p.normalized().cwiseProduct(Vec3(1, 1, 0.3))); }));
+  const double tolerance = 0.02;
+  const auto fitted = [&](bool two_stages) {
+    FitOptions options;
+    options.iterations = 60;
+    options.tolerance = tolerance;
+    if (!two_stages) options.relaxed_min_sigma = options.min_sigma;
+    return fit_limit_surface(coarse, targets, options);
+  };
+  const FitResult r = fitted(true);
+  EXPECT_EQ(r.stop, FitStop::converged);
+  size_t relaxed = 1;  // the first iteration at the relaxed bound
+  while (relaxed < r.iterations.size() && !r.iterations[relaxed].relaxed) ++relaxed;
+  ASSERT_LT(relaxed, r.iterations.size());
+  ASSERT_GE(relaxed, 3u);
+  // The first stage ran as a one-stage fit does, iteration for iteration, to its convergence.
+  const FitResult first = fitted(false);
+  ASSERT_EQ(first.iterations.size(), relaxed);
+  for (size_t k = 0; k < relaxed; ++k) EXPECT_EQ(r.iterations[k].error.rms, first.iterations[k].error.rms) << k;
+  // Then every iteration is relaxed, and the second stage stops at its own first small fall.
+  for (size_t k = relaxed; k < r.iterations.size(); ++k) EXPECT_TRUE(r.iterations[k].relaxed) << k;
+  for (size_t k = relaxed; k + 1 < r.iterations.size(); ++k) EXPECT_GT(fall_at(r, k), tolerance) << "iteration " << k;
+  EXPECT_LE(fall_at(r, r.iterations.size() - 1), tolerance);
+  EXPECT_LT(r.iterations.back().error.rms, first.iterations.back().error.rms);
+  // Its standard deviations within the relaxed bound, some below the first.
+  const FitOptions defaults;
+  const std::vector<double> edge = mean_edge_lengths(coarse);
+  bool narrowed = false;
+  for (size_t i = 0; i < r.mesh.n_vertices(); ++i) {
+    const double least = std::sqrt(Eigen::SelfAdjointEigenSolver<Mat3>(r.mesh.covariance(i)).eigenvalues()[0]);
+    EXPECT_GE(least, defaults.relaxed_min_sigma * edge[i] * (1 - 1e-9)) << "vertex " << i;
+    narrowed = narrowed || least < defaults.min_sigma * edge[i] * (1 - 1e-9);
+  }
+  EXPECT_TRUE(narrowed);
 }
 
 TEST(LimitFit, ToleranceZeroRunsEveryIteration) {
@@ -253,6 +302,11 @@ TEST(LimitFit, RefusesABadCovarianceWeightOrSigmaBounds) {
     FitOptions normal;
     normal.normal_weight = smoothness;
     EXPECT_THROW(fit_limit_surface(coarse, targets, normal), Error) << smoothness;
+  }
+  for (const double relaxed : {-0.1, double(NAN), double(INFINITY)}) {
+    FitOptions options;
+    options.relaxed_min_sigma = relaxed;
+    EXPECT_THROW(fit_limit_surface(coarse, targets, options), Error) << relaxed;
   }
   EXPECT_THROW(fit_limit_surface(coarse, targets, FitOptions(), std::vector<Vec3>(targets.size() + 1, Vec3::UnitX())),
                Error);

@@ -1,5 +1,5 @@
 """The keywords that mirror the command line's options: fit's covariance_smoothness, covariance_prior,
-min_sigma, max_sigma and normal_weight (--covariance-smoothness ...), simplify's error and quads
+min_sigma, max_sigma, relaxed_min_sigma and normal_weight (--covariance-smoothness ...), simplify's error and quads
 (--error, --quads), and compare's angles between normals; each gives what the command line gives and
 refuses what it refuses."""
 import inspect
@@ -54,9 +54,10 @@ def sigmas(mesh):
 def test_fit_defaults_are_the_command_lines():
     parameters = inspect.signature(gpsurf.fit).parameters
     assert {name: parameters[name].default for name in
-            ("covariance_smoothness", "covariance_prior", "min_sigma", "max_sigma", "normal_weight")} == {
+            ("covariance_smoothness", "covariance_prior", "min_sigma", "max_sigma", "normal_weight",
+             "relaxed_min_sigma")} == {
         "covariance_smoothness": None, "covariance_prior": 0.0, "min_sigma": 0.35, "max_sigma": 1.0,
-        "normal_weight": 0.001}
+        "normal_weight": 0.001, "relaxed_min_sigma": 0.1}
     with pytest.raises(TypeError):  # keywords only: no float taken for another by its place
         gpsurf.fit(gpsurf.sample("icosphere", 80), gpsurf.sample("icosphere", 80).positions, 1, False, 1e-5, 0.0,
                    None, None, False, 1e-4)
@@ -75,6 +76,19 @@ def test_fit_keeps_each_sigma_within_the_bounds_as_the_command_line_does(tmp_pat
     # The default bounds leave a wider spread than the tight ones allow.
     spread = sigmas(default) / edge
     assert spread.min() < 0.5 * (1 - 1e-6) or spread.max() > 0.55 * (1 + 1e-6)
+
+
+def test_fit_relaxes_its_lower_bound_once_converged_unless_asked_not_to(spheres):
+    coarse, sphere = spheres
+    flat = sphere.positions * np.array([1.0, 1.0, 0.2])  # an ellipsoid whose rims want narrower Gaussians
+    relaxed, details = gpsurf.fit(coarse, flat, tolerance=0.02, report=True)
+    once, once_details = gpsurf.fit(coarse, flat, tolerance=0.02, relaxed_min_sigma=0.35, report=True)
+    assert details["stop"] == "converged" and details["iterations"] > once_details["iterations"]
+    assert details["relative_rms"][-1] < once_details["relative_rms"][-1]
+    edge = mean_edge_lengths(coarse)[:, None]
+    assert np.all(sigmas(once) >= 0.35 * edge * (1 - 1e-9))
+    assert np.all(sigmas(relaxed) >= 0.1 * edge * (1 - 1e-9))
+    assert np.any(sigmas(relaxed) < 0.35 * edge * (1 - 1e-9))
 
 
 def test_fit_covariance_weights_act_as_the_command_lines(tmp_path, cli, spheres):
@@ -99,6 +113,8 @@ def test_fit_covariance_weights_act_as_the_command_lines(tmp_path, cli, spheres)
 @pytest.mark.parametrize("bad, words", [
     ({"min_sigma": math.nan}, "min_sigma: expected a number from 0"),
     ({"min_sigma": -0.1}, "min_sigma: expected a number from 0"),
+    ({"relaxed_min_sigma": math.nan}, "relaxed_min_sigma: expected a number from 0"),
+    ({"relaxed_min_sigma": -1}, "relaxed_min_sigma: expected a number from 0"),
     ({"min_sigma": 1.0}, r"min_sigma: expected below max_sigma \(1.0\)"),
     ({"min_sigma": 0.6, "max_sigma": 0.5}, r"min_sigma: expected below max_sigma \(0.5\)"),
     ({"max_sigma": 0.0}, "max_sigma: expected a finite number above 0"),

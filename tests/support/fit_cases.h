@@ -1,6 +1,7 @@
 #pragma once
 // What the fitting tests fit to (a cube's faces as grids of triangles, mapped to a block with sharp
-// edges or a bumpy, optionally noisy, sphere) and the check that two fits gave the same Gaussians.
+// edges or a bumpy, optionally noisy, sphere), the mean length of each vertex's edges (what the fit's
+// bounds on the standard deviations are relative to) and the check that two fits gave the same Gaussians.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -60,6 +61,19 @@ inline CovarianceMesh bumpy_sphere(int n, double noise = 0) {
     if (noise > 0) x += Vec3(normal(random), normal(random), normal(random)) * noise;
     return x;
   });
+}
+
+/// The mean length of each vertex's edges.
+inline std::vector<double> mean_edge_lengths(const CovarianceMesh& m) {
+  std::vector<double> out;
+  const MeshConnectivity& c = m.connectivity();
+  for (int v = 0; v < int(m.n_vertices()); ++v) {
+    double sum = 0;
+    for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i)
+      sum += (m.mean(size_t(v)) - m.mean(size_t(c.other_vertex(c.vertex_edges[size_t(i)], v)))).norm();
+    out.push_back(sum / double(m.valence(size_t(v))));
+  }
+  return out;
 }
 
 /// Bit for bit the same means and covariances.
