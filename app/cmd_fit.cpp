@@ -27,8 +27,8 @@ void add_fit_command(CLI::App& app) {
     int iterations = FitOptions().iterations, level = 8;
     std::optional<double> covariance_smoothness;
     double smoothness = 1e-5, covariance_prior = FitOptions().covariance_prior, min_sigma = FitOptions().min_sigma,
-           relaxed_min_sigma = FitOptions().relaxed_min_sigma, max_sigma = FitOptions().max_sigma, tolerance = FitOptions().tolerance, time = INFINITY,
-           normal_weight = FitOptions().normal_weight;
+           relaxed_min_sigma = FitOptions().relaxed_min_sigma, max_sigma = FitOptions().max_sigma,
+           tolerance = FitOptions().tolerance, time = INFINITY, normal_weight = FitOptions().normal_weight;
     bool plain = false, ascii = false, quiet = false;
     PlanArguments plans;
     RepairArguments repair;

@@ -628,7 +628,7 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   bool relaxed = false;  // the second stage (FitOptions::relaxed_min_sigma)
   const auto held = [&](int u) { return means_only && u % problem.unknowns_per_vertex() >= 3; };
   const auto report = [&](int iteration) {
-    FitIteration it{iteration, problem.error(), seconds_since(clock), std::sqrt(energy / double(targets.size())),
+    FitIteration it{iteration,  problem.error(), seconds_since(clock), std::sqrt(energy / double(targets.size())),
                     means_only, relaxed};
     result.iterations.push_back(it);
     if (options.progress) options.progress(it);

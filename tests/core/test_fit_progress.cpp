@@ -46,7 +46,7 @@ TEST(FitProgress, TwoStagesEachTakeHalfOfTheConvergence) {
   FitOptions options;  // the bound relaxed once the fit converges (FitOptions::relaxed_min_sigma)
   FitProgress progress(options);
   progress.after(iteration(0, 1.0));
-  progress.after(iteration(1, 0.9));  // a fall of 10 %
+  progress.after(iteration(1, 0.9));                                  // a fall of 10 %
   EXPECT_NEAR(progress.after(iteration(2, 0.9 * 0.99)), 0.5, 1e-12);  // converged at the first bound
   // The second stage measures from its own first fall, 10 % again, toward the tolerance.
   FitIteration relaxed = iteration(3, 0.9 * 0.99 * 0.9);

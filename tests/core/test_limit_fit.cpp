@@ -144,8 +144,8 @@ TEST(LimitFit, StopsWhenTheErrorFallsByLessThanTheTolerance) {
 TEST(LimitFit, OnceConvergedItRelaxesTheLowerBoundAndGoesOnUntilItConvergesAgain) {
   // An icosphere fitted to an ellipsoid 0.3 as thick as it is wide, whose rims want narrower Gaussians.
   const CovarianceMesh coarse = make_sample("icosphere", 80);
-  const std::vector<Vec3> targets =
-      vertex_means(test::cube_surface(8, [](const Vec3& p) { return Vec3(p.normalized().cwiseProduct(Vec3(1, 1, 0.3))); }));
+  const std::vector<Vec3> targets = vertex_means(
+      test::cube_surface(8, [](const Vec3& p) { return Vec3(p.normalized().cwiseProduct(Vec3(1, 1, 0.3))); }));
   const double tolerance = 0.02;
   const auto fitted = [&](bool two_stages) {
     FitOptions options;
