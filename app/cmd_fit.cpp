@@ -25,9 +25,9 @@ void add_fit_command(CLI::App& app) {
   struct Args {
     std::string coarse, target, output;
     int iterations = FitOptions().iterations, level = 8;
-    std::optional<double> covariance_smoothness, relaxed_min_sigma;
+    std::optional<double> covariance_smoothness;
     double smoothness = 1e-5, covariance_prior = FitOptions().covariance_prior, min_sigma = FitOptions().min_sigma,
-           max_sigma = FitOptions().max_sigma,
+           relaxed_min_sigma = FitOptions().relaxed_min_sigma, max_sigma = FitOptions().max_sigma,
            tolerance = FitOptions().tolerance, time = INFINITY, normal_weight = FitOptions().normal_weight;
     bool plain = false, ascii = false, quiet = false;
     PlanArguments plans;
@@ -76,9 +76,8 @@ void add_fit_command(CLI::App& app) {
       ->check(number_in(0, 1e6));
   cmd->add_option("--relaxed-min-sigma", args->relaxed_min_sigma,
                   "least standard deviation once the fit has converged at --min-sigma, over the same length: the fit "
-                  "goes on at this bound until it converges again (default 0.1 where the target has faces, whose "
-                  "normals keep narrowed Gaussians from facets; none for a point cloud; at or above --min-sigma: "
-                  "no second stage)")
+                  "goes on at this bound until it converges again (default 0.1; at or above --min-sigma: no second "
+                  "stage)")
       ->check(number_in(0, 1e6));
   cmd->add_option(
          "--max-sigma", args->max_sigma,
@@ -122,14 +121,14 @@ void add_fit_command(CLI::App& app) {
     options.plans = args->plans.options();
     // The bar (core/fitting/fit_progress.h) gives way to each iteration's line.
     TerminalProgress bar("fitting", args->quiet);
-    FitProgress done(options, normals);
+    FitProgress done(options);
     bool relaxed_shown = false;
     options.progress = [&](const FitIteration& it) {
       if (args->quiet) return;
       bar.clear();
       if (it.relaxed && !relaxed_shown) {
         std::printf("the standard deviations' lower bound relaxed from %g to %g of their vertex's mean edge length\n",
-                    options.min_sigma, options.relaxed_min_sigma.value_or(kRelaxedMinSigma));
+                    options.min_sigma, options.relaxed_min_sigma);
         relaxed_shown = true;
       }
       std::printf("iteration %d: rms %.3e, max %.3e (of the diagonal), %.2f s\n", it.iteration, it.error.relative_rms(),

@@ -128,7 +128,7 @@ void add_fitting_bindings(py::module_& m) {
       [](const MeshHandle& coarse, const py::object& target, const Integer& iterations, bool plain, double smoothness,
          double tolerance, std::optional<double> time, const py::object& progress, bool report,
          std::optional<double> covariance_smoothness, double covariance_prior, double min_sigma, double max_sigma,
-         double normal_weight, std::optional<double> relaxed_min_sigma) -> py::object {
+         double normal_weight, double relaxed_min_sigma) -> py::object {
         FitOptions o;
         o.iterations = int_in(iterations, 0, 1000, "iterations");
         o.plain = plain;
@@ -143,7 +143,7 @@ void add_fitting_bindings(py::module_& m) {
         if (!(o.min_sigma < o.max_sigma))
           throw py::value_error("min_sigma: expected below max_sigma (" + shown_number(max_sigma) + "), got " +
                                 shown_number(min_sigma));
-        if (relaxed_min_sigma) o.relaxed_min_sigma = number_in(*relaxed_min_sigma, 0, 1e6, "relaxed_min_sigma");
+        o.relaxed_min_sigma = number_in(relaxed_min_sigma, 0, 1e6, "relaxed_min_sigma");
         if (!(tolerance >= 0 && tolerance <= 1)) throw py::value_error("tolerance: expected a fraction 0..1");
         o.tolerance = tolerance;
         if (time && !(std::isfinite(*time) && *time > 0))
@@ -156,12 +156,12 @@ void add_fitting_bindings(py::module_& m) {
         if (py::isinstance<MeshHandle>(target)) target_mesh = target.cast<const MeshHandle&>().mesh;
         FitResult result = call_in_background(
             [source = coarse.mesh, targets = std::move(targets), target_mesh, o](CallControl& control) mutable {
-              const std::vector<Vec3> normals =
-                  target_mesh ? smooth_vertex_normals(face_triangles(*target_mesh)) : std::vector<Vec3>();
-              o.progress = [&control, done = FitProgress(o, normals)](const FitIteration& it) mutable {
+              o.progress = [&control, done = FitProgress(o)](const FitIteration& it) mutable {
                 control.throw_if_stopped();
                 control.report(done.after(it));
               };
+              const std::vector<Vec3> normals =
+                  target_mesh ? smooth_vertex_normals(face_triangles(*target_mesh)) : std::vector<Vec3>();
               FitResult fitted = fit_limit_surface(*source, targets, o, normals);
               // Targets near the positions' limit can draw the control points past it: refused as a Mesh would be.
               validate_gaussians(fitted.mesh, "the fitted mesh");
@@ -185,7 +185,7 @@ void add_fitting_bindings(py::module_& m) {
       py::arg("covariance_smoothness") = py::none(), py::arg("covariance_prior") = FitOptions().covariance_prior,
       py::arg("min_sigma") = FitOptions().min_sigma, py::arg("max_sigma") = FitOptions().max_sigma,
       py::arg("normal_weight") = FitOptions().normal_weight,
-      py::arg("relaxed_min_sigma") = py::none(),
+      py::arg("relaxed_min_sigma") = FitOptions().relaxed_min_sigma,
       "The limit surface of `coarse` fitted to `target` (a Mesh's vertices or an (n, 3) array of points), as gpsurf "
       "fit fits it: up to `iterations` (0..1000) Levenberg-Marquardt steps on the squared distances from the points "
       "to their closest limit points, moving the means and (unless plain) the covariances; smoothness: the weight "
@@ -195,8 +195,7 @@ void add_fitting_bindings(py::module_& m) {
       "weight of the prior that keeps each near its start (0..1e6, 0: none); min_sigma and max_sigma, the least "
       "and greatest standard deviation of each Gaussian over the mean length of its vertex's edges (min_sigma "
       "0..1e6, max_sigma finite and above it); relaxed_min_sigma, the lower bound once the fit has converged at "
-      "min_sigma, where it goes on until it converges again (0..1e6; None: 0.1 for a Mesh target, none for an "
-      "array; at or above min_sigma: no second stage); "
+      "min_sigma, where it goes on until it converges again (0..1e6; at or above min_sigma: no second stage); "
       "normal_weight, the weight of the term that turns the surface's "
       "normals toward those of a Mesh target's faces (0..1e6, 0: none; an array has no normals). tolerance: stop "
       "when an iteration lowers both the rms distance and the fit's objective by less than this fraction (0: "

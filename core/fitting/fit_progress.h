@@ -7,12 +7,11 @@ namespace gps {
 
 class FitProgress {
 public:
-  /// `normals`: the fit's points' normals (fits_in_two_stages).
-  FitProgress(const FitOptions& options, const std::vector<Vec3>& normals)
+  explicit FitProgress(const FitOptions& options)
       : iterations_(options.iterations),
         time_budget_(options.time_budget),
         tolerance_(options.tolerance),
-        stages_(fits_in_two_stages(options, normals) ? 2 : 1) {}
+        stages_(!options.plain && options.relaxed_min_sigma < options.min_sigma ? 2 : 1) {}
   /// The fraction done, 0 to below 1, after iteration `it` (given in order, iteration 0 first): the
   /// largest of the iterations run over the cap, the seconds spent over the time budget and, with a
   /// tolerance, how far the fall per iteration (the larger of the rms distance's and the

@@ -119,16 +119,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Whether some point has a normal: zero normals are none (a point cloud's, with no faces to give one).
-bool any_normal(const std::vector<Vec3>& normals) {
-  return std::any_of(normals.begin(), normals.end(), [](const Vec3& n) { return !n.isZero(0.0); });
-}
-
-// The lower bound once a fit has converged (FitOptions::relaxed_min_sigma); infinity: none.
-double relaxed_bound(const FitOptions& options, bool normal_term) {
-  return options.relaxed_min_sigma.value_or(normal_term ? kRelaxedMinSigma : INFINITY);
-}
-
 // The fit's problem: unknowns P per vertex (3 means, then 6 factor parameters unless plain), vertex-major.
 class FitProblem {
 public:
@@ -170,12 +160,12 @@ public:
     l.setFromTriplets(lap.begin(), lap.end());
     laplacian_normal_ = Eigen::SparseMatrix<double>(l.transpose() * l);
     length_ = edges > 0 ? edge_sum / double(edges) : diagonal_;
-    if (!options.plain && options.normal_weight > 0 && any_normal(normals)) normal_scale_ = std::sqrt(options.normal_weight) * length_;
+    if (!options.plain && options.normal_weight > 0 && !normals.empty())
+      normal_scale_ = std::sqrt(options.normal_weight) * length_;
     const double per_vertex = double(targets.size()) / double(std::max(n_, 1));
     smoothness_ = options.smoothness * per_vertex;
     covariance_smoothness_ =
         options.covariance_smoothness.value_or(normal_scale_ > 0 ? 0.0 : kPointsCovarianceSmoothness) * per_vertex;
-    relaxed_min_sigma_ = relaxed_bound(options, normal_scale_ > 0);
     for (double& edge : edge_)
       if (!(edge > 0)) edge = length_;
     if (p_ == 9)
@@ -189,8 +179,8 @@ public:
   /// Lowers the bound on the standard deviations to FitOptions::relaxed_min_sigma; false where it is
   /// already there or below (or the fit is plain), so there is no second stage.
   bool relax_lower_bound() {
-    if (p_ != 9 || !(relaxed_min_sigma_ < min_sigma_)) return false;
-    min_sigma_ = relaxed_min_sigma_;
+    if (p_ != 9 || !(options_.relaxed_min_sigma < min_sigma_)) return false;
+    min_sigma_ = options_.relaxed_min_sigma;
     return true;
   }
 
@@ -553,7 +543,6 @@ public:
 private:
   const FitOptions& options_;
   double min_sigma_ = options_.min_sigma;  // the lower bound in force (FitOptions::relaxed_min_sigma)
-  double relaxed_min_sigma_ = INFINITY;
   const std::vector<Vec3>& targets_;
   const std::vector<Vec3>& normals_;
   PlannedSurface surface_;
@@ -574,10 +563,6 @@ private:
 };
 
 }  // namespace
-
-bool fits_in_two_stages(const FitOptions& options, const std::vector<Vec3>& normals) {
-  return !options.plain && relaxed_bound(options, any_normal(normals) && options.normal_weight > 0) < options.min_sigma;
-}
 
 CovarianceMesh with_isotropic_covariances(const CovarianceMesh& mesh) {
   double sum = 0;
@@ -621,7 +606,7 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   if (!(options.time_budget > 0)) throw Error("the fit's time budget must be positive");
   if (!(options.min_sigma >= 0 && options.min_sigma < options.max_sigma))
     throw Error("the fit's standard deviation bounds must be 0 or more, the lower below the upper");
-  if (options.relaxed_min_sigma && !(*options.relaxed_min_sigma >= 0 && std::isfinite(*options.relaxed_min_sigma)))
+  if (!(options.relaxed_min_sigma >= 0 && std::isfinite(options.relaxed_min_sigma)))
     throw Error("the fit's relaxed lower bound on the standard deviations must be finite, 0 or more");
   if (options.covariance_smoothness &&
       !(*options.covariance_smoothness >= 0 && std::isfinite(*options.covariance_smoothness)))

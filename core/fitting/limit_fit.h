@@ -28,8 +28,6 @@ struct FitIteration {
 
 /// The covariance smoothness of a fit to points without normals, unless FitOptions says otherwise.
 inline constexpr double kPointsCovarianceSmoothness = 1e-4;
-/// The relaxed lower bound of a fit whose normal term acts, unless FitOptions says otherwise.
-inline constexpr double kRelaxedMinSigma = 0.1;
 
 struct FitOptions {
   /// The most iterations; by default the fit stops sooner, once converged (`tolerance`).
@@ -64,9 +62,8 @@ struct FitOptions {
   /// fit goes on until it converges again (at or above min_sigma: no second stage). The Gaussians first
   /// settle at the scale of their edges, then narrow only where the points ask for it (a thin part's
   /// rims, a machined part's edges); narrowed from the start, they sharpen toward the first, far
-  /// closest points and settle in a worse fit. Unset: kRelaxedMinSigma where the normal term acts
-  /// (it keeps the narrowed Gaussians from facets), else no second stage.
-  std::optional<double> relaxed_min_sigma;
+  /// closest points and settle in a worse fit.
+  double relaxed_min_sigma = 0.1;
   /// Stop when an iteration lowers both the rms distance and the objective (FitIteration::objective)
   /// by less than this fraction of each (0: never): by default at 1 %, where further iterations
   /// polish what is already fitted.
@@ -117,10 +114,6 @@ struct FitResult {
 /// normal term of FitOptions::normal_weight.
 FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3>& targets, const FitOptions& options,
                             const std::vector<Vec3>& normals = {});
-
-/// Whether a fit with these options and its points' normals runs in two stages
-/// (FitOptions::relaxed_min_sigma).
-bool fits_in_two_stages(const FitOptions& options, const std::vector<Vec3>& normals);
 
 /// The same mesh with every covariance the isotropic Σ = (σ² I), σ half the mean edge length: the
 /// starting point of a plain fit, whose limit surface is the linear scheme's.

@@ -140,7 +140,7 @@ def fit(
     min_sigma: float = 0.35,
     max_sigma: float = 1.0,
     normal_weight: float = 0.001,
-    relaxed_min_sigma: Optional[float] = None,
+    relaxed_min_sigma: float = 0.1,
 ) -> Tuple[Mesh, dict[str, Any]]: ...
 @overload
 def fit(
@@ -159,7 +159,7 @@ def fit(
     min_sigma: float = 0.35,
     max_sigma: float = 1.0,
     normal_weight: float = 0.001,
-    relaxed_min_sigma: Optional[float] = None,
+    relaxed_min_sigma: float = 0.1,
 ) -> Mesh: ...
 def distance(
     points: Union[Mesh, npt.ArrayLike], to: Union[Mesh, Surface], level: Optional[int] = None, linear: bool = False

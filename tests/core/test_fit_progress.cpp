@@ -19,9 +19,6 @@ FitIteration iteration(int k, double rms, double seconds = 0.1, double objective
   return it;
 }
 
-/// The normals of a fit's points: with them, a fit runs in two stages by default.
-const std::vector<Vec3> kNormals{Vec3::UnitZ()};
-
 /// A fit that converges once: its bound on the standard deviations is never relaxed.
 FitOptions one_stage() {
   FitOptions options;  // at most 100 iterations, tolerance 1 %
@@ -30,7 +27,7 @@ FitOptions one_stage() {
 }
 
 TEST(FitProgress, ConvergingFallsCountOnALogScaleTowardTheTolerance) {
-  FitProgress progress(one_stage(), kNormals);
+  FitProgress progress(one_stage());
   EXPECT_EQ(progress.after(iteration(0, 1.0)), 0.0);
   // Falls of 10 %, then 5 %, 2.5 %, 1.25 %: log10(10 / fall) of the way from 10 % to 1 %.
   double rms = 0.9;
@@ -47,7 +44,7 @@ TEST(FitProgress, ConvergingFallsCountOnALogScaleTowardTheTolerance) {
 
 TEST(FitProgress, TwoStagesEachTakeHalfOfTheConvergence) {
   FitOptions options;  // the bound relaxed once the fit converges (FitOptions::relaxed_min_sigma)
-  FitProgress progress(options, kNormals);
+  FitProgress progress(options);
   progress.after(iteration(0, 1.0));
   progress.after(iteration(1, 0.9));                                  // a fall of 10 %
   EXPECT_NEAR(progress.after(iteration(2, 0.9 * 0.99)), 0.5, 1e-12);  // converged at the first bound
@@ -58,20 +55,16 @@ TEST(FitProgress, TwoStagesEachTakeHalfOfTheConvergence) {
   relaxed = iteration(4, relaxed.error.rms * (1 - 0.05 / 2));
   relaxed.relaxed = true;
   EXPECT_NEAR(progress.after(relaxed), 0.5 + 0.5 * std::log10(0.1 / 0.025), 1e-12);
-  // A plain fit has one stage whatever the bounds, and by default so has a fit to points without normals.
-  FitProgress points(options, std::vector<Vec3>(3, Vec3::Zero()));
-  points.after(iteration(0, 1.0));
-  points.after(iteration(1, 0.9));
-  EXPECT_NEAR(points.after(iteration(2, 0.9 * 0.95)), std::log10(2.0), 1e-12);
+  // A plain fit has one stage whatever the bounds.
   options.plain = true;
-  FitProgress plain(options, kNormals);
+  FitProgress plain(options);
   plain.after(iteration(0, 1.0));
   plain.after(iteration(1, 0.9));
   EXPECT_NEAR(plain.after(iteration(2, 0.9 * 0.95)), std::log10(2.0), 1e-12);
 }
 
 TEST(FitProgress, TheLargerOfTheTwoFallsCounts) {
-  FitProgress progress(one_stage(), kNormals);
+  FitProgress progress(one_stage());
   progress.after(iteration(0, 1.0, 0.1, 2.0));
   EXPECT_NEAR(progress.after(iteration(1, 0.9, 0.1, 1.0)), 0.01, 1e-12);  // falls of 10 % and 50 %: the first
   // The rms rises while the objective falls by 5 % of the 50 % fall: log10(50 / 5) / log10(50 / 1).
@@ -83,7 +76,7 @@ TEST(FitProgress, IterationsAndTimeWithoutToleranceAndNeverBack) {
   options.iterations = 4;
   options.tolerance = 0;
   options.time_budget = 1.0;
-  FitProgress progress(options, kNormals);
+  FitProgress progress(options);
   progress.after(iteration(0, 1.0, 0.0));
   EXPECT_DOUBLE_EQ(progress.after(iteration(1, 0.5, 0.6)), 0.6);     // the time budget's share
   EXPECT_DOUBLE_EQ(progress.after(iteration(2, 0.4, 0.01)), 0.61);   // 0.61 s against 2 of 4 iterations

@@ -72,11 +72,10 @@ BackgroundJob::Work MeshJobs::fit_work(std::shared_ptr<const CovarianceMesh> coa
     const std::vector<Vec3>& targets = soup.positions;
     if (targets.empty()) throw Error(path + ": has no vertices to fit to");
     report_or_stop(report, 0.05);
-    const std::vector<Vec3> normals = smooth_vertex_normals(face_triangles(soup));
-    options.progress = [&report, done = FitProgress(options, normals)](const FitIteration& it) mutable {
+    options.progress = [&report, done = FitProgress(options)](const FitIteration& it) mutable {
       report_or_stop(report, 0.05 + 0.95 * done.after(it));
     };
-    const FitResult fit = fit_limit_surface(*coarse, targets, options, normals);
+    const FitResult fit = fit_limit_surface(*coarse, targets, options, smooth_vertex_normals(face_triangles(soup)));
     const DistanceSummary& before = fit.iterations.front().error;
     const DistanceSummary& after = fit.iterations.back().error;
     Modelled m;
