@@ -60,7 +60,7 @@ void add_fit_command(CLI::App& app) {
       ->check(number_in(0, 1e6));
   cmd->add_option("--covariance-smoothness", args->covariance_smoothness,
                   "weight of the smoothness term on the covariances (the Laplacian of their changes) against the mean "
-                  "squared distance (default: 0 with the target's normals, 1e-4 for a point cloud)")
+                  "squared distance (default 0)")
       ->check(number_in(0, 1e6));
   cmd->add_option("--covariance-prior", args->covariance_prior,
                   "weight of the prior that keeps each covariance near its start, against the mean squared distance "
