@@ -14,6 +14,7 @@
 #include "core/fitting/block_jacobi_preconditioner.h"
 #include "core/fitting/closest_points.h"
 #include "core/fitting/limit_weights.h"
+#include "core/fitting/precision_factor.h"
 #include "core/mesh/dual_map.h"
 #include "core/support/error.h"
 #include "core/plans/stencil_table.h"
@@ -22,31 +23,7 @@ namespace gps {
 
 namespace {
 
-using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Block = Eigen::Matrix<double, 9, 9>;
-
-// The lower-triangular entries (row, column) of L that the six precision parameters set, in order;
-// the diagonal ones through exp.
-constexpr int kFactorEntries[6][2] = {{0, 0}, {1, 0}, {1, 1}, {2, 0}, {2, 1}, {2, 2}};
-
-Mat3 cholesky_factor(const Vec6& t) {
-  Mat3 l = Mat3::Zero();
-  for (int c = 0; c < 6; ++c) {
-    const int a = kFactorEntries[c][0], b = kFactorEntries[c][1];
-    l(a, b) = a == b ? std::exp(t[c]) : t[c];
-  }
-  return l;
-}
-
-Vec6 factor_parameters(const Mat3& precision) {
-  const Mat3 l = Eigen::LLT<Mat3>(precision).matrixL();
-  Vec6 t;
-  for (int c = 0; c < 6; ++c) {
-    const int a = kFactorEntries[c][0], b = kFactorEntries[c][1];
-    t[c] = a == b ? std::log(l(a, b)) : l(a, b);
-  }
-  return t;
-}
 
 struct Parameters {
   std::vector<Vec3> means;
@@ -82,21 +59,6 @@ Mat3 cross_matrix(const Vec3& a) {
   Mat3 m;
   m << 0, -a[2], a[1], a[2], 0, -a[0], -a[1], a[0], 0;
   return m;
-}
-
-// Column c: dK/dθ_c · d for the precision K = LLᵀ and its factor parameter θ_c.
-Eigen::Matrix<double, 3, 6> precision_derivatives_times(const Mat3& l, const Vec3& d) {
-  Eigen::Matrix<double, 3, 6> out;
-  const Vec3 ltd = l.transpose() * d;
-  for (int c = 0; c < 6; ++c) {
-    const int a = kFactorEntries[c][0], b = kFactorEntries[c][1];
-    const double scale = a == b ? l(a, a) : 1.0;
-    // dK = dL Lᵀ + L dLᵀ with dL = scale · e_a e_bᵀ: dK d = scale (e_a (Lᵀd)_b + L_{:,b} d_a).
-    Vec3 col = scale * d[a] * l.col(b);
-    col[a] += scale * ltd[b];
-    out.col(c) = col;
-  }
-  return out;
 }
 
 // Throws where the points lie apart from the mesh, farther than the larger of the two is across: the
