@@ -11,7 +11,7 @@ public:
       : iterations_(options.iterations),
         time_budget_(options.time_budget),
         tolerance_(options.tolerance),
-        stages_(!options.plain && options.relaxed_min_sigma < options.min_sigma ? 2 : 1) {}
+        stages_(fits_in_two_stages(options) ? 2 : 1) {}
   /// The fraction done, 0 to below 1, after iteration `it` (given in order, iteration 0 first): the
   /// largest of the iterations run over the cap, the seconds spent over the time budget and, with a
   /// tolerance, how far the fall per iteration (the larger of the rms distance's and the

@@ -139,12 +139,13 @@ public:
   int unknowns() const { return n_ * p_; }
   int unknowns_per_vertex() const { return p_; }
   /// Lowers the bound on the standard deviations to FitOptions::relaxed_min_sigma; false where it is
-  /// already there or below (or the fit is plain), so there is no second stage.
+  /// lowered already or the fit has no second stage.
   bool relax_lower_bound() {
-    if (p_ != 9 || !(options_.relaxed_min_sigma < min_sigma_)) return false;
-    min_sigma_ = options_.relaxed_min_sigma;
+    if (relaxed_ || !fits_in_two_stages(options_)) return false;
+    relaxed_ = true;
     return true;
   }
+  bool relaxed() const { return relaxed_; }
 
   VertexState vertex_state(const Parameters& x) const {
     VertexState s;
@@ -363,7 +364,7 @@ private:
     const Mat3 l_inverse = l.triangularView<Eigen::Lower>().solve(Mat3::Identity());
     const Eigen::SelfAdjointEigenSolver<Mat3> eigen(l_inverse.transpose() * l_inverse);
     const double edge = edge_[size_t(i)];
-    const double low = min_sigma_ * edge, high = options_.max_sigma * edge;
+    const double low = (relaxed_ ? options_.relaxed_min_sigma : options_.min_sigma) * edge, high = options_.max_sigma * edge;
     const Vec3 variances = eigen.eigenvalues().cwiseMax(low * low).cwiseMin(high * high);
     if (variances == eigen.eigenvalues()) return;
     const Mat3& v = eigen.eigenvectors();
@@ -504,7 +505,7 @@ public:
 
 private:
   const FitOptions& options_;
-  double min_sigma_ = options_.min_sigma;  // the lower bound in force (FitOptions::relaxed_min_sigma)
+  bool relaxed_ = false;  // the lower bound at FitOptions::relaxed_min_sigma: the second stage
   const std::vector<Vec3>& targets_;
   const std::vector<Vec3>& normals_;
   PlannedSurface surface_;
@@ -525,6 +526,10 @@ private:
 };
 
 }  // namespace
+
+bool fits_in_two_stages(const FitOptions& options) {
+  return !options.plain && options.relaxed_min_sigma < options.min_sigma;
+}
 
 CovarianceMesh with_isotropic_covariances(const CovarianceMesh& mesh) {
   double sum = 0;
@@ -587,11 +592,10 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   double energy = problem.objective_of_correspondences(x);
   // A GPS fit moves its means alone first (FitOptions::means_first).
   bool means_only = problem.unknowns_per_vertex() == 9 && options.means_first > 0;
-  bool relaxed = false;  // the second stage (FitOptions::relaxed_min_sigma)
   const auto held = [&](int u) { return means_only && u % problem.unknowns_per_vertex() >= 3; };
   const auto report = [&](int iteration) {
     FitIteration it{iteration,  problem.error(), seconds_since(clock), std::sqrt(energy / double(targets.size())),
-                    means_only, relaxed};
+                    means_only, problem.relaxed()};
     result.iterations.push_back(it);
     if (options.progress) options.progress(it);
     clock = std::chrono::steady_clock::now();
@@ -641,9 +645,8 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
       --iteration;
       continue;
     }
-    if (!accepted && !relaxed && problem.relax_lower_bound()) {
-      relaxed = true;  // no step within the first bound: this iteration again, at the relaxed one
-      --iteration;
+    if (!accepted && problem.relax_lower_bound()) {
+      --iteration;  // no step within the first bound: this iteration again, at the relaxed one
       continue;
     }
     if (!accepted) {
@@ -660,11 +663,10 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
       means_only = before.error.rms - now.error.rms > options.means_first * before.error.rms;
     } else if (options.tolerance > 0 && before.objective - now.objective <= options.tolerance * before.objective &&
                before.error.rms - now.error.rms <= options.tolerance * before.error.rms) {
-      if (relaxed || !problem.relax_lower_bound()) {
+      if (!problem.relax_lower_bound()) {  // else converged at the first bound: on at the relaxed one
         result.stop = FitStop::converged;
         break;
       }
-      relaxed = true;  // converged at the first bound: on at the relaxed one
     }
     if (seconds_since(start) >= options.time_budget) {
       result.stop = FitStop::time;

@@ -90,6 +90,9 @@ enum class FitStop {
   no_descent,  // no step lowered the objective
 };
 
+/// Whether a fit relaxes its lower bound once it converges (FitOptions::relaxed_min_sigma).
+bool fits_in_two_stages(const FitOptions& options);
+
 /// A few words for a stop reason ("converged", …).
 const char* describe(FitStop stop);
 
