@@ -364,7 +364,8 @@ private:
     const Mat3 l_inverse = l.triangularView<Eigen::Lower>().solve(Mat3::Identity());
     const Eigen::SelfAdjointEigenSolver<Mat3> eigen(l_inverse.transpose() * l_inverse);
     const double edge = edge_[size_t(i)];
-    const double low = (relaxed_ ? options_.relaxed_min_sigma : options_.min_sigma) * edge, high = options_.max_sigma * edge;
+    const double low = (relaxed_ ? options_.relaxed_min_sigma : options_.min_sigma) * edge,
+                 high = options_.max_sigma * edge;
     const Vec3 variances = eigen.eigenvalues().cwiseMax(low * low).cwiseMin(high * high);
     if (variances == eigen.eigenvalues()) return;
     const Mat3& v = eigen.eigenvectors();
@@ -594,7 +595,7 @@ FitResult fit_limit_surface(const CovarianceMesh& coarse, const std::vector<Vec3
   bool means_only = problem.unknowns_per_vertex() == 9 && options.means_first > 0;
   const auto held = [&](int u) { return means_only && u % problem.unknowns_per_vertex() >= 3; };
   const auto report = [&](int iteration) {
-    FitIteration it{iteration,  problem.error(), seconds_since(clock), std::sqrt(energy / double(targets.size())),
+    FitIteration it{iteration,  problem.error(),  seconds_since(clock), std::sqrt(energy / double(targets.size())),
                     means_only, problem.relaxed()};
     result.iterations.push_back(it);
     if (options.progress) options.progress(it);
