@@ -28,7 +28,10 @@ public:
     if (!map_vertices() || !match_faces() || !collect_new_corners() || !merge_edges()) return std::nullopt;
     carry_kept_corners();
     if (makes_pillow()) return std::nullopt;
-    add_vertex_rows(t_, c_);
+    if (kept_faces_in_order())
+      carry_vertex_rows();
+    else
+      add_vertex_rows(t_, c_);
     if (!fans_hold()) return std::nullopt;
     return std::move(c_);
   }
@@ -142,57 +145,59 @@ private:
   // The edges in connectivity_of's order: the old edges that a kept face still has (in their order,
   // which the vertices' order keeps) merged with the new faces' edges (sorted).
   bool merge_edges() {
+    const int n_old = c0_.n_edges();
     c_.face_edges.assign(t_.verts.size(), -1);
-    edge_new_.assign(size_t(c0_.n_edges()), -1);
-    c_.edge_verts.reserve(2 * (size_t(c0_.n_edges()) + new_corners_.size()));
-    c_.edge_faces.reserve(2 * (size_t(c0_.n_edges()) + new_corners_.size()));
+    edge_new_.assign(size_t(n_old), -1);
+    const size_t most = size_t(n_old) + new_corners_.size();
+    c_.edge_verts.resize(2 * most);
+    c_.edge_faces.resize(2 * most);
+    n_edges_ = 0;
     size_t j = 0;
-    for (int e = 0; e <= c0_.n_edges(); ++e) {
-      int low = 0, high = 0, n_kept = 0;
+    for (int e = 0; e < n_old; ++e) {
+      int n_kept = 0;
       std::array<int, 2> kept{-1, -1};
-      if (e < c0_.n_edges()) {
-        for (int s = 0; s < 2; ++s) {
-          const int g = c0_.edge_faces[2 * size_t(e) + size_t(s)];
-          if (g >= 0 && face_new_[size_t(g)] >= 0) kept[size_t(n_kept++)] = face_new_[size_t(g)];
-        }
-        if (n_kept == 0) continue;
-        low = vertex_new_[size_t(c0_.edge_verts[2 * size_t(e)])];
-        high = vertex_new_[size_t(c0_.edge_verts[2 * size_t(e) + 1])];
+      for (int s = 0; s < 2; ++s) {
+        const int g = c0_.edge_faces[2 * size_t(e) + size_t(s)];
+        if (g >= 0 && face_new_[size_t(g)] >= 0) kept[size_t(n_kept++)] = face_new_[size_t(g)];
       }
-      while (j < new_corners_.size() && (e == c0_.n_edges() || before_key(new_corners_[j], low, high)))
-        if (!add_edge(-1, {-1, -1}, 0, j)) return false;
-      if (e == c0_.n_edges()) break;
-      edge_new_[size_t(e)] = c_.n_edges();
-      if (!add_edge(e, kept, n_kept, j)) return false;
+      if (n_kept == 0) continue;
+      const int low = vertex_new_[size_t(c0_.edge_verts[2 * size_t(e)])];
+      const int high = vertex_new_[size_t(c0_.edge_verts[2 * size_t(e) + 1])];
+      while (j < new_corners_.size() && before_key(new_corners_[j], low, high))
+        if (!add_edge(-1, new_corners_[j].low, new_corners_[j].high, {-1, -1}, 0, j)) return false;
+      edge_new_[size_t(e)] = n_edges_;
+      if (!add_edge(e, low, high, kept, n_kept, j)) return false;
     }
+    while (j < new_corners_.size())
+      if (!add_edge(-1, new_corners_[j].low, new_corners_[j].high, {-1, -1}, 0, j)) return false;
+    c_.edge_verts.resize(2 * size_t(n_edges_));
+    c_.edge_faces.resize(2 * size_t(n_edges_));
     return true;
   }
 
-  // Adds one edge: old edge `e` (−1 for none) with its kept faces, and the new corners from `j` on
-  // that run along the same edge (advancing j past them). False where it would not be manifold.
-  bool add_edge(int e, std::array<int, 2> kept, int n_kept, size_t& j) {
-    const int low = e >= 0 ? vertex_new_[size_t(c0_.edge_verts[2 * size_t(e)])] : new_corners_[j].low;
-    const int high = e >= 0 ? vertex_new_[size_t(c0_.edge_verts[2 * size_t(e) + 1])] : new_corners_[j].high;
-    std::array<int, 2> faces = kept;
+  // Adds edge low–high: old edge `e` (−1 for none) with its kept faces, and the new corners from `j` on
+  // that run along it (advancing j past them). False where it would not be manifold.
+  bool add_edge(int e, int low, int high, std::array<int, 2> faces, int n_kept, size_t& j) {
     std::array<bool, 2> up{false, false};
     int n = n_kept;
-    const int edge = c_.n_edges();
     for (; j < new_corners_.size() && new_corners_[j].low == low && new_corners_[j].high == high; ++j) {
       if (n == 2) return false;  // a third face on the edge
       faces[size_t(n)] = new_corners_[j].face;
       up[size_t(n++)] = new_corners_[j].up;
-      c_.face_edges[size_t(new_corners_[j].corner)] = edge;
+      c_.face_edges[size_t(new_corners_[j].corner)] = n_edges_;
     }
     // Two faces run an edge in opposite directions (a flipped face otherwise); old pairs were checked.
     if (n == 2 && n_kept < 2) {
-      if (n_kept == 1) up[0] = kept_runs_up(face_old_[size_t(kept[0])], e);
+      if (n_kept == 1) up[0] = kept_runs_up(face_old_[size_t(faces[0])], e);
       if (up[0] == up[1]) return false;
     }
     if (n == 2 && faces[0] > faces[1]) std::swap(faces[0], faces[1]);
-    c_.edge_verts.push_back(low);
-    c_.edge_verts.push_back(high);
-    c_.edge_faces.push_back(faces[0]);
-    c_.edge_faces.push_back(faces[1]);
+    if (e < 0) new_edges_.push_back(n_edges_);
+    const size_t at = 2 * size_t(n_edges_++);
+    c_.edge_verts[at] = low;
+    c_.edge_verts[at + 1] = high;
+    c_.edge_faces[at] = faces[0];
+    c_.edge_faces[at + 1] = faces[1];
     return true;
   }
 
@@ -204,6 +209,92 @@ private:
       for (int k = 0; k < t_.face_size(f); ++k)
         c_.face_edges[size_t(t_.offsets[size_t(f)] + k)] =
             edge_new_[size_t(c0_.face_edges[size_t(t0_.offsets[size_t(g)] + k)])];
+    }
+  }
+
+  // Whether the kept faces keep their order: then so do they in the rows of the vertices they share.
+  bool kept_faces_in_order() const {
+    int last = -1;
+    for (const int f : face_new_)
+      if (f >= 0) {
+        if (f < last) return false;
+        last = f;
+      }
+    return true;
+  }
+
+  // The vertices' rows, as add_vertex_rows makes them (faces and edges in their order): a vertex the
+  // change does not reach keeps its old row, renumbered (its faces and edges all stay, in order); the
+  // others' rows are their kept faces and edges with the new ones sorted in.
+  void carry_vertex_rows() {
+    const int n = t_.n_vertices;
+    if (touched_.empty()) touched_.assign(size_t(n), 0);
+    // The new faces' corners and the new edges, by vertex (the reached vertices' own additions).
+    std::vector<std::vector<std::array<int, 2>>> added_faces(touched_list_.size());
+    std::vector<std::vector<int>> added_edges(touched_list_.size());
+    std::vector<int> slot(size_t(n), -1);
+    for (size_t i = 0; i < touched_list_.size(); ++i) slot[size_t(touched_list_[i])] = int(i);
+    for (int f = 0; f < t_.n_faces(); ++f)
+      if (face_old_[size_t(f)] < 0)
+        for (int i = t_.offsets[size_t(f)], k = 0; i < t_.offsets[size_t(f) + 1]; ++i, ++k)
+          added_faces[size_t(slot[size_t(t_.verts[size_t(i)])])].push_back({f, k});
+    for (const int e : new_edges_)
+      for (int s = 0; s < 2; ++s) added_edges[size_t(slot[size_t(c_.edge_verts[2 * size_t(e) + size_t(s)])])].push_back(e);
+    // A reached vertex's row: its kept faces (and edges), renumbered, then the new ones, sorted.
+    std::vector<std::vector<std::array<int, 2>>> face_rows(touched_list_.size());
+    std::vector<std::vector<int>> edge_rows(touched_list_.size());
+    for (size_t i = 0; i < touched_list_.size(); ++i) {
+      const int v = touched_list_[i], o = o_.vertices[size_t(v)];
+      std::vector<std::array<int, 2>>& faces = face_rows[i];
+      std::vector<int>& edges = edge_rows[i];
+      if (o >= 0) {
+        for (int r = c0_.vertex_face_offsets[size_t(o)]; r < c0_.vertex_face_offsets[size_t(o) + 1]; ++r)
+          if (const int f = face_new_[size_t(c0_.vertex_faces[size_t(r)])]; f >= 0)
+            faces.push_back({f, c0_.vertex_face_corners[size_t(r)]});
+        for (int r = c0_.vertex_edge_offsets[size_t(o)]; r < c0_.vertex_edge_offsets[size_t(o) + 1]; ++r)
+          if (const int e = edge_new_[size_t(c0_.vertex_edges[size_t(r)])]; e >= 0) edges.push_back(e);
+      }
+      faces.insert(faces.end(), added_faces[i].begin(), added_faces[i].end());
+      edges.insert(edges.end(), added_edges[i].begin(), added_edges[i].end());
+      std::sort(faces.begin(), faces.end());
+      std::sort(edges.begin(), edges.end());
+    }
+    // The rows' offsets: the old counts where the change does not reach.
+    const auto count = [&](std::vector<int>& offsets, const std::vector<int>& old_offsets, auto reached_size) {
+      offsets.assign(size_t(n) + 1, 0);
+      for (int v = 0; v < n; ++v) {
+        const int o = o_.vertices[size_t(v)];
+        const int size = touched_[size_t(v)] ? reached_size(size_t(slot[size_t(v)]))
+                         : o >= 0            ? old_offsets[size_t(o) + 1] - old_offsets[size_t(o)]
+                                             : 0;
+        offsets[size_t(v) + 1] = offsets[size_t(v)] + size;
+      }
+    };
+    count(c_.vertex_face_offsets, c0_.vertex_face_offsets, [&](size_t i) { return int(face_rows[i].size()); });
+    count(c_.vertex_edge_offsets, c0_.vertex_edge_offsets, [&](size_t i) { return int(edge_rows[i].size()); });
+    c_.vertex_faces.resize(size_t(c_.vertex_face_offsets.back()));
+    c_.vertex_face_corners.resize(c_.vertex_faces.size());
+    c_.vertex_edges.resize(size_t(c_.vertex_edge_offsets.back()));
+#pragma omp parallel for schedule(static) if (n >= kParallelFaces)
+    for (int v = 0; v < n; ++v) {
+      int out = c_.vertex_face_offsets[size_t(v)], edge_out = c_.vertex_edge_offsets[size_t(v)];
+      if (touched_[size_t(v)]) {
+        const size_t i = size_t(slot[size_t(v)]);
+        for (const auto& [f, k] : face_rows[i]) {
+          c_.vertex_faces[size_t(out)] = f;
+          c_.vertex_face_corners[size_t(out++)] = k;
+        }
+        for (const int e : edge_rows[i]) c_.vertex_edges[size_t(edge_out++)] = e;
+        continue;
+      }
+      const int o = o_.vertices[size_t(v)];
+      if (o < 0) continue;
+      for (int r = c0_.vertex_face_offsets[size_t(o)]; r < c0_.vertex_face_offsets[size_t(o) + 1]; ++r, ++out) {
+        c_.vertex_faces[size_t(out)] = face_new_[size_t(c0_.vertex_faces[size_t(r)])];
+        c_.vertex_face_corners[size_t(out)] = c0_.vertex_face_corners[size_t(r)];
+      }
+      for (int r = c0_.vertex_edge_offsets[size_t(o)]; r < c0_.vertex_edge_offsets[size_t(o) + 1]; ++r)
+        c_.vertex_edges[size_t(edge_out++)] = edge_new_[size_t(c0_.vertex_edges[size_t(r)])];
     }
   }
 
@@ -267,6 +358,8 @@ private:
   const MeshOrigins& o_;
   MeshConnectivity c_;
   std::vector<int> vertex_new_, face_new_, face_old_, edge_new_;
+  int n_edges_ = 0;             // the edges added so far
+  std::vector<int> new_edges_;  // the edges that are no old edge
   std::vector<NewCorner> new_corners_;
   std::vector<char> touched_;
   std::vector<int> touched_list_;

@@ -217,24 +217,33 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
         new_keys.insert(edge_key(edge_use(plans, p, k)));
         link_again(p, k);
       }
-  for (int p = 0; p < n_patches; ++p) {
-    const int q = old_of_new[size_t(p)];
-    if (q < 0) continue;
-    for (int k = 0; k < n; ++k) {
-      const int32_t* r = &old_neighbours[size_t(4 * (n * q + k))];
-      bool kept = r[0] >= 0 || !new_keys.count(edge_key(edge_use(plans, p, k)));
-      for (int j = 0; j < 4 && kept; j += 2)  // (a sharp flag of creases that are gone: linked again)
-        kept = r[j] < 0 || (new_of_old[size_t(r[j])] >= 0 && !(r[j + 1] & kNeighbourSharpEdge));
-      if (!kept) {
-        link_again(p, k);
-        continue;
-      }
-      int32_t* out = &plans.patch_neighbours[size_t(4 * (n * p + k))];
-      for (int j = 0; j < 4; j += 2) {
-        out[j] = r[j] >= 0 ? new_of_old[size_t(r[j])] : -1;
-        out[j + 1] = r[j + 1];
+  // The kept patches' records, on all cores (each thread's edges to link again joined after: they are
+  // sorted below).
+#pragma omp parallel if (n_patches >= kParallelFaces)
+  {
+    std::vector<EdgeUse> own;
+#pragma omp for schedule(static) nowait
+    for (int p = 0; p < n_patches; ++p) {
+      const int q = old_of_new[size_t(p)];
+      if (q < 0) continue;
+      for (int k = 0; k < n; ++k) {
+        const int32_t* r = &old_neighbours[size_t(4 * (n * q + k))];
+        bool kept = r[0] >= 0 || !new_keys.count(edge_key(edge_use(plans, p, k)));
+        for (int j = 0; j < 4 && kept; j += 2)  // (a sharp flag of creases that are gone: linked again)
+          kept = r[j] < 0 || (new_of_old[size_t(r[j])] >= 0 && !(r[j + 1] & kNeighbourSharpEdge));
+        if (!kept) {
+          if (const EdgeUse e = edge_use(plans, p, k); e.from != e.to) own.push_back(e);
+          continue;
+        }
+        int32_t* out = &plans.patch_neighbours[size_t(4 * (n * p + k))];
+        for (int j = 0; j < 4; j += 2) {
+          out[j] = r[j] >= 0 ? new_of_old[size_t(r[j])] : -1;
+          out[j + 1] = r[j + 1];
+        }
       }
     }
+#pragma omp critical
+    again.insert(again.end(), own.begin(), own.end());
   }
   // Linked in groups of one edge, in patch order within a group, as add_patch_adjacency links them.
   std::sort(again.begin(), again.end(), [](const EdgeUse& a, const EdgeUse& b) {

@@ -82,9 +82,12 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
     for (size_t i = 0; i < p.patch_roots.size(); ++i) plans.patch_roots[first + i] = base + p.patch_roots[i];
     for (size_t i = 0; i < p.patch_corner_points.size(); ++i)
       plans.patch_corner_points[corners * first + i] = point(p.patch_corner_points[i]);
-    for (size_t i = 0; i < p.patch_edges.size(); ++i)
-      plans.patch_edges[kPatchEdgeStride * first + i] =
-          i % kPatchEdgeInts == 2 ? p.patch_edges[i] : point(p.patch_edges[i]);
+    int32_t* edges = plans.patch_edges.data() + kPatchEdgeStride * first;
+    for (size_t i = 0; i < p.patch_edges.size(); i += kPatchEdgeInts) {  // from, to, part
+      edges[i] = point(p.patch_edges[i]);
+      edges[i + 1] = point(p.patch_edges[i + 1]);
+      edges[i + 2] = p.patch_edges[i + 2];
+    }
     if (release) ranges[r] = {};
   }
   return {std::move(plans), stencils.finish()};

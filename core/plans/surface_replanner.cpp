@@ -68,8 +68,10 @@ bool renumber_range(RangePlans& range, const std::vector<int>& new_index, bool s
     o += n + 1;
   }
   for (int32_t& q : p.patch_corner_points) point(q);
-  for (size_t i = 0; i < p.patch_edges.size(); ++i)
-    if (i % kPatchEdgeInts != 2) point(p.patch_edges[i]);
+  for (size_t i = 0; i < p.patch_edges.size(); i += kPatchEdgeInts) {  // from, to, part
+    point(p.patch_edges[i]);
+    point(p.patch_edges[i + 1]);
+  }
   for (int32_t& q : s.indices) point(q);  // rows are over base vertices only
   s.n_base = n_new;
   if (moved) range.row_keys.clear();  // a row's key hashes its indices: merge_ranges hashes it again
@@ -304,24 +306,30 @@ int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const
   // gone, and every face that shares a vertex with them is built again).
   bool same_base = true;
   for (int v = 0; v < n_old && same_base; ++v) same_base = new_index[size_t(v)] < 0 || new_index[size_t(v)] == v;
-  // Faces that are still there, corner for corner: old face → new face and back.
+  // Faces that are still there, corner for corner: old face → new face and back. Each old face's first
+  // match is found on all cores; where an earlier face took it (a face repeated), the next free one.
   std::vector<int> new_face(size_t(old.n_faces()), -1), old_face(size_t(n_faces), -1);
-  for (int f = 0; f < old.n_faces(); ++f) {
+  const auto match = [&](int f, bool free_only) {
     const int first = old.offsets[size_t(f)], size = old.face_size(f);
     const int w = new_index[size_t(old.verts[size_t(first)])];
-    if (w < 0) continue;
+    if (w < 0) return -1;
     for (int i = c.vertex_face_offsets[size_t(w)]; i < c.vertex_face_offsets[size_t(w) + 1]; ++i) {
       const int g = c.vertex_faces[size_t(i)];
-      if (c.vertex_face_corners[size_t(i)] != 0 || t.face_size(g) != size || old_face[size_t(g)] >= 0) continue;
+      if (c.vertex_face_corners[size_t(i)] != 0 || t.face_size(g) != size || (free_only && old_face[size_t(g)] >= 0))
+        continue;
       bool same = true;
       for (int k = 1; k < size && same; ++k)
         same = new_index[size_t(old.verts[size_t(first + k)])] == t.verts[size_t(t.offsets[size_t(g)] + k)];
-      if (same) {
-        new_face[size_t(f)] = g;
-        old_face[size_t(g)] = f;
-        break;
-      }
+      if (same) return g;
     }
+    return -1;
+  };
+#pragma omp parallel for schedule(static) if (old.n_faces() >= kParallelFaces)
+  for (int f = 0; f < old.n_faces(); ++f) new_face[size_t(f)] = match(f, false);
+  for (int f = 0; f < old.n_faces(); ++f) {
+    int& g = new_face[size_t(f)];
+    if (g >= 0 && old_face[size_t(g)] >= 0) g = match(f, true);
+    if (g >= 0) old_face[size_t(g)] = f;
   }
   // Vertices whose pieces changed: corners of faces added or removed, ends of changed creases, changed corners.
   std::vector<char> changed(size_t(n_new), 0);

@@ -72,6 +72,37 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
   }
 }
 
+// On a mesh past kParallelFaces faces the replanner matches faces and follows the patch adjacency on
+// all cores: random operations, each undone, still give a full re-plan's tables.
+TEST(IncrementalPlans, RandomOperationsOnALargeMeshMatchAFullReplan) {
+  CovarianceMesh mesh = make_sample("sphere", 6000);
+  ASSERT_GE(mesh.n_faces(), size_t(kParallelFaces));
+  const PlanOptions options;
+  SurfaceReplanner replanner(mesh, options);
+  SurfaceTables mesh_full = build_surface_plans(mesh.topology(), options, mesh.sharpness);
+  std::mt19937 random(46);
+  int applied = 0;
+  for (int step = 0; step < 30 && applied < 6; ++step) {
+    Modelled result;
+    try {
+      result = test::random_operation(mesh, random);
+    } catch (const Error&) {
+      continue;
+    }
+    const std::string where = "step " + std::to_string(step) + " (" + result.summary + ")";
+    ++applied;
+    SurfaceTables full = build_surface_plans(result.mesh.topology(), options, result.mesh.sharpness);
+    replanner.set_topology(result.mesh, result.vertex_origin);
+    test::expect_same_tables(replanner.tables(), full, where);
+    replanner.set_topology(mesh, inverse_origin(result.vertex_origin, mesh.n_vertices()));
+    test::expect_same_tables(replanner.tables(), mesh_full, where + ", undone");
+    replanner.set_topology(result.mesh, result.vertex_origin);
+    mesh = std::move(result.mesh);
+    mesh_full = std::move(full);
+  }
+  EXPECT_EQ(applied, 6);
+}
+
 // The origin only says where to look: origins that do not fit the operation (every vertex said to be
 // new, or kept where the operation renumbered them) still give a full re-plan's tables.
 TEST(IncrementalPlans, AnyOriginGivesTheTablesOfAFullReplan) {
