@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/mesh/mesh_connectivity.h"
 #include "core/plans/patch_readers.h"
 
 namespace gps {
@@ -29,6 +30,7 @@ std::vector<char> patches_not_kept_alike(const PatchPlans& before, const PatchPl
     return now < 0 ? was < 0 : old_of_new[size_t(now)] == was && was >= 0;
   };
   for (const KeptPatches& run : kept)
+#pragma omp parallel for schedule(static) if (run.count >= kParallelFaces)
     for (int i = 0; i < run.count; ++i) {
       const size_t p = size_t(run.first + i), q = size_t(run.old_first + i);
       bool same = true;
@@ -61,12 +63,16 @@ std::vector<int> stale_corner_patches(const SurfaceTables& before, const Surface
     std::vector<char> point_changed(size_t(after.stencils.n_points()), 0);
     for (const int v : changed) point_changed[size_t(v)] = 1;
     for (const int r : rows_reading(dependents, changed)) point_changed[size_t(n_base + r)] = 1;
-    std::vector<int> points;
-    for (int p = 0; p < n_patches; ++p) {
-      if (evaluate[size_t(p)]) continue;
-      points.clear();
-      append_patch_points(after.plans, p, points);
-      for (const int q : points) evaluate[size_t(p)] |= point_changed[size_t(q)];
+#pragma omp parallel if (n_patches >= kParallelFaces)
+    {
+      std::vector<int> points;
+#pragma omp for schedule(static)
+      for (int p = 0; p < n_patches; ++p) {
+        if (evaluate[size_t(p)]) continue;
+        points.clear();
+        append_patch_points(after.plans, p, points);
+        for (const int q : points) evaluate[size_t(p)] |= point_changed[size_t(q)];
+      }
     }
   }
   std::vector<int> patches;

@@ -1,5 +1,7 @@
 #include "render/pipeline/kept_surface_triangles.h"
 
+#include "core/mesh/mesh_connectivity.h"
+
 namespace gps {
 
 KeptTriangles kept_triangles(const PatchPlans& after, int n_before, const std::vector<KeptPatches>& kept,
@@ -13,6 +15,7 @@ KeptTriangles kept_triangles(const PatchPlans& after, int n_before, const std::v
       evaluated[size_t(run.first + i)] = 0;
     }
   for (const int p : stale_corners) evaluated[size_t(p)] = 1;
+#pragma omp parallel for schedule(static) if (n_patches >= kParallelFaces)
   for (int p = 0; p < n_patches; ++p) {
     bool changed = evaluated[size_t(p)] != 0;
     for (int k = 0; k < corners && !changed; ++k) {

@@ -89,6 +89,16 @@ TEST_F(IncrementalGpuBuffers, RandomOperationsMatchARendererSetAnew) {
   }
 }
 
+// Past kParallelFaces vertices and patches, the passes that find what a change reached run on all
+// cores: the same output as a renderer set anew.
+TEST_F(IncrementalGpuBuffers, RandomOperationsOnALargeMeshMatchARendererSetAnew) {
+  const CovarianceMesh sphere = make_sample("sphere", 6000);
+  ASSERT_GE(sphere.n_vertices(), size_t(kParallelFaces));
+  Evaluated figures;
+  EXPECT_EQ(follow_random_operations(sphere, Scheme::catmull_clark, 4, "sphere/6000", figures), 4);
+  EXPECT_LT(figures.evaluated, figures.slots / 4) << "most corners kept their output";
+}
+
 // Gaussians thin enough for double points: the unchanged ones are carried in double, and where a
 // change makes the first thin Gaussian (or removes the last) everything is uploaded in the new precision.
 TEST_F(IncrementalGpuBuffers, ThinGaussiansAreCarriedInDoublePoints) {
