@@ -203,6 +203,7 @@ private:
 
   // The kept faces' corners keep their old edges, renumbered.
   void carry_kept_corners() {
+#pragma omp parallel for schedule(static) if (t_.n_faces() >= kParallelFaces)
     for (int f = 0; f < t_.n_faces(); ++f) {
       const int g = face_old_[size_t(f)];
       if (g < 0) continue;
