@@ -3,39 +3,40 @@
 #include <pthread.h>
 
 #include <condition_variable>
-#include <deque>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 namespace gps::python {
 namespace {
 
-struct Workers {
-  std::mutex mutex;
+// One worker thread: the task it was handed, if any, and where it waits for the next.
+struct Worker {
   std::condition_variable woken;
-  struct Task {
-    std::function<void()> run, done;
-  };
-  std::deque<Task> tasks;
-  int idle = 0;  // workers waiting for a task
+  std::function<void()> run, done;
+  bool has_task = false;
 };
 
-// Never destroyed: idle workers wait on it until the process ends.
+struct Workers {
+  std::mutex mutex;
+  std::vector<Worker*> idle;  // waiting for a task, the most recently busy last
+};
+
+// Never destroyed: idle workers wait on them until the process ends.
 Workers* workers = nullptr;
 
-void work(Workers* w) {
+void work(Workers* w, Worker* self) {
   std::unique_lock lock(w->mutex);
   for (;;) {
-    w->woken.wait(lock, [w] { return !w->tasks.empty(); });
-    --w->idle;
-    Workers::Task task = std::move(w->tasks.front());
-    w->tasks.pop_front();
+    self->woken.wait(lock, [self] { return self->has_task; });
+    self->has_task = false;
+    std::function<void()> run = std::move(self->run), done = std::move(self->done);
     lock.unlock();
-    task.run();
-    task.run = nullptr;  // what it holds is released before the caller hears
+    run();
+    run = nullptr;  // what it holds is released before the caller hears
     lock.lock();
-    ++w->idle;
-    task.done();
+    w->idle.push_back(self);
+    done();
   }
 }
 
@@ -57,13 +58,19 @@ Workers& the_workers() {
 void run_on_worker(std::function<void()> task, std::function<void()> done) {
   Workers& w = the_workers();
   std::lock_guard lock(w.mutex);
-  w.tasks.push_back({std::move(task), std::move(done)});
-  if (w.tasks.size() > size_t(w.idle)) {
-    ++w.idle;  // the new worker, idle until it takes a task
-    std::thread(work, &w).detach();
+  // The worker that finished last: its OpenMP team and per-thread caches are the warmest.
+  Worker* worker = nullptr;
+  if (w.idle.empty()) {
+    worker = new Worker;  // waits for its tasks until the process ends
+    std::thread(work, &w, worker).detach();
   } else {
-    w.woken.notify_one();
+    worker = w.idle.back();
+    w.idle.pop_back();
   }
+  worker->run = std::move(task);
+  worker->done = std::move(done);
+  worker->has_task = true;
+  worker->woken.notify_one();
 }
 
 }  // namespace gps::python
