@@ -240,7 +240,8 @@ private:
         for (int i = t_.offsets[size_t(f)], k = 0; i < t_.offsets[size_t(f) + 1]; ++i, ++k)
           added_faces[size_t(slot[size_t(t_.verts[size_t(i)])])].push_back({f, k});
     for (const int e : new_edges_)
-      for (int s = 0; s < 2; ++s) added_edges[size_t(slot[size_t(c_.edge_verts[2 * size_t(e) + size_t(s)])])].push_back(e);
+      for (int s = 0; s < 2; ++s)
+        added_edges[size_t(slot[size_t(c_.edge_verts[2 * size_t(e) + size_t(s)])])].push_back(e);
     // A reached vertex's row: its kept faces (and edges), renumbered, then the new ones, sorted.
     std::vector<std::vector<std::array<int, 2>>> face_rows(touched_list_.size());
     std::vector<std::vector<int>> edge_rows(touched_list_.size());

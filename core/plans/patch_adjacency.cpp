@@ -217,8 +217,8 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
         new_keys.insert(edge_key(edge_use(plans, p, k)));
         link_again(p, k);
       }
-  // The kept patches' records, on all cores (each thread's edges to link again joined after: they are
-  // sorted below).
+      // The kept patches' records, on all cores (each thread's edges to link again joined after: they are
+      // sorted below).
 #pragma omp parallel if (n_patches >= kParallelFaces)
   {
     std::vector<EdgeUse> own;

@@ -135,8 +135,8 @@ TEST(IncrementalConnectivity, RandomChangesGiveWhatAWholeBuildGivesAndNeverPassW
   int vouched = 0, refused = 0, declined = 0, large_vouched = 0;
   // The last, past kParallelFaces vertices, follows the rows on all cores.
   const std::vector<std::tuple<const char*, int, int>> cases = {
-      {"grid", 200, 300},       {"icosphere", 200, 300}, {"cylinder", 200, 300}, {"pawn-quads", 200, 300},
-      {"cone", 200, 300},       {"torus", 200, 300},     {"wirecube", 200, 300}, {"sphere", 6000, 30}};
+      {"grid", 200, 300}, {"icosphere", 200, 300}, {"cylinder", 200, 300}, {"pawn-quads", 200, 300},
+      {"cone", 200, 300}, {"torus", 200, 300},     {"wirecube", 200, 300}, {"sphere", 6000, 30}};
   for (const auto& [name, size, trials] : cases) {
     SCOPED_TRACE(name);
     const CovarianceMesh before = make_sample(name, size);
