@@ -217,10 +217,10 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
         new_keys.insert(edge_key(edge_use(plans, p, k)));
         link_again(p, k);
       }
-      // The kept patches' records, on all cores (each thread's edges to link again joined after: they are
-      // sorted below).
 #pragma omp parallel if (n_patches >= kParallelFaces)
   {
+    // The kept patches' records, on all cores; each thread's edges to link again are joined after (they
+    // are sorted below).
     std::vector<EdgeUse> own;
 #pragma omp for schedule(static) nowait
     for (int p = 0; p < n_patches; ++p) {
