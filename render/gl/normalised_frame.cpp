@@ -45,13 +45,13 @@ CovarianceMesh NormalisedFrame::to_frame(const CovarianceMesh& mesh) const {
 
 FramedGaussians NormalisedFrame::gaussians_in_frame(const CovarianceMesh& mesh) const {
   FramedGaussians framed;
-  const long long n = (long long)mesh.n_vertices();
-  framed.means.resize(size_t(n));
-  framed.covariances.resize(size_t(n));
-#pragma omp parallel for schedule(static) if (n >= kParallelFaces)
-  for (long long i = 0; i < n; ++i) {
-    framed.means[size_t(i)] = mean_in_frame(mesh.mean(size_t(i)));
-    framed.covariances[size_t(i)] = covariance_in_frame(mesh.covariance(size_t(i)));
+  const size_t n = mesh.n_vertices();
+  framed.means.resize(n);
+  framed.covariances.resize(n);
+#pragma omp parallel for schedule(static) if (n >= size_t(kParallelFaces))
+  for (size_t i = 0; i < n; ++i) {
+    framed.means[i] = mean_in_frame(mesh.mean(i));
+    framed.covariances[i] = covariance_in_frame(mesh.covariance(i));
   }
   return framed;
 }
@@ -67,17 +67,17 @@ void NormalisedFrame::to_frame(const CovarianceMesh& mesh, const std::vector<int
 std::vector<int> changed_gaussians(const FramedGaussians& before, const FramedGaussians& after,
                                    const std::vector<int>& origin) {
   // Compared on all cores, then listed in order.
-  const long long n = (long long)after.n_vertices();
-  std::vector<char> differs(static_cast<size_t>(n));
-#pragma omp parallel for schedule(static) if (n >= kParallelFaces)
-  for (long long v = 0; v < n; ++v) {
-    const size_t o = origin.empty() ? size_t(v) : size_t(origin[size_t(v)]);  // −1: past every vertex
-    differs[size_t(v)] = o >= before.n_vertices() || after.means[size_t(v)] != before.means[o] ||
-                         after.covariances[size_t(v)] != before.covariances[o];
+  const size_t n = after.n_vertices();
+  std::vector<char> differs(n);
+#pragma omp parallel for schedule(static) if (n >= size_t(kParallelFaces))
+  for (size_t v = 0; v < n; ++v) {
+    const size_t o = origin.empty() ? v : size_t(origin[v]);  // −1: past every vertex
+    differs[v] = o >= before.n_vertices() || after.means[v] != before.means[o] ||
+                 after.covariances[v] != before.covariances[o];
   }
   std::vector<int> changed;
-  for (long long v = 0; v < n; ++v)
-    if (differs[size_t(v)]) changed.push_back(int(v));
+  for (size_t v = 0; v < n; ++v)
+    if (differs[v]) changed.push_back(int(v));
   return changed;
 }
 

@@ -29,7 +29,7 @@ std::vector<char> patches_not_kept_alike(const PatchPlans& before, const PatchPl
   const auto same_patch = [&](int32_t now, int32_t was) {
     return now < 0 ? was < 0 : old_of_new[size_t(now)] == was && was >= 0;
   };
-  for (const KeptPatches& run : kept)
+  for (const KeptPatches& run : kept) {
 #pragma omp parallel for schedule(static) if (run.count >= kParallelFaces)
     for (int i = 0; i < run.count; ++i) {
       const size_t p = size_t(run.first + i), q = size_t(run.old_first + i);
@@ -44,6 +44,7 @@ std::vector<char> patches_not_kept_alike(const PatchPlans& before, const PatchPl
       }
       evaluate[p] = !same;
     }
+  }
   return evaluate;
 }
 
