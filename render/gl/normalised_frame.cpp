@@ -72,8 +72,8 @@ std::vector<int> changed_gaussians(const FramedGaussians& before, const FramedGa
 #pragma omp parallel for schedule(static) if (n >= size_t(kParallelFaces))
   for (size_t v = 0; v < n; ++v) {
     const size_t o = origin.empty() ? v : size_t(origin[v]);  // −1: past every vertex
-    differs[v] = o >= before.n_vertices() || after.means[v] != before.means[o] ||
-                 after.covariances[v] != before.covariances[o];
+    differs[v] =
+        o >= before.n_vertices() || after.means[v] != before.means[o] || after.covariances[v] != before.covariances[o];
   }
   std::vector<int> changed;
   for (size_t v = 0; v < n; ++v)
