@@ -82,11 +82,11 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
     for (size_t i = 0; i < p.patch_roots.size(); ++i) plans.patch_roots[first + i] = base + p.patch_roots[i];
     for (size_t i = 0; i < p.patch_corner_points.size(); ++i)
       plans.patch_corner_points[corners * first + i] = point(p.patch_corner_points[i]);
-    int32_t* edges = plans.patch_edges.data() + kPatchEdgeStride * first;
+    const size_t edges = kPatchEdgeStride * first;  // none for triangles
     for (size_t i = 0; i < p.patch_edges.size(); i += kPatchEdgeInts) {  // from, to, part
-      edges[i] = point(p.patch_edges[i]);
-      edges[i + 1] = point(p.patch_edges[i + 1]);
-      edges[i + 2] = p.patch_edges[i + 2];
+      plans.patch_edges[edges + i] = point(p.patch_edges[i]);
+      plans.patch_edges[edges + i + 1] = point(p.patch_edges[i + 1]);
+      plans.patch_edges[edges + i + 2] = p.patch_edges[i + 2];
     }
     if (release) ranges[r] = {};
   }
