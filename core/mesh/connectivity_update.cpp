@@ -230,36 +230,30 @@ private:
   void carry_vertex_rows() {
     const int n = t_.n_vertices;
     if (touched_.empty()) touched_.assign(size_t(n), 0);
-    // The new faces' corners and the new edges, by vertex (the reached vertices' own additions).
-    std::vector<std::vector<std::array<int, 2>>> added_faces(touched_list_.size());
-    std::vector<std::vector<int>> added_edges(touched_list_.size());
     std::vector<int> slot(size_t(n), -1);
     for (size_t i = 0; i < touched_list_.size(); ++i) slot[size_t(touched_list_[i])] = int(i);
-    for (int f = 0; f < t_.n_faces(); ++f)
-      if (face_old_[size_t(f)] < 0)
-        for (int i = t_.offsets[size_t(f)], k = 0; i < t_.offsets[size_t(f) + 1]; ++i, ++k)
-          added_faces[size_t(slot[size_t(t_.verts[size_t(i)])])].push_back({f, k});
-    for (const int e : new_edges_)
-      for (int s = 0; s < 2; ++s)
-        added_edges[size_t(slot[size_t(c_.edge_verts[2 * size_t(e) + size_t(s)])])].push_back(e);
-    // A reached vertex's row: its kept faces (and edges), renumbered, then the new ones, sorted.
+    // A reached vertex's row: its kept faces (and edges), renumbered, and the new ones, sorted.
     std::vector<std::vector<std::array<int, 2>>> face_rows(touched_list_.size());
     std::vector<std::vector<int>> edge_rows(touched_list_.size());
     for (size_t i = 0; i < touched_list_.size(); ++i) {
-      const int v = touched_list_[i], o = o_.vertices[size_t(v)];
-      std::vector<std::array<int, 2>>& faces = face_rows[i];
-      std::vector<int>& edges = edge_rows[i];
-      if (o >= 0) {
-        for (int r = c0_.vertex_face_offsets[size_t(o)]; r < c0_.vertex_face_offsets[size_t(o) + 1]; ++r)
-          if (const int f = face_new_[size_t(c0_.vertex_faces[size_t(r)])]; f >= 0)
-            faces.push_back({f, c0_.vertex_face_corners[size_t(r)]});
-        for (int r = c0_.vertex_edge_offsets[size_t(o)]; r < c0_.vertex_edge_offsets[size_t(o) + 1]; ++r)
-          if (const int e = edge_new_[size_t(c0_.vertex_edges[size_t(r)])]; e >= 0) edges.push_back(e);
-      }
-      faces.insert(faces.end(), added_faces[i].begin(), added_faces[i].end());
-      edges.insert(edges.end(), added_edges[i].begin(), added_edges[i].end());
-      std::sort(faces.begin(), faces.end());
-      std::sort(edges.begin(), edges.end());
+      const int o = o_.vertices[size_t(touched_list_[i])];
+      if (o < 0) continue;
+      for (int r = c0_.vertex_face_offsets[size_t(o)]; r < c0_.vertex_face_offsets[size_t(o) + 1]; ++r)
+        if (const int f = face_new_[size_t(c0_.vertex_faces[size_t(r)])]; f >= 0)
+          face_rows[i].push_back({f, c0_.vertex_face_corners[size_t(r)]});
+      for (int r = c0_.vertex_edge_offsets[size_t(o)]; r < c0_.vertex_edge_offsets[size_t(o) + 1]; ++r)
+        if (const int e = edge_new_[size_t(c0_.vertex_edges[size_t(r)])]; e >= 0) edge_rows[i].push_back(e);
+    }
+    for (int f = 0; f < t_.n_faces(); ++f)
+      if (face_old_[size_t(f)] < 0)
+        for (int i = t_.offsets[size_t(f)], k = 0; i < t_.offsets[size_t(f) + 1]; ++i, ++k)
+          face_rows[size_t(slot[size_t(t_.verts[size_t(i)])])].push_back({f, k});
+    for (const int e : new_edges_)
+      for (int s = 0; s < 2; ++s)
+        edge_rows[size_t(slot[size_t(c_.edge_verts[2 * size_t(e) + size_t(s)])])].push_back(e);
+    for (size_t i = 0; i < touched_list_.size(); ++i) {
+      std::sort(face_rows[i].begin(), face_rows[i].end());
+      std::sort(edge_rows[i].begin(), edge_rows[i].end());
     }
     // The rows' offsets: the old counts where the change does not reach.
     const auto count = [&](std::vector<int>& offsets, const std::vector<int>& old_offsets, auto reached_size) {
