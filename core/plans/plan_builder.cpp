@@ -64,10 +64,10 @@ public:
       const int face_point = nv + ne + sub.find_face(sc);
       const auto edge_point = [&](int k) { return nv + sub.find_edge(sc[size_t(k % n)], sc[size_t((k + 1) % n)]); };
       // Control-quad corners for tessellation levels: the vertex, edge midpoints and centroid of
-      // the linear split, whose stencils do not depend on any summation order.
+      // the linear split, whose stencils do not depend on any summation order. Added in the order the
+      // patch reads them, after its nodes (as cut_range numbers rows, core/plans/range_plans.h).
       Stencil centroid;
       for (const int c : corners) centroid += Stencil::vertex(c) * (1.0 / n);
-      const int centroid_point = stencils_.add(centroid);
       const auto corner = [&](int k) { return corners[size_t((k + n) % n)]; };
       for (int k = 0; k < n; ++k) {
         const std::array<int, 4> child = {sc[size_t(k)], edge_point(k), face_point, edge_point(k + n - 1)};
@@ -75,7 +75,8 @@ public:
         const auto midpoint = [&](int a, int b) {
           return stencils_.add(Stencil::vertex(corner(a)) * 0.5 + Stencil::vertex(corner(b)) * 0.5);
         };
-        const int next_mid = midpoint(k, k + 1), prev_mid = midpoint(k - 1, k);
+        const int next_mid = midpoint(k, k + 1), centroid_point = stencils_.add(centroid),
+                  prev_mid = midpoint(k - 1, k);
         plans_.patch_corner_points.insert(plans_.patch_corner_points.end(),
                                           {corner(k), next_mid, centroid_point, prev_mid});
         add_edge(corner(k), corner(k + 1), PatchEdgePart::first_half);

@@ -93,4 +93,92 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
   return {std::move(plans), stencils.finish()};
 }
 
+bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece) {
+  const PatchPlans& p = range.tables.plans;
+  const StencilTable& s = range.tables.stencils;
+  const int n_own = s.n_base, n_patches = p.n_patches();
+  const size_t corners = size_t(p.corners()), leaf_points = p.shape == PatchShape::quad ? 16 : 12;
+  const auto patch_end = [&](int patch) {
+    return size_t(patch + 1 < n_patches ? p.patch_roots[size_t(patch) + 1] : int(p.nodes.size()));
+  };
+  if (first >= last) return false;
+  const size_t begin = size_t(p.patch_roots[size_t(first)]), end = patch_end(last - 1);
+  PatchPlans& q = piece.tables.plans;
+  q = {};
+  q.shape = p.shape;
+  q.nodes.assign(p.nodes.begin() + long(begin), p.nodes.begin() + long(end));
+  piece.extraordinary_tables.clear();
+  std::vector<int> new_row(size_t(s.n_rows()), -1), old_row;  // old row → its number here, and back
+  std::vector<int> new_table(range.extraordinary_tables.size(), -1);
+  const auto point = [&](int32_t& x) {
+    if (x < n_own) return;
+    int& row = new_row[size_t(x - n_own)];
+    if (row < 0) row = int(old_row.size()), old_row.push_back(x - n_own);
+    x = n_own + row;
+  };
+  // Each record's depth, set by its parent (a patch's root: 0, or 1 for a split face's half-size patch,
+  // as the builders count), read when the record is reached: a record not reached breaks the run.
+  std::vector<int8_t> depth(q.nodes.size(), -1);
+  for (int patch = first; patch < last; ++patch) {
+    const size_t root = size_t(p.patch_roots[size_t(patch)]), stop = patch_end(patch);
+    if (root < begin || stop <= root || stop > end) return false;
+    depth[root - begin] = half_size_patch(p, patch) ? 1 : 0;
+    for (size_t o = root - begin; o < stop - begin;) {
+      if (depth[o] < 0) return false;
+      q.max_depth = std::max(q.max_depth, int32_t(depth[o]));
+      const auto kind = NodeKind(node_kind(q.nodes[o]));
+      if (kind == NodeKind::extraordinary) {  // corner, table, K, K points
+        int& table = new_table[size_t(q.nodes[o + 2])];
+        if (table < 0) {
+          table = int(piece.extraordinary_tables.size());
+          piece.extraordinary_tables.push_back(range.extraordinary_tables[size_t(q.nodes[o + 2])]);
+        }
+        q.nodes[o + 2] = table;
+        const size_t k = size_t(q.nodes[o + 3]);
+        for (size_t i = o + 4; i < o + 4 + k; ++i) point(q.nodes[i]);
+        o += 4 + k;
+        continue;
+      }
+      const size_t n = kind == NodeKind::internal ? 4 : leaf_points;
+      for (size_t i = o + 1; i <= o + n; ++i) {
+        if (kind != NodeKind::internal) {
+          point(q.nodes[i]);
+          continue;
+        }
+        const size_t child = size_t(q.nodes[i]);
+        if (child <= o + begin || child >= stop) return false;
+        depth[child - begin] = int8_t(depth[o] + 1);
+        q.nodes[i] = int32_t(child - begin);
+      }
+      o += n + 1;
+    }
+    q.patch_roots.push_back(int32_t(root - begin));
+    for (size_t i = corners * size_t(patch); i < corners * size_t(patch + 1); ++i) {
+      q.patch_corner_points.push_back(p.patch_corner_points[i]);
+      point(q.patch_corner_points.back());
+    }
+    if (p.shape != PatchShape::quad) continue;
+    for (size_t i = kPatchEdgeStride * size_t(patch); i < kPatchEdgeStride * size_t(patch + 1); i += kPatchEdgeInts) {
+      q.patch_edges.insert(q.patch_edges.end(), {p.patch_edges[i], p.patch_edges[i + 1], p.patch_edges[i + 2]});
+      point(q.patch_edges[q.patch_edges.size() - 3]);
+      point(q.patch_edges[q.patch_edges.size() - 2]);
+    }
+  }
+  StencilTable& t = piece.tables.stencils;
+  t = {};
+  t.n_base = n_own;
+  t.offsets.reserve(old_row.size() + 1);
+  t.offsets.push_back(0);
+  for (const int row : old_row) {
+    const auto from = s.offsets[size_t(row)], to = s.offsets[size_t(row) + 1];
+    t.indices.insert(t.indices.end(), s.indices.begin() + from, s.indices.begin() + to);
+    t.weights.insert(t.weights.end(), s.weights.begin() + from, s.weights.begin() + to);
+    t.offsets.push_back(int32_t(t.indices.size()));
+  }
+  piece.row_keys.clear();
+  if (range.row_keys.size() == size_t(s.n_rows()))
+    for (const int row : old_row) piece.row_keys.push_back(range.row_keys[size_t(row)]);
+  return true;
+}
+
 }  // namespace gps

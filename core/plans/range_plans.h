@@ -25,4 +25,11 @@ struct RangePlans {
 /// frees each range's tables once merged (the whole build's peak memory); a replanner keeps them.
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release);
 
+/// Patches [first, last) of `range` as the range their faces alone build: their nodes, corner points and
+/// edges cut out, their rows and extraordinary tables numbered in the order the patches first read them
+/// (each patch's nodes, then its corner points, then its edges' ends), which is the order the builders
+/// add them in. False where the patches' nodes are not one run, each patch's root first: `piece` is then
+/// unspecified and the faces must be built again.
+bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece);
+
 }  // namespace gps

@@ -363,43 +363,53 @@ int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const
   std::vector<char> dirty(size_t(n_faces), 0);
   for (const int g : faces_reading(t, c, {}, changed_vertices)) dirty[size_t(g)] = 1;
 
-  // The old ranges kept: all their faces there, clean, consecutive and in order; where each starts now.
-  std::vector<int> kept_at(size_t(n_faces), -1);
+  // The runs of old faces kept: still there, clean, consecutive and in order, each within one old range.
+  // A range kept whole is taken as it is; of one that a change reaches, each run of at least
+  // min_run_faces() faces is cut out (cut_range); the faces between are built again.
+  struct KeptRun {
+    int range, first_face, n_faces, first_patch, n_patches;  // in the old range's faces and patches
+    bool whole, usable = false;
+    RangePlans cut;
+  };
+  std::vector<KeptRun> runs;
+  std::vector<int> kept_at(size_t(n_faces), -1);  // new face → the run that starts there
+  const auto clean = [&](int f) { return new_face[size_t(f)] >= 0 && !dirty[size_t(new_face[size_t(f)])]; };
   for (size_t r = 0; r + 1 < range_first_.size(); ++r) {
     const int a = range_first_[r], b = range_first_[r + 1];
-    if (a == b) continue;
-    const int g0 = new_face[size_t(a)];
-    bool keep = g0 >= 0 && g0 + (b - a) <= n_faces;
-    for (int f = a; f < b && keep; ++f) keep = new_face[size_t(f)] == g0 + (f - a) && !dirty[size_t(g0 + (f - a))];
-    if (keep) kept_at[size_t(g0)] = int(r);
+    for (int f = a, patch = 0; f < b;) {
+      if (!clean(f)) {
+        patch += patches_of_face(old, f++, scheme_);
+        continue;
+      }
+      const int start = f, start_patch = patch;
+      do patch += patches_of_face(old, f++, scheme_);
+      while (f < b && clean(f) && new_face[size_t(f)] == new_face[size_t(f) - 1] + 1);
+      const bool whole = start == a && f == b;
+      if (whole || f - start >= min_run_faces())
+        runs.push_back({int(r), start, f - start, start_patch, patch - start_patch, whole});
+    }
   }
-  // The kept ranges renumbered onto the new mesh, on all cores (each its own tables).
-  std::vector<int> kept_ranges;
-  for (const int r : kept_at)
-    if (r >= 0) kept_ranges.push_back(r);
-  std::vector<char> renumbered(ranges_.size(), 0);
+  // Cut and renumbered onto the new mesh on all cores (each its own tables); a run that reads a vertex
+  // that is gone, or cannot be cut, is built again.
 #pragma omp parallel for schedule(dynamic)
-  for (size_t i = 0; i < kept_ranges.size(); ++i) {
-    const size_t r = size_t(kept_ranges[i]);
-    renumbered[r] = renumber_range(ranges_[r], new_index, same_base, n_new);
+  for (size_t i = 0; i < runs.size(); ++i) {
+    KeptRun& run = runs[i];
+    RangePlans& range = ranges_[size_t(run.range)];
+    run.usable = (run.whole || cut_range(range, run.first_patch, run.first_patch + run.n_patches, run.cut)) &&
+                 renumber_range(run.whole ? range : run.cut, new_index, same_base, n_new);
   }
+  for (size_t i = 0; i < runs.size(); ++i)
+    if (runs[i].usable) kept_at[size_t(new_face[size_t(runs[i].first_face)])] = int(i);
   std::vector<RangePlans> ranges;
   std::vector<int> firsts, fresh, old_patch_first;
   int planned = 0;
   for (int g = 0; g < n_faces;) {
     const int start = g;
-    if (const int r = kept_at[size_t(g)]; r >= 0) {
-      RangePlans& kept = ranges_[size_t(r)];
-      const int size = range_first_[size_t(r) + 1] - range_first_[size_t(r)];
-      if (renumbered[size_t(r)]) {
-        old_patch_first.push_back(patch_first_[size_t(r)]);
-      } else {
-        fresh.push_back(int(ranges.size()));
-        old_patch_first.push_back(-1);
-        planned += size;
-      }
-      ranges.push_back(std::move(kept));
-      g += size;
+    if (const int i = kept_at[size_t(g)]; i >= 0) {
+      KeptRun& run = runs[size_t(i)];
+      old_patch_first.push_back(patch_first_[size_t(run.range)] + run.first_patch);
+      ranges.push_back(std::move(run.whole ? ranges_[size_t(run.range)] : run.cut));
+      g += run.n_faces;
     } else {
       while (g < n_faces && kept_at[size_t(g)] < 0 && g - start < faces_per_range_) ++g;
       fresh.push_back(int(ranges.size()));

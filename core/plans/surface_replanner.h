@@ -72,9 +72,10 @@ public:
   /// vertices, the tables unchanged.
   std::vector<int> set_sharpness(const Sharpness& sharpness);
   /// Re-plans for a new topology. `origin`: per new vertex, the index it had before (−1: new); empty
-  /// stands for "every vertex kept its index". A range is kept, renumbered, where its faces are all
-  /// still there, consecutive and in order, and no piece of theirs changed (a face added, removed or
-  /// changed around one of their vertices, or sharpness there); the others are built again. The
+  /// stands for "every vertex kept its index". A run of a range's faces is kept, renumbered, where its
+  /// faces are all still there, consecutive and in order, and no piece of theirs changed (a face added,
+  /// removed or changed around one of their vertices, or sharpness there): a whole range, or a run cut
+  /// out of one (core/plans/range_plans.h, cut_range); the other faces are built again. The
   /// origin only says where to look: a wrong one costs time, never a wrong table. Everything is built
   /// again when the scheme changes, when sharpness first comes or last goes, for Loop's smooth builder,
   /// or when the origin is not increasing. Returns how many faces were planned. Throws as the
@@ -105,6 +106,10 @@ private:
   // Cuts the faces into even ranges and builds them all.
   void build_all(const Sharpness& sharpness);
   int range_of_face(int f) const;
+  // The fewest faces a run cut out of a range that a change reaches keeps (fewer are built again with
+  // the faces beside them): cutting many short runs costs more than building them, and leaves ranges
+  // of a few faces behind.
+  int min_run_faces() const { return std::max(1, faces_per_range_ / 8); }
 
   PlanOptions options_;
   Scheme scheme_;

@@ -18,6 +18,7 @@
 #include "core/modelling/samples.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/plans/plan_builder.h"
+#include "core/reference/reference_subdivision.h"
 #include "tests/support/test_meshes.h"
 
 namespace gps::test {

@@ -1,0 +1,97 @@
+// A range's plans cut down to a run of its faces (core/plans/range_plans.h, cut_range) are what building
+// those faces alone gives, bit for bit, on quad, triangle, split-face, open and creased meshes: the
+// replanner keeps the untouched runs of a range that a change reaches.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "core/extraordinary/loop_crease_tables.h"
+#include "core/extraordinary/quad_extraordinary_tables.h"
+#include "core/plans/loop_crease_plan_builder.h"
+#include "core/plans/range_plans.h"
+#include "core/plans/stencil_table.h"
+#include "tests/support/plan_tables.h"
+#include "tests/support/random_operations.h"
+
+namespace gps {
+namespace {
+
+void expect_same_range(const RangePlans& a, const RangePlans& b, const std::string& where) {
+  test::expect_same_tables(a.tables, b.tables, where);
+  EXPECT_EQ(a.extraordinary_tables, b.extraordinary_tables) << where;  // the same tables, by pointer
+}
+
+TEST(RangePlans, ARunCutFromARangeIsWhatItsFacesBuildAlone) {
+  for (const test::RandomOperationCase& c : test::random_operation_cases()) {
+    const bool loop = c.scheme == Scheme::loop;
+    if (loop && c.mesh.sharpness.empty()) continue;  // Loop's smooth builder plans whole meshes
+    const PolygonTopology& t = c.mesh.topology();
+    const LocalMesh base = base_local_mesh(t, c.mesh.sharpness);
+    QuadExtraordinaryTableCache quad_tables;
+    LoopCreaseTables loop_tables(LoopBeta::loop);
+    const auto build = [&](int first, int last) {
+      return loop ? build_creased_loop_range(base, first, last, LoopBeta::loop, loop_tables)
+                  : build_quad_range(base, first, last, 2, ExtraordinaryNodes::exact, true, quad_tables);
+    };
+    const auto patches = [&](int first, int last) {
+      int n = 0;
+      for (int f = first; f < last; ++f) n += loop || t.face_size(f) == 4 ? 1 : t.face_size(f);
+      return n;
+    };
+    std::mt19937 random(7);
+    const int n_faces = t.n_faces();
+    for (int trial = 0; trial < 12; ++trial) {
+      // A range [a, b) and a run [i, j) inside it; the first trial cuts a range whole.
+      std::uniform_int_distribution<int> pick(0, n_faces);
+      int a = pick(random), b = pick(random);
+      if (a > b) std::swap(a, b);
+      if (a == b) continue;
+      int i = std::uniform_int_distribution<int>(a, b - 1)(random);
+      int j = std::uniform_int_distribution<int>(i + 1, b)(random);
+      if (trial == 0) a = i = 0, b = j = n_faces;
+      const std::string where = c.name + ": faces [" + std::to_string(i) + ", " + std::to_string(j) + ") of [" +
+                                std::to_string(a) + ", " + std::to_string(b) + ")";
+      const RangePlans range = build(a, b);
+      RangePlans piece;
+      ASSERT_TRUE(cut_range(range, patches(a, i), patches(a, j), piece)) << where;
+      expect_same_range(piece, build(i, j), where);
+    }
+  }
+}
+
+// The row keys a merge stored go with the rows they key.
+TEST(RangePlans, ACutKeepsTheKeysOfItsRows) {
+  const CovarianceMesh mesh = make_sample("cylinder");
+  const PolygonTopology& t = mesh.topology();
+  const LocalMesh base = base_local_mesh(t, mesh.sharpness);
+  QuadExtraordinaryTableCache tables;
+  std::vector<RangePlans> ranges = {build_quad_range(base, 0, t.n_faces(), 2, ExtraordinaryNodes::exact, true, tables)};
+  merge_ranges(ranges, t.n_vertices, false);
+  RangePlans piece;
+  ASSERT_TRUE(cut_range(ranges[0], 3, ranges[0].tables.plans.n_patches() - 2, piece));
+  ASSERT_EQ(piece.row_keys.size(), size_t(piece.tables.stencils.n_rows()));
+  for (int row = 0; row < piece.tables.stencils.n_rows(); ++row)
+    EXPECT_EQ(piece.row_keys[size_t(row)], StencilTableBuilder::row_key(piece.tables.stencils, row)) << row;
+}
+
+// Patches whose nodes are not one run, root first, are refused, not cut wrongly.
+TEST(RangePlans, NodesOutOfTheirRunAreRefused) {
+  const CovarianceMesh mesh = make_sample("sphere", 96);
+  const LocalMesh base = base_local_mesh(mesh.topology(), mesh.sharpness);
+  QuadExtraordinaryTableCache tables;
+  RangePlans range = build_quad_range(base, 0, 10, 3, ExtraordinaryNodes::exact, true, tables);
+  int internal = -1;  // a patch refined around an extraordinary vertex
+  for (int p = 0; p < range.tables.plans.n_patches() && internal < 0; ++p)
+    if (node_kind(range.tables.plans.nodes[size_t(range.tables.plans.patch_roots[size_t(p)])]) == kNodeInternal)
+      internal = p;
+  ASSERT_GE(internal, 0);
+  RangePlans piece;
+  EXPECT_TRUE(cut_range(range, internal, internal + 1, piece));
+  // Its first child pointed back to its root: outside the run that follows the root.
+  const size_t root = size_t(range.tables.plans.patch_roots[size_t(internal)]);
+  range.tables.plans.nodes[root + 1] = int32_t(root);
+  EXPECT_FALSE(cut_range(range, internal, internal + 1, piece));
+}
+
+}  // namespace
+}  // namespace gps
