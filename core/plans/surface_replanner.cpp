@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <numeric>
 #include <utility>
 
 #include "core/plans/loop_crease_plan_builder.h"
@@ -141,10 +142,6 @@ void SurfaceReplanner::check(const PolygonTopology& topology, Scheme scheme) con
     check_quad_plans(topology, options_.depth, options_.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier);
 }
 
-int SurfaceReplanner::range_of_face(int f) const {
-  return int(std::upper_bound(range_first_.begin(), range_first_.end(), f) - range_first_.begin()) - 1;
-}
-
 void SurfaceReplanner::build_all(const Sharpness& sharpness) {
   const int n_faces = base_.topology.n_faces();
   range_first_.clear();
@@ -263,12 +260,14 @@ std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
     if (const int n = tables_->plans.n_patches(); n > 0) change_.kept.push_back({0, 0, n});
     return faces;
   }
-  std::vector<int> which;
-  std::vector<int> old_patch_first = patch_first_;
-  for (const int f : faces)
-    if (const int r = range_of_face(f); which.empty() || which.back() != r) which.push_back(r);
-  for (const int r : which) old_patch_first[size_t(r)] = -1;
-  build(which, sharpness, old_patch_first);
+  // The same faces and vertices: each its own; the faces that read a change are built again.
+  const int n_faces = t.n_faces();
+  std::vector<int> face_itself(static_cast<size_t>(n_faces)), vertex_itself(static_cast<size_t>(t.n_vertices));
+  std::iota(face_itself.begin(), face_itself.end(), 0);
+  std::iota(vertex_itself.begin(), vertex_itself.end(), 0);
+  std::vector<char> dirty(size_t(n_faces), 0);
+  for (const int f : faces) dirty[size_t(f)] = 1;
+  keep_runs_and_build(t, face_itself, face_itself, dirty, vertex_itself, true, sharpness);
   return faces;
 }
 
@@ -363,6 +362,14 @@ int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const
   std::vector<char> dirty(size_t(n_faces), 0);
   for (const int g : faces_reading(t, c, {}, changed_vertices)) dirty[size_t(g)] = 1;
 
+  return keep_runs_and_build(old, new_face, old_face, dirty, new_index, same_base, sharpness);
+}
+
+int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std::vector<int>& new_face,
+                                          const std::vector<int>& old_face, const std::vector<char>& dirty,
+                                          const std::vector<int>& new_index, bool same_base,
+                                          const Sharpness& sharpness) {
+  const int n_faces = base_.topology.n_faces(), n_new = base_.topology.n_vertices;
   // The runs of old faces kept: still there, clean, consecutive and in order, each within one old range.
   // A range kept whole is taken as it is; of one that a change reaches, each run of at least
   // min_run_faces() faces is cut out (cut_range); the faces between are built again.

@@ -48,7 +48,8 @@ struct ReplannedTables {
 
 class SurfaceReplanner {
 public:
-  /// The faces built together; a change builds again the ranges of the faces it reaches.
+  /// The faces built together; a change builds again the faces it reaches, and keeps the runs of a
+  /// range between them.
   static constexpr int kFacesPerRange = 256;
 
   /// The plans of `topology` with `sharpness` under `options`, as build_surface_plans makes them, in
@@ -65,9 +66,9 @@ public:
   const SurfaceTables& tables() const { return *tables_; }
   /// The same tables, shared (a renderer keeps them without a copy).
   std::shared_ptr<const SurfaceTables> shared_tables() const { return tables_; }
-  /// Re-plans for new sharpness of the same topology: builds again only the ranges of the faces that
-  /// read a changed edge or vertex (every face where the mesh gains its first sharpness or loses its
-  /// last: the plans' depth bound and Loop's smooth builder change then). Returns the faces that read
+  /// Re-plans for new sharpness of the same topology: builds again only the faces that read a changed
+  /// edge or vertex, and the short runs between them (every face where the mesh gains its first
+  /// sharpness or loses its last: the plans' depth bound and Loop's smooth builder change then). Returns the faces that read
   /// a change, sorted (empty: nothing changed). Throws gps::Error for a crease between unjoined
   /// vertices, the tables unchanged.
   std::vector<int> set_sharpness(const Sharpness& sharpness);
@@ -96,6 +97,13 @@ private:
   void check(const PolygonTopology& topology, Scheme scheme) const;
   // set_topology's work, the new mesh's base piece built.
   int replan(LocalMesh&& base, const Sharpness& sharpness, const std::vector<int>& origin);
+  // The plans of base_ from those of `old`: per old face its new face (−1: gone) and back, which new
+  // faces read a change (`dirty`), and per old vertex its new index (`same_base`: each kept its own).
+  // Keeps, renumbered, every run of clean faces that fits (see set_topology), builds the others and
+  // merges them all. Returns how many faces were planned.
+  int keep_runs_and_build(const PolygonTopology& old, const std::vector<int>& new_face, const std::vector<int>& old_face,
+                          const std::vector<char>& dirty, const std::vector<int>& new_index, bool same_base,
+                          const Sharpness& sharpness);
   // Builds the ranges `which` on all cores, then merges every range into tables_. `old_patch_first`:
   // per range, where its patches started before the change (−1: built now); empty: none kept.
   // `old_face_patch`: per face, where the patches of the face it was started before, where its plan is
@@ -105,7 +113,6 @@ private:
              const std::vector<int>& old_face_patch = {});
   // Cuts the faces into even ranges and builds them all.
   void build_all(const Sharpness& sharpness);
-  int range_of_face(int f) const;
   // The fewest faces a run cut out of a range that a change reaches keeps (fewer are built again with
   // the faces beside them): cutting many short runs costs more than building them, and leaves ranges
   // of a few faces behind.
