@@ -116,7 +116,7 @@ private:
   // The fewest faces a run cut out of a range that a change reaches keeps (fewer are built again with
   // the faces beside them): cutting many short runs costs more than building them, and leaves ranges
   // of a few faces behind.
-  int min_run_faces() const { return std::max(1, faces_per_range_ / 8); }
+  int min_run_faces() const { return std::max(1, faces_per_range_ / 16); }
 
   PlanOptions options_;
   Scheme scheme_;

@@ -10,6 +10,7 @@
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
+#include "core/modelling/loop_cut.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/modelling/samples.h"
 #include "core/plans/surface_replanner.h"
@@ -128,9 +129,26 @@ TEST(IncrementalPlans, AnExtrudeBuildsAFewRangesAgain) {
   const Modelled extruded = extrude_faces(sphere, {int(sphere.n_faces() / 2)}, 0.01);
   const PolygonTopology& after = extruded.mesh.topology();
   const int planned = replanner.set_topology(after, {}, extruded.vertex_origin);
-  EXPECT_LE(planned, 4 * SurfaceReplanner::kFacesPerRange);
+  EXPECT_LE(planned, SurfaceReplanner::kFacesPerRange / 2);  // the faces around it, not their ranges
   EXPECT_GT(planned, 0);
   test::expect_same_tables(replanner.tables(), build_surface_plans(after, options, {}), "extruded");
+}
+
+// A loop cut around the same sphere crosses every range on its way: it builds again the faces beside
+// the loop, not those ranges, and its undo builds as few.
+TEST(IncrementalPlans, ALoopCutBuildsTheFacesBesideItsLoopNotTheRangesItCrosses) {
+  const CovarianceMesh sphere = make_sample("sphere", 6000);
+  PlanOptions options;
+  SurfaceReplanner replanner(sphere, options);
+  const std::span<const int> face = sphere.face(sphere.n_faces() / 2);
+  const Modelled cut = loop_cut(sphere, face[0], face[1], 1);
+  const int loop = int(cut.mesh.n_faces() - sphere.n_faces());  // the faces the loop split, each into two
+  ASSERT_GT(loop, 100);
+  const int planned = replanner.set_topology(cut.mesh, cut.vertex_origin);
+  const int undone = replanner.set_topology(sphere, inverse_origin(cut.vertex_origin, sphere.n_vertices()));
+  EXPECT_LE(planned, 8 * loop);
+  EXPECT_LE(undone, 8 * loop);
+  test::expect_same_tables(replanner.tables(), build_surface_plans(sphere.topology(), options, {}), "undone");
 }
 
 // Next to the cylinder's octagons, split into quads whose edges meet the side quads as halves beside a
