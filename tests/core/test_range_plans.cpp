@@ -29,9 +29,13 @@ TEST(RangePlans, ARunCutFromARangeIsWhatItsFacesBuildAlone) {
     const LocalMesh base = base_local_mesh(t, c.mesh.sharpness);
     QuadExtraordinaryTableCache quad_tables;
     LoopCreaseTables loop_tables(LoopBeta::loop);
+    // Catmull-Clark's exact nodes at depth 2, and the thesis' Bézier patches at depth 3, by turns.
+    int trial = 0;
     const auto build = [&](int first, int last) {
+      const bool bezier = trial % 2 == 1;
       return loop ? build_creased_loop_range(base, first, last, LoopBeta::loop, loop_tables)
-                  : build_quad_range(base, first, last, 2, ExtraordinaryNodes::exact, true, quad_tables);
+                  : build_quad_range(base, first, last, bezier ? 3 : 2,
+                                     bezier ? ExtraordinaryNodes::bezier : ExtraordinaryNodes::exact, true, quad_tables);
     };
     const auto patches = [&](int first, int last) {
       int n = 0;
@@ -40,7 +44,7 @@ TEST(RangePlans, ARunCutFromARangeIsWhatItsFacesBuildAlone) {
     };
     std::mt19937 random(7);
     const int n_faces = t.n_faces();
-    for (int trial = 0; trial < 12; ++trial) {
+    for (; trial < 12; ++trial) {
       // A range [a, b) and a run [i, j) inside it; the first trial cuts a range whole.
       std::uniform_int_distribution<int> pick(0, n_faces);
       int a = pick(random), b = pick(random);
