@@ -68,9 +68,9 @@ public:
   std::shared_ptr<const SurfaceTables> shared_tables() const { return tables_; }
   /// Re-plans for new sharpness of the same topology: builds again only the faces that read a changed
   /// edge or vertex, and the short runs between them (every face where the mesh gains its first
-  /// sharpness or loses its last: the plans' depth bound and Loop's smooth builder change then). Returns the faces that read
-  /// a change, sorted (empty: nothing changed). Throws gps::Error for a crease between unjoined
-  /// vertices, the tables unchanged.
+  /// sharpness or loses its last: the plans' depth bound and Loop's smooth builder change then).
+  /// Returns the faces that read a change, sorted (empty: nothing changed). Throws gps::Error for a
+  /// crease between unjoined vertices, the tables unchanged.
   std::vector<int> set_sharpness(const Sharpness& sharpness);
   /// Re-plans for a new topology. `origin`: per new vertex, the index it had before (−1: new); empty
   /// stands for "every vertex kept its index". A run of a range's faces is kept, renumbered, where its
