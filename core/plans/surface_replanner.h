@@ -101,9 +101,9 @@ private:
   // faces read a change (`dirty`), and per old vertex its new index (`same_base`: each kept its own).
   // Keeps, renumbered, every run of clean faces that fits (see set_topology), builds the others and
   // merges them all. Returns how many faces were planned.
-  int keep_runs_and_build(const PolygonTopology& old, const std::vector<int>& new_face, const std::vector<int>& old_face,
-                          const std::vector<char>& dirty, const std::vector<int>& new_index, bool same_base,
-                          const Sharpness& sharpness);
+  int keep_runs_and_build(const PolygonTopology& old, const std::vector<int>& new_face,
+                          const std::vector<int>& old_face, const std::vector<char>& dirty,
+                          const std::vector<int>& new_index, bool same_base, const Sharpness& sharpness);
   // Builds the ranges `which` on all cores, then merges every range into tables_. `old_patch_first`:
   // per range, where its patches started before the change (−1: built now); empty: none kept.
   // `old_face_patch`: per face, where the patches of the face it was started before, where its plan is

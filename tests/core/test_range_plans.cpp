@@ -33,9 +33,10 @@ TEST(RangePlans, ARunCutFromARangeIsWhatItsFacesBuildAlone) {
     int trial = 0;
     const auto build = [&](int first, int last) {
       const bool bezier = trial % 2 == 1;
-      return loop ? build_creased_loop_range(base, first, last, LoopBeta::loop, loop_tables)
-                  : build_quad_range(base, first, last, bezier ? 3 : 2,
-                                     bezier ? ExtraordinaryNodes::bezier : ExtraordinaryNodes::exact, true, quad_tables);
+      return loop
+                 ? build_creased_loop_range(base, first, last, LoopBeta::loop, loop_tables)
+                 : build_quad_range(base, first, last, bezier ? 3 : 2,
+                                    bezier ? ExtraordinaryNodes::bezier : ExtraordinaryNodes::exact, true, quad_tables);
     };
     const auto patches = [&](int first, int last) {
       int n = 0;
