@@ -101,8 +101,9 @@ bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece) 
   const auto patch_end = [&](int patch) {
     return size_t(patch + 1 < n_patches ? p.patch_roots[size_t(patch) + 1] : int(p.nodes.size()));
   };
-  if (first >= last) return false;
+  if (first < 0 || first >= last || last > n_patches) return false;
   const size_t begin = size_t(p.patch_roots[size_t(first)]), end = patch_end(last - 1);
+  if (end <= begin || end > p.nodes.size()) return false;
   PatchPlans& q = piece.tables.plans;
   q = {};
   q.shape = p.shape;
@@ -128,6 +129,7 @@ bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece) 
       q.max_depth = std::max(q.max_depth, int32_t(depth[o]));
       const auto kind = NodeKind(node_kind(q.nodes[o]));
       if (kind == NodeKind::extraordinary) {  // corner, table, K, K points
+        if (o + 4 > stop - begin) return false;
         int& table = new_table[size_t(q.nodes[o + 2])];
         if (table < 0) {
           table = int(piece.extraordinary_tables.size());
@@ -135,11 +137,13 @@ bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece) 
         }
         q.nodes[o + 2] = table;
         const size_t k = size_t(q.nodes[o + 3]);
+        if (o + 4 + k > stop - begin) return false;
         for (size_t i = o + 4; i < o + 4 + k; ++i) point(q.nodes[i]);
         o += 4 + k;
         continue;
       }
       const size_t n = kind == NodeKind::internal ? 4 : leaf_points;
+      if (o + n + 1 > stop - begin) return false;
       for (size_t i = o + 1; i <= o + n; ++i) {
         if (kind != NodeKind::internal) {
           point(q.nodes[i]);
