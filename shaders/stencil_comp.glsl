@@ -1,4 +1,4 @@
-// Applies the stencil table: point n_base + r = Σ w · q[index] (one sparse matrix-vector product), the
+// Applies the stencil table: point first_row + r = Σ w · q[index] (one sparse matrix-vector product), the
 // sum taken about an anchor, the row's heaviest point's, which the row keeps (plan_point.glsl).
 #include "shaders/compute_pass.glsl"
 layout(std430, binding = kBindingPoints) buffer Points { point_vec4 points[]; };  // gpu_layout.h
@@ -7,7 +7,7 @@ layout(std430, binding = kBindingOffsets) readonly buffer Offsets { int offsets[
 layout(std430, binding = kBindingIndices) readonly buffer Indices { int indices[]; };
 layout(std430, binding = kBindingWeights) readonly buffer Weights { float weights[]; };
 layout(std430, binding = kBindingRows) readonly buffer Rows { int rows[]; };
-uniform int u_n_base;
+uniform int u_first_row;  // core/plans/patch_plans.h: StencilTable::first_row()
 
 void main() {
   int i = compute_invocation();
@@ -33,7 +33,7 @@ void main() {
     c += w * pc;
   }
   c.yzw = anchor;
-  int out_point = u_n_base + r;
+  int out_point = u_first_row + r;
   points[kVec4PerPoint * out_point] = a;
   points[kVec4PerPoint * out_point + 1] = b;
   points[kVec4PerPoint * out_point + 2] = c;

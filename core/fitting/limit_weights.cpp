@@ -88,7 +88,7 @@ LimitWeights limit_weights(const PatchPlans& plans, const StencilTable& stencils
       vertices.add(p, points.value[j], points.du[j], points.dv[j]);
       continue;
     }
-    const size_t row = size_t(p - stencils.n_base);
+    const size_t row = size_t(p - stencils.first_row());
     for (int k = stencils.offsets[row]; k < stencils.offsets[row + 1]; ++k) {
       const double s = stencils.weights[size_t(k)];
       vertices.add(stencils.indices[size_t(k)], s * points.value[j], s * points.du[j], s * points.dv[j]);

@@ -4,8 +4,10 @@
 // they are; built once per topology by plan_builder.h.
 //
 // Points. The plans read an array of 9D points: points [0, n_base) are the base vertices' dual
-// vectors q_i; point n_base + r is row r of the stencil table, Σ_k weights[k] · q[indices[k]] over
-// k in [offsets[r], offsets[r+1]).
+// vectors q_i; point first_row() + r is row r of the stencil table, Σ_k weights[k] · q[indices[k]] over
+// k in [offsets[r], offsets[r+1]). A whole surface's rows start past a gap of unused points
+// (row_start_for), so that an operation that adds or removes a few base vertices leaves every row's
+// point index, and so the plans that read it, as they were.
 //
 // Nodes. nodes[] holds one record per quadtree node, addressed by its offset:
 //   nodes[o] = kind (NodeKind) | boundary << kNodeKindBits (core/patches/patch_basis.h: a regular quad
@@ -48,12 +50,20 @@ enum class PatchShape : int32_t { quad = 4, triangle = 3 };
 
 struct StencilTable {
   int32_t n_base = 0;            // number of base vertices (points that are q_i themselves)
+  int32_t row_gap = 0;           // unused points between the base vertices and the first row
   std::vector<int32_t> offsets;  // n_rows + 1 entries
   std::vector<int32_t> indices;  // base-vertex indices
   std::vector<double> weights;   // double for the CPU reference; the GPU gets a float copy
   int32_t n_rows() const { return offsets.empty() ? 0 : int32_t(offsets.size()) - 1; }
-  int32_t n_points() const { return n_base + n_rows(); }
+  int32_t first_row() const { return n_base + row_gap; }
+  int32_t n_points() const { return first_row() + n_rows(); }
 };
+
+/// The point index of the first row of a whole surface's tables over `n_base` base vertices: n_base
+/// rounded up to a multiple of kRowStartStep, a function of n_base alone, so that tables built whole
+/// and tables kept through changes number their points alike.
+inline constexpr int32_t kRowStartStep = 1024;
+inline int32_t row_start_for(int32_t n_base) { return (n_base + kRowStartStep - 1) / kRowStartStep * kRowStartStep; }
 
 struct PatchPlans {
   PatchShape shape = PatchShape::quad;

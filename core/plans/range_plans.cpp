@@ -8,7 +8,7 @@
 namespace gps {
 
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release) {
-  StencilTableBuilder stencils(n_base);
+  StencilTableBuilder stencils(n_base, row_start_for(n_base));
   PatchPlans plans;
   if (!ranges.empty()) plans.shape = ranges.front().tables.plans.shape;
   const size_t corners = size_t(plans.corners()), leaf_points = plans.shape == PatchShape::quad ? 16 : 12;

@@ -19,8 +19,9 @@ size_t slot_of(size_t key, size_t mask) {
 }
 }  // namespace
 
-StencilTableBuilder::StencilTableBuilder(int n_base) {
+StencilTableBuilder::StencilTableBuilder(int n_base, int first_row) {
   table_.n_base = n_base;
+  table_.row_gap = std::max(0, first_row - n_base);
   table_.offsets.push_back(0);
   grow_lookup(64);
 }
@@ -121,7 +122,7 @@ int StencilTableBuilder::add_terms(const Terms& terms, size_t key) {
       if (!same) break;
       ++k;
     }
-    if (same) return table_.n_base + row;
+    if (same) return table_.first_row() + row;
   }
   const int row = table_.n_rows();
   for (const auto& [index, weight] : terms) {
@@ -132,17 +133,18 @@ int StencilTableBuilder::add_terms(const Terms& terms, size_t key) {
   table_.offsets.push_back(int(table_.indices.size()));
   previous_same_hash_.push_back(last);
   last = row;
-  return table_.n_base + row;
+  return table_.first_row() + row;
 }
 
 std::vector<Dual> apply_stencils(const StencilTable& t, const std::vector<Dual>& base) {
   std::vector<Dual> points(size_t(t.n_points()));
   std::copy(base.begin(), base.end(), points.begin());
+  std::fill(points.begin() + t.n_base, points.begin() + t.first_row(), Dual::Zero());
   for (int r = 0; r < t.n_rows(); ++r) {
     Dual sum = Dual::Zero();
     for (int k = t.offsets[size_t(r)]; k < t.offsets[size_t(r) + 1]; ++k)
       sum += t.weights[size_t(k)] * base[size_t(t.indices[size_t(k)])];
-    points[size_t(t.n_base + r)] = sum;
+    points[size_t(t.first_row() + r)] = sum;
   }
   return points;
 }
@@ -159,7 +161,7 @@ void update_stencils(const StencilTable& t, const StencilDependents& d, const st
     Dual sum = Dual::Zero();
     for (int k = t.offsets[size_t(r)]; k < t.offsets[size_t(r) + 1]; ++k)
       sum += t.weights[size_t(k)] * points[size_t(t.indices[size_t(k)])];
-    points[size_t(t.n_base + r)] = sum;
+    points[size_t(t.first_row() + r)] = sum;
   };
   size_t n_dependents = 0;
   for (const int v : changed) n_dependents += size_t(d.offsets[size_t(v) + 1] - d.offsets[size_t(v)]);

@@ -12,8 +12,9 @@ namespace gps {
 /// any other becomes a row, rows with identical stencils shared.
 class StencilTableBuilder {
 public:
-  explicit StencilTableBuilder(int n_base);
-  /// The point index of `s` (a base vertex index, or n_base + row).
+  /// Rows numbered from point `first_row` on (n_base where negative).
+  explicit StencilTableBuilder(int n_base, int first_row = -1);
+  /// The point index of `s` (a base vertex index, or first_row + row).
   int add(const Stencil& s);
   /// The point index of row `row` of another table over the same base vertices.
   int add_row(const StencilTable& other, int row) { return add_row(other, row, row_key(other, row)); }
@@ -43,7 +44,8 @@ private:
   std::vector<int> previous_same_hash_;  // per row: the previous row of equal key, or −1
 };
 
-/// All points: q of the base vertices, then every row (one sparse matrix-vector product over 9D).
+/// All points: q of the base vertices, zero in the gap, then every row (one sparse matrix-vector
+/// product over 9D).
 std::vector<Dual> apply_stencils(const StencilTable& table, const std::vector<Dual>& base);
 
 /// For incremental updates: which rows read each base vertex (the transposed table).

@@ -393,7 +393,7 @@ int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std:
       while (f < b && clean(f) && new_face[size_t(f)] == new_face[size_t(f) - 1] + 1);
       const bool whole = start == a && f == b;
       if (whole || f - start >= min_run_faces())
-        runs.push_back({int(r), start, f - start, start_patch, patch - start_patch, whole});
+        runs.push_back({int(r), start, f - start, start_patch, patch - start_patch, whole, false, {}});
     }
   }
   // Cut and renumbered onto the new mesh on all cores (each its own tables); a run that reads a vertex

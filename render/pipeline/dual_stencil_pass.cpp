@@ -21,12 +21,12 @@ void DualStencilPass::set_precision(PointPrecision precision) {
   precision_ = precision;
 }
 
-void DualStencilPass::run(int n_base, int vertex_count, int row_count, bool list_vertices, bool list_rows,
+void DualStencilPass::run(int first_row, int vertex_count, int row_count, bool list_vertices, bool list_rows,
                           int group_limit) const {
   const ShaderProgram &dual_map = dual_map_[int(precision_)], &stencil = stencil_[int(precision_)];
   run_compute_pass(dual_map, vertex_count, list_vertices, group_limit);
   stencil.use();
-  stencil.set("u_n_base", n_base);
+  stencil.set("u_first_row", first_row);
   run_compute_pass(stencil, row_count, list_rows, group_limit);
   check_gl_errors("the compute passes");
 }

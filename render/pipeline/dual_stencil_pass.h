@@ -17,22 +17,23 @@ public:
   /// The passes for points of `precision` from now on (its programs built at the first use).
   void set_precision(PointPrecision precision);
 
-  /// Every one of the `n_base` vertices and `n_rows` stencil rows (buffers bound).
-  void run_all(int n_base, int n_rows, int group_limit) const {
-    run(n_base, n_base, n_rows, false, false, group_limit);
+  /// Every base vertex and stencil row of `stencils` (buffers bound).
+  void run_all(const StencilTable& stencils, int group_limit) const {
+    run(stencils.first_row(), stencils.n_base, stencils.n_rows(), false, false, group_limit);
   }
   /// The `n_changed` listed vertices and `n_listed_rows` listed rows (PlanBuffers::upload_edit, buffers bound).
-  void run_listed(int n_base, int n_changed, int n_listed_rows, int group_limit) const {
-    run(n_base, n_changed, n_listed_rows, true, true, group_limit);
+  void run_listed(const StencilTable& stencils, int n_changed, int n_listed_rows, int group_limit) const {
+    run(stencils.first_row(), n_changed, n_listed_rows, true, true, group_limit);
   }
-  /// The `n_changed` listed vertices and every one of the `n_rows` stencil rows: after a change of
-  /// topology whose unchanged vertices' points were carried over (PlanBuffers::upload_tables).
-  void run_listed_vertices(int n_base, int n_changed, int n_rows, int group_limit) const {
-    run(n_base, n_changed, n_rows, true, false, group_limit);
+  /// The `n_changed` listed vertices and every stencil row: after a change of topology whose unchanged
+  /// vertices' points were carried over (PlanBuffers::upload_tables).
+  void run_listed_vertices(const StencilTable& stencils, int n_changed, int group_limit) const {
+    run(stencils.first_row(), n_changed, stencils.n_rows(), true, false, group_limit);
   }
 
 private:
-  void run(int n_base, int vertex_count, int row_count, bool list_vertices, bool list_rows, int group_limit) const;
+  void run(int first_row, int vertex_count, int row_count, bool list_vertices, bool list_rows,
+           int group_limit) const;
 
   ShaderProgram dual_map_[2], stencil_[2];  // by PointPrecision
   PointPrecision precision_ = PointPrecision::single_float;

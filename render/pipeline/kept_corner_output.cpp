@@ -63,7 +63,7 @@ std::vector<int> stale_corner_patches(const SurfaceTables& before, const Surface
   } else if (!changed.empty()) {  // a scan of the kept plans: cheaper than PatchReaders built for one change
     std::vector<char> point_changed(size_t(after.stencils.n_points()), 0);
     for (const int v : changed) point_changed[size_t(v)] = 1;
-    for (const int r : rows_reading(dependents, changed)) point_changed[size_t(n_base + r)] = 1;
+    for (const int r : rows_reading(dependents, changed)) point_changed[size_t(after.stencils.first_row() + r)] = 1;
 #pragma omp parallel if (n_patches >= kParallelFaces)
     {
       std::vector<int> points;

@@ -170,6 +170,10 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<K
   } else {
     reserve(kBindingPoints, size_t(s.n_points()) * point_bytes);
   }
+  // The points between the base vertices and the first row are read by nothing; zero, as the CPU's.
+  if (s.row_gap > 0)
+    glClearNamedBufferSubData(buffers_[kBindingPoints], GL_R32UI, GLintptr(size_t(s.n_base) * point_bytes),
+                              GLsizeiptr(size_t(s.row_gap) * point_bytes), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
   // Not cleared: the corner pass writes every slot it is run over, and that is every slot but those
   // of the kept runs, copied below from the buffers before (zero where a patch does not evaluate it).
   GLuint limits = 0, midpoints = 0;

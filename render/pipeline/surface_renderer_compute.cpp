@@ -14,7 +14,6 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
   const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   ++revision_;
-  const int n_rows = tables().stencils.n_rows();
   const PatchPlans& plans = tables().plans;
   if (changed) {
     const std::vector<int> rows = rows_reading(dependents_, *changed);
@@ -23,14 +22,14 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
     const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
     buffers_.upload_corner_list(corners);
     buffers_.bind();
-    compute_.run_listed(n_base_, int(changed->size()), int(rows.size()), group_limit_);
+    compute_.run_listed(tables().stencils, int(changed->size()), int(rows.size()), group_limit_);
     corners_.run_listed(plans, int(corners.size()), group_limit_);
     last_corner_slots_ = int(corners.size());
     cache_.points_changed(points_generation_, &patches);
     return;
   }
   buffers_.bind();
-  compute_.run_all(n_base_, n_rows, group_limit_);
+  compute_.run_all(tables().stencils, group_limit_);
   corners_.run_all(plans, group_limit_);
   last_corner_slots_ = plans.corners() * plans.n_patches();
   if (edit)
@@ -51,9 +50,9 @@ void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::v
   if (points_carried) buffers_.upload_edit(changed, {});
   buffers_.bind();
   if (points_carried)
-    compute_.run_listed_vertices(n_base_, int(changed.size()), tables().stencils.n_rows(), group_limit_);
+    compute_.run_listed_vertices(tables().stencils, int(changed.size()), group_limit_);
   else
-    compute_.run_all(n_base_, tables().stencils.n_rows(), group_limit_);
+    compute_.run_all(tables().stencils, group_limit_);
   corners_.run_listed(plans, int(corners.size()), group_limit_);
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
@@ -67,7 +66,7 @@ std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& change
   const StencilTable& stencils = tables().stencils;
   if (!readers_) readers_ = std::make_unique<const PatchReaders>(tables().plans, stencils.n_points());
   std::vector<int> points = changed;
-  for (const int r : rows) points.push_back(stencils.n_base + r);
+  for (const int r : rows) points.push_back(stencils.first_row() + r);
   return readers_->patches_changed_by(points);
 }
 

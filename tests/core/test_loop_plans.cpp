@@ -230,7 +230,7 @@ TEST(LoopPlans, StayInsideThePositiveDefiniteCone) {
           net[point] += w[j];
           continue;
         }
-        const int r = point - stencils.n_base;
+        const int r = point - stencils.first_row();
         for (int k = stencils.offsets[size_t(r)]; k < stencils.offsets[size_t(r) + 1]; ++k)
           net[stencils.indices[size_t(k)]] += w[j] * stencils.weights[size_t(k)];
       }

@@ -14,10 +14,10 @@
 namespace gps {
 namespace {
 
-// The changed points of an edit of base vertices: the vertices, then n_base + the rows reading them.
+// The changed points of an edit of base vertices: the vertices, then the points of the rows reading them.
 std::vector<int> changed_points(const PlannedSurface& surface, const std::vector<int>& vertices) {
   std::vector<int> points = vertices;
-  for (const int r : surface.rows_reading(vertices)) points.push_back(surface.tables().stencils.n_base + r);
+  for (const int r : surface.rows_reading(vertices)) points.push_back(surface.tables().stencils.first_row() + r);
   return points;
 }
 

@@ -76,10 +76,10 @@ TEST_P(PlannedSurfaceUpdate, EqualsASurfacePlannedAnewAndChangesOnlyTheRowsItLis
     EXPECT_LT((surface.points()[i] - anew.points()[i]).norm(), 1e-12 * (1 + anew.points()[i].norm())) << i;
   const std::vector<int> rows = surface.rows_reading(changed);
   ASSERT_FALSE(rows.empty());
-  const int n_base = int(mesh.n_vertices());
+  const int first_row = surface.tables().stencils.first_row();
   std::vector<bool> listed(before.size(), false);
   for (const int v : changed) listed[size_t(v)] = true;
-  for (const int r : rows) listed[size_t(n_base + r)] = true;
+  for (const int r : rows) listed[size_t(first_row + r)] = true;
   for (size_t i = 0; i < before.size(); ++i) {
     if (!listed[i]) {
       EXPECT_EQ(surface.points()[i], before[i]) << "point " << i << " changed but is not listed";

@@ -23,6 +23,7 @@ inline void expect_same_tables(const SurfaceTables& a, const SurfaceTables& b, c
   EXPECT_EQ(p.corner_owners, q.corner_owners) << where;
   EXPECT_EQ(p.extraordinary_tables, q.extraordinary_tables) << where;  // doubles compared exactly
   EXPECT_EQ(a.stencils.n_base, b.stencils.n_base) << where;
+  EXPECT_EQ(a.stencils.row_gap, b.stencils.row_gap) << where;
   EXPECT_EQ(a.stencils.offsets, b.stencils.offsets) << where;
   EXPECT_EQ(a.stencils.indices, b.stencils.indices) << where;
   EXPECT_EQ(a.stencils.weights, b.stencils.weights) << where;
