@@ -5,6 +5,7 @@
 // only a few ranges again.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "core/modelling/delete_elements.h"
@@ -132,6 +133,69 @@ TEST(IncrementalPlans, AnExtrudeBuildsAFewRangesAgain) {
   EXPECT_LE(planned, SurfaceReplanner::kFacesPerRange / 2);  // the faces around it, not their ranges
   EXPECT_GT(planned, 0);
   test::expect_same_tables(replanner.tables(), build_surface_plans(after, options, {}), "extruded");
+}
+
+// The faces before those an extrude reaches keep their plans in the whole tables as they were, the
+// rows they read included: the four vertices it adds move no row's point index, nor do those its undo
+// takes away (the rows start at row_start_for(n_base), which a few vertices more or less leave).
+TEST(IncrementalPlans, AnExtrudeLeavesTheTablesBeforeItsFacesAsTheyWere) {
+  const CovarianceMesh sphere = make_sample("sphere", 6000);
+  SurfaceReplanner replanner(sphere, PlanOptions{});
+  const SurfaceTables before = replanner.tables();
+  const int f = int(sphere.n_faces() / 2);
+  const Modelled extruded = extrude_faces(sphere, {f}, 0.01);
+  ASSERT_EQ(row_start_for(int(sphere.n_vertices())), row_start_for(int(extruded.mesh.n_vertices())));
+  // The first face that shares a vertex with a face around the extruded one: no plan before it reads
+  // a vertex the extrude changed.
+  const MeshConnectivity& c = sphere.connectivity();
+  int first_reached = f;
+  for (const int v : sphere.face(size_t(f)))
+    for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i)
+      for (const int w : sphere.face(size_t(c.vertex_faces[size_t(i)])))
+        for (int j = c.vertex_face_offsets[size_t(w)]; j < c.vertex_face_offsets[size_t(w) + 1]; ++j)
+          first_reached = std::min(first_reached, c.vertex_faces[size_t(j)]);
+  ASSERT_GT(first_reached, 0);
+  const auto same_prefix = [&](const SurfaceTables& a, const SurfaceTables& b, const std::string& where) {
+    EXPECT_EQ(a.stencils.first_row(), b.stencils.first_row()) << where;
+    const size_t nodes = size_t(before.plans.patch_roots[size_t(first_reached)]);
+    ASSERT_GE(a.plans.nodes.size(), nodes) << where;
+    ASSERT_GE(b.plans.nodes.size(), nodes) << where;
+    EXPECT_TRUE(std::equal(a.plans.nodes.begin(), a.plans.nodes.begin() + long(nodes), b.plans.nodes.begin()))
+        << where;
+    const size_t corners = 4 * size_t(first_reached);
+    EXPECT_TRUE(std::equal(a.plans.patch_corner_points.begin(), a.plans.patch_corner_points.begin() + long(corners),
+                           b.plans.patch_corner_points.begin()))
+        << where;
+  };
+  replanner.set_topology(extruded.mesh, extruded.vertex_origin);
+  same_prefix(before, replanner.tables(), "extruded");
+  test::expect_same_tables(replanner.tables(), build_surface_plans(extruded.mesh.topology(), PlanOptions{}, {}),
+                           "extruded");
+  replanner.set_topology(sphere, inverse_origin(extruded.vertex_origin, sphere.n_vertices()));
+  same_prefix(before, replanner.tables(), "undone");
+  test::expect_same_tables(replanner.tables(), before, "undone");
+}
+
+// Vertices added past a multiple of kRowStartStep move the rows to the next one: the kept tables follow,
+// as a full re-plan numbers them, and so does the undo.
+TEST(IncrementalPlans, VerticesAddedPastARowStepMoveEveryRowAsAFullReplanDoes) {
+  const CovarianceMesh sphere = make_sample("sphere", 1000);
+  const int n = int(sphere.n_vertices());
+  ASSERT_LT(n, kRowStartStep);
+  std::vector<int> faces;  // faces far apart enough that each extruded one adds its four vertices
+  for (int f = 0; f < int(sphere.n_faces()) && n + 4 * int(faces.size()) <= kRowStartStep; f += 37)
+    faces.push_back(f);
+  const Modelled extruded = extrude_faces(sphere, faces, 0.01);
+  ASSERT_GT(int(extruded.mesh.n_vertices()), kRowStartStep);
+  SurfaceReplanner replanner(sphere, PlanOptions{});
+  const SurfaceTables before = replanner.tables();
+  EXPECT_EQ(before.stencils.first_row(), kRowStartStep);
+  replanner.set_topology(extruded.mesh, extruded.vertex_origin);
+  EXPECT_EQ(replanner.tables().stencils.first_row(), 2 * kRowStartStep);
+  test::expect_same_tables(replanner.tables(), build_surface_plans(extruded.mesh.topology(), PlanOptions{}, {}),
+                           "past the step");
+  replanner.set_topology(sphere, inverse_origin(extruded.vertex_origin, sphere.n_vertices()));
+  test::expect_same_tables(replanner.tables(), before, "undone");
 }
 
 // A loop cut around the same sphere crosses every range on its way: it builds again the faces beside
