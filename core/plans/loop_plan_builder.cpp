@@ -18,7 +18,12 @@ namespace {
 class LoopBuilder {
 public:
   LoopBuilder(const PolygonTopology& t, LoopBeta beta, const MeshConnectivity* c = nullptr)
-      : t_(t), c_(c ? *c : connectivity_of(t)), walker_(t_, c_), beta_(beta), tables_(beta), stencils_(t.n_vertices, row_start_for(t.n_vertices)) {
+      : t_(t),
+        c_(c ? *c : connectivity_of(t)),
+        walker_(t_, c_),
+        beta_(beta),
+        tables_(beta),
+        stencils_(t.n_vertices, row_start_for(t.n_vertices)) {
     plans_.shape = PatchShape::triangle;
     plans_.max_depth = 1;
   }

@@ -32,8 +32,7 @@ public:
   }
 
 private:
-  void run(int first_row, int vertex_count, int row_count, bool list_vertices, bool list_rows,
-           int group_limit) const;
+  void run(int first_row, int vertex_count, int row_count, bool list_vertices, bool list_rows, int group_limit) const;
 
   ShaderProgram dual_map_[2], stencil_[2];  // by PointPrecision
   PointPrecision precision_ = PointPrecision::single_float;

@@ -160,8 +160,7 @@ TEST(IncrementalPlans, AnExtrudeLeavesTheTablesBeforeItsFacesAsTheyWere) {
     const size_t nodes = size_t(before.plans.patch_roots[size_t(first_reached)]);
     ASSERT_GE(a.plans.nodes.size(), nodes) << where;
     ASSERT_GE(b.plans.nodes.size(), nodes) << where;
-    EXPECT_TRUE(std::equal(a.plans.nodes.begin(), a.plans.nodes.begin() + long(nodes), b.plans.nodes.begin()))
-        << where;
+    EXPECT_TRUE(std::equal(a.plans.nodes.begin(), a.plans.nodes.begin() + long(nodes), b.plans.nodes.begin())) << where;
     const size_t corners = 4 * size_t(first_reached);
     EXPECT_TRUE(std::equal(a.plans.patch_corner_points.begin(), a.plans.patch_corner_points.begin() + long(corners),
                            b.plans.patch_corner_points.begin()))
@@ -183,8 +182,7 @@ TEST(IncrementalPlans, VerticesAddedPastARowStepMoveEveryRowAsAFullReplanDoes) {
   const int n = int(sphere.n_vertices());
   ASSERT_LT(n, kRowStartStep);
   std::vector<int> faces;  // faces far apart enough that each extruded one adds its four vertices
-  for (int f = 0; f < int(sphere.n_faces()) && n + 4 * int(faces.size()) <= kRowStartStep; f += 37)
-    faces.push_back(f);
+  for (int f = 0; f < int(sphere.n_faces()) && n + 4 * int(faces.size()) <= kRowStartStep; f += 37) faces.push_back(f);
   const Modelled extruded = extrude_faces(sphere, faces, 0.01);
   ASSERT_GT(int(extruded.mesh.n_vertices()), kRowStartStep);
   SurfaceReplanner replanner(sphere, PlanOptions{});
