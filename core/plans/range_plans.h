@@ -10,10 +10,10 @@
 
 namespace gps {
 
-/// A range's tables with point indices and node offsets local to it: points past its stencils' n_base
-/// are rows of its own stencil table (no gap: row r is point n_base + r) (that n_base may differ from the merged
-/// tables' where base vertices past those it reads were added or removed since); an extraordinary node's table field
-/// indexes `extraordinary_tables`, shared (by pointer) by every range built from the same table cache.
+/// A range's tables with point indices and node offsets local to it: row r of its own stencil table is
+/// point n_base + r, with no gap (that n_base may differ from the merged tables' where base vertices
+/// past those it reads were added or removed since); an extraordinary node's table field indexes
+/// `extraordinary_tables`, shared (by pointer) by every range built from the same table cache.
 struct RangePlans {
   SurfaceTables tables;
   std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables;
@@ -21,9 +21,9 @@ struct RangePlans {
 };
 
 /// The tables of all ranges in order, as a single range over all faces gives them, their rows from
-/// row_start_for(n_base) on (core/plans/patch_plans.h): a row is added where it is first used, extraordinary tables are
-/// laid out in the order of first use. `release` frees each range's tables once merged (the whole build's peak memory);
-/// a replanner keeps them.
+/// row_start_for(n_base) on (core/plans/patch_plans.h): a row is added where it is first used,
+/// extraordinary tables are laid out in the order of first use. `release` frees each range's tables
+/// once merged (the whole build's peak memory); a replanner keeps them.
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release);
 
 /// Patches [first, last) of `range` as the range their faces alone build: their nodes, corner points and
