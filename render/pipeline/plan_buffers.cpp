@@ -94,10 +94,15 @@ void PlanBuffers::upload_as(int binding, const std::vector<Source>& data, const 
 // holds them and is not twice as large: tables of about the same size again, as after a modelling
 // operation, are written into it instead of a store the driver allocates again. False where new
 // storage was allocated.
+bool PlanBuffers::keeps_storage(int binding, size_t bytes) const {
+  const size_t capacity = capacities_[binding];
+  return bytes <= capacity && capacity / 2 <= bytes;
+}
+
 bool PlanBuffers::reserve(int binding, size_t bytes) {
   sizes_[binding] = bytes;
   size_t& capacity = capacities_[binding];
-  if (bytes <= capacity && capacity / 2 <= bytes) return true;
+  if (keeps_storage(binding, bytes)) return true;
   // Room for the tables an operation adds to, within what a shader may see of a buffer bound whole.
   capacity = std::max(bytes, std::min(bytes + bytes / 16, max_block_));
   glNamedBufferData(buffers_[binding], GLsizeiptr(capacity), nullptr, GL_DYNAMIC_DRAW);
@@ -161,29 +166,42 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<K
   upload_as<int32_t>(kBindingPatchEdges, p.patch_edges, hp ? &hp->patch_edges : nullptr);
   upload_as<int32_t>(kBindingPatchNeighbours, p.patch_neighbours, hp ? &hp->patch_neighbours : nullptr);
   upload_as<int32_t>(kBindingCornerOwners, p.corner_owners, hp ? &hp->corner_owners : nullptr);
-  // Every point is written by the compute pass that follows every upload of the tables, but those carried.
-  const size_t point_bytes = kVec4PerPoint * 4 * real_bytes(precision_);
+  // Every point is written by the compute pass that follows every upload of the tables, but those carried:
+  // where each stays where it was, in the storage that holds it (an operation that only adds vertices,
+  // or its undo), else copied into the spare storage.
+  const size_t point_bytes = kVec4PerPoint * 4 * real_bytes(precision_), points_size = size_t(s.n_points()) * point_bytes;
   if (carried) {
-    const GLuint points = swap_in_spare(kBindingPoints, size_t(s.n_points()) * point_bytes);
-    copy_runs(points, buffers_[kBindingPoints], carried_runs(size_t(s.n_base), carried->origin, carried->changed),
-              point_bytes);
+    const std::vector<CopyRun> runs = carried_runs(size_t(s.n_base), carried->origin, carried->changed);
+    const bool in_place = keeps_storage(kBindingPoints, points_size) &&
+                          std::all_of(runs.begin(), runs.end(), [](const CopyRun& run) { return run.from == run.to; });
+    if (in_place) {
+      reserve(kBindingPoints, points_size);
+    } else {
+      const GLuint before = swap_in_spare(kBindingPoints, points_size);
+      copy_runs(before, buffers_[kBindingPoints], runs, point_bytes);
+    }
   } else {
-    reserve(kBindingPoints, size_t(s.n_points()) * point_bytes);
+    reserve(kBindingPoints, points_size);
   }
   // The points between the base vertices and the first row are read by nothing; zero, as the CPU's.
   if (s.row_gap > 0)
     glClearNamedBufferSubData(buffers_[kBindingPoints], GL_R32UI, GLintptr(size_t(s.n_base) * point_bytes),
                               GLsizeiptr(size_t(s.row_gap) * point_bytes), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
   // Not cleared: the corner pass writes every slot it is run over, and that is every slot but those
-  // of the kept runs, copied below from the buffers before (zero where a patch does not evaluate it).
-  GLuint limits = 0, midpoints = 0;
-  if (kept.empty()) {
-    reserve(kBindingCornerLimits, corner_limit_floats(p) * sizeof(float));
-    reserve(kBindingCurveMidpoints, curve_midpoint_floats(p) * sizeof(float));
-  } else {
-    limits = swap_in_spare(kBindingCornerLimits, corner_limit_floats(p) * sizeof(float));
-    midpoints = swap_in_spare(kBindingCurveMidpoints, curve_midpoint_floats(p) * sizeof(float));
+  // of the kept runs, copied below from the buffers before (zero where a patch does not evaluate it),
+  // or left where they are where every kept patch keeps its number and the storage stays.
+  const size_t limits_size = corner_limit_floats(p) * sizeof(float),
+               midpoints_size = curve_midpoint_floats(p) * sizeof(float);
+  const bool kept_in_place =
+      keeps_storage(kBindingCornerLimits, limits_size) && keeps_storage(kBindingCurveMidpoints, midpoints_size) &&
+      std::all_of(kept.begin(), kept.end(), [](const KeptPatches& run) { return run.first == run.old_first; });
+  if (kept.empty() || kept_in_place) {
+    reserve(kBindingCornerLimits, limits_size);
+    reserve(kBindingCurveMidpoints, midpoints_size);
+    return;
   }
+  const GLuint limits = swap_in_spare(kBindingCornerLimits, limits_size),
+               midpoints = swap_in_spare(kBindingCurveMidpoints, midpoints_size);
   const size_t limit_bytes = size_t(p.corners()) * 8 * sizeof(float),
                midpoint_bytes = size_t(p.corners()) * 4 * sizeof(float);
   for (const KeptPatches& run : kept) {

@@ -89,6 +89,8 @@ private:
   static size_t curve_midpoint_floats(const PatchPlans& plans);  // one vec4 per patch corner
   /// False where it allocated new storage (the contents before are gone).
   bool reserve(int binding, size_t bytes);
+  /// Whether reserve(binding, bytes) keeps the storage there, and so its contents.
+  bool keeps_storage(int binding, size_t bytes) const;
   unsigned swap_in_spare(int binding, size_t bytes);
   template <class Real>
   void upload_gaussians_as(const FramedGaussians& gaussians);
