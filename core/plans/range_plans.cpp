@@ -7,7 +7,8 @@
 
 namespace gps {
 
-SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release) {
+SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release, const SurfaceTables* previous,
+                           size_t same_leading) {
   StencilTableBuilder stencils(n_base, row_start_for(n_base));
   PatchPlans plans;
   if (!ranges.empty()) plans.shape = ranges.front().tables.plans.shape;
@@ -52,8 +53,25 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
   plans.patch_roots.resize(patch_base.back());
   plans.patch_corner_points.resize(corners * patch_base.back());
   if (plans.shape == PatchShape::quad) plans.patch_edges.resize(kPatchEdgeStride * patch_base.back());
+  // The leading ranges merged before: their records are where they were, with the same rows and tables.
+  same_leading = std::min(same_leading, ranges.size());
+  const size_t edge_stride = plans.shape == PatchShape::quad ? kPatchEdgeStride : 0;
+  const auto copy_prefix = [](const std::vector<int32_t>& from, std::vector<int32_t>& to, size_t count) {
+    std::copy(from.begin(), from.begin() + long(count), to.begin());
+  };
+  if (!previous || previous->stencils.first_row() != row_start_for(n_base) || previous->plans.shape != plans.shape ||
+      previous->plans.nodes.size() < node_base[same_leading] ||
+      previous->plans.patch_roots.size() < patch_base[same_leading])
+    same_leading = 0;
+  if (same_leading > 0) {
+    const PatchPlans& q = previous->plans;
+    copy_prefix(q.nodes, plans.nodes, node_base[same_leading]);
+    copy_prefix(q.patch_roots, plans.patch_roots, patch_base[same_leading]);
+    copy_prefix(q.patch_corner_points, plans.patch_corner_points, corners * patch_base[same_leading]);
+    copy_prefix(q.patch_edges, plans.patch_edges, edge_stride * patch_base[same_leading]);
+  }
 #pragma omp parallel for schedule(dynamic)
-  for (size_t r = 0; r < ranges.size(); ++r) {
+  for (size_t r = same_leading; r < ranges.size(); ++r) {
     const PatchPlans& p = ranges[r].tables.plans;
     // A range's own points follow its own base (a kept range's may be older than the mesh's: its base
     // vertices kept their indices, core/plans/surface_replanner.cpp).
@@ -90,6 +108,8 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
     }
     if (release) ranges[r] = {};
   }
+  if (release)
+    for (size_t r = 0; r < same_leading; ++r) ranges[r] = {};
   return {std::move(plans), stencils.finish()};
 }
 

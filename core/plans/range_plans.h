@@ -23,8 +23,11 @@ struct RangePlans {
 /// The tables of all ranges in order, as a single range over all faces gives them, their rows from
 /// row_start_for(n_base) on (core/plans/patch_plans.h): a row is added where it is first used,
 /// extraordinary tables are laid out in the order of first use. `release` frees each range's tables
-/// once merged (the whole build's peak memory); a replanner keeps them.
-SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release);
+/// once merged (the whole build's peak memory); a replanner keeps them. `previous`: tables merged
+/// before over the same n_base step from ranges whose first `same_leading` were these, unchanged; their
+/// part of the plans, which comes out the same, is copied from there.
+SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release,
+                           const SurfaceTables* previous = nullptr, size_t same_leading = 0);
 
 /// Patches [first, last) of `range` as the range their faces alone build: their nodes, corner points and
 /// edges cut out, their rows and extraordinary tables numbered in the order the patches first read them

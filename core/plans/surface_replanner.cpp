@@ -155,7 +155,8 @@ void SurfaceReplanner::build_all(const Sharpness& sharpness) {
 }
 
 void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sharpness,
-                             const std::vector<int>& old_patch_first, const std::vector<int>& old_face_patch) {
+                             const std::vector<int>& old_patch_first, const std::vector<int>& old_face_patch,
+                             size_t same_leading) {
   const PolygonTopology& t = base_.topology;
   change_ = {change_.to, next_tables_id(), {}};
   std::vector<KeptPatches>& kept = change_.kept;
@@ -191,7 +192,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   const std::vector<int32_t>& old_neighbours = old->plans.patch_neighbours;
   const int old_patches = old->plans.n_patches();
   const PatchShape old_shape = old->plans.shape;
-  SurfaceTables merged = merge_ranges(ranges_, t.n_vertices, false);
+  SurfaceTables merged = merge_ranges(ranges_, t.n_vertices, false, old.get(), same_leading);
   patch_first_.assign(ranges_.size(), 0);
   // The runs kept, in order in both numberings (a run that would go back in the old one is left out).
   const auto keep = [&](int first, int old_first, int count) {
@@ -410,10 +411,12 @@ int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std:
   std::vector<RangePlans> ranges;
   std::vector<int> firsts, fresh, old_patch_first;
   int planned = 0;
+  size_t same_leading = 0;  // the first ranges: old ranges in their place, whole and not renumbered
   for (int g = 0; g < n_faces;) {
     const int start = g;
     if (const int i = kept_at[size_t(g)]; i >= 0) {
       KeptRun& run = runs[size_t(i)];
+      if (same_base && run.whole && run.range == int(ranges.size()) && same_leading == ranges.size()) ++same_leading;
       old_patch_first.push_back(patch_first_[size_t(run.range)] + run.first_patch);
       ranges.push_back(std::move(run.whole ? ranges_[size_t(run.range)] : run.cut));
       g += run.n_faces;
@@ -437,7 +440,7 @@ int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std:
       old_face_patch[size_t(g)] = old_first_patch[size_t(f)];
   ranges_ = std::move(ranges);
   range_first_ = std::move(firsts);
-  build(fresh, sharpness, old_patch_first, old_face_patch);
+  build(fresh, sharpness, old_patch_first, old_face_patch, same_leading);
   return planned;
 }
 

@@ -109,8 +109,9 @@ private:
   // `old_face_patch`: per face, where the patches of the face it was started before, where its plan is
   // the same (its piece unchanged; −1 otherwise): a range built again keeps those patches' place in
   // the change (PlanChange::kept). Empty: none.
+  // `same_leading`: the first ranges are the tables_' first, unchanged (merge_ranges copies their part).
   void build(const std::vector<int>& which, const Sharpness& sharpness, const std::vector<int>& old_patch_first = {},
-             const std::vector<int>& old_face_patch = {});
+             const std::vector<int>& old_face_patch = {}, size_t same_leading = 0);
   // Cuts the faces into even ranges and builds them all.
   void build_all(const Sharpness& sharpness);
   // The fewest faces a run cut out of a range that a change reaches keeps (fewer are built again with
