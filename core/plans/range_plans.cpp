@@ -8,9 +8,16 @@
 namespace gps {
 
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release, const SurfaceTables* previous,
-                           size_t same_leading) {
+                           size_t same_leading, SurfaceTables* storage) {
   StencilTableBuilder stencils(n_base, row_start_for(n_base));
   PatchPlans plans;
+  if (storage) {  // every element below is written: what the storage held is never read
+    plans.nodes = std::move(storage->plans.nodes);
+    plans.patch_roots = std::move(storage->plans.patch_roots);
+    plans.patch_corner_points = std::move(storage->plans.patch_corner_points);
+    plans.patch_edges = std::move(storage->plans.patch_edges);
+    plans.patch_edges.clear();  // triangles have none; quads resize them below
+  }
   if (!ranges.empty()) plans.shape = ranges.front().tables.plans.shape;
   const size_t corners = size_t(plans.corners()), leaf_points = plans.shape == PatchShape::quad ? 16 : 12;
   std::vector<std::vector<int>> extraordinary_offset(ranges.size());  // per range: table index -> offset in the whole

@@ -25,9 +25,11 @@ struct RangePlans {
 /// extraordinary tables are laid out in the order of first use. `release` frees each range's tables
 /// once merged (the whole build's peak memory); a replanner keeps them. `previous`: tables merged
 /// before over the same n_base step from ranges whose first `same_leading` were these, unchanged; their
-/// part of the plans, which comes out the same, is copied from there.
+/// part of the plans, which comes out the same, is copied from there. `storage`: tables no longer used,
+/// whose plan arrays the merge writes into (their storage reused: none is allocated and filled first).
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release,
-                           const SurfaceTables* previous = nullptr, size_t same_leading = 0);
+                           const SurfaceTables* previous = nullptr, size_t same_leading = 0,
+                           SurfaceTables* storage = nullptr);
 
 /// Patches [first, last) of `range` as the range their faces alone build: their nodes, corner points and
 /// edges cut out, their rows and extraordinary tables numbered in the order the patches first read them

@@ -167,7 +167,8 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     loop_tables_.reset();
     SurfaceTables built = build_loop_plans(t, options_.loop_beta);
     add_patch_adjacency(built.plans, t, sharpness, &base_.connectivity);
-    tables_ = std::make_shared<const SurfaceTables>(std::move(built));
+    tables_ = std::make_shared<SurfaceTables>(std::move(built));
+    retired_.reset();
     return;
   }
   if (scheme_ == Scheme::loop && !loop_tables_) loop_tables_ = std::make_unique<LoopCreaseTables>(options_.loop_beta);
@@ -192,7 +193,13 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   const std::vector<int32_t>& old_neighbours = old->plans.patch_neighbours;
   const int old_patches = old->plans.n_patches();
   const PatchShape old_shape = old->plans.shape;
-  SurfaceTables merged = merge_ranges(ranges_, t.n_vertices, false, old.get(), same_leading);
+  // The tables before the previous ones, once nothing else holds them, lend their storage.
+  SurfaceTables storage;
+  if (retired_ && retired_.use_count() == 1) storage = std::move(*retired_);
+  retired_.reset();
+  SurfaceTables merged = merge_ranges(ranges_, t.n_vertices, false, old.get(), same_leading, &storage);
+  merged.plans.patch_neighbours = std::move(storage.plans.patch_neighbours);  // assigned whole below
+  merged.plans.corner_owners = std::move(storage.plans.corner_owners);
   patch_first_.assign(ranges_.size(), 0);
   // The runs kept, in order in both numberings (a run that would go back in the old one is left out).
   const auto keep = [&](int first, int old_first, int count) {
@@ -229,7 +236,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   if (kept.empty() || old_shape != merged.plans.shape ||
       !update_patch_adjacency(merged.plans, sharpness, old_neighbours, new_of_old))
     add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity);
-  tables_ = std::make_shared<const SurfaceTables>(std::move(merged));
+  retired_ = std::exchange(tables_, std::make_shared<SurfaceTables>(std::move(merged)));
 }
 
 std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {

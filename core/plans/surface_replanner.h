@@ -130,7 +130,10 @@ private:
   std::vector<int> range_first_;    // range r holds faces [range_first_[r], range_first_[r + 1])
   std::vector<int> patch_first_;    // range r's first patch in tables_
   PlanChange change_;
-  std::shared_ptr<const SurfaceTables> tables_ = std::make_shared<const SurfaceTables>();
+  // Never changed once made (shared_tables); not const, so that as retired_ their storage can be reused.
+  std::shared_ptr<SurfaceTables> tables_ = std::make_shared<SurfaceTables>();
+  std::shared_ptr<SurfaceTables> retired_;  // the tables before tables_, whose storage the next merge reuses
+                                            // once nothing else holds them
 };
 
 }  // namespace gps
