@@ -200,8 +200,13 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
       if (p >= n_patches || old_of_new[size_t(p)] >= 0) return false;
       old_of_new[size_t(p)] = int(q);
     }
-  plans.patch_neighbours.assign(size_t(4 * n * n_patches), -1);
-  plans.corner_owners.assign(size_t(2 * n * n_patches), -1);
+  // Every record is written below (a boundary until linked again) and every owner by add_corner_owners:
+  // storage the arrays already hold is not filled first.
+  plans.patch_neighbours.resize(size_t(4 * n * n_patches));
+  plans.corner_owners.resize(size_t(2 * n * n_patches));
+  const auto unlink = [&](int p, int k) {
+    std::fill_n(&plans.patch_neighbours[size_t(4 * (n * p + k))], 4, int32_t(-1));
+  };
   // The patch edges linked again: every edge of a new patch, and a kept patch's edge beside a patch
   // that is gone, or on the boundary where a new patch now has the edge. The other uses of such an edge
   // are among these: a face's patches are kept or built again together, and an edge of the mesh has
@@ -225,13 +230,17 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
 #pragma omp for schedule(static) nowait
     for (int p = 0; p < n_patches; ++p) {
       const int q = old_of_new[size_t(p)];
-      if (q < 0) continue;
+      if (q < 0) {
+        for (int k = 0; k < n; ++k) unlink(p, k);
+        continue;
+      }
       for (int k = 0; k < n; ++k) {
         const int32_t* r = &old_neighbours[size_t(4 * (n * q + k))];
         bool kept = r[0] >= 0 || !new_keys.count(edge_key(edge_use(plans, p, k)));
         for (int j = 0; j < 4 && kept; j += 2)  // (a sharp flag of creases that are gone: linked again)
           kept = r[j] < 0 || (new_of_old[size_t(r[j])] >= 0 && !(r[j + 1] & kNeighbourSharpEdge));
         if (!kept) {
+          unlink(p, k);
           if (const EdgeUse e = edge_use(plans, p, k); e.from != e.to) own.push_back(e);
           continue;
         }
