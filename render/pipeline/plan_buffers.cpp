@@ -169,7 +169,8 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<K
   // Every point is written by the compute pass that follows every upload of the tables, but those carried:
   // where each stays where it was, in the storage that holds it (an operation that only adds vertices,
   // or its undo), else copied into the spare storage.
-  const size_t point_bytes = kVec4PerPoint * 4 * real_bytes(precision_), points_size = size_t(s.n_points()) * point_bytes;
+  const size_t point_bytes = kVec4PerPoint * 4 * real_bytes(precision_),
+               points_size = size_t(s.n_points()) * point_bytes;
   if (carried) {
     const std::vector<CopyRun> runs = carried_runs(size_t(s.n_base), carried->origin, carried->changed);
     const bool in_place = keeps_storage(kBindingPoints, points_size) &&
