@@ -90,15 +90,15 @@ void PlanBuffers::upload_as(int binding, const std::vector<Source>& data, const 
   }
 }
 
-// Storage of at least `bytes` at `binding`, its contents undefined. The storage there is kept where it
-// holds them and is not twice as large: tables of about the same size again, as after a modelling
-// operation, are written into it instead of a store the driver allocates again. False where new
-// storage was allocated.
 bool PlanBuffers::keeps_storage(int binding, size_t bytes) const {
   const size_t capacity = capacities_[binding];
   return bytes <= capacity && capacity / 2 <= bytes;
 }
 
+// Storage of at least `bytes` at `binding`, its contents undefined. The storage there is kept where it
+// holds them and is not twice as large: tables of about the same size again, as after a modelling
+// operation, are written into it instead of a store the driver allocates again. False where new
+// storage was allocated.
 bool PlanBuffers::reserve(int binding, size_t bytes) {
   sizes_[binding] = bytes;
   size_t& capacity = capacities_[binding];

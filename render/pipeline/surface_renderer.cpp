@@ -64,7 +64,6 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   const std::shared_ptr<const SurfaceTables> before = std::exchange(tables_, std::move(surface_tables));
   dependents_ = stencil_dependents(tables_->stencils);
   readers_.reset();
-  n_base_ = int(mesh.n_vertices());
   half_size_patches_ = 0;
   for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
   // Kept tables keep the points of the base vertices that did not change, in this frame and precision.
@@ -131,7 +130,7 @@ void SurfaceRenderer::follow_edit(const std::vector<int>& changed) {
     buffers_.upload_tables(tables());
   }
   // Most of the mesh (select all, drag), or a new precision: whole buffers, one call each.
-  if (new_precision || update_everything(changed.size(), size_t(n_base_))) {
+  if (new_precision || update_everything(changed.size(), framed_.n_vertices())) {
     buffers_.upload_gaussians(framed_);
     ellipsoids_current_ = false;
     cage_.upload_positions(framed_);

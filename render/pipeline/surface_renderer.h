@@ -205,7 +205,6 @@ private:
   StoredPatchLevels stored_levels_;           // the levels of the cache's adaptive capture
   long long points_generation_ = 0;           // bumped by every compute pass: the cache's key
   GlTexture matcap_ = GlTexture::none();      // made by set_matcap()
-  int n_base_ = 0;
   long long tables_id_ = 0;
   int last_corner_slots_ = 0;        // the replanner's id of tables_ (PlanChange), 0 where none gave one
   long long half_size_patches_ = 0;  // a split face's patches (quads): the cache's buffer estimate
