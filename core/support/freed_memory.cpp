@@ -13,6 +13,12 @@ namespace gps {
 
 namespace {
 std::atomic<int> kept_heap_top{0};  // the largest keep_freed_heap_top so far (0: glibc's own threshold)
+std::atomic<int> heap_top_pad{0};   // the largest pad_heap_top so far (0: glibc's own pad)
+// glibc serves a thread other than the main one from heaps of this size (64-bit HEAP_MAX_SIZE), and
+// unmaps a heap as soon as it is empty, whatever the trim threshold, unless the top pad would keep at
+// least this much (malloc/arena.c, heap_trim): every call of a worker thread would otherwise fault its
+// tens of MB in again.
+constexpr int kThreadHeapBytes = 64 << 20;
 }  // namespace
 
 void keep_freed_memory() {
@@ -20,6 +26,7 @@ void keep_freed_memory() {
   mallopt(M_MMAP_MAX, 0);  // no block from its own mapping (glibc still maps one if the heap cannot grow)
 #endif
   keep_freed_heap_top(INT_MAX);  // the heap's free top goes back to the system past 2 GiB only
+  pad_heap_top(kThreadHeapBytes);
 }
 
 void keep_freed_heap_top(int bytes) {
@@ -27,6 +34,14 @@ void keep_freed_heap_top(int bytes) {
   kept_heap_top = bytes;
 #if defined(__GLIBC__)
   mallopt(M_TRIM_THRESHOLD, bytes);
+#endif
+}
+
+void pad_heap_top(int bytes) {
+  if (heap_top_pad.load() >= bytes) return;
+  heap_top_pad = bytes;
+#if defined(__GLIBC__)
+  mallopt(M_TOP_PAD, bytes);
 #endif
 }
 

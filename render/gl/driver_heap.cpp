@@ -1,7 +1,5 @@
 #include "render/gl/driver_heap.h"
 
-#include <malloc.h>
-
 #include <mutex>
 
 #include "core/support/freed_memory.h"
@@ -13,7 +11,7 @@ void retain_freed_heap() {
   std::call_once(once, [] {
     // At least 64 MiB free at the heap's top stays mapped; each growth asks for 16 MiB more than needed.
     keep_freed_heap_top(64 << 20);
-    mallopt(M_TOP_PAD, 16 << 20);
+    pad_heap_top(16 << 20);
   });
 }
 

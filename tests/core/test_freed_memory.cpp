@@ -5,6 +5,8 @@
 #include <climits>
 #include <cstdlib>
 #include <cstring>
+#include <thread>
+#include <vector>
 
 #include "core/support/freed_memory.h"
 #include "tests/support/sanitized_build.h"
@@ -51,6 +53,37 @@ TEST(FreedMemory, ALaterSmallerKeptTopKeepsTheLarger) {
   std::memset(g_block, 1, kHuge);
   std::free(g_block);
   EXPECT_GE(mallinfo2().arena, kHuge);
+}
+
+// The heap bytes of every arena while a thread other than the main one holds `blocks` blocks of 40 MiB,
+// and after it freed them. Together they need more than one of the thread's 64 MiB heaps.
+std::pair<size_t, size_t> a_threads_heaps(int blocks) {
+  std::pair<size_t, size_t> bytes;
+  std::thread([&] {
+    constexpr size_t kBlock = size_t(40) << 20;
+    std::vector<char*> held;
+    for (int b = 0; b < blocks; ++b) {
+      held.push_back(static_cast<char*>(std::malloc(kBlock)));
+      std::memset(held.back(), 1, kBlock);
+    }
+    bytes.first = mallinfo2().arena;
+    for (char* block : held) std::free(block);
+    bytes.second = mallinfo2().arena;
+  }).join();
+  return bytes;
+}
+
+// glibc unmaps a thread's heap once it is empty, whatever the trim threshold, unless the top pad
+// covers a heap: keep_freed_memory keeps them, and a GL context's smaller pad after it does not undo that.
+TEST(FreedMemory, AThreadsFreedHeapsStayInTheProcess) {
+  mallopt(M_MMAP_MAX, 0);
+  mallopt(M_TRIM_THRESHOLD, INT_MAX);
+  const auto [held_before, freed_before] = a_threads_heaps(3);
+  EXPECT_LT(freed_before, held_before);  // glibc's default pad: a heap went back to the system
+  keep_freed_memory();
+  pad_heap_top(16 << 20);
+  const auto [held, freed] = a_threads_heaps(3);
+  EXPECT_EQ(freed, held);
 }
 
 // The tunable glibc reads at a program's start, for the program run next.

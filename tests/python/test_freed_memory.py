@@ -4,6 +4,7 @@ that the blocks one call frees serve the next instead of being mapped and zeroed
 import ctypes
 import ctypes.util
 import platform
+import threading
 
 import pytest
 
@@ -39,3 +40,27 @@ def test_a_large_block_comes_from_the_heap_and_stays_there_when_freed():
     assert libc.mallinfo2().hblkhd - mapped_before < size, "the block was mapped on its own"
     libc.free(block)
     assert libc.mallinfo2().fordblks >= size, "the freed block went back to the system"
+
+
+def test_a_worker_threads_freed_heaps_stay_in_the_process():
+    """A call runs on a worker thread, whose blocks glibc serves from heaps of 64 MiB it unmaps once
+    empty unless told otherwise: the next call would fault all of its memory in again."""
+    libc = glibc()
+    libc.mallinfo2.restype = MallInfo2
+    size = 40 << 20
+    heap = {}
+
+    def work():
+        blocks = [libc.malloc(size) for _ in range(3)]  # more than one of the thread's heaps
+        for block in blocks:
+            assert block
+            ctypes.memset(block, 1, size)
+        heap["held"] = libc.mallinfo2().arena
+        for block in blocks:
+            libc.free(block)
+        heap["freed"] = libc.mallinfo2().arena
+
+    worker = threading.Thread(target=work)
+    worker.start()
+    worker.join()
+    assert heap["freed"] == heap["held"], "a freed heap of the thread went back to the system"
