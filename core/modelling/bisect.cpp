@@ -112,10 +112,11 @@ Modelled bisect(const CovarianceMesh& mesh, const Vec3& point, const Vec3& norma
                     : "the plane crosses no face of the mesh");
   std::sort(on_cut.begin(), on_cut.end());
   on_cut.erase(std::unique(on_cut.begin(), on_cut.end()), on_cut.end());
-  Modelled out = modelled(mesh, a, on_cut);
+  const size_t faces_added = a.faces.size() - faces_before;
+  Modelled out = modelled(mesh, std::move(a), on_cut);
   out.summary = "bisected " + count_of(size_t(split_faces), "face", "faces") + ": " +
-                count_of(cut_vertex.size(), "vertex", "vertices") + ", " +
-                count_of(a.faces.size() - faces_before, "face", "faces") + " added";
+                count_of(cut_vertex.size(), "vertex", "vertices") + ", " + count_of(faces_added, "face", "faces") +
+                " added";
   return out;
 }
 

@@ -174,7 +174,7 @@ Modelled bridge_runs(const CovarianceMesh& mesh, MeshArrays a, const BoundaryRun
       n == m ? count_of(n, "vertex", "vertices")
              : std::to_string(first.vertices.size()) + " and " + count_of(second.vertices.size(), "vertex", "vertices");
   const size_t added = a.faces.size() - first_new;
-  return modelled(mesh, a, selection,
+  return modelled(mesh, std::move(a), selection,
                   done_before + "bridged two " + std::string(band.closed ? "loops" : "chains") + " of " + lengths +
                       ": " + count_of(added, "face", "faces") + " added" +
                       (n == m ? "" : " (" + count_of(n - m, "triangle", "triangles") + " spreading the difference)"));

@@ -47,7 +47,7 @@ Modelled split_edge(const CovarianceMesh& mesh, int a, int b, double t) {
       c.insert(c.begin() + k + 1, m);
     }
   }
-  Modelled out = modelled(mesh, arrays, {m});
+  Modelled out = modelled(mesh, std::move(arrays), {m});
   out.summary = "split " + edge_name(a, b) + ": 1 vertex, " + std::to_string(added) +
                 (added == 1 ? " face added" : " faces added");
   return out;
@@ -75,7 +75,7 @@ Modelled flip_edge(const CovarianceMesh& mesh, int a, int b) {
     throw Error("flipping " + edge_name(a, b) + " would duplicate " + edge_name(std::min(c, d), std::max(c, d)));
   arrays.faces[size_t(f)] = {c, a, d};
   arrays.faces[size_t(g)] = {d, b, c};
-  Modelled out = modelled(mesh, arrays, {std::min(c, d), std::max(c, d)});
+  Modelled out = modelled(mesh, std::move(arrays), {std::min(c, d), std::max(c, d)});
   out.summary = "flipped " + edge_name(a, b) + " to " + edge_name(std::min(c, d), std::max(c, d));
   return out;
 }

@@ -84,7 +84,7 @@ Modelled fill(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
     throw Error("the vertices lie in a line: the face would have no area");
   a.faces.push_back(face);
   return modelled(
-      mesh, a, sorted,
+      mesh, std::move(a), sorted,
       "filled a face of " + std::to_string(n) + " vertices" + (reversed ? " (reversed to fit its neighbours)" : ""));
 }
 

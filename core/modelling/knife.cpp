@@ -390,11 +390,11 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
 
   std::sort(on_cut.begin(), on_cut.end());
   on_cut.erase(std::unique(on_cut.begin(), on_cut.end()), on_cut.end());
-  Modelled out = modelled(mesh, a, on_cut);
+  const std::string added = count_of(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
+                            count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
+  Modelled out = modelled(mesh, std::move(a), on_cut);
   out.summary = "cut " + count_of(split_faces, "face", "faces") + " along " +
-                count_of(points.size(), "point", "points") + ": " +
-                count_of(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
-                count_of(size_t(a.n_faces() - n_faces), "face", "faces") + " added";
+                count_of(points.size(), "point", "points") + ": " + added;
   return out;
 }
 

@@ -179,8 +179,8 @@ Modelled merge_vertices(const CovarianceMesh& mesh, const std::vector<int>& vert
   std::vector<int> target(size_t(a.n_vertices()));
   std::iota(target.begin(), target.end(), 0);
   for (int v : group) target[size_t(v)] = group.front();
-  const MergeResult r = merge_into(std::move(a), target, {{group.front(), g}});
-  Modelled out = modelled(mesh, r.arrays, {r.new_index[size_t(group.front())]});
+  MergeResult r = merge_into(std::move(a), target, {{group.front(), g}});
+  Modelled out = modelled(mesh, std::move(r.arrays), {r.new_index[size_t(group.front())]});
   out.summary = "merged " + std::to_string(group.size()) + " vertices into vertex " +
                 std::to_string(out.selection.front()) + faces_removed_text(r.faces_removed);
   return out;
@@ -235,8 +235,8 @@ Modelled weld_by_distance(const CovarianceMesh& mesh, const std::vector<int>& ve
     gaussians[root] = group_center(a, members);
     removed += int(members.size()) - 1;
   }
-  const MergeResult r = merge_into(std::move(a), target, gaussians);
-  Modelled out = modelled(mesh, r.arrays, {});
+  MergeResult r = merge_into(std::move(a), target, gaussians);
+  Modelled out = modelled(mesh, std::move(r.arrays), {});
   for (const auto& [root, members] : clusters) out.selection.push_back(r.new_index[size_t(root)]);
   std::sort(out.selection.begin(), out.selection.end());
   out.summary = "welded " + std::to_string(clusters.size()) + (clusters.size() == 1 ? " cluster" : " clusters") + ": " +

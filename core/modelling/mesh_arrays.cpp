@@ -35,7 +35,7 @@ constexpr size_t kSpareFaces = size_t(1) << 21;
 }  // namespace
 
 MeshArrays::~MeshArrays() {
-  if (faces.size() > spare_faces.size() && faces.size() <= kSpareFaces) spare_faces = std::move(faces);
+  if (faces.size() >= spare_faces.size() && faces.size() <= kSpareFaces) spare_faces = std::move(faces);
 }
 
 int MeshArrays::add_vertex(const Gaussian& g) {

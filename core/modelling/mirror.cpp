@@ -131,7 +131,7 @@ Modelled mirror(const CovarianceMesh& mesh, int axis, const Vec3& center, bool m
       a.sharpness.set_corner(copy_of[size_t(v)], corner, a.n_vertices());
 
   const size_t n_merged = size_t(std::count(merged.begin(), merged.end(), 1));
-  Modelled out = modelled(mesh, a, copies);
+  Modelled out = modelled(mesh, std::move(a), copies);
   out.summary = "mirrored " + count_of(size_t(n_vertices), "vertex", "vertices") + " and " +
                 count_of(size_t(n_faces), "face", "faces") + " in " + axis_name[axis] +
                 (merge ? ", " + count_of(n_merged, "vertex", "vertices") + " merged on the plane" : "");

@@ -146,7 +146,7 @@ Modelled edge_slide(const CovarianceMesh& mesh, const std::vector<std::array<int
     }
   }
   std::sort(moved.begin(), moved.end());
-  Modelled out = modelled(mesh, a, moved);
+  Modelled out = modelled(mesh, std::move(a), moved);
   out.summary = "slid " + count_of(moved.size(), "vertex", "vertices") + " of " +
                 count_of(selected.size(), "edge", "edges") + " by " + short_number(factor) + (even ? " (even)" : "");
   return out;
@@ -160,7 +160,7 @@ Modelled vertex_slide(const CovarianceMesh& mesh, int vertex, int toward, double
   const Gaussian g = slid_gaussian(a, vertex, toward, factor);
   a.means[size_t(vertex)] = g.mean;
   a.covariances[size_t(vertex)] = g.covariance;
-  Modelled out = modelled(mesh, a, {vertex});
+  Modelled out = modelled(mesh, std::move(a), {vertex});
   out.summary = "slid vertex " + std::to_string(vertex) + " " + short_number(factor) + " of the way along " +
                 edge_name(vertex, toward);
   return out;

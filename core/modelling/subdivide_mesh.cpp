@@ -138,10 +138,10 @@ Modelled subdivide_faces(const CovarianceMesh& mesh, const std::vector<int>& fac
   std::sort(selection.begin(), selection.end());
   selection.erase(std::unique(selection.begin(), selection.end()), selection.end());
 
-  Modelled out = modelled(mesh, a, selection);
-  out.summary = "subdivided " + counted(chosen.size(), "face", "faces") + ": " +
-                counted(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
-                counted(appended.size(), "face", "faces") + " added";
+  const std::string added = counted(size_t(a.n_vertices() - n_vertices), "vertex", "vertices") + ", " +
+                            counted(appended.size(), "face", "faces") + " added";
+  Modelled out = modelled(mesh, std::move(a), selection);
+  out.summary = "subdivided " + counted(chosen.size(), "face", "faces") + ": " + added;
   return out;
 }
 
