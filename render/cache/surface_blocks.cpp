@@ -4,7 +4,7 @@
 
 namespace gps {
 
-int patches_per_block(int n_patches) { return std::clamp((n_patches + 32767) / 32768, 4, 256); }
+int patches_per_block(int n_patches) { return std::clamp((n_patches + 8191) / 8192, 4, 256); }
 
 void SurfaceBlocks::reset(int n_patches, int per_block) {
   n_patches = std::max(n_patches, 0);

@@ -8,11 +8,10 @@
 
 namespace gps {
 
-/// Patches per block for a surface of `n_patches`: at most some 32768 blocks, of 4 to 256 patches. Small
+/// Patches per block for a surface of `n_patches`: at most some 8192 blocks, of 4 to 256 patches. Small
 /// enough that a change spread along the face numbering (a loop cut around the mesh: hundreds of kept
 /// runs, each boundary a block that cannot follow its patches) leaves most blocks kept and captures
-/// few patches besides its own again (on llvmpipe a captured patch costs its tessellation on the
-/// calling thread); what costs per block (a query, a copy) stays small beside what costs per patch.
+/// few patches again; what costs per block (a query, a copy) stays small beside what costs per patch.
 int patches_per_block(int n_patches);
 
 class SurfaceBlocks {
