@@ -46,7 +46,6 @@ def test_a_worker_threads_freed_heaps_stay_in_the_process():
     """A call runs on a worker thread, whose blocks glibc serves from heaps of 64 MiB it unmaps once
     empty unless told otherwise: the next call would fault all of its memory in again."""
     libc = glibc()
-    libc.mallinfo2.restype = MallInfo2
     size = 40 << 20
     heap = {}
 
