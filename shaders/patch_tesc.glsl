@@ -10,10 +10,7 @@ void main() {
   gl_TessLevelOuter[1] = level[0];  // v = 0
   gl_TessLevelOuter[2] = level[1];  // u = 1
   gl_TessLevelOuter[3] = level[2];  // v = 1
-  // Inner levels: adaptive, the finer of the opposite edges; uniform, the patch's own grid (the
-  // coarser: they differ only where a quad's edge of L + 1 at an odd L meets two half-size patches,
-  // and that edge joins the L×L grid through the transition ring).
-  bool uniform_levels = u_pixels <= 0.0;
-  gl_TessLevelInner[0] = uniform_levels ? min(level[0], level[2]) : max(level[0], level[2]);
-  gl_TessLevelInner[1] = uniform_levels ? min(level[1], level[3]) : max(level[1], level[3]);
+  vec2 inner = quad_inner_levels(level);  // tess_levels.glsl
+  gl_TessLevelInner[0] = inner[0];
+  gl_TessLevelInner[1] = inner[1];
 }

@@ -109,3 +109,14 @@ vec3 triangle_edge_levels(int p) {
   if (u_debug_mismatch != 0 && p % 2 == 0) level[0] = min(64.0, 2.0 * level[0] + 1.0);
   return level;
 }
+
+// Inner levels from a quad patch's outer ones: adaptive, the finer of the opposite edges; uniform,
+// the patch's own grid (the coarser: they differ only where a quad's edge of L + 1 at an odd L meets
+// two half-size patches, and that edge joins the L×L grid through the transition ring).
+vec2 quad_inner_levels(vec4 level) {
+  bool uniform_levels = u_pixels <= 0.0;
+  return uniform_levels ? min(level.xy, level.zw) : max(level.xy, level.zw);
+}
+
+// A triangle patch's inner level: its finest edge's.
+float triangle_inner_level(vec3 level) { return max(level[0], max(level[1], level[2])); }

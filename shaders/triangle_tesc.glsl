@@ -11,5 +11,5 @@ void main() {
   gl_TessLevelOuter[0] = level[1];
   gl_TessLevelOuter[1] = level[2];
   gl_TessLevelOuter[2] = level[0];
-  gl_TessLevelInner[0] = max(level[0], max(level[1], level[2]));
+  gl_TessLevelInner[0] = triangle_inner_level(level);
 }

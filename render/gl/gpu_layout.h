@@ -46,6 +46,10 @@ GPS_LAYOUT_CONST int kBindingLevelChanges = 30;      // per listed block: whethe
 // Per patch before a change of topology: its number after it (render/cache/stored_patch_renumbering.h).
 // It shares the level check's slot, never bound in the same pass: llvmpipe has 32 binding points.
 GPS_LAYOUT_CONST int kBindingPatchNumbers = kBindingLevelPatches;
+// The patches a triangle count runs over and their counts (render/cache/patch_triangle_counts.h), in
+// the level check's slots likewise.
+GPS_LAYOUT_CONST int kBindingCountedPatches = kBindingLevelPatches;
+GPS_LAYOUT_CONST int kBindingPatchTriangles = kBindingLevelChanges;
 GPS_LAYOUT_CONST int kBindingLevelBound = 31;        // the largest level of a range of patches (render/pipeline/patch_level_bound.h)
 
 // Compute passes: invocations per work group.

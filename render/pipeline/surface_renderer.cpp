@@ -107,6 +107,7 @@ void SurfaceRenderer::use_point_precision(PointPrecision precision) {
     patches_.set_precision(precision);
     stored_evaluation_.set_precision(precision);
     stored_levels_.set_precision(precision);
+    triangle_counts_.set_precision(precision);
   } catch (...) {
     use_point_precision(previous);  // built already: no refusal
     throw;
@@ -340,6 +341,15 @@ std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& c
                                                                  int height, int first_patch, int n_patches) {
   buffers_.bind();
   return patches_.capture_vertices(shape(), camera, o, width, height, this->n_patches(), first_patch, n_patches);
+}
+
+std::vector<int> SurfaceRenderer::patch_triangle_counts(const Camera& camera, const DrawOptions& o, int width,
+                                                       int height) {
+  buffers_.bind();
+  const ShaderProgram& count = triangle_counts_.program(shape());
+  set_level_uniforms(count, frame_view_projection(camera, float(width) / float(height), frame_),
+                     glm::vec2(float(width), float(height)), o);
+  return triangle_counts_.count_all(shape(), n_patches(), group_limit_);
 }
 
 std::vector<TessellatedVertex> SurfaceRenderer::capture_frame_vertices(const Camera& camera, const DrawOptions& o,

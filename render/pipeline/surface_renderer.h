@@ -33,6 +33,7 @@
 #include "render/pipeline/static_triangles.h"
 #include "render/cache/stored_patch_levels.h"
 #include "render/cache/stored_vertex_evaluation.h"
+#include "render/cache/patch_triangle_counts.h"
 #include "render/cache/surface_cache.h"
 
 namespace gps {
@@ -101,6 +102,9 @@ public:
   /// rasterisation), of the patches [first_patch, first_patch + n_patches) (n_patches < 0: to the last).
   std::vector<TessellatedVertex> capture_vertices(const Camera& camera, const DrawOptions& options, int width,
                                                   int height, int first_patch = 0, int n_patches = -1);
+  /// How many triangles the tessellator generates of each patch for `options` in a width × height
+  /// viewport, found from the patches' levels (render/cache/patch_triangle_counts.h), not counted.
+  std::vector<int> patch_triangle_counts(const Camera& camera, const DrawOptions& options, int width, int height);
   /// The same with positions in frame() coordinates.
   std::vector<TessellatedVertex> capture_frame_vertices(const Camera& camera, const DrawOptions& options, int width,
                                                         int height, int first_patch = 0, int n_patches = -1);
@@ -203,6 +207,7 @@ private:
   SurfaceCache cache_;
   StoredVertexEvaluation stored_evaluation_;  // the cache's edits where the tessellation stays
   StoredPatchLevels stored_levels_;           // the levels of the cache's adaptive capture
+  PatchTriangleCounts triangle_counts_;       // where the cache finds a patch's triangles in its block
   long long points_generation_ = 0;           // bumped by every compute pass: the cache's key
   GlTexture matcap_ = GlTexture::none();      // made by set_matcap()
   long long tables_id_ = 0;

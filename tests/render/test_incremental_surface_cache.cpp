@@ -6,6 +6,7 @@
 
 #include <cstring>
 #include <random>
+#include <set>
 
 #include "core/modelling/affine_transform.h"
 #include "core/modelling/delete_elements.h"
@@ -104,6 +105,42 @@ TEST_F(IncrementalSurfaceCacheRandom, RandomOperationsMatchAFreshCapture) {
   }
   // The small meshes' changes reach over half their patches, which are captured again whole.
   EXPECT_GE(refreshes, 6) << "changes followed, not only captured again";
+}
+
+// The cache locates a kept patch's triangles inside its block by the counts the levels give
+// (render/cache/patch_triangle_counts.h): on every kind of mesh (quads, half-size patches of split
+// faces, Loop's triangles), at uniform levels of each parity, and at adaptive levels from 1 to many a
+// side, mismatched edges included, each patch's count is what the tessellator generates of it alone.
+TEST_F(IncrementalSurfaceCacheRandom, PatchTriangleCountsAreWhatTheTessellatorGenerates) {
+  const int width = 256, height = 192;
+  std::vector<DrawOptions> options;
+  for (const float level : {1.0f, 2.0f, 3.0f, 4.5f, 7.0f}) options.push_back(cached(0.0f, level));
+  for (const float pixels : {3.0f, 8.0f, 20.0f, 400.0f}) options.push_back(cached(pixels, 0.0f));
+  options.push_back(cached(6.0f, 0.0f));
+  options.back().diagnostics.mismatched_edge_levels = true;
+  for (const test::RandomOperationCase& c : test::random_operation_cases()) {
+    PlanOptions plan;
+    plan.scheme = c.scheme;
+    const SurfaceReplanner replanner(c.mesh.topology(), plan, c.mesh.sharpness);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(c.mesh, replanner.tables(), NormalisedFrame::of(c.mesh), replanner.last_change(), {});
+    const Camera camera = frame_mesh(c.mesh, 35.0f, 25.0f);
+    const int n_patches = renderer.tables().plans.n_patches();
+    std::set<int> adaptive_counts;
+    for (const DrawOptions& o : options) {
+      const std::vector<int> counts = renderer.patch_triangle_counts(camera, o, width, height);
+      ASSERT_EQ(counts.size(), size_t(n_patches)) << c.name;
+      int differing = 0, first = -1;
+      for (int p = 0; p < n_patches; ++p) {
+        const size_t generated = renderer.capture_vertices(camera, o, width, height, p, 1).size() / 3;
+        if (o.pixels > 0.0f) adaptive_counts.insert(counts[size_t(p)]);
+        if (size_t(counts[size_t(p)]) != generated && differing++ == 0) first = p;
+      }
+      EXPECT_EQ(differing, 0) << c.name << ", level " << o.level << ", pixels " << o.pixels << ": patch " << first
+                              << " and " << differing - 1 << " more";
+    }
+    EXPECT_GE(adaptive_counts.size(), 6u) << c.name << ": patches at many levels";
+  }
 }
 
 // A sphere of `faces` faces drawn by a renderer that welds as `weld` says, its plans from a replanner
