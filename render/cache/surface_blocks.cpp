@@ -15,6 +15,7 @@ void SurfaceBlocks::reset(int n_patches, int per_block) {
   first_triangle_.assign(first_patch_.size(), 0);
   stale_.assign(size_t(size()), 0);
   stale_patches_ = 0;
+  ends_kept_.clear();
 }
 
 std::vector<SurfaceBlocks::Moved> SurfaceBlocks::follow(int n_patches, const std::vector<int>& new_number,
@@ -26,6 +27,7 @@ std::vector<SurfaceBlocks::Moved> SurfaceBlocks::follow(int n_patches, const std
   struct Kept {
     int block, first;
     bool stale;
+    int lead = 0, trail = 0;  // of a block stale for its changed patches: the patches at its ends that stay
   };
   std::vector<Kept> kept;
   int end = 0;  // new patches before it are taken
@@ -45,14 +47,21 @@ std::vector<SurfaceBlocks::Moved> SurfaceBlocks::follow(int n_patches, const std
     }
     const int now = first + shift;
     if (!numbered || !one_shift || now < end || now + patches_in(b) > n_patches) continue;
-    for (int i = 0; i < patches_in(b); ++i) stale = stale || changed[size_t(now + i)];
-    kept.push_back({b, now, stale});
+    const bool stale_before = stale_[size_t(b)] != 0;
+    const auto stays = [&](int i) { return new_number[size_t(first + i)] == now + i && !changed[size_t(now + i)]; };
+    int lead = 0, trail = 0;
+    while (lead < patches_in(b) && stays(lead)) ++lead;
+    while (trail < patches_in(b) - lead && stays(patches_in(b) - 1 - trail)) ++trail;
+    stale = stale || lead < patches_in(b);
+    if (stale_before || lead == patches_in(b)) lead = trail = 0;
+    kept.push_back({b, now, stale, lead, trail});
     end = now + patches_in(b);
   }
   std::vector<int> first_patch;
   std::vector<long long> counts;
   std::vector<char> stale;
   std::vector<Moved> moved;
+  ends_kept_.clear();
   long long triangle = 0;
   const auto add_stale = [&](int from, int to) {  // new patches [from, to) in blocks of per_block_
     for (int p = from; p < to; p += per_block_) first_patch.push_back(p), counts.push_back(0), stale.push_back(1);
@@ -60,6 +69,7 @@ std::vector<SurfaceBlocks::Moved> SurfaceBlocks::follow(int n_patches, const std
   int next = 0;
   for (const Kept& k : kept) {
     add_stale(next, k.first);
+    if (k.lead + k.trail > 0) ends_kept_.push_back({int(first_patch.size()), k.lead, k.trail});
     first_patch.push_back(k.first);
     counts.push_back(triangles(k.block));
     stale.push_back(k.stale);
@@ -80,6 +90,55 @@ std::vector<SurfaceBlocks::Moved> SurfaceBlocks::follow(int n_patches, const std
   return moved;
 }
 
+std::vector<int> SurfaceBlocks::kept_end_patches() const {
+  std::vector<int> patches;
+  for (const KeptEnds& k : ends_kept_) {
+    const int first = first_patch(k.block), end = first + patches_in(k.block);
+    for (int p = first; p < first + k.lead; ++p) patches.push_back(p);
+    for (int p = end - k.trail; p < end; ++p) patches.push_back(p);
+  }
+  return patches;
+}
+
+void SurfaceBlocks::split_kept_ends(const std::vector<int>& counts) {
+  std::vector<int> first_patch;
+  std::vector<long long> triangles;
+  std::vector<char> stale;
+  size_t next = 0, count = 0;  // the next block with kept ends, and its patches' first count
+  const auto sum = [&](int n) {
+    long long total = 0;
+    for (int i = 0; i < n; ++i) total += counts[count++];
+    return total;
+  };
+  for (int b = 0; b < size(); ++b) {
+    const auto add = [&](int first, long long n, bool is_stale) {
+      first_patch.push_back(first), triangles.push_back(n), stale.push_back(is_stale);
+    };
+    if (next == ends_kept_.size() || ends_kept_[next].block != b) {
+      add(first_patch_[size_t(b)], this->triangles(b), stale_[size_t(b)] != 0);
+      continue;
+    }
+    const KeptEnds& k = ends_kept_[next++];
+    const long long lead = sum(k.lead), trail = sum(k.trail), middle = this->triangles(b) - lead - trail;
+    if (middle < 0) {  // counts that cannot be this block's: not split
+      add(first_patch_[size_t(b)], this->triangles(b), stale_[size_t(b)] != 0);
+      continue;
+    }
+    if (k.lead > 0) add(first_patch_[size_t(b)], lead, false);
+    add(first_patch_[size_t(b)] + k.lead, middle, true);
+    if (k.trail > 0) add(first_patch_[size_t(b)] + patches_in(b) - k.trail, trail, false);
+  }
+  first_patch.push_back(n_patches());
+  first_patch_ = std::move(first_patch);
+  first_triangle_.assign(first_patch_.size(), 0);
+  set_counts(triangles);
+  stale_ = std::move(stale);
+  stale_patches_ = 0;
+  for (int b = 0; b < size(); ++b)
+    if (stale_[size_t(b)]) stale_patches_ += patches_in(b);
+  ends_kept_.clear();
+}
+
 int SurfaceBlocks::block_of(int patch) const {
   return int(std::upper_bound(first_patch_.begin(), first_patch_.end(), patch) - first_patch_.begin()) - 1;
 }
@@ -96,7 +155,15 @@ void SurfaceBlocks::replace_counts(const std::vector<int>& blocks, const std::ve
   set_counts(all);
 }
 
+int SurfaceBlocks::stale_patches_past_kept_ends() const {
+  int patches = stale_patches_;
+  for (const KeptEnds& k : ends_kept_) patches -= k.lead + k.trail;
+  return patches;
+}
+
+// Any other change of patches than follow()'s may reach the kept ends: they are given up.
 void SurfaceBlocks::mark_stale(const std::vector<int>& patches) {
+  ends_kept_.clear();
   for (const int p : patches) {
     if (p < 0 || p >= n_patches()) continue;
     const int b = block_of(p);
@@ -107,6 +174,7 @@ void SurfaceBlocks::mark_stale(const std::vector<int>& patches) {
 }
 
 void SurfaceBlocks::mark_all_stale() {
+  ends_kept_.clear();
   std::fill(stale_.begin(), stale_.end(), 1);
   stale_patches_ = n_patches();
 }
@@ -119,6 +187,7 @@ std::vector<int> SurfaceBlocks::stale() const {
 }
 
 void SurfaceBlocks::clear_stale() {
+  ends_kept_.clear();
   std::fill(stale_.begin(), stale_.end(), 0);
   stale_patches_ = 0;
 }

@@ -34,6 +34,16 @@ public:
   /// blocks' triangles move, in order.
   std::vector<Moved> follow(int n_patches, const std::vector<int>& new_number, const std::vector<char>& changed);
 
+  /// The patches at the ends of blocks that follow() left stale for some of their patches, which stay
+  /// as they were: per such block, in order, its leading ones and its trailing ones.
+  std::vector<int> kept_end_patches() const;
+  /// Given those patches' triangle counts (render/cache/patch_triangle_counts.h), each such block split
+  /// where its triangles lie: its leading and trailing patches that stay, blocks of their own, not
+  /// stale, and the patches between, stale. A block whose counts do not fit its triangles stays whole.
+  void split_kept_ends(const std::vector<int>& counts);
+  /// Patches in stale blocks once split_kept_ends() has split them.
+  int stale_patches_past_kept_ends() const;
+
   int size() const { return int(first_triangle_.size()) - 1; }
   int n_patches() const { return first_patch_.back(); }
   int first_patch(int b) const { return first_patch_[size_t(b)]; }
@@ -64,6 +74,10 @@ private:
   std::vector<long long> first_triangle_{0};  // one more than blocks
   std::vector<char> stale_;
   int stale_patches_ = 0;
+  struct KeptEnds {
+    int block, lead, trail;  // patches at its start and its end that stay
+  };
+  std::vector<KeptEnds> ends_kept_;  // since the last follow(), in block order
 };
 
 /// `moved` (in order) with each run of blocks that lie one after the other before and now, in their

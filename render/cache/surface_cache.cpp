@@ -71,7 +71,8 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
   // Where a quarter of the patches or more would be captured again, everything is, sooner (refresh()).
   SurfaceBlocks followed = blocks_;
   const std::vector<SurfaceBlocks::Moved> moved = followed.follow(n_patches, new_number, changed);
-  if (4 * followed.stale_patches() > n_patches) {
+  const int stale = patch_triangles_agree_ ? followed.stale_patches_past_kept_ends() : followed.stale_patches();
+  if (4 * stale > n_patches) {
     tracked_points_ = -1;
     return {};
   }
@@ -106,6 +107,15 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
   topology_pending_ = true;
   check_gl_errors("following a change of topology");
   return moved;
+}
+
+void SurfaceCache::check_patch_triangles(const std::vector<int>& counts) {
+  patch_triangles_agree_ = counts.size() == size_t(blocks_.n_patches());
+  for (int b = 0; b < blocks_.size() && patch_triangles_agree_; ++b) {
+    long long sum = 0;
+    for (int p = blocks_.first_patch(b); p < blocks_.first_patch(b) + blocks_.patches_in(b); ++p) sum += counts[size_t(p)];
+    patch_triangles_agree_ = sum == blocks_.triangles(b);
+  }
 }
 
 bool SurfaceCache::matches(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {

@@ -78,6 +78,9 @@ public:
   /// At adaptive levels: per block (its patches listed), whether an edit changed any patch's levels
   /// under the capture's camera (render/cache/stored_patch_levels.h, recorded at each adaptive capture).
   using LevelsChanged = std::function<std::vector<char>(const std::vector<StoredPatchLevels::Block>& blocks)>;
+  /// The triangle counts of `patches` under the capture's camera (render/cache/patch_triangle_counts.h);
+  /// empty where they cannot be had.
+  using PatchTriangles = std::function<std::vector<int>(const std::vector<int>& patches)>;
 
   /// Needs a current GL context.
   SurfaceCache();
@@ -142,8 +145,14 @@ public:
   /// given). The others by capturing them again, for which the caller has set the capture camera
   /// above in the program's uniforms. False where capturing them again is not worth it (over half of
   /// the patches) or did not fit the memory limit (capture everything then).
+  /// After a change of topology, a block that keeps some of its patches at its ends is split there by
+  /// their `patch_triangles` (where check_patch_triangles() found such counts right), and only the
+  /// patches between are captured again.
   bool refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded = {},
-               const LevelsChanged& levels_changed = {});
+               const LevelsChanged& levels_changed = {}, const PatchTriangles& patch_triangles = {});
+  /// After a capture: the triangle counts of all patches found from their levels, checked against the
+  /// count of each block. Where they all agree, refresh() may locate patches inside blocks by them.
+  void check_patch_triangles(const std::vector<int>& counts);
   /// The uniform level from which an edit evaluates welded vertices again: kSettledEvaluatedFromLevel
   /// where the weld waits for a still frame; every level where it welds at capture (a GPU: there
   /// transform feedback costs more than the compute passes).
@@ -302,6 +311,7 @@ private:
   long long tracked_points_ = -1;  // the points the stale blocks lead to (−1: untracked)
   bool stored_ = false, refused_ = false;
   bool topology_pending_ = false;  // the stale blocks follow a change of topology: captured again
+  bool patch_triangles_agree_ = false;  // the last check_patch_triangles() found every block's count
   Key key_;
   glm::mat4 view_projection_{1.0f};
   glm::vec2 viewport_{0.0f};

@@ -13,11 +13,20 @@
 namespace gps {
 
 bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded,
-                           const LevelsChanged& levels_changed) {
-  const std::vector<int> stale = blocks_.stale();
-  const bool uniform = key.pixels <= 0.0f;
+                           const LevelsChanged& levels_changed, const PatchTriangles& patch_triangles) {
   GLint capture_program = 0;  // the compute passes below change it
   glGetIntegerv(GL_CURRENT_PROGRAM, &capture_program);
+  // A change of topology's blocks that keep patches at their ends: split there, where those patches'
+  // triangles lie by their counts, so that only the patches between are captured again.
+  if (topology_pending_ && patch_triangles_agree_ && patch_triangles && copy_pending_.empty()) {
+    const std::vector<int> ends = blocks_.kept_end_patches();
+    if (!ends.empty()) {
+      const std::vector<int> counts = patch_triangles(ends);
+      if (counts.size() == ends.size()) blocks_.split_kept_ends(counts);
+    }
+  }
+  const std::vector<int> stale = blocks_.stale();
+  const bool uniform = key.pixels <= 0.0f;
   // The stale blocks whose tessellation stays: all at uniform levels; at adaptive ones, those whose
   // patches keep their levels (the check also keeps the new levels of the others).
   // After a change of topology none do: their patches may be others (the check still keeps the levels).

@@ -290,7 +290,12 @@ bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, 
     set_level_uniforms(check, cache_.captured_view_projection(), cache_.captured_viewport(), o);
     return stored_levels_.changed(shape(), blocks, group_limit_);
   };
-  if (!cache_.refresh(key, draw_patches, evaluate_welded, levels_changed)) return false;
+  const auto patch_triangles = [&](const std::vector<int>& patches) {
+    const ShaderProgram& count = triangle_counts_.program(shape());
+    set_level_uniforms(count, cache_.captured_view_projection(), cache_.captured_viewport(), o);
+    return triangle_counts_.count(shape(), patches, group_limit_);
+  };
+  if (!cache_.refresh(key, draw_patches, evaluate_welded, levels_changed, patch_triangles)) return false;
   if (draws_grid(o)) cache_.copy_back_evaluated();
   return true;
 }
@@ -334,6 +339,10 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
     set_level_uniforms(record, view_projection, viewport, o);
     stored_levels_.record(shape(), n_patches(), group_limit_);
   }
+  // The counts a change of topology's refresh may split blocks by, checked against the capture's.
+  const ShaderProgram& count = triangle_counts_.program(shape());
+  set_level_uniforms(count, view_projection, viewport, o);
+  cache_.check_patch_triangles(triangle_counts_.count_all(shape(), n_patches(), group_limit_));
   return triangle_wire ? CacheFrame::stored : CacheFrame::drawn;  // the triangle wireframe: drawn from the cache
 }
 
