@@ -117,9 +117,9 @@ void add_bench_command(CLI::App& app) {
       const auto context = make_context();
       const std::string name = args->mesh.empty() ? "sphere" : args->mesh;
       std::printf("device: %s, 1280x720, adaptive 6 px\n", context->description().c_str());
-      std::printf("%-22s %-18s %10s %10s %8s %10s %10s %10s %10s %10s %10s %10s %10s\n", "mesh", "operation",
+      std::printf("%-22s %-18s %10s %10s %8s %10s %10s %10s %10s %10s %10s %10s %10s %10s\n", "mesh", "operation",
                   "operation", "re-plan", "faces", "full plan", "upload", "frame", "total", "next", "pause", "still",
-                  "undo");
+                  "undo", "undo frame");
       nlohmann::json all = nlohmann::json::array();
       for (const int faces : args->size ? std::vector<int>{args->size} : std::vector<int>{10000, 100000}) {
         const auto r = modelling_figures(name, faces, args->plans.options());
@@ -129,7 +129,7 @@ void add_bench_command(CLI::App& app) {
                       op["operation"].get<std::string>().c_str());
           for (const char* key :
                {"operation_ms", "replan_ms", "faces_planned", "full_replan_ms", "upload_ms", "frame_ms", "total_ms",
-                "next_frame_ms", "pause_frame_ms", "still_frame_ms", "undo_ms"})
+                "next_frame_ms", "pause_frame_ms", "still_frame_ms", "undo_ms", "undo_frame_ms"})
             if (op[key].is_number_integer())
               std::printf(" %8d", op[key].get<int>());
             else

@@ -28,7 +28,7 @@ void BM_Model(benchmark::State& state) {
   for (auto _ : state) state.SetIterationTime(operation["total_ms"].get<double>() * 1e-3);
   state.SetLabel(operation["operation"].get<std::string>());
   for (const char* key : {"operation_ms", "replan_ms", "upload_ms", "frame_ms", "next_frame_ms", "pause_frame_ms",
-                          "still_frame_ms", "undo_ms"})
+                          "still_frame_ms", "undo_ms", "undo_frame_ms"})
     state.counters[key] = operation[key].get<double>();
 }
 

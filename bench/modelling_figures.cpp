@@ -64,7 +64,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   // before the next round; a full re-plan of the same result is timed beside them.
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& [label, operation] : operations) {
-    std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, next_s, pause_s, still_s, undo_s;
+    std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, next_s, pause_s, still_s, undo_s, undo_frame_s;
     int planned = 0;
     for (int round = 0; round < 6; ++round) {
       const Clock::time_point start = Clock::now();
@@ -110,11 +110,16 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
                         back);
       glFinish();
       undo_s.push_back(seconds_since(undoing));
+      // The frame after the undo, which the next round's operation would otherwise pay for.
+      const Clock::time_point undone = Clock::now();
+      renderer.draw(target, camera, draw);
+      glFinish();
+      undo_frame_s.push_back(seconds_since(undone));
     }
     // The first round of each operation warms the allocator and the driver's buffers up for its sizes
     // (the first operation timed paid twice the others' upload): not counted.
     for (std::vector<double>* times :
-         {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &pause_s, &still_s, &undo_s})
+         {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &pause_s, &still_s, &undo_s, &undo_frame_s})
       times->erase(times->begin());
     rows.push_back({{"operation", label},
                     {"operation_ms", median(op_s) * 1e3},
@@ -127,7 +132,8 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
                     {"next_frame_ms", median(next_s) * 1e3},
                     {"pause_frame_ms", median(pause_s) * 1e3},
                     {"still_frame_ms", median(still_s) * 1e3},
-                    {"undo_ms", median(undo_s) * 1e3}});
+                    {"undo_ms", median(undo_s) * 1e3},
+                    {"undo_frame_ms", median(undo_frame_s) * 1e3}});
   }
   return {{"mesh", name + "/" + std::to_string(faces)},
           {"faces", mesh.n_faces()},
