@@ -110,23 +110,31 @@ void SurfaceBlocks::split_kept_ends(const std::vector<int>& counts) {
     for (int i = 0; i < n; ++i) total += counts[count++];
     return total;
   };
+  // A block joins the one before it where both are stale or both not, and together they hold no more
+  // patches than a block of the usual size: splits of one change after another do not leave ever
+  // smaller blocks (each costs a query and a draw when captured).
+  const auto add = [&](int first, int patches, long long n, bool is_stale) {
+    if (!stale.empty() && (stale.back() != 0) == is_stale && first + patches - first_patch.back() <= per_block_) {
+      triangles.back() += n;
+      return;
+    }
+    first_patch.push_back(first), triangles.push_back(n), stale.push_back(is_stale);
+  };
   for (int b = 0; b < size(); ++b) {
-    const auto add = [&](int first, long long n, bool is_stale) {
-      first_patch.push_back(first), triangles.push_back(n), stale.push_back(is_stale);
-    };
+    const int first = first_patch_[size_t(b)], patches = patches_in(b);
     if (next == ends_kept_.size() || ends_kept_[next].block != b) {
-      add(first_patch_[size_t(b)], this->triangles(b), stale_[size_t(b)] != 0);
+      add(first, patches, this->triangles(b), stale_[size_t(b)] != 0);
       continue;
     }
     const KeptEnds& k = ends_kept_[next++];
     const long long lead = sum(k.lead), trail = sum(k.trail), middle = this->triangles(b) - lead - trail;
     if (middle < 0) {  // counts that cannot be this block's: not split
-      add(first_patch_[size_t(b)], this->triangles(b), stale_[size_t(b)] != 0);
+      add(first, patches, this->triangles(b), stale_[size_t(b)] != 0);
       continue;
     }
-    if (k.lead > 0) add(first_patch_[size_t(b)], lead, false);
-    add(first_patch_[size_t(b)] + k.lead, middle, true);
-    if (k.trail > 0) add(first_patch_[size_t(b)] + patches_in(b) - k.trail, trail, false);
+    if (k.lead > 0) add(first, k.lead, lead, false);
+    add(first + k.lead, patches - k.lead - k.trail, middle, true);
+    if (k.trail > 0) add(first + patches - k.trail, k.trail, trail, false);
   }
   first_patch.push_back(n_patches());
   first_patch_ = std::move(first_patch);

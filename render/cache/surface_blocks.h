@@ -40,6 +40,7 @@ public:
   /// Given those patches' triangle counts (render/cache/patch_triangle_counts.h), each such block split
   /// where its triangles lie: its leading and trailing patches that stay, blocks of their own, not
   /// stale, and the patches between, stale. A block whose counts do not fit its triangles stays whole.
+  /// Neighbouring blocks alike in staleness join where they fit in a block of the usual size.
   void split_kept_ends(const std::vector<int>& counts);
   /// Patches in stale blocks once split_kept_ends() has split them.
   int stale_patches_past_kept_ends() const;

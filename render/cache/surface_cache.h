@@ -250,6 +250,8 @@ public:
   int evaluated_patches() const { return evaluated_patches_; }
   /// The stored triangles' count.
   long long triangles() const { return blocks_.total(); }
+  /// The blocks they are stored in.
+  int blocks() const { return blocks_.size(); }
 
 private:
   NormalisedFrame frame_;

@@ -224,6 +224,32 @@ TEST_P(IncrementalSurfaceCache, ALoopCutAroundTheMeshCapturesFewerThanHalfItsPat
   EXPECT_LT(refreshed[0], refreshed[1] * 9 / 10) << "blocks split at their kept ends";
 }
 
+// Blocks split by one change of topology after another join their neighbours again where they fit
+// in a block of the usual size: operations and their undo, over and over, neither fragment the
+// blocks nor capture more each time.
+TEST_P(IncrementalSurfaceCache, SplitBlocksJoinAgainOverManyOperations) {
+  RenderTarget target(kSize, kSize);
+  SphereScene scene(20000, GetParam());
+  auto& [sphere, frame, camera, replanner, renderer] = scene;
+  const DrawOptions o = cached(6.0f, 0.0f);
+  renderer.draw(target, camera, o);
+  const SurfaceCache& cache = renderer.surface_cache();
+  const int captures = cache.captures(), blocks = cache.blocks();
+  for (int round = 0; round < 6; ++round) {
+    const int f = int(sphere.n_faces() / 7) * (1 + round % 3);
+    const std::span<const int> face = sphere.face(size_t(f));
+    const Modelled result = round % 2 == 0 ? loop_cut(sphere, face[0], face[1]) : extrude_faces(sphere, {f}, 0.02);
+    scene.follow(result.mesh, result.vertex_origin);
+    renderer.draw(target, camera, o);
+    EXPECT_EQ(cache.captures(), captures) << result.summary << ", round " << round;
+    scene.follow(sphere, inverse_origin(result.vertex_origin, sphere.n_vertices()));
+    renderer.draw(target, camera, o);
+    EXPECT_LE(cache.blocks(), blocks + blocks / 10) << result.summary << ", round " << round;
+  }
+  EXPECT_EQ(cache.captures(), captures) << "every change followed";
+  expect_as_captured_anew(renderer, sphere, frame, target, camera, o, "after the rounds");
+}
+
 // An operation that moves every vertex and keeps the faces (a transform of the whole mesh) changes the
 // Gaussians alone: the renderer follows it as an edit of every vertex. Welded at capture (a GPU's
 // way), the welded vertices are evaluated again and nothing is captured again.
