@@ -80,6 +80,12 @@ std::vector<SurfaceBlocks::Moved> SurfaceBlocks::follow(int n_patches, const std
   }
   add_stale(next, n_patches);
   first_patch.push_back(n_patches);
+  assign(std::move(first_patch), counts, std::move(stale));
+  return moved;
+}
+
+void SurfaceBlocks::assign(std::vector<int> first_patch, const std::vector<long long>& counts,
+                           std::vector<char> stale) {
   first_patch_ = std::move(first_patch);
   first_triangle_.assign(first_patch_.size(), 0);
   set_counts(counts);
@@ -87,7 +93,6 @@ std::vector<SurfaceBlocks::Moved> SurfaceBlocks::follow(int n_patches, const std
   stale_patches_ = 0;
   for (int b = 0; b < size(); ++b)
     if (stale_[size_t(b)]) stale_patches_ += patches_in(b);
-  return moved;
 }
 
 std::vector<int> SurfaceBlocks::kept_end_patches() const {
@@ -137,13 +142,7 @@ void SurfaceBlocks::split_kept_ends(const std::vector<int>& counts) {
     if (k.trail > 0) add(first + patches - k.trail, k.trail, trail, false);
   }
   first_patch.push_back(n_patches());
-  first_patch_ = std::move(first_patch);
-  first_triangle_.assign(first_patch_.size(), 0);
-  set_counts(triangles);
-  stale_ = std::move(stale);
-  stale_patches_ = 0;
-  for (int b = 0; b < size(); ++b)
-    if (stale_[size_t(b)]) stale_patches_ += patches_in(b);
+  assign(std::move(first_patch), triangles, std::move(stale));
   ends_kept_.clear();
 }
 

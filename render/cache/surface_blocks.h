@@ -69,6 +69,8 @@ public:
 
 private:
   int block_of(int patch) const;
+  /// Blocks starting at `first_patch` (one more: the patch count), of `counts` triangles, stale as flagged.
+  void assign(std::vector<int> first_patch, const std::vector<long long>& counts, std::vector<char> stale);
 
   int per_block_ = 1;
   std::vector<int> first_patch_{0};           // one more than blocks: the last is the patch count

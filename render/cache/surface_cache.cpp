@@ -109,13 +109,29 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
   return moved;
 }
 
+std::vector<int> SurfaceCache::checked_blocks() const {
+  const int n = blocks_.size(), step = std::max(1, int((blocks_.n_patches() + kCheckedPatches - 1) / kCheckedPatches));
+  std::vector<int> blocks;
+  for (int b = 0; b < n; b += step) blocks.push_back(b);
+  return blocks;
+}
+
+std::vector<int> SurfaceCache::checked_patches() const {
+  std::vector<int> patches;
+  for (const int b : checked_blocks())
+    for (int p = blocks_.first_patch(b); p < blocks_.first_patch(b) + blocks_.patches_in(b); ++p) patches.push_back(p);
+  return patches;
+}
+
 void SurfaceCache::check_patch_triangles(const std::vector<int>& counts) {
-  patch_triangles_agree_ = counts.size() == size_t(blocks_.n_patches());
-  for (int b = 0; b < blocks_.size() && patch_triangles_agree_; ++b) {
+  size_t next = 0;
+  patch_triangles_agree_ = !counts.empty();
+  for (const int b : checked_blocks()) {
     long long sum = 0;
-    for (int p = blocks_.first_patch(b); p < blocks_.first_patch(b) + blocks_.patches_in(b); ++p) sum += counts[size_t(p)];
-    patch_triangles_agree_ = sum == blocks_.triangles(b);
+    for (int i = 0; i < blocks_.patches_in(b) && next < counts.size(); ++i) sum += counts[next++];
+    patch_triangles_agree_ = patch_triangles_agree_ && sum == blocks_.triangles(b);
   }
+  patch_triangles_agree_ = patch_triangles_agree_ && next == counts.size();
 }
 
 bool SurfaceCache::matches(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {

@@ -150,9 +150,13 @@ public:
   /// patches between are captured again.
   bool refresh(const Key& key, const DrawPatches& draw_patches, const EvaluateWelded& evaluate_welded = {},
                const LevelsChanged& levels_changed = {}, const PatchTriangles& patch_triangles = {});
-  /// After a capture: the triangle counts of all patches found from their levels, checked against the
-  /// count of each block. Where they all agree, refresh() may locate patches inside blocks by them.
+  /// After a capture, the patches whose triangle counts check_patch_triangles() takes: those of every
+  /// block, or of blocks spread evenly over the surface, up to kCheckedPatches.
+  std::vector<int> checked_patches() const;
+  /// Their triangle counts found from their levels, in that order, checked against the count of each
+  /// of their blocks. Where all agree, refresh() may locate patches inside blocks by such counts.
   void check_patch_triangles(const std::vector<int>& counts);
+  static constexpr int kCheckedPatches = 8192;
   /// The uniform level from which an edit evaluates welded vertices again: kSettledEvaluatedFromLevel
   /// where the weld waits for a still frame; every level where it welds at capture (a GPU: there
   /// transform feedback costs more than the compute passes).
@@ -265,6 +269,8 @@ private:
   static constexpr float kThirdOfSlotsFromLevel = 8.0f;
 
   bool camera_close(const glm::mat4& view_projection, glm::vec2 viewport, float pixels) const;
+  /// The blocks checked_patches() lists.
+  std::vector<int> checked_blocks() const;
   /// Follows plan points of generation `points` as an edit's where they come one compute pass after
   /// those followed so far (true); else stops following edits until the next capture (false).
   bool follow_edit(long long points);

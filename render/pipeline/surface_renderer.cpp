@@ -342,7 +342,7 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
   // The counts a change of topology's refresh may split blocks by, checked against the capture's.
   const ShaderProgram& count = triangle_counts_.program(shape());
   set_level_uniforms(count, view_projection, viewport, o);
-  cache_.check_patch_triangles(triangle_counts_.count_all(shape(), n_patches(), group_limit_));
+  cache_.check_patch_triangles(triangle_counts_.count(shape(), cache_.checked_patches(), group_limit_));
   return triangle_wire ? CacheFrame::stored : CacheFrame::drawn;  // the triangle wireframe: drawn from the cache
 }
 
