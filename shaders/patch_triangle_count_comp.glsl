@@ -14,7 +14,7 @@ int rounded_level(float level) { return int(ceil(clamp(level, 1.0, float(gl_MaxT
 void main() {
   int i = compute_invocation();
   if (i < 0) return;
-  int p = u_use_list != 0 ? counted_patches[i] : i;
+  int p = counted_patches[i];
 #ifdef GPS_TRIANGLE_PATCHES
   vec3 outer = triangle_edge_levels(p);
   ivec3 edges = ivec3(rounded_level(outer[0]), rounded_level(outer[1]), rounded_level(outer[2]));

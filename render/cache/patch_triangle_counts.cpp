@@ -17,21 +17,12 @@ void PatchTriangleCounts::set_precision(PointPrecision precision) { programs_.se
 
 std::vector<int> PatchTriangleCounts::count(PatchShape shape, const std::vector<int>& patches, int group_limit) {
   if (patches.empty()) return {};
+  std::vector<int> counts(patches.size(), 0);
   glNamedBufferData(patches_, GLsizeiptr(patches.size() * sizeof(GLint)), patches.data(), GL_STREAM_DRAW);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingCountedPatches, patches_);
-  return run(shape, int(patches.size()), true, group_limit);
-}
-
-std::vector<int> PatchTriangleCounts::count_all(PatchShape shape, int n_patches, int group_limit) {
-  if (n_patches <= 0) return {};
-  return run(shape, n_patches, false, group_limit);
-}
-
-std::vector<int> PatchTriangleCounts::run(PatchShape shape, int n, bool listed, int group_limit) {
-  std::vector<int> counts(size_t(n), 0);
   glNamedBufferData(counts_, GLsizeiptr(counts.size() * sizeof(GLint)), nullptr, GL_STREAM_READ);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingCountedPatches, patches_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingPatchTriangles, counts_);
-  run_compute_pass(program(shape), n, listed, group_limit);
+  run_compute_pass(program(shape), int(patches.size()), true, group_limit);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(counts_, 0, GLsizeiptr(counts.size() * sizeof(GLint)), counts.data());
   check_gl_errors("counting the patches' triangles");

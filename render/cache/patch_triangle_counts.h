@@ -27,12 +27,8 @@ public:
   const ShaderProgram& program(PatchShape shape) const { return programs_(shape); }
   /// The triangle counts of `patches`, in their order.
   std::vector<int> count(PatchShape shape, const std::vector<int>& patches, int group_limit);
-  /// The triangle counts of patches 0 to `n_patches` − 1.
-  std::vector<int> count_all(PatchShape shape, int n_patches, int group_limit);
 
 private:
-  std::vector<int> run(PatchShape shape, int n, bool listed, int group_limit);
-
   ShapePrograms programs_;
   GlBuffer patches_, counts_;
 };

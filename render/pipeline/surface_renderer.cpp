@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <utility>
 
 #include "core/plans/patch_adjacency.h"
@@ -291,9 +292,7 @@ bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, 
     return stored_levels_.changed(shape(), blocks, group_limit_);
   };
   const auto patch_triangles = [&](const std::vector<int>& patches) {
-    const ShaderProgram& count = triangle_counts_.program(shape());
-    set_level_uniforms(count, cache_.captured_view_projection(), cache_.captured_viewport(), o);
-    return triangle_counts_.count(shape(), patches, group_limit_);
+    return triangle_counts(cache_.captured_view_projection(), cache_.captured_viewport(), o, patches);
   };
   if (!cache_.refresh(key, draw_patches, evaluate_welded, levels_changed, patch_triangles)) return false;
   if (draws_grid(o)) cache_.copy_back_evaluated();
@@ -340,9 +339,7 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
     stored_levels_.record(shape(), n_patches(), group_limit_);
   }
   // The counts a change of topology's refresh may split blocks by, checked against the capture's.
-  const ShaderProgram& count = triangle_counts_.program(shape());
-  set_level_uniforms(count, view_projection, viewport, o);
-  cache_.check_patch_triangles(triangle_counts_.count(shape(), cache_.checked_patches(), group_limit_));
+  cache_.check_patch_triangles(triangle_counts(view_projection, viewport, o, cache_.checked_patches()));
   return triangle_wire ? CacheFrame::stored : CacheFrame::drawn;  // the triangle wireframe: drawn from the cache
 }
 
@@ -355,10 +352,16 @@ std::vector<TessellatedVertex> SurfaceRenderer::capture_vertices(const Camera& c
 std::vector<int> SurfaceRenderer::patch_triangle_counts(const Camera& camera, const DrawOptions& o, int width,
                                                        int height) {
   buffers_.bind();
-  const ShaderProgram& count = triangle_counts_.program(shape());
-  set_level_uniforms(count, frame_view_projection(camera, float(width) / float(height), frame_),
-                     glm::vec2(float(width), float(height)), o);
-  return triangle_counts_.count_all(shape(), n_patches(), group_limit_);
+  std::vector<int> patches(static_cast<size_t>(n_patches()));
+  std::iota(patches.begin(), patches.end(), 0);
+  return triangle_counts(frame_view_projection(camera, float(width) / float(height), frame_),
+                         glm::vec2(float(width), float(height)), o, patches);
+}
+
+std::vector<int> SurfaceRenderer::triangle_counts(const glm::mat4& view_projection, glm::vec2 viewport,
+                                                  const DrawOptions& o, const std::vector<int>& patches) {
+  set_level_uniforms(triangle_counts_.program(shape()), view_projection, viewport, o);
+  return triangle_counts_.count(shape(), patches, group_limit_);
 }
 
 std::vector<TessellatedVertex> SurfaceRenderer::capture_frame_vertices(const Camera& camera, const DrawOptions& o,

@@ -180,6 +180,9 @@ private:
   /// A capture of every patch (drawing the frame as it goes), where prepare_cache() left the cache
   /// not matching the frame.
   CacheFrame capture_cache(const Camera& camera, const DrawOptions& options, float aspect, int width, int height);
+  /// The triangle counts of `patches` at the levels of `options` under this camera and viewport.
+  std::vector<int> triangle_counts(const glm::mat4& view_projection, glm::vec2 viewport, const DrawOptions& options,
+                                   const std::vector<int>& patches);
   /// The stored triangles with the bound program, counted while collecting statistics.
   void draw_cache(bool grid);
   /// Whether a cached frame of these options draws the quads' wireframe: their tessellation grid,
