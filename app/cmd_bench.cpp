@@ -117,9 +117,9 @@ void add_bench_command(CLI::App& app) {
       const auto context = make_context();
       const std::string name = args->mesh.empty() ? "sphere" : args->mesh;
       std::printf("device: %s, 1280x720, adaptive 6 px\n", context->description().c_str());
-      std::printf("%-22s %-18s %10s %10s %8s %10s %10s %10s %10s %10s %10s %10s %10s %10s\n", "mesh", "operation",
-                  "operation", "re-plan", "faces", "full plan", "upload", "frame", "total", "next", "pause", "still",
-                  "undo", "undo frame");
+      std::printf("%-22s %-18s %10s %10s %8s %10s %10s %10s %10s %10s %10s %10s %10s %10s %9s %8s\n", "mesh",
+                  "operation", "operation", "re-plan", "faces", "full plan", "upload", "frame", "total", "next", "pause",
+                  "still", "undo", "undo frame", "captures", "still is");
       nlohmann::json all = nlohmann::json::array();
       for (const int faces : args->size ? std::vector<int>{args->size} : std::vector<int>{10000, 100000}) {
         const auto r = modelling_figures(name, faces, args->plans.options());
@@ -134,7 +134,12 @@ void add_bench_command(CLI::App& app) {
               std::printf(" %8d", op[key].get<int>());
             else
               std::printf(" %7.2f ms", op[key].get<double>());
-          std::printf("\n");
+          // How the cache drew: full captures per frame after the operation; the still frame welded,
+          // stored as captured, or live (in most rounds).
+          const char* still = op["still_welded"].get<double>() > 0.5   ? "welded"
+                              : op["still_cached"].get<double>() > 0.5 ? "stored"
+                                                                       : "live";
+          std::printf(" %9.1f %8s\n", op["frame_captures"].get<double>(), still);
         }
         std::fflush(stdout);
         all.push_back(r);

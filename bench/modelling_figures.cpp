@@ -16,6 +16,7 @@
 #include "core/modelling/subdivide_mesh.h"
 #include "core/plans/surface_replanner.h"
 #include "core/support/median.h"
+#include "render/gl/gpu_pass_timer.h"
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"
 #include "view/camera.h"
@@ -27,12 +28,27 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// The last surface pass's GPU time (the frame was finished: its query has its result).
+double surface_pass_seconds(GpuPassTimer& timer) {
+  for (const auto& [pass, ms] : timer.latest())
+    if (pass == "surface") return ms * 1e-3;
+  return 0.0;
+}
+
+double mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (const double v : values) sum += v;
+  return values.empty() ? 0.0 : sum / double(values.size());
+}
+
 }  // namespace
 
 nlohmann::json modelling_figures(const std::string& name, int faces, const PlanOptions& options) {
   const CovarianceMesh mesh = make_sample(name, faces);
   SurfaceRenderer renderer;
   renderer.surface_cache().set_whole_weld_delay(SurfaceCache::kPauseWeldDelay);  // as the editor draws
+  GpuPassTimer timer;
+  renderer.set_pass_timer(&timer);
   RenderTarget target(1280, 720);
   DrawOptions draw;
   draw.pixels = 6.0f;
@@ -65,6 +81,13 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& [label, operation] : operations) {
     std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, next_s, pause_s, still_s, undo_s, undo_frame_s;
+    // How the surface cache drew: full captures in the frame after the operation, the patches its
+    // refresh captured or evaluated again, and whether the still frame drew stored, welded triangles.
+    std::vector<double> captures, refreshed, still_cached, still_welded;
+    const SurfaceCache& cache = renderer.surface_cache();
+    // The GPU's own time of the surface pass (capture or refresh, and the draw) in the frame after the
+    // operation and in the still frame: where it is far below the frame's, the rest waits on the CPU.
+    std::vector<double> frame_gpu_s, still_gpu_s;
     int planned = 0;
     for (int round = 0; round < 6; ++round) {
       const Clock::time_point start = Clock::now();
@@ -78,10 +101,14 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
                         replanner.last_change(), result.vertex_origin);
       glFinish();
       upload_s.push_back(seconds_since(uploading));
+      const int captures_before = cache.captures(), refreshes_before = cache.refreshes();
       const Clock::time_point drawn = Clock::now();
       renderer.draw(target, camera, draw);
       glFinish();
       frame_s.push_back(seconds_since(drawn));
+      frame_gpu_s.push_back(surface_pass_seconds(timer));
+      captures.push_back(cache.captures() - captures_before);
+      refreshed.push_back(cache.refreshes() > refreshes_before ? cache.refreshed_patches() : 0);
       total_s.push_back(seconds_since(start));
       // The next frame; then, once a user would pause, the frame that welds what the operation's frame
       // stored (on llvmpipe: surface_cache.h); then the same mesh drawn again once settled: the frame of
@@ -99,6 +126,9 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       renderer.draw(target, camera, draw);
       glFinish();
       still_s.push_back(seconds_since(still));
+      still_gpu_s.push_back(surface_pass_seconds(timer));
+      still_cached.push_back(renderer.last_statistics().cached);
+      still_welded.push_back(cache.has_stored_triangles() && cache.stored_vertices_welded());
       const Clock::time_point full = Clock::now();
       const SurfaceTables whole = build_surface_plans(result.mesh, options);
       full_s.push_back(seconds_since(full));
@@ -119,7 +149,8 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
     // The first round of each operation warms the allocator and the driver's buffers up for its sizes
     // (the first operation timed paid twice the others' upload): not counted.
     for (std::vector<double>* times :
-         {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &pause_s, &still_s, &undo_s, &undo_frame_s})
+         {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &pause_s, &still_s, &undo_s, &undo_frame_s,
+          &captures, &refreshed, &still_cached, &still_welded, &frame_gpu_s, &still_gpu_s})
       times->erase(times->begin());
     rows.push_back({{"operation", label},
                     {"operation_ms", median(op_s) * 1e3},
@@ -133,7 +164,13 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
                     {"pause_frame_ms", median(pause_s) * 1e3},
                     {"still_frame_ms", median(still_s) * 1e3},
                     {"undo_ms", median(undo_s) * 1e3},
-                    {"undo_frame_ms", median(undo_frame_s) * 1e3}});
+                    {"undo_frame_ms", median(undo_frame_s) * 1e3},
+                    {"frame_gpu_ms", median(frame_gpu_s) * 1e3},
+                    {"still_gpu_ms", median(still_gpu_s) * 1e3},
+                    {"frame_captures", mean(captures)},
+                    {"frame_refreshed_patches", median(refreshed)},
+                    {"still_cached", mean(still_cached)},
+                    {"still_welded", mean(still_welded)}});
   }
   return {{"mesh", name + "/" + std::to_string(faces)},
           {"faces", mesh.n_faces()},
