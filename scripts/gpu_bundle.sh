@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Packs what checks gpsurf on another machine's GPU into DIR (default out/gpu-bundle, about 15 MB):
+# Packs what checks gpsurf on another machine's GPU into DIR (default out/gpu-bundle, about 90 MB) and
+# DIR.tar.xz (about 10 MB: the binaries share their static libraries, which xz's large window finds):
 # the GL tests that need no OpenImageIO (no image format besides PNG) and the frame benchmarks, stripped, with the shared
 # libraries they need beyond glibc, libstdc++ and the GL loader (libEGL). On the GPU machine:
 #   DIR/run.sh OUT [tests|bench|all]
@@ -64,4 +65,8 @@ if [ "\$mode" != tests ]; then
 fi
 RUN
 chmod +x "$dir/run.sh"
-echo "$dir: ${#tests[@]} GL tests and 5 benchmarks, $(du -sh "$dir" | cut -f1); run $dir/run.sh OUT on the GPU machine"
+# The archive is what travels to a lent machine (scripts/gpu_session.sh unpacks it there): the
+# directory is past what its remote command tool carries.
+tar -C "$(dirname "$dir")" -cf - "$(basename "$dir")" | xz -T0 -6 --lzma2=dict=96MiB > "$dir.tar.xz"
+echo "$dir: ${#tests[@]} GL tests and 5 benchmarks, $(du -sh "$dir" | cut -f1) ($dir.tar.xz: $(du -sh "$dir.tar.xz" | cut -f1));" \
+  "run $dir/run.sh OUT on the GPU machine"

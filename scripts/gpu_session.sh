@@ -6,9 +6,11 @@
 #   o='-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 -oDir::State::Lists=/tmp/amd64'
 #   apt-get $o update; (cd .gl && apt-get $o download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2)
 #   scripts/gpu_bundle.sh
-# then the device tool's run with carry [".gl", "out/gpu-bundle"]: scripts/gpu_session.sh [tests|bench|all]
+# then the device tool's run with carry [".gl", "out/gpu-bundle.tar.xz"] (the bundle itself is past
+# the 64 MiB the tool carries): scripts/gpu_session.sh [tests|bench|all]
 set -u
 cd "$(dirname "$0")/.."
+if [ -f out/gpu-bundle.tar.xz ]; then tar -C out -xJf out/gpu-bundle.tar.xz; fi
 for f in .gl/*.deb; do [ -e "$f" ] && dpkg -x "$f" /; done
 ldconfig
 export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json

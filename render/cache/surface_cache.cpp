@@ -208,20 +208,26 @@ void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long trian
 
 // One feedback session; each block's triangles are counted by its own query (queries of primitives
 // written may begin and end while feedback is active), so the blocks lie one after the other.
-// With `known` counts (uniform levels: an edit keeps every patch's triangles) no query is read, and
-// the frame goes on without waiting for the capture.
+// With `known` counts (uniform levels: an edit keeps every patch's triangles; or counted from the
+// levels) no query is read, and the frame goes on without waiting for the capture; a run of
+// consecutive blocks is then one draw, whose triangles the feedback writes in the same order.
 bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
                                   const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize,
-                                  bool known) {
+                                  const std::vector<long long>* known) {
   if (!known)
     while (queries_.size() < blocks.size()) queries_.emplace_back(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
   glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer, 0, GLsizeiptr(capacity * 3 * kCapturedVertexBytes));
   if (!rasterize) glEnable(GL_RASTERIZER_DISCARD);
   glBeginTransformFeedback(GL_TRIANGLES);
-  for (size_t i = 0; i < blocks.size(); ++i) {
+  for (size_t i = 0; i < blocks.size();) {
+    size_t end = i + 1;
+    if (known)
+      while (end < blocks.size() && blocks[end] == blocks[end - 1] + 1) ++end;
     if (!known) glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queries_[i]);
-    draw_patches(blocks_.first_patch(blocks[i]), blocks_.patches_in(blocks[i]));
+    const int first = blocks_.first_patch(blocks[i]);
+    draw_patches(first, blocks_.first_patch(blocks[end - 1]) + blocks_.patches_in(blocks[end - 1]) - first);
     if (!known) glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+    i = end;
   }
   glEndTransformFeedback();
   glDisable(GL_RASTERIZER_DISCARD);
@@ -230,7 +236,7 @@ bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std
   long long total = 0;
   for (size_t i = 0; i < blocks.size(); ++i) {
     if (known) {
-      counts[i] = blocks_.triangles(blocks[i]);
+      counts[i] = (*known)[i];
     } else {
       GLuint64 written = 0;
       glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &written);
@@ -240,6 +246,20 @@ bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std
   }
   check_gl_errors("capturing the surface");
   return known ? total <= capacity : total < capacity;  // a full buffer may have dropped triangles
+}
+
+std::vector<long long> SurfaceCache::counted_triangles(const std::vector<int>& blocks,
+                                                       const PatchTriangles& patch_triangles) const {
+  std::vector<int> patches;
+  for (const int b : blocks)
+    for (int p = blocks_.first_patch(b); p < blocks_.first_patch(b) + blocks_.patches_in(b); ++p) patches.push_back(p);
+  const std::vector<int> counts = patch_triangles(patches);
+  if (counts.size() != patches.size()) return {};
+  std::vector<long long> sums(blocks.size(), 0);
+  size_t next = 0;
+  for (size_t i = 0; i < blocks.size(); ++i)
+    for (int k = 0; k < blocks_.patches_in(blocks[i]); ++k) sums[i] += counts[next++];
+  return sums;
 }
 
 bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches,

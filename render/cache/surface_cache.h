@@ -276,17 +276,22 @@ private:
   bool follow_edit(long long points);
   long long most_triangles() const;
   void reserve(unsigned buffer, long long& capacity, long long triangles) const;
-  /// Captures `blocks` one after the other into `buffer` from its start; their counts (counted, or
-  /// where `known`, those stored); false where the buffer was full (and some triangles may be missing).
+  /// Captures `blocks` one after the other into `buffer` from its start; their counts (counted by a
+  /// query per block, or where `known` is given, those: consecutive blocks then go in one draw); false
+  /// where the buffer was full (and some triangles may be missing).
   bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
                       const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize = false,
-                      bool known = false);
+                      const std::vector<long long>* known = nullptr);
+  /// Per block of `blocks`: the sum of its patches' triangle counts (`patch_triangles`); empty where
+  /// they cannot be had.
+  std::vector<long long> counted_triangles(const std::vector<int>& blocks, const PatchTriangles& patch_triangles) const;
   void evaluate_again(const std::vector<int>& blocks, bool third, const EvaluateWelded& evaluate_welded);
   /// Welds now what Weld::when_settled left unwelded.
   void weld_pending();
   /// Every block left to weld when settled, from now (the delay counts from here).
   void unweld_all();
-  bool capture_again(const std::vector<int>& blocks, const DrawPatches& draw_patches, bool kept);
+  bool capture_again(const std::vector<int>& blocks, const DrawPatches& draw_patches, bool kept,
+                     const std::vector<long long>& counted);
   /// Counts a refresh: the stale blocks are fresh, the stored triangles those of `key`.
   bool refreshed(const Key& key);
   /// The stored triangles with `blocks` replaced by the scratch buffer's, of new counts.

@@ -66,9 +66,16 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   // Blocks captured again are copied into place and welded from their captured vertices, beside
   // clean ones that may be assembled: all captured copies current first.
   if (!captured.empty()) copy_back_evaluated();
+  // After a change of topology, the captured blocks' counts from their patches' levels, where the
+  // count pass agrees with the tessellator (check_patch_triangles): no query per block, which a GPU
+  // pays for with a pause of the feedback each.
+  const std::vector<long long> counted =
+      topology_pending_ && !captured.empty() && !captured_kept && patch_triangles_agree_ && patch_triangles
+          ? counted_triangles(captured, patch_triangles)
+          : std::vector<long long>{};
   glUseProgram(GLuint(capture_program));
   evaluated_patches_ = blocks_.stale_patches() - captured_patches;
-  if (!captured.empty() && !capture_again(captured, draw_patches, captured_kept)) return false;
+  if (!captured.empty() && !capture_again(captured, draw_patches, captured_kept, counted)) return false;
   // A drag that evaluates keeps its vertices welded for its next edit.
   if (!evaluated.empty()) weld_pending();
   // A change of topology that left every block as it was (no patch added or changed): welded anew
@@ -97,13 +104,22 @@ void SurfaceCache::evaluate_again(const std::vector<int>& blocks, bool third, co
 
 // `blocks` captured again into the scratch buffer, under the capture's camera, and copied into
 // place; where their counts changed (adaptive levels), assembled with the others in the spare buffer.
-// `kept`: their levels, and so their counts, are those stored.
-bool SurfaceCache::capture_again(const std::vector<int>& blocks, const DrawPatches& draw_patches, bool kept) {
-  long long stale_triangles = 0;
-  for (const int b : blocks) stale_triangles += blocks_.triangles(b);
-  reserve(scratch_, scratch_capacity_, std::max(2 * stale_triangles, 1024ll));  // room for more where levels change
+// `kept`: their levels, and so their counts, are those stored; else `counted`: their counts, where not
+// empty, or none known.
+bool SurfaceCache::capture_again(const std::vector<int>& blocks, const DrawPatches& draw_patches, bool kept,
+                                 const std::vector<long long>& counted) {
+  long long stale_triangles = 0, counted_total = 0;
+  std::vector<long long> stored;
+  for (const int b : blocks) {
+    stale_triangles += blocks_.triangles(b);
+    if (kept) stored.push_back(blocks_.triangles(b));
+  }
+  for (const long long c : counted) counted_total += c;
+  const std::vector<long long>* known = kept ? &stored : counted.empty() ? nullptr : &counted;
+  // Room for more where levels change.
+  reserve(scratch_, scratch_capacity_, std::max({2 * stale_triangles, counted_total, 1024ll}));
   std::vector<long long> counts;
-  while (!capture_blocks(scratch_, scratch_capacity_, blocks, draw_patches, counts, false, kept)) {
+  while (!capture_blocks(scratch_, scratch_capacity_, blocks, draw_patches, counts, false, known)) {
     if (scratch_capacity_ >= most_triangles()) return false;
     reserve(scratch_, scratch_capacity_, std::min(2 * scratch_capacity_, most_triangles()));
   }
