@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Packs what checks gpsurf on another machine's GPU into DIR (default out/gpu-bundle, about 90 MB) and
-# DIR.tar.xz (about 10 MB: the binaries share their static libraries, which xz's large window finds):
+# DIR.tar.xz (about 8 MB: the binaries share their static libraries, which xz's large window finds):
 # the GL tests that need no OpenImageIO (no image format besides PNG) and the frame benchmarks, stripped, with the shared
 # libraries they need beyond glibc, libstdc++ and the GL loader (libEGL). On the GPU machine:
 #   DIR/run.sh OUT [tests|bench|all]
