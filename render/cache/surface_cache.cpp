@@ -116,22 +116,32 @@ std::vector<int> SurfaceCache::checked_blocks() const {
   return blocks;
 }
 
-std::vector<int> SurfaceCache::checked_patches() const {
+std::vector<int> SurfaceCache::checked_patches() const { return patches_of(checked_blocks()); }
+
+void SurfaceCache::check_patch_triangles(const std::vector<int>& counts) {
+  const std::vector<int> blocks = checked_blocks();
+  const std::vector<long long> sums = block_sums(blocks, counts);
+  patch_triangles_agree_ = !sums.empty();
+  for (size_t i = 0; i < sums.size(); ++i)
+    patch_triangles_agree_ = patch_triangles_agree_ && sums[i] == blocks_.triangles(blocks[i]);
+}
+
+std::vector<int> SurfaceCache::patches_of(const std::vector<int>& blocks) const {
   std::vector<int> patches;
-  for (const int b : checked_blocks())
+  for (const int b : blocks)
     for (int p = blocks_.first_patch(b); p < blocks_.first_patch(b) + blocks_.patches_in(b); ++p) patches.push_back(p);
   return patches;
 }
 
-void SurfaceCache::check_patch_triangles(const std::vector<int>& counts) {
+std::vector<long long> SurfaceCache::block_sums(const std::vector<int>& blocks, const std::vector<int>& counts) const {
+  size_t patches = 0;
+  for (const int b : blocks) patches += size_t(blocks_.patches_in(b));
+  if (counts.size() != patches) return {};
+  std::vector<long long> sums(blocks.size(), 0);
   size_t next = 0;
-  patch_triangles_agree_ = !counts.empty();
-  for (const int b : checked_blocks()) {
-    long long sum = 0;
-    for (int i = 0; i < blocks_.patches_in(b) && next < counts.size(); ++i) sum += counts[next++];
-    patch_triangles_agree_ = patch_triangles_agree_ && sum == blocks_.triangles(b);
-  }
-  patch_triangles_agree_ = patch_triangles_agree_ && next == counts.size();
+  for (size_t i = 0; i < blocks.size(); ++i)
+    for (int k = 0; k < blocks_.patches_in(blocks[i]); ++k) sums[i] += counts[next++];
+  return sums;
 }
 
 bool SurfaceCache::matches(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport) const {
@@ -250,16 +260,7 @@ bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std
 
 std::vector<long long> SurfaceCache::counted_triangles(const std::vector<int>& blocks,
                                                        const PatchTriangles& patch_triangles) const {
-  std::vector<int> patches;
-  for (const int b : blocks)
-    for (int p = blocks_.first_patch(b); p < blocks_.first_patch(b) + blocks_.patches_in(b); ++p) patches.push_back(p);
-  const std::vector<int> counts = patch_triangles(patches);
-  if (counts.size() != patches.size()) return {};
-  std::vector<long long> sums(blocks.size(), 0);
-  size_t next = 0;
-  for (size_t i = 0; i < blocks.size(); ++i)
-    for (int k = 0; k < blocks_.patches_in(blocks[i]); ++k) sums[i] += counts[next++];
-  return sums;
+  return block_sums(blocks, patch_triangles(patches_of(blocks)));
 }
 
 bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches,

@@ -285,6 +285,11 @@ private:
   /// Per block of `blocks`: the sum of its patches' triangle counts (`patch_triangles`); empty where
   /// they cannot be had.
   std::vector<long long> counted_triangles(const std::vector<int>& blocks, const PatchTriangles& patch_triangles) const;
+  /// The patches of `blocks`, in their order.
+  std::vector<int> patches_of(const std::vector<int>& blocks) const;
+  /// Per block of `blocks`: the sum of `counts`, one per patch of patches_of(blocks); empty where
+  /// `counts` has another length.
+  std::vector<long long> block_sums(const std::vector<int>& blocks, const std::vector<int>& counts) const;
   void evaluate_again(const std::vector<int>& blocks, bool third, const EvaluateWelded& evaluate_welded);
   /// Welds now what Weld::when_settled left unwelded.
   void weld_pending();
