@@ -48,10 +48,14 @@ public:
         throw Error(source + ": " + names.vertex(int(i)) + " has a position that is not finite");
     if (!checked) check_faces(t, source, names);
     // A reader's arrays grew by doubling: the mesh keeps them at their size, copied before the
-    // connectivity's larger temporaries exist.
-    means.shrink_to_fit();
-    t.offsets.shrink_to_fit();
-    t.verts.shrink_to_fit();
+    // connectivity's larger temporaries exist. A modelling operation's room to grow (arrays_of) is
+    // kept rather than copied away.
+    const auto fit = [](auto& array) {
+      if (array.capacity() > array.size() + array.size() / 8) array.shrink_to_fit();
+    };
+    fit(means);
+    fit(t.offsets);
+    fit(t.verts);
     CovarianceMesh m;
     // The checks before the vertices' rows: their temporaries and the rows are not held at once.
     m.connectivity_ = c ? std::move(*c) : edge_connectivity(t);
