@@ -223,12 +223,14 @@ void SurfaceCache::reserve(unsigned buffer, long long& capacity, long long trian
 // consecutive blocks is then one draw, whose triangles the feedback writes in the same order.
 bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
                                   const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize,
-                                  const std::vector<long long>* known) {
-  if (!known)
-    while (queries_.size() < blocks.size()) queries_.emplace_back(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+                                  const std::vector<long long>* known, long long* written) {
+  const bool checked = known && written;
+  while (queries_.size() < (known ? checked ? 1u : 0u : blocks.size()))
+    queries_.emplace_back(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
   glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer, 0, GLsizeiptr(capacity * 3 * kCapturedVertexBytes));
   if (!rasterize) glEnable(GL_RASTERIZER_DISCARD);
   glBeginTransformFeedback(GL_TRIANGLES);
+  if (checked) glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queries_[0]);
   for (size_t i = 0; i < blocks.size();) {
     size_t end = i + 1;
     if (known)
@@ -239,6 +241,7 @@ bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std
     if (!known) glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
     i = end;
   }
+  if (checked) glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
   glEndTransformFeedback();
   glDisable(GL_RASTERIZER_DISCARD);
   glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
@@ -254,6 +257,11 @@ bool SurfaceCache::capture_blocks(unsigned buffer, long long capacity, const std
     }
     total += counts[i];
   }
+  if (checked) {
+    GLuint64 primitives = 0;
+    glGetQueryObjectui64v(queries_[0], GL_QUERY_RESULT, &primitives);
+    *written = (long long)primitives;
+  }
   check_gl_errors("capturing the surface");
   return known ? total <= capacity : total < capacity;  // a full buffer may have dropped triangles
 }
@@ -264,7 +272,8 @@ std::vector<long long> SurfaceCache::counted_triangles(const std::vector<int>& b
 }
 
 bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches,
-                           long long estimate, const DrawPatches& draw_patches, bool rasterize) {
+                           long long estimate, const DrawPatches& draw_patches, bool rasterize,
+                           const std::vector<int>* patch_counts) {
   ++captures_;
   key_ = key;
   view_projection_ = view_projection;
@@ -281,6 +290,11 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
   }
   std::vector<int> all(size_t(blocks_.size()));
   for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);
+  last_capture_counted_ = patch_counts && capture_counted(all, draw_patches, rasterize, *patch_counts);
+  if (last_capture_counted_) {
+    weld();
+    return true;
+  }
   reserve(buffer_, capacity_, estimate);
   std::vector<long long> counts;
   while (!capture_blocks(buffer_, capacity_, all, draw_patches, counts, rasterize)) {
@@ -294,6 +308,26 @@ bool SurfaceCache::capture(const Key& key, const glm::mat4& view_projection, glm
   }
   blocks_.set_counts(counts);
   weld();
+  return true;
+}
+
+bool SurfaceCache::capture_counted(const std::vector<int>& all, const DrawPatches& draw_patches, bool rasterize,
+                                   const std::vector<int>& patch_counts) {
+  const std::vector<long long> counts = block_sums(all, patch_counts);
+  if (counts.size() != all.size()) return false;
+  long long total = 0;
+  for (const long long c : counts) total += c;
+  if (total >= most_triangles()) return false;  // refused by the capture block by block
+  reserve(buffer_, capacity_, total);
+  std::vector<long long> captured;
+  long long written = -1;
+  if (!capture_blocks(buffer_, capacity_, all, draw_patches, captured, rasterize, &counts, &written)) return false;
+  if (written != total) {
+    counts_missed_ = true;
+    patch_triangles_agree_ = false;
+    return false;
+  }
+  blocks_.set_counts(counts);
   return true;
 }
 

@@ -133,8 +133,20 @@ public:
   /// under transform feedback, with the rasteriser off or (`rasterize`: a frame drawn as it is
   /// captured) on. `estimate` triangles size the buffer; a full buffer grows and captures again, up
   /// to the memory limit, past which the inputs are refused (drawn live). False when refused.
+  /// With `patch_counts` (each patch's triangles, from its levels: where counts_captures()), the
+  /// blocks' counts are their sums and the buffer is sized by them: the patches go in one draw, whose
+  /// triangles one query checks, where a query per block would pause a GPU's feedback once per block.
+  /// Counts that miss the query's are not used again: the capture is made block by block.
   bool capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches, long long estimate,
-               const DrawPatches& draw_patches, bool rasterize = false);
+               const DrawPatches& draw_patches, bool rasterize = false, const std::vector<int>* patch_counts = nullptr);
+  /// Whether a capture takes the patches' triangle counts: on (the default) and the counts agreed
+  /// with the queries of the last capture made block by block (check_patch_triangles()), and with
+  /// every counted capture since.
+  bool counts_captures() const { return counted_captures_ && patch_triangles_agree_ && !counts_missed_; }
+  void set_counted_captures(bool counted) { counted_captures_ = counted; }
+  /// Whether the last capture took the patches' counts (else it queried each block, and
+  /// check_patch_triangles() may check the counts against it).
+  bool last_capture_counted() const { return last_capture_counted_; }
   /// The camera of the capture, under which refresh() captures blocks again and the level check
   /// evaluates adaptive levels, as the capture did.
   const glm::mat4& captured_view_projection() const { return view_projection_; }
@@ -279,9 +291,14 @@ private:
   /// Captures `blocks` one after the other into `buffer` from its start; their counts (counted by a
   /// query per block, or where `known` is given, those: consecutive blocks then go in one draw); false
   /// where the buffer was full (and some triangles may be missing).
+  /// `written`, where given with `known`: set to the triangles the feedback wrote, by one query.
   bool capture_blocks(unsigned buffer, long long capacity, const std::vector<int>& blocks,
                       const DrawPatches& draw_patches, std::vector<long long>& counts, bool rasterize = false,
-                      const std::vector<long long>* known = nullptr);
+                      const std::vector<long long>* known = nullptr, long long* written = nullptr);
+  /// capture()'s capture of every block by their patches' counts; false where the buffer would not
+  /// fit them or the feedback wrote another number of triangles (counts_missed_ then).
+  bool capture_counted(const std::vector<int>& all, const DrawPatches& draw_patches, bool rasterize,
+                       const std::vector<int>& patch_counts);
   /// Per block of `blocks`: the sum of its patches' triangle counts (`patch_triangles`); empty where
   /// they cannot be had.
   std::vector<long long> counted_triangles(const std::vector<int>& blocks, const PatchTriangles& patch_triangles) const;
@@ -330,6 +347,9 @@ private:
   bool stored_ = false, refused_ = false;
   bool topology_pending_ = false;  // the stale blocks follow a change of topology: captured again
   bool patch_triangles_agree_ = false;  // the last check_patch_triangles() found every block's count
+  bool counted_captures_ = true;
+  bool counts_missed_ = false;  // a counted capture's query found another total: captures query blocks
+  bool last_capture_counted_ = false;
   Key key_;
   glm::mat4 view_projection_{1.0f};
   glm::vec2 viewport_{0.0f};

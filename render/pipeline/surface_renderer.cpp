@@ -325,21 +325,32 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
     const long long halves = half_size_patches_, half_level = (level + 1) / 2;
     estimate += ((patches - halves) * 2 * level * level + halves * 2 * half_level * half_level) * 5 / 4;
   }
+  // Each patch's triangles from its levels, where they agreed with the queries before: the blocks
+  // are then captured in one draw (SurfaceCache::capture).
+  std::vector<int> patch_counts;
+  if (cache_.counts_captures()) {
+    std::vector<int> all(static_cast<size_t>(n_patches()));
+    std::iota(all.begin(), all.end(), 0);
+    patch_counts = triangle_counts(view_projection, viewport, o, all);
+  }
   const bool triangle_wire = o.wireframe && shape() == PatchShape::triangle;
   const ShaderProgram& program =
       patches_.program(shape(), triangle_wire ? PatchOutput::capture : PatchOutput::shaded_capture);
   set_frame_uniforms(program, camera, o, aspect, width, height, frame_);
   program.use();
   const auto draw = [&](int first, int count) { patches_.draw(shape(), program, o, n_patches(), first, count); };
-  if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire))
+  if (!cache_.capture(key, view_projection, viewport, n_patches(), estimate, draw, !triangle_wire,
+                      patch_counts.empty() ? nullptr : &patch_counts))
     return CacheFrame::live;
   if (key.pixels > 0.0f) {  // the levels an edit's refresh checks
     const ShaderProgram& record = stored_levels_.program(shape());
     set_level_uniforms(record, view_projection, viewport, o);
     stored_levels_.record(shape(), n_patches(), group_limit_);
   }
-  // The counts a change of topology's refresh may split blocks by, checked against the capture's.
-  cache_.check_patch_triangles(triangle_counts(view_projection, viewport, o, cache_.checked_patches()));
+  // The counts a change of topology's refresh may split blocks by, checked against the capture's
+  // queries (a counted capture checked them all by its one).
+  if (!cache_.last_capture_counted())
+    cache_.check_patch_triangles(triangle_counts(view_projection, viewport, o, cache_.checked_patches()));
   return triangle_wire ? CacheFrame::stored : CacheFrame::drawn;  // the triangle wireframe: drawn from the cache
 }
 
