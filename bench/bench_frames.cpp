@@ -4,7 +4,9 @@
 // patches) and the floor (the cached triangles, welded, from a static vertex buffer, same shading).
 // `unwelded` is the floor without shared vertices; `welded` and `captured` are cached frames with
 // the stored vertices welded at each capture or never, whatever this device's default
-// (render/cache/surface_cache.h).
+// (render/cache/surface_cache.h). At adaptive levels, `capture` is a frame that captures everything
+// again (as a camera move past the hysteresis does), from the patches' counts in one draw, and
+// `queried_capture` the same with a query per block.
 // `gpsurf bench --render` prints the same four in one table from a few repetitions each; this one
 // lets Google Benchmark choose the iterations, as sub-millisecond frames on a GPU need.
 // Names: Frame/<kind>/<mesh>/<setting>, e.g. Frame/floor/valence5/level16, Frame/cached/sphere:100000/adaptive6px.
@@ -28,8 +30,9 @@ namespace {
 
 // unwelded: the floor's triangles with three vertices each, as the cache stores them (what sharing
 // vertices saves on the device); update: the edit's compute passes alone, no frame.
-enum class FrameKind { live, cached, edit, floor, unwelded, update, welded, captured };
-constexpr const char* kKindNames[] = {"live", "cached", "edit", "floor", "unwelded", "update", "welded", "captured"};
+enum class FrameKind { live, cached, edit, floor, unwelded, update, welded, captured, capture, queried_capture };
+constexpr const char* kKindNames[] = {"live",   "cached",   "edit",    "floor",          "unwelded",
+                                      "update", "welded",   "captured", "capture", "queried_capture"};
 
 gps::TriangleMesh unwelded(const gps::TriangleMesh& welded) {
   gps::TriangleMesh soup;
@@ -75,6 +78,8 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   renderer.surface_cache().set_weld(kind == FrameKind::welded     ? Weld::at_capture
                                     : kind == FrameKind::captured ? Weld::off
                                                                   : s.weld_default);
+  const bool captures_everything = kind == FrameKind::capture || kind == FrameKind::queried_capture;
+  renderer.surface_cache().set_counted_captures(kind != FrameKind::queried_capture);
   // Fills the cache (or compiles the live programs); the second, still frame welds it where that
   // waits for one, as an editor's drag starts from a still frame.
   renderer.draw(s.target, s.edits.camera(), o);
@@ -93,6 +98,7 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   const std::vector<int> edited = s.edits.middle_vertices(1);
   const auto frame = [&] {
     if (kind == FrameKind::edit || kind == FrameKind::update) s.edits.edit(edited);
+    if (captures_everything) o.pixels = o.pixels == 6.0f ? 6.001f : 6.0f;  // another key: everything captured again
     if (kind != FrameKind::update) renderer.draw(s.target, s.edits.camera(), o);
   };
   // Warm-up: the first frame of a kind may compile or allocate (reported apart as first_ms).
@@ -125,6 +131,7 @@ void BM_Frame(benchmark::State& state, MeshCase m, FrameKind kind, int level) {
   state.counters["patches"] = double(renderer.tables().plans.n_patches());
   state.counters["gpu_ms"] = gpu_ns * 1e-6 / double(std::max<benchmark::IterationCount>(1, state.iterations()));
   state.counters["first_ms"] = first_ms;
+  if (captures_everything) state.counters["counted"] = cache.last_capture_counted() ? 1.0 : 0.0;
   // The vertices a frame from the cache fetches (read back, after the timing).
   if (kind != FrameKind::live && kind != FrameKind::floor && kind != FrameKind::unwelded &&
       cache.has_stored_triangles())
@@ -140,8 +147,10 @@ int main(int argc, char** argv) {
                                         {"pawn", 0},     {"pawn-quads", 0},  {"sphere", 100000}};
   for (const MeshCase& m : meshes)
     for (const int level : {1, 4, 16, 64, 0})
-      for (const FrameKind kind : {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor,
-                                   FrameKind::unwelded, FrameKind::update, FrameKind::welded, FrameKind::captured}) {
+      for (const FrameKind kind :
+           {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor, FrameKind::unwelded,
+            FrameKind::update, FrameKind::welded, FrameKind::captured, FrameKind::capture, FrameKind::queried_capture}) {
+        if ((kind == FrameKind::capture || kind == FrameKind::queried_capture) && level > 0) continue;
         const std::string id = m.id() + "/" + gps::bench::setting_name(level);
         benchmark::RegisterBenchmark(("Frame/" + std::string(kKindNames[int(kind)]) + "/" + id).c_str(), BM_Frame, m,
                                      kind, level)

@@ -139,9 +139,9 @@ public:
   /// Counts that miss the query's are not used again: the capture is made block by block.
   bool capture(const Key& key, const glm::mat4& view_projection, glm::vec2 viewport, int n_patches, long long estimate,
                const DrawPatches& draw_patches, bool rasterize = false, const std::vector<int>* patch_counts = nullptr);
-  /// Whether a capture takes the patches' triangle counts: on (the default) and the counts agreed
-  /// with the queries of the last capture made block by block (check_patch_triangles()), and with
-  /// every counted capture since.
+  /// Whether a capture, and a refresh's capture of blocks whose counts changed, take the patches'
+  /// triangle counts: on (the default) and the counts agreed with the queries of the last capture
+  /// made block by block (check_patch_triangles()), and with every counted capture since.
   bool counts_captures() const { return counted_captures_ && patch_triangles_agree_ && !counts_missed_; }
   void set_counted_captures(bool counted) { counted_captures_ = counted; }
   /// Whether the last capture took the patches' counts (else it queried each block, and

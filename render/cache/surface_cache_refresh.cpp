@@ -66,13 +66,13 @@ bool SurfaceCache::refresh(const Key& key, const DrawPatches& draw_patches, cons
   // Blocks captured again are copied into place and welded from their captured vertices, beside
   // clean ones that may be assembled: all captured copies current first.
   if (!captured.empty()) copy_back_evaluated();
-  // After a change of topology, the captured blocks' counts from their patches' levels, where the
-  // count pass agrees with the tessellator (check_patch_triangles): no query per block, which a GPU
-  // pays for with a pause of the feedback each.
-  const std::vector<long long> counted =
-      topology_pending_ && !captured.empty() && !captured_kept && patch_triangles_agree_ && patch_triangles
-          ? counted_triangles(captured, patch_triangles)
-          : std::vector<long long>{};
+  // Blocks whose counts are not those stored (after a change of topology, or an adaptive edit that
+  // changed levels): their counts from their patches' levels, where the count pass agrees with the
+  // tessellator (counts_captures()): no query per block, which a GPU pays for with a pause of the
+  // feedback each.
+  const std::vector<long long> counted = !captured.empty() && !captured_kept && counts_captures() && patch_triangles
+                                             ? counted_triangles(captured, patch_triangles)
+                                             : std::vector<long long>{};
   glUseProgram(GLuint(capture_program));
   evaluated_patches_ = blocks_.stale_patches() - captured_patches;
   if (!captured.empty() && !capture_again(captured, draw_patches, captured_kept, counted)) return false;
