@@ -31,8 +31,8 @@ namespace {
 // unwelded: the floor's triangles with three vertices each, as the cache stores them (what sharing
 // vertices saves on the device); update: the edit's compute passes alone, no frame.
 enum class FrameKind { live, cached, edit, floor, unwelded, update, welded, captured, capture, queried_capture };
-constexpr const char* kKindNames[] = {"live",   "cached",   "edit",    "floor",          "unwelded",
-                                      "update", "welded",   "captured", "capture", "queried_capture"};
+constexpr const char* kKindNames[] = {"live",   "cached", "edit",     "floor",   "unwelded",
+                                      "update", "welded", "captured", "capture", "queried_capture"};
 
 gps::TriangleMesh unwelded(const gps::TriangleMesh& welded) {
   gps::TriangleMesh soup;
@@ -147,9 +147,9 @@ int main(int argc, char** argv) {
                                         {"pawn", 0},     {"pawn-quads", 0},  {"sphere", 100000}};
   for (const MeshCase& m : meshes)
     for (const int level : {1, 4, 16, 64, 0})
-      for (const FrameKind kind :
-           {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor, FrameKind::unwelded,
-            FrameKind::update, FrameKind::welded, FrameKind::captured, FrameKind::capture, FrameKind::queried_capture}) {
+      for (const FrameKind kind : {FrameKind::live, FrameKind::cached, FrameKind::edit, FrameKind::floor,
+                                   FrameKind::unwelded, FrameKind::update, FrameKind::welded, FrameKind::captured,
+                                   FrameKind::capture, FrameKind::queried_capture}) {
         if ((kind == FrameKind::capture || kind == FrameKind::queried_capture) && level > 0) continue;
         const std::string id = m.id() + "/" + gps::bench::setting_name(level);
         benchmark::RegisterBenchmark(("Frame/" + std::string(kKindNames[int(kind)]) + "/" + id).c_str(), BM_Frame, m,

@@ -468,8 +468,8 @@ TEST_P(SurfaceCacheTest, CountedCapturesStoreWhatBlockByBlockCapturesStore) {
         EXPECT_EQ(counted.surface_cache().last_capture_counted(), k > 0) << what << ", capture " << k;
         EXPECT_FALSE(queried.surface_cache().last_capture_counted()) << what;
         EXPECT_EQ(differing_pixels(a, b), 0u) << what << ", capture " << k;
-        EXPECT_TRUE(same_triangles(counted.surface_cache().stored_triangles(),
-                                   queried.surface_cache().stored_triangles()))
+        EXPECT_TRUE(
+            same_triangles(counted.surface_cache().stored_triangles(), queried.surface_cache().stored_triangles()))
             << what << ", capture " << k;
         // The blocks lie where their counts say: an edit's refresh captures its blocks into place.
         CovarianceMesh edited = mesh;
@@ -479,8 +479,8 @@ TEST_P(SurfaceCacheTest, CountedCapturesStoreWhatBlockByBlockCapturesStore) {
         const Frame c = draw(counted, counted_target, camera, o, true);
         EXPECT_EQ(differing_pixels(c, draw(queried, queried_target, camera, o, true)), 0u) << what << ", edit " << k;
         EXPECT_EQ(counted.surface_cache().captures(), k + 1) << what << ", edit " << k;
-        EXPECT_TRUE(same_triangles(counted.surface_cache().stored_triangles(),
-                                   queried.surface_cache().stored_triangles()))
+        EXPECT_TRUE(
+            same_triangles(counted.surface_cache().stored_triangles(), queried.surface_cache().stored_triangles()))
             << what << ", edit " << k;
         // Captured again under another camera: by the camera at adaptive levels where it moves beyond
         // the hysteresis, and by the mesh given again (a file opened).
