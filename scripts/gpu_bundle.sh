@@ -49,10 +49,10 @@ if [ "\$mode" != bench ]; then
   done
 fi
 if [ "\$mode" != tests ]; then
-  # Live, edited and floor frames of three meshes at two settings: all 320 cases take longer than a
-  # device session holds.
+  # Live, edited and floor frames of three meshes at two settings, and full captures from counts and
+  # by a query per block at adaptive levels: all the cases take longer than a device session holds.
   "\$here/bin/gpsurf_bench_frames" --benchmark_min_time=0.1 \\
-    --benchmark_filter='^Frame/(live|edit|floor)/(wirecube|pawn|sphere:100000)/(level16|adaptive6px)' \\
+    --benchmark_filter='^Frame/(live|edit|floor|capture|queried_capture)/(wirecube|pawn|sphere:100000)/(level16|adaptive6px)' \\
     --benchmark_out="\$out/frames.json" --benchmark_out_format=json | tee "\$out/frames.txt"
   # Creased frames against smooth ones (sub-millisecond on a GPU: half a second each).
   "\$here/bin/gpsurf_bench_creases" --benchmark_min_time=0.5 \\
