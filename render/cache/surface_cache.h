@@ -142,7 +142,7 @@ public:
   /// Whether a capture, and a refresh's capture of blocks whose counts changed, take the patches'
   /// triangle counts: on (the default) and the counts agreed with the queries of the last capture
   /// made block by block (check_patch_triangles()), and with every counted capture since.
-  bool counts_captures() const { return counted_captures_ && patch_triangles_agree_ && !counts_missed_; }
+  bool counts_captures() const { return counted_captures_ && patch_triangles_agree_; }
   void set_counted_captures(bool counted) { counted_captures_ = counted; }
   /// Whether the last capture took the patches' counts (else it queried each block, and
   /// check_patch_triangles() may check the counts against it).
@@ -166,7 +166,8 @@ public:
   /// block, or of blocks spread evenly over the surface, up to kCheckedPatches.
   std::vector<int> checked_patches() const;
   /// Their triangle counts found from their levels, in that order, checked against the count of each
-  /// of their blocks. Where all agree, refresh() may locate patches inside blocks by such counts.
+  /// of their blocks. Where all agree (and no counted capture ever missed its query), refresh() may
+  /// locate patches inside blocks by such counts.
   void check_patch_triangles(const std::vector<int>& counts);
   static constexpr int kCheckedPatches = 8192;
   /// The uniform level from which an edit evaluates welded vertices again: kSettledEvaluatedFromLevel
@@ -346,9 +347,10 @@ private:
   long long tracked_points_ = -1;  // the points the stale blocks lead to (−1: untracked)
   bool stored_ = false, refused_ = false;
   bool topology_pending_ = false;  // the stale blocks follow a change of topology: captured again
-  bool patch_triangles_agree_ = false;  // the last check_patch_triangles() found every block's count
+  // The last check_patch_triangles() found every block's count, and no counted capture missed its query.
+  bool patch_triangles_agree_ = false;
   bool counted_captures_ = true;
-  bool counts_missed_ = false;  // a counted capture's query found another total: captures query blocks
+  bool counts_missed_ = false;  // a counted capture's query found another total: never agreed again
   bool last_capture_counted_ = false;
   Key key_;
   glm::mat4 view_projection_{1.0f};

@@ -183,6 +183,9 @@ private:
   /// The triangle counts of `patches` at the levels of `options` under this camera and viewport.
   std::vector<int> triangle_counts(const glm::mat4& view_projection, glm::vec2 viewport, const DrawOptions& options,
                                    const std::vector<int>& patches);
+  /// The same for every patch.
+  std::vector<int> all_triangle_counts(const glm::mat4& view_projection, glm::vec2 viewport,
+                                       const DrawOptions& options);
   /// The stored triangles with the bound program, counted while collecting statistics.
   void draw_cache(bool grid);
   /// Whether a cached frame of these options draws the quads' wireframe: their tessellation grid,

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <thread>
 #include <vector>
@@ -19,10 +18,19 @@
 #include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/device_limits.h"
+#include "tests/support/cache_frames.h"
 #include "tests/support/gl_fixture.h"
 
 namespace gps {
 namespace {
+
+using test::adaptive;
+using test::differing_pixels;
+using test::draw;
+using test::Frame;
+using test::move_vertex;
+using test::same_triangles;
+using test::uniform;
 
 // Each test with the stored vertices welded at each capture (as on a GPU), by the first frame that
 // draws them unchanged (as on llvmpipe), and never.
@@ -32,32 +40,6 @@ protected:
 };
 
 constexpr int kSize = 160;
-
-// Colour, position and normal AOVs of one frame.
-struct Frame {
-  Image layers[3];
-};
-
-Frame draw(SurfaceRenderer& renderer, const RenderTarget& target, const Camera& camera, DrawOptions o, bool cache) {
-  o.surface_cache = cache;
-  renderer.draw(target, camera, o);
-  Frame f;
-  for (int a = 0; a < 3; ++a) f.layers[a] = target.read(a);
-  return f;
-}
-
-// Pixels (of any layer) whose floats differ in any bit.
-size_t differing_pixels(const Frame& a, const Frame& b) {
-  size_t count = 0;
-  for (int l = 0; l < 3; ++l) {
-    const Image &x = a.layers[l], &y = b.layers[l];
-    if (x.pixels.size() != y.pixels.size()) return size_t(-1);
-    const size_t c = size_t(x.channels);
-    for (size_t i = 0; i < x.pixels.size(); i += c)
-      count += std::memcmp(&x.pixels[i], &y.pixels[i], c * sizeof(float)) != 0;
-  }
-  return count;
-}
 
 // A cached frame against the live one. The stored triangles are the live pipeline's own vertices,
 // but llvmpipe projects a vertex stage's output in that stage's code and a tessellation stage's
@@ -88,24 +70,6 @@ size_t differing_pixels(const Frame& a, const Frame& b) {
       }
   }
   return ::testing::AssertionSuccess();
-}
-
-// Moves base vertex v by `fraction` of the mesh's diagonal (a different direction per vertex).
-void move_vertex(CovarianceMesh& mesh, int v, double fraction) {
-  const Vec3 direction = Vec3(1.0 + v % 3, 0.5 - v % 2, 0.25 + v % 5).normalized();
-  mesh.set_mean(size_t(v), mesh.mean(size_t(v)) + fraction * bounding_box_diagonal(mesh) * direction);
-}
-
-DrawOptions uniform(float level) {
-  DrawOptions o;
-  o.level = level;
-  return o;
-}
-
-DrawOptions adaptive(float pixels) {
-  DrawOptions o;
-  o.pixels = pixels;
-  return o;
 }
 
 TEST_P(SurfaceCacheTest, CachedFramesEqualLiveFrames) {
@@ -230,18 +194,6 @@ TEST_P(SurfaceCacheTest, WeldedVerticesAreEachSurfacePointOnce) {
     EXPECT_EQ(cache.distinct_vertices(), distinct) << level;
     EXPECT_TRUE(same_surface(settled, draw(renderer, target, camera, uniform(level), false))) << level;
   }
-}
-
-// The stored triangles of two frames (read back) are the same, bit for bit.
-::testing::AssertionResult same_triangles(const TriangleMesh& a, const TriangleMesh& b) {
-  if (a.triangles != b.triangles || a.positions.size() != b.positions.size())
-    return ::testing::AssertionFailure() << a.triangles.size() << " triangle corners against " << b.triangles.size();
-  size_t differing = 0;
-  for (size_t i = 0; i < a.positions.size(); ++i)
-    differing += a.positions[i] != b.positions[i] || a.normals[i] != b.normals[i];
-  if (differing > 0)
-    return ::testing::AssertionFailure() << differing << " of " << a.positions.size() << " vertices differ";
-  return ::testing::AssertionSuccess();
 }
 
 // An edit that keeps the tessellation (uniform levels from 8; adaptive levels where the level check
@@ -434,61 +386,6 @@ TEST_P(SurfaceCacheTest, AdaptiveLevelsRecaptureOnlyBeyondTheHysteresis) {
   // A different target edge length is a different key.
   draw(renderer, target, turned, adaptive(8), true);
   EXPECT_EQ(renderer.surface_cache().captures(), 5);
-}
-
-// A capture after one made block by block, once the patches' counts agreed with its queries, takes
-// the counts and captures every block in one draw: the same stored triangles and the same frame as a
-// capture that queries each block, on quads with boundaries and extraordinary vertices, a mixed
-// mesh, Loop's triangles and creases, at uniform and adaptive levels.
-TEST_P(SurfaceCacheTest, CountedCapturesStoreWhatBlockByBlockCapturesStore) {
-  RenderTarget counted_target(kSize, kSize), queried_target(kSize, kSize);
-  CovarianceMesh creased = make_sample("sphere", 600);
-  for (int v = 0; v + 1 < 40; ++v)
-    if (const int e = creased.find_edge(v, v + 1); e >= 0) creased.sharpness.creases.push_back({v, v + 1, 2.0});
-  creased.sharpness.normalise();
-  const std::vector<std::pair<std::string, CovarianceMesh>> meshes = {{"grid", make_sample("grid", 400)},
-                                                                      {"pawn", make_sample("pawn")},
-                                                                      {"icosphere", make_sample("icosphere", 320)},
-                                                                      {"creased sphere", creased}};
-  for (const auto& [name, mesh] : meshes)
-    for (const DrawOptions& o : {uniform(3), uniform(4.5f), adaptive(4), adaptive(12)}) {
-      const std::string what = name + (o.pixels > 0 ? " adaptive " + std::to_string(int(o.pixels)) + " px"
-                                                    : " level " + std::to_string(o.level));
-      SurfaceRenderer counted, queried;
-      for (SurfaceRenderer* r : {&counted, &queried}) {
-        r->surface_cache().set_weld(GetParam());
-        r->set_mesh(mesh);
-      }
-      queried.surface_cache().set_counted_captures(false);
-      Camera camera = frame_mesh(mesh, 35.0f, 25.0f);
-      for (int k = 0; k < 3; ++k) {
-        const Frame a = draw(counted, counted_target, camera, o, true);
-        const Frame b = draw(queried, queried_target, camera, o, true);
-        ASSERT_EQ(counted.surface_cache().captures(), k + 1) << what;
-        EXPECT_EQ(counted.surface_cache().last_capture_counted(), k > 0) << what << ", capture " << k;
-        EXPECT_FALSE(queried.surface_cache().last_capture_counted()) << what;
-        EXPECT_EQ(differing_pixels(a, b), 0u) << what << ", capture " << k;
-        EXPECT_TRUE(
-            same_triangles(counted.surface_cache().stored_triangles(), queried.surface_cache().stored_triangles()))
-            << what << ", capture " << k;
-        // The blocks lie where their counts say: an edit's refresh captures its blocks into place.
-        CovarianceMesh edited = mesh;
-        const int v = int(mesh.n_vertices()) / 3;
-        move_vertex(edited, v, 0.02);
-        for (SurfaceRenderer* r : {&counted, &queried}) r->update_vertices(edited, {v});
-        const Frame c = draw(counted, counted_target, camera, o, true);
-        EXPECT_EQ(differing_pixels(c, draw(queried, queried_target, camera, o, true)), 0u) << what << ", edit " << k;
-        EXPECT_EQ(counted.surface_cache().captures(), k + 1) << what << ", edit " << k;
-        EXPECT_TRUE(
-            same_triangles(counted.surface_cache().stored_triangles(), queried.surface_cache().stored_triangles()))
-            << what << ", edit " << k;
-        // Captured again under another camera: by the camera at adaptive levels where it moves beyond
-        // the hysteresis, and by the mesh given again (a file opened).
-        camera = frame_mesh(mesh, 35.0f + 50.0f * float(k + 1), 25.0f - 20.0f * float(k + 1));
-        camera.distance *= k == 0 ? 0.6f : 1.0f;
-        for (SurfaceRenderer* r : {&counted, &queried}) r->set_mesh(mesh);
-      }
-    }
 }
 
 // The memory limit follows the device's memory (on llvmpipe the machine's, which is always known).
@@ -721,14 +618,7 @@ TEST_F(SurfaceCacheWeldDelay, AWholeWeldWaitsForThePauseAndAPartialOneDoesNot) {
   EXPECT_TRUE(cache.stored_vertices_welded());
 }
 
-INSTANTIATE_TEST_SUITE_P(StoredVertices, SurfaceCacheTest,
-                         ::testing::Values(SurfaceCache::Weld::at_capture, SurfaceCache::Weld::when_settled,
-                                           SurfaceCache::Weld::off),
-                         [](const ::testing::TestParamInfo<SurfaceCache::Weld>& info) {
-                           return info.param == SurfaceCache::Weld::at_capture     ? "WeldedAtCapture"
-                                  : info.param == SurfaceCache::Weld::when_settled ? "WeldedWhenSettled"
-                                                                                   : "AsCaptured";
-                         });
+INSTANTIATE_TEST_SUITE_P(StoredVertices, SurfaceCacheTest, test::kWeldModes, test::weld_mode_name);
 
 }  // namespace
 }  // namespace gps
