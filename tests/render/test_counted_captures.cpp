@@ -16,13 +16,7 @@
 namespace gps {
 namespace {
 
-using test::adaptive;
-using test::differing_pixels;
-using test::draw;
-using test::Frame;
-using test::move_vertex;
-using test::same_triangles;
-using test::uniform;
+using namespace test;  // the cache tests' frames (tests/support/cache_frames.h)
 
 // Each test with the stored vertices welded at each capture (as on a GPU), by the first frame that
 // draws them unchanged (as on llvmpipe), and never.
