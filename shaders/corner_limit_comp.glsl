@@ -11,7 +11,7 @@
 layout(std430, binding = kBindingCornerLimits) writeonly buffer CornerLimits { vec4 corner_limits[]; };
 // Per corner slot: the limit point halfway along the edge that starts there, where that edge names its curve.
 layout(std430, binding = kBindingCurveMidpoints) writeonly buffer CurveMidpoints { vec4 curve_midpoints[]; };
-layout(std430, binding = kBindingCornerList) readonly buffer CornerList { int corner_list[]; };
+layout(std430, binding = kBindingCornerList) readonly buffer CornerList { int corner_items[]; };  // gpu_layout.h: kCornerItemOps
 
 #ifdef GPS_TRIANGLE_PATCHES
 const int kCorners = 3;
@@ -19,47 +19,45 @@ const int kCorners = 3;
 const int kCorners = 4;
 #endif
 
+// One item each: one evaluation, or a zeroed slot. Which slot evaluates what (its owner a corner, the
+// edge naming its curve a midpoint) the list's builder decides (render/pipeline/corner_limit_pass.h),
+// and it lists the evaluations first: a SIMD batch then runs the evaluation once, for all its lanes.
 void main() {
   int i = compute_invocation();
   if (i < 0) return;
-  int slot = u_use_list != 0 ? corner_list[i] : i;  // kCorners · patch + corner
+  int item = corner_items[i];
+  int slot = item / kCornerItemOps, op = item - kCornerItemOps * slot;  // kCorners · patch + corner
   int patch_id = slot / kCorners, corner = slot - kCorners * patch_id;
-  int owner_corner = corner_owners[2 * slot + 1];
-  bool owner = corner_owners[2 * slot] == patch_id && (owner_corner & kOwnerCornerMask) == corner;
-  bool evaluates_corner = owner || (owner_corner & kOwnerSharpCorner) != 0;  // else its owner's slot holds it
-  // The midpoint of the edge that starts at this corner, where that edge names its limit curve, for
-  // the adaptive levels (tess_levels.glsl).
-  int part = kCorners == 4 ? patch_edges[kPatchEdgeStride * patch_id + kPatchEdgeInts * corner + 2] : kEdgeWhole;
-  bool evaluates_midpoint = curve_edge(patch_id, corner, part, kCorners) == ivec2(patch_id, corner);
+  // A slot its patch does not evaluate holds zero, as the buffer does after allocation: a slot listed
+  // after a change of ownership (SurfaceRenderer's kept corner output) does not keep a stale value.
+  if (op == kCornerItemClearMidpoint) {
+    curve_midpoints[slot] = vec4(0.0);
+    return;
+  }
+  if (op == kCornerItemClearCorner) {
+    corner_limits[2 * slot] = vec4(0.0);
+    corner_limits[2 * slot + 1] = vec4(0.0);
+    return;
+  }
+  bool midpoint = op == kCornerItemMidpoint;
   // The corner's parameters as the tessellation stages' edge_point_uv gives them.
 #ifdef GPS_TRIANGLE_PATCHES
   vec2 corner_uv = corner == 0 ? vec2(0.0) : corner == 1 ? vec2(1.0, 0.0) : vec2(0.0, 1.0);
 #else
   vec2 corner_uv = vec2(corner == 1 || corner == 2 ? 1.0 : 0.0, corner >= 2 ? 1.0 : 0.0);
 #endif
-  // A slot its patch does not evaluate holds zero, as the buffer does after allocation: a slot listed
-  // after a change of ownership (SurfaceRenderer's kept corner output) does not keep a stale value.
-  if (!evaluates_midpoint) curve_midpoints[slot] = vec4(0.0);
-  if (!evaluates_corner) {
-    corner_limits[2 * slot] = vec4(0.0);
-    corner_limits[2 * slot + 1] = vec4(0.0);
-  }
-  for (int evaluation = 0; evaluation < 2; ++evaluation) {  // one evaluation in the loop: the shader compiles it once
-    bool midpoint = evaluation == 0;
-    if (!(midpoint ? evaluates_midpoint : evaluates_corner)) continue;
-    vec2 uv = midpoint ? edge_point_uv(EdgePoint(patch_id, corner, 1, 2), kCorners) : corner_uv;
-    vec3 mu, mu_u, mu_v;
-    int kind;
+  vec2 uv = midpoint ? edge_point_uv(EdgePoint(patch_id, corner, 1, 2), kCorners) : corner_uv;
+  vec3 mu, mu_u, mu_v;
+  int kind;
 #ifdef GPS_TRIANGLE_PATCHES
-    evaluate_triangle_plan(patch_id, uv.x, uv.y, mu, mu_u, mu_v, kind);
+  evaluate_triangle_plan(patch_id, uv.x, uv.y, mu, mu_u, mu_v, kind);
 #else
-    evaluate_plan(patch_id, uv, mu, mu_u, mu_v, kind);
+  evaluate_plan(patch_id, uv, mu, mu_u, mu_v, kind);
 #endif
-    if (midpoint) {
-      curve_midpoints[slot] = vec4(mu, 0.0);
-    } else {
-      corner_limits[2 * slot] = vec4(mu, float(kind));
-      corner_limits[2 * slot + 1] = vec4(normalize(cross(mu_u, mu_v)), 0.0);
-    }
+  if (midpoint) {
+    curve_midpoints[slot] = vec4(mu, 0.0);
+  } else {
+    corner_limits[2 * slot] = vec4(mu, float(kind));
+    corner_limits[2 * slot + 1] = vec4(normalize(cross(mu_u, mu_v)), 0.0);
   }
 }

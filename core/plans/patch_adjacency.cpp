@@ -271,4 +271,15 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
   return true;
 }
 
+PatchEdgeSlot curve_edge(const PatchPlans& plans, int patch, int k) {
+  const int32_t part = plans.shape == PatchShape::quad ? int32_t(patch_edge(plans, patch, k).part) : kEdgeWhole;
+  if (part == kEdgeWholeBesideHalves) return {patch, k};
+  const EdgeNeighbour across = edge_neighbour(plans, patch, k);
+  if (across.patch < 0) return {patch, k};
+  if (part != kEdgeWhole && patch_edge(plans, across.patch, across.edge).part == PatchEdgePart::whole_beside_halves)
+    return {across.patch, across.edge};
+  const bool lower = across.patch < patch || (across.patch == patch && across.edge < k);
+  return lower ? PatchEdgeSlot{across.patch, across.edge} : PatchEdgeSlot{patch, k};
+}
+
 }  // namespace gps

@@ -79,4 +79,24 @@ inline CornerOwner corner_owner(const PatchPlans& plans, int patch, int c) {
   return {r[0], r[1] & kOwnerCornerMask, (r[1] & kOwnerSharpCorner) != 0};
 }
 
+/// A patch edge: patch and edge index.
+struct PatchEdgeSlot {
+  int patch = -1;
+  int edge = -1;
+  bool operator==(const PatchEdgeSlot&) const = default;
+};
+
+/// The patch edge that names the limit curve patch edge k lies on, for both sides alike
+/// (shaders/canonical_edge.glsl, curve_edge): of a whole edge beside two half-size patches, that edge,
+/// and of each half beside it, the same; of a whole edge, and of a half beside another half or on the
+/// boundary, the lower of the two sides. The corner pass keeps the curve's midpoint at its slot.
+PatchEdgeSlot curve_edge(const PatchPlans& plans, int patch, int k);
+
+/// Whether the corner pass evaluates patch corner c's limit at the corner's own slot: at its owner,
+/// and at every patch around a corner whose patches have normals of their own.
+inline bool evaluates_corner(const PatchPlans& plans, int patch, int c) {
+  const CornerOwner owner = corner_owner(plans, patch, c);
+  return (owner.patch == patch && owner.corner == c) || owner.sharp;
+}
+
 }  // namespace gps

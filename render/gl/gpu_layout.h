@@ -25,7 +25,7 @@ GPS_LAYOUT_CONST int kBindingPatchEdges = 11;   // quads: patch edges and their 
 GPS_LAYOUT_CONST int kBindingPatchNeighbours = 12;  // per patch edge: the patch across (core/plans/patch_adjacency.h)
 GPS_LAYOUT_CONST int kBindingCornerOwners = 13;     // per patch corner: the patch that evaluates it
 GPS_LAYOUT_CONST int kBindingCornerLimits = 14;     // per patch corner: its owner's limit point, normal, node kind
-GPS_LAYOUT_CONST int kBindingCornerList = 15;       // an edit's corners to evaluate again
+GPS_LAYOUT_CONST int kBindingCornerList = 15;       // the corner pass's items (kCornerItemOps)
 GPS_LAYOUT_CONST int kBindingCurveMidpoints = 16;   // per patch corner: the limit point halfway along its edge (canonical_edge.glsl)
 GPS_LAYOUT_CONST int kBindingCount = 17;          // the plan buffers' bindings (render/pipeline/plan_buffers.h)
 // The surface cache's weld (shaders/weld_comp.glsl), past the plan buffers'.
@@ -51,6 +51,13 @@ GPS_LAYOUT_CONST int kBindingPatchNumbers = kBindingLevelPatches;
 GPS_LAYOUT_CONST int kBindingCountedPatches = kBindingLevelPatches;
 GPS_LAYOUT_CONST int kBindingPatchTriangles = kBindingLevelChanges;
 GPS_LAYOUT_CONST int kBindingLevelBound = 31;        // the largest level of a range of patches (render/pipeline/patch_level_bound.h)
+
+// The corner pass's items (shaders/corner_limit_comp.glsl): kCornerItemOps · slot + what it does there.
+GPS_LAYOUT_CONST int kCornerItemMidpoint = 0;       // evaluate the limit halfway along the edge that starts there
+GPS_LAYOUT_CONST int kCornerItemCorner = 1;         // evaluate the corner's limit point and normal
+GPS_LAYOUT_CONST int kCornerItemClearMidpoint = 2;  // the slot holds no midpoint: zero
+GPS_LAYOUT_CONST int kCornerItemClearCorner = 3;    // the slot holds no corner: zero
+GPS_LAYOUT_CONST int kCornerItemOps = 4;
 
 // Compute passes: invocations per work group.
 GPS_LAYOUT_CONST int kWorkGroupSize = 64;

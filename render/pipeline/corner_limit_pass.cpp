@@ -4,9 +4,11 @@
 
 #include <algorithm>
 
+#include "core/mesh/mesh_connectivity.h"
 #include "core/plans/patch_adjacency.h"
 #include "render/gl/compute_limits.h"
 #include "render/gl/gl_context.h"
+#include "render/gl/gpu_layout.h"
 #include "shaders/embedded_shaders.h"
 
 namespace gps {
@@ -15,14 +17,6 @@ CornerLimitPass::CornerLimitPass()
     : programs_(plan_compute_programs("corner_limits", true, {shaders::corner_limit_comp})) {}
 
 void CornerLimitPass::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
-
-void CornerLimitPass::run_all(const PatchPlans& plans, int group_limit) const {
-  run(plans, plans.corners() * plans.n_patches(), false, group_limit);
-}
-
-void CornerLimitPass::run_listed(const PatchPlans& plans, int n_listed, int group_limit) const {
-  run(plans, n_listed, true, group_limit);
-}
 
 std::vector<int> CornerLimitPass::edit_slots(const PatchPlans& plans, const std::vector<int>& patches) {
   const int n = plans.corners();
@@ -39,9 +33,65 @@ std::vector<int> CornerLimitPass::edit_slots(const PatchPlans& plans, const std:
   return slots;
 }
 
-void CornerLimitPass::run(const PatchPlans& plans, int count, bool use_list, int group_limit) const {
-  if (count <= 0) return;
-  run_compute_pass(programs_(plans.shape), count, use_list, group_limit);
+namespace {
+
+using gpu::kCornerItemOps;
+
+// Whether slot n·patch + c holds the midpoint of the edge that starts there: where that edge names its
+// limit curve (its corner: evaluates_corner).
+bool holds_midpoint(const PatchPlans& plans, int patch, int c) {
+  return curve_edge(plans, patch, c) == PatchEdgeSlot{patch, c};
+}
+
+}  // namespace
+
+std::vector<int> CornerLimitPass::slot_items(const PatchPlans& plans, const std::vector<int>& slots) {
+  const int n = plans.corners();
+  std::vector<int> items, zeros;
+  items.reserve(2 * slots.size());
+  zeros.reserve(2 * slots.size());
+  for (const int slot : slots) {
+    const int patch = slot / n, c = slot - n * patch;
+    if (holds_midpoint(plans, patch, c))
+      items.push_back(kCornerItemOps * slot + gpu::kCornerItemMidpoint);
+    else
+      zeros.push_back(kCornerItemOps * slot + gpu::kCornerItemClearMidpoint);
+    if (evaluates_corner(plans, patch, c))
+      items.push_back(kCornerItemOps * slot + gpu::kCornerItemCorner);
+    else
+      zeros.push_back(kCornerItemOps * slot + gpu::kCornerItemClearCorner);
+  }
+  items.insert(items.end(), zeros.begin(), zeros.end());
+  return items;
+}
+
+std::vector<int> CornerLimitPass::all_items(const PatchPlans& plans) {
+  const int n = plans.corners(), n_patches = plans.n_patches();
+  // Counted per patch first, so that the items are written in parallel, in slot order.
+  std::vector<int> first(size_t(n_patches) + 1, 0);
+#pragma omp parallel for schedule(static) if (n_patches >= kParallelFaces)
+  for (int p = 0; p < n_patches; ++p) {
+    int count = 0;
+    for (int c = 0; c < n; ++c) count += int(holds_midpoint(plans, p, c)) + int(evaluates_corner(plans, p, c));
+    first[size_t(p) + 1] = count;
+  }
+  for (int p = 0; p < n_patches; ++p) first[size_t(p) + 1] += first[size_t(p)];
+  std::vector<int> items(size_t(first.back()));
+#pragma omp parallel for schedule(static) if (n_patches >= kParallelFaces)
+  for (int p = 0; p < n_patches; ++p) {
+    int at = first[size_t(p)];
+    for (int c = 0; c < n; ++c) {
+      const int slot = n * p + c;
+      if (holds_midpoint(plans, p, c)) items[size_t(at++)] = kCornerItemOps * slot + gpu::kCornerItemMidpoint;
+      if (evaluates_corner(plans, p, c)) items[size_t(at++)] = kCornerItemOps * slot + gpu::kCornerItemCorner;
+    }
+  }
+  return items;
+}
+
+void CornerLimitPass::run(const PatchPlans& plans, int n_items, int group_limit) const {
+  if (n_items <= 0) return;
+  run_compute_pass(programs_(plans.shape), n_items, true, group_limit);
   check_gl_errors("the corner pass");
 }
 

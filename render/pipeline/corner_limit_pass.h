@@ -3,9 +3,11 @@
 // node kind at every patch corner its owner evaluates (and at a corner on an infinitely sharp crease,
 // the normal of each patch there), which the tessellation stages then read instead of evaluating a
 // corner themselves, and the limit point halfway along each patch edge that names its edge's limit
-// curve, which the adaptive levels measure (shaders/tess_levels.glsl); over every corner, or over an
-// edit's list (PlanBuffers::upload_corner_list). Dispatches split to the device's work-group count
-// limit.
+// curve, which the adaptive levels measure (shaders/tess_levels.glsl). It runs over a list of items
+// (PlanBuffers::upload_corner_list), one evaluation or zeroed value each, which its builder here
+// finds on the CPU: a slot's two values are then evaluated by two invocations, where one invocation
+// looping over both made each SIMD batch run both. Dispatches split to the device's work-group
+// count limit.
 #include <vector>
 
 #include "core/plans/patch_plans.h"
@@ -22,17 +24,18 @@ public:
   /// The pass for points of `precision` from now on (its programs built at the first use).
   void set_precision(PointPrecision precision);
 
-  /// Every corner slot of the plans' patches (buffers bound).
-  void run_all(const PatchPlans& plans, int group_limit) const;
-  /// The `n_listed` slots of the corner list (buffers bound).
-  void run_listed(const PatchPlans& plans, int n_listed, int group_limit) const;
+  /// Runs the corner list's first `n_items` items (buffers bound).
+  void run(const PatchPlans& plans, int n_items, int group_limit) const;
   /// The slots whose values an edit of `patches` can change: the owner slots of their corners and
   /// their own slots (a normal on a crease, the midpoint of the edge that starts there).
   static std::vector<int> edit_slots(const PatchPlans& plans, const std::vector<int>& patches);
+  /// The items (gpu_layout.h, kCornerItemOps) of `slots`: each slot's evaluations, and a zero for
+  /// the values it does not hold; the evaluations first, so that no SIMD batch runs both.
+  static std::vector<int> slot_items(const PatchPlans& plans, const std::vector<int>& slots);
+  /// The evaluations of every corner slot of the plans' patches, for outputs cleared before.
+  static std::vector<int> all_items(const PatchPlans& plans);
 
 private:
-  void run(const PatchPlans& plans, int count, bool use_list, int group_limit) const;
-
   ShapePrograms programs_;
 };
 

@@ -188,9 +188,10 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<K
   if (s.row_gap > 0)
     glClearNamedBufferSubData(buffers_[kBindingPoints], GL_R32UI, GLintptr(size_t(s.n_base) * point_bytes),
                               GLsizeiptr(size_t(s.row_gap) * point_bytes), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-  // Not cleared: the corner pass writes every slot it is run over, and that is every slot but those
-  // of the kept runs, copied below from the buffers before (zero where a patch does not evaluate it),
-  // or left where they are where every kept patch keeps its number and the storage stays.
+  // Not cleared here: a pass over every corner clears them first (clear_corner_pass); an edit's pass
+  // writes every value of the slots it lists, and that is every slot but those of the kept runs,
+  // copied below from the buffers before (zero where a patch does not evaluate it), or left where
+  // they are where every kept patch keeps its number and the storage stays.
   const size_t limits_size = corner_limit_floats(p) * sizeof(float),
                midpoints_size = curve_midpoint_floats(p) * sizeof(float);
   const bool kept_in_place =
@@ -300,7 +301,17 @@ void PlanBuffers::upload_edit(const std::vector<int>& changed, const std::vector
   upload(kBindingRows, rows);
 }
 
-void PlanBuffers::upload_corner_list(const std::vector<int>& slots) { upload(kBindingCornerList, slots); }
+void PlanBuffers::upload_corner_list(const std::vector<int>& items) { upload(kBindingCornerList, items); }
+
+void PlanBuffers::clear_corner_pass(const PatchPlans& plans) {
+  glClearNamedBufferSubData(buffers_[kBindingCornerLimits], GL_R32UI, 0,
+                            GLsizeiptr(corner_limit_floats(plans) * sizeof(float)), GL_RED_INTEGER, GL_UNSIGNED_INT,
+                            nullptr);
+  glClearNamedBufferSubData(buffers_[kBindingCurveMidpoints], GL_R32UI, 0,
+                            GLsizeiptr(curve_midpoint_floats(plans) * sizeof(float)), GL_RED_INTEGER, GL_UNSIGNED_INT,
+                            nullptr);
+  check_gl_errors("clearing the corner pass's output");
+}
 
 void PlanBuffers::bind() const {
   for (int b = 0; b < kBindingCount; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);

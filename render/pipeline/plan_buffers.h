@@ -62,8 +62,10 @@ public:
   void update_gaussians(const FramedGaussians& gaussians, const std::vector<int>& changed);
   /// An edit's changed vertices and the stencil rows that read them, for the listed compute passes.
   void upload_edit(const std::vector<int>& changed, const std::vector<int>& rows);
-  /// An edit's corner slots to evaluate again (render/pipeline/corner_limit_pass.h).
-  void upload_corner_list(const std::vector<int>& slots);
+  /// The corner pass's items (render/pipeline/corner_limit_pass.h).
+  void upload_corner_list(const std::vector<int>& items);
+  /// Zeroes the corner pass's output for the plans' corners, ahead of a pass over every evaluation.
+  void clear_corner_pass(const PatchPlans& plans);
   /// Binds every buffer at its binding.
   void bind() const;
   /// The plan points as the compute passes left them (gpu::kVec4PerPoint vec4 each; double ones

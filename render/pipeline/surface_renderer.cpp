@@ -62,6 +62,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   const std::shared_ptr<const SurfaceTables> before = std::exchange(tables_, std::move(surface_tables));
   dependents_ = stencil_dependents(tables_->stencils);
   readers_.reset();
+  all_corner_items_.clear();
   half_size_patches_ = 0;
   for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
   // Kept tables keep the points of the base vertices that did not change, in this frame and precision.

@@ -216,8 +216,9 @@ private:
   PatchTriangleCounts triangle_counts_;       // where the cache finds a patch's triangles in its block
   long long points_generation_ = 0;           // bumped by every compute pass: the cache's key
   GlTexture matcap_ = GlTexture::none();      // made by set_matcap()
-  long long tables_id_ = 0;
-  int last_corner_slots_ = 0;        // the replanner's id of tables_ (PlanChange), 0 where none gave one
+  long long tables_id_ = 0;                   // the replanner's id of tables_ (PlanChange), 0 where none gave one
+  std::vector<int> all_corner_items_;         // CornerLimitPass::all_items of tables_, once a pass needed them
+  int last_corner_slots_ = 0;
   long long half_size_patches_ = 0;  // a split face's patches (quads): the cache's buffer estimate
   int group_limit_ = 0;              // lowered by tests only (DeviceLimitsForTests)
   long long storage_limit_ = 0;

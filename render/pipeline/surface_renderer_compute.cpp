@@ -20,17 +20,21 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
     buffers_.upload_edit(*changed, rows);
     const std::vector<int> patches = changed_patches(*changed, rows);
     const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
-    buffers_.upload_corner_list(corners);
+    const std::vector<int> items = CornerLimitPass::slot_items(plans, corners);
+    buffers_.upload_corner_list(items);
     buffers_.bind();
     compute_.run_listed(tables().stencils, int(changed->size()), int(rows.size()), group_limit_);
-    corners_.run_listed(plans, int(corners.size()), group_limit_);
+    corners_.run(plans, int(items.size()), group_limit_);
     last_corner_slots_ = int(corners.size());
     cache_.points_changed(points_generation_, &patches);
     return;
   }
+  if (all_corner_items_.empty()) all_corner_items_ = CornerLimitPass::all_items(plans);
+  buffers_.upload_corner_list(all_corner_items_);
+  buffers_.clear_corner_pass(plans);
   buffers_.bind();
   compute_.run_all(tables().stencils, group_limit_);
-  corners_.run_all(plans, group_limit_);
+  corners_.run(plans, int(all_corner_items_.size()), group_limit_);
   last_corner_slots_ = plans.corners() * plans.n_patches();
   if (edit)
     cache_.all_points_changed(points_generation_);
@@ -46,14 +50,15 @@ void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::v
   const PatchPlans& plans = tables().plans;
   const std::vector<int> patches = stale_corner_patches(before, tables(), dependents_, changed, kept, origin);
   const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
-  buffers_.upload_corner_list(corners);
+  const std::vector<int> items = CornerLimitPass::slot_items(plans, corners);
+  buffers_.upload_corner_list(items);
   if (points_carried) buffers_.upload_edit(changed, {});
   buffers_.bind();
   if (points_carried)
     compute_.run_listed_vertices(tables().stencils, int(changed.size()), group_limit_);
   else
     compute_.run_all(tables().stencils, group_limit_);
-  corners_.run_listed(plans, int(corners.size()), group_limit_);
+  corners_.run(plans, int(items.size()), group_limit_);
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
   if (!cache_.has_stored_triangles()) return cache_.points_changed(points_generation_, nullptr);

@@ -91,6 +91,29 @@ void check_adjacency(const std::string& name, const CovarianceMesh& mesh) {
         EXPECT_NE(e.part, f.part) << name;  // halves at the same end run opposite ways
       }
     }
+  // Limit curves: each named by one patch edge, the same for both sides and for itself: the whole
+  // edge beside two halves, else the lower side (or the edge itself on the boundary).
+  for (int p = 0; p < plans.n_patches(); ++p)
+    for (int k = 0; k < n; ++k) {
+      const PatchEdgeSlot curve = curve_edge(plans, p, k), own{p, k};
+      EXPECT_EQ(curve_edge(plans, curve.patch, curve.edge), curve) << name << " patch " << p << " edge " << k;
+      const EdgeNeighbour a = edge_neighbour(plans, p, k, 0), b = edge_neighbour(plans, p, k, 1);
+      const PatchEdgePart part = ends(plans, p, k).part;
+      if (a.patch < 0 || part == PatchEdgePart::whole_beside_halves) {
+        EXPECT_EQ(curve, own) << name << " patch " << p << " edge " << k;
+        for (const EdgeNeighbour& h : {a, b})
+          if (part == PatchEdgePart::whole_beside_halves) EXPECT_EQ(curve_edge(plans, h.patch, h.edge), own) << name;
+        continue;
+      }
+      if (ends(plans, a.patch, a.edge).part == PatchEdgePart::whole_beside_halves) {
+        EXPECT_EQ(curve, (PatchEdgeSlot{a.patch, a.edge})) << name << " patch " << p << " edge " << k;
+        continue;
+      }
+      const PatchEdgeSlot across{a.patch, a.edge};
+      const bool lower = std::make_pair(p, k) < std::make_pair(a.patch, a.edge);
+      EXPECT_EQ(curve, lower ? own : across) << name << " patch " << p << " edge " << k;
+      EXPECT_EQ(curve_edge(plans, a.patch, a.edge), curve) << name << " patch " << p << " edge " << k;
+    }
   // Corners: owned by the lowest patch with the same corner point.
   std::map<int32_t, int> first;
   for (int p = 0; p < plans.n_patches(); ++p)
