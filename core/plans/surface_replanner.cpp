@@ -264,8 +264,7 @@ std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
   }
   base_.creases = std::move(level);
   if (faces.empty()) {  // every edge and vertex as sharp as before: the same tables, adjacency included
-    change_ = {change_.to, next_tables_id(), {}};
-    if (const int n = tables_->plans.n_patches(); n > 0) change_.kept.push_back({0, 0, n});
+    keep_every_plan();
     return faces;
   }
   // The same faces and vertices: each its own; the faces that read a change are built again.
@@ -279,8 +278,25 @@ std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
   return faces;
 }
 
+bool SurfaceReplanner::same_surface(const PolygonTopology& topology, const Sharpness& sharpness,
+                                    const std::vector<int>& origin) const {
+  const PolygonTopology& t = base_.topology;
+  if (tables_->plans.n_patches() == 0 || topology.n_vertices != t.n_vertices || topology.offsets != t.offsets ||
+      topology.verts != t.verts || !(sharpness == sharpness_))
+    return false;
+  for (size_t v = 0; v < origin.size(); ++v)
+    if (origin[v] != int(v)) return false;
+  return origin.empty() || origin.size() == size_t(t.n_vertices);
+}
+
+void SurfaceReplanner::keep_every_plan() {
+  change_ = {change_.to, next_tables_id(), {}};
+  if (const int n = tables_->plans.n_patches(); n > 0) change_.kept.push_back({0, 0, n});
+}
+
 int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpness& sharpness,
                                    const std::vector<int>& origin) {
+  if (same_surface(topology, sharpness, origin)) return keep_every_plan(), 0;
   // The checks first: a refusal changes nothing.
   const Scheme scheme = scheme_for(topology, options_);
   check(topology, scheme);
@@ -288,6 +304,7 @@ int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpn
 }
 
 int SurfaceReplanner::set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin) {
+  if (same_surface(mesh.topology(), mesh.sharpness, origin)) return keep_every_plan(), 0;
   check(mesh.topology(), scheme_for(mesh.topology(), options_));
   return replan(base_local_mesh(mesh.topology(), mesh.connectivity(), mesh.sharpness), mesh.sharpness, origin);
 }

@@ -79,7 +79,8 @@ public:
   /// out of one (core/plans/range_plans.h, cut_range); the other faces are built again. The
   /// origin only says where to look: a wrong one costs time, never a wrong table. Everything is built
   /// again when the scheme changes, when sharpness first comes or last goes, for Loop's smooth builder,
-  /// or when the origin is not increasing. Returns how many faces were planned. Throws as the
+  /// or when the origin is not increasing. The same faces, sharpness and vertices keep the tables as
+  /// they are (a change of the Gaussians alone). Returns how many faces were planned. Throws as the
   /// constructor does, the tables unchanged.
   int set_topology(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin = {});
   /// The same for a mesh's faces and sharpness, reading the connectivity it holds.
@@ -95,6 +96,11 @@ private:
   SurfaceReplanner(LocalMesh&& base, const PlanOptions& options, const Sharpness& sharpness, int faces_per_range);
   // The plan builders' checks of a topology under `scheme` (valences, depth); throws as they do.
   void check(const PolygonTopology& topology, Scheme scheme) const;
+  // Whether `topology` and `sharpness` are those planned, every vertex where it was (`origin` as
+  // set_topology takes it): a change of the Gaussians alone, such as a transform as an operation.
+  bool same_surface(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin) const;
+  // The change to the same tables under a new id, every patch kept.
+  void keep_every_plan();
   // set_topology's work, the new mesh's base piece built.
   int replan(LocalMesh&& base, const Sharpness& sharpness, const std::vector<int>& origin);
   // The plans of base_ from those of `old`: per old face its new face (−1: gone) and back, which new

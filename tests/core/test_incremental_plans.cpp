@@ -135,6 +135,35 @@ TEST(IncrementalPlans, AnExtrudeBuildsAFewRangesAgain) {
   test::expect_same_tables(replanner.tables(), build_surface_plans(after, options, {}), "extruded");
 }
 
+// A change of the Gaussians alone (a transform as an operation: the same faces, sharpness and
+// vertices) keeps the tables themselves, every patch kept, under a new id; the same faces with other
+// vertices, or a crease, are re-planned.
+TEST(IncrementalPlans, TheSameFacesAndVerticesKeepTheTables) {
+  for (const char* name : {"pawn", "icosphere"}) {
+    CovarianceMesh mesh = make_sample(name);
+    SurfaceReplanner replanner(mesh, PlanOptions{});
+    const auto tables = replanner.shared_tables();
+    const long long id = replanner.last_change().to;
+    std::vector<int> itself(mesh.n_vertices());
+    for (size_t v = 0; v < itself.size(); ++v) itself[v] = int(v);
+    for (const std::vector<int>& origin : {std::vector<int>{}, itself}) {
+      const long long before = replanner.last_change().to;
+      EXPECT_EQ(replanner.set_topology(mesh, origin), 0) << name;
+      EXPECT_EQ(replanner.shared_tables(), tables) << name << ": the same tables, not a copy";
+      const PlanChange& change = replanner.last_change();
+      EXPECT_EQ(change.from, before) << name;
+      EXPECT_GT(change.to, id) << name;
+      EXPECT_EQ(change.kept, (std::vector<KeptPatches>{{0, 0, tables->plans.n_patches()}})) << name;
+    }
+    std::swap(itself[0], itself[1]);  // the same faces, two vertices' Gaussians swapped: read again
+    EXPECT_GT(replanner.set_topology(mesh, itself), 0) << name;
+    mesh.sharpness.set_crease(mesh.edge(0)[0], mesh.edge(0)[1], 2.0);
+    EXPECT_GT(replanner.set_topology(mesh), 0) << name;
+    test::expect_same_tables(replanner.tables(), build_surface_plans(mesh.topology(), PlanOptions{}, mesh.sharpness),
+                             std::string(name) + " creased");
+  }
+}
+
 // The faces before those an extrude reaches keep their plans in the whole tables as they were, the
 // rows they read included: the four vertices it adds move no row's point index, nor do those its undo
 // takes away (the rows start at row_start_for(n_base), which a few vertices more or less leave).
