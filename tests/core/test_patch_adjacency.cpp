@@ -13,6 +13,7 @@
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/fill.h"
 #include "core/modelling/samples.h"
+#include "tests/support/patch_edge_point.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
 
@@ -147,16 +148,6 @@ TEST(PatchAdjacency, CylinderCapsMeetTheSideQuadsHalfByHalf) {
   EXPECT_EQ(beside, 16);  // two octagons of 8 sides
 }
 
-// (u, v) of the point at fraction t along patch edge k, which runs from corner k to corner k + 1.
-std::pair<double, double> edge_point(PatchShape shape, int k, double t) {
-  if (shape == PatchShape::triangle)
-    return k == 0 ? std::pair{t, 0.0} : k == 1 ? std::pair{1 - t, t} : std::pair{0.0, 1 - t};
-  return k == 0   ? std::pair{t, 0.0}
-         : k == 1 ? std::pair{1.0, t}
-         : k == 2 ? std::pair{1 - t, 1.0}
-                  : std::pair{0.0, 1 - t};
-}
-
 Vec3 normal_at(const test::PlannedMesh& m, int patch, std::pair<double, double> uv) {
   const auto s = evaluate_patch(m.tables.plans, m.points, patch, uv.first, uv.second);
   EXPECT_TRUE(s.has_value()) << "patch " << patch;
@@ -193,8 +184,9 @@ SharpFlags check_sharp_flags(const std::string& name, const CovarianceMesh& mesh
         const double along = beside_halves ? (t < 0.5 ? 2 * t : 2 * t - 1) : t;
         EXPECT_EQ(b.sharp, a.sharp) << name;
         EXPECT_EQ(edge_neighbour(plans, b.patch, b.edge).sharp, a.sharp) << name << ": the way back";
-        const Vec3 mine = normal_at(m, p, edge_point(plans.shape, k, t));
-        const Vec3 theirs = normal_at(m, b.patch, edge_point(plans.shape, b.edge, b.reversed ? 1 - along : along));
+        const Vec3 mine = normal_at(m, p, test::edge_point(plans.shape, k, t));
+        const Vec3 theirs =
+            normal_at(m, b.patch, test::edge_point(plans.shape, b.edge, b.reversed ? 1 - along : along));
         apart = std::max(apart, (mine - theirs).norm());
       }
       if (!a.sharp) {

@@ -14,6 +14,7 @@
 #include "core/plans/patch_adjacency.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
+#include "tests/support/patch_edge_point.h"
 #include "tests/support/plan_fixture.h"
 #include "tests/support/test_meshes.h"
 
@@ -21,16 +22,6 @@ namespace gps {
 namespace {
 
 using CornerPass = test::GlTest;
-
-// (u, v) at fraction t along patch edge k, which runs from corner k to corner k + 1 (t = 0: corner k).
-std::pair<double, double> edge_point(PatchShape shape, int k, double t) {
-  if (shape == PatchShape::triangle)
-    return k == 0 ? std::pair{t, 0.0} : k == 1 ? std::pair{1 - t, t} : std::pair{0.0, 1 - t};
-  return k == 0   ? std::pair{t, 0.0}
-         : k == 1 ? std::pair{1.0, t}
-         : k == 2 ? std::pair{1 - t, 1.0}
-                  : std::pair{0.0, 1 - t};
-}
 
 bool zero(const float* v, int n) {
   for (int i = 0; i < n; ++i)
@@ -63,7 +54,7 @@ void expect_corner_pass(const std::string& name, const CovarianceMesh& mesh, Sch
       if ((owner.patch == p && owner.corner == c) || owner.sharp) {
         sharp += owner.sharp;
         ++corners;
-        const auto [u, v] = edge_point(plans.shape, c, 0.0);
+        const auto [u, v] = test::edge_point(plans.shape, c, 0.0);
         const auto s = evaluate_patch(plans, cpu.points, p, u, v);
         ASSERT_TRUE(s.has_value()) << where;
         EXPECT_LT(distance(limit, s->position), 1e-4) << where << ": corner";
@@ -73,7 +64,7 @@ void expect_corner_pass(const std::string& name, const CovarianceMesh& mesh, Sch
       }
       if (curve_edge(plans, p, c) == PatchEdgeSlot{p, c}) {
         ++midpoints;
-        const auto [u, v] = edge_point(plans.shape, c, 0.5);
+        const auto [u, v] = test::edge_point(plans.shape, c, 0.5);
         const auto s = evaluate_patch(plans, cpu.points, p, u, v);
         ASSERT_TRUE(s.has_value()) << where;
         EXPECT_LT(distance(midpoint, s->position), 1e-4) << where << ": midpoint";
