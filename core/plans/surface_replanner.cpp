@@ -233,10 +233,63 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   for (const KeptPatches& run : kept)
     for (int i = 0; i < run.count && run.old_first + i < old_patches; ++i)
       new_of_old[size_t(run.old_first + i)] = run.first + i;
-  if (kept.empty() || old_shape != merged.plans.shape ||
-      !update_patch_adjacency(merged.plans, sharpness, old_neighbours, new_of_old))
-    add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity);
+  const bool updated = !kept.empty() && old_shape == merged.plans.shape &&
+                       update_patch_adjacency(merged.plans, sharpness, old_neighbours, new_of_old);
+  if (!updated) add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity);
+  if (updated) change_.relinked = kept_beside_built(kept);
   retired_ = std::exchange(tables_, std::make_shared<SurfaceTables>(std::move(merged)));
+}
+
+std::vector<int> SurfaceReplanner::kept_beside_built(const std::vector<KeptPatches>& kept) const {
+  const PolygonTopology& t = base_.topology;
+  const MeshConnectivity& c = base_.connectivity;
+  // Whether patches [first, last) all lie in kept runs; called in increasing order, `run` walks the runs.
+  size_t run = 0;
+  const auto all_kept = [&](int first, int last) {
+    while (first < last) {
+      while (run < kept.size() && kept[run].first + kept[run].count <= first) ++run;
+      if (run == kept.size() || kept[run].first > first) return false;
+      first = kept[run].first + kept[run].count;
+    }
+    return true;
+  };
+  // The faces with a patch not kept, ascending: a range kept whole is passed over at once.
+  std::vector<int> built;
+  for (size_t r = 0; r < ranges_.size(); ++r) {
+    const size_t at = run;
+    if (all_kept(patch_first_[r], patch_first_[r] + int(ranges_[r].tables.plans.patch_roots.size()))) continue;
+    run = at;
+    for (int f = range_first_[r], p = patch_first_[r]; f < range_first_[r + 1]; ++f) {
+      const int n = patches_of_face(t, f, scheme_);
+      if (!all_kept(p, p + n)) built.push_back(f);
+      p += n;
+    }
+  }
+  // The other faces at their corners: every patch of theirs is kept.
+  std::vector<int> beside;
+  for (const int g : built)
+    for (int k = t.offsets[size_t(g)]; k < t.offsets[size_t(g) + 1]; ++k) {
+      const int w = t.verts[size_t(k)];
+      for (int i = c.vertex_face_offsets[size_t(w)]; i < c.vertex_face_offsets[size_t(w) + 1]; ++i)
+        if (const int f = c.vertex_faces[size_t(i)]; !std::binary_search(built.begin(), built.end(), f))
+          beside.push_back(f);
+    }
+  std::sort(beside.begin(), beside.end());
+  beside.erase(std::unique(beside.begin(), beside.end()), beside.end());
+  // Their patches: face f's first is p, f in range r, walked forward.
+  std::vector<int> relinked;
+  size_t r = 0;
+  int f = 0, p = 0;
+  for (const int g : beside) {
+    if (g >= range_first_[r + 1]) {
+      r = size_t(std::upper_bound(range_first_.begin(), range_first_.end(), g) - range_first_.begin()) - 1;
+      f = range_first_[r];
+      p = patch_first_[r];
+    }
+    while (f < g) p += patches_of_face(t, f++, scheme_);
+    for (int i = 0; i < patches_of_face(t, g, scheme_); ++i) relinked.push_back(p + i);
+  }
+  return relinked;
 }
 
 std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
@@ -290,7 +343,7 @@ bool SurfaceReplanner::same_surface(const PolygonTopology& topology, const Sharp
 }
 
 void SurfaceReplanner::keep_every_plan() {
-  change_ = {change_.to, next_tables_id(), {}};
+  change_ = {change_.to, next_tables_id(), {}, std::vector<int>{}};
   if (const int n = tables_->plans.n_patches(); n > 0) change_.kept.push_back({0, 0, n});
 }
 

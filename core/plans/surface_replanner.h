@@ -6,6 +6,7 @@
 // full re-plan, bit for bit.
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/extraordinary/loop_crease_tables.h"
@@ -37,6 +38,10 @@ struct KeptPatches {
 struct PlanChange {
   long long from = 0, to = 0;
   std::vector<KeptPatches> kept;
+  /// The kept patches (ascending) whose adjacency records may differ from those they had, renumbered
+  /// (core/plans/kept_patch_records.h): those on faces that share a vertex with a face whose plans were
+  /// not kept. Unset: any kept patch's may.
+  std::optional<std::vector<int>> relinked;
 };
 
 /// A replanner's tables with the change that made them, as a renderer takes them (shared: a
@@ -118,6 +123,11 @@ private:
   // `same_leading`: the first ranges are the tables_' first, unchanged (merge_ranges copies their part).
   void build(const std::vector<int>& which, const Sharpness& sharpness, const std::vector<int>& old_patch_first = {},
              const std::vector<int>& old_face_patch = {}, size_t same_leading = 0);
+  // The kept patches whose adjacency records may differ (PlanChange::relinked): those of the faces that
+  // share a vertex with a face whose patches are not all kept (built again, or new). Any patch a kept
+  // patch's records name, or named before, lies on a face sharing a vertex with its own, and a face
+  // that shared one with a face now gone reads a changed vertex: built again.
+  std::vector<int> kept_beside_built(const std::vector<KeptPatches>& kept) const;
   // Cuts the faces into even ranges and builds them all.
   void build_all(const Sharpness& sharpness);
   // The fewest faces a run cut out of a range that a change reaches keeps (fewer are built again with

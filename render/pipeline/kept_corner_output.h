@@ -6,28 +6,21 @@
 // patch order, which increasing kept runs preserve.
 #include <vector>
 
+#include "core/plans/kept_patch_records.h"
 #include "core/plans/patch_plans.h"
 #include "core/plans/stencil_table.h"
 #include "core/plans/surface_replanner.h"
 
 namespace gps {
 
-/// Whether `kept` maps patches of tables of `n_before` patches onto tables of `n_after`: every run
-/// inside both, the runs increasing in both numberings.
-bool kept_runs_fit(const std::vector<KeptPatches>& kept, int n_before, int n_after);
-
-/// Per patch of `after`: true for a patch not kept, or a kept one whose owner or neighbour records
-/// name other patches (or say otherwise) than before. `kept` must fit (kept_runs_fit).
-std::vector<char> patches_not_kept_alike(const PatchPlans& before, const PatchPlans& after,
-                                         const std::vector<KeptPatches>& kept);
-
 /// The patches of `after` (sorted) whose corner-pass output must be evaluated again: those of
-/// patches_not_kept_alike, and the kept ones that read a vertex whose Gaussian changed (`changed`,
+/// patches_not_kept_alike (core/plans/kept_patch_records.h) for the change's kept runs and relinked
+/// patches, and the kept ones that read a vertex whose Gaussian changed (`changed`,
 /// as changed_gaussians gives it for the vertices' `origin`, as SurfaceRenderer::set_mesh takes it)
 /// or a stencil row that reads one (`dependents`: of after's stencils). A new vertex no kept plan reads.
 std::vector<int> stale_corner_patches(const SurfaceTables& before, const SurfaceTables& after,
                                       const StencilDependents& dependents, const std::vector<int>& changed,
-                                      const std::vector<KeptPatches>& kept, const std::vector<int>& origin);
+                                      const PlanChange& change, const std::vector<int>& origin);
 
 /// Whether `after`, the tables after a change from `before` whose plans kept `kept` and whose
 /// vertices came from `origin` (as set_mesh takes it), are `before` itself: every patch kept where

@@ -82,7 +82,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   cage_.set_mesh(mesh, framed_);         // the overlays too are drawn in the frame
   cache_.set_cage(mesh, framed_, keep);  // projected with the frame's view-projection
   if (keep)
-    run_compute_kept(*before, changed, kept, origin, few_changed);
+    run_compute_kept(*before, changed, change, origin, few_changed);
   else
     run_compute(nullptr);
 }

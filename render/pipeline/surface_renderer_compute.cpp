@@ -43,12 +43,11 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
 }
 
 void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::vector<int>& changed,
-                                       const std::vector<KeptPatches>& kept, const std::vector<int>& origin,
-                                       bool points_carried) {
+                                       const PlanChange& change, const std::vector<int>& origin, bool points_carried) {
   const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   const PatchPlans& plans = tables().plans;
-  const std::vector<int> patches = stale_corner_patches(before, tables(), dependents_, changed, kept, origin);
+  const std::vector<int> patches = stale_corner_patches(before, tables(), dependents_, changed, change, origin);
   const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
   const std::vector<int> items = CornerLimitPass::slot_items(plans, corners);
   buffers_.upload_corner_list(items);
@@ -62,7 +61,7 @@ void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::v
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
   if (!cache_.has_stored_triangles()) return cache_.points_changed(points_generation_, nullptr);
-  const KeptTriangles triangles = kept_triangles(plans, before.plans.n_patches(), kept, patches);
+  const KeptTriangles triangles = kept_triangles(plans, before.plans.n_patches(), change.kept, patches);
   stored_levels_.follow(
       n_patches(), cache_.topology_changed(points_generation_, n_patches(), triangles.new_number, triangles.changed));
 }

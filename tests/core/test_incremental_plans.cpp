@@ -1,8 +1,8 @@
 // Plans kept through modelling operations (core/plans/surface_replanner.h, set_topology): after random
 // sequences of every kind of operation and sharpness change on quad, triangle, mixed, open and creased
 // meshes, the incrementally kept tables equal a full re-plan's bit for bit, also when undone and redone
-// (the way back given by the inverse origins), whatever origin is given; and a small operation builds
-// only a few ranges again.
+// (the way back given by the inverse origins), whatever origin is given; a change names the kept
+// patches whose adjacency records it changed; and a small operation builds only a few ranges again.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/modelling/samples.h"
+#include "core/plans/kept_patch_records.h"
 #include "core/plans/surface_replanner.h"
 #include "core/support/error.h"
 #include "tests/support/plan_tables.h"
@@ -23,9 +24,24 @@
 namespace gps {
 namespace {
 
+// The replanner's last change names, among its relinked patches, every kept patch whose adjacency
+// records are not those it had in `before` (renumbered); returns whether it named its relinked patches.
+bool expect_relinked_named(const SurfaceTables& before, const SurfaceReplanner& replanner, const std::string& where) {
+  const PlanChange& change = replanner.last_change();
+  if (!change.relinked) return false;
+  const PatchPlans& after = replanner.tables().plans;
+  EXPECT_TRUE(kept_runs_fit(change.kept, before.plans.n_patches(), after.n_patches())) << where;
+  EXPECT_TRUE(std::is_sorted(change.relinked->begin(), change.relinked->end())) << where;
+  EXPECT_EQ(patches_not_kept_alike(before.plans, after, change.kept, &*change.relinked),
+            patches_not_kept_alike(before.plans, after, change.kept))
+      << where << ": a kept patch relinked but not named";
+  return true;
+}
+
 // Random operations, each followed by the replanner: equal to a full re-plan after the operation, after
-// its undo and after its redo.
+// its undo and after its redo; the kept patches whose records changed named.
 TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
+  int named = 0;
   for (const test::RandomOperationCase& c : test::random_operation_cases()) {
     PlanOptions options;
     options.scheme = c.scheme;
@@ -57,10 +73,12 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
       planned += replanner.set_topology(after, result.mesh.sharpness, result.vertex_origin);
       faces += after.n_faces();
       test::expect_same_tables(replanner.tables(), full, where);
+      named += expect_relinked_named(mesh_full, replanner, where);
       const PolygonTopology& before = mesh.topology();
       const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
       replanner.set_topology(before, mesh.sharpness, back);
       test::expect_same_tables(replanner.tables(), mesh_full, where + ", undone");
+      named += expect_relinked_named(full, replanner, where + ", undone");
       replanner.set_topology(after, result.mesh.sharpness, result.vertex_origin);
       test::expect_same_tables(replanner.tables(), full, where + ", redone");
       mesh = std::move(result.mesh);
@@ -72,6 +90,7 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
       EXPECT_LT(planned, faces / 2) << c.name << ": most faces kept their plans";
     }
   }
+  EXPECT_GT(named, 50) << "changes that named their relinked patches";
 }
 
 // On a mesh past kParallelFaces faces the replanner matches faces and follows the patch adjacency on
@@ -96,8 +115,10 @@ TEST(IncrementalPlans, RandomOperationsOnALargeMeshMatchAFullReplan) {
     SurfaceTables full = build_surface_plans(result.mesh.topology(), options, result.mesh.sharpness);
     replanner.set_topology(result.mesh, result.vertex_origin);
     test::expect_same_tables(replanner.tables(), full, where);
+    EXPECT_TRUE(expect_relinked_named(mesh_full, replanner, where));
     replanner.set_topology(mesh, inverse_origin(result.vertex_origin, mesh.n_vertices()));
     test::expect_same_tables(replanner.tables(), mesh_full, where + ", undone");
+    EXPECT_TRUE(expect_relinked_named(full, replanner, where + ", undone"));
     replanner.set_topology(result.mesh, result.vertex_origin);
     mesh = std::move(result.mesh);
     mesh_full = std::move(full);
@@ -257,9 +278,12 @@ TEST(IncrementalPlans, OperationsBesideSplitFacesMatchAFullReplan) {
       const std::string where = "face " + std::to_string(f) + " (" + result.summary + ")";
       SurfaceReplanner replanner(cylinder.topology(), options, {}, test::kSmallRanges);
       replanner.set_topology(result.mesh.topology(), {}, result.vertex_origin);
-      test::expect_same_tables(replanner.tables(), build_surface_plans(result.mesh.topology(), options, {}), where);
+      const SurfaceTables full = build_surface_plans(result.mesh.topology(), options, {});
+      test::expect_same_tables(replanner.tables(), full, where);
+      expect_relinked_named(cylinder_tables, replanner, where);
       replanner.set_topology(cylinder.topology(), {}, inverse_origin(result.vertex_origin, cylinder.n_vertices()));
       test::expect_same_tables(replanner.tables(), cylinder_tables, where + ", undone");
+      expect_relinked_named(full, replanner, where + ", undone");
       if (HasFailure()) return;
     }
     // The face deleted, then its hole filled: the patches beside the hole gain a neighbour.

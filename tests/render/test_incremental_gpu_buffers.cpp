@@ -12,6 +12,7 @@
 #include "core/plans/patch_adjacency.h"
 #include "core/plans/surface_replanner.h"
 #include "core/support/error.h"
+#include "core/plans/kept_patch_records.h"
 #include "render/pipeline/kept_corner_output.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
