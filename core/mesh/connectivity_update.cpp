@@ -58,14 +58,16 @@ private:
     return true;
   }
 
-  // The faces that continue an old one: the origin names it and the corners are its corners renumbered.
+  // The faces that continue an old one: the origin names it and the corners are its corners renumbered
+  // (compared on all cores), the first such face where several name one.
   bool match_faces() {
     face_new_.assign(size_t(t0_.n_faces()), -1);
     face_old_.assign(size_t(t_.n_faces()), -1);
-    int kept = 0;
-    for (int f = 0; f < t_.n_faces() && size_t(f) < o_.faces.size(); ++f) {
+    const int n = std::min(t_.n_faces(), int(o_.faces.size()));
+#pragma omp parallel for schedule(static) if (n >= kParallelFaces)
+    for (int f = 0; f < n; ++f) {
       const int g = o_.faces[size_t(f)];
-      if (g < 0 || g >= t0_.n_faces() || face_new_[size_t(g)] >= 0 || t0_.face_size(g) != t_.face_size(f)) continue;
+      if (g < 0 || g >= t0_.n_faces() || t0_.face_size(g) != t_.face_size(f)) continue;
       const int* corners = t_.verts.data() + t_.offsets[size_t(f)];
       const int* old_corners = t0_.verts.data() + t0_.offsets[size_t(g)];
       bool same = true;
@@ -73,9 +75,17 @@ private:
         const int v = corners[k];
         same = v >= 0 && v < t_.n_vertices && o_.vertices[size_t(v)] == old_corners[k];
       }
-      if (!same) continue;
+      if (same) face_old_[size_t(f)] = g;
+    }
+    int kept = 0;
+    for (int f = 0; f < n; ++f) {
+      int& g = face_old_[size_t(f)];
+      if (g < 0) continue;
+      if (face_new_[size_t(g)] >= 0) {
+        g = -1;
+        continue;
+      }
       face_new_[size_t(g)] = f;
-      face_old_[size_t(f)] = g;
       ++kept;
     }
     return 2 * kept >= t_.n_faces();  // mostly new: building the whole costs less

@@ -8,14 +8,13 @@ namespace gps {
 
 PolygonTopology polygon_topology(const std::vector<std::vector<int>>& faces) {
   PolygonTopology t;
-  size_t n_corners = 0;
-  for (const auto& face : faces) n_corners += face.size();
-  t.offsets.reserve(faces.size() + 1);
-  t.verts.reserve(n_corners);
-  for (const auto& face : faces) {
-    t.verts.insert(t.verts.end(), face.begin(), face.end());
-    t.offsets.push_back(int(t.verts.size()));
-  }
+  const int n_faces = int(faces.size());
+  t.offsets.resize(faces.size() + 1);
+  for (int f = 0; f < n_faces; ++f) t.offsets[size_t(f) + 1] = t.offsets[size_t(f)] + int(faces[size_t(f)].size());
+  t.verts.resize(size_t(t.offsets.back()));
+#pragma omp parallel for schedule(static) if (n_faces >= kParallelFaces)
+  for (int f = 0; f < n_faces; ++f)
+    std::copy(faces[size_t(f)].begin(), faces[size_t(f)].end(), t.verts.begin() + t.offsets[size_t(f)]);
   return t;
 }
 

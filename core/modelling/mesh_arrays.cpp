@@ -62,6 +62,7 @@ MeshArrays arrays_of(const CovarianceMesh& m) {
   const PolygonTopology& t = m.topology();
   a.faces.swap(spare_faces);
   a.faces.resize(size_t(t.n_faces()));
+#pragma omp parallel for schedule(static) if (t.n_faces() >= kParallelFaces)
   for (int f = 0; f < t.n_faces(); ++f)
     a.faces[size_t(f)].assign(t.verts.begin() + t.offsets[size_t(f)], t.verts.begin() + t.offsets[size_t(f) + 1]);
   return a;
@@ -92,15 +93,19 @@ CovarianceMesh built_from(const MeshArrays& a, std::vector<Vec3>&& means, std::v
   try {
     CovarianceMesh m = make_covariance_mesh(before, std::move(means), std::move(covariances), polygon_topology(a.faces),
                                             {origin, a.face_origin}, source);
-    // The Gaussians that are new or changed; the others were checked when `before` was made.
-    for (size_t v = 0; v < m.n_vertices(); ++v) {
-      const int o = origin[v];
+    // The Gaussians that are new or changed, on all cores; the others were checked when `before` was made.
+    const long long n = (long long)m.n_vertices();
+    bool problem = false;
+#pragma omp parallel for schedule(static) reduction(|| : problem) if (n >= kParallelFaces)
+    for (long long v = 0; v < n; ++v) {
+      const int o = origin[size_t(v)];
       const bool same = o >= 0 && size_t(o) < before.n_vertices() &&
-                        std::memcmp(&m.mean(v), &before.mean(size_t(o)), sizeof(Vec3)) == 0 &&
-                        std::memcmp(&m.covariance(v), &before.covariance(size_t(o)), sizeof(Mat3)) == 0;
-      if (!same && !(position_problem(m.mean(v)).empty() && covariance_problem(m.covariance(v)).empty()))
-        validate_gaussians(m, source);  // names the first vertex with a problem, as build_mesh does
+                        std::memcmp(&m.mean(size_t(v)), &before.mean(size_t(o)), sizeof(Vec3)) == 0 &&
+                        std::memcmp(&m.covariance(size_t(v)), &before.covariance(size_t(o)), sizeof(Mat3)) == 0;
+      problem = problem || (!same && !(position_problem(m.mean(size_t(v))).empty() &&
+                                       covariance_problem(m.covariance(size_t(v))).empty()));
     }
+    if (problem) validate_gaussians(m, source);  // names the first vertex with a problem, as build_mesh does
     m.sharpness = sharpness_on_edges(a, m);
     return m;
   } catch (const Error& e) {

@@ -158,7 +158,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
                              const std::vector<int>& old_patch_first, const std::vector<int>& old_face_patch,
                              size_t same_leading) {
   const PolygonTopology& t = base_.topology;
-  change_ = {change_.to, next_tables_id(), {}};
+  change_ = {change_.to, next_tables_id(), {}, std::nullopt};
   std::vector<KeptPatches>& kept = change_.kept;
   if (scheme_ == Scheme::loop && !base_.has_creases()) {  // Loop's smooth builder, as build_surface_plans
     ranges_.clear();

@@ -21,12 +21,15 @@ CageLines::CageLines()
 }
 
 void CageLines::set_mesh(const CovarianceMesh& mesh, const FramedGaussians& gaussians) {
+  // The edges' ends as they are: vertex indices are never negative, so their ints are the unsigned
+  // indices the draw reads.
   const std::vector<int>& ends = mesh.connectivity().edge_verts;
-  const std::vector<unsigned> edges(ends.begin(), ends.end());
-  index_count_ = int(edges.size());
+  static_assert(sizeof(int) == sizeof(GLuint));
+  index_count_ = int(ends.size());
   upload_positions(gaussians);
-  glNamedBufferData(ibo_, GLsizeiptr(std::max<size_t>(2, edges.size()) * sizeof(unsigned)), edges.data(),
-                    GL_STATIC_DRAW);
+  const int none[2] = {0, 0};
+  glNamedBufferData(ibo_, GLsizeiptr(std::max<size_t>(2, ends.size()) * sizeof(GLuint)),
+                    ends.empty() ? none : ends.data(), GL_STATIC_DRAW);
 }
 
 void CageLines::upload_positions(const FramedGaussians& gaussians) {
