@@ -253,15 +253,16 @@ std::vector<int> SurfaceReplanner::kept_beside_built(const std::vector<KeptPatch
     }
     return true;
   };
-  // The faces with a patch not kept, ascending: a range kept whole is passed over at once.
+  // The faces with a patch not kept, listed and flagged: a range kept whole is passed over at once.
   std::vector<int> built;
+  std::vector<char> is_built(size_t(t.n_faces()), 0);
   for (size_t r = 0; r < ranges_.size(); ++r) {
     const size_t at = run;
     if (all_kept(patch_first_[r], patch_first_[r] + int(ranges_[r].tables.plans.patch_roots.size()))) continue;
     run = at;
     for (int f = range_first_[r], p = patch_first_[r]; f < range_first_[r + 1]; ++f) {
       const int n = patches_of_face(t, f, scheme_);
-      if (!all_kept(p, p + n)) built.push_back(f);
+      if (!all_kept(p, p + n)) built.push_back(f), is_built[size_t(f)] = 1;
       p += n;
     }
   }
@@ -271,8 +272,7 @@ std::vector<int> SurfaceReplanner::kept_beside_built(const std::vector<KeptPatch
     for (int k = t.offsets[size_t(g)]; k < t.offsets[size_t(g) + 1]; ++k) {
       const int w = t.verts[size_t(k)];
       for (int i = c.vertex_face_offsets[size_t(w)]; i < c.vertex_face_offsets[size_t(w) + 1]; ++i)
-        if (const int f = c.vertex_faces[size_t(i)]; !std::binary_search(built.begin(), built.end(), f))
-          beside.push_back(f);
+        if (const int f = c.vertex_faces[size_t(i)]; !is_built[size_t(f)]) beside.push_back(f);
     }
   std::sort(beside.begin(), beside.end());
   beside.erase(std::unique(beside.begin(), beside.end()), beside.end());
