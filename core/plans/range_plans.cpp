@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <map>
 
+#include "core/plans/stencil_rows_merge.h"
 #include "core/plans/stencil_table.h"
 
 namespace gps {
 
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release, const SurfaceTables* previous,
                            size_t same_leading, SurfaceTables* storage) {
-  StencilTableBuilder stencils(n_base, row_start_for(n_base));
   PatchPlans plans;
   if (storage) {  // every element below is written: what the storage held is never read
     plans.nodes = std::move(storage->plans.nodes);
@@ -28,9 +28,8 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
       if (added) plans.extraordinary_tables.insert(plans.extraordinary_tables.end(), table->begin(), table->end());
       extraordinary_offset[r].push_back(at->second);
     }
-  // The rows' keys on all cores (kept: a range merged again is not hashed again), then the rows in order.
-  size_t n_rows = 0;
-#pragma omp parallel for schedule(dynamic) reduction(+ : n_rows)
+    // The rows' keys on all cores (kept: a range merged again is not hashed again), then the rows merged.
+#pragma omp parallel for schedule(dynamic)
   for (size_t r = 0; r < ranges.size(); ++r) {
     const StencilTable& s = ranges[r].tables.stencils;
     std::vector<size_t>& keys = ranges[r].row_keys;
@@ -38,16 +37,15 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
       keys.resize(size_t(s.n_rows()));
       for (int row = 0; row < s.n_rows(); ++row) keys[size_t(row)] = StencilTableBuilder::row_key(s, row);
     }
-    n_rows += size_t(s.n_rows());
   }
-  stencils.reserve_lookup(n_rows);
-  std::vector<std::vector<int>> rows(ranges.size());  // per range: local row -> point in the whole table
+  std::vector<const StencilTable*> range_stencils(ranges.size());
+  std::vector<const std::vector<size_t>*> range_keys(ranges.size());
   for (size_t r = 0; r < ranges.size(); ++r) {
-    const StencilTable& s = ranges[r].tables.stencils;
-    rows[r].resize(size_t(s.n_rows()));
-    for (int row = 0; row < s.n_rows(); ++row)
-      rows[r][size_t(row)] = stencils.add_row(s, row, ranges[r].row_keys[size_t(row)]);
+    range_stencils[r] = &ranges[r].tables.stencils;
+    range_keys[r] = &ranges[r].row_keys;
   }
+  MergedStencilRows stencils = merge_stencil_rows(range_stencils, range_keys, n_base, row_start_for(n_base));
+  const std::vector<std::vector<int>>& rows = stencils.points;  // per range: local row -> point in the whole table
   // Where each range's records start in the whole table.
   std::vector<size_t> node_base(ranges.size() + 1, 0), patch_base(ranges.size() + 1, 0);
   for (size_t r = 0; r < ranges.size(); ++r) {
@@ -117,7 +115,7 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
   }
   if (release)
     for (size_t r = 0; r < same_leading; ++r) ranges[r] = {};
-  return {std::move(plans), stencils.finish()};
+  return {std::move(plans), std::move(stencils.table)};
 }
 
 bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece) {

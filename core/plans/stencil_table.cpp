@@ -80,18 +80,7 @@ int StencilTableBuilder::add(const Stencil& s) {
   return add_terms(s.terms(), key_of(s.terms()));
 }
 
-int StencilTableBuilder::add_row(const StencilTable& other, int row, size_t key) {
-  return add_terms(RowTerms{other, row}, key);
-}
-
 size_t StencilTableBuilder::row_key(const StencilTable& table, int row) { return key_of(RowTerms{table, row}); }
-
-void StencilTableBuilder::reserve_lookup(size_t rows) {
-  previous_same_hash_.reserve(previous_same_hash_.size() + rows);
-  size_t slots = slot_rows_.size();
-  while (slots < 2 * (used_slots_ + rows)) slots *= 2;
-  if (slots > slot_rows_.size()) grow_lookup(slots);
-}
 
 // A hash of the nonzero terms, and their number.
 template <class Terms>

@@ -16,14 +16,9 @@ public:
   explicit StencilTableBuilder(int n_base, int first_row = -1);
   /// The point index of `s` (a base vertex index, or first_row + row).
   int add(const Stencil& s);
-  /// The point index of row `row` of another table over the same base vertices.
-  int add_row(const StencilTable& other, int row) { return add_row(other, row, row_key(other, row)); }
-  /// The same with the row's key (row_key) known, for tables merged again and again.
-  int add_row(const StencilTable& other, int row, size_t key);
-  /// The key a row of a builder's table (no zero weights) is found by.
+  /// The key a row of a builder's table (no zero weights) is found by (core/plans/stencil_rows_merge.h
+  /// merges rows by it).
   static size_t row_key(const StencilTable& table, int row);
-  /// Room in the lookup for `rows` rows (the table itself grows as rows come, to its own size).
-  void reserve_lookup(size_t rows);
   StencilTable finish() { return std::move(table_); }
 
 private:
