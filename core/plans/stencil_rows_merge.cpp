@@ -59,17 +59,20 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
     size_t slots = 64;
     while (slots < 2 * (n / shards + 1)) slots *= 2;
     const size_t mask = slots - 1;
-    std::vector<size_t> slot_keys(slots);
-    std::vector<int> slot_newest(slots, -1);  // per slot: the newest first row of its key, chaining back
+    struct Slot {
+      size_t key;
+      int newest;  // the newest first row of the key (−1: a free slot), chaining back
+    };
+    std::vector<Slot> slot(slots, Slot{0, -1});
     for (size_t t = 0; t < n_tables; ++t)
       for (int r = 0; r < tables[t]->n_rows(); ++r) {
         const size_t key = (*keys[t])[size_t(r)], hash = mixed(key);
         if (hash % shards != shard) continue;
         const size_t i = start[t] + size_t(r);
         size_t at = (hash / shards) & mask;
-        while (slot_newest[at] >= 0 && slot_keys[at] != key) at = (at + 1) & mask;
+        while (slot[at].newest >= 0 && slot[at].key != key) at = (at + 1) & mask;
         int found = -1;
-        for (int j = slot_newest[at]; j >= 0 && found < 0; j = previous_same_key[size_t(j)]) {
+        for (int j = slot[at].newest; j >= 0 && found < 0; j = previous_same_key[size_t(j)]) {
           const size_t u = table_of(size_t(j));
           if (same_terms(*tables[t], r, *tables[u], int(size_t(j) - start[u]))) found = j;
         }
@@ -78,9 +81,8 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
           continue;
         }
         first[i] = int(i);
-        previous_same_key[i] = slot_newest[at];
-        slot_keys[at] = key;
-        slot_newest[at] = int(i);
+        previous_same_key[i] = slot[at].newest;
+        slot[at] = {key, int(i)};
       }
   }
 
