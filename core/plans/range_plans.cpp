@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <map>
 
-#include "core/plans/stencil_rows_merge.h"
 #include "core/plans/stencil_table.h"
 
 namespace gps {
@@ -40,11 +39,14 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
   }
   std::vector<const StencilTable*> range_stencils(ranges.size());
   std::vector<const std::vector<size_t>*> range_keys(ranges.size());
+  std::vector<StencilRowFirsts*> range_firsts(release ? 0 : ranges.size());  // kept ranges: kept for the next merge
   for (size_t r = 0; r < ranges.size(); ++r) {
     range_stencils[r] = &ranges[r].tables.stencils;
     range_keys[r] = &ranges[r].row_keys;
+    if (!release) range_firsts[r] = &ranges[r].row_firsts;
   }
-  MergedStencilRows stencils = merge_stencil_rows(range_stencils, range_keys, n_base, row_start_for(n_base));
+  MergedStencilRows stencils = merge_stencil_rows(range_stencils, range_keys, n_base, row_start_for(n_base),
+                                                  range_firsts, storage ? &storage->stencils : nullptr);
   const std::vector<std::vector<int>>& rows = stencils.points;  // per range: local row -> point in the whole table
   // Where each range's records start in the whole table.
   std::vector<size_t> node_base(ranges.size() + 1, 0), patch_base(ranges.size() + 1, 0);
@@ -205,6 +207,7 @@ bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece) 
     t.offsets.push_back(int32_t(t.indices.size()));
   }
   piece.row_keys.clear();
+  piece.row_firsts = {};
   if (range.row_keys.size() == size_t(s.n_rows()))
     for (const int row : old_row) piece.row_keys.push_back(range.row_keys[size_t(row)]);
   return true;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/plans/plan_builder.h"
+#include "core/plans/stencil_rows_merge.h"
 
 namespace gps {
 
@@ -18,6 +19,7 @@ struct RangePlans {
   SurfaceTables tables;
   std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables;
   std::vector<size_t> row_keys;  // per row of its stencils: StencilTableBuilder::row_key, kept by merge_ranges
+  StencilRowFirsts row_firsts;   // what merge_ranges found of its rows, kept for the next merge
 };
 
 /// The tables of all ranges in order, as a single range over all faces gives them, their rows from

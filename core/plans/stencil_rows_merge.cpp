@@ -1,6 +1,8 @@
 #include "core/plans/stencil_rows_merge.h"
 
 #include <algorithm>
+#include <atomic>
+#include <unordered_map>
 
 #if defined(_OPENMP)
 #include <omp.h>
@@ -20,34 +22,52 @@ size_t mixed(size_t key) {
   return key ^ (key >> 31);
 }
 
-// Whether two rows have the same nonzero terms, in the same order (as StencilTableBuilder compares).
+// Whether two rows have the same terms, in the same order (as StencilTableBuilder compares them).
 bool same_terms(const StencilTable& a, int row_a, const StencilTable& b, int row_b) {
-  int i = a.offsets[size_t(row_a)], j = b.offsets[size_t(row_b)];
-  const int end_a = a.offsets[size_t(row_a) + 1], end_b = b.offsets[size_t(row_b) + 1];
-  while (true) {
-    while (i < end_a && a.weights[size_t(i)] == 0.0) ++i;
-    while (j < end_b && b.weights[size_t(j)] == 0.0) ++j;
-    if (i == end_a || j == end_b) return i == end_a && j == end_b;
-    if (a.indices[size_t(i)] != b.indices[size_t(j)] || a.weights[size_t(i)] != b.weights[size_t(j)]) return false;
-    ++i, ++j;
-  }
+  const int i = a.offsets[size_t(row_a)], j = b.offsets[size_t(row_b)];
+  const int n = a.offsets[size_t(row_a) + 1] - i;
+  return n == b.offsets[size_t(row_b) + 1] - j &&
+         std::equal(a.indices.begin() + i, a.indices.begin() + i + n, b.indices.begin() + j) &&
+         std::equal(a.weights.begin() + i, a.weights.begin() + i + n, b.weights.begin() + j);
 }
 
-}  // namespace
+long long new_table_id() {
+  static std::atomic<long long> last{0};
+  return ++last;
+}
 
-MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tables,
-                                     const std::vector<const std::vector<size_t>*>& keys, int n_base, int first_row) {
-  const size_t n_tables = tables.size();
-  std::vector<size_t> start(n_tables + 1, 0);  // where each table's rows start in the sequence of all rows
-  for (size_t t = 0; t < n_tables; ++t) start[t + 1] = start[t] + size_t(tables[t]->n_rows());
-  const size_t n = start.back();
-  const auto table_of = [&](size_t i) {
-    return size_t(std::upper_bound(start.begin(), start.end(), i) - start.begin()) - 1;
-  };
+// The rows of all tables as one sequence, row r of table t at start[t] + r.
+class RowSequence {
+public:
+  RowSequence(const std::vector<const StencilTable*>& tables, const std::vector<const std::vector<size_t>*>& keys)
+      : tables_(tables), keys_(keys), start_(tables.size() + 1, 0) {
+    for (size_t t = 0; t < tables.size(); ++t) start_[t + 1] = start_[t] + size_t(tables[t]->n_rows());
+  }
+  size_t size() const { return start_.back(); }
+  size_t n_tables() const { return tables_.size(); }
+  size_t start(size_t t) const { return start_[t]; }
+  int n_rows(size_t t) const { return tables_[t]->n_rows(); }
+  const StencilTable& table(size_t t) const { return *tables_[t]; }
+  size_t key(size_t t, int r) const { return (*keys_[t])[size_t(r)]; }
+  size_t table_of(size_t i) const {
+    return size_t(std::upper_bound(start_.begin(), start_.end(), i) - start_.begin()) - 1;
+  }
+  bool same_terms_at(size_t i, size_t j) const {
+    const size_t t = table_of(i), u = table_of(j);
+    return same_terms(table(t), int(i - start_[t]), table(u), int(j - start_[u]));
+  }
 
-  // Per row of the sequence, the first row with the same terms (itself for the first). The keys are
-  // shared out among the cores by their hash; each core finds the first rows of its keys in sequence
-  // order, so the result is that of adding the rows one after another.
+private:
+  const std::vector<const StencilTable*>& tables_;
+  const std::vector<const std::vector<size_t>*>& keys_;
+  std::vector<size_t> start_;
+};
+
+// Per row of the sequence, the first row with the same terms (itself for the first). The keys are
+// shared out among the cores by their hash; each core finds the first rows of its keys in sequence
+// order, so the result is that of adding the rows one after another.
+std::vector<int> first_rows_found_anew(const RowSequence& rows) {
+  const size_t n = rows.size();
   std::vector<int> first(n), previous_same_key(n, -1);
 #pragma omp parallel if (n >= kParallelRows)
   {
@@ -64,18 +84,16 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
       int newest;  // the newest first row of the key (−1: a free slot), chaining back
     };
     std::vector<Slot> slot(slots, Slot{0, -1});
-    for (size_t t = 0; t < n_tables; ++t)
-      for (int r = 0; r < tables[t]->n_rows(); ++r) {
-        const size_t key = (*keys[t])[size_t(r)], hash = mixed(key);
+    for (size_t t = 0; t < rows.n_tables(); ++t)
+      for (int r = 0; r < rows.n_rows(t); ++r) {
+        const size_t key = rows.key(t, r), hash = mixed(key);
         if (hash % shards != shard) continue;
-        const size_t i = start[t] + size_t(r);
+        const size_t i = rows.start(t) + size_t(r);
         size_t at = (hash / shards) & mask;
         while (slot[at].newest >= 0 && slot[at].key != key) at = (at + 1) & mask;
         int found = -1;
-        for (int j = slot[at].newest; j >= 0 && found < 0; j = previous_same_key[size_t(j)]) {
-          const size_t u = table_of(size_t(j));
-          if (same_terms(*tables[t], r, *tables[u], int(size_t(j) - start[u]))) found = j;
-        }
+        for (int j = slot[at].newest; j >= 0 && found < 0; j = previous_same_key[size_t(j)])
+          if (rows.same_terms_at(i, size_t(j))) found = j;
         if (found >= 0) {
           first[i] = found;
           continue;
@@ -85,45 +103,192 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
         slot[at] = {key, int(i)};
       }
   }
+  return first;
+}
 
-  // The first rows numbered in sequence order, with where their nonzero terms go.
+// The same from what the last merge found, where the tables kept from it (a usable `firsts`, in the
+// order they had) hold most rows; empty otherwise. A row whose first row is still there keeps it unless
+// a new table has its terms before it; a row whose first row is gone is placed again among those of its
+// terms, which all named the same first row and so are all such rows.
+std::vector<int> first_rows_followed(const RowSequence& rows, const std::vector<StencilRowFirsts*>& firsts,
+                                     std::vector<size_t>& placed_rows) {
+  const size_t n_tables = rows.n_tables();
+  if (firsts.size() != n_tables) return {};
+  const auto kept = [&](size_t t) {
+    return firsts[t] && firsts[t]->table != 0 && firsts[t]->of_row.size() == size_t(rows.n_rows(t)) &&
+           firsts[t]->of_table.size() == firsts[t]->of_row.size();
+  };
+  std::unordered_map<long long, size_t> position;  // a kept table's id → its place now
+  size_t fresh_rows = 0;
+  int last_position = -1;
+  for (size_t t = 0; t < n_tables; ++t) {
+    if (!kept(t)) {
+      fresh_rows += size_t(rows.n_rows(t));
+      continue;
+    }
+    if (firsts[t]->position <= last_position) return {};  // kept tables out of their order
+    last_position = firsts[t]->position;
+    position.emplace(firsts[t]->table, t);
+  }
+  if (position.empty() || 4 * fresh_rows > rows.size()) return {};
+
+  // The terms of the rows to place, each kind once: a row of it, and the first row found so far.
+  struct Terms {
+    size_t row;
+    int first;
+  };
+  std::vector<Terms> terms;
+  std::unordered_map<size_t, std::vector<int>> terms_of_key;
+  const auto find = [&](size_t i, size_t key) {
+    if (const auto at = terms_of_key.find(key); at != terms_of_key.end())
+      for (const int c : at->second)
+        if (rows.same_terms_at(i, terms[size_t(c)].row)) return c;
+    return -1;
+  };
+  const auto place = [&](size_t i, size_t key, int first) {
+    int c = find(i, key);
+    if (c < 0) {
+      c = int(terms.size());
+      terms.push_back({i, first});
+      terms_of_key[key].push_back(c);
+    }
+    terms[size_t(c)].first = std::min(terms[size_t(c)].first, first);
+    return c;
+  };
+  std::vector<std::pair<size_t, int>> placed;  // a row and its terms
+  for (size_t t = 0; t < n_tables; ++t)
+    if (!kept(t))
+      for (int r = 0; r < rows.n_rows(t); ++r) {
+        const size_t i = rows.start(t) + size_t(r);
+        placed.emplace_back(i, place(i, rows.key(t, r), int(i)));
+      }
+
+  // The kept rows on all cores: their first row where it stands; the others listed per table.
+  std::vector<int> first(rows.size());
+  std::vector<std::vector<std::pair<size_t, int>>> beside_new(n_tables);  // a row, and where its first row is
+  std::vector<std::vector<size_t>> first_gone(n_tables);
+#pragma omp parallel for schedule(dynamic) if (rows.size() >= kParallelRows)
+  for (size_t t = 0; t < n_tables; ++t) {
+    if (!kept(t)) continue;
+    const StencilRowFirsts& f = *firsts[t];
+    for (int r = 0; r < rows.n_rows(t); ++r) {
+      const size_t i = rows.start(t) + size_t(r);
+      const auto at = position.find(f.of_table[size_t(r)]);
+      if (at == position.end()) {
+        first_gone[t].push_back(i);
+        continue;
+      }
+      const int was = int(rows.start(at->second)) + f.of_row[size_t(r)];
+      if (const int c = find(i, rows.key(t, r)); c >= 0)
+        beside_new[t].emplace_back(i, was);
+      else
+        first[i] = was;
+    }
+  }
+  for (size_t t = 0; t < n_tables; ++t) {
+    for (const auto& [i, was] : beside_new[t])
+      placed.emplace_back(i, place(i, rows.key(t, int(i - rows.start(t))), was));
+    for (const size_t i : first_gone[t]) placed.emplace_back(i, place(i, rows.key(t, int(i - rows.start(t))), int(i)));
+  }
+  placed_rows.clear();
+  for (const auto& [i, c] : placed) {
+    first[i] = terms[size_t(c)].first;
+    placed_rows.push_back(i);
+  }
+  return first;
+}
+
+}  // namespace
+
+MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tables,
+                                     const std::vector<const std::vector<size_t>*>& keys, int n_base, int first_row,
+                                     const std::vector<StencilRowFirsts*>& firsts, StencilTable* storage) {
+  const RowSequence rows(tables, keys);
+  const size_t n_tables = tables.size(), n = rows.size();
+  std::vector<size_t> placed;  // where the last merge's firsts were followed: the rows whose first row was found again
+  std::vector<int> first = first_rows_followed(rows, firsts, placed);
+  const bool followed = first.size() == n;
+  if (!followed) first = first_rows_found_anew(rows);
+
+  // The first rows numbered in sequence order, with where their terms go: counted per table, then
+  // numbered and copied on all cores.
   MergedStencilRows out;
   StencilTable& table = out.table;
+  if (storage) {  // every element below is written: what the storage held is never read
+    table.offsets = std::move(storage->offsets);
+    table.indices = std::move(storage->indices);
+    table.weights = std::move(storage->weights);
+  }
   table.n_base = n_base;
   table.row_gap = std::max(0, first_row - n_base);
-  out.points.resize(n_tables);
-  std::vector<int>& number = previous_same_key;  // reused: per first row, its row in the table
-  table.offsets.assign(1, 0);
-  int terms = 0;
-  for (size_t t = 0; t < n_tables; ++t) {
-    const StencilTable& s = *tables[t];
-    out.points[t].resize(size_t(s.n_rows()));
-    for (int r = 0; r < s.n_rows(); ++r) {
-      const size_t i = start[t] + size_t(r);
-      if (first[i] == int(i)) {
-        number[i] = table.n_rows();
-        for (int k = s.offsets[size_t(r)]; k < s.offsets[size_t(r) + 1]; ++k) terms += s.weights[size_t(k)] != 0.0;
-        table.offsets.push_back(terms);
-      }
-      out.points[t][size_t(r)] = table.first_row() + number[size_t(first[i])];
-    }
-  }
-  table.indices.resize(size_t(terms));
-  table.weights.resize(size_t(terms));
+  std::vector<int> table_rows(n_tables + 1, 0), table_terms(n_tables + 1, 0);
 #pragma omp parallel for schedule(dynamic) if (n >= kParallelRows)
   for (size_t t = 0; t < n_tables; ++t) {
-    const StencilTable& s = *tables[t];
+    const StencilTable& s = rows.table(t);
+    for (int r = 0; r < s.n_rows(); ++r)
+      if (const size_t i = rows.start(t) + size_t(r); first[i] == int(i)) {
+        ++table_rows[t + 1];
+        table_terms[t + 1] += s.offsets[size_t(r) + 1] - s.offsets[size_t(r)];
+      }
+  }
+  for (size_t t = 0; t < n_tables; ++t) {
+    table_rows[t + 1] += table_rows[t];
+    table_terms[t + 1] += table_terms[t];
+  }
+  table.offsets.resize(size_t(table_rows.back()) + 1);
+  table.offsets.back() = table_terms.back();
+  table.indices.resize(size_t(table_terms.back()));
+  table.weights.resize(size_t(table_terms.back()));
+  std::vector<int> number(n);  // per first row: its row in the table
+#pragma omp parallel for schedule(dynamic) if (n >= kParallelRows)
+  for (size_t t = 0; t < n_tables; ++t) {
+    const StencilTable& s = rows.table(t);
+    int row = table_rows[t], at = table_terms[t];
     for (int r = 0; r < s.n_rows(); ++r) {
-      const size_t i = start[t] + size_t(r);
+      const size_t i = rows.start(t) + size_t(r);
       if (first[i] != int(i)) continue;
-      int out_at = table.offsets[size_t(number[i])];
-      for (int k = s.offsets[size_t(r)]; k < s.offsets[size_t(r) + 1]; ++k)
-        if (s.weights[size_t(k)] != 0.0) {
-          table.indices[size_t(out_at)] = s.indices[size_t(k)];
-          table.weights[size_t(out_at++)] = s.weights[size_t(k)];
-        }
+      number[i] = row;
+      table.offsets[size_t(row++)] = at;
+      const int from = s.offsets[size_t(r)], count = s.offsets[size_t(r) + 1] - from;
+      std::copy_n(s.indices.begin() + from, count, table.indices.begin() + at);
+      std::copy_n(s.weights.begin() + from, count, table.weights.begin() + at);
+      at += count;
     }
   }
+  out.points.resize(n_tables);
+#pragma omp parallel for schedule(dynamic) if (n >= kParallelRows)
+  for (size_t t = 0; t < n_tables; ++t) {
+    out.points[t].resize(size_t(rows.n_rows(t)));
+    for (int r = 0; r < rows.n_rows(t); ++r)
+      out.points[t][size_t(r)] = table.first_row() + number[size_t(first[rows.start(t) + size_t(r)])];
+  }
+
+  // What this merge found, for the next: of every row where found anew (or of a table merged first),
+  // else of the rows placed again.
+  if (firsts.size() != n_tables) return out;
+  std::vector<char> whole(n_tables, !followed);
+  for (size_t t = 0; t < n_tables; ++t) {
+    if (!firsts[t]) continue;
+    StencilRowFirsts& f = *firsts[t];
+    if (f.table == 0 || f.of_row.size() != size_t(rows.n_rows(t))) {
+      f = {new_table_id(), -1, std::vector<long long>(size_t(rows.n_rows(t))),
+           std::vector<int>(size_t(rows.n_rows(t)))};
+      whole[t] = 1;
+    }
+    f.position = int(t);
+  }
+  const auto note = [&](size_t t, size_t i) {
+    const size_t j = size_t(first[i]), u = j >= rows.start(t) && j < rows.start(t + 1) ? t : rows.table_of(j);
+    StencilRowFirsts& f = *firsts[t];
+    f.of_table[i - rows.start(t)] = firsts[u] ? firsts[u]->table : 0;
+    f.of_row[i - rows.start(t)] = int(j - rows.start(u));
+  };
+#pragma omp parallel for schedule(dynamic) if (n >= kParallelRows)
+  for (size_t t = 0; t < n_tables; ++t)
+    if (firsts[t] && whole[t])
+      for (int r = 0; r < rows.n_rows(t); ++r) note(t, rows.start(t) + size_t(r));
+  for (const size_t i : placed)
+    if (const size_t t = rows.table_of(i); firsts[t] && !whole[t]) note(t, i);
   return out;
 }
 

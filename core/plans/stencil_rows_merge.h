@@ -1,7 +1,8 @@
 #pragma once
 // The rows of several stencil tables over the same base vertices merged into one table, each distinct
 // row once, where it first comes (docs/design.md §2 step 3): what adding every row of every table in
-// turn to one StencilTableBuilder gives, bit for bit, found on all cores.
+// turn to one StencilTableBuilder gives, bit for bit. Found on all cores, or, where the tables were
+// merged before and most are kept, from where each row first came then.
 #include <cstddef>
 #include <vector>
 
@@ -9,15 +10,29 @@
 
 namespace gps {
 
+/// What a merge found of one table's rows, kept with the table for the next merge: the rows that come
+/// first in a merge are those that came first in the one before but where a table merged then is gone,
+/// or a new one holds the same terms. Cleared (reset to {}) wherever the table's rows change.
+struct StencilRowFirsts {
+  long long table = 0;              // the table's id in the merges (0: not merged yet)
+  int position = -1;                // its place among the tables of its last merge
+  std::vector<long long> of_table;  // per row: the table (id) and its row where the row's terms first came
+  std::vector<int> of_row;
+};
+
 struct MergedStencilRows {
   StencilTable table;
   std::vector<std::vector<int>> points;  // per table, per row: its point index in `table`
 };
 
-/// Merges the rows of `tables` in order (table 0's rows first), rows with the same terms shared.
-/// `keys[t][r]`: StencilTableBuilder::row_key of row r of table t. The merged rows are numbered from
-/// point `first_row` on, past `n_base` base vertices.
+/// Merges the rows of `tables` (no zero weight, as StencilTableBuilder makes them) in order (table 0's
+/// rows first), rows with the same terms shared. `keys[t][r]`: StencilTableBuilder::row_key of row r of
+/// table t. The merged rows are numbered from point `first_row` on, past `n_base` base vertices.
+/// `firsts`: none, or per table what the last merge found of it, read and updated. `storage`: a table
+/// no longer used, whose arrays the merged table is written into.
 MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tables,
-                                     const std::vector<const std::vector<size_t>*>& keys, int n_base, int first_row);
+                                     const std::vector<const std::vector<size_t>*>& keys, int n_base, int first_row,
+                                     const std::vector<StencilRowFirsts*>& firsts = {},
+                                     StencilTable* storage = nullptr);
 
 }  // namespace gps

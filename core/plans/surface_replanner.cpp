@@ -75,7 +75,10 @@ bool renumber_range(RangePlans& range, const std::vector<int>& new_index, bool s
   }
   for (int32_t& q : s.indices) point(q);  // rows are over base vertices only
   s.n_base = n_new;
-  if (moved) range.row_keys.clear();  // a row's key hashes its indices: merge_ranges hashes it again
+  if (moved) {  // a row's key hashes its indices: merge_ranges hashes it and finds its first row again
+    range.row_keys.clear();
+    range.row_firsts = {};
+  }
   return !gone;
 }
 

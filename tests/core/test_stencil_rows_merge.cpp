@@ -4,6 +4,7 @@
 
 #include <map>
 #include <random>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -14,15 +15,13 @@ namespace {
 
 using Terms = std::vector<std::pair<int, double>>;
 
-// Tables whose rows are drawn from a pool, so that rows repeat within a table and across tables;
-// some rows carry zero weights, which a merge skips.
+// Tables whose rows are drawn from a pool, so that rows repeat within a table and across tables.
 std::vector<StencilTable> tables_from_pool(int n_tables, int rows_per_table, int pool_size, unsigned seed) {
   std::mt19937 random(seed);
   std::vector<Terms> pool(static_cast<size_t>(pool_size));
   for (Terms& row : pool) {
     const int n = 1 + int(random() % 6);
-    for (int k = 0; k < n; ++k)
-      row.emplace_back(int(random() % 500), random() % 5 == 0 ? 0.0 : 0.125 * (1 + random() % 7));
+    for (int k = 0; k < n; ++k) row.emplace_back(int(random() % 500), 0.125 * (1 + random() % 7));
   }
   std::vector<StencilTable> tables(static_cast<size_t>(n_tables));
   for (StencilTable& t : tables) {
@@ -39,15 +38,17 @@ std::vector<StencilTable> tables_from_pool(int n_tables, int rows_per_table, int
   return tables;
 }
 
-Terms nonzero_terms(const StencilTable& t, int row) {
+Terms terms_of(const StencilTable& t, int row) {
   Terms terms;
   for (int k = t.offsets[size_t(row)]; k < t.offsets[size_t(row) + 1]; ++k)
-    if (t.weights[size_t(k)] != 0.0) terms.emplace_back(t.indices[size_t(k)], t.weights[size_t(k)]);
+    terms.emplace_back(t.indices[size_t(k)], t.weights[size_t(k)]);
   return terms;
 }
 
 // Each distinct row once, where it first comes, found by an ordered map of the terms themselves.
-void expect_merged_as_added_in_turn(const std::vector<StencilTable>& tables, bool colliding_keys) {
+// `firsts`: per table, what the merge before found of it (the table merged again), or none.
+void expect_merged_as_added_in_turn(const std::vector<StencilTable>& tables, bool colliding_keys,
+                                    std::vector<StencilRowFirsts>* firsts = nullptr) {
   std::vector<std::vector<size_t>> keys(tables.size());
   std::vector<const StencilTable*> table_pointers;
   std::vector<const std::vector<size_t>*> key_pointers;
@@ -60,14 +61,17 @@ void expect_merged_as_added_in_turn(const std::vector<StencilTable>& tables, boo
     key_pointers.push_back(&keys[t]);
   }
   const int n_base = 500, first_row = 1024;
-  const MergedStencilRows merged = merge_stencil_rows(table_pointers, key_pointers, n_base, first_row);
+  std::vector<StencilRowFirsts*> first_pointers;
+  if (firsts)
+    for (StencilRowFirsts& f : *firsts) first_pointers.push_back(&f);
+  const MergedStencilRows merged = merge_stencil_rows(table_pointers, key_pointers, n_base, first_row, first_pointers);
 
   std::map<Terms, int> row_of;
   std::vector<Terms> rows;
   for (size_t t = 0; t < tables.size(); ++t) {
     ASSERT_EQ(merged.points[t].size(), size_t(tables[t].n_rows()));
     for (int r = 0; r < tables[t].n_rows(); ++r) {
-      const Terms terms = nonzero_terms(tables[t], r);
+      const Terms terms = terms_of(tables[t], r);
       const auto [at, added] = row_of.try_emplace(terms, int(rows.size()));
       if (added) rows.push_back(terms);
       ASSERT_EQ(merged.points[t][size_t(r)], first_row + at->second) << "table " << t << ", row " << r;
@@ -76,8 +80,8 @@ void expect_merged_as_added_in_turn(const std::vector<StencilTable>& tables, boo
   EXPECT_EQ(merged.table.n_base, n_base);
   EXPECT_EQ(merged.table.first_row(), first_row);
   ASSERT_EQ(merged.table.n_rows(), int(rows.size()));
-  for (int r = 0; r < merged.table.n_rows(); ++r) ASSERT_EQ(nonzero_terms(merged.table, r), rows[size_t(r)]);
-  EXPECT_EQ(merged.table.indices.size(), size_t(merged.table.offsets.back())) << "no zero weight kept";
+  for (int r = 0; r < merged.table.n_rows(); ++r) ASSERT_EQ(terms_of(merged.table, r), rows[size_t(r)]);
+  EXPECT_EQ(merged.table.indices.size(), size_t(merged.table.offsets.back()));
 }
 
 TEST(StencilRowsMerge, FewRowsMergeAsAddedInTurn) {
@@ -91,6 +95,39 @@ TEST(StencilRowsMerge, ManyRowsMergeAsAddedInTurnOnAllCores) {
 TEST(StencilRowsMerge, RowsOfDifferentTermsUnderOneKeyStayApart) {
   expect_merged_as_added_in_turn(tables_from_pool(3, 20, 30, 3), true);
   expect_merged_as_added_in_turn(tables_from_pool(20, 1000, 3000, 4), true);
+}
+
+// Tables merged again and again as a replanner merges its ranges: some kept (with what the merge
+// before found of them), some gone, some new between them, some changed in place.
+TEST(StencilRowsMerge, TablesMergedAgainFollowWhatTheLastMergeFound) {
+  for (const auto& [rows_per_table, pool_size, colliding] :
+       {std::tuple{30, 200, false}, std::tuple{600, 4000, false}, std::tuple{200, 300, true}}) {
+    std::mt19937 random{unsigned(rows_per_table)};
+    std::vector<StencilTable> tables = tables_from_pool(60, rows_per_table, pool_size, 7);
+    std::vector<StencilRowFirsts> firsts(tables.size());
+    expect_merged_as_added_in_turn(tables, colliding, &firsts);
+    for (int round = 0; round < 12; ++round) {
+      const std::vector<StencilTable> extra = tables_from_pool(4, rows_per_table, pool_size, unsigned(100 + round));
+      for (int change = 0; change < 3; ++change) {
+        const size_t at = random() % tables.size();
+        switch (random() % 3) {
+          case 0:  // a table gone
+            tables.erase(tables.begin() + long(at));
+            firsts.erase(firsts.begin() + long(at));
+            break;
+          case 1:  // a new one
+            tables.insert(tables.begin() + long(at), extra[size_t(change)]);
+            firsts.insert(firsts.begin() + long(at), StencilRowFirsts{});
+            break;
+          default:  // one changed in place: what was found of it is cleared
+            tables[at] = extra[3];
+            firsts[at] = {};
+        }
+      }
+      SCOPED_TRACE(testing::Message() << rows_per_table << " rows per table, round " << round);
+      expect_merged_as_added_in_turn(tables, colliding, &firsts);
+    }
+  }
 }
 
 TEST(StencilRowsMerge, NoTablesOrNoRows) {
