@@ -8,7 +8,7 @@
 namespace gps {
 
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release, const SurfaceTables* previous,
-                           size_t same_leading, SurfaceTables* storage) {
+                           size_t same_leading, SurfaceTables* storage, std::vector<KeptStencilRows>* kept_rows) {
   PatchPlans plans;
   if (storage) {  // every element below is written: what the storage held is never read
     plans.nodes = std::move(storage->plans.nodes);
@@ -47,6 +47,7 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
   }
   MergedStencilRows stencils = merge_stencil_rows(range_stencils, range_keys, n_base, row_start_for(n_base),
                                                   range_firsts, storage ? &storage->stencils : nullptr);
+  if (kept_rows) *kept_rows = std::move(stencils.kept);
   const std::vector<std::vector<int>>& rows = stencils.points;  // per range: local row -> point in the whole table
   // Where each range's records start in the whole table.
   std::vector<size_t> node_base(ranges.size() + 1, 0), patch_base(ranges.size() + 1, 0);

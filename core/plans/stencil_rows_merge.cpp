@@ -207,7 +207,7 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
   const size_t n_tables = tables.size(), n = rows.size();
   std::vector<size_t> placed;  // where the last merge's firsts were followed: the rows whose first row was found again
   std::vector<int> first = first_rows_followed(rows, firsts, placed);
-  const bool followed = first.size() == n;
+  const bool followed = n > 0 && first.size() == n;  // empty: not followed
   if (!followed) first = first_rows_found_anew(rows);
 
   // The first rows numbered in sequence order, with where their terms go: counted per table, then
@@ -262,6 +262,22 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
     for (int r = 0; r < rows.n_rows(t); ++r)
       out.points[t][size_t(r)] = table.first_row() + number[size_t(first[rows.start(t) + size_t(r)])];
   }
+  // The rows of the tables kept from the merge before, each with its row then (both in order).
+  if (followed)
+    for (size_t t = 0; t < n_tables; ++t) {
+      const StencilRowFirsts& f = *firsts[t];
+      if (f.table == 0 || f.merged_row.size() != size_t(rows.n_rows(t))) continue;
+      for (int r = 0; r < rows.n_rows(t); ++r) {
+        const size_t i = rows.start(t) + size_t(r);
+        if (first[i] != int(i)) continue;
+        const int now = number[i], then = f.merged_row[size_t(r)];
+        KeptStencilRows* last = out.kept.empty() ? nullptr : &out.kept.back();
+        if (last && last->first + last->count == now && last->old_first + last->count == then)
+          ++last->count;
+        else if (!last || (last->first + last->count <= now && last->old_first + last->count <= then))
+          out.kept.push_back({now, then, 1});
+      }
+    }
 
   // What this merge found, for the next: of every row where found anew (or of a table merged first),
   // else of the rows placed again.
@@ -276,6 +292,7 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
       whole[t] = 1;
     }
     f.position = int(t);
+    f.merged_row.resize(size_t(rows.n_rows(t)));
   }
   const auto note = [&](size_t t, size_t i) {
     const size_t j = size_t(first[i]), u = j >= rows.start(t) && j < rows.start(t + 1) ? t : rows.table_of(j);
@@ -284,9 +301,12 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
     f.of_row[i - rows.start(t)] = int(j - rows.start(u));
   };
 #pragma omp parallel for schedule(dynamic) if (n >= kParallelRows)
-  for (size_t t = 0; t < n_tables; ++t)
-    if (firsts[t] && whole[t])
+  for (size_t t = 0; t < n_tables; ++t) {
+    if (!firsts[t]) continue;
+    for (int r = 0; r < rows.n_rows(t); ++r) firsts[t]->merged_row[size_t(r)] = out.points[t][size_t(r)] - first_row;
+    if (whole[t])
       for (int r = 0; r < rows.n_rows(t); ++r) note(t, rows.start(t) + size_t(r));
+  }
   for (const size_t i : placed)
     if (const size_t t = rows.table_of(i); firsts[t] && !whole[t]) note(t, i);
   return out;

@@ -18,11 +18,20 @@ struct StencilRowFirsts {
   int position = -1;                // its place among the tables of its last merge
   std::vector<long long> of_table;  // per row: the table (id) and its row where the row's terms first came
   std::vector<int> of_row;
+  std::vector<int> merged_row;  // per row: the merged table's row that holds its terms
+};
+
+/// Rows [first, first + count) of a merged table have the terms of rows [old_first, old_first + count)
+/// of the table the merge before made.
+struct KeptStencilRows {
+  int first = 0, old_first = 0, count = 0;
+  bool operator==(const KeptStencilRows&) const = default;
 };
 
 struct MergedStencilRows {
   StencilTable table;
   std::vector<std::vector<int>> points;  // per table, per row: its point index in `table`
+  std::vector<KeptStencilRows> kept;     // where the last merge's firsts were followed: the rows of kept tables
 };
 
 /// Merges the rows of `tables` (no zero weight, as StencilTableBuilder makes them) in order (table 0's

@@ -161,7 +161,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
                              const std::vector<int>& old_patch_first, const std::vector<int>& old_face_patch,
                              size_t same_leading) {
   const PolygonTopology& t = base_.topology;
-  change_ = {change_.to, next_tables_id(), {}, std::nullopt};
+  change_ = {change_.to, next_tables_id(), {}, std::nullopt, {}};
   std::vector<KeptPatches>& kept = change_.kept;
   if (scheme_ == Scheme::loop && !base_.has_creases()) {  // Loop's smooth builder, as build_surface_plans
     ranges_.clear();
@@ -200,7 +200,8 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   SurfaceTables storage;
   if (retired_ && retired_.use_count() == 1) storage = std::move(*retired_);
   retired_.reset();
-  SurfaceTables merged = merge_ranges(ranges_, t.n_vertices, false, old.get(), same_leading, &storage);
+  SurfaceTables merged =
+      merge_ranges(ranges_, t.n_vertices, false, old.get(), same_leading, &storage, &change_.kept_rows);
   merged.plans.patch_neighbours = std::move(storage.plans.patch_neighbours);  // assigned whole below
   merged.plans.corner_owners = std::move(storage.plans.corner_owners);
   patch_first_.assign(ranges_.size(), 0);
@@ -346,8 +347,9 @@ bool SurfaceReplanner::same_surface(const PolygonTopology& topology, const Sharp
 }
 
 void SurfaceReplanner::keep_every_plan() {
-  change_ = {change_.to, next_tables_id(), {}, std::vector<int>{}};
+  change_ = {change_.to, next_tables_id(), {}, std::vector<int>{}, {}};
   if (const int n = tables_->plans.n_patches(); n > 0) change_.kept.push_back({0, 0, n});
+  if (const int n = tables_->stencils.n_rows(); n > 0) change_.kept_rows.push_back({0, 0, n});
 }
 
 int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpness& sharpness,

@@ -42,6 +42,10 @@ struct PlanChange {
   /// (core/plans/kept_patch_records.h): those on faces that share a vertex with a face whose plans were
   /// not kept. Unset: any kept patch's may.
   std::optional<std::vector<int>> relinked;
+  /// The stencil rows kept, in runs in the new tables' order (both numberings increase): rows of kept
+  /// ranges, the same terms as those rows had (a renderer computes again only the others, and those
+  /// that read a vertex whose Gaussian changed).
+  std::vector<KeptStencilRows> kept_rows;
 };
 
 /// A replanner's tables with the change that made them, as a renderer takes them (shared: a

@@ -8,8 +8,9 @@
 namespace gps {
 
 std::vector<int> stale_corner_patches(const SurfaceTables& before, const SurfaceTables& after,
-                                      const StencilDependents& dependents, const std::vector<int>& changed_or_new,
-                                      const PlanChange& change, const std::vector<int>& origin) {
+                                      const std::function<const StencilDependents&()>& dependents,
+                                      const std::vector<int>& changed_or_new, const PlanChange& change,
+                                      const std::vector<int>& origin) {
   std::vector<char> evaluate =
       patches_not_kept_alike(before.plans, after.plans, change.kept, change.relinked ? &*change.relinked : nullptr);
   const int n_base = after.stencils.n_base, n_patches = after.plans.n_patches();
@@ -23,7 +24,7 @@ std::vector<int> stale_corner_patches(const SurfaceTables& before, const Surface
   } else if (!changed.empty()) {  // a scan of the kept plans: cheaper than PatchReaders built for one change
     std::vector<char> point_changed(size_t(after.stencils.n_points()), 0);
     for (const int v : changed) point_changed[size_t(v)] = 1;
-    for (const int r : rows_reading(dependents, changed)) point_changed[size_t(after.stencils.first_row() + r)] = 1;
+    for (const int r : rows_reading(dependents(), changed)) point_changed[size_t(after.stencils.first_row() + r)] = 1;
 #pragma omp parallel if (n_patches >= kParallelFaces)
     {
       std::vector<int> points;

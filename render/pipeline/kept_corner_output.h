@@ -4,6 +4,7 @@
 // corners and midpoints again where it reads the same point values and its corner owners and edge
 // neighbours are the same patches as before: what a slot evaluates is decided by those records and by
 // patch order, which increasing kept runs preserve.
+#include <functional>
 #include <vector>
 
 #include "core/plans/kept_patch_records.h"
@@ -17,10 +18,12 @@ namespace gps {
 /// patches_not_kept_alike (core/plans/kept_patch_records.h) for the change's kept runs and relinked
 /// patches, and the kept ones that read a vertex whose Gaussian changed (`changed`,
 /// as changed_gaussians gives it for the vertices' `origin`, as SurfaceRenderer::set_mesh takes it)
-/// or a stencil row that reads one (`dependents`: of after's stencils). A new vertex no kept plan reads.
+/// or a stencil row that reads one (`dependents`: of after's stencils, asked for only where a vertex
+/// that was there before changed). A new vertex no kept plan reads.
 std::vector<int> stale_corner_patches(const SurfaceTables& before, const SurfaceTables& after,
-                                      const StencilDependents& dependents, const std::vector<int>& changed,
-                                      const PlanChange& change, const std::vector<int>& origin);
+                                      const std::function<const StencilDependents&()>& dependents,
+                                      const std::vector<int>& changed, const PlanChange& change,
+                                      const std::vector<int>& origin);
 
 /// Whether `after`, the tables after a change from `before` whose plans kept `kept` and whose
 /// vertices came from `origin` (as set_mesh takes it), are `before` itself: every patch kept where

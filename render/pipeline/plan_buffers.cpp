@@ -151,7 +151,7 @@ void PlanBuffers::check_fits(const SurfaceTables& tables, int n_vertices, int n_
 }
 
 void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept,
-                                const CarriedVertices* carried, const SurfaceTables* held) {
+                                const CarriedPoints* carried, const SurfaceTables* held) {
   const StencilTable& s = tables.stencils;
   const PatchPlans& p = tables.plans;
   const StencilTable* hs = held ? &held->stencils : nullptr;
@@ -172,7 +172,10 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<K
   const size_t point_bytes = kVec4PerPoint * 4 * real_bytes(precision_),
                points_size = size_t(s.n_points()) * point_bytes;
   if (carried) {
-    const std::vector<CopyRun> runs = carried_runs(size_t(s.n_base), carried->origin, carried->changed);
+    std::vector<CopyRun> runs = carried_runs(size_t(s.n_base), carried->origin, carried->changed);
+    for (const KeptStencilRows& rows : carried->rows)
+      runs.push_back(
+          {size_t(carried->old_first_row + rows.old_first), size_t(s.first_row() + rows.first), size_t(rows.count)});
     const bool in_place = keeps_storage(kBindingPoints, points_size) &&
                           std::all_of(runs.begin(), runs.end(), [](const CopyRun& run) { return run.from == run.to; });
     if (in_place) {

@@ -34,23 +34,27 @@ public:
   /// The precision of the points and Gaussians that upload_tables and upload_gaussians upload next.
   void set_precision(PointPrecision precision) { precision_ = precision; }
   PointPrecision precision() const { return precision_; }
-  /// The base vertices a change of topology carries over: each vertex's index before it (`origin`,
-  /// empty: the same) and those whose Gaussians are new or changed (changed_gaussians).
-  struct CarriedVertices {
+  /// The points a change of topology carries over: the base vertices, by each vertex's index before it
+  /// (`origin`, empty: the same) but for those whose Gaussians are new or changed (changed_gaussians),
+  /// and the stencil rows kept (`rows`, PlanChange::kept_rows: rows of the tables before from their
+  /// point `old_first_row` on).
+  struct CarriedPoints {
     const std::vector<int>& origin;
     const std::vector<int>& changed;
+    const std::vector<KeptStencilRows>& rows;
+    int old_first_row = 0;
   };
   /// The plan and stencil tables, storage for the plan points (for a full compute pass to write), and
   /// for the corner pass's output, but for the `kept` runs of patches, whose corner-pass output is copied
   /// from the previous tables' (of the same patch shape; kept_runs_fit, render/pipeline/kept_corner_output.h).
   /// With `carried` (points of the same precision and frame before), the points of the base vertices
-  /// not among its changed ones are copied from the previous points to where they went, in runs: the
-  /// compute pass then maps the changed vertices alone (DualStencilPass::run_listed_vertices).
+  /// not among its changed ones, and of the kept rows, are copied from the previous points to where
+  /// they went, in runs: the compute pass then maps the changed vertices alone, and the other rows.
   /// `held`: the tables the buffers hold now (the last uploaded), where known: a table whose storage
   /// stays is written only from its first difference from them on (an operation's change leaves the
   /// tables before its first changed range as they were).
   void upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept = {},
-                     const CarriedVertices* carried = nullptr, const SurfaceTables* held = nullptr);
+                     const CarriedPoints* carried = nullptr, const SurfaceTables* held = nullptr);
   /// Every base vertex's μ and Σ.
   void upload_gaussians(const FramedGaussians& gaussians);
   /// Every base vertex's μ and Σ after a change of topology, in the precision of the buffer before:

@@ -60,13 +60,13 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   use_point_precision(point_precision.precision());
   point_precision_ = std::move(point_precision);
   const std::shared_ptr<const SurfaceTables> before = std::exchange(tables_, std::move(surface_tables));
-  dependents_ = stencil_dependents(tables_->stencils);
+  dependents_.reset();
   readers_.reset();
   all_corner_items_.clear();
   half_size_patches_ = 0;
   for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
   // Kept tables keep the points of the base vertices that did not change, in this frame and precision.
-  const PlanBuffers::CarriedVertices carried{origin, changed};
+  const PlanBuffers::CarriedPoints carried{origin, changed, change.kept_rows, before->stencils.first_row()};
   buffers_.upload_tables(*tables_, keep ? kept : std::vector<KeptPatches>{}, keep && few_changed ? &carried : nullptr,
                          before.get());
   tables_id_ = change.to;

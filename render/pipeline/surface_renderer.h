@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -166,6 +167,13 @@ private:
   /// The programs and buffers of every pass for points of `precision` (the buffers still to upload);
   /// where the driver refuses a program, throws gps::Error with every pass as it was.
   void use_point_precision(PointPrecision precision);
+  /// The stencil rows a change of topology that carried the points (run_compute_kept) leaves to compute:
+  /// those not kept (PlanChange::kept_rows), and the kept ones that read a vertex of `before` whose
+  /// Gaussian changed.
+  std::vector<int> rows_not_carried(const SurfaceTables& before, const std::vector<int>& changed,
+                                    const PlanChange& change, const std::vector<int>& origin);
+  /// Which stencil rows read each base vertex, found when first asked for after a change of tables.
+  const StencilDependents& dependents();
   /// The patches whose triangles an edit of `changed` vertices and the stencil `rows` reading them changes.
   std::vector<int> changed_patches(const std::vector<int>& changed, const std::vector<int>& rows);
   /// How a frame uses the surface cache: it draws the stored triangles, it was drawn while it was
@@ -195,7 +203,7 @@ private:
   int n_patches() const { return tables().plans.n_patches(); }
 
   std::shared_ptr<const SurfaceTables> tables_ = std::make_shared<const SurfaceTables>();
-  StencilDependents dependents_;                 // of tables_'s stencils: the rows an edit reaches
+  std::optional<StencilDependents> dependents_;  // of tables_'s stencils, once asked for (dependents())
   std::unique_ptr<const PatchReaders> readers_;  // built at the first edit the cache can follow
   PlanBuffers buffers_;
   MeshPointPrecision point_precision_;  // what the mesh's Gaussians need

@@ -3,6 +3,8 @@
 // surface cache is told of them.
 #include <glad/gl.h>
 
+#include <algorithm>
+
 #include "core/plans/stencil_table.h"
 #include "render/pipeline/kept_corner_output.h"
 #include "render/pipeline/kept_surface_triangles.h"
@@ -16,7 +18,7 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
   ++revision_;
   const PatchPlans& plans = tables().plans;
   if (changed) {
-    const std::vector<int> rows = rows_reading(dependents_, *changed);
+    const std::vector<int> rows = rows_reading(dependents(), *changed);
     buffers_.upload_edit(*changed, rows);
     const std::vector<int> patches = changed_patches(*changed, rows);
     const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
@@ -47,16 +49,22 @@ void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::v
   const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   const PatchPlans& plans = tables().plans;
-  const std::vector<int> patches = stale_corner_patches(before, tables(), dependents_, changed, change, origin);
+  const std::vector<int> patches = stale_corner_patches(
+      before, tables(), [this]() -> const StencilDependents& { return dependents(); }, changed, change, origin);
   const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
   const std::vector<int> items = CornerLimitPass::slot_items(plans, corners);
   buffers_.upload_corner_list(items);
-  if (points_carried) buffers_.upload_edit(changed, {});
+  const StencilTable& stencils = tables().stencils;
+  const std::vector<int> rows = points_carried ? rows_not_carried(before, changed, change, origin) : std::vector<int>{};
+  const bool listed_rows = points_carried && !update_everything(rows.size(), size_t(stencils.n_rows()));
+  if (points_carried) buffers_.upload_edit(changed, listed_rows ? rows : std::vector<int>{});
   buffers_.bind();
-  if (points_carried)
-    compute_.run_listed_vertices(tables().stencils, int(changed.size()), group_limit_);
+  if (listed_rows)
+    compute_.run_listed(stencils, int(changed.size()), int(rows.size()), group_limit_);
+  else if (points_carried)
+    compute_.run_listed_vertices(stencils, int(changed.size()), group_limit_);
   else
-    compute_.run_all(tables().stencils, group_limit_);
+    compute_.run_all(stencils, group_limit_);
   corners_.run(plans, int(items.size()), group_limit_);
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
@@ -64,6 +72,28 @@ void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::v
   const KeptTriangles triangles = kept_triangles(plans, before.plans.n_patches(), change.kept, patches);
   stored_levels_.follow(
       n_patches(), cache_.topology_changed(points_generation_, n_patches(), triangles.new_number, triangles.changed));
+}
+
+std::vector<int> SurfaceRenderer::rows_not_carried(const SurfaceTables& before, const std::vector<int>& changed,
+                                                   const PlanChange& change, const std::vector<int>& origin) {
+  const int n_rows = tables().stencils.n_rows();
+  std::vector<char> compute(size_t(n_rows), 1);
+  for (const KeptStencilRows& run : change.kept_rows) std::fill_n(compute.begin() + run.first, run.count, 0);
+  // A kept row reads vertices that were there before: those whose Gaussians changed make it stale.
+  const bool old_changed = std::any_of(changed.begin(), changed.end(), [&](int v) {
+    return size_t(origin.empty() ? v : origin[size_t(v)]) < size_t(before.stencils.n_base);
+  });
+  if (old_changed)
+    for (const int r : rows_reading(dependents(), changed)) compute[size_t(r)] = 1;
+  std::vector<int> rows;
+  for (int r = 0; r < n_rows; ++r)
+    if (compute[size_t(r)]) rows.push_back(r);
+  return rows;
+}
+
+const StencilDependents& SurfaceRenderer::dependents() {
+  if (!dependents_) dependents_ = stencil_dependents(tables().stencils);
+  return *dependents_;
 }
 
 std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {

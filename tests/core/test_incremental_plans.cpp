@@ -38,10 +38,36 @@ bool expect_relinked_named(const SurfaceTables& before, const SurfaceReplanner& 
   return true;
 }
 
+// The replanner's last change keeps stencil rows only where they have the terms of the rows named in
+// `before`, in runs that increase in both; returns how many rows it kept.
+int expect_kept_rows_alike(const SurfaceTables& before, const SurfaceReplanner& replanner, const std::string& where) {
+  const StencilTable &then = before.stencils, &now = replanner.tables().stencils;
+  int kept = 0, last = -1, last_old = -1;
+  for (const KeptStencilRows& run : replanner.last_change().kept_rows) {
+    EXPECT_TRUE(run.first > last && run.old_first > last_old && run.count > 0) << where;
+    EXPECT_LE(run.first + run.count, now.n_rows()) << where;
+    EXPECT_LE(run.old_first + run.count, then.n_rows()) << where;
+    if (run.first + run.count > now.n_rows() || run.old_first + run.count > then.n_rows()) return kept;
+    for (int i = 0; i < run.count; ++i) {
+      const int r = run.first + i, o = run.old_first + i;
+      const auto terms = [](const StencilTable& t, int row) {
+        const auto b = size_t(t.offsets[size_t(row)]), e = size_t(t.offsets[size_t(row) + 1]);
+        return std::pair{std::vector<int>(t.indices.begin() + long(b), t.indices.begin() + long(e)),
+                         std::vector<double>(t.weights.begin() + long(b), t.weights.begin() + long(e))};
+      };
+      EXPECT_EQ(terms(now, r), terms(then, o)) << where << ": row " << r << " kept from row " << o;
+    }
+    kept += run.count;
+    last = run.first + run.count - 1;
+    last_old = run.old_first + run.count - 1;
+  }
+  return kept;
+}
+
 // Random operations, each followed by the replanner: equal to a full re-plan after the operation, after
-// its undo and after its redo; the kept patches whose records changed named.
+// its undo and after its redo; the kept patches whose records changed named, the kept rows alike.
 TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
-  int named = 0;
+  int named = 0, kept_rows = 0;
   for (const test::RandomOperationCase& c : test::random_operation_cases()) {
     PlanOptions options;
     options.scheme = c.scheme;
@@ -74,11 +100,13 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
       faces += after.n_faces();
       test::expect_same_tables(replanner.tables(), full, where);
       named += expect_relinked_named(mesh_full, replanner, where);
+      kept_rows += expect_kept_rows_alike(mesh_full, replanner, where);
       const PolygonTopology& before = mesh.topology();
       const std::vector<int> back = inverse_origin(result.vertex_origin, mesh.n_vertices());
       replanner.set_topology(before, mesh.sharpness, back);
       test::expect_same_tables(replanner.tables(), mesh_full, where + ", undone");
       named += expect_relinked_named(full, replanner, where + ", undone");
+      kept_rows += expect_kept_rows_alike(full, replanner, where + ", undone");
       replanner.set_topology(after, result.mesh.sharpness, result.vertex_origin);
       test::expect_same_tables(replanner.tables(), full, where + ", redone");
       mesh = std::move(result.mesh);
@@ -91,6 +119,7 @@ TEST(IncrementalPlans, RandomOperationsMatchAFullReplan) {
     }
   }
   EXPECT_GT(named, 50) << "changes that named their relinked patches";
+  EXPECT_GT(kept_rows, 1000) << "stencil rows kept";
 }
 
 // On a mesh past kParallelFaces faces the replanner matches faces and follows the patch adjacency on
@@ -116,6 +145,7 @@ TEST(IncrementalPlans, RandomOperationsOnALargeMeshMatchAFullReplan) {
     replanner.set_topology(result.mesh, result.vertex_origin);
     test::expect_same_tables(replanner.tables(), full, where);
     EXPECT_TRUE(expect_relinked_named(mesh_full, replanner, where));
+    expect_kept_rows_alike(mesh_full, replanner, where);
     replanner.set_topology(mesh, inverse_origin(result.vertex_origin, mesh.n_vertices()));
     test::expect_same_tables(replanner.tables(), mesh_full, where + ", undone");
     EXPECT_TRUE(expect_relinked_named(full, replanner, where + ", undone"));

@@ -5,6 +5,7 @@
 // creased meshes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "core/modelling/extrude.h"
@@ -181,6 +182,31 @@ TEST_F(IncrementalGpuBuffers, AnExtrudePastTheBoundingBoxKeepsTheFrameAndTheOutp
 
   const Modelled moved = transform_vertices(sphere, {}, AffineMap{Mat3::Identity(), Vec3(5.0, 0.0, 0.0)});
   EXPECT_TRUE(renderer.frame().following(moved.mesh) == NormalisedFrame::of(moved.mesh));
+}
+
+// An extrude that also changes the Gaussian of a vertex far from it, on a creased mesh: the stencil
+// rows the replanner kept are carried over but those that read that vertex, computed again.
+TEST_F(IncrementalGpuBuffers, KeptRowsThatReadAChangedVertexAreComputedAgain) {
+  CovarianceMesh mesh = make_sample("sphere", 1500);
+  for (size_t e = 0; e < mesh.n_edges(); e += 7) mesh.sharpness.set_crease(mesh.edge(e)[0], mesh.edge(e)[1], 2.0);
+  SurfaceReplanner replanner(mesh, {}, test::kSmallRanges);
+  SurfaceRenderer renderer;
+  const NormalisedFrame frame = NormalisedFrame::of(mesh);
+  renderer.set_mesh(mesh, replanner.tables(), frame, replanner.last_change(), {});
+  Modelled extruded = extrude_faces(mesh, {0}, 0.05);
+  const int far = int(mesh.n_vertices()) - 1;  // read by crease rows far from face 0
+  const std::vector<int> rows = rows_reading(stencil_dependents(replanner.tables().stencils), {far});
+  ASSERT_FALSE(rows.empty()) << "stencil rows read the vertex";
+  const int moved = extruded.vertex_origin.empty()
+                        ? far
+                        : int(std::find(extruded.vertex_origin.begin(), extruded.vertex_origin.end(), far) -
+                              extruded.vertex_origin.begin());
+  ASSERT_LT(size_t(moved), extruded.mesh.n_vertices());
+  extruded.mesh.set_mean(size_t(moved), extruded.mesh.mean(size_t(moved)) * 1.01);
+  replanner.set_topology(extruded.mesh, extruded.vertex_origin);
+  ASSERT_FALSE(replanner.last_change().kept_rows.empty()) << "rows kept";
+  renderer.set_mesh(extruded.mesh, replanner.tables(), frame, replanner.last_change(), extruded.vertex_origin);
+  expect_as_set_anew(renderer, extruded.mesh, frame, "extruded, a far vertex moved");
 }
 
 // A crease dragged (SurfaceReplanner::set_sharpness, as the crease tool re-plans) evaluates only the
