@@ -59,7 +59,7 @@ class SurfaceReplanner {
 public:
   /// The faces built together; a change builds again the faces it reaches, and keeps the runs of a
   /// range between them.
-  static constexpr int kFacesPerRange = 256;
+  static constexpr int kFacesPerRange = 1024;
 
   /// The plans of `topology` with `sharpness` under `options`, as build_surface_plans makes them, in
   /// ranges of `faces_per_range` faces (which the tables do not depend on). Throws as it does.
@@ -137,7 +137,7 @@ private:
   // The fewest faces a run cut out of a range that a change reaches keeps (fewer are built again with
   // the faces beside them): cutting many short runs costs more than building them, and leaves ranges
   // of a few faces behind.
-  int min_run_faces() const { return std::max(1, faces_per_range_ / 16); }
+  int min_run_faces() const { return std::clamp(faces_per_range_ / 16, 1, 16); }
 
   PlanOptions options_;
   Scheme scheme_;
