@@ -56,7 +56,8 @@ std::vector<std::pair<std::string, int>> sample_list(const std::vector<std::stri
 void add_bench_command(CLI::App& app) {
   struct Args {
     bool preprocess = false, render = false, edit = false, model = false;
-    int size = 0;  // the mode's default
+    int size = 0;          // the mode's default
+    int crease_every = 0;  // --model: none
     PlanArguments plans;
     std::string json, plots, context = "auto", mesh;
     std::vector<std::string> meshes;
@@ -77,6 +78,10 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--size", args->size,
                   "--render: render size in pixels (square, default 512); --edit: faces (default 100000)")
       ->transform(integer_in(16, 4000000));
+  cmd->add_option(
+         "--crease-every", args->crease_every,
+         "--model: crease every Nth edge at sharpness 2 first (a creased mesh's tables hold many stencil rows)")
+      ->transform(integer_in(1, 1000000));
   add_plan_arguments(cmd, args->plans);
   cmd->add_option("--mesh", args->mesh, "--edit: the sample to edit (default: sphere; icosphere for triangles)");
   cmd->add_option("--meshes", args->meshes,
@@ -117,14 +122,14 @@ void add_bench_command(CLI::App& app) {
       const auto context = make_context();
       const std::string name = args->mesh.empty() ? "sphere" : args->mesh;
       std::printf("device: %s, 1280x720, adaptive 6 px\n", context->description().c_str());
-      std::printf("%-22s %-18s %10s %10s %8s %10s %10s %10s %10s %10s %10s %10s %10s %10s %9s %8s\n", "mesh",
-                  "operation", "operation", "re-plan", "faces", "full plan", "upload", "frame", "total", "next", "pause",
-                  "still", "undo", "undo frame", "captures", "still is");
+      std::printf("%-30s %-18s %10s %10s %8s %10s %10s %10s %10s %10s %10s %10s %10s %10s %9s %8s\n", "mesh",
+                  "operation", "operation", "re-plan", "faces", "full plan", "upload", "frame", "total", "next",
+                  "pause", "still", "undo", "undo frame", "captures", "still is");
       nlohmann::json all = nlohmann::json::array();
       for (const int faces : args->size ? std::vector<int>{args->size} : std::vector<int>{10000, 100000}) {
-        const auto r = modelling_figures(name, faces, args->plans.options());
+        const auto r = modelling_figures(name, faces, args->plans.options(), args->crease_every);
         for (const auto& op : r["operations"]) {
-          std::printf("%-22s %-18s",
+          std::printf("%-30s %-18s",
                       (r["mesh"].get<std::string>() + " (" + std::to_string(r["faces"].get<int>()) + ")").c_str(),
                       op["operation"].get<std::string>().c_str());
           for (const char* key :

@@ -43,8 +43,10 @@ double mean(const std::vector<double>& values) {
 
 }  // namespace
 
-nlohmann::json modelling_figures(const std::string& name, int faces, const PlanOptions& options) {
-  const CovarianceMesh mesh = make_sample(name, faces);
+nlohmann::json modelling_figures(const std::string& name, int faces, const PlanOptions& options, int crease_every) {
+  CovarianceMesh mesh = make_sample(name, faces);
+  for (size_t e = 0; crease_every > 0 && e < mesh.n_edges(); e += size_t(crease_every))
+    mesh.sharpness.set_crease(mesh.edge(e)[0], mesh.edge(e)[1], 2.0);
   SurfaceRenderer renderer;
   renderer.surface_cache().set_whole_weld_delay(SurfaceCache::kPauseWeldDelay);  // as the editor draws
   GpuPassTimer timer;
@@ -172,8 +174,9 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
                     {"still_cached", mean(still_cached)},
                     {"still_welded", mean(still_welded)}});
   }
-  return {{"mesh", name + "/" + std::to_string(faces)},
+  return {{"mesh", name + "/" + std::to_string(faces) + (crease_every > 0 ? "+creases" : "")},
           {"faces", mesh.n_faces()},
+          {"creased_edges", mesh.sharpness.creases.size()},
           {"vertices", mesh.n_vertices()},
           {"operations", rows}};
 }
