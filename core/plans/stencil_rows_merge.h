@@ -12,7 +12,8 @@ namespace gps {
 
 /// What a merge found of one table's rows, kept with the table for the next merge: the rows that come
 /// first in a merge are those that came first in the one before but where a table merged then is gone,
-/// or a new one holds the same terms. Cleared (reset to {}) wherever the table's rows change.
+/// or a new one holds the same terms. Cleared (reset to {}) wherever the table's rows change, but for a
+/// renumbering of the base vertices that is one to one and the same for every table kept.
 struct StencilRowFirsts {
   long long table = 0;              // the table's id in the merges (0: not merged yet)
   int position = -1;                // its place among the tables of its last merge

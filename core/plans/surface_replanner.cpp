@@ -75,10 +75,9 @@ bool renumber_range(RangePlans& range, const std::vector<int>& new_index, bool s
   }
   for (int32_t& q : s.indices) point(q);  // rows are over base vertices only
   s.n_base = n_new;
-  if (moved) {  // a row's key hashes its indices: merge_ranges hashes it and finds its first row again
-    range.row_keys.clear();
-    range.row_firsts = {};
-  }
+  // A row's key hashes its indices: merge_ranges hashes it again. What the last merge found of the rows
+  // holds: one renumbering of every kept range, one to one, leaves rows alike that were alike.
+  if (moved) range.row_keys.clear();
   return !gone;
 }
 

@@ -43,8 +43,9 @@ struct PlanChange {
   /// not kept. Unset: any kept patch's may.
   std::optional<std::vector<int>> relinked;
   /// The stencil rows kept, in runs in the new tables' order (both numberings increase): rows of kept
-  /// ranges, the same terms as those rows had (a renderer computes again only the others, and those
-  /// that read a vertex whose Gaussian changed).
+  /// ranges, the same terms as those rows had, their base vertices renumbered as the change's origin
+  /// says (a renderer computes again only the others, and those that read a vertex whose Gaussian
+  /// changed).
   std::vector<KeptStencilRows> kept_rows;
 };
 
