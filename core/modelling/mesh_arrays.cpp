@@ -6,6 +6,7 @@
 
 #include "core/io/mesh_repair.h"
 #include "core/support/error.h"
+#include "core/support/hash_mix.h"
 #include "core/mesh/face_area.h"
 #include "core/mesh/mesh_connectivity.h"
 #include "core/modelling/operation_words.h"
@@ -317,12 +318,7 @@ void DirectedEdges::reserve(size_t n) {
 
 size_t DirectedEdges::slot_of(uint64_t key) const {
   const size_t mask = slots_.size() - 1;
-  // A 64-bit mix (splitmix64's finaliser) so that keys of neighbouring vertices spread over the table.
-  uint64_t h = key;
-  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-  h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-  h ^= h >> 31;
-  for (size_t s = size_t(h) & mask;; s = (s + 1) & mask)
+  for (size_t s = size_t(mixed_hash(key)) & mask;; s = (s + 1) & mask)
     if (slots_[s] < 0 || slot_keys_[s] == key) return s;
 }
 

@@ -8,19 +8,14 @@
 #include <omp.h>
 #endif
 
+#include "core/support/hash_mix.h"
+
 namespace gps {
 
 namespace {
 
 // Fewer rows are merged on one core: starting the others costs more.
 constexpr size_t kParallelRows = 1 << 14;
-
-// splitmix64's finaliser: every bit of a row key reaches the low ones and the high ones.
-size_t mixed(size_t key) {
-  key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ull;
-  key = (key ^ (key >> 27)) * 0x94d049bb133111ebull;
-  return key ^ (key >> 31);
-}
 
 // Whether two rows have the same terms, in the same order (as StencilTableBuilder compares them).
 bool same_terms(const StencilTable& a, int row_a, const StencilTable& b, int row_b) {
@@ -86,7 +81,7 @@ std::vector<int> first_rows_found_anew(const RowSequence& rows) {
     std::vector<Slot> slot(slots, Slot{0, -1});
     for (size_t t = 0; t < rows.n_tables(); ++t)
       for (int r = 0; r < rows.n_rows(t); ++r) {
-        const size_t key = rows.key(t, r), hash = mixed(key);
+        const size_t key = rows.key(t, r), hash = size_t(mixed_hash(key));
         if (hash % shards != shard) continue;
         const size_t i = rows.start(t) + size_t(r);
         size_t at = (hash / shards) & mask;

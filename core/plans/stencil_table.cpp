@@ -6,17 +6,14 @@
 #include <cmath>
 
 #include "core/mesh/sparse_lists.h"
+#include "core/support/hash_mix.h"
 
 namespace gps {
 
 namespace {
 constexpr int kEmptySlot = -2;
-// The slot a key starts at (splitmix64's finaliser: every bit of the key reaches the low ones).
-size_t slot_of(size_t key, size_t mask) {
-  key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ull;
-  key = (key ^ (key >> 27)) * 0x94d049bb133111ebull;
-  return (key ^ (key >> 31)) & mask;
-}
+// The slot a key starts at.
+size_t slot_of(size_t key, size_t mask) { return size_t(mixed_hash(key)) & mask; }
 }  // namespace
 
 StencilTableBuilder::StencilTableBuilder(int n_base, int first_row) {
