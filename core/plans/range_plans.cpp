@@ -15,7 +15,6 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
     plans.patch_roots = std::move(storage->plans.patch_roots);
     plans.patch_corner_points = std::move(storage->plans.patch_corner_points);
     plans.patch_edges = std::move(storage->plans.patch_edges);
-    plans.patch_edges.clear();  // triangles have none; quads resize them below
   }
   if (!ranges.empty()) plans.shape = ranges.front().tables.plans.shape;
   const size_t corners = size_t(plans.corners()), leaf_points = plans.shape == PatchShape::quad ? 16 : 12;
@@ -60,7 +59,10 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
   plans.nodes.resize(node_base.back());
   plans.patch_roots.resize(patch_base.back());
   plans.patch_corner_points.resize(corners * patch_base.back());
-  if (plans.shape == PatchShape::quad) plans.patch_edges.resize(kPatchEdgeStride * patch_base.back());
+  if (plans.shape == PatchShape::quad)
+    plans.patch_edges.resize(kPatchEdgeStride * patch_base.back());
+  else
+    plans.patch_edges.clear();  // triangles have none
   // The leading ranges merged before: their records are where they were, with the same rows and tables.
   same_leading = std::min(same_leading, ranges.size());
   const size_t edge_stride = plans.shape == PatchShape::quad ? kPatchEdgeStride : 0;
