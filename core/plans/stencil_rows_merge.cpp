@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <optional>
 #include <unordered_map>
 
 #if defined(_OPENMP)
@@ -134,7 +135,14 @@ std::vector<int> first_rows_followed(const RowSequence& rows, const std::vector<
   };
   std::vector<Terms> terms;
   std::unordered_map<size_t, std::vector<int>> terms_of_key;
+  // The keys in terms_of_key as bits of their hash: most kept rows share no key with a row to place,
+  // and are passed over without a look in the map.
+  size_t key_bits_size = 64;
+  while (key_bits_size < 16 * (fresh_rows + 64)) key_bits_size *= 2;
+  std::vector<uint64_t> key_bits(key_bits_size / 64, 0);
+  const auto key_bit = [mask = key_bits_size - 1](size_t key) { return size_t(mixed_hash(key)) & mask; };
   const auto find = [&](size_t i, size_t key) {
+    if (const size_t bit = key_bit(key); !((key_bits[bit / 64] >> (bit % 64)) & 1)) return -1;
     if (const auto at = terms_of_key.find(key); at != terms_of_key.end())
       for (const int c : at->second)
         if (rows.same_terms_at(i, terms[size_t(c)].row)) return c;
@@ -146,6 +154,8 @@ std::vector<int> first_rows_followed(const RowSequence& rows, const std::vector<
       c = int(terms.size());
       terms.push_back({i, first});
       terms_of_key[key].push_back(c);
+      const size_t bit = key_bit(key);
+      key_bits[bit / 64] |= uint64_t(1) << (bit % 64);
     }
     terms[size_t(c)].first = std::min(terms[size_t(c)].first, first);
     return c;
@@ -166,14 +176,21 @@ std::vector<int> first_rows_followed(const RowSequence& rows, const std::vector<
   for (size_t t = 0; t < n_tables; ++t) {
     if (!kept(t)) continue;
     const StencilRowFirsts& f = *firsts[t];
+    // A table's rows name few tables, mostly in runs: the last one's place is looked up once.
+    long long last_table = 0;  // no table has id 0
+    std::optional<size_t> last_place;
     for (int r = 0; r < rows.n_rows(t); ++r) {
       const size_t i = rows.start(t) + size_t(r);
-      const auto at = position.find(f.of_table[size_t(r)]);
-      if (at == position.end()) {
+      if (const long long table = f.of_table[size_t(r)]; table != last_table) {
+        const auto at = position.find(table);
+        last_table = table;
+        last_place = at == position.end() ? std::nullopt : std::optional<size_t>(at->second);
+      }
+      if (!last_place) {
         first_gone[t].push_back(i);
         continue;
       }
-      const int was = int(rows.start(at->second)) + f.of_row[size_t(r)];
+      const int was = int(rows.start(*last_place)) + f.of_row[size_t(r)];
       if (const int c = find(i, rows.key(t, r)); c >= 0)
         beside_new[t].emplace_back(i, was);
       else
