@@ -237,11 +237,14 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
 #pragma omp parallel for schedule(dynamic) if (n >= kParallelRows)
   for (size_t t = 0; t < n_tables; ++t) {
     const StencilTable& s = rows.table(t);
+    int n_rows = 0, n_terms = 0;  // counted here, written once: the cores' counts share cache lines
     for (int r = 0; r < s.n_rows(); ++r)
       if (const size_t i = rows.start(t) + size_t(r); first[i] == int(i)) {
-        ++table_rows[t + 1];
-        table_terms[t + 1] += s.offsets[size_t(r) + 1] - s.offsets[size_t(r)];
+        ++n_rows;
+        n_terms += s.offsets[size_t(r) + 1] - s.offsets[size_t(r)];
       }
+    table_rows[t + 1] = n_rows;
+    table_terms[t + 1] = n_terms;
   }
   for (size_t t = 0; t < n_tables; ++t) {
     table_rows[t + 1] += table_rows[t];
