@@ -27,6 +27,22 @@ bool same_terms(const StencilTable& a, int row_a, const StencilTable& b, int row
          std::equal(a.weights.begin() + i, a.weights.begin() + i + n, b.weights.begin() + j);
 }
 
+// Appends the rows of `run` to `kept` as one row after another: a row that is behind the last run's
+// end in either numbering is left out, one at its end in both extends it, any other starts a run.
+void join_kept_rows(std::vector<KeptStencilRows>& kept, KeptStencilRows run) {
+  if (!kept.empty()) {
+    KeptStencilRows& last = kept.back();
+    const int behind = std::max({0, last.first + last.count - run.first, last.old_first + last.count - run.old_first});
+    if (behind >= run.count) return;
+    run = {run.first + behind, run.old_first + behind, run.count - behind};
+    if (last.first + last.count == run.first && last.old_first + last.count == run.old_first) {
+      last.count += run.count;
+      return;
+    }
+  }
+  kept.push_back(run);
+}
+
 long long new_table_id() {
   static std::atomic<long long> last{0};
   return ++last;
@@ -277,22 +293,30 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
     for (int r = 0; r < rows.n_rows(t); ++r)
       out.points[t][size_t(r)] = table.first_row() + number[size_t(first[rows.start(t) + size_t(r)])];
   }
-  // The rows of the tables kept from the merge before, each with its row then (both in order).
-  if (followed)
+  // The rows of the tables kept from the merge before, each with its row then (both in order): each
+  // table's in runs consecutive in both, on all cores, then the runs joined in table order.
+  if (followed) {
+    std::vector<std::vector<KeptStencilRows>> table_runs(n_tables);
+#pragma omp parallel for schedule(dynamic) if (n >= kParallelRows)
     for (size_t t = 0; t < n_tables; ++t) {
       const StencilRowFirsts& f = *firsts[t];
       if (f.table == 0 || f.merged_row.size() != size_t(rows.n_rows(t))) continue;
+      std::vector<KeptStencilRows> runs;
       for (int r = 0; r < rows.n_rows(t); ++r) {
         const size_t i = rows.start(t) + size_t(r);
         if (first[i] != int(i)) continue;
         const int now = number[i], then = f.merged_row[size_t(r)];
-        KeptStencilRows* last = out.kept.empty() ? nullptr : &out.kept.back();
-        if (last && last->first + last->count == now && last->old_first + last->count == then)
-          ++last->count;
-        else if (!last || (last->first + last->count <= now && last->old_first + last->count <= then))
-          out.kept.push_back({now, then, 1});
+        if (!runs.empty() && runs.back().first + runs.back().count == now &&
+            runs.back().old_first + runs.back().count == then)
+          ++runs.back().count;
+        else
+          runs.push_back({now, then, 1});
       }
+      table_runs[t] = std::move(runs);
     }
+    for (const std::vector<KeptStencilRows>& runs : table_runs)
+      for (const KeptStencilRows& run : runs) join_kept_rows(out.kept, run);
+  }
 
   // What this merge found, for the next: of every row where found anew (or of a table merged first),
   // else of the rows placed again.
