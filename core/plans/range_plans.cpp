@@ -8,9 +8,18 @@
 namespace gps {
 
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release, const SurfaceTables* previous,
-                           size_t same_leading, SurfaceTables* storage, std::vector<KeptStencilRows>* kept_rows) {
+                           size_t same_leading, SurfaceTables* storage, std::vector<KeptStencilRows>* kept_rows,
+                           size_t storage_leading) {
+  // What the storage holds of the first ranges is read only where it was merged as this merge merges.
+  if (!storage || storage->stencils.first_row() != row_start_for(n_base) ||
+      (!ranges.empty() && storage->plans.shape != ranges.front().tables.plans.shape))
+    storage_leading = 0;
   PatchPlans plans;
-  if (storage) {  // every element below is written: what the storage held is never read
+  struct {
+    size_t nodes = 0, patches = 0;
+  } held;         // the records the storage holds
+  if (storage) {  // every element past the storage's leading part is written
+    held = {storage->plans.nodes.size(), storage->plans.patch_roots.size()};
     plans.nodes = std::move(storage->plans.nodes);
     plans.patch_roots = std::move(storage->plans.patch_roots);
     plans.patch_corner_points = std::move(storage->plans.patch_corner_points);
@@ -36,18 +45,6 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
       for (int row = 0; row < s.n_rows(); ++row) keys[size_t(row)] = StencilTableBuilder::row_key(s, row);
     }
   }
-  std::vector<const StencilTable*> range_stencils(ranges.size());
-  std::vector<const std::vector<size_t>*> range_keys(ranges.size());
-  std::vector<StencilRowFirsts*> range_firsts(release ? 0 : ranges.size());  // kept ranges: kept for the next merge
-  for (size_t r = 0; r < ranges.size(); ++r) {
-    range_stencils[r] = &ranges[r].tables.stencils;
-    range_keys[r] = &ranges[r].row_keys;
-    if (!release) range_firsts[r] = &ranges[r].row_firsts;
-  }
-  MergedStencilRows stencils = merge_stencil_rows(range_stencils, range_keys, n_base, row_start_for(n_base),
-                                                  range_firsts, storage ? &storage->stencils : nullptr);
-  if (kept_rows) *kept_rows = std::move(stencils.kept);
-  const std::vector<std::vector<int>>& rows = stencils.points;  // per range: local row -> point in the whole table
   // Where each range's records start in the whole table.
   std::vector<size_t> node_base(ranges.size() + 1, 0), patch_base(ranges.size() + 1, 0);
   for (size_t r = 0; r < ranges.size(); ++r) {
@@ -56,6 +53,26 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
     node_base[r + 1] = node_base[r] + p.nodes.size();
     patch_base[r + 1] = patch_base[r] + p.patch_roots.size();
   }
+  same_leading = std::min(same_leading, ranges.size());
+  if (!previous || previous->stencils.first_row() != row_start_for(n_base) || previous->plans.shape != plans.shape ||
+      previous->plans.nodes.size() < node_base[same_leading] ||
+      previous->plans.patch_roots.size() < patch_base[same_leading])
+    same_leading = 0;
+  storage_leading = std::min(storage_leading, same_leading);
+  if (held.nodes < node_base[storage_leading] || held.patches < patch_base[storage_leading]) storage_leading = 0;
+  std::vector<const StencilTable*> range_stencils(ranges.size());
+  std::vector<const std::vector<size_t>*> range_keys(ranges.size());
+  std::vector<StencilRowFirsts*> range_firsts(release ? 0 : ranges.size());  // kept ranges: kept for the next merge
+  for (size_t r = 0; r < ranges.size(); ++r) {
+    range_stencils[r] = &ranges[r].tables.stencils;
+    range_keys[r] = &ranges[r].row_keys;
+    if (!release) range_firsts[r] = &ranges[r].row_firsts;
+  }
+  MergedStencilRows stencils =
+      merge_stencil_rows(range_stencils, range_keys, n_base, row_start_for(n_base), range_firsts,
+                         storage ? &storage->stencils : nullptr, storage_leading);
+  if (kept_rows) *kept_rows = std::move(stencils.kept);
+  const std::vector<std::vector<int>>& rows = stencils.points;  // per range: local row -> point in the whole table
   plans.nodes.resize(node_base.back());
   plans.patch_roots.resize(patch_base.back());
   plans.patch_corner_points.resize(corners * patch_base.back());
@@ -64,21 +81,17 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
   else
     plans.patch_edges.clear();  // triangles have none
   // The leading ranges merged before: their records are where they were, with the same rows and tables.
-  same_leading = std::min(same_leading, ranges.size());
   const size_t edge_stride = plans.shape == PatchShape::quad ? kPatchEdgeStride : 0;
-  const auto copy_prefix = [](const std::vector<int32_t>& from, std::vector<int32_t>& to, size_t count) {
-    std::copy(from.begin(), from.begin() + long(count), to.begin());
-  };
-  if (!previous || previous->stencils.first_row() != row_start_for(n_base) || previous->plans.shape != plans.shape ||
-      previous->plans.nodes.size() < node_base[same_leading] ||
-      previous->plans.patch_roots.size() < patch_base[same_leading])
-    same_leading = 0;
-  if (same_leading > 0) {
+  if (same_leading > storage_leading) {  // copied from `previous` past what the storage holds
     const PatchPlans& q = previous->plans;
-    copy_prefix(q.nodes, plans.nodes, node_base[same_leading]);
-    copy_prefix(q.patch_roots, plans.patch_roots, patch_base[same_leading]);
-    copy_prefix(q.patch_corner_points, plans.patch_corner_points, corners * patch_base[same_leading]);
-    copy_prefix(q.patch_edges, plans.patch_edges, edge_stride * patch_base[same_leading]);
+    const auto copy_part = [](const std::vector<int32_t>& from, std::vector<int32_t>& to, size_t begin, size_t end) {
+      std::copy(from.begin() + long(begin), from.begin() + long(end), to.begin() + long(begin));
+    };
+    const size_t a = storage_leading, b = same_leading;
+    copy_part(q.nodes, plans.nodes, node_base[a], node_base[b]);
+    copy_part(q.patch_roots, plans.patch_roots, patch_base[a], patch_base[b]);
+    copy_part(q.patch_corner_points, plans.patch_corner_points, corners * patch_base[a], corners * patch_base[b]);
+    copy_part(q.patch_edges, plans.patch_edges, edge_stride * patch_base[a], edge_stride * patch_base[b]);
   }
 #pragma omp parallel for schedule(dynamic)
   for (size_t r = same_leading; r < ranges.size(); ++r) {

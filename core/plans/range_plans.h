@@ -29,11 +29,14 @@ struct RangePlans {
 /// before over the same n_base step from ranges whose first `same_leading` were these, unchanged; their
 /// part of the plans, which comes out the same, is copied from there. `storage`: tables no longer used,
 /// whose plan arrays the merge writes into (their storage reused: none is allocated and filled first).
-/// `kept_rows`: where given, the stencil rows that kept ranges hold, and their rows in the tables merged
-/// before from them (merge_stencil_rows).
+/// `storage_leading`: the first ranges whose part `storage` holds already as this merge writes it (it was
+/// merged over the same n_base step from ranges whose first were these, as `previous` was), at most
+/// `same_leading`; their part is not written again. `kept_rows`: where given, the stencil rows that kept
+/// ranges hold, and their rows in the tables merged before from them (merge_stencil_rows).
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release,
                            const SurfaceTables* previous = nullptr, size_t same_leading = 0,
-                           SurfaceTables* storage = nullptr, std::vector<KeptStencilRows>* kept_rows = nullptr);
+                           SurfaceTables* storage = nullptr, std::vector<KeptStencilRows>* kept_rows = nullptr,
+                           size_t storage_leading = 0);
 
 /// Patches [first, last) of `range` as the range their faces alone build: their nodes, corner points and
 /// edges cut out, their rows and extraordinary tables numbered in the order the patches first read them

@@ -230,7 +230,8 @@ std::vector<int> first_rows_followed(const RowSequence& rows, const std::vector<
 
 MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tables,
                                      const std::vector<const std::vector<size_t>*>& keys, int n_base, int first_row,
-                                     const std::vector<StencilRowFirsts*>& firsts, StencilTable* storage) {
+                                     const std::vector<StencilRowFirsts*>& firsts, StencilTable* storage,
+                                     size_t storage_leading) {
   const RowSequence rows(tables, keys);
   const size_t n_tables = tables.size(), n = rows.size();
   std::vector<size_t> placed;  // where the last merge's firsts were followed: the rows whose first row was found again
@@ -242,7 +243,10 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
   // numbered and copied on all cores.
   MergedStencilRows out;
   StencilTable& table = out.table;
-  if (storage) {  // every element below is written: what the storage held is never read
+  size_t held_offsets = 0, held_terms = 0;
+  if (storage) {  // every element past its leading tables' rows is written
+    held_offsets = storage->offsets.size();
+    held_terms = std::min(storage->indices.size(), storage->weights.size());
     table.offsets = std::move(storage->offsets);
     table.indices = std::move(storage->indices);
     table.weights = std::move(storage->weights);
@@ -266,6 +270,10 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
     table_rows[t + 1] += table_rows[t];
     table_terms[t + 1] += table_terms[t];
   }
+  storage_leading = std::min(storage_leading, n_tables);
+  if (!storage || held_offsets < size_t(table_rows[storage_leading]) ||
+      held_terms < size_t(table_terms[storage_leading]))
+    storage_leading = 0;
   table.offsets.resize(size_t(table_rows.back()) + 1);
   table.offsets.back() = table_terms.back();
   table.indices.resize(size_t(table_terms.back()));
@@ -275,6 +283,11 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
   for (size_t t = 0; t < n_tables; ++t) {
     const StencilTable& s = rows.table(t);
     int row = table_rows[t], at = table_terms[t];
+    if (t < storage_leading) {  // its rows are in the storage already: numbered only
+      for (int r = 0; r < s.n_rows(); ++r)
+        if (const size_t i = rows.start(t) + size_t(r); first[i] == int(i)) number[i] = row++;
+      continue;
+    }
     for (int r = 0; r < s.n_rows(); ++r) {
       const size_t i = rows.start(t) + size_t(r);
       if (first[i] != int(i)) continue;

@@ -39,10 +39,11 @@ struct MergedStencilRows {
 /// rows first), rows with the same terms shared. `keys[t][r]`: StencilTableBuilder::row_key of row r of
 /// table t. The merged rows are numbered from point `first_row` on, past `n_base` base vertices.
 /// `firsts`: none, or per table what the last merge found of it, read and updated. `storage`: a table
-/// no longer used, whose arrays the merged table is written into.
+/// no longer used, whose arrays the merged table is written into; `storage_leading`: the first tables
+/// whose rows it holds already as they are merged here (merged from these tables too), not written again.
 MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tables,
                                      const std::vector<const std::vector<size_t>*>& keys, int n_base, int first_row,
-                                     const std::vector<StencilRowFirsts*>& firsts = {},
-                                     StencilTable* storage = nullptr);
+                                     const std::vector<StencilRowFirsts*>& firsts = {}, StencilTable* storage = nullptr,
+                                     size_t storage_leading = 0);
 
 }  // namespace gps

@@ -171,6 +171,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     add_patch_adjacency(built.plans, t, sharpness, &base_.connectivity);
     tables_ = std::make_shared<SurfaceTables>(std::move(built));
     retired_.reset();
+    tables_leading_ = 0;
     return;
   }
   if (scheme_ == Scheme::loop && !loop_tables_) loop_tables_ = std::make_unique<LoopCreaseTables>(options_.loop_beta);
@@ -196,11 +197,16 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   const int old_patches = old->plans.n_patches();
   const PatchShape old_shape = old->plans.shape;
   // The tables before the previous ones, once nothing else holds them, lend their storage.
+  // Their first ranges' part is there already where those ranges led both merges since.
   SurfaceTables storage;
-  if (retired_ && retired_.use_count() == 1) storage = std::move(*retired_);
+  size_t storage_leading = 0;
+  if (retired_ && retired_.use_count() == 1) {
+    storage = std::move(*retired_);
+    storage_leading = std::min(tables_leading_, same_leading);
+  }
   retired_.reset();
-  SurfaceTables merged =
-      merge_ranges(ranges_, t.n_vertices, false, old.get(), same_leading, &storage, &change_.kept_rows);
+  SurfaceTables merged = merge_ranges(ranges_, t.n_vertices, false, old.get(), same_leading, &storage,
+                                      &change_.kept_rows, storage_leading);
   merged.plans.patch_neighbours = std::move(storage.plans.patch_neighbours);  // assigned whole below
   merged.plans.corner_owners = std::move(storage.plans.corner_owners);
   patch_first_.assign(ranges_.size(), 0);
@@ -241,6 +247,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   if (!updated) add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity);
   if (updated) change_.relinked = kept_beside_built(kept);
   retired_ = std::exchange(tables_, std::make_shared<SurfaceTables>(std::move(merged)));
+  tables_leading_ = same_leading;
 }
 
 std::vector<int> SurfaceReplanner::kept_beside_built(const std::vector<KeptPatches>& kept) const {

@@ -155,6 +155,7 @@ private:
   std::shared_ptr<SurfaceTables> tables_ = std::make_shared<SurfaceTables>();
   std::shared_ptr<SurfaceTables> retired_;  // the tables before tables_, whose storage the next merge reuses
                                             // once nothing else holds them
+  size_t tables_leading_ = 0;               // the first ranges tables_ was merged from, unchanged from retired_'s
 };
 
 }  // namespace gps
