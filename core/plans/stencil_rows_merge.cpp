@@ -154,7 +154,7 @@ std::vector<int> first_rows_followed(const RowSequence& rows, const std::vector<
   // The keys in terms_of_key as bits of their hash: most kept rows share no key with a row to place,
   // and are passed over without a look in the map.
   size_t key_bits_size = 64;
-  while (key_bits_size < 16 * (fresh_rows + 64)) key_bits_size *= 2;
+  while (key_bits_size < 64 * (fresh_rows + 64)) key_bits_size *= 2;
   std::vector<uint64_t> key_bits(key_bits_size / 64, 0);
   const auto key_bit = [mask = key_bits_size - 1](size_t key) { return size_t(mixed_hash(key)) & mask; };
   const auto find = [&](size_t i, size_t key) {
