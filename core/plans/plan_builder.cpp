@@ -86,7 +86,7 @@ public:
       }
     }
     plans_.max_depth = deepest_;
-    return {{std::move(plans_), stencils_.finish()}, std::move(extraordinary_tables_), {}};
+    return {{std::move(plans_), stencils_.finish()}, std::move(extraordinary_tables_), {}, {}};
   }
 
 private:

@@ -10,10 +10,6 @@ namespace gps {
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release, const SurfaceTables* previous,
                            size_t same_leading, SurfaceTables* storage, std::vector<KeptStencilRows>* kept_rows,
                            size_t storage_leading) {
-  // What the storage holds of the first ranges is read only where it was merged as this merge merges.
-  if (!storage || storage->stencils.first_row() != row_start_for(n_base) ||
-      (!ranges.empty() && storage->plans.shape != ranges.front().tables.plans.shape))
-    storage_leading = 0;
   PatchPlans plans;
   struct {
     size_t nodes = 0, patches = 0;
@@ -58,8 +54,11 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
       previous->plans.nodes.size() < node_base[same_leading] ||
       previous->plans.patch_roots.size() < patch_base[same_leading])
     same_leading = 0;
+  // What the storage holds of the first ranges is read only where it was merged as this merge merges.
   storage_leading = std::min(storage_leading, same_leading);
-  if (held.nodes < node_base[storage_leading] || held.patches < patch_base[storage_leading]) storage_leading = 0;
+  if (!storage || storage->stencils.first_row() != row_start_for(n_base) || storage->plans.shape != plans.shape ||
+      held.nodes < node_base[storage_leading] || held.patches < patch_base[storage_leading])
+    storage_leading = 0;
   std::vector<const StencilTable*> range_stencils(ranges.size());
   std::vector<const std::vector<size_t>*> range_keys(ranges.size());
   std::vector<StencilRowFirsts*> range_firsts(release ? 0 : ranges.size());  // kept ranges: kept for the next merge

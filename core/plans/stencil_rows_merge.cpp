@@ -339,8 +339,11 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
     if (!firsts[t]) continue;
     StencilRowFirsts& f = *firsts[t];
     if (f.table == 0 || f.of_row.size() != size_t(rows.n_rows(t))) {
-      f = {new_table_id(), -1, std::vector<long long>(size_t(rows.n_rows(t))),
-           std::vector<int>(size_t(rows.n_rows(t)))};
+      f = {new_table_id(),
+           -1,
+           std::vector<long long>(size_t(rows.n_rows(t))),
+           std::vector<int>(size_t(rows.n_rows(t))),
+           {}};
       whole[t] = 1;
     }
     f.position = int(t);
