@@ -33,7 +33,7 @@ public:
       plans_.patch_roots.push_back(build_node(base_, {v[0], v[1], v[2]}, 0, f));
     }
     plans_.max_depth = deepest_;
-    return {{std::move(plans_), stencils_.finish()}, std::move(extraordinary_tables_), {}};
+    return {{std::move(plans_), stencils_.finish()}, std::move(extraordinary_tables_), {}, {}};
   }
 
 private:

@@ -105,6 +105,33 @@ inline PatchEdge patch_edge(const PatchPlans& plans, int patch, int k) {
   return {e[0], e[1], PatchEdgePart(e[2])};
 }
 
+/// Calls `point(int32_t&)` on every point index the plans' records hold: the points of the leaves and
+/// of the extraordinary nodes, the patch corner points and the ends of the patch edges (never a child
+/// offset, a table offset or an edge part).
+template <class Point>
+void for_each_point(PatchPlans& plans, Point&& point) {
+  const size_t leaf_points = plans.shape == PatchShape::quad ? 16 : 12;
+  std::vector<int32_t>& nodes = plans.nodes;
+  for (size_t o = 0; o < nodes.size();) {
+    const auto kind = NodeKind(node_kind(nodes[o]));
+    if (kind == NodeKind::extraordinary) {  // corner, table, K, K points
+      const size_t k = size_t(nodes[o + 3]);
+      for (size_t i = o + 4; i < o + 4 + k; ++i) point(nodes[i]);
+      o += 4 + k;
+      continue;
+    }
+    const size_t n = kind == NodeKind::internal ? 4 : leaf_points;
+    if (kind != NodeKind::internal)
+      for (size_t i = o + 1; i <= o + n; ++i) point(nodes[i]);
+    o += n + 1;
+  }
+  for (int32_t& q : plans.patch_corner_points) point(q);
+  for (size_t i = 0; i < plans.patch_edges.size(); i += kPatchEdgeInts) {  // from, to, part
+    point(plans.patch_edges[i]);
+    point(plans.patch_edges[i + 1]);
+  }
+}
+
 /// Whether the patch is one of a split face's half-size patches (quads).
 inline bool half_size_patch(const PatchPlans& plans, int patch) {
   return plans.shape == PatchShape::quad && half_size_part(plans.patch_edges[size_t(kPatchEdgeStride * patch + 2)]);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <map>
+#include <unordered_map>
+#include <utility>
 
 #include "core/plans/stencil_table.h"
 
@@ -226,6 +228,94 @@ bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece) 
   if (range.row_keys.size() == size_t(s.n_rows()))
     for (const int row : old_row) piece.row_keys.push_back(range.row_keys[size_t(row)]);
   return true;
+}
+
+namespace {
+
+// A range's row keys, hashed where the range has none (StencilTableBuilder::row_key).
+void hash_rows(RangePlans& range) {
+  const StencilTable& s = range.tables.stencils;
+  if (range.row_keys.size() == size_t(s.n_rows())) return;
+  range.row_keys.resize(size_t(s.n_rows()));
+  for (int row = 0; row < s.n_rows(); ++row) range.row_keys[size_t(row)] = StencilTableBuilder::row_key(s, row);
+}
+
+}  // namespace
+
+void append_range(RangePlans& range, const RangePlans& next) {
+  PatchPlans& p = range.tables.plans;
+  StencilTable& s = range.tables.stencils;
+  const PatchPlans& q = next.tables.plans;
+  const StencilTable& t = next.tables.stencils;
+  range.row_firsts = {};
+  if (p.patch_roots.empty() && s.n_rows() == 0) {
+    range = next;
+    range.row_firsts = {};
+    return;
+  }
+  hash_rows(range);
+  // The range's own rows follow the larger base.
+  const int n_base = std::max(s.n_base, t.n_base);
+  if (const int own = s.n_base; own != n_base)
+    for_each_point(p, [own, n_base](int32_t& x) { x = x < own ? x : x - own + n_base; });
+  s.n_base = n_base;
+  // next's rows: those whose terms the range holds are that row, the others are appended.
+  std::unordered_map<size_t, int> last_of_key;  // the range's last row of a key, chaining back
+  std::vector<int> previous_of_key(size_t(s.n_rows()), -1);
+  for (int row = 0; row < s.n_rows(); ++row) {
+    const auto [at, added] = last_of_key.try_emplace(range.row_keys[size_t(row)], row);
+    if (!added) previous_of_key[size_t(row)] = std::exchange(at->second, row);
+  }
+  const bool next_hashed = next.row_keys.size() == size_t(t.n_rows());
+  std::vector<int> row_of(size_t(t.n_rows()));  // next's row → the range's
+  for (int row = 0; row < t.n_rows(); ++row) {
+    const size_t key = next_hashed ? next.row_keys[size_t(row)] : StencilTableBuilder::row_key(t, row);
+    int found = -1;
+    if (const auto at = last_of_key.find(key); at != last_of_key.end())
+      for (int r = at->second; r >= 0 && found < 0; r = previous_of_key[size_t(r)])
+        if (same_row_terms(s, r, t, row)) found = r;
+    if (found < 0) {
+      found = s.n_rows();
+      const auto from = t.offsets[size_t(row)], to = t.offsets[size_t(row) + 1];
+      s.indices.insert(s.indices.end(), t.indices.begin() + from, t.indices.begin() + to);
+      s.weights.insert(s.weights.end(), t.weights.begin() + from, t.weights.begin() + to);
+      s.offsets.push_back(int32_t(s.indices.size()));
+      range.row_keys.push_back(key);
+    }
+    row_of[size_t(row)] = found;
+  }
+  // next's extraordinary tables: those the range holds are not repeated.
+  std::vector<int> table_of(next.extraordinary_tables.size());
+  for (size_t i = 0; i < table_of.size(); ++i) {
+    const auto at =
+        std::find(range.extraordinary_tables.begin(), range.extraordinary_tables.end(), next.extraordinary_tables[i]);
+    table_of[i] = int(at - range.extraordinary_tables.begin());
+    if (at == range.extraordinary_tables.end()) range.extraordinary_tables.push_back(next.extraordinary_tables[i]);
+  }
+  // next's records after the range's: children and roots past its nodes, points and tables renumbered.
+  PatchPlans added = q;
+  const int32_t node_base = int32_t(p.nodes.size()), own = t.n_base;
+  for_each_point(added, [&](int32_t& x) { x = x < own ? x : n_base + row_of[size_t(x - own)]; });
+  const size_t leaf_points = q.shape == PatchShape::quad ? 16 : 12;
+  for (size_t o = 0; o < added.nodes.size();) {
+    const auto kind = NodeKind(node_kind(added.nodes[o]));
+    if (kind == NodeKind::extraordinary) {  // corner, table, K, K points
+      added.nodes[o + 2] = table_of[size_t(added.nodes[o + 2])];
+      o += 4 + size_t(added.nodes[o + 3]);
+      continue;
+    }
+    const size_t n = kind == NodeKind::internal ? 4 : leaf_points;
+    if (kind == NodeKind::internal)
+      for (size_t i = o + 1; i <= o + n; ++i) added.nodes[i] += node_base;
+    o += n + 1;
+  }
+  for (int32_t& root : added.patch_roots) root += node_base;
+  p.max_depth = std::max(p.max_depth, q.max_depth);
+  p.nodes.insert(p.nodes.end(), added.nodes.begin(), added.nodes.end());
+  p.patch_roots.insert(p.patch_roots.end(), added.patch_roots.begin(), added.patch_roots.end());
+  p.patch_corner_points.insert(p.patch_corner_points.end(), added.patch_corner_points.begin(),
+                               added.patch_corner_points.end());
+  p.patch_edges.insert(p.patch_edges.end(), added.patch_edges.begin(), added.patch_edges.end());
 }
 
 }  // namespace gps

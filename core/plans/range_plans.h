@@ -45,4 +45,11 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
 /// unspecified and the faces must be built again.
 bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece);
 
+/// Appends `next`, the plans of the faces right after `range`'s, to `range`: the range both runs of faces
+/// build together, bit for bit where both are numbered on the same base (cut_range the other way).
+/// next's records follow range's, its rows whose terms range holds already are dropped and the others
+/// numbered after range's, and its extraordinary tables that range holds are not repeated. Over two
+/// bases, the points are numbered on the larger. What a merge found of the rows (row_firsts) is cleared.
+void append_range(RangePlans& range, const RangePlans& next);
+
 }  // namespace gps

@@ -9,6 +9,7 @@
 #include <omp.h>
 #endif
 
+#include "core/plans/stencil_table.h"
 #include "core/support/hash_mix.h"
 
 namespace gps {
@@ -17,15 +18,6 @@ namespace {
 
 // Fewer rows are merged on one core: starting the others costs more.
 constexpr size_t kParallelRows = 1 << 14;
-
-// Whether two rows have the same terms, in the same order (as StencilTableBuilder compares them).
-bool same_terms(const StencilTable& a, int row_a, const StencilTable& b, int row_b) {
-  const int i = a.offsets[size_t(row_a)], j = b.offsets[size_t(row_b)];
-  const int n = a.offsets[size_t(row_a) + 1] - i;
-  return n == b.offsets[size_t(row_b) + 1] - j &&
-         std::equal(a.indices.begin() + i, a.indices.begin() + i + n, b.indices.begin() + j) &&
-         std::equal(a.weights.begin() + i, a.weights.begin() + i + n, b.weights.begin() + j);
-}
 
 // Appends the rows of `run` to `kept` as one row after another: a row that is behind the last run's
 // end in either numbering is left out, one at its end in both extends it, any other starts a run.
@@ -66,7 +58,7 @@ public:
   }
   bool same_terms_at(size_t i, size_t j) const {
     const size_t t = table_of(i), u = table_of(j);
-    return same_terms(table(t), int(i - start_[t]), table(u), int(j - start_[u]));
+    return same_row_terms(table(t), int(i - start_[t]), table(u), int(j - start_[u]));
   }
 
 private:

@@ -39,6 +39,9 @@ private:
   std::vector<int> previous_same_hash_;  // per row: the previous row of equal key, or −1
 };
 
+/// Whether two rows have the same terms in the same order (as StencilTableBuilder compares them).
+bool same_row_terms(const StencilTable& a, int row_a, const StencilTable& b, int row_b);
+
 /// All points: q of the base vertices, zero in the gap, then every row (one sparse matrix-vector
 /// product over 9D).
 std::vector<Dual> apply_stencils(const StencilTable& table, const std::vector<Dual>& base);

@@ -54,25 +54,7 @@ bool renumber_range(RangePlans& range, const std::vector<int>& new_index, bool s
     moved |= w != q;
     q = w;
   };
-  const size_t leaf_points = p.shape == PatchShape::quad ? 16 : 12;
-  for (size_t o = 0; o < p.nodes.size();) {  // node records as in merge_ranges
-    const auto kind = NodeKind(node_kind(p.nodes[o]));
-    if (kind == NodeKind::extraordinary) {
-      const size_t k = size_t(p.nodes[o + 3]);
-      for (size_t i = o + 4; i < o + 4 + k; ++i) point(p.nodes[i]);
-      o += 4 + k;
-      continue;
-    }
-    const size_t n = kind == NodeKind::internal ? 4 : leaf_points;
-    if (kind != NodeKind::internal)
-      for (size_t i = o + 1; i <= o + n; ++i) point(p.nodes[i]);
-    o += n + 1;
-  }
-  for (int32_t& q : p.patch_corner_points) point(q);
-  for (size_t i = 0; i < p.patch_edges.size(); i += kPatchEdgeInts) {  // from, to, part
-    point(p.patch_edges[i]);
-    point(p.patch_edges[i + 1]);
-  }
+  for_each_point(p, point);
   for (int32_t& q : s.indices) point(q);  // rows are over base vertices only
   s.n_base = n_new;
   // A row's key hashes its indices: merge_ranges hashes it again. What the last merge found of the rows
@@ -529,7 +511,30 @@ int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std:
   ranges_ = std::move(ranges);
   range_first_ = std::move(firsts);
   build(fresh, sharpness, old_patch_first, old_face_patch, same_leading);
+  join_short_ranges();
   return planned;
+}
+
+void SurfaceReplanner::join_short_ranges() {
+  size_t into = 0;  // the range the ones after it join
+  for (size_t r = 1; r < ranges_.size(); ++r) {
+    if (range_first_[r + 1] - range_first_[into] > faces_per_range_) {
+      ++into;
+      if (into != r) {
+        ranges_[into] = std::move(ranges_[r]);
+        range_first_[into] = range_first_[r];
+        patch_first_[into] = patch_first_[r];
+      }
+      continue;
+    }
+    append_range(ranges_[into], ranges_[r]);
+    tables_leading_ = std::min(tables_leading_, into);
+  }
+  if (ranges_.empty()) return;
+  ranges_.resize(into + 1);
+  range_first_[into + 1] = range_first_.back();
+  range_first_.resize(into + 2);
+  patch_first_.resize(into + 1);
 }
 
 }  // namespace gps

@@ -95,6 +95,10 @@ public:
   int set_topology(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin = {});
   /// The same for a mesh's faces and sharpness, reading the connectivity it holds.
   int set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin = {});
+  /// How many ranges the faces are built in (none for Loop's smooth builder): changes cut the ranges
+  /// they reach, and neighbours that fit in one are joined again, so there are fewer than twice as many
+  /// as the faces fill.
+  int n_ranges() const { return int(ranges_.size()); }
   /// What the last set_sharpness or set_topology kept (after the constructor: from 0, nothing kept).
   /// A renderer evaluates again only the other patches.
   const PlanChange& last_change() const { return change_; }
@@ -133,6 +137,11 @@ private:
   // patch's records name, or named before, lies on a face sharing a vertex with its own, and a face
   // that shared one with a face now gone reads a changed vertex: built again.
   std::vector<int> kept_beside_built(const std::vector<KeptPatches>& kept) const;
+  // Joins each range to the one after it while their faces together are at most faces_per_range_
+  // (append_range): a change cuts the ranges it reaches into pieces, which would otherwise never join
+  // again, and every range's rows are merged anew, those it shares with a neighbour once per range. The
+  // tables stay as they are.
+  void join_short_ranges();
   // Cuts the faces into even ranges and builds them all.
   void build_all(const Sharpness& sharpness);
   // The fewest faces a run cut out of a range that a change reaches keeps (fewer are built again with

@@ -1,6 +1,7 @@
-// A range's plans cut down to a run of its faces (core/plans/range_plans.h, cut_range) are what building
-// those faces alone gives, bit for bit, on quad, triangle, split-face, open and creased meshes: the
-// replanner keeps the untouched runs of a range that a change reaches.
+// A range's plans cut down to a run of its faces (core/plans/range_plans.h, cut_range), and two ranges
+// joined (append_range), are what building those faces alone gives, bit for bit, on quad, triangle,
+// split-face, open and creased meshes: the replanner keeps the untouched runs of a range that a change
+// reaches, and joins the short ranges changes leave.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -62,6 +63,67 @@ TEST(RangePlans, ARunCutFromARangeIsWhatItsFacesBuildAlone) {
       expect_same_range(piece, build(i, j), where);
     }
   }
+}
+
+// Two neighbouring ranges appended one to the other are what their faces build as one range, bit for
+// bit, their row keys included: the replanner joins the short ranges that changes leave.
+TEST(RangePlans, ARangeAppendedToTheOneBeforeIsWhatTheirFacesBuildTogether) {
+  for (const test::RandomOperationCase& c : test::random_operation_cases()) {
+    const bool loop = c.scheme == Scheme::loop;
+    if (loop && c.mesh.sharpness.empty()) continue;  // Loop's smooth builder plans whole meshes
+    const PolygonTopology& t = c.mesh.topology();
+    const LocalMesh base = base_local_mesh(t, c.mesh.sharpness);
+    QuadExtraordinaryTableCache quad_tables;
+    LoopCreaseTables loop_tables(LoopBeta::loop);
+    int trial = 0;
+    const auto build = [&](int first, int last) {
+      const bool bezier = trial % 2 == 1;
+      return loop
+                 ? build_creased_loop_range(base, first, last, LoopBeta::loop, loop_tables)
+                 : build_quad_range(base, first, last, bezier ? 3 : 2,
+                                    bezier ? ExtraordinaryNodes::bezier : ExtraordinaryNodes::exact, true, quad_tables);
+    };
+    std::mt19937 random(11);
+    const int n_faces = t.n_faces();
+    for (; trial < 12; ++trial) {
+      // Faces [a, i) and [i, b), hashed or not by turns; the first trial starts from an empty range.
+      std::uniform_int_distribution<int> pick(0, n_faces);
+      int a = pick(random), b = pick(random);
+      if (a > b) std::swap(a, b);
+      const int i = trial == 0 ? a : std::uniform_int_distribution<int>(a, b)(random);
+      const std::string where = c.name + ": faces [" + std::to_string(a) + ", " + std::to_string(i) + ") and [" +
+                                std::to_string(i) + ", " + std::to_string(b) + ")";
+      std::vector<RangePlans> parts = {build(a, i), build(i, b)};
+      if (trial % 3 != 2) merge_ranges(parts, t.n_vertices, false);  // keys and firsts, as a replanner keeps them
+      append_range(parts[0], parts[1]);
+      const RangePlans whole = build(a, b);
+      expect_same_range(parts[0], whole, where);
+      std::vector<RangePlans> hashed = {whole};
+      merge_ranges(hashed, t.n_vertices, false);
+      EXPECT_EQ(parts[0].row_keys.empty() ? hashed[0].row_keys : parts[0].row_keys, hashed[0].row_keys) << where;
+      EXPECT_EQ(parts[0].row_firsts.table, 0) << where;
+    }
+  }
+}
+
+// Ranges numbered on two bases are joined on the larger: the same points as each read before.
+TEST(RangePlans, RangesOverTwoBasesAreJoinedOnTheLarger) {
+  const CovarianceMesh mesh = make_sample("cylinder");
+  const PolygonTopology& t = mesh.topology();
+  const LocalMesh base = base_local_mesh(t, mesh.sharpness);
+  QuadExtraordinaryTableCache tables;
+  const int half = t.n_faces() / 2, extra = 5;
+  RangePlans first = build_quad_range(base, 0, half, 2, ExtraordinaryNodes::exact, true, tables);
+  const RangePlans second = build_quad_range(base, half, t.n_faces(), 2, ExtraordinaryNodes::exact, true, tables);
+  RangePlans later = second;  // as if numbered on a base with more vertices since
+  const int own = t.n_vertices;
+  for_each_point(later.tables.plans, [&](int32_t& x) { x = x < own ? x : x + extra; });
+  later.tables.stencils.n_base += extra;
+  RangePlans joined = first;
+  append_range(joined, later);
+  std::vector<RangePlans> apart = {first, second}, together = {joined};
+  const SurfaceTables a = merge_ranges(apart, own + extra, true), b = merge_ranges(together, own + extra, true);
+  test::expect_same_tables(a, b, "joined over two bases");
 }
 
 // The row keys a merge stored go with the rows they key.

@@ -4,6 +4,7 @@
 // are built again.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <random>
 
 #include "core/support/error.h"
@@ -87,6 +88,33 @@ TEST(SurfaceReplanner, RandomChangesMatchAFullReplan) {
                                c.name + ", step " + std::to_string(step));
     }
     EXPECT_GT(partial, 6) << c.name << ": most steps re-plan only some faces";
+  }
+}
+
+// A long session of crease edits, each at another edge, cuts range after range: the pieces are joined
+// again, so the ranges stay as few as the faces need (neighbours together above a range's faces) and
+// the tables stay those of a full re-plan. Edits all over the mesh, and edits that sweep along it, which
+// join a range the last merge kept in place to one built now.
+TEST(SurfaceReplanner, CreaseEditsEverywhereLeaveAsFewRangesAsTheFacesNeed) {
+  const CovarianceMesh mesh = make_sample("sphere", 3000);
+  const PolygonTopology& topology = mesh.topology();
+  const int faces_per_range = 128, n_faces = topology.n_faces();
+  const int filled = (n_faces + faces_per_range - 1) / faces_per_range;
+  // Per session: the stride from edge to edge, the steps, and every how many steps the tables are checked.
+  for (const auto [stride, steps, checked] : {std::array<int, 3>{7919, 80, 20}, std::array<int, 3>{57, 24, 1}}) {
+    Sharpness sharpness;
+    sharpness.set_crease(mesh.edge(0)[0], mesh.edge(0)[1], 2.0);  // kept throughout
+    SurfaceReplanner replanner(topology, {}, sharpness, faces_per_range);
+    ASSERT_EQ(replanner.n_ranges(), filled);
+    for (int step = 1; step <= steps; ++step) {
+      const std::string where = "stride " + std::to_string(stride) + ", step " + std::to_string(step);
+      const auto e = mesh.edge(size_t(step) * size_t(stride) % (mesh.n_edges() - 1) + 1);  // never edge 0
+      sharpness.set_crease(e[0], e[1], sharpness.crease(e[0], e[1]) > 0.0 ? 0.0 : 2.5);
+      ASSERT_LT(replanner.set_sharpness(sharpness).size(), size_t(n_faces)) << where;
+      ASSERT_LE(replanner.n_ranges(), 2 * filled) << where;
+      if (step % checked == 0)
+        test::expect_same_tables(replanner.tables(), build_surface_plans(topology, {}, sharpness), where);
+    }
   }
 }
 
