@@ -1,11 +1,12 @@
 #include "core/plans/range_plans.h"
 
 #include <algorithm>
+#include <bit>
 #include <map>
-#include <unordered_map>
 #include <utility>
 
 #include "core/plans/stencil_table.h"
+#include "core/support/hash_mix.h"
 
 namespace gps {
 
@@ -240,6 +241,33 @@ void hash_rows(RangePlans& range) {
   for (int row = 0; row < s.n_rows(); ++row) range.row_keys[size_t(row)] = StencilTableBuilder::row_key(s, row);
 }
 
+// Per row of table b, the row of table a with the same terms (−1: none), found by the rows' keys: the
+// table with fewer rows is laid out in a flat hash table, the other's rows looked up in it.
+std::vector<int> rows_alike(const StencilTable& a, const std::vector<size_t>& a_keys, const StencilTable& b,
+                            const std::vector<size_t>& b_keys) {
+  std::vector<int> alike(size_t(b.n_rows()), -1);
+  const bool laid_out_a = a.n_rows() <= b.n_rows();
+  const std::vector<size_t>& laid_keys = laid_out_a ? a_keys : b_keys;
+  const std::vector<size_t>& looked_keys = laid_out_a ? b_keys : a_keys;
+  const size_t mask = std::bit_ceil(2 * laid_keys.size() + 1) - 1;
+  std::vector<int> slot_row(mask + 1, -1);
+  for (size_t row = 0; row < laid_keys.size(); ++row) {
+    size_t at = size_t(mixed_hash(laid_keys[row])) & mask;
+    while (slot_row[at] >= 0) at = (at + 1) & mask;
+    slot_row[at] = int(row);
+  }
+  for (size_t row = 0; row < looked_keys.size(); ++row)
+    for (size_t at = size_t(mixed_hash(looked_keys[row])) & mask; slot_row[at] >= 0; at = (at + 1) & mask) {
+      const int laid = slot_row[at];
+      if (laid_keys[size_t(laid)] != looked_keys[row]) continue;
+      const int row_a = laid_out_a ? laid : int(row), row_b = laid_out_a ? int(row) : laid;
+      if (!same_row_terms(a, row_a, b, row_b)) continue;
+      alike[size_t(row_b)] = row_a;
+      break;
+    }
+  return alike;
+}
+
 }  // namespace
 
 void append_range(RangePlans& range, const RangePlans& next) {
@@ -260,29 +288,19 @@ void append_range(RangePlans& range, const RangePlans& next) {
     for_each_point(p, [own, n_base](int32_t& x) { x = x < own ? x : x - own + n_base; });
   s.n_base = n_base;
   // next's rows: those whose terms the range holds are that row, the others are appended.
-  std::unordered_map<size_t, int> last_of_key;  // the range's last row of a key, chaining back
-  std::vector<int> previous_of_key(size_t(s.n_rows()), -1);
-  for (int row = 0; row < s.n_rows(); ++row) {
-    const auto [at, added] = last_of_key.try_emplace(range.row_keys[size_t(row)], row);
-    if (!added) previous_of_key[size_t(row)] = std::exchange(at->second, row);
-  }
-  const bool next_hashed = next.row_keys.size() == size_t(t.n_rows());
-  std::vector<int> row_of(size_t(t.n_rows()));  // next's row → the range's
+  std::vector<size_t> next_keys;
+  if (next.row_keys.size() != size_t(t.n_rows()))
+    for (int row = 0; row < t.n_rows(); ++row) next_keys.push_back(StencilTableBuilder::row_key(t, row));
+  const std::vector<size_t>& keys = next_keys.empty() ? next.row_keys : next_keys;
+  std::vector<int> row_of = rows_alike(s, range.row_keys, t, keys);  // next's row → the range's
   for (int row = 0; row < t.n_rows(); ++row) {
-    const size_t key = next_hashed ? next.row_keys[size_t(row)] : StencilTableBuilder::row_key(t, row);
-    int found = -1;
-    if (const auto at = last_of_key.find(key); at != last_of_key.end())
-      for (int r = at->second; r >= 0 && found < 0; r = previous_of_key[size_t(r)])
-        if (same_row_terms(s, r, t, row)) found = r;
-    if (found < 0) {
-      found = s.n_rows();
-      const auto from = t.offsets[size_t(row)], to = t.offsets[size_t(row) + 1];
-      s.indices.insert(s.indices.end(), t.indices.begin() + from, t.indices.begin() + to);
-      s.weights.insert(s.weights.end(), t.weights.begin() + from, t.weights.begin() + to);
-      s.offsets.push_back(int32_t(s.indices.size()));
-      range.row_keys.push_back(key);
-    }
-    row_of[size_t(row)] = found;
+    if (row_of[size_t(row)] >= 0) continue;
+    row_of[size_t(row)] = s.n_rows();
+    const auto from = t.offsets[size_t(row)], to = t.offsets[size_t(row) + 1];
+    s.indices.insert(s.indices.end(), t.indices.begin() + from, t.indices.begin() + to);
+    s.weights.insert(s.weights.end(), t.weights.begin() + from, t.weights.begin() + to);
+    s.offsets.push_back(int32_t(s.indices.size()));
+    range.row_keys.push_back(keys[size_t(row)]);
   }
   // next's extraordinary tables: those the range holds are not repeated.
   std::vector<int> table_of(next.extraordinary_tables.size());
