@@ -241,6 +241,13 @@ void hash_rows(RangePlans& range) {
   for (int row = 0; row < s.n_rows(); ++row) range.row_keys[size_t(row)] = StencilTableBuilder::row_key(s, row);
 }
 
+// Whether what a merge found of a table's `n_rows` rows is whole: the table was merged, and each row has
+// its record.
+bool followed_firsts(const StencilRowFirsts& f, int n_rows) {
+  const size_t n = size_t(n_rows);
+  return f.table != 0 && f.of_table.size() == n && f.of_row.size() == n && f.merged_row.size() == n;
+}
+
 // Per row of table b, the row of table a with the same terms (−1: none), found by the rows' keys: the
 // table with fewer rows is laid out in a flat hash table, the other's rows looked up in it.
 std::vector<int> rows_alike(const StencilTable& a, const std::vector<size_t>& a_keys, const StencilTable& b,
@@ -270,16 +277,14 @@ std::vector<int> rows_alike(const StencilTable& a, const std::vector<size_t>& a_
 
 }  // namespace
 
-void append_range(RangePlans& range, const RangePlans& next) {
+AppendedRows append_range(RangePlans& range, const RangePlans& next) {
   PatchPlans& p = range.tables.plans;
   StencilTable& s = range.tables.stencils;
   const PatchPlans& q = next.tables.plans;
   const StencilTable& t = next.tables.stencils;
-  range.row_firsts = {};
-  if (p.patch_roots.empty() && s.n_rows() == 0) {
+  if (p.patch_roots.empty() && s.n_rows() == 0) {  // next as it is, under its own id
     range = next;
-    range.row_firsts = {};
-    return;
+    return {};
   }
   hash_rows(range);
   // The range's own rows follow the larger base.
@@ -287,6 +292,11 @@ void append_range(RangePlans& range, const RangePlans& next) {
   if (const int own = s.n_base; own != n_base)
     for_each_point(p, [own, n_base](int32_t& x) { x = x < own ? x : x - own + n_base; });
   s.n_base = n_base;
+  // What the last merge found of both ranges' rows is kept where both have it (followed_firsts).
+  StencilRowFirsts& firsts = range.row_firsts;
+  const StencilRowFirsts& next_firsts = next.row_firsts;
+  const bool followed = followed_firsts(firsts, s.n_rows()) && followed_firsts(next_firsts, t.n_rows());
+  if (!followed) firsts = {};
   // next's rows: those whose terms the range holds are that row, the others are appended.
   std::vector<size_t> next_keys;
   if (next.row_keys.size() != size_t(t.n_rows()))
@@ -301,7 +311,17 @@ void append_range(RangePlans& range, const RangePlans& next) {
     s.weights.insert(s.weights.end(), t.weights.begin() + from, t.weights.begin() + to);
     s.offsets.push_back(int32_t(s.indices.size()));
     range.row_keys.push_back(keys[size_t(row)]);
+    if (!followed) continue;
+    // An appended row's terms came first where they did, or, where that was in `next`, in its row here.
+    const long long of_table = next_firsts.of_table[size_t(row)];
+    firsts.of_table.push_back(of_table == next_firsts.table ? firsts.table : of_table);
+    firsts.of_row.push_back(of_table == next_firsts.table ? -1 - next_firsts.of_row[size_t(row)]
+                                                          : next_firsts.of_row[size_t(row)]);
+    firsts.merged_row.push_back(next_firsts.merged_row[size_t(row)]);
   }
+  if (followed)
+    for (int& of_row : firsts.of_row)
+      if (of_row < 0) of_row = row_of[size_t(-1 - of_row)];
   // next's extraordinary tables: those the range holds are not repeated.
   std::vector<int> table_of(next.extraordinary_tables.size());
   for (size_t i = 0; i < table_of.size(); ++i) {
@@ -334,6 +354,8 @@ void append_range(RangePlans& range, const RangePlans& next) {
   p.patch_corner_points.insert(p.patch_corner_points.end(), added.patch_corner_points.begin(),
                                added.patch_corner_points.end());
   p.patch_edges.insert(p.patch_edges.end(), added.patch_edges.begin(), added.patch_edges.end());
+  if (!followed) return {};
+  return {next_firsts.table, firsts.table, std::move(row_of)};
 }
 
 }  // namespace gps

@@ -49,7 +49,10 @@ bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece);
 /// build together, bit for bit where both are numbered on the same base (cut_range the other way).
 /// next's records follow range's, its rows whose terms range holds already are dropped and the others
 /// numbered after range's, and its extraordinary tables that range holds are not repeated. Over two
-/// bases, the points are numbered on the larger. What a merge found of the rows (row_firsts) is cleared.
-void append_range(RangePlans& range, const RangePlans& next);
+/// bases, the points are numbered on the larger. What the last merge found of the rows (row_firsts) is
+/// kept where it found both, as range's. Returns next's rows as the range's (AppendedRows, empty where
+/// nothing was kept): the ranges after them that named one of next's rows must name the range's
+/// (rename_appended_rows) for a merge to follow what the last one found.
+AppendedRows append_range(RangePlans& range, const RangePlans& next);
 
 }  // namespace gps

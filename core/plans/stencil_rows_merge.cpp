@@ -359,4 +359,21 @@ MergedStencilRows merge_stencil_rows(const std::vector<const StencilTable*>& tab
   return out;
 }
 
+void rename_appended_rows(StencilRowFirsts& firsts, const std::vector<AppendedRows>& appended) {
+  // A table's rows name few tables, mostly in runs: the last one's entry is looked up once.
+  long long last_table = 0;  // no table has id 0
+  const AppendedRows* entry = nullptr;
+  for (size_t r = 0; r < firsts.of_table.size() && r < firsts.of_row.size(); ++r) {
+    if (const long long table = firsts.of_table[r]; table != last_table) {
+      last_table = table;
+      const auto at =
+          std::find_if(appended.begin(), appended.end(), [&](const AppendedRows& a) { return a.from == table; });
+      entry = at == appended.end() ? nullptr : &*at;
+    }
+    if (!entry) continue;
+    firsts.of_table[r] = entry->to;
+    firsts.of_row[r] = entry->rows[size_t(firsts.of_row[r])];
+  }
+}
+
 }  // namespace gps

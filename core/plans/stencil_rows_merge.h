@@ -13,7 +13,8 @@ namespace gps {
 /// What a merge found of one table's rows, kept with the table for the next merge: the rows that come
 /// first in a merge are those that came first in the one before but where a table merged then is gone,
 /// or a new one holds the same terms. Cleared (reset to {}) wherever the table's rows change, but for a
-/// renumbering of the base vertices that is one to one and the same for every table kept.
+/// renumbering of the base vertices that is one to one and the same for every table kept, and for the
+/// rows of the next table of the same merge appended (append_range, core/plans/range_plans.h).
 struct StencilRowFirsts {
   long long table = 0;              // the table's id in the merges (0: not merged yet)
   int position = -1;                // its place among the tables of its last merge
@@ -21,6 +22,17 @@ struct StencilRowFirsts {
   std::vector<int> of_row;
   std::vector<int> merged_row;  // per row: the merged table's row that holds its terms
 };
+
+/// The rows of a merged table (id `from`) appended to another of the same merge (id `to`, append_range in
+/// core/plans/range_plans.h): per row of `from`, the row of `to` that holds its terms.
+struct AppendedRows {
+  long long from = 0, to = 0;
+  std::vector<int> rows;
+};
+
+/// Names, in what a merge found of a table, the row each appended row became wherever it named the
+/// appended one as where its terms first came: the next merge follows it there.
+void rename_appended_rows(StencilRowFirsts& firsts, const std::vector<AppendedRows>& appended);
 
 /// Rows [first, first + count) of a merged table have the terms of rows [old_first, old_first + count)
 /// of the table the merge before made.

@@ -133,6 +133,7 @@ void SurfaceReplanner::build_all(const Sharpness& sharpness) {
   if (range_first_.empty()) range_first_.push_back(0);
   range_first_.push_back(n_faces);
   ranges_.assign(range_first_.size() - 1, {});
+  range_kept_.assign(ranges_.size(), 0);
   std::vector<int> all(ranges_.size());
   for (size_t r = 0; r < all.size(); ++r) all[r] = int(r);
   build(all, sharpness);
@@ -147,6 +148,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   if (scheme_ == Scheme::loop && !base_.has_creases()) {  // Loop's smooth builder, as build_surface_plans
     ranges_.clear();
     range_first_.clear();
+    range_kept_.clear();
     patch_first_.clear();
     loop_tables_.reset();
     SurfaceTables built = build_loop_plans(t, options_.loop_beta);
@@ -479,7 +481,7 @@ int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std:
   for (size_t i = 0; i < runs.size(); ++i)
     if (runs[i].usable) kept_at[size_t(new_face[size_t(runs[i].first_face)])] = int(i);
   std::vector<RangePlans> ranges;
-  std::vector<int> firsts, fresh, old_patch_first;
+  std::vector<int> firsts, fresh, old_patch_first, kept_changes;
   int planned = 0;
   size_t same_leading = 0;  // the first ranges: old ranges in their place, whole and not renumbered
   for (int g = 0; g < n_faces;) {
@@ -488,18 +490,22 @@ int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std:
       KeptRun& run = runs[size_t(i)];
       if (same_base && run.whole && run.range == int(ranges.size()) && same_leading == ranges.size()) ++same_leading;
       old_patch_first.push_back(patch_first_[size_t(run.range)] + run.first_patch);
+      kept_changes.push_back(run.whole ? range_kept_[size_t(run.range)] + 1 : 0);
       ranges.push_back(std::move(run.whole ? ranges_[size_t(run.range)] : run.cut));
       g += run.n_faces;
     } else {
       while (g < n_faces && kept_at[size_t(g)] < 0 && g - start < faces_per_range_) ++g;
       fresh.push_back(int(ranges.size()));
       old_patch_first.push_back(-1);
+      kept_changes.push_back(0);
       ranges.emplace_back();
       planned += g - start;
     }
     firsts.push_back(start);
   }
-  if (firsts.empty()) firsts.push_back(0), fresh.push_back(0), old_patch_first.push_back(-1), ranges.emplace_back();
+  if (firsts.empty())
+    firsts.push_back(0), fresh.push_back(0), old_patch_first.push_back(-1), kept_changes.push_back(0),
+        ranges.emplace_back();
   firsts.push_back(n_faces);
   // The faces built again whose pieces stayed: where their old patches started.
   std::vector<int> old_first_patch(size_t(old.n_faces()) + 1, 0), old_face_patch(size_t(n_faces), -1);
@@ -510,6 +516,7 @@ int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std:
       old_face_patch[size_t(g)] = old_first_patch[size_t(f)];
   ranges_ = std::move(ranges);
   range_first_ = std::move(firsts);
+  range_kept_ = std::move(kept_changes);
   build(fresh, sharpness, old_patch_first, old_face_patch, same_leading);
   join_short_ranges();
   return planned;
@@ -517,21 +524,32 @@ int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std:
 
 void SurfaceReplanner::join_short_ranges() {
   size_t into = 0;  // the range the ones after it join
+  std::vector<AppendedRows> appended;
   for (size_t r = 1; r < ranges_.size(); ++r) {
-    if (range_first_[r + 1] - range_first_[into] > faces_per_range_) {
+    // The faces of `into`, which reaches up to range r, and of range r.
+    const int faces_into = range_first_[r] - range_first_[into], faces = range_first_[r + 1] - range_first_[r];
+    if (faces_into + faces > faces_per_range_ || std::min(faces_into, faces) >= short_range_faces() ||
+        std::min(range_kept_[into], range_kept_[r]) < kSettledChanges) {
       ++into;
       if (into != r) {
         ranges_[into] = std::move(ranges_[r]);
         range_first_[into] = range_first_[r];
+        range_kept_[into] = range_kept_[r];
         patch_first_[into] = patch_first_[r];
       }
       continue;
     }
-    append_range(ranges_[into], ranges_[r]);
+    if (AppendedRows rows = append_range(ranges_[into], ranges_[r]); rows.from != 0)
+      appended.push_back(std::move(rows));
     tables_leading_ = std::min(tables_leading_, into);
   }
   if (ranges_.empty()) return;
+  if (!appended.empty()) {
+#pragma omp parallel for schedule(dynamic)
+    for (size_t r = 0; r <= into; ++r) rename_appended_rows(ranges_[r].row_firsts, appended);
+  }
   ranges_.resize(into + 1);
+  range_kept_.resize(into + 1);
   range_first_[into + 1] = range_first_.back();
   range_first_.resize(into + 2);
   patch_first_.resize(into + 1);

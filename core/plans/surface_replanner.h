@@ -96,8 +96,9 @@ public:
   /// The same for a mesh's faces and sharpness, reading the connectivity it holds.
   int set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin = {});
   /// How many ranges the faces are built in (none for Loop's smooth builder): changes cut the ranges
-  /// they reach, and neighbours that fit in one are joined again, so there are fewer than twice as many
-  /// as the faces fill.
+  /// they reach, and short ones are joined to a neighbour where both fit in one once changes have left
+  /// both alone for a while, so there are at most about four times as many as the faces fill, and the
+  /// pieces of the last few changes.
   int n_ranges() const { return int(ranges_.size()); }
   /// What the last set_sharpness or set_topology kept (after the constructor: from 0, nothing kept).
   /// A renderer evaluates again only the other patches.
@@ -137,11 +138,16 @@ private:
   // patch's records name, or named before, lies on a face sharing a vertex with its own, and a face
   // that shared one with a face now gone reads a changed vertex: built again.
   std::vector<int> kept_beside_built(const std::vector<KeptPatches>& kept) const;
-  // Joins each range to the one after it while their faces together are at most faces_per_range_
+  // Joins each short range to the one before it, or the one after it to it, where their faces together
+  // are at most faces_per_range_ and both were kept whole through the last kSettledChanges changes
   // (append_range): a change cuts the ranges it reaches into pieces, which would otherwise never join
-  // again, and every range's rows are merged anew, those it shares with a neighbour once per range. The
-  // tables stay as they are.
+  // again, and every range's rows are merged anew, those it shares with a neighbour once per range.
+  // Longer pieces stay as they are (joining them costs a copy of each), and so do those where changes
+  // go on (an edit repeated there, or undone and redone, keeps them whole). The tables stay as they are.
   void join_short_ranges();
+  // A range of fewer faces is short.
+  int short_range_faces() const { return std::max(1, faces_per_range_ / 4); }
+  static constexpr int kSettledChanges = 4;
   // Cuts the faces into even ranges and builds them all.
   void build_all(const Sharpness& sharpness);
   // The fewest faces a run cut out of a range that a change reaches keeps (fewer are built again with
@@ -158,6 +164,7 @@ private:
   std::unique_ptr<LoopCreaseTables> loop_tables_;
   std::vector<RangePlans> ranges_;  // empty for Loop without sharpness (its smooth builder)
   std::vector<int> range_first_;    // range r holds faces [range_first_[r], range_first_[r + 1])
+  std::vector<int> range_kept_;     // per range: the changes it was kept whole through since it was built or cut
   std::vector<int> patch_first_;    // range r's first patch in tables_
   PlanChange change_;
   // Never changed once made (shared_tables); not const, so that as retired_ their storage can be reused.

@@ -94,14 +94,25 @@ TEST(RangePlans, ARangeAppendedToTheOneBeforeIsWhatTheirFacesBuildTogether) {
       const std::string where = c.name + ": faces [" + std::to_string(a) + ", " + std::to_string(i) + ") and [" +
                                 std::to_string(i) + ", " + std::to_string(b) + ")";
       std::vector<RangePlans> parts = {build(a, i), build(i, b)};
-      if (trial % 3 != 2) merge_ranges(parts, t.n_vertices, false);  // keys and firsts, as a replanner keeps them
+      const bool merged = trial % 3 != 2;  // keys and firsts, as a replanner keeps them
+      const SurfaceTables before = merged ? merge_ranges(parts, t.n_vertices, false) : SurfaceTables{};
       append_range(parts[0], parts[1]);
       const RangePlans whole = build(a, b);
       expect_same_range(parts[0], whole, where);
       std::vector<RangePlans> hashed = {whole};
-      merge_ranges(hashed, t.n_vertices, false);
+      const SurfaceTables anew = merge_ranges(hashed, t.n_vertices, false);
       EXPECT_EQ(parts[0].row_keys.empty() ? hashed[0].row_keys : parts[0].row_keys, hashed[0].row_keys) << where;
-      EXPECT_EQ(parts[0].row_firsts.table, 0) << where;
+      if (!merged || i == a) continue;
+      // What the merge of the parts found is kept: merged again, the joined range follows it, and every
+      // row is kept from the merge of the parts, in place.
+      std::vector<KeptStencilRows> kept;
+      std::vector<RangePlans> joined = {parts[0]};
+      ASSERT_NE(joined[0].row_firsts.table, 0) << where;
+      test::expect_same_tables(merge_ranges(joined, t.n_vertices, false, nullptr, 0, nullptr, &kept), anew, where);
+      const int n_rows = before.stencils.n_rows();
+      std::vector<KeptStencilRows> every_row;
+      if (n_rows > 0) every_row.push_back({0, 0, n_rows});
+      EXPECT_EQ(kept, every_row) << where;
     }
   }
 }

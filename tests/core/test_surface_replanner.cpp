@@ -92,7 +92,7 @@ TEST(SurfaceReplanner, RandomChangesMatchAFullReplan) {
 }
 
 // A long session of crease edits, each at another edge, cuts range after range: the pieces are joined
-// again, so the ranges stay as few as the faces need (neighbours together above a range's faces) and
+// again, so the ranges stay as few as the faces need (any two neighbours hold half a range's faces) and
 // the tables stay those of a full re-plan. Edits all over the mesh, and edits that sweep along it, which
 // join a range the last merge kept in place to one built now.
 TEST(SurfaceReplanner, CreaseEditsEverywhereLeaveAsFewRangesAsTheFacesNeed) {
@@ -111,7 +111,7 @@ TEST(SurfaceReplanner, CreaseEditsEverywhereLeaveAsFewRangesAsTheFacesNeed) {
       const auto e = mesh.edge(size_t(step) * size_t(stride) % (mesh.n_edges() - 1) + 1);  // never edge 0
       sharpness.set_crease(e[0], e[1], sharpness.crease(e[0], e[1]) > 0.0 ? 0.0 : 2.5);
       ASSERT_LT(replanner.set_sharpness(sharpness).size(), size_t(n_faces)) << where;
-      ASSERT_LE(replanner.n_ranges(), 2 * filled) << where;
+      ASSERT_LE(replanner.n_ranges(), 4 * filled + 1) << where;
       if (step % checked == 0)
         test::expect_same_tables(replanner.tables(), build_surface_plans(topology, {}, sharpness), where);
     }
