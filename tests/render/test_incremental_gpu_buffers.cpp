@@ -259,8 +259,8 @@ TEST_F(IncrementalGpuBuffers, AKeptPatchWhoseCornerChangesOwnerIsEvaluatedAgain)
   const NormalisedFrame frame = NormalisedFrame::of(grid);
   constexpr long long kShown = 1LL << 60;  // ids no replanner gives in this test
   SurfaceRenderer renderer;
-  renderer.set_mesh(grid, before, frame, {0, kShown, {}, std::nullopt}, {});
-  renderer.set_mesh(grid, after, frame, {kShown, kShown + 1, {{0, 0, 9}}, std::nullopt}, {});
+  renderer.set_mesh(grid, before, frame, {0, kShown, {}, std::nullopt, {}}, {});
+  renderer.set_mesh(grid, after, frame, {kShown, kShown + 1, {{0, 0, 9}}, std::nullopt, {}}, {});
   EXPECT_LT(renderer.last_corner_slots(), 9 * n) << "patches 0, 1, 3 and 4 and their corners' owners";
   expect_as_set_anew(renderer, grid, frame, "owner moved");
 }
