@@ -165,7 +165,7 @@ TEST(EditorDocument, AModellingOperationIsOneExactUndoStep) {
   ASSERT_TRUE(doc.commit_edit());
   const CovarianceMesh moved = doc.mesh();
   const Modelled cut = loop_cut(doc.mesh(), 0, 4, 2);
-  doc.apply(cut, SelectionRecord{.vertices = {6}});
+  doc.apply(cut, {{6}});
   EXPECT_TRUE(doc.take_changed().empty()) << "a new topology is rebuilt, not updated";
   expect_same_mesh(doc.mesh(), cut.mesh);
   doc.begin_edit();

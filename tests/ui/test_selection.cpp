@@ -196,7 +196,7 @@ TEST(Selection, ARecordRestoresTheEdgesItHeld) {
   EXPECT_TRUE(s.holds_edges());
   EXPECT_EQ(s.edges(grid), (Edges{{6, 7}, {11, 12}}));
   EXPECT_EQ(s.vertices(), (std::vector<int>{6, 7, 11, 12}));
-  s.restore(SelectionRecord{.vertices = {1, 2}});
+  s.restore({{1, 2}});
   EXPECT_FALSE(s.holds_edges());
   EXPECT_EQ(s.vertices(), (std::vector<int>{1, 2}));
 }
