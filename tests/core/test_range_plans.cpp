@@ -22,23 +22,42 @@ void expect_same_range(const RangePlans& a, const RangePlans& b, const std::stri
   EXPECT_EQ(a.extraordinary_tables, b.extraordinary_tables) << where;  // the same tables, by pointer
 }
 
+// The ranges of a test case's faces: Catmull-Clark's exact nodes at depth 2 and the thesis' Bézier
+// patches at depth 3 by turns (`trial`), or creased Loop's.
+class RangeBuilder {
+public:
+  explicit RangeBuilder(const test::RandomOperationCase& c)
+      : loop_(c.scheme == Scheme::loop), base_(base_local_mesh(c.mesh.topology(), c.mesh.sharpness)) {}
+  RangePlans build(int first, int last, int trial) {
+    const bool bezier = trial % 2 == 1;
+    return loop_
+               ? build_creased_loop_range(base_, first, last, LoopBeta::loop, loop_tables_)
+               : build_quad_range(base_, first, last, bezier ? 3 : 2,
+                                  bezier ? ExtraordinaryNodes::bezier : ExtraordinaryNodes::exact, true, quad_tables_);
+  }
+
+private:
+  bool loop_;
+  LocalMesh base_;
+  QuadExtraordinaryTableCache quad_tables_;
+  LoopCreaseTables loop_tables_{LoopBeta::loop};
+};
+
+// The test cases whose faces are built in ranges (Loop's smooth builder plans whole meshes).
+std::vector<test::RandomOperationCase> ranged_cases() {
+  std::vector<test::RandomOperationCase> cases;
+  for (test::RandomOperationCase& c : test::random_operation_cases())
+    if (c.scheme != Scheme::loop || !c.mesh.sharpness.empty()) cases.push_back(std::move(c));
+  return cases;
+}
+
 TEST(RangePlans, ARunCutFromARangeIsWhatItsFacesBuildAlone) {
-  for (const test::RandomOperationCase& c : test::random_operation_cases()) {
-    const bool loop = c.scheme == Scheme::loop;
-    if (loop && c.mesh.sharpness.empty()) continue;  // Loop's smooth builder plans whole meshes
+  for (const test::RandomOperationCase& c : ranged_cases()) {
     const PolygonTopology& t = c.mesh.topology();
-    const LocalMesh base = base_local_mesh(t, c.mesh.sharpness);
-    QuadExtraordinaryTableCache quad_tables;
-    LoopCreaseTables loop_tables(LoopBeta::loop);
-    // Catmull-Clark's exact nodes at depth 2, and the thesis' Bézier patches at depth 3, by turns.
+    const bool loop = c.scheme == Scheme::loop;
+    RangeBuilder ranges(c);
     int trial = 0;
-    const auto build = [&](int first, int last) {
-      const bool bezier = trial % 2 == 1;
-      return loop
-                 ? build_creased_loop_range(base, first, last, LoopBeta::loop, loop_tables)
-                 : build_quad_range(base, first, last, bezier ? 3 : 2,
-                                    bezier ? ExtraordinaryNodes::bezier : ExtraordinaryNodes::exact, true, quad_tables);
-    };
+    const auto build = [&](int first, int last) { return ranges.build(first, last, trial); };
     const auto patches = [&](int first, int last) {
       int n = 0;
       for (int f = first; f < last; ++f) n += loop || t.face_size(f) == 4 ? 1 : t.face_size(f);
@@ -68,24 +87,13 @@ TEST(RangePlans, ARunCutFromARangeIsWhatItsFacesBuildAlone) {
 // Two neighbouring ranges appended one to the other are what their faces build as one range, bit for
 // bit, their row keys included: the replanner joins the short ranges that changes leave.
 TEST(RangePlans, ARangeAppendedToTheOneBeforeIsWhatTheirFacesBuildTogether) {
-  for (const test::RandomOperationCase& c : test::random_operation_cases()) {
-    const bool loop = c.scheme == Scheme::loop;
-    if (loop && c.mesh.sharpness.empty()) continue;  // Loop's smooth builder plans whole meshes
+  for (const test::RandomOperationCase& c : ranged_cases()) {
     const PolygonTopology& t = c.mesh.topology();
-    const LocalMesh base = base_local_mesh(t, c.mesh.sharpness);
-    QuadExtraordinaryTableCache quad_tables;
-    LoopCreaseTables loop_tables(LoopBeta::loop);
-    int trial = 0;
-    const auto build = [&](int first, int last) {
-      const bool bezier = trial % 2 == 1;
-      return loop
-                 ? build_creased_loop_range(base, first, last, LoopBeta::loop, loop_tables)
-                 : build_quad_range(base, first, last, bezier ? 3 : 2,
-                                    bezier ? ExtraordinaryNodes::bezier : ExtraordinaryNodes::exact, true, quad_tables);
-    };
+    RangeBuilder ranges(c);
     std::mt19937 random(11);
-    const int n_faces = t.n_faces();
-    for (; trial < 12; ++trial) {
+    for (int trial = 0; trial < 12; ++trial) {
+      const auto build = [&](int first, int last) { return ranges.build(first, last, trial); };
+      const int n_faces = t.n_faces();
       // Faces [a, i) and [i, b), hashed or not by turns; the first trial starts from an empty range.
       std::uniform_int_distribution<int> pick(0, n_faces);
       int a = pick(random), b = pick(random);
