@@ -122,14 +122,6 @@ int StencilTableBuilder::add_terms(const Terms& terms, size_t key) {
   return table_.first_row() + row;
 }
 
-bool same_row_terms(const StencilTable& a, int row_a, const StencilTable& b, int row_b) {
-  const int i = a.offsets[size_t(row_a)], j = b.offsets[size_t(row_b)];
-  const int n = a.offsets[size_t(row_a) + 1] - i;
-  return n == b.offsets[size_t(row_b) + 1] - j &&
-         std::equal(a.indices.begin() + i, a.indices.begin() + i + n, b.indices.begin() + j) &&
-         std::equal(a.weights.begin() + i, a.weights.begin() + i + n, b.weights.begin() + j);
-}
-
 std::vector<Dual> apply_stencils(const StencilTable& t, const std::vector<Dual>& base) {
   std::vector<Dual> points(size_t(t.n_points()));
   std::copy(base.begin(), base.end(), points.begin());

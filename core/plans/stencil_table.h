@@ -1,5 +1,6 @@
 #pragma once
 // Building and applying the stencil table of core/plans/patch_plans.h (docs/design.md §2 steps 3–4).
+#include <algorithm>
 #include <vector>
 
 #include "core/mesh/linalg.h"
@@ -40,7 +41,14 @@ private:
 };
 
 /// Whether two rows have the same terms in the same order (as StencilTableBuilder compares them).
-bool same_row_terms(const StencilTable& a, int row_a, const StencilTable& b, int row_b);
+/// Inline: the merges call it for every row they place.
+inline bool same_row_terms(const StencilTable& a, int row_a, const StencilTable& b, int row_b) {
+  const int i = a.offsets[size_t(row_a)], j = b.offsets[size_t(row_b)];
+  const int n = a.offsets[size_t(row_a) + 1] - i;
+  return n == b.offsets[size_t(row_b) + 1] - j &&
+         std::equal(a.indices.begin() + i, a.indices.begin() + i + n, b.indices.begin() + j) &&
+         std::equal(a.weights.begin() + i, a.weights.begin() + i + n, b.weights.begin() + j);
+}
 
 /// All points: q of the base vertices, zero in the gap, then every row (one sparse matrix-vector
 /// product over 9D).
