@@ -10,6 +10,18 @@
 
 namespace gps {
 
+namespace {
+
+// A range's row keys, hashed where the range has none (StencilTableBuilder::row_key).
+void hash_rows(RangePlans& range) {
+  const StencilTable& s = range.tables.stencils;
+  if (range.row_keys.size() == size_t(s.n_rows())) return;
+  range.row_keys.resize(size_t(s.n_rows()));
+  for (int row = 0; row < s.n_rows(); ++row) range.row_keys[size_t(row)] = StencilTableBuilder::row_key(s, row);
+}
+
+}  // namespace
+
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release, const SurfaceTables* previous,
                            size_t same_leading, SurfaceTables* storage, std::vector<KeptStencilRows>* kept_rows,
                            size_t storage_leading) {
@@ -36,14 +48,7 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
     }
     // The rows' keys on all cores (kept: a range merged again is not hashed again), then the rows merged.
 #pragma omp parallel for schedule(dynamic)
-  for (size_t r = 0; r < ranges.size(); ++r) {
-    const StencilTable& s = ranges[r].tables.stencils;
-    std::vector<size_t>& keys = ranges[r].row_keys;
-    if (keys.size() != size_t(s.n_rows())) {
-      keys.resize(size_t(s.n_rows()));
-      for (int row = 0; row < s.n_rows(); ++row) keys[size_t(row)] = StencilTableBuilder::row_key(s, row);
-    }
-  }
+  for (size_t r = 0; r < ranges.size(); ++r) hash_rows(ranges[r]);
   // Where each range's records start in the whole table.
   std::vector<size_t> node_base(ranges.size() + 1, 0), patch_base(ranges.size() + 1, 0);
   for (size_t r = 0; r < ranges.size(); ++r) {
@@ -232,14 +237,6 @@ bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece) 
 }
 
 namespace {
-
-// A range's row keys, hashed where the range has none (StencilTableBuilder::row_key).
-void hash_rows(RangePlans& range) {
-  const StencilTable& s = range.tables.stencils;
-  if (range.row_keys.size() == size_t(s.n_rows())) return;
-  range.row_keys.resize(size_t(s.n_rows()));
-  for (int row = 0; row < s.n_rows(); ++row) range.row_keys[size_t(row)] = StencilTableBuilder::row_key(s, row);
-}
 
 // Whether what a merge found of a table's `n_rows` rows is whole: the table was merged, and each row has
 // its record.
