@@ -25,7 +25,7 @@ std::shared_ptr<const std::vector<double>> LoopCreaseTables::table(const LocalMe
 std::shared_ptr<const std::vector<double>> LoopCreaseTables::compute(const std::vector<int>& signature) const {
   const LocalMesh coarse = neighbourhood_mesh(signature, 3);
   const LocalMesh fine = refine_local_mesh_loop(coarse, beta_);
-  const int k = coarse.topology.n_vertices;
+  const int k = coarse.topology().n_vertices;
   const auto edge_point = [&](int x, int y) { return k + coarse.find_edge(x, y); };
   const int ea = edge_point(0, 1), eb = edge_point(0, 2), eab = edge_point(1, 2);
   // A: the corner child (v', e_va, e_vb) must have the same neighbourhood, one level down.

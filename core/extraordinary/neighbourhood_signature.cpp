@@ -18,15 +18,15 @@ bool append_sharpness(const LocalMesh& m, const std::vector<std::pair<int, int>>
   const auto canonical = [&](int v) { return int(std::find(out.points.begin(), out.points.end(), v) - out.points.begin()); };
   std::vector<int> seen_edges;
   for (const auto& [f, start] : walk) {
-    const int n = m.topology.face_size(f), offset = m.topology.offsets[size_t(f)];
+    const int n = m.topology().face_size(f), offset = m.topology().offsets[size_t(f)];
     for (int k = 0; k < n; ++k) {
-      const int e = m.connectivity.face_edges[size_t(offset + (start + k) % n)];
+      const int e = m.connectivity().face_edges[size_t(offset + (start + k) % n)];
       const double s = m.edge_sharpness(e);
       if (s <= 0.0 || std::find(seen_edges.begin(), seen_edges.end(), e) != seen_edges.end()) continue;
       if (!is_infinitely_sharp(s)) return false;
       seen_edges.push_back(e);
-      const int a = canonical(m.connectivity.edge_verts[2 * size_t(e)]),
-                b = canonical(m.connectivity.edge_verts[2 * size_t(e) + 1]);
+      const int a = canonical(m.connectivity().edge_verts[2 * size_t(e)]),
+                b = canonical(m.connectivity().edge_verts[2 * size_t(e) + 1]);
       out.signature.insert(out.signature.end(), {kSharpEdgeMark, std::min(a, b), std::max(a, b)});
     }
   }
@@ -42,7 +42,7 @@ bool append_sharpness(const LocalMesh& m, const std::vector<std::pair<int, int>>
 }  // namespace
 
 std::optional<NeighbourhoodSignature> neighbourhood_signature(const LocalMesh& m, const std::vector<int>& c) {
-  const auto& conn = m.connectivity;
+  const auto& conn = m.connectivity();
   std::vector<int> region;  // the faces at the corners
   for (const int v : c)
     for (int i = conn.vertex_face_offsets[size_t(v)]; i < conn.vertex_face_offsets[size_t(v) + 1]; ++i)
@@ -64,7 +64,7 @@ std::optional<NeighbourhoodSignature> neighbourhood_signature(const LocalMesh& m
   seen[size_t(std::find(region.begin(), region.end(), q) - region.begin())] = 1;
   for (size_t w = 0; w < walk.size(); ++w) {
     const auto [f, start] = walk[w];
-    const int n = m.topology.face_size(f), offset = m.topology.offsets[size_t(f)];
+    const int n = m.topology().face_size(f), offset = m.topology().offsets[size_t(f)];
     out.signature.push_back(n);
     for (int k = 0; k < n; ++k) out.signature.push_back(number(face_vertex(m, f, start + k)));
     for (int k = 0; k < n; ++k) {
@@ -84,22 +84,23 @@ std::optional<NeighbourhoodSignature> neighbourhood_signature(const LocalMesh& m
 // corners (0..3) complete.
 LocalMesh neighbourhood_mesh(const std::vector<int>& signature, int n_corners) {
   LocalMesh m;
+  PolygonTopology faces;
   size_t at = 0;
   for (; at < signature.size() && signature[at] > 0; at += size_t(signature[at]) + 1) {
-    m.topology.verts.insert(m.topology.verts.end(), signature.begin() + long(at) + 1,
-                            signature.begin() + long(at) + 1 + signature[at]);
-    m.topology.offsets.push_back(int(m.topology.verts.size()));
+    faces.verts.insert(faces.verts.end(), signature.begin() + long(at) + 1,
+                       signature.begin() + long(at) + 1 + signature[at]);
+    faces.offsets.push_back(int(faces.verts.size()));
   }
-  m.topology.n_vertices = *std::max_element(m.topology.verts.begin(), m.topology.verts.end()) + 1;
-  m.connectivity = connectivity_of(m.topology);
-  const int k = m.topology.n_vertices;
+  faces.n_vertices = *std::max_element(faces.verts.begin(), faces.verts.end()) + 1;
+  const int k = faces.n_vertices;
+  m.set_faces(std::move(faces));
   for (int i = 0; i < k; ++i) {
     m.base_ids.push_back(i);
     m.points.push_back(Eigen::VectorXd::Unit(k, i));
     m.complete.push_back(i < n_corners);
   }
   if (at < signature.size()) {  // its infinitely sharp edges and vertices
-    m.creases.edges.assign(size_t(m.connectivity.n_edges()), 0.0);
+    m.creases.edges.assign(size_t(m.connectivity().n_edges()), 0.0);
     m.creases.vertices.assign(size_t(k), 0.0);
     while (at < signature.size()) {
       if (signature[at] == kSharpEdgeMark) {

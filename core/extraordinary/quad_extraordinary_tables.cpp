@@ -20,7 +20,7 @@ namespace {
 std::shared_ptr<const std::vector<double>> compute_table(const std::vector<int>& signature) {
   const LocalMesh coarse = neighbourhood_mesh(signature, 4);
   const LocalMesh fine = refine_local_mesh(coarse);
-  const int k = coarse.topology.n_vertices, ne = coarse.connectivity.n_edges();
+  const int k = coarse.topology().n_vertices, ne = coarse.connectivity().n_edges();
   const auto edge_point = [&](int a, int b) { return k + coarse.find_edge(a, b); };
   const int face_point = k + ne + 0, e01 = edge_point(0, 1), e12 = edge_point(1, 2), e23 = edge_point(2, 3),
             e30 = edge_point(3, 0);

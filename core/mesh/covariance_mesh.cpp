@@ -17,7 +17,7 @@
 namespace gps {
 
 bool CovarianceMesh::is_boundary_vertex(size_t v) const {
-  return connectivity_.valence(int(v)) != connectivity_.n_vertex_faces(int(v));
+  return connectivity().valence(int(v)) != connectivity().n_vertex_faces(int(v));
 }
 
 bool is_spd(const Mat3& c) {
@@ -57,17 +57,19 @@ public:
     fit(t.offsets);
     fit(t.verts);
     CovarianceMesh m;
+    auto shape = std::make_shared<MeshShape>();
     // The checks before the vertices' rows: their temporaries and the rows are not held at once.
-    m.connectivity_ = c ? std::move(*c) : edge_connectivity(t);
-    if (!checked) check_manifold(t, m.connectivity_, source, names);
-    if (!c) add_vertex_rows(t, m.connectivity_);
+    shape->connectivity = c ? std::move(*c) : edge_connectivity(t);
+    if (!checked) check_manifold(t, shape->connectivity, source, names);
+    if (!c) add_vertex_rows(t, shape->connectivity);
 #ifdef __GLIBC__
     // connectivity_of's temporaries may lie below the top of the heap, which free() does not hand
     // back: their pages are returned before the covariances are made.
     if (return_pages) malloc_trim(0);
 #endif
     m.means_ = std::move(means);
-    m.topology_ = std::move(t);
+    shape->topology = std::move(t);
+    m.shape_ = std::move(shape);
     m.covariances = std::move(covariances);
     // Identity covariances are made once the temporary arrays are gone.
     if (m.covariances.empty()) m.covariances.assign(m.means_.size(), Mat3::Identity());

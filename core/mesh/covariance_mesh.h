@@ -9,6 +9,7 @@
 #include "core/mesh/element_names.h"
 #include "core/mesh/linalg.h"
 #include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/mesh_shape.h"
 #include "core/mesh/sharpness.h"
 
 namespace gps {
@@ -17,6 +18,8 @@ namespace gps {
 /// it is made (make_covariance_mesh checks them and builds the connectivity once), the means can be
 /// moved and the covariances and sharpness changed in place. Vertices, edges, faces and corners are
 /// numbered as in its topology and connectivity, which every part of gpsurf reads without converting.
+/// The faces and connectivity are one MeshShape that the mesh's copies, and the plans made from it,
+/// share rather than copy.
 class CovarianceMesh {
 public:
   std::vector<Mat3> covariances;
@@ -24,9 +27,9 @@ public:
   Sharpness sharpness;
 
   size_t n_vertices() const { return means_.size(); }
-  size_t n_faces() const { return size_t(topology_.n_faces()); }
-  size_t n_edges() const { return size_t(connectivity_.n_edges()); }
-  size_t n_corners() const { return topology_.verts.size(); }
+  size_t n_faces() const { return size_t(shape_->topology.n_faces()); }
+  size_t n_edges() const { return size_t(shape_->connectivity.n_edges()); }
+  size_t n_corners() const { return shape_->topology.verts.size(); }
 
   const Vec3& mean(size_t i) const { return means_[i]; }
   void set_mean(size_t i, const Vec3& mean) { means_[i] = mean; }
@@ -35,29 +38,30 @@ public:
   void set_covariance(size_t i, const Mat3& covariance) { covariances[i] = covariance; }
 
   /// The faces as corner lists, and their edges and incidences.
-  const PolygonTopology& topology() const { return topology_; }
-  const MeshConnectivity& connectivity() const { return connectivity_; }
+  const PolygonTopology& topology() const { return shape_->topology; }
+  const MeshConnectivity& connectivity() const { return shape_->connectivity; }
+  /// The faces and connectivity together, shared with the mesh's copies (never null).
+  const std::shared_ptr<const MeshShape>& shape() const { return shape_; }
   /// The vertices of face f in order (its corners).
   std::span<const int> face(size_t f) const {
-    return {topology_.verts.data() + topology_.offsets[f], size_t(topology_.face_size(int(f)))};
+    return {shape_->topology.verts.data() + shape_->topology.offsets[f], size_t(shape_->topology.face_size(int(f)))};
   }
-  int face_size(size_t f) const { return topology_.face_size(int(f)); }
+  int face_size(size_t f) const { return shape_->topology.face_size(int(f)); }
   /// The ends of edge e, the lower index first.
   std::array<int, 2> edge(size_t e) const {
-    return {connectivity_.edge_verts[2 * e], connectivity_.edge_verts[2 * e + 1]};
+    return {shape_->connectivity.edge_verts[2 * e], shape_->connectivity.edge_verts[2 * e + 1]};
   }
-  bool is_boundary_edge(size_t e) const { return connectivity_.is_boundary_edge(int(e)); }
+  bool is_boundary_edge(size_t e) const { return shape_->connectivity.is_boundary_edge(int(e)); }
   /// The edge joining vertices a and b, or −1.
-  int find_edge(int a, int b) const { return connectivity_.find_edge(a, b); }
+  int find_edge(int a, int b) const { return shape_->connectivity.find_edge(a, b); }
   /// The number of edges at vertex v; whether it lies on a boundary (an isolated vertex does not).
-  int valence(size_t v) const { return connectivity_.valence(int(v)); }
+  int valence(size_t v) const { return shape_->connectivity.valence(int(v)); }
   bool is_boundary_vertex(size_t v) const;
 
 private:
   friend class CovarianceMeshAssembly;
   std::vector<Vec3> means_;
-  PolygonTopology topology_;
-  MeshConnectivity connectivity_;
+  std::shared_ptr<const MeshShape> shape_ = empty_mesh_shape();
 };
 
 /// Builds a covariance mesh from plain arrays; faces are vertex-index lists.

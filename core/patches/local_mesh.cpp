@@ -10,20 +10,21 @@
 namespace gps {
 
 int LocalMesh::find_edge(int a, int b) const {
-  const auto& c = connectivity;
+  const auto& c = connectivity();
   for (int i = c.vertex_edge_offsets[size_t(a)]; i < c.vertex_edge_offsets[size_t(a) + 1]; ++i)
     if (c.other_vertex(c.vertex_edges[size_t(i)], a) == b) return c.vertex_edges[size_t(i)];
   return -1;
 }
 
 int LocalMesh::find_face(const std::vector<int>& corners) const {
-  const auto& c = connectivity;
+  const auto& c = connectivity();
   const int v = corners[0];
   for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i) {
     const int f = c.vertex_faces[size_t(i)];
-    if (topology.face_size(f) != int(corners.size())) continue;
-    const auto begin = topology.verts.begin() + topology.offsets[size_t(f)];
-    const auto end = topology.verts.begin() + topology.offsets[size_t(f) + 1];
+    const PolygonTopology& t = topology();
+    if (t.face_size(f) != int(corners.size())) continue;
+    const auto begin = t.verts.begin() + t.offsets[size_t(f)];
+    const auto end = t.verts.begin() + t.offsets[size_t(f) + 1];
     if (std::all_of(corners.begin(), corners.end(), [&](int x) { return std::find(begin, end, x) != end; })) return f;
   }
   return -1;
@@ -34,8 +35,9 @@ LocalMesh::VertexSharpness LocalMesh::sharpness_at(int v) const {
   const double corner = vertex_sharpness(v);
   out.sharp_corner = is_infinitely_sharp(corner);
   out.semi_sharp = corner > 0.0 && !out.sharp_corner;
-  for (int i = connectivity.vertex_edge_offsets[size_t(v)]; i < connectivity.vertex_edge_offsets[size_t(v) + 1]; ++i) {
-    const int e = connectivity.vertex_edges[size_t(i)];
+  const MeshConnectivity& c = connectivity();
+  for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
+    const int e = c.vertex_edges[size_t(i)];
     const double s = edge_sharpness(e);
     out.semi_sharp = out.semi_sharp || (s > 0.0 && !is_infinitely_sharp(s));
     out.cut_edges += is_cut_edge(e) ? 1 : 0;
@@ -65,18 +67,29 @@ Stencil LocalMesh::combination(const std::vector<std::pair<int, double>>& terms)
   return Stencil::from_terms(std::move(sparse));
 }
 
+void LocalMesh::set_faces(PolygonTopology&& faces) {
+  auto made = std::make_shared<MeshShape>();
+  made->connectivity = connectivity_of(faces);
+  made->topology = std::move(faces);
+  shape = std::move(made);
+}
+
 LocalMesh base_local_mesh(const PolygonTopology& topology, const Sharpness& sharpness) {
-  return base_local_mesh(topology, connectivity_of(topology), sharpness);
+  return base_local_mesh(std::make_shared<const MeshShape>(MeshShape{topology, connectivity_of(topology)}), sharpness);
 }
 
 LocalMesh base_local_mesh(const PolygonTopology& topology, const MeshConnectivity& connectivity,
                           const Sharpness& sharpness) {
+  return base_local_mesh(std::make_shared<const MeshShape>(MeshShape{topology, connectivity}), sharpness);
+}
+
+LocalMesh base_local_mesh(std::shared_ptr<const MeshShape> shape, const Sharpness& sharpness) {
   LocalMesh m;
-  m.topology = topology;
-  m.connectivity = connectivity;
-  m.complete.assign(size_t(topology.n_vertices), 1);
+  m.shape = std::move(shape);
+  const int n_vertices = m.topology().n_vertices;
+  m.complete.assign(size_t(n_vertices), 1);
   if (!sharpness.empty()) {
-    CreaseLevel level = crease_level(sharpness, m.connectivity, topology.n_vertices);
+    CreaseLevel level = crease_level(sharpness, m.connectivity(), n_vertices);
     if (!level.empty()) m.creases = std::move(level);  // all zero: the smooth plans, bit for bit
   }
   m.is_base = true;
@@ -84,7 +97,7 @@ LocalMesh base_local_mesh(const PolygonTopology& topology, const MeshConnectivit
 }
 
 LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corners, std::vector<int>& new_index) {
-  const auto& c = m.connectivity;
+  const auto& c = m.connectivity();
   std::vector<int> faces;
   for (const int v : corners)
     for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i)
@@ -93,21 +106,23 @@ LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corn
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
 
   LocalMesh out;
-  new_index.assign(size_t(m.topology.n_vertices), -1);
+  const PolygonTopology& t = m.topology();
+  new_index.assign(size_t(t.n_vertices), -1);
   std::vector<int> old_index;
+  PolygonTopology piece;
   for (const int f : faces) {
-    for (int i = m.topology.offsets[size_t(f)]; i < m.topology.offsets[size_t(f) + 1]; ++i) {
-      const int v = m.topology.verts[size_t(i)];
+    for (int i = t.offsets[size_t(f)]; i < t.offsets[size_t(f) + 1]; ++i) {
+      const int v = t.verts[size_t(i)];
       if (new_index[size_t(v)] < 0) {
         new_index[size_t(v)] = int(old_index.size());
         old_index.push_back(v);
       }
-      out.topology.verts.push_back(new_index[size_t(v)]);
+      piece.verts.push_back(new_index[size_t(v)]);
     }
-    out.topology.offsets.push_back(int(out.topology.verts.size()));
+    piece.offsets.push_back(int(piece.verts.size()));
   }
-  out.topology.n_vertices = int(old_index.size());
-  out.connectivity = connectivity_of(out.topology);
+  piece.n_vertices = int(old_index.size());
+  out.set_faces(std::move(piece));
   out.complete.resize(old_index.size());
   if (m.is_base) {  // the neighbourhood's own vertices become the base of its dense stencils
     out.base_ids = old_index;
@@ -122,10 +137,10 @@ LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corn
   }
   for (size_t i = 0; i < old_index.size(); ++i) {
     const int v = old_index[i];
-    out.complete[i] = m.complete[size_t(v)] && out.connectivity.n_vertex_faces(int(i)) == c.n_vertex_faces(v);
+    out.complete[i] = m.complete[size_t(v)] && out.connectivity().n_vertex_faces(int(i)) == c.n_vertex_faces(v);
   }
   if (m.has_creases()) {
-    const auto& oc = out.connectivity;
+    const auto& oc = out.connectivity();
     out.creases.edges.resize(size_t(oc.n_edges()));
     for (int e = 0; e < oc.n_edges(); ++e)
       out.creases.edges[size_t(e)] = m.creases.edges[size_t(m.find_edge(
@@ -149,11 +164,11 @@ LocalMesh refine_piece(const LocalMesh& m, Values refine_values, Topology refine
   for (auto& p : points)
     if (p.size() == 0) p = Eigen::VectorXd::Zero(n_base);
   out.points = refine_values(points, m.has_creases() ? &m.creases : nullptr);
-  out.topology = refine_topology();
-  out.connectivity = connectivity_of(out.topology);
-  if (m.has_creases()) out.creases = refined_crease_level(m.topology, m.connectivity, m.creases, out.connectivity);
-  const auto& c = m.connectivity;
-  const int nv = m.topology.n_vertices, ne = c.n_edges();
+  out.set_faces(refine_topology());
+  if (m.has_creases())
+    out.creases = refined_crease_level(m.topology(), m.connectivity(), m.creases, out.connectivity());
+  const auto& c = m.connectivity();
+  const int nv = m.topology().n_vertices, ne = c.n_edges();
   out.complete.assign(out.points.size(), 1);
   for (int v = 0; v < nv; ++v) out.complete[size_t(v)] = m.complete[size_t(v)];
   for (int e = 0; e < ne; ++e) {
@@ -173,18 +188,18 @@ LocalMesh refine_local_mesh(const LocalMesh& m) {
   return refine_piece(
       m,
       [&](const std::vector<Eigen::VectorXd>& points, const CreaseLevel* creases) {
-        return catmull_clark_values(m.topology, m.connectivity, points, creases);
+        return catmull_clark_values(m.topology(), m.connectivity(), points, creases);
       },
-      [&] { return catmull_clark_topology(m.topology, m.connectivity); });
+      [&] { return catmull_clark_topology(m.topology(), m.connectivity()); });
 }
 
 LocalMesh refine_local_mesh_loop(const LocalMesh& m, LoopBeta beta) {
   return refine_piece(
       m,
       [&](const std::vector<Eigen::VectorXd>& points, const CreaseLevel* creases) {
-        return loop_values(m.topology, m.connectivity, points, beta, creases);
+        return loop_values(m.topology(), m.connectivity(), points, beta, creases);
       },
-      [&] { return loop_topology(m.topology, m.connectivity); });
+      [&] { return loop_topology(m.topology(), m.connectivity()); });
 }
 
 }  // namespace gps

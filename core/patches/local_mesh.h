@@ -3,9 +3,11 @@
 // of the neighbourhood, kept dense (docs/design.md §2 step 2). A vertex is "complete" when every face it has in the
 // whole mesh at that level is present, so that its Catmull-Clark vertex point (and the edge points of its edges) can
 // be computed from the piece alone.
+#include <memory>
 #include <vector>
 
 #include "core/mesh/mesh_connectivity.h"
+#include "core/mesh/mesh_shape.h"
 #include "core/mesh/sharpness.h"
 #include <Eigen/Core>
 
@@ -15,13 +17,18 @@
 namespace gps {
 
 struct LocalMesh {
-  PolygonTopology topology;
-  MeshConnectivity connectivity;
+  /// The faces and their connectivity: a base mesh's are its covariance mesh's, shared.
+  std::shared_ptr<const MeshShape> shape = empty_mesh_shape();
   std::vector<int> base_ids;            // the base vertices the stencils combine (empty when `is_base`)
   std::vector<Eigen::VectorXd> points;  // per vertex: weights over base_ids; empty when `is_base`
   std::vector<char> complete;
   CreaseLevel creases;  // per edge and vertex; both empty where the mesh has no sharpness
   bool is_base = false;  // the whole base mesh: vertex i is base vertex i
+
+  const PolygonTopology& topology() const { return shape->topology; }
+  const MeshConnectivity& connectivity() const { return shape->connectivity; }
+  /// Makes `faces` (with its n_vertices set) the piece's faces, with their connectivity.
+  void set_faces(PolygonTopology&& faces);
 
   /// The stencil of vertex v over the global base vertices.
   Stencil point(int v) const;
@@ -36,9 +43,7 @@ struct LocalMesh {
   double vertex_sharpness(int v) const { return has_creases() ? creases.vertices[size_t(v)] : 0.0; }
   /// Whether edge e acts as a boundary of the surface on each side: a boundary edge or an infinitely
   /// sharp crease, across which the limit surface of either side reads nothing of the other.
-  bool is_cut_edge(int e) const {
-    return connectivity.is_boundary_edge(e) || is_infinitely_sharp(edge_sharpness(e));
-  }
+  bool is_cut_edge(int e) const { return connectivity().is_boundary_edge(e) || is_infinitely_sharp(edge_sharpness(e)); }
   /// What the sharp rules see at vertex v: a semi-sharp edge or corner (sharpness that decays), the
   /// number of cut edges, and whether v is an infinitely sharp corner.
   struct VertexSharpness {
@@ -55,6 +60,8 @@ LocalMesh base_local_mesh(const PolygonTopology& topology, const Sharpness& shar
 /// The same with the topology's connectivity already built (a covariance mesh's own).
 LocalMesh base_local_mesh(const PolygonTopology& topology, const MeshConnectivity& connectivity,
                           const Sharpness& sharpness = {});
+/// The same over a covariance mesh's shape, shared rather than copied.
+LocalMesh base_local_mesh(std::shared_ptr<const MeshShape> shape, const Sharpness& sharpness = {});
 
 /// The faces around the given vertices (their 1-ring), renumbered, with completeness carried over.
 LocalMesh extract_neighbourhood(const LocalMesh& m, const std::vector<int>& corners, std::vector<int>& new_index);

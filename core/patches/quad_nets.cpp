@@ -24,32 +24,32 @@ constexpr Grid2 kOut[4] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
 }  // namespace
 
 int face_vertex(const LocalMesh& m, int f, int k) {
-  const int n = m.topology.face_size(f);
+  const int n = m.topology().face_size(f);
   // Callers step a few corners from a corner index: a subtraction, not two divisions, which would
   // cost a large share of bspline_net's time.
   if (k >= n) k -= n;
   if (k < 0) k += n;
   if (k < 0 || k >= n) k = ((k % n) + n) % n;
-  return m.topology.verts[size_t(m.topology.offsets[size_t(f)] + k)];
+  return m.topology().verts[size_t(m.topology().offsets[size_t(f)] + k)];
 }
 
 int corner_index(const LocalMesh& m, int f, int v) {
-  const int* verts = m.topology.verts.data() + m.topology.offsets[size_t(f)];
-  for (int k = 0, n = m.topology.face_size(f); k < n; ++k)
+  const int* verts = m.topology().verts.data() + m.topology().offsets[size_t(f)];
+  for (int k = 0, n = m.topology().face_size(f); k < n; ++k)
     if (verts[k] == v) return k;
   throw std::logic_error("plan builder: vertex not in face");
 }
 
 int other_face(const LocalMesh& m, int e, int f) {
-  const int a = m.connectivity.edge_faces[2 * size_t(e)], b = m.connectivity.edge_faces[2 * size_t(e) + 1];
+  const int a = m.connectivity().edge_faces[2 * size_t(e)], b = m.connectivity().edge_faces[2 * size_t(e) + 1];
   return a == f ? b : a;
 }
 
 bool regular_vertex(const LocalMesh& m, int v) {
-  const auto& c = m.connectivity;
+  const auto& c = m.connectivity();
   if (!m.complete[size_t(v)]) return false;
   for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i)
-    if (m.topology.face_size(c.vertex_faces[size_t(i)]) != 4) return false;
+    if (m.topology().face_size(c.vertex_faces[size_t(i)]) != 4) return false;
   switch (vertex_role(c, v)) {
     case VertexRole::interior:
       return c.n_vertex_faces(v) == 4;
@@ -67,7 +67,7 @@ namespace {
 
 // The faces of q's sector at v (see regular_corner), or −1 where one of them is not a quad.
 int quad_sector_size(const LocalMesh& m, int v, int q) {
-  if (m.topology.face_size(q) != 4) return -1;
+  if (m.topology().face_size(q) != 4) return -1;
   int count = 1;
   for (const int step : {1, -1}) {
     int f = q;
@@ -76,7 +76,7 @@ int quad_sector_size(const LocalMesh& m, int v, int q) {
       if (m.is_cut_edge(e)) break;
       f = other_face(m, e, f);
       if (f == q) return count;  // all the way round: no cut edge at v
-      if (m.topology.face_size(f) != 4) return -1;
+      if (m.topology().face_size(f) != 4) return -1;
       ++count;
     }
   }
@@ -93,7 +93,7 @@ bool regular_corner(const LocalMesh& m, int v, int q) {
   const int sector = quad_sector_size(m, v, q);
   if (cut == 0 && !sharp_corner) return sector == 4;
   // Sdc's rules: a sharp vertex, more than two sharp edges, or a boundary vertex with one face is a corner.
-  const bool corner_rule = sharp_corner || cut > 2 || m.connectivity.n_vertex_faces(v) == 1;
+  const bool corner_rule = sharp_corner || cut > 2 || m.connectivity().n_vertex_faces(v) == 1;
   if (corner_rule) return sector == 1;
   return cut == 2 && sector == 2;
 }
@@ -131,7 +131,7 @@ void bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c, std::ar
     const Grid2 g = kCorner[k], o1 = kOut[k], o2 = kOut[(k + 3) % 4];
     const int v = c[size_t(k)];
     if (!boundary_edge[k] && !boundary_edge[(k + 3) % 4]) {  // a smooth corner: the face diagonally across
-      const auto& conn = m.connectivity;
+      const auto& conn = m.connectivity();
       for (int i = conn.vertex_face_offsets[size_t(v)]; i < conn.vertex_face_offsets[size_t(v) + 1]; ++i) {
         const int f = conn.vertex_faces[size_t(i)], kv = conn.vertex_face_corners[size_t(i)];
         const int prev = face_vertex(m, f, kv + 3), next = face_vertex(m, f, kv + 1);
@@ -150,7 +150,7 @@ void bspline_net(const LocalMesh& m, int q, const std::array<int, 4>& c, std::ar
 
 std::array<LocalCombination, 16> bezier_net(const LocalMesh& m, const std::array<int, 4>& c) {
   static constexpr Grid2 kBezier[4] = {{0, 0}, {3, 0}, {3, 3}, {0, 3}};
-  const auto& conn = m.connectivity;
+  const auto& conn = m.connectivity();
   std::array<Combo, 16> net;
   const auto at = [&](Grid2 g) -> Combo& { return net[size_t(g.i + 4 * g.j)]; };
   VertexMask corner_mask;
@@ -164,7 +164,7 @@ std::array<LocalCombination, 16> bezier_net(const LocalMesh& m, const std::array
     const Grid2 to_next = {(kBezier[(k + 1) % 4].i - g.i) / 3, (kBezier[(k + 1) % 4].j - g.j) / 3};
     const Grid2 to_prev = {(kBezier[(k + 3) % 4].i - g.i) / 3, (kBezier[(k + 3) % 4].j - g.j) / 3};
     // Corner point: the exact limit position.
-    catmull_clark_limit_mask(m.topology, conn, v, corner_mask);
+    catmull_clark_limit_mask(m.topology(), conn, v, corner_mask);
     at(g) = corner_mask.terms();
     // Edge points on the edges to `next` and `prev`.
     for (const auto& [w, dir] : {std::pair{next, to_next}, std::pair{prev, to_prev}}) {

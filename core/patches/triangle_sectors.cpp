@@ -32,7 +32,7 @@ bool regular_loop_corner(const LocalMesh& m, int v, int q) {
   if (semi_sharp) return false;
   // Sdc's rules: a sharp vertex, more than two sharp edges, or a boundary vertex with one face is a
   // corner, which no box spline follows; one sharp edge is a dart.
-  if (sharp_corner || cut == 1 || cut > 2 || m.connectivity.n_vertex_faces(v) == 1) return false;
+  if (sharp_corner || cut == 1 || cut > 2 || m.connectivity().n_vertex_faces(v) == 1) return false;
   const int faces = int(sector_fan(m, v, q).size()) - (cut == 2 ? 1 : 0);
   return cut == 0 ? faces == 6 : faces == 3;
 }

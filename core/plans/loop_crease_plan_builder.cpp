@@ -21,12 +21,12 @@ namespace {
 class CreasedLoopBuilder {
 public:
   CreasedLoopBuilder(const LocalMesh& base, LoopBeta beta, LoopCreaseTables& tables)
-      : beta_(beta), base_(base), tables_(tables), stencils_(base.topology.n_vertices) {
+      : beta_(beta), base_(base), tables_(tables), stencils_(base.topology().n_vertices) {
     plans_.shape = PatchShape::triangle;
   }
 
   RangePlans build(int first, int last) {
-    const PolygonTopology& t = base_.topology;
+    const PolygonTopology& t = base_.topology();
     plans_.patch_corner_points.assign(t.verts.begin() + 3 * first, t.verts.begin() + 3 * last);
     for (int f = first; f < last; ++f) {
       const int* v = &t.verts[size_t(t.offsets[size_t(f)])];
@@ -75,7 +75,7 @@ private:
     std::vector<int> index;
     const LocalMesh sub = extract_neighbourhood(m, {x[0], x[1], x[2]}, index);
     const LocalMesh fine = refine_local_mesh_loop(sub, beta_);
-    const int nv = sub.topology.n_vertices;
+    const int nv = sub.topology().n_vertices;
     const int c0 = index[size_t(x[0])], c1 = index[size_t(x[1])], c2 = index[size_t(x[2])];
     const int e01 = nv + sub.find_edge(c0, c1), e12 = nv + sub.find_edge(c1, c2), e20 = nv + sub.find_edge(c2, c0);
     // The children of triangle_child() (core/patches/patch_basis.h), each in its own parameter order.

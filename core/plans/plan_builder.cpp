@@ -36,10 +36,10 @@ public:
         bspline_leaves_(bspline_leaves),
         base_(base),
         cache_(cache),
-        stencils_(base.topology.n_vertices) {}
+        stencils_(base.topology().n_vertices) {}
 
   RangePlans build(int first, int last) {
-    const PolygonTopology& t = base_.topology;
+    const PolygonTopology& t = base_.topology();
     for (int f = first; f < last; ++f) {
       const int n = t.face_size(f);
       if (n == 4) {
@@ -58,7 +58,7 @@ public:
       std::vector<int> index;
       const LocalMesh sub = extract_neighbourhood(base_, corners, index);
       const LocalMesh fine = refine_local_mesh(sub);
-      const int nv = sub.topology.n_vertices, ne = sub.connectivity.n_edges();
+      const int nv = sub.topology().n_vertices, ne = sub.connectivity().n_edges();
       std::vector<int> sc(corners.size());
       for (size_t k = 0; k < corners.size(); ++k) sc[k] = index[size_t(corners[k])];
       const int face_point = nv + ne + sub.find_face(sc);
@@ -97,7 +97,7 @@ private:
   // Whether the face across base edge a–b from face f is split into patches (not a quad).
   bool beside_split_face(int f, int a, int b) const {
     const int other = other_face(base_, base_.find_edge(a, b), f);
-    return other >= 0 && base_.topology.face_size(other) != 4;
+    return other >= 0 && base_.topology().face_size(other) != 4;
   }
 
   int point(const LocalMesh& m, const Combo& combo) {
@@ -167,7 +167,7 @@ private:
     std::vector<int> index;
     const LocalMesh sub = extract_neighbourhood(m, {c[0], c[1], c[2], c[3]}, index);
     const LocalMesh fine = refine_local_mesh(sub);
-    const int nv = sub.topology.n_vertices, ne = sub.connectivity.n_edges();
+    const int nv = sub.topology().n_vertices, ne = sub.connectivity().n_edges();
     std::array<int, 4> sc;
     for (int k = 0; k < 4; ++k) sc[size_t(k)] = index[size_t(c[size_t(k)])];
     const int face_point = nv + ne + sub.find_face({sc[0], sc[1], sc[2], sc[3]});

@@ -105,17 +105,16 @@ SurfaceReplanner::SurfaceReplanner(const PolygonTopology& topology, const PlanOp
     : SurfaceReplanner(base_local_mesh(topology, sharpness), options, sharpness, faces_per_range) {}
 
 SurfaceReplanner::SurfaceReplanner(const CovarianceMesh& mesh, const PlanOptions& options, int faces_per_range)
-    : SurfaceReplanner(base_local_mesh(mesh.topology(), mesh.connectivity(), mesh.sharpness), options, mesh.sharpness,
-                       faces_per_range) {}
+    : SurfaceReplanner(base_local_mesh(mesh.shape(), mesh.sharpness), options, mesh.sharpness, faces_per_range) {}
 
 SurfaceReplanner::SurfaceReplanner(LocalMesh&& base, const PlanOptions& options, const Sharpness& sharpness,
                                    int faces_per_range)
     : options_(options),
-      scheme_(scheme_for(base.topology, options)),
+      scheme_(scheme_for(base.topology(), options)),
       faces_per_range_(std::max(1, faces_per_range)),
       base_(std::move(base)),
       sharpness_(sharpness) {
-  check(base_.topology, scheme_);
+  check(base_.topology(), scheme_);
   build_all(sharpness);
 }
 
@@ -127,7 +126,7 @@ void SurfaceReplanner::check(const PolygonTopology& topology, Scheme scheme) con
 }
 
 void SurfaceReplanner::build_all(const Sharpness& sharpness) {
-  const int n_faces = base_.topology.n_faces();
+  const int n_faces = base_.topology().n_faces();
   range_first_.clear();
   for (int f = 0; f < n_faces; f += faces_per_range_) range_first_.push_back(f);
   if (range_first_.empty()) range_first_.push_back(0);
@@ -142,7 +141,7 @@ void SurfaceReplanner::build_all(const Sharpness& sharpness) {
 void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sharpness,
                              const std::vector<int>& old_patch_first, const std::vector<int>& old_face_patch,
                              size_t same_leading) {
-  const PolygonTopology& t = base_.topology;
+  const PolygonTopology& t = base_.topology();
   change_ = {change_.to, next_tables_id(), {}, std::nullopt, {}};
   std::vector<KeptPatches>& kept = change_.kept;
   if (scheme_ == Scheme::loop && !base_.has_creases()) {  // Loop's smooth builder, as build_surface_plans
@@ -152,7 +151,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     patch_first_.clear();
     loop_tables_.reset();
     SurfaceTables built = build_loop_plans(t, options_.loop_beta);
-    add_patch_adjacency(built.plans, t, sharpness, &base_.connectivity);
+    add_patch_adjacency(built.plans, t, sharpness, &base_.connectivity());
     tables_ = std::make_shared<SurfaceTables>(std::move(built));
     retired_.reset();
     tables_leading_ = 0;
@@ -228,15 +227,15 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
       new_of_old[size_t(run.old_first + i)] = run.first + i;
   const bool updated = !kept.empty() && old_shape == merged.plans.shape &&
                        update_patch_adjacency(merged.plans, sharpness, old_neighbours, new_of_old);
-  if (!updated) add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity);
+  if (!updated) add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity());
   if (updated) change_.relinked = kept_beside_built(kept);
   retired_ = std::exchange(tables_, std::make_shared<SurfaceTables>(std::move(merged)));
   tables_leading_ = same_leading;
 }
 
 std::vector<int> SurfaceReplanner::kept_beside_built(const std::vector<KeptPatches>& kept) const {
-  const PolygonTopology& t = base_.topology;
-  const MeshConnectivity& c = base_.connectivity;
+  const PolygonTopology& t = base_.topology();
+  const MeshConnectivity& c = base_.connectivity();
   // Whether patches [first, last) all lie in kept runs; called in increasing order, `run` walks the runs.
   size_t run = 0;
   const auto all_kept = [&](int first, int last) {
@@ -287,8 +286,8 @@ std::vector<int> SurfaceReplanner::kept_beside_built(const std::vector<KeptPatch
 }
 
 std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
-  const PolygonTopology& t = base_.topology;
-  const MeshConnectivity& c = base_.connectivity;
+  const PolygonTopology& t = base_.topology();
+  const MeshConnectivity& c = base_.connectivity();
   CreaseLevel level = crease_level(sharpness, c, t.n_vertices);
   if (level.empty()) level = {};
   const CreaseLevel& old = base_.creases;
@@ -327,7 +326,7 @@ std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
 
 bool SurfaceReplanner::same_surface(const PolygonTopology& topology, const Sharpness& sharpness,
                                     const std::vector<int>& origin) const {
-  const PolygonTopology& t = base_.topology;
+  const PolygonTopology& t = base_.topology();
   if (tables_->plans.n_patches() == 0 || topology.n_vertices != t.n_vertices || topology.offsets != t.offsets ||
       topology.verts != t.verts || !(sharpness == sharpness_))
     return false;
@@ -354,18 +353,18 @@ int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpn
 int SurfaceReplanner::set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin) {
   if (same_surface(mesh.topology(), mesh.sharpness, origin)) return keep_every_plan(), 0;
   check(mesh.topology(), scheme_for(mesh.topology(), options_));
-  return replan(base_local_mesh(mesh.topology(), mesh.connectivity(), mesh.sharpness), mesh.sharpness, origin);
+  return replan(base_local_mesh(mesh.shape(), mesh.sharpness), mesh.sharpness, origin);
 }
 
 int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const std::vector<int>& origin) {
-  const Scheme scheme = scheme_for(base.topology, options_);
+  const Scheme scheme = scheme_for(base.topology(), options_);
   const bool same_builder = scheme == scheme_ && !ranges_.empty() && base.has_creases() == base_.has_creases();
   const LocalMesh previous = std::exchange(base_, std::move(base));
   const Sharpness old_sharpness = std::exchange(sharpness_, sharpness);
   scheme_ = scheme;
-  const PolygonTopology& t = base_.topology;
-  const MeshConnectivity& c = base_.connectivity;
-  const PolygonTopology& old = previous.topology;
+  const PolygonTopology& t = base_.topology();
+  const MeshConnectivity& c = base_.connectivity();
+  const PolygonTopology& old = previous.topology();
   const int n_old = old.n_vertices, n_new = t.n_vertices, n_faces = t.n_faces();
   std::vector<int> new_index;
   if (!same_builder || !new_index_of(origin, n_old, n_new, new_index)) {
@@ -442,7 +441,7 @@ int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std:
                                           const std::vector<int>& old_face, const std::vector<char>& dirty,
                                           const std::vector<int>& new_index, bool same_base,
                                           const Sharpness& sharpness) {
-  const int n_faces = base_.topology.n_faces(), n_new = base_.topology.n_vertices;
+  const int n_faces = base_.topology().n_faces(), n_new = base_.topology().n_vertices;
   // The runs of old faces kept: still there, clean, consecutive and in order, each within one old range.
   // A range kept whole is taken as it is; of one that a change reaches, each run of at least
   // min_run_faces() faces is cut out (cut_range); the faces between are built again.

@@ -71,7 +71,7 @@ public:
 
   Scheme scheme() const { return scheme_; }
   const PlanOptions& options() const { return options_; }
-  const PolygonTopology& topology() const { return base_.topology; }
+  const PolygonTopology& topology() const { return base_.topology(); }
   /// build_surface_plans(topology, options, sharpness) for the latest topology and sharpness, bit for bit.
   const SurfaceTables& tables() const { return *tables_; }
   /// The same tables, shared (a renderer keeps them without a copy).
