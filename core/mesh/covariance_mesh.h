@@ -3,6 +3,7 @@
 #include <array>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/mesh/connectivity_update.h"
@@ -22,6 +23,19 @@ namespace gps {
 /// share rather than copy.
 class CovarianceMesh {
 public:
+  CovarianceMesh() = default;
+  CovarianceMesh(const CovarianceMesh&) = default;
+  CovarianceMesh& operator=(const CovarianceMesh&) = default;
+  /// A mesh moved from is left a mesh of nothing: no vertices, no faces.
+  CovarianceMesh(CovarianceMesh&& other) noexcept { *this = std::move(other); }
+  CovarianceMesh& operator=(CovarianceMesh&& other) noexcept {
+    covariances = std::move(other.covariances);
+    sharpness = std::move(other.sharpness);
+    means_ = std::move(other.means_);
+    shape_ = std::exchange(other.shape_, empty_mesh_shape());
+    return *this;
+  }
+
   std::vector<Mat3> covariances;
   /// Edge creases and vertex corners by vertex index; empty for a smooth mesh.
   Sharpness sharpness;

@@ -24,6 +24,25 @@ std::string error_building(const std::vector<Vec3>& positions) {
   return "";
 }
 
+// Copies of a mesh share its faces and connectivity; a mesh moved from is a mesh of nothing, which
+// every query still answers.
+TEST(CovarianceMesh, CopiesShareTheShapeAndAMovedFromMeshIsEmpty) {
+  CovarianceMesh mesh = make_covariance_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+                                             std::vector<Mat3>(4, Mat3::Identity()), {{0, 1, 2, 3}});
+  const CovarianceMesh copy = mesh;
+  EXPECT_EQ(copy.shape().get(), mesh.shape().get());
+  EXPECT_EQ(copy.n_edges(), 4u);
+  CovarianceMesh taken = std::move(mesh);
+  EXPECT_EQ(taken.shape().get(), copy.shape().get());
+  EXPECT_EQ(taken.n_faces(), 1u);
+  EXPECT_EQ(mesh.n_vertices(), 0u);
+  EXPECT_EQ(mesh.n_faces(), 0u);
+  EXPECT_EQ(mesh.n_edges(), 0u);
+  EXPECT_EQ(mesh.shape().get(), empty_mesh_shape().get());
+  mesh = taken;
+  EXPECT_EQ(mesh.n_faces(), 1u);
+}
+
 // A position that is NaN or infinite is named as such, by its vertex, not as a degenerate face.
 TEST(CovarianceMesh, PositionsThatAreNotFiniteAreNamed) {
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
