@@ -5,6 +5,7 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/modelling/operation_words.h"
@@ -64,10 +65,33 @@ CarriedGaussian carried_gaussian(const AffineMap& map, const Gaussian& g) {
   return carried_gaussian(map, g, strongest_stretch(map));
 }
 
+namespace {
+
+// Whether the carried covariance `c` of `sigma` lies so far above the floor (stretch² · λ_min(Σ)) that
+// the eigen-solves of carried_gaussian would find it there too, with neither solve: every eigenvalue
+// of c is at least its lowest Gershgorin bound, λ_min(Σ) at most Σ's least diagonal entry, and a
+// backward-stable solve of a 3×3 matrix errs by a few ε·‖c‖, far below the margin of 1e-9·‖c‖ kept.
+bool clearly_above_floor(const Mat3& c, const Mat3& sigma, double stretch) {
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    double radius = 0.0;
+    for (int j = 0; j < 3; ++j)
+      if (j != i) radius += std::abs(c(i, j));
+    lowest = std::min(lowest, c(i, i) - radius);
+  }
+  constexpr double kMargin = 1e-9;
+  const double thinnest_at_most = sigma.diagonal().minCoeff() + kMargin * 3.0 * sigma.cwiseAbs().maxCoeff();
+  const double floor_at_most = stretch * stretch * thinnest_at_most * (1.0 + kMargin);
+  return lowest - kMargin * 3.0 * c.cwiseAbs().maxCoeff() > floor_at_most;
+}
+
+}  // namespace
+
 CarriedGaussian carried_gaussian(const AffineMap& map, const Gaussian& g, double strongest) {
   CarriedGaussian out{map.apply(g), false};
-  const double thinnest = Eigen::SelfAdjointEigenSolver<Mat3>(g.covariance, Eigen::EigenvaluesOnly).eigenvalues()[0];
   const double stretch = kFlattestStretch * (strongest > 0 ? strongest : 1.0);
+  if (clearly_above_floor(out.gaussian.covariance, g.covariance, stretch)) return out;
+  const double thinnest = Eigen::SelfAdjointEigenSolver<Mat3>(g.covariance, Eigen::EigenvaluesOnly).eigenvalues()[0];
   const double floor = stretch * stretch * thinnest;
   // The eigenvectors only where the floor holds (the eigenvalues are the same either way).
   const Eigen::SelfAdjointEigenSolver<Mat3> values(out.gaussian.covariance, Eigen::EigenvaluesOnly);

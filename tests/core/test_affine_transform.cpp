@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <random>
 #include <string>
 
 #include <Eigen/Eigenvalues>
@@ -246,6 +247,59 @@ TEST(AffineTransform, ScaleZeroFlattensThePositionsAndHoldsTheGaussiansAtTheFloo
   }
   EXPECT_LE(highest, 1.125 + 1e-9);
   EXPECT_GT(highest, 1.0);  // not collapsed towards the bottom
+}
+
+// The rule with both eigen-solves always taken (the header's definition), for comparison.
+CarriedGaussian carried_by_eigenvalues(const AffineMap& map, const Gaussian& g) {
+  CarriedGaussian out{map.apply(g), false};
+  const double thinnest = Eigen::SelfAdjointEigenSolver<Mat3>(g.covariance, Eigen::EigenvaluesOnly).eigenvalues()[0];
+  const double strongest = strongest_stretch(map);
+  const double stretch = kFlattestStretch * (strongest > 0 ? strongest : 1.0);
+  const double floor = stretch * stretch * thinnest;
+  if (!(Eigen::SelfAdjointEigenSolver<Mat3>(out.gaussian.covariance, Eigen::EigenvaluesOnly).eigenvalues()[0] < floor))
+    return out;
+  const Eigen::SelfAdjointEigenSolver<Mat3> carried(out.gaussian.covariance);
+  const Mat3 c =
+      carried.eigenvectors() * carried.eigenvalues().cwiseMax(floor).asDiagonal() * carried.eigenvectors().transpose();
+  out.gaussian.covariance = 0.5 * (c + c.transpose());
+  out.clamped = true;
+  return out;
+}
+
+// Gaussians round, flat and needle-thin (condition up to 1e14), turned every way, under maps whose
+// weakest stretch lies on either side of the floor's ratio and right at it: the same bits as the rule
+// that always solves, whether the solves were spared or not.
+TEST(AffineTransform, CarriedGaussiansAreTheRuleOfTheirEigenvaluesBitForBit) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto rotation = [&] {
+    return Mat3(Eigen::AngleAxisd(3.0 * unit(rng), Vec3(unit(rng), unit(rng), unit(rng) + 2.0).normalized()));
+  };
+  int clamped = 0, carried = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const double thin = std::pow(10.0, -14.0 * std::abs(unit(rng)));
+    const Vec3 axes(1.0, trial % 3 == 0 ? 1.0 : std::sqrt(thin), thin);
+    // Every fourth along the axes, where the eigenvalues are the diagonal's and land on the floor.
+    const bool aligned = trial % 4 == 1;
+    const Mat3 r = aligned ? Mat3::Identity() : rotation();
+    const Gaussian g{Vec3(unit(rng), unit(rng), unit(rng)), 0.01 * r * axes.asDiagonal() * r.transpose()};
+    // The weakest stretch: 1e-3 of the strongest times 10^[-1, 1], exactly at it, or next to it.
+    const double weakest = trial % 5 == 0   ? kFlattestStretch
+                           : trial % 5 == 1 ? kFlattestStretch * (1.0 + 1e-9 * unit(rng))
+                                            : kFlattestStretch * std::pow(10.0, unit(rng));
+    const Vec3 stretches(trial % 2 == 0 ? 1.0 : 1.0 + std::abs(unit(rng)), 0.5 + std::abs(unit(rng)), weakest);
+    const Mat3 a =
+        aligned ? Mat3(Vec3(stretches[0], std::max(stretches[0], stretches[1]), weakest * stretches[0]).asDiagonal())
+                : Mat3(rotation() * stretches.asDiagonal() * rotation());
+    const AffineMap map{trial % 7 == 0 ? Mat3(1.01 * Mat3::Identity()) : a, Vec3(unit(rng), 0.5, 2.0)};
+    const CarriedGaussian got = carried_gaussian(map, g), expected = carried_by_eigenvalues(map, g);
+    ASSERT_EQ(got.clamped, expected.clamped) << "trial " << trial;
+    ASSERT_EQ(got.gaussian.mean, expected.gaussian.mean) << "trial " << trial;
+    ASSERT_EQ(got.gaussian.covariance, expected.gaussian.covariance) << "trial " << trial;
+    (got.clamped ? clamped : carried) += 1;
+  }
+  EXPECT_GT(clamped, 500);
+  EXPECT_GT(carried, 500);
 }
 
 TEST(AffineTransform, MapsWithinTheFloorAreCarriedExactly) {
