@@ -41,18 +41,22 @@ std::string without_faces(MeshArrays& a, const std::vector<char>& removed, const
   // has no face across its outgoing edge. More than one fan makes the vertex non-manifold.
   // Only the faces at such a vertex are looked up: the face across an edge out of it has it too.
   DirectedEdges edges;
+  std::vector<int> near;  // the faces at such a vertex
   for (int f = 0; f < a.n_faces(); ++f) {
     const auto& face = a.faces[size_t(f)];
     if (std::none_of(face.begin(), face.end(), [&](int v) { return touched[size_t(v)] != 0; })) continue;
+    near.push_back(f);
     for (size_t k = 0; k < face.size(); ++k)
       edges.emplace(directed_key(face[k], face[(k + 1) % face.size()]), std::pair<int, int>(f, int(k)));
   }
   std::vector<int> fans(size_t(a.n_vertices()), 0);
-  for (const auto& face : a.faces)
+  for (const int f : near) {
+    const auto& face = a.faces[size_t(f)];
     for (size_t k = 0; k < face.size(); ++k) {
       const int v = face[k], w = face[(k + 1) % face.size()];
       if (touched[size_t(v)] && !edges.count(directed_key(w, v))) ++fans[size_t(v)];
     }
+  }
   for (int v = 0; v < a.n_vertices(); ++v)
     if (fans[size_t(v)] > 1)
       throw Error("the result would be non-manifold at vertex " + std::to_string(v) + " (" +

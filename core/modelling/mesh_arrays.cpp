@@ -239,16 +239,20 @@ std::vector<int> drop_unused_vertices(MeshArrays& a) {
   int next = 0;
   for (size_t v = 0; v < map.size(); ++v)
     if (map[v] == 0) {
-      a.means[size_t(next)] = a.means[v];
-      a.covariances[size_t(next)] = a.covariances[v];
-      if (origins) a.origin[size_t(next)] = a.origin[v];
+      if (size_t(next) != v) {  // the vertices before the first dropped one stay where they are
+        a.means[size_t(next)] = a.means[v];
+        a.covariances[size_t(next)] = a.covariances[v];
+        if (origins) a.origin[size_t(next)] = a.origin[v];
+      }
       map[v] = next++;
     }
+  const bool dropped = size_t(next) != map.size();
   a.means.resize(size_t(next));
   a.covariances.resize(size_t(next));
   a.origin.resize(origins ? size_t(next) : 0);
-  for (auto& face : a.faces)
-    for (int& v : face) v = map[size_t(v)];
+  if (dropped)  // else every index stays
+    for (auto& face : a.faces)
+      for (int& v : face) v = map[size_t(v)];
   a.sharpness = renumbered(a.sharpness, map, next);
   return map;
 }
