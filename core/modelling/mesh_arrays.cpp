@@ -50,11 +50,21 @@ int MeshArrays::add_vertex(const Gaussian& g) {
 MeshArrays arrays_of(const CovarianceMesh& m) {
   MeshArrays a;
   // Room for the vertices an operation adds, so that adding one does not copy every Gaussian.
-  const size_t room = m.n_vertices() + m.n_vertices() / 16 + 64;
+  const size_t n = m.n_vertices(), room = n + n / 16 + 64;
   a.means.reserve(room);
-  a.means.assign(m.means().begin(), m.means().end());
   a.covariances.reserve(room);
-  a.covariances.assign(m.covariances.begin(), m.covariances.end());
+  a.means.resize(n);  // Eigen's fixed-size matrices are left unset by their constructor: no pass here
+  a.covariances.resize(n);
+  // Copied a block at a time on all cores: one core does not draw the memory's bandwidth.
+  constexpr int kBlocks = 64;
+#pragma omp parallel for schedule(static) if (n >= size_t(kParallelFaces))
+  for (int b = 0; b < kBlocks; ++b) {
+    const size_t first = n * size_t(b) / kBlocks, last = n * size_t(b + 1) / kBlocks;
+    std::copy(m.means().begin() + ptrdiff_t(first), m.means().begin() + ptrdiff_t(last),
+              a.means.begin() + ptrdiff_t(first));
+    std::copy(m.covariances.begin() + ptrdiff_t(first), m.covariances.begin() + ptrdiff_t(last),
+              a.covariances.begin() + ptrdiff_t(first));
+  }
   a.sharpness = m.sharpness;
   a.origin.resize(m.n_vertices());
   std::iota(a.origin.begin(), a.origin.end(), 0);
