@@ -1,6 +1,9 @@
 #include "render/gl/point_precision.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+
+#include "core/mesh/mesh_connectivity.h"
 
 namespace gps {
 
@@ -9,11 +12,19 @@ bool needs_double_points(const Mat3& sigma) {
   return !(values.minCoeff() > 0.0) || values.maxCoeff() > kDoublePointsCondition * values.minCoeff();
 }
 
-MeshPointPrecision::MeshPointPrecision(const FramedGaussians& gaussians) : thin_(gaussians.n_vertices(), 0) {
-  for (size_t v = 0; v < gaussians.n_vertices(); ++v) {
+// The need of the vertices listed (or of every vertex where `vertices` is null), on all cores.
+void MeshPointPrecision::assess(const FramedGaussians& gaussians, const std::vector<int>* vertices) {
+  const long long n = vertices ? (long long)vertices->size() : (long long)gaussians.n_vertices();
+#pragma omp parallel for schedule(static) if (n >= kParallelFaces)
+  for (long long i = 0; i < n; ++i) {
+    const size_t v = vertices ? size_t((*vertices)[size_t(i)]) : size_t(i);
     thin_[v] = needs_double_points(gaussians.covariance(v)) ? 1 : 0;
-    thin_count_ += size_t(thin_[v]);
   }
+  thin_count_ = size_t(std::count(thin_.begin(), thin_.end(), char(1)));
+}
+
+MeshPointPrecision::MeshPointPrecision(const FramedGaussians& gaussians) : thin_(gaussians.n_vertices(), 0) {
+  assess(gaussians, nullptr);
 }
 
 MeshPointPrecision::MeshPointPrecision(const MeshPointPrecision& before, const FramedGaussians& gaussians,
@@ -23,11 +34,11 @@ MeshPointPrecision::MeshPointPrecision(const MeshPointPrecision& before, const F
     const size_t o = origin.empty() ? v : size_t(origin[v]);  // −1: a new vertex, among the changed
     if (o < before.thin_.size()) thin_[v] = before.thin_[o];
   }
-  for (const int v : changed) thin_[size_t(v)] = needs_double_points(gaussians.covariance(size_t(v))) ? 1 : 0;
-  for (const char thin : thin_) thin_count_ += size_t(thin);
+  assess(gaussians, &changed);
 }
 
 void MeshPointPrecision::update(const FramedGaussians& gaussians, const std::vector<int>& changed) {
+  if (changed.size() >= size_t(kParallelFaces)) return assess(gaussians, &changed);
   for (const int v : changed) {
     const char thin = needs_double_points(gaussians.covariance(size_t(v))) ? 1 : 0;
     thin_count_ = thin_count_ - size_t(thin_[size_t(v)]) + size_t(thin);

@@ -37,6 +37,8 @@ public:
   }
 
 private:
+  void assess(const FramedGaussians& gaussians, const std::vector<int>* vertices);
+
   std::vector<char> thin_;  // per vertex: needs double
   size_t thin_count_ = 0;
 };
