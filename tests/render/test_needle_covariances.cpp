@@ -16,6 +16,7 @@
 
 #include "core/evaluation/patch_eval.h"
 #include "core/modelling/samples.h"
+#include "render/gl/point_precision.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/plan_fixture.h"
@@ -115,6 +116,47 @@ TEST_F(NeedleCovariances, AnEditChangesThePrecision) {
   EXPECT_EQ(renderer.point_precision(), PointPrecision::single_float);
   fresh.set_mesh(round, PlannedSurface(round, PlanOptions{}), renderer.frame());
   EXPECT_EQ(draw(renderer), draw(fresh));
+}
+
+// The precision followed through edits of many Gaussians at once (assessed on all cores) and of a
+// few: a needle among 20,000 round Gaussians takes the mesh to double, in an edit of all of them, of
+// some, or of the needle alone, and rounding the last needle takes it back to float.
+TEST(MeshPointPrecision, FollowsEditsOfManyGaussiansAndOfFew) {
+  const Mat3 needle = Vec3(1.0, 1e-7, 1e-7).asDiagonal();
+  FramedGaussians g;
+  g.means.assign(20000, Vec3::Zero());
+  g.covariances.assign(20000, 0.01 * Mat3::Identity());
+  std::vector<int> all(g.n_vertices()), some;
+  for (int v = 0; v < int(all.size()); ++v) {
+    all[size_t(v)] = v;
+    if (v % 3 == 0) some.push_back(v);
+  }
+  MeshPointPrecision precision(g);
+  EXPECT_EQ(precision.precision(), PointPrecision::single_float);
+  g.covariances[19998] = needle;
+  precision.update(g, all);
+  EXPECT_EQ(precision.precision(), PointPrecision::double_float);
+  g.covariances[19998] = 0.01 * Mat3::Identity();
+  g.covariances[19995] = needle;
+  precision.update(g, some);  // 19998 is not among them: still a needle to the precision
+  EXPECT_EQ(precision.precision(), PointPrecision::double_float);
+  precision.update(g, {19998});
+  EXPECT_EQ(precision.precision(), PointPrecision::double_float);  // vertex 19995 is one now
+  g.covariances[19995] = 0.01 * Mat3::Identity();
+  precision.update(g, some);
+  EXPECT_EQ(precision.precision(), PointPrecision::single_float);
+  // After a change of topology: the needle carried to where its vertex went, then assessed again.
+  g.covariances[7] = needle;
+  precision.update(g, {7});
+  std::vector<int> origin(all.rbegin(), all.rend());  // the vertices in reverse order
+  FramedGaussians reversed;
+  reversed.means = g.means;
+  reversed.covariances.assign(g.covariances.rbegin(), g.covariances.rend());
+  const MeshPointPrecision carried(precision, reversed, origin, {});
+  EXPECT_EQ(carried.precision(), PointPrecision::double_float);
+  reversed.covariances[g.n_vertices() - 8] = 0.01 * Mat3::Identity();
+  EXPECT_EQ(MeshPointPrecision(precision, reversed, origin, all).precision(), PointPrecision::single_float);
+  EXPECT_EQ(MeshPointPrecision(reversed).precision(), PointPrecision::single_float);
 }
 
 }  // namespace
