@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <utility>
 
 namespace gps {
 
@@ -86,6 +88,7 @@ private:
         continue;
       }
       face_new_[size_t(g)] = f;
+      kept_faces_keep_numbers_ = kept_faces_keep_numbers_ && f == g;
       ++kept;
     }
     return 2 * kept >= t_.n_faces();  // mostly new: building the whole costs less
@@ -281,26 +284,49 @@ private:
     c_.vertex_faces.resize(size_t(c_.vertex_face_offsets.back()));
     c_.vertex_face_corners.resize(c_.vertex_faces.size());
     c_.vertex_edges.resize(size_t(c_.vertex_edge_offsets.back()));
+    // A run of vertices the change does not reach whose origins follow each other has its old rows one
+    // after the other: copied (the corners; the faces too where every kept face keeps its number) or
+    // renumbered in one go, a block of vertices per core.
+    constexpr int kBlocks = 64;
 #pragma omp parallel for schedule(static) if (n >= kParallelFaces)
-    for (int v = 0; v < n; ++v) {
-      int out = c_.vertex_face_offsets[size_t(v)], edge_out = c_.vertex_edge_offsets[size_t(v)];
-      if (touched_[size_t(v)]) {
-        const size_t i = size_t(slot[size_t(v)]);
-        for (const auto& [f, k] : face_rows[i]) {
-          c_.vertex_faces[size_t(out)] = f;
-          c_.vertex_face_corners[size_t(out++)] = k;
+    for (int b = 0; b < kBlocks; ++b) {
+      const int last = int(int64_t(n) * (b + 1) / kBlocks);
+      for (int v = int(int64_t(n) * b / kBlocks); v < last;) {
+        if (touched_[size_t(v)]) {
+          int out = c_.vertex_face_offsets[size_t(v)], edge_out = c_.vertex_edge_offsets[size_t(v)];
+          const size_t i = size_t(slot[size_t(v)]);
+          for (const auto& [f, k] : face_rows[i]) {
+            c_.vertex_faces[size_t(out)] = f;
+            c_.vertex_face_corners[size_t(out++)] = k;
+          }
+          for (const int e : edge_rows[i]) c_.vertex_edges[size_t(edge_out++)] = e;
+          ++v;
+          continue;
         }
-        for (const int e : edge_rows[i]) c_.vertex_edges[size_t(edge_out++)] = e;
-        continue;
+        const int o = o_.vertices[size_t(v)];
+        if (o < 0) {
+          ++v;
+          continue;
+        }
+        int end = v + 1;
+        while (end < last && !touched_[size_t(end)] && o_.vertices[size_t(end)] == o + (end - v)) ++end;
+        const int o_end = o + (end - v);
+        const auto old_rows = [&](const std::vector<int>& offsets, const std::vector<int>& rows) {
+          return std::pair(rows.begin() + offsets[size_t(o)], rows.begin() + offsets[size_t(o_end)]);
+        };
+        const auto [faces, faces_end] = old_rows(c0_.vertex_face_offsets, c0_.vertex_faces);
+        const auto [corners, corners_end] = old_rows(c0_.vertex_face_offsets, c0_.vertex_face_corners);
+        const auto [edges, edges_end] = old_rows(c0_.vertex_edge_offsets, c0_.vertex_edges);
+        const auto face_out = c_.vertex_faces.begin() + c_.vertex_face_offsets[size_t(v)];
+        if (kept_faces_keep_numbers_)
+          std::copy(faces, faces_end, face_out);
+        else
+          std::transform(faces, faces_end, face_out, [&](int g) { return face_new_[size_t(g)]; });
+        std::copy(corners, corners_end, c_.vertex_face_corners.begin() + c_.vertex_face_offsets[size_t(v)]);
+        std::transform(edges, edges_end, c_.vertex_edges.begin() + c_.vertex_edge_offsets[size_t(v)],
+                       [&](int e) { return edge_new_[size_t(e)]; });
+        v = end;
       }
-      const int o = o_.vertices[size_t(v)];
-      if (o < 0) continue;
-      for (int r = c0_.vertex_face_offsets[size_t(o)]; r < c0_.vertex_face_offsets[size_t(o) + 1]; ++r, ++out) {
-        c_.vertex_faces[size_t(out)] = face_new_[size_t(c0_.vertex_faces[size_t(r)])];
-        c_.vertex_face_corners[size_t(out)] = c0_.vertex_face_corners[size_t(r)];
-      }
-      for (int r = c0_.vertex_edge_offsets[size_t(o)]; r < c0_.vertex_edge_offsets[size_t(o) + 1]; ++r)
-        c_.vertex_edges[size_t(edge_out++)] = edge_new_[size_t(c0_.vertex_edges[size_t(r)])];
     }
   }
 
@@ -364,6 +390,7 @@ private:
   const MeshOrigins& o_;
   MeshConnectivity c_;
   std::vector<int> vertex_new_, face_new_, face_old_, edge_new_;
+  bool kept_faces_keep_numbers_ = true;  // every old face kept is the new face of its number
   int n_edges_ = 0;             // the edges added so far
   std::vector<int> new_edges_;  // the edges that are no old edge
   std::vector<NewCorner> new_corners_;
