@@ -214,15 +214,27 @@ private:
     return true;
   }
 
-  // The kept faces' corners keep their old edges, renumbered.
+  // The kept faces' corners keep their old edges, renumbered: a run of kept faces whose old faces
+  // follow each other has its corners one after the other in both, renumbered in one go.
   void carry_kept_corners() {
-#pragma omp parallel for schedule(static) if (t_.n_faces() >= kParallelFaces)
-    for (int f = 0; f < t_.n_faces(); ++f) {
-      const int g = face_old_[size_t(f)];
-      if (g < 0) continue;
-      for (int k = 0; k < t_.face_size(f); ++k)
-        c_.face_edges[size_t(t_.offsets[size_t(f)] + k)] =
-            edge_new_[size_t(c0_.face_edges[size_t(t0_.offsets[size_t(g)] + k)])];
+    const int n = t_.n_faces();
+    constexpr int kBlocks = 64;
+#pragma omp parallel for schedule(static) if (n >= kParallelFaces)
+    for (int b = 0; b < kBlocks; ++b) {
+      const int last = int(int64_t(n) * (b + 1) / kBlocks);
+      for (int f = int(int64_t(n) * b / kBlocks); f < last;) {
+        const int g = face_old_[size_t(f)];
+        if (g < 0) {
+          ++f;
+          continue;
+        }
+        int end = f + 1;
+        while (end < last && face_old_[size_t(end)] == g + (end - f)) ++end;
+        const auto old_edges = c0_.face_edges.begin() + t0_.offsets[size_t(g)];
+        std::transform(old_edges, old_edges + (t_.offsets[size_t(end)] - t_.offsets[size_t(f)]),
+                       c_.face_edges.begin() + t_.offsets[size_t(f)], [&](int e) { return edge_new_[size_t(e)]; });
+        f = end;
+      }
     }
   }
 
