@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 
 namespace gps {
@@ -49,9 +50,11 @@ private:
   // Old vertex → new. The old vertices must keep their order: then edges ordered by their ends stay so.
   bool map_vertices() {
     vertex_new_.assign(size_t(t0_.n_vertices), -1);
+    vertices_keep_numbers_ = t_.n_vertices >= t0_.n_vertices;
     int last = -1;
     for (int v = 0; v < t_.n_vertices; ++v) {
       const int w = o_.vertices[size_t(v)];
+      vertices_keep_numbers_ = vertices_keep_numbers_ && w == (v < t0_.n_vertices ? v : -1);
       if (w < 0) continue;
       if (w >= t0_.n_vertices || w <= last) return false;
       vertex_new_[size_t(w)] = v;
@@ -60,24 +63,47 @@ private:
     return true;
   }
 
+  // Whether new face f has the corners of old face g, renumbered.
+  bool same_corners(int f, int g) const {
+    if (g < 0 || g >= t0_.n_faces() || t0_.face_size(g) != t_.face_size(f)) return false;
+    const int* corners = t_.verts.data() + t_.offsets[size_t(f)];
+    const int* old_corners = t0_.verts.data() + t0_.offsets[size_t(g)];
+    for (int k = 0; k < t_.face_size(f); ++k) {
+      const int v = corners[k];
+      if (v < 0 || v >= t_.n_vertices || o_.vertices[size_t(v)] != old_corners[k]) return false;
+    }
+    return true;
+  }
+
   // The faces that continue an old one: the origin names it and the corners are its corners renumbered
-  // (compared on all cores), the first such face where several name one.
+  // (compared on all cores), the first such face where several name one. Where the old vertices keep
+  // their numbers, a run of faces whose old faces follow each other, face for face of the same size,
+  // is compared in one go first: the corners are then the old corners themselves.
   bool match_faces() {
     face_new_.assign(size_t(t0_.n_faces()), -1);
     face_old_.assign(size_t(t_.n_faces()), -1);
     const int n = std::min(t_.n_faces(), int(o_.faces.size()));
+    constexpr int kBlocks = 64;
 #pragma omp parallel for schedule(static) if (n >= kParallelFaces)
-    for (int f = 0; f < n; ++f) {
-      const int g = o_.faces[size_t(f)];
-      if (g < 0 || g >= t0_.n_faces() || t0_.face_size(g) != t_.face_size(f)) continue;
-      const int* corners = t_.verts.data() + t_.offsets[size_t(f)];
-      const int* old_corners = t0_.verts.data() + t0_.offsets[size_t(g)];
-      bool same = true;
-      for (int k = 0; k < t_.face_size(f) && same; ++k) {
-        const int v = corners[k];
-        same = v >= 0 && v < t_.n_vertices && o_.vertices[size_t(v)] == old_corners[k];
+    for (int b = 0; b < kBlocks; ++b) {
+      const int last = int(int64_t(n) * (b + 1) / kBlocks);
+      for (int f = int(int64_t(n) * b / kBlocks); f < last;) {
+        const int g = o_.faces[size_t(f)];
+        int end = f + 1;
+        if (vertices_keep_numbers_ && g >= 0 && g < t0_.n_faces() && t0_.face_size(g) == t_.face_size(f))
+          while (end < last && o_.faces[size_t(end)] == g + (end - f) && g + (end - f) < t0_.n_faces() &&
+                 t0_.face_size(g + (end - f)) == t_.face_size(end))
+            ++end;
+        const size_t corners = size_t(t_.offsets[size_t(end)] - t_.offsets[size_t(f)]);
+        if (end - f > 1 && std::memcmp(t_.verts.data() + t_.offsets[size_t(f)],
+                                       t0_.verts.data() + t0_.offsets[size_t(g)], corners * sizeof(int)) == 0) {
+          for (int h = f; h < end; ++h) face_old_[size_t(h)] = g + (h - f);
+        } else {
+          for (int h = f; h < end; ++h)
+            if (same_corners(h, o_.faces[size_t(h)])) face_old_[size_t(h)] = o_.faces[size_t(h)];
+        }
+        f = end;
       }
-      if (same) face_old_[size_t(f)] = g;
     }
     int kept = 0;
     for (int f = 0; f < n; ++f) {
@@ -403,6 +429,7 @@ private:
   MeshConnectivity c_;
   std::vector<int> vertex_new_, face_new_, face_old_, edge_new_;
   bool kept_faces_keep_numbers_ = true;  // every old face kept is the new face of its number
+  bool vertices_keep_numbers_ = false;   // every old vertex is the new vertex of its number, the new ones after
   int n_edges_ = 0;             // the edges added so far
   std::vector<int> new_edges_;  // the edges that are no old edge
   std::vector<NewCorner> new_corners_;

@@ -208,6 +208,24 @@ TEST(IncrementalConnectivity, DeclinesWhatItCannotFollow) {
   EXPECT_FALSE(updated_connectivity(t, before.connectivity(), t, shifted).has_value());
 }
 
+// Faces whose corners are the old faces' numbers, but every vertex one further along (old vertex 0
+// gone, one new vertex at the end): the numbers are the same, the vertices are not, so no face
+// continues its old one. Followed, the update gives the whole build; else it declines.
+TEST(IncrementalConnectivity, AFaceOfTheOldNumbersOnOtherVerticesIsNotTheOldFace) {
+  const CovarianceMesh before = make_sample("grid", 10000);  // runs of faces compared at once
+  const int n = int(before.n_vertices());
+  MeshOrigins moved;
+  moved.vertices.resize(size_t(n));
+  std::iota(moved.vertices.begin(), moved.vertices.end(), 1);
+  moved.vertices.back() = -1;
+  moved.faces.resize(before.n_faces());
+  std::iota(moved.faces.begin(), moved.faces.end(), 0);
+  const PolygonTopology& t = before.topology();
+  const std::optional<MeshConnectivity> updated = updated_connectivity(t, before.connectivity(), t, moved);
+  if (updated) test::expect_equal(*updated, before.connectivity());
+  EXPECT_FALSE(updated.has_value()) << "every face is new: a whole build costs less";
+}
+
 // A vertex of 100,000 faces and a face of 100,000 corners: an operation beside them reads each once
 // (a walk that looked through the whole face, or the vertex's whole row, at every step would not end).
 TEST(IncrementalConnectivity, AVertexOfManyFacesAndAFaceOfManyCornersAreNotReadOverAndOver) {
