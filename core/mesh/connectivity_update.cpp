@@ -20,6 +20,10 @@ struct NewCorner {
 
 bool before_key(const NewCorner& x, int low, int high) { return x.low < low || (x.low == low && x.high < high); }
 
+// The passes over every face or vertex take them in this many blocks, one core each, and walk a block
+// in runs of elements that continue old ones in order (copied or renumbered in one go).
+constexpr int kBlocks = 64;
+
 // The update's state: the old mesh, the new one, and what corresponds.
 class Update {
 public:
@@ -83,7 +87,6 @@ private:
     face_new_.assign(size_t(t0_.n_faces()), -1);
     face_old_.assign(size_t(t_.n_faces()), -1);
     const int n = std::min(t_.n_faces(), int(o_.faces.size()));
-    constexpr int kBlocks = 64;
 #pragma omp parallel for schedule(static) if (n >= kParallelFaces)
     for (int b = 0; b < kBlocks; ++b) {
       const int last = int(int64_t(n) * (b + 1) / kBlocks);
@@ -244,7 +247,6 @@ private:
   // follow each other has its corners one after the other in both, renumbered in one go.
   void carry_kept_corners() {
     const int n = t_.n_faces();
-    constexpr int kBlocks = 64;
 #pragma omp parallel for schedule(static) if (n >= kParallelFaces)
     for (int b = 0; b < kBlocks; ++b) {
       const int last = int(int64_t(n) * (b + 1) / kBlocks);
@@ -325,7 +327,6 @@ private:
     // A run of vertices the change does not reach whose origins follow each other has its old rows one
     // after the other: copied (the corners; the faces too where every kept face keeps its number) or
     // renumbered in one go, a block of vertices per core.
-    constexpr int kBlocks = 64;
 #pragma omp parallel for schedule(static) if (n >= kParallelFaces)
     for (int b = 0; b < kBlocks; ++b) {
       const int last = int(int64_t(n) * (b + 1) / kBlocks);
