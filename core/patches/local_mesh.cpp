@@ -18,10 +18,10 @@ int LocalMesh::find_edge(int a, int b) const {
 
 int LocalMesh::find_face(const std::vector<int>& corners) const {
   const auto& c = connectivity();
+  const PolygonTopology& t = topology();
   const int v = corners[0];
   for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i) {
     const int f = c.vertex_faces[size_t(i)];
-    const PolygonTopology& t = topology();
     if (t.face_size(f) != int(corners.size())) continue;
     const auto begin = t.verts.begin() + t.offsets[size_t(f)];
     const auto end = t.verts.begin() + t.offsets[size_t(f) + 1];

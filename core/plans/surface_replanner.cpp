@@ -327,9 +327,10 @@ std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
 bool SurfaceReplanner::same_surface(const PolygonTopology& topology, const Sharpness& sharpness,
                                     const std::vector<int>& origin) const {
   const PolygonTopology& t = base_.topology();
-  if (tables_->plans.n_patches() == 0 || topology.n_vertices != t.n_vertices || topology.offsets != t.offsets ||
-      topology.verts != t.verts || !(sharpness == sharpness_))
-    return false;
+  // A mesh whose shape the base shares has these very faces: not compared with themselves.
+  const bool same_faces = &topology == &t || (topology.n_vertices == t.n_vertices && topology.offsets == t.offsets &&
+                                              topology.verts == t.verts);
+  if (tables_->plans.n_patches() == 0 || !same_faces || !(sharpness == sharpness_)) return false;
   for (size_t v = 0; v < origin.size(); ++v)
     if (origin[v] != int(v)) return false;
   return origin.empty() || origin.size() == size_t(t.n_vertices);
