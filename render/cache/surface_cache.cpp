@@ -27,13 +27,14 @@ SurfaceCache::SurfaceCache()
 }
 
 void SurfaceCache::set_cage(const CovarianceMesh& mesh, const FramedGaussians& gaussians, bool follow) {
-  cage_positions_.resize(gaussians.n_vertices());
-  for (size_t i = 0; i < gaussians.n_vertices(); ++i) {
+  const size_t n = gaussians.n_vertices();
+  cage_positions_.resize(n);
+#pragma omp parallel for schedule(static) if (n >= size_t(kParallelFaces))
+  for (size_t i = 0; i < n; ++i) {
     const Vec3& m = gaussians.mean(i);
     cage_positions_[i] = glm::vec3(float(m.x()), float(m.y()), float(m.z()));
   }
-  const std::vector<int>& ends = mesh.connectivity().edge_verts;
-  cage_edges_.assign(ends.begin(), ends.end());
+  cage_shape_ = mesh.shape();
   if (follow) return;
   stored_ = false;
   tracked_points_ = -1;
@@ -145,9 +146,10 @@ bool SurfaceCache::camera_close(const glm::mat4& view_projection, glm::vec2 view
     return Projected{glm::distance(a, b) * scale / (0.5f * (wa + wb)), wa <= 0.0f || wb <= 0.0f};
   };
   const float low = 1.0f / hysteresis_, high = hysteresis_;
-  for (size_t e = 0; e + 1 < cage_edges_.size(); e += 2) {
-    const glm::vec3& a = cage_positions_[cage_edges_[e]];
-    const glm::vec3& b = cage_positions_[cage_edges_[e + 1]];
+  const std::vector<int>& ends = cage_shape_->connectivity.edge_verts;
+  for (size_t e = 0; e + 1 < ends.size(); e += 2) {
+    const glm::vec3& a = cage_positions_[size_t(ends[e])];
+    const glm::vec3& b = cage_positions_[size_t(ends[e + 1])];
     const Projected before = project(view_projection_, viewport_, a, b), now = project(view_projection, viewport, a, b);
     if (before.behind != now.behind) return false;
     if (before.behind) continue;

@@ -94,6 +94,8 @@ public:
   void set_cage(const CovarianceMesh& mesh, const FramedGaussians& gaussians, bool follow = false);
   /// Moved base vertices (for the hysteresis; points_changed says what the edit changed).
   void update_cage(const FramedGaussians& gaussians, const std::vector<int>& changed);
+  /// The base vertices' positions as the last set_cage and update_cage gave them, in float.
+  const std::vector<glm::vec3>& cage_positions() const { return cage_positions_; }
   /// A compute pass made plan points of generation `points`, changing the triangles of `patches`
   /// (nullptr: of all patches, not followed as an edit: captured again). An edit is followed from a
   /// capture on, one compute pass after the other; any other change is captured again.
@@ -356,7 +358,7 @@ private:
   glm::mat4 view_projection_{1.0f};
   glm::vec2 viewport_{0.0f};
   std::vector<glm::vec3> cage_positions_;
-  std::vector<unsigned> cage_edges_;  // index pairs
+  std::shared_ptr<const MeshShape> cage_shape_ = empty_mesh_shape();  // the edges, as index pairs
   float hysteresis_ = 1.25f;
   long long limit_bytes_;
   int captures_ = 0, refreshes_ = 0, refreshed_patches_ = 0, evaluated_patches_ = 0;

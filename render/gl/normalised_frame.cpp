@@ -64,16 +64,22 @@ void NormalisedFrame::to_frame(const CovarianceMesh& mesh, const std::vector<int
   }
 }
 
-std::vector<int> changed_gaussians(const FramedGaussians& before, const FramedGaussians& after,
-                                   const std::vector<int>& origin) {
-  // Compared on all cores, then listed in order.
-  const size_t n = after.n_vertices();
+std::vector<int> changed_gaussians(const FramedGaussians& before, const CovarianceMesh& mesh,
+                                   const NormalisedFrame& frame, const std::vector<int>& origin,
+                                   FramedGaussians& framed) {
+  const size_t n = mesh.n_vertices();
+  framed.means.resize(n);
+  framed.covariances.resize(n);
+  // Framed and compared on all cores, then listed in order.
   std::vector<char> differs(n);
 #pragma omp parallel for schedule(static) if (n >= size_t(kParallelFaces))
   for (size_t v = 0; v < n; ++v) {
+    const Vec3 mean = frame.mean_in_frame(mesh.mean(v));
+    const Mat3 covariance = frame.covariance_in_frame(mesh.covariance(v));
     const size_t o = origin.empty() ? v : size_t(origin[v]);  // −1: past every vertex
-    differs[v] =
-        o >= before.n_vertices() || after.means[v] != before.means[o] || after.covariances[v] != before.covariances[o];
+    differs[v] = o >= before.n_vertices() || mean != before.means[o] || covariance != before.covariances[o];
+    framed.means[v] = mean;
+    framed.covariances[v] = covariance;
   }
   std::vector<int> changed;
   for (size_t v = 0; v < n; ++v)

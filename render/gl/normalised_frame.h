@@ -20,11 +20,6 @@ struct FramedGaussians {
   const Mat3& covariance(size_t v) const { return covariances[v]; }
 };
 
-/// The vertices (increasing) of `after` whose Gaussian is not `before`'s at their `origin`: the
-/// changed and the new ones (origin −1). An empty `origin` keeps each vertex's number.
-std::vector<int> changed_gaussians(const FramedGaussians& before, const FramedGaussians& after,
-                                   const std::vector<int>& origin);
-
 struct NormalisedFrame {
   glm::dvec3 centre{0.0};
   double unit = 1.0;  // world length of one frame unit: the bounding box's diagonal
@@ -52,5 +47,12 @@ struct NormalisedFrame {
   glm::dmat4 world_from_frame() const;
   glm::dvec3 to_world(const glm::dvec3& p) const { return centre + unit * p; }
 };
+
+/// `mesh`'s Gaussians in `frame` (as gaussians_in_frame gives them) written into `framed`, its storage
+/// reused, and in the same pass the vertices (increasing) whose Gaussian there is not `before`'s at
+/// their `origin`: the changed and the new ones (origin −1). An empty `origin` keeps each vertex's number.
+std::vector<int> changed_gaussians(const FramedGaussians& before, const CovarianceMesh& mesh,
+                                   const NormalisedFrame& frame, const std::vector<int>& origin,
+                                   FramedGaussians& framed);
 
 }  // namespace gps

@@ -20,32 +20,40 @@ CageLines::CageLines()
   glVertexArrayAttribBinding(vao_, 0, 0);
 }
 
-void CageLines::set_mesh(const CovarianceMesh& mesh, const FramedGaussians& gaussians) {
+namespace {
+
+// `bytes` of `data` into `buffer`, whose storage (`capacity` bytes) stays where they fit in it and it is
+// not twice as large: a modelling operation's mesh is written over the one before it, not into storage
+// the driver allocates (and clears) again. An empty upload keeps a little storage to bind.
+void write_buffer(GLuint buffer, size_t& capacity, const void* data, size_t bytes) {
+  const size_t needed = std::max<size_t>(bytes, 16);
+  if (needed > capacity || capacity / 2 > needed) {
+    capacity = needed + needed / 16;  // room for the vertices and edges an operation adds
+    glNamedBufferData(buffer, GLsizeiptr(capacity), nullptr, GL_DYNAMIC_DRAW);
+  }
+  if (bytes > 0) glNamedBufferSubData(buffer, 0, GLsizeiptr(bytes), data);
+}
+
+}  // namespace
+
+void CageLines::set_mesh(const CovarianceMesh& mesh, const std::vector<glm::vec3>& positions) {
   // The edges' ends as they are: vertex indices are never negative, so their ints are the unsigned
   // indices the draw reads.
   const std::vector<int>& ends = mesh.connectivity().edge_verts;
   static_assert(sizeof(int) == sizeof(GLuint));
   index_count_ = int(ends.size());
-  upload_positions(gaussians);
-  const int none[2] = {0, 0};
-  glNamedBufferData(ibo_, GLsizeiptr(std::max<size_t>(2, ends.size()) * sizeof(GLuint)),
-                    ends.empty() ? none : ends.data(), GL_STATIC_DRAW);
+  upload_positions(positions);
+  write_buffer(ibo_, ibo_bytes_, ends.data(), ends.size() * sizeof(GLuint));
 }
 
-void CageLines::upload_positions(const FramedGaussians& gaussians) {
-  std::vector<float> positions(3 * gaussians.n_vertices());
-  for (size_t i = 0; i < gaussians.n_vertices(); ++i)
-    for (int k = 0; k < 3; ++k) positions[3 * i + size_t(k)] = float(gaussians.mean(i)[k]);
-  glNamedBufferData(vbo_, GLsizeiptr(std::max<size_t>(3, positions.size()) * sizeof(float)), positions.data(),
-                    GL_DYNAMIC_DRAW);
+void CageLines::upload_positions(const std::vector<glm::vec3>& positions) {
+  static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+  write_buffer(vbo_, vbo_bytes_, positions.data(), positions.size() * sizeof(glm::vec3));
 }
 
-void CageLines::update_positions(const FramedGaussians& gaussians, const std::vector<int>& changed) {
-  for (const int v : changed) {
-    const Vec3 m = gaussians.mean(size_t(v));
-    const float position[3] = {float(m.x()), float(m.y()), float(m.z())};
-    glNamedBufferSubData(vbo_, GLintptr(3 * sizeof(float) * size_t(v)), sizeof position, position);
-  }
+void CageLines::update_positions(const std::vector<glm::vec3>& positions, const std::vector<int>& changed) {
+  for (const int v : changed)
+    glNamedBufferSubData(vbo_, GLintptr(sizeof(glm::vec3) * size_t(v)), sizeof(glm::vec3), &positions[size_t(v)]);
 }
 
 void CageLines::draw(const RenderTarget& target, const glm::mat4& view_projection,

@@ -263,8 +263,17 @@ void PlanBuffers::carry_gaussians_as(const FramedGaussians& gaussians, const std
                                      const std::vector<int>& changed) {
   constexpr size_t stride = kGaussianReals<Real> * sizeof(Real);
   const size_t n = gaussians.n_vertices();
-  const GLuint before = swap_in_spare(kBindingGaussians, n * stride);
-  copy_runs(before, buffers_[kBindingGaussians], carried_runs(n, origin, changed), stride);
+  const std::vector<CopyRun> runs = carried_runs(n, origin, changed);
+  // Where every carried vertex keeps its number (an operation that only adds vertices, or its undo),
+  // the storage that holds them stays; only the changed ones are written.
+  const bool in_place = keeps_storage(kBindingGaussians, n * stride) &&
+                        std::all_of(runs.begin(), runs.end(), [](const CopyRun& run) { return run.from == run.to; });
+  if (in_place) {
+    reserve(kBindingGaussians, n * stride);
+  } else {
+    const GLuint before = swap_in_spare(kBindingGaussians, n * stride);
+    copy_runs(before, buffers_[kBindingGaussians], runs, stride);
+  }
   update_gaussians_as<Real>(gaussians, changed);
 }
 

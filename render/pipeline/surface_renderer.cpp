@@ -34,12 +34,13 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
 void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const SurfaceTables> surface_tables,
                                const NormalisedFrame& frame, const PlanChange& change, const std::vector<int>& origin) {
   // Refused before anything changes: the renderer keeps drawing the previous mesh.
-  FramedGaussians framed = frame.gaussians_in_frame(mesh);
-  ++revision_;
   // In the same frame, what the unchanged Gaussians gave is carried to where they went.
   const bool carry =
       frame == frame_ && framed_.n_vertices() > 0 && (origin.empty() || origin.size() == mesh.n_vertices());
-  const std::vector<int> changed = carry ? changed_gaussians(framed_, framed, origin) : std::vector<int>{};
+  FramedGaussians framed;
+  const std::vector<int> changed = carry ? changed_gaussians(framed_, mesh, frame, origin, framed) : std::vector<int>{};
+  if (!carry) framed = frame.gaussians_in_frame(mesh);
+  ++revision_;
   const bool few_changed = carry && !update_everything(changed.size(), framed.n_vertices());
   MeshPointPrecision point_precision =
       carry ? MeshPointPrecision(point_precision_, framed, origin, changed) : MeshPointPrecision(framed);
@@ -63,8 +64,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   dependents_.reset();
   readers_.reset();
   all_corner_items_.clear();
-  half_size_patches_ = 0;
-  for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
+  half_size_patches_ = -1;
   // Kept tables keep the points of the base vertices that did not change, in this frame and precision.
   const PlanBuffers::CarriedPoints carried{origin, changed, change.kept_rows, before->stencils.first_row()};
   buffers_.upload_tables(*tables_, keep ? kept : std::vector<KeptPatches>{}, keep && few_changed ? &carried : nullptr,
@@ -79,8 +79,9 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   else
     buffers_.upload_gaussians(framed_);
   ellipsoids_current_ = false;           // uploaded when first drawn: most frames draw none
-  cage_.set_mesh(mesh, framed_);         // the overlays too are drawn in the frame
-  cache_.set_cage(mesh, framed_, keep);  // projected with the frame's view-projection
+  // The overlays too are drawn in the frame; the cache projects the cage with the frame's view-projection.
+  cache_.set_cage(mesh, framed_, keep);
+  cage_.set_mesh(mesh, cache_.cage_positions());
   if (keep)
     run_compute_kept(*before, changed, change, origin, few_changed);
   else
@@ -133,12 +134,12 @@ void SurfaceRenderer::follow_edit(const std::vector<int>& changed) {
   if (new_precision || update_everything(changed.size(), framed_.n_vertices())) {
     buffers_.upload_gaussians(framed_);
     ellipsoids_current_ = false;
-    cage_.upload_positions(framed_);
+    cage_.upload_positions(cache_.cage_positions());
     run_compute(nullptr, true);
     return;
   }
   buffers_.update_gaussians(framed_, changed);
-  cage_.update_positions(framed_, changed);
+  cage_.update_positions(cache_.cage_positions(), changed);
   if (ellipsoids_current_) ellipsoids_.upload(framed_, &changed);
   run_compute(&changed);
 }

@@ -227,7 +227,8 @@ private:
   long long tables_id_ = 0;                   // the replanner's id of tables_ (PlanChange), 0 where none gave one
   std::vector<int> all_corner_items_;         // CornerLimitPass::all_items of tables_, once a pass needed them
   int last_corner_slots_ = 0;
-  long long half_size_patches_ = 0;  // a split face's patches (quads): the cache's buffer estimate
+  long long half_size_patches_ = 0;  // a split face's patches (quads), counted when the cache's buffer
+                                     // estimate first needs them (−1: not yet)
   int group_limit_ = 0;              // lowered by tests only (DeviceLimitsForTests)
   long long storage_limit_ = 0;
   GpuPassTimer* timer_ = nullptr;

@@ -84,6 +84,10 @@ SurfaceRenderer::CacheFrame SurfaceRenderer::capture_cache(const Camera& camera,
   } else if (shape() == PatchShape::triangle) {
     estimate += patches * level * level * 5 / 4;
   } else {
+    if (half_size_patches_ < 0) {
+      half_size_patches_ = 0;
+      for (int p = 0; p < n_patches(); ++p) half_size_patches_ += half_size_patch(tables().plans, p);
+    }
     const long long halves = half_size_patches_, half_level = (level + 1) / 2;
     estimate += ((patches - halves) * 2 * level * level + halves * 2 * half_level * half_level) * 5 / 4;
   }
