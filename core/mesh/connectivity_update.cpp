@@ -195,7 +195,31 @@ private:
     c_.edge_faces.resize(2 * most);
     n_edges_ = 0;
     size_t j = 0;
+    // Where the old vertices and the kept faces keep their numbers, a run of old edges whose faces all
+    // stay, before the next new face's edge, is the same edges: copied in one go.
+    const bool same_numbers = vertices_keep_numbers_ && kept_faces_keep_numbers_;
+    const auto stays = [&](int e) {
+      const int a = c0_.edge_faces[2 * size_t(e)], b = c0_.edge_faces[2 * size_t(e) + 1];
+      return a >= 0 && face_new_[size_t(a)] == a && (b < 0 || face_new_[size_t(b)] == b);
+    };
+    const auto before_new_corner = [&](int e) {
+      if (j == new_corners_.size()) return true;
+      const int low = c0_.edge_verts[2 * size_t(e)], high = c0_.edge_verts[2 * size_t(e) + 1];
+      return low < new_corners_[j].low || (low == new_corners_[j].low && high < new_corners_[j].high);
+    };
     for (int e = 0; e < n_old; ++e) {
+      if (same_numbers) {
+        int end = e;
+        while (end < n_old && stays(end) && before_new_corner(end)) ++end;
+        if (end > e) {
+          const size_t at = 2 * size_t(n_edges_), from = 2 * size_t(e), count = 2 * size_t(end - e);
+          std::copy_n(c0_.edge_verts.begin() + long(from), count, c_.edge_verts.begin() + long(at));
+          std::copy_n(c0_.edge_faces.begin() + long(from), count, c_.edge_faces.begin() + long(at));
+          for (int k = e; k < end; ++k) edge_new_[size_t(k)] = n_edges_++;
+          e = end - 1;
+          continue;
+        }
+      }
       int n_kept = 0;
       std::array<int, 2> kept{-1, -1};
       for (int s = 0; s < 2; ++s) {

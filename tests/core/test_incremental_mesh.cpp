@@ -183,6 +183,71 @@ TEST(IncrementalConnectivity, RandomChangesGiveWhatAWholeBuildGivesAndNeverPassW
   EXPECT_GT(large_vouched, 5);
 }
 
+// Edits that leave every old vertex and every kept face its number (faces changed in place, the last
+// ones dropped, new ones added after), where the update copies the old edges whose faces all stay in
+// runs: the same as a whole build wherever it vouches, and never vouching for what that refuses.
+TEST(IncrementalConnectivity, EdgesWhoseFacesAllKeepTheirNumbersAreCarriedAsWholeBuildsGiveThem) {
+  std::mt19937 rng(4646);
+  const auto pick = [&](size_t n) { return size_t(std::uniform_int_distribution<size_t>(0, n - 1)(rng)); };
+  int vouched = 0, refused = 0;
+  for (const auto& [name, size] : std::vector<std::pair<const char*, int>>{
+           {"grid", 200}, {"icosphere", 200}, {"cylinder", 200}, {"torus", 200}, {"sphere", 6000}}) {
+    SCOPED_TRACE(name);
+    const CovarianceMesh before = make_sample(name, size);
+    for (int trial = 0; trial < 150; ++trial) {
+      Changed c{faces_of(before), {}, int(before.n_vertices())};
+      c.origins.vertices.resize(before.n_vertices());
+      std::iota(c.origins.vertices.begin(), c.origins.vertices.end(), 0);
+      c.origins.faces.resize(before.n_faces());
+      std::iota(c.origins.faces.begin(), c.origins.faces.end(), 0);
+      for (int i = 0; i <= trial % 3; ++i) {
+        const size_t f = pick(c.faces.size());
+        switch (pick(4)) {
+          case 0:  // the last faces dropped: a hole whose edges keep one face, or lose both
+            for (size_t k = 0, n = 1 + pick(3); k < n && c.faces.size() > 2; ++k) c.faces.pop_back();
+            break;
+          case 1:  // a face turned over in place
+            std::reverse(c.faces[f].begin(), c.faces[f].end());
+            break;
+          case 2: {  // a new vertex's triangle on an edge: filling a boundary, or a third face
+            const size_t k = pick(c.faces[f].size());
+            c.origins.vertices.push_back(-1);
+            c.faces.push_back({c.faces[f][(k + 1) % c.faces[f].size()], c.faces[f][k], c.n_vertices++});
+            break;
+          }
+          default:  // a face's corners moved to new vertices, the old face's place kept
+            for (int& v : c.faces[f]) {
+              c.origins.vertices.push_back(-1);
+              v = c.n_vertices++;
+            }
+        }
+      }
+      c.origins.faces.resize(std::min(c.origins.faces.size(), c.faces.size()));
+      const PolygonTopology t = topology_of(c.faces, c.n_vertices);
+      const std::optional<MeshConnectivity> updated =
+          updated_connectivity(before.topology(), before.connectivity(), t, c.origins);
+      std::optional<CovarianceMesh> whole;
+      try {
+        whole = make_covariance_mesh(std::vector<Vec3>(size_t(c.n_vertices), Vec3::Zero()), {}, PolygonTopology(t),
+                                     "changed");
+      } catch (const Error&) {
+      }
+      if (!whole) {
+        ++refused;
+        EXPECT_FALSE(updated.has_value()) << "trial " << trial << ": vouched for a topology a whole build refuses";
+        continue;
+      }
+      if (!updated) continue;
+      ++vouched;
+      test::expect_equal(*updated, whole->connectivity());
+      if (HasFailure()) return;
+    }
+  }
+  std::printf("vouched %d refused %d\n", vouched, refused);
+  EXPECT_GT(vouched, 200);
+  EXPECT_GT(refused, 50);
+}
+
 // Where the change cannot be followed the update declines, and the mesh is built whole: old vertices
 // in a new order, most faces new, no face origins.
 TEST(IncrementalConnectivity, DeclinesWhatItCannotFollow) {
