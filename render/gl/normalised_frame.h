@@ -48,9 +48,9 @@ struct NormalisedFrame {
   glm::dvec3 to_world(const glm::dvec3& p) const { return centre + unit * p; }
 };
 
-/// `mesh`'s Gaussians in `frame` (as gaussians_in_frame gives them) written into `framed`, its storage
-/// reused, and in the same pass the vertices (increasing) whose Gaussian there is not `before`'s at
-/// their `origin`: the changed and the new ones (origin −1). An empty `origin` keeps each vertex's number.
+/// `mesh`'s Gaussians in `frame` (as gaussians_in_frame gives them) written into `framed`, and in the
+/// same pass the vertices (increasing) whose Gaussian there is not `before`'s at their `origin`: the
+/// changed and the new ones (origin −1). An empty `origin` keeps each vertex's number.
 std::vector<int> changed_gaussians(const FramedGaussians& before, const CovarianceMesh& mesh,
                                    const NormalisedFrame& frame, const std::vector<int>& origin,
                                    FramedGaussians& framed);

@@ -127,6 +127,40 @@ void random_edit(Changed& c, std::mt19937& rng) {
   }
 }
 
+// `before` unchanged, as a change of itself: every vertex and face its own origin.
+Changed unchanged(const CovarianceMesh& before) {
+  Changed c{faces_of(before), {}, int(before.n_vertices())};
+  c.origins.vertices.resize(before.n_vertices());
+  std::iota(c.origins.vertices.begin(), c.origins.vertices.end(), 0);
+  c.origins.faces.resize(before.n_faces());
+  std::iota(c.origins.faces.begin(), c.origins.faces.end(), 0);
+  return c;
+}
+
+enum class Outcome { refused, declined, vouched };
+
+// The update of `before` to the change `c` against a whole build of its faces: where the whole build
+// refuses them the update must not vouch for them; where it vouches it must give the whole build's
+// connectivity (a failure otherwise, named by `trial`).
+Outcome update_against_whole_build(const CovarianceMesh& before, const Changed& c, int trial) {
+  const PolygonTopology t = topology_of(c.faces, c.n_vertices);
+  const std::optional<MeshConnectivity> updated =
+      updated_connectivity(before.topology(), before.connectivity(), t, c.origins);
+  std::optional<CovarianceMesh> whole;
+  try {
+    whole =
+        make_covariance_mesh(std::vector<Vec3>(size_t(c.n_vertices), Vec3::Zero()), {}, PolygonTopology(t), "changed");
+  } catch (const Error&) {
+  }
+  if (!whole) {
+    EXPECT_FALSE(updated.has_value()) << "trial " << trial << ": vouched for a topology a whole build refuses";
+    return Outcome::refused;
+  }
+  if (!updated) return Outcome::declined;
+  test::expect_equal(*updated, whole->connectivity());
+  return Outcome::vouched;
+}
+
 // Random edits of meshes of quads, triangles and both: wherever the update vouches for a topology
 // it equals connectivity_of's whole build, which accepts it; wherever the whole build refuses one,
 // the update does not vouch for it. Both kinds occur often.
@@ -145,34 +179,14 @@ TEST(IncrementalConnectivity, RandomChangesGiveWhatAWholeBuildGivesAndNeverPassW
       EXPECT_GE(before.n_vertices(), size_t(kParallelFaces));
     }
     for (int trial = 0; trial < trials; ++trial) {
-      Changed c{faces_of(before), {}, int(before.n_vertices())};
-      c.origins.vertices.resize(before.n_vertices());
-      std::iota(c.origins.vertices.begin(), c.origins.vertices.end(), 0);
-      c.origins.faces.resize(before.n_faces());
-      std::iota(c.origins.faces.begin(), c.origins.faces.end(), 0);
+      Changed c = unchanged(before);
       const int n_edits = 1 + trial % 4;
       for (int i = 0; i < n_edits; ++i) random_edit(c, rng);
-      const PolygonTopology t = topology_of(c.faces, c.n_vertices);
-      const std::optional<MeshConnectivity> updated =
-          updated_connectivity(before.topology(), before.connectivity(), t, c.origins);
-      std::optional<CovarianceMesh> whole;
-      try {
-        whole = make_covariance_mesh(std::vector<Vec3>(size_t(c.n_vertices), Vec3::Zero()), {}, PolygonTopology(t),
-                                     "changed");
-      } catch (const Error&) {
-      }
-      if (!whole) {
-        ++refused;
-        EXPECT_FALSE(updated.has_value()) << "trial " << trial << ": vouched for a topology a whole build refuses";
-        continue;
-      }
-      if (!updated) {
-        ++declined;
-        continue;
-      }
-      ++vouched;
-      large_vouched += large;
-      test::expect_equal(*updated, whole->connectivity());
+      const Outcome outcome = update_against_whole_build(before, c, trial);
+      refused += outcome == Outcome::refused;
+      declined += outcome == Outcome::declined;
+      vouched += outcome == Outcome::vouched;
+      large_vouched += large && outcome == Outcome::vouched;
       if (HasFailure()) return;
     }
   }
@@ -195,11 +209,7 @@ TEST(IncrementalConnectivity, EdgesWhoseFacesAllKeepTheirNumbersAreCarriedAsWhol
     SCOPED_TRACE(name);
     const CovarianceMesh before = make_sample(name, size);
     for (int trial = 0; trial < 150; ++trial) {
-      Changed c{faces_of(before), {}, int(before.n_vertices())};
-      c.origins.vertices.resize(before.n_vertices());
-      std::iota(c.origins.vertices.begin(), c.origins.vertices.end(), 0);
-      c.origins.faces.resize(before.n_faces());
-      std::iota(c.origins.faces.begin(), c.origins.faces.end(), 0);
+      Changed c = unchanged(before);
       for (int i = 0; i <= trial % 3; ++i) {
         const size_t f = pick(c.faces.size());
         switch (pick(4)) {
@@ -223,23 +233,9 @@ TEST(IncrementalConnectivity, EdgesWhoseFacesAllKeepTheirNumbersAreCarriedAsWhol
         }
       }
       c.origins.faces.resize(std::min(c.origins.faces.size(), c.faces.size()));
-      const PolygonTopology t = topology_of(c.faces, c.n_vertices);
-      const std::optional<MeshConnectivity> updated =
-          updated_connectivity(before.topology(), before.connectivity(), t, c.origins);
-      std::optional<CovarianceMesh> whole;
-      try {
-        whole = make_covariance_mesh(std::vector<Vec3>(size_t(c.n_vertices), Vec3::Zero()), {}, PolygonTopology(t),
-                                     "changed");
-      } catch (const Error&) {
-      }
-      if (!whole) {
-        ++refused;
-        EXPECT_FALSE(updated.has_value()) << "trial " << trial << ": vouched for a topology a whole build refuses";
-        continue;
-      }
-      if (!updated) continue;
-      ++vouched;
-      test::expect_equal(*updated, whole->connectivity());
+      const Outcome outcome = update_against_whole_build(before, c, trial);
+      refused += outcome == Outcome::refused;
+      vouched += outcome == Outcome::vouched;
       if (HasFailure()) return;
     }
   }
