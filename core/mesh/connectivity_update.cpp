@@ -30,7 +30,7 @@ public:
   Update(const PolygonTopology& t0, const MeshConnectivity& c0, const PolygonTopology& t, const MeshOrigins& o)
       : t0_(t0), c0_(c0), t_(t), o_(o) {}
 
-  std::optional<MeshConnectivity> run() {
+  std::optional<MeshConnectivity> run(std::vector<int>* continued) {
     if (o_.vertices.size() != size_t(t_.n_vertices) || o_.faces.empty()) return std::nullopt;
     if (!map_vertices() || !match_faces() || !collect_new_corners() || !merge_edges()) return std::nullopt;
     carry_kept_corners();
@@ -40,6 +40,7 @@ public:
     else
       add_vertex_rows(t_, c_);
     if (!fans_hold()) return std::nullopt;
+    if (continued) *continued = std::move(face_old_);
     return std::move(c_);
   }
 
@@ -465,8 +466,9 @@ private:
 }  // namespace
 
 std::optional<MeshConnectivity> updated_connectivity(const PolygonTopology& before, const MeshConnectivity& c,
-                                                     const PolygonTopology& after, const MeshOrigins& origins) {
-  return Update(before, c, after, origins).run();
+                                                     const PolygonTopology& after, const MeshOrigins& origins,
+                                                     std::vector<int>* continued) {
+  return Update(before, c, after, origins).run(continued);
 }
 
 }  // namespace gps

@@ -22,8 +22,11 @@ struct MeshOrigins {
 /// mesh (new faces' corners, edges with more than two faces, flipped faces, fans, pillows); what it does
 /// not reach was checked when `before` was made. Empty where it cannot vouch for the result (a check
 /// fails, the old vertices change their order, most faces are new): the caller then builds and checks
-/// the mesh whole, which names what is wrong.
+/// the mesh whole, which names what is wrong. `continued`, where given and the result is not empty,
+/// gets per new face the old face it continues as checked (its corners are the old face's, renumbered;
+/// −1: new).
 std::optional<MeshConnectivity> updated_connectivity(const PolygonTopology& before, const MeshConnectivity& c,
-                                                     const PolygonTopology& after, const MeshOrigins& origins);
+                                                     const PolygonTopology& after, const MeshOrigins& origins,
+                                                     std::vector<int>* continued = nullptr);
 
 }  // namespace gps

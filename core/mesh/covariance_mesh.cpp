@@ -36,9 +36,10 @@ public:
   // made, as a reader wants (its memory is that of the mesh it read); a modelling operation's result,
   // whose covariances are given, skips it and reuses the pages. `c`: the connectivity of `t`, or null;
   // `checked`: `t`'s faces and `c` are known to make a manifold (updated_connectivity vouched for them).
+  // `origin`: where the shape came from, where known.
   static CovarianceMesh assemble(std::vector<Vec3>&& means, std::vector<Mat3>&& covariances, PolygonTopology&& t,
                                  MeshConnectivity* c, const std::string& source, const ElementNames& names,
-                                 bool return_pages, bool checked = false) {
+                                 bool return_pages, bool checked = false, ShapeOrigin* origin = nullptr) {
     if (means.size() != covariances.size() && !covariances.empty())
       throw Error(source + ": " + std::to_string(means.size()) + " vertices but " + std::to_string(covariances.size()) +
                   " covariances");
@@ -69,6 +70,7 @@ public:
 #endif
     m.means_ = std::move(means);
     shape->topology = std::move(t);
+    if (origin) shape->origin = std::move(*origin);
     m.shape_ = std::move(shape);
     m.covariances = std::move(covariances);
     // Identity covariances are made once the temporary arrays are gone.
@@ -118,9 +120,11 @@ CovarianceMesh make_covariance_mesh(const CovarianceMesh& before, std::vector<Ve
                                     std::vector<Mat3>&& covariances, PolygonTopology&& faces,
                                     const MeshOrigins& origins, const std::string& source) {
   faces.n_vertices = int(means.size());
-  std::optional<MeshConnectivity> c = updated_connectivity(before.topology(), before.connectivity(), faces, origins);
-  return CovarianceMeshAssembly::assemble(std::move(means), std::move(covariances), std::move(faces),
-                                          c ? &*c : nullptr, source, {}, false, c.has_value());
+  ShapeOrigin origin{before.shape(), origins.vertices, {}};
+  std::optional<MeshConnectivity> c =
+      updated_connectivity(before.topology(), before.connectivity(), faces, origins, &origin.faces);
+  return CovarianceMeshAssembly::assemble(std::move(means), std::move(covariances), std::move(faces), c ? &*c : nullptr,
+                                          source, {}, false, c.has_value(), c ? &origin : nullptr);
 }
 
 namespace {

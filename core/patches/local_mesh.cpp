@@ -75,12 +75,13 @@ void LocalMesh::set_faces(PolygonTopology&& faces) {
 }
 
 LocalMesh base_local_mesh(const PolygonTopology& topology, const Sharpness& sharpness) {
-  return base_local_mesh(std::make_shared<const MeshShape>(MeshShape{topology, connectivity_of(topology)}), sharpness);
+  return base_local_mesh(std::make_shared<const MeshShape>(MeshShape{topology, connectivity_of(topology), {}}),
+                         sharpness);
 }
 
 LocalMesh base_local_mesh(const PolygonTopology& topology, const MeshConnectivity& connectivity,
                           const Sharpness& sharpness) {
-  return base_local_mesh(std::make_shared<const MeshShape>(MeshShape{topology, connectivity}), sharpness);
+  return base_local_mesh(std::make_shared<const MeshShape>(MeshShape{topology, connectivity, {}}), sharpness);
 }
 
 LocalMesh base_local_mesh(std::shared_ptr<const MeshShape> shape, const Sharpness& sharpness) {

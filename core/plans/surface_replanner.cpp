@@ -69,6 +69,18 @@ int patches_of_face(const PolygonTopology& t, int f, Scheme scheme) {
   return scheme == Scheme::loop || t.face_size(f) == 4 ? 1 : t.face_size(f);
 }
 
+// Whether `made` (a shape's origin) says where each face of the shape came from, as the replanner would
+// find it: made from `previous` with the vertex origins `origin` (empty: every old vertex keeps its
+// index, the new ones after).
+bool continues(const ShapeOrigin& made, const std::shared_ptr<const MeshShape>& previous,
+               const std::vector<int>& origin, int n_old) {
+  if (made.from.lock() != previous || made.faces.empty()) return false;
+  if (!origin.empty()) return made.vertices == origin;
+  for (size_t v = 0; v < made.vertices.size(); ++v)
+    if (made.vertices[v] != (int(v) < n_old ? int(v) : -1)) return false;
+  return true;
+}
+
 // A new id for a replanner's tables, unique in the process.
 long long next_tables_id() {
   static std::atomic<long long> last{0};
@@ -378,30 +390,16 @@ int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const
   // gone, and every face that shares a vertex with them is built again).
   bool same_base = true;
   for (int v = 0; v < n_old && same_base; ++v) same_base = new_index[size_t(v)] < 0 || new_index[size_t(v)] == v;
-  // Faces that are still there, corner for corner: old face → new face and back. Each old face's first
-  // match is found on all cores; where an earlier face took it (a face repeated), the next free one.
+  // Faces that are still there, corner for corner: old face → new face and back. Where the operation
+  // that made the new shape from the old one found them with these vertex origins, they are taken from
+  // it; else each old face's first match is found on all cores, and where an earlier face took it (a
+  // face repeated), the next free one.
   std::vector<int> new_face(size_t(old.n_faces()), -1), old_face(size_t(n_faces), -1);
-  const auto match = [&](int f, bool free_only) {
-    const int first = old.offsets[size_t(f)], size = old.face_size(f);
-    const int w = new_index[size_t(old.verts[size_t(first)])];
-    if (w < 0) return -1;
-    for (int i = c.vertex_face_offsets[size_t(w)]; i < c.vertex_face_offsets[size_t(w) + 1]; ++i) {
-      const int g = c.vertex_faces[size_t(i)];
-      if (c.vertex_face_corners[size_t(i)] != 0 || t.face_size(g) != size || (free_only && old_face[size_t(g)] >= 0))
-        continue;
-      bool same = true;
-      for (int k = 1; k < size && same; ++k)
-        same = new_index[size_t(old.verts[size_t(first + k)])] == t.verts[size_t(t.offsets[size_t(g)] + k)];
-      if (same) return g;
-    }
-    return -1;
-  };
-#pragma omp parallel for schedule(static) if (old.n_faces() >= kParallelFaces)
-  for (int f = 0; f < old.n_faces(); ++f) new_face[size_t(f)] = match(f, false);
-  for (int f = 0; f < old.n_faces(); ++f) {
-    int& g = new_face[size_t(f)];
-    if (g >= 0 && old_face[size_t(g)] >= 0) g = match(f, true);
-    if (g >= 0) old_face[size_t(g)] = f;
+  if (const ShapeOrigin& made = base_.shape->origin; continues(made, previous.shape, origin, n_old)) {
+    for (int g = 0; g < n_faces; ++g)
+      if (const int f = made.faces[size_t(g)]; f >= 0) old_face[size_t(g)] = f, new_face[size_t(f)] = g;
+  } else {
+    match_faces(old, new_index, new_face, old_face);
   }
   // Vertices whose pieces changed: corners of faces added or removed, ends of changed creases, changed corners.
   std::vector<char> changed(size_t(n_new), 0);
@@ -436,6 +434,34 @@ int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const
   for (const int g : faces_reading(t, c, {}, changed_vertices)) dirty[size_t(g)] = 1;
 
   return keep_runs_and_build(old, new_face, old_face, dirty, new_index, same_base, sharpness);
+}
+
+void SurfaceReplanner::match_faces(const PolygonTopology& old, const std::vector<int>& new_index,
+                                   std::vector<int>& new_face, std::vector<int>& old_face) const {
+  const PolygonTopology& t = base_.topology();
+  const MeshConnectivity& c = base_.connectivity();
+  const auto match = [&](int f, bool free_only) {
+    const int first = old.offsets[size_t(f)], size = old.face_size(f);
+    const int w = new_index[size_t(old.verts[size_t(first)])];
+    if (w < 0) return -1;
+    for (int i = c.vertex_face_offsets[size_t(w)]; i < c.vertex_face_offsets[size_t(w) + 1]; ++i) {
+      const int g = c.vertex_faces[size_t(i)];
+      if (c.vertex_face_corners[size_t(i)] != 0 || t.face_size(g) != size || (free_only && old_face[size_t(g)] >= 0))
+        continue;
+      bool same = true;
+      for (int k = 1; k < size && same; ++k)
+        same = new_index[size_t(old.verts[size_t(first + k)])] == t.verts[size_t(t.offsets[size_t(g)] + k)];
+      if (same) return g;
+    }
+    return -1;
+  };
+#pragma omp parallel for schedule(static) if (old.n_faces() >= kParallelFaces)
+  for (int f = 0; f < old.n_faces(); ++f) new_face[size_t(f)] = match(f, false);
+  for (int f = 0; f < old.n_faces(); ++f) {
+    int& g = new_face[size_t(f)];
+    if (g >= 0 && old_face[size_t(g)] >= 0) g = match(f, true);
+    if (g >= 0) old_face[size_t(g)] = f;
+  }
 }
 
 int SurfaceReplanner::keep_runs_and_build(const PolygonTopology& old, const std::vector<int>& new_face,

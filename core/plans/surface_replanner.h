@@ -118,6 +118,9 @@ private:
   void keep_every_plan();
   // set_topology's work, the new mesh's base piece built.
   int replan(LocalMesh&& base, const Sharpness& sharpness, const std::vector<int>& origin);
+  // Per old face of `old` the face of base_ with its corners under `new_index` (−1: gone), and back.
+  void match_faces(const PolygonTopology& old, const std::vector<int>& new_index, std::vector<int>& new_face,
+                   std::vector<int>& old_face) const;
   // The plans of base_ from those of `old`: per old face its new face (−1: gone) and back, which new
   // faces read a change (`dirty`), and per old vertex its new index (`same_base`: each kept its own).
   // Keeps, renumbered, every run of clean faces that fits (see set_topology), builds the others and

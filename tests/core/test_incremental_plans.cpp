@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <random>
 
+#include "core/mesh/mesh_delta.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
 #include "core/modelling/loop_cut.h"
+#include "core/modelling/mesh_arrays.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/modelling/samples.h"
 #include "core/plans/kept_patch_records.h"
@@ -191,6 +193,38 @@ TEST(IncrementalPlans, AnExtrudeBuildsAFewRangesAgain) {
   EXPECT_LE(planned, SurfaceReplanner::kFacesPerRange / 2);  // the faces around it, not their ranges
   EXPECT_GT(planned, 0);
   test::expect_same_tables(replanner.tables(), build_surface_plans(after, options, {}), "extruded");
+}
+
+// A mesh made by an operation, or restored by its undo, carries the faces its update found continued:
+// the replanner takes them from it instead of matching the faces again, and keeps what matching keeps,
+// bit for bit.
+TEST(IncrementalPlans, TheFacesAnOperationContinuedAreTakenAsMatchingFindsThem) {
+  const CovarianceMesh sphere = make_sample("sphere", 6000);
+  const int f = int(sphere.n_faces() / 2);
+  const std::span<const int> corners = sphere.face(size_t(f));
+  const std::vector<std::pair<const char*, Modelled>> operations = {
+      {"extrude", extrude_faces(sphere, {f}, 0.01)},
+      {"loop cut", loop_cut(sphere, corners[0], corners[1], 1)},
+      {"delete", delete_faces(sphere, {f})},
+      {"subdivide", subdivide_faces(sphere, {f})}};
+  for (const auto& [name, operation] : operations) {
+    SCOPED_TRACE(name);
+    const std::vector<int> back = inverse_origin(operation.vertex_origin, sphere.n_vertices());
+    const CovarianceMesh restored = apply_delta(operation.mesh, mesh_delta(operation.mesh, sphere, back));
+    for (const auto& [from, to, origin] : {std::tuple{&sphere, &operation.mesh, &operation.vertex_origin},
+                                           std::tuple{&operation.mesh, &restored, &back}}) {
+      const ShapeOrigin& made = to->shape()->origin;
+      EXPECT_EQ(made.from.lock(), from->shape());
+      EXPECT_EQ(made.faces.size(), to->n_faces());
+      SurfaceReplanner taken(*from, {}), matched(*from, {});
+      taken.set_topology(*to, *origin);
+      matched.set_topology(to->topology(), to->sharpness, *origin);  // a shape of its own: matched
+      EXPECT_EQ(taken.last_change().kept, matched.last_change().kept);
+      EXPECT_FALSE(taken.last_change().kept.empty());
+      test::expect_same_tables(taken.tables(), matched.tables(), name);
+      test::expect_same_tables(taken.tables(), build_surface_plans(*to, {}), name);
+    }
+  }
 }
 
 // A change of the Gaussians alone (a transform as an operation: the same faces, sharpness and
