@@ -8,12 +8,14 @@
 #   scripts/sanitize.sh [--all]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# The thin-Gaussian torus test renders its tori many ways; the GPU-against-CPU comparisons of every
-# sample's tessellated vertices and of the CPU evaluators' images evaluate tens of thousands of points
-# on the CPU; the cache's tests run once per weld mode, and welding when settled differs from welding
-# at capture only in when: minutes under ASan for paths the other tests take too (all run in the plain
-# suite, and here with --all).
-skipped=(-E 'RenderCli\.ThinGaussiansOfOneOrientation|GpuTest\.TessellatedVerticesMatchTheCpuEvaluator|RenderCli\.ExactEvaluatorDrawsThePatchesOwnTriangles|RenderCli\.TheCpusImagesOfAMeshFarFromTheOriginAreTheGpus|StoredVertices/.*/WeldedWhenSettled')
+# GL tests that measure pictures or evaluated points rather than take paths of their own, each minutes
+# or tens of seconds under ASan for paths the other tests take too (all run in the plain suite, and
+# here with --all): the thin-Gaussian torus rendered many ways; the GPU against the CPU evaluator
+# (tessellated vertices, creased and Loop patches, AOVs pixel for pixel, the CPU evaluators' images);
+# the render command's framing, silhouette, up-axis and adaptive-level pictures; every patch of a
+# large mesh; the cache's tests once per weld mode (welding when settled differs from welding at
+# capture only in when), and its re-evaluation of edits of every kind (a drag's stays).
+skipped=(-E 'RenderCli\.ThinGaussiansOfOneOrientation|GpuTest\.TessellatedVerticesMatchTheCpuEvaluator|RenderCli\.ExactEvaluatorDrawsThePatchesOwnTriangles|RenderCli\.TheCpusImagesOfAMeshFarFromTheOriginAreTheGpus|StoredVertices/.*/WeldedWhenSettled|GpuTest\.(Creased|Loop)PatchesMatchTheCpuEvaluator|GpuTest\.AovsMatchTheCpuEvaluatorPixelForPixel|GpuTest\.EveryPatchOfALargeMeshIsDrawnAtLevelOne|RenderCli\.(DefaultsToAdaptiveLevelsForTheOutputSize|TheSilhouetteFillsTheImage|AViewAlongTheUpAxisOfAMeshAwayFromTheOriginIsDrawn|UpAxisShowsAZUpMeshAsItsYUpTwin|FramingIsTheSameWhereverTheMeshLiesAndAtAnyScale)|StoredVertices/.*EditsEvaluatedAgainEqualACapture/WeldedAtCapture')
 if [ "${1:-}" = "--all" ]; then
   test_folders="core;numeric;app;render;ui;window"
   gl_tests=""
