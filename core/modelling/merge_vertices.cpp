@@ -31,64 +31,106 @@ struct MergeResult {
   int faces_removed = 0;
 };
 
+// The faces face `f` (its corners replaced by their targets) becomes: the face itself, or where a
+// vertex it now meets twice pinches it into loops (two opposite corners of a quad merged: two
+// slivers of two corners), each loop of 3 or more corners, as Blender splits it; none where no loop
+// is left. `last_seen`: per vertex, the last face whose walk met it. `whole`: the face was one loop.
+std::vector<std::vector<int>> merged_face(const std::vector<int>& corners, const std::vector<int>& target, int f,
+                                          std::vector<int>& last_seen, bool& whole) {
+  std::vector<int> face;
+  for (int v : corners) {
+    const int t = target[size_t(v)];
+    if (face.empty() || face.back() != t) face.push_back(t);
+  }
+  while (face.size() > 1 && face.front() == face.back()) face.pop_back();
+  // Walked as a stack: a vertex met again closes the loop since its last visit.
+  std::vector<std::vector<int>> loops;
+  std::vector<int> stack;
+  for (const int v : face) {
+    if (last_seen[size_t(v)] == f) {
+      const auto at = std::find(stack.begin(), stack.end(), v);
+      loops.emplace_back(at, stack.end());
+      for (auto closed = at + 1; closed != stack.end(); ++closed) last_seen[size_t(*closed)] = -1;  // may recur
+      stack.erase(at + 1, stack.end());
+      continue;
+    }
+    last_seen[size_t(v)] = f;
+    stack.push_back(v);
+  }
+  loops.push_back(std::move(stack));
+  whole = loops.size() == 1;
+  std::erase_if(loops, [](const std::vector<int>& loop) { return loop.size() < 3; });
+  return loops;
+}
+
 // Replaces every vertex v by target[v] (target[v] ≤ v; target[t] == t for a kept vertex), whose
 // Gaussian becomes gaussians[t] where given, then drops repeated corners, degenerate faces and the
-// merged-away vertices.
+// merged-away vertices. The faces stay in their lists where no face splits into several (the lists
+// then go back to arrays_of's next call, MeshArrays::~MeshArrays), and only faces with a merged
+// corner are walked again.
 MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
                        const std::unordered_map<int, Gaussian>& gaussians) {
   MergeResult r;
   MeshArrays& a = r.arrays;
-  a.means = std::move(in.means);
-  a.covariances = std::move(in.covariances);
-  a.origin = std::move(in.origin);
+  a = std::move(in);
   for (const auto& [v, g] : gaussians) {
     a.means[size_t(v)] = g.mean;
     a.covariances[size_t(v)] = g.covariance;
   }
-  std::vector<std::vector<int>> faces;
-  faces.reserve(in.faces.size());
+  const int n_in = a.n_faces();
+  // The faces with a merged corner, in order, and what each becomes.
+  struct Merged {
+    int face;
+    bool whole;
+    std::vector<std::vector<int>> loops;
+  };
+  std::vector<Merged> merged;
   std::vector<int> last_seen(a.means.size(), -1);
-  for (int f = 0; f < in.n_faces(); ++f) {
-    std::vector<int>& corners = in.faces[size_t(f)];
-    const int origin = size_t(f) < in.face_origin.size() ? in.face_origin[size_t(f)] : -1;
-    if (std::all_of(corners.begin(), corners.end(), [&](int v) { return target[size_t(v)] == v; })) {
-      a.face_origin.push_back(origin);  // no corner merged: the face as it was
-      faces.push_back(std::move(corners));
+  bool splits = false;
+  for (int f = 0; f < n_in; ++f) {
+    const std::vector<int>& corners = a.faces[size_t(f)];
+    if (std::all_of(corners.begin(), corners.end(), [&](int v) { return target[size_t(v)] == v; })) continue;
+    Merged m{f, false, {}};
+    m.loops = merged_face(corners, target, f, last_seen, m.whole);
+    splits = splits || m.loops.size() > 1;
+    merged.push_back(std::move(m));
+  }
+  // Each face in order: as it was, or what it became. In place where no face becomes several (each
+  // lands at or before its own place), else into new lists.
+  std::vector<int>& face_origin = a.face_origin;
+  face_origin.resize(size_t(n_in), -1);  // faces past the given origins are new
+  std::vector<std::vector<int>> split_faces;
+  std::vector<int> split_origin;
+  std::vector<std::vector<int>>& faces = splits ? split_faces : a.faces;
+  std::vector<int>& put_origin = splits ? split_origin : face_origin;
+  int out = 0;
+  const auto put = [&](std::vector<int>&& face, int origin) {
+    if (splits) {
+      faces.push_back(std::move(face));
+      put_origin.push_back(origin);
+    } else {
+      if (&face != &faces[size_t(out)]) std::swap(faces[size_t(out)], face);
+      put_origin[size_t(out)] = origin;
+    }
+    ++out;
+  };
+  size_t next_merged = 0;
+  for (int f = 0; f < n_in; ++f) {
+    const int origin = face_origin[size_t(f)];
+    if (next_merged == merged.size() || merged[next_merged].face != f) {
+      put(std::move(a.faces[size_t(f)]), origin);  // no corner merged: the face as it was
       continue;
     }
-    std::vector<int> face;
-    for (int v : corners) {
-      const int t = target[size_t(v)];
-      if (face.empty() || face.back() != t) face.push_back(t);
-    }
-    while (face.size() > 1 && face.front() == face.back()) face.pop_back();
-    // A vertex the face now meets twice pinches it into loops (two opposite corners of a quad merged:
-    // two slivers of two corners): each loop of 3 or more corners is a face, as Blender splits it, the
-    // others are removed. Walked as a stack: a vertex met again closes the loop since its last visit.
-    std::vector<std::vector<int>> loops;
-    std::vector<int> stack;
-    for (const int v : face) {
-      if (last_seen[size_t(v)] == f) {
-        const auto at = std::find(stack.begin(), stack.end(), v);
-        loops.emplace_back(at, stack.end());
-        for (auto closed = at + 1; closed != stack.end(); ++closed) last_seen[size_t(*closed)] = -1;  // may recur
-        stack.erase(at + 1, stack.end());
-        continue;
-      }
-      last_seen[size_t(v)] = f;
-      stack.push_back(v);
-    }
-    loops.push_back(std::move(stack));
-    const bool whole = loops.size() == 1;
-    bool kept = false;
-    for (std::vector<int>& loop : loops) {
-      if (loop.size() < 3) continue;
-      a.face_origin.push_back(whole ? origin : -1);
-      faces.push_back(std::move(loop));
-      kept = true;
-    }
-    r.faces_removed += kept ? 0 : 1;
+    Merged& m = merged[next_merged++];
+    for (std::vector<int>& loop : m.loops) put(std::move(loop), m.whole ? origin : -1);
+    r.faces_removed += m.loops.empty() ? 1 : 0;
   }
+  if (splits) {
+    a.faces = std::move(split_faces);
+    face_origin = std::move(split_origin);
+  }
+  a.faces.resize(size_t(out));
+  face_origin.resize(size_t(out));
   // A face that now coincides with an earlier one, corner for corner (a duplicate welded onto its
   // original), is the same face: removed. Only faces at a vertex something merged into can.
   std::vector<char> merged_into(a.means.size(), 0);
@@ -96,8 +138,8 @@ MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
     if (target[v] != int(v)) merged_into[size_t(target[v])] = 1;
   std::set<std::vector<int>> seen;
   size_t next_face = 0;
-  for (size_t f = 0; f < faces.size(); ++f) {
-    std::vector<int>& face = faces[f];
+  for (size_t f = 0; f < a.faces.size(); ++f) {
+    std::vector<int>& face = a.faces[f];
     if (std::any_of(face.begin(), face.end(), [&](int v) { return merged_into[size_t(v)] != 0; })) {
       std::vector<int> key = face;
       std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
@@ -106,13 +148,12 @@ MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
         continue;
       }
     }
-    a.face_origin[next_face] = a.face_origin[f];
-    if (next_face != f) faces[next_face] = std::move(face);  // a vector moved onto itself would empty
+    face_origin[next_face] = face_origin[f];
+    if (next_face != f) std::swap(a.faces[next_face], face);
     ++next_face;
   }
-  faces.resize(next_face);
-  a.face_origin.resize(next_face);
-  a.faces = std::move(faces);
+  a.faces.resize(next_face);
+  face_origin.resize(next_face);
   r.new_index.assign(a.means.size(), -1);
   const bool origins = a.origin.size() == a.means.size();
   int next = 0;
@@ -130,7 +171,7 @@ MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
     for (int& v : face) v = r.new_index[size_t(v)];
   std::vector<int> merged_index(target.size());
   for (size_t v = 0; v < merged_index.size(); ++v) merged_index[v] = r.new_index[size_t(target[v])];
-  a.sharpness = renumbered(in.sharpness, merged_index, next);
+  a.sharpness = renumbered(a.sharpness, merged_index, next);
   return r;
 }
 

@@ -14,6 +14,7 @@
 #include "core/modelling/fill.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/mesh_arrays.h"
+#include "core/modelling/merge_vertices.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/modelling/samples.h"
 #include "core/plans/kept_patch_records.h"
@@ -206,7 +207,8 @@ TEST(IncrementalPlans, TheFacesAnOperationContinuedAreTakenAsMatchingFindsThem) 
       {"extrude", extrude_faces(sphere, {f}, 0.01)},
       {"loop cut", loop_cut(sphere, corners[0], corners[1], 1)},
       {"delete", delete_faces(sphere, {f})},
-      {"subdivide", subdivide_faces(sphere, {f})}};
+      {"subdivide", subdivide_faces(sphere, {f})},
+      {"merge", merge_vertices(sphere, {corners[0], corners[1]}, MergePoint::center)}};
   for (const auto& [name, operation] : operations) {
     SCOPED_TRACE(name);
     const std::vector<int> back = inverse_origin(operation.vertex_origin, sphere.n_vertices());
