@@ -39,12 +39,19 @@ std::string without_faces(MeshArrays& a, const std::vector<char>& removed, const
 
   // Around a vertex that lost a face the remaining faces form open fans: one per corner there that
   // has no face across its outgoing edge. More than one fan makes the vertex non-manifold.
-  // Only the faces at such a vertex are looked up: the face across an edge out of it has it too.
+  // Only the faces at such a vertex are looked up: the face across an edge out of it has it too. The
+  // same pass flags the vertices the remaining faces use, for drop_unused_vertices.
   DirectedEdges edges;
   std::vector<int> near;  // the faces at such a vertex
+  std::vector<char> used(size_t(a.n_vertices()), 0);
   for (int f = 0; f < a.n_faces(); ++f) {
     const auto& face = a.faces[size_t(f)];
-    if (std::none_of(face.begin(), face.end(), [&](int v) { return touched[size_t(v)] != 0; })) continue;
+    bool at_touched = false;
+    for (const int v : face) {
+      used[size_t(v)] = 1;
+      at_touched = at_touched || touched[size_t(v)] != 0;
+    }
+    if (!at_touched) continue;
     near.push_back(f);
     for (size_t k = 0; k < face.size(); ++k)
       edges.emplace(directed_key(face[k], face[(k + 1) % face.size()]), std::pair<int, int>(f, int(k)));
@@ -63,7 +70,7 @@ std::string without_faces(MeshArrays& a, const std::vector<char>& removed, const
                   std::to_string(fans[size_t(v)]) + " fans of faces would meet only there)");
 
   const int n_vertices = a.n_vertices();
-  drop_unused_vertices(a);
+  drop_unused_vertices(a, used);
   return summary(head, faces_removed, size_t(n_vertices - a.n_vertices()), count_faces);
 }
 

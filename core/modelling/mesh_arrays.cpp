@@ -242,13 +242,18 @@ void remove_faces(MeshArrays& a, const std::vector<char>& removed) {
 }
 
 std::vector<int> drop_unused_vertices(MeshArrays& a) {
-  std::vector<int> map(a.means.size(), -1);
+  std::vector<char> used(a.means.size(), 0);
   for (const auto& face : a.faces)
-    for (int v : face) map[size_t(v)] = 0;
+    for (int v : face) used[size_t(v)] = 1;
+  return drop_unused_vertices(a, used);
+}
+
+std::vector<int> drop_unused_vertices(MeshArrays& a, const std::vector<char>& used) {
+  std::vector<int> map(a.means.size(), -1);
   const bool origins = a.origin.size() == a.means.size();
   int next = 0;
   for (size_t v = 0; v < map.size(); ++v)
-    if (map[v] == 0) {
+    if (used[v]) {
       if (size_t(next) != v) {  // the vertices before the first dropped one stay where they are
         a.means[size_t(next)] = a.means[v];
         a.covariances[size_t(next)] = a.covariances[v];

@@ -110,6 +110,9 @@ void remove_faces(MeshArrays& arrays, const std::vector<char>& removed);
 /// Removes the vertices no face uses, keeping the others in order (their creases and corners too);
 /// returns old index → new (−1 removed).
 std::vector<int> drop_unused_vertices(MeshArrays& arrays);
+/// The same where `used` flags (non-zero) every vertex a face uses, found by the caller's own pass
+/// over the faces.
+std::vector<int> drop_unused_vertices(MeshArrays& arrays, const std::vector<char>& used);
 
 /// Sharpness renumbered by old index → new (−1 removed) onto `n_vertices` vertices: creases with a
 /// removed end, or whose ends become one vertex, are dropped; where several become one crease or
