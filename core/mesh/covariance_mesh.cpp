@@ -120,9 +120,12 @@ CovarianceMesh make_covariance_mesh(const CovarianceMesh& before, std::vector<Ve
                                     std::vector<Mat3>&& covariances, PolygonTopology&& faces,
                                     const MeshOrigins& origins, const std::string& source) {
   faces.n_vertices = int(means.size());
-  ShapeOrigin origin{before.shape(), origins.vertices, {}};
+  std::vector<int> continued;
   std::optional<MeshConnectivity> c =
-      updated_connectivity(before.topology(), before.connectivity(), faces, origins, &origin.faces);
+      updated_connectivity(before.topology(), before.connectivity(), faces, origins, &continued);
+  // The origin only where the update vouched for the result (else the mesh is built whole).
+  ShapeOrigin origin;
+  if (c) origin = {before.shape(), origins.vertices, std::move(continued)};
   return CovarianceMeshAssembly::assemble(std::move(means), std::move(covariances), std::move(faces), c ? &*c : nullptr,
                                           source, {}, false, c.has_value(), c ? &origin : nullptr);
 }
