@@ -80,7 +80,8 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
   copy_back_evaluated();  // by the blocks as they were
   blocks_ = std::move(followed);
   // The kept blocks' triangles, packed in order in the spare buffer, which becomes the stored one;
-  // where they all stay where they were (patches added past them), as they are.
+  // where they all stay where they were (patches added past them), as they are. Their vertices'
+  // patches are renumbered as they are copied, or where they lie (render/cache/stored_patch_renumbering.h).
   bool in_place = true, renumbered = false;
   for (const SurfaceBlocks::Moved& m : moved) {
     in_place = in_place && (m.old_first_triangle == m.first_triangle || m.triangles == 0);
@@ -88,20 +89,25 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
   }
   for (size_t p = 0; p < new_number.size() && !renumbered; ++p)  // their vertices may name moved neighbours
     renumbered = new_number[p] >= 0 && new_number[p] != int(p);
+  if ((!in_place || renumbered) && !renumbering_)
+    renumbering_ = std::make_unique<StoredPatchRenumbering>(software_renderer());
   if (!in_place) {
     const long long total = blocks_.total();
     reserve(spare_, spare_capacity_, total + total / 8 + 64);
-    for (const SurfaceBlocks::Moved& m : joined_runs(moved))
-      if (m.triangles > 0)
-        glCopyNamedBufferSubData(buffer_, spare_, GLintptr(m.old_first_triangle * 3 * kCapturedVertexBytes),
-                                 GLintptr(m.first_triangle * 3 * kCapturedVertexBytes),
-                                 GLsizeiptr(m.triangles * 3 * kCapturedVertexBytes));
+    const std::vector<SurfaceBlocks::Moved> runs = joined_runs(moved);
+    if (renumbered) {
+      renumbering_->copy(buffer_, spare_, runs, new_number);
+    } else {
+      for (const SurfaceBlocks::Moved& m : runs)
+        if (m.triangles > 0)
+          glCopyNamedBufferSubData(buffer_, spare_, GLintptr(m.old_first_triangle * 3 * kCapturedVertexBytes),
+                                   GLintptr(m.first_triangle * 3 * kCapturedVertexBytes),
+                                   GLsizeiptr(m.triangles * 3 * kCapturedVertexBytes));
+    }
     std::swap(buffer_, spare_);
     std::swap(capacity_, spare_capacity_);
     glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kCapturedVertexBytes);
-  }
-  if (renumbered && blocks_.total() > 0) {
-    if (!renumbering_) renumbering_ = std::make_unique<StoredPatchRenumbering>();
+  } else if (renumbered && blocks_.total() > 0) {
     renumbering_->run(buffer_, 3 * blocks_.total(), new_number);
   }
   unweld_all();  // welded anew by the refresh
