@@ -3,11 +3,13 @@
 #include <algorithm>
 
 #include "core/mesh/mesh_connectivity.h"
+#include "core/plans/patch_faces.h"
 #include "core/plans/patch_readers.h"
 
 namespace gps {
 
 std::vector<int> stale_corner_patches(const SurfaceTables& before, const SurfaceTables& after,
+                                      const CovarianceMesh& mesh,
                                       const std::function<const StencilDependents&()>& dependents,
                                       const std::vector<int>& changed_or_new, const PlanChange& change,
                                       const std::vector<int>& origin) {
@@ -21,19 +23,23 @@ std::vector<int> stale_corner_patches(const SurfaceTables& before, const Surface
   }
   if (update_everything(changed.size(), size_t(n_base))) {
     std::fill(evaluate.begin(), evaluate.end(), 1);
-  } else if (!changed.empty()) {  // a scan of the kept plans: cheaper than PatchReaders built for one change
+  } else if (!changed.empty()) {  // a scan of the kept plans near them: cheaper than PatchReaders built for one change
     std::vector<char> point_changed(size_t(after.stencils.n_points()), 0);
     for (const int v : changed) point_changed[size_t(v)] = 1;
     for (const int r : rows_reading(dependents(), changed)) point_changed[size_t(after.stencils.first_row() + r)] = 1;
-#pragma omp parallel if (n_patches >= kParallelFaces)
+    const std::vector<int> near = patches_of_faces(mesh.topology(), after.plans,
+                                                   faces_reading(mesh.topology(), mesh.connectivity(), {}, changed));
+    const int n_near = int(near.size());
+#pragma omp parallel if (n_near >= kParallelFaces)
     {
       std::vector<int> points;
 #pragma omp for schedule(static)
-      for (int p = 0; p < n_patches; ++p) {
-        if (evaluate[size_t(p)]) continue;
+      for (int i = 0; i < n_near; ++i) {
+        const size_t p = size_t(near[size_t(i)]);
+        if (evaluate[p]) continue;
         points.clear();
-        append_patch_points(after.plans, p, points);
-        for (const int q : points) evaluate[size_t(p)] |= point_changed[size_t(q)];
+        append_patch_points(after.plans, int(p), points);
+        for (const int q : points) evaluate[p] |= point_changed[size_t(q)];
       }
     }
   }

@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "core/mesh/covariance_mesh.h"
 #include "core/plans/kept_patch_records.h"
 #include "core/plans/patch_plans.h"
 #include "core/plans/stencil_table.h"
@@ -14,13 +15,16 @@
 
 namespace gps {
 
-/// The patches of `after` (sorted) whose corner-pass output must be evaluated again: those of
-/// patches_not_kept_alike (core/plans/kept_patch_records.h) for the change's kept runs and relinked
-/// patches, and the kept ones that read a vertex whose Gaussian changed (`changed`,
-/// as changed_gaussians gives it for the vertices' `origin`, as SurfaceRenderer::set_mesh takes it)
-/// or a stencil row that reads one (`dependents`: of after's stencils, asked for only where a vertex
-/// that was there before changed). A new vertex no kept plan reads.
+/// The patches of `after` (sorted), the plans of `mesh`, whose corner-pass output must be evaluated
+/// again: those of patches_not_kept_alike (core/plans/kept_patch_records.h) for the change's kept runs
+/// and relinked patches, and the kept ones that read a vertex whose Gaussian changed (`changed`, as
+/// changed_gaussians gives it for the vertices' `origin`, as SurfaceRenderer::set_mesh takes it) or a
+/// stencil row that reads one (`dependents`: of after's stencils, asked for only where a vertex that
+/// was there before changed). A new vertex no kept plan reads. A plan reads only its face's piece (the
+/// faces sharing a vertex with it; core/plans/surface_replanner.h, faces_reading): only the patches of
+/// the faces whose pieces hold a changed vertex are looked at, unless most vertices changed.
 std::vector<int> stale_corner_patches(const SurfaceTables& before, const SurfaceTables& after,
+                                      const CovarianceMesh& mesh,
                                       const std::function<const StencilDependents&()>& dependents,
                                       const std::vector<int>& changed, const PlanChange& change,
                                       const std::vector<int>& origin);

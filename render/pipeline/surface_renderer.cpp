@@ -83,7 +83,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   cache_.set_cage(mesh, framed_, keep);
   cage_.set_mesh(mesh, cache_.cage_positions());
   if (keep)
-    run_compute_kept(*before, changed, change, origin, few_changed);
+    run_compute_kept(mesh, *before, changed, change, origin, few_changed);
   else
     run_compute(nullptr);
 }

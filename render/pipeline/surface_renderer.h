@@ -157,13 +157,13 @@ private:
   /// The compute passes for `changed` base vertices, or all (nullptr; an `edit` of most of them
   /// where set, which the surface cache follows as such).
   void run_compute(const std::vector<int>* changed, bool edit = false);
-  /// The compute passes after a change of topology that kept `change.kept` patches of `before` (the previous
-  /// tables), where the `changed` vertices' Gaussians are new or changed (changed_gaussians; `origin`:
-  /// as set_mesh takes it): every point (the changed vertices' and every stencil row where the other
-  /// base points were carried over, `points_carried`), and the corners of the patches whose output is
-  /// not kept.
-  void run_compute_kept(const SurfaceTables& before, const std::vector<int>& changed, const PlanChange& change,
-                        const std::vector<int>& origin, bool points_carried);
+  /// The compute passes after a change of topology to `mesh` that kept `change.kept` patches of `before`
+  /// (the previous tables), where the `changed` vertices' Gaussians are new or changed (changed_gaussians;
+  /// `origin`: as set_mesh takes it): every point (the changed vertices' and every stencil row where the
+  /// other base points were carried over, `points_carried`), and the corners of the patches whose output
+  /// is not kept.
+  void run_compute_kept(const CovarianceMesh& mesh, const SurfaceTables& before, const std::vector<int>& changed,
+                        const PlanChange& change, const std::vector<int>& origin, bool points_carried);
   /// The programs and buffers of every pass for points of `precision` (the buffers still to upload);
   /// where the driver refuses a program, throws gps::Error with every pass as it was.
   void use_point_precision(PointPrecision precision);

@@ -44,13 +44,14 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
     cache_.points_changed(points_generation_, nullptr);
 }
 
-void SurfaceRenderer::run_compute_kept(const SurfaceTables& before, const std::vector<int>& changed,
-                                       const PlanChange& change, const std::vector<int>& origin, bool points_carried) {
+void SurfaceRenderer::run_compute_kept(const CovarianceMesh& mesh, const SurfaceTables& before,
+                                       const std::vector<int>& changed, const PlanChange& change,
+                                       const std::vector<int>& origin, bool points_carried) {
   const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   const PatchPlans& plans = tables().plans;
   const std::vector<int> patches = stale_corner_patches(
-      before, tables(), [this]() -> const StencilDependents& { return dependents(); }, changed, change, origin);
+      before, tables(), mesh, [this]() -> const StencilDependents& { return dependents(); }, changed, change, origin);
   const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
   const std::vector<int> items = CornerLimitPass::slot_items(plans, corners);
   buffers_.upload_corner_list(items);
