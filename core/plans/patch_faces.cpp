@@ -9,9 +9,6 @@
 
 namespace gps {
 
-namespace {
-
-// The first patch of each face, and the total at the end.
 std::vector<int> first_patches(const PolygonTopology& topology, const PatchPlans& plans) {
   std::vector<int> first;
   if (plans.shape == PatchShape::triangle) {  // one patch per triangle
@@ -24,8 +21,6 @@ std::vector<int> first_patches(const PolygonTopology& topology, const PatchPlans
     throw Error("the surface's patches do not follow its mesh's faces");
   return first;
 }
-
-}  // namespace
 
 std::vector<int> patch_faces(const PolygonTopology& topology, const PatchPlans& plans) {
   const std::vector<int> first = first_patches(topology, plans);

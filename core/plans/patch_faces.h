@@ -8,6 +8,10 @@
 
 namespace gps {
 
+/// The first patch of each face of `topology` in `plans`, planned for a mesh of these faces, and the
+/// patch count at the end. Throws gps::Error where the plans' patches do not follow the mesh's faces.
+std::vector<int> first_patches(const PolygonTopology& topology, const PatchPlans& plans);
+
 /// The base face of each patch of `plans`, planned for a mesh of these faces. Throws gps::Error where the plans'
 /// patches do not follow the mesh's faces (plans of another mesh).
 std::vector<int> patch_faces(const PolygonTopology& topology, const PatchPlans& plans);

@@ -1,31 +1,70 @@
 #include "render/pipeline/kept_surface_triangles.h"
 
+#include <algorithm>
+
 #include "core/mesh/mesh_connectivity.h"
+#include "core/plans/patch_faces.h"
 
 namespace gps {
 
-KeptTriangles kept_triangles(const PatchPlans& after, int n_before, const std::vector<KeptPatches>& kept,
-                             const std::vector<int>& stale_corners) {
-  const int n_patches = after.n_patches(), corners = after.corners();
+namespace {
+
+// Whether patch p of `after` is evaluated again or evaluates a boundary point from one that is.
+bool triangles_change(const PatchPlans& after, const std::vector<char>& evaluated, int p) {
+  if (evaluated[size_t(p)]) return true;
+  for (int k = 0; k < after.corners(); ++k) {
+    const size_t slot = size_t(after.corners() * p + k);
+    for (const int32_t q :
+         {after.patch_neighbours[4 * slot], after.patch_neighbours[4 * slot + 2], after.corner_owners[2 * slot]})
+      if (q >= 0 && evaluated[size_t(q)] != 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+KeptTriangles kept_triangles(const CovarianceMesh& mesh, const PatchPlans& after, int n_before,
+                             const std::vector<KeptPatches>& kept, const std::vector<int>& stale_corners) {
+  const int n_patches = after.n_patches();
   KeptTriangles out{std::vector<int>(size_t(n_before), -1), std::vector<char>(size_t(n_patches), 0)};
   std::vector<char> evaluated(size_t(n_patches), 1);  // not kept, or its corner output evaluated again
-  for (const KeptPatches& run : kept)
+  int n_kept = 0;
+  for (const KeptPatches& run : kept) {
     for (int i = 0; i < run.count; ++i) {
       out.new_number[size_t(run.old_first + i)] = run.first + i;
       evaluated[size_t(run.first + i)] = 0;
     }
-  for (const int p : stale_corners) evaluated[size_t(p)] = 1;
-#pragma omp parallel for schedule(static) if (n_patches >= kParallelFaces)
-  for (int p = 0; p < n_patches; ++p) {
-    bool changed = evaluated[size_t(p)] != 0;
-    for (int k = 0; k < corners && !changed; ++k) {
-      const size_t slot = size_t(corners * p + k);
-      for (const int32_t q :
-           {after.patch_neighbours[4 * slot], after.patch_neighbours[4 * slot + 2], after.corner_owners[2 * slot]})
-        changed = changed || (q >= 0 && evaluated[size_t(q)] != 0);
-    }
-    out.changed[size_t(p)] = changed;
+    n_kept += run.count;
   }
+  for (const int p : stale_corners) evaluated[size_t(p)] = 1;
+  if (4 * (size_t(n_patches - n_kept) + stale_corners.size()) > size_t(n_patches)) {
+#pragma omp parallel for schedule(static) if (n_patches >= kParallelFaces)
+    for (int p = 0; p < n_patches; ++p) out.changed[size_t(p)] = triangles_change(after, evaluated, p);
+    return out;
+  }
+  // A patch's edge neighbours and corner owners lie on faces that share a vertex with its own: only
+  // the patches of the faces around those of the patches evaluated again can change.
+  const PolygonTopology& t = mesh.topology();
+  const MeshConnectivity& c = mesh.connectivity();
+  const std::vector<int> first = first_patches(t, after);
+  std::vector<int> faces;  // of the patches evaluated again, ascending
+  for (int p = 0; p < n_patches; ++p)
+    if (evaluated[size_t(p)]) {
+      const int f = int(std::upper_bound(first.begin(), first.end(), p) - first.begin()) - 1;
+      if (faces.empty() || faces.back() != f) faces.push_back(f);
+    }
+  std::vector<int> around;
+  for (const int f : faces)
+    for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
+      const int w = t.verts[size_t(k)];
+      around.insert(around.end(), c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w)],
+                    c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w) + 1]);
+    }
+  std::sort(around.begin(), around.end());
+  around.erase(std::unique(around.begin(), around.end()), around.end());
+  for (const int g : around)
+    for (int p = first[size_t(g)]; p < first[size_t(g) + 1]; ++p)
+      out.changed[size_t(p)] = triangles_change(after, evaluated, p);
   return out;
 }
 

@@ -5,6 +5,7 @@
 // evaluates boundary points from (its edge neighbours and corner owners, core/plans/patch_adjacency.h).
 #include <vector>
 
+#include "core/mesh/covariance_mesh.h"
 #include "core/plans/patch_plans.h"
 #include "core/plans/surface_replanner.h"
 
@@ -15,11 +16,12 @@ struct KeptTriangles {
   std::vector<char> changed;    // per patch after it: whether its triangles change
 };
 
-/// For a change from tables of `n_before` patches to `after` (`kept`: its runs, which must fit,
-/// kept_runs_fit), with the patches whose corner-pass output is evaluated again `stale_corners`
-/// (stale_corner_patches): the patches whose triangles change are those not kept, those of
-/// `stale_corners`, and those that evaluate a boundary point from one of these.
-KeptTriangles kept_triangles(const PatchPlans& after, int n_before, const std::vector<KeptPatches>& kept,
-                             const std::vector<int>& stale_corners);
+/// For a change from tables of `n_before` patches to `after`, the plans of `mesh` (`kept`: its runs,
+/// which must fit, kept_runs_fit), with the patches whose corner-pass output is evaluated again
+/// `stale_corners` (stale_corner_patches): the patches whose triangles change are those not kept,
+/// those of `stale_corners`, and those that evaluate a boundary point from one of these, which lie on
+/// the faces around theirs (only those are looked at, unless many changed).
+KeptTriangles kept_triangles(const CovarianceMesh& mesh, const PatchPlans& after, int n_before,
+                             const std::vector<KeptPatches>& kept, const std::vector<int>& stale_corners);
 
 }  // namespace gps

@@ -70,7 +70,7 @@ void SurfaceRenderer::run_compute_kept(const CovarianceMesh& mesh, const Surface
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
   if (!cache_.has_stored_triangles()) return cache_.points_changed(points_generation_, nullptr);
-  const KeptTriangles triangles = kept_triangles(plans, before.plans.n_patches(), change.kept, patches);
+  const KeptTriangles triangles = kept_triangles(mesh, plans, before.plans.n_patches(), change.kept, patches);
   stored_levels_.follow(
       n_patches(), cache_.topology_changed(points_generation_, n_patches(), triangles.new_number, triangles.changed));
 }
