@@ -100,16 +100,20 @@ std::vector<int> faces_reading(const PolygonTopology& t, const MeshConnectivity&
       holders.push_back(c.vertex_faces[size_t(i)]);
   std::sort(holders.begin(), holders.end());
   holders.erase(std::unique(holders.begin(), holders.end()), holders.end());
-  std::vector<int> faces;
-  for (const int g : holders)
+  return faces_around(t, c, holders);
+}
+
+std::vector<int> faces_around(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<int>& faces) {
+  std::vector<int> around;
+  for (const int g : faces)
     for (int k = t.offsets[size_t(g)]; k < t.offsets[size_t(g) + 1]; ++k) {
       const int w = t.verts[size_t(k)];
-      faces.insert(faces.end(), c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w)],
-                   c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w) + 1]);
+      around.insert(around.end(), c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w)],
+                    c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w) + 1]);
     }
-  std::sort(faces.begin(), faces.end());
-  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-  return faces;
+  std::sort(around.begin(), around.end());
+  around.erase(std::unique(around.begin(), around.end()), around.end());
+  return around;
 }
 
 SurfaceReplanner::SurfaceReplanner(const PolygonTopology& topology, const PlanOptions& options,

@@ -24,6 +24,9 @@ namespace gps {
 std::vector<int> faces_reading(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<int>& edges,
                                const std::vector<int>& vertices);
 
+/// The faces that share a vertex with one of `faces` (those among them), sorted, without repeats.
+std::vector<int> faces_around(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<int>& faces);
+
 /// Patches [first, first + count) of a replanner's tables are patches [old_first, old_first + count) of
 /// its tables before the last change, their plans kept and renumbered, or built again for faces whose
 /// pieces did not change (a plan is a function of its face's piece: the same plan, renumbered).

@@ -44,25 +44,14 @@ KeptTriangles kept_triangles(const CovarianceMesh& mesh, const PatchPlans& after
   }
   // A patch's edge neighbours and corner owners lie on faces that share a vertex with its own: only
   // the patches of the faces around those of the patches evaluated again can change.
-  const PolygonTopology& t = mesh.topology();
-  const MeshConnectivity& c = mesh.connectivity();
-  const std::vector<int> first = first_patches(t, after);
+  const std::vector<int> first = first_patches(mesh.topology(), after);
   std::vector<int> faces;  // of the patches evaluated again, ascending
   for (int p = 0; p < n_patches; ++p)
     if (evaluated[size_t(p)]) {
       const int f = int(std::upper_bound(first.begin(), first.end(), p) - first.begin()) - 1;
       if (faces.empty() || faces.back() != f) faces.push_back(f);
     }
-  std::vector<int> around;
-  for (const int f : faces)
-    for (int k = t.offsets[size_t(f)]; k < t.offsets[size_t(f) + 1]; ++k) {
-      const int w = t.verts[size_t(k)];
-      around.insert(around.end(), c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w)],
-                    c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w) + 1]);
-    }
-  std::sort(around.begin(), around.end());
-  around.erase(std::unique(around.begin(), around.end()), around.end());
-  for (const int g : around)
+  for (const int g : faces_around(mesh.topology(), mesh.connectivity(), faces))
     for (int p = first[size_t(g)]; p < first[size_t(g) + 1]; ++p)
       out.changed[size_t(p)] = triangles_change(after, evaluated, p);
   return out;
