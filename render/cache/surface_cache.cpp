@@ -89,8 +89,7 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
   }
   for (size_t p = 0; p < new_number.size() && !renumbered; ++p)  // their vertices may name moved neighbours
     renumbered = new_number[p] >= 0 && new_number[p] != int(p);
-  if ((!in_place || renumbered) && !renumbering_)
-    renumbering_ = std::make_unique<StoredPatchRenumbering>(software_renderer());
+  if (renumbered && !renumbering_) renumbering_ = std::make_unique<StoredPatchRenumbering>(software_renderer());
   if (!in_place) {
     const long long total = blocks_.total();
     reserve(spare_, spare_capacity_, total + total / 8 + 64);
