@@ -41,6 +41,14 @@ constexpr size_t kVertexBytes = kVertexWords * sizeof(float);
 
 }  // namespace
 
+void copy_stored_triangles(unsigned from, unsigned to, const std::vector<SurfaceBlocks::Moved>& runs) {
+  for (const SurfaceBlocks::Moved& m : runs)
+    if (m.triangles > 0)
+      glCopyNamedBufferSubData(from, to, GLintptr(size_t(m.old_first_triangle) * 3 * kVertexBytes),
+                               GLintptr(size_t(m.first_triangle) * 3 * kVertexBytes),
+                               GLsizeiptr(size_t(m.triangles) * 3 * kVertexBytes));
+}
+
 StoredPatchRenumbering::StoredPatchRenumbering(bool on_the_cpu)
     : on_the_cpu_(on_the_cpu),
       program_("renumber_patches", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::renumber_patches_comp}}}) {}
@@ -73,11 +81,7 @@ void StoredPatchRenumbering::copy(unsigned from, unsigned to, const std::vector<
     }
   if (end == 0) return;
   if (!on_the_cpu_) {
-    for (const SurfaceBlocks::Moved& m : runs)
-      if (m.triangles > 0)
-        glCopyNamedBufferSubData(from, to, GLintptr(size_t(m.old_first_triangle) * 3 * kVertexBytes),
-                                 GLintptr(size_t(m.first_triangle) * 3 * kVertexBytes),
-                                 GLsizeiptr(size_t(m.triangles) * 3 * kVertexBytes));
+    copy_stored_triangles(from, to, runs);
     return run(to, 3 * end, new_number);
   }
   const auto* before = static_cast<const float*>(

@@ -14,6 +14,10 @@
 
 namespace gps {
 
+/// Copies the captured triangles of `runs` from buffer `from` (at their old first triangle) to buffer
+/// `to` (at their first triangle now) as they are.
+void copy_stored_triangles(unsigned from, unsigned to, const std::vector<SurfaceBlocks::Moved>& runs);
+
 class StoredPatchRenumbering {
 public:
   /// Needs a current GL context. `on_the_cpu`: renumber in mapped host memory (a software renderer's

@@ -94,15 +94,10 @@ std::vector<SurfaceBlocks::Moved> SurfaceCache::topology_changed(long long point
     const long long total = blocks_.total();
     reserve(spare_, spare_capacity_, total + total / 8 + 64);
     const std::vector<SurfaceBlocks::Moved> runs = joined_runs(moved);
-    if (renumbered) {
+    if (renumbered)
       renumbering_->copy(buffer_, spare_, runs, new_number);
-    } else {
-      for (const SurfaceBlocks::Moved& m : runs)
-        if (m.triangles > 0)
-          glCopyNamedBufferSubData(buffer_, spare_, GLintptr(m.old_first_triangle * 3 * kCapturedVertexBytes),
-                                   GLintptr(m.first_triangle * 3 * kCapturedVertexBytes),
-                                   GLsizeiptr(m.triangles * 3 * kCapturedVertexBytes));
-    }
+    else
+      copy_stored_triangles(buffer_, spare_, runs);
     std::swap(buffer_, spare_);
     std::swap(capacity_, spare_capacity_);
     glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, kCapturedVertexBytes);
