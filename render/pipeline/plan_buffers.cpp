@@ -60,15 +60,27 @@ PlanBuffers::PlanBuffers() {
 
 namespace {
 
-// The first index where `a` and `b` differ bit for bit (a weight of −0 is not +0's), or the shorter's size.
+// The runs [begin, end) of elements of `data` that differ from `held` bit for bit (a weight of −0 is not
+// +0's), compared a chunk at a time (a chunk that differs is one run, joined to the one before where they
+// touch), and the elements past held's end. An operation changes the tables in a few places: the rest of
+// them is neither sent again nor, on a GPU, carried over the bus.
 template <class T>
-size_t first_difference(const std::vector<T>& a, const std::vector<T>& b) {
-  const size_t n = std::min(a.size(), b.size());
-  constexpr size_t kChunk = 4096;  // compared a chunk at a time, the chunk that differs element by element
-  size_t i = 0;
-  while (i + kChunk <= n && std::memcmp(a.data() + i, b.data() + i, kChunk * sizeof(T)) == 0) i += kChunk;
-  while (i < n && std::memcmp(a.data() + i, b.data() + i, sizeof(T)) == 0) ++i;
-  return i;
+std::vector<std::pair<size_t, size_t>> differing_runs(const std::vector<T>& data, const std::vector<T>& held) {
+  constexpr size_t kChunk = 4096;
+  const size_t n = std::min(data.size(), held.size());
+  std::vector<std::pair<size_t, size_t>> runs;
+  const auto add = [&](size_t begin, size_t end) {
+    if (!runs.empty() && runs.back().second == begin)
+      runs.back().second = end;
+    else
+      runs.emplace_back(begin, end);
+  };
+  for (size_t i = 0; i < n; i += kChunk) {
+    const size_t end = std::min(n, i + kChunk);
+    if (std::memcmp(data.data() + i, held.data() + i, (end - i) * sizeof(T)) != 0) add(i, end);
+  }
+  if (data.size() > n) add(n, data.size());
+  return runs;
 }
 
 }  // namespace
@@ -77,16 +89,18 @@ template <class T, class Source>
 void PlanBuffers::upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held) {
   // Empty buffers still need storage to be bound.
   const bool stays = reserve(binding, std::max<size_t>(sizeof(T), data.size() * sizeof(T)));
-  const size_t first = stays && held ? first_difference(data, *held) : 0;
-  if (first >= data.size()) return;
-  const size_t count = data.size() - first;
-  if constexpr (std::is_same_v<T, Source>) {
-    glNamedBufferSubData(buffers_[binding], GLintptr(first * sizeof(T)), GLsizeiptr(count * sizeof(T)),
-                         data.data() + first);
-  } else {
-    const std::vector<T> converted(data.begin() + ptrdiff_t(first), data.end());
-    glNamedBufferSubData(buffers_[binding], GLintptr(first * sizeof(T)), GLsizeiptr(count * sizeof(T)),
-                         converted.data());
+  const std::vector<std::pair<size_t, size_t>> runs =
+      stays && held ? differing_runs(data, *held) : std::vector<std::pair<size_t, size_t>>{{0, data.size()}};
+  for (const auto& [begin, end] : runs) {
+    if (begin >= end) continue;
+    if constexpr (std::is_same_v<T, Source>) {
+      glNamedBufferSubData(buffers_[binding], GLintptr(begin * sizeof(T)), GLsizeiptr((end - begin) * sizeof(T)),
+                           data.data() + begin);
+    } else {
+      const std::vector<T> converted(data.begin() + ptrdiff_t(begin), data.begin() + ptrdiff_t(end));
+      glNamedBufferSubData(buffers_[binding], GLintptr(begin * sizeof(T)), GLsizeiptr((end - begin) * sizeof(T)),
+                           converted.data());
+    }
   }
 }
 

@@ -51,8 +51,8 @@ public:
   /// not among its changed ones, and of the kept rows, are copied from the previous points to where
   /// they went, in runs: the compute pass then maps the changed vertices alone, and the other rows.
   /// `held`: the tables the buffers hold now (the last uploaded), where known: a table whose storage
-  /// stays is written only from its first difference from them on (an operation's change leaves the
-  /// tables before its first changed range as they were).
+  /// stays is written only where it differs from them (an operation's change leaves most of the tables
+  /// as they were: renumbered past a change where rows or patches are added before theirs, else alike).
   void upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept = {},
                      const CarriedPoints* carried = nullptr, const SurfaceTables* held = nullptr);
   /// Every base vertex's μ and Σ.
@@ -106,7 +106,7 @@ private:
   template <class Real>
   void update_gaussians_as(const FramedGaussians& gaussians, const std::vector<int>& changed);
   /// `data` as type T; where `held` (what the buffer holds, as uploaded from it) is given and the
-  /// storage stays, only from the first element that differs from it (bit for bit).
+  /// storage stays, only the chunks of elements that differ from it (bit for bit) and those past its end.
   template <class T, class Source>
   void upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held = nullptr);
   template <class T>
