@@ -15,6 +15,19 @@ namespace gps {
 
 namespace {
 
+// Throws gps::Error naming the first face that is not a triangle or vertex of too many faces.
+void check_loop_mesh(const PolygonTopology& t, const MeshConnectivity& c) {
+  for (int f = 0; f < t.n_faces(); ++f)
+    if (t.face_size(f) != 3)
+      throw ElementError(ElementError::Element::face, f, "Loop patches need a triangle mesh, but ",
+                         " has " + std::to_string(t.face_size(f)) + " vertices");
+  for (int v = 0; v < t.n_vertices; ++v)
+    if (c.n_vertex_faces(v) > kMaxLoopValence)
+      throw ElementError(ElementError::Element::vertex, v, "",
+                         " has " + std::to_string(c.n_vertex_faces(v)) + " faces; Loop patches take at most " +
+                             std::to_string(kMaxLoopValence) + " (use --scheme catmull-clark)");
+}
+
 class LoopBuilder {
 public:
   LoopBuilder(const PolygonTopology& t, LoopBeta beta, const MeshConnectivity* c = nullptr)
@@ -28,18 +41,7 @@ public:
     plans_.max_depth = 1;
   }
 
-  // Throws gps::Error naming the first face that is not a triangle or vertex of too many faces.
-  void check() const {
-    for (int f = 0; f < t_.n_faces(); ++f)
-      if (t_.face_size(f) != 3)
-        throw ElementError(ElementError::Element::face, f, "Loop patches need a triangle mesh, but ",
-                           " has " + std::to_string(t_.face_size(f)) + " vertices");
-    for (int v = 0; v < t_.n_vertices; ++v)
-      if (c_.n_vertex_faces(v) > kMaxLoopValence)
-        throw ElementError(ElementError::Element::vertex, v, "",
-                           " has " + std::to_string(c_.n_vertex_faces(v)) + " faces; Loop patches take at most " +
-                               std::to_string(kMaxLoopValence) + " (use --scheme catmull-clark)");
-  }
+  void check() const { check_loop_mesh(t_, c_); }
 
   SurfaceTables build() {
     plans_.patch_roots.reserve(size_t(t_.n_faces()));
@@ -166,7 +168,10 @@ private:
 
 }  // namespace
 
-void check_loop_plans(const PolygonTopology& topology) { LoopBuilder(topology, LoopBeta::loop).check(); }
+void check_loop_plans(const PolygonTopology& topology, const MeshConnectivity* connectivity) {
+  if (connectivity) return check_loop_mesh(topology, *connectivity);
+  check_loop_mesh(topology, connectivity_of(topology));
+}
 
 SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness,
                                const MeshConnectivity* connectivity) {

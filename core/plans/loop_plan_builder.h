@@ -16,8 +16,9 @@ namespace gps {
 SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness = {},
                                const MeshConnectivity* connectivity = nullptr);
 
-/// build_loop_plans' checks of the topology; throws as it does.
-void check_loop_plans(const PolygonTopology& topology);
+/// build_loop_plans' checks of the topology; throws as it does. `connectivity`: the topology's where
+/// the caller holds it; null: built here.
+void check_loop_plans(const PolygonTopology& topology, const MeshConnectivity* connectivity = nullptr);
 
 /// The largest valence the exact tables take (their size grows with it).
 inline constexpr int kMaxLoopValence = 64;

@@ -204,7 +204,15 @@ private:
 
 namespace {
 // Meshes past kMaxPlanValence are refused up front with a message.
-void check_plan_valences(const PolygonTopology& t) {
+void check_plan_valences(const PolygonTopology& t, const MeshConnectivity* c) {
+  // Where the connectivity counts every vertex's faces, a mesh within the bounds is passed at once;
+  // one past them is counted below, which names what a count in face order meets first.
+  if (c && c->vertex_face_offsets.size() == size_t(t.n_vertices) + 1) {
+    bool within = true;
+    for (int f = 0; f < t.n_faces() && within; ++f) within = t.face_size(f) <= kMaxPlanValence;
+    for (int v = 0; v < t.n_vertices && within; ++v) within = c->n_vertex_faces(v) <= kMaxPlanValence;
+    if (within) return;
+  }
   std::vector<int> faces_at(size_t(t.n_vertices), 0);
   for (int f = 0; f < t.n_faces(); ++f) {
     if (t.face_size(f) > kMaxPlanValence)
@@ -221,11 +229,12 @@ void check_plan_valences(const PolygonTopology& t) {
 }
 }  // namespace
 
-void check_quad_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary) {
+void check_quad_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary,
+                      const MeshConnectivity* connectivity) {
   const int shallowest = extraordinary == ExtraordinaryNodes::exact ? 0 : 1;
   if (max_depth < shallowest || max_depth > kDeepestPlan)
     throw usage_error("plan depth must be " + std::to_string(shallowest) + "..8, got " + std::to_string(max_depth));
-  check_plan_valences(topology);
+  check_plan_valences(topology, connectivity);
 }
 
 RangePlans build_quad_range(const LocalMesh& base, int first, int last, int max_depth, ExtraordinaryNodes extraordinary,
@@ -235,7 +244,7 @@ RangePlans build_quad_range(const LocalMesh& base, int first, int last, int max_
 
 SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary,
                           bool bspline_leaves, const Sharpness& sharpness, const MeshConnectivity* connectivity) {
-  check_quad_plans(topology, max_depth, extraordinary);
+  check_quad_plans(topology, max_depth, extraordinary, connectivity);
   const LocalMesh base =
       connectivity ? base_local_mesh(topology, *connectivity, sharpness) : base_local_mesh(topology, sharpness);
   // Faces in ranges of a fixed size, built on all cores (OpenMP), merged in order.

@@ -56,8 +56,10 @@ inline constexpr int kFacesPerRange = 1024;
 /// face's centre after the split): past this bound they would take minutes and gigabytes.
 inline constexpr int kMaxPlanValence = 256;
 
-/// build_plans' checks of the depth and the valences; throws as it does.
-void check_quad_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary);
+/// build_plans' checks of the depth and the valences; throws as it does. `connectivity`: the topology's
+/// where the caller holds it (its vertices' rows count their faces); null: counted here.
+void check_quad_plans(const PolygonTopology& topology, int max_depth, ExtraordinaryNodes extraordinary,
+                      const MeshConnectivity* connectivity = nullptr);
 
 /// The plans of faces [first, last) of `base` (base_local_mesh of the topology and its sharpness), for
 /// merge_ranges; extraordinary tables come from `cache`, which ranges built at once may share.

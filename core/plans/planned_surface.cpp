@@ -30,11 +30,16 @@ PlanOptions plan_options_named(const std::string& scheme, const std::string& loo
   return o;
 }
 
-Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options) {
+Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options, const MeshConnectivity* connectivity) {
   if (options.scheme) return *options.scheme;
   for (int f = 0; f < topology.n_faces(); ++f)
     if (topology.face_size(f) != 3) return Scheme::catmull_clark;
   // Loop's exact tables grow with the valence: past kMaxLoopValence faces at a vertex, Catmull-Clark.
+  if (connectivity && connectivity->vertex_face_offsets.size() == size_t(topology.n_vertices) + 1) {
+    for (int v = 0; v < topology.n_vertices; ++v)
+      if (connectivity->n_vertex_faces(v) > kMaxLoopValence) return Scheme::catmull_clark;
+    return topology.n_faces() > 0 ? Scheme::loop : Scheme::catmull_clark;
+  }
   std::vector<int> faces_at(size_t(topology.n_vertices), 0);
   for (const int v : topology.verts)
     if (++faces_at[size_t(v)] > kMaxLoopValence) return Scheme::catmull_clark;
@@ -46,7 +51,7 @@ namespace {
 SurfaceTables plans_of(const PolygonTopology& topology, const MeshConnectivity& connectivity,
                        const PlanOptions& options, const Sharpness& sharpness) {
   const ExtraordinaryNodes extraordinary = options.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier;
-  SurfaceTables tables = scheme_for(topology, options) == Scheme::loop
+  SurfaceTables tables = scheme_for(topology, options, &connectivity) == Scheme::loop
                              ? build_loop_plans(topology, options.loop_beta, sharpness, &connectivity)
                              : build_plans(topology, options.depth, extraordinary, true, sharpness, &connectivity);
   add_patch_adjacency(tables.plans, topology, sharpness, &connectivity);
@@ -65,7 +70,7 @@ SurfaceTables build_surface_plans(const CovarianceMesh& mesh, const PlanOptions&
 }
 
 PlannedSurface::PlannedSurface(const CovarianceMesh& mesh, const PlanOptions& options) {
-  scheme_ = scheme_for(mesh.topology(), options);
+  scheme_ = scheme_for(mesh.topology(), options, &mesh.connectivity());
   tables_ = build_surface_plans(mesh, options);
   dependents_ = stencil_dependents(tables_.stencils);
   origin_ = evaluation_origin(mesh);

@@ -35,8 +35,10 @@ struct PlanOptions {
 PlanOptions plan_options_named(const std::string& scheme, const std::string& loop_beta, int depth = -1,
                                bool approximate = false);
 
-/// The scheme `options` give for this mesh.
-Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options);
+/// The scheme `options` give for this mesh. `connectivity`: the topology's where the caller holds it (its
+/// vertices' rows count their faces); null: counted here.
+Scheme scheme_for(const PolygonTopology& topology, const PlanOptions& options,
+                  const MeshConnectivity* connectivity = nullptr);
 
 /// Plans and stencils of the mesh under its scheme (core/plans/plan_builder.h, core/plans/loop_plan_builder.h),
 /// with its creases and corners.

@@ -126,19 +126,21 @@ SurfaceReplanner::SurfaceReplanner(const CovarianceMesh& mesh, const PlanOptions
 SurfaceReplanner::SurfaceReplanner(LocalMesh&& base, const PlanOptions& options, const Sharpness& sharpness,
                                    int faces_per_range)
     : options_(options),
-      scheme_(scheme_for(base.topology(), options)),
+      scheme_(scheme_for(base.topology(), options, &base.connectivity())),
       faces_per_range_(std::max(1, faces_per_range)),
       base_(std::move(base)),
       sharpness_(sharpness) {
-  check(base_.topology(), scheme_);
+  check(base_.topology(), base_.connectivity(), scheme_);
   build_all(sharpness);
 }
 
-void SurfaceReplanner::check(const PolygonTopology& topology, Scheme scheme) const {
+void SurfaceReplanner::check(const PolygonTopology& topology, const MeshConnectivity& connectivity,
+                             Scheme scheme) const {
   if (scheme == Scheme::loop)
-    check_loop_plans(topology);
+    check_loop_plans(topology, &connectivity);
   else
-    check_quad_plans(topology, options_.depth, options_.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier);
+    check_quad_plans(topology, options_.depth, options_.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier,
+                     &connectivity);
 }
 
 void SurfaceReplanner::build_all(const Sharpness& sharpness) {
@@ -166,7 +168,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     range_kept_.clear();
     patch_first_.clear();
     loop_tables_.reset();
-    SurfaceTables built = build_loop_plans(t, options_.loop_beta);
+    SurfaceTables built = build_loop_plans(t, options_.loop_beta, {}, &base_.connectivity());
     add_patch_adjacency(built.plans, t, sharpness, &base_.connectivity());
     tables_ = std::make_shared<SurfaceTables>(std::move(built));
     retired_.reset();
@@ -362,19 +364,19 @@ int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpn
                                    const std::vector<int>& origin) {
   if (same_surface(topology, sharpness, origin)) return keep_every_plan(), 0;
   // The checks first: a refusal changes nothing.
-  const Scheme scheme = scheme_for(topology, options_);
-  check(topology, scheme);
-  return replan(base_local_mesh(topology, sharpness), sharpness, origin);
+  LocalMesh base = base_local_mesh(topology, sharpness);
+  check(topology, base.connectivity(), scheme_for(topology, options_, &base.connectivity()));
+  return replan(std::move(base), sharpness, origin);
 }
 
 int SurfaceReplanner::set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin) {
   if (same_surface(mesh.topology(), mesh.sharpness, origin)) return keep_every_plan(), 0;
-  check(mesh.topology(), scheme_for(mesh.topology(), options_));
+  check(mesh.topology(), mesh.connectivity(), scheme_for(mesh.topology(), options_, &mesh.connectivity()));
   return replan(base_local_mesh(mesh.shape(), mesh.sharpness), mesh.sharpness, origin);
 }
 
 int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const std::vector<int>& origin) {
-  const Scheme scheme = scheme_for(base.topology(), options_);
+  const Scheme scheme = scheme_for(base.topology(), options_, &base.connectivity());
   const bool same_builder = scheme == scheme_ && !ranges_.empty() && base.has_creases() == base_.has_creases();
   const LocalMesh previous = std::exchange(base_, std::move(base));
   const Sharpness old_sharpness = std::exchange(sharpness_, sharpness);

@@ -113,7 +113,7 @@ private:
   // The constructors' work, the base piece of the mesh built.
   SurfaceReplanner(LocalMesh&& base, const PlanOptions& options, const Sharpness& sharpness, int faces_per_range);
   // The plan builders' checks of a topology under `scheme` (valences, depth); throws as they do.
-  void check(const PolygonTopology& topology, Scheme scheme) const;
+  void check(const PolygonTopology& topology, const MeshConnectivity& connectivity, Scheme scheme) const;
   // Whether `topology` and `sharpness` are those planned, every vertex where it was (`origin` as
   // set_topology takes it): a change of the Gaussians alone, such as a transform as an operation.
   bool same_surface(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin) const;
