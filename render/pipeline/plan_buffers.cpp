@@ -75,10 +75,15 @@ std::vector<std::pair<size_t, size_t>> differing_runs(const std::vector<T>& data
     else
       runs.emplace_back(begin, end);
   };
-  for (size_t i = 0; i < n; i += kChunk) {
-    const size_t end = std::min(n, i + kChunk);
-    if (std::memcmp(data.data() + i, held.data() + i, (end - i) * sizeof(T)) != 0) add(i, end);
+  const long long n_chunks = (long long)((n + kChunk - 1) / kChunk);
+  std::vector<char> differs(size_t(n_chunks), 0);
+#pragma omp parallel for schedule(static) if (n_chunks >= 64)
+  for (long long c = 0; c < n_chunks; ++c) {
+    const size_t begin = size_t(c) * kChunk, end = std::min(n, begin + kChunk);
+    differs[size_t(c)] = std::memcmp(data.data() + begin, held.data() + begin, (end - begin) * sizeof(T)) != 0;
   }
+  for (size_t c = 0; c < differs.size(); ++c)
+    if (differs[c]) add(c * kChunk, std::min(n, (c + 1) * kChunk));
   if (data.size() > n) add(n, data.size());
   return runs;
 }
