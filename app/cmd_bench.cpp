@@ -132,6 +132,10 @@ void add_bench_command(CLI::App& app) {
           std::printf("%-30s %-18s",
                       (r["mesh"].get<std::string>() + " (" + std::to_string(r["faces"].get<int>()) + ")").c_str(),
                       op["operation"].get<std::string>().c_str());
+          if (op.contains("skipped")) {
+            std::printf(" skipped: %s\n", op["skipped"].get<std::string>().c_str());
+            continue;
+          }
           for (const char* key :
                {"operation_ms", "replan_ms", "faces_planned", "full_replan_ms", "upload_ms", "frame_ms", "total_ms",
                 "next_frame_ms", "pause_frame_ms", "still_frame_ms", "undo_ms", "undo_frame_ms"})

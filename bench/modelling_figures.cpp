@@ -15,6 +15,7 @@
 #include "core/modelling/merge_vertices.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/plans/surface_replanner.h"
+#include "core/support/error.h"
 #include "core/support/median.h"
 #include "render/gl/gpu_pass_timer.h"
 #include "render/gl/render_target.h"
@@ -82,6 +83,18 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   // before the next round; a full re-plan of the same result is timed beside them.
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& [label, operation] : operations) {
+    // An operation that this mesh refuses (a loop cut across triangles), or that takes it to the other
+    // scheme (an inset of triangles makes quads: a full re-plan by the other builder), is left out.
+    try {
+      const Modelled trial = operation(mesh);
+      if (scheme_for(trial.mesh.topology(), options, &trial.mesh.connectivity()) != replanner.scheme()) {
+        rows.push_back({{"operation", label}, {"skipped", "it changes the subdivision scheme"}});
+        continue;
+      }
+    } catch (const Error& error) {
+      rows.push_back({{"operation", label}, {"skipped", error.what()}});
+      continue;
+    }
     std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, next_s, pause_s, still_s, undo_s, undo_frame_s;
     // How the surface cache drew: full captures in the frame after the operation, the patches its
     // refresh captured or evaluated again, and whether the still frame drew stored, welded triangles.

@@ -61,9 +61,21 @@ void write_loop_extraordinary_table(const Eigen::MatrixXd (&nets)[3], const Eige
     for (int i = 0; i < k; ++i) masks[size_t(3 + r) * size_t(k) + size_t(i)] = step(r, i);
 }
 
-int LoopExtraordinaryTables::offset(const LoopExtraordinaryConfiguration& configuration, const PolygonTopology& mesh,
-                                    const MeshConnectivity& connectivity, int v, int a, int b) {
-  if (const auto it = offsets_.find(configuration); it != offsets_.end()) return it->second;
+std::shared_ptr<const std::vector<double>> LoopExtraordinaryTableCache::table(
+    const LoopExtraordinaryConfiguration& configuration, const PolygonTopology& mesh,
+    const MeshConnectivity& connectivity, int v, int a, int b) {
+  {
+    const std::lock_guard lock(mutex_);
+    if (const auto it = tables_.find(configuration); it != tables_.end()) return it->second;
+  }
+  auto computed = compute(mesh, connectivity, v, a, b);  // outside the lock: threads meeting others go on
+  const std::lock_guard lock(mutex_);
+  return tables_.try_emplace(configuration, std::move(computed)).first->second;
+}
+
+std::shared_ptr<const std::vector<double>> LoopExtraordinaryTableCache::compute(const PolygonTopology& mesh,
+                                                                                const MeshConnectivity& connectivity,
+                                                                                int v, int a, int b) const {
   const TriangleWalker coarse(mesh, connectivity);
   const std::vector<int> points = loop_extraordinary_neighbourhood(coarse, v, a, b);
   const int k = int(points.size()), n = mesh.n_vertices;
@@ -93,11 +105,9 @@ int LoopExtraordinaryTables::offset(const LoopExtraordinaryConfiguration& config
     }
     nets[c] = restrict_rows(rows, points);
   }
-  const int offset = int(tables_.size());
-  tables_.resize(tables_.size() + loop_extraordinary_table_size(k), 0.0);
-  write_loop_extraordinary_table(nets, step, &tables_[size_t(offset)]);
-  offsets_.emplace(configuration, offset);
-  return offset;
+  auto table = std::make_shared<std::vector<double>>(loop_extraordinary_table_size(k), 0.0);
+  write_loop_extraordinary_table(nets, step, table->data());
+  return table;
 }
 
 }  // namespace gps

@@ -17,6 +17,8 @@
 
 #include <Eigen/Core>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "core/reference/loop.h"
@@ -34,20 +36,25 @@ struct LoopExtraordinaryConfiguration {
   auto operator<=>(const LoopExtraordinaryConfiguration&) const = default;
 };
 
-/// The tables of one plan, one per configuration met.
-class LoopExtraordinaryTables {
+/// The tables of every configuration met while building one set of plans, shared by the threads: one
+/// per configuration (A and the nets depend on nothing else), computed on first use.
+class LoopExtraordinaryTableCache {
 public:
-  explicit LoopExtraordinaryTables(LoopBeta beta) : beta_(beta) {}
-  /// Offset of the table of `configuration`; on first use computed from the triangle (v, a, b) of
-  /// `mesh`, a mesh refined at least once around v (a and b regular, the rings read complete).
-  int offset(const LoopExtraordinaryConfiguration& configuration, const PolygonTopology& mesh,
-             const MeshConnectivity& connectivity, int v, int a, int b);
-  std::vector<double> take() { return std::move(tables_); }
+  explicit LoopExtraordinaryTableCache(LoopBeta beta) : beta_(beta) {}
+  /// The table of `configuration`, on first use computed from the triangle (v, a, b) of `mesh`, a mesh
+  /// refined at least once around v (a and b regular, the rings read complete). Safe to call from
+  /// several threads.
+  std::shared_ptr<const std::vector<double>> table(const LoopExtraordinaryConfiguration& configuration,
+                                                   const PolygonTopology& mesh, const MeshConnectivity& connectivity,
+                                                   int v, int a, int b);
 
 private:
+  std::shared_ptr<const std::vector<double>> compute(const PolygonTopology& mesh, const MeshConnectivity& connectivity,
+                                                     int v, int a, int b) const;
+
   LoopBeta beta_;
-  std::map<LoopExtraordinaryConfiguration, int> offsets_;
-  std::vector<double> tables_;
+  std::mutex mutex_;
+  std::map<LoopExtraordinaryConfiguration, std::shared_ptr<const std::vector<double>>> tables_;
 };
 
 /// Writes the table of a node (layout above) from one step A (`step`, K×K) and the nets Ā_k of its three

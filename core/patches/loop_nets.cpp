@@ -5,39 +5,66 @@
 
 namespace gps {
 
+int ccw_next(const PolygonTopology& t, const MeshConnectivity& c, int v, int w) {
+  for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i) {
+    const int f = c.vertex_faces[size_t(i)], k = c.vertex_face_corners[size_t(i)], o = t.offsets[size_t(f)];
+    if (t.verts[size_t(o + (k + 1) % 3)] == w) return t.verts[size_t(o + (k + 2) % 3)];
+  }
+  return -1;
+}
+
+int cw_next(const PolygonTopology& t, const MeshConnectivity& c, int v, int w) {
+  for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i) {
+    const int f = c.vertex_faces[size_t(i)], k = c.vertex_face_corners[size_t(i)], o = t.offsets[size_t(f)];
+    if (t.verts[size_t(o + (k + 2) % 3)] == w) return t.verts[size_t(o + (k + 1) % 3)];
+  }
+  return -1;
+}
+
+namespace {
+
+// Appends v's fan (triangle_fan) to `fan`.
+void append_fan(const PolygonTopology& t, const MeshConnectivity& c, int v, std::vector<int>& fan) {
+  const int valence = c.valence(v);
+  if (valence == 0) return;
+  int start = c.other_vertex(c.vertex_edges[size_t(c.vertex_edge_offsets[size_t(v)])], v);
+  if (vertex_role(c, v) != VertexRole::interior)  // walk clockwise to the boundary start
+    for (int x = cw_next(t, c, v, start), guard = 0; x >= 0 && guard < valence; x = cw_next(t, c, v, start), ++guard)
+      start = x;
+  fan.push_back(start);
+  for (int x = ccw_next(t, c, v, start), n = 1; x >= 0 && x != start && n < valence; x = ccw_next(t, c, v, x), ++n)
+    fan.push_back(x);
+}
+
+}  // namespace
+
+std::vector<int> triangle_fan(const PolygonTopology& t, const MeshConnectivity& c, int v) {
+  std::vector<int> fan;
+  fan.reserve(size_t(c.valence(v)));
+  append_fan(t, c, v, fan);
+  return fan;
+}
+
+bool loop_regular_vertex(const MeshConnectivity& c, int v) {
+  switch (vertex_role(c, v)) {
+    case VertexRole::interior:
+      return c.n_vertex_faces(v) == 6;
+    case VertexRole::boundary:
+      return c.n_vertex_faces(v) == 3;
+    default:
+      return false;
+  }
+}
+
 TriangleWalker::TriangleWalker(const PolygonTopology& topology, const MeshConnectivity& connectivity)
     : t_(topology), c_(connectivity) {
   fan_offsets_.reserve(size_t(t_.n_vertices) + 1);
   fans_.reserve(c_.vertex_edges.size());
   fan_offsets_.push_back(0);
   for (int v = 0; v < t_.n_vertices; ++v) {
-    const int valence = c_.valence(v);
-    if (valence > 0) {
-      int start = c_.other_vertex(c_.vertex_edges[size_t(c_.vertex_edge_offsets[size_t(v)])], v);
-      if (vertex_role(c_, v) != VertexRole::interior)  // walk clockwise to the boundary start
-        for (int x = cw_next(v, start), guard = 0; x >= 0 && guard < valence; x = cw_next(v, start), ++guard) start = x;
-      fans_.push_back(start);
-      for (int x = ccw_next(v, start), n = 1; x >= 0 && x != start && n < valence; x = ccw_next(v, x), ++n)
-        fans_.push_back(x);
-    }
+    append_fan(t_, c_, v, fans_);
     fan_offsets_.push_back(int(fans_.size()));
   }
-}
-
-int TriangleWalker::ccw_next(int v, int w) const {
-  for (int i = c_.vertex_face_offsets[size_t(v)]; i < c_.vertex_face_offsets[size_t(v) + 1]; ++i) {
-    const int f = c_.vertex_faces[size_t(i)], k = c_.vertex_face_corners[size_t(i)], o = t_.offsets[size_t(f)];
-    if (t_.verts[size_t(o + (k + 1) % 3)] == w) return t_.verts[size_t(o + (k + 2) % 3)];
-  }
-  return -1;
-}
-
-int TriangleWalker::cw_next(int v, int w) const {
-  for (int i = c_.vertex_face_offsets[size_t(v)]; i < c_.vertex_face_offsets[size_t(v) + 1]; ++i) {
-    const int f = c_.vertex_faces[size_t(i)], k = c_.vertex_face_corners[size_t(i)], o = t_.offsets[size_t(f)];
-    if (t_.verts[size_t(o + (k + 2) % 3)] == w) return t_.verts[size_t(o + (k + 1) % 3)];
-  }
-  return -1;
 }
 
 std::vector<int> TriangleWalker::ring_from(int v, int first) const {
@@ -53,17 +80,6 @@ std::vector<int> TriangleWalker::ring_from(int v, int first) const {
     for (int i = at - 1; i >= 0; --i) ring.push_back(f[i]);
   }
   return ring;
-}
-
-bool TriangleWalker::regular(int v) const {
-  switch (vertex_role(c_, v)) {
-    case VertexRole::interior:
-      return c_.n_vertex_faces(v) == 6;
-    case VertexRole::boundary:
-      return c_.n_vertex_faces(v) == 3;
-    default:
-      return false;
-  }
 }
 
 int TriangleWalker::edge(int a, int b) const {

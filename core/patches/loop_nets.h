@@ -29,21 +29,28 @@ private:
   int size_ = 0;
 };
 
-/// Triangle-mesh adjacency for the walks below.
+/// The vertex after w counter-clockwise around v in a triangle mesh (the third vertex of the face with
+/// directed edge v→w), or −1 across a boundary.
+int ccw_next(const PolygonTopology& t, const MeshConnectivity& c, int v, int w);
+/// The vertex after w clockwise around v (the face with directed edge w→v), or −1.
+int cw_next(const PolygonTopology& t, const MeshConnectivity& c, int v, int w);
+/// The neighbours of v counter-clockwise, a boundary vertex's from its boundary start (TriangleWalker::fan
+/// for one vertex, without the whole mesh's).
+std::vector<int> triangle_fan(const PolygonTopology& t, const MeshConnectivity& c, int v);
+/// Regular for Loop's box-spline patches: interior with 6 faces, or on a boundary with 3.
+bool loop_regular_vertex(const MeshConnectivity& c, int v);
+
+/// Triangle-mesh adjacency for the walks below, every vertex's fan built at once.
 class TriangleWalker {
 public:
   /// Builds every vertex's ring once (linear in the mesh for bounded valence).
   TriangleWalker(const PolygonTopology& topology, const MeshConnectivity& connectivity);
-  /// The vertex after w counter-clockwise around v (the third vertex of the face with directed edge
-  /// v→w), or −1 across a boundary.
-  int ccw_next(int v, int w) const;
-  /// The vertex after w clockwise around v (the face with directed edge w→v), or −1.
-  int cw_next(int v, int w) const;
+  int ccw_next(int v, int w) const { return gps::ccw_next(t_, c_, v, w); }
+  int cw_next(int v, int w) const { return gps::cw_next(t_, c_, v, w); }
   /// The neighbours of v counter-clockwise from `first` up to a boundary, then clockwise from
   /// `first` up to the other boundary (an interior vertex: its whole ring from `first`).
   std::vector<int> ring_from(int v, int first) const;
-  /// Regular for Loop's box-spline patches: interior with 6 faces, or on a boundary with 3.
-  bool regular(int v) const;
+  bool regular(int v) const { return loop_regular_vertex(c_, v); }
   /// The edge joining a and b, or −1.
   int edge(int a, int b) const;
   const MeshConnectivity& connectivity() const { return c_; }

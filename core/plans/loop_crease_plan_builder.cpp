@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <exception>
 #include <stdexcept>
 
 #include "core/extraordinary/loop_crease_tables.h"
@@ -107,23 +106,10 @@ SurfaceTables build_creased_loop_plans(const PolygonTopology& topology, LoopBeta
                                        const MeshConnectivity* connectivity) {
   const LocalMesh base =
       connectivity ? base_local_mesh(topology, *connectivity, sharpness) : base_local_mesh(topology, sharpness);
-  // Faces in ranges, built on all cores (OpenMP), merged in order (core/plans/range_plans.h).
-  const int n_faces = topology.n_faces(), n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);
-  std::vector<RangePlans> parts(static_cast<size_t>(n_ranges));
   LoopCreaseTables tables(beta);
-  std::vector<std::exception_ptr> failures(parts.size());
-#pragma omp parallel for schedule(dynamic)
-  for (int r = 0; r < n_ranges; ++r) {
-    try {
-      parts[size_t(r)] =
-          build_creased_loop_range(base, r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange), beta, tables);
-    } catch (...) {
-      failures[size_t(r)] = std::current_exception();
-    }
-  }
-  for (const auto& failure : failures)
-    if (failure) std::rethrow_exception(failure);
-  return merge_ranges(parts, topology.n_vertices, true);
+  return build_in_ranges(topology.n_faces(), topology.n_vertices, [&](int first, int last) {
+    return build_creased_loop_range(base, first, last, beta, tables);
+  });
 }
 
 }  // namespace gps

@@ -9,6 +9,7 @@
 #include "core/extraordinary/loop_extraordinary_tables.h"
 #include "core/plans/loop_crease_plan_builder.h"
 #include "core/patches/loop_nets.h"
+#include "core/plans/range_plans.h"
 #include "core/plans/stencil_table.h"
 
 namespace gps {
@@ -28,34 +29,30 @@ void check_loop_mesh(const PolygonTopology& t, const MeshConnectivity& c) {
                              std::to_string(kMaxLoopValence) + " (use --scheme catmull-clark)");
 }
 
-class LoopBuilder {
+// The plans of a run of faces of a triangle mesh that passed check_loop_mesh.
+class LoopRangeBuilder {
 public:
-  LoopBuilder(const PolygonTopology& t, LoopBeta beta, const MeshConnectivity* c = nullptr)
-      : t_(t),
-        c_(c ? *c : connectivity_of(t)),
-        walker_(t_, c_),
-        beta_(beta),
-        tables_(beta),
-        stencils_(t.n_vertices, row_start_for(t.n_vertices)) {
+  LoopRangeBuilder(const PolygonTopology& t, const MeshConnectivity& c, LoopBeta beta,
+                   LoopExtraordinaryTableCache& tables)
+      : t_(t), c_(c), beta_(beta), tables_(tables), stencils_(t.n_vertices) {
     plans_.shape = PatchShape::triangle;
-    plans_.max_depth = 1;
   }
 
-  void check() const { check_loop_mesh(t_, c_); }
-
-  SurfaceTables build() {
-    plans_.patch_roots.reserve(size_t(t_.n_faces()));
-    plans_.patch_corner_points = t_.verts;
-    plans_.nodes.reserve(size_t(t_.n_faces()) * 13);
-    for (int f = 0; f < t_.n_faces(); ++f) {
+  RangePlans build(int first, int last) {
+    plans_.patch_roots.reserve(size_t(last - first));
+    plans_.patch_corner_points.assign(t_.verts.begin() + 3 * first, t_.verts.begin() + 3 * last);
+    plans_.nodes.reserve(size_t(last - first) * 13);
+    for (int f = first; f < last; ++f) {
       const int* v = &t_.verts[size_t(t_.offsets[size_t(f)])];
-      if (walker_.regular(v[0]) && walker_.regular(v[1]) && walker_.regular(v[2]))
-        plans_.patch_roots.push_back(emit_regular(loop_regular_net(walker_, v[0], v[1], v[2]), nullptr));
+      if (loop_regular_vertex(c_, v[0]) && loop_regular_vertex(c_, v[1]) && loop_regular_vertex(c_, v[2]))
+        plans_.patch_roots.push_back(emit_regular(
+            loop_regular_net(v[0], v[1], v[2],
+                             {triangle_fan(t_, c_, v[0]), triangle_fan(t_, c_, v[1]), triangle_fan(t_, c_, v[2])}),
+            nullptr));
       else
         plans_.patch_roots.push_back(build_split(f));
     }
-    plans_.extraordinary_tables = tables_.take();
-    return {std::move(plans_), stencils_.finish()};
+    return {{std::move(plans_), stencils_.finish()}, std::move(extraordinary_tables_), {}, {}};
   }
 
 private:
@@ -98,13 +95,17 @@ private:
     const int o = t_.offsets[size_t(f)];
     int corner = 0;
     while (t_.verts[size_t(o + corner)] != v) ++corner;
-    for (int w = t_.verts[size_t(o + (corner + 1) % 3)]; (w = walker_.cw_next(v, w)) >= 0;) ++k.fan_position;
+    for (int w = t_.verts[size_t(o + (corner + 1) % 3)]; (w = cw_next(t_, c_, v, w)) >= 0;) ++k.fan_position;
     return k;
   }
 
-  // A triangle with an irregular corner: one Loop step of the faces around its corners.
+  // A triangle with an irregular corner: one Loop step of the faces around its corners. Its node comes
+  // first, then its children's, as the other builders lay them out.
   int build_split(int f) {
     const int* v = &t_.verts[size_t(t_.offsets[size_t(f)])];
+    const int offset = int(plans_.nodes.size());
+    plans_.nodes.insert(plans_.nodes.end(), {kNodeInternal, 0, 0, 0, 0});
+    plans_.max_depth = 1;
     // The piece: every face around the three corners, renumbered.
     std::vector<int> faces;
     for (int k = 0; k < 3; ++k)
@@ -137,31 +138,37 @@ private:
     const int e01 = n + coarse_walker.edge(c[0], c[1]), e12 = n + coarse_walker.edge(c[1], c[2]),
               e20 = n + coarse_walker.edge(c[2], c[0]);
     const int child[4][3] = {{c[0], e01, e20}, {e01, c[1], e12}, {e20, e12, c[2]}, {e12, e20, e01}};
-    int children[4];
     for (int k = 0; k < 4; ++k) {
       const int* x = child[k];
-      if (k < 3 && !walker_.regular(v[k])) {
+      int child = int(plans_.nodes.size());
+      if (k < 3 && !loop_regular_vertex(c_, v[k])) {
         // Child k holds base corner k at its own corner k: turn it to corner 0.
         const int a = x[(k + 1) % 3], b = x[(k + 2) % 3];
-        const int table = tables_.offset(configuration(v[k], f), fine, fine_connectivity, c[k], a, b);
+        const int table = table_index(tables_.table(configuration(v[k], f), fine, fine_connectivity, c[k], a, b));
         const std::vector<int> points = loop_extraordinary_neighbourhood(walker, c[k], a, b);
-        children[k] = int(plans_.nodes.size());
         plans_.nodes.insert(plans_.nodes.end(), {kNodeExtraordinary, k, table, int(points.size())});
         for (const int p : points) plans_.nodes.push_back(point({{p, 1.0}}, &piece));
       } else {
-        children[k] = emit_regular(loop_regular_net(walker, x[0], x[1], x[2]), &piece);
+        child = emit_regular(loop_regular_net(walker, x[0], x[1], x[2]), &piece);
       }
+      plans_.nodes[size_t(offset + 1 + k)] = child;
     }
-    const int offset = int(plans_.nodes.size());
-    plans_.nodes.insert(plans_.nodes.end(), {kNodeInternal, children[0], children[1], children[2], children[3]});
     return offset;
   }
 
+  // The range's index of `table`, added on first use.
+  int table_index(std::shared_ptr<const std::vector<double>> table) {
+    auto used = std::find(extraordinary_tables_.begin(), extraordinary_tables_.end(), table);
+    if (used == extraordinary_tables_.end())
+      used = extraordinary_tables_.insert(extraordinary_tables_.end(), std::move(table));
+    return int(used - extraordinary_tables_.begin());
+  }
+
   const PolygonTopology& t_;
-  MeshConnectivity c_;
-  TriangleWalker walker_;
+  const MeshConnectivity& c_;
   LoopBeta beta_;
-  LoopExtraordinaryTables tables_;
+  LoopExtraordinaryTableCache& tables_;
+  std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables_;
   StencilTableBuilder stencils_;
   PatchPlans plans_;
 };
@@ -173,13 +180,22 @@ void check_loop_plans(const PolygonTopology& topology, const MeshConnectivity* c
   check_loop_mesh(topology, connectivity_of(topology));
 }
 
+RangePlans build_loop_range(const PolygonTopology& topology, const MeshConnectivity& connectivity, int first, int last,
+                            LoopBeta beta, LoopExtraordinaryTableCache& tables) {
+  return LoopRangeBuilder(topology, connectivity, beta, tables).build(first, last);
+}
+
 SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness,
                                const MeshConnectivity* connectivity) {
-  LoopBuilder builder(topology, beta, connectivity);
-  builder.check();
+  const MeshConnectivity built = connectivity ? MeshConnectivity{} : connectivity_of(topology);
+  const MeshConnectivity& c = connectivity ? *connectivity : built;
+  check_loop_mesh(topology, c);
   Sharpness sharp = sharpness;
   sharp.normalise();
-  return sharp.empty() ? builder.build() : build_creased_loop_plans(topology, beta, sharp, connectivity);
+  if (!sharp.empty()) return build_creased_loop_plans(topology, beta, sharp, &c);
+  LoopExtraordinaryTableCache tables(beta);
+  return build_in_ranges(topology.n_faces(), topology.n_vertices,
+                         [&](int first, int last) { return build_loop_range(topology, c, first, last, beta, tables); });
 }
 
 }  // namespace gps

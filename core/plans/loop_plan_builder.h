@@ -5,6 +5,9 @@
 
 namespace gps {
 
+struct RangePlans;                  // core/plans/range_plans.h
+class LoopExtraordinaryTableCache;  // core/extraordinary/loop_extraordinary_tables.h
+
 /// One plan per triangle (patch p = face p, corners in face order at (u, v) = (0,0), (1,0), (0,1)):
 /// a regular triangle (every corner regular: interior of valence 6 or on a boundary with 3 faces) is
 /// one box-spline node; any other is split once, which leaves at most one irregular corner per
@@ -15,6 +18,11 @@ namespace gps {
 /// topology's where the caller holds it; null: built here.
 SurfaceTables build_loop_plans(const PolygonTopology& topology, LoopBeta beta, const Sharpness& sharpness = {},
                                const MeshConnectivity* connectivity = nullptr);
+
+/// The plans of faces [first, last) of a smooth mesh (no sharpness) that passed build_loop_plans' checks,
+/// for merge_ranges (core/plans/range_plans.h); exact tables come from `tables`, which ranges may share.
+RangePlans build_loop_range(const PolygonTopology& topology, const MeshConnectivity& connectivity, int first, int last,
+                            LoopBeta beta, LoopExtraordinaryTableCache& tables);
 
 /// build_loop_plans' checks of the topology; throws as it does. `connectivity`: the topology's where
 /// the caller holds it; null: built here.

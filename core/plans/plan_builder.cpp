@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <exception>
 #include <memory>
 #include <stdexcept>
 
@@ -247,23 +246,10 @@ SurfaceTables build_plans(const PolygonTopology& topology, int max_depth, Extrao
   check_quad_plans(topology, max_depth, extraordinary, connectivity);
   const LocalMesh base =
       connectivity ? base_local_mesh(topology, *connectivity, sharpness) : base_local_mesh(topology, sharpness);
-  // Faces in ranges of a fixed size, built on all cores (OpenMP), merged in order.
-  const int n_faces = topology.n_faces(), n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);
-  std::vector<RangePlans> parts(static_cast<size_t>(n_ranges));
   QuadExtraordinaryTableCache cache;
-  std::vector<std::exception_ptr> failures(parts.size());
-#pragma omp parallel for schedule(dynamic)
-  for (int r = 0; r < n_ranges; ++r) {
-    try {
-      parts[size_t(r)] = build_quad_range(base, r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange),
-                                          max_depth, extraordinary, bspline_leaves, cache);
-    } catch (...) {
-      failures[size_t(r)] = std::current_exception();
-    }
-  }
-  for (const auto& failure : failures)
-    if (failure) std::rethrow_exception(failure);
-  return merge_ranges(parts, topology.n_vertices, true);
+  return build_in_ranges(topology.n_faces(), topology.n_vertices, [&](int first, int last) {
+    return build_quad_range(base, first, last, max_depth, extraordinary, bspline_leaves, cache);
+  });
 }
 
 }  // namespace gps

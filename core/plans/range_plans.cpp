@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <exception>
 #include <map>
 #include <utility>
 
@@ -141,6 +142,23 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
   if (release)
     for (size_t r = 0; r < same_leading; ++r) ranges[r] = {};
   return {std::move(plans), std::move(stencils.table)};
+}
+
+SurfaceTables build_in_ranges(int n_faces, int n_base, const std::function<RangePlans(int, int)>& build_range) {
+  const int n_ranges = std::max(1, (n_faces + kFacesPerRange - 1) / kFacesPerRange);
+  std::vector<RangePlans> parts(static_cast<size_t>(n_ranges));
+  std::vector<std::exception_ptr> failures(parts.size());
+#pragma omp parallel for schedule(dynamic)
+  for (int r = 0; r < n_ranges; ++r) {
+    try {
+      parts[size_t(r)] = build_range(r * kFacesPerRange, std::min(n_faces, (r + 1) * kFacesPerRange));
+    } catch (...) {
+      failures[size_t(r)] = std::current_exception();
+    }
+  }
+  for (const auto& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+  return merge_ranges(parts, n_base, true);
 }
 
 bool cut_range(const RangePlans& range, int first, int last, RangePlans& piece) {

@@ -3,6 +3,7 @@
 // the whole tables are the same, bit for bit, however the faces are cut into ranges, so ranges build
 // on all cores, and a sharpness change rebuilds only the ranges of the faces it reaches
 // (core/plans/surface_replanner.h).
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -37,6 +38,11 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
                            const SurfaceTables* previous = nullptr, size_t same_leading = 0,
                            SurfaceTables* storage = nullptr, std::vector<KeptStencilRows>* kept_rows = nullptr,
                            size_t storage_leading = 0);
+
+/// The tables of faces [0, n_faces) over n_base vertices: `build_range(first, last)` builds each range of
+/// kFacesPerRange faces, on all cores, and the ranges are merged (released). Rethrows the first range's
+/// failure.
+SurfaceTables build_in_ranges(int n_faces, int n_base, const std::function<RangePlans(int, int)>& build_range);
 
 /// Patches [first, last) of `range` as the range their faces alone build: their nodes, corner points and
 /// edges cut out, their rows and extraordinary tables numbered in the order the patches first read them

@@ -162,20 +162,11 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   const PolygonTopology& t = base_.topology();
   change_ = {change_.to, next_tables_id(), {}, std::nullopt, {}};
   std::vector<KeptPatches>& kept = change_.kept;
-  if (scheme_ == Scheme::loop && !base_.has_creases()) {  // Loop's smooth builder, as build_surface_plans
-    ranges_.clear();
-    range_first_.clear();
-    range_kept_.clear();
-    patch_first_.clear();
-    loop_tables_.reset();
-    SurfaceTables built = build_loop_plans(t, options_.loop_beta, {}, &base_.connectivity());
-    add_patch_adjacency(built.plans, t, sharpness, &base_.connectivity());
-    tables_ = std::make_shared<SurfaceTables>(std::move(built));
-    retired_.reset();
-    tables_leading_ = 0;
-    return;
-  }
-  if (scheme_ == Scheme::loop && !loop_tables_) loop_tables_ = std::make_unique<LoopCreaseTables>(options_.loop_beta);
+  const bool creased = base_.has_creases();
+  if (scheme_ == Scheme::loop && !creased && !loop_tables_)
+    loop_tables_ = std::make_unique<LoopExtraordinaryTableCache>(options_.loop_beta);
+  if (scheme_ == Scheme::loop && creased && !loop_crease_tables_)
+    loop_crease_tables_ = std::make_unique<LoopCreaseTables>(options_.loop_beta);
   if (scheme_ == Scheme::catmull_clark && !quad_tables_) quad_tables_ = std::make_unique<QuadExtraordinaryTableCache>();
   const ExtraordinaryNodes extraordinary = options_.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier;
   std::vector<std::exception_ptr> failures(which.size());
@@ -184,9 +175,12 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     const size_t r = size_t(which[i]);
     const int first = range_first_[r], last = range_first_[r + 1];
     try {
-      ranges_[r] = scheme_ == Scheme::loop
-                       ? build_creased_loop_range(base_, first, last, options_.loop_beta, *loop_tables_)
-                       : build_quad_range(base_, first, last, options_.depth, extraordinary, true, *quad_tables_);
+      if (scheme_ == Scheme::catmull_clark)
+        ranges_[r] = build_quad_range(base_, first, last, options_.depth, extraordinary, true, *quad_tables_);
+      else if (creased)
+        ranges_[r] = build_creased_loop_range(base_, first, last, options_.loop_beta, *loop_crease_tables_);
+      else
+        ranges_[r] = build_loop_range(t, base_.connectivity(), first, last, options_.loop_beta, *loop_tables_);
     } catch (...) {
       failures[i] = std::current_exception();
     }
@@ -365,18 +359,20 @@ int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpn
   if (same_surface(topology, sharpness, origin)) return keep_every_plan(), 0;
   // The checks first: a refusal changes nothing.
   LocalMesh base = base_local_mesh(topology, sharpness);
-  check(topology, base.connectivity(), scheme_for(topology, options_, &base.connectivity()));
-  return replan(std::move(base), sharpness, origin);
+  const Scheme scheme = scheme_for(topology, options_, &base.connectivity());
+  check(topology, base.connectivity(), scheme);
+  return replan(std::move(base), scheme, sharpness, origin);
 }
 
 int SurfaceReplanner::set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin) {
   if (same_surface(mesh.topology(), mesh.sharpness, origin)) return keep_every_plan(), 0;
-  check(mesh.topology(), mesh.connectivity(), scheme_for(mesh.topology(), options_, &mesh.connectivity()));
-  return replan(base_local_mesh(mesh.shape(), mesh.sharpness), mesh.sharpness, origin);
+  const Scheme scheme = scheme_for(mesh.topology(), options_, &mesh.connectivity());
+  check(mesh.topology(), mesh.connectivity(), scheme);
+  return replan(base_local_mesh(mesh.shape(), mesh.sharpness), scheme, mesh.sharpness, origin);
 }
 
-int SurfaceReplanner::replan(LocalMesh&& base, const Sharpness& sharpness, const std::vector<int>& origin) {
-  const Scheme scheme = scheme_for(base.topology(), options_, &base.connectivity());
+int SurfaceReplanner::replan(LocalMesh&& base, Scheme scheme, const Sharpness& sharpness,
+                             const std::vector<int>& origin) {
   const bool same_builder = scheme == scheme_ && !ranges_.empty() && base.has_creases() == base_.has_creases();
   const LocalMesh previous = std::exchange(base_, std::move(base));
   const Sharpness old_sharpness = std::exchange(sharpness_, sharpness);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/extraordinary/loop_crease_tables.h"
+#include "core/extraordinary/loop_extraordinary_tables.h"
 #include "core/extraordinary/quad_extraordinary_tables.h"
 #include "core/patches/local_mesh.h"
 #include "core/plans/planned_surface.h"
@@ -81,7 +82,7 @@ public:
   std::shared_ptr<const SurfaceTables> shared_tables() const { return tables_; }
   /// Re-plans for new sharpness of the same topology: builds again only the faces that read a changed
   /// edge or vertex, and the short runs between them (every face where the mesh gains its first
-  /// sharpness or loses its last: the plans' depth bound and Loop's smooth builder change then).
+  /// sharpness or loses its last: the plans' depth bound and Loop's builder change then).
   /// Returns the faces that read a change, sorted (empty: nothing changed). Throws gps::Error for a
   /// crease between unjoined vertices, the tables unchanged.
   std::vector<int> set_sharpness(const Sharpness& sharpness);
@@ -91,14 +92,14 @@ public:
   /// removed or changed around one of their vertices, or sharpness there): a whole range, or a run cut
   /// out of one (core/plans/range_plans.h, cut_range); the other faces are built again. The
   /// origin only says where to look: a wrong one costs time, never a wrong table. Everything is built
-  /// again when the scheme changes, when sharpness first comes or last goes, for Loop's smooth builder,
-  /// or when the origin is not increasing. The same faces, sharpness and vertices keep the tables as
+  /// again when the scheme changes, when sharpness first comes or last goes, or when the origin is not
+  /// increasing. The same faces, sharpness and vertices keep the tables as
   /// they are (a change of the Gaussians alone). Returns how many faces were planned. Throws as the
   /// constructor does, the tables unchanged.
   int set_topology(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin = {});
   /// The same for a mesh's faces and sharpness, reading the connectivity it holds.
   int set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin = {});
-  /// How many ranges the faces are built in (none for Loop's smooth builder): changes cut the ranges
+  /// How many ranges the faces are built in: changes cut the ranges
   /// they reach, and short ones are joined to a neighbour where both fit in one once changes have left
   /// both alone for a while, so there are at most about four times as many as the faces fill, and the
   /// pieces of the last few changes.
@@ -119,8 +120,8 @@ private:
   bool same_surface(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin) const;
   // The change to the same tables under a new id, every patch kept.
   void keep_every_plan();
-  // set_topology's work, the new mesh's base piece built.
-  int replan(LocalMesh&& base, const Sharpness& sharpness, const std::vector<int>& origin);
+  // set_topology's work, the new mesh's base piece built and checked under `scheme`.
+  int replan(LocalMesh&& base, Scheme scheme, const Sharpness& sharpness, const std::vector<int>& origin);
   // Per old face of `old` the face of base_ with its corners under `new_index` (−1: gone), and back.
   void match_faces(const PolygonTopology& old, const std::vector<int>& new_index, std::vector<int>& new_face,
                    std::vector<int>& old_face) const;
@@ -167,8 +168,9 @@ private:
   LocalMesh base_;       // the topology with the latest sharpness laid out on it
   Sharpness sharpness_;  // as last given
   std::unique_ptr<QuadExtraordinaryTableCache> quad_tables_;
-  std::unique_ptr<LoopCreaseTables> loop_tables_;
-  std::vector<RangePlans> ranges_;  // empty for Loop without sharpness (its smooth builder)
+  std::unique_ptr<LoopExtraordinaryTableCache> loop_tables_;  // Loop without sharpness
+  std::unique_ptr<LoopCreaseTables> loop_crease_tables_;
+  std::vector<RangePlans> ranges_;
   std::vector<int> range_first_;    // range r holds faces [range_first_[r], range_first_[r + 1])
   std::vector<int> range_kept_;     // per range: the changes it was kept whole through since it was built or cut
   std::vector<int> patch_first_;    // range r's first patch in tables_

@@ -7,8 +7,10 @@
 #include <random>
 
 #include "core/extraordinary/loop_crease_tables.h"
+#include "core/extraordinary/loop_extraordinary_tables.h"
 #include "core/extraordinary/quad_extraordinary_tables.h"
 #include "core/plans/loop_crease_plan_builder.h"
+#include "core/plans/loop_plan_builder.h"
 #include "core/plans/range_plans.h"
 #include "core/plans/stencil_table.h"
 #include "tests/support/plan_tables.h"
@@ -23,13 +25,15 @@ void expect_same_range(const RangePlans& a, const RangePlans& b, const std::stri
 }
 
 // The ranges of a test case's faces: Catmull-Clark's exact nodes at depth 2 and the thesis' Bézier
-// patches at depth 3 by turns (`trial`), or creased Loop's.
+// patches at depth 3 by turns (`trial`), or Loop's, smooth or creased.
 class RangeBuilder {
 public:
   explicit RangeBuilder(const test::RandomOperationCase& c)
       : loop_(c.scheme == Scheme::loop), base_(base_local_mesh(c.mesh.topology(), c.mesh.sharpness)) {}
   RangePlans build(int first, int last, int trial) {
     const bool bezier = trial % 2 == 1;
+    if (loop_ && !base_.has_creases())
+      return build_loop_range(base_.topology(), base_.connectivity(), first, last, LoopBeta::loop, smooth_tables_);
     return loop_
                ? build_creased_loop_range(base_, first, last, LoopBeta::loop, loop_tables_)
                : build_quad_range(base_, first, last, bezier ? 3 : 2,
@@ -41,18 +45,11 @@ private:
   LocalMesh base_;
   QuadExtraordinaryTableCache quad_tables_;
   LoopCreaseTables loop_tables_{LoopBeta::loop};
+  LoopExtraordinaryTableCache smooth_tables_{LoopBeta::loop};
 };
 
-// The test cases whose faces are built in ranges (Loop's smooth builder plans whole meshes).
-std::vector<test::RandomOperationCase> ranged_cases() {
-  std::vector<test::RandomOperationCase> cases;
-  for (test::RandomOperationCase& c : test::random_operation_cases())
-    if (c.scheme != Scheme::loop || !c.mesh.sharpness.empty()) cases.push_back(std::move(c));
-  return cases;
-}
-
 TEST(RangePlans, ARunCutFromARangeIsWhatItsFacesBuildAlone) {
-  for (const test::RandomOperationCase& c : ranged_cases()) {
+  for (const test::RandomOperationCase& c : test::random_operation_cases()) {
     const PolygonTopology& t = c.mesh.topology();
     const bool loop = c.scheme == Scheme::loop;
     RangeBuilder ranges(c);
@@ -87,7 +84,7 @@ TEST(RangePlans, ARunCutFromARangeIsWhatItsFacesBuildAlone) {
 // Two neighbouring ranges appended one to the other are what their faces build as one range, bit for
 // bit, their row keys included: the replanner joins the short ranges that changes leave.
 TEST(RangePlans, ARangeAppendedToTheOneBeforeIsWhatTheirFacesBuildTogether) {
-  for (const test::RandomOperationCase& c : ranged_cases()) {
+  for (const test::RandomOperationCase& c : test::random_operation_cases()) {
     const PolygonTopology& t = c.mesh.topology();
     RangeBuilder ranges(c);
     std::mt19937 random(11);

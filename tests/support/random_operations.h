@@ -45,7 +45,8 @@ inline std::vector<RandomOperationCase> random_operation_cases() {
           {"icosphere (triangles, creased)", creased(make_sample("icosphere", 300), 1.5), Scheme::loop, 8},
           {"triangle grid (open triangles, creased)", creased(triangle_grid_mesh(5, 4), kInfiniteSharpness),
            Scheme::loop, 8},
-          {"icosphere (smooth triangles)", make_sample("icosphere", 80), Scheme::loop, 8}};
+          {"icosphere (smooth triangles)", make_sample("icosphere", 320), Scheme::loop, 8},
+          {"triangle grid (open triangles, smooth)", triangle_grid_mesh(12, 10), Scheme::loop, 8}};
 }
 
 // One random operation on `m` (extrude, inset, loop cut, subdivide, delete faces or vertices, merge,
