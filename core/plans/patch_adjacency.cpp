@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <unordered_set>
+#include <utility>
+#include <vector>
 
 namespace gps {
 
@@ -215,13 +216,14 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
   const auto link_again = [&](int p, int k) {
     if (const EdgeUse e = edge_use(plans, p, k); e.from != e.to) again.push_back(e);
   };
-  std::unordered_set<uint64_t> new_keys;
+  std::vector<uint64_t> new_keys;  // sorted, for the kept boundary edges to look up
   for (int p = 0; p < n_patches; ++p)
     if (old_of_new[size_t(p)] < 0)
       for (int k = 0; k < n; ++k) {
-        new_keys.insert(edge_key(edge_use(plans, p, k)));
+        new_keys.push_back(edge_key(edge_use(plans, p, k)));
         link_again(p, k);
       }
+  std::sort(new_keys.begin(), new_keys.end());
 #pragma omp parallel if (n_patches >= kParallelFaces)
   {
     // The kept patches' records, on all cores; each thread's edges to link again are joined after (they
@@ -236,7 +238,7 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
       }
       for (int k = 0; k < n; ++k) {
         const int32_t* r = &old_neighbours[size_t(4 * (n * q + k))];
-        bool kept = r[0] >= 0 || !new_keys.count(edge_key(edge_use(plans, p, k)));
+        bool kept = r[0] >= 0 || !std::binary_search(new_keys.begin(), new_keys.end(), edge_key(edge_use(plans, p, k)));
         for (int j = 0; j < 4 && kept; j += 2)  // (a sharp flag of creases that are gone: linked again)
           kept = r[j] < 0 || (new_of_old[size_t(r[j])] >= 0 && !(r[j + 1] & kNeighbourSharpEdge));
         if (!kept) {
@@ -254,16 +256,20 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
 #pragma omp critical
     again.insert(again.end(), own.begin(), own.end());
   }
-  // Linked in groups of one edge, in patch order within a group, as add_patch_adjacency links them.
-  std::sort(again.begin(), again.end(), [](const EdgeUse& a, const EdgeUse& b) {
-    const uint64_t ka = edge_key(a), kb = edge_key(b);
-    return ka != kb ? ka < kb : a.patch != b.patch ? a.patch < b.patch : a.k < b.k;
-  });
+  // Linked in groups of one edge, in patch order within a group, as add_patch_adjacency links them:
+  // sorted by key, then by patch edge (patch · n + k, unique), which carries the use's index below it.
+  std::vector<std::pair<uint64_t, uint64_t>> order(again.size());
+  for (size_t i = 0; i < again.size(); ++i) {
+    const EdgeUse& e = again[i];
+    order[i] = {edge_key(e), (uint64_t(e.patch) * uint64_t(n) + uint64_t(e.k)) << 32 | i};
+  }
+  std::sort(order.begin(), order.end());
   std::vector<const EdgeUse*> group;
-  for (size_t i = 0; i < again.size();) {
+  for (size_t i = 0; i < order.size();) {
     group.clear();
     size_t j = i;
-    while (j < again.size() && edge_key(again[j]) == edge_key(again[i])) group.push_back(&again[j++]);
+    for (; j < order.size() && order[j].first == order[i].first; ++j)
+      group.push_back(&again[size_t(order[j].second & 0xffffffffu)]);
     link_edge(plans, group);
     i = j;
   }
