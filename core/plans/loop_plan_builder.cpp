@@ -140,7 +140,7 @@ private:
     const int child[4][3] = {{c[0], e01, e20}, {e01, c[1], e12}, {e20, e12, c[2]}, {e12, e20, e01}};
     for (int k = 0; k < 4; ++k) {
       const int* x = child[k];
-      int child = int(plans_.nodes.size());
+      int node = int(plans_.nodes.size());
       if (k < 3 && !loop_regular_vertex(c_, v[k])) {
         // Child k holds base corner k at its own corner k: turn it to corner 0.
         const int a = x[(k + 1) % 3], b = x[(k + 2) % 3];
@@ -149,9 +149,9 @@ private:
         plans_.nodes.insert(plans_.nodes.end(), {kNodeExtraordinary, k, table, int(points.size())});
         for (const int p : points) plans_.nodes.push_back(point({{p, 1.0}}, &piece));
       } else {
-        child = emit_regular(loop_regular_net(walker, x[0], x[1], x[2]), &piece);
+        node = emit_regular(loop_regular_net(walker, x[0], x[1], x[2]), &piece);
       }
-      plans_.nodes[size_t(offset + 1 + k)] = child;
+      plans_.nodes[size_t(offset + 1 + k)] = node;
     }
     return offset;
   }
