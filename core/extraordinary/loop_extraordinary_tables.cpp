@@ -86,7 +86,7 @@ std::shared_ptr<const std::vector<double>> LoopExtraordinaryTableCache::compute(
   const std::vector<Eigen::VectorXd> values = loop_values(mesh, connectivity, unit, beta_);
   const MeshConnectivity fine_connectivity = connectivity_of(fine);
   const TriangleWalker walker(fine, fine_connectivity);
-  const auto edge_point = [&](int x, int y) { return n + coarse.edge(x, y); };
+  const auto edge_point = [&](int x, int y) { return n + connectivity.find_edge(x, y); };
   const int ea = edge_point(v, a), eb = edge_point(v, b), eab = edge_point(a, b);
   // A: the neighbourhood of the corner child (v', e_va, e_vb) from that of (v, a, b).
   std::vector<Eigen::VectorXd> rows;

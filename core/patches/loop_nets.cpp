@@ -82,12 +82,6 @@ std::vector<int> TriangleWalker::ring_from(int v, int first) const {
   return ring;
 }
 
-int TriangleWalker::edge(int a, int b) const {
-  for (int i = c_.vertex_edge_offsets[size_t(a)]; i < c_.vertex_edge_offsets[size_t(a) + 1]; ++i)
-    if (c_.other_vertex(c_.vertex_edges[size_t(i)], a) == b) return c_.vertex_edges[size_t(i)];
-  return -1;
-}
-
 namespace {
 
 // Lattice directions counter-clockwise: (1,0) (0,1) (−1,1) (−1,0) (0,−1) (1,−1).

@@ -51,8 +51,6 @@ public:
   /// `first` up to the other boundary (an interior vertex: its whole ring from `first`).
   std::vector<int> ring_from(int v, int first) const;
   bool regular(int v) const { return loop_regular_vertex(c_, v); }
-  /// The edge joining a and b, or −1.
-  int edge(int a, int b) const;
   const MeshConnectivity& connectivity() const { return c_; }
   /// The neighbours of v counter-clockwise, a boundary vertex's from its boundary start.
   const int* fan(int v) const { return &fans_[size_t(fan_offsets_[size_t(v)])]; }

@@ -132,11 +132,11 @@ private:
     piece.weights = loop_values(coarse, coarse_connectivity, unit, beta_);
     const PolygonTopology fine = loop_topology(coarse, coarse_connectivity);
     const MeshConnectivity fine_connectivity = connectivity_of(fine);
-    const TriangleWalker coarse_walker(coarse, coarse_connectivity), walker(fine, fine_connectivity);
+    const TriangleWalker walker(fine, fine_connectivity);
     const int n = coarse.n_vertices;
     const int c[3] = {local[v[0]], local[v[1]], local[v[2]]};
-    const int e01 = n + coarse_walker.edge(c[0], c[1]), e12 = n + coarse_walker.edge(c[1], c[2]),
-              e20 = n + coarse_walker.edge(c[2], c[0]);
+    const int e01 = n + coarse_connectivity.find_edge(c[0], c[1]), e12 = n + coarse_connectivity.find_edge(c[1], c[2]),
+              e20 = n + coarse_connectivity.find_edge(c[2], c[0]);
     const int child[4][3] = {{c[0], e01, e20}, {e01, c[1], e12}, {e20, e12, c[2]}, {e12, e20, e01}};
     for (int k = 0; k < 4; ++k) {
       const int* x = child[k];
