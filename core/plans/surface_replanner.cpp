@@ -414,20 +414,22 @@ int SurfaceReplanner::replan(LocalMesh&& base, Scheme scheme, const Sharpness& s
   for (int f = 0; f < old.n_faces(); ++f)
     if (new_face[size_t(f)] < 0)
       for (int k = old.offsets[size_t(f)]; k < old.offsets[size_t(f) + 1]; ++k) mark_old(old.verts[size_t(k)]);
-  std::vector<int> old_index(size_t(n_new), -1);
-  for (int v = 0; v < n_old; ++v)
-    if (const int w = new_index[size_t(v)]; w >= 0) old_index[size_t(w)] = v;
   for (const EdgeCrease& e : old_sharpness.creases) {
     const int a = new_index[size_t(e.a)], b = new_index[size_t(e.b)];
     if (a < 0 || b < 0 || sharpness.crease(a, b) != e.sharpness) mark_old(e.a), mark_old(e.b);
   }
-  for (const EdgeCrease& e : sharpness.creases) {
-    const int a = old_index[size_t(e.a)], b = old_index[size_t(e.b)];
-    if (a < 0 || b < 0 || old_sharpness.crease(a, b) != e.sharpness) changed[size_t(e.a)] = changed[size_t(e.b)] = 1;
-  }
-  for (int w = 0; w < n_new; ++w) {
-    const int v = old_index[size_t(w)];
-    if (sharpness.corner(w) != (v < 0 ? 0.0 : old_sharpness.corner(v))) changed[size_t(w)] = 1;
+  if (!sharpness.creases.empty() || !sharpness.corners.empty() || !old_sharpness.corners.empty()) {
+    std::vector<int> old_index(size_t(n_new), -1);
+    for (int v = 0; v < n_old; ++v)
+      if (const int w = new_index[size_t(v)]; w >= 0) old_index[size_t(w)] = v;
+    for (const EdgeCrease& e : sharpness.creases) {
+      const int a = old_index[size_t(e.a)], b = old_index[size_t(e.b)];
+      if (a < 0 || b < 0 || old_sharpness.crease(a, b) != e.sharpness) changed[size_t(e.a)] = changed[size_t(e.b)] = 1;
+    }
+    for (int w = 0; w < n_new; ++w) {
+      const int v = old_index[size_t(w)];
+      if (sharpness.corner(w) != (v < 0 ? 0.0 : old_sharpness.corner(v))) changed[size_t(w)] = 1;
+    }
   }
   std::vector<int> changed_vertices;
   for (int w = 0; w < n_new; ++w)
