@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <map>
+#include <unordered_map>
 
 #include "core/mesh/element_names.h"
 #include "core/support/error.h"
@@ -45,10 +46,8 @@ public:
     for (int f = first; f < last; ++f) {
       const int* v = &t_.verts[size_t(t_.offsets[size_t(f)])];
       if (loop_regular_vertex(c_, v[0]) && loop_regular_vertex(c_, v[1]) && loop_regular_vertex(c_, v[2]))
-        plans_.patch_roots.push_back(emit_regular(
-            loop_regular_net(v[0], v[1], v[2],
-                             {triangle_fan(t_, c_, v[0]), triangle_fan(t_, c_, v[1]), triangle_fan(t_, c_, v[2])}),
-            nullptr));
+        plans_.patch_roots.push_back(
+            emit_regular(loop_regular_net(v[0], v[1], v[2], {fan(v[0]), fan(v[1]), fan(v[2])}), nullptr));
       else
         plans_.patch_roots.push_back(build_split(f));
     }
@@ -56,6 +55,13 @@ public:
   }
 
 private:
+  // v's fan (triangle_fan), found once per range: a vertex is a corner of about six of its faces.
+  const std::vector<int>& fan(int v) {
+    const auto [at, added] = fans_.try_emplace(v);
+    if (added) at->second = triangle_fan(t_, c_, v);
+    return at->second;
+  }
+
   // The stencils of a piece's vertices over the base vertices: per piece vertex, weights over `base`.
   struct Piece {
     std::vector<int> base;                 // piece-local coarse index → base vertex
@@ -169,6 +175,7 @@ private:
   LoopBeta beta_;
   LoopExtraordinaryTableCache& tables_;
   std::vector<std::shared_ptr<const std::vector<double>>> extraordinary_tables_;
+  std::unordered_map<int, std::vector<int>> fans_;  // per base vertex met: its fan
   StencilTableBuilder stencils_;
   PatchPlans plans_;
 };
