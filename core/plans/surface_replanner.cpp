@@ -136,11 +136,14 @@ SurfaceReplanner::SurfaceReplanner(LocalMesh&& base, const PlanOptions& options,
 
 void SurfaceReplanner::check(const PolygonTopology& topology, const MeshConnectivity& connectivity,
                              Scheme scheme) const {
-  if (scheme == Scheme::loop)
-    check_loop_plans(topology, &connectivity);
-  else
+  // `scheme` is scheme_for's: left to choose, it picks Loop only for triangles with at most
+  // kMaxLoopValence faces at a vertex, which is all that Loop's checks look at.
+  if (scheme == Scheme::loop) {
+    if (options_.scheme) check_loop_plans(topology, &connectivity);
+  } else {
     check_quad_plans(topology, options_.depth, options_.exact ? ExtraordinaryNodes::exact : ExtraordinaryNodes::bezier,
                      &connectivity);
+  }
 }
 
 void SurfaceReplanner::build_all(const Sharpness& sharpness) {
