@@ -19,26 +19,15 @@ const int kCorners = 3;
 const int kCorners = 4;
 #endif
 
-// One item each: one evaluation, or a zeroed slot. Which slot evaluates what (its owner a corner, the
-// edge naming its curve a midpoint) the list's builder decides (render/pipeline/corner_limit_pass.h),
-// and it lists the evaluations first: a SIMD batch then runs the evaluation once, for all its lanes.
+// One evaluation per item. Which slot evaluates what (its owner a corner, the edge naming its curve a
+// midpoint) the list's builder decides (render/pipeline/corner_limit_pass.h); it lists the evaluations
+// first, and the slots that hold zero after them, which corner_clear_comp.glsl writes.
 void main() {
   int i = compute_invocation();
   if (i < 0) return;
   int item = corner_items[i];
   int slot = item / kCornerItemOps, op = item - kCornerItemOps * slot;  // kCorners · patch + corner
   int patch_id = slot / kCorners, corner = slot - kCorners * patch_id;
-  // A slot its patch does not evaluate holds zero, as the buffer does after allocation: a slot listed
-  // after a change of ownership (SurfaceRenderer's kept corner output) does not keep a stale value.
-  if (op == kCornerItemClearMidpoint) {
-    curve_midpoints[slot] = vec4(0.0);
-    return;
-  }
-  if (op == kCornerItemClearCorner) {
-    corner_limits[2 * slot] = vec4(0.0);
-    corner_limits[2 * slot + 1] = vec4(0.0);
-    return;
-  }
   bool midpoint = op == kCornerItemMidpoint;
   // The corner's parameters as the tessellation stages' edge_point_uv gives them.
 #ifdef GPS_TRIANGLE_PATCHES

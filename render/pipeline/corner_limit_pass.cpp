@@ -14,7 +14,8 @@
 namespace gps {
 
 CornerLimitPass::CornerLimitPass()
-    : programs_(plan_compute_programs("corner_limits", true, {shaders::corner_limit_comp})) {}
+    : programs_(plan_compute_programs("corner_limits", true, {shaders::corner_limit_comp})),
+      clear_("corner_clear", {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::corner_clear_comp}}}) {}
 
 void CornerLimitPass::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
 
@@ -45,7 +46,7 @@ bool holds_midpoint(const PatchPlans& plans, int patch, int c) {
 
 }  // namespace
 
-std::vector<int> CornerLimitPass::slot_items(const PatchPlans& plans, const std::vector<int>& slots) {
+CornerItems CornerLimitPass::slot_items(const PatchPlans& plans, const std::vector<int>& slots) {
   const int n = plans.corners();
   std::vector<int> items, zeros;
   items.reserve(2 * slots.size());
@@ -61,11 +62,12 @@ std::vector<int> CornerLimitPass::slot_items(const PatchPlans& plans, const std:
     else
       zeros.push_back(kCornerItemOps * slot + gpu::kCornerItemClearCorner);
   }
+  const int evaluations = int(items.size());
   items.insert(items.end(), zeros.begin(), zeros.end());
-  return items;
+  return {std::move(items), evaluations};
 }
 
-std::vector<int> CornerLimitPass::all_items(const PatchPlans& plans) {
+CornerItems CornerLimitPass::all_items(const PatchPlans& plans) {
   const int n = plans.corners(), n_patches = plans.n_patches();
   // Counted per patch first, so that the items are written in parallel, in slot order.
   std::vector<int> first(size_t(n_patches) + 1, 0);
@@ -86,12 +88,16 @@ std::vector<int> CornerLimitPass::all_items(const PatchPlans& plans) {
       if (evaluates_corner(plans, p, c)) items[size_t(at++)] = kCornerItemOps * slot + gpu::kCornerItemCorner;
     }
   }
-  return items;
+  const int evaluations = int(items.size());
+  return {std::move(items), evaluations};
 }
 
-void CornerLimitPass::run(const PatchPlans& plans, int n_items, int group_limit) const {
-  if (n_items <= 0) return;
-  run_compute_pass(programs_(plans.shape), n_items, true, group_limit);
+void CornerLimitPass::run(const PatchPlans& plans, int n_evaluations, int n_items, int group_limit) const {
+  if (n_evaluations > 0) run_compute_pass(programs_(plans.shape), n_evaluations, true, group_limit);
+  if (n_items > n_evaluations) {
+    clear_.set("u_from", n_evaluations);
+    run_compute_pass(clear_, n_items - n_evaluations, true, group_limit);
+  }
   check_gl_errors("the corner pass");
 }
 

@@ -6,8 +6,9 @@
 // curve, which the adaptive levels measure (shaders/tess_levels.glsl). It runs over a list of items
 // (PlanBuffers::upload_corner_list), one evaluation or zeroed value each, which its builder here
 // finds on the CPU: a slot's two values are then evaluated by two invocations, where one invocation
-// looping over both made each SIMD batch run both. Dispatches split to the device's work-group
-// count limit.
+// looping over both made each SIMD batch run both. The evaluations come first; the zeroes after them
+// are written by a program of their own (shaders/corner_clear_comp.glsl). Dispatches split to the
+// device's work-group count limit.
 #include <vector>
 
 #include "core/plans/patch_plans.h"
@@ -15,6 +16,13 @@
 #include "render/gl/point_precision.h"
 
 namespace gps {
+
+/// The corner pass's items (gpu_layout.h, kCornerItemOps): its evaluations, then its zeroes.
+struct CornerItems {
+  std::vector<int> items;
+  int evaluations = 0;
+  size_t size() const { return items.size(); }
+};
 
 class CornerLimitPass {
 public:
@@ -24,19 +32,20 @@ public:
   /// The pass for points of `precision` from now on (its programs built at the first use).
   void set_precision(PointPrecision precision);
 
-  /// Runs the corner list's first `n_items` items (buffers bound).
-  void run(const PatchPlans& plans, int n_items, int group_limit) const;
+  /// Runs the corner list's first `n_items` items, of which the first `n_evaluations` evaluate (buffers
+  /// bound).
+  void run(const PatchPlans& plans, int n_evaluations, int n_items, int group_limit) const;
   /// The slots whose values an edit of `patches` can change: the owner slots of their corners and
   /// their own slots (a normal on a crease, the midpoint of the edge that starts there).
   static std::vector<int> edit_slots(const PatchPlans& plans, const std::vector<int>& patches);
-  /// The items (gpu_layout.h, kCornerItemOps) of `slots`: each slot's evaluations, and a zero for
-  /// the values it does not hold; the evaluations first, so that no SIMD batch runs both.
-  static std::vector<int> slot_items(const PatchPlans& plans, const std::vector<int>& slots);
+  /// The items of `slots`: each slot's evaluations, and a zero for the values it does not hold.
+  static CornerItems slot_items(const PatchPlans& plans, const std::vector<int>& slots);
   /// The evaluations of every corner slot of the plans' patches, for outputs cleared before.
-  static std::vector<int> all_items(const PatchPlans& plans);
+  static CornerItems all_items(const PatchPlans& plans);
 
 private:
   ShapePrograms programs_;
+  ShaderProgram clear_;  // the zeroes: the same for every shape and precision
 };
 
 }  // namespace gps

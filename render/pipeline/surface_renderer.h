@@ -225,7 +225,7 @@ private:
   long long points_generation_ = 0;           // bumped by every compute pass: the cache's key
   GlTexture matcap_ = GlTexture::none();      // made by set_matcap()
   long long tables_id_ = 0;                   // the replanner's id of tables_ (PlanChange), 0 where none gave one
-  std::vector<int> all_corner_items_;         // CornerLimitPass::all_items of tables_, once a pass needed them
+  CornerItems all_corner_items_;              // CornerLimitPass::all_items of tables_, once a pass needed them
   int last_corner_slots_ = 0;
   long long half_size_patches_ = 0;  // a split face's patches (quads), counted when the cache's buffer
                                      // estimate first needs them (−1: not yet)

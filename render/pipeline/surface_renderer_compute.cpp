@@ -22,21 +22,21 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
     buffers_.upload_edit(*changed, rows);
     const std::vector<int> patches = changed_patches(*changed, rows);
     const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
-    const std::vector<int> items = CornerLimitPass::slot_items(plans, corners);
-    buffers_.upload_corner_list(items);
+    const CornerItems items = CornerLimitPass::slot_items(plans, corners);
+    buffers_.upload_corner_list(items.items);
     buffers_.bind();
     compute_.run_listed(tables().stencils, int(changed->size()), int(rows.size()), group_limit_);
-    corners_.run(plans, int(items.size()), group_limit_);
+    corners_.run(plans, items.evaluations, int(items.size()), group_limit_);
     last_corner_slots_ = int(corners.size());
     cache_.points_changed(points_generation_, &patches);
     return;
   }
-  if (all_corner_items_.empty()) all_corner_items_ = CornerLimitPass::all_items(plans);
-  buffers_.upload_corner_list(all_corner_items_);
+  if (all_corner_items_.items.empty()) all_corner_items_ = CornerLimitPass::all_items(plans);
+  buffers_.upload_corner_list(all_corner_items_.items);
   buffers_.clear_corner_pass(plans);
   buffers_.bind();
   compute_.run_all(tables().stencils, group_limit_);
-  corners_.run(plans, int(all_corner_items_.size()), group_limit_);
+  corners_.run(plans, all_corner_items_.evaluations, int(all_corner_items_.size()), group_limit_);
   last_corner_slots_ = plans.corners() * plans.n_patches();
   if (edit)
     cache_.all_points_changed(points_generation_);
@@ -53,8 +53,8 @@ void SurfaceRenderer::run_compute_kept(const CovarianceMesh& mesh, const Surface
   const std::vector<int> patches = stale_corner_patches(
       before, tables(), mesh, [this]() -> const StencilDependents& { return dependents(); }, changed, change, origin);
   const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
-  const std::vector<int> items = CornerLimitPass::slot_items(plans, corners);
-  buffers_.upload_corner_list(items);
+  const CornerItems items = CornerLimitPass::slot_items(plans, corners);
+  buffers_.upload_corner_list(items.items);
   const StencilTable& stencils = tables().stencils;
   const std::vector<int> rows = points_carried ? rows_not_carried(before, changed, change, origin) : std::vector<int>{};
   const bool listed_rows = points_carried && !update_everything(rows.size(), size_t(stencils.n_rows()));
@@ -66,7 +66,7 @@ void SurfaceRenderer::run_compute_kept(const CovarianceMesh& mesh, const Surface
     compute_.run_listed_vertices(stencils, int(changed.size()), group_limit_);
   else
     compute_.run_all(stencils, group_limit_);
-  corners_.run(plans, int(items.size()), group_limit_);
+  corners_.run(plans, items.evaluations, int(items.size()), group_limit_);
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
   if (!cache_.has_stored_triangles()) return cache_.points_changed(points_generation_, nullptr);
