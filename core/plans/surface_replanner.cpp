@@ -104,15 +104,26 @@ std::vector<int> faces_reading(const PolygonTopology& t, const MeshConnectivity&
 }
 
 std::vector<int> faces_around(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<int>& faces) {
+  // Each face once, marked as it is met: gathered with its repeats (every face around a corner, at each
+  // corner), the list to sort was several times as long.
+  std::vector<char> met(size_t(t.n_faces()), 0);
   std::vector<int> around;
   for (const int g : faces)
     for (int k = t.offsets[size_t(g)]; k < t.offsets[size_t(g) + 1]; ++k) {
       const int w = t.verts[size_t(k)];
-      around.insert(around.end(), c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w)],
-                    c.vertex_faces.begin() + c.vertex_face_offsets[size_t(w) + 1]);
+      for (int i = c.vertex_face_offsets[size_t(w)]; i < c.vertex_face_offsets[size_t(w) + 1]; ++i)
+        if (const int f = c.vertex_faces[size_t(i)]; !met[size_t(f)]) {
+          met[size_t(f)] = 1;
+          around.push_back(f);
+        }
     }
-  std::sort(around.begin(), around.end());
-  around.erase(std::unique(around.begin(), around.end()), around.end());
+  if (around.size() * 16 < met.size()) {
+    std::sort(around.begin(), around.end());
+  } else {  // many: read off in order
+    around.clear();
+    for (size_t f = 0; f < met.size(); ++f)
+      if (met[f]) around.push_back(int(f));
+  }
   return around;
 }
 
