@@ -186,16 +186,70 @@ private:
   }
 
   // The edges in connectivity_of's order: the old edges that a kept face still has (in their order,
-  // which the vertices' order keeps) merged with the new faces' edges (sorted).
+  // which the vertices' order keeps) merged with the new faces' edges (sorted). The old edges are taken
+  // in blocks, on all cores, each with the new corners whose edges sort between its first kept edge and
+  // the next block's: counted first, then written where the counts before theirs put them.
   bool merge_edges() {
     const int n_old = c0_.n_edges();
     c_.face_edges.assign(t_.verts.size(), -1);
     edge_new_.assign(size_t(n_old), -1);
-    const size_t most = size_t(n_old) + new_corners_.size();
-    c_.edge_verts.resize(2 * most);
-    c_.edge_faces.resize(2 * most);
-    n_edges_ = 0;
-    size_t j = 0;
+    const int blocks = n_old >= kParallelFaces ? kBlocks : 1;
+    const auto block_edge = [&](int b) { return int(int64_t(n_old) * b / blocks); };
+    // Per block, its first new corner: the first whose edge does not sort before the block's first
+    // kept edge (the first block: the first); a block without kept edges takes none.
+    std::vector<size_t> first_corner(size_t(blocks) + 1, new_corners_.size());
+#pragma omp parallel for schedule(static) if (blocks > 1)
+    for (int b = 1; b < blocks; ++b)
+      for (int e = block_edge(b); e < block_edge(b + 1); ++e)
+        if (kept_faces(e).second > 0) {
+          const int low = vertex_new_[size_t(c0_.edge_verts[2 * size_t(e)])];
+          const int high = vertex_new_[size_t(c0_.edge_verts[2 * size_t(e) + 1])];
+          first_corner[size_t(b)] =
+              size_t(std::partition_point(new_corners_.begin(), new_corners_.end(),
+                                          [&](const NewCorner& x) { return before_key(x, low, high); }) -
+                     new_corners_.begin());
+          break;
+        }
+    first_corner[0] = 0;
+    for (int b = blocks - 1; b > 0; --b)
+      first_corner[size_t(b)] = std::min(first_corner[size_t(b)], first_corner[size_t(b) + 1]);
+    std::vector<int> first_edge(size_t(blocks) + 1, 0);  // counts first, then where each block's edges start
+    std::vector<std::vector<int>> new_edges(static_cast<size_t>(blocks));
+    bool valid = true;
+#pragma omp parallel for schedule(static) reduction(&& : valid) if (blocks > 1)
+    for (int b = 0; b < blocks; ++b)
+      valid = valid && merge_block<false>(block_edge(b), block_edge(b + 1), first_corner[size_t(b)],
+                                          first_corner[size_t(b) + 1], first_edge[size_t(b) + 1], new_edges[size_t(b)]);
+    if (!valid) return false;
+    for (int b = 0; b < blocks; ++b) first_edge[size_t(b) + 1] += first_edge[size_t(b)];
+    c_.edge_verts.resize(2 * size_t(first_edge.back()));
+    c_.edge_faces.resize(2 * size_t(first_edge.back()));
+#pragma omp parallel for schedule(static) if (blocks > 1)
+    for (int b = 0; b < blocks; ++b) {
+      int at = first_edge[size_t(b)];
+      merge_block<true>(block_edge(b), block_edge(b + 1), first_corner[size_t(b)], first_corner[size_t(b) + 1], at,
+                        new_edges[size_t(b)]);
+    }
+    for (const std::vector<int>& edges : new_edges) new_edges_.insert(new_edges_.end(), edges.begin(), edges.end());
+    return true;
+  }
+
+  // Old edge e's faces that are kept, by their new numbers, and how many.
+  std::pair<std::array<int, 2>, int> kept_faces(int e) const {
+    int n_kept = 0;
+    std::array<int, 2> kept{-1, -1};
+    for (int s = 0; s < 2; ++s) {
+      const int g = c0_.edge_faces[2 * size_t(e) + size_t(s)];
+      if (g >= 0 && face_new_[size_t(g)] >= 0) kept[size_t(n_kept++)] = face_new_[size_t(g)];
+    }
+    return {kept, n_kept};
+  }
+
+  // merge_edges for old edges [e_begin, e_end) and new corners [j, j_end): counts the edges into `at`
+  // (from 0), or (kWrite) writes them from edge `at` on, with the new ones in `new_edges`. False where an
+  // edge would not be manifold.
+  template <bool kWrite>
+  bool merge_block(int e_begin, int e_end, size_t j, size_t j_end, int& at, std::vector<int>& new_edges) {
     // Where the old vertices and the kept faces keep their numbers, a run of old edges whose faces all
     // stay, before the next new face's edge, is the same edges: copied in one go.
     const bool same_numbers = vertices_keep_numbers_ && kept_faces_keep_numbers_;
@@ -204,67 +258,72 @@ private:
       return a >= 0 && face_new_[size_t(a)] == a && (b < 0 || face_new_[size_t(b)] == b);
     };
     const auto before_new_corner = [&](int e) {
-      if (j == new_corners_.size()) return true;
+      if (j == j_end) return true;
       const int low = c0_.edge_verts[2 * size_t(e)], high = c0_.edge_verts[2 * size_t(e) + 1];
       return low < new_corners_[j].low || (low == new_corners_[j].low && high < new_corners_[j].high);
     };
-    for (int e = 0; e < n_old; ++e) {
+    for (int e = e_begin; e < e_end; ++e) {
       if (same_numbers) {
         int end = e;
-        while (end < n_old && stays(end) && before_new_corner(end)) ++end;
+        while (end < e_end && stays(end) && before_new_corner(end)) ++end;
         if (end > e) {
-          const size_t at = 2 * size_t(n_edges_), from = 2 * size_t(e), count = 2 * size_t(end - e);
-          std::copy_n(c0_.edge_verts.begin() + long(from), count, c_.edge_verts.begin() + long(at));
-          std::copy_n(c0_.edge_faces.begin() + long(from), count, c_.edge_faces.begin() + long(at));
-          for (int k = e; k < end; ++k) edge_new_[size_t(k)] = n_edges_++;
+          if constexpr (kWrite) {
+            const size_t to = 2 * size_t(at), from = 2 * size_t(e), count = 2 * size_t(end - e);
+            std::copy_n(c0_.edge_verts.begin() + long(from), count, c_.edge_verts.begin() + long(to));
+            std::copy_n(c0_.edge_faces.begin() + long(from), count, c_.edge_faces.begin() + long(to));
+            for (int k = e; k < end; ++k) edge_new_[size_t(k)] = at++;
+          } else {
+            at += end - e;
+          }
           e = end - 1;
           continue;
         }
       }
-      int n_kept = 0;
-      std::array<int, 2> kept{-1, -1};
-      for (int s = 0; s < 2; ++s) {
-        const int g = c0_.edge_faces[2 * size_t(e) + size_t(s)];
-        if (g >= 0 && face_new_[size_t(g)] >= 0) kept[size_t(n_kept++)] = face_new_[size_t(g)];
-      }
+      const auto [kept, n_kept] = kept_faces(e);
       if (n_kept == 0) continue;
       const int low = vertex_new_[size_t(c0_.edge_verts[2 * size_t(e)])];
       const int high = vertex_new_[size_t(c0_.edge_verts[2 * size_t(e) + 1])];
-      while (j < new_corners_.size() && before_key(new_corners_[j], low, high))
-        if (!add_edge(-1, new_corners_[j].low, new_corners_[j].high, {-1, -1}, 0, j)) return false;
-      edge_new_[size_t(e)] = n_edges_;
-      if (!add_edge(e, low, high, kept, n_kept, j)) return false;
+      while (j < j_end && before_key(new_corners_[j], low, high))
+        if (!add_edge<kWrite>(-1, new_corners_[j].low, new_corners_[j].high, {-1, -1}, 0, j, j_end, at, new_edges))
+          return false;
+      if constexpr (kWrite) edge_new_[size_t(e)] = at;
+      if (!add_edge<kWrite>(e, low, high, kept, n_kept, j, j_end, at, new_edges)) return false;
     }
-    while (j < new_corners_.size())
-      if (!add_edge(-1, new_corners_[j].low, new_corners_[j].high, {-1, -1}, 0, j)) return false;
-    c_.edge_verts.resize(2 * size_t(n_edges_));
-    c_.edge_faces.resize(2 * size_t(n_edges_));
+    while (j < j_end)
+      if (!add_edge<kWrite>(-1, new_corners_[j].low, new_corners_[j].high, {-1, -1}, 0, j, j_end, at, new_edges))
+        return false;
     return true;
   }
 
-  // Adds edge low–high: old edge `e` (−1 for none) with its kept faces, and the new corners from `j` on
-  // that run along it (advancing j past them). False where it would not be manifold.
-  bool add_edge(int e, int low, int high, std::array<int, 2> faces, int n_kept, size_t& j) {
+  // Adds edge low–high as edge `at` (then advanced; written only where kWrite): old edge `e` (−1 for
+  // none) with its kept faces, and the new corners from `j` on (before j_end) that run along it
+  // (advancing j past them). False where it would not be manifold.
+  template <bool kWrite>
+  bool add_edge(int e, int low, int high, std::array<int, 2> faces, int n_kept, size_t& j, size_t j_end, int& at,
+                std::vector<int>& new_edges) {
     std::array<bool, 2> up{false, false};
     int n = n_kept;
-    for (; j < new_corners_.size() && new_corners_[j].low == low && new_corners_[j].high == high; ++j) {
+    for (; j < j_end && new_corners_[j].low == low && new_corners_[j].high == high; ++j) {
       if (n == 2) return false;  // a third face on the edge
       faces[size_t(n)] = new_corners_[j].face;
       up[size_t(n++)] = new_corners_[j].up;
-      c_.face_edges[size_t(new_corners_[j].corner)] = n_edges_;
+      if constexpr (kWrite) c_.face_edges[size_t(new_corners_[j].corner)] = at;
     }
     // Two faces run an edge in opposite directions (a flipped face otherwise); old pairs were checked.
     if (n == 2 && n_kept < 2) {
       if (n_kept == 1) up[0] = kept_runs_up(face_old_[size_t(faces[0])], e);
       if (up[0] == up[1]) return false;
     }
-    if (n == 2 && faces[0] > faces[1]) std::swap(faces[0], faces[1]);
-    if (e < 0) new_edges_.push_back(n_edges_);
-    const size_t at = 2 * size_t(n_edges_++);
-    c_.edge_verts[at] = low;
-    c_.edge_verts[at + 1] = high;
-    c_.edge_faces[at] = faces[0];
-    c_.edge_faces[at + 1] = faces[1];
+    if constexpr (kWrite) {
+      if (n == 2 && faces[0] > faces[1]) std::swap(faces[0], faces[1]);
+      if (e < 0) new_edges.push_back(at);
+      const size_t to = 2 * size_t(at);
+      c_.edge_verts[to] = low;
+      c_.edge_verts[to + 1] = high;
+      c_.edge_faces[to] = faces[0];
+      c_.edge_faces[to + 1] = faces[1];
+    }
+    ++at;
     return true;
   }
 
@@ -456,7 +515,6 @@ private:
   std::vector<int> vertex_new_, face_new_, face_old_, edge_new_;
   bool kept_faces_keep_numbers_ = true;  // every old face kept is the new face of its number
   bool vertices_keep_numbers_ = false;   // every old vertex is the new vertex of its number, the new ones after
-  int n_edges_ = 0;             // the edges added so far
   std::vector<int> new_edges_;  // the edges that are no old edge
   std::vector<NewCorner> new_corners_;
   std::vector<char> touched_;

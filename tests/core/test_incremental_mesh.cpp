@@ -12,6 +12,7 @@
 #include <optional>
 #include <cstdio>
 #include <random>
+#include <span>
 
 #include "core/mesh/connectivity_update.h"
 #include "core/mesh/covariance_mesh.h"
@@ -285,6 +286,50 @@ TEST(IncrementalConnectivity, AFaceOfTheOldNumbersOnOtherVerticesIsNotTheOldFace
   const std::optional<MeshConnectivity> updated = updated_connectivity(t, before.connectivity(), t, moved);
   if (updated) test::expect_equal(*updated, before.connectivity());
   EXPECT_FALSE(updated.has_value()) << "every face is new: a whole build costs less";
+}
+
+// On a mesh whose edges are merged in blocks on all cores: a hole over a run of vertices (its faces gone,
+// its vertices dropped, the others renumbered) leaves blocks of edges without a kept face, and a triangle
+// on the hole's rim past them adds edges that sort after those blocks. The update puts them where a whole
+// build does.
+TEST(IncrementalConnectivity, EdgesOfNewFacesPastABlockOfGoneEdgesLandWhereAWholeBuildPutsThem) {
+  const CovarianceMesh before = make_sample("sphere", 6000);
+  ASSERT_GE(before.n_edges(), size_t(2 * kParallelFaces));
+  const int v0 = int(before.n_vertices()) / 3, v1 = v0 + 400;
+  std::vector<char> gone(before.n_faces(), 0);
+  Changed c;
+  for (size_t f = 0; f < before.n_faces(); ++f) {
+    const std::span<const int> corners = before.face(f);
+    gone[f] = std::any_of(corners.begin(), corners.end(), [&](int v) { return v >= v0 && v < v1; });
+    if (gone[f]) continue;
+    c.faces.emplace_back(corners.begin(), corners.end());
+    c.origins.faces.push_back(int(f));
+  }
+  // A rim edge with both ends past the hole, run x → y by the face kept beside it.
+  const MeshConnectivity& k = before.connectivity();
+  int x = -1, y = -1;
+  for (size_t e = 0; e < k.n_edges() && x < 0; ++e) {
+    const int a = k.edge_faces[2 * e], b = k.edge_faces[2 * e + 1];
+    if (a < 0 || b < 0 || gone[size_t(a)] == gone[size_t(b)] || k.edge_verts[2 * e] < v1) continue;
+    const std::span<const int> kept = before.face(size_t(gone[size_t(a)] ? b : a));
+    for (size_t i = 0; i < kept.size(); ++i) {
+      const int from = kept[i], to = kept[(i + 1) % kept.size()];
+      if (std::minmax(from, to) == std::minmax(k.edge_verts[2 * e], k.edge_verts[2 * e + 1])) x = from, y = to;
+    }
+  }
+  ASSERT_GE(x, 0) << "no rim edge past the hole";
+  // The hole's vertices dropped, the others renumbered in order, a new vertex last.
+  std::vector<int> new_index(before.n_vertices(), -1);
+  for (int v = 0; v < int(before.n_vertices()); ++v)
+    if (v < v0 || v >= v1) {
+      new_index[size_t(v)] = c.n_vertices++;
+      c.origins.vertices.push_back(v);
+    }
+  for (auto& face : c.faces)
+    for (int& v : face) v = new_index[size_t(v)];
+  c.faces.push_back({new_index[size_t(y)], new_index[size_t(x)], c.n_vertices++});
+  c.origins.vertices.push_back(-1);
+  EXPECT_EQ(update_against_whole_build(before, c, 0), Outcome::vouched);
 }
 
 // A vertex of 100,000 faces and a face of 100,000 corners: an operation beside them reads each once
