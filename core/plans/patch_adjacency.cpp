@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -128,18 +131,29 @@ void add_sharp_flags(PatchPlans& plans, const PolygonTopology& topology, const S
 // Corner owners: the first (lowest) patch with each corner point.
 void add_corner_owners(PatchPlans& plans) {
   const int n = plans.corners(), n_patches = plans.n_patches();
-  int32_t corner_points = 0;
-  for (const int32_t point : plans.patch_corner_points) corner_points = std::max(corner_points, point + 1);
-  // Corner point -> its first use's (patch, corner), as corner_owners holds it (no division per corner).
-  std::vector<std::array<int32_t, 2>> owner(size_t(corner_points), {-1, -1});
   const int32_t* points = plans.patch_corner_points.data();
-  int32_t* owners = plans.corner_owners.data();
+  int32_t corner_points = 0;
+#pragma omp parallel for schedule(static) reduction(max : corner_points) if (n_patches >= kParallelFaces)
+  for (size_t i = 0; i < plans.patch_corner_points.size(); ++i) corner_points = std::max(corner_points, points[i] + 1);
+  // Corner point -> its first use, as patch · 4 + corner (in the order of the uses, for either shape):
+  // the least of its uses, found on all cores.
+  std::vector<int32_t> first_use(size_t(corner_points), std::numeric_limits<int32_t>::max());
+#pragma omp parallel for schedule(static) if (n_patches >= kParallelFaces)
   for (int p = 0; p < n_patches; ++p)
-    for (int c = 0; c < n; ++c, ++points, owners += 2) {
-      std::array<int32_t, 2>& first_use = owner[size_t(*points)];
-      if (first_use[0] < 0) first_use = {p, c};
-      owners[0] = first_use[0];
-      owners[1] = first_use[1];
+    for (int c = 0; c < n; ++c) {
+      std::atomic_ref<int32_t> first(first_use[size_t(points[size_t(n * p + c)])]);
+      const int32_t use = p << 2 | c;
+      int32_t seen = first.load(std::memory_order_relaxed);
+      while (use < seen && !first.compare_exchange_weak(seen, use, std::memory_order_relaxed)) {
+      }
+    }
+  int32_t* owners = plans.corner_owners.data();
+#pragma omp parallel for schedule(static) if (n_patches >= kParallelFaces)
+  for (int p = 0; p < n_patches; ++p)
+    for (int c = 0; c < n; ++c) {
+      const int32_t use = first_use[size_t(points[size_t(n * p + c)])];
+      owners[2 * size_t(n * p + c)] = use >> 2;
+      owners[2 * size_t(n * p + c) + 1] = use & 3;
     }
 }
 

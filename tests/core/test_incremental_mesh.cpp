@@ -308,7 +308,7 @@ TEST(IncrementalConnectivity, EdgesOfNewFacesPastABlockOfGoneEdgesLandWhereAWhol
   // A rim edge with both ends past the hole, run x → y by the face kept beside it.
   const MeshConnectivity& k = before.connectivity();
   int x = -1, y = -1;
-  for (size_t e = 0; e < k.n_edges() && x < 0; ++e) {
+  for (size_t e = 0; e < size_t(k.n_edges()) && x < 0; ++e) {
     const int a = k.edge_faces[2 * e], b = k.edge_faces[2 * e + 1];
     if (a < 0 || b < 0 || gone[size_t(a)] == gone[size_t(b)] || k.edge_verts[2 * e] < v1) continue;
     const std::span<const int> kept = before.face(size_t(gone[size_t(a)] ? b : a));
