@@ -135,8 +135,8 @@ void add_corner_owners(PatchPlans& plans) {
   int32_t corner_points = 0;
 #pragma omp parallel for schedule(static) reduction(max : corner_points) if (n_patches >= kParallelFaces)
   for (size_t i = 0; i < plans.patch_corner_points.size(); ++i) corner_points = std::max(corner_points, points[i] + 1);
-  // Corner point -> its first use, as patch · 4 + corner (in the order of the uses, for either shape):
-  // the least of its uses, found on all cores.
+  // Corner point -> its first use, as patch · 4 + corner (in the order of the uses, for either shape;
+  // a surface's patches stay far below 2^29): the least of its uses, found on all cores.
   std::vector<int32_t> first_use(size_t(corner_points), std::numeric_limits<int32_t>::max());
 #pragma omp parallel for schedule(static) if (n_patches >= kParallelFaces)
   for (int p = 0; p < n_patches; ++p)
