@@ -92,11 +92,12 @@ CornerItems CornerLimitPass::all_items(const PatchPlans& plans) {
   return {std::move(items), evaluations};
 }
 
-void CornerLimitPass::run(const PatchPlans& plans, int n_evaluations, int n_items, int group_limit) const {
-  if (n_evaluations > 0) run_compute_pass(programs_(plans.shape), n_evaluations, true, group_limit);
-  if (n_items > n_evaluations) {
-    clear_.set("u_from", n_evaluations);
-    run_compute_pass(clear_, n_items - n_evaluations, true, group_limit);
+void CornerLimitPass::run(const PatchPlans& plans, const CornerItems& items, int group_limit) const {
+  const int n_items = int(items.size());
+  if (items.evaluations > 0) run_compute_pass(programs_(plans.shape), items.evaluations, true, group_limit);
+  if (n_items > items.evaluations) {
+    clear_.set("u_from", items.evaluations);
+    run_compute_pass(clear_, n_items - items.evaluations, true, group_limit);
   }
   check_gl_errors("the corner pass");
 }

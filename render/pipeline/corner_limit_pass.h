@@ -32,9 +32,8 @@ public:
   /// The pass for points of `precision` from now on (its programs built at the first use).
   void set_precision(PointPrecision precision);
 
-  /// Runs the corner list's first `n_items` items, of which the first `n_evaluations` evaluate (buffers
-  /// bound).
-  void run(const PatchPlans& plans, int n_evaluations, int n_items, int group_limit) const;
+  /// Runs `items`, uploaded as the corner list (buffers bound): its evaluations, then its zeroes.
+  void run(const PatchPlans& plans, const CornerItems& items, int group_limit) const;
   /// The slots whose values an edit of `patches` can change: the owner slots of their corners and
   /// their own slots (a normal on a crease, the midpoint of the edge that starts there).
   static std::vector<int> edit_slots(const PatchPlans& plans, const std::vector<int>& patches);

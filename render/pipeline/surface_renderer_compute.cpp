@@ -26,7 +26,7 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
     buffers_.upload_corner_list(items.items);
     buffers_.bind();
     compute_.run_listed(tables().stencils, int(changed->size()), int(rows.size()), group_limit_);
-    corners_.run(plans, items.evaluations, int(items.size()), group_limit_);
+    corners_.run(plans, items, group_limit_);
     last_corner_slots_ = int(corners.size());
     cache_.points_changed(points_generation_, &patches);
     return;
@@ -36,7 +36,7 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
   buffers_.clear_corner_pass(plans);
   buffers_.bind();
   compute_.run_all(tables().stencils, group_limit_);
-  corners_.run(plans, all_corner_items_.evaluations, int(all_corner_items_.size()), group_limit_);
+  corners_.run(plans, all_corner_items_, group_limit_);
   last_corner_slots_ = plans.corners() * plans.n_patches();
   if (edit)
     cache_.all_points_changed(points_generation_);
@@ -66,7 +66,7 @@ void SurfaceRenderer::run_compute_kept(const CovarianceMesh& mesh, const Surface
     compute_.run_listed_vertices(stencils, int(changed.size()), group_limit_);
   else
     compute_.run_all(stencils, group_limit_);
-  corners_.run(plans, items.evaluations, int(items.size()), group_limit_);
+  corners_.run(plans, items, group_limit_);
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
   if (!cache_.has_stored_triangles()) return cache_.points_changed(points_generation_, nullptr);
