@@ -92,8 +92,11 @@ void evaluate_dual(const PatchPlans& plans, const std::vector<Dual>& points, int
   if (kind_out) *kind_out = NodeKind(kind);
 }
 
-std::optional<PatchSample> evaluate_patch(const PatchPlans& plans, const std::vector<Dual>& points, int patch, double u,
-                                          double v) {
+namespace {
+
+// The sample at (u, v), its normal that of its tangents as they are.
+std::optional<PatchSample> sample_at(const PatchPlans& plans, const std::vector<Dual>& points, int patch, double u,
+                                     double v) {
   PatchSample s;
   evaluate_dual(plans, points, patch, u, v, s.q, s.q_u, s.q_v, &s.depth, &s.kind);
   const Eigen::LLT<Mat3> llt(unvech(s.q));
@@ -104,6 +107,23 @@ std::optional<PatchSample> evaluate_patch(const PatchPlans& plans, const std::ve
   s.du = llt.solve(Vec3(s.q_u.tail<3>()) - unvech(s.q_u) * s.position);
   s.dv = llt.solve(Vec3(s.q_v.tail<3>()) - unvech(s.q_v) * s.position);
   s.normal = s.du.cross(s.dv).normalized();
+  return s;
+}
+
+}  // namespace
+
+bool tangents_parallel(const Vec3& du, const Vec3& dv) {
+  return !(du.cross(dv).squaredNorm() > kParallelSine * kParallelSine * du.squaredNorm() * dv.squaredNorm());
+}
+
+std::optional<PatchSample> evaluate_patch(const PatchPlans& plans, const std::vector<Dual>& points, int patch, double u,
+                                          double v) {
+  std::optional<PatchSample> s = sample_at(plans, points, patch, u, v);
+  if (!s || !tangents_parallel(s->du, s->dv)) return s;
+  const double centre = plans.shape == PatchShape::quad ? 0.5 : 1.0 / 3.0;
+  const std::optional<PatchSample> beside =
+      sample_at(plans, points, patch, u + kFoldStep * (centre - u), v + kFoldStep * (centre - v));
+  s->normal = beside && !tangents_parallel(beside->du, beside->dv) ? beside->normal : Vec3::Zero();
   return s;
 }
 

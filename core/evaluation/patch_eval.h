@@ -14,7 +14,7 @@ struct PatchSample {
   Vec3 position;
   Mat3 covariance;
   Vec3 du, dv;    // μ_u, μ_v (thesis Eq. 3.12)
-  Vec3 normal;    // normalize(μ_u × μ_v)
+  Vec3 normal;    // normalize(μ_u × μ_v); where they run parallel, evaluate_patch's fold normal
   int depth = 0;  // of the leaf node
   NodeKind kind = NodeKind::regular;
 };
@@ -23,7 +23,19 @@ struct PatchSample {
 void evaluate_dual(const PatchPlans& plans, const std::vector<Dual>& points, int patch, double u, double v, Dual& q,
                    Dual& q_u, Dual& q_v, int* depth = nullptr, NodeKind* kind = nullptr);
 
-/// The limit surface at (u, v) of a patch. Empty if q̂ left the positive definite cone.
+/// Tangents whose cross product is at most this much of their lengths' product: parallel, the cross
+/// product's direction rounding alone.
+constexpr double kParallelSine = 1e-4;
+bool tangents_parallel(const Vec3& du, const Vec3& dv);
+/// Where the tangents run parallel the parametrisation folds (a patch corner between two edges in one
+/// line, as at the vertex that splits a boundary edge, a corner of one face): the normal there is that
+/// a step of this much of the way towards the patch's centre (u = v = ½, or ⅓ on a triangle), which
+/// tends to the surface's normal as the step shrinks. The GPU's corner pass takes the same step
+/// (shaders/corner_limit_comp.glsl).
+constexpr double kFoldStep = 1.0 / 256.0;
+
+/// The limit surface at (u, v) of a patch. Empty if q̂ left the positive definite cone. Where the
+/// tangents run parallel, the normal a kFoldStep towards the centre, or zero where there too.
 std::optional<PatchSample> evaluate_patch(const PatchPlans& plans, const std::vector<Dual>& points, int patch, double u,
                                           double v);
 
