@@ -19,15 +19,6 @@ const int kCorners = 3;
 const int kCorners = 4;
 #endif
 
-// One evaluation of the patch's plan at `uv`.
-void evaluate_patch(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int kind) {
-#ifdef GPS_TRIANGLE_PATCHES
-  evaluate_triangle_plan(patch_id, uv.x, uv.y, mu, mu_u, mu_v, kind);
-#else
-  evaluate_plan(patch_id, uv, mu, mu_u, mu_v, kind);
-#endif
-}
-
 // Tangents whose cross product is at most this much of their lengths' product run parallel: its
 // direction is rounding alone. This and kFoldStep are the CPU's (core/evaluation/patch_eval.h).
 const float kParallelSine = 1e-4;
@@ -35,26 +26,12 @@ bool parallel(vec3 mu_u, vec3 mu_v, vec3 n) {
   return !(dot(n, n) > kParallelSine * kParallelSine * dot(mu_u, mu_u) * dot(mu_v, mu_v));
 }
 
-// The unit normal at a corner from its tangents. Where they run parallel the parametrisation folds
-// there (a corner whose two edges run on in one line, as on a boundary edge split in two, whose new
-// vertex is a corner of one face) and has no normal of its own: the normal a step of kFoldStep
-// towards the patch's centre, which tends to the surface's normal there as the step shrinks; +z where
-// the patch has none there either (collapsed to a curve or a point).
+// Where a corner's tangents run parallel the parametrisation folds there (a corner whose two edges
+// run on in one line, as on a boundary edge split in two, whose new vertex is a corner of one face)
+// and has no normal of its own: the normal a step of kFoldStep towards the patch's centre, which tends
+// to the surface's normal there as the step shrinks; +z where the patch has none there either
+// (collapsed to a curve or a point).
 const float kFoldStep = 1.0 / 256.0;
-vec3 corner_normal(int patch_id, vec2 corner_uv, vec3 mu_u, vec3 mu_v) {
-  vec3 n = cross(mu_u, mu_v);
-  if (!parallel(mu_u, mu_v, n)) return normalize(n);
-#ifdef GPS_TRIANGLE_PATCHES
-  const vec2 centre = vec2(1.0 / 3.0);
-#else
-  const vec2 centre = vec2(0.5);
-#endif
-  vec3 mu;
-  int kind;
-  evaluate_patch(patch_id, mix(corner_uv, centre, kFoldStep), mu, mu_u, mu_v, kind);
-  n = cross(mu_u, mu_v);
-  return parallel(mu_u, mu_v, n) ? vec3(0.0, 0.0, 1.0) : normalize(n);
-}
 
 // One evaluation per item. Which slot evaluates what (its owner a corner, the edge naming its curve a
 // midpoint) the list's builder decides (render/pipeline/corner_limit_pass.h); it lists the evaluations
@@ -73,13 +50,38 @@ void main() {
   vec2 corner_uv = vec2(corner == 1 || corner == 2 ? 1.0 : 0.0, corner >= 2 ? 1.0 : 0.0);
 #endif
   vec2 uv = midpoint ? edge_point_uv(EdgePoint(patch_id, corner, 1, 2), kCorners) : corner_uv;
-  vec3 mu, mu_u, mu_v;
-  int kind;
-  evaluate_patch(patch_id, uv, mu, mu_u, mu_v, kind);
+#ifdef GPS_TRIANGLE_PATCHES
+  const vec2 centre = vec2(1.0 / 3.0);
+#else
+  const vec2 centre = vec2(0.5);
+#endif
+  // A second evaluation a step inside where a corner folds, in a loop the compiler keeps as one: a
+  // second copy of the evaluation would cost every corner (registers, code) for the few that fold.
+  vec3 limit = vec3(0.0), normal = vec3(0.0, 0.0, 1.0);
+  int limit_kind = 0;
+  for (int step = 0; step < 2; step += midpoint ? 2 : 1) {
+    vec3 mu, mu_u, mu_v;
+    int kind;
+#ifdef GPS_TRIANGLE_PATCHES
+    evaluate_triangle_plan(patch_id, uv.x, uv.y, mu, mu_u, mu_v, kind);
+#else
+    evaluate_plan(patch_id, uv, mu, mu_u, mu_v, kind);
+#endif
+    if (step == 0) {
+      limit = mu;
+      limit_kind = kind;
+    }
+    vec3 n = cross(mu_u, mu_v);
+    if (!parallel(mu_u, mu_v, n)) {
+      normal = normalize(n);
+      break;
+    }
+    uv = mix(corner_uv, centre, kFoldStep);
+  }
   if (midpoint) {
-    curve_midpoints[slot] = vec4(mu, 0.0);
+    curve_midpoints[slot] = vec4(limit, 0.0);
   } else {
-    corner_limits[2 * slot] = vec4(mu, float(kind));
-    corner_limits[2 * slot + 1] = vec4(corner_normal(patch_id, corner_uv, mu_u, mu_v), 0.0);
+    corner_limits[2 * slot] = vec4(limit, float(limit_kind));
+    corner_limits[2 * slot + 1] = vec4(normal, 0.0);
   }
 }
