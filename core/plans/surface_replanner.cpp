@@ -387,7 +387,10 @@ int SurfaceReplanner::set_topology(const CovarianceMesh& mesh, const std::vector
 
 int SurfaceReplanner::replan(LocalMesh&& base, Scheme scheme, const Sharpness& sharpness,
                              const std::vector<int>& origin) {
-  const bool same_builder = scheme == scheme_ && !ranges_.empty() && base.has_creases() == base_.has_creases();
+  // Loop plans creased and smooth meshes with two builders, whose ranges do not mix; Catmull-Clark's
+  // one builder plans both, so a first crease or corner is planned where it reaches.
+  const bool same_builder = scheme == scheme_ && !ranges_.empty() &&
+                            (scheme == Scheme::catmull_clark || base.has_creases() == base_.has_creases());
   const LocalMesh previous = std::exchange(base_, std::move(base));
   const Sharpness old_sharpness = std::exchange(sharpness_, sharpness);
   scheme_ = scheme;

@@ -6,9 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <random>
 
 #include "core/mesh/mesh_delta.h"
+#include "core/modelling/crease_edges.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/fill.h"
@@ -194,6 +196,28 @@ TEST(IncrementalPlans, AnExtrudeBuildsAFewRangesAgain) {
   EXPECT_LE(planned, SurfaceReplanner::kFacesPerRange / 2);  // the faces around it, not their ranges
   EXPECT_GT(planned, 0);
   test::expect_same_tables(replanner.tables(), build_surface_plans(after, options, {}), "extruded");
+}
+
+// The first crease or corner of a Catmull-Clark mesh is planned as any later one: the faces around it
+// again, not the whole mesh (one builder plans creased and smooth quads alike); and back to smooth.
+TEST(IncrementalPlans, AFirstCreaseOrCornerOfAQuadMeshBuildsTheFacesAroundIt) {
+  const CovarianceMesh sphere = make_sample("sphere", 6000);
+  const PlanOptions options;
+  SurfaceReplanner replanner(sphere, options);
+  const std::array<int, 2> edge = sphere.edge(sphere.n_faces());
+  for (const double sharpness : {2.0, kInfiniteSharpness}) {
+    for (const bool corner : {false, true}) {
+      const Modelled sharp =
+          corner ? set_corner(sphere, {edge[0]}, sharpness) : set_crease(sphere, {{edge[0], edge[1]}}, sharpness);
+      const std::string where = sharp.summary;
+      const int planned = replanner.set_topology(sharp.mesh, sharp.vertex_origin);
+      EXPECT_GT(planned, 0) << where;
+      EXPECT_LE(planned, SurfaceReplanner::kFacesPerRange / 2) << where;
+      test::expect_same_tables(replanner.tables(), build_surface_plans(sharp.mesh, options), where);
+      EXPECT_LE(replanner.set_topology(sphere, {}), SurfaceReplanner::kFacesPerRange / 2) << where << ", undone";
+      test::expect_same_tables(replanner.tables(), build_surface_plans(sphere, options), where + ", undone");
+    }
+  }
 }
 
 // A mesh made by an operation, or restored by its undo, carries the faces its update found continued:
