@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/plans/kept_patch_records.h"
+
 namespace gps {
 
 namespace {
@@ -205,88 +207,223 @@ void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, con
   if (has_infinite_sharpness(sharpness)) add_sharp_flags(plans, topology, sharpness, connectivity);
 }
 
-bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
-                            const std::vector<int>& new_of_old) {
+namespace {
+
+// An update of the edge records: the plans being made, the records before, and what is to be linked.
+class RecordUpdate {
+public:
+  RecordUpdate(PatchPlans& plans, const std::vector<int32_t>& old_neighbours)
+      : plans_(plans), old_(old_neighbours), n_(plans.corners()) {}
+
+  // Room for every record: each is written below (a boundary until linked again), and every owner by
+  // add_corner_owners, so storage the arrays already hold is not filled first.
+  void resize() {
+    plans_.patch_neighbours.resize(size_t(4 * n_ * plans_.n_patches()));
+    plans_.corner_owners.resize(size_t(2 * n_ * plans_.n_patches()));
+  }
+
+  // New patch p: its records a boundary until linked again, its edges' keys listed (sorted by
+  // sort_new_keys) for the kept boundary edges to look up.
+  void add_new(int p) {
+    for (int k = 0; k < n_; ++k) {
+      unlink(p, k);
+      const EdgeUse e = edge_use(plans_, p, k);
+      new_keys_.push_back(edge_key(e));
+      if (e.from != e.to) again_.push_back(e);
+    }
+  }
+  void sort_new_keys() { std::sort(new_keys_.begin(), new_keys_.end()); }
+
+  // Kept patch p (q before; `new_of(patch before)`: its number now, −1 gone): a record keeps its patches,
+  // renumbered, unless the patch beside it is gone, its edge is a boundary that a new patch now has, or
+  // it is flagged sharp (creases that are gone); those are unlinked, their edges put in `relink`, and p
+  // is true's. The boundary records kept go in `boundary`.
+  template <class NewOf>
+  bool carry(int p, int q, const NewOf& new_of, std::vector<EdgeUse>& relink, std::vector<int>& boundary) const {
+    bool unlinked = false;
+    for (int k = 0; k < n_; ++k) {
+      const int32_t* r = &old_[size_t(4 * (n_ * q + k))];
+      bool kept =
+          r[0] >= 0 || !std::binary_search(new_keys_.begin(), new_keys_.end(), edge_key(edge_use(plans_, p, k)));
+      for (int j = 0; j < 4 && kept; j += 2)
+        kept = r[j] < 0 || (new_of(r[j]) >= 0 && !(r[j + 1] & kNeighbourSharpEdge));
+      if (!kept) {
+        unlink(p, k);
+        if (const EdgeUse e = edge_use(plans_, p, k); e.from != e.to) relink.push_back(e);
+        unlinked = true;
+        continue;
+      }
+      int32_t* out = &plans_.patch_neighbours[size_t(4 * (n_ * p + k))];
+      for (int j = 0; j < 4; j += 2) {
+        out[j] = r[j] >= 0 ? new_of(r[j]) : -1;
+        out[j + 1] = r[j + 1];
+      }
+      if (out[0] < 0) boundary.push_back(n_ * p + k);
+    }
+    return unlinked;
+  }
+
+  void add_again(const std::vector<EdgeUse>& uses) { again_.insert(again_.end(), uses.begin(), uses.end()); }
+
+  // Links the edges to be linked, in groups of one edge, in patch order within a group, as
+  // add_patch_adjacency links them: sorted by key, then by patch edge (patch · n + k, unique), which
+  // carries the use's index below it.
+  void link_again() {
+    std::vector<std::pair<uint64_t, uint64_t>> order(again_.size());
+    for (size_t i = 0; i < again_.size(); ++i) {
+      const EdgeUse& e = again_[i];
+      order[i] = {edge_key(e), (uint64_t(e.patch) * uint64_t(n_) + uint64_t(e.k)) << 32 | i};
+    }
+    std::sort(order.begin(), order.end());
+    std::vector<const EdgeUse*> group;
+    for (size_t i = 0; i < order.size();) {
+      group.clear();
+      size_t j = i;
+      for (; j < order.size() && order[j].first == order[i].first; ++j)
+        group.push_back(&again_[size_t(order[j].second & 0xffffffffu)]);
+      link_edge(plans_, group);
+      i = j;
+    }
+  }
+
+  // The writes: `written` (sorted here) and the boundary records, those kept (`kept_boundary`) and
+  // those of the written patches as linked.
+  void tell(std::vector<int>&& written, std::vector<int>&& kept_boundary, bool numbers_kept,
+            AdjacencyWrites& writes) const {
+    std::sort(written.begin(), written.end());
+    for (const int p : written)
+      for (int k = 0; k < n_; ++k)
+        if (plans_.patch_neighbours[size_t(4 * (n_ * p + k))] < 0) kept_boundary.push_back(n_ * p + k);
+    std::sort(kept_boundary.begin(), kept_boundary.end());
+    writes = {numbers_kept, std::move(written), std::move(kept_boundary)};
+  }
+
+private:
+  void unlink(int p, int k) const { std::fill_n(&plans_.patch_neighbours[size_t(4 * (n_ * p + k))], 4, int32_t(-1)); }
+
+  PatchPlans& plans_;
+  const std::vector<int32_t>& old_;
+  int n_;
+  std::vector<uint64_t> new_keys_;
+  std::vector<EdgeUse> again_;
+};
+
+// update_patch_adjacency over every kept patch, telling what it wrote.
+bool update_every_record(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
+                         const std::vector<int>& new_of_old, AdjacencyWrites& writes) {
   const int n = plans.corners(), n_patches = plans.n_patches();
   if (has_infinite_sharpness(sharpness) || old_neighbours.size() != size_t(4 * n) * new_of_old.size()) return false;
   std::vector<int> old_of_new(size_t(n_patches), -1);
+  bool numbers_kept = true;
   for (size_t q = 0; q < new_of_old.size(); ++q)
     if (const int p = new_of_old[q]; p >= 0) {
       if (p >= n_patches || old_of_new[size_t(p)] >= 0) return false;
       old_of_new[size_t(p)] = int(q);
+      numbers_kept = numbers_kept && p == int(q);
     }
-  // Every record is written below (a boundary until linked again) and every owner by add_corner_owners:
-  // storage the arrays already hold is not filled first.
-  plans.patch_neighbours.resize(size_t(4 * n * n_patches));
-  plans.corner_owners.resize(size_t(2 * n * n_patches));
-  const auto unlink = [&](int p, int k) {
-    std::fill_n(&plans.patch_neighbours[size_t(4 * (n * p + k))], 4, int32_t(-1));
-  };
-  // The patch edges linked again: every edge of a new patch, and a kept patch's edge beside a patch
-  // that is gone, or on the boundary where a new patch now has the edge. The other uses of such an edge
-  // are among these: a face's patches are kept or built again together, and an edge of the mesh has
-  // two faces at most.
-  std::vector<EdgeUse> again;
-  const auto link_again = [&](int p, int k) {
-    if (const EdgeUse e = edge_use(plans, p, k); e.from != e.to) again.push_back(e);
-  };
-  std::vector<uint64_t> new_keys;  // sorted, for the kept boundary edges to look up
+  RecordUpdate update(plans, old_neighbours);
+  update.resize();
+  std::vector<int> written, boundary;
   for (int p = 0; p < n_patches; ++p)
-    if (old_of_new[size_t(p)] < 0)
-      for (int k = 0; k < n; ++k) {
-        new_keys.push_back(edge_key(edge_use(plans, p, k)));
-        link_again(p, k);
-      }
-  std::sort(new_keys.begin(), new_keys.end());
+    if (old_of_new[size_t(p)] < 0) update.add_new(p), written.push_back(p);
+  update.sort_new_keys();
+  const auto new_of = [&](int32_t q) { return new_of_old[size_t(q)]; };
 #pragma omp parallel if (n_patches >= kParallelFaces)
   {
-    // The kept patches' records, on all cores; each thread's edges to link again are joined after (they
-    // are sorted below).
+    // The kept patches' records, on all cores; each thread's edges to link again, and what it wrote, are
+    // joined after (the edges are sorted when linked).
     std::vector<EdgeUse> own;
+    std::vector<int> own_written, own_boundary;
 #pragma omp for schedule(static) nowait
-    for (int p = 0; p < n_patches; ++p) {
-      const int q = old_of_new[size_t(p)];
-      if (q < 0) {
-        for (int k = 0; k < n; ++k) unlink(p, k);
-        continue;
-      }
-      for (int k = 0; k < n; ++k) {
-        const int32_t* r = &old_neighbours[size_t(4 * (n * q + k))];
-        bool kept = r[0] >= 0 || !std::binary_search(new_keys.begin(), new_keys.end(), edge_key(edge_use(plans, p, k)));
-        for (int j = 0; j < 4 && kept; j += 2)  // (a sharp flag of creases that are gone: linked again)
-          kept = r[j] < 0 || (new_of_old[size_t(r[j])] >= 0 && !(r[j + 1] & kNeighbourSharpEdge));
-        if (!kept) {
-          unlink(p, k);
-          if (const EdgeUse e = edge_use(plans, p, k); e.from != e.to) own.push_back(e);
-          continue;
-        }
-        int32_t* out = &plans.patch_neighbours[size_t(4 * (n * p + k))];
-        for (int j = 0; j < 4; j += 2) {
-          out[j] = r[j] >= 0 ? new_of_old[size_t(r[j])] : -1;
-          out[j + 1] = r[j + 1];
-        }
-      }
-    }
+    for (int p = 0; p < n_patches; ++p)
+      if (const int q = old_of_new[size_t(p)]; q >= 0 && update.carry(p, q, new_of, own, own_boundary))
+        own_written.push_back(p);
 #pragma omp critical
-    again.insert(again.end(), own.begin(), own.end());
+    {
+      update.add_again(own);
+      written.insert(written.end(), own_written.begin(), own_written.end());
+      boundary.insert(boundary.end(), own_boundary.begin(), own_boundary.end());
+    }
   }
-  // Linked in groups of one edge, in patch order within a group, as add_patch_adjacency links them:
-  // sorted by key, then by patch edge (patch · n + k, unique), which carries the use's index below it.
-  std::vector<std::pair<uint64_t, uint64_t>> order(again.size());
-  for (size_t i = 0; i < again.size(); ++i) {
-    const EdgeUse& e = again[i];
-    order[i] = {edge_key(e), (uint64_t(e.patch) * uint64_t(n) + uint64_t(e.k)) << 32 | i};
+  update.link_again();
+  update.tell(std::move(written), std::move(boundary), numbers_kept, writes);
+  add_corner_owners(plans);
+  return true;
+}
+
+}  // namespace
+
+bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
+                            const std::vector<int>& new_of_old) {
+  AdjacencyWrites writes;
+  return update_every_record(plans, sharpness, old_neighbours, new_of_old, writes);
+}
+
+std::vector<int> boundary_records(const PatchPlans& plans) {
+  std::vector<int> boundary;
+  const int n = plans.corners();
+  for (int p = 0; p < plans.n_patches(); ++p)
+    for (int k = 0; k < n; ++k)
+      if (plans.patch_neighbours[size_t(4 * (n * p + k))] < 0) boundary.push_back(n * p + k);
+  return boundary;
+}
+
+bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
+                            const std::vector<KeptPatches>& kept, const AdjacencyWrites* held,
+                            AdjacencyWrites& writes) {
+  writes = {};
+  const int n = plans.corners(), n_patches = plans.n_patches();
+  if (n == 0 || old_neighbours.size() % size_t(4 * n) != 0) return false;
+  const int n_old = int(old_neighbours.size() / size_t(4 * n));
+  if (!kept_runs_fit(kept, n_old, n_patches)) return false;
+  if (!held || !held->numbers_kept || !keep_numbers(kept) || has_infinite_sharpness(sharpness)) {
+    std::vector<int> new_of_old(size_t(n_old), -1);
+    for (const KeptPatches& run : kept)
+      for (int i = 0; i < run.count; ++i) new_of_old[size_t(run.old_first + i)] = run.first + i;
+    return update_every_record(plans, sharpness, old_neighbours, new_of_old, writes);
   }
-  std::sort(order.begin(), order.end());
-  std::vector<const EdgeUse*> group;
-  for (size_t i = 0; i < order.size();) {
-    group.clear();
-    size_t j = i;
-    for (; j < order.size() && order[j].first == order[i].first; ++j)
-      group.push_back(&again[size_t(order[j].second & 0xffffffffu)]);
-    link_edge(plans, group);
-    i = j;
-  }
+  // Every kept patch keeps its number, and a record that neither update wrote holds already: the one
+  // before, renumbered to itself, unless it is a boundary's or lies beside a patch that is gone (links
+  // go both ways, so the records of the patches that are gone name those).
+  const auto is_kept = [&](int32_t p) {
+    const auto run =
+        std::upper_bound(kept.begin(), kept.end(), p, [](int32_t x, const KeptPatches& r) { return x < r.first; });
+    return run != kept.begin() && p < std::prev(run)->first + std::prev(run)->count;
+  };
+  const auto new_of = [&](int32_t q) { return is_kept(q) ? q : -1; };
+  // The patches between the runs: new ones in the new numbering, gone ones in the old.
+  const auto for_gaps = [&](int end, const auto& visit) {
+    int at = 0;
+    for (const KeptPatches& run : kept) {
+      for (; at < run.first; ++at) visit(at);
+      at = run.first + run.count;
+    }
+    for (; at < end; ++at) visit(at);
+  };
+  RecordUpdate update(plans, old_neighbours);
+  update.resize();
+  std::vector<int> written, candidates;
+  for_gaps(n_patches, [&](int p) { update.add_new(p), written.push_back(p); });
+  update.sort_new_keys();
+  for (const int p : held->written)
+    if (is_kept(p)) candidates.push_back(p);
+  for (const int record : held->boundary)
+    if (is_kept(record / n)) candidates.push_back(record / n);
+  for_gaps(n_old, [&](int q) {
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < 4; j += 2)
+        if (const int32_t p = old_neighbours[size_t(4 * (n * q + k) + j)]; p >= 0 && is_kept(p))
+          candidates.push_back(p);
+  });
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  std::vector<EdgeUse> relink;
+  std::vector<int> boundary;
+  for (const int p : candidates)
+    if (update.carry(p, p, new_of, relink, boundary)) written.push_back(p);
+  update.add_again(relink);
+  update.link_again();
+  update.tell(std::move(written), std::move(boundary), true, writes);
   add_corner_owners(plans);
   return true;
 }

@@ -28,6 +28,7 @@
 
 #include "core/mesh/mesh_connectivity.h"
 #include "core/mesh/sharpness.h"
+#include "core/plans/kept_patches.h"
 #include "core/plans/patch_plans.h"
 
 namespace gps {
@@ -52,6 +53,30 @@ void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, con
 /// infinitely sharp creases, whose flags it does not follow.
 bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
                             const std::vector<int>& new_of_old);
+
+/// What making a plan's adjacency records changed of those of the plans before (update_patch_adjacency),
+/// kept for the update after it.
+struct AdjacencyWrites {
+  /// Every kept patch kept its number: then `written` lists (ascending) the patches whose edge records
+  /// were written, the new ones and those linked again, and every other record is the one before.
+  bool numbers_kept = false;
+  std::vector<int> written;
+  /// The edge records with no patch across (a boundary, or a degenerate edge): patch · corners + k,
+  /// ascending.
+  std::vector<int> boundary;
+};
+
+/// The edge records of `plans` with no patch across (AdjacencyWrites::boundary), from a pass over all:
+/// what a whole build (add_patch_adjacency) tells the update after it.
+std::vector<int> boundary_records(const PatchPlans& plans);
+
+/// update_patch_adjacency with the kept patches in runs (`kept`, increasing in both numberings), telling
+/// what it wrote (`writes`). Where every run keeps its numbers and plans.patch_neighbours holds on
+/// entry the records of the plans that `old_neighbours` were made from by an update that told `held`
+/// (its numbers kept too), only the records the two updates wrote, the boundary's and those beside
+/// patches that are gone are made again: the rest hold already. The same records either way.
+bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
+                            const std::vector<KeptPatches>& kept, const AdjacencyWrites* held, AdjacencyWrites& writes);
 
 struct EdgeNeighbour {
   int patch = -1;  // −1: none

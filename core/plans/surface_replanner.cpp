@@ -203,13 +203,13 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     if (failure) std::rethrow_exception(failure);
   const std::shared_ptr<const SurfaceTables> old = tables_;
   const std::vector<int32_t>& old_neighbours = old->plans.patch_neighbours;
-  const int old_patches = old->plans.n_patches();
   const PatchShape old_shape = old->plans.shape;
   // The tables before the previous ones, once nothing else holds them, lend their storage.
   // Their first ranges' part is there already where those ranges led both merges since.
   SurfaceTables storage;
   size_t storage_leading = 0;
-  if (retired_ && retired_.use_count() == 1) {
+  const bool storage_retired = retired_ && retired_.use_count() == 1;
+  if (storage_retired) {
     storage = std::move(*retired_);
     storage_leading = std::min(tables_leading_, same_leading);
   }
@@ -246,14 +246,18 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     }
     first += count;
   }
-  // The patch adjacency follows the kept patches where it can, else is found again whole.
-  std::vector<int> new_of_old(size_t(old_patches), -1);
-  for (const KeptPatches& run : kept)
-    for (int i = 0; i < run.count && run.old_first + i < old_patches; ++i)
-      new_of_old[size_t(run.old_first + i)] = run.first + i;
+  // The patch adjacency follows the kept patches where it can, else is found again whole. The retired
+  // tables' records, where their storage came back, are those the last update started from.
+  AdjacencyWrites writes;
+  const bool held = storage_retired && !merged.plans.patch_neighbours.empty();
   const bool updated = !kept.empty() && old_shape == merged.plans.shape &&
-                       update_patch_adjacency(merged.plans, sharpness, old_neighbours, new_of_old);
-  if (!updated) add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity());
+                       update_patch_adjacency(merged.plans, sharpness, old_neighbours, kept,
+                                              held ? &adjacency_writes_ : nullptr, writes);
+  if (!updated) {
+    add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity());
+    writes = {false, {}, boundary_records(merged.plans)};
+  }
+  adjacency_writes_ = std::move(writes);
   if (updated) change_.relinked = kept_beside_built(kept);
   retired_ = std::exchange(tables_, std::make_shared<SurfaceTables>(std::move(merged)));
   tables_leading_ = same_leading;

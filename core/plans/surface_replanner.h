@@ -13,6 +13,8 @@
 #include "core/extraordinary/loop_extraordinary_tables.h"
 #include "core/extraordinary/quad_extraordinary_tables.h"
 #include "core/patches/local_mesh.h"
+#include "core/plans/kept_patches.h"
+#include "core/plans/patch_adjacency.h"
 #include "core/plans/planned_surface.h"
 #include "core/plans/range_plans.h"
 
@@ -27,14 +29,6 @@ std::vector<int> faces_reading(const PolygonTopology& t, const MeshConnectivity&
 
 /// The faces that share a vertex with one of `faces` (those among them), sorted, without repeats.
 std::vector<int> faces_around(const PolygonTopology& t, const MeshConnectivity& c, const std::vector<int>& faces);
-
-/// Patches [first, first + count) of a replanner's tables are patches [old_first, old_first + count) of
-/// its tables before the last change, their plans kept and renumbered, or built again for faces whose
-/// pieces did not change (a plan is a function of its face's piece: the same plan, renumbered).
-struct KeptPatches {
-  int first = 0, old_first = 0, count = 0;
-  bool operator==(const KeptPatches&) const = default;
-};
 
 /// The last change of a replanner's tables: the tables it went from and to, named by ids unique in the
 /// process (0: none), and the patches whose plans it kept, in runs in the new tables' order (empty
@@ -180,6 +174,7 @@ private:
   std::shared_ptr<SurfaceTables> retired_;  // the tables before tables_, whose storage the next merge reuses
                                             // once nothing else holds them
   size_t tables_leading_ = 0;               // the first ranges tables_ was merged from, unchanged from retired_'s
+  AdjacencyWrites adjacency_writes_;        // what tables_' adjacency records changed of retired_'s
 };
 
 }  // namespace gps

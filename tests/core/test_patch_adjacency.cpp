@@ -276,5 +276,41 @@ TEST(PatchAdjacency, AnUpdateLinksKeptPatchesToNewOnesAsAWholeBuildDoes) {
   }
 }
 
+// The same where every patch keeps its number and the storage holds the records of the tables two
+// updates back: the hole's boundary edges, which the update before wrote none of, are linked to the
+// new face's patches all the same, and the writes told say what the next update may rest on.
+TEST(PatchAdjacency, AnUpdateThatKeepsNumbersLinksKeptBoundaryEdgesItDidNotWriteBefore) {
+  const CovarianceMesh cylinder = make_sample("cylinder");
+  for (int f = 0; f < int(cylinder.n_faces()); ++f) {
+    const std::span<const int> c = cylinder.face(size_t(f));
+    const CovarianceMesh hole = delete_faces(cylinder, {f}).mesh;
+    const Modelled filled = fill(hole, {c.begin(), c.end()});  // the hole's faces in order, then the new one
+    const SurfaceTables before = build_surface_plans(hole, {}), after = build_surface_plans(filled.mesh, {});
+    const std::vector<KeptPatches> kept{{0, 0, before.plans.n_patches()}};
+    // The hole's tables again, every patch kept: nothing written, the hole's edges a boundary.
+    PatchPlans again = before.plans;
+    AdjacencyWrites first, second;
+    ASSERT_TRUE(update_patch_adjacency(again, {}, before.plans.patch_neighbours, kept, nullptr, first));
+    EXPECT_TRUE(first.numbers_kept && first.written.empty()) << "face " << f;
+    EXPECT_EQ(first.boundary, boundary_records(before.plans)) << "face " << f;
+    EXPECT_EQ(again.patch_neighbours, before.plans.patch_neighbours) << "face " << f;
+    PatchPlans updated = after.plans;
+    updated.patch_neighbours = before.plans.patch_neighbours;
+    ASSERT_TRUE(update_patch_adjacency(updated, {}, again.patch_neighbours, kept, &first, second));
+    EXPECT_EQ(updated.patch_neighbours, after.plans.patch_neighbours) << "face " << f;
+    EXPECT_EQ(updated.corner_owners, after.plans.corner_owners) << "face " << f;
+    EXPECT_TRUE(second.numbers_kept) << "face " << f;
+    EXPECT_EQ(second.boundary, boundary_records(after.plans)) << "face " << f;
+    if (f + 1 == int(cylinder.n_faces())) {  // the last face: its patches go, every other keeps its number
+      PatchPlans made = before.plans;
+      AdjacencyWrites writes;
+      ASSERT_TRUE(update_patch_adjacency(made, {}, after.plans.patch_neighbours, kept, nullptr, writes));
+      EXPECT_EQ(made.patch_neighbours, before.plans.patch_neighbours);
+      EXPECT_FALSE(writes.written.empty());
+      EXPECT_EQ(writes.boundary, boundary_records(before.plans));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gps
