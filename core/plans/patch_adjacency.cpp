@@ -308,6 +308,74 @@ private:
   std::vector<EdgeUse> again_;
 };
 
+// The uses (patch · 4 + corner) of the point at corner c of patch p: the corners with that point on
+// the patches reached from p across the edges at such corners (the patches around a point of a
+// manifold mesh are one fan, linked edge to edge). `patches` is scratch.
+void point_uses(const PatchPlans& plans, int p, int c, std::vector<int>& patches, std::vector<int32_t>& uses) {
+  const int n = plans.corners();
+  const int32_t point = plans.patch_corner_points[size_t(n * p + c)];
+  patches.assign(1, p);
+  uses.clear();
+  for (size_t i = 0; i < patches.size(); ++i) {
+    const int m = patches[i];
+    for (int j = 0; j < n; ++j) {
+      if (plans.patch_corner_points[size_t(n * m + j)] != point) continue;
+      uses.push_back(m << 2 | j);
+      for (const int k : {j, (j + n - 1) % n})
+        for (int w = 0; w < 4; w += 2)
+          if (const int32_t across = plans.patch_neighbours[size_t(4 * (n * m + k) + w)];
+              across >= 0 && std::find(patches.begin(), patches.end(), across) == patches.end())
+            patches.push_back(across);
+    }
+  }
+}
+
+// The corner owners of plans that keep every kept patch's number (`is_kept`, `for_gaps`: the new and
+// the gone patches) from those of `old`: where `held_written` is given, plans.corner_owners holds the
+// owners of the plans `old` was made from, which differ from old's at those patches only; else old's
+// are copied. The owners found again are those of the corners whose point a new or a gone patch has;
+// their patches go in `written`.
+template <class IsKept, class ForGaps>
+void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const IsKept& is_kept, const ForGaps& for_gaps,
+                          const std::vector<KeptPatches>& kept, const std::vector<int>* held_written,
+                          std::vector<int>& written) {
+  const int n = plans.corners(), n_old = old.n_patches();
+  const auto copy_old = [&](int p, int count) {
+    std::copy_n(old.corner_owners.begin() + 2 * ptrdiff_t(n) * p, 2 * size_t(n) * size_t(count),
+                plans.corner_owners.begin() + 2 * ptrdiff_t(n) * p);
+  };
+  if (held_written) {
+    for (const int p : *held_written)
+      if (is_kept(p)) copy_old(p, 1);
+  } else {
+    for (const KeptPatches& run : kept) copy_old(run.first, run.count);
+  }
+  std::vector<int> patches;
+  std::vector<int32_t> uses;
+  for_gaps(plans.n_patches(), [&](int p) {
+    for (int c = 0; c < n; ++c) {
+      point_uses(plans, p, c, patches, uses);
+      for (const int32_t use : uses) written.push_back(use >> 2);
+    }
+  });
+  for_gaps(n_old, [&](int q) {
+    for (int c = 0; c < n; ++c) {
+      point_uses(old, q, c, patches, uses);
+      for (const int32_t use : uses)
+        if (is_kept(use >> 2)) written.push_back(use >> 2);
+    }
+  });
+  std::sort(written.begin(), written.end());
+  written.erase(std::unique(written.begin(), written.end()), written.end());
+  for (const int p : written)
+    for (int c = 0; c < n; ++c) {
+      point_uses(plans, p, c, patches, uses);
+      const int32_t owner = *std::min_element(uses.begin(), uses.end());
+      plans.corner_owners[2 * size_t(n * p + c)] = owner >> 2;
+      plans.corner_owners[2 * size_t(n * p + c) + 1] = owner & 3;
+    }
+}
+
 // update_patch_adjacency over every kept patch, telling what it wrote.
 bool update_every_record(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
                          const std::vector<int>& new_of_old, AdjacencyWrites& writes) {
@@ -368,10 +436,11 @@ std::vector<int> boundary_records(const PatchPlans& plans) {
   return boundary;
 }
 
-bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
+bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const PatchPlans& old,
                             const std::vector<KeptPatches>& kept, const AdjacencyWrites* held,
                             AdjacencyWrites& writes) {
   writes = {};
+  const std::vector<int32_t>& old_neighbours = old.patch_neighbours;
   const int n = plans.corners(), n_patches = plans.n_patches();
   if (n == 0 || old_neighbours.size() % size_t(4 * n) != 0) return false;
   const int n_old = int(old_neighbours.size() / size_t(4 * n));
@@ -424,7 +493,9 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
   update.add_again(relink);
   update.link_again();
   update.tell(std::move(written), std::move(boundary), true, writes);
-  add_corner_owners(plans);
+  writes.owners_written.emplace();
+  update_corner_owners(plans, old, is_kept, for_gaps, kept, held->owners_written ? &*held->owners_written : nullptr,
+                       *writes.owners_written);
   return true;
 }
 

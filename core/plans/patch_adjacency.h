@@ -24,6 +24,7 @@
 // side has its own normal: a point on a flagged edge or corner takes its position from the
 // canonical patch and its normal from the patch that draws it.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/mesh/mesh_connectivity.h"
@@ -64,18 +65,22 @@ struct AdjacencyWrites {
   /// The edge records with no patch across (a boundary, or a degenerate edge): patch · corners + k,
   /// ascending.
   std::vector<int> boundary;
+  /// Where the numbers are kept: the patches whose corner owners were written (ascending), where known.
+  std::optional<std::vector<int>> owners_written;
 };
 
 /// The edge records of `plans` with no patch across (AdjacencyWrites::boundary), from a pass over all:
 /// what a whole build (add_patch_adjacency) tells the update after it.
 std::vector<int> boundary_records(const PatchPlans& plans);
 
-/// update_patch_adjacency with the kept patches in runs (`kept`, increasing in both numberings), telling
-/// what it wrote (`writes`). Where every run keeps its numbers and plans.patch_neighbours holds on
-/// entry the records of the plans that `old_neighbours` were made from by an update that told `held`
-/// (its numbers kept too), only the records the two updates wrote, the boundary's and those beside
-/// patches that are gone are made again: the rest hold already. The same records either way.
-bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
+/// update_patch_adjacency from the plans before (`old`), with the kept patches in runs (`kept`,
+/// increasing in both numberings), telling what it wrote (`writes`). Where every run keeps its numbers
+/// and plans' patch_neighbours and corner_owners hold on entry the records of the plans that `old` was
+/// made from by an update that told `held` (its numbers kept too), only the edge records the two
+/// updates wrote, the boundary's and those beside patches that are gone are made again, and the owners
+/// of the corners whose point a new or a gone patch has: the rest hold already. The same records
+/// either way.
+bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const PatchPlans& old,
                             const std::vector<KeptPatches>& kept, const AdjacencyWrites* held, AdjacencyWrites& writes);
 
 struct EdgeNeighbour {

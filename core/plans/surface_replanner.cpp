@@ -202,7 +202,6 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   for (const auto& failure : failures)
     if (failure) std::rethrow_exception(failure);
   const std::shared_ptr<const SurfaceTables> old = tables_;
-  const std::vector<int32_t>& old_neighbours = old->plans.patch_neighbours;
   const PatchShape old_shape = old->plans.shape;
   // The tables before the previous ones, once nothing else holds them, lend their storage.
   // Their first ranges' part is there already where those ranges led both merges since.
@@ -250,9 +249,9 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   // tables' records, where their storage came back, are those the last update started from.
   AdjacencyWrites writes;
   const bool held = storage_retired && !merged.plans.patch_neighbours.empty();
-  const bool updated = !kept.empty() && old_shape == merged.plans.shape &&
-                       update_patch_adjacency(merged.plans, sharpness, old_neighbours, kept,
-                                              held ? &adjacency_writes_ : nullptr, writes);
+  const bool updated =
+      !kept.empty() && old_shape == merged.plans.shape &&
+      update_patch_adjacency(merged.plans, sharpness, old->plans, kept, held ? &adjacency_writes_ : nullptr, writes);
   if (!updated) {
     add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity());
     writes = {false, {}, boundary_records(merged.plans)};

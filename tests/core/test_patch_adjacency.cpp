@@ -290,13 +290,14 @@ TEST(PatchAdjacency, AnUpdateThatKeepsNumbersLinksKeptBoundaryEdgesItDidNotWrite
     // The hole's tables again, every patch kept: nothing written, the hole's edges a boundary.
     PatchPlans again = before.plans;
     AdjacencyWrites first, second;
-    ASSERT_TRUE(update_patch_adjacency(again, {}, before.plans.patch_neighbours, kept, nullptr, first));
+    ASSERT_TRUE(update_patch_adjacency(again, {}, before.plans, kept, nullptr, first));
     EXPECT_TRUE(first.numbers_kept && first.written.empty()) << "face " << f;
     EXPECT_EQ(first.boundary, boundary_records(before.plans)) << "face " << f;
     EXPECT_EQ(again.patch_neighbours, before.plans.patch_neighbours) << "face " << f;
     PatchPlans updated = after.plans;
     updated.patch_neighbours = before.plans.patch_neighbours;
-    ASSERT_TRUE(update_patch_adjacency(updated, {}, again.patch_neighbours, kept, &first, second));
+    updated.corner_owners = before.plans.corner_owners;
+    ASSERT_TRUE(update_patch_adjacency(updated, {}, again, kept, &first, second));
     EXPECT_EQ(updated.patch_neighbours, after.plans.patch_neighbours) << "face " << f;
     EXPECT_EQ(updated.corner_owners, after.plans.corner_owners) << "face " << f;
     EXPECT_TRUE(second.numbers_kept) << "face " << f;
@@ -304,10 +305,63 @@ TEST(PatchAdjacency, AnUpdateThatKeepsNumbersLinksKeptBoundaryEdgesItDidNotWrite
     if (f + 1 == int(cylinder.n_faces())) {  // the last face: its patches go, every other keeps its number
       PatchPlans made = before.plans;
       AdjacencyWrites writes;
-      ASSERT_TRUE(update_patch_adjacency(made, {}, after.plans.patch_neighbours, kept, nullptr, writes));
+      ASSERT_TRUE(update_patch_adjacency(made, {}, after.plans, kept, nullptr, writes));
       EXPECT_EQ(made.patch_neighbours, before.plans.patch_neighbours);
       EXPECT_FALSE(writes.written.empty());
       EXPECT_EQ(writes.boundary, boundary_records(before.plans));
+    }
+  }
+}
+
+// A mesh's last face moved to face 0's place, then to face 5's and back, face 0 and 5 left as holes:
+// the patches of the other faces keep their numbers, and each move makes new patches at points that
+// no gone patch had and takes gone ones from points that no new patch has. Each update, made in the
+// storage of the tables two back with the writes of the one before, gives a whole build's records.
+TEST(PatchAdjacency, UpdatesThatKeepNumbersFollowAFaceMovingAsWholeBuildsDo) {
+  for (const std::string name : {"grid", "sphere", "icosphere"}) {  // one patch per face
+    const CovarianceMesh a = make_sample(name, 64);
+    std::vector<std::vector<int>> faces;
+    for (size_t f = 0; f < a.n_faces(); ++f) faces.emplace_back(a.face(f).begin(), a.face(f).end());
+    const auto moved = [&](size_t to) {
+      std::vector<std::vector<int>> f = faces;
+      f[to] = f.back();
+      f.pop_back();
+      return f;
+    };
+    const std::vector<std::vector<std::vector<int>>> steps{faces, moved(0), moved(5), moved(0), moved(5)};
+    std::vector<SurfaceTables> whole;
+    for (const auto& f : steps)
+      whole.push_back(build_surface_plans(make_covariance_mesh(a.means(), a.covariances, f, name), {}));
+    const auto kept_between = [&](size_t from, size_t to) {
+      std::vector<KeptPatches> kept;
+      for (size_t f = 0; f < std::min(steps[from].size(), steps[to].size()); ++f)
+        if (steps[from][f] != steps[to][f])
+          continue;
+        else if (!kept.empty() && kept.back().first + kept.back().count == int(f))
+          ++kept.back().count;
+        else
+          kept.push_back({int(f), int(f), 1});
+      return kept;
+    };
+    // The first update links every record again (no storage to rest on), the next ones rest on it.
+    std::vector<PatchPlans> made{whole[0].plans, whole[1].plans};
+    std::vector<AdjacencyWrites> writes(1);
+    ASSERT_TRUE(update_patch_adjacency(made[1], {}, whole[0].plans, kept_between(0, 1), nullptr, writes[0])) << name;
+    EXPECT_EQ(made[1].patch_neighbours, whole[1].plans.patch_neighbours) << name;
+    for (size_t step = 2; step < steps.size(); ++step) {
+      PatchPlans next = whole[step].plans;
+      next.patch_neighbours = made[step - 2].patch_neighbours;
+      next.corner_owners = made[step - 2].corner_owners;
+      if (!writes.back().owners_written)  // owners the update may not rest on
+        std::fill(next.corner_owners.begin(), next.corner_owners.end(), -7);
+      AdjacencyWrites told;
+      ASSERT_TRUE(update_patch_adjacency(next, {}, made[step - 1], kept_between(step - 1, step), &writes.back(), told))
+          << name << " step " << step;
+      EXPECT_EQ(next.patch_neighbours, whole[step].plans.patch_neighbours) << name << " step " << step;
+      EXPECT_EQ(next.corner_owners, whole[step].plans.corner_owners) << name << " step " << step;
+      EXPECT_TRUE(told.numbers_kept && told.owners_written) << name << " step " << step;
+      made.push_back(std::move(next));
+      writes.push_back(std::move(told));
     }
   }
 }
