@@ -84,25 +84,38 @@ bool has_infinite_sharpness(const Sharpness& sharpness) {
   return false;
 }
 
-// Per base vertex: whether the surface has no one tangent plane there (patch_adjacency.h).
-std::vector<char> sharp_vertices(const PolygonTopology& topology, const Sharpness& sharpness,
-                                 const MeshConnectivity* connectivity) {
-  std::vector<char> sharp(size_t(topology.n_vertices), 0);
-  const MeshConnectivity built = connectivity ? MeshConnectivity{} : connectivity_of(topology);
-  const MeshConnectivity& c = connectivity ? *connectivity : built;
-  for (int v = 0; v < topology.n_vertices; ++v) {
-    int between_faces = 0, on_boundary = 0;
-    for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
-      const int e = c.vertex_edges[size_t(i)];
-      if (c.is_boundary_edge(e))
-        ++on_boundary;
-      else if (is_infinitely_sharp(sharpness.crease(v, c.other_vertex(e, v))))
-        ++between_faces;
-    }
-    sharp[size_t(v)] =
-        is_infinitely_sharp(sharpness.corner(v)) || (between_faces >= 1 && between_faces + on_boundary >= 2);
+// Whether the surface has no one tangent plane at base vertex v (patch_adjacency.h).
+bool is_sharp_vertex(const MeshConnectivity& c, const Sharpness& sharpness, int v) {
+  int between_faces = 0, on_boundary = 0;
+  for (int i = c.vertex_edge_offsets[size_t(v)]; i < c.vertex_edge_offsets[size_t(v) + 1]; ++i) {
+    const int e = c.vertex_edges[size_t(i)];
+    if (c.is_boundary_edge(e))
+      ++on_boundary;
+    else if (is_infinitely_sharp(sharpness.crease(v, c.other_vertex(e, v))))
+      ++between_faces;
   }
-  return sharp;
+  return is_infinitely_sharp(sharpness.corner(v)) || (between_faces >= 1 && between_faces + on_boundary >= 2);
+}
+
+// Flags patch edge k's record where it is linked across an infinitely sharp edge.
+void flag_sharp_edge(PatchPlans& plans, const Sharpness& sharpness, int n_base, int p, int k) {
+  int32_t* r = &plans.patch_neighbours[size_t(4 * (plans.corners() * p + k))];
+  const EdgeUse e = edge_use(plans, p, k);
+  if (r[0] < 0 || e.from >= n_base || e.to >= n_base || !is_infinitely_sharp(sharpness.crease(e.from, e.to))) return;
+  r[1] |= kNeighbourSharpEdge;
+  if (r[2] >= 0) r[3] |= kNeighbourSharpEdge;
+}
+
+// Flags patch corner c's owner record where the patches around have normals of their own there, the
+// edges' flags set: at a sharp base vertex (`sharp_vertex(point)`), or at a split face's edge point or
+// face point on a sharp edge.
+template <class SharpVertex>
+void flag_sharp_corner(PatchPlans& plans, int n_base, int p, int c, const SharpVertex& sharp_vertex) {
+  const int n = plans.corners();
+  const int32_t point = plans.patch_corner_points[size_t(n * p + c)];
+  const auto sharp_edge = [&](int k) { return edge_neighbour(plans, p, k).sharp; };
+  if (point < n_base ? sharp_vertex(point) : sharp_edge(c) || sharp_edge((c + n - 1) % n))
+    plans.corner_owners[size_t(2 * (n * p + c)) + 1] |= kOwnerSharpCorner;
 }
 
 // Flags the linked patch edges on infinitely sharp edges and the patch corners where the patches
@@ -111,23 +124,14 @@ void add_sharp_flags(PatchPlans& plans, const PolygonTopology& topology, const S
                      const MeshConnectivity* connectivity) {
   const int n = plans.corners(), n_base = topology.n_vertices;
   for (int p = 0; p < plans.n_patches(); ++p)
-    for (int k = 0; k < n; ++k) {
-      int32_t* r = &plans.patch_neighbours[size_t(4 * (n * p + k))];
-      const EdgeUse e = edge_use(plans, p, k);
-      if (r[0] < 0 || e.from >= n_base || e.to >= n_base || !is_infinitely_sharp(sharpness.crease(e.from, e.to)))
-        continue;
-      r[1] |= kNeighbourSharpEdge;
-      if (r[2] >= 0) r[3] |= kNeighbourSharpEdge;
-    }
-  const std::vector<char> sharp_vertex = sharp_vertices(topology, sharpness, connectivity);
-  const auto sharp_edge = [&](int p, int k) { return edge_neighbour(plans, p, k).sharp; };
+    for (int k = 0; k < n; ++k) flag_sharp_edge(plans, sharpness, n_base, p, k);
+  const MeshConnectivity built = connectivity ? MeshConnectivity{} : connectivity_of(topology);
+  const MeshConnectivity& c = connectivity ? *connectivity : built;
+  std::vector<char> sharp_vertex(size_t(n_base), 0);
+  for (int v = 0; v < n_base; ++v) sharp_vertex[size_t(v)] = is_sharp_vertex(c, sharpness, v);
   for (int p = 0; p < plans.n_patches(); ++p)
-    for (int c = 0; c < n; ++c) {
-      // A point past the base vertices is a split face's edge point or face point: sharp on a sharp edge.
-      const int32_t point = plans.patch_corner_points[size_t(n * p + c)];
-      if (point < n_base ? sharp_vertex[size_t(point)] != 0 : sharp_edge(p, c) || sharp_edge(p, (c + n - 1) % n))
-        plans.corner_owners[size_t(2 * (n * p + c)) + 1] |= kOwnerSharpCorner;
-    }
+    for (int k = 0; k < n; ++k)
+      flag_sharp_corner(plans, n_base, p, k, [&](int32_t v) { return sharp_vertex[size_t(v)] != 0; });
 }
 
 // Corner owners: the first (lowest) patch with each corner point.
@@ -209,11 +213,30 @@ void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, con
 
 namespace {
 
+// What the sharp flags read of the base mesh: its connectivity and sharpness.
+struct SharpBase {
+  const MeshConnectivity& connectivity;
+  const Sharpness& sharpness;
+  int n_base() const { return int(connectivity.vertex_edge_offsets.size()) - 1; }
+};
+
+// The owners' sharp flags of every corner (add_sharp_flags' second half).
+void flag_sharp_corners(PatchPlans& plans, const SharpBase& sharp) {
+  std::vector<char> sharp_vertex(size_t(sharp.n_base()), 0);
+  for (int v = 0; v < sharp.n_base(); ++v)
+    sharp_vertex[size_t(v)] = is_sharp_vertex(sharp.connectivity, sharp.sharpness, v);
+  for (int p = 0; p < plans.n_patches(); ++p)
+    for (int c = 0; c < plans.corners(); ++c)
+      flag_sharp_corner(plans, sharp.n_base(), p, c, [&](int32_t v) { return sharp_vertex[size_t(v)] != 0; });
+}
+
 // An update of the edge records: the plans being made, the records before, and what is to be linked.
 class RecordUpdate {
 public:
-  RecordUpdate(PatchPlans& plans, const std::vector<int32_t>& old_neighbours)
-      : plans_(plans), old_(old_neighbours), n_(plans.corners()) {}
+  // `sharp`: the base mesh's connectivity and sharpness, where the update keeps and sets the sharp flags
+  // (null: a flagged record is linked again, its flag gone, and there is no infinite sharpness now).
+  RecordUpdate(PatchPlans& plans, const std::vector<int32_t>& old_neighbours, const SharpBase* sharp)
+      : plans_(plans), old_(old_neighbours), n_(plans.corners()), sharp_(sharp) {}
 
   // Room for every record: each is written below (a boundary until linked again), and every owner by
   // add_corner_owners, so storage the arrays already hold is not filled first.
@@ -246,7 +269,7 @@ public:
       bool kept =
           r[0] >= 0 || !std::binary_search(new_keys_.begin(), new_keys_.end(), edge_key(edge_use(plans_, p, k)));
       for (int j = 0; j < 4 && kept; j += 2)
-        kept = r[j] < 0 || (new_of(r[j]) >= 0 && !(r[j + 1] & kNeighbourSharpEdge));
+        kept = r[j] < 0 || (new_of(r[j]) >= 0 && (sharp_ || !(r[j + 1] & kNeighbourSharpEdge)));
       if (!kept) {
         unlink(p, k);
         if (const EdgeUse e = edge_use(plans_, p, k); e.from != e.to) relink.push_back(e);
@@ -291,6 +314,9 @@ public:
   void tell(std::vector<int>&& written, std::vector<int>&& kept_boundary, bool numbers_kept,
             AdjacencyWrites& writes) const {
     std::sort(written.begin(), written.end());
+    if (sharp_)  // the kept records keep theirs: a change of an edge's crease builds its faces again
+      for (const int p : written)
+        for (int k = 0; k < n_; ++k) flag_sharp_edge(plans_, sharp_->sharpness, sharp_->n_base(), p, k);
     for (const int p : written)
       for (int k = 0; k < n_; ++k)
         if (plans_.patch_neighbours[size_t(4 * (n_ * p + k))] < 0) kept_boundary.push_back(n_ * p + k);
@@ -304,6 +330,7 @@ private:
   PatchPlans& plans_;
   const std::vector<int32_t>& old_;
   int n_;
+  const SharpBase* sharp_;
   std::vector<uint64_t> new_keys_;
   std::vector<EdgeUse> again_;
 };
@@ -336,9 +363,9 @@ void point_uses(const PatchPlans& plans, int p, int c, std::vector<int>& patches
 // are copied. The owners found again are those of the corners whose point a new or a gone patch has;
 // their patches go in `written`.
 template <class IsKept, class ForGaps>
-void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const IsKept& is_kept, const ForGaps& for_gaps,
-                          const std::vector<KeptPatches>& kept, const std::vector<int>* held_written,
-                          std::vector<int>& written) {
+void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const SharpBase& sharp, const IsKept& is_kept,
+                          const ForGaps& for_gaps, const std::vector<KeptPatches>& kept,
+                          const std::vector<int>* held_written, std::vector<int>& written) {
   const int n = plans.corners(), n_old = old.n_patches();
   const auto copy_old = [&](int p, int count) {
     std::copy_n(old.corner_owners.begin() + 2 * ptrdiff_t(n) * p, 2 * size_t(n) * size_t(count),
@@ -350,6 +377,7 @@ void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const IsKept
   } else {
     for (const KeptPatches& run : kept) copy_old(run.first, run.count);
   }
+  const bool flagged = has_infinite_sharpness(sharp.sharpness);
   std::vector<int> patches;
   std::vector<int32_t> uses;
   for_gaps(plans.n_patches(), [&](int p) {
@@ -373,14 +401,18 @@ void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const IsKept
       const int32_t owner = *std::min_element(uses.begin(), uses.end());
       plans.corner_owners[2 * size_t(n * p + c)] = owner >> 2;
       plans.corner_owners[2 * size_t(n * p + c) + 1] = owner & 3;
+      if (flagged)
+        flag_sharp_corner(plans, sharp.n_base(), p, c,
+                          [&](int32_t v) { return is_sharp_vertex(sharp.connectivity, sharp.sharpness, v); });
     }
 }
 
 // update_patch_adjacency over every kept patch, telling what it wrote.
 bool update_every_record(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
-                         const std::vector<int>& new_of_old, AdjacencyWrites& writes) {
+                         const std::vector<int>& new_of_old, const SharpBase* sharp, AdjacencyWrites& writes) {
   const int n = plans.corners(), n_patches = plans.n_patches();
-  if (has_infinite_sharpness(sharpness) || old_neighbours.size() != size_t(4 * n) * new_of_old.size()) return false;
+  const bool flagged = has_infinite_sharpness(sharpness);
+  if ((flagged && !sharp) || old_neighbours.size() != size_t(4 * n) * new_of_old.size()) return false;
   std::vector<int> old_of_new(size_t(n_patches), -1);
   bool numbers_kept = true;
   for (size_t q = 0; q < new_of_old.size(); ++q)
@@ -389,7 +421,7 @@ bool update_every_record(PatchPlans& plans, const Sharpness& sharpness, const st
       old_of_new[size_t(p)] = int(q);
       numbers_kept = numbers_kept && p == int(q);
     }
-  RecordUpdate update(plans, old_neighbours);
+  RecordUpdate update(plans, old_neighbours, sharp);
   update.resize();
   std::vector<int> written, boundary;
   for (int p = 0; p < n_patches; ++p)
@@ -416,6 +448,7 @@ bool update_every_record(PatchPlans& plans, const Sharpness& sharpness, const st
   update.link_again();
   update.tell(std::move(written), std::move(boundary), numbers_kept, writes);
   add_corner_owners(plans);
+  if (flagged) flag_sharp_corners(plans, *sharp);
   return true;
 }
 
@@ -424,7 +457,7 @@ bool update_every_record(PatchPlans& plans, const Sharpness& sharpness, const st
 bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
                             const std::vector<int>& new_of_old) {
   AdjacencyWrites writes;
-  return update_every_record(plans, sharpness, old_neighbours, new_of_old, writes);
+  return update_every_record(plans, sharpness, old_neighbours, new_of_old, nullptr, writes);
 }
 
 std::vector<int> boundary_records(const PatchPlans& plans) {
@@ -436,20 +469,21 @@ std::vector<int> boundary_records(const PatchPlans& plans) {
   return boundary;
 }
 
-bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const PatchPlans& old,
-                            const std::vector<KeptPatches>& kept, const AdjacencyWrites* held,
+bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const MeshConnectivity& connectivity,
+                            const PatchPlans& old, const std::vector<KeptPatches>& kept, const AdjacencyWrites* held,
                             AdjacencyWrites& writes) {
+  const SharpBase sharp{connectivity, sharpness};
   writes = {};
   const std::vector<int32_t>& old_neighbours = old.patch_neighbours;
   const int n = plans.corners(), n_patches = plans.n_patches();
   if (n == 0 || old_neighbours.size() % size_t(4 * n) != 0) return false;
   const int n_old = int(old_neighbours.size() / size_t(4 * n));
   if (!kept_runs_fit(kept, n_old, n_patches)) return false;
-  if (!held || !held->numbers_kept || !keep_numbers(kept) || has_infinite_sharpness(sharpness)) {
+  if (!held || !held->numbers_kept || !keep_numbers(kept)) {
     std::vector<int> new_of_old(size_t(n_old), -1);
     for (const KeptPatches& run : kept)
       for (int i = 0; i < run.count; ++i) new_of_old[size_t(run.old_first + i)] = run.first + i;
-    return update_every_record(plans, sharpness, old_neighbours, new_of_old, writes);
+    return update_every_record(plans, sharpness, old_neighbours, new_of_old, &sharp, writes);
   }
   // Every kept patch keeps its number, and a record that neither update wrote holds already: the one
   // before, renumbered to itself, unless it is a boundary's or lies beside a patch that is gone (links
@@ -469,7 +503,7 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
     }
     for (; at < end; ++at) visit(at);
   };
-  RecordUpdate update(plans, old_neighbours);
+  RecordUpdate update(plans, old_neighbours, &sharp);
   update.resize();
   std::vector<int> written, candidates;
   for_gaps(n_patches, [&](int p) { update.add_new(p), written.push_back(p); });
@@ -494,8 +528,8 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
   update.link_again();
   update.tell(std::move(written), std::move(boundary), true, writes);
   writes.owners_written.emplace();
-  update_corner_owners(plans, old, is_kept, for_gaps, kept, held->owners_written ? &*held->owners_written : nullptr,
-                       *writes.owners_written);
+  update_corner_owners(plans, old, sharp, is_kept, for_gaps, kept,
+                       held->owners_written ? &*held->owners_written : nullptr, *writes.owners_written);
   return true;
 }
 

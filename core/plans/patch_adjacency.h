@@ -79,9 +79,11 @@ std::vector<int> boundary_records(const PatchPlans& plans);
 /// made from by an update that told `held` (its numbers kept too), only the edge records the two
 /// updates wrote, the boundary's and those beside patches that are gone are made again, and the owners
 /// of the corners whose point a new or a gone patch has: the rest hold already. The same records
-/// either way.
-bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const PatchPlans& old,
-                            const std::vector<KeptPatches>& kept, const AdjacencyWrites* held, AdjacencyWrites& writes);
+/// either way. `connectivity`: the base mesh's, from which the sharp flags of the records made again are
+/// found (a kept record keeps its flags: its edge's crease and its corners' vertices did not change).
+bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const MeshConnectivity& connectivity,
+                            const PatchPlans& old, const std::vector<KeptPatches>& kept, const AdjacencyWrites* held,
+                            AdjacencyWrites& writes);
 
 struct EdgeNeighbour {
   int patch = -1;  // −1: none

@@ -249,9 +249,9 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   // tables' records, where their storage came back, are those the last update started from.
   AdjacencyWrites writes;
   const bool held = storage_retired && !merged.plans.patch_neighbours.empty();
-  const bool updated =
-      !kept.empty() && old_shape == merged.plans.shape &&
-      update_patch_adjacency(merged.plans, sharpness, old->plans, kept, held ? &adjacency_writes_ : nullptr, writes);
+  const bool updated = !kept.empty() && old_shape == merged.plans.shape &&
+                       update_patch_adjacency(merged.plans, sharpness, base_.connectivity(), old->plans, kept,
+                                              held ? &adjacency_writes_ : nullptr, writes);
   if (!updated) {
     add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity());
     writes = {false, {}, boundary_records(merged.plans)};

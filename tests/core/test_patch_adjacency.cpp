@@ -290,14 +290,14 @@ TEST(PatchAdjacency, AnUpdateThatKeepsNumbersLinksKeptBoundaryEdgesItDidNotWrite
     // The hole's tables again, every patch kept: nothing written, the hole's edges a boundary.
     PatchPlans again = before.plans;
     AdjacencyWrites first, second;
-    ASSERT_TRUE(update_patch_adjacency(again, {}, before.plans, kept, nullptr, first));
+    ASSERT_TRUE(update_patch_adjacency(again, {}, hole.connectivity(), before.plans, kept, nullptr, first));
     EXPECT_TRUE(first.numbers_kept && first.written.empty()) << "face " << f;
     EXPECT_EQ(first.boundary, boundary_records(before.plans)) << "face " << f;
     EXPECT_EQ(again.patch_neighbours, before.plans.patch_neighbours) << "face " << f;
     PatchPlans updated = after.plans;
     updated.patch_neighbours = before.plans.patch_neighbours;
     updated.corner_owners = before.plans.corner_owners;
-    ASSERT_TRUE(update_patch_adjacency(updated, {}, again, kept, &first, second));
+    ASSERT_TRUE(update_patch_adjacency(updated, {}, filled.mesh.connectivity(), again, kept, &first, second));
     EXPECT_EQ(updated.patch_neighbours, after.plans.patch_neighbours) << "face " << f;
     EXPECT_EQ(updated.corner_owners, after.plans.corner_owners) << "face " << f;
     EXPECT_TRUE(second.numbers_kept) << "face " << f;
@@ -305,7 +305,7 @@ TEST(PatchAdjacency, AnUpdateThatKeepsNumbersLinksKeptBoundaryEdgesItDidNotWrite
     if (f + 1 == int(cylinder.n_faces())) {  // the last face: its patches go, every other keeps its number
       PatchPlans made = before.plans;
       AdjacencyWrites writes;
-      ASSERT_TRUE(update_patch_adjacency(made, {}, after.plans, kept, nullptr, writes));
+      ASSERT_TRUE(update_patch_adjacency(made, {}, hole.connectivity(), after.plans, kept, nullptr, writes));
       EXPECT_EQ(made.patch_neighbours, before.plans.patch_neighbours);
       EXPECT_FALSE(writes.written.empty());
       EXPECT_EQ(writes.boundary, boundary_records(before.plans));
@@ -318,52 +318,69 @@ TEST(PatchAdjacency, AnUpdateThatKeepsNumbersLinksKeptBoundaryEdgesItDidNotWrite
 // no gone patch had and takes gone ones from points that no new patch has. Each update, made in the
 // storage of the tables two back with the writes of the one before, gives a whole build's records.
 TEST(PatchAdjacency, UpdatesThatKeepNumbersFollowAFaceMovingAsWholeBuildsDo) {
-  for (const std::string name : {"grid", "sphere", "icosphere"}) {  // one patch per face
-    const CovarianceMesh a = make_sample(name, 64);
-    std::vector<std::vector<int>> faces;
-    for (size_t f = 0; f < a.n_faces(); ++f) faces.emplace_back(a.face(f).begin(), a.face(f).end());
-    const auto moved = [&](size_t to) {
-      std::vector<std::vector<int>> f = faces;
-      f[to] = f.back();
-      f.pop_back();
-      return f;
-    };
-    const std::vector<std::vector<std::vector<int>>> steps{faces, moved(0), moved(5), moved(0), moved(5)};
-    std::vector<SurfaceTables> whole;
-    for (const auto& f : steps)
-      whole.push_back(build_surface_plans(make_covariance_mesh(a.means(), a.covariances, f, name), {}));
-    const auto kept_between = [&](size_t from, size_t to) {
-      std::vector<KeptPatches> kept;
-      for (size_t f = 0; f < std::min(steps[from].size(), steps[to].size()); ++f)
-        if (steps[from][f] != steps[to][f])
-          continue;
-        else if (!kept.empty() && kept.back().first + kept.back().count == int(f))
-          ++kept.back().count;
-        else
-          kept.push_back({int(f), int(f), 1});
-      return kept;
-    };
-    // The first update links every record again (no storage to rest on), the next ones rest on it.
-    std::vector<PatchPlans> made{whole[0].plans, whole[1].plans};
-    std::vector<AdjacencyWrites> writes(1);
-    ASSERT_TRUE(update_patch_adjacency(made[1], {}, whole[0].plans, kept_between(0, 1), nullptr, writes[0])) << name;
-    EXPECT_EQ(made[1].patch_neighbours, whole[1].plans.patch_neighbours) << name;
-    for (size_t step = 2; step < steps.size(); ++step) {
-      PatchPlans next = whole[step].plans;
-      next.patch_neighbours = made[step - 2].patch_neighbours;
-      next.corner_owners = made[step - 2].corner_owners;
-      if (!writes.back().owners_written)  // owners the update may not rest on
-        std::fill(next.corner_owners.begin(), next.corner_owners.end(), -7);
-      AdjacencyWrites told;
-      ASSERT_TRUE(update_patch_adjacency(next, {}, made[step - 1], kept_between(step - 1, step), &writes.back(), told))
-          << name << " step " << step;
-      EXPECT_EQ(next.patch_neighbours, whole[step].plans.patch_neighbours) << name << " step " << step;
-      EXPECT_EQ(next.corner_owners, whole[step].plans.corner_owners) << name << " step " << step;
-      EXPECT_TRUE(told.numbers_kept && told.owners_written) << name << " step " << step;
-      made.push_back(std::move(next));
-      writes.push_back(std::move(told));
+  for (const std::string name : {"grid", "sphere", "icosphere"})  // one patch per face
+    for (const bool creased : {false, true}) {  // face 1's edges infinitely sharp: flags to keep and to set
+      const std::string where = name + (creased ? " creased" : "");
+      const CovarianceMesh a = make_sample(name, 64);
+      std::vector<std::vector<int>> faces;
+      for (size_t f = 0; f < a.n_faces(); ++f) faces.emplace_back(a.face(f).begin(), a.face(f).end());
+      const auto moved = [&](size_t to) {
+        std::vector<std::vector<int>> f = faces;
+        f[to] = f.back();
+        f.pop_back();
+        return f;
+      };
+      const std::vector<std::vector<std::vector<int>>> steps{faces, moved(0), moved(5), moved(0), moved(5)};
+      std::vector<CovarianceMesh> meshes;
+      std::vector<SurfaceTables> whole;
+      for (const auto& f : steps) {
+        CovarianceMesh m = make_covariance_mesh(a.means(), a.covariances, f, name);
+        for (size_t k = 0; creased && k < faces[1].size(); ++k)
+          m.sharpness.set_crease(faces[1][k], faces[1][(k + 1) % faces[1].size()], kInfiniteSharpness);
+        whole.push_back(build_surface_plans(m, {}));
+        meshes.push_back(std::move(m));
+      }
+      const auto kept_between = [&](size_t from, size_t to) {
+        std::vector<KeptPatches> kept;
+        for (size_t f = 0; f < std::min(steps[from].size(), steps[to].size()); ++f)
+          if (steps[from][f] != steps[to][f])
+            continue;
+          else if (!kept.empty() && kept.back().first + kept.back().count == int(f))
+            ++kept.back().count;
+          else
+            kept.push_back({int(f), int(f), 1});
+        return kept;
+      };
+      const auto update = [&](PatchPlans& plans, size_t step, const PatchPlans& old, const AdjacencyWrites* held,
+                              AdjacencyWrites& told) {
+        return update_patch_adjacency(plans, meshes[step].sharpness, meshes[step].connectivity(), old,
+                                      kept_between(step - 1, step), held, told);
+      };
+      // The first update links every record again (no storage to rest on), the next ones rest on it.
+      std::vector<PatchPlans> made{whole[0].plans, whole[1].plans};
+      std::vector<AdjacencyWrites> writes(1);
+      ASSERT_TRUE(update(made[1], 1, whole[0].plans, nullptr, writes[0])) << where;
+      EXPECT_EQ(made[1].patch_neighbours, whole[1].plans.patch_neighbours) << where;
+      EXPECT_EQ(made[1].corner_owners, whole[1].plans.corner_owners) << where;
+      for (size_t step = 2; step < steps.size(); ++step) {
+        PatchPlans next = whole[step].plans;
+        next.patch_neighbours = made[step - 2].patch_neighbours;
+        next.corner_owners = made[step - 2].corner_owners;
+        if (!writes.back().owners_written)  // owners the update may not rest on
+          std::fill(next.corner_owners.begin(), next.corner_owners.end(), -7);
+        AdjacencyWrites told;
+        ASSERT_TRUE(update(next, step, made[step - 1], &writes.back(), told)) << where << " step " << step;
+        EXPECT_EQ(next.patch_neighbours, whole[step].plans.patch_neighbours) << where << " step " << step;
+        EXPECT_EQ(next.corner_owners, whole[step].plans.corner_owners) << where << " step " << step;
+        EXPECT_TRUE(told.numbers_kept && told.owners_written) << where << " step " << step;
+        made.push_back(std::move(next));
+        writes.push_back(std::move(told));
+      }
+      int sharp_corners = 0;  // the flags are there to be kept
+      for (size_t i = 1; i < made.back().corner_owners.size(); i += 2)
+        sharp_corners += (made.back().corner_owners[i] & kOwnerSharpCorner) != 0;
+      EXPECT_EQ(sharp_corners > 0, creased) << where;
     }
-  }
 }
 
 }  // namespace
