@@ -5,6 +5,8 @@
 #include <atomic>
 #include <cstdint>
 #include <limits>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -378,27 +380,32 @@ void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const SharpB
     for (const KeptPatches& run : kept) copy_old(run.first, run.count);
   }
   const bool flagged = has_infinite_sharpness(sharp.sharpness);
+  // Each point walked around once (a point of many patches is a corner of each).
   std::vector<int> patches;
   std::vector<int32_t> uses;
-  for_gaps(plans.n_patches(), [&](int p) {
+  std::unordered_set<int32_t> walked;
+  const auto add_users = [&](const PatchPlans& of, int p, bool kept_only) {
     for (int c = 0; c < n; ++c) {
-      point_uses(plans, p, c, patches, uses);
-      for (const int32_t use : uses) written.push_back(use >> 2);
-    }
-  });
-  for_gaps(n_old, [&](int q) {
-    for (int c = 0; c < n; ++c) {
-      point_uses(old, q, c, patches, uses);
+      if (!walked.insert(of.patch_corner_points[size_t(n * p + c)]).second) continue;
+      point_uses(of, p, c, patches, uses);
       for (const int32_t use : uses)
-        if (is_kept(use >> 2)) written.push_back(use >> 2);
+        if (!kept_only || is_kept(use >> 2)) written.push_back(use >> 2);
     }
-  });
+  };
+  for_gaps(plans.n_patches(), [&](int p) { add_users(plans, p, false); });
+  walked.clear();
+  for_gaps(n_old, [&](int q) { add_users(old, q, true); });
   std::sort(written.begin(), written.end());
   written.erase(std::unique(written.begin(), written.end()), written.end());
+  std::unordered_map<int32_t, int32_t> owner_of;  // per point walked around: its first use
   for (const int p : written)
     for (int c = 0; c < n; ++c) {
-      point_uses(plans, p, c, patches, uses);
-      const int32_t owner = *std::min_element(uses.begin(), uses.end());
+      auto [at, added] = owner_of.try_emplace(plans.patch_corner_points[size_t(n * p + c)], 0);
+      if (added) {
+        point_uses(plans, p, c, patches, uses);
+        at->second = *std::min_element(uses.begin(), uses.end());
+      }
+      const int32_t owner = at->second;
       plans.corner_owners[2 * size_t(n * p + c)] = owner >> 2;
       plans.corner_owners[2 * size_t(n * p + c) + 1] = owner & 3;
       if (flagged)
