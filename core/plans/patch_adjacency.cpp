@@ -120,6 +120,23 @@ void flag_sharp_corner(PatchPlans& plans, int n_base, int p, int c, const SharpV
     plans.corner_owners[size_t(2 * (n * p + c)) + 1] |= kOwnerSharpCorner;
 }
 
+// What the sharp flags read of the base mesh: its connectivity and sharpness.
+struct SharpBase {
+  const MeshConnectivity& connectivity;
+  const Sharpness& sharpness;
+  int n_base() const { return int(connectivity.vertex_edge_offsets.size()) - 1; }
+};
+
+// The owners' sharp flags of every corner the edges' flags set.
+void flag_sharp_corners(PatchPlans& plans, const SharpBase& sharp) {
+  std::vector<char> sharp_vertex(size_t(sharp.n_base()), 0);
+  for (int v = 0; v < sharp.n_base(); ++v)
+    sharp_vertex[size_t(v)] = is_sharp_vertex(sharp.connectivity, sharp.sharpness, v);
+  for (int p = 0; p < plans.n_patches(); ++p)
+    for (int c = 0; c < plans.corners(); ++c)
+      flag_sharp_corner(plans, sharp.n_base(), p, c, [&](int32_t v) { return sharp_vertex[size_t(v)] != 0; });
+}
+
 // Flags the linked patch edges on infinitely sharp edges and the patch corners where the patches
 // around have normals of their own (patch_adjacency.h).
 void add_sharp_flags(PatchPlans& plans, const PolygonTopology& topology, const Sharpness& sharpness,
@@ -128,12 +145,7 @@ void add_sharp_flags(PatchPlans& plans, const PolygonTopology& topology, const S
   for (int p = 0; p < plans.n_patches(); ++p)
     for (int k = 0; k < n; ++k) flag_sharp_edge(plans, sharpness, n_base, p, k);
   const MeshConnectivity built = connectivity ? MeshConnectivity{} : connectivity_of(topology);
-  const MeshConnectivity& c = connectivity ? *connectivity : built;
-  std::vector<char> sharp_vertex(size_t(n_base), 0);
-  for (int v = 0; v < n_base; ++v) sharp_vertex[size_t(v)] = is_sharp_vertex(c, sharpness, v);
-  for (int p = 0; p < plans.n_patches(); ++p)
-    for (int k = 0; k < n; ++k)
-      flag_sharp_corner(plans, n_base, p, k, [&](int32_t v) { return sharp_vertex[size_t(v)] != 0; });
+  flag_sharp_corners(plans, {connectivity ? *connectivity : built, sharpness});
 }
 
 // Corner owners: the first (lowest) patch with each corner point.
@@ -214,23 +226,6 @@ void add_patch_adjacency(PatchPlans& plans, const PolygonTopology& topology, con
 }
 
 namespace {
-
-// What the sharp flags read of the base mesh: its connectivity and sharpness.
-struct SharpBase {
-  const MeshConnectivity& connectivity;
-  const Sharpness& sharpness;
-  int n_base() const { return int(connectivity.vertex_edge_offsets.size()) - 1; }
-};
-
-// The owners' sharp flags of every corner (add_sharp_flags' second half).
-void flag_sharp_corners(PatchPlans& plans, const SharpBase& sharp) {
-  std::vector<char> sharp_vertex(size_t(sharp.n_base()), 0);
-  for (int v = 0; v < sharp.n_base(); ++v)
-    sharp_vertex[size_t(v)] = is_sharp_vertex(sharp.connectivity, sharp.sharpness, v);
-  for (int p = 0; p < plans.n_patches(); ++p)
-    for (int c = 0; c < plans.corners(); ++c)
-      flag_sharp_corner(plans, sharp.n_base(), p, c, [&](int32_t v) { return sharp_vertex[size_t(v)] != 0; });
-}
 
 // An update of the edge records: the plans being made, the records before, and what is to be linked.
 class RecordUpdate {
