@@ -318,7 +318,7 @@ public:
       for (int k = 0; k < n_; ++k)
         if (plans_.patch_neighbours[size_t(4 * (n_ * p + k))] < 0) kept_boundary.push_back(n_ * p + k);
     std::sort(kept_boundary.begin(), kept_boundary.end());
-    writes = {numbers_kept, std::move(written), std::move(kept_boundary)};
+    writes = {numbers_kept, std::move(written), std::move(kept_boundary), std::nullopt};
   }
 
 private:
@@ -354,42 +354,65 @@ void point_uses(const PatchPlans& plans, int p, int c, std::vector<int>& patches
   }
 }
 
-// The corner owners of plans that keep every kept patch's number (`is_kept`, `for_gaps`: the new and
-// the gone patches) from those of `old`: where `held_written` is given, plans.corner_owners holds the
-// owners of the plans `old` was made from, which differ from old's at those patches only; else old's
-// are copied. The owners found again are those of the corners whose point a new or a gone patch has;
-// their patches go in `written`.
-template <class IsKept, class ForGaps>
-void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const SharpBase& sharp, const IsKept& is_kept,
-                          const ForGaps& for_gaps, const std::vector<KeptPatches>& kept,
-                          const std::vector<int>* held_written, std::vector<int>& written) {
+// Visits the patches between the kept runs, in the new numbering (the new patches) or, with
+// `old_numbers`, in the old (the patches that are gone).
+template <class Visit>
+void for_gaps(const std::vector<KeptPatches>& kept, bool old_numbers, int end, const Visit& visit) {
+  int at = 0;
+  for (const KeptPatches& run : kept) {
+    const int first = old_numbers ? run.old_first : run.first;
+    for (; at < first; ++at) visit(at);
+    at = first + run.count;
+  }
+  for (; at < end; ++at) visit(at);
+}
+
+// The corner owners of plans whose kept patches are `kept` (runs increasing in both numberings;
+// `new_of(patch before)`: its number now, −1 gone) from those of `old`. A corner's owner is the least use
+// of its point; where every use stays, the least stays the least, renumbered. The owners found again are
+// those of the corners whose point a new or a gone patch has; their patches go in `written`. Where
+// `held_written` is given (every run keeps its numbers), plans.corner_owners holds the owners of the
+// plans `old` was made from, which differ from old's at those patches only; else the kept runs' owners
+// are carried over whole.
+template <class NewOf>
+void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const SharpBase& sharp, const NewOf& new_of,
+                          const std::vector<KeptPatches>& kept, const std::vector<int>* held_written,
+                          std::vector<int>& written) {
   const int n = plans.corners(), n_old = old.n_patches();
-  const auto copy_old = [&](int p, int count) {
-    std::copy_n(old.corner_owners.begin() + 2 * ptrdiff_t(n) * p, 2 * size_t(n) * size_t(count),
-                plans.corner_owners.begin() + 2 * ptrdiff_t(n) * p);
+  const bool same_numbers = keep_numbers(kept);
+  const auto carry_old = [&](int p, int q, int count) {
+    const int32_t* from = old.corner_owners.data() + 2 * ptrdiff_t(n) * q;
+    int32_t* to = plans.corner_owners.data() + 2 * ptrdiff_t(n) * p;
+    const ptrdiff_t size = 2 * ptrdiff_t(n) * count;
+    if (same_numbers) return void(std::copy_n(from, size, to));
+#pragma omp parallel for schedule(static) if (count >= kParallelFaces)
+    for (ptrdiff_t i = 0; i < size; i += 2) {
+      to[i] = from[i] >= 0 ? new_of(from[i]) : -1;  // −1 where the owner is gone: its point is found again below
+      to[i + 1] = from[i + 1];
+    }
   };
   if (held_written) {
     for (const int p : *held_written)
-      if (is_kept(p)) copy_old(p, 1);
+      if (new_of(p) >= 0) carry_old(p, p, 1);
   } else {
-    for (const KeptPatches& run : kept) copy_old(run.first, run.count);
+    for (const KeptPatches& run : kept) carry_old(run.first, run.old_first, run.count);
   }
   const bool flagged = has_infinite_sharpness(sharp.sharpness);
   // Each point walked around once (a point of many patches is a corner of each).
   std::vector<int> patches;
   std::vector<int32_t> uses;
   std::unordered_set<int32_t> walked;
-  const auto add_users = [&](const PatchPlans& of, int p, bool kept_only) {
+  const auto add_users = [&](const PatchPlans& of, int p, bool old_numbers) {
     for (int c = 0; c < n; ++c) {
       if (!walked.insert(of.patch_corner_points[size_t(n * p + c)]).second) continue;
       point_uses(of, p, c, patches, uses);
       for (const int32_t use : uses)
-        if (!kept_only || is_kept(use >> 2)) written.push_back(use >> 2);
+        if (const int user = old_numbers ? new_of(use >> 2) : use >> 2; user >= 0) written.push_back(user);
     }
   };
-  for_gaps(plans.n_patches(), [&](int p) { add_users(plans, p, false); });
+  for_gaps(kept, false, plans.n_patches(), [&](int p) { add_users(plans, p, false); });
   walked.clear();
-  for_gaps(n_old, [&](int q) { add_users(old, q, true); });
+  for_gaps(kept, true, n_old, [&](int q) { add_users(old, q, true); });
   std::sort(written.begin(), written.end());
   written.erase(std::unique(written.begin(), written.end()), written.end());
   std::unordered_map<int32_t, int32_t> owner_of;  // per point walked around: its first use
@@ -409,9 +432,11 @@ void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const SharpB
     }
 }
 
-// update_patch_adjacency over every kept patch, telling what it wrote.
+// update_patch_adjacency over every kept patch, telling what it wrote. Where the plans before (`old`)
+// and the kept runs (`kept`) are given, the corner owners are updated from old's; else found whole.
 bool update_every_record(PatchPlans& plans, const Sharpness& sharpness, const std::vector<int32_t>& old_neighbours,
-                         const std::vector<int>& new_of_old, const SharpBase* sharp, AdjacencyWrites& writes) {
+                         const std::vector<int>& new_of_old, const SharpBase* sharp, AdjacencyWrites& writes,
+                         const PatchPlans* old = nullptr, const std::vector<KeptPatches>* kept = nullptr) {
   const int n = plans.corners(), n_patches = plans.n_patches();
   const bool flagged = has_infinite_sharpness(sharpness);
   if ((flagged && !sharp) || old_neighbours.size() != size_t(4 * n) * new_of_old.size()) return false;
@@ -449,6 +474,11 @@ bool update_every_record(PatchPlans& plans, const Sharpness& sharpness, const st
   }
   update.link_again();
   update.tell(std::move(written), std::move(boundary), numbers_kept, writes);
+  if (old && kept && sharp) {
+    std::vector<int> owners_written;
+    update_corner_owners(plans, *old, *sharp, new_of, *kept, nullptr, owners_written);
+    return true;
+  }
   add_corner_owners(plans);
   if (flagged) flag_sharp_corners(plans, *sharp);
   return true;
@@ -485,7 +515,7 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
     std::vector<int> new_of_old(size_t(n_old), -1);
     for (const KeptPatches& run : kept)
       for (int i = 0; i < run.count; ++i) new_of_old[size_t(run.old_first + i)] = run.first + i;
-    return update_every_record(plans, sharpness, old_neighbours, new_of_old, &sharp, writes);
+    return update_every_record(plans, sharpness, old_neighbours, new_of_old, &sharp, writes, &old, &kept);
   }
   // Every kept patch keeps its number, and a record that neither update wrote holds already: the one
   // before, renumbered to itself, unless it is a boundary's or lies beside a patch that is gone (links
@@ -496,25 +526,16 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
     return run != kept.begin() && p < std::prev(run)->first + std::prev(run)->count;
   };
   const auto new_of = [&](int32_t q) { return is_kept(q) ? q : -1; };
-  // The patches between the runs: new ones in the new numbering, gone ones in the old.
-  const auto for_gaps = [&](int end, const auto& visit) {
-    int at = 0;
-    for (const KeptPatches& run : kept) {
-      for (; at < run.first; ++at) visit(at);
-      at = run.first + run.count;
-    }
-    for (; at < end; ++at) visit(at);
-  };
   RecordUpdate update(plans, old_neighbours, &sharp);
   update.resize();
   std::vector<int> written, candidates;
-  for_gaps(n_patches, [&](int p) { update.add_new(p), written.push_back(p); });
+  for_gaps(kept, false, n_patches, [&](int p) { update.add_new(p), written.push_back(p); });
   update.sort_new_keys();
   for (const int p : held->written)
     if (is_kept(p)) candidates.push_back(p);
   for (const int record : held->boundary)
     if (is_kept(record / n)) candidates.push_back(record / n);
-  for_gaps(n_old, [&](int q) {
+  for_gaps(kept, true, n_old, [&](int q) {
     for (int k = 0; k < n; ++k)
       for (int j = 0; j < 4; j += 2)
         if (const int32_t p = old_neighbours[size_t(4 * (n * q + k) + j)]; p >= 0 && is_kept(p))
@@ -530,8 +551,8 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
   update.link_again();
   update.tell(std::move(written), std::move(boundary), true, writes);
   writes.owners_written.emplace();
-  update_corner_owners(plans, old, sharp, is_kept, for_gaps, kept,
-                       held->owners_written ? &*held->owners_written : nullptr, *writes.owners_written);
+  update_corner_owners(plans, old, sharp, new_of, kept, held->owners_written ? &*held->owners_written : nullptr,
+                       *writes.owners_written);
   return true;
 }
 

@@ -383,5 +383,54 @@ TEST(PatchAdjacency, UpdatesThatKeepNumbersFollowAFaceMovingAsWholeBuildsDo) {
     }
 }
 
+// A face taken out of a mesh, leaving a hole, and put back: the patches after it move down by one and
+// back up. Each update renumbers the kept records and owners, and finds again those at the points of
+// the face's patch, which the hole takes away from its neighbours and the face gives back: a whole
+// build's records either way.
+TEST(PatchAdjacency, UpdatesThatRenumberFollowAFaceTakenOutAndPutBackAsWholeBuildsDo) {
+  for (const std::string name : {"grid", "sphere", "icosphere"})  // one patch per face
+    for (const bool creased : {false, true}) {                    // face 1's edges infinitely sharp: flags to keep
+      const CovarianceMesh a = make_sample(name, 64);
+      std::vector<std::vector<int>> faces;
+      for (size_t f = 0; f < a.n_faces(); ++f) faces.emplace_back(a.face(f).begin(), a.face(f).end());
+      const auto mesh_of = [&](const std::vector<std::vector<int>>& f) {
+        CovarianceMesh m = make_covariance_mesh(a.means(), a.covariances, f, name);
+        for (size_t k = 0; creased && k < faces[1].size(); ++k)
+          m.sharpness.set_crease(faces[1][k], faces[1][(k + 1) % faces[1].size()], kInfiniteSharpness);
+        return m;
+      };
+      const CovarianceMesh whole_mesh = mesh_of(faces);
+      const SurfaceTables whole = build_surface_plans(whole_mesh, {});
+      const int n = int(faces.size());
+      for (const int f : {0, 9, n / 2, n - 10}) {
+        const std::string where = name + (creased ? " creased" : "") + " face " + std::to_string(f);
+        std::vector<std::vector<int>> holed = faces;
+        holed.erase(holed.begin() + f);
+        const CovarianceMesh hole_mesh = mesh_of(holed);
+        const SurfaceTables hole = build_surface_plans(hole_mesh, {});
+        const std::vector<KeptPatches> out{{0, 0, f}, {f, f + 1, n - f - 1}}, back{{0, 0, f}, {f + 1, f, n - f - 1}};
+        const auto runs = [](std::vector<KeptPatches> kept) {  // a run of no patches is none
+          std::erase_if(kept, [](const KeptPatches& run) { return run.count == 0; });
+          return kept;
+        };
+        PatchPlans taken = hole.plans, put = whole.plans;
+        std::fill(taken.corner_owners.begin(), taken.corner_owners.end(), -7);
+        std::fill(put.corner_owners.begin(), put.corner_owners.end(), -7);
+        AdjacencyWrites told, told_back;
+        ASSERT_TRUE(update_patch_adjacency(taken, hole_mesh.sharpness, hole_mesh.connectivity(), whole.plans, runs(out),
+                                           nullptr, told))
+            << where;
+        EXPECT_EQ(taken.patch_neighbours, hole.plans.patch_neighbours) << where;
+        EXPECT_EQ(taken.corner_owners, hole.plans.corner_owners) << where;
+        EXPECT_EQ(told.numbers_kept, f == n - 1) << where;
+        ASSERT_TRUE(update_patch_adjacency(put, whole_mesh.sharpness, whole_mesh.connectivity(), taken, runs(back),
+                                           &told, told_back))
+            << where;
+        EXPECT_EQ(put.patch_neighbours, whole.plans.patch_neighbours) << where;
+        EXPECT_EQ(put.corner_owners, whole.plans.corner_owners) << where;
+      }
+    }
+}
+
 }  // namespace
 }  // namespace gps
