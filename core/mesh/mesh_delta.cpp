@@ -1,6 +1,9 @@
 #include "core/mesh/mesh_delta.h"
 
+#include <algorithm>
 #include <cstring>
+#include <optional>
+#include <utility>
 
 namespace gps {
 
@@ -140,6 +143,100 @@ CovarianceMesh apply_delta(const CovarianceMesh& from, const MeshDelta& d) {
       make_covariance_mesh(from, std::move(means), std::move(covariances), std::move(t), origins, "restored mesh");
   m.sharpness = d.sharpness;
   return m;
+}
+
+namespace {
+
+// The element `i` of the runs' mesh is in the source, or −1 (the runs ascending, as take makes them).
+int source_in(const std::vector<TakenRun>& runs, int i) {
+  const auto run = std::upper_bound(runs.begin(), runs.end(), i, [](int x, const TakenRun& r) { return x < r.first; });
+  if (run == runs.begin()) return -1;
+  const TakenRun& r = *std::prev(run);
+  return i < r.first + r.count ? r.source_first + (i - r.first) : -1;
+}
+
+// Where vertex v is among the delta's own Gaussians, or −1.
+int own_index(const MeshDelta& d, int v) {
+  const auto at = std::lower_bound(d.own_gaussians.begin(), d.own_gaussians.end(), v);
+  return at != d.own_gaussians.end() && *at == v ? int(at - d.own_gaussians.begin()) : -1;
+}
+
+// The delta's own Gaussians with `changes` (ascending by vertex, each listed once) merged in: a change
+// with a Gaussian sets the vertex's own, one without drops it.
+void merge_own(MeshDelta& d, const std::vector<std::pair<int, std::optional<Gaussian>>>& changes) {
+  std::vector<int> vertices;
+  std::vector<Vec3> means;
+  std::vector<Mat3> covariances;
+  size_t i = 0;
+  const auto keep = [&](int v, const Vec3& mean, const Mat3& covariance) {
+    vertices.push_back(v);
+    means.push_back(mean);
+    covariances.push_back(covariance);
+  };
+  for (const auto& [v, g] : changes) {
+    for (; i < d.own_gaussians.size() && d.own_gaussians[i] < v; ++i)
+      keep(d.own_gaussians[i], d.means[i], d.covariances[i]);
+    if (i < d.own_gaussians.size() && d.own_gaussians[i] == v) ++i;
+    if (g) keep(v, g->mean, g->covariance);
+  }
+  for (; i < d.own_gaussians.size(); ++i) keep(d.own_gaussians[i], d.means[i], d.covariances[i]);
+  d.own_gaussians = std::move(vertices);
+  d.means = std::move(means);
+  d.covariances = std::move(covariances);
+}
+
+bool same_gaussian(const Gaussian& a, const Vec3& mean, const Mat3& covariance) {
+  return same_bytes(a.mean, mean) && same_bytes(a.covariance, covariance);
+}
+
+}  // namespace
+
+void retell_gaussians(MeshDelta& forward, MeshDelta& back, const CovarianceMesh& now, const std::vector<int>& vertices,
+                      const std::vector<Vec3>& was_means, const std::vector<Mat3>& was_covariances) {
+  // The vertices changed, each once, with its Gaussian in `after`.
+  std::vector<std::pair<int, Gaussian>> changed;
+  for (size_t i = 0; i < vertices.size(); ++i) changed.push_back({vertices[i], {was_means[i], was_covariances[i]}});
+  std::stable_sort(changed.begin(), changed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  changed.erase(
+      std::unique(changed.begin(), changed.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
+      changed.end());
+  const auto was = [&](int v) -> const Gaussian* {
+    const auto at = std::lower_bound(changed.begin(), changed.end(), v,
+                                     [](const std::pair<int, Gaussian>& c, int x) { return c.first < x; });
+    return at != changed.end() && at->first == v ? &at->second : nullptr;
+  };
+  // A vertex's Gaussian in `after` and in `before` (back's own, else its source's in `after`).
+  const auto in_after = [&](int w) {
+    const Gaussian* g = was(w);
+    return g ? *g : Gaussian{now.mean(size_t(w)), now.covariance(size_t(w))};
+  };
+  const auto in_before = [&](int o) {
+    if (const int i = own_index(back, o); i >= 0) return Gaussian{back.means[size_t(i)], back.covariances[size_t(i)]};
+    return in_after(source_in(back.vertex_runs, o));
+  };
+  // Forward: a changed vertex's Gaussian is its own where it is not its source's in `before`.
+  std::vector<std::pair<int, std::optional<Gaussian>>> forward_changes, back_changes;
+  for (const auto& [v, g] : changed) {
+    const Vec3& mean = now.mean(size_t(v));
+    const Mat3& covariance = now.covariance(size_t(v));
+    const int o = source_in(forward.vertex_runs, v);
+    const bool own = o < 0 || !same_gaussian(in_before(o), mean, covariance);
+    forward_changes.push_back({v, own ? std::optional<Gaussian>({mean, covariance}) : std::nullopt});
+  }
+  // Back: a vertex of `before` whose source changed has its own Gaussian where it is not the source's now.
+  for (const TakenRun& run : back.vertex_runs) {
+    const auto first = std::lower_bound(changed.begin(), changed.end(), run.source_first,
+                                        [](const std::pair<int, Gaussian>& c, int x) { return c.first < x; });
+    for (auto c = first; c != changed.end() && c->first < run.source_first + run.count; ++c) {
+      const int o = run.first + (c->first - run.source_first);
+      const Gaussian g = in_before(o);
+      const bool own = !same_gaussian(g, now.mean(size_t(c->first)), now.covariance(size_t(c->first)));
+      back_changes.push_back({o, own ? std::optional<Gaussian>(g) : std::nullopt});
+    }
+  }
+  std::sort(back_changes.begin(), back_changes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  merge_own(forward, forward_changes);
+  merge_own(back, back_changes);
 }
 
 }  // namespace gps

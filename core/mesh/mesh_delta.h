@@ -40,6 +40,14 @@ struct MeshDelta {
 /// the same corners renumbered; vertices are told apart by that correspondence, not by position.
 MeshDelta mesh_delta(const CovarianceMesh& from, const CovarianceMesh& to, const std::vector<int>& origin);
 
+/// `forward` (a mesh `after` as a change of `before`) and `back` (`before` as a change of `after`), made
+/// to tell `now` instead: `after` with the Gaussians of `vertices` changed, `was_means` and
+/// `was_covariances` theirs in `after` (a vertex listed twice: its first). What mesh_delta gives each
+/// way for `now` (with the vertex sources each already has), at the cost of the vertices changed: an
+/// operation and the move that follows it told as one change.
+void retell_gaussians(MeshDelta& forward, MeshDelta& back, const CovarianceMesh& now, const std::vector<int>& vertices,
+                      const std::vector<Vec3>& was_means, const std::vector<Mat3>& was_covariances);
+
 /// Per vertex of the mesh `delta` tells: its index in the source (−1 new).
 std::vector<int> vertex_sources(const MeshDelta& delta);
 

@@ -48,18 +48,10 @@ bool EditHistory::fold_last_into_replacement(const CovarianceMesh& mesh, const S
   if (position_ < 2 || position_ != steps_.size()) return false;
   Step& replaced = steps_[position_ - 2];
   if (!replaced.replacement || steps_[position_ - 1].replacement) return false;
-  // The mesh the operation left (the edit undone on `mesh`), the mesh before it, and both told again
-  // against each other with the edit in.
+  // The operation's deltas told again for `mesh`, which the edit changed from what the operation left.
   MeshReplacement& r = *replaced.replacement;
   const VertexEdit& edit = steps_[position_ - 1].edit;
-  CovarianceMesh left = mesh;
-  for (size_t i = 0; i < edit.vertices.size(); ++i) {
-    left.set_mean(size_t(edit.vertices[i]), edit.means_before[i]);
-    left.set_covariance(size_t(edit.vertices[i]), edit.covariances_before[i]);
-  }
-  const CovarianceMesh before = apply_delta(left, r.back);
-  r.forward = mesh_delta(before, mesh, vertex_sources(r.forward));
-  r.back = mesh_delta(mesh, before, vertex_sources(r.back));
+  retell_gaussians(r.forward, r.back, mesh, edit.vertices, edit.means_before, edit.covariances_before);
   r.selection_after = selection;
   steps_.pop_back();
   if (saved_ == position_ - 1) saved_ = std::numeric_limits<size_t>::max();  // between the two: gone

@@ -1,6 +1,7 @@
 #include "ui/document/editor_document.h"
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -136,12 +137,12 @@ void EditorDocument::cancel_edit() {
   edit_index_.clear();
 }
 
-void EditorDocument::apply(const Modelled& result, const SelectionRecord& selection_before) {
+void EditorDocument::apply(Modelled result, const SelectionRecord& selection_before) {
   if (edit_) commit_edit();
   MeshReplacement step = mesh_replacement(mesh_, result.mesh, result.vertex_origin);
   step.selection_before = selection_before;
-  step.selection_after.vertices = result.selection;
-  mesh_ = result.mesh;
+  step.selection_after.vertices = std::move(result.selection);
+  mesh_ = std::move(result.mesh);
   history_.commit(std::move(step));
   changed_.clear();  // the vertices are new: the GPU rebuilds
 }

@@ -72,8 +72,9 @@ public:
   /// Replaces the mesh by a modelling operation's result as one undo step, which restores the mesh
   /// exactly (vertices, faces, their order and values) and `selection_before` with it; the redo
   /// selects the result's vertices. Closes an open edit first. The GPU must rebuild for the new mesh
-  /// (take_changed() does not list it).
-  void apply(const Modelled& result, const SelectionRecord& selection_before);
+  /// (take_changed() does not list it). The result's mesh is taken over, not copied, where it is given
+  /// to keep.
+  void apply(Modelled result, const SelectionRecord& selection_before);
   /// Closes the open edit and folds it into the modelling step just applied, so that both undo as
   /// one (an extrusion and its move); `selection` goes with the result. Without such a step it
   /// commits the edit as its own step. Returns whether anything changed.

@@ -103,7 +103,7 @@ private:
                      SurfaceReplanner* replanner = nullptr);
   // Throws gps::Error before anything changes. `replanner`: the plans of the document's topology,
   // which re-plans a result of the same topology and other sharpness around the changes only.
-  void install(const Modelled& result, SurfaceReplanner* replanner = nullptr);
+  void install(Modelled result, SurfaceReplanner* replanner = nullptr);
   // The selection after a change of topology: `selection`'s vertices; in face mode `faces` where given,
   // else the faces whose corners they all are.
   void topology_changed(const std::vector<int>& selection, const std::vector<int>& faces = {});

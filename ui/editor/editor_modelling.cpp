@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <utility>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -320,9 +321,9 @@ bool EditorApp::operate(const std::string& name, const std::function<Modelled(co
   return true;
 }
 
-void EditorApp::install(const Modelled& made, SurfaceReplanner* replanner) {
-  const std::optional<Modelled> open = shown_->mirror().seam_kept_open(document_.mesh(), made);
-  const Modelled& result = open ? *open : made;
+void EditorApp::install(Modelled made, SurfaceReplanner* replanner) {
+  std::optional<Modelled> open = shown_->mirror().seam_kept_open(document_.mesh(), made);
+  Modelled result = open ? std::move(*open) : std::move(made);
   std::optional<ReplannedTables> surface;
   if (replanner) {  // first: it throws before anything changes
     replanner->set_sharpness(result.mesh.sharpness);
@@ -330,9 +331,10 @@ void EditorApp::install(const Modelled& made, SurfaceReplanner* replanner) {
   }
   show_mesh(result.mesh, view_.plans(), std::move(surface), result.vertex_origin);
   shown_->clear_preview();
-  document_.apply(result, selection_.record());
   last_summary_ = result.summary;
-  topology_changed(result.selection, result.selected_faces);
+  const std::vector<int> selected = result.selection, selected_faces = result.selected_faces;
+  document_.apply(std::move(result), selection_.record());  // the mesh taken over
+  topology_changed(selected, selected_faces);
 }
 
 void EditorApp::topology_changed(const std::vector<int>& selection, const std::vector<int>& faces) {
