@@ -122,9 +122,9 @@ void add_bench_command(CLI::App& app) {
       const auto context = make_context();
       const std::string name = args->mesh.empty() ? "sphere" : args->mesh;
       std::printf("device: %s, 1280x720, adaptive 6 px\n", context->description().c_str());
-      std::printf("%-30s %-18s %10s %10s %8s %10s %10s %10s %10s %10s %10s %10s %10s %10s %9s %8s\n", "mesh",
+      std::printf("%-30s %-18s %10s %10s %8s %10s %10s %10s %10s %10s %10s %10s %10s %10s %10s %9s %8s\n", "mesh",
                   "operation", "operation", "re-plan", "faces", "full plan", "upload", "frame", "total", "next",
-                  "pause", "still", "undo", "undo frame", "captures", "still is");
+                  "pause", "still", "first edit", "undo", "undo frame", "captures", "still is");
       nlohmann::json all = nlohmann::json::array();
       for (const int faces : args->size ? std::vector<int>{args->size} : std::vector<int>{10000, 100000}) {
         const auto r = modelling_figures(name, faces, args->plans.options(), args->crease_every);
@@ -138,7 +138,7 @@ void add_bench_command(CLI::App& app) {
           }
           for (const char* key :
                {"operation_ms", "replan_ms", "faces_planned", "full_replan_ms", "upload_ms", "frame_ms", "total_ms",
-                "next_frame_ms", "pause_frame_ms", "still_frame_ms", "undo_ms", "undo_frame_ms"})
+                "next_frame_ms", "pause_frame_ms", "still_frame_ms", "first_edit_ms", "undo_ms", "undo_frame_ms"})
             if (op[key].is_number_integer())
               std::printf(" %8d", op[key].get<int>());
             else

@@ -34,9 +34,8 @@ void BM_Model(benchmark::State& state) {
   for (auto _ : state) state.SetIterationTime(operation["total_ms"].get<double>() * 1e-3);
   state.SetLabel(operation["operation"].get<std::string>());
   for (const char* key : {"operation_ms", "replan_ms", "upload_ms", "frame_ms", "next_frame_ms", "pause_frame_ms",
-                          "still_frame_ms", "undo_ms", "undo_frame_ms", "frame_gpu_ms", "still_gpu_ms", "frame_captures",
-                          "frame_refreshed_patches",
-                          "still_cached", "still_welded"})
+                          "still_frame_ms", "first_edit_ms", "undo_ms", "undo_frame_ms", "frame_gpu_ms", "still_gpu_ms",
+                          "frame_captures", "frame_refreshed_patches", "still_cached", "still_welded"})
     state.counters[key] = operation[key].get<double>();
 }
 

@@ -95,7 +95,8 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       rows.push_back({{"operation", label}, {"skipped", error.what()}});
       continue;
     }
-    std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, next_s, pause_s, still_s, undo_s, undo_frame_s;
+    std::vector<double> op_s, plan_s, full_s, upload_s, frame_s, total_s, next_s, pause_s, still_s, edit_s, undo_s,
+        undo_frame_s;
     // How the surface cache drew: full captures in the frame after the operation, the patches its
     // refresh captured or evaluated again, and whether the still frame drew stored, welded triangles.
     std::vector<double> captures, refreshed, still_cached, still_welded;
@@ -144,6 +145,14 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       still_gpu_s.push_back(surface_pass_seconds(timer));
       still_cached.push_back(renderer.last_statistics().cached);
       still_welded.push_back(cache.has_stored_triangles() && cache.stored_vertices_welded());
+      // The first edit of the new topology, as the move that follows an extrusion: the vertices the
+      // operation selects moved, up to the end of the compute passes that follow them.
+      CovarianceMesh moved = result.mesh;
+      for (const int v : result.selection) moved.set_mean(size_t(v), 1.01 * moved.mean(size_t(v)));
+      const Clock::time_point editing = Clock::now();
+      renderer.update_vertices(moved, result.selection);
+      glFinish();
+      edit_s.push_back(seconds_since(editing));
       const Clock::time_point full = Clock::now();
       const SurfaceTables whole = build_surface_plans(result.mesh, options);
       full_s.push_back(seconds_since(full));
@@ -164,8 +173,8 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
     // The first round of each operation warms the allocator and the driver's buffers up for its sizes
     // (the first operation timed paid twice the others' upload): not counted.
     for (std::vector<double>* times :
-         {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &pause_s, &still_s, &undo_s, &undo_frame_s,
-          &captures, &refreshed, &still_cached, &still_welded, &frame_gpu_s, &still_gpu_s})
+         {&op_s, &plan_s, &full_s, &upload_s, &frame_s, &total_s, &next_s, &pause_s, &still_s, &edit_s, &undo_s,
+          &undo_frame_s, &captures, &refreshed, &still_cached, &still_welded, &frame_gpu_s, &still_gpu_s})
       times->erase(times->begin());
     rows.push_back({{"operation", label},
                     {"operation_ms", median(op_s) * 1e3},
@@ -178,6 +187,7 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
                     {"next_frame_ms", median(next_s) * 1e3},
                     {"pause_frame_ms", median(pause_s) * 1e3},
                     {"still_frame_ms", median(still_s) * 1e3},
+                    {"first_edit_ms", median(edit_s) * 1e3},
                     {"undo_ms", median(undo_s) * 1e3},
                     {"undo_frame_ms", median(undo_frame_s) * 1e3},
                     {"frame_gpu_ms", median(frame_gpu_s) * 1e3},

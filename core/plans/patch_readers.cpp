@@ -4,6 +4,7 @@
 
 #include "core/support/error.h"
 #include "core/mesh/sparse_lists.h"
+#include "core/plans/surface_replanner.h"
 
 namespace gps {
 
@@ -68,6 +69,45 @@ std::vector<int> PatchReaders::patches_changed_by(const std::vector<int>& points
   std::vector<int> out = union_of_lists(canonical_offsets_, canonical_users_, read);
   out.insert(out.end(), read.begin(), read.end());  // the readers themselves, then merged in order
   std::inplace_merge(out.begin(), out.end() - ptrdiff_t(read.size()), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<int> patches_changed_near(const PolygonTopology& t, const MeshConnectivity& c, const PatchPlans& plans,
+                                      const std::vector<int>& first, int first_row, const std::vector<int>& vertices,
+                                      const std::vector<int>& rows) {
+  std::vector<int> points = vertices;
+  for (const int r : rows) points.push_back(first_row + r);
+  std::sort(points.begin(), points.end());
+  const auto is_point = [&](int q) { return std::binary_search(points.begin(), points.end(), q); };
+  const auto face_of = [&](int p) { return int(std::upper_bound(first.begin(), first.end(), p) - first.begin()) - 1; };
+  // The readers, among the patches of the faces whose plans read the vertices.
+  std::vector<int> read, read_faces, own;
+  for (const int f : faces_reading(t, c, {}, vertices))
+    for (int p = first[size_t(f)]; p < first[size_t(f) + 1]; ++p) {
+      own.clear();
+      append_patch_points(plans, p, own);
+      if (std::any_of(own.begin(), own.end(), is_point)) read.push_back(p), read_faces.push_back(face_of(p));
+    }
+  std::sort(read.begin(), read.end());
+  std::sort(read_faces.begin(), read_faces.end());
+  read_faces.erase(std::unique(read_faces.begin(), read_faces.end()), read_faces.end());
+  // Their canonical users: the patches around whose edge records or corner owners name one of them (a
+  // patch across an edge or with a corner point in common lies on a face sharing a vertex with its face).
+  const auto is_read = [&](int q) { return std::binary_search(read.begin(), read.end(), q); };
+  const int n = plans.corners();
+  std::vector<int> out = read;
+  for (const int f : faces_around(t, c, read_faces))
+    for (int q = first[size_t(f)]; q < first[size_t(f) + 1]; ++q)
+      for (int k = 0; k < n; ++k) {
+        const int32_t* r = &plans.patch_neighbours[size_t(4 * (n * q + k))];
+        const int owner = plans.corner_owners[size_t(2 * (n * q + k))];
+        if ((r[0] != q && is_read(r[0])) || (r[2] != q && is_read(r[2])) || (owner != q && is_read(owner))) {
+          out.push_back(q);
+          break;
+        }
+      }
+  std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }

@@ -6,6 +6,7 @@
 // topology from the plan table alone.
 #include <vector>
 
+#include "core/mesh/mesh_connectivity.h"
 #include "core/plans/patch_plans.h"
 
 namespace gps {
@@ -31,5 +32,14 @@ private:
   std::vector<int> point_offsets_, point_patches_;        // per point: the patches that read it
   std::vector<int> canonical_offsets_, canonical_users_;  // per patch: the patches evaluating a boundary point from it
 };
+
+/// PatchReaders::patches_changed_by for the base vertices `vertices` and the stencil rows `rows` that
+/// read them (points first_row + row: StencilTable::first_row), found from the mesh (`t`, `c`; `first`: first_patches
+/// of t in `plans`) instead of an index over every patch: the patches of the faces whose plans read the vertices
+/// (faces_reading) that read one of the points, and the patches around those whose records name them.
+/// For an edit of a few vertices after a change of topology, which an index would cost more than.
+std::vector<int> patches_changed_near(const PolygonTopology& t, const MeshConnectivity& c, const PatchPlans& plans,
+                                      const std::vector<int>& first, int first_row, const std::vector<int>& vertices,
+                                      const std::vector<int>& rows);
 
 }  // namespace gps

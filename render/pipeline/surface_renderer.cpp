@@ -63,6 +63,8 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   const std::shared_ptr<const SurfaceTables> before = std::exchange(tables_, std::move(surface_tables));
   dependents_.reset();
   readers_.reset();
+  mesh_shape_ = mesh.shape();
+  first_patches_.reset();
   all_corner_items_ = {};
   half_size_patches_ = -1;
   // Kept tables keep the points of the base vertices that did not change, in this frame and precision.

@@ -204,7 +204,11 @@ private:
 
   std::shared_ptr<const SurfaceTables> tables_ = std::make_shared<const SurfaceTables>();
   std::optional<StencilDependents> dependents_;  // of tables_'s stencils, once asked for (dependents())
-  std::unique_ptr<const PatchReaders> readers_;  // built at the first edit the cache can follow
+  std::unique_ptr<const PatchReaders> readers_;  // built at the first edit of many vertices the cache can follow
+  /// Below one vertex in this many, an edit's patches are found around it (patches_changed_near).
+  static constexpr size_t kNearEditDivisor = 64;
+  std::shared_ptr<const MeshShape> mesh_shape_ = empty_mesh_shape();  // the faces tables_ plan
+  std::optional<std::vector<int>> first_patches_;                     // of mesh_shape_ in tables_, once asked for
   PlanBuffers buffers_;
   MeshPointPrecision point_precision_;  // what the mesh's Gaussians need
   DualStencilPass compute_;

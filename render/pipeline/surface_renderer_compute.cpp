@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "core/plans/patch_faces.h"
 #include "core/plans/stencil_table.h"
 #include "render/pipeline/kept_corner_output.h"
 #include "render/pipeline/kept_surface_triangles.h"
@@ -99,6 +100,13 @@ const StencilDependents& SurfaceRenderer::dependents() {
 
 std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {
   const StencilTable& stencils = tables().stencils;
+  // A few vertices (a drag, the move after an extrusion) are looked up around them in the mesh; more,
+  // in an index over every patch, built once per topology.
+  if (!readers_ && changed.size() * kNearEditDivisor < size_t(stencils.n_base)) {
+    if (!first_patches_) first_patches_ = first_patches(mesh_shape_->topology, tables().plans);
+    return patches_changed_near(mesh_shape_->topology, mesh_shape_->connectivity, tables().plans, *first_patches_,
+                                stencils.first_row(), changed, rows);
+  }
   if (!readers_) readers_ = std::make_unique<const PatchReaders>(tables().plans, stencils.n_points());
   std::vector<int> points = changed;
   for (const int r : rows) points.push_back(stencils.first_row() + r);

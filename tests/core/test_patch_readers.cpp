@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/evaluation/patch_eval.h"
+#include "core/plans/patch_faces.h"
 #include "core/plans/planned_surface.h"
 #include "core/modelling/samples.h"
 
@@ -61,6 +62,41 @@ TEST(PatchReaders, UnlistedPatchesEvaluateAlikeAfterAnEdit) {
       EXPECT_LT(listed.size() * 4, size_t(plans.n_patches())) << name;
     }
   }
+}
+
+// Found from the mesh around the vertices, the patches an edit changes are those the index over every
+// patch lists: on quads, triangles, mixed faces and creases (semi-sharp ones refine into stencil rows,
+// infinitely sharp ones flag records), for vertices alone, beside each other, by an extraordinary
+// vertex, on a boundary, and many at once.
+TEST(PatchReaders, ThePatchesNearAnEditAreThoseTheIndexLists) {
+  int compared = 0;
+  for (const char* name : {"cube", "pawn", "icosphere", "sphere", "grid", "cylinder", "torus", "pawn-quads"})
+    for (const bool creased : {false, true}) {
+      CovarianceMesh mesh = make_sample(name);
+      for (size_t e = 0; creased && e < mesh.n_edges(); e += 5)
+        mesh.sharpness.set_crease(mesh.edge(e)[0], mesh.edge(e)[1], e % 3 ? 2.5 : kInfiniteSharpness);
+      const PlannedSurface surface(mesh, PlanOptions{});
+      const SurfaceTables& tables = surface.tables();
+      const PatchReaders readers(tables.plans, tables.stencils.n_points());
+      const std::vector<int> first = first_patches(mesh.topology(), tables.plans);
+      const int n = int(mesh.n_vertices());
+      std::vector<std::vector<int>> edits;
+      for (const int v : {0, 1, n / 3, n / 2, n - 1}) edits.push_back({v});
+      edits.push_back({n / 2, n / 2 + 1, n / 2 + 2});
+      edits.push_back({});
+      for (int v = 0; v < n; v += 3) edits.back().push_back(v);
+      for (const std::vector<int>& edit : edits) {
+        const std::vector<int> rows = surface.rows_reading(edit);
+        const std::string where = std::string(name) + (creased ? " creased" : "") + ", " + std::to_string(edit.size()) +
+                                  " vertices from " + std::to_string(edit.front());
+        EXPECT_EQ(patches_changed_near(mesh.topology(), mesh.connectivity(), tables.plans, first,
+                                       tables.stencils.first_row(), edit, rows),
+                  readers.patches_changed_by(changed_points(surface, edit)))
+            << where;
+        compared += !rows.empty();
+      }
+    }
+  EXPECT_GT(compared, 10);  // edits whose stencil rows change too
 }
 
 TEST(PatchReaders, NoPointsChangeNothingAndAllPointsEverything) {
