@@ -13,6 +13,7 @@ namespace gps {
 /// The elements first .. first + count − 1 of a mesh are those source_first .. of another.
 struct TakenRun {
   int first = 0, source_first = 0, count = 0;
+  bool operator==(const TakenRun&) const = default;
 };
 
 /// A mesh as a change of a source mesh (mesh_delta, apply_delta).

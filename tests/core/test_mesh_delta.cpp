@@ -40,20 +40,11 @@ void expect_same_mesh(const CovarianceMesh& a, const CovarianceMesh& b) {
   EXPECT_EQ(a.sharpness.corners, b.sharpness.corners);
 }
 
-void expect_same_runs(const std::vector<TakenRun>& a, const std::vector<TakenRun>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(a[i].first, b[i].first);
-    EXPECT_EQ(a[i].source_first, b[i].source_first);
-    EXPECT_EQ(a[i].count, b[i].count);
-  }
-}
-
 void expect_same_delta(const MeshDelta& a, const MeshDelta& b) {
   EXPECT_EQ(a.n_vertices, b.n_vertices);
   EXPECT_EQ(a.n_faces, b.n_faces);
-  expect_same_runs(a.vertex_runs, b.vertex_runs);
-  expect_same_runs(a.face_runs, b.face_runs);
+  EXPECT_TRUE(a.vertex_runs == b.vertex_runs);
+  EXPECT_TRUE(a.face_runs == b.face_runs);
   EXPECT_EQ(a.own_gaussians, b.own_gaussians);
   EXPECT_EQ(a.means, b.means);
   EXPECT_EQ(a.covariances, b.covariances);
