@@ -65,6 +65,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   readers_.reset();
   mesh_shape_ = mesh.shape();
   first_patches_.reset();
+  near_patches_listed_ = 0;
   all_corner_items_ = {};
   half_size_patches_ = -1;
   // Kept tables keep the points of the base vertices that did not change, in this frame and precision.

@@ -209,6 +209,7 @@ private:
   static constexpr size_t kNearEditDivisor = 64;
   std::shared_ptr<const MeshShape> mesh_shape_ = empty_mesh_shape();  // the faces tables_ plan
   std::optional<std::vector<int>> first_patches_;                     // of mesh_shape_ in tables_, once asked for
+  size_t near_patches_listed_ = 0;                                    // by the lookups around edits since tables_ came
   PlanBuffers buffers_;
   MeshPointPrecision point_precision_;  // what the mesh's Gaussians need
   DualStencilPass compute_;

@@ -101,11 +101,15 @@ const StencilDependents& SurfaceRenderer::dependents() {
 std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& changed, const std::vector<int>& rows) {
   const StencilTable& stencils = tables().stencils;
   // A few vertices (a drag, the move after an extrusion) are looked up around them in the mesh; more,
-  // in an index over every patch, built once per topology.
-  if (!readers_ && changed.size() * kNearEditDivisor < size_t(stencils.n_base)) {
+  // or once those lookups have listed as many patches as the surface has, in an index over every patch,
+  // built once per topology.
+  if (!readers_ && changed.size() * kNearEditDivisor < size_t(stencils.n_base) &&
+      near_patches_listed_ < size_t(n_patches())) {
     if (!first_patches_) first_patches_ = first_patches(mesh_shape_->topology, tables().plans);
-    return patches_changed_near(mesh_shape_->topology, mesh_shape_->connectivity, tables().plans, *first_patches_,
-                                stencils.first_row(), changed, rows);
+    std::vector<int> patches = patches_changed_near(mesh_shape_->topology, mesh_shape_->connectivity, tables().plans,
+                                                    *first_patches_, stencils.first_row(), changed, rows);
+    near_patches_listed_ += patches.size();
+    return patches;
   }
   if (!readers_) readers_ = std::make_unique<const PatchReaders>(tables().plans, stencils.n_points());
   std::vector<int> points = changed;

@@ -1,10 +1,10 @@
 #include "ui/document/editor_document.h"
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <utility>
 
 #include "core/io/mesh_io.h"
 #include "core/modelling/samples.h"

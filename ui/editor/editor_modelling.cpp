@@ -5,11 +5,11 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <utility>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <utility>
 
 #include "core/edit/covariance_edit.h"
 #include "core/support/error.h"
