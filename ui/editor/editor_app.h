@@ -5,7 +5,8 @@
 // the gizmo starts its drag), editor_actions.cpp (open, save, undo, the unsaved-changes prompt, a
 // Simplify… or Fit to… result applied), editor_commands.cpp (the command table: keys, menus, help),
 // editor_select_menu.cpp (the Select menu), editor_hide.cpp (hide and reveal), editor_modelling.cpp
-// (the Mesh menu's operations), editor_modal_tools.cpp (the modal tools started and handed the
+// (the Mesh menu), editor_operations.cpp (an operation's result installed as one undo step),
+// editor_modal_tools.cpp (the modal tools started and handed the
 // events), editor_adjust_last.cpp (F9), editor_snapping.cpp (snapping and the 3D cursor),
 // editor_mirror_modifier.cpp (the mirror modifier) and editor_target_points.cpp (a fit's target as
 // points).
@@ -97,7 +98,7 @@ private:
   void frame_vertices(const std::vector<int>& vertices);  // none: the whole mesh
   glm::vec2 viewport_size() const;
   void axis_view(float yaw, float pitch);
-  // Modelling (editor_modelling.cpp): the Mesh menu and its operations.
+  // Modelling (editor_modelling.cpp): the Mesh menu; its operations applied (editor_operations.cpp).
   void build_modelling_commands();
   bool run_operation(const std::string& name, const std::function<Modelled(const CovarianceMesh&)>& run,
                      SurfaceReplanner* replanner = nullptr);
