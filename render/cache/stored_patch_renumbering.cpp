@@ -26,7 +26,7 @@ float renumbered(float word, const std::vector<int>& new_number) {
   return word;
 }
 
-// `count` vertices from `from` to `to` (the same: in place), renumbered, on all cores.
+// `count` vertices from `from` to `to`, renumbered, on all cores.
 void renumber_vertices(const float* from, float* to, long long count, const std::vector<int>& new_number) {
 #pragma omp parallel for schedule(static) if (count >= kParallelFaces)
   for (long long i = 0; i < count; ++i) {
@@ -34,6 +34,17 @@ void renumber_vertices(const float* from, float* to, long long count, const std:
     std::memcpy(words, from + kVertexWords * size_t(i), sizeof words);
     words[kPatchWord] = renumbered(words[kPatchWord], new_number);
     std::memcpy(to + kVertexWords * size_t(i), words, sizeof words);
+  }
+}
+
+// The first `count` vertices of `words` renumbered where they lie: only the patch words that change
+// are written, so that the memory of the vertices whose patches keep their numbers is read, not written.
+void renumber_in_place(float* words, long long count, const std::vector<int>& new_number) {
+#pragma omp parallel for schedule(static) if (count >= kParallelFaces)
+  for (long long i = 0; i < count; ++i) {
+    float& word = words[kVertexWords * size_t(i) + kPatchWord];
+    const float now = renumbered(word, new_number);
+    if (std::memcmp(&now, &word, sizeof now) != 0) word = now;
   }
 }
 
@@ -58,7 +69,7 @@ void StoredPatchRenumbering::run(unsigned vertices, long long count, const std::
   if (on_the_cpu_) {
     auto* words = static_cast<float*>(glMapNamedBufferRange(vertices, 0, GLsizeiptr(size_t(count) * kVertexBytes),
                                                             GL_MAP_READ_BIT | GL_MAP_WRITE_BIT));
-    if (words) renumber_vertices(words, words, count, new_number);
+    if (words) renumber_in_place(words, count, new_number);
     glUnmapNamedBuffer(vertices);
     check_gl_errors("renumbering the stored patches");
     return;
