@@ -245,6 +245,64 @@ TEST(EditorDocument, AMoveFoldsIntoTheOperationBeforeIt) {
   EXPECT_FALSE(doc.can_redo());
 }
 
+// An operation's undo step is made after it (settle_history, an undo, the next step), from the mesh
+// before it and the mesh after it as it then is: a move folded in first, or a vertex edit committed
+// on top as its own step, each undo and redo restores its mesh exactly; a save before a folded move
+// is not the mesh after it.
+TEST(EditorDocument, AnOperationsUndoStepMadeLaterRestoresExactly) {
+  test::TempDir dir;
+  EditorDocument doc;
+  doc.open_sample("sphere");
+  const CovarianceMesh original = doc.mesh();
+  const Modelled extruded = extrude_faces(doc.mesh(), {3}, 0.1);
+  doc.apply(extruded, {{0}});
+  doc.settle_history();
+  const size_t mesh_bytes = doc.mesh().n_vertices() * (sizeof(Vec3) + sizeof(Mat3));
+  EXPECT_LT(doc.history_bytes(), mesh_bytes / 4) << "a settled step holds what the operation changed";
+  const Modelled cut = loop_cut(doc.mesh(), doc.mesh().face(0)[0], doc.mesh().face(0)[1], 1);
+  doc.apply(cut, {{1}});
+  EXPECT_GT(doc.history_bytes(), mesh_bytes) << "a waiting step holds the mesh before it";
+  doc.begin_edit();
+  const int moved = int(cut.mesh.n_vertices()) - 1;
+  doc.set_mean(moved, Vec3(0.1, 0.2, 2.0));
+  ASSERT_TRUE(doc.commit_edit());  // its own step: the cut's deltas take the mesh before it
+  const CovarianceMesh edited = doc.mesh();
+  const Modelled deleted = delete_faces(doc.mesh(), {1});
+  doc.apply(deleted, {{2}});
+  doc.save(dir.file("saved.ply"));
+  doc.begin_edit();
+  doc.set_mean(0, doc.mesh().mean(0) + Vec3(0, 0, 0.5));
+  ASSERT_TRUE(doc.commit_edit_into_last_operation({{0}}));
+  EXPECT_TRUE(doc.dirty()) << "the move folded in after the save";
+  const CovarianceMesh last = doc.mesh();
+  const Modelled again = extrude_faces(doc.mesh(), {5}, 0.05);
+  doc.apply(again, {{3}});  // settles the delete's step, the move with it
+  doc.settle_history();
+  EXPECT_LT(doc.history_bytes(), mesh_bytes) << "every step settled: no mesh kept whole";
+
+  ASSERT_TRUE(doc.undo().has_value());
+  expect_same_mesh(doc.mesh(), last);
+  ASSERT_TRUE(doc.undo().has_value());
+  expect_same_mesh(doc.mesh(), edited);
+  EXPECT_FALSE(doc.undo().has_value());
+  expect_same_mesh(doc.mesh(), cut.mesh);
+  ASSERT_TRUE(doc.undo().has_value());
+  expect_same_mesh(doc.mesh(), extruded.mesh);
+  ASSERT_TRUE(doc.undo().has_value());
+  expect_same_mesh(doc.mesh(), original);
+  ASSERT_TRUE(doc.redo().has_value());
+  expect_same_mesh(doc.mesh(), extruded.mesh);
+  ASSERT_TRUE(doc.redo().has_value());
+  expect_same_mesh(doc.mesh(), cut.mesh);
+  EXPECT_FALSE(doc.redo().has_value());
+  expect_same_mesh(doc.mesh(), edited);
+  ASSERT_TRUE(doc.redo().has_value());
+  expect_same_mesh(doc.mesh(), last);
+  EXPECT_TRUE(doc.dirty());
+  ASSERT_TRUE(doc.redo().has_value());
+  expect_same_mesh(doc.mesh(), again.mesh);
+}
+
 // The mirror modifier's clipping: a vertex that starts an edit within the tolerance of the plane x = 0
 // keeps x = 0 (its y and z move), one off it moves freely; without the clip both move.
 TEST(EditorDocument, ClippingKeepsVerticesOnThePlane) {

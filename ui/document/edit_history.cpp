@@ -1,5 +1,6 @@
 #include "ui/document/edit_history.h"
 
+#include <cassert>
 #include <limits>
 
 #include "core/modelling/mesh_arrays.h"
@@ -25,6 +26,7 @@ MeshReplacement mesh_replacement(const CovarianceMesh& before, const CovarianceM
 }
 
 void EditHistory::push(Step step) {
+  assert(!pending() && "a step's waiting deltas are settled before the next step");
   if (saved_ > position_) saved_ = std::numeric_limits<size_t>::max();  // the saved state is gone
   steps_.resize(position_);
   step.serial = ++serials_;
@@ -39,10 +41,30 @@ void EditHistory::commit(VertexEdit edit, const CovarianceMesh& mesh) {
     edit.means_after.push_back(mesh.mean(size_t(v)));
     edit.covariances_after.push_back(mesh.covariance(size_t(v)));
   }
-  push({std::move(edit), std::nullopt});
+  push({std::move(edit), std::nullopt, std::nullopt});
 }
 
-void EditHistory::commit(MeshReplacement replacement) { push({VertexEdit{}, std::move(replacement)}); }
+void EditHistory::commit(MeshReplacement replacement) { push({VertexEdit{}, std::move(replacement), std::nullopt}); }
+
+void EditHistory::commit(MeshReplacement replacement, PendingReplacement pending) {
+  push({VertexEdit{}, std::move(replacement), std::move(pending)});
+}
+
+void EditHistory::settle(const CovarianceMesh& mesh) {
+  if (!pending()) return;
+  Step& last = steps_[position_ - 1];
+  MeshReplacement deltas = mesh_replacement(last.pending->before, mesh, last.pending->origin);
+  last.replacement->forward = std::move(deltas.forward);
+  last.replacement->back = std::move(deltas.back);
+  last.pending.reset();
+}
+
+bool EditHistory::fold_into_pending(const SelectionRecord& selection) {
+  if (!pending()) return false;
+  steps_[position_ - 1].replacement->selection_after = selection;
+  if (saved_ == position_) saved_ = std::numeric_limits<size_t>::max();  // saved before the edit: gone
+  return true;
+}
 
 bool EditHistory::fold_last_into_replacement(const CovarianceMesh& mesh, const SelectionRecord& selection) {
   if (position_ < 2 || position_ != steps_.size()) return false;
@@ -60,6 +82,20 @@ bool EditHistory::fold_last_into_replacement(const CovarianceMesh& mesh, const S
   return true;
 }
 
+size_t EditHistory::bytes() const {
+  size_t total = 0;
+  for (const Step& s : steps_) {
+    const VertexEdit& e = s.edit;
+    total += e.vertices.size() * sizeof(int) + (e.means_before.size() + e.means_after.size()) * sizeof(Vec3) +
+             (e.covariances_before.size() + e.covariances_after.size()) * sizeof(Mat3);
+    if (s.replacement) total += s.replacement->forward.bytes() + s.replacement->back.bytes();
+    if (s.pending)
+      total += s.pending->before.n_vertices() * (sizeof(Vec3) + sizeof(Mat3)) +
+               s.pending->before.n_corners() * sizeof(int) + s.pending->origin.size() * sizeof(int);
+  }
+  return total;
+}
+
 void EditHistory::drop_redo() {
   if (saved_ > position_) saved_ = std::numeric_limits<size_t>::max();  // the saved state is gone
   steps_.resize(position_);
@@ -67,6 +103,7 @@ void EditHistory::drop_redo() {
 
 Restored EditHistory::undo(CovarianceMesh& mesh) {
   if (!can_undo()) return {};
+  settle(mesh);
   const Step& s = steps_[--position_];
   if (s.replacement) {
     mesh = apply_delta(mesh, s.replacement->back);

@@ -28,6 +28,13 @@ struct MeshReplacement {
   SelectionRecord selection_before, selection_after;
 };
 
+/// A modelling operation whose deltas are made later (EditHistory::settle): the mesh before it and its
+/// vertices' origins; the mesh after it is the one the history's owner holds while the step is the last.
+struct PendingReplacement {
+  CovarianceMesh before;
+  std::vector<int> origin;
+};
+
 /// The replacement of `before` by `after`; `origin`: per vertex of `after`, its index in `before` (−1
 /// new; empty: the indices kept).
 MeshReplacement mesh_replacement(const CovarianceMesh& before, const CovarianceMesh& after,
@@ -49,6 +56,18 @@ public:
   void commit(VertexEdit edit, const CovarianceMesh& mesh);
   /// Pushes a replacement of the whole mesh (drops the redo steps).
   void commit(MeshReplacement replacement);
+  /// Pushes a replacement whose deltas wait (`replacement` holds its selections): made by settle(), by
+  /// undo() or before the next step, from `pending.before` and the mesh as it then is, which must be
+  /// the mesh after the operation (the owner settles before it changes the mesh otherwise). The last
+  /// step must not be pending.
+  void commit(MeshReplacement replacement, PendingReplacement pending);
+  /// Whether the last step is a replacement whose deltas wait.
+  bool pending() const { return position_ > 0 && steps_[position_ - 1].pending.has_value(); }
+  /// Makes the waiting deltas of the last step from its mesh before and `mesh` (the mesh after it).
+  void settle(const CovarianceMesh& mesh);
+  /// An edit folded into the last step while its deltas wait: the mesh after it, which the deltas
+  /// will take, now has the edit; `selection` goes with it. False when the last step is not pending.
+  bool fold_into_pending(const SelectionRecord& selection);
   /// Folds the last step, a vertex edit, into the replacement before it: the replacement's result
   /// becomes `mesh` (e.g. an extrusion and the move that follows it undo as one). False when the last
   /// two steps are not a replacement then a vertex edit.
@@ -59,9 +78,13 @@ public:
 
   bool can_undo() const { return position_ > 0; }
   bool can_redo() const { return position_ < steps_.size(); }
-  /// Restores the state before the last step.
+  /// Restores the state before the last step (settling it first where its deltas wait).
   Restored undo(CovarianceMesh& mesh);
   Restored redo(CovarianceMesh& mesh);
+
+  /// The memory the steps hold, in bytes: their deltas and vertex edits, and a waiting step's mesh
+  /// before (its Gaussians and corners).
+  size_t bytes() const;
 
   /// Unsaved changes: the history is not where it was when mark_saved() was last called.
   bool dirty() const { return position_ != saved_; }
@@ -77,6 +100,7 @@ private:
   struct Step {
     VertexEdit edit;
     std::optional<MeshReplacement> replacement;  // set: the step replaced the whole mesh
+    std::optional<PendingReplacement> pending;   // set: its deltas wait (the last step only)
     std::uint64_t serial = 0;
   };
   void push(Step step);

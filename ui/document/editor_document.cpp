@@ -117,18 +117,47 @@ void EditorDocument::revert_edit() {
   }
 }
 
+bool EditorDocument::edit_changed(const VertexEdit& edit) const {
+  for (size_t i = 0; i < edit.vertices.size(); ++i) {
+    const size_t v = size_t(edit.vertices[i]);
+    if (mesh_.mean(v) != edit.means_before[i] || mesh_.covariance(v) != edit.covariances_before[i]) return true;
+  }
+  return false;
+}
+
+void EditorDocument::settle_under(const VertexEdit& edit) {
+  if (!history_.pending()) return;
+  std::vector<Vec3> means;
+  std::vector<Mat3> covariances;
+  for (size_t i = 0; i < edit.vertices.size(); ++i) {
+    const size_t v = size_t(edit.vertices[i]);
+    means.push_back(mesh_.mean(v));
+    covariances.push_back(mesh_.covariance(v));
+    mesh_.set_mean(v, edit.means_before[i]);
+    mesh_.set_covariance(v, edit.covariances_before[i]);
+  }
+  history_.settle(mesh_);
+  for (size_t i = 0; i < edit.vertices.size(); ++i) {
+    mesh_.set_mean(size_t(edit.vertices[i]), means[i]);
+    mesh_.set_covariance(size_t(edit.vertices[i]), covariances[i]);
+  }
+}
+
 bool EditorDocument::commit_edit() {
   if (!edit_) return false;
   VertexEdit edit = std::move(*edit_);
   edit_.reset();
   edit_index_.clear();
-  bool changed = false;
-  for (size_t i = 0; i < edit.vertices.size() && !changed; ++i) {
-    const size_t v = size_t(edit.vertices[i]);
-    changed = mesh_.mean(v) != edit.means_before[i] || mesh_.covariance(v) != edit.covariances_before[i];
+  const bool changed = edit_changed(edit);
+  if (changed) {
+    settle_under(edit);
+    history_.commit(std::move(edit), mesh_);
   }
-  if (changed) history_.commit(std::move(edit), mesh_);
   return changed;
+}
+
+void EditorDocument::settle_history() {
+  if (!edit_) history_.settle(mesh_);
 }
 
 void EditorDocument::cancel_edit() {
@@ -139,15 +168,24 @@ void EditorDocument::cancel_edit() {
 
 void EditorDocument::apply(Modelled result, const SelectionRecord& selection_before) {
   if (edit_) commit_edit();
-  MeshReplacement step = mesh_replacement(mesh_, result.mesh, result.vertex_origin);
+  history_.settle(mesh_);  // the operation before, where its deltas still wait: this is its mesh after
+  MeshReplacement step;
   step.selection_before = selection_before;
   step.selection_after.vertices = std::move(result.selection);
+  PendingReplacement pending{std::move(mesh_), std::move(result.vertex_origin)};
   mesh_ = std::move(result.mesh);
-  history_.commit(std::move(step));
+  history_.commit(std::move(step), std::move(pending));
   changed_.clear();  // the vertices are new: the GPU rebuilds
 }
 
 bool EditorDocument::commit_edit_into_last_operation(const SelectionRecord& selection) {
+  if (edit_ && history_.pending()) {  // the deltas, made later, take the mesh with the edit
+    const bool changed = edit_changed(*edit_);
+    edit_.reset();
+    edit_index_.clear();
+    if (changed) history_.fold_into_pending(selection);
+    return changed;
+  }
   if (!commit_edit()) return false;
   history_.fold_last_into_replacement(mesh_, selection);
   return true;

@@ -73,8 +73,12 @@ public:
   /// exactly (vertices, faces, their order and values) and `selection_before` with it; the redo
   /// selects the result's vertices. Closes an open edit first. The GPU must rebuild for the new mesh
   /// (take_changed() does not list it). The result's mesh is taken over, not copied, where it is given
-  /// to keep.
+  /// to keep. The step's deltas (core/mesh/mesh_delta.h) are made later, not in the operation's time:
+  /// by settle_history(), an undo, or the next step; until then the mesh before is kept whole.
   void apply(Modelled result, const SelectionRecord& selection_before);
+  /// Makes the last operation's undo step, where it waits (apply), outside an open edit: what an
+  /// editor does in a frame without input.
+  void settle_history();
   /// Closes the open edit and folds it into the modelling step just applied, so that both undo as
   /// one (an extrusion and its move); `selection` goes with the result. Without such a step it
   /// commits the edit as its own step. Returns whether anything changed.
@@ -84,6 +88,8 @@ public:
   /// applied. Returns the selection before it when it replaced the mesh.
   std::optional<SelectionRecord> discard_last_operation();
 
+  /// The memory the undo history holds (EditHistory::bytes).
+  size_t history_bytes() const { return history_.bytes(); }
   /// Names the last applied step (EditHistory::last_step).
   std::uint64_t last_step() const { return history_.last_step(); }
   bool can_undo() const { return !editing() && history_.can_undo(); }
@@ -105,6 +111,11 @@ public:
 
 private:
   void replace(CovarianceMesh mesh, const std::string& source, const std::string& ply_path, const std::string& name);
+  /// Whether `edit` changed any of its vertices in the mesh.
+  bool edit_changed(const VertexEdit& edit) const;
+  /// Settles the history's waiting step with the mesh as it was before `edit` (applied to it, not
+  /// committed): the operation's mesh after.
+  void settle_under(const VertexEdit& edit);
   void touch(int vertex);
 
   CovarianceMesh mesh_;

@@ -187,6 +187,8 @@ void EditorApp::frame() {
   deselect_hidden();  // a menu's selection
   ImGui::Render();
   render_and_present();
+  // A frame without input makes the last operation's undo step, which its own frame left waiting.
+  if (events.empty()) document_.settle_history();
 }
 
 void EditorApp::render_and_present() {
