@@ -44,8 +44,6 @@ void EditHistory::commit(VertexEdit edit, const CovarianceMesh& mesh) {
   push({std::move(edit), std::nullopt, std::nullopt});
 }
 
-void EditHistory::commit(MeshReplacement replacement) { push({VertexEdit{}, std::move(replacement), std::nullopt}); }
-
 void EditHistory::commit(MeshReplacement replacement, PendingReplacement pending) {
   push({VertexEdit{}, std::move(replacement), std::move(pending)});
 }

@@ -54,12 +54,10 @@ public:
   static VertexEdit begin(const CovarianceMesh& mesh, const std::vector<int>& vertices);
   /// Completes `edit` with the state after the action and pushes it (drops the redo steps).
   void commit(VertexEdit edit, const CovarianceMesh& mesh);
-  /// Pushes a replacement of the whole mesh (drops the redo steps).
-  void commit(MeshReplacement replacement);
-  /// Pushes a replacement whose deltas wait (`replacement` holds its selections): made by settle(), by
-  /// undo() or before the next step, from `pending.before` and the mesh as it then is, which must be
-  /// the mesh after the operation (the owner settles before it changes the mesh otherwise). The last
-  /// step must not be pending.
+  /// Pushes a replacement of the whole mesh (drops the redo steps) whose deltas wait (`replacement`
+  /// holds its selections): made by settle(), by undo() or before the next step, from `pending.before`
+  /// and the mesh as it then is, which must be the mesh after the operation (the owner settles before
+  /// it changes the mesh otherwise). The last step must not be pending.
   void commit(MeshReplacement replacement, PendingReplacement pending);
   /// Whether the last step is a replacement whose deltas wait.
   bool pending() const { return position_ > 0 && steps_[position_ - 1].pending.has_value(); }
