@@ -1,6 +1,5 @@
 #include "ui/document/edit_history.h"
 
-#include <cassert>
 #include <limits>
 
 #include "core/modelling/mesh_arrays.h"
@@ -26,7 +25,6 @@ MeshReplacement mesh_replacement(const CovarianceMesh& before, const CovarianceM
 }
 
 void EditHistory::push(Step step) {
-  assert(!pending() && "a step's waiting deltas are settled before the next step");
   if (saved_ > position_) saved_ = std::numeric_limits<size_t>::max();  // the saved state is gone
   steps_.resize(position_);
   step.serial = ++serials_;
