@@ -48,21 +48,28 @@ size_t MeshDelta::bytes() const {
          bytes_of(sharpness.creases) + bytes_of(sharpness.corners);
 }
 
+std::vector<int> delta_vertex_sources(size_t n_from, size_t n_to, const std::vector<int>& origin) {
+  const bool given = origin.size() == n_to;
+  std::vector<int> sources(n_to, -1);
+  std::vector<char> taken(n_from, 0);
+  for (size_t v = 0; v < n_to; ++v) {
+    const int o = given ? origin[v] : origin.empty() && v < n_from ? int(v) : -1;
+    if (o < 0 || size_t(o) >= n_from || taken[size_t(o)]) continue;  // new, not one of `from`'s, or taken twice
+    sources[v] = o;
+    taken[size_t(o)] = 1;
+  }
+  return sources;
+}
+
 MeshDelta mesh_delta(const CovarianceMesh& from, const CovarianceMesh& to, const std::vector<int>& origin) {
   MeshDelta d;
   d.n_vertices = int(to.n_vertices());
   d.n_faces = int(to.n_faces());
   d.sharpness = to.sharpness;
-  const int n_from = int(from.n_vertices());
-  const bool given = origin.size() == to.n_vertices();
-  std::vector<int> to_of_from(size_t(n_from), -1);
+  const std::vector<int> from_of_to = delta_vertex_sources(from.n_vertices(), to.n_vertices(), origin);
   for (int v = 0; v < d.n_vertices; ++v) {
-    int o = given ? origin[size_t(v)] : origin.empty() && v < n_from ? v : -1;
-    if (o >= n_from || (o >= 0 && to_of_from[size_t(o)] >= 0)) o = -1;  // not one of `from`'s, or taken twice
-    if (o >= 0) {
-      take(d.vertex_runs, v, o);
-      to_of_from[size_t(o)] = v;
-    }
+    const int o = from_of_to[size_t(v)];
+    if (o >= 0) take(d.vertex_runs, v, o);
     if (o >= 0 && same_bytes(to.mean(size_t(v)), from.mean(size_t(o))) &&
         same_bytes(to.covariance(size_t(v)), from.covariance(size_t(o))))
       continue;
@@ -72,7 +79,6 @@ MeshDelta mesh_delta(const CovarianceMesh& from, const CovarianceMesh& to, const
   }
   // A face of `to` is taken over where a face of `from` at its first corner's source has its corners
   // (the one after the last face taken is tried first).
-  const std::vector<int> from_of_to = sources_of(d.vertex_runs, d.n_vertices);
   const MeshConnectivity& c = from.connectivity();
   std::vector<char> taken(from.n_faces(), 0);
   const auto same_face = [&](int f, int g) {

@@ -36,6 +36,10 @@ struct MeshDelta {
   size_t bytes() const;
 };
 
+/// Per vertex of a mesh of `n_to` vertices, the vertex of a mesh of `n_from` that mesh_delta takes it
+/// over from given `origin` (−1 new): vertex_sources of that delta, without making it.
+std::vector<int> delta_vertex_sources(size_t n_from, size_t n_to, const std::vector<int>& origin);
+
 /// `to` as a change of `from`, given per vertex of `to` its index in `from` (−1 new; empty: the
 /// indices kept where both have the vertex). A face of `to` is taken over where `from` has a face with
 /// the same corners renumbered; vertices are told apart by that correspondence, not by position.

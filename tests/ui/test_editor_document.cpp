@@ -2,14 +2,19 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "../support/temp_dir.h"
 #include "core/support/error.h"
 #include "core/io/mesh_io.h"
 #include "core/io/text_file.h"
 #include "core/modelling/samples.h"
+#include "core/modelling/affine_transform.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/loop_cut.h"
+#include "core/modelling/merge_vertices.h"
+#include "core/modelling/split_faces.h"
 
 namespace gps {
 namespace {
@@ -301,6 +306,82 @@ TEST(EditorDocument, AnOperationsUndoStepMadeLaterRestoresExactly) {
   EXPECT_TRUE(doc.dirty());
   ASSERT_TRUE(doc.redo().has_value());
   expect_same_mesh(doc.mesh(), again.mesh);
+}
+
+// An undo in the time an operation's step waits swaps the meshes back: for operations that add,
+// remove, merge and split vertices or keep them, the mesh and the vertices' origins are those an undo of the
+// settled step gives, and so are the redo's; an undo past a step that waits for its redo settles it
+// first; F9's discard keeps no mesh.
+TEST(EditorDocument, AnUndoBeforeTheStepIsMadeSwapsTheMeshesExactly) {
+  EditorDocument first;
+  first.open_sample("sphere");
+  const std::vector<std::function<Modelled(const CovarianceMesh&)>> operations{
+      [](const CovarianceMesh& m) {
+        return extrude_faces(m, {3, 4}, 0.1);
+      },
+      [](const CovarianceMesh& m) { return delete_vertices(m, {5}); },
+      [](const CovarianceMesh& m) {
+        return merge_vertices(m, {m.face(2)[0], m.face(2)[1]}, MergePoint::center);
+      },
+      [](const CovarianceMesh& m) {
+        return split_faces(m, {1, 7});
+      },
+      [](const CovarianceMesh& m) { return loop_cut(m, m.face(0)[0], m.face(0)[1], 2); },
+      [](const CovarianceMesh& m) {
+        return transform_vertices(m, {0, 1, 2}, AffineMap::about(Vec3::Zero(), 1.5 * Mat3::Identity()));
+      }};
+  for (size_t k = 0; k < operations.size(); ++k) {
+    SCOPED_TRACE("operation " + std::to_string(k));
+    EditorDocument swapped, settled;
+    swapped.open_sample("sphere");
+    settled.open_sample("sphere");
+    const CovarianceMesh before = swapped.mesh();
+    const Modelled result = operations[k](before);
+    swapped.apply(result, {{0}});
+    settled.apply(result, {{0}});
+    settled.settle_history();
+    EXPECT_EQ(swapped.undo(), settled.undo());
+    expect_same_mesh(swapped.mesh(), before);
+    EXPECT_EQ(swapped.replaced_origin(), settled.replaced_origin());
+    EXPECT_GT(swapped.history_bytes(), before.n_vertices() * sizeof(Vec3)) << "the mesh after is held";
+    EXPECT_EQ(swapped.redo(), settled.redo());
+    expect_same_mesh(swapped.mesh(), result.mesh);
+    EXPECT_EQ(swapped.replaced_origin(), settled.replaced_origin());
+    swapped.undo();
+    swapped.settle_history();  // the step, undone, made while it waits for its redo
+    EXPECT_LT(swapped.history_bytes(), before.n_vertices() * sizeof(Vec3));
+    swapped.redo();
+    expect_same_mesh(swapped.mesh(), result.mesh);
+    EXPECT_EQ(swapped.replaced_origin(), settled.replaced_origin());
+  }
+
+  // Two operations; the second undone before it settles, then the first: the second's step is made
+  // on the way, and both redo exactly.
+  const Modelled extruded = extrude_faces(first.mesh(), {3}, 0.1);
+  first.apply(extruded, {{0}});
+  const Modelled deleted = delete_faces(first.mesh(), {1});
+  first.apply(deleted, {{1}});
+  ASSERT_TRUE(first.undo().has_value());
+  expect_same_mesh(first.mesh(), extruded.mesh);
+  ASSERT_TRUE(first.undo().has_value());
+  EXPECT_FALSE(first.can_undo());
+  EXPECT_LT(first.history_bytes(), deleted.mesh.n_vertices() * sizeof(Vec3)) << "no mesh kept whole";
+  ASSERT_TRUE(first.redo().has_value());
+  expect_same_mesh(first.mesh(), extruded.mesh);
+  ASSERT_TRUE(first.redo().has_value());
+  expect_same_mesh(first.mesh(), deleted.mesh);
+
+  // An adjustment: the operation discarded and made again leaves one step, and nothing to redo.
+  first.apply(extrude_faces(first.mesh(), {2}, 0.1), {{2}});
+  first.discard_last_operation();
+  expect_same_mesh(first.mesh(), deleted.mesh);
+  EXPECT_FALSE(first.can_redo());
+  const Modelled again = extrude_faces(first.mesh(), {2}, 0.2);
+  first.apply(again, {{2}});
+  first.settle_history();
+  EXPECT_LT(first.history_bytes(), deleted.mesh.n_vertices() * sizeof(Vec3));
+  first.undo();
+  expect_same_mesh(first.mesh(), deleted.mesh);
 }
 
 // The mirror modifier's clipping: a vertex that starts an edit within the tolerance of the plane x = 0

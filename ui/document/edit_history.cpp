@@ -1,6 +1,7 @@
 #include "ui/document/edit_history.h"
 
 #include <limits>
+#include <utility>
 
 #include "core/modelling/mesh_arrays.h"
 
@@ -42,17 +43,21 @@ void EditHistory::commit(VertexEdit edit, const CovarianceMesh& mesh) {
   push({std::move(edit), std::nullopt, std::nullopt});
 }
 
-void EditHistory::commit(MeshReplacement replacement, PendingReplacement pending) {
-  push({VertexEdit{}, std::move(replacement), std::move(pending)});
+void EditHistory::commit(MeshReplacement replacement, PendingReplacement waiting) {
+  if (pending()) make_deltas(steps_[position_ - 1], steps_[position_ - 1].pending->held, waiting.held);
+  push({VertexEdit{}, std::move(replacement), std::move(waiting)});
+}
+
+void EditHistory::make_deltas(Step& step, const CovarianceMesh& before, const CovarianceMesh& after) {
+  MeshReplacement deltas = mesh_replacement(before, after, step.pending->origin);
+  step.replacement->forward = std::move(deltas.forward);
+  step.replacement->back = std::move(deltas.back);
+  step.pending.reset();
 }
 
 void EditHistory::settle(const CovarianceMesh& mesh) {
-  if (!pending()) return;
-  Step& last = steps_[position_ - 1];
-  MeshReplacement deltas = mesh_replacement(last.pending->before, mesh, last.pending->origin);
-  last.replacement->forward = std::move(deltas.forward);
-  last.replacement->back = std::move(deltas.back);
-  last.pending.reset();
+  if (pending()) make_deltas(steps_[position_ - 1], steps_[position_ - 1].pending->held, mesh);
+  if (redo_pending()) make_deltas(steps_[position_], mesh, steps_[position_].pending->held);
 }
 
 bool EditHistory::fold_into_pending(const SelectionRecord& selection) {
@@ -86,8 +91,8 @@ size_t EditHistory::bytes() const {
              (e.covariances_before.size() + e.covariances_after.size()) * sizeof(Mat3);
     if (s.replacement) total += s.replacement->forward.bytes() + s.replacement->back.bytes();
     if (s.pending)
-      total += s.pending->before.n_vertices() * (sizeof(Vec3) + sizeof(Mat3)) +
-               s.pending->before.n_corners() * sizeof(int) + s.pending->origin.size() * sizeof(int);
+      total += s.pending->held.n_vertices() * (sizeof(Vec3) + sizeof(Mat3)) +
+               s.pending->held.n_corners() * sizeof(int) + s.pending->origin.size() * sizeof(int);
   }
   return total;
 }
@@ -99,7 +104,15 @@ void EditHistory::drop_redo() {
 
 Restored EditHistory::undo(CovarianceMesh& mesh) {
   if (!can_undo()) return {};
-  settle(mesh);
+  if (pending()) {  // the meshes swap; the vertices' sources are those the back delta would give
+    Step& s = steps_[--position_];
+    std::swap(mesh, s.pending->held);
+    return {{},
+            s.replacement->selection_before,
+            delta_vertex_sources(s.pending->held.n_vertices(), mesh.n_vertices(),
+                                 inverse_origin(s.pending->origin, mesh.n_vertices()))};
+  }
+  settle(mesh);  // a redo step that waits: the undo moves past it
   const Step& s = steps_[--position_];
   if (s.replacement) {
     mesh = apply_delta(mesh, s.replacement->back);
@@ -115,6 +128,14 @@ Restored EditHistory::undo(CovarianceMesh& mesh) {
 
 Restored EditHistory::redo(CovarianceMesh& mesh) {
   if (!can_redo()) return {};
+  if (redo_pending()) {  // the meshes swap back
+    Step& s = steps_[position_++];
+    std::swap(mesh, s.pending->held);
+    return {{},
+            s.replacement->selection_after,
+            delta_vertex_sources(s.pending->held.n_vertices(), mesh.n_vertices(), s.pending->origin)};
+  }
+  settle(mesh);
   const Step& s = steps_[position_++];
   if (s.replacement) {
     mesh = apply_delta(mesh, s.replacement->forward);

@@ -28,10 +28,12 @@ struct MeshReplacement {
   SelectionRecord selection_before, selection_after;
 };
 
-/// A modelling operation whose deltas are made later (EditHistory::settle): the mesh before it and its
-/// vertices' origins; the mesh after it is the one the history's owner holds while the step is the last.
+/// A modelling operation whose deltas are made later (EditHistory::settle): its other mesh, held whole,
+/// and its vertices' origins (per vertex of the mesh after it, its index in the mesh before). While the
+/// step is applied `held` is the mesh before it (the owner holds the mesh after); once it is undone,
+/// the mesh after it.
 struct PendingReplacement {
-  CovarianceMesh before;
+  CovarianceMesh held;
   std::vector<int> origin;
 };
 
@@ -55,13 +57,15 @@ public:
   /// Completes `edit` with the state after the action and pushes it (drops the redo steps).
   void commit(VertexEdit edit, const CovarianceMesh& mesh);
   /// Pushes a replacement of the whole mesh (drops the redo steps) whose deltas wait (`replacement`
-  /// holds its selections): made by settle(), by undo() or before the next step, from `pending.before`
-  /// and the mesh as it then is, which must be the mesh after the operation (the owner settles before
-  /// it changes the mesh otherwise). The last step must not be pending.
-  void commit(MeshReplacement replacement, PendingReplacement pending);
-  /// Whether the last step is a replacement whose deltas wait.
+  /// holds its selections): made by settle(), when an undo moves past it, or when the next operation is
+  /// pushed, from `waiting.held` and the mesh after the operation, which is the owner's mesh while the
+  /// step is the last (the owner settles before it changes that mesh otherwise). A waiting step before
+  /// it is settled first, `waiting.held` being its mesh after.
+  void commit(MeshReplacement replacement, PendingReplacement waiting);
+  /// Whether the last applied step is a replacement whose deltas wait.
   bool pending() const { return position_ > 0 && steps_[position_ - 1].pending.has_value(); }
-  /// Makes the waiting deltas of the last step from its mesh before and `mesh` (the mesh after it).
+  /// Makes the waiting deltas of the last applied step, or of the step a redo applies next, from the
+  /// mesh the step holds and `mesh` (the owner's, with no edit open).
   void settle(const CovarianceMesh& mesh);
   /// An edit folded into the last step while its deltas wait: the mesh after it, which the deltas
   /// will take, now has the edit; `selection` goes with it. False when the last step is not pending.
@@ -76,12 +80,14 @@ public:
 
   bool can_undo() const { return position_ > 0; }
   bool can_redo() const { return position_ < steps_.size(); }
-  /// Restores the state before the last step (settling it first where its deltas wait).
+  /// Restores the state before the last step. A step whose deltas wait swaps its meshes instead (the
+  /// mesh after it is held for a redo, which swaps them back); a waiting step that the undo moves
+  /// past is settled first.
   Restored undo(CovarianceMesh& mesh);
   Restored redo(CovarianceMesh& mesh);
 
   /// The memory the steps hold, in bytes: their deltas and vertex edits, and a waiting step's mesh
-  /// before (its Gaussians and corners).
+  /// (its Gaussians and corners).
   size_t bytes() const;
 
   /// Unsaved changes: the history is not where it was when mark_saved() was last called.
@@ -98,10 +104,12 @@ private:
   struct Step {
     VertexEdit edit;
     std::optional<MeshReplacement> replacement;  // set: the step replaced the whole mesh
-    std::optional<PendingReplacement> pending;   // set: its deltas wait (the last step only)
+    std::optional<PendingReplacement> pending;   // set: its deltas wait (the step at the position only)
     std::uint64_t serial = 0;
   };
   void push(Step step);
+  bool redo_pending() const { return position_ < steps_.size() && steps_[position_].pending.has_value(); }
+  static void make_deltas(Step& step, const CovarianceMesh& before, const CovarianceMesh& after);
   std::vector<Step> steps_;
   size_t position_ = 0;  // steps_[0, position_) are applied
   size_t saved_ = 0;     // never reachable again once a branch drops it: SIZE_MAX

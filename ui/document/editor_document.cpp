@@ -168,7 +168,6 @@ void EditorDocument::cancel_edit() {
 
 void EditorDocument::apply(Modelled result, const SelectionRecord& selection_before) {
   if (edit_) commit_edit();
-  history_.settle(mesh_);  // the operation before, where its deltas still wait: this is its mesh after
   MeshReplacement step;
   step.selection_before = selection_before;
   step.selection_after.vertices = std::move(result.selection);

@@ -74,10 +74,11 @@ public:
   /// selects the result's vertices. Closes an open edit first. The GPU must rebuild for the new mesh
   /// (take_changed() does not list it). The result's mesh is taken over, not copied, where it is given
   /// to keep. The step's deltas (core/mesh/mesh_delta.h) are made later, not in the operation's time:
-  /// by settle_history(), an undo, or the next step; until then the mesh before is kept whole.
+  /// by settle_history() or the next step; until then the mesh before is kept whole, and an undo
+  /// (an adjustment of the operation too) swaps the meshes back without them.
   void apply(Modelled result, const SelectionRecord& selection_before);
-  /// Makes the last operation's undo step, where it waits (apply), outside an open edit: what an
-  /// editor does in a frame without input.
+  /// Makes the undo step of the last operation, or of the one undone last, where it waits (apply,
+  /// undo), outside an open edit: what an editor does in a frame without input.
   void settle_history();
   /// Closes the open edit and folds it into the modelling step just applied, so that both undo as
   /// one (an extrusion and its move); `selection` goes with the result. Without such a step it
