@@ -10,6 +10,11 @@ import ast as _ast
 import functools as _functools
 import inspect as _inspect
 
+try:
+    import numpy as _numpy  # noqa: F401  (the extension's arrays: without it, its import fails unexplained)
+except ImportError as _error:
+    raise ImportError("gpsurf needs numpy in this Python (" + str(_error) + ")") from None
+
 from ._gpsurf import *  # noqa: F401,F403
 from ._gpsurf import __version__  # noqa: F401
 from . import _gpsurf

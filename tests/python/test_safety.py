@@ -23,6 +23,14 @@ def test_update_with_a_mesh_of_another_topology_raises_instead_of_crashing():
     assert re.search(r"ValueError: update: the mesh has \d+ vertices, the surface's mesh 9;", result.stderr)
 
 
+def test_importing_without_numpy_says_so():
+    # A Python without numpy: the extension's own import failed with "initialization failed".
+    script = "import sys; sys.modules['numpy'] = None; import gpsurf"
+    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert result.returncode == 1, result.stderr
+    assert "ImportError: gpsurf needs numpy in this Python (" in result.stderr, result.stderr
+
+
 def test_update_replans_a_mesh_of_another_topology_when_asked():
     surface = gpsurf.Surface(gpsurf.sample("cone"))
     pawn = gpsurf.sample("pawn")
