@@ -30,6 +30,15 @@ std::vector<int> sources_of(const std::vector<TakenRun>& runs, int n) {
   return out;
 }
 
+// Whether the delta takes over every vertex and face of `from`, each at its own index: the mesh it tells
+// has `from`'s faces, its Gaussians and sharpness aside.
+bool keeps_every_element(const CovarianceMesh& from, const MeshDelta& d) {
+  const auto whole = [](const std::vector<TakenRun>& runs, int n, size_t n_from) {
+    return size_t(n) == n_from && (n == 0 ? runs.empty() : runs.size() == 1 && runs[0] == TakenRun{0, 0, n});
+  };
+  return whole(d.vertex_runs, d.n_vertices, from.n_vertices()) && whole(d.face_runs, d.n_faces, from.n_faces());
+}
+
 template <class T>
 bool same_bytes(const T& a, const T& b) {
   return std::memcmp(&a, &b, sizeof(T)) == 0;
@@ -117,6 +126,15 @@ MeshDelta mesh_delta(const CovarianceMesh& from, const CovarianceMesh& to, const
 std::vector<int> vertex_sources(const MeshDelta& d) { return sources_of(d.vertex_runs, d.n_vertices); }
 
 CovarianceMesh apply_delta(const CovarianceMesh& from, const MeshDelta& d) {
+  if (keeps_every_element(from, d)) {  // the faces and their connectivity shared, not built again
+    CovarianceMesh m = from;
+    for (size_t i = 0; i < d.own_gaussians.size(); ++i) {
+      m.set_mean(size_t(d.own_gaussians[i]), d.means[i]);
+      m.set_covariance(size_t(d.own_gaussians[i]), d.covariances[i]);
+    }
+    m.sharpness = d.sharpness;
+    return m;
+  }
   MeshOrigins origins{sources_of(d.vertex_runs, d.n_vertices), sources_of(d.face_runs, d.n_faces)};
   std::vector<Vec3> means(size_t(d.n_vertices));
   std::vector<Mat3> covariances(size_t(d.n_vertices));

@@ -57,7 +57,8 @@ void retell_gaussians(MeshDelta& forward, MeshDelta& back, const CovarianceMesh&
 std::vector<int> vertex_sources(const MeshDelta& delta);
 
 /// The mesh `delta` tells, made from `from` (the mesh it was told against): byte for byte the mesh it
-/// was made from, its connectivity carried over from `from`'s where the faces stay.
+/// was made from, its connectivity carried over from `from`'s where the faces stay (and `from`'s faces
+/// and connectivity shared where every vertex and face stays at its index: a crease's or a move's undo).
 CovarianceMesh apply_delta(const CovarianceMesh& from, const MeshDelta& delta);
 
 }  // namespace gps

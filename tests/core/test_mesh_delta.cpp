@@ -14,6 +14,7 @@
 
 #include "core/io/mesh_io.h"
 #include "core/modelling/affine_transform.h"
+#include "core/modelling/crease_edges.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/inset.h"
@@ -64,7 +65,7 @@ std::optional<Modelled> random_operation(const CovarianceMesh& mesh, std::mt1993
   const int f = pick(mesh.n_faces());
   const std::span<const int> c = mesh.face(size_t(f));
   try {
-    switch (pick(8)) {
+    switch (pick(10)) {
       case 0:
         return extrude_faces(mesh, {f}, 0.05);
       case 1:
@@ -79,6 +80,10 @@ std::optional<Modelled> random_operation(const CovarianceMesh& mesh, std::mt1993
         return merge_vertices(mesh, {c[0], c[1]}, MergePoint::center);
       case 6:
         return dissolve_edges(mesh, {{c[0], c[1]}});
+      case 7:
+        return set_crease(mesh, {{c[0], c[1]}}, pick(2) == 0 ? 0.0 : 2.5);
+      case 8:
+        return set_corner(mesh, {c[0]}, 4.0);
       default:
         return transform_vertices(mesh, {c.begin(), c.end()},
                                   AffineMap::about(mesh.mean(size_t(c[0])), 1.2 * Mat3::Identity()));
@@ -120,13 +125,15 @@ TEST(IncrementalUndo, OperationsAndTheirInversesRestoreEachOtherByteForByte) {
 }
 
 // Without origins the vertices are matched by index; a delta of a mesh against itself holds nothing
-// of its own, and one against an unrelated mesh holds all of it, and both still restore it.
+// of its own (and its mesh shares the faces), and one against an unrelated mesh holds all of it, and both still restore
+// it.
 TEST(IncrementalUndo, DeltasWithoutOriginsStillRestore) {
   const CovarianceMesh grid = make_sample("grid", 100), torus = make_sample("torus");
   const MeshDelta same = mesh_delta(grid, grid, {});
   EXPECT_TRUE(same.own_gaussians.empty());
   EXPECT_TRUE(same.own_faces.empty());
   expect_same_mesh(apply_delta(grid, same), grid);
+  EXPECT_EQ(apply_delta(grid, same).shape(), grid.shape()) << "every face kept: the faces are shared";
   const MeshDelta other = mesh_delta(grid, torus, {});
   EXPECT_EQ(other.own_faces.size(), torus.n_faces());
   expect_same_mesh(apply_delta(grid, other), torus);
