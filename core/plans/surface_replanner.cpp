@@ -13,6 +13,12 @@
 namespace gps {
 namespace {
 
+// Whether some edge or vertex is sharp (crease_level's level is not empty).
+bool has_sharpness(const Sharpness& s) {
+  return std::any_of(s.creases.begin(), s.creases.end(), [](const EdgeCrease& e) { return e.sharpness > 0.0; }) ||
+         std::any_of(s.corners.begin(), s.corners.end(), [](double c) { return c > 0.0; });
+}
+
 // Every old vertex's new index from the new vertices' origins (empty origin: the indices kept), or
 // false where they cannot serve: a kept range's rows list their terms in index order, which only an
 // increasing renumbering keeps.
@@ -353,16 +359,20 @@ std::vector<int> SurfaceReplanner::set_sharpness(const Sharpness& sharpness) {
   return faces;
 }
 
-bool SurfaceReplanner::same_surface(const PolygonTopology& topology, const Sharpness& sharpness,
-                                    const std::vector<int>& origin) const {
+bool SurfaceReplanner::same_faces(const PolygonTopology& topology, const std::vector<int>& origin) const {
   const PolygonTopology& t = base_.topology();
   // A mesh whose shape the base shares has these very faces: not compared with themselves.
-  const bool same_faces = &topology == &t || (topology.n_vertices == t.n_vertices && topology.offsets == t.offsets &&
-                                              topology.verts == t.verts);
-  if (tables_->plans.n_patches() == 0 || !same_faces || !(sharpness == sharpness_)) return false;
+  if (&topology != &t &&
+      !(topology.n_vertices == t.n_vertices && topology.offsets == t.offsets && topology.verts == t.verts))
+    return false;
   for (size_t v = 0; v < origin.size(); ++v)
     if (origin[v] != int(v)) return false;
   return origin.empty() || origin.size() == size_t(t.n_vertices);
+}
+
+bool SurfaceReplanner::same_surface(const PolygonTopology& topology, const Sharpness& sharpness,
+                                    const std::vector<int>& origin) const {
+  return tables_->plans.n_patches() > 0 && sharpness == sharpness_ && same_faces(topology, origin);
 }
 
 void SurfaceReplanner::keep_every_plan() {
@@ -383,6 +393,12 @@ int SurfaceReplanner::set_topology(const PolygonTopology& topology, const Sharpn
 
 int SurfaceReplanner::set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin) {
   if (same_surface(mesh.topology(), mesh.sharpness, origin)) return keep_every_plan(), 0;
+  // The very faces of the base, every vertex where it was (a crease's undo, which shares them), sharp
+  // before and after: only the sharpness changed, re-planned where it reaches. (A first or last
+  // sharpness is planned where it reaches below, where set_sharpness plans everything.)
+  if (mesh.shape() == base_.shape && tables_->plans.n_patches() > 0 && base_.has_creases() &&
+      has_sharpness(mesh.sharpness) && same_faces(mesh.topology(), origin))
+    return int(set_sharpness(mesh.sharpness).size());
   const Scheme scheme = scheme_for(mesh.topology(), options_, &mesh.connectivity());
   check(mesh.topology(), mesh.connectivity(), scheme);
   return replan(base_local_mesh(mesh.shape(), mesh.sharpness), scheme, mesh.sharpness, origin);

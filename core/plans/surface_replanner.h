@@ -64,7 +64,9 @@ public:
   /// ranges of `faces_per_range` faces (which the tables do not depend on). Throws as it does.
   SurfaceReplanner(const PolygonTopology& topology, const PlanOptions& options, const Sharpness& sharpness,
                    int faces_per_range = kFacesPerRange);
-  /// The same for a mesh's faces and sharpness, reading the connectivity it holds.
+  /// The same for a mesh's faces and sharpness, reading the connectivity it holds. A mesh that shares
+  /// the planned mesh's faces (CovarianceMesh::shape), every vertex where it was, is re-planned as
+  /// set_sharpness does.
   SurfaceReplanner(const CovarianceMesh& mesh, const PlanOptions& options, int faces_per_range = kFacesPerRange);
 
   Scheme scheme() const { return scheme_; }
@@ -91,7 +93,9 @@ public:
   /// they are (a change of the Gaussians alone). Returns how many faces were planned. Throws as the
   /// constructor does, the tables unchanged.
   int set_topology(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin = {});
-  /// The same for a mesh's faces and sharpness, reading the connectivity it holds.
+  /// The same for a mesh's faces and sharpness, reading the connectivity it holds. A mesh that shares
+  /// the planned mesh's faces (CovarianceMesh::shape), every vertex where it was, is re-planned as
+  /// set_sharpness does.
   int set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin = {});
   /// How many ranges the faces are built in: changes cut the ranges
   /// they reach, and short ones are joined to a neighbour where both fit in one once changes have left
@@ -109,6 +113,8 @@ private:
   SurfaceReplanner(LocalMesh&& base, const PlanOptions& options, const Sharpness& sharpness, int faces_per_range);
   // The plan builders' checks of a topology under `scheme` (valences, depth); throws as they do.
   void check(const PolygonTopology& topology, const MeshConnectivity& connectivity, Scheme scheme) const;
+  // Whether `topology` has the base's faces, every vertex where it was (`origin` as set_topology takes it).
+  bool same_faces(const PolygonTopology& topology, const std::vector<int>& origin) const;
   // Whether `topology` and `sharpness` are those planned, every vertex where it was (`origin` as
   // set_topology takes it): a change of the Gaussians alone, such as a transform as an operation.
   bool same_surface(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin) const;

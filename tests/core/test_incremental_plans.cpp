@@ -198,6 +198,19 @@ TEST(IncrementalPlans, AnExtrudeBuildsAFewRangesAgain) {
   test::expect_same_tables(replanner.tables(), build_surface_plans(after, options, {}), "extruded");
 }
 
+// The replanner, which has planned `before`, given a change's result and then `before` again (its
+// undo): each time the faces around the change are planned again, not their ranges, and the tables
+// are a full plan's.
+void expect_planned_where_it_reaches(SurfaceReplanner& replanner, const Modelled& changed, const CovarianceMesh& before,
+                                     const PlanOptions& options, const std::string& where) {
+  const int planned = replanner.set_topology(changed.mesh, changed.vertex_origin);
+  EXPECT_GT(planned, 0) << where;
+  EXPECT_LE(planned, SurfaceReplanner::kFacesPerRange / 2) << where;
+  test::expect_same_tables(replanner.tables(), build_surface_plans(changed.mesh, options), where);
+  EXPECT_LE(replanner.set_topology(before, {}), SurfaceReplanner::kFacesPerRange / 2) << where << ", undone";
+  test::expect_same_tables(replanner.tables(), build_surface_plans(before, options), where + ", undone");
+}
+
 // The first crease or corner of a Catmull-Clark mesh is planned as any later one: the faces around it
 // again, not the whole mesh (one builder plans creased and smooth quads alike); and back to smooth.
 TEST(IncrementalPlans, AFirstCreaseOrCornerOfAQuadMeshBuildsTheFacesAroundIt) {
@@ -209,13 +222,25 @@ TEST(IncrementalPlans, AFirstCreaseOrCornerOfAQuadMeshBuildsTheFacesAroundIt) {
     for (const bool corner : {false, true}) {
       const Modelled sharp =
           corner ? set_corner(sphere, {edge[0]}, sharpness) : set_crease(sphere, {{edge[0], edge[1]}}, sharpness);
-      const std::string where = sharp.summary;
-      const int planned = replanner.set_topology(sharp.mesh, sharp.vertex_origin);
-      EXPECT_GT(planned, 0) << where;
-      EXPECT_LE(planned, SurfaceReplanner::kFacesPerRange / 2) << where;
-      test::expect_same_tables(replanner.tables(), build_surface_plans(sharp.mesh, options), where);
-      EXPECT_LE(replanner.set_topology(sphere, {}), SurfaceReplanner::kFacesPerRange / 2) << where << ", undone";
-      test::expect_same_tables(replanner.tables(), build_surface_plans(sphere, options), where + ", undone");
+      expect_planned_where_it_reaches(replanner, sharp, sphere, options, sharp.summary);
+    }
+  }
+}
+
+// A crease or corner changed on a mesh with sharpness already, and its undo, share the planned mesh's
+// faces (CovarianceMesh::shape): re-planned where the change reaches, as set_sharpness does, bit for
+// bit, on quads and on triangles.
+TEST(IncrementalPlans, ASharpnessChangeOnTheSameFacesIsPlannedWhereItReaches) {
+  const PlanOptions options;
+  for (const char* name : {"sphere", "icosphere"}) {
+    CovarianceMesh mesh = make_sample(name, 6000);
+    const std::array<int, 2> first = mesh.edge(7), second = mesh.edge(mesh.n_edges() / 2);
+    mesh.sharpness.set_crease(first[0], first[1], 2.0);
+    SurfaceReplanner replanner(mesh, options);
+    for (const bool corner : {false, true}) {
+      const Modelled sharp = corner ? set_corner(mesh, {second[0]}, 3.0) : set_crease(mesh, {second}, 3.0);
+      ASSERT_EQ(sharp.mesh.shape(), mesh.shape()) << sharp.summary;
+      expect_planned_where_it_reaches(replanner, sharp, mesh, options, std::string(name) + ": " + sharp.summary);
     }
   }
 }
