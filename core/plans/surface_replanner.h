@@ -64,9 +64,7 @@ public:
   /// ranges of `faces_per_range` faces (which the tables do not depend on). Throws as it does.
   SurfaceReplanner(const PolygonTopology& topology, const PlanOptions& options, const Sharpness& sharpness,
                    int faces_per_range = kFacesPerRange);
-  /// The same for a mesh's faces and sharpness, reading the connectivity it holds. A mesh that shares
-  /// the planned mesh's faces (CovarianceMesh::shape), every vertex where it was, is re-planned as
-  /// set_sharpness does.
+  /// The same for a mesh's faces and sharpness, reading the connectivity it holds.
   SurfaceReplanner(const CovarianceMesh& mesh, const PlanOptions& options, int faces_per_range = kFacesPerRange);
 
   Scheme scheme() const { return scheme_; }
@@ -94,8 +92,8 @@ public:
   /// constructor does, the tables unchanged.
   int set_topology(const PolygonTopology& topology, const Sharpness& sharpness, const std::vector<int>& origin = {});
   /// The same for a mesh's faces and sharpness, reading the connectivity it holds. A mesh that shares
-  /// the planned mesh's faces (CovarianceMesh::shape), every vertex where it was, is re-planned as
-  /// set_sharpness does.
+  /// the planned mesh's faces (CovarianceMesh::shape), every vertex where it was and sharp before and
+  /// after, is re-planned as set_sharpness does.
   int set_topology(const CovarianceMesh& mesh, const std::vector<int>& origin = {});
   /// How many ranges the faces are built in: changes cut the ranges
   /// they reach, and short ones are joined to a neighbour where both fit in one once changes have left
