@@ -285,27 +285,19 @@ TEST(EditorDocument, AnOperationsUndoStepMadeLaterRestoresExactly) {
   doc.settle_history();
   EXPECT_LT(doc.history_bytes(), mesh_bytes) << "every step settled: no mesh kept whole";
 
-  ASSERT_TRUE(doc.undo().has_value());
-  expect_same_mesh(doc.mesh(), last);
-  ASSERT_TRUE(doc.undo().has_value());
-  expect_same_mesh(doc.mesh(), edited);
-  EXPECT_FALSE(doc.undo().has_value());
-  expect_same_mesh(doc.mesh(), cut.mesh);
-  ASSERT_TRUE(doc.undo().has_value());
-  expect_same_mesh(doc.mesh(), extruded.mesh);
-  ASSERT_TRUE(doc.undo().has_value());
-  expect_same_mesh(doc.mesh(), original);
-  ASSERT_TRUE(doc.redo().has_value());
-  expect_same_mesh(doc.mesh(), extruded.mesh);
-  ASSERT_TRUE(doc.redo().has_value());
-  expect_same_mesh(doc.mesh(), cut.mesh);
-  EXPECT_FALSE(doc.redo().has_value());
-  expect_same_mesh(doc.mesh(), edited);
-  ASSERT_TRUE(doc.redo().has_value());
-  expect_same_mesh(doc.mesh(), last);
-  EXPECT_TRUE(doc.dirty());
-  ASSERT_TRUE(doc.redo().has_value());
-  expect_same_mesh(doc.mesh(), again.mesh);
+  // The states from the first to the last, and whether each step between two replaced the whole mesh
+  // (the vertex edit did not).
+  const std::vector<const CovarianceMesh*> states{&original, &extruded.mesh, &cut.mesh, &edited, &last, &again.mesh};
+  const std::vector<bool> replaced{true, true, false, true, true};
+  for (size_t i = replaced.size(); i-- > 0;) {
+    ASSERT_EQ(doc.undo().has_value(), replaced[i]) << "undone to state " << i;
+    expect_same_mesh(doc.mesh(), *states[i]);
+  }
+  for (size_t i = 0; i < replaced.size(); ++i) {
+    ASSERT_EQ(doc.redo().has_value(), replaced[i]) << "redone to state " << i + 1;
+    expect_same_mesh(doc.mesh(), *states[i + 1]);
+    if (states[i + 1] == &last) EXPECT_TRUE(doc.dirty()) << "the move folded in after the save";
+  }
 }
 
 // An undo in the time an operation's step waits swaps the meshes back: for operations that add,
