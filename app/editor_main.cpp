@@ -5,6 +5,7 @@
 
 #include "app/cli_checks.h"
 #include "app/repair_arguments.h"
+#include "app/crash_stack.h"
 #include "app/run_command_line.h"
 #include "core/support/error.h"
 #include "core/support/freed_memory.h"
@@ -13,6 +14,7 @@
 #include "view/camera.h"
 
 int main(int argc, char** argv) {
+  gps::report_crash_stack_if_asked("gpsurf-editor");
   gps::keep_freed_memory();
   gps::EditorOptions o;
   std::string size = "1280x800";

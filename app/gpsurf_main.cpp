@@ -7,11 +7,13 @@
 
 #include "app/commands.h"
 #include "app/gl_commands.h"
+#include "app/crash_stack.h"
 #include "app/run_command_line.h"
 #include "core/version.h"
 #include "core/support/freed_memory.h"
 
 int main(int argc, char** argv) {
+  gps::report_crash_stack_if_asked("gpsurf");
   gps::run_gl_command_if_named(argc, argv);
   gps::keep_freed_memory();
   CLI::App app{"gpsurf: Gaussian-product subdivision surfaces"};

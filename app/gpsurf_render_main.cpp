@@ -5,11 +5,13 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/crash_stack.h"
 #include "app/run_command_line.h"
 #include "core/version.h"
 #include "core/support/freed_memory.h"
 
 int main(int argc, char** argv) {
+  gps::report_crash_stack_if_asked("gpsurf");
   gps::keep_freed_memory();
   CLI::App app{"gpsurf: Gaussian-product subdivision surfaces (the commands that render)"};
   app.require_subcommand(1);

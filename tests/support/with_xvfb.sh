@@ -23,7 +23,8 @@ if [ -z "$display" ]; then
   kill "$server" 2>/dev/null
   exit 1
 fi
-DISPLAY=":$display" "$@"
+# A program of ours that crashes writes its stack first (app/crash_stack.h).
+DISPLAY=":$display" GPSURF_CRASH_STACK=1 "$@"
 status=$?
 kill "$server" 2>/dev/null
 wait "$server" 2>/dev/null
