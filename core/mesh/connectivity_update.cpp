@@ -6,6 +6,8 @@
 #include <cstring>
 #include <utility>
 
+#include "core/mesh/spare_connectivity.h"
+
 namespace gps {
 
 namespace {
@@ -32,6 +34,7 @@ public:
 
   std::optional<MeshConnectivity> run(std::vector<int>* continued) {
     if (o_.vertices.size() != size_t(t_.n_vertices) || o_.faces.empty()) return std::nullopt;
+    c_ = take_spare_connectivity();  // every array sized and every element written below
     if (!map_vertices() || !match_faces() || !collect_new_corners() || !merge_edges()) return std::nullopt;
     carry_kept_corners();
     if (makes_pillow()) return std::nullopt;
@@ -191,7 +194,7 @@ private:
   // the next block's: counted first, then written where the counts before theirs put them.
   bool merge_edges() {
     const int n_old = c0_.n_edges();
-    c_.face_edges.assign(t_.verts.size(), -1);
+    c_.face_edges.resize(t_.verts.size());  // every corner's edge written: here, and by carry_kept_corners
     edge_new_.assign(size_t(n_old), -1);
     const int blocks = n_old >= kParallelFaces ? kBlocks : 1;
     const auto block_edge = [&](int b) { return int(int64_t(n_old) * b / blocks); };

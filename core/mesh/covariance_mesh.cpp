@@ -58,7 +58,7 @@ public:
     fit(t.offsets);
     fit(t.verts);
     CovarianceMesh m;
-    auto shape = std::make_shared<MeshShape>();
+    auto shape = new_mesh_shape();
     // The checks before the vertices' rows: their temporaries and the rows are not held at once.
     shape->connectivity = c ? std::move(*c) : edge_connectivity(t);
     if (!checked) check_manifold(t, shape->connectivity, source, names);

@@ -25,6 +25,10 @@ struct MeshShape {
   ShapeOrigin origin;
 };
 
+/// A new shape, empty, whose connectivity's arrays are kept as the spare of the thread that lets the
+/// shape's last copy go (core/mesh/spare_connectivity.h), for the next connectivity made from another.
+std::shared_ptr<MeshShape> new_mesh_shape();
+
 /// The shape of no faces and no vertices, shared by every empty mesh.
 const std::shared_ptr<const MeshShape>& empty_mesh_shape();
 

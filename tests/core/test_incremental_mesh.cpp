@@ -16,6 +16,7 @@
 
 #include "core/mesh/connectivity_update.h"
 #include "core/mesh/covariance_mesh.h"
+#include "core/mesh/spare_connectivity.h"
 #include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/inset.h"
@@ -196,6 +197,39 @@ TEST(IncrementalConnectivity, RandomChangesGiveWhatAWholeBuildGivesAndNeverPassW
   EXPECT_GT(refused, 500);
   EXPECT_LT(declined, vouched / 4);
   EXPECT_GT(large_vouched, 5);
+}
+
+// The update writes into the arrays of a connectivity let go before (core/mesh/spare_connectivity.h):
+// given spares from half to twice the sizes it needs, every element a value no connectivity holds, it
+// still gives what a whole build gives.
+TEST(IncrementalConnectivity, ASpareOfOtherSizesAndValuesGivesWhatAWholeBuildGives) {
+  std::mt19937 rng(4747);
+  int vouched = 0;
+  for (const char* name : {"grid", "icosphere", "pawn-quads", "torus"}) {
+    SCOPED_TRACE(name);
+    const CovarianceMesh before = make_sample(name, 200);
+    const MeshConnectivity& b = before.connectivity();
+    for (int trial = 0; trial < 60; ++trial) {
+      Changed c = unchanged(before);
+      for (int i = 0; i < 1 + trial % 3; ++i) random_edit(c, rng);
+      const double scale = 0.5 + 0.5 * double(trial % 4);
+      const auto poisoned = [&](const std::vector<int>& like) {
+        return std::vector<int>(size_t(scale * double(like.size())) + 1, -7);
+      };
+      take_spare_connectivity();  // the last whole build's, let go
+      keep_spare_connectivity({.edge_verts = poisoned(b.edge_verts),
+                               .edge_faces = poisoned(b.edge_faces),
+                               .face_edges = poisoned(b.face_edges),
+                               .vertex_edge_offsets = poisoned(b.vertex_edge_offsets),
+                               .vertex_edges = poisoned(b.vertex_edges),
+                               .vertex_face_offsets = poisoned(b.vertex_face_offsets),
+                               .vertex_faces = poisoned(b.vertex_faces),
+                               .vertex_face_corners = poisoned(b.vertex_face_corners)});
+      vouched += update_against_whole_build(before, c, trial) == Outcome::vouched;
+      if (HasFailure()) return;
+    }
+  }
+  EXPECT_GT(vouched, 100);
 }
 
 // Edits that leave every old vertex and every kept face its number (faces changed in place, the last
