@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "app/cli_checks.h"
-#include "app/repair_arguments.h"
 #include "app/crash_stack.h"
+#include "app/repair_arguments.h"
 #include "app/run_command_line.h"
 #include "core/support/error.h"
 #include "core/support/freed_memory.h"

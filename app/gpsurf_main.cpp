@@ -6,8 +6,8 @@
 #include <string>
 
 #include "app/commands.h"
-#include "app/gl_commands.h"
 #include "app/crash_stack.h"
+#include "app/gl_commands.h"
 #include "app/run_command_line.h"
 #include "core/version.h"
 #include "core/support/freed_memory.h"
