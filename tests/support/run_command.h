@@ -1,5 +1,7 @@
 #pragma once
-// Runs a command line in a shell and captures its exit code and output (stdout and stderr together).
+// Runs a command line in a shell and captures its exit code and output (stdout and stderr together). A command
+// that dies of a signal (a shell exit of 128 or more) has its output written to stderr as well, so that a crash
+// seen once in CI keeps its stack in the test's log even where the test does not print the output.
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -24,6 +26,9 @@ inline CommandResult run_command(const std::string& command) {
   while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
   const int status = ::pclose(pipe);
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (r.exit_code >= 128 || r.exit_code < 0)
+    std::fprintf(stderr, "[run_command] `%s` ended with %d (a signal); its output:\n%s\n", command.c_str(), r.exit_code,
+                 r.output.c_str());
   return r;
 }
 
