@@ -32,12 +32,14 @@ std::vector<int> patch_faces(const PolygonTopology& topology, const PatchPlans& 
 
 std::vector<int> patches_of_faces(const PolygonTopology& topology, const PatchPlans& plans,
                                   const std::vector<int>& faces) {
-  const std::vector<int> first = first_patches(topology, plans);
+  return patches_of_faces(first_patches(topology, plans), faces);
+}
+
+std::vector<int> patches_of_faces(const std::vector<int>& first, const std::vector<int>& faces) {
   std::vector<int> patches;
   for (const int f : faces) {
     if (f < 0 || size_t(f) + 1 >= first.size())
-      throw Error("face " + std::to_string(f) + " is not in the mesh (" + std::to_string(topology.n_faces()) +
-                  " faces)");
+      throw Error("face " + std::to_string(f) + " is not in the mesh (" + std::to_string(first.size() - 1) + " faces)");
     for (int p = first[size_t(f)]; p < first[size_t(f) + 1]; ++p) patches.push_back(p);
   }
   std::sort(patches.begin(), patches.end());

@@ -20,5 +20,7 @@ std::vector<int> patch_faces(const PolygonTopology& topology, const PatchPlans& 
 /// gps::Error as patch_faces() does, or naming a face the mesh does not have.
 std::vector<int> patches_of_faces(const PolygonTopology& topology, const PatchPlans& plans,
                                   const std::vector<int>& faces);
+/// The same from the faces' first patches (first_patches), as a caller that keeps them has them.
+std::vector<int> patches_of_faces(const std::vector<int>& first, const std::vector<int>& faces);
 
 }  // namespace gps

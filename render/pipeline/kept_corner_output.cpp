@@ -9,7 +9,7 @@
 namespace gps {
 
 std::vector<int> stale_corner_patches(const SurfaceTables& before, const SurfaceTables& after,
-                                      const CovarianceMesh& mesh,
+                                      const CovarianceMesh& mesh, const std::vector<int>& first,
                                       const std::function<const StencilDependents&()>& dependents,
                                       const std::vector<int>& changed_or_new, const PlanChange& change,
                                       const std::vector<int>& origin) {
@@ -27,8 +27,8 @@ std::vector<int> stale_corner_patches(const SurfaceTables& before, const Surface
     std::vector<char> point_changed(size_t(after.stencils.n_points()), 0);
     for (const int v : changed) point_changed[size_t(v)] = 1;
     for (const int r : rows_reading(dependents(), changed)) point_changed[size_t(after.stencils.first_row() + r)] = 1;
-    const std::vector<int> near = patches_of_faces(mesh.topology(), after.plans,
-                                                   faces_reading(mesh.topology(), mesh.connectivity(), {}, changed));
+    const std::vector<int> near =
+        patches_of_faces(first, faces_reading(mesh.topology(), mesh.connectivity(), {}, changed));
     const int n_near = int(near.size());
 #pragma omp parallel if (n_near >= kParallelFaces)
     {

@@ -22,9 +22,10 @@ namespace gps {
 /// stencil row that reads one (`dependents`: of after's stencils, asked for only where a vertex that
 /// was there before changed). A new vertex no kept plan reads. A plan reads only its face's piece (the
 /// faces sharing a vertex with it; core/plans/surface_replanner.h, faces_reading): only the patches of
-/// the faces whose pieces hold a changed vertex are looked at, unless most vertices changed.
+/// the faces whose pieces hold a changed vertex are looked at, unless most vertices changed. `first`: the
+/// first patch of each face of `mesh` in `after` (first_patches, core/plans/patch_faces.h).
 std::vector<int> stale_corner_patches(const SurfaceTables& before, const SurfaceTables& after,
-                                      const CovarianceMesh& mesh,
+                                      const CovarianceMesh& mesh, const std::vector<int>& first,
                                       const std::function<const StencilDependents&()>& dependents,
                                       const std::vector<int>& changed, const PlanChange& change,
                                       const std::vector<int>& origin);

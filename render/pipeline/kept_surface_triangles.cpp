@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "core/mesh/mesh_connectivity.h"
-#include "core/plans/patch_faces.h"
 
 namespace gps {
 
@@ -23,8 +22,9 @@ bool triangles_change(const PatchPlans& after, const std::vector<char>& evaluate
 
 }  // namespace
 
-KeptTriangles kept_triangles(const CovarianceMesh& mesh, const PatchPlans& after, int n_before,
-                             const std::vector<KeptPatches>& kept, const std::vector<int>& stale_corners) {
+KeptTriangles kept_triangles(const CovarianceMesh& mesh, const PatchPlans& after, const std::vector<int>& first,
+                             int n_before, const std::vector<KeptPatches>& kept,
+                             const std::vector<int>& stale_corners) {
   const int n_patches = after.n_patches();
   KeptTriangles out{std::vector<int>(size_t(n_before), -1), std::vector<char>(size_t(n_patches), 0)};
   std::vector<char> evaluated(size_t(n_patches), 1);  // not kept, or its corner output evaluated again
@@ -44,7 +44,6 @@ KeptTriangles kept_triangles(const CovarianceMesh& mesh, const PatchPlans& after
   }
   // A patch's edge neighbours and corner owners lie on faces that share a vertex with its own: only
   // the patches of the faces around those of the patches evaluated again can change.
-  const std::vector<int> first = first_patches(mesh.topology(), after);
   std::vector<int> faces;  // of the patches evaluated again, ascending
   for (int p = 0; p < n_patches; ++p)
     if (evaluated[size_t(p)]) {

@@ -20,8 +20,9 @@ struct KeptTriangles {
 /// which must fit, kept_runs_fit), with the patches whose corner-pass output is evaluated again
 /// `stale_corners` (stale_corner_patches): the patches whose triangles change are those not kept,
 /// those of `stale_corners`, and those that evaluate a boundary point from one of these, which lie on
-/// the faces around theirs (only those are looked at, unless many changed).
-KeptTriangles kept_triangles(const CovarianceMesh& mesh, const PatchPlans& after, int n_before,
-                             const std::vector<KeptPatches>& kept, const std::vector<int>& stale_corners);
+/// the faces around theirs (only those are looked at, unless many changed). `first`: the first patch of
+/// each face of `mesh` in `after` (first_patches, core/plans/patch_faces.h).
+KeptTriangles kept_triangles(const CovarianceMesh& mesh, const PatchPlans& after, const std::vector<int>& first,
+                             int n_before, const std::vector<KeptPatches>& kept, const std::vector<int>& stale_corners);
 
 }  // namespace gps

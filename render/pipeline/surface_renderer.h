@@ -174,6 +174,8 @@ private:
                                     const PlanChange& change, const std::vector<int>& origin);
   /// Which stencil rows read each base vertex, found when first asked for after a change of tables.
   const StencilDependents& dependents();
+  /// The first patch of each face of mesh_shape_ in tables_ (first_patches), built once per topology.
+  const std::vector<int>& face_first_patches();
   /// The patches whose triangles an edit of `changed` vertices and the stencil `rows` reading them changes.
   std::vector<int> changed_patches(const std::vector<int>& changed, const std::vector<int>& rows);
   /// How a frame uses the surface cache: it draws the stored triangles, it was drawn while it was

@@ -52,7 +52,8 @@ void SurfaceRenderer::run_compute_kept(const CovarianceMesh& mesh, const Surface
   ++points_generation_;
   const PatchPlans& plans = tables().plans;
   const std::vector<int> patches = stale_corner_patches(
-      before, tables(), mesh, [this]() -> const StencilDependents& { return dependents(); }, changed, change, origin);
+      before, tables(), mesh, face_first_patches(), [this]() -> const StencilDependents& { return dependents(); },
+      changed, change, origin);
   const std::vector<int> corners = CornerLimitPass::edit_slots(plans, patches);
   const CornerItems items = CornerLimitPass::slot_items(plans, corners);
   buffers_.upload_corner_list(items.items);
@@ -71,7 +72,8 @@ void SurfaceRenderer::run_compute_kept(const CovarianceMesh& mesh, const Surface
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
   if (!cache_.has_stored_triangles()) return cache_.points_changed(points_generation_, nullptr);
-  const KeptTriangles triangles = kept_triangles(mesh, plans, before.plans.n_patches(), change.kept, patches);
+  const KeptTriangles triangles =
+      kept_triangles(mesh, plans, face_first_patches(), before.plans.n_patches(), change.kept, patches);
   stored_levels_.follow(
       n_patches(), cache_.topology_changed(points_generation_, n_patches(), triangles.new_number, triangles.changed));
 }
@@ -93,6 +95,11 @@ std::vector<int> SurfaceRenderer::rows_not_carried(const SurfaceTables& before, 
   return rows;
 }
 
+const std::vector<int>& SurfaceRenderer::face_first_patches() {
+  if (!first_patches_) first_patches_ = first_patches(mesh_shape_->topology, tables().plans);
+  return *first_patches_;
+}
+
 const StencilDependents& SurfaceRenderer::dependents() {
   if (!dependents_) dependents_ = stencil_dependents(tables().stencils);
   return *dependents_;
@@ -105,9 +112,8 @@ std::vector<int> SurfaceRenderer::changed_patches(const std::vector<int>& change
   // built once per topology.
   if (!readers_ && changed.size() * kNearEditDivisor < size_t(stencils.n_base) &&
       near_patches_listed_ < size_t(n_patches())) {
-    if (!first_patches_) first_patches_ = first_patches(mesh_shape_->topology, tables().plans);
     std::vector<int> patches = patches_changed_near(mesh_shape_->topology, mesh_shape_->connectivity, tables().plans,
-                                                    *first_patches_, stencils.first_row(), changed, rows);
+                                                    face_first_patches(), stencils.first_row(), changed, rows);
     near_patches_listed_ += patches.size();
     return patches;
   }

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <random>
 
+#include "core/plans/patch_faces.h"
 #include "core/plans/surface_replanner.h"
 #include "core/support/error.h"
 #include "tests/support/plan_tables.h"
@@ -56,7 +57,8 @@ TEST(KeptSurfaceTriangles, RandomOperationsChangeThePatchesTheRuleNames) {
       for (int p = 0; p < after.n_patches(); ++p)
         if (!evaluated[size_t(p)] && random() % 97 == 0) stale.push_back(p);
       for (const int p : stale) evaluated[size_t(p)] = 1;
-      const KeptTriangles triangles = kept_triangles(result.mesh, after, n_before, kept, stale);
+      const KeptTriangles triangles =
+          kept_triangles(result.mesh, after, first_patches(result.mesh.topology(), after), n_before, kept, stale);
       const std::string where = c.name + ", step " + std::to_string(step) + " (" + result.summary + ")";
       const std::vector<char> expected = changed_by_the_rule(after, evaluated);
       ASSERT_EQ(triangles.changed.size(), expected.size()) << where;
