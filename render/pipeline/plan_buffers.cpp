@@ -348,6 +348,13 @@ void PlanBuffers::bind() const {
   for (int b = 0; b < kBindingCount; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
 }
 
+std::vector<uint32_t> PlanBuffers::read_words(int binding) const {
+  std::vector<uint32_t> words(sizes_[binding] / sizeof(uint32_t));
+  glGetNamedBufferSubData(buffers_[binding], 0, GLsizeiptr(words.size() * sizeof(uint32_t)), words.data());
+  check_gl_errors("reading a table's buffer");
+  return words;
+}
+
 std::vector<float> PlanBuffers::read_points(int n_points) const {
   std::vector<float> points(size_t(n_points) * kVec4PerPoint * 4);
   if (precision_ == PointPrecision::double_float) {

@@ -83,6 +83,8 @@ public:
   /// The corner pass's output: the corner limits (as read_corner_limits gives them), then the curve
   /// midpoints (one vec4 per patch corner).
   std::vector<float> read_corner_pass() const;
+  /// The 32-bit words in use at `binding` (a table's ints, or its floats' bits): what its uploads left.
+  std::vector<uint32_t> read_words(int binding) const;
   /// GPU memory held, in bytes.
   size_t bytes() const;
 

@@ -144,6 +144,8 @@ public:
   int last_corner_slots() const { return last_corner_slots_; }
   /// The corner pass's output as the last compute pass left it (PlanBuffers::read_corner_pass).
   std::vector<float> read_corner_pass() const { return buffers_.read_corner_pass(); }
+  /// The words of the tables' buffer at `binding` (render/gl/gpu_layout.h), as the uploads left them.
+  std::vector<uint32_t> read_table_buffer(int binding) const { return buffers_.read_words(binding); }
   /// GPU memory held by the pipeline's buffers, in bytes.
   size_t buffer_bytes() const { return buffers_.bytes(); }
 

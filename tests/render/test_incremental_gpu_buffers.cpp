@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <random>
+#include <type_traits>
 
 #include "core/modelling/extrude.h"
 #include "core/modelling/samples.h"
@@ -14,6 +17,7 @@
 #include "core/plans/surface_replanner.h"
 #include "core/support/error.h"
 #include "core/plans/kept_patch_records.h"
+#include "render/gl/gpu_layout.h"
 #include "render/pipeline/kept_corner_output.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
@@ -25,9 +29,51 @@ namespace {
 
 using IncrementalGpuBuffers = test::GlTest;
 
-// `renderer`'s corner-pass output and plan points against a renderer given the same tables anew.
+// A table's array as its buffer holds it: ints as they are, reals as floats.
+template <class T>
+std::vector<uint32_t> words_of(const std::vector<T>& values) {
+  std::vector<uint32_t> words(values.size());
+  for (size_t i = 0; i < values.size(); ++i) {
+    if constexpr (std::is_floating_point_v<T>) {
+      const float value = float(values[i]);
+      std::memcpy(&words[i], &value, sizeof(float));
+    } else {
+      words[i] = uint32_t(values[i]);
+    }
+  }
+  return words;
+}
+
+// Every table buffer holds its array of `renderer`'s tables, bit for bit: the uploads that send only
+// what changed sent all of it.
+void expect_tables_held(const SurfaceRenderer& renderer, const std::string& where) {
+  const SurfaceTables& t = renderer.tables();
+  const std::pair<int, std::vector<uint32_t>> arrays[] = {
+      {gpu::kBindingOffsets, words_of(t.stencils.offsets)},
+      {gpu::kBindingIndices, words_of(t.stencils.indices)},
+      {gpu::kBindingWeights, words_of(t.stencils.weights)},
+      {gpu::kBindingNodes, words_of(t.plans.nodes)},
+      {gpu::kBindingRoots, words_of(t.plans.patch_roots)},
+      {gpu::kBindingCorners, words_of(t.plans.patch_corner_points)},
+      {gpu::kBindingExtraordinaryTables, words_of(t.plans.extraordinary_tables)},
+      {gpu::kBindingPatchEdges, words_of(t.plans.patch_edges)},
+      {gpu::kBindingPatchNeighbours, words_of(t.plans.patch_neighbours)},
+      {gpu::kBindingCornerOwners, words_of(t.plans.corner_owners)}};
+  for (const auto& [binding, words] : arrays) {
+    std::vector<uint32_t> held = renderer.read_table_buffer(binding);
+    ASSERT_GE(held.size(), words.size()) << where << ": binding " << binding;
+    held.resize(words.size());
+    const auto wrong = std::mismatch(words.begin(), words.end(), held.begin()).first;
+    EXPECT_TRUE(wrong == words.end()) << where << ": binding " << binding << " differs at word "
+                                      << (wrong - words.begin()) << " of " << words.size();
+  }
+}
+
+// `renderer`'s tables as uploaded, its corner-pass output and plan points against a renderer given
+// the same tables anew.
 void expect_as_set_anew(const SurfaceRenderer& renderer, const CovarianceMesh& mesh, const NormalisedFrame& frame,
                         const std::string& where) {
+  expect_tables_held(renderer, where);
   SurfaceRenderer fresh;
   fresh.set_mesh(mesh, renderer.tables(), frame);
   EXPECT_TRUE(renderer.read_corner_pass() == fresh.read_corner_pass()) << where << ": corner pass";
