@@ -262,6 +262,10 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
     add_patch_adjacency(merged.plans, t, sharpness, &base_.connectivity());
     writes = {false, {}, boundary_records(merged.plans)};
   }
+  if (updated && writes.numbers_kept) {
+    change_.neighbours_written = writes.written;
+    change_.owners_written = writes.owners_written;
+  }
   adjacency_writes_ = std::move(writes);
   if (updated) change_.relinked = kept_beside_built(kept);
   retired_ = std::exchange(tables_, std::make_shared<SurfaceTables>(std::move(merged)));

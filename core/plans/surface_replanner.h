@@ -45,6 +45,11 @@ struct PlanChange {
   /// says (a renderer computes again only the others, and those that read a vertex whose Gaussian
   /// changed).
   std::vector<KeptStencilRows> kept_rows;
+  /// Where every kept patch kept its number and the adjacency records followed them (update_patch_adjacency,
+  /// core/plans/patch_adjacency.h): the patches (ascending) whose edge records (patch_neighbours) were
+  /// written, new ones among them, and those whose corner owners were, where known. Every other
+  /// patch's records are those it had: a renderer sends only these. Unset: any may differ.
+  std::optional<std::vector<int>> neighbours_written, owners_written;
 };
 
 /// A replanner's tables with the change that made them, as a renderer takes them (shared: a

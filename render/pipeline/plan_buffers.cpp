@@ -88,14 +88,35 @@ std::vector<std::pair<size_t, size_t>> differing_runs(const std::vector<T>& data
   return runs;
 }
 
+// The runs [begin, end) of the records of `stride` elements that `listed` names (ascending) in `size`
+// elements, and the elements past `held_size`, joined where they touch.
+std::vector<std::pair<size_t, size_t>> listed_runs(const std::vector<int>& listed, size_t stride, size_t held_size,
+                                                   size_t size) {
+  std::vector<std::pair<size_t, size_t>> runs;
+  const auto add = [&](size_t begin, size_t end) {
+    end = std::min(end, size);
+    if (begin >= end) return;
+    if (!runs.empty() && runs.back().second >= begin)
+      runs.back().second = std::max(runs.back().second, end);
+    else
+      runs.emplace_back(begin, end);
+  };
+  for (const int record : listed) add(size_t(record) * stride, size_t(record + 1) * stride);
+  add(held_size, size);
+  return runs;
+}
+
 }  // namespace
 
 template <class T, class Source>
-void PlanBuffers::upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held) {
+void PlanBuffers::upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held,
+                            const std::vector<int>* listed, size_t stride) {
   // Empty buffers still need storage to be bound.
   const bool stays = reserve(binding, std::max<size_t>(sizeof(T), data.size() * sizeof(T)));
   const std::vector<std::pair<size_t, size_t>> runs =
-      stays && held ? differing_runs(data, *held) : std::vector<std::pair<size_t, size_t>>{{0, data.size()}};
+      stays && held && listed ? listed_runs(*listed, stride, held->size(), data.size())
+      : stays && held         ? differing_runs(data, *held)
+                              : std::vector<std::pair<size_t, size_t>>{{0, data.size()}};
   for (const auto& [begin, end] : runs) {
     if (begin >= end) continue;
     if constexpr (std::is_same_v<T, Source>) {
@@ -170,7 +191,7 @@ void PlanBuffers::check_fits(const SurfaceTables& tables, int n_vertices, int n_
 }
 
 void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept,
-                                const CarriedPoints* carried, const SurfaceTables* held) {
+                                const CarriedPoints* carried, const SurfaceTables* held, const PlanChange* change) {
   const StencilTable& s = tables.stencils;
   const PatchPlans& p = tables.plans;
   const StencilTable* hs = held ? &held->stencils : nullptr;
@@ -183,8 +204,16 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<K
   upload_as<int32_t>(kBindingCorners, p.patch_corner_points, hp ? &hp->patch_corner_points : nullptr);
   upload_as<float>(kBindingExtraordinaryTables, p.extraordinary_tables, hp ? &hp->extraordinary_tables : nullptr);
   upload_as<int32_t>(kBindingPatchEdges, p.patch_edges, hp ? &hp->patch_edges : nullptr);
-  upload_as<int32_t>(kBindingPatchNeighbours, p.patch_neighbours, hp ? &hp->patch_neighbours : nullptr);
-  upload_as<int32_t>(kBindingCornerOwners, p.corner_owners, hp ? &hp->corner_owners : nullptr);
+  // The change's lists of the patches whose adjacency records it wrote, where it made these plans from held's.
+  const bool listed = hp && change && hp->shape == p.shape;
+  const std::vector<int>* neighbours_written =
+      listed && change->neighbours_written ? &*change->neighbours_written : nullptr;
+  const std::vector<int>* owners_written = listed && change->owners_written ? &*change->owners_written : nullptr;
+  const size_t corners = size_t(p.corners());
+  upload_as<int32_t>(kBindingPatchNeighbours, p.patch_neighbours, hp ? &hp->patch_neighbours : nullptr,
+                     neighbours_written, 4 * corners);
+  upload_as<int32_t>(kBindingCornerOwners, p.corner_owners, hp ? &hp->corner_owners : nullptr, owners_written,
+                     2 * corners);
   // Every point is written by the compute pass that follows every upload of the tables, but those carried:
   // where each stays where it was, in the storage that holds it (an operation that only adds vertices,
   // or its undo), else copied into the spare storage.

@@ -53,8 +53,12 @@ public:
   /// `held`: the tables the buffers hold now (the last uploaded), where known: a table whose storage
   /// stays is written only where it differs from them (an operation's change leaves most of the tables
   /// as they were: renumbered past a change where rows or patches are added before theirs, else alike).
+  /// `change`: the change that made `tables` from `held`, where known: of the adjacency records, those
+  /// of the patches it lists as written (PlanChange::neighbours_written, owners_written) are sent, and
+  /// no others compared.
   void upload_tables(const SurfaceTables& tables, const std::vector<KeptPatches>& kept = {},
-                     const CarriedPoints* carried = nullptr, const SurfaceTables* held = nullptr);
+                     const CarriedPoints* carried = nullptr, const SurfaceTables* held = nullptr,
+                     const PlanChange* change = nullptr);
   /// Every base vertex's μ and Σ.
   void upload_gaussians(const FramedGaussians& gaussians);
   /// Every base vertex's μ and Σ after a change of topology, in the precision of the buffer before:
@@ -108,9 +112,12 @@ private:
   template <class Real>
   void update_gaussians_as(const FramedGaussians& gaussians, const std::vector<int>& changed);
   /// `data` as type T; where `held` (what the buffer holds, as uploaded from it) is given and the
-  /// storage stays, only the chunks of elements that differ from it (bit for bit) and those past its end.
+  /// storage stays, only the chunks of elements that differ from it (bit for bit) and those past its end,
+  /// or where `listed` is given too, the records of `stride` elements it lists (all the others are held's)
+  /// and those past its end.
   template <class T, class Source>
-  void upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held = nullptr);
+  void upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held = nullptr,
+                 const std::vector<int>* listed = nullptr, size_t stride = 0);
   template <class T>
   void upload(int binding, const std::vector<T>& data) {
     upload_as<T>(binding, data);

@@ -71,7 +71,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   // Kept tables keep the points of the base vertices that did not change, in this frame and precision.
   const PlanBuffers::CarriedPoints carried{origin, changed, change.kept_rows, before->stencils.first_row()};
   buffers_.upload_tables(*tables_, keep ? kept : std::vector<KeptPatches>{}, keep && few_changed ? &carried : nullptr,
-                         before.get());
+                         before.get(), change.from != 0 && change.from == tables_id_ ? &change : nullptr);
   tables_id_ = change.to;
   frame_ = frame;
   patches_.set_frame(frame_);
