@@ -37,6 +37,20 @@ MeshPointPrecision::MeshPointPrecision(const MeshPointPrecision& before, const F
   assess(gaussians, &changed);
 }
 
+MeshPointPrecision::MeshPointPrecision(const MeshPointPrecision& before, const GaussiansChange& change,
+                                       const std::vector<int>& origin)
+    : thin_(before.thin_) {
+  const size_t n_before = thin_.size();
+  thin_.resize(change.n_vertices, 0);
+  for (size_t v = n_before; v < thin_.size(); ++v)  // a new vertex that did not change: its origin's
+    if (const size_t o = origin.empty() ? v : size_t(origin[v]); o < n_before) thin_[v] = thin_[o];
+  const long long n = (long long)change.changed.size();
+#pragma omp parallel for schedule(static) if (n >= kParallelFaces)
+  for (long long i = 0; i < n; ++i)
+    thin_[size_t(change.changed[size_t(i)])] = needs_double_points(change.covariances[size_t(i)]) ? 1 : 0;
+  thin_count_ = size_t(std::count(thin_.begin(), thin_.end(), char(1)));
+}
+
 void MeshPointPrecision::update(const FramedGaussians& gaussians, const std::vector<int>& changed) {
   if (changed.size() >= size_t(kParallelFaces)) return assess(gaussians, &changed);
   for (const int v : changed) {

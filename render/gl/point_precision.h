@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/mesh/covariance_mesh.h"
+#include "render/gl/gaussians_change.h"
 #include "render/gl/normalised_frame.h"
 #include "render/gl/shader_program.h"
 
@@ -30,6 +31,8 @@ public:
   /// the `changed` (changed_gaussians, which new vertices are among; an empty `origin` keeps numbers).
   MeshPointPrecision(const MeshPointPrecision& before, const FramedGaussians& gaussians, const std::vector<int>& origin,
                      const std::vector<int>& changed);
+  /// The same for a change that keeps vertex numbers, from its changed Gaussians (gaussians_change).
+  MeshPointPrecision(const MeshPointPrecision& before, const GaussiansChange& change, const std::vector<int>& origin);
   /// The `changed` vertices' Gaussians again.
   void update(const FramedGaussians& gaussians, const std::vector<int>& changed);
   PointPrecision precision() const {

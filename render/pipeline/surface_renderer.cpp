@@ -37,13 +37,30 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   // In the same frame, what the unchanged Gaussians gave is carried to where they went.
   const bool carry =
       frame == frame_ && framed_.n_vertices() > 0 && (origin.empty() || origin.size() == mesh.n_vertices());
+  // Where the change keeps vertex numbers, only its changed Gaussians are framed and kept, and written
+  // into those held once nothing refuses the mesh; else every vertex is framed anew.
+  const bool in_place = carry && keeps_vertex_numbers(origin, framed_.n_vertices(), mesh.n_vertices());
   FramedGaussians framed;
-  const std::vector<int> changed = carry ? changed_gaussians(framed_, mesh, frame, origin, framed) : std::vector<int>{};
-  if (!carry) framed = frame.gaussians_in_frame(mesh);
+  GaussiansChange gaussians;
+  std::vector<int> framed_changed;
+  if (in_place)
+    gaussians = gaussians_change(framed_, mesh, frame, origin);
+  else if (carry)
+    framed_changed = changed_gaussians(framed_, mesh, frame, origin, framed);
+  else
+    framed = frame.gaussians_in_frame(mesh);
+  const std::vector<int>& changed = in_place ? gaussians.changed : framed_changed;
+  const auto take_framed = [&] {
+    if (in_place)
+      apply_gaussians_change(gaussians, origin, framed_);
+    else
+      framed_ = std::move(framed);
+  };
   ++revision_;
-  const bool few_changed = carry && !update_everything(changed.size(), framed.n_vertices());
-  MeshPointPrecision point_precision =
-      carry ? MeshPointPrecision(point_precision_, framed, origin, changed) : MeshPointPrecision(framed);
+  const bool few_changed = carry && !update_everything(changed.size(), mesh.n_vertices());
+  MeshPointPrecision point_precision = in_place ? MeshPointPrecision(point_precision_, gaussians, origin)
+                                       : carry  ? MeshPointPrecision(point_precision_, framed, origin, changed)
+                                                : MeshPointPrecision(framed);
   PlanBuffers::check_fits(*surface_tables, int(mesh.n_vertices()), int(mesh.n_faces()), storage_limit_,
                           point_precision.precision());
   // The corner pass's output of the kept patches holds where it was computed alike.
@@ -54,7 +71,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
                     kept_runs_fit(kept, n_patches(), surface_tables->plans.n_patches());
   if (keep && same_plans(*tables_, *surface_tables, kept, origin)) {  // the Gaussians alone: followed as an edit
     tables_id_ = change.to;
-    framed_ = std::move(framed);
+    take_framed();
     point_precision_ = std::move(point_precision);
     return follow_edit(changed);
   }
@@ -76,7 +93,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const
   frame_ = frame;
   patches_.set_frame(frame_);
   cache_.set_frame(frame_);
-  framed_ = std::move(framed);
+  take_framed();
   if (few_changed && same_precision)
     buffers_.carry_gaussians(framed_, origin, changed);
   else

@@ -159,5 +159,35 @@ TEST(MeshPointPrecision, FollowsEditsOfManyGaussiansAndOfFew) {
   EXPECT_EQ(MeshPointPrecision(reversed).precision(), PointPrecision::single_float);
 }
 
+// After a change that keeps vertex numbers, from its changed Gaussians alone (render/gl/gaussians_change.h):
+// a new vertex that did not change has its origin's need, a changed one is assessed, and a needle
+// rounded takes the mesh back to float.
+TEST(MeshPointPrecision, FollowsAChangeThatKeepsVertexNumbers) {
+  const Mat3 needle = Vec3(1.0, 1e-7, 1e-7).asDiagonal(), round = 0.01 * Mat3::Identity();
+  FramedGaussians g;
+  g.means.assign(10, Vec3::Zero());
+  g.covariances.assign(10, round);
+  g.covariances[3] = needle;
+  const MeshPointPrecision before(g);
+  ASSERT_EQ(before.precision(), PointPrecision::double_float);
+  // Vertex 3 rounded, a new vertex 10 from it unchanged (a needle still), a new vertex 11 of its own.
+  std::vector<int> origin{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 3, -1};
+  GaussiansChange change;
+  change.n_vertices = 12;
+  change.changed = {3, 11};
+  change.covariances = {round, round};
+  change.means = {Vec3::Zero(), Vec3::Zero()};
+  EXPECT_EQ(MeshPointPrecision(before, change, origin).precision(), PointPrecision::double_float) << "vertex 10";
+  origin[10] = 2;
+  EXPECT_EQ(MeshPointPrecision(before, change, origin).precision(), PointPrecision::single_float);
+  // A changed vertex made a needle, the others as they were; and the new vertices removed.
+  change.covariances = {needle, round};
+  origin[10] = 2;
+  EXPECT_EQ(MeshPointPrecision(before, change, origin).precision(), PointPrecision::double_float) << "vertex 3";
+  GaussiansChange removed;
+  removed.n_vertices = 3;  // vertex 3 gone
+  EXPECT_EQ(MeshPointPrecision(before, removed, {0, 1, 2}).precision(), PointPrecision::single_float);
+}
+
 }  // namespace
 }  // namespace gps
