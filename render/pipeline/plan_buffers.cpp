@@ -4,12 +4,12 @@
 
 #include <Eigen/LU>
 #include <algorithm>
-#include <cstring>
 #include <type_traits>
 #include <utility>
 
 #include "render/gl/compute_limits.h"
 #include "render/gl/gl_context.h"
+#include "render/pipeline/upload_runs.h"
 #include "core/mesh/dual_map.h"
 #include "core/support/error.h"
 
@@ -57,56 +57,6 @@ PlanBuffers::PlanBuffers() {
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
   max_block_ = size_t(std::max<GLint64>(max_block, 0));
 }
-
-namespace {
-
-// The runs [begin, end) of elements of `data` that differ from `held` bit for bit (a weight of −0 is not
-// +0's), compared a chunk at a time (a chunk that differs is one run, joined to the one before where they
-// touch), and the elements past held's end. An operation changes the tables in a few places: the rest of
-// them is neither sent again nor, on a GPU, carried over the bus.
-template <class T>
-std::vector<std::pair<size_t, size_t>> differing_runs(const std::vector<T>& data, const std::vector<T>& held) {
-  constexpr size_t kChunk = 4096;
-  const size_t n = std::min(data.size(), held.size());
-  std::vector<std::pair<size_t, size_t>> runs;
-  const auto add = [&](size_t begin, size_t end) {
-    if (!runs.empty() && runs.back().second == begin)
-      runs.back().second = end;
-    else
-      runs.emplace_back(begin, end);
-  };
-  const long long n_chunks = (long long)((n + kChunk - 1) / kChunk);
-  std::vector<char> differs(size_t(n_chunks), 0);
-#pragma omp parallel for schedule(static) if (n_chunks >= 64)
-  for (long long c = 0; c < n_chunks; ++c) {
-    const size_t begin = size_t(c) * kChunk, end = std::min(n, begin + kChunk);
-    differs[size_t(c)] = std::memcmp(data.data() + begin, held.data() + begin, (end - begin) * sizeof(T)) != 0;
-  }
-  for (size_t c = 0; c < differs.size(); ++c)
-    if (differs[c]) add(c * kChunk, std::min(n, (c + 1) * kChunk));
-  if (data.size() > n) add(n, data.size());
-  return runs;
-}
-
-// The runs [begin, end) of the records of `stride` elements that `listed` names (ascending) in `size`
-// elements, and the elements past `held_size`, joined where they touch.
-std::vector<std::pair<size_t, size_t>> listed_runs(const std::vector<int>& listed, size_t stride, size_t held_size,
-                                                   size_t size) {
-  std::vector<std::pair<size_t, size_t>> runs;
-  const auto add = [&](size_t begin, size_t end) {
-    end = std::min(end, size);
-    if (begin >= end) return;
-    if (!runs.empty() && runs.back().second >= begin)
-      runs.back().second = std::max(runs.back().second, end);
-    else
-      runs.emplace_back(begin, end);
-  };
-  for (const int record : listed) add(size_t(record) * stride, size_t(record + 1) * stride);
-  add(held_size, size);
-  return runs;
-}
-
-}  // namespace
 
 template <class T, class Source>
 void PlanBuffers::upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held,
