@@ -39,7 +39,8 @@ std::vector<int> patches_of_faces(const std::vector<int>& first, const std::vect
   std::vector<int> patches;
   for (const int f : faces) {
     if (f < 0 || size_t(f) + 1 >= first.size())
-      throw Error("face " + std::to_string(f) + " is not in the mesh (" + std::to_string(first.size() - 1) + " faces)");
+      throw Error("face " + std::to_string(f) + " is not in the mesh (" +
+                  std::to_string(first.empty() ? 0 : first.size() - 1) + " faces)");
     for (int p = first[size_t(f)]; p < first[size_t(f) + 1]; ++p) patches.push_back(p);
   }
   std::sort(patches.begin(), patches.end());
