@@ -14,7 +14,6 @@
 namespace gps {
 
 void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
-  const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   ++revision_;
   const PatchPlans& plans = tables().plans;
@@ -26,8 +25,11 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
     const CornerItems items = CornerLimitPass::slot_items(plans, corners);
     buffers_.upload_corner_list(items.items);
     buffers_.bind();
-    compute_.run_listed(tables().stencils, int(changed->size()), int(rows.size()), group_limit_);
-    corners_.run(plans, items, group_limit_);
+    {
+      const GpuPassScope pass(timer_, "9D + stencils", GpuPassTimer::Work::dispatches);
+      compute_.run_listed(tables().stencils, int(changed->size()), int(rows.size()), group_limit_);
+      corners_.run(plans, items, group_limit_);
+    }
     last_corner_slots_ = int(corners.size());
     cache_.points_changed(points_generation_, &patches);
     return;
@@ -36,8 +38,11 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
   buffers_.upload_corner_list(all_corner_items_.items);
   buffers_.clear_corner_pass(plans);
   buffers_.bind();
-  compute_.run_all(tables().stencils, group_limit_);
-  corners_.run(plans, all_corner_items_, group_limit_);
+  {
+    const GpuPassScope pass(timer_, "9D + stencils", GpuPassTimer::Work::dispatches);
+    compute_.run_all(tables().stencils, group_limit_);
+    corners_.run(plans, all_corner_items_, group_limit_);
+  }
   last_corner_slots_ = plans.corners() * plans.n_patches();
   if (edit)
     cache_.all_points_changed(points_generation_);
@@ -48,7 +53,6 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
 void SurfaceRenderer::run_compute_kept(const CovarianceMesh& mesh, const SurfaceTables& before,
                                        const std::vector<int>& changed, const PlanChange& change,
                                        const std::vector<int>& origin, bool points_carried) {
-  const GpuPassScope pass(timer_, "9D + stencils");
   ++points_generation_;
   const PatchPlans& plans = tables().plans;
   const std::vector<int> patches = stale_corner_patches(
@@ -62,13 +66,16 @@ void SurfaceRenderer::run_compute_kept(const CovarianceMesh& mesh, const Surface
   const bool listed_rows = points_carried && !update_everything(rows.size(), size_t(stencils.n_rows()));
   if (points_carried) buffers_.upload_edit(changed, listed_rows ? rows : std::vector<int>{});
   buffers_.bind();
-  if (listed_rows)
-    compute_.run_listed(stencils, int(changed.size()), int(rows.size()), group_limit_);
-  else if (points_carried)
-    compute_.run_listed_vertices(stencils, int(changed.size()), group_limit_);
-  else
-    compute_.run_all(stencils, group_limit_);
-  corners_.run(plans, items, group_limit_);
+  {
+    const GpuPassScope pass(timer_, "9D + stencils", GpuPassTimer::Work::dispatches);
+    if (listed_rows)
+      compute_.run_listed(stencils, int(changed.size()), int(rows.size()), group_limit_);
+    else if (points_carried)
+      compute_.run_listed_vertices(stencils, int(changed.size()), group_limit_);
+    else
+      compute_.run_all(stencils, group_limit_);
+    corners_.run(plans, items, group_limit_);
+  }
   last_corner_slots_ = int(corners.size());
   // The cache keeps the triangles of the patches kept with all they read, and their recorded levels.
   if (!cache_.has_stored_triangles()) return cache_.points_changed(points_generation_, nullptr);
