@@ -6,12 +6,14 @@
 // own patch too, whose normal there the patch's vertices at the corner take (limit_point.glsl).
 // It also keeps the limit point halfway along each patch edge that names its edge's limit curve
 // (canonical_edge.glsl, curve_edge), which the adaptive levels measure (tess_levels.glsl).
-// Follows canonical_edge.glsl; preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches.
+// Follows canonical_edge.glsl; preceded by `#define GPS_TRIANGLE_PATCHES` for Loop's triangle patches, and
+// by `#define GPS_LEAVES_ONLY` in the program for the items of plans without an extraordinary node.
 #include "shaders/compute_pass.glsl"
 layout(std430, binding = kBindingCornerLimits) writeonly buffer CornerLimits { vec4 corner_limits[]; };
 // Per corner slot: the limit point halfway along the edge that starts there, where that edge names its curve.
 layout(std430, binding = kBindingCurveMidpoints) writeonly buffer CurveMidpoints { vec4 curve_midpoints[]; };
 layout(std430, binding = kBindingCornerList) readonly buffer CornerList { int corner_items[]; };  // gpu_layout.h: kCornerItemOps
+uniform int u_from;  // the list's first item of this program's (with GPS_LEAVES_ONLY, the leaves' are first)
 
 #ifdef GPS_TRIANGLE_PATCHES
 const int kCorners = 3;
@@ -39,7 +41,7 @@ const float kFoldStep = 1.0 / 256.0;
 void main() {
   int i = compute_invocation();
   if (i < 0) return;
-  int item = corner_items[i];
+  int item = corner_items[u_from + i];
   int slot = item / kCornerItemOps, op = item - kCornerItemOps * slot;  // kCorners · patch + corner
   int patch_id = slot / kCorners, corner = slot - kCorners * patch_id;
   bool midpoint = op == kCornerItemMidpoint;

@@ -119,18 +119,22 @@ void evaluate_extraordinary_node(int node, bool quad, float u, float v, out poin
 }
 
 // Position and tangents (Eq. 3.12) of the limit surface at (u, v) of a patch; `leaf_kind` is the
-// kind of the node that was evaluated (1 regular, 2 terminal, 3 extraordinary).
+// kind of the node that was evaluated (1 regular, 2 terminal, 3 extraordinary). With GPS_LEAVES_ONLY,
+// for plans that hold no extraordinary node: a software driver runs every branch of a batch whose
+// lanes disagree, and the exact node's branch is a good part of an evaluation's cost.
 void evaluate_plan(int patch_id, vec2 uv, out vec3 mu, out vec3 mu_u, out vec3 mu_v, out int leaf_kind) {
   float scale;
   int kind, depth;
   int node = descend_plan(roots[patch_id], false, uv.x, uv.y, scale, kind, depth);
   leaf_kind = kind;
   point_vec4 qa, qb, qc, ua, ub, uc, va, vb, vc;
+#ifndef GPS_LEAVES_ONLY
   if (kind == kNodeExtraordinary) {
     evaluate_extraordinary_node(node, true, uv.x, uv.y, qa, qb, qc, ua, ub, uc, va, vb, vc);
     dual_to_surface_in_double(qa, qb, qc, ua, ub, uc, va, vb, vc, scale, mu, mu_u, mu_v);
     return;
   }
+#endif
   float w[16], wdu[16], wdv[16];
   int boundary = node_boundary(nodes[node]);
   quad_leaf_basis(kind, boundary, uv.x, uv.y, w, wdu, wdv);

@@ -137,4 +137,14 @@ inline bool half_size_patch(const PatchPlans& plans, int patch) {
   return plans.shape == PatchShape::quad && half_size_part(plans.patch_edges[size_t(kPatchEdgeStride * patch + 2)]);
 }
 
+/// Whether the plan below `node` holds an extraordinary node (its evaluation may take the exact
+/// branch; every other evaluates a regular or terminal leaf).
+inline bool holds_extraordinary_node(const PatchPlans& plans, int32_t node) {
+  const int kind = node_kind(plans.nodes[size_t(node)]);
+  if (kind != kNodeInternal) return kind == kNodeExtraordinary;
+  for (size_t child = 1; child <= 4; ++child)
+    if (holds_extraordinary_node(plans, plans.nodes[size_t(node) + child])) return true;
+  return false;
+}
+
 }  // namespace gps

@@ -29,11 +29,12 @@ const ShaderProgram& ShapePrograms::operator()(PatchShape shape) const {
 
 bool ShapePrograms::built(PatchShape shape) const { return slot(shape, precision_).id() != 0; }
 
-ShapePrograms::Build plan_compute_programs(std::string name, bool loop_evaluation, std::vector<const char*> sources) {
-  return [name = std::move(name), loop_evaluation, sources = std::move(sources)](PatchShape shape,
-                                                                                 PointPrecision precision) {
+ShapePrograms::Build plan_compute_programs(std::string name, bool loop_evaluation, std::vector<const char*> sources,
+                                           const char* defines) {
+  return [name = std::move(name), loop_evaluation, sources = std::move(sources), defines](PatchShape shape,
+                                                                                          PointPrecision precision) {
     const bool triangles = shape == PatchShape::triangle;
-    std::vector<const char*> all = {shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
+    std::vector<const char*> all = {defines, shaders::gpu_layout, shaders::patch_basis, shaders::plan_eval};
     if (triangles) all.insert(all.begin(), "#define GPS_TRIANGLE_PATCHES\n");
     if (triangles && loop_evaluation) all.push_back(shaders::loop_eval);
     all.push_back(shaders::canonical_edge);

@@ -39,7 +39,9 @@ private:
 
 /// The Build of a compute pass over the plans' evaluation: `gpu_layout`, `patch_basis`, `plan_eval` and
 /// `canonical_edge`, then the pass's own `sources`; for triangles with their define, Loop's evaluation
-/// too where `loop_evaluation`, and named `name` + "_triangles".
-ShapePrograms::Build plan_compute_programs(std::string name, bool loop_evaluation, std::vector<const char*> sources);
+/// too where `loop_evaluation`, and named `name` + "_triangles". `defines` (lines of `#define`) come
+/// first.
+ShapePrograms::Build plan_compute_programs(std::string name, bool loop_evaluation, std::vector<const char*> sources,
+                                           const char* defines = "");
 
 }  // namespace gps

@@ -7,8 +7,10 @@
 // (PlanBuffers::upload_corner_list), one evaluation or zeroed value each, which its builder here
 // finds on the CPU: a slot's two values are then evaluated by two invocations, where one invocation
 // looping over both made each SIMD batch run both. The evaluations come first; the zeroes after them
-// are written by a program of their own (shaders/corner_clear_comp.glsl). Dispatches split to the
-// device's work-group count limit.
+// are written by a program of their own (shaders/corner_clear_comp.glsl). The evaluations of patches
+// whose plans hold no extraordinary node come first, for a program built without the exact node's
+// branch, which a software driver otherwise runs in every batch. Dispatches split to the device's
+// work-group count limit.
 #include <vector>
 
 #include "core/plans/patch_plans.h"
@@ -17,9 +19,11 @@
 
 namespace gps {
 
-/// The corner pass's items (gpu_layout.h, kCornerItemOps): its evaluations, then its zeroes.
+/// The corner pass's items (gpu_layout.h, kCornerItemOps): its evaluations, those on plans without an
+/// extraordinary node first, then its zeroes.
 struct CornerItems {
   std::vector<int> items;
+  int leaf_evaluations = 0;  // the first items: evaluations on plans without an extraordinary node
   int evaluations = 0;
   size_t size() const { return items.size(); }
 };
@@ -44,6 +48,7 @@ public:
 
 private:
   ShapePrograms programs_;
+  ShapePrograms leaf_programs_;  // for the leaf evaluations: built without the extraordinary branch
   ShaderProgram clear_;  // the zeroes: the same for every shape and precision
 };
 

@@ -13,6 +13,8 @@
 #include "core/modelling/edge_operations.h"
 #include "core/modelling/samples.h"
 #include "core/plans/patch_adjacency.h"
+#include "render/gl/gpu_layout.h"
+#include "render/pipeline/corner_limit_pass.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
 #include "tests/support/patch_edge_point.h"
@@ -96,6 +98,26 @@ TEST_F(CornerPass, HoldsEachCornerAndCurveMidpointAtTheSlotThatNamesIt) {
   creased.sharpness.set_crease(creased.edge(0)[0], creased.edge(0)[1], kInfiniteSharpness);
   creased.sharpness.set_crease(creased.edge(1)[0], creased.edge(1)[1], kInfiniteSharpness);
   expect_corner_pass("creased cube", creased, Scheme::catmull_clark);
+}
+
+// The evaluations on plans without an extraordinary node run in a program built without that branch
+// (CornerLimitPass::all_items): the pawn's and the icosphere's patches are of both kinds, so the test
+// above compared the results of both programs.
+TEST_F(CornerPass, PlansWithAndWithoutAnExtraordinaryNodeAreEvaluatedApart) {
+  for (const auto& [name, scheme] : {std::pair{"pawn", Scheme::catmull_clark}, std::pair{"icosphere", Scheme::loop}}) {
+    PlanOptions options;
+    options.scheme = scheme;
+    const test::PlannedMesh planned(make_sample(name), options);
+    const PatchPlans& plans = planned.tables.plans;
+    const CornerItems items = CornerLimitPass::all_items(plans);
+    EXPECT_GT(items.leaf_evaluations, 0) << name;
+    EXPECT_LT(items.leaf_evaluations, items.evaluations) << name;
+    for (int i = 0; i < items.evaluations; ++i) {
+      const int patch = items.items[size_t(i)] / gpu::kCornerItemOps / plans.corners();
+      EXPECT_EQ(holds_extraordinary_node(plans, plans.patch_roots[size_t(patch)]), i >= items.leaf_evaluations)
+          << name << " item " << i;
+    }
+  }
 }
 
 // A boundary edge split in two: its new vertex is a corner of one face between two edges in one line,
