@@ -12,13 +12,34 @@ namespace gps {
 
 StoredVertexEvaluation::StoredVertexEvaluation()
     : programs_(plan_compute_programs("stored_vertex_evaluation", true, {shaders::stored_vertex_evaluation_comp})),
+      leaf_programs_(plan_compute_programs("stored_vertex_evaluation_leaves", true,
+                                           {shaders::stored_vertex_evaluation_comp}, "#define GPS_LEAVES_ONLY\n")),
       groups_program_("evaluation_groups",
                       {{GL_COMPUTE_SHADER, {shaders::gpu_layout, shaders::evaluation_groups_comp}}}) {}
 
-void StoredVertexEvaluation::set_precision(PointPrecision precision) { programs_.set_precision(precision); }
+void StoredVertexEvaluation::set_precision(PointPrecision precision) {
+  programs_.set_precision(precision);
+  leaf_programs_.set_precision(precision);
+}
 
-void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blocks, unsigned welded_counts,
+void StoredVertexEvaluation::run(const PatchPlans& plans, const std::vector<Block>& blocks, unsigned welded_counts,
                                  int group_limit) {
+  std::vector<Block> leaves, exact;
+  for (const Block& b : blocks) {
+    bool holds = false;
+    for (int p = b.first_patch; p < b.first_patch + b.patches && !holds; ++p)
+      holds = holds_extraordinary_node(plans, plans.patch_roots[size_t(p)]);
+    (holds ? exact : leaves).push_back(b);
+  }
+  run_with(leaf_programs_, plans.shape, leaves, welded_counts, group_limit);
+  run_with(programs_, plans.shape, exact, welded_counts, group_limit);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+  check_gl_errors("evaluating the stored vertices");
+}
+
+void StoredVertexEvaluation::run_with(const ShapePrograms& programs, PatchShape shape, const std::vector<Block>& blocks,
+                                      unsigned welded_counts, int group_limit) {
+  if (blocks.empty()) return;
   GLint max_groups = 0;
   glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups);
   if (group_limit > 0) max_groups = std::min(max_groups, group_limit);
@@ -33,14 +54,14 @@ void StoredVertexEvaluation::run(PatchShape shape, const std::vector<Block>& blo
       groups += most;
       ++end;
     }
-    dispatch(shape, std::vector<Block>(blocks.begin() + long(begin), blocks.begin() + long(end)), welded_counts);
+    dispatch(programs(shape), std::vector<Block>(blocks.begin() + long(begin), blocks.begin() + long(end)),
+             welded_counts);
     begin = end;
   }
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
-  check_gl_errors("evaluating the stored vertices");
 }
 
-void StoredVertexEvaluation::dispatch(PatchShape shape, const std::vector<Block>& blocks, unsigned welded_counts) {
+void StoredVertexEvaluation::dispatch(const ShaderProgram& program, const std::vector<Block>& blocks,
+                                      unsigned welded_counts) {
   std::vector<GLint> listed;
   listed.reserve(3 * blocks.size());
   for (const Block& b : blocks) listed.insert(listed.end(), {GLint(b.block), GLint(b.first), GLint(b.bound)});
@@ -53,7 +74,6 @@ void StoredVertexEvaluation::dispatch(PatchShape shape, const std::vector<Block>
   groups_program_.set("u_blocks", int(blocks.size()));
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  const ShaderProgram& program = programs_(shape);
   program.use();
   program.set("u_blocks", int(blocks.size()));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, groups_);

@@ -92,7 +92,7 @@ void SurfaceCache::evaluate_again(const std::vector<int>& blocks, bool third, co
   std::vector<StoredVertexEvaluation::Block> listed;
   for (const int b : blocks) {
     const long long first = 3 * blocks_.first_triangle(b), slots = 3 * blocks_.triangles(b);
-    listed.push_back({b, first, third ? slots / 3 : slots});
+    listed.push_back({b, first, third ? slots / 3 : slots, blocks_.first_patch(b), blocks_.patches_in(b)});
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedVertices, welded_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::kBindingWeldedParameters, parameters_);

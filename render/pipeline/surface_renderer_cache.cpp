@@ -46,7 +46,7 @@ bool SurfaceRenderer::prepare_cache(const Camera& camera, const DrawOptions& o, 
     patches_.draw(shape(), capture, o, n_patches(), first, count);
   };
   const auto evaluate_welded = [&](const std::vector<StoredVertexEvaluation::Block>& blocks, unsigned welded_counts) {
-    stored_evaluation_.run(shape(), blocks, welded_counts, group_limit_);
+    stored_evaluation_.run(tables().plans, blocks, welded_counts, group_limit_);
   };
   const auto levels_changed = [&](const std::vector<StoredPatchLevels::Block>& blocks) {
     const ShaderProgram& check = stored_levels_.program(shape());
