@@ -19,7 +19,7 @@ StoredVertexEvaluation::StoredVertexEvaluation()
 
 void StoredVertexEvaluation::set_precision(PointPrecision precision) {
   programs_.set_precision(precision);
-  leaf_programs_.set_precision(precision);
+  leaf_programs_.set_precision(precision, false);  // the same program less a branch: checked above
 }
 
 void StoredVertexEvaluation::run(const PatchPlans& plans, const std::vector<Block>& blocks, unsigned welded_counts,

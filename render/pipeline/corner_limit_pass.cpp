@@ -21,7 +21,7 @@ CornerLimitPass::CornerLimitPass()
 
 void CornerLimitPass::set_precision(PointPrecision precision) {
   programs_.set_precision(precision);
-  leaf_programs_.set_precision(precision);
+  leaf_programs_.set_precision(precision, false);  // the same program less a branch: checked above
 }
 
 std::vector<int> CornerLimitPass::edit_slots(const PatchPlans& plans, const std::vector<int>& patches) {
