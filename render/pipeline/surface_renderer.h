@@ -157,7 +157,7 @@ private:
   /// framed Gaussians and point precision are already those of the edited mesh (update_vertices).
   void follow_edit(const std::vector<int>& changed);
   /// The compute passes for `changed` base vertices, or all (nullptr; an `edit` of most of them
-  /// where set, which the surface cache follows as such, and whose corner pass clears nothing).
+  /// where set, which the surface cache follows as such).
   void run_compute(const std::vector<int>* changed, bool edit = false);
   /// The compute passes after a change of topology to `mesh` that kept `change.kept` patches of `before`
   /// (the previous tables), where the `changed` vertices' Gaussians are new or changed (changed_gaussians;

@@ -36,9 +36,7 @@ void SurfaceRenderer::run_compute(const std::vector<int>* changed, bool edit) {
   }
   if (all_corner_items_.items.empty()) all_corner_items_ = CornerLimitPass::all_items(plans);
   buffers_.upload_corner_list(all_corner_items_.items);
-  // An edit keeps the topology and the output's storage (a new precision's upload_tables included),
-  // and so the slots that no item evaluates, zero since the pass before.
-  if (!edit) buffers_.clear_corner_pass(plans);
+  buffers_.clear_corner_pass(plans);
   buffers_.bind();
   {
     const GpuPassScope pass(timer_, "9D + stencils", GpuPassTimer::Work::dispatches);
