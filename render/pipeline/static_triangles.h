@@ -18,6 +18,8 @@ public:
   /// The program to draw with (set its frame uniforms, then draw()).
   const ShaderProgram& program(bool wireframe) const { return wireframe ? wire_ : shaded_; }
   void draw() const;
+  /// Whether set() gave it triangles.
+  bool drawn() const { return count_ > 0; }
 
 private:
   ShaderProgram shaded_, wire_;

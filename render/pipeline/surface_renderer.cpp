@@ -9,6 +9,7 @@
 #include "render/pipeline/kept_corner_output.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/image_texture.h"
+#include "render/gl/moved_frame.h"
 #include "render/image/matcap.h"
 #include "shaders/embedded_shaders.h"
 
@@ -33,6 +34,12 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
 
 void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const SurfaceTables> surface_tables,
                                const NormalisedFrame& frame, const PlanChange& change, const std::vector<int>& origin) {
+  // The same plans, and every vertex moved by one scale and translation: the frame moves with them.
+  if (change.from != 0 && change.from == tables_id_ && surface_tables->plans.shape == shape() &&
+      same_plans(*tables_, *surface_tables, change.kept, origin) && follow_move(mesh)) {
+    tables_id_ = change.to;
+    return;
+  }
   // Refused before anything changes: the renderer keeps drawing the previous mesh.
   // In the same frame, what the unchanged Gaussians gave is carried to where they went.
   const bool carry =
@@ -136,11 +143,26 @@ void SurfaceRenderer::use_point_precision(PointPrecision precision) {
 }
 
 void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
+  if (changed.size() == framed_.n_vertices() && follow_move(mesh)) return;
   // The frame stays that of set_mesh, so that the vertices not uploaded again still fit.
   frame_.to_frame(mesh, changed, framed_);
   ++revision_;
   point_precision_.update(framed_, changed);
   follow_edit(changed);
+}
+
+bool SurfaceRenderer::follow_move(const CovarianceMesh& mesh) {
+  // The static triangles lie in the frame too, but are not the mesh's: they would move with it.
+  if (static_triangles_.drawn()) return false;
+  FramedGaussians moved;
+  const std::optional<NormalisedFrame> to = moved_frame(frame_, framed_, mesh, moved);
+  if (!to) return false;
+  framed_ = std::move(moved);  // within rounding of those uploaded, and what later edits are framed against
+  frame_ = *to;
+  patches_.set_frame(frame_);
+  cache_.set_frame(frame_);
+  ++revision_;
+  return true;
 }
 
 void SurfaceRenderer::follow_edit(const std::vector<int>& changed) {

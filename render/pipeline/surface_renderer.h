@@ -57,6 +57,9 @@ public:
   /// frame and precision, the corner pass evaluates again only the patches whose plans, neighbours or
   /// points changed, and copies the others' output; otherwise everything. In the same frame and
   /// precision, the base Gaussians that did not change are copied on the GPU, not uploaded again.
+  /// Where the plans stay and every Gaussian moved by one translation and positive scale
+  /// (render/gl/moved_frame.h), the frame moves with them instead, whatever `frame` says, and
+  /// nothing is evaluated again: the surface drawn is the evaluated one moved, to within rounding.
   void set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame,
                 const PlanChange& change, const std::vector<int>& origin) {
     set_mesh(mesh, std::make_shared<const SurfaceTables>(std::move(surface_tables)), frame, change, origin);
@@ -83,7 +86,8 @@ public:
   /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them
   /// (past core's update_everything share of the vertices: whole buffers and the full passes); the
   /// surface cache learns which patches changed (core/plans/patch_readers.h) and re-captures only those.
-  /// An edit that changes the precision the Gaussians need uploads and computes everything again.
+  /// An edit that changes the precision the Gaussians need uploads and computes everything again. An
+  /// edit of every vertex by one translation and positive scale moves the frame instead, as set_mesh.
   void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);
   /// The compute passes over every vertex and stencil row (as after set_mesh), for benchmarks.
   void recompute_all() { run_compute(nullptr); }
@@ -156,6 +160,9 @@ private:
   /// The buffers, overlays, passes and surface cache after an edit of the `changed` vertices, whose
   /// framed Gaussians and point precision are already those of the edited mesh (update_vertices).
   void follow_edit(const std::vector<int>& changed);
+  /// Where `mesh` is the one shown moved whole (render/gl/moved_frame.h): the frame moved with it,
+  /// the Gaussians held framed anew, and true; else false, and nothing changed.
+  bool follow_move(const CovarianceMesh& mesh);
   /// The compute passes for `changed` base vertices, or all (nullptr; an `edit` of most of them
   /// where set, which the surface cache follows as such).
   void run_compute(const std::vector<int>* changed, bool edit = false);
