@@ -80,9 +80,13 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
        [&](const CovarianceMesh& m) {
          return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), 1.01 * Mat3::Identity()));
        }},
-      {"rotate all", [&](const CovarianceMesh& m) {
+      {"rotate all",
+       [&](const CovarianceMesh& m) {
          const Mat3 turn = Eigen::AngleAxisd(0.1, Vec3::UnitZ()).toRotationMatrix();
          return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), turn));
+       }},
+      {"stretch all", [&](const CovarianceMesh& m) {
+         return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), Vec3(1.01, 1.0, 1.0).asDiagonal()));
        }}};
   // The plans and the renderer follow each operation incrementally (core/plans/surface_replanner.h), in
   // the frame the editor keeps (NormalisedFrame::following), and go back the same way, as an undo,

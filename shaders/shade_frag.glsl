@@ -9,9 +9,10 @@ uniform mat4 u_view;
 uniform sampler2D u_matcap;
 uniform vec4 u_wire_color;  // alpha 0: no tessellation wireframe
 uniform int u_flag_back_faces;  // crack checks: back faces in pure magenta
-// The drawn points' frame (render/gl/normalised_frame.h): world = centre + unit · point.
+// The drawn points' frame (render/gl/normalised_frame.h): world = centre + unit · rotation · point.
 uniform vec3 u_frame_centre;
 uniform float u_frame_unit;
+uniform mat3 u_frame_rotation;
 
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out vec4 out_position;
@@ -20,6 +21,7 @@ layout(location = 2) out vec4 out_normal;
 void main() {
   vec3 n = normalize(v_normal);
   if (u_mode == 2) n = normalize(cross(dFdx(v_position), dFdy(v_position)));
+  n = u_frame_rotation * n;  // in the world
   vec3 shading_normal = gl_FrontFacing ? n : -n;
   vec3 view_normal = normalize(mat3(u_view) * shading_normal);
   vec3 color;
@@ -36,6 +38,6 @@ void main() {
   }
   out_color = vec4(mix(color, u_wire_color.rgb, wire), 1.0);
   if (u_flag_back_faces != 0 && !gl_FrontFacing) out_color = vec4(1.0, 0.0, 1.0, 1.0);
-  out_position = vec4(u_frame_centre + u_frame_unit * v_position, 1.0);
+  out_position = vec4(u_frame_centre + u_frame_unit * (u_frame_rotation * v_position), 1.0);
   out_normal = vec4(n, 1.0 + float(v_kind));  // w: 1 static mesh, 2 regular node, 3 terminal node
 }

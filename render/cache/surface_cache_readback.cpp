@@ -56,7 +56,8 @@ TriangleMesh SurfaceCache::stored_triangles() {
       const glm::dvec3 world = frame_.to_world(glm::dvec3(f[0], f[1], f[2]));
       mesh.positions.emplace_back(world.x, world.y, world.z);
       // The stored normal is the normal times 2^kind (shaders/cache_vert.glsl).
-      const Vec3 stored(f[3], f[4], f[5]);
+      const glm::dvec3 turned = frame_.direction_to_world(glm::dvec3(f[3], f[4], f[5]));
+      const Vec3 stored(turned.x, turned.y, turned.z);
       mesh.normals.push_back(stored * std::exp2(-std::round(std::log2(stored.norm()))));
     }
     mesh.triangles[v / 3][v % 3] = it->second;

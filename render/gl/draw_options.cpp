@@ -53,6 +53,7 @@ void set_frame_uniforms(const ShaderProgram& p, const Camera& camera, const Draw
   set_level_uniforms(p, frame_view_projection(camera, aspect, frame), glm::vec2(float(width), float(height)), o);
   p.set("u_frame_centre", glm::vec3(frame.centre));
   p.set("u_frame_unit", float(frame.unit));
+  p.set("u_frame_rotation", glm::mat3(frame.rotation));
   p.set("u_view", glm::mat4(camera.view_double()));
   p.set("u_flag_back_faces", o.diagnostics.back_faces_magenta ? 1 : 0);
   p.set("u_mode", int(o.mode));

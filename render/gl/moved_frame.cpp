@@ -1,6 +1,8 @@
 #include "render/gl/moved_frame.h"
 
 #include <algorithm>
+#include <Eigen/Geometry>
+#include <Eigen/SVD>
 #include <cmath>
 
 #include "core/mesh/mesh_connectivity.h"
@@ -10,7 +12,7 @@ namespace {
 
 // Within rounding: a mean to this many frame units (the frame's box has a unit diagonal), a
 // covariance entry to this share of the Gaussian's largest variance. Double arithmetic's own error
-// of a scale and a translation lies far below both, and no edit a designer makes lies within them.
+// of a rotation, scale and translation lies far below both, and no edit a designer makes lies within them.
 constexpr double kMeanTolerance = 1e-12;
 constexpr double kCovarianceTolerance = 1e-13;
 // The means the map is fitted to and first checked on, spread over the vertex numbers.
@@ -22,6 +24,56 @@ bool same_within_rounding(const Vec3& mean, const Mat3& covariance, const Vec3& 
          (covariance - held).cwiseAbs().maxCoeff() <= kCovarianceTolerance * largest;
 }
 
+// The frame `frame` moved by the map b = s·Q·a + d of its own coordinates: world points
+// centre + unit·rotation·(s·Q·a + d).
+NormalisedFrame moved_by(const NormalisedFrame& frame, double s, const Mat3& q, const Vec3& d) {
+  NormalisedFrame to;
+  to.centre = frame.to_world(glm::dvec3(d.x(), d.y(), d.z()));
+  to.unit = frame.unit * s;
+  glm::dmat3 turn;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) turn[c][r] = q(r, c);
+  if (q == Mat3::Identity()) {
+    to.rotation = frame.rotation;
+    return to;
+  }
+  // Composed turns kept orthonormal (the nearest rotation, from the SVD).
+  const glm::dmat3 composed = frame.rotation * turn;
+  Mat3 r;
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) r(k, c) = composed[c][k];
+  const Eigen::JacobiSVD<Mat3> svd(r, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  r = svd.matrixU() * svd.matrixV().transpose();
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) to.rotation[c][k] = r(k, c);
+  return to;
+}
+
+// The frame moved by the scale and translation, or failing that the scale, rotation and
+// translation, that fit the sampled means best (least squares; Umeyama 1991 for the rotation).
+std::vector<NormalisedFrame> candidate_frames(const NormalisedFrame& frame, const FramedGaussians& framed,
+                                              const CovarianceMesh& mesh, const std::vector<size_t>& sample) {
+  // In the frame, the held means a and the new means b.
+  Eigen::Matrix3Xd a(3, sample.size()), b(3, sample.size());
+  for (size_t k = 0; k < sample.size(); ++k) {
+    a.col(Eigen::Index(k)) = framed.means[sample[k]];
+    b.col(Eigen::Index(k)) = frame.mean_in_frame(mesh.mean(sample[k]));
+  }
+  const Vec3 mean_a = a.rowwise().mean(), mean_b = b.rowwise().mean();
+  const Eigen::Matrix3Xd da = a.colwise() - mean_a, db = b.colwise() - mean_b;
+  const double spread = da.squaredNorm();
+  std::vector<NormalisedFrame> frames;
+  if (!(spread > 0.0)) return frames;
+  const double s = (da.cwiseProduct(db)).sum() / spread;
+  if (s > 0.0 && std::isfinite(s)) frames.push_back(moved_by(frame, s, Mat3::Identity(), mean_b - s * mean_a));
+  const Eigen::Matrix4d fitted = Eigen::umeyama(a, b, true);
+  const Mat3 scaled = fitted.topLeftCorner<3, 3>();
+  const double turned_scale = std::cbrt(scaled.determinant());
+  if (turned_scale > 0.0 && std::isfinite(turned_scale))
+    frames.push_back(moved_by(frame, turned_scale, scaled / turned_scale, fitted.topRightCorner<3, 1>()));
+  return frames;
+}
+
 }  // namespace
 
 std::optional<NormalisedFrame> moved_frame(const NormalisedFrame& frame, const FramedGaussians& framed,
@@ -31,27 +83,20 @@ std::optional<NormalisedFrame> moved_frame(const NormalisedFrame& frame, const F
   std::vector<size_t> sample;
   const size_t sampled = std::min(n, kSampled);
   for (size_t k = 0; k < sampled; ++k) sample.push_back(k * (n - 1) / (sampled - 1));
-  // In the frame, the held means a and the new means b; b = s·a + d fitted by least squares.
-  Vec3 mean_a = Vec3::Zero(), mean_b = Vec3::Zero();
-  for (const size_t v : sample) mean_a += framed.means[v], mean_b += frame.mean_in_frame(mesh.mean(v));
-  mean_a /= double(sampled), mean_b /= double(sampled);
-  double along = 0.0, spread = 0.0;
-  for (const size_t v : sample) {
-    const Vec3 a = framed.means[v] - mean_a;
-    along += a.dot(frame.mean_in_frame(mesh.mean(v)) - mean_b);
-    spread += a.squaredNorm();
-  }
-  const double s = along / spread;
-  if (!(spread > 0.0) || !(s > 0.0) || !std::isfinite(s)) return std::nullopt;
-  const Vec3 d = mean_b - s * mean_a;
-  NormalisedFrame to;
-  to.centre = frame.to_world(glm::dvec3(d.x(), d.y(), d.z()));
-  to.unit = frame.unit * s;
-  if (to == frame || !std::isfinite(to.unit) || !(to.unit > 0.0)) return std::nullopt;
-  for (const size_t v : sample)
-    if (!same_within_rounding(to.mean_in_frame(mesh.mean(v)), to.covariance_in_frame(mesh.covariance(v)),
-                              framed.means[v], framed.covariances[v]))
-      return std::nullopt;
+  const auto fits_sample = [&](const NormalisedFrame& to) {
+    if (to == frame || !std::isfinite(to.unit) || !(to.unit > 0.0)) return false;
+    for (const size_t v : sample)
+      if (!same_within_rounding(to.mean_in_frame(mesh.mean(v)), to.covariance_in_frame(mesh.covariance(v)),
+                                framed.means[v], framed.covariances[v]))
+        return false;
+    return true;
+  };
+  const std::vector<NormalisedFrame> candidates = candidate_frames(frame, framed, mesh, sample);
+  // The sampled means did not move: not a move (the rotation's fit would find one within rounding).
+  if (!candidates.empty() && candidates.front() == frame) return std::nullopt;
+  const auto fitting = std::find_if(candidates.begin(), candidates.end(), fits_sample);
+  if (fitting == candidates.end()) return std::nullopt;
+  const NormalisedFrame to = *fitting;
   moved.means.resize(n);
   moved.covariances.resize(n);
   // Framed and checked on all cores.

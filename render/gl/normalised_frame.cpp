@@ -20,18 +20,41 @@ NormalisedFrame NormalisedFrame::of(const CovarianceMesh& mesh) {
 
 NormalisedFrame NormalisedFrame::following(const CovarianceMesh& mesh) const {
   const NormalisedFrame own = of(mesh);
+  if (turned() && mesh.n_vertices() > 0) {  // the mesh's box along this frame's axes, in its units
+    Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+    for (size_t v = 0; v < mesh.n_vertices(); ++v) {
+      const Vec3 m = mean_in_frame(mesh.mean(v));
+      lo = lo.cwiseMin(m), hi = hi.cwiseMax(m);
+    }
+    const double across = (hi - lo).norm();
+    const bool near = (0.5 * (lo + hi)).norm() <= 0.1 && across <= 1.25 && 1.0 <= 1.25 * across;
+    return near ? *this : own;
+  }
   const bool near =
       glm::distance(own.centre, centre) <= 0.1 * unit && own.unit <= 1.25 * unit && unit <= 1.25 * own.unit;
   return near ? *this : own;
 }
 
 Vec3 NormalisedFrame::mean_in_frame(const Vec3& mean) const {
-  return (mean - Vec3(centre.x, centre.y, centre.z)) * (1.0 / unit);
+  const Vec3 m = (mean - Vec3(centre.x, centre.y, centre.z)) * (1.0 / unit);
+  if (!turned()) return m;
+  const glm::dvec3 f = glm::transpose(rotation) * glm::dvec3(m.x(), m.y(), m.z());
+  return Vec3(f.x, f.y, f.z);
 }
 
 Mat3 NormalisedFrame::covariance_in_frame(const Mat3& covariance) const {
   const double s = 1.0 / unit;
-  return covariance * (s * s);
+  if (!turned()) return covariance * (s * s);
+  Mat3 r;  // rotation as an Eigen matrix (glm is column-major: rotation[c][r])
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) r(k, c) = rotation[c][k];
+  const Mat3 turned_covariance = r.transpose() * covariance * r;
+  return 0.5 * (turned_covariance + turned_covariance.transpose()) * (s * s);
+}
+
+glm::dvec3 NormalisedFrame::to_frame(const glm::dvec3& world) const {
+  const Vec3 m = mean_in_frame(Vec3(world.x, world.y, world.z));
+  return glm::dvec3(m.x(), m.y(), m.z());
 }
 
 CovarianceMesh NormalisedFrame::to_frame(const CovarianceMesh& mesh) const {
@@ -88,7 +111,7 @@ std::vector<int> changed_gaussians(const FramedGaussians& before, const Covarian
 }
 
 glm::dmat4 NormalisedFrame::world_from_frame() const {
-  glm::dmat4 m(unit);
+  glm::dmat4 m(unit * rotation);
   m[3] = glm::dvec4(centre, 1.0);
   return m;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The frame the GPU evaluates a mesh in: centred on its bounding box and scaled to a unit diagonal,
 // so that float holds the Gaussians at any scale and position. GPS commutes with affine maps, so the
-// surface drawn in the frame is the world surface mapped by x' = (x − centre) / unit.
+// surface drawn in the frame is the world surface mapped by x' = rotationᵀ (x − centre) / unit. The
+// rotation is the identity but where the frame moved with a mesh turned whole (render/gl/moved_frame.h).
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -23,13 +24,15 @@ struct FramedGaussians {
 struct NormalisedFrame {
   glm::dvec3 centre{0.0};
   double unit = 1.0;  // world length of one frame unit: the bounding box's diagonal
+  glm::dmat3 rotation{1.0};  // the frame's axes in the world (columns), orthonormal, determinant 1
 
   bool operator==(const NormalisedFrame&) const = default;
 
   /// The frame of `mesh`'s bounding box (the identity's scale for a mesh of one point).
   static NormalisedFrame of(const CovarianceMesh& mesh);
   /// The frame to show `mesh` in after a change: this one while the mesh's own frame lies near it
-  /// (its centre within a tenth of this unit, its unit within a factor of 1.25), else the mesh's own.
+  /// (its centre within a tenth of this unit, its unit within a factor of 1.25; for a turned frame,
+  /// the mesh's box in this frame's axes), else the mesh's own.
   /// A renderer that keeps its frame keeps its evaluated output where a change did not reach
   /// (SurfaceRenderer::set_mesh with a PlanChange); an extrude past the bounding box would otherwise
   /// change the frame, and everything would be evaluated again.
@@ -43,9 +46,15 @@ struct NormalisedFrame {
   /// One mean or covariance in the frame.
   Vec3 mean_in_frame(const Vec3& mean) const;
   Mat3 covariance_in_frame(const Mat3& covariance) const;
-  /// World from frame as a matrix: x = centre + unit · x'.
+  /// World from frame as a matrix: x = centre + unit · rotation · x'.
   glm::dmat4 world_from_frame() const;
-  glm::dvec3 to_world(const glm::dvec3& p) const { return centre + unit * p; }
+  /// Whether the frame's axes are turned from the world's.
+  bool turned() const { return rotation != glm::dmat3(1.0); }
+  glm::dvec3 to_world(const glm::dvec3& p) const { return centre + unit * (turned() ? rotation * p : p); }
+  /// A direction (a normal) in the frame, in the world.
+  glm::dvec3 direction_to_world(const glm::dvec3& d) const { return turned() ? rotation * d : d; }
+  /// A world point in the frame, as mean_in_frame maps it.
+  glm::dvec3 to_frame(const glm::dvec3& world) const;
 };
 
 /// `mesh`'s Gaussians in `frame` (as gaussians_in_frame gives them) written into `framed`, and in the

@@ -74,6 +74,9 @@ void ShaderProgram::set(const char* name, const glm::vec3& v) const {
 void ShaderProgram::set(const char* name, const glm::vec4& v) const {
   glProgramUniform4fv(program_, glGetUniformLocation(program_, name), 1, glm::value_ptr(v));
 }
+void ShaderProgram::set(const char* name, const glm::mat3& m) const {
+  glProgramUniformMatrix3fv(program_, glGetUniformLocation(program_, name), 1, GL_FALSE, glm::value_ptr(m));
+}
 void ShaderProgram::set(const char* name, const glm::mat4& m) const {
   glProgramUniformMatrix4fv(program_, glGetUniformLocation(program_, name), 1, GL_FALSE, glm::value_ptr(m));
 }

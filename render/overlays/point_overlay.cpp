@@ -43,7 +43,7 @@ PointOverlay::PointOverlay()
 void PointOverlay::upload_positions(const std::vector<Vec3>& points) {
   std::vector<float> framed(3 * points.size());
   for (size_t i = 0; i < points.size(); ++i) {
-    const glm::dvec3 p = (glm::dvec3(points[i].x(), points[i].y(), points[i].z()) - frame_.centre) / frame_.unit;
+    const glm::dvec3 p = frame_.to_frame(glm::dvec3(points[i].x(), points[i].y(), points[i].z()));
     for (int k = 0; k < 3; ++k) framed[3 * i + size_t(k)] = float(p[k]);
   }
   glNamedBufferData(positions_, GLsizeiptr(std::max<size_t>(3, framed.size()) * sizeof(float)), framed.data(),
@@ -78,7 +78,7 @@ void PointOverlay::draw(const RenderTarget& target, const Camera& camera, const 
   if (count_ == 0) return;
   const float aspect = float(target.width()) / float(target.height());
   program_.set("u_view_projection", frame_view_projection(camera, aspect, frame_));
-  program_.set("u_eye", glm::vec3((camera.eye_double() - frame_.centre) / frame_.unit));
+  program_.set("u_eye", glm::vec3(frame_.to_frame(camera.eye_double())));
   program_.set("u_towards_eye", style.towards_eye);
   program_.set("u_point_size", style.point_size);
   program_.set("u_max_distance", float(style.max_distance > 0.0 ? style.max_distance : 1.0));

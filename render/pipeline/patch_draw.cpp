@@ -153,7 +153,8 @@ std::vector<TessellatedVertex> PatchDraw::capture_vertices(PatchShape shape, con
       capture_frame_vertices(shape, camera, o, width, height, n_total, first_patch, n_patches);
   for (TessellatedVertex& t : out) {
     const glm::dvec3 world = frame_.to_world(glm::dvec3(t.position[0], t.position[1], t.position[2]));
-    for (int k = 0; k < 3; ++k) t.position[k] = float(world[k]);
+    const glm::dvec3 normal = frame_.direction_to_world(glm::dvec3(t.normal[0], t.normal[1], t.normal[2]));
+    for (int k = 0; k < 3; ++k) t.position[k] = float(world[k]), t.normal[k] = float(normal[k]);
   }
   return out;
 }

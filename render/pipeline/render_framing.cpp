@@ -50,10 +50,23 @@ void append_finite_positions(const std::vector<TessellatedVertex>& vertices, std
 glm::dvec3 in_frame(const NormalisedFrame& frame, const Vec3& world) {
   return (glm::dvec3(world.x(), world.y(), world.z()) - frame.centre) / frame.unit;
 }
+
+// The renderer's frame with its axes along the world's: what the camera is framed in.
+NormalisedFrame upright(const NormalisedFrame& frame) {
+  NormalisedFrame f = frame;
+  f.rotation = glm::dmat3(1.0);
+  return f;
+}
+
+// Points in the renderer's frame, in its upright frame.
+void make_upright(const NormalisedFrame& frame, std::vector<glm::dvec3>& points) {
+  if (frame.turned())
+    for (glm::dvec3& p : points) p = frame.rotation * p;
+}
 }  // namespace
 
 std::vector<glm::dvec3> framing_points(SurfaceRenderer& renderer, const CovarianceMesh& mesh, const DrawOptions& o) {
-  const NormalisedFrame& frame = renderer.frame();
+  const NormalisedFrame frame = upright(renderer.frame());
   const int n_patches = renderer.tables().plans.n_patches();
   std::vector<glm::dvec3> points;
   if (n_patches > kCornersOnlyPatches) {
@@ -69,6 +82,7 @@ std::vector<glm::dvec3> framing_points(SurfaceRenderer& renderer, const Covarian
       append_finite_positions(renderer.capture_frame_vertices(any, uniform, 64, 64, first, kPatchesPerCapture),
                               points);
   }
+  make_upright(renderer.frame(), points);
   if (o.mesh_lines)
     for (size_t i = 0; i < mesh.n_vertices(); ++i) points.push_back(in_frame(frame, mesh.mean(i)));
   if (o.ellipsoids)
@@ -89,9 +103,9 @@ std::vector<glm::dvec3> framing_points(SurfaceRenderer& renderer, const Covarian
 Camera render_camera(SurfaceRenderer& renderer, const CovarianceMesh& mesh,
                      const std::vector<float>& yaw_pitch_distance, int up_axis, const DrawOptions& o, int width,
                      int height) {
-  // Framed in the renderer's frame, where the mesh's box is centred and of unit diagonal, then
-  // mapped to the world: the same picture wherever the mesh lies and at any scale.
-  const NormalisedFrame& frame = renderer.frame();
+  // Framed in the renderer's frame (upright), where the mesh's box is centred and of unit diagonal,
+  // then mapped to the world: the same picture wherever the mesh lies and at any scale.
+  const NormalisedFrame frame = upright(renderer.frame());
   Vec3 lo, hi;
   bounding_box(mesh, lo, hi);
   // The camera's distance and clipping planes are floats (view/camera.h), as the GPU takes them.
@@ -118,6 +132,7 @@ Camera render_camera(SurfaceRenderer& renderer, const CovarianceMesh& mesh,
     for (int round = 0; round < kViewedFramingRounds; ++round) {
       std::vector<glm::dvec3> seen;
       append_finite_positions(renderer.capture_frame_vertices(camera, viewed, width, height), seen);
+      make_upright(renderer.frame(), seen);
       const NdcRect bounds = projected_bounds(camera, seen, aspect);
       if (glm::all(glm::greaterThanEqual(bounds.lo, glm::dvec2(-kViewedFit))) &&
           glm::all(glm::lessThanEqual(bounds.hi, glm::dvec2(kViewedFit))))

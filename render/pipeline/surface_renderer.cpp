@@ -34,7 +34,7 @@ void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, SurfaceTables surface
 
 void SurfaceRenderer::set_mesh(const CovarianceMesh& mesh, std::shared_ptr<const SurfaceTables> surface_tables,
                                const NormalisedFrame& frame, const PlanChange& change, const std::vector<int>& origin) {
-  // The same plans, and every vertex moved by one scale and translation: the frame moves with them.
+  // The same plans, and every vertex moved by one rotation, scale and translation: the frame moves with them.
   if (change.from != 0 && change.from == tables_id_ && surface_tables->plans.shape == shape() &&
       same_plans(*tables_, *surface_tables, change.kept, origin) && follow_move(mesh)) {
     tables_id_ = change.to;
@@ -122,6 +122,11 @@ void SurfaceRenderer::set_triangles(const TriangleMesh& triangles, const Vec3& o
   // The origin and the frame's centre lie near each other for a mesh far away: their difference first.
   const Vec3 centre = Vec3(frame_.centre.x, frame_.centre.y, frame_.centre.z) - origin;
   for (Vec3& p : framed.positions) p = (p - centre) / frame_.unit;
+  if (frame_.turned())
+    for (Vec3& p : framed.positions) {
+      const glm::dvec3 q = glm::transpose(frame_.rotation) * glm::dvec3(p.x(), p.y(), p.z());
+      p = Vec3(q.x, q.y, q.z);
+    }
   static_triangles_.set(framed);
   ++revision_;
 }

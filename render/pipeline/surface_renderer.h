@@ -57,7 +57,7 @@ public:
   /// frame and precision, the corner pass evaluates again only the patches whose plans, neighbours or
   /// points changed, and copies the others' output; otherwise everything. In the same frame and
   /// precision, the base Gaussians that did not change are copied on the GPU, not uploaded again.
-  /// Where the plans stay and every Gaussian moved by one translation and positive scale
+  /// Where the plans stay and every Gaussian moved by one rotation, positive scale and translation
   /// (render/gl/moved_frame.h), the frame moves with them instead, whatever `frame` says, and
   /// nothing is evaluated again: the surface drawn is the evaluated one moved, to within rounding.
   void set_mesh(const CovarianceMesh& mesh, SurfaceTables surface_tables, const NormalisedFrame& frame,
@@ -87,7 +87,7 @@ public:
   /// (past core's update_everything share of the vertices: whole buffers and the full passes); the
   /// surface cache learns which patches changed (core/plans/patch_readers.h) and re-captures only those.
   /// An edit that changes the precision the Gaussians need uploads and computes everything again. An
-  /// edit of every vertex by one translation and positive scale moves the frame instead, as set_mesh.
+  /// edit of every vertex by one rotation, positive scale and translation moves the frame instead, as set_mesh.
   void update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed);
   /// The compute passes over every vertex and stencil row (as after set_mesh), for benchmarks.
   void recompute_all() { run_compute(nullptr); }

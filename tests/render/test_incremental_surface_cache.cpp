@@ -251,7 +251,7 @@ TEST_P(IncrementalSurfaceCache, SplitBlocksJoinAgainOverManyOperations) {
 }
 
 // An operation that moves every vertex and keeps the faces (a transform of the whole mesh; one that is a
-// translation and uniform scale alone moves the frame instead, test_moved_frame.cpp) changes the
+// rotation, uniform scale and translation alone moves the frame instead, test_moved_frame.cpp) changes the
 // Gaussians alone: the renderer follows it as an edit of every vertex. Welded at capture (a GPU's
 // way), the welded vertices are evaluated again and nothing is captured again.
 TEST_P(IncrementalSurfaceCache, AnOperationOnTheGaussiansAloneIsFollowedAsAnEdit) {

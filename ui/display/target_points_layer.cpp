@@ -38,7 +38,7 @@ TargetPointsLayer::Report TargetPointsLayer::update(const ShownSurface& shown, c
     overlay_->set_points(points_.points(), frame);
   } else if (!points_.loaded()) {
     if (overlay_->count() > 0) overlay_->set_points({}, frame);  // forgotten
-  } else if (overlay_->frame().centre != frame.centre || overlay_->frame().unit != frame.unit) {
+  } else if (overlay_->frame() != frame) {
     overlay_->set_frame(points_.points(), frame);  // the surface's frame moved
   }
   if (taken.distances) overlay_->set_distances(points_.distances());
