@@ -79,12 +79,19 @@ FramedGaussians NormalisedFrame::gaussians_in_frame(const CovarianceMesh& mesh) 
   return framed;
 }
 
-void NormalisedFrame::to_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices,
-                               FramedGaussians& framed) const {
+std::vector<int> NormalisedFrame::to_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices,
+                                           FramedGaussians& framed) const {
+  std::vector<int> changed;
+  changed.reserve(vertices.size());
   for (const int v : vertices) {
-    framed.means[size_t(v)] = mean_in_frame(mesh.mean(size_t(v)));
-    framed.covariances[size_t(v)] = covariance_in_frame(mesh.covariance(size_t(v)));
+    const Vec3 mean = mean_in_frame(mesh.mean(size_t(v)));
+    const Mat3 covariance = covariance_in_frame(mesh.covariance(size_t(v)));
+    if (mean == framed.means[size_t(v)] && covariance == framed.covariances[size_t(v)]) continue;
+    framed.means[size_t(v)] = mean;
+    framed.covariances[size_t(v)] = covariance;
+    changed.push_back(v);
   }
+  return changed;
 }
 
 std::vector<int> changed_gaussians(const FramedGaussians& before, const CovarianceMesh& mesh,

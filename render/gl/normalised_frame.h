@@ -41,8 +41,10 @@ struct NormalisedFrame {
   CovarianceMesh to_frame(const CovarianceMesh& mesh) const;
   /// `mesh`'s Gaussians in the frame, as to_frame gives them.
   FramedGaussians gaussians_in_frame(const CovarianceMesh& mesh) const;
-  /// The same for the `vertices` of `mesh` only, written into `framed` (of the same vertex count).
-  void to_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices, FramedGaussians& framed) const;
+  /// The same for the `vertices` of `mesh` only, written into `framed` (of the same vertex count);
+  /// returns those among them whose Gaussian in the frame is not the one `framed` held (in order).
+  std::vector<int> to_frame(const CovarianceMesh& mesh, const std::vector<int>& vertices,
+                            FramedGaussians& framed) const;
   /// One mean or covariance in the frame.
   Vec3 mean_in_frame(const Vec3& mean) const;
   Mat3 covariance_in_frame(const Mat3& covariance) const;

@@ -149,11 +149,13 @@ void SurfaceRenderer::use_point_precision(PointPrecision precision) {
 
 void SurfaceRenderer::update_vertices(const CovarianceMesh& mesh, const std::vector<int>& changed) {
   if (changed.size() == framed_.n_vertices() && follow_move(mesh)) return;
-  // The frame stays that of set_mesh, so that the vertices not uploaded again still fit.
-  frame_.to_frame(mesh, changed, framed_);
+  // The frame stays that of set_mesh, so that the vertices not uploaded again still fit. Of those
+  // listed, only the ones that changed (a tool lists what it may move: G's first frame moves nothing).
+  const std::vector<int> moved = frame_.to_frame(mesh, changed, framed_);
+  if (moved.empty()) return;
   ++revision_;
-  point_precision_.update(framed_, changed);
-  follow_edit(changed);
+  point_precision_.update(framed_, moved);
+  follow_edit(moved);
 }
 
 bool SurfaceRenderer::follow_move(const CovarianceMesh& mesh) {

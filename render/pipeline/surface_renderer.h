@@ -83,8 +83,8 @@ public:
   }
   /// The same with the default options: the scheme that fits the mesh, exact plans.
   void set_mesh(const CovarianceMesh& mesh) { set_mesh(mesh, PlanOptions{}); }
-  /// An edit: uploads the changed vertices and re-runs the compute passes on what depends on them
-  /// (past core's update_everything share of the vertices: whole buffers and the full passes); the
+  /// An edit: uploads the changed vertices (those listed whose Gaussian changed) and re-runs the compute passes on what
+  /// depends on them (past core's update_everything share of the vertices: whole buffers and the full passes); the
   /// surface cache learns which patches changed (core/plans/patch_readers.h) and re-captures only those.
   /// An edit that changes the precision the Gaussians need uploads and computes everything again. An
   /// edit of every vertex by one rotation, positive scale and translation moves the frame instead, as set_mesh.

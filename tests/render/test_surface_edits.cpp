@@ -5,7 +5,9 @@
 #include <cstring>
 
 #include "core/modelling/samples.h"
+#include "render/gl/render_target.h"
 #include "render/pipeline/surface_renderer.h"
+#include "view/camera.h"
 #include "tests/support/gl_fixture.h"
 
 namespace gps {
@@ -63,6 +65,32 @@ TEST_F(GpuTest, EditsOfAnySizeEqualARebuild) {
                                << " vertices: tessellated vertices differ from a rebuild";
     }
   }
+}
+
+// A tool lists the vertices it may move (G's first frame lists every selected vertex and moves none):
+// the listed vertices it left as they were are not edited, so that a list of only those changes
+// nothing drawn, and a list with one moved vertex edits that one, as a rebuild draws it.
+TEST_F(GpuTest, ListedVerticesThatDidNotChangeAreNotEdited) {
+  CovarianceMesh mesh = make_sample("torus");
+  SurfaceRenderer renderer;
+  renderer.set_mesh(mesh);
+  RenderTarget target(96, 96);
+  const Camera camera = frame_mesh(mesh);
+  const DrawOptions o;
+  for (int frame = 0; frame < 6 && !renderer.draws_as_last(target, camera, o); ++frame)
+    renderer.draw(target, camera, o);
+  ASSERT_TRUE(renderer.draws_as_last(target, camera, o));
+  std::vector<int> all(mesh.n_vertices());
+  for (int v = 0; v < int(all.size()); ++v) all[size_t(v)] = v;
+  renderer.update_vertices(mesh, all);
+  EXPECT_TRUE(renderer.draws_as_last(target, camera, o)) << "an edit that changed nothing was drawn again";
+  mesh.set_mean(5, mesh.mean(5) * 1.1);
+  renderer.update_vertices(mesh, all);
+  EXPECT_FALSE(renderer.draws_as_last(target, camera, o));
+  SurfaceRenderer rebuilt;
+  rebuilt.set_mesh(mesh, PlannedSurface(mesh, PlanOptions{}), renderer.frame());
+  EXPECT_EQ(renderer.read_points(), rebuilt.read_points());
+  EXPECT_TRUE(renderer.read_corner_pass() == rebuilt.read_corner_pass());
 }
 
 }  // namespace
