@@ -504,9 +504,11 @@ TEST_P(SurfaceCacheTest, EditsAndUndoEqualLiveFramesEachTime) {
     draw(renderer, target, camera, o, true);  // drawn as it is captured
     const Frame first = draw(renderer, target, camera, o, true);
     const int n = int(mesh.n_vertices());
-    // Moves, a covariance scaled, then each undone (the original values back), newest first.
+    // Moves, a covariance scaled, then each undone (the values before it back), newest first.
     const std::vector<std::vector<int>> edits = {{n / 2}, {n / 2 + 1, n / 4}, {n / 5}, {n / 2}};
+    std::vector<CovarianceMesh> before;
     for (size_t e = 0; e < edits.size(); ++e) {
+      before.push_back(mesh);
       for (const int v : edits[e]) {
         if (e == 2)
           mesh.covariances[size_t(v)] *= 1.5;
@@ -519,8 +521,8 @@ TEST_P(SurfaceCacheTest, EditsAndUndoEqualLiveFramesEachTime) {
     }
     for (size_t e = edits.size(); e-- > 0;) {
       for (const int v : edits[e]) {
-        mesh.set_mean(size_t(v), original.mean(size_t(v)));
-        mesh.covariances[size_t(v)] = original.covariances[size_t(v)];
+        mesh.set_mean(size_t(v), before[e].mean(size_t(v)));
+        mesh.covariances[size_t(v)] = before[e].covariances[size_t(v)];
       }
       renderer.update_vertices(mesh, edits[e]);
       EXPECT_TRUE(same_surface(draw(renderer, target, camera, o, true), draw(renderer, target, camera, o, false)))
