@@ -30,20 +30,13 @@ NormalisedFrame moved_by(const NormalisedFrame& frame, double s, const Mat3& q, 
   NormalisedFrame to;
   to.centre = frame.to_world(glm::dvec3(d.x(), d.y(), d.z()));
   to.unit = frame.unit * s;
-  glm::dmat3 turn;
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) turn[c][r] = q(r, c);
   if (q == Mat3::Identity()) {
     to.rotation = frame.rotation;
     return to;
   }
   // Composed turns kept orthonormal (the nearest rotation, from the SVD).
-  const glm::dmat3 composed = frame.rotation * turn;
-  Mat3 r;
-  for (int c = 0; c < 3; ++c)
-    for (int k = 0; k < 3; ++k) r(k, c) = composed[c][k];
-  const Eigen::JacobiSVD<Mat3> svd(r, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  r = svd.matrixU() * svd.matrixV().transpose();
+  const Eigen::JacobiSVD<Mat3> svd(Mat3(frame.rotation_matrix() * q), Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Mat3 r = svd.matrixU() * svd.matrixV().transpose();
   for (int c = 0; c < 3; ++c)
     for (int k = 0; k < 3; ++k) to.rotation[c][k] = r(k, c);
   return to;

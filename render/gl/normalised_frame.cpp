@@ -45,11 +45,16 @@ Vec3 NormalisedFrame::mean_in_frame(const Vec3& mean) const {
 Mat3 NormalisedFrame::covariance_in_frame(const Mat3& covariance) const {
   const double s = 1.0 / unit;
   if (!turned()) return covariance * (s * s);
-  Mat3 r;  // rotation as an Eigen matrix (glm is column-major: rotation[c][r])
-  for (int c = 0; c < 3; ++c)
-    for (int k = 0; k < 3; ++k) r(k, c) = rotation[c][k];
+  const Mat3 r = rotation_matrix();
   const Mat3 turned_covariance = r.transpose() * covariance * r;
   return 0.5 * (turned_covariance + turned_covariance.transpose()) * (s * s);
+}
+
+Mat3 NormalisedFrame::rotation_matrix() const {
+  Mat3 r;  // glm is column-major: rotation[column][row]
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) r(k, c) = rotation[c][k];
+  return r;
 }
 
 glm::dvec3 NormalisedFrame::to_frame(const glm::dvec3& world) const {

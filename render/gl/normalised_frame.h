@@ -52,6 +52,8 @@ struct NormalisedFrame {
   glm::dmat4 world_from_frame() const;
   /// Whether the frame's axes are turned from the world's.
   bool turned() const { return rotation != glm::dmat3(1.0); }
+  /// `rotation` as an Eigen matrix.
+  Mat3 rotation_matrix() const;
   glm::dvec3 to_world(const glm::dvec3& p) const { return centre + unit * (turned() ? rotation * p : p); }
   /// A direction (a normal) in the frame, in the world.
   glm::dvec3 direction_to_world(const glm::dvec3& d) const { return turned() ? rotation * d : d; }

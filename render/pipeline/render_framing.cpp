@@ -48,7 +48,7 @@ void append_finite_positions(const std::vector<TessellatedVertex>& vertices, std
 }
 
 glm::dvec3 in_frame(const NormalisedFrame& frame, const Vec3& world) {
-  return (glm::dvec3(world.x(), world.y(), world.z()) - frame.centre) / frame.unit;
+  return frame.to_frame(glm::dvec3(world.x(), world.y(), world.z()));
 }
 
 // The renderer's frame with its axes along the world's: what the camera is framed in.

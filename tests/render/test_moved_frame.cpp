@@ -43,13 +43,6 @@ const AffineMap kTurnScaleAndMove = [] {
   return m;
 }();
 
-Mat3 eigen(const glm::dmat3& m) {
-  Mat3 out;
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) out(r, c) = m[c][r];
-  return out;
-}
-
 std::vector<int> every_vertex(const CovarianceMesh& mesh) {
   std::vector<int> all(mesh.n_vertices());
   for (size_t v = 0; v < all.size(); ++v) all[v] = int(v);
@@ -67,7 +60,7 @@ TEST(MovedFrame, FindsTheRotationScaleAndTranslationOfEveryGaussian) {
     const std::optional<NormalisedFrame> to = moved_frame(frame, framed, moved, again);
     ASSERT_TRUE(to) << what;
     EXPECT_NEAR(to->unit, scale * frame.unit, 1e-12 * frame.unit) << what;
-    EXPECT_LE((eigen(to->rotation) - map.linear / scale).norm(), 1e-12) << what;
+    EXPECT_LE((to->rotation_matrix() - map.linear / scale).norm(), 1e-12) << what;
     EXPECT_EQ(to->turned(), map.linear != scale * Mat3::Identity()) << what;
     const Vec3 centre = map.apply(Vec3(frame.centre.x, frame.centre.y, frame.centre.z));
     EXPECT_NEAR(glm::distance(to->centre, glm::dvec3(centre.x(), centre.y(), centre.z())), 0.0, 1e-12 * to->unit)
