@@ -14,7 +14,7 @@
 
 namespace {
 
-constexpr int kOperations = 7;  // those modelling_figures times, in its order
+constexpr int kOperations = 9;           // those modelling_figures times, in its order
 constexpr int kInset = 1, kLoopCut = 2;  // which a mesh of triangles leaves out
 const char* const kMeshes[] = {"sphere", "icosphere"};
 

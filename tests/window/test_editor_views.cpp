@@ -1,7 +1,7 @@
 // The editor's views and numbers, in a real window under Xvfb: the statistics overlay keeps clear of
-// the gizmo; the gizmo of a multi-selection at its centroid; ellipsoids of the selection and its
-// neighbours only on a large mesh; Inspector fields that hold the full-precision value while edited
-// and apply a typed value exactly. Screenshots kept in build/test-artefacts/EditorViews/.
+// the gizmo; a dot on each selected vertex; the gizmo of a multi-selection at its centroid; ellipsoids of the selection
+// and its neighbours only on a large mesh; Inspector fields that hold the full-precision value while edited and apply a
+// typed value exactly. Screenshots kept in build/test-artefacts/EditorViews/.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -53,6 +53,38 @@ protected:
   test::TempDir dir_;
   CovarianceMesh original_;
 };
+
+// Every selected vertex shows an orange dot (drawn on the GPU in one call, not by the UI's draw list):
+// after Select All on the pawn, at each vertex's pixel clear of the panels and the gizmo; before it,
+// none of those pixels is orange.
+TEST_F(EditorViews, EachSelectedVertexShowsADot) {
+  use_mesh(make_sample("pawn"));
+  const Viewport view = editor_view(original_);
+  Events none;
+  none.wait(3).move(glm::vec2(300.0f, 600.0f)).wait(2);
+  Events all = none;
+  all.key("a").wait(3);
+  const auto plain = play(none, "--screenshot " + artefact("no_selection.png"));
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  const auto selected = play(all, "--screenshot " + artefact("all_selected.png"));
+  ASSERT_EQ(selected.exit_code, 0) << selected.output;
+  const Image before = read_image(artefact("no_selection.png")), after = read_image(artefact("all_selected.png"));
+  const glm::vec3 orange(1.0f, 170.0f / 255.0f, 40.0f / 255.0f);
+  const auto [free_min, free_max] = test::editor_free_region();
+  const glm::vec2 gizmo = pixel_of(view, original_.mean(0));  // at the active vertex, the first selected
+  int checked = 0;
+  for (size_t v = 0; v < original_.n_vertices(); ++v) {
+    const glm::vec2 p = pixel_of(view, original_.mean(v));
+    const bool clear = p.x > free_min.x + 4.0f && p.y > free_min.y + 4.0f && p.x < free_max.x - 4.0f &&
+                       p.y < free_max.y - 4.0f && glm::length(p - gizmo) > 60.0f &&
+                       !(p.x < 300.0f && p.y < 240.0f);  // the statistics overlay
+    if (!clear) continue;
+    EXPECT_LT(glm::length(colour_at(after, p) - orange), 0.08f) << "vertex " << v << " at " << p.x << ", " << p.y;
+    EXPECT_GT(glm::length(colour_at(before, p) - orange), 0.2f) << "vertex " << v << " unselected";
+    ++checked;
+  }
+  EXPECT_GT(checked, 300);
+}
 
 // The cube panned (Shift + right drag) until its front corner lies under the statistics overlay's
 // usual place, the top-left corner: once the corner is selected the overlay moves away, the gizmo

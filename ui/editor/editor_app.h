@@ -21,6 +21,7 @@
 
 #include "render/gl/gpu_pass_timer.h"
 #include "render/gl/window_context.h"
+#include "render/overlays/vertex_dots.h"
 #include "core/support/error.h"
 #include "core/plans/surface_replanner.h"
 #include "ui/editing/axis_handles.h"
@@ -79,6 +80,8 @@ private:
   bool vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const;
   Viewport viewport() const;
   void draw_handles_and_box();
+  /// A dot on each selected vertex, over the 3D view in the bound framebuffer of width × height pixels.
+  void draw_selection_dots(int width, int height);
   // Selecting in the vertex, edge and face modes: the Select menu (editor_select_menu.cpp); the
   // pointer's clicks and boxes (ui/editing/pointer_selection.h, from release()) select in pointer_scene.
   void build_selection_commands();
@@ -198,6 +201,7 @@ private:
   std::unique_ptr<GpuPassTimer> timer_;
   std::unique_ptr<ViewportFrame> viewport_;          // the 3D view's target, kept while nothing in it changes
   std::unique_ptr<TargetPointsLayer> target_layer_;  // the dense target shown as points, and their distances
+  std::unique_ptr<VertexDots> selection_dots_;       // a dot on each selected vertex, over the 3D view
   EditorDocument document_;
   std::string opened_name_;  // the display name of the mesh as opened (a save renames the document)
   Selection selection_;

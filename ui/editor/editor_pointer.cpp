@@ -191,6 +191,16 @@ void EditorApp::follow_cursor() {
   last_cursor_ = cursor;
 }
 
+void EditorApp::draw_selection_dots(int width, int height) {
+  selection_dots_->set_vertices(document_.mesh(), selection_.vertices(), shown_->renderer().frame());
+  if (selection_dots_->count() == 0) return;
+  VertexDots::Style style;
+  style.diameter *= ImGui::GetIO().DisplayFramebufferScale.x;  // as wide as the panels' dots at any scale
+  timer_->begin("selection");
+  selection_dots_->draw(width, height, camera_, style);
+  timer_->end();
+}
+
 void EditorApp::draw_handles_and_box() {
   const Viewport v = viewport();
   ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the 3D view, under the panels
@@ -221,7 +231,7 @@ void EditorApp::draw_handles_and_box() {
                                                    : faces_within(shown, shown_->preview_selection());
     draw_selection_overlay(*draw, v, shown, edges, selected_faces, select_mode_);
   }
-  draw_handle_overlay(*draw, v, document_.mesh(), selection_.vertices(), gizmo, lit);
+  draw_handle_overlay(*draw, v, gizmo, lit);
   gizmo_box_.reset();
   if (gizmo) {  // the gizmo's extent on screen, its dots included
     for (int k = -1; k < 6; ++k)

@@ -4,16 +4,13 @@
 
 namespace gps {
 
-void draw_handle_overlay(ImDrawList& draw, const Viewport& v, const CovarianceMesh& mesh,
-                         const std::vector<int>& selected, const std::optional<HandleFrame>& gizmo,
+void draw_handle_overlay(ImDrawList& draw, const Viewport& v, const std::optional<HandleFrame>& gizmo,
                          const std::optional<Handle>& hovered) {
   const auto pixel = [&v](const Vec3& p) -> std::optional<ImVec2> {
     const auto q = visible_pixel(v.camera, v.width, v.height, p);
     if (!q) return std::nullopt;
     return ImVec2(q->x, q->y);
   };
-  for (const int vertex : selected)
-    if (const auto p = pixel(mesh.mean(size_t(vertex)))) draw.AddCircleFilled(*p, 3.5f, IM_COL32(255, 170, 40, 255));
   if (!gizmo) return;
   const ImU32 axis_colours[3] = {IM_COL32(235, 80, 80, 255), IM_COL32(90, 210, 90, 255), IM_COL32(90, 150, 255, 255)};
   const ImU32 highlight = IM_COL32(255, 240, 90, 255), outline = IM_COL32(0, 0, 0, 200);
