@@ -1,7 +1,8 @@
 // The editor's views and numbers, in a real window under Xvfb: the statistics overlay keeps clear of
-// the gizmo; a dot on each selected vertex; the gizmo of a multi-selection at its centroid; ellipsoids of the selection
-// and its neighbours only on a large mesh; Inspector fields that hold the full-precision value while edited and apply a
-// typed value exactly. Screenshots kept in build/test-artefacts/EditorViews/.
+// the gizmo; a dot on each selected vertex, selected faces shaded where they face the eye; the gizmo of a
+// multi-selection at its centroid; ellipsoids of the selection and its neighbours only on a large mesh; Inspector
+// fields that hold the full-precision value while edited and apply a typed value exactly. Screenshots kept in
+// build/test-artefacts/EditorViews/.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -84,6 +85,50 @@ TEST_F(EditorViews, EachSelectedVertexShowsADot) {
     ++checked;
   }
   EXPECT_GT(checked, 300);
+}
+
+// In face mode, Select All shades every face that looks at the eye: its centre, clear of the panels
+// and the dots, blended towards the highlight.
+TEST_F(EditorViews, SelectedFacesAreShadedOnTheSideFacingTheEye) {
+  use_mesh(make_sample("pawn"));
+  const Viewport view = editor_view(original_);
+  Events plain_events;
+  plain_events.wait(3).key("3").wait(1).move(glm::vec2(300.0f, 600.0f)).wait(2);
+  Events all = plain_events;
+  all.key("a").wait(3);
+  const auto plain = play(plain_events, "--screenshot " + artefact("face_mode.png"));
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  const auto selected = play(all, "--screenshot " + artefact("faces_selected.png"));
+  ASSERT_EQ(selected.exit_code, 0) << selected.output;
+  const Image before = read_image(artefact("face_mode.png")), after = read_image(artefact("faces_selected.png"));
+  const glm::vec3 fill(1.0f, 150.0f / 255.0f, 40.0f / 255.0f);
+  const auto [free_min, free_max] = test::editor_free_region();
+  const glm::vec2 gizmo = pixel_of(view, original_.mean(0));
+  const glm::dvec3 eye = view.camera.eye_double();
+  int front = 0, once = 0;
+  for (size_t f = 0; f < original_.n_faces(); ++f) {
+    const std::span<const int> corners = original_.face(f);
+    Vec3 centre = Vec3::Zero(), normal = Vec3::Zero();
+    for (size_t k = 0; k < corners.size(); ++k) {
+      centre += original_.mean(size_t(corners[k]));
+      normal += original_.mean(size_t(corners[k])).cross(original_.mean(size_t(corners[(k + 1) % corners.size()])));
+    }
+    centre /= double(corners.size());
+    const glm::vec2 p = pixel_of(view, centre);
+    // Clear of the panels, the gizmo and the statistics, and of the face's corners' dots and outline.
+    bool clear = p.x > free_min.x + 4.0f && p.y > free_min.y + 4.0f && p.x < free_max.x - 4.0f &&
+                 p.y < free_max.y - 4.0f && glm::length(p - gizmo) > 60.0f && !(p.x < 300.0f && p.y < 240.0f);
+    for (const int v : corners) clear = clear && glm::length(pixel_of(view, original_.mean(size_t(v))) - p) > 8.0f;
+    if (!clear) continue;
+    if (normal.dot(Vec3(eye.x, eye.y, eye.z) - centre) <= 0.0) continue;
+    // Shaded towards the fill; once, where no other face facing the eye (or its outline) lies over it.
+    const glm::vec3 was = colour_at(before, p), now = colour_at(after, p);
+    ++front;
+    EXPECT_LT(glm::length(now - fill), glm::length(was - fill) - 0.05f) << "face " << f << " facing the eye";
+    once += glm::length(now - glm::mix(was, fill, 70.0f / 255.0f)) < 0.03f;
+  }
+  EXPECT_GT(front, 100);
+  EXPECT_GT(once, front / 2);
 }
 
 // The cube panned (Shift + right drag) until its front corner lies under the statistics overlay's

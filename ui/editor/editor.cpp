@@ -64,6 +64,7 @@ EditorApp::EditorApp(const EditorOptions& options)
   shown_ = std::make_unique<ShownSurface>();
   target_layer_ = std::make_unique<TargetPointsLayer>();
   selection_dots_ = std::make_unique<VertexDots>();
+  selected_elements_ = std::make_unique<SelectedElements>();
   timer_ = std::make_unique<GpuPassTimer>();
   viewport_ = std::make_unique<ViewportFrame>();
   shown_->renderer().set_pass_timer(timer_.get());
@@ -228,7 +229,6 @@ void EditorApp::render_and_present() {
     window_.blit(*viewport_->target());
   }
   window_.bind_default_framebuffer();
-  if (fb_width > 0 && fb_height > 0) draw_selection_dots(fb_width, fb_height);
   timer_->begin("UI");
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   timer_->end();

@@ -21,6 +21,7 @@
 
 #include "render/gl/gpu_pass_timer.h"
 #include "render/gl/window_context.h"
+#include "render/overlays/selected_elements.h"
 #include "render/overlays/vertex_dots.h"
 #include "core/support/error.h"
 #include "core/plans/surface_replanner.h"
@@ -80,8 +81,10 @@ private:
   bool vertex_before_handle(glm::vec2 pixel, const HandleFrame& gizmo, const Handle& handle) const;
   Viewport viewport() const;
   void draw_handles_and_box();
-  /// A dot on each selected vertex, over the 3D view in the bound framebuffer of width × height pixels.
-  void draw_selection_dots(int width, int height);
+  /// The selection over the 3D view, drawn on the GPU where ImGui's background list reaches it (a
+  /// callback there, between the creases and the gizmo): the selected faces and edges, then a dot on
+  /// each selected vertex, as set by draw_handles_and_box.
+  void draw_selection() const;
   // Selecting in the vertex, edge and face modes: the Select menu (editor_select_menu.cpp); the
   // pointer's clicks and boxes (ui/editing/pointer_selection.h, from release()) select in pointer_scene.
   void build_selection_commands();
@@ -202,6 +205,7 @@ private:
   std::unique_ptr<ViewportFrame> viewport_;          // the 3D view's target, kept while nothing in it changes
   std::unique_ptr<TargetPointsLayer> target_layer_;  // the dense target shown as points, and their distances
   std::unique_ptr<VertexDots> selection_dots_;       // a dot on each selected vertex, over the 3D view
+  std::unique_ptr<SelectedElements> selected_elements_;  // the selected faces and edges, over it
   EditorDocument document_;
   std::string opened_name_;  // the display name of the mesh as opened (a save renames the document)
   Selection selection_;

@@ -11,7 +11,6 @@
 #include "ui/editor/editor_app.h"
 #include "ui/overlays/ellipsoid_scope.h"
 #include "ui/overlays/handle_overlay.h"
-#include "ui/overlays/selection_overlay.h"
 #include "ui/editing/pointer_selection.h"
 #include "ui/tools/handle_drag_tool.h"
 #include "view/picking.h"
@@ -191,14 +190,16 @@ void EditorApp::follow_cursor() {
   last_cursor_ = cursor;
 }
 
-void EditorApp::draw_selection_dots(int width, int height) {
-  selection_dots_->set_vertices(document_.mesh(), selection_.vertices(), shown_->renderer().frame());
-  if (selection_dots_->count() == 0) return;
-  VertexDots::Style style;
-  style.diameter *= ImGui::GetIO().DisplayFramebufferScale.x;  // as wide as the panels' dots at any scale
-  timer_->begin("selection");
-  selection_dots_->draw(width, height, camera_, style);
-  timer_->end();
+void EditorApp::draw_selection() const {
+  const ImDrawData* d = ImGui::GetDrawData();
+  const float scale = d->FramebufferScale.x;  // as wide as the panels' lines at any scale
+  const int width = int(d->DisplaySize.x * scale), height = int(d->DisplaySize.y * d->FramebufferScale.y);
+  SelectedElements::Style lines;
+  lines.edge_width *= scale, lines.outline_width *= scale;
+  selected_elements_->draw(width, height, camera_, lines);
+  VertexDots::Style dots;
+  dots.diameter *= scale;
+  selection_dots_->draw(width, height, camera_, dots);
 }
 
 void EditorApp::draw_handles_and_box() {
@@ -229,8 +230,17 @@ void EditorApp::draw_handles_and_box() {
     const std::vector<int> selected_faces = !faces ? std::vector<int>{}
                                             : kept ? selection_.faces(shown)
                                                    : faces_within(shown, shown_->preview_selection());
-    draw_selection_overlay(*draw, v, shown, edges, selected_faces, select_mode_);
+    selected_elements_->set_elements(shown, edges, selected_faces, shown_->renderer().frame());
+  } else {
+    selected_elements_->set_elements(document_.mesh(), {}, {}, shown_->renderer().frame());
   }
+  selection_dots_->set_vertices(document_.mesh(), selection_.vertices(), shown_->renderer().frame());
+  draw->AddCallback(
+      [](const ImDrawList*, const ImDrawCmd* command) {
+        static_cast<const EditorApp*>(command->UserCallbackData)->draw_selection();
+      },
+      this);
+  draw->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
   draw_handle_overlay(*draw, v, gizmo, lit);
   gizmo_box_.reset();
   if (gizmo) {  // the gizmo's extent on screen, its dots included
