@@ -23,8 +23,10 @@ struct PolygonTopology {
 /// Faces given as vertex-index lists, in compressed form (n_vertices left 0 for the caller to set).
 PolygonTopology polygon_topology(const std::vector<std::vector<int>>& faces);
 
-/// Edges and incidences of a PolygonTopology. Edge e joins edge_verts[2e] < edge_verts[2e+1];
-/// edge_faces[2e+1] is −1 on a boundary edge. face_edges parallels verts: the edge from corner k to k+1.
+/// Edges and incidences of a PolygonTopology. Edge e joins edge_verts[2e] < edge_verts[2e+1], the
+/// edges numbered in the order of their ends (lower, then higher); edge_faces[2e+1] is −1 on a boundary
+/// edge. face_edges parallels verts: the edge from corner k to k+1. Each vertex's rows list its edges
+/// and faces in their order.
 struct MeshConnectivity {
   std::vector<int> edge_verts;
   std::vector<int> edge_faces;

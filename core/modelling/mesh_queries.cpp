@@ -202,12 +202,13 @@ std::vector<int> faces_within(const CovarianceMesh& mesh, const std::vector<int>
 
 std::vector<std::array<int, 2>> edges_within(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
   const std::vector<char> selected = vertex_mask(mesh, vertices);
+  // Sorted as made: the vertices ascending, each one's edges in edge order, which is their ends' order
+  // (core/mesh/mesh_connectivity.h): its higher neighbours ascending.
   std::vector<std::array<int, 2>> edges;
   for (int v : masked(selected))
     for_each_neighbour(mesh.connectivity(), v, [&](int w) {
       if (w > v && selected[size_t(w)]) edges.push_back({v, w});
     });
-  std::sort(edges.begin(), edges.end());
   return edges;
 }
 

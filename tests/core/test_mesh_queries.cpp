@@ -118,6 +118,23 @@ TEST(MeshQueries, FacesAndEdgesWithin) {
   EXPECT_EQ(edges_within(grid, {6, 7, 11}).size(), 2u);
 }
 
+// On meshes with vertices of many valences, every edge with both ends among a scattered set of
+// vertices, each once, ends ascending, the edges sorted.
+TEST(MeshQueries, EdgesWithinAreEveryEdgeBetweenTheVerticesInOrder) {
+  for (const char* name : {"pawn", "icosphere", "grid"}) {
+    const CovarianceMesh mesh = make_sample(name);
+    V chosen;
+    for (int v = 0; v < int(mesh.n_vertices()); ++v)
+      if ((v * 7919) % 5 != 0) chosen.push_back(v);
+    const std::set<int> in(chosen.begin(), chosen.end());
+    std::vector<std::array<int, 2>> expected;
+    for (size_t e = 0; e < mesh.n_edges(); ++e)
+      if (in.count(mesh.edge(e)[0]) && in.count(mesh.edge(e)[1])) expected.push_back(mesh.edge(e));
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(edges_within(mesh, chosen), expected) << name;
+  }
+}
+
 TEST(MeshQueries, BoundaryLoopsRunAlongTheFacesEdges) {
   const CovarianceMesh grid = test::grid_mesh(4, 4);
   const auto loops = boundary_loops(grid);

@@ -1,5 +1,8 @@
 #include "ui/panels/inspector_panel.h"
 
+#include <array>
+#include <cstring>
+
 #include <imgui.h>
 #include <imgui_internal.h>
 
@@ -47,10 +50,31 @@ namespace {
 const ImVec4 kAxisColours[3] = {ImVec4(0.92f, 0.31f, 0.31f, 1), ImVec4(0.35f, 0.82f, 0.35f, 1),
                                 ImVec4(0.35f, 0.59f, 1.0f, 1)};
 
-bool all_equal(const std::vector<double>& values) {
-  for (const double v : values)
-    if (v != values.front()) return false;
-  return true;
+// Whether coordinate k of the `vertices`' means is not the same for all of them.
+bool mixed_coordinate(const CovarianceMesh& mesh, const std::vector<int>& vertices, int k) {
+  for (const int v : vertices)
+    if (mesh.mean(size_t(v))[k] != mesh.mean(size_t(vertices.front()))[k]) return true;
+  return false;
+}
+
+// Per principal axis k, whether σ_k of some of the `vertices` is not `shown[k]` (the active vertex's,
+// as the field shows it). A covariance bitwise the active one's has its σ without an eigen-solve, and
+// the scan stops once every axis is known to differ: a selection of every vertex of a large mesh is
+// read each frame.
+std::array<bool, 3> mixed_sigmas(const CovarianceMesh& mesh, const std::vector<int>& vertices, int active,
+                                 const Vec3& shown) {
+  const Mat3& active_covariance = mesh.covariance(size_t(active));
+  const Vec3 fresh = ellipsoid_axes(active_covariance).sigmas;
+  std::array<bool, 3> mixed{};
+  for (const int v : vertices) {
+    if (mixed[0] && mixed[1] && mixed[2]) break;
+    const Mat3& c = mesh.covariance(size_t(v));
+    const Vec3 sigmas = v == active                                              ? shown
+                        : std::memcmp(&c, &active_covariance, sizeof(Mat3)) == 0 ? fresh
+                                                                                 : ellipsoid_axes(c).sigmas;
+    for (int k = 0; k < 3; ++k) mixed[size_t(k)] = mixed[size_t(k)] || sigmas[k] != shown[k];
+  }
+  return mixed;
 }
 
 }  // namespace
@@ -140,10 +164,9 @@ void InspectorPanel::track_entry(EditorDocument& document) {
 void InspectorPanel::draw_means(EditorDocument& document, const std::vector<int>& vertices) {
   static const char* kLabels[] = {"##mean x", "##mean y", "##mean z"};
   for (int k = 0; k < 3; ++k) {
-    std::vector<double> values;
-    for (const int v : vertices) values.push_back(document.mesh().mean(size_t(v))[k]);
     if (k > 0) ImGui::SameLine();
-    if (const auto typed = number_field(kLabels[k], values.front(), !all_equal(values), 4, 80)) {
+    if (const auto typed = number_field(kLabels[k], document.mesh().mean(size_t(vertices.front()))[k],
+                                        mixed_coordinate(document.mesh(), vertices, k), 4, 80)) {
       for (const int v : vertices) {
         Vec3 m = document.start_mean(v);
         m[k] = *typed;
@@ -161,14 +184,12 @@ void InspectorPanel::draw_sigmas(EditorDocument& document, const std::vector<int
   // While a σ is typed, the axes keep the order they had when the entry began (no re-sorting).
   const EllipsoidAxes axes = entry_axes_ ? *entry_axes_ : ellipsoid_axes(document.mesh().covariance(size_t(active)));
   static const char* kLabels[] = {"##sigma 1", "##sigma 2", "##sigma 3"};
+  const std::array<bool, 3> mixed = mixed_sigmas(document.mesh(), vertices, active, axes.sigmas);
   for (int k = 0; k < 3; ++k) {
-    std::vector<double> values;
-    for (const int v : vertices)
-      values.push_back(v == active ? axes.sigmas[k] : ellipsoid_axes(document.mesh().covariance(size_t(v))).sigmas[k]);
     if (k > 0) ImGui::SameLine();
     ImGui::PushStyleColor(ImGuiCol_Text, kAxisColours[k]);
     ImGui::PushStyleColor(ImGuiCol_TextDisabled, kAxisColours[k]);  // "mixed" in the axis colour too
-    const auto typed = number_field(kLabels[k], axes.sigmas[k], !all_equal(values), 5, 80);
+    const auto typed = number_field(kLabels[k], axes.sigmas[k], mixed[size_t(k)], 5, 80);
     ImGui::PopStyleColor(2);
     if (typed && *typed > 0) {
       for (const int v :
