@@ -183,20 +183,22 @@ std::vector<int> Selection::faces(const CovarianceMesh& mesh) const {
   std::vector<int> out;
   for (const FaceCorners& held : faces_)
     if (const int f = face_with_corners(mesh, held); f >= 0) out.push_back(f);
-  std::sort(out.begin(), out.end());
+  if (!std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
   return out;
 }
 
 int Selection::face_with_corners(const CovarianceMesh& mesh, const FaceCorners& held) {
   if (held.empty() || held.front() < 0 || held.back() >= int(mesh.n_vertices())) return -1;
   const MeshConnectivity& c = mesh.connectivity();
-  std::vector<int> corners;
-  // The faces around its lowest corner.
+  // The face around its lowest corner with as many corners, each held (a face's corners are distinct,
+  // so these are the held ones).
   for (int k = c.vertex_face_offsets[size_t(held.front())]; k < c.vertex_face_offsets[size_t(held.front()) + 1]; ++k) {
     const int f = c.vertex_faces[size_t(k)];
-    corners.assign(mesh.face(size_t(f)).begin(), mesh.face(size_t(f)).end());
-    std::sort(corners.begin(), corners.end());
-    if (corners == held) return f;
+    const std::span<const int> corners = mesh.face(size_t(f));
+    if (corners.size() != held.size()) continue;
+    if (std::all_of(corners.begin(), corners.end(),
+                    [&](int v) { return std::binary_search(held.begin(), held.end(), v); }))
+      return f;
   }
   return -1;
 }
