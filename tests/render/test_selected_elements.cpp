@@ -11,6 +11,7 @@
 #include "render/overlays/selected_elements.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
+#include "tests/support/overlay_shots.h"
 #include "view/camera.h"
 #include "view/projection.h"
 
@@ -19,31 +20,19 @@ namespace {
 
 constexpr int kSize = 240;
 
-glm::vec3 at(const Image& im, glm::vec2 p) {
-  const int x = int(p.x), y = int(p.y);
-  return {im.at(x, y, 0), im.at(x, y, 1), im.at(x, y, 2)};
-}
-
-struct Shot {
-  Image plain, lit;
-};
+using test::rgb_at;
 
 // `mesh`'s surface under `camera`, then the highlight of `edges` and `faces` over it.
-Shot shoot(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, const std::vector<int>& faces,
-           const Camera& camera, const std::string& name) {
+test::OverlayShot shoot(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges,
+                        const std::vector<int>& faces, const Camera& camera, const std::string& name) {
   SurfaceRenderer renderer;
   renderer.set_mesh(mesh);
-  RenderTarget target(kSize, kSize);
-  DrawOptions o;
-  o.level = 8;
-  renderer.draw(target, camera, o);
-  Shot s;
-  s.plain = target.read(0);
   SelectedElements highlight;
   highlight.set_elements(mesh, edges, faces, renderer.frame());
-  highlight.draw(target, camera, SelectedElements::Style{});
-  s.lit = target.read(0);
-  if (std::getenv("GPS_KEEP_IMAGES")) write_image("selected_" + name + ".png", s.lit);
+  const test::OverlayShot s = test::shoot_over(renderer, camera, kSize, [&](const RenderTarget& target) {
+    highlight.draw(target, camera, SelectedElements::Style{});
+  });
+  if (std::getenv("GPS_KEEP_IMAGES")) write_image("selected_" + name + ".png", s.over);
   return s;
 }
 
@@ -77,7 +66,7 @@ Vec3 centroid(const CovarianceMesh& mesh, int f) {
 bool same_image(const Image& a, const Image& b) {
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x)
-      if (glm::length(at(a, glm::vec2(x, y)) - at(b, glm::vec2(x, y))) > 1e-4f) return false;
+      if (glm::length(rgb_at(a, glm::vec2(x, y)) - rgb_at(b, glm::vec2(x, y))) > 1e-4f) return false;
   return true;
 }
 
@@ -100,18 +89,18 @@ TEST_F(SelectedElementsTest, AFaceShowsWhereItLooksAtTheEye) {
       for (int f = 0; f < int(cube.n_faces()); ++f) {
         const std::string name = std::string(parallel ? "parallel" : "perspective") + (shift.norm() > 0 ? " far" : "") +
                                  ", face " + std::to_string(f);
-        const Shot s = shoot(cube, {}, {f}, camera, "face");
+        const test::OverlayShot s = shoot(cube, {}, {f}, camera, "face");
         if (!faces_eye(cube, f, camera)) {
-          EXPECT_TRUE(same_image(s.plain, s.lit)) << name << " looks away but was drawn";
+          EXPECT_TRUE(same_image(s.plain, s.over)) << name << " looks away but was drawn";
           continue;
         }
         ++shown;
         const glm::vec2 c = pixel(camera, centroid(cube, f));
-        const glm::vec3 blended = glm::mix(at(s.plain, c), kFill, kFillAlpha);
-        EXPECT_LT(glm::length(at(s.lit, c) - blended), 0.02f) << name << ": the fill at its centre";
+        const glm::vec3 blended = glm::mix(rgb_at(s.plain, c), kFill, kFillAlpha);
+        EXPECT_LT(glm::length(rgb_at(s.over, c) - blended), 0.02f) << name << ": the fill at its centre";
         const std::span<const int> corners = cube.face(size_t(f));
         const Vec3 middle = 0.5 * (cube.mean(size_t(corners[0])) + cube.mean(size_t(corners[1])));
-        EXPECT_LT(glm::length(at(s.lit, pixel(camera, middle)) - kOutline), 0.02f) << name << ": its outline";
+        EXPECT_LT(glm::length(rgb_at(s.over, pixel(camera, middle)) - kOutline), 0.02f) << name << ": its outline";
       }
       EXPECT_EQ(shown, 3) << "the cube shows three faces from a corner";
     }
@@ -126,15 +115,15 @@ TEST_F(SelectedElementsTest, AnEdgeShowsWhereOneOfItsFacesLooksAtTheEyeOrOnTheBo
   for (size_t e = 0; e < cube.n_edges(); ++e) {
     const std::array<int, 2> ends = cube.edge(e);
     const int f0 = cube.connectivity().edge_faces[2 * e], f1 = cube.connectivity().edge_faces[2 * e + 1];
-    const Shot s = shoot(cube, {ends}, {}, camera, "edge");
+    const test::OverlayShot s = shoot(cube, {ends}, {}, camera, "edge");
     const std::string name = "edge " + std::to_string(ends[0]) + "-" + std::to_string(ends[1]);
     if (faces_eye(cube, f0, camera) || faces_eye(cube, f1, camera)) {
       ++front;
       const Vec3 middle = 0.5 * (cube.mean(size_t(ends[0])) + cube.mean(size_t(ends[1])));
-      EXPECT_LT(glm::length(at(s.lit, pixel(camera, middle)) - kEdge), 0.02f) << name;
+      EXPECT_LT(glm::length(rgb_at(s.over, pixel(camera, middle)) - kEdge), 0.02f) << name;
     } else {
       ++back;
-      EXPECT_TRUE(same_image(s.plain, s.lit)) << name << " lies between faces that look away but was drawn";
+      EXPECT_TRUE(same_image(s.plain, s.over)) << name << " lies between faces that look away but was drawn";
     }
   }
   EXPECT_EQ(front, 9);
@@ -148,10 +137,10 @@ TEST_F(SelectedElementsTest, AnEdgeShowsWhereOneOfItsFacesLooksAtTheEyeOrOnTheBo
     const Camera view = frame_mesh(square, yaw, 20.0f);
     if (faces_eye(square, 0, view)) continue;
     const Vec3 middle = 0.5 * (square.mean(0) + square.mean(1));
-    const Shot edge = shoot(square, {{0, 1}}, {}, view, "boundary");
-    EXPECT_LT(glm::length(at(edge.lit, pixel(view, middle)) - kEdge), 0.02f) << "a boundary edge seen from behind";
-    const Shot face = shoot(square, {}, {0}, view, "square");
-    EXPECT_TRUE(same_image(face.plain, face.lit)) << "a face seen from behind";
+    const test::OverlayShot edge = shoot(square, {{0, 1}}, {}, view, "boundary");
+    EXPECT_LT(glm::length(rgb_at(edge.over, pixel(view, middle)) - kEdge), 0.02f) << "a boundary edge seen from behind";
+    const test::OverlayShot face = shoot(square, {}, {0}, view, "square");
+    EXPECT_TRUE(same_image(face.plain, face.over)) << "a face seen from behind";
     return;
   }
   FAIL() << "neither view sees the square from behind";

@@ -13,6 +13,7 @@
 #include "render/overlays/vertex_dots.h"
 #include "render/pipeline/surface_renderer.h"
 #include "tests/support/gl_fixture.h"
+#include "tests/support/overlay_shots.h"
 #include "view/camera.h"
 #include "view/projection.h"
 
@@ -22,7 +23,7 @@ namespace {
 constexpr int kSize = 240;
 constexpr float kDiameter = 7.0f;
 
-glm::vec3 at(const Image& im, int x, int y) { return {im.at(x, y, 0), im.at(x, y, 1), im.at(x, y, 2)}; }
+using test::rgb_at;
 
 struct Shot {
   Image plain, dotted;
@@ -33,16 +34,12 @@ struct Shot {
 // renderer's frame after it showed `shown`.
 Shot shoot(SurfaceRenderer& renderer, VertexDots& dots, const CovarianceMesh& dotted, const std::vector<int>& vertices,
            const Camera& camera, const std::string& name) {
-  RenderTarget target(kSize, kSize);
-  DrawOptions o;
-  o.level = 8;
-  renderer.draw(target, camera, o);
-  Shot s;
-  s.plain = target.read(0);
   dots.set_vertices(dotted, vertices, renderer.frame());
   EXPECT_EQ(dots.count(), vertices.size());
-  dots.draw(target, camera, VertexDots::Style{glm::vec4(1.0f, 0.0f, 1.0f, 1.0f), kDiameter});
-  s.dotted = target.read(0);
+  const test::OverlayShot shot = test::shoot_over(renderer, camera, kSize, [&](const RenderTarget& target) {
+    dots.draw(target, camera, VertexDots::Style{glm::vec4(1.0f, 0.0f, 1.0f, 1.0f), kDiameter});
+  });
+  Shot s{shot.plain, shot.over, {}};
   for (const int v : vertices)
     if (const auto p = visible_pixel(camera, kSize, kSize, dotted.mean(size_t(v)))) s.centres.emplace_back(p->x, p->y);
   if (std::getenv("GPS_KEEP_IMAGES")) write_image("vertex_dots_" + name + ".png", s.dotted);
@@ -56,7 +53,7 @@ void expect_dots(const Shot& s, const std::string& name) {
   for (const glm::vec2& c : s.centres) {
     const int x = int(c.x), y = int(c.y);
     if (x < 4 || y < 4 || x >= kSize - 4 || y >= kSize - 4) continue;
-    EXPECT_LT(glm::length(at(s.dotted, x, y) - glm::vec3(1.0f, 0.0f, 1.0f)), 0.02f)
+    EXPECT_LT(glm::length(rgb_at(s.dotted, x, y) - glm::vec3(1.0f, 0.0f, 1.0f)), 0.02f)
         << name << ": dot at " << x << ", " << y;
     ++checked;
   }
@@ -64,7 +61,7 @@ void expect_dots(const Shot& s, const std::string& name) {
   int changed = 0;
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
-      if (glm::length(at(s.dotted, x, y) - at(s.plain, x, y)) < 1e-3f) continue;
+      if (glm::length(rgb_at(s.dotted, x, y) - rgb_at(s.plain, x, y)) < 1e-3f) continue;
       ++changed;
       float nearest = 1e9f;
       for (const glm::vec2& c : s.centres) nearest = std::min(nearest, glm::length(glm::vec2(x + 0.5f, y + 0.5f) - c));
@@ -135,7 +132,7 @@ TEST_F(VertexDotsTest, NoneListedDrawsNothingAndAVertexOutsideIsRefused) {
   VertexDots dots;
   const Shot none = shoot(renderer, dots, mesh, {}, frame_mesh(mesh), "none");
   for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) ASSERT_EQ(at(none.dotted, x, y), at(none.plain, x, y));
+    for (int x = 0; x < kSize; ++x) ASSERT_EQ(rgb_at(none.dotted, x, y), rgb_at(none.plain, x, y));
   EXPECT_THROW(dots.set_vertices(mesh, {int(mesh.n_vertices())}, renderer.frame()), Error);
   EXPECT_THROW(dots.set_vertices(mesh, {-1}, renderer.frame()), Error);
   EXPECT_EQ(dots.count(), 0u) << "the dots held before a refusal stay";

@@ -51,9 +51,26 @@ protected:
   test::CommandResult play(const Events& events, const std::string& extra) const {
     return test::play_editor(dir_, dir_.file("original.ply"), events, kWidth, kHeight, extra);
   }
+  // Screenshots after `first` and after `second` (artefacts `stem`_before.png, `stem`_after.png).
+  std::pair<Image, Image> two_shots(const Events& first, const Events& second, const std::string& stem) const {
+    for (const auto& [events, name] :
+         {std::pair{&first, stem + "_before.png"}, std::pair{&second, stem + "_after.png"}}) {
+      const auto r = play(*events, "--screenshot " + artefact(name));
+      EXPECT_EQ(r.exit_code, 0) << r.output;
+    }
+    return {read_image(artefact(stem + "_before.png")), read_image(artefact(stem + "_after.png"))};
+  }
   test::TempDir dir_;
   CovarianceMesh original_;
 };
+
+// Whether window pixel p lies clear of the panels and the statistics overlay at their first-use
+// places, and of the gizmo at `gizmo`.
+bool clear_of_ui(glm::vec2 p, glm::vec2 gizmo) {
+  const auto [free_min, free_max] = test::editor_free_region();
+  return p.x > free_min.x + 4.0f && p.y > free_min.y + 4.0f && p.x < free_max.x - 4.0f && p.y < free_max.y - 4.0f &&
+         glm::length(p - gizmo) > 60.0f && !(p.x < 300.0f && p.y < 240.0f);
+}
 
 // Every selected vertex shows an orange dot (drawn on the GPU in one call, not by the UI's draw list):
 // after Select All on the pawn, at each vertex's pixel clear of the panels and the gizmo; before it,
@@ -65,21 +82,13 @@ TEST_F(EditorViews, EachSelectedVertexShowsADot) {
   none.wait(3).move(glm::vec2(300.0f, 600.0f)).wait(2);
   Events all = none;
   all.key("a").wait(3);
-  const auto plain = play(none, "--screenshot " + artefact("no_selection.png"));
-  ASSERT_EQ(plain.exit_code, 0) << plain.output;
-  const auto selected = play(all, "--screenshot " + artefact("all_selected.png"));
-  ASSERT_EQ(selected.exit_code, 0) << selected.output;
-  const Image before = read_image(artefact("no_selection.png")), after = read_image(artefact("all_selected.png"));
+  const auto [before, after] = two_shots(none, all, "vertices_selected");
   const glm::vec3 orange(1.0f, 170.0f / 255.0f, 40.0f / 255.0f);
-  const auto [free_min, free_max] = test::editor_free_region();
   const glm::vec2 gizmo = pixel_of(view, original_.mean(0));  // at the active vertex, the first selected
   int checked = 0;
   for (size_t v = 0; v < original_.n_vertices(); ++v) {
     const glm::vec2 p = pixel_of(view, original_.mean(v));
-    const bool clear = p.x > free_min.x + 4.0f && p.y > free_min.y + 4.0f && p.x < free_max.x - 4.0f &&
-                       p.y < free_max.y - 4.0f && glm::length(p - gizmo) > 60.0f &&
-                       !(p.x < 300.0f && p.y < 240.0f);  // the statistics overlay
-    if (!clear) continue;
+    if (!clear_of_ui(p, gizmo)) continue;
     EXPECT_LT(glm::length(colour_at(after, p) - orange), 0.08f) << "vertex " << v << " at " << p.x << ", " << p.y;
     EXPECT_GT(glm::length(colour_at(before, p) - orange), 0.2f) << "vertex " << v << " unselected";
     ++checked;
@@ -92,17 +101,12 @@ TEST_F(EditorViews, EachSelectedVertexShowsADot) {
 TEST_F(EditorViews, SelectedFacesAreShadedOnTheSideFacingTheEye) {
   use_mesh(make_sample("pawn"));
   const Viewport view = editor_view(original_);
-  Events plain_events;
-  plain_events.wait(3).key("3").wait(1).move(glm::vec2(300.0f, 600.0f)).wait(2);
-  Events all = plain_events;
+  Events plain;
+  plain.wait(3).key("3").wait(1).move(glm::vec2(300.0f, 600.0f)).wait(2);
+  Events all = plain;
   all.key("a").wait(3);
-  const auto plain = play(plain_events, "--screenshot " + artefact("face_mode.png"));
-  ASSERT_EQ(plain.exit_code, 0) << plain.output;
-  const auto selected = play(all, "--screenshot " + artefact("faces_selected.png"));
-  ASSERT_EQ(selected.exit_code, 0) << selected.output;
-  const Image before = read_image(artefact("face_mode.png")), after = read_image(artefact("faces_selected.png"));
+  const auto [before, after] = two_shots(plain, all, "faces_selected");
   const glm::vec3 fill(1.0f, 150.0f / 255.0f, 40.0f / 255.0f);
-  const auto [free_min, free_max] = test::editor_free_region();
   const glm::vec2 gizmo = pixel_of(view, original_.mean(0));
   const glm::dvec3 eye = view.camera.eye_double();
   int front = 0, once = 0;
@@ -116,8 +120,7 @@ TEST_F(EditorViews, SelectedFacesAreShadedOnTheSideFacingTheEye) {
     centre /= double(corners.size());
     const glm::vec2 p = pixel_of(view, centre);
     // Clear of the panels, the gizmo and the statistics, and of the face's corners' dots and outline.
-    bool clear = p.x > free_min.x + 4.0f && p.y > free_min.y + 4.0f && p.x < free_max.x - 4.0f &&
-                 p.y < free_max.y - 4.0f && glm::length(p - gizmo) > 60.0f && !(p.x < 300.0f && p.y < 240.0f);
+    bool clear = clear_of_ui(p, gizmo);
     for (const int v : corners) clear = clear && glm::length(pixel_of(view, original_.mean(size_t(v))) - p) > 8.0f;
     if (!clear) continue;
     if (normal.dot(Vec3(eye.x, eye.y, eye.z) - centre) <= 0.0) continue;
