@@ -93,14 +93,19 @@ void SelectedElements::set_elements(const CovarianceMesh& mesh, const std::vecto
     triangles.insert(triangles.end(), lines.begin(), lines.end());
     items_.upload(triangles.data(), triangles.size() * sizeof(int));
     shape_ = mesh.shape(), edges_ = edges, faces_ = faces;
-    vertices_ = std::move(vertices), planed_faces_ = std::move(planed);
+    vertices_ = std::move(vertices);
+    plane_offsets_.assign(1, 0), plane_corners_.clear();
+    for (const int f : planed) {
+      for (const int corner : mesh.face(size_t(f))) plane_corners_.push_back(vertex_slot[size_t(corner)]);
+      plane_offsets_.push_back(int(plane_corners_.size()));
+    }
     placed_.clear();  // placed again below
   }
   // The vertices' places in the frame, then each face's plane there (its normal by Newell's formula,
   // through its centroid), computed in double.
-  std::vector<float> placed(4 * (vertices_.size() + planed_faces_.size()));
+  const long long n_vertices = (long long)vertices_.size(), n_faces = (long long)plane_offsets_.size() - 1;
+  std::vector<float> placed(4 * size_t(n_vertices + n_faces));
   std::vector<glm::dvec3> framed(vertices_.size());
-  const long long n_vertices = (long long)vertices_.size(), n_faces = (long long)planed_faces_.size();
 #pragma omp parallel for schedule(static) if (n_vertices >= 65536)
   for (long long ii = 0; ii < n_vertices; ++ii) {
     const size_t i = size_t(ii);
@@ -109,16 +114,15 @@ void SelectedElements::set_elements(const CovarianceMesh& mesh, const std::vecto
     for (int k = 0; k < 3; ++k) placed[4 * i + size_t(k)] = float(framed[i][k]);
     placed[4 * i + 3] = 1.0f;
   }
-  std::vector<int> slot_of(mesh.n_vertices() > 0 && !planed_faces_.empty() ? mesh.n_vertices() : 0, -1);
-  for (size_t i = 0; i < vertices_.size() && !slot_of.empty(); ++i) slot_of[size_t(vertices_[i])] = int(i);
 #pragma omp parallel for schedule(static) if (n_faces >= 65536)
   for (long long jj = 0; jj < n_faces; ++jj) {
     const size_t j = size_t(jj);
-    const std::span<const int> c = mesh.face(size_t(planed_faces_[j]));
+    const std::span<const int> c(plane_corners_.data() + plane_offsets_[j],
+                                 plane_corners_.data() + plane_offsets_[j + 1]);
     glm::dvec3 normal(0.0), centroid(0.0);
     for (size_t k = 0; k < c.size(); ++k) {
-      const glm::dvec3& p = framed[size_t(slot_of[size_t(c[k])])];
-      const glm::dvec3& q = framed[size_t(slot_of[size_t(c[(k + 1) % c.size()])])];
+      const glm::dvec3& p = framed[size_t(c[k])];
+      const glm::dvec3& q = framed[size_t(c[(k + 1) % c.size()])];
       normal += glm::cross(p, q);
       centroid += p;
     }
@@ -132,7 +136,7 @@ void SelectedElements::set_elements(const CovarianceMesh& mesh, const std::vecto
   frame_ = frame;
   if (placed == placed_) return;
   positions_.upload(placed.data(), 4 * vertices_.size() * sizeof(float));
-  planes_.upload(placed.data() + 4 * vertices_.size(), 4 * planed_faces_.size() * sizeof(float));
+  planes_.upload(placed.data() + 4 * vertices_.size(), 4 * size_t(n_faces) * sizeof(float));
   placed_ = std::move(placed);
   check_gl_errors("uploading the selection highlight");
 }

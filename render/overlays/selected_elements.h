@@ -60,10 +60,11 @@ private:
   GlVertexArray vao_;  // none of its attributes enabled: the shaders read the buffers themselves
   TexelBuffer positions_, planes_, items_;
   NormalisedFrame frame_;
-  // What the items were made from, and the mesh's vertices and faces they read.
+  // What the items were made from; the mesh's vertices they read, and per face they read its corners
+  // among those (its plane's, plane_corners_[plane_offsets_[j] .. plane_offsets_[j + 1])).
   std::shared_ptr<const MeshShape> shape_;
   std::vector<std::array<int, 2>> edges_;
-  std::vector<int> faces_, vertices_, planed_faces_;
+  std::vector<int> faces_, vertices_, plane_offsets_{0}, plane_corners_;
   std::vector<float> placed_;  // per vertex read: xyz and 1 in the frame; then per face read its plane
   size_t triangles_ = 0, outline_lines_ = 0, edge_lines_ = 0;
 };
