@@ -14,17 +14,12 @@
 
 #include "core/io/mesh_io.h"
 #include "core/modelling/affine_transform.h"
-#include "core/modelling/crease_edges.h"
-#include "core/modelling/delete_elements.h"
 #include "core/modelling/extrude.h"
-#include "core/modelling/inset.h"
-#include "core/modelling/loop_cut.h"
-#include "core/modelling/merge_vertices.h"
 #include "core/modelling/mesh_arrays.h"
 #include "core/modelling/samples.h"
-#include "core/modelling/subdivide_mesh.h"
 #include "core/support/error.h"
 #include "tests/support/connectivity_equal.h"
+#include "tests/support/random_operations.h"
 #include "tests/support/temp_dir.h"
 
 namespace gps {
@@ -59,38 +54,22 @@ std::string file_bytes(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// One random operation near a random face; empty where the operation refuses.
+// One random operation of any kind (tests/support/random_operations.h); empty where it refuses.
 std::optional<Modelled> random_operation(const CovarianceMesh& mesh, std::mt19937& rng) {
-  const auto pick = [&](size_t k) { return int(std::uniform_int_distribution<size_t>(0, k - 1)(rng)); };
-  const int f = pick(mesh.n_faces());
-  const std::span<const int> c = mesh.face(size_t(f));
   try {
-    switch (pick(10)) {
-      case 0:
-        return extrude_faces(mesh, {f}, 0.05);
-      case 1:
-        return inset_faces(mesh, {f, pick(mesh.n_faces())}, 0.01);
-      case 2:
-        return loop_cut(mesh, c[0], c[1], 1);
-      case 3:
-        return subdivide_faces(mesh, {f});
-      case 4:
-        return delete_faces(mesh, {f});
-      case 5:
-        return merge_vertices(mesh, {c[0], c[1]}, MergePoint::center);
-      case 6:
-        return dissolve_edges(mesh, {{c[0], c[1]}});
-      case 7:
-        return set_crease(mesh, {{c[0], c[1]}}, pick(2) == 0 ? 0.0 : 2.5);
-      case 8:
-        return set_corner(mesh, {c[0]}, 4.0);
-      default:
-        return transform_vertices(mesh, {c.begin(), c.end()},
-                                  AffineMap::about(mesh.mean(size_t(c[0])), 1.2 * Mat3::Identity()));
-    }
+    return test::random_operation(mesh, rng);
   } catch (const Error&) {
     return std::nullopt;
   }
+}
+
+// `after`, made from `before` by an operation whose vertices came from `origin`, and `before` told as
+// changes of each other restore each other.
+void expect_deltas_restore(const CovarianceMesh& before, const CovarianceMesh& after, const std::vector<int>& origin) {
+  const MeshDelta forward = mesh_delta(before, after, origin);
+  const MeshDelta back = mesh_delta(after, before, inverse_origin(origin, before.n_vertices()));
+  expect_same_mesh(apply_delta(before, forward), after);
+  expect_same_mesh(apply_delta(after, back), before);
 }
 
 TEST(IncrementalUndo, OperationsAndTheirInversesRestoreEachOtherByteForByte) {
@@ -106,13 +85,10 @@ TEST(IncrementalUndo, OperationsAndTheirInversesRestoreEachOtherByteForByte) {
       std::optional<Modelled> r = random_operation(mesh, rng);
       if (!r) continue;
       ++steps;
-      const MeshDelta forward = mesh_delta(mesh, r->mesh, r->vertex_origin);
-      const MeshDelta back = mesh_delta(r->mesh, mesh, inverse_origin(r->vertex_origin, mesh.n_vertices()));
-      const CovarianceMesh redone = apply_delta(mesh, forward);
-      const CovarianceMesh undone = apply_delta(r->mesh, back);
-      expect_same_mesh(redone, r->mesh);
-      expect_same_mesh(undone, mesh);
+      expect_deltas_restore(mesh, r->mesh, r->vertex_origin);
       if (step % 10 == 0) {  // and their files
+        const CovarianceMesh undone =
+            apply_delta(r->mesh, mesh_delta(r->mesh, mesh, inverse_origin(r->vertex_origin, mesh.n_vertices())));
         write_mesh(dir.file("a.ply"), mesh, true);
         write_mesh(dir.file("b.ply"), undone, true);
         EXPECT_EQ(file_bytes(dir.file("a.ply")), file_bytes(dir.file("b.ply")));
@@ -122,6 +98,31 @@ TEST(IncrementalUndo, OperationsAndTheirInversesRestoreEachOtherByteForByte) {
     }
   }
   EXPECT_GT(steps, 100);
+}
+
+// Each kind of operation, on each sample it applies to (up to a few tries at random elements): the
+// result and the mesh before restore each other. Every kind applies somewhere.
+TEST(IncrementalUndo, EveryKindOfOperationAndTheMeshBeforeRestoreEachOther) {
+  std::mt19937 rng(31);
+  std::vector<int> applied(size_t(test::kOperationKinds), 0);
+  for (const char* name : {"grid", "icosphere", "cylinder", "pawn-quads"}) {
+    const CovarianceMesh mesh = make_sample(name, 200);
+    for (int kind = 0; kind < test::kOperationKinds; ++kind)
+      for (int attempt = 0; attempt < 6; ++attempt) {
+        Modelled r;
+        try {
+          r = test::operation_of_kind(mesh, kind, rng);
+        } catch (const Error&) {
+          continue;
+        }
+        SCOPED_TRACE(std::string(name) + ", kind " + std::to_string(kind) + " (" + r.summary + ")");
+        expect_deltas_restore(mesh, r.mesh, r.vertex_origin);
+        ++applied[size_t(kind)];
+        break;
+      }
+  }
+  for (int kind = 0; kind < test::kOperationKinds; ++kind)
+    EXPECT_GT(applied[size_t(kind)], 0) << "operation kind " << kind << " applied to none of the samples";
 }
 
 // Without origins the vertices are matched by index; a delta of a mesh against itself holds nothing
@@ -156,6 +157,7 @@ TEST(IncrementalUndo, DeltasToldAgainAfterAMoveAreThoseMadeAfresh) {
                    : transform_vertices(mesh, {c.begin(), c.end()},
                                         AffineMap::about(mesh.mean(size_t(c[0])), 0.8 * Mat3::Identity()));
       if (!r) continue;
+      SCOPED_TRACE("step " + std::to_string(step) + " (" + r->summary + ")");
       MeshDelta forward = mesh_delta(mesh, r->mesh, r->vertex_origin);
       MeshDelta back = mesh_delta(r->mesh, mesh, inverse_origin(r->vertex_origin, mesh.n_vertices()));
       CovarianceMesh moved = r->mesh;
@@ -178,7 +180,8 @@ TEST(IncrementalUndo, DeltasToldAgainAfterAMoveAreThoseMadeAfresh) {
         if (const int o = r->vertex_origin.empty() ? -1 : r->vertex_origin[v]; o < 0)
           move(int(v), moved.mean(v) * 1.5, moved.covariance(v));
       const auto move_back = [&](int v) {  // onto the Gaussian its origin had before the operation
-        if (const int o = r->vertex_origin.empty() ? v : r->vertex_origin[size_t(v)]; o >= 0)
+        if (const int o = r->vertex_origin.empty() ? v : r->vertex_origin[size_t(v)];
+            o >= 0 && o < int(mesh.n_vertices()))
           move(v, mesh.mean(size_t(o)), mesh.covariance(size_t(o)));
       };
       for (int k = 0; k < 4; ++k) move_back(pick(rng));

@@ -137,6 +137,44 @@ TEST_F(IncrementalGpuBuffers, RandomOperationsMatchARendererSetAnew) {
   }
 }
 
+// Each kind of operation on a quad, an open creased quad and a creased triangle mesh (where it applies:
+// a few tries at random elements), followed and undone by one renderer: as one set anew both ways.
+TEST_F(IncrementalGpuBuffers, EveryKindOfOperationMatchesARendererSetAnew) {
+  std::vector<int> applied(size_t(test::kOperationKinds), 0);
+  std::mt19937 random(3);
+  const std::vector<test::RandomOperationCase> cases = test::random_operation_cases();
+  for (const size_t i : {size_t(0), size_t(1), size_t(4)}) {
+    const test::RandomOperationCase& c = cases[i];
+    PlanOptions options;
+    options.scheme = c.scheme;
+    const NormalisedFrame frame = NormalisedFrame::of(c.mesh);
+    SurfaceReplanner replanner(c.mesh.topology(), options, c.mesh.sharpness, test::kSmallRanges);
+    SurfaceRenderer renderer;
+    renderer.set_mesh(c.mesh, replanner.tables(), frame, replanner.last_change(), {});
+    for (int kind = 0; kind < test::kOperationKinds; ++kind)
+      for (int attempt = 0; attempt < 6; ++attempt) {
+        Modelled result;
+        try {
+          result = test::operation_of_kind(c.mesh, kind, random);
+          replanner.set_topology(result.mesh.topology(), result.mesh.sharpness, result.vertex_origin);
+        } catch (const Error&) {
+          continue;  // refused by the operation or the scheme
+        }
+        const std::string where = c.name + ", kind " + std::to_string(kind) + " (" + result.summary + ")";
+        renderer.set_mesh(result.mesh, replanner.tables(), frame, replanner.last_change(), result.vertex_origin);
+        expect_as_set_anew(renderer, result.mesh, frame, where);
+        const std::vector<int> back = inverse_origin(result.vertex_origin, c.mesh.n_vertices());
+        replanner.set_topology(c.mesh.topology(), c.mesh.sharpness, back);
+        renderer.set_mesh(c.mesh, replanner.tables(), frame, replanner.last_change(), back);
+        expect_as_set_anew(renderer, c.mesh, frame, where + ", undone");
+        ++applied[size_t(kind)];
+        break;
+      }
+  }
+  for (int kind = 0; kind < test::kOperationKinds; ++kind)
+    EXPECT_GT(applied[size_t(kind)], 0) << "operation kind " << kind << " applied to none of the meshes";
+}
+
 // Past kParallelFaces vertices and patches, the passes that find what a change reached run on all
 // cores: the same output as a renderer set anew.
 TEST_F(IncrementalGpuBuffers, RandomOperationsOnALargeMeshMatchARendererSetAnew) {
