@@ -46,7 +46,7 @@ public:
     if (!(o_.profile > 0 && o_.profile <= 1)) throw Error("profile " + short_number(o_.profile) + " is not in (0, 1]");
     if (!(std::isfinite(o_.crease) && o_.crease >= 0))
       throw Error("crease " + short_number(o_.crease) + " is not a sharpness (a number ≥ 0)");
-    edges_ = directed_edges(a_);
+    edges_ = DirectedEdges(mesh_);
     n_vertices_ = a_.n_vertices();
     n_faces_ = a_.n_faces();
     triangles_ = std::all_of(a_.faces.begin(), a_.faces.end(), [](const auto& f) { return f.size() == 3; });
@@ -109,10 +109,10 @@ private:
     auto [f, k] = first_corner_[size_t(v)];
     for (int step = 0; step < count; ++step) {
       const auto& face = a_.faces[size_t(f)];
-      const auto twin = edges_.find(directed_key(v, face[(size_t(k) + face.size() - 1) % face.size()]));
-      if (twin == edges_.end()) break;
-      f = twin->second.first;
-      k = twin->second.second;
+      const auto twin = edges_.place(directed_key(v, face[(size_t(k) + face.size() - 1) % face.size()]));
+      if (twin.first < 0) break;
+      f = twin.first;
+      k = twin.second;
     }
     const int f0 = f, k0 = k;
     Fan fan;
@@ -123,15 +123,15 @@ private:
       fan.faces.push_back(f);
       fan.corners.push_back(k);
       fan.around.push_back(face[(size_t(k) + n - 1) % n]);
-      const auto twin = edges_.find(directed_key(face[(size_t(k) + 1) % n], v));
-      if (twin == edges_.end()) {  // the outgoing boundary edge: the gap follows
+      const auto twin = edges_.place(directed_key(face[(size_t(k) + 1) % n], v));
+      if (twin.first < 0) {  // the outgoing boundary edge: the gap follows
         fan.around.push_back(face[(size_t(k) + 1) % n]);
         fan.faces.push_back(-1);
         fan.corners.push_back(-1);
         break;
       }
-      f = twin->second.first;
-      k = int((size_t(twin->second.second) + 1) % a_.faces[size_t(f)].size());
+      f = twin.first;
+      k = int((size_t(twin.second) + 1) % a_.faces[size_t(f)].size());
       if (fan.size() > count) break;
     } while (f != f0 || k != k0);
     if (fan.size() - (fan.open() ? 1 : 0) != count)

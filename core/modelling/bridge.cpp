@@ -244,7 +244,7 @@ Modelled bridge_faces(const CovarianceMesh& mesh, const std::vector<int>& faces)
     throw Error("the faces make " + count_of(region_roots.size(), "region", "regions") +
                 " (faces joined by edges); bridge needs exactly 2");
   // Each region's border: its edges whose other side is a face not chosen.
-  const DirectedEdges edges = directed_edges(a);
+  const DirectedEdges edges(mesh);
   std::array<std::vector<int>, 2> border;
   std::vector<int> region_of_vertex(size_t(a.n_vertices()), -1);
   // Per region: a face of it with a border edge on the mesh's boundary and one with a border edge

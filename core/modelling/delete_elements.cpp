@@ -88,20 +88,21 @@ std::vector<std::array<int, 2>> checked_edges(const DirectedEdges& de, const std
   return unique;
 }
 
-/// Faces being merged across edges. Each directed edge knows its current face; a merged polygon keeps
-/// the lower face index and the corner order of that face.
+/// Faces being merged across edges, in arrays made from `mesh` (arrays_of, unchanged when the merger is
+/// made). Each directed edge knows its current face: the mesh's, where no merge changed it. A merged
+/// polygon keeps the lower face index and the corner order of that face.
 class FaceMerger {
 public:
-  explicit FaceMerger(MeshArrays& a) : a_(a), alive_(size_t(a.n_faces()), 1), merged_into_(size_t(a.n_faces()), -1) {
-    for (const auto& [key, place] : directed_edges(a)) face_of_[key] = place.first;
-  }
+  FaceMerger(MeshArrays& a, const CovarianceMesh& mesh)
+      : a_(a), mesh_edges_(mesh), alive_(size_t(a.n_faces()), 1), merged_into_(size_t(a.n_faces()), -1) {}
 
-  bool has(int x, int y) const { return face_of_.count(directed_key(x, y)) != 0; }
+  bool has(int x, int y) const { return face_of(x, y) >= 0; }
 
   /// Removes the interior edge {p, q}, merging the faces on its two sides (`what` names the element
   /// being dissolved, for errors).
   void dissolve(int p, int q, const std::string& what) {
-    const int f = face_of_.at(directed_key(p, q)), g = face_of_.at(directed_key(q, p));
+    const int f = face_of(p, q), g = face_of(q, p);
+    if (f < 0 || g < 0) throw Error("dissolving " + what + " would open the mesh at " + edge_name(p, q));
     if (f == g) {
       remove_spike(f, p, q, what);
     } else {
@@ -113,14 +114,16 @@ public:
       std::vector<int> merged(k_face.begin(), k_face.begin() + long(i) + 1);
       for (size_t step = 2; step < n; ++step) merged.push_back(o_face[(j + step) % n]);
       merged.insert(merged.end(), k_face.begin() + long(i) + 1, k_face.end());
-      for (size_t c = 0; c < n; ++c) face_of_[directed_key(o_face[c], o_face[(c + 1) % n])] = keep;
+      for (size_t c = 0; c < n; ++c) changed_[directed_key(o_face[c], o_face[(c + 1) % n])] = keep;
       a_.faces[size_t(keep)] = std::move(merged);
       a_.faces[size_t(other)].clear();
       alive_[size_t(other)] = 0;
       merged_into_[size_t(other)] = keep;
+      touched_.push_back(keep);
     }
-    face_of_.erase(directed_key(p, q));
-    face_of_.erase(directed_key(q, p));
+    changed_[directed_key(p, q)] = -1;
+    changed_[directed_key(q, p)] = -1;
+    touched_.push_back(f);
   }
 
   /// Removes the vertex v from the face that input face `f` is now part of: its edges u → v → w
@@ -131,9 +134,10 @@ public:
     const size_t c = size_t(std::find(face.begin(), face.end(), v) - face.begin()), n = face.size();
     const int u = face[(c + n - 1) % n], w = face[(c + 1) % n];
     face.erase(face.begin() + long(c));
-    face_of_.erase(directed_key(u, v));
-    face_of_.erase(directed_key(v, w));
-    face_of_[directed_key(u, w)] = f;
+    changed_[directed_key(u, v)] = -1;
+    changed_[directed_key(v, w)] = -1;
+    changed_[directed_key(u, w)] = f;
+    touched_.push_back(f);
   }
 
   /// The face input face `f` is now part of.
@@ -163,9 +167,12 @@ public:
     return true;
   }
 
-  /// Refuses a face left with fewer than 3 corners or a vertex twice; then drops the merged-away faces.
+  /// Refuses a face left with fewer than 3 corners or a vertex twice (only a face changed can be); then
+  /// drops the merged-away faces.
   void finish() {
-    for (int f = 0; f < a_.n_faces(); ++f) {
+    std::sort(touched_.begin(), touched_.end());
+    touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+    for (const int f : touched_) {
       if (!alive_[size_t(f)]) continue;
       std::vector<int> corners = a_.faces[size_t(f)];
       if (corners.size() < 3)
@@ -204,10 +211,19 @@ private:
     face.erase(face.begin() + long(std::min(tip, repeat)));
   }
 
+  /// The face that now runs x → y, or −1.
+  int face_of(int x, int y) const {
+    const uint64_t key = directed_key(x, y);
+    if (const auto it = changed_.find(key); it != changed_.end()) return it->second;
+    return mesh_edges_.place(key).first;
+  }
+
   MeshArrays& a_;
+  const DirectedEdges mesh_edges_;  ///< the mesh's, before any merge
   std::vector<char> alive_;
   std::vector<int> merged_into_;  ///< by merged-away face: the face it went into
-  std::unordered_map<uint64_t, int> face_of_;
+  std::unordered_map<uint64_t, int> changed_;  ///< directed edges whose face a merge changed (−1: gone)
+  std::vector<int> touched_;                   ///< faces a merge changed
 };
 
 Modelled merged(const CovarianceMesh& mesh, MeshArrays& a, FaceMerger& merger, const std::string& head) {
@@ -250,7 +266,7 @@ std::vector<int> delete_edges_in(MeshArrays& a, const std::vector<std::array<int
   std::vector<char> removed(size_t(a.n_faces()), 0);
   for (const auto& [x, y] : chosen)
     for (const uint64_t key : {directed_key(x, y), directed_key(y, x)})
-      if (const auto it = de.find(key); it != de.end()) removed[size_t(it->second.first)] = 1;
+      if (const int f = de.place(key).first; f >= 0) removed[size_t(f)] = 1;
   summary = without_faces(a, removed, "deleted " + count_of(chosen.size(), "edge", "edges"), true);
   return {};
 }
@@ -288,20 +304,21 @@ Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& v
   MeshArrays a = arrays_of(mesh);
   if (vertices.empty()) throw Error("no vertices are selected");
   const std::vector<int> chosen = sorted_vertices(a, vertices);
-  // The vertices after each vertex in its faces, its faces and its last face, in the input mesh.
+  // Per chosen vertex: the vertices after it in its faces, its faces (in face order) and its last
+  // face, from the mesh's rows.
+  const PolygonTopology& t = mesh.topology();
+  const MeshConnectivity& c = mesh.connectivity();
   std::vector<std::vector<int>> next(size_t(a.n_vertices())), faces_of(size_t(a.n_vertices()));
   std::vector<int> face_of_vertex(size_t(a.n_vertices()), -1);
   std::vector<char> on_boundary(size_t(a.n_vertices()), 0);
-  const DirectedEdges de = directed_edges(a);
-  for (int f = 0; f < a.n_faces(); ++f) {
-    const auto& face = a.faces[size_t(f)];
-    for (size_t k = 0; k < face.size(); ++k) {
-      const int v = face[k], w = face[(k + 1) % face.size()];
-      next[size_t(v)].push_back(w);
+  for (const int v : chosen) {
+    for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i) {
+      const int f = c.vertex_faces[size_t(i)], k = c.vertex_face_corners[size_t(i)];
+      next[size_t(v)].push_back(t.verts[size_t(t.offsets[size_t(f)] + (k + 1) % t.face_size(f))]);
       faces_of[size_t(v)].push_back(f);
       face_of_vertex[size_t(v)] = f;
-      if (!de.count(directed_key(w, v))) on_boundary[size_t(v)] = on_boundary[size_t(w)] = 1;
     }
+    on_boundary[size_t(v)] = mesh.is_boundary_vertex(size_t(v));
   }
   for (int v : chosen)
     if (on_boundary[size_t(v)] && next[size_t(v)].size() != 1)
@@ -309,7 +326,7 @@ Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& v
                   count_of(next[size_t(v)].size(), "face", "faces") +
                   " (only a boundary vertex of a single face can be dissolved)");
 
-  FaceMerger merger(a);
+  FaceMerger merger(a, mesh);
   // As Blender dissolves them: first the edges between two of the interior vertices, then each vertex
   // left between two edges in a line joins them, and the faces around any other merge into one. So the
   // vertices of a loop cut give back the faces it cut.
@@ -334,20 +351,20 @@ Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& v
 
 Modelled dissolve_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
   MeshArrays a = arrays_of(mesh);
-  const std::vector<std::array<int, 2>> chosen = checked_edges(directed_edges(a), edges, true);
-  // The faces of the edges' ends, for the ends left between two edges in a line.
-  std::vector<std::vector<int>> faces_of(size_t(a.n_vertices()));
-  std::vector<char> end(size_t(a.n_vertices()), 0);
-  for (const auto& [x, y] : chosen) end[size_t(x)] = end[size_t(y)] = 1;
-  for (int f = 0; f < a.n_faces(); ++f)
-    for (const int v : a.faces[size_t(f)])
-      if (end[size_t(v)]) faces_of[size_t(v)].push_back(f);
-  FaceMerger merger(a);
+  const std::vector<std::array<int, 2>> chosen = checked_edges(DirectedEdges(mesh), edges, true);
+  // The edges' ends, with their faces in face order, for the ends left between two edges in a line.
+  const MeshConnectivity& c = mesh.connectivity();
+  std::vector<int> ends;
+  for (const auto& [x, y] : chosen) ends.insert(ends.end(), {x, y});
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  FaceMerger merger(a, mesh);
   for (const auto& [x, y] : chosen) merger.dissolve(x, y, edge_name(x, y));
   // As Blender's Dissolve Edges (its Dissolve Vertices on): an end left between two edges in a line
   // joins them, so that dissolving a loop cut's edges gives back the faces it cut.
-  for (int v = 0; v < a.n_vertices(); ++v)
-    if (end[size_t(v)]) merger.join_edges_at(v, faces_of[size_t(v)]);
+  for (const int v : ends)
+    merger.join_edges_at(v, std::vector<int>(c.vertex_faces.begin() + c.vertex_face_offsets[size_t(v)],
+                                             c.vertex_faces.begin() + c.vertex_face_offsets[size_t(v) + 1]));
   return merged(mesh, a, merger, "dissolved " + count_of(chosen.size(), "edge", "edges"));
 }
 

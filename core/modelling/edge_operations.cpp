@@ -22,7 +22,7 @@ void check_edge(const MeshArrays& arrays, const DirectedEdges& edges, int a, int
 
 Modelled split_edge(const CovarianceMesh& mesh, int a, int b, double t) {
   MeshArrays arrays = arrays_of(mesh);
-  const DirectedEdges edges = directed_edges(arrays);
+  const DirectedEdges edges(mesh);
   check_edge(arrays, edges, a, b);
   if (!(t > 0 && t < 1)) {
     std::ostringstream value;
@@ -61,7 +61,7 @@ int add_edge_vertex(MeshArrays& arrays, int a, int b, double t) {
 
 Modelled flip_edge(const CovarianceMesh& mesh, int a, int b) {
   MeshArrays arrays = arrays_of(mesh);
-  const DirectedEdges edges = directed_edges(arrays);
+  const DirectedEdges edges(mesh);
   check_edge(arrays, edges, a, b);
   if (is_boundary_edge(edges, a, b)) throw Error(edge_name(a, b) + " is on the boundary");
   const auto [f, k] = face_of_edge(edges, a, b);  // [a, b, c]

@@ -125,13 +125,12 @@ FaceRegion face_region(const MeshArrays& a, const std::vector<int>& faces) {
     const auto& face = a.faces[size_t(f)];
     for (int k = 0; k < int(face.size()); ++k) {
       const int v = face[size_t(k)], w = face[(size_t(k) + 1) % face.size()];
-      const auto twin = edges.find(directed_key(w, v));
-      if (twin == edges.end()) {
+      const auto [g, j] = edges.place(directed_key(w, v));  // g has w → v at corner j, so v is its corner j + 1
+      if (g < 0) {
         on_boundary[size_t(corner_id(f, k))] = 1;
         boundary_vertex[size_t(v)] = boundary_vertex[size_t(w)] = 1;
         r.boundary.emplace_back(f, k);
       } else {
-        const auto [g, j] = twin->second;  // g has w → v at corner j, so v is its corner j + 1
         corners.unite(corner_id(f, k), corner_id(g, j + 1));
         pieces.unite(slot[size_t(f)], slot[size_t(g)]);
       }
@@ -240,7 +239,7 @@ Modelled extrude_edges(const CovarianceMesh& mesh, const std::vector<std::array<
   check_offset(offset);
   if (edges.empty()) throw Error("no edges are selected");
   MeshArrays a = arrays_of(mesh);
-  const DirectedEdges de = directed_edges(a);
+  const DirectedEdges de(mesh);
   std::vector<std::pair<int, int>> directed;
   std::set<uint64_t> seen;
   for (const auto& [x, y] : edges) {
@@ -267,7 +266,7 @@ Modelled extrude_vertices(const CovarianceMesh& mesh, const std::vector<int>& ve
   }
   if (!region.empty()) return extruded_faces(mesh, a, face_region(a, region), offset);
 
-  const DirectedEdges de = directed_edges(a);
+  const DirectedEdges de(mesh);
   std::vector<std::pair<int, int>> directed;
   for (const auto& face : a.faces)
     for (size_t k = 0; k < face.size(); ++k) {

@@ -61,7 +61,7 @@ Modelled fill(const CovarianceMesh& mesh, const std::vector<int>& vertices) {
   }
   const BoundaryPlaces b = boundary_places(mesh);
   for (int v : vertices) check_open(mesh, b, v);
-  const DirectedEdges edges = directed_edges(a);
+  const DirectedEdges edges(mesh);
   // Each existing boundary edge among the new face's votes for the direction that runs opposite to it.
   int keep = 0, reverse = 0;
   const size_t n = vertices.size();

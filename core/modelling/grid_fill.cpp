@@ -58,7 +58,7 @@ Modelled grid_fill(const CovarianceMesh& mesh, const std::vector<int>& loop, int
                 " vertices (from 1 to " + std::to_string(half - 1) + ")");
 
   // The ring runs along the loop's faces' boundary half-edges (each edge has a face one way only).
-  const DirectedEdges edges = directed_edges(a);
+  const DirectedEdges edges(mesh);
   int along = 0;
   for (int k = 0; k < n; ++k) {
     const int u = loop[size_t(k)], w = loop[size_t((k + 1) % n)];

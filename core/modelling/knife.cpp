@@ -300,7 +300,7 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
   std::vector<std::vector<int>> faces_at(size_t(a.n_vertices()));
   for (int f = 0; f < a.n_faces(); ++f)
     for (int v : a.faces[size_t(f)]) faces_at[size_t(v)].push_back(f);
-  const DirectedEdges edges = directed_edges(a);
+  const DirectedEdges edges(mesh);
   Place start = places[0];
   std::vector<Step> steps;
   for (size_t i = 0; i + 1 < places.size(); ++i) {

@@ -350,10 +350,30 @@ void DirectedEdges::emplace(uint64_t key, std::pair<int, int> place) {
   entries_.emplace_back(key, place);
 }
 
+std::pair<int, int> DirectedEdges::place(uint64_t key) const {
+  if (!shape_) {
+    const const_iterator it = find(key);
+    return it == entries_.end() ? std::pair<int, int>(-1, -1) : it->second;
+  }
+  const PolygonTopology& t = shape_->topology;
+  const MeshConnectivity& c = shape_->connectivity;
+  const int a = int(uint32_t(key >> 32)), b = int(uint32_t(key));
+  if (a < 0 || b < 0 || a >= t.n_vertices || b >= t.n_vertices) return {-1, -1};
+  const int e = c.find_edge(a, b);
+  for (int side = 0; e >= 0 && side < 2; ++side) {
+    const int f = c.edge_faces[2 * size_t(e) + size_t(side)];
+    if (f < 0) continue;
+    const int first = t.offsets[size_t(f)], n = t.face_size(f);
+    for (int k = 0; k < n; ++k)
+      if (t.verts[size_t(first + k)] == a && t.verts[size_t(first + (k + 1) % n)] == b) return {f, k};
+  }
+  return {-1, -1};
+}
+
 DirectedEdges::const_iterator DirectedEdges::find(uint64_t key) const {
-  if (slots_.empty()) return end();
+  if (slots_.empty()) return entries_.end();
   const int i = slots_[slot_of(key)];
-  return i < 0 ? end() : entries_.begin() + i;
+  return i < 0 ? entries_.end() : entries_.begin() + i;
 }
 
 DirectedEdges directed_edges(const MeshArrays& a) {
@@ -369,10 +389,7 @@ DirectedEdges directed_edges(const MeshArrays& a) {
   return edges;
 }
 
-std::pair<int, int> face_of_edge(const DirectedEdges& edges, int u, int v) {
-  const auto it = edges.find(directed_key(u, v));
-  return it == edges.end() ? std::pair<int, int>(-1, -1) : it->second;
-}
+std::pair<int, int> face_of_edge(const DirectedEdges& edges, int u, int v) { return edges.place(directed_key(u, v)); }
 
 bool has_edge(const DirectedEdges& e, int a, int b) {
   return e.count(directed_key(a, b)) != 0 || e.count(directed_key(b, a)) != 0;

@@ -142,27 +142,33 @@ inline uint64_t directed_key(int a, int b) { return (uint64_t(uint32_t(a)) << 32
 inline uint64_t edge_key(int a, int b) { return a < b ? directed_key(a, b) : directed_key(b, a); }
 
 /// Where each directed edge a → b of the faces lies: (face, corner of a in it), looked up by
-/// directed_key(a, b). A flat open-addressing table: built once per operation over every corner of
-/// the mesh, where a node-based map's allocations would cost more than the operation.
+/// directed_key(a, b). Either a flat open-addressing table, built over every corner of some arrays
+/// (directed_edges), or a mesh's own faces looked up through its connectivity as asked, for arrays
+/// that are still arrays_of(mesh): nothing built, at the cost of the edges asked about.
 class DirectedEdges {
 public:
   using Entry = std::pair<uint64_t, std::pair<int, int>>;
   using const_iterator = std::vector<Entry>::const_iterator;
 
-  /// Adds the edge unless it is there already.
+  DirectedEdges() = default;
+  /// The directed edges of `mesh`'s faces (whose shape it shares).
+  explicit DirectedEdges(const CovarianceMesh& mesh) : shape_(mesh.shape()) {}
+
+  /// Where the edge lies, or (−1, −1) where no face has it.
+  std::pair<int, int> place(uint64_t key) const;
+  size_t count(uint64_t key) const { return place(key).first >= 0 ? 1 : 0; }
+
+  /// A table's own: adds the edge unless it is there already.
   void emplace(uint64_t key, std::pair<int, int> place);
-  const_iterator find(uint64_t key) const;
-  size_t count(uint64_t key) const { return find(key) != end() ? 1 : 0; }
-  size_t size() const { return entries_.size(); }
   void reserve(size_t n);
-  const_iterator begin() const { return entries_.begin(); }
-  const_iterator end() const { return entries_.end(); }
 
 private:
+  const_iterator find(uint64_t key) const;
   size_t slot_of(uint64_t key) const;  // the slot holding `key`, or the empty slot where it would go
   std::vector<Entry> entries_;         // in insertion order
   std::vector<int> slots_;             // index into entries_, −1 empty; a power of two, at most half full
   std::vector<uint64_t> slot_keys_;    // per slot, its entry's key: a probe reads one array, not two
+  std::shared_ptr<const MeshShape> shape_;  // the mesh looked up instead of a table, where set
 };
 DirectedEdges directed_edges(const MeshArrays& arrays);
 

@@ -84,7 +84,7 @@ Modelled mirror(const CovarianceMesh& mesh, int axis, const Vec3& center, bool m
   std::vector<char> merged(size_t(n_vertices), 0);
   for (int v = 0; v < n_vertices; ++v) merged[size_t(v)] = images[size_t(v)] == v;
   // The seam: merged vertices must be joined by boundary edges along the plane, each with one face.
-  const DirectedEdges edges = directed_edges(a);
+  const DirectedEdges edges(mesh);
   std::vector<char> on_seam(size_t(n_vertices), 0), used(size_t(n_vertices), 0);
   for (int f = 0; f < n_faces; ++f) {
     const std::vector<int>& face = a.faces[size_t(f)];

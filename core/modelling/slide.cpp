@@ -77,10 +77,10 @@ std::vector<int> slide_targets(const MeshArrays& arrays, const DirectedEdges& ed
   for (size_t i = 0; i < links; ++i) {
     const size_t j = (i + 1) % n;
     const int v = p.path[i], w = p.path[j];
-    const auto it = edges.find(left ? directed_key(v, w) : directed_key(w, v));
-    if (it == edges.end()) continue;
-    const std::vector<int>& face = arrays.faces[size_t(it->second.first)];
-    const size_t m = face.size(), k = size_t(it->second.second);  // face[k] is v (left) or w
+    const auto [f, corner] = edges.place(left ? directed_key(v, w) : directed_key(w, v));
+    if (f < 0) continue;
+    const std::vector<int>& face = arrays.faces[size_t(f)];
+    const size_t m = face.size(), k = size_t(corner);  // face[k] is v (left) or w
     const auto at = [&](size_t c) { return face[c % m]; };
     if (left) {
       offer(i, at(k + m - 1));  // v's other edge in the face, before it
@@ -109,7 +109,7 @@ std::vector<int> slide_targets(const MeshArrays& arrays, const DirectedEdges& ed
 Modelled edge_slide(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, double factor,
                     bool even) {
   const MeshArrays original = arrays_of(mesh);
-  const DirectedEdges directed = directed_edges(original);
+  const DirectedEdges directed(mesh);
   if (edges.empty()) throw Error("no edges to slide");
   if (!(std::abs(factor) <= 1)) throw usage_error("the slide factor must be in [-1, 1], got " + short_number(factor));
   std::unordered_set<uint64_t> selected;
@@ -154,7 +154,7 @@ Modelled edge_slide(const CovarianceMesh& mesh, const std::vector<std::array<int
 
 Modelled vertex_slide(const CovarianceMesh& mesh, int vertex, int toward, double factor) {
   MeshArrays a = arrays_of(mesh);
-  check_edge(a, directed_edges(a), vertex, toward);
+  check_edge(a, DirectedEdges(mesh), vertex, toward);
   if (!(factor >= 0 && factor <= 1))
     throw usage_error("the slide factor must be in [0, 1], got " + short_number(factor));
   const Gaussian g = slid_gaussian(a, vertex, toward, factor);

@@ -47,7 +47,7 @@ Modelled spin(const CovarianceMesh& mesh, const std::vector<int>& vertices, cons
   std::vector<std::array<size_t, 2>> edges;
   for (size_t i = 0; i + 1 < profile.size(); ++i) edges.push_back({i, i + 1});
   if (loop) edges.push_back({profile.size() - 1, 0});
-  const DirectedEdges directed = directed_edges(a);
+  const DirectedEdges directed(mesh);
   int direction = 0;  // 1: (u_k, v_k, v_k+1, u_k+1) for profile edge u → v; −1: reversed; 0: not yet known
   for (const auto& [i, j] : edges) {
     const int u = profile[i], v = profile[j];

@@ -19,16 +19,7 @@ using test::signed_volume;
 using test::error_of;
 using V = std::vector<int>;
 
-int boundary_edges_of_oriented(const CovarianceMesh& m) {
-  const MeshArrays a = arrays_of(m);
-  const DirectedEdges edges = directed_edges(a);
-  size_t corners = 0;
-  for (const auto& face : a.faces) corners += face.size();
-  EXPECT_EQ(edges.size(), corners) << "a directed edge is used twice";
-  int boundary = 0;
-  for (const auto& [key, where] : edges) boundary += edges.count((key << 32) | (key >> 32)) == 0;
-  return boundary;
-}
+using test::boundary_edges_of_oriented;
 
 // The cube of side 2 without its top face {4, 5, 6, 7}.
 CovarianceMesh holed_cube() {

@@ -6,6 +6,7 @@
 #include "core/modelling/samples.h"
 #include "tests/support/error_of.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
@@ -13,17 +14,7 @@ namespace {
 using test::error_of;
 using V = std::vector<int>;
 
-// Every directed edge once, so the mesh is consistently oriented; returns the number of boundary edges.
-int boundary_edges_of_oriented(const CovarianceMesh& m) {
-  const MeshArrays a = arrays_of(m);
-  const DirectedEdges edges = directed_edges(a);
-  size_t corners = 0;
-  for (const auto& face : a.faces) corners += face.size();
-  EXPECT_EQ(edges.size(), corners) << "a directed edge is used twice";
-  int boundary = 0;
-  for (const auto& [key, where] : edges) boundary += edges.count((key << 32) | (key >> 32)) == 0;
-  return boundary;
-}
+using test::boundary_edges_of_oriented;
 
 // A 2 × 2 grid (vertex j·3 + i) whose covariances differ from vertex to vertex.
 CovarianceMesh varied_grid() {

@@ -7,22 +7,14 @@
 #include "core/support/error.h"
 #include "core/modelling/samples.h"
 #include "tests/support/error_of.h"
+#include "tests/support/mesh_checks.h"
 
 namespace gps {
 namespace {
 
 using test::error_of;
 
-int boundary_edges_of_oriented(const CovarianceMesh& m) {
-  const MeshArrays a = arrays_of(m);
-  const DirectedEdges edges = directed_edges(a);
-  size_t corners = 0;
-  for (const auto& face : a.faces) corners += face.size();
-  EXPECT_EQ(edges.size(), corners) << "a directed edge is used twice";
-  int boundary = 0;
-  for (const auto& [key, where] : edges) boundary += edges.count((key << 32) | (key >> 32)) == 0;
-  return boundary;
-}
+using test::boundary_edges_of_oriented;
 
 // Σ over faces of the fan triangles' signed volumes about `origin`, and of their area vectors.
 void volume_and_area(const CovarianceMesh& m, const Vec3& origin, double& volume, Vec3& area) {

@@ -37,6 +37,13 @@ inline Shape shape_of(const MeshArrays& a) {
 }
 inline Shape shape_of(const CovarianceMesh& mesh) { return shape_of(arrays_of(mesh)); }
 
+/// The boundary edges of a mesh that must be consistently oriented (every directed edge once).
+inline int boundary_edges_of_oriented(const CovarianceMesh& mesh) {
+  const Shape s = shape_of(mesh);
+  EXPECT_TRUE(s.oriented) << "a directed edge is used twice";
+  return s.boundary_edges;
+}
+
 /// The volume the faces from `first_face` on enclose (fanned from each face's first corner), positive
 /// where they are oriented outward.
 inline double signed_volume(const MeshArrays& a, size_t first_face = 0) {
