@@ -260,8 +260,11 @@ std::vector<int> delete_vertices_in(MeshArrays& a, const std::vector<int>& verti
   return {};
 }
 
-std::vector<int> delete_edges_in(MeshArrays& a, const std::vector<std::array<int, 2>>& edges, std::string& summary) {
-  const DirectedEdges de = directed_edges(a);
+namespace {
+
+// delete_edges_in with the arrays' directed edges `de`.
+std::vector<int> delete_edges_with(MeshArrays& a, const DirectedEdges& de, const std::vector<std::array<int, 2>>& edges,
+                                   std::string& summary) {
   const std::vector<std::array<int, 2>> chosen = checked_edges(de, edges, false);
   std::vector<char> removed(size_t(a.n_faces()), 0);
   for (const auto& [x, y] : chosen)
@@ -269,6 +272,12 @@ std::vector<int> delete_edges_in(MeshArrays& a, const std::vector<std::array<int
       if (const int f = de.place(key).first; f >= 0) removed[size_t(f)] = 1;
   summary = without_faces(a, removed, "deleted " + count_of(chosen.size(), "edge", "edges"), true);
   return {};
+}
+
+}  // namespace
+
+std::vector<int> delete_edges_in(MeshArrays& a, const std::vector<std::array<int, 2>>& edges, std::string& summary) {
+  return delete_edges_with(a, directed_edges(a), edges, summary);
 }
 
 Modelled delete_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) {
@@ -297,7 +306,9 @@ Modelled delete_vertices(const CovarianceMesh& mesh, const std::vector<int>& ver
 }
 
 Modelled delete_edges(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges) {
-  return modelled_by(mesh, [&](MeshArrays& a, std::string& summary) { return delete_edges_in(a, edges, summary); });
+  return modelled_by(mesh, [&](MeshArrays& a, std::string& summary) {
+    return delete_edges_with(a, DirectedEdges(mesh), edges, summary);
+  });
 }
 
 Modelled dissolve_vertices(const CovarianceMesh& mesh, const std::vector<int>& vertices) {

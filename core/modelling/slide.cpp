@@ -108,7 +108,8 @@ std::vector<int> slide_targets(const MeshArrays& arrays, const DirectedEdges& ed
 
 Modelled edge_slide(const CovarianceMesh& mesh, const std::vector<std::array<int, 2>>& edges, double factor,
                     bool even) {
-  const MeshArrays original = arrays_of(mesh);
+  MeshArrays arrays = arrays_of(mesh);
+  const MeshArrays& original = arrays;  // read for every path before any vertex moves
   const DirectedEdges directed(mesh);
   if (edges.empty()) throw Error("no edges to slide");
   if (!(std::abs(factor) <= 1)) throw usage_error("the slide factor must be in [-1, 1], got " + short_number(factor));
@@ -126,8 +127,8 @@ Modelled edge_slide(const CovarianceMesh& mesh, const std::vector<std::array<int
     }
   }
   const std::vector<SelectedPath> paths = selected_paths(edges, neighbours);
-  MeshArrays a = original;
   std::vector<int> moved;
+  std::vector<Gaussian> slid;
   for (const SelectedPath& p : paths) {
     moved.insert(moved.end(), p.path.begin(), p.path.end());
     if (factor == 0) continue;
@@ -140,13 +141,15 @@ Modelled edge_slide(const CovarianceMesh& mesh, const std::vector<std::array<int
       const double t = !even          ? std::abs(factor)
                        : shortest > 0 ? std::min(1.0, std::abs(factor) * shortest / length[i])
                                       : 0.0;
-      const Gaussian g = slid_gaussian(original, p.path[i], target[i], t);
-      a.means[size_t(p.path[i])] = g.mean;
-      a.covariances[size_t(p.path[i])] = g.covariance;
+      slid.push_back(slid_gaussian(original, p.path[i], target[i], t));
     }
   }
+  for (size_t i = 0; i < slid.size(); ++i) {
+    arrays.means[size_t(moved[i])] = slid[i].mean;
+    arrays.covariances[size_t(moved[i])] = slid[i].covariance;
+  }
   std::sort(moved.begin(), moved.end());
-  Modelled out = modelled(mesh, std::move(a), moved);
+  Modelled out = modelled(mesh, std::move(arrays), moved);
   out.summary = "slid " + count_of(moved.size(), "vertex", "vertices") + " of " +
                 count_of(selected.size(), "edge", "edges") + " by " + short_number(factor) + (even ? " (even)" : "");
   return out;

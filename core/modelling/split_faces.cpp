@@ -26,11 +26,19 @@ Modelled split_faces(const CovarianceMesh& mesh, const std::vector<int>& faces) 
   const FaceRegion split = face_region(a, faces);
   if (int(split.faces.size()) == a.n_faces())
     throw Error("every face is selected: there is nothing to split them from");
+  // The other faces around the split faces' vertices: all of the rest that the cut reaches (a vertex's
+  // sectors of the rest are those of the rest's faces around it).
+  const std::vector<char> used_by_split = used_by(a, split);
+  const MeshConnectivity& c = mesh.connectivity();
   std::vector<int> others;
-  for (int f = 0; f < a.n_faces(); ++f)
-    if (!split.in_region[size_t(f)]) others.push_back(f);
-  const FaceRegion rest = face_region(a, others);
-  const std::vector<char> used_by_split = used_by(a, split), used_by_rest = used_by(a, rest);
+  for (const int f : split.faces)
+    for (const int v : a.faces[size_t(f)])
+      for (int i = c.vertex_face_offsets[size_t(v)]; i < c.vertex_face_offsets[size_t(v) + 1]; ++i)
+        if (const int g = c.vertex_faces[size_t(i)]; !split.in_region[size_t(g)]) others.push_back(g);
+  std::sort(others.begin(), others.end());
+  others.erase(std::unique(others.begin(), others.end()), others.end());
+  const FaceRegion rest = others.empty() ? FaceRegion{} : face_region(a, others);
+  const std::vector<char> used_by_rest = used_by(a, rest);
 
   // The creases of every face's edges, by (face, corner), to be set again on the edges as renumbered.
   std::vector<std::tuple<int, size_t, double>> creased;
