@@ -162,9 +162,11 @@ Place run_on(const MeshArrays& m, const Place& inside, const Vec3& before, const
 }
 
 // The faces the cut may go on into from a place.
-std::vector<int> faces_from(const Place& p, const std::vector<std::vector<int>>& faces_at, const DirectedEdges& edges) {
+std::vector<int> faces_from(const Place& p, const MeshConnectivity& faces_at, const DirectedEdges& edges) {
   if (p.kind == Place::inside) return {p.face};
-  if (p.kind == Place::vertex) return faces_at[size_t(p.a)];
+  if (p.kind == Place::vertex)
+    return {faces_at.vertex_faces.begin() + faces_at.vertex_face_offsets[size_t(p.a)],
+            faces_at.vertex_faces.begin() + faces_at.vertex_face_offsets[size_t(p.a) + 1]};
   std::vector<int> out;
   for (const int f : {face_of_edge(edges, p.a, p.b).first, face_of_edge(edges, p.b, p.a).first})
     if (f >= 0) out.push_back(f);
@@ -172,17 +174,15 @@ std::vector<int> faces_from(const Place& p, const std::vector<std::vector<int>>&
 }
 
 // The normal of the surface at a place: the sum of the unit normals of the faces holding it.
-Vec3 normal_at(const MeshArrays& m, const Place& p, const std::vector<std::vector<int>>& faces_at,
-               const DirectedEdges& edges) {
+Vec3 normal_at(const MeshArrays& m, const Place& p, const MeshConnectivity& faces_at, const DirectedEdges& edges) {
   Vec3 n = Vec3::Zero();
   for (const int f : faces_from(p, faces_at, edges)) n += unit_normal(m, f);
   return n.normalized();
 }
 
 // The steps of the cut from one place to the next, face by face along the plane (segment i).
-std::vector<Step> walk_segment(const MeshArrays& m, const std::vector<std::vector<int>>& faces_at,
-                               const DirectedEdges& edges, Place from, const Place& to, const CutPlane& plane,
-                               double on_plane, size_t i) {
+std::vector<Step> walk_segment(const MeshArrays& m, const MeshConnectivity& faces_at, const DirectedEdges& edges,
+                               Place from, const Place& to, const CutPlane& plane, double on_plane, size_t i) {
   std::vector<Step> steps;
   int came_from = -1;
   Vec3 previous = from.at;
@@ -297,9 +297,8 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
   if (closed) places.back() = places.front();
 
   // The cut as a start and steps, each segment along its own plane.
-  std::vector<std::vector<int>> faces_at(size_t(a.n_vertices()));
-  for (int f = 0; f < a.n_faces(); ++f)
-    for (int v : a.faces[size_t(f)]) faces_at[size_t(v)].push_back(f);
+  // The faces at each vertex, in face order: the mesh's own rows (the arrays are still the mesh's).
+  const MeshConnectivity& faces_at = mesh.connectivity();
   const DirectedEdges edges(mesh);
   Place start = places[0];
   std::vector<Step> steps;
@@ -358,10 +357,23 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
   if (closed) on_cut.pop_back();
   for (auto& [key, cut] : on_edges) std::sort(cut.begin(), cut.end());
 
+  // The faces the cut reaches, in order: those it has chords in and those beside the edges it splits.
+  std::vector<int> reached;
+  for (const auto& [f, face_chords] : chords) reached.push_back(f);
+  for (const auto& [key, cut] : on_edges) {
+    const int low = int(uint32_t(key >> 32)), high = int(uint32_t(key));
+    for (const int f : {face_of_edge(edges, low, high).first, face_of_edge(edges, high, low).first})
+      if (f >= 0) reached.push_back(f);
+  }
+  std::sort(reached.begin(), reached.end());
+  reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
   const bool triangles = all_triangles(a);
   size_t split_faces = 0;
-  for (int f = 0; f < n_faces; ++f) {
+  const std::vector<std::vector<int>> no_chords;
+  for (const int f : reached) {
     const std::vector<int>& face = a.faces[size_t(f)];
+    const auto found = chords.find(f);
+    const std::vector<std::vector<int>>& face_chords = found == chords.end() ? no_chords : found->second;
     // The face with its edges' new vertices in order from each edge's start.
     std::vector<int> cycle;
     for (size_t k = 0; k < face.size(); ++k) {
@@ -375,8 +387,8 @@ Modelled knife(const CovarianceMesh& mesh, const std::vector<Vec3>& points) {
       }
     }
     std::vector<std::vector<int>> pieces = {cycle};
-    if (chords_cross(a, f, chords[f])) throw Error("the cut crosses itself in face " + std::to_string(f));
-    for (const std::vector<int>& c : chords[f]) {
+    if (chords_cross(a, f, face_chords)) throw Error("the cut crosses itself in face " + std::to_string(f));
+    for (const std::vector<int>& c : face_chords) {
       if (c.size() == 2 && neighbours(pieces, c[0], c[1])) continue;  // along an edge already there
       if (!split_along(pieces, c)) throw Error("the cut crosses itself in face " + std::to_string(f));
     }
