@@ -9,11 +9,15 @@
 
 #include "core/modelling/samples.h"
 #include "core/modelling/affine_transform.h"
+#include "core/modelling/bevel.h"
 #include "core/modelling/delete_elements.h"
+#include "core/modelling/edge_operations.h"
 #include "core/modelling/extrude.h"
 #include "core/modelling/inset.h"
+#include "core/modelling/knife.h"
 #include "core/modelling/loop_cut.h"
 #include "core/modelling/merge_vertices.h"
+#include "core/modelling/slide.h"
 #include "core/modelling/subdivide_mesh.h"
 #include "core/plans/surface_replanner.h"
 #include "core/support/error.h"
@@ -75,6 +79,28 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
       {"merge 2 vertices",
        [&](const CovarianceMesh& m) {
          return merge_vertices(m, {corners[0], corners[1]}, MergePoint::center);
+       }},
+      {"split 1 edge", [&](const CovarianceMesh& m) { return split_edge(m, corners[0], corners[1]); }},
+      {"dissolve 1 edge",
+       [&](const CovarianceMesh& m) {
+         return dissolve_edges(m, {{corners[0], corners[1]}});
+       }},
+      {"bevel 1 edge",
+       [&](const CovarianceMesh& m) {
+         BevelOptions bevel;
+         bevel.width = 0.2 * (m.mean(size_t(corners[0])) - m.mean(size_t(corners[1]))).norm();
+         return bevel_edges(m, {{corners[0], corners[1]}}, bevel);
+       }},
+      {"slide 1 edge",
+       [&](const CovarianceMesh& m) {
+         return edge_slide(m, {{corners[0], corners[1]}}, 0.3);
+       }},
+      {"knife 1 face",
+       [&](const CovarianceMesh& m) {
+         Vec3 centroid = Vec3::Zero();
+         for (const int v : corners) centroid += m.mean(size_t(v)) / double(corners.size());
+         const auto toward = [&](int k) { return 0.5 * (centroid + m.mean(size_t(corners[size_t(k)]))); };
+         return knife(m, {toward(0), toward(int(corners.size()) / 2)});
        }},
       {"transform all",
        [&](const CovarianceMesh& m) {
