@@ -88,6 +88,12 @@ std::optional<Place> place_of(const MeshArrays& m, const Vec3& p, double toleran
   double nearest = tolerance, lowest = 0;
   for (int f = 0; f < m.n_faces(); ++f) {
     const std::vector<int>& face = m.faces[size_t(f)];
+    // Passed over where p lies farther from the corners' box than an edge or over_face could take it:
+    // the tolerance and twice the box's diagonal, past any corner's distance from the face's plane.
+    Vec3 low = m.means[size_t(face[0])], high = low;
+    for (const int v : face) low = low.cwiseMin(m.means[size_t(v)]), high = high.cwiseMax(m.means[size_t(v)]);
+    const double margin = tolerance + 2 * (high - low).norm();
+    if (((low - p).array() > margin).any() || ((p - high).array() > margin).any()) continue;
     for (size_t k = 0; k < face.size(); ++k) {
       const int u = face[k], w = face[(k + 1) % face.size()];
       const Vec3 x = m.means[size_t(u)], e = m.means[size_t(w)] - x;

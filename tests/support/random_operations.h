@@ -106,7 +106,10 @@ inline Modelled operation_of_kind(const CovarianceMesh& m, int kind, std::mt1993
     return loops[size_t(pick(int(loops.size())))];
   };
   const std::span<const int> corners = m.face(size_t(f));
-  const Vec3 normal(1.0 + pick(3), -1.0 + pick(3), 0.5);
+  // Every draw a statement of its own: the order of a call's arguments is the compiler's, and one
+  // stream of draws must give every build the same operations.
+  const int nx = pick(3), ny = pick(3);
+  const Vec3 normal(1.0 + nx, -1.0 + ny, 0.5);
   switch (kind) {
     case 0:
       return extrude_faces(m, {f}, 0.05);
@@ -138,23 +141,37 @@ inline Modelled operation_of_kind(const CovarianceMesh& m, int kind, std::mt1993
       return transform_vertices(m, {v, a}, AffineMap::about(m.mean(size_t(v)), 0.8 * Mat3::Identity()));
     case 14:
       return extrude_faces(m, {f, (f + 1) % t.n_faces()}, -0.02);
-    case 15:
-      return edge_slide(m, {{a, b}}, pick(2) ? 0.4 : -0.4, pick(2) == 0);
+    case 15: {
+      const double factor = pick(2) ? 0.4 : -0.4;
+      const bool even = pick(2) == 0;
+      return edge_slide(m, {{a, b}}, factor, even);
+    }
     case 16:
       return vertex_slide(m, a, b, 0.3);
-    case 17:
+    case 17: {
       small();
-      return mirror(m, pick(3), m.mean(size_t(v)), pick(2) == 0);
-    case 18:
-      return spin(m, {a, b}, Vec3(0, 0, 1), m.mean(size_t(v)) + Vec3(0.5, 0, 0), 90.0, 1 + pick(3));
+      const int axis = pick(3);
+      const bool merge = pick(2) == 0;
+      return mirror(m, axis, m.mean(size_t(v)), merge);
+    }
+    case 18: {  // from a boundary edge where there is one (an edge with faces on both sides is refused)
+      const int steps = 1 + pick(3);
+      const std::vector<std::vector<int>> loops = boundary_loops(m);
+      const std::vector<int> profile =
+          loops.empty() ? std::vector<int>{a, b} : std::vector<int>{loops[0][0], loops[0][1]};
+      return spin(m, profile, Vec3(0, 0, 1), m.mean(size_t(v)) + Vec3(0.5, 0, 0), 90.0, steps);
+    }
     case 19:
       return bisect(m, m.mean(size_t(v)), normal);
     case 20:
       return bridge_faces(m, {f, pick(t.n_faces())});
     case 21:
       return fill_selected(m, boundary());
-    case 22:
-      return grid_fill_selected(m, boundary(), pick(3), pick(3));
+    case 22: {
+      const std::vector<int> loop = boundary();
+      const int span = pick(3), offset = pick(3);
+      return grid_fill_selected(m, loop, span, offset);
+    }
     case 23:
       return duplicate_faces(m, {f, (f + 1) % t.n_faces()}, Vec3(0.1, 0.2, 0.3));
     case 24:
@@ -184,8 +201,10 @@ inline Modelled operation_of_kind(const CovarianceMesh& m, int kind, std::mt1993
     case 34:
       small();
       return subdivide_all(m);
-    case 35:
-      return crease_sharp_edges(m, 20.0 + pick(40), sharpness[1 + pick(3)]);
+    case 35: {
+      const double degrees = 20.0 + pick(40), to = sharpness[1 + pick(3)];
+      return crease_sharp_edges(m, degrees, to);
+    }
     default: {  // two faces deleted and the holes they leave bridged
       const Modelled holes = delete_faces(m, {f, pick(t.n_faces())});
       const std::vector<std::vector<int>> loops = boundary_loops(holes.mesh);
