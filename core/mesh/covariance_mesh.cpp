@@ -201,9 +201,21 @@ void validate_gaussians(const CovarianceMesh& m, const std::string& source, cons
 
 void bounding_box(const CovarianceMesh& m, Vec3& lo, Vec3& hi) {
   lo = hi = m.n_vertices() == 0 ? Vec3::Zero() : m.mean(0);
-  for (size_t i = 1; i < m.n_vertices(); ++i) {
-    lo = lo.cwiseMin(m.mean(i));
-    hi = hi.cwiseMax(m.mean(i));
+  // A box per block of vertices on all cores, then joined (a minimum and a maximum in any order).
+  constexpr int kBlocks = 16;
+  const size_t n = m.n_vertices();
+  std::array<Vec3, kBlocks> block_lo, block_hi;
+  block_lo.fill(lo);
+  block_hi.fill(hi);
+#pragma omp parallel for schedule(static) if (n >= size_t(16 * kParallelFaces))
+  for (int b = 0; b < kBlocks; ++b)
+    for (size_t i = n * size_t(b) / kBlocks; i < n * size_t(b + 1) / kBlocks; ++i) {
+      block_lo[size_t(b)] = block_lo[size_t(b)].cwiseMin(m.mean(i));
+      block_hi[size_t(b)] = block_hi[size_t(b)].cwiseMax(m.mean(i));
+    }
+  for (int b = 0; b < kBlocks; ++b) {
+    lo = lo.cwiseMin(block_lo[size_t(b)]);
+    hi = hi.cwiseMax(block_hi[size_t(b)]);
   }
 }
 

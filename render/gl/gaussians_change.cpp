@@ -21,11 +21,12 @@ GaussiansChange gaussians_change(const FramedGaussians& before, const Covariance
   change.n_vertices = n;
   // Compared on all cores (nothing written but a flag per vertex), then listed in order.
   std::vector<char> differs(n);
+  const FrameMap map(frame);
 #pragma omp parallel for schedule(static) if (n >= size_t(kParallelFaces))
   for (size_t v = 0; v < n; ++v) {
     const size_t o = origin.empty() ? v : size_t(origin[v]);  // −1: past every vertex
-    differs[v] = o >= before.n_vertices() || frame.mean_in_frame(mesh.mean(v)) != before.means[o] ||
-                 frame.covariance_in_frame(mesh.covariance(v)) != before.covariances[o];
+    differs[v] = o >= before.n_vertices() || map.mean(mesh.mean(v)) != before.means[o] ||
+                 map.covariance(mesh.covariance(v)) != before.covariances[o];
   }
   for (size_t v = 0; v < n; ++v)
     if (differs[v]) change.changed.push_back(int(v));
@@ -35,8 +36,8 @@ GaussiansChange gaussians_change(const FramedGaussians& before, const Covariance
 #pragma omp parallel for schedule(static) if (n_changed >= kParallelFaces)
   for (long long i = 0; i < n_changed; ++i) {
     const size_t v = size_t(change.changed[size_t(i)]);
-    change.means[size_t(i)] = frame.mean_in_frame(mesh.mean(v));
-    change.covariances[size_t(i)] = frame.covariance_in_frame(mesh.covariance(v));
+    change.means[size_t(i)] = map.mean(mesh.mean(v));
+    change.covariances[size_t(i)] = map.covariance(mesh.covariance(v));
   }
   return change;
 }

@@ -76,10 +76,11 @@ FramedGaussians NormalisedFrame::gaussians_in_frame(const CovarianceMesh& mesh) 
   const size_t n = mesh.n_vertices();
   framed.means.resize(n);
   framed.covariances.resize(n);
+  const FrameMap map(*this);
 #pragma omp parallel for schedule(static) if (n >= size_t(kParallelFaces))
   for (size_t i = 0; i < n; ++i) {
-    framed.means[i] = mean_in_frame(mesh.mean(i));
-    framed.covariances[i] = covariance_in_frame(mesh.covariance(i));
+    framed.means[i] = map.mean(mesh.mean(i));
+    framed.covariances[i] = map.covariance(mesh.covariance(i));
   }
   return framed;
 }
@@ -107,10 +108,11 @@ std::vector<int> changed_gaussians(const FramedGaussians& before, const Covarian
   framed.covariances.resize(n);
   // Framed and compared on all cores, then listed in order.
   std::vector<char> differs(n);
+  const FrameMap map(frame);
 #pragma omp parallel for schedule(static) if (n >= size_t(kParallelFaces))
   for (size_t v = 0; v < n; ++v) {
-    const Vec3 mean = frame.mean_in_frame(mesh.mean(v));
-    const Mat3 covariance = frame.covariance_in_frame(mesh.covariance(v));
+    const Vec3 mean = map.mean(mesh.mean(v));
+    const Mat3 covariance = map.covariance(mesh.covariance(v));
     const size_t o = origin.empty() ? v : size_t(origin[v]);  // −1: past every vertex
     differs[v] = o >= before.n_vertices() || mean != before.means[o] || covariance != before.covariances[o];
     framed.means[v] = mean;

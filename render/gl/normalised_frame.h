@@ -61,6 +61,27 @@ struct NormalisedFrame {
   glm::dvec3 to_frame(const glm::dvec3& world) const;
 };
 
+/// A frame's map of means and covariances, set up once for a pass over many vertices: the values of
+/// mean_in_frame and covariance_in_frame bit for bit, the common frame (not turned) inline.
+class FrameMap {
+public:
+  explicit FrameMap(const NormalisedFrame& frame)
+      : frame_(frame),
+        centre_(frame.centre.x, frame.centre.y, frame.centre.z),
+        scale_(1.0 / frame.unit),
+        turned_(frame.turned()) {}
+  Vec3 mean(const Vec3& mean) const { return turned_ ? frame_.mean_in_frame(mean) : Vec3((mean - centre_) * scale_); }
+  Mat3 covariance(const Mat3& covariance) const {
+    return turned_ ? frame_.covariance_in_frame(covariance) : Mat3(covariance * (scale_ * scale_));
+  }
+
+private:
+  const NormalisedFrame& frame_;
+  Vec3 centre_;
+  double scale_;
+  bool turned_;
+};
+
 /// `mesh`'s Gaussians in `frame` (as gaussians_in_frame gives them) written into `framed`, and in the
 /// same pass the vertices (increasing) whose Gaussian there is not `before`'s at their `origin`: the
 /// changed and the new ones (origin −1). An empty `origin` keeps each vertex's number.
