@@ -60,7 +60,7 @@ void add_bench_command(CLI::App& app) {
     int crease_every = 0;  // --model: none
     PlanArguments plans;
     std::string json, plots, context = "auto", mesh;
-    std::vector<std::string> meshes;
+    std::vector<std::string> meshes, operations;
     std::vector<int> levels = {1, 4, 16, 64};
     std::string levels_text;
     float adaptive_pixels = 6.0f;
@@ -82,6 +82,9 @@ void add_bench_command(CLI::App& app) {
          "--crease-every", args->crease_every,
          "--model: crease every Nth edge at sharpness 2 first (a creased mesh's tables hold many stencil rows)")
       ->transform(integer_in(1, 1000000));
+  cmd->add_option("--operations", args->operations,
+                  "--model: these operations alone, each named by its first words (extrude, loop cut, ...)")
+      ->delimiter(',');
   add_plan_arguments(cmd, args->plans);
   cmd->add_option("--mesh", args->mesh, "--edit: the sample to edit (default: sphere; icosphere for triangles)");
   cmd->add_option("--meshes", args->meshes,
@@ -118,7 +121,14 @@ void add_bench_command(CLI::App& app) {
                                       : args->context == "osmesa" ? ContextKind::osmesa
                                                                   : ContextKind::automatic);
     };
+    if (!args->operations.empty() && !args->model) throw usage_error("bench: --operations goes with --model");
     if (args->model) {
+      std::vector<std::string> operations;
+      try {
+        operations = modelling_operations_named(args->operations);
+      } catch (const Error& e) {
+        throw usage_error(std::string("bench --model: --operations: ") + e.what());
+      }
       const auto context = make_context();
       const std::string name = args->mesh.empty() ? "sphere" : args->mesh;
       std::printf("device: %s, 1280x720, adaptive 6 px\n", context->description().c_str());
@@ -127,7 +137,7 @@ void add_bench_command(CLI::App& app) {
                   "pause", "still", "first edit", "undo", "undo frame", "captures", "still is");
       nlohmann::json all = nlohmann::json::array();
       for (const int faces : args->size ? std::vector<int>{args->size} : std::vector<int>{10000, 100000}) {
-        const auto r = modelling_figures(name, faces, args->plans.options(), args->crease_every);
+        const auto r = modelling_figures(name, faces, args->plans.options(), args->crease_every, operations);
         for (const auto& op : r["operations"]) {
           std::printf("%-30s %-18s",
                       (r["mesh"].get<std::string>() + " (" + std::to_string(r["faces"].get<int>()) + ")").c_str(),

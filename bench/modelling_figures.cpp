@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <thread>
@@ -49,7 +50,38 @@ double mean(const std::vector<double>& values) {
 
 }  // namespace
 
-nlohmann::json modelling_figures(const std::string& name, int faces, const PlanOptions& options, int crease_every) {
+const std::vector<std::string>& modelling_operations() {
+  static const std::vector<std::string> names = {
+      "extrude 1 face",   "inset 1 face",  "loop cut",        "subdivide 1 face", "delete 1 face",
+      "merge 2 vertices", "split 1 edge",  "dissolve 1 edge", "bevel 1 edge",     "slide 1 edge",
+      "knife 1 face",     "transform all", "rotate all",      "stretch all"};
+  return names;
+}
+
+std::vector<std::string> modelling_operations_named(const std::vector<std::string>& words) {
+  std::vector<char> named(modelling_operations().size(), 0);
+  for (const std::string& word : words) {
+    bool found = false;
+    for (size_t i = 0; i < named.size(); ++i) {
+      const std::string& operation = modelling_operations()[i];
+      if (!word.empty() && operation.compare(0, word.size(), word) == 0 &&
+          (operation.size() == word.size() || operation[word.size()] == ' '))
+        named[i] = 1, found = true;
+    }
+    if (!found) {
+      std::string list;
+      for (const std::string& operation : modelling_operations()) list += (list.empty() ? "" : ", ") + operation;
+      throw Error("'" + word + "' names no operation (" + list + ")");
+    }
+  }
+  std::vector<std::string> chosen;
+  for (size_t i = 0; i < named.size(); ++i)
+    if (named[i]) chosen.push_back(modelling_operations()[i]);
+  return chosen;
+}
+
+nlohmann::json modelling_figures(const std::string& name, int faces, const PlanOptions& options, int crease_every,
+                                 const std::vector<std::string>& only) {
   CovarianceMesh mesh = make_sample(name, faces);
   for (size_t e = 0; crease_every > 0 && e < mesh.n_edges(); e += size_t(crease_every))
     mesh.sharpness.set_crease(mesh.edge(e)[0], mesh.edge(e)[1], 2.0);
@@ -117,8 +149,14 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   // The plans and the renderer follow each operation incrementally (core/plans/surface_replanner.h), in
   // the frame the editor keeps (NormalisedFrame::following), and go back the same way, as an undo,
   // before the next round; a full re-plan of the same result is timed beside them.
+  if (operations.size() != modelling_operations().size())
+    throw Error("modelling_figures: its operations are not those modelling_operations() names");
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& [label, operation] : operations) {
+  for (size_t i = 0; i < operations.size(); ++i) {
+    const auto& [label, operation] = operations[i];
+    if (label != modelling_operations()[i])
+      throw Error("modelling_figures: its operations are not those modelling_operations() names");
+    if (!only.empty() && std::find(only.begin(), only.end(), label) == only.end()) continue;
     // An operation that this mesh refuses (a loop cut across triangles), or that takes it to the other
     // scheme (an inset of triangles makes quads: a full re-plan by the other builder), is left out.
     try {

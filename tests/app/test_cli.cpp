@@ -334,5 +334,38 @@ TEST(Cli, UnknownWordsAreNamedFirst) {
   }
 }
 
+// bench --model times the operations --operations names (by their first words) and no other; a word
+// that names none, or --operations without --model, is a usage error naming it, before anything runs.
+TEST(Cli, BenchModelTimesTheOperationsNamed) {
+  test::TempDir dir;
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"bench --model --operations extrude,twirl",
+            "gpsurf: bench --model: --operations: 'twirl' names no operation"},
+           {"bench --model --operations loop,cut", "gpsurf: bench --model: --operations: 'cut' names no operation"},
+           {"bench --edit --operations extrude", "gpsurf: bench: --operations goes with --model"}}) {
+    const auto r = run_command(gpsurf(args));
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
+    EXPECT_EQ(r.output.rfind(message, 0), 0u) << args << ": " << r.output;
+    EXPECT_EQ(test::line_count(r.output), 1u) << r.output;
+  }
+  const std::string json = dir.file("model.json");
+  const auto r = run_command(gpsurf("bench --model --size 600 --operations 'loop cut',extrude --json " + json));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(json);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string figures = text.str();
+  // The two named, in the bench's order, and no other row.
+  const size_t extrude = figures.find("\"operation\": \"extrude 1 face\""),
+               loop_cut = figures.find("\"operation\": \"loop cut\"");
+  EXPECT_NE(extrude, std::string::npos) << figures;
+  EXPECT_NE(loop_cut, std::string::npos) << figures;
+  EXPECT_LT(extrude, loop_cut) << figures;
+  size_t rows = 0;
+  for (size_t at = figures.find("\"operation\":"); at != std::string::npos; at = figures.find("\"operation\":", at + 1))
+    ++rows;
+  EXPECT_EQ(rows, 2u) << figures;
+}
+
 }  // namespace
 }  // namespace gps
