@@ -48,13 +48,70 @@ double mean(const std::vector<double>& values) {
   return values.empty() ? 0.0 : sum / double(values.size());
 }
 
+// The operations the bench times, each on a face in the middle of the mesh, or on an edge or a vertex of it.
+// The face an operation applies to, and its corners.
+struct Target {
+  int face;
+  std::span<const int> corners;
+};
+using Operation = std::function<Modelled(const CovarianceMesh&, const Target&)>;
+const std::vector<std::pair<std::string, Operation>>& operation_table() {
+  static const std::vector<std::pair<std::string, Operation>> table = {
+      {"extrude 1 face", [](const CovarianceMesh& m, const Target& t) { return extrude_faces(m, {t.face}, 0.01); }},
+      {"inset 1 face", [](const CovarianceMesh& m, const Target& t) { return inset_faces(m, {t.face}, 1e-3); }},
+      {"loop cut", [](const CovarianceMesh& m, const Target& t) { return loop_cut(m, t.corners[0], t.corners[1], 1); }},
+      {"subdivide 1 face", [](const CovarianceMesh& m, const Target& t) { return subdivide_faces(m, {t.face}); }},
+      {"delete 1 face", [](const CovarianceMesh& m, const Target& t) { return delete_faces(m, {t.face}); }},
+      {"merge 2 vertices",
+       [](const CovarianceMesh& m, const Target& t) {
+         return merge_vertices(m, {t.corners[0], t.corners[1]}, MergePoint::center);
+       }},
+      {"split 1 edge",
+       [](const CovarianceMesh& m, const Target& t) { return split_edge(m, t.corners[0], t.corners[1]); }},
+      {"dissolve 1 edge",
+       [](const CovarianceMesh& m, const Target& t) {
+         return dissolve_edges(m, {{t.corners[0], t.corners[1]}});
+       }},
+      {"bevel 1 edge",
+       [](const CovarianceMesh& m, const Target& t) {
+         BevelOptions bevel;
+         bevel.width = 0.2 * (m.mean(size_t(t.corners[0])) - m.mean(size_t(t.corners[1]))).norm();
+         return bevel_edges(m, {{t.corners[0], t.corners[1]}}, bevel);
+       }},
+      {"slide 1 edge",
+       [](const CovarianceMesh& m, const Target& t) {
+         return edge_slide(m, {{t.corners[0], t.corners[1]}}, 0.3);
+       }},
+      {"knife 1 face",
+       [](const CovarianceMesh& m, const Target& t) {
+         Vec3 centroid = Vec3::Zero();
+         for (const int v : t.corners) centroid += m.mean(size_t(v)) / double(t.corners.size());
+         const auto toward = [&](int k) { return 0.5 * (centroid + m.mean(size_t(t.corners[size_t(k)]))); };
+         return knife(m, {toward(0), toward(int(t.corners.size()) / 2)});
+       }},
+      {"transform all",
+       [](const CovarianceMesh& m, const Target&) {
+         return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), 1.01 * Mat3::Identity()));
+       }},
+      {"rotate all",
+       [](const CovarianceMesh& m, const Target&) {
+         const Mat3 turn = Eigen::AngleAxisd(0.1, Vec3::UnitZ()).toRotationMatrix();
+         return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), turn));
+       }},
+      {"stretch all", [](const CovarianceMesh& m, const Target&) {
+         return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), Vec3(1.01, 1.0, 1.0).asDiagonal()));
+       }}};
+  return table;
+}
+
 }  // namespace
 
 const std::vector<std::string>& modelling_operations() {
-  static const std::vector<std::string> names = {
-      "extrude 1 face",   "inset 1 face",  "loop cut",        "subdivide 1 face", "delete 1 face",
-      "merge 2 vertices", "split 1 edge",  "dissolve 1 edge", "bevel 1 edge",     "slide 1 edge",
-      "knife 1 face",     "transform all", "rotate all",      "stretch all"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> listed;
+    for (const auto& [name, operation] : operation_table()) listed.push_back(name);
+    return listed;
+  }();
   return names;
 }
 
@@ -99,64 +156,15 @@ nlohmann::json modelling_figures(const std::string& name, int faces, const PlanO
   renderer.draw(target, camera, draw);
   glFinish();
 
-  // The operations, each on a face, edge or vertex in the middle of the mesh.
-  const int f = int(mesh.n_faces() / 2);
-  const std::span<const int> corners = mesh.face(size_t(f));
-  const std::vector<std::pair<std::string, std::function<Modelled(const CovarianceMesh&)>>> operations = {
-      {"extrude 1 face", [&](const CovarianceMesh& m) { return extrude_faces(m, {f}, 0.01); }},
-      {"inset 1 face", [&](const CovarianceMesh& m) { return inset_faces(m, {f}, 1e-3); }},
-      {"loop cut", [&](const CovarianceMesh& m) { return loop_cut(m, corners[0], corners[1], 1); }},
-      {"subdivide 1 face", [&](const CovarianceMesh& m) { return subdivide_faces(m, {f}); }},
-      {"delete 1 face", [&](const CovarianceMesh& m) { return delete_faces(m, {f}); }},
-      {"merge 2 vertices",
-       [&](const CovarianceMesh& m) {
-         return merge_vertices(m, {corners[0], corners[1]}, MergePoint::center);
-       }},
-      {"split 1 edge", [&](const CovarianceMesh& m) { return split_edge(m, corners[0], corners[1]); }},
-      {"dissolve 1 edge",
-       [&](const CovarianceMesh& m) {
-         return dissolve_edges(m, {{corners[0], corners[1]}});
-       }},
-      {"bevel 1 edge",
-       [&](const CovarianceMesh& m) {
-         BevelOptions bevel;
-         bevel.width = 0.2 * (m.mean(size_t(corners[0])) - m.mean(size_t(corners[1]))).norm();
-         return bevel_edges(m, {{corners[0], corners[1]}}, bevel);
-       }},
-      {"slide 1 edge",
-       [&](const CovarianceMesh& m) {
-         return edge_slide(m, {{corners[0], corners[1]}}, 0.3);
-       }},
-      {"knife 1 face",
-       [&](const CovarianceMesh& m) {
-         Vec3 centroid = Vec3::Zero();
-         for (const int v : corners) centroid += m.mean(size_t(v)) / double(corners.size());
-         const auto toward = [&](int k) { return 0.5 * (centroid + m.mean(size_t(corners[size_t(k)]))); };
-         return knife(m, {toward(0), toward(int(corners.size()) / 2)});
-       }},
-      {"transform all",
-       [&](const CovarianceMesh& m) {
-         return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), 1.01 * Mat3::Identity()));
-       }},
-      {"rotate all",
-       [&](const CovarianceMesh& m) {
-         const Mat3 turn = Eigen::AngleAxisd(0.1, Vec3::UnitZ()).toRotationMatrix();
-         return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), turn));
-       }},
-      {"stretch all", [&](const CovarianceMesh& m) {
-         return transform_vertices(m, {}, AffineMap::about(Vec3::Zero(), Vec3(1.01, 1.0, 1.0).asDiagonal()));
-       }}};
   // The plans and the renderer follow each operation incrementally (core/plans/surface_replanner.h), in
   // the frame the editor keeps (NormalisedFrame::following), and go back the same way, as an undo,
   // before the next round; a full re-plan of the same result is timed beside them.
-  if (operations.size() != modelling_operations().size())
-    throw Error("modelling_figures: its operations are not those modelling_operations() names");
   nlohmann::json rows = nlohmann::json::array();
-  for (size_t i = 0; i < operations.size(); ++i) {
-    const auto& [label, operation] = operations[i];
-    if (label != modelling_operations()[i])
-      throw Error("modelling_figures: its operations are not those modelling_operations() names");
+  const int f = int(mesh.n_faces() / 2);
+  const std::span<const int> corners = mesh.face(size_t(f));
+  for (const auto& [label, made_by] : operation_table()) {
     if (!only.empty() && std::find(only.begin(), only.end(), label) == only.end()) continue;
+    const auto operation = [&, &made_by = made_by](const CovarianceMesh& m) { return made_by(m, {f, corners}); };
     // An operation that this mesh refuses (a loop cut across triangles), or that takes it to the other
     // scheme (an inset of triangles makes quads: a full re-plan by the other builder), is left out.
     try {
