@@ -67,9 +67,11 @@ std::vector<std::vector<int>> merged_face(const std::vector<int>& corners, const
 // Gaussian becomes gaussians[t] where given, then drops repeated corners, degenerate faces and the
 // merged-away vertices. The faces stay in their lists where no face splits into several (the lists
 // then go back to arrays_of's next call, MeshArrays::~MeshArrays), and only faces with a merged
-// corner are walked again.
+// corner are walked again. `near`: the faces (ascending) at the vertices that move or that others merge
+// into, from the mesh the arrays were made of (arrays_of): the only faces the merge can change or make
+// coincide, and so the only ones it reads.
 MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
-                       const std::unordered_map<int, Gaussian>& gaussians) {
+                       const std::unordered_map<int, Gaussian>& gaussians, const std::vector<int>& near) {
   MergeResult r;
   MeshArrays& a = r.arrays;
   a = std::move(in);
@@ -87,7 +89,7 @@ MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
   std::vector<Merged> merged;
   std::vector<int> last_seen(a.means.size(), -1);
   bool splits = false;
-  for (int f = 0; f < n_in; ++f) {
+  for (const int f : near) {
     const std::vector<int>& corners = a.faces[size_t(f)];
     if (std::all_of(corners.begin(), corners.end(), [&](int v) { return target[size_t(v)] == v; })) continue;
     Merged m{f, false, {}};
@@ -114,15 +116,27 @@ MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
     }
     ++out;
   };
-  size_t next_merged = 0;
-  for (int f = 0; f < n_in; ++f) {
+  // The faces before the first that changed stay where they are, as they were; of the others, those
+  // from `near` are listed where they land, for the check of coinciding faces below.
+  size_t next_merged = 0, next_near = 0;
+  std::vector<int> near_out;
+  const int unchanged = splits || merged.empty() ? 0 : merged.front().face;
+  out = unchanged;
+  while (next_near < near.size() && near[next_near] < unchanged) near_out.push_back(near[next_near++]);
+  for (int f = unchanged; f < n_in; ++f) {
     const int origin = face_origin[size_t(f)];
+    const bool is_near = next_near < near.size() && near[next_near] == f;
+    next_near += is_near ? 1 : 0;
     if (next_merged == merged.size() || merged[next_merged].face != f) {
+      if (is_near) near_out.push_back(out);
       put(std::move(a.faces[size_t(f)]), origin);  // no corner merged: the face as it was
       continue;
     }
     Merged& m = merged[next_merged++];
-    for (std::vector<int>& loop : m.loops) put(std::move(loop), m.whole ? origin : -1);
+    for (std::vector<int>& loop : m.loops) {
+      near_out.push_back(out);
+      put(std::move(loop), m.whole ? origin : -1);
+    }
     r.faces_removed += m.loops.empty() ? 1 : 0;
   }
   if (splits) {
@@ -137,23 +151,30 @@ MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
   for (size_t v = 0; v < target.size(); ++v)
     if (target[v] != int(v)) merged_into[size_t(target[v])] = 1;
   std::set<std::vector<int>> seen;
-  size_t next_face = 0;
-  for (size_t f = 0; f < a.faces.size(); ++f) {
-    std::vector<int>& face = a.faces[f];
+  std::vector<int> coinciding;  // ascending
+  for (const int f : near_out) {
+    const std::vector<int>& face = a.faces[size_t(f)];
     if (std::any_of(face.begin(), face.end(), [&](int v) { return merged_into[size_t(v)] != 0; })) {
       std::vector<int> key = face;
       std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
-      if (!seen.insert(std::move(key)).second) {
+      if (!seen.insert(std::move(key)).second) coinciding.push_back(f);
+    }
+  }
+  if (!coinciding.empty()) {
+    size_t next_face = size_t(coinciding.front()), next_coinciding = 0;
+    for (size_t f = next_face; f < a.faces.size(); ++f) {
+      if (next_coinciding < coinciding.size() && coinciding[next_coinciding] == int(f)) {
+        ++next_coinciding;
         ++r.faces_removed;
         continue;
       }
+      face_origin[next_face] = face_origin[f];
+      std::swap(a.faces[next_face], a.faces[f]);
+      ++next_face;
     }
-    face_origin[next_face] = face_origin[f];
-    if (next_face != f) std::swap(a.faces[next_face], face);
-    ++next_face;
+    a.faces.resize(next_face);
+    face_origin.resize(next_face);
   }
-  a.faces.resize(next_face);
-  face_origin.resize(next_face);
   r.new_index.assign(a.means.size(), -1);
   const bool origins = a.origin.size() == a.means.size();
   int next = 0;
@@ -178,6 +199,22 @@ MergeResult merge_into(MeshArrays in, const std::vector<int>& target,
 std::string faces_removed_text(int n) {
   if (n == 0) return "";
   return ", " + std::to_string(n) + (n == 1 ? " face" : " faces") + " removed";
+}
+
+// The faces of `mesh` (ascending) at the vertices `target` moves and at those it moves others to:
+// merge_into's `near`.
+std::vector<int> faces_near_merges(const CovarianceMesh& mesh, const std::vector<int>& target) {
+  const MeshConnectivity& c = mesh.connectivity();
+  std::vector<int> faces;
+  const auto add_faces_at = [&](int v) {
+    faces.insert(faces.end(), c.vertex_faces.begin() + c.vertex_face_offsets[size_t(v)],
+                 c.vertex_faces.begin() + c.vertex_face_offsets[size_t(v) + 1]);
+  };
+  for (size_t v = 0; v < target.size(); ++v)
+    if (target[v] != int(v)) add_faces_at(int(v)), add_faces_at(target[v]);
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  return faces;
 }
 
 // Union-find with the smallest index as each set's root.
@@ -220,7 +257,7 @@ Modelled merge_vertices(const CovarianceMesh& mesh, const std::vector<int>& vert
   std::vector<int> target(size_t(a.n_vertices()));
   std::iota(target.begin(), target.end(), 0);
   for (int v : group) target[size_t(v)] = group.front();
-  MergeResult r = merge_into(std::move(a), target, {{group.front(), g}});
+  MergeResult r = merge_into(std::move(a), target, {{group.front(), g}}, faces_near_merges(mesh, target));
   Modelled out = modelled(mesh, std::move(r.arrays), {r.new_index[size_t(group.front())]});
   out.summary = "merged " + std::to_string(group.size()) + " vertices into vertex " +
                 std::to_string(out.selection.front()) + faces_removed_text(r.faces_removed);
@@ -276,7 +313,7 @@ Modelled weld_by_distance(const CovarianceMesh& mesh, const std::vector<int>& ve
     gaussians[root] = group_center(a, members);
     removed += int(members.size()) - 1;
   }
-  MergeResult r = merge_into(std::move(a), target, gaussians);
+  MergeResult r = merge_into(std::move(a), target, gaussians, faces_near_merges(mesh, target));
   Modelled out = modelled(mesh, std::move(r.arrays), {});
   for (const auto& [root, members] : clusters) out.selection.push_back(r.new_index[size_t(root)]);
   std::sort(out.selection.begin(), out.selection.end());
