@@ -1,5 +1,6 @@
 #pragma once
 // Flat polygon topology and its edge/vertex adjacency, the form the subdivision loops run on.
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ struct MeshConnectivity {
   }
   int valence(int v) const { return vertex_edge_offsets[size_t(v) + 1] - vertex_edge_offsets[size_t(v)]; }
   int n_vertex_faces(int v) const { return vertex_face_offsets[size_t(v) + 1] - vertex_face_offsets[size_t(v)]; }
+  /// The faces around vertex v (its row), in face order.
+  std::span<const int> faces_of_vertex(int v) const {
+    return {vertex_faces.data() + vertex_face_offsets[size_t(v)], size_t(n_vertex_faces(v))};
+  }
   /// The edge joining vertices a and b, or −1.
   int find_edge(int a, int b) const;
 };

@@ -149,7 +149,7 @@ public:
   /// Where vertex v, whose input faces are `faces`, now lies in exactly two faces, once in each, between
   /// the same two neighbours (two edges in a line, as a loop cut's vertex is once the edges along the
   /// loop are gone): removes it from both, joining its two edges. False, changing nothing, otherwise.
-  bool join_edges_at(int v, const std::vector<int>& faces) {
+  bool join_edges_at(int v, std::span<const int> faces) {
     std::vector<int> now_in;
     for (const int f : faces)
       if (const int g = now(f); std::find(now_in.begin(), now_in.end(), g) == now_in.end()) now_in.push_back(g);
@@ -373,9 +373,7 @@ Modelled dissolve_edges(const CovarianceMesh& mesh, const std::vector<std::array
   for (const auto& [x, y] : chosen) merger.dissolve(x, y, edge_name(x, y));
   // As Blender's Dissolve Edges (its Dissolve Vertices on): an end left between two edges in a line
   // joins them, so that dissolving a loop cut's edges gives back the faces it cut.
-  for (const int v : ends)
-    merger.join_edges_at(v, std::vector<int>(c.vertex_faces.begin() + c.vertex_face_offsets[size_t(v)],
-                                             c.vertex_faces.begin() + c.vertex_face_offsets[size_t(v) + 1]));
+  for (const int v : ends) merger.join_edges_at(v, c.faces_of_vertex(v));
   return merged(mesh, a, merger, "dissolved " + count_of(chosen.size(), "edge", "edges"));
 }
 

@@ -170,9 +170,10 @@ Place run_on(const MeshArrays& m, const Place& inside, const Vec3& before, const
 // The faces the cut may go on into from a place.
 std::vector<int> faces_from(const Place& p, const MeshConnectivity& faces_at, const DirectedEdges& edges) {
   if (p.kind == Place::inside) return {p.face};
-  if (p.kind == Place::vertex)
-    return {faces_at.vertex_faces.begin() + faces_at.vertex_face_offsets[size_t(p.a)],
-            faces_at.vertex_faces.begin() + faces_at.vertex_face_offsets[size_t(p.a) + 1]};
+  if (p.kind == Place::vertex) {
+    const std::span<const int> row = faces_at.faces_of_vertex(p.a);
+    return {row.begin(), row.end()};
+  }
   std::vector<int> out;
   for (const int f : {face_of_edge(edges, p.a, p.b).first, face_of_edge(edges, p.b, p.a).first})
     if (f >= 0) out.push_back(f);

@@ -207,8 +207,8 @@ std::vector<int> faces_near_merges(const CovarianceMesh& mesh, const std::vector
   const MeshConnectivity& c = mesh.connectivity();
   std::vector<int> faces;
   const auto add_faces_at = [&](int v) {
-    faces.insert(faces.end(), c.vertex_faces.begin() + c.vertex_face_offsets[size_t(v)],
-                 c.vertex_faces.begin() + c.vertex_face_offsets[size_t(v) + 1]);
+    const std::span<const int> row = c.faces_of_vertex(v);
+    faces.insert(faces.end(), row.begin(), row.end());
   };
   for (size_t v = 0; v < target.size(); ++v)
     if (target[v] != int(v)) add_faces_at(int(v)), add_faces_at(target[v]);

@@ -205,9 +205,10 @@ void check_new_geometry(const CovarianceMesh& before, const Modelled& result) {
   std::vector<int> faces;
   const MeshConnectivity& c = after.connectivity();
   for (size_t v = 0; v < origin.size(); ++v)
-    if (origin[v] < 0)
-      faces.insert(faces.end(), c.vertex_faces.begin() + c.vertex_face_offsets[v],
-                   c.vertex_faces.begin() + c.vertex_face_offsets[v + 1]);
+    if (origin[v] < 0) {
+      const std::span<const int> row = c.faces_of_vertex(int(v));
+      faces.insert(faces.end(), row.begin(), row.end());
+    }
   if (faces.empty()) return;
   std::sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
