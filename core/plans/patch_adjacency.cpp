@@ -5,12 +5,11 @@
 #include <atomic>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include "core/plans/kept_patch_records.h"
+#include "core/support/sorted_indices.h"
 
 namespace gps {
 
@@ -354,6 +353,20 @@ void point_uses(const PatchPlans& plans, int p, int c, std::vector<int>& patches
   }
 }
 
+// Per point index a value (≥ 0), or −1 where none was set, grown as higher points come: where a hash
+// table would allocate a node for each point a change walks.
+class PointValues {
+public:
+  int32_t get(int32_t point) const { return size_t(point) < values_.size() ? values_[size_t(point)] : -1; }
+  void set(int32_t point, int32_t value) {
+    if (size_t(point) >= values_.size()) values_.resize(std::max(size_t(point) + 1, 2 * values_.size()), -1);
+    values_[size_t(point)] = value;
+  }
+
+private:
+  std::vector<int32_t> values_;
+};
+
 // Visits the patches between the kept runs, in the new numbering (the new patches) or, with
 // `old_numbers`, in the old (the patches that are gone).
 template <class Visit>
@@ -401,29 +414,32 @@ void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const SharpB
   // Each point walked around once (a point of many patches is a corner of each).
   std::vector<int> patches;
   std::vector<int32_t> uses;
-  std::unordered_set<int32_t> walked;
+  // Per point of the plans walked around: its least use, the owner of its corners; and the points of
+  // the plans before walked around.
+  PointValues owner_of, walked_before;
   const auto add_users = [&](const PatchPlans& of, int p, bool old_numbers) {
+    PointValues& walked = old_numbers ? walked_before : owner_of;
     for (int c = 0; c < n; ++c) {
-      if (!walked.insert(of.patch_corner_points[size_t(n * p + c)]).second) continue;
+      const int32_t point = of.patch_corner_points[size_t(n * p + c)];
+      if (walked.get(point) >= 0) continue;
       point_uses(of, p, c, patches, uses);
+      walked.set(point, *std::min_element(uses.begin(), uses.end()));
       for (const int32_t use : uses)
         if (const int user = old_numbers ? new_of(use >> 2) : use >> 2; user >= 0) written.push_back(user);
     }
   };
   for_gaps(kept, false, plans.n_patches(), [&](int p) { add_users(plans, p, false); });
-  walked.clear();
   for_gaps(kept, true, n_old, [&](int q) { add_users(old, q, true); });
-  std::sort(written.begin(), written.end());
-  written.erase(std::unique(written.begin(), written.end()), written.end());
-  std::unordered_map<int32_t, int32_t> owner_of;  // per point walked around: its first use
+  sort_unique_indices(written, plans.n_patches());
   for (const int p : written)
     for (int c = 0; c < n; ++c) {
-      auto [at, added] = owner_of.try_emplace(plans.patch_corner_points[size_t(n * p + c)], 0);
-      if (added) {
+      const int32_t point = plans.patch_corner_points[size_t(n * p + c)];
+      int32_t owner = owner_of.get(point);
+      if (owner < 0) {
         point_uses(plans, p, c, patches, uses);
-        at->second = *std::min_element(uses.begin(), uses.end());
+        owner = *std::min_element(uses.begin(), uses.end());
+        owner_of.set(point, owner);
       }
-      const int32_t owner = at->second;
       plans.corner_owners[2 * size_t(n * p + c)] = owner >> 2;
       plans.corner_owners[2 * size_t(n * p + c) + 1] = owner & 3;
       if (flagged)
@@ -541,8 +557,7 @@ bool update_patch_adjacency(PatchPlans& plans, const Sharpness& sharpness, const
         if (const int32_t p = old_neighbours[size_t(4 * (n * q + k) + j)]; p >= 0 && is_kept(p))
           candidates.push_back(p);
   });
-  std::sort(candidates.begin(), candidates.end());
-  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  sort_unique_indices(candidates, n_patches);
   std::vector<EdgeUse> relink;
   std::vector<int> boundary;
   for (const int p : candidates)

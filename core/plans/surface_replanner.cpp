@@ -9,6 +9,7 @@
 #include "core/plans/loop_crease_plan_builder.h"
 #include "core/plans/loop_plan_builder.h"
 #include "core/plans/patch_adjacency.h"
+#include "core/support/sorted_indices.h"
 
 namespace gps {
 namespace {
@@ -306,8 +307,7 @@ std::vector<int> SurfaceReplanner::kept_beside_built(const std::vector<KeptPatch
       for (int i = c.vertex_face_offsets[size_t(w)]; i < c.vertex_face_offsets[size_t(w) + 1]; ++i)
         if (const int f = c.vertex_faces[size_t(i)]; !is_built[size_t(f)]) beside.push_back(f);
     }
-  std::sort(beside.begin(), beside.end());
-  beside.erase(std::unique(beside.begin(), beside.end()), beside.end());
+  sort_unique_indices(beside, t.n_faces());
   // Their patches: face f's first is p, f in range r, walked forward.
   std::vector<int> relinked;
   size_t r = 0;

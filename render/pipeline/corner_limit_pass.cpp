@@ -6,6 +6,7 @@
 
 #include "core/mesh/mesh_connectivity.h"
 #include "core/plans/patch_adjacency.h"
+#include "core/support/sorted_indices.h"
 #include "render/gl/compute_limits.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/gpu_layout.h"
@@ -34,8 +35,7 @@ std::vector<int> CornerLimitPass::edit_slots(const PatchPlans& plans, const std:
       slots.push_back(n * owner.patch + owner.corner);
       slots.push_back(n * p + c);  // its own normal on a crease; the midpoint of its edge
     }
-  std::sort(slots.begin(), slots.end());
-  slots.erase(std::unique(slots.begin(), slots.end()), slots.end());
+  sort_unique_indices(slots, n * plans.n_patches());
   return slots;
 }
 
