@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/plans/kept_patch_records.h"
+#include "core/support/hash_mix.h"
 #include "core/support/sorted_indices.h"
 
 namespace gps {
@@ -353,18 +354,47 @@ void point_uses(const PatchPlans& plans, int p, int c, std::vector<int>& patches
   }
 }
 
-// Per point index a value (≥ 0), or −1 where none was set, grown as higher points come: where a hash
-// table would allocate a node for each point a change walks.
+// Per point index a value (≥ 0), or −1 where none was set: an open-addressing table of the points a
+// change walks, at their cost (an array over every point would be filled first, and a hash set
+// allocates a node per point).
 class PointValues {
 public:
-  int32_t get(int32_t point) const { return size_t(point) < values_.size() ? values_[size_t(point)] : -1; }
+  /// Room for `points` without growing.
+  explicit PointValues(size_t points) { resize(points); }
+
+  int32_t get(int32_t point) const {
+    for (size_t s = slot(point);; s = (s + 1) & mask()) {
+      if (keys_[s] == point) return values_[s];
+      if (keys_[s] < 0) return -1;
+    }
+  }
   void set(int32_t point, int32_t value) {
-    if (size_t(point) >= values_.size()) values_.resize(std::max(size_t(point) + 1, 2 * values_.size()), -1);
-    values_[size_t(point)] = value;
+    if (2 * (count_ + 1) > keys_.size()) grow();
+    size_t s = slot(point);
+    while (keys_[s] >= 0 && keys_[s] != point) s = (s + 1) & mask();
+    if (keys_[s] < 0) keys_[s] = point, ++count_;
+    values_[s] = value;
   }
 
 private:
-  std::vector<int32_t> values_;
+  size_t mask() const { return keys_.size() - 1; }
+  size_t slot(int32_t point) const { return size_t(mixed_hash(uint32_t(point))) & mask(); }
+  void resize(size_t points) {
+    size_t slots = 64;
+    while (slots < 2 * points) slots *= 2;
+    keys_.assign(slots, -1);
+    values_.assign(slots, -1);
+    count_ = 0;
+  }
+  void grow() {
+    const std::vector<int32_t> keys = std::move(keys_), values = std::move(values_);
+    resize(keys.size());
+    for (size_t s = 0; s < keys.size(); ++s)
+      if (keys[s] >= 0) set(keys[s], values[s]);
+  }
+
+  std::vector<int32_t> keys_, values_;  // a power of two of slots, at most half full; key −1: empty
+  size_t count_ = 0;
 };
 
 // Visits the patches between the kept runs, in the new numbering (the new patches) or, with
@@ -416,7 +446,10 @@ void update_corner_owners(PatchPlans& plans, const PatchPlans& old, const SharpB
   std::vector<int32_t> uses;
   // Per point of the plans walked around: its least use, the owner of its corners; and the points of
   // the plans before walked around.
-  PointValues owner_of, walked_before;
+  int kept_patches = 0;
+  for (const KeptPatches& run : kept) kept_patches += run.count;
+  PointValues owner_of(size_t(n * (plans.n_patches() - kept_patches))),
+      walked_before(size_t(n * (n_old - kept_patches)));
   const auto add_users = [&](const PatchPlans& of, int p, bool old_numbers) {
     PointValues& walked = old_numbers ? walked_before : owner_of;
     for (int c = 0; c < n; ++c) {
