@@ -25,7 +25,7 @@ void hash_rows(RangePlans& range) {
 
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release, const SurfaceTables* previous,
                            size_t same_leading, SurfaceTables* storage, std::vector<KeptStencilRows>* kept_rows,
-                           size_t storage_leading) {
+                           size_t storage_leading, LeadingRecords* same) {
   PatchPlans plans;
   struct {
     size_t nodes = 0, patches = 0;
@@ -63,6 +63,7 @@ SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool rel
       previous->plans.nodes.size() < node_base[same_leading] ||
       previous->plans.patch_roots.size() < patch_base[same_leading])
     same_leading = 0;
+  if (same) *same = {patch_base[same_leading], node_base[same_leading]};
   // What the storage holds of the first ranges is read only where it was merged as this merge merges.
   storage_leading = std::min(storage_leading, same_leading);
   if (!storage || storage->stencils.first_row() != row_start_for(n_base) || storage->plans.shape != plans.shape ||

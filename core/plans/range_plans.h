@@ -33,11 +33,15 @@ struct RangePlans {
 /// `storage_leading`: the first ranges whose part `storage` holds already as this merge writes it (it was
 /// merged over the same n_base step from ranges whose first were these, as `previous` was), at most
 /// `same_leading`; their part is not written again. `kept_rows`: where given, the stencil rows that kept
-/// ranges hold, and their rows in the tables merged before from them (merge_stencil_rows).
+/// ranges hold, and their rows in the tables merged before from them (merge_stencil_rows). `same`:
+/// where given, the records of the leading patches that are `previous`'s, bit for bit.
+struct LeadingRecords {
+  size_t patches = 0, nodes = 0;  // the first patches, and their nodes
+};
 SurfaceTables merge_ranges(std::vector<RangePlans>& ranges, int n_base, bool release,
                            const SurfaceTables* previous = nullptr, size_t same_leading = 0,
                            SurfaceTables* storage = nullptr, std::vector<KeptStencilRows>* kept_rows = nullptr,
-                           size_t storage_leading = 0);
+                           size_t storage_leading = 0, LeadingRecords* same = nullptr);
 
 /// The tables of faces [0, n_faces) over n_base vertices: `build_range(first, last)` builds each range of
 /// kFacesPerRange faces, on all cores, and the ranges are merged (released). Rethrows the first range's

@@ -221,7 +221,7 @@ void SurfaceReplanner::build(const std::vector<int>& which, const Sharpness& sha
   }
   retired_.reset();
   SurfaceTables merged = merge_ranges(ranges_, t.n_vertices, false, old.get(), same_leading, &storage,
-                                      &change_.kept_rows, storage_leading);
+                                      &change_.kept_rows, storage_leading, &change_.same_leading);
   merged.plans.patch_neighbours = std::move(storage.plans.patch_neighbours);  // assigned whole below
   merged.plans.corner_owners = std::move(storage.plans.corner_owners);
   patch_first_.assign(ranges_.size(), 0);

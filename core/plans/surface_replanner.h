@@ -50,6 +50,9 @@ struct PlanChange {
   /// written, new ones among them, and those whose corner owners were, where known. Every other
   /// patch's records are those it had: a renderer sends only these. Unset: any may differ.
   std::optional<std::vector<int>> neighbours_written, owners_written;
+  /// The leading patches whose plan records (nodes, roots, corner points, edges) are those of the
+  /// tables before, bit for bit, and their nodes: a renderer compares only the records past them.
+  LeadingRecords same_leading;
 };
 
 /// A replanner's tables with the change that made them, as a renderer takes them (shared: a

@@ -60,12 +60,12 @@ PlanBuffers::PlanBuffers() {
 
 template <class T, class Source>
 void PlanBuffers::upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held,
-                            const std::vector<int>* listed, size_t stride) {
+                            const std::vector<int>* listed, size_t stride, size_t same) {
   // Empty buffers still need storage to be bound.
   const bool stays = reserve(binding, std::max<size_t>(sizeof(T), data.size() * sizeof(T)));
   const std::vector<std::pair<size_t, size_t>> runs =
       stays && held && listed ? listed_runs(*listed, stride, held->size(), data.size())
-      : stays && held         ? differing_runs(data, *held)
+      : stays && held         ? differing_runs(data, *held, same)
                               : std::vector<std::pair<size_t, size_t>>{{0, data.size()}};
   for (const auto& [begin, end] : runs) {
     if (begin >= end) continue;
@@ -149,11 +149,16 @@ void PlanBuffers::upload_tables(const SurfaceTables& tables, const std::vector<K
   upload_as<int32_t>(kBindingOffsets, s.offsets, hs ? &hs->offsets : nullptr);
   upload_as<int32_t>(kBindingIndices, s.indices, hs ? &hs->indices : nullptr);
   upload_as<float>(kBindingWeights, s.weights, hs ? &hs->weights : nullptr);
-  upload_as<int32_t>(kBindingNodes, p.nodes, hp ? &hp->nodes : nullptr);
-  upload_as<int32_t>(kBindingRoots, p.patch_roots, hp ? &hp->patch_roots : nullptr);
-  upload_as<int32_t>(kBindingCorners, p.patch_corner_points, hp ? &hp->patch_corner_points : nullptr);
+  // The records of the leading patches that the change left as they were are not compared.
+  const LeadingRecords same = hp && change ? change->same_leading : LeadingRecords{};
+  const size_t patch_corners = size_t(p.corners()) * same.patches;
+  upload_as<int32_t>(kBindingNodes, p.nodes, hp ? &hp->nodes : nullptr, nullptr, 0, same.nodes);
+  upload_as<int32_t>(kBindingRoots, p.patch_roots, hp ? &hp->patch_roots : nullptr, nullptr, 0, same.patches);
+  upload_as<int32_t>(kBindingCorners, p.patch_corner_points, hp ? &hp->patch_corner_points : nullptr, nullptr, 0,
+                     patch_corners);
   upload_as<float>(kBindingExtraordinaryTables, p.extraordinary_tables, hp ? &hp->extraordinary_tables : nullptr);
-  upload_as<int32_t>(kBindingPatchEdges, p.patch_edges, hp ? &hp->patch_edges : nullptr);
+  upload_as<int32_t>(kBindingPatchEdges, p.patch_edges, hp ? &hp->patch_edges : nullptr, nullptr, 0,
+                     p.patch_edges.empty() ? 0 : kPatchEdgeStride * same.patches);
   // The change's lists of the patches whose adjacency records it wrote, where it made these plans from held's.
   const bool listed = hp && change && hp->shape == p.shape;
   const std::vector<int>* neighbours_written =

@@ -114,10 +114,10 @@ private:
   /// `data` as type T; where `held` (what the buffer holds, as uploaded from it) is given and the
   /// storage stays, only the chunks of elements that differ from it (bit for bit) and those past its end,
   /// or where `listed` is given too, the records of `stride` elements it lists (all the others are held's)
-  /// and those past its end.
+  /// and those past its end. The first `same` elements are known to be held's (not compared).
   template <class T, class Source>
   void upload_as(int binding, const std::vector<Source>& data, const std::vector<Source>* held = nullptr,
-                 const std::vector<int>* listed = nullptr, size_t stride = 0);
+                 const std::vector<int>* listed = nullptr, size_t stride = 0, size_t same = 0);
   template <class T>
   void upload(int binding, const std::vector<T>& data) {
     upload_as<T>(binding, data);
