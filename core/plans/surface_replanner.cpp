@@ -484,6 +484,14 @@ void SurfaceReplanner::match_faces(const PolygonTopology& old, const std::vector
                                    std::vector<int>& new_face, std::vector<int>& old_face) const {
   const PolygonTopology& t = base_.topology();
   const MeshConnectivity& c = base_.connectivity();
+  // Whether new face g has old face f's corners, renumbered, from its first corner on.
+  const auto same_corners = [&](int f, int g) {
+    const int first = old.offsets[size_t(f)], size = old.face_size(f);
+    if (g < 0 || g >= t.n_faces() || t.face_size(g) != size) return false;
+    for (int k = 0; k < size; ++k)
+      if (new_index[size_t(old.verts[size_t(first + k)])] != t.verts[size_t(t.offsets[size_t(g)] + k)]) return false;
+    return true;
+  };
   const auto match = [&](int f, bool free_only) {
     const int first = old.offsets[size_t(f)], size = old.face_size(f);
     const int w = new_index[size_t(old.verts[size_t(first)])];
@@ -499,8 +507,20 @@ void SurfaceReplanner::match_faces(const PolygonTopology& old, const std::vector
     }
     return -1;
   };
-#pragma omp parallel for schedule(static) if (old.n_faces() >= kParallelFaces)
-  for (int f = 0; f < old.n_faces(); ++f) new_face[size_t(f)] = match(f, false);
+  // A manifold mesh has no two faces with the same corners: the face after the previous one's match,
+  // where it has this one's corners, is its match, found without a lookup in the rows (most faces
+  // follow the one before them, numbers shifted past a change).
+  constexpr int kBlocks = 64;
+  const int n_old = old.n_faces();
+#pragma omp parallel for schedule(static) if (n_old >= kParallelFaces)
+  for (int b = 0; b < kBlocks; ++b) {
+    int guess = -1;
+    for (int f = int(int64_t(n_old) * b / kBlocks); f < int(int64_t(n_old) * (b + 1) / kBlocks); ++f) {
+      const int g = same_corners(f, guess) ? guess : match(f, false);
+      new_face[size_t(f)] = g;
+      guess = g >= 0 ? g + 1 : -1;
+    }
+  }
   for (int f = 0; f < old.n_faces(); ++f) {
     int& g = new_face[size_t(f)];
     if (g >= 0 && old_face[size_t(g)] >= 0) g = match(f, true);
