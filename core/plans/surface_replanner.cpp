@@ -492,18 +492,15 @@ void SurfaceReplanner::match_faces(const PolygonTopology& old, const std::vector
       if (new_index[size_t(old.verts[size_t(first + k)])] != t.verts[size_t(t.offsets[size_t(g)] + k)]) return false;
     return true;
   };
+  // The first face (in the row of f's first corner, renumbered) with f's corners; `free_only`: that
+  // no old face has yet.
   const auto match = [&](int f, bool free_only) {
-    const int first = old.offsets[size_t(f)], size = old.face_size(f);
-    const int w = new_index[size_t(old.verts[size_t(first)])];
+    const int w = new_index[size_t(old.verts[size_t(old.offsets[size_t(f)])])];
     if (w < 0) return -1;
     for (int i = c.vertex_face_offsets[size_t(w)]; i < c.vertex_face_offsets[size_t(w) + 1]; ++i) {
       const int g = c.vertex_faces[size_t(i)];
-      if (c.vertex_face_corners[size_t(i)] != 0 || t.face_size(g) != size || (free_only && old_face[size_t(g)] >= 0))
-        continue;
-      bool same = true;
-      for (int k = 1; k < size && same; ++k)
-        same = new_index[size_t(old.verts[size_t(first + k)])] == t.verts[size_t(t.offsets[size_t(g)] + k)];
-      if (same) return g;
+      if (c.vertex_face_corners[size_t(i)] == 0 && !(free_only && old_face[size_t(g)] >= 0) && same_corners(f, g))
+        return g;
     }
     return -1;
   };
